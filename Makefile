@@ -1,0 +1,35 @@
+# Every target sets itself up: a local virtual environment, created once and refreshed only when
+# pyproject.toml changes (the stamp file), so repeated runs are fast and silent.
+PYTHON ?= python3
+VENV := .venv
+PY := $(VENV)/bin/python
+STAMP := $(VENV)/.installed
+
+.PHONY: derive verify test test-slow bench clean setup
+
+setup: $(STAMP)
+
+$(STAMP): pyproject.toml
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	@$(PY) -m pip install -q --disable-pip-version-check -e '.[test]'
+	@touch $(STAMP)
+
+derive: $(STAMP)
+	@$(PY) -m derive generate
+	@$(PY) -m derive verify
+
+verify: $(STAMP)
+	@$(PY) -m derive verify
+
+test: $(STAMP)
+	@$(PY) -m pytest -q
+
+test-slow: $(STAMP)
+	@$(PY) -m pytest -q -m slow
+
+bench: $(STAMP)
+	@$(PY) -m derive bench -o bench-out
+
+clean:
+	rm -rf $(VENV) bench-out .pytest_cache .hypothesis *.egg-info
+	find . -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -1,0 +1,17 @@
+"""derive: rigid-body rotation, derived symbolically, checked against a lecture, compiled to C.
+
+Conventions throughout: z-y-z Euler angles in the quantum-mechanics convention of the notes
+(alpha about the inertial z axis, beta about the intermediate y' axis, gamma about the body 3
+axis); the rotation matrix R = Rz(alpha) Ry(beta) Rz(gamma) maps body components to inertial
+components (v_inertial = R v_body); omega-tilde are body-frame components; SI units.
+"""
+from .errors import CompilerError, IntegrationError, SceneError
+
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate"]
+
+
+def simulate(scene, **overrides):
+    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.simulate_api`."""
+    from .simulate import simulate as _simulate
+
+    return _simulate(scene, **overrides)
