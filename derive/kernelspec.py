@@ -1,0 +1,162 @@
+"""Kernel spec: a model laid out for code generation.
+
+Ordered state and parameter names, and for each function (rhs, Jacobian, observables) a list of
+common-subexpression temporaries followed by the outputs, printed as C99 and as NumPy. Everything
+here is deterministic: canonical CSE order, numbered temporaries, no dict/set iteration over
+symbols, so the generated text is byte-identical whatever PYTHONHASHSEED is.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.printing.c import C99CodePrinter
+from sympy.printing.numpy import NumPyPrinter
+
+from .models import Model
+
+
+class CPrinter(C99CodePrinter):
+    """C99 with small integer powers as products (x*x, not pow(x, 2): exact and faster)."""
+
+    def _print_Pow(self, expr):
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and 2 <= abs(int(exp)) <= 4:
+            b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
+            # Parenthesised: a Mul prints its denominator through here, after a "/".
+            prod = "(" + "*".join([b] * abs(int(exp))) + ")"
+            return prod if exp > 0 else f"1.0/{prod}"
+        if exp == sp.Rational(1, 2):
+            return f"sqrt({self._print(base)})"
+        if exp == -1:
+            return f"1.0/{self.parenthesize(base, sp.printing.precedence.PRECEDENCE['Mul'] + 1)}"
+        return super()._print_Pow(expr)
+
+    def _print_Symbol(self, expr):
+        return str(expr)
+
+    def _print_Piecewise(self, expr):
+        *pairs, (default, _) = expr.args
+        out = self._print(default)
+        for value, cond in reversed(pairs):
+            out = f"(({self._print(cond)}) ? ({self._print(value)}) : ({out}))"
+        return out
+
+
+class NPrinter(NumPyPrinter):
+    """NumPy code; small integer powers as products, Piecewise as numpy.where (vectorised)."""
+
+    def _print_Pow(self, expr, rational=False):
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and 2 <= abs(int(exp)) <= 4:
+            b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
+            prod = "(" + "*".join([b] * abs(int(exp))) + ")"
+            return prod if exp > 0 else f"1.0/{prod}"
+        return super()._print_Pow(expr, rational=rational)
+
+    def _print_Piecewise(self, expr):
+        # numpy.where over (cond, value) pairs, innermost last; the last pair must be the default.
+        *pairs, (default, cond_true) = expr.args
+        out = self._print(default)
+        for value, cond in reversed(pairs):
+            out = f"numpy.where({self._print(cond)}, {self._print(value)}, {out})"
+        return out
+
+
+_C = CPrinter()
+_NP = NPrinter({"fully_qualified_modules": True})
+
+
+def c_expr(e) -> str:
+    return _C.doprint(e)
+
+
+def np_expr(e) -> str:
+    return _NP.doprint(e)
+
+
+@dataclass(frozen=True)
+class Block:
+    """CSE temporaries and outputs for one generated function."""
+
+    temps: tuple  # ((name, expr), ...)
+    outputs: tuple  # (expr, ...)
+
+    @classmethod
+    def of(cls, exprs, prefix: str) -> Block:
+        exprs = [sp.sympify(e) for e in exprs]
+        temps, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix), order="canonical")
+        return cls(tuple(temps), tuple(reduced))
+
+    def uses(self, symbols) -> list[tuple[int, str]]:
+        """(index, name) of the given symbols that this block's expressions mention, in order."""
+        free = set()
+        for _, e in self.temps:
+            free |= e.free_symbols
+        for e in self.outputs:
+            free |= e.free_symbols
+        return [(i, str(s)) for i, s in enumerate(symbols) if s in free]
+
+    def c(self):
+        return [(str(n), c_expr(e)) for n, e in self.temps], [c_expr(e) for e in self.outputs]
+
+    def numpy(self):
+        return [(str(n), np_expr(e)) for n, e in self.temps], [np_expr(e) for e in self.outputs]
+
+
+def _flatten_observables(obs: dict):
+    names, exprs = [], []
+    for key, val in obs.items():
+        if isinstance(val, (tuple, list)):
+            suffix = ("x", "y", "z") if key == "axis" else ("1", "2", "3")
+            for s, v in zip(suffix, val):
+                names.append(f"{key}_{s}" if key == "axis" else f"{key}{s}")
+                exprs.append(v)
+        else:
+            names.append(key)
+            exprs.append(val)
+    return names, exprs
+
+
+@dataclass(frozen=True)
+class KernelSpec:
+    model: Model
+    rhs: Block
+    jac: Block
+    obs: Block
+    observable_names: tuple
+
+    @classmethod
+    def of(cls, model: Model) -> KernelSpec:
+        names, exprs = _flatten_observables(model.observables)
+        # The domain expressions share the CSE of rhs and Jacobian (they reuse sin β, |q|², ...).
+        dom = list(model.domain)
+        return cls(model, Block.of(dom + list(model.rhs), "x"), Block.of(dom + list(model.jacobian), "x"),
+                   Block.of(exprs, "x"), tuple(names))
+
+    @property
+    def name(self):
+        return self.model.name
+
+    def context(self, language: str) -> dict:
+        """The template context: everything a template needs, already printed."""
+        m = self.model
+        pr = (lambda b: b.c()) if language == "c" else (lambda b: b.numpy())
+        expr = c_expr if language == "c" else np_expr
+        nd = len(m.domain)
+        rt, ro = pr(self.rhs)
+        jt, jo = pr(self.jac)
+        rg, ro, jg, jo = ro[:nd], ro[nd:], jo[:nd], jo[nd:]
+        ot, oo = pr(self.obs)
+        used = {k: (b.uses(m.states), b.uses(m.params)) for k, b in
+                (("rhs", self.rhs), ("jac", self.jac), ("obs", self.obs))}
+        return dict(
+            used=used,
+            name=m.name, prefix=m.name, NAME=m.name.upper(), formulation=m.formulation,
+            description=m.description, effects=m.effects, symmetric=m.symmetric,
+            states=m.state_names, params=m.param_names, state_symbols=[str(s) for s in m.states],
+            param_symbols=[str(s) for s in m.params], ny=len(m.states), np=len(m.params),
+            rhs_temps=rt, rhs_out=ro, jac_temps=jt, jac_out=jo, obs_temps=ot, obs_out=oo,
+            observables=self.observable_names, nobs=len(self.observable_names),
+            rhs_guard=rg, jac_guard=jg,
+        )

@@ -1,0 +1,168 @@
+"""Rotations and Euler angles, symbolically.
+
+Frames. The inertial frame has unit vectors ê⁰ᵢ; the body frame ê₁, ê₂, ê₃ is fixed in the body
+and diagonalises its inertia tensor. A vector v has inertial components v⁰ and body components ṽ.
+
+Conventions. A convention is the sequence of axes of three successive rotations through the
+angles (α, β, γ): the first about the inertial axis, the second about the once-rotated
+(intermediate) axis, the third about the body axis. ``ZYZ`` is the notes' convention (the one of
+most quantum-mechanics texts, Fetter & Walecka's lecture 26); ``ZXZ`` is that of most
+classical-mechanics texts (Goldstein's φ, θ, ψ).
+
+Matrices. ``active(axis, θ)`` turns a vector by θ about ``axis`` (right hand); ``passive(axis, θ)``
+= active(axis, θ)ᵀ gives the components of a fixed vector in axes turned by θ — the matrices
+written on the slides are passive. The orientation matrix
+
+    R(α, β, γ) = active(a₁, α) · active(a₂, β) · active(a₃, γ)
+
+maps body components to inertial ones, v⁰ = R ṽ; its columns are the body axes in inertial
+components (column 3 is the symmetry axis ê₃), and ṽ = Rᵀ v⁰ = passive(a₃, γ) passive(a₂, β)
+passive(a₁, α) v⁰ is the slides' product of passive matrices.
+
+Angular velocity in the body frame, two independent routes that must agree:
+
+1. the notes' sum  ω̃ = α̇ ê⁰₃ + β̇ ê′₂ + γ̇ ê₃, each axis written in body components
+   (ê⁰_{a₁} = Rᵀ e_{a₁}, ê′_{a₂} = passive(a₃, γ) e_{a₂}, ê_{a₃} = e_{a₃});
+2. the skew matrix  [ω̃]ₓ = Rᵀ Ṙ  (body-frame angular velocity tensor).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+_AXIS_INDEX = {"x": 0, "y": 1, "z": 2}
+
+# Euler angles and their rates as plain symbols: Lagrangian mechanics here treats (q, q̇) as
+# independent variables, and time derivatives are taken by the chain rule (see `time_derivative`).
+alpha, beta, gamma = sp.symbols("alpha beta gamma", real=True)
+alpha_d, beta_d, gamma_d = sp.symbols("alpha_d beta_d gamma_d", real=True)
+ANGLES = (alpha, beta, gamma)
+RATES = (alpha_d, beta_d, gamma_d)
+
+
+def unit(axis: str) -> sp.Matrix:
+    """The unit column vector along 'x', 'y' or 'z'."""
+    e = sp.zeros(3, 1)
+    e[_AXIS_INDEX[axis]] = 1
+    return e
+
+
+def active(axis: str, theta) -> sp.Matrix:
+    """Active rotation by ``theta`` about ``axis`` (right-hand rule): v ↦ R v turns v."""
+    c, s = sp.cos(theta), sp.sin(theta)
+    i = _AXIS_INDEX[axis]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    R = sp.eye(3)
+    R[j, j], R[j, k], R[k, j], R[k, k] = c, -s, s, c
+    return R
+
+
+def passive(axis: str, theta) -> sp.Matrix:
+    """Passive rotation: components of a fixed vector in axes turned by ``theta`` about ``axis``.
+
+    For axis z this is the slides' [[cos, sin, 0], [−sin, cos, 0], [0, 0, 1]].
+    """
+    return active(axis, theta).T
+
+
+def skew(w) -> sp.Matrix:
+    """[w]ₓ, the matrix with [w]ₓ v = w × v."""
+    return sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+
+
+def unskew(W: sp.Matrix) -> sp.Matrix:
+    """The vector w of a skew matrix W = [w]ₓ (antisymmetric part taken, so rounding-safe)."""
+    return sp.Matrix([(W[2, 1] - W[1, 2]) / 2, (W[0, 2] - W[2, 0]) / 2, (W[1, 0] - W[0, 1]) / 2])
+
+
+def trig_reduce(expr, angles=ANGLES):
+    """Canonical form of a polynomial in sin and cos of ``angles`` (rational functions: of the
+    numerator and the denominator separately).
+
+    Each sin(x), cos(x) becomes a symbol s, c and the polynomial is reduced modulo c² + s² − 1
+    (remainder in c, so c appears at most linearly). Two such polynomials are equal as functions
+    exactly when their reduced forms are identical: a zero test that needs no `simplify`, and
+    far faster than `trigsimp` on the 3×3 products here.
+    """
+    expr = sp.sympify(expr)
+    pairs = []
+    for x in angles:
+        s_, c_ = sp.Dummy("s"), sp.Dummy("c")
+        expr = expr.subs({sp.sin(x): s_, sp.cos(x): c_, sp.tan(x): s_ / c_})
+        pairs.append((x, s_, c_))
+    num, den = sp.fraction(sp.together(expr))
+
+    def reduce(poly):
+        poly = sp.expand(poly)
+        for _, s_, c_ in pairs:
+            if poly.has(c_):
+                poly = sp.rem(sp.Poly(poly, c_), sp.Poly(c_**2 + s_**2 - 1, c_)).as_expr()
+        return sp.expand(poly)
+
+    back = {v: f(x) for x, s_, c_ in pairs for v, f in ((s_, sp.sin), (c_, sp.cos))}
+    num = reduce(num).subs(back)
+    if den == 1:
+        return num
+    return num / sp.factor(reduce(den).subs(back))
+
+
+def time_derivative(expr, coords=ANGLES, rates=RATES, accels=None):
+    """d/dt of an expression in (q, q̇) by the chain rule: Σ ∂/∂q_i q̇_i (+ Σ ∂/∂q̇_i q̈_i)."""
+    d = sum((sp.diff(expr, q) * qd for q, qd in zip(coords, rates)), sp.S.Zero)
+    if accels is not None:
+        d += sum((sp.diff(expr, qd) * qdd for qd, qdd in zip(rates, accels)), sp.S.Zero)
+    return d
+
+
+@dataclass(frozen=True)
+class Convention:
+    """Three rotation axes: about the inertial a₁, the intermediate a₂, the body a₃."""
+
+    name: str
+    axes: tuple[str, str, str]
+    description: str
+
+    def matrix(self, a=alpha, b=beta, c=gamma) -> sp.Matrix:
+        """R = active(a₁, α) active(a₂, β) active(a₃, γ): body → inertial components."""
+        a1, a2, a3 = self.axes
+        return active(a1, a) * active(a2, b) * active(a3, c)
+
+    def intermediate_axis(self, c=gamma) -> sp.Matrix:
+        """ê′ (the second rotation's axis) in body components: passive(a₃, γ) e_{a₂}."""
+        return passive(self.axes[2], c) * unit(self.axes[1])
+
+    def inertial_axis(self, a=alpha, b=beta, c=gamma) -> sp.Matrix:
+        """ê⁰ (the first rotation's axis) in body components: Rᵀ e_{a₁}."""
+        return self.matrix(a, b, c).T * unit(self.axes[0])
+
+    def omega_body_sum(self) -> sp.Matrix:
+        """Route 1, the notes' sum: ω̃ = α̇ ê⁰_{a₁} + β̇ ê′_{a₂} + γ̇ ê_{a₃} in body components."""
+        w = alpha_d * self.inertial_axis() + beta_d * self.intermediate_axis() + gamma_d * unit(self.axes[2])
+        return w.applyfunc(trig_reduce)
+
+    def omega_body_skew(self) -> sp.Matrix:
+        """Route 2: ω̃ from the skew matrix [ω̃]ₓ = Rᵀ Ṙ."""
+        R = self.matrix()
+        Rdot = R.applyfunc(time_derivative)
+        return unskew(R.T * Rdot).applyfunc(trig_reduce)
+
+    def rate_matrix(self) -> sp.Matrix:
+        """B(q) with ω̃ = B(q) q̇ (linear in the rates)."""
+        w = self.omega_body_sum()
+        return w.jacobian(sp.Matrix(RATES))
+
+    def singular_set(self):
+        """det B(q): the rates are recoverable from ω̃ exactly where this is non-zero."""
+        return trig_reduce(self.rate_matrix().det())
+
+    def rates_from_omega(self, w=None) -> sp.Matrix:
+        """The inverse map q̇ = B(q)⁻¹ ω̃, defined off the singular set (see `singular_set`)."""
+        w = sp.Matrix(sp.symbols("omega1:4", real=True)) if w is None else sp.Matrix(w)
+        B = self.rate_matrix()
+        return (B.adjugate() * w / self.singular_set()).applyfunc(lambda e: sp.trigsimp(sp.factor(e)))
+
+
+ZYZ = Convention("zyz", ("z", "y", "z"), "z-y-z: the notes' (quantum-mechanics) convention")
+ZXZ = Convention("zxz", ("z", "x", "z"), "z-x-z: Goldstein's (classical-mechanics) convention")
+CONVENTIONS = {c.name: c for c in (ZYZ, ZXZ)}
