@@ -1,0 +1,366 @@
+"""Simulate a scene: scene → model → kernel → integrator → results.
+
+The scene names the effects; the model is built from exactly those (`models.build`), compiled
+once per process (`kernel_for`), integrated in C (or by SciPy on the generated NumPy
+right-hand side, for comparison), and the outputs of the contract are computed from the
+state by the model's generated observables, whatever formulation ran.
+
+Formulation "auto":
+* symmetric body, conservative effects, and a β range that stays clear of the poles (or meets
+  a pole only where the reduced equations are regular: p_α = ±p_γ) → ``reduced``: the one
+  degree of freedom that is left once p_α, p_γ are conserved;
+* otherwise → ``quaternion``, which has no coordinate singularity.
+The Euler-angle formulation runs only when asked for; it then refuses (IntegrationError) to
+return a trajectory that came closer to β = 0 or π than its accuracy allows.
+"""
+from __future__ import annotations
+
+import functools
+import os
+import tempfile
+import types
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from . import models
+from .errors import IntegrationError, SceneError
+from .scene import Scene, load_scene
+
+FIXED_STEP = ("rk4", "gauss4", "gauss6")
+SCIPY_METHODS = {"scipy-rk45": "RK45", "scipy-dop853": "DOP853", "scipy-radau": "Radau", "scipy-lsoda": "LSODA"}
+# Closest approach to a pole (|sin β|) at which the reduced and Euler-angle formulations still
+# keep their accuracy; nearer than this, "auto" takes the quaternion formulation.
+POLE_CLEARANCE = 1e-3
+
+
+@dataclass
+class Result:
+    """The arrays of the output file (see INTERFACE.md), as attributes."""
+
+    t: np.ndarray
+    alpha: np.ndarray
+    beta: np.ndarray
+    gamma: np.ndarray
+    omega: np.ndarray
+    axis: np.ndarray
+    energy: np.ndarray
+    p_alpha: np.ndarray
+    p_gamma: np.ndarray
+    method: str
+    formulation: str
+    nfev: int
+    model: str = ""
+    state: np.ndarray | None = field(default=None, repr=False)
+    scene: Scene | None = field(default=None, repr=False)
+
+    def arrays(self) -> dict:
+        return dict(t=self.t, alpha=self.alpha, beta=self.beta, gamma=self.gamma, omega=self.omega,
+                    axis=self.axis, energy=self.energy, p_alpha=self.p_alpha, p_gamma=self.p_gamma,
+                    method=np.array(self.method), formulation=np.array(self.formulation),
+                    nfev=np.array(self.nfev, dtype=np.int64))
+
+
+# ---------------------------------------------------------------------------------------------
+# model and kernel
+
+
+def effect_names(scene: Scene) -> tuple[str, ...]:
+    """The registry effects a scene calls for (gravity only when it has a [gravity] table, …)."""
+    names = []
+    if scene.gravity is not None:
+        names.append("gravity")
+    if scene.damping is not None:
+        names.append("damping")
+    return tuple(names)
+
+
+@functools.lru_cache(maxsize=None)
+def model_for(formulation: str, symmetric: bool, effects: tuple) -> models.Model:
+    return models.build(formulation, symmetric, effects)
+
+
+@functools.lru_cache(maxsize=None)
+def kernel_for(formulation: str, symmetric: bool, effects: tuple):
+    """The compiled C kernel (model + solvers) for a model; derived and compiled once."""
+    from .codegen import model_sources
+    from .integrate import Kernel
+
+    model = model_for(formulation, symmetric, effects)
+    files = model_sources(model)
+    sources = {Path(k).name: v for k, v in files.items() if k.startswith("c/")}
+    return Kernel.from_sources(model.name, sources)
+
+
+@functools.lru_cache(maxsize=None)
+def numpy_module_for(formulation: str, symmetric: bool, effects: tuple) -> types.ModuleType:
+    """The generated NumPy module of a model, loaded from its rendered text."""
+    from .codegen import model_sources
+
+    model = model_for(formulation, symmetric, effects)
+    text = model_sources(model)[f"numpy/{model.name}.py"]
+    mod = types.ModuleType(f"derive_generated_{model.name}")
+    exec(compile(text, f"<generated {model.name}>", "exec"), mod.__dict__)
+    return mod
+
+
+# ---------------------------------------------------------------------------------------------
+# initial state and parameters per formulation
+
+
+def _momenta(scene: Scene):
+    """p_γ and p_α − p_γ (the difference formed without cancellation: half angles)."""
+    b, i = scene.body, scene.initial
+    w = np.asarray(i.omega, dtype=float)
+    p_gamma = b.I3 * w[2]
+    # p_α = ẑ·(R I ω̃); its ẑ row of R is (−sinβ cosγ, sinβ sinγ, cosβ).
+    sb, cb = np.sin(i.beta), np.cos(i.beta)
+    row = np.array([-sb * np.cos(i.gamma), sb * np.sin(i.gamma), cb])
+    Iw = np.array([b.I1 * w[0], b.I2 * w[1], b.I3 * w[2]])
+    p_alpha = float(row @ Iw)
+    # p_α − p_γ = (row₁₂ · (Iω̃)₁₂) − 2 sin²(β/2) I₃ω̃₃ : no subtraction of nearly equal numbers.
+    diff = float(row[:2] @ Iw[:2] - 2.0 * np.sin(i.beta / 2) ** 2 * p_gamma)
+    return p_alpha, p_gamma, diff
+
+
+def _params(scene: Scene, model: models.Model) -> np.ndarray:
+    b = scene.body
+    values = {"I1": b.I1, "I2": b.I2, "I3": b.I3}
+    if scene.gravity is not None:
+        values.update(M=scene.gravity.M, g=scene.gravity.g, l=scene.gravity.l)
+    if scene.damping is not None:
+        values["c"] = scene.damping.c
+    if model.formulation == "reduced":
+        p_alpha, p_gamma, diff = _momenta(scene)
+        values.update(p_alpha=p_gamma + diff, p_gamma=p_gamma)
+    return np.array([values[n] for n in model.param_names], dtype=float)
+
+
+def _quaternion(a, b, c) -> np.ndarray:
+    """q of R = Rz(α) Ry(β) Rz(γ), scalar first: product of the three half-angle quaternions."""
+    qa = np.array([np.cos(a / 2), 0.0, 0.0, np.sin(a / 2)])
+    qb = np.array([np.cos(b / 2), 0.0, np.sin(b / 2), 0.0])
+    qc = np.array([np.cos(c / 2), 0.0, 0.0, np.sin(c / 2)])
+    return _qmul(_qmul(qa, qb), qc)
+
+
+def _qmul(p, q) -> np.ndarray:
+    p0, pv, q0, qv = p[0], p[1:], q[0], q[1:]
+    return np.concatenate([[p0 * q0 - pv @ qv], p0 * qv + q0 * pv + np.cross(pv, qv)])
+
+
+def _initial_state(scene: Scene, model: models.Model) -> np.ndarray:
+    i = scene.initial
+    if model.formulation == "quaternion":
+        return np.concatenate([_quaternion(i.alpha, i.beta, i.gamma), i.omega])
+    if model.formulation == "reduced":
+        return np.array([i.alpha, i.beta, i.gamma, _beta_dot(scene)])
+    if model.formulation == "euler-angles":
+        if i.alpha_dot is None:
+            s = np.sin(i.beta)
+            if abs(s) < POLE_CLEARANCE:
+                raise SceneError(f"{scene.source}: initial: the Euler-angle rates are undefined at sin(beta) = {s:.3g}; "
+                                 "give the rates, or use formulation = \"quaternion\"")
+            w1, w2, w3 = i.omega
+            cg, sg = np.cos(i.gamma), np.sin(i.gamma)
+            ad = (-w1 * cg + w2 * sg) / s
+            rates = (ad, w1 * sg + w2 * cg, w3 - ad * np.cos(i.beta))
+        else:
+            rates = (i.alpha_dot, i.beta_dot, i.gamma_dot)
+        return np.array([i.alpha, i.beta, i.gamma, *rates])
+    raise ValueError(model.formulation)
+
+
+def _beta_dot(scene: Scene) -> float:
+    i = scene.initial
+    if i.beta_dot is not None:
+        return float(i.beta_dot)
+    w1, w2, _ = i.omega
+    return float(w1 * np.sin(i.gamma) + w2 * np.cos(i.gamma))
+
+
+# ---------------------------------------------------------------------------------------------
+# choosing the formulation
+
+
+def beta_range(scene: Scene) -> tuple[float, float]:
+    """[β_min, β_max] of a conservative symmetric top from the turning points of
+    f(u) = (1 − u²)(2/I₁)(E′ − M g l u) − ((p_α − p_γ u)/I₁)², u = cos β."""
+    b = scene.body
+    p_alpha, p_gamma, diff = _momenta(scene)
+    mgl = scene.gravity.M * scene.gravity.g * scene.gravity.l if scene.gravity else 0.0
+    u0 = np.cos(scene.initial.beta)
+    bd = _beta_dot(scene)
+    Eprime = 0.5 * b.I1 * bd**2 + (p_alpha - p_gamma * u0) ** 2 / (2 * b.I1 * max(1 - u0**2, 1e-300)) + mgl * u0
+    # f(u) = (2/I₁)(E′ − mgl u)(1 − u²) − (p_α − p_γ u)²/I₁², expanded in powers of u.
+    k = 2.0 / b.I1
+    coeffs = [k * mgl, -k * Eprime - p_gamma**2 / b.I1**2, -k * mgl + 2 * p_alpha * p_gamma / b.I1**2,
+              k * Eprime - p_alpha**2 / b.I1**2]
+    roots = np.roots(coeffs) if mgl != 0 else np.roots(coeffs[1:])
+    real = np.sort(roots[np.abs(roots.imag) < 1e-9].real)
+    inside = real[(real >= -1 - 1e-12) & (real <= 1 + 1e-12)]
+    lo = max([r for r in inside if r <= u0 + 1e-12], default=-1.0)
+    hi = min([r for r in inside if r >= u0 - 1e-12], default=1.0)
+    return float(np.arccos(np.clip(hi, -1, 1))), float(np.arccos(np.clip(lo, -1, 1)))
+
+
+def choose_formulation(scene: Scene) -> str:
+    requested = scene.simulate.formulation
+    if requested != "auto":
+        return requested
+    if not scene.symmetric or scene.damping is not None:
+        return "quaternion"
+    _, p_gamma, diff = _momenta(scene)
+    b_lo, b_hi = beta_range(scene)
+    near_top = np.sin(b_lo) < POLE_CLEARANCE and b_lo < np.pi / 2
+    near_bottom = np.sin(b_hi) < POLE_CLEARANCE and b_hi > np.pi / 2
+    p_alpha = p_gamma + diff
+    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes.
+    if (near_top and diff != 0.0) or (near_bottom and p_alpha + p_gamma != 0.0):
+        return "quaternion"
+    return "reduced"
+
+
+def choose_method(scene: Scene) -> str:
+    return "dop853" if scene.simulate.method == "auto" else scene.simulate.method
+
+
+# ---------------------------------------------------------------------------------------------
+# outputs
+
+
+def _euler_from_quaternion(q: np.ndarray):
+    """Continuous z-y-z angles of R(q): β ∈ [0, π], α and γ unwrapped."""
+    q = q / np.linalg.norm(q, axis=1, keepdims=True)
+    q0, q1, q2, q3 = q.T
+    r13 = 2 * (q1 * q3 + q0 * q2)
+    r23 = 2 * (q2 * q3 - q0 * q1)
+    r31 = 2 * (q1 * q3 - q0 * q2)
+    r32 = 2 * (q2 * q3 + q0 * q1)
+    # cos β = q0² − q1² − q2² + q3², sin β = 2 √((q0² + q3²)(q1² + q2²)): both accurate near the poles.
+    a2, b2 = q0**2 + q3**2, q1**2 + q2**2
+    beta = np.arctan2(2 * np.sqrt(a2 * b2), a2 - b2)
+    alpha = np.unwrap(np.arctan2(r23, r13))
+    gamma = np.unwrap(np.arctan2(r32, -r31))
+    return alpha, beta, gamma
+
+
+def _outputs(model: models.Model, mod, t, Y, p, scene, method, nfev) -> Result:
+    obs = mod.observables(t, Y.T, p)
+    named = dict(zip(mod.OBSERVABLE_NAMES, obs))
+    if model.formulation == "quaternion":
+        alpha, beta, gamma = _euler_from_quaternion(Y[:, :4])
+    else:
+        alpha, beta, gamma = Y[:, 0], Y[:, 1], Y[:, 2]
+    res = Result(
+        t=t, alpha=alpha, beta=beta, gamma=gamma,
+        omega=np.stack([named["omega1"], named["omega2"], named["omega3"]], axis=1),
+        axis=np.stack([named["axis_x"], named["axis_y"], named["axis_z"]], axis=1),
+        energy=np.broadcast_to(named["energy"], t.shape).copy(),
+        p_alpha=np.broadcast_to(named["p_alpha"], t.shape).astype(float).copy(),
+        p_gamma=np.broadcast_to(named["p_gamma"], t.shape).astype(float).copy(),
+        method=method, formulation=model.formulation, nfev=int(nfev), model=model.name, state=Y, scene=scene,
+    )
+    for name in ("alpha", "beta", "gamma", "omega", "axis", "energy"):
+        arr = getattr(res, name)
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            k = int(np.argwhere(bad)[0][0])
+            raise IntegrationError(f"t = {t[k]:.6g}: non-finite {name} in the output")
+    return res
+
+
+def _check_pole(model: models.Model, t, Y, rtol):
+    """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
+    trajectory whose closest approach to a pole made that larger than the tolerance."""
+    if model.formulation != "euler-angles":
+        return
+    s = np.abs(np.sin(Y[:, 1]))
+    k = int(np.argmin(s))
+    if s[k] ** 2 < np.finfo(float).eps / rtol:
+        raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
+                               f"(|sin beta| = {s[k]:.3g}); use formulation = \"quaternion\" or \"auto\"")
+
+
+# ---------------------------------------------------------------------------------------------
+# entry point
+
+
+def simulate(scene, **overrides) -> Result:
+    """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
+    sc = scene if isinstance(scene, Scene) else load_scene(scene, **overrides)
+    formulation = choose_formulation(sc)
+    method = choose_method(sc)
+    key = (formulation, sc.symmetric, effect_names(sc))
+    model = model_for(*key)
+    p = _params(sc, model)
+    y0 = _initial_state(sc, model)
+    t = sc.t_out
+    s = sc.simulate
+    if method in SCIPY_METHODS:
+        Y, nfev = _solve_scipy(numpy_module_for(*key), SCIPY_METHODS[method], y0, p, t, s.rtol, s.atol)
+    else:
+        kernel = kernel_for(*key)
+        h = s.h
+        if method in FIXED_STEP and h is None:
+            h = default_step(sc)
+        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h)
+        Y, nfev = sol.y, sol.nfev
+    _check_pole(model, t, Y, s.rtol)
+    return _outputs(model, numpy_module_for(*key), t, Y, p, sc, method, nfev)
+
+
+def default_step(scene: Scene) -> float:
+    """A fixed step for RK4 / Gauss–Legendre when the scene gives none: 1/200 of the fastest
+    natural period (spin, precession or pendulum), and no larger than the output spacing."""
+    b, i = scene.body, scene.initial
+    rates = [np.linalg.norm(i.omega) * max(b.I1, b.I2, b.I3) / min(b.I1, b.I2, b.I3)]
+    if scene.gravity is not None:
+        rates.append(np.sqrt(abs(scene.gravity.M * scene.gravity.g * scene.gravity.l) / min(b.I1, b.I2)))
+    fastest = max(max(rates), 1e-12)
+    dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
+    return float(min(2 * np.pi / fastest / 200, dt_out))
+
+
+def _solve_scipy(mod, method, y0, p, t, rtol, atol):
+    from scipy.integrate import solve_ivp
+
+    sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=method, t_eval=t, rtol=rtol, atol=atol, args=(p,),
+                    **({"jac": mod.jac} if method in ("Radau", "BDF", "LSODA") else {}))
+    if not sol.success:
+        raise IntegrationError(f"t = {sol.t[-1] if sol.t.size else t[0]:.6g}: scipy {method}: {sol.message}")
+    return sol.y.T.copy(), sol.nfev
+
+
+def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
+    """Write the .npz (and the plot), each atomically: a temporary file renamed into place."""
+    staged = []
+    try:
+        if npz:
+            staged.append((_stage(npz, lambda f: np.savez(f, **res.arrays())), npz))
+        if png:
+            from .plots import plot_result
+
+            staged.append((_stage(png, lambda f: plot_result(res, f)), png))
+    except BaseException:
+        for tmp, _ in staged:
+            os.unlink(tmp)
+        raise
+    for tmp, final in staged:
+        os.replace(tmp, final)
+
+
+def _stage(path: str, writer) -> str:
+    target = Path(path)
+    if not target.parent.exists():
+        raise SceneError(f"{path}: output: directory {str(target.parent)!r} does not exist")
+    fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=target.suffix)
+    os.close(fd)
+    try:
+        with open(tmp, "wb") as fh:
+            writer(fh)
+    except BaseException:
+        os.unlink(tmp)
+        raise
+    return tmp
