@@ -289,7 +289,7 @@ def _check_pole(model: models.Model, t, Y, rtol):
 
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
-    sc = scene if isinstance(scene, Scene) else load_scene(scene, **overrides)
+    sc = load_scene(scene, **overrides)
     formulation = choose_formulation(sc)
     method = choose_method(sc)
     key = (formulation, sc.symmetric, effect_names(sc))

@@ -1,0 +1,523 @@
+"""Scene files: read, validate and describe one simulation of a rigid body about a fixed point.
+
+A scene is a TOML file (or a dict shaped like one) with the tables ``[body]``, ``[gravity]``,
+``[damping]``, ``[initial]`` and ``[simulate]`` and an optional top-level ``title``; see
+``/work/shared/INTERFACE.md`` ("Scene files") for the contract and ``scenes/*.toml`` for examples.
+
+Conventions (those of the whole package):
+
+* SI units; angles in radians, rates in rad/s, moments of inertia in kg m^2, times in s.
+* z-y-z Euler angles: alpha about the inertial z axis, beta about the intermediate y' axis,
+  gamma about the body 3 axis; R = Rz(alpha) Ry(beta) Rz(gamma) maps body to inertial components.
+* ``omega`` is the angular velocity in the *body* frame, (w1, w2, w3) along the principal axes.
+
+Every problem raises :class:`derive.errors.SceneError` with exactly one line,
+``<file>: <key or table>: <what is wrong>``, keys dotted (``body.I3``, ``simulate.rtol``). The
+first problem found is reported, tables in the order body, gravity, damping, initial, simulate.
+
+Decisions where the contract is silent (documented here once):
+
+* ``[body]``: I1 and I3 are required, I2 defaults to I1.
+* ``[gravity]``: M, g, l all required once the table is present. l may be negative: the centre of
+  mass then sits *below* the pivot when body axis 3 points up (a hanging, pendulum-like body).
+  g = 0 is allowed (the gravity terms are still compiled, with a zero coefficient).
+* ``[damping]``: c is required once the table is present; c = 0 is allowed and the effect still
+  counts as present (a scene pays for what it names).
+* ``[initial]``: alpha, beta, gamma are required (any finite real). Give the Euler-angle rates or
+  ``omega``. If at least one rate is given, missing rates default to 0.0 (``beta_dot`` is usually
+  0 at a turning point, so scenes may omit it). When ``omega`` is given the rates are kept as
+  None: the inverse map omega -> rates divides by sin(beta).
+* ``[simulate]``: t_end is required; the other keys have the defaults in ``SIMULATE_DEFAULTS``.
+  ``h`` (an extension of the contract) is the step size in s of the fixed-step methods
+  ``FIXED_STEP_METHODS``; it is rejected with any other method (there it would be ignored
+  silently). h = None lets the integrator choose. rtol must lie in [100 eps, 1): below that no
+  double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
+  cannot exhaust memory.
+* ``formulation = "reduced"`` needs conserved p_alpha and p_gamma: a symmetric body (I1 == I2)
+  and no damping (c == 0). ``"euler-angles"`` and ``"reduced"`` are singular at sin(beta) = 0, so
+  they are rejected when the initial beta is within ``POLE_TOLERANCE`` of a pole; "auto" and
+  "quaternion" accept such a start.
+* Overrides (command-line flags, API keywords) replace keys of ``[simulate]`` before validation;
+  None means "not given". A bad override is reported under its ``simulate.<key>`` name with the
+  suffix "(given as an override)".
+"""
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import math
+import numbers
+import os
+import re
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .errors import SceneError
+
+__all__ = [
+    "METHODS", "FIXED_STEP_METHODS", "FORMULATIONS", "SIMULATE_DEFAULTS", "EFFECTS",
+    "Body", "Gravity", "Damping", "Initial", "Simulate", "Scene",
+    "load_scene", "body_omega",
+]
+
+#: Integration methods: name -> one-line description (shown by ``derive simulate --help``).
+METHODS: dict[str, str] = {
+    "auto": "let derive choose a method suited to the scene and the tolerances",
+    "dop853": "Dormand-Prince 8(5,3), explicit, adaptive step, compiled kernel",
+    "rk4": "classical Runge-Kutta, order 4, explicit, fixed step h",
+    "gauss4": "Gauss-Legendre 2 stages, order 4, implicit and symplectic, fixed step h",
+    "gauss6": "Gauss-Legendre 3 stages, order 6, implicit and symplectic, fixed step h",
+    "scipy-rk45": "scipy.integrate.solve_ivp RK45 (reference)",
+    "scipy-dop853": "scipy.integrate.solve_ivp DOP853 (reference)",
+    "scipy-radau": "scipy.integrate.solve_ivp Radau, implicit (reference)",
+    "scipy-lsoda": "scipy.integrate.solve_ivp LSODA, stiffness switching (reference)",
+}
+#: The methods that take a fixed step size ``h``.
+FIXED_STEP_METHODS = ("rk4", "gauss4", "gauss6")
+
+#: Formulations of the equations of motion: name -> one-line description.
+FORMULATIONS: dict[str, str] = {
+    "auto": "let derive choose from the body, the effects and the initial state",
+    "euler-angles": "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
+    "reduced": "beta alone with conserved p_alpha, p_gamma; symmetric body, no damping",
+    "quaternion": "unit quaternion and body omega; no coordinate singularity",
+}
+
+#: Effects a scene may name, in canonical order (each is an optional table).
+EFFECTS = ("gravity", "damping")
+
+#: Defaults of the optional ``[simulate]`` keys (t_end has none: it is required).
+SIMULATE_DEFAULTS = {
+    "samples": 1001, "method": "auto", "rtol": 1e-10, "atol": 1e-12, "formulation": "auto",
+    "h": None,
+}
+MAX_SAMPLES = 10_000_000
+#: Smallest rtol accepted: 100 machine epsilons (about 2.2e-14).
+MIN_RTOL = 100 * np.finfo(float).eps
+#: |sin(beta)| below this counts as "at a pole" of the z-y-z Euler angles.
+POLE_TOLERANCE = 1e-9
+#: Relative slack of the triangle inequality, so that a flat plate (I3 = I1 + I2) survives rounding.
+TRIANGLE_SLACK = 1e-12
+
+_RATES = ("alpha_dot", "beta_dot", "gamma_dot")
+_KEYS = {  # table -> its keys, in the order they are documented
+    "body": ("I1", "I2", "I3"),
+    "gravity": ("M", "g", "l"),
+    "damping": ("c",),
+    "initial": ("alpha", "beta", "gamma", *_RATES, "omega"),
+    "simulate": ("t_end", "samples", "method", "rtol", "atol", "formulation", "h"),
+}
+_TOP_KEYS = ("title",)
+
+
+# --------------------------------------------------------------------------------------------
+# The scene
+
+
+@dataclass(frozen=True)
+class Body:
+    """Principal moments of inertia in kg m^2, about the fixed point (about the centre of mass
+    when the scene has no gravity). Axis 3 is the symmetry axis of a symmetric body."""
+
+    I1: float
+    I2: float
+    I3: float
+
+    @property
+    def moments(self) -> tuple[float, float, float]:
+        return (self.I1, self.I2, self.I3)
+
+
+@dataclass(frozen=True)
+class Gravity:
+    """Uniform field of strength g (m/s^2) along -z acting on mass M (kg) whose centre sits on
+    body axis 3 at signed distance l (m) from the fixed point: V = M g l cos(beta).
+    l < 0 puts the centre of mass below the pivot when axis 3 points up."""
+
+    M: float
+    g: float
+    l: float
+
+
+@dataclass(frozen=True)
+class Damping:
+    """Viscous torque -c omega about the fixed point; c in N m s (per radian) >= 0."""
+
+    c: float
+
+
+@dataclass(frozen=True)
+class Initial:
+    """Initial orientation (z-y-z Euler angles, rad) and angular velocity.
+
+    ``omega`` (body frame, rad/s) is always set. The Euler-angle rates (rad/s) are set only when
+    the scene gave them; when it gave ``omega`` they are None, because the inverse map divides
+    by sin(beta).
+    """
+
+    alpha: float
+    beta: float
+    gamma: float
+    alpha_dot: float | None
+    beta_dot: float | None
+    gamma_dot: float | None
+    omega: tuple[float, float, float]
+
+    @property
+    def has_rates(self) -> bool:
+        return self.alpha_dot is not None
+
+    @property
+    def at_pole(self) -> bool:
+        """True when beta is (numerically) 0 or pi, where the Euler angles are singular."""
+        return abs(math.sin(self.beta)) < POLE_TOLERANCE
+
+
+@dataclass(frozen=True)
+class Simulate:
+    """How to integrate: up to ``t_end`` (s), output at ``samples`` equally spaced times from 0
+    to t_end inclusive, with ``method`` (a key of METHODS), tolerances ``rtol``/``atol``, the
+    ``formulation`` (a key of FORMULATIONS) and, for fixed-step methods, step ``h`` (s) or None."""
+
+    t_end: float
+    samples: int
+    method: str
+    rtol: float
+    atol: float
+    formulation: str
+    h: float | None
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene. ``gravity``/``damping`` are None when their table is absent.
+    ``source`` names the origin in error messages and is ignored by ``==``."""
+
+    title: str | None
+    body: Body
+    gravity: Gravity | None
+    damping: Damping | None
+    initial: Initial
+    simulate: Simulate
+    source: str = field(default="<dict>", compare=False)
+
+    @property
+    def effects(self) -> tuple[str, ...]:
+        """Names of the effects present, in the order of EFFECTS, e.g. ("gravity", "damping")."""
+        return tuple(name for name in EFFECTS if getattr(self, name) is not None)
+
+    @property
+    def symmetric(self) -> bool:
+        return self.body.I1 == self.body.I2
+
+    @property
+    def t_out(self) -> np.ndarray:
+        """Output times (s): ``samples`` points from 0 to t_end inclusive."""
+        return np.linspace(0.0, self.simulate.t_end, self.simulate.samples)
+
+    def to_dict(self) -> dict:
+        """The scene as a TOML-shaped dict; ``load_scene(scene.to_dict()) == scene``."""
+        ini = self.initial
+        initial = {"alpha": ini.alpha, "beta": ini.beta, "gamma": ini.gamma}
+        if ini.has_rates:
+            initial.update(alpha_dot=ini.alpha_dot, beta_dot=ini.beta_dot, gamma_dot=ini.gamma_dot)
+        else:
+            initial["omega"] = list(ini.omega)
+        simulate = {k: v for k, v in dataclasses.asdict(self.simulate).items() if v is not None}
+        data = {"body": dataclasses.asdict(self.body)}
+        for name in self.effects:
+            data[name] = dataclasses.asdict(getattr(self, name))
+        data.update(initial=initial, simulate=simulate)
+        if self.title is not None:
+            data["title"] = self.title
+        return data
+
+
+def body_omega(beta, gamma, alpha_dot, beta_dot, gamma_dot):
+    """Body-frame angular velocity (rad/s) from z-y-z Euler-angle rates (the notes' formula):
+
+        w1 = -alpha_dot sin(beta) cos(gamma) + beta_dot sin(gamma)
+        w2 =  alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma)
+        w3 =  alpha_dot cos(beta) + gamma_dot
+
+    Works elementwise on NumPy arrays; returns a tuple (w1, w2, w3).
+    """
+    sb, sg, cg = np.sin(beta), np.sin(gamma), np.cos(gamma)
+    return (-alpha_dot * sb * cg + beta_dot * sg,
+            alpha_dot * sb * sg + beta_dot * cg,
+            alpha_dot * np.cos(beta) + gamma_dot)
+
+
+# --------------------------------------------------------------------------------------------
+# Loading
+
+
+def load_scene(scene, /, **overrides) -> Scene:
+    """Read and validate a scene.
+
+    ``scene`` is a path to a TOML file, a dict shaped like the TOML, or a :class:`Scene` (then
+    only the overrides are applied and checked). ``overrides`` replace keys of ``[simulate]``
+    (method, rtol, atol, ...); a value of None means "not given". Raises SceneError with one line
+    ``<file>: <key or table>: <what is wrong>``.
+    """
+    if isinstance(scene, Scene):
+        source, data = scene.source, scene.to_dict()
+    elif isinstance(scene, Mapping):
+        source, data = "<dict>", scene
+    elif isinstance(scene, (str, os.PathLike)):
+        source = os.fspath(scene)
+        data = _read_toml(source)
+    else:
+        raise TypeError(f"scene must be a path, a dict or a Scene, not {type(scene).__name__}")
+    return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
+
+
+def _read_toml(source: str) -> dict:
+    def fail(what):
+        return SceneError(_line(source, "file", what))
+
+    try:
+        with open(source, "rb") as f:
+            return tomllib.load(f)
+    except FileNotFoundError as err:
+        raise fail("not found") from err
+    except IsADirectoryError as err:
+        raise fail("is a directory, not a scene file") from err
+    except PermissionError as err:
+        raise fail("permission denied") from err
+    except OSError as err:
+        raise fail(f"cannot read ({err.strerror or err})") from err
+    except UnicodeDecodeError as err:
+        raise fail(f"not UTF-8 text (bad byte at offset {err.start})") from err
+    except tomllib.TOMLDecodeError as err:
+        # tomllib (3.11) puts the position at the end of its message: "... (at line 3, column 7)".
+        match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
+        where, what = (match.group(2), match.group(1)) if match else ("file", str(err))
+        raise SceneError(_line(source, where, f"invalid TOML: {what}")) from err
+
+
+def _line(source: str, key: str, what: str) -> str:
+    """The one-line message; newlines a value might smuggle in are flattened."""
+    return " ".join(f"{source}: {key}: {what}".splitlines())
+
+
+def _show(value) -> str:
+    """A value as the user wrote it (TOML spelling for booleans, tables and strings)."""
+    if isinstance(value, (bool, np.bool_)):
+        return f"{str(bool(value)).lower()} (a boolean)"
+    if isinstance(value, str):
+        return f"{value!r} (a string)"
+    if isinstance(value, Mapping):
+        return "a table"
+    if isinstance(value, float):
+        return repr(float(value))
+    if isinstance(value, numbers.Real):
+        text = str(value)
+        return text if len(text) <= 24 else f"{text[:8]}... (an integer of {len(text)} digits)"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_show(v) for v in value) + "]"
+    return f"a {type(value).__name__}"
+
+
+def _real(value) -> float | None:
+    """value as a finite float, or None. Booleans are not numbers; ints are welcome."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        x = float(value)
+    except OverflowError:  # an integer beyond the float range
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -> str:
+    """The text in 'unknown key (...)': a likely fix (the table the key belongs in, or a close
+    spelling of a valid key), then what was expected."""
+    hint = ""
+    home = [t for t, keys in _KEYS.items() if key in keys and t != where]
+    close = [k for k in valid if k.lower() == str(key).lower()]
+    close = close or difflib.get_close_matches(str(key), valid, n=1, cutoff=0.6)
+    if home:
+        hint = f"{key} belongs in [{home[0]}]; "
+    elif close:
+        hint = f"did you mean {close[0]}? "
+    return hint + (expected or f"expected one of {', '.join(valid)}")
+
+
+class _Validator:
+    """Turns the raw dict into a Scene, raising SceneError at the first problem."""
+
+    def __init__(self, source: str):
+        self.source = source
+        self.overridden: set[str] = set()  # dotted keys whose value came from an override
+
+    def fail(self, key: str, what: str):
+        if key in self.overridden:
+            what += " (given as an override)"
+        raise SceneError(_line(self.source, key, what))
+
+    # ---- generic readers ----
+
+    def table(self, data: Mapping, name: str) -> Mapping:
+        """The table ``name`` after checking it has only known keys."""
+        for key in data:
+            if key not in _KEYS[name]:
+                self.fail(f"{name}.{key}", "unknown key (" + _unknown(key, _KEYS[name], name) + ")")
+        return data
+
+    def number(self, data, table, key, test=None, must="a finite number", default=...):
+        """A finite real (int or float, not bool) satisfying ``test``, or ``default`` if absent
+        (``...`` = required)."""
+        dotted = f"{table}.{key}"
+        if key not in data:
+            if default is ...:
+                self.fail(dotted, "missing required key")
+            return default
+        x = _real(data[key])
+        if x is None or (test is not None and not test(x)):
+            self.fail(dotted, f"must be {must}, got {_show(data[key])}")
+        return x
+
+    def choice(self, data, table, key, choices):
+        dotted, value = f"{table}.{key}", data[key]
+        if not isinstance(value, str):
+            self.fail(dotted, f"must be a string, one of {', '.join(choices)}; got {_show(value)}")
+        if value not in choices:
+            close = difflib.get_close_matches(value, list(choices), n=1, cutoff=0.6)
+            hint = f"did you mean {close[0]}? " if close else ""
+            self.fail(dotted, f"unknown {key} {value!r} ({hint}expected one of {', '.join(choices)})")
+        return value
+
+    def required(self, data: Mapping, name: str) -> Mapping:
+        if name not in data:
+            self.fail(name, "missing required table")
+        return data[name]
+
+    # ---- the tables ----
+
+    def scene(self, data: Mapping, overrides: dict) -> Scene:
+        for key, value in data.items():
+            if key in _TOP_KEYS:
+                continue
+            if key not in _KEYS:
+                if isinstance(value, Mapping):
+                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(_KEYS), "") + ")")
+                self.fail(str(key), "unknown key (" + _unknown(
+                    key, _TOP_KEYS, "", "the only top-level key is title") + ")")
+            if not isinstance(value, Mapping):
+                self.fail(key, f"must be a table [{key}], got {_show(value)}")
+        title = data.get("title")
+        if title is not None and not isinstance(title, str):
+            self.fail("title", f"must be a string, got {_show(title)}")
+        # Tables in document order, so the first problem reported is the first one in the file.
+        body = self.body(self.table(self.required(data, "body"), "body"))
+        gravity = self.gravity(self.table(data["gravity"], "gravity")) if "gravity" in data else None
+        damping = self.damping(self.table(data["damping"], "damping")) if "damping" in data else None
+        initial = self.initial(self.table(self.required(data, "initial"), "initial"))
+
+        for key in overrides:
+            if key not in _KEYS["simulate"]:
+                self.overridden.add(f"simulate.{key}")
+                self.fail(f"simulate.{key}",
+                          "unknown key (" + _unknown(key, _KEYS["simulate"], "simulate") + ")")
+        if "simulate" not in data and "t_end" not in overrides:
+            self.fail("simulate", "missing required table (simulate.t_end has no default)")
+        simulate = self.table(data.get("simulate", {}), "simulate")
+        self.overridden.update(f"simulate.{key}" for key in overrides)
+        simulate = self.simulate({**simulate, **overrides})
+
+        scene = Scene(title, body, gravity, damping, initial, simulate, self.source)
+        self.formulation_fits(scene)
+        return scene
+
+    def body(self, t) -> Body:
+        positive = dict(test=lambda x: x > 0, must="a positive finite number")
+        I1 = self.number(t, "body", "I1", **positive)
+        I2 = self.number(t, "body", "I2", **positive, default=I1)  # symmetric unless told
+        I3 = self.number(t, "body", "I3", **positive)
+        # Principal moments of any mass distribution obey Ia + Ib >= Ic (equality: a flat plate).
+        moments = {"I1": I1, "I2": I2, "I3": I3}
+        for c in ("I3", "I1", "I2"):
+            a, b = (k for k in moments if k != c)
+            if moments[a] + moments[b] < moments[c] * (1 - TRIANGLE_SLACK):
+                values = ", ".join(f"{k} = {v:g}" for k, v in moments.items())
+                self.fail("body", f"moments violate the triangle inequality {a} + {b} >= {c} "
+                                  f"({values}); no rigid body has these principal moments")
+        return Body(I1, I2, I3)
+
+    def gravity(self, t) -> Gravity:
+        return Gravity(
+            M=self.number(t, "gravity", "M", lambda x: x > 0, "a positive finite number (kg)"),
+            g=self.number(t, "gravity", "g", lambda x: x >= 0, "a non-negative finite number (m/s^2)"),
+            l=self.number(t, "gravity", "l", must="a finite number (m; negative = below the pivot)"),
+        )
+
+    def damping(self, t) -> Damping:
+        return Damping(self.number(t, "damping", "c", lambda x: x >= 0,
+                                   "a non-negative finite number (N m s)"))
+
+    def initial(self, t) -> Initial:
+        alpha, beta, gamma = (self.number(t, "initial", k, must="a finite number (rad)")
+                              for k in ("alpha", "beta", "gamma"))
+        rates_given = [k for k in _RATES if k in t]
+        both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
+        if rates_given and "omega" in t:
+            self.fail("initial", both + ", not both")
+        if rates_given:
+            # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
+            ad, bd, gd = (self.number(t, "initial", k, must="a finite number (rad/s)", default=0.0)
+                          for k in _RATES)
+            omega = tuple(float(w) for w in body_omega(beta, gamma, ad, bd, gd))
+            return Initial(alpha, beta, gamma, ad, bd, gd, omega)
+        if "omega" not in t:
+            self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")
+        value = t["omega"]
+        omega = ([_real(w) for w in value]
+                 if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
+        if None in omega:
+            self.fail("initial.omega", f"must be a list of 3 finite numbers [w1, w2, w3] "
+                                       f"(body frame, rad/s), got {_show(value)}")
+        return Initial(alpha, beta, gamma, None, None, None, tuple(omega))
+
+    def simulate(self, t) -> Simulate:
+        s = dict(SIMULATE_DEFAULTS, **t)
+        t_end = self.number(t, "simulate", "t_end", lambda x: x > 0, "a positive finite number (s)")
+        samples = s["samples"]
+        if (isinstance(samples, (bool, np.bool_)) or not isinstance(samples, numbers.Integral)
+                or not 2 <= samples <= MAX_SAMPLES):
+            self.fail("simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}, "
+                                          f"got {_show(samples)}")
+        method = self.choice(s, "simulate", "method", tuple(METHODS))
+        rtol = self.number(s, "simulate", "rtol", lambda x: 0 < x < 1, "a number in (0, 1)")
+        if rtol < MIN_RTOL:
+            self.fail("simulate.rtol", f"must be at least 100 machine epsilons ({MIN_RTOL:.1e}): "
+                                       f"no double-precision integrator can meet {rtol:g}")
+        atol = self.number(s, "simulate", "atol", lambda x: x > 0, "a positive finite number")
+        formulation = self.choice(s, "simulate", "formulation", tuple(FORMULATIONS))
+        h = None
+        if s["h"] is not None:
+            h = self.number(s, "simulate", "h", lambda x: x > 0, "a positive finite number (s)")
+            if method not in FIXED_STEP_METHODS:
+                self.fail("simulate.h", f"is the step of a fixed-step method "
+                                        f"({', '.join(FIXED_STEP_METHODS)}), but method is "
+                                        f"{method!r}; remove h or name a fixed-step method")
+        return Simulate(t_end, int(samples), method, rtol, atol, formulation, h)
+
+    def formulation_fits(self, scene: Scene) -> None:
+        """Reject formulations that cannot represent this scene (the rest is 'auto's job)."""
+        form = scene.simulate.formulation
+        if form == "reduced" and not scene.symmetric:
+            self.fail("simulate.formulation",
+                      f"'reduced' needs a symmetric body (I1 == I2) so that p_gamma is conserved; "
+                      f"got I1 = {scene.body.I1:g}, I2 = {scene.body.I2:g}")
+        if form == "reduced" and scene.damping is not None and scene.damping.c > 0:
+            self.fail("simulate.formulation",
+                      f"'reduced' needs conserved p_alpha and p_gamma, but damping.c = "
+                      f"{scene.damping.c:g} > 0 dissipates them")
+        if form in ("euler-angles", "reduced") and scene.initial.at_pole:
+            self.fail("simulate.formulation",
+                      f"{form!r} is singular at sin(beta) = 0 and initial.beta = "
+                      f"{scene.initial.beta:g} starts there; use 'quaternion' or 'auto'")
