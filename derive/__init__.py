@@ -11,7 +11,7 @@ __all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate"]
 
 
 def simulate(scene, **overrides):
-    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.simulate_api`."""
-    from .simulate import simulate as _simulate
+    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.simulation`."""
+    from .simulation import simulate as _simulate
 
     return _simulate(scene, **overrides)

@@ -46,7 +46,7 @@ def _cmd_verify(args) -> int:
 
 
 def _cmd_simulate(args) -> int:
-    from .simulate import simulate, write_outputs
+    from .simulation import simulate, write_outputs
 
     overrides = {k: getattr(args, k) for k in ("method", "rtol", "atol", "formulation") if getattr(args, k) is not None}
     res = simulate(args.scene, **overrides)

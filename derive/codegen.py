@@ -35,13 +35,13 @@ def model_sources(model: Model) -> dict[str, str]:
 
 def generate_all(models=None) -> dict[str, str]:
     """Every generated file, keyed by its path relative to generated/."""
-    from . import report
-
     files: dict[str, str] = {}
     for name, build in CATALOGUE.items():
         if models is None or name in models:
             files.update(model_sources(build()))
     if models is None:
+        from . import report
+
         files["numpy/__init__.py"] = render("numpy/__init__.py.j2", models=list(CATALOGUE))
         files.update(report.documents())
     return dict(sorted(files.items()))

@@ -89,7 +89,7 @@ def kernel_for(formulation: str, symmetric: bool, effects: tuple):
 
     model = model_for(formulation, symmetric, effects)
     files = model_sources(model)
-    sources = {Path(k).name: v for k, v in files.items() if k.startswith("c/")}
+    sources = {Path(k).name: v for k, v in files.items() if k in (f"c/{model.name}.h", f"c/{model.name}.c")}
     return Kernel.from_sources(model.name, sources)
 
 
