@@ -1,0 +1,174 @@
+"""Scenes through the whole pipeline: outputs of the contract, effects, formulations, errors."""
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import derive
+from derive import simulation
+from derive.render import ROOT
+
+SCENES = ROOT / "scenes"
+ARRAYS = {"t": 1, "alpha": 1, "beta": 1, "gamma": 1, "omega": 2, "axis": 2, "energy": 1, "p_alpha": 1, "p_gamma": 1}
+
+
+def top(**over):
+    """A heavy symmetric top scene dict; keyword arguments replace whole tables."""
+    scene = {
+        "body": {"I1": 1.0, "I3": 0.4},
+        "gravity": {"M": 1.0, "g": 9.81, "l": 0.1},
+        "initial": {"alpha": 0.0, "beta": 0.6, "gamma": 0.0, "alpha_dot": -0.5, "beta_dot": 0.0, "gamma_dot": 12.0},
+        "simulate": {"t_end": 3.0, "samples": 301, "rtol": 1e-11, "atol": 1e-13},
+    }
+    scene.update(over)
+    return {k: v for k, v in scene.items() if v is not None}
+
+
+def run_cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "derive", *args], capture_output=True, text=True, cwd=cwd or ROOT)
+
+
+def test_cli_writes_every_output_array(tmp_path):
+    out = tmp_path / "out.npz"
+    png = tmp_path / "out.png"
+    r = run_cli("simulate", str(SCENES / "looping_top.toml"), "-o", str(out), "--plot", str(png))
+    assert r.returncode == 0, r.stderr
+    data = np.load(out)
+    n = len(data["t"])
+    for name, ndim in ARRAYS.items():
+        assert data[name].ndim == ndim and data[name].shape[0] == n and np.all(np.isfinite(data[name])), name
+    assert data["omega"].shape == (n, 3) and data["axis"].shape == (n, 3)
+    assert str(data["method"]) == "dop853" and str(data["formulation"]) in ("reduced", "quaternion", "euler-angles")
+    assert int(data["nfev"]) > 0
+    assert png.stat().st_size > 10_000 and png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_bad_scene_exits_2_with_one_line_and_leaves_no_output(tmp_path):
+    scene = tmp_path / "typo.toml"
+    import re
+
+    text = (SCENES / "looping_top.toml").read_text()
+    scene.write_text(re.sub(r"(?m)^I3\s*=", "I4 =", text, count=1))
+    assert "I4 =" in scene.read_text()
+    out = tmp_path / "out.npz"
+    r = run_cli("simulate", str(scene), "-o", str(out))
+    assert r.returncode == 2
+    lines = r.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: ") and "I4" in lines[0]
+    assert not out.exists()
+
+
+def test_numerical_failure_exits_3_and_keeps_existing_output(tmp_path):
+    """RK4 with a step far beyond its stability limit overflows: exit 3, one line saying where."""
+    scene = tmp_path / "unstable.toml"
+    scene.write_text((SCENES / "tennis_racket.toml").read_text())
+    out = tmp_path / "out.npz"
+    out.write_bytes(b"precious")
+    r = run_cli("simulate", str(scene), "-o", str(out), "--method", "rk4")
+    assert r.returncode == 0, r.stderr  # with its default step RK4 is fine...
+    out.write_bytes(b"precious")
+    text = scene.read_text().replace("[simulate]", "[simulate]\nh = 5.0", 1)
+    scene.write_text(text.replace("t_end =", "t_end = 1000.0 #", 1))
+    r = run_cli("simulate", str(scene), "-o", str(out), "--method", "rk4")
+    assert r.returncode == 3, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "t = " in r.stderr
+    assert out.read_bytes() == b"precious"
+
+
+def pole_crossing():
+    """p_α = p_γ and β̇ toward the pole: the axis sweeps through β = 0 (a sleeping top nodding
+    across the vertical). α̇ = I₃γ̇ / (I₁(1 + cos β) − I₃ cos β) makes p_α = p_γ."""
+    I1, I3, b0, gd = 1.0, 0.4, 0.3, 10.0
+    ad = I3 * gd / (I1 * (1 + np.cos(b0)) - I3 * np.cos(b0))
+    return {"body": {"I1": I1, "I3": I3}, "gravity": {"M": 1.0, "g": 9.81, "l": 0.1},
+            "initial": {"alpha": 0.0, "beta": b0, "gamma": 0.0, "alpha_dot": ad, "beta_dot": -2.0, "gamma_dot": gd},
+            "simulate": {"t_end": 3.0, "rtol": 1e-12, "atol": 1e-14}}
+
+
+def test_auto_formulation_crosses_the_pole_accurately():
+    scene = pole_crossing()
+    ref = derive.simulate(scene, formulation="quaternion", rtol=1e-13, atol=1e-15)
+    assert np.min(np.hypot(ref.axis[:, 0], ref.axis[:, 1])) < 2e-2  # it does pass (next to) the pole
+    res = derive.simulate(scene)
+    assert np.max(np.abs(res.axis - ref.axis)) < 1e-9
+    assert np.ptp(res.energy) < 1e-10 * abs(res.energy[0])
+
+
+def test_euler_angles_at_the_pole_refuse_or_stay_right():
+    """Asked for explicitly, the Euler-angle formulation either reports the singularity or
+    returns a correct trajectory; never a silently wrong one."""
+    scene = pole_crossing()
+    ref = derive.simulate(scene, formulation="quaternion", rtol=1e-13, atol=1e-15)
+    try:
+        res = derive.simulate(scene, formulation="euler-angles")
+    except derive.IntegrationError as exc:
+        assert "singular" in str(exc) or "domain" in str(exc)
+    else:
+        assert np.max(np.abs(res.axis - ref.axis)) < 1e-8
+
+
+def test_no_gravity_scene_gets_kernel_without_gravity_parameters():
+    res = derive.simulate(top(gravity=None))
+    model = simulation.model_for(res.formulation, True, simulation.effect_names(res.scene))
+    assert not {"M", "g", "l"} & set(model.param_names)
+    assert "g" not in (simulation.kernel_for(res.formulation, True, ()).param_names)
+
+
+@pytest.mark.parametrize("formulation", ["reduced", "quaternion", "euler-angles"])
+def test_disabling_gravity_equals_zero_g(formulation):
+    off = derive.simulate(top(gravity=None), formulation=formulation)
+    zero = derive.simulate(top(gravity={"M": 1.0, "g": 0.0, "l": 0.1}), formulation=formulation)
+    assert np.max(np.abs(off.axis - zero.axis)) < 1e-12
+    assert np.max(np.abs(off.energy - zero.energy)) < 1e-12 * np.max(np.abs(off.energy))
+
+
+@pytest.mark.parametrize("formulation", ["quaternion", "euler-angles"])
+def test_disabling_damping_equals_zero_c(formulation):
+    off = derive.simulate(top(), formulation=formulation)
+    zero = derive.simulate(top(damping={"c": 0.0}), formulation=formulation)
+    assert np.max(np.abs(off.axis - zero.axis)) < 1e-12
+
+
+def test_formulations_agree_on_a_looping_top():
+    runs = {f: derive.simulate(top(), formulation=f) for f in ("reduced", "quaternion", "euler-angles")}
+    ref = runs["quaternion"]
+    for f, r in runs.items():
+        assert np.max(np.abs(r.axis - ref.axis)) < 1e-8, f
+        assert np.max(np.abs(r.omega - ref.omega)) < 1e-7 * np.max(np.abs(ref.omega)), f
+        assert np.max(np.abs(np.unwrap(r.alpha) - np.unwrap(ref.alpha))) < 1e-7, f
+
+
+def test_conserved_quantities_hold_without_damping_and_energy_falls_with_it():
+    res = derive.simulate(top(), formulation="quaternion")
+    for q in (res.energy, res.p_alpha, res.p_gamma):
+        assert np.ptp(q) < 1e-9 * np.max(np.abs(q))
+    damped = derive.simulate(top(damping={"c": 0.05}))
+    assert damped.formulation == "quaternion"
+    assert np.all(np.diff(damped.energy) < 0)
+
+
+def test_second_call_reuses_the_compiled_kernel():
+    derive.simulate(top())
+    before = simulation.kernel_for.cache_info()
+    derive.simulate(top(), rtol=1e-9)
+    after = simulation.kernel_for.cache_info()
+    assert after.misses == before.misses and after.hits == before.hits + 1
+
+
+@pytest.mark.parametrize("method", ["rk4", "gauss4", "gauss6", "scipy-dop853"])
+def test_other_methods_agree_with_dop853(method):
+    ref = derive.simulate(top(), formulation="quaternion")
+    over = {"h": 1e-3} if method in ("rk4", "gauss4", "gauss6") else {}
+    sc = top()
+    sc["simulate"] = dict(sc["simulate"], **over)
+    res = derive.simulate(sc, method=method, formulation="quaternion")
+    assert res.method == method
+    assert np.max(np.abs(res.axis - ref.axis)) < 1e-7
+
+
+def test_every_example_scene_runs():
+    for path in sorted(SCENES.glob("*.toml")):
+        res = derive.simulate(path, rtol=1e-8, atol=1e-10)
+        assert np.all(np.isfinite(res.axis)), path.name
+        assert np.allclose(np.linalg.norm(res.axis, axis=1), 1.0, atol=1e-8), path.name
