@@ -27,7 +27,8 @@ from .errors import CompilerError
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC")
 # What the generated code must survive: every warning an error, strict ISO C99.
 STRICT_FLAGS: tuple[str, ...] = ("-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic")
-SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O1", "-fno-omit-frame-pointer",
+# -O0: with the sanitizers, -O1 compiles the unrolled DOP853 stages ~7x slower.
+SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-pointer",
                                    "-fsanitize=address,undefined",
                                    "-fno-sanitize-recover=undefined")
 STDERR_LINES = 20

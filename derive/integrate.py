@@ -31,11 +31,11 @@ DEFAULT_NEWTON_MAXITER = 20
 
 # derive_stats of <prefix>_solvers.h, as a NumPy record (aligned = the C layout), so a batch's
 # statistics are one array.
+_LONG = np.dtype(f"i{ctypes.sizeof(ctypes.c_long)}")
 STATS_DTYPE = np.dtype([
-    ("nfev", np.int_), ("njev", np.int_), ("nstep", np.int_), ("naccept", np.int_),
-    ("nreject", np.int_), ("nlu", np.int_), ("t_fail", np.float64), ("fail_index", np.intc),
+    ("nfev", _LONG), ("njev", _LONG), ("nstep", _LONG), ("naccept", _LONG),
+    ("nreject", _LONG), ("nlu", _LONG), ("t_fail", np.float64), ("fail_index", np.intc),
     ("status", np.intc), ("h_fail", np.float64), ("rhs_code", np.intc)], align=True)
-assert np.dtype(np.int_).itemsize == ctypes.sizeof(ctypes.c_long)
 
 _C_TYPES = {"double": ctypes.c_double, "long": ctypes.c_long, "int": ctypes.c_int}
 _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")

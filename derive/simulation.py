@@ -215,9 +215,10 @@ def choose_formulation(scene: Scene) -> str:
     b_lo, b_hi = beta_range(scene)
     near_top = np.sin(b_lo) < POLE_CLEARANCE and b_lo < np.pi / 2
     near_bottom = np.sin(b_hi) < POLE_CLEARANCE and b_hi > np.pi / 2
-    p_alpha = p_gamma + diff
-    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes.
-    if (near_top and diff != 0.0) or (near_bottom and p_alpha + p_gamma != 0.0):
+    p_alpha = p_gamma + diff  # the parameter the kernel will get
+    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes
+    # (as the kernel sees it: a difference below the rounding of p_γ is exactly zero there).
+    if (near_top and p_alpha - p_gamma != 0.0) or (near_bottom and p_alpha + p_gamma != 0.0):
         return "quaternion"
     return "reduced"
 
