@@ -15,8 +15,7 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 derive: $(STAMP)
-	@$(PY) -m derive generate
-	@$(PY) -m derive verify
+	@$(PY) -m derive generate --verify
 
 verify: $(STAMP)
 	@$(PY) -m derive verify

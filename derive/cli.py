@@ -28,6 +28,8 @@ def _cmd_generate(args) -> int:
         return EXIT_DIFF if stale else EXIT_OK
     written = codegen.write(files, out)
     print(f"generated {len(files)} files in {out} ({len(written)} changed)")
+    if args.verify:
+        return _cmd_verify(argparse.Namespace(format="text"))
     return EXIT_OK
 
 
@@ -72,6 +74,8 @@ def parser() -> argparse.ArgumentParser:
     g = sub.add_parser("generate", help="write generated/ (C and NumPy kernels, reports)")
     g.add_argument("--out", help="output directory (default: the repository's generated/)")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 listing stale files")
+    g.add_argument("--verify", action="store_true",
+                   help="then print the lecture verification table (exit 1 on an unexpected verdict)")
     g.set_defaults(func=_cmd_generate)
 
     v = sub.add_parser("verify", help="check every formula of the lecture against the derivation")

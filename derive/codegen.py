@@ -8,6 +8,8 @@ so two runs produce identical bytes.
 """
 from __future__ import annotations
 
+import concurrent.futures
+import multiprocessing
 import os
 import tempfile
 from pathlib import Path
@@ -33,17 +35,35 @@ def model_sources(model: Model) -> dict[str, str]:
     return files
 
 
-def generate_all(models=None) -> dict[str, str]:
-    """Every generated file, keyed by its path relative to generated/."""
+def _sources_of(names) -> dict[str, str]:
     files: dict[str, str] = {}
-    for name, build in CATALOGUE.items():
-        if models is None or name in models:
-            files.update(model_sources(build()))
-    if models is None:
-        from . import report
+    for name in names:
+        files.update(model_sources(CATALOGUE[name]()))
+    return files
 
-        files["numpy/__init__.py"] = render("numpy/__init__.py.j2", models=list(CATALOGUE))
+
+def generate_all(models=None) -> dict[str, str]:
+    """Every generated file, keyed by its path relative to generated/.
+
+    The model kernels and the two reports are independent derivations; on a machine with more
+    than one core the kernels are derived in a forked worker while this process writes the
+    reports (the results are merged by file name, so the output does not depend on timing).
+    """
+    names = [n for n in CATALOGUE if models is None or n in models]
+    if models is not None:
+        return dict(sorted(_sources_of(names).items()))
+    from . import report
+
+    files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=list(CATALOGUE))}
+    if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
+        ctx = multiprocessing.get_context("fork")
+        with concurrent.futures.ProcessPoolExecutor(max_workers=1, mp_context=ctx) as pool:
+            kernels = pool.submit(_sources_of, names)
+            files.update(report.documents())
+            files.update(kernels.result())
+    else:
         files.update(report.documents())
+        files.update(_sources_of(names))
     return dict(sorted(files.items()))
 
 

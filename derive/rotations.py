@@ -27,6 +27,7 @@ Angular velocity in the body frame, two independent routes that must agree:
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import sympy as sp
@@ -136,22 +137,26 @@ class Convention:
         """ê⁰ (the first rotation's axis) in body components: Rᵀ e_{a₁}."""
         return self.matrix(a, b, c).T * unit(self.axes[0])
 
+    @functools.lru_cache(maxsize=None)
     def omega_body_sum(self) -> sp.Matrix:
         """Route 1, the notes' sum: ω̃ = α̇ ê⁰_{a₁} + β̇ ê′_{a₂} + γ̇ ê_{a₃} in body components."""
         w = alpha_d * self.inertial_axis() + beta_d * self.intermediate_axis() + gamma_d * unit(self.axes[2])
         return w.applyfunc(trig_reduce)
 
+    @functools.lru_cache(maxsize=None)
     def omega_body_skew(self) -> sp.Matrix:
         """Route 2: ω̃ from the skew matrix [ω̃]ₓ = Rᵀ Ṙ."""
         R = self.matrix()
         Rdot = R.applyfunc(time_derivative)
-        return unskew(R.T * Rdot).applyfunc(trig_reduce)
+        return sp.ImmutableMatrix(unskew(R.T * Rdot).applyfunc(trig_reduce))
 
+    @functools.lru_cache(maxsize=None)
     def rate_matrix(self) -> sp.Matrix:
         """B(q) with ω̃ = B(q) q̇ (linear in the rates)."""
         w = self.omega_body_sum()
-        return w.jacobian(sp.Matrix(RATES))
+        return sp.ImmutableMatrix(w.jacobian(sp.Matrix(RATES)))
 
+    @functools.lru_cache(maxsize=None)
     def singular_set(self):
         """det B(q): the rates are recoverable from ω̃ exactly where this is non-zero."""
         return trig_reduce(self.rate_matrix().det())
