@@ -9,6 +9,7 @@ so two runs produce identical bytes.
 from __future__ import annotations
 
 import concurrent.futures
+import functools
 import multiprocessing
 import os
 import tempfile
@@ -52,8 +53,15 @@ def generate_all(models=None) -> dict[str, str]:
     names = [n for n in CATALOGUE if models is None or n in models]
     if models is not None:
         return dict(sorted(_sources_of(names).items()))
+    return dict(_generate_everything())
+
+
+@functools.lru_cache(maxsize=1)
+def _generate_everything() -> tuple:
+    """All files, computed once per process (the derivations are pure)."""
     from . import report
 
+    names = list(CATALOGUE)
     files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=list(CATALOGUE))}
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
         ctx = multiprocessing.get_context("fork")
@@ -64,7 +72,7 @@ def generate_all(models=None) -> dict[str, str]:
     else:
         files.update(report.documents())
         files.update(_sources_of(names))
-    return dict(sorted(files.items()))
+    return tuple(sorted(files.items()))
 
 
 def _atomic_write(path: Path, text: str) -> None:
