@@ -690,18 +690,22 @@ static int derive_heavy_top_gauss4_step(double t, double h, const double *y, con
             return 2;
         }
         derive_heavy_top_lu_solve(2 * heavy_top_NY, mat, piv, r);
+        /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
+         * whole state would let a large, growing coordinate (an unbounded angle) hide an
+         * unconverged small one, and the step would stop being symplectic. */
         dn = 0.0;
-        sc = DBL_MIN;
         for (a = 0; a < heavy_top_NY; ++a) {
-            sc = fmax(sc, fabs(y[a]));
-            dn = fmax(dn, fabs(r[0 * heavy_top_NY + a]));
+            double ra = 0.0, za = 0.0;
+            ra = fmax(ra, fabs(r[0 * heavy_top_NY + a]));
             z[0][a] += r[0 * heavy_top_NY + a];
-            sc = fmax(sc, fabs(z[0][a]));
-            dn = fmax(dn, fabs(r[1 * heavy_top_NY + a]));
+            za = fmax(za, fabs(z[0][a]));
+            ra = fmax(ra, fabs(r[1 * heavy_top_NY + a]));
             z[1][a] += r[1 * heavy_top_NY + a];
-            sc = fmax(sc, fabs(z[1][a]));
+            za = fmax(za, fabs(z[1][a]));
+            sc = fabs(y[a]) + za;
+            if (ra > 0.0)
+                dn = fmax(dn, sc > 0.0 ? ra / sc : HUGE_VAL);
         }
-        dn /= sc;
         if (!(dn < HUGE_VAL))
             return 1;
         /* Converged at the tolerance, or stagnating at round-off level (below 100 eps). */
@@ -948,21 +952,25 @@ static int derive_heavy_top_gauss6_step(double t, double h, const double *y, con
             return 2;
         }
         derive_heavy_top_lu_solve(3 * heavy_top_NY, mat, piv, r);
+        /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
+         * whole state would let a large, growing coordinate (an unbounded angle) hide an
+         * unconverged small one, and the step would stop being symplectic. */
         dn = 0.0;
-        sc = DBL_MIN;
         for (a = 0; a < heavy_top_NY; ++a) {
-            sc = fmax(sc, fabs(y[a]));
-            dn = fmax(dn, fabs(r[0 * heavy_top_NY + a]));
+            double ra = 0.0, za = 0.0;
+            ra = fmax(ra, fabs(r[0 * heavy_top_NY + a]));
             z[0][a] += r[0 * heavy_top_NY + a];
-            sc = fmax(sc, fabs(z[0][a]));
-            dn = fmax(dn, fabs(r[1 * heavy_top_NY + a]));
+            za = fmax(za, fabs(z[0][a]));
+            ra = fmax(ra, fabs(r[1 * heavy_top_NY + a]));
             z[1][a] += r[1 * heavy_top_NY + a];
-            sc = fmax(sc, fabs(z[1][a]));
-            dn = fmax(dn, fabs(r[2 * heavy_top_NY + a]));
+            za = fmax(za, fabs(z[1][a]));
+            ra = fmax(ra, fabs(r[2 * heavy_top_NY + a]));
             z[2][a] += r[2 * heavy_top_NY + a];
-            sc = fmax(sc, fabs(z[2][a]));
+            za = fmax(za, fabs(z[2][a]));
+            sc = fabs(y[a]) + za;
+            if (ra > 0.0)
+                dn = fmax(dn, sc > 0.0 ? ra / sc : HUGE_VAL);
         }
-        dn /= sc;
         if (!(dn < HUGE_VAL))
             return 1;
         /* Converged at the tolerance, or stagnating at round-off level (below 100 eps). */
