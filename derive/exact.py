@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 from types import MappingProxyType
 from typing import Mapping
 
@@ -248,9 +249,9 @@ def free_asymmetric(I1, I2, I3, omega0, t, R0=None):
         m = (Iy - Ix)(2E Iz - L^2) / ((Iz - Iy)(L^2 - 2E Ix)),
         m1 = 1 - m = (Iz - Ix)(L^2 - 2E Iy) / ((Iz - Iy)(L^2 - 2E Ix)),
     signs sx = sign wx(0), sz = sign wz(0), sy = sx sz sign(Iz - Ix), tau0 = F(am | m) from the
-    initial sn, cn. The differences L^2 - 2E Ij are formed as sums of I_i (I_i - Ij) w_i^2, so m1
-    is accurate to rounding of omega0 even at 1e-17; L^2 = 2E Iy is the separatrix (m = 1:
-    sn = tanh, cn = dn = sech).
+    initial sn, cn. The differences L^2 - 2E Ij are formed as sums of I_i (I_i - Ij) w_i^2 in
+    exact arithmetic, so m1 is correctly rounded for the given omega0 even at 1e-17;
+    L^2 = 2E Iy is the separatrix (m = 1: sn = tanh, cn = dn = sech).
 
     Orientation: in an inertial frame with z along L, the z-y-z angles (phi, theta, psi) of the
     body satisfy (body components of L/|L|) = (-sin th cos psi, sin th sin psi, cos th)
@@ -294,7 +295,7 @@ def _free_asymmetric_core(I, w0, t, R0):
     ia, ib, ic = np.argsort(I)
     wa, wb, wc = w0[ia], w0[ib], w0[ic]
     # L^2 - 2E Ib without forming L^2 and 2E (the intermediate term drops out exactly).
-    delta = _quad_form(I[ia] * (I[ia] - I[ib]), wa, I[ic] * (I[ic] - I[ib]), wc)[1]
+    delta = _quad_form((I[ia], I[ia], I[ib], wa), (I[ic], I[ic], I[ib], wc))[1]
     perm = (ia, ib, ic) if delta >= 0 else (ic, ib, ia)
     P = np.zeros((3, 3))
     for k, i in enumerate(perm):
@@ -305,9 +306,9 @@ def _free_asymmetric_core(I, w0, t, R0):
     wx, wy, wz = P.T @ w0
 
     # D_j = s_j^2 q_j: 2E Jz - L^2, L^2 - 2E Jx, L^2 - 2E Jy
-    s_z, q_z = _quad_form(Jx * (Jz - Jx), wx, Jy * (Jz - Jy), wy)
-    s_x, q_x = _quad_form(Jy * (Jy - Jx), wy, Jz * (Jz - Jx), wz)
-    s_y, q_y = _quad_form(Jx * (Jx - Jy), wx, Jz * (Jz - Jy), wz)
+    s_z, q_z = _quad_form((Jx, Jz, Jx, wx), (Jy, Jz, Jy, wy))
+    s_x, q_x = _quad_form((Jy, Jy, Jx, wy), (Jz, Jz, Jx, wz))
+    s_y, q_y = _quad_form((Jx, Jx, Jy, wx), (Jz, Jz, Jy, wz))
     if not (q_z / (Jz - Jx) > 0 and q_x / (Jz - Jx) > 0):
         return None
     Ax = s_z * math.sqrt(q_z / (Jx * (Jz - Jx)))
@@ -347,13 +348,19 @@ def _free_asymmetric_core(I, w0, t, R0):
     return omega, R, info
 
 
-def _quad_form(c1, w1, c2, w2):
-    """(s, q) with c1 w1^2 + c2 w2^2 = s^2 q, s = max(|w1|, |w2|): the squares of components
-    ~1e-160 would be subnormal and lose their digits, though their ratios are what matters."""
-    s = max(abs(w1), abs(w2))
+def _quad_form(*terms):
+    """(s, q) with sum of J (Ja - Jb) w^2 over terms (J, Ja, Jb, w) equal to s^2 q, s = max |w|.
+
+    Evaluated in exact rational arithmetic and rounded once: near the separatrix L^2 - 2E Iy is
+    a small difference of O(1) terms, and m1, hence K ~ ln(4/sqrt(m1)) and the time of every
+    flip, inherit its relative error; dividing by s keeps components ~1e-160 from being squared
+    into the subnormal range."""
+    s = max(abs(w) for *_, w in terms)
     if s == 0:
         return 0.0, 0.0
-    return s, c1 * (w1 / s) ** 2 + c2 * (w2 / s) ** 2
+    S = Fraction(s)
+    q = sum(Fraction(J) * (Fraction(a) - Fraction(b)) * (Fraction(w) / S) ** 2 for J, a, b, w in terms)
+    return s, float(q)
 
 
 def _clip_m1(m1):

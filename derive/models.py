@@ -46,6 +46,7 @@ class Model:
     rhs: tuple
     observables: dict = field(default_factory=dict)
     domain: tuple = ()
+    domain_note: str = ""
     effects: tuple = ()
     symmetric: bool = False
 
@@ -138,6 +139,9 @@ def euler_angles(symmetric: bool, effects=()) -> Model:
                  tuple(RATES) + tuple(acc), _observables(R, w, moments, effects),
                  # det 𝕄 ∝ sin²β: below machine epsilon the solve for q̈ has no correct digits.
                  domain=(sp.sin(beta) ** 2 - sp.Symbol("DBL_EPSILON"),),
+                 domain_note="coordinate singularity of the Euler-angle formulation: sin(beta)^2 below "
+                             "machine epsilon, where the mass matrix is singular; use formulation = "
+                             "\"quaternion\" or \"auto\"",
                  effects=tuple(e.name for e in effects), symmetric=symmetric)
 
 
@@ -237,7 +241,8 @@ def quaternion(symmetric: bool, effects=()) -> Model:
                  "unit quaternion (scalar first, body to inertial) + body angular velocity, Newton-Euler",
                  tuple(q) + tuple(w), _moment_params(symmetric) + _effect_params(effects),
                  tuple(qdot) + tuple(wdot), _observables(R, w, moments, effects),
-                 domain=(n2,), effects=tuple(e.name for e in effects), symmetric=symmetric)
+                 domain=(n2,), domain_note="quaternion of zero norm",
+                 effects=tuple(e.name for e in effects), symmetric=symmetric)
 
 
 def _variant(formulation: str, symmetric: bool, effects) -> str:

@@ -306,10 +306,22 @@ def simulate(scene, **overrides) -> Result:
         h = s.h
         if method in FIXED_STEP and h is None:
             h = default_step(sc)
-        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h)
+        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h, check=False)
+        if sol.status != 0:
+            raise IntegrationError(_explain(model, sol))
         Y, nfev = sol.y, sol.nfev
     _check_pole(model, t, Y, s.rtol)
     return _outputs(model, numpy_module_for(*key), t, Y, p, sc, method, nfev)
+
+
+DOMAIN_STATUS = 4  # derive_stats: the rhs reported a state outside the model's domain
+
+
+def _explain(model: models.Model, sol) -> str:
+    """The solver's one-line failure message; for a domain error, what the domain is."""
+    if sol.status == DOMAIN_STATUS and model.domain_note:
+        return f"t = {sol.t_fail:.8g}: {model.domain_note}"
+    return sol.message
 
 
 def default_step(scene: Scene) -> float:
