@@ -16,16 +16,26 @@ from sympy.printing.numpy import NumPyPrinter
 from .models import Model
 
 
+def _small_power(printer, expr) -> str | None:
+    """x**n for 2 ≤ |n| ≤ 4 as a parenthesised product (x*x, not pow(x, 2): exact and faster);
+    None for any other power. Parenthesised because a Mul prints its denominator through here,
+    right after a "/"."""
+    base, exp = expr.as_base_exp()
+    if not (exp.is_Integer and 2 <= abs(int(exp)) <= 4):
+        return None
+    b = printer.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
+    prod = "(" + "*".join([b] * abs(int(exp))) + ")"
+    return prod if exp > 0 else f"1.0/{prod}"
+
+
 class CPrinter(C99CodePrinter):
-    """C99 with small integer powers as products (x*x, not pow(x, 2): exact and faster)."""
+    """C99 with small integer powers as products and Piecewise as nested conditionals."""
 
     def _print_Pow(self, expr):
+        small = _small_power(self, expr)
+        if small is not None:
+            return small
         base, exp = expr.as_base_exp()
-        if exp.is_Integer and 2 <= abs(int(exp)) <= 4:
-            b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
-            # Parenthesised: a Mul prints its denominator through here, after a "/".
-            prod = "(" + "*".join([b] * abs(int(exp))) + ")"
-            return prod if exp > 0 else f"1.0/{prod}"
         if exp == sp.Rational(1, 2):
             return f"sqrt({self._print(base)})"
         if exp == -1:
@@ -47,12 +57,8 @@ class NPrinter(NumPyPrinter):
     """NumPy code; small integer powers as products, Piecewise as numpy.where (vectorised)."""
 
     def _print_Pow(self, expr, rational=False):
-        base, exp = expr.as_base_exp()
-        if exp.is_Integer and 2 <= abs(int(exp)) <= 4:
-            b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
-            prod = "(" + "*".join([b] * abs(int(exp))) + ")"
-            return prod if exp > 0 else f"1.0/{prod}"
-        return super()._print_Pow(expr, rational=rational)
+        small = _small_power(self, expr)
+        return small if small is not None else super()._print_Pow(expr, rational=rational)
 
     def _print_Piecewise(self, expr):
         # numpy.where over (cond, value) pairs, innermost last; the last pair must be the default.
