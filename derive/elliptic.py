@@ -12,7 +12,7 @@ separatrix of a spinning body the physics lives in m1 (m = 1 - 1e-17 is not a do
 How ``ellipj_accurate`` stays accurate where ``scipy.special.ellipj`` does not:
 
 1. Reduction by quarter periods, u = j K + v with |v| <= K/2, where K is known to ~100 bits
-   (mpmath, once per m1) and stored as a three-term Cody-Waite split, so that v is exact to a few
+   (mpmath's AGM, once per m1) and stored as a three-term Cody-Waite split, so that v is exact to a few
    ulps of v even for u ~ 1e7 K.
 2. On |v| <= K/2 the descending Landen (AGM) recurrence, with each backward step written as
    phi_{n-1} = (phi_n + atan2(c_n sin phi_n, sqrt(b_n^2 + c_n^2 cos^2 phi_n))) / 2
@@ -22,6 +22,11 @@ How ``ellipj_accurate`` stays accurate where ``scipy.special.ellipj`` does not:
 3. The quarter-period shift formulas (DLMF 22.4.3): sn(v + K) = cn v / dn v,
    cn(v + K) = -k' sn v / dn v, dn(v + K) = k' / dn v; with v small these give cn and dn near
    their small extremes with relative, not merely absolute, accuracy.
+
+The integrals are Carlson forms (scipy.special.elliprf, elliprj) fed with cn^2, dn^2 and
+cn^2 + (1 - n) sn^2 instead of 1 - m sn^2 and 1 - n sn^2, for the same reason: F(am u) inverts
+the Jacobi functions, and ``sn2_rational_integral`` integrates (A + B sn^2)/(C + D sn^2), the
+form every angle rate of the exact solutions takes (an elliptic integral of the third kind).
 """
 from __future__ import annotations
 
