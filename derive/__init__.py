@@ -7,7 +7,7 @@ components (v_inertial = R v_body); omega-tilde are body-frame components; SI un
 """
 from .errors import CompilerError, IntegrationError, SceneError
 
-__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate"]
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch"]
 
 
 def simulate(scene, **overrides):
@@ -15,3 +15,10 @@ def simulate(scene, **overrides):
     from .simulation import simulate as _simulate
 
     return _simulate(scene, **overrides)
+
+
+def simulate_batch(scenes, **overrides):
+    """Simulate many scenes differing only in numbers, the loop over them in C. See `derive.simulation`."""
+    from .simulation import simulate_batch as _batch
+
+    return _batch(scenes, **overrides)

@@ -314,6 +314,46 @@ def simulate(scene, **overrides) -> Result:
     return _outputs(model, numpy_module_for(*key), t, Y, p, sc, method, nfev)
 
 
+def simulate_batch(scenes, **overrides) -> list[Result]:
+    """Simulate many scenes that differ only in numbers (initial state, moments, effect
+    parameters) with one call into C: the loop over trajectories runs in the solver kernel.
+
+    All scenes must name the same effects, body symmetry, output times, method and
+    tolerances. With formulation "auto", the scenes share one formulation: the common choice
+    if they agree, else the quaternion formulation (safe for every one of them).
+    """
+    scs = [load_scene(s, **overrides) for s in scenes]
+    if not scs:
+        return []
+    first = scs[0]
+    shared = lambda sc: (sc.symmetric, effect_names(sc), sc.simulate.samples, sc.simulate.t_end,  # noqa: E731
+                         choose_method(sc), sc.simulate.rtol, sc.simulate.atol, sc.simulate.h)
+    for sc in scs[1:]:
+        if shared(sc) != shared(first):
+            raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
+                             f"times, method and tolerances as {first.source}")
+    forms = {choose_formulation(sc) for sc in scs}
+    formulation = forms.pop() if len(forms) == 1 else "quaternion"
+    method = choose_method(first)
+    if method in SCIPY_METHODS:
+        raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
+    key = (formulation, first.symmetric, effect_names(first))
+    model = model_for(*key)
+    y0s = np.array([_initial_state(sc, model) for sc in scs])
+    ps = np.array([_params(sc, model) for sc in scs])
+    s = first.simulate
+    h = s.h if s.h is not None or method not in FIXED_STEP else min(default_step(sc) for sc in scs)
+    batch = kernel_for(*key).solve_batch(method, y0s, ps, first.t_out, rtol=s.rtol, atol=s.atol, h=h, check=False)
+    results = []
+    for b, sc in enumerate(scs):
+        sol = batch[b]
+        if sol.status != 0:
+            raise IntegrationError(f"{sc.source}: {_explain(model, sol)}")
+        _check_pole(model, sc.t_out, sol.y, s.rtol)
+        results.append(_outputs(model, numpy_module_for(*key), sc.t_out, sol.y, ps[b], sc, method, sol.nfev))
+    return results
+
+
 DOMAIN_STATUS = 4  # derive_stats: the rhs reported a state outside the model's domain
 
 
