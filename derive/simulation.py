@@ -82,13 +82,20 @@ def model_for(formulation: str, symmetric: bool, effects: tuple) -> models.Model
 
 
 @functools.lru_cache(maxsize=None)
+def sources_for(formulation: str, symmetric: bool, effects: tuple) -> dict:
+    """The generated files of a model (CSE and rendering done once per process)."""
+    from .codegen import model_sources
+
+    return model_sources(model_for(formulation, symmetric, effects))
+
+
+@functools.lru_cache(maxsize=None)
 def kernel_for(formulation: str, symmetric: bool, effects: tuple):
     """The compiled C kernel (model + solvers) for a model; derived and compiled once."""
-    from .codegen import model_sources
     from .integrate import Kernel
 
     model = model_for(formulation, symmetric, effects)
-    files = model_sources(model)
+    files = sources_for(formulation, symmetric, effects)
     sources = {Path(k).name: v for k, v in files.items() if k in (f"c/{model.name}.h", f"c/{model.name}.c")}
     return Kernel.from_sources(model.name, sources)
 
@@ -96,10 +103,8 @@ def kernel_for(formulation: str, symmetric: bool, effects: tuple):
 @functools.lru_cache(maxsize=None)
 def numpy_module_for(formulation: str, symmetric: bool, effects: tuple) -> types.ModuleType:
     """The generated NumPy module of a model, loaded from its rendered text."""
-    from .codegen import model_sources
-
     model = model_for(formulation, symmetric, effects)
-    text = model_sources(model)[f"numpy/{model.name}.py"]
+    text = sources_for(formulation, symmetric, effects)[f"numpy/{model.name}.py"]
     mod = types.ModuleType(f"derive_generated_{model.name}")
     exec(compile(text, f"<generated {model.name}>", "exec"), mod.__dict__)
     return mod
@@ -197,12 +202,19 @@ def beta_range(scene: Scene) -> tuple[float, float]:
     k = 2.0 / b.I1
     coeffs = [k * mgl, -k * Eprime - p_gamma**2 / b.I1**2, -k * mgl + 2 * p_alpha * p_gamma / b.I1**2,
               k * Eprime - p_alpha**2 / b.I1**2]
-    roots = np.roots(coeffs) if mgl != 0 else np.roots(coeffs[1:])
-    real = np.sort(roots[np.abs(roots.imag) < 1e-9].real)
-    inside = real[(real >= -1 - 1e-12) & (real <= 1 + 1e-12)]
-    lo = max([r for r in inside if r <= u0 + 1e-12], default=-1.0)
-    hi = min([r for r in inside if r >= u0 - 1e-12], default=1.0)
-    return float(np.arccos(np.clip(hi, -1, 1))), float(np.arccos(np.clip(lo, -1, 1)))
+    poly = coeffs if mgl != 0 else coeffs[1:]
+    roots = np.roots(poly)
+    # A double root (steady precession: β constant) comes back from np.roots as a complex pair
+    # split by ~√eps; count such a pair as real.
+    real = roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots.real))].real
+    # The motion fills the interval between consecutive roots (or ±1) where f(u) ≥ 0 that holds
+    # u0; when u0 is itself a turning point (β̇₀ = 0) that is the interval it bounds.
+    knots = np.unique(np.clip(np.concatenate([[-1.0, 1.0], real[(real > -1) & (real < 1)]]), -1, 1))
+    tol = 1e-9
+    for a, b in zip(knots[:-1], knots[1:]):
+        if a - tol <= u0 <= b + tol and np.polyval(poly, 0.5 * (a + b)) > 0:
+            return float(np.arccos(b)), float(np.arccos(a))
+    return float(scene.initial.beta), float(scene.initial.beta)  # steady precession: f ≤ 0 around u0
 
 
 def choose_formulation(scene: Scene) -> str:

@@ -193,3 +193,15 @@ def test_batch_of_initial_conditions_equals_single_runs():
 def test_batch_refuses_scenes_with_different_effects():
     with pytest.raises(derive.SceneError, match="same effects"):
         derive.simulate_batch([top(), top(gravity=None)])
+
+
+@pytest.mark.parametrize("name", ["looping_top", "cuspidal_top", "wavy_top", "free_symmetric"])
+def test_predicted_beta_range_brackets_the_motion(name):
+    """The turning points that `auto` uses to decide on a formulation are the simulated extremes
+    (β̇₀ = 0 starts on a turning point; free_symmetric is a double root: β constant)."""
+    sc = simulation.load_scene(SCENES / f"{name}.toml")
+    lo, hi = simulation.beta_range(sc)
+    res = derive.simulate(sc)
+    assert res.formulation == "reduced"
+    assert abs(np.min(res.beta) - lo) < 1e-5 and abs(np.max(res.beta) - hi) < 1e-5
+    assert lo <= np.min(res.beta) + 1e-9 and np.max(res.beta) <= hi + 1e-9
