@@ -242,3 +242,26 @@ def test_generate_check_cli_reports_stale_file(tmp_path, capsys):
     assert "heavy_top.c" in capsys.readouterr().out
     (out / "c" / "heavy_top.c").write_text((GENERATED / "c" / "heavy_top.c").read_text())
     assert cli.main(["generate", "--check", "--out", str(out)]) == 0
+
+
+def test_generated_kernels_run_clean_under_address_and_undefined_sanitizers(tmp_path):
+    from derive.cbuild import SANITIZE_FLAGS, check_compiles
+    from derive.errors import CompilerError
+
+    names = ("heavy_top", "heavy_top_reduced")
+    files = {}
+    for n in names:
+        for suffix in (".h", ".c", "_solvers.h", "_solvers.c"):
+            files[n + suffix] = (GENERATED / "c" / (n + suffix)).read_text()
+    files["generated_main.c"] = (ROOT / "tests" / "c" / "generated_main.c").read_text()
+    mains = ["generated_main.c"] + [f"{n}{s}" for n in names for s in (".c", "_solvers.c")]
+    try:
+        exe = check_compiles(files, mains, SANITIZE_FLAGS, executable=tmp_path / "run")
+    except CompilerError as exc:
+        if "asan" in str(exc).lower() or "sanitize" in str(exc).lower():
+            pytest.skip(f"no sanitizer runtime: {exc}")
+        raise
+    env = dict(os.environ, ASAN_OPTIONS="detect_leaks=1", UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1")
+    proc = subprocess.run([str(exe)], capture_output=True, text=True, env=env, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert "runtime error" not in proc.stderr
