@@ -114,19 +114,21 @@ def numpy_module_for(formulation: str, symmetric: bool, effects: tuple) -> types
 # initial state and parameters per formulation
 
 
-def _momenta(scene: Scene):
-    """p_γ and p_α − p_γ (the difference formed without cancellation: half angles)."""
+def _momenta(scene: Scene) -> tuple[float, float]:
+    """(p_α, p_γ) as the reduced kernel receives them, p_α formed as p_γ + (p_α − p_γ) with the
+    difference computed without cancellation, so a top with p_α = p_γ gets exactly equal
+    parameters even at β₀ ~ 1e-8 (where p_α computed directly is off by an ulp of p_γ).
+
+    p_α = ẑ·(R I ω̃), the ẑ row of R being (−sinβ cosγ, sinβ sinγ, cosβ), so
+    p_α − p_γ = row₁₂ · (I ω̃)₁₂ − 2 sin²(β/2) I₃ω̃₃.
+    """
     b, i = scene.body, scene.initial
     w = np.asarray(i.omega, dtype=float)
     p_gamma = b.I3 * w[2]
-    # p_α = ẑ·(R I ω̃); its ẑ row of R is (−sinβ cosγ, sinβ sinγ, cosβ).
-    sb, cb = np.sin(i.beta), np.cos(i.beta)
-    row = np.array([-sb * np.cos(i.gamma), sb * np.sin(i.gamma), cb])
-    Iw = np.array([b.I1 * w[0], b.I2 * w[1], b.I3 * w[2]])
-    p_alpha = float(row @ Iw)
-    # p_α − p_γ = (row₁₂ · (Iω̃)₁₂) − 2 sin²(β/2) I₃ω̃₃ : no subtraction of nearly equal numbers.
-    diff = float(row[:2] @ Iw[:2] - 2.0 * np.sin(i.beta / 2) ** 2 * p_gamma)
-    return p_alpha, p_gamma, diff
+    sb = np.sin(i.beta)
+    diff = float(-sb * np.cos(i.gamma) * b.I1 * w[0] + sb * np.sin(i.gamma) * b.I2 * w[1]
+                 - 2.0 * np.sin(i.beta / 2) ** 2 * p_gamma)
+    return float(p_gamma + diff), float(p_gamma)
 
 
 def _params(scene: Scene, model: models.Model) -> np.ndarray:
@@ -137,8 +139,7 @@ def _params(scene: Scene, model: models.Model) -> np.ndarray:
     if scene.damping is not None:
         values["c"] = scene.damping.c
     if model.formulation == "reduced":
-        p_alpha, p_gamma, diff = _momenta(scene)
-        values.update(p_alpha=p_gamma + diff, p_gamma=p_gamma)
+        values["p_alpha"], values["p_gamma"] = _momenta(scene)
     return np.array([values[n] for n in model.param_names], dtype=float)
 
 
@@ -162,19 +163,28 @@ def _initial_state(scene: Scene, model: models.Model) -> np.ndarray:
     if model.formulation == "reduced":
         return np.array([i.alpha, i.beta, i.gamma, _beta_dot(scene)])
     if model.formulation == "euler-angles":
-        if i.alpha_dot is None:
-            s = np.sin(i.beta)
-            if abs(s) < POLE_CLEARANCE:
-                raise SceneError(f"{scene.source}: initial: the Euler-angle rates are undefined at sin(beta) = {s:.3g}; "
-                                 "give the rates, or use formulation = \"quaternion\"")
-            w1, w2, w3 = i.omega
-            cg, sg = np.cos(i.gamma), np.sin(i.gamma)
-            ad = (-w1 * cg + w2 * sg) / s
-            rates = (ad, w1 * sg + w2 * cg, w3 - ad * np.cos(i.beta))
-        else:
-            rates = (i.alpha_dot, i.beta_dot, i.gamma_dot)
+        rates = euler_rates(scene)
+        if rates is None:
+            raise SceneError(f"{scene.source}: initial: the Euler-angle rates are undefined at sin(beta) = "
+                             f"{np.sin(i.beta):.3g}; give the rates, or use formulation = \"quaternion\"")
         return np.array([i.alpha, i.beta, i.gamma, *rates])
     raise ValueError(model.formulation)
+
+
+def euler_rates(scene: Scene):
+    """(α̇, β̇, γ̇) as given, or from ω̃ by the inverse map
+    α̇ = (−ω̃₁ cos γ + ω̃₂ sin γ)/sin β, β̇ = ω̃₁ sin γ + ω̃₂ cos γ, γ̇ = ω̃₃ − α̇ cos β;
+    None where that map is too ill-conditioned to use (|sin β| < POLE_CLEARANCE)."""
+    i = scene.initial
+    if i.alpha_dot is not None:
+        return float(i.alpha_dot), float(i.beta_dot), float(i.gamma_dot)
+    s = np.sin(i.beta)
+    if abs(s) < POLE_CLEARANCE:
+        return None
+    w1, w2, w3 = i.omega
+    cg, sg = np.cos(i.gamma), np.sin(i.gamma)
+    ad = (-w1 * cg + w2 * sg) / s
+    return float(ad), float(w1 * sg + w2 * cg), float(w3 - ad * np.cos(i.beta))
 
 
 def _beta_dot(scene: Scene) -> float:
@@ -190,31 +200,33 @@ def _beta_dot(scene: Scene) -> float:
 
 
 def beta_range(scene: Scene) -> tuple[float, float]:
-    """[β_min, β_max] of a conservative symmetric top from the turning points of
-    f(u) = (1 − u²)(2/I₁)(E′ − M g l u) − ((p_α − p_γ u)/I₁)², u = cos β."""
-    b = scene.body
-    p_alpha, p_gamma, diff = _momenta(scene)
-    mgl = scene.gravity.M * scene.gravity.g * scene.gravity.l if scene.gravity else 0.0
-    u0 = np.cos(scene.initial.beta)
-    bd = _beta_dot(scene)
-    Eprime = 0.5 * b.I1 * bd**2 + (p_alpha - p_gamma * u0) ** 2 / (2 * b.I1 * max(1 - u0**2, 1e-300)) + mgl * u0
-    # f(u) = (2/I₁)(E′ − mgl u)(1 − u²) − (p_α − p_γ u)²/I₁², expanded in powers of u.
-    k = 2.0 / b.I1
-    coeffs = [k * mgl, -k * Eprime - p_gamma**2 / b.I1**2, -k * mgl + 2 * p_alpha * p_gamma / b.I1**2,
-              k * Eprime - p_alpha**2 / b.I1**2]
-    poly = coeffs if mgl != 0 else coeffs[1:]
-    roots = np.roots(poly)
-    # A double root (steady precession: β constant) comes back from np.roots as a complex pair
-    # split by ~√eps; count such a pair as real.
-    real = roots[np.abs(roots.imag) <= 1e-6 * (1 + np.abs(roots.real))].real
-    # The motion fills the interval between consecutive roots (or ±1) where f(u) ≥ 0 that holds
-    # u0; when u0 is itself a turning point (β̇₀ = 0) that is the interval it bounds.
-    knots = np.unique(np.clip(np.concatenate([[-1.0, 1.0], real[(real > -1) & (real < 1)]]), -1, 1))
-    tol = 1e-9
-    for a, b in zip(knots[:-1], knots[1:]):
-        if a - tol <= u0 <= b + tol and np.polyval(poly, 0.5 * (a + b)) > 0:
-            return float(np.arccos(b)), float(np.arccos(a))
-    return float(scene.initial.beta), float(scene.initial.beta)  # steady precession: f ≤ 0 around u0
+    """[β_min, β_max] of |β| for a conservative symmetric top: the turning points of
+    f(u) = (1 − u²)(2/I₁)(E′ − M g l u) − ((p_α − p_γ u)/I₁)², u = cos β.
+
+    The roots come from the exact solution's cubic (`exact.heavy_top`), which is centred at the
+    initial point and refined next to each pole, so a double root (steady precession) or a
+    turning point at the start (β̇₀ = 0) needs no special case here. Where the Euler rates are
+    undefined (ω̃ given at a pole) the range is reported as the initial tilt alone.
+    """
+    from . import exact
+
+    i = scene.initial
+    beta0 = abs(float(i.beta))
+    rates = euler_rates(scene)
+    if rates is None:
+        return beta0, beta0
+    g = scene.gravity
+    M, gg, l = (g.M, g.g, g.l) if g is not None else (1.0, 0.0, 0.0)
+    info = exact.heavy_top(scene.body.I1, scene.body.I3, M, gg, l, i.alpha, i.beta, i.gamma,
+                           *rates, [0.0]).info
+    if "y_roots" not in info:  # an equilibrium: β stays where it is
+        return beta0, beta0
+    y1, y2 = info["y_roots"][:2]
+    # y = sin²(β/2) of the problem exact.py solved (mirrored β → π − β when β₀ > π/2).
+    lo, hi = (2.0 * np.arcsin(np.sqrt(np.clip(y, 0.0, 1.0))) for y in (y1, y2))
+    if info.get("mirrored"):
+        lo, hi = np.pi - hi, np.pi - lo
+    return float(lo), float(hi)
 
 
 def choose_formulation(scene: Scene) -> str:
@@ -223,13 +235,12 @@ def choose_formulation(scene: Scene) -> str:
         return requested
     if not scene.symmetric or scene.damping is not None:
         return "quaternion"
-    _, p_gamma, diff = _momenta(scene)
+    p_alpha, p_gamma = _momenta(scene)
     b_lo, b_hi = beta_range(scene)
     near_top = np.sin(b_lo) < POLE_CLEARANCE and b_lo < np.pi / 2
     near_bottom = np.sin(b_hi) < POLE_CLEARANCE and b_hi > np.pi / 2
-    p_alpha = p_gamma + diff  # the parameter the kernel will get
-    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes
-    # (as the kernel sees it: a difference below the rounding of p_γ is exactly zero there).
+    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes,
+    # as the kernel sees it.
     if (near_top and p_alpha - p_gamma != 0.0) or (near_bottom and p_alpha + p_gamma != 0.0):
         return "quaternion"
     return "reduced"

@@ -202,3 +202,14 @@ def test_reports_are_byte_deterministic_across_runs_and_hash_seeds():
     here = "".join(f"{name} {hashlib.sha256(docs[name].encode()).hexdigest()}\n" for name in sorted(docs))
     here += f"table {hashlib.sha256(verify.table('text').encode()).hexdigest()}\n"
     assert outs[0] == here
+
+
+def test_verify_cli_exits_nonzero_when_a_verdict_changes(monkeypatch, capsys):
+    from derive import cli, lecture
+
+    assert cli.main(["verify"]) == 0
+    claim = next(iter(lecture.EXPECTED))
+    flipped = "fails" if lecture.EXPECTED[claim] != "fails" else "holds"
+    monkeypatch.setitem(lecture.EXPECTED, claim, flipped)
+    assert cli.main(["verify", "--format", "markdown"]) == 1
+    assert f"unexpected verdict: {claim}" in capsys.readouterr().err
