@@ -13,7 +13,7 @@ R maps body to inertial components (v⁰ = R ṽ); ẑ is the inertial vertical;
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import sympy as sp
@@ -35,8 +35,6 @@ class Effect:
     potential: Callable | None = None
     torque: Callable | None = None
     conservative: bool = True
-    # The centre of mass this effect assumes, when it needs one (body components).
-    com: tuple = field(default=())
 
 
 def _gravity_potential(com):
@@ -59,14 +57,12 @@ REGISTRY: dict[str, Effect] = {
             "uniform gravity g along −z, centre of mass on body axis 3 at distance l from the pivot",
             params=(M, g, l),
             potential=_gravity_potential((0, 0, l)),
-            com=(0, 0, l),
         ),
         Effect(
             "gravity_general",
             "uniform gravity g along −z, centre of mass at (cx, cy, cz) in body axes",
             params=(M, g, cx, cy, cz),
             potential=_gravity_potential((cx, cy, cz)),
-            com=(cx, cy, cz),
         ),
         Effect(
             "damping",

@@ -159,7 +159,7 @@ def half_angle_partial_fractions(expr, x=beta, guard=True):
     p_α and p_γ cos β. A numerator coefficient that vanishes for some parameters (p_α = p_γ) is
     guarded so the removable 0·∞ at the pole never evaluates to NaN.
     """
-    c, h = sp.Dummy("c"), sp.Dummy("h")
+    c = sp.Dummy("c")
     e = sp.together(expr.subs(sp.sin(x) ** 2, 1 - sp.cos(x) ** 2))
     e = sp.together(e.subs(sp.sin(x), sp.sqrt(1 - c**2)).subs(sp.cos(x), c))
     if e.has(sp.sqrt(1 - c**2)):
@@ -180,6 +180,8 @@ def half_angle_partial_fractions(expr, x=beta, guard=True):
         # den = k (c ∓ 1)^n  → substitute the half-angle form of (1 ∓ c).
         n = sp.degree(den_poly)
         k = sp.LC(den_poly)
+        if den_poly != sp.Poly(k * (c - pole) ** n, c):
+            raise ValueError(f"partial fraction {term} has a pole other than cos x = ±1")
         half = 2 * sp.sin(x / 2) ** 2 if pole == 1 else 2 * sp.cos(x / 2) ** 2
         sign = -1 if pole == 1 else 1  # c − 1 = −(1 − c), c + 1 = (1 + c)
         new = coeff / (k * (sign * half) ** n)
