@@ -7,6 +7,9 @@ components (v_inertial = R v_body); omega-tilde are body-frame components; SI un
 """
 from .errors import CompilerError, IntegrationError, SceneError
 
+#: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
+__version__ = "0.1.0"
+
 __all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch"]
 
 

@@ -17,8 +17,13 @@ EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
 
 def _cmd_generate(args) -> int:
     from . import codegen
-    from .render import GENERATED
+    from .render import CHECKOUT, GENERATED
 
+    if not args.out and CHECKOUT is None and not args.check:
+        # Installed package: its generated/ copy lives in site-packages and is not ours to rewrite.
+        print("error: derive generate: --out: required when derive runs from an installed package "
+              "(no source checkout to write generated/ into)", file=sys.stderr)
+        return EXIT_INPUT
     out = Path(args.out) if args.out else GENERATED
     files = codegen.generate_all()
     if args.check:
@@ -43,15 +48,49 @@ def _cmd_verify(args) -> int:
     return EXIT_DIFF if wrong else EXIT_OK
 
 
+#: `derive simulate` flags that override the scene's [simulate] keys (flag dest -> scene key).
+SIMULATE_OVERRIDES = ("method", "rtol", "atol", "formulation", "h", "max_steps")
+
+
 def _cmd_simulate(args) -> int:
+    import json
+    import time
+
     from .simulation import simulate, write_outputs
 
-    overrides = {k: getattr(args, k) for k in ("method", "rtol", "atol", "formulation") if getattr(args, k) is not None}
+    overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
+    start = time.perf_counter()
     res = simulate(args.scene, **overrides)
+    wall = time.perf_counter() - start
     write_outputs(res, npz=args.output, png=args.plot)
+    if args.json:
+        print(json.dumps(simulate_summary(res, wall, npz=args.output, png=args.plot)))
+        return EXIT_OK
     print(f"{res.method} / {res.formulation}: {len(res.t)} samples, {res.nfev} rhs evaluations"
           + (f" -> {args.output}" if args.output else "") + (f", {args.plot}" if args.plot else ""))
     return EXIT_OK
+
+
+def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | None = None) -> dict:
+    """The one-line summary of ``derive simulate --json``.
+
+    ``energy_drift`` = max_t |E(t) − E(0)| / |E(0)| over the output samples (max |E(t) − E(0)|
+    when E(0) = 0; then ``energy_drift_relative`` is false). With damping this is the energy
+    lost, not an error. ``wall_time`` is the `simulate` call in seconds (scene loading, model,
+    kernel from cache or compiled, solve, outputs computed), not the file writing.
+    """
+    import numpy as np
+
+    e = np.asarray(res.energy, dtype=float)
+    e0 = float(e[0])
+    dev = float(np.max(np.abs(e - e0)))
+    relative = e0 != 0.0
+    s = res.scene.simulate if res.scene is not None else None
+    return {"method": res.method, "formulation": res.formulation, "nfev": int(res.nfev),
+            "energy_drift": dev / abs(e0) if relative else dev, "energy_drift_relative": relative,
+            "wall_time": wall_time, "samples": int(len(res.t)), "t_end": float(res.t[-1]),
+            "rtol": None if s is None else s.rtol, "atol": None if s is None else s.atol,
+            "outputs": {"npz": npz, "png": png}}
 
 
 def _cmd_bench(args) -> int:
@@ -61,21 +100,46 @@ def _cmd_bench(args) -> int:
     return EXIT_OK
 
 
+def version() -> str:
+    """The installed distribution's version; a bare checkout falls back to ``derive.__version__``."""
+    from importlib.metadata import PackageNotFoundError
+    from importlib.metadata import version as dist_version
+
+    try:
+        return dist_version("derive")
+    except PackageNotFoundError:
+        from . import __version__
+
+        return __version__
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with the contract's one-line error (exit 2), not usage + message."""
+
+    def error(self, message):
+        self.exit(EXIT_INPUT, f"error: {self.prog}: {message}\n")
+
+
 def parser() -> argparse.ArgumentParser:
     from .scene import FORMULATIONS, METHODS
 
-    p = argparse.ArgumentParser(prog="derive", description=__doc__.splitlines()[0])
+    p = _Parser(prog="derive", description=__doc__.splitlines()[0])
+    p.add_argument("--version", action="version", version=f"%(prog)s {version()}",
+                   help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True)
 
     g = sub.add_parser("generate", help="write generated/ (C and NumPy kernels, reports)")
-    g.add_argument("--out", help="output directory (default: the repository's generated/)")
+    g.add_argument("--out", help="output directory (default: the checkout's generated/; required when "
+                                 "derive is installed, except with --check, which then compares the "
+                                 "package's own copy)")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 listing stale files")
     g.add_argument("--verify", action="store_true",
                    help="then print the lecture verification table (exit 1 on an unexpected verdict)")
     g.set_defaults(func=_cmd_generate)
 
     v = sub.add_parser("verify", help="check every formula of the lecture against the derivation")
-    v.add_argument("--format", choices=("text", "markdown"), default="text")
+    v.add_argument("--format", choices=("text", "markdown"), default="text",
+                   help="text (aligned columns, default) or markdown (a table)")
     v.set_defaults(func=_cmd_verify)
 
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())
@@ -84,10 +148,22 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("scene", help="scene file (TOML)")
     s.add_argument("-o", "--output", help="output file (.npz)")
     s.add_argument("--plot", help="plot file (.png)")
-    s.add_argument("--method", help=f"one of: {', '.join(METHODS)}")
-    s.add_argument("--rtol", type=float)
-    s.add_argument("--atol", type=float)
-    s.add_argument("--formulation", help=f"one of: {', '.join(FORMULATIONS)}")
+    s.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(METHODS)}")
+    s.add_argument("--rtol", type=float, metavar="R",
+                   help="overrides [simulate] rtol: relative tolerance of the adaptive methods")
+    s.add_argument("--atol", type=float, metavar="A",
+                   help="overrides [simulate] atol: absolute tolerance of the adaptive methods")
+    s.add_argument("--formulation", help=f"overrides [simulate] formulation; one of: {', '.join(FORMULATIONS)}")
+    s.add_argument("--h", type=float, metavar="H",
+                   help="overrides [simulate] h: the step of the fixed-step methods, in seconds "
+                        "(default: 1/200 of the fastest natural period, at most the output spacing)")
+    s.add_argument("--max-steps", type=int, metavar="N",
+                   help="overrides [simulate] max_steps: the step budget (exit 3 when spent; "
+                        "fixed-step runs needing more are refused up front)")
+    s.add_argument("--json", action="store_true",
+                   help="print a one-line JSON summary instead: method, formulation, nfev, "
+                        "energy_drift (max |E - E0| / |E0|), wall_time (s), samples, t_end, rtol, "
+                        "atol, outputs")
     s.set_defaults(func=_cmd_simulate)
 
     b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")

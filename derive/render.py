@@ -1,19 +1,41 @@
-"""The one Jinja2 environment every generator renders through.
+"""The one Jinja2 environment every generator renders through, and where its data lives.
 
-Templates live in the repository's top-level ``templates/`` folder (the design card's layout).
+Templates live in the repository's top-level ``templates/`` folder and the committed output in
+``generated/`` (the design card's layout). An installed wheel carries both inside the package,
+as ``derive/_templates`` and ``derive/_generated`` (the ``package-dir`` mapping in
+``pyproject.toml``), found through :mod:`importlib.resources`. A source checkout (this package
+beside a ``pyproject.toml`` and ``templates/``, also an editable install) always uses its
+top-level folders, so editing a template takes effect without reinstalling.
+
 The environment is strict (an undefined name is an error, not an empty string) and keeps output
 byte-stable: no timestamps, trailing newline kept, block tags leave no stray whitespace.
 """
 from __future__ import annotations
 
 import functools
+import importlib.resources
 from pathlib import Path
 
 import jinja2
 
+#: The folder holding the ``derive`` package: the repository root in a checkout; in an installed
+#: package it is ``site-packages`` (no ``scenes/`` or ``benchmarks/`` there).
 ROOT = Path(__file__).resolve().parent.parent
-TEMPLATES = ROOT / "templates"
-GENERATED = ROOT / "generated"
+#: The source checkout's root, or None when running from an installed package.
+CHECKOUT: Path | None = (ROOT if (ROOT / "pyproject.toml").is_file() and (ROOT / "templates").is_dir()
+                         else None)
+
+
+def _data_dir(name: str) -> Path:
+    """``<checkout>/<name>`` in a checkout, else the copy shipped in the package (``derive/_<name>``)."""
+    if CHECKOUT is not None:
+        return CHECKOUT / name
+    # A wheel installs as plain files, so the resource is a real directory (Jinja2 needs a path).
+    return Path(str(importlib.resources.files(__package__) / f"_{name}"))
+
+
+TEMPLATES = _data_dir("templates")
+GENERATED = _data_dir("generated")
 
 
 def c_double(x) -> str:
