@@ -1,21 +1,31 @@
-"""Models: a state, parameters, a right-hand side ẏ = f(t, y; p) and observables, derived.
+"""Models: a state, parameters, a right-hand side ẏ = f(t, y; p), and the maps in and out, derived.
 
-Four formulations of the rigid body with a fixed point, each built from the derivation core
-(`rotations`, `lagrangian`, `stability`) and the effects it is given (`effects`):
+Each formulation (see `derive.formulations` for the registry) is built here from the derivation
+core (`rotations`, `lagrangian`, `stability`) and the effects it is given (`effects`):
 
-* ``euler``        y = ω̃ (body axes), Euler's equations I ω̃̇ = (I ω̃) × ω̃ + τ̃.
-* ``euler-angles`` y = (α, β, γ, α̇, β̇, γ̇), z-y-z angles, q̈ = 𝕄⁻¹(F + Q) from the Lagrangian;
-                   singular where det 𝕄 ∝ sin²β vanishes.
-* ``reduced``      y = (α, β, γ, β̇) with the conserved p_α, p_γ as parameters (symmetric body,
-                   conservative effects only): β̈ = −V_eff′(β)/I₁, α̇ and γ̇ from the momenta,
-                   written so that no term cancels near β = 0 or π (`half_angle_partial_fractions`).
-* ``quaternion``   y = (q₀, q₁, q₂, q₃, ω̃₁, ω̃₂, ω̃₃), q̇ = ½ q ⊗ (0, ω̃), I ω̃̇ = (I ω̃) × ω̃ + τ̃:
-                   no coordinate singularity. R(q) is divided by |q|², so the equations are
-                   invariant under q → s q and a drifting norm does not bias the physics.
+* ``euler``         y = ω̃ (body axes), Euler's equations I ω̃̇ = (I ω̃) × ω̃ (torque-free).
+* ``euler-angles``  y = (α, β, γ, α̇, β̇, γ̇), z-y-z angles, q̈ = 𝕄⁻¹(F + Q) from the Lagrangian;
+                    singular where det 𝕄 ∝ sin²β vanishes.
+* ``reduced``       y = (α, β, γ, β̇) with the conserved p_α, p_γ as parameters (symmetric body,
+                    axisymmetric conservative effects): β̈ = −V_eff′(β)/I₁, α̇ and γ̇ from the
+                    momenta, written so that no term cancels near β = 0 or π
+                    (`half_angle_partial_fractions`).
+* ``quaternion``    y = (q₀, q₁, q₂, q₃, ω̃₁, ω̃₂, ω̃₃), q̇ = ½ q ⊗ (0, ω̃), I ω̃̇ = (I ω̃) × ω̃ + τ̃:
+                    no coordinate singularity. R(q) is divided by |q|², so the equations are
+                    invariant under q → s q and a drifting norm does not bias the physics.
+* ``euler-poisson`` y = (L, n, e): the angular momentum about the pivot L = I ω̃, the upward
+                    vertical n = Rᵀẑ and the inertial x̂ as e = Rᵀx̂, all in body axes:
+                    L̇ = L × ω̃ + τ̃,  ṅ = n × ω̃,  ė = e × ω̃  (a vector fixed in space, seen from
+                    the body). Gravity's torque is M g n × r_c. R has the rows e, n × e, n.
 
-Observables shared by all: ``energy`` T + V; ``p_alpha`` = ẑ·(R I ω̃), the vertical component of
-angular momentum about the pivot (= ∂L/∂α̇); ``p_gamma`` = I₃ ω̃₃ (= ∂L/∂γ̇); ``axis`` = R ê₃;
-``omega`` = ω̃.
+Besides the right-hand side every model carries
+
+* ``init``: y (and the parameters the formulation derives, e.g. the reduced top's p_α, p_γ) from
+  the scene's inputs ``INPUTS`` = (α, β, γ, ω̃₁, ω̃₂, ω̃₃, α̇, β̇, γ̇, rates_given): rates are used
+  where the scene gave them (rates_given > 0), else derived from ω̃;
+* ``outputs``: the output file's arrays from y: α, β, γ (z-y-z; the C driver maps them to
+  canonical ranges), ω̃, the axis R ê₃, energy T + V, p_α = ẑ·(R I ω̃) = L·n (= ∂L/∂α̇),
+  p_γ = I₃ ω̃₃ (= ∂L/∂γ̇), n = Rᵀẑ and L = I ω̃.
 """
 from __future__ import annotations
 
@@ -25,17 +35,26 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from . import effects as fx
+from .formulations import model_name
 from .lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
 from .rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
 from .stability import euler_rhs
+
+#: The inputs of every model's init map, in order (`formulations.INPUT_NAMES` spells them).
+INPUTS = sp.symbols("in_alpha in_beta in_gamma in_omega1 in_omega2 in_omega3 "
+                    "in_alpha_dot in_beta_dot in_gamma_dot in_rates_given", real=True)
+_A, _B, _G, _W1, _W2, _W3, _AD, _BD, _GD, _GIVEN = INPUTS
 
 
 @dataclass(frozen=True)
 class Model:
     """A derived model, ready for code generation.
 
-    ``domain`` lists expressions that must be non-zero-and-positive for the state to be inside
-    the model's domain (the generated rhs returns 1 otherwise).
+    ``domain`` lists expressions that must be positive for the state to be inside the model's
+    domain (the generated rhs returns 1 otherwise). ``init`` gives y from ``INPUTS`` and p;
+    ``init_params`` gives (index, expression) for parameters the formulation derives from the
+    inputs (computed in order, each may use the ones before). ``outputs`` maps an output name to
+    an expression or a tuple of three.
     """
 
     name: str
@@ -44,7 +63,9 @@ class Model:
     states: tuple
     params: tuple
     rhs: tuple
-    observables: dict = field(default_factory=dict)
+    outputs: dict = field(default_factory=dict)
+    init: tuple = ()
+    init_params: tuple = ()
     domain: tuple = ()
     domain_note: str = ""
     effects: tuple = ()
@@ -58,13 +79,18 @@ class Model:
     def param_names(self) -> tuple[str, ...]:
         return tuple(_name(s) for s in self.params)
 
+    @property
+    def observables(self) -> dict:
+        """The outputs (kept under their old name: the generated ``<name>_observables``)."""
+        return self.outputs
+
     @functools.cached_property
     def jacobian(self) -> sp.Matrix:
         """∂f/∂y, row-major."""
         return sp.Matrix(self.rhs).jacobian(sp.Matrix(self.states))
 
 
-_NAMES = {"alpha_d": "alpha_dot", "beta_d": "beta_dot", "gamma_d": "gamma_dot", "c": "c"}
+_NAMES = {"alpha_d": "alpha_dot", "beta_d": "beta_dot", "gamma_d": "gamma_dot"}
 
 
 def _name(s) -> str:
@@ -79,51 +105,64 @@ def _moment_params(symmetric: bool):
     return (I1, I3) if symmetric else (I1, I2, I3)
 
 
-def _effect_params(effects):
-    return tuple(p for e in effects for p in e.params)
-
-
-def _observables(R: sp.Matrix, w: sp.Matrix, moments, effects) -> dict:
+def _outputs(R: sp.Matrix, w: sp.Matrix, moments, effects, sym, angles) -> dict:
+    """The output map from R (body → inertial), ω̃ and the z-y-z angles."""
     Iw = sp.Matrix([m * wi for m, wi in zip(moments, w)])
-    V = sum((e.potential(R) for e in effects if e.potential), sp.S.Zero)
+    V = fx.potential(effects, R, sym)
     return {
+        "alpha": angles[0], "beta": angles[1], "gamma": angles[2],
+        "omega": tuple(w),
+        "axis": tuple(R[:, 2]),
         "energy": sp.Rational(1, 2) * (w.T * Iw)[0, 0] + V,
         "p_alpha": (R[2, :] * Iw)[0, 0],
         "p_gamma": Iw[2],
-        "axis": tuple(R[:, 2]),
-        "omega": tuple(w),
+        "n": tuple(R[2, :]),
+        "L": tuple(Iw),
     }
 
 
-def _torque(effects, omega, R) -> sp.Matrix:
-    tau = sp.zeros(3, 1)
-    for e in effects:
-        if e.torque:
-            tau += e.torque(omega, R)
-        if e.potential:
-            tau += fx.torque_from_potential(e.potential, R)
-    return tau
+def _angles_of(R: sp.Matrix):
+    """z-y-z angles of R = Rz(α) Ry(β) Rz(γ) (any positive multiple of R): β ∈ [0, π] from
+    atan2(√(R₃₁² + R₃₂²), R₃₃) (accurate near the poles), α = atan2(R₂₃, R₁₃),
+    γ = atan2(R₃₂, −R₃₁)."""
+    return (sp.atan2(R[1, 2], R[0, 2]), sp.atan2(sp.sqrt(R[2, 0] ** 2 + R[2, 1] ** 2), R[2, 2]),
+            sp.atan2(R[2, 1], -R[2, 0]))
+
+
+def _given(value, otherwise):
+    """The scene's value where it gave rates, else the expression derived from ω̃."""
+    return sp.Piecewise((value, _GIVEN > 0), (otherwise, True))
+
+
+def _rates_from_omega():
+    """(α̇, β̇, γ̇) from the inputs: given, or α̇ = (−ω̃₁ cos γ + ω̃₂ sin γ)/sin β,
+    β̇ = ω̃₁ sin γ + ω̃₂ cos γ, γ̇ = ω̃₃ − α̇ cos β (singular at sin β = 0)."""
+    ad = (-_W1 * sp.cos(_G) + _W2 * sp.sin(_G)) / sp.sin(_B)
+    return (_given(_AD, ad), _given(_BD, _W1 * sp.sin(_G) + _W2 * sp.cos(_G)),
+            _given(_GD, _W3 - ad * sp.cos(_B)))
 
 
 def euler_free(symmetric: bool = False) -> Model:
     """Euler's equations without torque: I ω̃̇ = (I ω̃) × ω̃."""
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     moments = _moments(symmetric)
-    obs = {"energy": sp.Rational(1, 2) * sum(m * wi**2 for m, wi in zip(moments, w)),
-           "L2": sum((m * wi) ** 2 for m, wi in zip(moments, w)), "omega": tuple(w)}
+    outputs = {"energy": sp.Rational(1, 2) * sum(m * wi**2 for m, wi in zip(moments, w)),
+               "L2": sum((m * wi) ** 2 for m, wi in zip(moments, w)), "omega": tuple(w)}
     return Model("euler_free", "euler", "torque-free Euler equations in principal body axes",
-                 tuple(w), _moment_params(symmetric), tuple(euler_rhs(moments, w)), obs)
+                 tuple(w), _moment_params(symmetric), tuple(euler_rhs(moments, w)), outputs,
+                 init=(_W1, _W2, _W3))
 
 
 def euler_angles(symmetric: bool, effects=()) -> Model:
     """The z-y-z Euler-angle Lagrangian model, L = T − ΣV, Q from the non-conservative torques."""
     effects = tuple(effects)
+    sym = fx.Symbols(effects)
     moments = _moments(symmetric)
     R = ZYZ.matrix()
     w = ZYZ.omega_body_sum()
-    V = sum((e.potential(R) for e in effects if e.potential), sp.S.Zero)
+    V = fx.potential(effects, R, sym)
     system = EulerLagrange(trig_reduce(kinetic_energy(moments)) - trig_reduce(V))
-    tau = sum((e.torque(w, R) for e in effects if e.torque), sp.zeros(3, 1))
+    tau = sum((e.torque(w, R, sym) for e in effects if e.torque), sp.zeros(3, 1))
     # Generalised forces from torques by virtual power: Q_j = τ̃ · ∂ω̃/∂q̇_j.
     Q = (ZYZ.rate_matrix().T * tau).applyfunc(trig_reduce)
     Mm, F = system.mass_matrix, system.forcing + Q
@@ -131,12 +170,11 @@ def euler_angles(symmetric: bool, effects=()) -> Model:
     acc = (Mm.adjugate() * F).applyfunc(lambda e: trig_reduce(e) / det)
     if symmetric:
         acc = acc.applyfunc(lambda e: sp.factor_terms(sp.cancel(e)))
-    name = "heavy_top" if symmetric and [e.name for e in effects] == ["gravity"] else \
-        _variant("euler_angles", symmetric, effects)
-    return Model(name, "euler-angles",
+    return Model(model_name("euler-angles", symmetric, [e.name for e in effects]), "euler-angles",
                  "z-y-z Euler angles (quantum-mechanics convention), Euler-Lagrange equations solved for the accelerations",
-                 ANGLES + RATES, _moment_params(symmetric) + _effect_params(effects),
-                 tuple(RATES) + tuple(acc), _observables(R, w, moments, effects),
+                 ANGLES + RATES, _moment_params(symmetric) + sym.params(),
+                 tuple(RATES) + tuple(acc), _outputs(R, w, moments, effects, sym, ANGLES),
+                 init=(_A, _B, _G) + _rates_from_omega(),
                  # det 𝕄 ∝ sin²β: below machine epsilon the solve for q̈ has no correct digits.
                  domain=(sp.sin(beta) ** 2 - sp.Symbol("DBL_EPSILON"),),
                  domain_note="coordinate singularity of the Euler-angle formulation: sin(beta)^2 below "
@@ -192,12 +230,15 @@ def half_angle_partial_fractions(expr, x=beta, guard=True):
 
 
 def reduced(effects=()) -> Model:
-    """The symmetric top reduced to β, with α and γ carried along (conservative effects only)."""
+    """The symmetric top reduced to β, with α and γ carried along (axisymmetric conservative
+    effects only)."""
     effects = tuple(effects)
-    if any(not e.conservative for e in effects):
-        raise ValueError("the reduced formulation needs conserved p_alpha, p_gamma: no damping")
+    if any(not (e.conservative and e.axisymmetric) for e in effects):
+        raise ValueError("the reduced formulation needs conserved p_alpha, p_gamma: "
+                         "axisymmetric conservative effects only")
+    sym = fx.Symbols(effects)
     R = ZYZ.matrix()
-    V = sum((e.potential(R) for e in effects if e.potential), sp.S.Zero)
+    V = fx.potential(effects, R, sym)
     system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
     red = Reduction(system)
     rates = red.rates_from_momenta
@@ -206,50 +247,104 @@ def reduced(effects=()) -> Model:
     Veff = half_angle_partial_fractions(red.effective_potential)
     bdd = -sp.diff(Veff, beta) / I1
     w = ZYZ.omega_body_sum().subs({RATES[0]: ad, RATES[2]: gd}, simultaneous=True)
-    obs = _observables(R, w, _moments(True), effects)
-    obs["energy"] = sp.Rational(1, 2) * I1 * beta_d**2 + p_gamma**2 / (2 * I3) + Veff
-    obs["p_alpha"], obs["p_gamma"] = p_alpha, p_gamma
-    obs["alpha_dot"], obs["gamma_dot"] = ad, gd
-    name = "heavy_top_reduced" if [e.name for e in effects] == ["gravity"] else _variant("reduced", True, effects)
-    return Model(name, "reduced",
+    out = _outputs(R, w, _moments(True), effects, sym, ANGLES)
+    out["energy"] = sp.Rational(1, 2) * I1 * beta_d**2 + p_gamma**2 / (2 * I3) + Veff
+    out["p_alpha"], out["p_gamma"] = p_alpha, p_gamma
+    params = (I1, I3) + sym.params() + (p_alpha, p_gamma)
+    # p_γ = I₃ω̃₃; p_α = p_γ + (p_α − p_γ), the difference formed without cancellation:
+    # ẑ·(R I ω̃) − I₃ω̃₃ = −sinβ cosγ I₁ω̃₁ + sinβ sinγ I₁ω̃₂ − 2 sin²(β/2) p_γ.
+    diff = (-sp.sin(_B) * sp.cos(_G) * I1 * _W1 + sp.sin(_B) * sp.sin(_G) * I1 * _W2
+            - 2 * sp.sin(_B / 2) ** 2 * p_gamma)
+    init_params = ((params.index(p_gamma), I3 * _W3), (params.index(p_alpha), p_gamma + diff))
+    return Model(model_name("reduced", True, [e.name for e in effects]), "reduced",
                  "symmetric top reduced to beta (Routh): conserved p_alpha, p_gamma as parameters, "
                  "half-angle partial fractions so nothing cancels near beta = 0 or pi",
-                 (alpha, beta, gamma, beta_d), (I1, I3) + _effect_params(effects) + (p_alpha, p_gamma),
-                 (ad, beta_d, gd, bdd), obs, effects=tuple(e.name for e in effects), symmetric=True)
+                 (alpha, beta, gamma, beta_d), params, (ad, beta_d, gd, bdd), out,
+                 init=(_A, _B, _G, _given(_BD, _W1 * sp.sin(_G) + _W2 * sp.cos(_G))),
+                 init_params=init_params,
+                 effects=tuple(e.name for e in effects), symmetric=True)
+
+
+def quaternion_of_angles(a, b, c):
+    """q of R = Rz(α) Ry(β) Rz(γ), scalar first: the product of the three half-angle quaternions
+    (cos(α/2), 0, 0, sin(α/2)) ⊗ (cos(β/2), 0, sin(β/2), 0) ⊗ (cos(γ/2), 0, 0, sin(γ/2))."""
+    def mul(p, q):
+        p0, pv, q0, qv = p[0], sp.Matrix(p[1:]), q[0], sp.Matrix(q[1:])
+        return [p0 * q0 - (pv.T * qv)[0, 0]] + list(p0 * qv + q0 * pv + pv.cross(qv))
+
+    qa = [sp.cos(a / 2), 0, 0, sp.sin(a / 2)]
+    qb = [sp.cos(b / 2), 0, sp.sin(b / 2), 0]
+    qc = [sp.cos(c / 2), 0, 0, sp.sin(c / 2)]
+    return tuple(sp.expand(x) for x in mul(mul(qa, qb), qc))
 
 
 def quaternion(symmetric: bool, effects=()) -> Model:
     """Unit quaternion + body angular velocity (Newton–Euler): singularity-free."""
     effects = tuple(effects)
+    sym = fx.Symbols(effects)
     q = sp.Matrix(sp.symbols("q0:4", real=True))
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     moments = _moments(symmetric)
     q0, q1, q2, q3 = q
     n2 = q0**2 + q1**2 + q2**2 + q3**2
-    R = sp.Matrix([
+    Rn = sp.Matrix([
         [q0**2 + q1**2 - q2**2 - q3**2, 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2)],
         [2 * (q1 * q2 + q0 * q3), q0**2 - q1**2 + q2**2 - q3**2, 2 * (q2 * q3 - q0 * q1)],
         [2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), q0**2 - q1**2 - q2**2 + q3**2],
-    ]) / n2
+    ])
+    R = Rn / n2
     # q̇ = ½ q ⊗ (0, ω̃): the body-frame angular velocity composes on the right.
     qv = sp.Matrix([q1, q2, q3])
     qdot = [-(qv.T * w)[0, 0] / 2] + list((q0 * w + qv.cross(w)) / 2)
-    tau = _torque(effects, w, R)
+    tau = fx.torque(effects, w, R, sym)
     wdot = euler_rhs(moments, w) + sp.Matrix([tau[i] / moments[i] for i in range(3)])
-    name = _variant("quaternion", symmetric, effects)
-    if not symmetric and [e.name for e in effects] == ["gravity_general", "damping"]:
-        name = "rigid_body"
-    return Model(name, "quaternion",
+    # β from the quaternion directly: cos β ∝ q0² − q1² − q2² + q3², sin β ∝ 2√((q0²+q3²)(q1²+q2²)),
+    # both accurate near the poles.
+    a2, b2 = q0**2 + q3**2, q1**2 + q2**2
+    angles = (sp.atan2(Rn[1, 2], Rn[0, 2]), sp.atan2(2 * sp.sqrt(a2 * b2), a2 - b2),
+              sp.atan2(Rn[2, 1], -Rn[2, 0]))
+    return Model(model_name("quaternion", symmetric, [e.name for e in effects]), "quaternion",
                  "unit quaternion (scalar first, body to inertial) + body angular velocity, Newton-Euler",
-                 tuple(q) + tuple(w), _moment_params(symmetric) + _effect_params(effects),
-                 tuple(qdot) + tuple(wdot), _observables(R, w, moments, effects),
+                 tuple(q) + tuple(w), _moment_params(symmetric) + sym.params(),
+                 tuple(qdot) + tuple(wdot), _outputs(R, w, moments, effects, sym, angles),
+                 init=quaternion_of_angles(_A, _B, _G) + (_W1, _W2, _W3),
                  domain=(n2,), domain_note="quaternion of zero norm",
                  effects=tuple(e.name for e in effects), symmetric=symmetric)
 
 
-def _variant(formulation: str, symmetric: bool, effects) -> str:
-    parts = [formulation.replace("-", "_"), "sym" if symmetric else "asym"] + [e.name for e in effects]
-    return "_".join(parts)
+def euler_poisson(symmetric: bool, effects=()) -> Model:
+    """Euler–Poisson: L = I ω̃ about the pivot, the vertical n = Rᵀẑ and e = Rᵀx̂ in body axes.
+
+    L̇ = L × ω̃ + τ̃,  ṅ = n × ω̃,  ė = e × ω̃,  ω̃ = I⁻¹L;  for gravity τ̃ = M g n × r_c (derived
+    here from the effect's potential M g ẑ·(R r_c) = M g n·r_c by a virtual rotation).
+    """
+    effects = tuple(effects)
+    sym = fx.Symbols(effects)
+    moments = _moments(symmetric)
+    Lv = sp.Matrix(sp.symbols("L1:4", real=True))
+    n = sp.Matrix(sp.symbols("n1:4", real=True))
+    e = sp.Matrix(sp.symbols("e1:4", real=True))
+    w = sp.Matrix([Lv[i] / moments[i] for i in range(3)])
+    R = sp.Matrix.vstack(e.T, n.cross(e).T, n.T)
+    tau = fx.torque(effects, w, R, sym)
+    Ldot = Lv.cross(w) + tau
+    rhs = tuple(Ldot) + tuple(n.cross(w)) + tuple(e.cross(w))
+    R0 = ZYZ.matrix(_A, _B, _G)
+    init = tuple(moments[i] * (_W1, _W2, _W3)[i] for i in range(3)) + tuple(R0[2, :]) + tuple(R0[0, :])
+    return Model(model_name("euler-poisson", symmetric, [e_.name for e_ in effects]), "euler-poisson",
+                 "Euler-Poisson: angular momentum L = I omega about the pivot, the vertical n and the "
+                 "inertial x axis e in body axes",
+                 tuple(Lv) + tuple(n) + tuple(e), _moment_params(symmetric) + sym.params(), rhs,
+                 _outputs(R, w, moments, effects, sym, _angles_of(R)), init=init,
+                 effects=tuple(e_.name for e_ in effects), symmetric=symmetric)
+
+
+BUILDERS = {
+    "euler-angles": euler_angles,
+    "reduced": lambda symmetric, effects: reduced(effects),
+    "quaternion": quaternion,
+    "euler-poisson": euler_poisson,
+}
 
 
 def build(formulation: str, symmetric: bool, effect_names=()) -> Model:
@@ -259,21 +354,19 @@ def build(formulation: str, symmetric: bool, effect_names=()) -> Model:
         if effs:
             raise ValueError("the 'euler' formulation is torque-free")
         return euler_free(symmetric)
-    if formulation == "euler-angles":
-        return euler_angles(symmetric, effs)
-    if formulation == "reduced":
-        if not symmetric:
-            raise ValueError("the reduced formulation needs a symmetric body (I1 = I2)")
-        return reduced(effs)
-    if formulation == "quaternion":
-        return quaternion(symmetric, effs)
-    raise ValueError(f"unknown formulation {formulation!r}")
+    if formulation == "reduced" and not symmetric:
+        raise ValueError("the reduced formulation needs a symmetric body (I1 = I2)")
+    if formulation not in BUILDERS:
+        raise ValueError(f"unknown formulation {formulation!r}")
+    return BUILDERS[formulation](symmetric, effs)
 
 
-#: The models committed to generated/ (the contract names euler_free and heavy_top).
-CATALOGUE = {
-    "euler_free": lambda: euler_free(False),
-    "heavy_top": lambda: euler_angles(True, fx.lookup(["gravity"])),
-    "heavy_top_reduced": lambda: reduced(fx.lookup(["gravity"])),
-    "rigid_body": lambda: quaternion(False, fx.lookup(["gravity_general", "damping"])),
+#: The models committed to generated/ (the contract names euler_free and heavy_top), by name:
+#: (formulation, symmetric body, effects).
+CATALOGUE_KEYS = {
+    "euler_free": ("euler", False, ()),
+    "heavy_top": ("euler-angles", True, ("gravity",)),
+    "heavy_top_reduced": ("reduced", True, ("gravity",)),
+    "rigid_body": ("quaternion", False, ("gravity_general", "damping")),
 }
+CATALOGUE = {name: (lambda key=key: build(*key)) for name, key in CATALOGUE_KEYS.items()}

@@ -1,8 +1,9 @@
 """Scene files: read, validate and describe one simulation of a rigid body about a fixed point.
 
 A scene is a TOML file (or a dict shaped like one) with the tables ``[body]``, ``[gravity]``,
-``[damping]``, ``[initial]`` and ``[simulate]`` and an optional top-level ``title``; see
-``/work/shared/INTERFACE.md`` ("Scene files") for the contract and ``scenes/*.toml`` for examples.
+``[damping]`` (the effects' tables, declared in :mod:`derive.effects`), ``[initial]`` and
+``[simulate]`` and an optional top-level ``title``; see the README ("Scene files") and
+``docs/scenes.md`` for every key, and ``scenes/*.toml`` for examples.
 
 Conventions (those of the whole package):
 
@@ -18,11 +19,11 @@ first problem found is reported, tables in the order body, gravity, damping, ini
 Decisions where the contract is silent (documented here once):
 
 * ``[body]``: I1 and I3 are required, I2 defaults to I1.
-* ``[gravity]``: M, g, l all required once the table is present. l may be negative: the centre of
-  mass then sits *below* the pivot when body axis 3 points up (a hanging, pendulum-like body).
-  g = 0 is allowed (the gravity terms are still compiled, with a zero coefficient).
-* ``[damping]``: c is required once the table is present; c = 0 is allowed and the effect still
-  counts as present (a scene pays for what it names).
+* Effect tables (``[gravity]``, ``[damping]``, …) are declared by their effects
+  (:mod:`derive.effects`): keys, units, checks, defaults and keys of which exactly one is given
+  (gravity's ``l`` or ``com``). A table present switches its effect on, even with zero
+  coefficients (a scene pays for what it names). ``l`` may be negative: the centre of mass then
+  sits *below* the pivot when body axis 3 points up (a hanging, pendulum-like body).
 * ``[initial]``: alpha, beta, gamma are required (any finite real). Give the Euler-angle rates or
   ``omega``. If at least one rate is given, missing rates default to 0.0 (``beta_dot`` is usually
   0 at a turning point, so scenes may omit it). When ``omega`` is given the rates are kept as
@@ -30,13 +31,13 @@ Decisions where the contract is silent (documented here once):
 * ``[simulate]``: t_end is required; the other keys have the defaults in ``SIMULATE_DEFAULTS``.
   ``h`` (an extension of the contract) is the step size in s of the fixed-step methods
   ``FIXED_STEP_METHODS``; it is rejected with any other method (there it would be ignored
-  silently). h = None lets the integrator choose. rtol must lie in [100 eps, 1): below that no
+  silently). h = None lets the integrator choose. ``max_steps`` (default 1000000) is the work
+  budget: fixed-step methods are refused up front when t_end / h exceeds it, adaptive ones stop
+  with a numerical failure when they spend it. rtol must lie in [100 eps, 1): below that no
   double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
   cannot exhaust memory.
-* ``formulation = "reduced"`` needs conserved p_alpha and p_gamma: a symmetric body (I1 == I2)
-  and no damping (c == 0). ``"euler-angles"`` and ``"reduced"`` are singular at sin(beta) = 0, so
-  they are rejected when the initial beta is within ``POLE_TOLERANCE`` of a pole; "auto" and
-  "quaternion" accept such a start.
+* A formulation that cannot represent the scene (its registry entry's ``applicable``, see
+  :mod:`derive.formulations`) is rejected naming ``simulate.formulation`` and the reason.
 * Overrides (command-line flags, API keywords) replace keys of ``[simulate]`` before validation;
   None means "not given". A bad override is reported under its ``simulate.<key>`` name with the
   suffix "(given as an override)".
@@ -55,11 +56,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from . import effects, formulations
 from .errors import SceneError
 
 __all__ = [
-    "METHODS", "FIXED_STEP_METHODS", "FORMULATIONS", "SIMULATE_DEFAULTS", "EFFECTS",
-    "Body", "Gravity", "Damping", "Initial", "Simulate", "Scene",
+    "METHODS", "FIXED_STEP_METHODS", "FORMULATIONS", "SIMULATE_DEFAULTS",
+    "Body", "TableValues", "Initial", "Simulate", "Scene",
     "load_scene", "body_omega",
 ]
 
@@ -78,38 +80,37 @@ METHODS: dict[str, str] = {
 #: The methods that take a fixed step size ``h``.
 FIXED_STEP_METHODS = ("rk4", "gauss4", "gauss6")
 
-#: Formulations of the equations of motion: name -> one-line description.
-FORMULATIONS: dict[str, str] = {
-    "auto": "let derive choose from the body, the effects and the initial state",
-    "euler-angles": "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
-    "reduced": "beta alone with conserved p_alpha, p_gamma; symmetric body, no damping",
-    "quaternion": "unit quaternion and body omega; no coordinate singularity",
-}
-
-#: Effects a scene may name, in canonical order (each is an optional table).
-EFFECTS = ("gravity", "damping")
+#: Formulations of the equations of motion: name -> one-line description (the registry).
+FORMULATIONS: dict[str, str] = formulations.CHOICES
 
 #: Defaults of the optional ``[simulate]`` keys (t_end has none: it is required).
 SIMULATE_DEFAULTS = {
     "samples": 1001, "method": "auto", "rtol": 1e-10, "atol": 1e-12, "formulation": "auto",
-    "h": None,
+    "h": None, "max_steps": 1_000_000,
 }
 MAX_SAMPLES = 10_000_000
 #: Smallest rtol accepted: 100 machine epsilons (about 2.2e-14).
 MIN_RTOL = 100 * np.finfo(float).eps
 #: |sin(beta)| below this counts as "at a pole" of the z-y-z Euler angles.
 POLE_TOLERANCE = 1e-9
+MAX_STEPS_LIMIT = 10**12
 #: Relative slack of the triangle inequality, so that a flat plate (I3 = I1 + I2) survives rounding.
 TRIANGLE_SLACK = 1e-12
 
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
-_KEYS = {  # table -> its keys, in the order they are documented
+_FIXED_KEYS = {  # table -> its keys, in the order they are documented
     "body": ("I1", "I2", "I3"),
-    "gravity": ("M", "g", "l"),
-    "damping": ("c",),
     "initial": ("alpha", "beta", "gamma", *_RATES, "omega"),
-    "simulate": ("t_end", "samples", "method", "rtol", "atol", "formulation", "h"),
+    "simulate": ("t_end", "samples", "method", "rtol", "atol", "formulation", "h", "max_steps"),
 }
+
+
+def _table_keys() -> dict[str, tuple[str, ...]]:
+    """Every table's keys: body, the effects' tables (from the registry), initial, simulate."""
+    keys = {"body": _FIXED_KEYS["body"]}
+    keys.update({name: tuple(k.name for k in t.keys) for name, t in effects.TABLES.items()})
+    keys.update(initial=_FIXED_KEYS["initial"], simulate=_FIXED_KEYS["simulate"])
+    return keys
 _TOP_KEYS = ("title",)
 
 
@@ -131,22 +132,47 @@ class Body:
         return (self.I1, self.I2, self.I3)
 
 
-@dataclass(frozen=True)
-class Gravity:
-    """Uniform field of strength g (m/s^2) along -z acting on mass M (kg) whose centre sits on
-    body axis 3 at signed distance l (m) from the fixed point: V = M g l cos(beta).
-    l < 0 puts the centre of mass below the pivot when axis 3 points up."""
+class TableValues(Mapping):
+    """The validated values of an effect's table (``scene.gravity.M``, ``scene.damping.c``),
+    absent optional keys as None; ``effect`` names the registry effect they select. For gravity,
+    ``com`` is always set ((0, 0, l) when l was given) and ``l`` is com[2] when the centre of
+    mass is on axis 3, else None."""
 
-    M: float
-    g: float
-    l: float
+    def __init__(self, table: str, values: dict, effect: str):
+        self.__dict__.update(_table=table, _values=dict(values), effect=effect)
 
+    def __getattr__(self, key):
+        try:
+            return self.__dict__["_values"][key]
+        except KeyError:
+            raise AttributeError(key) from None
 
-@dataclass(frozen=True)
-class Damping:
-    """Viscous torque -c omega about the fixed point; c in N m s (per radian) >= 0."""
+    def __setattr__(self, key, value):
+        raise AttributeError("scene tables are read-only")
 
-    c: float
+    def __getitem__(self, key):
+        return self._values[key]
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __eq__(self, other):
+        return (isinstance(other, TableValues) and self._table == other._table
+                and self._values == other._values)
+
+    def __hash__(self):
+        return hash((self._table, tuple(sorted(self._values.items()))))
+
+    def __repr__(self):
+        return f"TableValues({self._table!r}, {self._values!r})"
+
+    def given(self) -> dict:
+        """The keys as a scene file would give them (None values and derived keys dropped)."""
+        return {k: (list(v) if isinstance(v, tuple) else v) for k, v in self._values.items()
+                if v is not None and k in self.__dict__["_given"]}
 
 
 @dataclass(frozen=True)
@@ -189,6 +215,7 @@ class Simulate:
     atol: float
     formulation: str
     h: float | None
+    max_steps: int = SIMULATE_DEFAULTS["max_steps"]
 
 
 @dataclass(frozen=True)
@@ -198,16 +225,31 @@ class Scene:
 
     title: str | None
     body: Body
-    gravity: Gravity | None
-    damping: Damping | None
+    tables: dict  # effect table name -> TableValues, for the tables present
     initial: Initial
     simulate: Simulate
     source: str = field(default="<dict>", compare=False)
 
+    def __getattr__(self, name):
+        # An effect table's values (scene.gravity, scene.damping, …), or None when absent.
+        if name.startswith("_") or name not in effects.TABLES:
+            raise AttributeError(name)
+        return self.tables.get(name)
+
     @property
     def effects(self) -> tuple[str, ...]:
-        """Names of the effects present, in the order of EFFECTS, e.g. ("gravity", "damping")."""
-        return tuple(name for name in EFFECTS if getattr(self, name) is not None)
+        """The registry effects the scene's tables select, in registry order, e.g.
+        ("gravity", "damping") or ("gravity_general",)."""
+        chosen = {t.effect for t in self.tables.values()}
+        return tuple(name for name in effects.REGISTRY if name in chosen)
+
+    def param_values(self) -> dict[str, float]:
+        """Every model parameter the scene fixes: the moments and each effect's parameters."""
+        b = self.body
+        values = {"I1": b.I1, "I2": b.I2, "I3": b.I3}
+        for t in self.tables.values():
+            values.update(effects.REGISTRY[t.effect].values(t))
+        return values
 
     @property
     def symmetric(self) -> bool:
@@ -228,8 +270,8 @@ class Scene:
             initial["omega"] = list(ini.omega)
         simulate = {k: v for k, v in dataclasses.asdict(self.simulate).items() if v is not None}
         data = {"body": dataclasses.asdict(self.body)}
-        for name in self.effects:
-            data[name] = dataclasses.asdict(getattr(self, name))
+        for name, values in self.tables.items():
+            data[name] = values.given()
         data.update(initial=initial, simulate=simulate)
         if self.title is not None:
             data["title"] = self.title
@@ -267,11 +309,12 @@ def load_scene(scene, /, **overrides) -> Scene:
         source, data = scene.source, scene.to_dict()
     elif isinstance(scene, Mapping):
         source, data = "<dict>", scene
-    elif isinstance(scene, (str, os.PathLike)):
+    elif isinstance(scene, (str, os.PathLike)) and not isinstance(scene, bytes):
         source = os.fspath(scene)
         data = _read_toml(source)
     else:
-        raise TypeError(f"scene must be a path, a dict or a Scene, not {type(scene).__name__}")
+        raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
+                                                   f"like one or a Scene, not {type(scene).__name__}"))
     return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
 
 
@@ -337,7 +380,7 @@ def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -
     """The text in 'unknown key (...)': a likely fix (the table the key belongs in, or a close
     spelling of a valid key), then what was expected."""
     hint = ""
-    home = [t for t, keys in _KEYS.items() if key in keys and t != where]
+    home = [t for t, keys in _table_keys().items() if key in keys and t != where]
     close = [k for k in valid if k.lower() == str(key).lower()]
     close = close or difflib.get_close_matches(str(key), valid, n=1, cutoff=0.6)
     if home:
@@ -364,8 +407,9 @@ class _Validator:
     def table(self, data: Mapping, name: str) -> Mapping:
         """The table ``name`` after checking it has only known keys."""
         for key in data:
-            if key not in _KEYS[name]:
-                self.fail(f"{name}.{key}", "unknown key (" + _unknown(key, _KEYS[name], name) + ")")
+            if key not in _table_keys()[name]:
+                self.fail(f"{name}.{key}",
+                          "unknown key (" + _unknown(key, _table_keys()[name], name) + ")")
         return data
 
     def number(self, data, table, key, test=None, must="a finite number", default=...):
@@ -402,9 +446,10 @@ class _Validator:
         for key, value in data.items():
             if key in _TOP_KEYS:
                 continue
-            if key not in _KEYS:
+            if key not in _table_keys():
                 if isinstance(value, Mapping):
-                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(_KEYS), "") + ")")
+                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(_table_keys()), "")
+                              + ")")
                 self.fail(str(key), "unknown key (" + _unknown(
                     key, _TOP_KEYS, "", "the only top-level key is title") + ")")
             if not isinstance(value, Mapping):
@@ -414,22 +459,22 @@ class _Validator:
             self.fail("title", f"must be a string, got {_show(title)}")
         # Tables in document order, so the first problem reported is the first one in the file.
         body = self.body(self.table(self.required(data, "body"), "body"))
-        gravity = self.gravity(self.table(data["gravity"], "gravity")) if "gravity" in data else None
-        damping = self.damping(self.table(data["damping"], "damping")) if "damping" in data else None
+        tables = {name: self.effect_table(self.table(data[name], name), effects.TABLES[name])
+                  for name in effects.TABLES if name in data}
         initial = self.initial(self.table(self.required(data, "initial"), "initial"))
 
         for key in overrides:
-            if key not in _KEYS["simulate"]:
+            if key not in _FIXED_KEYS["simulate"]:
                 self.overridden.add(f"simulate.{key}")
                 self.fail(f"simulate.{key}",
-                          "unknown key (" + _unknown(key, _KEYS["simulate"], "simulate") + ")")
+                          "unknown key (" + _unknown(key, _FIXED_KEYS["simulate"], "simulate") + ")")
         if "simulate" not in data and "t_end" not in overrides:
             self.fail("simulate", "missing required table (simulate.t_end has no default)")
         simulate = self.table(data.get("simulate", {}), "simulate")
         self.overridden.update(f"simulate.{key}" for key in overrides)
         simulate = self.simulate({**simulate, **overrides})
 
-        scene = Scene(title, body, gravity, damping, initial, simulate, self.source)
+        scene = Scene(title, body, tables, initial, simulate, self.source)
         self.formulation_fits(scene)
         return scene
 
@@ -448,16 +493,45 @@ class _Validator:
                                   f"({values}); no rigid body has these principal moments")
         return Body(I1, I2, I3)
 
-    def gravity(self, t) -> Gravity:
-        return Gravity(
-            M=self.number(t, "gravity", "M", lambda x: x > 0, "a positive finite number (kg)"),
-            g=self.number(t, "gravity", "g", lambda x: x >= 0, "a non-negative finite number (m/s^2)"),
-            l=self.number(t, "gravity", "l", must="a finite number (m; negative = below the pivot)"),
-        )
+    def effect_table(self, t, table: effects.Table) -> TableValues:
+        """An effect's table, read by its declaration: each key a finite real (or a list of 3)
+        passing its check; of each ``one_of`` group exactly one key given."""
+        for group in table.one_of:
+            given = [k for k in group if k in t]
+            if len(given) > 1:
+                self.fail(f"{table.name}.{given[1]}",
+                          f"give {' or '.join(group)}, not both ({', '.join(given)} given)")
+            if not given:
+                self.fail(f"{table.name}.{group[0]}",
+                          f"missing required key (give {' or '.join(group)})")
+        values = {}
+        for key in table.keys:
+            if key.kind == "vector3":
+                values[key.name] = self.vector3(t, table.name, key)
+            else:
+                default = ... if key.default is effects.REQUIRED else key.default
+                values[key.name] = self.number(t, table.name, key.name, key.check, key.must,
+                                               default=default)
+        given = {k for k in t}
+        if table.name == "gravity":
+            com = tuple(values["com"]) if values["com"] is not None else (0.0, 0.0, values["l"])
+            values["com"] = com
+            values["l"] = com[2] if com[0] == 0.0 and com[1] == 0.0 else None
+        out = TableValues(table.name, values, effects.for_table(table.name, values).name)
+        out.__dict__["_given"] = given
+        return out
 
-    def damping(self, t) -> Damping:
-        return Damping(self.number(t, "damping", "c", lambda x: x >= 0,
-                                   "a non-negative finite number (N m s)"))
+    def vector3(self, t, table: str, key: effects.Key):
+        if key.name not in t:
+            if key.default is effects.REQUIRED:
+                self.fail(f"{table}.{key.name}", "missing required key")
+            return key.default
+        value = t[key.name]
+        vec = ([_real(w) for w in value]
+               if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
+        if None in vec or (key.check is not None and not key.check(tuple(vec))):
+            self.fail(f"{table}.{key.name}", f"must be {key.must}, got {_show(value)}")
+        return tuple(vec)
 
     def initial(self, t) -> Initial:
         alpha, beta, gamma = (self.number(t, "initial", k, must="a finite number (rad)")
@@ -497,6 +571,11 @@ class _Validator:
                                        f"no double-precision integrator can meet {rtol:g}")
         atol = self.number(s, "simulate", "atol", lambda x: x > 0, "a positive finite number")
         formulation = self.choice(s, "simulate", "formulation", tuple(FORMULATIONS))
+        max_steps = s["max_steps"]
+        if (isinstance(max_steps, (bool, np.bool_)) or not isinstance(max_steps, numbers.Integral)
+                or not 1 <= max_steps <= MAX_STEPS_LIMIT):
+            self.fail("simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}, "
+                                            f"got {_show(max_steps)}")
         h = None
         if s["h"] is not None:
             h = self.number(s, "simulate", "h", lambda x: x > 0, "a positive finite number (s)")
@@ -504,20 +583,12 @@ class _Validator:
                 self.fail("simulate.h", f"is the step of a fixed-step method "
                                         f"({', '.join(FIXED_STEP_METHODS)}), but method is "
                                         f"{method!r}; remove h or name a fixed-step method")
-        return Simulate(t_end, int(samples), method, rtol, atol, formulation, h)
+        return Simulate(t_end, int(samples), method, rtol, atol, formulation, h, int(max_steps))
 
     def formulation_fits(self, scene: Scene) -> None:
-        """Reject formulations that cannot represent this scene (the rest is 'auto's job)."""
+        """Reject a formulation that cannot represent this scene (the registry says why)."""
         form = scene.simulate.formulation
-        if form == "reduced" and not scene.symmetric:
-            self.fail("simulate.formulation",
-                      f"'reduced' needs a symmetric body (I1 == I2) so that p_gamma is conserved; "
-                      f"got I1 = {scene.body.I1:g}, I2 = {scene.body.I2:g}")
-        if form == "reduced" and scene.damping is not None and scene.damping.c > 0:
-            self.fail("simulate.formulation",
-                      f"'reduced' needs conserved p_alpha and p_gamma, but damping.c = "
-                      f"{scene.damping.c:g} > 0 dissipates them")
-        if form in ("euler-angles", "reduced") and scene.initial.at_pole:
-            self.fail("simulate.formulation",
-                      f"{form!r} is singular at sin(beta) = 0 and initial.beta = "
-                      f"{scene.initial.beta:g} starts there; use 'quaternion' or 'auto'")
+        if form != "auto":
+            reason = formulations.REGISTRY[form].applicable(scene)
+            if reason:
+                self.fail("simulate.formulation", reason)

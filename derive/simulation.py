@@ -16,8 +16,6 @@ return a trajectory that came closer to β = 0 or π than its accuracy allows.
 from __future__ import annotations
 
 import functools
-import os
-import tempfile
 import types
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -68,12 +66,7 @@ class Result:
 
 def effect_names(scene: Scene) -> tuple[str, ...]:
     """The registry effects a scene calls for (gravity only when it has a [gravity] table, …)."""
-    names = []
-    if scene.gravity is not None:
-        names.append("gravity")
-    if scene.damping is not None:
-        names.append("damping")
-    return tuple(names)
+    return scene.effects
 
 
 @functools.lru_cache(maxsize=None)
@@ -132,12 +125,7 @@ def _momenta(scene: Scene) -> tuple[float, float]:
 
 
 def _params(scene: Scene, model: models.Model) -> np.ndarray:
-    b = scene.body
-    values = {"I1": b.I1, "I2": b.I2, "I3": b.I3}
-    if scene.gravity is not None:
-        values.update(M=scene.gravity.M, g=scene.gravity.g, l=scene.gravity.l)
-    if scene.damping is not None:
-        values["c"] = scene.damping.c
+    values = scene.param_values()
     if model.formulation == "reduced":
         values["p_alpha"], values["p_gamma"] = _momenta(scene)
     return np.array([values[n] for n in model.param_names], dtype=float)
@@ -233,7 +221,10 @@ def choose_formulation(scene: Scene) -> str:
     requested = scene.simulate.formulation
     if requested != "auto":
         return requested
-    if not scene.symmetric or scene.damping is not None:
+    from . import effects
+
+    if not scene.symmetric or any(not (e.conservative and e.axisymmetric)
+                                  for e in effects.lookup(scene.effects)):
         return "quaternion"
     p_alpha, p_gamma = _momenta(scene)
     b_lo, b_hi = beta_range(scene)
@@ -390,10 +381,12 @@ def _explain(model: models.Model, sol) -> str:
 def default_step(scene: Scene) -> float:
     """A fixed step for RK4 / Gauss–Legendre when the scene gives none: 1/200 of the fastest
     natural period (spin, precession or pendulum), and no larger than the output spacing."""
+    from . import effects
+
     b, i = scene.body, scene.initial
     rates = [np.linalg.norm(i.omega) * max(b.I1, b.I2, b.I3) / min(b.I1, b.I2, b.I3)]
-    if scene.gravity is not None:
-        rates.append(np.sqrt(abs(scene.gravity.M * scene.gravity.g * scene.gravity.l) / min(b.I1, b.I2)))
+    for t in scene.tables.values():
+        rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
     fastest = max(max(rates), 1e-12)
     dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
     return float(min(2 * np.pi / fastest / 200, dt_out))
@@ -410,33 +403,17 @@ def _solve_scipy(mod, method, y0, p, t, rtol, atol):
 
 
 def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
-    """Write the .npz (and the plot), each atomically: a temporary file renamed into place."""
-    staged = []
-    try:
-        if npz:
-            staged.append((_stage(npz, lambda f: np.savez(f, **res.arrays())), npz))
-        if png:
-            from .plots import plot_result
+    """Write the .npz and/or the plot, all or nothing (see `derive.outputs`): every path is
+    checked first, each file goes to a temporary beside its target, and the temporaries are
+    renamed into place only once all of them were written."""
+    from .outputs import check_paths, write_all
 
-            staged.append((_stage(png, lambda f: plot_result(res, f)), png))
-    except BaseException:
-        for tmp, _ in staged:
-            os.unlink(tmp)
-        raise
-    for tmp, final in staged:
-        os.replace(tmp, final)
+    check_paths([npz, png])
+    writers = {}
+    if npz:
+        writers[npz] = lambda f: np.savez(f, **res.arrays())
+    if png:
+        from .plots import plot_result
 
-
-def _stage(path: str, writer) -> str:
-    target = Path(path)
-    if not target.parent.exists():
-        raise SceneError(f"{path}: output: directory {str(target.parent)!r} does not exist")
-    fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=target.suffix)
-    os.close(fd)
-    try:
-        with open(tmp, "wb") as fh:
-            writer(fh)
-    except BaseException:
-        os.unlink(tmp)
-        raise
-    return tmp
+        writers[png] = lambda f: plot_result(res, f)
+    write_all(writers)

@@ -106,7 +106,7 @@ def test_every_method_and_formulation_has_a_one_line_description():
         for name, text in table.items():
             assert text and "\n" not in text, name
     assert set(FIXED_STEP_METHODS) <= set(METHODS)
-    assert set(SIMULATE_DEFAULTS) == set(BASE["simulate"]) - {"t_end"} | {"h"}
+    assert set(SIMULATE_DEFAULTS) == set(BASE["simulate"]) - {"t_end"} | {"h", "max_steps"}
 
 
 def test_h_is_accepted_with_a_fixed_step_method():
@@ -187,11 +187,15 @@ RULES = [
     ("reduced with an asymmetric body", [("body.I2", 1.2), ("simulate.formulation", "reduced")],
      "simulate.formulation", "'reduced' needs a symmetric body"),
     ("reduced with damping", [("damping.c", 0.1), ("simulate.formulation", "reduced")],
-     "simulate.formulation", "damping.c = 0.1 > 0"),
+     "simulate.formulation", "effect 'damping' does not conserve them"),
+    # A damping table with c = 0 still names the effect (a scene pays for what it names): the
+    # reduced formulation cannot take it, and says so up front (it used to end in a ValueError).
+    ("reduced with zero damping", [("damping.c", 0.0), ("simulate.formulation", "reduced")],
+     "simulate.formulation", "effect 'damping' does not conserve them"),
     ("euler-angles at the pole", [("initial.beta", 0.0),
                                   ("simulate.formulation", "euler-angles")],
      "simulate.formulation", "singular at sin(beta) = 0"),
-    ("reduced at the lower pole", [("initial.beta", math.pi),
+    ("reduced at the lower pole", [("initial.beta", math.pi), ("damping", DELETE),
                                    ("simulate.formulation", "reduced")],
      "simulate.formulation", "singular at sin(beta) = 0"),
 ]
@@ -275,9 +279,10 @@ def test_dict_input_equals_file_input(name):
     assert (from_file.source, from_dict.source) == (str(path), "<dict>")
 
 
-def test_load_scene_rejects_other_types():
-    with pytest.raises(TypeError):
-        load_scene(42)
+@pytest.mark.parametrize("value", [42, None, [1, 2], b"scene.toml", 1.5])
+def test_load_scene_rejects_other_types(value):
+    with pytest.raises(SceneError, match="scene: must be a path"):
+        load_scene(value)
 
 
 # ---------------------------------------------------------------------------------------------

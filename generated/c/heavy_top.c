@@ -9,7 +9,7 @@
 
 const char *const heavy_top_state_names[heavy_top_NY] = { "alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot" };
 const char *const heavy_top_param_names[heavy_top_NP] = { "I1", "I3", "M", "g", "l" };
-const char *const heavy_top_observable_names[heavy_top_NOBS] = { "energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3" };
+const char *const heavy_top_observable_names[heavy_top_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
 
 int heavy_top_rhs(double t, const double *y, const double *p, double *dydt)
 {
@@ -136,25 +136,36 @@ int heavy_top_observables(double t, const double *y, const double *p, double *ou
     const double l = p[4];
     (void)t;
 
-    const double x0 = cos(beta);
-    const double x1 = alpha_d*x0 + gamma_d;
+    const double x0 = sin(gamma);
+    const double x1 = sin(beta);
     const double x2 = cos(gamma);
-    const double x3 = sin(gamma);
-    const double x4 = sin(beta);
-    const double x5 = alpha_d*x4;
-    const double x6 = beta_d*x2 + x3*x5;
-    const double x7 = (1.0/2.0)*I1;
-    const double x8 = beta_d*x3 - x2*x5;
-    const double x9 = I3*x1;
-    const double x10 = I1*x4;
-    out[0] = (1.0/2.0)*I3*(x1*x1) + M*g*l*x0 + (x6*x6)*x7 + x7*(x8*x8);
-    out[1] = x0*x9 - x10*x2*x8 + x10*x3*x6;
-    out[2] = x9;
-    out[3] = x4*cos(alpha);
-    out[4] = x4*sin(alpha);
-    out[5] = x0;
-    out[6] = x8;
-    out[7] = x6;
-    out[8] = x1;
+    const double x3 = x1*x2;
+    const double x4 = -alpha_d*x3 + beta_d*x0;
+    const double x5 = x0*x1;
+    const double x6 = alpha_d*x5 + beta_d*x2;
+    const double x7 = cos(beta);
+    const double x8 = alpha_d*x7 + gamma_d;
+    const double x9 = (1.0/2.0)*I1;
+    const double x10 = I3*x8;
+    const double x11 = I1*x6;
+    const double x12 = I1*x4;
+    out[0] = alpha;
+    out[1] = beta;
+    out[2] = gamma;
+    out[3] = x4;
+    out[4] = x6;
+    out[5] = x8;
+    out[6] = x1*cos(alpha);
+    out[7] = x1*sin(alpha);
+    out[8] = x7;
+    out[9] = (1.0/2.0)*I3*(x8*x8) + M*g*l*x7 + (x4*x4)*x9 + (x6*x6)*x9;
+    out[10] = x10*x7 + x11*x5 - x12*x3;
+    out[11] = x10;
+    out[12] = -x3;
+    out[13] = x5;
+    out[14] = x7;
+    out[15] = x12;
+    out[16] = x11;
+    out[17] = x10;
     return 0;
 }

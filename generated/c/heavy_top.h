@@ -15,7 +15,7 @@
 
 #define heavy_top_NY 6                      /* state size */
 #define heavy_top_NP 5                      /* parameter count */
-#define heavy_top_NOBS 9                    /* observable count */
+#define heavy_top_NOBS 18                    /* observable count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define HEAVY_TOP_NY heavy_top_NY
 #define HEAVY_TOP_NP heavy_top_NP
@@ -31,7 +31,7 @@ int heavy_top_rhs(double t, const double *y, const double *p, double *dydt);
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int heavy_top_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3). Returns 0. */
+/* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int heavy_top_observables(double t, const double *y, const double *p, double *out);
 
 #endif /* HEAVY_TOP_H */

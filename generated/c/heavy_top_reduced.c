@@ -9,7 +9,7 @@
 
 const char *const heavy_top_reduced_state_names[heavy_top_reduced_NY] = { "alpha", "beta", "gamma", "beta_dot" };
 const char *const heavy_top_reduced_param_names[heavy_top_reduced_NP] = { "I1", "I3", "M", "g", "l", "p_alpha", "p_gamma" };
-const char *const heavy_top_reduced_observable_names[heavy_top_reduced_NOBS] = { "energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3", "alpha_dot", "gamma_dot" };
+const char *const heavy_top_reduced_observable_names[heavy_top_reduced_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
 
 int heavy_top_reduced_rhs(double t, const double *y, const double *p, double *dydt)
 {
@@ -110,34 +110,44 @@ int heavy_top_reduced_observables(double t, const double *y, const double *p, do
     const double p_gamma = p[6];
     (void)t;
 
-    const double x0 = cos(beta);
-    const double x1 = 1.0/I1;
-    const double x2 = (1.0/2.0)*(p_gamma*p_gamma);
-    const double x3 = 1.0/I3;
-    const double x4 = p_alpha + p_gamma;
-    const double x5 = (x4*x4);
-    const double x6 = (1.0/2.0)*beta;
-    const double x7 = 1.0/(cos(x6)*cos(x6));
-    const double x8 = (1.0/8.0)*x1;
-    const double x9 = p_alpha - p_gamma;
-    const double x10 = (x9*x9);
-    const double x11 = 1.0/(sin(x6)*sin(x6));
-    const double x12 = sin(beta);
-    const double x13 = sin(gamma);
-    const double x14 = cos(gamma);
-    const double x15 = (1.0/4.0)*x1;
-    const double x16 = ((x4 == 0) ? (0) : (x15*x4*x7)) + ((x9 == 0) ? (0) : (x11*x15*x9));
-    const double x17 = x12*x16;
-    out[0] = (1.0/2.0)*I1*(beta_d*beta_d) + M*g*l*x0 - x1*x2 + x2*x3 + ((x10 == 0) ? (0) : (x10*x11*x8)) + ((x5 == 0) ? (0) : (x5*x7*x8));
-    out[1] = p_alpha;
-    out[2] = p_gamma;
-    out[3] = x12*cos(alpha);
-    out[4] = x12*sin(alpha);
-    out[5] = x0;
-    out[6] = beta_d*x13 - x14*x17;
-    out[7] = beta_d*x14 + x13*x17;
-    out[8] = p_gamma*x3;
-    out[9] = x16;
-    out[10] = p_gamma*x3 - x0*x16;
+    const double x0 = sin(gamma);
+    const double x1 = p_alpha + p_gamma;
+    const double x2 = (1.0/2.0)*beta;
+    const double x3 = 1.0/(cos(x2)*cos(x2));
+    const double x4 = 1.0/I1;
+    const double x5 = (1.0/4.0)*x4;
+    const double x6 = p_alpha - p_gamma;
+    const double x7 = 1.0/(sin(x2)*sin(x2));
+    const double x8 = ((x1 == 0) ? (0) : (x1*x3*x5)) + ((x6 == 0) ? (0) : (x5*x6*x7));
+    const double x9 = sin(beta);
+    const double x10 = cos(gamma);
+    const double x11 = x10*x9;
+    const double x12 = beta_d*x0 - x11*x8;
+    const double x13 = x0*x9;
+    const double x14 = beta_d*x10 + x13*x8;
+    const double x15 = 1.0/I3;
+    const double x16 = cos(beta);
+    const double x17 = (1.0/2.0)*(p_gamma*p_gamma);
+    const double x18 = (x1*x1);
+    const double x19 = (1.0/8.0)*x4;
+    const double x20 = (x6*x6);
+    out[0] = alpha;
+    out[1] = beta;
+    out[2] = gamma;
+    out[3] = x12;
+    out[4] = x14;
+    out[5] = p_gamma*x15;
+    out[6] = x9*cos(alpha);
+    out[7] = x9*sin(alpha);
+    out[8] = x16;
+    out[9] = (1.0/2.0)*I1*(beta_d*beta_d) + M*g*l*x16 + x15*x17 - x17*x4 + ((x18 == 0) ? (0) : (x18*x19*x3)) + ((x20 == 0) ? (0) : (x19*x20*x7));
+    out[10] = p_alpha;
+    out[11] = p_gamma;
+    out[12] = -x11;
+    out[13] = x13;
+    out[14] = x16;
+    out[15] = I1*x12;
+    out[16] = I1*x14;
+    out[17] = p_gamma;
     return 0;
 }

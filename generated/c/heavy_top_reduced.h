@@ -15,7 +15,7 @@
 
 #define heavy_top_reduced_NY 4                      /* state size */
 #define heavy_top_reduced_NP 7                      /* parameter count */
-#define heavy_top_reduced_NOBS 11                    /* observable count */
+#define heavy_top_reduced_NOBS 18                    /* observable count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define HEAVY_TOP_REDUCED_NY heavy_top_reduced_NY
 #define HEAVY_TOP_REDUCED_NP heavy_top_reduced_NP
@@ -31,7 +31,7 @@ int heavy_top_reduced_rhs(double t, const double *y, const double *p, double *dy
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int heavy_top_reduced_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3, alpha_dot, gamma_dot). Returns 0. */
+/* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int heavy_top_reduced_observables(double t, const double *y, const double *p, double *out);
 
 #endif /* HEAVY_TOP_REDUCED_H */

@@ -9,7 +9,7 @@
 
 const char *const rigid_body_state_names[rigid_body_NY] = { "q0", "q1", "q2", "q3", "omega1", "omega2", "omega3" };
 const char *const rigid_body_param_names[rigid_body_NP] = { "I1", "I2", "I3", "M", "g", "cx", "cy", "cz", "c" };
-const char *const rigid_body_observable_names[rigid_body_NOBS] = { "energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3" };
+const char *const rigid_body_observable_names[rigid_body_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
 
 int rigid_body_rhs(double t, const double *y, const double *p, double *dydt)
 {
@@ -215,26 +215,44 @@ int rigid_body_observables(double t, const double *y, const double *p, double *o
     const double cz = p[7];
     (void)t;
 
-    const double x0 = (q1*q1);
-    const double x1 = (q2*q2);
-    const double x2 = (q0*q0) + (q3*q3);
-    const double x3 = 1.0/(x0 + x1 + x2);
-    const double x4 = 2*q0;
-    const double x5 = q2*x4;
-    const double x6 = x3*(2*q1*q3 - x5);
-    const double x7 = q1*x4;
-    const double x8 = 2*q3;
-    const double x9 = x3*(q2*x8 + x7);
-    const double x10 = x3*(-x0 - x1 + x2);
-    const double x11 = I3*omega3;
-    out[0] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x6 + cy*x9 + cz*x10);
-    out[1] = I1*omega1*x6 + I2*omega2*x9 + x10*x11;
-    out[2] = x11;
-    out[3] = x3*(q1*x8 + x5);
-    out[4] = x3*(2*q2*q3 - x7);
-    out[5] = x10;
-    out[6] = omega1;
-    out[7] = omega2;
-    out[8] = omega3;
+    const double x0 = 2*q0;
+    const double x1 = q1*x0;
+    const double x2 = 2*q2*q3 - x1;
+    const double x3 = q2*x0;
+    const double x4 = 2*q3;
+    const double x5 = q1*x4;
+    const double x6 = x3 + x5;
+    const double x7 = (q0*q0) + (q3*q3);
+    const double x8 = (q1*q1);
+    const double x9 = (q2*q2);
+    const double x10 = x8 + x9;
+    const double x11 = x7 - x8 - x9;
+    const double x12 = q2*x4 + x1;
+    const double x13 = x3 - x5;
+    const double x14 = 1.0/(x10 + x7);
+    const double x15 = x11*x14;
+    const double x16 = -x13*x14;
+    const double x17 = x12*x14;
+    const double x18 = I1*omega1;
+    const double x19 = I2*omega2;
+    const double x20 = I3*omega3;
+    out[0] = atan2(x2, x6);
+    out[1] = atan2(2*sqrt(x10)*sqrt(x7), x11);
+    out[2] = atan2(x12, x13);
+    out[3] = omega1;
+    out[4] = omega2;
+    out[5] = omega3;
+    out[6] = x14*x6;
+    out[7] = x14*x2;
+    out[8] = x15;
+    out[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
+    out[10] = x15*x20 + x16*x18 + x17*x19;
+    out[11] = x20;
+    out[12] = x16;
+    out[13] = x17;
+    out[14] = x15;
+    out[15] = x18;
+    out[16] = x19;
+    out[17] = x20;
     return 0;
 }

@@ -15,7 +15,7 @@
 
 #define rigid_body_NY 7                      /* state size */
 #define rigid_body_NP 9                      /* parameter count */
-#define rigid_body_NOBS 9                    /* observable count */
+#define rigid_body_NOBS 18                    /* observable count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define RIGID_BODY_NY rigid_body_NY
 #define RIGID_BODY_NP rigid_body_NP
@@ -31,7 +31,7 @@ int rigid_body_rhs(double t, const double *y, const double *p, double *dydt);
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int rigid_body_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3). Returns 0. */
+/* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int rigid_body_observables(double t, const double *y, const double *p, double *out);
 
 #endif /* RIGID_BODY_H */

@@ -19,11 +19,11 @@ NAME = "heavy_top"
 FORMULATION = "euler-angles"
 STATE_NAMES = ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot", )
 PARAM_NAMES = ("I1", "I3", "M", "g", "l", )
-OBSERVABLE_NAMES = ("energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3", )
+OBSERVABLE_NAMES = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3", )
 DBL_EPSILON = numpy.finfo(float).eps
 NY = 6
 NP = 5
-NOBS = 9
+NOBS = 18
 
 
 def rhs(t, y, p):
@@ -141,7 +141,7 @@ def jac(t, y, p):
 
 
 def observables(t, y, p):
-    """(energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3), shape (NOBS,) + trailing."""
+    """(alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3), shape (NOBS,) + trailing."""
     y = numpy.asarray(y, dtype=float)
     p = numpy.asarray(p, dtype=float)
     shape = numpy.broadcast_shapes(y.shape[1:], p.shape[1:])
@@ -158,25 +158,36 @@ def observables(t, y, p):
     l = p[4]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = numpy.cos(beta)
-        x1 = alpha_d*x0 + gamma_d
+        x0 = numpy.sin(gamma)
+        x1 = numpy.sin(beta)
         x2 = numpy.cos(gamma)
-        x3 = numpy.sin(gamma)
-        x4 = numpy.sin(beta)
-        x5 = alpha_d*x4
-        x6 = beta_d*x2 + x3*x5
-        x7 = (1/2)*I1
-        x8 = beta_d*x3 - x2*x5
-        x9 = I3*x1
-        x10 = I1*x4
-        out = numpy.empty((9,) + shape)
-        out[0] = (1/2)*I3*(x1*x1) + M*g*l*x0 + (x6*x6)*x7 + x7*(x8*x8)
-        out[1] = x0*x9 - x10*x2*x8 + x10*x3*x6
-        out[2] = x9
-        out[3] = x4*numpy.cos(alpha)
-        out[4] = x4*numpy.sin(alpha)
-        out[5] = x0
-        out[6] = x8
-        out[7] = x6
-        out[8] = x1
+        x3 = x1*x2
+        x4 = -alpha_d*x3 + beta_d*x0
+        x5 = x0*x1
+        x6 = alpha_d*x5 + beta_d*x2
+        x7 = numpy.cos(beta)
+        x8 = alpha_d*x7 + gamma_d
+        x9 = (1/2)*I1
+        x10 = I3*x8
+        x11 = I1*x6
+        x12 = I1*x4
+        out = numpy.empty((18,) + shape)
+        out[0] = alpha
+        out[1] = beta
+        out[2] = gamma
+        out[3] = x4
+        out[4] = x6
+        out[5] = x8
+        out[6] = x1*numpy.cos(alpha)
+        out[7] = x1*numpy.sin(alpha)
+        out[8] = x7
+        out[9] = (1/2)*I3*(x8*x8) + M*g*l*x7 + (x4*x4)*x9 + (x6*x6)*x9
+        out[10] = x10*x7 + x11*x5 - x12*x3
+        out[11] = x10
+        out[12] = -x3
+        out[13] = x5
+        out[14] = x7
+        out[15] = x12
+        out[16] = x11
+        out[17] = x10
     return out

@@ -19,11 +19,11 @@ NAME = "heavy_top_reduced"
 FORMULATION = "reduced"
 STATE_NAMES = ("alpha", "beta", "gamma", "beta_dot", )
 PARAM_NAMES = ("I1", "I3", "M", "g", "l", "p_alpha", "p_gamma", )
-OBSERVABLE_NAMES = ("energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3", "alpha_dot", "gamma_dot", )
+OBSERVABLE_NAMES = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3", )
 DBL_EPSILON = numpy.finfo(float).eps
 NY = 4
 NP = 7
-NOBS = 11
+NOBS = 18
 
 
 def rhs(t, y, p):
@@ -117,7 +117,7 @@ def jac(t, y, p):
 
 
 def observables(t, y, p):
-    """(energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3, alpha_dot, gamma_dot), shape (NOBS,) + trailing."""
+    """(alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3), shape (NOBS,) + trailing."""
     y = numpy.asarray(y, dtype=float)
     p = numpy.asarray(p, dtype=float)
     shape = numpy.broadcast_shapes(y.shape[1:], p.shape[1:])
@@ -134,34 +134,44 @@ def observables(t, y, p):
     p_gamma = p[6]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = numpy.cos(beta)
-        x1 = I1**(-1.0)
-        x2 = (1/2)*(p_gamma*p_gamma)
-        x3 = I3**(-1.0)
-        x4 = p_alpha + p_gamma
-        x5 = (x4*x4)
-        x6 = (1/2)*beta
-        x7 = 1.0/(numpy.cos(x6)*numpy.cos(x6))
-        x8 = (1/8)*x1
-        x9 = p_alpha - p_gamma
-        x10 = (x9*x9)
-        x11 = 1.0/(numpy.sin(x6)*numpy.sin(x6))
-        x12 = numpy.sin(beta)
-        x13 = numpy.sin(gamma)
-        x14 = numpy.cos(gamma)
-        x15 = (1/4)*x1
-        x16 = numpy.where(numpy.equal(x4, 0), 0, x15*x4*x7) + numpy.where(numpy.equal(x9, 0), 0, x11*x15*x9)
-        x17 = x12*x16
-        out = numpy.empty((11,) + shape)
-        out[0] = (1/2)*I1*(beta_d*beta_d) + M*g*l*x0 - x1*x2 + x2*x3 + numpy.where(numpy.equal(x10, 0), 0, x10*x11*x8) + numpy.where(numpy.equal(x5, 0), 0, x5*x7*x8)
-        out[1] = p_alpha
-        out[2] = p_gamma
-        out[3] = x12*numpy.cos(alpha)
-        out[4] = x12*numpy.sin(alpha)
-        out[5] = x0
-        out[6] = beta_d*x13 - x14*x17
-        out[7] = beta_d*x14 + x13*x17
-        out[8] = p_gamma*x3
-        out[9] = x16
-        out[10] = p_gamma*x3 - x0*x16
+        x0 = numpy.sin(gamma)
+        x1 = p_alpha + p_gamma
+        x2 = (1/2)*beta
+        x3 = 1.0/(numpy.cos(x2)*numpy.cos(x2))
+        x4 = I1**(-1.0)
+        x5 = (1/4)*x4
+        x6 = p_alpha - p_gamma
+        x7 = 1.0/(numpy.sin(x2)*numpy.sin(x2))
+        x8 = numpy.where(numpy.equal(x1, 0), 0, x1*x3*x5) + numpy.where(numpy.equal(x6, 0), 0, x5*x6*x7)
+        x9 = numpy.sin(beta)
+        x10 = numpy.cos(gamma)
+        x11 = x10*x9
+        x12 = beta_d*x0 - x11*x8
+        x13 = x0*x9
+        x14 = beta_d*x10 + x13*x8
+        x15 = I3**(-1.0)
+        x16 = numpy.cos(beta)
+        x17 = (1/2)*(p_gamma*p_gamma)
+        x18 = (x1*x1)
+        x19 = (1/8)*x4
+        x20 = (x6*x6)
+        out = numpy.empty((18,) + shape)
+        out[0] = alpha
+        out[1] = beta
+        out[2] = gamma
+        out[3] = x12
+        out[4] = x14
+        out[5] = p_gamma*x15
+        out[6] = x9*numpy.cos(alpha)
+        out[7] = x9*numpy.sin(alpha)
+        out[8] = x16
+        out[9] = (1/2)*I1*(beta_d*beta_d) + M*g*l*x16 + x15*x17 - x17*x4 + numpy.where(numpy.equal(x18, 0), 0, x18*x19*x3) + numpy.where(numpy.equal(x20, 0), 0, x19*x20*x7)
+        out[10] = p_alpha
+        out[11] = p_gamma
+        out[12] = -x11
+        out[13] = x13
+        out[14] = x16
+        out[15] = I1*x12
+        out[16] = I1*x14
+        out[17] = p_gamma
     return out

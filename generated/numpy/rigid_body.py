@@ -19,11 +19,11 @@ NAME = "rigid_body"
 FORMULATION = "quaternion"
 STATE_NAMES = ("q0", "q1", "q2", "q3", "omega1", "omega2", "omega3", )
 PARAM_NAMES = ("I1", "I2", "I3", "M", "g", "cx", "cy", "cz", "c", )
-OBSERVABLE_NAMES = ("energy", "p_alpha", "p_gamma", "axis_x", "axis_y", "axis_z", "omega1", "omega2", "omega3", )
+OBSERVABLE_NAMES = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3", )
 DBL_EPSILON = numpy.finfo(float).eps
 NY = 7
 NP = 9
-NOBS = 9
+NOBS = 18
 
 
 def rhs(t, y, p):
@@ -216,7 +216,7 @@ def jac(t, y, p):
 
 
 def observables(t, y, p):
-    """(energy, p_alpha, p_gamma, axis_x, axis_y, axis_z, omega1, omega2, omega3), shape (NOBS,) + trailing."""
+    """(alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3), shape (NOBS,) + trailing."""
     y = numpy.asarray(y, dtype=float)
     p = numpy.asarray(p, dtype=float)
     shape = numpy.broadcast_shapes(y.shape[1:], p.shape[1:])
@@ -237,26 +237,44 @@ def observables(t, y, p):
     cz = p[7]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = (q1*q1)
-        x1 = (q2*q2)
-        x2 = (q0*q0) + (q3*q3)
-        x3 = (x0 + x1 + x2)**(-1.0)
-        x4 = 2*q0
-        x5 = q2*x4
-        x6 = x3*(2*q1*q3 - x5)
-        x7 = q1*x4
-        x8 = 2*q3
-        x9 = x3*(q2*x8 + x7)
-        x10 = x3*(-x0 - x1 + x2)
-        x11 = I3*omega3
-        out = numpy.empty((9,) + shape)
-        out[0] = (1/2)*I1*(omega1*omega1) + (1/2)*I2*(omega2*omega2) + (1/2)*I3*(omega3*omega3) + M*g*(cx*x6 + cy*x9 + cz*x10)
-        out[1] = I1*omega1*x6 + I2*omega2*x9 + x10*x11
-        out[2] = x11
-        out[3] = x3*(q1*x8 + x5)
-        out[4] = x3*(2*q2*q3 - x7)
-        out[5] = x10
-        out[6] = omega1
-        out[7] = omega2
-        out[8] = omega3
+        x0 = 2*q0
+        x1 = q1*x0
+        x2 = 2*q2*q3 - x1
+        x3 = q2*x0
+        x4 = 2*q3
+        x5 = q1*x4
+        x6 = x3 + x5
+        x7 = (q0*q0) + (q3*q3)
+        x8 = (q1*q1)
+        x9 = (q2*q2)
+        x10 = x8 + x9
+        x11 = x7 - x8 - x9
+        x12 = q2*x4 + x1
+        x13 = x3 - x5
+        x14 = (x10 + x7)**(-1.0)
+        x15 = x11*x14
+        x16 = -x13*x14
+        x17 = x12*x14
+        x18 = I1*omega1
+        x19 = I2*omega2
+        x20 = I3*omega3
+        out = numpy.empty((18,) + shape)
+        out[0] = numpy.arctan2(x2, x6)
+        out[1] = numpy.arctan2(2*numpy.sqrt(x10)*numpy.sqrt(x7), x11)
+        out[2] = numpy.arctan2(x12, x13)
+        out[3] = omega1
+        out[4] = omega2
+        out[5] = omega3
+        out[6] = x14*x6
+        out[7] = x14*x2
+        out[8] = x15
+        out[9] = (1/2)*I1*(omega1*omega1) + (1/2)*I2*(omega2*omega2) + (1/2)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15)
+        out[10] = x15*x20 + x16*x18 + x17*x19
+        out[11] = x20
+        out[12] = x16
+        out[13] = x17
+        out[14] = x15
+        out[15] = x18
+        out[16] = x19
+        out[17] = x20
     return out
