@@ -2,24 +2,42 @@
 
 Builds live in a cache outside the source tree (``$DERIVE_CACHE``, default ``~/.cache/derive``)
 keyed by the SHA-256 of the sources, the compiler (its command and ``--version``) and the flags,
-so an unchanged model is compiled once per machine. Each build happens in a private temporary
-directory and is moved into place with ``os.replace``: concurrent processes (parallel pytest
-workers) may both compile, but neither ever loads a half-written library.
+so an unchanged model is compiled once per machine. Each build happens in a private hidden
+folder (``.build-<name>-XXXXXXXX``) and is moved into place with ``os.replace``: concurrent
+processes (parallel pytest workers) may both compile, but neither ever loads a half-written
+library.
+
+The cache heals itself:
+* every library ``<name>-<key>.so`` has a sidecar ``<name>-<key>.so.sha256`` (``sha256sum``
+  format) with the SHA-256 of its bytes, written before the library is moved into place; a
+  library is verified against it before it is loaded, and one that is missing its sidecar, does
+  not match it or fails to load is rebuilt once, with a one-line note on stderr;
+* a cache that cannot be written (read-only ``$DERIVE_CACHE``, unwritable ``HOME``) is replaced
+  for the rest of the process by a private temporary folder, with a one-line warning;
+* build folders left by a compile that was killed are removed once older than
+  :data:`STALE_BUILD_SECONDS`.
+``derive cache`` lists the cache (:func:`cache_entries`); ``derive cache --clear`` empties it
+(:func:`clear_cache`), removing only what this module puts there.
 
 No ``-ffast-math``: the solvers rely on IEEE semantics (non-finite checks, compensated
 summation). ``-std=c99`` also keeps GCC from contracting ``a*b + c`` into FMAs.
 """
 from __future__ import annotations
 
+import atexit
 import ctypes
 import functools
 import hashlib
 import os
+import re
 import shlex
 import shutil
 import subprocess
+import sys
 import tempfile
 import threading
+import time
+from dataclasses import dataclass
 from pathlib import Path
 
 from .errors import CompilerError
@@ -32,15 +50,42 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
                                    "-fsanitize=address,undefined",
                                    "-fno-sanitize-recover=undefined")
 STDERR_LINES = 20
+STALE_BUILD_SECONDS = 600  # a build folder this old belongs to a compile that was killed
+CHECKSUM = ".sha256"       # sidecar suffix: <library>.so.sha256
+BUILD_PREFIX = ".build-"
+# What this module puts in the cache (and so what --clear may remove): libraries, their
+# checksums, build folders (also the older ".<name>-XXXXXXXX" form) and sidecar temporaries.
+_LIBRARY = re.compile(r"[A-Za-z_]\w*-[0-9a-f]{24}\.so(\.sha256)?")
+_BUILD = re.compile(r"\.(build-)?[A-Za-z_]\w*-[a-z0-9_]{8}")
 
 _loaded: dict[str, ctypes.CDLL] = {}
 _lock = threading.Lock()
+_fallback: Path | None = None  # the private cache of this process, once the real one failed
 
 
 def cache_dir() -> Path:
     """Where compiled libraries are kept: ``$DERIVE_CACHE`` or ``~/.cache/derive``."""
     env = os.environ.get("DERIVE_CACHE")
     return Path(env).expanduser() if env else Path.home() / ".cache" / "derive"
+
+
+def _note(line: str) -> None:
+    print(line, file=sys.stderr, flush=True)
+
+
+def _why(exc: OSError) -> str:
+    return exc.strerror or str(exc)
+
+
+def _private_cache(root: Path, exc: OSError) -> Path:
+    """The process's fallback cache (created on first use, removed at exit), with a warning."""
+    global _fallback
+    if _fallback is None:
+        _fallback = Path(tempfile.mkdtemp(prefix="derive-cache-"))
+        atexit.register(shutil.rmtree, _fallback, True)
+        _note(f"warning: compile cache {root} is not writable ({_why(exc)}); "
+              f"using {_fallback} for this run (set DERIVE_CACHE to a writable folder)")
+    return _fallback
 
 
 def compiler() -> list[str]:
@@ -117,22 +162,168 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
     key = _key(sources, mains, cmd, flags)
     with _lock:
         lib = _loaded.get(key)
-        if lib is not None:
-            return lib
-        root = cache_dir()
-        target = root / f"{name}-{key[:24]}.so"
-        if not target.exists():
-            root.mkdir(parents=True, exist_ok=True)
-            with tempfile.TemporaryDirectory(prefix=f".{name}-", dir=root) as tmp:
-                work = Path(tmp)
-                _write_sources(work, sources)
-                out = work / target.name
-                _run([*cmd, *flags, "-shared", "-o", str(out), *mains, "-lm"], work,
-                     f"compiling {name}")
-                os.replace(out, target)  # atomic: a reader sees no library or the whole one
-        lib = ctypes.CDLL(str(target))
-        _loaded[key] = lib
+        if lib is None:
+            lib = _load_or_build(f"{name}-{key[:24]}.so", name, sources, mains, cmd, flags)
+            _loaded[key] = lib
         return lib
+
+
+def _sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def _problem(target: Path) -> str | None:
+    """Why the cached library ``target`` cannot be trusted, or None if it matches its checksum."""
+    side = target.with_name(target.name + CHECKSUM)
+    try:
+        expected = side.read_text().split()[0]
+    except FileNotFoundError:
+        return "has no checksum"
+    except (OSError, UnicodeDecodeError, IndexError):
+        return "has an unreadable checksum"
+    try:
+        actual = _sha256(target)
+    except OSError as exc:
+        return f"cannot be read ({_why(exc)})"
+    return None if actual == expected else "does not match its checksum (corrupt or truncated)"
+
+
+def _load(target: Path) -> tuple[ctypes.CDLL | None, str | None]:
+    """(library, None) if ``target`` verifies and loads; (None, why not) otherwise."""
+    problem = _problem(target)
+    if problem is None:
+        try:
+            return ctypes.CDLL(str(target)), None
+        except OSError as exc:
+            problem = f"cannot be loaded ({str(exc).splitlines()[0] if str(exc) else exc})"
+    return None, problem
+
+
+def _load_or_build(fname: str, name: str, sources: dict[str, str], mains: list[str],
+                   cmd: list[str], flags: list[str]) -> ctypes.CDLL:
+    """Load the cached library ``fname`` if it verifies, else build it (once) and load that."""
+    roots = [cache_dir()] + ([_fallback] if _fallback is not None else [])
+    for root in roots:
+        target = root / fname
+        if target.exists():
+            lib, problem = _load(target)
+            if lib is not None:
+                return lib
+            _note(f"note: cached library {target} {problem}; rebuilding it")
+    target = _build(fname, name, sources, mains, cmd, flags)
+    lib, problem = _load(target)
+    if lib is None:
+        raise CompilerError(f"the library just built for {name} ({target}) {problem}")
+    return lib
+
+
+def _build(fname: str, name: str, sources: dict[str, str], mains: list[str], cmd: list[str],
+           flags: list[str]) -> Path:
+    """Compile into a hidden build folder of the cache and move the checksum, then the library,
+    into place; an unwritable cache moves the build to the process's private cache."""
+    root = _fallback or cache_dir()
+    while True:
+        try:
+            root.mkdir(parents=True, exist_ok=True)
+            remove_stale_builds(root)
+            work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
+            break
+        except OSError as exc:
+            if root == _fallback:
+                raise CompilerError(f"cannot create a build folder in {root} ({_why(exc)})") from None
+            root = _private_cache(root, exc)
+    try:
+        _write_sources(work, sources)
+        out = work / fname
+        _run([*cmd, *flags, "-shared", "-o", str(out), *mains, "-lm"], work, f"compiling {name}")
+        side = work / (fname + CHECKSUM)
+        side.write_text(f"{_sha256(out)}  {fname}\n")
+        target = root / fname
+        os.replace(side, target.with_name(fname + CHECKSUM))
+        os.replace(out, target)  # atomic: a reader sees no library or the whole one
+        return target
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def remove_stale_builds(root: Path, age: float = STALE_BUILD_SECONDS) -> int:
+    """Remove build folders in ``root`` older than ``age`` seconds (left by killed compiles);
+    returns how many were removed."""
+    removed = 0
+    now = time.time()
+    try:
+        entries = list(os.scandir(root))
+    except OSError:
+        return 0
+    for e in entries:
+        try:
+            if _BUILD.fullmatch(e.name) and e.is_dir(follow_symlinks=False) \
+                    and now - e.stat(follow_symlinks=False).st_mtime > age:
+                shutil.rmtree(e.path, ignore_errors=True)
+                removed += 1
+        except OSError:
+            pass
+    return removed
+
+
+@dataclass(frozen=True)
+class CacheEntry:
+    """One file or build folder in the cache, as ``derive cache`` lists it."""
+
+    name: str
+    size: int     # bytes (a folder: the sum of its files)
+    status: str   # libraries: "ok" or why not; checksums: "checksum"; folders: "build folder"
+
+
+def _ours(name: str) -> bool:
+    return bool(_LIBRARY.fullmatch(name) or _BUILD.fullmatch(name))
+
+
+def _size(path: str) -> int:
+    if os.path.isdir(path) and not os.path.islink(path):
+        return sum(_size(os.path.join(path, n)) for n in os.listdir(path))
+    return os.lstat(path).st_size
+
+
+def cache_entries(root: Path | None = None) -> list[CacheEntry]:
+    """What the cache holds (only what this module puts there), sorted by name. Raises OSError
+    if the cache folder exists but cannot be listed."""
+    root = cache_dir() if root is None else root
+    if not root.exists():
+        return []
+    out = []
+    for name in sorted(os.listdir(root)):
+        if not _ours(name):
+            continue
+        path = root / name
+        try:
+            size = _size(str(path))
+        except OSError:
+            size = 0
+        if name.endswith(CHECKSUM):
+            status = "checksum"
+        elif name.endswith(".so"):
+            status = _problem(path) or "ok"
+        else:
+            status = "build folder"
+        out.append(CacheEntry(name, size, status))
+    return out
+
+
+def clear_cache(root: Path | None = None) -> tuple[int, int]:
+    """Remove every library, checksum and build folder from the cache; leaves anything else
+    (``DERIVE_CACHE`` may point at a folder holding other files). Returns (entries, bytes)."""
+    root = cache_dir() if root is None else root
+    count = size = 0
+    for e in cache_entries(root):
+        path = root / e.name
+        if path.is_dir() and not path.is_symlink():
+            shutil.rmtree(path)
+        else:
+            path.unlink()
+        count += 1
+        size += e.size
+    return count, size
 
 
 def check_compiles(sources: dict[str, str], main: str | list[str],

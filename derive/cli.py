@@ -1,18 +1,24 @@
 """The `derive` command line (also `python -m derive`).
 
 Exit status: 0 success; 1 `generate --check` found stale files or `verify` found an unexpected
-verdict; 2 bad input (one line on stderr: ``error: <file>: <key or table>: <what is wrong>``);
-3 numerical failure (one line saying where); 4 no working C compiler.
+verdict (or, never expected, an internal error: ``error: internal error: <type>: <message>``);
+2 bad input (one line on stderr: ``error: <file>: <key or table>: <what is wrong>``, also for an
+output path that cannot be written); 3 numerical failure (one line saying where); 4 no working C
+compiler; 130 interrupted (Ctrl-C: ``error: interrupted``). Never a traceback. Warnings (NumPy's
+RuntimeWarnings among them) are not shown: a numerical failure is the one exit-3 line.
 """
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+import warnings
 from pathlib import Path
 
 from .errors import CompilerError, IntegrationError, SceneError
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
+EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
 
 
 def _cmd_generate(args) -> int:
@@ -56,8 +62,10 @@ def _cmd_simulate(args) -> int:
     import json
     import time
 
+    from .outputs import check_paths
     from .simulation import simulate, write_outputs
 
+    check_paths([args.output, args.plot])  # before the work: a bad path is known in advance
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
     start = time.perf_counter()
     res = simulate(args.scene, **overrides)
@@ -120,6 +128,36 @@ class _Parser(argparse.ArgumentParser):
         self.exit(EXIT_INPUT, f"error: {self.prog}: {message}\n")
 
 
+def _cmd_cache(args) -> int:
+    from . import cbuild
+
+    root = cbuild.cache_dir()
+    try:
+        if args.clear:
+            count, size = cbuild.clear_cache(root)
+            print(f"removed {count} entries ({_bytes(size)}) from {root}")
+            return EXIT_OK
+        entries = cbuild.cache_entries(root)
+    except OSError as exc:
+        raise SceneError(f"{root}: cache: {exc.strerror or exc}") from None
+    where = "DERIVE_CACHE" if os.environ.get("DERIVE_CACHE") else "default; DERIVE_CACHE moves it"
+    print(f"compile cache: {root} ({where})")
+    width = max((len(e.name) for e in entries), default=0)
+    for e in entries:
+        print(f"  {e.name:<{width}}  {_bytes(e.size):>9}  {e.status}")
+    libs = sum(e.name.endswith(".so") for e in entries)
+    print(f"{libs} libraries, {_bytes(sum(e.size for e in entries))}" if entries else "empty")
+    return EXIT_OK
+
+
+def _bytes(n: int) -> str:
+    for unit in ("B", "kB", "MB"):
+        if n < 1000 or unit == "MB":
+            return f"{n:.0f} {unit}" if unit == "B" else f"{n:.1f} {unit}"
+        n /= 1000
+    return f"{n:.1f} GB"
+
+
 def parser() -> argparse.ArgumentParser:
     from .scene import FORMULATIONS, METHODS
 
@@ -170,10 +208,48 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("-o", "--out", default="bench-out", help="output directory")
     b.add_argument("--quick", action="store_true", help="fewer tolerances and repeats")
     b.set_defaults(func=_cmd_bench)
+
+    c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
+    c.add_argument("--clear", action="store_true", help="remove every cached library")
+    c.set_defaults(func=_cmd_cache)
     return p
 
 
 def main(argv=None) -> int:
+    """Run the command line; returns the exit status. Every failure is one ``error:`` line on
+    stderr: warnings are silenced, Ctrl-C is exit 130, anything unforeseen exit 1."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return _main(argv)
+    except KeyboardInterrupt:
+        return _fail("interrupted", EXIT_INTERRUPTED)
+    except BrokenPipeError:  # e.g. `derive verify | head`: the reader left; stop quietly
+        try:
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        except (OSError, ValueError, AttributeError):
+            pass
+        return EXIT_INTERNAL
+    except MemoryError:
+        return _fail("out of memory", EXIT_NUMERIC)
+    except Exception as exc:  # last resort: a bug, but never a traceback
+        return _fail(f"internal error: {type(exc).__name__}: {_one_line(exc)}", EXIT_INTERNAL)
+
+
+def _one_line(exc: BaseException) -> str:
+    text = " ".join(str(exc).split())
+    return text if len(text) <= 300 else text[:297] + "..."
+
+
+def _fail(message: str, code: int) -> int:
+    try:
+        print(f"error: {message}", file=sys.stderr, flush=True)
+    except (OSError, ValueError):
+        pass
+    return code
+
+
+def _main(argv) -> int:
     p = parser()
     try:
         args = p.parse_args(argv)
@@ -182,11 +258,9 @@ def main(argv=None) -> int:
     try:
         return args.func(args)
     except SceneError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return EXIT_INPUT
+        return _fail(_one_line(exc), EXIT_INPUT)
     except IntegrationError as exc:
-        print(f"error: {exc}", file=sys.stderr)
-        return EXIT_NUMERIC
+        return _fail(_one_line(exc), EXIT_NUMERIC)
     except CompilerError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_COMPILER
