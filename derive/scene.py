@@ -50,6 +50,7 @@ import math
 import numbers
 import os
 import re
+import stat
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -318,13 +319,22 @@ def load_scene(scene, /, **overrides) -> Scene:
     return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
 
 
+MAX_SCENE_BYTES = 1 << 20  # a scene is a few hundred bytes; refuse to slurp a huge file
+_BOMS = {b"\xef\xbb\xbf": None, b"\xff\xfe": "UTF-16", b"\xfe\xff": "UTF-16",
+         b"\xff\xfe\x00\x00": "UTF-32", b"\x00\x00\xfe\xff": "UTF-32"}
+
+
 def _read_toml(source: str) -> dict:
+    """Parse a scene file: UTF-8 (a byte-order mark is skipped), a regular file of at most
+    MAX_SCENE_BYTES (not a FIFO or a device, which could block or never end)."""
     def fail(what):
         return SceneError(_line(source, "file", what))
 
     try:
         with open(source, "rb") as f:
-            return tomllib.load(f)
+            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+                raise fail("not a regular file")
+            raw = f.read(MAX_SCENE_BYTES + 1)
     except FileNotFoundError as err:
         raise fail("not found") from err
     except IsADirectoryError as err:
@@ -333,8 +343,20 @@ def _read_toml(source: str) -> dict:
         raise fail("permission denied") from err
     except OSError as err:
         raise fail(f"cannot read ({err.strerror or err})") from err
+    if len(raw) > MAX_SCENE_BYTES:
+        raise fail(f"larger than {MAX_SCENE_BYTES // 1024} KiB: not a scene file")
+    for bom in sorted(_BOMS, key=len, reverse=True):
+        if raw.startswith(bom):
+            if _BOMS[bom]:
+                raise fail(f"is {_BOMS[bom]} text; scene files are UTF-8")
+            raw = raw[len(bom):]
+            break
+    try:
+        return tomllib.loads(raw.decode("utf-8"))
     except UnicodeDecodeError as err:
         raise fail(f"not UTF-8 text (bad byte at offset {err.start})") from err
+    except RecursionError as err:
+        raise fail("invalid TOML: nested too deeply") from err
     except tomllib.TOMLDecodeError as err:
         # tomllib (3.11) puts the position at the end of its message: "... (at line 3, column 7)".
         match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
