@@ -1,0 +1,93 @@
+"""The few places where `derive bench` reaches below the public API, kept in one module.
+
+Everything else in the bench goes through ``derive.simulate``, ``derive.simulate_batch``, the
+command line (``python -m derive simulate``) and the committed ``generated/`` artefacts, so it
+keeps working while the pipeline behind them changes. What needs more lives here, each piece
+small, and each caller degrades to "unavailable (<why>)" in the report if one breaks:
+
+* :func:`kernel_case` — the compiled kernel of a scene with its initial state and parameters,
+  to time the C solve alone (the "solve" part of a `simulate` call) and the raw C batch loop;
+* :func:`heavy_top_expressions` — the SymPy right-hand side of the heavy top, for the
+  ``sympy.lambdify`` comparison;
+* :data:`PHASES_SCRIPT` — a fresh process that times derivation, code generation and
+  compilation of one scene's model separately.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass
+class KernelCase:
+    kernel: object          # derive.integrate.Kernel
+    formulation: str
+    y0: np.ndarray
+    p: np.ndarray
+    t: np.ndarray
+    rtol: float
+    atol: float
+
+    def solve(self, method: str = "dop853"):
+        """The C solve alone: states at the output times."""
+        return self.kernel.solve(method, self.y0, self.p, self.t, rtol=self.rtol, atol=self.atol)
+
+
+def kernel_case(scene, formulation: str | None = None, **overrides) -> KernelCase:
+    """The kernel `simulate` would run for ``scene`` (path or dict), with its inputs."""
+    from . import simulation as sim
+    from .scene import load_scene
+
+    sc = load_scene(scene, **overrides)
+    form = formulation or sim.choose_formulation(sc)
+    key = (form, sc.symmetric, sim.effect_names(sc))
+    model = sim.model_for(*key)
+    return KernelCase(sim.kernel_for(*key), form, sim._initial_state(sc, model), sim._params(sc, model),
+                      sc.t_out, sc.simulate.rtol, sc.simulate.atol)
+
+
+def batch_inputs(scenes, formulation: str):
+    """(kernel, y0s, ps, t, rtol, atol) of a list of scenes in one formulation: what
+    ``Kernel.solve_batch`` takes, i.e. the raw C batch loop."""
+    cases = [kernel_case(s, formulation) for s in scenes]
+    c = cases[0]
+    return (c.kernel, np.array([k.y0 for k in cases]), np.array([k.p for k in cases]), c.t, c.rtol, c.atol)
+
+
+def heavy_top_expressions():
+    """(states, params, rhs) of the contract's heavy top (generated/c/heavy_top.c) as SymPy."""
+    from . import models
+
+    m = models.CATALOGUE["heavy_top"]()
+    return tuple(m.states), tuple(m.params), tuple(m.rhs)
+
+
+#: Run in a fresh interpreter: ``python -c PHASES_SCRIPT <scene file or JSON> <json overrides>``; prints one
+#: JSON line of seconds per phase (None where a phase could not be isolated).
+PHASES_SCRIPT = r"""
+import json, sys, time
+t0 = time.perf_counter()
+import derive
+t1 = time.perf_counter()
+path, over = sys.argv[1], json.loads(sys.argv[2])
+path = json.loads(path) if path.startswith("{") else path  # a scene as a dict, or a file
+out = {"import": t1 - t0, "derivation": None, "codegen": None, "compilation": None}
+try:
+    from derive import simulation as sim
+    from derive.scene import load_scene
+    sc = load_scene(path, **over)
+    key = (sim.choose_formulation(sc), sc.symmetric, sim.effect_names(sc))
+    a = time.perf_counter(); sim.model_for(*key)
+    b = time.perf_counter(); sim.sources_for(*key)
+    c = time.perf_counter(); sim.kernel_for(*key)
+    d = time.perf_counter()
+    out.update(derivation=b - a, codegen=c - b, compilation=d - c)
+except Exception as exc:  # internals moved: the totals below still hold
+    out["phases_error"] = f"{type(exc).__name__}: {exc}"
+e = time.perf_counter(); derive.simulate(path, **over)
+f = time.perf_counter(); derive.simulate(path, **over)
+g = time.perf_counter()
+out.update(first_simulate=f - e, second_simulate=g - f, first_call_total=f - t1)
+print(json.dumps(out))
+"""

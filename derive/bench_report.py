@@ -1,0 +1,247 @@
+"""`derive bench`'s report: the results of `derive.bench` as Markdown (``report.md``)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from . import bench as B
+from . import bench_targets as T
+
+FAMILY_NAMES = {"scipy": "SciPy (plain-Python rhs)", "casadi": "CasADi", "pydy": "PyDy (Cython) + odeint"}
+
+
+def _t(seconds) -> str:
+    """A wall time with a readable unit."""
+    if seconds is None or not np.isfinite(seconds):
+        return "—"
+    if seconds < 1e-3:
+        return f"{seconds * 1e6:.0f} µs"
+    if seconds < 1:
+        return f"{seconds * 1e3:.3g} ms"
+    return f"{seconds:.3g} s"
+
+
+def _e(x) -> str:
+    return "—" if x is None or not np.isfinite(x) else f"{x:.2e}"
+
+
+def _verdict(ok) -> str:
+    return "—" if ok is None else "met" if ok else "**not met**"
+
+
+def _ratio_cell(row: dict) -> str:
+    if row["ratio"] is None:
+        return row["kind"] or "—"
+    prefix = "> " if row["kind"] == ">" else ""
+    star = "\\*" if row["kind"] == "*" else ""
+    return f"{prefix}{row['ratio']:.3g}×{star}"
+
+
+def header(results: dict) -> list[str]:
+    m, cfg = results["machine"], results["settings"]
+    v = m["versions"]
+    load = lambda x: ", ".join(f"{a:.2f}" for a in x) if x else "?"  # noqa: E731
+    peers = ", ".join(f"{k} {v[k]}" if v.get(k) else f"{k} not installed" for k in ("casadi", "pydy", "cython"))
+    L = [f"# derive bench ({cfg['name']})", "",
+         f"Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}; {m['compiler']}. "
+         f"Load average (1, 5, 15 min) at the start {load(m['load_average'])}, at the end "
+         f"{load(m.get('load_average_end'))}. Total bench time {results['elapsed']:.0f} s. "
+         f"derive {v.get('derive', '?')} (commit {m['commit']}); Python {v['python']}, NumPy {v['numpy']}, "
+         f"SciPy {v['scipy']}, SymPy {v['sympy']}; peers: {peers}.", ""]
+    if results["peers_missing"]:
+        L += [f"Not raced (not installed): {', '.join(results['peers_missing'])} — "
+              "`pip install -e '.[peers]'` or `make bench-peers`.", ""]
+    return L
+
+
+def targets_section(results: dict) -> list[str]:
+    t = results["targets"]
+    L = ["## Targets (issue 8), measured side by side in this run", "",
+         "| target | goal | measured | |", "|---|---|---|---|"]
+    for what, goal, value, ok in T.summary(t):
+        cell = "—" if value is None else (f"{value:.3g} s" if "[s]" in what else f"{value:.3g}×")
+        L.append(f"| {what} | {goal} | {cell} | {_verdict(ok)} |")
+    L.append("")
+    for key in ("reference", "fixed_cost", "batch", "processes", "lambdify"):
+        if isinstance(t.get(key), dict) and "error" in t[key]:
+            L += [f"- {key}: not measured ({t[key]['error']})"]
+    L.append("")
+
+    ref = t.get("reference") or {}
+    if "ours" in ref:
+        o, sc = ref["ours"], ref["scene"]
+        i = sc["initial"]
+        L += ["### Reference scene", "",
+              f"Symmetric heavy top I₁ = I₂ = {sc['body']['I1']:g}, I₃ = {sc['body']['I3']:g}, M = g = l = 1; "
+              f"α₀ = {i['alpha']:g}, β₀ = {i['beta']:g}, γ₀ = {i['gamma']:g}, α̇₀ = {i['alpha_dot']:g}, "
+              f"β̇₀ = {i['beta_dot']:g}, γ̇₀ = {i['gamma_dot']:g}; t ∈ [0, {sc['simulate']['t_end']:g}], "
+              f"{sc['simulate']['samples']} samples. Error = max |ê₃ − ê₃,exact|. Ours: `derive.simulate` "
+              f"at rtol {o['rtol']:g} (warm: model and library loaded); each contender's rtol halved from "
+              "1e-10 until its error was no larger than ours (reached = yes), then timed.", "",
+              "| solver | rtol | wall time | error | rhs evaluations | reached our error | contender / derive |",
+              "|---|---|---|---|---|---|---|",
+              f"| **derive** `simulate` ({o['method']}, {o['formulation']}, C) | {o['rtol']:g} | {_t(o['time'])} | "
+              f"{_e(o['error'])} | {o['nfev']:,} | | 1× |"]
+        for r in ref["rows"]:
+            reached = "" if r["reached"] is None else ("yes" if r["reached"] else "**no** (tightest rtol)")
+            L.append(f"| {r['label']} | {r['rtol']:.3g} | {_t(r['time'])} | {_e(r['error'])} | {r['nfev']:,} | "
+                     f"{reached} | {r['ratio']:.3g}× |")
+        L.append("")
+        L += ["Where derive's time goes (reference scene). Derivation, code generation and compilation "
+              "in a fresh process (`import derive` excluded), with an empty compile cache (cold) and "
+              "with the cache of a previous run (warm); per-call overhead = a warm `simulate` call minus "
+              "its C solve alone (`Kernel.solve`: scene → state, parameters, outputs).", "",
+              "| condition | derivation | code generation | compilation / load | first `simulate` | "
+              "first call in all | per-call overhead | solve (C) | warm `simulate` |",
+              "|---|---|---|---|---|---|---|---|---|"]
+        for p in t.get("phases") or []:
+            if "error" in p:
+                L.append(f"| {p['condition']} | failed: {p['error']} ||||||||")
+                continue
+            L.append(f"| {p['condition']} | {_t(p.get('derivation'))} | {_t(p.get('codegen'))} | "
+                     f"{_t(p.get('compilation'))} | {_t(p.get('first_simulate'))} | {_t(p.get('first_call_total'))} | "
+                     f"{_t(o.get('overhead'))} | {_t(o.get('solve'))} | {_t(o['time'])} |")
+        if not t.get("phases"):
+            L.append(f"| in-process, warm | — | — | — | — | — | {_t(o.get('overhead'))} | {_t(o.get('solve'))} | "
+                     f"{_t(o['time'])} |")
+        if any("phases_error" in p for p in t.get("phases") or []):
+            L.append("")
+            L.append("Phases not isolated: " + "; ".join(p["phases_error"] for p in t["phases"] if "phases_error" in p))
+        L.append("")
+
+    fc, ba, pr, la = (t.get(k) or {} for k in ("fixed_cost", "batch", "processes", "lambdify"))
+    L += ["### Fixed costs, batch, processes, NumPy", ""]
+    if "ratio" in fc:
+        L.append(f"- Fixed cost (reference scene, t_end = 1e-3, 2 samples, rtol 1e-10): `derive.simulate` "
+                 f"{_t(fc['ours'])} per call, `solve_ivp` DOP853 (plain-Python rhs) {_t(fc['scipy'])}: "
+                 f"**{fc['ratio']:.3g}×**.")
+    if "time" in ba:
+        raw = (f"; the raw C batch loop (`Kernel.solve_batch` on prepared arrays) {_t(ba['raw'])}: "
+               f"**{ba['vs_raw']:.0%}** of its throughput" if "raw" in ba else f"; raw C loop: {ba.get('raw_error')}")
+        L.append(f"- `simulate_batch` of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}], "
+                 f"{ba['formulation']}): {_t(ba['time'])} ({_t(ba['per_scene'])} per scene){raw}. SciPy DOP853 "
+                 f"plain-Python at rtol {ba['scipy_rtol']:.3g} (the rtol that matched our error on the reference "
+                 f"scene): {_t(ba['scipy_per_trajectory'])} per trajectory (mean of {ba['scipy_n']}): "
+                 f"**{ba['vs_scipy']:.0f}×**.")
+    if "warm" in pr:
+        cold = (f"; cold (fresh `DERIVE_CACHE`) {_t(pr['cold'])}, **{pr['cold_minus_warm']:.2f} s** more than warm"
+                if "cold" in pr else "")
+        L.append(f"- Processes: `python -m derive simulate scenes/looping_top.toml -o out.npz` warm "
+                 f"{_t(pr['warm'])} (median of {len(pr['warm_runs'])}), `python -c \"import numpy\"` "
+                 f"{_t(pr['import_numpy'])}: **{pr['warm_ratio']:.2f}×**{cold}.")
+    if "ratio" in la:
+        L.append(f"- NumPy rhs of the heavy top on N = {la['n']:,} states: generated `heavy_top.rhs` "
+                 f"{la['generated_ns_per_state']:.1f} ns/state, `sympy.lambdify(..., cse=True)` of the same "
+                 f"expressions {la['lambdify_ns_per_state']:.1f} ns/state (its raw list of rows, not stacked): "
+                 f"**{la['ratio']:.2f}×** (max relative difference {la['max_rel_diff']:.1e}).")
+    L.append("")
+    return L
+
+
+def kernel_section(results: dict) -> list[str]:
+    L = ["## Kernel speed", "",
+         "`generated/c/heavy_top.c` (committed, generated) vs `benchmarks/handwritten_heavy_top.c` (the "
+         "textbook equations by hand), each in its own translation unit, called through a pointer by "
+         f"`benchmarks/rhs_loop.c` over 4096 rotating states; {results['c_loop'][0]['calls']:,} calls per timing, "
+         f"{results['c_loop'][0]['repeats']} interleaved repeats, medians. Ratio = median of the per-repeat ratios.",
+         "", "| flags | generated ns/call | hand-written ns/call | no-op ns/call | generated / hand | "
+         f"goal ≤ {B.GOAL_KERNEL_RATIO:g} | max rel. difference |", "|---|---|---|---|---|---|---|"]
+    for r in results["c_loop"]:
+        L.append(f"| `{r['flags']}` | {r['generated_ns']:.2f} | {r['handwritten_ns']:.2f} | {r['noop_ns']:.2f} | "
+                 f"{r['ratio']:.3f} | {_verdict(r['ratio'] <= B.GOAL_KERNEL_RATIO)} | {r['max_rel_diff']:.1e} |")
+    L += ["", "Generated NumPy `rhs(t, y, p)` on a batch of shape (6, N); sin + cos = `np.sin`, `np.cos` of "
+          "one row alone.", "", "| N | ns/state | of which sin + cos |", "|---|---|---|"]
+    for r in results["numpy_batch"]:
+        L.append(f"| {r['n']:,} | {r['ns_per_state']:.1f} | {r['sin_cos_ns_per_state']:.1f} |")
+    pc = results["python_calls"]
+    c_ns = results["c_loop"][-1]["generated_ns"]
+    ct = f"compiled C through ctypes (`Kernel.rhs`) {pc['ctypes_us']:.2f} µs, " if pc.get("ctypes_us") else ""
+    L += ["", f"One state through Python, per call: {ct}the hand-written plain-Python rhs "
+          f"{pc['plain_python_us']:.2f} µs, the generated NumPy rhs {pc['numpy_us']:.2f} µs; the C call itself "
+          f"{c_ns:.0f} ns — why derive's integration loops run in C.", ""]
+    return L
+
+
+def wp_section(results: dict) -> list[str]:
+    cfg = results["settings"]
+    fams = results["families"]
+    L = ["## Work–precision", "",
+         "Error = max over the output times of |ê₃ − ê₃,ref|, ref = the exact solution. **derive**: "
+         "`derive.simulate` (the public call: scene → outputs, per-call overhead included), dop853 over rtol "
+         f"{cfg['rtols'][0]:g} … {cfg['rtols'][-1]:g}, rk4 / gauss4 / gauss6 over h = Δt_out / 2^k, in "
+         + ("every formulation that can run the scene" if cfg["other_formulations"] else "the auto formulation")
+         + ". **SciPy**: `solve_ivp` DOP853, LSODA and Radau (the last two with the analytic Jacobian, also plain "
+         "Python) on the hand-written plain-Python rhs of `benchmarks/scipy_baselines.py` (Euler angles for "
+         "symmetric tops, quaternion + Euler's equations for any body; both where listed, and the best counts). "
+         "**CasADi**: the same equations as SX, `integrator` cvodes (Adams, BDF) and idas on the output grid. "
+         "**PyDy**: the same equations through `generate_ode_function(generator='cython')` + `odeint`. "
+         "Contenders' times are the solve call alone (integrator built, rhs compiled beforehand). "
+         f"atol = {B.ATOL_RATIO:g} · rtol. Median of {cfg['repeats']} runs for derive, {cfg['other_repeats']} for the "
+         f"others; a run over {cfg['long_run']:g} s is timed once and ends its sweep past {cfg['cap']:g} s. Cost "
+         "at an error level: log-log interpolation on each curve (`points.csv` has every run). Ratio = the "
+         "contender's best / derive's best.", "",
+         "\\* = the cheapest run of at least one side was already below the level (its time is an upper bound); "
+         "> = the contender did not reach the level (ratio against its slowest run); n/a = no run reached it.", ""]
+    levels = " | ".join(f"{lv:.0e}" for lv in ERROR_LEVELS)
+    tables = [("ratios", "scipy", "SciPy's best / derive's best (any formulation, any method):"),
+              ("ratios_auto", "scipy", "SciPy's best / derive in the formulation `auto` picks (what "
+                                       "`derive simulate` runs by default):")]
+    tables += [("ratios", f, f"{FAMILY_NAMES[f]}'s best / derive's best:") for f in fams if f != "scipy"]
+    for key, fam, what in tables:
+        L += [what, "", f"| scene | auto formulation | {levels} |", "|" + "---|" * (2 + len(ERROR_LEVELS))]
+        for wp in results["work_precision"]:
+            L.append(f"| {wp['scene']} | {wp['auto']} | " + " | ".join(_ratio_cell(r) for r in wp[key][fam]) + " |")
+        L.append("")
+    L += ["| scene | reference | max difference exact vs derive dop853 rtol 1e-13 | baseline formulations | note |",
+          "|---|---|---|---|---|"]
+    for wp in results["work_precision"]:
+        chk = "—" if wp["reference_check"] is None else f"{wp['reference_check']:.1e}"
+        L.append(f"| {wp['scene']} | {wp['reference']} | {chk} | {', '.join(wp['baseline_formulations'])} | "
+                 f"{wp['reference_note']} |")
+    L.append("")
+    for wp in results["work_precision"]:
+        L += [f"### {wp['scene']} — {wp['title']}", "",
+              f"t ∈ [0, {wp['t_end']:g}] s, {wp['samples']} samples; auto formulation: {wp['auto']}; "
+              f"reference: {wp['reference']}.", "", f"![work-precision {wp['scene']}](wp_{wp['scene']}.png)", "",
+              "| error ≤ | derive best | time | " + " | ".join(f"{FAMILY_NAMES[f]} best | time | ratio" for f in fams) + " |",
+              "|---|---|---|" + "---|---|---|" * len(fams)]
+        for i, lv in enumerate(ERROR_LEVELS):
+            first = wp["ratios"][fams[0]][i]
+            cells = [f"{lv:.0e}", first["ours"] or "—", ("≤ " if first["ours_bound"] else "") + _t(first["ours_time"])]
+            for f in fams:
+                r = wp["ratios"][f][i]
+                cells += [r["other"] or "—", ("≤ " if r["other_bound"] else "") + _t(r["other_time"]), _ratio_cell(r)]
+            L.append("| " + " | ".join(cells) + " |")
+        L.append("")
+    return L
+
+
+ERROR_LEVELS = B.ERROR_LEVELS
+
+
+def drift_section(results: dict) -> list[str]:
+    d = results["drift"]
+    L = ["## Drift of the invariants", "",
+         f"Looping top in the **{d['formulation']}** formulation (energy, p_α and p_γ are all computed from the "
+         f"state, none is built in), t ∈ [0, {d['t_end']:g}] s, through `derive.simulate`; fixed-step methods with "
+         f"h = {d['h']:g} s, dop853 adaptive over the same span. Max over 1001 output times of the relative change.",
+         "", "| method | setting | steps | rhs evaluations | wall time | max ΔE/E₀ | ΔE/E₀ at the end | "
+         "max Δp_α/p_α₀ | max Δp_γ/p_γ₀ | max \\|\\|q\\| − 1\\| |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in d["rows"]:
+        if "error" in r:
+            L.append(f"| {r['method']} | failed: {r['error']} |||||||||")
+            continue
+        steps = "—" if r["steps"] is None else f"{r['steps']:,}"
+        L.append(f"| {r['method']} | {r['setting']} | {steps} | {r['nfev']:,} | {_t(r['time'])} | {r['energy']:.2e} | "
+                 f"{r['energy_end']:+.2e} | {r['p_alpha']:.2e} | {r['p_gamma']:.2e} | {_e(r['qnorm'])} |")
+    L.append("")
+    return L
+
+
+def write_report(results: dict, out: Path) -> str:
+    L = header(results) + targets_section(results) + kernel_section(results) + wp_section(results) \
+        + drift_section(results)
+    text = "\n".join(L)
+    (Path(out) / "report.md").write_text(text)
+    return text

@@ -1,0 +1,348 @@
+"""The targets of issue 8, each a ratio measured side by side in one run of `derive bench`.
+
+* **Reference scene** (:data:`REFERENCE`: symmetric heavy top I₁ = I₂ = 1, I₃ = 0.5,
+  M = g = l = 1; α₀ = 0, β₀ = 0.8, γ₀ = 0, α̇₀ = −0.4, β̇₀ = 0.3, γ̇₀ = 6; t ∈ [0, 10], 1001
+  samples, rtol 1e-10): ``derive.simulate`` against ``solve_ivp(DOP853)`` with the hand-written
+  plain-Python rhs (goal ≥ 100×) and CasADi cvodes-Adams (goal ≥ 10×), each contender's rtol
+  halved from 1e-10 until its error against the exact solution is no larger than ours. Also,
+  labelled as such, SciPy on derive's generated NumPy rhs, and PyDy when installed. Derive's
+  time split into derivation, code generation, compilation (fresh processes, cold and warm
+  cache), per-call overhead and the C solve.
+* **Fixed cost** of one ``derive.simulate`` call (t_end = 1e-3, 2 samples) over ``solve_ivp``'s
+  on the same problem (goal ≤ 0.5×).
+* **Batch**: ``simulate_batch`` over 1000 variants of the reference scene against the raw C
+  batch loop (``Kernel.solve_batch`` on prepared arrays; goal ≥ 70 % of its throughput) and
+  against SciPy per trajectory (goal ≥ 150×).
+* **Processes**: warm ``python -m derive simulate scenes/looping_top.toml -o out.npz`` over
+  ``python -c "import numpy"`` (goal ≤ 3×); a cold one (fresh ``DERIVE_CACHE``) minus a warm
+  one (goal ≤ 1 s).
+* **NumPy batch rhs** at N = 10⁵: the generated ``heavy_top.rhs`` over ``sympy.lambdify(...,
+  cse=True)`` of the same expressions (goal ≤ 1×).
+
+Everything goes through public entry points except what `derive.bench_internals` isolates; a
+part that fails is reported as such, with why, and the rest of the bench goes on.
+"""
+from __future__ import annotations
+
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+import warnings
+
+import numpy as np
+from tqdm import tqdm
+
+from . import bench as B
+from . import bench_contenders as bc
+
+REFERENCE = {
+    "title": "Reference heavy top (issue 8)",
+    "body": {"I1": 1.0, "I3": 0.5},
+    "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
+    "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3, "gamma_dot": 6.0},
+    "simulate": {"t_end": 10.0, "samples": 1001, "rtol": 1e-10, "atol": 1e-12},
+}
+
+GOALS = {
+    "vs_scipy": ("≥", 100.0), "vs_casadi": ("≥", 10.0), "fixed_cost": ("≤", 0.5),
+    "batch_vs_raw": ("≥", 0.70), "batch_vs_scipy": ("≥", 150.0), "warm_process": ("≤", 3.0),
+    "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
+}
+
+
+def met(key: str, value) -> bool | None:
+    if value is None or not np.isfinite(value):
+        return None
+    op, goal = GOALS[key]
+    return value >= goal if op == "≥" else value <= goal
+
+
+def reference_data(t_end: float = 10.0) -> dict:
+    data = {k: (dict(v) if isinstance(v, dict) else v) for k, v in REFERENCE.items()}
+    data["simulate"]["t_end"] = t_end
+    return data
+
+
+def _guard(name: str, fn, *args):
+    """Run one part; a failure becomes {"error": ...} in the report instead of ending the bench."""
+    try:
+        return fn(*args)
+    except Exception as exc:  # noqa: BLE001 - report what broke, keep benchmarking
+        tqdm.write(f"bench target {name}: {type(exc).__name__}: {exc}")
+        return {"error": f"{type(exc).__name__}: {(str(exc).splitlines() or [''])[0][:200]}"}
+
+
+# ---------------------------------------------------------------------------------------------
+# reference scene
+
+
+def _match(solve, target: float, rtol0: float = 1e-10) -> dict:
+    """Halve rtol from ``rtol0`` (down to MIN_RTOL) until ``solve(rtol) -> (axis error, nfev)``
+    is no larger than ``target``. Returns the last try and the list of tries."""
+    tried, r = [], rtol0
+    while True:
+        try:
+            err, nfev = solve(r)
+        except Exception as exc:  # noqa: BLE001 - a failed tolerance: tighter may work, or not
+            err, nfev = math.nan, 0
+            tried.append({"rtol": r, "error": None, "nfev": 0, "failure": str(exc)[:120]})
+        else:
+            tried.append({"rtol": r, "error": err, "nfev": nfev})
+        if (np.isfinite(err) and err <= target) or r <= B.MIN_RTOL:
+            break
+        r = max(B.MIN_RTOL, r / 2)
+    last = tried[-1]
+    return {"rtol": last["rtol"], "error": last["error"], "nfev": last["nfev"], "reached": bool(
+        last["error"] is not None and last["error"] <= target), "tried": tried}
+
+
+def reference_scene(cfg, fams) -> dict:
+    import derive
+
+    data = reference_data(cfg.ref_t_end)
+    rtol = data["simulate"]["rtol"]
+    t = np.linspace(0.0, data["simulate"]["t_end"], data["simulate"]["samples"])
+    ref = B.exact_axis(data, t)
+    derive.simulate(data)  # derive, compile (or load) once: the timing is of a warm call
+    t_ours, res = B.timed(lambda: derive.simulate(data), max(3, cfg.ref_repeats))
+    ours = {"time": t_ours, "error": B.axis_error(res.axis, ref), "nfev": int(res.nfev),
+            "method": res.method, "formulation": res.formulation, "rtol": rtol}
+    try:
+        from . import bench_internals as bi
+
+        kc = bi.kernel_case(data)
+        ours["solve"], _ = B.timed(lambda: kc.solve("dop853"), max(3, cfg.ref_repeats))
+        ours["overhead"] = t_ours - ours["solve"]
+    except Exception as exc:  # noqa: BLE001
+        ours["solve_error"] = f"{type(exc).__name__}: {exc}"
+
+    rows = []
+    prob = bc.problem(data, "euler-angles", "reference")
+    contenders = [("scipy", "scipy-dop853", "`solve_ivp` DOP853, hand-written plain-Python rhs (Euler angles)")]
+    if "casadi" in fams:
+        contenders.append(("casadi", "casadi-cvodes-adams", "CasADi cvodes (Adams), same equations as SX"))
+    if "pydy" in fams:
+        contenders.append(("pydy", "pydy-odeint", "PyDy Cython rhs + `odeint`, same equations"))
+    for fam, method, label in contenders:
+        c = bc.CONTENDERS[fam]
+
+        def solve(r, c=c, method=method):
+            Y, nfev = c.solve(prob, method, r, B.ATOL_RATIO * r, c.setup(prob, method, r, B.ATOL_RATIO * r))
+            return B.axis_error(prob.axis(Y), ref), nfev
+
+        m = _match(solve, ours["error"], rtol)
+        setup = c.setup(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"])
+        m["time"], _ = B.timed(lambda: c.solve(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"], setup),
+                               max(3, cfg.ref_repeats) if fam != "scipy" else max(1, cfg.ref_repeats // 2), 2.0)
+        rows.append({"family": fam, "method": method, "label": label, **m, "ratio": m["time"] / t_ours})
+    # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
+    scipy_rtol = rows[0]["rtol"]
+    t_np, res_np = B.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
+                                                   atol=B.ATOL_RATIO * scipy_rtol), 1)
+    rows.append({"family": "scipy-numpy", "method": "scipy-dop853",
+                 "label": "`solve_ivp` DOP853 on derive's generated NumPy rhs (`method = \"scipy-dop853\"`)",
+                 "rtol": scipy_rtol, "error": B.axis_error(res_np.axis, ref), "nfev": int(res_np.nfev),
+                 "reached": None, "time": t_np, "ratio": t_np / t_ours, "tried": []})
+    return {"scene": data, "ours": ours, "rows": rows,
+            "vs_scipy": rows[0]["ratio"] if rows[0]["reached"] else None,
+            "vs_casadi": next((r["ratio"] for r in rows if r["method"] == "casadi-cvodes-adams" and r["reached"]),
+                              None)}
+
+
+def phases(cfg) -> list[dict]:
+    """Derivation, code generation and compilation of the reference scene's model in fresh
+    processes: an empty ``DERIVE_CACHE`` (cold) and the default cache after a run (warm)."""
+    from . import bench_internals as bi
+
+    data = reference_data(cfg.ref_t_end)
+    rows = []
+    for cond in ("cold", "warm"):
+        env = dict(os.environ)
+        with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
+            if cond == "cold":
+                env["DERIVE_CACHE"] = tmp
+            out = subprocess.run([sys.executable, "-c", bi.PHASES_SCRIPT, json.dumps(data), "{}"],
+                                 capture_output=True, text=True, env=env, cwd=tmp)
+        if out.returncode != 0:
+            rows.append({"condition": cond, "error": (out.stderr.strip().splitlines() or ["?"])[-1]})
+        else:
+            rows.append({"condition": cond, **json.loads(out.stdout.strip().splitlines()[-1])})
+    return rows
+
+
+# ---------------------------------------------------------------------------------------------
+# fixed cost, batch
+
+
+def fixed_cost(cfg) -> dict:
+    import derive
+
+    data = reference_data()
+    data["simulate"].update(t_end=1e-3, samples=2)
+    prob = bc.problem(data, "euler-angles", "fixed cost")
+    setup = bc.scipy_setup(prob, "scipy-dop853")
+    rtol = data["simulate"]["rtol"]
+    derive.simulate(data)
+    t_ours = B.per_call(lambda: derive.simulate(data), cfg.fixed_cost_calls)
+    t_scipy = B.per_call(lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
+                         cfg.fixed_cost_calls)
+    return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy}
+
+
+def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
+    """``n`` variants of the reference scene: β₀ ∈ [0.6, 1.0], α̇₀ ∈ [−0.6, −0.2],
+    β̇₀ ∈ [0.1, 0.5], γ̇₀ ∈ [5, 7] (uniform, fixed seed)."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for _ in range(n):
+        d = reference_data(t_end)
+        d["initial"].update(beta=float(rng.uniform(0.6, 1.0)), alpha_dot=float(rng.uniform(-0.6, -0.2)),
+                            beta_dot=float(rng.uniform(0.1, 0.5)), gamma_dot=float(rng.uniform(5.0, 7.0)))
+        out.append(d)
+    return out
+
+
+def batch(cfg, scipy_rtol: float | None) -> dict:
+    import derive
+
+    scenes = batch_scenes(cfg.batch_n, cfg.batch_t_end)
+    res = derive.simulate_batch(scenes)  # compile once
+    t_batch, res = B.timed(lambda: derive.simulate_batch(scenes), 1 if cfg.batch_n >= 500 else 3)
+    t_batch2, _ = B.timed(lambda: derive.simulate_batch(scenes), 1)
+    t_batch = min(t_batch, t_batch2)
+    out = {"n": len(scenes), "t_end": cfg.batch_t_end, "formulation": res[0].formulation, "time": t_batch,
+           "per_scene": t_batch / len(scenes)}
+    try:
+        from . import bench_internals as bi
+
+        kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
+        run = lambda: kernel.solve_batch("dop853", y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
+        run()
+        t_raw = min(B.timed(run, 1)[0], B.timed(run, 1)[0])
+        out.update(raw=t_raw, vs_raw=t_raw / t_batch)
+    except Exception as exc:  # noqa: BLE001
+        out["raw_error"] = f"{type(exc).__name__}: {exc}"
+    r = scipy_rtol or scenes[0]["simulate"]["rtol"]
+    times = []
+    for d in scenes[:cfg.batch_scipy_n]:
+        prob = bc.problem(d, "euler-angles")
+        setup = bc.scipy_setup(prob, "scipy-dop853")
+        times.append(B.timed(lambda: bc.solve_scipy(prob, "scipy-dop853", r, B.ATOL_RATIO * r, setup), 1)[0])
+    out.update(scipy_rtol=r, scipy_n=len(times), scipy_per_trajectory=statistics.mean(times),
+               vs_scipy=statistics.mean(times) / out["per_scene"])
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# processes
+
+
+def _wall(cmd, env=None, cwd=None) -> float:
+    t0 = time.perf_counter()
+    p = subprocess.run(cmd, capture_output=True, text=True, env=env, cwd=cwd)
+    dt = time.perf_counter() - t0
+    if p.returncode != 0:
+        raise RuntimeError(f"{' '.join(map(str, cmd[:4]))}…: exit {p.returncode}: "
+                           f"{(p.stderr.strip().splitlines() or ['?'])[-1]}")
+    return dt
+
+
+def processes(cfg) -> dict:
+    scene = str(B.SCENES / "looping_top.toml")
+    with tempfile.TemporaryDirectory(prefix="derive-bench-proc-") as tmp:
+        sim_cmd = [sys.executable, "-m", "derive", "simulate", scene, "-o", os.path.join(tmp, "out.npz")]
+        numpy_cmd = [sys.executable, "-c", "import numpy"]
+        _wall(sim_cmd, cwd=tmp)  # warm the cache
+        _wall(numpy_cmd, cwd=tmp)
+        warm, base = [], []
+        for _ in range(cfg.process_repeats):  # interleaved, so a load change hits both alike
+            base.append(_wall(numpy_cmd, cwd=tmp))
+            warm.append(_wall(sim_cmd, cwd=tmp))
+        cold = []
+        for _ in range(cfg.cold_runs):
+            with tempfile.TemporaryDirectory(prefix="derive-bench-cold-") as cache:
+                cold.append(_wall(sim_cmd, env=dict(os.environ, DERIVE_CACHE=cache), cwd=tmp))
+    w, b = statistics.median(warm), statistics.median(base)
+    out = {"import_numpy": b, "warm": w, "warm_ratio": w / b, "warm_runs": warm, "numpy_runs": base}
+    if cold:
+        c = statistics.median(cold)
+        out.update(cold=c, cold_runs=cold, cold_minus_warm=c - w)
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# NumPy rhs vs lambdify
+
+
+def numpy_vs_lambdify(cfg) -> dict:
+    import sympy as sp
+
+    from . import bench_internals as bi
+
+    states, params, rhs = bi.heavy_top_expressions()
+    f = sp.lambdify([states, params], list(rhs), modules="numpy", cse=True)
+    mod = B.generated_numpy()
+    n = cfg.lambdify_n
+    Y = B.random_states(n)
+    P = B.HEAVY_TOP_PARAMS
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        a = np.asarray(mod.rhs(0.0, Y, P))
+        b = np.array([np.broadcast_to(x, (n,)) for x in f(Y, P)])
+        diff = float(np.max(np.abs(a - b)) / np.max(np.abs(a)))
+        reps = max(3, cfg.numpy_repeats)
+        t_gen = min(B.timed(lambda: mod.rhs(0.0, Y, P), reps)[0] for _ in range(2))
+        t_lam = min(B.timed(lambda: f(Y, P), reps)[0] for _ in range(2))
+    return {"n": n, "generated": t_gen, "lambdify": t_lam, "ratio": t_gen / t_lam, "max_rel_diff": diff,
+            "generated_ns_per_state": t_gen / n * 1e9, "lambdify_ns_per_state": t_lam / n * 1e9}
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def run(cfg, fams) -> dict:
+    """All targets; each part guarded (a failure is reported, not raised)."""
+    out = {}
+    with tqdm(total=6, desc="targets", unit="part", file=sys.stderr) as bar:
+        out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
+        bar.update()
+        out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else []
+        bar.update()
+        out["fixed_cost"] = _guard("fixed cost", fixed_cost, cfg)
+        bar.update()
+        scipy_rtol = next((r["rtol"] for r in out["reference"].get("rows", []) if r["family"] == "scipy"), None)
+        out["batch"] = _guard("batch", batch, cfg, scipy_rtol)
+        bar.update()
+        out["processes"] = _guard("processes", processes, cfg) if cfg.process_repeats else {}
+        bar.update()
+        out["lambdify"] = _guard("lambdify", numpy_vs_lambdify, cfg)
+        bar.update()
+    return out
+
+
+def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
+    """(target, goal, measured ratio, met) rows for the report's table."""
+    ref, fc, ba, pr, la = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch", "processes", "lambdify"))
+
+    def g(key):
+        op, goal = GOALS[key]
+        return f"{op} {goal:g}" + ("" if key == "cold_minus_warm" else "×")
+
+    rows = [
+        ("reference scene: `derive.simulate` vs `solve_ivp` DOP853 plain-Python rhs, equal or smaller error",
+         "vs_scipy", ref.get("vs_scipy")),
+        ("reference scene: vs CasADi cvodes (Adams), equal or smaller error", "vs_casadi", ref.get("vs_casadi")),
+        ("fixed cost of one call (t_end = 1e-3, 2 samples): derive / `solve_ivp`", "fixed_cost", fc.get("ratio")),
+        (f"`simulate_batch` ({ba.get('n', '?')} scenes) throughput / raw C batch loop", "batch_vs_raw", ba.get("vs_raw")),
+        ("`simulate_batch` per trajectory vs SciPy per trajectory", "batch_vs_scipy", ba.get("vs_scipy")),
+        ("warm `derive simulate scenes/looping_top.toml -o out.npz` / `python -c \"import numpy\"`", "warm_process",
+         pr.get("warm_ratio")),
+        ("cold compile (fresh `DERIVE_CACHE`) − warm run [s]", "cold_minus_warm", pr.get("cold_minus_warm")),
+        (f"NumPy batch rhs (N = {la.get('n', 0):,}) / `sympy.lambdify(cse=True)`", "numpy_vs_lambdify", la.get("ratio")),
+    ]
+    return [(what, g(key), value, met(key, value)) for what, key, value in rows]
