@@ -95,8 +95,8 @@ def check_paths(paths) -> None:
         seen[real] = name
         try:
             st = target.stat()
-        except FileNotFoundError:
-            st = None
+        except (FileNotFoundError, NotADirectoryError):
+            st = None  # the parent's problem, named below
         except OSError as err:
             raise SceneError(f"{name}: output: {_why(err)}") from None
         if st is not None and stat.S_ISDIR(st.st_mode):
