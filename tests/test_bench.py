@@ -1,12 +1,18 @@
-"""`derive bench` end to end on a tiny budget, and the work–precision bookkeeping it rests on.
+"""`derive bench` end to end on a tiny budget, the honesty of its baselines, and the
+work–precision bookkeeping it rests on.
 
 No timed assertions: the speed targets are reported by the bench, never asserted here."""
+import cmath
 import json
 import math
 
 import numpy as np
+import pytest
 
 from derive import bench
+from derive import bench_contenders as bc
+
+RNG_SEED = 12
 
 
 def _point(time, error):
@@ -31,10 +37,124 @@ def test_cost_at_marks_an_upper_bound_and_an_unreached_level():
     assert bench.cost_at([_point(math.nan, math.nan)], 1.0) == (None, False)
 
 
+def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_level():
+    curves = [bench.Curve("ours", "dop853", "f", [_point(1.0, 1e-4), _point(2.0, 1e-10)]),
+              bench.Curve("scipy", "x", "g", [bench.Point("s", "scipy", "x", "g", "", 50.0, 1, 1e-5),
+                                              bench.Point("s", "scipy", "x", "g", "", 500.0, 1, 1e-7)])]
+    row = bench.compare(curves, 1e-6, "scipy")
+    assert row["kind"] == "" and math.isclose(row["ratio"], math.sqrt(50.0 * 500.0) / 2.0 ** (1 / 3), rel_tol=1e-12)
+    row = bench.compare(curves, 1e-9, "scipy")
+    assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / bench.cost_at(curves[0].points, 1e-9)[0])
+
+
+# ---------------------------------------------------------------------------------------------
+# the baselines compute derive's equations (else a speed ratio against them means nothing)
+
+
+KERNELS = [  # (kernel key, baseline formulation)
+    (("euler-angles", True, ("gravity",)), "euler-angles"),
+    (("euler-angles", True, ()), "euler-angles"),
+    (("quaternion", False, ()), "quaternion"),
+    (("quaternion", True, ("gravity",)), "quaternion"),
+    (("quaternion", False, ("gravity",)), "quaternion"),
+]
+MOMENTS = {"I1": 1.3, "I2": 1.7, "I3": 0.6, "M": 0.9, "g": 1.1, "l": 0.7}
+
+
+def _baseline(formulation, symmetric, effects, **kw):
+    b = bc.baselines()
+    mgl = MOMENTS["M"] * MOMENTS["g"] * MOMENTS["l"] if "gravity" in effects else 0.0
+    I1, I3 = MOMENTS["I1"], MOMENTS["I3"]
+    if formulation == "euler-angles":
+        return b.euler_top_rhs(I1, I3, mgl, **kw), b.euler_top_jac(I1, I3, mgl, **kw)
+    I2 = I1 if symmetric else MOMENTS["I2"]
+    return b.quaternion_rhs(I1, I2, I3, mgl, **kw), b.quaternion_jac(I1, I2, I3, mgl, **kw)
+
+
+def _states(formulation, n, rng):
+    """Random states: Euler angles away from the poles, unit quaternions (the baseline, like a
+    user's code, does not divide R(q) by |q|²; derive's does, so they agree on |q| = 1)."""
+    for _ in range(n):
+        if formulation == "euler-angles":
+            y = [rng.uniform(-3, 3), rng.uniform(0.2, math.pi - 0.2), rng.uniform(-3, 3), *rng.uniform(-8, 8, 3)]
+        else:
+            q = rng.normal(size=4)
+            y = [*(q / np.linalg.norm(q)), *rng.uniform(-8, 8, 3)]
+        yield np.array(y)
+
+
+@pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
+def test_baseline_rhs_agrees_with_the_generated_kernel(key, formulation):
+    from derive.simulation import kernel_for
+
+    kernel = kernel_for(*key)
+    p = np.array([MOMENTS[n] for n in kernel.param_names])
+    rhs, _ = _baseline(formulation, key[1], key[2])
+    rng = np.random.default_rng(RNG_SEED)
+    for y in _states(formulation, 25, rng):
+        ours, theirs = kernel.rhs(0.0, y, p), np.array(rhs(0.0, y))
+        assert np.allclose(theirs, ours, rtol=1e-12, atol=1e-12 * np.max(np.abs(ours))), (y, theirs - ours)
+
+
+@pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
+def test_baseline_jacobian_is_the_derivative_of_its_rhs(key, formulation):
+    """Complex step (f(y + i h e_j).imag / h: no cancellation) of the baseline's own rhs; and
+    where derive's Jacobian is of the same equations (Euler angles, torque-free quaternion), it too."""
+    rhs, jac = _baseline(formulation, key[1], key[2], sin=cmath.sin, cos=cmath.cos, values=list) \
+        if formulation == "euler-angles" else _baseline(formulation, key[1], key[2], values=list)
+    _, jac_real = _baseline(formulation, key[1], key[2])
+    rng = np.random.default_rng(RNG_SEED + 1)
+    h = 1e-30
+    for y in _states(formulation, 10, rng):
+        fd = np.array([[v.imag / h for v in rhs(0.0, [complex(x, h if i == j else 0.0) for i, x in enumerate(y)])]
+                       for j in range(len(y))]).T
+        J = np.array(jac_real(0.0, y))
+        assert np.allclose(J, fd, rtol=1e-12, atol=1e-12 * np.max(np.abs(fd)))
+    if formulation == "euler-angles" or "gravity" not in key[2]:
+        from derive.simulation import kernel_for
+
+        kernel = kernel_for(*key)
+        p = np.array([MOMENTS[n] for n in kernel.param_names])
+        for y in _states(formulation, 10, rng):
+            ours = kernel.jac(0.0, y, p)
+            assert np.allclose(np.array(jac_real(0.0, y)), ours, rtol=1e-12, atol=1e-12 * np.max(np.abs(ours)))
+
+
+def test_baseline_initial_states_and_axes_match_the_scene():
+    """The contenders start where derive starts and measure the same axis: the quaternion and
+    the Euler-angle problem of one scene give the same ê₃ and ω̃ at t = 0, the scene's."""
+    data = bc.scene_data(bench.SCENES / "looping_top.toml", t_end=0.1, samples=3)
+    e = bc.problem(data, "euler-angles")
+    q = bc.problem(data, "quaternion")
+    b = bc.baselines()
+    i = data["initial"]
+    beta = i["beta"]
+    axis = [math.sin(beta) * math.cos(i["alpha"]), math.sin(beta) * math.sin(i["alpha"]), math.cos(beta)]
+    assert np.allclose(e.axis(np.array([e.y0]))[0], axis, atol=1e-15)
+    assert np.allclose(q.axis(np.array([q.y0]))[0], axis, atol=1e-15)
+    assert np.allclose(q.y0[4:], b.body_rates(beta, i["gamma"], *e.y0[3:]), atol=1e-14)
+    assert np.allclose(b.euler_rates(beta, i["gamma"], *q.y0[4:]), e.y0[3:], atol=1e-12)
+
+
+def test_scipy_baseline_reaches_the_exact_solution():
+    """A short solve of each baseline formulation lands on `derive.exact` (the bench's error measure)."""
+    data = bc.scene_data(bench.SCENES / "looping_top.toml", t_end=0.05, samples=11)
+    ref = bench.exact_axis(data, np.linspace(0, 0.05, 11))
+    for form in ("euler-angles", "quaternion"):
+        prob = bc.problem(data, form)
+        for method in bc.SCIPY:
+            Y, nfev = bc.solve_scipy(prob, method, 1e-10, 1e-12)
+            assert nfev > 0 and bench.axis_error(prob.axis(Y), ref) < 1e-7, (form, method)
+
+
+# ---------------------------------------------------------------------------------------------
+# end to end
+
+
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
-    res = bench.main(out=tmp_path, quick=True, smoke=True)
+    res = bench.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()
-    for heading in ("Kernel speed", "Whole trajectory", "Work–precision", "Drift"):
+    for heading in ("Targets (issue 8)", "Kernel speed", "Work–precision", "Drift", "Load average"):
         assert heading in report
     for wp in res["work_precision"]:
         png = tmp_path / wp["plot"]
@@ -42,14 +162,21 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
         ok = [p for c in wp["curves"] for p in c.points if p.ok]
         assert ok and all(np.isfinite([p.time, p.error]).all() and p.nfev > 0 for p in ok)
         assert {c.family for c in wp["curves"]} == {"ours", "scipy"}
+        assert {c.method for c in wp["curves"] if c.family == "scipy"} == set(bc.SCIPY)
     for row in res["c_loop"]:
         assert all(np.isfinite(row[k]) and row[k] > 0 for k in ("generated_ns", "handwritten_ns", "ratio"))
-        assert row["max_rel_diff"] < 1e-10  # the hand-written rhs computes the same equations
-    assert all(np.isfinite(r["ns_per_state"]) for r in res["numpy_batch"])
-    tr = res["trajectory"]
-    assert np.isfinite(tr["speedup"]) and tr["speedup"] > 0
-    assert tr["scipy"]["error"] <= tr["ours"]["error"] or tr["scipy"]["rtol"] <= bench.MIN_RTOL
-    assert all(np.isfinite(r["energy"]) for r in res["drift"]["rows"])
+        assert row["max_rel_diff"] < 1e-10  # the hand-written C rhs computes the same equations
+    tg = res["targets"]
+    ref = tg["reference"]
+    assert "error" not in ref, ref
+    scipy_row = ref["rows"][0]
+    assert scipy_row["family"] == "scipy" and scipy_row["ratio"] > 0
+    assert scipy_row["error"] <= ref["ours"]["error"] or scipy_row["rtol"] <= bench.MIN_RTOL
+    for key in ("fixed_cost", "batch", "lambdify"):
+        assert "error" not in tg[key], (key, tg[key])
+    assert tg["fixed_cost"]["ratio"] > 0 and tg["batch"]["vs_scipy"] > 0
+    assert tg["lambdify"]["max_rel_diff"] < 1e-12  # lambdify ran the same expressions
+    assert all(np.isfinite(r["energy"]) for r in res["drift"]["rows"] if "error" not in r)
     data = json.loads((tmp_path / "results.json").read_text())
-    assert data["settings"]["name"] == "smoke"
+    assert data["settings"]["name"] == "smoke" and data["machine"]["versions"]["scipy"]
     assert (tmp_path / "points.csv").read_text().count("\n") > 4
