@@ -1,0 +1,314 @@
+"""The integrable cases of a heavy rigid body about a fixed point: detected, their integrals
+stated once, and proved along the derived Euler–Poisson equations.
+
+Equations (`models.euler_poisson`, body principal axes, ω̃ = I⁻¹L, n = Rᵀẑ the upward vertical,
+r_c = (c_x, c_y, c_z) the centre of mass from the pivot):
+
+    L̇ = L × ω̃ + M g n × r_c,    ṅ = n × ω̃,    E = ½ L·ω̃ + M g n·r_c.
+
+Every such body conserves E, the area integral L·n (= p_α) and the Casimir |n|² = 1. A fourth
+integral, which makes the flow integrable, exists in these cases (axis 3 is the symmetry axis
+of a symmetric body, the scene's convention; the pair of equal moments must be (I₁, I₂)):
+
+* ``euler``   no gravity torque (no [gravity] table, r_c = 0 or g = 0):  |L|².
+* ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ).
+* ``kovalevskaya`` I₁ = I₂ = 2I₃, r_c in the equatorial plane (any azimuth φ, c_x + i c_y =
+  |r_c| e^{iφ}):  K = |(ω̃₁ + iω̃₂)² − (M g/I₃)(c_x + i c_y)(n₁ + i n₂)|². With the body turned
+  about axis 3 so that r_c = (x_c, 0, 0) this is the classical (ω̃₁² − ω̃₂² − k n₁)² +
+  (2ω̃₁ω̃₂ − k n₂)², k = M g x_c/I₃ (the turn multiplies both complex numbers by e^{−2iφ}).
+* ``goryachev-chaplygin`` I₁ = I₂ = 4I₃, r_c in the equatorial plane: on the level L·n = 0,
+  G = ω̃₃(ω̃₁² + ω̃₂²) − (M g/I₃)(c_x ω̃₁ + c_y ω̃₂) n₃; along the flow
+  dG/dt = −(M g/(4 I₃²)) (c_x ω̃₂ − c_y ω̃₁) (L·n).
+* ``general`` anything else; also any scene with a dissipative torque (damping c > 0), which
+  conserves none of these.
+
+Each formula is written once (``Integral.formula``), as arithmetic on three L components, three
+n components and a parameter mapping, so the same code evaluates it on NumPy arrays (the
+simulation's observables, ``integrals_for``) and on SymPy symbols (the proofs, ``prove``).
+SymPy is imported only inside the proofs.
+"""
+from __future__ import annotations
+
+import functools
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+#: THE tolerance of the classification (relative): two moments are equal when
+#: |a − b| ≤ TOLERANCE · max(|a|, |b|); the centre of mass is on axis 3 when
+#: √(c_x² + c_y²) ≤ TOLERANCE · |r_c|, in the equatorial plane when |c_z| ≤ TOLERANCE · |r_c|;
+#: and there is no gravity torque when g = 0 or |r_c| ≤ TOLERANCE · √(I_max / M) (the body's
+#: radius of gyration is the length scale).
+TOLERANCE = 1e-9
+
+CASES = ("euler", "lagrange", "kovalevskaya", "goryachev-chaplygin", "general")
+
+#: The case relations among the parameters, as substitutions into the general Euler–Poisson
+#: model (I₁, I₂, I₃, M, g, c_x, c_y, c_z); the names are those of the model's parameters.
+RELATIONS = {
+    "euler": {"cx": 0, "cy": 0, "cz": 0},
+    "lagrange": {"I2": "I1", "cx": 0, "cy": 0},
+    "kovalevskaya": {"I1": "2*I3", "I2": "2*I3", "cz": 0},
+    "goryachev-chaplygin": {"I1": "4*I3", "I2": "4*I3", "cz": 0},
+    "general": {},
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# the integrals, each written once
+
+
+def _omega(L, p):
+    return L[0] / p["I1"], L[1] / p["I2"], L[2] / p["I3"]
+
+
+def _energy(L, n, p):
+    w = _omega(L, p)
+    return (L[0] * w[0] + L[1] * w[1] + L[2] * w[2]) / 2 + p["M"] * p["g"] * (
+        n[0] * p["cx"] + n[1] * p["cy"] + n[2] * p["cz"])
+
+
+def _area(L, n, p):
+    return L[0] * n[0] + L[1] * n[1] + L[2] * n[2]
+
+
+def _n_squared(L, n, p):
+    return n[0] ** 2 + n[1] ** 2 + n[2] ** 2
+
+
+def _L_squared(L, n, p):
+    return L[0] ** 2 + L[1] ** 2 + L[2] ** 2
+
+
+def _L3(L, n, p):
+    return L[2] * (L[0] ** 0)  # times 1 of L's type: a NumPy column stays an array
+
+
+def _kovalevskaya(L, n, p):
+    w1, w2, _ = _omega(L, p)
+    k = p["M"] * p["g"] / p["I3"]
+    re = w1 ** 2 - w2 ** 2 - k * (p["cx"] * n[0] - p["cy"] * n[1])
+    im = 2 * w1 * w2 - k * (p["cx"] * n[1] + p["cy"] * n[0])
+    return re ** 2 + im ** 2
+
+
+def _goryachev_chaplygin(L, n, p):
+    w1, w2, w3 = _omega(L, p)
+    k = p["M"] * p["g"] / p["I3"]
+    return w3 * (w1 ** 2 + w2 ** 2) - k * (p["cx"] * w1 + p["cy"] * w2) * n[2]
+
+
+@dataclass(frozen=True)
+class Integral:
+    """A first integral: ``name`` (the npz key is ``integral_<name>``), a plain-text
+    ``expression`` (the JSON contract's), its LaTeX, and ``formula(L, n, p)``; ``on`` names the
+    level set it is conserved on ("L.n = 0"), if any."""
+
+    name: str
+    expression: str
+    latex: str
+    formula: Callable
+    on: str | None = None
+
+
+ENERGY = Integral("energy", "E = (L1^2/I1 + L2^2/I2 + L3^2/I3)/2 + M g (n . r_c)",
+                  r"E = \tfrac12\left(\frac{L_1^2}{I_1} + \frac{L_2^2}{I_2} + \frac{L_3^2}{I_3}\right)"
+                  r" + M g\,\tilde n\cdot\tilde r_c", _energy)
+AREA = Integral("p_alpha", "p_alpha = L . n = L1 n1 + L2 n2 + L3 n3",
+                r"p_\alpha = \tilde L\cdot\tilde n", _area)
+CASIMIR = Integral("n_norm", "|n|^2 = n1^2 + n2^2 + n3^2 = 1",
+                   r"|\tilde n|^2 = n_1^2 + n_2^2 + n_3^2 = 1", _n_squared)
+
+#: The extra integral of each case.
+EXTRA = {
+    "euler": Integral("L2", "|L|^2 = L1^2 + L2^2 + L3^2",
+                      r"|\tilde L|^2 = L_1^2 + L_2^2 + L_3^2", _L_squared),
+    "lagrange": Integral("L3", "L3 = I3 omega3 = p_gamma",
+                         r"L_3 = I_3\tilde\omega_3 = p_\gamma", _L3),
+    "kovalevskaya": Integral(
+        "kovalevskaya",
+        "K = (w1^2 - w2^2 - (M g/I3)(cx n1 - cy n2))^2 + (2 w1 w2 - (M g/I3)(cx n2 + cy n1))^2, "
+        "w = L/I",
+        r"K = \left|(\tilde\omega_1 + i\tilde\omega_2)^2 - \frac{M g}{I_3}(c_x + i c_y)(n_1 + i n_2)\right|^2"
+        r" = \left(\tilde\omega_1^2 - \tilde\omega_2^2 - \frac{Mg}{I_3}(c_x n_1 - c_y n_2)\right)^2"
+        r" + \left(2\tilde\omega_1\tilde\omega_2 - \frac{Mg}{I_3}(c_x n_2 + c_y n_1)\right)^2",
+        _kovalevskaya),
+    "goryachev-chaplygin": Integral(
+        "goryachev_chaplygin",
+        "G = w3 (w1^2 + w2^2) - (M g/I3)(cx w1 + cy w2) n3, w = L/I (conserved on L . n = 0)",
+        r"G = \tilde\omega_3(\tilde\omega_1^2 + \tilde\omega_2^2) - \frac{M g}{I_3}"
+        r"(c_x\tilde\omega_1 + c_y\tilde\omega_2)\,n_3\quad(\text{on } \tilde L\cdot\tilde n = 0)",
+        _goryachev_chaplygin, on="L.n = 0"),
+}
+
+
+# ---------------------------------------------------------------------------------------------
+# classification from the scene's numbers
+
+
+@dataclass(frozen=True)
+class Classification:
+    """The case of a scene and why (one sentence)."""
+
+    case: str
+    reason: str
+    dissipative: bool = False
+
+
+def _equal(a: float, b: float) -> bool:
+    return abs(a - b) <= TOLERANCE * max(abs(a), abs(b))
+
+
+def parameters(scene) -> dict[str, float]:
+    """The general Euler–Poisson model's parameters from a scene: I₁, I₂, I₃, M, g and the centre
+    of mass (c_x, c_y, c_z); a scene without gravity has M = g = 0 and r_c = 0."""
+    b = scene.body
+    p = {"I1": b.I1, "I2": b.I2, "I3": b.I3, "M": 0.0, "g": 0.0, "cx": 0.0, "cy": 0.0, "cz": 0.0}
+    grav = scene.gravity
+    if grav is not None:
+        p.update(M=float(grav.M), g=float(grav.g))
+        p.update(zip(("cx", "cy", "cz"), (float(c) for c in grav.com)))
+    return p
+
+
+def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) -> Classification:
+    """The integrable case from numbers (see the module docstring and ``TOLERANCE``)."""
+    cx, cy, cz = (float(c) for c in com)
+    r = math.sqrt(cx * cx + cy * cy + cz * cz)
+    if damping > 0:
+        return Classification("general", f"dissipative: the damping torque -c omega (c = {damping:g}) "
+                                         "conserves neither the energy nor L.n", dissipative=True)
+    scale = math.sqrt(max(I1, I2, I3) / M) if M > 0 else math.inf
+    if g == 0 or M == 0 or r <= TOLERANCE * scale:
+        return Classification("euler", "no gravity torque (r_c = 0 or g = 0): Euler's free body")
+    if not _equal(I1, I2):
+        return Classification("general", f"I1 = {I1:g} and I2 = {I2:g} differ and there is a gravity "
+                                         "torque: no known integrable case")
+    if math.hypot(cx, cy) <= TOLERANCE * r:
+        return Classification("lagrange", "I1 = I2 and the centre of mass on the symmetry axis 3")
+    if abs(cz) <= TOLERANCE * r:
+        if _equal(I1, 2 * I3):
+            return Classification("kovalevskaya", "I1 = I2 = 2 I3 and the centre of mass in the "
+                                                  "equatorial plane")
+        if _equal(I1, 4 * I3):
+            return Classification("goryachev-chaplygin", "I1 = I2 = 4 I3 and the centre of mass in "
+                                                         "the equatorial plane (integrable on L.n = 0)")
+    return Classification("general", "symmetric body (I1 = I2) with the centre of mass off the "
+                                     "symmetry axis, not a Kovalevskaya or Goryachev-Chaplygin ratio")
+
+
+def classify(scene) -> Classification:
+    """The integrable case of a scene (``derive.scene.Scene``)."""
+    p = parameters(scene)
+    damping = scene.damping.c if scene.damping is not None else 0.0
+    return classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
+                           damping)
+
+
+def integrals(case: str, dissipative: bool = False) -> list[Integral]:
+    """The first integrals of a case: energy, L·n and |n|² (unless dissipative), then the
+    case's extra one."""
+    if dissipative:
+        return [CASIMIR]
+    out = [ENERGY, AREA, CASIMIR]
+    if case in EXTRA:
+        out.append(EXTRA[case])
+    return out
+
+
+def integrals_for(scene) -> list[tuple[str, Callable]]:
+    """The extra integral of the scene's case as ``[(name, f)]`` with ``f(L, n) -> array``
+    (L, n of shape (N, 3), body axes) at the scene's numbers: the simulation writes it as
+    ``integral_<name>``. Empty for the general case (energy and L·n are outputs already)."""
+    c = classify(scene)
+    if c.dissipative or c.case not in EXTRA:
+        return []
+    integral = EXTRA[c.case]
+    p = parameters(scene)
+
+    def f(L, n, _formula=integral.formula, _p=p):
+        L = np.asarray(L, dtype=float)
+        n = np.asarray(n, dtype=float)
+        return np.asarray(_formula(L.T, n.T, _p), dtype=float)
+
+    return [(integral.name, f)]
+
+
+# ---------------------------------------------------------------------------------------------
+# symbolic proofs along the derived equations
+
+
+@dataclass(frozen=True)
+class Proof:
+    """dF/dt along the Euler–Poisson flow with the case's relations substituted: ``derivative``
+    (simplified; 0 proves F conserved) and, for an integral on a level set ("L.n = 0"),
+    ``derivative = factor · (L·n)`` with ``remainder`` 0."""
+
+    case: str
+    integral: str
+    derivative: object
+    factor: object = None
+    remainder: object = None
+
+    @property
+    def holds(self) -> bool:
+        if self.factor is not None:
+            return self.remainder == 0
+        return self.derivative == 0
+
+
+@functools.lru_cache(maxsize=None)
+def _general_model():
+    from . import models
+
+    return models.build("euler-poisson", False, ("gravity_general",))
+
+
+def _symbols():
+    m = _general_model()
+    p = {s.name: s for s in m.params}
+    L = m.states[0:3]
+    n = m.states[3:6]
+    return m, p, L, n
+
+
+def relations(case: str) -> dict:
+    """The case's relations as a SymPy substitution {symbol: expression}."""
+    import sympy as sp
+
+    _, p, _, _ = _symbols()
+    return {p[k]: sp.sympify(v, locals=p) for k, v in RELATIONS[case].items()}
+
+
+def time_derivative(formula: Callable, subs: dict):
+    """dF/dt = Σ ∂F/∂y · ẏ along the derived Euler–Poisson rhs, with ``subs`` applied to the
+    parameters, as one cancelled rational expression."""
+    import sympy as sp
+
+    m, p, L, n = _symbols()
+    F = formula(L, n, p)
+    rhs = dict(zip(m.states, m.rhs))
+    dF = sum((sp.diff(F, y) * rhs[y] for y in (*L, *n)), sp.S.Zero)
+    return sp.factor(sp.cancel(sp.together(dF.subs(subs))))
+
+
+@functools.lru_cache(maxsize=None)
+def prove(case: str, integral_name: str | None = None, relations_of: str | None = None) -> Proof:
+    """Prove a case's integral (default: its extra one) along the derived equations, with the
+    relations of ``relations_of`` (default: the case itself; another case gives a control).
+    Integrals on a level set are divided by L·n as polynomials in L and n."""
+    import sympy as sp
+
+    integral = (EXTRA[case] if integral_name is None
+                else next(i for i in (ENERGY, AREA, CASIMIR, *EXTRA.values()) if i.name == integral_name))
+    subs = relations(relations_of or case)
+    dF = time_derivative(integral.formula, subs)
+    if integral.on is None:
+        return Proof(case, integral.name, dF)
+    _, p, L, n = _symbols()
+    num, den = sp.fraction(sp.together(dF))
+    Ln = _area(L, n, p)
+    q, r = sp.div(sp.expand(num), sp.expand(Ln), *L, *n)
+    return Proof(case, integral.name, dF, factor=sp.factor(q / den), remainder=sp.expand(r))
