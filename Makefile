@@ -29,6 +29,9 @@ test-slow: $(STAMP)
 bench: $(STAMP)
 	@$(PY) -m derive bench -o bench-out
 
+# The compile cache (DERIVE_CACHE, default ~/.cache/derive) is emptied through the tool itself,
+# which removes only the libraries it put there; without the venv there is nothing to ask.
 clean:
+	@if [ -x $(PY) ]; then $(PY) -m derive cache --clear; fi
 	rm -rf $(VENV) bench-out .pytest_cache .hypothesis *.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -1,0 +1,213 @@
+"""The compile cache heals itself: checksums verified on load, corrupt libraries rebuilt once,
+an unwritable cache replaced by a private one, stale build folders removed; `derive cache`."""
+import contextlib
+import ctypes
+import hashlib
+import io
+import os
+import subprocess
+import sys
+import time
+import uuid
+
+import pytest
+
+from derive import cbuild, cli
+from derive.render import ROOT
+
+
+def tiny(tag: str) -> dict:
+    """A one-function library, unique per test (so no process has loaded it yet)."""
+    return {"tiny.c": f"/* {tag} */\nint tiny_answer(void) {{ return 42; }}\n"}
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    root = tmp_path / "cache"
+    monkeypatch.setenv("DERIVE_CACHE", str(root))
+    monkeypatch.setattr(cbuild, "_fallback", None)
+    return root
+
+
+def libraries(root):
+    return sorted(p.name for p in root.glob("*.so"))
+
+
+def build_in_subprocess(root, tag, env=None):
+    """Build-or-load the tiny library in a fresh process; (return code, stderr)."""
+    code = ("import sys; from derive import cbuild; "
+            f"lib = cbuild.compile_library('tiny', {tiny(tag)!r}, 'tiny.c'); "
+            "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
+    e = dict(os.environ, **(env or {}))
+    if root is not None:
+        e["DERIVE_CACHE"] = str(root)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=e,
+                       cwd=ROOT, timeout=120)
+    return r.returncode, r.stderr
+
+
+def test_a_build_writes_the_library_and_its_checksum(cache):
+    lib = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    assert lib.tiny_answer() == 42
+    (so,) = cache.glob("tiny-*.so")
+    side = so.with_name(so.name + ".sha256")
+    digest, name = side.read_text().split()
+    assert name == so.name and digest == hashlib.sha256(so.read_bytes()).hexdigest()
+    assert [e.status for e in cbuild.cache_entries() if e.name == so.name] == ["ok"]
+    assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no build folder left
+
+
+@pytest.mark.parametrize("damage", ["truncate", "flip", "garbage-with-checksum", "no-checksum"])
+def test_a_damaged_library_is_rebuilt_once_with_a_note(cache, damage):
+    tag = uuid.uuid4().hex
+    rc, err = build_in_subprocess(cache, tag)
+    assert rc == 0 and err == ""
+    (so,) = cache.glob("tiny-*.so")
+    side = so.with_name(so.name + ".sha256")
+    good = so.read_bytes()
+    if damage == "truncate":  # a compile or copy cut short
+        so.write_bytes(good[: len(good) // 3])
+    elif damage == "flip":  # a bit flipped somewhere in the code
+        so.write_bytes(good[:2000] + bytes([good[2000] ^ 0x40]) + good[2001:])
+    elif damage == "garbage-with-checksum":  # verifies, but the loader refuses it
+        so.write_bytes(b"not an ELF file at all\n" * 50)
+        side.write_text(f"{hashlib.sha256(so.read_bytes()).hexdigest()}  {so.name}\n")
+    else:  # built by an older version, or the checksum was lost
+        side.unlink()
+    rc, err = build_in_subprocess(cache, tag)
+    lines = err.strip().splitlines()
+    assert rc == 0 and len(lines) == 1 and lines[0].startswith(f"note: cached library {so}")
+    assert lines[0].endswith("rebuilding it")
+    assert so.read_bytes() == good
+    rc, err = build_in_subprocess(cache, tag)  # healed: no note any more
+    assert rc == 0 and err == ""
+
+
+def test_damaged_in_process_before_the_first_load(cache, capsys):
+    """The same inside one process: a corrupt file where the library should be is replaced."""
+    sources = tiny(uuid.uuid4().hex)
+    key = cbuild._key(sources, ["tiny.c"], cbuild.compiler(), list(cbuild.DEFAULT_FLAGS))
+    cache.mkdir()
+    so = cache / f"tiny-{key[:24]}.so"
+    so.write_bytes(b"\x7fELF truncated")
+    lib = cbuild.compile_library("tiny", sources, "tiny.c")
+    assert lib.tiny_answer() == 42
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"note: cached library {so} has no checksum; rebuilding it"]
+    assert libraries(cache) == [so.name]
+
+
+def unwritable(tmp_path):
+    """A cache path nobody can create, root included: its parent is a regular file."""
+    blocker = tmp_path / "blocker"
+    blocker.write_text("a file, not a folder\n")
+    return blocker / "cache"
+
+
+def test_unwritable_cache_falls_back_to_a_private_folder(tmp_path):
+    rc, err = build_in_subprocess(unwritable(tmp_path), uuid.uuid4().hex)
+    lines = err.strip().splitlines()
+    assert rc == 0 and len(lines) == 1
+    assert lines[0].startswith(f"warning: compile cache {unwritable(tmp_path)} is not writable")
+    private = lines[0].split("using ")[1].split(" for this run")[0]
+    assert not os.path.exists(private)  # removed at exit
+
+
+def test_unwritable_home_falls_back(tmp_path):
+    env = {"HOME": str(unwritable(tmp_path))}
+    e = {k: v for k, v in os.environ.items() if k != "DERIVE_CACHE"}
+    code = ("import sys; from derive import cbuild; "
+            f"sys.exit(cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c')"
+            ".tiny_answer() != 42)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=dict(e, **env), cwd=ROOT, timeout=120)
+    assert r.returncode == 0
+    assert r.stderr.startswith("warning: compile cache ") and len(r.stderr.splitlines()) == 1
+
+
+def test_fallback_in_process_warns_once(tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("DERIVE_CACHE", str(unwritable(tmp_path)))
+    monkeypatch.setattr(cbuild, "_fallback", None)
+    a = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    b = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    assert a.tiny_answer() == b.tiny_answer() == 42
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("warning: compile cache")
+    assert len(libraries(cbuild._fallback)) == 2
+
+
+def test_stale_build_folders_are_removed(cache):
+    cache.mkdir()
+    stale, fresh, legacy = (cache / ".build-tiny-abcd1234", cache / ".build-tiny-zzzz9999",
+                            cache / ".heavy_top-k2j4h5g6")
+    for d in (stale, fresh, legacy):
+        d.mkdir()
+        (d / "tiny.c").write_text("int x;\n")
+    old = time.time() - 2 * cbuild.STALE_BUILD_SECONDS
+    for d in (stale, legacy):
+        os.utime(d, (old, old))
+    foreign = cache / ".not-ours"
+    foreign.mkdir()
+    os.utime(foreign, (old, old))
+    cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    assert not stale.exists() and not legacy.exists()
+    assert fresh.exists() and foreign.exists()
+
+
+def run(*argv):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = cli.main(list(argv))
+    return rc, out.getvalue(), err.getvalue()
+
+
+def test_cache_command_lists_and_clears(cache):
+    cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    (so,) = cache.glob("tiny-*.so")
+    (cache / "notes.txt").write_text("the user's own file\n")
+    (cache / ".build-tiny-abcd1234").mkdir()
+    rc, out, err = run("cache")
+    assert rc == 0 and err == ""
+    lines = out.splitlines()
+    assert lines[0] == f"compile cache: {cache} (DERIVE_CACHE)"
+    assert any(ln.split()[0] == so.name and ln.split()[-1] == "ok" for ln in lines)
+    assert any(ln.split()[0] == ".build-tiny-abcd1234" for ln in lines)
+    assert not any("notes.txt" in ln for ln in lines)
+    assert lines[-1].startswith("1 libraries, ")
+
+    rc, out, err = run("cache", "--clear")
+    assert rc == 0 and out.startswith("removed 3 entries") and err == ""
+    assert sorted(p.name for p in cache.iterdir()) == ["notes.txt"]
+    rc, out, err = run("cache")
+    assert rc == 0 and out.splitlines()[-1] == "empty"
+
+
+def test_cache_command_shows_damage(cache):
+    cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    (so,) = cache.glob("tiny-*.so")
+    so.write_bytes(so.read_bytes()[:100])
+    rc, out, _ = run("cache")
+    (line,) = [ln for ln in out.splitlines() if ln.split()[0] == so.name]
+    assert "does not match its checksum" in line
+
+
+def test_cache_command_without_a_cache(tmp_path, monkeypatch):
+    monkeypatch.setenv("DERIVE_CACHE", str(tmp_path / "nothing-here"))
+    assert run("cache")[:2] == (0, f"compile cache: {tmp_path / 'nothing-here'} (DERIVE_CACHE)\nempty\n")
+    rc, out, _ = run("cache", "--clear")
+    assert rc == 0 and out.startswith("removed 0 entries")
+
+
+def test_make_clean_clears_the_cache():
+    text = (ROOT / "Makefile").read_text()
+    clean = text.split("\nclean:", 1)[1].split("\n\n", 1)[0]
+    assert "-m derive cache --clear" in clean
+
+
+def test_loaded_library_is_reused_in_process(cache):
+    sources = tiny(uuid.uuid4().hex)
+    a = cbuild.compile_library("tiny", sources, "tiny.c")
+    (so,) = cache.glob("tiny-*.so")
+    so.unlink()  # a second call does not even look at the disk
+    assert cbuild.compile_library("tiny", sources, "tiny.c") is a
+    assert isinstance(a, ctypes.CDLL)
