@@ -320,7 +320,8 @@ def simulate(scene, **overrides) -> Result:
         h = s.h
         if method in FIXED_STEP and h is None:
             h = default_step(sc)
-        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h, check=False)
+        _check_budget(sc, method, h)
+        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h, max_steps=s.max_steps, check=False)
         if sol.status != 0:
             raise IntegrationError(_explain(model, sol))
         Y, nfev = sol.y, sol.nfev
@@ -357,7 +358,9 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     ps = np.array([_params(sc, model) for sc in scs])
     s = first.simulate
     h = s.h if s.h is not None or method not in FIXED_STEP else min(default_step(sc) for sc in scs)
-    batch = kernel_for(*key).solve_batch(method, y0s, ps, first.t_out, rtol=s.rtol, atol=s.atol, h=h, check=False)
+    _check_budget(first, method, h)
+    batch = kernel_for(*key).solve_batch(method, y0s, ps, first.t_out, rtol=s.rtol, atol=s.atol, h=h,
+                                         max_steps=s.max_steps, check=False)
     results = []
     for b, sc in enumerate(scs):
         sol = batch[b]
@@ -376,6 +379,22 @@ def _explain(model: models.Model, sol) -> str:
     if sol.status == DOMAIN_STATUS and model.domain_note:
         return f"t = {sol.t_fail:.8g}: {model.domain_note}"
     return sol.message
+
+
+def _check_budget(scene: Scene, method: str, h: float | None) -> None:
+    """A fixed-step run takes ceil(Δt/h) steps per output interval: refuse it up front (bad
+    input, before any work) when that exceeds ``[simulate] max_steps``."""
+    if method not in FIXED_STEP:
+        return
+    # The count of the C drivers' substeps() (templates/c/solvers.c.j2): a ratio within a
+    # relative 1e-10 above an integer counts as that integer.
+    r = np.diff(scene.t_out) / h
+    n = np.ceil(r)
+    n = np.where((n > 1.0) & (n - r > 1.0 - 1e-10 * r), n - 1.0, n)
+    steps = int(np.sum(np.maximum(n, 1.0)))
+    if steps > scene.simulate.max_steps:
+        raise SceneError(f"{scene.source}: simulate.max_steps: {method} with h = {h:.6g} s needs {steps} "
+                         f"steps, more than max_steps = {scene.simulate.max_steps}")
 
 
 def default_step(scene: Scene) -> float:
