@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: derive verify test test-slow bench clean setup
+.PHONY: derive verify test test-slow bench bench-peers clean setup
 
 setup: $(STAMP)
 
@@ -29,9 +29,14 @@ test-slow: $(STAMP)
 bench: $(STAMP)
 	@$(PY) -m derive bench -o bench-out
 
+# The same bench with CasADi and PyDy installed (the optional extra) and raced.
+bench-peers: $(STAMP)
+	@$(PY) -m pip install -q --disable-pip-version-check -e '.[test,peers]'
+	@$(PY) -m derive bench -o bench-out
+
 # The compile cache (DERIVE_CACHE, default ~/.cache/derive) is emptied through the tool itself,
 # which removes only the libraries it put there; without the venv there is nothing to ask.
 clean:
-	@if [ -x $(PY) ]; then $(PY) -m derive cache --clear; fi
+	@if [ -x $(PY) ]; then $(PY) -m derive cache --clear || true; fi
 	rm -rf $(VENV) bench-out .pytest_cache .hypothesis *.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
