@@ -56,10 +56,10 @@ class _PlainFormatterBase:
     """Mixin body of `PlainFormatter` (the class is made once matplotlib is imported)."""
 
     def set_locs(self, locs):
-        self.locs = [float(v) for v in locs]
+        self._ticks = [float(v) for v in locs]
 
     def __call__(self, x, pos=None):
-        locs = [v for v in getattr(self, "locs", []) if np.isfinite(v)] or [x]
+        locs = [v for v in getattr(self, "_ticks", []) if np.isfinite(v)] or [x]
         steps = np.diff(sorted(set(locs)))
         step = float(np.min(steps)) if steps.size else abs(x) or 1.0
         if x == 0 or abs(x) < 1e-9 * step:  # a tick at zero (up to round-off of the locator)

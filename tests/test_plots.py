@@ -1,0 +1,233 @@
+"""The trajectory figure: which panels a symmetric, an asymmetric and a damped scene get, and
+properties of the matplotlib objects a reader relies on (no offset notation, symlog energy
+error with exact zeros drawn at 0, legends off the data, tick labels that do not overlap, the
+energy balance of a damped top)."""
+from __future__ import annotations
+
+import io
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import derive
+from derive import plots
+
+SCENES = Path(__file__).resolve().parent.parent / "scenes"
+
+
+def _scene(name: str, **simulate) -> dict:
+    data = tomllib.loads((SCENES / f"{name}.toml").read_text())
+    data["simulate"].update(simulate)
+    return data
+
+
+@pytest.fixture(scope="module")
+def symmetric():
+    return derive.simulate(_scene("free_symmetric", t_end=0.5, samples=201))
+
+
+@pytest.fixture(scope="module")
+def asymmetric():
+    # The first flip of the racket's intermediate axis comes at t ≈ 2.8 s.
+    return derive.simulate(_scene("tennis_racket", t_end=4.0, samples=401))
+
+
+@pytest.fixture(scope="module")
+def damped():
+    return derive.simulate(_scene("damped_top", t_end=2.0, samples=2001))
+
+
+_FIGURES: dict[int, object] = {}
+
+
+def _fig(res):
+    """The drawn figure of ``res``, built once per module (the tests only read it)."""
+    if id(res) not in _FIGURES:
+        fig = plots.figure(res)
+        fig.canvas.draw()
+        _FIGURES[id(res)] = fig
+    return _FIGURES[id(res)]
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _close_figures():
+    yield
+    import matplotlib.pyplot as plt
+
+    for fig in _FIGURES.values():
+        plt.close(fig)
+    _FIGURES.clear()
+
+
+def _axes(fig, name):
+    found = [ax for ax in fig.axes if ax.get_label() == name]
+    assert len(found) == 1, [ax.get_label() for ax in fig.axes]
+    return found[0]
+
+
+def _close(fig):
+    """Figures are shared between tests and closed at the end of the module."""
+
+
+def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped):
+    assert plots.panels(symmetric) == ["beta", "omega", "energy", "momenta", "top", "sphere"]
+    assert plots.panels(asymmetric) == ["beta", "omega", "energy", "top", "sphere", "polhode"]
+    assert plots.panels(damped) == ["beta", "omega", "energy", "balance", "top", "sphere"]
+    for res in (symmetric, asymmetric, damped):
+        fig = _fig(res)
+        try:
+            names = [ax.get_label() for ax in fig.axes if not ax.get_label().endswith(":twin")]
+            assert names == plots.panels(res)
+            for name in ("sphere", "polhode"):
+                if name in names:
+                    assert _axes(fig, name).name == "3d"
+        finally:
+            _close(fig)
+
+
+def test_title_names_scene_formulation_method_and_tolerances(symmetric):
+    fig = _fig(symmetric)
+    try:
+        title = fig.get_suptitle()
+        s = symmetric.scene.simulate
+        for part in (symmetric.scene.title, symmetric.formulation, symmetric.method,
+                     f"rtol = {s.rtol:g}", f"atol = {s.atol:g}"):
+            assert part in title
+    finally:
+        _close(fig)
+
+
+def test_no_offset_text_and_no_overlapping_tick_labels(symmetric, asymmetric, damped):
+    for res in (symmetric, asymmetric, damped):
+        fig = _fig(res)
+        try:
+            renderer = fig.canvas.get_renderer()
+            for ax in fig.axes:
+                if ax.name == "3d":
+                    continue
+                for axis in (ax.xaxis, ax.yaxis):
+                    assert axis.get_offset_text().get_text() == "", (ax.get_label(), axis.get_offset_text())
+                    boxes = [lab.get_window_extent(renderer) for lab in axis.get_ticklabels()
+                             if lab.get_visible() and lab.get_text()]
+                    for i in range(len(boxes)):
+                        for j in range(i + 1, len(boxes)):
+                            assert not boxes[i].overlaps(boxes[j]), ax.get_label()
+        finally:
+            _close(fig)
+
+
+def test_flat_beta_is_shown_as_deviation_not_in_offset_notation(symmetric):
+    # β is constant in the free symmetric scene (L along z): its panel plots β − β(0).
+    fig = _fig(symmetric)
+    try:
+        ax = _axes(fig, "beta")
+        assert "β − β(0)" in ax.get_ylabel()
+        assert f"{symmetric.beta[0]:.12g}" in ax.get_ylabel()
+        labels = [t.get_text() for t in ax.get_yticklabels() if t.get_text()]
+        assert len(set(labels)) == len(labels) > 2
+    finally:
+        _close(fig)
+
+
+def test_energy_error_on_symlog_with_exact_zeros_at_zero(symmetric):
+    fig = _fig(symmetric)
+    try:
+        ax = _axes(fig, "energy")
+        assert ax.get_yscale() == "symlog"
+        assert ax.get_ylim()[0] == 0.0
+        y = np.concatenate([ln.get_ydata() for ln in ax.get_lines()])
+        expected = np.abs(symmetric.energy - symmetric.energy[0]) / abs(symmetric.energy[0])
+        np.testing.assert_array_equal(y, expected)  # zeros stay 0, nothing clipped to a floor
+        assert "E is conserved" in ax.get_title()
+    finally:
+        _close(fig)
+
+
+def test_asymmetric_body_shows_omega_and_the_flip(asymmetric):
+    w2 = asymmetric.omega[:, 1]
+    assert w2[0] > 0 and w2[-1] < 0  # the scene flips within t_end (else the test proves nothing)
+    fig = _fig(asymmetric)
+    try:
+        ax = _axes(fig, "omega")
+        lines = {ln.get_label(): ln for ln in ax.get_lines()}
+        assert set(lines) == {"ω̃₁", "ω̃₂", "ω̃₃"}
+        np.testing.assert_array_equal(lines["ω̃₂"].get_ydata(), w2)
+        assert "symmetry" not in _axes(fig, "beta").get_title()
+        # The body-frame direction of L starts near +ê₂ and ends near −ê₂.
+        pol = _axes(fig, "polhode")
+        path = next(ln for ln in pol.get_lines() if ln.get_label() == "L̃/|L̃|")
+        ys = np.asarray(path.get_data_3d()[1])
+        assert ys[0] > 0.9 and ys[-1] < -0.9
+    finally:
+        _close(fig)
+
+
+def test_damped_scene_plots_energy_and_work_done_by_damping(damped):
+    fig = _fig(damped)
+    try:
+        ax = _axes(fig, "energy")
+        assert ax.get_yscale() == "linear"
+        line = {prefix: next(ln for ln in ax.get_lines() if ln.get_label().startswith(prefix))
+                for prefix in ("E(t)", "W(t)", "E + W")}
+        E, total = (np.asarray(line[k].get_ydata()) for k in ("E(t)", "E + W"))
+        E0 = damped.energy[0]
+        assert E[0] - E[-1] > 0.05 * abs(E0)             # damping really takes energy out
+        assert np.max(np.abs(total - E0)) < 1e-4 * abs(E0)  # and W accounts for it
+        assert "trapezoid" in line["W(t)"].get_label()
+        assert "error" not in ax.get_title()
+        bal = _axes(fig, "balance")
+        assert bal.get_yscale() == "symlog"
+    finally:
+        _close(fig)
+
+
+def test_work_against_damping_is_the_trapezoid_rule():
+    class R:
+        t = np.linspace(0.0, 2.0, 5)
+        omega = np.column_stack([t, 0 * t, 0 * t])  # |ω|² = t²
+
+        class scene:
+            class damping:
+                c = 3.0
+
+    W = plots.work_against_damping(R)
+    h = 0.5
+    expected = np.concatenate(([0.0], np.cumsum(h / 2 * 3.0 * (R.t[1:] ** 2 + R.t[:-1] ** 2))))
+    np.testing.assert_allclose(W, expected, rtol=1e-15)
+    assert abs(W[-1] - 3.0 * 8 / 3) < 3.0 * h ** 2 / 6 * 2 + 1e-12  # trapezoid error bound for t²
+
+
+def test_legends_sit_outside_the_data(symmetric, damped):
+    for res in (symmetric, damped):
+        fig = _fig(res)
+        try:
+            renderer = fig.canvas.get_renderer()
+            for ax in fig.axes:
+                legend = ax.get_legend()
+                if legend is None or ax.name == "3d":
+                    continue
+                panel = _axes(fig, ax.get_label().split(":")[0])
+                assert not legend.get_window_extent(renderer).overlaps(panel.get_window_extent(renderer))
+        finally:
+            _close(fig)
+
+
+@pytest.mark.parametrize("locs, expected", [
+    ([190.0, 192.5, 195.0], ["190.0", "192.5", "195.0"]),
+    ([0.0, 0.5, 1.0], ["0", "0.5", "1.0"]),
+    ([-2e-13, 0.0, 2e-13, 4e-13], ["-2e-13", "0", "2e-13", "4e-13"]),
+    ([0.64350110875, 0.6435011088, 0.64350110885], ["0.64350110875", "0.64350110880", "0.64350110885"]),
+])
+def test_plain_formatter_prints_every_tick_in_full(locs, expected):
+    fmt = plots.plain_formatter()
+    fmt.set_locs(locs)
+    assert [fmt(v) for v in locs] == expected
+    assert fmt.get_offset() == ""
+
+
+def test_plot_result_writes_a_png(symmetric):
+    buf = io.BytesIO()
+    plots.plot_result(symmetric, buf)
+    assert buf.getvalue().startswith(b"\x89PNG\r\n\x1a\n")
