@@ -1,0 +1,635 @@
+"""`derive analyze`: the lecture's analysis of the heavy top, done for the scene's own body.
+
+For a scene (its moments, its effects, its initial state) this derives and evaluates:
+
+1. T, V and L = T − V, in body components and in z-y-z Euler angles;
+2. the equations of motion: Euler–Poisson (``models.euler_poisson``, always) and the
+   Euler–Lagrange equations 𝕄 q̈ = F in the angles;
+3. the cyclic coordinates (α always: V depends on the tilt; γ too for a symmetric body with the
+   centre of mass on axis 3) and their momenta;
+4. the Routh reduction to β and V_eff(β) when both α and γ are cyclic (``lagrangian.Reduction``);
+5. the integrable case and its integrals, proved along the derived equations
+   (``derive.integrable``);
+6. the relative equilibria and their stability, each evaluated at the scene's numbers:
+
+   * sleeping top (spin about the upward vertical through the pivot, centre of mass on it) and
+     hanging top (centre of mass below): for the Lagrange top from the series of V_eff about
+     β = 0 or π with p_α = ±p_γ (the notes' k₂ ≥ 0, giving p_γ ≥ √(4MglI₁)); for any other body
+     with the centre of mass on a principal axis k (spin ω₀ = ω̃_k(0) about it) from the
+     energy–Casimir method: E + a L·n + b|n|² restricted to the symplectic leaf is definite iff
+     ω₀²(I_k − I_m) > h M g |r_c| for both m ≠ k (h = +1 upright, −1 hanging) — a sufficient
+     condition; with the centre of mass on no principal axis only the rest equilibria exist;
+   * steady precession at the scene's tilt β₀ (Lagrange top, and the free symmetric body):
+     ∂V_eff/∂β = 0 with p_α = I₁ α̇ sin²β₀ + p_γ cos β₀ gives I₁ cos β₀ α̇² − p_γ α̇ + M g l = 0,
+     real roots iff p_γ² ≥ 4 M g l I₁ cos β₀; stable where V_eff″(β₀) > 0;
+   * permanent rotations of a free body about each principal axis k: energy–Casimir with
+     E − |L|²/(2I_k), Hessian diag(1/I_m − 1/I_k): definite iff I_k is the largest or the smallest
+     moment; the linearisation has λ² = −ω₀²(I_k − I_i)(I_k − I_j)/(I_i I_j).
+
+   ``stable`` is True when the (sufficient) symbolic condition holds at the scene's numbers,
+   False when it fails and the linearisation has an eigenvalue with a positive real part (or
+   the condition is also necessary, as k₂ ≥ 0 is), None when marginal (equal within
+   ``integrable.TOLERANCE``), when the equilibrium does not exist at the scene's numbers, or
+   when the sufficient condition fails but the spectrum is on the imaginary axis. The
+   eigenvalues are those of the Euler–Poisson linearisation (L, n block) at the equilibrium, or
+   of the reduced β equation for steady precession.
+
+SymPy is imported here only (``import derive`` does not); the derivations are cached per
+process, so analysing a scene costs about a second warm.
+"""
+from __future__ import annotations
+
+import functools
+import json
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from . import integrable
+from .scene import load_scene
+
+#: A real part above this fraction of the spectrum's scale counts as growth (round-off in the
+#: eigenvalues of a Hamiltonian linearisation is far below it).
+EIGEN_TOLERANCE = 1e-7
+
+
+@dataclass
+class Equilibrium:
+    """One relative equilibrium: the JSON contract's ``kind``, ``axis``, ``condition``,
+    ``stable``, plus the condition in LaTeX, the scene's ``values`` and the ``eigenvalues``."""
+
+    kind: str
+    axis: int | None
+    condition: str
+    stable: bool | None
+    latex: str = ""
+    description: str = ""
+    method: str = ""
+    values: dict = field(default_factory=dict)
+    eigenvalues: list = field(default_factory=list)
+
+    def to_json(self) -> dict:
+        return {"kind": self.kind, "axis": self.axis, "condition": self.condition,
+                "stable": self.stable, "description": self.description, "method": self.method,
+                "values": self.values,
+                "eigenvalues": [[float(z.real), float(z.imag)] for z in self.eigenvalues]}
+
+
+@dataclass
+class Analysis:
+    scene: object
+    classification: integrable.Classification
+    integrals: list
+    proofs: dict
+    equilibria: list
+    sections: list  # (title, [markdown lines])
+
+    def to_json(self) -> dict:
+        c = self.classification
+        return {
+            "case": c.case,
+            "reason": c.reason,
+            "dissipative": c.dissipative,
+            "integrals": [{"name": i.name, "expression": i.expression,
+                           "proved": self.proofs[i.name].holds if i.name in self.proofs else None,
+                           **({"on": i.on} if i.on else {})} for i in self.integrals],
+            "equilibria": [e.to_json() for e in self.equilibria],
+        }
+
+    def to_markdown(self) -> str:
+        title = self.scene.title or self.scene.source
+        out = [f"# Analysis: {title}", "",
+               f"Scene `{self.scene.source}`. Every formula is derived by `derive` (SymPy) for this "
+               "body and these effects, then evaluated at the scene's numbers. Conventions: z-y-z "
+               "Euler angles, body principal axes (tilde), n = Rᵀẑ the upward vertical in body "
+               "axes, r_c the centre of mass from the pivot.", ""]
+        for heading, lines in self.sections:
+            out += [f"## {heading}", "", *lines, ""]
+        return "\n".join(out).rstrip() + "\n"
+
+
+# ---------------------------------------------------------------------------------------------
+# symbolic helpers
+
+
+def _sp():
+    import sympy as sp
+
+    return sp
+
+
+def _latex(expr) -> str:
+    sp = _sp()
+    from .rotations import ANGLES, RATES
+
+    names = {qd: rf"\dot{{{sp.latex(q)}}}" for q, qd in zip(ANGLES, RATES)}
+    for i in range(3):
+        for s in (sp.Symbol(f"L{i + 1}", real=True), sp.Symbol(f"n{i + 1}", real=True)):
+            names[s] = rf"{s.name[0]}_{{{i + 1}}}"
+        names[sp.Symbol(f"omega{i + 1}", real=True)] = rf"\tilde{{\omega}}_{{{i + 1}}}"
+    for c in ("cx", "cy", "cz"):
+        names[sp.Symbol(c, real=True)] = rf"c_{{{c[1]}}}"
+    return sp.latex(expr, symbol_names=names)
+
+
+def _num(x) -> float:
+    return float(x)
+
+
+@functools.lru_cache(maxsize=None)
+def _ep_model(symmetric: bool, effects: tuple):
+    from . import models
+
+    return models.build("euler-poisson", symmetric, effects)
+
+
+@functools.lru_cache(maxsize=None)
+def _ep_jacobian(symmetric: bool, effects: tuple):
+    """The (L, n) block of the Euler–Poisson Jacobian as a NumPy function of (y6, p)."""
+    sp = _sp()
+    m = _ep_model(symmetric, effects)
+    y = m.states[:6]
+    J = sp.Matrix(m.rhs[:6]).jacobian(sp.Matrix(y))
+    return sp.lambdify((y, m.params), J, "numpy"), m
+
+
+def _eigenvalues(scene, L, n) -> np.ndarray:
+    f, m = _ep_jacobian(scene.symmetric, scene.effects)
+    values = scene.param_values()
+    p = [values[name] for name in m.param_names]
+    J = np.array(f(list(L) + list(n), p), dtype=float)
+    return np.linalg.eigvals(J)
+
+
+def _grows(eig) -> bool:
+    eig = np.asarray(eig, dtype=complex)
+    scale = max(float(np.max(np.abs(eig))) if eig.size else 0.0, 1e-300)
+    return bool(np.max(eig.real) > EIGEN_TOLERANCE * scale)
+
+
+def _sign_tol(x: float, scale: float) -> int:
+    """+1, −1, or 0 when |x| ≤ TOLERANCE · scale (marginal)."""
+    if abs(x) <= integrable.TOLERANCE * abs(scale):
+        return 0
+    return 1 if x > 0 else -1
+
+
+@functools.lru_cache(maxsize=None)
+def _lagrangian(symmetric: bool, effects: tuple):
+    """(T, V, EulerLagrange) in z-y-z angles for the body and the conservative effects."""
+    from . import effects as fx
+    from .lagrangian import I1, I2, I3, EulerLagrange, kinetic_energy
+    from .rotations import ZYZ, trig_reduce
+
+    effs = fx.lookup(effects)
+    sym = fx.Symbols(effs)
+    moments = (I1, I1, I3) if symmetric else (I1, I2, I3)
+    T = trig_reduce(kinetic_energy(moments))
+    V = trig_reduce(fx.potential(effs, ZYZ.matrix(), sym))
+    return T, V, EulerLagrange(T - V)
+
+
+@functools.lru_cache(maxsize=None)
+def _routh():
+    """The symmetric top's Routh reduction (symbol l; l = 0 is the free symmetric body), the
+    steady-precession quadratic and the series of V_eff about β = 0 and π."""
+    sp = _sp()
+    from . import stability
+    from .lagrangian import p_alpha, p_gamma, I1, Mass, g, l
+    from .rotations import ANGLES, alpha_d, beta, gamma_d, trig_reduce
+
+    st = stability.sleeping_top()
+    red = st.reduction
+    system = red.system
+    Veff = red.effective_potential
+    # p_α as a function of α̇ at fixed p_γ (γ̇ eliminated): I₁ α̇ sin²β + p_γ cos β.
+    gd = sp.solve(sp.Eq(p_gamma, system.momentum(ANGLES[2])), gamma_d)[0]
+    pa = sp.factor(trig_reduce(system.momentum(ANGLES[0]).subs(gamma_d, gd)))
+    dV = sp.together(sp.diff(Veff, beta).subs(p_alpha, pa))
+    num = sp.factor(trig_reduce(sp.numer(dV)))
+    # The factor that holds α̇: the steady-precession quadratic (the others are powers of sin β).
+    quad = sp.Mul(*[f ** k for f, k in sp.factor_list(num)[1] if f.has(alpha_d)])
+    quad = sp.expand(quad)
+    if sp.Poly(quad, alpha_d).LC().could_extract_minus_sign():
+        quad = -quad
+    disc = sp.factor(sp.discriminant(quad, alpha_d))
+    d2V = sp.diff(Veff, beta, 2)
+    eps = sp.Symbol("epsilon", real=True)
+    # Hanging / inverted about β = π: p_α = −p_γ there (n = −ê₃ reverses the projection).
+    k2_pi = sp.factor(sp.series(Veff.subs(p_alpha, -p_gamma).subs(beta, sp.pi - eps), eps, 0, 4)
+                      .removeO().coeff(eps, 2))
+    return {"red": red, "Veff": Veff, "p_alpha_of_rate": pa, "quadratic": quad,
+            "discriminant": disc, "d2V": d2V, "k2_0": st.coefficient(2), "k2_pi": k2_pi,
+            "threshold": st.threshold, "sleeping": st}
+
+
+# ---------------------------------------------------------------------------------------------
+# the analysis
+
+
+def analyze(scene) -> Analysis:
+    """Analyse a scene (path, dict or Scene); raises SceneError on bad input."""
+    sc = load_scene(scene)
+    cls = integrable.classify(sc)
+    ints = integrable.integrals(cls.case, cls.dissipative)
+    proofs = {}
+    for i in ints:
+        case = cls.case if i in integrable.EXTRA.values() else "general"
+        proofs[i.name] = integrable.prove(case, i.name)
+    eqs = _equilibria(sc, cls)
+    sections = [_section_body(sc, cls), _section_energies(sc), _section_equations(sc),
+                _section_cyclic(sc), _section_integrals(sc, cls, ints, proofs),
+                _section_equilibria(eqs)]
+    return Analysis(sc, cls, ints, proofs, eqs, sections)
+
+
+def _axial(sc) -> bool:
+    """Gravity absent or its centre of mass on body axis 3 (within TOLERANCE)."""
+    p = integrable.parameters(sc)
+    r = math.sqrt(p["cx"] ** 2 + p["cy"] ** 2 + p["cz"] ** 2)
+    return math.hypot(p["cx"], p["cy"]) <= integrable.TOLERANCE * r or r == 0
+
+
+def _routh_applies(sc, cls) -> bool:
+    return sc.symmetric and _axial(sc) and not cls.dissipative and cls.case in ("euler", "lagrange")
+
+
+def _equilibria(sc, cls) -> list[Equilibrium]:
+    p = integrable.parameters(sc)
+    torque = cls.case != "euler" and p["g"] > 0 and p["M"] > 0
+    if cls.dissipative:
+        return _rest_equilibria(sc, p) if torque else []
+    if not torque:
+        out = [_free_rotation(sc, k) for k in range(3)]
+        if sc.symmetric:
+            out.append(_steady_precession(sc, p, gravity=False))
+        return out
+    if cls.case == "lagrange":
+        return [_lagrange_vertical(sc, p, "sleeping"), _lagrange_vertical(sc, p, "hanging"),
+                _steady_precession(sc, p, gravity=True)]
+    return _heavy_vertical(sc, p)
+
+
+def _free_rotation(sc, k: int) -> Equilibrium:
+    """Spin of a free body about principal axis k (0-based) at the scene's |ω̃(0)|."""
+    sp = _sp()
+    from .lagrangian import I1, I2, I3
+    from .stability import SteadySpin, omega0
+
+    Ivals = sc.body.moments
+    i, j = (k + 1) % 3, (k + 2) % 3
+    Isym = (I1, I2, I3)
+    lam2 = SteadySpin(k, Isym).eigenvalue_squared
+    w0 = float(np.linalg.norm(sc.initial.omega))
+    a = _sign_tol(Ivals[k] - Ivals[i], max(Ivals))
+    b = _sign_tol(Ivals[k] - Ivals[j], max(Ivals))
+    stable = None if a * b == 0 else (a * b > 0)
+    L = [0.0, 0.0, 0.0]
+    L[k] = Ivals[k] * w0
+    J = _free_jacobian(Ivals, L)
+    eig = np.linalg.eigvals(J)
+    if stable is False and not _grows(eig) and w0 > 0:
+        stable = None  # cannot happen for distinct moments; kept honest
+    Ik, Ii, Ij = Isym[k], Isym[i], Isym[j]
+    cond = f"(I{k + 1} - I{i + 1})*(I{k + 1} - I{j + 1}) > 0"
+    tex = (rf"({_latex(Ik)} - {_latex(Ii)})({_latex(Ik)} - {_latex(Ij)}) > 0"
+           rf"\quad\Leftrightarrow\quad \lambda^2 = {_latex(lam2)} < 0")
+    return Equilibrium(
+        "permanent-rotation", k + 1, cond, stable, tex,
+        f"free spin about principal axis {k + 1} (I{k + 1} the "
+        + {1: "largest or smallest", -1: "intermediate", 0: "equal to another"}[
+            0 if a * b == 0 else (1 if a * b > 0 else -1)] + " moment)",
+        "energy-Casimir: E - |L|^2/(2 I_k) has Hessian diag(1/I_i - 1/I_k, 1/I_j - 1/I_k) on the "
+        "perturbations; linearisation of Euler's equations",
+        {"omega0": w0, "lambda_squared": float(lam2.subs({I1: Ivals[0], I2: Ivals[1], I3: Ivals[2],
+                                                           omega0: w0}))},
+        list(eig))
+
+
+def _free_jacobian(I, L) -> np.ndarray:
+    """∂L̇/∂L of L̇ = L × I⁻¹L at L (numbers)."""
+    f, m = _ep_jacobian(False, ())
+    J = np.array(f(list(L) + [0.0, 0.0, 1.0], list(I)), dtype=float)
+    return J[:3, :3]
+
+
+def _lagrange_vertical(sc, p, kind: str) -> Equilibrium:
+    """Sleeping (centre of mass above the pivot) or hanging top of the Lagrange case, from the
+    series of V_eff about β = 0 (p_α = p_γ) or β = π (p_α = −p_γ)."""
+    sp = _sp()
+    from .lagrangian import I1, Mass, g, l, p_gamma
+
+    R = _routh()
+    lval = p["cz"]
+    pg = sc.body.I3 * sc.initial.omega[2]
+    # β = 0 puts the centre of mass at height l: above the pivot when l > 0.
+    at_zero = (kind == "sleeping") == (lval > 0)
+    k2 = R["k2_0"] if at_zero else R["k2_pi"]
+    subs = {I1: sc.body.I1, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg}
+    k2v = float(k2.subs(subs))
+    scale = pg * pg / (8 * sc.body.I1) + abs(p["M"] * p["g"] * lval) / 2
+    s = _sign_tol(k2v, scale)
+    stable = None if s == 0 else s > 0
+    threshold2 = sp.factor(R["threshold"] ** 2)  # 4 M g l I₁
+    if kind == "sleeping":
+        cond = f"p_gamma >= sqrt({sp.sstr(threshold2)})" if at_zero else \
+            f"p_gamma**2 >= -4*I1*M*g*l  (l < 0: the top is upright at beta = pi)"
+        tex = (rf"k_2 = {_latex(k2)} \ge 0 \;\Leftrightarrow\; p_\gamma \ge \sqrt{{{_latex(threshold2)}}}"
+               if at_zero else rf"k_2 = {_latex(k2)} \ge 0")
+    else:
+        cond = ("p_gamma**2 + 4*I1*M*g*l >= 0  (always, l > 0)" if not at_zero
+                else "p_gamma**2 - 4*I1*M*g*l >= 0  (always, l < 0)")
+        tex = rf"k_2 = {_latex(k2)} \ge 0"
+    nz = 1.0 if at_zero else -1.0
+    eig = _eigenvalues(sc, (0.0, 0.0, pg), (0.0, 0.0, nz))
+    if stable is False and not _grows(eig):
+        stable = None
+    where = "beta = 0" if at_zero else "beta = pi"
+    return Equilibrium(
+        kind, 3, cond, stable, tex,
+        f"spin p_gamma = I3 omega3 = {pg:.6g} about the vertical symmetry axis at {where}, centre "
+        f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot",
+        "series of V_eff(beta) about the pole with p_alpha = +-p_gamma: V_eff = V0 + k2 eps^2 + ...; "
+        "Euler-Poisson linearisation",
+        {"p_gamma": pg, "threshold": math.sqrt(abs(4 * p["M"] * p["g"] * lval * sc.body.I1)),
+         "k2": k2v},
+        list(eig))
+
+
+def _steady_precession(sc, p, gravity: bool) -> Equilibrium:
+    """Steady precession at the scene's tilt β₀ (symmetric body, centre of mass on axis 3)."""
+    sp = _sp()
+    from .lagrangian import I1, Mass, g, l, p_alpha, p_gamma
+    from .rotations import alpha_d, beta
+
+    R = _routh()
+    b0 = sc.initial.beta
+    pg = sc.body.I3 * sc.initial.omega[2]
+    lval = p["cz"] if gravity else 0.0
+    quad, disc = R["quadratic"], R["discriminant"]
+    subs = {I1: sc.body.I1, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg, beta: b0}
+    values = {"beta0": b0, "p_gamma": pg}
+    if abs(math.sin(b0)) < 1e-9:
+        return Equilibrium("steady-precession", 3, "I1*cos(beta0)*alpha_dot**2 - p_gamma*alpha_dot "
+                           "+ M*g*l = 0", None, _latex(sp.Eq(quad, 0)),
+                           "the scene's tilt is at a pole: no finite-tilt precession to evaluate",
+                           "dV_eff/dbeta = 0", values, [])
+    qv = sp.Poly(quad.subs(subs), alpha_d)
+    dv = float(disc.subs(subs))
+    coeffs = [float(c) for c in qv.all_coeffs()]
+    scale = max(abs(c) for c in coeffs) ** 2
+    roots = [float(r.real) for r in np.roots(coeffs) if abs(r.imag) <= 1e-12 * max(1, abs(r))] \
+        if dv >= -integrable.TOLERANCE * scale else []
+    values.update(discriminant=dv, alpha_dot_roots=sorted(roots),
+                  alpha_dot_scene=sc.initial.alpha_dot)
+    eig = []
+    curv = []
+    for ad in roots:
+        pa = float(R["p_alpha_of_rate"].subs({**subs, alpha_d: ad}))
+        c2 = float(R["d2V"].subs({**subs, p_alpha: pa}))
+        curv.append(c2)
+        eig += list(np.roots([1.0, 0.0, c2 / sc.body.I1]))
+    values["V_eff_second_derivative"] = curv
+    if not roots:
+        stable = None
+    elif all(_sign_tol(c, max(abs(x) for x in curv)) > 0 for c in curv):
+        stable = True
+    elif any(c < 0 for c in curv):
+        stable = False
+    else:
+        stable = None
+    text = (f"{sp.sstr(quad)} = 0; real alpha_dot iff {sp.sstr(disc)} >= 0; stable where "
+            "d2V_eff/dbeta2 > 0")
+    tex = (rf"{_latex(quad)} = 0,\quad \Delta = {_latex(disc)} \ge 0,\quad "
+           r"\partial^2_\beta V_\text{eff} > 0")
+    desc = (f"alpha_dot constant at the tilt beta0 = {b0:.6g} with p_gamma = {pg:.6g}: "
+            + (f"roots alpha_dot = {', '.join(f'{r:.6g}' for r in sorted(roots))}" if roots
+               else "no real root: no steady precession at this tilt"))
+    if not gravity:
+        desc += " (free symmetric body: every motion is a regular precession)"
+    return Equilibrium("steady-precession", 3, text, stable, tex, desc,
+                       "dV_eff/dbeta = 0 with p_alpha = I1 alpha_dot sin^2 beta + p_gamma cos beta; "
+                       "eigenvalues of the linearised beta equation", values, eig)
+
+
+def _vertical_condition(k: int, upright: bool) -> tuple[str, str]:
+    i, j = (k + 1) % 3 + 1, (k + 2) % 3 + 1
+    h = "" if upright else "-"
+    text = (f"omega0**2*(I{k + 1} - I{i}) > {h}M*g*|r_c| and omega0**2*(I{k + 1} - I{j}) > {h}M*g*|r_c| "
+            "(energy-Casimir, sufficient)")
+    tex = (rf"\omega_0^2(I_{k + 1} - I_{{{i}}}) > {h}Mg|r_c|,\quad "
+           rf"\omega_0^2(I_{k + 1} - I_{{{j}}}) > {h}Mg|r_c|")
+    return text, tex
+
+
+def _heavy_vertical(sc, p) -> list[Equilibrium]:
+    """Rotation about the vertical through the pivot with the centre of mass on it (any body):
+    about a principal axis k containing r_c at the scene's ω̃_k(0), else at rest."""
+    c = np.array([p["cx"], p["cy"], p["cz"]])
+    r = float(np.linalg.norm(c))
+    Mg = p["M"] * p["g"]
+    I = np.array(sc.body.moments)
+    axis = next((k for k in range(3)
+                 if np.hypot(*np.delete(c, k)) <= integrable.TOLERANCE * r), None)
+    out = []
+    for kind, upright in (("sleeping", True), ("hanging", False)):
+        h = 1.0 if upright else -1.0
+        if axis is None:
+            w0 = 0.0
+            u = c / r
+            text = ("at rest with the centre of mass " + ("above" if upright else "below")
+                    + " the pivot (no spin: r_c is on no principal axis); energy-Casimir: "
+                    + ("M g |r_c| < 0 fails" if upright else "V has a strict minimum, stable"))
+            tex = rf"\tilde\omega = 0,\ \tilde n = {'+' if upright else '-'}\hat r_c"
+            ec = None if upright else True
+        else:
+            w0 = float(sc.initial.omega[axis])
+            u = np.zeros(3)
+            u[axis] = 1.0 if c[axis] > 0 else -1.0
+            text, tex = _vertical_condition(axis, upright)
+            marg = [w0 * w0 * (I[axis] - I[m]) - h * Mg * r for m in range(3) if m != axis]
+            scale = w0 * w0 * I.max() + Mg * r
+            signs = [_sign_tol(x, scale) for x in marg]
+            ec = True if all(s > 0 for s in signs) else None
+        n = h * u  # the upward vertical in body axes: along r_c when upright
+        L = np.zeros(3)
+        if axis is not None:
+            L[axis] = I[axis] * w0
+        eig = _eigenvalues(sc, tuple(L), tuple(n))
+        stable = ec
+        if stable is None and _grows(eig):
+            stable = False
+        out.append(Equilibrium(
+            kind, None if axis is None else axis + 1, text, stable, tex,
+            ("spin omega0 = %.6g about principal axis %d held vertical, centre of mass %s the pivot"
+             % (w0, axis + 1, "above" if upright else "below")) if axis is not None else
+            f"at rest, centre of mass {'above' if upright else 'below'} the pivot",
+            "energy-Casimir (E + a L.n + b |n|^2 on the leaf; sufficient); instability from an "
+            "eigenvalue of the Euler-Poisson linearisation with positive real part",
+            {"omega0": w0, "r_c": r}, list(eig)))
+    return out
+
+
+def _rest_equilibria(sc, p) -> list[Equilibrium]:
+    """With a dissipative torque only the rest states are equilibria: hanging (stable: E
+    decreases, V has a strict minimum) and upright (unstable)."""
+    c = np.array([p["cx"], p["cy"], p["cz"]])
+    r = float(np.linalg.norm(c))
+    out = []
+    for kind, h in (("sleeping", 1.0), ("hanging", -1.0)):
+        n = h * c / r
+        eig = _eigenvalues(sc, (0.0, 0.0, 0.0), tuple(n))
+        stable = True if h < 0 else (False if _grows(eig) else None)
+        axis = next((k + 1 for k in range(3) if np.hypot(*np.delete(c, k)) <= integrable.TOLERANCE * r),
+                    None)
+        out.append(Equilibrium(
+            kind, axis, "at rest (damping -c omega decays any spin, so spinning states are not "
+                        "equilibria); " + ("V maximal: unstable" if h > 0 else "V minimal, E decreasing: stable"),
+            stable, rf"\tilde\omega = 0,\ \tilde n = {'+' if h > 0 else '-'}\hat r_c",
+            f"at rest, centre of mass {'above' if h > 0 else 'below'} the pivot",
+            "Lyapunov function E (dE/dt = -c |omega|^2); Euler-Poisson linearisation",
+            {"r_c": r}, list(eig)))
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# the document's sections
+
+
+def _section_body(sc, cls):
+    p = integrable.parameters(sc)
+    b = sc.body
+    lines = [f"Principal moments about the pivot: I1 = {b.I1:g}, I2 = {b.I2:g}, I3 = {b.I3:g} kg m²"
+             + (" (symmetric about axis 3)." if sc.symmetric else ".")]
+    if sc.gravity is not None:
+        lines.append(f"Gravity: M = {p['M']:g} kg, g = {p['g']:g} m/s², r_c = ({p['cx']:g}, "
+                     f"{p['cy']:g}, {p['cz']:g}) m.")
+    else:
+        lines.append("No gravity.")
+    if sc.damping is not None:
+        lines.append(f"Damping: torque −c ω̃ with c = {sc.damping.c:g} N m s.")
+    lines += ["", f"**Case: {cls.case}** — {cls.reason}. (Classified within the relative "
+                  f"tolerance `integrable.TOLERANCE` = {integrable.TOLERANCE:g}.)"]
+    return "Body, effects and integrable case", lines
+
+
+def _section_energies(sc):
+    sp = _sp()
+    T, V, system = _lagrangian(sc.symmetric, _conservative(sc))
+    from .lagrangian import I1, I2, I3
+
+    Lv = sp.symbols("L1:4", real=True)
+    moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
+    Tb = sum((Li ** 2 / (2 * m) for Li, m in zip(Lv, moments)), sp.S.Zero)
+    lines = [rf"$$ T = {_latex(Tb)} = \tfrac12\sum_i I_i\tilde\omega_i^2 $$",
+             "In z-y-z Euler angles:", "",
+             rf"$$ T = {_latex(T)} $$", rf"$$ V = {_latex(V)} $$",
+             rf"$$ L = T - V = {_latex(system.lagrangian)} $$"]
+    return "Kinetic and potential energy, Lagrangian", lines
+
+
+def _conservative(sc) -> tuple:
+    from . import effects as fx
+
+    return tuple(e.name for e in fx.lookup(sc.effects) if e.conservative)
+
+
+def _section_equations(sc):
+    sp = _sp()
+    m = _ep_model(sc.symmetric, sc.effects)
+    L, n = sp.Matrix(m.states[:3]), sp.Matrix(m.states[3:6])
+    lines = ["Euler–Poisson (L = I ω̃ about the pivot, n = Rᵀẑ), derived from the effects registry:", "",
+             rf"$$ \dot{{\tilde L}} = {_latex(sp.Matrix(m.rhs[:3]))},\quad "
+             rf"\dot{{\tilde n}} = {_latex(sp.Matrix(m.rhs[3:6]))} $$"]
+    _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
+    lines += ["", "Euler–Lagrange in z-y-z angles, 𝕄 q̈ = F"
+              + (" (conservative part; the damping torque adds Q = Bᵀτ̃)" if sc.damping is not None else "")
+              + ":", "",
+              rf"$$ \mathbb{{M}} = {_latex(system.mass_matrix)} $$",
+              rf"$$ F = {_latex(system.forcing)} $$"]
+    return "Equations of motion", lines
+
+
+def _section_cyclic(sc):
+    sp = _sp()
+    _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
+    cyc = system.cyclic
+    lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + "."]
+    from .rotations import ANGLES
+
+    for q in cyc:
+        lines.append(rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "
+                     rf"{_latex(system.momentum(q))} $$")
+    if sc.damping is not None:
+        lines.append("The damping torque breaks these conservation laws (p_α decays as "
+                     "d(L·n)/dt = −c ω̃·n).")
+    if sc.symmetric and _axial(sc) and ANGLES[2] in cyc and ANGLES[0] in cyc:
+        R = _routh()
+        lines += ["", "Routh reduction (α and γ cyclic) to the β degree of freedom:", "",
+                  rf"$$ E' = \tfrac12 I_1\dot\beta^2 + V_\text{{eff}}(\beta),\quad "
+                  rf"V_\text{{eff}} = {_latex(R['Veff'])} $$"]
+        if sc.gravity is None:
+            lines.append("(no gravity: set M g l = 0).")
+    else:
+        lines += ["", "No Routh reduction to one degree of freedom: γ is not cyclic (the body is "
+                      "not symmetric about axis 3 with the centre of mass on it); only α is "
+                      "eliminated, by p_α = L·n." if ANGLES[0] in cyc else "No cyclic coordinate."]
+    return "Cyclic coordinates, momenta, Routh reduction", lines
+
+
+def _section_integrals(sc, cls, ints, proofs):
+    lines = []
+    for i in ints:
+        pr = proofs.get(i.name)
+        lines.append(f"$$ {i.latex} $$")
+        if pr is None:
+            continue
+        if pr.factor is not None:
+            lines.append(rf"Proved: along the derived Euler–Poisson equations with the case's "
+                         rf"relations, $dG/dt = {_latex(pr.factor)}\,(\tilde L\cdot\tilde n)$: "
+                         rf"conserved on $\tilde L\cdot\tilde n = 0$.")
+        else:
+            lines.append("Proved: its time derivative along the derived Euler–Poisson equations "
+                         + ("(with the case's relations " + ", ".join(
+                             f"{k} = {v}" for k, v in integrable.RELATIONS[cls.case].items()) + ") "
+                            if i in integrable.EXTRA.values() else "")
+                         + f"simplifies to {'0' if pr.holds else _latex(pr.derivative)}.")
+        lines.append("")
+    if cls.dissipative:
+        lines.append("Damping: only |n|² = 1 survives.")
+    return "Integrals of the motion", lines
+
+
+def _section_equilibria(eqs):
+    lines = []
+    verdict = {True: "stable", False: "unstable", None: "undecided / marginal"}
+    for e in eqs:
+        lines += [f"### {e.kind}" + (f", axis {e.axis}" if e.axis else ""), "", e.description + ".", "",
+                  f"$$ {e.latex} $$", "", f"Method: {e.method}.", "",
+                  f"At the scene's numbers: **{verdict[e.stable]}**. "
+                  + ", ".join(f"{k} = {_fmt(v)}" for k, v in e.values.items()) + "."]
+        if len(e.eigenvalues):
+            lines += ["", "Eigenvalues: " + ", ".join(_fmt(z) for z in e.eigenvalues) + "."]
+        lines.append("")
+    if not eqs:
+        lines.append("None: the damping decays every motion to rest, in any orientation.")
+    return "Relative equilibria and their stability", lines
+
+
+def _fmt(v) -> str:
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_fmt(x) for x in v) + "]"
+    if isinstance(v, complex) or isinstance(v, np.complexfloating):
+        return f"{v.real:.4g}{v.imag:+.4g}i"
+    if isinstance(v, float):
+        return f"{v:.6g}"
+    return str(v)
+
+
+def render(scene, fmt: str = "markdown") -> str:
+    """The analysis as Markdown (LaTeX formulas) or JSON (the contract in docs/analyze.md)."""
+    a = analyze(scene)
+    if fmt == "json":
+        return json.dumps(a.to_json(), indent=2)
+    return a.to_markdown()
