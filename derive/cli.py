@@ -37,6 +37,15 @@ def _cmd_generate(args) -> int:
         for rel in stale:
             print(f"stale: {out / rel}")
         return EXIT_DIFF if stale else EXIT_OK
+    if args.out and out.resolve() != GENERATED.resolve():
+        # codegen.write removes files it no longer produces: in a directory of the user's
+        # choosing that would delete their files. Refuse instead of deleting.
+        foreign = [rel for rel in codegen.stale(files, out) if rel not in files]
+        if foreign:
+            shown = ", ".join(foreign[:3]) + (f" and {len(foreign) - 3} more" if len(foreign) > 3 else "")
+            print(f"error: derive generate: --out: {out} holds {len(foreign)} files derive does not "
+                  f"generate ({shown}); name an empty or new directory", file=sys.stderr)
+            return EXIT_INPUT
     written = codegen.write(files, out)
     print(f"generated {len(files)} files in {out} ({len(written)} changed)")
     if args.verify:

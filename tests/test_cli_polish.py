@@ -115,3 +115,20 @@ def test_json_summary_is_one_line_matching_the_outputs(capsys, scene, tmp_path):
     assert s["rtol"] == 1e-10 and s["atol"] == 1e-12
     assert s["wall_time"] > 0
     assert s["outputs"] == {"npz": str(npz), "png": None}
+
+
+def test_generate_out_never_deletes_files_it_did_not_generate(capsys, tmp_path, monkeypatch):
+    from derive import codegen
+
+    files = {"c/m.c": "int x;\n", "m.md": "# m\n"}
+    monkeypatch.setattr(codegen, "generate_all", lambda: dict(files))
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    code, _, err = _run(capsys, "generate", "--out", out)
+    assert code == 2 and err.count("\n") == 1 and "notes.txt" in err
+    assert (out / "notes.txt").read_text() == "mine" and not (out / "m.md").exists()
+    (out / "notes.txt").unlink()
+    code, stdout, err = _run(capsys, "generate", "--out", out)
+    assert code == 0, err
+    assert (out / "c" / "m.c").read_text() == "int x;\n"
