@@ -110,6 +110,13 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
             "outputs": {"npz": npz, "png": png}}
 
 
+def _cmd_analyze(args) -> int:
+    from .analysis import render
+
+    print(render(args.scene, args.format), end="" if args.format == "markdown" else "\n")
+    return EXIT_OK
+
+
 def _cmd_bench(args) -> int:
     from . import bench
 
@@ -212,6 +219,13 @@ def parser() -> argparse.ArgumentParser:
                         "energy_drift (max |E - E0| / |E0|), wall_time (s), samples, t_end, rtol, "
                         "atol, outputs")
     s.set_defaults(func=_cmd_simulate)
+
+    a = sub.add_parser("analyze", help="the lecture's analysis for a scene's body: energies, equations, "
+                                       "cyclic coordinates, integrable case, equilibria and stability")
+    a.add_argument("scene", help="scene file (TOML)")
+    a.add_argument("--format", choices=("markdown", "json"), default="markdown",
+                   help="markdown (LaTeX formulas, default) or json (the contract in docs/analyze.md)")
+    a.set_defaults(func=_cmd_analyze)
 
     b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")
     b.add_argument("-o", "--out", default="bench-out", help="output directory")
