@@ -1,0 +1,367 @@
+"""Lie–Poisson splitting integrators for a rigid body with a fixed point, rendered into C.
+
+For the Euler–Poisson formulation, y = (L, n, e) in body axes (L = I ω̃ about the pivot,
+n = Rᵀẑ the upward vertical, e = Rᵀx̂), the Hamiltonian splits into two parts whose flows are
+known exactly:
+
+    H = H_T + H_V,   H_T = Σ L_i² / (2 I_i),   H_V = M g n · r_c.
+
+* ``kick`` (flow of H_V over τ): n and e are fixed, L ← L + τ M g n × r_c.
+* ``free`` (flow of H_T over τ), L̇ = L × ω̃, ṅ = n × ω̃, ė = e × ω̃, ω̃ = I⁻¹L:
+  for I₁ = I₂, H_T = |L|²/(2I₁) + (1/I₃ − 1/I₁) L₃²/2, two commuting flows, each a rotation
+  about a fixed axis (n, e about L by −|L|τ/I₁; then L, n, e about body axis 3 by
+  −(1/I₃ − 1/I₁) L₃ τ), so their composition is the exact flow; for three distinct moments the
+  exact flow with Jacobi elliptic functions — L(t) from the elliptic solution of Euler's
+  equations, n and e turned by the body's attitude change over the step, whose angle about the
+  invariable direction is an elliptic integral of the third kind (Celledoni, Fassò, Säfström &
+  Zanna, SIAM J. Sci. Comput. 30 (2008) 2084; the formulas are those of
+  :func:`derive.exact.free_asymmetric`, restarted from the current state at every step, with
+  the C port of :mod:`derive.elliptic` in ``templates/c/elliptic.h.j2``).
+
+A method composes Strang steps S(γh) = kick(γh/2) ∘ free(γh) ∘ kick(γh/2) with the weights γ
+of a symmetric composition (:data:`COMPOSITIONS`, exact data like :mod:`derive.tableaux`;
+the C literals are the correctly rounded doubles); adjacent kicks are merged. Every sub-flow
+turns n and e by an orthogonal rotation and changes L by a multiple of n × r_c ⟂ n, so
+|n| = |e| = 1, n·e = 0 and L·n stay at round-off for any h, and the method is a Poisson
+(symplectic) map: the energy error stays bounded, O(hᵖ), over long runs.
+
+The generated C API (``<prefix>_splitting.h``) is that of the fixed-step solvers::
+
+    int M_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
+                           double h, double *y_out, derive_stats *st);
+    int M_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
+                                 const double *t_out, long n_out, double h,
+                                 double *y_out, derive_stats *st);
+"""
+from __future__ import annotations
+
+import ctypes
+import time
+from dataclasses import dataclass
+from fractions import Fraction as F
+
+import mpmath
+import numpy as np
+
+from .render import render
+
+# --------------------------------------------------------------------------------------------
+# compositions (exact data)
+
+
+def _mp(x) -> F:
+    """An mpmath number as a Fraction (50 significant digits)."""
+    return F(mpmath.nstr(x, 50, min_fixed=-1, max_fixed=1))
+
+
+@dataclass(frozen=True)
+class Composition:
+    """A symmetric composition S(γ₁h) ∘ … ∘ S(γ_s h) of a symmetric second-order method S.
+
+    ``gammas`` are exact (Fractions: rational, or 50-digit values of the algebraic numbers;
+    published decimals where the method is known only numerically). ``order`` is the classical
+    order of the composition."""
+
+    name: str
+    order: int
+    gammas: tuple[F, ...]
+    reference: str = ""
+
+    def __post_init__(self):
+        g = self.gammas
+        if g != tuple(reversed(g)):
+            raise ValueError(f"{self.name}: composition weights must be symmetric")
+        if abs(sum(g) - 1) > F(1, 10**24):
+            raise ValueError(f"{self.name}: weights must sum to 1")
+
+    @property
+    def stages(self) -> int:
+        return len(self.gammas)
+
+    def ops(self) -> list[tuple[str, F]]:
+        """The step as exact sub-flows: ("kick", c) and ("free", c), time c·h each; the kicks of
+        adjacent Strang steps merged."""
+        g = self.gammas
+        out: list[tuple[str, F]] = [("kick", g[0] / 2)]
+        for i, gi in enumerate(g):
+            out.append(("free", gi))
+            out.append(("kick", (gi + (g[i + 1] if i + 1 < len(g) else 0)) / 2))
+        return out
+
+
+def _triple_jump() -> tuple[F, ...]:
+    with mpmath.workdps(60):
+        g1 = 1 / (2 - mpmath.cbrt(2))
+        return (_mp(g1), _mp(1 - 2 * g1), _mp(g1))
+
+
+def _mclachlan5() -> tuple[F, ...]:
+    """McLachlan's 5-stage order-4 weights: γ₁ = γ₅ = 0.28, γ₂ = γ₄ the root near 0.6255 of
+    2(γ₁³ + γ₂³) + (1 − 2γ₁ − 2γ₂)³ = 0 (the order-4 condition Σγ³ = 0), γ₃ = 1 − 2(γ₁ + γ₂)."""
+    with mpmath.workdps(60):
+        g1 = mpmath.mpf(28) / 100
+        g2 = mpmath.findroot(lambda x: 2 * (g1**3 + x**3) + (1 - 2 * g1 - 2 * x) ** 3,
+                             mpmath.mpf("0.6254664"))
+        return tuple(_mp(x) for x in (g1, g2, 1 - 2 * g1 - 2 * g2, g2, g1))
+
+
+# Kahan & Li's s9odr6a, as published (26 digits) in Hairer, Lubich & Wanner, Geometric
+# Numerical Integration, 2nd ed., eq. (V.3.11).
+_KL9 = tuple(F(x) for x in ("0.39216144400731413927925056", "0.33259913678935943859974864",
+                           "-0.70624617255763935980996482", "0.08221359629355080023149045"))
+
+COMPOSITIONS: dict[str, Composition] = {c.name: c for c in (
+    Composition("strang", 2, (F(1),), "G. Strang, SIAM J. Numer. Anal. 5 (1968) 506"),
+    Composition("triple-jump", 4, _triple_jump(),
+                "H. Yoshida, Phys. Lett. A 150 (1990) 262; M. Suzuki, Phys. Lett. A 146 (1990) 319"),
+    Composition("mclachlan-s5", 4, _mclachlan5(),
+                "R. I. McLachlan, SIAM J. Sci. Comput. 16 (1995) 151"),
+    Composition("kahan-li-s9", 6,
+                _KL9 + (F("0.79854399093482996339895035"),) + tuple(reversed(_KL9)),
+                "W. Kahan & R.-C. Li, Math. Comp. 66 (1997) 1089, s9odr6a"),
+)}
+
+
+@dataclass(frozen=True)
+class SplittingMethod:
+    """A registered splitting method: a composition of the exact sub-flows. Driver ``fixed``:
+    its one C parameter is the maximum step ``h``."""
+
+    name: str
+    composition: Composition
+    summary: str
+    driver: str = "fixed"
+
+    @property
+    def order(self) -> int:
+        return self.composition.order
+
+    @property
+    def params(self) -> tuple[tuple[str, str], ...]:
+        return (("double", "h"),)
+
+
+METHODS: dict[str, SplittingMethod] = {m.name: m for m in (
+    SplittingMethod("splitting2", COMPOSITIONS["strang"],
+                    "Lie-Poisson splitting, Strang (exact free flow and gravity kick), order 2, fixed step"),
+    SplittingMethod("splitting4", COMPOSITIONS["mclachlan-s5"],
+                    "Lie-Poisson splitting, McLachlan's 5-stage composition, order 4, fixed step"),
+    SplittingMethod("splitting6", COMPOSITIONS["kahan-li-s9"],
+                    "Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step"),
+)}
+
+
+# --------------------------------------------------------------------------------------------
+# which models
+
+
+_GRAVITY = {"gravity": "axial", "gravity_general": "general"}
+
+
+def applicable(model) -> str | None:
+    """None if the splitting methods can integrate ``model``, else the reason: they need the
+    Euler–Poisson formulation and conservative effects whose flow is an exact kick (gravity,
+    axial or general); a non-conservative effect (damping) has no Hamiltonian to split."""
+    if model.formulation != "euler-poisson":
+        return (f"the splitting methods need the 'euler-poisson' formulation, "
+                f"not {model.formulation!r}")
+    bad = [e for e in model.effects if e not in _GRAVITY]
+    if bad:
+        return f"the splitting methods need a conservative body: the effect {bad[0]!r} is not a gravity kick"
+    if len(model.effects) > 1:
+        return "the splitting methods take at most one gravity effect"
+    return None
+
+
+def _context(model, names) -> dict:
+    why = applicable(model)
+    if why:
+        raise ValueError(why)
+    pn = model.param_names
+    idx = {name: pn.index(name) for name in pn}
+    idx["I2"] = idx.get("I2", idx["I1"])  # symmetric body: I2 = I1
+    gravity = _GRAVITY[model.effects[0]] if model.effects else "none"
+    methods = []
+    for name in names:
+        m = METHODS[name]
+        ops = [{"kind": k, "c": float(c)} for k, c in m.composition.ops() if c != 0]
+        methods.append({"name": m.name, "summary": m.summary, "order": m.order,
+                        "composition": m.composition.name, "stages": m.composition.stages,
+                        "ops": ops, "kicks": sum(op["kind"] == "kick" for op in ops)})
+    return {"prefix": model.name, "symmetric": model.symmetric, "gravity": gravity,
+            "idx": idx, "methods": methods}
+
+
+def render_splitting(model, methods: list[str] | None = None) -> dict[str, str]:
+    """``<name>_splitting.h``, ``<name>_splitting.c`` and (three distinct moments) the shared
+    ``derive_elliptic.h`` for an Euler–Poisson ``model``. The C includes ``<name>_solvers.h``
+    (``derive_stats``, the ``DERIVE_*`` codes, the model header) and needs nothing else from
+    the model: it reads the parameters by their names in ``model.param_names``."""
+    names = list(METHODS) if methods is None else list(methods)
+    for n in names:
+        if n not in METHODS:
+            raise ValueError(f"unknown splitting method {n!r}; known: {', '.join(METHODS)}")
+    ctx = _context(model, names)
+    files = {f"{model.name}_splitting.h": render("c/splitting.h.j2", **ctx),
+             f"{model.name}_splitting.c": render("c/splitting.c.j2", **ctx)}
+    if not model.symmetric:
+        files["derive_elliptic.h"] = render("c/elliptic.h.j2")
+    return files
+
+
+# --------------------------------------------------------------------------------------------
+# compiled: the splitting solvers beside the model's own
+
+
+def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], str]:
+    """Every C file of the model, its registered solvers and its splitting solvers, and the
+    name of the one translation unit that includes the .c files."""
+    from .codegen import model_sources
+
+    files = {k[2:]: v for k, v in model_sources(model).items() if k.startswith("c/")}
+    files.update(render_splitting(model, methods))
+    unity = f"{model.name}_split_unity.c"
+    files[unity] = "".join(f'#include "{n}"\n' for n in
+                           (f"{model.name}.c", f"{model.name}_solvers.c", f"{model.name}_splitting.c"))
+    return files, unity
+
+
+class Splitter:
+    """A compiled Euler–Poisson model with its splitting solvers (``solve``) and, as
+    ``kernel`` (:class:`derive.integrate.Kernel`), the registered ones (dop853, gauss4, …)."""
+
+    def __init__(self, model, flags=None):
+        from .cbuild import DEFAULT_FLAGS, compile_library
+        from .integrate import STATS_DTYPE, Kernel
+
+        files, unity = sources(model)
+        self.model = model
+        self.lib = compile_library(f"{model.name}_split", files, unity,
+                                   DEFAULT_FLAGS if flags is None else flags)
+        self.kernel = Kernel(self.lib, model.name)
+        self._stats = STATS_DTYPE
+        f64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
+        st = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
+        self._fns = {}
+        for name in METHODS:
+            fn = getattr(self.lib, f"{model.name}_solve_{name}")
+            fn.argtypes = [f64, f64, f64, ctypes.c_long, ctypes.c_double, f64, st]
+            fn.restype = ctypes.c_int
+            bf = getattr(self.lib, f"{model.name}_solve_batch_{name}")
+            bf.argtypes = [ctypes.c_long, f64, f64, f64, ctypes.c_long, ctypes.c_double, f64, st]
+            bf.restype = ctypes.c_int
+            self._fns[name] = (fn, bf)
+
+    def solve(self, method: str, y0, p, t_out, h: float):
+        """(y at every t_out, the derive_stats record) for one trajectory."""
+        t = np.ascontiguousarray(t_out, dtype=np.float64)
+        y = np.full((t.size, 9), np.nan)
+        st = np.zeros(1, dtype=self._stats)
+        self._fns[method][0](np.ascontiguousarray(y0, dtype=np.float64),
+                             np.ascontiguousarray(p, dtype=np.float64), t, t.size, float(h), y, st)
+        return y, st[0]
+
+    def solve_batch(self, method: str, y0s, ps, t_out, h: float):
+        """(y[b, k], stats[b]) for n_batch trajectories."""
+        t = np.ascontiguousarray(t_out, dtype=np.float64)
+        y0s = np.ascontiguousarray(y0s, dtype=np.float64)
+        n = y0s.shape[0]
+        ps = np.ascontiguousarray(np.broadcast_to(np.asarray(ps, dtype=np.float64),
+                                                  (n, len(self.model.params))))
+        y = np.full((n, t.size, 9), np.nan)
+        st = np.zeros(max(n, 1), dtype=self._stats)
+        self._fns[method][1](n, y0s, ps, t, t.size, float(h), y, st)
+        return y, st[:n]
+
+
+def state(inertia, omega, R) -> np.ndarray:
+    """The Euler–Poisson state (L, n, e) from the moments, ω̃ (body axes) and R (body → inertial):
+    L = I ω̃, n = Rᵀẑ (third row of R), e = Rᵀx̂ (first row)."""
+    R = np.asarray(R, dtype=float)
+    return np.concatenate([np.asarray(inertia, float) * np.asarray(omega, float), R[2], R[0]])
+
+
+def energy(y, inertia, mg_rc=(0.0, 0.0, 0.0)) -> np.ndarray:
+    """H = Σ L_i²/(2 I_i) + M g n·r_c along y[..., 9] (``mg_rc`` = M g r_c)."""
+    y = np.asarray(y)
+    return (0.5 * np.sum(y[..., 0:3] ** 2 / np.asarray(inertia, float), axis=-1)
+            + y[..., 3:6] @ np.asarray(mg_rc, float))
+
+
+# --------------------------------------------------------------------------------------------
+# measurement (reported by the bench, never asserted on time)
+
+
+def bench_energy(model=None, p=None, y0=None, periods: float = 1e4, period: float | None = None,
+                 target: float = 1e-8, methods=("splitting4", "dop853", "gauss4"),
+                 repeat: int = 3) -> dict:
+    """Cost to reach a relative energy error ``target`` over ``periods`` periods, per method.
+
+    Default body: the heavy asymmetric top with an off-axis centre of mass
+    (I = (1, 1.5, 2) kg m², M g = 9.81 N, r_c = (0.05, 0.02, 0.1) m), started tilted and spinning;
+    ``period`` defaults to 2π/|ω̃₀|. For each method the step (splitting, Gauss) or rtol
+    (DOP853) is searched by bisection on a log scale for the cheapest setting whose maximum
+    relative energy error over the run (sampled at 20 points per period) is ≤ ``target``; its
+    wall time is the best of ``repeat`` runs. Returns {method: {"setting", "error", "seconds",
+    "nfev"}} plus "ratio_dop853" = seconds(dop853) / seconds(splitting4).
+    """
+    from . import models
+    from .exact import euler_matrix
+
+    if model is None:
+        model = models.build("euler-poisson", False, ("gravity_general",))
+        p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
+        y0 = state(p[:3], (0.3, -0.2, 12.0), euler_matrix(0.1, 0.6, 0.2))
+    sp = Splitter(model)
+    pn = model.param_names
+    inertia = [p[pn.index("I1")], p[pn.index("I2" if "I2" in pn else "I1")], p[pn.index("I3")]]
+    if "cx" in pn:
+        rc = [p[pn.index(k)] for k in ("cx", "cy", "cz")]
+    elif "l" in pn:
+        rc = [0.0, 0.0, p[pn.index("l")]]
+    else:
+        rc = [0.0, 0.0, 0.0]
+    mg = p[pn.index("M")] * p[pn.index("g")] if "M" in pn else 0.0
+    mg_rc = mg * np.asarray(rc)
+    if period is None:
+        period = 2 * np.pi / np.linalg.norm(y0[:3] / np.asarray(inertia))
+    t = np.linspace(0.0, periods * period, int(20 * periods) + 1)
+    e0 = float(energy(y0, inertia, mg_rc))
+
+    def run(method, setting):
+        t0 = time.perf_counter()
+        if method in METHODS:
+            y, st = sp.solve(method, y0, p, t, setting)
+            ok = st["status"] == 0
+            nfev = int(st["nfev"])
+        else:
+            kw = {"rtol": setting, "atol": setting * 1e-2} if method == "dop853" else {"h": setting}
+            sol = sp.kernel.solve(method, y0, p, t, check=False, **kw)
+            y, ok, nfev = sol.y, sol.success, sol.nfev
+        dt = time.perf_counter() - t0
+        err = float(np.max(np.abs(energy(y, inertia, mg_rc) - e0)) / abs(e0)) if ok else np.inf
+        return err, dt, nfev
+
+    out = {}
+    for method in methods:
+        # larger setting = cheaper; bisect log(setting) for the largest one meeting the target.
+        lo, hi = (1e-14, 1e-3) if method == "dop853" else (period * 1e-4, period * 0.5)
+        best = None
+        for _ in range(14):
+            mid = float(np.sqrt(lo * hi))
+            err, _, _ = run(method, mid)
+            if err <= target:
+                best, lo = mid, mid
+            else:
+                hi = mid
+            if hi / lo < 1.15:
+                break
+        if best is None:
+            out[method] = {"setting": None, "error": None, "seconds": None, "nfev": None}
+            continue
+        runs = [run(method, best) for _ in range(repeat)]
+        out[method] = {"setting": best, "error": runs[0][0],
+                       "seconds": min(r[1] for r in runs), "nfev": runs[0][2]}
+    s4, dp = out.get("splitting4", {}).get("seconds"), out.get("dop853", {}).get("seconds")
+    out["ratio_dop853"] = dp / s4 if s4 and dp else None
+    return out
