@@ -9,8 +9,8 @@ small, and each caller degrades to "unavailable (<why>)" in the report if one br
   to time the C solve alone (the "solve" part of a `simulate` call) and the raw C batch loop;
 * :func:`heavy_top_expressions` — the SymPy right-hand side of the heavy top, for the
   ``sympy.lambdify`` comparison;
-* :data:`PHASES_SCRIPT` — a fresh process that times derivation, code generation and
-  compilation of one scene's model separately.
+* :data:`DERIVE_SCRIPT` — a fresh process that times the SymPy derivation and the code
+  generation of one scene's model.
 """
 from __future__ import annotations
 
@@ -63,31 +63,19 @@ def heavy_top_expressions():
     return tuple(m.states), tuple(m.params), tuple(m.rhs)
 
 
-#: Run in a fresh interpreter: ``python -c PHASES_SCRIPT <scene file or JSON> <json overrides>``; prints one
-#: JSON line of seconds per phase (None where a phase could not be isolated).
-PHASES_SCRIPT = r"""
+#: Run in a fresh interpreter: ``python -c DERIVE_SCRIPT <scene file or JSON>``; prints one JSON
+#: line: seconds of the SymPy derivation of the scene's model and of its code generation (what a
+#: model that is not in generated/ or the cache costs before anything is compiled).
+DERIVE_SCRIPT = r"""
 import json, sys, time
-t0 = time.perf_counter()
-import derive
-t1 = time.perf_counter()
-path, over = sys.argv[1], json.loads(sys.argv[2])
-path = json.loads(path) if path.startswith("{") else path  # a scene as a dict, or a file
-out = {"import": t1 - t0, "derivation": None, "codegen": None, "compilation": None}
-try:
-    from derive import simulation as sim
-    from derive.scene import load_scene
-    sc = load_scene(path, **over)
-    key = (sim.choose_formulation(sc), sc.symmetric, sim.effect_names(sc))
-    a = time.perf_counter(); sim.model_for(*key)
-    b = time.perf_counter(); sim.sources_for(*key)
-    c = time.perf_counter(); sim.kernel_for(*key)
-    d = time.perf_counter()
-    out.update(derivation=b - a, codegen=c - b, compilation=d - c)
-except Exception as exc:  # internals moved: the totals below still hold
-    out["phases_error"] = f"{type(exc).__name__}: {exc}"
-e = time.perf_counter(); derive.simulate(path, **over)
-f = time.perf_counter(); derive.simulate(path, **over)
-g = time.perf_counter()
-out.update(first_simulate=f - e, second_simulate=g - f, first_call_total=f - t1)
-print(json.dumps(out))
+arg = sys.argv[1]
+scene = json.loads(arg) if arg.startswith("{") else arg
+from derive import simulation as sim
+from derive.scene import load_scene
+sc = load_scene(scene)
+key = (sim.choose_formulation(sc), sc.symmetric, sim.effect_names(sc))
+a = time.perf_counter(); sim.model_for(*key)
+b = time.perf_counter(); sim.sources_for(*key)
+c = time.perf_counter()
+print(json.dumps({"derivation": b - a, "codegen": c - b}))
 """

@@ -88,27 +88,27 @@ def targets_section(results: dict) -> list[str]:
             L.append(f"| {r['label']} | {r['rtol']:.3g} | {_t(r['time'])} | {_e(r['error'])} | {r['nfev']:,} | "
                      f"{reached} | {r['ratio']:.3g}× |")
         L.append("")
-        L += ["Where derive's time goes (reference scene). Derivation, code generation and compilation "
-              "in a fresh process (`import derive` excluded), with an empty compile cache (cold) and "
-              "with the cache of a previous run (warm); per-call overhead = a warm `simulate` call minus "
-              "its C solve alone (`Kernel.solve`: scene → state, parameters, outputs).", "",
-              "| condition | derivation | code generation | compilation / load | first `simulate` | "
-              "first call in all | per-call overhead | solve (C) | warm `simulate` |",
-              "|---|---|---|---|---|---|---|---|---|"]
-        for p in t.get("phases") or []:
-            if "error" in p:
-                L.append(f"| {p['condition']} | failed: {p['error']} ||||||||")
-                continue
-            L.append(f"| {p['condition']} | {_t(p.get('derivation'))} | {_t(p.get('codegen'))} | "
-                     f"{_t(p.get('compilation'))} | {_t(p.get('first_simulate'))} | {_t(p.get('first_call_total'))} | "
-                     f"{_t(o.get('overhead'))} | {_t(o.get('solve'))} | {_t(o['time'])} |")
-        if not t.get("phases"):
-            L.append(f"| in-process, warm | — | — | — | — | — | {_t(o.get('overhead'))} | {_t(o.get('solve'))} | "
-                     f"{_t(o['time'])} |")
-        if any("phases_error" in p for p in t.get("phases") or []):
-            L.append("")
-            L.append("Phases not isolated: " + "; ".join(p["phases_error"] for p in t["phases"] if "phases_error" in p))
-        L.append("")
+        ph = t.get("phases") or {}
+        cold, warm, der = (ph.get(k) or {} for k in ("cold", "warm", "derive"))
+
+        def cell(d, k):
+            return f"failed: {d['error']}" if "error" in d else _t(d.get(k))
+
+        L += ["Where derive's time goes (reference scene):", "",
+              "| part | time | how it is measured |", "|---|---|---|",
+              f"| `import derive` | {cell(warm, 'import')} | fresh process |",
+              f"| derivation (SymPy) | {cell(der, 'derivation')} | fresh process, `models` build of the scene's "
+              "model (the cost of a model not in `generated/` or the cache) |",
+              f"| code generation | {cell(der, 'codegen')} | the same process: CSE + templates |",
+              f"| compilation | {_t(ph.get('compilation'))} | first `simulate` in a fresh process with an empty "
+              f"`DERIVE_CACHE` ({cell(cold, 'first_simulate')}) minus the same with the cache filled "
+              f"({cell(warm, 'first_simulate')}) |",
+              f"| per-call overhead | {_t(o.get('overhead'))} | a warm `simulate` minus its C solve "
+              "(scene validation, formulation choice, state maps, outputs) |",
+              f"| solve (C) | {_t(o.get('solve'))} | `Kernel.solve` of the same model and inputs |",
+              f"| = warm `simulate` | {_t(o['time'])} | in-process, median |", ""]
+        if "solve_error" in o:
+            L += [f"C solve not isolated: {o['solve_error']}", ""]
 
     fc, ba, pr, la = (t.get(k) or {} for k in ("fixed_cost", "batch", "processes", "lambdify"))
     L += ["### Fixed costs, batch, processes, NumPy", ""]

@@ -155,25 +155,47 @@ def reference_scene(cfg, fams) -> dict:
                               None)}
 
 
-def phases(cfg) -> list[dict]:
-    """Derivation, code generation and compilation of the reference scene's model in fresh
-    processes: an empty ``DERIVE_CACHE`` (cold) and the default cache after a run (warm)."""
+#: A fresh process's first and second ``derive.simulate`` (``import derive`` timed apart).
+FIRST_CALL_SCRIPT = r"""
+import json, sys, time
+t0 = time.perf_counter()
+import derive
+t1 = time.perf_counter()
+arg = sys.argv[1]
+scene = json.loads(arg) if arg.startswith("{") else arg
+derive.simulate(scene)
+t2 = time.perf_counter()
+derive.simulate(scene)
+t3 = time.perf_counter()
+print(json.dumps({"import": t1 - t0, "first_simulate": t2 - t1, "second_simulate": t3 - t2}))
+"""
+
+
+def _fresh(script: str, arg: str, env: dict, cwd: str) -> dict:
+    out = subprocess.run([sys.executable, "-c", script, arg], capture_output=True, text=True, env=env, cwd=cwd)
+    if out.returncode != 0:
+        return {"error": (out.stderr.strip().splitlines() or ["?"])[-1][:200]}
+    return json.loads(out.stdout.strip().splitlines()[-1])
+
+
+def phases(cfg) -> dict:
+    """Where a first call's time goes, in fresh processes (reference scene): the first and
+    second ``simulate`` with an empty ``DERIVE_CACHE`` (cold) and with a filled one (warm);
+    compilation = cold first call − warm first call; and, apart, the SymPy derivation and code
+    generation of the model (`bench_internals.DERIVE_SCRIPT`)."""
     from . import bench_internals as bi
 
-    data = reference_data(cfg.ref_t_end)
-    rows = []
-    for cond in ("cold", "warm"):
-        env = dict(os.environ)
-        with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
-            if cond == "cold":
-                env["DERIVE_CACHE"] = tmp
-            out = subprocess.run([sys.executable, "-c", bi.PHASES_SCRIPT, json.dumps(data), "{}"],
-                                 capture_output=True, text=True, env=env, cwd=tmp)
-        if out.returncode != 0:
-            rows.append({"condition": cond, "error": (out.stderr.strip().splitlines() or ["?"])[-1]})
-        else:
-            rows.append({"condition": cond, **json.loads(out.stdout.strip().splitlines()[-1])})
-    return rows
+    arg = json.dumps(reference_data(cfg.ref_t_end))
+    out = {}
+    with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
+        cold_env = dict(os.environ, DERIVE_CACHE=tmp)
+        out["cold"] = _fresh(FIRST_CALL_SCRIPT, arg, cold_env, tmp)
+        out["warm"] = _fresh(FIRST_CALL_SCRIPT, arg, cold_env, tmp)  # the same cache, now filled
+        out["derive"] = _fresh(bi.DERIVE_SCRIPT, arg, dict(os.environ, DERIVE_CACHE=tmp), tmp)
+    c, w = out["cold"], out["warm"]
+    if "error" not in c and "error" not in w:
+        out["compilation"] = c["first_simulate"] - w["first_simulate"]
+    return out
 
 
 # ---------------------------------------------------------------------------------------------
@@ -314,7 +336,7 @@ def run(cfg, fams) -> dict:
     with tqdm(total=6, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
-        out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else []
+        out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
         bar.update()
         out["fixed_cost"] = _guard("fixed cost", fixed_cost, cfg)
         bar.update()
