@@ -267,10 +267,16 @@ def _general_model():
 
 
 def _symbols():
+    """(model, {name: parameter symbol}, L, n): L as the model gives it — its state (L1, L2, L3)
+    or, when the model's state is the body angular velocity, (I1 ω̃1, I2 ω̃2, I3 ω̃3)."""
     m = _general_model()
     p = {s.name: s for s in m.params}
-    L = m.states[0:3]
-    n = m.states[3:6]
+    first = m.states[0:3]
+    if first[0].name.startswith("omega"):
+        L = tuple(p[f"I{i + 1}"] * first[i] for i in range(3))
+    else:
+        L = tuple(first)
+    n = tuple(m.states[3:6])
     return m, p, L, n
 
 
@@ -289,8 +295,7 @@ def time_derivative(formula: Callable, subs: dict):
 
     m, p, L, n = _symbols()
     F = formula(L, n, p)
-    rhs = dict(zip(m.states, m.rhs))
-    dF = sum((sp.diff(F, y) * rhs[y] for y in (*L, *n)), sp.S.Zero)
+    dF = sum((sp.diff(F, y) * f for y, f in zip(m.states[:6], m.rhs[:6])), sp.S.Zero)
     return sp.factor(sp.cancel(sp.together(dF.subs(subs))))
 
 
@@ -307,8 +312,8 @@ def prove(case: str, integral_name: str | None = None, relations_of: str | None 
     dF = time_derivative(integral.formula, subs)
     if integral.on is None:
         return Proof(case, integral.name, dF)
-    _, p, L, n = _symbols()
+    m, p, L, n = _symbols()
     num, den = sp.fraction(sp.together(dF))
-    Ln = _area(L, n, p)
-    q, r = sp.div(sp.expand(num), sp.expand(Ln), *L, *n)
+    Ln = sp.expand(_area(L, n, p).subs(subs))
+    q, r = sp.div(sp.expand(num), Ln, *m.states[:6])
     return Proof(case, integral.name, dF, factor=sp.factor(q / den), remainder=sp.expand(r))
