@@ -72,7 +72,7 @@ class _PlainFormatterBase:
         # The fewest digits that print every tick exactly (a spacing of 2.5 needs one decimal).
         for digits in range(max(0, lead), max(0, lead) + 6):
             fmt = f"{{:.{digits}{'f' if fixed else 'e'}}}"
-            if all(abs(float(fmt.format(v)) - v) <= 1e-6 * step for v in locs):
+            if all(abs(float(fmt.format(v)) - v) <= 1e-3 * step for v in locs):
                 break
         text = fmt.format(x)
         if not fixed:
@@ -219,17 +219,20 @@ def _panel_omega(ax, res):
     _plain(ax)
     if separate:
         right = ax.twinx()
-        lines.append(right.plot(res.t, w[:, 2], color=colors[2], lw=1, label="ω̃₃ (right axis)")[0])
-        right.set_ylabel("ω̃₃ [rad/s]", color=colors[2])
+        w3, w30 = w[:, 2], float(w[0, 2])
+        flat = float(np.ptp(w3)) <= FLAT_BETA * abs(w30)
+        lines.append(right.plot(res.t, w3 - w30 if flat else w3, color=colors[2], lw=1,
+                                label="ω̃₃ − ω̃₃(0) (right axis)" if flat else "ω̃₃ (right axis)")[0])
+        right.set_ylabel(f"ω̃₃ − ω̃₃(0) [rad/s]\nω̃₃(0) = {w30:.12g}" if flat else "ω̃₃ [rad/s]",
+                         color=colors[2])
         right.tick_params(axis="y", colors=colors[2])
         _plain(right, "y")
-        right.legend(lines, [ln.get_label() for ln in lines], loc="upper left", bbox_to_anchor=(1.25, 1.0),
-                     borderaxespad=0.0, fontsize=8, frameon=False)
-    else:
-        _legend_outside(ax)
+    # Above the axes, one row: clear of the data and of the tick labels on either side.
+    ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left", bbox_to_anchor=(0.0, 1.0),
+              ncol=len(lines), borderaxespad=0.2, fontsize=8, frameon=False, handlelength=1.5)
     ax.set_xlabel("t [s]")
     ax.set_title("angular velocity, body frame" + ("\n(ω̃₁, ω̃₂ turn faster than the samples resolve)"
-                                                   if fast else ""), fontsize=10 if fast else None)
+                                                   if fast else ""), fontsize=10, pad=18)
 
 
 def _panel_energy_error(ax, res):

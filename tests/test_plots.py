@@ -231,3 +231,30 @@ def test_plot_result_writes_a_png(symmetric):
     buf = io.BytesIO()
     plots.plot_result(symmetric, buf)
     assert buf.getvalue().startswith(b"\x89PNG\r\n\x1a\n")
+
+
+@pytest.mark.parametrize("amplitude", [1e-12, 1e-5])
+def test_near_constant_series_print_in_full_without_offset(symmetric, amplitude):
+    # The example: β = 0.6435011088 + 1e-12 … printed by default as "1e-12+6.435011088e-1";
+    # and a fast, nearly constant spin ω̃₃ = 500 + 1e-9 sin t on its own axis.
+    import dataclasses
+
+    t = symmetric.t
+    omega = symmetric.omega.copy()
+    omega[:, 2] = 500.0 + 1e-9 * np.sin(t)
+    res = dataclasses.replace(symmetric, beta=0.6435011088 + amplitude * np.sin(40 * t), omega=omega)
+    fig = plots.figure(res)
+    try:
+        fig.canvas.draw()
+        assert {ax.get_label() for ax in fig.axes} >= {"beta", "omega", "omega:twin"}
+        for ax in fig.axes:
+            if ax.name == "3d":
+                continue
+            for axis in (ax.xaxis, ax.yaxis):
+                assert axis.get_offset_text().get_text() == "", ax.get_label()
+                labels = [lab.get_text() for lab in axis.get_ticklabels() if lab.get_text()]
+                assert len(set(labels)) == len(labels), (ax.get_label(), labels)
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
