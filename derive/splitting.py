@@ -189,7 +189,15 @@ def _context(model, names) -> dict:
                         "composition": m.composition.name, "stages": m.composition.stages,
                         "ops": ops, "kicks": sum(op["kind"] == "kick" for op in ops)})
     return {"prefix": model.name, "symmetric": model.symmetric, "gravity": gravity,
-            "idx": idx, "methods": methods}
+            "idx": idx, "methods": methods, "omega_state": _omega_state(model)}
+
+
+def _omega_state(model) -> bool:
+    """True when the model's state starts with ω̃ (else with L = I ω̃)."""
+    head = model.state_names[:3]
+    if head not in (("omega1", "omega2", "omega3"), ("L1", "L2", "L3")):
+        raise ValueError(f"{model.name}: expected the state to start with omega1:3 or L1:3")
+    return head[0] == "omega1"
 
 
 def render_splitting(model, methods: list[str] | None = None) -> dict[str, str]:
@@ -274,18 +282,41 @@ class Splitter:
         return y, st[:n]
 
 
-def state(inertia, omega, R) -> np.ndarray:
-    """The Euler–Poisson state (L, n, e) from the moments, ω̃ (body axes) and R (body → inertial):
-    L = I ω̃, n = Rᵀẑ (third row of R), e = Rᵀx̂ (first row)."""
+def body(model, p) -> tuple[np.ndarray, np.ndarray]:
+    """(I₁, I₂, I₃) and M g r_c of an Euler–Poisson model's parameter vector p."""
+    pn, p = model.param_names, np.asarray(p, dtype=float)
+    inertia = np.array([p[pn.index("I1")], p[pn.index("I2" if "I2" in pn else "I1")],
+                        p[pn.index("I3")]])
+    if "cx" in pn:
+        rc = np.array([p[pn.index(k)] for k in ("cx", "cy", "cz")])
+    elif "l" in pn:
+        rc = np.array([0.0, 0.0, p[pn.index("l")]])
+    else:
+        rc = np.zeros(3)
+    mg = p[pn.index("M")] * p[pn.index("g")] if "M" in pn else 0.0
+    return inertia, mg * rc
+
+
+def initial_state(model, p, omega, R) -> np.ndarray:
+    """The model's state from ω̃ (body axes) and R (body → inertial): (ω̃ or L = I ω̃, n, e) with
+    n = Rᵀẑ (third row of R), e = Rᵀx̂ (first row)."""
     R = np.asarray(R, dtype=float)
-    return np.concatenate([np.asarray(inertia, float) * np.asarray(omega, float), R[2], R[0]])
+    w = np.asarray(omega, dtype=float)
+    head = w if _omega_state(model) else body(model, p)[0] * w
+    return np.concatenate([head, R[2], R[0]])
 
 
-def energy(y, inertia, mg_rc=(0.0, 0.0, 0.0)) -> np.ndarray:
-    """H = Σ L_i²/(2 I_i) + M g n·r_c along y[..., 9] (``mg_rc`` = M g r_c)."""
+def angular_momentum(model, p, y) -> np.ndarray:
+    """L = I ω̃ along y[..., 9]."""
     y = np.asarray(y)
-    return (0.5 * np.sum(y[..., 0:3] ** 2 / np.asarray(inertia, float), axis=-1)
-            + y[..., 3:6] @ np.asarray(mg_rc, float))
+    return y[..., 0:3] * body(model, p)[0] if _omega_state(model) else y[..., 0:3]
+
+
+def energy(model, p, y) -> np.ndarray:
+    """H = Σ L_i²/(2 I_i) + M g n·r_c along y[..., 9]."""
+    inertia, mg_rc = body(model, p)
+    L = angular_momentum(model, p, y)
+    return 0.5 * np.sum(L**2 / inertia, axis=-1) + np.asarray(y)[..., 3:6] @ mg_rc
 
 
 # --------------------------------------------------------------------------------------------
@@ -311,22 +342,13 @@ def bench_energy(model=None, p=None, y0=None, periods: float = 1e4, period: floa
     if model is None:
         model = models.build("euler-poisson", False, ("gravity_general",))
         p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
-        y0 = state(p[:3], (0.3, -0.2, 12.0), euler_matrix(0.1, 0.6, 0.2))
+        y0 = initial_state(model, p, (0.3, -0.2, 12.0), euler_matrix(0.1, 0.6, 0.2))
     sp = Splitter(model)
-    pn = model.param_names
-    inertia = [p[pn.index("I1")], p[pn.index("I2" if "I2" in pn else "I1")], p[pn.index("I3")]]
-    if "cx" in pn:
-        rc = [p[pn.index(k)] for k in ("cx", "cy", "cz")]
-    elif "l" in pn:
-        rc = [0.0, 0.0, p[pn.index("l")]]
-    else:
-        rc = [0.0, 0.0, 0.0]
-    mg = p[pn.index("M")] * p[pn.index("g")] if "M" in pn else 0.0
-    mg_rc = mg * np.asarray(rc)
+    inertia, _ = body(model, p)
     if period is None:
-        period = 2 * np.pi / np.linalg.norm(y0[:3] / np.asarray(inertia))
+        period = 2 * np.pi / np.linalg.norm(angular_momentum(model, p, y0) / inertia)
     t = np.linspace(0.0, periods * period, int(20 * periods) + 1)
-    e0 = float(energy(y0, inertia, mg_rc))
+    e0 = float(energy(model, p, y0))
 
     def run(method, setting):
         t0 = time.perf_counter()
@@ -339,7 +361,7 @@ def bench_energy(model=None, p=None, y0=None, periods: float = 1e4, period: floa
             sol = sp.kernel.solve(method, y0, p, t, check=False, **kw)
             y, ok, nfev = sol.y, sol.success, sol.nfev
         dt = time.perf_counter() - t0
-        err = float(np.max(np.abs(energy(y, inertia, mg_rc) - e0)) / abs(e0)) if ok else np.inf
+        err = float(np.max(np.abs(energy(model, p, y) - e0)) / abs(e0)) if ok else np.inf
         return err, dt, nfev
 
     out = {}
