@@ -154,11 +154,19 @@ def _ep_jacobian(symmetric: bool, effects: tuple):
     return sp.lambdify((y, m.params), J, "numpy"), m
 
 
+def _state(m, L, n, moments) -> list:
+    """The model's (first six) state at the point (L, n): L itself, or ω̃ = I⁻¹L when the
+    model's state is the angular velocity (the Jacobians are similar: same eigenvalues)."""
+    if m.state_names[0].startswith("omega"):
+        L = [Li / Ii for Li, Ii in zip(L, moments)]
+    return list(L) + list(n)
+
+
 def _eigenvalues(scene, L, n) -> np.ndarray:
     f, m = _ep_jacobian(scene.symmetric, scene.effects)
     values = scene.param_values()
     p = [values[name] for name in m.param_names]
-    J = np.array(f(list(L) + list(n), p), dtype=float)
+    J = np.array(f(_state(m, L, n, scene.body.moments), p), dtype=float)
     return np.linalg.eigvals(J)
 
 
@@ -311,7 +319,7 @@ def _free_rotation(sc, k: int) -> Equilibrium:
 def _free_jacobian(I, L) -> np.ndarray:
     """∂L̇/∂L of L̇ = L × I⁻¹L at L (numbers)."""
     f, m = _ep_jacobian(False, ())
-    J = np.array(f(list(L) + [0.0, 0.0, 1.0], list(I)), dtype=float)
+    J = np.array(f(_state(m, L, (0.0, 0.0, 1.0), I), list(I)), dtype=float)
     return J[:3, :3]
 
 
@@ -525,9 +533,9 @@ def _section_energies(sc):
     Lv = sp.symbols("L1:4", real=True)
     moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
     Tb = sum((Li ** 2 / (2 * m) for Li, m in zip(Lv, moments)), sp.S.Zero)
-    lines = [rf"$$ T = {_latex(Tb)} = \tfrac12\sum_i I_i\tilde\omega_i^2 $$",
+    lines = [rf"$$ T = {_latex(Tb)} = \tfrac12\sum_i I_i\tilde\omega_i^2 $$", "",
              "In z-y-z Euler angles:", "",
-             rf"$$ T = {_latex(T)} $$", rf"$$ V = {_latex(V)} $$",
+             rf"$$ T = {_latex(T)} $$", "", rf"$$ V = {_latex(V)} $$", "",
              rf"$$ L = T - V = {_latex(system.lagrangian)} $$"]
     return "Kinetic and potential energy, Lagrangian", lines
 
@@ -541,15 +549,15 @@ def _conservative(sc) -> tuple:
 def _section_equations(sc):
     sp = _sp()
     m = _ep_model(sc.symmetric, sc.effects)
-    L, n = sp.Matrix(m.states[:3]), sp.Matrix(m.states[3:6])
+    lhs = r"\dot{\tilde\omega}" if m.state_names[0].startswith("omega") else r"\dot{\tilde L}"
     lines = ["Euler–Poisson (L = I ω̃ about the pivot, n = Rᵀẑ), derived from the effects registry:", "",
-             rf"$$ \dot{{\tilde L}} = {_latex(sp.Matrix(m.rhs[:3]))},\quad "
+             rf"$$ {lhs} = {_latex(sp.Matrix(m.rhs[:3]))},\quad "
              rf"\dot{{\tilde n}} = {_latex(sp.Matrix(m.rhs[3:6]))} $$"]
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     lines += ["", "Euler–Lagrange in z-y-z angles, 𝕄 q̈ = F"
               + (" (conservative part; the damping torque adds Q = Bᵀτ̃)" if sc.damping is not None else "")
               + ":", "",
-              rf"$$ \mathbb{{M}} = {_latex(system.mass_matrix)} $$",
+              rf"$$ \mathbb{{M}} = {_latex(system.mass_matrix)} $$", "",
               rf"$$ F = {_latex(system.forcing)} $$"]
     return "Equations of motion", lines
 
@@ -558,12 +566,12 @@ def _section_cyclic(sc):
     sp = _sp()
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     cyc = system.cyclic
-    lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + "."]
+    lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + ".", ""]
     from .rotations import ANGLES
 
     for q in cyc:
-        lines.append(rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "
-                     rf"{_latex(system.momentum(q))} $$")
+        lines += [rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "
+                  rf"{_latex(system.momentum(q))} $$", ""]
     if sc.damping is not None:
         lines.append("The damping torque breaks these conservation laws (p_α decays as "
                      "d(L·n)/dt = −c ω̃·n).")
@@ -585,7 +593,7 @@ def _section_integrals(sc, cls, ints, proofs):
     lines = []
     for i in ints:
         pr = proofs.get(i.name)
-        lines.append(f"$$ {i.latex} $$")
+        lines += [f"$$ {i.latex} $$", ""]
         if pr is None:
             continue
         if pr.factor is not None:
