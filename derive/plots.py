@@ -222,7 +222,8 @@ def _panel_omega(ax, res):
         w3, w30 = w[:, 2], float(w[0, 2])
         flat = float(np.ptp(w3)) <= FLAT_BETA * abs(w30)
         lines.append(right.plot(res.t, w3 - w30 if flat else w3, color=colors[2], lw=1,
-                                label="ω̃₃ − ω̃₃(0) (right axis)" if flat else "ω̃₃ (right axis)")[0])
+                                label=("ω̃₃ − ω̃₃(0)" + (" = 0 exactly" if np.ptp(w3) == 0 else "")
+                                       + " (right axis)") if flat else "ω̃₃ (right axis)")[0])
         right.set_ylabel(f"ω̃₃ − ω̃₃(0) [rad/s]\nω̃₃(0) = {w30:.12g}" if flat else "ω̃₃ [rad/s]",
                          color=colors[2])
         right.tick_params(axis="y", colors=colors[2])
