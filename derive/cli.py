@@ -137,6 +137,13 @@ def version() -> str:
         return __version__
 
 
+class _Version(argparse.Action):
+    """--version, looked up only when asked for (importlib.metadata costs a warm run ~10 ms)."""
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        parser.exit(0, f"{parser.prog} {version()}\n")
+
+
 class _Parser(argparse.ArgumentParser):
     """argparse with the contract's one-line error (exit 2), not usage + message."""
 
@@ -178,8 +185,7 @@ def parser() -> argparse.ArgumentParser:
     from .scene import FORMULATIONS, METHODS
 
     p = _Parser(prog="derive", description=__doc__.splitlines()[0])
-    p.add_argument("--version", action="version", version=f"%(prog)s {version()}",
-                   help="print the version and exit")
+    p.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True)
 
     g = sub.add_parser("generate", help="write generated/ (C and NumPy kernels, reports)")
@@ -210,7 +216,7 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--formulation", help=f"overrides [simulate] formulation; one of: {', '.join(FORMULATIONS)}")
     s.add_argument("--h", type=float, metavar="H",
                    help="overrides [simulate] h: the step of the fixed-step methods, in seconds "
-                        "(default: 1/200 of the fastest natural period, at most the output spacing)")
+                        "(default: chosen from the scene's fastest natural period)")
     s.add_argument("--max-steps", type=int, metavar="N",
                    help="overrides [simulate] max_steps: the step budget (exit 3 when spent; "
                         "fixed-step runs needing more are refused up front)")
