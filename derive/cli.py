@@ -141,7 +141,8 @@ class _Version(argparse.Action):
     """--version, looked up only when asked for (importlib.metadata costs a warm run ~10 ms)."""
 
     def __call__(self, parser, namespace, values, option_string=None):
-        parser.exit(0, f"{parser.prog} {version()}\n")
+        print(f"{parser.prog} {version()}")  # stdout, like argparse's own version action
+        parser.exit(0)
 
 
 class _Parser(argparse.ArgumentParser):
