@@ -83,7 +83,14 @@ class Analysis:
     integrals: list
     proofs: dict
     equilibria: list
-    sections: list  # (title, [markdown lines])
+
+    @property
+    def sections(self) -> list:
+        """(title, [Markdown lines]) of the document (derived on demand: JSON does not need them)."""
+        sc, cls = self.scene, self.classification
+        return [_section_body(sc, cls), _section_energies(sc), _section_equations(sc),
+                _section_cyclic(sc), _section_integrals(sc, cls, self.integrals, self.proofs),
+                _section_equilibria(self.equilibria)]
 
     def to_json(self) -> dict:
         c = self.classification
@@ -246,11 +253,7 @@ def analyze(scene) -> Analysis:
     for i in ints:
         case = cls.case if i in integrable.EXTRA.values() else "general"
         proofs[i.name] = integrable.prove(case, i.name)
-    eqs = _equilibria(sc, cls)
-    sections = [_section_body(sc, cls), _section_energies(sc), _section_equations(sc),
-                _section_cyclic(sc), _section_integrals(sc, cls, ints, proofs),
-                _section_equilibria(eqs)]
-    return Analysis(sc, cls, ints, proofs, eqs, sections)
+    return Analysis(sc, cls, ints, proofs, _equilibria(sc, cls))
 
 
 def _axial(sc) -> bool:

@@ -317,3 +317,27 @@ def prove(case: str, integral_name: str | None = None, relations_of: str | None 
     Ln = sp.expand(_area(L, n, p).subs(subs))
     q, r = sp.div(sp.expand(num), Ln, *m.states[:6])
     return Proof(case, integral.name, dF, factor=sp.factor(q / den), remainder=sp.expand(r))
+
+
+def markdown() -> list[str]:
+    """Markdown lines for the derivation report: each case, its extra integral and what the
+    proof along the derived Euler–Poisson equations gave."""
+    import sympy as sp
+
+    out = ["Integrable cases of the heavy body about a fixed point (classified within the relative "
+           f"tolerance {TOLERANCE:g}); each integral's time derivative along the derived "
+           "Euler–Poisson equations, with the case's relations substituted:", ""]
+    names = {sp.Symbol(f"omega{i}", real=True): rf"\tilde\omega_{i}" for i in (1, 2, 3)}
+    names.update({sp.Symbol(c, real=True): f"c_{c[1]}" for c in ("cx", "cy", "cz")})
+    names = {sp.Symbol(f"omega{i}", real=True): rf"\tilde\omega_{i}" for i in (1, 2, 3)}
+    names.update({sp.Symbol(c, real=True): f"c_{c[1]}" for c in ("cx", "cy", "cz")})
+    for case, integral in EXTRA.items():
+        rel = ", ".join(f"{k} = {v}" for k, v in RELATIONS[case].items())
+        proof = prove(case)
+        if proof.factor is not None:
+            result = (rf"$\dot G = {sp.latex(proof.factor, symbol_names=names)}\,(\tilde L\cdot\tilde n)$, zero on "
+                      rf"$\tilde L\cdot\tilde n = 0$")
+        else:
+            result = r"$\dot F = 0$" if proof.holds else rf"$\dot F = {sp.latex(proof.derivative, symbol_names=names)}$"
+        out += [f"- **{case}** ({rel}):", "", f"  $$ {integral.latex} $$", "", f"  {result}.", ""]
+    return out
