@@ -227,6 +227,8 @@ def _panel_omega(ax, res):
         right.set_ylabel(f"ω̃₃ − ω̃₃(0) [rad/s]\nω̃₃(0) = {w30:.12g}" if flat else "ω̃₃ [rad/s]",
                          color=colors[2])
         right.tick_params(axis="y", colors=colors[2])
+        if np.ptp(w3) == 0:
+            right.set_yticks([0.0])  # the scale of an exactly-zero deviation means nothing
         _plain(right, "y")
     # Above the axes, one row: clear of the data and of the tick labels on either side.
     ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left", bbox_to_anchor=(0.0, 1.0),
@@ -341,9 +343,15 @@ def _path3d(ax, P, label):
 def _panel_sphere(ax, res):
     _sphere(ax, ("x̂", "ŷ", "ẑ"))
     P = np.asarray(res.axis)
-    _path3d(ax, P / np.linalg.norm(P, axis=1, keepdims=True), "ê₃(t)")
+    P = P / np.linalg.norm(P, axis=1, keepdims=True)
+    _path3d(ax, P, "ê₃(t)")
     which = "symmetry axis" if _is_symmetric(res) else "body axis"
-    ax.set_title(f"{which} ê₃ on the unit sphere\n(inertial frame)", fontsize=10)
+    # A path too small to see on the whole sphere (a sleeping top) is said to be so.
+    centre = P.mean(axis=0)
+    centre /= max(np.linalg.norm(centre), 1e-300)
+    spread = float(np.degrees(np.max(np.arccos(np.clip(P @ centre, -1.0, 1.0)))))
+    note = f", within {spread:.2g}° of one point:\nthe top view shows its shape" if spread < 2.0 else ""
+    ax.set_title(f"{which} ê₃ on the unit sphere\n(inertial frame{note})", fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(0.0, 1.0), fontsize=7, frameon=False)
 
 
