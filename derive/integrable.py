@@ -184,8 +184,10 @@ def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) 
     if g == 0 or M == 0 or r <= TOLERANCE * scale:
         return Classification("euler", "no gravity torque (r_c = 0 or g = 0): Euler's free body")
     if not _equal(I1, I2):
+        other = (" (a body symmetric about axis 1 or 2 is not recognised: the scene convention "
+                 "makes axis 3 the symmetry axis)" if _equal(I2, I3) or _equal(I1, I3) else "")
         return Classification("general", f"I1 = {I1:g} and I2 = {I2:g} differ and there is a gravity "
-                                         "torque: no known integrable case")
+                                         "torque: no known integrable case" + other)
     if math.hypot(cx, cy) <= TOLERANCE * r:
         return Classification("lagrange", "I1 = I2 and the centre of mass on the symmetry axis 3")
     if abs(cz) <= TOLERANCE * r:

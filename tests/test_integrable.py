@@ -214,3 +214,34 @@ def test_kovalevskaya_control_body_drifts():
     res, k, e, ln = _drifts(1.2)
     assert e <= 5e-11 and ln <= 1e-10  # the integration is as accurate ...
     assert k > 1e-2                    # ... but K is not an integral of this body
+
+
+def test_goryachev_chaplygin_scene_conserves_G_only_on_the_area_level():
+    """scenes/goryachev_chaplygin_top.toml starts on L.n = 0: G is conserved; the same body with
+    L.n != 0 (omega3 changed) lets G drift."""
+    import tomllib
+    from pathlib import Path
+
+    path = Path(__file__).resolve().parent.parent / "scenes" / "goryachev_chaplygin_top.toml"
+    d = tomllib.loads(path.read_text())
+    d["simulate"].update(rtol=1e-12, atol=1e-14)
+    assert ig.classify(load_scene(d)).case == "goryachev-chaplygin"
+    drifts = []
+    for w3 in (d["initial"]["omega"][2], 10.0):
+        d["initial"]["omega"][2] = w3
+        res = derive.simulate(d)
+        G = res.integrals["goryachev_chaplygin"]
+        drifts.append((float(np.max(np.abs(G - G[0])) / abs(G[0])), abs(float(res.p_alpha[0]))))
+    (on, ln_on), (off, ln_off) = drifts
+    assert ln_on < 1e-12 and on <= 1e-9
+    assert ln_off > 0.1 and off > 1e-3
+
+
+def test_import_derive_does_not_import_sympy():
+    import subprocess
+    import sys
+
+    code = ("import sys, derive, derive.integrable, derive.analysis, derive.cli; "
+            "from derive.scene import load_scene; "
+            "assert 'sympy' not in sys.modules, 'sympy imported'")
+    subprocess.run([sys.executable, "-c", code], check=True)
