@@ -140,10 +140,6 @@ def _latex(expr) -> str:
     return sp.latex(expr, symbol_names=names)
 
 
-def _num(x) -> float:
-    return float(x)
-
-
 @functools.lru_cache(maxsize=None)
 def _ep_model(symmetric: bool, effects: tuple):
     from . import models
@@ -211,7 +207,7 @@ def _routh():
     steady-precession quadratic and the series of V_eff about β = 0 and π."""
     sp = _sp()
     from . import stability
-    from .lagrangian import p_alpha, p_gamma, I1, Mass, g, l
+    from .lagrangian import l, p_alpha, p_gamma
     from .rotations import ANGLES, alpha_d, beta, gamma_d, trig_reduce
 
     st = stability.sleeping_top()
@@ -285,7 +281,6 @@ def _equilibria(sc, cls) -> list[Equilibrium]:
 
 def _free_rotation(sc, k: int) -> Equilibrium:
     """Spin of a free body about principal axis k (0-based) at the scene's |ω̃(0)|."""
-    sp = _sp()
     from .lagrangian import I1, I2, I3
     from .stability import SteadySpin, omega0
 
@@ -344,14 +339,12 @@ def _lagrange_vertical(sc, p, kind: str) -> Equilibrium:
     s = _sign_tol(k2v, scale)
     stable = None if s == 0 else s > 0
     threshold2 = sp.factor(R["threshold"] ** 2)  # 4 M g l I₁
-    if kind == "sleeping":
-        cond = f"p_gamma >= sqrt({sp.sstr(threshold2)})" if at_zero else \
-            f"p_gamma**2 >= -4*I1*M*g*l  (l < 0: the top is upright at beta = pi)"
-        tex = (rf"k_2 = {_latex(k2)} \ge 0 \;\Leftrightarrow\; p_\gamma \ge \sqrt{{{_latex(threshold2)}}}"
-               if at_zero else rf"k_2 = {_latex(k2)} \ge 0")
+    if kind == "sleeping" and at_zero:
+        cond = f"p_gamma >= sqrt({sp.sstr(threshold2)})"
+        tex = rf"k_2 = {_latex(k2)} \ge 0 \;\Leftrightarrow\; p_\gamma \ge \sqrt{{{_latex(threshold2)}}}"
     else:
-        cond = ("p_gamma**2 + 4*I1*M*g*l >= 0  (always, l > 0)" if not at_zero
-                else "p_gamma**2 - 4*I1*M*g*l >= 0  (always, l < 0)")
+        note = {"sleeping": "l < 0: upright at beta = pi", "hanging": "always: with the centre of mass below the pivot both terms are >= 0"}
+        cond = f"k2 = {sp.sstr(k2)} >= 0  ({note[kind]})"
         tex = rf"k_2 = {_latex(k2)} \ge 0"
     nz = 1.0 if at_zero else -1.0
     eig = _eigenvalues(sc, (0.0, 0.0, pg), (0.0, 0.0, nz))
@@ -566,7 +559,6 @@ def _section_equations(sc):
 
 
 def _section_cyclic(sc):
-    sp = _sp()
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     cyc = system.cyclic
     lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + ".", ""]
