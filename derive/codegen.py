@@ -15,8 +15,9 @@ import os
 import tempfile
 from pathlib import Path
 
+from .catalogue import SHIPPED, description_json
 from .kernelspec import KernelSpec
-from .models import CATALOGUE, Model
+from .models import Model
 from .render import render
 
 
@@ -31,15 +32,32 @@ def model_sources(model: Model) -> dict[str, str]:
         f"c/{model.name}.c": render("c/model.c.j2", **c_ctx),
         f"numpy/{model.name}.py": render("numpy/model.py.j2", **np_ctx),
     }
-    for fname, text in render_solvers(model.name, len(model.states)).items():
+    for fname, text in render_solvers(model.name, len(model.states),
+                                      has_angles=c_ctx["has_angles"]).items():
         files[f"c/{fname}"] = text
+    files[f"models/{model.name}.json"] = description_json(spec)
     return files
 
 
+def shipped_keys() -> dict[str, tuple]:
+    """{model name: key} of every model written to generated/: the contract's catalogue, then
+    the models the example scenes run (`catalogue.SHIPPED`)."""
+    from .formulations import model_name
+    from .models import CATALOGUE_KEYS
+
+    keys = dict(CATALOGUE_KEYS)
+    for key in SHIPPED:
+        keys.setdefault(model_name(*key), key)
+    return keys
+
+
 def _sources_of(names) -> dict[str, str]:
+    from .models import build
+
+    keys = shipped_keys()
     files: dict[str, str] = {}
     for name in names:
-        files.update(model_sources(CATALOGUE[name]()))
+        files.update(model_sources(build(*keys[name])))
     return files
 
 
@@ -50,7 +68,7 @@ def generate_all(models=None) -> dict[str, str]:
     than one core the kernels are derived in a forked worker while this process writes the
     reports (the results are merged by file name, so the output does not depend on timing).
     """
-    names = [n for n in CATALOGUE if models is None or n in models]
+    names = [n for n in shipped_keys() if models is None or n in models]
     if models is not None:
         return dict(sorted(_sources_of(names).items()))
     return dict(_generate_everything())
@@ -61,14 +79,17 @@ def _generate_everything() -> tuple:
     """All files, computed once per process (the derivations are pure)."""
     from . import report
 
-    names = list(CATALOGUE)
-    files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=list(CATALOGUE))}
+    names = list(shipped_keys())
+    files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=names)}
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
+        # Two workers derive the kernels (split so the costly Lagrangian models are shared out)
+        # while this process writes the reports.
         ctx = multiprocessing.get_context("fork")
-        with concurrent.futures.ProcessPoolExecutor(max_workers=1, mp_context=ctx) as pool:
-            kernels = pool.submit(_sources_of, names)
+        with concurrent.futures.ProcessPoolExecutor(max_workers=2, mp_context=ctx) as pool:
+            parts = [pool.submit(_sources_of, names[i::2]) for i in range(2)]
             files.update(report.documents())
-            files.update(kernels.result())
+            for part in parts:
+                files.update(part.result())
     else:
         files.update(report.documents())
         files.update(_sources_of(names))

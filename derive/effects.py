@@ -209,6 +209,7 @@ def register(effect: Effect, table: Table | None = None) -> None:
     if effect.table not in TABLES:
         raise ValueError(f"effect {effect.name!r}: unknown table {effect.table!r}")
     REGISTRY[effect.name] = effect
+    _changed()
 
 
 def unregister(name: str) -> None:
@@ -216,6 +217,15 @@ def unregister(name: str) -> None:
     effect = REGISTRY.pop(name)
     if not any(e.table == effect.table for e in REGISTRY.values()):
         TABLES.pop(effect.table, None)
+    _changed()
+
+
+#: Bumped whenever the registry changes, so that what is computed from it can be cached.
+VERSION = [0]
+
+
+def _changed() -> None:
+    VERSION[0] += 1
 
 
 def for_table(table: str, values: dict) -> Effect:

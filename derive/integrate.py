@@ -23,7 +23,9 @@ import numpy as np
 
 from .cbuild import DEFAULT_FLAGS, compile_library
 from .errors import IntegrationError
-from .solvers import METHODS, STATUS, render_solvers
+from .solvers import METHODS, render_solvers
+from .status import Status
+from .status import message as _status_message
 
 DEFAULT_MAX_STEPS = 1_000_000
 DEFAULT_NEWTON_TOL = 1e-15
@@ -48,23 +50,7 @@ def _fmt(x: float) -> str:
 
 def failure_message(stats, state_names=(), max_steps: int | None = None) -> str:
     """The one-line description of a failed solve (``stats``: a STATS_DTYPE record)."""
-    status = int(stats["status"])
-    t = _fmt(float(stats["t_fail"]))
-    if status == 1:
-        return f"t = {t}: step size underflow (h = {float(stats['h_fail']):.3g})"
-    if status == 2:
-        i = int(stats["fail_index"])
-        if 0 <= i < len(state_names):
-            return f"t = {t}: non-finite value in state y[{i}] ({state_names[i]})"
-        return f"t = {t}: non-finite value in the state"
-    if status == 3:
-        return f"max_steps ({max_steps}) exceeded at t = {t}"
-    if status == 4:
-        return f"t = {t}: state outside the model's domain (rhs returned {int(stats['rhs_code'])})"
-    if status == 5:
-        return (f"t = {t}: Newton iteration failed to converge "
-                f"(h = {float(stats['h_fail']):.3g}, after halving the step)")
-    return f"{STATUS.get(status, ('', f'unknown status {status}'))[1]}"
+    return _status_message(stats, state_names, max_steps)
 
 
 @dataclass(frozen=True)
@@ -147,7 +133,7 @@ class Kernel:
     def __init__(self, lib: ctypes.CDLL, prefix: str):
         self.lib = lib
         self.prefix = prefix
-        dims = (ctypes.c_int * 2).in_dll(lib, f"{prefix}_dims")
+        dims = (ctypes.c_int * 4).in_dll(lib, f"{prefix}_dims")
         self.ny, self.np = int(dims[0]), int(dims[1])
         self.state_names = self._names("state_names", self.ny)
         self.param_names = self._names("param_names", self.np)
@@ -344,3 +330,139 @@ class Kernel:
                 if s["status"]:
                     raise IntegrationError(f"trajectory {b}: {messages[b]}")
         return BatchSolution(t=t, y=y, method=method, stats=st, messages=messages)
+
+
+# ---------------------------------------------------------------------------------------------
+# One C call per simulation: a (model, method) library built from a generated model's files.
+
+def _ptr(a: np.ndarray) -> int:
+    return a.__array_interface__["data"][0]
+
+
+def _interruptible(lib, prefix: str):
+    """Run a C call with SIGINT handled by the library (the loops poll its flag) when called
+    from the main thread; a call from another thread relies on ``interrupt_request``."""
+    import threading
+
+    guard = getattr(lib, f"{prefix}_interrupt_guard")
+    return guard if threading.current_thread() is threading.main_thread() else None
+
+
+class ModelKernel:
+    """A compiled (model, method) pair: ``<name>_simulate_<method>`` runs the init map, the
+    whole integration and the output map in one call, writing into arrays passed in.
+
+    Built from a :class:`derive.catalogue.Description` and its generated C files (the model and
+    its solvers, one translation unit compiled with only this method: ``-DDERIVE_SELECT
+    -DDERIVE_WITH_<METHOD>``). ``method=None`` builds the model alone (init map, checks).
+    """
+
+    _cache: dict = {}
+
+    def __init__(self, desc, method: str | None, lib: ctypes.CDLL):
+        self.desc, self.method, self.lib = desc, method, lib
+        p = desc.name
+        self.ny, self.np, self.nout, self.nin = (len(desc.states), len(desc.params),
+                                                 len(desc.outputs), desc.nin)
+        vp, cl, ci, cd = ctypes.c_void_p, ctypes.c_long, ctypes.c_int, ctypes.c_double
+        self._init = self._fn(f"{p}_init", [vp, vp, vp])
+        self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
+        if method is not None:
+            extra = [_C_TYPES[ty] for ty, _ in METHODS[method].params]
+            self._sim = self._fn(f"{p}_simulate_{method}", [vp, vp, vp, cl, *extra, vp, vp, vp])
+            self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
+                                       [cl, vp, vp, vp, cl, *extra, vp, vp, vp])
+            self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
+            self._guard = _interruptible(lib, p)
+            if self._guard is not None:
+                self._guard.argtypes = [ci]
+                self._guard.restype = ci
+        del cd
+
+    def _fn(self, symbol, argtypes):
+        fn = getattr(self.lib, symbol)
+        fn.argtypes = argtypes
+        fn.restype = ctypes.c_int
+        return fn
+
+    @classmethod
+    def load(cls, desc, method: str | None) -> "ModelKernel":
+        """Compiled once per machine (the cache), loaded once per process."""
+        key = (desc.folder, desc.name, method)
+        kernel = cls._cache.get(key)
+        if kernel is None:
+            sources = desc.c_sources()
+            unity = f"{desc.name}_{method or 'model'}_unit.c"
+            includes = [f"{desc.name}.c"] + ([f"{desc.name}_solvers.c"] if method else [])
+            sources[unity] = "".join(f'#include "{n}"\n' for n in includes)
+            flags = list(DEFAULT_FLAGS)
+            if method is not None:
+                flags += ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}"]
+            lib = compile_library(f"{desc.name}_{method or 'model'}", sources, unity, flags)
+            kernel = cls._cache[key] = cls(desc, method, lib)
+        return kernel
+
+    def driver_args(self, rtol, atol, h, max_steps, newton_tol=DEFAULT_NEWTON_TOL,
+                    newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
+        values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
+                  "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
+        return [values[name] for _, name in METHODS[self.method].params]
+
+    def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
+        """(y0, p with the derived parameters written, return code) from the init map."""
+        y = np.empty(self.ny)
+        p = np.array(p, dtype=np.float64)
+        rc = self._init(_ptr(np.ascontiguousarray(inputs, dtype=np.float64)), _ptr(p), _ptr(y))
+        return y, p, rc
+
+    def checks(self, y: np.ndarray, p: np.ndarray) -> np.ndarray:
+        out = np.empty(len(self.desc.checks))
+        self._checks(_ptr(np.ascontiguousarray(y, dtype=np.float64)),
+                     _ptr(np.ascontiguousarray(p, dtype=np.float64)), _ptr(out))
+        return out
+
+    def _call(self, fn, *args):
+        if self._guard is None:
+            return fn(*args)
+        self._guard(1)
+        try:
+            rc = fn(*args)
+        finally:
+            interrupted = self._guard(0)
+        if interrupted or rc == Status.INTERRUPTED:
+            raise KeyboardInterrupt
+        return rc
+
+    def simulate(self, inputs, p, t, args):
+        """One trajectory: returns (out (NOBS, n), y (n, NY), p (derived parameters written),
+        stats record). ``args``: the driver's arguments (``driver_args``)."""
+        n = t.shape[0]
+        out = np.empty((self.nout, n))
+        y = np.empty((n, self.ny))
+        p = np.array(p, dtype=np.float64)
+        st = np.zeros(1, dtype=STATS_DTYPE)
+        self._call(self._sim, _ptr(inputs), _ptr(p), _ptr(t), n, *args, _ptr(y), _ptr(out),
+                   _ptr(st))
+        return out, y, p, st[0]
+
+    def simulate_batch(self, inputs, ps, t, args):
+        """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,
+        stats (N,)); each bit-for-bit what ``simulate`` gives."""
+        nb, n = inputs.shape[0], t.shape[0]
+        out = np.empty((nb, self.nout, n))
+        y = np.empty((nb, n, self.ny))
+        ps = np.array(ps, dtype=np.float64, order="C")
+        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+        self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, _ptr(y),
+                   _ptr(out), _ptr(st))
+        return out, y, ps, st[:nb]
+
+    def outputs_at(self, t, y, p) -> np.ndarray:
+        """The outputs (NOBS, n) of given states y (n, NY) (e.g. from SciPy's solve_ivp)."""
+        n = t.shape[0]
+        out = np.empty((self.nout, n))
+        y = np.ascontiguousarray(y, dtype=np.float64)
+        self._outputs_at(n, _ptr(np.ascontiguousarray(t, dtype=np.float64)), _ptr(y),
+                         _ptr(np.ascontiguousarray(p, dtype=np.float64)), _ptr(out))
+        return out

@@ -124,6 +124,50 @@ def _flatten_observables(obs: dict):
     return names, exprs
 
 
+#: Weights of the operation kinds in a right-hand side's cost (roughly cycles on a current
+#: x86-64 core: a libm call costs about ten additions). Only the ranking of formulations by it
+#: matters (``auto`` tries the cheapest applicable one first).
+OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "EXP": 12, "LOG": 12,
+              "SQRT": 6, "POW": 10, "DIV": 4}
+
+
+#: What one right-hand side evaluation costs the stepper per state component (DOP853 combines
+#: about a dozen stage vectors per stage), in the same units as OP_WEIGHTS.
+STEP_COST_PER_STATE = 12
+
+
+def operation_cost(block: "Block") -> int:
+    """Σ weight × count over the operations of a block's temporaries and outputs (additions,
+    multiplications and negations weigh 1; piecewise branches are counted once each)."""
+    total = 0
+    for e in [e for _, e in block.temps] + list(block.outputs):
+        for op, n in _op_counts(e).items():
+            total += OP_WEIGHTS.get(op, 1) * n
+    return total
+
+
+def _op_counts(expr) -> dict:
+    counts = sp.count_ops(expr, visual=True)
+    out: dict = {}
+    for term in sp.Add.make_args(counts):
+        coeff, sym = term.as_coeff_Mul()
+        if sym.is_Symbol:
+            out[str(sym)] = out.get(str(sym), 0) + int(coeff)
+    return out
+
+
+def sequential(init_params, params) -> list:
+    """The derived parameters' expressions with earlier derived parameters substituted, so each
+    depends on the inputs and the given parameters alone."""
+    done: dict = {}
+    out = []
+    for index, expr in init_params:
+        e = sp.sympify(expr).subs(done)
+        done[params[index]] = e
+        out.append((index, e))
+    return out
+
+
 @dataclass(frozen=True)
 class KernelSpec:
     model: Model
@@ -131,14 +175,27 @@ class KernelSpec:
     jac: Block
     obs: Block
     observable_names: tuple
+    init: Block
+    init_param_index: tuple
+    checks: Block | None = None
+    check_names: tuple = ()
 
     @classmethod
     def of(cls, model: Model) -> KernelSpec:
-        names, exprs = _flatten_observables(model.observables)
+        names, exprs = _flatten_observables(model.outputs)
         # The domain expressions share the CSE of rhs and Jacobian (they reuse sin β, |q|², ...).
         dom = list(model.domain)
+        derived = sequential(model.init_params, model.params)
+        init = Block.of(list(model.init) + [e for _, e in derived], "x")
+        checks = Block.of(list(model.checks.values()), "x") if model.checks else None
         return cls(model, Block.of(dom + list(model.rhs), "x"), Block.of(dom + list(model.jacobian), "x"),
-                   Block.of(exprs, "x"), tuple(names))
+                   Block.of(exprs, "x"), tuple(names), init, tuple(i for i, _ in derived),
+                   checks, tuple(model.checks))
+
+    @property
+    def cost(self) -> int:
+        """Weighted operation count of one right-hand side (domain checks included)."""
+        return operation_cost(self.rhs)
 
     @property
     def name(self):
@@ -154,8 +211,16 @@ class KernelSpec:
         jt, jo = pr(self.jac)
         rg, ro, jg, jo = ro[:nd], ro[nd:], jo[:nd], jo[nd:]
         ot, oo = pr(self.obs)
+        it, io = pr(self.init)
+        ny = len(m.states)
+        ct, co = pr(self.checks) if self.checks is not None else ([], [])
+        from .models import INPUTS
+
         used = {k: (b.uses(m.states), b.uses(m.params)) for k, b in
                 (("rhs", self.rhs), ("jac", self.jac), ("obs", self.obs))}
+        if self.checks is not None:
+            used["checks"] = (self.checks.uses(m.states), self.checks.uses(m.params))
+        init_used = (self.init.uses(INPUTS), self.init.uses(m.params))
         return dict(
             used=used,
             name=m.name, prefix=m.name, NAME=m.name.upper(), formulation=m.formulation,
@@ -165,4 +230,10 @@ class KernelSpec:
             rhs_temps=rt, rhs_out=ro, jac_temps=jt, jac_out=jo, obs_temps=ot, obs_out=oo,
             observables=self.observable_names, nobs=len(self.observable_names),
             rhs_guard=rg, jac_guard=jg,
+            init_used=init_used, init_temps=it, init_y=io[:ny],
+            init_p=list(zip(self.init_param_index, io[ny:])),
+            nin=len(INPUTS), inputs=[str(s) for s in INPUTS],
+            has_angles=self.observable_names[:3] == ("alpha", "beta", "gamma"),
+            check_temps=ct, check_out=co, check_names=self.check_names,
+            nchecks=len(self.check_names),
         )

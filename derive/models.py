@@ -13,10 +13,12 @@ core (`rotations`, `lagrangian`, `stability`) and the effects it is given (`effe
 * ``quaternion``    y = (q₀, q₁, q₂, q₃, ω̃₁, ω̃₂, ω̃₃), q̇ = ½ q ⊗ (0, ω̃), I ω̃̇ = (I ω̃) × ω̃ + τ̃:
                     no coordinate singularity. R(q) is divided by |q|², so the equations are
                     invariant under q → s q and a drifting norm does not bias the physics.
-* ``euler-poisson`` y = (L, n, e): the angular momentum about the pivot L = I ω̃, the upward
-                    vertical n = Rᵀẑ and the inertial x̂ as e = Rᵀx̂, all in body axes:
+* ``euler-poisson`` y = (ω̃, n, e): the body angular velocity, the upward vertical n = Rᵀẑ and
+                    the inertial x̂ as e = Rᵀx̂, all in body axes; with L = I ω̃ about the pivot,
                     L̇ = L × ω̃ + τ̃,  ṅ = n × ω̃,  ė = e × ω̃  (a vector fixed in space, seen from
                     the body). Gravity's torque is M g n × r_c. R has the rows e, n × e, n.
+                    ω̃ rather than L is the state so that atol means the same as in the other
+                    formulations (L = I ω̃ scales with the moments).
 
 Besides the right-hand side every model carries
 
@@ -54,7 +56,8 @@ class Model:
     domain (the generated rhs returns 1 otherwise). ``init`` gives y from ``INPUTS`` and p;
     ``init_params`` gives (index, expression) for parameters the formulation derives from the
     inputs (computed in order, each may use the ones before). ``outputs`` maps an output name to
-    an expression or a tuple of three.
+    an expression or a tuple of three. ``checks`` are quantities of (y, p) that ``auto`` reads
+    (the reduced top's Routh polynomial at the pole clearances).
     """
 
     name: str
@@ -66,6 +69,7 @@ class Model:
     outputs: dict = field(default_factory=dict)
     init: tuple = ()
     init_params: tuple = ()
+    checks: dict = field(default_factory=dict)
     domain: tuple = ()
     domain_note: str = ""
     effects: tuple = ()
@@ -256,13 +260,46 @@ def reduced(effects=()) -> Model:
     diff = (-sp.sin(_B) * sp.cos(_G) * I1 * _W1 + sp.sin(_B) * sp.sin(_G) * I1 * _W2
             - 2 * sp.sin(_B / 2) ** 2 * p_gamma)
     init_params = ((params.index(p_gamma), I3 * _W3), (params.index(p_alpha), p_gamma + diff))
+    checks = routh_checks(effects, sym, Veff, red.effective_potential)
     return Model(model_name("reduced", True, [e.name for e in effects]), "reduced",
                  "symmetric top reduced to beta (Routh): conserved p_alpha, p_gamma as parameters, "
                  "half-angle partial fractions so nothing cancels near beta = 0 or pi",
                  (alpha, beta, gamma, beta_d), params, (ad, beta_d, gd, bdd), out,
                  init=(_A, _B, _G, _given(_BD, _W1 * sp.sin(_G) + _W2 * sp.cos(_G))),
-                 init_params=init_params,
+                 init_params=init_params, checks=checks,
                  effects=tuple(e.name for e in effects), symmetric=True)
+
+
+def routh_checks(effects, sym, Veff_half, Veff) -> dict:
+    """Where the β motion can go, from the Routh reduction: with u = cos β,
+
+        u̇² = f(u) = (1 − u²)(2/I₁)(E′ − V(u)) − ((p_α − p_γ u)/I₁)²,   E′ = ½ I₁ β̇² + V_eff(β),
+
+    and u moves between the roots of f around u₀ = cos β₀ (f(u₀) ≥ 0, f(±1) ≤ 0). So the motion
+    keeps |sin β| ≥ s (s = ``formulations.POLE_CLEARANCE``) exactly when |u₀| < u_c and
+    f(u_c) < 0 and f(−u_c) < 0, u_c = √(1 − s²): f changes sign once between u₀ and each pole.
+    Returns {f_top: f(u_c), f_bottom: f(−u_c), cos_beta: u₀}; (p_α − p_γ u) stays a square so
+    that nothing cancels when p_α ≈ p_γ.
+    """
+    from .formulations import POLE_CLEARANCE
+
+    u = sp.Symbol("u", real=True)
+    V = fx.potential(effects, ZYZ.matrix(), sym)
+    V_u = trig_reduce(V).subs(sp.cos(beta), u)
+    if V_u.has(beta):
+        raise ValueError("the reduced formulation needs a potential that depends on cos(beta) alone")
+    # The derivation's V_eff must be the centrifugal term plus V (checked, not assumed).
+    centrifugal = (p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2)
+    if sp.simplify(trig_reduce(sp.together(Veff - centrifugal - V))) != 0:
+        raise ValueError("V_eff is not the centrifugal term plus V")
+    E_prime = sp.Rational(1, 2) * I1 * beta_d**2 + Veff_half
+    s = sp.Rational(1, 1) / sp.Integer(round(1 / POLE_CLEARANCE))
+    uc = sp.sqrt(1 - s**2)
+
+    def f(at):
+        return (1 - at**2) * (2 / I1) * (E_prime - V_u.subs(u, at)) - ((p_alpha - p_gamma * at) / I1) ** 2
+
+    return {"f_top": f(uc), "f_bottom": f(-uc), "cos_beta": sp.cos(beta)}
 
 
 def quaternion_of_angles(a, b, c):
@@ -313,28 +350,28 @@ def quaternion(symmetric: bool, effects=()) -> Model:
 
 
 def euler_poisson(symmetric: bool, effects=()) -> Model:
-    """Euler–Poisson: L = I ω̃ about the pivot, the vertical n = Rᵀẑ and e = Rᵀx̂ in body axes.
+    """Euler–Poisson: the body angular velocity ω̃, the vertical n = Rᵀẑ and e = Rᵀx̂ in body axes.
 
-    L̇ = L × ω̃ + τ̃,  ṅ = n × ω̃,  ė = e × ω̃,  ω̃ = I⁻¹L;  for gravity τ̃ = M g n × r_c (derived
-    here from the effect's potential M g ẑ·(R r_c) = M g n·r_c by a virtual rotation).
+    I ω̃̇ = (I ω̃) × ω̃ + τ̃  (L̇ = L × ω̃ + τ̃ with L = I ω̃),  ṅ = n × ω̃,  ė = e × ω̃;  for gravity
+    τ̃ = M g n × r_c (derived here from the effect's potential M g ẑ·(R r_c) = M g n·r_c by a
+    virtual rotation).
     """
     effects = tuple(effects)
     sym = fx.Symbols(effects)
     moments = _moments(symmetric)
-    Lv = sp.Matrix(sp.symbols("L1:4", real=True))
+    w = sp.Matrix(sp.symbols("omega1:4", real=True))
     n = sp.Matrix(sp.symbols("n1:4", real=True))
     e = sp.Matrix(sp.symbols("e1:4", real=True))
-    w = sp.Matrix([Lv[i] / moments[i] for i in range(3)])
     R = sp.Matrix.vstack(e.T, n.cross(e).T, n.T)
     tau = fx.torque(effects, w, R, sym)
-    Ldot = Lv.cross(w) + tau
-    rhs = tuple(Ldot) + tuple(n.cross(w)) + tuple(e.cross(w))
+    wdot = euler_rhs(moments, w) + sp.Matrix([tau[i] / moments[i] for i in range(3)])
+    rhs = tuple(wdot) + tuple(n.cross(w)) + tuple(e.cross(w))
     R0 = ZYZ.matrix(_A, _B, _G)
-    init = tuple(moments[i] * (_W1, _W2, _W3)[i] for i in range(3)) + tuple(R0[2, :]) + tuple(R0[0, :])
+    init = (_W1, _W2, _W3) + tuple(R0[2, :]) + tuple(R0[0, :])
     return Model(model_name("euler-poisson", symmetric, [e_.name for e_ in effects]), "euler-poisson",
-                 "Euler-Poisson: angular momentum L = I omega about the pivot, the vertical n and the "
-                 "inertial x axis e in body axes",
-                 tuple(Lv) + tuple(n) + tuple(e), _moment_params(symmetric) + sym.params(), rhs,
+                 "Euler-Poisson: body angular velocity omega, the vertical n and the inertial x axis e "
+                 "in body axes (L = I omega about the pivot)",
+                 tuple(w) + tuple(n) + tuple(e), _moment_params(symmetric) + sym.params(), rhs,
                  _outputs(R, w, moments, effects, sym, _angles_of(R)), init=init,
                  effects=tuple(e_.name for e_ in effects), symmetric=symmetric)
 

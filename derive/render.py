@@ -16,8 +16,6 @@ import functools
 import importlib.resources
 from pathlib import Path
 
-import jinja2
-
 #: The folder holding the ``derive`` package: the repository root in a checkout; in an installed
 #: package it is ``site-packages`` (no ``scenes/`` or ``benchmarks/`` there).
 ROOT = Path(__file__).resolve().parent.parent
@@ -47,7 +45,11 @@ def c_double(x) -> str:
 
 
 @functools.lru_cache(maxsize=None)
-def environment() -> jinja2.Environment:
+def environment():
+    # Jinja2 is imported here, not at module level: the warm path (a model already generated)
+    # reads GENERATED but renders nothing.
+    import jinja2
+
     env = jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(TEMPLATES)),
         undefined=jinja2.StrictUndefined,

@@ -108,10 +108,16 @@ _FIXED_KEYS = {  # table -> its keys, in the order they are documented
 
 def _table_keys() -> dict[str, tuple[str, ...]]:
     """Every table's keys: body, the effects' tables (from the registry), initial, simulate."""
+    if _TABLE_KEYS and _TABLE_KEYS[0] == effects.VERSION[0]:
+        return _TABLE_KEYS[1]
     keys = {"body": _FIXED_KEYS["body"]}
     keys.update({name: tuple(k.name for k in t.keys) for name, t in effects.TABLES.items()})
     keys.update(initial=_FIXED_KEYS["initial"], simulate=_FIXED_KEYS["simulate"])
+    _TABLE_KEYS[:] = [effects.VERSION[0], keys]
     return keys
+
+
+_TABLE_KEYS: list = []
 _TOP_KEYS = ("title",)
 
 

@@ -1,41 +1,46 @@
-"""Simulate a scene: scene → model → kernel → integrator → results.
+"""Simulate a scene: scene → model → compiled kernel → one C call → results.
 
-The scene names the effects; the model is built from exactly those (`models.build`), compiled
-once per process (`kernel_for`), integrated in C (or by SciPy on the generated NumPy
-right-hand side, for comparison), and the outputs of the contract are computed from the
-state by the model's generated observables, whatever formulation ran.
+The flow runs one way:
 
-Formulation "auto":
-* symmetric body, conservative effects, and a β range that stays clear of the poles (or meets
-  a pole only where the reduced equations are regular: p_α = ±p_γ) → ``reduced``: the one
-  degree of freedom that is left once p_α, p_γ are conserved;
-* otherwise → ``quaternion``, which has no coordinate singularity.
-The Euler-angle formulation runs only when asked for; it then refuses (IntegrationError) to
-return a trajectory that came closer to β = 0 or π than its accuracy allows.
+1. the scene (validated, :mod:`derive.scene`) names the body, its effects and the settings;
+2. :mod:`derive.auto` picks the formulation (and the method, for "auto") from derived
+   quantities: the formulations' costs and, for the ones with a singular set, the β range from
+   the Routh reduction's polynomial, evaluated in compiled code;
+3. :mod:`derive.catalogue` gives the generated model (shipped in generated/, or derived once and
+   cached) and :class:`derive.integrate.ModelKernel` its compiled (model, method) library;
+4. one C call runs the init map (scene inputs → state and derived parameters), the integration
+   and the output map at every sample (angles made canonical) into preallocated arrays;
+5. the arrays become a :class:`Result`; ``integral_<name>`` arrays are added for the integrable
+   cases (:mod:`derive.integrable`).
+
+Nothing on this path imports SymPy (unless a model must be derived first), matplotlib or the
+reference solutions of :mod:`derive.exact`.
 """
 from __future__ import annotations
 
 import functools
-import types
+import math
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
-from . import models
+from . import auto, catalogue
 from .errors import IntegrationError, SceneError
-from .scene import Scene, load_scene
+from .formulations import OUTPUTS
+from .integrate import ModelKernel
+from .scene import FIXED_STEP_METHODS, Scene, load_scene
+from .solvers import METHODS as C_METHODS
+from .status import Status
+from .status import message as status_message
 
-FIXED_STEP = ("rk4", "gauss4", "gauss6")
-SCIPY_METHODS = {"scipy-rk45": "RK45", "scipy-dop853": "DOP853", "scipy-radau": "Radau", "scipy-lsoda": "LSODA"}
-# Closest approach to a pole (|sin β|) at which the reduced and Euler-angle formulations still
-# keep their accuracy; nearer than this, "auto" takes the quaternion formulation.
-POLE_CLEARANCE = 1e-3
+FIXED_STEP = FIXED_STEP_METHODS
+SCIPY_METHODS = {"scipy-rk45": "RK45", "scipy-dop853": "DOP853", "scipy-radau": "Radau",
+                 "scipy-lsoda": "LSODA"}
 
 
 @dataclass
 class Result:
-    """The arrays of the output file (see INTERFACE.md), as attributes."""
+    """The arrays of the output file (see the README, "Output file"), as attributes."""
 
     t: np.ndarray
     alpha: np.ndarray
@@ -46,31 +51,281 @@ class Result:
     energy: np.ndarray
     p_alpha: np.ndarray
     p_gamma: np.ndarray
+    n: np.ndarray
+    L: np.ndarray
     method: str
     formulation: str
     nfev: int
     model: str = ""
+    integrals: dict = field(default_factory=dict)
     state: np.ndarray | None = field(default=None, repr=False)
     scene: Scene | None = field(default=None, repr=False)
 
     def arrays(self) -> dict:
-        return dict(t=self.t, alpha=self.alpha, beta=self.beta, gamma=self.gamma, omega=self.omega,
-                    axis=self.axis, energy=self.energy, p_alpha=self.p_alpha, p_gamma=self.p_gamma,
-                    method=np.array(self.method), formulation=np.array(self.formulation),
-                    nfev=np.array(self.nfev, dtype=np.int64))
+        """Everything the .npz holds, by name."""
+        out = {name: getattr(self, name) for name, _ in OUTPUTS}
+        out["t"] = self.t
+        out.update({f"integral_{k}": v for k, v in self.integrals.items()})
+        out.update(method=np.array(self.method), formulation=np.array(self.formulation),
+                   nfev=np.array(self.nfev, dtype=np.int64))
+        return out
+
+    def __getattr__(self, name):
+        if name.startswith("integral_") and name[9:] in self.__dict__.get("integrals", {}):
+            return self.integrals[name[9:]]
+        raise AttributeError(name)
 
 
 # ---------------------------------------------------------------------------------------------
-# model and kernel
+# scene → numbers
 
 
-def effect_names(scene: Scene) -> tuple[str, ...]:
-    """The registry effects a scene calls for (gravity only when it has a [gravity] table, …)."""
-    return scene.effects
+def inputs_of(scene: Scene) -> np.ndarray:
+    """The init map's inputs (`formulations.INPUT_NAMES`): angles, body ω̃, the Euler-angle rates
+    where the scene gave them (rates_given = 1), else zeros (rates_given = 0)."""
+    i = scene.initial
+    rates = (i.alpha_dot, i.beta_dot, i.gamma_dot) if i.has_rates else (0.0, 0.0, 0.0)
+    return np.array([i.alpha, i.beta, i.gamma, *i.omega, *rates, 1.0 if i.has_rates else 0.0])
+
+
+def params_of(scene: Scene, desc) -> np.ndarray:
+    """The model's parameters from the scene; the ones the init map derives start as 0."""
+    values = scene.param_values()
+    derived = set(desc.derived_params)
+    return np.array([0.0 if k in derived else values[name] for k, name in enumerate(desc.params)])
+
+
+def choose_method(scene: Scene) -> str:
+    return "dop853" if scene.simulate.method == "auto" else scene.simulate.method
+
+
+def default_step(scene: Scene) -> float:
+    """A fixed step for the fixed-step methods when the scene gives none: 1/200 of the fastest
+    natural period (spin, or a rate an effect sets), and no larger than the output spacing."""
+    from . import effects
+
+    b, i = scene.body, scene.initial
+    rates = [float(np.linalg.norm(i.omega)) * max(b.moments) / min(b.moments)]
+    for t in scene.tables.values():
+        rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
+    fastest = max(max(rates), 1e-12)
+    dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
+    return float(min(2 * np.pi / fastest / 200, dt_out))
+
+
+def fixed_steps(scene: Scene, h: float) -> int:
+    """How many steps a fixed-step run takes: ceil(Δt/h) per output interval, counted as the C
+    drivers count them (a ratio within a relative 1e-10 above an integer counts as that
+    integer)."""
+    dt = scene.simulate.t_end / (scene.simulate.samples - 1)
+    r = dt / h
+    if not math.isfinite(r) or r > 1e15:
+        return 10**18
+    n = math.ceil(r)
+    if n > 1 and n - r > 1.0 - 1e-10 * r:
+        n -= 1
+    return max(n, 1) * (scene.simulate.samples - 1)
+
+
+def _check_budget(scene: Scene, method: str, h: float) -> None:
+    """A fixed-step run is refused up front (bad input, before any work) when its steps exceed
+    ``[simulate] max_steps``."""
+    steps = fixed_steps(scene, h)
+    if steps > scene.simulate.max_steps:
+        shown = f"{steps}" if steps < 10**18 else "more than 1e18"
+        raise SceneError(f"{scene.source}: simulate.h: {method} with h = {h:.6g} s over t_end = "
+                         f"{scene.simulate.t_end:.6g} s takes {shown} steps, more than "
+                         f"simulate.max_steps = {scene.simulate.max_steps}")
+
+
+def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
+    s = scene.simulate
+    h = s.h
+    if C_METHODS[method].driver != "adaptive":
+        h = default_step(scene) if h is None else h
+        _check_budget(scene, method, h)
+    return kernel.driver_args(s.rtol, s.atol, h, s.max_steps)
+
+
+# ---------------------------------------------------------------------------------------------
+# results
+
+
+def _explain(desc, stats, max_steps) -> str:
+    """The solver's one-line failure message; for a domain error, what the domain is."""
+    if int(stats["status"]) == Status.DOMAIN and desc.domain_note:
+        return f"t = {float(stats['t_fail']):.8g}: {desc.domain_note}"
+    return status_message(stats, desc.states, max_steps)
+
+
+def _result(desc, out, y, t, scene, method, nfev, p) -> Result:
+    views, k = {}, 0
+    for name, width in OUTPUTS:
+        views[name] = out[k] if width == 1 else out[k:k + width].T
+        k += width
+    for name in ("alpha", "beta", "gamma", "omega", "axis", "energy"):
+        bad = ~np.isfinite(views[name])
+        if bad.any():
+            j = int(np.argwhere(bad)[0][0])
+            raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
+    res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
+                 model=desc.name, state=y, scene=scene, **views)
+    res.integrals = _integrals(scene, res, p)
+    return res
+
+
+def _integrals(scene: Scene, res: Result, p) -> dict:
+    """``integral_<name>`` arrays of the scene's integrable case (none for a general body)."""
+    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in _integrals_of(scene)}
+
+
+def _integrals_of(scene: Scene):
+    # The case depends on the body and the effects' numbers alone: classified once per body.
+    key = (scene.body, tuple(sorted((k, tuple(v.items())) for k, v in scene.tables.items())))
+    found = _INTEGRALS.get(key)
+    if found is None:
+        from .integrable import integrals_for
+
+        found = _INTEGRALS[key] = integrals_for(scene)
+    return found
+
+
+_INTEGRALS: dict = {}
+
+
+def _check_pole(desc, t, beta, rtol):
+    """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
+    trajectory whose closest approach to a pole made that larger than the tolerance."""
+    if desc.formulation != "euler-angles":
+        return
+    s = np.abs(np.sin(beta))
+    k = int(np.argmin(s))
+    if s[k] ** 2 < np.finfo(float).eps / rtol:
+        raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
+                               f"(|sin beta| = {s[k]:.3g}); use formulation = \"quaternion\" or \"auto\"")
+
+
+# ---------------------------------------------------------------------------------------------
+# entry points
+
+
+def simulate(scene, **overrides) -> Result:
+    """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
+    sc = load_scene(scene, **overrides)
+    key = auto.model_key(sc)
+    desc = catalogue.describe(key)
+    method = choose_method(sc)
+    t = sc.t_out
+    inputs = inputs_of(sc)
+    p = params_of(sc, desc)
+    if method in SCIPY_METHODS:
+        out, y, p, nfev = _solve_scipy(desc, SCIPY_METHODS[method], inputs, p, t, sc)
+    else:
+        kernel = ModelKernel.load(desc, method)
+        args = _settings(sc, method, kernel)
+        out, y, p, st = kernel.simulate(inputs, p, t, args)
+        if st["status"]:
+            raise IntegrationError(_explain(desc, st, sc.simulate.max_steps))
+        nfev = int(st["nfev"])
+    _check_pole(desc, t, out[1], sc.simulate.rtol)
+    return _result(desc, out, y, t, sc, method, nfev, p)
+
+
+def simulate_batch(scenes, **overrides) -> list[Result]:
+    """Simulate many scenes that differ only in numbers (initial state, moments, effect
+    parameters) with one call into C: init, integration and outputs of every trajectory run in
+    the compiled loop.
+
+    All scenes must name the same effects, body symmetry, output times, method and
+    tolerances. With formulation "auto", the scenes share one formulation: the common choice
+    if they agree, else one without a singular set (safe for every one of them).
+    """
+    scs = [load_scene(s, **overrides) for s in scenes]
+    if not scs:
+        return []
+    first = scs[0]
+
+    def shared(sc):
+        s = sc.simulate
+        return (sc.symmetric, sc.effects, s.samples, s.t_end, choose_method(sc), s.rtol, s.atol,
+                s.h, s.max_steps)
+
+    ref = shared(first)
+    for sc in scs[1:]:
+        if shared(sc) != ref:
+            raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
+                             f"times, method and tolerances as {first.source}")
+    method = choose_method(first)
+    if method in SCIPY_METHODS:
+        raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
+    key = auto.batch_key(scs)
+    desc = catalogue.describe(key)
+    kernel = ModelKernel.load(desc, method)
+    if C_METHODS[method].driver != "adaptive" and first.simulate.h is None:
+        h = min(default_step(sc) for sc in scs)
+        for sc in scs:
+            _check_budget(sc, method, h)
+        args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, h, first.simulate.max_steps)
+    else:
+        args = _settings(first, method, kernel)
+    inputs = np.array([inputs_of(sc) for sc in scs])
+    ps = np.array([params_of(sc, desc) for sc in scs])
+    t = first.t_out
+    out, y, ps, st = kernel.simulate_batch(inputs, ps, t, args)
+    results = []
+    for b, sc in enumerate(scs):
+        if st[b]["status"]:
+            raise IntegrationError(f"{sc.source}: {_explain(desc, st[b], sc.simulate.max_steps)}")
+        _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
+        results.append(_result(desc, out[b], y[b], t, sc, method, int(st[b]["nfev"]), ps[b]))
+    return results
+
+
+def _solve_scipy(desc, method, inputs, p, t, sc):
+    """SciPy's solve_ivp on the generated NumPy right-hand side (a reference, not the fast
+    path): the compiled init map gives y0, the compiled output map the outputs."""
+    from scipy.integrate import solve_ivp
+
+    kernel = ModelKernel.load(desc, "dop853")  # for its init and output maps
+    y0, p, rc = kernel.init(inputs, p)
+    if rc:
+        raise IntegrationError(f"t = {t[0]:.6g}: the initial state is not finite")
+    mod = numpy_module(desc)
+    s = sc.simulate
+    sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=method, t_eval=t, rtol=s.rtol,
+                    atol=s.atol, args=(p,),
+                    **({"jac": mod.jac} if method in ("Radau", "BDF", "LSODA") else {}))
+    if not sol.success:
+        raise IntegrationError(f"t = {sol.t[-1] if sol.t.size else t[0]:.6g}: scipy {method}: {sol.message}")
+    y = sol.y.T.copy()
+    return kernel.outputs_at(t, y, p), y, p, sol.nfev
 
 
 @functools.lru_cache(maxsize=None)
-def model_for(formulation: str, symmetric: bool, effects: tuple) -> models.Model:
+def _numpy_module(folder: str, name: str):
+    import importlib.util
+    from pathlib import Path
+
+    spec = importlib.util.spec_from_file_location(f"derive_generated_{name}",
+                                                  Path(folder) / "numpy" / f"{name}.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def numpy_module(desc):
+    """The generated NumPy module of a model (imported from its file)."""
+    return _numpy_module(desc.folder, desc.name)
+
+
+# ---------------------------------------------------------------------------------------------
+# derivation-side helpers (SymPy; tests and benchmarks, never the simulate path)
+
+
+@functools.lru_cache(maxsize=None)
+def model_for(formulation: str, symmetric: bool, effects: tuple):
+    from . import models
+
     return models.build(formulation, symmetric, effects)
 
 
@@ -84,7 +339,9 @@ def sources_for(formulation: str, symmetric: bool, effects: tuple) -> dict:
 
 @functools.lru_cache(maxsize=None)
 def kernel_for(formulation: str, symmetric: bool, effects: tuple):
-    """The compiled C kernel (model + solvers) for a model; derived and compiled once."""
+    """The compiled C kernel (model + every solver) for a model, for tests and benchmarks."""
+    from pathlib import Path
+
     from .integrate import Kernel
 
     model = model_for(formulation, symmetric, effects)
@@ -93,46 +350,36 @@ def kernel_for(formulation: str, symmetric: bool, effects: tuple):
     return Kernel.from_sources(model.name, sources)
 
 
-@functools.lru_cache(maxsize=None)
-def numpy_module_for(formulation: str, symmetric: bool, effects: tuple) -> types.ModuleType:
-    """The generated NumPy module of a model, loaded from its rendered text."""
-    model = model_for(formulation, symmetric, effects)
-    text = sources_for(formulation, symmetric, effects)[f"numpy/{model.name}.py"]
-    mod = types.ModuleType(f"derive_generated_{model.name}")
-    exec(compile(text, f"<generated {model.name}>", "exec"), mod.__dict__)
-    return mod
+def effect_names(scene: Scene) -> tuple[str, ...]:
+    """The registry effects a scene calls for."""
+    return scene.effects
 
 
-# ---------------------------------------------------------------------------------------------
-# initial state and parameters per formulation
+def choose_formulation(scene: Scene) -> str:
+    """The formulation ``simulate`` runs for this scene."""
+    return auto.model_key(scene)[0]
 
 
-def _momenta(scene: Scene) -> tuple[float, float]:
-    """(p_α, p_γ) as the reduced kernel receives them, p_α formed as p_γ + (p_α − p_γ) with the
-    difference computed without cancellation, so a top with p_α = p_γ gets exactly equal
-    parameters even at β₀ ~ 1e-8 (where p_α computed directly is off by an ulp of p_γ).
-
-    p_α = ẑ·(R I ω̃), the ẑ row of R being (−sinβ cosγ, sinβ sinγ, cosβ), so
-    p_α − p_γ = row₁₂ · (I ω̃)₁₂ − 2 sin²(β/2) I₃ω̃₃.
-    """
-    b, i = scene.body, scene.initial
-    w = np.asarray(i.omega, dtype=float)
-    p_gamma = b.I3 * w[2]
-    sb = np.sin(i.beta)
-    diff = float(-sb * np.cos(i.gamma) * b.I1 * w[0] + sb * np.sin(i.gamma) * b.I2 * w[1]
-                 - 2.0 * np.sin(i.beta / 2) ** 2 * p_gamma)
-    return float(p_gamma + diff), float(p_gamma)
+def _initial_state(scene: Scene, model) -> np.ndarray:
+    """y0 of ``model`` for the scene (by the compiled init map)."""
+    return _init(scene, model)[0]
 
 
-def _params(scene: Scene, model: models.Model) -> np.ndarray:
-    values = scene.param_values()
-    if model.formulation == "reduced":
-        values["p_alpha"], values["p_gamma"] = _momenta(scene)
-    return np.array([values[n] for n in model.param_names], dtype=float)
+def _params(scene: Scene, model) -> np.ndarray:
+    """p of ``model`` for the scene, derived parameters included (by the compiled init map)."""
+    return _init(scene, model)[1]
+
+
+def _init(scene: Scene, model):
+    desc = catalogue.describe((model.formulation, model.symmetric, model.effects))
+    y0, p, rc = ModelKernel.load(desc, None).init(inputs_of(scene), params_of(scene, desc))
+    if rc:
+        raise IntegrationError("the initial state is not finite")
+    return y0, p
 
 
 def _quaternion(a, b, c) -> np.ndarray:
-    """q of R = Rz(α) Ry(β) Rz(γ), scalar first: product of the three half-angle quaternions."""
+    """q of R = Rz(α) Ry(β) Rz(γ), scalar first (the quaternion model's init map, in NumPy)."""
     qa = np.array([np.cos(a / 2), 0.0, 0.0, np.sin(a / 2)])
     qb = np.array([np.cos(b / 2), 0.0, np.sin(b / 2), 0.0])
     qc = np.array([np.cos(c / 2), 0.0, 0.0, np.sin(c / 2)])
@@ -144,295 +391,18 @@ def _qmul(p, q) -> np.ndarray:
     return np.concatenate([[p0 * q0 - pv @ qv], p0 * qv + q0 * pv + np.cross(pv, qv)])
 
 
-def _initial_state(scene: Scene, model: models.Model) -> np.ndarray:
-    i = scene.initial
-    if model.formulation == "quaternion":
-        return np.concatenate([_quaternion(i.alpha, i.beta, i.gamma), i.omega])
-    if model.formulation == "reduced":
-        return np.array([i.alpha, i.beta, i.gamma, _beta_dot(scene)])
-    if model.formulation == "euler-angles":
-        rates = euler_rates(scene)
-        if rates is None:
-            raise SceneError(f"{scene.source}: initial: the Euler-angle rates are undefined at sin(beta) = "
-                             f"{np.sin(i.beta):.3g}; give the rates, or use formulation = \"quaternion\"")
-        return np.array([i.alpha, i.beta, i.gamma, *rates])
-    raise ValueError(model.formulation)
-
-
-def euler_rates(scene: Scene):
-    """(α̇, β̇, γ̇) as given, or from ω̃ by the inverse map
-    α̇ = (−ω̃₁ cos γ + ω̃₂ sin γ)/sin β, β̇ = ω̃₁ sin γ + ω̃₂ cos γ, γ̇ = ω̃₃ − α̇ cos β;
-    None where that map is too ill-conditioned to use (|sin β| < POLE_CLEARANCE)."""
-    i = scene.initial
-    if i.alpha_dot is not None:
-        return float(i.alpha_dot), float(i.beta_dot), float(i.gamma_dot)
-    s = np.sin(i.beta)
-    if abs(s) < POLE_CLEARANCE:
-        return None
-    w1, w2, w3 = i.omega
-    cg, sg = np.cos(i.gamma), np.sin(i.gamma)
-    ad = (-w1 * cg + w2 * sg) / s
-    return float(ad), float(w1 * sg + w2 * cg), float(w3 - ad * np.cos(i.beta))
-
-
-def _beta_dot(scene: Scene) -> float:
-    i = scene.initial
-    if i.beta_dot is not None:
-        return float(i.beta_dot)
-    w1, w2, _ = i.omega
-    return float(w1 * np.sin(i.gamma) + w2 * np.cos(i.gamma))
-
-
-# ---------------------------------------------------------------------------------------------
-# choosing the formulation
-
-
-def beta_range(scene: Scene) -> tuple[float, float]:
-    """[β_min, β_max] of |β| for a conservative symmetric top: the turning points of
-    f(u) = (1 − u²)(2/I₁)(E′ − M g l u) − ((p_α − p_γ u)/I₁)², u = cos β.
-
-    The roots come from the exact solution's cubic (`exact.heavy_top`), which is centred at the
-    initial point and refined next to each pole, so a double root (steady precession) or a
-    turning point at the start (β̇₀ = 0) needs no special case here. Where the Euler rates are
-    undefined (ω̃ given at a pole) the range is reported as the initial tilt alone.
-    """
-    from . import exact
-
-    i = scene.initial
-    beta0 = abs(float(i.beta))
-    rates = euler_rates(scene)
-    if rates is None:
-        return beta0, beta0
-    g = scene.gravity
-    M, gg, l = (g.M, g.g, g.l) if g is not None else (1.0, 0.0, 0.0)
-    info = exact.heavy_top(scene.body.I1, scene.body.I3, M, gg, l, i.alpha, i.beta, i.gamma,
-                           *rates, [0.0]).info
-    if "y_roots" not in info:  # an equilibrium: β stays where it is
-        return beta0, beta0
-    y1, y2 = info["y_roots"][:2]
-    # y = sin²(β/2) of the problem exact.py solved (mirrored β → π − β when β₀ > π/2).
-    lo, hi = (2.0 * np.arcsin(np.sqrt(np.clip(y, 0.0, 1.0))) for y in (y1, y2))
-    if info.get("mirrored"):
-        lo, hi = np.pi - hi, np.pi - lo
-    return float(lo), float(hi)
-
-
-def choose_formulation(scene: Scene) -> str:
-    requested = scene.simulate.formulation
-    if requested != "auto":
-        return requested
-    from . import effects
-
-    if not scene.symmetric or any(not (e.conservative and e.axisymmetric)
-                                  for e in effects.lookup(scene.effects)):
-        return "quaternion"
-    p_alpha, p_gamma = _momenta(scene)
-    b_lo, b_hi = beta_range(scene)
-    near_top = np.sin(b_lo) < POLE_CLEARANCE and b_lo < np.pi / 2
-    near_bottom = np.sin(b_hi) < POLE_CLEARANCE and b_hi > np.pi / 2
-    # At a pole the reduced equations stay regular only when the matching momentum sum vanishes,
-    # as the kernel sees it.
-    if (near_top and p_alpha - p_gamma != 0.0) or (near_bottom and p_alpha + p_gamma != 0.0):
-        return "quaternion"
-    return "reduced"
-
-
-def choose_method(scene: Scene) -> str:
-    return "dop853" if scene.simulate.method == "auto" else scene.simulate.method
-
-
-# ---------------------------------------------------------------------------------------------
-# outputs
-
-
-def _euler_from_quaternion(q: np.ndarray):
-    """Continuous z-y-z angles of R(q): β ∈ [0, π], α and γ unwrapped."""
-    q = q / np.linalg.norm(q, axis=1, keepdims=True)
-    q0, q1, q2, q3 = q.T
-    r13 = 2 * (q1 * q3 + q0 * q2)
-    r23 = 2 * (q2 * q3 - q0 * q1)
-    r31 = 2 * (q1 * q3 - q0 * q2)
-    r32 = 2 * (q2 * q3 + q0 * q1)
-    # cos β = q0² − q1² − q2² + q3², sin β = 2 √((q0² + q3²)(q1² + q2²)): both accurate near the poles.
-    a2, b2 = q0**2 + q3**2, q1**2 + q2**2
-    beta = np.arctan2(2 * np.sqrt(a2 * b2), a2 - b2)
-    alpha = np.unwrap(np.arctan2(r23, r13))
-    gamma = np.unwrap(np.arctan2(r32, -r31))
-    return alpha, beta, gamma
-
-
-def _outputs(model: models.Model, mod, t, Y, p, scene, method, nfev) -> Result:
-    obs = mod.observables(t, Y.T, p)
-    named = dict(zip(mod.OBSERVABLE_NAMES, obs))
-    if model.formulation == "quaternion":
-        alpha, beta, gamma = _euler_from_quaternion(Y[:, :4])
-    else:
-        alpha, beta, gamma = Y[:, 0], Y[:, 1], Y[:, 2]
-    res = Result(
-        t=t, alpha=alpha, beta=beta, gamma=gamma,
-        omega=np.stack([named["omega1"], named["omega2"], named["omega3"]], axis=1),
-        axis=np.stack([named["axis_x"], named["axis_y"], named["axis_z"]], axis=1),
-        energy=np.broadcast_to(named["energy"], t.shape).copy(),
-        p_alpha=np.broadcast_to(named["p_alpha"], t.shape).astype(float).copy(),
-        p_gamma=np.broadcast_to(named["p_gamma"], t.shape).astype(float).copy(),
-        method=method, formulation=model.formulation, nfev=int(nfev), model=model.name, state=Y, scene=scene,
-    )
-    for name in ("alpha", "beta", "gamma", "omega", "axis", "energy"):
-        arr = getattr(res, name)
-        bad = ~np.isfinite(arr)
-        if bad.any():
-            k = int(np.argwhere(bad)[0][0])
-            raise IntegrationError(f"t = {t[k]:.6g}: non-finite {name} in the output")
-    return res
-
-
-def _check_pole(model: models.Model, t, Y, rtol):
-    """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
-    trajectory whose closest approach to a pole made that larger than the tolerance."""
-    if model.formulation != "euler-angles":
-        return
-    s = np.abs(np.sin(Y[:, 1]))
-    k = int(np.argmin(s))
-    if s[k] ** 2 < np.finfo(float).eps / rtol:
-        raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
-                               f"(|sin beta| = {s[k]:.3g}); use formulation = \"quaternion\" or \"auto\"")
-
-
-# ---------------------------------------------------------------------------------------------
-# entry point
-
-
-def simulate(scene, **overrides) -> Result:
-    """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
-    sc = load_scene(scene, **overrides)
-    formulation = choose_formulation(sc)
-    method = choose_method(sc)
-    key = (formulation, sc.symmetric, effect_names(sc))
-    model = model_for(*key)
-    p = _params(sc, model)
-    y0 = _initial_state(sc, model)
-    t = sc.t_out
-    s = sc.simulate
-    if method in SCIPY_METHODS:
-        Y, nfev = _solve_scipy(numpy_module_for(*key), SCIPY_METHODS[method], y0, p, t, s.rtol, s.atol)
-    else:
-        kernel = kernel_for(*key)
-        h = s.h
-        if method in FIXED_STEP and h is None:
-            h = default_step(sc)
-        _check_budget(sc, method, h)
-        sol = kernel.solve(method, y0, p, t, rtol=s.rtol, atol=s.atol, h=h, max_steps=s.max_steps, check=False)
-        if sol.status != 0:
-            raise IntegrationError(_explain(model, sol))
-        Y, nfev = sol.y, sol.nfev
-    _check_pole(model, t, Y, s.rtol)
-    return _outputs(model, numpy_module_for(*key), t, Y, p, sc, method, nfev)
-
-
-def simulate_batch(scenes, **overrides) -> list[Result]:
-    """Simulate many scenes that differ only in numbers (initial state, moments, effect
-    parameters) with one call into C: the loop over trajectories runs in the solver kernel.
-
-    All scenes must name the same effects, body symmetry, output times, method and
-    tolerances. With formulation "auto", the scenes share one formulation: the common choice
-    if they agree, else the quaternion formulation (safe for every one of them).
-    """
-    scs = [load_scene(s, **overrides) for s in scenes]
-    if not scs:
-        return []
-    first = scs[0]
-    shared = lambda sc: (sc.symmetric, effect_names(sc), sc.simulate.samples, sc.simulate.t_end,  # noqa: E731
-                         choose_method(sc), sc.simulate.rtol, sc.simulate.atol, sc.simulate.h)
-    for sc in scs[1:]:
-        if shared(sc) != shared(first):
-            raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
-                             f"times, method and tolerances as {first.source}")
-    forms = {choose_formulation(sc) for sc in scs}
-    formulation = forms.pop() if len(forms) == 1 else "quaternion"
-    method = choose_method(first)
-    if method in SCIPY_METHODS:
-        raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
-    key = (formulation, first.symmetric, effect_names(first))
-    model = model_for(*key)
-    y0s = np.array([_initial_state(sc, model) for sc in scs])
-    ps = np.array([_params(sc, model) for sc in scs])
-    s = first.simulate
-    h = s.h if s.h is not None or method not in FIXED_STEP else min(default_step(sc) for sc in scs)
-    _check_budget(first, method, h)
-    batch = kernel_for(*key).solve_batch(method, y0s, ps, first.t_out, rtol=s.rtol, atol=s.atol, h=h,
-                                         max_steps=s.max_steps, check=False)
-    results = []
-    for b, sc in enumerate(scs):
-        sol = batch[b]
-        if sol.status != 0:
-            raise IntegrationError(f"{sc.source}: {_explain(model, sol)}")
-        _check_pole(model, sc.t_out, sol.y, s.rtol)
-        results.append(_outputs(model, numpy_module_for(*key), sc.t_out, sol.y, ps[b], sc, method, sol.nfev))
-    return results
-
-
-DOMAIN_STATUS = 4  # derive_stats: the rhs reported a state outside the model's domain
-
-
-def _explain(model: models.Model, sol) -> str:
-    """The solver's one-line failure message; for a domain error, what the domain is."""
-    if sol.status == DOMAIN_STATUS and model.domain_note:
-        return f"t = {sol.t_fail:.8g}: {model.domain_note}"
-    return sol.message
-
-
-def _check_budget(scene: Scene, method: str, h: float | None) -> None:
-    """A fixed-step run takes ceil(Δt/h) steps per output interval: refuse it up front (bad
-    input, before any work) when that exceeds ``[simulate] max_steps``."""
-    if method not in FIXED_STEP:
-        return
-    # The count of the C drivers' substeps() (templates/c/solvers.c.j2): a ratio within a
-    # relative 1e-10 above an integer counts as that integer.
-    r = np.diff(scene.t_out) / h
-    n = np.ceil(r)
-    n = np.where((n > 1.0) & (n - r > 1.0 - 1e-10 * r), n - 1.0, n)
-    steps = int(np.sum(np.maximum(n, 1.0)))
-    if steps > scene.simulate.max_steps:
-        raise SceneError(f"{scene.source}: simulate.max_steps: {method} with h = {h:.6g} s needs {steps} "
-                         f"steps, more than max_steps = {scene.simulate.max_steps}")
-
-
-def default_step(scene: Scene) -> float:
-    """A fixed step for RK4 / Gauss–Legendre when the scene gives none: 1/200 of the fastest
-    natural period (spin, precession or pendulum), and no larger than the output spacing."""
-    from . import effects
-
-    b, i = scene.body, scene.initial
-    rates = [np.linalg.norm(i.omega) * max(b.I1, b.I2, b.I3) / min(b.I1, b.I2, b.I3)]
-    for t in scene.tables.values():
-        rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
-    fastest = max(max(rates), 1e-12)
-    dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
-    return float(min(2 * np.pi / fastest / 200, dt_out))
-
-
-def _solve_scipy(mod, method, y0, p, t, rtol, atol):
-    from scipy.integrate import solve_ivp
-
-    sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=method, t_eval=t, rtol=rtol, atol=atol, args=(p,),
-                    **({"jac": mod.jac} if method in ("Radau", "BDF", "LSODA") else {}))
-    if not sol.success:
-        raise IntegrationError(f"t = {sol.t[-1] if sol.t.size else t[0]:.6g}: scipy {method}: {sol.message}")
-    return sol.y.T.copy(), sol.nfev
-
-
 def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
-    """Write the .npz and/or the plot, all or nothing (see `derive.outputs`): every path is
-    checked first, each file goes to a temporary beside its target, and the temporaries are
-    renamed into place only once all of them were written."""
-    from .outputs import check_paths, write_all
+    """Write the .npz (and the plot), all or nothing (see :mod:`derive.outputs`)."""
+    from .outputs import write_all
 
-    check_paths([npz, png])
     writers = {}
     if npz:
         writers[npz] = lambda f: np.savez(f, **res.arrays())
     if png:
-        from .plots import plot_result
+        def plot(f):
+            from .plots import plot_result
 
-        writers[png] = lambda f: plot_result(res, f)
+            plot_result(res, f)
+
+        writers[png] = plot
     write_all(writers)

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from .render import c_double, render
+from .status import c_table
 from .tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
 
 # Each driver's extra C parameters, in order: (C type, name). Used by the header template and by
@@ -34,17 +35,8 @@ DRIVER_PARAMS: dict[str, tuple[tuple[str, str], ...]] = {
     "implicit": (("double", "h"), ("double", "newton_tol"), ("int", "newton_maxiter")),
 }
 
-# Status codes of derive_stats.status / the solvers' return value (one table, used by the C
-# header and by derive.integrate for messages).
-STATUS = {
-    0: ("DERIVE_OK", "success"),
-    1: ("DERIVE_STEP_UNDERFLOW", "step size underflow"),
-    2: ("DERIVE_NONFINITE", "non-finite value in the state"),
-    3: ("DERIVE_MAX_STEPS", "maximum number of steps exceeded"),
-    4: ("DERIVE_DOMAIN", "state outside the model's domain"),
-    5: ("DERIVE_NEWTON", "Newton iteration failed to converge"),
-    6: ("DERIVE_BAD_ARGS", "bad arguments"),
-}
+# Status codes of derive_stats.status / the solvers' return value: the one enum (derive.status).
+STATUS = c_table()
 
 
 @dataclass(frozen=True)
@@ -162,12 +154,15 @@ def _prod(it):
     return out
 
 
-def render_solvers(prefix: str, ny: int, methods: list[str] | None = None) -> dict[str, str]:
+def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
+                   has_angles: bool = False) -> dict[str, str]:
     """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``.
 
     The C includes ``"<prefix>.h"`` (the model ABI: ``<prefix>_NY``, ``<prefix>_NP``,
-    ``<prefix>_rhs``, ``<prefix>_jac``, the name arrays); ``ny`` is checked against
-    ``<prefix>_NY`` at compile time. ``methods`` defaults to every registered method.
+    ``<prefix>_rhs``, ``<prefix>_jac``, ``<prefix>_init``, ``<prefix>_observables``, the name
+    arrays); ``ny`` is checked against ``<prefix>_NY`` at compile time. ``methods`` defaults to
+    every registered method. ``has_angles``: the first three outputs are z-y-z angles, made
+    canonical by ``<prefix>_outputs_at``.
     """
     if not prefix.isidentifier():
         raise ValueError(f"prefix {prefix!r} is not a C identifier")
@@ -184,6 +179,7 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None) -> di
         "status": STATUS,
         "lincomb": lincomb,
         "newton_halvings": NEWTON_HALVINGS,
+        "has_angles": has_angles,
     }
     ctx["any_implicit"] = any(m["driver"] == "implicit" for m in ctx["methods"])
     return {

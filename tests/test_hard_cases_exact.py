@@ -140,13 +140,17 @@ def test_intermediate_axis_flips_within_the_separatrix_sensitivity_bound(delta):
 # 3. a nearly symmetric body
 
 
+@pytest.mark.parametrize("formulation", ["quaternion", "euler-poisson"])
 @pytest.mark.parametrize("I3", [0.4e-3, 1.6e-3], ids=["prolate", "oblate"])
-def test_nearly_symmetric_body_resolves_a_1e_6_asymmetry(I3):
+def test_nearly_symmetric_body_resolves_a_1e_6_asymmetry(I3, formulation):
     """I2 = I1 (1 + 1e-6). Requirements at rtol 1e-11 over 20 s (Omega t = 240 rad):
     omega (relative to |omega|) and axis within 100 rtol of free_asymmetric - the global error
     of a tolerance-controlled run grows with the 240 rad of circulation: measured 5e-11 and
     2e-10 (prolate), 8e-12 and 2.5e-11 (oblate), the same as scipy's DOP853 at this rtol - and
-    falling at least 5-fold at rtol 1e-12 (the error is the tolerance's, not a floor). The
+    falling at least 5-fold at rtol 1e-12 (the error is the tolerance's, not a floor) - in the
+    axis for both formulations; in omega for the quaternion one (Euler-Poisson's omega is 10x
+    more accurate at equal rtol and already within 5x of its round-off floor, ~1e-13 relative,
+    at rtol 1e-11). The
     departure from the symmetric solution (free_symmetric with I2 = I1) is the first-order one:
 
     The (w1, w2) circulation frequency Omega_a^2 = w3^2 (I3 - I1)(I3 - I2)/(I1 I2) with the mean
@@ -164,15 +168,16 @@ def test_nearly_symmetric_body_resolves_a_1e_6_asymmetry(I3):
     scene = {"body": {"I1": I[0], "I2": I[1], "I3": I[2]},
              "initial": {"alpha": angles[0], "beta": angles[1], "gamma": angles[2], "omega": list(w0)},
              "simulate": {"t_end": 20.0, "samples": 2001, "rtol": 1e-11, "atol": 1e-13}}
-    res = derive.simulate(scene)
-    assert res.formulation == "quaternion"  # I2 != I1: no symmetric-body formulation applies
+    res = derive.simulate(scene, formulation=formulation)
     R0 = exact.euler_matrix(*angles)
     ex = exact.free_asymmetric(*I, w0, res.t, R0)
     wn = float(np.linalg.norm(w0))
     w_err, a_err = max_err(res.omega, ex.omega) / wn, max_err(res.axis, ex.axis)
     assert w_err <= 1e-9 and a_err <= 1e-9
-    fine = derive.simulate(scene, rtol=1e-12, atol=1e-14)
-    assert max_err(fine.omega, ex.omega) / wn <= w_err / 5 and max_err(fine.axis, ex.axis) <= a_err / 5
+    fine = derive.simulate(scene, rtol=1e-12, atol=1e-14, formulation=formulation)
+    assert max_err(fine.axis, ex.axis) <= a_err / 5
+    if formulation == "quaternion":
+        assert max_err(fine.omega, ex.omega) / wn <= w_err / 5
 
     sym = exact.free_symmetric(I1, I3, w0, res.t, R0)
     A, phi = math.hypot(w0[0], w0[1]), math.atan2(w0[1], w0[0])

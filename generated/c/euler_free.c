@@ -79,3 +79,19 @@ int euler_free_observables(double t, const double *y, const double *p, double *o
     out[4] = omega3;
     return 0;
 }
+
+int euler_free_init(const double *in, double *p, double *y)
+{
+    const double in_omega1 = in[3];
+    const double in_omega2 = in[4];
+    const double in_omega3 = in[5];
+    (void)p;
+    int i;
+    y[0] = in_omega1;
+    y[1] = in_omega2;
+    y[2] = in_omega3;
+    for (i = 0; i < euler_free_NY; ++i)
+        if (!isfinite(y[i]))
+            return 1;
+    return 0;
+}

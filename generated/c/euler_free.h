@@ -15,11 +15,14 @@
 
 #define euler_free_NY 3                      /* state size */
 #define euler_free_NP 3                      /* parameter count */
-#define euler_free_NOBS 5                    /* observable count */
+#define euler_free_NOBS 5                    /* observable (output) count */
+#define euler_free_NIN 10                     /* init-map input count */
+#define euler_free_NCHECKS 0                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define EULER_FREE_NY euler_free_NY
 #define EULER_FREE_NP euler_free_NP
 #define EULER_FREE_NOBS euler_free_NOBS
+#define EULER_FREE_NIN euler_free_NIN
 
 extern const char *const euler_free_state_names[euler_free_NY];
 extern const char *const euler_free_param_names[euler_free_NP];
@@ -33,5 +36,10 @@ int euler_free_jac(double t, const double *y, const double *p, double *J);
 
 /* out = (energy, L2, omega1, omega2, omega3). Returns 0. */
 int euler_free_observables(double t, const double *y, const double *p, double *out);
+
+/* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
+ * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
+ * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
+int euler_free_init(const double *in, double *p, double *y);
 
 #endif /* EULER_FREE_H */

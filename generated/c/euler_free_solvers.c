@@ -8,6 +8,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <signal.h>
 #include <string.h>
 
 #include "euler_free_solvers.h"
@@ -16,7 +17,43 @@
 #error "euler_free.h: euler_free_NY differs from the size the solvers were rendered for (3)"
 #endif
 
-const int euler_free_dims[2] = { euler_free_NY, euler_free_NP };
+const int euler_free_dims[4] = { euler_free_NY, euler_free_NP, euler_free_NOBS, euler_free_NIN };
+
+/* ---------------------------------------------------------------------------------------- */
+/* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
+ * set: by a SIGINT while euler_free_interrupt_guard(1) is in force (the caller's handler is
+ * restored by euler_free_interrupt_guard(0)), or by euler_free_interrupt_request() from another thread. */
+
+static volatile sig_atomic_t derive_euler_free_stop = 0;
+static void (*derive_euler_free_old_handler)(int) = SIG_DFL;
+static int derive_euler_free_guarded = 0;
+
+static void derive_euler_free_on_sigint(int sig)
+{
+    (void)sig;
+    derive_euler_free_stop = 1;
+}
+
+int euler_free_interrupt_guard(int on)
+{
+    int was = derive_euler_free_stop;
+    if (on && !derive_euler_free_guarded) {
+        derive_euler_free_stop = 0;
+        derive_euler_free_old_handler = signal(SIGINT, derive_euler_free_on_sigint);
+        derive_euler_free_guarded = derive_euler_free_old_handler != SIG_ERR;
+    } else if (!on && derive_euler_free_guarded) {
+        signal(SIGINT, derive_euler_free_old_handler);
+        derive_euler_free_guarded = 0;
+    }
+    if (!on)
+        derive_euler_free_stop = 0;
+    return was;
+}
+
+void euler_free_interrupt_request(void)
+{
+    derive_euler_free_stop = 1;
+}
 
 /* ---------------------------------------------------------------------------------------- */
 /* Shared pieces: statistics, failures, argument checks.                                     */
@@ -49,6 +86,35 @@ static int derive_euler_free_first_nonfinite(const double *v, int n)
         if (!isfinite(v[i]))
             return i;
     return -1;
+}
+
+/* A batch stopped by an interrupt: the trajectories not run say so. */
+static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_stats *st)
+{
+    long b;
+    for (b = from; b < n_batch; ++b) {
+        derive_euler_free_stats_init(st + b);
+        st[b].status = DERIVE_INTERRUPTED;
+    }
+    return DERIVE_INTERRUPTED;
+}
+
+/* The output arrays at every sample: out[j*n_out + k] = output j (euler_free_observables) at
+ * t_out[k] from the state y[k*NY ..]. */
+int euler_free_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
+                        double *out)
+{
+    double o[euler_free_NOBS];
+    long k;
+    int j;
+    if (n_out < 0 || (n_out > 0 && (!t_out || !y || !out)))
+        return DERIVE_BAD_ARGS;
+    for (k = 0; k < n_out; ++k) {
+        euler_free_observables(t_out[k], y + k * euler_free_NY, p, o);
+        for (j = 0; j < euler_free_NOBS; ++j)
+            out[j * n_out + k] = o[j];
+    }
+    return DERIVE_OK;
 }
 
 /* n_out >= 1 and t_out finite and strictly increasing. */
@@ -184,7 +250,10 @@ static void derive_euler_free_add_block(double *m, int n, int bi, int bj, double
 }
 
 /* ======================================================================================== */
-/* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8. */
+/* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -356,6 +425,8 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
     for (;;) {
         if (st->nstep >= max_steps)
             return derive_euler_free_fail(st, DERIVE_MAX_STEPS, t, -1);
+        if (derive_euler_free_stop)
+            return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
         last = 0;
         if (t + 1.01 * h >= t_end) {
             h = t_end - t;
@@ -485,12 +556,58 @@ int euler_free_solve_batch_dop853(long n_batch, const double *y0s, const double 
                 rtol, atol, h0, max_steps, y_out + b * n_out * euler_free_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int euler_free_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (euler_free_init(in, p, y_work)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+    }
+    rc = euler_free_solve_dop853(y_work, p, t_out, n_out, rtol, atol, h0, max_steps, y_work, st);
+    if (rc == DERIVE_OK)
+        euler_free_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int euler_free_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = euler_free_simulate_dop853(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
+                rtol, atol, h0, max_steps, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_DOP853 */
+
 /* ======================================================================================== */
-/* rk4: classical Runge-Kutta, order 4, fixed step. Tableau "rk4", 4 stages, order 4. */
+/* rk4: classical Runge-Kutta, order 4, fixed step. Tableau "rk4", 4 stages, order 4.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_RK4 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -555,6 +672,8 @@ int euler_free_solve_rk4(const double *y0, const double *p, const double *t_out,
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
+            if (derive_euler_free_stop)
+                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
@@ -589,12 +708,58 @@ int euler_free_solve_batch_rk4(long n_batch, const double *y0s, const double *ps
                 h, y_out + b * n_out * euler_free_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int euler_free_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (euler_free_init(in, p, y_work)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+    }
+    rc = euler_free_solve_rk4(y_work, p, t_out, n_out, h, y_work, st);
+    if (rc == DERIVE_OK)
+        euler_free_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int euler_free_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = euler_free_simulate_rk4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
+                h, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_RK4 */
+
 /* ======================================================================================== */
-/* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step. Tableau "gauss4", 2 stages, order 4. */
+/* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step. Tableau "gauss4", 2 stages, order 4.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_GAUSS4 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS4)
 
 /* Collocation polynomial through y_n (node 0) and the stage values (nodes c_j), continued to
  * the next step: start values Z_i = u(t_n+1 + c_i h_new) - y_n+1, r = h_new / h_old. */
@@ -813,6 +978,8 @@ int euler_free_solve_gauss4(const double *y0, const double *p, const double *t_o
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
+            if (derive_euler_free_stop)
+                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_free_gauss4_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -836,12 +1003,58 @@ int euler_free_solve_batch_gauss4(long n_batch, const double *y0s, const double 
                 h, newton_tol, newton_maxiter, y_out + b * n_out * euler_free_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int euler_free_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (euler_free_init(in, p, y_work)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+    }
+    rc = euler_free_solve_gauss4(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
+    if (rc == DERIVE_OK)
+        euler_free_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int euler_free_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = euler_free_simulate_gauss4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
+                h, newton_tol, newton_maxiter, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_GAUSS4 */
+
 /* ======================================================================================== */
-/* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step. Tableau "gauss6", 3 stages, order 6. */
+/* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step. Tableau "gauss6", 3 stages, order 6.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_GAUSS6 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS6)
 
 /* Collocation polynomial through y_n (node 0) and the stage values (nodes c_j), continued to
  * the next step: start values Z_i = u(t_n+1 + c_i h_new) - y_n+1, r = h_new / h_old. */
@@ -1078,6 +1291,8 @@ int euler_free_solve_gauss6(const double *y0, const double *p, const double *t_o
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
+            if (derive_euler_free_stop)
+                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_free_gauss6_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1101,12 +1316,58 @@ int euler_free_solve_batch_gauss6(long n_batch, const double *y0s, const double 
                 h, newton_tol, newton_maxiter, y_out + b * n_out * euler_free_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int euler_free_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (euler_free_init(in, p, y_work)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+    }
+    rc = euler_free_solve_gauss6(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
+    if (rc == DERIVE_OK)
+        euler_free_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int euler_free_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = euler_free_simulate_gauss6(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
+                h, newton_tol, newton_maxiter, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_GAUSS6 */
+
 /* ======================================================================================== */
-/* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs). Tableau "dop853", 12 stages, order 8. */
+/* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs). Tableau "dop853", 12 stages, order 8.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853_FIXED (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853_FIXED)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -1235,6 +1496,8 @@ int euler_free_solve_dop853_fixed(const double *y0, const double *p, const doubl
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
+            if (derive_euler_free_stop)
+                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
@@ -1269,6 +1532,49 @@ int euler_free_solve_batch_dop853_fixed(long n_batch, const double *y0s, const d
                 h, y_out + b * n_out * euler_free_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
+
+int euler_free_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (euler_free_init(in, p, y_work)) {
+        derive_euler_free_stats_init(st);
+        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+    }
+    rc = euler_free_solve_dop853_fixed(y_work, p, t_out, n_out, h, y_work, st);
+    if (rc == DERIVE_OK)
+        euler_free_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int euler_free_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = euler_free_simulate_dop853_fixed(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
+                h, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_DOP853_FIXED */

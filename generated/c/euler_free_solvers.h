@@ -41,15 +41,28 @@ typedef struct {
 #define DERIVE_OK              0  /* success */
 #define DERIVE_STEP_UNDERFLOW  1  /* step size underflow */
 #define DERIVE_NONFINITE       2  /* non-finite value in the state */
-#define DERIVE_MAX_STEPS       3  /* maximum number of steps exceeded */
+#define DERIVE_MAX_STEPS       3  /* step budget (max_steps) spent */
 #define DERIVE_DOMAIN          4  /* state outside the model's domain */
 #define DERIVE_NEWTON          5  /* Newton iteration failed to converge */
 #define DERIVE_BAD_ARGS        6  /* bad arguments */
+#define DERIVE_INTERRUPTED     7  /* interrupted */
 
 #endif /* DERIVE_SOLVERS_COMMON */
 
-/* euler_free_dims = { euler_free_NY, euler_free_NP }, so a loader can size the name arrays. */
-extern const int euler_free_dims[2];
+/* euler_free_dims = { NY, NP, NOBS, NIN }, so a loader can size the name arrays. */
+extern const int euler_free_dims[4];
+
+/* SIGINT handling for a caller that wants Ctrl-C to stop a running loop: guard(1) installs a
+ * handler that sets a flag the loops poll every step (they then return DERIVE_INTERRUPTED);
+ * guard(0) restores the previous handler and returns 1 if an interrupt came. request() sets
+ * the flag from anywhere (another thread). */
+int euler_free_interrupt_guard(int on);
+void euler_free_interrupt_request(void);
+
+/* out[j*n_out + k] = output j (euler_free_observables) at t_out[k] from the states y[k*NY ..],
+ * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
+int euler_free_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
+                        double *out);
 
 /* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853).
  *   rtol, atol  error tolerances (>= 0, not both 0): local error per step below
@@ -62,6 +75,13 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
 int euler_free_solve_batch_dop853(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_out, derive_stats *st);
+/* One whole simulation: y = euler_free_init(in, p) (p in/out: derived parameters are written),
+ * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
+int euler_free_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st);
+int euler_free_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st);
 
 /* rk4: classical Runge-Kutta, order 4, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -71,6 +91,13 @@ int euler_free_solve_rk4(const double *y0, const double *p, const double *t_out,
 int euler_free_solve_batch_rk4(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st);
+/* One whole simulation: y = euler_free_init(in, p) (p in/out: derived parameters are written),
+ * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
+int euler_free_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st);
+int euler_free_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st);
 
 /* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -84,6 +111,13 @@ int euler_free_solve_gauss4(const double *y0, const double *p, const double *t_o
 int euler_free_solve_batch_gauss4(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_out, derive_stats *st);
+/* One whole simulation: y = euler_free_init(in, p) (p in/out: derived parameters are written),
+ * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
+int euler_free_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+int euler_free_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
 
 /* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -97,6 +131,13 @@ int euler_free_solve_gauss6(const double *y0, const double *p, const double *t_o
 int euler_free_solve_batch_gauss6(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_out, derive_stats *st);
+/* One whole simulation: y = euler_free_init(in, p) (p in/out: derived parameters are written),
+ * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
+int euler_free_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+int euler_free_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
 
 /* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs).
  *   h           maximum step size (> 0); steps land on every t_out
@@ -106,5 +147,12 @@ int euler_free_solve_dop853_fixed(const double *y0, const double *p, const doubl
 int euler_free_solve_batch_dop853_fixed(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st);
+/* One whole simulation: y = euler_free_init(in, p) (p in/out: derived parameters are written),
+ * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
+int euler_free_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st);
+int euler_free_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st);
 
 #endif /* EULER_FREE_SOLVERS_H */

@@ -169,3 +169,33 @@ int heavy_top_observables(double t, const double *y, const double *p, double *ou
     out[17] = x10;
     return 0;
 }
+
+int heavy_top_init(const double *in, double *p, double *y)
+{
+    const double in_alpha = in[0];
+    const double in_beta = in[1];
+    const double in_gamma = in[2];
+    const double in_omega1 = in[3];
+    const double in_omega2 = in[4];
+    const double in_omega3 = in[5];
+    const double in_alpha_dot = in[6];
+    const double in_beta_dot = in[7];
+    const double in_gamma_dot = in[8];
+    const double in_rates_given = in[9];
+    (void)p;
+    const double x0 = in_rates_given > 0;
+    const double x1 = cos(in_gamma);
+    const double x2 = sin(in_gamma);
+    const double x3 = (-in_omega1*x1 + in_omega2*x2)/sin(in_beta);
+    int i;
+    y[0] = in_alpha;
+    y[1] = in_beta;
+    y[2] = in_gamma;
+    y[3] = ((x0) ? (in_alpha_dot) : (x3));
+    y[4] = ((x0) ? (in_beta_dot) : (in_omega1*x2 + in_omega2*x1));
+    y[5] = ((x0) ? (in_gamma_dot) : (in_omega3 - x3*cos(in_beta)));
+    for (i = 0; i < heavy_top_NY; ++i)
+        if (!isfinite(y[i]))
+            return 1;
+    return 0;
+}

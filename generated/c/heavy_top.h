@@ -15,11 +15,14 @@
 
 #define heavy_top_NY 6                      /* state size */
 #define heavy_top_NP 5                      /* parameter count */
-#define heavy_top_NOBS 18                    /* observable count */
+#define heavy_top_NOBS 18                    /* observable (output) count */
+#define heavy_top_NIN 10                     /* init-map input count */
+#define heavy_top_NCHECKS 0                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define HEAVY_TOP_NY heavy_top_NY
 #define HEAVY_TOP_NP heavy_top_NP
 #define HEAVY_TOP_NOBS heavy_top_NOBS
+#define HEAVY_TOP_NIN heavy_top_NIN
 
 extern const char *const heavy_top_state_names[heavy_top_NY];
 extern const char *const heavy_top_param_names[heavy_top_NP];
@@ -33,5 +36,10 @@ int heavy_top_jac(double t, const double *y, const double *p, double *J);
 
 /* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int heavy_top_observables(double t, const double *y, const double *p, double *out);
+
+/* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
+ * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
+ * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
+int heavy_top_init(const double *in, double *p, double *y);
 
 #endif /* HEAVY_TOP_H */

@@ -151,3 +151,68 @@ int heavy_top_reduced_observables(double t, const double *y, const double *p, do
     out[17] = p_gamma;
     return 0;
 }
+
+int heavy_top_reduced_init(const double *in, double *p, double *y)
+{
+    const double in_alpha = in[0];
+    const double in_beta = in[1];
+    const double in_gamma = in[2];
+    const double in_omega1 = in[3];
+    const double in_omega2 = in[4];
+    const double in_omega3 = in[5];
+    const double in_beta_dot = in[7];
+    const double in_rates_given = in[9];
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double x0 = sin(in_gamma);
+    const double x1 = cos(in_gamma);
+    const double x2 = I3*in_omega3;
+    const double x3 = sin(in_beta);
+    int i;
+    y[0] = in_alpha;
+    y[1] = in_beta;
+    y[2] = in_gamma;
+    y[3] = ((in_rates_given > 0) ? (in_beta_dot) : (in_omega1*x0 + in_omega2*x1));
+    p[6] = x2;
+    p[5] = -I1*in_omega1*x1*x3 + I1*in_omega2*x0*x3 + I3*in_omega3 - 2*x2*(sin((1.0/2.0)*in_beta)*sin((1.0/2.0)*in_beta));
+    for (i = 0; i < heavy_top_reduced_NY; ++i)
+        if (!isfinite(y[i]))
+            return 1;
+    if (!isfinite(p[6]))
+        return 1;
+    if (!isfinite(p[5]))
+        return 1;
+    return 0;
+}
+
+int heavy_top_reduced_checks(const double *y, const double *p, double *out)
+{
+    const double t = 0.0;
+    const double beta = y[1];
+    const double beta_d = y[3];
+    const double I1 = p[0];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    const double p_alpha = p[5];
+    const double p_gamma = p[6];
+    (void)t;
+
+    const double x0 = 1.0/(I1*I1);
+    const double x1 = (3.0/1000.0)*sqrt(111111);
+    const double x2 = p_gamma*x1;
+    const double x3 = M*g*l;
+    const double x4 = x1*x3;
+    const double x5 = 1.0/I1;
+    const double x6 = cos(beta);
+    const double x7 = ((p_alpha + p_gamma)*(p_alpha + p_gamma));
+    const double x8 = (1.0/2.0)*beta;
+    const double x9 = (1.0/8.0)*x5;
+    const double x10 = ((p_alpha - p_gamma)*(p_alpha - p_gamma));
+    const double x11 = (1.0/2.0)*I1*(beta_d*beta_d) - 1.0/2.0*(p_gamma*p_gamma)*x5 + x3*x6 + ((x10 == 0) ? (0) : (x10*x9/(sin(x8)*sin(x8)))) + ((x7 == 0) ? (0) : (x7*x9/(cos(x8)*cos(x8))));
+    const double x12 = (1.0/500000.0)*x5;
+    out[0] = -x0*((p_alpha - x2)*(p_alpha - x2)) + x12*(x11 - x4);
+    out[1] = -x0*((p_alpha + x2)*(p_alpha + x2)) + x12*(x11 + x4);
+    out[2] = x6;
+    return 0;
+}

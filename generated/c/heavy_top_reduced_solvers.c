@@ -8,6 +8,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <signal.h>
 #include <string.h>
 
 #include "heavy_top_reduced_solvers.h"
@@ -16,7 +17,43 @@
 #error "heavy_top_reduced.h: heavy_top_reduced_NY differs from the size the solvers were rendered for (4)"
 #endif
 
-const int heavy_top_reduced_dims[2] = { heavy_top_reduced_NY, heavy_top_reduced_NP };
+const int heavy_top_reduced_dims[4] = { heavy_top_reduced_NY, heavy_top_reduced_NP, heavy_top_reduced_NOBS, heavy_top_reduced_NIN };
+
+/* ---------------------------------------------------------------------------------------- */
+/* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
+ * set: by a SIGINT while heavy_top_reduced_interrupt_guard(1) is in force (the caller's handler is
+ * restored by heavy_top_reduced_interrupt_guard(0)), or by heavy_top_reduced_interrupt_request() from another thread. */
+
+static volatile sig_atomic_t derive_heavy_top_reduced_stop = 0;
+static void (*derive_heavy_top_reduced_old_handler)(int) = SIG_DFL;
+static int derive_heavy_top_reduced_guarded = 0;
+
+static void derive_heavy_top_reduced_on_sigint(int sig)
+{
+    (void)sig;
+    derive_heavy_top_reduced_stop = 1;
+}
+
+int heavy_top_reduced_interrupt_guard(int on)
+{
+    int was = derive_heavy_top_reduced_stop;
+    if (on && !derive_heavy_top_reduced_guarded) {
+        derive_heavy_top_reduced_stop = 0;
+        derive_heavy_top_reduced_old_handler = signal(SIGINT, derive_heavy_top_reduced_on_sigint);
+        derive_heavy_top_reduced_guarded = derive_heavy_top_reduced_old_handler != SIG_ERR;
+    } else if (!on && derive_heavy_top_reduced_guarded) {
+        signal(SIGINT, derive_heavy_top_reduced_old_handler);
+        derive_heavy_top_reduced_guarded = 0;
+    }
+    if (!on)
+        derive_heavy_top_reduced_stop = 0;
+    return was;
+}
+
+void heavy_top_reduced_interrupt_request(void)
+{
+    derive_heavy_top_reduced_stop = 1;
+}
 
 /* ---------------------------------------------------------------------------------------- */
 /* Shared pieces: statistics, failures, argument checks.                                     */
@@ -49,6 +86,68 @@ static int derive_heavy_top_reduced_first_nonfinite(const double *v, int n)
         if (!isfinite(v[i]))
             return i;
     return -1;
+}
+
+/* A batch stopped by an interrupt: the trajectories not run say so. */
+static int derive_heavy_top_reduced_rest_interrupted(long from, long n_batch, derive_stats *st)
+{
+    long b;
+    for (b = from; b < n_batch; ++b) {
+        derive_heavy_top_reduced_stats_init(st + b);
+        st[b].status = DERIVE_INTERRUPTED;
+    }
+    return DERIVE_INTERRUPTED;
+}
+
+/* Canonical z-y-z angles along a trajectory: beta in [0, pi] (a beta outside is reflected,
+ * beta -> 2 pi - beta, alpha and gamma turned by pi: the same rotation); alpha and gamma
+ * continuous, not wrapped: each is moved by whole turns to within pi of the previous sample. At
+ * a pole passage alpha and gamma jump by about pi; the jump is taken so that the combination
+ * that stays defined at the pole is continuous: alpha + gamma near beta = 0, alpha - gamma near
+ * beta = pi. */
+static void derive_heavy_top_reduced_canonical_angles(long n, double *a, double *b, double *c)
+{
+    const double pi = 3.14159265358979323846, twopi = 2.0 * 3.14159265358979323846;
+    double bb, target;
+    long k;
+    for (k = 0; k < n; ++k) {
+        bb = fmod(b[k], twopi);
+        if (bb < 0.0)
+            bb += twopi;
+        if (bb > pi) {
+            bb = twopi - bb;
+            a[k] += pi;
+            c[k] += pi;
+        }
+        b[k] = bb;
+        if (k == 0)
+            continue;
+        a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
+        if (fabs(a[k] - a[k - 1]) > 0.5 * pi)
+            target = bb < 0.5 * pi ? a[k - 1] + c[k - 1] - a[k] : a[k] - (a[k - 1] - c[k - 1]);
+        else
+            target = c[k - 1];
+        c[k] += twopi * nearbyint((target - c[k]) / twopi);
+    }
+}
+
+/* The output arrays at every sample: out[j*n_out + k] = output j (heavy_top_reduced_observables) at
+ * t_out[k] from the state y[k*NY ..], the angles made canonical. */
+int heavy_top_reduced_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
+                        double *out)
+{
+    double o[heavy_top_reduced_NOBS];
+    long k;
+    int j;
+    if (n_out < 0 || (n_out > 0 && (!t_out || !y || !out)))
+        return DERIVE_BAD_ARGS;
+    for (k = 0; k < n_out; ++k) {
+        heavy_top_reduced_observables(t_out[k], y + k * heavy_top_reduced_NY, p, o);
+        for (j = 0; j < heavy_top_reduced_NOBS; ++j)
+            out[j * n_out + k] = o[j];
+    }
+    derive_heavy_top_reduced_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    return DERIVE_OK;
 }
 
 /* n_out >= 1 and t_out finite and strictly increasing. */
@@ -184,7 +283,10 @@ static void derive_heavy_top_reduced_add_block(double *m, int n, int bi, int bj,
 }
 
 /* ======================================================================================== */
-/* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8. */
+/* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -356,6 +458,8 @@ int heavy_top_reduced_solve_dop853(const double *y0, const double *p, const doub
     for (;;) {
         if (st->nstep >= max_steps)
             return derive_heavy_top_reduced_fail(st, DERIVE_MAX_STEPS, t, -1);
+        if (derive_heavy_top_reduced_stop)
+            return derive_heavy_top_reduced_fail(st, DERIVE_INTERRUPTED, t, -1);
         last = 0;
         if (t + 1.01 * h >= t_end) {
             h = t_end - t;
@@ -485,12 +589,58 @@ int heavy_top_reduced_solve_batch_dop853(long n_batch, const double *y0s, const 
                 rtol, atol, h0, max_steps, y_out + b * n_out * heavy_top_reduced_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int heavy_top_reduced_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_heavy_top_reduced_times_ok(t_out, n_out)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (heavy_top_reduced_init(in, p, y_work)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_NONFINITE, t_out[0], derive_heavy_top_reduced_first_nonfinite(y_work, heavy_top_reduced_NY));
+    }
+    rc = heavy_top_reduced_solve_dop853(y_work, p, t_out, n_out, rtol, atol, h0, max_steps, y_work, st);
+    if (rc == DERIVE_OK)
+        heavy_top_reduced_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int heavy_top_reduced_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = heavy_top_reduced_simulate_dop853(ins + b * heavy_top_reduced_NIN, ps + b * heavy_top_reduced_NP, t_out, n_out,
+                rtol, atol, h0, max_steps, y_work + b * n_out * heavy_top_reduced_NY, out + b * n_out * heavy_top_reduced_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_DOP853 */
+
 /* ======================================================================================== */
-/* rk4: classical Runge-Kutta, order 4, fixed step. Tableau "rk4", 4 stages, order 4. */
+/* rk4: classical Runge-Kutta, order 4, fixed step. Tableau "rk4", 4 stages, order 4.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_RK4 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -555,6 +705,8 @@ int heavy_top_reduced_solve_rk4(const double *y0, const double *p, const double 
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
+            if (derive_heavy_top_reduced_stop)
+                return derive_heavy_top_reduced_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
@@ -589,12 +741,58 @@ int heavy_top_reduced_solve_batch_rk4(long n_batch, const double *y0s, const dou
                 h, y_out + b * n_out * heavy_top_reduced_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int heavy_top_reduced_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_heavy_top_reduced_times_ok(t_out, n_out)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (heavy_top_reduced_init(in, p, y_work)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_NONFINITE, t_out[0], derive_heavy_top_reduced_first_nonfinite(y_work, heavy_top_reduced_NY));
+    }
+    rc = heavy_top_reduced_solve_rk4(y_work, p, t_out, n_out, h, y_work, st);
+    if (rc == DERIVE_OK)
+        heavy_top_reduced_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int heavy_top_reduced_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = heavy_top_reduced_simulate_rk4(ins + b * heavy_top_reduced_NIN, ps + b * heavy_top_reduced_NP, t_out, n_out,
+                h, y_work + b * n_out * heavy_top_reduced_NY, out + b * n_out * heavy_top_reduced_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_RK4 */
+
 /* ======================================================================================== */
-/* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step. Tableau "gauss4", 2 stages, order 4. */
+/* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step. Tableau "gauss4", 2 stages, order 4.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_GAUSS4 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS4)
 
 /* Collocation polynomial through y_n (node 0) and the stage values (nodes c_j), continued to
  * the next step: start values Z_i = u(t_n+1 + c_i h_new) - y_n+1, r = h_new / h_old. */
@@ -813,6 +1011,8 @@ int heavy_top_reduced_solve_gauss4(const double *y0, const double *p, const doub
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
+            if (derive_heavy_top_reduced_stop)
+                return derive_heavy_top_reduced_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_heavy_top_reduced_gauss4_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -836,12 +1036,58 @@ int heavy_top_reduced_solve_batch_gauss4(long n_batch, const double *y0s, const 
                 h, newton_tol, newton_maxiter, y_out + b * n_out * heavy_top_reduced_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int heavy_top_reduced_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_heavy_top_reduced_times_ok(t_out, n_out)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (heavy_top_reduced_init(in, p, y_work)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_NONFINITE, t_out[0], derive_heavy_top_reduced_first_nonfinite(y_work, heavy_top_reduced_NY));
+    }
+    rc = heavy_top_reduced_solve_gauss4(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
+    if (rc == DERIVE_OK)
+        heavy_top_reduced_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int heavy_top_reduced_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = heavy_top_reduced_simulate_gauss4(ins + b * heavy_top_reduced_NIN, ps + b * heavy_top_reduced_NP, t_out, n_out,
+                h, newton_tol, newton_maxiter, y_work + b * n_out * heavy_top_reduced_NY, out + b * n_out * heavy_top_reduced_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_GAUSS4 */
+
 /* ======================================================================================== */
-/* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step. Tableau "gauss6", 3 stages, order 6. */
+/* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step. Tableau "gauss6", 3 stages, order 6.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_GAUSS6 (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS6)
 
 /* Collocation polynomial through y_n (node 0) and the stage values (nodes c_j), continued to
  * the next step: start values Z_i = u(t_n+1 + c_i h_new) - y_n+1, r = h_new / h_old. */
@@ -1078,6 +1324,8 @@ int heavy_top_reduced_solve_gauss6(const double *y0, const double *p, const doub
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
+            if (derive_heavy_top_reduced_stop)
+                return derive_heavy_top_reduced_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_heavy_top_reduced_gauss6_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1101,12 +1349,58 @@ int heavy_top_reduced_solve_batch_gauss6(long n_batch, const double *y0s, const 
                 h, newton_tol, newton_maxiter, y_out + b * n_out * heavy_top_reduced_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
 
+int heavy_top_reduced_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_heavy_top_reduced_times_ok(t_out, n_out)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (heavy_top_reduced_init(in, p, y_work)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_NONFINITE, t_out[0], derive_heavy_top_reduced_first_nonfinite(y_work, heavy_top_reduced_NY));
+    }
+    rc = heavy_top_reduced_solve_gauss6(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
+    if (rc == DERIVE_OK)
+        heavy_top_reduced_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int heavy_top_reduced_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = heavy_top_reduced_simulate_gauss6(ins + b * heavy_top_reduced_NIN, ps + b * heavy_top_reduced_NP, t_out, n_out,
+                h, newton_tol, newton_maxiter, y_work + b * n_out * heavy_top_reduced_NY, out + b * n_out * heavy_top_reduced_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_GAUSS6 */
+
 /* ======================================================================================== */
-/* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs). Tableau "dop853", 12 stages, order 8. */
+/* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs). Tableau "dop853", 12 stages, order 8.
+ * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853_FIXED (one method per
+ * library: a first run compiles only what it uses). */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853_FIXED)
 
 /* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -1235,6 +1529,8 @@ int heavy_top_reduced_solve_dop853_fixed(const double *y0, const double *p, cons
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
+            if (derive_heavy_top_reduced_stop)
+                return derive_heavy_top_reduced_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
@@ -1269,6 +1565,49 @@ int heavy_top_reduced_solve_batch_dop853_fixed(long n_batch, const double *y0s, 
                 h, y_out + b * n_out * heavy_top_reduced_NY, st + b);
         if (rc && !status)
             status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
     }
     return status;
 }
+
+int heavy_top_reduced_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    derive_stats local;
+    int rc;
+    if (!st)
+        st = &local;
+    if (!in || !y_work || !out || !derive_heavy_top_reduced_times_ok(t_out, n_out)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    }
+    if (heavy_top_reduced_init(in, p, y_work)) {
+        derive_heavy_top_reduced_stats_init(st);
+        return derive_heavy_top_reduced_fail(st, DERIVE_NONFINITE, t_out[0], derive_heavy_top_reduced_first_nonfinite(y_work, heavy_top_reduced_NY));
+    }
+    rc = heavy_top_reduced_solve_dop853_fixed(y_work, p, t_out, n_out, h, y_work, st);
+    if (rc == DERIVE_OK)
+        heavy_top_reduced_outputs_at(n_out, t_out, y_work, p, out);
+    return rc;
+}
+
+int heavy_top_reduced_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double h, double *y_work, double *out, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        rc = heavy_top_reduced_simulate_dop853_fixed(ins + b * heavy_top_reduced_NIN, ps + b * heavy_top_reduced_NP, t_out, n_out,
+                h, y_work + b * n_out * heavy_top_reduced_NY, out + b * n_out * heavy_top_reduced_NOBS, st + b);
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED)
+            return derive_heavy_top_reduced_rest_interrupted(b + 1, n_batch, st);
+    }
+    return status;
+}
+#endif /* DERIVE_WITH_DOP853_FIXED */

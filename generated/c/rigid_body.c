@@ -256,3 +256,37 @@ int rigid_body_observables(double t, const double *y, const double *p, double *o
     out[17] = x20;
     return 0;
 }
+
+int rigid_body_init(const double *in, double *p, double *y)
+{
+    const double in_alpha = in[0];
+    const double in_beta = in[1];
+    const double in_gamma = in[2];
+    const double in_omega1 = in[3];
+    const double in_omega2 = in[4];
+    const double in_omega3 = in[5];
+    (void)p;
+    const double x0 = (1.0/2.0)*in_beta;
+    const double x1 = cos(x0);
+    const double x2 = (1.0/2.0)*in_alpha;
+    const double x3 = sin(x2);
+    const double x4 = (1.0/2.0)*in_gamma;
+    const double x5 = sin(x4);
+    const double x6 = x3*x5;
+    const double x7 = cos(x2);
+    const double x8 = cos(x4);
+    const double x9 = sin(x0);
+    const double x10 = x3*x8;
+    int i;
+    y[0] = -x1*x6 + x1*x7*x8;
+    y[1] = -x10*x9 + x5*x7*x9;
+    y[2] = x6*x9 + x7*x8*x9;
+    y[3] = x1*x10 + x1*x5*x7;
+    y[4] = in_omega1;
+    y[5] = in_omega2;
+    y[6] = in_omega3;
+    for (i = 0; i < rigid_body_NY; ++i)
+        if (!isfinite(y[i]))
+            return 1;
+    return 0;
+}

@@ -15,11 +15,14 @@
 
 #define rigid_body_NY 7                      /* state size */
 #define rigid_body_NP 9                      /* parameter count */
-#define rigid_body_NOBS 18                    /* observable count */
+#define rigid_body_NOBS 18                    /* observable (output) count */
+#define rigid_body_NIN 10                     /* init-map input count */
+#define rigid_body_NCHECKS 0                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define RIGID_BODY_NY rigid_body_NY
 #define RIGID_BODY_NP rigid_body_NP
 #define RIGID_BODY_NOBS rigid_body_NOBS
+#define RIGID_BODY_NIN rigid_body_NIN
 
 extern const char *const rigid_body_state_names[rigid_body_NY];
 extern const char *const rigid_body_param_names[rigid_body_NP];
@@ -33,5 +36,10 @@ int rigid_body_jac(double t, const double *y, const double *p, double *J);
 
 /* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int rigid_body_observables(double t, const double *y, const double *p, double *out);
+
+/* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
+ * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
+ * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
+int rigid_body_init(const double *in, double *p, double *y);
 
 #endif /* RIGID_BODY_H */
