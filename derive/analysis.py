@@ -430,48 +430,69 @@ def _vertical_condition(k: int, upright: bool) -> tuple[str, str]:
     return text, tex
 
 
+def _principal_direction(I, c):
+    """If r̂_c is a principal direction of diag(I) (within TOLERANCE): (its moment, the two
+    moments perpendicular to it, the body axis 0..2 it lies on or None); else None. A direction
+    in a plane of equal moments (I₁ = I₂: any equatorial r_c) is principal too."""
+    u = c / np.linalg.norm(c)
+    Iu = I * u
+    Iuu = float(u @ Iu)
+    if np.linalg.norm(Iu - Iuu * u) > integrable.TOLERANCE * I.max():
+        return None
+    P = np.eye(3) - np.outer(u, u)
+    perp = sorted(np.linalg.eigvalsh(P @ np.diag(I) @ P))[1:]  # drop the 0 along u
+    axis = next((k for k in range(3) if np.hypot(*np.delete(u, k)) <= integrable.TOLERANCE), None)
+    return Iuu, [float(x) for x in perp], axis
+
+
 def _heavy_vertical(sc, p) -> list[Equilibrium]:
     """Rotation about the vertical through the pivot with the centre of mass on it (any body):
-    about a principal axis k containing r_c at the scene's ω̃_k(0), else at rest."""
+    about r̂_c when it is a principal direction, at the scene's spin ω₀ = ω̃(0)·r̂_c; else at rest.
+    Energy–Casimir: E + a L·n + b|n|² on the leaf is definite iff
+    ω₀²(I_u − I_m) > h M g |r_c| for both moments I_m perpendicular to r̂_c (h = ±1)."""
     c = np.array([p["cx"], p["cy"], p["cz"]])
     r = float(np.linalg.norm(c))
+    u = c / r
     Mg = p["M"] * p["g"]
     I = np.array(sc.body.moments)
-    axis = next((k for k in range(3)
-                 if np.hypot(*np.delete(c, k)) <= integrable.TOLERANCE * r), None)
+    principal = _principal_direction(I, c)
     out = []
     for kind, upright in (("sleeping", True), ("hanging", False)):
         h = 1.0 if upright else -1.0
-        if axis is None:
-            w0 = 0.0
-            u = c / r
-            text = ("at rest with the centre of mass " + ("above" if upright else "below")
-                    + " the pivot (no spin: r_c is on no principal axis); energy-Casimir: "
-                    + ("M g |r_c| < 0 fails" if upright else "V has a strict minimum, stable"))
+        where = "above" if upright else "below"
+        if principal is None:
+            w0, axis = 0.0, None
+            text = (f"at rest with the centre of mass {where} the pivot (no spin: r_c is on no "
+                    "principal axis); energy-Casimir: "
+                    + ("fails (V maximal)" if upright else "V has a strict minimum, stable"))
             tex = rf"\tilde\omega = 0,\ \tilde n = {'+' if upright else '-'}\hat r_c"
             ec = None if upright else True
+            desc = f"at rest, centre of mass {where} the pivot"
         else:
-            w0 = float(sc.initial.omega[axis])
-            u = np.zeros(3)
-            u[axis] = 1.0 if c[axis] > 0 else -1.0
-            text, tex = _vertical_condition(axis, upright)
-            marg = [w0 * w0 * (I[axis] - I[m]) - h * Mg * r for m in range(3) if m != axis]
+            Iu, perp, axis = principal
+            w0 = float(np.dot(sc.initial.omega, u))
+            sign = "" if upright else "-"
+            if axis is not None:
+                text, tex = _vertical_condition(axis, upright)
+            else:
+                text = (f"omega0**2*(I_u - I_m) > {sign}M*g*|r_c| for both moments I_m perpendicular "
+                        "to r_c, I_u = r_c.I.r_c/|r_c|^2 (energy-Casimir, sufficient)")
+                tex = rf"\omega_0^2(I_u - I_m) > {sign}Mg|r_c|,\ m \perp \hat r_c"
+            marg = [w0 * w0 * (Iu - Im) - h * Mg * r for Im in perp]
             scale = w0 * w0 * I.max() + Mg * r
-            signs = [_sign_tol(x, scale) for x in marg]
-            ec = True if all(s > 0 for s in signs) else None
+            ec = True if all(_sign_tol(x, scale) > 0 for x in marg) else None
+            desc = (f"spin omega0 = {w0:.6g} about "
+                    + (f"principal axis {axis + 1}" if axis is not None
+                       else "the principal direction along r_c")
+                    + f" held vertical, centre of mass {where} the pivot")
         n = h * u  # the upward vertical in body axes: along r_c when upright
-        L = np.zeros(3)
-        if axis is not None:
-            L[axis] = I[axis] * w0
+        L = I * w0 * u
         eig = _eigenvalues(sc, tuple(L), tuple(n))
         stable = ec
         if stable is None and _grows(eig):
             stable = False
         out.append(Equilibrium(
-            kind, None if axis is None else axis + 1, text, stable, tex,
-            ("spin omega0 = %.6g about principal axis %d held vertical, centre of mass %s the pivot"
-             % (w0, axis + 1, "above" if upright else "below")) if axis is not None else
-            f"at rest, centre of mass {'above' if upright else 'below'} the pivot",
+            kind, None if axis is None else axis + 1, text, stable, tex, desc,
             "energy-Casimir (E + a L.n + b |n|^2 on the leaf; sufficient); instability from an "
             "eigenvalue of the Euler-Poisson linearisation with positive real part",
             {"omega0": w0, "r_c": r}, list(eig)))
@@ -577,6 +598,8 @@ def _section_cyclic(sc):
                   rf"V_\text{{eff}} = {_latex(R['Veff'])} $$"]
         if sc.gravity is None:
             lines.append("(no gravity: set M g l = 0).")
+        if sc.damping is not None:
+            lines.append("(for the conservative part: with damping p_α, p_γ and E′ decay).")
     else:
         lines += ["", "No Routh reduction to one degree of freedom: γ is not cyclic (the body is "
                       "not symmetric about axis 3 with the centre of mass on it); only α is "

@@ -281,3 +281,21 @@ def test_kovalevskaya_vertical_spin_simulated(hanging):
         assert angle < 0.01
     else:
         assert angle > 0.5
+
+
+def test_equatorial_com_at_any_azimuth_same_verdicts():
+    """I1 = I2: r_c anywhere in the equatorial plane is a principal direction; turning the body
+    about axis 3 changes neither the verdicts nor the eigenvalues."""
+    def eqs(phi):
+        u = (math.cos(phi), math.sin(phi), 0.0)
+        d = body((2.0, 2.0, 1.0), [0.5 * x for x in u], com=[0.1 * x for x in u])
+        return analysis.analyze(d).equilibria
+
+    a, b = eqs(0.0), eqs(0.7)
+    assert [(e.kind, e.stable) for e in a] == [(e.kind, e.stable) for e in b] == [
+        ("sleeping", False), ("hanging", True)]
+    assert [e.axis for e in b] == [None, None]
+    for x, y in zip(a, b):
+        np.testing.assert_allclose(sorted(np.round(x.eigenvalues, 9), key=lambda z: (z.real, z.imag)),
+                                   sorted(np.round(y.eigenvalues, 9), key=lambda z: (z.real, z.imag)),
+                                   atol=1e-8)
