@@ -258,3 +258,13 @@ def test_near_constant_series_print_in_full_without_offset(symmetric, amplitude)
         import matplotlib.pyplot as plt
 
         plt.close(fig)
+
+
+def test_deviation_from_zero_is_absolute_and_labelled_so():
+    x = np.array([0.0, 1e-18, -3e-18, 0.0])
+    dev, how, linthresh = plots._deviation(x)
+    np.testing.assert_array_equal(dev, [0.0, 1e-18, 3e-18, 0.0])
+    assert "absolute" in how and 0 < linthresh <= 3e-18
+    dev, how, linthresh = plots._deviation(np.array([-2.0, -2.0, -1.0]))
+    np.testing.assert_array_equal(dev, [0.0, 0.0, 0.5])
+    assert how == "/ |{0}(0)|" and linthresh == 1e-16

@@ -108,16 +108,18 @@ def test_wheel_carries_the_templates_and_the_generated_code(wheel):
     assert "derive/render.py" in names and "derive/cli.py" in names
 
 
-def test_installed_package_uses_its_own_data_not_the_checkout(venv, empty):
-    code = ("import json, derive, derive.render as r; "
-            "print(json.dumps([derive.__file__, str(r.CHECKOUT), str(r.TEMPLATES), str(r.GENERATED)]))")
+def test_api_uses_the_packages_own_data_and_simulates_from_an_empty_directory(venv, empty):
+    (empty / "scene.toml").write_text(SCENE)
+    code = ("import json, derive, derive.render as r; res = derive.simulate('scene.toml'); "
+            "print(json.dumps([derive.__file__, str(r.CHECKOUT), str(r.TEMPLATES), str(r.GENERATED), len(res.t)]))")
     r = _run([str(venv / "bin" / "python"), "-I", "-c", code], cwd=empty)
     assert r.returncode == 0, r.stderr
-    module, checkout, templates, generated = json.loads(r.stdout)
+    module, checkout, templates, generated, samples = json.loads(r.stdout)
     assert Path(module).resolve().is_relative_to(venv.resolve())
     assert checkout == "None"
     assert Path(templates).resolve().is_relative_to(venv.resolve()) and Path(templates, "c").is_dir()
     assert Path(generated).resolve().is_relative_to(venv.resolve()) and Path(generated, "c").is_dir()
+    assert samples == 51
 
 
 def test_console_script_simulates_a_scene_from_an_empty_directory(venv, empty):
@@ -128,14 +130,6 @@ def test_console_script_simulates_a_scene_from_an_empty_directory(venv, empty):
     assert summary["samples"] == 51 and summary["outputs"]["npz"] == "out.npz"
     assert summary["energy_drift"] < 1e-12
     assert (empty / "out.npz").stat().st_size > 0
-
-
-def test_api_simulates_from_an_empty_directory(venv, empty):
-    (empty / "scene.toml").write_text(SCENE)
-    code = "import derive; r = derive.simulate('scene.toml'); print(len(r.t), r.formulation)"
-    r = _run([str(venv / "bin" / "python"), "-I", "-c", code], cwd=empty)
-    assert r.returncode == 0, r.stderr
-    assert r.stdout.split()[0] == "51"
 
 
 def test_version_and_verify_work_installed(venv, empty):
