@@ -244,11 +244,10 @@ def analyze(scene) -> Analysis:
     """Analyse a scene (path, dict or Scene); raises SceneError on bad input."""
     sc = load_scene(scene)
     cls = integrable.classify(sc)
-    ints = integrable.integrals(cls.case, cls.dissipative)
+    ints = integrable.integrals(cls)
     proofs = {}
     for i in ints:
-        case = cls.case if i in integrable.EXTRA.values() else "general"
-        proofs[i.name] = integrable.prove(case, i.name)
+        proofs[i.name] = integrable.prove(cls.case if i is cls.extra else "general", i.name)
     return Analysis(sc, cls, ints, proofs, _equilibria(sc, cls))
 
 
@@ -273,7 +272,7 @@ def _equilibria(sc, cls) -> list[Equilibrium]:
         if sc.symmetric:
             out.append(_steady_precession(sc, p, gravity=False))
         return out
-    if cls.case == "lagrange":
+    if cls.case == "lagrange" and _axial(sc):
         return [_lagrange_vertical(sc, p, "sleeping"), _lagrange_vertical(sc, p, "hanging"),
                 _steady_precession(sc, p, gravity=True)]
     return _heavy_vertical(sc, p)
@@ -621,8 +620,8 @@ def _section_integrals(sc, cls, ints, proofs):
         else:
             lines.append("Proved: its time derivative along the derived Euler–Poisson equations "
                          + ("(with the case's relations " + ", ".join(
-                             f"{k} = {v}" for k, v in integrable.RELATIONS[cls.case].items()) + ") "
-                            if i in integrable.EXTRA.values() else "")
+                             f"{k} = {v}" for k, v in (i.relations or integrable.RELATIONS[cls.case]).items())
+                            + ") " if i is cls.extra else "")
                          + f"simplifies to {'0' if pr.holds else _latex(pr.derivative)}.")
         lines.append("")
     if cls.dissipative:

@@ -11,7 +11,8 @@ integral, which makes the flow integrable, exists in these cases (axis 3 is the 
 of a symmetric body, the scene's convention; the pair of equal moments must be (I₁, I₂)):
 
 * ``euler``   no gravity torque (no [gravity] table, r_c = 0 or g = 0):  |L|².
-* ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ).
+* ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ); a spherical body (I₁ = I₂ = I₃)
+  with r_c anywhere:  L·r_c (its axis through r_c is a symmetry axis).
 * ``kovalevskaya`` I₁ = I₂ = 2I₃, r_c in the equatorial plane (any azimuth φ, c_x + i c_y =
   |r_c| e^{iφ}):  K = |(ω̃₁ + iω̃₂)² − (M g/I₃)(c_x + i c_y)(n₁ + i n₂)|². With the body turned
   about axis 3 so that r_c = (x_c, 0, 0) this is the classical (ω̃₁² − ω̃₂² − k n₁)² +
@@ -82,6 +83,10 @@ def _L_squared(L, n, p):
     return L[0] ** 2 + L[1] ** 2 + L[2] ** 2
 
 
+def _L_dot_rc(L, n, p):
+    return L[0] * p["cx"] + L[1] * p["cy"] + L[2] * p["cz"]
+
+
 def _L3(L, n, p):
     return L[2] * (L[0] ** 0)  # times 1 of L's type: a NumPy column stays an array
 
@@ -104,13 +109,15 @@ def _goryachev_chaplygin(L, n, p):
 class Integral:
     """A first integral: ``name`` (the npz key is ``integral_<name>``), a plain-text
     ``expression`` (the JSON contract's), its LaTeX, and ``formula(L, n, p)``; ``on`` names the
-    level set it is conserved on ("L.n = 0"), if any."""
+    level set it is conserved on ("L.n = 0"), if any; ``relations`` the parameter relations of
+    its proof when they are not its case's."""
 
     name: str
     expression: str
     latex: str
     formula: Callable
     on: str | None = None
+    relations: dict | None = None  # for its proof, instead of its case's RELATIONS
 
 
 ENERGY = Integral("energy", "E = (L1^2/I1 + L2^2/I2 + L3^2/I3)/2 + M g (n . r_c)",
@@ -120,6 +127,12 @@ AREA = Integral("p_alpha", "p_alpha = L . n = L1 n1 + L2 n2 + L3 n3",
                 r"p_\alpha = \tilde L\cdot\tilde n", _area)
 CASIMIR = Integral("n_norm", "|n|^2 = n1^2 + n2^2 + n3^2 = 1",
                    r"|\tilde n|^2 = n_1^2 + n_2^2 + n_3^2 = 1", _n_squared)
+
+#: The Lagrange case of a spherical body (I₁ = I₂ = I₃): every axis is a symmetry axis, the one
+#: through r_c included, wherever r_c is.
+SPHERE = Integral("L_dot_rc", "L . r_c = L1 cx + L2 cy + L3 cz (spherical body: I1 = I2 = I3)",
+                  r"\tilde L\cdot\tilde r_c = L_1 c_x + L_2 c_y + L_3 c_z\quad(I_1 = I_2 = I_3)",
+                  _L_dot_rc, relations={"I2": "I1", "I3": "I1"})
 
 #: The extra integral of each case.
 EXTRA = {
@@ -155,6 +168,16 @@ class Classification:
     case: str
     reason: str
     dissipative: bool = False
+    integral: str | None = None  # the extra integral's name when it is not EXTRA[case]'s
+
+    @property
+    def extra(self) -> Integral | None:
+        """The case's extra integral (None: general or dissipative)."""
+        if self.dissipative:
+            return None
+        if self.integral == SPHERE.name:
+            return SPHERE
+        return EXTRA.get(self.case)
 
 
 def _equal(a: float, b: float) -> bool:
@@ -183,6 +206,10 @@ def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) 
     scale = math.sqrt(max(I1, I2, I3) / M) if M > 0 else math.inf
     if g == 0 or M == 0 or r <= TOLERANCE * scale:
         return Classification("euler", "no gravity torque (r_c = 0 or g = 0): Euler's free body")
+    if _equal(I1, I2) and _equal(I2, I3) and math.hypot(cx, cy) > TOLERANCE * r:
+        return Classification("lagrange", "spherical body (I1 = I2 = I3): the axis through the centre "
+                                          "of mass is a symmetry axis, so L.r_c is conserved",
+                              integral=SPHERE.name)
     if not _equal(I1, I2):
         other = (" (a body symmetric about axis 1 or 2 is not recognised: the scene convention "
                  "makes axis 3 the symmetry axis)" if _equal(I2, I3) or _equal(I1, I3) else "")
@@ -209,25 +236,21 @@ def classify(scene) -> Classification:
                            damping)
 
 
-def integrals(case: str, dissipative: bool = False) -> list[Integral]:
-    """The first integrals of a case: energy, L·n and |n|² (unless dissipative), then the
-    case's extra one."""
-    if dissipative:
+def integrals(c: Classification) -> list[Integral]:
+    """The first integrals of a classified scene: energy, L·n and |n|² (a dissipative one: |n|²
+    alone), then the case's extra one."""
+    if c.dissipative:
         return [CASIMIR]
-    out = [ENERGY, AREA, CASIMIR]
-    if case in EXTRA:
-        out.append(EXTRA[case])
-    return out
+    return [ENERGY, AREA, CASIMIR] + ([c.extra] if c.extra else [])
 
 
 def integrals_for(scene) -> list[tuple[str, Callable]]:
     """The extra integral of the scene's case as ``[(name, f)]`` with ``f(L, n) -> array``
     (L, n of shape (N, 3), body axes) at the scene's numbers: the simulation writes it as
     ``integral_<name>``. Empty for the general case (energy and L·n are outputs already)."""
-    c = classify(scene)
-    if c.dissipative or c.case not in EXTRA:
+    integral = classify(scene).extra
+    if integral is None:
         return []
-    integral = EXTRA[c.case]
     p = parameters(scene)
 
     def f(L, n, _formula=integral.formula, _p=p):
@@ -284,10 +307,14 @@ def _symbols():
 
 def relations(case: str) -> dict:
     """The case's relations as a SymPy substitution {symbol: expression}."""
+    return _relations(RELATIONS[case])
+
+
+def _relations(spec: dict) -> dict:
     import sympy as sp
 
     _, p, _, _ = _symbols()
-    return {p[k]: sp.sympify(v, locals=p) for k, v in RELATIONS[case].items()}
+    return {p[k]: sp.sympify(v, locals=p) for k, v in spec.items()}
 
 
 def time_derivative(formula: Callable, subs: dict):
@@ -309,8 +336,12 @@ def prove(case: str, integral_name: str | None = None, relations_of: str | None 
     import sympy as sp
 
     integral = (EXTRA[case] if integral_name is None
-                else next(i for i in (ENERGY, AREA, CASIMIR, *EXTRA.values()) if i.name == integral_name))
-    subs = relations(relations_of or case)
+                else next(i for i in (ENERGY, AREA, CASIMIR, SPHERE, *EXTRA.values())
+                          if i.name == integral_name))
+    if relations_of is None and integral.relations is not None:
+        subs = _relations(integral.relations)
+    else:
+        subs = relations(relations_of or case)
     dF = time_derivative(integral.formula, subs)
     if integral.on is None:
         return Proof(case, integral.name, dF)

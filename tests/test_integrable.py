@@ -245,3 +245,20 @@ def test_import_derive_does_not_import_sympy():
             "from derive.scene import load_scene; "
             "assert 'sympy' not in sys.modules, 'sympy imported'")
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_spherical_body_is_lagrange_about_r_c():
+    """I1 = I2 = I3: the axis through r_c is a symmetry axis wherever r_c is; L.r_c is its
+    integral, proved with I2 = I3 = I1, and not conserved when the moments differ."""
+    c = ig.classify_values(1.0, 1.0, 1.0, M=1.0, g=9.81, com=(0.1, 0.2, 0.3))
+    assert c.case == "lagrange" and c.extra is ig.SPHERE
+    assert ig.classify_values(1.0, 1.0, 1.0 + 1e-6, M=1.0, g=9.81, com=(0.1, 0.2, 0.3)).case == "general"
+    assert ig.prove("lagrange", "L_dot_rc").holds
+    assert not ig.prove("lagrange", "L_dot_rc", "general").holds  # control: distinct moments
+    assert not ig.prove("lagrange", "L_dot_rc", "kovalevskaya").holds
+    sc = load_scene(scene_dict((1.0, 1.0, 1.0), (0.1, 0.2, 0.3), t_end=5.0, rtol=1e-12, atol=1e-14,
+                               formulation="euler-poisson"))
+    ((name, f),) = ig.integrals_for(sc)
+    res = derive.simulate(sc)
+    v = f(res.L, res.n)
+    assert name == "L_dot_rc" and np.ptp(v) <= 1e-10 * np.max(np.abs(v))
