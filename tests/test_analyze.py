@@ -91,6 +91,20 @@ def test_example_scene_json(path, capsys):
         assert all(i["proved"] for i in out["integrals"])
 
 
+@pytest.mark.parametrize("path", sorted(SCENES.glob("*.toml")), ids=lambda p: p.stem)
+def test_example_scene_markdown(path):
+    """Every scene renders: sections in order, one verdict per equilibrium, the case named."""
+    a = analysis.analyze(str(path))
+    md = a.to_markdown()
+    heads = [line for line in md.splitlines() if line.startswith("## ")]
+    assert heads == ["## Body, effects and integrable case", "## Kinetic and potential energy, Lagrangian",
+                     "## Equations of motion", "## Cyclic coordinates, momenta, Routh reduction",
+                     "## Integrals of the motion", "## Relative equilibria and their stability"]
+    assert f"**Case: {a.classification.case}**" in md
+    assert md.count("At the scene's numbers: **") == len(a.equilibria)
+    assert md.count("$$") % 2 == 0
+
+
 def test_new_scenes_are_covered():
     """The scenes this issue added are in the table (so their verdicts are checked)."""
     for name in ("kovalevskaya_top", "goryachev_chaplygin_top", "off_axis_top"):
