@@ -340,9 +340,14 @@ def _lagrange_vertical(sc, p, kind: str) -> Equilibrium:
     threshold2 = sp.factor(R["threshold"] ** 2)  # 4 M g l I₁
     if kind == "sleeping" and at_zero:
         cond = f"p_gamma >= sqrt({sp.sstr(threshold2)})"
-        tex = rf"k_2 = {_latex(k2)} \ge 0 \;\Leftrightarrow\; p_\gamma \ge \sqrt{{{_latex(threshold2)}}}"
+        st = R["sleeping"]
+        tex = (rf"V_\text{{eff}}\big|_{{p_\alpha = p_\gamma}} = {_latex(st.coefficient(0))} + "
+               rf"k_2\beta^2 + k_4\beta^4 + O(\beta^6),\quad k_4\big|_{{k_2 = 0}} = "
+               rf"{_latex(st.quartic_at_threshold)};\qquad "
+               rf"k_2 = {_latex(k2)} \ge 0 \;\Leftrightarrow\; p_\gamma \ge \sqrt{{{_latex(threshold2)}}}")
     else:
-        note = {"sleeping": "l < 0: upright at beta = pi", "hanging": "always: with the centre of mass below the pivot both terms are >= 0"}
+        note = {"sleeping": "l < 0: upright at beta = pi",
+                "hanging": "always: with the centre of mass below the pivot both terms are >= 0"}
         cond = f"k2 = {sp.sstr(k2)} >= 0  ({note[kind]})"
         tex = rf"k_2 = {_latex(k2)} \ge 0"
     nz = 1.0 if at_zero else -1.0
