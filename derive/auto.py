@@ -22,6 +22,8 @@ import math
 from . import catalogue
 from . import effects as fx
 from .formulations import POLE_CLEARANCE, REGISTRY
+from .solvers import DEFAULT_METHOD
+from .solvers import METHODS as _C_METHODS
 
 
 def _known_cost(key) -> float | None:
@@ -30,25 +32,28 @@ def _known_cost(key) -> float | None:
     return None if desc is None else desc.cost
 
 
-def _routh(scene):
-    """(f(u_c), f(−u_c), u₀, p_α − p_γ, p_α + p_γ) for a scene with a Routh reduction, or None."""
+def _routh(scene, name: str, method: str):
+    """(f(u_c), f(−u_c), u₀, p_α − p_γ, p_α + p_γ) from the compiled ``checks`` of the model
+    that would run (the same library: choosing compiles nothing extra), or None when the scene
+    has no Routh reduction or the initial state is outside the formulation's init map."""
     effects = fx.lookup(scene.effects)
     if not scene.symmetric or any(not (e.conservative and e.axisymmetric) for e in effects):
         return None
     from .integrate import ModelKernel
     from .simulation import inputs_of, params_of
 
-    desc = catalogue.describe(("reduced", True, scene.effects))
-    kernel = ModelKernel.load(desc, None)
+    desc = catalogue.describe((name, True, scene.effects))
+    if not desc.checks:
+        return None
+    kernel = ModelKernel.load(desc, method)
     y, p, rc = kernel.init(inputs_of(scene), params_of(scene, desc))
     if rc:
         return None
-    f_top, f_bottom, u0 = kernel.checks(y, p)
-    pa, pg = p[desc.params.index("p_alpha")], p[desc.params.index("p_gamma")]
-    return f_top, f_bottom, u0, pa - pg, pa + pg
+    return tuple(kernel.checks(y, p))
 
 
 def _clear(routh, formulation: str) -> bool:
+    """Does the motion keep clear of the poles (or meet one where the formulation is regular)?"""
     f_top, f_bottom, u0, diff, total = routh
     uc = math.sqrt(1.0 - POLE_CLEARANCE**2)
     top = u0 < uc and f_top < 0.0
@@ -73,31 +78,35 @@ def _by_cost(symmetric, effects, version) -> tuple:
     return tuple(sorted(REGISTRY, key=lambda n: (known[n] is None, known[n] or 0, rank[n])))
 
 
-def formulation(scene) -> str:
-    """The formulation ``simulate`` runs for the scene."""
+def formulation(scene, method: str | None = None) -> str:
+    """The formulation ``simulate`` runs for the scene (with ``method``, whose library the
+    check loads; default the scene's)."""
     requested = scene.simulate.formulation
     if requested != "auto":
         return requested
-    routh = ...
+    from .simulation import choose_method
+
+    method = method or choose_method(scene)
+    if method not in _C_METHODS:  # a SciPy reference method: the checks come from dop853's library
+        method = DEFAULT_METHOD
     for name in candidates(scene):
         if REGISTRY[name].singular:
-            if routh is ...:
-                routh = _routh(scene)
+            routh = _routh(scene, name, method)
             if routh is None or not _clear(routh, name):
                 continue
         return name
     raise AssertionError("no formulation applies")  # euler-poisson applies to every scene
 
 
-def model_key(scene) -> tuple:
+def model_key(scene, method: str | None = None) -> tuple:
     """(formulation, symmetric body, effects): the model a scene runs."""
-    return (formulation(scene), scene.symmetric, scene.effects)
+    return (formulation(scene, method), scene.symmetric, scene.effects)
 
 
 def batch_key(scenes) -> tuple:
     """One model for a batch: the common choice, else the cheapest formulation without a
     singular set that every scene's ``applicable`` accepts."""
-    keys = {model_key(sc) for sc in scenes}
+    keys = {model_key(sc) for sc in scenes}  # the batch's shared method, so one library
     if len(keys) == 1:
         return keys.pop()
     first = scenes[0]

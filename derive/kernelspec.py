@@ -132,8 +132,9 @@ OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "EXP": 1
 
 
 #: What one right-hand side evaluation costs the stepper per state component (DOP853 combines
-#: about a dozen stage vectors per stage), in the same units as OP_WEIGHTS.
-STEP_COST_PER_STATE = 12
+#: about a dozen stage vectors per stage, a multiply and an add each, and its error estimate
+#: and dense output a few more), in the same units as OP_WEIGHTS.
+STEP_COST_PER_STATE = 20
 
 
 def operation_cost(block: "Block") -> int:

@@ -174,11 +174,16 @@ def euler_angles(symmetric: bool, effects=()) -> Model:
     acc = (Mm.adjugate() * F).applyfunc(lambda e: trig_reduce(e) / det)
     if symmetric:
         acc = acc.applyfunc(lambda e: sp.factor_terms(sp.cancel(e)))
+    outputs = _outputs(R, w, moments, effects, sym, ANGLES)
+    checks = {}
+    if symmetric and all(e.conservative and e.axisymmetric for e in effects):
+        pa, pg = outputs["p_alpha"], outputs["p_gamma"]
+        checks = routh_checks(effects, sym, outputs["energy"] - pg**2 / (2 * I3), pa, pg)
     return Model(model_name("euler-angles", symmetric, [e.name for e in effects]), "euler-angles",
                  "z-y-z Euler angles (quantum-mechanics convention), Euler-Lagrange equations solved for the accelerations",
                  ANGLES + RATES, _moment_params(symmetric) + sym.params(),
-                 tuple(RATES) + tuple(acc), _outputs(R, w, moments, effects, sym, ANGLES),
-                 init=(_A, _B, _G) + _rates_from_omega(),
+                 tuple(RATES) + tuple(acc), outputs,
+                 init=(_A, _B, _G) + _rates_from_omega(), checks=checks,
                  # det 𝕄 ∝ sin²β: below machine epsilon the solve for q̈ has no correct digits.
                  domain=(sp.sin(beta) ** 2 - sp.Symbol("DBL_EPSILON"),),
                  domain_note="coordinate singularity of the Euler-angle formulation: sin(beta)^2 below "
@@ -260,7 +265,8 @@ def reduced(effects=()) -> Model:
     diff = (-sp.sin(_B) * sp.cos(_G) * I1 * _W1 + sp.sin(_B) * sp.sin(_G) * I1 * _W2
             - 2 * sp.sin(_B / 2) ** 2 * p_gamma)
     init_params = ((params.index(p_gamma), I3 * _W3), (params.index(p_alpha), p_gamma + diff))
-    checks = routh_checks(effects, sym, Veff, red.effective_potential)
+    E_prime = sp.Rational(1, 2) * I1 * beta_d**2 + Veff
+    checks = routh_checks(effects, sym, E_prime, p_alpha, p_gamma, red.effective_potential)
     return Model(model_name("reduced", True, [e.name for e in effects]), "reduced",
                  "symmetric top reduced to beta (Routh): conserved p_alpha, p_gamma as parameters, "
                  "half-angle partial fractions so nothing cancels near beta = 0 or pi",
@@ -270,7 +276,7 @@ def reduced(effects=()) -> Model:
                  effects=tuple(e.name for e in effects), symmetric=True)
 
 
-def routh_checks(effects, sym, Veff_half, Veff) -> dict:
+def routh_checks(effects, sym, E_prime, pa, pg, Veff=None) -> dict:
     """Where the β motion can go, from the Routh reduction: with u = cos β,
 
         u̇² = f(u) = (1 − u²)(2/I₁)(E′ − V(u)) − ((p_α − p_γ u)/I₁)²,   E′ = ½ I₁ β̇² + V_eff(β),
@@ -278,8 +284,10 @@ def routh_checks(effects, sym, Veff_half, Veff) -> dict:
     and u moves between the roots of f around u₀ = cos β₀ (f(u₀) ≥ 0, f(±1) ≤ 0). So the motion
     keeps |sin β| ≥ s (s = ``formulations.POLE_CLEARANCE``) exactly when |u₀| < u_c and
     f(u_c) < 0 and f(−u_c) < 0, u_c = √(1 − s²): f changes sign once between u₀ and each pole.
-    Returns {f_top: f(u_c), f_bottom: f(−u_c), cos_beta: u₀}; (p_α − p_γ u) stays a square so
-    that nothing cancels when p_α ≈ p_γ.
+    ``E_prime``, ``pa``, ``pg`` are the formulation's expressions of E′, p_α, p_γ (parameters
+    in the reduced model, functions of the state in the Euler-angle one). Returns f_top = f(u_c),
+    f_bottom = f(−u_c), cos_beta = u₀ and p_α ∓ p_γ; (p_α − p_γ u) stays a square so that
+    nothing cancels when p_α ≈ p_γ.
     """
     from .formulations import POLE_CLEARANCE
 
@@ -287,19 +295,20 @@ def routh_checks(effects, sym, Veff_half, Veff) -> dict:
     V = fx.potential(effects, ZYZ.matrix(), sym)
     V_u = trig_reduce(V).subs(sp.cos(beta), u)
     if V_u.has(beta):
-        raise ValueError("the reduced formulation needs a potential that depends on cos(beta) alone")
-    # The derivation's V_eff must be the centrifugal term plus V (checked, not assumed).
-    centrifugal = (p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2)
-    if sp.simplify(trig_reduce(sp.together(Veff - centrifugal - V))) != 0:
-        raise ValueError("V_eff is not the centrifugal term plus V")
-    E_prime = sp.Rational(1, 2) * I1 * beta_d**2 + Veff_half
+        raise ValueError("a Routh check needs a potential that depends on cos(beta) alone")
+    if Veff is not None:
+        # The derivation's V_eff must be the centrifugal term plus V (checked, not assumed).
+        centrifugal = (p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2)
+        if sp.simplify(trig_reduce(sp.together(Veff - centrifugal - V))) != 0:
+            raise ValueError("V_eff is not the centrifugal term plus V")
     s = sp.Rational(1, 1) / sp.Integer(round(1 / POLE_CLEARANCE))
     uc = sp.sqrt(1 - s**2)
 
     def f(at):
-        return (1 - at**2) * (2 / I1) * (E_prime - V_u.subs(u, at)) - ((p_alpha - p_gamma * at) / I1) ** 2
+        return (1 - at**2) * (2 / I1) * (E_prime - V_u.subs(u, at)) - ((pa - pg * at) / I1) ** 2
 
-    return {"f_top": f(uc), "f_bottom": f(-uc), "cos_beta": sp.cos(beta)}
+    return {"f_top": f(uc), "f_bottom": f(-uc), "cos_beta": sp.cos(beta),
+            "p_alpha_minus_p_gamma": pa - pg, "p_alpha_plus_p_gamma": pa + pg}
 
 
 def quaternion_of_angles(a, b, c):

@@ -57,7 +57,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import effects, formulations
+from . import effects, formulations, solvers
 from .errors import SceneError
 
 __all__ = [
@@ -66,20 +66,10 @@ __all__ = [
     "load_scene", "body_omega",
 ]
 
-#: Integration methods: name -> one-line description (shown by ``derive simulate --help``).
-METHODS: dict[str, str] = {
-    "auto": "let derive choose a method suited to the scene and the tolerances",
-    "dop853": "Dormand-Prince 8(5,3), explicit, adaptive step, compiled kernel",
-    "rk4": "classical Runge-Kutta, order 4, explicit, fixed step h",
-    "gauss4": "Gauss-Legendre 2 stages, order 4, implicit and symplectic, fixed step h",
-    "gauss6": "Gauss-Legendre 3 stages, order 6, implicit and symplectic, fixed step h",
-    "scipy-rk45": "scipy.integrate.solve_ivp RK45 (reference)",
-    "scipy-dop853": "scipy.integrate.solve_ivp DOP853 (reference)",
-    "scipy-radau": "scipy.integrate.solve_ivp Radau, implicit (reference)",
-    "scipy-lsoda": "scipy.integrate.solve_ivp LSODA, stiffness switching (reference)",
-}
+#: Integration methods: name -> one-line description (from the solver registry).
+METHODS: dict[str, str] = solvers.scene_methods()
 #: The methods that take a fixed step size ``h``.
-FIXED_STEP_METHODS = ("rk4", "gauss4", "gauss6")
+FIXED_STEP_METHODS = solvers.fixed_step_methods()
 
 #: Formulations of the equations of motion: name -> one-line description (the registry).
 FORMULATIONS: dict[str, str] = formulations.CHOICES

@@ -29,13 +29,13 @@ from .errors import IntegrationError, SceneError
 from .formulations import OUTPUTS
 from .integrate import ModelKernel
 from .scene import FIXED_STEP_METHODS, Scene, load_scene
+from .solvers import DEFAULT_METHOD, REFERENCE_METHODS
 from .solvers import METHODS as C_METHODS
 from .status import Status
 from .status import message as status_message
 
 FIXED_STEP = FIXED_STEP_METHODS
-SCIPY_METHODS = {"scipy-rk45": "RK45", "scipy-dop853": "DOP853", "scipy-radau": "Radau",
-                 "scipy-lsoda": "LSODA"}
+SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
 
 
 @dataclass
@@ -96,7 +96,7 @@ def params_of(scene: Scene, desc) -> np.ndarray:
 
 
 def choose_method(scene: Scene) -> str:
-    return "dop853" if scene.simulate.method == "auto" else scene.simulate.method
+    return DEFAULT_METHOD if scene.simulate.method == "auto" else scene.simulate.method
 
 
 def default_step(scene: Scene) -> float:
@@ -212,9 +212,9 @@ def _check_pole(desc, t, beta, rtol):
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
     sc = load_scene(scene, **overrides)
-    key = auto.model_key(sc)
-    desc = catalogue.describe(key)
     method = choose_method(sc)
+    key = auto.model_key(sc, method)
+    desc = catalogue.describe(key)
     t = sc.t_out
     inputs = inputs_of(sc)
     p = params_of(sc, desc)
@@ -286,7 +286,7 @@ def _solve_scipy(desc, method, inputs, p, t, sc):
     path): the compiled init map gives y0, the compiled output map the outputs."""
     from scipy.integrate import solve_ivp
 
-    kernel = ModelKernel.load(desc, "dop853")  # for its init and output maps
+    kernel = ModelKernel.load(desc, DEFAULT_METHOD)  # for its init and output maps
     y0, p, rc = kernel.init(inputs, p)
     if rc:
         raise IntegrationError(f"t = {t[0]:.6g}: the initial state is not finite")

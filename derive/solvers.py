@@ -73,6 +73,37 @@ METHODS: dict[str, Method] = {m.name: m for m in (
            "DOP853's order-8 formula on fixed steps, no error control (reference runs)"),
 )}
 
+#: The method "auto" runs: adaptive, any tolerance, dense output.
+DEFAULT_METHOD = "dop853"
+
+#: Methods run by SciPy's solve_ivp on the generated NumPy right-hand side (references for
+#: comparison, not the fast path): scene name -> (solve_ivp method, one-line description).
+REFERENCE_METHODS: dict[str, tuple[str, str]] = {
+    "scipy-rk45": ("RK45", "scipy.integrate.solve_ivp RK45 (reference)"),
+    "scipy-dop853": ("DOP853", "scipy.integrate.solve_ivp DOP853 (reference)"),
+    "scipy-radau": ("Radau", "scipy.integrate.solve_ivp Radau, implicit (reference)"),
+    "scipy-lsoda": ("LSODA", "scipy.integrate.solve_ivp LSODA, stiffness switching (reference)"),
+}
+
+#: Methods hidden from scenes (reference runs of the benchmarks and tests).
+INTERNAL_METHODS = ("dop853_fixed",)
+
+
+def scene_methods() -> dict[str, str]:
+    """What a scene's ``simulate.method`` may name: "auto", the compiled methods, the SciPy
+    references; name -> one-line description."""
+    out = {"auto": f"let derive choose ({DEFAULT_METHOD} unless the scene says otherwise)"}
+    out.update({name: m.summary for name, m in METHODS.items() if name not in INTERNAL_METHODS})
+    out.update({name: text for name, (_, text) in REFERENCE_METHODS.items()})
+    return out
+
+
+def fixed_step_methods() -> tuple[str, ...]:
+    """The compiled methods that take a fixed step h."""
+    return tuple(name for name, m in METHODS.items() if m.driver != "adaptive"
+                 and name not in INTERNAL_METHODS)
+
+
 # Newton: the step is retried on 2, 4, ... 2**NEWTON_HALVINGS substeps before giving up.
 NEWTON_HALVINGS = 4
 

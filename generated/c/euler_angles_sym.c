@@ -190,3 +190,37 @@ int euler_angles_sym_init(const double *in, double *p, double *y)
             return 1;
     return 0;
 }
+
+int euler_angles_sym_checks(const double *y, const double *p, double *out)
+{
+    const double t = 0.0;
+    const double beta = y[1];
+    const double gamma = y[2];
+    const double alpha_d = y[3];
+    const double beta_d = y[4];
+    const double gamma_d = y[5];
+    const double I1 = p[0];
+    const double I3 = p[1];
+    (void)t;
+
+    const double x0 = cos(gamma);
+    const double x1 = sin(gamma);
+    const double x2 = sin(beta);
+    const double x3 = alpha_d*x2;
+    const double x4 = beta_d*x0 + x1*x3;
+    const double x5 = (1.0/2.0)*I1;
+    const double x6 = beta_d*x1 - x0*x3;
+    const double x7 = (1.0/500000.0)*((x4*x4)*x5 + x5*(x6*x6))/I1;
+    const double x8 = 1.0/(I1*I1);
+    const double x9 = cos(beta);
+    const double x10 = I3*(alpha_d*x9 + gamma_d);
+    const double x11 = (3.0/1000.0)*sqrt(111111)*x10;
+    const double x12 = I1*x2;
+    const double x13 = -x0*x12*x6 + x1*x12*x4 + x10*x9;
+    out[0] = x7 - x8*((-x11 + x13)*(-x11 + x13));
+    out[1] = x7 - x8*((x11 + x13)*(x11 + x13));
+    out[2] = x9;
+    out[3] = -x10 + x13;
+    out[4] = x10 + x13;
+    return 0;
+}

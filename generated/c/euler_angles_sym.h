@@ -17,7 +17,7 @@
 #define euler_angles_sym_NP 2                      /* parameter count */
 #define euler_angles_sym_NOBS 18                    /* observable (output) count */
 #define euler_angles_sym_NIN 10                     /* init-map input count */
-#define euler_angles_sym_NCHECKS 0                 /* auto's check count */
+#define euler_angles_sym_NCHECKS 5                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define EULER_ANGLES_SYM_NY euler_angles_sym_NY
 #define EULER_ANGLES_SYM_NP euler_angles_sym_NP
@@ -41,5 +41,8 @@ int euler_angles_sym_observables(double t, const double *y, const double *p, dou
  * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
  * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
 int euler_angles_sym_init(const double *in, double *p, double *y);
+
+/* What `auto` reads: out = (f_top, f_bottom, cos_beta, p_alpha_minus_p_gamma, p_alpha_plus_p_gamma). Returns 0. */
+int euler_angles_sym_checks(const double *y, const double *p, double *out);
 
 #endif /* EULER_ANGLES_SYM_H */

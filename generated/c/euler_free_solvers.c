@@ -17,7 +17,15 @@
 #error "euler_free.h: euler_free_NY differs from the size the solvers were rendered for (3)"
 #endif
 
+/* A model header that declares outputs and an init map (euler_free_NOBS, euler_free_NIN: every generated
+ * model) gets the whole-simulation drivers too; a hand-written model with only rhs and jac gets
+ * the solvers alone. */
+#if defined(euler_free_NOBS) && defined(euler_free_NIN)
+#define DERIVE_EULER_FREE_SIMULATE 1
 const int euler_free_dims[4] = { euler_free_NY, euler_free_NP, euler_free_NOBS, euler_free_NIN };
+#else
+const int euler_free_dims[4] = { euler_free_NY, euler_free_NP, 0, 0 };
+#endif
 
 /* ---------------------------------------------------------------------------------------- */
 /* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
@@ -98,6 +106,7 @@ static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_st
     }
     return DERIVE_INTERRUPTED;
 }
+#ifdef DERIVE_EULER_FREE_SIMULATE
 
 /* The output arrays at every sample: out[j*n_out + k] = output j (euler_free_observables) at
  * t_out[k] from the state y[k*NY ..]. */
@@ -116,6 +125,7 @@ int euler_free_outputs_at(long n_out, const double *t_out, const double *y, cons
     }
     return DERIVE_OK;
 }
+#endif
 
 /* n_out >= 1 and t_out finite and strictly increasing. */
 static int derive_euler_free_times_ok(const double *t_out, long n_out)
@@ -562,6 +572,7 @@ int euler_free_solve_batch_dop853(long n_batch, const double *y0s, const double 
     return status;
 }
 
+#ifdef DERIVE_EULER_FREE_SIMULATE
 int euler_free_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
 {
@@ -601,6 +612,7 @@ int euler_free_simulate_batch_dop853(long n_batch, const double *ins, double *ps
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_DOP853 */
 
 /* ======================================================================================== */
@@ -714,6 +726,7 @@ int euler_free_solve_batch_rk4(long n_batch, const double *y0s, const double *ps
     return status;
 }
 
+#ifdef DERIVE_EULER_FREE_SIMULATE
 int euler_free_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
@@ -753,6 +766,7 @@ int euler_free_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_RK4 */
 
 /* ======================================================================================== */
@@ -1009,6 +1023,7 @@ int euler_free_solve_batch_gauss4(long n_batch, const double *y0s, const double 
     return status;
 }
 
+#ifdef DERIVE_EULER_FREE_SIMULATE
 int euler_free_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
@@ -1048,6 +1063,7 @@ int euler_free_simulate_batch_gauss4(long n_batch, const double *ins, double *ps
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_GAUSS4 */
 
 /* ======================================================================================== */
@@ -1322,6 +1338,7 @@ int euler_free_solve_batch_gauss6(long n_batch, const double *y0s, const double 
     return status;
 }
 
+#ifdef DERIVE_EULER_FREE_SIMULATE
 int euler_free_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
@@ -1361,6 +1378,7 @@ int euler_free_simulate_batch_gauss6(long n_batch, const double *ins, double *ps
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_GAUSS6 */
 
 /* ======================================================================================== */
@@ -1538,6 +1556,7 @@ int euler_free_solve_batch_dop853_fixed(long n_batch, const double *y0s, const d
     return status;
 }
 
+#ifdef DERIVE_EULER_FREE_SIMULATE
 int euler_free_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
@@ -1577,4 +1596,5 @@ int euler_free_simulate_batch_dop853_fixed(long n_batch, const double *ins, doub
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_DOP853_FIXED */

@@ -59,7 +59,8 @@ extern const int euler_free_dims[4];
 int euler_free_interrupt_guard(int on);
 void euler_free_interrupt_request(void);
 
-/* out[j*n_out + k] = output j (euler_free_observables) at t_out[k] from the states y[k*NY ..],
+/* For a model with outputs and an init map (euler_free_NOBS, euler_free_NIN defined; every generated model):
+ * out[j*n_out + k] = output j (euler_free_observables) at t_out[k] from the states y[k*NY ..],
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int euler_free_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);

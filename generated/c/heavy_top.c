@@ -199,3 +199,44 @@ int heavy_top_init(const double *in, double *p, double *y)
             return 1;
     return 0;
 }
+
+int heavy_top_checks(const double *y, const double *p, double *out)
+{
+    const double t = 0.0;
+    const double beta = y[1];
+    const double gamma = y[2];
+    const double alpha_d = y[3];
+    const double beta_d = y[4];
+    const double gamma_d = y[5];
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    (void)t;
+
+    const double x0 = (3.0/1000.0)*sqrt(111111);
+    const double x1 = M*g*l;
+    const double x2 = x0*x1;
+    const double x3 = cos(gamma);
+    const double x4 = sin(gamma);
+    const double x5 = sin(beta);
+    const double x6 = alpha_d*x5;
+    const double x7 = beta_d*x3 + x4*x6;
+    const double x8 = (1.0/2.0)*I1;
+    const double x9 = beta_d*x4 - x3*x6;
+    const double x10 = cos(beta);
+    const double x11 = x1*x10 + (x7*x7)*x8 + x8*(x9*x9);
+    const double x12 = (1.0/500000.0)/I1;
+    const double x13 = 1.0/(I1*I1);
+    const double x14 = I3*(alpha_d*x10 + gamma_d);
+    const double x15 = x0*x14;
+    const double x16 = I1*x5;
+    const double x17 = x10*x14 - x16*x3*x9 + x16*x4*x7;
+    out[0] = x12*(x11 - x2) - x13*((-x15 + x17)*(-x15 + x17));
+    out[1] = x12*(x11 + x2) - x13*((x15 + x17)*(x15 + x17));
+    out[2] = x10;
+    out[3] = -x14 + x17;
+    out[4] = x14 + x17;
+    return 0;
+}

@@ -17,7 +17,7 @@
 #define heavy_top_NP 5                      /* parameter count */
 #define heavy_top_NOBS 18                    /* observable (output) count */
 #define heavy_top_NIN 10                     /* init-map input count */
-#define heavy_top_NCHECKS 0                 /* auto's check count */
+#define heavy_top_NCHECKS 5                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define HEAVY_TOP_NY heavy_top_NY
 #define HEAVY_TOP_NP heavy_top_NP
@@ -41,5 +41,8 @@ int heavy_top_observables(double t, const double *y, const double *p, double *ou
  * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
  * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
 int heavy_top_init(const double *in, double *p, double *y);
+
+/* What `auto` reads: out = (f_top, f_bottom, cos_beta, p_alpha_minus_p_gamma, p_alpha_plus_p_gamma). Returns 0. */
+int heavy_top_checks(const double *y, const double *p, double *out);
 
 #endif /* HEAVY_TOP_H */

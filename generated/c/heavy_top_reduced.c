@@ -205,14 +205,18 @@ int heavy_top_reduced_checks(const double *y, const double *p, double *out)
     const double x4 = x1*x3;
     const double x5 = 1.0/I1;
     const double x6 = cos(beta);
-    const double x7 = ((p_alpha + p_gamma)*(p_alpha + p_gamma));
-    const double x8 = (1.0/2.0)*beta;
-    const double x9 = (1.0/8.0)*x5;
-    const double x10 = ((p_alpha - p_gamma)*(p_alpha - p_gamma));
-    const double x11 = (1.0/2.0)*I1*(beta_d*beta_d) - 1.0/2.0*(p_gamma*p_gamma)*x5 + x3*x6 + ((x10 == 0) ? (0) : (x10*x9/(sin(x8)*sin(x8)))) + ((x7 == 0) ? (0) : (x7*x9/(cos(x8)*cos(x8))));
-    const double x12 = (1.0/500000.0)*x5;
-    out[0] = -x0*((p_alpha - x2)*(p_alpha - x2)) + x12*(x11 - x4);
-    out[1] = -x0*((p_alpha + x2)*(p_alpha + x2)) + x12*(x11 + x4);
+    const double x7 = p_alpha + p_gamma;
+    const double x8 = (x7*x7);
+    const double x9 = (1.0/2.0)*beta;
+    const double x10 = (1.0/8.0)*x5;
+    const double x11 = p_alpha - p_gamma;
+    const double x12 = (x11*x11);
+    const double x13 = (1.0/2.0)*I1*(beta_d*beta_d) - 1.0/2.0*(p_gamma*p_gamma)*x5 + x3*x6 + ((x12 == 0) ? (0) : (x10*x12/(sin(x9)*sin(x9)))) + ((x8 == 0) ? (0) : (x10*x8/(cos(x9)*cos(x9))));
+    const double x14 = (1.0/500000.0)*x5;
+    out[0] = -x0*((p_alpha - x2)*(p_alpha - x2)) + x14*(x13 - x4);
+    out[1] = -x0*((p_alpha + x2)*(p_alpha + x2)) + x14*(x13 + x4);
     out[2] = x6;
+    out[3] = x11;
+    out[4] = x7;
     return 0;
 }

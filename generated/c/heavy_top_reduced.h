@@ -17,7 +17,7 @@
 #define heavy_top_reduced_NP 7                      /* parameter count */
 #define heavy_top_reduced_NOBS 18                    /* observable (output) count */
 #define heavy_top_reduced_NIN 10                     /* init-map input count */
-#define heavy_top_reduced_NCHECKS 3                 /* auto's check count */
+#define heavy_top_reduced_NCHECKS 5                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define HEAVY_TOP_REDUCED_NY heavy_top_reduced_NY
 #define HEAVY_TOP_REDUCED_NP heavy_top_reduced_NP
@@ -44,7 +44,7 @@ int heavy_top_reduced_observables(double t, const double *y, const double *p, do
  * Returns 0, or 1 if a value is not finite. */
 int heavy_top_reduced_init(const double *in, double *p, double *y);
 
-/* What `auto` reads: out = (f_top, f_bottom, cos_beta). Returns 0. */
+/* What `auto` reads: out = (f_top, f_bottom, cos_beta, p_alpha_minus_p_gamma, p_alpha_plus_p_gamma). Returns 0. */
 int heavy_top_reduced_checks(const double *y, const double *p, double *out);
 
 #endif /* HEAVY_TOP_REDUCED_H */

@@ -17,7 +17,15 @@
 #error "heavy_top_reduced.h: heavy_top_reduced_NY differs from the size the solvers were rendered for (4)"
 #endif
 
+/* A model header that declares outputs and an init map (heavy_top_reduced_NOBS, heavy_top_reduced_NIN: every generated
+ * model) gets the whole-simulation drivers too; a hand-written model with only rhs and jac gets
+ * the solvers alone. */
+#if defined(heavy_top_reduced_NOBS) && defined(heavy_top_reduced_NIN)
+#define DERIVE_HEAVY_TOP_REDUCED_SIMULATE 1
 const int heavy_top_reduced_dims[4] = { heavy_top_reduced_NY, heavy_top_reduced_NP, heavy_top_reduced_NOBS, heavy_top_reduced_NIN };
+#else
+const int heavy_top_reduced_dims[4] = { heavy_top_reduced_NY, heavy_top_reduced_NP, 0, 0 };
+#endif
 
 /* ---------------------------------------------------------------------------------------- */
 /* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
@@ -98,6 +106,7 @@ static int derive_heavy_top_reduced_rest_interrupted(long from, long n_batch, de
     }
     return DERIVE_INTERRUPTED;
 }
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 
 /* Canonical z-y-z angles along a trajectory: beta in [0, pi] (a beta outside is reflected,
  * beta -> 2 pi - beta, alpha and gamma turned by pi: the same rotation); alpha and gamma
@@ -149,6 +158,7 @@ int heavy_top_reduced_outputs_at(long n_out, const double *t_out, const double *
     derive_heavy_top_reduced_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
     return DERIVE_OK;
 }
+#endif
 
 /* n_out >= 1 and t_out finite and strictly increasing. */
 static int derive_heavy_top_reduced_times_ok(const double *t_out, long n_out)
@@ -595,6 +605,7 @@ int heavy_top_reduced_solve_batch_dop853(long n_batch, const double *y0s, const 
     return status;
 }
 
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 int heavy_top_reduced_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
 {
@@ -634,6 +645,7 @@ int heavy_top_reduced_simulate_batch_dop853(long n_batch, const double *ins, dou
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_DOP853 */
 
 /* ======================================================================================== */
@@ -747,6 +759,7 @@ int heavy_top_reduced_solve_batch_rk4(long n_batch, const double *y0s, const dou
     return status;
 }
 
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 int heavy_top_reduced_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
@@ -786,6 +799,7 @@ int heavy_top_reduced_simulate_batch_rk4(long n_batch, const double *ins, double
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_RK4 */
 
 /* ======================================================================================== */
@@ -1042,6 +1056,7 @@ int heavy_top_reduced_solve_batch_gauss4(long n_batch, const double *y0s, const 
     return status;
 }
 
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 int heavy_top_reduced_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
@@ -1081,6 +1096,7 @@ int heavy_top_reduced_simulate_batch_gauss4(long n_batch, const double *ins, dou
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_GAUSS4 */
 
 /* ======================================================================================== */
@@ -1355,6 +1371,7 @@ int heavy_top_reduced_solve_batch_gauss6(long n_batch, const double *y0s, const 
     return status;
 }
 
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 int heavy_top_reduced_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
@@ -1394,6 +1411,7 @@ int heavy_top_reduced_simulate_batch_gauss6(long n_batch, const double *ins, dou
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_GAUSS6 */
 
 /* ======================================================================================== */
@@ -1571,6 +1589,7 @@ int heavy_top_reduced_solve_batch_dop853_fixed(long n_batch, const double *y0s, 
     return status;
 }
 
+#ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
 int heavy_top_reduced_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
@@ -1610,4 +1629,5 @@ int heavy_top_reduced_simulate_batch_dop853_fixed(long n_batch, const double *in
     }
     return status;
 }
+#endif /* SIMULATE */
 #endif /* DERIVE_WITH_DOP853_FIXED */

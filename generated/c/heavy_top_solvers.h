@@ -59,7 +59,8 @@ extern const int heavy_top_dims[4];
 int heavy_top_interrupt_guard(int on);
 void heavy_top_interrupt_request(void);
 
-/* out[j*n_out + k] = output j (heavy_top_observables) at t_out[k] from the states y[k*NY ..],
+/* For a model with outputs and an init map (heavy_top_NOBS, heavy_top_NIN defined; every generated model):
+ * out[j*n_out + k] = output j (heavy_top_observables) at t_out[k] from the states y[k*NY ..],
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int heavy_top_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);

@@ -188,13 +188,17 @@ int reduced_sym_checks(const double *y, const double *p, double *out)
     const double x0 = 1.0/(I1*I1);
     const double x1 = (3.0/1000.0)*sqrt(111111)*p_gamma;
     const double x2 = 1.0/I1;
-    const double x3 = ((p_alpha + p_gamma)*(p_alpha + p_gamma));
-    const double x4 = (1.0/2.0)*beta;
-    const double x5 = (1.0/8.0)*x2;
-    const double x6 = ((p_alpha - p_gamma)*(p_alpha - p_gamma));
-    const double x7 = (1.0/500000.0)*x2*((1.0/2.0)*I1*(beta_d*beta_d) - 1.0/2.0*(p_gamma*p_gamma)*x2 + ((x3 == 0) ? (0) : (x3*x5/(cos(x4)*cos(x4)))) + ((x6 == 0) ? (0) : (x5*x6/(sin(x4)*sin(x4)))));
-    out[0] = -x0*((p_alpha - x1)*(p_alpha - x1)) + x7;
-    out[1] = -x0*((p_alpha + x1)*(p_alpha + x1)) + x7;
+    const double x3 = p_alpha + p_gamma;
+    const double x4 = (x3*x3);
+    const double x5 = (1.0/2.0)*beta;
+    const double x6 = (1.0/8.0)*x2;
+    const double x7 = p_alpha - p_gamma;
+    const double x8 = (x7*x7);
+    const double x9 = (1.0/500000.0)*x2*((1.0/2.0)*I1*(beta_d*beta_d) - 1.0/2.0*(p_gamma*p_gamma)*x2 + ((x4 == 0) ? (0) : (x4*x6/(cos(x5)*cos(x5)))) + ((x8 == 0) ? (0) : (x6*x8/(sin(x5)*sin(x5)))));
+    out[0] = -x0*((p_alpha - x1)*(p_alpha - x1)) + x9;
+    out[1] = -x0*((p_alpha + x1)*(p_alpha + x1)) + x9;
     out[2] = cos(beta);
+    out[3] = x7;
+    out[4] = x3;
     return 0;
 }

@@ -17,7 +17,7 @@
 #define reduced_sym_NP 4                      /* parameter count */
 #define reduced_sym_NOBS 18                    /* observable (output) count */
 #define reduced_sym_NIN 10                     /* init-map input count */
-#define reduced_sym_NCHECKS 3                 /* auto's check count */
+#define reduced_sym_NCHECKS 5                 /* auto's check count */
 /* The same sizes in the usual upper-case spelling of C macros. */
 #define REDUCED_SYM_NY reduced_sym_NY
 #define REDUCED_SYM_NP reduced_sym_NP
@@ -44,7 +44,7 @@ int reduced_sym_observables(double t, const double *y, const double *p, double *
  * Returns 0, or 1 if a value is not finite. */
 int reduced_sym_init(const double *in, double *p, double *y);
 
-/* What `auto` reads: out = (f_top, f_bottom, cos_beta). Returns 0. */
+/* What `auto` reads: out = (f_top, f_bottom, cos_beta, p_alpha_minus_p_gamma, p_alpha_plus_p_gamma). Returns 0. */
 int reduced_sym_checks(const double *y, const double *p, double *out);
 
 #endif /* REDUCED_SYM_H */

@@ -59,7 +59,8 @@ extern const int rigid_body_dims[4];
 int rigid_body_interrupt_guard(int on);
 void rigid_body_interrupt_request(void);
 
-/* out[j*n_out + k] = output j (rigid_body_observables) at t_out[k] from the states y[k*NY ..],
+/* For a model with outputs and an init map (rigid_body_NOBS, rigid_body_NIN defined; every generated model):
+ * out[j*n_out + k] = output j (rigid_body_observables) at t_out[k] from the states y[k*NY ..],
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int rigid_body_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
