@@ -245,9 +245,7 @@ def analyze(scene) -> Analysis:
     sc = load_scene(scene)
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
-    proofs = {}
-    for i in ints:
-        proofs[i.name] = integrable.prove(cls.case if i is cls.extra else "general", i.name)
+    proofs = integrable.proofs(cls)
     return Analysis(sc, cls, ints, proofs, _equilibria(sc, cls))
 
 
@@ -625,8 +623,8 @@ def _section_integrals(sc, cls, ints, proofs):
         else:
             lines.append("Proved: its time derivative along the derived Euler–Poisson equations "
                          + ("(with the case's relations " + ", ".join(
-                             f"{k} = {v}" for k, v in (i.relations or integrable.RELATIONS[cls.case]).items())
-                            + ") " if i is cls.extra else "")
+                             f"{k} = {v}" for k, v in integrable.extra_relations(cls).items())
+                            + ") " if cls.extra is not None and i.name == cls.extra.name else "")
                          + f"simplifies to {'0' if pr.holds else _latex(pr.derivative)}.")
         lines.append("")
     if cls.dissipative:

@@ -7,8 +7,9 @@ r_c = (c_x, c_y, c_z) the centre of mass from the pivot):
     L̇ = L × ω̃ + M g n × r_c,    ṅ = n × ω̃,    E = ½ L·ω̃ + M g n·r_c.
 
 Every such body conserves E, the area integral L·n (= p_α) and the Casimir |n|² = 1. A fourth
-integral, which makes the flow integrable, exists in these cases (axis 3 is the symmetry axis
-of a symmetric body, the scene's convention; the pair of equal moments must be (I₁, I₂)):
+integral, which makes the flow integrable, exists in these cases (written with axis 3 as the
+symmetry axis, the scene's convention; a body symmetric about axis 1 or 2 is recognised by a
+cyclic relabelling of its axes, ``RELABELLINGS``):
 
 * ``euler``   no gravity torque (no [gravity] table, r_c = 0 or g = 0):  |L|².
 * ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ); a spherical body (I₁ = I₂ = I₃)
@@ -30,8 +31,10 @@ SymPy is imported only inside the proofs.
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
+import re
 from dataclasses import dataclass
 from typing import Callable
 
@@ -161,23 +164,66 @@ EXTRA = {
 # classification from the scene's numbers
 
 
+#: The cyclic relabellings of the body axes (0-based), identity first: ``axes[j]`` is the body
+#: axis that plays axis j + 1 of the formulas. Cyclic, so the relabelled frame is right-handed
+#: and the Euler–Poisson equations keep their form: a body symmetric about axis 1 (I₂ = I₃) is
+#: the formulas' body with axes (2, 3, 1).
+RELABELLINGS = ((0, 1, 2), (1, 2, 0), (2, 0, 1))
+_COM = ("cx", "cy", "cz")
+
+
+def relabel_params(p: dict, axes) -> dict:
+    """The formulas' parameters from the body's: I_{j+1} ← I_{axes[j]+1}, c ← c likewise."""
+    q = dict(p)
+    for j, a in enumerate(axes):
+        q[f"I{j + 1}"] = p[f"I{a + 1}"]
+        q[_COM[j]] = p[_COM[a]]
+    return q
+
+
+def relabelled(integral: Integral, axes) -> Integral:
+    """The integral in the body's own axes when the formulas' axes (1, 2, 3) are body axes
+    ``axes`` (+1): its formula permutes L, n and the parameters first; the Lagrange integral
+    is renamed after the body axis it is about (L3 → L1 for a body symmetric about axis 1)."""
+    if tuple(axes) == RELABELLINGS[0]:
+        return integral
+    formula = integral.formula
+
+    def f(L, n, p, _axes=tuple(axes)):
+        return formula(tuple(L[a] for a in _axes), tuple(n[a] for a in _axes), relabel_params(p, _axes))
+
+    body = ", ".join(str(a + 1) for a in axes)
+    name = f"L{axes[2] + 1}" if integral.name == "L3" else integral.name
+    return Integral(name, f"{integral.expression} [axes 1, 2, 3 of this formula = body axes {body}]",
+                    rf"{integral.latex}\quad[(1, 2, 3) \to \text{{body axes }} ({body})]", f,
+                    on=integral.on, relations=integral.relations)
+
+
 @dataclass(frozen=True)
 class Classification:
-    """The case of a scene and why (one sentence)."""
+    """The case of a scene and why (one sentence); ``axes`` the body axes (0-based) that play
+    the formulas' axes 1, 2, 3 (the symmetry axis of the case is body axis axes[2] + 1)."""
 
     case: str
     reason: str
     dissipative: bool = False
     integral: str | None = None  # the extra integral's name when it is not EXTRA[case]'s
+    axes: tuple = RELABELLINGS[0]
 
     @property
-    def extra(self) -> Integral | None:
-        """The case's extra integral (None: general or dissipative)."""
+    def canonical_extra(self) -> Integral | None:
+        """The case's extra integral in the formulas' axes (None: general or dissipative)."""
         if self.dissipative:
             return None
         if self.integral == SPHERE.name:
             return SPHERE
         return EXTRA.get(self.case)
+
+    @property
+    def extra(self) -> Integral | None:
+        """The extra integral in the body's own axes."""
+        c = self.canonical_extra
+        return None if c is None else relabelled(c, self.axes)
 
 
 def _equal(a: float, b: float) -> bool:
@@ -197,8 +243,27 @@ def parameters(scene) -> dict[str, float]:
 
 
 def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) -> Classification:
-    """The integrable case from numbers (see the module docstring and ``TOLERANCE``)."""
-    cx, cy, cz = (float(c) for c in com)
+    """The integrable case from numbers (see the module docstring and ``TOLERANCE``). The
+    classical cases take axis 3 as the symmetry axis (the scene convention); a body symmetric
+    about axis 1 or 2 is recognised through a cyclic relabelling of its axes (``RELABELLINGS``)."""
+    I, c = (I1, I2, I3), tuple(float(x) for x in com)
+    first = None
+    for axes in RELABELLINGS:
+        found = _classify(*(I[a] for a in axes), M, g, tuple(c[a] for a in axes), damping)
+        if axes == RELABELLINGS[0]:
+            first = found
+        if found.case != "general" or found.dissipative:
+            if axes == RELABELLINGS[0]:
+                return found
+            return dataclasses.replace(found, axes=axes, reason=(
+                f"{found.reason}, with body axis {axes[2] + 1} as the symmetry axis (the formulas' "
+                f"axes 1, 2, 3 are body axes {axes[0] + 1}, {axes[1] + 1}, {axes[2] + 1})"))
+    return first
+
+
+def _classify(I1, I2, I3, M, g, com, damping) -> Classification:
+    """The classification with axis 3 as the symmetry axis."""
+    cx, cy, cz = com
     r = math.sqrt(cx * cx + cy * cy + cz * cz)
     if damping > 0:
         return Classification("general", f"dissipative: the damping torque -c omega (c = {damping:g}) "
@@ -211,10 +276,9 @@ def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) 
                                           "of mass is a symmetry axis, so L.r_c is conserved",
                               integral=SPHERE.name)
     if not _equal(I1, I2):
-        other = (" (a body symmetric about axis 1 or 2 is not recognised: the scene convention "
-                 "makes axis 3 the symmetry axis)" if _equal(I2, I3) or _equal(I1, I3) else "")
-        return Classification("general", f"I1 = {I1:g} and I2 = {I2:g} differ and there is a gravity "
-                                         "torque: no known integrable case" + other)
+        return Classification("general", "no two equal moments with the centre of mass placed as an "
+                                         "integrable case needs, and a gravity torque: no known "
+                                         "integrable case")
     if math.hypot(cx, cy) <= TOLERANCE * r:
         return Classification("lagrange", "I1 = I2 and the centre of mass on the symmetry axis 3")
     if abs(cz) <= TOLERANCE * r:
@@ -310,6 +374,39 @@ def relations(case: str) -> dict:
     return _relations(RELATIONS[case])
 
 
+def extra_relations(c: Classification) -> dict:
+    """The relations under which a classified scene's extra integral is proved, in the body's
+    axes (e.g. {"I3": "I2", "cy": 0, "cz": 0} for a Lagrange top about body axis 1)."""
+    integral = c.canonical_extra
+    if integral is None:
+        return {}
+    return _relabel_spec(integral.relations or RELATIONS[c.case], c.axes)
+
+
+def proofs(c: Classification) -> dict:
+    """{name: Proof} for every integral of a classified scene (``integrals(c)``)."""
+    out = {i.name: prove("general", i.name) for i in integrals(c) if i.name in
+           (ENERGY.name, AREA.name, CASIMIR.name)}
+    extra = c.canonical_extra
+    if extra is not None:
+        out[c.extra.name] = prove(c.case, extra.name, None, tuple(c.axes))
+    return out
+
+
+def _relabel_spec(spec: dict, axes) -> dict:
+    """Relations written in the formulas' axes, rewritten in the body's (e.g. I2 = I1 becomes
+    I3 = I2 for axes (1, 2, 0))."""
+    if tuple(axes) == RELABELLINGS[0]:
+        return spec
+    names = {f"I{j + 1}": f"I{a + 1}" for j, a in enumerate(axes)}
+    names.update({_COM[j]: _COM[a] for j, a in enumerate(axes)})
+
+    def sub(text):
+        return re.sub(r"I[123]|c[xyz]", lambda m: names[m.group(0)], str(text))
+
+    return {sub(k): sub(v) for k, v in spec.items()}
+
+
 def _relations(spec: dict) -> dict:
     import sympy as sp
 
@@ -329,19 +426,22 @@ def time_derivative(formula: Callable, subs: dict):
 
 
 @functools.lru_cache(maxsize=None)
-def prove(case: str, integral_name: str | None = None, relations_of: str | None = None) -> Proof:
-    """Prove a case's integral (default: its extra one) along the derived equations, with the
-    relations of ``relations_of`` (default: the case itself; another case gives a control).
-    Integrals on a level set are divided by L·n as polynomials in L and n."""
+def prove(case: str, integral_name: str | None = None, relations_of: str | None = None,
+          axes: tuple = RELABELLINGS[0]) -> Proof:
+    """Prove a case's integral (default: its extra one; names in the formulas' axes) along the
+    derived equations, with the relations of ``relations_of`` (default: the case itself; another
+    case gives a control). With ``axes`` the integral and the relations are first relabelled to
+    the body's axes, and the proof runs on the body's own equations. Integrals on a level set
+    are divided by L·n as polynomials in the state."""
     import sympy as sp
 
     integral = (EXTRA[case] if integral_name is None
                 else next(i for i in (ENERGY, AREA, CASIMIR, SPHERE, *EXTRA.values())
                           if i.name == integral_name))
-    if relations_of is None and integral.relations is not None:
-        subs = _relations(integral.relations)
-    else:
-        subs = relations(relations_of or case)
+    spec = (integral.relations if relations_of is None and integral.relations is not None
+            else RELATIONS[relations_of or case])
+    subs = _relations(_relabel_spec(spec, axes))
+    integral = relabelled(integral, axes)
     dF = time_derivative(integral.formula, subs)
     if integral.on is None:
         return Proof(case, integral.name, dF)
