@@ -113,4 +113,4 @@ def batch_key(scenes) -> tuple:
     for name in candidates(first):
         if not REGISTRY[name].singular and all(REGISTRY[name].applicable(sc) is None for sc in scenes):
             return (name, first.symmetric, first.effects)
-    return ("euler-poisson", first.symmetric, first.effects)
+    raise AssertionError("no formulation without a singular set applies to every scene")

@@ -65,6 +65,8 @@ class Table:
     doc: str
     keys: tuple[Key, ...]
     one_of: tuple[tuple[str, ...], ...] = ()
+    #: Fills derived keys from the validated values (gravity: com from l and l from com).
+    complete: Callable[[dict], dict] = lambda values: values
 
     def key(self, name: str) -> Key:
         return next(k for k in self.keys if k.name == name)
@@ -107,7 +109,7 @@ def _nonnegative(x):
 
 def _com(values) -> tuple[float, float, float]:
     """The centre of mass (body axes, m, from the pivot): ``com``, or (0, 0, l)."""
-    if "com" in values:
+    if values.get("com") is not None:
         return tuple(float(c) for c in values["com"])
     return (0.0, 0.0, float(values["l"]))
 
@@ -156,6 +158,7 @@ GRAVITY_TABLE = Table(
             default=None),
     ),
     one_of=(("l", "com"),),
+    complete=lambda v: {**v, "com": _com(v), "l": _com(v)[2] if _axial(v) else None},
 )
 
 DAMPING_TABLE = Table(
@@ -167,6 +170,9 @@ DAMPING_TABLE = Table(
 )
 
 TABLES: dict[str, Table] = {t.name: t for t in (GRAVITY_TABLE, DAMPING_TABLE)}
+
+#: The effect of a centre of mass anywhere (the analysis derives the general heavy body with it).
+GENERAL_GRAVITY = "gravity_general"
 
 REGISTRY: dict[str, Effect] = {e.name: e for e in (
     Effect(

@@ -14,6 +14,8 @@ Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeS
    a formulation only when the derived β range keeps clear of it (:mod:`derive.auto`).
 5. ``needs_routh``: True when the formulation is exact only for conserved p_α, p_γ (the reduced
    top): it takes their values from the init map, as parameters.
+6. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
+   Euler-angle mass matrix): a trajectory that came closer than the tolerance allows is refused.
 
 ``auto`` (see :mod:`derive.auto`) tries the applicable formulations in order of the cost of
 their right-hand side (the kernel spec's weighted operation count, stored with the generated
@@ -87,11 +89,12 @@ class Formulation:
     applicable: Callable
     singular: bool = False
     needs_routh: bool = False
+    pole_loss: bool = False
 
 
 REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("euler-angles", "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
-                "euler_angles", _euler_angles, singular=True),
+                "euler_angles", _euler_angles, singular=True, pole_loss=True),
     Formulation("reduced", "beta alone with conserved p_alpha, p_gamma; symmetric body, "
                 "axisymmetric conservative effects", "reduced", _reduced, singular=True,
                 needs_routh=True),
@@ -100,6 +103,10 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "
                 "coordinate singularity", "euler_poisson", _always),
 )}
+
+#: The formulation that takes every body and every effect (no singular set): what the analysis
+#: derives its equations from.
+UNIVERSAL = "euler-poisson"
 
 #: Scene spelling: "auto" plus the registry.
 CHOICES = {"auto": "let derive choose from the body, the effects and the initial state",

@@ -531,10 +531,7 @@ class _Validator:
                 values[key.name] = self.number(t, table.name, key.name, key.check, key.must,
                                                default=default)
         given = {k for k in t}
-        if table.name == "gravity":
-            com = tuple(values["com"]) if values["com"] is not None else (0.0, 0.0, values["l"])
-            values["com"] = com
-            values["l"] = com[2] if com[0] == 0.0 and com[1] == 0.0 else None
+        values = table.complete(values)
         out = TableValues(table.name, values, effects.for_table(table.name, values).name)
         out.__dict__["_given"] = given
         return out

@@ -26,7 +26,7 @@ import numpy as np
 
 from . import auto, catalogue
 from .errors import IntegrationError, SceneError
-from .formulations import OUTPUTS
+from .formulations import OUTPUTS, REGISTRY
 from .integrate import ModelKernel
 from .scene import FIXED_STEP_METHODS, Scene, load_scene
 from .solvers import DEFAULT_METHOD, REFERENCE_METHODS
@@ -196,7 +196,7 @@ _INTEGRALS: dict = {}
 def _check_pole(desc, t, beta, rtol):
     """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
     trajectory whose closest approach to a pole made that larger than the tolerance."""
-    if desc.formulation != "euler-angles":
+    if not REGISTRY[desc.formulation].pole_loss:
         return
     s = np.abs(np.sin(beta))
     k = int(np.argmin(s))

@@ -1,0 +1,248 @@
+"""The one-way pipeline (issue 8): registries, state maps, one C call, no SymPy on the warm path."""
+import ast
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import derive
+from derive import catalogue, effects, formulations, simulation, solvers
+from derive.integrate import ModelKernel
+from derive.render import ROOT
+from derive.scene import load_scene
+
+RNG = np.random.default_rng(8)
+SCENES = ROOT / "scenes"
+
+
+def _top(**over):
+    sc = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
+          "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4,
+                      "beta_dot": 0.3, "gamma_dot": 6.0},
+          "simulate": {"t_end": 2.0, "samples": 51}}
+    sc.update(over)
+    return sc
+
+
+# ---------------------------------------------------------------------------------------------
+# state maps
+
+
+@pytest.mark.parametrize("name", list(formulations.REGISTRY))
+@pytest.mark.parametrize("symmetric", [True, False])
+def test_state_maps_round_trip(name, symmetric):
+    """angles + ω̃ → y (the compiled init map) → angles + ω̃ (the compiled output map), at random
+    states away from the singular set, for every formulation that takes the body."""
+    if name == "reduced" and not symmetric:
+        pytest.skip("the reduced formulation needs a symmetric body")
+    key = (name, symmetric, ("gravity",) if symmetric else ("gravity_general",))
+    desc = catalogue.describe(key)
+    kernel = ModelKernel.load(desc, solvers.DEFAULT_METHOD)
+    for _ in range(20):
+        a, g = RNG.uniform(-np.pi, np.pi, 2)
+        b = RNG.uniform(0.2, np.pi - 0.2)
+        w = RNG.normal(size=3)
+        inputs = np.array([a, b, g, *w, 0.0, 0.0, 0.0, 0.0])
+        p = np.array([{"I1": 1.3, "I2": 1.3 if symmetric else 1.7, "I3": 0.9, "M": 1.0, "g": 9.81,
+                       "l": 0.2, "cx": 0.1, "cy": -0.05, "cz": 0.2}.get(n, 0.0) for n in desc.params])
+        y, p, rc = kernel.init(inputs, p)
+        assert rc == 0
+        out = kernel.outputs_at(np.array([0.0]), y[None, :], p)[:, 0]
+        named = dict(zip(desc.outputs, out))
+        np.testing.assert_allclose([named["alpha"], named["beta"], named["gamma"]], [a, b, g],
+                                   atol=1e-12)
+        np.testing.assert_allclose([named["omega1"], named["omega2"], named["omega3"]], w,
+                                   atol=1e-12)
+        # and the vertical: n = Rᵀẑ = (−sinβ cosγ, sinβ sinγ, cosβ)
+        np.testing.assert_allclose([named["n1"], named["n2"], named["n3"]],
+                                   [-np.sin(b) * np.cos(g), np.sin(b) * np.sin(g), np.cos(b)],
+                                   atol=1e-12)
+
+
+def test_canonical_angles_through_a_pole_passage():
+    """The reduced chart's β changes sign at a pole passage; the output's β stays in [0, π]
+    and α + γ (the combination defined at β = 0) stays continuous."""
+    desc = catalogue.describe(("reduced", True, ("gravity",)))
+    kernel = ModelKernel.load(desc, solvers.DEFAULT_METHOD)
+    t = np.linspace(0.0, 1.0, 5)
+    beta = np.array([0.2, 0.1, -0.05, -0.1, 0.3])
+    y = np.column_stack([np.full(5, 0.3), beta, np.full(5, 1.0), np.zeros(5)])
+    p = np.array([1.0, 0.5, 1.0, 1.0, 1.0, 2.0, 2.0])
+    out = kernel.outputs_at(t, y, p)
+    a, b, g = out[0], out[1], out[2]
+    np.testing.assert_allclose(b, np.abs(beta))
+    np.testing.assert_allclose(a + g, 1.3, atol=1e-15)  # continuous through the passage
+    jumps = np.abs(np.diff(a))
+    np.testing.assert_allclose(jumps, [0.0, np.pi, 0.0, np.pi], atol=1e-15)  # α turns by π
+
+
+# ---------------------------------------------------------------------------------------------
+# registries
+
+
+def _names():
+    return (set(formulations.REGISTRY) | set(effects.REGISTRY) | set(effects.TABLES)
+            | set(solvers.METHODS) | set(solvers.REFERENCE_METHODS))
+
+
+#: The registries themselves, and modules that are data about them.
+REGISTRIES = {"effects.py", "formulations.py", "solvers.py", "tableaux.py", "splitting.py",
+              "models.py", "catalogue.py", "status.py", "measures.py"}
+#: Modules outside the one-way pipeline: the benchmarks compare named contenders, the lecture
+#: and its report quote the notes, tests-only references.
+OUTSIDE = {"bench.py", "bench_contenders.py", "bench_internals.py", "bench_report.py",
+           "bench_targets.py", "lecture.py", "verify.py", "report.py", "exact.py"}
+
+
+def test_no_pipeline_module_names_a_registry_entry_by_string():
+    names = _names()
+    offenders = []
+    for path in sorted((ROOT / "derive").glob("*.py")):
+        if path.name in REGISTRIES | OUTSIDE:
+            continue
+        tree = ast.parse(path.read_text())
+        docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                      if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef, ast.AsyncFunctionDef))
+                      and node.body and isinstance(node.body[0], ast.Expr)
+                      and isinstance(node.body[0].value, ast.Constant)}
+        for node in ast.walk(tree):
+            if (isinstance(node, ast.Constant) and isinstance(node.value, str)
+                    and node.value in names and id(node) not in docstrings):
+                offenders.append(f"{path.name}:{node.lineno}: {node.value!r}")
+    assert not offenders, offenders
+
+
+# ---------------------------------------------------------------------------------------------
+# a toy effect, one entry, end to end
+
+
+def test_a_toy_effect_registered_in_a_test_runs_end_to_end(tmp_path, monkeypatch):
+    """A torsional spring about the vertical through the pivot? No: a uniform magnetic field
+    B along z acting on a body dipole m along axis 3, V = −m B ẑ·(R ê₃) — one registry entry
+    with its table; scene validation, derivation, code generation, compilation and simulation
+    take it with no other edit. It is axisymmetric and conservative, so it behaves like
+    gravity with M g l = −m B: the energy is conserved and matches the same top under gravity."""
+    monkeypatch.setenv("DERIVE_CACHE", str(tmp_path / "cache"))
+    catalogue.clear_memory()
+
+    def V(R, sym):
+        return -sym("m_dip") * sym("B") * R[2, 2]
+
+    table = effects.Table("magnet", "uniform field B along z on a dipole m along body axis 3",
+                          keys=(effects.Key("m", "A m^2", "dipole moment"),
+                                effects.Key("B", "T", "field")))
+    effect = effects.Effect("magnet", "magnet", "dipole m ê₃ in a field B ẑ",
+                            params=(effects.Param("m_dip", (("real", True),)),
+                                    effects.Param("B", (("real", True),))),
+                            values=lambda v: {"m_dip": v["m"], "B": v["B"]},
+                            potential=V, axisymmetric=True)
+    effects.register(effect, table)
+    try:
+        sc = _top()
+        del sc["gravity"]
+        sc["magnet"] = {"m": -2.0, "B": 0.5}  # −m B = 1 = M g l of the gravity top
+        with pytest.raises(derive.SceneError, match="magnet.q: unknown key"):
+            load_scene({**sc, "magnet": {"m": 1.0, "B": 1.0, "q": 0.0}})
+        res = derive.simulate(sc, formulation="euler-poisson")
+        assert res.model == "euler_poisson_sym_magnet"
+        assert np.ptp(res.energy) < 1e-10 * abs(res.energy[0])
+        ref = derive.simulate(_top(), formulation="euler-poisson")
+        np.testing.assert_allclose(res.axis, ref.axis, atol=1e-9)
+        np.testing.assert_allclose(res.energy, ref.energy, atol=1e-9)
+    finally:
+        effects.unregister("magnet")
+        catalogue.clear_memory()
+
+
+# ---------------------------------------------------------------------------------------------
+# one C call: batch = single runs, bit for bit
+
+
+def test_every_output_of_a_batch_equals_the_single_run_bit_for_bit():
+    scenes = []
+    for b0, gd in [(0.3, 6.0), (0.6, 7.0), (1.1, 5.0)]:
+        sc = _top()
+        sc["initial"] = dict(sc["initial"], beta=b0, gamma_dot=gd)
+        scenes.append(sc)
+    batch = derive.simulate_batch(scenes)
+    for sc, res in zip(scenes, batch):
+        single = derive.simulate(sc, formulation=res.formulation)
+        a, b = res.arrays(), single.arrays()
+        assert a.keys() == b.keys()
+        for k in a:
+            np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+
+
+# ---------------------------------------------------------------------------------------------
+# warm path: no SymPy, no matplotlib
+
+
+def _run(code: str, **env) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          cwd=ROOT, env={**os.environ, **env}, timeout=120)
+
+
+def test_import_derive_imports_neither_sympy_nor_matplotlib():
+    r = _run("import sys, derive; print(sorted(m for m in ('sympy', 'matplotlib', 'scipy', 'jinja2')"
+             " if m in sys.modules))")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[]"
+
+
+def test_a_warm_simulation_of_a_shipped_model_does_not_import_sympy():
+    code = ("import sys, derive; derive.simulate('scenes/looping_top.toml'); "
+            "derive.simulate('scenes/tennis_racket.toml'); "
+            "print(sorted(m for m in ('sympy', 'matplotlib', 'jinja2') if m in sys.modules))")
+    _run(code)  # compiles if the cache is cold
+    r = _run(code)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[]"
+
+
+# ---------------------------------------------------------------------------------------------
+# Ctrl-C inside a compiled loop
+
+
+def test_sigint_stops_a_long_compiled_run_within_half_a_second(tmp_path):
+    """rk4 with a small step over a long span runs for minutes in C; SIGINT must stop it
+    promptly: exit 130, one line, no output file."""
+    scene = tmp_path / "long.toml"
+    scene.write_text(
+        "[body]\nI1 = 1.0\nI3 = 0.5\n[gravity]\nM = 1.0\ng = 1.0\nl = 1.0\n"
+        "[initial]\nalpha = 0.0\nbeta = 0.8\ngamma = 0.0\nalpha_dot = -0.4\nbeta_dot = 0.3\n"
+        "gamma_dot = 6.0\n[simulate]\nt_end = 100000.0\nsamples = 11\nmethod = \"rk4\"\n"
+        "h = 1e-4\nmax_steps = 10000000000\n")
+    out = tmp_path / "out.npz"
+    # warm the compile cache first, so the signal lands in the loop
+    subprocess.run([sys.executable, "-m", "derive", "simulate", str(scene), "--max-steps", "10",
+                    "-o", str(tmp_path / "x.npz")], capture_output=True, cwd=ROOT, timeout=120)
+    proc = subprocess.Popen([sys.executable, "-m", "derive", "simulate", str(scene), "-o", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+    time.sleep(3.0)
+    assert proc.poll() is None  # still integrating
+    t0 = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=10)
+    elapsed = time.monotonic() - t0
+    assert proc.returncode == 130
+    assert err.strip().splitlines() == ["error: interrupted"]
+    assert elapsed < 0.5
+    assert not out.exists()
+    assert not [p for p in tmp_path.iterdir() if p.name.startswith(".")]
+
+
+def test_fixed_step_budget_is_refused_up_front_naming_h():
+    sc = _top(simulate={"t_end": 1e6, "samples": 11, "method": "rk4", "h": 1e-9})
+    with pytest.raises(derive.SceneError, match=r"simulate\.h: rk4 with h = 1e-09 s .* takes "
+                                                r"\d{15} steps, more than simulate\.max_steps"):
+        derive.simulate(sc)
+
+
+def test_adaptive_budget_is_a_numerical_failure():
+    with pytest.raises(derive.IntegrationError, match=r"step budget spent \(simulate\.max_steps = 5\)"):
+        derive.simulate(_top(), max_steps=5)
