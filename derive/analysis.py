@@ -260,6 +260,45 @@ def _routh_applies(sc, cls) -> bool:
     return sc.symmetric and _axial(sc) and not cls.dissipative and cls.case in ("euler", "lagrange")
 
 
+@dataclass(frozen=True)
+class _Top:
+    """A symmetric top as the Routh reduction sees it, read off a scene: the symmetry direction
+    u (body axes; ``axis`` 0..2 when it is a body axis), the moments across and along it, the
+    centre of mass at signed distance l along u, p_γ = I_sym ω̃(0)·u, the tilt β₀ of u from the
+    vertical, and the scene's α̇ when its Euler angles are this top's (u = ê₃)."""
+
+    u: tuple
+    axis: int | None
+    I_perp: float
+    I_sym: float
+    l: float
+    p_gamma: float
+    beta0: float
+    alpha_dot: float | None
+
+
+def _top(sc, cls, p) -> _Top:
+    from .rotations import ZYZ
+
+    I = np.array(sc.body.moments)
+    c = np.array([p["cx"], p["cy"], p["cz"]])
+    if cls.extra is not None and cls.extra.name == integrable.SPHERE.name:
+        u, axis = c / np.linalg.norm(c), None  # a sphere: the symmetry axis through r_c
+    else:
+        axis = cls.axes[2]
+        u = np.eye(3)[axis]
+    i = sc.initial
+    n0 = np.array(ZYZ.matrix(i.alpha, i.beta, i.gamma)[2, :], dtype=float).ravel()  # n = Rᵀẑ
+    across = cls.axes[0] if axis is not None else 0
+    L0 = I * np.array(i.omega)
+    if axis == 2:  # the scene's own Euler angles are this top's
+        beta0, alpha_dot = i.beta, i.alpha_dot
+    else:
+        beta0, alpha_dot = float(np.arccos(np.clip(n0 @ u, -1.0, 1.0))), None
+    return _Top(tuple(u), axis, float(I[across]), float(u @ (I * u)), float(c @ u), float(L0 @ u),
+                beta0, alpha_dot)
+
+
 def _equilibria(sc, cls) -> list[Equilibrium]:
     p = integrable.parameters(sc)
     torque = cls.case != "euler" and p["g"] > 0 and p["M"] > 0
@@ -268,11 +307,12 @@ def _equilibria(sc, cls) -> list[Equilibrium]:
     if not torque:
         out = [_free_rotation(sc, k) for k in range(3)]
         if sc.symmetric:
-            out.append(_steady_precession(sc, p, gravity=False))
+            out.append(_steady_precession(sc, p, _top(sc, cls, p), gravity=False))
         return out
-    if cls.case == "lagrange" and _axial(sc):
-        return [_lagrange_vertical(sc, p, "sleeping"), _lagrange_vertical(sc, p, "hanging"),
-                _steady_precession(sc, p, gravity=True)]
+    if cls.case == "lagrange":
+        top = _top(sc, cls, p)
+        return [_lagrange_vertical(sc, p, top, "sleeping"), _lagrange_vertical(sc, p, top, "hanging"),
+                _steady_precession(sc, p, top, gravity=True)]
     return _heavy_vertical(sc, p)
 
 
@@ -318,21 +358,22 @@ def _free_jacobian(I, L) -> np.ndarray:
     return J[:3, :3]
 
 
-def _lagrange_vertical(sc, p, kind: str) -> Equilibrium:
+def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
     """Sleeping (centre of mass above the pivot) or hanging top of the Lagrange case, from the
-    series of V_eff about β = 0 (p_α = p_γ) or β = π (p_α = −p_γ)."""
+    series of V_eff about β = 0 (p_α = p_γ) or β = π (p_α = −p_γ); β is the tilt of the
+    symmetry direction u (body axis 3, or the body's own symmetry axis / r̂_c of a sphere)."""
     sp = _sp()
     from .lagrangian import I1, Mass, g, l, p_gamma
 
     R = _routh()
-    lval = p["cz"]
-    pg = sc.body.I3 * sc.initial.omega[2]
+    lval = top.l
+    pg = top.p_gamma
     # β = 0 puts the centre of mass at height l: above the pivot when l > 0.
     at_zero = (kind == "sleeping") == (lval > 0)
     k2 = R["k2_0"] if at_zero else R["k2_pi"]
-    subs = {I1: sc.body.I1, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg}
+    subs = {I1: top.I_perp, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg}
     k2v = float(k2.subs(subs))
-    scale = pg * pg / (8 * sc.body.I1) + abs(p["M"] * p["g"] * lval) / 2
+    scale = pg * pg / (8 * top.I_perp) + abs(p["M"] * p["g"] * lval) / 2
     s = _sign_tol(k2v, scale)
     stable = None if s == 0 else s > 0
     threshold2 = sp.factor(R["threshold"] ** 2)  # 4 M g l I₁
@@ -348,40 +389,50 @@ def _lagrange_vertical(sc, p, kind: str) -> Equilibrium:
                 "hanging": "always: with the centre of mass below the pivot both terms are >= 0"}
         cond = f"k2 = {sp.sstr(k2)} >= 0  ({note[kind]})"
         tex = rf"k_2 = {_latex(k2)} \ge 0"
-    nz = 1.0 if at_zero else -1.0
-    eig = _eigenvalues(sc, (0.0, 0.0, pg), (0.0, 0.0, nz))
+    u = np.array(top.u)
+    eig = _eigenvalues(sc, tuple(pg * u), tuple(u if at_zero else -u))
     if stable is False and not _grows(eig):
         stable = None
     where = "beta = 0" if at_zero else "beta = pi"
     return Equilibrium(
-        kind, 3, cond, stable, tex,
-        f"spin p_gamma = I3 omega3 = {pg:.6g} about the vertical symmetry axis at {where}, centre "
-        f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot",
+        kind, None if top.axis is None else top.axis + 1, cond, stable, tex,
+        f"spin p_gamma = I_sym omega.u = {pg:.6g} about the vertical symmetry axis at {where}, centre "
+        f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot" + _top_note(top),
         "series of V_eff(beta) about the pole with p_alpha = +-p_gamma: V_eff = V0 + k2 eps^2 + ...; "
         "Euler-Poisson linearisation",
-        {"p_gamma": pg, "threshold": math.sqrt(abs(4 * p["M"] * p["g"] * lval * sc.body.I1)),
+        {"p_gamma": pg, "threshold": math.sqrt(abs(4 * p["M"] * p["g"] * lval * top.I_perp)),
          "k2": k2v},
         list(eig))
 
 
-def _steady_precession(sc, p, gravity: bool) -> Equilibrium:
-    """Steady precession at the scene's tilt β₀ (symmetric body, centre of mass on axis 3)."""
+def _top_note(top: _Top) -> str:
+    if top.axis == 2:
+        return ""
+    where = (f"body axis {top.axis + 1}" if top.axis is not None
+             else "the direction of r_c (a spherical body)")
+    return (f" (the symmetry axis is {where}: I1 -> {top.I_perp:g}, I3 -> {top.I_sym:g}, "
+            f"l -> {top.l:g} in the formulas)")
+
+
+def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
+    """Steady precession at the scene's tilt β₀ of the symmetry axis (Lagrange top, free
+    symmetric body)."""
     sp = _sp()
     from .lagrangian import I1, Mass, g, l, p_alpha, p_gamma
     from .rotations import alpha_d, beta
 
     R = _routh()
-    b0 = sc.initial.beta
-    pg = sc.body.I3 * sc.initial.omega[2]
-    lval = p["cz"] if gravity else 0.0
+    b0 = top.beta0
+    pg = top.p_gamma
+    lval = top.l if gravity else 0.0
+    axis = None if top.axis is None else top.axis + 1
     quad, disc = R["quadratic"], R["discriminant"]
     if not gravity:  # the free symmetric body: M g l = 0
         quad, disc = quad.subs(l, 0), sp.factor(disc.subs(l, 0))
-    subs = {I1: sc.body.I1, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg, beta: b0}
+    subs = {I1: top.I_perp, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg, beta: b0}
     values = {"beta0": b0, "p_gamma": pg}
     if abs(math.sin(b0)) < 1e-9:
-        return Equilibrium("steady-precession", 3, "I1*cos(beta0)*alpha_dot**2 - p_gamma*alpha_dot "
-                           "+ M*g*l = 0", None, _latex(sp.Eq(quad, 0)),
+        return Equilibrium("steady-precession", axis, f"{sp.sstr(quad)} = 0", None, _latex(sp.Eq(quad, 0)),
                            "the scene's tilt is at a pole: no finite-tilt precession to evaluate",
                            "dV_eff/dbeta = 0", values, [])
     qv = sp.Poly(quad.subs(subs), alpha_d)
@@ -391,14 +442,14 @@ def _steady_precession(sc, p, gravity: bool) -> Equilibrium:
     roots = [float(r.real) for r in np.roots(coeffs) if abs(r.imag) <= 1e-12 * max(1, abs(r))] \
         if dv >= -integrable.TOLERANCE * scale else []
     values.update(discriminant=dv, alpha_dot_roots=sorted(roots),
-                  alpha_dot_scene=sc.initial.alpha_dot)
+                  alpha_dot_scene=top.alpha_dot)
     eig = []
     curv = []
     for ad in roots:
         pa = float(R["p_alpha_of_rate"].subs({**subs, alpha_d: ad}))
         c2 = float(R["d2V"].subs({**subs, p_alpha: pa}))
         curv.append(c2)
-        eig += list(np.roots([1.0, 0.0, c2 / sc.body.I1]))
+        eig += list(np.roots([1.0, 0.0, c2 / top.I_perp]))
     values["V_eff_second_derivative"] = curv
     if not roots:
         stable = None
@@ -417,7 +468,7 @@ def _steady_precession(sc, p, gravity: bool) -> Equilibrium:
                else "no real root: no steady precession at this tilt"))
     if not gravity:
         desc += " (free symmetric body: every motion is a regular precession)"
-    return Equilibrium("steady-precession", 3, text, stable, tex, desc,
+    return Equilibrium("steady-precession", axis, text, stable, tex, desc + _top_note(top),
                        "dV_eff/dbeta = 0 with p_alpha = I1 alpha_dot sin^2 beta + p_gamma cos beta; "
                        "eigenvalues of the linearised beta equation", values, eig)
 

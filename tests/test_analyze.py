@@ -313,3 +313,20 @@ def test_equatorial_com_at_any_azimuth_same_verdicts():
         np.testing.assert_allclose(sorted(np.round(x.eigenvalues, 9), key=lambda z: (z.real, z.imag)),
                                    sorted(np.round(y.eigenvalues, 9), key=lambda z: (z.real, z.imag)),
                                    atol=1e-8)
+
+
+@pytest.mark.parametrize("w, stable", [(200.0, True), (100.0, False)])
+def test_lecture_top_about_body_axis_1(w, stable):
+    """The lecture's top with its axes relabelled (symmetry axis = body axis 1): the same k2,
+    threshold and verdict as the original, and the simulation agrees."""
+    d = body((4.0e-5, 1.8e-4, 1.8e-4), (w, 0.0, 0.0), com=[0.04, 0.0, 0.0], M=0.1,
+             t_end=2.0, formulation="euler-poisson")
+    u = (math.cos(1e-3), math.sin(1e-3), 0.0)  # body axis 1 tilted 1e-3 rad from the vertical
+    d["initial"]["beta"], d["initial"]["gamma"] = _orientation_of(u)
+    e = find(d, "sleeping", 1)
+    ref = find(lecture_top(gamma_dot=w), "sleeping", 3)
+    assert e.stable is ref.stable is stable
+    assert e.values["k2"] == pytest.approx(ref.values["k2"], rel=1e-12)
+    assert e.values["threshold"] == pytest.approx(ref.values["threshold"], rel=1e-12)
+    angle = _max_angle_from(d, (1.0, 0.0, 0.0))
+    assert (angle < 2e-3) if stable else (angle > 0.1)
