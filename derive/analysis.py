@@ -89,7 +89,7 @@ class Analysis:
         """(title, [Markdown lines]) of the document (derived on demand: JSON does not need them)."""
         sc, cls = self.scene, self.classification
         return [_section_body(sc, cls), _section_energies(sc), _section_equations(sc),
-                _section_cyclic(sc), _section_integrals(sc, cls, self.integrals, self.proofs),
+                _section_cyclic(sc, cls), _section_integrals(sc, cls, self.integrals, self.proofs),
                 _section_equilibria(self.equilibria)]
 
     def to_json(self) -> dict:
@@ -632,7 +632,7 @@ def _section_equations(sc):
     return "Equations of motion", lines
 
 
-def _section_cyclic(sc):
+def _section_cyclic(sc, cls):
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     cyc = system.cyclic
     lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + ".", ""]
@@ -657,6 +657,10 @@ def _section_cyclic(sc):
         lines += ["", "No Routh reduction to one degree of freedom: γ is not cyclic (the body is "
                       "not symmetric about axis 3 with the centre of mass on it); only α is "
                       "eliminated, by p_α = L·n." if ANGLES[0] in cyc else "No cyclic coordinate."]
+        if cls.case == "lagrange" and not cls.dissipative:
+            lines.append("In Euler angles about the body's own symmetry axis (the Lagrange case "
+                         "here, see the integrals) both α and γ are cyclic: the equilibria below use "
+                         "that reduction, the moments relabelled.")
     return "Cyclic coordinates, momenta, Routh reduction", lines
 
 
