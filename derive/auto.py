@@ -6,7 +6,8 @@
    the models already generated or cached; a model that would have to be derived first is tried
    after those, in registry order (choosing must not cost a derivation).
 3. A formulation with a singular set (sin β = 0) is taken only when the derived β range keeps
-   clear of it: the reduced model's compiled ``checks`` evaluate the Routh polynomial
+   clear of it: the model's compiled ``checks`` (run by the simulate driver itself, before it
+   integrates: ``<name>_simulate_checked_<method>``) evaluate the Routh polynomial
    f(u) = u̇² (u = cos β) at u = ±u_c, u_c = √(1 − s²), s = ``POLE_CLEARANCE`` (see
    ``models.routh_checks``); the motion stays in |sin β| ≥ s exactly when |u₀| < u_c and
    f(±u_c) < 0. The reduced formulation may also meet a pole where its equations stay regular:
@@ -32,35 +33,47 @@ def _known_cost(key) -> float | None:
     return None if desc is None else desc.cost
 
 
-def _routh(scene, name: str, method: str):
-    """(f(u_c), f(−u_c), u₀, p_α − p_γ, p_α + p_γ) from the compiled ``checks`` of the model
-    that would run (the same library: choosing compiles nothing extra), or None when the scene
-    has no Routh reduction or the initial state is outside the formulation's init map."""
-    effects = fx.lookup(scene.effects)
-    if not scene.symmetric or any(not (e.conservative and e.axisymmetric) for e in effects):
-        return None
+def _has_routh(scene) -> bool:
+    """A symmetric body under axisymmetric conservative effects: p_α, p_γ are conserved and the
+    Routh reduction bounds β."""
+    return scene.symmetric and all(e.conservative and e.axisymmetric
+                                   for e in fx.lookup(scene.effects))
+
+
+def pole_mode(name: str) -> int:
+    """The C drivers' ``pole_check`` for a formulation: 0 none, 1 clear of both poles, 2 clear
+    or meeting a pole only where the reduced equations are regular."""
+    f = REGISTRY[name]
+    return 0 if not f.singular else 2 if f.needs_routh else 1
+
+
+def plan(scene) -> list[tuple[str, int]]:
+    """The formulations to try, in order, each with the pole check its run must pass: the
+    singular ones only with a Routh reduction, up to the first one without a singular set."""
+    if scene.simulate.formulation != "auto":
+        return [(scene.simulate.formulation, 0)]
+    out = []
+    routh = _has_routh(scene)
+    for name in candidates(scene):
+        mode = pole_mode(name)
+        if mode and not routh:
+            continue
+        out.append((name, mode))
+        if not mode:
+            break
+    return out
+
+
+def _clear(scene, name: str, method: str) -> bool:
+    """The pole check of ``plan`` run on its own (compiled: the model's ``<name>_pole_clear``),
+    for a caller that does not go through the simulate driver."""
     from .integrate import ModelKernel
     from .simulation import inputs_of, params_of
 
-    desc = catalogue.describe((name, True, scene.effects))
-    if not desc.checks:
-        return None
+    desc = catalogue.describe((name, scene.symmetric, scene.effects))
     kernel = ModelKernel.load(desc, method)
     y, p, rc = kernel.init(inputs_of(scene), params_of(scene, desc))
-    if rc:
-        return None
-    return tuple(kernel.checks(y, p))
-
-
-def _clear(routh, formulation: str) -> bool:
-    """Does the motion keep clear of the poles (or meet one where the formulation is regular)?"""
-    f_top, f_bottom, u0, diff, total = routh
-    uc = math.sqrt(1.0 - POLE_CLEARANCE**2)
-    top = u0 < uc and f_top < 0.0
-    bottom = u0 > -uc and f_bottom < 0.0
-    if REGISTRY[formulation].needs_routh:
-        return (top or diff == 0.0) and (bottom or total == 0.0)
-    return top and bottom
+    return rc == 0 and kernel.pole_clear(y, p, pole_mode(name))
 
 
 def candidates(scene) -> list[str]:
@@ -89,13 +102,10 @@ def formulation(scene, method: str | None = None) -> str:
     method = method or choose_method(scene)
     if method not in _C_METHODS:  # a SciPy reference method: the checks come from dop853's library
         method = DEFAULT_METHOD
-    for name in candidates(scene):
-        if REGISTRY[name].singular:
-            routh = _routh(scene, name, method)
-            if routh is None or not _clear(routh, name):
-                continue
-        return name
-    raise AssertionError("no formulation applies")  # euler-poisson applies to every scene
+    for name, mode in plan(scene):
+        if not mode or _clear(scene, name, method):
+            return name
+    raise AssertionError("no formulation applies")  # one without a singular set applies to all
 
 
 def model_key(scene, method: str | None = None) -> tuple:

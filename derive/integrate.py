@@ -369,7 +369,9 @@ class ModelKernel:
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         if method is not None:
             extra = [_C_TYPES[ty] for ty, _ in METHODS[method].params]
-            self._sim = self._fn(f"{p}_simulate_{method}", [vp, vp, vp, cl, *extra, vp, vp, vp])
+            self._sim = self._fn(f"{p}_simulate_checked_{method}",
+                                 [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+            self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
             self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
                                        [cl, vp, vp, vp, cl, *extra, vp, vp, vp])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
@@ -433,16 +435,22 @@ class ModelKernel:
             raise KeyboardInterrupt
         return rc
 
-    def simulate(self, inputs, p, t, args):
+    def pole_clear(self, y, p, mode: int) -> bool:
+        """The model's compiled Routh check (see ``<name>_pole_clear``)."""
+        return bool(self._pole_clear(_ptr(np.ascontiguousarray(y, dtype=np.float64)),
+                                     _ptr(np.ascontiguousarray(p, dtype=np.float64)), mode))
+
+    def simulate(self, inputs, p, t, args, pole_check: int = 0):
         """One trajectory: returns (out (NOBS, n), y (n, NY), p (derived parameters written),
-        stats record). ``args``: the driver's arguments (``driver_args``)."""
+        stats record). ``args``: the driver's arguments (``driver_args``); ``pole_check`` 1 or 2
+        refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``."""
         n = t.shape[0]
         out = np.empty((self.nout, n))
         y = np.empty((n, self.ny))
         p = np.array(p, dtype=np.float64)
         st = np.zeros(1, dtype=STATS_DTYPE)
-        self._call(self._sim, _ptr(inputs), _ptr(p), _ptr(t), n, *args, _ptr(y), _ptr(out),
-                   _ptr(st))
+        self._call(self._sim, _ptr(inputs), _ptr(p), _ptr(t), n, *args, pole_check, _ptr(y),
+                   _ptr(out), _ptr(st))
         return out, y, p, st[0]
 
     def simulate_batch(self, inputs, ps, t, args):

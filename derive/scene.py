@@ -237,8 +237,13 @@ class Scene:
     def effects(self) -> tuple[str, ...]:
         """The registry effects the scene's tables select, in registry order, e.g.
         ("gravity", "damping") or ("gravity_general",)."""
+        cached = self.__dict__.get("_effects")
+        if cached is not None and cached[0] == effects.VERSION[0]:
+            return cached[1]
         chosen = {t.effect for t in self.tables.values()}
-        return tuple(name for name in effects.REGISTRY if name in chosen)
+        names = tuple(name for name in effects.REGISTRY if name in chosen)
+        object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
+        return names
 
     def param_values(self) -> dict[str, float]:
         """Every model parameter the scene fixes: the moments and each effect's parameters."""
@@ -254,8 +259,12 @@ class Scene:
 
     @property
     def t_out(self) -> np.ndarray:
-        """Output times (s): ``samples`` points from 0 to t_end inclusive."""
-        return np.linspace(0.0, self.simulate.t_end, self.simulate.samples)
+        """Output times (s): ``samples`` points from 0 to t_end inclusive (what np.linspace
+        gives, bit for bit: k·(t_end/(samples − 1)), the last one t_end exactly)."""
+        n, t_end = self.simulate.samples, self.simulate.t_end
+        t = np.arange(n, dtype=np.float64) * (t_end / (n - 1))
+        t[-1] = t_end
+        return t
 
     def to_dict(self) -> dict:
         """The scene as a TOML-shaped dict; ``load_scene(scene.to_dict()) == scene``."""
@@ -385,6 +394,8 @@ def _show(value) -> str:
 
 def _real(value) -> float | None:
     """value as a finite float, or None. Booleans are not numbers; ints are welcome."""
+    if type(value) is float:  # the common case first: no ABC checks on the warm path
+        return value if math.isfinite(value) else None
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
     try:
@@ -424,23 +435,22 @@ class _Validator:
 
     def table(self, data: Mapping, name: str) -> Mapping:
         """The table ``name`` after checking it has only known keys."""
+        keys = _table_keys()[name]
         for key in data:
-            if key not in _table_keys()[name]:
-                self.fail(f"{name}.{key}",
-                          "unknown key (" + _unknown(key, _table_keys()[name], name) + ")")
+            if key not in keys:
+                self.fail(f"{name}.{key}", "unknown key (" + _unknown(key, keys, name) + ")")
         return data
 
     def number(self, data, table, key, test=None, must="a finite number", default=...):
         """A finite real (int or float, not bool) satisfying ``test``, or ``default`` if absent
         (``...`` = required)."""
-        dotted = f"{table}.{key}"
         if key not in data:
             if default is ...:
-                self.fail(dotted, "missing required key")
+                self.fail(f"{table}.{key}", "missing required key")
             return default
         x = _real(data[key])
         if x is None or (test is not None and not test(x)):
-            self.fail(dotted, f"must be {must}, got {_show(data[key])}")
+            self.fail(f"{table}.{key}", f"must be {must}, got {_show(data[key])}")
         return x
 
     def choice(self, data, table, key, choices):

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from .render import c_double, render
+from .formulations import POLE_CLEARANCE
 from .status import c_table
 from .tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
 
@@ -211,6 +212,7 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
         "lincomb": lincomb,
         "newton_halvings": NEWTON_HALVINGS,
         "has_angles": has_angles,
+        "pole_clearance": POLE_CLEARANCE,
     }
     ctx["any_implicit"] = any(m["driver"] == "implicit" for m in ctx["methods"])
     return {

@@ -17,6 +17,7 @@ class Status(enum.IntEnum):
     NEWTON = 5
     BAD_ARGS = 6
     INTERRUPTED = 7
+    RANGE = 8
 
     @property
     def c_name(self) -> str:
@@ -36,6 +37,7 @@ _TEXT = {
     Status.NEWTON: "Newton iteration failed to converge",
     Status.BAD_ARGS: "bad arguments",
     Status.INTERRUPTED: "interrupted",
+    Status.RANGE: "the motion comes closer to a pole than the formulation allows",
 }
 
 

@@ -140,6 +140,31 @@ static void derive_euler_poisson_sym_gravity_damping_canonical_angles(long n, do
     }
 }
 
+/* Does the motion from state y keep clear of the poles, by the model's Routh check (euler_poisson_sym_gravity_damping_checks:
+ * f(u_c), f(-u_c), u0, p_alpha - p_gamma, p_alpha + p_gamma; see models.routh_checks)?
+ * mode 1: |sin beta| >= 0.001 all along; mode 2: that, or a pole is met only where the
+ * reduced equations are regular (p_alpha = p_gamma at beta = 0, p_alpha = -p_gamma at beta = pi).
+ * A model without the check (no Routh reduction) answers 0. */
+int euler_poisson_sym_gravity_damping_pole_clear(const double *y, const double *p, int mode)
+{
+#if defined(euler_poisson_sym_gravity_damping_NCHECKS) && euler_poisson_sym_gravity_damping_NCHECKS == 5
+    const double uc = sqrt(1.0 - 0.001 * 0.001);
+    double c[5];
+    int top, bottom;
+    euler_poisson_sym_gravity_damping_checks(y, p, c);
+    top = c[2] < uc && c[0] < 0.0;
+    bottom = c[2] > -uc && c[1] < 0.0;
+    if (mode == 2)
+        return (top || c[3] == 0.0) && (bottom || c[4] == 0.0);
+    return top && bottom;
+#else
+    (void)y;
+    (void)p;
+    (void)mode;
+    return 0;
+#endif
+}
+
 /* The output arrays at every sample: out[j*n_out + k] = output j (euler_poisson_sym_gravity_damping_observables) at
  * t_out[k] from the state y[k*NY ..], the angles made canonical. */
 int euler_poisson_sym_gravity_damping_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
@@ -609,6 +634,12 @@ int euler_poisson_sym_gravity_damping_solve_batch_dop853(long n_batch, const dou
 int euler_poisson_sym_gravity_damping_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
 {
+    return euler_poisson_sym_gravity_damping_simulate_checked_dop853(in, p, t_out, n_out, rtol, atol, h0, max_steps, 0, y_work, out, st);
+}
+
+int euler_poisson_sym_gravity_damping_simulate_checked_dop853(const double *in, double *p, const double *t_out,
+        long n_out, double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
+{
     derive_stats local;
     int rc;
     if (!st)
@@ -620,6 +651,10 @@ int euler_poisson_sym_gravity_damping_simulate_dop853(const double *in, double *
     if (euler_poisson_sym_gravity_damping_init(in, p, y_work)) {
         derive_euler_poisson_sym_gravity_damping_stats_init(st);
         return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_damping_first_nonfinite(y_work, euler_poisson_sym_gravity_damping_NY));
+    }
+    if (pole_check && !euler_poisson_sym_gravity_damping_pole_clear(y_work, p, pole_check)) {
+        derive_euler_poisson_sym_gravity_damping_stats_init(st);
+        return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_damping_solve_dop853(y_work, p, t_out, n_out, rtol, atol, h0, max_steps, y_work, st);
     if (rc == DERIVE_OK)
@@ -763,6 +798,12 @@ int euler_poisson_sym_gravity_damping_solve_batch_rk4(long n_batch, const double
 int euler_poisson_sym_gravity_damping_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
+    return euler_poisson_sym_gravity_damping_simulate_checked_rk4(in, p, t_out, n_out, h, 0, y_work, out, st);
+}
+
+int euler_poisson_sym_gravity_damping_simulate_checked_rk4(const double *in, double *p, const double *t_out,
+        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
+{
     derive_stats local;
     int rc;
     if (!st)
@@ -774,6 +815,10 @@ int euler_poisson_sym_gravity_damping_simulate_rk4(const double *in, double *p, 
     if (euler_poisson_sym_gravity_damping_init(in, p, y_work)) {
         derive_euler_poisson_sym_gravity_damping_stats_init(st);
         return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_damping_first_nonfinite(y_work, euler_poisson_sym_gravity_damping_NY));
+    }
+    if (pole_check && !euler_poisson_sym_gravity_damping_pole_clear(y_work, p, pole_check)) {
+        derive_euler_poisson_sym_gravity_damping_stats_init(st);
+        return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_damping_solve_rk4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -1060,6 +1105,12 @@ int euler_poisson_sym_gravity_damping_solve_batch_gauss4(long n_batch, const dou
 int euler_poisson_sym_gravity_damping_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
+    return euler_poisson_sym_gravity_damping_simulate_checked_gauss4(in, p, t_out, n_out, h, newton_tol, newton_maxiter, 0, y_work, out, st);
+}
+
+int euler_poisson_sym_gravity_damping_simulate_checked_gauss4(const double *in, double *p, const double *t_out,
+        long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st)
+{
     derive_stats local;
     int rc;
     if (!st)
@@ -1071,6 +1122,10 @@ int euler_poisson_sym_gravity_damping_simulate_gauss4(const double *in, double *
     if (euler_poisson_sym_gravity_damping_init(in, p, y_work)) {
         derive_euler_poisson_sym_gravity_damping_stats_init(st);
         return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_damping_first_nonfinite(y_work, euler_poisson_sym_gravity_damping_NY));
+    }
+    if (pole_check && !euler_poisson_sym_gravity_damping_pole_clear(y_work, p, pole_check)) {
+        derive_euler_poisson_sym_gravity_damping_stats_init(st);
+        return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_damping_solve_gauss4(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1375,6 +1430,12 @@ int euler_poisson_sym_gravity_damping_solve_batch_gauss6(long n_batch, const dou
 int euler_poisson_sym_gravity_damping_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
 {
+    return euler_poisson_sym_gravity_damping_simulate_checked_gauss6(in, p, t_out, n_out, h, newton_tol, newton_maxiter, 0, y_work, out, st);
+}
+
+int euler_poisson_sym_gravity_damping_simulate_checked_gauss6(const double *in, double *p, const double *t_out,
+        long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st)
+{
     derive_stats local;
     int rc;
     if (!st)
@@ -1386,6 +1447,10 @@ int euler_poisson_sym_gravity_damping_simulate_gauss6(const double *in, double *
     if (euler_poisson_sym_gravity_damping_init(in, p, y_work)) {
         derive_euler_poisson_sym_gravity_damping_stats_init(st);
         return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_damping_first_nonfinite(y_work, euler_poisson_sym_gravity_damping_NY));
+    }
+    if (pole_check && !euler_poisson_sym_gravity_damping_pole_clear(y_work, p, pole_check)) {
+        derive_euler_poisson_sym_gravity_damping_stats_init(st);
+        return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_damping_solve_gauss6(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1593,6 +1658,12 @@ int euler_poisson_sym_gravity_damping_solve_batch_dop853_fixed(long n_batch, con
 int euler_poisson_sym_gravity_damping_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
+    return euler_poisson_sym_gravity_damping_simulate_checked_dop853_fixed(in, p, t_out, n_out, h, 0, y_work, out, st);
+}
+
+int euler_poisson_sym_gravity_damping_simulate_checked_dop853_fixed(const double *in, double *p, const double *t_out,
+        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
+{
     derive_stats local;
     int rc;
     if (!st)
@@ -1604,6 +1675,10 @@ int euler_poisson_sym_gravity_damping_simulate_dop853_fixed(const double *in, do
     if (euler_poisson_sym_gravity_damping_init(in, p, y_work)) {
         derive_euler_poisson_sym_gravity_damping_stats_init(st);
         return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_damping_first_nonfinite(y_work, euler_poisson_sym_gravity_damping_NY));
+    }
+    if (pole_check && !euler_poisson_sym_gravity_damping_pole_clear(y_work, p, pole_check)) {
+        derive_euler_poisson_sym_gravity_damping_stats_init(st);
+        return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_damping_solve_dop853_fixed(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)

@@ -46,6 +46,7 @@ typedef struct {
 #define DERIVE_NEWTON          5  /* Newton iteration failed to converge */
 #define DERIVE_BAD_ARGS        6  /* bad arguments */
 #define DERIVE_INTERRUPTED     7  /* interrupted */
+#define DERIVE_RANGE           8  /* the motion comes closer to a pole than the formulation allows */
 
 #endif /* DERIVE_SOLVERS_COMMON */
 
@@ -64,6 +65,9 @@ void rigid_body_interrupt_request(void);
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int rigid_body_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
+/* 1 if the motion from y keeps clear of the poles by the model's Routh check (mode 1), or meets
+ * one only where the reduced equations are regular (mode 2); 0 otherwise or without a check. */
+int rigid_body_pole_clear(const double *y, const double *p, int mode);
 
 /* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853).
  *   rtol, atol  error tolerances (>= 0, not both 0): local error per step below
@@ -80,6 +84,10 @@ int rigid_body_solve_batch_dop853(long n_batch, const double *y0s, const double 
  * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
 int rigid_body_simulate_dop853(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st);
+/* The same, refusing (DERIVE_RANGE, nothing integrated) a start from which the motion does not
+ * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
+int rigid_body_simulate_checked_dop853(const double *in, double *p, const double *t_out,
+        long n_out, double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
 int rigid_body_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st);
@@ -96,6 +104,10 @@ int rigid_body_solve_batch_rk4(long n_batch, const double *y0s, const double *ps
  * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
 int rigid_body_simulate_rk4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st);
+/* The same, refusing (DERIVE_RANGE, nothing integrated) a start from which the motion does not
+ * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
+int rigid_body_simulate_checked_rk4(const double *in, double *p, const double *t_out,
+        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
 int rigid_body_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st);
@@ -116,6 +128,10 @@ int rigid_body_solve_batch_gauss4(long n_batch, const double *y0s, const double 
  * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
 int rigid_body_simulate_gauss4(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+/* The same, refusing (DERIVE_RANGE, nothing integrated) a start from which the motion does not
+ * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
+int rigid_body_simulate_checked_gauss4(const double *in, double *p, const double *t_out,
+        long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
 int rigid_body_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
@@ -136,6 +152,10 @@ int rigid_body_solve_batch_gauss6(long n_batch, const double *y0s, const double 
  * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
 int rigid_body_simulate_gauss6(const double *in, double *p, const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+/* The same, refusing (DERIVE_RANGE, nothing integrated) a start from which the motion does not
+ * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
+int rigid_body_simulate_checked_gauss6(const double *in, double *p, const double *t_out,
+        long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
 int rigid_body_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
@@ -152,6 +172,10 @@ int rigid_body_solve_batch_dop853_fixed(long n_batch, const double *y0s, const d
  * the solve into y_work (n_out*NY), then every output into out (NOBS*n_out, output-major). */
 int rigid_body_simulate_dop853_fixed(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st);
+/* The same, refusing (DERIVE_RANGE, nothing integrated) a start from which the motion does not
+ * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
+int rigid_body_simulate_checked_dop853_fixed(const double *in, double *p, const double *t_out,
+        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
 int rigid_body_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st);
