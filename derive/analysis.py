@@ -143,8 +143,9 @@ def _latex(expr) -> str:
 @functools.lru_cache(maxsize=None)
 def _ep_model(symmetric: bool, effects: tuple):
     from . import models
+    from .formulations import UNIVERSAL
 
-    return models.build("euler-poisson", symmetric, effects)
+    return models.build(UNIVERSAL, symmetric, effects)
 
 
 @functools.lru_cache(maxsize=None)

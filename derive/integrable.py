@@ -351,8 +351,10 @@ class Proof:
 @functools.lru_cache(maxsize=None)
 def _general_model():
     from . import models
+    from .effects import GENERAL_GRAVITY
+    from .formulations import UNIVERSAL
 
-    return models.build("euler-poisson", False, ("gravity_general",))
+    return models.build(UNIVERSAL, False, (GENERAL_GRAVITY,))
 
 
 def _symbols():

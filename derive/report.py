@@ -179,9 +179,16 @@ def derivation() -> str:
            "Every expression below is computed by `derive` (sympy) and printed, not typed. Conventions:",
            "z-y-z Euler angles of the notes unless stated; body components carry a tilde; rates are",
            "`alpha_d` = $\\dot\\alpha$ etc.", ""]
-    for section in (_rotations_section, _lagrangian_section, _euler_section, _inertia_section):
+    for section in (_rotations_section, _lagrangian_section, _euler_section, _inertia_section,
+                    _integrable_section):
         out += section()
     return "\n".join(out)
+
+
+def _integrable_section() -> list[str]:
+    from . import integrable
+
+    return ["## 5. Integrable cases and their integrals", ""] + integrable.markdown() + [""]
 
 
 @functools.cache
