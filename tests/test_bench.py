@@ -47,6 +47,18 @@ def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_leve
     assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / bench.cost_at(curves[0].points, 1e-9)[0])
 
 
+def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
+    from derive.bench_targets import _match
+
+    solve = lambda r: (3.0 * r, 1)  # noqa: E731 - error proportional to rtol
+    m = _match(solve, 1e-9)  # 1e-10 is already good enough: loosen while it stays so
+    assert m["reached"] and m["rtol"] == 2e-10
+    m = _match(solve, 1e-11)  # too loose: tighten until it is good enough
+    assert m["reached"] and m["rtol"] == 1e-10 / 2**5
+    m = _match(lambda r: (1.0, 1), 1e-11)  # never: reported as not reached, at the tightest rtol
+    assert not m["reached"] and m["rtol"] == bench.MIN_RTOL
+
+
 # ---------------------------------------------------------------------------------------------
 # the baselines compute derive's equations (else a speed ratio against them means nothing)
 
