@@ -38,7 +38,9 @@ from .errors import IntegrationError
 #: benchmarks/ of the source checkout (the bench runs from a checkout: it needs these sources).
 BENCH_SOURCES = Path(__file__).resolve().parent.parent / "benchmarks"
 
-FORMULATIONS = ("euler-angles", "quaternion")
+#: The baseline formulations: state size and constants (in the factories' argument order).
+STATE_SIZE = {"euler-angles": 6, "quaternion": 7}
+CONST_NAMES = {"euler-angles": ("I1", "I3", "mgl"), "quaternion": ("I1", "I2", "I3", "mgl")}
 SCIPY = {"scipy-dop853": "DOP853", "scipy-lsoda": "LSODA", "scipy-radau": "Radau"}
 CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
                                              "nonlinear_solver_iteration": "functional"}),
@@ -89,7 +91,7 @@ class Problem:
 
     @property
     def const_names(self) -> tuple[str, ...]:
-        return ("I1", "I3", "mgl") if self.formulation == "euler-angles" else ("I1", "I2", "I3", "mgl")
+        return CONST_NAMES[self.formulation]
 
     @property
     def const_values(self) -> list[float]:
@@ -187,12 +189,9 @@ def _casadi_ode(formulation: str):
     """(x, p, ode): the baseline equations as CasADi SX, the constants symbolic."""
     import casadi as ca
 
-    dummy = problem({"body": {"I1": 1.0, "I3": 1.0}, "initial": {"alpha": 0, "beta": 1, "gamma": 0,
-                                                                  "alpha_dot": 0},
-                     "simulate": {"t_end": 1.0, "samples": 2}}, formulation)
-    ny, nc = len(dummy.y0), len(dummy.const_names)
-    x, p = ca.SX.sym("x", ny), ca.SX.sym("p", nc)
-    sym = Problem("", formulation, dict(zip(dummy.const_names, [p[i] for i in range(nc)])), [], dummy.t)
+    ny, names = STATE_SIZE[formulation], CONST_NAMES[formulation]
+    x, p = ca.SX.sym("x", ny), ca.SX.sym("p", len(names))
+    sym = Problem("", formulation, {k: p[i] for i, k in enumerate(names)}, [], np.zeros(2))
     rhs, _ = sym.functions(sin=ca.sin, cos=ca.cos, values=list)
     return x, p, ca.vertcat(*rhs(0.0, [x[i] for i in range(ny)]))
 
@@ -230,10 +229,9 @@ def _pydy_rhs(formulation: str):
 
     if formulation == "euler-angles":
         coords, speeds = sp.symbols("alpha beta gamma"), sp.symbols("alpha_d beta_d gamma_d")
-        names = ("I1", "I3", "mgl")
     else:
         coords, speeds = sp.symbols("q0:4"), sp.symbols("w1:4")
-        names = ("I1", "I2", "I3", "mgl")
+    names = CONST_NAMES[formulation]
     consts = sp.symbols(" ".join(names))
     sym = Problem("", formulation, dict(zip(names, consts)), [], np.zeros(2))
     rhs, _ = sym.functions(sin=sp.sin, cos=sp.cos, values=list)

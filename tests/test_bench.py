@@ -192,3 +192,40 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     data = json.loads((tmp_path / "results.json").read_text())
     assert data["settings"]["name"] == "smoke" and data["machine"]["versions"]["scipy"]
     assert (tmp_path / "points.csv").read_text().count("\n") > 4
+
+
+# ---------------------------------------------------------------------------------------------
+# the peers run the same equations (skipped where not installed: `pip install -e '.[peers]'`)
+
+
+def _peer_states(formulation):
+    return list(_states(formulation, 5, np.random.default_rng(RNG_SEED + 2)))
+
+
+@pytest.mark.parametrize("formulation", ["euler-angles", "quaternion"])
+def test_casadi_equations_are_the_baselines(formulation):
+    ca = pytest.importorskip("casadi")
+    x, p, ode = bc._casadi_ode(formulation)
+    f = ca.Function("f", [x, p], [ode])
+    consts = [MOMENTS["I1"], MOMENTS["I3"], 0.7] if formulation == "euler-angles" else \
+        [MOMENTS["I1"], MOMENTS["I2"], MOMENTS["I3"], 0.7]
+    rhs = bc.baselines().euler_top_rhs(*consts) if formulation == "euler-angles" else bc.baselines().quaternion_rhs(*consts)
+    for y in _peer_states(formulation):
+        assert np.allclose(np.array(f(y, consts)).ravel(), rhs(0.0, y), rtol=1e-13, atol=1e-13)
+    data = bc.scene_data(bench.SCENES / "looping_top.toml", t_end=0.05, samples=11)
+    prob = bc.problem(data, formulation)
+    Y, nfev = bc.solve_casadi(prob, "casadi-cvodes-adams", 1e-10, 1e-12)
+    assert nfev > 0 and bench.axis_error(prob.axis(Y), bench.exact_axis(data, prob.t)) < 1e-7
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("formulation", ["euler-angles", "quaternion"])
+def test_pydy_equations_are_the_baselines(formulation):
+    pytest.importorskip("pydy")
+    pytest.importorskip("Cython")
+    f = bc._pydy_rhs(formulation)
+    consts = [MOMENTS["I1"], MOMENTS["I3"], 0.7] if formulation == "euler-angles" else \
+        [MOMENTS["I1"], MOMENTS["I2"], MOMENTS["I3"], 0.7]
+    rhs = bc.baselines().euler_top_rhs(*consts) if formulation == "euler-angles" else bc.baselines().quaternion_rhs(*consts)
+    for y in _peer_states(formulation):
+        assert np.allclose(f(y, 0.0, np.array(consts)), rhs(0.0, y), rtol=1e-13, atol=1e-13)
