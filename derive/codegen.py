@@ -79,8 +79,11 @@ def _generate_everything() -> tuple:
     """All files, computed once per process (the derivations are pure)."""
     from . import report
 
+    from . import docs
+
     names = list(shipped_keys())
     files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=names)}
+    files.update(docs.documents())
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
         # Two workers derive the kernels (split so the costly Lagrangian models are shared out)
         # while this process writes the reports.

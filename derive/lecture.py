@@ -1,7 +1,8 @@
 """The lecture's formulas, typed by hand as written on the slides: the thing being *checked*.
 
-Source: PHY 711 Lecture 26 (Fall 2022, Fetter & Walecka ch. 5), a machine transcript of slides
-(`shared/notes/lecture26-rigid-body.md`). Every formula on the slides is one `Claim` below, with
+Source: PHY 711 Lecture 26 (Fall 2022, Fetter & Walecka ch. 5), a machine transcript of the
+slides (the course's notes file; the tests quote it when it is at hand). Every formula on the
+slides is one `Claim` below, with
 
 * ``section`` and ``quote`` — where it is: the slide title and a short verbatim piece of the line
   (both are searched for in the notes file by the tests, so they cannot drift);

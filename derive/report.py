@@ -39,7 +39,7 @@ def lecture_verification() -> str:
     out = [
         "# Lecture 26 (rigid-body rotation): verification of the slides",
         "",
-        "Every formula on the slides of `shared/notes/lecture26-rigid-body.md` (a machine transcript) is",
+        "Every formula on the slides of PHY 711 Lecture 26 (a machine transcript of the notes) is",
         "typed as written in `derive/lecture.py` and compared with the result derived independently by",
         "`derive.rotations`, `derive.inertia`, `derive.lagrangian` and `derive.stability`",
         "(see `derivation.md`). The difference claim − derived is tested symbolically first (as built,",

@@ -172,6 +172,11 @@ def _result(desc, out, y, t, scene, method, nfev, p) -> Result:
     res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
                  model=desc.name, state=y, scene=scene, **views)
     res.integrals = _integrals(scene, res, p)
+    for name, values in res.integrals.items():
+        if not np.isfinite(values).all():
+            j = int(np.argwhere(~np.isfinite(values))[0][0])
+            raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "
+                                   f"(overflow: the scene's numbers are out of range)")
     return res
 
 

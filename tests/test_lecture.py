@@ -14,7 +14,12 @@ import derive
 from derive import lecture, report, verify
 from derive.lecture import Correction
 
-NOTES = Path(derive.__file__).resolve().parents[2] / "shared/notes/lecture26-rigid-body.md"
+# The course's notes file is not part of the repository: the quotes are checked against it when
+# it is at hand ($DERIVE_NOTES, else the course folder next to the checkout, as on the
+# developers' machines and CI). Without it these tests skip, saying why — except under CI
+# (CI=true), where a missing file fails the run, so the check can never silently stop.
+NOTES = Path(os.environ.get("DERIVE_NOTES") or
+             Path(derive.__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md")
 CLAIMS = {c.id: c for c in lecture.CLAIMS}
 
 # The verdict of every claim on the slides, pinned. `derive verify` reads lecture.EXPECTED;
@@ -75,7 +80,11 @@ def test_no_mismatches_reported_for_the_cli(results):
 @pytest.fixture(scope="module")
 def notes_text():
     if not NOTES.is_file():
-        pytest.skip(f"lecture notes not found at {NOTES} (the shared/ folder beside the repository)")
+        why = (f"the lecture notes file is not at {NOTES}: the quotes of derive/lecture.py are "
+               f"checked against it when it is at hand (set DERIVE_NOTES to its path)")
+        if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
+            pytest.fail("CI must have the lecture notes: " + why)
+        pytest.skip(why)
     return NOTES.read_text(encoding="utf-8")
 
 

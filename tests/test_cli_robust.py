@@ -1,0 +1,290 @@
+"""The command line never shows a traceback: Ctrl-C (exit 130), the entry's validation gaps, NumPy
+warnings, and a last-resort handler for the unforeseen (exit 1)."""
+import contextlib
+import io
+import math
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+import derive
+from derive import SceneError, cli
+from derive.render import ROOT
+
+TOP = {
+    "body": {"I1": 1.0, "I3": 0.5},
+    "gravity": {"M": 1.0, "g": 9.81, "l": 0.1},
+    "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0,
+                "alpha_dot": 0.0, "beta_dot": 0.0, "gamma_dot": 10.0},
+    "simulate": {"t_end": 0.05, "samples": 3},
+}
+
+
+def toml(scene: dict) -> str:
+    """A scene dict as TOML (numbers, strings and tables are all these tests need)."""
+    def value(v):
+        if isinstance(v, str):
+            return '"' + v + '"'
+        if isinstance(v, float) and not math.isfinite(v):
+            return "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf")
+        return repr(v)
+
+    lines = []
+    for table, keys in scene.items():
+        lines.append(f"[{table}]")
+        lines += [f"{k} = {value(v)}" for k, v in keys.items()]
+        lines.append("")
+    return "\n".join(lines)
+
+
+def with_(base=TOP, **tables):
+    """``base`` with some keys replaced: ``with_(simulate={"method": "rk4"})``."""
+    out = {t: dict(keys) for t, keys in base.items()}
+    for t, keys in tables.items():
+        out.setdefault(t, {}).update(keys)
+    return out
+
+
+def run(*argv):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = cli.main([str(a) for a in argv])
+    return rc, out.getvalue(), err.getvalue()
+
+
+def errors(stderr):
+    return [ln for ln in stderr.splitlines() if not ln.startswith("note: cached library")]
+
+
+def assert_contract(tmp_path, scene_file, rc, out, err, npz):
+    """Exit 0, 2 or 3; on failure one `error:` line and no file; no traceback, no leftovers."""
+    assert "Traceback" not in err + out and "Warning" not in err
+    assert rc in (0, 2, 3), (rc, err)
+    if rc == 0:
+        with np.load(npz) as data:
+            for name in data.files:
+                if data[name].dtype.kind == "f":
+                    assert np.all(np.isfinite(data[name])), name
+        assert sorted(p.name for p in tmp_path.iterdir()) == sorted([scene_file.name, npz.name])
+    else:
+        lines = errors(err)
+        assert len(lines) == 1 and lines[0].startswith("error: "), err
+        assert sorted(p.name for p in tmp_path.iterdir()) == [scene_file.name]
+
+
+def simulate_file(tmp_path, text, *flags):
+    scene = tmp_path / "scene.toml"
+    scene.write_bytes(text if isinstance(text, bytes) else text.encode())
+    npz = tmp_path / "out.npz"
+    rc, out, err = run("simulate", scene, "-o", npz, *flags)
+    assert_contract(tmp_path, scene, rc, out, err, npz)
+    return rc, errors(err)
+
+
+# --- the Python API's entry -------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("bad", [None, [TOP], b"scenes/looping_top.toml", 1.5, 3, object()])
+def test_api_rejects_what_is_not_a_scene(bad):
+    with pytest.raises(SceneError) as err:
+        derive.simulate(bad)
+    assert "\n" not in str(err.value) and type(bad).__name__ in str(err.value)
+
+
+# --- encodings ------------------------------------------------------------------------------
+
+
+def test_utf8_byte_order_mark_is_accepted(tmp_path):
+    rc, _ = simulate_file(tmp_path, b"\xef\xbb\xbf" + toml(TOP).encode())
+    assert rc == 0
+
+
+@pytest.mark.parametrize("codec, name", [("utf-16", "UTF-16"), ("utf-32", "UTF-32")])
+def test_utf16_and_utf32_are_named(tmp_path, codec, name):
+    rc, lines = simulate_file(tmp_path, toml(TOP).encode(codec))
+    assert rc == 2 and lines == [f"error: {tmp_path / 'scene.toml'}: file: is {name} text; "
+                                 "scene files are UTF-8"]
+
+
+@pytest.mark.parametrize("path, what", [("/dev/null", "not a regular file"),
+                                        ("/dev/zero", "not a regular file")])
+def test_special_files_are_refused_without_reading(path, what):
+    rc, out, err = run("simulate", path)
+    assert rc == 2 and errors(err) == [f"error: {path}: file: {what}"]
+
+
+def test_deeply_nested_toml_is_a_scene_error(tmp_path):
+    rc, lines = simulate_file(tmp_path, "x = " + "[" * 20000 + "]" * 20000 + "\n")
+    assert rc == 2 and "nested too deeply" in lines[0]
+
+
+def test_huge_file_is_refused(tmp_path):
+    rc, lines = simulate_file(tmp_path, "# " + "x" * (2 << 20) + "\n" + toml(TOP))
+    assert rc == 2 and "not a scene file" in lines[0]
+
+
+# --- numbers --------------------------------------------------------------------------------
+
+
+def test_reduced_with_zero_damping_has_no_traceback(tmp_path):
+    """[damping] c = 0.0 with formulation = "reduced" ended in a ValueError traceback."""
+    scene = with_(damping={"c": 0.0}, simulate={"formulation": "reduced"})
+    rc, lines = simulate_file(tmp_path, toml(scene))
+    assert rc == 0 or (rc == 2 and "simulate.formulation" in lines[0]), lines
+
+
+@pytest.mark.parametrize("tables", [
+    {"gravity": {"l": 1e200}},
+    {"gravity": {"M": 1e300, "l": 1e300}},
+    {"body": {"I1": 1e-300, "I3": 1e-300}},
+    {"body": {"I1": 1e300, "I3": 1e300}},
+    {"initial": {"gamma_dot": 1e200}},
+    {"initial": {"alpha": 1e300, "gamma": -1e300}},
+    {"simulate": {"t_end": 1e300}},
+    {"simulate": {"t_end": 1e300, "method": "rk4"}},
+    {"simulate": {"t_end": 1e-300}},
+    {"simulate": {"atol": 1e-300}},
+])
+def test_absurd_but_finite_numbers_give_no_warning(tmp_path, tables):
+    """No RuntimeWarning reaches the user: exit 0 with finite outputs, or one error line."""
+    simulate_file(tmp_path, toml(with_(**tables)))
+
+
+def test_warnings_are_silenced_but_errors_still_reported(tmp_path, monkeypatch):
+    from derive import simulation
+
+    def noisy(*a, **k):
+        np.float64(1e308) * 10  # RuntimeWarning: overflow
+        import warnings
+        warnings.warn("something odd", UserWarning)
+        raise derive.IntegrationError("t = 0.5: non-finite state")
+
+    monkeypatch.setattr(simulation, "simulate", noisy)
+    rc, lines = simulate_file(tmp_path, toml(TOP))
+    assert rc == 3 and lines == ["error: t = 0.5: non-finite state"]
+
+
+# --- the last-resort handler and Ctrl-C in-process ------------------------------------------
+
+
+def test_an_unforeseen_exception_is_one_line_exit_1(tmp_path, monkeypatch):
+    from derive import simulation
+
+    def bug(*a, **k):
+        return {}["missing\nkey"]
+
+    monkeypatch.setattr(simulation, "simulate", bug)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(toml(TOP))
+    rc, out, err = run("simulate", scene, "-o", tmp_path / "out.npz")
+    assert rc == 1 and err == "error: internal error: KeyError: 'missing\\nkey'\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["scene.toml"]
+
+
+def test_keyboard_interrupt_in_process_is_exit_130(tmp_path, monkeypatch):
+    from derive import simulation
+
+    def interrupted(*a, **k):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(simulation, "simulate", interrupted)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(toml(TOP))
+    rc, out, err = run("simulate", scene, "-o", tmp_path / "out.npz")
+    assert (rc, out, err) == (130, "", "error: interrupted\n")
+
+
+def test_keyboard_interrupt_while_writing_removes_the_temporaries(tmp_path, monkeypatch):
+    from derive import plots
+
+    def interrupted(res, fh, *a, **k):
+        fh.write(b"\x89PNG half")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(plots, "plot_result", interrupted)
+    scene = tmp_path / "scene.toml"
+    scene.write_text(toml(TOP))
+    old = tmp_path / "out.npz"
+    old.write_bytes(b"old")
+    rc, out, err = run("simulate", scene, "-o", old, "--plot", tmp_path / "out.png")
+    assert (rc, err) == (130, "error: interrupted\n")
+    assert old.read_bytes() == b"old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.npz", "scene.toml"]
+
+
+# --- real processes and real signals --------------------------------------------------------
+
+
+def start(*argv):
+    """`python -m derive ...` with SIGINT delivered as in a terminal (a test runner started in
+    the background may have it ignored, and the child would inherit that)."""
+    return subprocess.Popen([sys.executable, "-m", "derive", *map(str, argv)], cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+
+
+def interrupt_after(proc, seconds):
+    """SIGINT after ``seconds``; returns (exit status, stdout, stderr, seconds to exit)."""
+    time.sleep(seconds)
+    assert proc.poll() is None, "finished before it could be interrupted"
+    proc.send_signal(signal.SIGINT)
+    t0 = time.monotonic()
+    try:
+        out, err = proc.communicate(timeout=20)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.communicate()
+        pytest.fail("still running 20 s after SIGINT")
+    return proc.returncode, out, err, time.monotonic() - t0
+
+
+def test_sigint_during_a_python_phase(tmp_path):
+    """SciPy's solve_ivp is a Python loop: Ctrl-C there is exit 130 with one line, no file."""
+    scene = tmp_path / "long.toml"
+    scene.write_text(toml(with_(simulate={"t_end": 1e5, "samples": 11, "method": "scipy-rk45",
+                                          "max_steps": 10**11})))
+    out = tmp_path / "out.npz"
+    rc, stdout, stderr, took = interrupt_after(start("simulate", scene, "-o", out), 3.0)
+    assert (rc, stdout, stderr) == (130, "", "error: interrupted\n")
+    assert took < 2.0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
+
+
+def _kernels_poll_interrupts() -> bool:
+    return "interrupt" in (ROOT / "templates" / "c" / "solvers.c.j2").read_text()
+
+
+@pytest.mark.skipif(not _kernels_poll_interrupts(), reason="solver kernels poll no interrupt flag yet")
+@pytest.mark.parametrize("method, extra", [("rk4", {"h": 1e-6}),
+                                           ("dop853", {"rtol": 1e-13, "t_end": 1e10})])
+def test_sigint_inside_a_compiled_loop(tmp_path, method, extra):
+    """A long run in a compiled loop stops within 0.5 s of Ctrl-C (measured from the signal to
+    the process's exit, the interpreter's shutdown included)."""
+    scene = tmp_path / "long.toml"
+    scene.write_text(toml(with_(simulate={"t_end": 1e5, "samples": 11, "method": method,
+                                          "max_steps": 10**12, **extra})))
+    out = tmp_path / "out.npz"
+    proc = start("simulate", scene, "-o", out)
+    rc, stdout, stderr, took = interrupt_after(proc, 4.0)
+    assert (rc, stdout, stderr) == (130, "", "error: interrupted\n")
+    assert took < 0.5
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
+
+
+@pytest.mark.parametrize("argv, code", [
+    (["simulate", "scenes/does-not-exist.toml"], 2),
+    (["simulate", "scenes/looping_top.toml", "--rtol", "nan"], 2),
+    (["simulate", "scenes/looping_top.toml", "-o", "/proc/x.npz"], 2),
+    (["simulate", "--no-such-flag"], 2),
+    (["cache", "--bogus"], 2),
+])
+def test_real_process_failures_are_one_line(argv, code):
+    r = subprocess.run([sys.executable, "-m", "derive", *argv], cwd=ROOT, capture_output=True,
+                       text=True, timeout=120)
+    lines = errors(r.stderr)
+    assert r.returncode == code and len(lines) == 1 and lines[0].startswith("error: "), r.stderr
+    assert "Traceback" not in r.stderr
