@@ -445,13 +445,18 @@ class ModelKernel:
         stats record). ``args``: the driver's arguments (``driver_args``); ``pole_check`` 1 or 2
         refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``."""
         n = t.shape[0]
-        out = np.empty((self.nout, n))
-        y = np.empty((n, self.ny))
-        p = np.array(p, dtype=np.float64)
+        # One allocation for the outputs, the states and the parameters (pointers by offset).
+        size_out, size_y = self.nout * n, n * self.ny
+        buf = np.empty(size_out + size_y + self.np)
+        base = _ptr(buf)
+        out = buf[:size_out].reshape(self.nout, n)
+        y = buf[size_out:size_out + size_y].reshape(n, self.ny)
+        pp = buf[size_out + size_y:]
+        pp[:] = p
         st = np.zeros(1, dtype=STATS_DTYPE)
-        self._call(self._sim, _ptr(inputs), _ptr(p), _ptr(t), n, *args, pole_check, _ptr(y),
-                   _ptr(out), _ptr(st))
-        return out, y, p, st[0]
+        self._call(self._sim, _ptr(inputs), base + 8 * (size_out + size_y), _ptr(t), n, *args,
+                   pole_check, base + 8 * size_out, base, _ptr(st))
+        return out, y, pp, st[0]
 
     def simulate_batch(self, inputs, ps, t, args):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,

@@ -569,7 +569,9 @@ class _Validator:
             # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
             ad, bd, gd = (self.number(t, "initial", k, must="a finite number (rad/s)", default=0.0)
                           for k in _RATES)
-            omega = tuple(float(w) for w in body_omega(beta, gamma, ad, bd, gd))
+            # math, not NumPy, for these scalars (the same libm values, a tenth of the cost)
+            sb, sg, cg = math.sin(beta), math.sin(gamma), math.cos(gamma)
+            omega = (-ad * sb * cg + bd * sg, ad * sb * sg + bd * cg, ad * math.cos(beta) + gd)
             return Initial(alpha, beta, gamma, ad, bd, gd, omega)
         if "omega" not in t:
             self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")

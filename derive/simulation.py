@@ -158,11 +158,20 @@ def _explain(desc, stats, max_steps) -> str:
     return status_message(stats, desc.states, max_steps)
 
 
-def _result(desc, out, y, t, scene, method, nfev, p) -> Result:
-    views, k = {}, 0
+def _output_slices() -> list:
+    k, slices = 0, []
     for name, width in OUTPUTS:
-        views[name] = out[k] if width == 1 else out[k:k + width].T
+        slices.append((name, k if width == 1 else slice(k, k + width), width > 1))
         k += width
+    return slices
+
+
+_SLICES = _output_slices()
+_EPS = float(np.finfo(float).eps)
+
+
+def _result(desc, out, y, t, scene, method, nfev, p) -> Result:
+    views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     if not np.isfinite(out).all():  # one check; find where only when something is wrong
         for name, _ in OUTPUTS:
             bad = ~np.isfinite(views[name])
@@ -187,7 +196,7 @@ def _integrals(scene: Scene, res: Result, p) -> dict:
 
 def _integrals_of(scene: Scene):
     # The case depends on the body and the effects' numbers alone: classified once per body.
-    key = (scene.body, tuple(sorted((k, tuple(v.items())) for k, v in scene.tables.items())))
+    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()))
     found = _INTEGRALS.get(key)
     if found is None:
         from .integrable import integrals_for
@@ -205,8 +214,8 @@ def _check_pole(desc, t, beta, rtol):
     if not REGISTRY[desc.formulation].pole_loss:
         return
     s = np.abs(np.sin(beta))
-    k = int(np.argmin(s))
-    if s[k] ** 2 < np.finfo(float).eps / rtol:
+    k = int(s.argmin())
+    if s[k] ** 2 < _EPS / rtol:
         raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
                                f"(|sin beta| = {s[k]:.3g}); use formulation = \"quaternion\" or \"auto\"")
 
