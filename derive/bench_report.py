@@ -243,9 +243,42 @@ def drift_section(results: dict) -> list[str]:
     return L
 
 
+def summary(results: dict) -> str:
+    """The short version for the README's "Measured" section (``summary.md``): the machine, the
+    targets and each contender's best against derive's best per scene and error level."""
+    m, cfg = results["machine"], results["settings"]
+    la = m["load_average"] or [float("nan")]
+    cmd = "make bench" if cfg["name"] == "full" else f"derive bench --{cfg['name']}"
+    L = [f"From one `{cmd}` run ({results['elapsed']:.0f} s; {m['cpu']}, {m['cores']} cores, load average "
+         f"{la[0]:.2f} at the start; commit {m['commit']}; versions in the full report).", "",
+         "| target (issue 8) | goal | measured | |", "|---|---|---|---|"]
+    for what, goal, value, ok in T.summary(results["targets"]):
+        cell = "—" if value is None else (f"{value:.3g} s" if "[s]" in what else f"{value:.3g}×")
+        L.append(f"| {what} | {goal} | {cell} | {_verdict(ok)} |")
+    c = results["c_loop"][-1]
+    L += ["", f"Generated C `heavy_top_rhs` {c['generated_ns']:.1f} ns/call against the same equations typed "
+          f"by hand {c['handwritten_ns']:.1f} ns/call ({c['ratio']:.2f}×, `{c['flags']}`).", "",
+          "Work–precision: each contender's best time to reach an error level (max axis error against the "
+          "exact solution, same scenes, same measure) divided by derive's best (`derive.simulate`, per-call "
+          "overhead included). SciPy: `solve_ivp` DOP853 / LSODA / Radau (analytic Jacobian) on a hand-written "
+          "plain-Python rhs."
+          + (" CasADi: cvodes (Adams, BDF) / idas on the same equations; PyDy: Cython rhs + `odeint`."
+             if len(results["families"]) > 1 else "")
+          + " \\* = one side's cheapest run was already below the level (time is an upper bound); > = the "
+          "contender never reached it; ours n/a = derive did not reach it.", ""]
+    levels = " | ".join(f"{lv:.0e}" for lv in ERROR_LEVELS)
+    L += [f"| scene | contender | {levels} |", "|" + "---|" * (2 + len(ERROR_LEVELS))]
+    for wp in results["work_precision"]:
+        for f in results["families"]:
+            L.append(f"| {wp['scene']} | {FAMILY_NAMES[f]} | " + " | ".join(_ratio_cell(r) for r in wp["ratios"][f]) + " |")
+    L.append("")
+    return "\n".join(L)
+
+
 def write_report(results: dict, out: Path) -> str:
     L = header(results) + targets_section(results) + kernel_section(results) + wp_section(results) \
         + drift_section(results)
     text = "\n".join(L)
     (Path(out) / "report.md").write_text(text)
+    (Path(out) / "summary.md").write_text(summary(results))
     return text
