@@ -192,6 +192,8 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     data = json.loads((tmp_path / "results.json").read_text())
     assert data["settings"]["name"] == "smoke" and data["machine"]["versions"]["scipy"]
     assert (tmp_path / "points.csv").read_text().count("\n") > 4
+    summary = (tmp_path / "summary.md").read_text()
+    assert "target (issue 8)" in summary and "| looping_top | SciPy" in summary
 
 
 # ---------------------------------------------------------------------------------------------
