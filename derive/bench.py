@@ -1,9 +1,9 @@
 """Benchmarks (`derive bench`): what the generated code costs, and what it buys, against the
 strongest baselines a user could pick instead.
 
-Five parts, written to ``out/`` as ``report.md`` (`derive.bench_report`), one work–precision
-plot per scene (``wp_<scene>.png``), every run as ``points.csv`` and everything as
-``results.json``:
+Four parts, written to ``out/`` as ``report.md`` and its short version ``summary.md`` (the
+README's "Measured" section; both by `derive.bench_report`), one work–precision plot per scene
+(``wp_<scene>.png``), every run as ``points.csv`` and everything as ``results.json``:
 
 1. **Kernel speed.** The committed ``generated/c/heavy_top.c`` against
    ``benchmarks/handwritten_heavy_top.c`` (the same equations typed from the textbook), each in

@@ -26,7 +26,6 @@ part that fails is reported as such, with why, and the rest of the bench goes on
 from __future__ import annotations
 
 import json
-import math
 import os
 import statistics
 import subprocess
