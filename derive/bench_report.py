@@ -187,6 +187,12 @@ def wp_section(results: dict) -> list[str]:
          "contender's best / derive's best.", "",
          "\\* = the cheapest run of at least one side was already below the level (its time is an upper bound); "
          "> = the contender did not reach the level (ratio against its slowest run); n/a = no run reached it.", ""]
+    fc = (results.get("targets") or {}).get("fixed_cost") or {}
+    if "ours" in fc:
+        L += [f"derive's times include its fixed cost per `simulate` call, ≈ {_t(fc['ours'])} (a call on the "
+              "reference scene with t_end = 1e-3); the rest is the C solve. Its one-off costs (derivation, code "
+              "generation, compilation) are in the targets section; the contenders' one-off costs are excluded "
+              "alike.", ""]
     levels = " | ".join(f"{lv:.0e}" for lv in ERROR_LEVELS)
     tables = [("ratios", "scipy", "SciPy's best / derive's best (any formulation, any method):"),
               ("ratios_auto", "scipy", "SciPy's best / derive in the formulation `auto` picks (what "
