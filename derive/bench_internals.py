@@ -7,6 +7,8 @@ small, and each caller degrades to "unavailable (<why>)" in the report if one br
 
 * :func:`kernel_case` — the compiled kernel of a scene with its initial state and parameters,
   to time the C solve alone (the "solve" part of a `simulate` call) and the raw C batch loop;
+* :func:`own_batch_call` — the one C call ``simulate_batch`` makes, inputs prepared: its cost
+  without Python;
 * :func:`heavy_top_expressions` — the SymPy right-hand side of the heavy top, for the
   ``sympy.lambdify`` comparison;
 * :data:`DERIVE_SCRIPT` — a fresh process that times the SymPy derivation and the code
@@ -53,6 +55,26 @@ def batch_inputs(scenes, formulation: str):
     cases = [kernel_case(s, formulation) for s in scenes]
     c = cases[0]
     return (c.kernel, np.array([k.y0 for k in cases]), np.array([k.p for k in cases]), c.t, c.rtol, c.atol)
+
+
+def own_batch_call(scenes):
+    """A callable making the one C call ``simulate_batch`` makes for ``scenes`` (state maps,
+    integration and outputs of every scene), its inputs prepared beforehand: what
+    ``simulate_batch`` costs without its Python."""
+    from . import auto, catalogue
+    from . import simulation as sim
+    from .integrate import ModelKernel
+    from .scene import load_scene
+
+    scs = [load_scene(s) for s in scenes]
+    desc = catalogue.describe(auto.batch_key(scs))
+    method = sim.choose_method(scs[0])
+    kernel = ModelKernel.load(desc, method)
+    args = sim._settings(scs[0], method, kernel)
+    inputs = np.array([sim.inputs_of(sc) for sc in scs])
+    ps = np.array([sim.params_of(sc, desc) for sc in scs])
+    t = scs[0].t_out
+    return lambda: kernel.simulate_batch(inputs, ps, t, args)
 
 
 def heavy_top_expressions():

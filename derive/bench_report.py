@@ -121,6 +121,9 @@ def targets_section(results: dict) -> list[str]:
     if "time" in ba:
         raw = (f"; the raw C batch loop (`Kernel.solve_batch` on prepared arrays) {_t(ba['raw'])}: "
                f"**{ba['vs_raw']:.0%}** of its throughput" if "raw" in ba else f"; raw C loop: {ba.get('raw_error')}")
+        if "own_call" in ba:
+            raw += (f" (its own C call, state maps and outputs included, inputs prepared: {_t(ba['own_call'])}, "
+                    f"so {ba['own_call'] / ba['time']:.0%} of `simulate_batch`'s time is in C)")
         L.append(f"- `simulate_batch` of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}], "
                  f"{ba['formulation']}): {_t(ba['time'])} ({_t(ba['per_scene'])} per scene){raw}. SciPy DOP853 "
                  f"plain-Python at rtol {ba['scipy_rtol']:.3g} (the rtol that matched our error on the reference "

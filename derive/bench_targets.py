@@ -267,8 +267,17 @@ def batch(cfg, scipy_rtol: float | None) -> dict:
         out.update(raw=t_raw, vs_raw=t_raw / t_batch)
     except Exception as exc:  # noqa: BLE001
         out["raw_error"] = f"{type(exc).__name__}: {exc}"
+    try:  # informational: simulate_batch's own C call (outputs included) without its Python
+        from . import bench_internals as bi
+
+        own = bi.own_batch_call(scenes)
+        own()
+        out["own_call"] = min(B.timed(own, 1)[0], B.timed(own, 1)[0])
+    except Exception as exc:  # noqa: BLE001
+        out["own_call_error"] = f"{type(exc).__name__}: {exc}"
     r = scipy_rtol or scenes[0]["simulate"]["rtol"]
     times = []
+    bc.solve_scipy(bc.problem(scenes[0], "euler-angles"), "scipy-dop853", 1e-6, 1e-8)  # imports, untimed
     for d in scenes[:cfg.batch_scipy_n]:
         prob = bc.problem(d, "euler-angles")
         setup = bc.scipy_setup(prob, "scipy-dop853")
