@@ -16,8 +16,9 @@ README's "Measured" section; both by `derive.bench_report`), one work–precisio
    each of derive's times split into derivation, code generation, compilation, per-call
    overhead and the solve.
 3. **Work–precision** per scene: ours through ``derive.simulate`` (dop853 over rtol, rk4 /
-   gauss4 / gauss6 over h, in every formulation that can run the scene); SciPy's DOP853, LSODA
-   and Radau (the last two with the analytic Jacobian) on the hand-written plain-Python rhs of
+   gauss4 / gauss6 over h, in every formulation that can run the scene); SciPy's ``solve_ivp``
+   DOP853, LSODA and Radau, and ``odeint`` (LSODA with its loop in Fortran; the LSODAs and Radau
+   with the analytic Jacobian) on the hand-written plain-Python rhs of
    ``benchmarks/scipy_baselines.py`` in the formulation(s) most favourable to it; and the peers
    when installed (CasADi cvodes Adams/BDF and idas, PyDy Cython + odeint) on the same
    equations (`derive.bench_contenders`). Error = max over the output times of |ê₃ − ê₃,ref|,

@@ -12,8 +12,9 @@ right-hand-side evaluations; a failure raises :class:`~derive.errors.Integration
 wall time of that call is what the bench records (building an integrator or compiling a
 right-hand side is a separate, one-off cost, reported apart as ``setup``).
 
-* SciPy: ``solve_ivp`` with the plain-Python rhs (closure over the constants, ``math``, a list
-  returned); Radau and LSODA also get the plain-Python analytic Jacobian.
+* SciPy: ``solve_ivp`` (DOP853, LSODA, Radau) and ``odeint`` with the plain-Python rhs (closure
+  over the constants, ``math``, a list returned); Radau and LSODA (both drivers) also get the
+  plain-Python analytic Jacobian.
 * CasADi: the same equations built as SX expressions (``sin``/``cos`` of CasADi), the constants
   as symbolic parameters, ``integrator('F', 'cvodes'|'idas', ...)`` with the output grid;
   cvodes in Adams (functional iteration) and BDF mode, idas (BDF).
@@ -41,7 +42,9 @@ BENCH_SOURCES = Path(__file__).resolve().parent.parent / "benchmarks"
 #: The baseline formulations: state size and constants (in the factories' argument order).
 STATE_SIZE = {"euler-angles": 6, "quaternion": 7}
 CONST_NAMES = {"euler-angles": ("I1", "I3", "mgl"), "quaternion": ("I1", "I2", "I3", "mgl")}
-SCIPY = {"scipy-dop853": "DOP853", "scipy-lsoda": "LSODA", "scipy-radau": "Radau"}
+#: SciPy's methods: ``solve_ivp``'s DOP853, LSODA and Radau, and ``odeint`` (LSODA's Fortran
+#: driver, whose loop is not Python: the cheapest way SciPy offers to call a Python rhs).
+SCIPY = {"scipy-dop853": "DOP853", "scipy-lsoda": "LSODA", "scipy-radau": "Radau", "scipy-odeint": "odeint"}
 CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
                                              "nonlinear_solver_iteration": "functional"}),
           "casadi-cvodes-bdf": ("cvodes", {}),
@@ -161,16 +164,24 @@ def problem(data: dict, formulation: str, name: str = "") -> Problem:
 
 
 def scipy_setup(prob: Problem, method: str):
-    """The callables solve_ivp gets (built once, outside the timing)."""
+    """The callables SciPy gets (built once, outside the timing)."""
     rhs, jac = prob.functions()
-    return {"fun": rhs, **({"jac": jac} if SCIPY[method] in ("Radau", "LSODA") else {})}
+    return {"fun": rhs, **({"jac": jac} if SCIPY[method] in ("Radau", "LSODA", "odeint") else {})}
 
 
 def solve_scipy(prob: Problem, method: str, rtol: float, atol: float, setup=None):
-    from scipy.integrate import solve_ivp
+    from scipy.integrate import odeint, solve_ivp
 
     kw = setup or scipy_setup(prob, method)
     t = prob.t
+    if SCIPY[method] == "odeint":
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            Y, info = odeint(kw["fun"], prob.y0, t, Dfun=kw["jac"], tfirst=True, rtol=rtol, atol=atol,
+                             mxstep=1_000_000, full_output=True)
+        if info["message"] != "Integration successful.":
+            raise IntegrationError(f"scipy odeint: {info['message']}")
+        return Y, int(info["nfe"][-1])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sol = solve_ivp(kw["fun"], (t[0], t[-1]), prob.y0, method=SCIPY[method], t_eval=t,

@@ -56,7 +56,7 @@ GOALS = {
 
 
 def met(key: str, value) -> bool | None:
-    if value is None or not np.isfinite(value):
+    if key not in GOALS or value is None or not np.isfinite(value):
         return None
     op, goal = GOALS[key]
     return value >= goal if op == "≥" else value <= goal
@@ -137,7 +137,8 @@ def reference_scene(cfg, fams) -> dict:
 
     rows = []
     prob = bc.problem(data, "euler-angles", "reference")
-    contenders = [("scipy", "scipy-dop853", "`solve_ivp` DOP853, hand-written plain-Python rhs (Euler angles)")]
+    contenders = [("scipy", "scipy-dop853", "`solve_ivp` DOP853, hand-written plain-Python rhs (Euler angles)"),
+                  ("scipy", "scipy-odeint", "`odeint` (LSODA, Fortran loop), the same plain-Python rhs + Jacobian")]
     if "casadi" in fams:
         contenders.append(("casadi", "casadi-cvodes-adams", "CasADi cvodes (Adams), same equations as SX"))
     if "pydy" in fams:
@@ -160,6 +161,7 @@ def reference_scene(cfg, fams) -> dict:
         rows.append({"family": fam, "method": method, "label": label, **m, "ratio": m["time"] / t_ours})
     # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
     scipy_rtol = rows[0]["rtol"]
+    odeint = next(r for r in rows if r["method"] == "scipy-odeint")
     t_np, res_np = B.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
                                                    atol=B.ATOL_RATIO * scipy_rtol), 1)
     rows.append({"family": "scipy-numpy", "method": "scipy-dop853",
@@ -168,6 +170,7 @@ def reference_scene(cfg, fams) -> dict:
                  "reached": None, "time": t_np, "ratio": t_np / t_ours, "tried": []})
     return {"scene": data, "ours": ours, "rows": rows,
             "vs_scipy": rows[0]["ratio"] if rows[0]["reached"] else None,
+            "vs_odeint": odeint["ratio"] if odeint["reached"] else None,
             "vs_casadi": next((r["ratio"] for r in rows if r["method"] == "casadi-cvodes-adams" and r["reached"]),
                               None)}
 
@@ -231,7 +234,11 @@ def fixed_cost(cfg) -> dict:
     t_ours = B.per_call(lambda: derive.simulate(data), cfg.fixed_cost_calls)
     t_scipy = B.per_call(lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
                          cfg.fixed_cost_calls)
-    return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy}
+    setup_o = bc.scipy_setup(prob, "scipy-odeint")
+    t_odeint = B.per_call(lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o),
+                          cfg.fixed_cost_calls)
+    return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy, "odeint": t_odeint,
+            "ratio_odeint": t_ours / t_odeint}
 
 
 def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
@@ -247,7 +254,8 @@ def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
     return out
 
 
-def batch(cfg, scipy_rtol: float | None) -> dict:
+def batch(cfg, rtols: dict) -> dict:
+    """``rtols``: SciPy method -> the rtol that matched derive's error on the reference scene."""
     import derive
 
     scenes = batch_scenes(cfg.batch_n, cfg.batch_t_end)
@@ -275,15 +283,16 @@ def batch(cfg, scipy_rtol: float | None) -> dict:
         out["own_call"] = min(B.timed(own, 1)[0], B.timed(own, 1)[0])
     except Exception as exc:  # noqa: BLE001
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
-    r = scipy_rtol or scenes[0]["simulate"]["rtol"]
-    times = []
     bc.solve_scipy(bc.problem(scenes[0], "euler-angles"), "scipy-dop853", 1e-6, 1e-8)  # imports, untimed
-    for d in scenes[:cfg.batch_scipy_n]:
-        prob = bc.problem(d, "euler-angles")
-        setup = bc.scipy_setup(prob, "scipy-dop853")
-        times.append(B.timed(lambda: bc.solve_scipy(prob, "scipy-dop853", r, B.ATOL_RATIO * r, setup), 1)[0])
-    out.update(scipy_rtol=r, scipy_n=len(times), scipy_per_trajectory=statistics.mean(times),
-               vs_scipy=statistics.mean(times) / out["per_scene"])
+    for method, key in (("scipy-dop853", "scipy"), ("scipy-odeint", "odeint")):
+        r = rtols.get(method) or scenes[0]["simulate"]["rtol"]
+        times = []
+        for d in scenes[:cfg.batch_scipy_n]:
+            prob = bc.problem(d, "euler-angles")
+            setup = bc.scipy_setup(prob, method)
+            times.append(B.timed(lambda: bc.solve_scipy(prob, method, r, B.ATOL_RATIO * r, setup), 1)[0])
+        out.update({f"{key}_rtol": r, f"{key}_n": len(times), f"{key}_per_trajectory": statistics.mean(times),
+                    f"vs_{key}": statistics.mean(times) / out["per_scene"]})
     return out
 
 
@@ -366,8 +375,8 @@ def run(cfg, fams) -> dict:
         bar.update()
         out["fixed_cost"] = _guard("fixed cost", fixed_cost, cfg)
         bar.update()
-        scipy_rtol = next((r["rtol"] for r in out["reference"].get("rows", []) if r["family"] == "scipy"), None)
-        out["batch"] = _guard("batch", batch, cfg, scipy_rtol)
+        rtols = {r["method"]: r["rtol"] for r in out["reference"].get("rows", []) if r["family"] == "scipy"}
+        out["batch"] = _guard("batch", batch, cfg, rtols)
         bar.update()
         out["processes"] = _guard("processes", processes, cfg) if cfg.process_repeats else {}
         bar.update()
@@ -381,16 +390,23 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
     ref, fc, ba, pr, la = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch", "processes", "lambdify"))
 
     def g(key):
+        if key not in GOALS:
+            return "(stronger baseline)"
         op, goal = GOALS[key]
         return f"{op} {goal:g}" + ("" if key == "cold_minus_warm" else "×")
 
     rows = [
         ("reference scene: `derive.simulate` vs `solve_ivp` DOP853 plain-Python rhs, equal or smaller error",
          "vs_scipy", ref.get("vs_scipy")),
+        ("reference scene: vs `odeint` (LSODA in Fortran) on the same plain-Python rhs, equal or smaller error",
+         "vs_odeint", ref.get("vs_odeint")),
         ("reference scene: vs CasADi cvodes (Adams), equal or smaller error", "vs_casadi", ref.get("vs_casadi")),
         ("fixed cost of one call (t_end = 1e-3, 2 samples): derive / `solve_ivp`", "fixed_cost", fc.get("ratio")),
+        ("fixed cost of one call: derive / `odeint`", "fixed_cost_odeint", fc.get("ratio_odeint")),
         (f"`simulate_batch` ({ba.get('n', '?')} scenes) throughput / raw C batch loop", "batch_vs_raw", ba.get("vs_raw")),
-        ("`simulate_batch` per trajectory vs SciPy per trajectory", "batch_vs_scipy", ba.get("vs_scipy")),
+        ("`simulate_batch` per trajectory vs SciPy (`solve_ivp` DOP853) per trajectory", "batch_vs_scipy",
+         ba.get("vs_scipy")),
+        ("`simulate_batch` per trajectory vs `odeint` per trajectory", "batch_vs_odeint", ba.get("vs_odeint")),
         ("warm `derive simulate scenes/looping_top.toml -o out.npz` / `python -c \"import numpy\"`", "warm_process",
          pr.get("warm_ratio")),
         ("cold compile (fresh `DERIVE_CACHE`) − warm run [s]", "cold_minus_warm", pr.get("cold_minus_warm")),
