@@ -366,7 +366,7 @@ def numpy_batch(cfg: Settings) -> list[dict]:
     return rows
 
 
-def python_calls(cfg: Settings) -> dict:
+def python_calls(cfg: Settings, fams=("scipy",)) -> dict:
     """µs per single-state call through Python: the hand-written plain-Python rhs, the generated
     NumPy rhs and (through the kernel API) the compiled C rhs by ctypes."""
     mod = generated_numpy()
@@ -383,6 +383,10 @@ def python_calls(cfg: Settings) -> dict:
         out["ctypes_us"] = per_call(lambda: kc.kernel.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6
     except Exception as exc:  # noqa: BLE001 - an internal moved: report, don't fail the bench
         out["ctypes_error"] = f"{type(exc).__name__}: {exc}"
+    if "pydy" in fams:  # PyDy's Cython function as odeint calls it: f(y, t, constants)
+        f = bc._pydy_rhs("euler-angles")
+        consts = np.array([I1, I3, M * g * l])
+        out["pydy_us"] = per_call(lambda: f(y, 0.0, consts), cfg.python_calls) * 1e6
     return out
 
 
@@ -782,7 +786,7 @@ def main(out: Path, quick: bool = False, smoke: bool = False, peers: bool = True
         bar.update()
         results["numpy_batch"] = numpy_batch(cfg)
         bar.update()
-        results["python_calls"] = python_calls(cfg)
+        results["python_calls"] = python_calls(cfg, fams)
         bar.update()
 
     results["targets"] = bench_targets.run(cfg, fams)

@@ -167,7 +167,9 @@ def kernel_section(results: dict) -> list[str]:
     c_ns = results["c_loop"][-1]["generated_ns"]
     ct = f"compiled C through ctypes (`Kernel.rhs`) {pc['ctypes_us']:.2f} µs, " if pc.get("ctypes_us") else ""
     L += ["", f"One state through Python, per call: {ct}the hand-written plain-Python rhs "
-          f"{pc['plain_python_us']:.2f} µs, the generated NumPy rhs {pc['numpy_us']:.2f} µs; the C call itself "
+          f"{pc['plain_python_us']:.2f} µs, the generated NumPy rhs {pc['numpy_us']:.2f} µs"
+          + (f", PyDy's Cython-generated rhs {pc['pydy_us']:.2f} µs (its argument handling)" if pc.get("pydy_us") else "")
+          + f"; the C call itself "
           f"{c_ns:.0f} ns — why derive's integration loops run in C.", ""]
     return L
 
