@@ -272,17 +272,36 @@ def _panel_balance(ax, res):
     _plain(ax, "x")
 
 
+def _conserved(res) -> list[tuple[str, np.ndarray]]:
+    """What the undamped motion conserves besides the energy: p_α always (the vertical is a
+    symmetry axis of gravity); p_γ when the body is symmetric and every effect axisymmetric
+    (not for a centre of mass off axis 3: the Kovalevskaya top); the integrable case's integral."""
+    from . import effects
+
+    out = [("p_α", np.asarray(res.p_alpha, dtype=float))]
+    sc = res.scene
+    axisymmetric = sc is None or all(e.axisymmetric for e in effects.lookup(sc.effects))
+    if _is_symmetric(res) and axisymmetric:
+        out.append(("p_γ", np.asarray(res.p_gamma, dtype=float)))
+    for name, values in getattr(res, "integrals", {}).items():
+        values = np.asarray(values, dtype=float)
+        if len(out) > 1 and np.array_equal(values, out[1][1]):
+            continue  # the Lagrange top's integral is p_γ itself: not shown twice
+        out.append((name, values))
+    return out
+
+
 def _panel_momenta(ax, res):
-    devs, lins = [], []
-    for name in ("p_alpha", "p_gamma"):
-        rel, how, lin = _deviation(np.asarray(getattr(res, name), dtype=float))
-        sym = {"p_alpha": "p_α", "p_gamma": "p_γ"}[name]
+    devs, lins, names = [], [], []
+    for sym, values in _conserved(res):
+        rel, how, lin = _deviation(values)
         _plot_deviation(ax, res.t, rel, label=f"|{sym} − {sym}(0)| {how.format(sym)}")
         devs.append(rel)
         lins.append(lin)
+        names.append(sym)
     _symlog(ax, np.concatenate(devs), "deviation", min(lins))
     ax.set_xlabel("t [s]")
-    ax.set_title("conserved momenta p_α, p_γ" + _zeros_note(np.concatenate(devs)), fontsize=10)
+    ax.set_title("conserved: " + ", ".join(names) + _zeros_note(np.concatenate(devs)), fontsize=10)
     _plain(ax, "x")
     _legend_outside(ax)
 
@@ -371,7 +390,7 @@ def panels(res) -> list[str]:
     names = ["beta", "omega", "energy"]
     if damped:
         names.append("balance")
-    elif _is_symmetric(res):
+    else:
         names.append("momenta")
     names += ["top", "sphere"]
     if not _is_symmetric(res):

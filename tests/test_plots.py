@@ -13,6 +13,7 @@ import pytest
 
 import derive
 from derive import plots
+from derive.render import ROOT
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
 
@@ -73,7 +74,8 @@ def _close(fig):
 
 def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped):
     assert plots.panels(symmetric) == ["beta", "omega", "energy", "momenta", "top", "sphere"]
-    assert plots.panels(asymmetric) == ["beta", "omega", "energy", "top", "sphere", "polhode"]
+    assert plots.panels(asymmetric) == ["beta", "omega", "energy", "momenta", "top", "sphere",
+                                        "polhode"]
     assert plots.panels(damped) == ["beta", "omega", "energy", "balance", "top", "sphere"]
     for res in (symmetric, asymmetric, damped):
         fig = _fig(res)
@@ -85,6 +87,16 @@ def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped):
                     assert _axes(fig, name).name == "3d"
         finally:
             _close(fig)
+
+
+def test_conserved_panel_shows_what_the_body_conserves():
+    """p_γ is conserved only with every effect axisymmetric: not for the Kovalevskaya top (centre
+    of mass off axis 3), whose panel shows its quartic integral instead."""
+    kov = derive.simulate(ROOT / "scenes" / "kovalevskaya_top.toml", t_end=2.0, samples=201)
+    names = [name for name, _ in plots._conserved(kov)]
+    assert names == ["p_α", "kovalevskaya"]
+    lagrange = derive.simulate(ROOT / "scenes" / "looping_top.toml", t_end=0.2, samples=21)
+    assert [name for name, _ in plots._conserved(lagrange)] == ["p_α", "p_γ"]
 
 
 def test_title_names_scene_formulation_method_and_tolerances(symmetric):
