@@ -323,68 +323,124 @@ def energy(model, p, y) -> np.ndarray:
 # measurement (reported by the bench, never asserted on time)
 
 
-def bench_energy(model=None, p=None, y0=None, periods: float = 1e4, period: float | None = None,
-                 target: float = 1e-8, methods=("splitting4", "dop853", "gauss4"),
-                 repeat: int = 3, samples: int = 1000) -> dict:
-    """Cost to reach a relative energy error ``target`` over ``periods`` periods, per method.
+def bench_case(case: str):
+    """(model, p, y0, period) of a named benchmark body:
 
-    Default body: the heavy asymmetric top with an off-axis centre of mass
-    (I = (1, 1.5, 2) kg m², M g = 9.81 N, r_c = (0.05, 0.02, 0.1) m), started tilted and spinning;
-    ``period`` defaults to 2π/|ω̃₀|. For each method the step (splitting, Gauss) or rtol
-    (DOP853) is searched by bisection on a log scale for the cheapest setting whose maximum
-    relative energy error over the run (sampled at ``samples`` + 1 equally spaced times, so
-    the fixed-step methods are not forced onto a finer grid than they choose) is ≤ ``target``; its
-    wall time is the best of ``repeat`` runs. Returns {method: {"setting", "error", "seconds",
-    "nfev"}} plus "ratio_dop853" = seconds(dop853) / seconds(splitting4).
+    ``fast-top``    Lagrange top I₁ = 1, I₃ = 0.5, M g l = 1, released at β = 0.5 from rest
+                    with p_γ = 1000, so p_γ²/(I₁ M g l) = 10⁶; period: the nutation period
+                    2π I₁/p_γ.
+    ``lagrange``    the same top with p_γ = 10 (p_γ²/(I₁ M g l) = 100, a slow top); period
+                    2π I₁/p_γ.
+    ``asymmetric``  I = (1, 1.5, 2) kg m², M g = 9.81 N, r_c = (0.05, 0.02, 0.1) m, started at
+                    (α, β, γ) = (0.1, 0.6, 0.2) with ω̃ = (0.3, −0.2, 12) rad/s (three distinct
+                    moments: the elliptic free flow); period 2π/|ω̃₀|.
     """
     from . import models
     from .exact import euler_matrix
 
-    if model is None:
+    if case in ("fast-top", "lagrange"):
+        model = models.build("euler-poisson", True, ("gravity",))
+        p_gamma = 1000.0 if case == "fast-top" else 10.0
+        p = np.array([1.0, 0.5, 1.0, 9.81, 1.0 / 9.81])
+        y0 = initial_state(model, p, (0.0, 0.0, p_gamma / 0.5), euler_matrix(0.0, 0.5, 0.0))
+        return model, p, y0, 2 * np.pi * 1.0 / p_gamma
+    if case == "asymmetric":
         model = models.build("euler-poisson", False, ("gravity_general",))
         p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
-        y0 = initial_state(model, p, (0.3, -0.2, 12.0), euler_matrix(0.1, 0.6, 0.2))
+        w0 = np.array([0.3, -0.2, 12.0])
+        return (model, p, initial_state(model, p, w0, euler_matrix(0.1, 0.6, 0.2)),
+                2 * np.pi / np.linalg.norm(w0))
+    raise ValueError(f"unknown benchmark case {case!r}; known: fast-top, lagrange, asymmetric")
+
+
+def _reference_axis(case, model, p, y0, t, sp):
+    """n(t) of the benchmark body: the exact Lagrange top (derive.exact.heavy_top) for the
+    symmetric cases, else DOP853 at rtol 1e-13."""
+    from .exact import heavy_top
+
+    if case in ("fast-top", "lagrange"):
+        I1, I3, M, g, l = p
+        w3 = float(angular_momentum(model, p, y0)[2]) / I3
+        tr = heavy_top(I1, I3, M, g, l, 0.0, 0.5, 0.0, 0.0, 0.0, w3, t)
+        return tr.R[:, 2, :]
+    return sp.kernel.solve("dop853", y0, p, t, rtol=1e-13, atol=1e-15).y[:, 3:6]
+
+
+def bench_energy(case: str = "asymmetric", periods: float = 1e4, target: float = 1e-8,
+                 methods=("splitting4", "dop853", "gauss4"), repeat: int = 3,
+                 samples: int = 997, budget: float = 60.0, measure: str = "energy") -> dict:
+    """Cost of each method to keep the energy error below ``target`` over ``periods`` periods
+    of a :func:`bench_case` body.
+
+    Energy error: max over the run of |E(t) − E(0)| / (M g |r_c|) — relative to the scale of the
+    potential energy, the part the integrators can get wrong (a fast top's E is dominated by the
+    spin energy p_γ²/(2I₃), which would hide every error). Sampled at ``samples`` + 1 equally
+    spaced times (a prime, so the output grid does not resonate with the nutation; fixed-step
+    methods are not forced below the step they choose). Each method's setting — the step h
+    (splitting, Gauss) or rtol (DOP853, atol = rtol/100) — is scanned from cheap to expensive
+    on a grid of ratio 2^(1/2), and the first setting that meets the target and whose next
+    grid value meets it too (no lucky resonance) is taken; its wall time is the best of
+    ``repeat`` runs. A method whose scan exceeds ``budget`` seconds is reported as None.
+    ``measure = "axis"`` takes instead the error of the vertical in body axes,
+    max |n(t) − n_ref(t)| over the samples, against the exact solution (Lagrange tops) or
+    DOP853 at rtol 1e-13: the trajectory, which the energy alone does not judge (a method that
+    steps over the fast nutation can keep the energy and still lose the motion).
+    Returns {"case", "periods", "target", method: {"setting", "error", "seconds", "nfev"},
+    "ratio_dop853", "ratio_gauss4"} with ratio = seconds(other) / seconds(splitting4).
+    """
+    model, p, y0, period = bench_case(case)
     sp = Splitter(model)
-    inertia, _ = body(model, p)
-    if period is None:
-        period = 2 * np.pi / np.linalg.norm(angular_momentum(model, p, y0) / inertia)
+    _, mg_rc = body(model, p)
+    scale = float(np.linalg.norm(mg_rc)) or float(abs(energy(model, p, y0)))
     t = np.linspace(0.0, periods * period, int(samples) + 1)
     e0 = float(energy(model, p, y0))
+    if measure not in ("energy", "axis"):
+        raise ValueError(f"measure must be 'energy' or 'axis', not {measure!r}")
+    n_ref = _reference_axis(case, model, p, y0, t, sp) if measure == "axis" else None
 
     def run(method, setting):
         t0 = time.perf_counter()
         if method in METHODS:
             y, st = sp.solve(method, y0, p, t, setting)
-            ok = st["status"] == 0
-            nfev = int(st["nfev"])
+            ok, nfev = st["status"] == 0, int(st["nfev"])
         else:
             kw = {"rtol": setting, "atol": setting * 1e-2} if method == "dop853" else {"h": setting}
             sol = sp.kernel.solve(method, y0, p, t, check=False, **kw)
             y, ok, nfev = sol.y, sol.success, sol.nfev
         dt = time.perf_counter() - t0
-        err = float(np.max(np.abs(energy(model, p, y) - e0)) / abs(e0)) if ok else np.inf
+        if not ok:
+            err = np.inf
+        elif n_ref is not None:
+            err = float(np.max(np.linalg.norm(y[:, 3:6] - n_ref, axis=1)))
+        else:
+            err = float(np.max(np.abs(energy(model, p, y) - e0)) / scale)
         return err, dt, nfev
 
-    out = {}
+    out: dict = {"case": case, "periods": periods, "target": target, "measure": measure}
     for method in methods:
-        # larger setting = cheaper; bisect log(setting) for the largest one meeting the target.
-        lo, hi = (1e-14, 1e-3) if method == "dop853" else (period * 1e-4, period * 0.5)
-        best = None
-        for _ in range(14):
-            mid = float(np.sqrt(lo * hi))
-            err, _, _ = run(method, mid)
+        start = 1e-3 if method == "dop853" else 64 * period
+        grid = [start * 2.0 ** (-k / 2) for k in range(80)]
+        spent, found, prev = 0.0, None, None
+        for setting in grid:
+            err, dt, _ = run(method, setting)
+            spent += dt
             if err <= target:
-                best, lo = mid, mid
+                if prev is not None:
+                    found = prev
+                    break
+                prev = setting
             else:
-                hi = mid
-            if hi / lo < 1.15:
+                prev = None
+            if spent > budget:
                 break
-        if best is None:
-            out[method] = {"setting": None, "error": None, "seconds": None, "nfev": None}
+        if found is None:
+            out[method] = None
             continue
-        runs = [run(method, best) for _ in range(repeat)]
-        out[method] = {"setting": best, "error": runs[0][0],
+        runs = [run(method, found) for _ in range(repeat)]
+        out[method] = {"setting": found, "error": runs[0][0],
                        "seconds": min(r[1] for r in runs), "nfev": runs[0][2]}
-    s4, dp = out.get("splitting4", {}).get("seconds"), out.get("dop853", {}).get("seconds")
-    out["ratio_dop853"] = dp / s4 if s4 and dp else None
+    base = (out.get("splitting4") or {}).get("seconds")
+    for other in ("dop853", "gauss4"):
+        sec = (out.get(other) or {}).get("seconds")
+        out[f"ratio_{other}"] = sec / base if base and sec else None
     return out

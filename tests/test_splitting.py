@@ -216,3 +216,14 @@ def test_batch_is_bitwise_the_single_runs_and_bad_input_is_reported(splitters):
     y0n[4] = np.nan
     y, st = sp.solve("splitting4", y0n, p, t, 0.01)
     assert st["status"] == 2 and st["fail_index"] == 4
+
+
+def test_bench_finds_settings_that_meet_the_target():
+    # The measurement the bench reports (timings are reported, never asserted).
+    r = splitting.bench_energy("lagrange", periods=20, target=1e-6, methods=("splitting4", "dop853"),
+                               repeat=1, samples=97, measure="axis")
+    for m in ("splitting4", "dop853"):
+        assert r[m] is not None and r[m]["error"] <= 1e-6 and r[m]["seconds"] > 0
+    assert r["ratio_dop853"] > 0
+    with pytest.raises(ValueError, match="unknown benchmark case"):
+        splitting.bench_case("spinning-plate")
