@@ -214,6 +214,8 @@ def _check_pole(desc, t, beta, rtol):
     if not REGISTRY[desc.formulation].pole_loss:
         return
     s = np.abs(np.sin(beta))
+    if float(s.min()) ** 2 >= _EPS / rtol:
+        return
     k = int(s.argmin())
     if s[k] ** 2 < _EPS / rtol:
         raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
