@@ -171,11 +171,13 @@ def test_geometric_invariants_at_round_off_for_large_steps(splitters, symmetric,
     y, st = sp.solve(method, y0, p, t, 0.5)   # 200 steps, each far too long to be accurate
     assert st["status"] == 0 and st["nstep"] == 200
     L, n, e = splitting.angular_momentum(sp.model, p, y), y[:, 3:6], y[:, 6:]
-    assert np.abs(np.linalg.norm(n, axis=1) - 1).max() < 2e-14
-    assert np.abs(np.linalg.norm(e, axis=1) - 1).max() < 2e-14
-    assert np.abs(np.sum(n * e, axis=1)).max() < 2e-14
+    # Round-off only: up to 1800 rotations (200 steps x 9 stages) at a fraction of an ulp each.
+    tol = 4e-14
+    assert np.abs(np.linalg.norm(n, axis=1) - 1).max() < tol
+    assert np.abs(np.linalg.norm(e, axis=1) - 1).max() < tol
+    assert np.abs(np.sum(n * e, axis=1)).max() < tol
     Ln = np.sum(L * n, axis=1)
-    assert np.abs(Ln - Ln[0]).max() < 2e-14 * np.abs(L).max()
+    assert np.abs(Ln - Ln[0]).max() < tol * np.abs(L).max()
     # ... while the trajectory itself is far from converged (the step is not small)
     fine, _ = sp.solve(method, y0, p, t, 0.01)
     assert np.abs(fine[-1] - y[-1]).max() > 1e-6
