@@ -135,7 +135,12 @@ def _load(key) -> Description:
     folder = _cache_folder(name, key)
     path = folder / "models" / f"{name}.json"
     if not path.is_file():
-        derive_model(key, folder)
+        from .cbuild import writable_cache_dir  # an unwritable cache: a private one, warned
+
+        folder = _cache_folder(name, key, writable_cache_dir())
+        path = folder / "models" / f"{name}.json"
+        if not path.is_file():
+            derive_model(key, folder)
     return Description.from_json(path.read_text(encoding="utf-8"), folder)
 
 
@@ -159,10 +164,10 @@ _known: set = set()
 _absent: set = set()
 
 
-def _cache_folder(name: str, key) -> Path:
-    from .cbuild import cache_dir
+def _cache_folder(name: str, key, root: Path | None = None) -> Path:
+    from .cbuild import cache_root
 
-    return cache_dir() / "models" / f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
+    return (root or cache_root()) / "models" / f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
 
 
 @functools.lru_cache(maxsize=1)

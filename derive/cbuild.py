@@ -57,6 +57,10 @@ BUILD_PREFIX = ".build-"
 # checksums, build folders (also the older ".<name>-XXXXXXXX" form) and sidecar temporaries.
 _LIBRARY = re.compile(r"[A-Za-z_]\w*-[0-9a-f]{24}\.so(\.sha256)?")
 _BUILD = re.compile(r"\.(build-)?[A-Za-z_]\w*-[a-z0-9_]{8}")
+# Models derived on demand (derive.catalogue) live in MODELS; its own half-written folders
+# (".<variant>-XXXXXXXX") are cleaned like build folders.
+MODELS = "models"
+_MODEL_TMP = re.compile(r"\..+-[a-z0-9_]{8}")
 
 _loaded: dict[str, ctypes.CDLL] = {}
 _lock = threading.Lock()
@@ -67,6 +71,27 @@ def cache_dir() -> Path:
     """Where compiled libraries are kept: ``$DERIVE_CACHE`` or ``~/.cache/derive``."""
     env = os.environ.get("DERIVE_CACHE")
     return Path(env).expanduser() if env else Path.home() / ".cache" / "derive"
+
+
+def cache_root() -> Path:
+    """The cache folder in use: :func:`cache_dir`, or this process's private fallback once that
+    proved unwritable."""
+    return _fallback or cache_dir()
+
+
+def writable_cache_dir() -> Path:
+    """A cache folder this process can write into: :func:`cache_dir` (created if need be), or,
+    if that cannot be written, a private temporary folder used for the rest of the process
+    (removed at exit), announced by a one-line warning on stderr."""
+    root = cache_root()
+    if root == _fallback:
+        return root
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        os.rmdir(tempfile.mkdtemp(prefix=".probe-", dir=root))
+    except OSError as exc:
+        return _private_cache(root, exc)
+    return root
 
 
 def _note(line: str) -> None:
@@ -221,17 +246,12 @@ def _build(fname: str, name: str, sources: dict[str, str], mains: list[str], cmd
            flags: list[str]) -> Path:
     """Compile into a hidden build folder of the cache and move the checksum, then the library,
     into place; an unwritable cache moves the build to the process's private cache."""
-    root = _fallback or cache_dir()
-    while True:
-        try:
-            root.mkdir(parents=True, exist_ok=True)
-            remove_stale_builds(root)
-            work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
-            break
-        except OSError as exc:
-            if root == _fallback:
-                raise CompilerError(f"cannot create a build folder in {root} ({_why(exc)})") from None
-            root = _private_cache(root, exc)
+    root = writable_cache_dir()
+    remove_stale_builds(root)
+    try:
+        work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
+    except OSError as exc:
+        raise CompilerError(f"cannot create a build folder in {root} ({_why(exc)})") from None
     try:
         _write_sources(work, sources)
         out = work / fname
@@ -247,22 +267,23 @@ def _build(fname: str, name: str, sources: dict[str, str], mains: list[str], cmd
 
 
 def remove_stale_builds(root: Path, age: float = STALE_BUILD_SECONDS) -> int:
-    """Remove build folders in ``root`` older than ``age`` seconds (left by killed compiles);
-    returns how many were removed."""
+    """Remove build folders in ``root`` (and half-written model folders in ``root/models``)
+    older than ``age`` seconds, left by killed compiles; returns how many were removed."""
     removed = 0
     now = time.time()
-    try:
-        entries = list(os.scandir(root))
-    except OSError:
-        return 0
-    for e in entries:
+    for folder, pattern in ((root, _BUILD), (root / MODELS, _MODEL_TMP)):
         try:
-            if _BUILD.fullmatch(e.name) and e.is_dir(follow_symlinks=False) \
-                    and now - e.stat(follow_symlinks=False).st_mtime > age:
-                shutil.rmtree(e.path, ignore_errors=True)
-                removed += 1
+            entries = list(os.scandir(folder))
         except OSError:
-            pass
+            continue
+        for e in entries:
+            try:
+                if pattern.fullmatch(e.name) and e.is_dir(follow_symlinks=False) \
+                        and now - e.stat(follow_symlinks=False).st_mtime > age:
+                    shutil.rmtree(e.path, ignore_errors=True)
+                    removed += 1
+            except OSError:
+                pass
     return removed
 
 
@@ -272,11 +293,11 @@ class CacheEntry:
 
     name: str
     size: int     # bytes (a folder: the sum of its files)
-    status: str   # libraries: "ok" or why not; checksums: "checksum"; folders: "build folder"
+    status: str   # libraries: "ok" or why not; checksums: "checksum"; folders: what they hold
 
 
 def _ours(name: str) -> bool:
-    return bool(_LIBRARY.fullmatch(name) or _BUILD.fullmatch(name))
+    return bool(name == MODELS or _LIBRARY.fullmatch(name) or _BUILD.fullmatch(name))
 
 
 def _size(path: str) -> int:
@@ -300,7 +321,10 @@ def cache_entries(root: Path | None = None) -> list[CacheEntry]:
             size = _size(str(path))
         except OSError:
             size = 0
-        if name.endswith(CHECKSUM):
+        if name == MODELS:
+            status = (f"derived models ({sum(1 for _ in os.scandir(path))} variants)"
+                      if path.is_dir() else "not a folder")
+        elif name.endswith(CHECKSUM):
             status = "checksum"
         elif name.endswith(".so"):
             status = _problem(path) or "ok"

@@ -166,8 +166,9 @@ def _cmd_cache(args) -> int:
         raise SceneError(f"{root}: cache: {exc.strerror or exc}") from None
     where = "DERIVE_CACHE" if os.environ.get("DERIVE_CACHE") else "default; DERIVE_CACHE moves it"
     print(f"compile cache: {root} ({where})")
-    width = max((len(e.name) for e in entries), default=0)
-    for e in entries:
+    shown = [e for e in entries if e.status != "checksum"]  # counted in the total below
+    width = max((len(e.name) for e in shown), default=0)
+    for e in shown:
         print(f"  {e.name:<{width}}  {_bytes(e.size):>9}  {e.status}")
     libs = sum(e.name.endswith(".so") for e in entries)
     print(f"{libs} libraries, {_bytes(sum(e.size for e in entries))}" if entries else "empty")

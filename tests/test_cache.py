@@ -136,6 +136,17 @@ def test_fallback_in_process_warns_once(tmp_path, monkeypatch, capsys):
     assert len(libraries(cbuild._fallback)) == 2
 
 
+def test_simulate_with_an_unwritable_cache_runs_with_one_warning(tmp_path):
+    """The whole command: derived models and compiled kernels go to the private cache."""
+    out = tmp_path / "out.npz"
+    env = dict(os.environ, DERIVE_CACHE=str(unwritable(tmp_path)))
+    r = subprocess.run([sys.executable, "-m", "derive", "simulate", "scenes/looping_top.toml",
+                        "-o", out], capture_output=True, text=True, env=env, cwd=ROOT, timeout=300)
+    lines = r.stderr.strip().splitlines()
+    assert r.returncode == 0 and out.is_file(), r.stderr
+    assert len(lines) == 1 and lines[0].startswith("warning: compile cache "), r.stderr
+
+
 def test_stale_build_folders_are_removed(cache):
     cache.mkdir()
     stale, fresh, legacy = (cache / ".build-tiny-abcd1234", cache / ".build-tiny-zzzz9999",
@@ -149,9 +160,15 @@ def test_stale_build_folders_are_removed(cache):
     foreign = cache / ".not-ours"
     foreign.mkdir()
     os.utime(foreign, (old, old))
+    models = cache / "models"
+    model = models / "quaternion_sym-0123abcd-4567ef"
+    stale_model = models / ".quaternion_sym-0123abcd-4567ef-k2j4h5g6"  # a killed derivation
+    for d in (stale_model, model):
+        d.mkdir(parents=True)
+        os.utime(d, (old, old))
     cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
-    assert not stale.exists() and not legacy.exists()
-    assert fresh.exists() and foreign.exists()
+    assert not stale.exists() and not legacy.exists() and not stale_model.exists()
+    assert fresh.exists() and foreign.exists() and model.exists()
 
 
 def run(*argv):
@@ -166,17 +183,20 @@ def test_cache_command_lists_and_clears(cache):
     (so,) = cache.glob("tiny-*.so")
     (cache / "notes.txt").write_text("the user's own file\n")
     (cache / ".build-tiny-abcd1234").mkdir()
+    (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c").mkdir(parents=True)
+    (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c" / "m.c").write_text("int m;\n")
     rc, out, err = run("cache")
     assert rc == 0 and err == ""
     lines = out.splitlines()
     assert lines[0] == f"compile cache: {cache} (DERIVE_CACHE)"
     assert any(ln.split()[0] == so.name and ln.split()[-1] == "ok" for ln in lines)
     assert any(ln.split()[0] == ".build-tiny-abcd1234" for ln in lines)
-    assert not any("notes.txt" in ln for ln in lines)
+    assert any(ln.split()[0] == "models" and ln.endswith("derived models (1 variants)") for ln in lines)
+    assert not any("notes.txt" in ln or ".sha256" in ln for ln in lines)
     assert lines[-1].startswith("1 libraries, ")
 
     rc, out, err = run("cache", "--clear")
-    assert rc == 0 and out.startswith("removed 3 entries") and err == ""
+    assert rc == 0 and out.startswith("removed 4 entries") and err == ""
     assert sorted(p.name for p in cache.iterdir()) == ["notes.txt"]
     rc, out, err = run("cache")
     assert rc == 0 and out.splitlines()[-1] == "empty"
