@@ -12,7 +12,6 @@ import concurrent.futures
 import functools
 import multiprocessing
 import os
-import tempfile
 from pathlib import Path
 
 from .catalogue import SHIPPED, description_json
@@ -100,11 +99,11 @@ def _generate_everything() -> tuple:
 
 
 def _atomic_write(path: Path, text: str) -> None:
+    """Write ``text`` (UTF-8, newlines as given) atomically with the umask's mode."""
+    from .outputs import write_all
+
     path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.")
-    with os.fdopen(fd, "w", encoding="utf-8", newline="\n") as fh:
-        fh.write(text)
-    os.replace(tmp, path)
+    write_all({path: lambda fh: fh.write(text.encode("utf-8"))})
 
 
 def stale(files: dict[str, str], out: Path) -> list[str]:
