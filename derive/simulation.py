@@ -226,6 +226,18 @@ def _check_pole(desc, t, beta, rtol):
 # entry points
 
 
+def _quiet(fn):
+    """Run ``fn`` with NumPy's floating-point warnings off: absurd but finite inputs overflow on
+    the way, and what counts is the result, which is checked (a non-finite state or output is
+    an IntegrationError); a warning printed before that error line would only confuse."""
+    @functools.wraps(fn)
+    def quiet(*args, **kwargs):
+        with np.errstate(all="ignore"):
+            return fn(*args, **kwargs)
+    return quiet
+
+
+@_quiet
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
     sc = load_scene(scene, **overrides)
@@ -252,6 +264,7 @@ def simulate(scene, **overrides) -> Result:
     return _result(desc, out, y, t, sc, method, nfev, p)
 
 
+@_quiet
 def simulate_batch(scenes, **overrides) -> list[Result]:
     """Simulate many scenes that differ only in numbers (initial state, moments, effect
     parameters) with one call into C: init, integration and outputs of every trajectory run in

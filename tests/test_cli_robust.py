@@ -154,6 +154,26 @@ def test_absurd_but_finite_numbers_give_no_warning(tmp_path, tables):
     simulate_file(tmp_path, toml(with_(**tables)))
 
 
+@pytest.mark.parametrize("tables", [
+    {"gravity": {"M": 1.0, "g": 9.81, "l": 1e200}},
+    {"body": {"I1": 1e-300, "I3": 1e-300}},
+    {"body": {"I1": 1e300, "I3": 1e300}},
+    {"initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0, "omega": [1e300, 1e300, 1e300]}},
+])
+def test_the_api_shows_no_numpy_warning(tables):
+    """The Python API too: the outcome is a result or one exception, never a RuntimeWarning."""
+    import warnings
+
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        for run_ in (derive.simulate, lambda s: derive.simulate_batch([s, s])):
+            try:
+                run_(with_(**tables))
+            except (derive.SceneError, derive.IntegrationError):
+                pass
+    assert [str(w.message) for w in seen if issubclass(w.category, RuntimeWarning)] == []
+
+
 def test_warnings_are_silenced_but_errors_still_reported(tmp_path, monkeypatch):
     from derive import simulation
 
