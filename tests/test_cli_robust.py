@@ -3,6 +3,7 @@ warnings, and a last-resort handler for the unforeseen (exit 1)."""
 import contextlib
 import io
 import math
+import re
 import signal
 import subprocess
 import sys
@@ -247,8 +248,27 @@ def start(*argv):
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
-def interrupt_after(proc, seconds):
-    """SIGINT after ``seconds``; returns (exit status, stdout, stderr, seconds to exit)."""
+def wait_until_mapped(proc, pattern, timeout=60.0):
+    """Wait until the process has mapped a file matching ``pattern`` (a regex on its
+    /proc/<pid>/maps): it has reached the phase that loads it. Without /proc: a fixed wait."""
+    maps = f"/proc/{proc.pid}/maps"
+    end = time.monotonic() + timeout
+    while time.monotonic() < end and proc.poll() is None:
+        try:
+            with open(maps) as f:
+                if re.search(pattern, f.read(), re.M):
+                    return
+        except FileNotFoundError:
+            time.sleep(3.0)
+            return
+        time.sleep(0.05)
+
+
+def interrupt_after(proc, seconds, mapped=None):
+    """SIGINT ``seconds`` after the process mapped ``mapped`` (see wait_until_mapped); returns
+    (exit status, stdout, stderr, seconds from the signal to the exit)."""
+    if mapped:
+        wait_until_mapped(proc, mapped)
     time.sleep(seconds)
     assert proc.poll() is None, "finished before it could be interrupted"
     proc.send_signal(signal.SIGINT)
@@ -268,7 +288,8 @@ def test_sigint_during_a_python_phase(tmp_path):
     scene.write_text(toml(with_(simulate={"t_end": 1e5, "samples": 11, "method": "scipy-rk45",
                                           "max_steps": 10**11})))
     out = tmp_path / "out.npz"
-    rc, stdout, stderr, took = interrupt_after(start("simulate", scene, "-o", out), 3.0)
+    rc, stdout, stderr, took = interrupt_after(start("simulate", scene, "-o", out), 0.5,
+                                               mapped=r"scipy/integrate/")
     assert (rc, stdout, stderr) == (130, "", "error: interrupted\n")
     assert took < 2.0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
@@ -289,7 +310,8 @@ def test_sigint_inside_a_compiled_loop(tmp_path, method, extra):
                                           "max_steps": 10**12, **extra})))
     out = tmp_path / "out.npz"
     proc = start("simulate", scene, "-o", out)
-    rc, stdout, stderr, took = interrupt_after(proc, 4.0)
+    # the solver library (cache name <name>-<key>.so) is loaded: its loop is about to run
+    rc, stdout, stderr, took = interrupt_after(proc, 0.5, mapped=r"-[0-9a-f]{24}\.so$")
     assert (rc, stdout, stderr) == (130, "", "error: interrupted\n")
     assert took < 0.5
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
