@@ -32,6 +32,7 @@ import os
 import re
 import shlex
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -155,6 +156,8 @@ def _run(cmd: list[str], cwd: Path, what: str) -> None:
     except (FileNotFoundError, PermissionError) as exc:
         raise CompilerError(f"no working C compiler: {cmd[0]!r} cannot be run "
                             f"({exc.strerror or exc}); install gcc or set CC") from None
+    if proc.returncode == -signal.SIGINT:  # Ctrl-C reached the compiler first: an interrupt,
+        raise KeyboardInterrupt             # not a compile error
     if proc.returncode != 0:
         lines = proc.stderr.strip().splitlines()
         head = "\n".join(lines[:STDERR_LINES])

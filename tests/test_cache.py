@@ -235,3 +235,18 @@ def test_loaded_library_is_reused_in_process(cache):
     so.unlink()  # a second call does not even look at the disk
     assert cbuild.compile_library("tiny", sources, "tiny.c") is a
     assert isinstance(a, ctypes.CDLL)
+
+
+def test_a_compiler_killed_by_ctrl_c_is_an_interrupt(cache, tmp_path, monkeypatch):
+    """Ctrl-C in a terminal reaches the compiler too; its death is not a compile error."""
+    fake = tmp_path / "cc"
+    fake.write_text(f"#!{sys.executable}\n"  # a shell could not undo an inherited SIG_IGN
+                    "import os, signal, sys\n"
+                    "if sys.argv[1:] == ['--version']: print('fake 1.0'); sys.exit(0)\n"
+                    "signal.signal(signal.SIGINT, signal.SIG_DFL)\n"
+                    "os.kill(os.getpid(), signal.SIGINT)\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("CC", str(fake))
+    with pytest.raises(KeyboardInterrupt):
+        cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
+    assert not [p for p in cache.iterdir() if p.name.startswith(".build-")]
