@@ -229,3 +229,41 @@ def test_bench_finds_settings_that_meet_the_target():
     assert r["ratio_dop853"] > 0
     with pytest.raises(ValueError, match="unknown benchmark case"):
         splitting.bench_case("spinning-plate")
+
+
+def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters):
+    # Compiled after <prefix>_solvers.c, the splitting methods get the whole-simulation drivers
+    # (init map, solve, outputs) and poll the kernel's interrupt flag.
+    import ctypes
+
+    from derive.status import Status
+
+    sp = splitters(False, ("gravity_general",))
+    lib, P = sp.lib, sp.model.name
+    dims = (ctypes.c_int * 4).in_dll(lib, f"{P}_dims")
+    nobs, nin = dims[2], dims[3]
+    p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
+    inp = np.array([0.3, 1.1, -0.4, 1.3, -0.8, 6.0, 0.0, 0.0, 0.0, 0.0])[:nin]
+    t = np.linspace(0.0, 2.0, 5)
+    f64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
+    outs = {}
+    for m, extra, cty in (("splitting4", (0.001,), [ctypes.c_double]), ("rk4", (0.001,), [ctypes.c_double])):
+        fn = getattr(lib, f"{P}_simulate_{m}")
+        fn.argtypes = [f64, f64, f64, ctypes.c_long, *cty, f64, f64, ctypes.c_void_p]
+        y_work, out = np.zeros(len(t) * 9), np.zeros(nobs * len(t))
+        assert fn(inp, p.copy(), t, len(t), *extra, y_work, out, None) == 0
+        outs[m] = out
+        if m == "splitting4":
+            y, _ = sp.solve(m, y_work[:9], p, t, 0.001)
+            assert np.array_equal(y.ravel(), y_work)
+    assert np.abs(outs["splitting4"] - outs["rk4"]).max() < 1e-6 * np.abs(outs["rk4"]).max()
+    lib_req = getattr(lib, f"{P}_interrupt_request")
+    guard = getattr(lib, f"{P}_interrupt_guard")
+    guard.argtypes = [ctypes.c_int]
+    lib_req()
+    try:
+        y, st = sp.solve("splitting4", y_work[:9], p, t, 0.001)
+        assert st["status"] == Status.INTERRUPTED and st["nstep"] == 0
+    finally:
+        guard(0)  # clears the flag
+    assert sp.solve("splitting4", y_work[:9], p, t, 0.001)[1]["status"] == 0
