@@ -357,7 +357,7 @@ def _read_toml(source: str) -> dict:
             raw = raw[len(bom):]
             break
     try:
-        return tomllib.loads(raw.decode("utf-8"))
+        data = tomllib.loads(raw.decode("utf-8"))
     except UnicodeDecodeError as err:
         raise fail(f"not UTF-8 text (bad byte at offset {err.start})") from err
     except RecursionError as err:
@@ -367,6 +367,25 @@ def _read_toml(source: str) -> dict:
         match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
         where, what = (match.group(2), match.group(1)) if match else ("file", str(err))
         raise SceneError(_line(source, where, f"invalid TOML: {what}")) from err
+    if _depth(data) > MAX_SCENE_DEPTH:
+        raise fail(f"values nested deeper than {MAX_SCENE_DEPTH} levels: not a scene file")
+    return data
+
+
+MAX_SCENE_DEPTH = 16  # a scene needs 3 (table, key, vector); the checks recurse into values
+
+
+def _depth(value) -> int:
+    """How deeply lists and tables nest in ``value`` (without recursion: any depth is safe)."""
+    deepest, stack = 0, [(value, 0)]
+    while stack:
+        v, d = stack.pop()
+        deepest = max(deepest, d)
+        if isinstance(v, dict):
+            stack.extend((x, d + 1) for x in v.values())
+        elif isinstance(v, list):
+            stack.extend((x, d + 1) for x in v)
+    return deepest
 
 
 def _line(source: str, key: str, what: str) -> str:
