@@ -238,7 +238,7 @@ def run_in_process(argv):
     return rc, out.getvalue(), err.getvalue()
 
 
-def check_contract(content: bytes, runner=run_in_process) -> tuple[int, str]:
+def check_contract(content: bytes, runner=run_in_process, flags=()) -> tuple[int, str]:
     """Simulate ``content`` as a scene file in a fresh folder; assert the contract; return the
     exit status and stderr."""
     folder = Path(tempfile.mkdtemp(prefix="derive-fuzz-"))
@@ -246,7 +246,7 @@ def check_contract(content: bytes, runner=run_in_process) -> tuple[int, str]:
         scene = folder / "scene.toml"
         scene.write_bytes(content)
         npz = folder / "out.npz"
-        rc, out, err = runner(["simulate", scene, "-o", npz])
+        rc, out, err = runner(["simulate", scene, "-o", npz, *flags])
         # the cache's healing note is the one other line a run may print (a stale cache)
         lines = [ln for ln in err.splitlines() if not ln.startswith("note: cached library")]
         assert "Traceback" not in out + err and "Warning" not in err, err
@@ -271,6 +271,37 @@ def check_contract(content: bytes, runner=run_in_process) -> tuple[int, str]:
 @given(malformed_scenes())
 def test_fuzzed_scenes_keep_the_contract(content):
     check_contract(content)
+
+
+number_texts = st.one_of(
+    st.sampled_from(["nan", "inf", "-inf", "0", "-1", "1e-300", "1e400", "1e-13", "0.5", "",
+                     "1,5", "0x10", "1e", "--", "1_000", " 1e-8", "\u0661"]),
+    st.floats(allow_nan=True).map(repr), st.text(max_size=6))
+FLAGS = {
+    "--rtol": number_texts, "--atol": number_texts, "--h": number_texts,
+    "--max-steps": st.sampled_from(["0", "-5", "1", "100", "1e3", "20000", "x", "99999999999999999999"]),
+    "--method": st.one_of(st.sampled_from(list(METHODS)), texts),
+    "--formulation": st.one_of(st.sampled_from(FORMULATIONS), texts),
+}
+
+
+@st.composite
+def flag_lists(draw):
+    names = draw(st.lists(st.sampled_from(sorted(FLAGS)), min_size=1, max_size=3, unique=True))
+    out = []
+    for name in names:
+        value = draw(FLAGS[name])
+        out += [f"{name}={value}"]  # "=": a value starting with "-" stays a value
+    return out
+
+
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(BASES), flag_lists())
+def test_fuzzed_flags_keep_the_contract(base, flags):
+    """Command-line overrides go through the same checks, named `simulate.<key>`."""
+    rc, err = check_contract(to_toml(base).encode(), flags=flags)
+    if rc == 2 and "argument" not in err:
+        assert "simulate." in err or "file:" in err, err
 
 
 def test_the_bases_are_valid_and_cheap():
