@@ -304,6 +304,49 @@ def test_fuzzed_flags_keep_the_contract(base, flags):
         assert "simulate." in err or "file:" in err, err
 
 
+# Values only a Python caller can pass (a dict shaped like the TOML, not a file).
+python_values = st.one_of(
+    values, st.none(), st.complex_numbers(max_magnitude=10, allow_nan=False),
+    st.sampled_from([np.float32(1.5), np.float64("nan"), np.int64(3), np.bool_(True),
+                     np.array([1.0, 2.0, 3.0]), np.array(2.0), np.array([[1.0]]), (0.0, 0.0, 1.0),
+                     {1.0, 2.0}, b"1.0", bytearray(b"x"), object(),
+                     __import__("fractions").Fraction(1, 3),
+                     __import__("decimal").Decimal("NaN"), __import__("decimal").Decimal("0.5")]))
+
+
+@st.composite
+def python_mutation(draw):
+    op = draw(mutation())
+    if op[0] == "set" and draw(st.booleans()):
+        return ("set", op[1], op[2], draw(python_values))
+    return op
+
+
+@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(BASES), st.lists(python_mutation(), min_size=1, max_size=3))
+def test_fuzzed_dicts_through_the_api(base, ops):
+    """The Python API on a dict: a result with finite arrays, or SceneError / IntegrationError
+    with a one-line message; nothing else escapes, and no warning."""
+    import warnings
+
+    import derive
+
+    scene = json.loads(json.dumps(base))
+    for op in ops:
+        apply(scene, op)
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        try:
+            res = derive.simulate(scene)
+        except (derive.SceneError, derive.IntegrationError) as err:
+            assert str(err) and "\n" not in str(err)
+        else:
+            for name, a in res.arrays().items():
+                if isinstance(a, np.ndarray) and a.dtype.kind in "fc":
+                    assert np.all(np.isfinite(a)), name
+    assert [str(w.message) for w in seen if issubclass(w.category, RuntimeWarning)] == []
+
+
 def test_the_bases_are_valid_and_cheap():
     """The fuzz starts from scenes that run (else it would only test the parser)."""
     for base in BASES:
