@@ -50,11 +50,11 @@ The generated C API (``<prefix>_splitting.h``) is that of the fixed-step solvers
 from __future__ import annotations
 
 import ctypes
+import decimal
 import time
 from dataclasses import dataclass
 from fractions import Fraction as F
 
-import mpmath
 import numpy as np
 
 from .render import render
@@ -63,9 +63,9 @@ from .render import render
 # compositions (exact data)
 
 
-def _mp(x) -> F:
-    """An mpmath number as a Fraction (50 significant digits)."""
-    return F(mpmath.nstr(x, 50, min_fixed=-1, max_fixed=1))
+def _dec(x: decimal.Decimal) -> F:
+    """A 60-digit Decimal as a Fraction rounded to 50 significant digits."""
+    return F(format(x, ".49e"))
 
 
 @dataclass(frozen=True)
@@ -104,19 +104,27 @@ class Composition:
 
 
 def _triple_jump() -> tuple[F, ...]:
-    with mpmath.workdps(60):
-        g1 = 1 / (2 - mpmath.cbrt(2))
-        return (_mp(g1), _mp(1 - 2 * g1), _mp(g1))
+    """Yoshida's / Suzuki's triple jump: γ₁ = γ₃ = 1/(2 − 2^(1/3)), γ₂ = 1 − 2γ₁."""
+    with decimal.localcontext() as ctx:
+        ctx.prec = 60
+        g1 = 1 / (2 - decimal.Decimal(2) ** (decimal.Decimal(1) / 3))
+        return (_dec(g1), _dec(1 - 2 * g1), _dec(g1))
 
 
 def _mclachlan5() -> tuple[F, ...]:
     """McLachlan's 5-stage order-4 weights: γ₁ = γ₅ = 0.28, γ₂ = γ₄ the root near 0.6255 of
-    2(γ₁³ + γ₂³) + (1 − 2γ₁ − 2γ₂)³ = 0 (the order-4 condition Σγ³ = 0), γ₃ = 1 − 2(γ₁ + γ₂)."""
-    with mpmath.workdps(60):
-        g1 = mpmath.mpf(28) / 100
-        g2 = mpmath.findroot(lambda x: 2 * (g1**3 + x**3) + (1 - 2 * g1 - 2 * x) ** 3,
-                             mpmath.mpf("0.6254664"))
-        return tuple(_mp(x) for x in (g1, g2, 1 - 2 * g1 - 2 * g2, g2, g1))
+    f(x) = 2(γ₁³ + x³) + (1 − 2γ₁ − 2x)³ (the order-4 condition Σγ³ = 0; Newton's method to
+    60 digits), γ₃ = 1 − 2(γ₁ + γ₂)."""
+    with decimal.localcontext() as ctx:
+        ctx.prec = 60
+        g1, x = decimal.Decimal("0.28"), decimal.Decimal("0.6254664")
+        for _ in range(100):
+            r = 1 - 2 * g1 - 2 * x
+            step = (2 * (g1**3 + x**3) + r**3) / (6 * x * x - 6 * r * r)
+            x -= step
+            if abs(step) < decimal.Decimal("1e-58"):
+                break
+        return tuple(_dec(v) for v in (g1, x, 1 - 2 * g1 - 2 * x, x, g1))
 
 
 # Kahan & Li's s9odr6a, as published (26 digits) in Hairer, Lubich & Wanner, Geometric
