@@ -393,11 +393,23 @@ def _line(source: str, key: str, what: str) -> str:
     return " ".join(f"{source}: {key}: {what}".splitlines())
 
 
+#: Longest value shown in an error line (a huge string or list is cut, so the line stays short).
+SHOW_LIMIT = 80
+
+
 def _show(value) -> str:
-    """A value as the user wrote it (TOML spelling for booleans, tables and strings)."""
+    """A value as the user wrote it (TOML spelling for booleans, tables and strings), at most
+    about ``SHOW_LIMIT`` characters."""
+    text = _show_full(value)
+    return text if len(text) <= SHOW_LIMIT else text[:SHOW_LIMIT - 20] + f"... ({len(text)} characters)"
+
+
+def _show_full(value) -> str:
     if isinstance(value, (bool, np.bool_)):
         return f"{str(bool(value)).lower()} (a boolean)"
     if isinstance(value, str):
+        if len(value) > SHOW_LIMIT:
+            return f"{value[:SHOW_LIMIT // 2]!r}... (a string of {len(value)} characters)"
         return f"{value!r} (a string)"
     if isinstance(value, Mapping):
         return "a table"
@@ -407,7 +419,9 @@ def _show(value) -> str:
         text = str(value)
         return text if len(text) <= 24 else f"{text[:8]}... (an integer of {len(text)} digits)"
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_show(v) for v in value) + "]"
+        if len(value) > 8:
+            return f"a list of {len(value)} items"
+        return "[" + ", ".join(_show_full(v) for v in value) + "]"
     return f"a {type(value).__name__}"
 
 
