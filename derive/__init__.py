@@ -10,7 +10,7 @@ from .errors import CompilerError, IntegrationError, SceneError
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
 
-__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch"]
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep"]
 
 
 def simulate(scene, **overrides):
@@ -25,3 +25,10 @@ def simulate_batch(scenes, **overrides):
     from .simulation import simulate_batch as _batch
 
     return _batch(scenes, **overrides)
+
+
+def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
+    """Run a parameter sweep (a sweep-file path or a dict shaped like one). See `derive.sweep`."""
+    from .sweep import sweep as _sweep
+
+    return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress, **kwargs)

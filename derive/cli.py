@@ -240,6 +240,19 @@ def parser() -> argparse.ArgumentParser:
     b.add_argument("--quick", action="store_true", help="fewer tolerances and repeats")
     b.set_defaults(func=_cmd_bench)
 
+    w = sub.add_parser("sweep", help="a parameter sweep: many points of one scene, measured while "
+                                     "integrating (docs/sweeps.md)")
+    w.add_argument("sweep", help="sweep file (TOML)")
+    w.add_argument("-o", "--output", required=True, help="results (.parquet, one row per point)")
+    w.add_argument("--plot", default=None, help="map (2-D sweep) or line (1-D) as PNG")
+    w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
+    engine = w.add_mutually_exclusive_group()
+    engine.add_argument("--workers", type=int, default=None,
+                        help="start a Dask LocalCluster with N worker processes")
+    engine.add_argument("--scheduler", default=None, help="address of a running Dask scheduler "
+                                                          "(tcp://host:port)")
+    w.set_defaults(func=lambda args: __import__("derive.sweep", fromlist=["cli"]).cli(args))
+
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
     c.add_argument("--clear", action="store_true", help="remove every cached library")
     c.set_defaults(func=_cmd_cache)

@@ -106,6 +106,19 @@ static int derive_reduced_sym_rest_interrupted(long from, long n_batch, derive_s
     }
     return DERIVE_INTERRUPTED;
 }
+
+/* Measures (derive.sweep): a build with -DDERIVE_MEASURES also includes reduced_sym_measures.c
+ * (rendered at run time by derive.measures), which defines the hook declared here. While
+ * derive_reduced_sym_measuring is set, the adaptive drivers form the dense output on every accepted step and
+ * hand it to the hook; a build without the macro is exactly the plain solver. */
+#ifdef DERIVE_MEASURES
+static int derive_reduced_sym_measuring = 0;
+static void reduced_sym_measure_step(double t, double h, const double *y, const double *y_new,
+        const double *p, double cont[7][reduced_sym_NY]);
+#define DERIVE_REDUCED_SYM_DENSE_EVERY_STEP derive_reduced_sym_measuring
+#else
+#define DERIVE_REDUCED_SYM_DENSE_EVERY_STEP 0
+#endif
 #ifdef DERIVE_REDUCED_SYM_SIMULATE
 
 /* Canonical z-y-z angles along a trajectory: beta in [0, pi] (a beta outside is reflected,
@@ -546,7 +559,7 @@ int reduced_sym_solve_dop853(const double *y0, const double *p, const double *t_
         if ((i = derive_reduced_sym_first_nonfinite(k[12], reduced_sym_NY)) >= 0)
             return derive_reduced_sym_fail(st, DERIVE_NONFINITE, tn, i);
 
-        if (k_out < n_out && t_out[k_out] <= tn) {
+        if (DERIVE_REDUCED_SYM_DENSE_EVERY_STEP || (k_out < n_out && t_out[k_out] <= tn)) {
             /* Dense output (dop853, order 7) at every requested time in (t, tn]. */
             for (i = 0; i < reduced_sym_NY; ++i)
                 yt[i] = y[i] + h * (0.056167502283047954 * k[0][i] + 0.25350021021662483 * k[6][i] - 0.2462390374708025 * k[7][i] - 0.12419142326381637 * k[8][i] + 0.15329179827876568 * k[9][i] + 0.00820105229563469 * k[10][i] + 0.007567897660545699 * k[11][i] - 0.008298 * k[12][i]);
@@ -576,6 +589,10 @@ int reduced_sym_solve_dop853(const double *y0, const double *p, const double *t_
                 cont[5][i] = h * (19.985053242002433 * k[0][i] - 387.0373087493518 * k[5][i] - 189.17813819516758 * k[6][i] + 527.8081592054236 * k[7][i] - 11.57390253995963 * k[8][i] + 6.8812326946963 * k[9][i] - 1.0006050966910838 * k[10][i] + 0.7777137798053443 * k[11][i] - 2.778205752353508 * k[12][i] - 60.19669523126412 * k[13][i] + 84.32040550667716 * k[14][i] + 11.99229113618279 * k[15][i]);
                 cont[6][i] = h * (-25.69393346270375 * k[0][i] - 154.18974869023643 * k[5][i] - 231.5293791760455 * k[6][i] + 357.6391179106141 * k[7][i] + 93.40532418362432 * k[8][i] - 37.45832313645163 * k[9][i] + 104.0996495089623 * k[10][i] + 29.8402934266605 * k[11][i] - 43.53345659001114 * k[12][i] + 96.32455395918828 * k[13][i] - 39.17726167561544 * k[14][i] - 149.72683625798564 * k[15][i]);
             }
+#ifdef DERIVE_MEASURES
+            if (derive_reduced_sym_measuring)
+                reduced_sym_measure_step(t, h, y, y_new, p, cont);
+#endif
             while (k_out < n_out && t_out[k_out] <= tn) {
                 yo = y_out + k_out * reduced_sym_NY;
                 if (t_out[k_out] == tn) {
