@@ -23,8 +23,7 @@ import math
 from . import catalogue
 from . import effects as fx
 from .formulations import POLE_CLEARANCE, REGISTRY
-from .solvers import DEFAULT_METHOD
-from .solvers import METHODS as _C_METHODS
+from .solvers import DEFAULT_METHOD, compiled_methods, method_reason
 
 
 def _known_cost(key) -> float | None:
@@ -49,12 +48,16 @@ def pole_mode(name: str) -> int:
 
 def plan(scene) -> list[tuple[str, int]]:
     """The formulations to try, in order, each with the pole check its run must pass: the
-    singular ones only with a Routh reduction, up to the first one without a singular set."""
+    singular ones only with a Routh reduction, up to the first one without a singular set;
+    only formulations the scene's method can run (a splitting method: Euler–Poisson)."""
     if scene.simulate.formulation != "auto":
         return [(scene.simulate.formulation, 0)]
     out = []
     routh = _has_routh(scene)
+    method = scene.simulate.method
     for name in candidates(scene):
+        if method_reason(method, name, scene.effects):
+            continue
         mode = pole_mode(name)
         if mode and not routh:
             continue
@@ -100,7 +103,7 @@ def formulation(scene, method: str | None = None) -> str:
     from .simulation import choose_method
 
     method = method or choose_method(scene)
-    if method not in _C_METHODS:  # a SciPy reference method: the checks come from dop853's library
+    if method not in compiled_methods():  # a SciPy reference: the checks come from dop853's library
         method = DEFAULT_METHOD
     for name, mode in plan(scene):
         if not mode or _clear(scene, name, method):

@@ -34,6 +34,10 @@ def model_sources(model: Model) -> dict[str, str]:
     for fname, text in render_solvers(model.name, len(model.states),
                                       has_angles=c_ctx["has_angles"]).items():
         files[f"c/{fname}"] = text
+    from . import splitting
+
+    if splitting.applicable(model) is None:
+        files.update({f"c/{k}": v for k, v in splitting.render_splitting(model).items()})
     files[f"models/{model.name}.json"] = description_json(spec)
     return files
 

@@ -24,6 +24,7 @@ import numpy as np
 from .cbuild import DEFAULT_FLAGS, compile_library
 from .errors import IntegrationError
 from .solvers import METHODS, render_solvers
+from .solvers import method as compiled_method
 from .status import Status
 from .status import message as _status_message
 
@@ -370,7 +371,7 @@ class ModelKernel:
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         if method is not None:
-            extra = [_C_TYPES[ty] for ty, _ in METHODS[method].params]
+            extra = [_C_TYPES[ty] for ty, _ in compiled_method(method).params]
             self._sim = self._fn(f"{p}_simulate_checked_{method}",
                                  [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
@@ -398,6 +399,8 @@ class ModelKernel:
             sources = desc.c_sources()
             unity = f"{desc.name}_{method or 'model'}_unit.c"
             includes = [f"{desc.name}.c"] + ([f"{desc.name}_solvers.c"] if method else [])
+            if method is not None and method not in METHODS:  # a splitting: its own file, after
+                includes.append(f"{desc.name}_splitting.c")    # the solvers (interrupt, drivers)
             sources[unity] = "".join(f'#include "{n}"\n' for n in includes)
             flags = list(DEFAULT_FLAGS)
             if method is not None:
@@ -410,7 +413,7 @@ class ModelKernel:
                     newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
         values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
                   "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
-        return [values[name] for _, name in METHODS[self.method].params]
+        return [values[name] for _, name in compiled_method(self.method).params]
 
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""

@@ -652,3 +652,6 @@ class _Validator:
             reason = formulations.REGISTRY[form].applicable(scene)
             if reason:
                 self.fail("simulate.formulation", reason)
+        reason = solvers.method_reason(scene.simulate.method, form, scene.effects)
+        if reason:
+            self.fail("simulate.method", reason)

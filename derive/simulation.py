@@ -30,7 +30,7 @@ from .formulations import OUTPUTS, REGISTRY
 from .integrate import ModelKernel
 from .scene import FIXED_STEP_METHODS, Scene, load_scene
 from .solvers import DEFAULT_METHOD, REFERENCE_METHODS
-from .solvers import METHODS as C_METHODS
+from .solvers import method as compiled_method
 from .status import Status
 from .status import message as status_message
 
@@ -141,7 +141,7 @@ def _check_budget(scene: Scene, method: str, h: float) -> None:
 def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
     s = scene.simulate
     h = s.h
-    if C_METHODS[method].driver != "adaptive":
+    if compiled_method(method).driver != "adaptive":
         h = default_step(scene) if h is None else h
         _check_budget(scene, method, h)
     return kernel.driver_args(s.rtol, s.atol, h, s.max_steps)
@@ -295,7 +295,7 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     key = auto.batch_key(scs)
     desc = catalogue.describe(key)
     kernel = ModelKernel.load(desc, method)
-    if C_METHODS[method].driver != "adaptive" and first.simulate.h is None:
+    if compiled_method(method).driver != "adaptive" and first.simulate.h is None:
         h = min(default_step(sc) for sc in scs)
         for sc in scs:
             _check_budget(sc, method, h)

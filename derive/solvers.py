@@ -90,18 +90,47 @@ REFERENCE_METHODS: dict[str, tuple[str, str]] = {
 INTERNAL_METHODS = ("dop853_fixed",)
 
 
+def compiled_methods() -> dict:
+    """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`) and
+    the Lie–Poisson splittings of :mod:`derive.splitting` (their own template). Each entry has
+    ``name``, ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
+    from .splitting import METHODS as SPLITTING
+
+    return {**METHODS, **SPLITTING}
+
+
+def method(name: str):
+    """The compiled method called ``name`` (KeyError if there is none)."""
+    return compiled_methods()[name]
+
+
+def method_reason(name: str, formulation: str, effects) -> str | None:
+    """None if the compiled method ``name`` can run that formulation with those effects, else
+    why not ("auto" as the formulation: can any formulation)."""
+    from . import splitting
+    from .formulations import UNIVERSAL
+
+    if name not in splitting.METHODS:
+        return None
+    from types import SimpleNamespace
+
+    form = UNIVERSAL if formulation == "auto" else formulation
+    return splitting.applicable(SimpleNamespace(formulation=form, effects=tuple(effects)))
+
+
 def scene_methods() -> dict[str, str]:
     """What a scene's ``simulate.method`` may name: "auto", the compiled methods, the SciPy
     references; name -> one-line description."""
     out = {"auto": f"let derive choose ({DEFAULT_METHOD} unless the scene says otherwise)"}
-    out.update({name: m.summary for name, m in METHODS.items() if name not in INTERNAL_METHODS})
+    out.update({name: m.summary for name, m in compiled_methods().items()
+                if name not in INTERNAL_METHODS})
     out.update({name: text for name, (_, text) in REFERENCE_METHODS.items()})
     return out
 
 
 def fixed_step_methods() -> tuple[str, ...]:
     """The compiled methods that take a fixed step h."""
-    return tuple(name for name, m in METHODS.items() if m.driver != "adaptive"
+    return tuple(name for name, m in compiled_methods().items() if m.driver != "adaptive"
                  and name not in INTERNAL_METHODS)
 
 

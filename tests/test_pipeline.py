@@ -274,3 +274,22 @@ def test_docs_name_nothing_outside_the_repository():
     for path in [ROOT / "README.md", *(ROOT / "docs").rglob("*.md"), *(ROOT / "generated").glob("*.md")]:
         text = path.read_text()
         assert not re.search(r"\.\./shared|shared/(notes|INTERFACE|STYLE)|/work/", text), path
+
+
+@pytest.mark.parametrize("method", ["splitting2", "splitting4", "splitting6"])
+def test_splitting_methods_run_from_a_scene_and_keep_the_casimirs(method):
+    """method = "splittingN" takes the Euler–Poisson formulation under auto; |n| = 1 and L·n
+    stay at round-off whatever h, because every sub-flow is an exact rotation or kick."""
+    res = derive.simulate(SCENES / "kovalevskaya_top.toml", method=method, h=0.05, t_end=20.0,
+                          samples=201)
+    assert res.formulation == formulations.UNIVERSAL and res.method == method
+    assert np.max(np.abs(np.linalg.norm(res.n, axis=1) - 1.0)) < 1e-14
+    Ln = np.sum(res.L * res.n, axis=1)
+    assert np.max(np.abs(Ln - Ln[0])) < 1e-14 * np.max(np.abs(res.L))
+
+
+def test_splitting_is_refused_where_there_is_no_hamiltonian_to_split():
+    with pytest.raises(derive.SceneError, match=r"simulate\.method: .*'damping'"):
+        derive.simulate(SCENES / "damped_top.toml", method="splitting4")
+    with pytest.raises(derive.SceneError, match=r"simulate\.method: .*'euler-poisson' formulation"):
+        derive.simulate(SCENES / "looping_top.toml", method="splitting4", formulation="quaternion")
