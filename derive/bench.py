@@ -66,7 +66,17 @@ ERROR_FLOOR = 1e-13
 MIN_RTOL = 100 * np.finfo(float).eps
 
 ADAPTIVE = ("dop853",)
-FIXED = ("rk4", "gauss4", "gauss6")
+def _fixed_step_methods() -> tuple[str, ...]:
+    """The fixed-step methods a scene can name (the method registry), e.g. rk4, gauss4/6, splittings."""
+    try:
+        from .scene import FIXED_STEP_METHODS
+
+        return tuple(FIXED_STEP_METHODS)
+    except ImportError:
+        return ("rk4", "gauss4", "gauss6")
+
+
+FIXED = _fixed_step_methods()
 #: scene file stem -> the baseline formulations the contenders get: Euler angles for symmetric
 #: tops, quaternion + Euler's equations for any body; where the axis passes near a pole (or both
 #: are natural), both, and each contender's best counts. Ours run in every formulation the scene
@@ -434,18 +444,27 @@ def _point(name, family, method, formulation, setting, run, post, ref: Reference
     return Point(name, family, method, formulation, setting, t_run, int(nfev), err, note)
 
 
-def sweep_ours(name: str, path: Path, ref: Reference, formulation: str, method: str, cfg: Settings) -> Curve:
-    """One method of ours in one formulation over its tolerances (adaptive) or steps (fixed)."""
+def sweep_ours(name: str, path: Path, ref: Reference, formulation: str, method: str,
+               cfg: Settings) -> Curve | None:
+    """One method of ours in one formulation over its tolerances (adaptive) or steps (fixed);
+    None when the scene refuses the method in this formulation (e.g. a splitting needs
+    Euler–Poisson variables and conservative effects)."""
     over = dict(cfg.scene_overrides, formulation=formulation, method=method)
-    try:  # derive and compile this formulation's model outside the timing
-        ours(path, **dict(over, method="dop853"), rtol=1e-4, atol=1e-6)
-    except (IntegrationError, ValueError):
+    t_end = float(cfg.scene_overrides.get("t_end", 0) or _scene_simulate(path)["t_end"])
+    samples = int(cfg.scene_overrides.get("samples", 0) or _scene_simulate(path).get("samples", 1001))
+    dt_out = t_end / (samples - 1)
+    try:  # derive and compile this formulation's model and method outside the timing
+        if method in FIXED:
+            ours(path, **over, h=dt_out * (1 + 1e-9))
+        else:
+            ours(path, **over, rtol=1e-4, atol=1e-6)
+    except IntegrationError:
         pass
+    except ValueError as exc:
+        tqdm.write(f"{name}: {method} / {formulation}: skipped ({(str(exc).splitlines() or ['?'])[0][:120]})")
+        return None
     points = []
     if method in FIXED:
-        t_end = float(cfg.scene_overrides.get("t_end", 0) or _scene_simulate(path)["t_end"])
-        samples = int(cfg.scene_overrides.get("samples", 0) or _scene_simulate(path).get("samples", 1001))
-        dt_out = t_end / (samples - 1)
         prev = math.inf
         for k in range(cfg.max_refinements):
             h = dt_out / 2**k * (1 + 1e-9)  # a hair above dt_out / 2**k: exactly 2**k steps per interval
@@ -587,7 +606,9 @@ def work_precision(cfg: Settings, name: str, fams: list[str]) -> dict:
         for fam, form, method in bar:
             bar.set_postfix_str(f"{method} / {form}")
             if fam == "ours":
-                curves.append(sweep_ours(name, path, ref, form, method, cfg))
+                curve = sweep_ours(name, path, ref, form, method, cfg)
+                if curve is not None:
+                    curves.append(curve)
             else:
                 curves.append(sweep_contender(name, probs[form], ref, fam, method, cfg))
     return {"scene": name, "title": data.get("title", name), "auto": auto, "reference": ref.label,
@@ -598,8 +619,9 @@ def work_precision(cfg: Settings, name: str, fams: list[str]) -> dict:
             "t_end": float(data["simulate"]["t_end"]), "samples": int(data["simulate"].get("samples", 1001))}
 
 
-_COLORS = {"dop853": "C0", "rk4": "C1", "gauss4": "C2", "gauss6": "C3",
-           "scipy-dop853": "C4", "scipy-lsoda": "C5", "scipy-radau": "C6",
+_COLORS = {"dop853": "C0", "rk4": "C1", "gauss4": "C2", "gauss6": "C3", "splitting2": "tab:olive",
+           "splitting4": "tab:brown", "splitting6": "tab:pink",
+           "scipy-dop853": "C4", "scipy-lsoda": "C5", "scipy-radau": "C6", "scipy-odeint": "navy",
            "casadi-cvodes-adams": "C7", "casadi-cvodes-bdf": "C8", "casadi-idas": "C9", "pydy-odeint": "k"}
 _STYLES = {"reduced": "-", "euler-angles": "--", "quaternion": ":", "euler-poisson": "-."}
 _MARKERS = {"ours": "o", "scipy": "s", "casadi": "^", "pydy": "D"}
