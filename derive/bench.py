@@ -465,14 +465,16 @@ def sweep_ours(name: str, path: Path, ref: Reference, formulation: str, method: 
         return None
     points = []
     if method in FIXED:
-        prev = math.inf
+        prev, worse = math.inf, 0
         for k in range(cfg.max_refinements):
             h = dt_out / 2**k * (1 + 1e-9)  # a hair above dt_out / 2**k: exactly 2**k steps per interval
             pt = _point(name, "ours", method, formulation, f"h={h:.4g}", lambda: ours(path, **over, h=h),
                         lambda a: a, ref, cfg.repeats, cfg)
             points.append(pt)
+            worse = worse + 1 if pt.ok and pt.error > prev else 0
             if pt.ok and (pt.error < ERROR_FLOOR or pt.time > cfg.cap
-                          or (pt.error < 1e-10 and pt.error > 0.5 * prev)):  # rounding-limited
+                          or (pt.error < 1e-10 and pt.error > 0.5 * prev)  # rounding-limited
+                          or worse >= 2):  # round-off growing with the step count: smaller h only costs
                 break
             prev = pt.error if pt.ok else math.inf
     else:
