@@ -75,7 +75,8 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
             "time_to_tilt", {"angle": (math.pi / 2, "rad", "the tilt threshold")}),
     Measure("nfev", "", "right-hand-side evaluations (the dense stages of every step included)",
             "stats"),
-    Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end", "final"),
+    Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
+            "from the start alone: equal to a sampled run's modulo 2 pi)", "final"),
 )}
 
 DEFAULT = ("beta_max", "beta_min", "energy_drift", "nfev")

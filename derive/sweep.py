@@ -497,8 +497,13 @@ def _progress_bar(total, progress):
     return tqdm(total=total, unit="pt", disable=not progress, desc="sweep", leave=False)
 
 
+def _star_chunk(args):
+    return run_chunk(*args)
+
+
 def _local(tasks, submit_args, progress, processes):
-    import concurrent.futures as cf
+    """In this process when the sweep is small, else a pool of ``processes`` (fork where the
+    system has it: the children inherit the loaded library). Ctrl-C terminates the pool."""
     import multiprocessing as mp
 
     results = {}
@@ -509,18 +514,22 @@ def _local(tasks, submit_args, progress, processes):
                 bar.update(len(idx))
             return results
         ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
-        pool = cf.ProcessPoolExecutor(max_workers=processes, mp_context=ctx)
-        futures = {}
+        pool = ctx.Pool(processes=min(processes, len(tasks)))
         try:
-            futures = {pool.submit(run_chunk, *submit_args(idx)): k for k, idx in enumerate(tasks)}
-            for fut in cf.as_completed(futures):
-                k = futures[fut]
-                results[k] = fut.result()
-                bar.update(len(tasks[k]))
+            pending = [pool.apply_async(_star_chunk, (submit_args(idx),)) for idx in tasks]
+            while len(results) < len(tasks):
+                for k, job in enumerate(pending):
+                    if k not in results and job.ready():
+                        results[k] = job.get()
+                        bar.update(len(tasks[k]))
+                if len(results) < len(tasks):
+                    pending[min(set(range(len(tasks))) - set(results))].wait(0.05)
         except BaseException:
-            pool.shutdown(wait=False, cancel_futures=True)
+            pool.terminate()
+            pool.join()
             raise
-        pool.shutdown()
+        pool.close()
+        pool.join()
     return results
 
 
@@ -550,9 +559,10 @@ def _dask(tasks, submit_args, progress, workers, scheduler):
         return results
     except BaseException:
         if futures:
-            client.cancel(futures)
+            client.cancel(futures, force=True)
         raise
     finally:
+        # (after Ctrl-C the futures are cancelled; a worker busy in a chunk finishes that C call)
         client.close()
         if cluster is not None:
             cluster.close()
