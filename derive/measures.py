@@ -16,11 +16,14 @@ Contract of an entry (:class:`Measure`):
 3. ``options``: {option: (default, unit, one-line meaning)} — read from the sweep file's
    ``[measure.<name>]`` table and passed to the compiled loop through ``config`` (index
    ``CONFIG``). Only ``time_to_tilt`` has one (``angle``).
+4. ``needs``: the compiled loop's work flags (``CONFIG``): ``steps`` runs the per-step hook
+   (the dense output is then formed on every accepted step: DOP853's three dense stages per
+   step, counted in ``nfev``, plus the output map at each step end); ``flip_time`` and
+   ``tilt_time`` locate those times. A sweep asking only for ``nfev`` and ``final_state`` runs
+   the plain loop's work.
 
-The accumulators (``SLOTS``) are all computed on every measured run (each costs a compare or
-two per step; the extrema search runs only at the few turning points); the dense output is
-formed on every accepted step, which adds the DOP853 dense stages' three right-hand-side
-evaluations to each step (counted in ``nfev``).
+The accumulators (``SLOTS``) are all updated whenever the hook runs (a compare or two per
+step; the extrema search runs only at the turning points).
 
 Conventions: beta is the z-y-z nutation angle in [0, pi] (the output map's, made canonical);
 omega2 the body-frame component ω̃₂; energy T + V; p_alpha, p_gamma the conjugate momenta.
@@ -36,8 +39,8 @@ import numpy as np
 #: The compiled accumulators, in the order of the C enum (rendered from this tuple).
 SLOTS = ("beta_max", "beta_min", "energy_drift", "p_alpha_drift", "p_gamma_drift", "flips",
          "time_to_flip", "time_to_tilt")
-#: config[] of the compiled loop: option -> index.
-CONFIG = {("time_to_tilt", "angle"): 0}
+#: config[] of the compiled loop: the option values and the work flags a measure ``needs``.
+CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3}
 #: The outputs the compiled loop reads (by name; their indices come from the model's outputs).
 READS = ("beta", "energy", "omega2", "p_alpha", "p_gamma")
 #: The outputs ``final_state`` reports at t_end.
@@ -52,6 +55,7 @@ class Measure:
     reads: str  # "slot" | "stats" | "final"
     slot: str | None = None
     options: dict = field(default_factory=dict)
+    needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "flip_time", "tilt_time"
 
     @property
     def columns(self) -> tuple[str, ...]:
@@ -60,19 +64,22 @@ class Measure:
 
 REGISTRY: dict[str, Measure] = {m.name: m for m in (
     Measure("beta_max", "rad", "largest nutation angle beta, located on the dense output", "slot",
-            "beta_max"),
+            "beta_max", needs=("steps",)),
     Measure("beta_min", "rad", "smallest nutation angle beta, located on the dense output", "slot",
-            "beta_min"),
-    Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift"),
+            "beta_min", needs=("steps",)),
+    Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift",
+            needs=("steps",)),
     Measure("p_alpha_drift", "kg m^2/s", "max over the steps of |p_alpha - p_alpha(0)|", "slot",
-            "p_alpha_drift"),
+            "p_alpha_drift", needs=("steps",)),
     Measure("p_gamma_drift", "kg m^2/s", "max over the steps of |p_gamma - p_gamma(0)|", "slot",
-            "p_gamma_drift"),
-    Measure("flips", "", "sign changes of omega2 (body frame) between step ends", "slot", "flips"),
+            "p_gamma_drift", needs=("steps",)),
+    Measure("flips", "", "sign changes of omega2 (body frame) between step ends", "slot", "flips",
+            needs=("steps",)),
     Measure("time_to_flip", "s", "first sign change of omega2, on the dense output (NaN: none)",
-            "slot", "time_to_flip"),
+            "slot", "time_to_flip", needs=("steps", "flip_time")),
     Measure("time_to_tilt", "s", "first time beta exceeds the option angle (NaN: never)", "slot",
-            "time_to_tilt", {"angle": (math.pi / 2, "rad", "the tilt threshold")}),
+            "time_to_tilt", {"angle": (math.pi / 2, "rad", "the tilt threshold")},
+            needs=("steps", "tilt_time")),
     Measure("nfev", "", "right-hand-side evaluations (the dense stages of every step included)",
             "stats"),
     Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
@@ -82,11 +89,18 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
 DEFAULT = ("beta_max", "beta_min", "energy_drift", "nfev")
 
 
-def config_of(options: dict) -> np.ndarray:
-    """The compiled loop's config[] from {measure: {option: value}} (defaults filled in)."""
-    cfg = np.zeros(max(CONFIG.values()) + 1)
-    for (name, opt), k in CONFIG.items():
-        cfg[k] = float(options.get(name, {}).get(opt, REGISTRY[name].options[opt][0]))
+def config_of(names, options: dict | None = None) -> np.ndarray:
+    """The compiled loop's config[] for the measures ``names``: the options ({measure: {option:
+    value}}, defaults filled in) and the work flags they need."""
+    options = options or {}
+    cfg = np.zeros(len(CONFIG))
+    for name in names:
+        m = REGISTRY[name]
+        for flag in m.needs:
+            cfg[CONFIG[flag]] = 1.0
+    for m in REGISTRY.values():
+        for opt, (default, _, _) in m.options.items():
+            cfg[CONFIG[opt]] = float(options.get(m.name, {}).get(opt, default))
     return cfg
 
 
@@ -117,7 +131,7 @@ def source(desc, method: str) -> str:
 
     idx = {f"i_{n}": desc.outputs.index(n) for n in READS}
     return environment().get_template("c/measures.c.j2").render(
-        prefix=desc.name, method=method, slots=SLOTS, **idx)
+        prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, **idx)
 
 
 class MeasureKernel:

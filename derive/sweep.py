@@ -635,7 +635,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
     s = sp.scene.simulate
     t = np.array([0.0, s.t_end])
     args = (s.rtol, s.atol, 0.0, s.max_steps)
-    config = ms.config_of(sp.options)
+    config = ms.config_of(sp.measures, sp.options)
     run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
     parallel = workers or (1 if scheduler else None) or processes or _cpus()
     tasks = _chunks(run, parallel if scheduler is None else 8)
@@ -790,7 +790,7 @@ def _warm_args():
                          "simulate": {"t_end": 1.0}},
                "vary": {"initial": {"beta": {"values": [0.8]}}}})
     return (sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-8, 1e-12, 0.0, 1000),
-            ms.config_of({}))
+            ms.config_of(ms.DEFAULT))
 
 
 # ``derive.sweep`` is both this module and the API function ``derive.sweep(spec, ...)``: importing
