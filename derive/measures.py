@@ -12,7 +12,8 @@ Contract of an entry (:class:`Measure`):
    * ``"slot"``: an accumulator of ``templates/c/measures.c.j2`` (``slot``), updated by the
      driver's hook after every accepted step, with the step's dense output at hand;
    * ``"stats"``: the solver's statistics record (``nfev``);
-   * ``"final"``: the outputs at t_end (the output map, in C).
+   * ``"final"``: the outputs at t_end (the output map, in C);
+   * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min).
 3. ``options``: {option: (default, unit, one-line meaning)} — read from the sweep file's
    ``[measure.<name>]`` table and passed to the compiled loop through ``config`` (index
    ``CONFIG``). Only ``time_to_tilt`` has one (``angle``).
@@ -52,8 +53,9 @@ class Measure:
     name: str
     unit: str
     doc: str
-    reads: str  # "slot" | "stats" | "final"
+    reads: str  # "slot" | "stats" | "final" | "slots" (formula of the accumulators)
     slot: str | None = None
+    formula: object = None  # reads == "slots": {slot: (N,) array} -> (N,) array
     options: dict = field(default_factory=dict)
     needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "flip_time", "tilt_time"
 
@@ -67,6 +69,9 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
             "beta_max", needs=("steps",)),
     Measure("beta_min", "rad", "smallest nutation angle beta, located on the dense output", "slot",
             "beta_min", needs=("steps",)),
+    Measure("nutation", "rad", "beta_max - beta_min: the nutation amplitude (a top released at a "
+            "turning point)", "slots", formula=lambda r: r["beta_max"] - r["beta_min"],
+            needs=("steps",)),
     Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift",
             needs=("steps",)),
     Measure("p_alpha_drift", "kg m^2/s", "max over the steps of |p_alpha - p_alpha(0)|", "slot",
@@ -78,7 +83,7 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
     Measure("time_to_flip", "s", "first sign change of omega2, on the dense output (NaN: none)",
             "slot", "time_to_flip", needs=("steps", "flip_time")),
     Measure("time_to_tilt", "s", "first time beta exceeds the option angle (NaN: never)", "slot",
-            "time_to_tilt", {"angle": (math.pi / 2, "rad", "the tilt threshold")},
+            "time_to_tilt", options={"angle": (math.pi / 2, "rad", "the tilt threshold")},
             needs=("steps", "tilt_time")),
     Measure("nfev", "", "right-hand-side evaluations (the dense stages of every step included)",
             "stats"),
@@ -113,6 +118,8 @@ def read(names, desc, res, stats, final) -> dict:
         if m.reads == "slot":
             values = res[:, SLOTS.index(m.slot)]
             out[name] = values.astype(np.int64) if name == "flips" and np.isfinite(values).all() else values
+        elif m.reads == "slots":
+            out[name] = m.formula({s: res[:, k] for k, s in enumerate(SLOTS)})
         elif m.reads == "stats":
             out[name] = stats["nfev"].astype(np.int64)
         else:

@@ -75,7 +75,7 @@ def test_beta_extrema_against_exact_turning_points():
     scene = {**REF, "simulate": {"t_end": 10.0, "rtol": 1e-11, "atol": 1e-14}}
     spec = {"scene": scene, "random": {"n": 6, "seed": 3, "initial": {
         "beta": {"low": 0.3, "high": 1.4}, "beta_dot": {"low": -0.5, "high": 0.5}}},
-        "measures": ["beta_max", "beta_min"]}
+        "measures": ["beta_max", "beta_min", "nutation"]}
     res = derive.sweep(spec, processes=1)
     assert (res.status == "ok").all()
     worst = 0.0
@@ -88,6 +88,8 @@ def test_beta_extrema_against_exact_turning_points():
                     abs(res.measures["beta_min"][i] - min(turning)))
         # the largest *sample* of a 1001-point output is visibly worse: the search matters
     assert worst < 1e-7
+    assert np.array_equal(res.measures.get("nutation", res.measures["beta_max"] - res.measures["beta_min"]),
+                          res.measures["beta_max"] - res.measures["beta_min"])
 
 
 def test_time_to_tilt_and_flip_are_located_on_the_dense_output():
