@@ -37,14 +37,18 @@ def _measure_label(name: str) -> str:
 
 
 def _heavy_top(scene):
-    """(I1, I3, M g l, α̇₀) when the scene is a heavy symmetric top without damping, else None."""
-    if scene is None or scene.effects != ("gravity",) or scene.body.I1 != scene.body.I2:
+    """(I1, I3, M g l, α̇₀) when the scene is a heavy symmetric top (a symmetric body whose
+    effects are all conservative and axisymmetric, with M, g, l: the Lagrange top), else None."""
+    from . import effects
+
+    if scene is None or not scene.symmetric or not scene.initial.has_rates:
         return None
-    g = scene.gravity
-    ini = scene.initial
-    if not ini.has_rates:
+    if not all(e.conservative and e.axisymmetric for e in effects.lookup(scene.effects)):
         return None
-    return scene.body.I1, scene.body.I3, g.M * g.g * g.l, ini.alpha_dot
+    v = scene.param_values()
+    if not {"M", "g", "l"} <= set(v):
+        return None
+    return scene.body.I1, scene.body.I3, v["M"] * v["g"] * v["l"], scene.initial.alpha_dot
 
 
 def _spin_curves(res, beta):
