@@ -27,6 +27,7 @@ import functools
 import importlib.util
 import math
 import operator
+import time
 import tomllib
 import warnings
 from dataclasses import dataclass, field
@@ -231,6 +232,10 @@ def solve_casadi(prob: Problem, method: str, rtol: float, atol: float, setup=Non
 # PyDy
 
 
+#: formulation -> seconds PyDy took to generate and Cython-compile its rhs (the first time).
+PYDY_BUILD_TIME: dict[str, float] = {}
+
+
 @functools.cache
 def _pydy_rhs(formulation: str):
     """The baseline equations as SymPy expressions through PyDy's ODE function generator
@@ -247,9 +252,12 @@ def _pydy_rhs(formulation: str):
     sym = Problem("", formulation, dict(zip(names, consts)), [], np.zeros(2))
     rhs, _ = sym.functions(sin=sp.sin, cos=sp.cos, values=list)
     expr = sp.Matrix(rhs(0, [*coords, *speeds]))
+    t0 = time.perf_counter()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        return generate_ode_function(expr, list(coords), list(speeds), list(consts), generator="cython")
+        f = generate_ode_function(expr, list(coords), list(speeds), list(consts), generator="cython")
+    PYDY_BUILD_TIME[formulation] = time.perf_counter() - t0
+    return f
 
 
 def pydy_setup(prob: Problem, method: str = "pydy-odeint"):
