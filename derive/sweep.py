@@ -533,7 +533,9 @@ def _local(tasks, submit_args, progress, processes):
     return results
 
 
-def _dask(tasks, submit_args, progress, workers, scheduler):
+def _dask(run, submit_args, progress, workers, scheduler):
+    """The chunks through a Dask cluster (a LocalCluster of ``workers`` processes, or the one at
+    ``scheduler``), cut for its worker count. Returns (tasks, results)."""
     import logging
 
     from dask.distributed import Client, LocalCluster, as_completed
@@ -548,6 +550,7 @@ def _dask(tasks, submit_args, progress, workers, scheduler):
         client = Client(scheduler)
     futures = []
     try:
+        tasks = _chunks(run, max(1, sum(client.nthreads().values())))
         futures = [client.submit(run_chunk, *submit_args(idx), pure=False) for idx in tasks]
         index = {f.key: k for k, f in enumerate(futures)}
         results = {}
@@ -556,7 +559,7 @@ def _dask(tasks, submit_args, progress, workers, scheduler):
                 k = index[fut.key]
                 results[k] = fut.result()
                 bar.update(len(tasks[k]))
-        return results
+        return tasks, results
     except BaseException:
         if futures:
             client.cancel(futures, force=True)
@@ -637,16 +640,16 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
     args = (s.rtol, s.atol, 0.0, s.max_steps)
     config = ms.config_of(sp.measures, sp.options)
     run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
-    parallel = workers or (1 if scheduler else None) or processes or _cpus()
-    tasks = _chunks(run, parallel if scheduler is None else 8)
+    processes = processes or _cpus()
 
     def submit_args(idx):
         return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config)
 
     if workers is None and scheduler is None:
-        results = _local(tasks, submit_args, progress, processes or _cpus())
+        tasks = _chunks(run, processes)
+        results = _local(tasks, submit_args, progress, processes)
     else:
-        results = _dask(tasks, submit_args, progress, workers, scheduler)
+        tasks, results = _dask(run, submit_args, progress, workers, scheduler)
 
     n = sp.n
     res = np.full((n, len(ms.SLOTS)), np.nan)
