@@ -94,6 +94,14 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
 DEFAULT = ("beta_max", "beta_min", "energy_drift", "nfev")
 
 
+def owner(column: str) -> str | None:
+    """The measure that gives this result column (``final_beta`` -> ``final_state``), or None."""
+    for m in REGISTRY.values():
+        if column == m.name or column in m.columns:
+            return m.name
+    return None
+
+
 def config_of(names, options: dict | None = None) -> np.ndarray:
     """The compiled loop's config[] for the measures ``names``: the options ({measure: {option:
     value}}, defaults filled in) and the work flags they need."""

@@ -619,9 +619,9 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
     from .simulation import _explain
 
     if workers is not None and scheduler is not None:
-        raise SceneError("<sweep>: workers: give workers or scheduler, not both")
+        raise SceneError("--workers: give workers or scheduler, not both")
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
-        raise SceneError(f"<sweep>: workers: must be a positive integer, got {workers!r}")
+        raise SceneError(f"--workers: must be a positive integer, got {workers!r}")
     sp = load(spec)
     if measures:
         names = (measures,) if isinstance(measures, str) else tuple(measures)
@@ -629,10 +629,15 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
             if n not in ms.REGISTRY:
                 raise SceneError(f"{sp.source}: measure: unknown measure {n!r} (one of {', '.join(ms.REGISTRY)})")
         sp.measures = tuple(dict.fromkeys(names))
-    if add_measure is not None:
-        if add_measure not in ms.REGISTRY:
-            raise SceneError(f"--measure: unknown measure {add_measure!r} (one of {', '.join(ms.REGISTRY)})")
-        sp.measures = tuple(dict.fromkeys((*sp.measures, add_measure)))
+    if add_measure is not None:  # the column to plot: a measure's (final_beta) or a measure
+        name = ms.owner(add_measure)
+        if name is None:
+            raise SceneError(f"{sp.source}: --measure: unknown measure {add_measure!r} "
+                             f"(one of {', '.join(ms.REGISTRY)})")
+        if len(ms.REGISTRY[name].columns) > 1 and add_measure == name:
+            raise SceneError(f"{sp.source}: --measure: {name} has several columns; plot one of "
+                             f"{', '.join(ms.REGISTRY[name].columns)}")
+        sp.measures = tuple(dict.fromkeys((*sp.measures, name)))
     desc = catalogue.describe(sp.key)
     ms.MeasureKernel.load(desc, sp.method)  # compile here, once, before any worker needs it
     s = sp.scene.simulate

@@ -232,3 +232,15 @@ def test_measure_registry_and_strict_c(tmp_path):
                        capture_output=True, text=True, cwd=tmp_path, timeout=120)
     assert p.returncode == 0, p.stderr
     assert MeasureKernel.load(desc, "dop853") is MeasureKernel.load(desc, "dop853")
+
+
+def test_plot_measure_is_one_column_and_the_api_is_callable_both_ways():
+    spec = _spec(measures=["nfev"])
+    with pytest.raises(SceneError, match="final_state has several columns"):
+        derive.sweep(spec, add_measure="final_state", processes=1)
+    res = derive.sweep(spec, add_measure="final_beta", processes=1)
+    assert res.measure_names == ("nfev", "final_state") and "final_beta" in res.measures
+    import derive.sweep as module  # the module is callable too (it shadows the function)
+
+    again = module(spec, processes=1)
+    assert np.array_equal(again.measures["nfev"], res.measures["nfev"])
