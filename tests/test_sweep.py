@@ -244,3 +244,21 @@ def test_plot_measure_is_one_column_and_the_api_is_callable_both_ways():
 
     again = module(spec, processes=1)
     assert np.array_equal(again.measures["nfev"], res.measures["nfev"])
+
+
+def test_extrema_inside_the_first_and_the_last_step():
+    """A turning point inside the first step (released just past it) or the last one (t_end
+    just past it) has no discrete neighbour on one side; it is still found."""
+    exact = heavy_top(1.0, 0.5, 1.0, 1.0, 1.0, 0.0, 0.8, 0.0, -0.4, 0.3, 6.0, np.array([0.0, 1.0]))
+    bmax = 2 * math.asin(math.sqrt(exact.info["y_roots"][1]))  # first reached at t = 1.046
+    base = {**REF, "simulate": {"t_end": 1.0, "rtol": 1e-11, "atol": 1e-14}}
+    spec = {"scene": base, "vary": {"initial": {"beta": {"values": [0.8]}}}, "measures": ["beta_max"]}
+    for t_end in np.linspace(1.048, 1.09, 8):
+        spec["scene"] = {**base, "simulate": {**base["simulate"], "t_end": float(t_end)}}
+        assert abs(derive.sweep(spec, processes=1).measures["beta_max"][0] - bmax) < 1e-9
+    for bd in (-1e-3, -1e-2):  # the minimum just after the release
+        ex = heavy_top(1.0, 0.5, 1.0, 1.0, 1.0, 0.0, 0.8, 0.0, -0.4, bd, 6.0, np.array([0.0, 1.0]))
+        spec["scene"] = {**base, "initial": {**base["initial"], "beta_dot": bd}}
+        spec["measures"] = ["beta_min"]
+        bmin = 2 * math.asin(math.sqrt(ex.info["y_roots"][0]))
+        assert abs(derive.sweep(spec, processes=1).measures["beta_min"][0] - bmin) < 1e-9
