@@ -262,3 +262,11 @@ def test_extrema_inside_the_first_and_the_last_step():
         spec["measures"] = ["beta_min"]
         bmin = 2 * math.asin(math.sqrt(ex.info["y_roots"][0]))
         assert abs(derive.sweep(spec, processes=1).measures["beta_min"][0] - bmin) < 1e-9
+
+
+def test_bench_throughput_runs():
+    """The throughput report's function (figures in docs/sweeps.md; no speed asserted here)."""
+    from derive.sweep import bench_throughput
+
+    out = bench_throughput(n=20, scipy_n=2)
+    assert out["per_traj_sweep"] > 0 and out["per_traj_scipy"] > 0 and out["nfev_mean"] > 100
