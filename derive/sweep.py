@@ -544,7 +544,7 @@ def _dask(run, submit_args, progress, workers, scheduler):
     cluster = None
     if scheduler is None:
         cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=logging.ERROR)
+                               dashboard_address=":0", silence_logs=logging.ERROR)
         client = Client(cluster)
     else:
         client = Client(scheduler)
@@ -774,9 +774,9 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
         big_spec = spec(big, seed=2)
         times = {"local_2proc": [], "dask_1w": [], "dask_2w": []}
         with LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
-                          dashboard_address=None) as c1, \
+                          dashboard_address=":0") as c1, \
                 LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                             dashboard_address=None) as c2:
+                             dashboard_address=":0") as c2:
             for cluster in (c1, c2):
                 with Client(cluster) as c:
                     c.run(_warm_worker)  # every worker loads the library once, untimed
