@@ -182,6 +182,8 @@ def load(spec) -> Spec:
     sc = data["scene"]
     if isinstance(sc, str):
         path = folder / sc
+        if not path.is_file():
+            _fail(source, "scene", f"no scene file {sc!r} (a path relative to the sweep file)")
         base = load_scene(str(path))  # its own errors name the scene file
         with open(path, "rb") as f:
             raw = tomllib.load(f)
