@@ -166,6 +166,11 @@ class MeasureKernel:
         guard = getattr(lib, f"{desc.name}_interrupt_guard")
         guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
         self._guard = guard
+        # The measures' accumulators are static in the library: one run at a time (a Dask
+        # worker with several threads would otherwise mix trajectories).
+        import threading
+
+        self._lock = threading.Lock()
 
     @classmethod
     def load(cls, desc, method: str) -> "MeasureKernel":
@@ -208,13 +213,14 @@ class MeasureKernel:
         res = np.empty((max(nb, 1), len(SLOTS)))
         ptr = lambda a: a.ctypes.data  # noqa: E731
         main = threading.current_thread() is threading.main_thread()
-        if main:
-            self._guard(1)
-        try:
-            rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, ptr(config), ptr(y),
-                          ptr(out), ptr(st), ptr(res))
-        finally:
-            interrupted = self._guard(0) if main else 0
+        with self._lock:
+            if main:
+                self._guard(1)
+            try:
+                rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, ptr(config), ptr(y),
+                              ptr(out), ptr(st), ptr(res))
+            finally:
+                interrupted = self._guard(0) if main else 0
         if interrupted or rc == Status.INTERRUPTED:
             raise KeyboardInterrupt
         return res[:nb], out, st[:nb]
