@@ -565,6 +565,14 @@ def _dask(run, submit_args, progress, workers, scheduler):
     except BaseException:
         if futures:
             client.cancel(futures, force=True)
+        if cluster is not None:  # ours: stop its workers now, mid-chunk
+            import contextlib
+
+            with contextlib.suppress(Exception):
+                for w in list(cluster.workers.values()):
+                    proc = getattr(getattr(w, "process", None), "process", None)
+                    if proc is not None:
+                        proc.terminate()
         raise
     finally:
         # (after Ctrl-C the futures are cancelled; a worker busy in a chunk finishes that C call)
