@@ -133,7 +133,7 @@ class Settings:
     # targets (derive.bench_targets)
     ref_t_end: float = 10.0
     ref_repeats: int = 7
-    fixed_cost_calls: int = 200
+    fixed_cost_calls: int = 1500
     batch_n: int = 1000
     batch_t_end: float = 10.0
     batch_scipy_n: int = 5
@@ -153,7 +153,7 @@ QUICK = Settings("quick", rtols=_decades(4, 13, half=False), max_refinements=9, 
                  long_run=0.2, cap=0.5, scenes=tuple(WP_SCENES), all_formulations_fixed=False,
                  all_baseline_forms=False, other_formulations=False,
                  loop_calls=1_000_000, loop_repeats=9, numpy_repeats=7, python_calls=5_000, drift_steps=200_000,
-                 ref_repeats=3, fixed_cost_calls=50, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1)
+                 ref_repeats=3, fixed_cost_calls=300, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1)
 SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, other_repeats=1, long_run=0.0,
                  cap=1.0, scenes=("looping_top",), families=("scipy",), all_baseline_forms=False,
                  other_formulations=False, all_formulations_fixed=False,
@@ -192,6 +192,22 @@ def per_call(fn, calls: int, blocks: int = 7) -> float:
             fn()
         out.append((time.perf_counter() - t0) / n)
     return statistics.median(out)
+
+
+def interleaved(fns, calls: int, blocks: int = 15) -> list[float]:
+    """Per-call time of each function (s): blocks of ``calls // blocks`` calls, the functions
+    taking turns block by block (so a change of machine load hits all alike), median per function."""
+    n = max(1, calls // blocks)
+    for fn in fns:
+        fn()
+    out = [[] for _ in fns]
+    for _ in range(blocks):
+        for i, fn in enumerate(fns):
+            t0 = time.perf_counter()
+            for _ in range(n):
+                fn()
+            out[i].append((time.perf_counter() - t0) / n)
+    return [statistics.median(x) for x in out]
 
 
 def axis_error(axis: np.ndarray, ref: np.ndarray) -> float:

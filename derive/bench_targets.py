@@ -231,12 +231,12 @@ def fixed_cost(cfg) -> dict:
     setup = bc.scipy_setup(prob, "scipy-dop853")
     rtol = data["simulate"]["rtol"]
     derive.simulate(data)
-    t_ours = B.per_call(lambda: derive.simulate(data), cfg.fixed_cost_calls)
-    t_scipy = B.per_call(lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
-                         cfg.fixed_cost_calls)
     setup_o = bc.scipy_setup(prob, "scipy-odeint")
-    t_odeint = B.per_call(lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o),
-                          cfg.fixed_cost_calls)
+    t_ours, t_scipy, t_odeint = B.interleaved(
+        [lambda: derive.simulate(data),
+         lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
+         lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o)],
+        cfg.fixed_cost_calls)
     return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy, "odeint": t_odeint,
             "ratio_odeint": t_ours / t_odeint}
 
