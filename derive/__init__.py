@@ -28,7 +28,7 @@ def simulate_batch(scenes, **overrides):
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
-    """Run a parameter sweep (a sweep-file path or a dict shaped like one). See `derive.sweep`."""
-    from .sweep import sweep as _sweep
+    """Run a parameter sweep (a sweep-file path or a dict shaped like one). See `derive.sweeps`."""
+    from .sweeps import sweep as _sweep
 
     return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress, **kwargs)

@@ -251,7 +251,7 @@ def parser() -> argparse.ArgumentParser:
                         help="start a Dask LocalCluster with N worker processes")
     engine.add_argument("--scheduler", default=None, help="address of a running Dask scheduler "
                                                           "(tcp://host:port)")
-    w.set_defaults(func=lambda args: __import__("derive.sweep", fromlist=["cli"]).cli(args))
+    w.set_defaults(func=lambda args: __import__("derive.sweeps", fromlist=["cli"]).cli(args))
 
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
     c.add_argument("--clear", action="store_true", help="remove every cached library")

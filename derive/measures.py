@@ -1,7 +1,7 @@
 """Measures of a trajectory, computed in the compiled loop while integrating (for sweeps).
 
 A measure is one registry entry (:data:`REGISTRY`): its name, unit, what it reads and, if it
-takes one, its option. Nothing else names a measure by a string; :mod:`derive.sweep` asks the
+takes one, its option. Nothing else names a measure by a string; :mod:`derive.sweeps` asks the
 registry which columns a measure gives and reads them from one compiled call.
 
 Contract of an entry (:class:`Measure`):

@@ -23,7 +23,7 @@ from .errors import SceneError
 
 
 def _label(key: str) -> str:
-    from .sweep import unit_of
+    from .sweeps import unit_of
 
     unit = unit_of(key)
     return f"{key} ({unit})" if unit else key

@@ -1,4 +1,4 @@
-"""Parameter sweeps (derive.sweep) and the measures computed in the compiled loop (derive.measures)."""
+"""Parameter sweeps (derive.sweeps) and the measures computed in the compiled loop (derive.measures)."""
 from __future__ import annotations
 
 import math
@@ -14,7 +14,7 @@ from derive import catalogue
 from derive.errors import SceneError
 from derive.exact import heavy_top
 from derive.measures import REGISTRY, MeasureKernel, source
-from derive.sweep import load
+from derive.sweeps import load
 
 REF = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,
@@ -234,16 +234,17 @@ def test_measure_registry_and_strict_c(tmp_path):
     assert MeasureKernel.load(desc, "dop853") is MeasureKernel.load(desc, "dop853")
 
 
-def test_plot_measure_is_one_column_and_the_api_is_callable_both_ways():
+def test_plot_measure_is_one_column_and_the_api_is_callable():
     spec = _spec(measures=["nfev"])
     with pytest.raises(SceneError, match="final_state has several columns"):
         derive.sweep(spec, add_measure="final_state", processes=1)
     res = derive.sweep(spec, add_measure="final_beta", processes=1)
     assert res.measure_names == ("nfev", "final_state") and "final_beta" in res.measures
-    import derive.sweep as module  # the module is callable too (it shadows the function)
+    from derive import sweeps  # the module (sweeps) does not shadow the function (sweep)
 
-    again = module(spec, processes=1)
+    again = derive.sweep(spec, processes=1)
     assert np.array_equal(again.measures["nfev"], res.measures["nfev"])
+    assert callable(derive.sweep) and callable(sweeps.sweep)
 
 
 def test_extrema_inside_the_first_and_the_last_step():
@@ -266,7 +267,7 @@ def test_extrema_inside_the_first_and_the_last_step():
 
 def test_bench_throughput_runs():
     """The throughput report's function (figures in docs/sweeps.md; no speed asserted here)."""
-    from derive.sweep import bench_throughput
+    from derive.sweeps import bench_throughput
 
     out = bench_throughput(n=20, scipy_n=2)
     assert out["per_traj_sweep"] > 0 and out["per_traj_scipy"] > 0 and out["nfev_mean"] > 100
@@ -277,7 +278,7 @@ def test_threads_sharing_a_library_get_their_own_trajectories():
     with several threads) are serialised and give the single-threaded numbers."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from derive.sweep import run_chunk
+    from derive.sweeps import run_chunk
 
     sp = load({"scene": REF, "random": {"n": 40, "seed": 5, "initial": {"beta": {"low": 0.3, "high": 1.2}}}})
     from derive.measures import config_of

@@ -836,13 +836,3 @@ t_end = 1.0
 
 def _reference_scene() -> dict:
     return tomllib.loads(_REFERENCE_SCENE)
-
-
-# ``derive.sweep`` is both this module and the API function ``derive.sweep(spec, ...)``: importing
-# the module replaces the package attribute, so the module itself is made callable.
-class _CallableModule(__import__("types").ModuleType):
-    def __call__(self, spec, **kwargs):
-        return sweep(spec, **kwargs)
-
-
-__import__("sys").modules[__name__].__class__ = _CallableModule
