@@ -21,6 +21,9 @@ The cache heals itself:
 
 No ``-ffast-math``: the solvers rely on IEEE semantics (non-finite checks, compensated
 summation). ``-std=c99`` also keeps GCC from contracting ``a*b + c`` into FMAs.
+``-fno-math-errno`` changes no value (nothing reads errno): it lets GCC fuse sin and cos of one
+angle into one sincos call and inline sqrt, which takes the output map from ~105 to ~64 ns per
+sample on the heavy top.
 """
 from __future__ import annotations
 
@@ -43,7 +46,7 @@ from pathlib import Path
 
 from .errors import CompilerError
 
-DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC")
+DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
 STRICT_FLAGS: tuple[str, ...] = ("-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic")
 # -O0: with the sanitizers, -O1 compiles the unrolled DOP853 stages ~7x slower.
