@@ -376,7 +376,7 @@ class ModelKernel:
                                  [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
             self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
-                                       [cl, vp, vp, vp, cl, *extra, vp, vp, vp])
+                                       [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
             self._guard = _interruptible(lib, p)
             if self._guard is not None:
@@ -463,17 +463,18 @@ class ModelKernel:
                    pole_check, base + 8 * size_out, base, _ptr(st))
         return out, y, pp, st[0]
 
-    def simulate_batch(self, inputs, ps, t, args):
+    def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,
-        stats (N,)); each bit-for-bit what ``simulate`` gives."""
+        stats (N,)); each bit-for-bit what ``simulate`` gives. With ``pole_check`` the first
+        start that fails it stops the batch (its status RANGE)."""
         nb, n = inputs.shape[0], t.shape[0]
         out = np.empty((nb, self.nout, n))
         y = np.empty((nb, n, self.ny))
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-        self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, _ptr(y),
-                   _ptr(out), _ptr(st))
+        self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
+                   _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
 
     def outputs_at(self, t, y, p) -> np.ndarray:

@@ -282,30 +282,38 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     def shared(sc):
         s = sc.simulate
         return (sc.symmetric, sc.effects, s.samples, s.t_end, choose_method(sc), s.rtol, s.atol,
-                s.h, s.max_steps)
+                s.h, s.max_steps, s.formulation)
 
     ref = shared(first)
     for sc in scs[1:]:
         if shared(sc) != ref:
             raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
-                             f"times, method and tolerances as {first.source}")
+                             f"times, method, tolerances and formulation as {first.source}")
     method = choose_method(first)
     if method in SCIPY_METHODS:
         raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
-    key = auto.batch_key(scs)
-    desc = catalogue.describe(key)
-    kernel = ModelKernel.load(desc, method)
+    h = None
     if compiled_method(method).driver != "adaptive" and first.simulate.h is None:
         h = min(default_step(sc) for sc in scs)
         for sc in scs:
             _check_budget(sc, method, h)
-        args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, h, first.simulate.max_steps)
-    else:
-        args = _settings(first, method, kernel)
     inputs = np.array([inputs_of(sc) for sc in scs])
-    ps = np.array([params_of(sc, desc) for sc in scs])
     t = first.t_out
-    out, y, ps, st = kernel.simulate_batch(inputs, ps, t, args)
+    # auto's plan for the batch: a formulation every scene accepts; a singular one runs with its
+    # pole check in C for every trajectory, and one refusal sends the whole batch to the next.
+    attempts = [(name, mode) for name, mode in auto.plan(first)
+                if all(REGISTRY[name].applicable(sc) is None for sc in scs)]
+    for formulation, pole_check in attempts:
+        desc = catalogue.describe((formulation, first.symmetric, first.effects))
+        kernel = ModelKernel.load(desc, method)
+        if h is not None:
+            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, h, first.simulate.max_steps)
+        else:
+            args = _settings(first, method, kernel)
+        ps = np.array([params_of(sc, desc) for sc in scs])
+        out, y, ps, st = kernel.simulate_batch(inputs, ps, t, args, pole_check)
+        if not (st["status"] == Status.RANGE).any():
+            break
     results = []
     for b, sc in enumerate(scs):
         if st[b]["status"]:

@@ -96,15 +96,20 @@ static int derive_euler_free_first_nonfinite(const double *v, int n)
     return -1;
 }
 
-/* A batch stopped by an interrupt: the trajectories not run say so. */
-static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_stats *st)
+/* A batch stopped early (an interrupt, a refused start): the trajectories not run say why. */
+static int derive_euler_free_rest_with(long from, long n_batch, derive_stats *st, int status)
 {
     long b;
     for (b = from; b < n_batch; ++b) {
         derive_euler_free_stats_init(st + b);
-        st[b].status = DERIVE_INTERRUPTED;
+        st[b].status = status;
     }
-    return DERIVE_INTERRUPTED;
+    return status;
+}
+
+static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_stats *st)
+{
+    return derive_euler_free_rest_with(from, n_batch, st, DERIVE_INTERRUPTED);
 }
 
 /* Measures (derive.sweep): a build with -DDERIVE_MEASURES also includes euler_free_measures.c
@@ -648,19 +653,20 @@ int euler_free_simulate_checked_dop853(const double *in, double *p, const double
 
 int euler_free_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st)
+        double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_free_simulate_dop853(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
-                rtol, atol, h0, max_steps, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        rc = euler_free_simulate_checked_dop853(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out,
+                n_out, rtol, atol, h0, max_steps, pole_check, y_work + b * n_out * euler_free_NY,
+                out + b * n_out * euler_free_NOBS, st + b);
         if (rc && !status)
             status = rc;
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -812,19 +818,20 @@ int euler_free_simulate_checked_rk4(const double *in, double *p, const double *t
 
 int euler_free_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
+        double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_free_simulate_rk4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
-                h, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        rc = euler_free_simulate_checked_rk4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out,
+                n_out, h, pole_check, y_work + b * n_out * euler_free_NY,
+                out + b * n_out * euler_free_NOBS, st + b);
         if (rc && !status)
             status = rc;
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1119,19 +1126,20 @@ int euler_free_simulate_checked_gauss4(const double *in, double *p, const double
 
 int euler_free_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+        double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_free_simulate_gauss4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
-                h, newton_tol, newton_maxiter, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        rc = euler_free_simulate_checked_gauss4(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out,
+                n_out, h, newton_tol, newton_maxiter, pole_check, y_work + b * n_out * euler_free_NY,
+                out + b * n_out * euler_free_NOBS, st + b);
         if (rc && !status)
             status = rc;
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1444,19 +1452,20 @@ int euler_free_simulate_checked_gauss6(const double *in, double *p, const double
 
 int euler_free_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st)
+        double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_free_simulate_gauss6(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
-                h, newton_tol, newton_maxiter, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        rc = euler_free_simulate_checked_gauss6(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out,
+                n_out, h, newton_tol, newton_maxiter, pole_check, y_work + b * n_out * euler_free_NY,
+                out + b * n_out * euler_free_NOBS, st + b);
         if (rc && !status)
             status = rc;
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1672,19 +1681,20 @@ int euler_free_simulate_checked_dop853_fixed(const double *in, double *p, const 
 
 int euler_free_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
+        double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_free_simulate_dop853_fixed(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
-                h, y_work + b * n_out * euler_free_NY, out + b * n_out * euler_free_NOBS, st + b);
+        rc = euler_free_simulate_checked_dop853_fixed(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out,
+                n_out, h, pole_check, y_work + b * n_out * euler_free_NY,
+                out + b * n_out * euler_free_NOBS, st + b);
         if (rc && !status)
             status = rc;
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }

@@ -34,7 +34,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, doub
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
 int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
+        double h, int pole_check, double *y_work, double *out, derive_stats *st);
 #endif
 
 /* splitting4: Lie-Poisson splitting, McLachlan's 5-stage composition, order 4, fixed step.
@@ -54,7 +54,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, doub
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
 int euler_poisson_sym_gravity_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
+        double h, int pole_check, double *y_work, double *out, derive_stats *st);
 #endif
 
 /* splitting6: Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step.
@@ -74,7 +74,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, doub
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
 int euler_poisson_sym_gravity_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
+        double h, int pole_check, double *y_work, double *out, derive_stats *st);
 #endif
 
 #endif /* EULER_POISSON_SYM_GRAVITY_SPLITTING_H */

@@ -277,20 +277,20 @@ int euler_poisson_sym_simulate_checked_splitting2(const double *in, double *p, c
 
 int euler_poisson_sym_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
+        double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_poisson_sym_simulate_splitting2(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out, n_out,
-                h, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+        rc = euler_poisson_sym_simulate_checked_splitting2(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
+                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
 #ifdef DERIVE_INTERRUPTED
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
 #endif
     }
     return status;
@@ -421,20 +421,20 @@ int euler_poisson_sym_simulate_checked_splitting4(const double *in, double *p, c
 
 int euler_poisson_sym_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
+        double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_poisson_sym_simulate_splitting4(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out, n_out,
-                h, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+        rc = euler_poisson_sym_simulate_checked_splitting4(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
+                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
 #ifdef DERIVE_INTERRUPTED
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
 #endif
     }
     return status;
@@ -565,20 +565,20 @@ int euler_poisson_sym_simulate_checked_splitting6(const double *in, double *p, c
 
 int euler_poisson_sym_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
+        double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     long b;
     int rc, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        rc = euler_poisson_sym_simulate_splitting6(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out, n_out,
-                h, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+        rc = euler_poisson_sym_simulate_checked_splitting6(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
+                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
 #ifdef DERIVE_INTERRUPTED
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
 #endif
     }
     return status;

@@ -88,9 +88,11 @@ int rigid_body_simulate_dop853(const double *in, double *p, const double *t_out,
  * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
 int rigid_body_simulate_checked_dop853(const double *in, double *p, const double *t_out,
         long n_out, double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
+/* N whole simulations; pole_check as above for each (the first refusal stops the batch with
+ * DERIVE_RANGE, as an interrupt stops it with DERIVE_INTERRUPTED). */
 int rigid_body_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double rtol, double atol, double h0, long max_steps, double *y_work, double *out, derive_stats *st);
+        double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
 
 /* rk4: classical Runge-Kutta, order 4, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -108,9 +110,11 @@ int rigid_body_simulate_rk4(const double *in, double *p, const double *t_out, lo
  * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
 int rigid_body_simulate_checked_rk4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
+/* N whole simulations; pole_check as above for each (the first refusal stops the batch with
+ * DERIVE_RANGE, as an interrupt stops it with DERIVE_INTERRUPTED). */
 int rigid_body_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
+        double h, int pole_check, double *y_work, double *out, derive_stats *st);
 
 /* gauss4: Gauss-Legendre, 2 stages, order 4, symplectic, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -132,9 +136,11 @@ int rigid_body_simulate_gauss4(const double *in, double *p, const double *t_out,
  * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
 int rigid_body_simulate_checked_gauss4(const double *in, double *p, const double *t_out,
         long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
+/* N whole simulations; pole_check as above for each (the first refusal stops the batch with
+ * DERIVE_RANGE, as an interrupt stops it with DERIVE_INTERRUPTED). */
 int rigid_body_simulate_batch_gauss4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+        double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
 
 /* gauss6: Gauss-Legendre, 3 stages, order 6, symplectic, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
@@ -156,9 +162,11 @@ int rigid_body_simulate_gauss6(const double *in, double *p, const double *t_out,
  * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
 int rigid_body_simulate_checked_gauss6(const double *in, double *p, const double *t_out,
         long n_out, double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
+/* N whole simulations; pole_check as above for each (the first refusal stops the batch with
+ * DERIVE_RANGE, as an interrupt stops it with DERIVE_INTERRUPTED). */
 int rigid_body_simulate_batch_gauss6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double newton_tol, int newton_maxiter, double *y_work, double *out, derive_stats *st);
+        double h, double newton_tol, int newton_maxiter, int pole_check, double *y_work, double *out, derive_stats *st);
 
 /* dop853_fixed: DOP853's order-8 formula on fixed steps, no error control (reference runs).
  *   h           maximum step size (> 0); steps land on every t_out
@@ -176,8 +184,10 @@ int rigid_body_simulate_dop853_fixed(const double *in, double *p, const double *
  * pass rigid_body_pole_clear(y0, p, pole_check) when pole_check is 1 or 2. */
 int rigid_body_simulate_checked_dop853_fixed(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
+/* N whole simulations; pole_check as above for each (the first refusal stops the batch with
+ * DERIVE_RANGE, as an interrupt stops it with DERIVE_INTERRUPTED). */
 int rigid_body_simulate_batch_dop853_fixed(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
+        double h, int pole_check, double *y_work, double *out, derive_stats *st);
 
 #endif /* RIGID_BODY_SOLVERS_H */
