@@ -18,11 +18,10 @@
 from __future__ import annotations
 
 import functools
-import math
 
 from . import catalogue
 from . import effects as fx
-from .formulations import POLE_CLEARANCE, REGISTRY
+from .formulations import REGISTRY
 from .solvers import DEFAULT_METHOD, compiled_methods, method_reason
 
 

@@ -206,7 +206,6 @@ class KernelSpec:
         """The template context: everything a template needs, already printed."""
         m = self.model
         pr = (lambda b: b.c()) if language == "c" else (lambda b: b.numpy())
-        expr = c_expr if language == "c" else np_expr
         nd = len(m.domain)
         rt, ro = pr(self.rhs)
         jt, jo = pr(self.jac)

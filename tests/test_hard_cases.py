@@ -9,7 +9,6 @@ import pytest
 
 import derive
 from derive.formulations import REGISTRY
-from derive import simulation
 
 I1, I3, M, G, L = 1.0, 0.4, 1.0, 9.81, 0.1
 CRIT = np.sqrt(4 * M * G * L * I1)  # the derived threshold p_γ = 2√(I₁Mgl)
