@@ -139,6 +139,13 @@ class Settings:
     batch_scipy_n: int = 5
     process_repeats: int = 5
     cold_runs: int = 2
+    # Lie-Poisson splitting against DOP853 and Gauss-Legendre (derive.splitting.bench_energy):
+    # (case, measure) pairs, the periods each run spans, the error target, a time budget per scan
+    splitting_cases: tuple[tuple[str, str], ...] = (("fast-top", "energy"), ("fast-top", "axis"),
+                                                    ("lagrange", "axis"), ("asymmetric", "energy"))
+    splitting_periods: float = 1e4
+    splitting_target: float = 1e-8
+    splitting_budget: float = 30.0
     lambdify_n: int = 100_000
 
 
@@ -153,7 +160,8 @@ QUICK = Settings("quick", rtols=_decades(4, 13, half=False), max_refinements=9, 
                  long_run=0.2, cap=0.5, scenes=tuple(WP_SCENES), all_formulations_fixed=False,
                  all_baseline_forms=False, other_formulations=False,
                  loop_calls=1_000_000, loop_repeats=9, numpy_repeats=7, python_calls=5_000, drift_steps=200_000,
-                 ref_repeats=3, fixed_cost_calls=300, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1)
+                 ref_repeats=3, fixed_cost_calls=300, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1,
+                 splitting_periods=1e3, splitting_budget=10.0)
 SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, other_repeats=1, long_run=0.0,
                  cap=1.0, scenes=("looping_top",), families=("scipy",), all_baseline_forms=False,
                  other_formulations=False, all_formulations_fixed=False,
@@ -161,7 +169,8 @@ SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, othe
                  loop_calls=20_000, loop_repeats=3,
                  numpy_sizes=(1_000,), numpy_repeats=3, python_calls=200, min_total=0.0, drift_steps=2_000,
                  ref_t_end=0.5, ref_repeats=1, fixed_cost_calls=3, batch_n=4, batch_t_end=0.2, batch_scipy_n=1,
-                 process_repeats=0, cold_runs=0, lambdify_n=1_000)
+                 process_repeats=0, cold_runs=0, lambdify_n=1_000,
+                 splitting_cases=(("fast-top", "axis"),), splitting_periods=20.0, splitting_budget=5.0)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -805,6 +814,23 @@ def write_points(results: dict, out: Path) -> None:
                                 p.nfev, f"{p.error:.6g}", p.note])
 
 
+def splitting_runs(cfg: Settings) -> list[dict]:
+    """Where the Lie–Poisson splitting pays: each (case, measure) of ``cfg.splitting_cases``
+    through :func:`derive.splitting.bench_energy` (each method at its cheapest setting that meets
+    the target over the periods; a failure is reported, not raised)."""
+    from . import splitting
+
+    rows = []
+    for case, measure in tqdm(cfg.splitting_cases, desc="splitting", unit="case", file=sys.stderr):
+        try:
+            rows.append(splitting.bench_energy(case, periods=cfg.splitting_periods,
+                                               target=cfg.splitting_target, measure=measure,
+                                               repeat=min(cfg.repeats, 3), budget=cfg.splitting_budget))
+        except Exception as exc:  # a failed part is reported; the bench goes on
+            rows.append({"case": case, "measure": measure, "failed": f"{type(exc).__name__}: {exc}"})
+    return rows
+
+
 def main(out: Path, quick: bool = False, smoke: bool = False, peers: bool = True) -> dict:
     """Run the benchmarks and write ``out/report.md``, ``out/wp_<scene>.png``, ``out/points.csv``
     and ``out/results.json``. ``quick``: fewer tolerances and repeats (about 2 minutes);
@@ -840,6 +866,8 @@ def main(out: Path, quick: bool = False, smoke: bool = False, peers: bool = True
 
     with tqdm(total=4, desc="drift", unit="method", file=sys.stderr) as bar:
         results["drift"] = drift(cfg, bar)
+
+    results["splitting"] = splitting_runs(cfg)
 
     results["elapsed"] = time.perf_counter() - start
     results["machine"]["load_average_end"] = list(os.getloadavg()) if hasattr(os, "getloadavg") else None
