@@ -117,7 +117,9 @@ def describe(key) -> Description:
     return _describe(_norm(key))
 
 
-describe.cache_info = lambda: _describe.cache_info()  # type: ignore[attr-defined]
+def cache_info():
+    """Hits and misses of :func:`describe` in this process (functools' cache_info)."""
+    return _describe.cache_info()
 
 
 @functools.lru_cache(maxsize=None)

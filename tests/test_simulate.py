@@ -155,9 +155,9 @@ def test_second_call_reuses_the_compiled_kernel():
 
     derive.simulate(top())
     loaded = dict(ModelKernel._cache)
-    before = catalogue.describe.cache_info()
+    before = catalogue.cache_info()
     derive.simulate(top(), rtol=1e-9)
-    after = catalogue.describe.cache_info()
+    after = catalogue.cache_info()
     assert ModelKernel._cache == loaded  # no new library compiled or loaded
     assert after.misses == before.misses and after.hits > before.hits
 
