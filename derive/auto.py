@@ -115,14 +115,9 @@ def model_key(scene, method: str | None = None) -> tuple:
     return (formulation(scene, method), scene.symmetric, scene.effects)
 
 
-def batch_key(scenes) -> tuple:
-    """One model for a batch: the common choice, else the cheapest formulation without a
-    singular set that every scene's ``applicable`` accepts."""
-    keys = {model_key(sc) for sc in scenes}  # the batch's shared method, so one library
-    if len(keys) == 1:
-        return keys.pop()
-    first = scenes[0]
-    for name in candidates(first):
-        if not REGISTRY[name].singular and all(REGISTRY[name].applicable(sc) is None for sc in scenes):
-            return (name, first.symmetric, first.effects)
-    raise AssertionError("no formulation without a singular set applies to every scene")
+def batch_plan(scenes) -> list[tuple[str, int]]:
+    """The plan for a batch that shares one model: the first scene's plan, kept to the
+    formulations every scene accepts (a singular one runs with its pole check for every
+    trajectory in C; one refusal sends the whole batch to the next)."""
+    return [(name, mode) for name, mode in plan(scenes[0])
+            if all(REGISTRY[name].applicable(sc) is None for sc in scenes)]

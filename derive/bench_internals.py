@@ -67,14 +67,15 @@ def own_batch_call(scenes):
     from .scene import load_scene
 
     scs = [load_scene(s) for s in scenes]
-    desc = catalogue.describe(auto.batch_key(scs))
+    formulation, pole_check = auto.batch_plan(scs)[0]
+    desc = catalogue.describe((formulation, scs[0].symmetric, scs[0].effects))
     method = sim.choose_method(scs[0])
     kernel = ModelKernel.load(desc, method)
     args = sim._settings(scs[0], method, kernel)
     inputs = np.array([sim.inputs_of(sc) for sc in scs])
     ps = np.array([sim.params_of(sc, desc) for sc in scs])
     t = scs[0].t_out
-    return lambda: kernel.simulate_batch(inputs, ps, t, args)
+    return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
 
 
 def heavy_top_expressions():

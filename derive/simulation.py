@@ -299,11 +299,7 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
             _check_budget(sc, method, h)
     inputs = np.array([inputs_of(sc) for sc in scs])
     t = first.t_out
-    # auto's plan for the batch: a formulation every scene accepts; a singular one runs with its
-    # pole check in C for every trajectory, and one refusal sends the whole batch to the next.
-    attempts = [(name, mode) for name, mode in auto.plan(first)
-                if all(REGISTRY[name].applicable(sc) is None for sc in scs)]
-    for formulation, pole_check in attempts:
+    for formulation, pole_check in auto.batch_plan(scs):
         desc = catalogue.describe((formulation, first.symmetric, first.effects))
         kernel = ModelKernel.load(desc, method)
         if h is not None:
