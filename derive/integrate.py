@@ -367,7 +367,7 @@ class ModelKernel:
         p = desc.name
         self.ny, self.np, self.nout, self.nin = (len(desc.states), len(desc.params),
                                                  len(desc.outputs), desc.nin)
-        vp, cl, ci, cd = ctypes.c_void_p, ctypes.c_long, ctypes.c_int, ctypes.c_double
+        vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         if method is not None:
@@ -382,7 +382,6 @@ class ModelKernel:
             if self._guard is not None:
                 self._guard.argtypes = [ci]
                 self._guard.restype = ci
-        del cd
 
     def _fn(self, symbol, argtypes):
         fn = getattr(self.lib, symbol)
