@@ -31,11 +31,10 @@ def _known_cost(key) -> float | None:
     return None if desc is None else desc.cost
 
 
-def _has_routh(scene) -> bool:
+def _has_routh(symmetric: bool, effects) -> bool:
     """A symmetric body under axisymmetric conservative effects: p_α, p_γ are conserved and the
     Routh reduction bounds β."""
-    return scene.symmetric and all(e.conservative and e.axisymmetric
-                                   for e in fx.lookup(scene.effects))
+    return symmetric and all(e.conservative and e.axisymmetric for e in fx.lookup(effects))
 
 
 def pole_mode(name: str) -> int:
@@ -52,18 +51,31 @@ def plan(scene) -> list[tuple[str, int]]:
     if scene.simulate.formulation != "auto":
         return [(scene.simulate.formulation, 0)]
     out = []
-    routh = _has_routh(scene)
-    method = scene.simulate.method
-    for name in candidates(scene):
-        if method_reason(method, name, scene.effects):
+    for name, mode in _structural(scene.symmetric, scene.effects, scene.simulate.method,
+                                  fx.VERSION[0]):
+        if REGISTRY[name].applicable(scene) is None:  # the scene's numbers (e.g. its start)
+            out.append((name, mode))
+            if not mode:
+                break
+    return out
+
+
+@functools.lru_cache(maxsize=256)
+def _structural(symmetric, effects, method, version) -> tuple:
+    """What of ``plan`` depends on the scene's structure alone (cached; ``version`` is the
+    effects registry's, so registering an effect invalidates it): the formulations by cost
+    that the method can run, each with its pole mode; a singular one only with a Routh
+    reduction."""
+    out = []
+    routh = _has_routh(symmetric, effects)
+    for name in _by_cost(symmetric, effects, version):
+        if method_reason(method, name, effects):
             continue
         mode = pole_mode(name)
         if mode and not routh:
             continue
         out.append((name, mode))
-        if not mode:
-            break
-    return out
+    return tuple(out)
 
 
 def _clear(scene, name: str, method: str) -> bool:

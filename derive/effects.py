@@ -114,9 +114,18 @@ def _com(values) -> tuple[float, float, float]:
     return (0.0, 0.0, float(values["l"]))
 
 
+def _on_axis(com) -> bool:
+    return com[0] == 0.0 and com[1] == 0.0
+
+
 def _axial(values) -> bool:
-    cx, cy, _ = _com(values)
-    return cx == 0.0 and cy == 0.0
+    return _on_axis(_com(values))
+
+
+def _complete_gravity(values, com) -> dict:
+    """The gravity table's values with ``com`` always set and ``l`` = com[2] when the centre of
+    mass is on axis 3, else None."""
+    return {**values, "com": com, "l": com[2] if _on_axis(com) else None}
 
 
 def _gravity_potential(com_names):
@@ -158,7 +167,7 @@ GRAVITY_TABLE = Table(
             default=None),
     ),
     one_of=(("l", "com"),),
-    complete=lambda v: {**v, "com": _com(v), "l": _com(v)[2] if _axial(v) else None},
+    complete=lambda v: _complete_gravity(v, _com(v)),
 )
 
 DAMPING_TABLE = Table(

@@ -40,6 +40,9 @@ STATS_DTYPE = np.dtype([
     ("nreject", _LONG), ("nlu", _LONG), ("t_fail", np.float64), ("fail_index", np.intc),
     ("status", np.intc), ("h_fail", np.float64), ("rhs_code", np.intc)], align=True)
 
+_STATS_DOUBLES = STATS_DTYPE.itemsize // 8
+assert STATS_DTYPE.itemsize % 8 == 0 and STATS_DTYPE.alignment <= 8  # a record fits a double slice
+
 _C_TYPES = {"double": ctypes.c_double, "long": ctypes.c_long, "int": ctypes.c_int}
 _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
 _STATS = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
@@ -371,7 +374,10 @@ class ModelKernel:
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         if method is not None:
-            extra = [_C_TYPES[ty] for ty, _ in compiled_method(method).params]
+            spec = compiled_method(method)
+            extra = [_C_TYPES[ty] for ty, _ in spec.params]
+            self._arg_names = tuple(name for _, name in spec.params)
+            self.adaptive = spec.driver == "adaptive"
             self._sim = self._fn(f"{p}_simulate_checked_{method}",
                                  [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
@@ -412,7 +418,7 @@ class ModelKernel:
                     newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
         values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
                   "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
-        return [values[name] for _, name in compiled_method(self.method).params]
+        return [values[name] for name in self._arg_names]
 
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""
@@ -449,18 +455,22 @@ class ModelKernel:
         stats record). ``args``: the driver's arguments (``driver_args``); ``pole_check`` 1 or 2
         refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``."""
         n = t.shape[0]
-        # One allocation for the outputs, the states and the parameters (pointers by offset).
+        # One allocation for the outputs, the states, the parameters and the stats record
+        # (pointers by offset; the record is a whole number of doubles, see _STATS_DOUBLES).
         size_out, size_y = self.nout * n, n * self.ny
-        buf = np.empty(size_out + size_y + self.np)
+        k_p = size_out + size_y
+        k_st = k_p + self.np
+        buf = np.empty(k_st + _STATS_DOUBLES)
         base = _ptr(buf)
         out = buf[:size_out].reshape(self.nout, n)
-        y = buf[size_out:size_out + size_y].reshape(n, self.ny)
-        pp = buf[size_out + size_y:]
+        y = buf[size_out:k_p].reshape(n, self.ny)
+        pp = buf[k_p:k_st]
         pp[:] = p
-        st = np.zeros(1, dtype=STATS_DTYPE)
-        self._call(self._sim, _ptr(inputs), base + 8 * (size_out + size_y), _ptr(t), n, *args,
-                   pole_check, base + 8 * size_out, base, _ptr(st))
-        return out, y, pp, st[0]
+        stats = buf[k_st:]
+        stats[:] = 0.0
+        self._call(self._sim, _ptr(inputs), base + 8 * k_p, _ptr(t), n, *args,
+                   pole_check, base + 8 * size_out, base, base + 8 * k_st)
+        return out, y, pp, stats.view(STATS_DTYPE)[0]
 
     def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,

@@ -619,8 +619,9 @@ class _Validator:
         s = dict(SIMULATE_DEFAULTS, **t)
         t_end = self.number(t, "simulate", "t_end", lambda x: x > 0, "a positive finite number (s)")
         samples = s["samples"]
-        if (isinstance(samples, (bool, np.bool_)) or not isinstance(samples, numbers.Integral)
-                or not 2 <= samples <= MAX_SAMPLES):
+        if not (type(samples) is int or (not isinstance(samples, (bool, np.bool_))  # int: no ABC check
+                                         and isinstance(samples, numbers.Integral))) \
+                or not 2 <= samples <= MAX_SAMPLES:
             self.fail("simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}, "
                                           f"got {_show(samples)}")
         method = self.choice(s, "simulate", "method", tuple(METHODS))
@@ -631,8 +632,9 @@ class _Validator:
         atol = self.number(s, "simulate", "atol", lambda x: x > 0, "a positive finite number")
         formulation = self.choice(s, "simulate", "formulation", tuple(FORMULATIONS))
         max_steps = s["max_steps"]
-        if (isinstance(max_steps, (bool, np.bool_)) or not isinstance(max_steps, numbers.Integral)
-                or not 1 <= max_steps <= MAX_STEPS_LIMIT):
+        if not (type(max_steps) is int or (not isinstance(max_steps, (bool, np.bool_))
+                                           and isinstance(max_steps, numbers.Integral))) \
+                or not 1 <= max_steps <= MAX_STEPS_LIMIT:
             self.fail("simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}, "
                                             f"got {_show(max_steps)}")
         h = None

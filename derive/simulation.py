@@ -141,7 +141,7 @@ def _check_budget(scene: Scene, method: str, h: float) -> None:
 def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
     s = scene.simulate
     h = s.h
-    if compiled_method(method).driver != "adaptive":
+    if not kernel.adaptive:
         h = default_step(scene) if h is None else h
         _check_budget(scene, method, h)
     return kernel.driver_args(s.rtol, s.atol, h, s.max_steps)
@@ -167,6 +167,7 @@ def _output_slices() -> list:
 
 
 _SLICES = _output_slices()
+_RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
 
 
@@ -210,12 +211,18 @@ _INTEGRALS: dict = {}
 
 def _check_pole(desc, t, beta, rtol):
     """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
-    trajectory whose closest approach to a pole made that larger than the tolerance."""
+    trajectory whose closest approach to a pole made that larger than the tolerance.
+
+    The output β is canonical, in [0, π], where sin is concave: the smallest sin β over the
+    samples is at the smallest or the largest β (two reductions, not a sine per sample)."""
     if not REGISTRY[desc.formulation].pole_loss:
         return
-    s = np.abs(np.sin(beta))
-    if float(s.min()) ** 2 >= _EPS / rtol:
+    lo, hi = float(beta.min()), float(beta.max())
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return  # _result names the non-finite output
+    if min(math.sin(lo), math.sin(hi)) ** 2 >= _EPS / rtol:
         return
+    s = np.abs(np.sin(beta))
     k = int(s.argmin())
     if s[k] ** 2 < _EPS / rtol:
         raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
@@ -255,9 +262,10 @@ def simulate(scene, **overrides) -> Result:
             kernel = ModelKernel.load(desc, method)
             args = _settings(sc, method, kernel)
             out, y, p, st = kernel.simulate(inputs, params_of(sc, desc), t, args, pole_check)
-            if st["status"] != Status.RANGE:
+            status = int(st["status"])
+            if status != _RANGE:
                 break
-        if st["status"]:
+        if status:
             raise IntegrationError(_explain(desc, st, sc.simulate.max_steps))
         nfev = int(st["nfev"])
     _check_pole(desc, t, out[1], sc.simulate.rtol)

@@ -20,6 +20,8 @@ is, for each method ``m`` and model prefix ``M``::
 """
 from __future__ import annotations
 
+import functools
+
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -94,9 +96,16 @@ def compiled_methods() -> dict:
     """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`) and
     the Lie–Poisson splittings of :mod:`derive.splitting` (their own template). Each entry has
     ``name``, ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
+    return _compiled()
+
+
+@functools.lru_cache(maxsize=1)
+def _compiled():
+    from types import MappingProxyType
+
     from .splitting import METHODS as SPLITTING
 
-    return {**METHODS, **SPLITTING}
+    return MappingProxyType({**METHODS, **SPLITTING})  # both fixed at import: merged once
 
 
 def method(name: str):
@@ -107,6 +116,15 @@ def method(name: str):
 def method_reason(name: str, formulation: str, effects) -> str | None:
     """None if the compiled method ``name`` can run that formulation with those effects, else
     why not ("auto" as the formulation: can any formulation)."""
+    from .effects import VERSION
+
+    return _method_reason(name, formulation, tuple(effects), VERSION[0])
+
+
+@functools.lru_cache(maxsize=512)
+def _method_reason(name: str, formulation: str, effects: tuple, version: int) -> str | None:
+    """``method_reason``, cached per effects-registry version (the answer depends on the
+    effects' declarations)."""
     from . import splitting
     from .formulations import UNIVERSAL
 
