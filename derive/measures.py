@@ -143,10 +143,13 @@ def read(names, desc, res, stats, final) -> dict:
 def source(desc, method: str) -> str:
     """``<name>_measures.c`` for a model and method (rendered from templates/c/measures.c.j2)."""
     from .render import environment
+    from .solvers import METHODS, _method_context
 
     idx = {f"i_{n}": desc.outputs.index(n) for n in READS}
+    m = _method_context(METHODS[method])  # the stage array's size, as the driver declares it
     return environment().get_template("c/measures.c.j2").render(
-        prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, **idx)
+        prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, n_k=m["n_k"],
+        n_stages=m["s"], n_dense=len(m["dense"]["stages"]), **idx)
 
 
 class MeasureKernel:
