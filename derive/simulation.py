@@ -153,8 +153,12 @@ def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
 
 def _explain(desc, stats, max_steps) -> str:
     """The solver's one-line failure message; for a domain error, what the domain is."""
-    if int(stats["status"]) == Status.DOMAIN and desc.domain_note:
+    status = int(stats["status"])
+    if status == Status.DOMAIN and desc.domain_note:
         return f"t = {float(stats['t_fail']):.8g}: {desc.domain_note}"
+    if status == Status.NONFINITE_OUTPUT and 0 <= int(stats["fail_index"]) < len(_COLUMN_OUTPUT):
+        return (f"t = {float(stats['t_fail']):.6g}: non-finite {_COLUMN_OUTPUT[int(stats['fail_index'])]} "
+                f"in the output")
     return status_message(stats, desc.states, max_steps)
 
 
@@ -167,13 +171,16 @@ def _output_slices() -> list:
 
 
 _SLICES = _output_slices()
+_COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
 _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
 
 
-def _result(desc, out, y, t, scene, method, nfev, p) -> Result:
+def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Result:
+    """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
+    checked them already (a batch checks all trajectories at once)."""
     views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
-    if not np.isfinite(out).all():  # one check; find where only when something is wrong
+    if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, _ in OUTPUTS:
             bad = ~np.isfinite(views[name])
             if bad.any():
@@ -269,7 +276,8 @@ def simulate(scene, **overrides) -> Result:
             raise IntegrationError(_explain(desc, st, sc.simulate.max_steps))
         nfev = int(st["nfev"])
     _check_pole(desc, t, out[1], sc.simulate.rtol)
-    return _result(desc, out, y, t, sc, method, nfev, p)
+    # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT); SciPy's did not.
+    return _result(desc, out, y, t, sc, method, nfev, p, finite=method not in SCIPY_METHODS)
 
 
 @_quiet
@@ -318,13 +326,30 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
         out, y, ps, st = kernel.simulate_batch(inputs, ps, t, args, pole_check)
         if not (st["status"] == Status.RANGE).any():
             break
+    status = st["status"]
+    if status.any():
+        b = int(np.flatnonzero(status)[0])
+        raise IntegrationError(f"{scs[b].source}: {_explain(desc, st[b], scs[b].simulate.max_steps)}")
+    # The pole check of every trajectory at once; one that fails is then found and named per
+    # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
+    suspect = _pole_suspects(desc, out[:, 1], first.simulate.rtol)
+    nfev = st["nfev"].tolist()
     results = []
     for b, sc in enumerate(scs):
-        if st[b]["status"]:
-            raise IntegrationError(f"{sc.source}: {_explain(desc, st[b], sc.simulate.max_steps)}")
-        _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
-        results.append(_result(desc, out[b], y[b], t, sc, method, int(st[b]["nfev"]), ps[b]))
+        if suspect[b]:
+            _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True))
     return results
+
+
+def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:
+    """Per trajectory (rows of canonical β), whether ``_check_pole`` could object: the smallest
+    sin β is at the smallest or the largest β (sin is concave on [0, π]); non-finite rows are
+    suspects too (the per-scene check passes them on to ``_result``, which names them)."""
+    if not REGISTRY[desc.formulation].pole_loss:
+        return np.zeros(len(betas), dtype=bool)
+    s = np.minimum(np.sin(betas.min(axis=1)), np.sin(betas.max(axis=1)))
+    return ~(s * s >= _EPS / rtol)
 
 
 def _solve_scipy(desc, method, inputs, p, t, sc):

@@ -18,6 +18,7 @@ class Status(enum.IntEnum):
     BAD_ARGS = 6
     INTERRUPTED = 7
     RANGE = 8
+    NONFINITE_OUTPUT = 9
 
     @property
     def c_name(self) -> str:
@@ -38,6 +39,7 @@ _TEXT = {
     Status.BAD_ARGS: "bad arguments",
     Status.INTERRUPTED: "interrupted",
     Status.RANGE: "the motion comes closer to a pole than the formulation allows",
+    Status.NONFINITE_OUTPUT: "non-finite value in the output",
 }
 
 

@@ -239,3 +239,21 @@ def test_routh_check_agrees_with_the_exact_turning_points():
         verdicts.append(exact_clear)
         assert auto._clear(sc, "euler-angles", "dop853") == exact_clear, beta_dot
     assert any(verdicts) and not all(verdicts)  # the scan crosses the boundary
+
+
+def test_nonfinite_output_is_reported_by_the_compiled_check():
+    """Finite states whose outputs overflow (energy = I ω²/2 beyond the float range): the C
+    driver's output check stops with NONFINITE_OUTPUT and names the first bad output; single
+    and batch runs alike, and a normal batch beside it passes."""
+    import derive
+    from derive.errors import IntegrationError
+
+    huge = {"body": {"I1": 1e300, "I3": 1e300},
+            "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0, "omega": [0.0, 0.0, 1e5]},
+            "simulate": {"t_end": 1e-6, "samples": 3}}
+    with pytest.raises(IntegrationError, match=r"t = 0: non-finite energy in the output"):
+        derive.simulate(huge)
+    fine = {**huge, "body": {"I1": 1.0, "I3": 1.0}}
+    with pytest.raises(IntegrationError, match=r"non-finite energy in the output"):
+        derive.simulate_batch([fine, huge])
+    assert np.isfinite(derive.simulate_batch([fine, fine])[1].energy).all()

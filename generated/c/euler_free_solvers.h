@@ -47,6 +47,7 @@ typedef struct {
 #define DERIVE_BAD_ARGS        6  /* bad arguments */
 #define DERIVE_INTERRUPTED     7  /* interrupted */
 #define DERIVE_RANGE           8  /* the motion comes closer to a pole than the formulation allows */
+#define DERIVE_NONFINITE_OUTPUT 9  /* non-finite value in the output */
 
 #endif /* DERIVE_SOLVERS_COMMON */
 
@@ -65,6 +66,11 @@ void euler_free_interrupt_request(void);
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int euler_free_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
+/* euler_free_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
+ * with st->t_fail the first such sample's time and st->fail_index the output's column (what the
+ * simulate drivers run after a successful solve). */
+int euler_free_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
+                        double *out, derive_stats *st);
 /* 1 if the motion from y keeps clear of the poles by the model's Routh check (mode 1), or meets
  * one only where the reduced equations are regular (mode 2); 0 otherwise or without a check. */
 int euler_free_pole_clear(const double *y, const double *p, int mode);

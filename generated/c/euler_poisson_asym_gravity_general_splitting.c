@@ -446,7 +446,7 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting2(const double 
 #endif
     rc = euler_poisson_asym_gravity_general_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_gravity_general_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -599,7 +599,7 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting4(const double 
 #endif
     rc = euler_poisson_asym_gravity_general_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_gravity_general_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -760,7 +760,7 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting6(const double 
 #endif
     rc = euler_poisson_asym_gravity_general_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_gravity_general_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 

@@ -433,7 +433,7 @@ int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, 
 #endif
     rc = euler_poisson_asym_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -577,7 +577,7 @@ int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, 
 #endif
     rc = euler_poisson_asym_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -721,7 +721,7 @@ int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, 
 #endif
     rc = euler_poisson_asym_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_asym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 

@@ -283,7 +283,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, doub
 #endif
     rc = euler_poisson_sym_gravity_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_gravity_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_gravity_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -436,7 +436,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, doub
 #endif
     rc = euler_poisson_sym_gravity_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_gravity_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_gravity_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -597,7 +597,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, doub
 #endif
     rc = euler_poisson_sym_gravity_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_gravity_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_gravity_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 

@@ -271,7 +271,7 @@ int euler_poisson_sym_simulate_checked_splitting2(const double *in, double *p, c
 #endif
     rc = euler_poisson_sym_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -415,7 +415,7 @@ int euler_poisson_sym_simulate_checked_splitting4(const double *in, double *p, c
 #endif
     rc = euler_poisson_sym_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
@@ -559,7 +559,7 @@ int euler_poisson_sym_simulate_checked_splitting6(const double *in, double *p, c
 #endif
     rc = euler_poisson_sym_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
-        euler_poisson_sym_outputs_at(n_out, t_out, y_work, p, out);
+        rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
     return rc;
 }
 
