@@ -114,15 +114,15 @@ static int derive_euler_poisson_sym_gravity_damping_rest_interrupted(long from, 
 
 /* Measures (derive.sweep): a build with -DDERIVE_MEASURES also includes euler_poisson_sym_gravity_damping_measures.c
  * (rendered at run time by derive.measures), which defines the hook declared here. While
- * derive_euler_poisson_sym_gravity_damping_measuring is set, the adaptive drivers form the dense output on every accepted step and
- * hand it to the hook; a build without the macro is exactly the plain solver. */
+ * derive_euler_poisson_sym_gravity_damping_measuring is set, the adaptive drivers hand every accepted step to the hook with its
+ * stages k; the hook forms the step's dense output (the driver's own function, into cont, and
+ * sets *dense) only where a measure needs it. Returns 0 or the rhs's code (time in *t_rc). A
+ * build without the macro is exactly the plain solver. */
 #ifdef DERIVE_MEASURES
 static int derive_euler_poisson_sym_gravity_damping_measuring = 0;
-static void euler_poisson_sym_gravity_damping_measure_step(double t, double h, const double *y, const double *y_new,
-        const double *p, double cont[7][euler_poisson_sym_gravity_damping_NY]);
-#define DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_DENSE_EVERY_STEP derive_euler_poisson_sym_gravity_damping_measuring
-#else
-#define DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_DENSE_EVERY_STEP 0
+static int euler_poisson_sym_gravity_damping_measure_step(double t, double h, const double *y, const double *y_new,
+        const double *p, double k[][euler_poisson_sym_gravity_damping_NY], double cont[7][euler_poisson_sym_gravity_damping_NY], int *dense,
+        derive_stats *st, double *t_rc);
 #endif
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_SIMULATE
 
@@ -491,6 +491,52 @@ static double derive_euler_poisson_sym_gravity_damping_dop853_error(double h, co
     return fabs(h) * e1 * sqrt(1.0 / (euler_poisson_sym_gravity_damping_NY * deno));
 }
 
+/* The dense output (dop853, order 7) of the accepted step (t, h) from y to y_new: its
+ * extra stages (k[0..12] given), then the coefficients cont of the degree-7 polynomial in
+ * x = (t' - t)/h. Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+static int derive_euler_poisson_sym_gravity_damping_dop853_dense(double t, double h, const double *y, const double *y_new,
+        const double *p, double k[][euler_poisson_sym_gravity_damping_NY], double cont[7][euler_poisson_sym_gravity_damping_NY], derive_stats *st,
+        double *t_rc)
+{
+    double yt[euler_poisson_sym_gravity_damping_NY], d;
+    int i, rc;
+    for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
+        yt[i] = y[i] + h * (0.056167502283047954 * k[0][i] + 0.25350021021662483 * k[6][i] - 0.2462390374708025 * k[7][i] - 0.12419142326381637 * k[8][i] + 0.15329179827876568 * k[9][i] + 0.00820105229563469 * k[10][i] + 0.007567897660545699 * k[11][i] - 0.008298 * k[12][i]);
+    st->nfev++;
+    rc = euler_poisson_sym_gravity_damping_rhs(t + 0.1 * h, yt, p, k[13]);
+    if (rc) {
+        *t_rc = t + 0.1 * h;
+        return rc;
+    }
+    for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
+        yt[i] = y[i] + h * (0.03183464816350214 * k[0][i] + 0.028300909672366776 * k[5][i] + 0.053541988307438566 * k[6][i] - 0.05492374857139099 * k[7][i] - 0.00010834732869724932 * k[10][i] + 0.0003825710908356584 * k[11][i] - 0.00034046500868740456 * k[12][i] + 0.1413124436746325 * k[13][i]);
+    st->nfev++;
+    rc = euler_poisson_sym_gravity_damping_rhs(t + 0.2 * h, yt, p, k[14]);
+    if (rc) {
+        *t_rc = t + 0.2 * h;
+        return rc;
+    }
+    for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
+        yt[i] = y[i] + h * (-0.42889630158379194 * k[0][i] - 4.697621415361164 * k[5][i] + 7.683421196062599 * k[6][i] + 4.06898981839711 * k[7][i] + 0.3567271874552811 * k[8][i] - 0.0013990241651590145 * k[12][i] + 2.9475147891527724 * k[13][i] - 9.15095847217987 * k[14][i]);
+    st->nfev++;
+    rc = euler_poisson_sym_gravity_damping_rhs(t + 0.7777777777777778 * h, yt, p, k[15]);
+    if (rc) {
+        *t_rc = t + 0.7777777777777778 * h;
+        return rc;
+    }
+    for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i) {
+        d = y_new[i] - y[i];
+        cont[0][i] = d;
+        cont[1][i] = h * k[0][i] - d;
+        cont[2][i] = 2.0 * d - h * (k[12][i] + k[0][i]);
+        cont[3][i] = h * (-8.428938276109013 * k[0][i] + 0.5667149535193777 * k[5][i] - 3.0689499459498917 * k[6][i] + 2.38466765651207 * k[7][i] + 2.117034582445028 * k[8][i] - 0.871391583777973 * k[9][i] + 2.2404374302607883 * k[10][i] + 0.6315787787694688 * k[11][i] - 0.08899033645133331 * k[12][i] + 18.148505520854727 * k[13][i] - 9.194632392478356 * k[14][i] - 4.436036387594894 * k[15][i]);
+        cont[4][i] = h * (10.427508642579134 * k[0][i] + 242.28349177525817 * k[5][i] + 165.20045171727028 * k[6][i] - 374.5467547226902 * k[7][i] - 22.113666853125306 * k[8][i] + 7.733432668472264 * k[9][i] - 30.674084731089398 * k[10][i] - 9.332130526430229 * k[11][i] + 15.697238121770845 * k[12][i] - 31.139403219565178 * k[13][i] - 9.35292435884448 * k[14][i] + 35.81684148639408 * k[15][i]);
+        cont[5][i] = h * (19.985053242002433 * k[0][i] - 387.0373087493518 * k[5][i] - 189.17813819516758 * k[6][i] + 527.8081592054236 * k[7][i] - 11.57390253995963 * k[8][i] + 6.8812326946963 * k[9][i] - 1.0006050966910838 * k[10][i] + 0.7777137798053443 * k[11][i] - 2.778205752353508 * k[12][i] - 60.19669523126412 * k[13][i] + 84.32040550667716 * k[14][i] + 11.99229113618279 * k[15][i]);
+        cont[6][i] = h * (-25.69393346270375 * k[0][i] - 154.18974869023643 * k[5][i] - 231.5293791760455 * k[6][i] + 357.6391179106141 * k[7][i] + 93.40532418362432 * k[8][i] - 37.45832313645163 * k[9][i] + 104.0996495089623 * k[10][i] + 29.8402934266605 * k[11][i] - 43.53345659001114 * k[12][i] + 96.32455395918828 * k[13][i] - 39.17726167561544 * k[14][i] - 149.72683625798564 * k[15][i]);
+    }
+    return 0;
+}
+
 int euler_poisson_sym_gravity_damping_solve_dop853(const double *y0, const double *p, const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, double *y_out, derive_stats *st)
 {
@@ -499,11 +545,11 @@ int euler_poisson_sym_gravity_damping_solve_dop853(const double *y0, const doubl
     const double expo = 0.125;
     const double safe = 0.9, facc1 = 1.0 / 0.333, facc2 = 1.0 / 6.0;
     derive_stats local;
-    double k[16][euler_poisson_sym_gravity_damping_NY], y[euler_poisson_sym_gravity_damping_NY], y_new[euler_poisson_sym_gravity_damping_NY], yt[euler_poisson_sym_gravity_damping_NY], cont[7][euler_poisson_sym_gravity_damping_NY];
-    double t, tn, t_end, h, hmax, hnew = 0.0, err, fac11, t_rc = 0.0, x, x1, d;
+    double k[16][euler_poisson_sym_gravity_damping_NY], y[euler_poisson_sym_gravity_damping_NY], y_new[euler_poisson_sym_gravity_damping_NY], cont[7][euler_poisson_sym_gravity_damping_NY];
+    double t, tn, t_end, h, hmax, hnew = 0.0, err, fac11, t_rc = 0.0, x, x1;
     double *yo;
     long k_out;
-    int i, rc, last, rejected = 0, nonfinite_trial = 0;
+    int i, rc, last, dense, rejected = 0, nonfinite_trial = 0;
 
     if (!st)
         st = &local;
@@ -591,40 +637,15 @@ int euler_poisson_sym_gravity_damping_solve_dop853(const double *y0, const doubl
         if ((i = derive_euler_poisson_sym_gravity_damping_first_nonfinite(k[12], euler_poisson_sym_gravity_damping_NY)) >= 0)
             return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_NONFINITE, tn, i);
 
-        if (DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_DENSE_EVERY_STEP || (k_out < n_out && t_out[k_out] <= tn)) {
-            /* Dense output (dop853, order 7) at every requested time in (t, tn]. */
-            for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
-                yt[i] = y[i] + h * (0.056167502283047954 * k[0][i] + 0.25350021021662483 * k[6][i] - 0.2462390374708025 * k[7][i] - 0.12419142326381637 * k[8][i] + 0.15329179827876568 * k[9][i] + 0.00820105229563469 * k[10][i] + 0.007567897660545699 * k[11][i] - 0.008298 * k[12][i]);
-            st->nfev++;
-            rc = euler_poisson_sym_gravity_damping_rhs(t + 0.1 * h, yt, p, k[13]);
-            if (rc)
-                return derive_euler_poisson_sym_gravity_damping_fail_rc(st, t + 0.1 * h, rc);
-            for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
-                yt[i] = y[i] + h * (0.03183464816350214 * k[0][i] + 0.028300909672366776 * k[5][i] + 0.053541988307438566 * k[6][i] - 0.05492374857139099 * k[7][i] - 0.00010834732869724932 * k[10][i] + 0.0003825710908356584 * k[11][i] - 0.00034046500868740456 * k[12][i] + 0.1413124436746325 * k[13][i]);
-            st->nfev++;
-            rc = euler_poisson_sym_gravity_damping_rhs(t + 0.2 * h, yt, p, k[14]);
-            if (rc)
-                return derive_euler_poisson_sym_gravity_damping_fail_rc(st, t + 0.2 * h, rc);
-            for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i)
-                yt[i] = y[i] + h * (-0.42889630158379194 * k[0][i] - 4.697621415361164 * k[5][i] + 7.683421196062599 * k[6][i] + 4.06898981839711 * k[7][i] + 0.3567271874552811 * k[8][i] - 0.0013990241651590145 * k[12][i] + 2.9475147891527724 * k[13][i] - 9.15095847217987 * k[14][i]);
-            st->nfev++;
-            rc = euler_poisson_sym_gravity_damping_rhs(t + 0.7777777777777778 * h, yt, p, k[15]);
-            if (rc)
-                return derive_euler_poisson_sym_gravity_damping_fail_rc(st, t + 0.7777777777777778 * h, rc);
-            for (i = 0; i < euler_poisson_sym_gravity_damping_NY; ++i) {
-                d = y_new[i] - y[i];
-                cont[0][i] = d;
-                cont[1][i] = h * k[0][i] - d;
-                cont[2][i] = 2.0 * d - h * (k[12][i] + k[0][i]);
-                cont[3][i] = h * (-8.428938276109013 * k[0][i] + 0.5667149535193777 * k[5][i] - 3.0689499459498917 * k[6][i] + 2.38466765651207 * k[7][i] + 2.117034582445028 * k[8][i] - 0.871391583777973 * k[9][i] + 2.2404374302607883 * k[10][i] + 0.6315787787694688 * k[11][i] - 0.08899033645133331 * k[12][i] + 18.148505520854727 * k[13][i] - 9.194632392478356 * k[14][i] - 4.436036387594894 * k[15][i]);
-                cont[4][i] = h * (10.427508642579134 * k[0][i] + 242.28349177525817 * k[5][i] + 165.20045171727028 * k[6][i] - 374.5467547226902 * k[7][i] - 22.113666853125306 * k[8][i] + 7.733432668472264 * k[9][i] - 30.674084731089398 * k[10][i] - 9.332130526430229 * k[11][i] + 15.697238121770845 * k[12][i] - 31.139403219565178 * k[13][i] - 9.35292435884448 * k[14][i] + 35.81684148639408 * k[15][i]);
-                cont[5][i] = h * (19.985053242002433 * k[0][i] - 387.0373087493518 * k[5][i] - 189.17813819516758 * k[6][i] + 527.8081592054236 * k[7][i] - 11.57390253995963 * k[8][i] + 6.8812326946963 * k[9][i] - 1.0006050966910838 * k[10][i] + 0.7777137798053443 * k[11][i] - 2.778205752353508 * k[12][i] - 60.19669523126412 * k[13][i] + 84.32040550667716 * k[14][i] + 11.99229113618279 * k[15][i]);
-                cont[6][i] = h * (-25.69393346270375 * k[0][i] - 154.18974869023643 * k[5][i] - 231.5293791760455 * k[6][i] + 357.6391179106141 * k[7][i] + 93.40532418362432 * k[8][i] - 37.45832313645163 * k[9][i] + 104.0996495089623 * k[10][i] + 29.8402934266605 * k[11][i] - 43.53345659001114 * k[12][i] + 96.32455395918828 * k[13][i] - 39.17726167561544 * k[14][i] - 149.72683625798564 * k[15][i]);
-            }
+        dense = 0;
 #ifdef DERIVE_MEASURES
-            if (derive_euler_poisson_sym_gravity_damping_measuring)
-                euler_poisson_sym_gravity_damping_measure_step(t, h, y, y_new, p, cont);
+        if (derive_euler_poisson_sym_gravity_damping_measuring && (rc = euler_poisson_sym_gravity_damping_measure_step(t, h, y, y_new, p, k, cont, &dense, st, &t_rc)))
+            return derive_euler_poisson_sym_gravity_damping_fail_rc(st, t_rc, rc);
 #endif
+        if (k_out < n_out && t_out[k_out] <= tn) {
+            /* Dense output at every requested time in (t, tn] (formed once per step). */
+            if (!dense && (rc = derive_euler_poisson_sym_gravity_damping_dop853_dense(t, h, y, y_new, p, k, cont, st, &t_rc)))
+                return derive_euler_poisson_sym_gravity_damping_fail_rc(st, t_rc, rc);
             while (k_out < n_out && t_out[k_out] <= tn) {
                 yo = y_out + k_out * euler_poisson_sym_gravity_damping_NY;
                 if (t_out[k_out] == tn) {
