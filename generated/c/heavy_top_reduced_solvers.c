@@ -138,7 +138,10 @@ static void derive_heavy_top_reduced_canonical_angles(long n, double *a, double 
     double bb, target;
     long k;
     for (k = 0; k < n; ++k) {
-        bb = fmod(b[k], twopi);
+        /* The usual case skips the libm calls, with the same bits: fmod(x, 2 pi) is x on
+         * [0, 2 pi), and a whole-turn shift by nearbyint(d / 2 pi) with |d| < pi adds a zero,
+         * which changes nothing but the sign of a zero (hence the x != 0 condition). */
+        bb = b[k] >= 0.0 && b[k] < twopi ? b[k] : fmod(b[k], twopi);
         if (bb < 0.0)
             bb += twopi;
         if (bb > pi) {
@@ -149,12 +152,14 @@ static void derive_heavy_top_reduced_canonical_angles(long n, double *a, double 
         b[k] = bb;
         if (k == 0)
             continue;
-        a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
+        if (!(fabs(a[k - 1] - a[k]) < pi && a[k] != 0.0))
+            a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
         if (fabs(a[k] - a[k - 1]) > 0.5 * pi)
             target = bb < 0.5 * pi ? a[k - 1] + c[k - 1] - a[k] : a[k] - (a[k - 1] - c[k - 1]);
         else
             target = c[k - 1];
-        c[k] += twopi * nearbyint((target - c[k]) / twopi);
+        if (!(fabs(target - c[k]) < pi && c[k] != 0.0))
+            c[k] += twopi * nearbyint((target - c[k]) / twopi);
     }
 }
 
