@@ -315,7 +315,7 @@ def load_scene(scene, /, **overrides) -> Scene:
     """
     if isinstance(scene, Scene):
         source, data = scene.source, scene.to_dict()
-    elif isinstance(scene, Mapping):
+    elif type(scene) is dict or isinstance(scene, Mapping):
         source, data = "<dict>", scene
     elif isinstance(scene, (str, os.PathLike)) and not isinstance(scene, bytes):
         source = os.fspath(scene)
@@ -515,7 +515,7 @@ class _Validator:
                               + ")")
                 self.fail(str(key), "unknown key (" + _unknown(
                     key, _TOP_KEYS, "", "the only top-level key is title") + ")")
-            if not isinstance(value, Mapping):
+            if type(value) is not dict and not isinstance(value, Mapping):  # dict: no ABC check
                 self.fail(key, f"must be a table [{key}], got {_show(value)}")
         title = data.get("title")
         if title is not None and not isinstance(title, str):
