@@ -39,6 +39,9 @@ def model_sources(model: Model) -> dict[str, str]:
     if splitting.applicable(model) is None:
         files.update({f"c/{k}": v for k, v in splitting.render_splitting(model).items()})
     files[f"models/{model.name}.json"] = description_json(spec)
+    from .integrable import c_header
+
+    files["c/derive_integrals.h"] = c_header()  # the measures' integrals (one file for every model)
     return files
 
 

@@ -476,3 +476,51 @@ def markdown() -> list[str]:
             result = r"$\dot F = 0$" if proof.holds else rf"$\dot F = {sp.latex(proof.derivative, symbol_names=names)}$"
         out += [f"- **{case}** ({rel}):", "", f"  $$ {integral.latex} $$", "", f"  {result}.", ""]
     return out
+
+
+# ---------------------------------------------------------------------------------------------
+# the extra integrals in C (rendered at `derive generate` time; the measures' integral_drift)
+
+
+#: The extra integrals the compiled measures evaluate, in the order of their C codes (1, 2, …;
+#: 0 is "none"): ``generated/c/derive_integrals.h`` is rendered from this tuple and the
+#: formulas above, and :mod:`derive.measures` picks a point's code from it.
+C_INTEGRALS = (EXTRA["euler"], EXTRA["lagrange"], SPHERE, EXTRA["kovalevskaya"],
+               EXTRA["goryachev-chaplygin"])
+#: The general parameters in the order the C function reads them (``parameters``' keys).
+C_PARAMS = ("I1", "I2", "I3", "M", "g", "cx", "cy", "cz")
+
+
+def c_code(integral: Integral) -> tuple[str, str]:
+    """(value, scale) of an integral as C expressions in L1..L3, n1..n3 (the formulas' axes),
+    the ``C_PARAMS`` and the norms Lnorm = |L|, nnorm = |n|. The value is ``formula`` printed by
+    SymPy's C printer; the scale is
+
+        S = Σ over the monomials c·L^a·n^b of the expanded formula of |c| |L|^|a| |n|^|b|,
+
+    a bound on |I| over every L, n of those lengths (so drift / S ≤ 2), and the size of the
+    numbers that cancel in I: rounding alone moves I by about eps·S. Uses SymPy (generate time)."""
+    import sympy as sp
+
+    L = sp.symbols("L1 L2 L3", real=True)
+    n = sp.symbols("n1 n2 n3", real=True)
+    positive = {"I1", "I2", "I3"}  # (M and g may be 0: no gravity)
+    p = {k: sp.Symbol(k, real=True, positive=k in positive or None,
+                      nonnegative=k in ("M", "g") or None) for k in C_PARAMS}
+    F = integral.formula(L, n, p)
+    Ln, nn = sp.Symbol("Lnorm", nonnegative=True), sp.Symbol("nnorm", nonnegative=True)
+    groups: dict[tuple[int, int], list] = {}
+    for monom, coeff in sp.Poly(sp.expand(F), *L, *n).terms():
+        groups.setdefault((sum(monom[:3]), sum(monom[3:])), []).append(sp.Abs(coeff))
+    scale = sp.Add(*(sp.Add(*cs) * Ln ** a * nn ** b for (a, b), cs in sorted(groups.items())))
+    return sp.ccode(F), sp.ccode(scale)
+
+
+@functools.lru_cache(maxsize=1)
+def c_header() -> str:
+    """``derive_integrals.h``: the extra integrals of ``C_INTEGRALS`` as one C function."""
+    from .render import render
+
+    entries = [{"name": i.name, "expression": i.expression, "code": k + 1,
+                "value": v, "scale": s} for k, i in enumerate(C_INTEGRALS) for v, s in [c_code(i)]]
+    return render("c/integrals.h.j2", integrals=entries, params=C_PARAMS)

@@ -82,6 +82,8 @@ class Spec:
     inputs: np.ndarray = field(repr=False, default=None)
     ps: np.ndarray = field(repr=False, default=None)
     invalid: dict = field(default_factory=dict)  # point index -> why it is not run
+    general: np.ndarray = field(repr=False, default=None)  # (N, 8) I1..I3, M, g, cx, cy, cz
+    damping: np.ndarray = field(repr=False, default=None)  # (N,) the damping coefficient c
     key: tuple = ()  # the model (formulation, symmetric, effects)
     method: str = ""
 
@@ -344,7 +346,11 @@ def _measures(source, data):
         for k, v in opts.items():
             if k not in ms.REGISTRY[n].options:
                 _fail(source, f"measure.{n}.{k}", f"unknown option (one of {', '.join(ms.REGISTRY[n].options)})")
-            if _real(v) is None:
+            allowed = ms.REGISTRY[n].choices.get(k)
+            if allowed is not None:
+                if v not in allowed:
+                    _fail(source, f"measure.{n}.{k}", f"must be one of {', '.join(allowed)}, got {v!r}")
+            elif _real(v) is None:
                 _fail(source, f"measure.{n}.{k}", f"must be a finite number, got {v!r}")
         options[n] = dict(opts)
     return tuple(dict.fromkeys(names)), options
@@ -467,20 +473,26 @@ def _build(spec: Spec) -> None:
         if k not in derived:
             ps[:, k] = values[name]
     spec.inputs, spec.ps = inputs, ps
+    # the general parameters of every point (derive.integrable.parameters' convention: no
+    # gravity is M = g = 0; gravity's l is the centre of mass on axis 3), for integral_drift
+    zero = np.zeros(n)
+    com = [values.get(c, zero) for c in ("cx", "cy")] + [values.get("cz", values.get("l", zero))]
+    spec.general = np.column_stack([I1, I2, I3, values.get("M", zero), values.get("g", zero), *com])
+    spec.damping = np.asarray(values.get("c", zero), dtype=float)
 
 
 # ---------------------------------------------------------------------------------------------
 # engines
 
 
-def run_chunk(key, method, inputs, ps, t, args, config):
+def run_chunk(key, method, inputs, ps, t, args, config, integral=None):
     """One task: measured simulations of a block of points in one C call (the library is
     compiled or loaded once per process). Returns (res, final outputs (N, NOBS), stats)."""
     from . import catalogue
 
     desc = catalogue.describe(key)
     kernel = ms.MeasureKernel.load(desc, method)
-    res, out, st = kernel.run(inputs, ps, t, args, config)
+    res, out, st = kernel.run(inputs, ps, t, args, config, integral)
     return res, np.ascontiguousarray(out[:, :, -1]), st
 
 
@@ -656,9 +668,14 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
     config = ms.config_of(sp.measures, sp.options)
     run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
     processes = processes or _cpus()
+    integral = None
+    if "integral_drift" in sp.measures:
+        choice = sp.options.get("integral_drift", {}).get("integral", "case")
+        integral = ms.integral_rows(sp.general, sp.damping, choice)
 
     def submit_args(idx):
-        return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config)
+        return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config,
+                None if integral is None else integral[idx])
 
     if workers is None and scheduler is None:
         tasks = _chunks(run, processes)

@@ -13,7 +13,7 @@ import derive
 from derive import catalogue
 from derive.errors import SceneError
 from derive.exact import heavy_top
-from derive.measures import REGISTRY, MeasureKernel, source
+from derive.measures import REGISTRY, MeasureKernel, c_sources
 from derive.sweeps import load
 
 REF = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
@@ -220,8 +220,7 @@ def test_measure_registry_and_strict_c(tmp_path):
     if gcc is None:
         pytest.skip("no gcc")
     desc = catalogue.describe(("euler-poisson", True, ("gravity",)))
-    files = desc.c_sources()
-    files[f"{desc.name}_measures.c"] = source(desc, "dop853")
+    files = c_sources(desc, "dop853")
     for name, text in files.items():
         (tmp_path / name).write_text(text)
     unit = tmp_path / "unit.c"
