@@ -167,11 +167,11 @@ def integral_rows(general: np.ndarray, damping: np.ndarray, choice: str = "case"
     named, classified once per distinct body (:func:`derive.integrable.classify_values`)."""
     general = np.asarray(general, dtype=float).reshape(-1, len(C_PARAMS))
     body = np.column_stack([general, np.asarray(damping, dtype=float).reshape(-1)])
-    rows = np.zeros((body.shape[0], len(INTEGRAL_ROW)))
     if body.shape[0] == 0:
-        return rows
+        return np.zeros((0, len(INTEGRAL_ROW)))
     codes = {i.name: k + 1 for k, i in enumerate(C_INTEGRALS)}
     uniq, inverse = np.unique(body, axis=0, return_inverse=True)
+    per = np.zeros((len(uniq), len(INTEGRAL_ROW)))
     for u, row in enumerate(uniq):
         p = dict(zip(C_PARAMS, (float(x) for x in row[:-1])))
         c = classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
@@ -180,9 +180,8 @@ def integral_rows(general: np.ndarray, damping: np.ndarray, choice: str = "case"
         name = (own.name if own is not None else None) if choice == "case" else choice
         axes = c.axes if own is not None and own.name == name else (0, 1, 2)
         q = relabel_params(p, axes)
-        out = [codes[name] if name is not None else 0, *axes, *(q[k] for k in C_PARAMS)]
-        rows[np.ravel(inverse) == u] = out
-    return rows
+        per[u] = [codes[name] if name is not None else 0, *axes, *(q[k] for k in C_PARAMS)]
+    return per[np.ravel(inverse)]
 
 
 def read(names, desc, res, stats, final) -> dict:
