@@ -142,8 +142,9 @@ def test_engines_give_identical_results():
     pytest.importorskip("dask.distributed")
     spec = {"scene": {**REF, "simulate": {**REF["simulate"], "t_end": 1.0}},
             "random": {"n": 240, "seed": 11, "initial": {"beta": {"low": 0.3, "high": 1.2}}},
-            "measures": ["beta_max", "beta_min", "energy_drift", "nfev", "flips"]}
+            "measures": ["beta_max", "beta_min", "energy_drift", "nfev", "flips", "integral_drift"]}
     one = derive.sweep(spec, processes=1)
+    assert (one.measures["integral_drift"] < 1e-6).all()  # the Lagrange top's L3: its rows travel too
     pool = derive.sweep(spec, processes=2)
     cluster = derive.sweep(spec, workers=2)
     for other in (pool, cluster):
