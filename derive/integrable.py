@@ -491,10 +491,24 @@ C_INTEGRALS = (EXTRA["euler"], EXTRA["lagrange"], SPHERE, EXTRA["kovalevskaya"],
 C_PARAMS = ("I1", "I2", "I3", "M", "g", "cx", "cy", "cz")
 
 
-def c_code(integral: Integral) -> tuple[str, str]:
+def _c_terms(expr) -> list[str]:
+    """A sum as its terms printed by SymPy's C printer, the first as it is and the others with
+    their sign in front ("+ a", "- b"): one term per line in the header."""
+    import sympy as sp
+
+    out = []
+    for term in sp.Add.make_args(expr):
+        text = sp.ccode(term)
+        if out:
+            text = f"- {text[1:]}" if text.startswith("-") else f"+ {text}"
+        out.append(text)
+    return out
+
+
+def c_code(integral: Integral) -> tuple[list[str], list[str]]:
     """(value, scale) of an integral as C expressions in L1..L3, n1..n3 (the formulas' axes),
-    the ``C_PARAMS`` and the norms Lnorm = |L|, nnorm = |n|. The value is ``formula`` printed by
-    SymPy's C printer; the scale is
+    the ``C_PARAMS`` and the norms Lnorm = |L|, nnorm = |n|, each as the terms of a sum
+    (``_c_terms``). The value is ``formula`` printed by SymPy's C printer; the scale is
 
         S = Σ over the monomials c·L^a·n^b of the expanded formula of |c| |L|^|a| |n|^|b|,
 
@@ -512,8 +526,8 @@ def c_code(integral: Integral) -> tuple[str, str]:
     groups: dict[tuple[int, int], list] = {}
     for monom, coeff in sp.Poly(sp.expand(F), *L, *n).terms():
         groups.setdefault((sum(monom[:3]), sum(monom[3:])), []).append(sp.Abs(coeff))
-    scale = sp.Add(*(sp.Add(*cs) * Ln ** a * nn ** b for (a, b), cs in sorted(groups.items())))
-    return sp.ccode(F), sp.ccode(scale)
+    scale = [sp.Add(*cs) * Ln ** a * nn ** b for (a, b), cs in sorted(groups.items())]
+    return _c_terms(F), [sp.ccode(t) if k == 0 else f"+ {sp.ccode(t)}" for k, t in enumerate(scale)]
 
 
 @functools.lru_cache(maxsize=1)

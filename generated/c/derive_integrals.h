@@ -35,7 +35,7 @@ enum {
     DERIVE_INTEGRAL_P_CZ = 7
 };
 
-static double derive_integral(int which, const double *L, const double *n, const double *q,
+static inline double derive_integral(int which, const double *L, const double *n, const double *q,
         double *scale)
 {
     const double L1 = L[0], L2 = L[1], L3 = L[2], n1 = n[0], n2 = n[1], n3 = n[2];
@@ -52,7 +52,9 @@ static double derive_integral(int which, const double *L, const double *n, const
     case DERIVE_INTEGRAL_L2:
         /* |L|^2 = L1^2 + L2^2 + L3^2 */
         *scale = 3*pow(Lnorm, 2);
-        return pow(L1, 2) + pow(L2, 2) + pow(L3, 2);
+        return pow(L1, 2)
+            + pow(L2, 2)
+            + pow(L3, 2);
     case DERIVE_INTEGRAL_L3:
         /* L3 = I3 omega3 = p_gamma */
         *scale = Lnorm;
@@ -60,15 +62,22 @@ static double derive_integral(int which, const double *L, const double *n, const
     case DERIVE_INTEGRAL_L_DOT_RC:
         /* L . r_c = L1 cx + L2 cy + L3 cz (spherical body: I1 = I2 = I3) */
         *scale = Lnorm*(fabs(cx) + fabs(cy) + fabs(cz));
-        return L1*cx + L2*cy + L3*cz;
+        return L1*cx
+            + L2*cy
+            + L3*cz;
     case DERIVE_INTEGRAL_KOVALEVSKAYA:
         /* K = (w1^2 - w2^2 - (M g/I3)(cx n1 - cy n2))^2 + (2 w1 w2 - (M g/I3)(cx n2 + cy n1))^2, w = L/I */
-        *scale = pow(Lnorm, 4)*(pow(I2, -4) + 2/(pow(I1, 2)*pow(I2, 2)) + pow(I1, -4)) + pow(Lnorm, 2)*nnorm*(2*M*g*fabs(cx)/(pow(I2, 2)*I3) + 2*M*g*fabs(cy)/(pow(I2, 2)*I3) + 4*M*g*fabs(cx)/(I1*I2*I3) + 4*M*g*fabs(cy)/(I1*I2*I3) + 2*M*g*fabs(cx)/(pow(I1, 2)*I3) + 2*M*g*fabs(cy)/(pow(I1, 2)*I3)) + 2*pow(nnorm, 2)*(pow(M, 2)*pow(cx, 2)*pow(g, 2) + pow(M, 2)*pow(cy, 2)*pow(g, 2))/pow(I3, 2);
-        return pow(-M*g*(cx*n2 + cy*n1)/I3 + 2*L1*L2/(I1*I2), 2) + pow(-M*g*(cx*n1 - cy*n2)/I3 - pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2), 2);
+        *scale = 2*pow(nnorm, 2)*(pow(M, 2)*pow(cx, 2)*pow(g, 2) + pow(M, 2)*pow(cy, 2)*pow(g, 2))/pow(I3, 2)
+            + pow(Lnorm, 2)*nnorm*(2*M*g*fabs(cx)/(pow(I2, 2)*I3) + 2*M*g*fabs(cy)/(pow(I2, 2)*I3) + 4*M*g*fabs(cx)/(I1*I2*I3) + 4*M*g*fabs(cy)/(I1*I2*I3) + 2*M*g*fabs(cx)/(pow(I1, 2)*I3) + 2*M*g*fabs(cy)/(pow(I1, 2)*I3))
+            + pow(Lnorm, 4)*(pow(I2, -4) + 2/(pow(I1, 2)*pow(I2, 2)) + pow(I1, -4));
+        return pow(-M*g*(cx*n2 + cy*n1)/I3 + 2*L1*L2/(I1*I2), 2)
+            + pow(-M*g*(cx*n1 - cy*n2)/I3 - pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2), 2);
     case DERIVE_INTEGRAL_GORYACHEV_CHAPLYGIN:
         /* G = w3 (w1^2 + w2^2) - (M g/I3)(cx w1 + cy w2) n3, w = L/I (conserved on L . n = 0) */
-        *scale = pow(Lnorm, 3)*(1/(pow(I2, 2)*I3) + 1/(pow(I1, 2)*I3)) + Lnorm*nnorm*(M*g*fabs(cy)/(I2*I3) + M*g*fabs(cx)/(I1*I3));
-        return L3*(pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2))/I3 - M*g*n3*(L2*cy/I2 + L1*cx/I1)/I3;
+        *scale = Lnorm*nnorm*(M*g*fabs(cy)/(I2*I3) + M*g*fabs(cx)/(I1*I3))
+            + pow(Lnorm, 3)*(1/(pow(I2, 2)*I3) + 1/(pow(I1, 2)*I3));
+        return L3*(pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2))/I3
+            - M*g*n3*(L2*cy/I2 + L1*cx/I1)/I3;
     default:
         *scale = NAN;
         return NAN;
