@@ -18,12 +18,18 @@ known exactly:
   :func:`derive.exact.free_asymmetric`, restarted from the current state at every step, with
   the C port of :mod:`derive.elliptic` in ``templates/c/elliptic.h.j2``).
 
-A method composes Strang steps S(γh) = kick(γh/2) ∘ free(γh) ∘ kick(γh/2) with the weights γ
-of a symmetric composition (:data:`COMPOSITIONS`, exact data like :mod:`derive.tableaux`;
-the C literals are the correctly rounded doubles); adjacent kicks are merged. Every sub-flow
-turns n and e by an orthogonal rotation and changes L by a multiple of n × r_c ⟂ n, so
-|n| = |e| = 1, n·e = 0 and L·n stay at round-off for any h, and the method is a Poisson
-(symplectic) map: the energy error stays bounded, O(hᵖ), over long runs.
+A method is a symmetric sequence of these sub-flows, a :class:`Splitting` given by its
+coefficients (:data:`SCHEMES`, exact data like :mod:`derive.tableaux`; the C literals are the
+correctly rounded doubles): a composition of Strang steps S(γh) = kick(γh/2) ∘ free(γh) ∘
+kick(γh/2) (:data:`COMPOSITIONS`; adjacent kicks merged), or a general ABA sequence
+free(a₁h) kick(b₁h) free(a₂h) … free(a₁h). ``splitting4`` is ABA(10,6,4) of Blanes, Casas,
+Farrés, Laskar, Makazaga & Murua, designed for near-integrable problems H = A + εB: its error is
+O(εh¹⁰ + ε²h⁶ + ε³h⁴), and gravity is such a perturbation of the exactly integrated free
+rotation whenever the spin energy dominates M g |r_c| (a fast top). The last sub-flow of a step
+and the first of the next are merged (for ABA methods that saves one free flow per step).
+Every sub-flow turns n and e by an orthogonal rotation and changes L by a multiple of
+n × r_c ⟂ n, so |n| = |e| = 1, n·e = 0 and L·n stay at round-off for any h, and the method is a
+Poisson (symplectic) map: the energy error stays bounded, O(hᵖ), over long runs.
 
 The state is the model's own: (ω̃, n, e) or (L, n, e) (the C converts ω̃ ↔ L = I ω̃ at entry and at
 each output; the flows act on L).
@@ -33,8 +39,11 @@ near the separatrix of an asymmetric body (m₁ = 1 − m ≲ 1e-12) the paramet
 the current state in double precision (D_y = L² − 2E I_y as a sum of two terms, which cancel
 there), so the restart of each step sees the orbit's m₁ only to the state's own conditioning.
 The asymmetric free flow costs ~0.6–1 µs (R_F, R_J twice, one Landen recurrence, trigonometry),
-the symmetric one ~50 ns, a kick ~5 ns; :func:`bench_energy` measures where that pays
-(the fast top: the spin is carried exactly by the free flow). Note that Gauss–Legendre
+the symmetric one ~50 ns (two sincos), a kick ~5 ns. For the Lagrange top (I₁ = I₂, r_c on
+axis 3) the free flow's turn about body axis 3 commutes with everything else and L₃ is
+constant, so the C applies it once per output interval and a free flow is one sincos.
+:func:`bench_energy` measures where that pays (the fast top: the spin is carried exactly by
+the free flow). Note that Gauss–Legendre
 methods conserve every quadratic invariant, and in Euler–Poisson variables the energy
 Σ L_i²/(2I_i) + M g n·r_c is quadratic: compare trajectories (``measure="axis"``), not energy,
 against them.
@@ -69,12 +78,61 @@ def _dec(x: decimal.Decimal) -> F:
 
 
 @dataclass(frozen=True)
+class Splitting:
+    """One step of a symmetric splitting method given by its coefficients (exact Fractions):
+
+        ABA (len(a) = len(b) + 1):  free(a₁h) kick(b₁h) free(a₂h) … kick(b_s h) free(a_{s+1}h)
+        BAB (len(b) = len(a) + 1):  kick(b₁h) free(a₁h) kick(b₂h) … free(a_s h) kick(b_{s+1}h)
+
+    Σa = Σb = 1 (consistency), and both sequences palindromic (a symmetric, time-reversible
+    method: only even orders, the odd order conditions hold by symmetry). ``order`` is the
+    classical order; methods for near-integrable problems H = A + εB also have an ε-order pair
+    ``eps_orders`` (the error is O(ε h^p₁ + ε² h^p₂ + …), p₁ ≥ p₂ ≥ … ≥ order)."""
+
+    name: str
+    order: int
+    a: tuple[F, ...]
+    b: tuple[F, ...]
+    reference: str = ""
+    eps_orders: tuple[int, ...] = ()
+
+    def __post_init__(self):
+        a, b = self.a, self.b
+        if abs(len(a) - len(b)) != 1 or not a or not b:
+            raise ValueError(f"{self.name}: need len(a) = len(b) ± 1")
+        for key, c in (("a", a), ("b", b)):
+            if c != tuple(reversed(c)):
+                raise ValueError(f"{self.name}: the {key} coefficients must be symmetric")
+            if abs(sum(c) - 1) > F(1, 10**24):
+                raise ValueError(f"{self.name}: the {key} coefficients must sum to 1")
+
+    @property
+    def stages(self) -> int:
+        """Free flows per step (the costly sub-flow)."""
+        return len(self.a)
+
+    def ops(self) -> list[tuple[str, F]]:
+        """The step as exact sub-flows, ("free", c) and ("kick", c), each over time c·h."""
+        first, second = ((self.a, "free"), (self.b, "kick")) if len(self.a) > len(self.b) \
+            else ((self.b, "kick"), (self.a, "free"))
+        (x, kx), (y, ky) = first, second
+        out: list[tuple[str, F]] = []
+        for i, c in enumerate(x):
+            out.append((kx, c))
+            if i < len(y):
+                out.append((ky, y[i]))
+        return out
+
+
+@dataclass(frozen=True)
 class Composition:
-    """A symmetric composition S(γ₁h) ∘ … ∘ S(γ_s h) of a symmetric second-order method S.
+    """A symmetric composition S(γ₁h) ∘ … ∘ S(γ_s h) of the Strang step
+    S(τ) = kick(τ/2) ∘ free(τ) ∘ kick(τ/2).
 
     ``gammas`` are exact (Fractions: rational, or 50-digit values of the algebraic numbers;
     published decimals where the method is known only numerically). ``order`` is the classical
-    order of the composition."""
+    order of the composition. :meth:`splitting` is the same step as a BAB :class:`Splitting`
+    (adjacent kicks merged)."""
 
     name: str
     order: int
@@ -92,15 +150,14 @@ class Composition:
     def stages(self) -> int:
         return len(self.gammas)
 
-    def ops(self) -> list[tuple[str, F]]:
-        """The step as exact sub-flows: ("kick", c) and ("free", c), time c·h each; the kicks of
-        adjacent Strang steps merged."""
+    def splitting(self) -> Splitting:
+        """The BAB splitting: a = γ, b = (γ₁/2, (γ₁ + γ₂)/2, …, γ_s/2)."""
         g = self.gammas
-        out: list[tuple[str, F]] = [("kick", g[0] / 2)]
-        for i, gi in enumerate(g):
-            out.append(("free", gi))
-            out.append(("kick", (gi + (g[i + 1] if i + 1 < len(g) else 0)) / 2))
-        return out
+        b = tuple((x + y) / 2 for x, y in zip((F(0),) + g, g + (F(0),)))
+        return Splitting(self.name, self.order, g, b, self.reference)
+
+    def ops(self) -> list[tuple[str, F]]:
+        return self.splitting().ops()
 
 
 def _triple_jump() -> tuple[F, ...]:
@@ -144,19 +201,48 @@ COMPOSITIONS: dict[str, Composition] = {c.name: c for c in (
 )}
 
 
+def _aba(c: tuple[str, ...], d: tuple[str, ...], kicks: int) -> tuple[tuple[F, ...], tuple[F, ...]]:
+    """(a, b) of a symmetric ABA method with ``kicks`` kicks from the first halves of its
+    coefficient lists, a₁…a_⌈(s+1)/2⌉ and b₁…b_⌈s/2⌉, published decimals."""
+    na, nb = (kicks + 2) // 2, (kicks + 1) // 2
+    if len(c) != na or len(d) != nb:
+        raise ValueError("need the first halves of a and b")
+    ha, hb = tuple(F(x) for x in c), tuple(F(x) for x in d)
+    a = ha + tuple(reversed(ha[: (kicks + 1) - na]))
+    b = hb + tuple(reversed(hb[: kicks - nb]))
+    return a, b
+
+
+SCHEMES: dict[str, Splitting] = {s.name: s for s in (
+    *(c.splitting() for c in COMPOSITIONS.values()),
+    # 40-digit published values (as tabulated for the Solar System integrations of Farrés et al.
+    # and in REBOUND's SABA(10,6,4)); the ε-order 10 is the quadrature condition
+    # Σ bᵢ cᵢᵏ = 1/(k + 1), k ≤ 9, at the kick times cᵢ, which they meet to 1e-40.
+    Splitting("aba(10,6,4)", 4, *_aba(
+        ("0.03809449742241219545697532230863756534060", "0.1452987161169137492940200726606637497442",
+         "0.2076276957255412507162056113249882065158", "0.4359097036515261592231548624010651844006",
+         "-0.6538612258327867093807117373907094120024"),
+        ("0.09585888083707521061077150377145884776921", "0.2044461531429987806805077839164344779763",
+         "0.2170703479789911017143385924306336714532", "-0.01737538195906509300561788011852699719871"),
+        kicks=8),
+        "S. Blanes, F. Casas, A. Farrés, J. Laskar, J. Makazaga & A. Murua, Appl. Numer. Math. 68 "
+        "(2013) 58; A. Farrés et al., Celest. Mech. Dyn. Astr. 116 (2013) 141", eps_orders=(10, 6, 4)),
+)}
+
+
 @dataclass(frozen=True)
 class SplittingMethod:
-    """A registered splitting method: a composition of the exact sub-flows. Driver ``fixed``:
-    its one C parameter is the maximum step ``h``."""
+    """A registered splitting method: a :class:`Splitting` of the exact sub-flows. Driver
+    ``fixed``: its one C parameter is the maximum step ``h``."""
 
     name: str
-    composition: Composition
+    scheme: Splitting
     summary: str
     driver: str = "fixed"
 
     @property
     def order(self) -> int:
-        return self.composition.order
+        return self.scheme.order
 
     @property
     def params(self) -> tuple[tuple[str, str], ...]:
@@ -164,11 +250,12 @@ class SplittingMethod:
 
 
 METHODS: dict[str, SplittingMethod] = {m.name: m for m in (
-    SplittingMethod("splitting2", COMPOSITIONS["strang"],
+    SplittingMethod("splitting2", SCHEMES["strang"],
                     "Lie-Poisson splitting, Strang (exact free flow and gravity kick), order 2, fixed step"),
-    SplittingMethod("splitting4", COMPOSITIONS["mclachlan-s5"],
-                    "Lie-Poisson splitting, McLachlan's 5-stage composition, order 4, fixed step"),
-    SplittingMethod("splitting6", COMPOSITIONS["kahan-li-s9"],
+    SplittingMethod("splitting4", SCHEMES["aba(10,6,4)"],
+                    "Lie-Poisson splitting, ABA(10,6,4) of Blanes et al. for near-integrable problems, "
+                    "order 4, fixed step"),
+    SplittingMethod("splitting6", SCHEMES["kahan-li-s9"],
                     "Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step"),
 )}
 
@@ -206,11 +293,16 @@ def _context(model, names) -> dict:
     methods = []
     for name in names:
         m = METHODS[name]
-        ops = [{"kind": k, "c": float(c)} for k, c in m.composition.ops() if c != 0]
+        ops = [{"kind": k, "c": float(c)} for k, c in m.scheme.ops()]
+        eps = " + ".join(f"eps{'^' + str(i + 1) if i else ''} h^{p}"
+                         for i, p in enumerate(m.scheme.eps_orders))
         methods.append({"name": m.name, "summary": m.summary, "order": m.order,
-                        "composition": m.composition.name, "stages": m.composition.stages,
-                        "ops": ops, "kicks": sum(op["kind"] == "kick" for op in ops)})
+                        "scheme": m.scheme.name, "form": "ABA" if ops[0]["kind"] == "free" else "BAB",
+                        "stages": m.scheme.stages, "kicks": sum(op["kind"] == "kick" for op in ops),
+                        "eps_note": f", error O({eps})" if eps else "",
+                        "edge": ops[0], "inner": [op for op in ops[1:-1] if op["c"] != 0]})
     return {"prefix": model.name, "symmetric": model.symmetric, "gravity": gravity,
+            "axial": model.symmetric and gravity == "axial",
             "idx": idx, "methods": methods, "omega_state": _omega_state(model)}
 
 

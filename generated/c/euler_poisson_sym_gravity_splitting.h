@@ -5,7 +5,7 @@
  * t_out[n_out-1], y_out[k*euler_poisson_sym_gravity_NY + i] = y_i(t_out[k]); each output interval is split into
  * ceil(dt/h) equal steps so steps land on the output times; the return value equals
  * st->status (DERIVE_* of euler_poisson_sym_gravity_solvers.h). st->nfev counts gravity kicks (the analogue of a
- * force evaluation), st->nstep the composition steps.
+ * force evaluation), st->nstep the steps.
  *
  * Every step composes exact flows: the torque-free flow of H_T = sum L_i^2 / (2 I_i) and the
  * gravity kick L <- L + tau M g n x r_c. Each moves n and e by an orthogonal rotation and changes
@@ -37,7 +37,7 @@ int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const doub
         double h, int pole_check, double *y_work, double *out, derive_stats *st);
 #endif
 
-/* splitting4: Lie-Poisson splitting, McLachlan's 5-stage composition, order 4, fixed step.
+/* splitting4: Lie-Poisson splitting, ABA(10,6,4) of Blanes et al. for near-integrable problems, order 4, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
  */
 int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
