@@ -482,11 +482,12 @@ def markdown() -> list[str]:
 # the extra integrals in C (rendered at `derive generate` time; the measures' integral_drift)
 
 
-#: The extra integrals the compiled measures evaluate, in the order of their C codes (1, 2, …;
-#: 0 is "none"): ``generated/c/derive_integrals.h`` is rendered from this tuple and the
-#: formulas above, and :mod:`derive.measures` picks a point's code from it.
+#: The integrals the compiled measures evaluate, in the order of their C codes (1, 2, …; 0 is
+#: "none"): the cases' extra integrals, then the Casimirs every undamped body conserves (|n|²,
+#: and L·n = p_α), which a sweep may name. ``generated/c/derive_integrals.h`` is rendered from
+#: this tuple and the formulas above, and :mod:`derive.measures` picks a point's code from it.
 C_INTEGRALS = (EXTRA["euler"], EXTRA["lagrange"], SPHERE, EXTRA["kovalevskaya"],
-               EXTRA["goryachev-chaplygin"])
+               EXTRA["goryachev-chaplygin"], CASIMIR, AREA)
 #: The general parameters in the order the C function reads them (``parameters``' keys).
 C_PARAMS = ("I1", "I2", "I3", "M", "g", "cx", "cy", "cz")
 

@@ -262,4 +262,22 @@ def test_cli_bad_integral_name_exits_2(tmp_path):
     assert p.returncode == 2 and not out.exists()
     assert p.stderr.strip().splitlines() == [
         f"error: {sweep}: measure.integral_drift.integral: must be one of case, L2, L3, L_dot_rc, "
-        "kovalevskaya, goryachev_chaplygin, got 'K'"]
+        "kovalevskaya, goryachev_chaplygin, n_norm, p_alpha, got 'K'"]
+
+
+def test_named_casimirs():
+    """Named, the Casimirs: L.n's drift times its size S = 3|L0||n0| is p_alpha_drift (the same
+    quantity from the output map, to rounding); |n|^2 drifts at the tolerance's level."""
+    spec = {"scene": TOP, "vary": {"initial": {"beta": {"values": [0.4, 0.9]}}},
+            "measure": {"names": ["integral_drift", "p_alpha_drift"],
+                        "integral_drift": {"integral": "p_alpha"}}}
+    res = derive.sweep(spec, processes=1)
+    sp = load(spec)
+    L0 = np.array([1.0, 1.0, 0.5]) * sp.inputs[:, 3:6]  # I omega at t = 0, |n0| = 1
+    S = 3 * np.linalg.norm(L0, axis=1)
+    drift = res.measures["integral_drift"] * S
+    assert (res.measures["p_alpha_drift"] > 1e-12).all()
+    assert np.allclose(drift, res.measures["p_alpha_drift"], rtol=0, atol=1e-14 * S.max())
+    spec["measure"]["integral_drift"] = {"integral": "n_norm"}
+    n_norm = derive.sweep(spec, processes=1).measures["integral_drift"]
+    assert (n_norm > 0).all() and (n_norm < 1e-7).all()

@@ -20,7 +20,9 @@ enum {
     DERIVE_INTEGRAL_L3 = 2,
     DERIVE_INTEGRAL_L_DOT_RC = 3,
     DERIVE_INTEGRAL_KOVALEVSKAYA = 4,
-    DERIVE_INTEGRAL_GORYACHEV_CHAPLYGIN = 5
+    DERIVE_INTEGRAL_GORYACHEV_CHAPLYGIN = 5,
+    DERIVE_INTEGRAL_N_NORM = 6,
+    DERIVE_INTEGRAL_P_ALPHA = 7
 };
 
 #define DERIVE_INTEGRAL_NP 8
@@ -78,6 +80,18 @@ static inline double derive_integral(int which, const double *L, const double *n
             + pow(Lnorm, 3)*(1/(pow(I2, 2)*I3) + 1/(pow(I1, 2)*I3));
         return L3*(pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2))/I3
             - M*g*n3*(L2*cy/I2 + L1*cx/I1)/I3;
+    case DERIVE_INTEGRAL_N_NORM:
+        /* |n|^2 = n1^2 + n2^2 + n3^2 = 1 */
+        *scale = 3*pow(nnorm, 2);
+        return pow(n1, 2)
+            + pow(n2, 2)
+            + pow(n3, 2);
+    case DERIVE_INTEGRAL_P_ALPHA:
+        /* p_alpha = L . n = L1 n1 + L2 n2 + L3 n3 */
+        *scale = 3*Lnorm*nnorm;
+        return L1*n1
+            + L2*n2
+            + L3*n3;
     default:
         *scale = NAN;
         return NAN;
