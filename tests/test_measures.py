@@ -3,6 +3,7 @@ formulas of derive.integrable) and the dense output formed only where a search r
 from __future__ import annotations
 
 import copy
+import functools
 import platform
 import subprocess
 import sys
@@ -107,16 +108,24 @@ def test_generated_header_is_the_formulas_printed():
     assert (GENERATED / "c" / "derive_integrals.h").read_text() == integrable.c_header()
 
 
-def _scale(integral, L, n, p) -> float:
-    """The documented size S, computed here with SymPy from the definition (an independent
-    check of the printed C): the sum over the monomials c L^a n^b of |c| |L|^|a| |n|^|b|."""
+@functools.lru_cache(maxsize=None)
+def _monomials(name: str):
+    """[(degree in L, degree in n, coefficient(p))] of an integral's expanded formula (SymPy)."""
     import sympy as sp
 
+    integral = next(i for i in integrable.C_INTEGRALS if i.name == name)
     Ls, ns = sp.symbols("L1:4"), sp.symbols("n1:4")
-    poly = sp.Poly(sp.expand(integral.formula(Ls, ns, {k: sp.nsimplify(v) for k, v in p.items()})),
-                   *Ls, *ns)
+    ps = sp.symbols(integrable.C_PARAMS)
+    poly = sp.Poly(sp.expand(integral.formula(Ls, ns, dict(zip(integrable.C_PARAMS, ps)))), *Ls, *ns)
+    return [(sum(m[:3]), sum(m[3:]), sp.lambdify(ps, c)) for m, c in poly.terms()]
+
+
+def _scale(integral, L, n, p) -> float:
+    """The documented size S, computed here from the definition (an independent check of the
+    printed C): the sum over the monomials c L^a n^b of |c| |L|^|a| |n|^|b|."""
     Ln, nn = np.linalg.norm(L), np.linalg.norm(n)
-    return float(sum(abs(float(c)) * Ln ** sum(m[:3]) * nn ** sum(m[3:]) for m, c in poly.terms()))
+    q = [p[k] for k in integrable.C_PARAMS]
+    return float(sum(abs(c(*q)) * Ln ** a * nn ** b for a, b, c in _monomials(integral.name)))
 
 
 def test_c_integrals_equal_the_numpy_formulas():
