@@ -146,7 +146,6 @@ static void derive_euler_poisson_asym_split_turn_axis(int k, double th, double *
     }
 }
 
-
 /* Free flow of a body with I_a = I_b (a, b the axes other than k), I_k the third moment:
  * H_T = |L|^2/(2 I_a) + (1/I_k - 1/I_a) L_k^2/2, two commuting rotations (exact): n, e about L
  * by -|L| tau / I_a, then L, n, e about body axis k by -(1/I_k - 1/I_a) L_k tau. */

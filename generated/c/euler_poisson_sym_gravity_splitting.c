@@ -143,7 +143,6 @@ static void derive_euler_poisson_sym_gravity_split_turn_axis(int k, double th, d
     }
 }
 
-
 /* The exact flow of H_T over tau, less its turn about body axis 3. For this body (I1 = I2, the
  * centre of mass on axis 3) that turn, of L, n and e by -(1/I3 - 1/I1) L3 tau, commutes with
  * the spin about L and with the kick (n x r_c turns with n), and L3 is constant (neither flow
