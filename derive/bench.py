@@ -147,6 +147,11 @@ class Settings:
     splitting_target: float = 1e-8
     splitting_budget: float = 30.0
     lambdify_n: int = 100_000
+    # issue 11's sweep targets (derive.sweeps.bench_throughput): trajectories per process,
+    # SciPy runs, and the 2-process / Dask comparison's points (0: not run)
+    sweep_n: int = 2000
+    sweep_scipy_n: int = 20
+    sweep_big: int = 100_000
 
 
 def _decades(lo: int, hi: int, half: bool) -> tuple[float, ...]:
@@ -161,7 +166,7 @@ QUICK = Settings("quick", rtols=_decades(4, 13, half=False), max_refinements=9, 
                  all_baseline_forms=False, other_formulations=False,
                  loop_calls=1_000_000, loop_repeats=9, numpy_repeats=7, python_calls=5_000, drift_steps=200_000,
                  ref_repeats=3, fixed_cost_calls=300, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1,
-                 splitting_periods=1e3, splitting_budget=10.0)
+                 splitting_periods=1e3, splitting_budget=10.0, sweep_n=500, sweep_scipy_n=5, sweep_big=20_000)
 SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, other_repeats=1, long_run=0.0,
                  cap=1.0, scenes=("looping_top",), families=("scipy",), all_baseline_forms=False,
                  other_formulations=False, all_formulations_fixed=False,
@@ -170,7 +175,8 @@ SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, othe
                  numpy_sizes=(1_000,), numpy_repeats=3, python_calls=200, min_total=0.0, drift_steps=2_000,
                  ref_t_end=0.5, ref_repeats=1, fixed_cost_calls=3, batch_n=4, batch_t_end=0.2, batch_scipy_n=1,
                  process_repeats=0, cold_runs=0, lambdify_n=1_000,
-                 splitting_cases=(("fast-top", "axis"),), splitting_periods=20.0, splitting_budget=5.0)
+                 splitting_cases=(("fast-top", "axis"),), splitting_periods=20.0, splitting_budget=5.0,
+                 sweep_n=20, sweep_scipy_n=2, sweep_big=0)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -55,16 +55,24 @@ def header(results: dict) -> list[str]:
     return L
 
 
+def _cell(what: str, value) -> str:
+    """A target's measured value: seconds, a fraction (scaling) or a ratio."""
+    if value is None:
+        return "—"
+    if "[s]" in what:
+        return f"{value:.3g} s"
+    return f"{value:.0%}" if "scaling" in what else f"{value:.3g}×"
+
+
 def targets_section(results: dict) -> list[str]:
     t = results["targets"]
-    L = ["## Targets (issue 8), measured side by side in this run", "",
+    L = ["## Targets (issues 8 and 11), measured side by side in this run", "",
          "| target | goal | measured | |", "|---|---|---|---|"]
     for what, goal, value, ok in T.summary(t):
-        cell = "—" if value is None else (f"{value:.3g} s" if "[s]" in what else f"{value:.3g}×")
-        L.append(f"| {what} | {goal} | {cell} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
     L += ["", "(stronger baseline): no goal was set against it; reported because `odeint` — LSODA whose "
           "stepping loop is Fortran, not Python — is the cheapest way SciPy offers to integrate a Python rhs.", ""]
-    for key in ("reference", "fixed_cost", "batch", "processes", "lambdify"):
+    for key in ("reference", "fixed_cost", "batch", "processes", "lambdify", "sweeps"):
         if isinstance(t.get(key), dict) and "error" in t[key]:
             L += [f"- {key}: not measured ({t[key]['error']})"]
     L.append("")
@@ -265,10 +273,9 @@ def summary(results: dict) -> str:
     cmd = "make bench" if cfg["name"] == "full" else f"derive bench --{cfg['name']}"
     L = [f"From one `{cmd}` run ({results['elapsed']:.0f} s; {m['cpu']}, {m['cores']} cores, load average "
          f"{la[0]:.2f} at the start; commit {m['commit']}; versions in the full report).", "",
-         "| target (issue 8) | goal | measured | |", "|---|---|---|---|"]
+         "| target (issues 8 and 11) | goal | measured | |", "|---|---|---|---|"]
     for what, goal, value, ok in T.summary(results["targets"]):
-        cell = "—" if value is None else (f"{value:.3g} s" if "[s]" in what else f"{value:.3g}×")
-        L.append(f"| {what} | {goal} | {cell} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
     c = results["c_loop"][-1]
     L += ["", f"Generated C `heavy_top_rhs` {c['generated_ns']:.1f} ns/call against the same equations typed "
           f"by hand {c['handwritten_ns']:.1f} ns/call ({c['ratio']:.2f}×, `{c['flags']}`).", "",

@@ -52,6 +52,8 @@ GOALS = {
     "vs_scipy": ("≥", 100.0), "vs_casadi": ("≥", 10.0), "fixed_cost": ("≤", 0.5),
     "batch_vs_raw": ("≥", 0.70), "batch_vs_scipy": ("≥", 150.0), "warm_process": ("≤", 3.0),
     "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
+    # issue 11
+    "sweep_vs_scipy": ("≥", 100.0), "dask_vs_local": ("≤", 1.1), "dask_scaling": ("≥", 0.8),
 }
 
 
@@ -370,7 +372,7 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=6, desc="targets", unit="part", file=sys.stderr) as bar:
+    with tqdm(total=7, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
         out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
@@ -384,7 +386,20 @@ def run(cfg, fams) -> dict:
         bar.update()
         out["lambdify"] = _guard("lambdify", numpy_vs_lambdify, cfg)
         bar.update()
+        out["sweeps"] = _guard("sweeps", sweeps, cfg)
+        bar.update()
     return out
+
+
+def sweeps(cfg) -> dict:
+    """Issue 11's targets (:func:`derive.sweeps.bench_throughput`): the measured sweep loop per
+    trajectory against ``solve_ivp(DOP853)`` on a plain-Python rhs at rtol 1e-8, t ∈ [0, 10];
+    with ``cfg.sweep_big`` points, a 2-worker Dask LocalCluster against the local engine with 2
+    processes, and the scaling from 1 to 2 workers."""
+    from .sweeps import bench_throughput
+
+    return bench_throughput(n=cfg.sweep_n, scipy_n=cfg.sweep_scipy_n, engines=cfg.sweep_big > 0,
+                            big=max(cfg.sweep_big, 1))
 
 
 #: Rows that are context, not targets: what the row's goal column says instead.
@@ -393,7 +408,8 @@ CONTEXT = {"batch_vs_own": "(same work in C)"}
 
 def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
     """(target, goal, measured ratio, met) rows for the report's table."""
-    ref, fc, ba, pr, la = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch", "processes", "lambdify"))
+    ref, fc, ba, pr, la, sw = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch", "processes",
+                                                        "lambdify", "sweeps"))
 
     def g(key):
         if key in CONTEXT:
@@ -401,7 +417,7 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
         if key not in GOALS:
             return "(stronger baseline)"
         op, goal = GOALS[key]
-        return f"{op} {goal:g}" + ("" if key == "cold_minus_warm" else "×")
+        return f"{op} {goal:g}" + ("" if key in ("cold_minus_warm", "dask_scaling") else "×")
 
     rows = [
         ("reference scene: `derive.simulate` vs `solve_ivp` DOP853 plain-Python rhs, equal or smaller error",
@@ -421,5 +437,10 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
          pr.get("warm_ratio")),
         ("cold compile (fresh `DERIVE_CACHE`) − warm run [s]", "cold_minus_warm", pr.get("cold_minus_warm")),
         (f"NumPy batch rhs (N = {la.get('n', 0):,}) / `sympy.lambdify(cse=True)`", "numpy_vs_lambdify", la.get("ratio")),
+        ("issue 11: sweep (measures on, rtol 1e-8, t ∈ [0, 10]) per trajectory vs `solve_ivp` DOP853 "
+         "plain-Python rhs", "sweep_vs_scipy", sw.get("speedup")),
+        ("issue 11: 10⁵ points, Dask LocalCluster 2 workers / local engine 2 processes", "dask_vs_local",
+         sw.get("dask2_over_local2")),
+        ("issue 11: Dask scaling from 1 to 2 workers", "dask_scaling", sw.get("scaling_1_to_2")),
     ]
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]

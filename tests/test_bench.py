@@ -166,7 +166,7 @@ def test_scipy_baseline_reaches_the_exact_solution():
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     res = bench.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()
-    for heading in ("Targets (issue 8)", "Kernel speed", "Work–precision", "Drift", "Load average"):
+    for heading in ("Targets (issues 8 and 11)", "Kernel speed", "Work–precision", "Drift", "Load average"):
         assert heading in report
     for wp in res["work_precision"]:
         png = tmp_path / wp["plot"]
@@ -184,8 +184,9 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     scipy_row = ref["rows"][0]
     assert scipy_row["family"] == "scipy" and scipy_row["ratio"] > 0
     assert scipy_row["error"] <= ref["ours"]["error"] or scipy_row["rtol"] <= bench.MIN_RTOL
-    for key in ("fixed_cost", "batch", "lambdify"):
+    for key in ("fixed_cost", "batch", "lambdify", "sweeps"):
         assert "error" not in tg[key], (key, tg[key])
+    assert tg["sweeps"]["speedup"] > 0 and "dask_2w" not in tg["sweeps"]  # smoke: no cluster
     assert tg["fixed_cost"]["ratio"] > 0 and tg["batch"]["vs_scipy"] > 0
     assert tg["lambdify"]["max_rel_diff"] < 1e-12  # lambdify ran the same expressions
     assert all(np.isfinite(r["energy"]) for r in res["drift"]["rows"] if "error" not in r)
@@ -193,7 +194,7 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     assert data["settings"]["name"] == "smoke" and data["machine"]["versions"]["scipy"]
     assert (tmp_path / "points.csv").read_text().count("\n") > 4
     summary = (tmp_path / "summary.md").read_text()
-    assert "target (issue 8)" in summary and "| looping_top | SciPy" in summary
+    assert "target (issues 8 and 11)" in summary and "| looping_top | SciPy" in summary
 
 
 # ---------------------------------------------------------------------------------------------
