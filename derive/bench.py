@@ -209,19 +209,20 @@ def per_call(fn, calls: int, blocks: int = 7) -> float:
     return statistics.median(out)
 
 
-def interleaved(fns, calls: int, blocks: int = 15) -> list[float]:
-    """Per-call time of each function (s): blocks of ``calls // blocks`` calls, the functions
-    taking turns block by block (so a change of machine load hits all alike), median per function."""
-    n = max(1, calls // blocks)
+def interleaved(fns, calls: int, blocks: int = 15, counts=None) -> list[float]:
+    """Per-call time of each function (s): blocks of ``calls // blocks`` calls (or ``counts[i]``
+    calls of function i: a fast one many times, a slow one once), the functions taking turns
+    block by block (so a change of machine load hits all alike), median per function."""
+    ns = list(counts) if counts is not None else [max(1, calls // blocks)] * len(fns)
     for fn in fns:
         fn()
     out = [[] for _ in fns]
     for _ in range(blocks):
         for i, fn in enumerate(fns):
             t0 = time.perf_counter()
-            for _ in range(n):
+            for _ in range(ns[i]):
                 fn()
-            out[i].append((time.perf_counter() - t0) / n)
+            out[i].append((time.perf_counter() - t0) / ns[i])
     return [statistics.median(x) for x in out]
 
 

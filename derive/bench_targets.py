@@ -26,6 +26,7 @@ part that fails is reported as such, with why, and the rest of the bench goes on
 from __future__ import annotations
 
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -125,7 +126,10 @@ def reference_scene(cfg, fams) -> dict:
     t = np.linspace(0.0, data["simulate"]["t_end"], data["simulate"]["samples"])
     ref = B.exact_axis(data, t)
     derive.simulate(data)  # derive, compile (or load) once: the timing is of a warm call
-    t_ours, res = B.timed(lambda: derive.simulate(data), max(3, cfg.ref_repeats))
+    ours_call = lambda: derive.simulate(data)  # noqa: E731
+    res = ours_call()
+    t_ours = B.interleaved([ours_call], 0, blocks=max(3, cfg.ref_repeats),
+                           counts=[max(1, int(0.02 / B.timed(ours_call, 3)[0]))])[0]
     ours = {"time": t_ours, "error": B.axis_error(res.axis, ref), "nfev": int(res.nfev),
             "method": res.method, "formulation": res.formulation, "rtol": rtol}
     try:
@@ -158,9 +162,16 @@ def reference_scene(cfg, fams) -> dict:
         m = _match(solve, ours["error"], rtol)
         m["setup"] = bc.PYDY_BUILD_TIME.get(prob.formulation, first_setup) if fam == "pydy" else first_setup
         setup = c.setup(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"])
-        m["time"], _ = B.timed(lambda: c.solve(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"], setup),
-                               max(3, cfg.ref_repeats) if fam != "scipy" else max(1, cfg.ref_repeats // 2), 2.0)
-        rows.append({"family": fam, "method": method, "label": label, **m, "ratio": m["time"] / t_ours})
+        # Timed in turns with ours (one contender call, then as many of ours as take about as
+        # long), so that a change of machine load hits both sides of the ratio alike.
+        theirs = lambda: c.solve(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"], setup)  # noqa: E731
+        t0 = time.perf_counter()
+        theirs()
+        k = max(1, min(1000, int((time.perf_counter() - t0) / t_ours)))
+        m["time"], m["ours_paired"] = B.interleaved([theirs, ours_call], 0, blocks=max(3, cfg.ref_repeats),
+                                                    counts=[1, k])
+        rows.append({"family": fam, "method": method, "label": label, **m,
+                     "ratio": m["time"] / m["ours_paired"]})
     # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
     scipy_rtol = rows[0]["rtol"]
     odeint = next(r for r in rows if r["method"] == "scipy-odeint")
@@ -262,29 +273,34 @@ def batch(cfg, rtols: dict) -> dict:
 
     scenes = batch_scenes(cfg.batch_n, cfg.batch_t_end)
     res = derive.simulate_batch(scenes)  # compile once
-    t_batch, res = B.timed(lambda: derive.simulate_batch(scenes), 1 if cfg.batch_n >= 500 else 3)
-    t_batch2, _ = B.timed(lambda: derive.simulate_batch(scenes), 1)
-    t_batch = min(t_batch, t_batch2)
-    out = {"n": len(scenes), "t_end": cfg.batch_t_end, "formulation": res[0].formulation, "time": t_batch,
-           "per_scene": t_batch / len(scenes)}
+    out = {"n": len(scenes), "t_end": cfg.batch_t_end, "formulation": res[0].formulation}
+    # simulate_batch, the raw solve-only C loop and simulate_batch's own C call, timed in turns
+    # (best of three rounds each), so that a change of machine load hits all three alike.
+    fns = {"time": lambda: derive.simulate_batch(scenes)}
     try:
         from . import bench_internals as bi
 
         kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
-        run = lambda: kernel.solve_batch("dop853", y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
-        run()
-        t_raw = min(B.timed(run, 1)[0], B.timed(run, 1)[0])
-        out.update(raw=t_raw, vs_raw=t_raw / t_batch)
+        fns["raw"] = lambda: kernel.solve_batch("dop853", y0s, ps, t, rtol=rtol, atol=atol, check=False)
     except Exception as exc:  # noqa: BLE001
         out["raw_error"] = f"{type(exc).__name__}: {exc}"
     try:  # informational: simulate_batch's own C call (outputs included) without its Python
         from . import bench_internals as bi
 
-        own = bi.own_batch_call(scenes)
-        own()
-        out["own_call"] = min(B.timed(own, 1)[0], B.timed(own, 1)[0])
+        fns["own_call"] = bi.own_batch_call(scenes)
     except Exception as exc:  # noqa: BLE001
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
+    for fn in fns.values():
+        fn()
+    best = {key: math.inf for key in fns}
+    for _ in range(3 if cfg.batch_n >= 500 else 5):
+        for key, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            best[key] = min(best[key], time.perf_counter() - t0)
+    out.update(best, per_scene=best["time"] / len(scenes))
+    if "raw" in best:
+        out["vs_raw"] = best["raw"] / best["time"]
     bc.solve_scipy(bc.problem(scenes[0], "euler-angles"), "scipy-dop853", 1e-6, 1e-8)  # imports, untimed
     for method, key in (("scipy-dop853", "scipy"), ("scipy-odeint", "odeint")):
         r = rtols.get(method) or scenes[0]["simulate"]["rtol"]
@@ -359,8 +375,9 @@ def numpy_vs_lambdify(cfg) -> dict:
         diff = float(np.max(np.abs(a - b)) / np.max(np.abs(a)))
         reps = max(3, cfg.numpy_repeats)
         stacked = lambda: np.stack(np.broadcast_arrays(*f(Y, P)))  # noqa: E731 - one (6, N) array, like rhs
-        t_gen, t_lam, t_raw = (min(B.timed(fn, reps)[0] for _ in range(2))
-                               for fn in (lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P)))
+        # in turns, so that a change of machine load hits all three alike
+        t_gen, t_lam, t_raw = B.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P)],
+                                            0, blocks=reps, counts=[3, 3, 3])
     return {"n": n, "generated": t_gen, "lambdify": t_lam, "lambdify_raw": t_raw, "ratio": t_gen / t_lam,
             "ratio_raw": t_gen / t_raw, "max_rel_diff": diff, "generated_ns_per_state": t_gen / n * 1e9,
             "lambdify_ns_per_state": t_lam / n * 1e9, "lambdify_raw_ns_per_state": t_raw / n * 1e9}
