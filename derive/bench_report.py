@@ -87,7 +87,10 @@ def targets_section(results: dict) -> list[str]:
               f"β̇₀ = {i['beta_dot']:g}, γ̇₀ = {i['gamma_dot']:g}; t ∈ [0, {sc['simulate']['t_end']:g}], "
               f"{sc['simulate']['samples']} samples. Error = max |ê₃ − ê₃,exact|. Ours: `derive.simulate` "
               f"at rtol {o['rtol']:g} (warm: model and library loaded); each contender at the loosest rtol "
-              "(halved or doubled from 1e-10) whose error was no larger than ours (reached = yes), then timed. One-off setup: building "
+              "(halved or doubled from 1e-10) whose error was no larger than ours (reached = yes), then timed "
+              "in turns with ours (one contender call, then as many of ours as take about as long; the ratio "
+              "is of those paired times, so a change of machine load hits both sides alike). One-off setup: "
+              "building "
               "the CasADi integrator; PyDy's code generation and Cython compilation; nothing for SciPy.", "",
               "| solver | rtol | wall time | error | rhs evaluations | reached our error | contender / derive | "
               "one-off setup |",
