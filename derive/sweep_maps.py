@@ -87,9 +87,7 @@ def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
         x = res.params[kx].reshape(res.shape)[0, :]
         zz = z.reshape(res.shape)
         finite = zz[np.isfinite(zz)]
-        norm = None
-        if finite.size and finite.min() > 0 and finite.max() / finite.min() > 100:
-            norm = LogNorm(finite.min(), finite.max())
+        norm = LogNorm(finite.min(), finite.max()) if _wide(finite) else None
         mesh = ax.pcolormesh(x, y, zz, shading="nearest", cmap="viridis", norm=norm)
         fig.colorbar(mesh, ax=ax, label=_measure_label(measure))
         ax.set_xlabel(_label(kx))
@@ -112,6 +110,8 @@ def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
         ax.plot(x[order], z[order], "o-", ms=3, label=f"{measure} (simulated)")
         ax.set_xlabel(_label(k))
         ax.set_ylabel(_measure_label(measure))
+        if _wide(z[np.isfinite(z)]):
+            ax.set_yscale("log")
         _line_prediction(ax, res, k, x[order], z[order], measure)
         if ax.get_legend_handles_labels()[0]:
             ax.legend(fontsize=8)
@@ -122,9 +122,52 @@ def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
     plt.close(fig)
 
 
+def _wide(finite: np.ndarray) -> bool:
+    """Positive values spanning more than two decades: drawn on a log scale."""
+    return bool(finite.size) and finite.min() > 0 and finite.max() / finite.min() > 100
+
+
+#: Moment ratios at which a body can become an integrable case (Lagrange 1, Kovalevskaya 2,
+#: Goryachev–Chaplygin 4), tried against each other moment when a sweep varies one.
+_RATIOS = (0.25, 0.5, 1.0, 2.0, 4.0)
+
+
+def _integrable_moments(ax, sc, key, x) -> None:
+    """Where the swept moment makes the scene's body an integrable case, the other numbers as
+    the scene has them (``derive.integrable.classify``): a dotted line labelled with the case."""
+    import dataclasses
+
+    from .integrable import classify
+
+    i = ("body.I1", "body.I2", "body.I3").index(key)
+    moments = list(sc.body.moments)
+    found = {}
+    for j, other in enumerate(moments):
+        if j == i:
+            continue
+        for r in _RATIOS:
+            v = other * r
+            if not (x.min() <= v <= x.max()):
+                continue
+            trial = list(moments)
+            trial[i] = v
+            try:
+                body = type(sc.body)(*trial)
+                case = classify(dataclasses.replace(sc, body=body)).case
+            except (ValueError, TypeError):
+                continue
+            if case != "general":
+                found.setdefault(v, case)
+    for v, case in sorted(found.items()):
+        ax.axvline(v, color="k", ls=":", label=f"{case} case: {key} = {v:.4g}")
+
+
 def _line_prediction(ax, res, key, x, z, measure):
     sc = res.scene
     if sc is None:
+        return
+    if measure == "integral_drift" and key in ("body.I1", "body.I2", "body.I3"):
+        _integrable_moments(ax, sc, key, x)
         return
     if key == "initial.gamma_dot" and measure.startswith("beta"):
         top = _heavy_top(sc)
