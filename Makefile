@@ -20,8 +20,9 @@ derive: $(STAMP)
 verify: $(STAMP)
 	@$(PY) -m derive verify
 
+# One test process per core (pytest-xdist): the suite is many independent compiles and runs.
 test: $(STAMP)
-	@$(PY) -m pytest -q
+	@$(PY) -m pytest -q -n auto
 
 test-slow: $(STAMP)
 	@$(PY) -m pytest -q -m slow
