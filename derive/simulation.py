@@ -344,8 +344,8 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
 
 def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:
     """Per trajectory (rows of canonical β), whether ``_check_pole`` could object: the smallest
-    sin β is at the smallest or the largest β (sin is concave on [0, π]); non-finite rows are
-    suspects too (the per-scene check passes them on to ``_result``, which names them)."""
+    sin β is at the smallest or the largest β (sin is concave on [0, π]). The outputs are finite
+    here (the C call checked them; a NaN would make its row a suspect anyway)."""
     if not REGISTRY[desc.formulation].pole_loss:
         return np.zeros(len(betas), dtype=bool)
     s = np.minimum(np.sin(betas.min(axis=1)), np.sin(betas.max(axis=1)))
