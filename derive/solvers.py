@@ -262,6 +262,12 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
         "pole_clearance": POLE_CLEARANCE,
     }
     ctx["any_implicit"] = any(m["driver"] == "implicit" for m in ctx["methods"])
+    # One explicit step function per tableau, named after the first method that runs it and
+    # compiled when any of them is (dop853 and dop853_fixed share DOP853's step).
+    explicit = [m for m in ctx["methods"] if m["driver"] in ("adaptive", "fixed")]
+    for m in explicit:
+        m["step_users"] = [u["name"] for u in explicit if u["tableau"] is m["tableau"]]
+        m["step_of"] = m["step_users"][0]
     return {
         f"{prefix}_solvers.h": render("c/solvers.h.j2", **ctx),
         f"{prefix}_solvers.c": render("c/solvers.c.j2", **ctx),

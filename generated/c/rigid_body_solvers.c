@@ -371,9 +371,9 @@ static void derive_rigid_body_add_block(double *m, int n, int bi, int bj, double
 /* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8.
  * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853 (one method per
  * library: a first run compiles only what it uses). */
-#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
-
-/* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853) || defined(DERIVE_WITH_DOP853_FIXED)
+/* One explicit step of tableau "dop853" (for dop853, dop853_fixed): on entry
+ * k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
 static int derive_rigid_body_dop853_step(double t, double h, const double *y, const double *p,
                               double k[][rigid_body_NY], double *y_new, double *t_rc,
@@ -473,6 +473,8 @@ static int derive_rigid_body_dop853_step(double t, double h, const double *y, co
         y_new[i] = y[i] + h * (0.054293734116568765 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] + 0.3111643669578199 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.04471061572777259 * k[11][i]);
     return 0;
 }
+#endif
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* Error norm of the embedded estimate, scaled by sk_i = atol + rtol*max(|y_i|, |y_new_i|).
  * Hairer's DOP853 combination of the 5th- and 3rd-order estimates:
@@ -764,8 +766,8 @@ int rigid_body_simulate_batch_dop853(long n_batch, const double *ins, double *ps
  * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_RK4 (one method per
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
-
-/* One explicit step: on entry k[0] = f(t, y); fills k[1..3] and y_new.
+/* One explicit step of tableau "rk4" (for rk4): on entry
+ * k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
 static int derive_rigid_body_rk4_step(double t, double h, const double *y, const double *p,
                               double k[][rigid_body_NY], double *y_new, double *t_rc,
@@ -801,6 +803,8 @@ static int derive_rigid_body_rk4_step(double t, double h, const double *y, const
         y_new[i] = y[i] + h * (0.16666666666666666 * k[0][i] + 0.3333333333333333 * k[1][i] + 0.3333333333333333 * k[2][i] + 0.16666666666666666 * k[3][i]);
     return 0;
 }
+#endif
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
 
 int rigid_body_solve_rk4(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
@@ -1564,107 +1568,6 @@ int rigid_body_simulate_batch_gauss6(long n_batch, const double *ins, double *ps
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853_FIXED)
 
-/* One explicit step: on entry k[0] = f(t, y); fills k[1..11] and y_new.
- * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
-static int derive_rigid_body_dop853_fixed_step(double t, double h, const double *y, const double *p,
-                              double k[][rigid_body_NY], double *y_new, double *t_rc,
-                              derive_stats *st)
-{
-    double yt[rigid_body_NY];
-    int i, rc;
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.05260015195876773 * k[0][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.05260015195876773 * h, yt, p, k[1]);
-    if (rc) {
-        *t_rc = t + 0.05260015195876773 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.0197250569845379 * k[0][i] + 0.0591751709536137 * k[1][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.0789002279381516 * h, yt, p, k[2]);
-    if (rc) {
-        *t_rc = t + 0.0789002279381516 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.02958758547680685 * k[0][i] + 0.08876275643042054 * k[2][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.1183503419072274 * h, yt, p, k[3]);
-    if (rc) {
-        *t_rc = t + 0.1183503419072274 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.2413651341592667 * k[0][i] - 0.8845494793282861 * k[2][i] + 0.924834003261792 * k[3][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.2816496580927726 * h, yt, p, k[4]);
-    if (rc) {
-        *t_rc = t + 0.2816496580927726 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.037037037037037035 * k[0][i] + 0.17082860872947386 * k[3][i] + 0.12546768756682242 * k[4][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.3333333333333333 * h, yt, p, k[5]);
-    if (rc) {
-        *t_rc = t + 0.3333333333333333 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.037109375 * k[0][i] + 0.17025221101954405 * k[3][i] + 0.06021653898045596 * k[4][i] - 0.017578125 * k[5][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.25 * h, yt, p, k[6]);
-    if (rc) {
-        *t_rc = t + 0.25 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.03709200011850479 * k[0][i] + 0.17038392571223998 * k[3][i] + 0.10726203044637328 * k[4][i] - 0.015319437748624402 * k[5][i] + 0.008273789163814023 * k[6][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.3076923076923077 * h, yt, p, k[7]);
-    if (rc) {
-        *t_rc = t + 0.3076923076923077 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.6241109587160757 * k[0][i] - 3.3608926294469414 * k[3][i] - 0.868219346841726 * k[4][i] + 27.59209969944671 * k[5][i] + 20.154067550477894 * k[6][i] - 43.48988418106996 * k[7][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.6512820512820513 * h, yt, p, k[8]);
-    if (rc) {
-        *t_rc = t + 0.6512820512820513 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (0.47766253643826434 * k[0][i] - 2.4881146199716677 * k[3][i] - 0.590290826836843 * k[4][i] + 21.230051448181193 * k[5][i] + 15.279233632882423 * k[6][i] - 33.28821096898486 * k[7][i] - 0.020331201708508627 * k[8][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.6 * h, yt, p, k[9]);
-    if (rc) {
-        *t_rc = t + 0.6 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (-0.9371424300859873 * k[0][i] + 5.186372428844064 * k[3][i] + 1.0914373489967295 * k[4][i] - 8.149787010746927 * k[5][i] - 18.52006565999696 * k[6][i] + 22.739487099350505 * k[7][i] + 2.4936055526796523 * k[8][i] - 3.0467644718982196 * k[9][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 0.8571428571428571 * h, yt, p, k[10]);
-    if (rc) {
-        *t_rc = t + 0.8571428571428571 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        yt[i] = y[i] + h * (2.273310147516538 * k[0][i] - 10.53449546673725 * k[3][i] - 2.0008720582248625 * k[4][i] - 17.9589318631188 * k[5][i] + 27.94888452941996 * k[6][i] - 2.8589982771350235 * k[7][i] - 8.87285693353063 * k[8][i] + 12.360567175794303 * k[9][i] + 0.6433927460157636 * k[10][i]);
-    st->nfev++;
-    rc = rigid_body_rhs(t + 1.0 * h, yt, p, k[11]);
-    if (rc) {
-        *t_rc = t + 1.0 * h;
-        return rc;
-    }
-    for (i = 0; i < rigid_body_NY; ++i)
-        y_new[i] = y[i] + h * (0.054293734116568765 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] + 0.3111643669578199 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.04471061572777259 * k[11][i]);
-    return 0;
-}
-
 int rigid_body_solve_dop853_fixed(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -1699,7 +1602,7 @@ int rigid_body_solve_dop853_fixed(const double *y0, const double *p, const doubl
             rc = rigid_body_rhs(t, y, p, k[0]);
             if (rc)
                 return derive_rigid_body_fail_rc(st, t, rc);
-            rc = derive_rigid_body_dop853_fixed_step(t, hs, y, p, k, y_new, &t_rc, st);
+            rc = derive_rigid_body_dop853_step(t, hs, y, p, k, y_new, &t_rc, st);
             if (rc)
                 return derive_rigid_body_fail_rc(st, t_rc, rc);
             if ((i = derive_rigid_body_first_nonfinite(y_new, rigid_body_NY)) >= 0) {
