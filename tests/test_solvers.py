@@ -89,6 +89,17 @@ def test_each_method_alone_compiles_with_all_warnings_as_errors(method):
     check_compiles(files, "one.c", [*STRICT_FLAGS, "-O1"])
 
 
+@pytest.mark.parametrize("method", list(METHODS))
+def test_each_method_selected_from_the_full_file_compiles_with_all_warnings_as_errors(method):
+    """The libraries `derive` builds: every method rendered, one selected at compile time
+    (-DDERIVE_SELECT -DDERIVE_WITH_<M>): no helper of the others is left unused."""
+    files = model_sources("free3")
+    files.update(render_solvers("free3", 3))
+    files["one.c"] = '#include "free3.c"\n#include "free3_solvers.c"\n'
+    check_compiles(files, "one.c", [*STRICT_FLAGS, "-O1", "-DDERIVE_SELECT",
+                                    f"-DDERIVE_WITH_{method.upper()}"])
+
+
 def test_rendered_header_declares_every_method():
     h = render_solvers("osc", 2)["osc_solvers.h"]
     for name, m in METHODS.items():

@@ -246,6 +246,7 @@ static int derive_euler_poisson_sym_gravity_times_ok(const double *t_out, long n
             return 0;
     return 1;
 }
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6) || defined(DERIVE_WITH_DOP853_FIXED)
 
 /* Fixed-step drivers: an output interval dt is split into ceil(dt/h) equal steps (a ratio
  * within a relative 1e-10 above an integer counts as that integer, so that round-off in dt/h
@@ -268,6 +269,8 @@ static int derive_euler_poisson_sym_gravity_fixed_args_ok(const double *t_out, l
             return 0;
     return 1;
 }
+#endif
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* Initial step size, Hairer's HINIT (dop853.f; Hairer, Nørsett & Wanner, Solving ODEs I,
  * II.4): h such that h^iord * max(|f0|, |f'|) = 0.01 in the tolerance-weighted norm. */
@@ -301,6 +304,8 @@ static int derive_euler_poisson_sym_gravity_initial_step(double t, const double 
     *h_out = fmin(fmin(100.0 * h, h1), hmax);
     return 0;
 }
+#endif
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6)
 
 /* LU factorisation with partial pivoting, in place, row-major n x n (rows swapped whole, as
  * LAPACK's getrf). Returns non-zero for a zero or non-finite pivot. */
@@ -366,12 +371,14 @@ static void derive_euler_poisson_sym_gravity_add_block(double *m, int n, int bi,
         for (b = 0; b < euler_poisson_sym_gravity_NY; ++b)
             m[(bi * euler_poisson_sym_gravity_NY + a) * n + bj * euler_poisson_sym_gravity_NY + b] += coef * jac[a * euler_poisson_sym_gravity_NY + b];
 }
+#endif
 
 /* ======================================================================================== */
 /* dop853: Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853). Tableau "dop853", 12 stages, order 8.
  * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_DOP853 (one method per
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853) || defined(DERIVE_WITH_DOP853_FIXED)
+
 /* One explicit step of tableau "dop853" (for dop853, dop853_fixed): on entry
  * k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -766,6 +773,7 @@ int euler_poisson_sym_gravity_simulate_batch_dop853(long n_batch, const double *
  * Compiled unless DERIVE_SELECT is defined without DERIVE_WITH_RK4 (one method per
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
+
 /* One explicit step of tableau "rk4" (for rk4): on entry
  * k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
