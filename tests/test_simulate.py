@@ -257,3 +257,34 @@ def test_nonfinite_output_is_reported_by_the_compiled_check():
     with pytest.raises(IntegrationError, match=r"non-finite energy in the output"):
         derive.simulate_batch([fine, huge])
     assert np.isfinite(derive.simulate_batch([fine, fine])[1].energy).all()
+
+
+def test_pole_loss_check_from_the_extremes_equals_the_rule_on_every_sample():
+    """simulation._check_pole reads only the smallest and largest canonical β (sin is concave
+    on [0, π]); it must refuse exactly the trajectories whose smallest |sin β| over the samples
+    has sin²β < eps/rtol, single and batched (_pole_suspects)."""
+    from derive import catalogue
+    from derive.errors import IntegrationError
+
+    desc = catalogue.describe(("euler-angles", True, ("gravity",)))
+    rng = np.random.default_rng(3)
+    eps, rtol = np.finfo(float).eps, 1e-10
+    t = np.linspace(0.0, 1.0, 200)
+    rows, refused = [], []
+    for _ in range(300):
+        lo, hi = np.sort(rng.uniform(0.0, np.pi, 2))
+        lo *= rng.choice([1.0, 1e-2, 1e-3, 1e-4, 1e-6])
+        hi = np.pi - (np.pi - hi) * rng.choice([1.0, 1e-2, 1e-3, 1e-4, 1e-6])
+        beta = rng.uniform(lo, hi, t.size)
+        beta[rng.integers(t.size)], beta[rng.integers(t.size)] = lo, hi
+        want = float(np.min(np.abs(np.sin(beta)))) ** 2 < eps / rtol
+        try:
+            simulation._check_pole(desc, t, beta, rtol)
+            got = False
+        except IntegrationError:
+            got = True
+        assert got == want, (lo, hi)
+        rows.append(beta)
+        refused.append(want)
+    suspects = simulation._pole_suspects(desc, np.array(rows), rtol)
+    assert (suspects == np.array(refused)).all() and any(refused) and not all(refused)
