@@ -151,11 +151,7 @@ def _integrable_moments(ax, sc, key, x) -> None:
                 continue
             trial = list(moments)
             trial[i] = v
-            try:
-                body = type(sc.body)(*trial)
-                case = classify(dataclasses.replace(sc, body=body)).case
-            except (ValueError, TypeError):
-                continue
+            case = classify(dataclasses.replace(sc, body=type(sc.body)(*trial))).case
             if case != "general":
                 found.setdefault(v, case)
     for v, case in sorted(found.items()):
