@@ -257,10 +257,6 @@ def _axial(sc) -> bool:
     return math.hypot(p["cx"], p["cy"]) <= integrable.TOLERANCE * r or r == 0
 
 
-def _routh_applies(sc, cls) -> bool:
-    return sc.symmetric and _axial(sc) and not cls.dissipative and cls.case in ("euler", "lagrange")
-
-
 @dataclass(frozen=True)
 class _Top:
     """A symmetric top as the Routh reduction sees it, read off a scene: the symmetry direction
