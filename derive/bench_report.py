@@ -117,12 +117,22 @@ def targets_section(results: dict) -> list[str]:
               f"| compilation | {_t(ph.get('compilation'))} | first `simulate` in a fresh process with an empty "
               f"`DERIVE_CACHE` ({cell(cold, 'first_simulate')}) minus the same with the cache filled "
               f"({cell(warm, 'first_simulate')}) |",
-              f"| per-call overhead | {_t(o.get('overhead'))} | a warm `simulate` minus its C solve "
-              "(scene validation, formulation choice, state maps, outputs) |",
-              f"| solve (C) | {_t(o.get('solve'))} | `Kernel.solve` of the same model and inputs |",
+              f"| Python around the C call | {_t(o.get('overhead'))} | a warm `simulate` minus its C call "
+              "(scene validation, formulation choice, arguments, the Result) |",
+              f"| C call | {_t(o.get('own_call'))} | `simulate`'s one C call on prepared inputs: init map, "
+              "integration, output map and its checks |",
+              f"| of which the solve | {_t(o.get('solve'))} | `Kernel.solve` of the same model and inputs "
+              "(states at the samples, no outputs) |",
               f"| = warm `simulate` | {_t(o['time'])} | in-process, median |", ""]
-        if "solve_error" in o:
-            L += [f"C solve not isolated: {o['solve_error']}", ""]
+        for key in ("solve_error", "own_call_error"):
+            if key in o:
+                L += [f"Not isolated: {o[key]}", ""]
+        row = ref["rows"][0] if ref["rows"] else {}
+        if row.get("own_call_paired") and row.get("reached"):
+            L += [f"The ceiling: `solve_ivp` DOP853 ({_t(row['time'])}) over derive's C call alone "
+                  f"({_t(row['own_call_paired'])}, timed in the same turns) is **{row['time'] / row['own_call_paired']:.3g}×**: "
+                  "the ratio `derive.simulate` would reach with no Python at all. Both run DOP853 with about "
+                  f"the same number of rhs evaluations ({o['nfev']:,} and {row['nfev']:,}).", ""]
 
     fc, ba, pr, la = (t.get(k) or {} for k in ("fixed_cost", "batch", "processes", "lambdify"))
     L += ["### Fixed costs, batch, processes, NumPy", ""]
@@ -132,17 +142,19 @@ def targets_section(results: dict) -> list[str]:
                  f"**{fc['ratio']:.3g}×**; `odeint` {_t(fc['odeint'])}: {fc['ratio_odeint']:.3g}× (medians of 15 "
                  "interleaved blocks of calls).")
     if "time" in ba:
-        raw = (f"; the raw C batch loop (`Kernel.solve_batch` on prepared arrays) {_t(ba['raw'])}: "
-               f"**{ba['vs_raw']:.0%}** of its throughput" if "raw" in ba else f"; raw C loop: {ba.get('raw_error')}")
-        if "own_call" in ba:
-            raw += (f" (its own C call, state maps and outputs included, inputs prepared: {_t(ba['own_call'])}, "
-                    f"so {ba['own_call'] / ba['time']:.0%} of `simulate_batch`'s time is in C)")
+        raw = (f"; its own C call (init map, integration and outputs of every scene, inputs prepared) "
+               f"{_t(ba['own_call'])}: **{ba['own_call'] / ba['time']:.0%}** of its throughput"
+               if "own_call" in ba else f"; its own C call: {ba.get('own_call_error')}")
+        raw += (f" (the solve-only C loop, `Kernel.solve_batch` on prepared arrays, states only: {_t(ba['raw'])}, "
+                f"{ba['vs_raw']:.0%})" if "raw" in ba else f" (solve-only C loop: {ba.get('raw_error')})")
         L.append(f"- `simulate_batch` of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}], "
                  f"{ba['formulation']}): {_t(ba['time'])} ({_t(ba['per_scene'])} per scene){raw}. SciPy on the "
                  f"plain-Python rhs, each at the rtol that matched our error on the reference scene: `solve_ivp` "
                  f"DOP853 (rtol {ba['scipy_rtol']:.3g}) {_t(ba['scipy_per_trajectory'])} per trajectory (median of "
                  f"{ba['scipy_n']}, each the better of two runs): **{ba['vs_scipy']:.0f}×**; `odeint` (rtol {ba['odeint_rtol']:.3g}) "
-                 f"{_t(ba['odeint_per_trajectory'])}: **{ba['vs_odeint']:.0f}×**.")
+                 f"{_t(ba['odeint_per_trajectory'])}: **{ba['vs_odeint']:.0f}×**"
+                 + (f". Ceiling (SciPy over the C call alone, per trajectory): {ba['ceiling_vs_scipy']:.0f}×."
+                    if ba.get("ceiling_vs_scipy") else "."))
     if "warm" in pr:
         cold = (f"; cold (fresh `DERIVE_CACHE`) {_t(pr['cold'])}, **{pr['cold_minus_warm']:.2f} s** more than warm"
                 if "cold" in pr else "")

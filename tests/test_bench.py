@@ -188,6 +188,13 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
         assert "error" not in tg[key], (key, tg[key])
     assert tg["sweeps"]["speedup"] > 0 and "dask_2w" not in tg["sweeps"]  # smoke: no cluster
     assert tg["fixed_cost"]["ratio"] > 0 and tg["batch"]["vs_scipy"] > 0
+    # The ceilings: derive's C call alone, timed in turns with the whole call (whose Python it
+    # leaves out) and with SciPy; the report states them.
+    ours = ref["ours"]
+    assert 0 < ours["own_call"] and ours["overhead"] == ours["time"] - ours["own_call"]
+    assert ref["ceiling_vs_scipy"] == scipy_row["time"] / scipy_row["own_call_paired"] > 0
+    assert tg["batch"]["ceiling_vs_scipy"] > 0
+    assert "The ceiling: `solve_ivp` DOP853" in report and "(ceiling: C alone)" in report
     assert tg["lambdify"]["max_rel_diff"] < 1e-12  # lambdify ran the same expressions
     assert all(np.isfinite(r["energy"]) for r in res["drift"]["rows"] if "error" not in r)
     data = json.loads((tmp_path / "results.json").read_text())
