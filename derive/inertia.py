@@ -139,9 +139,3 @@ def principal_axes(I) -> tuple[np.ndarray, np.ndarray]:
     if np.linalg.det(axes) < 0:
         axes[:, 2] = -axes[:, 2]
     return moments, axes
-
-
-def principal_moments_symbolic(I: sp.Matrix):
-    """Principal moments of a symbolic tensor: the roots of det(I − λ 1) = 0."""
-    lam = sp.Symbol("lambda")
-    return sp.roots(sp.factor((I - lam * sp.eye(3)).det()), lam)
