@@ -109,8 +109,9 @@ def _nonnegative(x):
 
 def _com(values) -> tuple[float, float, float]:
     """The centre of mass (body axes, m, from the pivot): ``com``, or (0, 0, l)."""
-    if values.get("com") is not None:
-        return tuple(float(c) for c in values["com"])
+    com = values.get("com")
+    if com is not None:
+        return tuple(map(float, com))  # map: no generator frame (scene validation calls this)
     return (0.0, 0.0, float(values["l"]))
 
 

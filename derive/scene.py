@@ -54,6 +54,7 @@ import stat
 import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 
@@ -98,16 +99,47 @@ _FIXED_KEYS = {  # table -> its keys, in the order they are documented
 
 def _table_keys() -> dict[str, tuple[str, ...]]:
     """Every table's keys: body, the effects' tables (from the registry), initial, simulate."""
-    if _TABLE_KEYS and _TABLE_KEYS[0] == effects.VERSION[0]:
-        return _TABLE_KEYS[1]
+    return _registry_view().keys
+
+
+class _View(NamedTuple):
+    """What validation reads from the registries, computed once per effects-registry version."""
+
+    keys: dict[str, tuple[str, ...]]  # table -> its keys in documented order (for messages)
+    key_sets: dict[str, frozenset]  # table -> the same keys as a set (for the checks)
+    #: The effect tables in registry order: (name, Table, its keys as readers (name, Key, is a
+    #: vector, check, must, default or ... when required)).
+    effect_tables: tuple[tuple[str, effects.Table, tuple], ...]
+    order: dict[tuple[str, ...], tuple[str, ...]]  # memo of _in_registry_order
+
+
+def _registry_view() -> _View:
+    view = _VIEW.get(effects.VERSION[0])
+    if view is not None:
+        return view
     keys = {"body": _FIXED_KEYS["body"]}
     keys.update({name: tuple(k.name for k in t.keys) for name, t in effects.TABLES.items()})
     keys.update(initial=_FIXED_KEYS["initial"], simulate=_FIXED_KEYS["simulate"])
-    _TABLE_KEYS[:] = [effects.VERSION[0], keys]
-    return keys
+    effect_tables = tuple(
+        (name, t, tuple((k.name, k, k.kind == "vector3", k.check, k.must,
+                         ... if k.default is effects.REQUIRED else k.default) for k in t.keys))
+        for name, t in effects.TABLES.items())
+    view = _View(keys, {name: frozenset(k) for name, k in keys.items()}, effect_tables, {})
+    _VIEW.clear()  # only the current version is ever asked for again
+    _VIEW[effects.VERSION[0]] = view
+    return view
 
 
-_TABLE_KEYS: list = []
+_VIEW: dict[int, _View] = {}
+
+
+def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
+    """The effects named in ``chosen``, in registry order (memoised per registry version)."""
+    order = _registry_view().order
+    names = order.get(chosen)
+    if names is None:
+        names = order[chosen] = tuple(name for name in effects.REGISTRY if name in chosen)
+    return names
 _TOP_KEYS = ("title",)
 
 
@@ -240,8 +272,7 @@ class Scene:
         cached = self.__dict__.get("_effects")
         if cached is not None and cached[0] == effects.VERSION[0]:
             return cached[1]
-        chosen = {t.effect for t in self.tables.values()}
-        names = tuple(name for name in effects.REGISTRY if name in chosen)
+        names = _in_registry_order(tuple(t.effect for t in self.tables.values()))
         object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
         return names
 
@@ -454,8 +485,39 @@ def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -
     return hint + (expected or f"expected one of {', '.join(valid)}")
 
 
+def _new(cls, /, **fields):
+    """``cls(**fields)`` for this module's frozen dataclasses (Body, Initial, Simulate, Scene),
+    filling the instance's __dict__ in one step instead of the generated __init__'s
+    ``object.__setattr__`` per field: half the cost, the same object. Give every field (defaults
+    are not applied) and nothing else, bar Scene's ``_effects`` memo; these classes have no
+    __post_init__."""
+    obj = object.__new__(cls)
+    obj.__dict__.update(fields)
+    return obj
+
+
+def _positive(x) -> bool:
+    return x > 0
+
+
+def _below_one(x) -> bool:
+    return 0 < x < 1
+
+
+_POSITIVE = "a positive finite number"
+#: The triangle inequalities of the principal moments, (a, b, c): Ia + Ib >= Ic, checked (and
+#: reported) for c = I3, I1, I2 in this order.
+_TRIANGLE = ((0, 1, 2), (1, 2, 0), (0, 2, 1))
+
+
 class _Validator:
-    """Turns the raw dict into a Scene, raising SceneError at the first problem."""
+    """Turns the raw dict into a Scene, raising SceneError at the first problem.
+
+    Speed matters here: ``derive.simulate`` validates every scene it is given (each scene of a
+    batch too), so the common case (plain dicts of floats, as TOML gives them) takes the short
+    way: key sets and readers precomputed per registry version (:func:`_registry_view`), exact
+    type checks before ABC checks, messages built only when something fails.
+    """
 
     def __init__(self, source: str):
         self.source = source
@@ -468,8 +530,11 @@ class _Validator:
 
     # ---- generic readers ----
 
-    def table(self, data: Mapping, name: str) -> Mapping:
-        """The table ``name`` after checking it has only known keys."""
+    def table(self, data: Mapping, name: str, key_set: frozenset) -> Mapping:
+        """The table ``name`` after checking it has only known keys (``key_set``); the first
+        unknown one in document order is reported."""
+        if type(data) is dict and key_set.issuperset(data):
+            return data
         keys = _table_keys()[name]
         for key in data:
             if key not in keys:
@@ -483,13 +548,20 @@ class _Validator:
             if default is ...:
                 self.fail(f"{table}.{key}", "missing required key")
             return default
-        x = _real(data[key])
+        value = data[key]
+        # A float is finite when x - x == 0 (inf - inf and nan - nan are nan): the common case
+        # needs no call to _real.
+        x = value if type(value) is float and value - value == 0.0 else _real(value)
         if x is None or (test is not None and not test(x)):
-            self.fail(f"{table}.{key}", f"must be {must}, got {_show(data[key])}")
+            self.fail(f"{table}.{key}", f"must be {must}, got {_show(value)}")
         return x
 
     def choice(self, data, table, key, choices):
-        dotted, value = f"{table}.{key}", data[key]
+        """A string among ``choices`` (a dict or tuple of names; messages list them in order)."""
+        value = data[key]
+        if type(value) is str and value in choices:
+            return value
+        dotted = f"{table}.{key}"
         if not isinstance(value, str):
             self.fail(dotted, f"must be a string, one of {', '.join(choices)}; got {_show(value)}")
         if value not in choices:
@@ -498,18 +570,15 @@ class _Validator:
             self.fail(dotted, f"unknown {key} {value!r} ({hint}expected one of {', '.join(choices)})")
         return value
 
-    def required(self, data: Mapping, name: str) -> Mapping:
-        if name not in data:
-            self.fail(name, "missing required table")
-        return data[name]
-
     # ---- the tables ----
 
     def scene(self, data: Mapping, overrides: dict) -> Scene:
+        view = _registry_view()
+        key_sets = view.key_sets
         for key, value in data.items():
             if key in _TOP_KEYS:
                 continue
-            if key not in _table_keys():
+            if key not in key_sets:
                 if isinstance(value, Mapping):
                     self.fail(str(key), "unknown table (" + _unknown(key, tuple(_table_keys()), "")
                               + ")")
@@ -521,44 +590,60 @@ class _Validator:
         if title is not None and not isinstance(title, str):
             self.fail("title", f"must be a string, got {_show(title)}")
         # Tables in document order, so the first problem reported is the first one in the file.
-        body = self.body(self.table(self.required(data, "body"), "body"))
-        tables = {name: self.effect_table(self.table(data[name], name), effects.TABLES[name])
-                  for name in effects.TABLES if name in data}
-        initial = self.initial(self.table(self.required(data, "initial"), "initial"))
+        if "body" not in data:
+            self.fail("body", "missing required table")
+        body = self.body(self.table(data["body"], "body", key_sets["body"]))
+        tables, chosen = {}, []
+        for name, table, readers in view.effect_tables:
+            if name in data:
+                values = self.effect_table(self.table(data[name], name, key_sets[name]), table,
+                                           readers)
+                tables[name] = values
+                chosen.append(values.effect)
+        if "initial" not in data:
+            self.fail("initial", "missing required table")
+        initial = self.initial(self.table(data["initial"], "initial", key_sets["initial"]))
 
-        for key in overrides:
-            if key not in _FIXED_KEYS["simulate"]:
-                self.overridden.add(f"simulate.{key}")
-                self.fail(f"simulate.{key}",
-                          "unknown key (" + _unknown(key, _FIXED_KEYS["simulate"], "simulate") + ")")
+        if overrides:
+            for key in overrides:
+                if key not in _FIXED_KEYS["simulate"]:
+                    self.overridden.add(f"simulate.{key}")
+                    self.fail(f"simulate.{key}", "unknown key (" + _unknown(
+                        key, _FIXED_KEYS["simulate"], "simulate") + ")")
         if "simulate" not in data and "t_end" not in overrides:
             self.fail("simulate", "missing required table (simulate.t_end has no default)")
-        simulate = self.table(data.get("simulate", {}), "simulate")
-        self.overridden.update(f"simulate.{key}" for key in overrides)
-        simulate = self.simulate({**simulate, **overrides})
+        simulate = self.table(data.get("simulate", {}), "simulate", key_sets["simulate"])
+        if overrides:
+            self.overridden.update(f"simulate.{key}" for key in overrides)
+            simulate = {**simulate, **overrides}
+        simulate = self.simulate(simulate)
 
-        scene = Scene(title, body, tables, initial, simulate, self.source)
+        # Scene.effects is known already: its memo is set (what the property would compute).
+        scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
+                     simulate=simulate, source=self.source,
+                     _effects=(effects.VERSION[0], _in_registry_order(tuple(chosen))))
         self.formulation_fits(scene)
         return scene
 
     def body(self, t) -> Body:
-        positive = dict(test=lambda x: x > 0, must="a positive finite number")
-        I1 = self.number(t, "body", "I1", **positive)
-        I2 = self.number(t, "body", "I2", **positive, default=I1)  # symmetric unless told
-        I3 = self.number(t, "body", "I3", **positive)
+        I1 = self.number(t, "body", "I1", _positive, _POSITIVE)
+        I2 = self.number(t, "body", "I2", _positive, _POSITIVE, I1)  # symmetric unless told
+        I3 = self.number(t, "body", "I3", _positive, _POSITIVE)
         # Principal moments of any mass distribution obey Ia + Ib >= Ic (equality: a flat plate).
-        moments = {"I1": I1, "I2": I2, "I3": I3}
-        for c in ("I3", "I1", "I2"):
-            a, b = (k for k in moments if k != c)
-            if moments[a] + moments[b] < moments[c] * (1 - TRIANGLE_SLACK):
-                values = ", ".join(f"{k} = {v:g}" for k, v in moments.items())
-                self.fail("body", f"moments violate the triangle inequality {a} + {b} >= {c} "
-                                  f"({values}); no rigid body has these principal moments")
-        return Body(I1, I2, I3)
+        moments, slack = (I1, I2, I3), 1 - TRIANGLE_SLACK
+        for a, b, c in _TRIANGLE:
+            if moments[a] + moments[b] < moments[c] * slack:
+                names = ("I1", "I2", "I3")
+                values = ", ".join(f"{k} = {v:g}" for k, v in zip(names, moments))
+                self.fail("body", f"moments violate the triangle inequality {names[a]} + "
+                                  f"{names[b]} >= {names[c]} ({values}); no rigid body has these "
+                                  f"principal moments")
+        return _new(Body, I1=I1, I2=I2, I3=I3)
 
-    def effect_table(self, t, table: effects.Table) -> TableValues:
-        """An effect's table, read by its declaration: each key a finite real (or a list of 3)
-        passing its check; of each ``one_of`` group exactly one key given."""
+    def effect_table(self, t, table: effects.Table, readers: tuple) -> TableValues:
+        """An effect's table, read by its declaration (``readers``: its keys, see _View): each
+        key a finite real (or a list of 3) passing its check; of each ``one_of`` group exactly
+        one key given."""
         for group in table.one_of:
             given = [k for k in group if k in t]
             if len(given) > 1:
@@ -568,17 +653,14 @@ class _Validator:
                 self.fail(f"{table.name}.{group[0]}",
                           f"missing required key (give {' or '.join(group)})")
         values = {}
-        for key in table.keys:
-            if key.kind == "vector3":
-                values[key.name] = self.vector3(t, table.name, key)
+        for name, key, is_vector, check, must, default in readers:
+            if is_vector:
+                values[name] = self.vector3(t, table.name, key)
             else:
-                default = ... if key.default is effects.REQUIRED else key.default
-                values[key.name] = self.number(t, table.name, key.name, key.check, key.must,
-                                               default=default)
-        given = {k for k in t}
+                values[name] = self.number(t, table.name, name, check, must, default)
         values = table.complete(values)
         out = TableValues(table.name, values, effects.for_table(table.name, values).name)
-        out.__dict__["_given"] = given
+        out.__dict__["_given"] = set(t)
         return out
 
     def vector3(self, t, table: str, key: effects.Key):
@@ -594,17 +676,21 @@ class _Validator:
         return tuple(vec)
 
     def initial(self, t) -> Initial:
-        alpha, beta, gamma = (self.number(t, "initial", k, must="a finite number (rad)")
-                              for k in ("alpha", "beta", "gamma"))
-        rates_given = [k for k in _RATES if k in t]
+        alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
+        beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
+        gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
+        rates_given = "alpha_dot" in t or "beta_dot" in t or "gamma_dot" in t  # _RATES
         both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
         if rates_given and "omega" in t:
             self.fail("initial", both + ", not both")
         if rates_given:
             # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
-            ad, bd, gd = (self.number(t, "initial", k, must="a finite number (rad/s)", default=0.0)
-                          for k in _RATES)
-            return Initial(alpha, beta, gamma, ad, bd, gd, body_omega(beta, gamma, ad, bd, gd))
+            must = "a finite number (rad/s)"
+            ad = self.number(t, "initial", "alpha_dot", None, must, 0.0)
+            bd = self.number(t, "initial", "beta_dot", None, must, 0.0)
+            gd = self.number(t, "initial", "gamma_dot", None, must, 0.0)
+            return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
+                        gamma_dot=gd, omega=body_omega(beta, gamma, ad, bd, gd))
         if "omega" not in t:
             self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")
         value = t["omega"]
@@ -613,24 +699,25 @@ class _Validator:
         if None in omega:
             self.fail("initial.omega", f"must be a list of 3 finite numbers [w1, w2, w3] "
                                        f"(body frame, rad/s), got {_show(value)}")
-        return Initial(alpha, beta, gamma, None, None, None, tuple(omega))
+        return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=None, beta_dot=None,
+                    gamma_dot=None, omega=tuple(omega))
 
     def simulate(self, t) -> Simulate:
-        s = dict(SIMULATE_DEFAULTS, **t)
-        t_end = self.number(t, "simulate", "t_end", lambda x: x > 0, "a positive finite number (s)")
+        s = {**SIMULATE_DEFAULTS, **t}
+        t_end = self.number(t, "simulate", "t_end", _positive, "a positive finite number (s)")
         samples = s["samples"]
         if not (type(samples) is int or (not isinstance(samples, (bool, np.bool_))  # int: no ABC check
                                          and isinstance(samples, numbers.Integral))) \
                 or not 2 <= samples <= MAX_SAMPLES:
             self.fail("simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}, "
                                           f"got {_show(samples)}")
-        method = self.choice(s, "simulate", "method", tuple(METHODS))
-        rtol = self.number(s, "simulate", "rtol", lambda x: 0 < x < 1, "a number in (0, 1)")
+        method = self.choice(s, "simulate", "method", METHODS)
+        rtol = self.number(s, "simulate", "rtol", _below_one, "a number in (0, 1)")
         if rtol < MIN_RTOL:
             self.fail("simulate.rtol", f"must be at least 100 machine epsilons ({MIN_RTOL:.1e}): "
                                        f"no double-precision integrator can meet {rtol:g}")
-        atol = self.number(s, "simulate", "atol", lambda x: x > 0, "a positive finite number")
-        formulation = self.choice(s, "simulate", "formulation", tuple(FORMULATIONS))
+        atol = self.number(s, "simulate", "atol", _positive, _POSITIVE)
+        formulation = self.choice(s, "simulate", "formulation", FORMULATIONS)
         max_steps = s["max_steps"]
         if not (type(max_steps) is int or (not isinstance(max_steps, (bool, np.bool_))
                                            and isinstance(max_steps, numbers.Integral))) \
@@ -639,12 +726,13 @@ class _Validator:
                                             f"got {_show(max_steps)}")
         h = None
         if s["h"] is not None:
-            h = self.number(s, "simulate", "h", lambda x: x > 0, "a positive finite number (s)")
+            h = self.number(s, "simulate", "h", _positive, "a positive finite number (s)")
             if method not in FIXED_STEP_METHODS:
                 self.fail("simulate.h", f"is the step of a fixed-step method "
                                         f"({', '.join(FIXED_STEP_METHODS)}), but method is "
                                         f"{method!r}; remove h or name a fixed-step method")
-        return Simulate(t_end, int(samples), method, rtol, atol, formulation, h, int(max_steps))
+        return _new(Simulate, t_end=t_end, samples=int(samples), method=method, rtol=rtol,
+                    atol=atol, formulation=formulation, h=h, max_steps=int(max_steps))
 
     def formulation_fits(self, scene: Scene) -> None:
         """Reject a formulation that cannot represent this scene (the registry says why)."""

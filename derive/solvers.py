@@ -26,6 +26,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 
 from .render import c_double, render
+from .effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
 from .formulations import POLE_CLEARANCE
 from .status import c_table
 from .tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
@@ -116,9 +117,7 @@ def method(name: str):
 def method_reason(name: str, formulation: str, effects) -> str | None:
     """None if the compiled method ``name`` can run that formulation with those effects, else
     why not ("auto" as the formulation: can any formulation)."""
-    from .effects import VERSION
-
-    return _method_reason(name, formulation, tuple(effects), VERSION[0])
+    return _method_reason(name, formulation, tuple(effects), _EFFECTS_VERSION[0])
 
 
 @functools.lru_cache(maxsize=512)
