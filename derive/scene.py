@@ -114,6 +114,7 @@ class _View(NamedTuple):
 
 
 def _registry_view() -> _View:
+    """The tables' keys and readers for the current effects registry (built on first use)."""
     view = _VIEW.get(effects.VERSION[0])
     if view is not None:
         return view
@@ -140,6 +141,8 @@ def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
     if names is None:
         names = order[chosen] = tuple(name for name in effects.REGISTRY if name in chosen)
     return names
+
+
 _TOP_KEYS = ("title",)
 
 
@@ -679,7 +682,8 @@ class _Validator:
         alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
         beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
         gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
-        rates_given = "alpha_dot" in t or "beta_dot" in t or "gamma_dot" in t  # _RATES
+        # Any of _RATES, spelt out: no generator on the warm path.
+        rates_given = "alpha_dot" in t or "beta_dot" in t or "gamma_dot" in t
         both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
         if rates_given and "omega" in t:
             self.fail("initial", both + ", not both")
