@@ -6,9 +6,11 @@ keeps working while the pipeline behind them changes. What needs more lives here
 small, and each caller degrades to "unavailable (<why>)" in the report if one breaks:
 
 * :func:`kernel_case` — the compiled kernel of a scene with its initial state and parameters,
-  to time the C solve alone (the "solve" part of a `simulate` call) and the raw C batch loop;
+  for one rhs call through ctypes and the solve-only C batch loop;
 * :func:`own_batch_call` — the one C call ``simulate_batch`` makes, inputs prepared: its cost
   without Python;
+* :func:`output_map_call` — the output map alone (the compiled ``outputs_at``) on a solved
+  trajectory: the part of that C call that is not the integration;
 * :func:`heavy_top_expressions` — the SymPy right-hand side of the heavy top, for the
   ``sympy.lambdify`` comparison;
 * :data:`DERIVE_SCRIPT` — a fresh process that times the SymPy derivation and the code
@@ -76,6 +78,27 @@ def own_batch_call(scenes):
     ps = np.array([sim.params_of(sc, desc) for sc in scs])
     t = scs[0].t_out
     return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
+
+
+def output_map_call(scene):
+    """A callable running the compiled output map (``<model>_outputs_at``: every output at every
+    sample) on the states ``simulate`` integrated for ``scene``: what of ``simulate``'s C call is
+    not the integration."""
+    from . import auto, catalogue
+    from . import simulation as sim
+    from .integrate import ModelKernel
+    from .scene import load_scene
+
+    sc = load_scene(scene)
+    formulation, pole_check = auto.plan(sc)[0]
+    desc = catalogue.describe((formulation, sc.symmetric, sc.effects))
+    method = sim.choose_method(sc)
+    kernel = ModelKernel.load(desc, method)
+    t = sc.t_out
+    _, y, p, _ = kernel.simulate(sim.inputs_of(sc), sim.params_of(sc, desc), t,
+                                 sim._settings(sc, method, kernel), pole_check)
+    y, p = y.copy(), p.copy()
+    return lambda: kernel.outputs_at(t, y, p)
 
 
 def heavy_top_expressions():

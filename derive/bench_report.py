@@ -121,10 +121,10 @@ def targets_section(results: dict) -> list[str]:
               "(scene validation, formulation choice, arguments, the Result) |",
               f"| C call | {_t(o.get('own_call'))} | `simulate`'s one C call on prepared inputs: init map, "
               "integration, output map and its checks |",
-              f"| of which the solve | {_t(o.get('solve'))} | `Kernel.solve` of the same model and inputs "
-              "(states at the samples, no outputs) |",
+              f"| of which the output map | {_t(o.get('output_map'))} | the compiled `outputs_at` alone on the "
+              "call's states (every output at every sample: three sincos a sample), through ctypes |",
               f"| = warm `simulate` | {_t(o['time'])} | in-process, median |", ""]
-        for key in ("solve_error", "own_call_error"):
+        for key in ("output_map_error", "own_call_error"):
             if key in o:
                 L += [f"Not isolated: {o[key]}", ""]
         row = ref["rows"][0] if ref["rows"] else {}

@@ -191,7 +191,7 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     # The ceilings: derive's C call alone, timed in turns with the whole call (whose Python it
     # leaves out) and with SciPy; the report states them.
     ours = ref["ours"]
-    assert 0 < ours["own_call"] and ours["overhead"] == ours["time"] - ours["own_call"]
+    assert 0 < ours["output_map"] and 0 < ours["own_call"] and ours["overhead"] == ours["time"] - ours["own_call"]
     assert ref["ceiling_vs_scipy"] == scipy_row["time"] / scipy_row["own_call_paired"] > 0
     assert tg["batch"]["ceiling_vs_scipy"] > 0
     assert "The ceiling: `solve_ivp` DOP853" in report and "(ceiling: C alone)" in report
