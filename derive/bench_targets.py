@@ -24,7 +24,8 @@
   one (goal ≤ 1 s).
 * **NumPy batch rhs** at N = 10⁵: the generated ``heavy_top.rhs`` over ``sympy.lambdify(...,
   cse=True)`` of the same expressions, its rows stacked into one (6, N) array as ``rhs`` returns
-  (goal ≤ 1×); the raw list of rows lambdify returns is timed too.
+  (goal ≤ 1×); the raw list of rows lambdify returns is timed too, and, as context, lambdify
+  run in the generated module's cache-sized blocks (what the generated code gains by them).
 
 Everything goes through public entry points except what `derive.bench_internals` isolates; a
 part that fails is reported as such, with why, and the rest of the bench goes on.
@@ -400,12 +401,21 @@ def numpy_vs_lambdify(cfg) -> dict:
         diff = float(np.max(np.abs(a - b)) / np.max(np.abs(a)))
         reps = max(3, cfg.numpy_repeats)
         stacked = lambda: np.stack(np.broadcast_arrays(*f(Y, P)))  # noqa: E731 - one (6, N) array, like rhs
-        # in turns, so that a change of machine load hits all three alike
-        t_gen, t_lam, t_raw = B.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P)],
-                                            0, blocks=reps, counts=[3, 3, 3])
+
+        def blocked():  # context: lambdify in the generated module's cache-sized blocks
+            out = np.empty((len(rhs), n))
+            for s in range(0, n, mod.BLOCK):
+                for i, row in enumerate(f(Y[:, s:s + mod.BLOCK], P)):
+                    out[i, s:s + mod.BLOCK] = row
+            return out
+
+        # in turns, so that a change of machine load hits all alike
+        t_gen, t_lam, t_raw, t_blk = B.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P), blocked],
+                                                   0, blocks=reps, counts=[3, 3, 3, 3])
     return {"n": n, "generated": t_gen, "lambdify": t_lam, "lambdify_raw": t_raw, "ratio": t_gen / t_lam,
             "ratio_raw": t_gen / t_raw, "max_rel_diff": diff, "generated_ns_per_state": t_gen / n * 1e9,
-            "lambdify_ns_per_state": t_lam / n * 1e9, "lambdify_raw_ns_per_state": t_raw / n * 1e9}
+            "lambdify_ns_per_state": t_lam / n * 1e9, "lambdify_raw_ns_per_state": t_raw / n * 1e9,
+            "block": mod.BLOCK, "lambdify_blocked_ns_per_state": t_blk / n * 1e9, "ratio_blocked": t_gen / t_blk}
 
 
 # ---------------------------------------------------------------------------------------------
