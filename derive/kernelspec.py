@@ -7,6 +7,7 @@ symbols, so the generated text is byte-identical whatever PYTHONHASHSEED is.
 """
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
 
 import sympy as sp
@@ -70,15 +71,68 @@ class NPrinter(NumPyPrinter):
 
 
 _C = CPrinter()
-_NP = NPrinter({"fully_qualified_modules": True})
+# order "none": the argument order array_ops_first chose (see there) is the order printed.
+_NP = NPrinter({"fully_qualified_modules": True, "order": "none"})
 
 
 def c_expr(e) -> str:
     return _C.doprint(e)
 
 
-def np_expr(e) -> str:
-    return _NP.doprint(e)
+def np_expr(e, scalars: frozenset = frozenset()) -> str:
+    return _NP.doprint(array_ops_first(e, scalars))
+
+
+# ---------------------------------------------------------------------------------------------
+# NumPy: fewer passes over the batch
+
+
+def _is_scalar(e, scalars) -> bool:
+    return e.free_symbols <= scalars
+
+
+def _array_factors(term, scalars) -> list:
+    return [f for f in sp.Mul.make_args(term) if not _is_scalar(f, scalars)]
+
+
+def array_ops_first(e, scalars: frozenset):
+    """``e`` rearranged (the same value up to rounding) for NumPy on a batch, where each
+    operation with an array operand is a pass over N numbers and ``scalars`` (the parameters,
+    and temporaries made of them alone) cost nothing: in a product the scalar factors are
+    multiplied together before they meet an array, and an array factor common to several
+    terms of a sum is taken out of them once (greedily, the most common first: a·x + b·x →
+    (a + b)·x). Negative terms come last, so that a sum starts without a negation. The
+    result is unevaluated, for printing in this order."""
+    if e.is_Atom or not e.args:
+        return e
+    if e.is_Mul:
+        args = [array_ops_first(a, scalars) for a in e.args]
+        sc = [a for a in args if _is_scalar(a, scalars)]
+        ar = [a for a in args if not _is_scalar(a, scalars)]
+        head = [sp.Mul(*sc)] if len(sc) > 1 and ar else sc
+        return sp.Mul(*head, *ar, evaluate=False)
+    if e.is_Add:
+        return _sum(list(e.args), scalars)
+    return e.func(*[array_ops_first(a, scalars) for a in e.args])
+
+
+def _sum(terms, scalars):
+    counts = Counter(f for t in terms for f in set(_array_factors(t, scalars)))
+    common = [(-k, sp.default_sort_key(f), f) for f, k in counts.items() if k > 1]
+    if common:
+        f = min(common, key=lambda c: c[:2])[2]
+        inner = []
+        for t in terms:
+            args = list(sp.Mul.make_args(t))
+            if f in args:
+                args.remove(f)
+                inner.append(sp.Mul(*args))
+        rest = [array_ops_first(t, scalars) for t in terms if f not in sp.Mul.make_args(t)]
+        out = rest + [sp.Mul(array_ops_first(f, scalars), _sum(inner, scalars), evaluate=False)]
+    else:
+        out = [array_ops_first(t, scalars) for t in terms]
+    out.sort(key=lambda t: t.could_extract_minus_sign())  # stable: positive terms first
+    return sp.Add(*out, evaluate=False)
 
 
 @dataclass(frozen=True)
@@ -106,8 +160,15 @@ class Block:
     def c(self):
         return [(str(n), c_expr(e)) for n, e in self.temps], [c_expr(e) for e in self.outputs]
 
-    def numpy(self):
-        return [(str(n), np_expr(e)) for n, e in self.temps], [np_expr(e) for e in self.outputs]
+    def numpy(self, params=()):
+        """Printed for NumPy, the parameters (and temporaries made of them alone) scalars."""
+        scalars = set(params)
+        for n, e in self.temps:
+            if e.free_symbols <= scalars:
+                scalars.add(n)
+        scalars = frozenset(scalars)
+        return ([(str(n), np_expr(e, scalars)) for n, e in self.temps],
+                [np_expr(e, scalars) for e in self.outputs])
 
 
 def _flatten_observables(obs: dict):
@@ -205,7 +266,7 @@ class KernelSpec:
     def context(self, language: str) -> dict:
         """The template context: everything a template needs, already printed."""
         m = self.model
-        pr = (lambda b: b.c()) if language == "c" else (lambda b: b.numpy())
+        pr = (lambda b: b.c()) if language == "c" else (lambda b: b.numpy(m.params))
         nd = len(m.domain)
         rt, ro = pr(self.rhs)
         jt, jo = pr(self.jac)

@@ -224,6 +224,25 @@ def test_numpy_kernels_in_blocks_give_the_whole_batch_bit_for_bit(cmodel, monkey
             np.testing.assert_array_equal(g, whole)
 
 
+def test_numpy_printing_takes_common_array_factors_out_and_multiplies_scalars_first():
+    import sympy as sp
+
+    from derive.kernelspec import array_ops_first, np_expr
+
+    a, b, c, x, y, z = sp.symbols("a b c x y z")
+    scalars = frozenset({a, b, c})
+    assert np_expr(a * x + b * x, scalars) == "x*(a + b)"  # one pass over the batch, not three
+    assert np_expr(x * y - 2 * x * z + y, scalars) == "y + x*(y - 2*z)"
+    assert np_expr(a * b * c * x * y, scalars) == "(a*b*c)*x*y"  # a scalar, then the arrays
+    assert np_expr(-x * y + a, scalars) == "a - x*y"  # no leading negation of an array
+    rng = np.random.default_rng(3)
+    exprs = [a * x + b * x - c * x * y + sp.sin(x) * y - sp.sin(x) * z / a,
+             (a - b) * x ** 2 * y - x * y * z + c * y * z + x]
+    for e in exprs:
+        vals = dict(zip((a, b, c, x, y, z), rng.uniform(0.5, 2.0, 6)))
+        assert float(array_ops_first(e, scalars).subs(vals)) == pytest.approx(float(e.subs(vals)), rel=1e-14)
+
+
 def test_generated_c_compiles_cleanly_with_strict_warnings(tmp_path):
     """Every generated C file, strict C99 with every warning an error, at -O2 (some warnings need
     the optimiser); two compilers at a time (the files are independent)."""

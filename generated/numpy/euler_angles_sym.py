@@ -70,15 +70,15 @@ def _rhs(t, y, p, out):
         x3 = I1*alpha_d
         x4 = I3*gamma_d
         x5 = I3*alpha_d
-        x6 = x2*x5 + x4
+        x6 = x4 + x2*x5
         x7 = I1**(-1.0)
-        x8 = beta_d*x7/x0
+        x8 = x7*beta_d/x0
         out[0] = alpha_d
         out[1] = beta_d
         out[2] = gamma_d
-        out[3] = x8*(-2*x2*x3 + x6)
-        out[4] = alpha_d*x0*x7*(I1*alpha_d*x2 - x6)
-        out[5] = x8*(2*I1*alpha_d + I3*alpha_d*x1 - x1*x3 - x2*x4 - x5)
+        out[3] = x8*(x6 - 2*x2*x3)
+        out[4] = x7*x0*alpha_d*(I1*x2*alpha_d - x6)
+        out[5] = x8*(alpha_d*(2*I1 + I3*x1) - x5 - x1*x3 - x2*x4)
 
 
 def rhs(t, y, p):
@@ -97,27 +97,27 @@ def _jac(t, y, p, out):
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = numpy.sin(beta)
         x1 = (x0*x0)
-        x2 = alpha_d*x0
+        x2 = x0*alpha_d
         x3 = I3*alpha_d
         x4 = x0*x3
         x5 = -x4
         x6 = I1**(-1.0)
         x7 = x6/x0
-        x8 = beta_d*x7
+        x8 = x7*beta_d
         x9 = numpy.cos(beta)
         x10 = I1*x9
         x11 = 2*x10
         x12 = I3*gamma_d
         x13 = I3*x9
-        x14 = alpha_d*x13
+        x14 = x13*alpha_d
         x15 = x12 + x14
-        x16 = -alpha_d*x11 + x15
-        x17 = beta_d*x6*x9/x1
+        x16 = x15 - x11*alpha_d
+        x17 = x6*x9*beta_d/x1
         x18 = -x13
-        x19 = x2*x6
-        x20 = x6*(I1*alpha_d*x9 - x15)
+        x19 = x6*x2
+        x20 = x6*(I1*x9*alpha_d - x15)
         x21 = I1*x1
-        x22 = 2*I1*alpha_d + I3*alpha_d*x1 - alpha_d*x21 - x12*x9 - x3
+        x22 = alpha_d*(2*I1 + I3*x1 - x21) - x3 - x12*x9
         out[0] = 0
         out[1] = 0
         out[2] = 0
@@ -137,21 +137,21 @@ def _jac(t, y, p, out):
         out[16] = 0
         out[17] = 1
         out[18] = 0
-        out[19] = -x16*x17 + x8*(2*I1*x2 + x5)
+        out[19] = x8*(x5 + (2*I1)*x2) - x16*x17
         out[20] = 0
         out[21] = x8*(-x11 - x18)
         out[22] = x16*x7
         out[23] = I3*x8
         out[24] = 0
-        out[25] = alpha_d*x20*x9 + x19*(-I1*x2 - x5)
+        out[25] = x19*((-I1)*x2 - x5) + x20*x9*alpha_d
         out[26] = 0
         out[27] = x0*x20 + x19*(x10 + x18)
         out[28] = 0
-        out[29] = -x4*x6
+        out[29] = (-x6)*x4
         out[30] = 0
-        out[31] = -x17*x22 + x8*(x0*x12 + 2*x0*x14 - x11*x2)
+        out[31] = x8*(x0*(x12 + 2*x14) - x11*x2) - x17*x22
         out[32] = 0
-        out[33] = x8*(2*I1 + I3*x1 - I3 - x21)
+        out[33] = x8*(2*I1 + I3*x1 - x21 - I3)
         out[34] = x22*x7
         out[35] = -x13*x8
 
@@ -177,11 +177,11 @@ def _observables(t, y, p, out):
         x1 = numpy.sin(beta)
         x2 = numpy.cos(gamma)
         x3 = x1*x2
-        x4 = -alpha_d*x3 + beta_d*x0
+        x4 = x0*beta_d - x3*alpha_d
         x5 = x0*x1
-        x6 = alpha_d*x5 + beta_d*x2
+        x6 = x2*beta_d + x5*alpha_d
         x7 = numpy.cos(beta)
-        x8 = alpha_d*x7 + gamma_d
+        x8 = gamma_d + x7*alpha_d
         x9 = (1/2)*I1
         x10 = I3*x8
         x11 = I1*x6
@@ -195,7 +195,7 @@ def _observables(t, y, p, out):
         out[6] = x1*numpy.cos(alpha)
         out[7] = x1*numpy.sin(alpha)
         out[8] = x7
-        out[9] = (1/2)*I3*(x8*x8) + (x4*x4)*x9 + (x6*x6)*x9
+        out[9] = x9*(x4*x4) + x9*(x6*x6) + ((1/2)*I3)*(x8*x8)
         out[10] = x10*x7 + x11*x5 - x12*x3
         out[11] = x10
         out[12] = -x3

@@ -66,9 +66,9 @@ def _rhs(t, y, p, out):
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = omega2*omega3
         x1 = omega1*omega2
-        out[0] = (I2*x0 - I3*x0)/I1
-        out[1] = (-I1*omega1*omega3 + I3*omega1*omega3)/I2
-        out[2] = (I1*x1 - I2*x1)/I3
+        out[0] = (x0*(I2 - I3))/I1
+        out[1] = (omega1*(omega3*(I3 - I1)))/I2
+        out[2] = (x1*(I1 - I2))/I3
 
 
 def rhs(t, y, p):
@@ -86,19 +86,19 @@ def _jac(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = -I3*omega3
+        x1 = (-I3)*omega3
         x2 = I2*omega2
         x3 = I2**(-1.0)
         x4 = I1*omega1
         x5 = I3**(-1.0)
         out[0] = 0
-        out[1] = x0*(I2*omega3 + x1)
-        out[2] = x0*(-I3*omega2 + x2)
-        out[3] = x3*(-I1*omega3 - x1)
+        out[1] = x0*(x1 + I2*omega3)
+        out[2] = x0*(x2 + (-I3)*omega2)
+        out[3] = x3*((-I1)*omega3 - x1)
         out[4] = 0
         out[5] = x3*(I3*omega1 - x4)
         out[6] = x5*(I1*omega2 - x2)
-        out[7] = x5*(-I2*omega1 + x4)
+        out[7] = x5*(x4 + (-I2)*omega1)
         out[8] = 0
 
 
@@ -120,7 +120,7 @@ def _observables(t, y, p, out):
         x0 = (omega1*omega1)
         x1 = (omega2*omega2)
         x2 = (omega3*omega3)
-        out[0] = (1/2)*I1*x0 + (1/2)*I2*x1 + (1/2)*I3*x2
+        out[0] = ((1/2)*I1)*x0 + ((1/2)*I2)*x1 + ((1/2)*I3)*x2
         out[1] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2
         out[2] = omega1
         out[3] = omega2

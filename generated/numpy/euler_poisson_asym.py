@@ -72,14 +72,14 @@ def _rhs(t, y, p, out):
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = omega2*omega3
         x1 = omega1*omega2
-        out[0] = (I2*x0 - I3*x0)/I1
-        out[1] = (-I1*omega1*omega3 + I3*omega1*omega3)/I2
-        out[2] = (I1*x1 - I2*x1)/I3
+        out[0] = (x0*(I2 - I3))/I1
+        out[1] = (omega1*(omega3*(I3 - I1)))/I2
+        out[2] = (x1*(I1 - I2))/I3
         out[3] = n2*omega3 - n3*omega2
-        out[4] = -n1*omega3 + n3*omega1
+        out[4] = n3*omega1 - n1*omega3
         out[5] = n1*omega2 - n2*omega1
         out[6] = e2*omega3 - e3*omega2
-        out[7] = -e1*omega3 + e3*omega1
+        out[7] = e3*omega1 - e1*omega3
         out[8] = e1*omega2 - e2*omega1
 
 
@@ -104,7 +104,7 @@ def _jac(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = -I3*omega3
+        x1 = (-I3)*omega3
         x2 = I2*omega2
         x3 = I2**(-1.0)
         x4 = I1*omega1
@@ -113,15 +113,15 @@ def _jac(t, y, p, out):
         x7 = -omega3
         x8 = -omega1
         out[0] = 0
-        out[1] = x0*(I2*omega3 + x1)
-        out[2] = x0*(-I3*omega2 + x2)
+        out[1] = x0*(x1 + I2*omega3)
+        out[2] = x0*(x2 + (-I3)*omega2)
         out[3] = 0
         out[4] = 0
         out[5] = 0
         out[6] = 0
         out[7] = 0
         out[8] = 0
-        out[9] = x3*(-I1*omega3 - x1)
+        out[9] = x3*((-I1)*omega3 - x1)
         out[10] = 0
         out[11] = x3*(I3*omega1 - x4)
         out[12] = 0
@@ -131,7 +131,7 @@ def _jac(t, y, p, out):
         out[16] = 0
         out[17] = 0
         out[18] = x5*(I1*omega2 - x2)
-        out[19] = x5*(-I2*omega1 + x4)
+        out[19] = x5*(x4 + (-I2)*omega1)
         out[20] = 0
         out[21] = 0
         out[22] = 0
@@ -216,7 +216,7 @@ def _observables(t, y, p, out):
     I3 = p[2]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = -e1*n2 + e2*n1
+        x0 = e2*n1 - e1*n2
         x1 = I1*omega1
         x2 = I2*omega2
         x3 = I3*omega3
@@ -229,8 +229,8 @@ def _observables(t, y, p, out):
         out[6] = e3
         out[7] = x0
         out[8] = n3
-        out[9] = (1/2)*I1*(omega1*omega1) + (1/2)*I2*(omega2*omega2) + (1/2)*I3*(omega3*omega3)
-        out[10] = n1*x1 + n2*x2 + n3*x3
+        out[9] = ((1/2)*I1)*(omega1*omega1) + ((1/2)*I2)*(omega2*omega2) + ((1/2)*I3)*(omega3*omega3)
+        out[10] = x1*n1 + x2*n2 + x3*n3
         out[11] = x3
         out[12] = n1
         out[13] = n2

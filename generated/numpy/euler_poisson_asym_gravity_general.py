@@ -81,14 +81,14 @@ def _rhs(t, y, p, out):
         x3 = I2**(-1.0)
         x4 = I3**(-1.0)
         x5 = omega1*omega2
-        out[0] = -x0*x1*(cy*n3 - cz*n2) + x0*(I2*x2 - I3*x2)
-        out[1] = -x1*x3*(-cx*n3 + cz*n1) + x3*(-I1*omega1*omega3 + I3*omega1*omega3)
-        out[2] = -x1*x4*(cx*n2 - cy*n1) + x4*(I1*x5 - I2*x5)
+        out[0] = x0*(x2*(I2 - I3)) + (-x0*x1)*(cy*n3 + (-cz)*n2)
+        out[1] = x3*(omega1*(omega3*(I3 - I1))) + (-x1*x3)*(cz*n1 + (-cx)*n3)
+        out[2] = x4*(x5*(I1 - I2)) + (-x1*x4)*(cx*n2 + (-cy)*n1)
         out[3] = n2*omega3 - n3*omega2
-        out[4] = -n1*omega3 + n3*omega1
+        out[4] = n3*omega1 - n1*omega3
         out[5] = n1*omega2 - n2*omega1
         out[6] = e2*omega3 - e3*omega2
-        out[7] = -e1*omega3 + e3*omega1
+        out[7] = e3*omega1 - e1*omega3
         out[8] = e1*omega2 - e2*omega1
 
 
@@ -118,7 +118,7 @@ def _jac(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = -I3*omega3
+        x1 = (-I3)*omega3
         x2 = I2*omega2
         x3 = M*g
         x4 = x0*x3
@@ -131,28 +131,28 @@ def _jac(t, y, p, out):
         x11 = -omega3
         x12 = -omega1
         out[0] = 0
-        out[1] = x0*(I2*omega3 + x1)
-        out[2] = x0*(-I3*omega2 + x2)
+        out[1] = x0*(x1 + I2*omega3)
+        out[2] = x0*(x2 + (-I3)*omega2)
         out[3] = 0
-        out[4] = cz*x4
-        out[5] = -cy*x4
+        out[4] = x4*cz
+        out[5] = -x4*cy
         out[6] = 0
         out[7] = 0
         out[8] = 0
-        out[9] = x5*(-I1*omega3 - x1)
+        out[9] = x5*((-I1)*omega3 - x1)
         out[10] = 0
         out[11] = x5*(I3*omega1 - x6)
-        out[12] = -cz*x7
+        out[12] = -x7*cz
         out[13] = 0
-        out[14] = cx*x7
+        out[14] = x7*cx
         out[15] = 0
         out[16] = 0
         out[17] = 0
         out[18] = x8*(I1*omega2 - x2)
-        out[19] = x8*(-I2*omega1 + x6)
+        out[19] = x8*(x6 + (-I2)*omega1)
         out[20] = 0
-        out[21] = cy*x9
-        out[22] = -cx*x9
+        out[21] = x9*cy
+        out[22] = -x9*cx
         out[23] = 0
         out[24] = 0
         out[25] = 0
@@ -239,7 +239,7 @@ def _observables(t, y, p, out):
     cz = p[7]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = -e1*n2 + e2*n1
+        x0 = e2*n1 - e1*n2
         x1 = I1*omega1
         x2 = I2*omega2
         x3 = I3*omega3
@@ -252,8 +252,8 @@ def _observables(t, y, p, out):
         out[6] = e3
         out[7] = x0
         out[8] = n3
-        out[9] = (1/2)*I1*(omega1*omega1) + (1/2)*I2*(omega2*omega2) + (1/2)*I3*(omega3*omega3) + M*g*(cx*n1 + cy*n2 + cz*n3)
-        out[10] = n1*x1 + n2*x2 + n3*x3
+        out[9] = ((1/2)*I1)*(omega1*omega1) + ((1/2)*I2)*(omega2*omega2) + ((1/2)*I3)*(omega3*omega3) + (M*g)*(cx*n1 + cy*n2 + cz*n3)
+        out[10] = x1*n1 + x2*n2 + x3*n3
         out[11] = x3
         out[12] = n1
         out[13] = n2

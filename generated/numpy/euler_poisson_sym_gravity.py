@@ -73,16 +73,16 @@ def _rhs(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = M*g*l*x0
+        x1 = x0*M*g*l
         x2 = omega2*omega3
-        out[0] = n2*x1 + x0*(I1*x2 - I3*x2)
-        out[1] = -n1*x1 + x0*(-I1*omega1*omega3 + I3*omega1*omega3)
+        out[0] = x0*(x2*(I1 - I3)) + x1*n2
+        out[1] = x0*(omega1*(omega3*(I3 - I1))) + (-x1)*n1
         out[2] = 0
         out[3] = n2*omega3 - n3*omega2
-        out[4] = -n1*omega3 + n3*omega1
+        out[4] = n3*omega1 - n1*omega3
         out[5] = n1*omega2 - n2*omega1
         out[6] = e2*omega3 - e3*omega2
-        out[7] = -e1*omega3 + e3*omega1
+        out[7] = e3*omega1 - e1*omega3
         out[8] = e1*omega2 - e2*omega1
 
 
@@ -109,23 +109,23 @@ def _jac(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = I1*omega3 - I3*omega3
-        x2 = M*g*l*x0
+        x1 = omega3*(I1 - I3)
+        x2 = x0*M*g*l
         x3 = -omega2
         x4 = -omega3
         x5 = -omega1
         out[0] = 0
         out[1] = x0*x1
-        out[2] = x0*(I1*omega2 - I3*omega2)
+        out[2] = x0*(omega2*(I1 - I3))
         out[3] = 0
         out[4] = x2
         out[5] = 0
         out[6] = 0
         out[7] = 0
         out[8] = 0
-        out[9] = -x0*x1
+        out[9] = (-x0)*x1
         out[10] = 0
-        out[11] = x0*(-I1*omega1 + I3*omega1)
+        out[11] = x0*(omega1*(I3 - I1))
         out[12] = -x2
         out[13] = 0
         out[14] = 0
@@ -220,7 +220,7 @@ def _observables(t, y, p, out):
     l = p[4]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = -e1*n2 + e2*n1
+        x0 = e2*n1 - e1*n2
         x1 = (1/2)*I1
         x2 = I1*omega1
         x3 = I1*omega2
@@ -234,8 +234,8 @@ def _observables(t, y, p, out):
         out[6] = e3
         out[7] = x0
         out[8] = n3
-        out[9] = (1/2)*I3*(omega3*omega3) + M*g*l*n3 + (omega1*omega1)*x1 + (omega2*omega2)*x1
-        out[10] = n1*x2 + n2*x3 + n3*x4
+        out[9] = x1*(omega1*omega1) + x1*(omega2*omega2) + ((1/2)*I3)*(omega3*omega3) + (M*g*l)*n3
+        out[10] = x2*n1 + x3*n2 + x4*n3
         out[11] = x4
         out[12] = n1
         out[13] = n2

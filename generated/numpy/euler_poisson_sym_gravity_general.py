@@ -78,14 +78,14 @@ def _rhs(t, y, p, out):
         x1 = M*g
         x2 = x0*x1
         x3 = omega2*omega3
-        out[0] = x0*(I1*x3 - I3*x3) - x2*(cy*n3 - cz*n2)
-        out[1] = x0*(-I1*omega1*omega3 + I3*omega1*omega3) - x2*(-cx*n3 + cz*n1)
-        out[2] = -x1*(cx*n2 - cy*n1)/I3
+        out[0] = x0*(x3*(I1 - I3)) + (-x2)*(cy*n3 + (-cz)*n2)
+        out[1] = x0*(omega1*(omega3*(I3 - I1))) + (-x2)*(cz*n1 + (-cx)*n3)
+        out[2] = (-x1/I3)*(cx*n2 + (-cy)*n1)
         out[3] = n2*omega3 - n3*omega2
-        out[4] = -n1*omega3 + n3*omega1
+        out[4] = n3*omega1 - n1*omega3
         out[5] = n1*omega2 - n2*omega1
         out[6] = e2*omega3 - e3*omega2
-        out[7] = -e1*omega3 + e3*omega1
+        out[7] = e3*omega1 - e1*omega3
         out[8] = e1*omega2 - e2*omega1
 
 
@@ -114,37 +114,37 @@ def _jac(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = I1**(-1.0)
-        x1 = I1*omega3 - I3*omega3
+        x1 = omega3*(I1 - I3)
         x2 = M*g
         x3 = x0*x2
-        x4 = cz*x3
+        x4 = x3*cz
         x5 = x2/I3
         x6 = -omega2
         x7 = -omega3
         x8 = -omega1
         out[0] = 0
         out[1] = x0*x1
-        out[2] = x0*(I1*omega2 - I3*omega2)
+        out[2] = x0*(omega2*(I1 - I3))
         out[3] = 0
         out[4] = x4
-        out[5] = -cy*x3
+        out[5] = -x3*cy
         out[6] = 0
         out[7] = 0
         out[8] = 0
-        out[9] = -x0*x1
+        out[9] = (-x0)*x1
         out[10] = 0
-        out[11] = x0*(-I1*omega1 + I3*omega1)
+        out[11] = x0*(omega1*(I3 - I1))
         out[12] = -x4
         out[13] = 0
-        out[14] = cx*x3
+        out[14] = x3*cx
         out[15] = 0
         out[16] = 0
         out[17] = 0
         out[18] = 0
         out[19] = 0
         out[20] = 0
-        out[21] = cy*x5
-        out[22] = -cx*x5
+        out[21] = x5*cy
+        out[22] = -x5*cx
         out[23] = 0
         out[24] = 0
         out[25] = 0
@@ -230,7 +230,7 @@ def _observables(t, y, p, out):
     cz = p[6]
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
-        x0 = -e1*n2 + e2*n1
+        x0 = e2*n1 - e1*n2
         x1 = (1/2)*I1
         x2 = I1*omega1
         x3 = I1*omega2
@@ -244,8 +244,8 @@ def _observables(t, y, p, out):
         out[6] = e3
         out[7] = x0
         out[8] = n3
-        out[9] = (1/2)*I3*(omega3*omega3) + M*g*(cx*n1 + cy*n2 + cz*n3) + (omega1*omega1)*x1 + (omega2*omega2)*x1
-        out[10] = n1*x2 + n2*x3 + n3*x4
+        out[9] = x1*(omega1*omega1) + x1*(omega2*omega2) + ((1/2)*I3)*(omega3*omega3) + (M*g)*(cx*n1 + cy*n2 + cz*n3)
+        out[10] = x2*n1 + x3*n2 + x4*n3
         out[11] = x4
         out[12] = n1
         out[13] = n2

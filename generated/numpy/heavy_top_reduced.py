@@ -74,14 +74,14 @@ def _rhs(t, y, p, out):
         x4 = (1/4)*x3
         x5 = p_alpha - p_gamma
         x6 = numpy.sin(x1)
-        x7 = numpy.where(numpy.equal(x0, 0), 0, x0*x4/(x2*x2)) + numpy.where(numpy.equal(x5, 0), 0, x4*x5/(x6*x6))
+        x7 = numpy.where(numpy.equal(x0, 0), 0, (x0*x4)/(x2*x2)) + numpy.where(numpy.equal(x5, 0), 0, (x4*x5)/(x6*x6))
         x8 = (x0*x0)
         x9 = (1/8)*x3
         x10 = (x5*x5)
         out[0] = x7
         out[1] = beta_d
-        out[2] = -x7*numpy.cos(beta) + p_gamma/I3
-        out[3] = x3*(M*g*l*numpy.sin(beta) - numpy.where(numpy.equal(x10, 0), 0, -x10*x2*x9/(x6*x6*x6)) - numpy.where(numpy.equal(x8, 0), 0, x6*x8*x9/(x2*x2*x2)))
+        out[2] = p_gamma/I3 - x7*numpy.cos(beta)
+        out[3] = x3*((M*g*l)*numpy.sin(beta) - numpy.where(numpy.equal(x10, 0), 0, (-x10*x9)*x2/(x6*x6*x6)) - numpy.where(numpy.equal(x8, 0), 0, (x8*x9)*x6/(x2*x2*x2)))
 
 
 def rhs(t, y, p):
@@ -110,7 +110,7 @@ def _jac(t, y, p, out):
         x8 = p_alpha - p_gamma
         x9 = numpy.equal(x8, 0)
         x10 = -x6*x8
-        x11 = numpy.where(x1, 0, x4*x7/(x3*x3*x3)) + numpy.where(x9, 0, x10*x3/(x4*x4*x4))
+        x11 = numpy.where(x1, 0, x7*x4/(x3*x3*x3)) + numpy.where(x9, 0, x10*x3/(x4*x4*x4))
         x12 = (x3*x3)
         x13 = x12**(-1.0)
         x14 = (x4*x4)
@@ -129,11 +129,11 @@ def _jac(t, y, p, out):
         out[6] = 0
         out[7] = 1
         out[8] = 0
-        out[9] = -x11*x16 + (numpy.where(x1, 0, x13*x7) + numpy.where(x9, 0, -x10*x15))*numpy.sin(beta)
+        out[9] = (numpy.where(x1, 0, x7*x13) + numpy.where(x9, 0, (-x10)*x15))*numpy.sin(beta) - x11*x16
         out[10] = 0
         out[11] = 0
         out[12] = 0
-        out[13] = x5*(M*g*l*x16 - numpy.where(numpy.equal(x17, 0), 0, x13*x17*x18 + x14*x17*x19/(x3*x3*x3*x3)) - numpy.where(numpy.equal(x20, 0), 0, x12*x19*x20/(x4*x4*x4*x4) + x15*x18*x20))
+        out[13] = x5*((M*g*l)*x16 - numpy.where(numpy.equal(x17, 0), 0, (x17*x18)*x13 + (x17*x19)*x14/(x3*x3*x3*x3)) - numpy.where(numpy.equal(x20, 0), 0, (x18*x20)*x15 + (x19*x20)*x12/(x4*x4*x4*x4)))
         out[14] = 0
         out[15] = 0
 
@@ -166,13 +166,13 @@ def _observables(t, y, p, out):
         x5 = (1/4)*x4
         x6 = p_alpha - p_gamma
         x7 = 1.0/(numpy.sin(x2)*numpy.sin(x2))
-        x8 = numpy.where(numpy.equal(x1, 0), 0, x1*x3*x5) + numpy.where(numpy.equal(x6, 0), 0, x5*x6*x7)
+        x8 = numpy.where(numpy.equal(x1, 0), 0, (x1*x5)*x3) + numpy.where(numpy.equal(x6, 0), 0, (x5*x6)*x7)
         x9 = numpy.sin(beta)
         x10 = numpy.cos(gamma)
         x11 = x10*x9
-        x12 = beta_d*x0 - x11*x8
+        x12 = x0*beta_d - x11*x8
         x13 = x0*x9
-        x14 = beta_d*x10 + x13*x8
+        x14 = x10*beta_d + x13*x8
         x15 = I3**(-1.0)
         x16 = numpy.cos(beta)
         x17 = (1/2)*(p_gamma*p_gamma)
@@ -184,11 +184,11 @@ def _observables(t, y, p, out):
         out[2] = gamma
         out[3] = x12
         out[4] = x14
-        out[5] = p_gamma*x15
+        out[5] = x15*p_gamma
         out[6] = x9*numpy.cos(alpha)
         out[7] = x9*numpy.sin(alpha)
         out[8] = x16
-        out[9] = (1/2)*I1*(beta_d*beta_d) + M*g*l*x16 + x15*x17 - x17*x4 + numpy.where(numpy.equal(x18, 0), 0, x18*x19*x3) + numpy.where(numpy.equal(x20, 0), 0, x19*x20*x7)
+        out[9] = x15*x17 + ((1/2)*I1)*(beta_d*beta_d) + (M*g*l)*x16 + numpy.where(numpy.equal(x18, 0), 0, (x18*x19)*x3) + numpy.where(numpy.equal(x20, 0), 0, (x19*x20)*x7) - x17*x4
         out[10] = p_alpha
         out[11] = p_gamma
         out[12] = -x11

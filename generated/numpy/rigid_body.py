@@ -86,21 +86,21 @@ def _rhs(t, y, p, out):
         x9 = I1**(-1.0)
         x10 = omega2*omega3
         x11 = 2*q0
-        x12 = q1*x11 + 2*q2*q3
+        x12 = x11*q1 + 2*q2*q3
         x13 = x3**(-1.0)
-        x14 = x13*(-x0 - x1 + x2)
+        x14 = x13*(x2 - x0 - x1)
         x15 = M*g
         x16 = I2**(-1.0)
-        x17 = 2*q1*q3 - q2*x11
+        x17 = 2*q1*q3 - x11*q2
         x18 = I3**(-1.0)
         x19 = omega1*omega2
-        out[0] = -omega2*x5 - omega3*x6 - q1*x4
-        out[1] = -omega2*x6 + omega3*x5 + q0*x4
-        out[2] = q0*x7 - q1*x8 + q3*x4
-        out[3] = q0*x8 + q1*x7 - q2*x4
-        out[4] = x9*(I2*x10 - I3*x10) + x9*(-c*omega1 - x15*(cy*x14 - cz*x12*x13))
-        out[5] = x16*(-c*omega2 - x15*(-cx*x14 + cz*x13*x17)) + x16*(-I1*omega1*omega3 + I3*omega1*omega3)
-        out[6] = x18*(I1*x19 - I2*x19) + x18*(-c*omega3 - x15*(cx*x12*x13 - cy*x13*x17))
+        out[0] = -x4*q1 - x5*omega2 - x6*omega3
+        out[1] = x4*q0 + x5*omega3 - x6*omega2
+        out[2] = x4*q3 + x7*q0 - x8*q1
+        out[3] = x7*q1 + x8*q0 - x4*q2
+        out[4] = x9*(x10*(I2 - I3)) + x9*((-x15)*(cy*x14 + (-cz)*x12*x13) + (-c)*omega1)
+        out[5] = x16*((-x15)*((-cx)*x14 + cz*x13*x17) + (-c)*omega2) + x16*(omega1*(omega3*(I3 - I1)))
+        out[6] = x18*(x19*(I1 - I2)) + x18*((-x15)*(x13*(cx*x12 + (-cy)*x17)) + (-c)*omega3)
 
 
 def rhs(t, y, p):
@@ -150,10 +150,10 @@ def _jac(t, y, p, out):
         x20 = x18*x19
         x21 = 2*q0
         x22 = 2*q3
-        x23 = q1*x21 + q2*x22
+        x23 = x21*q1 + x22*q2
         x24 = 1.0/(x3*x3)
         x25 = x21*x24
-        x26 = -x0 - x1 + x2
+        x26 = x2 - x0 - x1
         x27 = cy*x26
         x28 = I1**(-1.0)
         x29 = M*g
@@ -169,11 +169,11 @@ def _jac(t, y, p, out):
         x39 = -x22*x31
         x40 = x18*x35
         x41 = x22*x24
-        x42 = -I3*omega3
+        x42 = (-I3)*omega3
         x43 = I2*omega2
         x44 = cx*x17
         x45 = x21*x44
-        x46 = 2*q1*q3 - q2*x21
+        x46 = 2*q1*q3 - x21*q2
         x47 = cz*x46
         x48 = I2**(-1.0)
         x49 = x29*x48
@@ -214,27 +214,27 @@ def _jac(t, y, p, out):
         out[25] = x13
         out[26] = x10
         out[27] = x16
-        out[28] = -x30*(2*cy*q0*x17 + 2*cz*q0*x23*x24 - x20 - x25*x27)
-        out[29] = -x30*(2*cz*q1*x23*x24 - x27*x34 - x32 - x33)
-        out[30] = -x30*(2*cz*q2*x23*x24 - x27*x38 - x36 - x37)
-        out[31] = -x30*(2*cz*q3*x23*x24 - x27*x41 - x39 - x40)
-        out[32] = -c*x28
-        out[33] = x28*(I2*omega3 + x42)
-        out[34] = x28*(-I3*omega2 + x43)
-        out[35] = -x49*(2*cx*q0*x24*x26 - x25*x47 - x40 - x45)
-        out[36] = -x49*(-x34*x47 + x34*x51 + x37 + x50)
-        out[37] = -x49*(-x33 - x38*x47 + x38*x51 + x52)
-        out[38] = -x49*(x20 - x41*x47 + x41*x51 - x53)
-        out[39] = x48*(-I1*omega3 - x42)
-        out[40] = -c*x48
+        out[28] = (-x30)*(q0*((2*cy)*x17 + (2*cz)*x23*x24) - x20 - x25*x27)
+        out[29] = (-x30)*((2*cz)*x23*x24*q1 - x32 - x33 - x27*x34)
+        out[30] = (-x30)*((2*cz)*x23*x24*q2 - x36 - x37 - x27*x38)
+        out[31] = (-x30)*((2*cz)*x23*x24*q3 - x39 - x40 - x27*x41)
+        out[32] = -x28*c
+        out[33] = x28*(x42 + I2*omega3)
+        out[34] = x28*(x43 + (-I3)*omega2)
+        out[35] = (-x49)*((2*cx)*x24*x26*q0 - x40 - x45 - x25*x47)
+        out[36] = (-x49)*(x37 + x50 + x34*(x51 - x47))
+        out[37] = (-x49)*(x52 + x38*(x51 - x47) - x33)
+        out[38] = (-x49)*(x20 + x41*(x51 - x47) - x53)
+        out[39] = x48*((-I1)*omega3 - x42)
+        out[40] = -x48*c
         out[41] = x48*(I3*omega1 - x54)
-        out[42] = -x58*(-x25*x55 + x25*x56 + x36 + x50)
-        out[43] = -x58*(-x34*x55 + x34*x56 + x39 + x45)
-        out[44] = -x58*(x21*x31 - x38*x55 + x38*x56 + x53)
-        out[45] = -x58*(-x32 - x41*x55 + x41*x56 + x52)
+        out[42] = (-x58)*(x36 + x50 + x25*(x56 - x55))
+        out[43] = (-x58)*(x39 + x45 + x34*(x56 - x55))
+        out[44] = (-x58)*(x53 + x21*x31 + x38*(x56 - x55))
+        out[45] = (-x58)*(x52 + x41*(x56 - x55) - x32)
         out[46] = x57*(I1*omega2 - x43)
-        out[47] = x57*(-I2*omega1 + x54)
-        out[48] = -c*x57
+        out[47] = x57*(x54 + (-I2)*omega1)
+        out[48] = -x57*c
 
 
 def jac(t, y, p):
@@ -262,18 +262,18 @@ def _observables(t, y, p, out):
 
     with numpy.errstate(divide="ignore", invalid="ignore"):
         x0 = 2*q0
-        x1 = q1*x0
+        x1 = x0*q1
         x2 = 2*q2*q3 - x1
-        x3 = q2*x0
+        x3 = x0*q2
         x4 = 2*q3
-        x5 = q1*x4
+        x5 = x4*q1
         x6 = x3 + x5
         x7 = (q0*q0) + (q3*q3)
         x8 = (q1*q1)
         x9 = (q2*q2)
         x10 = x8 + x9
         x11 = x7 - x8 - x9
-        x12 = q2*x4 + x1
+        x12 = x1 + x4*q2
         x13 = x3 - x5
         x14 = (x10 + x7)**(-1.0)
         x15 = x11*x14
@@ -291,7 +291,7 @@ def _observables(t, y, p, out):
         out[6] = x14*x6
         out[7] = x14*x2
         out[8] = x15
-        out[9] = (1/2)*I1*(omega1*omega1) + (1/2)*I2*(omega2*omega2) + (1/2)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15)
+        out[9] = ((1/2)*I1)*(omega1*omega1) + ((1/2)*I2)*(omega2*omega2) + ((1/2)*I3)*(omega3*omega3) + (M*g)*(cz*x15 + cx*x16 + cy*x17)
         out[10] = x15*x20 + x16*x18 + x17*x19
         out[11] = x20
         out[12] = x16
