@@ -135,29 +135,27 @@ def reference_scene(cfg, fams) -> dict:
     derive.simulate(data)  # derive, compile (or load) once: the timing is of a warm call
     ours_call = lambda: derive.simulate(data)  # noqa: E731
     res = ours_call()
-    own_call, own_error = None, None
-    try:  # the same call's C alone (init, solve, outputs; inputs prepared): the ratio's ceiling
-        from . import bench_internals as bi
+    # The same call's C alone (init, solve, outputs; inputs prepared): the ratio's ceiling; and
+    # the output map alone, its share of that C. Timed in turns with the whole call, so that
+    # their differences mean something.
+    parts, errors = {}, {}
+    for key, make in (("own_call", "own_batch_call"), ("output_map", "output_map_call")):
+        try:
+            from . import bench_internals as bi
 
-        own_call = bi.own_batch_call([data])
-    except Exception as exc:  # noqa: BLE001
-        own_error = f"{type(exc).__name__}: {exc}"
+            arg = [data] if key == "own_call" else data
+            parts[key] = getattr(bi, make)(arg)
+        except Exception as exc:  # noqa: BLE001
+            errors[f"{key}_error"] = f"{type(exc).__name__}: {exc}"
+    own_call = parts.get("own_call")
     k = max(1, int(0.02 / B.timed(ours_call, 3)[0]))
-    t_ours, *t_own = B.interleaved([ours_call] + ([own_call] if own_call else []), 0,
-                                   blocks=max(3, cfg.ref_repeats), counts=[k, k])
+    t_ours, *t_parts = B.interleaved([ours_call, *parts.values()], 0, blocks=max(3, cfg.ref_repeats),
+                                     counts=[k] * (1 + len(parts)))
     ours = {"time": t_ours, "error": B.axis_error(res.axis, ref), "nfev": int(res.nfev),
-            "method": res.method, "formulation": res.formulation, "rtol": rtol}
-    if t_own:  # timed in turns with the whole call: their difference is the Python around it
-        ours.update(own_call=t_own[0], overhead=t_ours - t_own[0])
-    else:
-        ours["own_call_error"] = own_error
-    try:
-        from . import bench_internals as bi
-
-        ours["output_map"] = B.interleaved([bi.output_map_call(data)], 0, blocks=max(3, cfg.ref_repeats),
-                                           counts=[k])[0]
-    except Exception as exc:  # noqa: BLE001
-        ours["output_map_error"] = f"{type(exc).__name__}: {exc}"
+            "method": res.method, "formulation": res.formulation, "rtol": rtol,
+            **dict(zip(parts, t_parts)), **errors}
+    if "own_call" in ours:  # the Python around the C call
+        ours["overhead"] = t_ours - ours["own_call"]
 
     rows = []
     prob = bc.problem(data, "euler-angles", "reference")
