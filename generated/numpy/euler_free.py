@@ -26,10 +26,10 @@ NP = 3
 NOBS = 5
 
 #: A long batch is evaluated in blocks of BLOCK states: the temporaries of one block (a few
-#: dozen arrays of BLOCK doubles, 64 KiB each) stay in the CPU cache, where those of a whole
-#: batch of 10^5 states stream through memory (about twice as slow). Every operation is
-#: elementwise, so the values are the same, bit for bit.
-BLOCK = 8192
+#: dozen arrays of BLOCK doubles, 128 KiB each) stay in the CPU cache, where those of a whole
+#: batch of 10^5 states (tens of MB) depend on memory bandwidth: up to twice as slow when
+#: other work shares it. Every operation is elementwise: the same values, bit for bit.
+BLOCK = 16384
 
 
 def _blocks(body, rows, t, y, p):
