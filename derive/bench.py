@@ -50,6 +50,7 @@ from tqdm import tqdm
 
 from . import bench_contenders as bc
 from .errors import IntegrationError
+from .scene import FIXED_STEP_METHODS, MIN_RTOL  # noqa: F401 - MIN_RTOL: B.MIN_RTOL for the bench
 
 REPO = Path(__file__).resolve().parent.parent
 BENCH_SOURCES = bc.BENCH_SOURCES
@@ -62,21 +63,10 @@ ERROR_LEVELS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12)
 ATOL_RATIO = 1e-2
 #: Errors below this are rounding noise: a fixed-step sweep stops refining there.
 ERROR_FLOOR = 1e-13
-#: The smallest rtol a scene accepts (100 machine epsilons).
-MIN_RTOL = 100 * np.finfo(float).eps
 
 ADAPTIVE = ("dop853",)
-def _fixed_step_methods() -> tuple[str, ...]:
-    """The fixed-step methods a scene can name (the method registry), e.g. rk4, gauss4/6, splittings."""
-    try:
-        from .scene import FIXED_STEP_METHODS
-
-        return tuple(FIXED_STEP_METHODS)
-    except ImportError:
-        return ("rk4", "gauss4", "gauss6")
-
-
-FIXED = _fixed_step_methods()
+#: The fixed-step methods a scene can name (the method registry: rk4, gauss4/6, the splittings).
+FIXED = tuple(FIXED_STEP_METHODS)
 #: scene file stem -> the baseline formulations the contenders get: Euler angles for symmetric
 #: tops, quaternion + Euler's equations for any body; where the axis passes near a pole (or both
 #: are natural), both, and each contender's best counts. Ours run in every formulation the scene

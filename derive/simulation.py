@@ -216,6 +216,12 @@ def _integrals_of(scene: Scene):
 _INTEGRALS: dict = {}
 
 
+def _clear_of_pole(sin_beta, rtol):
+    """The rule: eps/sin²β, the relative error of q̈ there, within the tolerance (scalars or
+    arrays)."""
+    return sin_beta * sin_beta >= _EPS / rtol
+
+
 def _check_pole(desc, t, beta, rtol):
     """The Euler-angle equations divide by sin β: q̈ has relative error ~ eps/sin²β. Refuse a
     trajectory whose closest approach to a pole made that larger than the tolerance.
@@ -227,11 +233,11 @@ def _check_pole(desc, t, beta, rtol):
     lo, hi = float(beta.min()), float(beta.max())
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return  # _result names the non-finite output
-    if min(math.sin(lo), math.sin(hi)) ** 2 >= _EPS / rtol:
+    if _clear_of_pole(min(math.sin(lo), math.sin(hi)), rtol):
         return
     s = np.abs(np.sin(beta))
     k = int(s.argmin())
-    if s[k] ** 2 < _EPS / rtol:
+    if not _clear_of_pole(s[k], rtol):
         raise IntegrationError(f"t = {t[k]:.6g}: coordinate singularity of the Euler-angle formulation "
                                f"(|sin beta| = {s[k]:.3g}); use formulation = \"quaternion\" or \"auto\"")
 
@@ -348,8 +354,7 @@ def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:
     here (the C call checked them; a NaN would make its row a suspect anyway)."""
     if not REGISTRY[desc.formulation].pole_loss:
         return np.zeros(len(betas), dtype=bool)
-    s = np.minimum(np.sin(betas.min(axis=1)), np.sin(betas.max(axis=1)))
-    return ~(s * s >= _EPS / rtol)
+    return ~_clear_of_pole(np.minimum(np.sin(betas.min(axis=1)), np.sin(betas.max(axis=1))), rtol)
 
 
 def _solve_scipy(desc, method, inputs, p, t, sc):

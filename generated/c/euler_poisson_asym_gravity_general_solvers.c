@@ -209,8 +209,8 @@ int euler_poisson_asym_gravity_general_outputs_at(long n_out, const double *t_ou
 
 /* euler_poisson_asym_gravity_general_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
  * with st->t_fail the first such sample's time and st->fail_index the output's column (the
- * arrays are written in full either way). One branch-free pass over the arrays, which the
- * compiler vectorises; the first bad entry is looked for only when there is one. */
+ * arrays are written in full either way). One branch-free pass over the arrays; the first
+ * bad entry is looked for only when there is one. */
 int euler_poisson_asym_gravity_general_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
                         double *out, derive_stats *st)
 {
