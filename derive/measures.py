@@ -23,7 +23,9 @@ Contract of an entry (:class:`Measure`):
    (the output map at each step end; the dense output — DOP853's three dense stages, counted
    in ``nfev`` — only on the steps a search reads: the two steps around a discrete extremum of
    beta, the first and the last step, the steps of the first tilt and the first flip);
-   ``flip_time`` and ``tilt_time`` locate those times. A sweep asking only for ``nfev`` and
+   ``extrema`` runs the searches for beta's extrema (and keeps each step for the next one's
+   search), so a sweep without a beta measure forms no dense output for them; ``flip_time``
+   and ``tilt_time`` locate those times. A sweep asking only for ``nfev`` and
    ``final_state`` runs the plain loop's work. ``dense_always`` (no measure sets it) forms the
    dense output on every step, as before the lazy choice: the tests check that no value moves.
 
@@ -70,7 +72,7 @@ from .integrable import C_INTEGRALS, C_PARAMS, classify_values, relabel_params
 SLOTS = ("beta_max", "beta_min", "energy_drift", "p_alpha_drift", "p_gamma_drift", "flips",
          "time_to_flip", "time_to_tilt", "integral_drift")
 #: config[] of the compiled loop: the option values and the work flags a measure ``needs``.
-CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3, "dense_always": 4}
+CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3, "dense_always": 4, "extrema": 5}
 #: The outputs the compiled loop reads (by name; their indices come from the model's outputs).
 READS = ("beta", "energy", "omega2", "p_alpha", "p_gamma", "L1", "L2", "L3", "n1", "n2", "n3")
 #: The outputs ``final_state`` reports at t_end.
@@ -86,7 +88,7 @@ class Measure:
     slot: str | None = None
     formula: object = None  # reads == "slots": {slot: (N,) array} -> (N,) array
     options: dict = field(default_factory=dict)
-    needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "flip_time", "tilt_time"
+    needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "extrema", "flip_time", ...
     choices: dict = field(default_factory=dict)  # {option: allowed names} of a named option
 
     @property
@@ -96,12 +98,12 @@ class Measure:
 
 REGISTRY: dict[str, Measure] = {m.name: m for m in (
     Measure("beta_max", "rad", "largest nutation angle beta, located on the dense output", "slot",
-            "beta_max", needs=("steps",)),
+            "beta_max", needs=("steps", "extrema")),
     Measure("beta_min", "rad", "smallest nutation angle beta, located on the dense output", "slot",
-            "beta_min", needs=("steps",)),
+            "beta_min", needs=("steps", "extrema")),
     Measure("nutation", "rad", "beta_max - beta_min: the nutation amplitude (a top released at a "
             "turning point)", "slots", formula=lambda r: r["beta_max"] - r["beta_min"],
-            needs=("steps",)),
+            needs=("steps", "extrema")),
     Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift",
             needs=("steps",)),
     Measure("p_alpha_drift", "kg m^2/s", "max over the steps of |p_alpha - p_alpha(0)|", "slot",
@@ -114,7 +116,7 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
             "slot", "time_to_flip", needs=("steps", "flip_time")),
     Measure("time_to_tilt", "s", "first time beta exceeds the option angle (NaN: never)", "slot",
             "time_to_tilt", options={"angle": (math.pi / 2, "rad", "the tilt threshold")},
-            needs=("steps", "tilt_time")),
+            needs=("steps", "tilt_time", "extrema")),  # "rose and fell back": a maximum's search
     Measure("integral_drift", "", "max over the steps of |I - I0| / S for the extra integral I of "
             "the point's integrable case (|L|^2, L3 = p_gamma, L.r_c, Kovalevskaya's K, "
             "Goryachev-Chaplygin's G), S its size at t = 0 (NaN: no extra integral)", "slot",

@@ -115,7 +115,7 @@ def _flatten(table: Mapping, prefix: str, leaf) -> dict:
     return out
 
 
-def _variable_keys(raw: dict) -> dict:
+def _variable_keys() -> dict:
     """{dotted key: (table, key, index or None, unit)} of everything a point may vary."""
     from . import effects
 
@@ -134,12 +134,12 @@ def _variable_keys(raw: dict) -> dict:
 
 
 def unit_of(key: str) -> str:
-    found = _variable_keys({}).get(key)
+    found = _variable_keys().get(key)
     return found[3] if found else ""
 
 
 def _set(data: dict, key: str, value) -> None:
-    table, name, index, _ = _variable_keys(data)[key]
+    table, name, index, _ = _variable_keys()[key]
     t = data.setdefault(table, {})
     if index is None:
         t[name] = value
@@ -208,7 +208,7 @@ def load(spec) -> Spec:
 
 
 def _points(source, data, raw, base):
-    variable = _variable_keys(raw)
+    variable = _variable_keys()
     if ("vary" in data) == ("random" in data):
         _fail(source, "vary", "give [vary] (a grid) or [random] (random points), one of them")
     if "vary" in data:
@@ -631,12 +631,12 @@ class SweepResult:
         return pd.DataFrame(cols)
 
 
-def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
-          processes=None, add_measure=None) -> SweepResult:
+def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
+          add_measure=None) -> SweepResult:
     """Run a sweep (a file path or a dict shaped like one). ``workers``: start a dask
     LocalCluster with that many worker processes; ``scheduler``: the address of a running Dask
-    scheduler; neither: the local engine (``processes``, default one per core). ``measures``
-    replaces the file's list. ``progress``: a tqdm bar on stderr (None: when stderr is a TTY)."""
+    scheduler; neither: the local engine (``processes``, default one per core). ``add_measure``:
+    a measure (or one of its columns) added to the file's list. ``progress``: a tqdm bar on stderr (None: when stderr is a TTY)."""
     from . import catalogue
     from .simulation import _explain
 
@@ -645,12 +645,6 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, measures=None,
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise SceneError(f"--workers: must be a positive integer, got {workers!r}")
     sp = load(spec)
-    if measures:
-        names = (measures,) if isinstance(measures, str) else tuple(measures)
-        for n in names:
-            if n not in ms.REGISTRY:
-                raise SceneError(f"{sp.source}: measure: unknown measure {n!r} (one of {', '.join(ms.REGISTRY)})")
-        sp.measures = tuple(dict.fromkeys(names))
     if add_measure is not None:  # the column to plot: a measure's (final_beta) or a measure
         name = ms.owner(add_measure)
         if name is None:
@@ -764,8 +758,11 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
 
     from scipy.integrate import solve_ivp
 
+    from .bench_contenders import baselines
+    from .bench_targets import REFERENCE, reference_data
+
     def spec(num, seed=1):
-        scene = _reference_scene()
+        scene = reference_data(t_end)
         scene["simulate"] = {"t_end": t_end, "rtol": rtol, "atol": 1e-12}
         return {"scene": scene,
                 "random": {"n": num, "seed": seed, "initial": {"beta": {"low": 0.3, "high": 1.2}}},
@@ -776,22 +773,16 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
     r = sweep(spec(n), processes=1)
     per_traj = (time.perf_counter() - t0) / n
 
-    I1, I3, mgl = 1.0, 0.5, 1.0
-
-    def rhs(t, q):
-        a, b, g, ad, bd, gd = q
-        sb, cb = math.sin(b), math.cos(b)
-        pg = I3 * (ad * cb + gd)
-        add = (pg * bd - 2.0 * I1 * ad * bd * cb) / (I1 * sb)
-        bdd = (I1 * ad * ad * sb * cb - pg * ad * sb + mgl * sb) / I1
-        gdd = -add * cb + ad * bd * sb
-        return [ad, bd, gd, add, bdd, gdd]
+    # the bench's hand-written plain-Python rhs (benchmarks/scipy_baselines.py), at REFERENCE's numbers
+    body, grav = REFERENCE["body"], REFERENCE["gravity"]
+    rhs = baselines().euler_top_rhs(body["I1"], body["I3"], grav["M"] * grav["g"] * grav["l"])
 
     betas = r.params["initial.beta"][:scipy_n]
     t0 = time.perf_counter()
     for b0 in betas:
-        solve_ivp(rhs, (0.0, t_end), [0.0, b0, 0.0, -0.4, 0.3, 6.0], method="DOP853", rtol=rtol,
-                  atol=1e-12)
+        ini = REFERENCE["initial"]
+        y0 = [ini["alpha"], b0, ini["gamma"], ini["alpha_dot"], ini["beta_dot"], ini["gamma_dot"]]
+        solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=1e-12)
     per_scipy = (time.perf_counter() - t0) / len(betas)
     out = {"per_traj_sweep": per_traj, "per_traj_scipy": per_scipy,
            "speedup": per_scipy / per_traj, "nfev_mean": float(np.mean(r.measures["nfev"]))}
@@ -825,31 +816,8 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
 
 def _warm_worker():
     """Load the reference model's measured library in this process (a Dask worker)."""
-    sp = load({"scene": _reference_scene(), "vary": {"initial": {"beta": {"values": [0.8]}}}})
+    from .bench_targets import reference_data
+
+    sp = load({"scene": reference_data(1.0), "vary": {"initial": {"beta": {"values": [0.8]}}}})
     run_chunk(sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-8, 1e-12, 0.0, 1000),
               ms.config_of(ms.DEFAULT))
-
-
-#: The reference heavy top of the benchmarks (issue 8), as a scene file would say it.
-_REFERENCE_SCENE = """
-[body]
-I1 = 1.0
-I3 = 0.5
-[gravity]
-M = 1.0
-g = 1.0
-l = 1.0
-[initial]
-alpha = 0.0
-beta = 0.8
-gamma = 0.0
-alpha_dot = -0.4
-beta_dot = 0.3
-gamma_dot = 6.0
-[simulate]
-t_end = 1.0
-"""
-
-
-def _reference_scene() -> dict:
-    return tomllib.loads(_REFERENCE_SCENE)

@@ -56,6 +56,25 @@ def _chunk(spec, dense_always: bool):
                      (s.rtol, s.atol, 0.0, s.max_steps), config, rows)
 
 
+def test_a_sweep_without_beta_measures_runs_no_extremum_search():
+    """energy_drift alone costs what the plain loop costs (no dense output for beta's turning
+    points, whose search nothing reads), and reads the same values as beside beta_max."""
+    def run(names):
+        spec = copy.deepcopy(TOP_SWEEP)
+        spec["measure"] = {"names": names}
+        sp = load(spec)
+        s = sp.scene.simulate
+        return run_chunk(sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, s.t_end]),
+                         (s.rtol, s.atol, 0.0, s.max_steps), ms.config_of(sp.measures, sp.options),
+                         ms.integral_rows(sp.general, sp.damping))
+
+    plain, drift, both = run(["nfev"]), run(["energy_drift", "nfev"]), run(["beta_max", "energy_drift", "nfev"])
+    assert np.array_equal(drift[2]["nfev"], plain[2]["nfev"])
+    assert (both[2]["nfev"] > drift[2]["nfev"]).all()  # the searches form dense outputs
+    e = ms.SLOTS.index("energy_drift")
+    assert np.array_equal(drift[0][:, e], both[0][:, e])
+
+
 @pytest.mark.parametrize("spec", [TOP_SWEEP, RACKET_SWEEP], ids=["heavy-top", "tennis-racket"])
 def test_lazy_dense_output_changes_no_value(spec):
     """Forming the dense output only on the steps a search reads gives every measure bit for bit

@@ -52,8 +52,8 @@ def test_random_points_follow_the_seed():
 
 def test_inputs_and_final_state_match_simulate_bit_for_bit():
     """The arrays built without a scene per point give what derive.simulate gives: the outputs at
-    t_end of the measured run equal the plain run's last sample (the dense output formed on every
-    step does not change the steps)."""
+    t_end of the measured run equal the plain run's last sample (measuring does not change the
+    steps)."""
     spec = _spec(measures=["final_state", "nfev"])
     res = derive.sweep(spec, processes=1)
     for i in (0, 5, 11):
@@ -85,11 +85,10 @@ def test_beta_extrema_against_exact_turning_points():
         assert not ex.info["mirrored"]
         turning = [2 * math.asin(math.sqrt(y)) for y in ex.info["y_roots"][:2]]
         worst = max(worst, abs(res.measures["beta_max"][i] - max(turning)),
-                    abs(res.measures["beta_min"][i] - min(turning)))
+                    abs(res.measures["beta_min"][i] - min(turning)),
+                    abs(res.measures["nutation"][i] - (max(turning) - min(turning))) / 2)
         # the largest *sample* of a 1001-point output is visibly worse: the search matters
     assert worst < 1e-7
-    assert np.array_equal(res.measures.get("nutation", res.measures["beta_max"] - res.measures["beta_min"]),
-                          res.measures["beta_max"] - res.measures["beta_min"])
 
 
 def test_time_to_tilt_and_flip_are_located_on_the_dense_output():
@@ -213,8 +212,8 @@ def test_cli_writes_parquet_and_map_and_refuses_bad_files(tmp_path):
 
 
 def test_measure_registry_and_strict_c(tmp_path):
-    """Every measure has a unit string and a source; the measures unit compiles cleanly under
-    the project's strict flags."""
+    """The registry holds the documented measures; the measures unit compiles cleanly under the
+    project's strict flags."""
     assert set(REGISTRY) >= {"beta_max", "beta_min", "energy_drift", "nfev", "final_state", "flips",
                              "time_to_tilt"}
     gcc = shutil.which("gcc")
