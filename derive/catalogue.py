@@ -169,9 +169,9 @@ _absent: set = set()
 
 
 def _cache_folder(name: str, key, root: Path | None = None) -> Path:
-    from .cbuild import cache_root
+    from .cbuild import MODELS, cache_root
 
-    return (root or cache_root()) / "models" / f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
+    return (root or cache_root()) / MODELS / f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
 
 
 @functools.lru_cache(maxsize=1)

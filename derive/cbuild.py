@@ -22,8 +22,7 @@ The cache heals itself:
 No ``-ffast-math``: the solvers rely on IEEE semantics (non-finite checks, compensated
 summation). ``-std=c99`` also keeps GCC from contracting ``a*b + c`` into FMAs.
 ``-fno-math-errno`` changes no value (nothing reads errno): it lets GCC fuse sin and cos of one
-angle into one sincos call and inline sqrt, which takes the output map from ~105 to ~64 ns per
-sample on the heavy top.
+angle into one sincos call and inline sqrt.
 """
 from __future__ import annotations
 

@@ -759,7 +759,8 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
     from scipy.integrate import solve_ivp
 
     from .bench_contenders import baselines
-    from .bench_targets import REFERENCE, reference_data
+    from .bench_targets import reference_data
+    from .scene import load_scene
 
     def spec(num, seed=1):
         scene = reference_data(t_end)
@@ -773,15 +774,16 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
     r = sweep(spec(n), processes=1)
     per_traj = (time.perf_counter() - t0) / n
 
-    # the bench's hand-written plain-Python rhs (benchmarks/scipy_baselines.py), at REFERENCE's numbers
-    body, grav = REFERENCE["body"], REFERENCE["gravity"]
-    rhs = baselines().euler_top_rhs(body["I1"], body["I3"], grav["M"] * grav["g"] * grav["l"])
+    # the bench's hand-written plain-Python rhs (benchmarks/scipy_baselines.py), at the reference
+    # scene's numbers
+    ref = load_scene(reference_data(t_end))
+    v, ini = ref.param_values(), ref.initial
+    rhs = baselines().euler_top_rhs(v["I1"], v["I3"], v["M"] * v["g"] * v["l"])
 
     betas = r.params["initial.beta"][:scipy_n]
     t0 = time.perf_counter()
     for b0 in betas:
-        ini = REFERENCE["initial"]
-        y0 = [ini["alpha"], b0, ini["gamma"], ini["alpha_dot"], ini["beta_dot"], ini["gamma_dot"]]
+        y0 = [ini.alpha, b0, ini.gamma, ini.alpha_dot, ini.beta_dot, ini.gamma_dot]
         solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=1e-12)
     per_scipy = (time.perf_counter() - t0) / len(betas)
     out = {"per_traj_sweep": per_traj, "per_traj_scipy": per_scipy,

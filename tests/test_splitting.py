@@ -52,11 +52,8 @@ def test_composition_weights_satisfy_their_order_conditions():
             assert abs(float(sum(x**3 for x in g))) < 1e-24
         if c.order >= 6:
             assert abs(float(sum(x**5 for x in g))) < 1e-24
-    for m in splitting.METHODS.values():
-        ops = m.scheme.ops()
-        for kind in ("free", "kick"):
-            assert abs(sum(c for k, c in ops if k == kind) - 1) < 1e-24
-        assert ops == ops[::-1] and int(m.name[-1]) == m.order
+    for m in splitting.METHODS.values():  # (consistency and symmetry: Splitting's constructor)
+        assert int(m.name[-1]) == m.order
     # A composition is the BAB splitting with the adjacent half kicks merged.
     ops = splitting.COMPOSITIONS["triple-jump"].ops()
     g = splitting.COMPOSITIONS["triple-jump"].gammas
@@ -294,7 +291,7 @@ def test_geometric_invariants_at_round_off_for_large_steps(splitters, symmetric,
     assert st["status"] == 0 and st["nstep"] == 200
     L, n, e = splitting.angular_momentum(sp.model, p, y), y[:, 3:6], y[:, 6:]
     # Round-off only: up to 1800 rotations (200 steps x 9 stages) at a fraction of an ulp each.
-    tol = 4e-14
+    tol = 2e-14
     assert np.abs(np.linalg.norm(n, axis=1) - 1).max() < tol
     assert np.abs(np.linalg.norm(e, axis=1) - 1).max() < tol
     assert np.abs(np.sum(n * e, axis=1)).max() < tol
@@ -343,12 +340,12 @@ def test_batch_is_bitwise_the_single_runs_and_bad_input_is_reported(splitters):
 
 
 def test_bench_finds_settings_that_meet_the_target():
-    # The measurement the bench reports (timings are reported, never asserted).
+    # Only that the scan finds, within its time budget, a setting of each method whose run meets
+    # the target (the row reports that run); timings are reported, never asserted.
     r = splitting.bench_energy("lagrange", periods=20, target=1e-6, methods=("splitting4", "dop853"),
                                repeat=1, samples=97, measure="axis")
     for m in ("splitting4", "dop853"):
-        assert r[m] is not None and r[m]["error"] <= 1e-6 and r[m]["seconds"] > 0
-    assert r["ratio_dop853"] > 0
+        assert r[m] is not None and r[m]["error"] <= 1e-6
     with pytest.raises(ValueError, match="unknown benchmark case"):
         splitting.bench_case("spinning-plate")
 

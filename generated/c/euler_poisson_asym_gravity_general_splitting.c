@@ -32,14 +32,8 @@
 
 /* Compiled in one translation unit after euler_poisson_asym_gravity_general_solvers.c (the kernel build), which then
  * defines DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE, the splitting solvers poll the same interrupt flag once per
- * step (derive_euler_poisson_asym_gravity_general_stop; DERIVE_INTERRUPTED) and get the whole-simulation drivers
- * euler_poisson_asym_gravity_general_simulate[_checked|_batch]_<method> like the other methods. Compiled alone, they are
- * the solvers only. */
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
-#define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SPLIT_STOP() (derive_euler_poisson_asym_gravity_general_stop)
-#else
-#define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SPLIT_STOP() 0
-#endif
+ * step (derive_euler_poisson_asym_gravity_general_stop) and get the whole-simulation drivers euler_poisson_asym_gravity_general_simulate[_checked|_batch]_<method>
+ * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* The body: principal moments about the pivot, M g and the centre of mass. */
 typedef struct {
@@ -370,8 +364,8 @@ int euler_poisson_asym_gravity_general_solve_splitting2(const double *y0, const 
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
+            if (derive_euler_poisson_asym_gravity_general_stop)
                 return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -412,25 +406,23 @@ int euler_poisson_asym_gravity_general_solve_batch_splitting2(long n_batch, cons
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_gravity_general_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_gravity_general_solvers.c's drivers: y = euler_poisson_asym_gravity_general_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_gravity_general_pole_clear all the same. */
 int euler_poisson_asym_gravity_general_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_gravity_general_simulate_checked_splitting2(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_gravity_general_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_gravity_general_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -439,21 +431,17 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting2(const double 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_gravity_general_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_gravity_general_first_nonfinite(y_work, euler_poisson_asym_gravity_general_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_gravity_general_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -470,13 +458,12 @@ int euler_poisson_asym_gravity_general_simulate_batch_splitting2(long n_batch, c
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_gravity_general_simulate_checked_splitting2(ins + b * euler_poisson_asym_gravity_general_NIN, ps + b * euler_poisson_asym_gravity_general_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_gravity_general_NY,
+                out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -538,8 +525,8 @@ int euler_poisson_asym_gravity_general_solve_splitting4(const double *y0, const 
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
+            if (derive_euler_poisson_asym_gravity_general_stop)
                 return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -579,25 +566,23 @@ int euler_poisson_asym_gravity_general_solve_batch_splitting4(long n_batch, cons
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_gravity_general_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_gravity_general_solvers.c's drivers: y = euler_poisson_asym_gravity_general_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_gravity_general_pole_clear all the same. */
 int euler_poisson_asym_gravity_general_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_gravity_general_simulate_checked_splitting4(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_gravity_general_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_gravity_general_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -606,21 +591,17 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting4(const double 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_gravity_general_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_gravity_general_first_nonfinite(y_work, euler_poisson_asym_gravity_general_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_gravity_general_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -637,13 +618,12 @@ int euler_poisson_asym_gravity_general_simulate_batch_splitting4(long n_batch, c
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_gravity_general_simulate_checked_splitting4(ins + b * euler_poisson_asym_gravity_general_NIN, ps + b * euler_poisson_asym_gravity_general_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_gravity_general_NY,
+                out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -707,8 +687,8 @@ int euler_poisson_asym_gravity_general_solve_splitting6(const double *y0, const 
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
+            if (derive_euler_poisson_asym_gravity_general_stop)
                 return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -749,25 +729,23 @@ int euler_poisson_asym_gravity_general_solve_batch_splitting6(long n_batch, cons
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_gravity_general_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_gravity_general_solvers.c's drivers: y = euler_poisson_asym_gravity_general_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_gravity_general_pole_clear all the same. */
 int euler_poisson_asym_gravity_general_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_gravity_general_simulate_checked_splitting6(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_gravity_general_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_gravity_general_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -776,21 +754,17 @@ int euler_poisson_asym_gravity_general_simulate_checked_splitting6(const double 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_gravity_general_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_gravity_general_first_nonfinite(y_work, euler_poisson_asym_gravity_general_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_gravity_general_split_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_gravity_general_stats_init(st);
+        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_gravity_general_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -807,13 +781,12 @@ int euler_poisson_asym_gravity_general_simulate_batch_splitting6(long n_batch, c
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_gravity_general_simulate_checked_splitting6(ins + b * euler_poisson_asym_gravity_general_NIN, ps + b * euler_poisson_asym_gravity_general_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_gravity_general_NY,
+                out + b * n_out * euler_poisson_asym_gravity_general_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }

@@ -32,14 +32,8 @@
 
 /* Compiled in one translation unit after euler_poisson_asym_solvers.c (the kernel build), which then
  * defines DERIVE_EULER_POISSON_ASYM_SIMULATE, the splitting solvers poll the same interrupt flag once per
- * step (derive_euler_poisson_asym_stop; DERIVE_INTERRUPTED) and get the whole-simulation drivers
- * euler_poisson_asym_simulate[_checked|_batch]_<method> like the other methods. Compiled alone, they are
- * the solvers only. */
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-#define DERIVE_EULER_POISSON_ASYM_SPLIT_STOP() (derive_euler_poisson_asym_stop)
-#else
-#define DERIVE_EULER_POISSON_ASYM_SPLIT_STOP() 0
-#endif
+ * step (derive_euler_poisson_asym_stop) and get the whole-simulation drivers euler_poisson_asym_simulate[_checked|_batch]_<method>
+ * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* The body: principal moments about the pivot, M g and the centre of mass. */
 typedef struct {
@@ -349,8 +343,8 @@ int euler_poisson_asym_solve_splitting2(const double *y0, const double *p, const
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
+            if (derive_euler_poisson_asym_stop)
                 return derive_euler_poisson_asym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -383,25 +377,23 @@ int euler_poisson_asym_solve_batch_splitting2(long n_batch, const double *y0s, c
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_solvers.c's drivers: y = euler_poisson_asym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
 int euler_poisson_asym_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_simulate_checked_splitting2(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -410,21 +402,17 @@ int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_init(in, p, y_work)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_first_nonfinite(y_work, euler_poisson_asym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -441,13 +429,12 @@ int euler_poisson_asym_simulate_batch_splitting2(long n_batch, const double *ins
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_simulate_checked_splitting2(ins + b * euler_poisson_asym_NIN, ps + b * euler_poisson_asym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_NY,
+                out + b * n_out * euler_poisson_asym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -486,8 +473,8 @@ int euler_poisson_asym_solve_splitting4(const double *y0, const double *p, const
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
+            if (derive_euler_poisson_asym_stop)
                 return derive_euler_poisson_asym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -520,25 +507,23 @@ int euler_poisson_asym_solve_batch_splitting4(long n_batch, const double *y0s, c
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_solvers.c's drivers: y = euler_poisson_asym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
 int euler_poisson_asym_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_simulate_checked_splitting4(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -547,21 +532,17 @@ int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_init(in, p, y_work)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_first_nonfinite(y_work, euler_poisson_asym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -578,13 +559,12 @@ int euler_poisson_asym_simulate_batch_splitting4(long n_batch, const double *ins
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_simulate_checked_splitting4(ins + b * euler_poisson_asym_NIN, ps + b * euler_poisson_asym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_NY,
+                out + b * n_out * euler_poisson_asym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -623,8 +603,8 @@ int euler_poisson_asym_solve_splitting6(const double *y0, const double *p, const
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_ASYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
+            if (derive_euler_poisson_asym_stop)
                 return derive_euler_poisson_asym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -657,25 +637,23 @@ int euler_poisson_asym_solve_batch_splitting6(long n_batch, const double *y0s, c
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_asym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_asym_solvers.c's drivers: y = euler_poisson_asym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
 int euler_poisson_asym_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_asym_simulate_checked_splitting6(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_asym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -684,21 +662,17 @@ int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, 
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_init(in, p, y_work)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_first_nonfinite(y_work, euler_poisson_asym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_asym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_split_stats_init(st);
-        return derive_euler_poisson_asym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_asym_stats_init(st);
+        return derive_euler_poisson_asym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_asym_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_asym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -715,13 +689,12 @@ int euler_poisson_asym_simulate_batch_splitting6(long n_batch, const double *ins
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_asym_simulate_checked_splitting6(ins + b * euler_poisson_asym_NIN, ps + b * euler_poisson_asym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_asym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_asym_NY,
+                out + b * n_out * euler_poisson_asym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_asym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }

@@ -28,14 +28,8 @@
 
 /* Compiled in one translation unit after euler_poisson_sym_solvers.c (the kernel build), which then
  * defines DERIVE_EULER_POISSON_SYM_SIMULATE, the splitting solvers poll the same interrupt flag once per
- * step (derive_euler_poisson_sym_stop; DERIVE_INTERRUPTED) and get the whole-simulation drivers
- * euler_poisson_sym_simulate[_checked|_batch]_<method> like the other methods. Compiled alone, they are
- * the solvers only. */
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-#define DERIVE_EULER_POISSON_SYM_SPLIT_STOP() (derive_euler_poisson_sym_stop)
-#else
-#define DERIVE_EULER_POISSON_SYM_SPLIT_STOP() 0
-#endif
+ * step (derive_euler_poisson_sym_stop) and get the whole-simulation drivers euler_poisson_sym_simulate[_checked|_batch]_<method>
+ * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* The body: principal moments about the pivot, M g and the centre of mass. */
 typedef struct {
@@ -190,8 +184,8 @@ int euler_poisson_sym_solve_splitting2(const double *y0, const double *p, const 
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_SYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
+            if (derive_euler_poisson_sym_stop)
                 return derive_euler_poisson_sym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -224,25 +218,23 @@ int euler_poisson_sym_solve_batch_splitting2(long n_batch, const double *y0s, co
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_sym_solvers.c's drivers: y = euler_poisson_sym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_pole_clear all the same. */
 int euler_poisson_sym_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_sym_simulate_checked_splitting2(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_sym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_sym_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -251,21 +243,17 @@ int euler_poisson_sym_simulate_checked_splitting2(const double *in, double *p, c
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_init(in, p, y_work)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y_work, euler_poisson_sym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_sym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_sym_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -282,13 +270,12 @@ int euler_poisson_sym_simulate_batch_splitting2(long n_batch, const double *ins,
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_sym_simulate_checked_splitting2(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_sym_NY,
+                out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -327,8 +314,8 @@ int euler_poisson_sym_solve_splitting4(const double *y0, const double *p, const 
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_SYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
+            if (derive_euler_poisson_sym_stop)
                 return derive_euler_poisson_sym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -361,25 +348,23 @@ int euler_poisson_sym_solve_batch_splitting4(long n_batch, const double *y0s, co
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_sym_solvers.c's drivers: y = euler_poisson_sym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_pole_clear all the same. */
 int euler_poisson_sym_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_sym_simulate_checked_splitting4(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_sym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_sym_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -388,21 +373,17 @@ int euler_poisson_sym_simulate_checked_splitting4(const double *in, double *p, c
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_init(in, p, y_work)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y_work, euler_poisson_sym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_sym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_sym_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -419,13 +400,12 @@ int euler_poisson_sym_simulate_batch_splitting4(long n_batch, const double *ins,
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_sym_simulate_checked_splitting4(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_sym_NY,
+                out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
@@ -464,8 +444,8 @@ int euler_poisson_sym_solve_splitting6(const double *y0, const double *p, const 
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
-            if (DERIVE_EULER_POISSON_SYM_SPLIT_STOP())
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
+            if (derive_euler_poisson_sym_stop)
                 return derive_euler_poisson_sym_split_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
@@ -498,25 +478,23 @@ int euler_poisson_sym_solve_batch_splitting6(long n_batch, const double *y0s, co
                 y_out + b * n_out * 9, st + b);
         if (rc && !status)
             status = rc;
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE) && defined(DERIVE_INTERRUPTED)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
             return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
 #endif
     }
     return status;
 }
-#if defined(DERIVE_EULER_POISSON_SYM_SIMULATE)
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
 
-/* One whole simulation, as euler_poisson_sym_solvers.c's drivers: y = euler_poisson_sym_init(in, p), the solve into
- * y_work (n_out*NY), every output into out (NOBS*n_out, output-major). */
+/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
+ * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_pole_clear all the same. */
 int euler_poisson_sym_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
         double h, double *y_work, double *out, derive_stats *st)
 {
     return euler_poisson_sym_simulate_checked_splitting6(in, p, t_out, n_out, h, 0, y_work, out, st);
 }
 
-/* The Euler-Poisson state has no pole: pole_check is accepted and passed to euler_poisson_sym_pole_clear
- * like the other methods' drivers. */
 int euler_poisson_sym_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -525,21 +503,17 @@ int euler_poisson_sym_simulate_checked_splitting6(const double *in, double *p, c
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_init(in, p, y_work)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_NONFINITE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y_work, euler_poisson_sym_NY));
     }
-#ifdef DERIVE_RANGE
     if (pole_check && !euler_poisson_sym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_split_stats_init(st);
-        return derive_euler_poisson_sym_split_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-#else
-    (void)pole_check;
-#endif
     rc = euler_poisson_sym_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
         rc = euler_poisson_sym_outputs_checked(n_out, t_out, y_work, p, out, st);
@@ -556,13 +530,12 @@ int euler_poisson_sym_simulate_batch_splitting6(long n_batch, const double *ins,
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
         rc = euler_poisson_sym_simulate_checked_splitting6(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
-                n_out, h, pole_check, y_work + b * n_out * 9, out + b * n_out * euler_poisson_sym_NOBS, st + b);
+                n_out, h, pole_check, y_work + b * n_out * euler_poisson_sym_NY,
+                out + b * n_out * euler_poisson_sym_NOBS, st + b);
         if (rc && !status)
             status = rc;
-#ifdef DERIVE_INTERRUPTED
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
             return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
-#endif
     }
     return status;
 }
