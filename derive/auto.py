@@ -31,7 +31,7 @@ def _known_cost(key) -> float | None:
     return None if desc is None else desc.cost
 
 
-def _has_routh(symmetric: bool, effects) -> bool:
+def has_routh(symmetric: bool, effects) -> bool:
     """A symmetric body under axisymmetric conservative effects: p_α, p_γ are conserved and the
     Routh reduction bounds β."""
     return symmetric and all(e.conservative and e.axisymmetric for e in fx.lookup(effects))
@@ -67,7 +67,7 @@ def _structural(symmetric, effects, method, version) -> tuple:
     that the method can run, each with its pole mode; a singular one only with a Routh
     reduction."""
     out = []
-    routh = _has_routh(symmetric, effects)
+    routh = has_routh(symmetric, effects)
     for name in _by_cost(symmetric, effects, version):
         if method_reason(method, name, effects):
             continue

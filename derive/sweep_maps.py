@@ -39,11 +39,9 @@ def _measure_label(name: str) -> str:
 def _heavy_top(scene):
     """(I1, I3, M g l, α̇₀) when the scene is a heavy symmetric top (a symmetric body whose
     effects are all conservative and axisymmetric, with M, g, l: the Lagrange top), else None."""
-    from . import effects
+    from .auto import has_routh
 
-    if scene is None or not scene.symmetric or not scene.initial.has_rates:
-        return None
-    if not all(e.conservative and e.axisymmetric for e in effects.lookup(scene.effects)):
+    if scene is None or not scene.initial.has_rates or not has_routh(scene.symmetric, scene.effects):
         return None
     v = scene.param_values()
     if not {"M", "g", "l"} <= set(v):

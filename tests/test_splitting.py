@@ -386,3 +386,40 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
     finally:
         guard(0)  # clears the flag
     assert sp.solve("splitting4", y_work[:9], p, t, 0.001)[1]["status"] == 0
+
+
+def test_carlson_integrals_in_c_against_mpmath():
+    """The C R_J (duplication with cancellation-free R_C(1, 1 + e) terms), R_C and R_F of
+    derive_elliptic.h against mpmath at 50 digits: small and large p, a zero argument, and the
+    R_C series / arctan / logarithm branches up to e -> -1."""
+    import ctypes
+
+    import mpmath
+
+    from derive.cbuild import DEFAULT_FLAGS, compile_library
+    from derive.render import GENERATED
+
+    harness = ('#include <math.h>\n#include "derive_elliptic.h"\n'
+               "double t_rj(double x, double y, double z, double p) { return derive_carlson_rj(x, y, z, p); }\n"
+               "double t_rf(double x, double y, double z) { return derive_carlson_rf(x, y, z); }\n"
+               "double t_rc1(double e, double ope) { return derive_carlson_rc1(e, ope); }\n")
+    lib = compile_library("derive_test_carlson", {
+        "derive_elliptic.h": (GENERATED / "c" / "derive_elliptic.h").read_text(),
+        "harness.c": harness}, "harness.c", list(DEFAULT_FLAGS))
+    for name, n in (("t_rj", 4), ("t_rf", 3), ("t_rc1", 2)):
+        getattr(lib, name).restype = ctypes.c_double
+        getattr(lib, name).argtypes = [ctypes.c_double] * n
+    with mpmath.workdps(50):  # not mp.dps: other tests share the process
+        _carlson_cases(lib, mpmath)
+
+
+def _carlson_cases(lib, mpmath):
+    for x, y, z, p in [(1.0, 2.0, 3.0, 0.5), (0.0, 1.0, 2.0, 1e-9), (0.3, 0.7, 1.1, 1.0 - 1e-12),
+                       (2.0, 3.0, 4.0, 1e3), (1e-6, 1.0, 1.0, 0.2), (0.5, 0.5, 4.0, 0.5)]:
+        want = float(mpmath.elliprj(x, y, z, p))
+        assert lib.t_rj(x, y, z, p) == pytest.approx(want, rel=4e-15), (x, y, z, p)
+        assert lib.t_rf(x, y, z) == pytest.approx(float(mpmath.elliprf(x, y, z)), rel=4e-15)
+    for e in (1e-4, -1e-4, 1e-3, -1e-3, 0.5, -0.5, 40.0, -1.0 + 1e-12):
+        ope = float(mpmath.mpf(1) + mpmath.mpf(e))
+        want = float(mpmath.elliprc(1, mpmath.mpf(1) + mpmath.mpf(e)))
+        assert lib.t_rc1(e, ope) == pytest.approx(want, rel=4e-15), e
