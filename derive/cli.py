@@ -15,15 +15,15 @@ import sys
 import warnings
 from pathlib import Path
 
-from .errors import CompilerError, IntegrationError, SceneError
+from derive.errors import CompilerError, IntegrationError, SceneError
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
 EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
 
 
 def _cmd_generate(args) -> int:
-    from . import codegen
-    from .render import CHECKOUT, GENERATED
+    from derive import generate
+    from derive.codegen.render import CHECKOUT, GENERATED
 
     if not args.out and CHECKOUT is None and not args.check:
         # Installed package: its generated/ copy lives in site-packages and is not ours to rewrite.
@@ -31,22 +31,22 @@ def _cmd_generate(args) -> int:
               "(no source checkout to write generated/ into)", file=sys.stderr)
         return EXIT_INPUT
     out = Path(args.out) if args.out else GENERATED
-    files = codegen.generate_all()
+    files = generate.generate_all()
     if args.check:
-        stale = codegen.stale(files, out)
+        stale = generate.stale(files, out)
         for rel in stale:
             print(f"stale: {out / rel}")
         return EXIT_DIFF if stale else EXIT_OK
     if args.out and out.resolve() != GENERATED.resolve():
-        # codegen.write removes files it no longer produces: in a directory of the user's
+        # generate.write removes files it no longer produces: in a directory of the user's
         # choosing that would delete their files. Refuse instead of deleting.
-        foreign = [rel for rel in codegen.stale(files, out) if rel not in files]
+        foreign = [rel for rel in generate.stale(files, out) if rel not in files]
         if foreign:
             shown = ", ".join(foreign[:3]) + (f" and {len(foreign) - 3} more" if len(foreign) > 3 else "")
             print(f"error: derive generate: --out: {out} holds {len(foreign)} files derive does not "
                   f"generate ({shown}); name an empty or new directory", file=sys.stderr)
             return EXIT_INPUT
-    written = codegen.write(files, out)
+    written = generate.write(files, out)
     print(f"generated {len(files)} files in {out} ({len(written)} changed)")
     if args.verify:
         return _cmd_verify(argparse.Namespace(format="text"))
@@ -54,7 +54,7 @@ def _cmd_generate(args) -> int:
 
 
 def _cmd_verify(args) -> int:
-    from . import verify
+    from derive.lecture import verify
 
     print(verify.table(args.format))
     wrong = verify.mismatches()
@@ -71,8 +71,8 @@ def _cmd_simulate(args) -> int:
     import json
     import time
 
-    from .outputs import check_paths
-    from .simulation import simulate, write_outputs
+    from derive.sim.outputs import check_paths
+    from derive.sim.simulation import simulate, write_outputs
 
     check_paths([args.output, args.plot])  # before the work: a bad path is known in advance
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
@@ -111,16 +111,41 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
 
 
 def _cmd_analyze(args) -> int:
-    from .analysis import render
+    from derive.lecture.analysis import render
 
     print(render(args.scene, args.format), end="" if args.format == "markdown" else "\n")
     return EXIT_OK
 
 
 def _cmd_bench(args) -> int:
-    from . import bench
+    from derive.bench import suite as bench
 
     bench.main(out=Path(args.out), quick=args.quick)
+    return EXIT_OK
+
+
+def _cmd_examples(args) -> int:
+    from derive.sim import examples
+
+    if args.copy:
+        try:
+            made = examples.copy(args.copy, Path(args.to))
+        except KeyError:
+            known = ", ".join(examples.names("scene") + examples.names("sweep"))
+            raise SceneError(f"derive examples: --copy: no example {args.copy!r} (the examples: {known})") from None
+        except FileExistsError as exc:
+            raise SceneError(f"derive examples: --copy: {exc} exists; not overwritten") from None
+        except OSError as exc:
+            raise SceneError(f"derive examples: --to: {args.to}: {exc.strerror or exc}") from None
+        print(f"copied {args.copy} to {made}")
+        return EXIT_OK
+    for kind, how in (("scene", "derive simulate NAME"), ("sweep", "derive sweep NAME -o out.parquet")):
+        names = examples.names(kind)
+        print(f"{kind}s ({how}):")
+        width = max(map(len, names), default=0)
+        for name in names:
+            print(f"  {name:<{width}}  {examples.summary(examples.path(name, kind))}")
+    print("copy one to edit: derive examples --copy NAME [--to DIR]")
     return EXIT_OK
 
 
@@ -132,7 +157,7 @@ def version() -> str:
     try:
         return dist_version("derive")
     except PackageNotFoundError:
-        from . import __version__
+        from derive import __version__
 
         return __version__
 
@@ -153,7 +178,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _cmd_cache(args) -> int:
-    from . import cbuild
+    from derive.runtime import cbuild
 
     root = cbuild.cache_dir()
     try:
@@ -184,7 +209,7 @@ def _bytes(n: int) -> str:
 
 
 def parser() -> argparse.ArgumentParser:
-    from .scene import FORMULATIONS, METHODS
+    from derive.sim.scene import FORMULATIONS, METHODS
 
     p = _Parser(prog="derive", description=__doc__.splitlines()[0])
     p.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
@@ -207,7 +232,7 @@ def parser() -> argparse.ArgumentParser:
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())
     s = sub.add_parser("simulate", help="simulate a scene file",
                        description=f"Simulate a scene. Methods: {methods}.")
-    s.add_argument("scene", help="scene file (TOML)")
+    s.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
     s.add_argument("-o", "--output", help="output file (.npz)")
     s.add_argument("--plot", help="plot file (.png)")
     s.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(METHODS)}")
@@ -230,7 +255,7 @@ def parser() -> argparse.ArgumentParser:
 
     a = sub.add_parser("analyze", help="the lecture's analysis for a scene's body: energies, equations, "
                                        "cyclic coordinates, integrable case, equilibria and stability")
-    a.add_argument("scene", help="scene file (TOML)")
+    a.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
     a.add_argument("--format", choices=("markdown", "json"), default="markdown",
                    help="markdown (LaTeX formulas, default) or json (the contract in docs/analyze.md)")
     a.set_defaults(func=_cmd_analyze)
@@ -242,7 +267,7 @@ def parser() -> argparse.ArgumentParser:
 
     w = sub.add_parser("sweep", help="a parameter sweep: many points of one scene, measured while "
                                      "integrating (docs/sweeps.md)")
-    w.add_argument("sweep", help="sweep file (TOML)")
+    w.add_argument("sweep", help="sweep file (TOML), or the name of an example (derive examples)")
     w.add_argument("-o", "--output", required=True, help="results (.parquet, one row per point)")
     w.add_argument("--plot", default=None, help="map (2-D sweep) or line (1-D) as PNG")
     w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
@@ -251,7 +276,13 @@ def parser() -> argparse.ArgumentParser:
                         help="start a Dask LocalCluster with N worker processes")
     engine.add_argument("--scheduler", default=None, help="address of a running Dask scheduler "
                                                           "(tcp://host:port)")
-    w.set_defaults(func=lambda args: __import__("derive.sweeps", fromlist=["cli"]).cli(args))
+    w.set_defaults(func=lambda args: __import__("derive.sweeps.engine", fromlist=["cli"]).cli(args))
+
+    e = sub.add_parser("examples", help="list the example scenes and sweeps (run one by its name), "
+                                        "or copy one out to edit")
+    e.add_argument("--copy", metavar="NAME", help="copy the example NAME (a sweep: with its scene)")
+    e.add_argument("--to", default=".", metavar="DIR", help="where --copy puts it (default: here)")
+    e.set_defaults(func=_cmd_examples)
 
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
     c.add_argument("--clear", action="store_true", help="remove every cached library")

@@ -12,7 +12,8 @@ import pytest
 import sympy as sp
 
 import derive
-from derive import analysis, integrable
+from derive.lecture import analysis
+from derive.symbolic import integrable
 from derive.cli import main
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
@@ -136,7 +137,7 @@ def test_bad_input_exit_2(tmp_path, capsys):
 
 
 def test_sleeping_condition_is_the_lectures():
-    from derive.lagrangian import I1, Mass, g, l
+    from derive.symbolic.lagrangian import I1, Mass, g, l
 
     R = analysis._routh()
     assert sp.simplify(R["threshold"] ** 2 - 4 * Mass * g * l * I1) == 0
@@ -153,8 +154,8 @@ def test_sleeping_condition_is_the_lectures():
 
 def test_hanging_series_by_symmetry():
     """V_eff(pi - b; -p_alpha, -l) = V_eff(b; p_alpha, l), which the series about pi relies on."""
-    from derive.lagrangian import l, p_alpha
-    from derive.rotations import beta
+    from derive.symbolic.lagrangian import l, p_alpha
+    from derive.symbolic.rotations import beta
 
     V = analysis._routh()["Veff"]
     flipped = V.subs({beta: sp.pi - beta, p_alpha: -p_alpha, l: -l}, simultaneous=True)

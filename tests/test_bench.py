@@ -9,8 +9,9 @@ import math
 import numpy as np
 import pytest
 
-from derive import bench
-from derive import bench_contenders as bc
+from derive.bench import runner as bench
+from derive.bench import suite
+from derive.bench import contenders as bc
 
 RNG_SEED = 12
 
@@ -48,7 +49,7 @@ def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_leve
 
 
 def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
-    from derive.bench_targets import _match
+    from derive.bench.targets import _match
 
     solve = lambda r: (3.0 * r, 1)  # noqa: E731 - error proportional to rtol
     m = _match(solve, 1e-9)  # 1e-10 is already good enough: loosen while it stays so
@@ -97,7 +98,7 @@ def _states(formulation, n, rng):
 
 @pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
 def test_baseline_rhs_agrees_with_the_generated_kernel(key, formulation):
-    from derive.simulation import kernel_for
+    from derive.sim.simulation import kernel_for
 
     kernel = kernel_for(*key)
     p = np.array([MOMENTS[n] for n in kernel.param_names])
@@ -123,7 +124,7 @@ def test_baseline_jacobian_is_the_derivative_of_its_rhs(key, formulation):
         J = np.array(jac_real(0.0, y))
         assert np.allclose(J, fd, rtol=1e-12, atol=1e-12 * np.max(np.abs(fd)))
     if formulation == "euler-angles" or "gravity" not in key[2]:
-        from derive.simulation import kernel_for
+        from derive.sim.simulation import kernel_for
 
         kernel = kernel_for(*key)
         p = np.array([MOMENTS[n] for n in kernel.param_names])
@@ -149,7 +150,7 @@ def test_baseline_initial_states_and_axes_match_the_scene():
 
 
 def test_scipy_baseline_reaches_the_exact_solution():
-    """A short solve of each baseline formulation lands on `derive.exact` (the bench's error measure)."""
+    """A short solve of each baseline formulation lands on `derive.reference.exact` (the bench's error measure)."""
     data = bc.scene_data(bench.SCENES / "looping_top.toml", t_end=0.05, samples=11)
     ref = bench.exact_axis(data, np.linspace(0, 0.05, 11))
     for form in ("euler-angles", "quaternion"):
@@ -164,7 +165,7 @@ def test_scipy_baseline_reaches_the_exact_solution():
 
 
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
-    res = bench.main(out=tmp_path, quick=True, smoke=True, peers=False)
+    res = suite.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()
     for heading in ("Targets (issues 8 and 11)", "Kernel speed", "Work–precision", "Drift", "Load average"):
         assert heading in report

@@ -12,8 +12,9 @@ import uuid
 
 import pytest
 
-from derive import cbuild, cli
-from derive.render import ROOT
+from derive import cli
+from derive.runtime import cbuild
+from derive.codegen.render import ROOT
 
 
 def tiny(tag: str) -> dict:
@@ -35,7 +36,7 @@ def libraries(root):
 
 def build_in_subprocess(root, tag, env=None):
     """Build-or-load the tiny library in a fresh process; (return code, stderr)."""
-    code = ("import sys; from derive import cbuild; "
+    code = ("import sys; from derive.runtime import cbuild; "
             f"lib = cbuild.compile_library('tiny', {tiny(tag)!r}, 'tiny.c'); "
             "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
     e = dict(os.environ, **(env or {}))
@@ -116,7 +117,7 @@ def test_unwritable_cache_falls_back_to_a_private_folder(tmp_path):
 def test_unwritable_home_falls_back(tmp_path):
     env = {"HOME": str(unwritable(tmp_path))}
     e = {k: v for k, v in os.environ.items() if k != "DERIVE_CACHE"}
-    code = ("import sys; from derive import cbuild; "
+    code = ("import sys; from derive.runtime import cbuild; "
             f"sys.exit(cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c')"
             ".tiny_answer() != 42)")
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

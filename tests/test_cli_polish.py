@@ -121,7 +121,7 @@ def test_json_summary_is_one_line_matching_the_outputs(capsys, scene, tmp_path):
 
 
 def test_generate_out_never_deletes_files_it_did_not_generate(capsys, tmp_path, monkeypatch):
-    from derive import codegen
+    from derive import generate as codegen
 
     files = {"c/m.c": "int x;\n", "m.md": "# m\n"}
     monkeypatch.setattr(codegen, "generate_all", lambda: dict(files))

@@ -14,7 +14,7 @@ import pytest
 
 import derive
 from derive import SceneError, cli
-from derive.render import ROOT
+from derive.codegen.render import ROOT
 
 TOP = {
     "body": {"I1": 1.0, "I3": 0.5},
@@ -176,7 +176,7 @@ def test_the_api_shows_no_numpy_warning(tables):
 
 
 def test_warnings_are_silenced_but_errors_still_reported(tmp_path, monkeypatch):
-    from derive import simulation
+    from derive.sim import simulation
 
     def noisy(*a, **k):
         np.float64(1e308) * 10  # RuntimeWarning: overflow
@@ -193,7 +193,7 @@ def test_warnings_are_silenced_but_errors_still_reported(tmp_path, monkeypatch):
 
 
 def test_an_unforeseen_exception_is_one_line_exit_1(tmp_path, monkeypatch):
-    from derive import simulation
+    from derive.sim import simulation
 
     def bug(*a, **k):
         return {}["missing\nkey"]
@@ -207,7 +207,7 @@ def test_an_unforeseen_exception_is_one_line_exit_1(tmp_path, monkeypatch):
 
 
 def test_keyboard_interrupt_in_process_is_exit_130(tmp_path, monkeypatch):
-    from derive import simulation
+    from derive.sim import simulation
 
     def interrupted(*a, **k):
         raise KeyboardInterrupt
@@ -220,7 +220,7 @@ def test_keyboard_interrupt_in_process_is_exit_130(tmp_path, monkeypatch):
 
 
 def test_keyboard_interrupt_while_writing_removes_the_temporaries(tmp_path, monkeypatch):
-    from derive import plots
+    from derive.sim import plots
 
     def interrupted(res, fh, *a, **k):
         fh.write(b"\x89PNG half")

@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 
 import handwritten as hw
-from derive import codegen
-from derive.cbuild import compile_library
-from derive.render import GENERATED, ROOT
+from derive import generate
+from derive.runtime.cbuild import compile_library
+from derive.codegen.render import GENERATED, ROOT
 
 N = 1000
 RNG = np.random.default_rng(7)
@@ -159,8 +159,8 @@ def test_rigid_body_matches_heavy_top_physics():
     """Quaternion model, centre of mass on axis 3, no damping: ω̃̇ equals the Euler-angle
     model's, mapped through ω̃ = B(q) q̇ (finite state set; exact same physics, other route)."""
     import sympy as sp
-    from derive.rotations import ANGLES, RATES, ZYZ
-    from derive.simulation import _quaternion
+    from derive.symbolic.rotations import ANGLES, RATES, ZYZ
+    from derive.sim.simulation import _quaternion
 
     rb = CModel("rigid_body")
     ht = CModel("heavy_top")
@@ -227,7 +227,7 @@ def test_numpy_kernels_in_blocks_give_the_whole_batch_bit_for_bit(cmodel, monkey
 def test_numpy_printing_takes_common_array_factors_out_and_multiplies_scalars_first():
     import sympy as sp
 
-    from derive.kernelspec import array_ops_first, np_expr
+    from derive.codegen.kernelspec import array_ops_first, np_expr
 
     a, b, c, x, y, z = sp.symbols("a b c x y z")
     scalars = frozenset({a, b, c})
@@ -265,16 +265,16 @@ def test_generated_c_compiles_cleanly_with_strict_warnings(tmp_path):
 
 
 def test_generated_dir_is_what_generate_writes():
-    files = codegen.generate_all()
-    assert codegen.stale(files, GENERATED) == []
+    files = generate.generate_all()
+    assert generate.stale(files, GENERATED) == []
 
 
 def test_generation_is_independent_of_hash_seed(tmp_path):
     outs = []
     for seed in ("0", "12345"):
         env = dict(os.environ, PYTHONHASHSEED=seed)
-        code = ("from derive import codegen, models; import sys, json;"
-                "sys.stdout.write(json.dumps(codegen.model_sources(models.CATALOGUE['heavy_top_reduced']())))")
+        code = ("from derive.codegen import sources; from derive.symbolic import models; import sys, json;"
+                "sys.stdout.write(json.dumps(sources.model_sources(models.CATALOGUE['heavy_top_reduced']())))")
         r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, cwd=ROOT, check=True)
         outs.append(r.stdout)
     assert outs[0] == outs[1]
@@ -294,7 +294,7 @@ def test_generate_check_cli_reports_stale_file(tmp_path, capsys):
 
 
 def test_generated_kernels_run_clean_under_address_and_undefined_sanitizers(tmp_path):
-    from derive.cbuild import SANITIZE_FLAGS, check_compiles
+    from derive.runtime.cbuild import SANITIZE_FLAGS, check_compiles
     from derive.errors import CompilerError
 
     names = ("heavy_top", "heavy_top_reduced")

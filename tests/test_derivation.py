@@ -4,9 +4,12 @@ import pytest
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from derive import inertia, lagrangian as lg, rotations as rot, stability
-from derive.models import euler_angles
-from derive.effects import lookup
+from derive.symbolic import inertia
+from derive.symbolic import lagrangian as lg
+from derive.symbolic import rotations as rot
+from derive.symbolic import stability
+from derive.symbolic.models import euler_angles
+from derive.symbolic.effects import lookup
 
 RNG = np.random.default_rng(20261121)
 

@@ -8,13 +8,7 @@ import scipy.special as sc
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from derive.elliptic import (
-    ellipj_accurate,
-    ellipk_m1,
-    elliptic_f_from_jacobi,
-    reduce_argument,
-    sn2_rational_integral,
-)
+from derive.reference.elliptic import (ellipj_accurate, ellipk_m1, elliptic_f_from_jacobi, reduce_argument, sn2_rational_integral,)
 
 EPS = np.finfo(float).eps
 # Complementary parameters m1 = 1 - m: the brief's list plus one beyond double precision of m.

@@ -13,13 +13,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from derive.exact import (
-    euler_angles,
-    euler_matrix,
-    free_asymmetric,
-    free_symmetric,
-    heavy_top,
-)
+from derive.reference.exact import (euler_angles, euler_matrix, free_asymmetric, free_symmetric, heavy_top,)
 
 EPS = np.finfo(float).eps
 

@@ -27,8 +27,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from derive import cli
-from derive.render import ROOT
-from derive.scene import METHODS
+from derive.codegen.render import ROOT
+from derive.sim.scene import METHODS
 
 MALFORMED = Path(__file__).parent / "malformed"
 

@@ -1,14 +1,14 @@
 """Hard cases that must stay numerically right, each with a numeric requirement.
 
 References: small-oscillation theory from the derived series (stability.py) for the sleeping
-and hanging tops, the exact solutions of derive/exact.py where they exist, and conservation
+and hanging tops, the exact solutions of derive/reference/exact.py where they exist, and conservation
 laws for the long runs.
 """
 import numpy as np
 import pytest
 
 import derive
-from derive.formulations import REGISTRY
+from derive.symbolic.formulations import REGISTRY
 
 I1, I3, M, G, L = 1.0, 0.4, 1.0, 9.81, 0.1
 CRIT = np.sqrt(4 * M * G * L * I1)  # the derived threshold p_γ = 2√(I₁Mgl)
@@ -151,7 +151,7 @@ def test_tiny_motions_keep_their_relative_accuracy(beta0, p_factor):
     exact solution to ≤ 1e-13 absolute, ≤ 1e-5 of the motion. (The reduced chart, which
     passes through the pole in β, reaches only ~3e-13 here; auto takes a formulation without
     a singular set, whose state carries the small components themselves.)"""
-    from derive import exact
+    from derive.reference import exact
 
     sc = top_with_equal_momenta(p_factor * CRIT, beta0, 30.0, rtol=1e-11)
     sc["simulate"]["atol"] = 1e-13

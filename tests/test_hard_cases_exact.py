@@ -1,4 +1,4 @@
-"""Hard cases measured against the closed-form solutions of derive/exact.py.
+"""Hard cases measured against the closed-form solutions of derive/reference/exact.py.
 
 Every comparison uses quantities that do not depend on the Euler-angle chart: the inertial
 components of body axis e3 (``axis``) and the body angular velocity (``omega``). (In the reduced
@@ -15,9 +15,9 @@ import pytest
 from scipy.optimize import brentq
 
 import derive
-from derive import exact
-from derive.render import ROOT
-from derive.scene import load_scene
+from derive.reference import exact
+from derive.codegen.render import ROOT
+from derive.sim.scene import load_scene
 
 EPS = float(np.finfo(float).eps)
 SCENES = ROOT / "scenes"

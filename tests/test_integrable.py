@@ -10,8 +10,8 @@ import pytest
 import sympy as sp
 
 import derive
-from derive import integrable as ig
-from derive.scene import load_scene
+from derive.symbolic import integrable as ig
+from derive.sim.scene import load_scene
 
 TOL = ig.TOLERANCE
 
@@ -241,8 +241,8 @@ def test_import_derive_does_not_import_sympy():
     import subprocess
     import sys
 
-    code = ("import sys, derive, derive.integrable, derive.analysis, derive.cli; "
-            "from derive.scene import load_scene; "
+    code = ("import sys, derive, derive.symbolic.integrable, derive.lecture.analysis, derive.cli; "
+            "from derive.sim.scene import load_scene; "
             "assert 'sympy' not in sys.modules, 'sympy imported'")
     subprocess.run([sys.executable, "-c", code], check=True)
 

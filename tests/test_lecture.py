@@ -11,8 +11,10 @@ import pytest
 import sympy as sp
 
 import derive
-from derive import lecture, report, verify
-from derive.lecture import Correction
+from derive.lecture import claims as lecture
+from derive.lecture import report
+from derive.lecture import verify
+from derive.lecture.claims import Correction
 
 # The course's notes file is not part of the repository: the quotes are checked against it when
 # it is at hand ($DERIVE_NOTES, else the course folder next to the checkout, as on the
@@ -80,7 +82,7 @@ def test_no_mismatches_reported_for_the_cli(results):
 @pytest.fixture(scope="module")
 def notes_text():
     if not NOTES.is_file():
-        why = (f"the lecture notes file is not at {NOTES}: the quotes of derive/lecture.py are "
+        why = (f"the lecture notes file is not at {NOTES}: the quotes of derive/lecture/claims.py are "
                f"checked against it when it is at hand (set DERIVE_NOTES to its path)")
         if os.environ.get("CI", "").lower() in ("1", "true", "yes"):
             pytest.fail("CI must have the lecture notes: " + why)
@@ -187,7 +189,7 @@ def test_documents_contain_the_table_and_the_derivations():
 
 
 _HASH_DOCS = (
-    "import hashlib; from derive import report, verify\n"
+    "import hashlib; from derive.lecture import report, verify\n"
     "docs = report.documents()\n"
     "for name in sorted(docs): print(name, hashlib.sha256(docs[name].encode()).hexdigest())\n"
     "print('table', hashlib.sha256(verify.table('text').encode()).hexdigest())\n"
@@ -214,7 +216,8 @@ def test_reports_are_byte_deterministic_across_runs_and_hash_seeds():
 
 
 def test_verify_cli_exits_nonzero_when_a_verdict_changes(monkeypatch, capsys):
-    from derive import cli, lecture
+    from derive import cli
+    from derive.lecture import claims as lecture
 
     assert cli.main(["verify"]) == 0
     claim = next(iter(lecture.EXPECTED))

@@ -1,5 +1,5 @@
 """The measures' integral drift (the extra integral of the integrable cases, in C from the
-formulas of derive.integrable) and the dense output formed only where a search reads it."""
+formulas of derive.symbolic.integrable) and the dense output formed only where a search reads it."""
 from __future__ import annotations
 
 import copy
@@ -13,12 +13,13 @@ import numpy as np
 import pytest
 
 import derive
-from derive import integrable
-from derive import measures as ms
-from derive.cbuild import DEFAULT_FLAGS, compile_library
+from derive.codegen import sources
+from derive.symbolic import integrable
+from derive.sweeps import measures as ms
+from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.errors import SceneError
-from derive.render import CHECKOUT, GENERATED
-from derive.sweeps import load, run_chunk
+from derive.codegen.render import CHECKOUT, GENERATED
+from derive.sweeps.engine import load, run_chunk
 
 TOP = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,
@@ -123,8 +124,8 @@ def test_values_recorded_before_the_lazy_dense_output():
 
 
 def test_generated_header_is_the_formulas_printed():
-    """generated/c/derive_integrals.h is what derive.integrable renders now (one source)."""
-    assert (GENERATED / "c" / "derive_integrals.h").read_text() == integrable.c_header()
+    """generated/c/derive_integrals.h is what derive.symbolic.integrable renders now (one source)."""
+    assert (GENERATED / "c" / "derive_integrals.h").read_text() == sources.integrals_header()
 
 
 @functools.lru_cache(maxsize=None)
@@ -193,7 +194,7 @@ def _numpy_drift(integral, scene: dict, axes=(0, 1, 2)) -> float:
     """max |I - I0| / S over a densely sampled derive.simulate run, I from the NumPy formula on
     the outputs L and n (the formulas' axes = body axes ``axes``)."""
     res = derive.simulate(scene)
-    p = integrable.relabel_params(integrable.parameters(derive.scene.load_scene(scene)), axes)
+    p = integrable.relabel_params(integrable.parameters(derive.sim.scene.load_scene(scene)), axes)
     L, n = res.L[:, list(axes)].T, res.n[:, list(axes)].T
     values = np.asarray(integral.formula(L, n, p), dtype=float)
     return float(np.max(np.abs(values - values[0])) / _scale(integral, L[:, 0], n[:, 0], p))

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 import derive
-from derive.render import ROOT
-from derive.scene import load_scene
+from derive.codegen.render import ROOT
+from derive.sim.scene import load_scene
 
 from test_exact import taylor_solve
 

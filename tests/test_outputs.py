@@ -1,4 +1,4 @@
-"""Output files, all or nothing (derive.outputs), and the simulate command's use of them."""
+"""Output files, all or nothing (derive.sim.outputs), and the simulate command's use of them."""
 import contextlib
 import errno
 import io
@@ -8,7 +8,8 @@ import stat
 import numpy as np
 import pytest
 
-from derive import SceneError, cli, outputs
+from derive import SceneError, cli
+from derive.sim import outputs
 
 SCENE = """\
 [body]
@@ -217,7 +218,7 @@ def test_plot_into_a_directory_keeps_the_existing_output(tmp_path, scene):
 @pytest.mark.parametrize("target", ["d", "missing/out.npz", "/proc/out.npz"])
 def test_bad_output_path_is_exit_2_before_the_run(tmp_path, scene, target, monkeypatch):
     (tmp_path / "d").mkdir()
-    from derive import simulation
+    from derive.sim import simulation
 
     def never(*a, **k):
         raise AssertionError("simulate ran although the output path was known to be bad")
@@ -233,7 +234,7 @@ def test_bad_output_path_is_exit_2_before_the_run(tmp_path, scene, target, monke
 def test_failing_plot_after_the_npz_leaves_nothing(tmp_path, scene, monkeypatch):
     old = tmp_path / "out.npz"
     old.write_bytes(b"old")
-    from derive import plots
+    from derive.sim import plots
 
     def full(res, fh, *a, **k):
         fh.write(b"\x89PNG partial")

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 import derive
-from derive import plots
-from derive.render import ROOT
+from derive.sim import plots
+from derive.codegen.render import ROOT
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
 

@@ -10,12 +10,10 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from derive import solvers
-from derive.formulations import POLE_CLEARANCE
+from derive.methods import registry as solvers
+from derive.symbolic.formulations import POLE_CLEARANCE
 from derive.errors import SceneError
-from derive.scene import (
-    FIXED_STEP_METHODS, FORMULATIONS, METHODS, SIMULATE_DEFAULTS, Scene, body_omega, load_scene,
-)
+from derive.sim.scene import (FIXED_STEP_METHODS, FORMULATIONS, METHODS, SIMULATE_DEFAULTS, Scene, body_omega, load_scene,)
 
 SCENES = Path(__file__).resolve().parent.parent / "scenes"
 EXAMPLES = sorted(p.stem for p in SCENES.glob("*.toml"))

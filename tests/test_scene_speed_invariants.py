@@ -11,11 +11,9 @@ import types
 import numpy as np
 import pytest
 
-from derive import effects
+from derive.symbolic import effects
 from derive.errors import SceneError
-from derive.scene import (
-    SIMULATE_DEFAULTS, Body, Initial, Scene, Simulate, TableValues, body_omega, load_scene,
-)
+from derive.sim.scene import (SIMULATE_DEFAULTS, Body, Initial, Scene, Simulate, TableValues, body_omega, load_scene,)
 
 TOP = {
     "title": "top",

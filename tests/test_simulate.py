@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 
 import derive
-from derive import simulation
-from derive.formulations import REGISTRY
-from derive.render import ROOT
+from derive.sim import simulation
+from derive.symbolic.formulations import REGISTRY
+from derive.codegen.render import ROOT
 
 SCENES = ROOT / "scenes"
 ARRAYS = {"t": 1, "alpha": 1, "beta": 1, "gamma": 1, "omega": 2, "axis": 2, "energy": 1, "p_alpha": 1, "p_gamma": 1}
@@ -150,8 +150,8 @@ def test_conserved_quantities_hold_without_damping_and_energy_falls_with_it():
 
 
 def test_second_call_reuses_the_compiled_kernel():
-    from derive import catalogue
-    from derive.integrate import ModelKernel
+    from derive.runtime import catalogue
+    from derive.runtime.integrate import ModelKernel
 
     derive.simulate(top())
     loaded = dict(ModelKernel._cache)
@@ -205,7 +205,7 @@ def test_batch_refuses_scenes_with_different_effects():
 def test_auto_takes_a_singular_formulation_only_when_the_motion_keeps_clear(name):
     """The example tops keep well away from the poles: auto may take a formulation with a
     singular set, and the simulated β indeed stays clear of 0 and π."""
-    from derive.formulations import POLE_CLEARANCE
+    from derive.symbolic.formulations import POLE_CLEARANCE
 
     res = derive.simulate(SCENES / f"{name}.toml")
     if REGISTRY[res.formulation].singular:
@@ -221,11 +221,12 @@ def _tilted_top(beta_dot):
 
 def test_routh_check_agrees_with_the_exact_turning_points():
     """auto's compiled Routh check (f(±u_c) < 0) says "clear of the top pole" exactly when the
-    exact solution's upper turning point (`derive.exact`, the cubic's roots) keeps
+    exact solution's upper turning point (`derive.reference.exact`, the cubic's roots) keeps
     |sin β| ≥ POLE_CLEARANCE: scanned across the boundary by the initial β̇ (moving toward
     the pole)."""
-    from derive import auto, exact
-    from derive.formulations import POLE_CLEARANCE
+    from derive.sim import auto
+    from derive.reference import exact
+    from derive.symbolic.formulations import POLE_CLEARANCE
 
     verdicts = []
     for beta_dot in -np.linspace(0.0, 0.02, 41):
@@ -263,7 +264,7 @@ def test_pole_loss_check_from_the_extremes_equals_the_rule_on_every_sample():
     """simulation._check_pole reads only the smallest and largest canonical β (sin is concave
     on [0, π]); it must refuse exactly the trajectories whose smallest |sin β| over the samples
     has sin²β < eps/rtol, single and batched (_pole_suspects)."""
-    from derive import catalogue
+    from derive.runtime import catalogue
     from derive.errors import IntegrationError
 
     desc = catalogue.describe(("euler-angles", True, ("gravity",)))

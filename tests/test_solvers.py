@@ -16,11 +16,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from derive.cbuild import (SANITIZE_FLAGS, STRICT_FLAGS, check_compiles, compile_library)
+from derive.runtime.cbuild import (SANITIZE_FLAGS, STRICT_FLAGS, check_compiles, compile_library)
 from derive.errors import CompilerError, IntegrationError
-from derive.integrate import Kernel
-from derive.solvers import METHODS, render_solvers
-from derive.tableaux import DOP853, RK4
+from derive.runtime.integrate import Kernel
+from derive.methods.registry import METHODS
+from derive.codegen.solvers import render_solvers
+from derive.methods.tableaux import DOP853, RK4
 
 C_DIR = Path(__file__).parent / "c"
 MODELS = {"osc": 2, "free3": 3, "blowup": 1, "tank": 2}
@@ -412,7 +413,7 @@ def test_compiler_errors_show_its_stderr(monkeypatch, tmp_path):
 def test_concurrent_builds_share_one_cache_entry(tmp_path):
     """Several processes compiling the same new library at once all load a complete one."""
     src = f"int answer(void) {{ return 42; }} /* {tmp_path} */\n"
-    code = ("import sys; from derive.cbuild import compile_library as c; "
+    code = ("import sys; from derive.runtime.cbuild import compile_library as c; "
             f"lib = c('race', {{'race.c': {src!r}}}, 'race.c'); "
             "sys.exit(0 if lib.answer() == 42 else 1)")
     env = dict(os.environ, DERIVE_CACHE=str(tmp_path / "cache"))

@@ -1,7 +1,7 @@
-"""The Lie–Poisson splitting integrators (derive/splitting.py, templates/c/splitting.c.j2).
+"""The Lie–Poisson splitting integrators (derive/methods/splitting.py, templates/c/splitting.c.j2).
 
 Each step composes exact flows, so the checks are: the free flow *is* the exact torque-free
-solution (derive.exact) for any step size, the compositions converge at their declared orders
+solution (derive.reference.exact) for any step size, the compositions converge at their declared orders
 (slopes of log error vs log h, against the exact Lagrange top and a tight DOP853 run), and the
 geometric invariants |n| = |e| = 1, n·e = 0, L·n stay at round-off for steps far too large to
 be accurate.
@@ -13,8 +13,13 @@ from fractions import Fraction as F
 import numpy as np
 import pytest
 
-from derive import exact, models, splitting
-from derive.cbuild import STRICT_FLAGS, check_compiles
+from derive.reference import exact
+from derive.symbolic import models
+from derive.bench import splitting as bsplit
+from derive.codegen import splitting as csplit
+from derive.methods import splitting
+from derive.runtime import splitter
+from derive.runtime.cbuild import STRICT_FLAGS, check_compiles
 
 VARIANTS = [(True, ("gravity",)), (False, ("gravity_general",)), (True, ("gravity_general",)),
             (False, ()), (True, ())]
@@ -28,14 +33,14 @@ def splitters():
     def get(symmetric, effects):
         key = (symmetric, tuple(effects))
         if key not in cache:
-            cache[key] = splitting.Splitter(models.build("euler-poisson", symmetric, effects))
+            cache[key] = splitter.Splitter(models.build("euler-poisson", symmetric, effects))
         return cache[key]
     return get
 
 
 def _exact_state(sp, p, traj):
     """The model's state along an exact trajectory."""
-    return np.stack([splitting.initial_state(sp.model, p, w, R) for w, R in zip(traj.omega, traj.R)])
+    return np.stack([splitter.initial_state(sp.model, p, w, R) for w, R in zip(traj.omega, traj.R)])
 
 
 # --------------------------------------------------------------------------------------------
@@ -138,7 +143,7 @@ def test_near_integrable_schemes_are_quadratures_of_their_eps_order(name):
 @pytest.mark.parametrize("symmetric,effects", VARIANTS)
 def test_generated_c_is_strict_c99(symmetric, effects):
     model = models.build("euler-poisson", symmetric, effects)
-    files, unity = splitting.sources(model)
+    files, unity = splitter.sources(model)
     # The splitting file stands alone; once, the whole translation unit (no name clashes with
     # the model's own solvers).
     mains = [f"{model.name}_splitting.c"] + ([unity] if effects == ("gravity_general",) and not symmetric else [])
@@ -152,9 +157,9 @@ def test_applicable_only_to_conservative_euler_poisson_models():
     damped = models.build("euler-poisson", False, ("gravity_general", "damping"))
     assert "damping" in splitting.applicable(damped)
     with pytest.raises(ValueError, match="damping"):
-        splitting.render_splitting(damped)
+        csplit.render_splitting(damped)
     with pytest.raises(ValueError, match="unknown splitting method"):
-        splitting.render_splitting(models.build("euler-poisson", True, ()), ["splitting3"])
+        csplit.render_splitting(models.build("euler-poisson", True, ()), ["splitting3"])
 
 
 # --------------------------------------------------------------------------------------------
@@ -240,7 +245,7 @@ def test_orders_on_the_lagrange_top_against_the_exact_solution(splitters):
 def test_orders_on_an_off_axis_asymmetric_top_against_dop853(splitters):
     sp = splitters(False, ("gravity_general",))
     p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
-    y0 = splitting.initial_state(sp.model, p, (0.3, -0.2, 5.0), exact.euler_matrix(0.1, 0.6, 0.2))
+    y0 = splitter.initial_state(sp.model, p, (0.3, -0.2, 5.0), exact.euler_matrix(0.1, 0.6, 0.2))
     t = np.array([0.0, 2.0])
     ref = sp.kernel.solve("dop853", y0, p, t, rtol=1e-14, atol=1e-16).y[-1]
     for method, hs in (("splitting2", [0.1, 0.05, 0.025]), ("splitting4", [0.1, 0.05, 0.025]),
@@ -260,7 +265,7 @@ def test_merged_steps_and_the_lagrange_top_shortcut_change_round_off_only(splitt
     axial, general = splitters(True, ("gravity",)), splitters(True, ("gravity_general",))
     I1, I3, M, g, l = 1.0, 0.5, 1.0, 9.81, 0.2
     p_ax, p_gen = (I1, I3, M, g, l), (I1, I3, M, g, 0.0, 0.0, l)
-    y0 = splitting.initial_state(axial.model, p_ax, (0.7, -0.3, 9.0), R0)
+    y0 = splitter.initial_state(axial.model, p_ax, (0.7, -0.3, 9.0), R0)
     T, n = 2.0, 10
     one, st1 = axial.solve(method, y0, p_ax, [0.0, T], T / n)
     many, stn = axial.solve(method, y0, p_ax, np.linspace(0.0, T, n + 1), T / n)
@@ -285,11 +290,11 @@ def test_merged_steps_and_the_lagrange_top_shortcut_change_round_off_only(splitt
 @pytest.mark.parametrize("method", list(splitting.METHODS))
 def test_geometric_invariants_at_round_off_for_large_steps(splitters, symmetric, effects, p, method):
     sp = splitters(symmetric, effects)
-    y0 = splitting.initial_state(sp.model, p, (1.3, -0.8, 6.0), R0)
+    y0 = splitter.initial_state(sp.model, p, (1.3, -0.8, 6.0), R0)
     t = np.linspace(0.0, 100.0, 11)
     y, st = sp.solve(method, y0, p, t, 0.5)   # 200 steps, each far too long to be accurate
     assert st["status"] == 0 and st["nstep"] == 200
-    L, n, e = splitting.angular_momentum(sp.model, p, y), y[:, 3:6], y[:, 6:]
+    L, n, e = splitter.angular_momentum(sp.model, p, y), y[:, 3:6], y[:, 6:]
     # Round-off only: up to 1800 rotations (200 steps x 9 stages) at a fraction of an ulp each.
     tol = 2e-14
     assert np.abs(np.linalg.norm(n, axis=1) - 1).max() < tol
@@ -306,10 +311,10 @@ def test_energy_error_stays_bounded_over_long_runs(splitters):
     # Poisson integrator: energy oscillates at O(h^4), no secular drift.
     sp = splitters(False, ("gravity_general",))
     p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
-    y0 = splitting.initial_state(sp.model, p, (0.3, -0.2, 5.0), exact.euler_matrix(0.1, 0.6, 0.2))
+    y0 = splitter.initial_state(sp.model, p, (0.3, -0.2, 5.0), exact.euler_matrix(0.1, 0.6, 0.2))
     t = np.linspace(0.0, 2000.0, 4001)
     y, st = sp.solve("splitting4", y0, p, t, 0.05)
-    de = np.abs(splitting.energy(sp.model, p, y) - splitting.energy(sp.model, p, y0))
+    de = np.abs(splitter.energy(sp.model, p, y) - splitter.energy(sp.model, p, y0))
     first, last = de[: len(de) // 10].max(), de[-len(de) // 10:].max()
     assert last < 2.0 * first and first > 0
 
@@ -321,7 +326,7 @@ def test_energy_error_stays_bounded_over_long_runs(splitters):
 def test_batch_is_bitwise_the_single_runs_and_bad_input_is_reported(splitters):
     sp = splitters(False, ("gravity_general",))
     p = np.array([1.0, 1.5, 2.0, 1.0, 9.81, 0.05, 0.02, 0.1])
-    y0s = np.stack([splitting.initial_state(sp.model, p, (0.3, -0.2, w3), R0) for w3 in (2.0, 5.0, 9.0)])
+    y0s = np.stack([splitter.initial_state(sp.model, p, (0.3, -0.2, w3), R0) for w3 in (2.0, 5.0, 9.0)])
     t = np.linspace(0.0, 3.0, 7)
     yb, stb = sp.solve_batch("splitting4", y0s, p, t, 0.01)
     for b in range(3):
@@ -342,12 +347,12 @@ def test_batch_is_bitwise_the_single_runs_and_bad_input_is_reported(splitters):
 def test_bench_finds_settings_that_meet_the_target():
     # Only that the scan finds, within its time budget, a setting of each method whose run meets
     # the target (the row reports that run); timings are reported, never asserted.
-    r = splitting.bench_energy("lagrange", periods=20, target=1e-6, methods=("splitting4", "dop853"),
+    r = bsplit.bench_energy("lagrange", periods=20, target=1e-6, methods=("splitting4", "dop853"),
                                repeat=1, samples=97, measure="axis")
     for m in ("splitting4", "dop853"):
         assert r[m] is not None and r[m]["error"] <= 1e-6
     with pytest.raises(ValueError, match="unknown benchmark case"):
-        splitting.bench_case("spinning-plate")
+        bsplit.bench_case("spinning-plate")
 
 
 def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters):
@@ -355,7 +360,7 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
     # (init map, solve, outputs) and poll the kernel's interrupt flag.
     import ctypes
 
-    from derive.status import Status
+    from derive.methods.status import Status
 
     sp = splitters(False, ("gravity_general",))
     lib, P = sp.lib, sp.model.name
@@ -396,8 +401,8 @@ def test_carlson_integrals_in_c_against_mpmath():
 
     import mpmath
 
-    from derive.cbuild import DEFAULT_FLAGS, compile_library
-    from derive.render import GENERATED
+    from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
+    from derive.codegen.render import GENERATED
 
     harness = ('#include <math.h>\n#include "derive_elliptic.h"\n'
                "double t_rj(double x, double y, double z, double p) { return derive_carlson_rj(x, y, z, p); }\n"

@@ -1,4 +1,4 @@
-"""Parameter sweeps (derive.sweeps) and the measures computed in the compiled loop (derive.measures)."""
+"""Parameter sweeps (derive.sweeps.engine) and the measures computed in the compiled loop (derive.sweeps.measures)."""
 from __future__ import annotations
 
 import math
@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 import derive
-from derive import catalogue
+from derive.runtime import catalogue
 from derive.errors import SceneError
-from derive.exact import heavy_top
-from derive.measures import REGISTRY, MeasureKernel, c_sources
-from derive.sweeps import load
+from derive.reference.exact import heavy_top
+from derive.sweeps.measures import REGISTRY, MeasureKernel, c_sources
+from derive.sweeps.engine import load
 
 REF = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,
@@ -239,7 +239,7 @@ def test_plot_measure_is_one_column_and_the_api_is_callable():
         derive.sweep(spec, add_measure="final_state", processes=1)
     res = derive.sweep(spec, add_measure="final_beta", processes=1)
     assert res.measure_names == ("nfev", "final_state") and "final_beta" in res.measures
-    from derive import sweeps  # the module (sweeps) does not shadow the function (sweep)
+    from derive.sweeps import engine as sweeps  # the package (sweeps) does not shadow the function (sweep)
 
     again = derive.sweep(spec, processes=1)
     assert np.array_equal(again.measures["nfev"], res.measures["nfev"])
@@ -266,7 +266,7 @@ def test_extrema_inside_the_first_and_the_last_step():
 
 def test_bench_throughput_runs():
     """The throughput report's function (figures in docs/sweeps.md; no speed asserted here)."""
-    from derive.sweeps import bench_throughput
+    from derive.bench.throughput import bench_throughput
 
     out = bench_throughput(n=20, scipy_n=2)
     assert out["per_traj_sweep"] > 0 and out["per_traj_scipy"] > 0 and out["nfev_mean"] > 100
@@ -277,10 +277,10 @@ def test_threads_sharing_a_library_get_their_own_trajectories():
     with several threads) are serialised and give the single-threaded numbers."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from derive.sweeps import run_chunk
+    from derive.sweeps.engine import run_chunk
 
     sp = load({"scene": REF, "random": {"n": 40, "seed": 5, "initial": {"beta": {"low": 0.3, "high": 1.2}}}})
-    from derive.measures import config_of
+    from derive.sweeps.measures import config_of
 
     args = (sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 3.0]), (1e-8, 1e-12, 0.0, 10**6),
             config_of(["beta_max", "beta_min"]))
@@ -301,7 +301,7 @@ def test_kovalevskaya_ratio_example_dips_where_the_classification_says():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from derive import sweep_maps
+    from derive.sweeps import maps as sweep_maps
 
     path = Path(__file__).resolve().parents[1] / "scenes" / "sweeps" / "kovalevskaya_ratio.toml"
     res = derive.sweep(str(path), processes=1)

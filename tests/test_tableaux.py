@@ -12,7 +12,7 @@ from fractions import Fraction as F
 import numpy as np
 import pytest
 
-from derive.tableaux import DOP853, GAUSS4, GAUSS6, RK4, TABLEAUX, Tableau
+from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, TABLEAUX, Tableau
 
 ALL = list(TABLEAUX.values())
 

@@ -25,7 +25,7 @@ import derive
 
 CHECKOUT = Path(__file__).resolve().parent.parent
 # What the wheel is built from (the rest of the checkout is not part of the package).
-PACKAGING_INPUTS = ("pyproject.toml", "README.md", "derive", "templates", "generated")
+PACKAGING_INPUTS = ("pyproject.toml", "README.md", "derive", "templates", "generated", "scenes")
 SCENE = """\
 title = "wheel test: free symmetric body"
 [body]
@@ -100,17 +100,20 @@ def empty(tmp_path) -> Path:
 
 def test_wheel_carries_the_templates_and_the_generated_code(wheel):
     names = set(zipfile.ZipFile(wheel).namelist())
-    for folder in ("templates", "generated"):
+    for folder in ("templates", "generated", "scenes"):
         files = _data_files(folder)
         assert files, folder
         missing = [f for f in files if f"derive/_{folder}/{f}" not in names]
         assert not missing, f"{folder}/ files missing from the wheel: {missing}"
-    assert "derive/render.py" in names and "derive/cli.py" in names
+    # every module of every subpackage, and the bench's baselines (its C and Python rivals)
+    package = [f"derive/{f}" for f in _data_files("derive") if f.endswith(".py") or "/baselines/" in f"/{f}"]
+    missing = [f for f in package if f not in names]
+    assert package and not missing, f"package files missing from the wheel: {missing}"
 
 
 def test_api_uses_the_packages_own_data_and_simulates_from_an_empty_directory(venv, empty):
     (empty / "scene.toml").write_text(SCENE)
-    code = ("import json, derive, derive.render as r; res = derive.simulate('scene.toml'); "
+    code = ("import json, derive, derive.codegen.render as r; res = derive.simulate('scene.toml'); "
             "print(json.dumps([derive.__file__, str(r.CHECKOUT), str(r.TEMPLATES), str(r.GENERATED), len(res.t)]))")
     r = _run([str(venv / "bin" / "python"), "-I", "-c", code], cwd=empty)
     assert r.returncode == 0, r.stderr
@@ -155,7 +158,25 @@ def test_generate_out_writes_what_the_wheel_carries(venv, empty):
     written = sorted(p.relative_to(empty / "gen").as_posix() for p in (empty / "gen").rglob("*") if p.is_file())
     assert written == _data_files("generated")
     # What the installed package generates is the copy it carries (what `generate --check` compares).
-    shipped = Path(_run([str(venv / "bin" / "python"), "-I", "-c", "import derive.render as r; print(r.GENERATED)"],
+    shipped = Path(_run([str(venv / "bin" / "python"), "-I", "-c", "import derive.codegen.render as r; print(r.GENERATED)"],
                         cwd=empty).stdout.strip())
     for rel in written:
         assert (empty / "gen" / rel).read_bytes() == (shipped / rel).read_bytes(), rel
+
+
+def test_examples_run_by_name_from_an_empty_directory(venv, empty):
+    r = _run([str(venv / "bin" / "derive"), "examples"], cwd=empty)
+    assert r.returncode == 0 and "looping_top" in r.stdout and "sleeping_threshold" in r.stdout, r.stderr
+    r = _run([str(venv / "bin" / "derive"), "simulate", "free_symmetric", "--json"], cwd=empty)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["formulation"]
+
+
+def test_bench_runs_from_the_wheel(venv, empty):
+    """The bench is a client of the installed package: its baselines and reference scene come
+    with the wheel (the smoke settings: a few seconds)."""
+    code = ("from derive.bench import suite; r = suite.main(out='bench', smoke=True, peers=False); "
+            "print(sorted(r['targets']))")
+    r = _run([str(venv / "bin" / "python"), "-I", "-c", code], cwd=empty)
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert (empty / "bench" / "report.md").is_file()

@@ -1,0 +1,308 @@
+"""The contenders `derive bench` races derive against: SciPy with hand-written right-hand sides,
+and, when installed (``pip install -e '.[peers]'``), CasADi and PyDy on the same equations.
+
+Every contender gets a :class:`Problem`: one scene (read as plain TOML data, no derive
+internals) in one of the two formulations of ``derive/bench/baselines/scipy_baselines.py`` (Euler angles
+for the symmetric top, quaternion + Euler's equations for any body), with the initial state and
+constants that formulation needs and a map from its states to the symmetry axis ê₃ — the error
+measure of the bench is the axis error against `derive.reference.exact`, the same for everyone.
+
+Each ``solve_*`` returns ``(Y, nfev)``: the states at the output times (rows) and the number of
+right-hand-side evaluations; a failure raises :class:`~derive.errors.IntegrationError`. The
+wall time of that call is what the bench records (building an integrator or compiling a
+right-hand side is a separate, one-off cost, reported apart as ``setup``).
+
+* SciPy: ``solve_ivp`` (DOP853, LSODA, Radau) and ``odeint`` with the plain-Python rhs (closure
+  over the constants, ``math``, a list returned); Radau and LSODA (both drivers) also get the
+  plain-Python analytic Jacobian.
+* CasADi: the same equations built as SX expressions (``sin``/``cos`` of CasADi), the constants
+  as symbolic parameters, ``integrator('F', 'cvodes'|'idas', ...)`` with the output grid;
+  cvodes in Adams (functional iteration) and BDF mode, idas (BDF).
+* PyDy: the same equations as SymPy expressions through ``generate_ode_function`` with the
+  Cython backend, integrated by ``scipy.integrate.odeint`` (LSODA).
+"""
+from __future__ import annotations
+
+import functools
+import importlib.util
+import math
+import operator
+import time
+import tomllib
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from derive.errors import IntegrationError
+
+#: The baselines the bench races (C and plain-Python right-hand sides), shipped in the package.
+BENCH_SOURCES = Path(__file__).resolve().parent / "baselines"
+
+#: The baseline formulations: state size and constants (in the factories' argument order).
+STATE_SIZE = {"euler-angles": 6, "quaternion": 7}
+CONST_NAMES = {"euler-angles": ("I1", "I3", "mgl"), "quaternion": ("I1", "I2", "I3", "mgl")}
+#: SciPy's methods: ``solve_ivp``'s DOP853, LSODA and Radau, and ``odeint`` (LSODA's Fortran
+#: driver, whose loop is not Python: the cheapest way SciPy offers to call a Python rhs).
+SCIPY = {"scipy-dop853": "DOP853", "scipy-lsoda": "LSODA", "scipy-radau": "Radau", "scipy-odeint": "odeint"}
+CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
+                                             "nonlinear_solver_iteration": "functional"}),
+          "casadi-cvodes-bdf": ("cvodes", {}),
+          "casadi-idas": ("idas", {})}
+PYDY = ("pydy-odeint",)
+
+
+@functools.cache
+def baselines():
+    """``derive/bench/baselines/scipy_baselines.py`` as a module (it is a user's file, not part of derive)."""
+    path = BENCH_SOURCES / "scipy_baselines.py"
+    spec = importlib.util.spec_from_file_location("derive_bench_scipy_baselines", path)
+    if spec is None or not path.is_file():
+        raise FileNotFoundError(f"{path}: the bench needs a source checkout")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def peers_available() -> dict[str, str | None]:
+    """{peer: version or None (not installed)} for casadi and pydy (+ cython, its backend)."""
+    out = {}
+    for name in ("casadi", "pydy", "Cython"):
+        try:
+            mod = __import__(name)
+            out[name.lower()] = getattr(mod, "__version__", "?")
+        except Exception:  # noqa: BLE001 - a broken install counts as absent
+            out[name.lower()] = None
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# one scene in one formulation
+
+
+@dataclass
+class Problem:
+    """A scene as a contender sees it: ``formulation`` of scipy_baselines, constants
+    ``consts`` (I1, I2, I3, mgl), initial state ``y0`` and output times ``t``."""
+
+    name: str
+    formulation: str
+    consts: dict
+    y0: list
+    t: np.ndarray
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def const_names(self) -> tuple[str, ...]:
+        return CONST_NAMES[self.formulation]
+
+    @property
+    def const_values(self) -> list[float]:
+        return [self.consts[k] for k in self.const_names]
+
+    def functions(self, sin=math.sin, cos=math.cos, values=operator.methodcaller("tolist")):
+        """(rhs, jac) of scipy_baselines for this formulation, over the constants given as
+        positional values in ``const_names`` order (numbers, or symbols for the peers)."""
+        b = baselines()
+        if self.formulation == "euler-angles":
+            return (b.euler_top_rhs(*self.const_values, sin=sin, cos=cos, values=values),
+                    b.euler_top_jac(*self.const_values, sin=sin, cos=cos, values=values))
+        return (b.quaternion_rhs(*self.const_values, values=values),
+                b.quaternion_jac(*self.const_values, values=values))
+
+    def axis(self, Y: np.ndarray) -> np.ndarray:
+        """ê₃ at every row of ``Y`` (states in this formulation), shape (n, 3)."""
+        b = baselines()
+        if self.formulation == "euler-angles":
+            return np.stack(b.euler_top_axis(Y.T, sin=np.sin, cos=np.cos), axis=1)
+        return np.stack(b.quaternion_axis(Y.T), axis=1)
+
+
+def scene_data(path_or_dict, **simulate) -> dict:
+    """The TOML data of a scene (a path or a dict), ``[simulate]`` keys replaced by ``simulate``."""
+    if isinstance(path_or_dict, dict):
+        data = {k: (dict(v) if isinstance(v, dict) else v) for k, v in path_or_dict.items()}
+    else:
+        with open(path_or_dict, "rb") as fh:
+            data = tomllib.load(fh)
+    data.setdefault("simulate", {}).update({k: v for k, v in simulate.items() if v is not None})
+    return data
+
+
+def problem(data: dict, formulation: str, name: str = "") -> Problem:
+    """The contenders' problem for scene data in one formulation. Raises ValueError when the
+    formulation cannot take the scene (Euler angles: asymmetric body, or ω̃ given at a pole)."""
+    b = baselines()
+    body, init, sim = data["body"], data["initial"], data["simulate"]
+    I1, I3 = float(body["I1"]), float(body["I3"])
+    I2 = float(body.get("I2", I1))
+    grav = data.get("gravity")
+    mgl = float(grav["M"]) * float(grav["g"]) * float(grav["l"]) if grav else 0.0
+    if data.get("damping"):
+        raise ValueError("damping: no hand-written baseline (no closed form to measure against)")
+    a, be, ga = (float(init[k]) for k in ("alpha", "beta", "gamma"))
+    has_rates = any(k in init for k in ("alpha_dot", "beta_dot", "gamma_dot"))
+    rates = [float(init.get(k, 0.0)) for k in ("alpha_dot", "beta_dot", "gamma_dot")] if has_rates else None
+    t = np.linspace(0.0, float(sim["t_end"]), int(sim.get("samples", 1001)))
+    consts = {"I1": I1, "I2": I2, "I3": I3, "mgl": mgl}
+    if formulation == "euler-angles":
+        if I2 != I1:
+            raise ValueError("euler-angles: the hand-written Euler-angle top is symmetric (I1 = I2)")
+        if rates is None:
+            if abs(math.sin(be)) < 1e-3:
+                raise ValueError("euler-angles: omega given at a pole, the Euler rates are undefined")
+            rates = b.euler_rates(be, ga, *map(float, init["omega"]))
+        return Problem(name, formulation, consts, [a, be, ga, *rates], t)
+    if formulation == "quaternion":
+        w = b.body_rates(be, ga, *rates) if rates is not None else list(map(float, init["omega"]))
+        return Problem(name, formulation, consts, [*b.quaternion_from_angles(a, be, ga), *w], t)
+    raise ValueError(f"unknown baseline formulation {formulation!r}")
+
+
+# ---------------------------------------------------------------------------------------------
+# SciPy
+
+
+def scipy_setup(prob: Problem, method: str):
+    """The callables SciPy gets (built once, outside the timing)."""
+    rhs, jac = prob.functions()
+    return {"fun": rhs, **({"jac": jac} if SCIPY[method] in ("Radau", "LSODA", "odeint") else {})}
+
+
+def solve_scipy(prob: Problem, method: str, rtol: float, atol: float, setup=None):
+    from scipy.integrate import odeint, solve_ivp
+
+    kw = setup or scipy_setup(prob, method)
+    t = prob.t
+    if SCIPY[method] == "odeint":
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            Y, info = odeint(kw["fun"], prob.y0, t, Dfun=kw["jac"], tfirst=True, rtol=rtol, atol=atol,
+                             mxstep=1_000_000, full_output=True)
+        if info["message"] != "Integration successful.":
+            raise IntegrationError(f"scipy odeint: {info['message']}")
+        return Y, int(info["nfe"][-1])
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sol = solve_ivp(kw["fun"], (t[0], t[-1]), prob.y0, method=SCIPY[method], t_eval=t,
+                        rtol=rtol, atol=atol, **({"jac": kw["jac"]} if "jac" in kw else {}))
+    if not sol.success:
+        raise IntegrationError(f"scipy {SCIPY[method]}: {sol.message}")
+    return sol.y.T, sol.nfev
+
+
+# ---------------------------------------------------------------------------------------------
+# CasADi
+
+
+@functools.cache
+def _casadi_ode(formulation: str):
+    """(x, p, ode): the baseline equations as CasADi SX, the constants symbolic."""
+    import casadi as ca
+
+    ny, names = STATE_SIZE[formulation], CONST_NAMES[formulation]
+    x, p = ca.SX.sym("x", ny), ca.SX.sym("p", len(names))
+    sym = Problem("", formulation, {k: p[i] for i, k in enumerate(names)}, [], np.zeros(2))
+    rhs, _ = sym.functions(sin=ca.sin, cos=ca.cos, values=list)
+    return x, p, ca.vertcat(*rhs(0.0, [x[i] for i in range(ny)]))
+
+
+def casadi_setup(prob: Problem, method: str, rtol: float, atol: float):
+    """The integrator function for one tolerance and output grid (built outside the timing)."""
+    import casadi as ca
+
+    x, p, ode = _casadi_ode(prob.formulation)
+    plugin, opts = CASADI[method]
+    opts = dict(opts, reltol=rtol, abstol=atol, max_num_steps=1_000_000)
+    return ca.integrator("F", plugin, {"x": x, "p": p, "ode": ode}, float(prob.t[0]), prob.t[1:].tolist(), opts)
+
+
+def solve_casadi(prob: Problem, method: str, rtol: float, atol: float, setup=None):
+    F = setup or casadi_setup(prob, method, rtol, atol)
+    try:
+        xf = F(x0=prob.y0, p=prob.const_values)["xf"]
+    except RuntimeError as exc:
+        raise IntegrationError(f"casadi {method}: {str(exc).splitlines()[-1][:120]}") from None
+    Y = np.vstack([np.asarray(prob.y0, dtype=float), np.asarray(xf).T])
+    return Y, int(F.stats().get("nfevals", 0))
+
+
+# ---------------------------------------------------------------------------------------------
+# PyDy
+
+
+#: formulation -> seconds PyDy took to generate and Cython-compile its rhs (the first time).
+PYDY_BUILD_TIME: dict[str, float] = {}
+
+
+@functools.cache
+def _pydy_rhs(formulation: str):
+    """The baseline equations as SymPy expressions through PyDy's ODE function generator
+    (Cython backend): f(x, t, constants)."""
+    import sympy as sp
+    from pydy.codegen.ode_function_generators import generate_ode_function
+
+    if formulation == "euler-angles":
+        coords, speeds = sp.symbols("alpha beta gamma"), sp.symbols("alpha_d beta_d gamma_d")
+    else:
+        coords, speeds = sp.symbols("q0:4"), sp.symbols("w1:4")
+    names = CONST_NAMES[formulation]
+    consts = sp.symbols(" ".join(names))
+    sym = Problem("", formulation, dict(zip(names, consts)), [], np.zeros(2))
+    rhs, _ = sym.functions(sin=sp.sin, cos=sp.cos, values=list)
+    expr = sp.Matrix(rhs(0, [*coords, *speeds]))
+    t0 = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        f = generate_ode_function(expr, list(coords), list(speeds), list(consts), generator="cython")
+    PYDY_BUILD_TIME[formulation] = time.perf_counter() - t0
+    return f
+
+
+def pydy_setup(prob: Problem, method: str = "pydy-odeint"):
+    return _pydy_rhs(prob.formulation)
+
+
+def solve_pydy(prob: Problem, method: str, rtol: float, atol: float, setup=None):
+    from scipy.integrate import odeint
+
+    f = setup or pydy_setup(prob, method)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        Y, info = odeint(f, prob.y0, prob.t, args=(np.array(prob.const_values),), rtol=rtol, atol=atol,
+                         mxstep=1_000_000, full_output=True)
+    if info["message"] != "Integration successful.":
+        raise IntegrationError(f"pydy odeint: {info['message']}")
+    return Y, int(info["nfe"][-1])
+
+
+# ---------------------------------------------------------------------------------------------
+# one registry for the bench
+
+
+@dataclass(frozen=True)
+class Contender:
+    family: str            # "scipy" | "casadi" | "pydy"
+    methods: tuple[str, ...]
+    setup: object          # (problem, method, rtol, atol) -> whatever solve takes, built untimed
+    solve: object          # (problem, method, rtol, atol, setup) -> (Y, nfev)
+    per_tolerance_setup: bool = False
+
+
+CONTENDERS = {
+    "scipy": Contender("scipy", tuple(SCIPY), lambda p, m, r, a: scipy_setup(p, m), solve_scipy),
+    "casadi": Contender("casadi", tuple(CASADI), casadi_setup, solve_casadi, per_tolerance_setup=True),
+    "pydy": Contender("pydy", PYDY, lambda p, m, r, a: pydy_setup(p, m), solve_pydy),
+}
+
+
+def families(peers: bool = True) -> list[str]:
+    """The contender families to run: SciPy always; casadi / pydy when asked and installed."""
+    have = peers_available() if peers else {}
+    out = ["scipy"]
+    if have.get("casadi"):
+        out.append("casadi")
+    if have.get("pydy") and have.get("cython"):
+        out.append("pydy")
+    return out

@@ -1,0 +1,129 @@
+"""The few places where `derive bench` reaches below the public API, kept in one module.
+
+Everything else in the bench goes through ``derive.simulate``, ``derive.simulate_batch``, the
+command line (``python -m derive simulate``) and the committed ``generated/`` artefacts, so it
+keeps working while the pipeline behind them changes. What needs more lives here, each piece
+small, and each caller degrades to "unavailable (<why>)" in the report if one breaks:
+
+* :func:`kernel_case` — the compiled kernel of a scene with its initial state and parameters,
+  for one rhs call through ctypes and the solve-only C batch loop;
+* :func:`own_batch_call` — the one C call ``simulate_batch`` makes, inputs prepared: its cost
+  without Python;
+* :func:`output_map_call` — the output map alone (the compiled ``outputs_at``) on a solved
+  trajectory: the part of that C call that is not the integration;
+* :func:`heavy_top_expressions` — the SymPy right-hand side of the heavy top, for the
+  ``sympy.lambdify`` comparison;
+* :data:`DERIVE_SCRIPT` — a fresh process that times the SymPy derivation and the code
+  generation of one scene's model.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass
+class KernelCase:
+    kernel: object          # derive.runtime.integrate.Kernel
+    formulation: str
+    y0: np.ndarray
+    p: np.ndarray
+    t: np.ndarray
+    rtol: float
+    atol: float
+
+    def solve(self, method: str = "dop853"):
+        """The C solve alone: states at the output times."""
+        return self.kernel.solve(method, self.y0, self.p, self.t, rtol=self.rtol, atol=self.atol)
+
+
+def kernel_case(scene, formulation: str | None = None, **overrides) -> KernelCase:
+    """The kernel `simulate` would run for ``scene`` (path or dict), with its inputs."""
+    from derive.sim import simulation as sim
+    from derive.sim.scene import load_scene
+
+    sc = load_scene(scene, **overrides)
+    form = formulation or sim.choose_formulation(sc)
+    key = (form, sc.symmetric, sim.effect_names(sc))
+    model = sim.model_for(*key)
+    return KernelCase(sim.kernel_for(*key), form, sim._initial_state(sc, model), sim._params(sc, model),
+                      sc.t_out, sc.simulate.rtol, sc.simulate.atol)
+
+
+def batch_inputs(scenes, formulation: str):
+    """(kernel, y0s, ps, t, rtol, atol) of a list of scenes in one formulation: what
+    ``Kernel.solve_batch`` takes, i.e. the raw C batch loop."""
+    cases = [kernel_case(s, formulation) for s in scenes]
+    c = cases[0]
+    return (c.kernel, np.array([k.y0 for k in cases]), np.array([k.p for k in cases]), c.t, c.rtol, c.atol)
+
+
+def own_batch_call(scenes):
+    """A callable making the one C call ``simulate_batch`` makes for ``scenes`` (state maps,
+    integration and outputs of every scene), its inputs prepared beforehand: what
+    ``simulate_batch`` costs without its Python."""
+    from derive.sim import auto
+    from derive.runtime import catalogue
+    from derive.sim import simulation as sim
+    from derive.runtime.integrate import ModelKernel
+    from derive.sim.scene import load_scene
+
+    scs = [load_scene(s) for s in scenes]
+    formulation, pole_check = auto.batch_plan(scs)[0]
+    desc = catalogue.describe((formulation, scs[0].symmetric, scs[0].effects))
+    method = sim.choose_method(scs[0])
+    kernel = ModelKernel.load(desc, method)
+    args = sim._settings(scs[0], method, kernel)
+    inputs = np.array([sim.inputs_of(sc) for sc in scs])
+    ps = np.array([sim.params_of(sc, desc) for sc in scs])
+    t = scs[0].t_out
+    return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
+
+
+def output_map_call(scene):
+    """A callable running the compiled output map (``<model>_outputs_at``: every output at every
+    sample) on the states ``simulate`` integrated for ``scene``: what of ``simulate``'s C call is
+    not the integration."""
+    from derive.sim import auto
+    from derive.runtime import catalogue
+    from derive.sim import simulation as sim
+    from derive.runtime.integrate import ModelKernel
+    from derive.sim.scene import load_scene
+
+    sc = load_scene(scene)
+    formulation, pole_check = auto.plan(sc)[0]
+    desc = catalogue.describe((formulation, sc.symmetric, sc.effects))
+    method = sim.choose_method(sc)
+    kernel = ModelKernel.load(desc, method)
+    t = sc.t_out
+    _, y, p, _ = kernel.simulate(sim.inputs_of(sc), sim.params_of(sc, desc), t,
+                                 sim._settings(sc, method, kernel), pole_check)
+    y, p = y.copy(), p.copy()
+    return lambda: kernel.outputs_at(t, y, p)
+
+
+def heavy_top_expressions():
+    """(states, params, rhs) of the contract's heavy top (generated/c/heavy_top.c) as SymPy."""
+    from derive.symbolic import models
+
+    m = models.CATALOGUE["heavy_top"]()
+    return tuple(m.states), tuple(m.params), tuple(m.rhs)
+
+
+#: Run in a fresh interpreter: ``python -c DERIVE_SCRIPT <scene file or JSON>``; prints one JSON
+#: line: seconds of the SymPy derivation of the scene's model and of its code generation (what a
+#: model that is not in generated/ or the cache costs before anything is compiled).
+DERIVE_SCRIPT = r"""
+import json, sys, time
+arg = sys.argv[1]
+scene = json.loads(arg) if arg.startswith("{") else arg
+from derive.sim import simulation as sim
+from derive.sim.scene import load_scene
+sc = load_scene(scene)
+key = (sim.choose_formulation(sc), sc.symmetric, sim.effect_names(sc))
+a = time.perf_counter(); sim.model_for(*key)
+b = time.perf_counter(); sim.sources_for(*key)
+c = time.perf_counter()
+print(json.dumps({"derivation": b - a, "codegen": c - b}))
+"""

@@ -1,0 +1,27 @@
+"""The lecture: its formulas checked against the derivation, and its analysis done for any body.
+
+Takes: the derivation (:mod:`derive.symbolic`). Gives: the claims of the lecture on rigid-body
+motion (:mod:`~derive.lecture.claims`, each with where it stands in the notes and its meaning),
+their verdicts (:mod:`~derive.lecture.verify`: holds, typo with the corrected form, fails) and
+the reports ``generated/lecture-verification.md`` and ``generated/derivation.md``
+(:mod:`~derive.lecture.report`). The lecture's formulas are the thing checked, never used.
+``derive analyze`` (:mod:`~derive.lecture.analysis`) does the lecture's analysis — energies,
+equations, cyclic coordinates, integrals, relative equilibria and their stability — for a
+scene's own body, evaluated at the scene's numbers.
+
+May import: :mod:`derive.sim` (a scene, for the analysis) and the stages below it,
+:mod:`derive.errors`.
+"""
+import importlib
+
+
+def __getattr__(name):
+    # ``derive.lecture`` was one module (now :mod:`derive.lecture.claims`): its names still
+    # resolve here, loaded on first use (the claims need SymPy).
+    if name.startswith("__") or name in ("claims", "verify", "report"):
+        raise AttributeError(name)
+    claims = importlib.import_module("derive.lecture.claims")
+    try:
+        return getattr(claims, name)
+    except AttributeError:
+        raise AttributeError(f"module 'derive.lecture' has no attribute {name!r}") from None

@@ -1,0 +1,13 @@
+"""Stage 2, the integration methods as data (the numbered contract a method provides).
+
+Takes: nothing from a scene. Gives: the method registry (:mod:`~derive.methods.registry`:
+a tableau plus a driver each, ``DEFAULT_METHOD``, the SciPy references), the exact rational
+Butcher tableaux (:mod:`~derive.methods.tableaux`), the Lie–Poisson splitting schemes
+(:mod:`~derive.methods.splitting`) and the one status enum shared by C and Python
+(:mod:`~derive.methods.status`).
+
+A new method adds a tableau (or a splitting scheme) and one registry entry: numbers, not logic.
+
+May import: :mod:`derive.symbolic` (which formulations and effects a method can run),
+:mod:`derive.errors`.
+"""

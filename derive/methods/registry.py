@@ -1,0 +1,142 @@
+"""Integration methods: the registry of tableaux and drivers (rendered into C by :mod:`derive.codegen.solvers`).
+
+A method is a :class:`~derive.methods.tableaux.Tableau` plus the *driver* that runs it:
+
+``adaptive``  explicit embedded pair, step-size control (Hairer's DOP853 controller), dense
+              output at the requested times — ``(rtol, atol, h0, max_steps)``
+``fixed``     explicit, each output interval split into ``ceil(dt/h)`` equal steps — ``(h,)``
+``implicit``  fully implicit (Gauss–Legendre), fixed steps as above, simplified Newton with the
+              model's Jacobian — ``(h, newton_tol, newton_maxiter)``
+
+Adding a method adds a tableau and one :data:`METHODS` entry; ``templates/c/solvers.c.j2``
+renders every entry through the same stepper code. The generated C API (``<prefix>_solvers.h``)
+is, for each method ``m`` and model prefix ``M``::
+
+    int M_solve_m(const double *y0, const double *p, const double *t_out, long n_out,
+                  <driver parameters>, double *y_out, derive_stats *st);
+    int M_solve_batch_m(long n_batch, const double *y0s, const double *ps,
+                        const double *t_out, long n_out, <driver parameters>,
+                        double *y_out, derive_stats *st);
+"""
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+from derive.symbolic.effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
+from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
+
+# Each driver's extra C parameters, in order: (C type, name). Used by the header template and by
+# derive.runtime.integrate for the ctypes signatures, so the two cannot disagree.
+DRIVER_PARAMS: dict[str, tuple[tuple[str, str], ...]] = {
+    "adaptive": (("double", "rtol"), ("double", "atol"), ("double", "h0"), ("long", "max_steps")),
+    "fixed": (("double", "h"),),
+    "implicit": (("double", "h"), ("double", "newton_tol"), ("int", "newton_maxiter")),
+}
+
+@dataclass(frozen=True)
+class Method:
+    """A registered integration method: what runs (tableau) and how (driver)."""
+
+    name: str
+    tableau: Tableau
+    driver: str
+    summary: str
+
+    def __post_init__(self):
+        if self.driver not in DRIVER_PARAMS:
+            raise ValueError(f"unknown driver {self.driver!r}")
+        if self.driver == "adaptive" and not self.tableau.adaptive:
+            raise ValueError(f"{self.name}: adaptive driver needs error-estimator weights")
+        if (self.driver == "implicit") != self.tableau.implicit:
+            raise ValueError(f"{self.name}: implicit tableaux need the implicit driver")
+
+    @property
+    def params(self) -> tuple[tuple[str, str], ...]:
+        return DRIVER_PARAMS[self.driver]
+
+
+METHODS: dict[str, Method] = {m.name: m for m in (
+    Method("dop853", DOP853, "adaptive",
+           "Dormand-Prince 8(5,3), adaptive step, order-7 dense output (Hairer's DOP853)"),
+    Method("rk4", RK4, "fixed", "classical Runge-Kutta, order 4, fixed step"),
+    Method("gauss4", GAUSS4, "implicit",
+           "Gauss-Legendre, 2 stages, order 4, symplectic, fixed step"),
+    Method("gauss6", GAUSS6, "implicit",
+           "Gauss-Legendre, 3 stages, order 6, symplectic, fixed step"),
+    Method("dop853_fixed", DOP853, "fixed",
+           "DOP853's order-8 formula on fixed steps, no error control (reference runs)"),
+)}
+
+#: The method "auto" runs: adaptive, any tolerance, dense output.
+DEFAULT_METHOD = "dop853"
+
+#: Methods run by SciPy's solve_ivp on the generated NumPy right-hand side (references for
+#: comparison, not the fast path): scene name -> (solve_ivp method, one-line description).
+REFERENCE_METHODS: dict[str, tuple[str, str]] = {
+    "scipy-rk45": ("RK45", "scipy.integrate.solve_ivp RK45 (reference)"),
+    "scipy-dop853": ("DOP853", "scipy.integrate.solve_ivp DOP853 (reference)"),
+    "scipy-radau": ("Radau", "scipy.integrate.solve_ivp Radau, implicit (reference)"),
+    "scipy-lsoda": ("LSODA", "scipy.integrate.solve_ivp LSODA, stiffness switching (reference)"),
+}
+
+#: Methods hidden from scenes (reference runs of the benchmarks and tests).
+INTERNAL_METHODS = ("dop853_fixed",)
+
+
+def compiled_methods() -> dict:
+    """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`) and
+    the Lie–Poisson splittings of :mod:`derive.methods.splitting` (their own template). Each entry has
+    ``name``, ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
+    return _compiled()
+
+
+@functools.lru_cache(maxsize=1)
+def _compiled():
+    from types import MappingProxyType
+
+    from derive.methods.splitting import METHODS as SPLITTING
+
+    return MappingProxyType({**METHODS, **SPLITTING})  # both fixed at import: merged once
+
+
+def method(name: str):
+    """The compiled method called ``name`` (KeyError if there is none)."""
+    return compiled_methods()[name]
+
+
+def method_reason(name: str, formulation: str, effects) -> str | None:
+    """None if the compiled method ``name`` can run that formulation with those effects, else
+    why not ("auto" as the formulation: can any formulation)."""
+    return _method_reason(name, formulation, tuple(effects), _EFFECTS_VERSION[0])
+
+
+@functools.lru_cache(maxsize=512)
+def _method_reason(name: str, formulation: str, effects: tuple, version: int) -> str | None:
+    """``method_reason``, cached per effects-registry version (the answer depends on the
+    effects' declarations)."""
+    from derive.methods import splitting
+    from derive.symbolic.formulations import UNIVERSAL
+
+    if name not in splitting.METHODS:
+        return None
+    from types import SimpleNamespace
+
+    form = UNIVERSAL if formulation == "auto" else formulation
+    return splitting.applicable(SimpleNamespace(formulation=form, effects=tuple(effects)))
+
+
+def scene_methods() -> dict[str, str]:
+    """What a scene's ``simulate.method`` may name: "auto", the compiled methods, the SciPy
+    references; name -> one-line description."""
+    out = {"auto": f"let derive choose ({DEFAULT_METHOD} unless the scene says otherwise)"}
+    out.update({name: m.summary for name, m in compiled_methods().items()
+                if name not in INTERNAL_METHODS})
+    out.update({name: text for name, (_, text) in REFERENCE_METHODS.items()})
+    return out
+
+
+def fixed_step_methods() -> tuple[str, ...]:
+    """The compiled methods that take a fixed step h."""
+    return tuple(name for name, m in compiled_methods().items() if m.driver != "adaptive"
+                 and name not in INTERNAL_METHODS)

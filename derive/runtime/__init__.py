@@ -1,0 +1,12 @@
+"""Stage 4, the runtime: compile generated C, cache it, load it, and call it.
+
+Takes: a model key (formulation, symmetry, effects) or source files. Gives: the model's
+description (:mod:`~derive.runtime.catalogue`: from ``generated/``, or derived once and cached
+by a content hash), compiled libraries in the self-healing compile cache
+(:mod:`~derive.runtime.cbuild`), and the ctypes kernels that integrate in one C call
+(:mod:`~derive.runtime.integrate`, :mod:`~derive.runtime.splitter`).
+
+May import: :mod:`derive.codegen`, :mod:`derive.methods`, :mod:`derive.symbolic`,
+:mod:`derive.errors`. The warm path (a model already generated and compiled) imports neither
+SymPy nor Jinja2.
+"""

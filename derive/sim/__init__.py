@@ -1,0 +1,13 @@
+"""Stage 5, simulation: a scene file in, a :class:`~derive.sim.simulation.Result` (and files) out.
+
+Takes: a scene (a TOML path, an example's name, or a dict). Gives: the validated
+:class:`~derive.sim.scene.Scene` (:mod:`~derive.sim.scene`; examples by name in
+:mod:`~derive.sim.examples`), the numbers a kernel takes (:mod:`~derive.sim.inputs`), the
+formulation ``auto`` picks (:mod:`~derive.sim.auto`), the result of one C call
+(:mod:`~derive.sim.simulation`), the output files written all or nothing
+(:mod:`~derive.sim.outputs`), the plots (:mod:`~derive.sim.plots`) and the scene format's
+reference page (:mod:`~derive.sim.scene_doc`).
+
+May import: :mod:`derive.runtime`, :mod:`derive.codegen`, :mod:`derive.methods`,
+:mod:`derive.symbolic`, :mod:`derive.errors`.
+"""

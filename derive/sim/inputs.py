@@ -1,0 +1,82 @@
+"""A validated scene as the numbers a compiled kernel takes: the init map's inputs, the
+model's parameters, the method, and the driver's settings (a fixed step and its budget).
+
+Takes a :class:`derive.sim.scene.Scene` and a model description
+(:class:`derive.runtime.catalogue.Description`); gives NumPy arrays and plain numbers.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from derive.errors import SceneError
+from derive.methods.registry import DEFAULT_METHOD
+from derive.runtime.integrate import ModelKernel
+from derive.sim.scene import Scene
+from derive.symbolic import effects
+
+
+def inputs_of(scene: Scene) -> np.ndarray:
+    """The init map's inputs (`formulations.INPUT_NAMES`): angles, body ω̃, the Euler-angle rates
+    where the scene gave them (rates_given = 1), else zeros (rates_given = 0)."""
+    i = scene.initial
+    rates = (i.alpha_dot, i.beta_dot, i.gamma_dot) if i.has_rates else (0.0, 0.0, 0.0)
+    return np.array([i.alpha, i.beta, i.gamma, *i.omega, *rates, 1.0 if i.has_rates else 0.0])
+
+
+def params_of(scene: Scene, desc) -> np.ndarray:
+    """The model's parameters from the scene; the ones the init map derives start as 0."""
+    values = scene.param_values()
+    derived = set(desc.derived_params)
+    return np.array([0.0 if k in derived else values[name] for k, name in enumerate(desc.params)])
+
+
+def choose_method(scene: Scene) -> str:
+    return DEFAULT_METHOD if scene.simulate.method == "auto" else scene.simulate.method
+
+
+def default_step(scene: Scene) -> float:
+    """A fixed step for the fixed-step methods when the scene gives none: 1/200 of the fastest
+    natural period (spin, or a rate an effect sets), and no larger than the output spacing."""
+    b, i = scene.body, scene.initial
+    rates = [float(np.linalg.norm(i.omega)) * max(b.moments) / min(b.moments)]
+    for t in scene.tables.values():
+        rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
+    fastest = max(max(rates), 1e-12)
+    dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
+    return float(min(2 * np.pi / fastest / 200, dt_out))
+
+
+def fixed_steps(scene: Scene, h: float) -> int:
+    """How many steps a fixed-step run takes: ceil(Δt/h) per output interval, counted as the C
+    drivers count them (a ratio within a relative 1e-10 above an integer counts as that
+    integer)."""
+    dt = scene.simulate.t_end / (scene.simulate.samples - 1)
+    r = dt / h
+    if not math.isfinite(r) or r > 1e15:
+        return 10**18
+    n = math.ceil(r)
+    if n > 1 and n - r > 1.0 - 1e-10 * r:
+        n -= 1
+    return max(n, 1) * (scene.simulate.samples - 1)
+
+
+def _check_budget(scene: Scene, method: str, h: float) -> None:
+    """A fixed-step run is refused up front (bad input, before any work) when its steps exceed
+    ``[simulate] max_steps``."""
+    steps = fixed_steps(scene, h)
+    if steps > scene.simulate.max_steps:
+        shown = f"{steps}" if steps < 10**18 else "more than 1e18"
+        raise SceneError(f"{scene.source}: simulate.h: {method} with h = {h:.6g} s over t_end = "
+                         f"{scene.simulate.t_end:.6g} s takes {shown} steps, more than "
+                         f"simulate.max_steps = {scene.simulate.max_steps}")
+
+
+def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
+    s = scene.simulate
+    h = s.h
+    if not kernel.adaptive:
+        h = default_step(scene) if h is None else h
+        _check_budget(scene, method, h)
+    return kernel.driver_args(s.rtol, s.atol, h, s.max_steps)

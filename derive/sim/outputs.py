@@ -1,0 +1,191 @@
+"""Output files, all or nothing.
+
+``check_paths`` looks at every output path before any work is done and names the first problem
+(a directory, a missing or non-directory parent, no permission, a read-only or pseudo file
+system such as /proc) as a :class:`SceneError` ``<path>: <what>`` (CLI exit 2).
+
+``write_all`` then writes each output to a temporary file in its target's directory (so the final
+rename never crosses a file system) and renames them into place only after *all* of them were
+produced. If anything fails -- a writer raises, the disk fills up, Ctrl-C -- every temporary is
+removed and the existing files are untouched. Should a rename fail half-way (rare: the directory
+was checked), the targets already replaced are restored from hard-linked backups where the file
+system allows it.
+
+New files get the mode the umask gives a new file (``0o666 & ~umask``), as ``open()`` would;
+``tempfile.mkstemp`` alone makes them 0600. The umask is read from ``/proc/self/status`` where
+it can be (setting it to read it is process-wide, so that fallback happens under a lock).
+"""
+from __future__ import annotations
+
+import errno
+import os
+import stat
+import tempfile
+import threading
+from pathlib import Path
+from typing import Callable, Mapping
+
+from derive.errors import SceneError
+
+Writer = Callable[[object], None]  # called with a binary file object open for writing
+
+_umask_lock = threading.Lock()
+
+
+def umask() -> int:
+    """The process's umask, without changing it where the system allows."""
+    try:
+        with open("/proc/self/status", encoding="ascii", errors="replace") as f:
+            for line in f:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    with _umask_lock:  # os.umask both sets and returns: set it back at once
+        mask = os.umask(0o022)
+        os.umask(mask)
+    return mask
+
+
+def new_file_mode() -> int:
+    """The permission bits ``open(path, "w")`` would give a new file."""
+    return 0o666 & ~umask()
+
+
+def _target(path: str | os.PathLike) -> Path:
+    """Where ``path`` really is: a symlink is followed, so the file it points to is replaced
+    (not the link); the path's own parent otherwise."""
+    p = Path(path)
+    return Path(os.path.realpath(p)) if p.is_symlink() else p
+
+
+def _why(err: OSError) -> str:
+    if err.errno == errno.EROFS:
+        return "read-only file system"
+    if err.errno in (errno.EACCES, errno.EPERM):
+        return "permission denied"
+    if err.errno == errno.ENOSPC:
+        return "no space left on device"
+    if err.errno == errno.EDQUOT:
+        return "disk quota exceeded"
+    if err.errno == errno.ENOENT:  # e.g. /proc: the folder is there but takes no new files
+        return "the file system takes no new files there"
+    return err.strerror or str(err)
+
+
+def check_paths(paths) -> None:
+    """Raise SceneError ``<path>: <what>`` for the first output path that cannot be written.
+
+    ``paths`` may hold None (an output not asked for). Checked: the same file named twice, the
+    path is a directory or another non-regular file, its parent is missing or not a directory,
+    and a probe file can actually be created (and removed) in the parent, which catches
+    permissions, read-only mounts and pseudo file systems alike.
+    """
+    seen: dict[str, str] = {}
+    for path in paths:
+        if path is None:
+            continue
+        name = os.fspath(path)
+        if not name or name.endswith(os.sep):
+            raise SceneError(f"{name or repr(name)}: output: not a file name")
+        target = _target(name)
+        real = os.path.realpath(target)
+        if real in seen:
+            raise SceneError(f"{name}: output: the same file as {seen[real]}")
+        seen[real] = name
+        try:
+            st = target.stat()
+        except (FileNotFoundError, NotADirectoryError):
+            st = None  # the parent's problem, named below
+        except OSError as err:
+            raise SceneError(f"{name}: output: {_why(err)}") from None
+        if st is not None and stat.S_ISDIR(st.st_mode):
+            raise SceneError(f"{name}: output: is a directory")
+        if st is not None and not stat.S_ISREG(st.st_mode):
+            raise SceneError(f"{name}: output: not a regular file")
+        parent = target.parent
+        if not parent.exists():
+            raise SceneError(f"{name}: output: directory {str(parent)!r} does not exist")
+        if not parent.is_dir():
+            raise SceneError(f"{name}: output: {str(parent)!r} is not a directory")
+        try:
+            fd, probe = tempfile.mkstemp(dir=parent, prefix=f".{target.name}.", suffix=".probe")
+        except OSError as err:
+            raise SceneError(f"{name}: output: cannot create a file in {str(parent)!r} "
+                             f"({_why(err)})") from None
+        os.close(fd)
+        os.unlink(probe)
+
+
+def write_all(outputs: Mapping[str | os.PathLike, Writer]) -> None:
+    """Write every ``{path: writer}`` output, all or nothing.
+
+    Each writer is called with a binary file object (a temporary beside its target). Only when
+    every writer has returned are the temporaries renamed onto their targets. On any exception
+    (including KeyboardInterrupt) the temporaries are removed and the exception propagates;
+    an ``OSError`` while writing is re-raised as SceneError ``<path>: output: <what>``.
+    """
+    mode = new_file_mode()
+    staged: list[tuple[str, Path, str]] = []  # (name, target, temporary)
+    try:
+        for path, writer in outputs.items():
+            name = os.fspath(path)
+            target = _target(name)
+            try:
+                fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.",
+                                           suffix=".part")
+            except OSError as err:
+                raise SceneError(f"{name}: output: cannot create a file in "
+                                 f"{str(target.parent)!r} ({_why(err)})") from None
+            staged.append((name, target, tmp))
+            try:
+                os.fchmod(fd, mode)
+                with os.fdopen(fd, "wb") as fh:
+                    writer(fh)
+            except OSError as err:
+                raise SceneError(f"{name}: output: cannot write ({_why(err)})") from None
+        _commit(staged)
+    except BaseException:
+        for _, _, tmp in staged:
+            try:
+                os.unlink(tmp)
+            except FileNotFoundError:
+                pass
+        raise
+
+
+def _commit(staged: list[tuple[str, Path, str]]) -> None:
+    """Rename every temporary onto its target; if one rename fails, undo the earlier ones."""
+    backups: list[str] = []
+    done: list[tuple[Path, bool, str | None]] = []  # (target, existed, backup of old content)
+    try:
+        for name, target, tmp in staged:
+            existed, backup = target.exists(), None
+            if existed:
+                try:
+                    os.link(target, f"{tmp}.old")
+                    backup = f"{tmp}.old"
+                    backups.append(backup)
+                except OSError:
+                    pass  # no hard links here: this one rename cannot be undone
+            try:
+                os.replace(tmp, target)
+            except OSError as err:
+                raise SceneError(f"{name}: output: cannot write ({_why(err)})") from None
+            done.append((target, existed, backup))
+    except BaseException:
+        for target, existed, backup in reversed(done):
+            try:
+                if backup is not None:
+                    os.replace(backup, target)
+                elif not existed:
+                    os.unlink(target)
+            except OSError:
+                pass
+        raise
+    finally:
+        for backup in backups:
+            try:
+                os.unlink(backup)
+            except FileNotFoundError:
+                pass

@@ -1,0 +1,753 @@
+"""Scene files: read, validate and describe one simulation of a rigid body about a fixed point.
+
+A scene is a TOML file (or a dict shaped like one) with the tables ``[body]``, ``[gravity]``,
+``[damping]`` (the effects' tables, declared in :mod:`derive.symbolic.effects`), ``[initial]`` and
+``[simulate]`` and an optional top-level ``title``; see the README ("Scene files") and
+``docs/scenes.md`` for every key, and ``scenes/*.toml`` for examples.
+
+Conventions (those of the whole package):
+
+* SI units; angles in radians, rates in rad/s, moments of inertia in kg m^2, times in s.
+* z-y-z Euler angles: alpha about the inertial z axis, beta about the intermediate y' axis,
+  gamma about the body 3 axis; R = Rz(alpha) Ry(beta) Rz(gamma) maps body to inertial components.
+* ``omega`` is the angular velocity in the *body* frame, (w1, w2, w3) along the principal axes.
+
+Every problem raises :class:`derive.errors.SceneError` with exactly one line,
+``<file>: <key or table>: <what is wrong>``, keys dotted (``body.I3``, ``simulate.rtol``). The
+first problem found is reported, tables in the order body, gravity, damping, initial, simulate.
+
+Decisions where the contract is silent (documented here once):
+
+* ``[body]``: I1 and I3 are required, I2 defaults to I1.
+* Effect tables (``[gravity]``, ``[damping]``, …) are declared by their effects
+  (:mod:`derive.symbolic.effects`): keys, units, checks, defaults and keys of which exactly one is given
+  (gravity's ``l`` or ``com``). A table present switches its effect on, even with zero
+  coefficients (a scene pays for what it names). ``l`` may be negative: the centre of mass then
+  sits *below* the pivot when body axis 3 points up (a hanging, pendulum-like body).
+* ``[initial]``: alpha, beta, gamma are required (any finite real). Give the Euler-angle rates or
+  ``omega``. If at least one rate is given, missing rates default to 0.0 (``beta_dot`` is usually
+  0 at a turning point, so scenes may omit it). When ``omega`` is given the rates are kept as
+  None: the inverse map omega -> rates divides by sin(beta).
+* ``[simulate]``: t_end is required; the other keys have the defaults in ``SIMULATE_DEFAULTS``.
+  ``h`` (an extension of the contract) is the step size in s of the fixed-step methods
+  ``FIXED_STEP_METHODS``; it is rejected with any other method (there it would be ignored
+  silently). h = None lets the integrator choose. ``max_steps`` (default 1000000) is the work
+  budget: fixed-step methods are refused up front when t_end / h exceeds it, adaptive ones stop
+  with a numerical failure when they spend it. rtol must lie in [100 eps, 1): below that no
+  double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
+  cannot exhaust memory.
+* A formulation that cannot represent the scene (its registry entry's ``applicable``, see
+  :mod:`derive.symbolic.formulations`) is rejected naming ``simulate.formulation`` and the reason.
+* Overrides (command-line flags, API keywords) replace keys of ``[simulate]`` before validation;
+  None means "not given". A bad override is reported under its ``simulate.<key>`` name with the
+  suffix "(given as an override)".
+"""
+from __future__ import annotations
+
+import dataclasses
+import difflib
+import math
+import numbers
+import os
+import re
+import stat
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import NamedTuple
+
+import numpy as np
+
+from derive.symbolic import effects
+from derive.symbolic import formulations
+from derive.methods import registry as solvers
+from derive.errors import SceneError
+from derive.sim import examples
+
+__all__ = [
+    "METHODS", "FIXED_STEP_METHODS", "FORMULATIONS", "SIMULATE_DEFAULTS",
+    "Body", "TableValues", "Initial", "Simulate", "Scene",
+    "load_scene", "body_omega",
+]
+
+#: Integration methods: name -> one-line description (from the solver registry).
+METHODS: dict[str, str] = solvers.scene_methods()
+#: The methods that take a fixed step size ``h``.
+FIXED_STEP_METHODS = solvers.fixed_step_methods()
+
+#: Formulations of the equations of motion: name -> one-line description (the registry).
+FORMULATIONS: dict[str, str] = formulations.CHOICES
+
+#: Defaults of the optional ``[simulate]`` keys (t_end has none: it is required).
+SIMULATE_DEFAULTS = {
+    "samples": 1001, "method": "auto", "rtol": 1e-10, "atol": 1e-12, "formulation": "auto",
+    "h": None, "max_steps": 1_000_000,
+}
+MAX_SAMPLES = 10_000_000
+#: Smallest rtol accepted: 100 machine epsilons (about 2.2e-14).
+MIN_RTOL = 100 * np.finfo(float).eps
+#: |sin(beta)| below this counts as "at a pole" of the z-y-z Euler angles.
+POLE_TOLERANCE = 1e-9
+MAX_STEPS_LIMIT = 10**12
+#: Relative slack of the triangle inequality, so that a flat plate (I3 = I1 + I2) survives rounding.
+TRIANGLE_SLACK = 1e-12
+
+_RATES = ("alpha_dot", "beta_dot", "gamma_dot")
+_FIXED_KEYS = {  # table -> its keys, in the order they are documented
+    "body": ("I1", "I2", "I3"),
+    "initial": ("alpha", "beta", "gamma", *_RATES, "omega"),
+    "simulate": ("t_end", "samples", "method", "rtol", "atol", "formulation", "h", "max_steps"),
+}
+
+
+def _table_keys() -> dict[str, tuple[str, ...]]:
+    """Every table's keys: body, the effects' tables (from the registry), initial, simulate."""
+    return _registry_view().keys
+
+
+class _View(NamedTuple):
+    """What validation reads from the registries, computed once per effects-registry version."""
+
+    keys: dict[str, tuple[str, ...]]  # table -> its keys in documented order (for messages)
+    key_sets: dict[str, frozenset]  # table -> the same keys as a set (for the checks)
+    #: The effect tables in registry order: (name, Table, its keys as readers (name, Key, is a
+    #: vector, check, must, default or ... when required)).
+    effect_tables: tuple[tuple[str, effects.Table, tuple], ...]
+    order: dict[tuple[str, ...], tuple[str, ...]]  # memo of _in_registry_order
+
+
+def _registry_view() -> _View:
+    """The tables' keys and readers for the current effects registry (built on first use)."""
+    view = _VIEW.get(effects.VERSION[0])
+    if view is not None:
+        return view
+    keys = {"body": _FIXED_KEYS["body"]}
+    keys.update({name: tuple(k.name for k in t.keys) for name, t in effects.TABLES.items()})
+    keys.update(initial=_FIXED_KEYS["initial"], simulate=_FIXED_KEYS["simulate"])
+    effect_tables = tuple(
+        (name, t, tuple((k.name, k, k.kind == "vector3", k.check, k.must,
+                         ... if k.default is effects.REQUIRED else k.default) for k in t.keys))
+        for name, t in effects.TABLES.items())
+    view = _View(keys, {name: frozenset(k) for name, k in keys.items()}, effect_tables, {})
+    _VIEW.clear()  # only the current version is ever asked for again
+    _VIEW[effects.VERSION[0]] = view
+    return view
+
+
+_VIEW: dict[int, _View] = {}
+
+
+def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
+    """The effects named in ``chosen``, in registry order (memoised per registry version)."""
+    order = _registry_view().order
+    names = order.get(chosen)
+    if names is None:
+        names = order[chosen] = tuple(name for name in effects.REGISTRY if name in chosen)
+    return names
+
+
+_TOP_KEYS = ("title",)
+
+
+# --------------------------------------------------------------------------------------------
+# The scene
+
+
+@dataclass(frozen=True)
+class Body:
+    """Principal moments of inertia in kg m^2, about the fixed point (about the centre of mass
+    when the scene has no gravity). Axis 3 is the symmetry axis of a symmetric body."""
+
+    I1: float
+    I2: float
+    I3: float
+
+    @property
+    def moments(self) -> tuple[float, float, float]:
+        return (self.I1, self.I2, self.I3)
+
+
+class TableValues(Mapping):
+    """The validated values of an effect's table (``scene.gravity.M``, ``scene.damping.c``),
+    absent optional keys as None; ``effect`` names the registry effect they select. For gravity,
+    ``com`` is always set ((0, 0, l) when l was given) and ``l`` is com[2] when the centre of
+    mass is on axis 3, else None."""
+
+    def __init__(self, table: str, values: dict, effect: str):
+        self.__dict__.update(_table=table, _values=dict(values), effect=effect)
+
+    def __getattr__(self, key):
+        try:
+            return self.__dict__["_values"][key]
+        except KeyError:
+            raise AttributeError(key) from None
+
+    def __setattr__(self, key, value):
+        raise AttributeError("scene tables are read-only")
+
+    def __getitem__(self, key):
+        return self._values[key]
+
+    def __iter__(self):
+        return iter(self._values)
+
+    def __len__(self):
+        return len(self._values)
+
+    def __eq__(self, other):
+        return (isinstance(other, TableValues) and self._table == other._table
+                and self._values == other._values)
+
+    def __hash__(self):
+        return hash((self._table, tuple(sorted(self._values.items()))))
+
+    def __repr__(self):
+        return f"TableValues({self._table!r}, {self._values!r})"
+
+    def given(self) -> dict:
+        """The keys as a scene file would give them (None values and derived keys dropped)."""
+        return {k: (list(v) if isinstance(v, tuple) else v) for k, v in self._values.items()
+                if v is not None and k in self.__dict__["_given"]}
+
+
+@dataclass(frozen=True)
+class Initial:
+    """Initial orientation (z-y-z Euler angles, rad) and angular velocity.
+
+    ``omega`` (body frame, rad/s) is always set. The Euler-angle rates (rad/s) are set only when
+    the scene gave them; when it gave ``omega`` they are None, because the inverse map divides
+    by sin(beta).
+    """
+
+    alpha: float
+    beta: float
+    gamma: float
+    alpha_dot: float | None
+    beta_dot: float | None
+    gamma_dot: float | None
+    omega: tuple[float, float, float]
+
+    @property
+    def has_rates(self) -> bool:
+        return self.alpha_dot is not None
+
+    @property
+    def at_pole(self) -> bool:
+        """True when beta is (numerically) 0 or pi, where the Euler angles are singular."""
+        return abs(math.sin(self.beta)) < POLE_TOLERANCE
+
+
+@dataclass(frozen=True)
+class Simulate:
+    """How to integrate: up to ``t_end`` (s), output at ``samples`` equally spaced times from 0
+    to t_end inclusive, with ``method`` (a key of METHODS), tolerances ``rtol``/``atol``, the
+    ``formulation`` (a key of FORMULATIONS) and, for fixed-step methods, step ``h`` (s) or None."""
+
+    t_end: float
+    samples: int
+    method: str
+    rtol: float
+    atol: float
+    formulation: str
+    h: float | None
+    max_steps: int = SIMULATE_DEFAULTS["max_steps"]
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A validated scene. ``gravity``/``damping`` are None when their table is absent.
+    ``source`` names the origin in error messages and is ignored by ``==``."""
+
+    title: str | None
+    body: Body
+    tables: dict  # effect table name -> TableValues, for the tables present
+    initial: Initial
+    simulate: Simulate
+    source: str = field(default="<dict>", compare=False)
+
+    def __getattr__(self, name):
+        # An effect table's values (scene.gravity, scene.damping, …), or None when absent.
+        if name.startswith("_") or name not in effects.TABLES:
+            raise AttributeError(name)
+        return self.tables.get(name)
+
+    @property
+    def effects(self) -> tuple[str, ...]:
+        """The registry effects the scene's tables select, in registry order, e.g.
+        ("gravity", "damping") or ("gravity_general",)."""
+        cached = self.__dict__.get("_effects")
+        if cached is not None and cached[0] == effects.VERSION[0]:
+            return cached[1]
+        names = _in_registry_order(tuple(t.effect for t in self.tables.values()))
+        object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
+        return names
+
+    def param_values(self) -> dict[str, float]:
+        """Every model parameter the scene fixes: the moments and each effect's parameters."""
+        b = self.body
+        values = {"I1": b.I1, "I2": b.I2, "I3": b.I3}
+        for t in self.tables.values():
+            values.update(effects.REGISTRY[t.effect].values(t))
+        return values
+
+    @property
+    def symmetric(self) -> bool:
+        return self.body.I1 == self.body.I2
+
+    @property
+    def t_out(self) -> np.ndarray:
+        """Output times (s): ``samples`` points from 0 to t_end inclusive (what np.linspace
+        gives, bit for bit: k·(t_end/(samples − 1)), the last one t_end exactly)."""
+        n, t_end = self.simulate.samples, self.simulate.t_end
+        t = np.arange(n, dtype=np.float64) * (t_end / (n - 1))
+        t[-1] = t_end
+        return t
+
+    def to_dict(self) -> dict:
+        """The scene as a TOML-shaped dict; ``load_scene(scene.to_dict()) == scene``."""
+        ini = self.initial
+        initial = {"alpha": ini.alpha, "beta": ini.beta, "gamma": ini.gamma}
+        if ini.has_rates:
+            initial.update(alpha_dot=ini.alpha_dot, beta_dot=ini.beta_dot, gamma_dot=ini.gamma_dot)
+        else:
+            initial["omega"] = list(ini.omega)
+        simulate = {k: v for k, v in dataclasses.asdict(self.simulate).items() if v is not None}
+        data = {"body": dataclasses.asdict(self.body)}
+        for name, values in self.tables.items():
+            data[name] = values.given()
+        data.update(initial=initial, simulate=simulate)
+        if self.title is not None:
+            data["title"] = self.title
+        return data
+
+
+def body_omega(beta, gamma, alpha_dot, beta_dot, gamma_dot):
+    """Body-frame angular velocity (rad/s) from z-y-z Euler-angle rates (the notes' formula):
+
+        w1 = -alpha_dot sin(beta) cos(gamma) + beta_dot sin(gamma)
+        w2 =  alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma)
+        w3 =  alpha_dot cos(beta) + gamma_dot
+
+    Works elementwise on NumPy arrays; on Python floats it uses ``math`` (the same libm values,
+    a tenth of NumPy's cost on scalars). Returns a tuple (w1, w2, w3).
+    """
+    m = math if isinstance(beta, float) and isinstance(gamma, float) else np
+    sb, sg, cg = m.sin(beta), m.sin(gamma), m.cos(gamma)
+    return (-alpha_dot * sb * cg + beta_dot * sg,
+            alpha_dot * sb * sg + beta_dot * cg,
+            alpha_dot * m.cos(beta) + gamma_dot)
+
+
+# --------------------------------------------------------------------------------------------
+# Loading
+
+
+def load_scene(scene, /, **overrides) -> Scene:
+    """Read and validate a scene.
+
+    ``scene`` is a path to a TOML file, a dict shaped like the TOML, or a :class:`Scene` (then
+    only the overrides are applied and checked). ``overrides`` replace keys of ``[simulate]``
+    (method, rtol, atol, ...); a value of None means "not given". Raises SceneError with one line
+    ``<file>: <key or table>: <what is wrong>``.
+    """
+    if isinstance(scene, Scene):
+        source, data = scene.source, scene.to_dict()
+    elif type(scene) is dict or isinstance(scene, Mapping):
+        source, data = "<dict>", scene
+    elif isinstance(scene, (str, os.PathLike)) and not isinstance(scene, bytes):
+        source = examples.resolve(os.fspath(scene), "scene")  # a bare name: a shipped example
+        data = _read_toml(source)
+    else:
+        raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
+                                                   f"like one or a Scene, not {type(scene).__name__}"))
+    return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
+
+
+MAX_SCENE_BYTES = 1 << 20  # a scene is a few hundred bytes; refuse to slurp a huge file
+_BOMS = {b"\xef\xbb\xbf": None, b"\xff\xfe": "UTF-16", b"\xfe\xff": "UTF-16",
+         b"\xff\xfe\x00\x00": "UTF-32", b"\x00\x00\xfe\xff": "UTF-32"}
+
+
+def _read_toml(source: str) -> dict:
+    """Parse a scene file: UTF-8 (a byte-order mark is skipped), a regular file of at most
+    MAX_SCENE_BYTES (not a FIFO or a device, which could block or never end)."""
+    def fail(what):
+        return SceneError(_line(source, "file", what))
+
+    try:
+        with open(source, "rb") as f:
+            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
+                raise fail("not a regular file")
+            raw = f.read(MAX_SCENE_BYTES + 1)
+    except FileNotFoundError as err:
+        raise fail("not found") from err
+    except IsADirectoryError as err:
+        raise fail("is a directory, not a scene file") from err
+    except PermissionError as err:
+        raise fail("permission denied") from err
+    except OSError as err:
+        raise fail(f"cannot read ({err.strerror or err})") from err
+    if len(raw) > MAX_SCENE_BYTES:
+        raise fail(f"larger than {MAX_SCENE_BYTES // 1024} KiB: not a scene file")
+    for bom in sorted(_BOMS, key=len, reverse=True):
+        if raw.startswith(bom):
+            if _BOMS[bom]:
+                raise fail(f"is {_BOMS[bom]} text; scene files are UTF-8")
+            raw = raw[len(bom):]
+            break
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError as err:
+        raise fail(f"not UTF-8 text (bad byte at offset {err.start})") from err
+    except RecursionError as err:
+        raise fail("invalid TOML: nested too deeply") from err
+    except tomllib.TOMLDecodeError as err:
+        # tomllib (3.11) puts the position at the end of its message: "... (at line 3, column 7)".
+        match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
+        where, what = (match.group(2), match.group(1)) if match else ("file", str(err))
+        raise SceneError(_line(source, where, f"invalid TOML: {what}")) from err
+    if _depth(data) > MAX_SCENE_DEPTH:
+        raise fail(f"values nested deeper than {MAX_SCENE_DEPTH} levels: not a scene file")
+    return data
+
+
+MAX_SCENE_DEPTH = 16  # a scene needs 3 (table, key, vector); the checks recurse into values
+
+
+def _depth(value) -> int:
+    """How deeply lists and tables nest in ``value`` (without recursion: any depth is safe)."""
+    deepest, stack = 0, [(value, 0)]
+    while stack:
+        v, d = stack.pop()
+        deepest = max(deepest, d)
+        if isinstance(v, dict):
+            stack.extend((x, d + 1) for x in v.values())
+        elif isinstance(v, list):
+            stack.extend((x, d + 1) for x in v)
+    return deepest
+
+
+def _line(source: str, key: str, what: str) -> str:
+    """The one-line message; newlines a value might smuggle in are flattened."""
+    return " ".join(f"{source}: {key}: {what}".splitlines())
+
+
+#: Longest value shown in an error line (a huge string or list is cut, so the line stays short).
+SHOW_LIMIT = 80
+
+
+def _show(value) -> str:
+    """A value as the user wrote it (TOML spelling for booleans, tables and strings), at most
+    about ``SHOW_LIMIT`` characters."""
+    text = _show_full(value)
+    return text if len(text) <= SHOW_LIMIT else text[:SHOW_LIMIT - 20] + f"... ({len(text)} characters)"
+
+
+def _show_full(value) -> str:
+    if isinstance(value, (bool, np.bool_)):
+        return f"{str(bool(value)).lower()} (a boolean)"
+    if isinstance(value, str):
+        if len(value) > SHOW_LIMIT:
+            return f"{value[:SHOW_LIMIT // 2]!r}... (a string of {len(value)} characters)"
+        return f"{value!r} (a string)"
+    if isinstance(value, Mapping):
+        return "a table"
+    if isinstance(value, float):
+        return repr(float(value))
+    if isinstance(value, numbers.Real):
+        text = str(value)
+        return text if len(text) <= 24 else f"{text[:8]}... (an integer of {len(text)} digits)"
+    if isinstance(value, (list, tuple)):
+        if len(value) > 8:
+            return f"a list of {len(value)} items"
+        return "[" + ", ".join(_show_full(v) for v in value) + "]"
+    return f"a {type(value).__name__}"
+
+
+def _real(value) -> float | None:
+    """value as a finite float, or None. Booleans are not numbers; ints are welcome."""
+    if type(value) is float:  # the common case first: no ABC checks on the warm path
+        return value if math.isfinite(value) else None
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        x = float(value)
+    except OverflowError:  # an integer beyond the float range
+        return None
+    return x if math.isfinite(x) else None
+
+
+def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -> str:
+    """The text in 'unknown key (...)': a likely fix (the table the key belongs in, or a close
+    spelling of a valid key), then what was expected."""
+    hint = ""
+    home = [t for t, keys in _table_keys().items() if key in keys and t != where]
+    close = [k for k in valid if k.lower() == str(key).lower()]
+    close = close or difflib.get_close_matches(str(key), valid, n=1, cutoff=0.6)
+    if home:
+        hint = f"{key} belongs in [{home[0]}]; "
+    elif close:
+        hint = f"did you mean {close[0]}? "
+    return hint + (expected or f"expected one of {', '.join(valid)}")
+
+
+def _new(cls, /, **fields):
+    """``cls(**fields)`` for this module's frozen dataclasses (Body, Initial, Simulate, Scene),
+    filling the instance's __dict__ in one step instead of the generated __init__'s
+    ``object.__setattr__`` per field: half the cost, the same object. Give every field (defaults
+    are not applied) and nothing else, bar Scene's ``_effects`` memo; these classes have no
+    __post_init__."""
+    obj = object.__new__(cls)
+    obj.__dict__.update(fields)
+    return obj
+
+
+def _positive(x) -> bool:
+    return x > 0
+
+
+def _below_one(x) -> bool:
+    return 0 < x < 1
+
+
+_POSITIVE = "a positive finite number"
+#: The triangle inequalities of the principal moments, (a, b, c): Ia + Ib >= Ic, checked (and
+#: reported) for c = I3, I1, I2 in this order.
+_TRIANGLE = ((0, 1, 2), (1, 2, 0), (0, 2, 1))
+
+
+class _Validator:
+    """Turns the raw dict into a Scene, raising SceneError at the first problem.
+
+    Speed matters here: ``derive.simulate`` validates every scene it is given (each scene of a
+    batch too), so the common case (plain dicts of floats, as TOML gives them) takes the short
+    way: key sets and readers precomputed per registry version (:func:`_registry_view`), exact
+    type checks before ABC checks, messages built only when something fails.
+    """
+
+    def __init__(self, source: str):
+        self.source = source
+        self.overridden: set[str] = set()  # dotted keys whose value came from an override
+
+    def fail(self, key: str, what: str):
+        if key in self.overridden:
+            what += " (given as an override)"
+        raise SceneError(_line(self.source, key, what))
+
+    # ---- generic readers ----
+
+    def table(self, data: Mapping, name: str, key_set: frozenset) -> Mapping:
+        """The table ``name`` after checking it has only known keys (``key_set``); the first
+        unknown one in document order is reported."""
+        if type(data) is dict and key_set.issuperset(data):
+            return data
+        keys = _table_keys()[name]
+        for key in data:
+            if key not in keys:
+                self.fail(f"{name}.{key}", "unknown key (" + _unknown(key, keys, name) + ")")
+        return data
+
+    def number(self, data, table, key, test=None, must="a finite number", default=...):
+        """A finite real (int or float, not bool) satisfying ``test``, or ``default`` if absent
+        (``...`` = required)."""
+        if key not in data:
+            if default is ...:
+                self.fail(f"{table}.{key}", "missing required key")
+            return default
+        value = data[key]
+        # A float is finite when x - x == 0 (inf - inf and nan - nan are nan): the common case
+        # needs no call to _real.
+        x = value if type(value) is float and value - value == 0.0 else _real(value)
+        if x is None or (test is not None and not test(x)):
+            self.fail(f"{table}.{key}", f"must be {must}, got {_show(value)}")
+        return x
+
+    def choice(self, data, table, key, choices):
+        """A string among ``choices`` (a dict or tuple of names; messages list them in order)."""
+        value = data[key]
+        if type(value) is str and value in choices:
+            return value
+        dotted = f"{table}.{key}"
+        if not isinstance(value, str):
+            self.fail(dotted, f"must be a string, one of {', '.join(choices)}; got {_show(value)}")
+        if value not in choices:
+            close = difflib.get_close_matches(value, list(choices), n=1, cutoff=0.6)
+            hint = f"did you mean {close[0]}? " if close else ""
+            self.fail(dotted, f"unknown {key} {value!r} ({hint}expected one of {', '.join(choices)})")
+        return value
+
+    # ---- the tables ----
+
+    def scene(self, data: Mapping, overrides: dict) -> Scene:
+        view = _registry_view()
+        key_sets = view.key_sets
+        for key, value in data.items():
+            if key in _TOP_KEYS:
+                continue
+            if key not in key_sets:
+                if isinstance(value, Mapping):
+                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(_table_keys()), "")
+                              + ")")
+                self.fail(str(key), "unknown key (" + _unknown(
+                    key, _TOP_KEYS, "", "the only top-level key is title") + ")")
+            if type(value) is not dict and not isinstance(value, Mapping):  # dict: no ABC check
+                self.fail(key, f"must be a table [{key}], got {_show(value)}")
+        title = data.get("title")
+        if title is not None and not isinstance(title, str):
+            self.fail("title", f"must be a string, got {_show(title)}")
+        # Tables in document order, so the first problem reported is the first one in the file.
+        if "body" not in data:
+            self.fail("body", "missing required table")
+        body = self.body(self.table(data["body"], "body", key_sets["body"]))
+        tables, chosen = {}, []
+        for name, table, readers in view.effect_tables:
+            if name in data:
+                values = self.effect_table(self.table(data[name], name, key_sets[name]), table,
+                                           readers)
+                tables[name] = values
+                chosen.append(values.effect)
+        if "initial" not in data:
+            self.fail("initial", "missing required table")
+        initial = self.initial(self.table(data["initial"], "initial", key_sets["initial"]))
+
+        if overrides:
+            for key in overrides:
+                if key not in _FIXED_KEYS["simulate"]:
+                    self.overridden.add(f"simulate.{key}")
+                    self.fail(f"simulate.{key}", "unknown key (" + _unknown(
+                        key, _FIXED_KEYS["simulate"], "simulate") + ")")
+        if "simulate" not in data and "t_end" not in overrides:
+            self.fail("simulate", "missing required table (simulate.t_end has no default)")
+        simulate = self.table(data.get("simulate", {}), "simulate", key_sets["simulate"])
+        if overrides:
+            self.overridden.update(f"simulate.{key}" for key in overrides)
+            simulate = {**simulate, **overrides}
+        simulate = self.simulate(simulate)
+
+        # Scene.effects is known already: its memo is set (what the property would compute).
+        scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
+                     simulate=simulate, source=self.source,
+                     _effects=(effects.VERSION[0], _in_registry_order(tuple(chosen))))
+        self.formulation_fits(scene)
+        return scene
+
+    def body(self, t) -> Body:
+        I1 = self.number(t, "body", "I1", _positive, _POSITIVE)
+        I2 = self.number(t, "body", "I2", _positive, _POSITIVE, I1)  # symmetric unless told
+        I3 = self.number(t, "body", "I3", _positive, _POSITIVE)
+        # Principal moments of any mass distribution obey Ia + Ib >= Ic (equality: a flat plate).
+        moments, slack = (I1, I2, I3), 1 - TRIANGLE_SLACK
+        for a, b, c in _TRIANGLE:
+            if moments[a] + moments[b] < moments[c] * slack:
+                names = ("I1", "I2", "I3")
+                values = ", ".join(f"{k} = {v:g}" for k, v in zip(names, moments))
+                self.fail("body", f"moments violate the triangle inequality {names[a]} + "
+                                  f"{names[b]} >= {names[c]} ({values}); no rigid body has these "
+                                  f"principal moments")
+        return _new(Body, I1=I1, I2=I2, I3=I3)
+
+    def effect_table(self, t, table: effects.Table, readers: tuple) -> TableValues:
+        """An effect's table, read by its declaration (``readers``: its keys, see _View): each
+        key a finite real (or a list of 3) passing its check; of each ``one_of`` group exactly
+        one key given."""
+        for group in table.one_of:
+            given = [k for k in group if k in t]
+            if len(given) > 1:
+                self.fail(f"{table.name}.{given[1]}",
+                          f"give {' or '.join(group)}, not both ({', '.join(given)} given)")
+            if not given:
+                self.fail(f"{table.name}.{group[0]}",
+                          f"missing required key (give {' or '.join(group)})")
+        values = {}
+        for name, key, is_vector, check, must, default in readers:
+            if is_vector:
+                values[name] = self.vector3(t, table.name, key)
+            else:
+                values[name] = self.number(t, table.name, name, check, must, default)
+        values = table.complete(values)
+        out = TableValues(table.name, values, effects.for_table(table.name, values).name)
+        out.__dict__["_given"] = set(t)
+        return out
+
+    def vector3(self, t, table: str, key: effects.Key):
+        if key.name not in t:
+            if key.default is effects.REQUIRED:
+                self.fail(f"{table}.{key.name}", "missing required key")
+            return key.default
+        value = t[key.name]
+        vec = ([_real(w) for w in value]
+               if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
+        if None in vec or (key.check is not None and not key.check(tuple(vec))):
+            self.fail(f"{table}.{key.name}", f"must be {key.must}, got {_show(value)}")
+        return tuple(vec)
+
+    def initial(self, t) -> Initial:
+        alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
+        beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
+        gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
+        # Any of _RATES, spelt out: no generator on the warm path.
+        rates_given = "alpha_dot" in t or "beta_dot" in t or "gamma_dot" in t
+        both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
+        if rates_given and "omega" in t:
+            self.fail("initial", both + ", not both")
+        if rates_given:
+            # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
+            must = "a finite number (rad/s)"
+            ad = self.number(t, "initial", "alpha_dot", None, must, 0.0)
+            bd = self.number(t, "initial", "beta_dot", None, must, 0.0)
+            gd = self.number(t, "initial", "gamma_dot", None, must, 0.0)
+            return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
+                        gamma_dot=gd, omega=body_omega(beta, gamma, ad, bd, gd))
+        if "omega" not in t:
+            self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")
+        value = t["omega"]
+        omega = ([_real(w) for w in value]
+                 if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
+        if None in omega:
+            self.fail("initial.omega", f"must be a list of 3 finite numbers [w1, w2, w3] "
+                                       f"(body frame, rad/s), got {_show(value)}")
+        return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=None, beta_dot=None,
+                    gamma_dot=None, omega=tuple(omega))
+
+    def simulate(self, t) -> Simulate:
+        s = {**SIMULATE_DEFAULTS, **t}
+        t_end = self.number(t, "simulate", "t_end", _positive, "a positive finite number (s)")
+        samples = s["samples"]
+        if not (type(samples) is int or (not isinstance(samples, (bool, np.bool_))  # int: no ABC check
+                                         and isinstance(samples, numbers.Integral))) \
+                or not 2 <= samples <= MAX_SAMPLES:
+            self.fail("simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}, "
+                                          f"got {_show(samples)}")
+        method = self.choice(s, "simulate", "method", METHODS)
+        rtol = self.number(s, "simulate", "rtol", _below_one, "a number in (0, 1)")
+        if rtol < MIN_RTOL:
+            self.fail("simulate.rtol", f"must be at least 100 machine epsilons ({MIN_RTOL:.1e}): "
+                                       f"no double-precision integrator can meet {rtol:g}")
+        atol = self.number(s, "simulate", "atol", _positive, _POSITIVE)
+        formulation = self.choice(s, "simulate", "formulation", FORMULATIONS)
+        max_steps = s["max_steps"]
+        if not (type(max_steps) is int or (not isinstance(max_steps, (bool, np.bool_))
+                                           and isinstance(max_steps, numbers.Integral))) \
+                or not 1 <= max_steps <= MAX_STEPS_LIMIT:
+            self.fail("simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}, "
+                                            f"got {_show(max_steps)}")
+        h = None
+        if s["h"] is not None:
+            h = self.number(s, "simulate", "h", _positive, "a positive finite number (s)")
+            if method not in FIXED_STEP_METHODS:
+                self.fail("simulate.h", f"is the step of a fixed-step method "
+                                        f"({', '.join(FIXED_STEP_METHODS)}), but method is "
+                                        f"{method!r}; remove h or name a fixed-step method")
+        return _new(Simulate, t_end=t_end, samples=int(samples), method=method, rtol=rtol,
+                    atol=atol, formulation=formulation, h=h, max_steps=int(max_steps))
+
+    def formulation_fits(self, scene: Scene) -> None:
+        """Reject a formulation that cannot represent this scene (the registry says why)."""
+        form = scene.simulate.formulation
+        if form != "auto":
+            reason = formulations.REGISTRY[form].applicable(scene)
+            if reason:
+                self.fail("simulate.formulation", reason)
+        reason = solvers.method_reason(scene.simulate.method, form, scene.effects)
+        if reason:
+            self.fail("simulate.method", reason)

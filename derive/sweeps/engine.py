@@ -1,0 +1,719 @@
+"""Parameter sweeps: one scene, many numbers, each trajectory measured while it is integrated.
+
+A sweep (a TOML file or a dict of the same shape)::
+
+    scene = "../sleeping_top.toml"     # relative to the sweep file; or an inline [scene] table
+    [vary]                             # dotted scene keys; the Cartesian product, first key slowest
+    initial.beta = { from = 0.05, to = 1.0, num = 40 }
+    initial.gamma_dot = { values = [100.0, 150.0, 200.0] }
+    # or, instead of [vary]:
+    # [random]
+    # n = 1000
+    # seed = 1
+    # initial.beta = { low = 0.05, high = 1.0 }
+    [measure]
+    names = ["beta_max", "time_to_tilt"]   # the registry: derive.sweeps.measures
+    time_to_tilt = { angle = 1.0 }         # a measure's options
+
+The points are numbers only: the base scene is validated once, each varied key's values are
+checked against the scene contract (every distinct value of a grid, both bounds of a random
+range), and the init map's inputs and the model's parameters are built as arrays from the base
+scene and the varied columns, without a scene per point. A vector key is varied by component:
+``initial.omega.0`` is ω̃₁.
+
+Decisions (documented here once):
+
+* Body moments varied jointly may violate the triangle inequality at some points only: those
+  points are not run and their ``status`` says why; everything else wrong is a bad sweep file
+  (SceneError, exit 2, ``<file>: <key>: <what>``).
+* If any point has I2 != I1 the whole sweep runs the asymmetric model (it represents the
+  symmetric points too; a symmetric one would not).
+* Formulation "auto" runs the cheapest formulation without a singular set (the turning points
+  of every point are not known in advance); a singular formulation named in the scene is
+  refused. The method must be adaptive (dop853): the measures read its dense output.
+* The scene's ``samples`` is not used: a sweep keeps the outputs at t_end only (final_state).
+* The random points are drawn in the calling process (``numpy.random.default_rng(seed)``, one
+  ``uniform`` per key, in the file's order), so a seed gives the same points whatever runs them.
+
+Engines: local (default; chunks of at most ``CHUNK`` points, one process per core, each process
+loading the compiled library once), a dask ``LocalCluster`` (``workers``) or an existing Dask
+cluster (``scheduler``). Every trajectory is computed by the same compiled loop on its own, so
+the results are bit-for-bit the same whatever the engine, chunking and worker count. A point
+whose integration fails is recorded in ``status``; Ctrl-C cancels the outstanding chunks.
+"""
+from __future__ import annotations
+
+import copy
+import math
+import os
+import tomllib
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from derive.sweeps import measures as ms
+from derive.errors import SceneError
+from derive.sim import examples
+from derive.sweeps.keys import unit_of, variable_keys as _variable_keys  # noqa: F401 - unit_of: its old home
+
+#: Largest number of trajectories in one task (one C call).
+CHUNK = 10_000
+#: Below this many points the local engine runs in the calling process (no pool to start).
+IN_PROCESS = 200
+_SPEC_KEYS = ("scene", "vary", "random", "measure", "measures", "title")
+
+
+# ---------------------------------------------------------------------------------------------
+# the spec
+
+
+@dataclass
+class Spec:
+    """A validated sweep: the base scene, the varied columns, the measures and the model."""
+
+    source: str
+    scene: object  # the representative Scene (a valid point; asymmetric if any point is)
+    raw: dict  # the base scene as a dict
+    keys: tuple
+    shape: tuple | None  # grid shape (None: random points)
+    columns: dict  # key -> (N,) float array
+    measures: tuple
+    options: dict
+    inputs: np.ndarray = field(repr=False, default=None)
+    ps: np.ndarray = field(repr=False, default=None)
+    invalid: dict = field(default_factory=dict)  # point index -> why it is not run
+    general: np.ndarray = field(repr=False, default=None)  # (N, 8) I1..I3, M, g, cx, cy, cz
+    damping: np.ndarray = field(repr=False, default=None)  # (N,) the damping coefficient c
+    key: tuple = ()  # the model (formulation, symmetric, effects)
+    method: str = ""
+
+    @property
+    def n(self) -> int:
+        return len(next(iter(self.columns.values())))
+
+
+def _fail(source, key, what):
+    raise SceneError(f"{source}: {key}: {what}")
+
+
+def _real(x) -> float | None:
+    if isinstance(x, bool) or not isinstance(x, (int, float)):
+        return None
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def _flatten(table: Mapping, prefix: str, leaf) -> dict:
+    """Dotted keys of nested tables down to the leaves (``leaf(value)`` says when to stop)."""
+    out = {}
+    for k, v in table.items():
+        name = f"{prefix}{k}"
+        if isinstance(v, Mapping) and not leaf(v):
+            out.update(_flatten(v, name + ".", leaf))
+        else:
+            out[name] = v
+    return out
+
+
+def _set(data: dict, key: str, value) -> None:
+    table, name, index, _ = _variable_keys()[key]
+    t = data.setdefault(table, {})
+    if index is None:
+        t[name] = value
+    else:
+        vec = list(t[name])
+        vec[index] = value
+        t[name] = vec
+
+
+def _scene_error(source, exc: SceneError, prefix: str) -> SceneError:
+    text = str(exc)
+    if text.startswith("<dict>: "):
+        text = f"{source}: {prefix}{text[len('<dict>: '):]}"
+    return SceneError(text)
+
+
+def load(spec) -> Spec:
+    """Read and validate a sweep (path or dict); raises SceneError ``<file>: <key>: <what>``."""
+    from derive.sim.scene import load_scene
+
+    if isinstance(spec, Mapping):
+        source, data, folder = "<sweep>", spec, Path.cwd()
+    elif isinstance(spec, (str, os.PathLike)):
+        source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
+        try:
+            with open(source, "rb") as f:
+                data = tomllib.load(f)
+        except OSError as exc:
+            _fail(source, "sweep", f"cannot read the file ({exc.strerror or exc})")
+        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+            _fail(source, "sweep", f"not valid TOML ({' '.join(str(exc).split())})")
+        folder = Path(source).resolve().parent
+    else:
+        raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
+    for k in data:
+        if k not in _SPEC_KEYS:
+            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
+
+    # the base scene
+    if "scene" not in data:
+        _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
+    sc = data["scene"]
+    if isinstance(sc, str):
+        path = folder / sc
+        if not path.is_file():
+            _fail(source, "scene", f"no scene file {sc!r} (a path relative to the sweep file)")
+        base = load_scene(str(path))  # its own errors name the scene file
+        with open(path, "rb") as f:
+            raw = tomllib.load(f)
+    elif isinstance(sc, Mapping):
+        raw = copy.deepcopy(dict(sc))
+        try:
+            base = load_scene(raw)
+        except SceneError as exc:
+            raise _scene_error(source, exc, "scene.") from None
+    else:
+        _fail(source, "scene", f"must be a path or a table, got {sc!r}")
+    if "title" in data and "title" not in raw and isinstance(data["title"], str):
+        raw["title"] = data["title"]
+
+    keys, shape, columns = _points(source, data, raw, base)
+    names, options = _measures(source, data)
+    out = Spec(source, base, raw, keys, shape, columns, names, options)
+    _build(out)
+    return out
+
+
+def _points(source, data, raw, base):
+    variable = _variable_keys()
+    if ("vary" in data) == ("random" in data):
+        _fail(source, "vary", "give [vary] (a grid) or [random] (random points), one of them")
+    if "vary" in data:
+        table = data["vary"]
+        if not isinstance(table, Mapping) or not table:
+            _fail(source, "vary", "must be a table of dotted scene keys")
+        leaves = _flatten(table, "", lambda v: bool({"from", "to", "num", "values"} & set(v)))
+        columns = {}
+        for key, rule in leaves.items():
+            _check_key(source, f"vary.{key}", key, variable, raw)
+            columns[key] = _grid_values(source, f"vary.{key}", rule)
+        keys = tuple(columns)
+        shape = tuple(len(v) for v in columns.values())
+        grids = np.meshgrid(*columns.values(), indexing="ij")
+        cols = {k: g.ravel(order="C").copy() for k, g in zip(keys, grids)}
+        distinct = columns
+    else:
+        table = data["random"]
+        if not isinstance(table, Mapping):
+            _fail(source, "random", "must be a table")
+        n, seed = table.get("n"), table.get("seed")
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 10**9:
+            _fail(source, "random.n", f"must be an integer from 1 to 1e9, got {n!r}")
+        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+            _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
+        rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
+        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)))
+        if not leaves:
+            _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
+        rng = np.random.default_rng(seed)
+        cols, distinct = {}, {}
+        for key, rule in leaves.items():
+            where = f"random.{key}"
+            _check_key(source, where, key, variable, raw)
+            if not isinstance(rule, Mapping) or set(rule) != {"low", "high"}:
+                _fail(source, where, "must be { low = a, high = b }")
+            lo, hi = _real(rule["low"]), _real(rule["high"])
+            if lo is None or hi is None or not lo <= hi:
+                _fail(source, where, f"low and high must be finite numbers with low <= high, got {dict(rule)}")
+            cols[key] = rng.uniform(lo, hi, n)
+            distinct[key] = np.array([lo, hi])
+        keys, shape = tuple(cols), None
+    _check_values(source, "vary" if shape is not None else "random", raw, distinct)
+    return keys, shape, cols
+
+
+def _check_key(source, where, key, variable, raw):
+    if key.startswith("simulate.") or key == "title":
+        _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
+    if key not in variable:
+        _fail(source, where, "not a scene key that takes a number (e.g. initial.beta, body.I3, "
+                             "gravity.l, initial.omega.0)")
+    table, name, index, _ = variable[key]
+    if table not in ("body", "initial") and table not in raw:
+        _fail(source, where, f"the scene has no [{table}] table")
+    if table == "initial":
+        init = raw.get("initial", {})
+        if index is not None and "omega" not in init:
+            _fail(source, where, "the scene gives Euler-angle rates, not omega")
+        if name.endswith("_dot") and "omega" in init:
+            _fail(source, where, "the scene gives omega, not Euler-angle rates")
+
+
+def _grid_values(source, where, rule) -> np.ndarray:
+    if not isinstance(rule, Mapping):
+        _fail(source, where, "must be { from = a, to = b, num = n } or { values = [...] }")
+    if set(rule) == {"values"}:
+        vals = rule["values"]
+        if not isinstance(vals, list) or not vals or any(_real(v) is None for v in vals):
+            _fail(source, where, f"values must be a non-empty list of finite numbers, got {vals!r}")
+        return np.array([float(v) for v in vals])
+    if set(rule) == {"from", "to", "num"}:
+        a, b, num = _real(rule["from"]), _real(rule["to"]), rule["num"]
+        if a is None or b is None:
+            _fail(source, where, f"from and to must be finite numbers, got {dict(rule)}")
+        if isinstance(num, bool) or not isinstance(num, int) or not 1 <= num <= 10**8:
+            _fail(source, where, f"num must be an integer from 1 to 1e8, got {num!r}")
+        return np.linspace(a, b, num)
+    _fail(source, where, "must be { from = a, to = b, num = n } or { values = [...] }, "
+                         f"got keys {sorted(rule)}")
+
+
+def _check_values(source, where, raw, distinct):
+    """Each varied key's distinct values (grid) or bounds (random) against the scene contract,
+    substituted one at a time into the base scene. The body moments' positivity is checked
+    here and their triangle inequality per point (``_build``)."""
+    from derive.sim.scene import load_scene
+
+    for key, values in distinct.items():
+        if key.startswith("body."):
+            bad = values[~(values > 0)]
+            if bad.size:
+                _fail(source, f"{where}.{key}", f"must be positive (moment of inertia), got {bad[0]!r}")
+            continue
+        for v in np.unique(values):
+            data = copy.deepcopy(raw)
+            _set(data, key, float(v))
+            try:
+                load_scene(data)
+            except SceneError as exc:
+                inner = str(exc).split(": ", 2)[-1]
+                _fail(source, f"{where}.{key}", f"{float(v)!r} makes the scene invalid ({inner})")
+
+
+def _measures(source, data):
+    names, options = list(ms.DEFAULT), {}
+    if "measure" in data and "measures" in data:
+        _fail(source, "measure", "give [measure] or measures, not both")
+    if "measures" in data:
+        names = data["measures"]
+        where = "measures"
+        extra = {}
+    elif "measure" in data:
+        table = data["measure"]
+        if not isinstance(table, Mapping):
+            _fail(source, "measure", "must be a table with names = [...]")
+        names = table.get("names", list(ms.DEFAULT))
+        where = "measure.names"
+        extra = {k: v for k, v in table.items() if k != "names"}
+    else:
+        extra = {}
+        where = "measure.names"
+    if isinstance(names, str):
+        names = [names]
+    if not isinstance(names, (list, tuple)) or not names or not all(isinstance(n, str) for n in names):
+        _fail(source, where, f"must be a non-empty list of measure names, got {names!r}")
+    for n in names:
+        if n not in ms.REGISTRY:
+            _fail(source, where, f"unknown measure {n!r} (one of {', '.join(ms.REGISTRY)})")
+    for n, opts in extra.items():
+        if n not in ms.REGISTRY or not ms.REGISTRY[n].options:
+            _fail(source, f"measure.{n}", "unknown key (a measure with options, e.g. time_to_tilt)")
+        if not isinstance(opts, Mapping):
+            _fail(source, f"measure.{n}", "must be a table of options")
+        for k, v in opts.items():
+            if k not in ms.REGISTRY[n].options:
+                _fail(source, f"measure.{n}.{k}", f"unknown option (one of {', '.join(ms.REGISTRY[n].options)})")
+            allowed = ms.REGISTRY[n].choices.get(k)
+            if allowed is not None:
+                if v not in allowed:
+                    _fail(source, f"measure.{n}.{k}", f"must be one of {', '.join(allowed)}, got {v!r}")
+            elif _real(v) is None:
+                _fail(source, f"measure.{n}.{k}", f"must be a finite number, got {v!r}")
+        options[n] = dict(opts)
+    return tuple(dict.fromkeys(names)), options
+
+
+# ---------------------------------------------------------------------------------------------
+# numbers of every point
+
+
+def _map_math(fn, *cols):
+    """Elementwise with the math module (the scalar libm calls load_scene makes, bit for bit)."""
+    return np.array([fn(*xs) for xs in zip(*cols)], dtype=float)
+
+
+def _build(spec: Spec) -> None:
+    """inputs (N, NIN), ps (N, NP), the invalid points, the model and the method."""
+    from derive.sim import auto
+    from derive.runtime import catalogue
+    from derive.symbolic import effects
+    from derive.symbolic.formulations import REGISTRY as FORMS
+    from derive.sim.scene import TRIANGLE_SLACK, load_scene
+    from derive.sim.simulation import choose_method, inputs_of
+    from derive.methods.registry import METHODS
+
+    base, n, cols = spec.scene, spec.n, spec.columns
+    src = spec.source
+
+    def col(table, name, default):
+        key = f"{table}.{name}"
+        return cols[key] if key in cols else np.full(n, float(default))
+
+    # body moments (I2 follows I1 when the scene does not give it)
+    I1 = col("body", "I1", base.body.I1)
+    I2 = cols["body.I2"] if "body.I2" in cols else (I1 if "I2" not in spec.raw.get("body", {})
+                                                    else np.full(n, base.body.I2))
+    I3 = col("body", "I3", base.body.I3)
+    moments = {"I1": I1, "I2": I2, "I3": I3}
+    for c in ("I3", "I1", "I2"):
+        a, b = (k for k in moments if k != c)
+        bad = np.flatnonzero(moments[a] + moments[b] < moments[c] * (1 - TRIANGLE_SLACK))
+        for i in bad:
+            spec.invalid.setdefault(int(i), f"invalid: body: moments violate the triangle "
+                                            f"inequality {a} + {b} >= {c}")
+    symmetric = bool(np.all(I1 == I2))
+
+    # the representative scene: a valid point, asymmetric if any point is
+    valid = np.setdiff1d(np.arange(n), np.fromiter(spec.invalid, int, len(spec.invalid)))
+    if valid.size == 0:
+        _fail(src, "body", "every point violates the triangle inequality of the moments")
+    pick = int(valid[0]) if symmetric else int(valid[np.flatnonzero(I1[valid] != I2[valid])[0]])
+    data = copy.deepcopy(spec.raw)
+    for key in spec.keys:
+        _set(data, key, float(cols[key][pick]))
+    if "I2" not in data["body"]:
+        data["body"]["I2"] = float(I2[pick])
+    try:
+        spec.scene = rep = load_scene(data)
+    except SceneError as exc:
+        raise _scene_error(src, exc, "scene.") from None
+
+    method = choose_method(rep)
+    if METHODS[method].driver != "adaptive":
+        _fail(src, "scene.simulate.method", f"a sweep measures on the dense output of an adaptive "
+                                            f"method (dop853), not {method}")
+    form = rep.simulate.formulation
+    if form == "auto":
+        form = next(f for f in auto.candidates(rep) if not FORMS[f].singular)
+    elif FORMS[form].singular:
+        _fail(src, "scene.simulate.formulation", f"{form} is singular at sin(beta) = 0; a sweep "
+                                                 f"runs a formulation without a singular set (or auto)")
+    spec.key, spec.method = (form, symmetric, rep.effects), method
+    desc = catalogue.describe(spec.key)
+
+    # inputs
+    inputs = np.tile(inputs_of(base), (n, 1))
+    alpha = col("initial", "alpha", base.initial.alpha)
+    beta = col("initial", "beta", base.initial.beta)
+    gamma = col("initial", "gamma", base.initial.gamma)
+    inputs[:, 0], inputs[:, 1], inputs[:, 2] = alpha, beta, gamma
+    if base.initial.has_rates:
+        ad = col("initial", "alpha_dot", base.initial.alpha_dot)
+        bd = col("initial", "beta_dot", base.initial.beta_dot)
+        gd = col("initial", "gamma_dot", base.initial.gamma_dot)
+        inputs[:, 6], inputs[:, 7], inputs[:, 8] = ad, bd, gd
+        if any(k in cols for k in ("initial.beta", "initial.gamma", "initial.alpha_dot",
+                                   "initial.beta_dot", "initial.gamma_dot")):
+            # the same formula and libm calls as the scene validator
+            inputs[:, 3] = _map_math(lambda a, b, s, c: -a * math.sin(s) * math.cos(c) + b * math.sin(c),
+                                     ad, bd, beta, gamma)
+            inputs[:, 4] = _map_math(lambda a, b, s, c: a * math.sin(s) * math.sin(c) + b * math.cos(c),
+                                     ad, bd, beta, gamma)
+            inputs[:, 5] = _map_math(lambda a, g, s: a * math.cos(s) + g, ad, gd, beta)
+    else:
+        for i in range(3):
+            if f"initial.omega.{i}" in cols:
+                inputs[:, 3 + i] = cols[f"initial.omega.{i}"]
+
+    # parameters: the moments and each effect's values (per distinct row of its varied keys)
+    values = {"I1": I1, "I2": I2, "I3": I3}
+    for tname, tv in base.tables.items():
+        varied = [k for k in spec.keys if k.startswith(tname + ".")]
+        effect = effects.REGISTRY[tv.effect]
+        table = effects.TABLES[tname]
+        if not varied:
+            vals = effect.values(tv)
+            values.update({k: np.full(n, float(v)) for k, v in vals.items()})
+            continue
+        rows = np.stack([cols[k] for k in varied], axis=1)
+        uniq, inverse = np.unique(rows, axis=0, return_inverse=True)
+        per = []
+        for row in uniq:
+            given = {k: tv[k] for k in tv.given()}
+            given.update({k.split(".", 1)[1]: float(v) for k, v in zip(varied, row)})
+            full = {key.name: given.get(key.name, None if key.default is effects.REQUIRED else key.default)
+                    for key in table.keys}
+            per.append(effect.values(table.complete(full)))
+        for name in per[0]:
+            values[name] = np.array([p[name] for p in per], dtype=float)[np.ravel(inverse)]
+    derived = set(desc.derived_params)
+    ps = np.zeros((n, len(desc.params)))
+    for k, name in enumerate(desc.params):
+        if k not in derived:
+            ps[:, k] = values[name]
+    spec.inputs, spec.ps = inputs, ps
+    # the general parameters of every point (derive.symbolic.integrable.parameters' convention: no
+    # gravity is M = g = 0; gravity's l is the centre of mass on axis 3), for integral_drift
+    zero = np.zeros(n)
+    com = [values.get(c, zero) for c in ("cx", "cy")] + [values.get("cz", values.get("l", zero))]
+    spec.general = np.column_stack([I1, I2, I3, values.get("M", zero), values.get("g", zero), *com])
+    spec.damping = np.asarray(values.get("c", zero), dtype=float)
+
+
+# ---------------------------------------------------------------------------------------------
+# engines
+
+
+def run_chunk(key, method, inputs, ps, t, args, config, integral=None):
+    """One task: measured simulations of a block of points in one C call (the library is
+    compiled or loaded once per process). Returns (res, final outputs (N, NOBS), stats)."""
+    from derive.runtime import catalogue
+
+    desc = catalogue.describe(key)
+    kernel = ms.MeasureKernel.load(desc, method)
+    res, out, st = kernel.run(inputs, ps, t, args, config, integral)
+    return res, np.ascontiguousarray(out[:, :, -1]), st
+
+
+def _chunks(idx: np.ndarray, parallel: int) -> list:
+    size = max(1, min(CHUNK, math.ceil(idx.size / max(1, 4 * parallel))))
+    return [idx[i:i + size] for i in range(0, idx.size, size)]
+
+
+def _progress_bar(total, progress):
+    import sys
+
+    from tqdm import tqdm
+
+    if progress is None:
+        progress = sys.stderr.isatty()
+    return tqdm(total=total, unit="pt", disable=not progress, desc="sweep", leave=False)
+
+
+def _star_chunk(args):
+    return run_chunk(*args)
+
+
+def _local(tasks, submit_args, progress, processes):
+    """In this process when the sweep is small, else a pool of ``processes`` (fork where the
+    system has it: the children inherit the loaded library). Ctrl-C terminates the pool."""
+    import multiprocessing as mp
+
+    results = {}
+    with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
+        if processes <= 1 or len(tasks) == 1 or sum(len(i) for i in tasks) < IN_PROCESS:
+            for k, idx in enumerate(tasks):
+                results[k] = run_chunk(*submit_args(idx))
+                bar.update(len(idx))
+            return results
+        ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
+        pool = ctx.Pool(processes=min(processes, len(tasks)))
+        try:
+            pending = [pool.apply_async(_star_chunk, (submit_args(idx),)) for idx in tasks]
+            while len(results) < len(tasks):
+                for k, job in enumerate(pending):
+                    if k not in results and job.ready():
+                        results[k] = job.get()
+                        bar.update(len(tasks[k]))
+                if len(results) < len(tasks):
+                    pending[min(set(range(len(tasks))) - set(results))].wait(0.05)
+        except BaseException:
+            pool.terminate()
+            pool.join()
+            raise
+        pool.close()
+        pool.join()
+    return results
+
+
+def _dask(run, submit_args, progress, workers, scheduler):
+    """The chunks through a Dask cluster (a LocalCluster of ``workers`` processes, or the one at
+    ``scheduler``), cut for its worker count. Returns (tasks, results)."""
+    import logging
+
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    logging.getLogger("distributed").setLevel(logging.ERROR)
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                               dashboard_address=":0", silence_logs=logging.ERROR)
+        client = Client(cluster)
+    else:
+        client = Client(scheduler)
+    futures = []
+    try:
+        tasks = _chunks(run, max(1, sum(client.nthreads().values())))
+        futures = [client.submit(run_chunk, *submit_args(idx), pure=False) for idx in tasks]
+        index = {f.key: k for k, f in enumerate(futures)}
+        results = {}
+        with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
+            for fut in as_completed(futures):
+                k = index[fut.key]
+                results[k] = fut.result()
+                bar.update(len(tasks[k]))
+        return tasks, results
+    except BaseException:
+        if futures:
+            client.cancel(futures, force=True)
+        if cluster is not None:  # ours: stop its workers now, mid-chunk
+            import contextlib
+
+            with contextlib.suppress(Exception):
+                for w in list(cluster.workers.values()):
+                    proc = getattr(getattr(w, "process", None), "process", None)
+                    if proc is not None:
+                        proc.terminate()
+        raise
+    finally:
+        # (after Ctrl-C the futures are cancelled; a worker busy in a chunk finishes that C call)
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def _cpus() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
+# ---------------------------------------------------------------------------------------------
+# results
+
+
+@dataclass
+class SweepResult:
+    """``params`` and ``measures``: {name: (N,) array}, one entry per point (grid points in C
+    order, the first varied key slowest); ``status``: (N,) str, "ok" or why the point failed."""
+
+    params: dict
+    measures: dict
+    status: np.ndarray
+    keys: tuple
+    shape: tuple | None
+    measure_names: tuple
+    title: str = ""
+    source: str = ""
+    model: str = ""
+    scene: object = field(default=None, repr=False)
+
+    @property
+    def ok(self) -> np.ndarray:
+        return self.status == "ok"
+
+    def to_pandas(self):
+        import pandas as pd
+
+        cols = {**self.params, **self.measures, "status": self.status.astype(str)}
+        return pd.DataFrame(cols)
+
+
+def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
+          add_measure=None) -> SweepResult:
+    """Run a sweep (a file path or a dict shaped like one). ``workers``: start a dask
+    LocalCluster with that many worker processes; ``scheduler``: the address of a running Dask
+    scheduler; neither: the local engine (``processes``, default one per core). ``add_measure``:
+    a measure (or one of its columns) added to the file's list. ``progress``: a tqdm bar on stderr (None: when stderr is a TTY)."""
+    from derive.runtime import catalogue
+    from derive.sim.simulation import _explain
+
+    if workers is not None and scheduler is not None:
+        raise SceneError("--workers: give workers or scheduler, not both")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
+        raise SceneError(f"--workers: must be a positive integer, got {workers!r}")
+    sp = load(spec)
+    if add_measure is not None:  # the column to plot: a measure's (final_beta) or a measure
+        name = ms.owner(add_measure)
+        if name is None:
+            raise SceneError(f"{sp.source}: --measure: unknown measure {add_measure!r} "
+                             f"(one of {', '.join(ms.REGISTRY)})")
+        if len(ms.REGISTRY[name].columns) > 1 and add_measure == name:
+            raise SceneError(f"{sp.source}: --measure: {name} has several columns; plot one of "
+                             f"{', '.join(ms.REGISTRY[name].columns)}")
+        sp.measures = tuple(dict.fromkeys((*sp.measures, name)))
+    desc = catalogue.describe(sp.key)
+    ms.MeasureKernel.load(desc, sp.method)  # compile here, once, before any worker needs it
+    s = sp.scene.simulate
+    t = np.array([0.0, s.t_end])
+    args = (s.rtol, s.atol, 0.0, s.max_steps)
+    config = ms.config_of(sp.measures, sp.options)
+    run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
+    processes = processes or _cpus()
+    integral = None
+    if "integral_drift" in sp.measures:
+        choice = sp.options.get("integral_drift", {}).get("integral", "case")
+        integral = ms.integral_rows(sp.general, sp.damping, choice)
+
+    def submit_args(idx):
+        return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config,
+                None if integral is None else integral[idx])
+
+    if workers is None and scheduler is None:
+        tasks = _chunks(run, processes)
+        results = _local(tasks, submit_args, progress, processes)
+    else:
+        tasks, results = _dask(run, submit_args, progress, workers, scheduler)
+
+    n = sp.n
+    res = np.full((n, len(ms.SLOTS)), np.nan)
+    final = np.full((n, len(desc.outputs)), np.nan)
+    from derive.runtime.integrate import STATS_DTYPE
+
+    stats = np.zeros(n, dtype=STATS_DTYPE)
+    status = np.full(n, "ok", dtype=object)
+    for i, why in sp.invalid.items():
+        status[i] = why
+    for k, idx in enumerate(tasks):
+        r, f, st = results[k]
+        res[idx], final[idx], stats[idx] = r, f, st
+    for i in np.flatnonzero(stats["status"] != 0):
+        status[i] = _explain(desc, stats[i], s.max_steps)
+    for i in run[~np.isfinite(final[run]).all(axis=1)]:
+        if status[i] == "ok":
+            status[i] = f"t = {s.t_end:.8g}: non-finite outputs (overflow)"
+            res[i] = np.nan
+    values = ms.read(sp.measures, desc, res, stats, final)
+    return SweepResult(params={k: sp.columns[k] for k in sp.keys}, measures=values,
+                       status=status.astype(str), keys=sp.keys, shape=sp.shape,
+                       measure_names=sp.measures, title=sp.scene.title or "", source=sp.source,
+                       model=desc.name, scene=sp.scene)
+
+
+def write(result: SweepResult, parquet: str | None, png: str | None = None,
+          measure: str | None = None) -> None:
+    """The Parquet file (one row per point) and the plot, all or nothing."""
+    from derive.sim.outputs import write_all
+
+    writers = {}
+    if parquet:
+        writers[parquet] = lambda f: result.to_pandas().to_parquet(f, engine="pyarrow", index=False)
+    if png:
+        def plot(f):
+            from derive.sweeps.maps import plot_sweep
+
+            plot_sweep(result, f, measure)
+
+        writers[png] = plot
+    write_all(writers)
+
+
+def cli(args) -> int:
+    """``derive sweep``: run, write, print a one-line summary."""
+    import sys
+    import time
+
+    from derive.sim.outputs import check_paths
+
+    check_paths([args.output, args.plot])
+    t0 = time.perf_counter()
+    res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
+                add_measure=args.measure)
+    write(res, args.output, args.plot, args.measure)
+    failed = int((~res.ok).sum())
+    print(f"{res.source}: {len(res.status)} points ({failed} failed), model {res.model}, "
+          f"{time.perf_counter() - t0:.2f} s -> {args.output}", file=sys.stdout)
+    return 0

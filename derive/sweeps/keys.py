@@ -1,0 +1,27 @@
+"""The dotted scene keys a sweep may vary (``initial.beta``, ``gravity.M``, ``initial.omega.1``, …)
+with their tables and units, from the effects registry."""
+from __future__ import annotations
+
+from derive.symbolic import effects
+
+
+def variable_keys() -> dict:
+    """{dotted key: (table, key, index or None, unit)} of everything a point may vary."""
+    out = {f"body.{k}": ("body", k, None, "kg m^2") for k in ("I1", "I2", "I3")}
+    for name in ("alpha", "beta", "gamma"):
+        out[f"initial.{name}"] = ("initial", name, None, "rad")
+    for name in ("alpha_dot", "beta_dot", "gamma_dot"):
+        out[f"initial.{name}"] = ("initial", name, None, "rad/s")
+    for i in range(3):
+        out[f"initial.omega.{i}"] = ("initial", "omega", i, "rad/s")
+    for tname, table in effects.TABLES.items():
+        for key in table.keys:
+            if key.kind == "real":
+                out[f"{tname}.{key.name}"] = (tname, key.name, None, key.unit)
+    return out
+
+
+def unit_of(key: str) -> str:
+    """The SI unit of a dotted scene key a sweep may vary ('' if it has none)."""
+    found = variable_keys().get(key)
+    return found[3] if found else ""

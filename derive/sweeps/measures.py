@@ -1,0 +1,312 @@
+"""Measures of a trajectory, computed in the compiled loop while integrating (for sweeps).
+
+A measure is one registry entry (:data:`REGISTRY`): its name, unit, what it reads and, if it
+takes one, its option. Nothing else names a measure by a string; :mod:`derive.sweeps.engine` asks the
+registry which columns a measure gives and reads them from one compiled call.
+
+Contract of an entry (:class:`Measure`):
+
+1. ``name``: the key in ``[measure] names`` and the result's column (``columns`` when several).
+2. ``reads``: where the numbers come from, one of
+
+   * ``"slot"``: an accumulator of ``templates/c/measures.c.j2`` (``slot``), updated by the
+     driver's hook after every accepted step, with the step's dense output at hand;
+   * ``"stats"``: the solver's statistics record (``nfev``);
+   * ``"final"``: the outputs at t_end (the output map, in C);
+   * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min).
+3. ``options``: {option: (default, unit, one-line meaning)} — read from the sweep file's
+   ``[measure.<name>]`` table. A number is passed to the compiled loop through ``config``
+   (index ``CONFIG``: ``time_to_tilt``'s ``angle``); a name (``choices`` lists the allowed
+   ones: ``integral_drift``'s ``integral``) selects per-point data built in Python
+   (``integral_rows``).
+4. ``needs``: the compiled loop's work flags (``CONFIG``): ``steps`` runs the per-step hook
+   (the output map at each step end; the dense output — DOP853's three dense stages, counted
+   in ``nfev`` — only on the steps a search reads: the two steps around a discrete extremum of
+   beta, the first and the last step, the steps of the first tilt and the first flip);
+   ``extrema`` runs the searches for beta's extrema (and keeps each step for the next one's
+   search), so a sweep without a beta measure forms no dense output for them; ``flip_time``
+   and ``tilt_time`` locate those times. A sweep asking only for ``nfev`` and
+   ``final_state`` runs the plain loop's work. ``dense_always`` (no measure sets it) forms the
+   dense output on every step, as before the lazy choice: the tests check that no value moves.
+
+The accumulators (``SLOTS``) are all updated whenever the hook runs (a compare or two per
+step; the extrema search runs only at the turning points).
+
+``integral_drift`` — the drift of the extra first integral of the integrable cases
+(:mod:`derive.symbolic.integrable`: |L|² for Euler's free body, L₃ = I₃ω̃₃ = p_γ about the symmetry axis
+for Lagrange's top, L·r_c for a spherical body, Kovalevskaya's K, Goryachev–Chaplygin's G) is
+
+    max over the accepted step ends of |I(t) − I(0)| / S,
+
+S the integral's size at t = 0: the sum over the monomials c·L^a·n^b of its expanded formula of
+|c|·|L(0)|^|a|·|n(0)|^|b| (a bound on |I| for any L, n of those lengths; rounding alone moves I
+by about eps·S), or 1 if S = 0 (a body at rest without gravity: the drift is then absolute). I is
+evaluated in the compiled loop from the outputs L and n (body axes), so it is the same for every
+formulation (Euler–Poisson, quaternion; for the Euler-angle models L₃ is p_γ). Its C code is
+``generated/c/derive_integrals.h``, printed by SymPy from the formulas of
+:mod:`derive.symbolic.integrable` at ``derive generate`` time (one source, no SymPy on the warm path).
+Which integral: option ``integral = "case"`` (default) takes each point's own case (the points
+of a sweep may differ: varying I₃ crosses the Kovalevskaya ratio), with a body symmetric about
+axis 1 or 2 relabelled as :mod:`derive.symbolic.integrable` does; a point with no extra integral (the
+general case, or a damped body) gets NaN, its status stays ``ok`` (``p_alpha_drift`` and
+``energy_drift`` still apply to an undamped one). Naming an integral (``integral =
+"kovalevskaya"``) evaluates that one at every point whatever its case — the drift of K as the
+body leaves the Kovalevskaya ratio — in the formulas' axes (the point's own relabelling when its
+case is that integral's); the Casimirs ``n_norm`` (|n|²) and ``p_alpha`` (L·n) can be named
+too. G is conserved only on L·n = 0: a point off that level reports G's real drift.
+
+Conventions: beta is the z-y-z nutation angle in [0, pi] (the output map's, made canonical);
+omega2 the body-frame component ω̃₂; energy T + V; p_alpha, p_gamma the conjugate momenta.
+"""
+from __future__ import annotations
+
+import ctypes
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, classify_values, relabel_params
+
+#: The compiled accumulators, in the order of the C enum (rendered from this tuple).
+SLOTS = ("beta_max", "beta_min", "energy_drift", "p_alpha_drift", "p_gamma_drift", "flips",
+         "time_to_flip", "time_to_tilt", "integral_drift")
+#: config[] of the compiled loop: the option values and the work flags a measure ``needs``.
+CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3, "dense_always": 4, "extrema": 5}
+#: The outputs the compiled loop reads (by name; their indices come from the model's outputs).
+READS = ("beta", "energy", "omega2", "p_alpha", "p_gamma", "L1", "L2", "L3", "n1", "n2", "n3")
+#: The outputs ``final_state`` reports at t_end.
+FINAL = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3")
+
+
+@dataclass(frozen=True)
+class Measure:
+    name: str
+    unit: str
+    doc: str
+    reads: str  # "slot" | "stats" | "final" | "slots" (formula of the accumulators)
+    slot: str | None = None
+    formula: object = None  # reads == "slots": {slot: (N,) array} -> (N,) array
+    options: dict = field(default_factory=dict)
+    needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "extrema", "flip_time", ...
+    choices: dict = field(default_factory=dict)  # {option: allowed names} of a named option
+
+    @property
+    def columns(self) -> tuple[str, ...]:
+        return tuple(f"final_{n}" for n in FINAL) if self.reads == "final" else (self.name,)
+
+
+REGISTRY: dict[str, Measure] = {m.name: m for m in (
+    Measure("beta_max", "rad", "largest nutation angle beta, located on the dense output", "slot",
+            "beta_max", needs=("steps", "extrema")),
+    Measure("beta_min", "rad", "smallest nutation angle beta, located on the dense output", "slot",
+            "beta_min", needs=("steps", "extrema")),
+    Measure("nutation", "rad", "beta_max - beta_min: the nutation amplitude (a top released at a "
+            "turning point)", "slots", formula=lambda r: r["beta_max"] - r["beta_min"],
+            needs=("steps", "extrema")),
+    Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift",
+            needs=("steps",)),
+    Measure("p_alpha_drift", "kg m^2/s", "max over the steps of |p_alpha - p_alpha(0)|", "slot",
+            "p_alpha_drift", needs=("steps",)),
+    Measure("p_gamma_drift", "kg m^2/s", "max over the steps of |p_gamma - p_gamma(0)|", "slot",
+            "p_gamma_drift", needs=("steps",)),
+    Measure("flips", "", "sign changes of omega2 (body frame) between step ends", "slot", "flips",
+            needs=("steps",)),
+    Measure("time_to_flip", "s", "first sign change of omega2, on the dense output (NaN: none)",
+            "slot", "time_to_flip", needs=("steps", "flip_time")),
+    Measure("time_to_tilt", "s", "first time beta exceeds the option angle (NaN: never)", "slot",
+            "time_to_tilt", options={"angle": (math.pi / 2, "rad", "the tilt threshold")},
+            needs=("steps", "tilt_time", "extrema")),  # "rose and fell back": a maximum's search
+    Measure("integral_drift", "", "max over the steps of |I - I0| / S for the extra integral I of "
+            "the point's integrable case (|L|^2, L3 = p_gamma, L.r_c, Kovalevskaya's K, "
+            "Goryachev-Chaplygin's G), S its size at t = 0 (NaN: no extra integral)", "slot",
+            "integral_drift", needs=("steps",),
+            options={"integral": ("case", "", "which integral: each point's own ('case') or one "
+                                  "named for every point")},
+            choices={"integral": ("case", *(i.name for i in C_INTEGRALS))}),
+    Measure("nfev", "", "right-hand-side evaluations (the dense stages included, formed only on "
+            "the steps a search reads)", "stats"),
+    Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
+            "from the start alone: equal to a sampled run's modulo 2 pi)", "final"),
+)}
+
+DEFAULT = ("beta_max", "beta_min", "energy_drift", "nfev")
+
+
+def owner(column: str) -> str | None:
+    """The measure that gives this result column (``final_beta`` -> ``final_state``), or None."""
+    for m in REGISTRY.values():
+        if column == m.name or column in m.columns:
+            return m.name
+    return None
+
+
+def config_of(names, options: dict | None = None) -> np.ndarray:
+    """The compiled loop's config[] for the measures ``names``: the options ({measure: {option:
+    value}}, defaults filled in) and the work flags they need."""
+    options = options or {}
+    cfg = np.zeros(len(CONFIG))
+    for name in names:
+        m = REGISTRY[name]
+        for flag in m.needs:
+            cfg[CONFIG[flag]] = 1.0
+    for m in REGISTRY.values():
+        for opt, (default, _, _) in m.options.items():
+            if opt not in m.choices:  # a named option selects per-point data instead
+                cfg[CONFIG[opt]] = float(options.get(m.name, {}).get(opt, default))
+    return cfg
+
+
+#: The per-point row of integral_drift's data: the integral's code (0: none), the body axes
+#: (0-based) that play the formulas' axes 1, 2, 3, and the general parameters in those axes.
+INTEGRAL_ROW = ("code", "axis1", "axis2", "axis3", *C_PARAMS)
+
+
+def integral_rows(general: np.ndarray, damping: np.ndarray, choice: str = "case") -> np.ndarray:
+    """(N, len(INTEGRAL_ROW)) rows for the compiled integral_drift from each point's general
+    parameters ``general`` (N, len(C_PARAMS): I1, I2, I3, M, g, cx, cy, cz in body axes) and
+    damping coefficient (N,): the integral of the point's case (``choice`` "case") or the one
+    named, classified once per distinct body (:func:`derive.symbolic.integrable.classify_values`)."""
+    general = np.asarray(general, dtype=float).reshape(-1, len(C_PARAMS))
+    body = np.column_stack([general, np.asarray(damping, dtype=float).reshape(-1)])
+    if body.shape[0] == 0:
+        return np.zeros((0, len(INTEGRAL_ROW)))
+    codes = {i.name: k + 1 for k, i in enumerate(C_INTEGRALS)}
+    uniq, inverse = np.unique(body, axis=0, return_inverse=True)
+    per = np.zeros((len(uniq), len(INTEGRAL_ROW)))
+    for u, row in enumerate(uniq):
+        p = dict(zip(C_PARAMS, (float(x) for x in row[:-1])))
+        c = classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
+                            float(row[-1]))
+        own = c.canonical_extra
+        name = (own.name if own is not None else None) if choice == "case" else choice
+        axes = c.axes if own is not None and own.name == name else (0, 1, 2)
+        q = relabel_params(p, axes)
+        per[u] = [codes[name] if name is not None else 0, *axes, *(q[k] for k in C_PARAMS)]
+    return per[np.ravel(inverse)]
+
+
+def read(names, desc, res, stats, final) -> dict:
+    """{column: 1-D array} of the measures ``names`` from one compiled call's results: ``res``
+    (N, len(SLOTS)), ``stats`` (N,) records, ``final`` (N, NOBS) outputs at t_end."""
+    out = {}
+    for name in names:
+        m = REGISTRY[name]
+        if m.reads == "slot":
+            values = res[:, SLOTS.index(m.slot)]
+            out[name] = values.astype(np.int64) if name == "flips" and np.isfinite(values).all() else values
+        elif m.reads == "slots":
+            out[name] = m.formula({s: res[:, k] for k, s in enumerate(SLOTS)})
+        elif m.reads == "stats":
+            out[name] = stats["nfev"].astype(np.int64)
+        else:
+            for col, o in zip(m.columns, FINAL):
+                out[col] = final[:, desc.outputs.index(o)]
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# The compiled (model, method) library with the measures (one per process, like ModelKernel)
+
+
+def source(desc, method: str) -> str:
+    """``<name>_measures.c`` for a model and method (rendered from templates/c/measures.c.j2)."""
+    from derive.codegen.render import environment
+    from derive.methods.registry import METHODS
+    from derive.codegen.solvers import _method_context
+
+    idx = {f"i_{n}": desc.outputs.index(n) for n in READS}
+    idx["i_L"] = [desc.outputs.index(f"L{k}") for k in (1, 2, 3)]
+    idx["i_n"] = [desc.outputs.index(f"n{k}") for k in (1, 2, 3)]
+    m = _method_context(METHODS[method])  # the stage array's size, as the driver declares it
+    return environment().get_template("c/measures.c.j2").render(
+        prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, nip=len(INTEGRAL_ROW), n_k=m["n_k"],
+        n_stages=m["s"], n_dense=len(m["dense"]["stages"]), **idx)
+
+
+def c_sources(desc, method: str) -> dict[str, str]:
+    """{file name: text} of the measured unit's inputs: the model and its solvers, the rendered
+    ``<name>_measures.c`` and the generated integrals it includes."""
+    sources = desc.c_sources()
+    sources[f"{desc.name}_measures.c"] = source(desc, method)
+    sources["derive_integrals.h"] = desc.source("c/derive_integrals.h")
+    return sources
+
+
+class MeasureKernel:
+    """``<name>_measure_batch_<method>``: N measured simulations in one C call (init map,
+    integration with the measures' hook, outputs at the requested times)."""
+
+    _cache: dict = {}
+
+    def __init__(self, desc, method, lib):
+        self.desc, self.method, self.lib = desc, method, lib
+        self.ny, self.nout = len(desc.states), len(desc.outputs)
+        vp, cl, cd = ctypes.c_void_p, ctypes.c_long, ctypes.c_double
+        fn = getattr(lib, f"{desc.name}_measure_batch_{method}")
+        fn.argtypes = [cl, vp, vp, vp, cl, cd, cd, cd, cl, vp, vp, vp, vp, vp, vp]
+        fn.restype = ctypes.c_int
+        self._fn = fn
+        guard = getattr(lib, f"{desc.name}_interrupt_guard")
+        guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
+        self._guard = guard
+        # The measures' accumulators are static in the library: one run at a time (a Dask
+        # worker with several threads would otherwise mix trajectories).
+        import threading
+
+        self._lock = threading.Lock()
+
+    @classmethod
+    def load(cls, desc, method: str) -> "MeasureKernel":
+        """Compiled once per machine (the compile cache), loaded once per process."""
+        from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
+        from derive.methods.registry import METHODS
+
+        if METHODS[method].driver != "adaptive":
+            raise ValueError(f"measures need an adaptive method, not {method}")
+        key = (desc.folder, desc.name, method)
+        kernel = cls._cache.get(key)
+        if kernel is None:
+            sources = c_sources(desc, method)
+            unity = f"{desc.name}_{method}_measures_unit.c"
+            sources[unity] = "".join(f'#include "{n}"\n' for n in (
+                f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_measures.c"))
+            flags = list(DEFAULT_FLAGS) + ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}",
+                                           "-DDERIVE_MEASURES"]
+            lib = compile_library(f"{desc.name}_{method}_measures", sources, unity, flags)
+            kernel = cls._cache[key] = cls(desc, method, lib)
+        return kernel
+
+    def run(self, inputs, ps, t, args, config, integral=None):
+        """(res (N, len(SLOTS)), out (N, NOBS, n), stats (N,)) for inputs (N, NIN), ps (N, NP),
+        output times t, the driver's arguments (rtol, atol, h0, max_steps) and the per-point
+        ``integral_rows`` (None: no integral, integral_drift NaN)."""
+        import threading
+
+        from derive.runtime.integrate import STATS_DTYPE
+        from derive.methods.status import Status
+
+        nb, n = inputs.shape[0], t.shape[0]
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+        ps = np.array(ps, dtype=np.float64, order="C")
+        t = np.ascontiguousarray(t, dtype=np.float64)
+        config = np.ascontiguousarray(config, dtype=np.float64)
+        integral = (np.zeros((nb, len(INTEGRAL_ROW))) if integral is None
+                    else np.ascontiguousarray(integral, dtype=np.float64).reshape(nb, len(INTEGRAL_ROW)))
+        y = np.empty((nb, n, self.ny))
+        out = np.empty((nb, self.nout, n))
+        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
+        res = np.empty((max(nb, 1), len(SLOTS)))
+        ptr = lambda a: a.ctypes.data  # noqa: E731
+        main = threading.current_thread() is threading.main_thread()
+        with self._lock:
+            if main:
+                self._guard(1)
+            try:
+                rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, ptr(config),
+                              ptr(integral), ptr(y), ptr(out), ptr(st), ptr(res))
+            finally:
+                interrupted = self._guard(0) if main else 0
+        if interrupted or rc == Status.INTERRUPTED:
+            raise KeyboardInterrupt
+        return res[:nb], out, st[:nb]

@@ -1,0 +1,327 @@
+"""Effects: what acts on the body besides its own inertia. A registry, one entry per effect.
+
+Numbered contract of an entry (what a new effect provides, and nothing else needs editing):
+
+1. ``name``: the registry key, also the part of a model's name that says the effect is present.
+2. ``table``: the scene table that switches it on (``[gravity]``, ``[damping]``, …) with its
+   keys (:class:`Key`: name, unit, meaning, check, default); several effects may share a table
+   (axial and general gravity), and ``claims(values)`` says which one a table's values select.
+3. ``params``: the model parameters it adds, in order, each a :class:`Param` with its SymPy
+   assumptions, and ``values(table values) -> {param: float}``.
+4. ``potential(R, sym)`` (conservative) or ``torque(omega, R, sym)`` (anything else), symbolic:
+   ``R`` maps body to inertial components (v⁰ = R ṽ), ẑ is the inertial vertical, ω̃ is in body
+   axes, ``sym(name)`` returns the parameter's SymPy symbol. Every formulation derives its
+   equations from these two things:
+
+   * Lagrangian (Euler angles): V enters L = T − V; a torque enters as the generalised force
+     Q_j = τ̃ · ∂ω̃/∂q̇_j (virtual power).
+   * Newton–Euler (quaternion, Euler–Poisson): τ̃ is used directly; a potential yields its
+     torque by a virtual rotation R → R (1 + [δθ]ₓ):  τ̃_k = −∂V/∂δθ_k |₀.
+5. ``axisymmetric``: the effect leaves the symmetry of a symmetric body about axis 3 and the
+   vertical intact (V depends on the tilt alone), so p_α and p_γ stay conserved — what the
+   reduced formulation needs. ``conservative``: it has a potential and no torque.
+6. ``natural_rate(values, body)``: a rate (1/s) the effect sets, for default fixed steps.
+
+Nothing here imports SymPy at module level: scene validation uses the tables on the warm path,
+and only deriving a model calls ``potential``/``torque``.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+REQUIRED = object()  # a key without a default
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key of a scene table: ``kind`` "real" or "vector3"; ``check(x)`` must hold for a
+    real (for a vector: for the vector as a tuple); ``must`` says what it must be."""
+
+    name: str
+    unit: str
+    doc: str
+    kind: str = "real"
+    check: Callable[[Any], bool] | None = None
+    must: str = "a finite number"
+    default: Any = REQUIRED
+
+
+@dataclass(frozen=True)
+class Param:
+    """A model parameter an effect adds: its name and SymPy assumptions."""
+
+    name: str
+    assumptions: tuple = ()  # e.g. (("positive", True),)
+
+
+@dataclass(frozen=True)
+class Table:
+    """A scene table owned by effects: its keys, and groups of keys of which exactly one must be
+    given (``one_of``; e.g. gravity's ``l`` or ``com``)."""
+
+    name: str
+    doc: str
+    keys: tuple[Key, ...]
+    one_of: tuple[tuple[str, ...], ...] = ()
+    #: Fills derived keys from the validated values (gravity: com from l and l from com).
+    complete: Callable[[dict], dict] = lambda values: values
+
+    def key(self, name: str) -> Key:
+        return next(k for k in self.keys if k.name == name)
+
+
+@dataclass(frozen=True)
+class Effect:
+    """One effect (see the module docstring for the contract)."""
+
+    name: str
+    table: str
+    description: str
+    params: tuple[Param, ...]
+    values: Callable[[dict], dict]
+    claims: Callable[[dict], bool] = lambda values: True
+    potential: Callable | None = None
+    torque: Callable | None = None
+    axisymmetric: bool = False
+    natural_rate: Callable[[dict, Any], float] = lambda values, body: 0.0
+
+    @property
+    def conservative(self) -> bool:
+        return self.torque is None
+
+    @property
+    def param_names(self) -> tuple[str, ...]:
+        return tuple(p.name for p in self.params)
+
+
+# ---------------------------------------------------------------------------------------------
+# the entries
+
+def _positive(x):
+    return x > 0
+
+
+def _nonnegative(x):
+    return x >= 0
+
+
+def _com(values) -> tuple[float, float, float]:
+    """The centre of mass (body axes, m, from the pivot): ``com``, or (0, 0, l)."""
+    com = values.get("com")
+    if com is not None:
+        return tuple(map(float, com))  # map: no generator frame (scene validation calls this)
+    return (0.0, 0.0, float(values["l"]))
+
+
+def _on_axis(com) -> bool:
+    return com[0] == 0.0 and com[1] == 0.0
+
+
+def _axial(values) -> bool:
+    return _on_axis(_com(values))
+
+
+def _complete_gravity(values, com) -> dict:
+    """The gravity table's values with ``com`` always set and ``l`` = com[2] when the centre of
+    mass is on axis 3, else None."""
+    return {**values, "com": com, "l": com[2] if _on_axis(com) else None}
+
+
+def _gravity_potential(com_names):
+    def V(R, sym):
+        import sympy as sp
+
+        com = sp.Matrix([sym(n) if isinstance(n, str) else n for n in com_names])
+        # Height of the centre of mass, ẑ · (R r_c), times M g (g along −ẑ).
+        return sym("M") * sym("g") * (R[2, :] * com)[0, 0]
+
+    return V
+
+
+def _gravity_rate(values, body) -> float:
+    # Pendulum rate √(M g |r_c| / I_min).
+    r = math.sqrt(sum(c * c for c in _com(values)))
+    return math.sqrt(values["M"] * values["g"] * r / min(body.I1, body.I2, body.I3))
+
+
+def _viscous(omega, R, sym):
+    import sympy as sp
+
+    return -sym("c") * sp.Matrix(omega)
+
+
+GRAVITY_TABLE = Table(
+    "gravity",
+    "uniform field g along −z acting on mass M whose centre of mass sits at `com` (body principal "
+    "axes, from the pivot), or on body axis 3 at signed distance `l` (l < 0: below the pivot "
+    "when axis 3 points up). Absent table: no gravity terms at all.",
+    keys=(
+        Key("M", "kg", "mass", check=_positive, must="a positive finite number (kg)"),
+        Key("g", "m/s^2", "field strength", check=_nonnegative,
+            must="a non-negative finite number (m/s^2)"),
+        Key("l", "m", "centre of mass on body axis 3 at this signed distance from the pivot",
+            must="a finite number (m; negative = below the pivot)", default=None),
+        Key("com", "m", "centre of mass [x, y, z] in body principal axes, from the pivot",
+            kind="vector3", must="a list of 3 finite numbers [x, y, z] (m, body axes)",
+            default=None),
+    ),
+    one_of=(("l", "com"),),
+    complete=lambda v: _complete_gravity(v, _com(v)),
+)
+
+DAMPING_TABLE = Table(
+    "damping",
+    "viscous torque −c ω̃ about the fixed point (c = 0 still compiles the term: a scene pays "
+    "for what it names)",
+    keys=(Key("c", "N m s", "viscous coefficient", check=_nonnegative,
+              must="a non-negative finite number (N m s)"),),
+)
+
+TABLES: dict[str, Table] = {t.name: t for t in (GRAVITY_TABLE, DAMPING_TABLE)}
+
+#: The effect of a centre of mass anywhere (the analysis derives the general heavy body with it).
+GENERAL_GRAVITY = "gravity_general"
+
+REGISTRY: dict[str, Effect] = {e.name: e for e in (
+    Effect(
+        "gravity", "gravity",
+        "uniform gravity g along −z, centre of mass on body axis 3 at distance l from the pivot",
+        params=(Param("M", (("positive", True),)), Param("g", (("positive", True),)),
+                Param("l", (("positive", True),))),
+        values=lambda v: {"M": v["M"], "g": v["g"], "l": _com(v)[2]},
+        claims=_axial,
+        potential=_gravity_potential((0, 0, "l")),
+        axisymmetric=True,
+        natural_rate=_gravity_rate,
+    ),
+    Effect(
+        "gravity_general", "gravity",
+        "uniform gravity g along −z, centre of mass at (cx, cy, cz) in body axes",
+        params=(Param("M", (("positive", True),)), Param("g", (("positive", True),)),
+                Param("cx", (("real", True),)), Param("cy", (("real", True),)),
+                Param("cz", (("real", True),))),
+        values=lambda v: dict(zip(("M", "g", "cx", "cy", "cz"), (v["M"], v["g"], *_com(v)))),
+        claims=lambda v: not _axial(v),
+        potential=_gravity_potential(("cx", "cy", "cz")),
+        natural_rate=_gravity_rate,
+    ),
+    Effect(
+        "damping", "damping", "viscous torque −c ω about the pivot",
+        params=(Param("c", (("nonnegative", True),)),),
+        values=lambda v: {"c": v["c"]},
+        torque=_viscous,
+        natural_rate=lambda v, body: v["c"] / min(body.I1, body.I2, body.I3),
+    ),
+)}
+
+
+def register(effect: Effect, table: Table | None = None) -> None:
+    """Add an effect (and, if new, its table). Tables and effects keep registration order, which
+    fixes the order of a model's parameters."""
+    if table is not None:
+        TABLES[table.name] = table
+    if effect.table not in TABLES:
+        raise ValueError(f"effect {effect.name!r}: unknown table {effect.table!r}")
+    REGISTRY[effect.name] = effect
+    _changed()
+
+
+def unregister(name: str) -> None:
+    """Remove an effect, and its table when no other effect uses it (tests register toys)."""
+    effect = REGISTRY.pop(name)
+    if not any(e.table == effect.table for e in REGISTRY.values()):
+        TABLES.pop(effect.table, None)
+    _changed()
+
+
+#: Bumped whenever the registry changes, so that what is computed from it can be cached.
+VERSION = [0]
+
+
+def _changed() -> None:
+    VERSION[0] += 1
+
+
+def for_table(table: str, values: dict) -> Effect:
+    """The effect a table's (validated) values select."""
+    for e in REGISTRY.values():
+        if e.table == table and e.claims(values):
+            return e
+    raise ValueError(f"no effect claims the values of [{table}]")
+
+
+def lookup(names) -> tuple[Effect, ...]:
+    """The effects named, in registry order (so a model's parameter layout does not depend on
+    the order a scene lists them in)."""
+    unknown = [n for n in names if n not in REGISTRY]
+    if unknown:
+        raise KeyError(f"unknown effect {unknown[0]!r} (known: {', '.join(REGISTRY)})")
+    wanted = set(names)
+    return tuple(e for n, e in REGISTRY.items() if n in wanted)
+
+
+# ---------------------------------------------------------------------------------------------
+# symbolic helpers (SymPy imported by the callers that derive)
+
+@dataclass
+class Symbols:
+    """``sym(name)`` for the parameters of a set of effects: one SymPy symbol per name, with the
+    declared assumptions (shared with the derivation core's M, g, l)."""
+
+    effects: tuple
+    _cache: dict = field(default_factory=dict)
+
+    def __call__(self, name: str):
+        if name not in self._cache:
+            import sympy as sp
+
+            from derive.symbolic import lagrangian
+
+            known = {"M": lagrangian.Mass, "g": lagrangian.g, "l": lagrangian.l}
+            if name in known:
+                self._cache[name] = known[name]
+            else:
+                assumptions = next((dict(p.assumptions) for e in self.effects for p in e.params
+                                    if p.name == name), {"real": True})
+                self._cache[name] = sp.Symbol(name, **assumptions)
+        return self._cache[name]
+
+    def params(self) -> tuple:
+        return tuple(self(p.name) for e in self.effects for p in e.params)
+
+
+def potential(effects, R, sym):
+    """ΣV of the conservative effects."""
+    import sympy as sp
+
+    return sum((e.potential(R, sym) for e in effects if e.potential), sp.S.Zero)
+
+
+def torque_from_potential(V: Callable, R, sym):
+    """τ̃_k = −d/dε V(R (1 + ε [ê_k]ₓ), sym) at ε = 0: the torque of a potential, in body axes."""
+    import sympy as sp
+
+    from derive.symbolic.rotations import skew
+
+    eps = sp.Symbol("epsilon")
+    tau = []
+    for k in range(3):
+        e = sp.zeros(3, 1)
+        e[k] = 1
+        tau.append(-sp.diff(V(R * (sp.eye(3) + eps * skew(e)), sym), eps).subs(eps, 0))
+    return sp.Matrix(tau)
+
+
+def torque(effects, omega, R, sym):
+    """Σ τ̃ of every effect: the torques, and the potentials' torques by virtual rotation."""
+    import sympy as sp
+
+    tau = sp.zeros(3, 1)
+    for e in effects:
+        if e.torque:
+            tau += e.torque(omega, R, sym)
+        if e.potential:
+            tau += torque_from_potential(e.potential, R, sym)
+    return tau

@@ -1,0 +1,139 @@
+"""The house: stage subpackages, the layers contract, no import cycle, a small public root.
+
+The contract itself is in pyproject.toml (``[tool.importlinter]``); import-linter checks it, and
+this file checks what a layers contract does not: cycles between the modules of one package
+(imports inside functions counted), the size of the root, and each stage's stated imports.
+"""
+from __future__ import annotations
+
+import ast
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGE = ROOT / "derive"
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for path in PACKAGE.rglob("*.py"):
+        rel = path.relative_to(ROOT).with_suffix("")
+        if "baselines" in rel.parts:  # the bench's rivals: data it loads, not modules of derive
+            continue
+        name = ".".join(rel.parts[:-1] if rel.name == "__init__" else rel.parts)
+        out[name] = path
+    return out
+
+
+def _imports(modules: dict[str, Path]) -> dict[str, set[str]]:
+    """Every derive module each module imports, at module level or inside a function."""
+    graph = {}
+    for name, path in modules.items():
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        found = set()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+                    base = ".".join(parts + ([node.module] if node.module else []))
+                for alias in node.names:
+                    full = f"{base}.{alias.name}"
+                    found.add(full if full in modules else base)
+            elif isinstance(node, ast.Import):
+                found.update(a.name for a in node.names)
+        graph[name] = {m for m in found if m in modules and m != name}
+    return graph
+
+
+def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components with more than one module (Tarjan)."""
+    index, low, stack, on, out = {}, {}, [], set(), []
+
+    def visit(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in sorted(graph[v]):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_cycle_counting_imports_inside_functions():
+    graph = _imports(_modules())
+    assert len(graph) > 40
+    assert _cycles(graph) == []
+
+
+def test_the_cycle_check_finds_a_cycle_hidden_in_a_function():
+    graph = {"a": {"b"}, "b": {"c"}, "c": {"a"}, "d": {"a"}}
+    assert _cycles(graph) == [["a", "b", "c"]]
+
+
+def test_the_layers_contract_is_kept():
+    pytest.importorskip("importlinter")
+    r = subprocess.run([sys.executable, "-c", "import sys; from importlinter.cli import lint_imports; "
+                        "sys.exit(lint_imports())"], cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-2000:]
+    assert "1 kept, 0 broken" in r.stdout
+
+
+def test_the_root_keeps_the_public_face_only():
+    root = sorted(p.name for p in PACKAGE.glob("*.py"))
+    assert len(root) <= 12, root
+    stages = sorted(p.parent.name for p in PACKAGE.glob("*/__init__.py"))
+    assert {"symbolic", "methods", "codegen", "runtime", "sim", "sweeps", "lecture", "bench",
+            "reference"} <= set(stages)
+
+
+def test_each_stage_says_what_it_may_import():
+    for init in sorted(PACKAGE.glob("*/__init__.py")):
+        doc = ast.get_docstring(ast.parse(init.read_text(encoding="utf-8"))) or ""
+        assert "May import" in doc, init
+
+
+def test_nothing_outside_the_bench_imports_it_but_the_command_line():
+    graph = _imports(_modules())
+    users = sorted(m for m, deps in graph.items() if not m.startswith("derive.bench")
+                   and any(d.startswith("derive.bench") for d in deps))
+    assert users == ["derive.cli"]
+
+
+def test_old_module_paths_still_import_and_name_the_new_place():
+    code = ("import warnings, json; warnings.simplefilter('always'); "
+            "from warnings import catch_warnings\n"
+            "with catch_warnings(record=True) as w:\n"
+            "    warnings.simplefilter('always')\n"
+            "    import derive.simulation as s, derive.scene as sc\n"
+            "    from derive import cbuild\n"
+            "import derive.sim.simulation, derive.sim.scene\n"
+            "print(json.dumps([s is derive.sim.simulation, sc is derive.sim.scene, cbuild.__name__,"
+            " [str(x.message) for x in w]]))")
+    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    import json
+
+    same_sim, same_scene, cbuild, messages = json.loads(r.stdout)
+    assert same_sim and same_scene and cbuild == "derive.runtime.cbuild"
+    assert any("derive.simulation has moved to derive.sim.simulation" in m for m in messages)
