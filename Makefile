@@ -5,7 +5,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: derive verify test test-slow bench bench-peers clean setup
+.PHONY: derive verify test test-slow bench bench-peers docs clean setup
 
 setup: $(STAMP)
 
@@ -30,6 +30,11 @@ test-slow: $(STAMP)
 bench: $(STAMP)
 	@$(PY) -m derive bench -o bench-out
 
+# The API reference from the docstrings (numpydoc style), warning-free: docs/api/_build/html.
+docs: $(STAMP)
+	@$(PY) -m sphinx -W -q -b html docs/api docs/api/_build/html
+	@echo "API reference: docs/api/_build/html/index.html"
+
 # The same bench with CasADi and PyDy installed (the optional extra) and raced.
 bench-peers: $(STAMP)
 	@$(PY) -m pip install -q --disable-pip-version-check -e '.[test,peers]'
@@ -39,5 +44,5 @@ bench-peers: $(STAMP)
 # which removes only the libraries it put there; without the venv there is nothing to ask.
 clean:
 	@if [ -x $(PY) ]; then $(PY) -m derive cache --clear || true; fi
-	rm -rf $(VENV) bench-out .pytest_cache .hypothesis *.egg-info
+	rm -rf $(VENV) bench-out docs/api/_build .pytest_cache .hypothesis *.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -1,9 +1,15 @@
 """derive: rigid-body rotation, derived symbolically, checked against a lecture, compiled to C.
 
 Conventions throughout: z-y-z Euler angles in the quantum-mechanics convention of the notes
-(alpha about the inertial z axis, beta about the intermediate y' axis, gamma about the body 3
-axis); the rotation matrix R = Rz(alpha) Ry(beta) Rz(gamma) maps body components to inertial
-components (v_inertial = R v_body); omega-tilde are body-frame components; SI units.
+(α about the inertial z axis, β about the intermediate y′ axis, γ about the body 3 axis); the
+rotation matrix R = Rz(α) Ry(β) Rz(γ) maps body components to inertial components
+(v_inertial = R v_body); ω̃ are body-frame components; SI units.
+
+The public API is this module: :func:`simulate`, :func:`simulate_batch`, :func:`sweep`,
+:func:`analyze` and the errors :class:`SceneError`, :class:`IntegrationError`,
+:class:`CompilerError`. The stages behind it are subpackages (``derive.symbolic``,
+``derive.methods``, ``derive.codegen``, ``derive.runtime``, ``derive.sim``, ``derive.sweeps``,
+``derive.lecture``), each saying in its docstring what it takes, gives and may import.
 """
 from derive import _moved
 from derive.errors import CompilerError, IntegrationError, SceneError
@@ -13,25 +19,190 @@ _moved.install()  # derive.simulation, derive.scene, …: the old module paths s
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
 
-__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep"]
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep",
+           "analyze"]
 
 
 def simulate(scene, **overrides):
-    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.sim.simulation`."""
+    """Simulate one scene: derive (or load) its model, integrate it in one C call, return the arrays.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        A scene file (TOML), the name of a shipped example (``"looping_top"``; ``derive
+        examples`` lists them), or a dict shaped like the TOML (tables ``body``, optional
+        ``gravity`` and ``damping``, ``initial``, optional ``simulate``).
+    **overrides
+        Keys of the ``[simulate]`` table that replace the scene's: ``method``, ``rtol``,
+        ``atol``, ``formulation``, ``h``, ``max_steps``, ``t_end``, ``samples``. ``None`` means
+        "not given".
+
+    Returns
+    -------
+    derive.sim.simulation.Result
+        The arrays of the output file as attributes: ``t`` (n,), the z-y-z angles ``alpha``,
+        ``beta`` (in [0, π]), ``gamma`` (α, γ continuous, not wrapped), ``omega`` (n, 3, body
+        frame ω̃), ``axis`` (n, 3, inertial components of body axis ê₃), ``energy`` (T + V),
+        ``p_alpha`` and ``p_gamma`` (conserved only without damping), ``n`` (the upward vertical
+        in body axes) and ``L`` (angular momentum about the pivot, body axes); ``integrals``
+        ({name: (n,) array}, the extra integral of an integrable case, also as
+        ``integral_<name>``); ``method``, ``formulation`` and ``nfev`` (what ran).
+
+    Raises
+    ------
+    SceneError
+        Bad input (a ``ValueError``), with the command line's one-line message
+        ``<file>: <key>: <what is wrong>``.
+    IntegrationError
+        Numerical failure (step size underflow, non-finite state, step budget spent), saying
+        where (time, quantity).
+    CompilerError
+        No working C compiler for a model that must be compiled first.
+
+    Examples
+    --------
+    >>> import derive
+    >>> res = derive.simulate("looping_top", t_end=0.5, samples=6)
+    >>> res.t.shape, res.omega.shape
+    ((6,), (6, 3))
+    >>> bool(abs(res.energy[-1] - res.energy[0]) < 1e-9 * abs(res.energy[0]))
+    True
+
+    A second call with the same model reuses the compiled kernel (no derivation, no compile).
+    """
     from derive.sim.simulation import simulate as _simulate
 
     return _simulate(scene, **overrides)
 
 
 def simulate_batch(scenes, **overrides):
-    """Simulate many scenes differing only in numbers, the loop over them in C. See `derive.sim.simulation`."""
+    """Simulate many scenes that differ only in numbers, with one call into C for all of them.
+
+    Parameters
+    ----------
+    scenes : sequence of str, dict or Scene
+        Scenes as :func:`simulate` takes them. They must name the same effects, body symmetry,
+        output times, method and tolerances; the moments, effect parameters and initial states
+        may differ.
+    **overrides
+        ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
+
+    Returns
+    -------
+    list of derive.sim.simulation.Result
+        One result per scene, in order, each as :func:`simulate` would give it. With
+        ``formulation = "auto"`` the scenes share one formulation.
+
+    Raises
+    ------
+    SceneError
+        Bad input, or scenes that do not share a model.
+    IntegrationError
+        A trajectory failed (the message names which).
+
+    Examples
+    --------
+    >>> import derive
+    >>> base = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
+    ...         "simulate": {"t_end": 1.0, "samples": 3}}
+    >>> def start(beta):
+    ...     return {"alpha": 0.0, "beta": beta, "gamma": 0.0,
+    ...             "alpha_dot": 0.0, "beta_dot": 0.0, "gamma_dot": 6.0}
+    >>> runs = derive.simulate_batch([{**base, "initial": start(b)} for b in (0.3, 0.6)])
+    >>> [round(float(r.beta[0]), 3) for r in runs]
+    [0.3, 0.6]
+    """
     from derive.sim.simulation import simulate_batch as _batch
 
     return _batch(scenes, **overrides)
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
-    """Run a parameter sweep (a sweep-file path or a dict shaped like one). See `derive.sweeps.engine`."""
+    """Run a parameter sweep: many points of one scene, each measured while it is integrated.
+
+    Parameters
+    ----------
+    spec : str, os.PathLike or dict
+        A sweep file (TOML), the name of a shipped example sweep (``"sleeping_threshold"``), or
+        a dict shaped like one: ``scene`` (a path relative to the sweep file, or an inline
+        scene table), ``vary`` (dotted scene keys → ``{from, to, num}`` or ``{values}``, the
+        Cartesian product, first key slowest) or ``random`` (``n``, ``seed``, ``{low, high}``
+        per key), and ``measures`` (``beta_max``, ``beta_min``, ``energy_drift``, ``nfev``,
+        ``flips``, …).
+    workers : int, optional
+        Start a Dask ``LocalCluster`` with that many worker processes.
+    scheduler : str, optional
+        The address of a running Dask scheduler (``tcp://host:port``).
+    progress : bool, optional
+        A progress bar on stderr (default: when stderr is a terminal).
+    **kwargs
+        ``processes`` (the local engine's process count, default one per core) and
+        ``add_measure`` (a measure added to the spec's list).
+
+    Returns
+    -------
+    derive.sweeps.engine.SweepResult
+        ``params`` and ``measures`` ({name: (N,) array}, one entry per point), ``status``
+        ((N,) str: "ok" or why the point failed) and ``to_pandas()``. The numbers are the same
+        whichever engine ran them.
+
+    Raises
+    ------
+    SceneError
+        A bad sweep or scene (one line naming the key).
+    IntegrationError
+        The engine failed as a whole (a single point's failure is recorded in ``status``).
+
+    Examples
+    --------
+    >>> import derive
+    >>> spec = {"scene": {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
+    ...                   "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0, "alpha_dot": 0.0,
+    ...                               "beta_dot": 0.0, "gamma_dot": 6.0},
+    ...                   "simulate": {"t_end": 1.0}},
+    ...         "vary": {"initial": {"beta": {"from": 0.3, "to": 0.6, "num": 4}}},
+    ...         "measures": ["beta_max", "nfev"]}
+    >>> res = derive.sweep(spec, processes=1)
+    >>> res.measures["beta_max"].shape
+    (4,)
+    """
     from derive.sweeps.engine import sweep as _sweep
 
     return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress, **kwargs)
+
+
+def analyze(scene):
+    """The lecture's analysis for a scene's own body, evaluated at the scene's numbers.
+
+    Derives T, V, the equations of motion, the cyclic coordinates and conserved momenta, the
+    integrable case (Euler, Lagrange, Kovalevskaya, Goryachev–Chaplygin or general) with its
+    integrals, and the relative equilibria (sleeping, hanging, steady precession, permanent
+    rotations) with their linearisation and a stability verdict.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        As for :func:`simulate`.
+
+    Returns
+    -------
+    derive.lecture.analysis.Analysis
+        ``to_json()`` gives ``{"case", "integrals", "equilibria", …}`` (docs/analyze.md);
+        ``to_markdown()`` the report ``derive analyze`` prints.
+
+    Raises
+    ------
+    SceneError
+        Bad input.
+    IntegrationError
+        A verdict that cannot be evaluated in double precision (numbers out of range).
+
+    Examples
+    --------
+    >>> import derive
+    >>> derive.analyze("sleeping_top").to_json()["case"]
+    'lagrange'
+    """
+    from derive.lecture.analysis import analyze as _analyze
+
+    return _analyze(scene)

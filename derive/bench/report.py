@@ -66,7 +66,7 @@ def _cell(what: str, value) -> str:
 
 def targets_section(results: dict) -> list[str]:
     t = results["targets"]
-    L = ["## Targets (issues 8 and 11), measured side by side in this run", "",
+    L = ["## Targets, measured side by side in this run", "",
          "| target | goal | measured | |", "|---|---|---|---|"]
     for what, goal, value, ok in T.summary(t):
         L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
@@ -291,7 +291,7 @@ def summary(results: dict) -> str:
     cmd = "make bench" if cfg["name"] == "full" else f"derive bench --{cfg['name']}"
     L = [f"From one `{cmd}` run ({results['elapsed']:.0f} s; {m['cpu']}, {m['cores']} cores, load average "
          f"{la[0]:.2f} at the start; commit {m['commit']}; versions in the full report).", "",
-         "| target (issues 8 and 11) | goal | measured | |", "|---|---|---|---|"]
+         "| target | goal | measured | |", "|---|---|---|---|"]
     for what, goal, value, ok in T.summary(results["targets"]):
         L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
     c = results["c_loop"][-1]

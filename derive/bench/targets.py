@@ -481,10 +481,10 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
          pr.get("warm_ratio")),
         ("cold compile (fresh `DERIVE_CACHE`) − warm run [s]", "cold_minus_warm", pr.get("cold_minus_warm")),
         (f"NumPy batch rhs (N = {la.get('n', 0):,}) / `sympy.lambdify(cse=True)`", "numpy_vs_lambdify", la.get("ratio")),
-        ("issue 11: sweep (measures on, rtol 1e-8, t ∈ [0, 10]) per trajectory vs `solve_ivp` DOP853 "
+        ("sweep (measures on, rtol 1e-8, t ∈ [0, 10]) per trajectory vs `solve_ivp` DOP853 "
          "plain-Python rhs", "sweep_vs_scipy", sw.get("speedup")),
-        ("issue 11: 10⁵ points, Dask LocalCluster 2 workers / local engine 2 processes", "dask_vs_local",
+        ("10⁵ points, Dask LocalCluster 2 workers / local engine 2 processes", "dask_vs_local",
          sw.get("dask2_over_local2")),
-        ("issue 11: Dask scaling from 1 to 2 workers", "dask_scaling", sw.get("scaling_1_to_2")),
+        ("Dask scaling from 1 to 2 workers", "dask_scaling", sw.get("scaling_1_to_2")),
     ]
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]

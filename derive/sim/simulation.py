@@ -43,7 +43,34 @@ SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
 
 @dataclass
 class Result:
-    """The arrays of the output file (see the README, "Output file"), as attributes."""
+    """One simulated motion: the arrays of the output file, as attributes.
+
+    Attributes
+    ----------
+    t : ndarray, shape (n,)
+        Output times, s (uniform from 0 to ``t_end``).
+    alpha, beta, gamma : ndarray, shape (n,)
+        z-y-z Euler angles, rad: β ∈ [0, π]; α and γ continuous (not wrapped to ±π).
+    omega : ndarray, shape (n, 3)
+        Angular velocity in body axes (ω̃₁, ω̃₂, ω̃₃), rad/s.
+    axis : ndarray, shape (n, 3)
+        Inertial components of the body axis ê₃.
+    energy : ndarray, shape (n,)
+        Total energy T + V, J (conserved without damping).
+    p_alpha, p_gamma : ndarray, shape (n,)
+        Momenta conjugate to α and γ, kg m²/s (conserved for a symmetric top without damping).
+    n, L : ndarray, shape (n, 3)
+        The upward vertical, and the angular momentum about the pivot (kg m²/s), in body axes.
+    integrals : dict
+        ``{name: (n,) array}``: the extra integral of an integrable case (also readable as
+        ``res.integral_<name>``); empty for a general body.
+    method, formulation : str
+        What actually ran.
+    nfev : int
+        Right-hand-side evaluations.
+    model : str
+        The generated model's name (its C prefix).
+    """
 
     t: np.ndarray
     alpha: np.ndarray
@@ -65,7 +92,8 @@ class Result:
     scene: Scene | None = field(default=None, repr=False)
 
     def arrays(self) -> dict:
-        """Everything the .npz holds, by name."""
+        """Everything the output file holds, by name (``integral_<name>`` for the integrals,
+        ``method``, ``formulation`` and ``nfev`` as 0-d arrays)."""
         out = {name: getattr(self, name) for name, _ in OUTPUTS}
         out["t"] = self.t
         out.update({f"integral_{k}": v for k, v in self.integrals.items()})

@@ -606,6 +606,8 @@ class SweepResult:
         return self.status == "ok"
 
     def to_pandas(self):
+        """The sweep as a ``pandas.DataFrame``: a column per varied key, per measure column, and
+        ``status``; one row per point."""
         import pandas as pd
 
         cols = {**self.params, **self.measures, "status": self.status.astype(str)}
