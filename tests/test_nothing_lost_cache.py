@@ -8,6 +8,8 @@ damaged caches are copies of one undamaged cache built once per session, and eac
 compared with the undamaged run's results."""
 import hashlib
 import os
+import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -213,6 +215,20 @@ def another_library(cache: Path) -> str:
     return "was not built from these sources (another library, or an older derive's)"
 
 
+def stamp_as_text_only(cache: Path) -> str:
+    """A library whose bytes hold the stamp's text but which does not define it: it passes every
+    check on the file, and only the lookup of the stamp symbol once loaded (ctypes'
+    AttributeError) tells; the rebuilt library must then really be loaded, not the open one."""
+    so = library(cache)
+    (stamp,) = set(re.findall(rb"derive_build_[0-9a-f]{64}", so.read_bytes()))
+    src = cache.parent / "impostor.c"
+    src.write_text(f'const char *impostor_text = "{stamp.decode()}";\n')
+    cc = shlex.split(os.environ.get("CC", "cc"))
+    subprocess.run([*cc, "-shared", "-fPIC", "-o", str(so), str(src)], check=True, timeout=60)
+    checksum_of(so).write_text(f"{hashlib.sha256(so.read_bytes()).hexdigest()}  {so.name}\n")
+    return "lacks the symbols it was built with (another library)"
+
+
 def folder_at_library(cache: Path) -> str:
     so = library(cache)
     so.unlink()
@@ -228,7 +244,8 @@ def folder_at_checksum(cache: Path) -> str:
     return "has a folder where its checksum should be"
 
 
-@pytest.mark.parametrize("damage", [another_library, folder_at_library, folder_at_checksum])
+@pytest.mark.parametrize("damage", [another_library, stamp_as_text_only, folder_at_library,
+                                    folder_at_checksum])
 def test_a_damaged_library_is_rebuilt_once(cache, tmp_path, pristine, damage):
     copy_of(pristine[0], cache)
     so = library(cache)
