@@ -154,6 +154,7 @@ def test_stale_build_folders_are_removed(cache):
                             cache / ".heavy_top-k2j4h5g6")
     for d in (stale, fresh, legacy):
         d.mkdir()
+        cbuild.mark(d)  # what the cache removes is what it made: marked folders only
         (d / "tiny.c").write_text("int x;\n")
     old = time.time() - 2 * cbuild.STALE_BUILD_SECONDS
     for d in (stale, legacy):
@@ -166,6 +167,7 @@ def test_stale_build_folders_are_removed(cache):
     stale_model = models / ".quaternion_sym-0123abcd-4567ef-k2j4h5g6"  # a killed derivation
     for d in (stale_model, model):
         d.mkdir(parents=True)
+        cbuild.mark(d)
         os.utime(d, (old, old))
     cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert not stale.exists() and not legacy.exists() and not stale_model.exists()
@@ -184,7 +186,9 @@ def test_cache_command_lists_and_clears(cache):
     (so,) = cache.glob("tiny-*.so")
     (cache / "notes.txt").write_text("the user's own file\n")
     (cache / ".build-tiny-abcd1234").mkdir()
+    cbuild.mark(cache / ".build-tiny-abcd1234")  # the cache's own (marked) folders
     (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c").mkdir(parents=True)
+    cbuild.mark(cache / "models" / "quaternion_sym-0123abcd-4567ef")
     (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c" / "m.c").write_text("int m;\n")
     rc, out, err = run("cache")
     assert rc == 0 and err == ""

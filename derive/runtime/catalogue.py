@@ -6,7 +6,9 @@ A model is identified by its key (formulation, symmetric body, effects). Its gen
   (``models.CATALOGUE_KEYS`` and every model an example scene runs: ``codegen.sources.SHIPPED``), or
 * in the compile cache (``cbuild.cache_dir() / "models"``), derived once with SymPy the first time
   a scene needs it, in a folder keyed by a content hash of the package's derivation sources and
-  templates, so a change to the derivation invalidates it.
+  templates, so a change to the derivation invalidates it. The folder carries the cache's marker
+  (``cbuild.MARKER``) and a ``SHA256SUMS`` of every file in it; one that does not verify (a
+  file missing, truncated or changed) is derived again, once, with a one-line note.
 
 Either way a :class:`Description` (``models/<name>.json``: states, parameters, outputs, sizes,
 cost, the derived parameters, the domain note) says everything the simulation needs, and the C
@@ -18,6 +20,9 @@ import functools
 import hashlib
 import json
 import os
+import re
+import stat
+import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -100,21 +105,90 @@ def _describe(key) -> Description:
 
 def _load(key) -> Description:
     """The description of the model with this key: from generated/, from the cache, or derived
-    now (SymPy) and cached."""
+    now (SymPy) and cached; a cached one that does not verify is derived again."""
     name = model_name(*key)
     shipped = _generated() / "models" / f"{name}.json"
     if shipped.is_file():
         return Description.from_json(shipped.read_text(encoding="utf-8"), _generated())
     folder = _cache_folder(name, key)
-    path = folder / "models" / f"{name}.json"
-    if not path.is_file():
-        from derive.runtime.cbuild import writable_cache_dir  # an unwritable cache: a private one, warned
+    desc, problem = _cached(folder, name)
+    if desc is not None:
+        return desc
+    from derive.runtime.cbuild import writable_cache_dir  # an unwritable cache: a private one, warned
 
-        folder = _cache_folder(name, key, writable_cache_dir())
-        path = folder / "models" / f"{name}.json"
-        if not path.is_file():
-            derive_model(key, folder)
-    return Description.from_json(path.read_text(encoding="utf-8"), folder)
+    writable = _cache_folder(name, key, writable_cache_dir(), writing=True)
+    if writable != folder:
+        folder = writable
+        desc, problem = _cached(folder, name)
+        if desc is not None:
+            return desc
+    if problem != _ABSENT:
+        print(f"note: derived model {folder} {problem}; deriving it again", file=sys.stderr,
+              flush=True)
+    derive_model(key, folder)
+    desc, problem = _cached(folder, name)
+    if desc is None:
+        raise RuntimeError(f"the model just derived into {folder} {problem}")
+    return desc
+
+
+MANIFEST = "SHA256SUMS"  # in a derived model's folder: `sha256sum -c SHA256SUMS` checks it
+_ABSENT = "is absent"
+
+
+def _cached(folder: Path, name: str) -> tuple[Description | None, str]:
+    """(the description of the model derived into ``folder``, "") if the folder is whole: every
+    file its manifest lists, the description among them, has the SHA-256 written with it and
+    the description parses; else (None, why not), ``_ABSENT`` if there is nothing there."""
+    if not os.path.lexists(folder):
+        return None, _ABSENT
+    problem = _verify(folder, f"models/{name}.json")
+    if problem is not None:
+        return None, problem
+    try:
+        text = (folder / "models" / f"{name}.json").read_text(encoding="utf-8")
+        return Description.from_json(text, folder), ""
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        return None, f"has an unreadable description ({type(exc).__name__})"
+
+
+def _verify(folder: Path, required: str) -> str | None:
+    """Why the files of ``folder`` do not match its manifest (or it lists no ``required``), or
+    None. Files are read without following symbolic links out of the folder."""
+    try:
+        if not stat.S_ISDIR(os.lstat(folder).st_mode):
+            return "is not a folder"
+        text = _read_plain(folder / MANIFEST).decode("ascii")
+    except FileNotFoundError:
+        return "has no checksums"
+    except (OSError, UnicodeDecodeError):
+        return "has unreadable checksums"
+    listed = re.findall(r"^([0-9a-f]{64})  ([\w./-]+)$", text, re.MULTILINE)
+    if len(listed) != text.count("\n") or required not in {rel for _, rel in listed}:
+        return "has unreadable checksums"
+    for digest, rel in listed:
+        if rel.startswith("/") or ".." in rel.split("/"):
+            return "has unreadable checksums"
+        try:
+            data = _read_plain(folder / rel)
+        except OSError:
+            return f"is missing {rel}"
+        if hashlib.sha256(data).hexdigest() != digest:
+            return f"has a damaged {rel} (it does not match its checksum)"
+    return None
+
+
+def _read_plain(path: Path) -> bytes:
+    """The bytes of ``path`` if it is a regular file (not a link, a folder or a device); else
+    OSError."""
+    fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise OSError(f"{path} is not a regular file")
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            return f.read()
+    finally:
+        os.close(fd)
 
 
 def available(key) -> Description | None:
@@ -126,6 +200,7 @@ def available(key) -> Description | None:
         return None
     name = model_name(*key)
     for folder in (_generated(), _cache_folder(name, key)):
+        # A damaged cached model is healed by describe (derived again, once).
         if (folder / "models" / f"{name}.json").is_file():
             _known.add(key)
             return describe(key)
@@ -137,10 +212,11 @@ _known: set = set()
 _absent: set = set()
 
 
-def _cache_folder(name: str, key, root: Path | None = None) -> Path:
-    from derive.runtime.cbuild import MODELS, cache_root
+def _cache_folder(name: str, key, root: Path | None = None, writing: bool = False) -> Path:
+    from derive.runtime.cbuild import models_dir  # never through a `models` that is not a real folder
 
-    return (root or cache_root()) / MODELS / f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
+    variant = f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
+    return models_dir(root, writing) / variant
 
 
 @functools.lru_cache(maxsize=1)
@@ -180,24 +256,50 @@ def _fingerprint(effects, ids) -> str:
 
 
 def derive_model(key, folder: Path) -> None:
-    """Derive the model (SymPy), render its files and write them with its description into
-    ``folder`` (atomically: a reader sees no folder or the whole one)."""
+    """Derive the model (SymPy), render its files and write them with its description, the
+    cache's marker and a ``SHA256SUMS`` of them into ``folder`` (atomically: a reader sees no
+    folder or the whole one). A damaged folder already there is replaced: removed if the cache
+    made it (marked), else moved aside (``cbuild.make_room``)."""
+    import shutil
+
     from derive.symbolic import models
+    from derive.runtime.cbuild import is_marked, make_room, mark, remove_marked
     from derive.codegen.sources import model_sources
 
     model = models.build(*key)
     files = model_sources(model)
     folder.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
-    for rel, text in files.items():
-        path = tmp / rel
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text, encoding="utf-8")
     try:
-        os.replace(tmp, folder)
-    except OSError:  # another process got there first: theirs is identical
-        import shutil
-
+        mark(tmp)
+        sums = []
+        for rel, text in sorted(files.items()):
+            path = tmp / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            data = text.encode("utf-8")
+            path.write_bytes(data)
+            sums.append(f"{hashlib.sha256(data).hexdigest()}  {rel}\n")
+        (tmp / MANIFEST).write_text("".join(sums), encoding="ascii")  # last: the folder is whole
+        for attempt in range(2):
+            try:
+                os.replace(tmp, folder)
+                return
+            except OSError:
+                if _cached(folder, model.name)[0] is not None or attempt:
+                    return  # another process got there first: theirs is identical
+                # A damaged folder in the way: the cache's own goes (into a marked trash
+                # first, so the name is free at once), anything else is moved aside.
+                if is_marked(folder):
+                    trash = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
+                    mark(trash)
+                    try:
+                        os.replace(folder, trash / "old")
+                    except OSError:
+                        pass
+                    remove_marked(trash)
+                else:
+                    make_room(folder, folder=True)
+    finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
 
