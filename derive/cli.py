@@ -74,7 +74,8 @@ def _cmd_simulate(args) -> int:
     from .outputs import check_paths
     from .simulation import simulate, write_outputs
 
-    check_paths([args.output, args.plot])  # before the work: a bad path is known in advance
+    # before the work: a bad path, or one that would replace the scene, is known in advance
+    check_paths([args.output, args.plot], inputs=[args.scene])
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
     start = time.perf_counter()
     res = simulate(args.scene, **overrides)

@@ -468,7 +468,8 @@ def _qmul(p, q) -> np.ndarray:
 
 
 def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
-    """Write the .npz (and the plot), all or nothing (see :mod:`derive.outputs`)."""
+    """Write the .npz (and the plot), all or nothing (see :mod:`derive.outputs`); neither may be
+    the scene file the result came from (SceneError naming both)."""
     from .outputs import write_all
 
     writers = {}
@@ -481,4 +482,5 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
             plot_result(res, f)
 
         writers[png] = plot
-    write_all(writers)
+    source = res.scene.source if res.scene is not None else None
+    write_all(writers, inputs=[source] if source and source != "<dict>" else [])
