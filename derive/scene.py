@@ -33,8 +33,9 @@ Decisions where the contract is silent (documented here once):
   ``FIXED_STEP_METHODS``; it is rejected with any other method (there it would be ignored
   silently). h = None lets the integrator choose. ``max_steps`` (default 1000000) is the work
   budget: fixed-step methods are refused up front when t_end / h exceeds it, adaptive ones stop
-  with a numerical failure when they spend it. rtol must lie in [100 eps, 1): below that no
-  double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
+  with a numerical failure when they spend it. rtol must lie in [2.2e-14, 1) (``MIN_RTOL``:
+  100 eps as the documentation prints it, so that the documented limit is accepted): below
+  that no double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
   cannot exhaust memory.
 * A formulation that cannot represent the scene (its registry entry's ``applicable``, see
   :mod:`derive.formulations`) is rejected naming ``simulate.formulation`` and the reason.
@@ -81,8 +82,9 @@ SIMULATE_DEFAULTS = {
     "h": None, "max_steps": 1_000_000,
 }
 MAX_SAMPLES = 10_000_000
-#: Smallest rtol accepted: 100 machine epsilons (about 2.2e-14).
-MIN_RTOL = 100 * np.finfo(float).eps
+#: Smallest rtol accepted, inclusive: 100 machine epsilons written as the documented 2.2e-14
+#: (100 eps itself is 2.220446...e-14, so a user typing the documented limit was refused).
+MIN_RTOL = float(f"{100 * np.finfo(float).eps:.1e}")
 #: |sin(beta)| below this counts as "at a pole" of the z-y-z Euler angles.
 POLE_TOLERANCE = 1e-9
 MAX_STEPS_LIMIT = 10**12
