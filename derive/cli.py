@@ -31,6 +31,8 @@ def _cmd_generate(args) -> int:
               "(no source checkout to write generated/ into)", file=sys.stderr)
         return EXIT_INPUT
     out = Path(args.out) if args.out else GENERATED
+    if args.out:
+        _output_dir(out, "--out", create=not args.check)  # before the (slow) generation
     files = codegen.generate_all()
     if args.check:
         stale = codegen.stale(files, out)
@@ -121,8 +123,48 @@ def _cmd_analyze(args) -> int:
 def _cmd_bench(args) -> int:
     from . import bench
 
-    bench.main(out=Path(args.out), quick=args.quick)
+    out = _output_dir(Path(args.out), "-o")  # before minutes of benchmarks, not after
+    bench.main(out=out, quick=args.quick)
     return EXIT_OK
+
+
+def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
+    """A directory the command may write into, made (with its parents) unless ``create`` is
+    false.
+
+    Parameters
+    ----------
+    path : Path
+        The directory the user named.
+    flag : str
+        Its flag, for the message (``-o``, ``--out``).
+    create : bool
+        Make it when missing (a command that writes nothing only checks it).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    SceneError
+        ``<path>: <flag>: <what>`` (exit 2): a file or other non-directory of that name, a
+        parent that is a file, or a directory that cannot be made or written.
+    """
+    if "\0" in str(path):
+        raise SceneError(f"{str(path)!r}: {flag}: not a directory name")
+    if path.exists() and not path.is_dir():
+        raise SceneError(f"{path}: {flag}: not a directory (a file of that name exists)")
+    if create:
+        try:
+            path.mkdir(parents=True, exist_ok=True)
+        except OSError as err:
+            raise SceneError(f"{path}: {flag}: cannot create the directory "
+                             f"({err.strerror or err})") from None
+        if not os.access(path, os.W_OK | os.X_OK):
+            raise SceneError(f"{path}: {flag}: permission denied (cannot write into it)")
+    return path
 
 
 def version() -> str:
