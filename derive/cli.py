@@ -31,6 +31,8 @@ def _cmd_generate(args) -> int:
               "(no source checkout to write generated/ into)", file=sys.stderr)
         return EXIT_INPUT
     out = Path(args.out) if args.out else GENERATED
+    if args.out:
+        _output_dir(out, "--out", create=not args.check)  # before the (slow) generation
     files = generate.generate_all()
     if args.check:
         stale = generate.stale(files, out)
@@ -74,7 +76,8 @@ def _cmd_simulate(args) -> int:
     from derive.sim.outputs import check_paths
     from derive.sim.simulation import simulate, write_outputs
 
-    check_paths([args.output, args.plot])  # before the work: a bad path is known in advance
+    # before the work: a bad path, or one that would replace the scene, is known in advance
+    check_paths([args.output, args.plot], inputs=[args.scene])
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
     start = time.perf_counter()
     res = simulate(args.scene, **overrides)
@@ -120,7 +123,8 @@ def _cmd_analyze(args) -> int:
 def _cmd_bench(args) -> int:
     from derive.bench import suite as bench
 
-    bench.main(out=Path(args.out), quick=args.quick)
+    out = _output_dir(Path(args.out), "-o")  # before minutes of benchmarks, not after
+    bench.main(out=out, quick=args.quick)
     return EXIT_OK
 
 
@@ -147,6 +151,45 @@ def _cmd_examples(args) -> int:
             print(f"  {name:<{width}}  {examples.summary(examples.path(name, kind))}")
     print("copy one to edit: derive examples --copy NAME [--to DIR]")
     return EXIT_OK
+
+
+def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
+    """A directory the command may write into, made (with its parents) unless ``create`` is
+    false.
+
+    Parameters
+    ----------
+    path : Path
+        The directory the user named.
+    flag : str
+        Its flag, for the message (``-o``, ``--out``).
+    create : bool
+        Make it when missing (a command that writes nothing only checks it).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    SceneError
+        ``<path>: <flag>: <what>`` (exit 2): a file or other non-directory of that name, a
+        parent that is a file, or a directory that cannot be made or written.
+    """
+    if "\0" in str(path):
+        raise SceneError(f"{str(path)!r}: {flag}: not a directory name")
+    if path.exists() and not path.is_dir():
+        raise SceneError(f"{path}: {flag}: not a directory (a file of that name exists)")
+    if create:
+        try:
+            path.mkdir(parents=True, exist_ok=True)
+        except OSError as err:
+            raise SceneError(f"{path}: {flag}: cannot create the directory "
+                             f"({err.strerror or err})") from None
+        if not os.access(path, os.W_OK | os.X_OK):
+            raise SceneError(f"{path}: {flag}: permission denied (cannot write into it)")
+    return path
 
 
 def version() -> str:

@@ -47,6 +47,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from derive.symbolic import integrable
+from derive.errors import IntegrationError
 from derive.sim.scene import load_scene
 
 #: A real part above this fraction of the spectrum's scale counts as growth (round-off in the
@@ -166,11 +167,15 @@ def _state(m, L, n, moments) -> list:
     return list(L) + list(n)
 
 
-def _eigenvalues(scene, L, n) -> np.ndarray:
+def _eigenvalues(scene, L, n, kind: str) -> np.ndarray:
+    """The eigenvalues of the Euler–Poisson linearisation at (L, n); _Overflow naming ``kind``
+    when the Jacobian's entries are beyond the double range (np.linalg refuses an inf)."""
     f, m = _ep_jacobian(scene.symmetric, scene.effects)
     values = scene.param_values()
     p = [values[name] for name in m.param_names]
-    J = np.array(f(_state(m, L, n, scene.body.moments), p), dtype=float)
+    with np.errstate(all="ignore"):  # an overflow is named below, not warned about
+        J = np.array(f(_state(m, L, n, scene.body.moments), p), dtype=float)
+    _finite(kind, "the Jacobian of the Euler-Poisson linearisation", J)
     return np.linalg.eigvals(J)
 
 
@@ -185,6 +190,21 @@ def _sign_tol(x: float, scale: float) -> int:
     if abs(x) <= integrable.TOLERANCE * abs(scale):
         return 0
     return 1 if x > 0 else -1
+
+
+def _big(x):
+    """``x`` as a SymPy Float, whose exponent is unbounded: products and squares of the scene's
+    doubles (ω₀² I, p_γ², M g l I₁ at 1e300) are exact in magnitude instead of inf, so a verdict
+    read from their ratio is right whatever the scale."""
+    return _sp().Float(float(x))
+
+
+def _sign_ratio(x, scale) -> int:
+    """_sign_tol for SymPy numbers of any magnitude: the sign of x with |x| ≤ TOLERANCE · |scale|
+    marginal, decided on the ratio x / scale (a double of modest size)."""
+    if scale == 0:
+        return _sign_tol(float(x), 0.0)
+    return _sign_tol(float(x / abs(scale)), 1.0)
 
 
 @functools.lru_cache(maxsize=None)
@@ -242,18 +262,70 @@ def _routh():
 
 
 def analyze(scene) -> Analysis:
-    """Analyse a scene (path, dict or Scene); raises SceneError on bad input."""
+    """Analyse a scene (path, dict or Scene).
+
+    Raises
+    ------
+    SceneError
+        Bad input (the scene checks of ``derive simulate``).
+    IntegrationError
+        A number the analysis must evaluate at the scene's (finite) numbers lies outside the
+        double range: ``<file>: analyze: <equilibrium>: <quantity> overflows ...`` (CLI exit 3,
+        as ``simulate`` for a state that overflows). The verdicts themselves are evaluated
+        scale-free, so this names a reported number (a discriminant, an eigenvalue), never a
+        verdict gone wrong in silence.
+    """
     sc = load_scene(scene)
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
     proofs = integrable.proofs(cls)
-    return Analysis(sc, cls, ints, proofs, _equilibria(sc, cls))
+    try:
+        eqs = _equilibria(sc, cls)
+        for e in eqs:
+            _check_finite(e)
+    except _Overflow as exc:
+        raise IntegrationError(f"{sc.source}: analyze: {exc}") from None
+    except (OverflowError, FloatingPointError, ZeroDivisionError, np.linalg.LinAlgError) as exc:
+        # A safety net: every evaluation above is meant to end in _Overflow with its quantity.
+        raise IntegrationError(f"{sc.source}: analyze: relative equilibria: a quantity overflows "
+                               f"double precision at the scene's numbers ({type(exc).__name__})"
+                               ) from None
+    return Analysis(sc, cls, ints, proofs, eqs)
+
+
+class _Overflow(ArithmeticError):
+    """A quantity of an equilibrium that is not a finite double at the scene's numbers; the
+    message is ``<kind>: <quantity> overflows double precision ...``."""
+
+
+def _finite(kind: str, quantity: str, value):
+    """``value`` (a number or an array of real or complex numbers) if every entry is finite,
+    else raise _Overflow naming the equilibrium ``kind`` and the ``quantity``."""
+    arr = np.asarray(value, dtype=complex)
+    if not np.all(np.isfinite(arr)):
+        raise _Overflow(f"{kind}: {quantity} overflows double precision (beyond about 1.8e308) "
+                        f"at the scene's numbers")
+    return value
+
+
+def _check_finite(e: "Equilibrium") -> None:
+    """Every number an equilibrium reports (its values, its eigenvalues) finite, or _Overflow:
+    JSON has no infinity, and an inf or nan here would mean a meaningless line of output."""
+    for name, v in e.values.items():
+        if v is not None:
+            _finite(e.kind, name.replace("_", " "), v)
+    _finite(e.kind, "an eigenvalue of the linearisation", e.eigenvalues)
+
+
+def _norm(v) -> float:
+    """|v| without overflow in the squares (math.hypot scales): |(0, 0, 1e300)| = 1e300."""
+    return math.hypot(*(float(x) for x in v))
 
 
 def _axial(sc) -> bool:
     """Gravity absent or its centre of mass on body axis 3 (within TOLERANCE)."""
     p = integrable.parameters(sc)
-    r = math.sqrt(p["cx"] ** 2 + p["cy"] ** 2 + p["cz"] ** 2)
+    r = _norm((p["cx"], p["cy"], p["cz"]))
     return math.hypot(p["cx"], p["cy"]) <= integrable.TOLERANCE * r or r == 0
 
 
@@ -280,7 +352,7 @@ def _top(sc, cls, p) -> _Top:
     I = np.array(sc.body.moments)
     c = np.array([p["cx"], p["cy"], p["cz"]])
     if cls.extra is not None and cls.extra.name == integrable.SPHERE.name:
-        u, axis = c / np.linalg.norm(c), None  # a sphere: the symmetry axis through r_c
+        u, axis = c / _norm(c), None  # a sphere: the symmetry axis through r_c
     else:
         axis = cls.axes[2]
         u = np.eye(3)[axis]
@@ -322,13 +394,13 @@ def _free_rotation(sc, k: int) -> Equilibrium:
     i, j = (k + 1) % 3, (k + 2) % 3
     Isym = (I1, I2, I3)
     lam2 = SteadySpin(k, Isym).eigenvalue_squared
-    w0 = float(np.linalg.norm(sc.initial.omega))
+    w0 = _norm(sc.initial.omega)
     a = _sign_tol(Ivals[k] - Ivals[i], max(Ivals))
     b = _sign_tol(Ivals[k] - Ivals[j], max(Ivals))
     stable = None if a * b == 0 else (a * b > 0)
     L = [0.0, 0.0, 0.0]
     L[k] = Ivals[k] * w0
-    J = _free_jacobian(Ivals, L)
+    J = _finite("permanent-rotation", "the Jacobian of Euler's equations", _free_jacobian(Ivals, L))
     eig = np.linalg.eigvals(J)
     if stable is False and not _grows(eig) and w0 > 0:
         stable = None  # cannot happen for distinct moments; kept honest
@@ -351,7 +423,8 @@ def _free_rotation(sc, k: int) -> Equilibrium:
 def _free_jacobian(I, L) -> np.ndarray:
     """∂L̇/∂L of L̇ = L × I⁻¹L at L (numbers)."""
     f, m = _ep_jacobian(False, ())
-    J = np.array(f(_state(m, L, (0.0, 0.0, 1.0), I), list(I)), dtype=float)
+    with np.errstate(all="ignore"):  # an overflow is named by the caller, not warned about
+        J = np.array(f(_state(m, L, (0.0, 0.0, 1.0), I), list(I)), dtype=float)
     return J[:3, :3]
 
 
@@ -369,9 +442,10 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
     at_zero = (kind == "sleeping") == (lval > 0)
     k2 = R["k2_0"] if at_zero else R["k2_pi"]
     subs = {I1: top.I_perp, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg}
-    k2v = float(k2.subs(subs))
-    scale = pg * pg / (8 * top.I_perp) + abs(p["M"] * p["g"] * lval) / 2
-    s = _sign_tol(k2v, scale)
+    k2s = k2.subs(subs)
+    k2v = float(k2s)
+    Mgl = _big(p["M"]) * _big(p["g"]) * _big(lval)
+    s = _sign_ratio(k2s, _big(pg) ** 2 / (8 * _big(top.I_perp)) + abs(Mgl) / 2)
     stable = None if s == 0 else s > 0
     threshold2 = sp.factor(R["threshold"] ** 2)  # 4 M g l I₁
     if kind == "sleeping" and at_zero:
@@ -387,7 +461,7 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
         cond = f"k2 = {sp.sstr(k2)} >= 0  ({note[kind]})"
         tex = rf"k_2 = {_latex(k2)} \ge 0"
     u = np.array(top.u)
-    eig = _eigenvalues(sc, tuple(pg * u), tuple(u if at_zero else -u))
+    eig = _eigenvalues(sc, tuple(pg * u), tuple(u if at_zero else -u), kind)
     if stable is False and not _grows(eig):
         stable = None
     where = "beta = 0" if at_zero else "beta = pi"
@@ -397,7 +471,7 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
         f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot" + _top_note(top),
         "series of V_eff(beta) about the pole with p_alpha = +-p_gamma: V_eff = V0 + k2 eps^2 + ...; "
         "Euler-Poisson linearisation",
-        {"p_gamma": pg, "threshold": math.sqrt(abs(4 * p["M"] * p["g"] * lval * top.I_perp)),
+        {"p_gamma": pg, "threshold": float(_sp().sqrt(abs(4 * Mgl * _big(top.I_perp)))),
          "k2": k2v},
         list(eig))
 
@@ -433,24 +507,31 @@ def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
                            "the scene's tilt is at a pole: no finite-tilt precession to evaluate",
                            "dV_eff/dbeta = 0", values, [])
     qv = sp.Poly(quad.subs(subs), alpha_d)
-    dv = float(disc.subs(subs))
-    coeffs = [float(c) for c in qv.all_coeffs()]
-    scale = max(abs(c) for c in coeffs) ** 2
+    ds = disc.subs(subs)
+    dv = float(ds)
+    # Divided by the largest coefficient (in SymPy, whose exponent is unbounded): the same roots,
+    # and the discriminant's test relative to that coefficient squared, at any scale.
+    big = [sp.Float(c) for c in qv.all_coeffs()]
+    top_c = max(abs(c) for c in big) or sp.Float(1)
+    coeffs = [float(c / top_c) for c in big]
     roots = [float(r.real) for r in np.roots(coeffs) if abs(r.imag) <= 1e-12 * max(1, abs(r))] \
-        if dv >= -integrable.TOLERANCE * scale else []
+        if float(ds / top_c ** 2) >= -integrable.TOLERANCE else []
     values.update(discriminant=dv, alpha_dot_roots=sorted(roots),
                   alpha_dot_scene=top.alpha_dot)
     eig = []
-    curv = []
+    curv = []  # SymPy Floats: V_eff'' at 1e300 scales is not a double, but its sign is known
     for ad in roots:
-        pa = float(R["p_alpha_of_rate"].subs({**subs, alpha_d: ad}))
-        c2 = float(R["d2V"].subs({**subs, p_alpha: pa}))
+        pa = R["p_alpha_of_rate"].subs({**subs, alpha_d: ad})
+        c2 = R["d2V"].subs({**subs, p_alpha: pa})
         curv.append(c2)
-        eig += list(np.roots([1.0, 0.0, c2 / top.I_perp]))
-    values["V_eff_second_derivative"] = curv
+        # λ² = −V_eff''/I₁ (in SymPy: its square root is a double when λ² is not); the pair
+        # in np.roots([1, 0, −λ²])'s order, imaginary root first
+        lam = complex(sp.sqrt(-c2 / top.I_perp))
+        eig += [lam, -lam] if c2 > 0 else [-lam, lam]
+    values["V_eff_second_derivative"] = [float(c) for c in curv]
     if not roots:
         stable = None
-    elif all(_sign_tol(c, max(abs(x) for x in curv)) > 0 for c in curv):
+    elif all(_sign_ratio(c, max(abs(x) for x in curv)) > 0 for c in curv):
         stable = True
     elif any(c < 0 for c in curv):
         stable = False
@@ -484,7 +565,7 @@ def _principal_direction(I, c):
     """If r̂_c is a principal direction of diag(I) (within TOLERANCE): (its moment, the two
     moments perpendicular to it, the body axis 0..2 it lies on or None); else None. A direction
     in a plane of equal moments (I₁ = I₂: any equatorial r_c) is principal too."""
-    u = c / np.linalg.norm(c)
+    u = c / _norm(c)
     Iu = I * u
     Iuu = float(u @ Iu)
     if np.linalg.norm(Iu - Iuu * u) > integrable.TOLERANCE * I.max():
@@ -501,9 +582,8 @@ def _heavy_vertical(sc, p) -> list[Equilibrium]:
     Energy–Casimir: E + a L·n + b|n|² on the leaf is definite iff
     ω₀²(I_u − I_m) > h M g |r_c| for both moments I_m perpendicular to r̂_c (h = ±1)."""
     c = np.array([p["cx"], p["cy"], p["cz"]])
-    r = float(np.linalg.norm(c))
+    r = _norm(c)
     u = c / r
-    Mg = p["M"] * p["g"]
     I = np.array(sc.body.moments)
     principal = _principal_direction(I, c)
     out = []
@@ -528,16 +608,17 @@ def _heavy_vertical(sc, p) -> list[Equilibrium]:
                 text = (f"omega0**2*(I_u - I_m) > {sign}M*g*|r_c| for both moments I_m perpendicular "
                         "to r_c, I_u = r_c.I.r_c/|r_c|^2 (energy-Casimir, sufficient)")
                 tex = rf"\omega_0^2(I_u - I_m) > {sign}Mg|r_c|,\ m \perp \hat r_c"
-            marg = [w0 * w0 * (Iu - Im) - h * Mg * r for Im in perp]
-            scale = w0 * w0 * I.max() + Mg * r
-            ec = True if all(_sign_tol(x, scale) > 0 for x in marg) else None
+            W2, MgR = _big(w0) ** 2, _big(p["M"]) * _big(p["g"]) * _big(r)  # no overflow
+            marg = [W2 * (_big(Iu) - _big(Im)) - h * MgR for Im in perp]
+            scale = W2 * _big(I.max()) + MgR
+            ec = True if all(_sign_ratio(x, scale) > 0 for x in marg) else None
             desc = (f"spin omega0 = {w0:.6g} about "
                     + (f"principal axis {axis + 1}" if axis is not None
                        else "the principal direction along r_c")
                     + f" held vertical, centre of mass {where} the pivot")
         n = h * u  # the upward vertical in body axes: along r_c when upright
         L = I * w0 * u
-        eig = _eigenvalues(sc, tuple(L), tuple(n))
+        eig = _eigenvalues(sc, tuple(L), tuple(n), kind)
         stable = ec
         if stable is None and _grows(eig):
             stable = False
@@ -553,11 +634,11 @@ def _rest_equilibria(sc, p) -> list[Equilibrium]:
     """With a dissipative torque only the rest states are equilibria: hanging (stable: E
     decreases, V has a strict minimum) and upright (unstable)."""
     c = np.array([p["cx"], p["cy"], p["cz"]])
-    r = float(np.linalg.norm(c))
+    r = _norm(c)
     out = []
     for kind, h in (("sleeping", 1.0), ("hanging", -1.0)):
         n = h * c / r
-        eig = _eigenvalues(sc, (0.0, 0.0, 0.0), tuple(n))
+        eig = _eigenvalues(sc, (0.0, 0.0, 0.0), tuple(n), kind)
         stable = True if h < 0 else (False if _grows(eig) else None)
         axis = next((k + 1 for k in range(3) if np.hypot(*np.delete(c, k)) <= integrable.TOLERANCE * r),
                     None)

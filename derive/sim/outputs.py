@@ -4,6 +4,12 @@
 (a directory, a missing or non-directory parent, no permission, a read-only or pseudo file
 system such as /proc) as a :class:`SceneError` ``<path>: <what>`` (CLI exit 2).
 
+An output never replaces an input: both ``check_paths`` and ``write_all`` take the files the
+command read (the scene, the sweep file, the scene the sweep names) and refuse an output that is
+one of them, compared by resolved path (symbolic links followed) and, where the output exists,
+by device and inode (a hard link is the same file under another name); two outputs that are the
+same file are refused alike.
+
 ``write_all`` then writes each output to a temporary file in its target's directory (so the final
 rename never crosses a file system) and renames them into place only after *all* of them were
 produced. If anything fails -- a writer raises, the disk fills up, Ctrl-C -- every temporary is
@@ -73,26 +79,70 @@ def _why(err: OSError) -> str:
     return err.strerror or str(err)
 
 
-def check_paths(paths) -> None:
+class _File:
+    """A path's identity: its resolved path, and its (st_dev, st_ino) when it exists."""
+
+    __slots__ = ("name", "real", "id")
+
+    def __init__(self, name: str):
+        self.name = name
+        self.real = os.path.realpath(name)
+        try:
+            st = os.stat(name)  # follows a symbolic link, as the writer does
+            self.id = (st.st_dev, st.st_ino)
+        except (OSError, ValueError):
+            self.id = None
+
+    def same(self, other: "_File") -> bool:
+        return self.real == other.real or (self.id is not None and self.id == other.id)
+
+
+def _name_of(path) -> str:
+    """``os.fspath(path)`` that is a usable file name, else SceneError (CLI exit 2)."""
+    name = os.fspath(path)
+    if not name or name.endswith(os.sep) or "\0" in name:
+        shown = repr(name) if not name or "\0" in name else name
+        raise SceneError(f"{shown}: output: not a file name")
+    return name
+
+
+def _check_clashes(names: list[str], inputs) -> None:
+    """SceneError for an output that is one of ``inputs`` (``<output>: output: would overwrite
+    the input <input>``) or the same file as an earlier output; inputs that do not exist (a
+    scene given as a dict, a file removed since) have nothing to lose and are skipped."""
+    ins = [f for f in (_File(os.fspath(p)) for p in inputs if p is not None) if f.id is not None]
+    seen: list[_File] = []
+    for name in names:
+        me = _File(name)
+        for f in ins:
+            if me.same(f):
+                raise SceneError(f"{name}: output: would overwrite the input {f.name}")
+        for f in seen:
+            if me.same(f):
+                raise SceneError(f"{name}: output: the same file as {f.name}")
+        seen.append(me)
+
+
+def check_paths(paths, inputs=()) -> None:
     """Raise SceneError ``<path>: <what>`` for the first output path that cannot be written.
 
-    ``paths`` may hold None (an output not asked for). Checked: the same file named twice, the
-    path is a directory or another non-regular file, its parent is missing or not a directory,
-    and a probe file can actually be created (and removed) in the parent, which catches
-    permissions, read-only mounts and pseudo file systems alike.
+    Parameters
+    ----------
+    paths : iterable of str or os.PathLike or None
+        The outputs; None is an output not asked for.
+    inputs : iterable of str or os.PathLike or None
+        The files the command reads (scene, sweep file, the scene a sweep names): no output may
+        be one of them (by resolved path, or by inode when the output exists).
+
+    Checked: an output that is an input, the same file named twice, the path is a directory or
+    another non-regular file, its parent is missing or not a directory, and a probe file can
+    actually be created (and removed) in the parent, which catches permissions, read-only
+    mounts and pseudo file systems alike.
     """
-    seen: dict[str, str] = {}
-    for path in paths:
-        if path is None:
-            continue
-        name = os.fspath(path)
-        if not name or name.endswith(os.sep):
-            raise SceneError(f"{name or repr(name)}: output: not a file name")
+    names = [_name_of(p) for p in paths if p is not None]
+    _check_clashes(names, inputs)
+    for name in names:
         target = _target(name)
-        real = os.path.realpath(target)
-        if real in seen:
-            raise SceneError(f"{name}: output: the same file as {seen[real]}")
-        seen[real] = name
         try:
             st = target.stat()
         except (FileNotFoundError, NotADirectoryError):
@@ -117,14 +167,17 @@ def check_paths(paths) -> None:
         os.unlink(probe)
 
 
-def write_all(outputs: Mapping[str | os.PathLike, Writer]) -> None:
+def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:
     """Write every ``{path: writer}`` output, all or nothing.
 
     Each writer is called with a binary file object (a temporary beside its target). Only when
     every writer has returned are the temporaries renamed onto their targets. On any exception
     (including KeyboardInterrupt) the temporaries are removed and the exception propagates;
     an ``OSError`` while writing is re-raised as SceneError ``<path>: output: <what>``.
+    Before anything is written, an output that is one of ``inputs`` (the files the results were
+    computed from) or the same file as another output is a SceneError (see ``check_paths``).
     """
+    _check_clashes([_name_of(p) for p in outputs], inputs)
     mode = new_file_mode()
     staged: list[tuple[str, Path, str]] = []  # (name, target, temporary)
     try:

@@ -157,9 +157,38 @@ def work_against_damping(res) -> np.ndarray:
     return np.concatenate(([0.0], np.cumsum(steps)))
 
 
+#: Longest scene title drawn on a plot, in characters (longer ones are cut with "…"): text
+#: layout costs matplotlib time in proportion to its length (a 1 MB title took 90 s).
+TITLE_DISPLAY_LIMIT = 100
+
+
+def display_title(text: str, limit: int = TITLE_DISPLAY_LIMIT) -> str:
+    """``text`` as a plot shows it: one line (runs of whitespace, newlines too, become one
+    space), at most ``limit`` characters (cut with "…"), and ``$`` literal (matplotlib would
+    read text between two of them as mathtext, which can fail to parse).
+
+    Parameters
+    ----------
+    text : str
+        A scene's or sweep's title (any length: a scene file may hold up to 1 MiB).
+    limit : int
+        The most characters kept.
+
+    Returns
+    -------
+    str
+        The title to draw.
+    """
+    # Cut before splitting: whitespace-collapsing a megabyte would cost more than the rest.
+    line = " ".join(text[:4 * limit].split())
+    if len(line) > limit:
+        line = line[:limit - 1].rstrip() + "…"
+    return line.replace("$", r"\$")
+
+
 def _title(res) -> str:
     sc = res.scene
-    name = (sc.title if sc is not None and sc.title else "") or res.model or "simulation"
+    name = display_title(sc.title if sc is not None and sc.title else "") or res.model or "simulation"
     parts = [f"formulation {res.formulation}", f"method {res.method}"]
     if sc is not None:
         from derive.sim.scene import FIXED_STEP_METHODS

@@ -33,8 +33,9 @@ Decisions where the contract is silent (documented here once):
   ``FIXED_STEP_METHODS``; it is rejected with any other method (there it would be ignored
   silently). h = None lets the integrator choose. ``max_steps`` (default 1000000) is the work
   budget: fixed-step methods are refused up front when t_end / h exceeds it, adaptive ones stop
-  with a numerical failure when they spend it. rtol must lie in [100 eps, 1): below that no
-  double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
+  with a numerical failure when they spend it. rtol must lie in [2.2e-14, 1) (``MIN_RTOL``:
+  100 eps as the documentation prints it, so that the documented limit is accepted): below
+  that no double-precision integrator can meet it. samples is capped at ``MAX_SAMPLES`` so that a typo
   cannot exhaust memory.
 * A formulation that cannot represent the scene (its registry entry's ``applicable``, see
   :mod:`derive.symbolic.formulations`) is rejected naming ``simulate.formulation`` and the reason.
@@ -84,8 +85,9 @@ SIMULATE_DEFAULTS = {
     "h": None, "max_steps": 1_000_000,
 }
 MAX_SAMPLES = 10_000_000
-#: Smallest rtol accepted: 100 machine epsilons (about 2.2e-14).
-MIN_RTOL = 100 * np.finfo(float).eps
+#: Smallest rtol accepted, inclusive: 100 machine epsilons written as the documented 2.2e-14
+#: (100 eps itself is 2.220446...e-14, so a user typing the documented limit was refused).
+MIN_RTOL = float(f"{100 * np.finfo(float).eps:.1e}")
 #: |sin(beta)| below this counts as "at a pole" of the z-y-z Euler angles.
 POLE_TOLERANCE = 1e-9
 MAX_STEPS_LIMIT = 10**12
@@ -356,43 +358,86 @@ def load_scene(scene, /, **overrides) -> Scene:
         source, data = "<dict>", scene
     elif isinstance(scene, (str, os.PathLike)) and not isinstance(scene, bytes):
         source = examples.resolve(os.fspath(scene), "scene")  # a bare name: a shipped example
-        data = _read_toml(source)
+        data = read_toml(source)
     else:
         raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
                                                    f"like one or a Scene, not {type(scene).__name__}"))
     return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
 
 
-MAX_SCENE_BYTES = 1 << 20  # a scene is a few hundred bytes; refuse to slurp a huge file
+#: Largest scene or sweep file read, in bytes (1 MiB; a scene is a few hundred bytes, a sweep a
+#: few kilobytes): a bigger file is refused before it is read, so that a wrong path (a log, a
+#: disk image) cannot exhaust memory.
+MAX_SCENE_BYTES = 1 << 20
 _BOMS = {b"\xef\xbb\xbf": None, b"\xff\xfe": "UTF-16", b"\xfe\xff": "UTF-16",
          b"\xff\xfe\x00\x00": "UTF-32", b"\x00\x00\xfe\xff": "UTF-32"}
 
 
-def _read_toml(source: str) -> dict:
-    """Parse a scene file: UTF-8 (a byte-order mark is skipped), a regular file of at most
-    MAX_SCENE_BYTES (not a FIFO or a device, which could block or never end)."""
-    def fail(what):
-        return SceneError(_line(source, "file", what))
+def read_toml(source: str, kind: str = "scene") -> dict:
+    """Read and parse a scene or sweep file: the one reader of both (``derive.sweeps`` too).
 
+    Parameters
+    ----------
+    source : str
+        The path, as the user gave it (it names the file in every message).
+    kind : str
+        "scene" or "sweep": the word in "not a <kind> file".
+
+    Returns
+    -------
+    dict
+        The TOML document.
+
+    Raises
+    ------
+    SceneError
+        ``<file>: file: <what>`` when the file is missing, unreadable, a directory, not a regular
+        file (a FIFO, a device such as /dev/zero: refused before a byte is read, so nothing
+        blocks or reads forever), larger than ``MAX_SCENE_BYTES``, not UTF-8 (a byte-order mark
+        is skipped), nested deeper than ``MAX_SCENE_DEPTH``; ``<file>: line L, column C:
+        invalid TOML: <what>`` for a syntax error (a key given twice among them).
+    """
+    shown = source.replace("\0", "\\0")  # a NUL byte would end the error line early
+
+    def fail(what):
+        return SceneError(_line(shown, "file", what))
+
+    if "\0" in source:  # open() would raise a bare ValueError
+        raise fail("not a file name (it holds a NUL byte)")
     try:
-        with open(source, "rb") as f:
-            if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):
-                raise fail("not a regular file")
-            raw = f.read(MAX_SCENE_BYTES + 1)
+        # O_NONBLOCK: opening a FIFO for reading would wait for a writer; with it, open returns
+        # at once and fstat refuses the FIFO (regular files ignore the flag).
+        fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError as err:
         raise fail("not found") from err
     except IsADirectoryError as err:
-        raise fail("is a directory, not a scene file") from err
+        raise fail(f"is a directory, not a {kind} file") from err
     except PermissionError as err:
         raise fail("permission denied") from err
     except OSError as err:
         raise fail(f"cannot read ({err.strerror or err})") from err
+    try:
+        st = os.fstat(fd)
+        if stat.S_ISDIR(st.st_mode):
+            raise fail(f"is a directory, not a {kind} file")
+        if not stat.S_ISREG(st.st_mode):
+            raise fail("not a regular file")  # a device, FIFO or socket
+        if st.st_size > MAX_SCENE_BYTES:
+            raise fail(f"larger than {_size(MAX_SCENE_BYTES)}: not a {kind} file")
+        with os.fdopen(fd, "rb") as f:
+            fd = None
+            raw = f.read(MAX_SCENE_BYTES + 1)  # + 1: a file that grew since fstat is caught too
+    except OSError as err:
+        raise fail(f"cannot read ({err.strerror or err})") from err
+    finally:
+        if fd is not None:
+            os.close(fd)
     if len(raw) > MAX_SCENE_BYTES:
-        raise fail(f"larger than {MAX_SCENE_BYTES // 1024} KiB: not a scene file")
+        raise fail(f"larger than {_size(MAX_SCENE_BYTES)}: not a {kind} file")
     for bom in sorted(_BOMS, key=len, reverse=True):
         if raw.startswith(bom):
             if _BOMS[bom]:
-                raise fail(f"is {_BOMS[bom]} text; scene files are UTF-8")
+                raise fail(f"is {_BOMS[bom]} text; {kind} files are UTF-8")
             raw = raw[len(bom):]
             break
     try:
@@ -405,10 +450,15 @@ def _read_toml(source: str) -> dict:
         # tomllib (3.11) puts the position at the end of its message: "... (at line 3, column 7)".
         match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
         where, what = (match.group(2), match.group(1)) if match else ("file", str(err))
-        raise SceneError(_line(source, where, f"invalid TOML: {what}")) from err
+        raise SceneError(_line(shown, where, f"invalid TOML: {what}")) from err
     if _depth(data) > MAX_SCENE_DEPTH:
-        raise fail(f"values nested deeper than {MAX_SCENE_DEPTH} levels: not a scene file")
+        raise fail(f"values nested deeper than {MAX_SCENE_DEPTH} levels: not a {kind} file")
     return data
+
+
+def _size(n: int) -> str:
+    """A byte count as the limit is documented: 1 MiB, 512 KiB."""
+    return f"{n / 2**20:g} MiB" if n >= 2**20 else f"{n / 2**10:g} KiB"
 
 
 MAX_SCENE_DEPTH = 16  # a scene needs 3 (table, key, vector); the checks recurse into values

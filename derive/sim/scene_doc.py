@@ -19,6 +19,8 @@ def _row(*cells) -> str:
 
 def scene_format() -> str:
     """The scene file (TOML) reference, from the scene validator's tables and the registries."""
+    from derive.sim.plots import TITLE_DISPLAY_LIMIT  # a constant; plots imports matplotlib only when drawing
+
     d = scene.SIMULATE_DEFAULTS
     out = [
         "# Scene files", "",
@@ -31,7 +33,9 @@ def scene_format() -> str:
         "components); body components carry a tilde (ω̃). Unknown tables or keys, wrong types, "
         "non-finite numbers and every rule below are exit 2 with one line "
         "`error: <file>: <table.key>: <what is wrong>` (a did-you-mean hint where one fits).", "",
-        "A top-level `title = \"...\"` is optional.", "",
+        f"A top-level `title = \"...\"` is optional (any length; a plot shows it on one line, cut "
+        f"to its first {TITLE_DISPLAY_LIMIT} characters). A scene file is a regular file of at most "
+        f"{scene.MAX_SCENE_BYTES / 2**20:g} MiB.", "",
         "## [body] (required)", "",
         "Principal moments of inertia about the fixed point (about the centre of mass when there "
         "is no gravity), kg m².", "",

@@ -317,9 +317,35 @@ def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:
     return ~_clear_of_pole(np.minimum(np.sin(betas.min(axis=1)), np.sin(betas.max(axis=1))), rtol)
 
 
+def _budgeted(method: str, max_steps: int, where: list):
+    """SciPy's solver class ``method`` ("RK45", "DOP853", "Radau", "LSODA", ...) with the scene's
+    step budget, as the compiled drivers apply it: the step after ``max_steps`` steps fails the
+    solve instead of being taken, its time is appended to ``where``. SciPy's steps cost about a
+    thousand times the compiled ones (Python per step), so without it a fast top ran for minutes.
+    A step is one call of the solver's ``_step_impl`` (rejected tries inside it included)."""
+    from scipy import integrate
+
+    class Budgeted(getattr(integrate, method)):
+        steps = 0
+
+        def _step_impl(self):
+            if self.steps >= max_steps:
+                where.append(self.t)
+                return False, _BUDGET_SPENT
+            self.steps += 1
+            return super()._step_impl()
+
+    Budgeted.__name__ = Budgeted.__qualname__ = f"Budgeted{method}"
+    return Budgeted
+
+
+_BUDGET_SPENT = "step budget spent"
+
+
 def _solve_scipy(desc, method, inputs, p, t, sc):
     """SciPy's solve_ivp on the generated NumPy right-hand side (a reference, not the fast
-    path): the compiled init map gives y0, the compiled output map the outputs."""
+    path): the compiled init map gives y0, the compiled output map the outputs. The step budget
+    ``max_steps`` holds as for the compiled methods (exit 3 when spent)."""
     from scipy.integrate import solve_ivp
 
     kernel = ModelKernel.load(desc, DEFAULT_METHOD)  # for its init and output maps
@@ -328,9 +354,13 @@ def _solve_scipy(desc, method, inputs, p, t, sc):
         raise IntegrationError(f"t = {t[0]:.6g}: the initial state is not finite")
     mod = numpy_module(desc)
     s = sc.simulate
-    sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=method, t_eval=t, rtol=s.rtol,
-                    atol=s.atol, args=(p,),
+    spent: list = []
+    sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=_budgeted(method, s.max_steps, spent),
+                    t_eval=t, rtol=s.rtol, atol=s.atol, args=(p,),
                     **({"jac": mod.jac} if method in ("Radau", "BDF", "LSODA") else {}))
+    if spent:
+        raise IntegrationError(status_message({"status": int(Status.MAX_STEPS), "t_fail": spent[0]},
+                                              max_steps=s.max_steps))
     if not sol.success:
         raise IntegrationError(f"t = {sol.t[-1] if sol.t.size else t[0]:.6g}: scipy {method}: {sol.message}")
     y = sol.y.T.copy()
@@ -428,7 +458,8 @@ def _qmul(p, q) -> np.ndarray:
 
 
 def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
-    """Write the .npz (and the plot), all or nothing (see :mod:`derive.sim.outputs`)."""
+    """Write the .npz (and the plot), all or nothing (see :mod:`derive.sim.outputs`); neither may be
+    the scene file the result came from (SceneError naming both)."""
     from derive.sim.outputs import write_all
 
     writers = {}
@@ -441,4 +472,5 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
             plot_result(res, f)
 
         writers[png] = plot
-    write_all(writers)
+    source = res.scene.source if res.scene is not None else None
+    write_all(writers, inputs=[source] if source and source != "<dict>" else [])

@@ -46,7 +46,6 @@ from __future__ import annotations
 import copy
 import math
 import os
-import tomllib
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -88,6 +87,7 @@ class Spec:
     damping: np.ndarray = field(repr=False, default=None)  # (N,) the damping coefficient c
     key: tuple = ()  # the model (formulation, symmetric, effects)
     method: str = ""
+    files: tuple = ()  # the files read: the sweep file and the scene file it names
 
     @property
     def n(self) -> int:
@@ -105,15 +105,29 @@ def _real(x) -> float | None:
     return x if math.isfinite(x) else None
 
 
-def _flatten(table: Mapping, prefix: str, leaf) -> dict:
-    """Dotted keys of nested tables down to the leaves (``leaf(value)`` says when to stop)."""
+def _flatten(table: Mapping, prefix: str, leaf, source: str = "<sweep>", where: str = "") -> dict:
+    """Dotted keys of nested tables down to the leaves (``leaf(value)`` says when to stop; an
+    empty table is a leaf, so that its key is reported, not dropped).
+
+    TOML keeps ``"initial.beta"`` (one quoted key) and ``initial.beta`` (a table ``initial``
+    with a key ``beta``) apart; dotted here they are the same key, and the one given later
+    would silently win: a key reached twice is a SceneError ``<source>: <where>.<key>``.
+    """
     out = {}
+
+    def put(name, value):
+        if name in out:
+            _fail(source, f"{where}.{name}" if where else name,
+                  "given twice (a quoted \"a.b\" and a dotted a.b name the same key)")
+        out[name] = value
+
     for k, v in table.items():
         name = f"{prefix}{k}"
-        if isinstance(v, Mapping) and not leaf(v):
-            out.update(_flatten(v, name + ".", leaf))
+        if isinstance(v, Mapping) and v and not leaf(v):
+            for sub, value in _flatten(v, name + ".", leaf, source, where).items():
+                put(sub, value)
         else:
-            out[name] = v
+            put(name, v)
     return out
 
 
@@ -135,21 +149,43 @@ def _scene_error(source, exc: SceneError, prefix: str) -> SceneError:
     return SceneError(text)
 
 
+def _scene_path(source: str, folder: Path, sc: str) -> str:
+    """The scene file a sweep names (``sc``, relative to the sweep file's ``folder``)."""
+    path = folder / sc
+    if "\0" in sc or not path.exists():
+        _fail(source, "scene", f"no scene file {sc!r} (a path relative to the sweep file)")
+    return str(path)
+
+
+def input_files(spec) -> tuple:
+    """The files a sweep reads (the sweep file, and the scene file it names), to compare the
+    outputs with before any work (``outputs.check_paths``); () for a dict. Reads the sweep file
+    with the checks of :func:`load` (SceneError as it would raise)."""
+    from derive.sim.scene import read_toml
+
+    if isinstance(spec, Mapping) or not isinstance(spec, (str, os.PathLike)):
+        return ()
+    source = os.fspath(spec)
+    sc = read_toml(source, "sweep").get("scene")
+    if not isinstance(sc, str):
+        return (source,)
+    return (source, _scene_path(source, Path(source).resolve().parent, sc))
+
+
 def load(spec) -> Spec:
-    """Read and validate a sweep (path or dict); raises SceneError ``<file>: <key>: <what>``."""
-    from derive.sim.scene import load_scene
+    """Read and validate a sweep (path or dict); raises SceneError ``<file>: <key>: <what>``.
+
+    A sweep file is read by the scene files' reader (``scene.read_toml``: regular files of at
+    most ``scene.MAX_SCENE_BYTES``, nothing special such as /dev/zero or a FIFO); a key named
+    twice in any spelling (quoted or dotted) is refused, as is a table that names no key.
+    """
+    from derive.sim.scene import load_scene, read_toml
 
     if isinstance(spec, Mapping):
         source, data, folder = "<sweep>", spec, Path.cwd()
     elif isinstance(spec, (str, os.PathLike)):
         source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
-        try:
-            with open(source, "rb") as f:
-                data = tomllib.load(f)
-        except OSError as exc:
-            _fail(source, "sweep", f"cannot read the file ({exc.strerror or exc})")
-        except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-            _fail(source, "sweep", f"not valid TOML ({' '.join(str(exc).split())})")
+        data = read_toml(source, "sweep")
         folder = Path(source).resolve().parent
     else:
         raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
@@ -161,13 +197,15 @@ def load(spec) -> Spec:
     if "scene" not in data:
         _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
     sc = data["scene"]
+    files = (source,) if source != "<sweep>" else ()
     if isinstance(sc, str):
-        path = folder / sc
-        if not path.is_file():
-            _fail(source, "scene", f"no scene file {sc!r} (a path relative to the sweep file)")
-        base = load_scene(str(path))  # its own errors name the scene file
-        with open(path, "rb") as f:
-            raw = tomllib.load(f)
+        path = _scene_path(source, folder, sc)
+        files += (path,)
+        raw = read_toml(path)  # read once, with the scene files' checks
+        try:
+            base = load_scene(raw)
+        except SceneError as exc:
+            raise _scene_error(path, exc, "") from None  # its errors name the scene file
     elif isinstance(sc, Mapping):
         raw = copy.deepcopy(dict(sc))
         try:
@@ -181,7 +219,7 @@ def load(spec) -> Spec:
 
     keys, shape, columns = _points(source, data, raw, base)
     names, options = _measures(source, data)
-    out = Spec(source, base, raw, keys, shape, columns, names, options)
+    out = Spec(source, base, raw, keys, shape, columns, names, options, files=files)
     _build(out)
     return out
 
@@ -194,7 +232,8 @@ def _points(source, data, raw, base):
         table = data["vary"]
         if not isinstance(table, Mapping) or not table:
             _fail(source, "vary", "must be a table of dotted scene keys")
-        leaves = _flatten(table, "", lambda v: bool({"from", "to", "num", "values"} & set(v)))
+        leaves = _flatten(table, "", lambda v: bool({"from", "to", "num", "values"} & set(v)),
+                          source, "vary")
         columns = {}
         for key, rule in leaves.items():
             _check_key(source, f"vary.{key}", key, variable, raw)
@@ -214,7 +253,7 @@ def _points(source, data, raw, base):
         if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
             _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
         rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
-        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)))
+        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)), source, "random")
         if not leaves:
             _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
         rng = np.random.default_rng(seed)
@@ -600,6 +639,7 @@ class SweepResult:
     source: str = ""
     model: str = ""
     scene: object = field(default=None, repr=False)
+    files: tuple = ()  # the files the sweep read (outputs may not replace them: ``write``)
 
     @property
     def ok(self) -> np.ndarray:
@@ -682,12 +722,13 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     return SweepResult(params={k: sp.columns[k] for k in sp.keys}, measures=values,
                        status=status.astype(str), keys=sp.keys, shape=sp.shape,
                        measure_names=sp.measures, title=sp.scene.title or "", source=sp.source,
-                       model=desc.name, scene=sp.scene)
+                       model=desc.name, scene=sp.scene, files=sp.files)
 
 
 def write(result: SweepResult, parquet: str | None, png: str | None = None,
           measure: str | None = None) -> None:
-    """The Parquet file (one row per point) and the plot, all or nothing."""
+    """The Parquet file (one row per point) and the plot, all or nothing; neither may be a file
+    the sweep read (``result.files``: SceneError naming both)."""
     from derive.sim.outputs import write_all
 
     writers = {}
@@ -700,7 +741,7 @@ def write(result: SweepResult, parquet: str | None, png: str | None = None,
             plot_sweep(result, f, measure)
 
         writers[png] = plot
-    write_all(writers)
+    write_all(writers, inputs=result.files)
 
 
 def cli(args) -> int:
@@ -710,7 +751,8 @@ def cli(args) -> int:
 
     from derive.sim.outputs import check_paths
 
-    check_paths([args.output, args.plot])
+    # before the work: an output that would replace the sweep file or its scene is known now
+    check_paths([args.output, args.plot], inputs=input_files(args.sweep))
     t0 = time.perf_counter()
     res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
                 add_measure=args.measure)

@@ -77,7 +77,9 @@ def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
                          f"(one of {', '.join(res.measures)})")
     z = np.asarray(res.measures[measure], dtype=float)
     z = np.where(res.ok, z, np.nan)
-    title = res.title or res.source
+    from derive.sim.plots import display_title
+
+    title = display_title(res.title or res.source)
     fig, ax = plt.subplots(figsize=(7.5, 5.2), dpi=110)
     if res.shape is not None and len(res.shape) == 2:
         ky, kx = res.keys  # the first key is the slow one: rows

@@ -264,7 +264,7 @@ def classify_values(I1, I2, I3, M=0.0, g=0.0, com=(0.0, 0.0, 0.0), damping=0.0) 
 def _classify(I1, I2, I3, M, g, com, damping) -> Classification:
     """The classification with axis 3 as the symmetry axis."""
     cx, cy, cz = com
-    r = math.sqrt(cx * cx + cy * cy + cz * cz)
+    r = math.hypot(cx, cy, cz)  # scaled: |r_c| = 1e300 is not an overflow
     if damping > 0:
         return Classification("general", f"dissipative: the damping torque -c omega (c = {damping:g}) "
                                          "conserves neither the energy nor L.n", dissipative=True)
