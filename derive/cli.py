@@ -64,20 +64,26 @@ def _cmd_verify(args) -> int:
 
 
 #: `derive simulate` flags that override the scene's [simulate] keys (flag dest -> scene key).
-SIMULATE_OVERRIDES = ("method", "rtol", "atol", "formulation", "h", "max_steps")
+SIMULATE_OVERRIDES = ("t_end", "samples", "method", "rtol", "atol", "formulation", "h", "max_steps")
 
 
 def _cmd_simulate(args) -> int:
     import json
     import time
 
-    from .outputs import check_paths
+    from .outputs import PLOT_FORMATS, RESULT_FORMATS, check_paths, output_format
     from .simulation import simulate, write_outputs
 
-    check_paths([args.output, args.plot])  # before the work: a bad path is known in advance
+    # Before the work: a bad path or an extension naming no format we write is known in advance.
+    check_paths([args.output, args.plot])
+    output_format(args.output, "-o", RESULT_FORMATS)
+    output_format(args.plot, "--plot", PLOT_FORMATS)
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
     start = time.perf_counter()
-    res = simulate(args.scene, **overrides)
+    try:
+        res = simulate(args.scene, **overrides)
+    except SceneError as exc:
+        raise _flag_named(exc, overrides) from None
     wall = time.perf_counter() - start
     write_outputs(res, npz=args.output, png=args.plot)
     if args.json:
@@ -86,6 +92,18 @@ def _cmd_simulate(args) -> int:
     print(f"{res.method} / {res.formulation}: {len(res.t)} samples, {res.nfev} rhs evaluations"
           + (f" -> {args.output}" if args.output else "") + (f", {args.plot}" if args.plot else ""))
     return EXIT_OK
+
+
+def _flag_named(exc: SceneError, overrides) -> SceneError:
+    """The scene's message for a bad override, naming the command-line flag it came from:
+    ``... simulate.t_end: must be ... (given as --t-end)`` instead of "(given as an override)"."""
+    import re
+
+    text, suffix = str(exc), " (given as an override)"
+    m = re.search(r": simulate\.(\w+): ", text)
+    if text.endswith(suffix) and m and m.group(1) in overrides:
+        return SceneError(f"{text[:-len(suffix)]} (given as --{m.group(1).replace('_', '-')})")
+    return exc
 
 
 def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | None = None) -> dict:
@@ -208,8 +226,14 @@ def parser() -> argparse.ArgumentParser:
     s = sub.add_parser("simulate", help="simulate a scene file",
                        description=f"Simulate a scene. Methods: {methods}.")
     s.add_argument("scene", help="scene file (TOML)")
-    s.add_argument("-o", "--output", help="output file (.npz)")
-    s.add_argument("--plot", help="plot file (.png)")
+    s.add_argument("-o", "--output", help="output file: .npz (NumPy arrays) or .csv (a header row, "
+                                          "a column per array component, the metadata as '# key: "
+                                          "value' lines first), by its extension")
+    s.add_argument("--plot", help="plot file: .png, .pdf or .svg, by its extension")
+    s.add_argument("--t-end", type=float, metavar="T",
+                   help="overrides [simulate] t_end: the end of the run, in seconds")
+    s.add_argument("--samples", type=int, metavar="N",
+                   help="overrides [simulate] samples: output times from 0 to t_end inclusive")
     s.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(METHODS)}")
     s.add_argument("--rtol", type=float, metavar="R",
                    help="overrides [simulate] rtol: relative tolerance of the adaptive methods")
@@ -243,8 +267,10 @@ def parser() -> argparse.ArgumentParser:
     w = sub.add_parser("sweep", help="a parameter sweep: many points of one scene, measured while "
                                      "integrating (docs/sweeps.md)")
     w.add_argument("sweep", help="sweep file (TOML)")
-    w.add_argument("-o", "--output", required=True, help="results (.parquet, one row per point)")
-    w.add_argument("--plot", default=None, help="map (2-D sweep) or line (1-D) as PNG")
+    w.add_argument("-o", "--output", required=True,
+                   help="results, one row per point: .parquet or .csv, by its extension")
+    w.add_argument("--plot", default=None,
+                   help="map (2-D sweep) or line (1-D): .png, .pdf or .svg, by its extension")
     w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,

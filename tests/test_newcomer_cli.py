@@ -138,3 +138,197 @@ def test_the_suite_runs_hypothesis_deterministically_without_a_database():
     explore = settings.get_profile("explore")
     assert explore.database is None and not explore.derandomize
     assert settings.default.database is None
+
+
+# --- 5. outputs are what their extension says; 6. --t-end and --samples -------------------------
+
+SCENE_TOML = """\
+title = "newcomer test: heavy top"
+[body]
+I1 = 1.0
+I3 = 0.5
+[gravity]
+M = 1.0
+g = 9.81
+l = 0.1
+[initial]
+alpha = 0.0
+beta = 0.5
+gamma = 0.0
+alpha_dot = 0.0
+beta_dot = 0.0
+gamma_dot = 10.0
+[simulate]
+t_end = 0.05
+samples = 3
+"""
+
+
+@pytest.fixture
+def scene(tmp_path):
+    path = tmp_path / "top.toml"
+    path.write_text(SCENE_TOML)
+    return path
+
+
+def run_in_process(capsys, *argv):
+    """``derive.cli.main`` in this process: (exit status, stdout, stderr)."""
+    from derive import cli
+
+    code = cli.main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def listing(folder):
+    return sorted(p.name for p in folder.iterdir())
+
+
+@pytest.fixture
+def small_figure(monkeypatch):
+    """plots.figure replaced by a one-line figure: these tests are about the file format, and
+    the real figure (seven panels, two in 3-D) takes a second or two to draw."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from derive import plots
+
+    def figure(res):
+        fig, ax = plt.subplots(figsize=(2, 2))
+        ax.plot(res.t, res.beta)
+        return fig
+
+    monkeypatch.setattr(plots, "figure", figure)
+
+
+def test_csv_output_holds_the_npz_arrays_bit_for_bit_and_the_metadata(capsys, tmp_path, scene,
+                                                                      small_figure):
+    csv, npz, pdf = tmp_path / "out.csv", tmp_path / "out.npz", tmp_path / "out.pdf"
+    code, _, err = run_in_process(capsys, "simulate", scene, "-o", csv, "--plot", pdf)
+    assert code == 0, err
+    assert run_in_process(capsys, "simulate", scene, "-o", npz)[0] == 0
+    text = csv.read_text()
+    assert not text.startswith("PK")  # not a zip (an npz) under a .csv name
+    comments = [ln for ln in text.splitlines() if ln.startswith("#")]
+    header = text.splitlines()[len(comments)].split(",")
+    table = np.genfromtxt(csv, delimiter=",", names=True, skip_header=len(comments))
+    with np.load(npz) as data:
+        meta = {f"# {k}: {data[k].item()}" for k in data.files if data[k].ndim == 0}
+        assert set(comments) == meta == {f"# method: {data['method']}",
+                                         f"# formulation: {data['formulation']}",
+                                         f"# nfev: {int(data['nfev'])}"}
+        expected = []
+        for k in data.files:
+            a = data[k]
+            if a.ndim == 1:
+                expected.append((k, a))
+            elif a.ndim == 2:
+                names = [f"{k}_{c}" for c in "xyz"] if k == "axis" else [f"{k}{i + 1}" for i in range(3)]
+                expected += [(n, a[:, i]) for i, n in enumerate(names)]
+        assert header[0] == "t" and sorted(header) == sorted(n for n, _ in expected)
+        assert {"omega1", "omega3", "axis_x", "axis_z", "energy", "beta"} <= set(header)
+        for name, column in expected:
+            np.testing.assert_array_equal(table[name], column, err_msg=name)
+    assert pdf.read_bytes().startswith(b"%PDF-")
+
+
+MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "pdf": b"%PDF-", "svg": b"<?xml"}
+
+
+@pytest.mark.parametrize("ext", ["png", "pdf", "svg", "PDF"])
+def test_plot_is_written_in_the_format_its_extension_names(capsys, tmp_path, scene, ext,
+                                                          small_figure):
+    plot = tmp_path / f"out.{ext}"
+    code, out, err = run_in_process(capsys, "simulate", scene, "--plot", plot)
+    assert code == 0, err
+    data = plot.read_bytes()
+    assert data.startswith(MAGIC[ext.lower()])
+    if ext.lower() == "svg":
+        assert b"<svg" in data[:2000]
+
+
+@pytest.mark.parametrize("flag, name, allowed", [
+    ("-o", "out.txt", ".npz, .csv"), ("-o", "out", ".npz, .csv"), ("-o", "out.png", ".npz, .csv"),
+    ("--plot", "out.jpg", ".png, .pdf, .svg"), ("--plot", "out.npz", ".png, .pdf, .svg"),
+    ("--plot", "plot", ".png, .pdf, .svg")])
+def test_an_extension_naming_no_format_is_exit_2_before_the_run(capsys, tmp_path, scene,
+                                                                monkeypatch, flag, name, allowed):
+    from derive import simulation
+
+    def never(*a, **k):
+        raise AssertionError("simulate ran although the output could not be written")
+
+    monkeypatch.setattr(simulation, "simulate", never)
+    code, out, err = run_in_process(capsys, "simulate", scene, flag, tmp_path / name)
+    assert code == 2 and out == ""
+    assert err.count("\n") == 1 and err.startswith(f"error: {tmp_path / name}: {flag}: ")
+    assert err.rstrip().endswith(allowed)
+    assert listing(tmp_path) == ["top.toml"]
+
+
+def test_a_bad_plot_extension_leaves_an_existing_output_untouched(capsys, tmp_path, scene):
+    old = tmp_path / "out.npz"
+    old.write_bytes(b"old")
+    code, _, err = run_in_process(capsys, "simulate", scene, "-o", old, "--plot",
+                                  tmp_path / "out.gif")
+    assert code == 2 and "--plot" in err
+    assert old.read_bytes() == b"old" and listing(tmp_path) == ["out.npz", "top.toml"]
+
+
+SWEEP_TOML = """\
+scene = "top.toml"
+[vary]
+initial.beta = { values = [0.3, 0.5] }
+[measure]
+names = ["beta_max", "nfev"]
+"""
+
+
+def test_sweep_writes_csv_and_refuses_extensions_it_cannot_write(capsys, tmp_path, scene):
+    sweep = tmp_path / "sweep.toml"
+    sweep.write_text(SWEEP_TOML)
+    csv = tmp_path / "r.csv"
+    code, out, err = run_in_process(capsys, "sweep", sweep, "-o", csv)
+    assert code == 0, err
+    lines = csv.read_text().splitlines()
+    assert lines[0] == "initial.beta,beta_max,nfev,status" and len(lines) == 3
+    assert [float(ln.split(",")[0]) for ln in lines[1:]] == [0.3, 0.5]
+    assert all(float(ln.split(",")[1]) >= b for ln, b in zip(lines[1:], (0.3, 0.5)))
+    for flag, name in (("-o", "r.xlsx"), ("--plot", "m.jpeg")):
+        argv = ["sweep", sweep, "-o", tmp_path / "r.parquet", flag, tmp_path / name]
+        if flag == "-o":
+            argv = ["sweep", sweep, "-o", tmp_path / name]
+        code, out, err = run_in_process(capsys, *argv)
+        assert code == 2 and err.count("\n") == 1 and f": {flag}: " in err, err
+    assert listing(tmp_path) == ["r.csv", "sweep.toml", "top.toml"]
+
+
+def test_t_end_and_samples_flags_override_the_scene(capsys, tmp_path, scene):
+    npz = tmp_path / "out.npz"
+    code, out, err = run_in_process(capsys, "simulate", scene, "--t-end", "0.125",
+                                    "--samples", "6", "-o", npz, "--json")
+    assert code == 0, err
+    summary = __import__("json").loads(out)
+    assert summary["t_end"] == 0.125 and summary["samples"] == 6
+    with np.load(npz) as data:
+        np.testing.assert_array_equal(data["t"], np.linspace(0.0, 0.125, 6))
+
+
+@pytest.mark.parametrize("flag, value, what", [
+    ("--t-end", "-1", "simulate.t_end: must be a positive finite number"),
+    ("--t-end", "0", "simulate.t_end: must be a positive finite number"),
+    ("--t-end", "nan", "simulate.t_end: must be a positive finite number"),
+    ("--t-end", "inf", "simulate.t_end: must be a positive finite number"),
+    ("--t-end", "soon", "argument --t-end: invalid float value"),
+    ("--samples", "1", "simulate.samples: must be an integer from 2"),
+    ("--samples", "99999999999", "simulate.samples: must be an integer from 2"),
+    ("--samples", "2.5", "argument --samples: invalid int value"),
+])
+def test_bad_t_end_or_samples_is_exit_2_naming_the_flag(capsys, tmp_path, scene, flag, value, what):
+    npz = tmp_path / "out.npz"
+    code, out, err = run_in_process(capsys, "simulate", scene, f"{flag}={value}", "-o", npz)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert what in err and flag in err
+    assert not npz.exists()
