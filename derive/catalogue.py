@@ -144,6 +144,10 @@ def _load(key) -> Description:
         folder = _cache_folder(name, key, writable_cache_dir())
         path = folder / "models" / f"{name}.json"
         if not path.is_file():
+            from .errors import note
+
+            note(f"deriving model {name} with SymPy (first run of this model: a few seconds; "
+                 f"kept in the compile cache afterwards)")
             derive_model(key, folder)
     return Description.from_json(path.read_text(encoding="utf-8"), folder)
 

@@ -43,7 +43,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from .errors import CompilerError
+from .errors import CompilerError, note
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
@@ -253,6 +253,7 @@ def _build(fname: str, name: str, sources: dict[str, str], mains: list[str], cmd
     into place; an unwritable cache moves the build to the process's private cache."""
     root = writable_cache_dir()
     remove_stale_builds(root)
+    note(f"compiling {name} (once: kept in the compile cache {root})")
     try:
         work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
     except OSError as exc:

@@ -6,6 +6,11 @@ verdict (or, never expected, an internal error: ``error: internal error: <type>:
 output path that cannot be written); 3 numerical failure (one line saying where); 4 no working C
 compiler; 130 interrupted (Ctrl-C: ``error: interrupted``). Never a traceback. Warnings (NumPy's
 RuntimeWarnings among them) are not shown: a numerical failure is the one exit-3 line.
+
+A step that takes more than a second (deriving a model not shipped in generated/, compiling a
+kernel, `analyze`, `verify`, `generate`) is announced by one line ``note: <what>`` on stderr
+when stderr is a terminal, as git shows its progress: a pipe or a file (a script, CI) gets
+nothing but the one ``error:`` line of a failure, and stdout only the result.
 """
 from __future__ import annotations
 
@@ -15,7 +20,7 @@ import sys
 import warnings
 from pathlib import Path
 
-from .errors import CompilerError, IntegrationError, SceneError
+from .errors import NOTE_STREAM, CompilerError, IntegrationError, SceneError, note
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
 EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
@@ -31,6 +36,8 @@ def _cmd_generate(args) -> int:
               "(no source checkout to write generated/ into)", file=sys.stderr)
         return EXIT_INPUT
     out = Path(args.out) if args.out else GENERATED
+    note(f"deriving every model and rendering every file, to {'compare with' if args.check else 'write'} "
+         f"{out} (ten seconds or more)")
     files = codegen.generate_all()
     if args.check:
         stale = codegen.stale(files, out)
@@ -56,6 +63,7 @@ def _cmd_generate(args) -> int:
 def _cmd_verify(args) -> int:
     from . import verify
 
+    note("deriving the lecture's formulas with SymPy (a few seconds)")
     print(verify.table(args.format))
     wrong = verify.mismatches()
     for claim, expected, got in wrong:
@@ -130,8 +138,11 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
 
 def _cmd_analyze(args) -> int:
     from .analysis import render
+    from .scene import load_scene
 
-    print(render(args.scene, args.format), end="" if args.format == "markdown" else "\n")
+    scene = load_scene(args.scene)  # bad input is exit 2 at once, without the note
+    note("deriving the equations, integrals and equilibria with SymPy (a few seconds)")
+    print(render(scene, args.format), end="" if args.format == "markdown" else "\n")
     return EXIT_OK
 
 
@@ -325,6 +336,9 @@ def _main(argv) -> int:
         args = p.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on bad flags already; keep its code
         return int(exc.code or 0)
+    # Notes only on a terminal (see the module docstring); reset after the command, since tests
+    # and programs may call main() many times in one process with different streams.
+    NOTE_STREAM[0] = sys.stderr if _is_terminal(sys.stderr) else None
     try:
         return args.func(args)
     except SceneError as exc:
@@ -334,3 +348,12 @@ def _main(argv) -> int:
     except CompilerError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_COMPILER
+    finally:
+        NOTE_STREAM[0] = None
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, OSError, ValueError):  # a closed or stream-less stderr
+        return False

@@ -332,3 +332,164 @@ def test_bad_t_end_or_samples_is_exit_2_naming_the_flag(capsys, tmp_path, scene,
     assert code == 2 and out == "" and err.count("\n") == 1
     assert what in err and flag in err
     assert not npz.exists()
+
+
+# --- 10. slow steps say so, on a terminal's stderr -------------------------------------------
+
+
+class _Terminal:
+    """A text stream that says it is a terminal (what the command line checks)."""
+
+    def __init__(self):
+        import io
+
+        self.buffer = io.StringIO()
+
+    def write(self, text):
+        return self.buffer.write(text)
+
+    def flush(self):
+        pass
+
+    def isatty(self):
+        return True
+
+    def getvalue(self):
+        return self.buffer.getvalue()
+
+
+def run_with_stderr(stderr, *argv):
+    """cli.main with this stderr object: (exit status, stdout, stderr text)."""
+    import contextlib
+    import io
+
+    from derive import cli
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(stderr):
+        code = cli.main([str(a) for a in argv])
+    return code, out.getvalue(), stderr.getvalue()
+
+
+DAMPED_EULER_ANGLES = SCENE_TOML + "formulation = \"euler-angles\"\n[damping]\nc = 0.01\n"
+
+
+@pytest.fixture
+def unshipped(tmp_path, monkeypatch):
+    """A scene whose model (Euler angles, gravity and damping) is not in generated/, an empty
+    compile cache, and a derivation that stops at once (as Ctrl-C would): what the command line
+    says before the slow step is what is checked, without spending its seconds."""
+    from derive import catalogue
+
+    path = tmp_path / "damped.toml"
+    path.write_text(DAMPED_EULER_ANGLES)
+    monkeypatch.setenv("DERIVE_CACHE", str(tmp_path / "cache"))
+
+    def interrupted(key, folder):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(catalogue, "derive_model", interrupted)
+    catalogue.clear_memory()  # descriptions loaded by earlier tests point at the usual cache
+    yield path
+    catalogue.clear_memory()
+
+
+def test_deriving_an_unshipped_model_is_announced_on_a_terminal(unshipped):
+    code, out, err = run_with_stderr(_Terminal(), "simulate", unshipped, "--json")
+    assert (code, out) == (130, "")
+    lines = err.splitlines()
+    assert len(lines) == 2 and lines[1] == "error: interrupted"
+    assert lines[0].startswith("note: deriving model euler_angles_sym_gravity_damping with SymPy")
+    assert "first run" in lines[0]
+
+
+def test_no_note_when_stderr_is_not_a_terminal(unshipped):
+    import io
+
+    code, out, err = run_with_stderr(io.StringIO(), "simulate", unshipped, "--json")
+    assert (code, out, err) == (130, "", "error: interrupted\n")
+
+
+def test_a_cached_model_runs_without_a_note(tmp_path):
+    path = tmp_path / "top.toml"
+    path.write_text(SCENE_TOML)
+    run_with_stderr(_Terminal(), "simulate", path)  # compiled now if it was not
+    code, out, err = run_with_stderr(_Terminal(), "simulate", path, "--json")
+    assert code == 0 and err == ""
+    assert __import__("json").loads(out)["samples"] == 3
+
+
+@pytest.mark.parametrize("argv, stub, output", [
+    (["analyze", "SCENE", "--format", "json"], ("analysis", "render", lambda scene, fmt: "{}"),
+     "{}\n"),
+    (["verify"], ("verify", "table", lambda fmt: "table"), "table\n"),
+    (["generate", "--check"], ("codegen", "generate_all", dict), ""),
+])
+def test_analyze_verify_and_generate_announce_themselves_on_stderr_only(tmp_path, monkeypatch,
+                                                                        argv, stub, output):
+    import importlib
+
+    module, name, fake = stub
+    monkeypatch.setattr(importlib.import_module(f"derive.{module}"), name, fake)
+    if module == "verify":
+        monkeypatch.setattr(importlib.import_module("derive.verify"), "mismatches", lambda: [])
+    if module == "codegen":
+        monkeypatch.setattr(importlib.import_module("derive.codegen"), "stale", lambda f, o: [])
+    scene = tmp_path / "top.toml"
+    scene.write_text(SCENE_TOML)
+    argv = [scene if a == "SCENE" else a for a in argv]
+    code, out, err = run_with_stderr(_Terminal(), *argv)
+    assert code == 0 and out == output
+    lines = err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("note: ") and "second" in lines[0]
+
+
+def test_bad_input_to_analyze_is_one_error_line_without_a_note(tmp_path):
+    code, out, err = run_with_stderr(_Terminal(), "analyze", tmp_path / "missing.toml")
+    assert code == 2 and out == ""
+    assert err.splitlines() == [f"error: {tmp_path / 'missing.toml'}: file: not found"]
+
+
+def _run_on_a_terminal(argv, env, timeout=300):
+    """A real process whose stderr is a pseudo-terminal: (exit status, stdout, stderr)."""
+    import os
+    import pty
+
+    master, slave = pty.openpty()
+    try:
+        p = subprocess.run([sys.executable, "-m", "derive", *map(str, argv)], stdout=subprocess.PIPE,
+                           stderr=slave, text=True, env=env, timeout=timeout)
+    finally:
+        os.close(slave)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(master, 65536)
+        except OSError:  # EIO: the other side is closed and everything was read
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(master)
+    return p.returncode, p.stdout, b"".join(chunks).decode().replace("\r\n", "\n")
+
+
+@pytest.mark.slow  # two real derivations and compilations of a model (5-10 s each)
+def test_first_run_of_an_unshipped_model_notes_on_a_terminal_and_keeps_stdout_clean(tmp_path):
+    import json
+    import os
+
+    scene = tmp_path / "damped.toml"
+    scene.write_text(DAMPED_EULER_ANGLES)
+    piped_env = dict(os.environ, DERIVE_CACHE=str(tmp_path / "cache-a"))
+    r = derive_cli("simulate", scene, "--json", env=piped_env, timeout=300)
+    assert r.returncode == 0 and r.stderr == ""  # a pipe: nothing but what failed
+    assert json.loads(r.stdout)["formulation"] == "euler-angles"
+    tty_env = dict(os.environ, DERIVE_CACHE=str(tmp_path / "cache-b"))
+    code, out, err = _run_on_a_terminal(["simulate", scene, "--json"], tty_env)
+    assert code == 0 and json.loads(out) == {**json.loads(out), "formulation": "euler-angles"}
+    notes = err.splitlines()
+    assert notes[0].startswith("note: deriving model euler_angles_sym_gravity_damping")
+    assert all(n.startswith("note: ") for n in notes) and any("compiling" in n for n in notes)
+    code, out, err = _run_on_a_terminal(["simulate", scene, "--json"], tty_env)
+    assert code == 0 and err == ""  # the second run: derived and compiled already
