@@ -6,6 +6,11 @@ verdict (or, never expected, an internal error: ``error: internal error: <type>:
 output path that cannot be written); 3 numerical failure (one line saying where); 4 no working C
 compiler; 130 interrupted (Ctrl-C: ``error: interrupted``). Never a traceback. Warnings (NumPy's
 RuntimeWarnings among them) are not shown: a numerical failure is the one exit-3 line.
+
+A step that takes more than a second (deriving a model not shipped in generated/, compiling a
+kernel, `analyze`, `verify`, `generate`) is announced by one line ``note: <what>`` on stderr
+when stderr is a terminal, as git shows its progress: a pipe or a file (a script, CI) gets
+nothing but the one ``error:`` line of a failure, and stdout only the result.
 """
 from __future__ import annotations
 
@@ -15,7 +20,7 @@ import sys
 import warnings
 from pathlib import Path
 
-from derive.errors import CompilerError, IntegrationError, SceneError
+from derive.errors import NOTE_STREAM, CompilerError, IntegrationError, SceneError, note
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
 EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
@@ -33,6 +38,8 @@ def _cmd_generate(args) -> int:
     out = Path(args.out) if args.out else GENERATED
     if args.out:
         _output_dir(out, "--out", create=not args.check)  # before the (slow) generation
+    note(f"deriving every model and rendering every file, to {'compare with' if args.check else 'write'} "
+         f"{out} (ten seconds or more)")
     files = generate.generate_all()
     if args.check:
         stale = generate.stale(files, out)
@@ -58,6 +65,7 @@ def _cmd_generate(args) -> int:
 def _cmd_verify(args) -> int:
     from derive.lecture import verify
 
+    note("deriving the lecture's formulas with SymPy (a few seconds)")
     print(verify.table(args.format))
     wrong = verify.mismatches()
     for claim, expected, got in wrong:
@@ -66,21 +74,27 @@ def _cmd_verify(args) -> int:
 
 
 #: `derive simulate` flags that override the scene's [simulate] keys (flag dest -> scene key).
-SIMULATE_OVERRIDES = ("method", "rtol", "atol", "formulation", "h", "max_steps")
+SIMULATE_OVERRIDES = ("t_end", "samples", "method", "rtol", "atol", "formulation", "h", "max_steps")
 
 
 def _cmd_simulate(args) -> int:
     import json
     import time
 
-    from derive.sim.outputs import check_paths
+    from derive.sim.outputs import PLOT_FORMATS, RESULT_FORMATS, check_paths, output_format
     from derive.sim.simulation import simulate, write_outputs
 
-    # before the work: a bad path, or one that would replace the scene, is known in advance
+    # Before the work: a bad path, one that would replace the scene, or an extension naming no
+    # format we write is known in advance.
     check_paths([args.output, args.plot], inputs=[args.scene])
+    output_format(args.output, "-o", RESULT_FORMATS)
+    output_format(args.plot, "--plot", PLOT_FORMATS)
     overrides = {k: getattr(args, k) for k in SIMULATE_OVERRIDES if getattr(args, k) is not None}
     start = time.perf_counter()
-    res = simulate(args.scene, **overrides)
+    try:
+        res = simulate(args.scene, **overrides)
+    except SceneError as exc:
+        raise _flag_named(exc, overrides) from None
     wall = time.perf_counter() - start
     write_outputs(res, npz=args.output, png=args.plot)
     if args.json:
@@ -89,6 +103,18 @@ def _cmd_simulate(args) -> int:
     print(f"{res.method} / {res.formulation}: {len(res.t)} samples, {res.nfev} rhs evaluations"
           + (f" -> {args.output}" if args.output else "") + (f", {args.plot}" if args.plot else ""))
     return EXIT_OK
+
+
+def _flag_named(exc: SceneError, overrides) -> SceneError:
+    """The scene's message for a bad override, naming the command-line flag it came from:
+    ``... simulate.t_end: must be ... (given as --t-end)`` instead of "(given as an override)"."""
+    import re
+
+    text, suffix = str(exc), " (given as an override)"
+    m = re.search(r": simulate\.(\w+): ", text)
+    if text.endswith(suffix) and m and m.group(1) in overrides:
+        return SceneError(f"{text[:-len(suffix)]} (given as --{m.group(1).replace('_', '-')})")
+    return exc
 
 
 def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | None = None) -> dict:
@@ -115,8 +141,11 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
 
 def _cmd_analyze(args) -> int:
     from derive.lecture.analysis import render
+    from derive.sim.scene import load_scene
 
-    print(render(args.scene, args.format), end="" if args.format == "markdown" else "\n")
+    scene = load_scene(args.scene)  # bad input is exit 2 at once, without the note
+    note("deriving the equations, integrals and equilibria with SymPy (a few seconds)")
+    print(render(scene, args.format), end="" if args.format == "markdown" else "\n")
     return EXIT_OK
 
 
@@ -276,8 +305,14 @@ def parser() -> argparse.ArgumentParser:
     s = sub.add_parser("simulate", help="simulate a scene file",
                        description=f"Simulate a scene. Methods: {methods}.")
     s.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
-    s.add_argument("-o", "--output", help="output file (.npz)")
-    s.add_argument("--plot", help="plot file (.png)")
+    s.add_argument("-o", "--output", help="output file: .npz (NumPy arrays) or .csv (a header row, "
+                                          "a column per array component, the metadata as '# key: "
+                                          "value' lines first), by its extension")
+    s.add_argument("--plot", help="plot file: .png, .pdf or .svg, by its extension")
+    s.add_argument("--t-end", type=float, metavar="T",
+                   help="overrides [simulate] t_end: the end of the run, in seconds")
+    s.add_argument("--samples", type=int, metavar="N",
+                   help="overrides [simulate] samples: output times from 0 to t_end inclusive")
     s.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(METHODS)}")
     s.add_argument("--rtol", type=float, metavar="R",
                    help="overrides [simulate] rtol: relative tolerance of the adaptive methods")
@@ -311,8 +346,10 @@ def parser() -> argparse.ArgumentParser:
     w = sub.add_parser("sweep", help="a parameter sweep: many points of one scene, measured while "
                                      "integrating (docs/sweeps.md)")
     w.add_argument("sweep", help="sweep file (TOML), or the name of an example (derive examples)")
-    w.add_argument("-o", "--output", required=True, help="results (.parquet, one row per point)")
-    w.add_argument("--plot", default=None, help="map (2-D sweep) or line (1-D) as PNG")
+    w.add_argument("-o", "--output", required=True,
+                   help="results, one row per point: .parquet or .csv, by its extension")
+    w.add_argument("--plot", default=None,
+                   help="map (2-D sweep) or line (1-D): .png, .pdf or .svg, by its extension")
     w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,
@@ -373,6 +410,9 @@ def _main(argv) -> int:
         args = p.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on bad flags already; keep its code
         return int(exc.code or 0)
+    # Notes only on a terminal (see the module docstring); reset after the command, since tests
+    # and programs may call main() many times in one process with different streams.
+    NOTE_STREAM[0] = sys.stderr if _is_terminal(sys.stderr) else None
     try:
         return args.func(args)
     except SceneError as exc:
@@ -382,3 +422,12 @@ def _main(argv) -> int:
     except CompilerError as exc:
         print(f"error: {exc}", file=sys.stderr)
         return EXIT_COMPILER
+    finally:
+        NOTE_STREAM[0] = None
+
+
+def _is_terminal(stream) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, OSError, ValueError):  # a closed or stream-less stderr
+        return False

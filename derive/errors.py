@@ -1,7 +1,7 @@
-"""The two kinds of failure a user can act on.
+"""The two kinds of failure a user can act on, and the notes that announce a slow step.
 
-Both carry the one-line message that the command line prints on stderr, so the Python API and
-the CLI say the same thing.
+Both failures carry the one-line message that the command line prints on stderr, so the Python
+API and the CLI say the same thing.
 """
 
 
@@ -21,3 +21,28 @@ class IntegrationError(RuntimeError):
 
 class CompilerError(RuntimeError):
     """No working C compiler, or the generated C failed to compile."""
+
+
+#: Where :func:`note` writes: the command line puts its stderr here for the length of a command
+#: when stderr is a terminal (derive.cli); None keeps notes silent (the Python API, and a stderr
+#: that is a pipe or a file, where a script may expect nothing but the one error line).
+NOTE_STREAM: list = [None]
+
+
+def note(text: str) -> None:
+    """Announce a step that takes more than a second (deriving a model, compiling a kernel, the
+    symbolic analysis, generating every model) as one line ``note: <text>`` on the stream in
+    :data:`NOTE_STREAM`; nothing when that is None. Never on stdout, which scripts parse.
+
+    Parameters
+    ----------
+    text : str
+        What is about to happen and roughly how long it takes, on one line.
+    """
+    stream = NOTE_STREAM[0]
+    if stream is None:
+        return
+    try:
+        print(f"note: {' '.join(text.split())}", file=stream, flush=True)
+    except (OSError, ValueError):  # a closed or broken stderr: the note is not worth a failure
+        pass

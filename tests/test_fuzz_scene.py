@@ -266,7 +266,7 @@ def check_contract(content: bytes, runner=run_in_process, flags=()) -> tuple[int
         shutil.rmtree(folder, ignore_errors=True)
 
 
-@settings(max_examples=250, deadline=None, derandomize=False,
+@settings(max_examples=250, deadline=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(malformed_scenes())
 def test_fuzzed_scenes_keep_the_contract(content):

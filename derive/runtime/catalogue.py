@@ -27,6 +27,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from derive.errors import note
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import model_name
 
@@ -125,6 +126,9 @@ def _load(key) -> Description:
     if problem != _ABSENT:
         print(f"note: derived model {folder} {problem}; deriving it again", file=sys.stderr,
               flush=True)
+    else:
+        note(f"deriving model {name} with SymPy (first run of this model: a few seconds; "
+             f"kept in the compile cache afterwards)")
     derive_model(key, folder)
     desc, problem = _cached(folder, name)
     if desc is None:

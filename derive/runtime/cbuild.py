@@ -56,7 +56,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from derive.errors import CompilerError
+from derive.errors import CompilerError, note
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
@@ -439,6 +439,7 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
     process's private cache."""
     root = writable_cache_dir()
     remove_stale_builds(root)
+    note(f"compiling {name} (once: kept in the compile cache {root})")
     try:
         work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
     except OSError as exc:

@@ -17,6 +17,11 @@ removed and the existing files are untouched. Should a rename fail half-way (rar
 was checked), the targets already replaced are restored from hard-linked backups where the file
 system allows it.
 
+``output_format`` says which format an output path's extension names (``derive simulate -o``:
+``RESULT_FORMATS``; ``--plot``: ``PLOT_FORMATS``; ``derive sweep -o``: ``TABLE_FORMATS``), and
+refuses any other extension as SceneError ``<path>: <flag>: ...`` (exit 2), so that a file is
+always what its name says. ``write_csv`` writes the arrays of a result as CSV.
+
 New files get the mode the umask gives a new file (``0o666 & ~umask``), as ``open()`` would;
 ``tempfile.mkstemp`` alone makes them 0600. The umask is read from ``/proc/self/status`` where
 it can be (setting it to read it is process-wide, so that fallback happens under a lock).
@@ -34,6 +39,13 @@ from typing import Callable, Mapping
 from derive.errors import SceneError
 
 Writer = Callable[[object], None]  # called with a binary file object open for writing
+
+#: ``derive simulate -o``: extension -> format (the arrays of the output file).
+RESULT_FORMATS = {".npz": "npz", ".csv": "csv"}
+#: ``--plot``: extension -> matplotlib ``savefig`` format.
+PLOT_FORMATS = {".png": "png", ".pdf": "pdf", ".svg": "svg"}
+#: ``derive sweep -o``: extension -> format (one row per point).
+TABLE_FORMATS = {".parquet": "parquet", ".csv": "csv"}
 
 _umask_lock = threading.Lock()
 
@@ -242,3 +254,70 @@ def _commit(staged: list[tuple[str, Path, str]]) -> None:
                 os.unlink(backup)
             except FileNotFoundError:
                 pass
+
+
+def output_format(path, flag: str, formats: Mapping[str, str]) -> str | None:
+    """The format the extension of ``path`` names among ``formats`` (extension -> format,
+    matched without regard to case), None when ``path`` is None.
+
+    Any other extension, or none, raises SceneError ``<path>: <flag>: ...`` naming the allowed
+    extensions: writing PNG bytes into ``x.pdf`` or an npz into ``x.csv`` would give a file
+    that is not what its name says.
+    """
+    if path is None:
+        return None
+    name = os.fspath(path)
+    ext = os.path.splitext(name)[1].lower()
+    if ext in formats:
+        return formats[ext]
+    allowed = ", ".join(formats)
+    what = f"extension {ext!r} is not a format {flag} writes" if ext else "no extension"
+    raise SceneError(f"{name}: {flag}: {what}; name the file with one of {allowed}")
+
+
+#: Component names of the (n, 3) arrays in a CSV: inertial vectors by axis, body vectors 1-based
+#: like the notes' indices (omega1 is ω̃₁).
+INERTIAL_VECTORS = ("axis",)
+
+
+def csv_columns(arrays: Mapping[str, object]) -> tuple[list[str], list, dict[str, str]]:
+    """(header, columns, metadata) of ``arrays`` as ``write_csv`` lays them out: one column per
+    1-D array and per component of an (n, k) array (``axis_x, axis_y, axis_z`` for the inertial
+    ``axis``, ``omega1, omega2, omega3`` for a body vector); 0-d arrays are the metadata."""
+    import numpy as np
+
+    header, columns, meta = [], [], {}
+    for name, value in arrays.items():
+        a = np.asarray(value)
+        if a.ndim == 0:
+            meta[name] = str(a.item())
+        elif a.ndim == 1:
+            header.append(name)
+            columns.append(a)
+        elif a.ndim == 2:
+            suffixes = (("_x", "_y", "_z") if name in INERTIAL_VECTORS and a.shape[1] == 3
+                        else tuple(str(k + 1) for k in range(a.shape[1])))
+            header += [name + s for s in suffixes]
+            columns += list(a.T)
+        else:
+            raise ValueError(f"{name}: a {a.ndim}-d array has no CSV columns")
+    return header, columns, meta
+
+
+def write_csv(fh, arrays: Mapping[str, object]) -> None:
+    """Write ``arrays`` (name -> array, as in the .npz) to the binary file ``fh`` as CSV.
+
+    Layout: first the metadata (the 0-d arrays), one comment line ``# <name>: <value>`` each;
+    then one header row; then one row per sample, a column per 1-D array and per component of
+    an (n, k) array (see :func:`csv_columns`). Numbers are written as Python's ``repr`` of the
+    double, the shortest text that reads back to the same bits. Read it with
+    ``pandas.read_csv(path, comment="#")``, or with NumPy skipping the comment lines (three for
+    a `derive simulate` result: method, formulation, nfev):
+    ``numpy.genfromtxt(path, delimiter=",", names=True, skip_header=3)``.
+    """
+    header, columns, meta = csv_columns(arrays)
+    lines = [f"# {k}: {' '.join(v.split())}" for k, v in meta.items()]
+    lines.append(",".join(header))
+    rows = zip(*(c.tolist() for c in columns))
+    lines += [",".join(map(repr, row)) for row in rows]
+    fh.write(("\n".join(lines) + "\n").encode("utf-8"))

@@ -1,7 +1,7 @@
 """Figures of a simulated trajectory (matplotlib, headless Agg backend).
 
-`figure(res)` builds the figure and returns it (tests inspect it); `plot_result(res, fh)` writes
-it as PNG. Panels, three to a row:
+`figure(res)` builds the figure and returns it (tests inspect it); `plot_result(res, fh, fmt)`
+writes it as PNG, PDF or SVG. Panels, three to a row:
 
 * ``beta``: β(t), the tilt of body axis ê₃ from the vertical (the symmetry axis of a symmetric
   body). When β hardly moves (relative spread < 1e-6) the panel shows β − β(0) instead and
@@ -454,11 +454,21 @@ def figure(res):
     return fig
 
 
-def plot_result(res, fh) -> None:
-    """Write the figure of ``res`` as PNG to the open binary file ``fh``."""
+def plot_result(res, fh, fmt: str = "png") -> None:
+    """Write the figure of ``res`` to the open binary file ``fh``.
+
+    Parameters
+    ----------
+    res : Result
+        What `derive.simulate` returned.
+    fh : binary file object
+        Where the figure goes.
+    fmt : {"png", "pdf", "svg"}
+        The file format (matplotlib's ``savefig`` format); PNG at 100 dpi.
+    """
     plt, _ = _matplotlib()
     fig = figure(res)
     try:
-        fig.savefig(fh, format="png", dpi=100)
+        fig.savefig(fh, format=fmt, dpi=100)
     finally:
         plt.close(fig)

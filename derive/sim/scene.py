@@ -493,7 +493,17 @@ def _show(value) -> str:
     return text if len(text) <= SHOW_LIMIT else text[:SHOW_LIMIT - 20] + f"... ({len(text)} characters)"
 
 
-def _show_full(value) -> str:
+def _show_full(value, depth: int = 0) -> str:
+    if depth > 8:  # a list nested a thousand deep (a dict from Python) would exhaust the stack
+        return "..."
+    if isinstance(value, np.ndarray):
+        if value.ndim == 0:
+            return f"a 0-d array ({_show_full(value.item(), depth + 1)})"
+        if value.ndim == 1 and value.size <= 8:
+            return _show_full(value.tolist(), depth + 1)
+        return f"an array of shape {value.shape}"
+    if value is None:  # a masked array item, or None from Python
+        return "None"
     if isinstance(value, (bool, np.bool_)):
         return f"{str(bool(value)).lower()} (a boolean)"
     if isinstance(value, str):
@@ -510,8 +520,9 @@ def _show_full(value) -> str:
     if isinstance(value, (list, tuple)):
         if len(value) > 8:
             return f"a list of {len(value)} items"
-        return "[" + ", ".join(_show_full(v) for v in value) + "]"
-    return f"a {type(value).__name__}"
+        return "[" + ", ".join(_show_full(v, depth + 1) for v in value) + "]"
+    name = type(value).__name__
+    return f"{'an' if name[:1].lower() in 'aeiou' else 'a'} {name}"
 
 
 def _real(value) -> float | None:
@@ -525,6 +536,25 @@ def _real(value) -> float | None:
     except OverflowError:  # an integer beyond the float range
         return None
     return x if math.isfinite(x) else None
+
+
+def _vector3(value) -> list[float] | None:
+    """``value`` as three finite floats, or None.
+
+    Accepted: a list or tuple of three reals (what TOML gives) or a NumPy array of shape (3,)
+    whose items are reals. Everything else is None, never an exception: a 0-d array or a NumPy
+    scalar (``len()`` of either raises TypeError), an array of another shape ((1, 3), (3, 1),
+    (3, 3)), a ragged list ([[1, 2], 3, 4]), a string (a sequence, but of characters), booleans
+    or non-finite items, a masked item (``tolist()`` makes it None).
+    """
+    if isinstance(value, np.ndarray):
+        if value.shape != (3,):
+            return None
+        value = value.tolist()  # Python scalars; a masked item becomes None
+    elif not isinstance(value, (list, tuple)) or len(value) != 3:
+        return None
+    vec = [_real(w) for w in value]
+    return None if None in vec else vec
 
 
 def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -> str:
@@ -725,9 +755,8 @@ class _Validator:
                 self.fail(f"{table}.{key.name}", "missing required key")
             return key.default
         value = t[key.name]
-        vec = ([_real(w) for w in value]
-               if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
-        if None in vec or (key.check is not None and not key.check(tuple(vec))):
+        vec = _vector3(value)
+        if vec is None or (key.check is not None and not key.check(tuple(vec))):
             self.fail(f"{table}.{key.name}", f"must be {key.must}, got {_show(value)}")
         return tuple(vec)
 
@@ -751,9 +780,8 @@ class _Validator:
         if "omega" not in t:
             self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")
         value = t["omega"]
-        omega = ([_real(w) for w in value]
-                 if isinstance(value, (list, tuple, np.ndarray)) and len(value) == 3 else [None])
-        if None in omega:
+        omega = _vector3(value)
+        if omega is None:
             self.fail("initial.omega", f"must be a list of 3 finite numbers [w1, w2, w3] "
                                        f"(body frame, rad/s), got {_show(value)}")
         return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=None, beta_dot=None,

@@ -458,18 +458,26 @@ def _qmul(p, q) -> np.ndarray:
 
 
 def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -> None:
-    """Write the .npz (and the plot), all or nothing (see :mod:`derive.sim.outputs`); neither may be
-    the scene file the result came from (SceneError naming both)."""
-    from derive.sim.outputs import write_all
+    """Write the arrays (``npz``) and the plot (``png``), all or nothing (see
+    :mod:`derive.sim.outputs`), each in the format its extension names: the arrays as .npz (NumPy)
+    or .csv (``outputs.write_csv``), the plot as .png, .pdf or .svg. Another extension raises
+    SceneError naming ``-o`` or ``--plot`` before anything is written; neither may be the
+    scene file the result came from (SceneError naming both)."""
+    from derive.sim.outputs import PLOT_FORMATS, RESULT_FORMATS, output_format, write_all, write_csv
 
+    data_format = output_format(npz, "-o", RESULT_FORMATS) if npz else None
+    plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
     writers = {}
-    if npz:
+    if data_format == "csv":
+        arrays = res.arrays()
+        writers[npz] = lambda f: write_csv(f, {"t": arrays.pop("t"), **arrays})  # t first
+    elif data_format == "npz":
         writers[npz] = lambda f: np.savez(f, **res.arrays())
-    if png:
+    if plot_format:
         def plot(f):
             from derive.sim.plots import plot_result
 
-            plot_result(res, f)
+            plot_result(res, f, plot_format)
 
         writers[png] = plot
     source = res.scene.source if res.scene is not None else None

@@ -727,18 +727,25 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
 def write(result: SweepResult, parquet: str | None, png: str | None = None,
           measure: str | None = None) -> None:
-    """The Parquet file (one row per point) and the plot, all or nothing; neither may be a file
-    the sweep read (``result.files``: SceneError naming both)."""
-    from derive.sim.outputs import write_all
+    """The table (one row per point: .parquet, or .csv with one header row) and the plot (.png,
+    .pdf or .svg), each in the format its extension names, all or nothing; neither may be a file the sweep read (``result.files``:
+    SceneError naming both)."""
+    from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, output_format, write_all
 
+    table_format = output_format(parquet, "-o", TABLE_FORMATS) if parquet else None
+    plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
     writers = {}
-    if parquet:
+    if table_format == "parquet":
         writers[parquet] = lambda f: result.to_pandas().to_parquet(f, engine="pyarrow", index=False)
+    elif table_format == "csv":
+        # repr: the shortest text that reads back to the same double
+        writers[parquet] = lambda f: result.to_pandas().to_csv(
+            f, index=False, float_format=lambda x: repr(float(x)), na_rep="nan")
     if png:
         def plot(f):
             from derive.sweeps.maps import plot_sweep
 
-            plot_sweep(result, f, measure)
+            plot_sweep(result, f, measure, plot_format)
 
         writers[png] = plot
     write_all(writers, inputs=result.files)
@@ -749,10 +756,12 @@ def cli(args) -> int:
     import sys
     import time
 
-    from derive.sim.outputs import check_paths
+    from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format
 
     # before the work: an output that would replace the sweep file or its scene is known now
     check_paths([args.output, args.plot], inputs=input_files(args.sweep))
+    output_format(args.output, "-o", TABLE_FORMATS)
+    output_format(args.plot, "--plot", PLOT_FORMATS)
     t0 = time.perf_counter()
     res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
                 add_measure=args.measure)

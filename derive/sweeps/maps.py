@@ -63,7 +63,7 @@ def _spin_curves(res, beta):
     return curves
 
 
-def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
+def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -118,7 +118,7 @@ def plot_sweep(res, path_or_file, measure: str | None = None) -> None:
         ax.grid(True, alpha=0.3)
     ax.set_title(f"{title}\n{measure} over {len(z)} points ({int((~res.ok).sum())} failed)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path_or_file, format="png")
+    fig.savefig(path_or_file, format=fmt)
     plt.close(fig)
 
 
