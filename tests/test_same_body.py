@@ -1,0 +1,284 @@
+"""The same body gets the same model, and every init map takes the input it is given (issue 17,
+items 12 and 13; issue 18, item 6).
+
+* Item 13: every shipped model's compiled ``<name>_init`` (the C ABI, called through ctypes on a
+  library built from ``generated/c`` alone) starts from the Euler rates when rates_given = 1:
+  ω̃ and the energy are compared with an independent conversion (ω̃ from Rᵀ Ṙ, R built here
+  from the three elementary rotations), with the Python-side conversion of the scene validator
+  and with the Euler-angle model's outputs.
+
+Internal imports: ``derive.scene.body_omega`` (the Python-side conversion the C one is checked
+against), ``derive.models`` (the derivation's guard against an init map that ignores the rates)
+and, in a slow test, ``derive.catalogue`` (to derive models that are not shipped).
+"""
+from __future__ import annotations
+
+import ctypes
+import json
+import os
+import shlex
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import derive
+
+ROOT = Path(__file__).resolve().parents[1]
+GENERATED = ROOT / "generated"
+EPS = np.finfo(float).eps
+
+#: Every shipped model: the descriptions in generated/models (what `derive generate` writes).
+SHIPPED = sorted(p.stem for p in (GENERATED / "models").glob("*.json"))
+
+ANGLES = (0.3, 0.7, -0.4)     # alpha, beta, gamma (rad): no symmetry, away from the poles
+RATES = (-1.3, 0.8, 5.0)      # alpha_dot, beta_dot, gamma_dot (rad/s)
+#: Parameter values by name; a model reads the ones it has (its derived ones are written by init).
+ASYM = {"I1": 0.8, "I2": 0.6, "I3": 0.3, "M": 1.2, "g": 9.81, "l": 0.15,
+        "cx": 0.05, "cy": -0.02, "cz": 0.15, "c": 0.05}
+#: A symmetric body with its centre of mass on axis 3: every shipped model describes it.
+SYM = {**ASYM, "I2": ASYM["I1"], "cx": 0.0, "cy": 0.0}
+
+
+# ---------------------------------------------------------------------------------------------
+# the C init and output maps, from generated/c alone
+
+
+def _compiler() -> list[str]:
+    """$CC (may carry arguments), default cc: what derive's own builds run."""
+    return shlex.split(os.environ.get("CC", "cc")) or ["cc"]
+
+
+def _compile(c_files: list[Path], include: Path, out: Path) -> ctypes.CDLL:
+    """A shared library of model files, compiled as strictly as the ABI promises."""
+    cmd = _compiler() + ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-fPIC",
+                         "-shared", "-I", str(include), *map(str, c_files), "-o", str(out), "-lm"]
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    return ctypes.CDLL(str(out))
+
+
+class CModel:
+    """One model's ``_init`` and ``_observables`` from a compiled library and its description."""
+
+    def __init__(self, lib: ctypes.CDLL, desc: dict):
+        self.desc = desc
+        self.name = desc["name"]
+        dp = ctypes.POINTER(ctypes.c_double)
+        self._init = getattr(lib, f"{self.name}_init")
+        self._init.argtypes = (dp, dp, dp)
+        self._init.restype = ctypes.c_int
+        self._obs = getattr(lib, f"{self.name}_observables")
+        self._obs.argtypes = (ctypes.c_double, dp, dp, dp)
+        self._obs.restype = ctypes.c_int
+
+    def params(self, values: dict) -> np.ndarray:
+        derived = set(self.desc["derived_params"])
+        return np.array([0.0 if k in derived else values[n]
+                         for k, n in enumerate(self.desc["params"])])
+
+    def init(self, inputs, values: dict):
+        """(y, p, status) of ``<name>_init``."""
+        inputs = np.ascontiguousarray(inputs, dtype=float)
+        assert inputs.shape == (self.desc["nin"],)
+        p = self.params(values)
+        y = np.full(len(self.desc["states"]), np.nan)
+        rc = self._init(_ptr(inputs), _ptr(p), _ptr(y))
+        return y, p, rc
+
+    def outputs(self, y, p) -> dict:
+        """The output map at (y, p) as {name: value or 3-vector}."""
+        out = np.full(len(self.desc["outputs"]), np.nan)
+        assert self._obs(0.0, _ptr(y), _ptr(p), _ptr(out)) == 0
+        flat = dict(zip(self.desc["outputs"], out))
+        # The output file's vectors, flattened with suffixes; a name that is not a complete
+        # vector stays a scalar (euler_free's "L2" is |L|², not L₂).
+        for base, parts in _VECTORS.items():
+            if all(p in flat for p in parts):
+                flat[base] = np.array([flat.pop(p) for p in parts])
+        return flat
+
+
+_VECTORS = {"omega": ("omega1", "omega2", "omega3"), "axis": ("axis_x", "axis_y", "axis_z"),
+            "n": ("n1", "n2", "n3"), "L": ("L1", "L2", "L3")}
+
+
+def _ptr(a: np.ndarray):
+    return a.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+
+
+@pytest.fixture(scope="module")
+def shipped(tmp_path_factory) -> dict[str, CModel]:
+    """Every shipped model's C init and output maps, one library from generated/c."""
+    c = GENERATED / "c"
+    files = [c / f"{name}.c" for name in SHIPPED]
+    lib = _compile(files, c, tmp_path_factory.mktemp("abi") / "models.so")
+    return {name: CModel(lib, json.loads((GENERATED / "models" / f"{name}.json").read_text()))
+            for name in SHIPPED}
+
+
+# ---------------------------------------------------------------------------------------------
+# an independent conversion: R = Rz(α) Ry(β) Rz(γ) and ω̃ from Rᵀ Ṙ
+
+
+def _rz(t):
+    c, s = np.cos(t), np.sin(t)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def _ry(t):
+    c, s = np.cos(t), np.sin(t)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+_KZ = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 0.0]])  # d/dt Rz(t) = Rz(t) [ẑ]ₓ
+_KY = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 0.0], [-1.0, 0.0, 0.0]])  # d/dt Ry(t) = Ry(t) [ŷ]ₓ
+
+
+def rotation(a, b, c) -> np.ndarray:
+    """Body → inertial components, z-y-z."""
+    return _rz(a) @ _ry(b) @ _rz(c)
+
+
+def omega_from_rates(angles, rates) -> np.ndarray:
+    """ω̃ with [ω̃]ₓ = Rᵀ Ṙ, Ṙ by the product rule (no Euler-angle formula typed in)."""
+    (a, b, c), (ad, bd, gd) = angles, rates
+    A, B, C = _rz(a), _ry(b), _rz(c)
+    Rdot = ad * A @ _KZ @ B @ C + bd * A @ B @ _KY @ C + gd * A @ B @ C @ _KZ
+    W = rotation(a, b, c).T @ Rdot
+    return np.array([W[2, 1] - W[1, 2], W[0, 2] - W[2, 0], W[1, 0] - W[0, 1]]) / 2
+
+
+def energy(desc: dict, values: dict, angles, w) -> float:
+    """½ ω̃ᵀ I ω̃ + M g ẑ·(R r_c) with the model's own parameters (I2 = I1 for a symmetric
+    body; the centre of mass (0, 0, l) for axial gravity)."""
+    params = desc["params"]
+    I = np.array([values["I1"], values["I2" if "I2" in params else "I1"], values["I3"]])
+    E = 0.5 * float(np.sum(I * w * w))
+    if "M" in params:
+        com = (np.array([values["cx"], values["cy"], values["cz"]]) if "cx" in params
+               else np.array([0.0, 0.0, values["l"]]))
+        E += values["M"] * values["g"] * float((rotation(*angles) @ com)[2])
+    return E
+
+
+def given_rates(angles=ANGLES, rates=RATES, omega=(np.nan,) * 3) -> np.ndarray:
+    """Init inputs with rates_given = 1; omega NaN by default, so any read of it shows."""
+    return np.array([*angles, *omega, *rates, 1.0])
+
+
+def close(actual, expected, scale: float):
+    """Equal to rounding: a few tens of ulps of the quantity's scale (nothing here is
+    ill-conditioned: the maps are a handful of products of sines and cosines)."""
+    np.testing.assert_allclose(actual, expected, rtol=0, atol=32 * EPS * scale)
+
+
+# ---------------------------------------------------------------------------------------------
+# item 13: the C init map uses the rates
+
+
+def test_every_shipped_model_is_covered():
+    """The list the tests below iterate is what generated/ ships: the contract's models and
+    every formulation the registry has."""
+    descs = [json.loads((GENERATED / "models" / f"{n}.json").read_text()) for n in SHIPPED]
+    assert {"euler_free", "heavy_top"} <= set(SHIPPED)
+    from_registry = {d["formulation"] for d in descs}
+    assert {"euler-angles", "reduced", "quaternion", "euler-poisson"} <= from_registry
+
+
+@pytest.mark.parametrize("name", SHIPPED)
+def test_c_init_map_starts_from_the_given_euler_rates(shipped, name):
+    """rates_given = 1 with omega NaN: the state is finite, its ω̃ is the rates' ω̃ (from Rᵀ Ṙ)
+    and its energy ½ ω̃ᵀ I ω̃ + V (a user's own main() once got ω̃ = 0 from every model but the
+    Euler-angle one)."""
+    check_starts_from_rates(shipped[name], ASYM)
+
+
+def check_starts_from_rates(m: CModel, values: dict):
+    """``m``'s init map with rates_given = 1 (omega NaN) against the independent conversion."""
+    y, p, rc = m.init(given_rates(), values)
+    assert rc == 0 and np.isfinite(y).all() and np.isfinite(p).all()
+    out = m.outputs(y, p)
+    w = omega_from_rates(ANGLES, RATES)
+    scale = float(np.max(np.abs(RATES)))
+    close(out["omega"], w, scale)
+    E = energy(m.desc, values, ANGLES, w)
+    close(out["energy"], E, abs(E))
+    if "n" in out:  # the orientation too: n = Rᵀẑ, axis = R ê₃
+        R = rotation(*ANGLES)
+        close(out["n"], R[2, :], 1.0)
+        close(out["axis"], R[:, 2], 1.0)
+
+
+#: Models derived on demand (not shipped), one per formulation with effects no shipped one has.
+DERIVED = [("quaternion", True, ("gravity",)), ("quaternion", False, ()),
+           ("euler-angles", False, ("gravity_general",)), ("euler-angles", True, ("damping",)),
+           ("euler-poisson", False, ("gravity_general", "damping"))]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("key", DERIVED, ids=lambda k: "-".join([k[0], str(k[1]), *k[2]]))
+def test_c_init_map_of_a_derived_model_starts_from_the_given_euler_rates(key, tmp_path):
+    """The same for models a scene derives into the cache (SymPy, 4-7 s each: slow)."""
+    from derive import catalogue
+
+    desc = catalogue.describe(key)
+    c = Path(desc.folder) / "c"
+    lib = _compile([c / f"{desc.name}.c"], c, tmp_path / "model.so")
+    d = json.loads((Path(desc.folder) / "models" / f"{desc.name}.json").read_text())
+    check_starts_from_rates(CModel(lib, d), ASYM)
+
+
+@pytest.mark.parametrize("name", SHIPPED)
+def test_c_init_map_from_rates_equals_the_python_side_conversion(shipped, name):
+    """The state from the rates equals the state from ω̃ = body_omega(rates), the conversion the
+    scene validator makes: the two forms of one initial condition give one state."""
+    from derive.scene import body_omega
+
+    m = shipped[name]
+    w = body_omega(ANGLES[1], ANGLES[2], *RATES)
+    y1, p1, rc1 = m.init(given_rates(), ASYM)
+    y0, p0, rc0 = m.init(np.array([*ANGLES, *w, np.nan, np.nan, np.nan, 0.0]), ASYM)
+    assert rc1 == 0 and rc0 == 0
+    scale = max(1.0, float(np.max(np.abs(RATES))), float(np.max(np.abs(p1))))
+    close(y1, y0, scale)
+    close(p1, p0, scale)
+
+
+def _euler_angle_reference(desc: dict) -> str:
+    """The shipped Euler-angle model of the same symmetric body: with gravity (any centre of mass
+    on axis 3 is the heavy top; damping adds no energy) or without."""
+    gravity = any(e.startswith("gravity") for e in desc["effects"])
+    return "heavy_top" if gravity else "euler_angles_sym"
+
+
+@pytest.mark.parametrize("name", SHIPPED)
+def test_c_init_map_agrees_with_the_euler_angle_model(shipped, name):
+    """For a symmetric body with its centre of mass on axis 3 (which every shipped model can
+    describe), the outputs at t = 0 from the given rates equal those of the Euler-angle model,
+    whose state is the angles and the rates themselves."""
+    m, ref = shipped[name], shipped[_euler_angle_reference(shipped[name].desc)]
+    y, p, rc = m.init(given_rates(), SYM)
+    yr, pr, rcr = ref.init(given_rates(), SYM)
+    assert rc == 0 and rcr == 0
+    np.testing.assert_array_equal(yr, [*ANGLES, *RATES])  # the reference holds what it is given
+    out, expected = m.outputs(y, p), ref.outputs(yr, pr)
+    shared = set(out) & set(expected) - {"alpha", "beta", "gamma"}
+    assert {"omega", "energy"} <= shared
+    for key in sorted(shared):
+        scale = max(1.0, float(np.max(np.abs(expected[key]))))
+        close(out[key], expected[key], scale)
+
+
+def test_a_model_whose_init_map_ignores_the_rates_is_not_built(monkeypatch):
+    """The guarantee is structural: the derivation refuses an init map that does not read the
+    Euler rates (so a new formulation cannot reintroduce the dropped input)."""
+    from derive import models
+
+    monkeypatch.setattr(models, "_omega_in", lambda: models.INPUTS[3:6])  # ω̃ only: drops rates
+    with pytest.raises(ValueError, match="ignores the Euler rates"):
+        models.build("euler", False)
+    monkeypatch.undo()
+    assert models.build("euler", False).name == "euler_free"
