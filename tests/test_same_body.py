@@ -6,6 +6,9 @@ items 12 and 13; issue 18, item 6).
   ω̃ and the energy are compared with an independent conversion (ω̃ from Rᵀ Ṙ, R built here
   from the three elementary rotations), with the Python-side conversion of the scene validator
   and with the Euler-angle model's outputs.
+* Item 12: spellings of one body (``com = [0, 0, l]`` for ``l``; an effect whose parameters
+  make it vanish, ``[damping] c = 0``, ``g = 0``) give the same formulation, model, nfev and
+  numbers as the plain scene.
 
 Internal imports: ``derive.scene.body_omega`` (the Python-side conversion the C one is checked
 against), ``derive.models`` (the derivation's guard against an init map that ignores the rates)
@@ -282,3 +285,158 @@ def test_a_model_whose_init_map_ignores_the_rates_is_not_built(monkeypatch):
         models.build("euler", False)
     monkeypatch.undo()
     assert models.build("euler", False).name == "euler_free"
+
+
+# ---------------------------------------------------------------------------------------------
+# item 12: one body, one formulation; a zero effect costs nothing
+
+#: The README's heavy top (its scene template: [damping] c = 0.0 included, here left out).
+TOP = {"body": {"I1": 1.8e-4, "I3": 4.0e-5},
+       "gravity": {"M": 0.1, "g": 9.81, "l": 0.04},
+       "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0, "alpha_dot": -3.0, "gamma_dot": 150.0},
+       "simulate": {"t_end": 0.5, "samples": 101}}
+
+
+def spelt(**tables) -> dict:
+    """TOP with tables replaced (None removes one)."""
+    out = {k: v for k, v in TOP.items() if tables.get(k, v) is not None}
+    out.update({k: v for k, v in tables.items() if v is not None})
+    return out
+
+
+def assert_same_run(a, b):
+    """One body, one run: the same formulation, model and nfev, and every output array equal
+    bit for bit (the same kernel from the same numbers)."""
+    assert (a.formulation, a.model, a.effects, a.nfev) == (b.formulation, b.model, b.effects, b.nfev)
+    arrays_a, arrays_b = a.arrays(), b.arrays()
+    assert arrays_a.keys() == arrays_b.keys()
+    for key in arrays_a:
+        np.testing.assert_array_equal(arrays_a[key], arrays_b[key], err_msg=key)
+
+
+@pytest.mark.parametrize("com", [[0, 0, 0.04], [0.0, -0.0, 0.04]])
+def test_a_centre_of_mass_on_axis_3_is_the_same_body_as_l(com):
+    """com = [0, 0, l] is l: the same formulation (the Euler angles, the cheapest here), model,
+    nfev and numbers; the scene is stored and written back as l."""
+    plain = derive.simulate(TOP)
+    other = derive.simulate(spelt(gravity={"M": 0.1, "g": 9.81, "com": com}))
+    assert plain.formulation == "euler-angles" and plain.model == "heavy_top"
+    assert_same_run(other, plain)
+    assert other.scene == plain.scene
+    assert other.scene.to_dict() == plain.scene.to_dict()
+    assert other.scene.to_dict()["gravity"] == {"M": 0.1, "g": 9.81, "l": 0.04}
+
+
+def test_zero_damping_runs_the_undamped_kernel_and_says_so():
+    """The README's template has [damping] c = 0.0: it used to switch the heavy top to
+    Euler–Poisson with its damped kernel (3.2x the rhs evaluations). Now the term is dropped:
+    the undamped heavy top runs, the result names it, and every number is the same."""
+    plain = derive.simulate(TOP)
+    damped0 = derive.simulate(spelt(damping={"c": 0.0}))
+    assert_same_run(damped0, plain)
+    assert damped0.model == "heavy_top" and damped0.effects == ("gravity",)
+    assert damped0.scene.damping.c == 0.0  # what the scene said is still there
+    # ... while any c > 0 keeps its term (and is not the conservative run)
+    damped = derive.simulate(spelt(damping={"c": 1e-7}))
+    assert "damping" in damped.effects and "damping" in damped.model
+    assert damped.energy[-1] < damped.energy[0]
+
+
+def test_zero_damping_lets_the_reduced_top_and_the_splittings_run():
+    """What a zero term used to forbid (a formulation or a method that needs a conservative
+    body) runs, with the numbers of the scene without it."""
+    for overrides in ({"formulation": "reduced"},
+                      {"method": "splitting4", "h": 1e-3, "formulation": "euler-poisson"}):
+        plain = derive.simulate(TOP, **overrides)
+        assert_same_run(derive.simulate(spelt(damping={"c": 0.0}), **overrides), plain)
+
+
+@pytest.mark.parametrize("gravity", [{"M": 0.1, "g": 0.0, "l": 0.04},
+                                     {"M": 0.1, "g": 9.81, "l": 0.0},
+                                     {"M": 0.1, "g": 0.0, "com": [0.01, 0.0, 0.02]}])
+def test_gravity_that_vanishes_is_the_free_body(gravity):
+    """No field, or the centre of mass at the pivot: the same run as a scene without [gravity]."""
+    assert_same_run(derive.simulate(spelt(gravity=gravity)), derive.simulate(spelt(gravity=None)))
+
+
+def test_cli_json_names_the_model_that_ran(tmp_path):
+    """`derive simulate --json` of the README template (c = 0.0) and of the same scene without
+    the table: one formulation, one model, one nfev, and the summary says which kernel ran."""
+    def toml(scene):
+        lines = []
+        for table, values in scene.items():
+            lines.append(f"[{table}]")
+            lines += [f"{k} = {v!r}" for k, v in values.items()]
+        return "\n".join(lines) + "\n"
+
+    summaries = []
+    for name, scene in (("plain", TOP), ("template", spelt(damping={"c": 0.0}))):
+        path = tmp_path / f"{name}.toml"
+        path.write_text(toml(scene))
+        proc = subprocess.run([sys.executable, "-m", "derive", "simulate", str(path), "--json"],
+                              capture_output=True, text=True, timeout=60, cwd=tmp_path,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert proc.returncode == 0, proc.stderr
+        summaries.append(json.loads(proc.stdout))
+    plain, template = summaries
+    for key in ("formulation", "model", "effects", "nfev", "energy_drift"):
+        assert template[key] == plain[key], key
+    assert plain["model"] == "heavy_top" and plain["effects"] == ["gravity"]
+
+
+def test_a_batch_mixing_zero_and_nonzero_damping_runs_one_damped_model():
+    """A batch is one C call, so one model: the effects any scene needs. The damped scene's
+    trajectory is the one it has alone; a batch of zero terms only runs the undamped kernel."""
+    c0, c1 = spelt(damping={"c": 0.0}), spelt(damping={"c": 1e-7})
+    mixed = derive.simulate_batch([c0, c1])
+    assert all(r.effects == ("gravity", "damping") for r in mixed)
+    assert_same_run(mixed[1], derive.simulate(c1))
+    alone = derive.simulate_batch([c0, spelt(damping={"c": 0.0}, initial={**TOP["initial"], "beta": 0.6})])
+    assert_same_run(alone[0], derive.simulate(TOP))
+
+
+def test_a_sweep_of_the_damping_from_zero_keeps_the_term_at_every_point():
+    """A sweep runs one model: with c = 0 at some points and c > 0 at others the damped one (a
+    point that made the term vanish must not drop it for the whole sweep); with c = 0 at every
+    point the undamped one."""
+    spec = {"scene": spelt(damping={"c": 0.0}),
+            "vary": {"damping": {"c": {"values": [0.0, 2e-6]}}},
+            "measures": ["energy_drift"]}
+    sw = derive.sweep(spec, progress=False)
+    assert "damping" in sw.model
+    drift = np.asarray(sw.measures["energy_drift"])
+    assert drift[1] > 1e3 * drift[0]  # the damped point loses energy, the undamped one keeps it
+    none = derive.sweep({**spec, "vary": {"initial": {"beta": {"values": [0.4, 0.5]}}}},
+                        progress=False)
+    assert "damping" not in none.model
+
+
+@pytest.mark.slow
+def test_analyze_of_zero_damping_is_the_analysis_of_the_conservative_top(tmp_path):
+    """`derive analyze --format json` (3-5 s each: slow) of the template with c = 0 is the
+    plain heavy top's, word for word: no "dissipative" case, the integrals offered."""
+    outs = []
+    for name, text in (("plain", "[gravity]\nM = 0.1\ng = 9.81\nl = 0.04\n"),
+                       ("template", "[gravity]\nM = 0.1\ng = 9.81\nl = 0.04\n[damping]\nc = 0.0\n")):
+        path = tmp_path / f"{name}.toml"
+        path.write_text("[body]\nI1 = 1.8e-4\nI3 = 4.0e-5\n" + text
+                        + "[initial]\nalpha = 0.0\nbeta = 0.5\ngamma = 0.0\nalpha_dot = -3.0\n"
+                          "gamma_dot = 150.0\n[simulate]\nt_end = 2.0\n")
+        proc = subprocess.run([sys.executable, "-m", "derive", "analyze", str(path), "--format", "json"],
+                              capture_output=True, text=True, timeout=120, cwd=tmp_path,
+                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        assert proc.returncode == 0, proc.stderr
+        outs.append(json.loads(proc.stdout))
+    assert outs[1] == outs[0]
+    assert outs[0]["case"] == "lagrange" and not outs[0]["dissipative"]
+
+
+def test_a_batch_refuses_a_scene_that_cannot_give_an_acting_effect_its_numbers():
+    """Zero damping and no [damping] table are the same body (one batch, undamped); c > 0 beside
+    a scene without the table is refused (nothing gives that scene's c), naming the scene."""
+    runs = derive.simulate_batch([spelt(damping={"c": 0.0}), TOP])
+    assert [r.model for r in runs] == ["heavy_top", "heavy_top"]
+    with pytest.raises(derive.SceneError, match="a batch needs the same effects"):
+        derive.simulate_batch([TOP, spelt(damping={"c": 1e-7})])
+    with pytest.raises(derive.SceneError, match="a batch needs the same effects"):
+        derive.simulate_batch([spelt(damping={"c": 1e-7}), TOP])
