@@ -413,22 +413,29 @@ def test_a_sweep_of_the_damping_from_zero_keeps_the_term_at_every_point():
 
 @pytest.mark.slow
 def test_analyze_of_zero_damping_is_the_analysis_of_the_conservative_top(tmp_path):
-    """`derive analyze --format json` (3-5 s each: slow) of the template with c = 0 is the
-    plain heavy top's, word for word: no "dissipative" case, the integrals offered."""
-    outs = []
-    for name, text in (("plain", "[gravity]\nM = 0.1\ng = 9.81\nl = 0.04\n"),
-                       ("template", "[gravity]\nM = 0.1\ng = 9.81\nl = 0.04\n[damping]\nc = 0.0\n")):
-        path = tmp_path / f"{name}.toml"
-        path.write_text("[body]\nI1 = 1.8e-4\nI3 = 4.0e-5\n" + text
-                        + "[initial]\nalpha = 0.0\nbeta = 0.5\ngamma = 0.0\nalpha_dot = -3.0\n"
-                          "gamma_dot = 150.0\n[simulate]\nt_end = 2.0\n")
-        proc = subprocess.run([sys.executable, "-m", "derive", "analyze", str(path), "--format", "json"],
-                              capture_output=True, text=True, timeout=120, cwd=tmp_path,
-                              env={**os.environ, "PYTHONPATH": str(ROOT)})
-        assert proc.returncode == 0, proc.stderr
-        outs.append(json.loads(proc.stdout))
-    assert outs[1] == outs[0]
-    assert outs[0]["case"] == "lagrange" and not outs[0]["dissipative"]
+    """`derive analyze` (3-5 s a run: slow) of the template with c = 0 is the plain heavy top's:
+    the same JSON, word for word, and the same document but for the line that reports c = 0
+    (no "the damping torque breaks these conservation laws")."""
+    gravity = "[gravity]\nM = 0.1\ng = 9.81\nl = 0.04\n"
+    rest = ("[initial]\nalpha = 0.0\nbeta = 0.5\ngamma = 0.0\nalpha_dot = -3.0\n"
+            "gamma_dot = 150.0\n[simulate]\nt_end = 2.0\n")
+    outs = {}
+    for name, tables in (("plain", gravity), ("template", gravity + "[damping]\nc = 0.0\n")):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / "scene.toml").write_text("[body]\nI1 = 1.8e-4\nI3 = 4.0e-5\n" + tables + rest)
+        for fmt in ("json", "markdown"):
+            proc = subprocess.run([sys.executable, "-m", "derive", "analyze", "scene.toml",
+                                   "--format", fmt], capture_output=True, text=True, timeout=120,
+                                  cwd=folder, env={**os.environ, "PYTHONPATH": str(ROOT)})
+            assert proc.returncode == 0, proc.stderr
+            outs[name, fmt] = proc.stdout
+    assert json.loads(outs["template", "json"]) == json.loads(outs["plain", "json"])
+    assert json.loads(outs["plain", "json"])["case"] == "lagrange"
+    template = outs["template", "markdown"].splitlines()
+    said = [line for line in template if line.startswith("Damping:")]
+    assert said == ["Damping: torque −c ω̃ with c = 0 N m s (zero: no term, the body is conservative)."]
+    assert [line for line in template if line not in said] == outs["plain", "markdown"].splitlines()
 
 
 def test_a_batch_refuses_a_scene_that_cannot_give_an_acting_effect_its_numbers():
