@@ -123,7 +123,9 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
     ``energy_drift`` = max_t |E(t) − E(0)| / |E(0)| over the output samples (max |E(t) − E(0)|
     when E(0) = 0; then ``energy_drift_relative`` is false). With damping this is the energy
     lost, not an error. ``wall_time`` is the `simulate` call in seconds (scene loading, model,
-    kernel from cache or compiled, solve, outputs computed), not the file writing.
+    kernel from cache or compiled, solve, outputs computed), not the file writing. ``model``
+    and ``effects`` name the kernel that ran and the effects in it (a table whose values make
+    its effect vanish, ``[damping] c = 0``, is not among them).
     """
     import numpy as np
 
@@ -132,7 +134,8 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
     dev = float(np.max(np.abs(e - e0)))
     relative = e0 != 0.0
     s = res.scene.simulate if res.scene is not None else None
-    return {"method": res.method, "formulation": res.formulation, "nfev": int(res.nfev),
+    return {"method": res.method, "formulation": res.formulation, "model": res.model,
+            "effects": list(res.effects), "nfev": int(res.nfev),
             "energy_drift": dev / abs(e0) if relative else dev, "energy_drift_relative": relative,
             "wall_time": wall_time, "samples": int(len(res.t)), "t_end": float(res.t[-1]),
             "rtol": None if s is None else s.rtol, "atol": None if s is None else s.atol,

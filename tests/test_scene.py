@@ -69,7 +69,8 @@ def assert_names(message: str, key: str, source: str = "<dict>"):
 def test_base_scene_loads_with_every_field():
     scene = load_scene(BASE)
     assert scene.title == "test top"
-    assert scene.effects == ("gravity", "damping")
+    assert scene.named_effects == ("gravity", "damping")
+    assert scene.effects == ("gravity",)  # BASE's c = 0: the damping term vanishes
     assert scene.symmetric
     assert scene.source == "<dict>"
     assert scene.simulate.h is None
@@ -92,8 +93,12 @@ def test_t_out_spans_zero_to_t_end_inclusive():
     np.testing.assert_array_equal(t, [0.0, 0.5, 1.0, 1.5, 2.0])
 
 
-def test_damping_with_zero_coefficient_still_counts_as_an_effect():
-    assert "damping" in load_scene(changed(("damping.c", 0))).effects
+def test_damping_with_zero_coefficient_is_named_but_does_not_act():
+    """Issue 17, item 12: a zero term costs nothing (tests/test_same_body.py runs it)."""
+    scene = load_scene(changed(("damping.c", 0)))
+    assert "damping" in scene.named_effects and "damping" not in scene.effects
+    assert scene.damping.c == 0.0  # the table stays readable
+    assert "damping" in load_scene(changed(("damping.c", 1e-9))).effects
 
 
 def test_negative_l_is_a_centre_of_mass_below_the_pivot():
@@ -187,10 +192,6 @@ RULES = [
     ("reduced with an asymmetric body", [("body.I2", 1.2), ("simulate.formulation", "reduced")],
      "simulate.formulation", "'reduced' needs a symmetric body"),
     ("reduced with damping", [("damping.c", 0.1), ("simulate.formulation", "reduced")],
-     "simulate.formulation", "effect 'damping' does not conserve them"),
-    # A damping table with c = 0 still names the effect (a scene pays for what it names): the
-    # reduced formulation cannot take it, and says so up front (it used to end in a ValueError).
-    ("reduced with zero damping", [("damping.c", 0.0), ("simulate.formulation", "reduced")],
      "simulate.formulation", "effect 'damping' does not conserve them"),
     ("euler-angles at the pole", [("initial.beta", 0.0),
                                   ("simulate.formulation", "euler-angles")],

@@ -92,11 +92,12 @@ VALID = [
                                                        "com": (0.01, 0.0, 0.03)},
                                            "gravity_general", ("M", "g", "com")),
                    "damping": table_values("damping", {"c": 0.25}, "damping", ("c",))})),
+    # ... and is l, written back as l (issue 17, item 12: one spelling per body)
     ("com on axis 3 selects axial gravity, l derived",
      edited(gravity={"M": 1.0, "g": 1.0, "com": [0, 0, 2]}), {},
      scene(tables={"gravity": table_values("gravity", {"M": 1.0, "g": 1.0, "l": 2.0,
                                                        "com": (0.0, 0.0, 2.0)},
-                                           "gravity", ("M", "g", "com"))})),
+                                           "gravity", ("M", "g", "l"))})),
     ("every [simulate] key, a fixed-step method with h",
      edited(simulate={"t_end": 1.0, "samples": 11, "method": "rk4", "rtol": 1e-8, "atol": 1e-9,
                       "formulation": "quaternion", "h": 0.01, "max_steps": np.int64(500)}),

@@ -667,7 +667,8 @@ def _section_body(sc, cls):
     else:
         lines.append("No gravity.")
     if sc.damping is not None:
-        lines.append(f"Damping: torque −c ω̃ with c = {sc.damping.c:g} N m s.")
+        lines.append(f"Damping: torque −c ω̃ with c = {sc.damping.c:g} N m s"
+                     + ("." if _damped(sc) else " (zero: no term, the body is conservative)."))
     lines += ["", f"**Case: {cls.case}** — {cls.reason}. (Classified within the relative "
                   f"tolerance `integrable.TOLERANCE` = {integrable.TOLERANCE:g}.)"]
     return "Body, effects and integrable case", lines
@@ -688,6 +689,11 @@ def _section_energies(sc):
     return "Kinetic and potential energy, Lagrangian", lines
 
 
+def _damped(sc) -> bool:
+    """The scene's damping acts (a [damping] table with c = 0 adds no term: Scene.effects)."""
+    return sc.damping is not None and sc.damping.effect in sc.effects
+
+
 def _conservative(sc) -> tuple:
     from derive.symbolic import effects as fx
 
@@ -703,7 +709,7 @@ def _section_equations(sc):
              rf"\dot{{\tilde n}} = {_latex(sp.Matrix(m.rhs[3:6]))} $$"]
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     lines += ["", "Euler–Lagrange in z-y-z angles, 𝕄 q̈ = F"
-              + (" (conservative part; the damping torque adds Q = Bᵀτ̃)" if sc.damping is not None else "")
+              + (" (conservative part; the damping torque adds Q = Bᵀτ̃)" if _damped(sc) else "")
               + ":", "",
               rf"$$ \mathbb{{M}} = {_latex(system.mass_matrix)} $$", "",
               rf"$$ F = {_latex(system.forcing)} $$"]
@@ -719,7 +725,7 @@ def _section_cyclic(sc, cls):
     for q in cyc:
         lines += [rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "
                   rf"{_latex(system.momentum(q))} $$", ""]
-    if sc.damping is not None:
+    if _damped(sc):
         lines.append("The damping torque breaks these conservation laws (p_α decays as "
                      "d(L·n)/dt = −c ω̃·n).")
     if sc.symmetric and _axial(sc) and ANGLES[2] in cyc and ANGLES[0] in cyc:
@@ -729,7 +735,7 @@ def _section_cyclic(sc, cls):
                   rf"V_\text{{eff}} = {_latex(R['Veff'])} $$"]
         if sc.gravity is None:
             lines.append("(no gravity: set M g l = 0).")
-        if sc.damping is not None:
+        if _damped(sc):
             lines.append("(for the conservative part: with damping p_α, p_γ and E′ decay).")
     else:
         lines += ["", "No Routh reduction to one degree of freedom: γ is not cyclic (the body is "

@@ -46,14 +46,17 @@ def pole_mode(name: str) -> int:
     return 0 if not f.singular else 2 if f.needs_routh else 1
 
 
-def plan(scene) -> list[tuple[str, int]]:
+def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
     """The formulations to try, in order, each with the pole check its run must pass: the
     singular ones only with a Routh reduction, up to the first one without a singular set;
-    only formulations the scene's method can run (a splitting method: Euler–Poisson)."""
+    only formulations the scene's method can run (a splitting method: Euler–Poisson).
+    ``effects``: the model's effects when they are not the scene's own (a batch's or a sweep's
+    model has every effect that acts at any of its points)."""
     if scene.simulate.formulation != "auto":
         return [(scene.simulate.formulation, 0)]
+    effects = scene.effects if effects is None else effects
     out = []
-    for name, mode in _structural(scene.symmetric, scene.effects, scene.simulate.method,
+    for name, mode in _structural(scene.symmetric, effects, scene.simulate.method,
                                   fx.VERSION[0]):
         if REGISTRY[name].applicable(scene) is None:  # the scene's numbers (e.g. its start)
             out.append((name, mode))
@@ -89,9 +92,11 @@ def _clear(scene, name: str, method: str) -> bool:
     return rc == 0 and kernel.pole_clear(y, p, pole_mode(name))
 
 
-def candidates(scene) -> list[str]:
-    """The applicable formulations, cheapest first (see the module docstring)."""
-    return [name for name in _by_cost(scene.symmetric, scene.effects, fx.VERSION[0])
+def candidates(scene, effects: tuple | None = None) -> list[str]:
+    """The applicable formulations, cheapest first (see the module docstring); ``effects`` as
+    in :func:`plan`."""
+    effects = scene.effects if effects is None else effects
+    return [name for name in _by_cost(scene.symmetric, effects, fx.VERSION[0])
             if REGISTRY[name].applicable(scene) is None]
 
 
@@ -124,9 +129,10 @@ def model_key(scene, method: str | None = None) -> tuple:
     return (formulation(scene, method), scene.symmetric, scene.effects)
 
 
-def batch_plan(scenes) -> list[tuple[str, int]]:
-    """The plan for a batch that shares one model: the first scene's plan, kept to the
-    formulations every scene accepts (a singular one runs with its pole check for every
-    trajectory in C; one refusal sends the whole batch to the next)."""
-    return [(name, mode) for name, mode in plan(scenes[0])
+def batch_plan(scenes, effects: tuple | None = None) -> list[tuple[str, int]]:
+    """The plan for a batch that shares one model (with ``effects``, default the first
+    scene's): the first scene's plan, kept to the formulations every scene accepts (a singular
+    one runs with its pole check for every trajectory in C; one refusal sends the whole batch
+    to the next)."""
+    return [(name, mode) for name, mode in plan(scenes[0], effects)
             if all(REGISTRY[name].applicable(sc) is None for sc in scenes)]

@@ -21,9 +21,13 @@ Decisions where the contract is silent (documented here once):
 * ``[body]``: I1 and I3 are required, I2 defaults to I1.
 * Effect tables (``[gravity]``, ``[damping]``, …) are declared by their effects
   (:mod:`derive.symbolic.effects`): keys, units, checks, defaults and keys of which exactly one is given
-  (gravity's ``l`` or ``com``). A table present switches its effect on, even with zero
-  coefficients (a scene pays for what it names). ``l`` may be negative: the centre of mass then
-  sits *below* the pivot when body axis 3 points up (a hanging, pendulum-like body).
+  (gravity's ``l`` or ``com``). A table present switches its effect on unless its values make
+  the effect vanish (``[damping] c = 0``, gravity with ``g = 0`` or the centre of mass at the
+  pivot): then the scene runs the model without it (``Scene.effects``; ``named_effects`` keeps
+  it), so a zero term costs nothing and one body gets one formulation. A centre of mass on axis
+  3 is ``l`` however it was spelt (``com = [0, 0, l]`` is stored, and written back, as ``l``).
+  ``l`` may be negative: the centre of mass then sits *below* the pivot when body axis 3 points
+  up (a hanging, pendulum-like body).
 * ``[initial]``: alpha, beta, gamma are required (any finite real). Give the Euler-angle rates or
   ``omega``. If at least one rate is given, missing rates default to 0.0 (``beta_dot`` is usually
   0 at a turning point, so scenes may omit it). When ``omega`` is given the rates are kept as
@@ -146,6 +150,18 @@ def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
     if names is None:
         names = order[chosen] = tuple(name for name in effects.REGISTRY if name in chosen)
     return names
+
+
+def _vanishes(values: "TableValues") -> bool:
+    """True when a table's values make its effect vanish (the effects contract, item 7)."""
+    effect = effects.REGISTRY[values.effect]
+    return effect.vanishes(effect.values(values))
+
+
+def _acting(tables: dict) -> tuple[str, ...]:
+    """The effects of ``tables`` that act on the body (vanishing ones left out), in registry
+    order."""
+    return _in_registry_order(tuple(t.effect for t in tables.values() if not _vanishes(t)))
 
 
 _TOP_KEYS = ("title",)
@@ -275,14 +291,21 @@ class Scene:
 
     @property
     def effects(self) -> tuple[str, ...]:
-        """The registry effects the scene's tables select, in registry order, e.g.
-        ("gravity", "damping") or ("gravity_general",)."""
+        """The registry effects acting on the body, in registry order, e.g.
+        ("gravity", "damping") or ("gravity_general",): the ones the scene's tables select,
+        less those whose values make them vanish (``[damping] c = 0``, ``g = 0``; the effects
+        contract, item 7). They fix the model: a term that is zero costs nothing."""
         cached = self.__dict__.get("_effects")
         if cached is not None and cached[0] == effects.VERSION[0]:
             return cached[1]
-        names = _in_registry_order(tuple(t.effect for t in self.tables.values()))
+        names = _acting(self.tables)
         object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
         return names
+
+    @property
+    def named_effects(self) -> tuple[str, ...]:
+        """Every effect the scene's tables select, acting or not, in registry order."""
+        return _in_registry_order(tuple(t.effect for t in self.tables.values()))
 
     def param_values(self) -> dict[str, float]:
         """Every model parameter the scene fixes: the moments and each effect's parameters."""
@@ -679,13 +702,11 @@ class _Validator:
         if "body" not in data:
             self.fail("body", "missing required table")
         body = self.body(self.table(data["body"], "body", key_sets["body"]))
-        tables, chosen = {}, []
+        tables = {}
         for name, table, readers in view.effect_tables:
             if name in data:
-                values = self.effect_table(self.table(data[name], name, key_sets[name]), table,
-                                           readers)
-                tables[name] = values
-                chosen.append(values.effect)
+                tables[name] = self.effect_table(self.table(data[name], name, key_sets[name]),
+                                                 table, readers)
         if "initial" not in data:
             self.fail("initial", "missing required table")
         initial = self.initial(self.table(data["initial"], "initial", key_sets["initial"]))
@@ -707,7 +728,7 @@ class _Validator:
         # Scene.effects is known already: its memo is set (what the property would compute).
         scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
                      simulate=simulate, source=self.source,
-                     _effects=(effects.VERSION[0], _in_registry_order(tuple(chosen))))
+                     _effects=(effects.VERSION[0], _acting(tables)))
         self.formulation_fits(scene)
         return scene
 
@@ -746,7 +767,13 @@ class _Validator:
                 values[name] = self.number(t, table.name, name, check, must, default)
         values = table.complete(values)
         out = TableValues(table.name, values, effects.for_table(table.name, values).name)
-        out.__dict__["_given"] = set(t)
+        given = set(t)
+        for group in table.one_of:
+            # One spelling per meaning: of a one-of group the first key the completed values
+            # fill is the one the scene keeps (gravity's com = [0, 0, l] is written back as l).
+            given.difference_update(group)
+            given.add(next((k for k in group if values.get(k) is not None), group[0]))
+        out.__dict__["_given"] = given
         return out
 
     def vector3(self, t, table: str, key: effects.Key):

@@ -26,6 +26,7 @@ import numpy as np
 
 from derive.sim import auto
 from derive.runtime import catalogue
+from derive.symbolic import effects as fx
 from derive.errors import IntegrationError, SceneError
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
@@ -87,6 +88,9 @@ class Result:
     formulation: str
     nfev: int
     model: str = ""
+    #: The effects in the model that ran (registry names): a table whose values make its effect
+    #: vanish (``[damping] c = 0``) is absent here, and ``model`` names the kernel without it.
+    effects: tuple = ()
     integrals: dict = field(default_factory=dict)
     state: np.ndarray | None = field(default=None, repr=False)
     scene: Scene | None = field(default=None, repr=False)
@@ -147,7 +151,7 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Re
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
-                 model=desc.name, state=y, scene=scene, **views)
+                 model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
     res.integrals = _integrals(scene, res, p)
     for name, values in res.integrals.items():
         if not np.isfinite(values).all():
@@ -252,23 +256,32 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     parameters) with one call into C: init, integration and outputs of every trajectory run in
     the compiled loop.
 
-    All scenes must name the same effects, body symmetry, output times, method and
+    All scenes must have the same effects, body symmetry, output times, method and
     tolerances. With formulation "auto", the scenes share one formulation: the common choice
-    if they agree, else one without a singular set (safe for every one of them).
+    if they agree, else one without a singular set (safe for every one of them). The batch
+    runs one model, with every effect that acts in any of its scenes; a scene whose table makes
+    that effect vanish (``[damping] c = 0`` beside c > 0) runs the term with its zero
+    coefficient, and a scene without the table cannot join such a batch (nothing gives c).
     """
     scs = [load_scene(s, **overrides) for s in scenes]
     if not scs:
         return []
     first = scs[0]
 
+    # One model for the batch: the effects that act in any scene (registry order), each named
+    # by every scene so that each gives its parameters.
+    effects = first.effects
+    if any(sc.effects != effects for sc in scs):
+        effects = tuple(e.name for e in fx.lookup(set().union(*(sc.effects for sc in scs))))
+
     def shared(sc):
         s = sc.simulate
-        return (sc.symmetric, sc.effects, s.samples, s.t_end, choose_method(sc), s.rtol, s.atol,
-                s.h, s.max_steps, s.formulation)
+        return (sc.symmetric, set(effects) <= set(sc.named_effects), s.samples, s.t_end,
+                choose_method(sc), s.rtol, s.atol, s.h, s.max_steps, s.formulation)
 
     ref = shared(first)
     for sc in scs[1:]:
-        if shared(sc) != ref:
+        if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
             raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
                              f"times, method, tolerances and formulation as {first.source}")
     method = choose_method(first)
@@ -281,8 +294,8 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
             _check_budget(sc, method, h)
     inputs = np.array([inputs_of(sc) for sc in scs])
     t = first.t_out
-    for formulation, pole_check in auto.batch_plan(scs):
-        desc = catalogue.describe((formulation, first.symmetric, first.effects))
+    for formulation, pole_check in auto.batch_plan(scs, effects):
+        desc = catalogue.describe((formulation, first.symmetric, effects))
         kernel = ModelKernel.load(desc, method)
         if h is not None:
             args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, h, first.simulate.max_steps)

@@ -414,11 +414,42 @@ def _build(spec: Spec) -> None:
                                             f"inequality {a} + {b} >= {c}")
     symmetric = bool(np.all(I1 == I2))
 
-    # the representative scene: a valid point, asymmetric if any point is
+    # parameters: the moments and each effect's values (per distinct row of its varied keys),
+    # and where each effect acts (an effect whose values make it vanish is not in the model
+    # unless it acts at some point: a sweep of c from 0 runs the damped model at every point)
+    values = {"I1": I1, "I2": I2, "I3": I3}
+    acts = {}
+    for tname, tv in base.tables.items():
+        varied = [k for k in spec.keys if k.startswith(tname + ".")]
+        effect = effects.REGISTRY[tv.effect]
+        table = effects.TABLES[tname]
+        if not varied:
+            vals = effect.values(tv)
+            values.update({k: np.full(n, float(v)) for k, v in vals.items()})
+            acts[tv.effect] = np.full(n, not effect.vanishes(vals))
+            continue
+        rows = np.stack([cols[k] for k in varied], axis=1)
+        uniq, inverse = np.unique(rows, axis=0, return_inverse=True)
+        per = []
+        for row in uniq:
+            given = {k: tv[k] for k in tv.given()}
+            given.update({k.split(".", 1)[1]: float(v) for k, v in zip(varied, row)})
+            full = {key.name: given.get(key.name, None if key.default is effects.REQUIRED else key.default)
+                    for key in table.keys}
+            per.append(effect.values(table.complete(full)))
+        for name in per[0]:
+            values[name] = np.array([p[name] for p in per], dtype=float)[np.ravel(inverse)]
+        acts[tv.effect] = np.array([not effect.vanishes(p) for p in per])[np.ravel(inverse)]
+
+    # the representative scene: a valid point, asymmetric if any point is, and where it can be
+    # one at which every effect of the model acts
     valid = np.setdiff1d(np.arange(n), np.fromiter(spec.invalid, int, len(spec.invalid)))
     if valid.size == 0:
         _fail(src, "body", "every point violates the triangle inequality of the moments")
-    pick = int(valid[0]) if symmetric else int(valid[np.flatnonzero(I1[valid] != I2[valid])[0]])
+    needed = tuple(e.name for e in effects.lookup([e for e, a in acts.items() if a[valid].any()]))
+    fits = valid if symmetric else valid[I1[valid] != I2[valid]]
+    full = fits[np.all([acts[e][fits] for e in needed], axis=0)] if needed else fits
+    pick = int(full[0] if full.size else fits[0])
     data = copy.deepcopy(spec.raw)
     for key in spec.keys:
         _set(data, key, float(cols[key][pick]))
@@ -435,11 +466,11 @@ def _build(spec: Spec) -> None:
                                             f"method (dop853), not {method}")
     form = rep.simulate.formulation
     if form == "auto":
-        form = next(f for f in auto.candidates(rep) if not FORMS[f].singular)
+        form = next(f for f in auto.candidates(rep, needed) if not FORMS[f].singular)
     elif FORMS[form].singular:
         _fail(src, "scene.simulate.formulation", f"{form} is singular at sin(beta) = 0; a sweep "
                                                  f"runs a formulation without a singular set (or auto)")
-    spec.key, spec.method = (form, symmetric, rep.effects), method
+    spec.key, spec.method = (form, symmetric, needed), method
     desc = catalogue.describe(spec.key)
 
     # inputs
@@ -466,27 +497,6 @@ def _build(spec: Spec) -> None:
             if f"initial.omega.{i}" in cols:
                 inputs[:, 3 + i] = cols[f"initial.omega.{i}"]
 
-    # parameters: the moments and each effect's values (per distinct row of its varied keys)
-    values = {"I1": I1, "I2": I2, "I3": I3}
-    for tname, tv in base.tables.items():
-        varied = [k for k in spec.keys if k.startswith(tname + ".")]
-        effect = effects.REGISTRY[tv.effect]
-        table = effects.TABLES[tname]
-        if not varied:
-            vals = effect.values(tv)
-            values.update({k: np.full(n, float(v)) for k, v in vals.items()})
-            continue
-        rows = np.stack([cols[k] for k in varied], axis=1)
-        uniq, inverse = np.unique(rows, axis=0, return_inverse=True)
-        per = []
-        for row in uniq:
-            given = {k: tv[k] for k in tv.given()}
-            given.update({k.split(".", 1)[1]: float(v) for k, v in zip(varied, row)})
-            full = {key.name: given.get(key.name, None if key.default is effects.REQUIRED else key.default)
-                    for key in table.keys}
-            per.append(effect.values(table.complete(full)))
-        for name in per[0]:
-            values[name] = np.array([p[name] for p in per], dtype=float)[np.ravel(inverse)]
     derived = set(desc.derived_params)
     ps = np.zeros((n, len(desc.params)))
     for k, name in enumerate(desc.params):

@@ -21,6 +21,11 @@ Numbered contract of an entry (what a new effect provides, and nothing else need
    vertical intact (V depends on the tilt alone), so p_α and p_γ stay conserved — what the
    reduced formulation needs. ``conservative``: it has a potential and no torque.
 6. ``natural_rate(values, body)``: a rate (1/s) the effect sets, for default fixed steps.
+7. ``vanishes(params) -> bool``: True when these parameter values (what ``values`` returns)
+   make the potential and the torque identically zero (damping with c = 0, gravity with g = 0
+   or the centre of mass at the pivot). Such an effect is not part of the scene's model: a
+   scene pays nothing for a term that is zero, and the same body gets the same formulation
+   however it is spelt (``Scene.effects`` leaves it out; its table's values stay readable).
 
 Nothing here imports SymPy at module level: scene validation uses the tables on the warm path,
 and only deriving a model calls ``potential``/``torque``.
@@ -86,6 +91,7 @@ class Effect:
     torque: Callable | None = None
     axisymmetric: bool = False
     natural_rate: Callable[[dict, Any], float] = lambda values, body: 0.0
+    vanishes: Callable[[dict], bool] = lambda params: False
 
     @property
     def conservative(self) -> bool:
@@ -125,8 +131,17 @@ def _axial(values) -> bool:
 
 def _complete_gravity(values, com) -> dict:
     """The gravity table's values with ``com`` always set and ``l`` = com[2] when the centre of
-    mass is on axis 3, else None."""
-    return {**values, "com": com, "l": com[2] if _on_axis(com) else None}
+    mass is on axis 3, else None. A centre of mass on axis 3 is ``l`` whichever key gave it:
+    com is then (0.0, 0.0, l) exactly (a −0.0 spelt in the file does not survive), and the
+    scene's canonical spelling is ``l`` (the first key of the one-of group the values fill)."""
+    if _on_axis(com):
+        return {**values, "com": (0.0, 0.0, com[2]), "l": com[2]}
+    return {**values, "com": com, "l": None}
+
+
+def _no_field(params) -> bool:
+    """Gravity vanishes without a field or with the centre of mass at the pivot (M > 0)."""
+    return params["g"] == 0.0 or all(params.get(k, 0.0) == 0.0 for k in ("l", "cx", "cy", "cz"))
 
 
 def _gravity_potential(com_names):
@@ -173,8 +188,8 @@ GRAVITY_TABLE = Table(
 
 DAMPING_TABLE = Table(
     "damping",
-    "viscous torque −c ω̃ about the fixed point (c = 0 still compiles the term: a scene pays "
-    "for what it names)",
+    "viscous torque −c ω̃ about the fixed point (c = 0: no term, the undamped model runs; a "
+    "scene pays nothing for a term that is zero)",
     keys=(Key("c", "N m s", "viscous coefficient", check=_nonnegative,
               must="a non-negative finite number (N m s)"),),
 )
@@ -195,6 +210,7 @@ REGISTRY: dict[str, Effect] = {e.name: e for e in (
         potential=_gravity_potential((0, 0, "l")),
         axisymmetric=True,
         natural_rate=_gravity_rate,
+        vanishes=_no_field,
     ),
     Effect(
         "gravity_general", "gravity",
@@ -206,6 +222,7 @@ REGISTRY: dict[str, Effect] = {e.name: e for e in (
         claims=lambda v: not _axial(v),
         potential=_gravity_potential(("cx", "cy", "cz")),
         natural_rate=_gravity_rate,
+        vanishes=_no_field,
     ),
     Effect(
         "damping", "damping", "viscous torque −c ω about the pivot",
@@ -213,6 +230,7 @@ REGISTRY: dict[str, Effect] = {e.name: e for e in (
         values=lambda v: {"c": v["c"]},
         torque=_viscous,
         natural_rate=lambda v, body: v["c"] / min(body.I1, body.I2, body.I3),
+        vanishes=lambda params: params["c"] == 0.0,
     ),
 )}
 

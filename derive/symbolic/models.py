@@ -23,8 +23,10 @@ core (`rotations`, `lagrangian`, `stability`) and the effects it is given (`effe
 Besides the right-hand side every model carries
 
 * ``init``: y (and the parameters the formulation derives, e.g. the reduced top's p_α, p_γ) from
-  the scene's inputs ``INPUTS`` = (α, β, γ, ω̃₁, ω̃₂, ω̃₃, α̇, β̇, γ̇, rates_given): rates are used
-  where the scene gave them (rates_given > 0), else derived from ω̃;
+  the scene's inputs ``INPUTS`` = (α, β, γ, ω̃₁, ω̃₂, ω̃₃, α̇, β̇, γ̇, rates_given): where the
+  scene gave the rates (rates_given > 0) every model starts from them (ω̃ converted from them,
+  `_omega_in`; ``build`` refuses an init map that does not read them), else from ω̃ (the rates
+  derived from it where the formulation needs them);
 * ``outputs``: the output file's arrays from y: α, β, γ (z-y-z; the C driver maps them to
   canonical ranges), ω̃, the axis R ê₃, energy T + V, p_α = ẑ·(R I ω̃) = L·n (= ∂L/∂α̇),
   p_γ = I₃ ω̃₃ (= ∂L/∂γ̇), n = Rᵀẑ and L = I ω̃.
@@ -138,6 +140,25 @@ def _given(value, otherwise):
     return sp.Piecewise((value, _GIVEN > 0), (otherwise, True))
 
 
+def _omega_in() -> tuple:
+    """ω̃ from the inputs: the Euler rates converted where the scene gave them (rates_given > 0),
+    else the given ω̃. The conversion is the derivation's own ω̃ = B(q) q̇ (`rotations.ZYZ`,
+    the notes' sum, checked against Rᵀ Ṙ): ω̃₁ = −α̇ sin β cos γ + β̇ sin γ,
+    ω̃₂ = α̇ sin β sin γ + β̇ cos γ, ω̃₃ = α̇ cos β + γ̇. Every formulation whose state holds ω̃
+    (or momenta made from it) starts from this, so no init map drops the rates it is given."""
+    at_inputs = dict(zip(ANGLES + RATES, (_A, _B, _G, _AD, _BD, _GD)))
+    from_rates = ZYZ.omega_body_sum().subs(at_inputs, simultaneous=True)
+    return tuple(_given(wr, w) for wr, w in zip(from_rates, (_W1, _W2, _W3)))
+
+
+def _uses_given_rates(model) -> bool:
+    """True when the model's init map reads every Euler rate input (each appears in y or in
+    the derived parameters): the check `build` makes so that no formulation can ignore them."""
+    exprs = [sp.sympify(e) for e in model.init] + [sp.sympify(e) for _, e in model.init_params]
+    used = set().union(*(e.free_symbols for e in exprs)) if exprs else set()
+    return {_AD, _BD, _GD} <= used
+
+
 def _rates_from_omega():
     """(α̇, β̇, γ̇) from the inputs: given, or α̇ = (−ω̃₁ cos γ + ω̃₂ sin γ)/sin β,
     β̇ = ω̃₁ sin γ + ω̃₂ cos γ, γ̇ = ω̃₃ − α̇ cos β (singular at sin β = 0)."""
@@ -154,7 +175,7 @@ def euler_free(symmetric: bool = False) -> Model:
                "L2": sum((m * wi) ** 2 for m, wi in zip(moments, w)), "omega": tuple(w)}
     return Model("euler_free", "euler", "torque-free Euler equations in principal body axes",
                  tuple(w), _moment_params(symmetric), tuple(euler_rhs(moments, w)), outputs,
-                 init=(_W1, _W2, _W3))
+                 init=_omega_in())
 
 
 def euler_angles(symmetric: bool, effects=()) -> Model:
@@ -262,9 +283,13 @@ def reduced(effects=()) -> Model:
     params = (I1, I3) + sym.params() + (p_alpha, p_gamma)
     # p_γ = I₃ω̃₃; p_α = p_γ + (p_α − p_γ), the difference formed without cancellation:
     # ẑ·(R I ω̃) − I₃ω̃₃ = −sinβ cosγ I₁ω̃₁ + sinβ sinγ I₁ω̃₂ − 2 sin²(β/2) p_γ.
-    diff = (-sp.sin(_B) * sp.cos(_G) * I1 * _W1 + sp.sin(_B) * sp.sin(_G) * I1 * _W2
-            - 2 * sp.sin(_B / 2) ** 2 * p_gamma)
-    init_params = ((params.index(p_gamma), I3 * _W3), (params.index(p_alpha), p_gamma + diff))
+    # With the Euler rates given the same difference is I₁ α̇ sin²β − 2 sin²(β/2) p_γ (the β̇
+    # terms of ω̃₁, ω̃₂ cancel exactly, so they are left out rather than cancelled in rounding).
+    diff = _given(I1 * _AD * sp.sin(_B) ** 2,
+                  -sp.sin(_B) * sp.cos(_G) * I1 * _W1 + sp.sin(_B) * sp.sin(_G) * I1 * _W2) \
+        - 2 * sp.sin(_B / 2) ** 2 * p_gamma
+    init_params = ((params.index(p_gamma), I3 * _omega_in()[2]),
+                   (params.index(p_alpha), p_gamma + diff))
     E_prime = sp.Rational(1, 2) * I1 * beta_d**2 + Veff
     checks = routh_checks(effects, sym, E_prime, p_alpha, p_gamma, red.effective_potential)
     return Model(model_name("reduced", True, [e.name for e in effects]), "reduced",
@@ -353,7 +378,7 @@ def quaternion(symmetric: bool, effects=()) -> Model:
                  "unit quaternion (scalar first, body to inertial) + body angular velocity, Newton-Euler",
                  tuple(q) + tuple(w), _moment_params(symmetric) + sym.params(),
                  tuple(qdot) + tuple(wdot), _outputs(R, w, moments, effects, sym, angles),
-                 init=quaternion_of_angles(_A, _B, _G) + (_W1, _W2, _W3),
+                 init=quaternion_of_angles(_A, _B, _G) + _omega_in(),
                  domain=(n2,), domain_note="quaternion of zero norm",
                  effects=tuple(e.name for e in effects), symmetric=symmetric)
 
@@ -376,7 +401,7 @@ def euler_poisson(symmetric: bool, effects=()) -> Model:
     wdot = euler_rhs(moments, w) + sp.Matrix([tau[i] / moments[i] for i in range(3)])
     rhs = tuple(wdot) + tuple(n.cross(w)) + tuple(e.cross(w))
     R0 = ZYZ.matrix(_A, _B, _G)
-    init = (_W1, _W2, _W3) + tuple(R0[2, :]) + tuple(R0[0, :])
+    init = _omega_in() + tuple(R0[2, :]) + tuple(R0[0, :])
     return Model(model_name("euler-poisson", symmetric, [e_.name for e_ in effects]), "euler-poisson",
                  "Euler-Poisson: body angular velocity omega, the vertical n and the inertial x axis e "
                  "in body axes (L = I omega about the pivot)",
@@ -399,12 +424,23 @@ def build(formulation: str, symmetric: bool, effect_names=()) -> Model:
     if formulation == "euler":
         if effs:
             raise ValueError("the 'euler' formulation is torque-free")
-        return euler_free(symmetric)
-    if formulation == "reduced" and not symmetric:
+        model = euler_free(symmetric)
+    elif formulation == "reduced" and not symmetric:
         raise ValueError("the reduced formulation needs a symmetric body (I1 = I2)")
-    if formulation not in BUILDERS:
+    elif formulation not in BUILDERS:
         raise ValueError(f"unknown formulation {formulation!r}")
-    return BUILDERS[formulation](symmetric, effs)
+    else:
+        model = BUILDERS[formulation](symmetric, effs)
+    _check_init(model)
+    return model
+
+
+def _check_init(model: Model) -> None:
+    """Refuse a model whose init map would drop the Euler rates a scene (or a C caller) gives
+    with rates_given = 1: the generated ``<name>_init`` must start from them."""
+    if not _uses_given_rates(model):
+        raise ValueError(f"the init map of {model.name} ignores the Euler rates given with "
+                         f"rates_given = 1; build ω̃ with models._omega_in()")
 
 
 #: The models committed to generated/ (the contract names euler_free and heavy_top), by name:

@@ -82,14 +82,24 @@ int euler_free_observables(double t, const double *y, const double *p, double *o
 
 int euler_free_init(const double *in, double *p, double *y)
 {
+    const double in_beta = in[1];
+    const double in_gamma = in[2];
     const double in_omega1 = in[3];
     const double in_omega2 = in[4];
     const double in_omega3 = in[5];
+    const double in_alpha_dot = in[6];
+    const double in_beta_dot = in[7];
+    const double in_gamma_dot = in[8];
+    const double in_rates_given = in[9];
     (void)p;
+    const double x0 = sin(in_gamma);
+    const double x1 = cos(in_gamma);
+    const double x2 = in_alpha_dot*sin(in_beta);
+    const double x3 = in_rates_given > 0;
     int i;
-    y[0] = in_omega1;
-    y[1] = in_omega2;
-    y[2] = in_omega3;
+    y[0] = ((x3) ? (in_beta_dot*x0 - x1*x2) : (in_omega1));
+    y[1] = ((x3) ? (in_beta_dot*x1 + x0*x2) : (in_omega2));
+    y[2] = ((x3) ? (in_alpha_dot*cos(in_beta) + in_gamma_dot) : (in_omega3));
     for (i = 0; i < euler_free_NY; ++i)
         if (!isfinite(y[i]))
             return 1;

@@ -39,7 +39,12 @@ int euler_free_observables(double t, const double *y, const double *p, double *o
 
 /* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
  * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
- * given: 1, else 0 and the rates are derived from omega).  * Returns 0, or 1 if a value is not finite. */
+ * given). rates_given = 1: the state is built from the angles and the rates, omega is not read
+ * (the body angular velocity is converted from the rates, omega1 = -alpha_dot sin(beta)
+ * cos(gamma) + beta_dot sin(gamma), omega2 = alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma),
+ * omega3 = alpha_dot cos(beta) + gamma_dot); rates_given = 0: from the angles and omega (the
+ * rates are not read, and derived from omega where the state needs them).  * Returns 0, or 1 if a value is not finite (e.g. rates derived from omega at sin(beta) = 0).
+ * Every model's init map honours both forms; none drops its input. */
 int euler_free_init(const double *in, double *p, double *y);
 
 #endif /* EULER_FREE_H */

@@ -150,21 +150,24 @@ int reduced_sym_init(const double *in, double *p, double *y)
     const double in_omega1 = in[3];
     const double in_omega2 = in[4];
     const double in_omega3 = in[5];
+    const double in_alpha_dot = in[6];
     const double in_beta_dot = in[7];
+    const double in_gamma_dot = in[8];
     const double in_rates_given = in[9];
     const double I1 = p[0];
     const double I3 = p[1];
-    const double x0 = sin(in_gamma);
-    const double x1 = cos(in_gamma);
-    const double x2 = I3*in_omega3;
-    const double x3 = sin(in_beta);
+    const double x0 = in_rates_given > 0;
+    const double x1 = sin(in_gamma);
+    const double x2 = cos(in_gamma);
+    const double x3 = I3*((x0) ? (in_alpha_dot*cos(in_beta) + in_gamma_dot) : (in_omega3));
+    const double x4 = sin(in_beta);
     int i;
     y[0] = in_alpha;
     y[1] = in_beta;
     y[2] = in_gamma;
-    y[3] = ((in_rates_given > 0) ? (in_beta_dot) : (in_omega1*x0 + in_omega2*x1));
-    p[3] = x2;
-    p[2] = -I1*in_omega1*x1*x3 + I1*in_omega2*x0*x3 + I3*in_omega3 - 2*x2*(sin((1.0/2.0)*in_beta)*sin((1.0/2.0)*in_beta));
+    y[3] = ((x0) ? (in_beta_dot) : (in_omega1*x1 + in_omega2*x2));
+    p[3] = x3;
+    p[2] = -2*x3*(sin((1.0/2.0)*in_beta)*sin((1.0/2.0)*in_beta)) + x3 + ((x0) ? (I1*in_alpha_dot*(x4*x4)) : (-I1*in_omega1*x2*x4 + I1*in_omega2*x1*x4));
     for (i = 0; i < reduced_sym_NY; ++i)
         if (!isfinite(y[i]))
             return 1;

@@ -265,6 +265,10 @@ int rigid_body_init(const double *in, double *p, double *y)
     const double in_omega1 = in[3];
     const double in_omega2 = in[4];
     const double in_omega3 = in[5];
+    const double in_alpha_dot = in[6];
+    const double in_beta_dot = in[7];
+    const double in_gamma_dot = in[8];
+    const double in_rates_given = in[9];
     (void)p;
     const double x0 = (1.0/2.0)*in_beta;
     const double x1 = cos(x0);
@@ -277,14 +281,18 @@ int rigid_body_init(const double *in, double *p, double *y)
     const double x8 = cos(x4);
     const double x9 = sin(x0);
     const double x10 = x3*x8;
+    const double x11 = sin(in_gamma);
+    const double x12 = cos(in_gamma);
+    const double x13 = in_alpha_dot*sin(in_beta);
+    const double x14 = in_rates_given > 0;
     int i;
     y[0] = -x1*x6 + x1*x7*x8;
     y[1] = -x10*x9 + x5*x7*x9;
     y[2] = x6*x9 + x7*x8*x9;
     y[3] = x1*x10 + x1*x5*x7;
-    y[4] = in_omega1;
-    y[5] = in_omega2;
-    y[6] = in_omega3;
+    y[4] = ((x14) ? (in_beta_dot*x11 - x12*x13) : (in_omega1));
+    y[5] = ((x14) ? (in_beta_dot*x12 + x11*x13) : (in_omega2));
+    y[6] = ((x14) ? (in_alpha_dot*cos(in_beta) + in_gamma_dot) : (in_omega3));
     for (i = 0; i < rigid_body_NY; ++i)
         if (!isfinite(y[i]))
             return 1;
