@@ -14,7 +14,34 @@ __all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simul
 
 
 def simulate(scene, **overrides):
-    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.simulation`."""
+    """Simulate a scene (a TOML path or a dict shaped like one). See `derive.simulation`.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike or dict
+        A scene file, or a dict shaped like one (generated/scene-format.md).
+    **overrides
+        Values of the scene's ``[simulate]`` table (``method``, ``rtol``, ``atol``, ...).
+
+    Returns
+    -------
+    Result
+        The arrays of the output file as attributes (generated/outputs.md): ``t``, ``alpha``,
+        ``beta``, ``gamma``, ``omega``, ``axis``, ``energy``, ``p_alpha``, ``p_gamma``, ``n``,
+        ``L``, and ``method``, ``formulation``, ``nfev``. ``integrals`` maps the name of the
+        extra first integral of the scene's integrable case, if any, to its array (also the
+        attribute and npz key ``integral_<name>``), the same name ``derive analyze`` gives:
+        ``L_squared`` (|L|², free body), ``L_1``/``L_2``/``L_3`` (the component of L along the
+        symmetry axis of a Lagrange top), ``L_dot_rc`` (spherical body), ``kovalevskaya``,
+        ``goryachev_chaplygin`` (only for a state on L·n = 0).
+
+    Raises
+    ------
+    SceneError
+        Bad input (the one-line message the command line prints, exit 2 there).
+    IntegrationError
+        Numerical failure (exit 3 there).
+    """
     from .simulation import simulate as _simulate
 
     return _simulate(scene, **overrides)

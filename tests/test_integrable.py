@@ -102,7 +102,7 @@ def test_extra_integral_proved(name):
     assert proof.derivative == 0 and proof.holds
 
 
-@pytest.mark.parametrize("name", ["energy", "p_alpha", "n_norm"])
+@pytest.mark.parametrize("name", ["energy", "p_alpha", "n_squared"])
 def test_classical_integrals_of_any_body(name):
     assert ig.prove("general", name).holds
 
@@ -177,7 +177,7 @@ def test_integrals_for():
     assert out[0] == pytest.approx(re**2 + im**2, rel=1e-14)
     assert out[1] == pytest.approx(0.981**2, rel=1e-14)
     assert ig.integrals_for(load_scene(scene_dict((1, 2, 2.5), (0.1, 0.2, 0.3)))) == []
-    assert [x[0] for x in ig.integrals_for(load_scene(scene_dict((1, 2, 2.5))))] == ["L2"]
+    assert [x[0] for x in ig.integrals_for(load_scene(scene_dict((1, 2, 2.5))))] == ["L_squared"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -265,8 +265,8 @@ def test_spherical_body_is_lagrange_about_r_c():
 
 
 @pytest.mark.parametrize("I, com, expected, axes, name", [
-    ((1.0, 2.0, 2.0), (0.1, 0.0, 0.0), "lagrange", (1, 2, 0), "L1"),
-    ((2.0, 1.0, 2.0), (0.0, -0.1, 0.0), "lagrange", (2, 0, 1), "L2"),
+    ((1.0, 2.0, 2.0), (0.1, 0.0, 0.0), "lagrange", (1, 2, 0), "L_1"),
+    ((2.0, 1.0, 2.0), (0.0, -0.1, 0.0), "lagrange", (2, 0, 1), "L_2"),
     ((1.0, 2.0, 2.0), (0.0, 0.06, 0.08), "kovalevskaya", (1, 2, 0), "kovalevskaya"),
     ((2.0, 1.0, 2.0), (0.1, 0.0, 0.0), "kovalevskaya", (2, 0, 1), "kovalevskaya"),
     ((1.0, 4.0, 4.0), (0.0, 0.1, 0.0), "goryachev-chaplygin", (1, 2, 0), "goryachev_chaplygin"),
