@@ -21,7 +21,9 @@ cyclic relabelling of its axes, ``RELABELLINGS``):
   (2ω̃₁ω̃₂ − k n₂)², k = M g x_c/I₃ (the turn multiplies both complex numbers by e^{−2iφ}).
 * ``goryachev-chaplygin`` I₁ = I₂ = 4I₃, r_c in the equatorial plane: on the level L·n = 0,
   G = ω̃₃(ω̃₁² + ω̃₂²) − (M g/I₃)(c_x ω̃₁ + c_y ω̃₂) n₃; along the flow
-  dG/dt = −(M g/(4 I₃²)) (c_x ω̃₂ − c_y ω̃₁) (L·n).
+  dG/dt = −(M g/(4 I₃²)) (c_x ω̃₂ − c_y ω̃₁) (L·n). A scene whose initial state is off that level
+  (|L·n| > TOLERANCE·|L||n|) is classified ``general`` (``classify``; its ``body_case`` keeps
+  "goryachev-chaplygin"): G is then not an integral of its motion.
 * ``general`` anything else; also any scene with a dissipative torque (damping c > 0), which
   conserves none of these.
 
@@ -242,13 +244,16 @@ def relabelled(integral: Integral, axes) -> Integral:
 @dataclass(frozen=True)
 class Classification:
     """The case of a scene and why (one sentence); ``axes`` the body axes (0-based) that play
-    the formulas' axes 1, 2, 3 (the symmetry axis of the case is body axis axes[2] + 1)."""
+    the formulas' axes 1, 2, 3 (the symmetry axis of the case is body axis axes[2] + 1);
+    ``body_case`` the case of the body's numbers when the scene's state rules it out (a
+    Goryachev–Chaplygin body off the level L·n = 0: ``case`` is then "general")."""
 
     case: str
     reason: str
     dissipative: bool = False
     integral: str | None = None  # the extra integral's name when it is not EXTRA[case]'s
     axes: tuple = RELABELLINGS[0]
+    body_case: str | None = None
 
     @property
     def canonical_extra(self) -> Integral | None:
@@ -332,12 +337,47 @@ def _classify(I1, I2, I3, M, g, com, damping) -> Classification:
                                      "symmetry axis, not a Kovalevskaya or Goryachev-Chaplygin ratio")
 
 
+def area_level(scene) -> tuple[float, float]:
+    """(L·n, |L||n|) at the scene's initial state: L = I ω̃(0) and n = Rᵀẑ =
+    (−sin β cos γ, sin β sin γ, cos β) in body axes (z-y-z angles; α does not enter)."""
+    i = scene.initial
+    sb = math.sin(i.beta)
+    n = (-sb * math.cos(i.gamma), sb * math.sin(i.gamma), math.cos(i.beta))
+    L = tuple(m * w for m, w in zip(scene.body.moments, i.omega))
+    return math.fsum(a * b for a, b in zip(L, n)), math.hypot(*L) * math.hypot(*n)
+
+
+def on_area_level(scene) -> bool:
+    """True when the scene starts on L·n = 0 (|L·n| ≤ TOLERANCE·|L||n|), the level on which
+    the Goryachev–Chaplygin integral exists."""
+    ln, scale = area_level(scene)
+    return abs(ln) <= TOLERANCE * scale
+
+
 def classify(scene) -> Classification:
-    """The integrable case of a scene (``derive.scene.Scene``)."""
+    """The integrable case of a scene (``derive.scene.Scene``): the case of its numbers
+    (``classify_values``), except that a Goryachev–Chaplygin body whose initial state is off the
+    level L·n = 0 (``on_area_level``) is "general": G is conserved only on that level, so this
+    motion has no fourth integral (``body_case`` keeps "goryachev-chaplygin")."""
     p = parameters(scene)
     damping = scene.damping.c if scene.damping is not None else 0.0
-    return classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
-                           damping)
+    c = classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
+                        damping)
+    if c.case == "goryachev-chaplygin" and not on_area_level(scene):
+        ln, scale = area_level(scene)
+        return Classification("general", f"{c.reason}, but this state is off that level: L.n = "
+                                         f"{ln:.6g} kg m^2 s^-1 (|L||n| = {scale:.6g}), so G is "
+                                         "not conserved and no fourth integral is known",
+                              body_case=c.case)
+    return c
+
+
+def integrals(c: Classification) -> list[Integral]:
+    """The first integrals of a classified scene: energy, L·n and |n|² (a dissipative one: |n|²
+    alone), then the case's extra one."""
+    if c.dissipative:
+        return [CASIMIR]
+    return [ENERGY, AREA, CASIMIR] + ([c.extra] if c.extra else [])
 
 
 def output_integrals() -> list[Integral]:
@@ -354,9 +394,10 @@ def output_integrals() -> list[Integral]:
 
 
 def integrals_for(scene) -> list[tuple[str, Callable]]:
-    """The extra integral of the scene's case as ``[(name, f)]`` with ``f(L, n) -> array``
-    (L, n of shape (N, 3), body axes) at the scene's numbers: the simulation writes it as
-    ``integral_<name>``. Empty for the general case (energy and L·n are outputs already)."""
+    """The extra integral of the scene's case (``classify``: its state included) as
+    ``[(name, f)]`` with ``f(L, n) -> array`` (L, n of shape (N, 3), body axes) at the scene's
+    numbers: the simulation writes it as ``integral_<name>``. Empty for the general case
+    (energy and L·n are outputs already) and for a Goryachev–Chaplygin body off L·n = 0."""
     integral = classify(scene).extra
     if integral is None:
         return []
