@@ -46,7 +46,11 @@ def simulate(scene, **overrides):
         ``p_alpha`` and ``p_gamma`` (conserved only without damping), ``n`` (the upward vertical
         in body axes) and ``L`` (angular momentum about the pivot, body axes); ``integrals``
         ({name: (n,) array}, the extra integral of an integrable case, also as
-        ``integral_<name>``); ``method``, ``formulation`` and ``nfev`` (what ran).
+        ``integral_<name>``); ``method``, ``formulation`` and ``nfev`` (what ran). The
+        integrals carry the names ``derive analyze`` gives them: ``L_squared`` (|L|², free
+        body), ``L_1``/``L_2``/``L_3`` (the component of L along the symmetry axis of a Lagrange
+        top), ``L_dot_rc`` (spherical body), ``kovalevskaya``, ``goryachev_chaplygin`` (only
+        for a state on L·n = 0).
 
     Raises
     ------

@@ -246,7 +246,7 @@ def test_integral_drift_per_case():
     assert rows[0, :4].tolist() == [lagrange, 1, 2, 0]  # formulas' axis 3 = body axis 1
     own = derive.sweep(spec, processes=1).measures["integral_drift"]
     assert (own < 1e-9).all()
-    spec["measure"] = {"names": ["integral_drift"], "integral_drift": {"integral": "L2"}}
+    spec["measure"] = {"names": ["integral_drift"], "integral_drift": {"integral": "L_squared"}}
     del spec["measures"]
     assert (derive.sweep(spec, processes=1).measures["integral_drift"] > 1e-2).all()
 
@@ -290,8 +290,8 @@ def test_cli_bad_integral_name_exits_2(tmp_path):
                        capture_output=True, text=True, timeout=120)
     assert p.returncode == 2 and not out.exists()
     assert p.stderr.strip().splitlines() == [
-        f"error: {sweep}: measure.integral_drift.integral: must be one of case, L2, L3, L_dot_rc, "
-        "kovalevskaya, goryachev_chaplygin, n_norm, p_alpha, got 'K'"]
+        f"error: {sweep}: measure.integral_drift.integral: must be one of case, L_squared, L_3, "
+        "L_dot_rc, kovalevskaya, goryachev_chaplygin, n_squared, p_alpha, got 'K'"]
 
 
 def test_named_casimirs():
@@ -307,6 +307,6 @@ def test_named_casimirs():
     drift = res.measures["integral_drift"] * S
     assert (res.measures["p_alpha_drift"] > 1e-12).all()
     assert np.allclose(drift, res.measures["p_alpha_drift"], rtol=0, atol=1e-14 * S.max())
-    spec["measure"]["integral_drift"] = {"integral": "n_norm"}
-    n_norm = derive.sweep(spec, processes=1).measures["integral_drift"]
-    assert (n_norm > 0).all() and (n_norm < 1e-7).all()
+    spec["measure"]["integral_drift"] = {"integral": "n_squared"}
+    n_squared = derive.sweep(spec, processes=1).measures["integral_drift"]
+    assert (n_squared > 0).all() and (n_squared < 1e-7).all()

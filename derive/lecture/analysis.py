@@ -32,13 +32,20 @@ For a scene (its moments, its effects, its initial state) this derives and evalu
    ``integrable.TOLERANCE``), when the equilibrium does not exist at the scene's numbers, or
    when the sufficient condition fails but the spectrum is on the imaginary axis. The
    eigenvalues are those of the Euler–Poisson linearisation (L, n block) at the equilibrium, or
-   of the reduced β equation for steady precession.
+   of the reduced β equation for steady precession — there one ``Precession`` record per root
+   α̇ holds that root's p_α, V_eff″ (evaluated with p_α eliminated: no cancellation at a small
+   tilt), nutation frequency and eigenvalues, so no number is paired with another root's.
+
+Every reported number has its SI unit (``UNITS``: the JSON's ``units``, the Markdown after the
+number). Expressions are displayed in a compact form (``_compact``: grouped and factored, for
+display only); the numbers are evaluated from the derived expressions.
 
 SymPy is imported here only (``import derive`` does not); the derivations are cached per
 process, so analysing a scene costs about a second warm.
 """
 from __future__ import annotations
 
+import cmath
 import functools
 import json
 import math
@@ -53,6 +60,26 @@ from derive.sim.scene import load_scene
 #: A real part above this fraction of the spectrum's scale counts as growth (round-off in the
 #: eigenvalues of a Hamiltonian linearisation is far below it).
 EIGEN_TOLERANCE = 1e-7
+
+#: The SI unit of every number the analysis reports (``Equilibrium.values`` and the fields of a
+#: steady precession's records), ASCII as in the JSON's ``units``; the Markdown shows them with
+#: superscripts (``integrable.pretty_unit``). Eigenvalues λ of the linearisation ẏ = J y are
+#: rates (s⁻¹); λ² is in s⁻².
+UNITS = {
+    "p_gamma": "kg m^2 s^-1", "p_alpha": "kg m^2 s^-1", "threshold": "kg m^2 s^-1",
+    "k2": "J rad^-2", "V_eff_second_derivative": "J rad^-2",
+    "discriminant": "kg^2 m^4 s^-2",
+    "omega0": "rad s^-1", "alpha_dot": "rad s^-1", "alpha_dot_roots": "rad s^-1",
+    "alpha_dot_scene": "rad s^-1", "nutation_frequency": "rad s^-1",
+    "lambda_squared": "s^-2", "eigenvalues": "s^-1",
+    "beta0": "rad", "r_c": "m",
+}
+
+#: Above this many operations (SymPy's count_ops) an expression is displayed as derived:
+#: ``_compact`` factors each group of terms, a cost that grows with the expression.
+COMPACT_MAX_OPS = 400
+#: ... and a group of more terms than this is shown over its common denominator, unfactored.
+COMPACT_MAX_TERMS = 6
 
 
 @dataclass
@@ -71,10 +98,20 @@ class Equilibrium:
     eigenvalues: list = field(default_factory=list)
 
     def to_json(self) -> dict:
+        values = {k: ([r.to_json() for r in v] if k == "roots" else v) for k, v in self.values.items()}
         return {"kind": self.kind, "axis": self.axis, "condition": self.condition,
                 "stable": self.stable, "description": self.description, "method": self.method,
-                "values": self.values,
+                "values": values, "units": self.units,
                 "eigenvalues": [[float(z.real), float(z.imag)] for z in self.eigenvalues]}
+
+    @property
+    def units(self) -> dict:
+        """{name: SI unit} of every number in ``values`` (and in its ``roots`` records) and of
+        the eigenvalues."""
+        names = list(self.values)
+        for r in self.values.get("roots", []):
+            names += list(r.to_json())
+        return {k: UNITS[k] for k in dict.fromkeys(names + ["eigenvalues"]) if k in UNITS}
 
 
 @dataclass
@@ -95,13 +132,16 @@ class Analysis:
 
     def to_json(self) -> dict:
         c = self.classification
+        veff = _effective_potential(self.scene)
         return {
             "case": c.case,
+            **({"body_case": c.body_case} if c.body_case else {}),
             "reason": c.reason,
             "dissipative": c.dissipative,
-            "integrals": [{"name": i.name, "expression": i.expression,
+            "integrals": [{"name": i.name, "expression": i.expression, "unit": i.unit,
                            "proved": self.proofs[i.name].holds if i.name in self.proofs else None,
                            **({"on": i.on} if i.on else {})} for i in self.integrals],
+            **({"V_eff": _sp().sstr(veff)} if veff is not None else {}),
             "equilibria": [e.to_json() for e in self.equilibria],
         }
 
@@ -139,6 +179,52 @@ def _latex(expr) -> str:
     for c in ("cx", "cy", "cz"):
         names[sp.Symbol(c, real=True)] = rf"c_{{{c[1]}}}"
     return sp.latex(expr, symbol_names=names)
+
+
+def _is_variable(s) -> bool:
+    """An angle, a rate, a momentum or a state component (not a body or effect parameter)."""
+    from derive.symbolic.lagrangian import p_alpha, p_gamma
+    from derive.symbolic.rotations import ANGLES, RATES
+
+    return s in ANGLES or s in RATES or s in (p_alpha, p_gamma) or s.name[:-1] in ("L", "n", "omega")
+
+
+def _compact(expr):
+    """A shorter equal form of ``expr`` for display only (the numbers never use it): its terms
+    grouped by the body and effect parameters they carry, each group over a common denominator
+    and factored, with sin² → 1 − cos² tried in its numerator; the result, or ``expr`` itself
+    when that is no shorter (SymPy's count_ops). A matrix elementwise. Expressions above
+    ``COMPACT_MAX_OPS`` are returned as they are (bounded cost: a few factorisations of small
+    polynomials: about 0.05 s for V_eff, 0.3 s for all the expressions of a symmetric top, 0.6 s
+    for an asymmetric body; once per process). E.g. the expanded V_eff becomes
+    (p_α − p_γ cos β)²/(2 I₁ sin²β) + M g l cos β."""
+    sp = _sp()
+
+    if isinstance(expr, sp.MatrixBase):
+        return expr.applyfunc(_compact)
+    return _compact_cached(sp.sympify(expr))
+
+
+@functools.lru_cache(maxsize=256)
+def _compact_cached(expr):
+    sp = _sp()
+    from derive.symbolic.rotations import ANGLES
+
+    if sp.count_ops(expr) > COMPACT_MAX_OPS:
+        return expr
+    groups: dict[frozenset, list] = {}
+    for term in sp.Add.make_args(sp.expand(expr)):
+        groups.setdefault(frozenset(x for x in term.free_symbols if not _is_variable(x)), []).append(term)
+    parts = []
+    for terms in groups.values():
+        num, den = sp.fraction(sp.together(sp.Add(*terms)))
+        if len(terms) > COMPACT_MAX_TERMS:  # multivariate factoring grows fast with the terms
+            parts.append(num / den)
+            continue
+        tries = [sp.factor(num)] + [sp.factor(sp.expand(num.subs(sp.sin(a) ** 2, 1 - sp.cos(a) ** 2)))
+                                    for a in ANGLES if num.has(sp.sin(a))]
+        parts.append(min(tries, key=sp.count_ops) / sp.factor(den))
+    return min((sp.Add(*parts), expr), key=sp.count_ops)
 
 
 @functools.lru_cache(maxsize=None)
@@ -228,7 +314,7 @@ def _routh():
     steady-precession quadratic and the series of V_eff about β = 0 and π."""
     sp = _sp()
     from derive.symbolic import stability
-    from derive.symbolic.lagrangian import l, p_alpha, p_gamma
+    from derive.symbolic.lagrangian import I1, Mass, g, l, p_alpha, p_gamma
     from derive.symbolic.rotations import ANGLES, alpha_d, beta, gamma_d, trig_reduce
 
     st = stability.sleeping_top()
@@ -248,12 +334,23 @@ def _routh():
         quad = -quad
     disc = sp.factor(sp.discriminant(quad, alpha_d))
     d2V = sp.diff(Veff, beta, 2)
+    # V_eff″ with p_α = I₁ α̇ sin²β + p_γ cos β eliminated: a polynomial in α̇, cos β, sin β with
+    # no 1/sin β left. The form in p_α has terms ~ p_γ²/(I₁ β⁴) that cancel at a small tilt (at
+    # β₀ = 1e-4 nothing is left in double precision); this one has none, and it is the one
+    # evaluated.
+    d2V_rate = sp.factor(trig_reduce(sp.together(d2V.subs(p_alpha, pa))))
+    args = (I1, Mass, g, l, p_gamma, beta)
+    numeric = {"coefficients": sp.lambdify(args, sp.Poly(quad, alpha_d).all_coeffs(), "math"),
+               "discriminant": sp.lambdify(args, disc, "math"),
+               "d2V": sp.lambdify(args + (alpha_d,), d2V_rate, "math"),
+               "p_alpha": sp.lambdify(args + (alpha_d,), pa, "math")}
     # About β = π, p_α = −p_γ (n = −ê₃ there). V_eff is invariant under β → π − β, p_α → −p_α,
     # l → −l (cos β changes sign, sin²β does not), so the series about π is the series about 0
     # with l → −l (tests/test_analyze.py checks the symmetry on V_eff itself).
     k2_pi = sp.factor(st.coefficient(2).subs(l, -l))
-    return {"red": red, "Veff": Veff, "p_alpha_of_rate": pa, "quadratic": quad,
-            "discriminant": disc, "d2V": d2V, "k2_0": st.coefficient(2), "k2_pi": k2_pi,
+    return {"red": red, "Veff": Veff, "Veff_display": _compact(Veff), "p_alpha_of_rate": pa,
+            "quadratic": quad, "discriminant": disc, "d2V": d2V, "d2V_rate": d2V_rate,
+            "numeric": numeric, "k2_0": st.coefficient(2), "k2_pi": k2_pi,
             "threshold": st.threshold, "sleeping": st}
 
 
@@ -312,7 +409,10 @@ def _check_finite(e: "Equilibrium") -> None:
     """Every number an equilibrium reports (its values, its eigenvalues) finite, or _Overflow:
     JSON has no infinity, and an inf or nan here would mean a meaningless line of output."""
     for name, v in e.values.items():
-        if v is not None:
+        if name == "roots":  # the steady-precession records: each number of each root
+            for r in v:
+                _finite(e.kind, "a steady-precession root", [r.alpha_dot, r.p_alpha, r.curvature])
+        elif v is not None:
             _finite(e.kind, name.replace("_", " "), v)
     _finite(e.kind, "an eigenvalue of the linearisation", e.eigenvalues)
 
@@ -362,8 +462,8 @@ def _top(sc, cls, p) -> _Top:
     L0 = I * np.array(i.omega)
     if axis == 2:  # the scene's own Euler angles are this top's
         beta0, alpha_dot = i.beta, i.alpha_dot
-    else:
-        beta0, alpha_dot = float(np.arccos(np.clip(n0 @ u, -1.0, 1.0))), None
+    else:  # the angle from u to n; atan2 keeps its digits at a small tilt, where arccos loses them
+        beta0, alpha_dot = float(np.arctan2(np.linalg.norm(np.cross(n0, u)), n0 @ u)), None
     return _Top(tuple(u), axis, float(I[across]), float(u @ (I * u)), float(c @ u), float(L0 @ u),
                 beta0, alpha_dot)
 
@@ -410,7 +510,7 @@ def _free_rotation(sc, k: int) -> Equilibrium:
            rf"\quad\Leftrightarrow\quad \lambda^2 = {_latex(lam2)} < 0")
     return Equilibrium(
         "permanent-rotation", k + 1, cond, stable, tex,
-        f"free spin about principal axis {k + 1} (I{k + 1} the "
+        f"free spin at omega0 = {w0:.6g} rad s^-1 about principal axis {k + 1} (I{k + 1} the "
         + {1: "largest or smallest", -1: "intermediate", 0: "equal to another"}[
             0 if a * b == 0 else (1 if a * b > 0 else -1)] + " moment)",
         "energy-Casimir: E - |L|^2/(2 I_k) has Hessian diag(1/I_i - 1/I_k, 1/I_j - 1/I_k) on the "
@@ -467,7 +567,7 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
     where = "beta = 0" if at_zero else "beta = pi"
     return Equilibrium(
         kind, None if top.axis is None else top.axis + 1, cond, stable, tex,
-        f"spin p_gamma = I_sym omega.u = {pg:.6g} about the vertical symmetry axis at {where}, centre "
+        f"spin p_gamma = I_sym omega.u = {pg:.6g} kg m^2 s^-1 about the vertical symmetry axis at {where}, centre "
         f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot" + _top_note(top),
         "series of V_eff(beta) about the pole with p_alpha = +-p_gamma: V_eff = V0 + k2 eps^2 + ...; "
         "Euler-Poisson linearisation",
@@ -485,12 +585,54 @@ def _top_note(top: _Top) -> str:
             f"l -> {top.l:g} in the formulas)")
 
 
+@dataclass(frozen=True)
+class Precession:
+    """One steady precession at the tilt β₀, every number of it in one record (so a rate is
+    never paired with another root's curvature): the rate ``alpha_dot`` (a root of the
+    steady-precession quadratic), ``p_alpha`` there, ``curvature`` = ∂²V_eff/∂β²(β₀) at fixed
+    p_α, p_γ, and ``I_perp`` (I₁). The linearised β equation I₁ δβ̈ = −V_eff″ δβ gives the
+    eigenvalues ±√(−V_eff″/I₁) and, when V_eff″ > 0, the nutation frequency √(V_eff″/I₁)."""
+
+    alpha_dot: float
+    p_alpha: float
+    curvature: float
+    I_perp: float
+    stable: bool | None = None
+
+    @property
+    def eigenvalues(self) -> list[complex]:
+        lam = cmath.sqrt(-self.curvature / self.I_perp)
+        return [lam, -lam]
+
+    @property
+    def nutation_frequency(self) -> float | None:
+        return math.sqrt(self.curvature / self.I_perp) if self.curvature > 0 else None
+
+    def to_json(self) -> dict:
+        return {"alpha_dot": self.alpha_dot, "p_alpha": self.p_alpha,
+                "V_eff_second_derivative": self.curvature,
+                "nutation_frequency": self.nutation_frequency, "stable": self.stable,
+                "eigenvalues": [[float(z.real), float(z.imag)] for z in self.eigenvalues]}
+
+
+def _quadratic_roots(a: float, b: float, c: float, disc: float) -> list[float]:
+    """The real roots of a x² + b x + c = 0 with discriminant ``disc`` ≥ 0 (clipped at 0),
+    ascending, without the cancellation in −b ± √Δ: the root of larger magnitude q/a with
+    q = −(b + sign(b)√Δ)/2, the other c/q. a = 0 leaves the linear root. (At a small tilt the
+    slow precession M g l/p_γ is the small root of the two.)"""
+    if a == 0.0:
+        return [] if b == 0.0 else [-c / b]
+    q = -0.5 * (b + math.copysign(math.sqrt(max(disc, 0.0)), b))
+    if q == 0.0:  # b = c = 0: the double root 0
+        return [0.0]
+    return sorted({q / a, c / q})
+
+
 def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
     """Steady precession at the scene's tilt β₀ of the symmetry axis (Lagrange top, free
-    symmetric body)."""
+    symmetric body): one ``Precession`` record per real root α̇, in ascending order."""
     sp = _sp()
-    from derive.symbolic.lagrangian import I1, Mass, g, l, p_alpha, p_gamma
-    from derive.symbolic.rotations import alpha_d, beta
+    from derive.symbolic.lagrangian import l
 
     R = _routh()
     b0 = top.beta0
@@ -500,40 +642,31 @@ def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
     quad, disc = R["quadratic"], R["discriminant"]
     if not gravity:  # the free symmetric body: M g l = 0
         quad, disc = quad.subs(l, 0), sp.factor(disc.subs(l, 0))
-    subs = {I1: top.I_perp, Mass: p["M"], g: p["g"], l: lval, p_gamma: pg, beta: b0}
     values = {"beta0": b0, "p_gamma": pg}
     if abs(math.sin(b0)) < 1e-9:
         return Equilibrium("steady-precession", axis, f"{sp.sstr(quad)} = 0", None, _latex(sp.Eq(quad, 0)),
                            "the scene's tilt is at a pole: no finite-tilt precession to evaluate",
                            "dV_eff/dbeta = 0", values, [])
-    qv = sp.Poly(quad.subs(subs), alpha_d)
-    ds = disc.subs(subs)
-    dv = float(ds)
-    # Divided by the largest coefficient (in SymPy, whose exponent is unbounded): the same roots,
-    # and the discriminant's test relative to that coefficient squared, at any scale.
-    big = [sp.Float(c) for c in qv.all_coeffs()]
-    top_c = max(abs(c) for c in big) or sp.Float(1)
-    coeffs = [float(c / top_c) for c in big]
-    roots = [float(r.real) for r in np.roots(coeffs) if abs(r.imag) <= 1e-12 * max(1, abs(r))] \
-        if float(ds / top_c ** 2) >= -integrable.TOLERANCE else []
-    values.update(discriminant=dv, alpha_dot_roots=sorted(roots),
-                  alpha_dot_scene=top.alpha_dot)
-    eig = []
-    curv = []  # SymPy Floats: V_eff'' at 1e300 scales is not a double, but its sign is known
-    for ad in roots:
-        pa = R["p_alpha_of_rate"].subs({**subs, alpha_d: ad})
-        c2 = R["d2V"].subs({**subs, p_alpha: pa})
-        curv.append(c2)
-        # λ² = −V_eff''/I₁ (in SymPy: its square root is a double when λ² is not); the pair
-        # in np.roots([1, 0, −λ²])'s order, imaginary root first
-        lam = complex(sp.sqrt(-c2 / top.I_perp))
-        eig += [lam, -lam] if c2 > 0 else [-lam, lam]
-    values["V_eff_second_derivative"] = [float(c) for c in curv]
+    num = R["numeric"]
+    args = (top.I_perp, p["M"], p["g"], lval, pg, b0)
+    coeffs = [float(x) for x in num["coefficients"](*args)]
+    dv = float(num["discriminant"](*args))
+    scale = max(abs(x) for x in coeffs) ** 2
+    rates = _quadratic_roots(*coeffs, dv) if dv >= -integrable.TOLERANCE * scale else []
+    curv = [float(num["d2V"](*args, ad)) for ad in rates]
+    size = max((abs(x) for x in curv), default=0.0)
+    roots = [Precession(ad, float(num["p_alpha"](*args, ad)), c2, top.I_perp,
+                        {1: True, -1: False, 0: None}[_sign_tol(c2, size)])
+             for ad, c2 in zip(rates, curv)]
+    values.update(discriminant=dv, alpha_dot_scene=top.alpha_dot, roots=roots,
+                  # the records' fields as lists, in the records' order (the earlier keys)
+                  alpha_dot_roots=[r.alpha_dot for r in roots],
+                  V_eff_second_derivative=[r.curvature for r in roots])
     if not roots:
         stable = None
-    elif all(_sign_ratio(c, max(abs(x) for x in curv)) > 0 for c in curv):
+    elif all(r.stable for r in roots):
         stable = True
-    elif any(c < 0 for c in curv):
+    elif any(r.stable is False for r in roots):
         stable = False
     else:
         stable = None
@@ -541,14 +674,17 @@ def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
             "d2V_eff/dbeta2 > 0")
     tex = (rf"{_latex(quad)} = 0,\quad \Delta = {_latex(disc)} \ge 0,\quad "
            r"\partial^2_\beta V_\text{eff} > 0")
-    desc = (f"alpha_dot constant at the tilt beta0 = {b0:.6g} with p_gamma = {pg:.6g}: "
-            + (f"roots alpha_dot = {', '.join(f'{r:.6g}' for r in sorted(roots))}" if roots
+    desc = (f"alpha_dot constant at the tilt beta0 = {b0:.6g} rad with p_gamma = {pg:.6g} "
+            f"kg m^2 s^-1: "
+            + (f"roots alpha_dot = {', '.join(f'{r.alpha_dot:.6g}' for r in roots)} rad s^-1" if roots
                else "no real root: no steady precession at this tilt"))
     if not gravity:
         desc += " (free symmetric body: every motion is a regular precession)"
     return Equilibrium("steady-precession", axis, text, stable, tex, desc + _top_note(top),
                        "dV_eff/dbeta = 0 with p_alpha = I1 alpha_dot sin^2 beta + p_gamma cos beta; "
-                       "eigenvalues of the linearised beta equation", values, eig)
+                       "V_eff'' evaluated with p_alpha eliminated (no cancellation at a small tilt); "
+                       "eigenvalues of the linearised beta equation, per root",
+                       values, [z for r in roots for z in r.eigenvalues])
 
 
 def _vertical_condition(k: int, upright: bool) -> tuple[str, str]:
@@ -612,7 +748,7 @@ def _heavy_vertical(sc, p) -> list[Equilibrium]:
             marg = [W2 * (_big(Iu) - _big(Im)) - h * MgR for Im in perp]
             scale = W2 * _big(I.max()) + MgR
             ec = True if all(_sign_ratio(x, scale) > 0 for x in marg) else None
-            desc = (f"spin omega0 = {w0:.6g} about "
+            desc = (f"spin omega0 = {w0:.6g} rad s^-1 about "
                     + (f"principal axis {axis + 1}" if axis is not None
                        else "the principal direction along r_c")
                     + f" held vertical, centre of mass {where} the pivot")
@@ -683,9 +819,9 @@ def _section_energies(sc):
     moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
     Tb = sum((Li ** 2 / (2 * m) for Li, m in zip(Lv, moments)), sp.S.Zero)
     lines = [rf"$$ T = {_latex(Tb)} = \tfrac12\sum_i I_i\tilde\omega_i^2 $$", "",
-             "In z-y-z Euler angles:", "",
-             rf"$$ T = {_latex(T)} $$", "", rf"$$ V = {_latex(V)} $$", "",
-             rf"$$ L = T - V = {_latex(system.lagrangian)} $$"]
+             "In z-y-z Euler angles (energies in J):", "",
+             rf"$$ T = {_latex(_compact(T))} $$", "", rf"$$ V = {_latex(_compact(V))} $$", "",
+             rf"$$ L = T - V = {_latex(_compact(system.lagrangian))} $$"]
     return "Kinetic and potential energy, Lagrangian", lines
 
 
@@ -705,15 +841,31 @@ def _section_equations(sc):
     m = _ep_model(sc.symmetric, sc.effects)
     lhs = r"\dot{\tilde\omega}" if m.state_names[0].startswith("omega") else r"\dot{\tilde L}"
     lines = ["Euler–Poisson (L = I ω̃ about the pivot, n = Rᵀẑ), derived from the effects registry:", "",
-             rf"$$ {lhs} = {_latex(sp.Matrix(m.rhs[:3]))},\quad "
-             rf"\dot{{\tilde n}} = {_latex(sp.Matrix(m.rhs[3:6]))} $$"]
+             rf"$$ {lhs} = {_latex(_compact(sp.Matrix(m.rhs[:3])))},\quad "
+             rf"\dot{{\tilde n}} = {_latex(_compact(sp.Matrix(m.rhs[3:6])))} $$"]
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     lines += ["", "Euler–Lagrange in z-y-z angles, 𝕄 q̈ = F"
               + (" (conservative part; the damping torque adds Q = Bᵀτ̃)" if _damped(sc) else "")
               + ":", "",
-              rf"$$ \mathbb{{M}} = {_latex(system.mass_matrix)} $$", "",
-              rf"$$ F = {_latex(system.forcing)} $$"]
+              rf"$$ \mathbb{{M}} = {_latex(_compact(system.mass_matrix))} $$", "",
+              rf"$$ F = {_latex(_compact(system.forcing))} $$"]
     return "Equations of motion", lines
+
+
+def _effective_potential(sc):
+    """The Routh reduction's V_eff(β; p_α, p_γ) for the scene's body in its display form
+    (``_compact``; M g l = 0 without gravity), or None when α and γ are not both cyclic (the
+    body is not symmetric about axis 3 with the centre of mass on it)."""
+    from derive.symbolic.lagrangian import l
+    from derive.symbolic.rotations import ANGLES
+
+    if not (sc.symmetric and _axial(sc)):
+        return None
+    cyc = _lagrangian(sc.symmetric, _conservative(sc))[2].cyclic
+    if ANGLES[0] not in cyc or ANGLES[2] not in cyc:
+        return None
+    veff = _routh()["Veff_display"]
+    return veff.subs(l, 0) if sc.gravity is None else veff
 
 
 def _section_cyclic(sc, cls):
@@ -724,18 +876,17 @@ def _section_cyclic(sc, cls):
 
     for q in cyc:
         lines += [rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "
-                  rf"{_latex(system.momentum(q))} $$", ""]
+                  rf"{_latex(_compact(system.momentum(q)))} $$", ""]
     if _damped(sc):
         lines.append("The damping torque breaks these conservation laws (p_α decays as "
                      "d(L·n)/dt = −c ω̃·n).")
-    if sc.symmetric and _axial(sc) and ANGLES[2] in cyc and ANGLES[0] in cyc:
-        R = _routh()
-        lines += ["", "Routh reduction (α and γ cyclic) to the β degree of freedom:", "",
+    veff = _effective_potential(sc)
+    if veff is not None:
+        lines += ["", "Routh reduction (α and γ cyclic) to the β degree of freedom (momenta in "
+                      "kg m² s⁻¹, V_eff in J):", "",
                   rf"$$ E' = \tfrac12 I_1\dot\beta^2 + V_\text{{eff}}(\beta),\quad "
-                  rf"V_\text{{eff}} = {_latex(R['Veff'])} $$"]
+                  rf"V_\text{{eff}} = {_latex(veff)} $$"]
         if sc.gravity is None:
-            lines.append("(no gravity: set M g l = 0).")
-        if _damped(sc):
             lines.append("(for the conservative part: with damping p_α, p_γ and E′ decay).")
     else:
         lines += ["", "No Routh reduction to one degree of freedom: γ is not cyclic (the body is "
@@ -750,9 +901,18 @@ def _section_cyclic(sc, cls):
 
 def _section_integrals(sc, cls, ints, proofs):
     lines = []
+    if cls.body_case is not None:
+        lines += [f"The body is a {cls.body_case} body, but this state is off the level where its "
+                  "extra integral exists (see the case above): only the integrals every such body "
+                  "has are listed.", ""]
+    extra = cls.extra.name if cls.extra is not None else None
     for i in ints:
         pr = proofs.get(i.name)
-        lines += [f"$$ {i.latex} $$", ""]
+        unit = integrable.pretty_unit(i.unit)
+        lines += [f"$$ {i.latex} $$", "",
+                  f"Name `{i.name}`" + (f", in {unit}" if unit else " (dimensionless)")
+                  + (f"; the simulation writes it as `integral_{i.name}`" if i.name == extra else "")
+                  + ".", ""]
         if pr is None:
             continue
         if pr.factor is not None:
@@ -775,23 +935,43 @@ def _section_equilibria(eqs):
     lines = []
     verdict = {True: "stable", False: "unstable", None: "undecided / marginal"}
     for e in eqs:
+        shown = {k: v for k, v in e.values.items()
+                 if k not in ("roots", "alpha_dot_roots", "V_eff_second_derivative")}
         lines += [f"### {e.kind}" + (f", axis {e.axis}" if e.axis else ""), "", e.description + ".", "",
                   f"$$ {e.latex} $$", "", f"Method: {e.method}.", "",
                   f"At the scene's numbers: **{verdict[e.stable]}**. "
-                  + ", ".join(f"{k} = {_fmt(v)}" for k, v in e.values.items()) + "."]
-        if len(e.eigenvalues):
-            lines += ["", "Eigenvalues: " + ", ".join(_fmt(z) for z in e.eigenvalues) + "."]
+                  + ", ".join(f"{k} = {_fmt(v)}{_unit(k) if v is not None else ''}"
+                              for k, v in shown.items()) + "."]
+        if e.values.get("roots"):
+            lines += ["", "| α̇" + _unit("alpha_dot", " [{}]") + " | p_α" + _unit("p_alpha", " [{}]")
+                      + " | V_eff″(β₀)" + _unit("V_eff_second_derivative", " [{}]")
+                      + " | nutation ω_n = √(V_eff″/I₁)" + _unit("nutation_frequency", " [{}]")
+                      + " | eigenvalues" + _unit("eigenvalues", " [{}]") + " | verdict |",
+                      "|---|---|---|---|---|---|"]
+            lines += [f"| {_fmt(r.alpha_dot)} | {_fmt(r.p_alpha)} | {_fmt(r.curvature)} | "
+                      f"{_fmt(r.nutation_frequency) if r.nutation_frequency is not None else '—'} | "
+                      f"{', '.join(_fmt(z) for z in r.eigenvalues)} | {verdict[r.stable]} |"
+                      for r in e.values["roots"]]
+        elif len(e.eigenvalues):
+            lines += ["", "Eigenvalues" + _unit("eigenvalues", " [{}]") + ": "
+                      + ", ".join(_fmt(z) for z in e.eigenvalues) + "."]
         lines.append("")
     if not eqs:
         lines.append("None: the damping decays every motion to rest, in any orientation.")
     return "Relative equilibria and their stability", lines
 
 
+def _unit(name: str, form: str = " {}") -> str:
+    """The unit of a reported number for Markdown (superscripts) in ``form``; "" if none."""
+    unit = integrable.pretty_unit(UNITS.get(name, "1"))
+    return form.format(unit) if unit else ""
+
+
 def _fmt(v) -> str:
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_fmt(x) for x in v) + "]"
     if isinstance(v, complex) or isinstance(v, np.complexfloating):
-        return f"{v.real:.4g}{v.imag:+.4g}i"
+        return f"{v.real + 0.0:.4g}{v.imag + 0.0:+.4g}i"  # + 0.0: no "-0" from a negative zero
     if isinstance(v, float):
         return f"{v:.6g}"
     return str(v)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from derive.symbolic import effects
 from derive.symbolic import formulations
+from derive.symbolic import integrable
 from derive.sim import scene
 from derive.methods import registry as solvers
 
@@ -130,13 +131,20 @@ def outputs() -> str:
            _row("`t`", "(n,)", "output times, s")]
     for name, width in formulations.OUTPUTS:
         out.append(_row(f"`{name}`", "(n,)" if width == 1 else f"(n, {width})", OUTPUT_MEANINGS[name]))
-    out += [_row("`integral_<name>`", "(n,)", "the extra integral of an integrable case "
-                 "(`integral_lagrange`, `integral_kovalevskaya`, …; see `derive analyze`)"),
-            _row("`method`, `formulation`", "() str", "what actually ran"),
+    # One row per name a run can write, from the registry the simulation and analyze use.
+    for i in integrable.output_integrals():
+        unit = integrable.pretty_unit(i.unit)
+        meaning = i.meaning.replace("|", "\\|")  # a bar inside a table cell ends the cell
+        out.append(_row(f"`integral_{i.name}`", "(n,)", meaning + (f"; in {unit}" if unit else "")))
+    out += [_row("`method`, `formulation`", "() str", "what actually ran"),
             _row("`nfev`", "() int", "right-hand-side evaluations"), "",
             "Angles are canonical whatever formulation ran: β ∈ [0, π]; α and γ move by whole turns "
             "to stay continuous, and at a pole passage, where they jump by about π, the jump is taken "
-            "so that α + γ (near β = 0) or α − γ (near β = π) stays continuous.", ""]
+            "so that α + γ (near β = 0) or α − γ (near β = π) stays continuous.", "",
+            "An `integral_<name>` array is written only for a scene of that integrable case (at most "
+            "one; `derive analyze` names the case and its integral by the same name, and "
+            "`Result.integrals` holds it under that name); `integral_goryachev_chaplygin` only when "
+            "the initial state is on the level L·n = 0, where G exists.", ""]
     return "\n".join(out)
 
 

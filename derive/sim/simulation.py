@@ -167,12 +167,14 @@ def _integrals(scene: Scene, res: Result, p) -> dict:
 
 
 def _integrals_of(scene: Scene):
-    # The case depends on the body and the effects' numbers alone: classified once per body.
-    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()))
+    from derive.symbolic.integrable import integrals_for, on_area_level
+
+    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
+    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
+    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
+           on_area_level(scene))
     found = _INTEGRALS.get(key)
     if found is None:
-        from derive.symbolic.integrable import integrals_for
-
         found = _INTEGRALS[key] = integrals_for(scene)
     return found
 

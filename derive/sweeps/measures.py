@@ -52,7 +52,7 @@ general case, or a damped body) gets NaN, its status stays ``ok`` (``p_alpha_dri
 ``energy_drift`` still apply to an undamped one). Naming an integral (``integral =
 "kovalevskaya"``) evaluates that one at every point whatever its case — the drift of K as the
 body leaves the Kovalevskaya ratio — in the formulas' axes (the point's own relabelling when its
-case is that integral's); the Casimirs ``n_norm`` (|n|²) and ``p_alpha`` (L·n) can be named
+case is that integral's); the Casimirs ``n_squared`` (|n|²) and ``p_alpha`` (L·n) can be named
 too. G is conserved only on L·n = 0: a point off that level reports G's real drift.
 
 Conventions: beta is the z-y-z nutation angle in [0, pi] (the output map's, made canonical);

@@ -11,18 +11,27 @@ integral, which makes the flow integrable, exists in these cases (written with a
 symmetry axis, the scene's convention; a body symmetric about axis 1 or 2 is recognised by a
 cyclic relabelling of its axes, ``RELABELLINGS``):
 
-* ``euler``   no gravity torque (no [gravity] table, r_c = 0 or g = 0):  |L|².
-* ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ); a spherical body (I₁ = I₂ = I₃)
-  with r_c anywhere:  L·r_c (its axis through r_c is a symmetry axis).
+* ``euler``   no gravity torque (no [gravity] table, r_c = 0 or g = 0):  |L|² (``L_squared``).
+* ``lagrange`` I₁ = I₂, r_c on axis 3:  L₃ = I₃ω̃₃ (= p_γ; ``L_3``, or ``L_1``/``L_2`` for a body
+  symmetric about axis 1/2); a spherical body (I₁ = I₂ = I₃) with r_c anywhere:  L·r_c
+  (``L_dot_rc``: its axis through r_c is a symmetry axis).
 * ``kovalevskaya`` I₁ = I₂ = 2I₃, r_c in the equatorial plane (any azimuth φ, c_x + i c_y =
   |r_c| e^{iφ}):  K = |(ω̃₁ + iω̃₂)² − (M g/I₃)(c_x + i c_y)(n₁ + i n₂)|². With the body turned
   about axis 3 so that r_c = (x_c, 0, 0) this is the classical (ω̃₁² − ω̃₂² − k n₁)² +
   (2ω̃₁ω̃₂ − k n₂)², k = M g x_c/I₃ (the turn multiplies both complex numbers by e^{−2iφ}).
 * ``goryachev-chaplygin`` I₁ = I₂ = 4I₃, r_c in the equatorial plane: on the level L·n = 0,
   G = ω̃₃(ω̃₁² + ω̃₂²) − (M g/I₃)(c_x ω̃₁ + c_y ω̃₂) n₃; along the flow
-  dG/dt = −(M g/(4 I₃²)) (c_x ω̃₂ − c_y ω̃₁) (L·n).
+  dG/dt = −(M g/(4 I₃²)) (c_x ω̃₂ − c_y ω̃₁) (L·n). A scene whose initial state is off that level
+  (|L·n| > TOLERANCE·|L||n|) is classified ``general`` (``classify``; its ``body_case`` keeps
+  "goryachev-chaplygin"): G is then not an integral of its motion.
 * ``general`` anything else; also any scene with a dissipative torque (damping c > 0), which
   conserves none of these.
+
+Names. Each quantity has one name, used for the JSON of ``derive analyze``, the simulation's
+arrays ``integral_<name>`` and ``Result.integrals``, the plots, the sweeps' ``integral_drift``
+option and the generated ``outputs.md``: ``energy``, ``p_alpha`` (L·n), ``n_squared`` (|n|²),
+``L_squared`` (|L|², never a component), ``L_1``/``L_2``/``L_3`` (the component of L along
+that body axis), ``L_dot_rc``, ``kovalevskaya``, ``goryachev_chaplygin``.
 
 Each formula is written once (``Integral.formula``), as arithmetic on three L components, three
 n components and a parameter mapping, so the same code evaluates it on NumPy arrays (the
@@ -108,12 +117,29 @@ def _goryachev_chaplygin(L, n, p):
     return w3 * (w1 ** 2 + w2 ** 2) - k * (p["cx"] * w1 + p["cy"] * w2) * n[2]
 
 
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def pretty_unit(unit: str) -> str:
+    """An ASCII unit ("kg m^2 s^-1") with superscripts ("kg m² s⁻¹") for Markdown; "1"
+    (dimensionless) gives ""."""
+    if unit == "1":
+        return ""
+    return re.sub(r"\^(-?\d+)", lambda m: m.group(1).translate(_SUPERSCRIPT), unit)
+
+
+def _lagrange_meaning(k: int) -> str:
+    return (f"L_{k} = I{k} ω̃{k}, the component of L along body axis {k}, the symmetry axis of a "
+            f"Lagrange top" + (" (= p_γ)" if k == 3 else ""))
+
+
 @dataclass(frozen=True)
 class Integral:
     """A first integral: ``name`` (the npz key is ``integral_<name>``), a plain-text
     ``expression`` (the JSON contract's), its LaTeX, and ``formula(L, n, p)``; ``on`` names the
     level set it is conserved on ("L.n = 0"), if any; ``relations`` the parameter relations of
-    its proof when they are not its case's."""
+    its proof when they are not its case's; ``unit`` its SI unit (ASCII, "1" dimensionless);
+    ``meaning`` what it is, in words (the generated outputs.md)."""
 
     name: str
     expression: str
@@ -121,28 +147,38 @@ class Integral:
     formula: Callable
     on: str | None = None
     relations: dict | None = None  # for its proof, instead of its case's RELATIONS
+    unit: str = "1"
+    meaning: str = ""
 
 
 ENERGY = Integral("energy", "E = (L1^2/I1 + L2^2/I2 + L3^2/I3)/2 + M g (n . r_c)",
                   r"E = \tfrac12\left(\frac{L_1^2}{I_1} + \frac{L_2^2}{I_2} + \frac{L_3^2}{I_3}\right)"
-                  r" + M g\,\tilde n\cdot\tilde r_c", _energy)
+                  r" + M g\,\tilde n\cdot\tilde r_c", _energy, unit="J",
+                  meaning="the total energy T + V")
 AREA = Integral("p_alpha", "p_alpha = L . n = L1 n1 + L2 n2 + L3 n3",
-                r"p_\alpha = \tilde L\cdot\tilde n", _area)
-CASIMIR = Integral("n_norm", "|n|^2 = n1^2 + n2^2 + n3^2 = 1",
-                   r"|\tilde n|^2 = n_1^2 + n_2^2 + n_3^2 = 1", _n_squared)
+                r"p_\alpha = \tilde L\cdot\tilde n", _area, unit="kg m^2 s^-1",
+                meaning="the vertical component of the angular momentum, L·n")
+CASIMIR = Integral("n_squared", "|n|^2 = n1^2 + n2^2 + n3^2 = 1",
+                   r"|\tilde n|^2 = n_1^2 + n_2^2 + n_3^2 = 1", _n_squared,
+                   meaning="the squared length of the vertical n (1: a Casimir)")
 
 #: The Lagrange case of a spherical body (I₁ = I₂ = I₃): every axis is a symmetry axis, the one
 #: through r_c included, wherever r_c is.
 SPHERE = Integral("L_dot_rc", "L . r_c = L1 cx + L2 cy + L3 cz (spherical body: I1 = I2 = I3)",
                   r"\tilde L\cdot\tilde r_c = L_1 c_x + L_2 c_y + L_3 c_z\quad(I_1 = I_2 = I_3)",
-                  _L_dot_rc, relations={"I2": "I1", "I3": "I1"})
+                  _L_dot_rc, relations={"I2": "I1", "I3": "I1"}, unit="kg m^3 s^-1",
+                  meaning="L·r_c, |r_c| times the component of L along the centre of mass (spherical "
+                          "body I1 = I2 = I3, case lagrange)")
 
 #: The extra integral of each case.
 EXTRA = {
-    "euler": Integral("L2", "|L|^2 = L1^2 + L2^2 + L3^2",
-                      r"|\tilde L|^2 = L_1^2 + L_2^2 + L_3^2", _L_squared),
-    "lagrange": Integral("L3", "L3 = I3 omega3 = p_gamma",
-                         r"L_3 = I_3\tilde\omega_3 = p_\gamma", _L3),
+    "euler": Integral("L_squared", "|L|^2 = L1^2 + L2^2 + L3^2",
+                      r"|\tilde L|^2 = L_1^2 + L_2^2 + L_3^2", _L_squared, unit="kg^2 m^4 s^-2",
+                      meaning="|L|², the squared length of the angular momentum (free body, "
+                              "case euler); never a component"),
+    "lagrange": Integral("L_3", "L3 = I3 omega3 = p_gamma",
+                         r"L_3 = I_3\tilde\omega_3 = p_\gamma", _L3, unit="kg m^2 s^-1",
+                         meaning=_lagrange_meaning(3)),
     "kovalevskaya": Integral(
         "kovalevskaya",
         "K = (w1^2 - w2^2 - (M g/I3)(cx n1 - cy n2))^2 + (2 w1 w2 - (M g/I3)(cx n2 + cy n1))^2, "
@@ -150,13 +186,16 @@ EXTRA = {
         r"K = \left|(\tilde\omega_1 + i\tilde\omega_2)^2 - \frac{M g}{I_3}(c_x + i c_y)(n_1 + i n_2)\right|^2"
         r" = \left(\tilde\omega_1^2 - \tilde\omega_2^2 - \frac{Mg}{I_3}(c_x n_1 - c_y n_2)\right)^2"
         r" + \left(2\tilde\omega_1\tilde\omega_2 - \frac{Mg}{I_3}(c_x n_2 + c_y n_1)\right)^2",
-        _kovalevskaya),
+        _kovalevskaya, unit="s^-4",
+        meaning="Kovalevskaya's quartic integral K (I1 = I2 = 2 I3, r_c equatorial)"),
     "goryachev-chaplygin": Integral(
         "goryachev_chaplygin",
         "G = w3 (w1^2 + w2^2) - (M g/I3)(cx w1 + cy w2) n3, w = L/I (conserved on L . n = 0)",
         r"G = \tilde\omega_3(\tilde\omega_1^2 + \tilde\omega_2^2) - \frac{M g}{I_3}"
         r"(c_x\tilde\omega_1 + c_y\tilde\omega_2)\,n_3\quad(\text{on } \tilde L\cdot\tilde n = 0)",
-        _goryachev_chaplygin, on="L.n = 0"),
+        _goryachev_chaplygin, on="L.n = 0", unit="s^-3",
+        meaning="the Goryachev-Chaplygin integral G (I1 = I2 = 4 I3, r_c equatorial), written "
+                "only for a state on L·n = 0"),
 }
 
 
@@ -184,7 +223,7 @@ def relabel_params(p: dict, axes) -> dict:
 def relabelled(integral: Integral, axes) -> Integral:
     """The integral in the body's own axes when the formulas' axes (1, 2, 3) are body axes
     ``axes`` (+1): its formula permutes L, n and the parameters first; the Lagrange integral
-    is renamed after the body axis it is about (L3 → L1 for a body symmetric about axis 1)."""
+    is renamed after the body axis it is about (L_3 → L_1 for a body symmetric about axis 1)."""
     if tuple(axes) == RELABELLINGS[0]:
         return integral
     formula = integral.formula
@@ -193,22 +232,28 @@ def relabelled(integral: Integral, axes) -> Integral:
         return formula(tuple(L[a] for a in _axes), tuple(n[a] for a in _axes), relabel_params(p, _axes))
 
     body = ", ".join(str(a + 1) for a in axes)
-    name = f"L{axes[2] + 1}" if integral.name == "L3" else integral.name
+    lagrange = integral.name == EXTRA["lagrange"].name
+    name = f"L_{axes[2] + 1}" if lagrange else integral.name
+    meaning = _lagrange_meaning(axes[2] + 1) if lagrange else integral.meaning
     return Integral(name, f"{integral.expression} [axes 1, 2, 3 of this formula = body axes {body}]",
                     rf"{integral.latex}\quad[(1, 2, 3) \to \text{{body axes }} ({body})]", f,
-                    on=integral.on, relations=integral.relations)
+                    on=integral.on, relations=integral.relations, unit=integral.unit,
+                    meaning=meaning)
 
 
 @dataclass(frozen=True)
 class Classification:
     """The case of a scene and why (one sentence); ``axes`` the body axes (0-based) that play
-    the formulas' axes 1, 2, 3 (the symmetry axis of the case is body axis axes[2] + 1)."""
+    the formulas' axes 1, 2, 3 (the symmetry axis of the case is body axis axes[2] + 1);
+    ``body_case`` the case of the body's numbers when the scene's state rules it out (a
+    Goryachev–Chaplygin body off the level L·n = 0: ``case`` is then "general")."""
 
     case: str
     reason: str
     dissipative: bool = False
     integral: str | None = None  # the extra integral's name when it is not EXTRA[case]'s
     axes: tuple = RELABELLINGS[0]
+    body_case: str | None = None
 
     @property
     def canonical_extra(self) -> Integral | None:
@@ -292,12 +337,39 @@ def _classify(I1, I2, I3, M, g, com, damping) -> Classification:
                                      "symmetry axis, not a Kovalevskaya or Goryachev-Chaplygin ratio")
 
 
+def area_level(scene) -> tuple[float, float]:
+    """(L·n, |L||n|) at the scene's initial state: L = I ω̃(0) and n = Rᵀẑ =
+    (−sin β cos γ, sin β sin γ, cos β) in body axes (z-y-z angles; α does not enter)."""
+    i = scene.initial
+    sb = math.sin(i.beta)
+    n = (-sb * math.cos(i.gamma), sb * math.sin(i.gamma), math.cos(i.beta))
+    L = tuple(m * w for m, w in zip(scene.body.moments, i.omega))
+    return math.fsum(a * b for a, b in zip(L, n)), math.hypot(*L) * math.hypot(*n)
+
+
+def on_area_level(scene) -> bool:
+    """True when the scene starts on L·n = 0 (|L·n| ≤ TOLERANCE·|L||n|), the level on which
+    the Goryachev–Chaplygin integral exists."""
+    ln, scale = area_level(scene)
+    return abs(ln) <= TOLERANCE * scale
+
+
 def classify(scene) -> Classification:
-    """The integrable case of a scene (``derive.sim.scene.Scene``)."""
+    """The integrable case of a scene (``derive.sim.scene.Scene``): the case of its numbers
+    (``classify_values``), except that a Goryachev–Chaplygin body whose initial state is off the
+    level L·n = 0 (``on_area_level``) is "general": G is conserved only on that level, so this
+    motion has no fourth integral (``body_case`` keeps "goryachev-chaplygin")."""
     p = parameters(scene)
     damping = scene.damping.c if scene.damping is not None else 0.0
-    return classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
-                           damping)
+    c = classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
+                        damping)
+    if c.case == "goryachev-chaplygin" and not on_area_level(scene):
+        ln, scale = area_level(scene)
+        return Classification("general", f"{c.reason}, but this state is off that level: L.n = "
+                                         f"{ln:.6g} kg m^2 s^-1 (|L||n| = {scale:.6g}), so G is "
+                                         "not conserved and no fourth integral is known",
+                              body_case=c.case)
+    return c
 
 
 def integrals(c: Classification) -> list[Integral]:
@@ -308,10 +380,24 @@ def integrals(c: Classification) -> list[Integral]:
     return [ENERGY, AREA, CASIMIR] + ([c.extra] if c.extra else [])
 
 
+def output_integrals() -> list[Integral]:
+    """Every extra integral a simulation can write as ``integral_<name>``, in the body's axes
+    (each cyclic relabelling of each case's integral, one entry per name): the registry the
+    generated ``outputs.md`` lists."""
+    out: dict[str, tuple[int, Integral]] = {}
+    for k, integral in enumerate((EXTRA["euler"], EXTRA["lagrange"], SPHERE, EXTRA["kovalevskaya"],
+                                  EXTRA["goryachev-chaplygin"])):
+        for axes in RELABELLINGS:
+            named = relabelled(integral, axes)
+            out.setdefault(named.name, (k, named))
+    return [i for _, i in sorted(out.values(), key=lambda x: (x[0], x[1].name))]
+
+
 def integrals_for(scene) -> list[tuple[str, Callable]]:
-    """The extra integral of the scene's case as ``[(name, f)]`` with ``f(L, n) -> array``
-    (L, n of shape (N, 3), body axes) at the scene's numbers: the simulation writes it as
-    ``integral_<name>``. Empty for the general case (energy and L·n are outputs already)."""
+    """The extra integral of the scene's case (``classify``: its state included) as
+    ``[(name, f)]`` with ``f(L, n) -> array`` (L, n of shape (N, 3), body axes) at the scene's
+    numbers: the simulation writes it as ``integral_<name>``. Empty for the general case
+    (energy and L·n are outputs already) and for a Goryachev–Chaplygin body off L·n = 0."""
     integral = classify(scene).extra
     if integral is None:
         return []

@@ -172,7 +172,9 @@ def euler_free(symmetric: bool = False) -> Model:
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     moments = _moments(symmetric)
     outputs = {"energy": sp.Rational(1, 2) * sum(m * wi**2 for m, wi in zip(moments, w)),
-               "L2": sum((m * wi) ** 2 for m, wi in zip(moments, w)), "omega": tuple(w)}
+               # |L|², named as the integral it is (an "L2" would read as the component L₂,
+               # which the other models' observables call L2)
+               "L_squared": sum((m * wi) ** 2 for m, wi in zip(moments, w)), "omega": tuple(w)}
     return Model("euler_free", "euler", "torque-free Euler equations in principal body axes",
                  tuple(w), _moment_params(symmetric), tuple(euler_rhs(moments, w)), outputs,
                  init=_omega_in())

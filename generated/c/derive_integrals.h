@@ -16,12 +16,12 @@
 
 enum {
     DERIVE_INTEGRAL_NONE = 0,
-    DERIVE_INTEGRAL_L2 = 1,
-    DERIVE_INTEGRAL_L3 = 2,
+    DERIVE_INTEGRAL_L_SQUARED = 1,
+    DERIVE_INTEGRAL_L_3 = 2,
     DERIVE_INTEGRAL_L_DOT_RC = 3,
     DERIVE_INTEGRAL_KOVALEVSKAYA = 4,
     DERIVE_INTEGRAL_GORYACHEV_CHAPLYGIN = 5,
-    DERIVE_INTEGRAL_N_NORM = 6,
+    DERIVE_INTEGRAL_N_SQUARED = 6,
     DERIVE_INTEGRAL_P_ALPHA = 7
 };
 
@@ -51,13 +51,13 @@ static inline double derive_integral(int which, const double *L, const double *n
     const double cz = q[DERIVE_INTEGRAL_P_CZ];
     const double Lnorm = sqrt(L1 * L1 + L2 * L2 + L3 * L3), nnorm = sqrt(n1 * n1 + n2 * n2 + n3 * n3);
     switch (which) {
-    case DERIVE_INTEGRAL_L2:
+    case DERIVE_INTEGRAL_L_SQUARED:
         /* |L|^2 = L1^2 + L2^2 + L3^2 */
         *scale = 3*pow(Lnorm, 2);
         return pow(L1, 2)
             + pow(L2, 2)
             + pow(L3, 2);
-    case DERIVE_INTEGRAL_L3:
+    case DERIVE_INTEGRAL_L_3:
         /* L3 = I3 omega3 = p_gamma */
         *scale = Lnorm;
         return L3;
@@ -80,7 +80,7 @@ static inline double derive_integral(int which, const double *L, const double *n
             + pow(Lnorm, 3)*(1/(pow(I2, 2)*I3) + 1/(pow(I1, 2)*I3));
         return L3*(pow(L2, 2)/pow(I2, 2) + pow(L1, 2)/pow(I1, 2))/I3
             - M*g*n3*(L2*cy/I2 + L1*cx/I1)/I3;
-    case DERIVE_INTEGRAL_N_NORM:
+    case DERIVE_INTEGRAL_N_SQUARED:
         /* |n|^2 = n1^2 + n2^2 + n3^2 = 1 */
         *scale = 3*pow(nnorm, 2);
         return pow(n1, 2)

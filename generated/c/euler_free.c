@@ -9,7 +9,7 @@
 
 const char *const euler_free_state_names[euler_free_NY] = { "omega1", "omega2", "omega3" };
 const char *const euler_free_param_names[euler_free_NP] = { "I1", "I2", "I3" };
-const char *const euler_free_observable_names[euler_free_NOBS] = { "energy", "L2", "omega1", "omega2", "omega3" };
+const char *const euler_free_observable_names[euler_free_NOBS] = { "energy", "L_squared", "omega1", "omega2", "omega3" };
 
 int euler_free_rhs(double t, const double *y, const double *p, double *dydt)
 {

@@ -34,7 +34,7 @@ int euler_free_rhs(double t, const double *y, const double *p, double *dydt);
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int euler_free_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (energy, L2, omega1, omega2, omega3). Returns 0. */
+/* out = (energy, L_squared, omega1, omega2, omega3). Returns 0. */
 int euler_free_observables(double t, const double *y, const double *p, double *out);
 
 /* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)

@@ -19,7 +19,7 @@ NAME = "euler_free"
 FORMULATION = "euler"
 STATE_NAMES = ("omega1", "omega2", "omega3", )
 PARAM_NAMES = ("I1", "I2", "I3", )
-OBSERVABLE_NAMES = ("energy", "L2", "omega1", "omega2", "omega3", )
+OBSERVABLE_NAMES = ("energy", "L_squared", "omega1", "omega2", "omega3", )
 DBL_EPSILON = numpy.finfo(float).eps
 NY = 3
 NP = 3
@@ -128,5 +128,5 @@ def _observables(t, y, p, out):
 
 
 def observables(t, y, p):
-    """(energy, L2, omega1, omega2, omega3), shape (NOBS,) + trailing."""
+    """(energy, L_squared, omega1, omega2, omega3), shape (NOBS,) + trailing."""
     return _blocks(_observables, 5, t, y, p)
