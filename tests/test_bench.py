@@ -167,7 +167,7 @@ def test_scipy_baseline_reaches_the_exact_solution():
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     res = suite.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()
-    for heading in ("Targets (issues 8 and 11)", "Kernel speed", "Work–precision", "Drift", "Load average"):
+    for heading in ("## Targets, measured side by side", "Kernel speed", "Work–precision", "Drift", "Load average"):
         assert heading in report
     for wp in res["work_precision"]:
         png = tmp_path / wp["plot"]
@@ -202,7 +202,7 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     assert data["settings"]["name"] == "smoke" and data["machine"]["versions"]["scipy"]
     assert (tmp_path / "points.csv").read_text().count("\n") > 4
     summary = (tmp_path / "summary.md").read_text()
-    assert "target (issues 8 and 11)" in summary and "| looping_top | SciPy" in summary
+    assert "| target | goal | measured |" in summary and "| looping_top | SciPy" in summary
 
 
 # ---------------------------------------------------------------------------------------------

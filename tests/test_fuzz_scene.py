@@ -280,6 +280,8 @@ number_texts = st.one_of(
 FLAGS = {
     "--rtol": number_texts, "--atol": number_texts, "--h": number_texts,
     "--max-steps": st.sampled_from(["0", "-5", "1", "100", "1e3", "20000", "x", "99999999999999999999"]),
+    "--t-end": number_texts,  # bounded by the bases' max_steps (an adaptive run) or refused
+    "--samples": st.sampled_from(["0", "1", "2", "7", "-3", "2.5", "x", "99999999999", "1e3"]),
     "--method": st.one_of(st.sampled_from(list(METHODS)), texts),
     "--formulation": st.one_of(st.sampled_from(FORMULATIONS), texts),
 }

@@ -12,7 +12,7 @@
 
 The command line runs in a real process (``python -m derive``) where the exit status, the
 streams and the files are what is checked; in-process (``derive.cli.main``) where a slow step is
-replaced by a stub (``derive.catalogue`` and ``derive.analysis`` are imported for that).
+replaced by a stub (``derive.runtime.catalogue`` and ``derive.lecture.analysis`` are imported for that).
 """
 from __future__ import annotations
 
@@ -493,3 +493,191 @@ def test_first_run_of_an_unshipped_model_notes_on_a_terminal_and_keeps_stdout_cl
     assert all(n.startswith("note: ") for n in notes) and any("compiling" in n for n in notes)
     code, out, err = _run_on_a_terminal(["simulate", scene, "--json"], tty_env)
     assert code == 0 and err == ""  # the second run: derived and compiled already
+
+
+# --- 9. figures that do not mislead (derive.sim.plots, derive.sweeps.maps, derive.bench.runner) ------------
+
+
+@pytest.fixture(scope="module")
+def mpl():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    yield plt
+    plt.close("all")
+
+
+LOOPING = {"title": "looping top",
+           "body": {"I1": 1.8e-4, "I3": 4.0e-5},
+           "gravity": {"M": 0.1, "g": 9.81, "l": 0.04},
+           "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0, "alpha_dot": 0.0, "beta_dot": 0.0,
+                       "gamma_dot": 150.0},
+           "simulate": {"t_end": 0.5, "samples": 201}}
+
+
+def test_trajectory_figure_draws_a_constant_spin_at_its_true_scale(mpl):
+    from derive.sim import plots
+
+    res = derive.simulate(LOOPING)
+    w3 = res.omega[:, 2]
+    dev = float(np.max(np.abs(w3 - w3[0])))
+    assert 0 < dev < 1e-6 * abs(w3[0])  # ω̃₃ is conserved: only round-off moves it
+    fig = plots.figure(res)
+    assert fig.get_suptitle().startswith("looping top\n")
+    (left,) = [ax for ax in fig.axes if ax.get_label() == "omega"]
+    (right,) = [ax for ax in fig.axes if ax.get_label() == "omega:twin"]
+    assert right.get_ylabel() == "ω̃₃ [rad/s]" and left.get_ylabel() == "ω̃₁, ω̃₂ [rad/s]"
+    (line,) = right.get_lines()
+    np.testing.assert_array_equal(line.get_ydata(), w3)  # ω̃₃ itself, not ω̃₃ − ω̃₃(0)
+    lo, hi = right.get_ylim()
+    assert lo < 0 < np.max(w3) < hi
+    assert np.ptp(w3) / (hi - lo) < 1e-9  # the round-off wobble stays invisible: a flat line
+    # The two axes share their zero line, so heights compare.
+    l_lo, l_hi = left.get_ylim()
+    assert -l_lo / (l_hi - l_lo) == pytest.approx(-lo / (hi - lo), rel=1e-12)
+    labels = [t.get_text() for t in left.get_legend().get_texts()]
+    assert f"ω̃₃ (right axis), constant within {dev:.1e} rad/s" in labels
+
+
+def _sweep(spec):
+    return derive.sweep(spec, processes=1)
+
+
+@pytest.fixture(scope="module")
+def sleeping_map():
+    """A small spin × tilt map of a sleeping top; at high spin the top never tilts past 1 rad
+    within t_end, so those points have time_to_tilt = NaN."""
+    scene = {"title": "Sleeping top (spin above the stability threshold)",
+             "body": {"I1": 1.8e-4, "I3": 4.0e-5}, "gravity": {"M": 0.1, "g": 9.81, "l": 0.04},
+             "initial": {"alpha": 0.0, "beta": 0.1, "gamma": 0.0, "alpha_dot": 0.0,
+                         "beta_dot": 0.0, "gamma_dot": 200.0},
+             "simulate": {"t_end": 1.0, "rtol": 1e-8}}
+    return _sweep({"scene": scene,
+                   "vary": {"initial.beta": {"from": 0.05, "to": 0.5, "num": 3},
+                            "initial.gamma_dot": {"values": [60.0, 100.0, 250.0, 300.0]}},
+                   "measure": {"names": ["time_to_tilt"], "time_to_tilt": {"angle": 1.0}}})
+
+
+def test_sweep_map_is_titled_by_the_sweep_labelled_by_symbol_and_marks_nan(mpl, sleeping_map):
+    from derive.sweeps import maps as sweep_maps
+
+    res = sleeping_map
+    z = res.measures["time_to_tilt"]
+    never = int(np.sum(res.ok & np.isnan(z)))
+    assert 0 < never < len(z)  # both kinds of point, else the test proves nothing
+    fig = sweep_maps.sweep_figure(res, "time_to_tilt")
+    (ax,) = [a for a in fig.axes if a.get_label() == "sweep"]
+    head, base = ax.get_title().split("\n")
+    assert head == f"time_to_tilt over β₀ × γ̇₀: {len(z)} points (0 failed)"
+    assert base == "base scene: Sleeping top (spin above the stability threshold)"
+    assert ax.get_xlabel() == "γ̇₀ (initial.gamma_dot) [rad/s]"
+    assert ax.get_ylabel() == "β₀ (initial.beta) [rad]"
+    (painted,) = [c for c in ax.collections if c.get_gid() == "nan"]
+    cells = np.ma.getmaskarray(painted.get_array())
+    assert int(np.sum(~cells)) == never  # exactly the NaN cells are painted
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert f"time_to_tilt = NaN (never within t_end = 1 s): {never} points" in legend
+    assert not [c for c in ax.collections if c.get_gid() == "failed"]
+
+
+def test_sweep_map_marks_failed_points_apart_from_nan(mpl, sleeping_map):
+    import dataclasses
+
+    from derive.sweeps import maps as sweep_maps
+
+    status = sleeping_map.status.copy()
+    status[0] = "t = 0.5: step budget spent"
+    res = dataclasses.replace(sleeping_map, status=status)
+    fig = sweep_maps.sweep_figure(res, "time_to_tilt")
+    (ax,) = [a for a in fig.axes if a.get_label() == "sweep"]
+    (failed,) = [c for c in ax.collections if c.get_gid() == "failed"]
+    assert int(np.sum(~np.ma.getmaskarray(failed.get_array()))) == 1
+    assert "(1 failed)" in ax.get_title()
+    assert "failed: 1 point (see the status column)" in [t.get_text() for t in ax.get_legend().get_texts()]
+
+
+def test_flip_line_is_one_based_with_its_slope_per_decade_and_nan_marked(mpl):
+    import math
+
+    from derive.sweeps import maps as sweep_maps
+
+    I1, I2, I3, w2 = 1.0e-3, 2.0e-3, 2.5e-3, 10.0
+    spec = {"scene": {"title": "Tennis racket", "body": {"I1": I1, "I2": I2, "I3": I3},
+                      "initial": {"alpha": 0.0, "beta": math.pi / 2, "gamma": math.pi / 2,
+                                  "omega": [1e-3, w2, 0.0]},
+                      "simulate": {"t_end": 2.0}},
+            "vary": {"initial.omega.0": {"values": [1e-8, 1e-6, 1e-2, 1e-1, 1.0]}},
+            "measures": ["time_to_flip"]}
+    res = _sweep(spec)
+    z = res.measures["time_to_flip"]
+    assert np.sum(np.isnan(z)) == 2  # ε = 1e-8, 1e-6: no flip within 2 s
+    fig = sweep_maps.sweep_figure(res, "time_to_flip")
+    (ax,) = [a for a in fig.axes if a.get_label() == "sweep"]
+    assert ax.get_xlabel() == "ω̃₁(0), body frame [rad/s]" and ax.get_xscale() == "log"
+    assert "initial.omega.0" not in ax.get_xlabel() + ax.get_title()
+    assert ax.get_title().startswith("time_to_flip over ω̃₁(0): 5 points")
+    (nan,) = [ln for ln in ax.get_lines() if ln.get_gid() == "nan"]
+    np.testing.assert_array_equal(np.sort(nan.get_xdata()), [1e-8, 1e-6])
+    assert nan.get_label() == "time_to_flip = NaN (none within t_end = 2 s): 2 points"
+    lam = w2 * math.sqrt((I2 - I1) * (I3 - I2) / (I1 * I3))
+    (pred,) = [ln for ln in ax.get_lines() if ln.get_label().startswith("linearised")]
+    assert f"slope −ln 10/λ = −{math.log(10) / lam:.3g} s per decade of ω̃₁(0)" in pred.get_label()
+    x, y = np.asarray(pred.get_xdata()), np.asarray(pred.get_ydata())
+    slope = np.polyfit(np.log10(x), y, 1)[0]  # what a reader measures on the log10 axis
+    assert slope == pytest.approx(-math.log(10) / lam, rel=1e-12)
+
+
+def _wp_points(family, method, formulation, t0, n, failed=0):
+    from derive.bench.runner import Point
+
+    pts = [Point("s", family, method, formulation, f"rtol=1e-{k + 4}", t0 * 1.6 ** k,
+                 int(1000 * 1.6 ** k), 10.0 ** (-4 - k)) for k in range(n)]
+    pts += [Point("s", family, method, formulation, "rtol=1e-14", t0 * 100, 10**6, float("nan"),
+                  "failed") for _ in range(failed)]
+    return pts
+
+
+def test_work_precision_series_differ_by_colour_and_marker_in_a_grouped_legend(mpl):
+    from matplotlib.colors import to_rgba
+
+    from derive.bench.runner import Curve, work_precision_figure
+
+    curves = [Curve("ours", "dop853", form, _wp_points("ours", "dop853", form, 1e-3 * (1 + k), 6,
+                                                         failed=int(form == "quaternion")))
+              for k, form in enumerate(["reduced", "euler-angles", "quaternion", "euler-poisson"])]
+    curves += [Curve("ours", m, "euler-angles", _wp_points("ours", m, "euler-angles", 2e-3, 5))
+               for m in ("rk4", "gauss4", "gauss6")]
+    curves += [Curve("scipy", m, "euler-angles", _wp_points("scipy", m, "euler-angles", 5e-3, 5,
+                                                             failed=2 * (m == "scipy-radau")))
+               for m in ("scipy-dop853", "scipy-lsoda", "scipy-radau", "scipy-odeint")]
+    curves += [Curve("casadi", m, "quaternion", _wp_points("casadi", m, "quaternion", 4e-3, 5))
+               for m in ("casadi-cvodes-adams", "casadi-cvodes-bdf", "casadi-idas")]
+    curves.append(Curve("pydy", "pydy-odeint", "euler-angles",
+                        _wp_points("pydy", "pydy-odeint", "euler-angles", 6e-3, 5)))
+    wp = {"scene": "s", "title": "A top", "t_end": 2.0, "reference": "exact", "curves": curves}
+    fig = work_precision_figure(wp)
+    time_ax, nfev_ax = fig.axes
+    assert (time_ax.get_label(), nfev_ax.get_label()) == ("time", "nfev")
+    assert fig.get_suptitle().startswith("A top — work–precision")
+    assert time_ax.get_xlabel().startswith("wall time") and nfev_ax.get_xlabel().startswith("right-hand")
+    assert time_ax.get_ylabel().startswith("max |ê₃ − ê₃,ref|")
+    series = [ln for ln in time_ax.get_lines() if not ln.get_label().startswith("_")]
+    assert len(series) == len(curves) == 15
+    keys = {(to_rgba(ln.get_color()), ln.get_marker()) for ln in series}
+    assert len(keys) == len(series)  # colour + marker tell every series apart
+    assert len({to_rgba(ln.get_color()) for ln in series if ln.get_marker() == "s"}) == \
+        sum(ln.get_marker() == "s" for ln in series)  # the same formulation: colours differ
+    # Failed runs are drawn (x on the top edge), not dropped, and counted in the legend.
+    failed = [ln for ln in time_ax.get_lines() if ln.get_gid() == "failed"]
+    assert sorted(len(ln.get_xdata()) for ln in failed) == [1, 2]
+    (legend,) = fig.legends
+    texts = legend.get_texts()
+    bold = [t.get_text() for t in texts if t.get_fontweight() == "bold"]
+    assert bold == ["derive (filled, solid)", "SciPy (hollow, dashed)", "CasADi (hollow, dashed)",
+                    "PyDy (hollow, dashed)"]
+    labels = [t.get_text() for t in texts]
+    assert labels.index("dop853 / quaternion (1 failed, x on the top edge)") < labels.index(bold[1])
+    assert "scipy-radau / euler-angles (2 failed, x on the top edge)" in labels
+    assert len(labels) == len(curves) + len(bold)

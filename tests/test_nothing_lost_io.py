@@ -13,7 +13,7 @@ import time
 import pytest
 
 import derive
-from derive.render import ROOT
+from derive.codegen.render import ROOT
 
 TOP = """title = "A heavy top"
 [body]
@@ -115,8 +115,8 @@ def test_sweep_refuses_an_output_that_is_its_file_or_its_scene(files, target):
 def test_the_python_writers_refuse_their_inputs(files):
     # Internal modules: derive.simulate and derive.sweep return results; the writers that put
     # them into files are simulation.write_outputs and sweeps.write.
-    from derive.simulation import write_outputs
-    from derive.sweeps import write
+    from derive.sim.simulation import write_outputs
+    from derive.sweeps.engine import write
 
     scene, sweep = files
     res = derive.simulate(str(scene))
@@ -165,7 +165,7 @@ def test_analyze_extreme_numbers_exit_0_or_3_with_one_line(tmp_path, capsys, old
 def test_analyze_verdicts_at_1e300_are_those_of_the_scaled_top(tmp_path):
     """M = 1e300 with a slow spin: the sleeping top is unstable (p_gamma far below the threshold
     sqrt(4 M g l I1)), the hanging top stable, as at ordinary numbers with the same ordering."""
-    from derive import analysis
+    from derive.lecture import analysis
 
     path = tmp_path / "top.toml"
     path.write_text(_extreme(TOP, "M = 1.0", "M = 1e300"))
@@ -277,7 +277,7 @@ def test_the_documented_rtol_floor_is_accepted_and_is_the_floor(tmp_path):
 
 
 def test_a_huge_title_is_cut_for_the_plot(tmp_path):
-    from derive.plots import TITLE_DISPLAY_LIMIT, display_title
+    from derive.sim.plots import TITLE_DISPLAY_LIMIT, display_title
 
     shown = display_title("a $b$ title\nover lines " + "x" * 10**6)
     assert len(shown.replace("\\$", "$")) == TITLE_DISPLAY_LIMIT and shown.endswith("…")

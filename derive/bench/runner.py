@@ -645,46 +645,109 @@ def work_precision(cfg: Settings, name: str, fams: list[str]) -> dict:
             "t_end": float(data["simulate"]["t_end"]), "samples": int(data["simulate"].get("samples", 1001))}
 
 
-_COLORS = {"dop853": "C0", "rk4": "C1", "gauss4": "C2", "gauss6": "C3", "splitting2": "tab:olive",
-           "splitting4": "tab:brown", "splitting6": "tab:pink",
-           "scipy-dop853": "C4", "scipy-lsoda": "C5", "scipy-radau": "C6", "scipy-odeint": "navy",
-           "casadi-cvodes-adams": "C7", "casadi-cvodes-bdf": "C8", "casadi-idas": "C9", "pydy-odeint": "k"}
-_STYLES = {"reduced": "-", "euler-angles": "--", "quaternion": ":", "euler-poisson": "-."}
-_MARKERS = {"ours": "o", "scipy": "s", "casadi": "^", "pydy": "D"}
+# Work-precision plots: a series is (family, method, formulation), up to about twenty of them.
+# Colour names the method (no two methods share one, across all families), the marker the
+# formulation; derive's series are filled and solid, the contenders' hollow and dashed; the
+# legend lists them grouped by family. Dash style alone could not tell twenty series apart.
+_COLORS = {  # Kelly's colours of maximum contrast, black for the one PyDy series
+    "dop853": "#0067A5", "rk4": "#F38400", "gauss4": "#008856", "gauss6": "#BE0032",
+    "splitting2": "#8DB600", "splitting4": "#882D17", "splitting6": "#E68FAC", "taylor": "#A1CAF1",
+    "scipy-dop853": "#875692", "scipy-lsoda": "#654522", "scipy-radau": "#B3446C",
+    "scipy-odeint": "#2B3D26", "scipy-rk45": "#604E97",
+    "casadi-cvodes-adams": "#848482", "casadi-cvodes-bdf": "#C2B280", "casadi-idas": "#008080",
+    "pydy-odeint": "k"}
+_MARKERS = {"reduced": "o", "euler-angles": "s", "quaternion": "^", "euler-poisson": "D"}
+_FAMILY_NAMES = {"ours": "derive (filled, solid)", "scipy": "SciPy (hollow, dashed)",
+                 "casadi": "CasADi (hollow, dashed)", "pydy": "PyDy (hollow, dashed)"}
 
 
-def plot_work_precision(wp: dict, path: Path) -> None:
+def _series_style(c) -> dict:
+    ours = c.family == "ours"
+    colour = _COLORS.get(c.method, "0.3")
+    return dict(color=colour, ls="-" if ours else "--", marker=_MARKERS.get(c.formulation, "x"),
+                ms=5 if ours else 6, lw=1.3, mfc=colour if ours else "none", mew=1.2)
+
+
+def work_precision_figure(wp: dict):
+    """The work–precision figure of one scene (matplotlib Figure, not saved): error against wall
+    time (left axes, label ``"time"``) and against rhs evaluations (right, ``"nfev"``).
+
+    Each series (family, method, formulation) has its own colour + marker pair: colour = the
+    method, marker = the formulation (○ reduced, □ Euler angles, △ quaternion, ◇ Euler–Poisson);
+    derive filled and solid, contenders hollow and dashed. The legend groups the series by
+    family. A run that failed or gave no error is not dropped silently: it is an ``x`` on the
+    top edge at its cost (gid ``"failed"``), and its series' legend entry counts them.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
 
-    fig, axes = plt.subplots(1, 2, figsize=(15, 6), constrained_layout=True)
+    fig, axes = plt.subplots(1, 2, figsize=(16, 6.4), constrained_layout=True)
+    axes[0].set_label("time")
+    axes[1].set_label("nfev")
     fig.suptitle(f"{wp['title'] or wp['scene']} — work–precision, t ∈ [0, {wp['t_end']:g}] s, "
                  f"error vs {wp['reference']}")
     floor = 1e-16
+    groups: dict[str, list] = {}
     for c in wp["curves"]:
+        style = _series_style(c)
         pts = [p for p in c.points if p.ok]  # in sweep order: loose to tight
-        if not pts:
+        bad = [p for p in c.points if not p.ok]
+        label = c.label + (f" ({len(bad)} failed, x on the top edge)" if bad else "")
+        if pts:
+            err = [max(p.error, floor) for p in pts]
+            axes[0].loglog([p.time for p in pts], err, label=label, **style)
+            axes[1].loglog([max(p.nfev, 1) for p in pts], err, **style)
+        for ax, cost in zip(axes, ([p.time for p in bad], [max(p.nfev, 1) for p in bad])):
+            cost = [x for x in cost if np.isfinite(x)]
+            if cost:
+                ax.plot(cost, [0.98] * len(cost), ls="none", marker="x", color=style["color"],
+                        ms=7, mew=1.5, clip_on=False, transform=ax.get_xaxis_transform(),
+                        gid="failed")
+        if not pts and not bad:
             continue
-        err = [max(p.error, floor) for p in pts]
-        style = dict(color=_COLORS.get(c.method, "0.3"), ls=_STYLES.get(c.formulation, "-"),
-                     marker=_MARKERS.get(c.family, "x"), ms=4, lw=1.3,
-                     mfc=None if c.family == "ours" else "none")
-        label = f"{'derive' if c.family == 'ours' else c.family}: {c.label}"
-        axes[0].loglog([p.time for p in pts], err, label=label, **style)
-        axes[1].loglog([max(p.nfev, 1) for p in pts], err, **style)
+        handle = Line2D([], [], **style)
+        groups.setdefault(c.family, []).append((handle, label))
     for ax, xlabel in zip(axes, ("wall time per solve [s] (median)", "right-hand-side evaluations")):
         for level in ERROR_LEVELS:
             ax.axhline(level, color="0.85", lw=0.8, zorder=0)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
         ax.set_xlabel(xlabel)
         ax.set_ylabel(f"max |ê₃ − ê₃,ref| over the output times (floor {floor:g})")
         ax.grid(True, which="major", color="0.9")
-    axes[0].set_title("error vs time (derive: filled; SciPy □, CasADi △, PyDy ◇)")
+    axes[0].set_title("error vs time (colour = method, marker = formulation)")
     axes[1].set_title("error vs rhs evaluations")
-    fig.legend(*axes[0].get_legend_handles_labels(), fontsize=7, loc="outside right center")
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    # One legend, grouped: a bold header line per family, then its series.
+    handles, labels = [], []
+    order = list(_FAMILY_NAMES)
+    for family in sorted(groups, key=lambda f: (order.index(f) if f in order else len(order), f)):
+        handles.append(Line2D([], [], ls="none"))
+        labels.append(_FAMILY_NAMES.get(family, family))
+        for handle, label in groups[family]:
+            handles.append(handle)
+            labels.append(label)
+    if handles:
+        legend = fig.legend(handles, labels, fontsize=7, loc="outside right center",
+                            handlelength=3.0)
+        headers = {_FAMILY_NAMES.get(f, f) for f in groups}
+        for text in legend.get_texts():
+            if text.get_text() in headers:
+                text.set_fontweight("bold")
+    return fig
+
+
+def plot_work_precision(wp: dict, path: Path) -> None:
+    """Write :func:`work_precision_figure` to ``path`` (PNG, 100 dpi)."""
+    import matplotlib.pyplot as plt
+
+    fig = work_precision_figure(wp)
+    try:
+        fig.savefig(path, dpi=100)
+    finally:
+        plt.close(fig)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -340,10 +340,13 @@ def _routh():
     # evaluated.
     d2V_rate = sp.factor(trig_reduce(sp.together(d2V.subs(p_alpha, pa))))
     args = (I1, Mass, g, l, p_gamma, beta)
-    numeric = {"coefficients": sp.lambdify(args, sp.Poly(quad, alpha_d).all_coeffs(), "math"),
-               "discriminant": sp.lambdify(args, disc, "math"),
-               "d2V": sp.lambdify(args + (alpha_d,), d2V_rate, "math"),
-               "p_alpha": sp.lambdify(args + (alpha_d,), pa, "math")}
+    # Two backends of the same expressions: doubles, and mpmath (an unbounded exponent) for the
+    # scenes whose products of doubles overflow (I₁ = 1e300, p_γ = 1e200: tests of issue 22).
+    numeric = {backend: {
+        "coefficients": sp.lambdify(args, sp.Poly(quad, alpha_d).all_coeffs(), backend),
+        "discriminant": sp.lambdify(args, disc, backend),
+        "d2V": sp.lambdify(args + (alpha_d,), d2V_rate, backend),
+        "p_alpha": sp.lambdify(args + (alpha_d,), pa, backend)} for backend in ("math", "mpmath")}
     # About β = π, p_α = −p_γ (n = −ê₃ there). V_eff is invariant under β → π − β, p_α → −p_α,
     # l → −l (cos β changes sign, sin²β does not), so the series about π is the series about 0
     # with l → −l (tests/test_analyze.py checks the symmetry on V_eff itself).
@@ -615,16 +618,42 @@ class Precession:
                 "eigenvalues": [[float(z.real), float(z.imag)] for z in self.eigenvalues]}
 
 
-def _quadratic_roots(a: float, b: float, c: float, disc: float) -> list[float]:
+def _double(x) -> float:
+    """``x`` (a double or an mpmath number) as a double: ±inf beyond the range."""
+    try:
+        return float(x)
+    except OverflowError:
+        return math.copysign(math.inf, x)
+
+
+def _precession_numbers(num, args, real, lib):
+    """(discriminant, rates α̇, V_eff″ at each, p_α at each) of the steady-precession
+    quadratic at the scene's numbers, with ``num`` the backend's functions, ``real`` its number
+    type and ``lib`` its sqrt/copysign (math, or mpmath for an unbounded exponent)."""
+    args = tuple(real(a) for a in args)
+    coeffs = [real(x) for x in num["coefficients"](*args)]
+    dv = real(num["discriminant"](*args))
+    a, b, c = coeffs
+    # Δ = b² − 4ac is judged against its own terms (a marginal Δ is a double root); the largest
+    # coefficient squared would call a Δ of −1e300 "zero" when M g l = 1e300.
+    scale = max(b * b, abs(4 * a * c))
+    rates = _quadratic_roots(a, b, c, dv, lib) if dv >= -integrable.TOLERANCE * scale else []
+    curv = [real(num["d2V"](*args, ad)) for ad in rates]
+    pas = [real(num["p_alpha"](*args, ad)) for ad in rates]
+    return dv, rates, curv, pas
+
+
+def _quadratic_roots(a, b, c, disc, lib=math) -> list:
     """The real roots of a x² + b x + c = 0 with discriminant ``disc`` ≥ 0 (clipped at 0),
     ascending, without the cancellation in −b ± √Δ: the root of larger magnitude q/a with
     q = −(b + sign(b)√Δ)/2, the other c/q. a = 0 leaves the linear root. (At a small tilt the
     slow precession M g l/p_γ is the small root of the two.)"""
-    if a == 0.0:
-        return [] if b == 0.0 else [-c / b]
-    q = -0.5 * (b + math.copysign(math.sqrt(max(disc, 0.0)), b))
-    if q == 0.0:  # b = c = 0: the double root 0
-        return [0.0]
+    if a == 0:
+        return [] if b == 0 else [-c / b]
+    root = lib.sqrt(max(disc, 0 * disc))
+    q = -(b + (root if b >= 0 else -root)) / 2
+    if q == 0:  # b = c = 0: the double root 0
+        return [0 * q]
     return sorted({q / a, c / q})
 
 
@@ -647,17 +676,23 @@ def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
         return Equilibrium("steady-precession", axis, f"{sp.sstr(quad)} = 0", None, _latex(sp.Eq(quad, 0)),
                            "the scene's tilt is at a pole: no finite-tilt precession to evaluate",
                            "dV_eff/dbeta = 0", values, [])
-    num = R["numeric"]
     args = (top.I_perp, p["M"], p["g"], lval, pg, b0)
-    coeffs = [float(x) for x in num["coefficients"](*args)]
-    dv = float(num["discriminant"](*args))
-    scale = max(abs(x) for x in coeffs) ** 2
-    rates = _quadratic_roots(*coeffs, dv) if dv >= -integrable.TOLERANCE * scale else []
-    curv = [float(num["d2V"](*args, ad)) for ad in rates]
+    try:
+        dv, rates, curv, pas = _precession_numbers(R["numeric"]["math"], args, float, math)
+    except (OverflowError, ZeroDivisionError, ValueError):
+        dv = None
+    if dv is None or not all(math.isfinite(x) for x in (dv, *rates, *curv, *pas)):
+        import mpmath
+
+        with mpmath.workdps(30):  # the same formulas where a double over- or underflows
+            dv, rates, curv, pas = _precession_numbers(R["numeric"]["mpmath"], args, mpmath.mpf, mpmath)
     size = max((abs(x) for x in curv), default=0.0)
-    roots = [Precession(ad, float(num["p_alpha"](*args, ad)), c2, top.I_perp,
-                        {1: True, -1: False, 0: None}[_sign_tol(c2, size)])
-             for ad, c2 in zip(rates, curv)]
+    # the verdict from the exact-exponent numbers; the record keeps doubles (inf where a number
+    # is beyond the double range: _check_finite then names it, exit 3)
+    roots = [Precession(_double(ad), _double(pa), _double(c2), top.I_perp,
+                        {1: True, -1: False, 0: None}[_sign_ratio(c2, size)])
+             for ad, c2, pa in zip(rates, curv, pas)]
+    dv = _double(dv)
     values.update(discriminant=dv, alpha_dot_scene=top.alpha_dot, roots=roots,
                   # the records' fields as lists, in the records' order (the earlier keys)
                   alpha_dot_roots=[r.alpha_dot for r in roots],

@@ -7,8 +7,9 @@ writes it as PNG, PDF or SVG. Panels, three to a row:
   body). When β hardly moves (relative spread < 1e-6) the panel shows β − β(0) instead and
   says what β(0) is, rather than printing ticks that differ in the 12th digit.
 * ``omega``: the body components ω̃₁, ω̃₂, ω̃₃(t); ω̃₃ on its own right-hand axis when it is
-  more than ten times the others (a fast top). For an asymmetric body this is where the flip
-  about the intermediate axis shows.
+  more than ten times the others (a fast top), both axes symmetric about a common zero so that
+  a nearly constant ω̃₃ is drawn as the flat line it is (the legend says within how much). For
+  an asymmetric body this is where the flip about the intermediate axis shows.
 * ``energy``: without damping, the signed relative energy error (E(t) − E(0))/|E(0)| on a
   symlog axis, linear within ±ε (machine epsilon), so an exact zero is drawn as 0. With a
   damping torque −c ω̃ the energy loss is physics, not error: the panel shows E(t), the work
@@ -247,17 +248,25 @@ def _panel_omega(ax, res):
     ax.set_ylabel(("|ω̃⊥|" if fast else "ω̃₁, ω̃₂") + " [rad/s]" if separate else "ω̃ [rad/s]")
     _plain(ax)
     if separate:
+        # ω̃₃ itself on its own axis, both axes symmetric about a common zero: heights on either
+        # side mean what they say. Not its deviation from ω̃₃(0): a round-off wobble of 1e-10
+        # drawn as tall as ω̃₁, ω̃₂ reads as order one. A nearly constant ω̃₃ is a flat line,
+        # and the legend states how constant.
         right = ax.twinx()
         w3, w30 = w[:, 2], float(w[0, 2])
-        flat = float(np.ptp(w3)) <= FLAT_BETA * abs(w30)
-        lines.append(right.plot(res.t, w3 - w30 if flat else w3, color=colors[2], lw=1,
-                                label=("ω̃₃ − ω̃₃(0)" + (" = 0 exactly" if np.ptp(w3) == 0 else "")
-                                       + " (right axis)") if flat else "ω̃₃ (right axis)")[0])
-        right.set_ylabel(f"ω̃₃ − ω̃₃(0) [rad/s]\nω̃₃(0) = {w30:.12g}" if flat else "ω̃₃ [rad/s]",
-                         color=colors[2])
+        dev = float(np.max(np.abs(w3 - w30)))
+        label = "ω̃₃ (right axis)"
+        if dev == 0.0:
+            label += ", constant exactly"
+        elif dev <= FLAT_BETA * abs(w30):
+            label += f", constant within {dev:.1e} rad/s"
+        lines.append(right.plot(res.t, w3, color=colors[2], lw=1, label=label)[0])
+        # ω̃₁, ω̃₂ get the more headroom, so that they mostly stay below the ω̃₃ line.
+        left_lim, right_lim = _zero_aligned([y for y, _, _ in series], w3, (1.3, 1.1))
+        ax.set_ylim(*left_lim)
+        right.set_ylim(*right_lim)
+        right.set_ylabel("ω̃₃ [rad/s]", color=colors[2])
         right.tick_params(axis="y", colors=colors[2])
-        if np.ptp(w3) == 0:
-            right.set_yticks([0.0])  # the scale of an exactly-zero deviation means nothing
         _plain(right, "y")
     # Above the axes, one row: clear of the data and of the tick labels on either side.
     ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left", bbox_to_anchor=(0.0, 1.0),
@@ -265,6 +274,20 @@ def _panel_omega(ax, res):
     ax.set_xlabel("t [s]")
     ax.set_title("angular velocity, body frame" + ("\n(ω̃₁, ω̃₂ turn faster than the samples resolve)"
                                                    if fast else ""), fontsize=10, pad=18)
+
+
+def _zero_aligned(left: list, right: np.ndarray, margins=(1.1, 1.1)):
+    """y-limits of two twin axes on which 0 sits at the same height: each axis spans its data
+    and zero, scaled by its margin; the part below zero is the larger of the two axes' (as a
+    fraction of each axis's largest magnitude), so that a curve's height above the common
+    zero line means the same on either side."""
+    spans = []
+    for data in (np.concatenate([np.ravel(d) for d in left]), np.ravel(right)):
+        lo, hi = min(0.0, float(np.min(data))), max(0.0, float(np.max(data)))
+        spans.append((lo, hi, max(-lo, hi) or 1.0))
+    below = max(-lo / size for lo, _, size in spans) + 0.05
+    above = max(hi / size for _, hi, size in spans) + 0.05
+    return tuple((-below * size * m, above * size * m) for (_, _, size), m in zip(spans, margins))
 
 
 def _panel_energy_error(ax, res):

@@ -478,8 +478,12 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
     or .csv (``outputs.write_csv``), the plot as .png, .pdf or .svg. Another extension raises
     SceneError naming ``-o`` or ``--plot`` before anything is written; neither may be the
     scene file the result came from (SceneError naming both)."""
-    from derive.sim.outputs import PLOT_FORMATS, RESULT_FORMATS, output_format, write_all, write_csv
+    from derive.sim.outputs import (PLOT_FORMATS, RESULT_FORMATS, check_paths, output_format,
+                                    write_all, write_csv)
 
+    source = res.scene.source if res.scene is not None else None
+    inputs = [source] if source and source != "<dict>" else []
+    check_paths([npz, png], inputs=inputs)  # a clash with the scene first: it is what matters most
     data_format = output_format(npz, "-o", RESULT_FORMATS) if npz else None
     plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
     writers = {}
@@ -495,5 +499,4 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
             plot_result(res, f, plot_format)
 
         writers[png] = plot
-    source = res.scene.source if res.scene is not None else None
-    write_all(writers, inputs=[source] if source and source != "<dict>" else [])
+    write_all(writers, inputs=inputs)

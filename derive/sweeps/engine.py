@@ -738,10 +738,11 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 def write(result: SweepResult, parquet: str | None, png: str | None = None,
           measure: str | None = None) -> None:
     """The table (one row per point: .parquet, or .csv with one header row) and the plot (.png,
-    .pdf or .svg), each in the format its extension names, all or nothing; neither may be a file the sweep read (``result.files``:
-    SceneError naming both)."""
-    from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, output_format, write_all
+    .pdf or .svg), each in the format its extension names, all or nothing; neither may be a
+    file the sweep read (``result.files``: SceneError naming both)."""
+    from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format, write_all
 
+    check_paths([parquet, png], inputs=result.files)  # a clash with an input first
     table_format = output_format(parquet, "-o", TABLE_FORMATS) if parquet else None
     plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
     writers = {}

@@ -11,7 +11,14 @@ with rates α̇₀, γ̇₀ so that p_γ = I₃ ω̃₃ = I₃ (α̇₀ cos β�
 
 The tennis racket (free asymmetric body, I1 < I2 < I3, spin about axis 2): the linearised
 growth rate λ = ω̃₂ √((I₂ − I₁)(I₃ − I₂)/(I₁ I₃)) predicts the flip time's slope −1/λ against
-ln ε of an off-axis rate ε; the line is drawn with that slope through the middle point.
+ln ε of an off-axis rate ε, i.e. −ln 10/λ per decade on the log₁₀ axis the map uses; the line
+is drawn with that slope through the middle point.
+
+What a reader sees is said on the figure: the title names the measure and the varied keys (a
+map spans many scenes; the base scene's own title is shown as such); axes carry the physical
+symbol (ω̃₁(0), not the zero-based ``initial.omega.0``) and unit; points without a value are
+marked, with a count in the legend: a measure that is NaN for a run that went fine ("never
+tilted" within t_end) in grey, failed points in red. :func:`sweep_figure` returns the figure.
 """
 from __future__ import annotations
 
@@ -20,20 +27,72 @@ import math
 import numpy as np
 
 from derive.errors import SceneError
+from derive.sim.plots import display_title
+
+
+#: The physical symbol of a varied scene key (initial values with a subscript 0).
+SYMBOLS = {"initial.alpha": "α₀", "initial.beta": "β₀", "initial.gamma": "γ₀",
+           "initial.alpha_dot": "α̇₀", "initial.beta_dot": "β̇₀", "initial.gamma_dot": "γ̇₀",
+           "initial.omega.0": "ω̃₁(0)", "initial.omega.1": "ω̃₂(0)", "initial.omega.2": "ω̃₃(0)",
+           "body.I1": "I₁", "body.I2": "I₂", "body.I3": "I₃",
+           "gravity.M": "M", "gravity.g": "g", "gravity.l": "l", "damping.c": "c"}
+
+
+def symbol(key: str) -> str:
+    """The symbol of a varied key; an unknown key as written, but a trailing vector index made
+    1-based and said to be a component (``x.y.0`` -> ``x.y component 1``)."""
+    if key in SYMBOLS:
+        return SYMBOLS[key]
+    head, _, last = key.rpartition(".")
+    return f"{head} component {int(last) + 1}" if head and last.isdigit() else key
 
 
 def _label(key: str) -> str:
+    """Axis label of a varied key: symbol, what it is (the key, unless that is a zero-based
+    vector component) and unit."""
     from derive.sweeps.keys import unit_of
 
     unit = unit_of(key)
-    return f"{key} ({unit})" if unit else key
+    sym = symbol(key)
+    if key.startswith("initial.omega."):
+        what = f"{sym}, body frame"
+    elif sym != key:
+        what = f"{sym} ({key})"
+    else:
+        what = sym
+    return f"{what} [{unit}]" if unit else what
 
 
 def _measure_label(name: str) -> str:
     from derive.sweeps.measures import REGISTRY
 
     m = REGISTRY.get(name)
-    return f"{name} ({m.unit})" if m is not None and m.unit else name
+    return f"{name} [{m.unit}]" if m is not None and m.unit else name
+
+
+def _nan_meaning(name: str) -> str:
+    """What NaN means for a measure, from its documentation ("... (NaN: never)"), or ""."""
+    import re
+
+    from derive.sweeps.measures import REGISTRY
+
+    m = REGISTRY.get(name)
+    found = re.search(r"\(NaN: ([^)]*)\)", m.doc) if m is not None else None
+    return found.group(1) if found else ""
+
+
+def _points(n) -> str:
+    return f"{int(n)} point" + ("" if int(n) == 1 else "s")
+
+
+def _title(res, measure: str, n: int, failed: int) -> str:
+    """Line 1: the sweep (measure over the varied keys, how many points); line 2: the base
+    scene's title, labelled as such (it describes one scene, not the map)."""
+    over = " × ".join(symbol(k) for k in res.keys)
+    head = f"{measure} over {over}: {n} points ({failed} failed)"
+    # one line, cut for display (a huge title once made a plot take 90 s)
+    base = display_title(res.title) if res.title else ""
+    return f"{head}\nbase scene: {base}" if base else head
 
 
 def _heavy_top(scene):
@@ -63,24 +122,49 @@ def _spin_curves(res, beta):
     return curves
 
 
-def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") -> None:
+def sweep_figure(res, measure: str | None = None):
+    """The figure of a sweep (matplotlib Figure, not saved): a map of one measure over a 2-D
+    grid, or a line over a 1-D sweep, with the predictions where the analysis has them.
+
+    Parameters
+    ----------
+    res : SweepResult
+        What `derive.sweep` returned.
+    measure : str, optional
+        The column to draw (default: the first measure other than nfev).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Its data axes is labelled ``"sweep"``; the points without a value are drawn by artists
+        with gid ``"nan"`` (the measure is NaN) and ``"failed"``, with legend entries giving
+        their counts.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    from matplotlib.colors import LogNorm
+    from matplotlib.colors import ListedColormap, LogNorm
+    from matplotlib.patches import Patch
 
     names = [m for m in res.measures if m != "nfev"] or list(res.measures)
     measure = measure or names[0]
     if measure not in res.measures:
         raise SceneError(f"--measure: {measure!r} is not a column of this sweep "
                          f"(one of {', '.join(res.measures)})")
-    z = np.asarray(res.measures[measure], dtype=float)
-    z = np.where(res.ok, z, np.nan)
-    from derive.sim.plots import display_title
-
-    title = display_title(res.title or res.source)
+    raw = np.asarray(res.measures[measure], dtype=float)
+    failed = ~np.asarray(res.ok)
+    z = np.where(failed, np.nan, raw)
+    novalue = ~failed & ~np.isfinite(raw)  # the run went fine; the measure has no value
+    meaning = _nan_meaning(measure)
+    if meaning and measure.startswith("time_to") and res.scene is not None:
+        meaning += f" within t_end = {res.scene.simulate.t_end:g} s"  # "never", up to t_end
+    # (gid of the marking artist, legend text)
+    nan_label = ("nan", f"{measure} = NaN ({meaning}): {_points(novalue.sum())}" if meaning
+                 else f"{measure} has no value (NaN): {_points(novalue.sum())}")
+    failed_label = ("failed", f"failed: {_points(failed.sum())} (see the status column)")
     fig, ax = plt.subplots(figsize=(7.5, 5.2), dpi=110)
+    ax.set_label("sweep")
     if res.shape is not None and len(res.shape) == 2:
         ky, kx = res.keys  # the first key is the slow one: rows
         y = res.params[ky].reshape(res.shape)[:, 0]
@@ -90,6 +174,17 @@ def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") 
         norm = LogNorm(finite.min(), finite.max()) if _wide(finite) else None
         mesh = ax.pcolormesh(x, y, zz, shading="nearest", cmap="viridis", norm=norm)
         fig.colorbar(mesh, ax=ax, label=_measure_label(measure))
+        # Cells without a value would be left blank (the background): paint them in colours
+        # outside the colour map, so that "never" and "failed" are seen and counted.
+        marks = []  # legend patches of the painted cells
+        for mask, colour, label in ((novalue, "0.6", nan_label), (failed, "tab:red", failed_label)):
+            if mask.any():
+                cells = np.ma.masked_where(~mask.reshape(res.shape), np.ones(res.shape))
+                painted = ax.pcolormesh(x, y, cells, shading="nearest",
+                                        cmap=ListedColormap([colour]))
+                gid, text = label
+                painted.set_gid(gid)
+                marks.append(Patch(facecolor=colour, edgecolor="white", label=text))
         ax.set_xlabel(_label(kx))
         ax.set_ylabel(_label(ky))
         keys = {kx: "x", ky: "y"}
@@ -99,10 +194,14 @@ def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") 
                 spin = np.broadcast_to(spin, beta.shape)
                 xs, ys = (spin, beta) if keys["initial.beta"] == "y" else (beta, spin)
                 ax.plot(xs, ys, style, lw=1.6, label=label)
-            if ax.get_legend_handles_labels()[0]:
-                ax.legend(loc="lower right", fontsize=8, framealpha=0.6)
             ax.set_xlim(x.min(), x.max())
             ax.set_ylim(y.min(), y.max())
+        handles, labels = ax.get_legend_handles_labels()
+        if handles or marks:
+            # A dark box: the predicted curves are white (they are drawn over the colour map).
+            ax.legend(handles + marks, labels + [m.get_label() for m in marks], loc="lower right",
+                      fontsize=8, framealpha=0.85, facecolor="0.25", edgecolor="0.25",
+                      labelcolor="white")
     else:
         k = res.keys[0]
         x = res.params[k]
@@ -113,13 +212,32 @@ def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") 
         if _wide(z[np.isfinite(z)]):
             ax.set_yscale("log")
         _line_prediction(ax, res, k, x[order], z[order], measure)
+        # Points without a value, on the bottom edge of the axes at their x (a line through
+        # the others would just skip them).
+        edge = ax.get_xaxis_transform()
+        for mask, style, label in ((novalue, dict(marker="v", color="0.45"), nan_label),
+                                   (failed, dict(marker="x", color="tab:red"), failed_label)):
+            if mask.any():
+                gid, text = label
+                ax.plot(x[mask], np.full(int(mask.sum()), 0.03), ls="none", ms=7, clip_on=False,
+                        transform=edge, gid=gid, label=text, **style)
         if ax.get_legend_handles_labels()[0]:
             ax.legend(fontsize=8)
         ax.grid(True, alpha=0.3)
-    ax.set_title(f"{title}\n{measure} over {len(z)} points ({int((~res.ok).sum())} failed)", fontsize=10)
+    ax.set_title(_title(res, measure, len(z), int(failed.sum())), fontsize=10)
     fig.tight_layout()
-    fig.savefig(path_or_file, format=fmt)
-    plt.close(fig)
+    return fig
+
+
+def plot_sweep(res, path_or_file, measure: str | None = None, fmt: str = "png") -> None:
+    """Write :func:`sweep_figure` to ``path_or_file`` in the format ``fmt`` (png, pdf, svg)."""
+    import matplotlib.pyplot as plt
+
+    fig = sweep_figure(res, measure)
+    try:
+        fig.savefig(path_or_file, format=fmt)
+    finally:
+        plt.close(fig)
 
 
 def _wide(finite: np.ndarray) -> bool:
@@ -155,7 +273,7 @@ def _integrable_moments(ax, sc, key, x) -> None:
             if case != "general":
                 found.setdefault(v, case)
     for v, case in sorted(found.items()):
-        ax.axvline(v, color="k", ls=":", label=f"{case} case: {key} = {v:.4g}")
+        ax.axvline(v, color="k", ls=":", label=f"{case} case: {symbol(key)} = {v:.4g}")
 
 
 def _line_prediction(ax, res, key, x, z, measure):
@@ -183,5 +301,7 @@ def _line_prediction(ax, res, key, x, z, measure):
                 ax.set_xscale("log")
                 xm = math.exp(np.mean(np.log(x[ok])))
                 zm = float(np.interp(math.log(xm), np.log(x[ok]), z[ok]))
+                # The axis is log10: per decade of ε the flip comes ln(10)/λ earlier.
                 ax.plot(x[ok], zm - np.log(x[ok] / xm) / lam, "k--",
-                        label=f"linearised: slope −1/λ, λ = {lam:.3g} /s")
+                        label=f"linearised: slope −ln 10/λ = −{math.log(10) / lam:.3g} s per "
+                              f"decade of {symbol(key)} (λ = {lam:.3g} /s)")
