@@ -5,8 +5,8 @@ Conventions throughout: z-y-z Euler angles in the quantum-mechanics convention o
 rotation matrix R = Rz(α) Ry(β) Rz(γ) maps body components to inertial components
 (v_inertial = R v_body); ω̃ are body-frame components; SI units.
 
-The public API is this module: :func:`simulate`, :func:`simulate_batch`, :func:`sweep`,
-:func:`analyze` and the errors :class:`SceneError`, :class:`IntegrationError`,
+The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulate_batch`,
+:func:`sweep`, :func:`analyze` and the errors :class:`SceneError`, :class:`IntegrationError`,
 :class:`CompilerError`. The stages behind it are subpackages (``derive.symbolic``,
 ``derive.methods``, ``derive.codegen``, ``derive.runtime``, ``derive.sim``, ``derive.sweeps``,
 ``derive.lecture``), each saying in its docstring what it takes, gives and may import.
@@ -20,7 +20,7 @@ _moved.install()  # derive.simulation, derive.scene, …: the old module paths s
 __version__ = "0.1.0"
 
 __all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep",
-           "analyze"]
+           "analyze", "prepare"]
 
 
 def simulate(scene, **overrides):
@@ -47,7 +47,7 @@ def simulate(scene, **overrides):
         in body axes) and ``L`` (angular momentum about the pivot, body axes); ``integrals``
         ({name: (n,) array}, the extra integral of an integrable case, also as
         ``integral_<name>``); ``method``, ``formulation`` and ``nfev`` (what ran). The
-        integrals carry the names ``derive analyze`` gives them: ``L_squared`` (|L|², free
+        integrals carry the names ``derive analyze`` gives them: ``L_squared`` (``|L|²``, free
         body), ``L_1``/``L_2``/``L_3`` (the component of L along the symmetry axis of a Lagrange
         top), ``L_dot_rc`` (spherical body), ``kovalevskaya``, ``goryachev_chaplygin`` (only
         for a state on L·n = 0).
@@ -77,6 +77,43 @@ def simulate(scene, **overrides):
     from derive.sim.simulation import simulate as _simulate
 
     return _simulate(scene, **overrides)
+
+
+def prepare(scene, **overrides):
+    """Validate, plan and compile a scene once, to run it many times cheaply.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        As for :func:`simulate`.
+    **overrides
+        ``[simulate]`` keys, as for :func:`simulate`.
+
+    Returns
+    -------
+    derive.sim.prepared.Prepared
+        ``run()`` gives the :class:`~derive.sim.simulation.Result` :func:`simulate` would, with
+        no validation, look-up or derivation per call; ``run(initial={...}, params={...})``
+        reruns with new initial values or parameters of the same shape.
+
+    Raises
+    ------
+    SceneError
+        Bad input.
+    CompilerError
+        No working C compiler for a model that must be compiled first.
+
+    Examples
+    --------
+    >>> import derive
+    >>> top = derive.prepare("looping_top", t_end=0.5, samples=6)
+    >>> a, b = top.run(), top.run(initial={"beta": 0.6})
+    >>> round(float(a.beta[0]), 3), round(float(b.beta[0]), 3)
+    (0.5, 0.6)
+    """
+    from derive.sim.prepared import Prepared
+
+    return Prepared(scene, **overrides)
 
 
 def simulate_batch(scenes, **overrides):

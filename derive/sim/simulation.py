@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.sim import auto
+from derive.sim import auto, plan
 from derive.runtime import catalogue
 from derive.symbolic import effects as fx
 from derive.errors import IntegrationError, SceneError
@@ -33,13 +33,13 @@ from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import (_check_budget, _settings, choose_method, default_step,  # noqa: F401
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
 from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
-from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
+from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.registry import method as compiled_method
 from derive.methods.status import Status
 from derive.methods.status import message as status_message
 
 FIXED_STEP = FIXED_STEP_METHODS
-SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
+SCIPY_METHODS = plan.SCIPY_METHODS
 
 
 @dataclass
@@ -225,22 +225,27 @@ def _quiet(fn):
 
 @_quiet
 def simulate(scene, **overrides) -> Result:
-    """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys."""
-    sc = load_scene(scene, **overrides)
-    method = choose_method(sc)
-    t = sc.t_out
-    inputs = inputs_of(sc)
-    if method in SCIPY_METHODS:
-        desc = catalogue.describe(auto.model_key(sc, method))
-        out, y, p, nfev = _solve_scipy(desc, SCIPY_METHODS[method], inputs, params_of(sc, desc), t, sc)
+    """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
+    plan it once (:func:`derive.sim.plan.make`), then run the plan."""
+    return run(plan.make(load_scene(scene, **overrides)))
+
+
+@_quiet
+def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None = None) -> Result:
+    """Run a plan: the C call of the first candidate whose pole check passes (or SciPy on the
+    generated NumPy right-hand side), then the Result. ``inputs`` replaces the plan's init-map
+    inputs and ``params`` ({name: value}) some of the model's parameters, unchecked (the plan's
+    caller, :class:`derive.sim.prepared.Prepared`, checks them)."""
+    sc, method, t = pl.scene, pl.method, pl.t
+    inputs = pl.inputs if inputs is None else inputs
+    if pl.scipy:
+        c = pl.candidates[0]
+        desc = c.desc
+        out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
     else:
-        # auto's plan: the cheapest formulations first; a singular one runs with its pole check,
-        # which the driver does before integrating (status RANGE: try the next).
-        for formulation, pole_check in auto.plan(sc):
-            desc = catalogue.describe((formulation, sc.symmetric, sc.effects))
-            kernel = ModelKernel.load(desc, method)
-            args = _settings(sc, method, kernel)
-            out, y, p, st = kernel.simulate(inputs, params_of(sc, desc), t, args, pole_check)
+        for c in pl.candidates:
+            desc = c.desc
+            out, y, p, st = c.kernel.simulate(inputs, _with(c, params), t, c.args, c.pole_check)
             status = int(st["status"])
             if status != _RANGE:
                 break
@@ -249,7 +254,17 @@ def simulate(scene, **overrides) -> Result:
         nfev = int(st["nfev"])
     _check_pole(desc, t, out[1], sc.simulate.rtol)
     # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT); SciPy's did not.
-    return _result(desc, out, y, t, sc, method, nfev, p, finite=method not in SCIPY_METHODS)
+    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None)
+
+
+def _with(c, params: dict | None) -> np.ndarray:
+    """The candidate's parameter vector, with ``params`` ({name: value}) replacing entries."""
+    if not params:
+        return c.params
+    p = c.params.copy()
+    for name, value in params.items():
+        p[c.desc.params.index(name)] = value
+    return p
 
 
 @_quiet
@@ -364,7 +379,7 @@ def _solve_scipy(desc, method, inputs, p, t, sc):
     from scipy.integrate import solve_ivp
 
     kernel = ModelKernel.load(desc, DEFAULT_METHOD)  # for its init and output maps
-    y0, p, rc = kernel.init(inputs, p)
+    y0, p, rc = kernel.init(inputs, p)  # p: a copy with the derived parameters written
     if rc:
         raise IntegrationError(f"t = {t[0]:.6g}: the initial state is not finite")
     mod = numpy_module(desc)

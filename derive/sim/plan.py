@@ -1,0 +1,87 @@
+"""A simulation planned once: scene → (method, output times, inputs, the formulations to try,
+each with its model, kernel, parameters and driver settings).
+
+Each stage is asked once and hands its result down: the scene's numbers
+(:mod:`derive.sim.inputs`), auto's candidates (:mod:`derive.sim.auto`), the model descriptions
+(:mod:`derive.runtime.catalogue`) and the compiled kernels (:mod:`derive.runtime.integrate`,
+loaded when a candidate is first run, so a fallback formulation costs nothing unless it is
+needed). :func:`derive.sim.simulation.run` then makes the C call; a :class:`Plan` kept by the
+caller (``derive.prepare``) runs again without validation or look-ups.
+
+Takes: a validated :class:`derive.sim.scene.Scene`. Gives: a :class:`Plan`.
+"""
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
+from derive.runtime import catalogue
+from derive.runtime.integrate import ModelKernel
+from derive.sim import auto
+from derive.sim.inputs import _settings, choose_method, inputs_of, params_of
+from derive.sim.scene import Scene
+
+#: SciPy reference methods: scene name -> solve_ivp method
+SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
+
+
+@dataclass
+class Candidate:
+    """One formulation to try: its model description, the pole check its run must pass
+    (0 none; see :func:`derive.sim.auto.pole_mode`), and, on first use, its kernel, parameters
+    and driver arguments."""
+
+    scene: Scene
+    method: str
+    desc: catalogue.Description
+    pole_check: int
+
+    @functools.cached_property
+    def kernel(self) -> ModelKernel:
+        # a SciPy reference takes the init and output maps from the default method's library
+        return ModelKernel.load(self.desc, self.method if self.method not in SCIPY_METHODS
+                                else DEFAULT_METHOD)
+
+    @functools.cached_property
+    def params(self) -> np.ndarray:
+        return params_of(self.scene, self.desc)
+
+    @functools.cached_property
+    def args(self) -> list:
+        return _settings(self.scene, self.method, self.kernel)
+
+
+@dataclass
+class Plan:
+    """What one simulation runs, decided once: the scene, the method, the output times ``t``,
+    the init map's ``inputs`` and the ``candidates`` in the order they are tried (the C
+    driver's pole check refuses a singular formulation's start with status RANGE: the next
+    one runs)."""
+
+    scene: Scene
+    method: str
+    t: np.ndarray
+    inputs: np.ndarray
+    candidates: tuple
+
+    @property
+    def scipy(self) -> str | None:
+        """The solve_ivp method of a SciPy reference run, else None."""
+        return SCIPY_METHODS.get(self.method)
+
+
+def make(scene: Scene) -> Plan:
+    """The plan of a validated scene (formulation "auto": every applicable candidate, cheapest
+    first; a named formulation: that one; a SciPy method: the formulation auto picks for it)."""
+    method = choose_method(scene)
+    key = (scene.symmetric, scene.effects)
+    if method in SCIPY_METHODS:
+        steps = [(auto.model_key(scene, method)[0], 0)]
+    else:
+        steps = auto.plan(scene)
+    candidates = tuple(Candidate(scene, method, catalogue.describe((name, *key)), mode)
+                       for name, mode in steps)
+    return Plan(scene, method, scene.t_out, inputs_of(scene), candidates)
