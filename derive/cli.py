@@ -4,7 +4,8 @@ Exit status: 0 success; 1 `generate --check` found stale files or `verify` found
 verdict (or, never expected, an internal error: ``error: internal error: <type>: <message>``);
 2 bad input (one line on stderr: ``error: <file>: <key or table>: <what is wrong>``, also for an
 output path that cannot be written); 3 numerical failure (one line saying where); 4 no working C
-compiler; 130 interrupted (Ctrl-C: ``error: interrupted``). Never a traceback. Warnings (NumPy's
+compiler; 130 interrupted (Ctrl-C: ``error: interrupted``); 143 terminated (SIGTERM during a
+sweep: ``error: terminated``). Never a traceback. Warnings (NumPy's
 RuntimeWarnings among them) are not shown: a numerical failure is the one exit-3 line.
 """
 from __future__ import annotations
@@ -15,10 +16,10 @@ import sys
 import warnings
 from pathlib import Path
 
-from .errors import CompilerError, IntegrationError, SceneError
+from .errors import CompilerError, IntegrationError, SceneError, Terminated
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
-EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
+EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_TERMINATED = 1, 130, 143
 
 
 def _cmd_generate(args) -> int:
@@ -266,6 +267,8 @@ def main(argv=None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             return _main(argv)
+    except Terminated:  # SIGTERM during a sweep, cleaned up as Ctrl-C is
+        return _fail("terminated", EXIT_TERMINATED)
     except KeyboardInterrupt:
         return _fail("interrupted", EXIT_INTERRUPTED)
     except BrokenPipeError:  # e.g. `derive verify | head`: the reader left; stop quietly

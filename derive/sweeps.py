@@ -54,7 +54,7 @@ from pathlib import Path
 import numpy as np
 
 from . import measures as ms
-from .errors import SceneError
+from .errors import EngineError, SceneError
 
 #: Largest number of trajectories in one task (one C call).
 CHUNK = 10_000
@@ -511,14 +511,140 @@ def _progress_bar(total, progress):
     return tqdm(total=total, unit="pt", disable=not progress, desc="sweep", leave=False)
 
 
-def _star_chunk(args):
-    return run_chunk(*args)
+def _die_with_parent(parent: int) -> None:
+    """Ask the kernel to kill this process when its parent dies (Linux ``PR_SET_PDEATHSIG``), so
+    that a parent killed outright (SIGKILL, the OOM killer) leaves no worker computing for no
+    one and printing BrokenPipeError; elsewhere a worker ends when its pipe closes."""
+    import ctypes
+    import signal
+
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)  # 1: PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        return
+    if os.getppid() != parent:  # the parent died before the request: nothing will send it
+        os._exit(1)
 
 
-def _local(tasks, submit_args, progress, processes):
-    """In this process when the sweep is small, else a pool of ``processes`` (fork where the
-    system has it: the children inherit the loaded library). Ctrl-C terminates the pool."""
+def _worker_init(parent: int) -> None:
+    """Set up a local worker process: Ctrl-C and SIGTERM are the parent's to handle.
+
+    SIGINT stays blocked (it was blocked when the worker was forked): Ctrl-C reaches the whole
+    process group, and a worker that took it would print a traceback while the parent is
+    already stopping the workers; the compiled loop's interrupt guard installs its own SIGINT
+    handler, which a blocked signal never reaches. SIGTERM gets its default action (the end),
+    not the parent's handlers the fork copied, and the worker dies with its parent."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM})
+    _die_with_parent(parent)
+
+
+class _held:
+    """Ctrl-C and SIGTERM wait until the end of the ``with`` body, then act as they would have.
+
+    For the steps that must not stop half-way: starting a pool or a cluster (stopped half-way,
+    its processes are left to Dask's exit hook or nobody) and their clean-up. In the main thread
+    SIGINT and SIGTERM get a handler that notes them, and the first one noted is raised again on
+    exit under the handlers restored (KeyboardInterrupt, :class:`Terminated`, or SIGTERM's
+    default action). ``masked`` signals are also blocked in the calling thread, so that the
+    processes forked and the threads started in the body begin with them blocked.
+    """
+
+    def __init__(self, *masked):
+        self.masked = set(masked)
+
+    def __enter__(self):
+        import signal
+        import threading
+
+        self.pending, self.old, self.mask = [], {}, None
+        if threading.current_thread() is threading.main_thread():
+            for sig in (signal.SIGINT, signal.SIGTERM):
+                self.old[sig] = signal.signal(sig, self._note)
+        if self.masked:
+            self.mask = signal.pthread_sigmask(signal.SIG_BLOCK, self.masked)
+        return self
+
+    def _note(self, signum, frame):
+        self.pending.append(signum)
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.mask is not None:  # a signal blocked meanwhile is noted now, before the restore
+            signal.pthread_sigmask(signal.SIG_SETMASK, self.mask)
+        for sig, old in self.old.items():
+            signal.signal(sig, old)
+        if self.pending:
+            signal.raise_signal(self.pending[0])
+
+
+def _signal_name(number: int) -> str:
+    import signal
+
+    try:
+        return signal.Signals(number).name
+    except ValueError:
+        return f"signal {number}"
+
+
+def _worker_main(conn, parent: int) -> None:
+    """A local pool worker: run the chunks the parent sends, ``(k, args)``, and send back
+    ``(k, True, result)`` or ``(k, False, exception)``, until None or the pipe closes."""
+    _worker_init(parent)
+    while True:
+        try:
+            task = conn.recv()
+        except (EOFError, OSError):
+            return
+        if task is None:
+            return
+        k, args = task
+        try:
+            reply = (k, True, run_chunk(*args))
+        except Exception as exc:  # raised again in the parent
+            reply = (k, False, exc)
+        try:
+            conn.send(reply)
+        except (OSError, ValueError):  # the parent is gone
+            return
+        except Exception as exc:  # e.g. an exception that does not pickle
+            try:
+                conn.send((k, False, RuntimeError(f"{type(exc).__name__}: {exc}")))
+            except Exception:
+                return  # the parent sees a dead worker
+
+
+def _receive(conn):
+    """One reply from a worker (a function of its own: the tests make it fail)."""
+    return conn.recv()
+
+
+def _exit_reason(code: int | None) -> str:
+    if code is not None and code < 0:
+        hint = " (out of memory?)" if code == -9 else ""
+        return f"was killed by {_signal_name(-code)}{hint}"
+    return f"exited with status {code}"
+
+
+def _local(tasks, submit_args, progress, processes, source="<sweep>"):
+    """In this process when the sweep is small, else ``processes`` worker processes (fork where
+    the system has it: they inherit the loaded library), each sent one chunk at a time.
+
+    A worker that dies (the OOM killer, a signal) or a result that cannot be received (out of
+    memory) ends the sweep at once with :class:`EngineError` ``<source>: sweep: ...``: every
+    worker has its own pipe and the parent watches both the pipes and the processes, so nothing
+    waits for a chunk that will not come (``multiprocessing.Pool`` would: a dead worker's chunk
+    is lost, a dead result thread stops every reply, and its terminate can wait on a lock a
+    killed worker held). Ctrl-C and SIGTERM (:class:`Terminated`) stop the workers; they ignore
+    both themselves and die with this process (:func:`_worker_init`)."""
     import multiprocessing as mp
+    import signal
+    from multiprocessing.connection import wait
 
     results = {}
     with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
@@ -528,23 +654,86 @@ def _local(tasks, submit_args, progress, processes):
                 bar.update(len(idx))
             return results
         ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
-        pool = ctx.Pool(processes=min(processes, len(tasks)))
+        workers = []  # (process, connection)
         try:
-            pending = [pool.apply_async(_star_chunk, (submit_args(idx),)) for idx in tasks]
+            # Forked with SIGINT and SIGTERM blocked (and a signal meanwhile held back): a
+            # worker must not take either before its initializer has set them.
+            with _held(signal.SIGINT, signal.SIGTERM):
+                for _ in range(min(processes, len(tasks))):
+                    mine, theirs = ctx.Pipe()
+                    proc = ctx.Process(target=_worker_main, args=(theirs, os.getpid()), daemon=True)
+                    proc.start()
+                    theirs.close()
+                    workers.append((proc, mine))
+            todo = list(range(len(tasks)))[::-1]  # popped from the end: chunk 0 first
+            busy = {}  # connection -> (process, chunk)
+
+            def dead(proc, k):
+                what = f"running chunk {k + 1} of {len(tasks)}" if k is not None else "idle"
+                return EngineError(f"{source}: sweep: worker process {proc.pid} "
+                                   f"{_exit_reason(proc.exitcode)} ({what}); "
+                                   f"{len(tasks) - len(results)} of {len(tasks)} chunks unfinished")
+
+            def send(proc, conn):
+                k = todo.pop()
+                try:
+                    conn.send((k, submit_args(tasks[k])))
+                except (BrokenPipeError, ConnectionError):
+                    proc.join(1)
+                    raise dead(proc, k) from None
+                busy[conn] = (proc, k)
+
+            for proc, conn in workers:
+                if todo:
+                    send(proc, conn)
             while len(results) < len(tasks):
-                for k, job in enumerate(pending):
-                    if k not in results and job.ready():
-                        results[k] = job.get()
-                        bar.update(len(tasks[k]))
-                if len(results) < len(tasks):
-                    pending[min(set(range(len(tasks))) - set(results))].wait(0.05)
-        except BaseException:
-            pool.terminate()
-            pool.join()
-            raise
-        pool.close()
-        pool.join()
+                ready = wait([*busy, *(p.sentinel for p, _ in workers)], timeout=1.0)
+                for conn in [r for r in ready if r in busy]:
+                    proc, k = busy.pop(conn)
+                    try:
+                        got, ok, value = _receive(conn)
+                    except (EOFError, OSError):
+                        proc.join(1)
+                        raise dead(proc, k) from None
+                    except MemoryError:
+                        raise EngineError(f"{source}: sweep: out of memory receiving the results "
+                                          f"of chunk {k + 1} of {len(tasks)} ({len(tasks[k])} "
+                                          f"points)") from None
+                    if not ok:
+                        if isinstance(value, MemoryError):
+                            raise EngineError(f"{source}: sweep: worker process {proc.pid} ran "
+                                              f"out of memory in chunk {k + 1} of {len(tasks)}")
+                        raise value
+                    results[got] = value
+                    bar.update(len(tasks[got]))
+                    if todo:
+                        send(proc, conn)
+                for proc, conn in workers:  # a worker gone while idle or busy: never expected
+                    if proc.exitcode is not None:
+                        raise dead(proc, busy.get(conn, (None, None))[1])
+        finally:
+            with _held():  # a second Ctrl-C waits for this (bounded) clean-up
+                _stop_local(workers, clean=len(results) == len(tasks))
     return results
+
+
+def _stop_local(workers, clean: bool) -> None:
+    """End the local workers: asked to (None) after a complete sweep, else SIGKILL at once
+    (a chunk in a C loop is not worth finishing); every process is reaped."""
+    for proc, conn in workers:
+        if clean:
+            try:
+                conn.send(None)
+            except OSError:
+                pass
+        elif proc.exitcode is None:
+            proc.kill()
+    for proc, conn in workers:
+        proc.join(5)
+        if proc.exitcode is None:
+            proc.kill()
+            proc.join(5)
+        conn.close()
 
 
 def _dask(run, submit_args, progress, workers, scheduler):
@@ -673,7 +862,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
     if workers is None and scheduler is None:
         tasks = _chunks(run, processes)
-        results = _local(tasks, submit_args, progress, processes)
+        results = _local(tasks, submit_args, progress, processes, sp.source)
     else:
         tasks, results = _dask(run, submit_args, progress, workers, scheduler)
 
@@ -721,21 +910,54 @@ def write(result: SweepResult, parquet: str | None, png: str | None = None,
 
 
 def cli(args) -> int:
-    """``derive sweep``: run, write, print a one-line summary."""
+    """``derive sweep``: run, write, print a one-line summary. SIGTERM is handled as Ctrl-C is
+    (workers stopped, no temporary left), raised as :class:`Terminated` (exit 143)."""
     import sys
     import time
 
     from .outputs import check_paths
 
     check_paths([args.output, args.plot])
-    t0 = time.perf_counter()
-    res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
-                add_measure=args.measure)
-    write(res, args.output, args.plot, args.measure)
+    with _sigterm_raises():
+        t0 = time.perf_counter()
+        res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
+                    add_measure=args.measure)
+        write(res, args.output, args.plot, args.measure)
     failed = int((~res.ok).sum())
     print(f"{res.source}: {len(res.status)} points ({failed} failed), model {res.model}, "
           f"{time.perf_counter() - t0:.2f} s -> {args.output}", file=sys.stdout)
     return 0
+
+
+class _sigterm_raises:
+    """Within the ``with`` body (main thread only), SIGTERM raises :class:`Terminated` where
+    Ctrl-C would raise KeyboardInterrupt, once: a second SIGTERM during the clean-up is ignored
+    (the workers die with this process in any case). The previous handler is restored after."""
+
+    def __enter__(self):
+        import signal
+        import threading
+
+        self.old = None
+        if (threading.current_thread() is threading.main_thread()
+                and signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN):  # kept ignored
+            self.old = signal.signal(signal.SIGTERM, self._raise)
+        return self
+
+    @staticmethod
+    def _raise(signum, frame):
+        import signal
+
+        from .errors import Terminated
+
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        raise Terminated()
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.old is not None:
+            signal.signal(signal.SIGTERM, self.old)
 
 
 # ---------------------------------------------------------------------------------------------
