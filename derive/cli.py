@@ -249,9 +249,14 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,
-                        help="start a Dask LocalCluster with N worker processes")
+                        help="start a Dask LocalCluster with N worker processes (TLS, loopback "
+                             "only; at most 4 per core and 256 MB of available memory each)")
     engine.add_argument("--scheduler", default=None, help="address of a running Dask scheduler "
-                                                          "(tcp://host:port)")
+                                                          "(tcp://host:port or tls://host:port)")
+    w.add_argument("--scheduler-timeout", type=float, default=None, metavar="S",
+                   help="seconds to reach --scheduler, and again for its first worker (default 5)")
+    w.add_argument("--dashboard", action="store_true",
+                   help="with --workers: serve Dask's dashboard on 127.0.0.1 (address on stderr)")
     w.set_defaults(func=lambda args: __import__("derive.sweeps", fromlist=["cli"]).cli(args))
 
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
