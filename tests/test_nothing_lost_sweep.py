@@ -307,7 +307,8 @@ def test_signals_stop_a_workers_sweep_cleanly(tmp_path, sig, code, line, computi
 @pytest.fixture
 def listener():
     """Start a loopback listener in a thread: ``start(reply)`` accepts every connection and
-    sends ``reply`` (None: stays silent); returns its port. Closed after the test."""
+    sends ``reply`` (None: stays silent; b"": closes it); returns its port. Closed after the
+    test."""
     started = []
 
     def start(reply):
@@ -324,7 +325,9 @@ def listener():
                 except OSError:
                     continue
                 conns.append(conn)
-                if reply is not None:
+                if reply == b"":  # hangs up at once
+                    conn.close()
+                elif reply is not None:
                     conn.sendall(reply)
 
         thread = threading.Thread(target=serve, daemon=True)
@@ -407,9 +410,11 @@ def test_an_http_server_is_not_taken_for_a_scheduler(listener, reference):
 
 
 def test_a_listener_that_hangs_up_is_refused(listener, reference):
-    port = listener(b"")  # accepts, sends nothing, and the test's fixture closes it at the end
-    msg, _ = _refused(f"127.0.0.1:{port}", 0.5)
-    assert "no Dask handshake" in msg
+    port = listener(b"")
+    msg, took = _refused(f"127.0.0.1:{port}", 5)
+    assert msg == (f"<sweep>: scheduler tcp://127.0.0.1:{port}: closed the connection without "
+                   "a Dask handshake")
+    assert took < 3
 
 
 def test_cli_unreachable_scheduler_is_exit_3_one_line(tmp_path):
