@@ -4,7 +4,8 @@ Exit status: 0 success; 1 `generate --check` found stale files or `verify` found
 verdict (or, never expected, an internal error: ``error: internal error: <type>: <message>``);
 2 bad input (one line on stderr: ``error: <file>: <key or table>: <what is wrong>``, also for an
 output path that cannot be written); 3 numerical failure (one line saying where); 4 no working C
-compiler; 130 interrupted (Ctrl-C: ``error: interrupted``). Never a traceback. Warnings (NumPy's
+compiler; 130 interrupted (Ctrl-C: ``error: interrupted``); 143 terminated (SIGTERM during a
+sweep: ``error: terminated``). Never a traceback. Warnings (NumPy's
 RuntimeWarnings among them) are not shown: a numerical failure is the one exit-3 line.
 
 A step that takes more than a second (deriving a model not shipped in generated/, compiling a
@@ -20,10 +21,10 @@ import sys
 import warnings
 from pathlib import Path
 
-from derive.errors import NOTE_STREAM, CompilerError, IntegrationError, SceneError, note
+from derive.errors import NOTE_STREAM, CompilerError, IntegrationError, SceneError, Terminated, note
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
-EXIT_INTERNAL, EXIT_INTERRUPTED = 1, 130
+EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_TERMINATED = 1, 130, 143
 
 
 def _cmd_generate(args) -> int:
@@ -356,9 +357,14 @@ def parser() -> argparse.ArgumentParser:
     w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,
-                        help="start a Dask LocalCluster with N worker processes")
+                        help="start a Dask LocalCluster with N worker processes (TLS, loopback "
+                             "only; at most 4 per core and 256 MB of available memory each)")
     engine.add_argument("--scheduler", default=None, help="address of a running Dask scheduler "
-                                                          "(tcp://host:port)")
+                                                          "(tcp://host:port or tls://host:port)")
+    w.add_argument("--scheduler-timeout", type=float, default=None, metavar="S",
+                   help="seconds to reach --scheduler, and again for its first worker (default 5)")
+    w.add_argument("--dashboard", action="store_true",
+                   help="with --workers: serve Dask's dashboard on 127.0.0.1 (address on stderr)")
     w.set_defaults(func=lambda args: __import__("derive.sweeps.engine", fromlist=["cli"]).cli(args))
 
     e = sub.add_parser("examples", help="list the example scenes and sweeps (run one by its name), "
@@ -380,6 +386,8 @@ def main(argv=None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             return _main(argv)
+    except Terminated:  # SIGTERM during a sweep, cleaned up as Ctrl-C is
+        return _fail("terminated", EXIT_TERMINATED)
     except KeyboardInterrupt:
         return _fail("interrupted", EXIT_INTERRUPTED)
     except BrokenPipeError:  # e.g. `derive verify | head`: the reader left; stop quietly

@@ -46,3 +46,15 @@ def note(text: str) -> None:
         print(f"note: {' '.join(text.split())}", file=stream, flush=True)
     except (OSError, ValueError):  # a closed or broken stderr: the note is not worth a failure
         pass
+
+
+class EngineError(IntegrationError):
+    """A sweep engine failed: a dead local pool (a worker killed, out of memory), an unreachable
+    or silent Dask scheduler, a scheduler without workers. The message says which and where.
+    CLI exit status 3, like a numerical failure: the input was good, the run could not finish.
+    """
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised where Ctrl-C would raise KeyboardInterrupt so that the same clean-up runs
+    (workers stopped, temporaries removed). CLI exit status 143, ``error: terminated``."""

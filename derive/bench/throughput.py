@@ -11,7 +11,7 @@ from derive.bench.contenders import baselines
 from derive.bench.reference import reference_data
 from derive.sim.scene import load_scene
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, run_chunk, sweep
+from derive.sweeps.engine import load, local_cluster, run_chunk, sweep
 
 
 def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, scipy_n: int = 20,
@@ -65,14 +65,12 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
     out = {"per_traj_sweep": per_traj, "per_traj_scipy": per_scipy,
            "speedup": per_scipy / per_traj, "nfev_mean": float(np.mean(np.concatenate(nfev)))}
     if engines:
-        from dask.distributed import Client, LocalCluster
+        from dask.distributed import Client
 
         big_spec = spec(big, seed=2)
         times = {"local_2proc": [], "dask_1w": [], "dask_2w": []}
-        with LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
-                          dashboard_address=":0") as c1, \
-                LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                             dashboard_address=":0") as c2:
+        # the clusters --workers starts (TLS, loopback), reached as a scheduler with their keys
+        with local_cluster(1) as c1, local_cluster(2) as c2:
             for cluster in (c1, c2):
                 with Client(cluster) as c:
                     c.run(_warm_worker)  # every worker loads the library once, untimed
@@ -82,7 +80,8 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
                 times["local_2proc"].append(time.perf_counter() - t0)
                 for name, cluster in (("dask_1w", c1), ("dask_2w", c2)):
                     t0 = time.perf_counter()
-                    d = sweep(big_spec, scheduler=cluster.scheduler_address)
+                    d = sweep(big_spec, scheduler=cluster.scheduler_address,
+                              security=cluster.security)
                     times[name].append(time.perf_counter() - t0)
             out["identical"] = all(np.array_equal(local.measures[k], d.measures[k], equal_nan=True)
                                    for k in local.measures)

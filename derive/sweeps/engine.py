@@ -53,7 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from derive.sweeps import measures as ms
-from derive.errors import SceneError
+from derive.errors import EngineError, SceneError
 from derive.sim import examples
 from derive.sweeps.keys import unit_of, variable_keys as _variable_keys  # noqa: F401 - unit_of: its old home
 
@@ -61,6 +61,14 @@ from derive.sweeps.keys import unit_of, variable_keys as _variable_keys  # noqa:
 CHUNK = 10_000
 #: Below this many points the local engine runs in the calling process (no pool to start).
 IN_PROCESS = 200
+#: Seconds to reach a ``scheduler`` (connect, Dask handshake) and then for its first worker.
+DEFAULT_SCHEDULER_TIMEOUT = 5.0
+#: Available memory the cap on ``workers`` leaves to each LocalCluster worker: a worker measured
+#: about 75 MB resident after its chunks (Python, Dask, NumPy, the library), a chunk's arrays
+#: and the transfers come on top.
+WORKER_MEMORY = 256 * 2**20
+#: LocalCluster workers per core at most (more only queue: each chunk is one C call on one core).
+WORKERS_PER_CORE = 4
 _SPEC_KEYS = ("scene", "vary", "random", "measure", "measures", "title")
 
 
@@ -541,14 +549,140 @@ def _progress_bar(total, progress):
     return tqdm(total=total, unit="pt", disable=not progress, desc="sweep", leave=False)
 
 
-def _star_chunk(args):
-    return run_chunk(*args)
+def _die_with_parent(parent: int) -> None:
+    """Ask the kernel to kill this process when its parent dies (Linux ``PR_SET_PDEATHSIG``), so
+    that a parent killed outright (SIGKILL, the OOM killer) leaves no worker computing for no
+    one and printing BrokenPipeError; elsewhere a worker ends when its pipe closes."""
+    import ctypes
+    import signal
+
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)  # 1: PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        return
+    if os.getppid() != parent:  # the parent died before the request: nothing will send it
+        os._exit(1)
 
 
-def _local(tasks, submit_args, progress, processes):
-    """In this process when the sweep is small, else a pool of ``processes`` (fork where the
-    system has it: the children inherit the loaded library). Ctrl-C terminates the pool."""
+def _worker_init(parent: int) -> None:
+    """Set up a local worker process: Ctrl-C and SIGTERM are the parent's to handle.
+
+    SIGINT stays blocked (it was blocked when the worker was forked): Ctrl-C reaches the whole
+    process group, and a worker that took it would print a traceback while the parent is
+    already stopping the workers; the compiled loop's interrupt guard installs its own SIGINT
+    handler, which a blocked signal never reaches. SIGTERM gets its default action (the end),
+    not the parent's handlers the fork copied, and the worker dies with its parent."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM})
+    _die_with_parent(parent)
+
+
+class _held:
+    """Ctrl-C and SIGTERM wait until the end of the ``with`` body, then act as they would have.
+
+    For the steps that must not stop half-way: starting a pool or a cluster (stopped half-way,
+    its processes are left to Dask's exit hook or nobody) and their clean-up. In the main thread
+    SIGINT and SIGTERM get a handler that notes them, and the first one noted is raised again on
+    exit under the handlers restored (KeyboardInterrupt, :class:`Terminated`, or SIGTERM's
+    default action). ``masked`` signals are also blocked in the calling thread, so that the
+    processes forked and the threads started in the body begin with them blocked.
+    """
+
+    def __init__(self, *masked):
+        self.masked = set(masked)
+
+    def __enter__(self):
+        import signal
+        import threading
+
+        self.pending, self.old, self.mask = [], {}, None
+        if threading.current_thread() is threading.main_thread():
+            for sig in (signal.SIGINT, signal.SIGTERM):
+                self.old[sig] = signal.signal(sig, self._note)
+        if self.masked:
+            self.mask = signal.pthread_sigmask(signal.SIG_BLOCK, self.masked)
+        return self
+
+    def _note(self, signum, frame):
+        self.pending.append(signum)
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.mask is not None:  # a signal blocked meanwhile is noted now, before the restore
+            signal.pthread_sigmask(signal.SIG_SETMASK, self.mask)
+        for sig, old in self.old.items():
+            signal.signal(sig, old)
+        if self.pending:
+            signal.raise_signal(self.pending[0])
+
+
+def _signal_name(number: int) -> str:
+    import signal
+
+    try:
+        return signal.Signals(number).name
+    except ValueError:
+        return f"signal {number}"
+
+
+def _worker_main(conn, parent: int) -> None:
+    """A local pool worker: run the chunks the parent sends, ``(k, args)``, and send back
+    ``(k, True, result)`` or ``(k, False, exception)``, until None or the pipe closes."""
+    _worker_init(parent)
+    while True:
+        try:
+            task = conn.recv()
+        except (EOFError, OSError):
+            return
+        if task is None:
+            return
+        k, args = task
+        try:
+            reply = (k, True, run_chunk(*args))
+        except Exception as exc:  # raised again in the parent
+            reply = (k, False, exc)
+        try:
+            conn.send(reply)
+        except (OSError, ValueError):  # the parent is gone
+            return
+        except Exception as exc:  # e.g. an exception that does not pickle
+            try:
+                conn.send((k, False, RuntimeError(f"{type(exc).__name__}: {exc}")))
+            except Exception:
+                return  # the parent sees a dead worker
+
+
+def _receive(conn):
+    """One reply from a worker (a function of its own: the tests make it fail)."""
+    return conn.recv()
+
+
+def _exit_reason(code: int | None) -> str:
+    if code is not None and code < 0:
+        hint = " (out of memory?)" if code == -9 else ""
+        return f"was killed by {_signal_name(-code)}{hint}"
+    return f"exited with status {code}"
+
+
+def _local(tasks, submit_args, progress, processes, source="<sweep>"):
+    """In this process when the sweep is small, else ``processes`` worker processes (fork where
+    the system has it: they inherit the loaded library), each sent one chunk at a time.
+
+    A worker that dies (the OOM killer, a signal) or a result that cannot be received (out of
+    memory) ends the sweep at once with :class:`EngineError` ``<source>: sweep: ...``: every
+    worker has its own pipe and the parent watches both the pipes and the processes, so nothing
+    waits for a chunk that will not come (``multiprocessing.Pool`` would: a dead worker's chunk
+    is lost, a dead result thread stops every reply, and its terminate can wait on a lock a
+    killed worker held). Ctrl-C and SIGTERM (:class:`Terminated`) stop the workers; they ignore
+    both themselves and die with this process (:func:`_worker_init`)."""
     import multiprocessing as mp
+    import signal
+    from multiprocessing.connection import wait
 
     results = {}
     with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
@@ -558,42 +692,124 @@ def _local(tasks, submit_args, progress, processes):
                 bar.update(len(idx))
             return results
         ctx = mp.get_context("fork" if "fork" in mp.get_all_start_methods() else "spawn")
-        pool = ctx.Pool(processes=min(processes, len(tasks)))
+        workers = []  # (process, connection)
         try:
-            pending = [pool.apply_async(_star_chunk, (submit_args(idx),)) for idx in tasks]
+            # Forked with SIGINT and SIGTERM blocked (and a signal meanwhile held back): a
+            # worker must not take either before its initializer has set them.
+            with _held(signal.SIGINT, signal.SIGTERM):
+                for _ in range(min(processes, len(tasks))):
+                    mine, theirs = ctx.Pipe()
+                    proc = ctx.Process(target=_worker_main, args=(theirs, os.getpid()), daemon=True)
+                    proc.start()
+                    theirs.close()
+                    workers.append((proc, mine))
+            todo = list(range(len(tasks)))[::-1]  # popped from the end: chunk 0 first
+            busy = {}  # connection -> (process, chunk)
+
+            def dead(proc, k):
+                what = f"running chunk {k + 1} of {len(tasks)}" if k is not None else "idle"
+                return EngineError(f"{source}: sweep: worker process {proc.pid} "
+                                   f"{_exit_reason(proc.exitcode)} ({what}); "
+                                   f"{len(tasks) - len(results)} of {len(tasks)} chunks unfinished")
+
+            def send(proc, conn):
+                k = todo.pop()
+                try:
+                    conn.send((k, submit_args(tasks[k])))
+                except (BrokenPipeError, ConnectionError):
+                    proc.join(1)
+                    raise dead(proc, k) from None
+                busy[conn] = (proc, k)
+
+            for proc, conn in workers:
+                if todo:
+                    send(proc, conn)
             while len(results) < len(tasks):
-                for k, job in enumerate(pending):
-                    if k not in results and job.ready():
-                        results[k] = job.get()
-                        bar.update(len(tasks[k]))
-                if len(results) < len(tasks):
-                    pending[min(set(range(len(tasks))) - set(results))].wait(0.05)
-        except BaseException:
-            pool.terminate()
-            pool.join()
-            raise
-        pool.close()
-        pool.join()
+                ready = wait([*busy, *(p.sentinel for p, _ in workers)], timeout=1.0)
+                for conn in [r for r in ready if r in busy]:
+                    proc, k = busy.pop(conn)
+                    try:
+                        got, ok, value = _receive(conn)
+                    except (EOFError, OSError):
+                        proc.join(1)
+                        raise dead(proc, k) from None
+                    except MemoryError:
+                        raise EngineError(f"{source}: sweep: out of memory receiving the results "
+                                          f"of chunk {k + 1} of {len(tasks)} ({len(tasks[k])} "
+                                          f"points)") from None
+                    if not ok:
+                        if isinstance(value, MemoryError):
+                            raise EngineError(f"{source}: sweep: worker process {proc.pid} ran "
+                                              f"out of memory in chunk {k + 1} of {len(tasks)}")
+                        raise value
+                    results[got] = value
+                    bar.update(len(tasks[got]))
+                    if todo:
+                        send(proc, conn)
+                for proc, conn in workers:  # a worker gone while idle or busy: never expected
+                    if proc.exitcode is not None:
+                        raise dead(proc, busy.get(conn, (None, None))[1])
+        finally:
+            with _held():  # a second Ctrl-C waits for this (bounded) clean-up
+                _stop_local(workers, clean=len(results) == len(tasks))
     return results
 
 
-def _dask(run, submit_args, progress, workers, scheduler):
-    """The chunks through a Dask cluster (a LocalCluster of ``workers`` processes, or the one at
-    ``scheduler``), cut for its worker count. Returns (tasks, results)."""
+def _stop_local(workers, clean: bool) -> None:
+    """End the local workers: asked to (None) after a complete sweep, else SIGKILL at once
+    (a chunk in a C loop is not worth finishing); every process is reaped."""
+    for proc, conn in workers:
+        if clean:
+            try:
+                conn.send(None)
+            except OSError:
+                pass
+        elif proc.exitcode is None:
+            proc.kill()
+    for proc, conn in workers:
+        proc.join(5)
+        if proc.exitcode is None:
+            proc.kill()
+            proc.join(5)
+        conn.close()
+
+
+def _dask(run, submit_args, progress, workers, scheduler, *, source="<sweep>", timeout=None,
+          dashboard=False, security=None):
+    """The chunks through a Dask cluster (a closed LocalCluster of ``workers`` processes, see
+    :func:`local_cluster`, or the one at ``scheduler``, probed first and joined within
+    ``timeout`` seconds), cut for its worker count. Returns (tasks, results)."""
+    import contextlib
     import logging
+    import signal
 
-    from dask.distributed import Client, LocalCluster, as_completed
+    from dask.distributed import Client, as_completed
+    from distributed.scheduler import KilledWorker
 
-    logging.getLogger("distributed").setLevel(logging.ERROR)
-    cluster = None
-    if scheduler is None:
-        cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                               dashboard_address=":0", silence_logs=logging.ERROR)
-        client = Client(cluster)
-    else:
-        client = Client(scheduler)
+    timeout = DEFAULT_SCHEDULER_TIMEOUT if timeout is None else timeout
+    logging.getLogger("distributed").setLevel(logging.CRITICAL)  # failures are our one line
+    cluster = client = None
     futures = []
     try:
+        if scheduler is None:
+            # The workers are spawned (exec'd) by threads the cluster starts, which inherit
+            # SIGINT blocked from here, and so do the workers (Python does not unblock it): Ctrl-C
+            # to the process group reaches only this process, which stops them (a worker taking
+            # it while importing would print a traceback, and fail the cluster's start). The
+            # resource tracker is started first: starting it unblocks SIGINT in the thread that
+            # does, which would then spawn the workers with it unblocked.
+            from multiprocessing import resource_tracker
+
+            resource_tracker.ensure_running()
+            with _held(signal.SIGINT):
+                cluster = local_cluster(workers, dashboard=dashboard)
+            if dashboard:
+                import sys
+
+                print(f"note: dashboard at {cluster.dashboard_link}", file=sys.stderr, flush=True)
+            client = Client(cluster, timeout=timeout)
+        else:
+            client = _connect(scheduler, source, timeout, security)
         tasks = _chunks(run, max(1, sum(client.nthreads().values())))
         futures = [client.submit(run_chunk, *submit_args(idx), pure=False) for idx in tasks]
         index = {f.key: k for k, f in enumerate(futures)}
@@ -601,26 +817,286 @@ def _dask(run, submit_args, progress, workers, scheduler):
         with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
             for fut in as_completed(futures):
                 k = index[fut.key]
-                results[k] = fut.result()
+                try:
+                    results[k] = fut.result()
+                except KilledWorker as exc:  # its workers died in it (Dask retried it)
+                    raise EngineError(f"{source}: sweep: chunk {k + 1} of {len(tasks)} killed "
+                                      f"the Dask workers that ran it (out of memory?): "
+                                      f"{' '.join(str(exc).split())[:200]}") from None
                 bar.update(len(tasks[k]))
         return tasks, results
     except BaseException:
-        if futures:
-            client.cancel(futures, force=True)
-        if cluster is not None:  # ours: stop its workers now, mid-chunk
-            import contextlib
-
+        if futures and client is not None:
             with contextlib.suppress(Exception):
-                for w in list(cluster.workers.values()):
-                    proc = getattr(getattr(w, "process", None), "process", None)
-                    if proc is not None:
-                        proc.terminate()
+                client.cancel(futures, force=True)
+        if cluster is not None:  # ours: stop its workers now, mid-chunk
+            _stop_workers(cluster)
         raise
     finally:
-        # (after Ctrl-C the futures are cancelled; a worker busy in a chunk finishes that C call)
+        # (after Ctrl-C the futures are cancelled; a worker of another cluster busy in a chunk
+        # finishes that C call). Signals wait for the close: a cluster closed half-way is closed
+        # again by Dask's exit hook, which prints a traceback.
+        with _held():
+            with contextlib.suppress(Exception):
+                if client is not None:
+                    client.close()
+            if cluster is not None:
+                with contextlib.suppress(Exception):
+                    cluster.close()
+
+
+def _stop_workers(cluster) -> None:
+    """Terminate the worker processes of a LocalCluster at once (SIGTERM), mid-chunk."""
+    import contextlib
+
+    with contextlib.suppress(Exception):
+        for w in list(cluster.workers.values()):
+            proc = getattr(getattr(w, "process", None), "process", None)
+            if proc is not None:
+                proc.terminate()
+
+
+def local_cluster(workers: int, dashboard: bool = False):
+    """Start the Dask ``LocalCluster`` of ``derive sweep --workers``: closed to everyone else.
+
+    Parameters
+    ----------
+    workers : int
+        Worker processes, one thread each (a process runs one measured C call at a time).
+    dashboard : bool
+        Serve Dask's dashboard (``/status``) on 127.0.0.1 (a free port: ``dashboard_link``).
+        Without it the scheduler's HTTP server answers only ``/health``.
+
+    Returns
+    -------
+    distributed.LocalCluster
+        Its scheduler and workers speak TLS with credentials made for this cluster only
+        (``Security.temporary()``: a fresh CA and key, in memory, required of both ends), so a
+        client without them (another local user) is refused; everything it starts (scheduler,
+        nannies, workers, HTTP servers) listens on 127.0.0.1 only. The caller closes it.
+    """
+    import logging
+
+    import dask
+    from dask.distributed import LocalCluster
+    from distributed.security import Security
+
+    routes = (dask.config.get("distributed.scheduler.http.routes") if dashboard
+              else ["distributed.http.health"])
+    # dashboard_address ":0" would bind 0.0.0.0; a scheduler always serves HTTP, so its
+    # address is given even without the dashboard (loopback, any free port, never 8787's clash)
+    with dask.config.set({"distributed.scheduler.http.routes": routes}):
+        return LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                            host="127.0.0.1", security=Security.temporary(),
+                            dashboard_address=None, worker_dashboard_address=None,
+                            scheduler_kwargs={"dashboard": dashboard,
+                                              "dashboard_address": "127.0.0.1:0"},
+                            silence_logs=logging.CRITICAL)
+
+
+def worker_cap() -> tuple[int, str]:
+    """The most LocalCluster workers this machine can hold, and why.
+
+    Returns
+    -------
+    (int, str)
+        ``min(WORKERS_PER_CORE * cores, available memory // WORKER_MEMORY)``, at least 1, and a
+        phrase naming the figures, for the message that refuses more.
+    """
+    cores = _cpus()
+    by_cores = WORKERS_PER_CORE * cores
+    try:
+        import psutil
+
+        available = int(psutil.virtual_memory().available)
+    except Exception:  # psutil comes with dask; without it the cores alone cap
+        return by_cores, f"{WORKERS_PER_CORE} per core on {cores} cores"
+    by_memory = max(1, available // WORKER_MEMORY)
+    why = (f"{WORKERS_PER_CORE} per core on {cores} cores, and {WORKER_MEMORY >> 20} MB of the "
+           f"{available / 2**30:.1f} GB available memory each")
+    return max(1, min(by_cores, by_memory)), why
+
+
+_FLAG_NAMES = {"workers": "--workers", "scheduler": "--scheduler",
+               "scheduler_timeout": "--scheduler-timeout", "dashboard": "--dashboard"}
+
+
+def check_engine(source, workers=None, scheduler=None, scheduler_timeout=None, dashboard=False,
+                 flags=False) -> str | None:
+    """Validate a sweep's engine arguments before any work; returns the scheduler address.
+
+    Parameters
+    ----------
+    source : str
+        The sweep file (or ``<sweep>``), first in the message.
+    workers, scheduler, scheduler_timeout, dashboard
+        As :func:`sweep` takes them.
+    flags : bool
+        Name them as the command line does (``--workers``) rather than as the API does.
+
+    Returns
+    -------
+    str or None
+        The scheduler address, ``tcp://`` added when no scheme is given.
+
+    Raises
+    ------
+    SceneError
+        ``<source>: <name>: <what>`` for a bad value, both engines, more workers than
+        :func:`worker_cap` allows, a malformed address, a dashboard without ``workers`` or
+        without bokeh (which Dask's dashboard needs).
+    """
+    name = (lambda k: _FLAG_NAMES[k]) if flags else (lambda k: k)
+
+    def bad(key, what):
+        raise SceneError(f"{source}: {name(key)}: {what}")
+
+    if workers is not None and scheduler is not None:
+        bad("workers", f"give {name('workers')} or {name('scheduler')}, not both")
+    if workers is not None:
+        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+            bad("workers", f"must be a positive integer, got {workers!r}")
+        cap, why = worker_cap()
+        if workers > cap:
+            bad("workers", f"{workers} worker processes is more than this machine holds (at most "
+                           f"{cap}: {why}); a bigger sweep goes to a cluster ({name('scheduler')})")
+    if not isinstance(dashboard, bool):
+        bad("dashboard", f"must be true or false, got {dashboard!r}")
+    if dashboard and workers is None:
+        bad("dashboard", f"only with {name('workers')} (the cluster derive starts; a scheduler "
+                         f"serves its own)")
+    if dashboard:
+        import importlib.util
+
+        if importlib.util.find_spec("bokeh") is None:
+            bad("dashboard", "Dask's dashboard needs bokeh, which is not installed "
+                             "(pip install 'bokeh>=3.1')")
+    if scheduler_timeout is not None:
+        t = _real(scheduler_timeout)
+        if t is None or not 0 < t <= 3600:
+            bad("scheduler_timeout", f"must be a number of seconds in (0, 3600], got "
+                                     f"{scheduler_timeout!r}")
+        if scheduler is None:
+            bad("scheduler_timeout", f"only with {name('scheduler')}")
+    if scheduler is None:
+        return None
+    if not isinstance(scheduler, str):
+        bad("scheduler", f"must be an address such as tcp://host:8786, got {scheduler!r}")
+    try:
+        return _parse_address(scheduler)
+    except ValueError as exc:
+        bad("scheduler", f"{exc} (an address such as tcp://host:8786)")
+
+
+def _parse_address(address: str) -> str:
+    """``[tcp:// | tls://]host:port`` -> ``scheme://host:port``; ValueError saying what is wrong."""
+    text = address.strip()
+    scheme, sep, loc = text.partition("://")
+    if not sep:
+        scheme, loc = "tcp", text
+    if scheme not in ("tcp", "tls"):
+        raise ValueError(f"{address!r}: the scheme must be tcp:// or tls://")
+    host, colon, port = loc.rpartition(":")
+    if not colon or not host:
+        raise ValueError(f"{address!r} is not host:port")
+    bare = host[1:-1] if host.startswith("[") and host.endswith("]") else host
+    if not bare or any(c.isspace() or c in "/?#@[]" for c in bare) or (":" in bare and bare == host):
+        raise ValueError(f"{address!r}: bad host {host!r}")
+    if not port.isdigit() or not 1 <= int(port) <= 65535:
+        raise ValueError(f"{address!r}: the port must be a number from 1 to 65535")
+    return f"{scheme}://{host}:{int(port)}"
+
+
+def _probe(address: str, source: str, timeout: float) -> None:
+    """Reach the scheduler at ``address`` within ``timeout`` seconds and, for tcp://, read its
+    Dask handshake (the server speaks first: an 8-byte length, then a small msgpack dict), so
+    that a closed port, a silent listener or another protocol is one clear EngineError instead
+    of Dask's retries, a wait for ever or a gigabyte-sized allocation from an HTTP reply."""
+    import socket
+    import struct
+    import time
+
+    scheme, loc = address.split("://", 1)
+    host, port = loc.rsplit(":", 1)
+    host = host.strip("[]")
+    where = f"{source}: scheduler {address}"
+    deadline = time.monotonic() + timeout
+
+    def left():
+        return max(0.01, deadline - time.monotonic())
+
+    try:
+        sock = socket.create_connection((host, int(port)), timeout=left())
+    except socket.gaierror as exc:
+        raise EngineError(f"{where}: unknown host ({exc.strerror or exc})") from None
+    except ConnectionRefusedError:
+        raise EngineError(f"{where}: connection refused (nothing listens there)") from None
+    except (TimeoutError, socket.timeout):
+        raise EngineError(f"{where}: no answer within {timeout:g} s") from None
+    except OSError as exc:
+        raise EngineError(f"{where}: cannot connect ({exc.strerror or exc})") from None
+    if scheme != "tcp":  # TLS: the client speaks first; Dask's own timeout covers the rest
+        sock.close()
+        return
+
+    def read(n):
+        data = bytearray()
+        while len(data) < n:
+            sock.settimeout(left())
+            chunk = sock.recv(n - len(data))
+            if not chunk:
+                raise EngineError(f"{where}: closed the connection without a Dask handshake")
+            data += chunk
+        return bytes(data)
+
+    try:
+        with sock:
+            (size,) = struct.unpack("Q", read(8))
+            if not 8 <= size <= 1 << 16:  # a handshake is ~60 bytes; "HTTP/1.1" reads as 10^18
+                raise EngineError(f"{where}: answered, but not as a Dask scheduler (is it one?)")
+            body = read(size)
+    except (TimeoutError, socket.timeout):
+        raise EngineError(f"{where}: accepted the connection but sent no Dask handshake within "
+                          f"{timeout:g} s (is it a Dask scheduler?)") from None
+    except ConnectionError as exc:
+        raise EngineError(f"{where}: the connection failed ({exc.strerror or exc})") from None
+    try:
+        from distributed.protocol import loads
+        from distributed.protocol.utils import unpack_frames
+
+        hello = loads(unpack_frames(body), deserialize=False)
+    except Exception:
+        hello = None
+    if not isinstance(hello, dict) or "python" not in hello:
+        raise EngineError(f"{where}: answered, but not as a Dask scheduler (is it one?)")
+
+
+def _connect(address: str, source: str, timeout: float, security=None):
+    """A Client of the scheduler at ``address`` with a worker, within ``timeout`` seconds for
+    the connection and as much again for the first worker; EngineError otherwise."""
+    from dask.distributed import Client
+
+    _probe(address, source, timeout)
+    where = f"{source}: scheduler {address}"
+    try:
+        client = Client(address, timeout=timeout, security=security)
+    except (OSError, TimeoutError, TypeError, ValueError) as exc:
+        if address.startswith("tls://") and security is None:  # Dask: "TLS expects a ssl_context"
+            why = ("a tls:// scheduler needs credentials: security= in the API, or Dask's "
+                   "distributed.comm.tls configuration")
+        else:
+            why = " ".join(str(exc).split())[:200]
+        raise EngineError(f"{where}: cannot connect ({why})") from None
+    try:
+        client.wait_for_workers(1, timeout=timeout)
+    except (TimeoutError, OSError):
         client.close()
-        if cluster is not None:
-            cluster.close()
+        raise EngineError(f"{where}: has no workers (none joined within {timeout:g} s; start "
+                          f"some with `dask worker {address} --nthreads 1`)") from None
+    except BaseException:
+        client.close()
+        raise
+    return client
 
 
 def _cpus() -> int:
@@ -665,18 +1141,50 @@ class SweepResult:
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
-          add_measure=None) -> SweepResult:
-    """Run a sweep (a file path or a dict shaped like one). ``workers``: start a dask
-    LocalCluster with that many worker processes; ``scheduler``: the address of a running Dask
-    scheduler; neither: the local engine (``processes``, default one per core). ``add_measure``:
-    a measure (or one of its columns) added to the file's list. ``progress``: a tqdm bar on stderr (None: when stderr is a TTY)."""
+          add_measure=None, scheduler_timeout=None, dashboard=False, security=None) -> SweepResult:
+    """Run a sweep (a file path or a dict shaped like one).
+
+    Parameters
+    ----------
+    spec : str, os.PathLike or dict
+        The sweep file, or a dict of the same shape.
+    workers : int, optional
+        Start a Dask LocalCluster of that many worker processes for this sweep, closed to
+        everyone else (:func:`local_cluster`), at most :func:`worker_cap`.
+    scheduler : str, optional
+        The address of a running Dask scheduler (``tcp://host:8786``, ``tls://...``).
+    progress : bool, optional
+        A tqdm bar on stderr (None: when stderr is a TTY).
+    processes : int, optional
+        The local engine's pool size (neither ``workers`` nor ``scheduler``; default one per core).
+    add_measure : str, optional
+        A measure (or one of its columns) added to the file's list.
+    scheduler_timeout : float, optional
+        Seconds to reach ``scheduler`` and, again, for its first worker
+        (default ``DEFAULT_SCHEDULER_TIMEOUT``).
+    dashboard : bool
+        With ``workers``: serve Dask's dashboard on 127.0.0.1 (its address is printed on
+        stderr; needs bokeh).
+    security : distributed.security.Security, optional
+        The credentials for a ``tls://`` scheduler.
+
+    Returns
+    -------
+    SweepResult
+
+    Raises
+    ------
+    SceneError
+        A bad sweep or engine argument (``<file>: <key>: <what>``).
+    EngineError
+        The engine could not finish: a broken local pool, an unreachable or silent scheduler,
+        a scheduler without workers.
+    """
     from derive.runtime import catalogue
     from derive.sim.simulation import _explain
 
-    if workers is not None and scheduler is not None:
-        raise SceneError("--workers: give workers or scheduler, not both")
-    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
-        raise SceneError(f"--workers: must be a positive integer, got {workers!r}")
+    source = os.fspath(spec) if isinstance(spec, (str, os.PathLike)) else "<sweep>"
+    scheduler = check_engine(source, workers, scheduler, scheduler_timeout, dashboard)
     sp = load(spec)
     if add_measure is not None:  # the column to plot: a measure's (final_beta) or a measure
         name = ms.owner(add_measure)
@@ -706,9 +1214,11 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
     if workers is None and scheduler is None:
         tasks = _chunks(run, processes)
-        results = _local(tasks, submit_args, progress, processes)
+        results = _local(tasks, submit_args, progress, processes, sp.source)
     else:
-        tasks, results = _dask(run, submit_args, progress, workers, scheduler)
+        timeout = None if scheduler_timeout is None else float(scheduler_timeout)
+        tasks, results = _dask(run, submit_args, progress, workers, scheduler, source=sp.source,
+                               timeout=timeout, dashboard=dashboard, security=security)
 
     n = sp.n
     res = np.full((n, len(ms.SLOTS)), np.nan)
@@ -763,21 +1273,57 @@ def write(result: SweepResult, parquet: str | None, png: str | None = None,
 
 
 def cli(args) -> int:
-    """``derive sweep``: run, write, print a one-line summary."""
+    """``derive sweep``: run, write, print a one-line summary. SIGTERM is handled as Ctrl-C is
+    (workers stopped, no temporary left), raised as :class:`Terminated` (exit 143)."""
     import sys
     import time
 
     from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format
 
+    timeout = getattr(args, "scheduler_timeout", None)
+    dashboard = bool(getattr(args, "dashboard", False))
+    check_engine(args.sweep, args.workers, args.scheduler, timeout, dashboard, flags=True)
     # before the work: an output that would replace the sweep file or its scene is known now
     check_paths([args.output, args.plot], inputs=input_files(args.sweep))
     output_format(args.output, "-o", TABLE_FORMATS)
     output_format(args.plot, "--plot", PLOT_FORMATS)
-    t0 = time.perf_counter()
-    res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
-                add_measure=args.measure)
-    write(res, args.output, args.plot, args.measure)
+    with _sigterm_raises():
+        t0 = time.perf_counter()
+        res = sweep(args.sweep, workers=args.workers, scheduler=args.scheduler, progress=None,
+                    add_measure=args.measure, scheduler_timeout=timeout, dashboard=dashboard)
+        write(res, args.output, args.plot, args.measure)
     failed = int((~res.ok).sum())
     print(f"{res.source}: {len(res.status)} points ({failed} failed), model {res.model}, "
           f"{time.perf_counter() - t0:.2f} s -> {args.output}", file=sys.stdout)
     return 0
+
+
+class _sigterm_raises:
+    """Within the ``with`` body (main thread only), SIGTERM raises :class:`Terminated` where
+    Ctrl-C would raise KeyboardInterrupt, once: a second SIGTERM during the clean-up is ignored
+    (the workers die with this process in any case). The previous handler is restored after."""
+
+    def __enter__(self):
+        import signal
+        import threading
+
+        self.old = None
+        if (threading.current_thread() is threading.main_thread()
+                and signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN):  # kept ignored
+            self.old = signal.signal(signal.SIGTERM, self._raise)
+        return self
+
+    @staticmethod
+    def _raise(signum, frame):
+        import signal
+
+        from derive.errors import Terminated
+
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        raise Terminated()
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self.old is not None:
+            signal.signal(signal.SIGTERM, self.old)
