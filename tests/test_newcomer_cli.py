@@ -27,6 +27,7 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 import derive
+from small_scenes import HEAVY_TOP
 
 # A cheap free asymmetric body given by omega, and a cheap heavy top whose centre of mass is a
 # vector: the two vector keys of a scene.
@@ -142,26 +143,7 @@ def test_the_suite_runs_hypothesis_deterministically_without_a_database():
 
 # --- 5. outputs are what their extension says; 6. --t-end and --samples -------------------------
 
-SCENE_TOML = """\
-title = "newcomer test: heavy top"
-[body]
-I1 = 1.0
-I3 = 0.5
-[gravity]
-M = 1.0
-g = 9.81
-l = 0.1
-[initial]
-alpha = 0.0
-beta = 0.5
-gamma = 0.0
-alpha_dot = 0.0
-beta_dot = 0.0
-gamma_dot = 10.0
-[simulate]
-t_end = 0.05
-samples = 3
-"""
+SCENE_TOML = HEAVY_TOP
 
 
 @pytest.fixture

@@ -14,26 +14,9 @@ import pytest
 
 import derive
 from derive.codegen.render import ROOT
+from small_scenes import HEAVY_TOP
 
-TOP = """title = "A heavy top"
-[body]
-I1 = 1.0
-I3 = 0.5
-[gravity]
-M = 1.0
-g = 9.81
-l = 0.1
-[initial]
-alpha = 0.0
-beta = 0.5
-gamma = 0.0
-alpha_dot = 0.0
-beta_dot = 0.0
-gamma_dot = 10.0
-[simulate]
-t_end = 0.05
-samples = 3
-"""
+TOP = HEAVY_TOP
 
 SWEEP = 'scene = "top.toml"\n[vary]\ninitial.beta = { values = [0.4, 0.5] }\n'
 

@@ -10,29 +10,9 @@ import pytest
 
 from derive import SceneError, cli
 from derive.sim import outputs
+from small_scenes import HEAVY_TOP
 
-SCENE = """\
-[body]
-I1 = 1.0
-I3 = 0.5
-
-[gravity]
-M = 1.0
-g = 9.81
-l = 0.1
-
-[initial]
-alpha = 0.0
-beta = 0.5
-gamma = 0.0
-alpha_dot = 0.0
-beta_dot = 0.0
-gamma_dot = 10.0
-
-[simulate]
-t_end = 0.05
-samples = 3
-"""
+SCENE = HEAVY_TOP
 
 
 @pytest.fixture
