@@ -170,3 +170,161 @@ def test_export_of_a_failing_scene_is_exit_3_and_writes_nothing(tmp_path, capsys
     assert rc == 3
     assert err.startswith("error: ") and err.count("\n") == 1
     assert sorted(p.name for p in tmp_path.iterdir()) == ["top.toml"]
+
+
+# ---------------------------------------------------------------------------------------------
+# the FMU
+
+try:
+    import fmpy  # the test extra
+except ImportError:  # pragma: no cover - the folder tests above still run
+    fmpy = None
+
+
+@pytest.fixture(scope="module")
+def top_fmu(tmp_path_factory):
+    """The reference top's FMU (dop853, heavy_top), built once for the tests below."""
+    pytest.importorskip("fmpy")
+    tmp = tmp_path_factory.mktemp("fmu")
+    path = tmp / "top.fmu"
+    assert main(["export", str(SCENES / "reference_top.toml"), "--fmu", str(path)]) == 0
+    return path
+
+
+def _cosimulate(path: Path, scene, start_values=None):
+    """The FMU's co-simulation on the scene's output times, and derive.simulate's result."""
+    import derive
+
+    res = derive.simulate(scene)
+    dt = float(res.t[1] - res.t[0])
+    got = fmpy.simulate_fmu(str(path), fmi_type="CoSimulation", stop_time=float(res.t[-1]),
+                            output_interval=dt, start_values=start_values or {},
+                            output=["alpha", "beta", "gamma", "omega1", "omega2", "omega3",
+                                    "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "L3"])
+    assert len(got) == len(res.t)
+    assert np.allclose(got["time"], res.t, rtol=0, atol=1e-12)
+    return got, res
+
+
+def _columns(res):
+    return {"alpha": res.alpha, "beta": res.beta, "gamma": res.gamma, "omega1": res.omega[:, 0],
+            "omega2": res.omega[:, 1], "omega3": res.omega[:, 2], "axis_x": res.axis[:, 0],
+            "axis_y": res.axis[:, 1], "axis_z": res.axis[:, 2], "energy": res.energy,
+            "p_alpha": res.p_alpha, "L3": res.L[:, 2]}
+
+
+def test_fmu_validates_with_no_problem(top_fmu):
+    from fmpy.validation import validate_fmu
+
+    assert validate_fmu(str(top_fmu)) == []
+    with __import__("zipfile").ZipFile(top_fmu) as zf:
+        names = set(zf.namelist())
+    assert "modelDescription.xml" in names and "binaries/linux64/heavy_top_dop853.so" in names
+    assert {"sources/fmu.c", "sources/fmi2Functions.h"} <= names
+
+
+def test_fmu_names_parameters_as_the_scene_and_outputs_as_the_output_file(top_fmu):
+    md = fmpy.read_model_description(str(top_fmu))
+    assert md.fmiVersion == "2.0" and md.modelExchange and md.coSimulation
+    params = {v.name: v for v in md.modelVariables if v.causality == "parameter"}
+    scene = {"body.I1": 1.0, "body.I3": 0.5, "gravity.M": 1.0, "gravity.g": 1.0, "gravity.l": 1.0,
+             "initial.beta": 0.8, "initial.alpha_dot": -0.4, "initial.gamma_dot": 6.0,
+             "simulate.rtol": 1e-10, "simulate.atol": 1e-12}
+    for name, value in scene.items():
+        assert float(params[name].start) == value, name
+    assert params["initial.rates_given"].type == "Boolean"
+    outputs = [v.name for v in md.modelVariables if v.causality == "output"]
+    desc = json.loads((ROOT / "generated" / "models" / "heavy_top.json").read_text())
+    assert outputs == desc["outputs"]
+    assert {"beta", "energy", "axis_x", "omega1"} <= set(outputs)
+    states = [v.name for v in md.modelVariables if v.name.startswith("state.")]
+    assert states == [f"state.{s}" for s in desc["states"]]
+
+
+def test_fmu_cosimulation_follows_derive_simulate(top_fmu):
+    got, res = _cosimulate(top_fmu, SCENES / "reference_top.toml")
+    # Each communication step restarts dop853 at rtol 1e-10 from the FMU's state: the
+    # trajectories agree to the tolerance's order, not bit for bit.
+    for name, want in _columns(res).items():
+        scale = max(1.0, float(np.max(np.abs(want))))
+        assert np.max(np.abs(got[name] - want)) <= 1e-8 * scale, name
+
+
+def test_fmu_start_values_rerun_the_init_map(top_fmu):
+    from derive.sim.scene import load_scene
+
+    scene = load_scene(SCENES / "reference_top.toml").to_dict()
+    scene["initial"].update(beta=0.5, gamma_dot=4.0)
+    scene["simulate"]["t_end"], scene["simulate"]["samples"] = 2.0, 201
+    got, res = _cosimulate(top_fmu, scene, {"initial.beta": 0.5, "initial.gamma_dot": 4.0})
+    for name, want in _columns(res).items():
+        scale = max(1.0, float(np.max(np.abs(want))))
+        assert np.max(np.abs(got[name] - want)) <= 1e-8 * scale, name
+
+
+def test_fmu_model_exchange_integrates_the_right_hand_side(top_fmu):
+    # FMPy's own integrator (CVODE, BDF) on the FMU's derivatives: an independent integration.
+    import derive
+
+    res = derive.simulate(SCENES / "reference_top.toml", t_end=3.0, samples=31)
+    got = fmpy.simulate_fmu(str(top_fmu), fmi_type="ModelExchange", stop_time=3.0,
+                            output_interval=0.1, relative_tolerance=1e-10,
+                            output=["beta", "energy", "state.beta", "der(state.beta)"])
+    t = got["time"]
+    beta = np.interp(t, res.t, res.beta)  # CVODE reports at its own event-free grid
+    assert np.max(np.abs(got["beta"] - beta)) < 1e-6
+    assert np.max(np.abs(got["energy"] - res.energy[0])) < 1e-6
+    assert np.allclose(got["state.beta"], got["beta"], atol=1e-12)  # no pole passage here
+
+
+def test_fmu_sources_compile_under_strict_warnings(top_fmu, tmp_path):
+    import zipfile
+
+    with zipfile.ZipFile(top_fmu) as zf:
+        zf.extractall(tmp_path)
+    src = tmp_path / "sources"
+    cc = os.environ.get("CC", "cc").split()
+    proc = subprocess.run([*cc, "-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic",
+                           "-fPIC", "-shared", "-o", str(tmp_path / "strict.so"), "fmu.c", "-lm"],
+                          cwd=src, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scene, method, tol", [
+    ("tennis_racket", "rk4", 1e-9),   # fixed steps split each interval as the driver does
+    ("reduced", None, 1e-8),          # derived parameters, pole check 2
+    ("kovalevskaya_top", "splitting4", 1e-9),
+])
+def test_fmu_cosimulation_of_other_models(tmp_path, capsys, scene, method, tol):
+    pytest.importorskip("fmpy")
+    from fmpy.validation import validate_fmu
+
+    path = _scene(tmp_path, scene)
+    fmu = tmp_path / "x.fmu"
+    rc, _, err = _cli(capsys, "export", path, "--fmu", fmu, *(["--method", method] if method else []))
+    assert rc == 0, err
+    assert validate_fmu(str(fmu)) == []
+    import derive
+
+    res = derive.simulate(path, method=method)
+    got = fmpy.simulate_fmu(str(fmu), fmi_type="CoSimulation", stop_time=float(res.t[-1]),
+                            output_interval=float(res.t[1] - res.t[0]),
+                            output=["alpha", "beta", "gamma", "energy", "omega3"])
+    for name, want in {"alpha": res.alpha, "beta": res.beta, "gamma": res.gamma,
+                       "energy": res.energy, "omega3": res.omega[:, 2]}.items():
+        scale = max(1.0, float(np.max(np.abs(want))))
+        assert np.max(np.abs(got[name] - want)) <= tol * scale, name
+
+
+@pytest.mark.parametrize("case", ["not-fmu", "the-scene"])
+def test_fmu_bad_path_is_exit_2(tmp_path, capsys, case):
+    scene = tmp_path / "top.toml"
+    text = (SCENES / "reference_top.toml").read_text(encoding="utf-8")
+    scene.write_text(text, encoding="utf-8")
+    target = tmp_path / "top.zip" if case == "not-fmu" else scene
+    rc, _, err = _cli(capsys, "export", scene, "--fmu", target)
+    assert rc == 2
+    assert err.startswith("error: ") and err.count("\n") == 1, err
+    assert scene.read_text(encoding="utf-8") == text
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["top.toml"]
