@@ -153,6 +153,27 @@ def _cmd_analyze(args) -> int:
     return EXIT_OK
 
 
+def _cmd_export(args) -> int:
+    if args.fmu is not None:
+        from derive.export.fmu import export_fmu
+
+        try:
+            b = export_fmu(args.scene, args.fmu, method=args.method)
+        except SceneError as exc:
+            raise _flag_named(exc, {"method": args.method}) from None
+        print(f"exported {b.name} ({b.method}) as an FMI 2.0 FMU (model exchange and "
+              f"co-simulation) -> {args.fmu}")
+        return EXIT_OK
+    from derive.export.folder import export_folder
+
+    try:
+        b = export_folder(args.scene, args.out, method=args.method)
+    except SceneError as exc:
+        raise _flag_named(exc, {"method": args.method}) from None
+    print(f"exported {b.name} ({b.method}) -> {args.out} (make -C {args.out} builds ./example)")
+    return EXIT_OK
+
+
 def _cmd_bench(args) -> int:
     from derive.bench import suite as bench
 
@@ -341,6 +362,18 @@ def parser() -> argparse.ArgumentParser:
     a.add_argument("--format", choices=("markdown", "json"), default="markdown",
                    help="markdown (LaTeX formulas, default) or json (the contract in docs/analyze.md)")
     a.set_defaults(func=_cmd_analyze)
+
+    x = sub.add_parser("export", help="the scene's model as a self-contained C99 folder (--out) or an "
+                                      "FMI 2.0 FMU (--fmu)", description="Export the model and method a "
+                       "scene runs: --out DIR writes C99 sources, solvers, a Makefile, README.md, the JSON "
+                       "description, the NumPy module and example.c (docs/export.md); --fmu OUT.fmu builds "
+                       "an FMI 2.0 FMU for model exchange and co-simulation.")
+    x.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
+    where = x.add_mutually_exclusive_group(required=True)
+    where.add_argument("--out", metavar="DIR", help="a new (or empty) directory to write the folder into")
+    where.add_argument("--fmu", metavar="OUT.fmu", help="the FMU file to write")
+    x.add_argument("--method", help=f"overrides [simulate] method; a compiled one of: {', '.join(METHODS)}")
+    x.set_defaults(func=_cmd_export)
 
     b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")
     b.add_argument("-o", "--out", default="bench-out", help="output directory")

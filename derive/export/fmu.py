@@ -1,0 +1,272 @@
+"""``derive export SCENE --fmu OUT.fmu``: the scene's model as an FMI 2.0 FMU.
+
+One FMU, both interfaces (FMI 2.0, model exchange and co-simulation):
+
+* model exchange: the states ``state.<name>`` are the model's state y, their derivatives
+  ``der(state.<name>)`` its right-hand side; the importer integrates;
+* co-simulation: ``fmi2DoStep`` integrates from one communication point to the next with the
+  generated solver of the scene's method (``<model>_solve_<method>``, restarted at each point).
+
+Parameters (variability "fixed", start values from the scene): the model's parameters by scene
+key (``body.I1``, ``gravity.M``, …), the init map's inputs (``initial.alpha`` …
+``initial.omega1`` … and the Boolean ``initial.rates_given``) and the solver's settings
+(``simulate.rtol``, ``simulate.atol``, ``simulate.max_steps`` for dop853; ``simulate.h`` for a
+fixed step). Outputs: the model's observables, the output file's names with component suffixes
+(``alpha``, ``beta``, ``gamma``, ``omega1``, ``axis_x``, ``energy``, …), the angles canonical and
+continued from one step to the next as in derive's arrays.
+
+The FMU holds ``modelDescription.xml``, ``binaries/<platform>/<id>.so`` (compiled here with the C
+compiler alone: ``cc -std=c99 -O2 -shared -fPIC``) and ``sources/`` (``fmu.c``, which includes the
+model and its solvers, and the FMI 2.0 headers, whose BSD licence notice they carry). It is
+written all or nothing; an existing file of that name is replaced, never an input.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path
+from xml.sax.saxutils import escape
+
+from derive.codegen.render import TEMPLATES, c_double, environment
+from derive.errors import CompilerError, SceneError
+from derive.export import bundle as bundles
+from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, output_groups, state_unit
+from derive.runtime.cbuild import compiler
+from derive.sim.outputs import check_paths, write_all
+
+HEADERS = ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h")
+
+#: The units the FMU's variables may carry, as SI base-unit exponents.
+UNITS = {
+    "rad": (("rad", 1),),
+    "rad/s": (("rad", 1), ("s", -1)),
+    "s": (("s", 1),),
+    "kg": (("kg", 1),),
+    "m": (("m", 1),),
+    "m/s^2": (("m", 1), ("s", -2)),
+    "kg m^2": (("kg", 1), ("m", 2)),
+    "kg m^2/s": (("kg", 1), ("m", 2), ("s", -1)),
+    "N m s": (("kg", 1), ("m", 2), ("s", -1)),
+    "J": (("kg", 1), ("m", 2), ("s", -2)),
+    "kg^2 m^4/s^2": (("kg", 2), ("m", 4), ("s", -2)),
+}
+
+#: Solver settings shown as parameters (``simulate.<name>``); the rest keep the scene's value.
+_SETTINGS = {"rtol": "", "atol": "", "max_steps": "", "h": "s"}
+_SETTING_DOCS = {"rtol": "relative tolerance of each step's solve",
+                 "atol": "absolute tolerance of each step's solve",
+                 "max_steps": "step budget of each communication step",
+                 "h": "the method's fixed step (each communication step is split into "
+                      "ceil(dt/h) equal steps)"}
+
+
+@dataclass
+class Var:
+    """One ScalarVariable: ``vr`` its value reference, ``kind``/``index`` where fmu.c keeps it."""
+
+    name: str
+    vr: int
+    kind: str
+    index: int
+    type: str
+    causality: str | None
+    variability: str
+    initial: str | None
+    start: str | None
+    unit: str
+    doc: str
+    derivative: int | None = None
+
+
+def variables(b: Bundle) -> list[Var]:
+    """The FMU's variables in value-reference order: parameters, inputs, settings, states,
+    derivatives, outputs."""
+    out: list[Var] = []
+
+    def add(name, kind, index, type_, causality, variability, initial, start, unit, doc, **kw):
+        out.append(Var(name, len(out), kind, index, type_, causality, variability, initial,
+                       start, unit if unit in UNITS else "", doc, **kw))
+
+    for v in b.parameters():
+        add(v.name, "V_PARAM", v.index, "Real", "parameter", "fixed", "exact", c_double(v.value),
+            v.unit, v.doc)
+    for v in b.initial():
+        if v.name == "initial.rates_given":
+            add(v.name, "V_FLAG", v.index, "Boolean", "parameter", "fixed", "exact",
+                "true" if v.value else "false", "", v.doc)
+        else:
+            add(v.name, "V_INPUT", v.index, "Real", "parameter", "fixed", "exact",
+                c_double(v.value), v.unit, v.doc)
+    for k, (ctype, name, value) in enumerate(b.driver):
+        if name not in _SETTINGS:
+            continue
+        if ctype == "double":
+            add(f"simulate.{name}", "V_SETTING", k, "Real", "parameter", "fixed", "exact",
+                c_double(value), _SETTINGS[name], _SETTING_DOCS[name])
+        else:
+            add(f"simulate.{name}", "V_ISETTING", k, "Integer", "parameter", "fixed", "exact",
+                str(int(value)), "", _SETTING_DOCS[name])
+    first_state = len(out)
+    for k, s in enumerate(b.desc.states):
+        add(f"state.{s}", "V_STATE", k, "Real", "local", "continuous", "calculated", None,
+            state_unit(s), f"state component {k} of {b.name}")
+    for k, s in enumerate(b.desc.states):
+        unit = state_unit(s)
+        rate = {"rad": "rad/s", "": ""}.get(unit, "")
+        add(f"der(state.{s})", "V_DERIV", k, "Real", "local", "continuous", "calculated", None,
+            rate, f"d/dt state.{s}", derivative=first_state + k + 1)
+    for base, cols in output_groups(b.desc.outputs):
+        for k in cols:
+            add(b.desc.outputs[k], "V_OUTPUT", k, "Real", "output", "continuous", "calculated",
+                None, OUTPUT_UNITS.get(base, ""), OUTPUT_DOCS.get(base, b.desc.outputs[k]))
+    return out
+
+
+def model_identifier(b: Bundle) -> str:
+    """The FMU's model identifier (a C identifier, the binary's name): model and method."""
+    return f"{b.name}_{b.method}"
+
+
+def _platform() -> tuple[str, str]:
+    """(binaries folder, shared-library suffix) of this machine, as FMI 2.0 names them."""
+    bits = "64" if sys.maxsize > 2**32 else "32"
+    system = platform.system()
+    if system == "Linux":
+        return f"linux{bits}", ".so"
+    if system == "Darwin":
+        return f"darwin{bits}", ".dylib"
+    raise SceneError(f"derive export: --fmu: building an FMU on {system} is not supported "
+                     f"(Linux or macOS)")
+
+
+def _version() -> str:
+    """derive's version for generationTool (the distribution's; the package root is a layer
+    above this stage)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("derive")
+    except PackageNotFoundError:
+        return "(source checkout)"
+
+
+def sources(b: Bundle) -> tuple[dict[str, str], str]:
+    """(the FMU's ``sources/`` files, modelDescription.xml)."""
+    P, ID = b.name, model_identifier(b)
+    files = dict(b.desc.c_sources())
+    wanted = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
+    if b.splitting:
+        wanted += [f"{P}_splitting.h", f"{P}_splitting.c"]
+    text = "".join(files[n] for n in wanted)
+    wanted += [n for n in sorted(files) if n not in wanted and f'"{n}"' in text]
+    out = {n: files[n] for n in wanted}
+    for name in HEADERS:
+        out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
+    vs = variables(b)
+    digest = hashlib.sha256(repr((sorted(out.items()), [(v.name, v.start) for v in vs],
+                                  b.method, b.pole_check)).encode()).hexdigest()
+    guid = "{%s-%s-%s-%s-%s}" % (digest[:8], digest[8:12], digest[12:16], digest[16:20], digest[20:32])
+    derived = sorted(b.desc.derived_params)
+    p_start = [0.0 if k in derived else float(x) for k, x in enumerate(b.params)]
+    env = environment()
+    out["fmu.c"] = env.get_template("fmi2/fmu.c.j2").render(
+        P=P, ID=ID, method=b.method, splitting=b.splitting, guid=guid, variables=vs,
+        p_start=p_start, in_start=[float(x) for x in b.inputs], driver=b.driver,
+        derived=derived, has_angles=b.desc.has_angles, pole_check=b.pole_check,
+        formulation=b.desc.formulation)
+    index = {v.vr: v.vr + 1 for v in vs}  # ModelStructure counts variables from 1
+    units = sorted({v.unit for v in vs if v.unit})
+    title = " ".join((b.scene.title or "").split())
+    adaptive = any(name == "rtol" for _, name, _ in b.driver)
+    xml = env.get_template("fmi2/modelDescription.xml.j2").render(
+        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=guid, version=_version(),
+        description=(f"{P} ({b.desc.formulation}; effects: {', '.join(b.desc.effects) or 'none'}) "
+                     f"with {b.method}, exported by derive"),
+        units=[(u, UNITS[u]) for u in units], t_end=c_double(b.t_end),
+        step=c_double(b.t_end / (b.samples - 1)),
+        tolerance=c_double(b.scene.simulate.rtol) if adaptive else None, variables=vs,
+        outputs=[index[v.vr] for v in vs if v.kind == "V_OUTPUT"],
+        derivatives=[index[v.vr] for v in vs if v.kind == "V_DERIV"],
+        initial_unknowns=[index[v.vr] for v in vs if v.initial == "calculated"])
+    return out, xml
+
+
+def build(b: Bundle) -> dict[str, bytes]:
+    """Every file of the FMU: ``{path in the archive: bytes}``; compiles the binary."""
+    src, xml = sources(b)
+    folder, suffix = _platform()
+    ID = model_identifier(b)
+    with tempfile.TemporaryDirectory(prefix="derive-fmu-") as tmp:
+        work = Path(tmp)
+        for name, text in src.items():
+            (work / name).write_text(text, encoding="utf-8")
+        lib = work / f"{ID}{suffix}"
+        cmd = [*compiler(), "-std=c99", "-O2", "-fPIC", "-shared",
+               "-Werror=implicit-function-declaration", "-o", str(lib), "fmu.c", "-lm"]
+        try:
+            proc = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
+        except OSError as exc:
+            raise CompilerError(f"no working C compiler: {cmd[0]!r} cannot be run "
+                                f"({exc.strerror or exc}); install gcc or set CC") from None
+        if proc.returncode != 0:
+            head = "\n".join(proc.stderr.strip().splitlines()[:20])
+            raise CompilerError(f"compiling the FMU failed ({' '.join(cmd)}):\n{head}")
+        binary = lib.read_bytes()
+    files = {"modelDescription.xml": xml.encode("utf-8"),
+             f"binaries/{folder}/{ID}{suffix}": binary}
+    files.update({f"sources/{name}": text.encode("utf-8") for name, text in src.items()})
+    return files
+
+
+def _zip(files: dict[str, bytes], fh) -> None:
+    """The archive, byte-stable: entries in a fixed order with a fixed time stamp."""
+    with zipfile.ZipFile(fh, "w", compression=zipfile.ZIP_DEFLATED) as zf:
+        for name in sorted(files, key=lambda n: (n != "modelDescription.xml", n)):
+            info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
+            info.external_attr = 0o644 << 16
+            info.compress_type = zipfile.ZIP_DEFLATED
+            zf.writestr(info, files[name])
+
+
+def export_fmu(scene, out, method: str | None = None) -> Bundle:
+    """Build the FMI 2.0 FMU of ``scene`` into the file ``out`` (``.fmu``), all or nothing.
+
+    Parameters
+    ----------
+    scene : str, path or dict
+        The scene (a TOML path, an example's name, or a dict shaped like the TOML).
+    out : str or path
+        The FMU file to write (its extension must be ``.fmu``; an existing file is replaced,
+        an input never).
+    method : str, optional
+        Replaces the scene's ``[simulate] method`` (a compiled method).
+
+    Returns
+    -------
+    Bundle
+        What was exported.
+
+    Raises
+    ------
+    SceneError
+        Bad input (the scene, the method, the path).
+    IntegrationError
+        The scene's simulation fails.
+    CompilerError
+        No working C compiler.
+    """
+    name = os.fspath(out)
+    source = scene if isinstance(scene, (str, os.PathLike)) and os.path.isfile(scene) else None
+    check_paths([name], inputs=[source] if source else [])
+    if not name.lower().endswith(".fmu"):
+        raise SceneError(f"{name}: --fmu: the file name must end in .fmu")
+    b = bundles.make(scene, method)
+    files = build(b)
+    write_all({name: lambda fh: _zip(files, fh)}, inputs=[b.scene.source] if source else [])
+    return b
