@@ -140,9 +140,10 @@ _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
 
 
-def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Result:
+def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
-    checked them already (a batch checks all trajectories at once)."""
+    checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
+    integral functions when the caller has them (:attr:`derive.sim.plan.Plan.integrals`)."""
     views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, _ in OUTPUTS:
@@ -152,7 +153,7 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Re
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
                  model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
-    res.integrals = _integrals(scene, res, p)
+    res.integrals = _integrals(scene, res, p, integrals)
     for name, values in res.integrals.items():
         if not np.isfinite(values).all():
             j = int(np.argwhere(~np.isfinite(values))[0][0])
@@ -161,25 +162,14 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Re
     return res
 
 
-def _integrals(scene: Scene, res: Result, p) -> dict:
-    """``integral_<name>`` arrays of the scene's integrable case (none for a general body)."""
-    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in _integrals_of(scene)}
+def _integrals(scene: Scene, res: Result, p, found=None) -> dict:
+    """``integral_<name>`` arrays of the scene's integrable case (none for a general body);
+    ``found``: its integral functions when the caller has them (a plan keeps them)."""
+    found = plan.integrals_of(scene) if found is None else found
+    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in found}
 
 
-def _integrals_of(scene: Scene):
-    from derive.symbolic.integrable import integrals_for, on_area_level
-
-    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
-    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
-           on_area_level(scene))
-    found = _INTEGRALS.get(key)
-    if found is None:
-        found = _INTEGRALS[key] = integrals_for(scene)
-    return found
-
-
-_INTEGRALS: dict = {}
+_integrals_of = plan.integrals_of  # its old home
 
 
 def _clear_of_pole(sin_beta, rtol):
@@ -254,7 +244,7 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
         nfev = int(st["nfev"])
     _check_pole(desc, t, out[1], sc.simulate.rtol)
     # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT); SciPy's did not.
-    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None)
+    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None, integrals=pl.integrals)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
