@@ -116,7 +116,7 @@ def prepare(scene, **overrides):
     return Prepared(scene, **overrides)
 
 
-def simulate_batch(scenes, **overrides):
+def simulate_batch(scenes, outputs=None, **overrides):
     """Simulate many scenes that differ only in numbers, with one call into C for all of them.
 
     Parameters
@@ -125,13 +125,23 @@ def simulate_batch(scenes, **overrides):
         Scenes as :func:`simulate` takes them. They must name the same effects, body symmetry,
         output times, method and tolerances; the moments, effect parameters and initial states
         may differ.
+    outputs : None, "final" or sequence of str, optional
+        What to keep. None (default): everything, one Result per scene. ``"final"``: every
+        output (and ``state``) at the last sample only; a sequence of output names (``"beta"``,
+        ``"axis"``, …, ``"state"``): those at every sample. Either way one
+        :class:`~derive.sim.batch.BatchResult` with arrays stacked along a first axis of
+        length N, bit for bit the numbers of the full batch, and only those arrays allocated
+        (the compiled loop runs in chunks whose work arrays are reused): 1000 trajectories of
+        1001 samples keep 1000 final states instead of mapping ~200 MB. The integrals of the
+        integrable cases are not computed (they are functions of ``L`` and ``n``).
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 
     Returns
     -------
-    list of derive.sim.simulation.Result
-        One result per scene, in order, each as :func:`simulate` would give it. With
+    list of derive.sim.simulation.Result, or derive.sim.batch.BatchResult
+        Without ``outputs``: one result per scene, in order, each as :func:`simulate` would
+        give it. With ``outputs``: one BatchResult (None for no scenes). With
         ``formulation = "auto"`` the scenes share one formulation.
 
     Raises
@@ -152,7 +162,14 @@ def simulate_batch(scenes, **overrides):
     >>> runs = derive.simulate_batch([{**base, "initial": start(b)} for b in (0.3, 0.6)])
     >>> [round(float(r.beta[0]), 3) for r in runs]
     [0.3, 0.6]
+    >>> ends = derive.simulate_batch([{**base, "initial": start(b)} for b in (0.3, 0.6)], outputs="final")
+    >>> ends.beta.shape, ends.omega.shape, bool(ends.beta[1] == runs[1].beta[-1])
+    ((2,), (2, 3), True)
     """
+    if outputs is not None:
+        from derive.sim.batch import simulate_batch as _selected
+
+        return _selected(scenes, outputs, **overrides)
     from derive.sim.simulation import simulate_batch as _batch
 
     return _batch(scenes, **overrides)

@@ -20,6 +20,16 @@ right-hand side is a separate, one-off cost, reported apart as ``setup``).
   cvodes in Adams (functional iteration) and BDF mode, idas (BDF).
 * PyDy: the same equations as SymPy expressions through ``generate_ode_function`` with the
   Cython backend, integrated by ``scipy.integrate.odeint`` (LSODA).
+* heyoka: the same equations as heyoka expressions (``heyoka.sin``/``cos``, the constants as
+  runtime parameters ``par[i]``) in ``taylor_adaptive`` (LLVM-compiled Taylor method of adaptive
+  order, one tolerance ``tol`` = our rtol for its relative and absolute error alike), its
+  ``propagate_grid`` dense output (the series themselves) at the output times; the batch mode
+  (``taylor_adaptive_batch``, one trajectory per SIMD lane) in :mod:`derive.bench.peers`. Its
+  "nfev" is the number of Taylor steps (a Taylor step evaluates no right-hand side).
+* numbalsoda: the same equations as a numba ``cfunc`` (the constants in its ``data`` array)
+  through numbalsoda's ``dop853`` (Hairer's DOP853 in C++, the loop never in Python). It
+  reports no rhs count ("nfev" 0). It builds from source and needs a Fortran compiler: raced
+  only when it imports.
 """
 from __future__ import annotations
 
@@ -51,6 +61,8 @@ CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
           "casadi-cvodes-bdf": ("cvodes", {}),
           "casadi-idas": ("idas", {})}
 PYDY = ("pydy-odeint",)
+HEYOKA = ("heyoka-taylor",)
+NUMBALSODA = ("numbalsoda-dop853",)
 
 
 @functools.cache
@@ -66,12 +78,18 @@ def baselines():
 
 
 def peers_available() -> dict[str, str | None]:
-    """{peer: version or None (not installed)} for casadi and pydy (+ cython, its backend)."""
+    """{peer: version or None (not installed)} for casadi, pydy (+ cython, its backend), heyoka
+    and numbalsoda (+ numba, its rhs compiler)."""
     out = {}
-    for name in ("casadi", "pydy", "Cython"):
+    for name in ("casadi", "pydy", "Cython", "heyoka", "numbalsoda", "numba"):
         try:
             mod = __import__(name)
-            out[name.lower()] = getattr(mod, "__version__", "?")
+            version = getattr(mod, "__version__", None)
+            if version is None:  # numbalsoda has no __version__: its distribution's
+                from importlib.metadata import version as dist_version
+
+                version = dist_version(name)
+            out[name.lower()] = version
         except Exception:  # noqa: BLE001 - a broken install counts as absent
             out[name.lower()] = None
     return out
@@ -278,12 +296,119 @@ def solve_pydy(prob: Problem, method: str, rtol: float, atol: float, setup=None)
 
 
 # ---------------------------------------------------------------------------------------------
+# heyoka
+
+
+@functools.cache
+def heyoka_system(formulation: str):
+    """The baseline equations as heyoka expressions: [(variable, rhs)], the constants as the
+    runtime parameters ``par[0..]`` in ``CONST_NAMES`` order (so one compiled integrator serves
+    every scene of a formulation and tolerance)."""
+    import heyoka as hy
+
+    names = CONST_NAMES[formulation]
+    x = hy.make_vars(*(f"y{i}" for i in range(STATE_SIZE[formulation])))
+    sym = Problem("", formulation, {k: hy.par[i] for i, k in enumerate(names)}, [], np.zeros(2))
+    rhs, _ = sym.functions(sin=hy.sin, cos=hy.cos, values=list)
+    return list(zip(x, rhs(0.0, list(x))))
+
+
+@functools.cache
+def _heyoka_integrator(formulation: str, tol: float):
+    import heyoka as hy
+
+    return hy.taylor_adaptive(heyoka_system(formulation), [0.0] * STATE_SIZE[formulation], tol=tol,
+                              pars=[1.0] * len(CONST_NAMES[formulation]))
+
+
+def heyoka_setup(prob: Problem, method: str, rtol: float, atol: float):
+    """heyoka's ``taylor_adaptive`` for the formulation at ``tol = rtol`` (JIT-compiled once per
+    formulation and tolerance, outside the timing; heyoka has one tolerance, relative above
+    |y| = 1 and absolute below, and no atol)."""
+    return _heyoka_integrator(prob.formulation, float(rtol))
+
+
+def solve_heyoka(prob: Problem, method: str, rtol: float, atol: float, setup=None):
+    """Reset the integrator to t₀, y₀ and the constants, then ``propagate_grid`` over the output
+    times: the states there from its dense output. Returns (states, Taylor steps)."""
+    ta = setup or heyoka_setup(prob, method, rtol, atol)
+    ta.time = float(prob.t[0])
+    ta.state[:] = prob.y0
+    ta.pars[:] = prob.const_values
+    outcome, _, _, nsteps, _, Y = ta.propagate_grid(prob.t)
+    if str(outcome) != "taylor_outcome.time_limit":
+        raise IntegrationError(f"heyoka: {outcome}")
+    return Y, int(nsteps)
+
+
+# ---------------------------------------------------------------------------------------------
+# numbalsoda
+
+
+@functools.cache
+def _numba_rhs(formulation: str) -> int:
+    """The address of the baseline rhs as a numba ``cfunc`` of numbalsoda's signature
+    f(t, u, du, p), p the constants in ``CONST_NAMES`` order (the same equations as
+    ``scipy_baselines``, written with scalar indexing: numba compiles no closures over lists)."""
+    import math as m
+
+    from numba import cfunc
+    from numbalsoda import lsoda_sig
+
+    if formulation == "euler-angles":
+        @cfunc(lsoda_sig)
+        def rhs(t, u, du, p):
+            I1, I3, mgl = p[0], p[1], p[2]
+            b, ad, bd, gd = u[1], u[3], u[4], u[5]
+            sb = m.sin(b)
+            cb = m.cos(b)
+            w3 = ad * cb + gd
+            add = bd * (I3 * w3 - 2.0 * I1 * ad * cb) / (I1 * sb)
+            du[0] = ad
+            du[1] = bd
+            du[2] = gd
+            du[3] = add
+            du[4] = (I1 * ad * ad * sb * cb - I3 * w3 * ad * sb + mgl * sb) / I1
+            du[5] = -add * cb + ad * bd * sb
+    else:
+        @cfunc(lsoda_sig)
+        def rhs(t, u, du, p):
+            I1, I2, I3, mgl = p[0], p[1], p[2], p[3]
+            q0, q1, q2, q3, w1, w2, w3 = u[0], u[1], u[2], u[3], u[4], u[5], u[6]
+            k1 = 2.0 * (q1 * q3 - q0 * q2)  # the vertical in body axes, k = Rᵀ ẑ
+            k2 = 2.0 * (q2 * q3 + q0 * q1)
+            du[0] = 0.5 * (-q1 * w1 - q2 * w2 - q3 * w3)
+            du[1] = 0.5 * (q0 * w1 + q2 * w3 - q3 * w2)
+            du[2] = 0.5 * (q0 * w2 + q3 * w1 - q1 * w3)
+            du[3] = 0.5 * (q0 * w3 + q1 * w2 - q2 * w1)
+            du[4] = ((I2 - I3) * w2 * w3 + mgl * k2) / I1
+            du[5] = ((I3 - I1) * w3 * w1 - mgl * k1) / I2
+            du[6] = (I1 - I2) * w1 * w2 / I3
+    return rhs.address
+
+
+def numbalsoda_setup(prob: Problem, method: str = "numbalsoda-dop853", rtol=None, atol=None):
+    """(rhs address, constants): the cfunc compiled once per formulation, outside the timing."""
+    return _numba_rhs(prob.formulation), np.array(prob.const_values, dtype=float)
+
+
+def solve_numbalsoda(prob: Problem, method: str, rtol: float, atol: float, setup=None):
+    from numbalsoda import dop853
+
+    address, consts = setup or numbalsoda_setup(prob, method)
+    Y, ok = dop853(address, np.asarray(prob.y0, dtype=float), prob.t, data=consts, rtol=rtol, atol=atol)
+    if not ok:
+        raise IntegrationError("numbalsoda dop853: failed")
+    return Y, 0
+
+
+# ---------------------------------------------------------------------------------------------
 # one registry for the bench
 
 
 @dataclass(frozen=True)
 class Contender:
-    family: str            # "scipy" | "casadi" | "pydy"
+    family: str            # "scipy" | "casadi" | "pydy" | "heyoka" | "numbalsoda"
     methods: tuple[str, ...]
     setup: object          # (problem, method, rtol, atol) -> whatever solve takes, built untimed
     solve: object          # (problem, method, rtol, atol, setup) -> (Y, nfev)
@@ -294,15 +419,22 @@ CONTENDERS = {
     "scipy": Contender("scipy", tuple(SCIPY), lambda p, m, r, a: scipy_setup(p, m), solve_scipy),
     "casadi": Contender("casadi", tuple(CASADI), casadi_setup, solve_casadi, per_tolerance_setup=True),
     "pydy": Contender("pydy", PYDY, lambda p, m, r, a: pydy_setup(p, m), solve_pydy),
+    "heyoka": Contender("heyoka", HEYOKA, heyoka_setup, solve_heyoka, per_tolerance_setup=True),
+    "numbalsoda": Contender("numbalsoda", NUMBALSODA, numbalsoda_setup, solve_numbalsoda),
 }
 
 
 def families(peers: bool = True) -> list[str]:
-    """The contender families to run: SciPy always; casadi / pydy when asked and installed."""
+    """The contender families to run: SciPy always; casadi, pydy, heyoka, numbalsoda when asked
+    and installed."""
     have = peers_available() if peers else {}
     out = ["scipy"]
     if have.get("casadi"):
         out.append("casadi")
     if have.get("pydy") and have.get("cython"):
         out.append("pydy")
+    if have.get("heyoka"):
+        out.append("heyoka")
+    if have.get("numbalsoda") and have.get("numba"):
+        out.append("numbalsoda")
     return out

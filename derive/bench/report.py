@@ -8,7 +8,8 @@ import numpy as np
 from derive.bench import runner as B
 from derive.bench import targets as T
 
-FAMILY_NAMES = {"scipy": "SciPy (plain-Python rhs)", "casadi": "CasADi", "pydy": "PyDy (Cython) + odeint"}
+FAMILY_NAMES = {"scipy": "SciPy (plain-Python rhs)", "casadi": "CasADi", "pydy": "PyDy (Cython) + odeint",
+                "heyoka": "heyoka (Taylor, LLVM)", "numbalsoda": "numbalsoda DOP853 (numba rhs)"}
 
 
 def _t(seconds) -> str:
@@ -42,7 +43,8 @@ def header(results: dict) -> list[str]:
     m, cfg = results["machine"], results["settings"]
     v = m["versions"]
     load = lambda x: ", ".join(f"{a:.2f}" for a in x) if x else "?"  # noqa: E731
-    peers = ", ".join(f"{k} {v[k]}" if v.get(k) else f"{k} not installed" for k in ("casadi", "pydy", "cython"))
+    peers = ", ".join(f"{k} {v[k]}" if v.get(k) else f"{k} not installed" for k in ("casadi", "pydy", "cython", "heyoka",
+                                                                                    "numbalsoda", "numba"))
     L = [f"# derive bench ({cfg['name']})", "",
          f"Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}; {m['compiler']}. "
          f"Load average (1, 5, 15 min) at the start {load(m['load_average'])}, at the end "
@@ -51,7 +53,9 @@ def header(results: dict) -> list[str]:
          f"SciPy {v['scipy']}, SymPy {v['sympy']}; peers: {peers}.", ""]
     if results["peers_missing"]:
         L += [f"Not raced (not installed): {', '.join(results['peers_missing'])} — "
-              "`pip install -e '.[peers]'` or `make bench-peers`.", ""]
+              "`pip install -e '.[peers]'` or `make bench-peers`"
+              + (" (numbalsoda builds from source and needs a Fortran compiler)"
+                 if "numbalsoda" in results["peers_missing"] else "") + ".", ""]
     return L
 
 
@@ -172,6 +176,76 @@ def targets_section(results: dict) -> list[str]:
                  f"blocks by hand takes {la['lambdify_blocked_ns_per_state']:.1f} ns/state "
                  f"({la['ratio_blocked']:.2f}×).")
     L.append("")
+    return L
+
+
+def peers_section(results: dict) -> list[str]:
+    """Issue 20's races against heyoka and numbalsoda (:mod:`derive.bench.peers`): what each side
+    ran, the tolerances that reached each error level, the times and ratios."""
+    pe = (results.get("targets") or {}).get("peers") or {}
+    L = ["## Against heyoka and numbalsoda (issue 20)", ""]
+    if "skipped" in pe or "error" in pe:
+        return L + [f"Not raced: {pe.get('skipped') or pe.get('error')}.", ""]
+    if not pe:
+        return []
+    L += ["Reference scene (`scenes/reference_top.toml`), error = max |ê₃ − ê₃,exact| over the output times, "
+          "the same measure for all. derive: `derive.simulate(dict)` (validation included) and "
+          "`derive.prepare(dict).run()` (the prepared call), dop853 in the formulation `auto` picks, "
+          "atol = 1e-2 rtol. heyoka: the Euler-angle equations of `scipy_baselines.py` as heyoka expressions in "
+          "`taylor_adaptive` (built and JIT-compiled outside the timing; `tol` = the rtol column, heyoka has one "
+          "tolerance), reset to t₀, y₀ and `propagate_grid` at the same output times (its dense output). "
+          "numbalsoda: the same equations as a numba `cfunc`, `dop853` at the output times, atol = 1e-2 rtol. "
+          "Each side at the loosest tolerance (halved or doubled from the level) whose error is no larger than "
+          "the level, then timed in turns (blocks of calls alternating; medians). Ratios: derive's time / the "
+          "peer's (< 1: derive is faster).", ""]
+    for part in ("reference", "long"):
+        eq = pe.get(part) or {}
+        if "error" in eq:
+            L += [f"- {part}: not measured ({eq['error']})", ""]
+            continue
+        if not eq:
+            continue
+        L += [f"### t ∈ [0, {eq['t_end']:g}], {eq['samples']} samples", "",
+              "| error level | derive rtol (error) | peer | peer tol (error, steps) | peer time | derive `simulate` "
+              "| derive prepared | simulate / peer | prepared / peer |", "|---|---|---|---|---|---|---|---|---|"]
+        for row in eq["rows"]:
+            d = row["derive"]
+            dcell = f"{d['rtol']:.3g} ({_e(d['error'])})" + ("" if d["reached"] else " **not reached**")
+            if not row["peers"]:
+                L.append(f"| {row['level']:.0e} | {dcell} | — | | | | | | |")
+            for fam, e in row["peers"].items():
+                pcell = f"{e['rtol']:.3g} ({_e(e['error'])}, {e['nfev']:,})" + ("" if e["reached"] else " **not reached**")
+                ratio = lambda k: f"**{e[k]:.3g}×**" if k in e else "—"  # noqa: E731
+                L.append(f"| {row['level']:.0e} | {dcell} | {FAMILY_NAMES[fam]} | {pcell} | {_t(e.get('time'))} | "
+                         f"{_t(e.get('derive_simulate'))} | {_t(e.get('derive_prepared'))} | {ratio('ratio_simulate')} | "
+                         f"{ratio('ratio_prepared')} |")
+        L.append("")
+    ba = pe.get("batch") or {}
+    if "error" in ba or "skipped" in ba:
+        L += [f"- batch: not measured ({ba.get('error') or ba.get('skipped')})", ""]
+    elif ba:
+        final = (f"`derive.simulate_batch(scenes, outputs=\"final\")` (the last sample of every output only) "
+                 f"{_t(ba['derive_final_per_trajectory'])} per trajectory against heyoka's `propagate_until` "
+                 f"t_end (final states only) {_t(ba['heyoka_final_per_trajectory'])}: "
+                 f"**{ba['ratio_final_vs_final']:.3g}×**; " if "derive_final_per_trajectory" in ba else "")
+        L += [f"### Batch of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}])", "",
+              f"derive at rtol {ba['rtol']:g} (error {_e(ba['derive_error'])} on the reference scene), heyoka's "
+              f"batch mode (`taylor_adaptive_batch`, {ba['lanes']} SIMD lanes, one trajectory per lane) at tol "
+              f"{ba['heyoka_tol']:.3g} (error {_e(ba['heyoka_error'])}), best of a few rounds in turns. " + final
+              + f"`derive.simulate_batch(scenes)` (every output at all {ba['samples']} samples) "
+              f"{_t(ba['derive_full_per_trajectory'])} against heyoka's `propagate_grid` (the states at every sample) "
+              f"{_t(ba['heyoka_grid_per_trajectory'])}: **{ba['ratio_full_vs_grid']:.3g}×**. The final axes of the "
+              f"two agree to {_e(ba['final_axis_difference'])}.", ""]
+    fc = pe.get("fixed_cost") or {}
+    if "error" in fc:
+        L += [f"- fixed cost: not measured ({fc['error']})", ""]
+    elif fc:
+        peers = "; ".join(f"{FAMILY_NAMES[f]} {_t(fc[f])}: prepared / it **{fc[f'prepared_vs_{f}']:.3g}×**, "
+                          f"simulate / it **{fc[f'simulate_vs_{f}']:.3g}×**" for f in ("heyoka", "numbalsoda") if f in fc)
+        L += [f"### Fixed cost (t_end = 1e-3, 2 samples, rtol {fc['rtol']:g})", "",
+              f"`derive.prepare(dict).run()` {_t(fc['derive_prepared'])}, `derive.simulate(dict)` "
+              f"{_t(fc['derive_simulate'])}; {peers}. heyoka's call: reset time, state and parameters, "
+              "`propagate_grid` over the two times; numbalsoda's: `dop853` over them.", ""]
     return L
 
 
@@ -346,7 +420,8 @@ def splitting_section(results: dict) -> list[str]:
 
 
 def write_report(results: dict, out: Path) -> str:
-    L = header(results) + targets_section(results) + kernel_section(results) + wp_section(results) \
+    L = header(results) + targets_section(results) + peers_section(results) + kernel_section(results) \
+        + wp_section(results) \
         + drift_section(results) + splitting_section(results)
     text = "\n".join(L)
     (Path(out) / "report.md").write_text(text)

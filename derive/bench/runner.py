@@ -110,7 +110,7 @@ class Settings:
     cap: float                            # s: a sweep stops after a run slower than this
     scenes: tuple[str, ...]
     min_total: float = 0.05               # s: fast runs are repeated until they add up to this
-    families: tuple[str, ...] = ("scipy", "casadi", "pydy")   # contenders (peers if installed)
+    families: tuple[str, ...] = ("scipy", "casadi", "pydy", "heyoka", "numbalsoda")  # (peers if installed)
     all_baseline_forms: bool = True       # contenders in every baseline formulation (else the first)
     other_formulations: bool = True       # ours also in the formulations `auto` does not pick
     all_formulations_fixed: bool = True   # ... fixed-step methods too (else dop853 only there)
@@ -126,6 +126,11 @@ class Settings:
     ref_t_end: float = 10.0
     ref_repeats: int = 7
     fixed_cost_calls: int = 1500
+    # issue 20's races against heyoka and numbalsoda (derive.bench.peers): the error levels on the
+    # reference scene, and the long run's span and levels
+    peer_levels: tuple[float, ...] = (1e-8, 1e-10, 1e-12)
+    long_t_end: float = 1000.0
+    long_levels: tuple[float, ...] = (1e-8, 1e-9, 1e-10, 1e-11)
     batch_n: int = 1000
     batch_t_end: float = 10.0
     batch_scipy_n: int = 5
@@ -157,7 +162,8 @@ QUICK = Settings("quick", rtols=_decades(4, 13, half=False), max_refinements=9, 
                  long_run=0.2, cap=0.5, scenes=tuple(WP_SCENES), all_formulations_fixed=False,
                  all_baseline_forms=False, other_formulations=False,
                  loop_calls=1_000_000, loop_repeats=9, numpy_repeats=7, python_calls=5_000, drift_steps=200_000,
-                 ref_repeats=3, fixed_cost_calls=300, batch_n=200, batch_scipy_n=2, process_repeats=3, cold_runs=1,
+                 ref_repeats=3, fixed_cost_calls=300, batch_n=200, long_levels=(1e-8, 1e-10),
+                 batch_scipy_n=2, process_repeats=3, cold_runs=1,
                  splitting_periods=1e3, splitting_budget=10.0, sweep_n=500, sweep_scipy_n=5, sweep_big=20_000)
 SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, other_repeats=1, long_run=0.0,
                  cap=1.0, scenes=("looping_top",), families=("scipy",), all_baseline_forms=False,
@@ -165,7 +171,8 @@ SMOKE = Settings("smoke", rtols=(1e-4, 1e-8), max_refinements=2, repeats=1, othe
                  scene_overrides={"t_end": 0.2, "samples": 101}, c_flags=(("-std=c99", "-O2"),),
                  loop_calls=20_000, loop_repeats=3,
                  numpy_sizes=(1_000,), numpy_repeats=3, python_calls=200, min_total=0.0, drift_steps=2_000,
-                 ref_t_end=0.5, ref_repeats=1, fixed_cost_calls=3, batch_n=4, batch_t_end=0.2, batch_scipy_n=1,
+                 ref_t_end=0.5, ref_repeats=1, fixed_cost_calls=3, peer_levels=(1e-8,), long_t_end=2.0,
+                 long_levels=(1e-8,), batch_n=4, batch_t_end=0.2, batch_scipy_n=1,
                  process_repeats=0, cold_runs=0, lambdify_n=1_000,
                  splitting_cases=(("fast-top", "axis"),), splitting_periods=20.0, splitting_budget=5.0,
                  sweep_n=20, sweep_scipy_n=2, sweep_big=0)
@@ -231,6 +238,40 @@ def ours(scene, **overrides):
         warnings.simplefilter("ignore")
         res = derive.simulate(scene, **overrides)
     return np.asarray(res.axis), int(res.nfev)
+
+
+def match_tolerance(solve, target: float, rtol0: float = 1e-10) -> dict:
+    """The loosest rtol at which ``solve(rtol) -> (axis error, nfev)`` is no larger than
+    ``target``: halved from ``rtol0`` (down to MIN_RTOL) until it is, or, if ``rtol0`` already
+    is, doubled (up to 1e-4) while it stays so — the cheapest setting of the contender that is at
+    least as accurate as ours. Returns that try and the list of tries."""
+    tried = []
+
+    def attempt(r):
+        try:
+            err, nfev = solve(r)
+        except Exception as exc:  # noqa: BLE001 - a failed tolerance: another may work, or not
+            tried.append({"rtol": r, "error": None, "nfev": 0, "failure": str(exc)[:120]})
+            return False
+        tried.append({"rtol": r, "error": err, "nfev": nfev})
+        return bool(np.isfinite(err) and err <= target)
+
+    r = rtol0
+    ok = attempt(r)
+    best = tried[-1] if ok else None
+    if ok:
+        while r * 2 <= 1e-4 and attempt(r * 2):
+            r *= 2
+            best = tried[-1]
+    else:
+        while r > MIN_RTOL:
+            r = max(MIN_RTOL, r / 2)
+            if attempt(r):
+                best = tried[-1]
+                break
+    last = best or tried[-1]
+    return {"rtol": last["rtol"], "error": last["error"], "nfev": last["nfev"], "reached": best is not None,
+            "tried": tried}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -655,10 +696,11 @@ _COLORS = {  # Kelly's colours of maximum contrast, black for the one PyDy serie
     "scipy-dop853": "#875692", "scipy-lsoda": "#654522", "scipy-radau": "#B3446C",
     "scipy-odeint": "#2B3D26", "scipy-rk45": "#604E97",
     "casadi-cvodes-adams": "#848482", "casadi-cvodes-bdf": "#C2B280", "casadi-idas": "#008080",
-    "pydy-odeint": "k"}
+    "pydy-odeint": "k", "heyoka-taylor": "#F6A600", "numbalsoda-dop853": "#DCD300"}
 _MARKERS = {"reduced": "o", "euler-angles": "s", "quaternion": "^", "euler-poisson": "D"}
 _FAMILY_NAMES = {"ours": "derive (filled, solid)", "scipy": "SciPy (hollow, dashed)",
-                 "casadi": "CasADi (hollow, dashed)", "pydy": "PyDy (hollow, dashed)"}
+                 "casadi": "CasADi (hollow, dashed)", "pydy": "PyDy (hollow, dashed)",
+                 "heyoka": "heyoka (hollow, dashed)", "numbalsoda": "numbalsoda (hollow, dashed)"}
 
 
 def _series_style(c) -> dict:

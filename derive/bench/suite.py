@@ -42,8 +42,8 @@ def splitting_runs(cfg: Settings) -> list[dict]:
 def main(out: Path, quick: bool = False, smoke: bool = False, peers: bool = True) -> dict:
     """Run the benchmarks and write ``out/report.md``, ``out/wp_<scene>.png``, ``out/points.csv``
     and ``out/results.json``. ``quick``: fewer tolerances and repeats (about 2 minutes);
-    ``smoke``: a few seconds, for the test suite; ``peers``: race CasADi and PyDy too when they
-    are installed. Returns the results (as written to JSON, with the work–precision curves as
+    ``smoke``: a few seconds, for the test suite; ``peers``: race CasADi, PyDy, heyoka and
+    numbalsoda too when they are installed. Returns the results (as written to JSON, with the work–precision curves as
     :class:`Curve` objects)."""
     cfg = SMOKE if smoke else QUICK if quick else FULL
     out = Path(out)
@@ -51,7 +51,8 @@ def main(out: Path, quick: bool = False, smoke: bool = False, peers: bool = True
     start = time.perf_counter()
     fams = [f for f in bc.families(peers) if f in cfg.families]
     results: dict = {"settings": {**asdict(cfg)}, "machine": machine(), "families": fams,
-                     "peers_missing": [f for f in ("casadi", "pydy") if f not in bc.families(peers)]}
+                     "peers_missing": [f for f in ("casadi", "pydy", "heyoka", "numbalsoda")
+                                       if f not in bc.families(peers)]}
 
     with tqdm(total=3, desc="kernel speed", unit="part", file=sys.stderr) as bar:
         results["c_loop"] = c_loop(cfg)

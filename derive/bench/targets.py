@@ -47,6 +47,7 @@ from tqdm import tqdm
 
 from derive.bench import runner as B
 from derive.bench import contenders as bc
+from derive.bench import peers as bench_peers
 from derive.bench.reference import REFERENCE, reference_data  # noqa: F401 - REFERENCE: T.REFERENCE
 
 
@@ -56,6 +57,9 @@ GOALS = {
     "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
     # issue 11
     "sweep_vs_scipy": ("≥", 100.0), "dask_vs_local": ("≤", 1.1), "dask_scaling": ("≥", 0.8),
+    # issue 20 (derive.bench.peers): derive's time over the peer's, at equal error
+    "vs_heyoka": ("≤", 0.7), "vs_numbalsoda": ("≤", 0.5), "long_vs_heyoka": ("≤", 0.7),
+    "batch_vs_heyoka": ("≤", 0.7), "fixed_prepared_vs_heyoka": ("≤", 1.5), "fixed_simulate_vs_heyoka": ("≤", 6.0),
 }
 
 
@@ -79,38 +83,8 @@ def _guard(name: str, fn, *args):
 # reference scene
 
 
-def _match(solve, target: float, rtol0: float = 1e-10) -> dict:
-    """The loosest rtol at which ``solve(rtol) -> (axis error, nfev)`` is no larger than
-    ``target``: halved from ``rtol0`` (down to MIN_RTOL) until it is, or, if ``rtol0`` already
-    is, doubled (up to 1e-4) while it stays so — the cheapest setting of the contender that is at
-    least as accurate as ours. Returns that try and the list of tries."""
-    tried = []
-
-    def attempt(r):
-        try:
-            err, nfev = solve(r)
-        except Exception as exc:  # noqa: BLE001 - a failed tolerance: another may work, or not
-            tried.append({"rtol": r, "error": None, "nfev": 0, "failure": str(exc)[:120]})
-            return False
-        tried.append({"rtol": r, "error": err, "nfev": nfev})
-        return bool(np.isfinite(err) and err <= target)
-
-    r = rtol0
-    ok = attempt(r)
-    best = tried[-1] if ok else None
-    if ok:
-        while r * 2 <= 1e-4 and attempt(r * 2):
-            r *= 2
-            best = tried[-1]
-    else:
-        while r > B.MIN_RTOL:
-            r = max(B.MIN_RTOL, r / 2)
-            if attempt(r):
-                best = tried[-1]
-                break
-    last = best or tried[-1]
-    return {"rtol": last["rtol"], "error": last["error"], "nfev": last["nfev"], "reached": best is not None,
-            "tried": tried}
+#: The loosest-tolerance search (in :mod:`derive.bench.runner`, shared with :mod:`derive.bench.peers`).
+_match = B.match_tolerance
 
 
 def reference_scene(cfg, fams) -> dict:
@@ -410,7 +384,7 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=7, desc="targets", unit="part", file=sys.stderr) as bar:
+    with tqdm(total=8, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
         out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
@@ -425,6 +399,8 @@ def run(cfg, fams) -> dict:
         out["lambdify"] = _guard("lambdify", numpy_vs_lambdify, cfg)
         bar.update()
         out["sweeps"] = _guard("sweeps", sweeps, cfg)
+        bar.update()
+        out["peers"] = _guard("peers", bench_peers.run, cfg, fams, batch_scenes)
         bar.update()
     return out
 
@@ -442,7 +418,7 @@ def sweeps(cfg) -> dict:
 
 #: Rows that are context, not targets: what the row's goal column says instead.
 CONTEXT = {"batch_vs_raw": "(solve only, no outputs)", "ceiling_vs_scipy": "(ceiling: C alone)",
-           "batch_ceiling_vs_scipy": "(ceiling: C alone)"}
+           "batch_ceiling_vs_scipy": "(ceiling: C alone)", "fixed_prepared_vs_numbalsoda": "(context)"}
 
 
 def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
@@ -487,4 +463,34 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
          sw.get("dask2_over_local2")),
         ("Dask scaling from 1 to 2 workers", "dask_scaling", sw.get("scaling_1_to_2")),
     ]
+    rows += peer_rows(t.get("peers") or {})
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]
+
+
+def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
+    """Issue 20's rows (what, goal key, derive's time / the peer's) from :mod:`derive.bench.peers`."""
+    rows = []
+    names = {"heyoka": "heyoka `taylor_adaptive`", "numbalsoda": "numbalsoda `dop853`"}
+    for part, what, key in (("reference", "reference scene", "vs_{}"), ("long", "long run", "long_vs_{}")):
+        eq = pe.get(part) or {}
+        for row in eq.get("rows", []):
+            for fam, entry in row["peers"].items():
+                rows.append((f"{what} (t_end = {eq['t_end']:g}) at equal error {row['level']:.0e}: "
+                             f"`derive.simulate` / {names[fam]}", key.format(fam), entry.get("ratio_simulate")))
+    ba = pe.get("batch") or {}
+    if "ratio_full_vs_grid" in ba:
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch(..., outputs=\"final\")` / "
+                     f"heyoka batch mode ({ba['lanes']} lanes) `propagate_until`", "batch_vs_heyoka",
+                     ba.get("ratio_final_vs_final")))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch` (every output, {ba['samples']} "
+                     f"samples) / heyoka batch `propagate_grid`", "batch_vs_heyoka", ba.get("ratio_full_vs_grid")))
+    fc = pe.get("fixed_cost") or {}
+    if "prepared_vs_heyoka" in fc:
+        rows.append(("fixed cost (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / heyoka",
+                     "fixed_prepared_vs_heyoka", fc["prepared_vs_heyoka"]))
+        rows.append(("fixed cost: `derive.simulate(dict)` / heyoka", "fixed_simulate_vs_heyoka",
+                     fc["simulate_vs_heyoka"]))
+    if "prepared_vs_numbalsoda" in fc:
+        rows.append(("fixed cost: `derive.prepare(...).run()` / numbalsoda `dop853`", "fixed_prepared_vs_numbalsoda",
+                     fc["prepared_vs_numbalsoda"]))
+    return rows

@@ -473,13 +473,22 @@ class ModelKernel:
                    pole_check, base + 8 * size_out, base, base + 8 * k_st)
         return out, y, pp, stats.view(STATS_DTYPE)[0]
 
-    def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0):
+    def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0, buffers=None):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,
         stats (N,)); each bit-for-bit what ``simulate`` gives. With ``pole_check`` the first
-        start that fails it stops the batch (its status RANGE)."""
+        start that fails it stops the batch (its status RANGE). ``buffers``: (out, y) arrays to
+        write into instead of new ones (C-contiguous float64, at least N trajectories long; the
+        first N are used), so a caller running chunks maps its work arrays once."""
         nb, n = inputs.shape[0], t.shape[0]
-        out = np.empty((nb, self.nout, n))
-        y = np.empty((nb, n, self.ny))
+        if buffers is None:
+            out = np.empty((nb, self.nout, n))
+            y = np.empty((nb, n, self.ny))
+        else:
+            out, y = buffers[0][:nb], buffers[1][:nb]
+            if (out.shape != (nb, self.nout, n) or y.shape != (nb, n, self.ny) or out.dtype != np.float64
+                    or y.dtype != np.float64 or not (out.flags.c_contiguous and y.flags.c_contiguous)):
+                raise ValueError("simulate_batch: buffers must be C-contiguous float64 arrays of shapes "
+                                 f"(>= {nb}, {self.nout}, {n}) and (>= {nb}, {n}, {self.ny})")
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)

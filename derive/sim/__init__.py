@@ -4,7 +4,8 @@ Takes: a scene (a TOML path, an example's name, or a dict). Gives: the validated
 :class:`~derive.sim.scene.Scene` (:mod:`~derive.sim.scene`; examples by name in
 :mod:`~derive.sim.examples`), the numbers a kernel takes (:mod:`~derive.sim.inputs`), the
 formulation ``auto`` picks (:mod:`~derive.sim.auto`), the result of one C call
-(:mod:`~derive.sim.simulation`), the output files written all or nothing
+(:mod:`~derive.sim.simulation`; of a batch keeping only the outputs asked for,
+:mod:`~derive.sim.batch`), the output files written all or nothing
 (:mod:`~derive.sim.outputs`), the plots (:mod:`~derive.sim.plots`) and the scene format's
 reference page (:mod:`~derive.sim.scene_doc`).
 

@@ -72,6 +72,30 @@ class Plan:
         """The solve_ivp method of a SciPy reference run, else None."""
         return SCIPY_METHODS.get(self.method)
 
+    @functools.cached_property
+    def integrals(self) -> list:
+        """The scene's integral functions ``[(name, f(L, n))]`` (:func:`integrals_of`), looked up
+        once per plan: a prepared run does not classify its scene again."""
+        return integrals_of(self.scene)
+
+
+def integrals_of(scene: Scene) -> list:
+    """``[(name, f(L, n))]``: the extra integral of the scene's integrable case
+    (:func:`derive.symbolic.integrable.integrals_for`; empty for a general body)."""
+    from derive.symbolic.integrable import integrals_for, on_area_level
+
+    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
+    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
+    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
+           on_area_level(scene))
+    found = _INTEGRALS.get(key)
+    if found is None:
+        found = _INTEGRALS[key] = integrals_for(scene)
+    return found
+
+
+_INTEGRALS: dict = {}
+
 
 def make(scene: Scene) -> Plan:
     """The plan of a validated scene (formulation "auto": every applicable candidate, cheapest

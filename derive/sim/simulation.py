@@ -140,9 +140,10 @@ _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
 
 
-def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Result:
+def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
-    checked them already (a batch checks all trajectories at once)."""
+    checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
+    integral functions when the caller has them (:attr:`derive.sim.plan.Plan.integrals`)."""
     views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, _ in OUTPUTS:
@@ -152,7 +153,7 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Re
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
                  model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
-    res.integrals = _integrals(scene, res, p)
+    res.integrals = _integrals(scene, res, p, integrals)
     for name, values in res.integrals.items():
         if not np.isfinite(values).all():
             j = int(np.argwhere(~np.isfinite(values))[0][0])
@@ -161,25 +162,14 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False) -> Re
     return res
 
 
-def _integrals(scene: Scene, res: Result, p) -> dict:
-    """``integral_<name>`` arrays of the scene's integrable case (none for a general body)."""
-    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in _integrals_of(scene)}
+def _integrals(scene: Scene, res: Result, p, found=None) -> dict:
+    """``integral_<name>`` arrays of the scene's integrable case (none for a general body);
+    ``found``: its integral functions when the caller has them (a plan keeps them)."""
+    found = plan.integrals_of(scene) if found is None else found
+    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in found}
 
 
-def _integrals_of(scene: Scene):
-    from derive.symbolic.integrable import integrals_for, on_area_level
-
-    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
-    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
-           on_area_level(scene))
-    found = _INTEGRALS.get(key)
-    if found is None:
-        found = _INTEGRALS[key] = integrals_for(scene)
-    return found
-
-
-_INTEGRALS: dict = {}
+_integrals_of = plan.integrals_of  # its old home
 
 
 def _clear_of_pole(sin_beta, rtol):
@@ -254,7 +244,7 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
         nfev = int(st["nfev"])
     _check_pole(desc, t, out[1], sc.simulate.rtol)
     # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT); SciPy's did not.
-    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None)
+    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None, integrals=pl.integrals)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
@@ -280,9 +270,75 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     that effect vanish (``[damping] c = 0`` beside c > 0) runs the term with its zero
     coefficient, and a scene without the table cannot join such a batch (nothing gives c).
     """
+    bp = batch_plan(scenes, **overrides)
+    if bp is None:
+        return []
+    scs, t, method = bp.scenes, bp.t, bp.method
+    for formulation, pole_check in bp.candidates:
+        desc, kernel, args = bp.kernel(formulation)
+        ps = bp.params(desc)
+        out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        if not (st["status"] == Status.RANGE).any():
+            break
+    bp.raise_failure(desc, st)
+    # The pole check of every trajectory at once; one that fails is then found and named per
+    # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
+    suspect = _pole_suspects(desc, out[:, 1], scs[0].simulate.rtol)
+    nfev = st["nfev"].tolist()
+    results = []
+    for b, sc in enumerate(scs):
+        if suspect[b]:
+            _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True))
+    return results
+
+
+@dataclass
+class BatchPlan:
+    """What a batch runs, decided once for all its scenes (:func:`batch_plan`): the validated
+    ``scenes``, the ``method``, the shared output times ``t``, the init-map ``inputs`` (N, NIN),
+    the ``effects`` of the one model, the fixed step ``h`` (None: the scene's or adaptive) and
+    the ``candidates`` (formulation, pole check) in the order they are tried."""
+
+    scenes: list
+    method: str
+    t: np.ndarray
+    inputs: np.ndarray
+    effects: tuple
+    h: float | None
+    candidates: tuple
+
+    def kernel(self, formulation: str):
+        """(model description, compiled kernel, driver arguments) of one candidate."""
+        first = self.scenes[0]
+        desc = catalogue.describe((formulation, first.symmetric, self.effects))
+        kernel = ModelKernel.load(desc, self.method)
+        if self.h is not None:
+            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
+        else:
+            args = _settings(first, self.method, kernel)
+        return desc, kernel, args
+
+    def params(self, desc, scenes=None) -> np.ndarray:
+        """The parameter vectors (N, NP) of the scenes (default: all) for a model."""
+        return np.array([params_of(sc, desc) for sc in (self.scenes if scenes is None else scenes)])
+
+    def raise_failure(self, desc, st, offset: int = 0) -> None:
+        """IntegrationError naming the first scene whose status (in ``st``, the stats of scenes
+        ``offset``, ``offset + 1``, …) is a failure; nothing when all succeeded."""
+        status = st["status"]
+        if status.any():
+            b = int(np.flatnonzero(status)[0])
+            sc = self.scenes[offset + b]
+            raise IntegrationError(f"{sc.source}: {_explain(desc, st[b], sc.simulate.max_steps)}")
+
+
+def batch_plan(scenes, **overrides) -> BatchPlan | None:
+    """Validate the scenes of a batch and decide what it runs (None for no scenes): one model
+    with every effect that acts in any scene, the shared method, output times and settings."""
     scs = [load_scene(s, **overrides) for s in scenes]
     if not scs:
-        return []
+        return None
     first = scs[0]
 
     # One model for the batch: the effects that act in any scene (registry order), each named
@@ -309,33 +365,8 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
         h = min(default_step(sc) for sc in scs)
         for sc in scs:
             _check_budget(sc, method, h)
-    inputs = np.array([inputs_of(sc) for sc in scs])
-    t = first.t_out
-    for formulation, pole_check in auto.batch_plan(scs, effects):
-        desc = catalogue.describe((formulation, first.symmetric, effects))
-        kernel = ModelKernel.load(desc, method)
-        if h is not None:
-            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, h, first.simulate.max_steps)
-        else:
-            args = _settings(first, method, kernel)
-        ps = np.array([params_of(sc, desc) for sc in scs])
-        out, y, ps, st = kernel.simulate_batch(inputs, ps, t, args, pole_check)
-        if not (st["status"] == Status.RANGE).any():
-            break
-    status = st["status"]
-    if status.any():
-        b = int(np.flatnonzero(status)[0])
-        raise IntegrationError(f"{scs[b].source}: {_explain(desc, st[b], scs[b].simulate.max_steps)}")
-    # The pole check of every trajectory at once; one that fails is then found and named per
-    # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
-    suspect = _pole_suspects(desc, out[:, 1], first.simulate.rtol)
-    nfev = st["nfev"].tolist()
-    results = []
-    for b, sc in enumerate(scs):
-        if suspect[b]:
-            _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
-        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True))
-    return results
+    return BatchPlan(scs, method, first.t_out, np.array([inputs_of(sc) for sc in scs]), effects, h,
+                     tuple(auto.batch_plan(scs, effects)))
 
 
 def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:

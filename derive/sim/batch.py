@@ -1,0 +1,165 @@
+"""A batch that keeps only the outputs asked for: ``derive.simulate_batch(scenes, outputs=...)``.
+
+The compiled batch driver writes every output at every sample of each trajectory (and its
+states) into the arrays it is given: 1000 trajectories of 1001 samples would map about 200 MB.
+Here the driver runs in chunks of trajectories whose work arrays (a few MB) are allocated once
+and reused, and only what was asked for is copied out of them into the arrays returned:
+
+* ``outputs="final"``: every output (and the state) at the last sample only, arrays of shape
+  (N,) or (N, 3) (state (N, NY));
+* ``outputs=("beta", "axis", ...)``: those outputs at every sample, (N, n) or (N, n, 3)
+  (``"state"``: (N, n, NY)).
+
+The numbers are bit for bit those of the full batch (the same C call per trajectory; a chunk
+changes nothing a trajectory computes). No Result per trajectory: one :class:`BatchResult`.
+
+Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from derive.errors import IntegrationError, SceneError
+from derive.methods.status import Status
+from derive.sim import simulation
+from derive.symbolic.formulations import OUTPUTS
+
+#: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
+#: per some tens of trajectories), small enough to stay in the caches.
+CHUNK_BYTES = 4 << 20
+
+_WIDTH = dict(OUTPUTS)
+_OFFSET = {name: sum(w for _, w in OUTPUTS[:i]) for i, (name, _) in enumerate(OUTPUTS)}
+_RANGE = int(Status.RANGE)
+
+
+@dataclass
+class BatchResult:
+    """The outputs asked for of N trajectories, stacked along a first axis of length N.
+
+    Attributes
+    ----------
+    outputs : dict
+        ``{name: array}``: with ``final``, each output at the last sample ((N,) or (N, 3)) and
+        ``state`` (N, NY); else the names asked for at every sample ((N, n) or (N, n, 3);
+        ``state`` (N, n, NY)). Also readable as attributes (``res.beta``).
+    t : ndarray
+        The output times (n,) of the full trajectories (with ``final``, the last is the one
+        the arrays are at).
+    final : bool
+        Whether the arrays hold the last sample only.
+    nfev : ndarray, shape (N,)
+        Right-hand-side evaluations per trajectory.
+    method, formulation, model : str
+        What ran (one model for the whole batch).
+    """
+
+    outputs: dict
+    t: np.ndarray
+    final: bool
+    nfev: np.ndarray
+    method: str
+    formulation: str
+    model: str
+    effects: tuple = field(default=())
+
+    def __len__(self) -> int:
+        return len(self.nfev)
+
+    def __getattr__(self, name):
+        outputs = self.__dict__.get("outputs", {})
+        if name in outputs:
+            return outputs[name]
+        raise AttributeError(name)
+
+
+def _selection(outputs) -> tuple[bool, tuple[str, ...]]:
+    """(final, names) of the ``outputs`` argument; SceneError for anything else."""
+    if isinstance(outputs, str):
+        if outputs == "final":
+            return True, tuple(name for name, _ in OUTPUTS) + ("state",)
+        outputs = (outputs,)
+    try:
+        names = tuple(outputs)
+    except TypeError:
+        names = None
+    known = tuple(name for name, _ in OUTPUTS) + ("state",)
+    if not names or not all(isinstance(n, str) for n in names):
+        raise SceneError(f"<batch>: outputs: \"final\" or a sequence of output names ({', '.join(known)}), "
+                         f"not {outputs!r}")
+    for n in names:
+        if n not in known:
+            raise SceneError(f"<batch>: outputs: unknown output {n!r} (the outputs: {', '.join(known)})")
+    return False, tuple(dict.fromkeys(names))
+
+
+def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
+    """Simulate the scenes as :func:`derive.sim.simulation.simulate_batch` does, keeping only
+    ``outputs`` (``"final"`` or a sequence of output names, see the module). None for no scenes."""
+    final, names = _selection(outputs)
+    bp = simulation.batch_plan(scenes, **overrides)
+    if bp is None:
+        return None
+    for formulation, pole_check in bp.candidates:
+        desc, kernel, args = bp.kernel(formulation)
+        refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+        if not refused:
+            break
+    else:  # every candidate refused a start: the last one's refusal, named as the full batch names it
+        bp.raise_failure(desc, arrays, offset=nfev)
+    return BatchResult(arrays, bp.t, final, nfev, bp.method, desc.formulation, desc.name, desc.effects)
+
+
+def _run(bp, desc, kernel, args, pole_check, final, names):
+    """The chunks of one candidate formulation: (False, {name: array}, nfev), or (True, the
+    chunk's stats, its offset) when the driver's pole check refused a start (status RANGE: the
+    next candidate runs the whole batch)."""
+    scs, t = bp.scenes, bp.t
+    nb, n = len(scs), len(t)
+    nout, ny = kernel.nout, kernel.ny
+    per = 8 * n * (nout + ny)
+    chunk = max(1, min(nb, CHUNK_BYTES // per))
+    work = (np.empty((chunk, nout, n)), np.empty((chunk, n, ny)))
+    arrays = {}
+    for name in names:
+        width = ny if name == "state" else _WIDTH[name]
+        shape = (nb,) + (() if final else (n,)) + (() if width == 1 and name != "state" else (width,))
+        arrays[name] = np.empty(shape)
+    nfev = np.empty(nb, dtype=np.int64)
+    rtol = scs[0].simulate.rtol
+    pole_error = None
+    for s in range(0, nb, chunk):
+        e = min(nb, s + chunk)
+        out, y, _, st = kernel.simulate_batch(bp.inputs[s:e], bp.params(desc, scs[s:e]), t, args, pole_check,
+                                              buffers=work)
+        if (st["status"] == _RANGE).any():
+            return True, st, s
+        bp.raise_failure(desc, st, offset=s)
+        nfev[s:e] = st["nfev"]
+        # The pole check of the full batch, per chunk while β is at hand; its error is raised
+        # after every chunk ran, so a failed integration elsewhere is named first, as there.
+        if pole_error is None:
+            suspect = simulation._pole_suspects(desc, out[:, 1], rtol)
+            for b in np.flatnonzero(suspect):
+                try:
+                    simulation._check_pole(desc, t, out[b, 1], scs[s + b].simulate.rtol)
+                except IntegrationError as exc:  # kept until every chunk ran
+                    pole_error = exc
+                    break
+        k = slice(None) if not final else -1
+        for name, dest in arrays.items():
+            if name == "state":
+                dest[s:e] = y[:, k]
+                continue
+            o, width = _OFFSET[name], _WIDTH[name]
+            if width == 1:
+                dest[s:e] = out[:, o, k]
+            elif final:
+                dest[s:e] = out[:, o:o + width, -1]
+            else:  # the driver writes (NOBS, n) per trajectory: a wide output is (width, n)
+                dest[s:e] = np.swapaxes(out[:, o:o + width], 1, 2)
+    if pole_error is not None:
+        raise pole_error
+    return False, arrays, nfev
