@@ -64,6 +64,12 @@ def _cmd_generate(args) -> int:
 
 
 def _cmd_verify(args) -> int:
+    if getattr(args, "notes", None):
+        return _cmd_verify_notes(args)
+    for flag, value in (("--format", "json" if args.format == "json" else None),
+                        ("--convention", getattr(args, "convention", None))):
+        if value:
+            raise SceneError(f"derive verify: {flag}: {value} needs a notes file (derive verify NOTES.md {flag} {value})")
     from derive.lecture import verify
 
     note("deriving the lecture's formulas with SymPy (a few seconds)")
@@ -72,6 +78,16 @@ def _cmd_verify(args) -> int:
     for claim, expected, got in wrong:
         print(f"unexpected verdict: {claim}: {got} (expected {expected})", file=sys.stderr)
     return EXIT_DIFF if wrong else EXIT_OK
+
+
+def _cmd_verify_notes(args) -> int:
+    """``derive verify NOTES.md``: every formula of the notes against the derivation."""
+    from derive.lecture import notes_check
+
+    note("reading the notes and deriving their formulas with SymPy (a few seconds)")
+    claims = notes_check.check_notes(args.notes, args.convention)
+    sys.stdout.write(notes_check.render(claims, args.format, path=str(args.notes)))
+    return notes_check.exit_status(claims)
 
 
 #: `derive simulate` flags that override the scene's [simulate] keys (flag dest -> scene key).
@@ -321,9 +337,13 @@ def parser() -> argparse.ArgumentParser:
                    help="then print the lecture verification table (exit 1 on an unexpected verdict)")
     g.set_defaults(func=_cmd_generate)
 
-    v = sub.add_parser("verify", help="check every formula of the lecture against the derivation")
-    v.add_argument("--format", choices=("text", "markdown"), default="text",
-                   help="text (aligned columns, default) or markdown (a table)")
+    v = sub.add_parser("verify", help="check every formula of the lecture (or of your own notes) against the derivation")
+    v.add_argument("notes", nargs="?", default=None,
+                   help="a Markdown file with LaTeX math to check (default: the lecture's curated table)")
+    v.add_argument("--format", choices=("text", "markdown", "json"), default="text",
+                   help="text (aligned columns, default), markdown (a table) or json (with a notes file)")
+    v.add_argument("--convention", choices=("z-y-z", "z-x-z"), default=None,
+                   help="the notes' Euler-angle convention (overrides their front matter; default z-y-z)")
     v.set_defaults(func=_cmd_verify)
 
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())

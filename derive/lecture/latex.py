@@ -1,0 +1,875 @@
+"""LaTeX as physicists write it, read into SymPy through a whitelist: never ``eval``, never ``sympify``.
+
+A formula goes through three steps:
+
+1. **Scanning** (`scan`): the physics notation is recognised token by token — decorated symbols
+   (``\\dot``, ``\\ddot``, ``\\tilde``/``\\widetilde``, ``\\hat``, ``\\mathbf``/``\\boldsymbol``/``\\vec``)
+   with their subscripts, superscripts and primes become one *atom* each; spacing commands,
+   ``\\left``/``\\right`` and ``[ ]`` used as parentheses are normalised; ``\\equiv``, ``\\approx``,
+   ``\\ge``, ``\\le``, ``\\neq`` are relations; anything else that is a command is refused by
+   name.
+2. **Parsing** (`parse`): a recursive-descent parser over those tokens (sums, products, implicit
+   products, powers, ``\\frac``, ``\\sqrt``, sin/cos/tan with or without parentheses, sums
+   ``\\sum_i`` over body axes 1..3, ``pmatrix``/``bmatrix`` matrices and column vectors,
+   ``d\\mathbf{L}/dt`` and ``\\partial L/\\partial\\dot q``) builds SymPy objects directly. What it
+   cannot read is handed, with every atom replaced by a placeholder symbol, to SymPy's own LaTeX
+   parser (``parse_latex(…, backend="lark")``) — the slow path (a third of a second per formula,
+   ambiguous on implicit products), so only for what the fast path refuses. A formula neither
+   reads is `NotRead` with the column (1-based, in the formula) where reading stopped.
+3. **Vocabulary** (`Vocabulary`): every atom is looked up among the derivation's quantities and
+   their usual spellings: the Euler angles of the notes' convention and their rates, ω̃ᵢ (also
+   written ωᵢ), I₁ I₂ I₃ (Iᵢ in sums), M g l, p_α p_γ, Ω Ω₁ Ω₂, the unit vectors ê₁ ê₂ ê₃, ê′ᵢ,
+   ê⁰ᵢ, and the named quantities T, L (Lagrangian), **L** (angular momentum), E, E′, V_eff, **ω**.
+   An atom outside it is `Unknown` (``unknown symbol X``).
+
+Named quantities are returned as `Quantity` symbols (the checker substitutes what they stand
+for); the others are the derivation's own SymPy symbols (`derive.symbolic`), so a parsed formula
+can be compared with a derived one directly.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
+from derive.symbolic.rotations import ANGLES, RATES
+from derive.symbolic.lagrangian import ACCELS
+
+# --- the symbols of the notes ------------------------------------------------------------------
+W = sp.symbols("omega1:4", real=True)              # ω̃ᵢ (the symbols of derive.symbolic.stability)
+WD = sp.symbols("omega_d1:4", real=True)           # dω̃ᵢ/dt
+BASIS = sp.symbols("e1 e2 e3", real=True)          # ê₁ ê₂ ê₃ (body)
+PRIMED = sp.symbols("e1' e2' e3'", real=True)      # ê′ᵢ: the frame after the first two turns
+INERTIAL = sp.symbols("e1^0 e2^0 e3^0", real=True)  # ê⁰ᵢ: the inertial frame
+Omega, Omega1, Omega2 = sp.symbols("Omega Omega_1 Omega_2", real=True)
+t = sp.Symbol("t", real=True)
+FREE_NAMES = {"A": "A", "B": "B", "C": "C", "t": "t", "varphi": "varphi", "delta": "delta", "epsilon": "epsilon"}
+"""Letters a text may use as its own constants without defining them (amplitude, time, phase…)."""
+
+
+class Quantity(sp.Symbol):
+    """A named quantity of the derivation (T, E, V_eff, …) as it appears in a formula: the checker
+    replaces it by what the derivation says it is."""
+
+
+def quantity(name: str) -> Quantity:
+    return Quantity(name)
+
+
+T_ = quantity("T")
+LAGRANGIAN = quantity("L")
+LVEC = quantity("Lvec")                  # angular momentum 𝐋
+ENERGY = quantity("E")
+EPRIME = quantity("E'")
+VEFF = quantity("V_eff")
+OMEGA_VEC = quantity("omega_vec")        # 𝛚 (= ω̃ in body components)
+DLDT = quantity("dL/dt")
+DLDT_BODY = quantity("(dL/dt)_body")
+MOMENTUM = {0: quantity("dL/dalpha_d"), 2: quantity("dL/dgamma_d"), 1: quantity("dL/dbeta_d")}
+
+QUANTITY_LATEX = {
+    T_: "T", LAGRANGIAN: "L", LVEC: r"\mathbf{L}", ENERGY: "E", EPRIME: "E'", VEFF: r"V_{\mathrm{eff}}",
+    OMEGA_VEC: r"\boldsymbol{\omega}", DLDT: r"\frac{d\mathbf{L}}{dt}",
+}
+
+
+# --- errors ------------------------------------------------------------------------------------
+class NotRead(Exception):
+    """A formula that cannot be read: ``why`` says what and where."""
+
+    def __init__(self, why: str, column: int | None = None):
+        super().__init__(why)
+        self.why = why
+        self.column = column
+
+
+class Unknown(NotRead):
+    """An atom outside the vocabulary."""
+
+
+class Words(NotRead):
+    """Text, not a formula (``\\text{…}``)."""
+
+
+# --- scanning ----------------------------------------------------------------------------------
+GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta",
+         "iota", "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi",
+         "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma",
+         "Phi", "Psi", "Omega"}
+DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
+               "widehat": "hat", "mathbf": "bold", "boldsymbol": "bold", "bm": "bold", "vec": "vec",
+               "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec"}
+SPACES = {",", ";", ":", "!", " ", "quad", "qquad", "left", "right", "big", "Big", "bigg", "Bigg",
+          "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
+FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+             "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
+RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
+             "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
+             "rightarrow": "→", "propto": "∝", "sim": "∼"}
+
+
+@dataclass(frozen=True)
+class Atom:
+    """One symbol as written: its base letter (a Latin letter or a Greek name) and decorations."""
+
+    base: str
+    dots: int = 0
+    tilde: bool = False
+    hat: bool = False
+    bold: bool = False
+    sub: str = ""
+    sup: str = ""
+    primes: int = 0
+    text: str = ""
+
+    def with_(self, **kw) -> "Atom":
+        return Atom(**{**self.__dict__, **kw})
+
+
+@dataclass(frozen=True)
+class Tok:
+    kind: str       # num, atom, op, rel, func, cmd, begin, end, text
+    value: object
+    pos: int        # 0-based offset in the formula
+
+
+_CMD = re.compile(r"\\([A-Za-z]+|.)")
+
+
+def _group(s: str, i: int) -> tuple[str, int]:
+    """The braced group starting at s[i] == '{' (content, index after it); a single token otherwise."""
+    while i < len(s) and s[i] == " ":
+        i += 1
+    if i >= len(s):
+        raise NotRead("a group is missing at the end", i + 1)
+    if s[i] == "{":
+        depth, j = 0, i
+        while j < len(s):
+            if s[j] == "\\":
+                j += 2
+                continue
+            if s[j] == "{":
+                depth += 1
+            elif s[j] == "}":
+                depth -= 1
+                if depth == 0:
+                    return s[i + 1:j], j + 1
+            j += 1
+        raise NotRead("unbalanced '{'", i + 1)
+    m = _CMD.match(s, i)
+    if m:
+        return m.group(0), m.end()
+    return s[i], i + 1
+
+
+def _plain(s: str) -> str:
+    """A subscript or superscript as plain text: 'eff', '1', 'ij', '\\alpha' → 'alpha', "'" kept."""
+    s = re.sub(r"\\(mathrm|text|mathit|rm)\s*", "", s)
+    s = s.replace("\\prime", "'").replace("{", "").replace("}", "").replace(" ", "")
+    return re.sub(r"\\([A-Za-z]+)", r"\1", s)
+
+
+def _atom_at(s: str, i: int) -> tuple[Atom, int]:
+    """Read one (possibly decorated) atom at s[i]; return it and the index after its sub/superscripts."""
+    m = _CMD.match(s, i)
+    if m and m.group(1) in DECORATIONS:
+        kind = DECORATIONS[m.group(1)]
+        inner, j = _group(s, m.end())
+        if kind == "roman" and re.fullmatch(r"[A-Za-z]+", inner.strip()) and len(inner.strip()) > 1:
+            atom = Atom(inner.strip())
+        else:
+            atom, k = _atom_at(inner.strip(), 0)
+            if k < len(inner.strip()):
+                raise NotRead(f"cannot read '\\{m.group(1)}{{{inner}}}'", i + 1)
+        if kind == "dot":
+            atom = atom.with_(dots=atom.dots + 1)
+        elif kind == "ddot":
+            atom = atom.with_(dots=atom.dots + 2)
+        elif kind == "tilde":
+            atom = atom.with_(tilde=True)
+        elif kind == "hat":
+            atom = atom.with_(hat=True)
+        elif kind in ("bold", "vec"):
+            atom = atom.with_(bold=True)
+    elif m and m.group(1) in GREEK:
+        atom, j = Atom(m.group(1)), m.end()
+    elif i < len(s) and s[i].isalpha() and s[i].isascii():
+        atom, j = Atom(s[i]), i + 1
+    else:
+        raise NotRead(f"cannot read {s[i:i + 12]!r}", i + 1)
+    # sub- and superscripts that belong to the symbol: subscripts always; primes; a superscript
+    # that is 0 or a prime (ê⁰₃, E′); numeric superscripts otherwise are powers (left to the parser).
+    while j < len(s):
+        k = j
+        while k < len(s) and s[k] == " ":
+            k += 1
+        if k < len(s) and s[k] == "_":
+            sub, j = _group(s, k + 1)
+            atom = atom.with_(sub=atom.sub + _plain(sub))
+        elif k < len(s) and s[k] == "'":
+            atom, j = atom.with_(primes=atom.primes + 1), k + 1
+        elif k < len(s) and s[k] == "^":
+            sup, after = _group(s, k + 1)
+            plain = _plain(sup)
+            if plain and set(plain) == {"'"}:
+                atom, j = atom.with_(primes=atom.primes + len(plain)), after
+            elif plain == "0" and (atom.hat or atom.bold):
+                atom, j = atom.with_(sup="0"), after
+            else:
+                break
+        else:
+            break
+    return atom.with_(text=s[i:j].strip()), j
+
+
+def scan(s: str) -> list[Tok]:
+    """The tokens of one formula (see the module docstring)."""
+    toks: list[Tok] = []
+    i, n = 0, len(s)
+    while i < n:
+        ch = s[i]
+        if ch.isspace() or ch in "&~":
+            i += 1
+            continue
+        if ch.isdigit() or (ch == "." and i + 1 < n and s[i + 1].isdigit()):
+            m = re.match(r"\d*\.?\d+|\d+", s[i:])
+            toks.append(Tok("num", m.group(0), i))
+            i += m.end()
+            continue
+        if ch in "+-*/^_(){},|!":
+            toks.append(Tok("op", ch, i))
+            i += 1
+            continue
+        if ch in "[]":
+            toks.append(Tok("op", "(" if ch == "[" else ")", i))
+            i += 1
+            continue
+        if ch in "=<>":
+            toks.append(Tok("rel", RELATIONS[ch], i))
+            i += 1
+            continue
+        if ch == "'":
+            raise NotRead("a prime on something that is not a symbol", i + 1)
+        if ch == "\\":
+            m = _CMD.match(s, i)
+            name = m.group(1)
+            if name == "\\":
+                toks.append(Tok("op", "\\\\", i))
+                i = m.end()
+                continue
+            if name in SPACES:
+                i = m.end()
+                continue
+            if name in ("{", "}"):
+                toks.append(Tok("op", "(" if name == "{" else ")", i))
+                i = m.end()
+                continue
+            if name in ("lbrack", "rbrack", "lvert", "rvert", "vert"):
+                toks.append(Tok("op", {"lbrack": "(", "rbrack": ")"}.get(name, "|"), i))
+                i = m.end()
+                continue
+            if name in RELATIONS:
+                toks.append(Tok("rel", RELATIONS[name], i))
+                i = m.end()
+                continue
+            if name in ("text", "mbox", "textrm", "textbf", "textit", "hbox"):
+                raise Words("words, not a formula", i + 1)
+            if name in ("begin", "end"):
+                env, j = _group(s, m.end())
+                toks.append(Tok(name, env.strip(), i))
+                i = j
+                continue
+            if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
+                                             "times", "pm", "mp", "infty", "ldots", "cdots", "dots"):
+                toks.append(Tok("cmd", name, i))
+                i = m.end()
+                continue
+            if name in DECORATIONS or name in GREEK:
+                atom, j = _atom_at(s, i)
+                toks.append(Tok("atom", atom, i))
+                i = j
+                continue
+            raise NotRead(f"cannot read '\\{name}'", i + 1)
+        if ch.isalpha() and ch.isascii():
+            atom, j = _atom_at(s, i)
+            toks.append(Tok("atom", atom, i))
+            i = j
+            continue
+        raise NotRead(f"cannot read {ch!r}", i + 1)
+    return toks
+
+
+# --- the vocabulary ----------------------------------------------------------------------------
+@dataclass
+class Vocabulary:
+    """Atoms → SymPy: the derivation's symbols and quantities under their usual spellings.
+
+    ``angles`` are the notes' names of the three Euler angles, in order (the first about the
+    inertial axis); ``defined`` holds the symbols the notes define themselves (Ω ≡ …).
+    """
+
+    angles: tuple = ("alpha", "beta", "gamma")
+    aliases: tuple = ("phi", "theta", "psi")
+    defined: dict = field(default_factory=dict)
+
+    def angle_index(self, base: str) -> int | None:
+        for names in (self.angles, self.aliases):
+            if base in names:
+                return names.index(base)
+        return None
+
+    def resolve(self, a: Atom, env: dict | None = None):
+        """The SymPy object an atom stands for (``env``: a summation index → 1, 2 or 3)."""
+        env = env or {}
+        mine = self.defined.get(a.with_(text=""))
+        if mine is not None:
+            return mine
+        sub = a.sub
+        if sub and len(sub) == 1 and sub in env:
+            sub = str(env[sub])
+        k = self.angle_index(a.base)
+        if k is not None and not a.sub and not a.hat and not a.tilde and not a.bold and not a.primes:
+            if a.dots == 0:
+                return ANGLES[k]
+            return (RATES if a.dots == 1 else ACCELS)[k]
+        b = a.base
+        if b == "omega":
+            if a.bold and not sub:
+                return OMEGA_VEC if a.dots == 0 else None
+            if sub in ("1", "2", "3") and not a.bold:
+                i = int(sub) - 1
+                if a.dots == 0:
+                    return W[i]
+                if a.dots == 1:
+                    return WD[i]
+            if sub == "0":
+                raise Unknown(f"unknown symbol {a.text}")
+        if b == "e" and (a.hat or a.bold):
+            if sub in ("1", "2", "3"):
+                i = int(sub) - 1
+                if a.sup == "0":
+                    return INERTIAL[i]
+                if a.primes == 1:
+                    return PRIMED[i]
+                if a.primes == 0:
+                    return BASIS[i]
+        if b == "I" and not a.bold and not a.dots and not a.primes:
+            if sub in ("1", "2", "3"):
+                return (I1, I2, I3)[int(sub) - 1]
+        if b == "M" and not sub and not a.dots:
+            return Mass
+        if b in ("g", "l") and not sub and not a.dots and not a.bold:
+            return {"g": g, "l": l}[b]
+        if b == "p" and not a.dots and not a.bold:
+            k = self.angle_index(sub)
+            if k == 0:
+                return p_alpha
+            if k == 2:
+                return p_gamma
+        if b == "Omega" and not a.dots and not a.bold:
+            if sub == "":
+                return Omega
+            if sub in ("1", "2"):
+                return (Omega1, Omega2)[int(sub) - 1]
+        if b == "T" and not sub and not a.dots and not a.primes:
+            return T_
+        if b == "L" and not sub and not a.dots and not a.primes:
+            return LVEC if a.bold else LAGRANGIAN
+        if b == "E" and not sub and not a.dots:
+            return {0: ENERGY, 1: EPRIME}.get(a.primes)
+        if b == "V" and sub == "eff":
+            return VEFF
+        if not a.dots and not a.sub and not a.bold and not a.hat and not a.tilde and b in FREE_NAMES:
+            return sp.Symbol(FREE_NAMES[b], real=True)
+        return None
+
+
+def p_alpha_sym():
+    """p for the first angle (the derivation's ``p_alpha``)."""
+    return p_alpha
+
+
+def p_gamma_sym():
+    """p for the third angle (the derivation's ``p_gamma``)."""
+    return p_gamma
+
+
+def latex_atoms(latex: str, vocab: Vocabulary) -> set:
+    """The derivation symbols the atoms of a formula stand for (unknown atoms left out)."""
+    out = set()
+    try:
+        toks = scan(latex)
+    except NotRead:
+        return out
+    for tok in toks:
+        if tok.kind == "atom":
+            try:
+                v = vocab.resolve(tok.value)
+            except NotRead:
+                continue
+            if isinstance(v, sp.Symbol):
+                out.add(v)
+    return out
+
+
+# --- parsing -----------------------------------------------------------------------------------
+@dataclass
+class Member:
+    """One side of a relation: its value and what the notes wrote as a quantity's arguments."""
+
+    value: object
+    args: tuple | None = None       # T(α, …), L(β, β̇), ω̃₁(t): the argument symbols written
+    pos: int = 0
+
+
+@dataclass
+class Parsed:
+    """A formula: members m₀ r₁ m₁ r₂ m₂ … (relations between consecutive members)."""
+
+    members: list
+    relations: list
+
+
+class _Parser:
+    def __init__(self, toks: list[Tok], vocab: Vocabulary, source: str):
+        self.toks, self.vocab, self.source, self.i = toks, vocab, source, 0
+        self.args = None
+
+    # helpers
+    def peek(self, k=0):
+        j = self.i + k
+        return self.toks[j] if j < len(self.toks) else None
+
+    def fail(self, why, tok=None):
+        tok = tok or self.peek()
+        col = (tok.pos + 1) if tok else len(self.source) + 1
+        raise NotRead(f"cannot parse at column {col}: {why}", col)
+
+    def take(self, kind, value=None):
+        tok = self.peek()
+        if tok is None or tok.kind != kind or (value is not None and tok.value != value):
+            self.fail(f"expected {value or kind}")
+        self.i += 1
+        return tok
+
+    def at(self, kind, value=None):
+        tok = self.peek()
+        return tok is not None and tok.kind == kind and (value is None or tok.value == value)
+
+    # grammar
+    def chain(self) -> Parsed:
+        members, rels = [self.member()], []
+        while self.at("rel"):
+            rels.append(self.take("rel").value)
+            members.append(self.member())
+        if self.peek() is not None:
+            self.fail(f"unexpected {self.peek().value!r}")
+        return Parsed(members, rels)
+
+    def member(self) -> Member:
+        pos = self.peek().pos if self.peek() else len(self.source)
+        self.args = None
+        if self.peek() is None or self.at("rel"):
+            self.fail("a side of a relation is empty")
+        value = self.expr({})
+        return Member(value, self.args, pos)
+
+    def expr(self, env):
+        sign = 1
+        if self.at("op", "+"):
+            self.i += 1
+        elif self.at("op", "-"):
+            self.i += 1
+            sign = -1
+        total = sign * self.term(env)
+        while self.at("op", "+") or self.at("op", "-") or self.at("cmd", "pm"):
+            op = self.take(self.peek().kind).value
+            if op == "pm":
+                self.fail("± is not a single formula")
+            rhs = self.term(env)
+            total = total + rhs if op == "+" else total - rhs
+        return total
+
+    def _starts_factor(self):
+        tok = self.peek()
+        if tok is None:
+            return False
+        if tok.kind in ("num", "atom", "func", "begin"):
+            return True
+        if tok.kind == "op" and tok.value in "({":
+            return True
+        return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial") | FUNCTIONS.keys()
+
+    def term(self, env):
+        value = self.factor(env)
+        while True:
+            if self.at("cmd", "cdot") or self.at("op", "*"):
+                self.i += 1
+                value = _mul(value, self.factor(env))
+            elif self.at("cmd", "times"):
+                self.fail("vector products (×) are not read")
+            elif self.at("op", "/"):
+                self.i += 1
+                value = value / self.factor(env)
+            elif self._starts_factor():
+                value = _mul(value, self.factor(env))
+            else:
+                return value
+
+    def factor(self, env):
+        if self.at("op", "-"):
+            self.i += 1
+            return -self.factor(env)
+        base = self.primary(env)
+        while self.at("op", "^"):
+            self.i += 1
+            exp = self.group_or_token(env)
+            base = base ** exp
+        return base
+
+    def group_or_token(self, env):
+        """A superscript or a function argument written without braces: one token or a group."""
+        if self.at("op", "{") or self.at("op", "("):
+            return self.paren(env)
+        tok = self.peek()
+        if tok is not None and tok.kind == "num":
+            self.i += 1
+            # ^23 means ^{2}3 in TeX: one digit only
+            digits = tok.value
+            if len(digits) > 1 and digits.isdigit():
+                self.toks.insert(self.i, Tok("num", digits[1:], tok.pos + 1))
+                return sp.Integer(digits[0])
+            return sp.Rational(digits)
+        if tok is not None and tok.kind == "atom":
+            self.i += 1
+            return self.atom(tok, env)
+        if tok is not None and tok.kind == "op" and tok.value == "-":
+            self.i += 1
+            return -self.group_or_token(env)
+        self.fail("expected an exponent")
+
+    def paren(self, env):
+        open_ = self.take("op").value
+        close = ")" if open_ == "(" else "}"
+        value = self.expr(env)
+        if not self.at("op", close):
+            self.fail("expected a closing bracket")
+        self.i += 1
+        return value
+
+    def atom(self, tok, env):
+        value = self.vocab.resolve(tok.value, env)
+        if value is None:
+            raise Unknown(f"unknown symbol {tok.value.text}", tok.pos + 1)
+        return value
+
+    def primary(self, env):
+        tok = self.peek()
+        if tok is None:
+            self.fail("the formula ends too early")
+        if tok.kind == "num":
+            self.i += 1
+            return sp.Rational(tok.value)
+        if tok.kind == "atom":
+            self.i += 1
+            value = self.atom(tok, env)
+            # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
+            if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
+                return value
+            return value
+        if tok.kind == "op" and tok.value in "({":
+            value = self.paren(env)
+            if self.at("op", "_"):
+                self.fail("a subscript on a bracket")
+            return value
+        if tok.kind == "op" and tok.value == "|":
+            self.i += 1
+            value = self.expr(env)
+            self.take("op", "|")
+            return sp.Abs(value)
+        if tok.kind == "begin":
+            return self.matrix(env)
+        if tok.kind == "cmd":
+            name = tok.value
+            self.i += 1
+            if name in ("frac", "dfrac", "tfrac"):
+                return self.frac(env, tok)
+            if name == "sqrt":
+                return sp.sqrt(self.group_or_token(env))
+            if name in FUNCTIONS:
+                power = None
+                if self.at("op", "^"):
+                    self.i += 1
+                    power = self.group_or_token(env)
+                if self.at("op", "("):
+                    arg = self.paren(env)
+                else:
+                    arg = self.factor_no_implicit(env)
+                value = FUNCTIONS[name](arg)
+                return value ** power if power is not None else value
+            if name == "sum":
+                return self.sum(env, tok)
+            self.fail(f"'\\{name}' here")
+        self.fail(f"unexpected {tok.value!r}")
+
+    def factor_no_implicit(self, env):
+        """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ))."""
+        return self.primary(env)
+
+    def _argument_list(self) -> bool:
+        """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""
+        j, args = self.i + 1, []
+        while j < len(self.toks):
+            tok = self.toks[j]
+            if tok.kind != "atom":
+                return False
+            try:
+                args.append(self.vocab.resolve(tok.value))
+            except NotRead:
+                return False
+            if args[-1] is None:
+                return False
+            nxt = self.toks[j + 1] if j + 1 < len(self.toks) else None
+            if nxt is not None and nxt.kind == "op" and nxt.value == ",":
+                j += 2
+                continue
+            if nxt is not None and nxt.kind == "op" and nxt.value == ")":
+                self.i = j + 2
+                self.args = tuple(args)
+                return True
+            return False
+        return False
+
+    def frac(self, env, tok):
+        # d𝐋/dt and ∂L/∂q̇ first: they are quantities, not quotients.
+        num_start = self.i
+        special = self._derivative()
+        if special is not None:
+            return special
+        self.i = num_start
+        num = self.braced(env)
+        den = self.braced(env)
+        return num / den
+
+    def braced(self, env):
+        if self.at("op", "{"):
+            return self.paren(env)
+        return self.group_or_token(env)
+
+    def _derivative(self):
+        """\\frac{d X}{dt} or \\frac{\\partial L}{\\partial \\dot q}: the quantity, or None."""
+        toks = self.toks
+        i = self.i
+
+        def braced_tokens(k):
+            if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
+                return None, k
+            depth = 0
+            for j in range(k, len(toks)):
+                if toks[j].kind == "op" and toks[j].value == "{":
+                    depth += 1
+                elif toks[j].kind == "op" and toks[j].value == "}":
+                    depth -= 1
+                    if depth == 0:
+                        return toks[k + 1:j], j + 1
+            return None, k
+
+        num, k = braced_tokens(i)
+        if num is None:
+            return None
+        den, k2 = braced_tokens(k)
+        if den is None:
+            return None
+        is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
+        if len(num) == 2 and is_d(num[0]) and num[1].kind == "atom" and len(den) == 2 and is_d(den[0]) \
+                and den[1].kind == "atom" and den[1].value.base == "t":
+            what = self.vocab.resolve(num[1].value)
+            if what is LVEC:
+                self.i = k2
+                return DLDT
+            raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
+                          num[1].pos + 1)
+        if len(num) == 2 and num[0].kind == "cmd" and num[0].value == "partial" and len(den) == 2 \
+                and den[0].kind == "cmd" and den[0].value == "partial" and den[1].kind == "atom":
+            top = self.vocab.resolve(num[1].value) if num[1].kind == "atom" else None
+            var = self.vocab.resolve(den[1].value)
+            if top is LAGRANGIAN and var in RATES:
+                self.i = k2
+                return MOMENTUM[RATES.index(var)]
+            raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative other than ∂L/∂q̇",
+                          num[0].pos + 1)
+        return None
+
+    def sum(self, env, tok):
+        """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""
+        if not self.at("op", "_"):
+            self.fail("a sum without its index", tok)
+        self.i += 1
+        sub_tok = self.peek()
+        if self.at("op", "{"):
+            self.i += 1
+            names = []
+            while not self.at("op", "}"):
+                t_ = self.peek()
+                if t_ is None:
+                    self.fail("unbalanced '{'", tok)
+                if t_.kind == "atom":
+                    names.append(t_.value.base + t_.value.sub)
+                elif t_.kind in ("rel", "num"):
+                    pass
+                self.i += 1
+            self.i += 1
+        else:
+            t_ = self.take("atom")
+            names = [t_.value.base]
+        index = "".join(names)
+        if self.at("op", "^"):
+            self.i += 1
+            self.group_or_token(env)
+        letters = [ch for ch in index if ch in "ijkn"]
+        if not letters or any(ch not in "ijkn" for ch in index.replace("=", "").rstrip("0123456789")):
+            raise NotRead(f"cannot parse at column {sub_tok.pos + 1}: sums over {index!r} (not a body axis) "
+                          "are not read", sub_tok.pos + 1)
+        start = self.i
+        total = sp.S.Zero
+        import itertools
+        for values in itertools.product((1, 2, 3), repeat=len(letters)):
+            self.i = start
+            inner = {**env, **dict(zip(letters, values))}
+            total = total + self.sum_term(inner)
+        return total
+
+    def sum_term(self, env):
+        value = self.factor(env)
+        while (self.at("cmd", "cdot") or self._starts_factor()) and not self.at("cmd", "sum"):
+            if self.at("cmd", "cdot"):
+                self.i += 1
+            value = _mul(value, self.factor(env))
+        return value
+
+
+def _mul(a, b):
+    return a * b
+
+
+def parse(latex: str, vocab: Vocabulary | None = None) -> Parsed:
+    """Read one formula (possibly a chain a = b = c, a ≈ b, a ≥ b) into SymPy members.
+
+    Raises `NotRead` (with ``why`` = "cannot parse at column N: …", "unknown symbol X" or "words,
+    not a formula").
+    """
+    vocab = vocab or Vocabulary()
+    toks = scan_cells(latex)
+    try:
+        return _Parser(toks, vocab, latex).chain()
+    except Unknown:
+        raise
+    except (sp.ShapeError, TypeError, ValueError, ZeroDivisionError, AttributeError) as err:
+        raise NotRead(f"cannot combine its parts ({type(err).__name__}: {str(err)[:80]})") from None
+    except NotRead as err:
+        fallback = _lark(latex, toks, vocab)
+        if fallback is not None:
+            return fallback
+        raise err
+
+
+def scan_cells(latex: str) -> list[Tok]:
+    """`scan`, with the '&' of matrix rows kept as entry separators (elsewhere '&' is alignment)."""
+    toks = scan(latex)
+    # Re-scan for '&' positions inside matrix environments.
+    out, depth = [], 0
+    amp = [m.start() for m in re.finditer(r"(?<!\\)&", latex)]
+    amp_iter = iter(amp)
+    pending = next(amp_iter, None)
+    for tok in toks:
+        while pending is not None and pending < tok.pos:
+            if depth:
+                out.append(Tok("op", "&", pending))
+            pending = next(amp_iter, None)
+        if tok.kind == "begin":
+            depth += 1
+        elif tok.kind == "end":
+            depth -= 1
+        out.append(tok)
+    return out
+
+
+# matrices: rows of entries separated by '&'
+def _matrix(self, env):
+    tok = self.take("begin")
+    env_name = tok.value
+    if env_name not in ("pmatrix", "bmatrix", "matrix", "Bmatrix", "array"):
+        self.fail(f"the environment {env_name!r} inside a formula", tok)
+    if env_name == "array" and self.at("op", "("):
+        depth = 0
+        while True:
+            if self.at("op", "("):
+                depth += 1
+            elif self.at("op", ")"):
+                depth -= 1
+                if depth == 0:
+                    self.i += 1
+                    break
+            self.i += 1
+    rows, row = [], []
+    while True:
+        if self.at("end"):
+            self.i += 1
+            break
+        if self.peek() is None:
+            self.fail("a matrix without its end", tok)
+        row.append(self.expr(env))
+        if self.at("op", "&"):
+            self.i += 1
+        elif self.at("op", "\\\\"):
+            self.i += 1
+            rows.append(row)
+            row = []
+        elif not self.at("end"):
+            self.fail("expected '&', '\\\\' or the end of the matrix")
+    if row:
+        rows.append(row)
+    if len({len(r) for r in rows}) != 1:
+        self.fail("rows of different lengths", tok)
+    return sp.Matrix(rows)
+
+
+_Parser.matrix = _matrix
+
+
+# --- the slow path: SymPy's LaTeX parser (Lark) --------------------------------------------------
+def _lark(latex: str, toks: list[Tok], vocab: Vocabulary) -> Parsed | None:
+    """Hand the formula to ``sympy.parsing.latex.parse_latex(…, backend="lark")`` with each atom
+    replaced by a placeholder ``Z_{k}`` (the vocabulary has already resolved them), and map the
+    placeholders back. None when it cannot read it either, or returns an ambiguous reading."""
+    try:
+        from sympy.parsing.latex import parse_latex
+    except ImportError:  # pragma: no cover - lark is a dependency
+        return None
+    pieces, table, last = [], {}, 0
+    for k, tok in enumerate(toks):
+        if tok.kind == "atom":
+            value = vocab.resolve(tok.value)
+            if value is None:
+                return None
+            name = f"Z_{{{k}}}"
+            table[sp.Symbol(name)] = value
+            pieces.append(latex[last:tok.pos] + f" {name} ")
+            last = tok.pos + len(tok.value.text)
+    pieces.append(latex[last:])
+    text = "".join(pieces)
+    for rel in ("\\equiv", "\\approx"):
+        text = text.replace(rel, "=")
+    text = text.replace("\\left", "").replace("\\right", "")
+    try:
+        result = parse_latex(text, backend="lark")
+    except Exception:  # noqa: BLE001 - any failure of the slow path means "not read"
+        return None
+    if not isinstance(result, (sp.Basic, sp.MatrixBase)):
+        return None                                   # an ambiguous reading (a Lark tree)
+    if isinstance(result, sp.core.relational.Relational):
+        members = [Member(result.lhs.xreplace(table)), Member(result.rhs.xreplace(table))]
+        return Parsed(members, ["="])
+    return Parsed([Member(result.xreplace(table))], [])

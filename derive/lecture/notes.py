@@ -1,0 +1,228 @@
+"""Read lecture notes as written: Markdown with LaTeX math, its front matter and its prose context.
+
+What is read:
+
+* **Front matter** (optional, first lines between ``---`` fences), ``key: value`` lines parsed by
+  hand through a whitelist — ``convention`` (``z-y-z`` or ``z-x-z``) and ``angles`` (a bracketed
+  list of three LaTeX names, e.g. ``[\\phi, \\theta, \\psi]``); anything else is an error. No YAML
+  library, nothing evaluated.
+* **Displays**: ``$$…$$`` and ``\\[…\\]`` (over any number of lines), with the 1-based line on
+  which each starts; ``aligned``/``split``/``array`` environments inside them are left for the
+  checker to cut into rows. Inline ``$…$`` math is read too: a relation there is a claim (kind
+  decided later) or, after a word such as *if*, *for*, *suppose*, *assume*, *with*, *when* or in
+  a heading, an **assumption**.
+* **Context**: headings (Markdown ``#`` lines) cut the notes into sections; an assumption ("If
+  $I_1 = I_2$", "For $\\tau = 0$", "Suppose $p_\\alpha = p_\\gamma$ and $\\beta \\approx 0$", a
+  display right after "If"/"Suppose") applies to the displays that follow it until the next
+  heading. "…$\\Omega_1$ and $\\Omega_2$ are both positive or both negative" (or "have opposite
+  signs") is a sign assumption on those symbols.
+
+`read_notes` returns the `Notes` (front matter and an ordered list of `Item`); an unreadable file
+raises `derive.errors.SceneError` (exit 2, one line).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from derive.errors import SceneError
+
+
+def ValidationError(path, key, what) -> SceneError:
+    """Bad notes input: ``<file>: <key>: <what>`` (exit status 2 on the command line)."""
+    return SceneError(f"{path}: {key}: {what}")
+
+CONVENTIONS = ("z-y-z", "z-x-z")
+DEFAULT_ANGLES = {"z-y-z": ("alpha", "beta", "gamma"), "z-x-z": ("phi", "theta", "psi")}
+TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided"}
+_ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)")
+_MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
+_RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
+
+
+@dataclass(frozen=True)
+class Item:
+    """One thing of the notes, in order.
+
+    ``kind``: ``"heading"`` (``text`` is the title), ``"display"`` (``latex``), ``"inline"`` (a
+    relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
+    here to the next heading) or ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
+    ``"same"`` or ``"opposite"``). ``line`` is 1-based; ``lead`` the prose just before the math.
+    """
+
+    kind: str
+    line: int
+    latex: str = ""
+    text: str = ""
+    lead: str = ""
+    symbols: tuple = ()
+    display: bool = False
+
+
+@dataclass
+class Notes:
+    """The notes read: where from, the front matter and the items in order."""
+
+    path: str
+    convention: str = "z-y-z"
+    angles: tuple = DEFAULT_ANGLES["z-y-z"]
+    declared: dict = field(default_factory=dict)
+    items: list = field(default_factory=list)
+
+
+def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
+    """``key: value`` pairs between the opening and closing ``---`` (whitelisted keys only)."""
+    if not lines or lines[0].strip() != "---":
+        return {}, 0
+    out = {}
+    for k, raw in enumerate(lines[1:], start=2):
+        line = raw.strip()
+        if line == "---":
+            return out, k
+        if not line or line.startswith("#"):
+            continue
+        key, sep, value = line.partition(":")
+        key, value = key.strip(), value.strip()
+        if not sep:
+            raise ValidationError(path, f"front matter line {k}", f"expected 'key: value', got {line!r}")
+        if key == "convention":
+            value = value.strip("'\"").lower()
+            if value not in CONVENTIONS:
+                raise ValidationError(path, "convention", f"{value!r} is not one of {', '.join(CONVENTIONS)}")
+            out[key] = value
+        elif key == "angles":
+            if not (value.startswith("[") and value.endswith("]")):
+                raise ValidationError(path, "angles", "expected a list like [\\phi, \\theta, \\psi]")
+            names = [v.strip().strip("'\"") for v in value[1:-1].split(",")]
+            parsed = []
+            for name in names:
+                m = _ANGLE_NAME.fullmatch(name)
+                if not m:
+                    raise ValidationError(path, "angles", f"{name!r} is not a symbol name")
+                parsed.append(m.group(1))
+            if len(parsed) != 3 or len(set(parsed)) != 3:
+                raise ValidationError(path, "angles", "expected three different names")
+            out[key] = tuple(parsed)
+        elif key in ("title", "author", "date", "course", "source", "notes"):
+            out[key] = value
+        else:
+            raise ValidationError(path, key, "unknown front matter key (convention, angles, title, …)")
+    raise ValidationError(path, "front matter", "no closing '---'")
+
+
+def _last_word(text: str) -> str:
+    words = re.findall(r"[A-Za-z]+", text)
+    return words[-1].lower() if words else ""
+
+
+def _signs(prose: str) -> str | None:
+    p = prose.lower()
+    if "opposite sign" in p:
+        return "opposite"
+    if "both positive or both negative" in p or "same sign" in p:
+        return "same"
+    return None
+
+
+def parse_notes(text: str, path: str = "<notes>", convention: str | None = None) -> Notes:
+    """The `Notes` of a Markdown text (see the module docstring); ``convention`` overrides the
+    front matter's."""
+    lines = text.split("\n")
+    declared, skip = _front_matter(lines, path)
+    conv = convention or declared.get("convention", "z-y-z")
+    if conv not in CONVENTIONS:
+        raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
+    angles = declared.get("angles") or DEFAULT_ANGLES[conv]
+    notes = Notes(path, conv, tuple(angles), declared)
+    body = "\n".join([""] * skip + lines[skip:])
+    starts = [0]
+    for m in re.finditer("\n", body):
+        starts.append(m.end())
+
+    def line_of(pos: int) -> int:
+        lo, hi = 0, len(starts) - 1
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if starts[mid] <= pos:
+                lo = mid
+            else:
+                hi = mid - 1
+        return lo + 1
+
+    # headings first (their inline math is context, never a claim)
+    heading_lines = {}
+    for k, raw in enumerate(body.split("\n"), start=1):
+        if raw.lstrip().startswith("#") and k > skip:
+            heading_lines[k] = raw.strip().lstrip("#").strip()
+    events = []
+    for k, title in heading_lines.items():
+        events.append((starts[k - 1], Item("heading", k, text=title)))
+        for m in _MATH.finditer(title):
+            inner = (m.group("i") or m.group("d") or "").strip().lstrip("-").strip()
+            if _RELATION.search(inner) and "\\neq" not in inner and "\\equiv" not in inner:
+                events.append((starts[k - 1] + 1, Item("assumption", k, latex=inner, lead=title)))
+    prev_end = 0
+    for m in _MATH.finditer(body):
+        line = line_of(m.start())
+        if line in heading_lines:
+            continue
+        lead = body[prev_end:m.start()]
+        prev_end = m.end()
+        lead_line = lead.split("\n")
+        # the prose that introduces the math: same line, or the previous non-empty line for a display
+        near = lead_line[-1].strip() if lead_line[-1].strip() or m.group("i") else \
+            next((x.strip() for x in reversed(lead_line) if x.strip()), "")
+        if m.group("d") is not None or m.group("b") is not None:
+            latex = (m.group("d") if m.group("d") is not None else m.group("b")).strip()
+            word = _last_word(near) if near and not near.endswith((".", ";")) else ""
+            inequality = re.search(r"\\ge|\\le|(?<!\\)[<>]", latex)
+            if word in TRIGGERS and _RELATION.search(latex) and not inequality:
+                events.append((m.start(), Item("assumption", line, latex=latex, lead=near, display=True)))
+            else:
+                events.append((m.start(), Item("display", line, latex=latex, lead=near, display=True)))
+            continue
+        latex = m.group("i").strip()
+        line_text = body[starts[line - 1]:body.find("\n", m.start()) if body.find("\n", m.start()) >= 0 else len(body)]
+        signs = _signs(line_text)
+        if signs and not _RELATION.search(latex):
+            events.append((m.start(), Item("signs", line, text=signs, symbols=(latex,), lead=near)))
+            continue
+        if not _RELATION.search(latex):
+            continue
+        word = _last_word(near)
+        wrapped = latex.startswith("(") and latex.endswith(")")
+        after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
+            and line - events[-1][1].line <= 1
+        if word in TRIGGERS or wrapped or after_assumption:
+            events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
+        else:
+            events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
+    events.sort(key=lambda e: e[0])
+    # merge consecutive sign items of one line ("$\Omega_1$ and $\Omega_2$ are both …")
+    items: list[Item] = []
+    for _, item in events:
+        if item.kind == "signs" and items and items[-1].kind == "signs" and items[-1].line == item.line:
+            last = items.pop()
+            item = Item("signs", item.line, text=item.text, symbols=last.symbols + item.symbols, lead=last.lead)
+        items.append(item)
+    notes.items = items
+    return notes
+
+
+def read_notes(path, convention: str | None = None) -> Notes:
+    """Read a notes file (UTF-8 Markdown). Unreadable → `SceneError` naming the file."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise ValidationError(str(path), "file", "no such file") from None
+    except IsADirectoryError:
+        raise ValidationError(str(path), "file", "is a directory, not a notes file") from None
+    except UnicodeDecodeError as err:
+        raise ValidationError(str(path), "file", f"not UTF-8 text (byte {err.start})") from None
+    except OSError as err:
+        raise ValidationError(str(path), "file", err.strerror or "cannot be read") from None
+    if "\x00" in text:
+        raise ValidationError(str(path), "file", "binary, not Markdown text")
+    return parse_notes(text, str(path), convention)

@@ -1,0 +1,1020 @@
+"""Check every formula of a notes file against the derivation: ``derive verify NOTES.md``.
+
+The notes are read by `derive.lecture.notes` (displays, assumptions, front matter) and each
+formula by `derive.lecture.latex` (SymPy objects in the derivation's own symbols). A display is
+cut into statements — rows of ``aligned``/``split`` blocks (``\\\\``), pieces separated by
+``\\qquad`` or ``\\Rightarrow`` — and a display that starts with ``=`` or ``\\approx`` continues
+the previous statement's left side, one that starts with ``+``/``-`` its right side.
+
+Kinds, decided from the vocabulary (`derive.lecture.latex.Vocabulary`):
+
+* ``definition`` — a known quantity (T, L, **L**, E, E′, V_eff, p_α, p_γ, ω̃ᵢ, **ω**, ê′ᵢ, ê⁰ᵢ,
+  d**L**/dt, Ω, Ω₁, Ω₂) equated to expressions: each is compared with the derived quantity
+  (after the notes' own definitions, earlier quantities, and, when the rates α̇, γ̇ appear,
+  ω̃ᵢ and p_α, p_γ in terms of the angles, are substituted). A quantity the notes *define* with
+  ``≡`` (Ω ≡ …) is recorded and its definition used afterwards, right or wrong.
+* ``identity`` — both sides written out, no known quantity on the left: they must be equal.
+* ``equation of motion`` — a formula with ω̃̇ᵢ: its residual lhs − rhs must be a constant
+  non-zero multiple of one of Euler's equations Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ (the derivation's, under the
+  section's assumptions, e.g. I₁ = I₂).
+* ``solution`` — ω̃ᵢ(t) = f(t): the group of consecutive solutions is substituted into the
+  latest earlier equations of motion for those components, for each sign case the text states.
+* ``approximation`` — ``≈`` with a small quantity stated in the text (β ≈ 0): claim − derived
+  has no terms in its series up to the claim's own order.
+* ``inequality`` — compared with the derived stability condition (as lhs − rhs ≥ 0).
+* ``lagrangian`` — L(β, β̇) = …: besides the identity, used as a Lagrangian in β its
+  Euler–Lagrange equation must give the derived β̈.
+
+The zero test is that of `derive.lecture.verify` (bounded symbolic steps, then seeded exact or
+50-digit numeric points). Verdicts: ``holds``; ``typo`` when one single edit of the formula —
+a sign, an index, sin ↔ cos, a factor 2 or ½, a power ±1, a swapped label, a duplicated row —
+makes it hold (the corrected formula is given in LaTeX); ``fails`` with why; ``unchecked`` with
+why (not a claim, unknown symbol, cannot parse).
+"""
+from __future__ import annotations
+
+import functools
+import json
+import random
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture import notes as nt
+from derive.lecture import verify as vf
+
+VERDICTS = ("holds", "typo", "fails", "unchecked")
+_ENVS = ("split", "aligned", "align", "align*", "gathered", "equation", "equation*", "multline", "eqnarray")
+
+
+# ---- the derivation, per convention -------------------------------------------------------------
+class Derivation:
+    """The derived quantities of one convention (computed on first use)."""
+
+    def __init__(self, convention: str):
+        from derive.symbolic import rotations as rot
+        self.rot = rot
+        self.conv = rot.ZXZ if convention == "z-x-z" else rot.ZYZ
+
+    @functools.cached_property
+    def omega(self) -> sp.Matrix:
+        """ω̃ from the skew route Rᵀ Ṙ (independent of the notes' sum route)."""
+        return sp.Matrix(self.conv.omega_body_skew())
+
+    @functools.cached_property
+    def frames(self) -> dict:
+        """ê′ₖ and ê⁰ₖ as linear forms in the body basis (ê′ₖ = passive(a₃, γ) eₖ, ê⁰ₖ = Rᵀ eₖ)."""
+        rot, out = self.rot, {}
+        R = self.conv.matrix()
+        for k, axis in enumerate("xyz"):
+            out[lx.PRIMED[k]] = _linear(rot.passive(self.conv.axes[2], rot.gamma) * rot.unit(axis))
+            out[lx.INERTIAL[k]] = _linear(R.T * rot.unit(axis))
+        return out
+
+    @functools.cached_property
+    def top(self):
+        from derive.symbolic.lagrangian import heavy_symmetric_top
+        return heavy_symmetric_top(self.conv)
+
+    @functools.cached_property
+    def reduction(self):
+        from derive.symbolic.lagrangian import Reduction
+        return Reduction(self.top)
+
+    @functools.cached_property
+    def sleeping(self):
+        from derive.symbolic.stability import SleepingTop
+        return SleepingTop(self.reduction)
+
+    def euler(self, subs: dict) -> list:
+        """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
+        from derive.symbolic.lagrangian import I1, I2, I3
+        from derive.symbolic.stability import euler_rhs
+        moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
+        rhs = euler_rhs(moments, sp.Matrix(lx.W))
+        return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
+
+    def frequencies(self):
+        from derive.symbolic.stability import SteadySpin, omega0
+        o1, o2 = SteadySpin(2).frequencies
+        return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
+
+    @functools.lru_cache(maxsize=None)
+    def forms(self, key, args=None) -> list:
+        """What a named quantity is, in the forms a text may use (each compared in turn)."""
+        from derive.symbolic.lagrangian import I1, I2, I3
+        half = sp.Rational(1, 2)
+        Iw = [I1 * lx.W[0], I2 * lx.W[1], I3 * lx.W[2]]
+        if key is lx.T_:
+            return [half * sum(m * w**2 for m, w in zip((I1, I2, I3), lx.W)),
+                    self.top_kinetic()]
+        if key is lx.LAGRANGIAN:
+            if args and set(args) <= {self.rot.beta, self.rot.beta_d}:
+                return [self.reduction.lagrangian_substituted]
+            return [self.top.lagrangian]
+        if key is lx.LVEC:
+            return [_linear(sp.Matrix(Iw))]
+        if key is lx.ENERGY:
+            return [self.reduction.energy, self.top.energy]
+        if key is lx.EPRIME:
+            return [self.reduction.reduced_energy]
+        if key is lx.VEFF:
+            return [self.reduction.effective_potential]
+        if key is lx.OMEGA_VEC:
+            return [_linear(sp.Matrix(lx.W)), _linear(self.omega)]
+        if key is lx.DLDT:
+            return [_linear(sp.Matrix(self.euler({})))]
+        if key in (lx.MOMENTUM[0], lx.p_alpha_sym()):
+            return [self.top.momentum(self.rot.alpha)]
+        if key in (lx.MOMENTUM[2], lx.p_gamma_sym()):
+            return [self.top.momentum(self.rot.gamma)]
+        if key is lx.MOMENTUM[1]:
+            return [self.top.momentum(self.rot.beta)]
+        if key in lx.W:
+            return [self.omega[lx.W.index(key)]]
+        if key in lx.PRIMED or key in lx.INERTIAL:
+            return [self.frames[key]]
+        if key in lx.BASIS:
+            return [key]
+        if key is lx.Omega:
+            o1, o2 = self.frequencies()
+            return [o1.xreplace({I2: I1}), o2.xreplace({I2: I1})]
+        if key is lx.Omega1:
+            return [self.frequencies()[0]]
+        if key is lx.Omega2:
+            return [self.frequencies()[1]]
+        return []
+
+    @functools.lru_cache(maxsize=None)
+    def top_kinetic(self):
+        from derive.symbolic.lagrangian import kinetic_energy
+        return kinetic_energy(convention=self.conv)
+
+
+@functools.cache
+def derivation(convention: str) -> Derivation:
+    return Derivation(convention)
+
+
+def _linear(col) -> sp.Expr:
+    return sum((col[i] * lx.BASIS[i] for i in range(3)), sp.S.Zero)
+
+
+KNOWN = None   # filled below (needs lx)
+
+
+def _families():
+    """Quantities that can stand for one another by a slip of the label."""
+    return [
+        [lx.T_, lx.ENERGY, lx.EPRIME, lx.VEFF, lx.LAGRANGIAN],
+        list(lx.W),
+        list(lx.PRIMED) + list(lx.INERTIAL),
+        [lx.Omega, lx.Omega1, lx.Omega2],
+        [lx.p_alpha_sym(), lx.p_gamma_sym()],
+        [lx.LVEC, lx.OMEGA_VEC, lx.DLDT],
+    ]
+
+
+# ---- results ------------------------------------------------------------------------------------
+@dataclass
+class Claim:
+    """One checked (or not) formula: the JSON row of the contract."""
+
+    line: int
+    latex: str
+    kind: str
+    verdict: str
+    correction: str | None = None
+    why: str = ""
+
+    def as_dict(self) -> dict:
+        return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,
+                "correction": self.correction, "why": self.why}
+
+
+@dataclass
+class _Context:
+    """What the text has said so far: assumptions of the section, definitions, equations."""
+
+    subs: dict = field(default_factory=dict)          # I₂ → I₁, p_α → p_γ, ω̃̇₃ → 0
+    small: list = field(default_factory=list)         # β ≈ 0
+    cases: list = field(default_factory=lambda: [{}])  # sign cases
+    solutions: dict = field(default_factory=dict)     # ω̃ᵢ → f(t)
+    defs: dict = field(default_factory=dict)          # Ω → the notes' definition
+    eoms: list = field(default_factory=list)          # (residual as written, line)
+    head: str | None = None                           # left side continued by "= …" displays
+    assumptions: list = field(default_factory=list)   # their LaTeX, for the why
+
+    def new_section(self):
+        self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
+        self.head, self.assumptions = None, []
+
+
+# ---- cutting displays into statements -----------------------------------------------------------
+def _strip_envs(s: str) -> str:
+    for env in _ENVS:
+        s = s.replace(f"\\begin{{{env}}}", " ").replace(f"\\end{{{env}}}", " ")
+    return s
+
+
+def _top_level_split(s: str, seps: tuple) -> list[str]:
+    """Split at separators outside braces and outside matrix environments."""
+    out, depth, env, i, start = [], 0, 0, 0, 0
+    while i < len(s):
+        if s.startswith("\\begin{", i):
+            env += 1
+        elif s.startswith("\\end{", i):
+            env -= 1
+        ch = s[i]
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and env == 0:
+            for sep in seps:
+                if s.startswith(sep, i) and not (sep[-1].isalpha() and i + len(sep) < len(s) and s[i + len(sep)].isalpha()):
+                    out.append(s[start:i])
+                    i += len(sep)
+                    start = i
+                    break
+            else:
+                i += 1
+                continue
+            continue
+        i += 1
+    out.append(s[start:])
+    return out
+
+
+def _alignment_free(s: str) -> str:
+    """Drop the alignment '&' of aligned/split rows, keeping the '&' that separates matrix entries."""
+    out, env, i = [], 0, 0
+    while i < len(s):
+        if s.startswith("\\begin{", i):
+            env += 1
+        elif s.startswith("\\end{", i):
+            env -= 1
+        if s[i] == "&" and env == 0 and (i == 0 or s[i - 1] != "\\"):
+            out.append(" ")
+        else:
+            out.append(s[i])
+        i += 1
+    return "".join(out)
+
+
+def _text_only(piece: str) -> bool:
+    rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
+    return not rest.strip(" &,.;:") and "\\text" in piece
+
+
+def statements(latex: str) -> list[str]:
+    """The statements of one display (see the module docstring), each a LaTeX string."""
+    body = _strip_envs(latex)
+    rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
+    # a row that ends with a binary operator continues on the next
+    joined: list[str] = []
+    for row in rows:
+        if not row:
+            continue
+        if joined and re.search(r"[+\-]\s*$", joined[-1]):
+            joined[-1] = joined[-1] + " " + row
+        else:
+            joined.append(row)
+    out = []
+    for row in joined:
+        for piece in _top_level_split(row, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
+            piece = piece.strip().strip(",.;:").strip()
+            if piece and not _text_only(piece):
+                out.append(piece)
+    return out
+
+
+# ---- the comparisons ----------------------------------------------------------------------------
+def _has_rates(objs, rot) -> bool:
+    return any(_free(o) & set(rot.RATES) for o in objs)
+
+
+def _free(obj) -> set:
+    return set(getattr(obj, "free_symbols", set()))
+
+
+def _column(v):
+    """A vector as a 3-column (from a matrix, or a linear form in ê₁ ê₂ ê₃); scalars as 1×1."""
+    if isinstance(v, sp.MatrixBase):
+        if v.shape == (1, 3):
+            return sp.Matrix(v).T
+        return sp.Matrix(v).reshape(len(v), 1)
+    v = sp.sympify(v)
+    if v.free_symbols & set(lx.BASIS):
+        ex = sp.expand(v)
+        coeffs = [ex.coeff(e) for e in lx.BASIS]
+        rest = sp.expand(ex - sum(c * e for c, e in zip(coeffs, lx.BASIS)))
+        if rest != 0 or any(c.free_symbols & set(lx.BASIS) for c in coeffs):
+            raise _Mismatch("not a vector: a product of unit vectors, or a scalar added to a vector")
+        return sp.Matrix(coeffs)
+    return sp.Matrix([v])
+
+
+class _Mismatch(Exception):
+    pass
+
+
+def _zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
+    if lhs.shape != rhs.shape:
+        return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
+    steps = [_symbolic_zero(d) for d in lhs - rhs]
+    if all(steps):
+        return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
+    out = vf._numeric_zero(lhs, rhs, seed)
+    return out.ok, out.method
+
+
+def _symbolic_zero(d):
+    """`verify`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
+    (trig_reduce refuses a sine nested in a sine's argument)."""
+    try:
+        return vf._symbolic_zero(d)
+    except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
+        return None
+
+
+def _shape(m) -> str:
+    return "scalar" if m.shape == (1, 1) else ("vector" if m.shape[1] == 1 else f"{m.shape[0]}×{m.shape[1]} matrix")
+
+
+def _quick_equal(a, b) -> bool:
+    """A fast float test (two random points) used to screen the single-edit candidates."""
+    try:
+        A, B = _column(a), _column(b)
+    except _Mismatch:
+        return False
+    if A.shape != B.shape:
+        return False
+    syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
+    rng = random.Random(7)
+    for _ in range(2):
+        point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
+        try:
+            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
+            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
+            return False
+    return True
+
+
+# ---- single edits ------------------------------------------------------------------------------
+def _paths(e, path=()):
+    yield path, e
+    if isinstance(e, sp.Basic) and not e.is_Atom:
+        for k, a in enumerate(e.args):
+            yield from _paths(a, path + (k,))
+
+
+def _replace(e, path, new):
+    if not path:
+        return new
+    args = list(e.args)
+    args[path[0]] = _replace(args[path[0]], path[1:], new)
+    return e.func(*args)
+
+
+_SIBLINGS = None
+
+
+def _siblings():
+    from derive.symbolic.lagrangian import I1, I2, I3
+    from derive.symbolic.rotations import ANGLES, RATES
+    fams = [(I1, I2, I3), lx.W, lx.WD, lx.BASIS, lx.PRIMED, ANGLES, RATES, (lx.Omega1, lx.Omega2)]
+    out = {}
+    for fam in fams:
+        for s in fam:
+            out[s] = [x for x in fam if x != s]
+    return out
+
+
+def edits(e):
+    """Single edits of an expression: (edited, what was changed)."""
+    if isinstance(e, sp.MatrixBase):
+        for k in range(len(e)):
+            for new, what in edits(e[k]):
+                m = sp.Matrix(e)
+                m[k] = new
+                yield m, f"{what} (entry {k + 1})"
+        return
+    e = sp.sympify(e)
+    sib = _siblings()
+    yield -e, "the sign of the whole side"
+    yield 2 * e, "a factor 2"
+    yield e / 2, "a factor 1/2"
+    for path, node in list(_paths(e)):
+        if isinstance(node, sp.Add):
+            for k, a in enumerate(node.args):
+                p = path + (k,)
+                yield _replace(e, p, -a), "a sign"
+                yield _replace(e, p, 2 * a), "a factor 2"
+                yield _replace(e, p, a / 2), "a factor 1/2"
+        elif isinstance(node, (sp.sin, sp.cos)):
+            other = sp.cos if isinstance(node, sp.sin) else sp.sin
+            yield _replace(e, path, other(*node.args)), "sin ↔ cos"
+        elif isinstance(node, sp.Pow) and node.exp.is_Integer:
+            for d in (1, -1):
+                if node.exp + d != 0:
+                    yield _replace(e, path, node.base ** (node.exp + d)), "a power"
+        elif isinstance(node, sp.Symbol) and node in sib:
+            for s in sib[node]:
+                yield _replace(e, path, s), "an index"
+            if path and not isinstance(_at(e, path[:-1]), sp.Pow):
+                yield _replace(e, path, node**2), "a power"
+
+
+def _at(e, path):
+    for k in path:
+        e = e.args[k]
+    return e
+
+
+# ---- the checker ------------------------------------------------------------------------------
+class Checker:
+    """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
+
+    def __init__(self, notes: nt.Notes):
+        self.notes = notes
+        self.vocab = lx.Vocabulary(angles=tuple(notes.angles),
+                                   aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"])
+        self.d = derivation(notes.convention)
+        self.ctx = _Context()
+        self.claims: list[Claim] = []
+        self.pending: list = []     # solution statements waiting for their group
+
+    # -- names for LaTeX output
+    @functools.cached_property
+    def names(self) -> dict:
+        from derive.symbolic.rotations import ANGLES, RATES
+        from derive.symbolic.lagrangian import ACCELS
+        names = {}
+        for k in range(3):
+            a = "\\" + self.notes.angles[k]
+            names[ANGLES[k]] = a
+            names[RATES[k]] = rf"\dot{{{a}}}"
+            names[ACCELS[k]] = rf"\ddot{{{a}}}"
+            names[lx.W[k]] = rf"\tilde{{\omega}}_{{{k + 1}}}"
+            names[lx.WD[k]] = rf"\dot{{\tilde{{\omega}}}}_{{{k + 1}}}"
+            names[lx.BASIS[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}"
+            names[lx.PRIMED[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}'"
+            names[lx.INERTIAL[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}^{{0}}"
+        names[lx.p_alpha_sym()] = rf"p_{{\{self.notes.angles[0]}}}"
+        names[lx.p_gamma_sym()] = rf"p_{{\{self.notes.angles[2]}}}"
+        names.update(lx.QUANTITY_LATEX)
+        return names
+
+    def tex(self, obj) -> str:
+        return sp.latex(obj, symbol_names=self.names)
+
+    # -- the walk
+    def run(self) -> list[Claim]:
+        items = self.notes.items
+        k = 0
+        while k < len(items):
+            item = items[k]
+            if item.kind == "heading":
+                self._flush()
+                self.ctx.new_section()
+            elif item.kind == "assumption":
+                self._assume(item)
+            elif item.kind == "signs":
+                self._signs(item)
+            elif item.kind in ("display", "inline"):
+                latex = item.latex
+                # displays that start with + or − continue the previous one's right side
+                while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
+                        and re.match(r"\s*(&\s*)?[+\-]", _strip_envs(items[k + 1].latex)):
+                    k += 1
+                    latex = latex + " " + items[k].latex
+                self._display(item, latex)
+            k += 1
+        self._flush()
+        return self.claims
+
+    def _add(self, line, latex, kind, verdict, why="", correction=None):
+        self.claims.append(Claim(line, latex, kind, verdict, correction, why))
+
+    # -- context
+    def _assume(self, item):
+        try:
+            parsed = lx.parse(item.latex, self.vocab)
+        except lx.NotRead as err:
+            if item.display:
+                self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
+            return
+        if item.display:
+            self._add(item.line, item.latex, "assumption", "unchecked",
+                      "an assumption of the text: applies to the displays that follow, up to the next heading")
+        self.ctx.assumptions.append(item.latex)
+        if len(parsed.members) != 2:
+            return
+        a, b = parsed.members[0].value, parsed.members[1].value
+        rel = parsed.relations[0]
+        if rel == "≈" and b == 0 and isinstance(a, sp.Symbol):
+            from derive.symbolic.rotations import ANGLES
+            if a in ANGLES:
+                self.ctx.small.append(a)
+            else:
+                self.ctx.subs[a] = sp.S.Zero
+        elif rel in ("=", "≈") and isinstance(a, sp.Symbol) and not isinstance(a, lx.Quantity):
+            self.ctx.subs[a] = b
+
+    def _signs(self, item):
+        syms = []
+        for s in item.symbols:
+            try:
+                p = lx.parse(s, self.vocab)
+            except lx.NotRead:
+                return
+            syms.append(p.members[0].value)
+        if len(syms) != 2 or not all(isinstance(s, sp.Symbol) for s in syms):
+            return
+        u, v = sp.Dummy("u", positive=True), sp.Dummy("v", positive=True)
+        x, y = syms
+        if item.text == "same":
+            self.ctx.cases = [{x: u, y: v}, {x: -u, y: -v}]
+        else:
+            self.ctx.cases = [{x: u, y: -v}, {x: -u, y: v}]
+
+    # -- a display
+    def _display(self, item, latex):
+        pieces = statements(latex)
+        if not pieces:
+            self._add(item.line, latex, "text", "unchecked", "not a formula")
+            return
+        seen = []
+        for piece in pieces:
+            dup = piece in seen and len(pieces) > 2
+            seen.append(piece)
+            self._statement(item.line, piece, duplicate=dup, pieces=pieces)
+
+    def _statement(self, line, piece, duplicate=False, pieces=()):
+        text = piece
+        if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
+            text = self.ctx.head + " " + piece
+        try:
+            parsed = lx.parse(text, self.vocab)
+        except lx.Words:
+            self._add(line, piece, "text", "unchecked", "not a claim: words, not a formula")
+            return
+        except lx.NotRead as err:
+            why = err.why
+            if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
+                return
+            self._add(line, piece, "unknown", "unchecked", why)
+            return
+        if len(parsed.members) < 2:
+            self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
+            return
+        head_end = _first_relation(text)
+        if head_end is not None:
+            self.ctx.head = text[:head_end].strip()
+        rels = set(parsed.relations)
+        if rels & {"≠", "→", "∝", "∼", "⇒"}:
+            self._add(line, piece, "relation", "unchecked", f"not a claim the derivation decides ({', '.join(sorted(rels))})")
+            return
+        if duplicate:
+            self._duplicate(line, piece, parsed, pieces)
+            return
+        m0 = parsed.members[0]
+        if m0.args and m0.value in lx.W and len(parsed.members) == 2:
+            self.pending.append((line, piece, m0.value, parsed.members[1].value))
+            return
+        self._flush()
+        if rels & {"≥", "≤", ">", "<"}:
+            self._inequality(line, piece, parsed)
+        elif isinstance(m0.value, lx.Quantity):
+            self._definition(line, piece, parsed)
+        elif any(_free(m.value) & set(lx.WD) for m in parsed.members):
+            self._eom(line, piece, parsed)
+        elif "≈" in rels and not self.ctx.small:
+            self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
+        else:
+            self._definition(line, piece, parsed)
+
+    def _new_symbol(self, line, piece, text) -> bool:
+        """X ≡ … with X unknown: record X (a new symbol of the notes) and its definition."""
+        m = re.match(r"\s*(.+?)\s*\\equiv\s*(.+)$", text)
+        if not m:
+            return False
+        try:
+            atoms = lx.scan(m.group(1))
+            rhs = lx.parse(m.group(2), self.vocab)
+        except lx.NotRead:
+            return False
+        if len(atoms) != 1 or atoms[0].kind != "atom" or len(rhs.members) != 1:
+            return False
+        atom = atoms[0].value
+        sym = sp.Symbol(atom.text, real=True)
+        self.vocab.defined[atom.with_(text="")] = sym
+        self.ctx.defs[sym] = rhs.members[0].value
+        self._add(line, piece, "new symbol", "unchecked", f"defines a new symbol {atom.text} (recorded, then used)")
+        return True
+
+    # -- preparing sides
+    def _resolve(self, v, keep=()):
+        """Quantities → derived values, the notes' definitions → their right sides (not ``keep``)."""
+        for _ in range(4):
+            rep = {}
+            for s in _free(v):
+                if s in keep:
+                    continue
+                if isinstance(s, lx.Quantity):
+                    forms = self.d.forms(s)
+                    if forms:
+                        rep[s] = forms[0]
+                elif s in self.ctx.defs:
+                    rep[s] = self.ctx.defs[s]
+            if not rep:
+                break
+            v = v.xreplace(rep)
+        return v
+
+    def _unify(self, values: list) -> list:
+        """Mixed variables: with α̇ or γ̇ present, p_α, p_γ and ω̃ᵢ become functions of the angles;
+        PRIMED/INERTIAL frame vectors go to the body basis."""
+        rot = self.d.rot
+        out = []
+        rates = _has_rates(values, rot)
+        cyc = any(_free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
+        for v in values:
+            rep = dict(self.d.frames) if _free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
+            if rates:
+                rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
+            if cyc:
+                rep[lx.p_alpha_sym()] = self.d.forms(lx.p_alpha_sym())[0]
+                rep[lx.p_gamma_sym()] = self.d.forms(lx.p_gamma_sym())[0]
+            out.append(v.xreplace(rep) if rep else v)
+        return out
+
+    def _case_subs(self, v, case, solutions=True):
+        rep = dict(self.ctx.subs)
+        if solutions:
+            rep.update(self.ctx.solutions)
+        if rep:
+            v = self._resolve(v.xreplace(rep)).xreplace(rep)
+        return v.xreplace(case) if case else v
+
+    def _compare(self, claim_value, form, seed, small=None, order=None) -> tuple[bool, str]:
+        """Is the claim's value the derived form, in every case of the section?"""
+        a, b = self._unify([claim_value, form])
+        try:
+            A, B = _column(a), _column(b)
+        except _Mismatch as err:
+            return False, str(err)
+        why = []
+        for k, case in enumerate(self.ctx.cases):
+            Ac = A.applyfunc(lambda x: self._case_subs(x, case))
+            Bc = B.applyfunc(lambda x: self._case_subs(x, case))
+            if small is not None:
+                ok, how = self._series_zero(Ac, Bc, small, order)
+            else:
+                ok, how = _zero(Ac, Bc, f"{seed}/{k}")
+            if not ok:
+                where = f" (case {k + 1} of {len(self.ctx.cases)}: {self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
+                return False, how + where
+            why.append(how)
+        return True, why[0]
+
+    def _case_text(self, case):
+        return ", ".join(f"{self.tex(s)} {'> 0' if v.could_extract_minus_sign() is False else '< 0'}" for s, v in case.items())
+
+    def _series_zero(self, A, B, x, order):
+        # sin x and cos x by their Taylor polynomials first: the series of a rational function is
+        # cheap, that of quotients of sines is not (a second each).
+        n = order + 4
+        taylor = {sp.sin(x): sum((-1) ** k * x ** (2 * k + 1) / sp.factorial(2 * k + 1) for k in range(n // 2 + 1)),
+                  sp.cos(x): sum((-1) ** k * x ** (2 * k) / sp.factorial(2 * k) for k in range(n // 2 + 1))}
+        for a, b in zip(A, B):
+            d = sp.cancel(sp.together((a - b).xreplace(taylor)))
+            d = sp.series(d, x, 0, order).removeO()
+            if sp.simplify(d) != 0:
+                return False, f"series in {self.tex(x)} to order {order - 1}: claim − derived = {self.tex(sp.factor(d))}"
+        return True, f"series in ${self.tex(x)}$ to order {order - 1}"
+
+    # -- kinds
+    def _definition(self, line, piece, parsed):
+        m0 = parsed.members[0]
+        key = m0.value
+        forms = self.d.forms(key, m0.args) if isinstance(key, sp.Symbol) else []
+        if any(r == "≡" for r in parsed.relations) and key in (lx.Omega, lx.Omega1, lx.Omega2):
+            self.ctx.defs[key] = parsed.members[1].value
+        approx = "≈" in parsed.relations
+        if not forms:
+            # an identity: both sides written out
+            if isinstance(key, sp.Symbol) and not isinstance(key, lx.Quantity) and key not in lx.BASIS \
+                    and len(parsed.members) == 2 and not _free(parsed.members[1].value) & {key}:
+                kind = "definition"
+            else:
+                kind = "identity"
+            left = self._resolve(key)
+            for k, m in enumerate(parsed.members[1:], start=1):
+                self._one(line, piece, "identity" if kind == "identity" else kind, left, m.value, parsed, k,
+                          approx=approx, label=key)
+            return
+        for k, m in enumerate(parsed.members[1:], start=1):
+            if m.value == 0 and key is lx.DLDT:
+                self._add(line, piece, "equation of motion", "holds" if "τ" in "".join(self.ctx.assumptions) or
+                          any("tau" in a for a in self.ctx.assumptions) else "unchecked",
+                          "d𝐋/dt = 0: torque-free (τ = 0, stated in the text)")
+                continue
+            self._one(line, piece, "approximation" if approx else "definition", None, m.value, parsed, k,
+                      approx=approx, label=key, forms=forms, args=m0.args)
+        if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
+            self._lagrangian(line, piece, parsed.members[-1].value)
+
+    def _one(self, line, piece, kind, left, value, parsed, k, approx=False, label=None, forms=None, args=None):
+        """Check member k against the label's derived forms (or the written left side)."""
+        keep = (label,) if label in (lx.Omega, lx.Omega1, lx.Omega2) and parsed.relations[k - 1] == "≡" else ()
+        val = self._resolve(value, keep=keep)
+        targets = forms if forms else [left]
+        small = order = None
+        if approx:
+            small = self.ctx.small[-1]
+            order = _order(val, small)
+        seed = f"{piece}/{k}"
+        why = ""
+        for f in targets:
+            ok, why = self._compare(val, self._resolve(f), seed, small, order)
+            if ok:
+                self._add(line, piece, kind, "holds", why)
+                return
+        fix = self._search(value, targets, label, parsed, k, small, order, keep)
+        if fix:
+            self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
+        else:
+            self._add(line, piece, kind, "fails", f"as written: {why}")
+
+    def _search(self, value, targets, label, parsed, k, small, order, keep):
+        """The nearest correct form by one edit of the member or of the label, or None."""
+        tried = 0
+        for f in targets:
+            target = self._resolve(f)
+            for cand, what in edits(value):
+                tried += 1
+                if tried > 400:
+                    return None
+                val = self._resolve(cand, keep=keep)
+                a, b = self._unify([val, target])
+                if small is None and not _quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
+                    continue
+                ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
+                if ok:
+                    return self._render(parsed, k, cand), what
+        # a swapped label
+        if isinstance(label, sp.Symbol):
+            for fam in _families():
+                if label in fam:
+                    for other in fam:
+                        if other == label:
+                            continue
+                        for f in self.d.forms(other):
+                            ok, _ = self._compare(self._resolve(value), self._resolve(f), "label", small, order)
+                            if ok:
+                                return self._render(parsed, k, value, label=other), "a swapped label"
+        return None
+
+    def _render(self, parsed, k, value, label=None):
+        left = label if label is not None else parsed.members[0].value
+        rel = {"=": "=", "≡": r"\equiv", "≈": r"\approx", "≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[parsed.relations[k - 1]]
+        lhs = self.tex(left)
+        if parsed.members[0].args and label is None:
+            lhs += r"\left(" + ", ".join(self.tex(a) for a in parsed.members[0].args) + r"\right)"
+        return f"{lhs} {rel} {self.tex(value)}"
+
+    def _lagrangian(self, line, piece, value):
+        """L(β, β̇) used as a Lagrangian: β̈ from its Euler–Lagrange equation against the derived one."""
+        rot = self.d.rot
+        b, bd = rot.beta, rot.beta_d
+        val = self._resolve(value)
+        try:
+            accel = (sp.diff(val, b) - bd * sp.diff(val, bd, b)) / sp.diff(val, bd, 2)
+        except (TypeError, ValueError, ZeroDivisionError):
+            return
+        derived = self.d.reduction.beta_acceleration
+        ok, why = self._compare(accel, derived, piece + "/lagrangian")
+        if ok:
+            self._add(line, piece, "lagrangian", "holds", "as a Lagrangian in β: " + why)
+        else:
+            self._add(line, piece, "lagrangian", "fails",
+                      f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
+                      f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
+
+    def _eom(self, line, piece, parsed):
+        members = [m.value for m in parsed.members]
+        if len(members) != 2 or isinstance(members[0], sp.MatrixBase):
+            self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
+            return
+        raw = members[0] - members[1]
+        ok, why, residual = self._eom_check(raw)
+        if ok:
+            self.ctx.eoms.append((raw, line))
+            self._add(line, piece, "equation of motion", "holds", why)
+            return
+        for cand, what in edits(raw):
+            if self._eom_check(cand)[0]:
+                fixed = sp.Eq(cand, 0) if members[1] == 0 else None
+                corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
+                self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
+                return
+        self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
+
+    def _render_eq(self, residual, parsed):
+        return self.tex(residual) + " = 0"
+
+    def _eom_check(self, raw):
+        r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
+        if r == 0:
+            return False, "the equation is empty (0 = 0)", r
+        euler = self.d.euler(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD)
+        for i, R in enumerate(euler):
+            if R == 0:
+                continue
+            q = sp.cancel(sp.together(r / R))
+            if not (_free(q) & dyn) and q != 0:
+                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
+        return False, "not a multiple of any of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+
+    def _duplicate(self, line, piece, parsed, pieces):
+        """A row repeated within one block: a transcription slip; the missing equation is named."""
+        missing = None
+        have = set()
+        for p in pieces:
+            for i, w in enumerate(lx.WD):
+                if lx.latex_atoms(p, self.vocab) & {w}:
+                    have.add(i)
+        gaps = [i for i in range(3) if i not in have]
+        if gaps:
+            R = self.d.euler(self.ctx.subs)[gaps[0]]
+            missing = self.tex(R) + " = 0"
+        self._add(line, piece, "equation of motion" if any(_free(m.value) & set(lx.WD) for m in parsed.members) else "identity",
+                  "typo", "repeats an earlier row of the same block" + (f"; the equation for component {gaps[0] + 1} is missing" if gaps else ""),
+                  missing)
+
+    def _inequality(self, line, piece, parsed):
+        if len(parsed.members) != 2:
+            self._add(line, piece, "inequality", "unchecked", "a chain of inequalities")
+            return
+        rel = parsed.relations[0]
+        a, b = (self._resolve(m.value) for m in parsed.members)
+        claim = (a - b) if rel in ("≥", ">") else (b - a)
+        strict = rel in (">", "<")
+        cond = self.d.sleeping.condition
+        d = (cond.lhs - cond.rhs) if isinstance(cond, (sp.GreaterThan, sp.StrictGreaterThan)) else (cond.rhs - cond.lhs)
+        d_strict = isinstance(cond, (sp.StrictGreaterThan, sp.StrictLessThan))
+        ok, why = _zero(sp.Matrix([claim, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)
+        if ok:
+            self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
+            return
+        flipped = sp.Matrix([-claim, int(strict)])
+        if _zero(flipped, sp.Matrix([d, int(d_strict)]), piece)[0]:
+            flip = r"\le" if rel in ("≥", ">") else r"\ge"
+            corr = f"{self.tex(parsed.members[0].value)} {flip} {self.tex(parsed.members[1].value)}"
+            self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
+            return
+        for cand, what in edits(parsed.members[1].value):
+            c2 = (a - self._resolve(cand)) if rel in ("≥", ">") else (self._resolve(cand) - a)
+            if _quick_equal(c2, d) and _zero(sp.Matrix([c2, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]:
+                self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
+                          self._render(parsed, 1, cand))
+                return
+        self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
+
+    def _flush(self):
+        """Check the pending group of solutions ω̃ᵢ(t) = f(t) against the latest equations."""
+        if not self.pending:
+            return
+        group, self.pending = self.pending, []
+        sol = {w: f for _, _, w, f in group}
+        t = lx.t
+        rates = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol.items()}
+        chosen = []
+        for w in sol:
+            i = lx.W.index(w)
+            for raw, ln in reversed(self.ctx.eoms):
+                if _free(raw) & {lx.WD[i]} and (_free(raw) & set(lx.W)) - {lx.W[2]} <= set(sol):
+                    chosen.append(raw)
+                    break
+        for w, f in sol.items():
+            self.ctx.solutions[w] = f
+        if not chosen:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "unchecked", "no earlier equation of motion for these components to substitute into")
+            return
+
+        def holds(sol_):
+            rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
+            for k, case in enumerate(self.ctx.cases):
+                for raw in chosen:
+                    r = raw.xreplace({**sol_, **rates_})
+                    r = r.xreplace(case) if case else r
+                    ok, how = _zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
+                    if not ok:
+                        where = f" in case {k + 1} of {len(self.ctx.cases)} ({self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
+                        return False, f"substituted into the earlier equations: {how}{where}"
+            return True, f"substituted into the earlier equations of motion ({len(chosen)}), in {len(self.ctx.cases)} case(s)"
+
+        ok, why = holds(sol)
+        _ = rates
+        if ok:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "holds", why)
+            return
+        for j, (line, piece, w, f) in enumerate(group):
+            for cand, what in edits(f):
+                trial = {**sol, w: cand}
+                if holds(trial)[0]:
+                    for jj, (l2, p2, w2, _) in enumerate(group):
+                        if jj == j:
+                            self._add(l2, p2, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold",
+                                      f"{self.tex(w2)}(t) = {self.tex(cand)}")
+                        else:
+                            self._add(l2, p2, "solution", "holds", "with the corrected companion")
+                    return
+        for line, piece, _, _ in group:
+            self._add(line, piece, "solution", "fails", why)
+
+
+def _order(value, x) -> int:
+    """The order n of the series check: one above the highest power of x the claim keeps."""
+    try:
+        v = sp.expand(sp.cancel(sp.together(value)))
+        deg = sp.Poly(v, x).degree() if v.is_polynomial(x) else 2
+    except (sp.PolynomialError, sp.GeneratorsNeeded):
+        deg = 2
+    return max(deg, 0) + 1
+
+
+def _first_relation(text: str) -> int | None:
+    try:
+        toks = lx.scan(text)
+    except lx.NotRead:
+        return None
+    depth = 0
+    for tok in toks:
+        if tok.kind == "op" and tok.value in "({":
+            depth += 1
+        elif tok.kind == "op" and tok.value in ")}":
+            depth -= 1
+        elif tok.kind == "rel" and depth == 0:
+            return tok.pos
+    return None
+
+
+# ---- running and reporting ----------------------------------------------------------------------
+def check_notes(path, convention: str | None = None) -> list[Claim]:
+    """Read the notes file and check every formula (see the module docstring)."""
+    return Checker(nt.read_notes(path, convention)).run()
+
+
+def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
+    """Like `check_notes`, for Markdown text already in memory."""
+    return Checker(nt.parse_notes(text, path, convention)).run()
+
+
+def summary(claims) -> dict:
+    out = {v: sum(c.verdict == v for c in claims) for v in VERDICTS}
+    out["claims"] = len(claims)
+    out["checked"] = sum(c.verdict != "unchecked" for c in claims)
+    return out
+
+
+def exit_status(claims) -> int:
+    """0 when every checked claim holds, 1 when any is a typo or fails."""
+    return 1 if any(c.verdict in ("typo", "fails") for c in claims) else 0
+
+
+def render(claims, fmt: str = "text", path: str = "") -> str:
+    """The report: ``text`` (one line per claim, indented why/correction), ``markdown`` (a table)
+    or ``json`` (the contract's shape)."""
+    if fmt == "json":
+        return json.dumps({"claims": [c.as_dict() for c in claims], "summary": summary(claims)}, ensure_ascii=False, indent=1) + "\n"
+    s = summary(claims)
+    total = f"{s['claims']} claims ({s['checked']} checked): " + ", ".join(f"{s[v]} {v}" for v in VERDICTS)
+    if fmt == "markdown":
+        lines = ["| line | kind | verdict | formula | why |", "|---|---|---|---|---|"]
+        for c in claims:
+            verdict = f"typo → ${c.correction}$" if c.verdict == "typo" and c.correction else f"**{c.verdict}**"
+            cells = (str(c.line), c.kind, verdict, f"${' '.join(c.latex.split())}$", c.why)
+            lines.append("| " + " | ".join(x.replace("|", r"\|").replace("\n", " ") for x in cells) + " |")
+        return "\n".join(lines) + f"\n\n{total}\n"
+    if fmt != "text":
+        raise ValueError(f"unknown format {fmt!r} (text, markdown or json)")
+    out = []
+    for c in claims:
+        out.append(f"{path}:{c.line}: {c.verdict:<9} {c.kind}: {' '.join(c.latex.split())[:100]}")
+        if c.correction:
+            out.append(f"    corrected: {c.correction}")
+        if c.why:
+            out.append(f"    why: {c.why}")
+    out.append(total)
+    return "\n".join(out) + "\n"
