@@ -848,17 +848,20 @@ class Checker:
         """A row repeated within one block: a transcription slip; the missing equation is named."""
         missing = None
         have = set()
-        for p in pieces:
-            for i, w in enumerate(lx.WD):
-                if lx.latex_atoms(p, self.vocab) & {w}:
-                    have.add(i)
+        for p in pieces:  # the rows that are one component's equation (not the vector sum)
+            found = [i for i, w in enumerate(lx.WD) if lx.latex_atoms(p, self.vocab) & {w}]
+            if len(found) == 1:
+                have.add(found[0])
         gaps = [i for i in range(3) if i not in have]
         if gaps:
             R = self.d.euler(self.ctx.subs)[gaps[0]]
             missing = self.tex(R) + " = 0"
-        self._add(line, piece, "equation of motion" if any(_free(m.value) & set(lx.WD) for m in parsed.members) else "identity",
-                  "typo", "repeats an earlier row of the same block" + (f"; the equation for component {gaps[0] + 1} is missing" if gaps else ""),
-                  missing)
+        kind = "equation of motion" if any(_free(m.value) & set(lx.WD) for m in parsed.members) else "identity"
+        if gaps:  # a typo: the row that should stand here is the missing component's equation
+            self._add(line, piece, kind, "typo", "repeats an earlier row of the same block; the "
+                      f"equation for component {gaps[0] + 1} is missing", missing)
+        else:  # nothing is missing: a repeat is no wrong formula (a typo would need a correction)
+            self._add(line, piece, kind, "unchecked", "repeats an earlier row of the same block")
 
     def _inequality(self, line, piece, parsed):
         if len(parsed.members) != 2:
