@@ -158,7 +158,7 @@ int euler_free_solve_taylor(const double *y0, const double *p, const double *t_o
 {
     derive_stats local;
     double u[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], y[euler_free_NY];
-    double t, tn, t_end, h, fac, scale, rho, xn, n1, n2;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
     long k_out;
     int i, j, order, last;
 
@@ -177,6 +177,7 @@ int euler_free_solve_taylor(const double *y0, const double *p, const double *t_o
     if (order > 30)
         order = 30;
     fac = exp(-2.0 - 0.7 / (order - 1));
+    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
 
     t = t_out[0];
     for (i = 0; i < euler_free_NY; ++i)
@@ -204,23 +205,23 @@ int euler_free_solve_taylor(const double *y0, const double *p, const double *t_o
                 if (!isfinite(u[i][j]))
                     return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t, i);
 
-        /* Norms over the states that feed something back (3 of 3: all). */
-        xn = n1 = n2 = 0.0;
-        xn = fmax(xn, fabs(y[0]));
-        n1 = fmax(n1, fabs(u[0][order - 1]));
-        n2 = fmax(n2, fabs(u[0][order]));
-        xn = fmax(xn, fabs(y[1]));
-        n1 = fmax(n1, fabs(u[1][order - 1]));
-        n2 = fmax(n2, fabs(u[1][order]));
-        xn = fmax(xn, fabs(y[2]));
-        n1 = fmax(n1, fabs(u[2][order - 1]));
-        n2 = fmax(n2, fabs(u[2][order]));
-        scale = rtol > 0.0 ? fmax(xn, atol / rtol) : 1.0;
+        /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
+         * (1 when rtol = 0), over the states that feed something back (3 of 3: all). */
+        n1 = n2 = 0.0;
+        sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[0][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[1][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[2]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[2][order]) / sc);
         rho = HUGE_VAL;
         if (n1 > 0.0)
-            rho = pow(scale / n1, 1.0 / (order - 1));
+            rho = pow(n1, -1.0 / (order - 1));
         if (n2 > 0.0)
-            rho = fmin(rho, pow(scale / n2, 1.0 / order));
+            rho = fmin(rho, pow(n2, -1.0 / order));
         h = rho * fac;
         last = !(t + h < t_end);
         if (last)

@@ -206,7 +206,7 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
 {
     derive_stats local;
     double u[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], y[euler_poisson_asym_gravity_general_NY];
-    double t, tn, t_end, h, fac, scale, rho, xn, n1, n2;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
     long k_out;
     int i, j, order, last;
 
@@ -225,6 +225,7 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
     if (order > 30)
         order = 30;
     fac = exp(-2.0 - 0.7 / (order - 1));
+    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
 
     t = t_out[0];
     for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
@@ -252,41 +253,41 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
                 if (!isfinite(u[i][j]))
                     return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
 
-        /* Norms over the states that feed something back (9 of 9: all). */
-        xn = n1 = n2 = 0.0;
-        xn = fmax(xn, fabs(y[0]));
-        n1 = fmax(n1, fabs(u[0][order - 1]));
-        n2 = fmax(n2, fabs(u[0][order]));
-        xn = fmax(xn, fabs(y[1]));
-        n1 = fmax(n1, fabs(u[1][order - 1]));
-        n2 = fmax(n2, fabs(u[1][order]));
-        xn = fmax(xn, fabs(y[2]));
-        n1 = fmax(n1, fabs(u[2][order - 1]));
-        n2 = fmax(n2, fabs(u[2][order]));
-        xn = fmax(xn, fabs(y[3]));
-        n1 = fmax(n1, fabs(u[3][order - 1]));
-        n2 = fmax(n2, fabs(u[3][order]));
-        xn = fmax(xn, fabs(y[4]));
-        n1 = fmax(n1, fabs(u[4][order - 1]));
-        n2 = fmax(n2, fabs(u[4][order]));
-        xn = fmax(xn, fabs(y[5]));
-        n1 = fmax(n1, fabs(u[5][order - 1]));
-        n2 = fmax(n2, fabs(u[5][order]));
-        xn = fmax(xn, fabs(y[6]));
-        n1 = fmax(n1, fabs(u[6][order - 1]));
-        n2 = fmax(n2, fabs(u[6][order]));
-        xn = fmax(xn, fabs(y[7]));
-        n1 = fmax(n1, fabs(u[7][order - 1]));
-        n2 = fmax(n2, fabs(u[7][order]));
-        xn = fmax(xn, fabs(y[8]));
-        n1 = fmax(n1, fabs(u[8][order - 1]));
-        n2 = fmax(n2, fabs(u[8][order]));
-        scale = rtol > 0.0 ? fmax(xn, atol / rtol) : 1.0;
+        /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
+         * (1 when rtol = 0), over the states that feed something back (9 of 9: all). */
+        n1 = n2 = 0.0;
+        sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[0][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[1][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[2]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[2][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[3][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[4]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[4][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[4][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[5]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[5][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[5][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[6]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[6][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[6][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[7]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[7][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[7][order]) / sc);
+        sc = rtol > 0.0 ? fmax(fabs(y[8]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[8][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[8][order]) / sc);
         rho = HUGE_VAL;
         if (n1 > 0.0)
-            rho = pow(scale / n1, 1.0 / (order - 1));
+            rho = pow(n1, -1.0 / (order - 1));
         if (n2 > 0.0)
-            rho = fmin(rho, pow(scale / n2, 1.0 / order));
+            rho = fmin(rho, pow(n2, -1.0 / order));
         h = rho * fac;
         last = !(t + h < t_end);
         if (last)

@@ -25,8 +25,8 @@ int euler_poisson_sym_gravity_taylor_coefficients(double t, const double *y, con
  *   rtol, atol  tolerances (>= 0, not both 0): the order p = ceil(-ln(rtol)/2) + 1 (atol when
  *               rtol = 0), clamped to [2, 30]; the step
  *               h = rho e^-2 exp(-0.7/(p-1)), rho = min over j = p-1, p of
- *               (S / |y_j|)^(1/j), S = max(|y|, atol/rtol) (Jorba and Zou 2005), norms over
- *               the states that feed something back
+ *               min_i (S_i / |y_i,j|)^(1/j), S_i = max(|y_i|, atol/rtol) (Jorba and Zou 2005,
+ *               per state), over the states that feed something back
  *   max_steps   limit on steps (status 3 when exceeded)
  */
 int euler_poisson_sym_gravity_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,

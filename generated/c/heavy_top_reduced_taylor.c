@@ -223,7 +223,7 @@ int heavy_top_reduced_solve_taylor(const double *y0, const double *p, const doub
 {
     derive_stats local;
     double u[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NODES][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1], y[heavy_top_reduced_NY];
-    double t, tn, t_end, h, fac, scale, rho, xn, n1, n2;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
     long k_out;
     int i, j, order, last;
 
@@ -242,6 +242,7 @@ int heavy_top_reduced_solve_taylor(const double *y0, const double *p, const doub
     if (order > 30)
         order = 30;
     fac = exp(-2.0 - 0.7 / (order - 1));
+    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
 
     t = t_out[0];
     for (i = 0; i < heavy_top_reduced_NY; ++i)
@@ -269,22 +270,22 @@ int heavy_top_reduced_solve_taylor(const double *y0, const double *p, const doub
                 if (!isfinite(u[i][j]))
                     return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, t, i);
 
-        /* Norms over the states that feed something back (2 of 4). */
-        xn = n1 = n2 = 0.0;
+        /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
+         * (1 when rtol = 0), over the states that feed something back (2 of 4). */
+        n1 = n2 = 0.0;
         /* alpha: feeds nothing back, out of the step control */
-        xn = fmax(xn, fabs(y[1]));
-        n1 = fmax(n1, fabs(u[1][order - 1]));
-        n2 = fmax(n2, fabs(u[1][order]));
+        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[1][order]) / sc);
         /* gamma: feeds nothing back, out of the step control */
-        xn = fmax(xn, fabs(y[3]));
-        n1 = fmax(n1, fabs(u[3][order - 1]));
-        n2 = fmax(n2, fabs(u[3][order]));
-        scale = rtol > 0.0 ? fmax(xn, atol / rtol) : 1.0;
+        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
+        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[3][order]) / sc);
         rho = HUGE_VAL;
         if (n1 > 0.0)
-            rho = pow(scale / n1, 1.0 / (order - 1));
+            rho = pow(n1, -1.0 / (order - 1));
         if (n2 > 0.0)
-            rho = fmin(rho, pow(scale / n2, 1.0 / order));
+            rho = fmin(rho, pow(n2, -1.0 / order));
         h = rho * fac;
         last = !(t + h < t_end);
         if (last)
