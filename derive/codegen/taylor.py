@@ -22,7 +22,7 @@ sqrt         u_n = (a_n − Σ_{j=1}^{n−1} u_j u_{n−j}) / (2 u_0)
 exp          u_n = Σ_{j=1}^{n} j a_j u_{n−j} / n
 log          u_n = (n a_n − Σ_{j=1}^{n−1} j u_j a_{n−j}) / (n a_0)
 sin, cos     s_n = Σ_{j=1}^{n} j a_j c_{n−j} / n,   c_n = −Σ_{j=1}^{n} j a_j s_{n−j} / n  (one pair)
-atan2(y, x)  r = x² + y², w = x y' − y x':  θ_{n+1} = (w_n − Σ_{j=1}^{n} r_j (n+1−j) θ_{n+1−j}) / ((n+1) r_0)
+atan2(y, x)  r = x² + y², w = x y' − y x' (atan(a): x = 1):  θ_{n+1} = (w_n − Σ_{j=1}^{n} r_j (n+1−j) θ_{n+1−j}) / ((n+1) r_0)
 Piecewise    u_n = the coefficient of the branch whose condition holds at order 0
 ===========  ==========================================================================
 
@@ -280,6 +280,14 @@ def _atan2(b: _Builder, e) -> tuple:
     return b.node("atan2", f"tc_atan2(n, u[{yk}], u[{xk}], u[{r}], #);")
 
 
+def _atan(b: _Builder, e) -> tuple:
+    """atan(a) = atan2(a, 1): the atan2 rule with x the constant 1, r = 1 + a²."""
+    a = e.args[0]
+    r = b.series(b.of(1 + a ** 2))
+    ak, one = b.series(b.of(a)), b.series(("c", "1.0"))
+    return b.node("atan2", f"tc_atan2(n, u[{ak}], u[{one}], u[{r}], #);")
+
+
 def _piecewise(b: _Builder, e) -> tuple:
     ops = [(b.of(value), cond) for value, cond in e.args]
     *pairs, (default, _) = ops
@@ -301,6 +309,7 @@ RULES = {
     sp.exp: _exp,
     sp.log: _log,
     sp.atan2: _atan2,
+    sp.atan: _atan,
     sp.Piecewise: _piecewise,
 }
 
