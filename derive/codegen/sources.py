@@ -13,6 +13,7 @@ import json
 
 from derive.codegen.kernelspec import STEP_COST_PER_STATE, KernelSpec
 from derive.codegen.splitting import render_splitting
+from derive.codegen.taylor import NoTaylorRule, render_taylor
 from derive.methods.splitting import applicable as splitting_applicable
 from derive.symbolic.models import Model
 from derive.codegen.render import render
@@ -51,7 +52,9 @@ def description_json(spec) -> str:
 
 
 def model_sources(model: Model) -> dict[str, str]:
-    """C header, C source and NumPy module of one model, plus its C solver kernels."""
+    """C header, C source and NumPy module of one model, plus its C solver kernels (the
+    Runge–Kutta family, the splittings where they apply, the Taylor methods where every
+    function of the right-hand side has a rule)."""
     spec = KernelSpec.of(model)
     c_ctx, np_ctx = spec.context("c"), spec.context("numpy")
     files = {
@@ -64,6 +67,10 @@ def model_sources(model: Model) -> dict[str, str]:
         files[f"c/{fname}"] = text
     if splitting_applicable(model) is None:
         files.update({f"c/{k}": v for k, v in render_splitting(model).items()})
+    try:  # every model whose right-hand side has a Taylor rule for each function in it
+        files.update({f"c/{k}": v for k, v in render_taylor(model, spec=spec).items()})
+    except NoTaylorRule:
+        pass
     files[f"models/{model.name}.json"] = description_json(spec)
     files["c/derive_integrals.h"] = integrals_header()  # the measures' integrals (one file for every model)
     return files

@@ -7,9 +7,14 @@ A method is a :class:`~derive.methods.tableaux.Tableau` plus the *driver* that r
 ``fixed``     explicit, each output interval split into ``ceil(dt/h)`` equal steps — ``(h,)``
 ``implicit``  fully implicit (Gauss–Legendre), fixed steps as above, simplified Newton with the
               model's Jacobian — ``(h, newton_tol, newton_maxiter)``
+``taylor``    Taylor series of the model's expression graph, order and step from the tolerance
+              (Jorba–Zou), dense output from the series — ``(rtol, atol, max_steps)``; no
+              tableau: the method is its order policy (:mod:`derive.methods.taylor`)
 
-Adding a method adds a tableau and one :data:`METHODS` entry; ``templates/c/solvers.c.j2``
-renders every entry through the same stepper code. The generated C API (``<prefix>_solvers.h``)
+Adding a Runge–Kutta method adds a tableau and one :data:`METHODS` entry;
+``templates/c/solvers.c.j2`` renders every entry through the same stepper code. The splittings
+(:mod:`derive.methods.splitting`) and the Taylor methods (:mod:`derive.methods.taylor`) are
+registries of their own, with their own templates, merged by :func:`compiled_methods`. The generated C API (``<prefix>_solvers.h``)
 is, for each method ``m`` and model prefix ``M``::
 
     int M_solve_m(const double *y0, const double *p, const double *t_out, long n_out,
@@ -25,6 +30,7 @@ from dataclasses import dataclass
 
 from derive.symbolic.effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
 from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
+from derive.methods.taylor import METHODS as TAYLOR
 
 # Each driver's extra C parameters, in order: (C type, name). Used by the header template and by
 # derive.runtime.integrate for the ctypes signatures, so the two cannot disagree.
@@ -32,7 +38,11 @@ DRIVER_PARAMS: dict[str, tuple[tuple[str, str], ...]] = {
     "adaptive": (("double", "rtol"), ("double", "atol"), ("double", "h0"), ("long", "max_steps")),
     "fixed": (("double", "h"),),
     "implicit": (("double", "h"), ("double", "newton_tol"), ("int", "newton_maxiter")),
+    "taylor": (("double", "rtol"), ("double", "atol"), ("long", "max_steps")),
 }
+
+#: The drivers that step by a tolerance (rtol, atol, max_steps) rather than a given step h.
+TOLERANCE_DRIVERS = ("adaptive", "taylor")
 
 @dataclass(frozen=True)
 class Method:
@@ -85,9 +95,10 @@ INTERNAL_METHODS = ("dop853_fixed",)
 
 
 def compiled_methods() -> dict:
-    """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`) and
-    the Lie–Poisson splittings of :mod:`derive.methods.splitting` (their own template). Each entry has
-    ``name``, ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
+    """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`),
+    the Lie–Poisson splittings of :mod:`derive.methods.splitting` and the Taylor methods of
+    :mod:`derive.methods.taylor` (each their own template). Each entry has ``name``,
+    ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
     return _compiled()
 
 
@@ -97,12 +108,18 @@ def _compiled():
 
     from derive.methods.splitting import METHODS as SPLITTING
 
-    return MappingProxyType({**METHODS, **SPLITTING})  # both fixed at import: merged once
+    return MappingProxyType({**METHODS, **SPLITTING, **TAYLOR})  # fixed at import: merged once
 
 
 def method(name: str):
     """The compiled method called ``name`` (KeyError if there is none)."""
     return compiled_methods()[name]
+
+
+def tolerance_driven(name: str) -> bool:
+    """True when the compiled method ``name`` steps by a tolerance (rtol, atol, max_steps), not by
+    a given step h."""
+    return compiled_methods()[name].driver in TOLERANCE_DRIVERS
 
 
 def method_reason(name: str, formulation: str, effects) -> str | None:
@@ -138,5 +155,5 @@ def scene_methods() -> dict[str, str]:
 
 def fixed_step_methods() -> tuple[str, ...]:
     """The compiled methods that take a fixed step h."""
-    return tuple(name for name, m in compiled_methods().items() if m.driver != "adaptive"
-                 and name not in INTERNAL_METHODS)
+    return tuple(name for name, m in compiled_methods().items()
+                 if m.driver not in TOLERANCE_DRIVERS and name not in INTERNAL_METHODS)

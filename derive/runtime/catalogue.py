@@ -60,7 +60,8 @@ class Description:
     def c_sources(self) -> dict[str, str]:
         """{file name: text} of the model and its solvers (the compile unit's inputs)."""
         names = [f"{self.name}{suffix}" for suffix in (".h", ".c", "_solvers.h", "_solvers.c",
-                                                        "_splitting.h", "_splitting.c")]
+                                                        "_splitting.h", "_splitting.c",
+                                                        "_taylor.h", "_taylor.c")]
         names.append("derive_elliptic.h")
         return {n: self.source(f"c/{n}") for n in names if (Path(self.folder) / "c" / n).is_file()}
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.errors import IntegrationError
-from derive.methods.registry import METHODS
+from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.codegen.solvers import render_solvers
 from derive.methods.registry import method as compiled_method
 from derive.methods.status import Status
@@ -378,7 +378,7 @@ class ModelKernel:
             spec = compiled_method(method)
             extra = [_C_TYPES[ty] for ty, _ in spec.params]
             self._arg_names = tuple(name for _, name in spec.params)
-            self.adaptive = spec.driver == "adaptive"
+            self.adaptive = spec.driver in TOLERANCE_DRIVERS  # steps by rtol/atol, not by h
             self._sim = self._fn(f"{p}_simulate_checked_{method}",
                                  [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
@@ -405,8 +405,11 @@ class ModelKernel:
             sources = desc.c_sources()
             unity = f"{desc.name}_{method or 'model'}_unit.c"
             includes = [f"{desc.name}.c"] + ([f"{desc.name}_solvers.c"] if method else [])
-            if method is not None and method not in METHODS:  # a splitting: its own file, after
-                includes.append(f"{desc.name}_splitting.c")    # the solvers (interrupt, drivers)
+            if method is not None and method not in METHODS:  # a splitting or a Taylor method:
+                family = "taylor" if compiled_method(method).driver == "taylor" else "splitting"
+                includes.append(f"{desc.name}_{family}.c")  # its own file, after the solvers
+                if f"{desc.name}_{family}.c" not in sources:  # (interrupt flag, drivers)
+                    raise ValueError(f"method {method!r} was not generated for the model {desc.name}")
             sources[unity] = "".join(f'#include "{n}"\n' for n in includes)
             flags = list(DEFAULT_FLAGS)
             if method is not None:

@@ -34,7 +34,7 @@ from derive.sim.inputs import (_check_budget, _settings, choose_method, default_
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
 from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
 from derive.methods.registry import DEFAULT_METHOD
-from derive.methods.registry import method as compiled_method
+from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
 from derive.methods.status import message as status_message
 
@@ -361,7 +361,7 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
     if method in SCIPY_METHODS:
         raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
     h = None
-    if compiled_method(method).driver != "adaptive" and first.simulate.h is None:
+    if not tolerance_driven(method) and first.simulate.h is None:
         h = min(default_step(sc) for sc in scs)
         for sc in scs:
             _check_budget(sc, method, h)

@@ -1,0 +1,382 @@
+"""Taylor recurrences from a model's expression graph, rendered into C (``<prefix>_taylor.{h,c}``).
+
+The right-hand side after CSE (the kernel spec's ``rhs`` block: the domain guards, then f) is
+decomposed once into elementary operations u_k = φ(u_i, u_j, constants), as heyoka decomposes a
+system. Each node is either a *constant* (numbers, parameters and whatever is made of them
+alone: printed as a C expression, evaluated once per expansion) or a *series*, an array of
+Taylor coefficients u_k,0 … u_k,p. For a series node the n-th coefficient follows from the
+operands' coefficients 0…n (and its own earlier ones) by the rule of its elementary function;
+the states close the loop, y_{i,n+1} = f_i,n / (n + 1). ``templates/c/taylor.c.j2`` runs
+n = 0 … p−1 over the nodes in order.
+
+Rules (:data:`RULES`, one entry per elementary function: adding a function adds an entry and,
+where it needs one, a C helper ``tc_<name>`` in the template; nothing else changes), with
+a, b the operands' coefficients and u the node's:
+
+===========  ==========================================================================
+Add          u_n = Σ c_i a_i,n  (+ the constant terms at n = 0)
+Mul          u_n = Σ_{j=0}^{n} a_j b_{n−j}  (Cauchy product; a square sums half the terms)
+division     u_n = (a_n − Σ_{j=1}^{n} b_j u_{n−j}) / b_0
+pow x^α      u_n = Σ_{j=0}^{n−1} (α(n−j) − j) a_{n−j} u_j / (n a_0)   (constant α)
+sqrt         u_n = (a_n − Σ_{j=1}^{n−1} u_j u_{n−j}) / (2 u_0)
+exp          u_n = Σ_{j=1}^{n} j a_j u_{n−j} / n
+log          u_n = (n a_n − Σ_{j=1}^{n−1} j u_j a_{n−j}) / (n a_0)
+sin, cos     s_n = Σ_{j=1}^{n} j a_j c_{n−j} / n,   c_n = −Σ_{j=1}^{n} j a_j s_{n−j} / n  (one pair)
+atan2(y, x)  r = x² + y², w = x y' − y x' (atan(a): x = 1):  θ_{n+1} = (w_n − Σ_{j=1}^{n} r_j (n+1−j) θ_{n+1−j}) / ((n+1) r_0)
+Piecewise    u_n = the coefficient of the branch whose condition holds at order 0
+===========  ==========================================================================
+
+Integer powers 2…4 are products (exact, as the other kernels print them), negative integer
+powers a division, ½ a sqrt. Order 0 of every rule is the function itself.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.codegen.kernelspec import KernelSpec, c_expr
+from derive.codegen.render import render
+from derive.methods.taylor import METHODS, TaylorMethod
+
+
+class NoTaylorRule(ValueError):
+    """The expression uses a function without a rule in :data:`RULES`."""
+
+
+@dataclass
+class Node:
+    """One series node: ``code`` is the C statement computing its coefficient ``n`` (a C
+    variable of the generated loop), given every operand's coefficients up to n; empty for the
+    second node of a pair computed by the first (cos beside sin)."""
+
+    index: int
+    rule: str
+    code: str
+
+
+@dataclass
+class Decomposition:
+    """The right-hand side as elementary operations: the states are series nodes 0…NY−1 (and
+    ``t``, when it appears, the next one), then one node per operation in evaluation order."""
+
+    ny: int
+    constants: list = field(default_factory=list)  # [(C name, C expression)] in order
+    nodes: list = field(default_factory=list)      # [Node]
+    outputs: list = field(default_factory=list)    # per rhs component: ("u", k) or ("c", text)
+    guards: list = field(default_factory=list)     # per domain guard: C text at order 0
+    params: list = field(default_factory=list)     # [(index, name)] of the parameters used
+    time_node: int | None = None
+    n_nodes: int = 0
+
+    @property
+    def rules(self) -> list[str]:
+        """The rules the nodes use, in the order of :data:`RULES` (the C helpers to emit)."""
+        used = {n.rule for n in self.nodes}
+        return [r for r in RULE_NAMES if r in used]
+
+
+# ---------------------------------------------------------------------------------------------
+# operands: ("u", k) a series node, ("c", text) a constant C expression
+
+
+def _u(k: int, n: str = "n") -> str:
+    return f"u[{k}][{n}]"
+
+
+def coef(op, n: str = "n") -> str:
+    """Coefficient n of an operand as C: a series' entry, a constant's value at n = 0 only."""
+    kind, v = op
+    return _u(v, n) if kind == "u" else f"({n} == 0 ? {v} : 0.0)"
+
+
+class _Builder:
+    def __init__(self, spec: KernelSpec):
+        m = spec.model
+        self.d = Decomposition(ny=len(m.states))
+        self.ops: dict = {s: ("u", i) for i, s in enumerate(m.states)}  # memo: expr -> operand
+        self.params = set(m.params)
+        self.t = sp.Symbol("t")
+        self.next = self.d.ny
+        self.const_series: dict = {}
+
+    # -- nodes ----------------------------------------------------------------------------
+    def node(self, rule: str, code: str) -> tuple:
+        """A new node; in ``code``, ``@`` is its coefficient n and ``#`` its array."""
+        k = self.next
+        self.next += 1
+        self.d.nodes.append(Node(k, rule, code.replace("@", _u(k)).replace("#", f"u[{k}]")))
+        return ("u", k)
+
+    def series(self, op) -> int:
+        """The node index of an operand, a constant made a series (c, 0, 0, …) where a rule
+        needs arrays."""
+        if op[0] == "u":
+            return op[1]
+        if op[1] not in self.const_series:
+            self.const_series[op[1]] = self.node("const", f"@ = {coef(op)};")[1]
+        return self.const_series[op[1]]
+
+    def is_const(self, e) -> bool:
+        for s in e.free_symbols:
+            op = self.ops.get(s)
+            if s == self.t or (op is not None and op[0] == "u"):
+                return False
+        return True
+
+    # -- expressions ----------------------------------------------------------------------
+    def of(self, e) -> tuple:
+        e = sp.sympify(e)
+        found = self.ops.get(e)
+        if found is not None:
+            return found
+        if e == self.t:
+            self.d.time_node = self.next
+            self.next += 1
+            out = ("u", self.d.time_node)
+        elif self.is_const(e):
+            out = ("c", f"({c_expr(e)})")
+        else:
+            rule = RULES.get(e.func)
+            if rule is None:
+                raise NoTaylorRule(f"no Taylor rule for {e.func.__name__} (in {e})")
+            out = rule(self, e)
+        self.ops[e] = out
+        return out
+
+    def temp(self, name, e):
+        """A CSE temporary: a constant becomes a named C constant, a series a node."""
+        if self.is_const(e):
+            self.d.constants.append((str(name), c_expr(e)))
+            self.ops[name] = ("c", str(name))
+        else:
+            self.ops[name] = self.of(e)
+
+    def order0(self, e) -> str:
+        """C text of ``e`` at order 0 (a condition's or a guard's value at the expansion
+        point): series symbols become their coefficient 0."""
+        subs = {s: sp.Symbol(_u(op[1], "0")) for s in e.free_symbols
+                for op in [self.ops.get(s)] if op is not None and op[0] == "u"}
+        return c_expr(e.xreplace(subs))
+
+
+# ---------------------------------------------------------------------------------------------
+# the rules: one per elementary function
+
+
+def _add(b: _Builder, e) -> tuple:
+    consts, parts = [], []
+    for arg in e.args:
+        if b.is_const(arg):
+            consts.append(arg)
+            continue
+        coeff, rest = arg.as_coeff_Mul()  # c * (series), c a number: folded into the sum
+        k = b.series(b.of(rest))
+        sign = "-" if coeff < 0 else "+"
+        mag = abs(coeff)
+        parts.append(f"{sign} {_u(k)}" if mag == 1 else f"{sign} {c_expr(mag)} * {_u(k)}")
+    code = " ".join(parts)
+    code = code[2:] if code.startswith("+ ") else "-" + code[2:]
+    if consts:
+        code += f" + (n == 0 ? {c_expr(sp.Add(*consts))} : 0.0)"
+    return b.node("add", f"@ = {code};")
+
+
+def _product(b: _Builder, ks: list) -> int:
+    """The product of series nodes, left to right (Cauchy-product nodes)."""
+    acc = ks[0]
+    for k in ks[1:]:
+        if k == acc:
+            acc = b.node("sqr", f"@ = tc_sqr(n, u[{k}]);")[1]
+        else:
+            acc = b.node("mul", f"@ = tc_mul(n, u[{acc}], u[{k}]);")[1]
+    return acc
+
+
+def _power(b: _Builder, base, k: int) -> int:
+    """The node of base**k, k ≥ 1: squares and products (x⁴ = (x²)²), each kept for reuse."""
+    if k == 1:
+        return b.series(b.of(base))
+    key = sp.Pow(base, k)
+    if key in b.ops:
+        return b.series(b.ops[key])
+    if k % 2 == 0:
+        half = _power(b, base, k // 2)
+        out = b.node("sqr", f"@ = tc_sqr(n, u[{half}]);")[1]
+    else:
+        out = _product(b, [_power(b, base, k - 1), _power(b, base, 1)])
+    b.ops[key] = ("u", out)
+    return out
+
+
+def _quotient(b: _Builder, num: int, den: int) -> int:
+    return b.node("div", f"tc_div(n, u[{num}], u[{den}], #);")[1]
+
+
+def _scaled(b: _Builder, c, k: int) -> tuple:
+    return ("u", k) if c == 1 else b.node("scale", f"@ = {c_expr(c)} * u[{k}][n];")
+
+
+def _mul(b: _Builder, e) -> tuple:
+    const, num, den = [], [], []
+    for f in e.args:
+        if b.is_const(f):
+            const.append(f)
+            continue
+        base, ex = f.as_base_exp()
+        if ex.is_Integer and ex < 0:
+            den.append(_power(b, base, int(-ex)))
+        elif ex.is_Integer and ex > 1:
+            num.append(_power(b, base, int(ex)))
+        else:
+            num.append(b.series(b.of(f)))
+    c = sp.Mul(*const)
+    if not den:
+        return _scaled(b, c, _product(b, num))
+    d = _product(b, den)
+    n = _product(b, num) if num else b.series(("c", "1.0"))
+    return _scaled(b, c, _quotient(b, n, d))
+
+
+def _pow(b: _Builder, e) -> tuple:
+    base, ex = e.as_base_exp()
+    if not b.is_const(ex):  # a series exponent: base**x = exp(x log base)
+        return b.of(sp.exp(ex * sp.log(base)))
+    if ex.is_Integer:
+        k = int(ex)
+        if k > 0:
+            return ("u", _power(b, base, k))
+        return ("u", _quotient(b, b.series(("c", "1.0")), _power(b, base, -k)))
+    a = b.series(b.of(base))
+    if ex == sp.Rational(1, 2):
+        return b.node("sqrt", f"tc_sqrt(n, u[{a}], #);")
+    return b.node("pow", f"tc_pow(n, u[{a}], {c_expr(ex)}, #);")
+
+
+def _sincos(b: _Builder, e) -> tuple:
+    x = e.args[0]
+    a = b.series(b.of(x))
+    s = b.node("sincos", "")[1]
+    c = b.node("sincos", "")[1]
+    b.d.nodes[-2].code = f"tc_sincos(n, u[{a}], u[{s}], u[{c}]);"
+    b.ops[sp.sin(x)], b.ops[sp.cos(x)] = ("u", s), ("u", c)
+    return b.ops[e]
+
+
+def _exp(b: _Builder, e) -> tuple:
+    a = b.series(b.of(e.args[0]))
+    return b.node("exp", f"tc_exp(n, u[{a}], #);")
+
+
+def _log(b: _Builder, e) -> tuple:
+    a = b.series(b.of(e.args[0]))
+    return b.node("log", f"tc_log(n, u[{a}], #);")
+
+
+def _atan2(b: _Builder, e) -> tuple:
+    y, x = e.args
+    r = b.series(b.of(x ** 2 + y ** 2))
+    yk, xk = b.series(b.of(y)), b.series(b.of(x))
+    return b.node("atan2", f"tc_atan2(n, u[{yk}], u[{xk}], u[{r}], #);")
+
+
+def _atan(b: _Builder, e) -> tuple:
+    """atan(a) = atan2(a, 1): the atan2 rule with x the constant 1, r = 1 + a²."""
+    a = e.args[0]
+    r = b.series(b.of(1 + a ** 2))
+    ak, one = b.series(b.of(a)), b.series(("c", "1.0"))
+    return b.node("atan2", f"tc_atan2(n, u[{ak}], u[{one}], u[{r}], #);")
+
+
+def _piecewise(b: _Builder, e) -> tuple:
+    ops = [(b.of(value), cond) for value, cond in e.args]
+    *pairs, (default, _) = ops
+    out = coef(default)
+    for value, cond in reversed(pairs):
+        out = f"(({b.order0(cond)}) ? {coef(value)} : {out})"
+    return b.node("piecewise", f"@ = {out};")
+
+
+#: One rule per elementary function (SymPy function → rule). A rule decomposes its expression
+#: into nodes whose C computes coefficient n; the C helpers tc_<rule> are in
+#: templates/c/taylor.c.j2 (emitted only when a node uses them).
+RULES = {
+    sp.Add: _add,
+    sp.Mul: _mul,
+    sp.Pow: _pow,
+    sp.sin: _sincos,
+    sp.cos: _sincos,
+    sp.exp: _exp,
+    sp.log: _log,
+    sp.atan2: _atan2,
+    sp.atan: _atan,
+    sp.Piecewise: _piecewise,
+}
+
+#: The node kinds, in the order their C helpers are emitted.
+RULE_NAMES = ("const", "add", "scale", "mul", "sqr", "div", "sqrt", "pow", "exp", "log",
+              "sincos", "atan2", "piecewise")
+
+
+def decompose(spec: KernelSpec) -> Decomposition:
+    """The kernel spec's right-hand side (with its domain guards) as elementary operations."""
+    b = _Builder(spec)
+    block = spec.rhs
+    for name, e in block.temps:
+        b.temp(name, e)
+    nd = len(spec.model.domain)
+    b.d.guards = [f"({b.order0(g)})" for g in block.outputs[:nd]]
+    b.d.outputs = [b.of(e) for e in block.outputs[nd:]]
+    b.d.params = block.uses(spec.model.params)
+    b.d.n_nodes = b.next
+    return b.d
+
+
+def controlled_states(model) -> tuple[bool, ...]:
+    """Per state: True when it feeds something back (appears in a right-hand side or a domain
+    guard). A state that appears in none, a cyclic angle such as α or γ, is integrated from the
+    others but left out of the step control's norms: its growth (γ ~ 6 t on the reference top)
+    would loosen the relative tolerance of every other state."""
+    free = set()
+    for e in list(model.rhs) + list(model.domain):
+        free |= sp.sympify(e).free_symbols
+    flags = tuple(s in free for s in model.states)
+    return flags if any(flags) else tuple(True for _ in flags)
+
+
+def applicable(model) -> str | None:
+    """None if every function in the model's right-hand side has a Taylor rule, else why not."""
+    try:
+        decompose(KernelSpec.of(model))
+    except NoTaylorRule as err:
+        return str(err)
+    return None
+
+
+def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | None = None
+                  ) -> dict[str, str]:
+    """``<name>_taylor.h`` and ``<name>_taylor.c`` for ``model`` (``spec``: its kernel spec, if
+    the caller has it): the coefficient recurrences and the Taylor solvers
+    (:mod:`derive.methods.taylor`). The C includes ``<name>_solvers.h`` (``derive_stats``, the
+    ``DERIVE_*`` codes, the model header). Raises :class:`NoTaylorRule` for a function without
+    a rule."""
+    names = list(METHODS) if methods is None else list(methods)
+    for n in names:
+        if n not in METHODS:
+            raise ValueError(f"unknown Taylor method {n!r}; known: {', '.join(METHODS)}")
+    d = decompose(spec if spec is not None else KernelSpec.of(model))
+    methods_ctx = [_method_context(METHODS[n]) for n in names]
+    ctx = {
+        "prefix": model.name, "ny": len(model.states), "d": d, "coef": coef,
+        "methods": methods_ctx, "max_order": max(m["max_order"] for m in methods_ctx),
+        "controlled": controlled_states(model), "states": model.state_names,
+    }
+    return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
+            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
+
+
+def _method_context(m: TaylorMethod) -> dict:
+    return {"name": m.name, "summary": m.summary, "min_order": m.min_order,
+            "max_order": m.max_order, "safety": m.safety,
+            "decl": ", ".join(f"{ty} {nm}" for ty, nm in m.params),
+            "args": ", ".join(nm for _, nm in m.params)}
