@@ -1,0 +1,158 @@
+"""Your own body (issue 18, part 1): potentials and torques written in the scene.
+
+The references are independent: the equations of motion written out here by hand (L̇ = τ in the
+inertial frame, ṅ = n × ω̃, the dipole's torque m × B) and integrated with SciPy, or closed forms;
+never derive against itself. Expressions from a stranger are refused by a whitelist, fast.
+"""
+import contextlib
+import io
+import math
+import time
+
+import numpy as np
+import pytest
+
+import derive
+from derive import SceneError, cli
+from derive.sim.scene import load_scene
+from derive.symbolic import expressions as ex
+
+BASE = {
+    "body": {"I1": 1.0, "I3": 0.5},
+    "initial": {"alpha": 0.0, "beta": 1.0, "gamma": 0.0,
+                "alpha_dot": 0.3, "beta_dot": 0.0, "gamma_dot": 4.0},
+    "simulate": {"t_end": 2.0, "samples": 21},
+}
+
+
+def scene(**tables) -> dict:
+    out = {k: dict(v) for k, v in BASE.items()}
+    for k, v in tables.items():
+        if isinstance(v, dict) and k in out:
+            out[k].update(v)
+        else:
+            out[k] = v
+    return out
+
+
+def magnet(V="-mu*B*R13", **params):
+    return {"name": "magnet", "V": V, "params": params or {"mu": 0.2, "B": 1.5}}
+
+
+# ---------------------------------------------------------------------------------------------
+# safe expressions
+
+HOSTILE = [
+    ("-mu2*B*R13", "unknown name 'mu2'"),
+    ("__import__('os').system('true')", "attribute access '.system'"),
+    ("__import__('os')", "unknown function '__import__'"),
+    ("R13.__class__", "attribute access '.__class__'"),
+    ("().__class__.__bases__[0]", "subscripts"),
+    ("[R13][0]", "subscripts"),
+    ("(lambda: 1)()", "calls only the functions"),
+    ("eval('1')", "unknown function 'eval'"),
+    ("open", "unknown name 'open'"),
+    ("9**9**9", "constant power"),
+    ("R33**100000", "constant power"),
+    ("10**10**10**10", "constant power"),
+    ("(" * 300 + "mu" + ")" * 300, "not an expression"),
+    ("-" * 990 + "mu", "nested more than"),
+    ("+".join(["mu"] * 300), "nested more than"),
+    ("mu*" * 400 + "B", "characters long"),
+    ("R13 +", "not an expression"),
+    ("R13; import os", "not an expression"),
+    ("R13 if mu else B", "'if ... else'"),
+    ("'text'", "string"),
+    ("1e400*mu", "not a finite double"),
+    ("sin(R13, R23)", "takes 1 argument"),
+    ("mu\u2212B", "ASCII"),
+    ("mu @ B", "operator '@'"),
+]
+
+
+@pytest.mark.parametrize("text, what", HOSTILE, ids=[f"hostile{i}" for i in range(len(HOSTILE))])
+def test_a_hostile_expression_is_refused_fast_naming_the_key(text, what):
+    sc = scene(potential=[magnet(text)])
+    t0 = time.perf_counter()
+    with pytest.raises(SceneError) as err:
+        load_scene(sc)
+    assert time.perf_counter() - t0 < 1.0
+    message = str(err.value)
+    assert message.startswith("<dict>: potential.magnet.V: "), message
+    assert what in message
+    assert "\n" not in message
+
+
+def test_the_command_line_refuses_an_unknown_name_with_exit_2_and_one_line(tmp_path):
+    path = tmp_path / "top.toml"
+    path.write_text('[body]\nI1 = 1.0\nI3 = 0.5\n[[potential]]\nname = "magnet"\n'
+                    'V = "-mu2*B*R13"\nparams = { mu = 0.2, B = 1.5 }\n'
+                    '[initial]\nalpha = 0.0\nbeta = 1.0\ngamma = 0.0\nomega = [0.0, 0.0, 3.0]\n'
+                    '[simulate]\nt_end = 1.0\n')
+    out, err = io.StringIO(), io.StringIO()
+    t0 = time.perf_counter()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        rc = cli.main(["simulate", str(path), "--out", str(tmp_path / "run.npz")])
+    assert time.perf_counter() - t0 < 1.0
+    assert rc == 2
+    assert err.getvalue() == f"error: {path}: potential.magnet.V: unknown name 'mu2'\n"
+    assert out.getvalue() == ""
+    assert not (tmp_path / "run.npz").exists()
+
+
+def test_a_torque_component_is_named_by_its_index_and_may_use_t_and_omega():
+    sc = scene(torque=[{"name": "drive", "tau": ["0", "omega1*t", "A*cos(w*t) + B"],
+                        "params": {"A": 0.01, "w": 3.0}}])
+    with pytest.raises(SceneError, match=r"^<dict>: torque\.drive\.tau\.2: unknown name 'B'$"):
+        load_scene(sc)
+    # t and omega are the torque's, not the potential's
+    with pytest.raises(SceneError, match=r"potential\.magnet\.V: unknown name 't'$"):
+        load_scene(scene(potential=[magnet("-mu*B*R13*t")]))
+
+
+@pytest.mark.parametrize("terms, key, what", [
+    ({"potential": {"name": "a", "V": "R33"}}, "potential", "array of tables"),
+    ({"potential": [{"V": "R33"}]}, r"potential\[0\]\.name", "missing required key"),
+    ({"potential": [{"name": "a b", "V": "R33"}]}, r"potential\[0\]\.name", "letters"),
+    ({"potential": [{"name": "a", "V": "R33"}, {"name": "a", "V": "R31"}]}, r"potential\.a",
+     "name given twice"),
+    ({"potential": [{"name": "a", "V": "R33", "tau": ["0"] * 3}]}, r"potential\.a\.tau",
+     "unknown key"),
+    ({"potential": [{"name": "a"}]}, r"potential\.a\.V", "missing required key"),
+    ({"potential": [{"name": "a", "V": "k*R33", "params": {"k": "1"}}]},
+     r"potential\.a\.params\.k", "finite number"),
+    ({"potential": [{"name": "a", "V": "R33", "params": {"t": 1.0}}]},
+     r"potential\.a\.params\.t", "choose another"),
+    ({"potential": [{"name": "a", "V": 3.0}]}, r"potential\.a\.V", "must be a string"),
+    ({"torque": [{"name": "a", "tau": ["0", "0"]}]}, r"torque\.a\.tau", "list of 3"),
+    ({"torque": [{"name": "a", "frame": "lab", "tau": ["0"] * 3}]}, r"torque\.a\.frame",
+     "body"),
+])
+def test_a_bad_term_table_is_one_line_naming_the_key(terms, key, what):
+    with pytest.raises(SceneError, match=rf"^<dict>: {key}: .*{what}"):
+        load_scene(scene(**terms))
+
+
+def test_the_expression_becomes_sympy_from_its_tree():
+    import sympy as sp
+
+    mu, B, R13 = sp.symbols("mu B R13")
+    parsed = ex.parse("-mu*B*R13 + 0.5*R13**2 + atan2(R13, 1)/2", {"mu", "B", "R13"})
+    assert parsed.names == {"mu", "B", "R13"}
+    got = ex.to_sympy(parsed, {"mu": mu, "B": B, "R13": R13})
+    assert sp.simplify(got - (-mu * B * R13 + R13**2 / 2 + sp.atan2(R13, 1) / 2)) == 0
+    # a float that is no short binary fraction stays the double the text denotes
+    assert float(ex.to_sympy(ex.parse("0.1", ()), {})) == 0.1
+
+
+def test_a_scene_with_terms_round_trips_through_to_dict():
+    sc = load_scene(scene(potential=[magnet()],
+                          torque=[{"name": "drive", "frame": "inertial",
+                                   "tau": ["0", "0", "A*cos(w*t)"],
+                                   "params": {"A": 0.01, "w": 3.0}}]))
+    assert load_scene(sc.to_dict()) == sc
+    assert [t.name for t in sc.terms] == ["magnet", "drive"]
+    assert len(sc.effects) == 2
+    values = sc.param_values()
+    assert values[sc.terms[0].model_param("mu")] == 0.2
+    assert values[sc.terms[1].model_param("w")] == 3.0
