@@ -297,3 +297,49 @@ def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
         load({**spec, "vary": {"potential.magnet.nu": {"values": [0.1]}}})
     with pytest.raises(SceneError, match=r"vary\.torque\.magnet\.mu: .*no \[\[torque\]\]"):
         load({**spec, "vary": {"torque.magnet.mu": {"values": [0.1]}}})
+
+
+# ---------------------------------------------------------------------------------------------
+# conserved quantities found by symmetry, and seen in the trajectories
+
+def _symmetries(sc):
+    from derive.symbolic.terms import symmetries
+
+    s = load_scene(sc)
+    return symmetries(s.effects, s.symmetric)
+
+
+@pytest.mark.parametrize("V, p_alpha, p_gamma", [
+    ("-mu*B*R33", True, True),          # dipole on axis 3, field vertical: both
+    ("-mu*B*R13", False, True),         # field horizontal: about axis 3 only
+    ("-mu*B*R31", True, False),         # dipole across axis 3, field vertical: about z only
+    ("mu*B*cos(beta)**2", True, True),  # a function of the tilt alone, written in the angles
+    ("mu*B*sin(alpha)", False, True),
+])
+def test_conserved_momenta_are_found_by_symmetry_and_hold_in_the_trajectory(V, p_alpha, p_gamma):
+    sc = scene(potential=[magnet(V, mu=0.4, B=1.5)], simulate={"t_end": 3.0, "samples": 61})
+    found = _symmetries(sc)
+    assert (found["p_alpha"], found["p_gamma"], found["energy"]) == (p_alpha, p_gamma, True)
+    res = derive.simulate(sc, formulation="quaternion")
+    drift = {k: np.ptp(getattr(res, k)) for k in ("p_alpha", "p_gamma", "energy")}
+    assert drift["energy"] < 1e-9
+    for k, conserved in (("p_alpha", p_alpha), ("p_gamma", p_gamma)):
+        assert (drift[k] < 1e-9) if conserved else (drift[k] > 1e-4), (k, drift[k])
+
+
+def test_a_torque_breaks_the_energy_and_what_it_acts_along():
+    sc = scene(torque=[{"name": "spin", "tau": ["0", "0", "0.1"]}])
+    found = _symmetries(sc)
+    assert not found["energy"] and not found["p_gamma"] and not found["p_alpha"]
+    assert "does work" in found["why"]["energy"]
+    # a torque about the inertial vertical breaks p_alpha alone (and the energy)
+    sc = scene(torque=[{"name": "z", "frame": "inertial", "tau": ["0", "0", "0.1"]}],
+               body={"I1": 1.0, "I2": 1.0, "I3": 0.5})
+    found = _symmetries(sc)
+    assert (found["energy"], found["p_alpha"], found["p_gamma"]) == (False, False, False)
+    # a horizontal inertial torque leaves p_alpha = ẑ·L
+    sc = scene(torque=[{"name": "x", "frame": "inertial", "tau": ["0.1*cos(t)", "0", "0"]}])
+    found = _symmetries(sc)
+    assert found["p_alpha"] and not found["energy"]
+    res = derive.simulate(sc)
+    assert np.ptp(res.p_alpha) < 1e-9 and np.ptp(res.energy) > 1e-4

@@ -237,69 +237,64 @@ def terms_of(effect_names, terms) -> tuple:
 # symmetry, checked symbolically (the analysis)
 
 
-def symmetries(terms, symmetric: bool) -> dict:
-    """Which integrals the user terms leave: invariance checked symbolically, not by name.
+def symmetries(effect_names, symmetric: bool, labels=None) -> dict:
+    """Which integrals the effects leave: invariance checked symbolically, not by name.
 
     Parameters
     ----------
-    terms : sequence of Term
-        The scene's user terms (with any built-in effects judged separately by the caller).
+    effect_names : sequence of str
+        Registry effects (built-in or the user's terms, registered).
     symmetric : bool
         I1 == I2.
+    labels : mapping of str to str, optional
+        How to name an effect in the reasons (a term's "potential 'magnet'").
 
     Returns
     -------
     dict
-        ``{"p_alpha": bool, "p_gamma": bool, "energy": bool, "why": {name: str}}``:
+        ``{"energy": bool, "p_alpha": bool, "p_gamma": bool, "why": {integral: str}}``:
 
-        * p_α = ẑ·L is conserved when every V is invariant under rotations about the inertial
-          vertical, V(Rz(ε) R) = V(R) (checked as ∂/∂ε at ε = 0 vanishing identically: the
-          derivative at 0 vanishing for every R is the invariance, the rotations forming a
-          group), and every torque has no component along the vertical, ẑ·(R τ̃) ≡ 0;
+        * p_α = ẑ·L = L·n is conserved when every V is invariant under rotations about the
+          inertial vertical, V(Rz(ε) R) = V(R), and every torque has no vertical component,
+          ẑ·(R τ̃) ≡ 0. In z-y-z angles Rz(ε) R is R at α + ε, so the invariance is ∂V/∂α ≡ 0,
+          simplified symbolically (an identity on the chart, so everywhere by continuity);
         * p_γ = I₃ω̃₃ for a symmetric body when every V is invariant about body axis 3,
-          V(R Rz(ε)) = V(R), and every torque has τ̃₃ ≡ 0;
-        * the energy T + ΣV when there is no torque term (time enters only through torques).
+          V(R Rz(ε)) = V(R), i.e. ∂V/∂γ ≡ 0, and every torque has τ̃₃ ≡ 0;
+        * the energy T + ΣV when no effect has a torque (a torque does work; time enters only
+          through torques).
+
+        ``why`` says, for each integral not conserved, the first effect that breaks it.
     """
     import sympy as sp
 
-    from derive.symbolic.rotations import ZYZ, skew, trig_reduce
+    from derive.symbolic.rotations import ANGLES, ZYZ, trig_reduce
 
+    labels = labels or {}
+    # In z-y-z angles Rz(ε) R is R at α + ε and R Rz(ε) is R at γ + ε: the invariances are
+    # ∂V/∂α ≡ 0 and ∂V/∂γ ≡ 0 (identities on the chart, so everywhere by continuity).
     R = ZYZ.matrix()
-    eps = sp.Symbol("epsilon", real=True)
-    ez = sp.Matrix([0, 0, 1])
-    rot = sp.eye(3) + eps * skew(ez)  # first order suffices for ∂/∂ε at 0
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     why = {}
-    p_alpha = p_gamma = True
-    energy = True
-    for term in terms:
-        effect = fx.REGISTRY[register(term)]
+    for effect in fx.lookup(effect_names):
+        label = labels.get(effect.name, f"effect {effect.name!r}")
         sym = fx.Symbols((effect,))
-        if term.kind == "potential":
-            about_z = sp.diff(effect.potential(rot * R, sym), eps).subs(eps, 0)
-            about_3 = sp.diff(effect.potential(R * rot, sym), eps).subs(eps, 0)
-            if not _zero(about_z, trig_reduce):
-                p_alpha = False
-                why.setdefault("p_alpha", f"potential {term.name!r} is not invariant about "
-                                          f"the vertical")
-            if not _zero(about_3, trig_reduce):
-                p_gamma = False
-                why.setdefault("p_gamma", f"potential {term.name!r} is not invariant about "
-                                          f"body axis 3")
-        else:
-            energy = False
-            why.setdefault("energy", f"torque {term.name!r} does work")
+        if effect.potential is not None:
+            V = effect.potential(R, sym)
+            if not _zero(sp.diff(V, ANGLES[0]), trig_reduce):
+                why.setdefault("p_alpha", f"{label} is not invariant about the vertical")
+            if not _zero(sp.diff(V, ANGLES[2]), trig_reduce):
+                why.setdefault("p_gamma", f"{label} is not invariant about body axis 3")
+        if effect.torque is not None:
+            why.setdefault("energy", f"{label} is a torque: it does work")
             tau = effect.torque(w, R, sym)
             if not _zero((R[2, :] * tau)[0, 0], trig_reduce):
-                p_alpha = False
-                why.setdefault("p_alpha", f"torque {term.name!r} has a vertical component")
+                why.setdefault("p_alpha", f"{label} has a vertical component")
             if not _zero(tau[2], trig_reduce):
-                p_gamma = False
-                why.setdefault("p_gamma", f"torque {term.name!r} has a component along axis 3")
+                why.setdefault("p_gamma", f"{label} has a component along body axis 3")
     if not symmetric:
-        p_gamma = False
         why.setdefault("p_gamma", "the body is not symmetric (I1 != I2)")
-    return {"p_alpha": p_alpha, "p_gamma": p_gamma, "energy": energy, "why": why}
+    return {"energy": "energy" not in why, "p_alpha": "p_alpha" not in why,
+            "p_gamma": "p_gamma" not in why, "why": why}
 
 
 def _zero(expr, trig_reduce) -> bool:
