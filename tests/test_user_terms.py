@@ -343,3 +343,42 @@ def test_a_torque_breaks_the_energy_and_what_it_acts_along():
     assert found["p_alpha"] and not found["energy"]
     res = derive.simulate(sc)
     assert np.ptp(res.p_alpha) < 1e-9 and np.ptp(res.energy) > 1e-4
+
+
+# ---------------------------------------------------------------------------------------------
+# derive analyze for the user's body
+
+def test_analyze_finds_the_compass_equilibria_of_a_dipole_with_their_closed_forms():
+    """V = −μB R13 (a compass needle along body axis 3, field along x): rest at V = −μB
+    (axis 3 along +x) is stable, with small oscillations λ = ±i√(μB/I₁), ±i√(μB/I₂) about the
+    two axes across the needle; V = +μB is unstable with λ = ±√(μB/I₁), ±√(μB/I₂). Both are
+    circles of equilibria (V does not change as the needle spins about itself)."""
+    mu, B, I1, I2 = 0.2, 1.5, 1.0, 0.8
+    sc = scene(body={"I1": I1, "I2": I2, "I3": 0.5}, potential=[magnet("-mu*B*R13", mu=mu, B=B)])
+    a = derive.analyze(sc)
+    data = a.to_json()
+    assert data["case"] == "general" and not data["dissipative"]
+    conserved = {i["name"]: i["conserved"] for i in data["integrals"]}
+    assert conserved == {"energy": True, "p_alpha": False, "p_gamma": False, "n_squared": True}
+    eqs = sorted(data["equilibria"], key=lambda e: e["values"]["V"])
+    assert [e["stable"] for e in eqs] == [True, False]
+    assert [e["values"]["family"] for e in eqs] == [1, 1]
+    for e, sign in zip(eqs, (-1, 1)):
+        assert e["values"]["V"] == pytest.approx(sign * mu * B, rel=1e-9)
+        assert e["values"]["n"][2] == pytest.approx(0.0, abs=1e-7)  # axis 3 horizontal (along ±x)
+        lam = [complex(*z) for z in e["eigenvalues"] if abs(complex(*z)) > 1e-6]
+        rates = [math.sqrt(mu * B / I1), math.sqrt(mu * B / I2)]
+        expect = [s * (1j if sign < 0 else 1) * r for r in rates for s in (1, -1)]
+        np.testing.assert_allclose(sorted(lam, key=lambda z: (z.real, z.imag)),
+                                   sorted(expect, key=lambda z: (z.real, z.imag)), atol=1e-7)
+    text = a.to_markdown()
+    assert "potential `magnet`" in text and "not conserved" in text
+
+
+def test_analyze_of_a_driven_body_lists_no_energy_integral_and_no_rest_equilibria():
+    sc = scene(torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
+                        "params": {"A": 0.01, "w": 3.0}}])
+    data = derive.analyze(sc).to_json()
+    conserved = {i["name"]: i["conserved"] for i in data["integrals"]}
+    assert conserved["energy"] is False and data["dissipative"] is True
+    assert data["equilibria"] == []
