@@ -382,3 +382,20 @@ def test_analyze_of_a_driven_body_lists_no_energy_integral_and_no_rest_equilibri
     conserved = {i["name"]: i["conserved"] for i in data["integrals"]}
     assert conserved["energy"] is False and data["dissipative"] is True
     assert data["equilibria"] == []
+
+
+def test_the_figure_of_a_driven_body_does_not_call_its_energy_change_an_error():
+    pytest.importorskip("matplotlib")
+    from derive.sim import plots
+
+    res = derive.simulate(scene(torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
+                                         "params": {"A": 0.01, "w": 3.0}}],
+                                potential=[magnet("-mu*B*R13")]))
+    fig = plots.figure(res)
+    titles = {ax.get_label(): ax.get_title() for ax in fig.axes}
+    assert "not conserved: torque 'drive' does work" in titles["energy"]
+    assert "error" not in titles["energy"]
+    assert "not conserved" in titles["momenta"] and "potential 'magnet'" in titles["momenta"]
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)

@@ -285,7 +285,7 @@ def symmetries(effect_names, symmetric: bool, labels=None) -> dict:
             if not _zero(sp.diff(V, ANGLES[2]), trig_reduce):
                 why.setdefault("p_gamma", f"{label} is not invariant about body axis 3")
         if effect.torque is not None:
-            why.setdefault("energy", f"{label} is a torque: it does work")
+            why.setdefault("energy", f"{label} does work")
             tau = effect.torque(w, R, sym)
             if not _zero((R[2, :] * tau)[0, 0], trig_reduce):
                 why.setdefault("p_alpha", f"{label} has a vertical component")
