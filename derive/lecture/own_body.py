@@ -107,9 +107,14 @@ class OwnBodyAnalysis:
         return {
             "case": "general", "reason": self.reason, "dissipative": dissipative,
             "terms": [t.given() | {"kind": t.kind} for t in sc.terms],
+            # The contract's integrals are the conserved quantities; the others, with the
+            # effect that breaks each, are listed apart.
             "integrals": [{"name": r["name"], "expression": r["expression"], "unit": r["unit"],
-                           "proved": r["proved"], "conserved": r["conserved"], "why": r["why"]}
-                          for r in self.integral_records()],
+                           "proved": r["proved"], "why": r["why"]}
+                          for r in self.integral_records() if r["conserved"]],
+            "not_conserved": [{"name": r["name"], "expression": r["expression"],
+                               "why": r["why"]}
+                              for r in self.integral_records() if not r["conserved"]],
             "equilibria": [e.to_json() for e in self.equilibria],
         }
 
