@@ -249,8 +249,13 @@ def test_a_constant_inertial_torque_makes_L_grow_linearly():
     np.testing.assert_allclose(np.sum(res.L**2, axis=1), np.sum(L**2, axis=1), atol=1e-8)
 
 
-@pytest.mark.parametrize("formulation", ["auto", "euler-poisson", "quaternion", "euler-angles",
-                                         "reduced"])
+@pytest.mark.parametrize("formulation", [
+    "auto", "quaternion",
+    # each formulation is a model derived and compiled on a cold cache: the rest run with -m slow
+    pytest.param("euler-poisson", marks=pytest.mark.slow),
+    pytest.param("euler-angles", marks=pytest.mark.slow),
+    pytest.param("reduced", marks=pytest.mark.slow),
+])
 def test_a_potential_restating_gravity_gives_the_gravity_trajectory(formulation):
     grav = {"M": 1.2, "g": 9.81, "l": 0.1}
     a = derive.simulate(scene(gravity=grav), formulation=formulation)
