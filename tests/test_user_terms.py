@@ -67,6 +67,10 @@ HOSTILE = [
     ("sin(R13, R23)", "takes 1 argument"),
     ("mu\u2212B", "ASCII"),
     ("mu @ B", "operator '@'"),
+    ("R13/(2 - 2)", "divides by zero"),
+    ("mu*sqrt(-1)*R13", "not a real number: sqrt(-1)"),
+    ("R13 + log(0)", "not a real number: log(0)"),
+    ("exp(1000)*R13", "not a finite double"),
 ]
 
 

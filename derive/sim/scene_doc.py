@@ -143,7 +143,9 @@ def _terms_section() -> list[str]:
         "access, subscripts, lambdas, comparisons, calls of other names, keyword arguments, "
         f"non-ASCII text, text over {expressions.MAX_LENGTH} characters, nesting deeper than "
         f"{expressions.MAX_DEPTH}, constant exponents whose product along a path exceeds "
-        f"{expressions.MAX_DEGREE} (`9**9**9`, `x**100`). A param may not take a built-in name. "
+        f"{expressions.MAX_DEGREE} (`9**9**9`, `x**100`), constant parts that are no finite "
+        "real number (`1/0`, `x/(2-2)`, `sqrt(-1)`, `log(0)`). A param may not take a built-in "
+        "name. "
         f"At most {terms.MAX_TERMS} terms of each kind and {terms.MAX_PARAMS} params per term. "
         "Keys in messages: `potential.<name>.V`, `torque.<name>.tau.<0|1|2>`, "
         "`<kind>.<name>.params.<param>` (`potential[<i>]` before a name is read).", "",

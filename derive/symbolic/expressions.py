@@ -13,8 +13,9 @@ Anything else is refused before any SymPy work, with a :class:`ExpressionError` 
 what is at fault (``unknown name 'mu2'``, ``attribute access '.x' is not allowed``, …): undeclared
 names, attributes, subscripts, lambdas, comparisons, calls of other names, keyword arguments,
 text over :data:`MAX_LENGTH` characters, nesting deeper than :data:`MAX_DEPTH`, and constant
-exponents whose product along a path exceeds :data:`MAX_DEGREE` (``9**9**9``, ``x**1000``): the
-checks run in time linear in the text, whatever it holds.
+exponents whose product along a path exceeds :data:`MAX_DEGREE` (``9**9**9``, ``x**1000``),
+constant parts that are no finite real number (``1/0``, ``x/(2-2)``, ``sqrt(-1)``): the checks
+run in time linear in the text, whatever it holds.
 
 :func:`parse` returns a :class:`Parsed` (the checked tree and the names it uses); only
 :func:`to_sympy` imports SymPy.
@@ -113,7 +114,80 @@ def parse(text, names) -> Parsed:
         raise ExpressionError("is not an expression (too deeply nested)") from None
     allowed = frozenset(names) | frozenset(CONSTANTS)
     used = _check(tree.body, allowed)
+    _fold(tree.body)
     return Parsed(text, tree, frozenset(used))
+
+
+_MATH = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
+         "acos": math.acos, "atan": math.atan, "atan2": math.atan2, "sinh": math.sinh,
+         "cosh": math.cosh, "tanh": math.tanh, "exp": math.exp, "log": math.log,
+         "sqrt": math.sqrt, "abs": abs}
+
+
+def _fold(node) -> float | None:
+    """The value of a constant subtree in doubles (None where a name other than pi enters), so
+    that a constant that is no real number (``1/0``, ``sqrt(-1)``, ``log(0)``, ``asin(2)``) is
+    refused here rather than met by the derivation or the C compiler. Runs on a checked tree
+    (depth at most MAX_DEPTH, constant powers bounded), so the recursion and the arithmetic
+    are bounded."""
+    kind = type(node)
+    if kind is ast.Constant:
+        return float(node.value)
+    if kind is ast.Name:
+        return math.pi if node.id == "pi" else None
+    if kind is ast.UnaryOp:
+        x = _fold(node.operand)
+        return None if x is None else (-x if type(node.op) is ast.USub else x)
+    if kind is ast.BinOp:
+        a, b = _fold(node.left), _fold(node.right)
+        op = type(node.op)
+        if op is ast.Div and b == 0:  # x/0 whatever x is
+            raise ExpressionError("divides by zero (a constant part of it)")
+        if a is None or b is None:
+            return None
+        try:
+            if op is ast.Add:
+                x = a + b
+            elif op is ast.Sub:
+                x = a - b
+            elif op is ast.Mult:
+                x = a * b
+            elif op is ast.Div:
+                x = a / b
+            else:
+                if a == 0 and b < 0:
+                    raise ZeroDivisionError
+                x = math.pow(a, b)
+        except ZeroDivisionError:
+            raise ExpressionError("divides by zero (a constant part of it)") from None
+        except ValueError:
+            raise ExpressionError("has a constant part that is not a real number "
+                                  f"({_fmt(a)})**({_fmt(b)})") from None
+        except OverflowError:
+            x = math.inf
+    else:  # a call
+        args = [_fold(arg) for arg in node.args]
+        if any(x is None for x in args):
+            return None
+        name = node.func.id
+        if name == "atan2" and args[0] == 0 and args[1] == 0:
+            raise ExpressionError("has a constant part that is undefined: atan2(0, 0)")
+        try:
+            x = _MATH[name](*args)
+        except ZeroDivisionError:
+            raise ExpressionError(f"divides by zero in {name}()") from None
+        except ValueError:
+            raise ExpressionError(f"has a constant part that is not a real number: {name}("
+                                  + ", ".join(_fmt(a) for a in args) + ")") from None
+        except OverflowError:
+            x = math.inf
+    if not math.isfinite(x):
+        raise ExpressionError("has a constant part that is not a finite double")
+    return x
+
+
+def _fmt(x: float) -> str:
+    return f"{x:.6g}"
 
 
 def _check(root, allowed) -> set:
