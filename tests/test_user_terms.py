@@ -409,3 +409,22 @@ def test_the_figure_of_a_driven_body_does_not_call_its_energy_change_an_error():
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+def test_a_warm_run_of_a_user_body_imports_no_sympy(tmp_path):
+    """Validation reads the expressions with ast alone; the model comes from the compile
+    cache: a second process runs the body without SymPy."""
+    import json
+    import subprocess
+    import sys
+
+    sc = scene(potential=[magnet()], torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
+                                              "params": {"A": 0.01, "w": 3.0}}])
+    derive.simulate(sc, formulation="quaternion")  # derived and cached here if it was not
+    code = ("import json, sys, derive; "
+            f"derive.simulate(json.loads({json.dumps(json.dumps(sc))}), formulation='quaternion'); "
+            "print([m for m in ('sympy', 'jinja2') if m in sys.modules])")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "[]"
