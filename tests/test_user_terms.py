@@ -428,3 +428,31 @@ def test_a_warm_run_of_a_user_body_imports_no_sympy(tmp_path):
                          timeout=120)
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip() == "[]"
+
+
+def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
+    """A Dask worker is a fresh process: only the built-in effects are registered there. The
+    task carries the terms and registers them before it loads the model."""
+    from derive.runtime import catalogue
+    from derive.sweeps import measures as ms
+    from derive.sweeps.engine import load, run_chunk
+    from derive.symbolic import effects
+
+    base = scene(potential=[magnet("-mu*B*R13", mu=0.2, B=1.5)],
+                 simulate={"t_end": 1.0, "samples": 2})
+    sp = load({"scene": base, "vary": {"potential.magnet.mu": {"values": [0.1, 0.4]}},
+               "measures": ["beta_max"]})
+    name = sp.terms[0].effect
+    args = (sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-10, 1e-12, 0.0, 10**6),
+            ms.config_of(("beta_max",), {}))
+    expected = run_chunk(*args)
+    effects.unregister(name)  # as in a fresh worker
+    catalogue.clear_memory()
+    try:
+        with pytest.raises(KeyError):
+            catalogue.describe(sp.key)
+        got = run_chunk(*args, None, sp.terms)
+        assert name in effects.REGISTRY
+        np.testing.assert_array_equal(got[0], expected[0])
+    finally:
+        catalogue.clear_memory()
