@@ -57,9 +57,12 @@ GOALS = {
     "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
     # issue 11
     "sweep_vs_scipy": ("≥", 100.0), "dask_vs_local": ("≤", 1.1), "dask_scaling": ("≥", 0.8),
-    # issue 20 (derive.bench.peers): derive's time over the peer's, at equal error
+    # derive.bench.peers: derive's time over the peer's, at equal error
     "vs_heyoka": ("≤", 0.7), "vs_numbalsoda": ("≤", 0.5), "long_vs_heyoka": ("≤", 0.7),
     "batch_vs_heyoka": ("≤", 0.7), "fixed_prepared_vs_heyoka": ("≤", 1.5), "fixed_simulate_vs_heyoka": ("≤", 6.0),
+    # user terms (derive.bench.own_body)
+    "own_first_run": ("≤", 3.0), "own_gravity_vs_gravity": ("≤", 1.1),
+    "own_warm_vs_shipped": ("≤", 1.2),
 }
 
 
@@ -384,7 +387,7 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=8, desc="targets", unit="part", file=sys.stderr) as bar:
+    with tqdm(total=9, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
         out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
@@ -402,7 +405,16 @@ def run(cfg, fams) -> dict:
         bar.update()
         out["peers"] = _guard("peers", bench_peers.run, cfg, fams, batch_scenes)
         bar.update()
+        out["own_body"] = _guard("own body", own_body, cfg)
+        bar.update()
     return out
+
+
+def own_body(cfg) -> dict:
+    """Issue 18's targets for user terms (:mod:`derive.bench.own_body`)."""
+    from derive.bench.own_body import bench_own_body
+
+    return bench_own_body()
 
 
 def sweeps(cfg) -> dict:
@@ -423,8 +435,9 @@ CONTEXT = {"batch_vs_raw": "(solve only, no outputs)", "ceiling_vs_scipy": "(cei
 
 def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
     """(target, goal, measured ratio, met) rows for the report's table."""
-    ref, fc, ba, pr, la, sw = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch", "processes",
-                                                        "lambdify", "sweeps"))
+    ref, fc, ba, pr, la, sw, ob = (t.get(k) or {} for k in ("reference", "fixed_cost", "batch",
+                                                            "processes", "lambdify", "sweeps",
+                                                            "own_body"))
 
     def g(key):
         if key in CONTEXT:
@@ -432,7 +445,8 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
         if key not in GOALS:
             return "(stronger baseline)"
         op, goal = GOALS[key]
-        return f"{op} {goal:g}" + ("" if key in ("cold_minus_warm", "dask_scaling") else "×")
+        return f"{op} {goal:g}" + ("" if key in ("cold_minus_warm", "dask_scaling", "own_first_run")
+                                   else "×")
 
     rows = [
         ("reference scene: `derive.simulate` vs `solve_ivp` DOP853 plain-Python rhs, equal or smaller error",
@@ -462,6 +476,12 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
         ("10⁵ points, Dask LocalCluster 2 workers / local engine 2 processes", "dask_vs_local",
          sw.get("dask2_over_local2")),
         ("Dask scaling from 1 to 2 workers", "dask_scaling", sw.get("scaling_1_to_2")),
+        ("first `derive.simulate` of a new user body (derive, generate, compile, run) [s]",
+         "own_first_run", ob.get("first_run")),
+        ("potential restating gravity / `[gravity]`, prepared run, same formulation",
+         "own_gravity_vs_gravity", ob.get("gravity_ratio")),
+        ("warm `derive.simulate`: user body (compile cache) / the shipped heavy top",
+         "own_warm_vs_shipped", ob.get("warm_ratio")),
     ]
     rows += peer_rows(t.get("peers") or {})
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]

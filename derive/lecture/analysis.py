@@ -362,7 +362,8 @@ def _routh():
 
 
 def analyze(scene) -> Analysis:
-    """Analyse a scene (path, dict or Scene).
+    """Analyse a scene (path, dict or Scene). A scene with terms written by the user
+    (``[[potential]]``, ``[[torque]]``) gets :func:`derive.lecture.own_body.analyze` instead.
 
     Raises
     ------
@@ -376,6 +377,12 @@ def analyze(scene) -> Analysis:
         verdict gone wrong in silence.
     """
     sc = load_scene(scene)
+    if sc.terms:
+        # A body with terms written by the user: its own analysis (integrals by symmetry,
+        # rest equilibria at the critical points of V).
+        from derive.lecture import own_body
+
+        return own_body.analyze(sc)
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
     proofs = integrable.proofs(cls)

@@ -32,6 +32,7 @@ full with just the digits that tell neighbouring ticks apart.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -290,7 +291,34 @@ def _zero_aligned(left: list, right: np.ndarray, margins=(1.1, 1.1)):
     return tuple((-below * size * m, above * size * m) for (_, _, size), m in zip(spans, margins))
 
 
+def _user_symmetries(res) -> dict | None:
+    """For a scene with terms written by the user, what their symmetry conserves
+    (``derive.symbolic.terms.symmetries``: checked symbolically, so SymPy is imported here, for
+    such a scene only); None for any other scene."""
+    sc = res.scene
+    if sc is None or not getattr(sc, "terms", ()):
+        return None
+    labels = {t.effect: f"{t.kind} {t.name!r}" for t in sc.terms}
+    return _symmetries(sc.effects, sc.symmetric, tuple(sorted(labels.items())))
+
+
+@functools.lru_cache(maxsize=32)
+def _symmetries(effect_names, symmetric, labels) -> dict:
+    from derive.symbolic.terms import symmetries
+
+    return symmetries(effect_names, symmetric, dict(labels))
+
+
 def _panel_energy_error(ax, res):
+    found = _user_symmetries(res)
+    if found is not None and not found["energy"]:
+        # A user's torque does work: E(t) is physics, not an error to plot against E(0).
+        ax.plot(res.t, np.asarray(res.energy, dtype=float), lw=1)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("E = T + V [J]")
+        ax.set_title(f"energy (not conserved: {found['why']['energy']})", fontsize=10)
+        _plain(ax, "x")
+        return
     rel, how, lin = _deviation(np.asarray(res.energy, dtype=float))
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E − E(0)| " + how.format("E"), lin)
@@ -330,6 +358,10 @@ def _conserved(res) -> list[tuple[str, np.ndarray]]:
     (not for a centre of mass off axis 3: the Kovalevskaya top); the integrable case's integral."""
     from derive.symbolic import effects
 
+    found = _user_symmetries(res)
+    if found is not None:  # a body with user terms: what their symmetry leaves, and only that
+        return [(name, np.asarray(getattr(res, key), dtype=float))
+                for name, key in (("p_α", "p_alpha"), ("p_γ", "p_gamma")) if found[key]]
     out = [("p_α", np.asarray(res.p_alpha, dtype=float))]
     sc = res.scene
     axisymmetric = sc is None or all(e.axisymmetric for e in effects.lookup(sc.effects))
@@ -344,6 +376,17 @@ def _conserved(res) -> list[tuple[str, np.ndarray]]:
 
 
 def _panel_momenta(ax, res):
+    if not _conserved(res):  # a body with user terms that conserve neither momentum
+        why = _user_symmetries(res)["why"]
+        for name, key in (("p_α", "p_alpha"), ("p_γ", "p_gamma")):
+            ax.plot(res.t, np.asarray(getattr(res, key), dtype=float), lw=1, label=name)
+        ax.set_xlabel("t [s]")
+        ax.set_ylabel("kg m²/s")
+        ax.set_title(f"p_α, p_γ (not conserved: {why['p_alpha']};\n{why['p_gamma']})",
+                     fontsize=10)
+        _plain(ax, "x")
+        _legend_outside(ax)
+        return
     devs, lins, names = [], [], []
     for sym, values in _conserved(res):
         rel, how, lin = _deviation(values)

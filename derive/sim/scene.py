@@ -65,6 +65,8 @@ import numpy as np
 
 from derive.symbolic import effects
 from derive.symbolic import formulations
+from derive.symbolic import terms as user_terms
+from derive.symbolic.expressions import ExpressionError, parse as parse_expression
 from derive.methods import registry as solvers
 from derive.errors import SceneError
 from derive.sim import examples
@@ -158,10 +160,11 @@ def _vanishes(values: "TableValues") -> bool:
     return effect.vanishes(effect.values(values))
 
 
-def _acting(tables: dict) -> tuple[str, ...]:
-    """The effects of ``tables`` that act on the body (vanishing ones left out), in registry
-    order."""
-    return _in_registry_order(tuple(t.effect for t in tables.values() if not _vanishes(t)))
+def _acting(tables: dict, terms: tuple = ()) -> tuple[str, ...]:
+    """The effects of ``tables`` that act on the body (vanishing ones left out) and those of the
+    user's ``terms``, in registry order."""
+    return _in_registry_order(tuple(t.effect for t in tables.values() if not _vanishes(t))
+                              + tuple(t.effect for t in terms))
 
 
 _TOP_KEYS = ("title",)
@@ -282,6 +285,9 @@ class Scene:
     initial: Initial
     simulate: Simulate
     source: str = field(default="<dict>", compare=False)
+    #: The user's terms (``[[potential]]``, ``[[torque]]``: :class:`derive.symbolic.terms.Term`),
+    #: potentials first, each kind in the file's order.
+    terms: tuple = ()
 
     def __getattr__(self, name):
         # An effect table's values (scene.gravity, scene.damping, …), or None when absent.
@@ -298,14 +304,15 @@ class Scene:
         cached = self.__dict__.get("_effects")
         if cached is not None and cached[0] == effects.VERSION[0]:
             return cached[1]
-        names = _acting(self.tables)
+        names = _acting(self.tables, self.terms)
         object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
         return names
 
     @property
     def named_effects(self) -> tuple[str, ...]:
         """Every effect the scene's tables select, acting or not, in registry order."""
-        return _in_registry_order(tuple(t.effect for t in self.tables.values()))
+        return _in_registry_order(tuple(t.effect for t in self.tables.values())
+                                  + tuple(t.effect for t in self.terms))
 
     def param_values(self) -> dict[str, float]:
         """Every model parameter the scene fixes: the moments and each effect's parameters."""
@@ -313,6 +320,8 @@ class Scene:
         values = {"I1": b.I1, "I2": b.I2, "I3": b.I3}
         for t in self.tables.values():
             values.update(effects.REGISTRY[t.effect].values(t))
+        for term in self.terms:
+            values.update({term.model_param(p): v for p, v in term.params})
         return values
 
     @property
@@ -340,6 +349,10 @@ class Scene:
         data = {"body": dataclasses.asdict(self.body)}
         for name, values in self.tables.items():
             data[name] = values.given()
+        for kind in user_terms.KINDS:
+            given = [t.given() for t in self.terms if t.kind == kind]
+            if given:
+                data[kind] = given
         data.update(initial=initial, simulate=simulate)
         if self.title is not None:
             data["title"] = self.title
@@ -685,7 +698,7 @@ class _Validator:
         view = _registry_view()
         key_sets = view.key_sets
         for key, value in data.items():
-            if key in _TOP_KEYS:
+            if key in _TOP_KEYS or key in user_terms.KINDS:
                 continue
             if key not in key_sets:
                 if isinstance(value, Mapping):
@@ -707,6 +720,7 @@ class _Validator:
             if name in data:
                 tables[name] = self.effect_table(self.table(data[name], name, key_sets[name]),
                                                  table, readers)
+        terms = self.terms(data)
         if "initial" not in data:
             self.fail("initial", "missing required table")
         initial = self.initial(self.table(data["initial"], "initial", key_sets["initial"]))
@@ -727,8 +741,8 @@ class _Validator:
 
         # Scene.effects is known already: its memo is set (what the property would compute).
         scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
-                     simulate=simulate, source=self.source,
-                     _effects=(effects.VERSION[0], _acting(tables)))
+                     simulate=simulate, source=self.source, terms=terms,
+                     _effects=(effects.VERSION[0], _acting(tables, terms)))
         self.formulation_fits(scene)
         return scene
 
@@ -775,6 +789,104 @@ class _Validator:
             given.add(next((k for k in group if values.get(k) is not None), group[0]))
         out.__dict__["_given"] = given
         return out
+
+    def terms(self, data: Mapping) -> tuple:
+        """The user's ``[[potential]]`` and ``[[torque]]`` terms (:mod:`derive.symbolic.terms`),
+        each registered as an effect keyed by its content. Keys are reported as
+        ``potential.<name>.V``, ``torque.<name>.tau.<i>``, ``potential.<name>.params.<p>``
+        (``potential[<i>]`` before a name is known)."""
+        out = []
+        seen_content: dict = {}
+        for kind in user_terms.KINDS:
+            if kind not in data:
+                continue
+            entries = data[kind]
+            if isinstance(entries, Mapping):
+                self.fail(kind, f"must be an array of tables [[{kind}]] (one per term), "
+                                f"got a single table [{kind}]")
+            if not isinstance(entries, (list, tuple)):
+                self.fail(kind, f"must be an array of tables [[{kind}]], got {_show(entries)}")
+            if len(entries) > user_terms.MAX_TERMS:
+                self.fail(kind, f"at most {user_terms.MAX_TERMS} terms, got {len(entries)}")
+            names = set()
+            for i, entry in enumerate(entries):
+                term = self.term(kind, i, entry, names)
+                content = term.content
+                k = seen_content.get(content, 0)
+                seen_content[content] = k + 1
+                if k:
+                    term = dataclasses.replace(term, occurrence=k)
+                try:
+                    user_terms.register(term)
+                except ExpressionError as exc:  # pragma: no cover - parse() checked it already
+                    self.fail(f"{kind}.{term.name}", str(exc))
+                out.append(term)
+        return tuple(out)
+
+    def term(self, kind: str, i: int, t, names: set):
+        """One user term: its table's keys, name, expressions (whitelisted) and params."""
+        where = f"{kind}[{i}]"
+        if not isinstance(t, Mapping):
+            self.fail(where, f"must be a table (name = ..., {'V' if kind == 'potential' else 'tau'}"
+                             f" = ..., params = {{...}}), got {_show(t)}")
+        keys = ("name", "V", "params") if kind == "potential" else ("name", "frame", "tau", "params")
+        name = t.get("name")
+        if "name" not in t:
+            self.fail(f"{where}.name", "missing required key (letters, digits and _)")
+        if not isinstance(name, str) or not user_terms.NAME_PATTERN.fullmatch(name):
+            self.fail(f"{where}.name", f"must be a name of letters, digits and _ (starting with a "
+                                       f"letter, at most 32 characters), got {_show(name)}")
+        if name in names:
+            self.fail(f"{kind}.{name}", f"name given twice: each [[{kind}]] needs its own name")
+        names.add(name)
+        where = f"{kind}.{name}"
+        for key in t:
+            if key not in keys:
+                self.fail(f"{where}.{key}", "unknown key (" + _unknown(
+                    key, keys, "", f"the keys of [[{kind}]]: {', '.join(keys)}") + ")")
+        raw_params = t.get("params", {})
+        if not isinstance(raw_params, Mapping):
+            self.fail(f"{where}.params", f"must be a table {{ name = number, ... }}, "
+                                         f"got {_show(raw_params)}")
+        if len(raw_params) > user_terms.MAX_PARAMS:
+            self.fail(f"{where}.params", f"at most {user_terms.MAX_PARAMS} params, "
+                                         f"got {len(raw_params)}")
+        params = []
+        for p, v in raw_params.items():
+            if not isinstance(p, str) or not user_terms.NAME_PATTERN.fullmatch(p):
+                self.fail(f"{where}.params", f"{_show(p)} is not a param name (letters, digits "
+                                             f"and _, starting with a letter)")
+            if p in user_terms.RESERVED:
+                self.fail(f"{where}.params.{p}", f"{p!r} is a name expressions use already "
+                                                 f"(R11 ... R33, alpha, beta, gamma, omega1..3, "
+                                                 f"t, pi, the functions); choose another")
+            x = _real(v)
+            if x is None:
+                self.fail(f"{where}.params.{p}", f"must be a finite number, got {_show(v)}")
+            params.append((p, x))
+        allowed = user_terms.names_for(kind, [p for p, _ in params])
+        if kind == "potential":
+            if "V" not in t:
+                self.fail(f"{where}.V", "missing required key (the potential, J, an expression)")
+            exprs = ((f"{where}.V", t["V"]),)
+            frame = ""
+        else:
+            frame = t.get("frame", "body")
+            if frame not in user_terms.FRAMES:
+                self.fail(f"{where}.frame", f"must be \"body\" or \"inertial\", got {_show(frame)}")
+            if "tau" not in t:
+                self.fail(f"{where}.tau", "missing required key (three expressions, N m)")
+            tau = t["tau"]
+            if not isinstance(tau, (list, tuple)) or len(tau) != 3:
+                self.fail(f"{where}.tau", f"must be a list of 3 expressions (strings), "
+                                          f"got {_show(tau)}")
+            exprs = tuple((f"{where}.tau.{k}", e) for k, e in enumerate(tau))
+        for key, text in exprs:
+            try:
+                parse_expression(text, allowed)
+            except ExpressionError as exc:
+                self.fail(key, str(exc))
+        return user_terms.Term(kind, name, tuple(e for _, e in exprs), frame, tuple(params))
 
     def vector3(self, t, table: str, key: effects.Key):
         if key.name not in t:

@@ -8,8 +8,10 @@ fails when they are stale.
 from __future__ import annotations
 
 from derive.symbolic import effects
+from derive.symbolic import expressions
 from derive.symbolic import formulations
 from derive.symbolic import integrable
+from derive.symbolic import terms
 from derive.sim import scene
 from derive.methods import registry as solvers
 
@@ -65,6 +67,7 @@ def scene_format() -> str:
                 f"`{e.name}` — {e.description}" for e in users) + ".", ""]
         params = "; ".join(f"`{e.name}`: " + ", ".join(e.param_names) for e in users)
         out += [f"Model parameters it adds ({params}).", ""]
+    out += _terms_section()
     out += [
         "## [initial] (required)", "",
         "The orientation, then **either** the Euler-angle rates **or** the body angular velocity.", "",
@@ -104,6 +107,51 @@ def scene_format() -> str:
     out += [_row(f"`{name}`", text) for name, text in scene.METHODS.items()]
     out += ["", f"Fixed-step methods (take `h`): {', '.join(f'`{m}`' for m in solvers.fixed_step_methods())}.", ""]
     return "\n".join(out)
+
+
+def _terms_section() -> list[str]:
+    """The user's terms, ``[[potential]]`` and ``[[torque]]``, from derive.symbolic.terms and
+    derive.symbolic.expressions."""
+    funcs = " ".join(f"`{f}`" for f in expressions.FUNCTIONS)
+    return [
+        "## [[potential]] and [[torque]] (optional, any number: terms written by the user)", "",
+        "Each entry is an effect of its own (a scene pays only for the terms it names), derived, "
+        "generated and compiled once per content (the expressions, the frame and the params' "
+        "names; not the term's name or the params' values) and cached by a hash of it. See "
+        "`docs/own-body.md`.", "",
+        _row("table", "key", "meaning", "default"), _row(*["---"] * 4),
+        _row("[[potential]]", "name", "letters, digits and _, starting with a letter, at most 32 "
+             "characters; unique among the scene's potentials", "required"),
+        _row("[[potential]]", "V", "the potential energy, J: an expression (below)", "required"),
+        _row("[[potential]]", "params", "{ name = number, … }: the names V uses besides the "
+             "built-in ones", "{}"),
+        _row("[[torque]]", "name", "as for a potential; unique among the scene's torques",
+             "required"),
+        _row("[[torque]]", "frame", "\"body\" or \"inertial\": the frame of tau's components",
+             "\"body\""),
+        _row("[[torque]]", "tau", "three expressions, N m", "required"),
+        _row("[[torque]]", "params", "as for a potential", "{}"),
+        "",
+        "Names an expression may use: " + " ".join(f"`{n}`" for n in terms.MATRIX_NAMES)
+        + " (R, body → inertial, v⁰ = R ṽ: `R31 R32 R33` are the inertial vertical in body "
+        "axes), `alpha beta gamma` (z-y-z; singular at the poles, prefer R's entries), the "
+        "term's params and `pi`; in `tau` also `omega1 omega2 omega3` (body, rad/s) and `t` (s). "
+        f"Functions: {funcs}. Operators: `+ - * / **`, unary `-`, parentheses. Numbers are "
+        "decimal and finite as doubles.", "",
+        "Refused (exit 2, one line naming the key and what is at fault, e.g. "
+        "`error: top.toml: potential.magnet.V: unknown name 'mu2'`): undeclared names, attribute "
+        "access, subscripts, lambdas, comparisons, calls of other names, keyword arguments, "
+        f"non-ASCII text, text over {expressions.MAX_LENGTH} characters, nesting deeper than "
+        f"{expressions.MAX_DEPTH}, constant exponents whose product along a path exceeds "
+        f"{expressions.MAX_DEGREE} (`9**9**9`, `x**100`), constant parts that are no finite "
+        "real number (`1/0`, `x/(2-2)`, `sqrt(-1)`, `log(0)`). A param may not take a built-in "
+        "name. "
+        f"At most {terms.MAX_TERMS} terms of each kind and {terms.MAX_PARAMS} params per term. "
+        "Keys in messages: `potential.<name>.V`, `torque.<name>.tau.<0|1|2>`, "
+        "`<kind>.<name>.params.<param>` (`potential[<i>]` before a name is read).", "",
+        "A sweep varies a param as `potential.<name>.<param>` or `torque.<name>.<param>`. Model "
+        "parameters each term adds: `<kind>_<hash>_<param>`, one per param.", "",
+    ]
 
 
 #: What each output array means (the name and width come from `formulations.OUTPUTS`).

@@ -55,7 +55,7 @@ import numpy as np
 from derive.sweeps import measures as ms
 from derive.errors import EngineError, SceneError
 from derive.sim import examples
-from derive.sweeps.keys import unit_of, variable_keys as _variable_keys  # noqa: F401 - unit_of: its old home
+from derive.sweeps.keys import term_key, unit_of, variable_keys as _variable_keys  # noqa: F401 - unit_of: its old home
 
 #: Largest number of trajectories in one task (one C call).
 CHUNK = 10_000
@@ -95,6 +95,7 @@ class Spec:
     damping: np.ndarray = field(repr=False, default=None)  # (N,) the damping coefficient c
     key: tuple = ()  # the model (formulation, symmetric, effects)
     method: str = ""
+    terms: tuple = ()  # the user's terms (derive.symbolic.terms.Term), registered in each worker
     files: tuple = ()  # the files read: the sweep file and the scene file it names
 
     @property
@@ -140,6 +141,12 @@ def _flatten(table: Mapping, prefix: str, leaf, source: str = "<sweep>", where: 
 
 
 def _set(data: dict, key: str, value) -> None:
+    term = term_key(key)
+    if term is not None:  # a user term's param: the entry of [[kind]] with that name
+        kind, name, param = term
+        entry = next(e for e in data[kind] if e.get("name") == name)
+        entry["params"] = {**entry.get("params", {}), param: value}
+        return
     table, name, index, _ = _variable_keys()[key]
     t = data.setdefault(table, {})
     if index is None:
@@ -284,6 +291,18 @@ def _points(source, data, raw, base):
 def _check_key(source, where, key, variable, raw):
     if key.startswith("simulate.") or key == "title":
         _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
+    term = term_key(key)
+    if term is not None:
+        kind, name, param = term
+        entries = raw.get(kind)
+        entry = next((e for e in entries if isinstance(e, Mapping) and e.get("name") == name),
+                     None) if isinstance(entries, list) else None
+        if entry is None:
+            _fail(source, where, f"the scene has no [[{kind}]] named {name!r}")
+        if not isinstance(entry.get("params"), Mapping) or param not in entry["params"]:
+            _fail(source, where, f"[[{kind}]] {name!r} has no param {param!r} (vary a param "
+                                 f"the scene gives a value)")
+        return
     if key not in variable:
         _fail(source, where, "not a scene key that takes a number (e.g. initial.beta, body.I3, "
                              "gravity.l, initial.omega.0)")
@@ -449,6 +468,14 @@ def _build(spec: Spec) -> None:
             values[name] = np.array([p[name] for p in per], dtype=float)[np.ravel(inverse)]
         acts[tv.effect] = np.array([not effect.vanishes(p) for p in per])[np.ravel(inverse)]
 
+    # the user's terms: each param a column (varied) or the scene's value
+    for term in base.terms:
+        for param, value in term.params:
+            key = f"{term.kind}.{term.name}.{param}"
+            values[term.model_param(param)] = cols[key] if key in cols else np.full(n, value)
+        acts[term.effect] = np.full(n, True)
+    spec.terms = base.terms
+
     # the representative scene: a valid point, asymmetric if any point is, and where it can be
     # one at which every effect of the model acts
     valid = np.setdiff1d(np.arange(n), np.fromiter(spec.invalid, int, len(spec.invalid)))
@@ -523,10 +550,16 @@ def _build(spec: Spec) -> None:
 # engines
 
 
-def run_chunk(key, method, inputs, ps, t, args, config, integral=None):
+def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=()):
     """One task: measured simulations of a block of points in one C call (the library is
-    compiled or loaded once per process). Returns (res, final outputs (N, NOBS), stats)."""
+    compiled or loaded once per process). Returns (res, final outputs (N, NOBS), stats).
+    ``terms``: the user's terms of the model, registered here first (a worker started afresh
+    knows only the built-in effects)."""
     from derive.runtime import catalogue
+    from derive.symbolic import terms as user_terms
+
+    for term in terms:
+        user_terms.register(term)
 
     desc = catalogue.describe(key)
     kernel = ms.MeasureKernel.load(desc, method)
@@ -1210,7 +1243,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
     def submit_args(idx):
         return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config,
-                None if integral is None else integral[idx])
+                None if integral is None else integral[idx], sp.terms)
 
     if workers is None and scheduler is None:
         tasks = _chunks(run, processes)

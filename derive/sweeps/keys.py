@@ -1,5 +1,7 @@
 """The dotted scene keys a sweep may vary (``initial.beta``, ``gravity.M``, ``initial.omega.1``, …)
-with their tables and units, from the effects registry."""
+with their tables and units, from the effects registry; and the params of the user's terms,
+``potential.<name>.<param>`` / ``torque.<name>.<param>`` (:func:`term_key`), which depend on
+the scene (their units are the user's business)."""
 from __future__ import annotations
 
 from derive.symbolic import effects
@@ -25,3 +27,14 @@ def unit_of(key: str) -> str:
     """The SI unit of a dotted scene key a sweep may vary ('' if it has none)."""
     found = variable_keys().get(key)
     return found[3] if found else ""
+
+
+def term_key(key: str):
+    """(kind, term name, param) of a user term's param key (``potential.magnet.mu``), else
+    None."""
+    from derive.symbolic.effects import USER_TABLES
+
+    parts = key.split(".")
+    if len(parts) == 3 and parts[0] in USER_TABLES and all(parts):
+        return tuple(parts)
+    return None

@@ -235,12 +235,18 @@ REGISTRY: dict[str, Effect] = {e.name: e for e in (
 )}
 
 
+#: The scene's arrays of tables whose entries are terms written by the user (``[[potential]]``,
+#: ``[[torque]]``; :mod:`derive.symbolic.terms`): each term is an effect of its own, registered
+#: by content when a scene names it, and these names are not tables of TABLES.
+USER_TABLES = ("potential", "torque")
+
+
 def register(effect: Effect, table: Table | None = None) -> None:
     """Add an effect (and, if new, its table). Tables and effects keep registration order, which
     fixes the order of a model's parameters."""
     if table is not None:
         TABLES[table.name] = table
-    if effect.table not in TABLES:
+    if effect.table not in TABLES and effect.table not in USER_TABLES:
         raise ValueError(f"effect {effect.name!r}: unknown table {effect.table!r}")
     REGISTRY[effect.name] = effect
     _changed()

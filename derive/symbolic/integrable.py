@@ -359,6 +359,16 @@ def classify(scene) -> Classification:
     (``classify_values``), except that a Goryachev–Chaplygin body whose initial state is off the
     level L·n = 0 (``on_area_level``) is "general": G is conserved only on that level, so this
     motion has no fourth integral (``body_case`` keeps "goryachev-chaplygin")."""
+    terms = getattr(scene, "terms", ())
+    if terms:
+        # A term written by the user is outside the classical cases' hypotheses (the analysis
+        # derives which integrals its symmetry leaves: derive.symbolic.terms.symmetries).
+        torques = [t.name for t in terms if t.kind == "torque"]
+        return Classification("general", "the scene has terms written by the user ("
+                              + ", ".join(f"{t.kind} {t.name!r}" for t in terms)
+                              + "): no classical integrable case is claimed"
+                              + (f"; the torque {torques[0]!r} does work" if torques else ""),
+                              dissipative=bool(torques))
     p = parameters(scene)
     damping = scene.damping.c if scene.damping is not None else 0.0
     c = classify_values(p["I1"], p["I2"], p["I3"], p["M"], p["g"], (p["cx"], p["cy"], p["cz"]),
