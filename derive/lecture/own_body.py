@@ -145,7 +145,7 @@ class OwnBodyAnalysis:
         out += ["", "**Case: general** — " + self.reason + ".", "",
                 "## Kinetic and potential energy, Lagrangian", "",
                 rf"$$ T = {sp.latex(T)} $$", "", rf"$$ V = {sp.latex(V.subs(show))} $$", "",
-                rf"$$ L = T - V $$", "",
+                r"$$ L = T - V $$", "",
                 "## Equations of motion", "",
                 "Euler–Poisson (L = I ω̃ about the pivot), the torques of the potentials by virtual "
                 "rotation, derived from the effects:", ""]
