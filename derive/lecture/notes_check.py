@@ -455,6 +455,7 @@ class Checker:
         self.ctx = _Context()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
+        self._last_fix = None       # the corrected value the last single-edit search found
 
     # -- names for LaTeX output
     @functools.cached_property
@@ -735,8 +736,14 @@ class Checker:
                           any("tau" in a for a in self.ctx.assumptions) else "unchecked",
                           "d𝐋/dt = 0: torque-free (τ = 0, stated in the text)")
                 continue
+            before = len(self.claims)
             self._one(line, piece, "approximation" if approx else "definition", None, m.value, parsed, k,
                       approx=approx, label=key, forms=forms, args=m0.args)
+            if key in self.ctx.defs and parsed.relations[k - 1] == "≡" and \
+                    any(c.verdict in ("typo", "fails") for c in self.claims[before:]):
+                # a flagged definition is not carried forward (one slip is reported once): the
+                # displays after it use its correction, or the derived quantity
+                self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 
@@ -756,6 +763,7 @@ class Checker:
             if ok:
                 self._add(line, piece, kind, "holds", why)
                 return
+        self._last_fix = None
         fix = self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
@@ -777,6 +785,7 @@ class Checker:
                     continue
                 ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
                 if ok:
+                    self._last_fix = cand
                     return self._render(parsed, k, cand), what
         # a swapped label
         if isinstance(label, sp.Symbol):
@@ -833,8 +842,12 @@ class Checker:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
+                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
                 return
         self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
+        found = [i for i in range(3) if lx.WD[i] in _free(raw)]
+        if len(found) == 1:   # … or, past correcting, the derived one for that component
+            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
 
     # -- steady precession
     def _steady_section(self) -> bool:
@@ -989,19 +1002,26 @@ class Checker:
             for line, piece, _, _ in group:
                 self._add(line, piece, "solution", "holds", why)
             return
+        # one edit of which member restores the group? When several can (a phase's sign flipped in
+        # one of a pair: either line may be the slip), each is named with its own correction.
+        fixes = {}
         for j, (line, piece, w, f) in enumerate(group):
             for cand, what in edits(f):
-                trial = {**sol, w: cand}
-                if holds(trial)[0]:
-                    for jj, (l2, p2, w2, _) in enumerate(group):
-                        if jj == j:
-                            self._add(l2, p2, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold",
-                                      f"{self.tex(w2)}(t) = {self.tex(cand)}")
-                        else:
-                            self._add(l2, p2, "solution", "holds", "with the corrected companion")
-                    return
-        for line, piece, _, _ in group:
-            self._add(line, piece, "solution", "fails", why)
+                if holds({**sol, w: cand})[0]:
+                    fixes[j] = (cand, what)
+                    break
+        if not fixes:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "fails", why)
+            return
+        either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
+        for j, (line, piece, w, _) in enumerate(group):
+            if j in fixes:
+                cand, what = fixes[j]
+                self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
+                          f"{self.tex(w)}(t) = {self.tex(cand)}")
+            else:
+                self._add(line, piece, "solution", "holds", "with the corrected companion")
 
 
 def _positive_multiple(a, b) -> bool:
