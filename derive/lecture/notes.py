@@ -116,6 +116,24 @@ def _last_word(text: str) -> str:
     return words[-1].lower() if words else ""
 
 
+_SENTENCE_END = re.compile(r"[.!?:;]\s|\n\s*\n|^#[^\n]*\n", re.M)
+
+
+def _opens_with_trigger(body: str, pos: int) -> bool:
+    """Is the math at ``pos`` the first math of a sentence that opens with a trigger word?
+
+    "For a symmetric top, $I_1 = I_2$, …" and "With no torque, $\\tau = 0$, …" state assumptions
+    although the word just before the math is no trigger."""
+    start = max(0, pos - 400)
+    for m in _SENTENCE_END.finditer(body, max(0, pos - 400), pos):
+        start = m.end()
+    prefix = body[start:pos]
+    if "$" in prefix or "\\]" in prefix:
+        return False
+    words = re.findall(r"[A-Za-z]+", prefix)
+    return bool(words) and words[0].lower() in TRIGGERS
+
+
 def _signs(prose: str) -> str | None:
     p = prose.lower()
     if "opposite sign" in p:
@@ -177,7 +195,9 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             latex = (m.group("d") if m.group("d") is not None else m.group("b")).strip()
             word = _last_word(near) if near and not near.endswith((".", ";")) else ""
             inequality = re.search(r"\\ge|\\le|(?<!\\)[<>]", latex)
-            if word in TRIGGERS and _RELATION.search(latex) and not inequality:
+            # X ≡ … introduces a symbol (a definition, checked), never an assumption
+            defines = "\\equiv" in latex
+            if word in TRIGGERS and _RELATION.search(latex) and not inequality and not defines:
                 events.append((m.start(), Item("assumption", line, latex=latex, lead=near, display=True)))
             else:
                 events.append((m.start(), Item("display", line, latex=latex, lead=near, display=True)))
@@ -194,7 +214,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         wrapped = latex.startswith("(") and latex.endswith(")")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
-        if word in TRIGGERS or wrapped or after_assumption:
+        if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()):
             events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
         else:
             events.append((m.start(), Item("inline", line, latex=latex, lead=near)))

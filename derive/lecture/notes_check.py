@@ -88,6 +88,12 @@ class Derivation:
         from derive.symbolic.stability import SleepingTop
         return SleepingTop(self.reduction)
 
+    @functools.cached_property
+    def steady_force(self):
+        """∂L/∂β at β̇ = 0: the β equation of motion of a steady precession (β̈ = 0 too)."""
+        rot = self.rot
+        return sp.expand(sp.diff(self.top.lagrangian, rot.beta).xreplace({rot.beta_d: 0}))
+
     def euler(self, subs: dict) -> list:
         """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
         from derive.symbolic.lagrangian import I1, I2, I3
@@ -449,6 +455,7 @@ class Checker:
         self.ctx = _Context()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
+        self._last_fix = None       # the corrected value the last single-edit search found
 
     # -- names for LaTeX output
     @functools.cached_property
@@ -591,6 +598,9 @@ class Checker:
         self._flush()
         if rels & {"≥", "≤", ">", "<"}:
             self._inequality(line, piece, parsed)
+        elif self._steady_section() and not isinstance(m0.value, lx.Quantity) and len(parsed.members) == 2 \
+                and _free(m0.value) | _free(parsed.members[1].value) & {self.d.rot.alpha_d}:
+            self._steady(line, piece, parsed)
         elif isinstance(m0.value, lx.Quantity):
             self._definition(line, piece, parsed)
         elif any(_free(m.value) & set(lx.WD) for m in parsed.members):
@@ -726,8 +736,14 @@ class Checker:
                           any("tau" in a for a in self.ctx.assumptions) else "unchecked",
                           "d𝐋/dt = 0: torque-free (τ = 0, stated in the text)")
                 continue
+            before = len(self.claims)
             self._one(line, piece, "approximation" if approx else "definition", None, m.value, parsed, k,
                       approx=approx, label=key, forms=forms, args=m0.args)
+            if key in self.ctx.defs and parsed.relations[k - 1] == "≡" and \
+                    any(c.verdict in ("typo", "fails") for c in self.claims[before:]):
+                # a flagged definition is not carried forward (one slip is reported once): the
+                # displays after it use its correction, or the derived quantity
+                self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 
@@ -747,6 +763,7 @@ class Checker:
             if ok:
                 self._add(line, piece, kind, "holds", why)
                 return
+        self._last_fix = None
         fix = self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
@@ -768,6 +785,7 @@ class Checker:
                     continue
                 ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
                 if ok:
+                    self._last_fix = cand
                     return self._render(parsed, k, cand), what
         # a swapped label
         if isinstance(label, sp.Symbol):
@@ -824,8 +842,45 @@ class Checker:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
+                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
                 return
         self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
+        found = [i for i in range(3) if lx.WD[i] in _free(raw)]
+        if len(found) == 1:   # … or, past correcting, the derived one for that component
+            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
+
+    # -- steady precession
+    def _steady_section(self) -> bool:
+        """The text has set β̇ = 0 (a steady precession at a fixed tilt)."""
+        return self.ctx.subs.get(self.d.rot.beta_d, None) == 0
+
+    def _steady(self, line, piece, parsed):
+        """A condition for steady precession: with β̇ = β̈ = 0 the β equation of motion reduces to
+        ∂L/∂β = 0; the claim's lhs − rhs (rates and momenta in terms of the angles) must be a
+        non-zero multiple of it by a factor free of the rates."""
+        raw = parsed.members[0].value - parsed.members[1].value
+        ok, why = self._steady_check(raw)
+        if ok:
+            self._add(line, piece, "steady precession", "holds", why)
+            return
+        for cand, what in edits(raw):
+            if self._steady_check(cand)[0]:
+                self._add(line, piece, "steady precession", "typo",
+                          f"as written: {why}; one edit ({what}) makes it hold", self.tex(cand) + " = 0")
+                return
+        self._add(line, piece, "steady precession", "fails", f"as written: {why}")
+
+    def _steady_check(self, raw):
+        rot = self.d.rot
+        (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
+        r = sp.expand(r)
+        if r == 0:
+            return False, "the condition is empty (0 = 0)"
+        force = self.d.steady_force
+        q = sp.cancel(sp.together(r / force))
+        if q != 0 and not _free(q) & (set(rot.RATES) | {rot.alpha, rot.gamma}):
+            return True, f"a multiple ({self.tex(q)}) of the β equation at β̇ = β̈ = 0: ∂L/∂β = 0"
+        return False, "not a multiple of the β equation at β̇ = β̈ = 0 (derived: ∂L/∂β = 0)"
 
     def _render_eq(self, residual, parsed):
         return self.tex(residual) + " = 0"
@@ -878,18 +933,33 @@ class Checker:
         if ok:
             self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
             return
-        flipped = sp.Matrix([-claim, int(strict)])
-        if _zero(flipped, sp.Matrix([d, int(d_strict)]), piece)[0]:
+        k2 = self.d.sleeping.coefficient(2)
+        # the condition squared or scaled: k₂ ≥ 0 itself (p_γ² ≥ 4 M g l I₁), up to a positive factor
+        if not strict and _positive_multiple(claim, k2):
+            self._add(line, piece, "inequality", "holds",
+                      "a positive multiple of the sleeping top's k₂ ≥ 0 (the β² coefficient of V_eff)")
+            return
+
+        def derived(c) -> bool:
+            return (not strict and _positive_multiple(c, k2)) or \
+                _zero(sp.Matrix([c, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]
+
+        if derived(-claim):
             flip = r"\le" if rel in ("≥", ">") else r"\ge"
             corr = f"{self.tex(parsed.members[0].value)} {flip} {self.tex(parsed.members[1].value)}"
             self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
             return
-        for cand, what in edits(parsed.members[1].value):
-            c2 = (a - self._resolve(cand)) if rel in ("≥", ">") else (self._resolve(cand) - a)
-            if _quick_equal(c2, d) and _zero(sp.Matrix([c2, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]:
-                self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
-                          self._render(parsed, 1, cand))
-                return
+        for side in (1, 0):
+            for cand, what in edits(parsed.members[side].value):
+                c2 = self._resolve(cand) - b if side == 0 else a - self._resolve(cand)
+                c2 = c2 if rel in ("≥", ">") else -c2
+                if (_quick_equal(c2, d) or _positive_multiple(c2, k2)) and derived(c2):
+                    fixed = [m.value for m in parsed.members]
+                    fixed[side] = cand
+                    rel_tex = {"≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[rel]
+                    self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
+                              f"{self.tex(fixed[0])} {rel_tex} {self.tex(fixed[1])}")
+                    return
         self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
 
     def _flush(self):
@@ -932,19 +1002,39 @@ class Checker:
             for line, piece, _, _ in group:
                 self._add(line, piece, "solution", "holds", why)
             return
+        # one edit of which member restores the group? When several can (a phase's sign flipped in
+        # one of a pair: either line may be the slip), each is named with its own correction.
+        fixes = {}
         for j, (line, piece, w, f) in enumerate(group):
             for cand, what in edits(f):
-                trial = {**sol, w: cand}
-                if holds(trial)[0]:
-                    for jj, (l2, p2, w2, _) in enumerate(group):
-                        if jj == j:
-                            self._add(l2, p2, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold",
-                                      f"{self.tex(w2)}(t) = {self.tex(cand)}")
-                        else:
-                            self._add(l2, p2, "solution", "holds", "with the corrected companion")
-                    return
-        for line, piece, _, _ in group:
-            self._add(line, piece, "solution", "fails", why)
+                if holds({**sol, w: cand})[0]:
+                    fixes[j] = (cand, what)
+                    break
+        if not fixes:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "fails", why)
+            return
+        either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
+        for j, (line, piece, w, _) in enumerate(group):
+            if j in fixes:
+                cand, what = fixes[j]
+                self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
+                          f"{self.tex(w)}(t) = {self.tex(cand)}")
+            else:
+                self._add(line, piece, "solution", "holds", "with the corrected companion")
+
+
+def _positive_multiple(a, b) -> bool:
+    """Is a = q b with q > 0 a function of the positive parameters only (I₁, I₃, M, g, l)?"""
+    from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
+    if sp.expand(a) == 0 or sp.expand(b) == 0:
+        return False
+    q = sp.cancel(sp.together(a / b))
+    params = (I1, I2, I3, Mass, g, l)
+    if not _free(q) <= set(params):
+        return False
+    pos = {s: sp.Symbol(s.name, positive=True) for s in params}
+    return bool(q.xreplace(pos).is_positive)
 
 
 def _order(value, x) -> int:
