@@ -247,3 +247,15 @@ def test_goldstein_planted_errors_sample_caught():
         caught += ok
         assert set(others) <= _solution_groups(ZXZ).get(line, set()), (line, edited, others)
     assert caught == len(sample), caught
+
+
+# ---- the documentation's example ----------------------------------------------------------------
+def test_docs_example_is_what_verify_says():
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "verify.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"```\n(.*?)```", doc, re.S)
+    notes = next(b for b in blocks if b.startswith("---\nconvention: z-y-z"))
+    output = next(b for b in blocks if b.startswith("top.md:"))
+    claims = nc.check_text(notes, path="top.md")
+    shown = [(int(m.group(1)), m.group(2)) for m in re.finditer(r"^top\.md:(\d+): (\w+)", output, re.M)]
+    assert shown == [(c.line, c.verdict) for c in claims]
+    assert nc.render(claims, "text", path="top.md").split("\n")[-2] == output.strip().split("\n")[-1]
