@@ -172,13 +172,16 @@ def _check_plants(plants):
     return caught / len(plants), spilled
 
 
-def _sample(plants, per_kind=2, seed=19):
+KINDS = ("sign", "index", "sin/cos", "factor 2", "power", "wrong moment")
+
+
+def _sample(plants, per_kind=2, seed=19, kinds=KINDS):
     """A deterministic sample: ``per_kind`` plants of each kind, the series display left out (its
     single-edit search runs the series of each candidate: seconds; it is in the slow set)."""
     import random
     rng = random.Random(seed)
     out = []
-    for kind in ("sign", "index", "sin/cos", "factor 2", "power", "wrong moment"):
+    for kind in kinds:
         pool = [p for p in plants if p[1] == kind and "\\approx" not in p[2]]
         out += rng.sample(pool, min(per_kind, len(pool)))
     return out
@@ -186,7 +189,7 @@ def _sample(plants, per_kind=2, seed=19):
 
 def test_planted_errors_sample_caught():
     plants = list(all_plants())
-    assert len(plants) >= 200 and {p[1] for p in plants} == {"sign", "index", "sin/cos", "factor 2", "power", "wrong moment"}
+    assert len(plants) >= 200 and {p[1] for p in plants} == set(KINDS)
     sample = _sample(plants)
     rate, spilled = _check_plants(sample)
     assert rate >= 0.95, rate
@@ -198,3 +201,61 @@ def test_planted_errors_all_caught():
     rate, spilled = _check_plants(list(all_plants()))
     assert rate >= 0.95, rate
     assert spilled == []
+
+
+# ---- another convention -------------------------------------------------------------------------
+ZXZ = NOTES / "rigid-body-zxz.md"
+
+
+def test_goldstein_notes_hold_under_their_front_matter():
+    from derive.lecture import notes as nt
+    notes = nt.read_notes(ZXZ)
+    assert (notes.convention, notes.angles) == ("z-x-z", ("phi", "theta", "psi"))
+    claims = nc.check_notes(ZXZ)
+    assert len([c for c in claims if c.verdict != "unchecked"]) >= 20
+    assert [c for c in claims if c.verdict in FLAGGED] == []
+    displays = {i + 1 for i, line in enumerate(ZXZ.read_text(encoding="utf-8").split("\n")) if line.startswith("$$")}
+    assert displays <= {c.line for c in claims if c.verdict == "holds"}
+
+
+def _flagged_omegas(claims):
+    return {c.latex.split("=")[0].strip() for c in claims if c.verdict in FLAGGED}
+
+
+def test_goldstein_notes_fail_in_the_lecture_convention(tmp_path):
+    # z-y-z turns about the new y axis, z-x-z about the line of nodes (the new x): the body
+    # components ω₁, ω₂ and the frame vectors differ; T, the momenta and Euler's equations do not
+    overridden = nc.check_notes(ZXZ, convention="z-y-z")
+    text = ZXZ.read_text(encoding="utf-8")
+    bare = tmp_path / "no-front-matter.md"
+    bare.write_text(text[text.index("---", 3) + 3:].lstrip("\n"), encoding="utf-8")
+    stripped = nc.check_notes(bare)
+    for claims in (overridden, stripped):
+        assert nc.exit_status(claims) == 1
+        flagged = _flagged_omegas(claims)
+        assert {r"\omega_1", r"\omega_2", r"\boldsymbol{\omega}"} <= flagged, flagged
+        assert not any(c.verdict in FLAGGED for c in claims if c.kind in ("equation of motion", "solution")), flagged
+
+
+def test_goldstein_planted_errors_sample_caught():
+    plants = list(all_plants(ZXZ))
+    # the edits that touch what the convention changes: the angles' rates, sines and cosines
+    sample = _sample(plants, per_kind=1, seed=26, kinds=("sign", "index", "sin/cos"))
+    caught = 0
+    for line, kind, latex, edited, text in sample:
+        ok, others = run_plant(line, text)
+        caught += ok
+        assert set(others) <= _solution_groups(ZXZ).get(line, set()), (line, edited, others)
+    assert caught == len(sample), caught
+
+
+# ---- the documentation's example ----------------------------------------------------------------
+def test_docs_example_is_what_verify_says():
+    doc = (Path(__file__).resolve().parents[1] / "docs" / "verify.md").read_text(encoding="utf-8")
+    blocks = re.findall(r"```\n(.*?)```", doc, re.S)
+    notes = next(b for b in blocks if b.startswith("---\nconvention: z-y-z"))
+    output = next(b for b in blocks if b.startswith("top.md:"))
+    claims = nc.check_text(notes, path="top.md")
+    shown = [(int(m.group(1)), m.group(2)) for m in re.finditer(r"^top\.md:(\d+): (\w+)", output, re.M)]
+    assert shown == [(c.line, c.verdict) for c in claims]
+    assert nc.render(claims, "text", path="top.md").split("\n")[-2] == output.strip().split("\n")[-1]

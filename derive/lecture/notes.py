@@ -10,7 +10,8 @@ What is read:
   which each starts; ``aligned``/``split``/``array`` environments inside them are left for the
   checker to cut into rows. Inline ``$…$`` math is read too: a relation there is a claim (kind
   decided later) or, after a word such as *if*, *for*, *suppose*, *assume*, *with*, *when* or in
-  a heading, an **assumption**.
+  a heading, or as the first math of a sentence that opens with such a word ("For a symmetric
+  top, $I_1 = I_2$, …"), an **assumption**. A display with ``\\equiv`` defines, never assumes.
 * **Context**: headings (Markdown ``#`` lines) cut the notes into sections; an assumption ("If
   $I_1 = I_2$", "For $\\tau = 0$", "Suppose $p_\\alpha = p_\\gamma$ and $\\beta \\approx 0$", a
   display right after "If"/"Suppose") applies to the displays that follow it until the next

@@ -21,7 +21,11 @@ Kinds, decided from the vocabulary (`derive.lecture.latex.Vocabulary`):
   latest earlier equations of motion for those components, for each sign case the text states.
 * ``approximation`` — ``≈`` with a small quantity stated in the text (β ≈ 0): claim − derived
   has no terms in its series up to the claim's own order.
-* ``inequality`` — compared with the derived stability condition (as lhs − rhs ≥ 0).
+* ``inequality`` — compared with the derived stability condition (as lhs − rhs ≥ 0), or with
+  its k₂ ≥ 0 up to a positive factor (p_γ² ≥ 4 M g l I₁).
+* ``steady precession`` — with β̇ = 0 stated in the text, a relation of α̇, β and p_γ (or γ̇,
+  ω̃₃): lhs − rhs must be a multiple, by a factor free of the rates, of the β equation at
+  β̇ = β̈ = 0, i.e. of ∂L/∂β = 0 (M g l = α̇ (p_γ − I₁ α̇ cos β) in z-y-z).
 * ``lagrangian`` — L(β, β̇) = …: besides the identity, used as a Lagrangian in β its
   Euler–Lagrange equation must give the derived β̈.
 
