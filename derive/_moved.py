@@ -58,6 +58,20 @@ class _Alias(importlib.abc.MetaPathFinder, importlib.abc.Loader):
         pass  # the new module is already executed
 
 
+def forward(package: str, module: str):
+    """A module ``__getattr__`` for ``package``, which was once the single module ``module`` now
+    holds: its old names resolve, loaded on first use. A submodule's name or a dunder is not
+    forwarded (the import system asks for those, and must not load ``module`` to learn it)."""
+    def __getattr__(name):
+        if name.startswith("__") or importlib.util.find_spec(f"{package}.{name}") is not None:
+            raise AttributeError(name)
+        try:
+            return getattr(importlib.import_module(module), name)
+        except AttributeError:
+            raise AttributeError(f"module {package!r} has no attribute {name!r}") from None
+    return __getattr__
+
+
 def install() -> None:
     """Put the alias finder on ``sys.meta_path`` (once)."""
     if not any(isinstance(f, _Alias) for f in sys.meta_path):

@@ -12,16 +12,8 @@ scene's own body, evaluated at the scene's numbers.
 May import: :mod:`derive.sim` (a scene, for the analysis) and the stages below it,
 :mod:`derive.errors`.
 """
-import importlib
+from derive import _moved
 
-
-def __getattr__(name):
-    # ``derive.lecture`` was one module (now :mod:`derive.lecture.claims`): its names still
-    # resolve here, loaded on first use (the claims need SymPy).
-    if name.startswith("__") or name in ("claims", "verify", "report"):
-        raise AttributeError(name)
-    claims = importlib.import_module("derive.lecture.claims")
-    try:
-        return getattr(claims, name)
-    except AttributeError:
-        raise AttributeError(f"module 'derive.lecture' has no attribute {name!r}") from None
+# ``derive.lecture`` was one module (now :mod:`derive.lecture.claims`): its names still resolve here,
+# loaded on first use (the claims need SymPy).
+__getattr__ = _moved.forward("derive.lecture", "derive.lecture.claims")

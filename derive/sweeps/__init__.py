@@ -9,16 +9,8 @@ varied key and per measure) and its Parquet file; run locally in processes or on
 
 May import: :mod:`derive.sim` and every stage below it, :mod:`derive.errors`.
 """
-import importlib
+from derive import _moved
 
-
-def __getattr__(name):
-    # ``derive.sweeps`` was one module (now :mod:`derive.sweeps.engine`): its names still
-    # resolve here, loaded on first use.
-    if name.startswith("__") or name in ("engine", "maps", "measures", "keys"):
-        raise AttributeError(name)
-    engine = importlib.import_module("derive.sweeps.engine")
-    try:
-        return getattr(engine, name)
-    except AttributeError:
-        raise AttributeError(f"module 'derive.sweeps' has no attribute {name!r}") from None
+# ``derive.sweeps`` was one module (now :mod:`derive.sweeps.engine`): its names still resolve here,
+# loaded on first use.
+__getattr__ = _moved.forward("derive.sweeps", "derive.sweeps.engine")
