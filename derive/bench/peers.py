@@ -54,17 +54,6 @@ def _peer_error(fam: str, prob: bc.Problem, ref: np.ndarray, rtol: float):
     return B.axis_error(prob.axis(Y), ref), nfev
 
 
-def _counts(fns, budget: float = 0.02) -> list[int]:
-    """Calls per block for each function, so that each block takes about ``budget`` seconds."""
-    out = []
-    for fn in fns:
-        fn()
-        t0 = time.perf_counter()
-        fn()
-        out.append(max(1, min(10_000, int(budget / max(time.perf_counter() - t0, 1e-7)))))
-    return out
-
-
 def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
     """derive against each installed peer at equal error on the reference scene over
     [0, ``t_end``] (1001 samples), at each error level of ``levels``."""
@@ -99,7 +88,7 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
                         prob, method, x, B.ATOL_RATIO * x, setup)
                     fns = [theirs, sim, run]
                     entry["time"], entry["derive_simulate"], entry["derive_prepared"] = B.interleaved(
-                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=_counts(fns))
+                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=B.block_counts(fns))
                     entry["ratio_simulate"] = entry["derive_simulate"] / entry["time"]
                     entry["ratio_prepared"] = entry["derive_prepared"] / entry["time"]
                 row["peers"][fam] = entry

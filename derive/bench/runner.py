@@ -225,6 +225,18 @@ def interleaved(fns, calls: int, blocks: int = 15, counts=None) -> list[float]:
     return [statistics.median(x) for x in out]
 
 
+def block_counts(fns, budget: float = 0.02, most: int = 10_000) -> list[int]:
+    """Calls per block for each function of :func:`interleaved`, so that each block takes about
+    ``budget`` seconds (one warm call, then one timed)."""
+    out = []
+    for fn in fns:
+        fn()
+        t0 = time.perf_counter()
+        fn()
+        out.append(max(1, min(most, int(budget / max(time.perf_counter() - t0, 1e-7)))))
+    return out
+
+
 def axis_error(axis: np.ndarray, ref: np.ndarray) -> float:
     """max over the output times of the Euclidean distance between the two axes."""
     return float(np.max(np.linalg.norm(np.asarray(axis) - ref, axis=1)))
