@@ -49,6 +49,10 @@ class Description:
     has_angles: bool
     domain_note: str
     folder: str  # where the files are: c/<name>.h, c/<name>.c, c/<name>_solvers.{h,c}, numpy/<name>.py
+    # the cost model's numbers (derive.methods.costs): the Taylor jet's weight (0: no Taylor
+    # kernel) and the output map's operation count
+    jet_weight: float = 0.0
+    output_cost: int = 0
 
     @property
     def key(self) -> tuple:
@@ -73,7 +77,8 @@ class Description:
                    params=tuple(d["params"]), outputs=tuple(d["outputs"]), nin=d["nin"],
                    cost=d["cost"], derived_params=tuple(d["derived_params"]),
                    checks=tuple(d["checks"]), has_angles=d["has_angles"],
-                   domain_note=d["domain_note"], folder=str(folder))
+                   domain_note=d["domain_note"], folder=str(folder),
+                   jet_weight=d.get("jet_weight", 0.0), output_cost=d.get("output_cost", 0))
 
 
 def _generated() -> Path:

@@ -36,16 +36,22 @@ def choose_method(scene: Scene) -> str:
     return DEFAULT_METHOD if scene.simulate.method == "auto" else scene.simulate.method
 
 
-def default_step(scene: Scene) -> float:
-    """A fixed step for the fixed-step methods when the scene gives none: 1/200 of the fastest
-    natural period (spin, or a rate an effect sets), and no larger than the output spacing."""
+def fastest_rate(scene: Scene) -> float:
+    """The fastest natural rate of the scene's motion, rad/s: the spin |ω̃| scaled by the
+    moments' spread (the body rates' upper bound, I_max/I_min |ω̃|), or a rate an effect sets
+    (its ``natural_rate``: √(M g l / I) for gravity, …), at least 1e-12."""
     b, i = scene.body, scene.initial
     rates = [float(np.linalg.norm(i.omega)) * max(b.moments) / min(b.moments)]
     for t in scene.tables.values():
         rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
-    fastest = max(max(rates), 1e-12)
+    return max(max(rates), 1e-12)
+
+
+def default_step(scene: Scene) -> float:
+    """A fixed step for the fixed-step methods when the scene gives none: 1/200 of the fastest
+    natural period (:func:`fastest_rate`), and no larger than the output spacing."""
     dt_out = scene.simulate.t_end / (scene.simulate.samples - 1)
-    return float(min(2 * np.pi / fastest / 200, dt_out))
+    return float(min(2 * np.pi / fastest_rate(scene) / 200, dt_out))
 
 
 def fixed_steps(scene: Scene, h: float) -> int:

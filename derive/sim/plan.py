@@ -17,11 +17,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from derive.methods import costs
 from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.runtime import catalogue
 from derive.runtime.integrate import ModelKernel
 from derive.sim import auto
-from derive.sim.inputs import _settings, choose_method, inputs_of, params_of
+from derive.sim.inputs import _settings, choose_method, fastest_rate, inputs_of, params_of
 from derive.sim.scene import Scene
 
 #: SciPy reference methods: scene name -> solve_ivp method
@@ -106,6 +107,19 @@ def make(scene: Scene) -> Plan:
         steps = [(auto.model_key(scene, method)[0], 0)]
     else:
         steps = auto.plan(scene)
-    candidates = tuple(Candidate(scene, method, catalogue.describe((name, *key)), mode)
-                       for name, mode in steps)
+    descs = [(catalogue.describe((name, *key)), mode) for name, mode in steps]
+    if scene.simulate.method == "auto" and method not in SCIPY_METHODS:
+        method = auto_method(scene, descs[0][0])
+    candidates = tuple(Candidate(scene, method, desc, mode) for desc, mode in descs)
     return Plan(scene, method, scene.t_out, inputs_of(scene), candidates)
+
+
+def auto_method(scene: Scene, desc: catalogue.Description) -> str:
+    """The method ``method = "auto"`` runs on the model ``desc``: the one of
+    :data:`derive.methods.costs.CHOICES` that the cost model (:mod:`derive.methods.costs`)
+    finds cheapest at the scene's tolerance, output count and span."""
+    s = scene.simulate
+    work = costs.Work(rhs_cost=desc.cost, jet_weight=desc.jet_weight, output_cost=desc.output_cost,
+                      ny=len(desc.states), n_out=len(desc.outputs), samples=s.samples,
+                      span=s.t_end * fastest_rate(scene))
+    return costs.choose(work, s.rtol, s.atol)
