@@ -249,6 +249,27 @@ def peers_section(results: dict) -> list[str]:
     return L
 
 
+def auto_choice_section(results: dict) -> list[str]:
+    """Issue 20, item 5 (:mod:`derive.bench.autochoice`): the method auto chose against the
+    faster of dop853 and taylor, per scene and tolerance."""
+    ac = (results.get("targets") or {}).get("auto_choice") or {}
+    if not ac:
+        return []
+    L = ["## What `method = \"auto\"` picks (issue 20)", ""]
+    if "error" in ac:
+        return L + [f"Not measured: {ac['error']}.", ""]
+    L += ["Each scene prepared with `method` = dop853, taylor and auto (atol = rtol / 100), the three "
+          "prepared runs timed in turns (medians). auto / best: auto's time over the faster method's "
+          "(1: the right choice). A choice within 10 % of the faster counts as right. "
+          f"**Right: {ac['right']} of {ac['total']}.**", "",
+          "| scene | rtol | auto chose | faster | dop853 | taylor | auto / best |", "|---|---|---|---|---|---|---|"]
+    for r in ac["rows"]:
+        L.append(f"| {r['scene']} | {r['rtol']:.0e} | {r['chose']} | {r['faster']} | {_t(r['dop853'])} | "
+                 f"{_t(r['taylor'])} | {r['auto_over_best']:.3g} |")
+    L.append("")
+    return L
+
+
 def kernel_section(results: dict) -> list[str]:
     L = ["## Kernel speed", "",
          "`generated/c/heavy_top.c` (committed, generated) vs `derive/bench/baselines/handwritten_heavy_top.c` (the "
@@ -420,7 +441,8 @@ def splitting_section(results: dict) -> list[str]:
 
 
 def write_report(results: dict, out: Path) -> str:
-    L = header(results) + targets_section(results) + peers_section(results) + kernel_section(results) \
+    L = header(results) + targets_section(results) + peers_section(results) + auto_choice_section(results) \
+        + kernel_section(results) \
         + wp_section(results) \
         + drift_section(results) + splitting_section(results)
     text = "\n".join(L)

@@ -387,7 +387,7 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=9, desc="targets", unit="part", file=sys.stderr) as bar:
+    with tqdm(total=10, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
         out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
@@ -407,7 +407,19 @@ def run(cfg, fams) -> dict:
         bar.update()
         out["own_body"] = _guard("own body", own_body, cfg)
         bar.update()
+        out["auto_choice"] = _guard("auto choice", auto_choice, cfg)
+        bar.update()
     return out
+
+
+def auto_choice(cfg) -> dict:
+    """Issue 20, item 5: does ``method = "auto"`` pick the faster of dop853 and taylor
+    (:mod:`derive.bench.autochoice`)?"""
+    from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
+
+    if cfg.name == "smoke":
+        return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
+    return bench_auto_choice(levels=LEVELS if cfg.name == "full" else LEVELS[1::2], blocks=5)
 
 
 def own_body(cfg) -> dict:
