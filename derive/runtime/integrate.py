@@ -390,6 +390,20 @@ class ModelKernel:
             if self._guard is not None:
                 self._guard.argtypes = [ci]
                 self._guard.restype = ci
+        self._bound_parts: dict = {}
+
+    def _unchecked_call(self, args, pole_check: int):
+        """(driver, guard, driver arguments as ctypes instances) for :class:`BoundRun`: the
+        driver and the guard without argtypes (they convert nothing), made once per kernel and
+        set of arguments."""
+        key = (tuple(args), pole_check)
+        parts = self._bound_parts.get(key)
+        if parts is None:
+            sim = self._sim
+            conv = tuple(ty(v) for ty, v in zip(sim.argtypes[4:], [*args, pole_check]))
+            guard = None if self._guard is None else _unchecked(self.lib, self._guard.__name__)
+            parts = self._bound_parts[key] = (_unchecked(self.lib, sim.__name__), guard, conv)
+        return parts
 
     def _fn(self, symbol, argtypes):
         fn = getattr(self.lib, symbol)
@@ -520,6 +534,7 @@ _NFEV_OFFSET = STATS_DTYPE.fields["nfev"][1]
 
 
 _INTERRUPTED = int(Status.INTERRUPTED)
+_ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
 
 #: Seconds under which a guarded prepared call counts as short (see :class:`BoundRun`): far
 #: below the half second within which Ctrl-C must stop a run, even on a loaded machine.
@@ -555,7 +570,7 @@ class BoundRun:
     """
 
     __slots__ = ("kernel", "t", "inputs", "_size", "_shape_out", "_shape_y", "_k_y", "_k_p", "_k_st",
-                 "_fn", "_head", "_tail", "_guard", "_on", "_off", "_status", "_nfev", "_short")
+                 "_fn", "_head", "_tail", "_guard", "_status", "_nfev", "_short")
 
     def __init__(self, kernel: "ModelKernel", t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0):
         t = np.ascontiguousarray(t, dtype=np.float64)
@@ -568,15 +583,10 @@ class BoundRun:
         self._size = self._k_st + _STATS_DOUBLES
         self._shape_out, self._shape_y = (kernel.nout, n), (n, kernel.ny)
         # The driver without argtypes, given ctypes instances: nothing is converted per call
-        # (the instances of the arguments that do not change are made here, once).
-        sim = kernel._sim
-        self._fn = _unchecked(kernel.lib, sim.__name__)
-        conv = [ty(v) for ty, v in zip(sim.argtypes[4:], [*args, pole_check])]
+        # (the instances of the arguments that do not change are made once per kernel).
+        self._fn, self._guard, conv = kernel._unchecked_call(args, pole_check)
         self._head = ctypes.c_void_p(inputs.ctypes.data)
         self._tail = (ctypes.c_void_p(t.ctypes.data), ctypes.c_long(n), *conv)
-        guard = kernel._guard
-        self._guard = None if guard is None else _unchecked(kernel.lib, guard.__name__)
-        self._on, self._off = ctypes.c_int(1), ctypes.c_int(0)
         self._status = 8 * self._k_st + _STATUS_OFFSET
         self._nfev = 8 * self._k_st + _NFEV_OFFSET
         self._short = False
@@ -615,11 +625,11 @@ class BoundRun:
             rc = self._fn(*args)
         else:
             t0 = time.perf_counter()
-            guard(self._on)
+            guard(_ON)
             try:
                 rc = self._fn(*args)
             finally:
-                interrupted = guard(self._off)
+                interrupted = guard(_OFF)
             if interrupted or rc == _INTERRUPTED:
                 raise KeyboardInterrupt
             if same and time.perf_counter() - t0 < SHORT_CALL:
