@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ctypes
 import re
+import time
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -389,6 +390,20 @@ class ModelKernel:
             if self._guard is not None:
                 self._guard.argtypes = [ci]
                 self._guard.restype = ci
+        self._bound_parts: dict = {}
+
+    def _unchecked_call(self, args, pole_check: int):
+        """(driver, guard, driver arguments as ctypes instances) for :class:`BoundRun`: the
+        driver and the guard without argtypes (they convert nothing), made once per kernel and
+        set of arguments."""
+        key = (tuple(args), pole_check)
+        parts = self._bound_parts.get(key)
+        if parts is None:
+            sim = self._sim
+            conv = tuple(ty(v) for ty, v in zip(sim.argtypes[4:], [*args, pole_check]))
+            guard = None if self._guard is None else _unchecked(self.lib, self._guard.__name__)
+            parts = self._bound_parts[key] = (_unchecked(self.lib, sim.__name__), guard, conv)
+        return parts
 
     def _fn(self, symbol, argtypes):
         fn = getattr(self.lib, symbol)
@@ -476,6 +491,11 @@ class ModelKernel:
                    pole_check, base + 8 * size_out, base, base + 8 * k_st)
         return out, y, pp, stats.view(STATS_DTYPE)[0]
 
+    def bind(self, t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0) -> "BoundRun":
+        """The C call of :meth:`simulate` with everything that does not change per run worked out
+        once (see :class:`BoundRun`): for a prepared simulation run many times."""
+        return BoundRun(self, t, inputs, args, pole_check)
+
     def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0, buffers=None):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,
         stats (N,)); each bit-for-bit what ``simulate`` gives. With ``pole_check`` the first
@@ -507,3 +527,119 @@ class ModelKernel:
         self._outputs_at(n, _ptr(np.ascontiguousarray(t, dtype=np.float64)), _ptr(y),
                          _ptr(np.ascontiguousarray(p, dtype=np.float64)), _ptr(out))
         return out
+
+
+_STATUS_OFFSET = STATS_DTYPE.fields["status"][1]
+_NFEV_OFFSET = STATS_DTYPE.fields["nfev"][1]
+
+
+_INTERRUPTED = int(Status.INTERRUPTED)
+_ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
+
+#: Seconds under which a guarded prepared call counts as short (see :class:`BoundRun`): far
+#: below the half second within which Ctrl-C must stop a run, even on a loaded machine.
+SHORT_CALL = 0.02
+
+
+def _unchecked(lib, symbol: str):
+    """A fresh function object of ``symbol`` with no argtypes (int result): called with ctypes
+    instances only, it converts nothing (the library's own object keeps its argtypes)."""
+    fn = lib[symbol]
+    fn.restype = ctypes.c_int
+    return fn
+
+
+class BoundRun:
+    """One trajectory's whole-simulation call (:meth:`ModelKernel.simulate`) bound to its output
+    times, init-map inputs, driver arguments and pole check: the buffer layout, the pointers of
+    the arrays it keeps (``t``, ``inputs``) and the converted driver arguments are worked out
+    once, so a call allocates its one output buffer and enters C.
+
+    Parameters
+    ----------
+    kernel : ModelKernel
+        The compiled (model, method) pair.
+    t : ndarray
+        The output times (C-contiguous float64; kept, not copied: the caller must not change it).
+    inputs : ndarray
+        The init map's inputs (as ``t``).
+    args : list
+        The driver's arguments (:meth:`ModelKernel.driver_args`).
+    pole_check : int
+        0, 1 or 2, as for :meth:`ModelKernel.simulate`.
+    """
+
+    __slots__ = ("kernel", "t", "inputs", "_size", "_shape_out", "_shape_y", "_k_y", "_k_p", "_k_st",
+                 "_fn", "_head", "_tail", "_guard", "_status", "_nfev", "_short")
+
+    def __init__(self, kernel: "ModelKernel", t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0):
+        t = np.ascontiguousarray(t, dtype=np.float64)
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+        self.kernel, self.t, self.inputs = kernel, t, inputs
+        n = t.shape[0]
+        size_out, size_y = kernel.nout * n, n * kernel.ny
+        self._k_y, self._k_p = size_out, size_out + size_y
+        self._k_st = self._k_p + kernel.np
+        self._size = self._k_st + _STATS_DOUBLES
+        self._shape_out, self._shape_y = (kernel.nout, n), (n, kernel.ny)
+        # The driver without argtypes, given ctypes instances: nothing is converted per call
+        # (the instances of the arguments that do not change are made once per kernel).
+        self._fn, self._guard, conv = kernel._unchecked_call(args, pole_check)
+        self._head = ctypes.c_void_p(inputs.ctypes.data)
+        self._tail = (ctypes.c_void_p(t.ctypes.data), ctypes.c_long(n), *conv)
+        self._status = 8 * self._k_st + _STATUS_OFFSET
+        self._nfev = 8 * self._k_st + _NFEV_OFFSET
+        self._short = False
+
+    def __call__(self, p: np.ndarray, inputs: np.ndarray | None = None, same: bool = False):
+        """Run once.
+
+        Parameters
+        ----------
+        p : ndarray
+            The parameter vector (copied into the call's buffer; the init map writes the
+            derived parameters there).
+        inputs : ndarray, optional
+            C-contiguous float64 inputs replacing the bound ones for this call.
+        same : bool
+            The caller's word that ``p`` and the inputs are those of every other ``same`` call
+            (a prepared run without new values): the C work is then the same each time, and once
+            a guarded call has shown it short (:data:`SHORT_CALL`), the interrupt guard is left
+            out, as a Ctrl-C during so short a call is raised by Python when it returns.
+
+        Returns
+        -------
+        tuple
+            (out (NOBS, n), y (n, NY), p (derived parameters written), status, nfev, buf): fresh
+            arrays of one buffer ``buf`` (:meth:`stats` reads its stats record).
+        """
+        buf = np.zeros(self._size)  # zero: the stats record starts cleared
+        k_p, k_st = self._k_p, self._k_st
+        buf[k_p:k_st] = p
+        base = ctypes.addressof(ctypes.c_char.from_buffer(buf))
+        args = (self._head if inputs is None else ctypes.c_void_p(inputs.ctypes.data),
+                ctypes.c_void_p(base + 8 * k_p), *self._tail, ctypes.c_void_p(base + 8 * self._k_y),
+                ctypes.c_void_p(base), ctypes.c_void_p(base + 8 * k_st))
+        guard = self._guard
+        if guard is None or (same and self._short):
+            rc = self._fn(*args)
+        else:
+            t0 = time.perf_counter()
+            guard(_ON)
+            try:
+                rc = self._fn(*args)
+            finally:
+                interrupted = guard(_OFF)
+            if interrupted or rc == _INTERRUPTED:
+                raise KeyboardInterrupt
+            if same and time.perf_counter() - t0 < SHORT_CALL:
+                self._short = True
+        # a driver returns its record's status; read the record only when it is not OK
+        status = ctypes.c_int.from_buffer(buf, self._status).value if rc else 0
+        nfev = ctypes.c_long.from_buffer(buf, self._nfev).value
+        return (buf[:self._k_y].reshape(self._shape_out), buf[self._k_y:k_p].reshape(self._shape_y),
+                buf[k_p:k_st], status, nfev, buf)
+
+    def stats(self, buf: np.ndarray):
+        """The stats record (STATS_DTYPE) of a call's ``buf``."""
+        return buf[self._k_st:].view(STATS_DTYPE)[0]

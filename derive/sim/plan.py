@@ -20,10 +20,11 @@ import numpy as np
 from derive.methods import costs
 from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.runtime import catalogue
-from derive.runtime.integrate import ModelKernel
+from derive.runtime.integrate import BoundRun, ModelKernel
 from derive.sim import auto
 from derive.sim.inputs import _settings, choose_method, fastest_rate, inputs_of, params_of
 from derive.sim.scene import Scene
+from derive.symbolic.formulations import REGISTRY
 
 #: SciPy reference methods: scene name -> solve_ivp method
 SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
@@ -53,6 +54,19 @@ class Candidate:
     @functools.cached_property
     def args(self) -> list:
         return _settings(self.scene, self.method, self.kernel)
+
+    @functools.cached_property
+    def pole_loss(self) -> bool:
+        """Whether the formulation loses accuracy near β = 0, π (the result's pole check)."""
+        return REGISTRY[self.desc.formulation].pole_loss
+
+    def bound(self, t: np.ndarray, inputs: np.ndarray) -> BoundRun:
+        """The kernel's C call bound to the plan's output times and inputs (made on first use,
+        then kept: a candidate belongs to one plan, whose ``t`` and ``inputs`` do not change)."""
+        b = self.__dict__.get("_bound")
+        if b is None:
+            b = self.__dict__["_bound"] = self.kernel.bind(t, inputs, self.args, self.pole_check)
+        return b
 
 
 @dataclass

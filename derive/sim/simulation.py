@@ -138,6 +138,7 @@ _SLICES = _output_slices()
 _COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
 _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
+_FEW = 32  # samples below which a list beats NumPy's reductions
 
 
 def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None) -> Result:
@@ -155,11 +156,19 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integ
                  model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
     res.integrals = _integrals(scene, res, p, integrals)
     for name, values in res.integrals.items():
-        if not np.isfinite(values).all():
+        if not _all_finite(values):
             j = int(np.argwhere(~np.isfinite(values))[0][0])
             raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "
                                    f"(overflow: the scene's numbers are out of range)")
     return res
+
+
+def _all_finite(values: np.ndarray) -> bool:
+    """Whether every entry is finite (a list for a short array: cheaper than the ufunc and its
+    reduction)."""
+    if values.ndim == 1 and values.shape[0] <= _FEW:
+        return all(map(math.isfinite, values.tolist()))
+    return bool(np.isfinite(values).all())
 
 
 def _integrals(scene: Scene, res: Result, p, found=None) -> dict:
@@ -186,7 +195,13 @@ def _check_pole(desc, t, beta, rtol):
     samples is at the smallest or the largest β (two reductions, not a sine per sample)."""
     if not REGISTRY[desc.formulation].pole_loss:
         return
-    lo, hi = float(beta.min()), float(beta.max())
+    if beta.shape[0] <= _FEW:  # a short output: Python's min and max cost less than two reductions
+        b = beta.tolist()
+        lo, hi = min(b), max(b)
+        if lo != lo or hi != hi:  # a NaN: Python's min and max may not see it
+            lo = hi = math.nan
+    else:
+        lo, hi = float(beta.min()), float(beta.max())
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return  # _result names the non-finite output
     if _clear_of_pole(min(math.sin(lo), math.sin(hi)), rtol):
@@ -232,19 +247,27 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
         c = pl.candidates[0]
         desc = c.desc
         out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
-    else:
-        for c in pl.candidates:
-            desc = c.desc
-            out, y, p, st = c.kernel.simulate(inputs, _with(c, params), t, c.args, c.pole_check)
-            status = int(st["status"])
-            if status != _RANGE:
-                break
-        if status:
-            raise IntegrationError(_explain(desc, st, sc.simulate.max_steps))
-        nfev = int(st["nfev"])
-    _check_pole(desc, t, out[1], sc.simulate.rtol)
-    # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT); SciPy's did not.
-    return _result(desc, out, y, t, sc, method, nfev, p, finite=pl.scipy is None, integrals=pl.integrals)
+        _check_pole(desc, t, out[1], sc.simulate.rtol)
+        # SciPy's solver did not check the outputs finite: _result does
+        return _result(desc, out, y, t, sc, method, nfev, p, integrals=pl.integrals)
+    # The compiled path: the candidates' calls were bound once per plan (layout, pointers,
+    # converted arguments), so a run is an allocation, the C call and the Result.
+    given = inputs is not pl.inputs
+    if given:
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+    for c in pl.candidates:
+        bound = c.bound(t, pl.inputs)
+        out, y, p, status, nfev, buf = bound(_with(c, params), inputs if given else None,
+                                             same=not (given or params))
+        if status != _RANGE:
+            break
+    desc = c.desc
+    if status:
+        raise IntegrationError(_explain(desc, bound.stats(buf), sc.simulate.max_steps))
+    if c.pole_loss:
+        _check_pole(desc, t, out[1], sc.simulate.rtol)
+    # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT).
+    return _result(desc, out, y, t, sc, method, nfev, p, finite=True, integrals=pl.integrals)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
