@@ -40,11 +40,12 @@ def fastest_rate(scene: Scene) -> float:
     """The fastest natural rate of the scene's motion, rad/s: the spin |ω̃| scaled by the
     moments' spread (the body rates' upper bound, I_max/I_min |ω̃|), or a rate an effect sets
     (its ``natural_rate``: √(M g l / I) for gravity, …), at least 1e-12."""
-    b, i = scene.body, scene.initial
-    rates = [float(np.linalg.norm(i.omega)) * max(b.moments) / min(b.moments)]
+    b, w = scene.body, scene.initial.omega
+    moments = b.moments
+    fastest = math.sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * max(moments) / min(moments)
     for t in scene.tables.values():
-        rates.append(effects.REGISTRY[t.effect].natural_rate(t, b))
-    return max(max(rates), 1e-12)
+        fastest = max(fastest, effects.REGISTRY[t.effect].natural_rate(t, b))
+    return max(fastest, 1e-12)
 
 
 def default_step(scene: Scene) -> float:

@@ -132,6 +132,8 @@ def auto_method(scene: Scene, desc: catalogue.Description) -> str:
     """The method ``method = "auto"`` runs on the model ``desc``: the one of
     :data:`derive.methods.costs.CHOICES` that the cost model (:mod:`derive.methods.costs`)
     finds cheapest at the scene's tolerance, output count and span."""
+    if desc.jet_weight <= 0:  # no Taylor kernel: nothing to weigh
+        return costs.CHOICES[0]
     s = scene.simulate
     work = costs.Work(rhs_cost=desc.cost, jet_weight=desc.jet_weight, output_cost=desc.output_cost,
                       ny=len(desc.states), n_out=len(desc.outputs), samples=s.samples,
