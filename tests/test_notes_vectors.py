@@ -109,7 +109,8 @@ def test_transport_theorem():
     right = one(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} + \boldsymbol{\omega} \times \mathbf{L}")
     assert (right.kind, right.verdict) == ("kinematics", "holds")
     wrong = one(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} - \boldsymbol{\omega} \times \mathbf{L}")
-    assert wrong.verdict == "typo" and "+" in wrong.correction
+    assert wrong.verdict == "typo" and r"\left(\frac{d\mathbf{L}}{dt}\right)_{body}" in wrong.correction
+    assert one(FRAME % wrong.correction).verdict == "holds"
     law = nc.check_text(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} + \boldsymbol{\omega} \times \mathbf{L} = \boldsymbol{\tau}")
     assert [(c.kind, c.verdict) for c in law] == [("kinematics", "holds"), ("law", "unchecked")]
 

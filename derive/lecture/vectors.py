@@ -213,6 +213,9 @@ class _VParser(lx._Parser):
         members, rels = [], []
         while True:
             start = self.peek().pos if self.peek() else len(self.source)
+            before = self.source[:start].rstrip()
+            if before.endswith("\\left"):          # the member's span takes its \left along
+                start = len(before) - len("\\left")
             if self.peek() is None or self.at("rel"):
                 self.fail("a side of a relation is empty")
             first = self.i
@@ -557,7 +560,9 @@ def _zero(a, b, seed) -> tuple[bool, str]:
     if all(d == 0 for d in diffs):
         return True, "exact (expand)"
     if not any(d.has(sp.sin, sp.cos) for d in diffs):
-        return False, "claim − derived = " + sp.latex(next(d for d in diffs if d != 0))[:80]
+        k = next(n for n, d in enumerate(diffs) if d != 0)
+        where = f" (component {k + 1})" if len(diffs) == 3 else (f" (entry {k // 3 + 1},{k % 3 + 1})" if len(diffs) == 9 else "")
+        return False, f"exact (expand): claim − derived ≠ 0{where}"
     try:
         steps = [vf._symbolic_zero(d) for d in diffs]
     except (sp.PolynomialError, TypeError, ValueError):
@@ -602,7 +607,7 @@ def holds(reading: Reading, k: int, seed: str) -> tuple[bool, str]:
 def member_edits(src: str):
     """Single edits of one member's LaTeX, as (edited, what): a sign, a factor ½ or 2, an index,
     the order of a cross product, a power."""
-    out = []
+    out = [(e, "the order of a cross product") for e in _cross_swaps(src)]
     lead = re.match(r"\s*-", src)
     out.append((src[lead.end():] if lead else "-" + src, "the sign of the whole side"))
     for m in re.finditer(r"(?<![_^{])[+\-]", src):
@@ -620,7 +625,6 @@ def member_edits(src: str):
                 out.append((src[:m.start(1)] + new + src[m.end(1):], "an index"))
     for m in re.finditer(r"\^\s*\{?\s*2\s*\}?", src):
         out.append((src[:m.start()] + src[m.end():], "a power"))
-    out += [(e, "the order of a cross product") for e in _cross_swaps(src)]
     seen, unique = {src}, []
     for e, what in out:
         if e not in seen:
@@ -660,10 +664,15 @@ def _operand(src: str, at: int, forward: bool) -> tuple[int, int] | None:
 
 
 def _cross_swaps(src: str):
+    """Each ``a \\times b`` of the LaTeX with its operands swapped, the shortest first (the innermost
+    product: r × (r × ω) is mended as r × (ω × r) before (r × ω) × r)."""
+    swaps = []
     for m in re.finditer(r"\\times", src):
         left, right = _operand(src, m.start(), False), _operand(src, m.start(), True)
         if left and right:
-            yield src[:left[0]] + src[right[0]:right[1]] + src[left[1]:right[0]] + src[left[0]:left[1]] + src[right[1]:]
+            swaps.append((right[1] - left[0], src[:left[0]] + src[right[0]:right[1]] + src[left[1]:right[0]]
+                          + src[left[0]:left[1]] + src[right[1]:]))
+    return [e for _, e in sorted(swaps, key=lambda x: x[0])]
 
 
 def restore(latex: str) -> str:
