@@ -47,6 +47,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture import vectors as vc
 from derive.lecture import verify as vf
 
 VERDICTS = ("holds", "typo", "fails", "unchecked")
@@ -216,10 +217,11 @@ class _Context:
     eoms: list = field(default_factory=list)          # (residual as written, line)
     head: str | None = None                           # left side continued by "= …" displays
     assumptions: list = field(default_factory=list)   # their LaTeX, for the why
+    vec_model: str | None = None                      # "particle" after a sum over particles
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
-        self.head, self.assumptions = None, []
+        self.head, self.assumptions, self.vec_model = None, [], None
 
 
 # ---- cutting displays into statements -----------------------------------------------------------
@@ -518,6 +520,8 @@ class Checker:
         try:
             parsed = lx.parse(item.latex, self.vocab)
         except lx.NotRead as err:
+            if re.search(r"\\tau(?![a-z])", item.latex):
+                self.ctx.assumptions.append(item.latex)      # τ = 0: the torque-free case
             if item.display:
                 self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
             return
@@ -578,6 +582,8 @@ class Checker:
             return
         except lx.NotRead as err:
             why = err.why
+            if self._vectors(line, piece, text):
+                return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return
             self._add(line, piece, "unknown", "unchecked", why)
@@ -613,6 +619,57 @@ class Checker:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
             self._definition(line, piece, parsed)
+
+    def _vectors(self, line, piece, text) -> bool:
+        """A statement in vectors, tensors, sums over particles or frame derivatives
+        (`derive.lecture.vectors`): each member against the first, a single-edit search of the
+        LaTeX for a correction. False when that reader cannot read it either."""
+        try:
+            reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
+        except lx.NotRead:
+            return False
+        if set(reading.relations) - {"=", "≡"}:
+            return False
+        first = reading.members[0]
+        self.ctx.head = reading.source[:first[0].end].strip()
+        if reading.model == "particle":
+            self.ctx.vec_model = "particle"
+        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
+        where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
+        for k in range(1, len(first)):
+            if first[k].value is vc.LAW or first[0].value is vc.LAW:
+                self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
+                          "starts (Euler's equations are it in body axes), not a consequence of it")
+                continue
+            ok, how = vc.holds(reading, k, f"{piece}/{k}")
+            if ok:
+                self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
+                continue
+            fix = self._vector_fix(reading, k, piece)
+            if fix:
+                self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "
+                          f"({vc.WHY[reading.model]})", fix[0])
+            else:
+                self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
+        return True
+
+    def _vector_fix(self, reading, k, piece):
+        """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
+        src, m = reading.source, reading.members[0][k]
+        rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
+        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
+        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
+            if n >= 80:
+                break
+            try:
+                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                continue
+            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
+                continue
+            if vc.holds(again, k, f"{piece}/edit{n}")[0]:
+                return vc.restore(f"{left} {rel} {edited.strip()}"), what
+        return None
 
     def _new_symbol(self, line, piece, text) -> bool:
         """X ≡ … with X unknown: record X (a new symbol of the notes) and its definition."""
@@ -736,9 +793,7 @@ class Checker:
             return
         for k, m in enumerate(parsed.members[1:], start=1):
             if m.value == 0 and key is lx.DLDT:
-                self._add(line, piece, "equation of motion", "holds" if "τ" in "".join(self.ctx.assumptions) or
-                          any("tau" in a for a in self.ctx.assumptions) else "unchecked",
-                          "d𝐋/dt = 0: torque-free (τ = 0, stated in the text)")
+                self._torque_free(line, piece, parsed)
                 continue
             before = len(self.claims)
             self._one(line, piece, "approximation" if approx else "definition", None, m.value, parsed, k,
@@ -750,6 +805,37 @@ class Checker:
                 self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
+
+    def _torque_free(self, line, piece, parsed):
+        """d𝐋/dt = 0 = Σ cᵢ êᵢ with τ = 0 stated: component i of the written d𝐋/dt, set to 0, must be
+        Euler's equation i (a non-zero multiple of Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ); without a written
+        d𝐋/dt it restates the torque-free case."""
+        stated = any(re.search(r"\\tau(?![a-z])", a) for a in self.ctx.assumptions)
+        written = [mm.value for mm in parsed.members[1:] if mm.value != 0]
+        if not stated:
+            self._add(line, piece, "equation of motion", "unchecked", "d𝐋/dt = 0 needs τ = 0, which the text does not state")
+            return
+        if not written:
+            self._add(line, piece, "equation of motion", "unchecked",
+                      "d𝐋/dt = 0: the torque-free case (τ = 0, stated in the text), an assumption")
+            return
+        try:
+            col = _column(self._resolve(written[-1]))
+        except _Mismatch as err:
+            self._add(line, piece, "equation of motion", "fails", f"d𝐋/dt = 0 with d𝐋/dt = {err}")
+            return
+        euler = self.d.euler(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD)
+        for i in range(3):
+            r = sp.expand(col[i].xreplace(self.ctx.subs)) if len(col) == 3 else None
+            q = sp.cancel(sp.together(r / euler[i])) if r is not None and euler[i] != 0 else None
+            if q is None or q == 0 or _free(q) & dyn:
+                self._add(line, piece, "equation of motion", "fails",
+                          f"d𝐋/dt = 0 (τ = 0 stated): component {i + 1} is not Euler's equation {i + 1}")
+                return
+        self._add(line, piece, "equation of motion", "holds",
+                  "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
+                  "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
 
     def _one(self, line, piece, kind, left, value, parsed, k, approx=False, label=None, forms=None, args=None):
         """Check member k against the label's derived forms (or the written left side)."""
