@@ -43,7 +43,7 @@ def pole_mode(name: str) -> int:
     """The C drivers' ``pole_check`` for a formulation: 0 none, 1 clear of both poles, 2 clear
     or meeting a pole only where the reduced equations are regular."""
     f = REGISTRY[name]
-    return 0 if not f.singular else 2 if f.needs_routh else 1
+    return 0 if not f.singular else f.pole_check or (2 if f.needs_routh else 1)
 
 
 def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
@@ -52,8 +52,8 @@ def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
     only formulations the scene's method can run (a splitting method: Euler–Poisson).
     ``effects``: the model's effects when they are not the scene's own (a batch's or a sweep's
     model has every effect that acts at any of its points)."""
-    if scene.simulate.formulation != "auto":
-        return [(scene.simulate.formulation, 0)]
+    if scene.simulate.formulation != "auto":  # asked for by name: only its own pole check
+        return [(scene.simulate.formulation, REGISTRY[scene.simulate.formulation].pole_check)]
     effects = scene.effects if effects is None else effects
     out = []
     for name, mode in _structural(scene.symmetric, effects, scene.simulate.method,
