@@ -14,7 +14,7 @@
    p_α = p_γ at β = 0, p_α = −p_γ at β = π, as the kernel receives them. Without a Routh
    reduction (an asymmetric body, damping, gravity off axis 3) the range is not known and the
    singular formulations are not chosen.
-4. A formulation is not chosen for a method listed in ``NOT_CHOSEN`` (the reason is there).
+4. A formulation is not chosen for a method whose driver its entry's ``not_chosen_for`` names.
 """
 from __future__ import annotations
 
@@ -28,22 +28,11 @@ from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import choose_method, inputs_of, params_of
 
 
-#: (formulation, method driver) pairs auto does not choose, with why (asked for by name they run).
-NOT_CHOSEN = {
-    ("reduced-u", "taylor"):
-        "the Taylor step control leaves the quadratures alpha, gamma out of its norm "
-        "(codegen.taylor.controlled_states: they feed nothing back), but their integrand "
-        "1/(1 -+ u(t)) is singular where u(t) = +-1 in complex time, nearer than any "
-        "singularity of u itself: the steps chosen from u alone leave alpha and gamma "
-        "several times the tolerance off (the beta form's beta sees those singularities)",
-}
-
-
 def not_chosen(method: str, formulation: str) -> str | None:
-    """Why auto does not choose ``formulation`` for the compiled ``method`` (``NOT_CHOSEN``),
-    or None."""
+    """Why auto does not choose ``formulation`` for the compiled ``method`` (the registry
+    entry's ``not_chosen_for``, by the method's driver), or None."""
     driver = compiled_methods()[method].driver if method in compiled_methods() else None
-    return NOT_CHOSEN.get((formulation, driver))
+    return REGISTRY[formulation].not_chosen_for.get(driver)
 
 
 def _known_cost(key) -> float | None:

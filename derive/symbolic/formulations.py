@@ -19,7 +19,9 @@ Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeS
    reduced-u form cannot follow the axis through a pole (u = ±1 is a turning point of u while
    the axis goes through, and α would have to jump by π), so it refuses such a motion even when
    asked for by name.
-7. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
+7. ``not_chosen_for``: {method driver: why}: ``auto`` does not choose the formulation for those
+   methods (asked for by name, it runs).
+8. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
    Euler-angle mass matrix): a trajectory that came closer than the tolerance allows is refused.
 
 ``auto`` (see :mod:`derive.sim.auto`) tries the applicable formulations in order of the cost of
@@ -31,7 +33,7 @@ Nothing here imports SymPy.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 from derive.symbolic import effects as fx
@@ -107,6 +109,7 @@ class Formulation:
     singular: bool = False
     needs_routh: bool = False
     pole_check: int = 0
+    not_chosen_for: dict = field(default_factory=dict)
     pole_loss: bool = False
 
 
@@ -119,7 +122,12 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("reduced-u", "u = cos beta and its rate with conserved p_alpha, p_gamma, E': "
                 "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
                 "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
-                singular=True, needs_routh=True, pole_check=1),
+                singular=True, needs_routh=True, pole_check=1, not_chosen_for={"taylor": (
+                    "the Taylor step control leaves the quadratures alpha, gamma out of its "
+                    "norm (codegen.taylor.controlled_states: they feed nothing back), but "
+                    "their integrand 1/(1 -+ u(t)) is singular where u(t) = +-1 in complex "
+                    "time, nearer than any singularity of u itself: steps chosen from u "
+                    "alone leave alpha and gamma several times the tolerance off")}),
     Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
                 "quaternion", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "
