@@ -97,15 +97,15 @@ def test_a_run_asks_no_stage_again(monkeypatch):
 
 
 def test_a_start_the_planned_formulation_cannot_take_falls_back_like_simulate():
-    """The plan keeps every candidate: a start at the pole, which the Euler-angle formulation's
-    pole check refuses in C, runs the next one, as simulate of that scene does."""
+    """The plan keeps every candidate: a start at the pole, which the cheapest formulation's
+    pole check (reduced-u's) refuses in C, runs the next one, as simulate of that scene does."""
     data = _scene("looping_top")
     prepared = derive.prepare(data)
     first = prepared.run()
-    assert first.formulation == "euler-angles"
+    assert first.formulation == "reduced-u"
     changed = copy.deepcopy(data)
     changed["initial"]["beta"] = 0.0
     again = prepared.run(initial={"beta": 0.0})
     direct = derive.simulate(changed)
-    assert again.formulation == direct.formulation != "euler-angles"
+    assert again.formulation == direct.formulation != "reduced-u"
     _same(again, direct)

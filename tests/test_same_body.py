@@ -316,11 +316,11 @@ def assert_same_run(a, b):
 
 @pytest.mark.parametrize("com", [[0, 0, 0.04], [0.0, -0.0, 0.04]])
 def test_a_centre_of_mass_on_axis_3_is_the_same_body_as_l(com):
-    """com = [0, 0, l] is l: the same formulation (the Euler angles, the cheapest here), model,
+    """com = [0, 0, l] is l: the same formulation (reduced-u, the cheapest here), model,
     nfev and numbers; the scene is stored and written back as l."""
     plain = derive.simulate(TOP)
     other = derive.simulate(spelt(gravity={"M": 0.1, "g": 9.81, "com": com}))
-    assert plain.formulation == "euler-angles" and plain.model == "heavy_top"
+    assert plain.formulation == "reduced-u" and plain.model == "reduced_u_sym_gravity"
     assert_same_run(other, plain)
     assert other.scene == plain.scene
     assert other.scene.to_dict() == plain.scene.to_dict()
@@ -334,7 +334,7 @@ def test_zero_damping_runs_the_undamped_kernel_and_says_so():
     plain = derive.simulate(TOP)
     damped0 = derive.simulate(spelt(damping={"c": 0.0}))
     assert_same_run(damped0, plain)
-    assert damped0.model == "heavy_top" and damped0.effects == ("gravity",)
+    assert damped0.model == "reduced_u_sym_gravity" and damped0.effects == ("gravity",)
     assert damped0.scene.damping.c == 0.0  # what the scene said is still there
     # ... while any c > 0 keeps its term (and is not the conservative run)
     damped = derive.simulate(spelt(damping={"c": 1e-7}))
@@ -381,7 +381,7 @@ def test_cli_json_names_the_model_that_ran(tmp_path):
     plain, template = summaries
     for key in ("formulation", "model", "effects", "nfev", "energy_drift"):
         assert template[key] == plain[key], key
-    assert plain["model"] == "heavy_top" and plain["effects"] == ["gravity"]
+    assert plain["model"] == "reduced_u_sym_gravity" and plain["effects"] == ["gravity"]
 
 
 def test_a_batch_mixing_zero_and_nonzero_damping_runs_one_damped_model():
@@ -442,7 +442,7 @@ def test_a_batch_refuses_a_scene_that_cannot_give_an_acting_effect_its_numbers()
     """Zero damping and no [damping] table are the same body (one batch, undamped); c > 0 beside
     a scene without the table is refused (nothing gives that scene's c), naming the scene."""
     runs = derive.simulate_batch([spelt(damping={"c": 0.0}), TOP])
-    assert [r.model for r in runs] == ["heavy_top", "heavy_top"]
+    assert [r.model for r in runs] == ["reduced_u_sym_gravity", "reduced_u_sym_gravity"]
     with pytest.raises(derive.SceneError, match="a batch needs the same effects"):
         derive.simulate_batch([TOP, spelt(damping={"c": 1e-7})])
     with pytest.raises(derive.SceneError, match="a batch needs the same effects"):

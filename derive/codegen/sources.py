@@ -28,6 +28,8 @@ from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, c_code
 SHIPPED = (
     ("euler-angles", True, ()),
     ("reduced", True, ()),
+    ("reduced-u", True, ("gravity",)),
+    ("reduced-u", True, ()),
     ("euler-poisson", False, ()),
     ("euler-poisson", True, ()),
     ("euler-poisson", True, ("gravity",)),

@@ -14,6 +14,7 @@
    p_α = p_γ at β = 0, p_α = −p_γ at β = π, as the kernel receives them. Without a Routh
    reduction (an asymmetric body, damping, gravity off axis 3) the range is not known and the
    singular formulations are not chosen.
+4. A formulation is not chosen for a method whose driver its entry's ``not_chosen_for`` names.
 """
 from __future__ import annotations
 
@@ -25,6 +26,13 @@ from derive.symbolic.formulations import REGISTRY
 from derive.methods.registry import DEFAULT_METHOD, compiled_methods, method_reason
 from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import choose_method, inputs_of, params_of
+
+
+def not_chosen(method: str, formulation: str) -> str | None:
+    """Why auto does not choose ``formulation`` for the compiled ``method`` (the registry
+    entry's ``not_chosen_for``, by the method's driver), or None."""
+    driver = compiled_methods()[method].driver if method in compiled_methods() else None
+    return REGISTRY[formulation].not_chosen_for.get(driver)
 
 
 def _known_cost(key) -> float | None:
@@ -43,7 +51,7 @@ def pole_mode(name: str) -> int:
     """The C drivers' ``pole_check`` for a formulation: 0 none, 1 clear of both poles, 2 clear
     or meeting a pole only where the reduced equations are regular."""
     f = REGISTRY[name]
-    return 0 if not f.singular else 2 if f.needs_routh else 1
+    return 0 if not f.singular else f.pole_check or (2 if f.needs_routh else 1)
 
 
 def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
@@ -52,8 +60,8 @@ def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
     only formulations the scene's method can run (a splitting method: Euler–Poisson).
     ``effects``: the model's effects when they are not the scene's own (a batch's or a sweep's
     model has every effect that acts at any of its points)."""
-    if scene.simulate.formulation != "auto":
-        return [(scene.simulate.formulation, 0)]
+    if scene.simulate.formulation != "auto":  # asked for by name: only its own pole check
+        return [(scene.simulate.formulation, REGISTRY[scene.simulate.formulation].pole_check)]
     effects = scene.effects if effects is None else effects
     out = []
     for name, mode in _structural(scene.symmetric, effects, scene.simulate.method,
@@ -74,7 +82,7 @@ def _structural(symmetric, effects, method, version) -> tuple:
     out = []
     routh = has_routh(symmetric, effects)
     for name in _by_cost(symmetric, effects, version):
-        if method_reason(method, name, effects):
+        if method_reason(method, name, effects) or not_chosen(method, name):
             continue
         mode = pole_mode(name)
         if mode and not routh:

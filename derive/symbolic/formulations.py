@@ -14,7 +14,14 @@ Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeS
    a formulation only when the derived β range keeps clear of it (:mod:`derive.sim.auto`).
 5. ``needs_routh``: True when the formulation is exact only for conserved p_α, p_γ (the reduced
    top): it takes their values from the init map, as parameters.
-6. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
+6. ``pole_check``: the pole check every run of the formulation carries, whoever chose it (1:
+   the motion keeps |sin β| ≥ ``POLE_CLEARANCE``), or 0: only the one ``auto`` gives it. The
+   reduced-u form cannot follow the axis through a pole (u = ±1 is a turning point of u while
+   the axis goes through, and α would have to jump by π), so it refuses such a motion even when
+   asked for by name.
+7. ``not_chosen_for``: {method driver: why}: ``auto`` does not choose the formulation for those
+   methods (asked for by name, it runs).
+8. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
    Euler-angle mass matrix): a trajectory that came closer than the tolerance allows is refused.
 
 ``auto`` (see :mod:`derive.sim.auto`) tries the applicable formulations in order of the cost of
@@ -26,7 +33,7 @@ Nothing here imports SymPy.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 from derive.symbolic import effects as fx
@@ -75,6 +82,18 @@ def _reduced(scene) -> str | None:
     return _no_damping_axisymmetric(scene) or _starts_clear(scene, "reduced")
 
 
+def _reduced_u(scene) -> str | None:
+    if not scene.symmetric:
+        return (f"'reduced-u' needs a symmetric body (I1 == I2) so that p_gamma is conserved; "
+                f"got I1 = {scene.body.I1:g}, I2 = {scene.body.I2:g}")
+    if abs(math.sin(scene.initial.beta)) < POLE_CLEARANCE:
+        # u = cos beta cannot represent a motion at a pole (see pole_check in the contract).
+        return (f"'reduced-u' needs |sin(beta)| >= {POLE_CLEARANCE:g} all along and "
+                f"initial.beta = {scene.initial.beta:g} starts closer to a pole; use 'reduced' "
+                f"or 'auto'")
+    return _no_damping_axisymmetric(scene)
+
+
 def _always(scene) -> str | None:
     return None
 
@@ -89,6 +108,8 @@ class Formulation:
     applicable: Callable
     singular: bool = False
     needs_routh: bool = False
+    pole_check: int = 0
+    not_chosen_for: dict = field(default_factory=dict)
     pole_loss: bool = False
 
 
@@ -98,6 +119,15 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("reduced", "beta alone with conserved p_alpha, p_gamma; symmetric body, "
                 "axisymmetric conservative effects", "reduced", _reduced, singular=True,
                 needs_routh=True),
+    Formulation("reduced-u", "u = cos beta and its rate with conserved p_alpha, p_gamma, E': "
+                "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
+                "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
+                singular=True, needs_routh=True, pole_check=1, not_chosen_for={"taylor": (
+                    "the Taylor step control leaves the quadratures alpha, gamma out of its "
+                    "norm (codegen.taylor.controlled_states: they feed nothing back), but "
+                    "their integrand 1/(1 -+ u(t)) is singular where u(t) = +-1 in complex "
+                    "time, nearer than any singularity of u itself: steps chosen from u "
+                    "alone leave alpha and gamma several times the tolerance off")}),
     Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
                 "quaternion", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "

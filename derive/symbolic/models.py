@@ -10,6 +10,9 @@ core (`rotations`, `lagrangian`, `stability`) and the effects it is given (`effe
                     axisymmetric conservative effects): β̈ = −V_eff′(β)/I₁, α̇ and γ̇ from the
                     momenta, written so that no term cancels near β = 0 or π
                     (`half_angle_partial_fractions`).
+* ``reduced-u``     y = (α, u, γ, u̇), u = cos β, with the conserved p_α, p_γ, E′ as parameters:
+                    ü = f′(u)/2 from the Routh polynomial u̇² = f(u), α̇ and γ̇ as quadratures
+                    in partial fractions in u; the axis cannot pass a pole (`reduced_u`).
 * ``quaternion``    y = (q₀, q₁, q₂, q₃, ω̃₁, ω̃₂, ω̃₃), q̇ = ½ q ⊗ (0, ω̃), I ω̃̇ = (I ω̃) × ω̃ + τ̃:
                     no coordinate singularity. R(q) is divided by |q|², so the equations are
                     invariant under q → s q and a drifting norm does not bias the physics.
@@ -303,6 +306,105 @@ def reduced(effects=()) -> Model:
                  effects=tuple(e.name for e in effects), symmetric=True)
 
 
+#: The reduced-u model's coordinate u = cos β and its rate u̇ (states), and the conserved
+#: E′ = E − p_γ²/(2I₃) (a parameter derived by the init map).
+u, u_d = sp.symbols("u u_d", real=True)
+E_prime = sp.Symbol("E_prime", real=True)
+
+
+def _cos_beta_form(expr):
+    """A function of β that is rational in cos β (after sin²β → 1 − cos²β, and the half-angle
+    powers sin²(β/2) = (1 − u)/2, cos²(β/2) = (1 + u)/2) written in u = cos β."""
+    e = expr.subs({sp.sin(beta / 2): sp.sqrt((1 - u) / 2), sp.cos(beta / 2): sp.sqrt((1 + u) / 2)})
+    e = trig_reduce(e).subs(sp.sin(beta) ** 2, 1 - sp.cos(beta) ** 2).subs(sp.cos(beta), u)
+    if e.has(beta):
+        raise ValueError(f"{expr} is not a function of cos(beta)")
+    # Each term (or guarded branch) factored: (p_α − p_γ)/(2 I₁ (1 − u)), not a nest of halves.
+    return e.replace(lambda x: isinstance(x, sp.Piecewise),
+                     lambda x: sp.Piecewise(*((sp.factor(v), c) for v, c in x.args)))
+
+
+def reduced_u(effects=()) -> Model:
+    """The symmetric top reduced to u = cos β, integrated as a second-order polynomial equation,
+    with α and γ as quadratures (axisymmetric conservative effects only).
+
+    From the Routh reduction (`lagrangian.Reduction`), E′ = ½ I₁ β̇² + V_eff(β) is conserved, and
+    with u = cos β (u̇ = −sin β β̇, β̇² = u̇²/(1 − u²))
+
+        u̇² = f(u) = (2/I₁)(1 − u²)(E′ − V_eff(u)),
+
+    a polynomial (the cubic of the notes for gravity: V_eff's centrifugal term
+    (p_α − p_γ u)²/(2 I₁ (1 − u²)) loses its denominator). Differentiating, 2 u̇ ü = f′(u) u̇, so
+
+        ü = f′(u)/2,
+
+    regular everywhere (Horner form in u). α̇ = (p_α − p_γ u)/(I₁ (1 − u²)) in partial fractions,
+    (p_α − p_γ)/(2 I₁ (1 − u)) + (p_α + p_γ)/(2 I₁ (1 + u)) with guarded zero numerators
+    (`half_angle_partial_fractions`), and γ̇ = p_γ/I₃ − u α̇. States (α, u, γ, u̇), in the order of
+    the reduced model's (α, β, γ, β̇); parameters (I₁, I₃, the effects', p_α, p_γ, E′), the last
+    three derived by the init map: p_γ = I₃ ω̃₃, p_α = p_γ + (p_α − p_γ) as in `reduced`, and
+    E′ = T + V − p_γ²/(2I₃) = ½ I₁ (ω̃₁² + ω̃₂²) + V (the spin term cancels symbolically, so
+    nothing cancels in rounding). β = atan2(√((1 − u)(1 + u)), u) ∈ (0, π) for the outputs: the
+    axis cannot pass through a pole in this form (u = ±1 is a turning point of u while the axis
+    goes through; α would have to jump by π), so every run carries the pole check (mode 1).
+    """
+    effects = tuple(effects)
+    if any(not (e.conservative and e.axisymmetric) for e in effects):
+        raise ValueError("the reduced-u formulation needs conserved p_alpha, p_gamma: "
+                         "axisymmetric conservative effects only")
+    base = reduced(effects)  # the β model: its init map for p_α, p_γ and its Routh derivation
+    sym = fx.Symbols(effects)
+    R = ZYZ.matrix()
+    V = fx.potential(effects, R, sym)
+    system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
+    red = Reduction(system)
+    Veff = red.effective_potential
+    f = sp.cancel((1 - u**2) * (2 / I1) * (E_prime - _cos_beta_form(Veff)))
+    if not f.is_polynomial(u):
+        raise ValueError(f"the Routh function f(u) = {f} is not a polynomial in u")
+    coeffs = sp.Poly(sp.diff(f, u) / 2, u).all_coeffs()
+    udd = sp.S.Zero
+    for c in coeffs:  # Horner: one multiplication by u per degree
+        udd = udd * u + sp.factor(c)
+    ad = _cos_beta_form(half_angle_partial_fractions(red.rates_from_momenta[RATES[0]]))
+    gd = p_gamma / I3 - u * ad
+    sb = sp.sqrt((1 - u) * (1 + u))  # sin β ≥ 0, no cancellation in 1 − u²
+    at_u = {sp.sin(beta): sb, sp.cos(beta): u}
+    bd = -u_d / sb
+    Ru = R.subs(at_u)
+    w = ZYZ.omega_body_sum().subs({RATES[0]: ad, RATES[1]: bd, RATES[2]: gd},
+                                  simultaneous=True).subs(at_u)
+    out = _outputs(Ru, w, _moments(True), effects, sym, (alpha, sp.atan2(sb, u), gamma))
+    # From the state (u, u̇), so that it shows the integration's drift: E = ½ I₁ β̇² + p_γ²/(2I₃)
+    # + V_eff, V_eff in partial fractions (the centrifugal term without cancellation).
+    Veff_u = _cos_beta_form(half_angle_partial_fractions(Veff))
+    out["energy"] = sp.Rational(1, 2) * I1 * u_d**2 / (sb**2) + p_gamma**2 / (2 * I3) + Veff_u
+    out["p_alpha"], out["p_gamma"] = p_alpha, p_gamma
+    params = base.params + (E_prime,)
+    # E′ = T + V − p_γ²/(2I₃) with p_γ = I₃ ω̃₃, simplified symbolically (the spin term cancels),
+    # then at the inputs' ω̃ (`_omega_in`: converted from the rates where the scene gave them).
+    wsym = sp.Matrix(sp.symbols("omega1:4", real=True))
+    moments = _moments(True)
+    T = sp.Rational(1, 2) * sum(m * wi**2 for m, wi in zip(moments, wsym))
+    Ep_w = sp.expand(T - (I3 * wsym[2]) ** 2 / (2 * I3))
+    if Ep_w.has(wsym[2]):
+        raise ValueError("E' depends on the spin: p_gamma is not the momentum of gamma")
+    Ep_in = Ep_w.subs(dict(zip(wsym, _omega_in())), simultaneous=True) \
+        + fx.potential(effects, ZYZ.matrix(_A, _B, _G), sym)
+    init_params = base.init_params + ((params.index(E_prime), Ep_in),)
+    bd_in = base.init[3]  # β̇ at the start, given or from ω̃
+    ud_in = sp.diff(sp.cos(beta), beta).subs(beta, _B) * bd_in  # u̇ = −sin β β̇
+    checks = routh_checks(effects, sym, E_prime, p_alpha, p_gamma, Veff)
+    checks["cos_beta"] = u
+    return Model(model_name("reduced-u", True, [e.name for e in effects]), "reduced-u",
+                 "symmetric top reduced to u = cos(beta) (Routh): u'' = f'(u)/2 from the Routh "
+                 "polynomial, conserved p_alpha, p_gamma, E' as parameters, alpha and gamma as "
+                 "quadratures in partial fractions",
+                 (alpha, u, gamma, u_d), params, (ad, u_d, gd, udd), out,
+                 init=(_A, sp.cos(_B), _G, ud_in), init_params=init_params, checks=checks,
+                 effects=tuple(e.name for e in effects), symmetric=True)
+
+
 def routh_checks(effects, sym, E_prime, pa, pg, Veff=None) -> dict:
     """Where the β motion can go, from the Routh reduction: with u = cos β,
 
@@ -415,6 +517,7 @@ def euler_poisson(symmetric: bool, effects=()) -> Model:
 BUILDERS = {
     "euler-angles": euler_angles,
     "reduced": lambda symmetric, effects: reduced(effects),
+    "reduced-u": lambda symmetric, effects: reduced_u(effects),
     "quaternion": quaternion,
     "euler-poisson": euler_poisson,
 }
@@ -427,8 +530,8 @@ def build(formulation: str, symmetric: bool, effect_names=()) -> Model:
         if effs:
             raise ValueError("the 'euler' formulation is torque-free")
         model = euler_free(symmetric)
-    elif formulation == "reduced" and not symmetric:
-        raise ValueError("the reduced formulation needs a symmetric body (I1 = I2)")
+    elif formulation in ("reduced", "reduced-u") and not symmetric:
+        raise ValueError(f"the {formulation} formulation needs a symmetric body (I1 = I2)")
     elif formulation not in BUILDERS:
         raise ValueError(f"unknown formulation {formulation!r}")
     else:

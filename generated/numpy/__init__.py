@@ -5,6 +5,8 @@ from . import heavy_top_reduced
 from . import rigid_body
 from . import euler_angles_sym
 from . import reduced_sym
+from . import reduced_u_sym_gravity
+from . import reduced_u_sym
 from . import euler_poisson_asym
 from . import euler_poisson_sym
 from . import euler_poisson_sym_gravity
@@ -12,4 +14,4 @@ from . import euler_poisson_sym_gravity_damping
 from . import euler_poisson_sym_gravity_general
 from . import euler_poisson_asym_gravity_general
 
-MODELS = ("euler_free", "heavy_top", "heavy_top_reduced", "rigid_body", "euler_angles_sym", "reduced_sym", "euler_poisson_asym", "euler_poisson_sym", "euler_poisson_sym_gravity", "euler_poisson_sym_gravity_damping", "euler_poisson_sym_gravity_general", "euler_poisson_asym_gravity_general", )
+MODELS = ("euler_free", "heavy_top", "heavy_top_reduced", "rigid_body", "euler_angles_sym", "reduced_sym", "reduced_u_sym_gravity", "reduced_u_sym", "euler_poisson_asym", "euler_poisson_sym", "euler_poisson_sym_gravity", "euler_poisson_sym_gravity_damping", "euler_poisson_sym_gravity_general", "euler_poisson_asym_gravity_general", )
