@@ -98,7 +98,7 @@ def _prod(it):
 
 
 def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
-                   has_angles: bool = False) -> dict[str, str]:
+                   has_angles: bool = False, pole_clearance: float = POLE_CLEARANCE) -> dict[str, str]:
     """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``.
 
     The C includes ``"<prefix>.h"`` (the model ABI: ``<prefix>_NY``, ``<prefix>_NP``,
@@ -123,7 +123,7 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
         "lincomb": lincomb,
         "newton_halvings": NEWTON_HALVINGS,
         "has_angles": has_angles,
-        "pole_clearance": POLE_CLEARANCE,
+        "pole_clearance": pole_clearance,  # the formulation's (Formulation.clearance)
     }
     ctx["any_implicit"] = any(m["driver"] == "implicit" for m in ctx["methods"])
     # One explicit step function per tableau, named after the first method that runs it and

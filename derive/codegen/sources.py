@@ -18,7 +18,7 @@ from derive.methods.splitting import applicable as splitting_applicable
 from derive.symbolic.models import Model
 from derive.codegen.render import render
 from derive.codegen.solvers import render_solvers
-from derive.symbolic.formulations import INPUT_NAMES
+from derive.symbolic.formulations import INPUT_NAMES, POLE_CLEARANCE, REGISTRY as FORMULATIONS
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, c_code
 
 
@@ -53,6 +53,13 @@ def description_json(spec) -> str:
     }, indent=1, sort_keys=True) + "\n"
 
 
+def _clearance(formulation: str) -> float:
+    """The |sin β| a formulation's pole check keeps (the registry's; the default for a model
+    outside it, e.g. Euler's equations, whose check answers 0 anyway)."""
+    f = FORMULATIONS.get(formulation)
+    return f.clearance if f is not None else POLE_CLEARANCE
+
+
 def model_sources(model: Model) -> dict[str, str]:
     """C header, C source and NumPy module of one model, plus its C solver kernels (the
     Runge–Kutta family, the splittings where they apply, the Taylor methods where every
@@ -64,8 +71,8 @@ def model_sources(model: Model) -> dict[str, str]:
         f"c/{model.name}.c": render("c/model.c.j2", **c_ctx),
         f"numpy/{model.name}.py": render("numpy/model.py.j2", **np_ctx),
     }
-    for fname, text in render_solvers(model.name, len(model.states),
-                                      has_angles=c_ctx["has_angles"]).items():
+    for fname, text in render_solvers(model.name, len(model.states), has_angles=c_ctx["has_angles"],
+                                      pole_clearance=_clearance(model.formulation)).items():
         files[f"c/{fname}"] = text
     if splitting_applicable(model) is None:
         files.update({f"c/{k}": v for k, v in render_splitting(model).items()})

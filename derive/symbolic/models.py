@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.symbolic import effects as fx
-from derive.symbolic.formulations import model_name
+from derive.symbolic.formulations import REGISTRY as FORMULATIONS, model_name
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
 from derive.symbolic.stability import euler_rhs
@@ -394,7 +394,8 @@ def reduced_u(effects=()) -> Model:
     init_params = base.init_params + ((params.index(E_prime), Ep_in),)
     bd_in = base.init[3]  # β̇ at the start, given or from ω̃
     ud_in = sp.diff(sp.cos(beta), beta).subs(beta, _B) * bd_in  # u̇ = −sin β β̇
-    checks = routh_checks(effects, sym, E_prime, p_alpha, p_gamma, Veff)
+    checks = routh_checks(effects, sym, E_prime, p_alpha, p_gamma, Veff,
+                          clearance=FORMULATIONS["reduced-u"].clearance)
     checks["cos_beta"] = u
     return Model(model_name("reduced-u", True, [e.name for e in effects]), "reduced-u",
                  "symmetric top reduced to u = cos(beta) (Routh): u'' = f'(u)/2 from the Routh "
@@ -405,13 +406,15 @@ def reduced_u(effects=()) -> Model:
                  effects=tuple(e.name for e in effects), symmetric=True)
 
 
-def routh_checks(effects, sym, E_prime, pa, pg, Veff=None) -> dict:
+def routh_checks(effects, sym, E_prime, pa, pg, Veff=None, clearance=None) -> dict:
     """Where the β motion can go, from the Routh reduction: with u = cos β,
 
         u̇² = f(u) = (1 − u²)(2/I₁)(E′ − V(u)) − ((p_α − p_γ u)/I₁)²,   E′ = ½ I₁ β̇² + V_eff(β),
 
     and u moves between the roots of f around u₀ = cos β₀ (f(u₀) ≥ 0, f(±1) ≤ 0). So the motion
-    keeps |sin β| ≥ s (s = ``formulations.POLE_CLEARANCE``) exactly when |u₀| < u_c and
+    keeps |sin β| ≥ s (s = ``clearance``, by default ``formulations.POLE_CLEARANCE``; the
+    formulation's own, ``Formulation.clearance``, which the C ``pole_clear`` is rendered with)
+    exactly when |u₀| < u_c and
     f(u_c) < 0 and f(−u_c) < 0, u_c = √(1 − s²): f changes sign once between u₀ and each pole.
     ``E_prime``, ``pa``, ``pg`` are the formulation's expressions of E′, p_α, p_γ (parameters
     in the reduced model, functions of the state in the Euler-angle one). Returns f_top = f(u_c),
@@ -430,7 +433,7 @@ def routh_checks(effects, sym, E_prime, pa, pg, Veff=None) -> dict:
         centrifugal = (p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2)
         if sp.simplify(trig_reduce(sp.together(Veff - centrifugal - V))) != 0:
             raise ValueError("V_eff is not the centrifugal term plus V")
-    s = sp.Rational(1, 1) / sp.Integer(round(1 / POLE_CLEARANCE))
+    s = sp.Rational(1, 1) / sp.Integer(round(1 / (clearance or POLE_CLEARANCE)))
     uc = sp.sqrt(1 - s**2)
 
     def f(at):

@@ -182,9 +182,9 @@ int reduced_u_sym_checks(const double *y, const double *p, double *out)
     const double E_prime = p[4];
     (void)t;
 
-    const double x0 = (1.0/500000.0)*E_prime/I1;
+    const double x0 = (1.0/50.0)*E_prime/I1;
     const double x1 = 1.0/(I1*I1);
-    const double x2 = (3.0/1000.0)*sqrt(111111)*p_gamma;
+    const double x2 = (3.0/10.0)*sqrt(11)*p_gamma;
     out[0] = x0 - x1*((p_alpha - x2)*(p_alpha - x2));
     out[1] = x0 - x1*((p_alpha + x2)*(p_alpha + x2));
     out[2] = u;

@@ -201,10 +201,10 @@ int reduced_u_sym_gravity_checks(const double *y, const double *p, double *out)
     (void)t;
 
     const double x0 = 1.0/(I1*I1);
-    const double x1 = (3.0/1000.0)*sqrt(111111);
+    const double x1 = (3.0/10.0)*sqrt(11);
     const double x2 = p_gamma*x1;
     const double x3 = M*g*l*x1;
-    const double x4 = (1.0/500000.0)/I1;
+    const double x4 = (1.0/50.0)/I1;
     out[0] = -x0*((p_alpha - x2)*(p_alpha - x2)) + x4*(E_prime - x3);
     out[1] = -x0*((p_alpha + x2)*(p_alpha + x2)) + x4*(E_prime + x3);
     out[2] = u;

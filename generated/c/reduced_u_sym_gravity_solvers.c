@@ -165,13 +165,13 @@ static void derive_reduced_u_sym_gravity_canonical_angles(long n, double *a, dou
 
 /* Does the motion from state y keep clear of the poles, by the model's Routh check (reduced_u_sym_gravity_checks:
  * f(u_c), f(-u_c), u0, p_alpha - p_gamma, p_alpha + p_gamma; see models.routh_checks)?
- * mode 1: |sin beta| >= 0.001 all along; mode 2: that, or a pole is met only where the
+ * mode 1: |sin beta| >= 0.1 all along; mode 2: that, or a pole is met only where the
  * reduced equations are regular (p_alpha = p_gamma at beta = 0, p_alpha = -p_gamma at beta = pi).
  * A model without the check (no Routh reduction) answers 0. */
 int reduced_u_sym_gravity_pole_clear(const double *y, const double *p, int mode)
 {
 #if defined(reduced_u_sym_gravity_NCHECKS) && reduced_u_sym_gravity_NCHECKS == 5
-    const double uc = sqrt(1.0 - 0.001 * 0.001);
+    const double uc = sqrt(1.0 - 0.1 * 0.1);
     double c[5];
     int top, bottom;
     reduced_u_sym_gravity_checks(y, p, c);
