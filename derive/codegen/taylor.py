@@ -78,12 +78,13 @@ class Decomposition:
     params: list = field(default_factory=list)     # [(index, name)] of the parameters used
     time_node: int | None = None
     n_nodes: int = 0
-    # The outputs (with ``decompose(spec, outputs=True)``): per output of the model's output
-    # map, ("u", k) a series node, ("c", text) a constant, or None (evaluated pointwise from
-    # the state, see :func:`series_safe`); the pointwise ones as (index, SymPy expression).
+    # The outputs (with ``decompose(spec, outputs=True)``): the series of their sin, cos and
+    # exp calls (("u", k), the columns), and every output (index, SymPy expression) in the
+    # states and the columns' symbols.
     columns: list = field(default_factory=list)
+    column_symbols: list = field(default_factory=list)
     pointwise: list = field(default_factory=list)
-    last: list = field(default_factory=list)       # [Node] the outputs need at order p
+    last: list = field(default_factory=list)       # [Node] the columns need at order p
 
     @property
     def rules(self) -> list[str]:
@@ -338,9 +339,9 @@ RULE_NAMES = ("const", "add", "scale", "mul", "sqr", "div", "sqrt", "pow", "exp"
 
 def decompose(spec: KernelSpec, outputs: bool = False) -> Decomposition:
     """The kernel spec's right-hand side (with its domain guards) as elementary operations;
-    with ``outputs``, the model's outputs too (:attr:`Decomposition.columns`): those that
-    :func:`series_safe` admits become series nodes of their own (sharing the right-hand
-    side's), the others are left to a pointwise evaluation."""
+    with ``outputs``, the model's outputs too (:attr:`Decomposition.columns`,
+    :attr:`Decomposition.pointwise`): their sin, cos and exp calls become series nodes
+    (sharing the right-hand side's), the outputs expressions in those."""
     b = _Builder(spec)
     block = spec.rhs
     for name, e in block.temps:
@@ -356,24 +357,36 @@ def decompose(spec: KernelSpec, outputs: bool = False) -> Decomposition:
 
 
 def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
+    """The outputs' transcendental calls (sin, cos, exp of the controlled states, where
+    :func:`series_safe`) as series nodes — the columns — and every output as an expression of
+    the states and those columns (named ``tv<c>``), evaluated per sample with those calls
+    read from the columns."""
     m = spec.model
     _, exprs = _flatten_observables(m.outputs)
     exprs = [sp.sympify(e) for e in exprs]
-    safe = [series_safe(m, e) for e in exprs]
+    states = set(m.states) | {b.t}
+    # A call of a state the step control leaves out (cos γ of the spin) stays a libm call: the
+    # step follows the controlled states, and over it a fast cyclic angle turns by radians,
+    # more than a series of the step's order resolves (measured: such columns failed
+    # outputs_converged on 4 steps out of 5 of the reference top).
+    cyclic = {s for s, c in zip(m.states, controlled_states(m)) if not c}
+    calls: list = []
+    for e in exprs:
+        for sub in sp.preorder_traversal(e):
+            if (isinstance(sub, _ENTIRE) and sub.free_symbols & states
+                    and not sub.free_symbols & cyclic and sub not in calls
+                    and series_safe(m, sub)):
+                calls.append(sub)
     b.obs_phase = True
-    # The outputs' own CSE, with temporaries named apart from the right-hand side's.
-    block = Block.of([e for e, ok in zip(exprs, safe) if ok], "tobs")
-    for name, e in block.temps:
-        b.temp(name, e)
-    series = iter(b.of(e) for e in block.outputs)
-    b.d.columns = [next(series) if ok else None for ok in safe]
-    b.d.pointwise = [(j, e) for j, (e, ok) in enumerate(zip(exprs, safe)) if not ok]
+    b.d.columns = [b.of(c) for c in calls]
     b.obs_phase = False
-    b.d.params = sorted(set(b.d.params) | set(block.uses(m.params)))
-    # The nodes the outputs read at order p (the passes 0..p-1 give the states through p and
+    names = [sp.Symbol(f"tv{c}") for c in range(len(calls))]
+    b.d.column_symbols = names
+    b.d.pointwise = [(j, e.xreplace(dict(zip(calls, names)))) for j, e in enumerate(exprs)]
+    # The nodes the columns read at order p (the passes 0..p-1 give the states through p and
     # every node through p-1), in evaluation order.
     by_index = {n.index: n for n in b.d.nodes}
-    need, todo = set(), [op[1] for op in b.d.columns if op is not None and op[0] == "u"]
+    need, todo = set(), [op[1] for op in b.d.columns]
     while todo:
         k = todo.pop()
         if k in need or k not in by_index:  # a state or the time: already through order p
@@ -484,9 +497,7 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     rhs_nodes = [n for n in d.nodes if n.code and not n.obs]
     obs_nodes = [n for n in d.nodes if n.code and n.obs]
     jet_text = [n.code for n in rhs_nodes] + d.guards + [op[1] for op in d.outputs if op[0] == "c"]
-    columns = [(j, op) for j, op in enumerate(d.columns) if op is not None]
-    obs_text = ([n.code for n in obs_nodes + d.last]
-                + [op[1] for _, op in columns if op[0] == "c"])
+    obs_text = [n.code for n in obs_nodes + d.last]
     ny = len(model.states)
     ctx = {
         "prefix": model.name, "ny": ny, "d": d, "coef": coef,
@@ -494,9 +505,9 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
         "controlled": controlled_states(model), "states": model.state_names,
         "rhs_nodes": rhs_nodes, "obs_nodes": obs_nodes,
         "jet_scope": _scope(jet_text, d), "obs_scope": _scope(obs_text, d),
-        # the outputs: (output index, column of the coefficient table w, operand)
-        "columns": [(j, ny + c, op) for c, (j, op) in enumerate(columns)],
-        "nobs": len(d.columns),
+        # the columns of the coefficient table w past the states: (column, operand)
+        "columns": [(ny + c, op) for c, op in enumerate(d.columns)],
+        "nobs": len(d.pointwise),
         "has_angles": spec.observable_names[:3] == ("alpha", "beta", "gamma"),
         "pointwise": _pointwise(model, d),
     }
@@ -518,8 +529,8 @@ def _scope(texts: list[str], d: Decomposition) -> tuple[list, list]:
 
 
 def _pointwise(model, d: Decomposition) -> dict | None:
-    """The outputs evaluated pointwise (from the evaluated state at each sample), printed as a
-    C function body: their own CSE, the states and parameters they read."""
+    """The outputs at a sample from the states and the columns there, printed as a C function
+    body: their own CSE, the states, columns and parameters they read."""
     if not d.pointwise:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
@@ -528,6 +539,7 @@ def _pointwise(model, d: Decomposition) -> dict | None:
     uses_t = any(t in e.free_symbols for _, e in block.temps) or any(
         t in e.free_symbols for e in block.outputs)
     return {"states": block.uses(model.states), "params": block.uses(model.params),
+            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)],
             "uses_t": uses_t, "temps": temps,
             "outputs": [(j, c) for (j, _), c in zip(d.pointwise, outs)]}
 
