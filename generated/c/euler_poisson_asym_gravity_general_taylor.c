@@ -304,7 +304,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const d
     double w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], tau;
     double o[18];
     int series = 1;
-    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -348,13 +348,23 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const d
         st->nfev++;
         if ((i = derive_euler_poisson_asym_gravity_general_taylor_jet(t, y, p, order, u)))
             return derive_euler_poisson_asym_gravity_general_taylor_fail_rc(st, t, i);
+        /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
+         * evaluated state, checked there): one sum over them, the culprit looked for only then. */
+        chk = 0.0;
         for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
-            for (j = 1; j <= order; ++j)
-                if (!isfinite(u[i][j]))
-                    return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            chk += u[i][order - 1] + u[i][order];
+        if (!isfinite(chk)) {
+            for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
+                for (j = 1; j <= order; ++j)
+                    if (!isfinite(u[i][j]))
+                        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+        }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (9 of 9: all). */
+         * (1 when rtol = 0), over the states that feed something back (9 of 9: all).
+         * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
+         * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;
         sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
