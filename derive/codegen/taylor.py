@@ -31,11 +31,12 @@ powers a division, ½ a sqrt. Order 0 of every rule is the function itself.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.codegen.kernelspec import KernelSpec, c_expr
+from derive.codegen.kernelspec import Block, KernelSpec, _flatten_observables, c_expr
 from derive.codegen.render import render
 from derive.methods.taylor import METHODS, TaylorMethod
 
@@ -53,6 +54,15 @@ class Node:
     index: int
     rule: str
     code: str
+    obs: bool = False  # made for an output (computed only when the outputs are wanted)
+
+    @property
+    def deps(self) -> set[int]:
+        """The nodes this one reads (for a pair's second node, the first one, which computes
+        both)."""
+        if not self.code:
+            return {self.index - 1}
+        return {int(k) for k in re.findall(r"u\[(\d+)\]", self.code)} - {self.index}
 
 
 @dataclass
@@ -68,6 +78,13 @@ class Decomposition:
     params: list = field(default_factory=list)     # [(index, name)] of the parameters used
     time_node: int | None = None
     n_nodes: int = 0
+    # The outputs (with ``decompose(spec, outputs=True)``): the series of their sin, cos and
+    # exp calls (("u", k), the columns), and every output (index, SymPy expression) in the
+    # states and the columns' symbols.
+    columns: list = field(default_factory=list)
+    column_symbols: list = field(default_factory=list)
+    pointwise: list = field(default_factory=list)
+    last: list = field(default_factory=list)       # [Node] the columns need at order p
 
     @property
     def rules(self) -> list[str]:
@@ -99,13 +116,15 @@ class _Builder:
         self.t = sp.Symbol("t")
         self.next = self.d.ny
         self.const_series: dict = {}
+        self.obs_phase = False
 
     # -- nodes ----------------------------------------------------------------------------
     def node(self, rule: str, code: str) -> tuple:
         """A new node; in ``code``, ``@`` is its coefficient n and ``#`` its array."""
         k = self.next
         self.next += 1
-        self.d.nodes.append(Node(k, rule, code.replace("@", _u(k)).replace("#", f"u[{k}]")))
+        self.d.nodes.append(Node(k, rule, code.replace("@", _u(k)).replace("#", f"u[{k}]"),
+                                 self.obs_phase))
         return ("u", k)
 
     def series(self, op) -> int:
@@ -318,8 +337,11 @@ RULE_NAMES = ("const", "add", "scale", "mul", "sqr", "div", "sqrt", "pow", "exp"
               "sincos", "atan2", "piecewise")
 
 
-def decompose(spec: KernelSpec) -> Decomposition:
-    """The kernel spec's right-hand side (with its domain guards) as elementary operations."""
+def decompose(spec: KernelSpec, outputs: bool = False) -> Decomposition:
+    """The kernel spec's right-hand side (with its domain guards) as elementary operations;
+    with ``outputs``, the model's outputs too (:attr:`Decomposition.columns`,
+    :attr:`Decomposition.pointwise`): their sin, cos and exp calls become series nodes
+    (sharing the right-hand side's), the outputs expressions in those."""
     b = _Builder(spec)
     block = spec.rhs
     for name, e in block.temps:
@@ -328,8 +350,113 @@ def decompose(spec: KernelSpec) -> Decomposition:
     b.d.guards = [f"({b.order0(g)})" for g in block.outputs[:nd]]
     b.d.outputs = [b.of(e) for e in block.outputs[nd:]]
     b.d.params = block.uses(spec.model.params)
+    if outputs:
+        _add_outputs(b, spec)
     b.d.n_nodes = b.next
     return b.d
+
+
+def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
+    """The outputs' transcendental calls (sin, cos, exp of the controlled states, where
+    :func:`series_safe`) as series nodes — the columns — and every output as an expression of
+    the states and those columns (named ``tv<c>``), evaluated per sample with those calls
+    read from the columns."""
+    m = spec.model
+    _, exprs = _flatten_observables(m.outputs)
+    exprs = [sp.sympify(e) for e in exprs]
+    states = set(m.states) | {b.t}
+    # A call of a state the step control leaves out (cos γ of the spin) stays a libm call: the
+    # step follows the controlled states, and over it a fast cyclic angle turns by radians,
+    # more than a series of the step's order resolves (measured: such columns failed
+    # outputs_converged on 4 steps out of 5 of the reference top).
+    cyclic = {s for s, c in zip(m.states, controlled_states(m)) if not c}
+    calls: list = []
+    for e in exprs:
+        for sub in sp.preorder_traversal(e):
+            if (isinstance(sub, _ENTIRE) and sub.free_symbols & states
+                    and not sub.free_symbols & cyclic and sub not in calls
+                    and series_safe(m, sub)):
+                calls.append(sub)
+    b.obs_phase = True
+    b.d.columns = [b.of(c) for c in calls]
+    b.obs_phase = False
+    names = [sp.Symbol(f"tv{c}") for c in range(len(calls))]
+    b.d.column_symbols = names
+    b.d.pointwise = [(j, e.xreplace(dict(zip(calls, names)))) for j, e in enumerate(exprs)]
+    # The nodes the columns read at order p (the passes 0..p-1 give the states through p and
+    # every node through p-1), in evaluation order.
+    by_index = {n.index: n for n in b.d.nodes}
+    need, todo = set(), [op[1] for op in b.d.columns]
+    while todo:
+        k = todo.pop()
+        if k in need or k not in by_index:  # a state or the time: already through order p
+            continue
+        need.add(k)
+        todo.extend(by_index[k].deps)
+    b.d.last = [n for n in b.d.nodes if n.index in need and n.code]
+
+
+# Functions analytic everywhere: their series converge wherever their operands' do.
+_ENTIRE = (sp.sin, sp.cos, sp.exp)
+
+
+def _singular_keys(e, states) -> set | None:
+    """The operands at which ``e`` is singular (the base of a negative or fractional power,
+    the argument of a log, the pair of an atan2), or None when ``e`` holds something else
+    this check does not follow (a piecewise term whose condition depends on the state, an
+    unknown function)."""
+    if not (e.free_symbols & states) or e.is_Symbol or e.is_Number:
+        return set()
+    if e.is_Pow:
+        inner = _singular_keys(e.base, states)
+        if inner is None:
+            return None
+        if e.exp.is_Integer and e.exp >= 0:
+            return inner
+        return inner | {("pow", e.base)}
+    if e.func in (sp.log, sp.atan2) or isinstance(e, _ENTIRE) or e.is_Add or e.is_Mul:
+        keys = set()
+        for a in e.args:
+            k = _singular_keys(a, states)
+            if k is None:
+                return None
+            keys |= k
+        if e.func in (sp.log, sp.atan2):
+            keys.add((e.func.__name__, e.args))
+        return keys
+    if isinstance(e, sp.Piecewise):
+        keys = set()
+        for value, cond in e.args:
+            k = _singular_keys(value, states)
+            if k is None or (cond.free_symbols & states):
+                return None
+            keys |= k
+        return keys
+    return None
+
+
+def series_safe(model, e) -> bool:
+    """May output ``e`` be evaluated from its own Taylor series over a step?
+
+    The step is chosen from the states' coefficients, so within it the states' series converge
+    (to the tolerance); an output's series converges as well where the output is an entire
+    function of the states (sums, products, non-negative powers, sin, cos, exp) — or singular
+    only where the right-hand side itself is (the same base of a negative or fractional power,
+    log or atan2 argument: there the states' own series see the singularity). Anything else
+    (an atan2 of the outputs alone, a square root the dynamics do not take, a piecewise term
+    switching on the state) is evaluated pointwise from the evaluated state instead."""
+    states = set(model.states) | {sp.Symbol("t")}
+    keys = _singular_keys(sp.sympify(e), states)
+    if keys is None:
+        return False
+    if not keys:
+        return True
+    allowed: set = set()
+    for f in list(model.rhs) + list(model.domain):
+        k = _singular_keys(sp.sympify(f), states)
+        if k:
+            allowed |= k
+    return keys <= allowed
 
 
 def controlled_states(model) -> tuple[bool, ...]:
@@ -364,15 +491,57 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     for n in names:
         if n not in METHODS:
             raise ValueError(f"unknown Taylor method {n!r}; known: {', '.join(METHODS)}")
-    d = decompose(spec if spec is not None else KernelSpec.of(model))
+    spec = spec if spec is not None else KernelSpec.of(model)
+    d = decompose(spec, outputs=True)
     methods_ctx = [_method_context(METHODS[n]) for n in names]
+    rhs_nodes = [n for n in d.nodes if n.code and not n.obs]
+    obs_nodes = [n for n in d.nodes if n.code and n.obs]
+    jet_text = [n.code for n in rhs_nodes] + d.guards + [op[1] for op in d.outputs if op[0] == "c"]
+    obs_text = [n.code for n in obs_nodes + d.last]
+    ny = len(model.states)
     ctx = {
-        "prefix": model.name, "ny": len(model.states), "d": d, "coef": coef,
+        "prefix": model.name, "ny": ny, "d": d, "coef": coef,
         "methods": methods_ctx, "max_order": max(m["max_order"] for m in methods_ctx),
         "controlled": controlled_states(model), "states": model.state_names,
+        "rhs_nodes": rhs_nodes, "obs_nodes": obs_nodes,
+        "jet_scope": _scope(jet_text, d), "obs_scope": _scope(obs_text, d),
+        # the columns of the coefficient table w past the states: (column, operand)
+        "columns": [(ny + c, op) for c, op in enumerate(d.columns)],
+        "nobs": len(d.pointwise),
+        "has_angles": spec.observable_names[:3] == ("alpha", "beta", "gamma"),
+        "pointwise": _pointwise(model, d),
     }
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
             f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
+
+
+def _scope(texts: list[str], d: Decomposition) -> tuple[list, list]:
+    """The parameters and named constants that C ``texts`` read (constants through the
+    constants they are made of): ([(index, name)], [(name, C expression)]), in order."""
+    text = " ".join(texts)
+    consts = []
+    for name, e in reversed(d.constants):
+        if re.search(rf"\b{re.escape(name)}\b", text):
+            consts.append((name, e))
+            text += " " + e
+    params = [(i, nm) for i, nm in d.params if re.search(rf"\b{re.escape(nm)}\b", text)]
+    return params, consts[::-1]
+
+
+def _pointwise(model, d: Decomposition) -> dict | None:
+    """The outputs at a sample from the states and the columns there, printed as a C function
+    body: their own CSE, the states, columns and parameters they read."""
+    if not d.pointwise:
+        return None
+    block = Block.of([e for _, e in d.pointwise], "x")
+    temps, outs = block.c()
+    t = sp.Symbol("t")
+    uses_t = any(t in e.free_symbols for _, e in block.temps) or any(
+        t in e.free_symbols for e in block.outputs)
+    return {"states": block.uses(model.states), "params": block.uses(model.params),
+            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)],
+            "uses_t": uses_t, "temps": temps,
+            "outputs": [(j, c) for (j, _), c in zip(d.pointwise, outs)]}
 
 
 def _method_context(m: TaylorMethod) -> dict:

@@ -39,8 +39,8 @@ static double derive_euler_poisson_asym_gravity_general_taylor_tc_mul(int n, con
     return s;
 }
 
-/* The coefficients 0..order of every node about (t, y): the states' in u[0..8].
- * Returns 0, or 1 when a domain guard of the model fails at y (as euler_poisson_asym_gravity_general_rhs does). */
+/* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
+ * u[0..8]. Returns 0, or 1 when a domain guard of the model fails at y (as euler_poisson_asym_gravity_general_rhs does). */
 static int derive_euler_poisson_asym_gravity_general_taylor_jet(double t, const double *y, const double *p, int order,
                       double u[][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1])
 {
@@ -124,6 +124,97 @@ static int derive_euler_poisson_asym_gravity_general_taylor_jet(double t, const 
     return 0;
 }
 
+/* The series of the outputs' sin, cos and exp calls (0) through order `order`, from the
+ * right-hand side's nodes of derive_euler_poisson_asym_gravity_general_taylor_jet (through order-1, the states through order), and the
+ * table w[n][c] = coefficient n of column c: the states (c < euler_poisson_asym_gravity_general_NY), then those calls. */
+#define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW 9
+static void derive_euler_poisson_asym_gravity_general_taylor_jet_outputs(const double *p, int order, double u[][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1],
+                               double w[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW])
+{
+    int j, n;
+    (void)p;
+    for (n = 0; n <= order; ++n) {
+        for (j = 0; j < euler_poisson_asym_gravity_general_NY; ++j)
+            w[n][j] = u[j][n];
+    }
+}
+
+/* Jorba and Zou's test on the outputs' columns: would their own series take a step of at least
+ * h? |w_j,q| (h / fac)^q <= S_j for q = order-1 and order, S_j = max(|w_j,0|, atol/rtol) (1 when
+ * rtol = 0): the rule that chose h from the states, per output. An output made of a state the
+ * step control leaves out (cos alpha of a fast precession) may fail it; so does a series that
+ * is not finite (an output singular where the state is not). */
+static int derive_euler_poisson_asym_gravity_general_taylor_outputs_converged(double w[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], int order, double h, double fac,
+                                    double rtol, double floor_)
+{
+    const double r1 = pow(h / fac, order - 1), r2 = r1 * (h / fac);
+    double sc;
+    int j;
+    for (j = euler_poisson_asym_gravity_general_NY; j < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW; ++j) {
+        sc = rtol > 0.0 ? fmax(fabs(w[0][j]), floor_) : 1.0;
+        if (!(fabs(w[order - 1][j]) * r1 <= sc && fabs(w[order][j]) * r2 <= sc))
+            return 0;
+    }
+    return 1;
+}
+
+/* Every column of w at tau (Horner), into v. */
+static void derive_euler_poisson_asym_gravity_general_taylor_horner(double w[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], int order, double tau, double *v)
+{
+    int j, n;
+    for (j = 0; j < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW; ++j)
+        v[j] = w[order][j];
+    for (n = order - 1; n >= 0; --n)
+        for (j = 0; j < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW; ++j)
+            v[j] = v[j] * tau + w[n][j];
+}
+
+/* The outputs at time t from v, the states and the columns there (the model's output map with
+ * its sin, cos and exp calls read from the columns). */
+static void derive_euler_poisson_asym_gravity_general_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+{
+    const double omega1 = y[0];
+    const double omega2 = y[1];
+    const double omega3 = y[2];
+    const double n1 = y[3];
+    const double n2 = y[4];
+    const double n3 = y[5];
+    const double e1 = y[6];
+    const double e2 = y[7];
+    const double e3 = y[8];
+    const double I1 = p[0];
+    const double I2 = p[1];
+    const double I3 = p[2];
+    const double M = p[3];
+    const double g = p[4];
+    const double cx = p[5];
+    const double cy = p[6];
+    const double cz = p[7];
+    (void)t;
+    const double x0 = -e1*n2 + e2*n1;
+    const double x1 = I1*omega1;
+    const double x2 = I2*omega2;
+    const double x3 = I3*omega3;
+    o[0] = atan2(x0, e3);
+    o[1] = atan2(sqrt((n1*n1) + (n2*n2)), n3);
+    o[2] = atan2(n2, -n1);
+    o[3] = omega1;
+    o[4] = omega2;
+    o[5] = omega3;
+    o[6] = e3;
+    o[7] = x0;
+    o[8] = n3;
+    o[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*n1 + cy*n2 + cz*n3);
+    o[10] = n1*x1 + n2*x2 + n3*x3;
+    o[11] = x3;
+    o[12] = n1;
+    o[13] = n2;
+    o[14] = n3;
+    o[15] = x1;
+    o[16] = x2;
+    o[17] = x3;
+}
+
 int euler_poisson_asym_gravity_general_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1];
@@ -201,12 +292,19 @@ static int derive_euler_poisson_asym_gravity_general_taylor_eval(double u[][EULE
 /* ======================================================================================== */
 /* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
 
-int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+/* The solver; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at t_out[k],
+ * with the sin, cos and exp calls from their series, as they come (not yet canonical or
+ * checked). */
+static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
+        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
 {
     derive_stats local;
     double u[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], y[euler_poisson_asym_gravity_general_NY];
-    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
+    double w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], tau;
+    double o[18];
+    int series = 1;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -237,7 +335,9 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    k_out = 1;
+    (void)o;  /* (used by the output map, in the kernel build) */
+    (void)series;
+    k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
         if (st->nstep >= max_steps)
             return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
@@ -248,13 +348,23 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
         st->nfev++;
         if ((i = derive_euler_poisson_asym_gravity_general_taylor_jet(t, y, p, order, u)))
             return derive_euler_poisson_asym_gravity_general_taylor_fail_rc(st, t, i);
+        /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
+         * evaluated state, checked there): one sum over them, the culprit looked for only then. */
+        chk = 0.0;
         for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
-            for (j = 1; j <= order; ++j)
-                if (!isfinite(u[i][j]))
-                    return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            chk += u[i][order - 1] + u[i][order];
+        if (!isfinite(chk)) {
+            for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
+                for (j = 1; j <= order; ++j)
+                    if (!isfinite(u[i][j]))
+                        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+        }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (9 of 9: all). */
+         * (1 when rtol = 0), over the states that feed something back (9 of 9: all).
+         * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
+         * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;
         sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
@@ -301,6 +411,31 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
         st->naccept++;
 
         /* Dense output: the series itself at every requested time inside the step. */
+        if (out && k_out < n_out && t_out[k_out] <= tn) {
+            derive_euler_poisson_asym_gravity_general_taylor_jet_outputs(p, order, u, w);
+            series = derive_euler_poisson_asym_gravity_general_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
+            while (k_out < n_out && t_out[k_out] <= tn) {
+                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
+                derive_euler_poisson_asym_gravity_general_taylor_horner(w, order, tau, v);
+                for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
+                    if (!isfinite(v[i]))
+                        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                memcpy(y_out + k_out * euler_poisson_asym_gravity_general_NY, v, sizeof y);
+#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    euler_poisson_asym_gravity_general_observables(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                    ++k_out;
+                    continue;
+                }
+#endif
+                derive_euler_poisson_asym_gravity_general_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                for (j = 0; j < 18; ++j)
+                    out[j * n_out + k_out] = o[j];
+                ++k_out;
+            }
+        }
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_euler_poisson_asym_gravity_general_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * euler_poisson_asym_gravity_general_NY)) >= 0)
                 return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
@@ -316,6 +451,12 @@ int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const doub
         if (last)
             return DERIVE_OK;
     }
+}
+
+int euler_poisson_asym_gravity_general_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+{
+    return derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, NULL, st);
 }
 
 int euler_poisson_asym_gravity_general_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
@@ -340,7 +481,40 @@ int euler_poisson_asym_gravity_general_solve_batch_taylor(long n_batch, const do
 }
 #ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
 
-/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. */
+#if euler_poisson_asym_gravity_general_NOBS != 18
+#error "euler_poisson_asym_gravity_general.h: euler_poisson_asym_gravity_general_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
+#endif
+
+/* The solve with the outputs from the series, made canonical and checked as
+ * euler_poisson_asym_gravity_general_outputs_checked does (a single sample: euler_poisson_asym_gravity_general_outputs_checked itself). */
+static int derive_euler_poisson_asym_gravity_general_taylor_solve_outputs_taylor(const double *y0, const double *p,
+        const double *t_out, long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
+{
+    long i, k, n = n_out * euler_poisson_asym_gravity_general_NOBS;
+    int j, bad = 0;
+    int rc = derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, n_out > 1 ? out : NULL, st);
+    if (rc != DERIVE_OK)
+        return rc;
+    if (n_out == 1)
+        return euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_out, p, out, st);
+    derive_euler_poisson_asym_gravity_general_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    for (i = 0; i < n; ++i)
+        bad |= !(fabs(out[i]) <= DBL_MAX);
+    if (!bad)
+        return DERIVE_OK;
+    for (k = 0; k < n_out; ++k)
+        for (j = 0; j < euler_poisson_asym_gravity_general_NOBS; ++j)
+            if (!(fabs(out[j * n_out + k]) <= DBL_MAX)) {
+                st->status = DERIVE_NONFINITE_OUTPUT;
+                st->t_fail = t_out[k];
+                st->fail_index = j;
+                return DERIVE_NONFINITE_OUTPUT;
+            }
+    return DERIVE_OK;
+}
+
+/* The whole-simulation drivers (init map, solve with the outputs), the other methods' own. */
 int euler_poisson_asym_gravity_general_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st)
 {
@@ -351,7 +525,6 @@ int euler_poisson_asym_gravity_general_simulate_checked_taylor(const double *in,
         long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
-    int rc;
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_asym_gravity_general_taylor_times_ok(t_out, n_out)) {
@@ -366,10 +539,7 @@ int euler_poisson_asym_gravity_general_simulate_checked_taylor(const double *in,
         derive_euler_poisson_asym_gravity_general_stats_init(st);
         return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-    rc = euler_poisson_asym_gravity_general_solve_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, st);
-    if (rc == DERIVE_OK)
-        rc = euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_work, p, out, st);
-    return rc;
+    return derive_euler_poisson_asym_gravity_general_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
 }
 
 int euler_poisson_asym_gravity_general_simulate_batch_taylor(long n_batch, const double *ins, double *ps,

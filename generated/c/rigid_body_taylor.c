@@ -62,8 +62,8 @@ static void derive_rigid_body_taylor_tc_div(int n, const double *a, const double
     q[n] = s / b[0];
 }
 
-/* The coefficients 0..order of every node about (t, y): the states' in u[0..6].
- * Returns 0, or 1 when a domain guard of the model fails at y (as rigid_body_rhs does). */
+/* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
+ * u[0..6]. Returns 0, or 1 when a domain guard of the model fails at y (as rigid_body_rhs does). */
 static int derive_rigid_body_taylor_jet(double t, const double *y, const double *p, int order,
                       double u[][RIGID_BODY_TAYLOR_MAX_ORDER + 1])
 {
@@ -181,6 +181,112 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
     return 0;
 }
 
+/* The series of the outputs' sin, cos and exp calls (0) through order `order`, from the
+ * right-hand side's nodes of derive_rigid_body_taylor_jet (through order-1, the states through order), and the
+ * table w[n][c] = coefficient n of column c: the states (c < rigid_body_NY), then those calls. */
+#define DERIVE_RIGID_BODY_TAYLOR_NW 7
+static void derive_rigid_body_taylor_jet_outputs(const double *p, int order, double u[][RIGID_BODY_TAYLOR_MAX_ORDER + 1],
+                               double w[][DERIVE_RIGID_BODY_TAYLOR_NW])
+{
+    int j, n;
+    (void)p;
+    for (n = 0; n <= order; ++n) {
+        for (j = 0; j < rigid_body_NY; ++j)
+            w[n][j] = u[j][n];
+    }
+}
+
+/* Jorba and Zou's test on the outputs' columns: would their own series take a step of at least
+ * h? |w_j,q| (h / fac)^q <= S_j for q = order-1 and order, S_j = max(|w_j,0|, atol/rtol) (1 when
+ * rtol = 0): the rule that chose h from the states, per output. An output made of a state the
+ * step control leaves out (cos alpha of a fast precession) may fail it; so does a series that
+ * is not finite (an output singular where the state is not). */
+static int derive_rigid_body_taylor_outputs_converged(double w[][DERIVE_RIGID_BODY_TAYLOR_NW], int order, double h, double fac,
+                                    double rtol, double floor_)
+{
+    const double r1 = pow(h / fac, order - 1), r2 = r1 * (h / fac);
+    double sc;
+    int j;
+    for (j = rigid_body_NY; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j) {
+        sc = rtol > 0.0 ? fmax(fabs(w[0][j]), floor_) : 1.0;
+        if (!(fabs(w[order - 1][j]) * r1 <= sc && fabs(w[order][j]) * r2 <= sc))
+            return 0;
+    }
+    return 1;
+}
+
+/* Every column of w at tau (Horner), into v. */
+static void derive_rigid_body_taylor_horner(double w[][DERIVE_RIGID_BODY_TAYLOR_NW], int order, double tau, double *v)
+{
+    int j, n;
+    for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
+        v[j] = w[order][j];
+    for (n = order - 1; n >= 0; --n)
+        for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
+            v[j] = v[j] * tau + w[n][j];
+}
+
+/* The outputs at time t from v, the states and the columns there (the model's output map with
+ * its sin, cos and exp calls read from the columns). */
+static void derive_rigid_body_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+{
+    const double q0 = y[0];
+    const double q1 = y[1];
+    const double q2 = y[2];
+    const double q3 = y[3];
+    const double omega1 = y[4];
+    const double omega2 = y[5];
+    const double omega3 = y[6];
+    const double I1 = p[0];
+    const double I2 = p[1];
+    const double I3 = p[2];
+    const double M = p[3];
+    const double g = p[4];
+    const double cx = p[5];
+    const double cy = p[6];
+    const double cz = p[7];
+    (void)t;
+    const double x0 = 2*q0;
+    const double x1 = q1*x0;
+    const double x2 = 2*q2*q3 - x1;
+    const double x3 = q2*x0;
+    const double x4 = 2*q3;
+    const double x5 = q1*x4;
+    const double x6 = x3 + x5;
+    const double x7 = (q0*q0) + (q3*q3);
+    const double x8 = (q1*q1);
+    const double x9 = (q2*q2);
+    const double x10 = x8 + x9;
+    const double x11 = x7 - x8 - x9;
+    const double x12 = q2*x4 + x1;
+    const double x13 = x3 - x5;
+    const double x14 = 1.0/(x10 + x7);
+    const double x15 = x11*x14;
+    const double x16 = -x13*x14;
+    const double x17 = x12*x14;
+    const double x18 = I1*omega1;
+    const double x19 = I2*omega2;
+    const double x20 = I3*omega3;
+    o[0] = atan2(x2, x6);
+    o[1] = atan2(2*sqrt(x10)*sqrt(x7), x11);
+    o[2] = atan2(x12, x13);
+    o[3] = omega1;
+    o[4] = omega2;
+    o[5] = omega3;
+    o[6] = x14*x6;
+    o[7] = x14*x2;
+    o[8] = x15;
+    o[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
+    o[10] = x15*x20 + x16*x18 + x17*x19;
+    o[11] = x20;
+    o[12] = x16;
+    o[13] = x17;
+    o[14] = x15;
+    o[15] = x18;
+    o[16] = x19;
+    o[17] = x20;
+}
+
 int rigid_body_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_RIGID_BODY_TAYLOR_NODES][RIGID_BODY_TAYLOR_MAX_ORDER + 1];
@@ -258,12 +364,19 @@ static int derive_rigid_body_taylor_eval(double u[][RIGID_BODY_TAYLOR_MAX_ORDER 
 /* ======================================================================================== */
 /* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
 
-int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+/* The solver; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at t_out[k],
+ * with the sin, cos and exp calls from their series, as they come (not yet canonical or
+ * checked). */
+static int derive_rigid_body_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
+        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
 {
     derive_stats local;
     double u[DERIVE_RIGID_BODY_TAYLOR_NODES][RIGID_BODY_TAYLOR_MAX_ORDER + 1], y[rigid_body_NY];
-    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
+    double w[RIGID_BODY_TAYLOR_MAX_ORDER + 1][DERIVE_RIGID_BODY_TAYLOR_NW], v[DERIVE_RIGID_BODY_TAYLOR_NW], tau;
+    double o[18];
+    int series = 1;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -294,7 +407,9 @@ int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_o
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    k_out = 1;
+    (void)o;  /* (used by the output map, in the kernel build) */
+    (void)series;
+    k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
         if (st->nstep >= max_steps)
             return derive_rigid_body_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
@@ -305,13 +420,23 @@ int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_o
         st->nfev++;
         if ((i = derive_rigid_body_taylor_jet(t, y, p, order, u)))
             return derive_rigid_body_taylor_fail_rc(st, t, i);
+        /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
+         * evaluated state, checked there): one sum over them, the culprit looked for only then. */
+        chk = 0.0;
         for (i = 0; i < rigid_body_NY; ++i)
-            for (j = 1; j <= order; ++j)
-                if (!isfinite(u[i][j]))
-                    return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            chk += u[i][order - 1] + u[i][order];
+        if (!isfinite(chk)) {
+            for (i = 0; i < rigid_body_NY; ++i)
+                for (j = 1; j <= order; ++j)
+                    if (!isfinite(u[i][j]))
+                        return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+        }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (7 of 7: all). */
+         * (1 when rtol = 0), over the states that feed something back (7 of 7: all).
+         * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
+         * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;
         sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
@@ -352,6 +477,31 @@ int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_o
         st->naccept++;
 
         /* Dense output: the series itself at every requested time inside the step. */
+        if (out && k_out < n_out && t_out[k_out] <= tn) {
+            derive_rigid_body_taylor_jet_outputs(p, order, u, w);
+            series = derive_rigid_body_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
+            while (k_out < n_out && t_out[k_out] <= tn) {
+                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
+                derive_rigid_body_taylor_horner(w, order, tau, v);
+                for (i = 0; i < rigid_body_NY; ++i)
+                    if (!isfinite(v[i]))
+                        return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                memcpy(y_out + k_out * rigid_body_NY, v, sizeof y);
+#ifdef DERIVE_RIGID_BODY_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    rigid_body_observables(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                    ++k_out;
+                    continue;
+                }
+#endif
+                derive_rigid_body_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                for (j = 0; j < 18; ++j)
+                    out[j * n_out + k_out] = o[j];
+                ++k_out;
+            }
+        }
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_rigid_body_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * rigid_body_NY)) >= 0)
                 return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
@@ -367,6 +517,12 @@ int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_o
         if (last)
             return DERIVE_OK;
     }
+}
+
+int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+{
+    return derive_rigid_body_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, NULL, st);
 }
 
 int rigid_body_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
@@ -391,7 +547,40 @@ int rigid_body_solve_batch_taylor(long n_batch, const double *y0s, const double 
 }
 #ifdef DERIVE_RIGID_BODY_SIMULATE
 
-/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. */
+#if rigid_body_NOBS != 18
+#error "rigid_body.h: rigid_body_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
+#endif
+
+/* The solve with the outputs from the series, made canonical and checked as
+ * rigid_body_outputs_checked does (a single sample: rigid_body_outputs_checked itself). */
+static int derive_rigid_body_taylor_solve_outputs_taylor(const double *y0, const double *p,
+        const double *t_out, long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
+{
+    long i, k, n = n_out * rigid_body_NOBS;
+    int j, bad = 0;
+    int rc = derive_rigid_body_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, n_out > 1 ? out : NULL, st);
+    if (rc != DERIVE_OK)
+        return rc;
+    if (n_out == 1)
+        return rigid_body_outputs_checked(n_out, t_out, y_out, p, out, st);
+    derive_rigid_body_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    for (i = 0; i < n; ++i)
+        bad |= !(fabs(out[i]) <= DBL_MAX);
+    if (!bad)
+        return DERIVE_OK;
+    for (k = 0; k < n_out; ++k)
+        for (j = 0; j < rigid_body_NOBS; ++j)
+            if (!(fabs(out[j * n_out + k]) <= DBL_MAX)) {
+                st->status = DERIVE_NONFINITE_OUTPUT;
+                st->t_fail = t_out[k];
+                st->fail_index = j;
+                return DERIVE_NONFINITE_OUTPUT;
+            }
+    return DERIVE_OK;
+}
+
+/* The whole-simulation drivers (init map, solve with the outputs), the other methods' own. */
 int rigid_body_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st)
 {
@@ -402,7 +591,6 @@ int rigid_body_simulate_checked_taylor(const double *in, double *p, const double
         long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
-    int rc;
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_rigid_body_taylor_times_ok(t_out, n_out)) {
@@ -417,10 +605,7 @@ int rigid_body_simulate_checked_taylor(const double *in, double *p, const double
         derive_rigid_body_stats_init(st);
         return derive_rigid_body_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-    rc = rigid_body_solve_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, st);
-    if (rc == DERIVE_OK)
-        rc = rigid_body_outputs_checked(n_out, t_out, y_work, p, out, st);
-    return rc;
+    return derive_rigid_body_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
 }
 
 int rigid_body_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
