@@ -129,13 +129,7 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("reduced-u", "u = cos beta and its rate with conserved p_alpha, p_gamma, E': "
                 "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
                 "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
-                singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE,
-                not_chosen_for={"taylor": (
-                    "the Taylor step control leaves the quadratures alpha, gamma out of its "
-                    "norm (codegen.taylor.controlled_states: they feed nothing back), but "
-                    "their integrand 1/(1 -+ u(t)) is singular where u(t) = +-1 in complex "
-                    "time, nearer than any singularity of u itself: steps chosen from u "
-                    "alone leave alpha and gamma several times the tolerance off")}),
+                singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE),
     Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
                 "quaternion", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "

@@ -339,7 +339,11 @@ static int derive_euler_poisson_sym_gravity_taylor_solve_taylor(const double *y0
         }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (9 of 9: all).
+         * (1 when rtol = 0) for the states that feed something back (9 of 9: all);
+         * a state that feeds nothing back (a cyclic angle, a quadrature) counts against the scale
+         * of its rate, max(|y_i,1|, atol/rtol): its truncation error is controlled, its growth
+         * never loosens the control (in u = cos(beta) form the integrand of alpha, 1/(1 -+ u(t)),
+         * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;

@@ -395,15 +395,23 @@ static int derive_reduced_sym_taylor_solve_taylor(const double *y0, const double
         }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (2 of 4).
+         * (1 when rtol = 0) for the states that feed something back (2 of 4);
+         * a state that feeds nothing back (a cyclic angle, a quadrature) counts against the scale
+         * of its rate, max(|y_i,1|, atol/rtol): its truncation error is controlled, its growth
+         * never loosens the control (in u = cos(beta) form the integrand of alpha, 1/(1 -+ u(t)),
+         * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;
-        /* alpha: feeds nothing back, out of the step control */
+        sc = rtol > 0.0 ? fmax(fabs(u[0][1]), floor_) : 1.0;  /* alpha: its rate's scale */
+        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[0][order]) / sc);
         sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[1][order]) / sc);
-        /* gamma: feeds nothing back, out of the step control */
+        sc = rtol > 0.0 ? fmax(fabs(u[2][1]), floor_) : 1.0;  /* gamma: its rate's scale */
+        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[2][order]) / sc);
         sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[3][order]) / sc);

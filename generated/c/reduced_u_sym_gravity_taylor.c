@@ -49,8 +49,8 @@ static void derive_reduced_u_sym_gravity_taylor_tc_div(int n, const double *a, c
     q[n] = s / b[0];
 }
 
-/* The coefficients 0..order of every node about (t, y): the states' in u[0..3].
- * Returns 0, or 1 when a domain guard of the model fails at y (as reduced_u_sym_gravity_rhs does). */
+/* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
+ * u[0..3]. Returns 0, or 1 when a domain guard of the model fails at y (as reduced_u_sym_gravity_rhs does). */
 static int derive_reduced_u_sym_gravity_taylor_jet(double t, const double *y, const double *p, int order,
                       double u[][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1])
 {
@@ -96,6 +96,110 @@ static int derive_reduced_u_sym_gravity_taylor_jet(double t, const double *y, co
         u[3][n + 1] = u[19][n] * inv;
     }
     return 0;
+}
+
+/* The series of the outputs' sin, cos and exp calls (0) through order `order`, from the
+ * right-hand side's nodes of derive_reduced_u_sym_gravity_taylor_jet (through order-1, the states through order), and the
+ * table w[n][c] = coefficient n of column c: the states (c < reduced_u_sym_gravity_NY), then those calls. */
+#define DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW 4
+static void derive_reduced_u_sym_gravity_taylor_jet_outputs(const double *p, int order, double u[][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1],
+                               double w[][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW])
+{
+    int j, n;
+    (void)p;
+    for (n = 0; n <= order; ++n) {
+        for (j = 0; j < reduced_u_sym_gravity_NY; ++j)
+            w[n][j] = u[j][n];
+    }
+}
+
+/* Jorba and Zou's test on the outputs' columns: would their own series take a step of at least
+ * h? |w_j,q| (h / fac)^q <= S_j for q = order-1 and order, S_j = max(|w_j,0|, atol/rtol) (1 when
+ * rtol = 0): the rule that chose h from the states, per output. An output made of a state the
+ * step control leaves out (cos alpha of a fast precession) may fail it; so does a series that
+ * is not finite (an output singular where the state is not). */
+static int derive_reduced_u_sym_gravity_taylor_outputs_converged(double w[][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], int order, double h, double fac,
+                                    double rtol, double floor_)
+{
+    const double r1 = pow(h / fac, order - 1), r2 = r1 * (h / fac);
+    double sc;
+    int j;
+    for (j = reduced_u_sym_gravity_NY; j < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW; ++j) {
+        sc = rtol > 0.0 ? fmax(fabs(w[0][j]), floor_) : 1.0;
+        if (!(fabs(w[order - 1][j]) * r1 <= sc && fabs(w[order][j]) * r2 <= sc))
+            return 0;
+    }
+    return 1;
+}
+
+/* Every column of w at tau (Horner), into v. */
+static void derive_reduced_u_sym_gravity_taylor_horner(double w[][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], int order, double tau, double *v)
+{
+    int j, n;
+    for (j = 0; j < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW; ++j)
+        v[j] = w[order][j];
+    for (n = order - 1; n >= 0; --n)
+        for (j = 0; j < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW; ++j)
+            v[j] = v[j] * tau + w[n][j];
+}
+
+/* The outputs at time t from v, the states and the columns there (the model's output map with
+ * its sin, cos and exp calls read from the columns). */
+static void derive_reduced_u_sym_gravity_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+{
+    const double alpha = y[0];
+    const double u = y[1];
+    const double gamma = y[2];
+    const double u_d = y[3];
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    const double p_alpha = p[5];
+    const double p_gamma = p[6];
+    (void)t;
+    const double x0 = u + 1;
+    const double x1 = u - 1;
+    const double x2 = -x1;
+    const double x3 = sqrt(x0*x2);
+    const double x4 = sin(gamma);
+    const double x5 = u_d/x3;
+    const double x6 = p_alpha + p_gamma;
+    const double x7 = 1.0/x0;
+    const double x8 = 1.0/I1;
+    const double x9 = (1.0/2.0)*x8;
+    const double x10 = p_alpha - p_gamma;
+    const double x11 = 1.0/x1;
+    const double x12 = ((x10 == 0) ? (0) : (-x10*x11*x9)) + ((x6 == 0) ? (0) : (x6*x7*x9));
+    const double x13 = cos(gamma);
+    const double x14 = x13*x3;
+    const double x15 = -x12*x14 - x4*x5;
+    const double x16 = x12*x3*x4 - x13*x5;
+    const double x17 = 1.0/I3;
+    const double x18 = (p_gamma*p_gamma);
+    const double x19 = 2*I1;
+    const double x20 = 2*p_alpha*p_gamma;
+    const double x21 = (p_alpha*p_alpha) + x18;
+    const double x22 = (1.0/4.0)*x8;
+    o[0] = alpha;
+    o[1] = atan2(x3, u);
+    o[2] = gamma;
+    o[3] = x15;
+    o[4] = x16;
+    o[5] = p_gamma*x17;
+    o[6] = x3*cos(alpha);
+    o[7] = x3*sin(alpha);
+    o[8] = u;
+    o[9] = (1.0/2.0)*I1*(u_d*u_d)*x7/x2 + (1.0/2.0)*x17*x18 + x9*(M*g*l*u*x19 - x18 + x19*((x20 - x21 == 0) ? (0) : (-(x10*x10)*x11*x22)) + x19*((x20 + x21 == 0) ? (0) : (x22*(x6*x6)*x7)));
+    o[10] = p_alpha;
+    o[11] = p_gamma;
+    o[12] = -x14;
+    o[13] = x3*x4;
+    o[14] = u;
+    o[15] = I1*x15;
+    o[16] = I1*x16;
+    o[17] = p_gamma;
 }
 
 int reduced_u_sym_gravity_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -175,12 +279,19 @@ static int derive_reduced_u_sym_gravity_taylor_eval(double u[][REDUCED_U_SYM_GRA
 /* ======================================================================================== */
 /* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
 
-int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+/* The solver; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at t_out[k],
+ * with the sin, cos and exp calls from their series, as they come (not yet canonical or
+ * checked). */
+static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
+        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
 {
     derive_stats local;
     double u[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NODES][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1], y[reduced_u_sym_gravity_NY];
-    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2;
+    double w[REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], tau;
+    double o[18];
+    int series = 1;
+    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -211,7 +322,9 @@ int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const 
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    k_out = 1;
+    (void)o;  /* (used by the output map, in the kernel build) */
+    (void)series;
+    k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
         if (st->nstep >= max_steps)
             return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
@@ -222,19 +335,37 @@ int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const 
         st->nfev++;
         if ((i = derive_reduced_u_sym_gravity_taylor_jet(t, y, p, order, u)))
             return derive_reduced_u_sym_gravity_taylor_fail_rc(st, t, i);
+        /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
+         * evaluated state, checked there): one sum over them, the culprit looked for only then. */
+        chk = 0.0;
         for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
-            for (j = 1; j <= order; ++j)
-                if (!isfinite(u[i][j]))
-                    return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            chk += u[i][order - 1] + u[i][order];
+        if (!isfinite(chk)) {
+            for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
+                for (j = 1; j <= order; ++j)
+                    if (!isfinite(u[i][j]))
+                        return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+        }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0), over the states that feed something back (2 of 4). */
+         * (1 when rtol = 0) for the states that feed something back (2 of 4);
+         * a state that feeds nothing back (a cyclic angle, a quadrature) counts against the scale
+         * of its rate, max(|y_i,1|, atol/rtol): its truncation error is controlled, its growth
+         * never loosens the control (in u = cos(beta) form the integrand of alpha, 1/(1 -+ u(t)),
+         * is singular nearer than any singularity of u: steps from u alone left alpha off).
+         * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
+         * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
         n1 = n2 = 0.0;
-        /* alpha: feeds nothing back, out of the step control */
+        sc = rtol > 0.0 ? fmax(fabs(u[0][1]), floor_) : 1.0;  /* alpha: its rate's scale */
+        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[0][order]) / sc);
         sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[1][order]) / sc);
-        /* gamma: feeds nothing back, out of the step control */
+        sc = rtol > 0.0 ? fmax(fabs(u[2][1]), floor_) : 1.0;  /* gamma: its rate's scale */
+        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
+        n2 = fmax(n2, fabs(u[2][order]) / sc);
         sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[3][order]) / sc);
@@ -256,6 +387,31 @@ int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const 
         st->naccept++;
 
         /* Dense output: the series itself at every requested time inside the step. */
+        if (out && k_out < n_out && t_out[k_out] <= tn) {
+            derive_reduced_u_sym_gravity_taylor_jet_outputs(p, order, u, w);
+            series = derive_reduced_u_sym_gravity_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
+            while (k_out < n_out && t_out[k_out] <= tn) {
+                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
+                derive_reduced_u_sym_gravity_taylor_horner(w, order, tau, v);
+                for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
+                    if (!isfinite(v[i]))
+                        return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                memcpy(y_out + k_out * reduced_u_sym_gravity_NY, v, sizeof y);
+#ifdef DERIVE_REDUCED_U_SYM_GRAVITY_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    reduced_u_sym_gravity_observables(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                    ++k_out;
+                    continue;
+                }
+#endif
+                derive_reduced_u_sym_gravity_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                for (j = 0; j < 18; ++j)
+                    out[j * n_out + k_out] = o[j];
+                ++k_out;
+            }
+        }
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_reduced_u_sym_gravity_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * reduced_u_sym_gravity_NY)) >= 0)
                 return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
@@ -271,6 +427,12 @@ int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const 
         if (last)
             return DERIVE_OK;
     }
+}
+
+int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
+{
+    return derive_reduced_u_sym_gravity_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, NULL, st);
 }
 
 int reduced_u_sym_gravity_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
@@ -295,7 +457,40 @@ int reduced_u_sym_gravity_solve_batch_taylor(long n_batch, const double *y0s, co
 }
 #ifdef DERIVE_REDUCED_U_SYM_GRAVITY_SIMULATE
 
-/* The whole-simulation drivers (init map, solve, outputs), the other methods' own. */
+#if reduced_u_sym_gravity_NOBS != 18
+#error "reduced_u_sym_gravity.h: reduced_u_sym_gravity_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
+#endif
+
+/* The solve with the outputs from the series, made canonical and checked as
+ * reduced_u_sym_gravity_outputs_checked does (a single sample: reduced_u_sym_gravity_outputs_checked itself). */
+static int derive_reduced_u_sym_gravity_taylor_solve_outputs_taylor(const double *y0, const double *p,
+        const double *t_out, long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
+{
+    long i, k, n = n_out * reduced_u_sym_gravity_NOBS;
+    int j, bad = 0;
+    int rc = derive_reduced_u_sym_gravity_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, n_out > 1 ? out : NULL, st);
+    if (rc != DERIVE_OK)
+        return rc;
+    if (n_out == 1)
+        return reduced_u_sym_gravity_outputs_checked(n_out, t_out, y_out, p, out, st);
+    derive_reduced_u_sym_gravity_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    for (i = 0; i < n; ++i)
+        bad |= !(fabs(out[i]) <= DBL_MAX);
+    if (!bad)
+        return DERIVE_OK;
+    for (k = 0; k < n_out; ++k)
+        for (j = 0; j < reduced_u_sym_gravity_NOBS; ++j)
+            if (!(fabs(out[j * n_out + k]) <= DBL_MAX)) {
+                st->status = DERIVE_NONFINITE_OUTPUT;
+                st->t_fail = t_out[k];
+                st->fail_index = j;
+                return DERIVE_NONFINITE_OUTPUT;
+            }
+    return DERIVE_OK;
+}
+
+/* The whole-simulation drivers (init map, solve with the outputs), the other methods' own. */
 int reduced_u_sym_gravity_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
         double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st)
 {
@@ -306,7 +501,6 @@ int reduced_u_sym_gravity_simulate_checked_taylor(const double *in, double *p, c
         long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
-    int rc;
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_reduced_u_sym_gravity_taylor_times_ok(t_out, n_out)) {
@@ -321,10 +515,7 @@ int reduced_u_sym_gravity_simulate_checked_taylor(const double *in, double *p, c
         derive_reduced_u_sym_gravity_stats_init(st);
         return derive_reduced_u_sym_gravity_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
-    rc = reduced_u_sym_gravity_solve_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, st);
-    if (rc == DERIVE_OK)
-        rc = reduced_u_sym_gravity_outputs_checked(n_out, t_out, y_work, p, out, st);
-    return rc;
+    return derive_reduced_u_sym_gravity_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
 }
 
 int reduced_u_sym_gravity_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
