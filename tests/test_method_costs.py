@@ -20,13 +20,15 @@ def test_dop853_steps_grow_as_the_eighth_root_of_the_tolerance():
     assert ratio == pytest.approx(1e8 ** (1 / 8))
 
 
-def test_taylor_work_grows_with_the_order_only():
+def test_taylor_steps_fall_and_jets_grow_with_the_order():
     quiet = costs.Work(**{**WORK.__dict__, "samples": 0})
     p_lo, p_hi = TAYLOR["taylor"].order(1e-6, 0), TAYLOR["taylor"].order(1e-12, 0)
     assert p_hi > p_lo
     lo, hi = costs.cost("taylor", quiet, 1e-6, 1e-8), costs.cost("taylor", quiet, 1e-12, 1e-14)
-    per_step = lambda p: quiet.jet_weight * p * p / 2 + 2 * quiet.ny * p  # noqa: E731
-    assert hi / lo == pytest.approx(per_step(p_hi) / per_step(p_lo))
+    steps = lambda p: 1 + costs.A / p  # noqa: E731
+    jet = lambda p: quiet.jet_weight * p * p / 2 + 2 * quiet.ny * p  # noqa: E731
+    assert hi / lo == pytest.approx(steps(p_hi) * jet(p_hi) / (steps(p_lo) * jet(p_lo)))
+    assert steps(p_hi) < steps(p_lo)
 
 
 def test_a_model_without_a_taylor_kernel_runs_dop853():

@@ -11,9 +11,9 @@ from __future__ import annotations
 import functools
 import json
 
-from derive.codegen.kernelspec import STEP_COST_PER_STATE, KernelSpec
+from derive.codegen.kernelspec import STEP_COST_PER_STATE, KernelSpec, operation_cost
 from derive.codegen.splitting import render_splitting
-from derive.codegen.taylor import NoTaylorRule, render_taylor
+from derive.codegen.taylor import NoTaylorRule, jet_weight, render_taylor
 from derive.methods.splitting import applicable as splitting_applicable
 from derive.symbolic.models import Model
 from derive.codegen.render import render
@@ -47,6 +47,7 @@ def description_json(spec) -> str:
         "effects": list(m.effects), "states": list(m.state_names), "params": list(m.param_names),
         "outputs": list(spec.observable_names), "nin": len(INPUT_NAMES),
         "cost": spec.cost + STEP_COST_PER_STATE * len(m.states),
+        "jet_weight": jet_weight(spec), "output_cost": operation_cost(spec.obs),
         "derived_params": list(spec.init_param_index), "checks": list(spec.check_names),
         "has_angles": spec.observable_names[:3] == ("alpha", "beta", "gamma"),
         "domain_note": m.domain_note,

@@ -459,6 +459,25 @@ def series_safe(model, e) -> bool:
     return keys <= allowed
 
 
+#: Multiply-adds per term of a node's Cauchy-type sum at order n (a product's n + 1 terms, a
+#: square's half, sin/cos's two sums, …): a jet of order p costs about Σ w_rule · p²/2 (the
+#: cost model of ``method = "auto"``, :mod:`derive.methods.costs`). Linear nodes (sums,
+#: scalings, constants, a piecewise choice) cost O(p) and count a tenth.
+JET_WEIGHTS = {"mul": 1.0, "sqr": 0.5, "div": 1.0, "sqrt": 0.5, "pow": 2.0, "exp": 1.0, "log": 1.0,
+               "sincos": 2.0, "atan2": 3.0}
+
+
+def jet_weight(spec: KernelSpec) -> float:
+    """Σ over the right-hand side's series nodes of :data:`JET_WEIGHTS` (0.1 for a linear node):
+    the ``w`` of :mod:`derive.methods.costs`, a jet of order p costing about w p²/2
+    multiply-adds. 0 when a function of the right-hand side has no Taylor rule."""
+    try:
+        d = decompose(spec)
+    except NoTaylorRule:
+        return 0.0
+    return round(sum(JET_WEIGHTS.get(n.rule, 0.1) for n in d.nodes if n.code), 3)
+
+
 def controlled_states(model) -> tuple[bool, ...]:
     """Per state: True when it feeds something back (appears in a right-hand side or a domain
     guard). A state that appears in none, a cyclic angle such as α or γ, is integrated from the
