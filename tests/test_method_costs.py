@@ -53,7 +53,8 @@ def test_an_auto_plan_runs_the_method_the_cost_model_picks():
 
     sc = load_scene("reference_top")
     pl = plans.make(sc)
-    assert pl.method == plans.auto_method(sc, pl.candidates[0].desc)
-    assert all(c.method == pl.method for c in pl.candidates)
+    assert len(pl.candidates) > 1  # reduced-u, then the fallbacks
+    assert pl.method == pl.candidates[0].method
+    assert all(c.method == plans.auto_method(sc, c.desc) for c in pl.candidates)
     named = plans.make(load_scene("reference_top", method="dop853"))
     assert named.method == "dop853"

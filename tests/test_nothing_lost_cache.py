@@ -35,8 +35,11 @@ def derive_cli(cache: Path, *argv: str, cc: str | None = None) -> subprocess.Com
 
 
 def simulate(cache: Path, out: Path, *flags: str, cc: str | None = None):
-    """``derive simulate`` of the free body into ``out``; the CompletedProcess."""
-    return derive_cli(cache, "simulate", str(SCENE), "-o", str(out), *flags, cc=cc)
+    """``derive simulate`` of the free body into ``out``; the CompletedProcess. The method is
+    dop853 unless ``flags`` name one (the tests look for its library by name; auto may weigh
+    the Taylor method for this body)."""
+    method = () if "--method" in flags else ("--method", "dop853")
+    return derive_cli(cache, "simulate", str(SCENE), "-o", str(out), *method, *flags, cc=cc)
 
 
 def same_results(a: Path, b: Path) -> bool:

@@ -118,11 +118,15 @@ class Bundle:
         return self.desc.name
 
     @property
-    def splitting(self) -> bool:
-        """The method is a Lie–Poisson splitting (its own C file, ``<name>_splitting.c``)."""
+    def family(self) -> str | None:
+        """The C file of the method's own family beside the solvers (``<name>_<family>.{h,c}``):
+        "splitting" for a Lie–Poisson splitting, "taylor" for a Taylor method, None for the
+        Runge–Kutta family (in ``<name>_solvers.c``) — as the kernel build includes them."""
         from derive.methods.registry import METHODS
 
-        return self.method not in METHODS
+        if self.method in METHODS:
+            return None
+        return "taylor" if compiled_method(self.method).driver == "taylor" else "splitting"
 
     def parameters(self) -> list[Variable]:
         """The model's parameters the scene gives (not the derived ones), by scene key."""

@@ -161,8 +161,8 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     P, ID = b.name, model_identifier(b)
     files = dict(b.desc.c_sources())
     wanted = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
-    if b.splitting:
-        wanted += [f"{P}_splitting.h", f"{P}_splitting.c"]
+    if b.family:
+        wanted += [f"{P}_{b.family}.h", f"{P}_{b.family}.c"]
     text = "".join(files[n] for n in wanted)
     wanted += [n for n in sorted(files) if n not in wanted and f'"{n}"' in text]
     out = {n: files[n] for n in wanted}
@@ -176,7 +176,7 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     p_start = [0.0 if k in derived else float(x) for k, x in enumerate(b.params)]
     env = environment()
     out["fmu.c"] = env.get_template("fmi2/fmu.c.j2").render(
-        P=P, ID=ID, method=b.method, splitting=b.splitting, guid=guid, variables=vs,
+        P=P, ID=ID, method=b.method, family=b.family, guid=guid, variables=vs,
         p_start=p_start, in_start=[float(x) for x in b.inputs], driver=b.driver,
         derived=derived, has_angles=b.desc.has_angles, pole_check=b.pole_check,
         formulation=b.desc.formulation)

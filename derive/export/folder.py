@@ -58,13 +58,13 @@ def files(b: Bundle) -> dict[str, str]:
     P = b.name
     sources = b.desc.c_sources()
     model = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
-    if b.splitting:
-        model += [f"{P}_splitting.h", f"{P}_splitting.c"]
+    if b.family:
+        model += [f"{P}_{b.family}.h", f"{P}_{b.family}.c"]
     text = "".join(sources[n] for n in model)
     extra = sorted(n for n in sources if n not in model and f'"{n}"' in text)  # derive_elliptic.h
     out = {n: sources[n] for n in model + extra}
-    includes = [f"{P}.c", f"{P}_solvers.c"] + ([f"{P}_splitting.c"] if b.splitting else [])
-    out[f"{P}_lib.c"] = render("export/lib.c.j2", P=P, includes=includes, splitting=b.splitting)
+    includes = [f"{P}.c", f"{P}_solvers.c"] + ([f"{P}_{b.family}.c"] if b.family else [])
+    out[f"{P}_lib.c"] = render("export/lib.c.j2", P=P, includes=includes, family=b.family)
 
     derived = set(b.desc.derived_params)
     by_index = {v.index: v for v in b.parameters()}
@@ -77,7 +77,7 @@ def files(b: Bundle) -> dict[str, str]:
             params.append((name, v.value, f"{v.name}" + (f", {v.unit}" if v.unit else "")))
     driver = [(ctype, name, _literal(ctype, value)) for ctype, name, value in b.driver]
     scene_file = Path(b.scene.source).name if b.scene.source != "<dict>" else "the scene"
-    common = dict(P=P, method=b.method, splitting=b.splitting, driver=driver,
+    common = dict(P=P, method=b.method, family=b.family, driver=driver,
                   pole_check=b.pole_check, pole_note=POLE_NOTES.get(b.pole_check, ""),
                   scene_file=scene_file)
     out["example.c"] = render("c/example.c.j2", initial=b.initial(), params=params,

@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from derive.methods.registry import DEFAULT_METHOD, METHODS as RUNGE_KUTTA
 from derive.methods.taylor import METHODS as TAYLOR
 
 #: Steps per radian of the fastest motion: DOP853 at ε = 1 (scaled by ε^(−1/8)), the Taylor
@@ -51,9 +52,9 @@ CALIBRATION = ("step counts of dop853 and taylor on reference_top, off_axis_top,
                "1e-10, 1e-12 (auto's formulation, atol = rtol/100); the unit from the times of "
                "heavy_top and reduced_u_sym_gravity per step")
 
-#: The methods "auto" chooses between, the default first (taken on a tie, and whenever the
-#: model has no Taylor kernel).
-CHOICES = ("dop853", "taylor")
+#: The methods "auto" chooses between: the default (an adaptive Runge–Kutta pair) first, taken
+#: on a tie and whenever the model has no Taylor kernel, then the Taylor methods.
+CHOICES = (DEFAULT_METHOD, *TAYLOR)
 
 
 @dataclass(frozen=True)
@@ -74,9 +75,13 @@ def cost(method: str, work: Work, rtol: float, atol: float) -> float:
     cannot run."""
     eps = rtol if rtol > 0 else atol
     n = work.samples
-    if method == "dop853":
-        steps = max(1.0, K_D * work.span * eps ** (-1.0 / 8.0))
-        return steps * 12.0 * work.rhs_cost + n * (7.0 * work.ny + work.output_cost)
+    rk = RUNGE_KUTTA.get(method)
+    if rk is not None and rk.tableau.adaptive:
+        # an embedded pair: the step goes as eps^(1/(q+1)), q its error order (DOP853: 7),
+        # each costing its stages' right-hand sides; its dense output about `order` per state
+        tab = rk.tableau
+        steps = max(1.0, K_D * work.span * eps ** (-1.0 / ((tab.err_order or tab.order) + 1)))
+        return steps * tab.stages * work.rhs_cost + n * ((tab.order - 1) * work.ny + work.output_cost)
     if method in TAYLOR:
         if work.jet_weight <= 0:
             return math.inf
@@ -84,7 +89,7 @@ def cost(method: str, work: Work, rtol: float, atol: float) -> float:
         steps = max(1.0, K_T * work.span * (1.0 + A / p))
         jet = TAYLOR_UNIT * (work.jet_weight * p * p / 2.0 + 2.0 * work.ny * p)
         return steps * jet + n * (work.ny * p + work.output_cost)
-    raise KeyError(method)
+    return math.inf  # a fixed-step or implicit method: not weighed by tolerance
 
 
 def choose(work: Work, rtol: float, atol: float) -> str:

@@ -71,7 +71,8 @@ class Candidate:
 
 @dataclass
 class Plan:
-    """What one simulation runs, decided once: the scene, the method, the output times ``t``,
+    """What one simulation runs, decided once: the scene, the method (the first candidate's;
+    with ``method = "auto"`` each candidate has the cost model's for its model), the output times ``t``,
     the init map's ``inputs`` and the ``candidates`` in the order they are tried (the C
     driver's pole check refuses a singular formulation's start with status RANGE: the next
     one runs)."""
@@ -121,11 +122,13 @@ def make(scene: Scene) -> Plan:
         steps = [(auto.model_key(scene, method)[0], 0)]
     else:
         steps = auto.plan(scene)
-    descs = [(catalogue.describe((name, *key)), mode) for name, mode in steps]
-    if scene.simulate.method == "auto" and method not in SCIPY_METHODS:
-        method = auto_method(scene, descs[0][0])
-    candidates = tuple(Candidate(scene, method, desc, mode) for desc, mode in descs)
-    return Plan(scene, method, scene.t_out, inputs_of(scene), candidates)
+    auto_picks = scene.simulate.method == "auto" and method not in SCIPY_METHODS
+    # each candidate's method for its own model (a fallback model may weigh differently), so
+    # that a fallback runs what a plan of its model would run
+    candidates = tuple(Candidate(scene, auto_method(scene, desc) if auto_picks else method, desc, mode)
+                       for desc, mode in ((catalogue.describe((name, *key)), mode) for name, mode in steps))
+    return Plan(scene, candidates[0].method if candidates else method, scene.t_out, inputs_of(scene),
+                candidates)
 
 
 def auto_method(scene: Scene, desc: catalogue.Description) -> str:

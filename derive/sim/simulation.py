@@ -267,7 +267,7 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
     if c.pole_loss:
         _check_pole(desc, t, out[1], sc.simulate.rtol)
     # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT).
-    return _result(desc, out, y, t, sc, method, nfev, p, finite=True, integrals=pl.integrals)
+    return _result(desc, out, y, t, sc, c.method, nfev, p, finite=True, integrals=pl.integrals)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
@@ -388,8 +388,13 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
         h = min(default_step(sc) for sc in scs)
         for sc in scs:
             _check_budget(sc, method, h)
+    candidates = tuple(auto.batch_plan(scs, effects))
+    if first.simulate.method == "auto" and candidates:
+        # one method for the batch: the cost model's, for its first scene and first model
+        desc = catalogue.describe((candidates[0][0], first.symmetric, effects))
+        method = plan.auto_method(first, desc)
     return BatchPlan(scs, method, first.t_out, np.array([inputs_of(sc) for sc in scs]), effects, h,
-                     tuple(auto.batch_plan(scs, effects)))
+                     candidates)
 
 
 def _pole_suspects(desc, betas: np.ndarray, rtol: float) -> np.ndarray:
