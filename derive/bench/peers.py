@@ -74,6 +74,8 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
         r = ours["rtol"]
         tuned = dict(data, simulate=dict(data["simulate"], rtol=r, atol=B.ATOL_RATIO * r))
         prepared = derive.prepare(tuned)
+        ran = prepared.run()
+        ours.update(method=ran.method, formulation=ran.formulation)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             sim = lambda: derive.simulate(tuned)  # noqa: E731
@@ -86,11 +88,17 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
                     setup = c.setup(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"])
                     theirs = lambda c=c, method=method, setup=setup, x=m["rtol"]: c.solve(  # noqa: E731
                         prob, method, x, B.ATOL_RATIO * x, setup)
-                    fns = [theirs, sim, run]
-                    entry["time"], entry["derive_simulate"], entry["derive_prepared"] = B.interleaved(
+                    # the peer's call and then the axis from its states (NumPy): what its user
+                    # computes to get the quantity both sides are judged on (derive's call
+                    # returns the axis among its outputs)
+                    with_axis = lambda theirs=theirs: prob.axis(theirs()[0])  # noqa: E731
+                    fns = [theirs, sim, run, with_axis]
+                    (entry["time"], entry["derive_simulate"], entry["derive_prepared"],
+                     entry["time_with_axis"]) = B.interleaved(
                         fns, 0, blocks=max(3, cfg.ref_repeats), counts=B.block_counts(fns))
                     entry["ratio_simulate"] = entry["derive_simulate"] / entry["time"]
                     entry["ratio_prepared"] = entry["derive_prepared"] / entry["time"]
+                    entry["ratio_prepared_with_axis"] = entry["derive_prepared"] / entry["time_with_axis"]
                 row["peers"][fam] = entry
         rows.append(row)
     return {"t_end": t_end, "samples": len(t), "rows": rows, "peers": peers}

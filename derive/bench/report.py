@@ -190,14 +190,18 @@ def peers_section(results: dict) -> list[str]:
         return []
     L += ["Reference scene (`scenes/reference_top.toml`), error = max |ê₃ − ê₃,exact| over the output times, "
           "the same measure for all. derive: `derive.simulate(dict)` (validation included) and "
-          "`derive.prepare(dict).run()` (the prepared call), dop853 in the formulation `auto` picks, "
+          "`derive.prepare(dict).run()` (the prepared call), the method and formulation `auto` picks (the "
+          "method column of the derive side says which), "
           "atol = 1e-2 rtol. heyoka: the Euler-angle equations of `scipy_baselines.py` as heyoka expressions in "
           "`taylor_adaptive` (built and JIT-compiled outside the timing; `tol` = the rtol column, heyoka has one "
           "tolerance), reset to t₀, y₀ and `propagate_grid` at the same output times (its dense output). "
           "numbalsoda: the same equations as a numba `cfunc`, `dop853` at the output times, atol = 1e-2 rtol. "
           "Each side at the loosest tolerance (halved or doubled from the level) whose error is no larger than "
           "the level, then timed in turns (blocks of calls alternating; medians). Ratios: derive's time / the "
-          "peer's (< 1: derive is faster).", ""]
+          "peer's (< 1: derive is faster). The peer's call gives its states at the output times; derive's gives "
+          "18 outputs (angles, ω̃, the axis, energy, momenta, n, L). \"peer + axis\": the peer's call and then the "
+          "axis from its states in NumPy, what its user computes to get the quantity both are judged on; the "
+          "goals are judged on the bare call.", ""]
     for part in ("reference", "long"):
         eq = pe.get(part) or {}
         if "error" in eq:
@@ -207,18 +211,20 @@ def peers_section(results: dict) -> list[str]:
             continue
         L += [f"### t ∈ [0, {eq['t_end']:g}], {eq['samples']} samples", "",
               "| error level | derive rtol (error) | peer | peer tol (error, steps) | peer time | derive `simulate` "
-              "| derive prepared | simulate / peer | prepared / peer |", "|---|---|---|---|---|---|---|---|---|"]
+              "| derive prepared | simulate / peer | prepared / peer | peer + axis | prepared / (peer + axis) |",
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
         for row in eq["rows"]:
             d = row["derive"]
-            dcell = f"{d['rtol']:.3g} ({_e(d['error'])})" + ("" if d["reached"] else " **not reached**")
+            dcell = f"{d['rtol']:.3g} ({_e(d['error'])}" + (f", {d['method']}, {d['formulation']}" if "method" in d else "") \
+                + ")" + ("" if d["reached"] else " **not reached**")
             if not row["peers"]:
-                L.append(f"| {row['level']:.0e} | {dcell} | — | | | | | | |")
+                L.append(f"| {row['level']:.0e} | {dcell} | — | | | | | | | | |")
             for fam, e in row["peers"].items():
                 pcell = f"{e['rtol']:.3g} ({_e(e['error'])}, {e['nfev']:,})" + ("" if e["reached"] else " **not reached**")
                 ratio = lambda k: f"**{e[k]:.3g}×**" if k in e else "—"  # noqa: E731
                 L.append(f"| {row['level']:.0e} | {dcell} | {FAMILY_NAMES[fam]} | {pcell} | {_t(e.get('time'))} | "
                          f"{_t(e.get('derive_simulate'))} | {_t(e.get('derive_prepared'))} | {ratio('ratio_simulate')} | "
-                         f"{ratio('ratio_prepared')} |")
+                         f"{ratio('ratio_prepared')} | {_t(e.get('time_with_axis'))} | {ratio('ratio_prepared_with_axis')} |")
         L.append("")
     ba = pe.get("batch") or {}
     if "error" in ba or "skipped" in ba:
