@@ -78,7 +78,9 @@ METHODS: dict[str, Method] = {m.name: m for m in (
            "DOP853's order-8 formula on fixed steps, no error control (reference runs)"),
 )}
 
-#: The method "auto" runs: adaptive, any tolerance, dense output.
+#: The method "auto" runs unless the cost model (:mod:`derive.methods.costs`) finds a Taylor
+#: method cheaper, and always where the model has no Taylor kernel: adaptive, any tolerance,
+#: dense output.
 DEFAULT_METHOD = "dop853"
 
 #: Methods run by SciPy's solve_ivp on the generated NumPy right-hand side (references for
@@ -146,7 +148,9 @@ def _method_reason(name: str, formulation: str, effects: tuple, version: int) ->
 def scene_methods() -> dict[str, str]:
     """What a scene's ``simulate.method`` may name: "auto", the compiled methods, the SciPy
     references; name -> one-line description."""
-    out = {"auto": f"let derive choose ({DEFAULT_METHOD} unless the scene says otherwise)"}
+    out = {"auto": f"let derive choose: {DEFAULT_METHOD} or a Taylor method, whichever a cost model of "
+                   f"the model, the tolerance, the samples and the span finds cheaper "
+                   f"(derive.methods.costs)"}
     out.update({name: m.summary for name, m in compiled_methods().items()
                 if name not in INTERNAL_METHODS})
     out.update({name: text for name, (_, text) in REFERENCE_METHODS.items()})
