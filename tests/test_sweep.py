@@ -53,13 +53,14 @@ def test_random_points_follow_the_seed():
 def test_inputs_and_final_state_match_simulate_bit_for_bit():
     """The arrays built without a scene per point give what derive.simulate gives: the outputs at
     t_end of the measured run equal the plain run's last sample (measuring does not change the
-    steps)."""
+    steps), run with the formulation the sweep ran the point with."""
     spec = _spec(measures=["final_state", "nfev"])
     res = derive.sweep(spec, processes=1)
     for i in (0, 5, 11):
         scene = {**REF, "initial": {**REF["initial"], "beta": float(res.params["initial.beta"][i]),
                                     "gamma_dot": float(res.params["initial.gamma_dot"][i])},
-                 "simulate": {**REF["simulate"], "formulation": "euler-poisson", "samples": 7}}
+                 "simulate": {**REF["simulate"], "formulation": str(res.formulation[i]),
+                              "samples": 7}}
         sim = derive.simulate(scene)
         assert res.measures["final_beta"][i] == sim.beta[-1]
         for name in ("alpha", "gamma"):  # the same angle; unwrapped from fewer samples

@@ -92,7 +92,9 @@ def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, sci
 
 
 def _warm_worker():
-    """Load the reference model's measured library in this process (a Dask worker)."""
-    sp = load({"scene": reference_data(1.0), "vary": {"initial": {"beta": {"values": [0.8]}}}})
+    """Load the reference sweep's measured libraries in this process (a Dask worker): every
+    candidate of its plan, a start near the pole sending one point to the next."""
+    sp = load({"scene": reference_data(1.0),
+               "vary": {"initial": {"beta": {"values": [0.8, 0.05]}}}})
     run_chunk(sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-8, 1e-12, 0.0, 1000),
-              ms.config_of(ms.DEFAULT))
+              ms.config_of(ms.DEFAULT), None, sp.terms, sp.pole_check, sp.fallback)

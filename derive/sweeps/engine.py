@@ -28,9 +28,15 @@ Decisions (documented here once):
   (SceneError, exit 2, ``<file>: <key>: <what>``).
 * If any point has I2 != I1 the whole sweep runs the asymmetric model (it represents the
   symmetric points too; a symmetric one would not).
-* Formulation "auto" runs the cheapest formulation without a singular set (the turning points
-  of every point are not known in advance); a singular formulation named in the scene is
-  refused. The method must be adaptive (dop853): the measures read its dense output.
+* Formulation "auto" runs, per point, the formulations auto would try for a single run,
+  cheapest first (:func:`sweep_plan`): a start that a candidate's compiled pole check refuses
+  (status RANGE, decided from the start by the Routh polynomial before any step) runs again
+  with the next candidate, in the same chunk, down to the cheapest one without a singular set,
+  which takes every point. The heavy symmetric top runs reduced-u clear of the poles
+  (|sin beta| >= 0.1 all along) and euler-poisson elsewhere. Every point's outcome depends on
+  its own numbers only, never on its chunk. ``SweepResult.formulation`` says which
+  formulation ran each point. A singular formulation named in the scene is refused. The
+  method must be adaptive (dop853): the measures read its dense output.
 * The scene's ``samples`` is not used: a sweep keeps the outputs at t_end only (final_state).
 * The random points are drawn in the calling process (``numpy.random.default_rng(seed)``, one
   ``uniform`` per key, in the file's order), so a seed gives the same points whatever runs them.
@@ -93,8 +99,10 @@ class Spec:
     invalid: dict = field(default_factory=dict)  # point index -> why it is not run
     general: np.ndarray = field(repr=False, default=None)  # (N, 8) I1..I3, M, g, cx, cy, cz
     damping: np.ndarray = field(repr=False, default=None)  # (N,) the damping coefficient c
-    key: tuple = ()  # the model (formulation, symmetric, effects)
+    key: tuple = ()  # the first candidate's model (formulation, symmetric, effects)
     method: str = ""
+    pole_check: int = 0  # the first candidate's pole check (0: none, it takes every point)
+    fallback: tuple = ()  # the next candidates, in order: (model key, pole check, ps (N, NP))
     terms: tuple = ()  # the user's terms (derive.symbolic.terms.Term), registered in each worker
     files: tuple = ()  # the files read: the sweep file and the scene file it names
 
@@ -412,7 +420,6 @@ def _map_math(fn, *cols):
 
 def _build(spec: Spec) -> None:
     """inputs (N, NIN), ps (N, NP), the invalid points, the model and the method."""
-    from derive.sim import auto
     from derive.runtime import catalogue
     from derive.symbolic import effects
     from derive.symbolic.formulations import REGISTRY as FORMS
@@ -501,12 +508,15 @@ def _build(spec: Spec) -> None:
                                             f"method (dop853), not {method}")
     form = rep.simulate.formulation
     if form == "auto":
-        form = next(f for f in auto.candidates(rep, needed) if not FORMS[f].singular)
+        plan = sweep_plan(symmetric, needed, method)
     elif FORMS[form].singular:
         _fail(src, "scene.simulate.formulation", f"{form} is singular at sin(beta) = 0; a sweep "
                                                  f"runs a formulation without a singular set (or auto)")
-    spec.key, spec.method = (form, symmetric, needed), method
-    desc = catalogue.describe(spec.key)
+    else:
+        plan = ((form, 0),)
+    descs = [catalogue.describe((f, symmetric, needed)) for f, _ in plan]
+    desc = descs[0]
+    spec.key, spec.method, spec.pole_check = (plan[0][0], symmetric, needed), method, plan[0][1]
 
     # inputs
     inputs = np.tile(inputs_of(base), (n, 1))
@@ -532,12 +542,9 @@ def _build(spec: Spec) -> None:
             if f"initial.omega.{i}" in cols:
                 inputs[:, 3 + i] = cols[f"initial.omega.{i}"]
 
-    derived = set(desc.derived_params)
-    ps = np.zeros((n, len(desc.params)))
-    for k, name in enumerate(desc.params):
-        if k not in derived:
-            ps[:, k] = values[name]
-    spec.inputs, spec.ps = inputs, ps
+    spec.inputs, spec.ps = inputs, _params(desc, values, n)
+    spec.fallback = tuple(((f, symmetric, needed), mode, _params(d, values, n))
+                          for (f, mode), d in zip(plan[1:], descs[1:]))
     # the general parameters of every point (derive.symbolic.integrable.parameters' convention: no
     # gravity is M = g = 0; gravity's l is the centre of mass on axis 3), for integral_drift
     zero = np.zeros(n)
@@ -546,15 +553,88 @@ def _build(spec: Spec) -> None:
     spec.damping = np.asarray(values.get("c", zero), dtype=float)
 
 
+def _params(desc, values: dict, n: int) -> np.ndarray:
+    """(N, NP) parameters of the model ``desc`` from the named columns ``values`` (the ones its
+    init map derives, such as reduced-u's p_alpha, p_gamma, E', are left 0 for C to fill)."""
+    derived = set(desc.derived_params)
+    ps = np.zeros((n, len(desc.params)))
+    for k, name in enumerate(desc.params):
+        if k not in derived:
+            ps[:, k] = values[name]
+    return ps
+
+
+def sweep_plan(symmetric: bool, effects: tuple, method: str) -> tuple:
+    """The formulations a sweep of formulation "auto" tries per point, cheapest first, each
+    with the pole check its C driver runs on the start: ((formulation, pole check), ...), the
+    last one without a singular set (check 0: it takes every point).
+
+    They are the candidates of :func:`derive.sim.auto.plan` for the model's structure (body
+    symmetry, effects, method; a point's start is judged by the compiled check, per point),
+    except:
+
+    * a formulation whose accuracy near a pole is judged after the run from the sampled beta
+      (``pole_loss``: euler-angles) is left out: a sweep keeps no samples to judge it on, so a
+      point refused by the first candidate runs the universal one instead;
+    * a singular formulation is tried only when its model exists (generated or cached): the
+      plan must not cost a derivation in SymPy;
+    * the check of mode 2 (the reduced equations may meet a pole where they stay regular) is
+      made mode 1 (clear of both poles): a start at a pole, which ``derive.simulate`` refuses
+      for those formulations up front, cannot then reach their integration.
+    """
+    from derive.runtime import catalogue
+    from derive.sim import auto
+    from derive.symbolic import effects as fx
+    from derive.symbolic.formulations import REGISTRY as FORMS
+
+    out = []
+    for name, mode in auto._structural(symmetric, effects, method, fx.VERSION[0]):
+        if not mode:
+            out.append((name, 0))
+            break
+        if FORMS[name].pole_loss or catalogue.available((name, symmetric, effects)) is None:
+            continue
+        out.append((name, 1))
+    return tuple(out)
+
+
 # ---------------------------------------------------------------------------------------------
 # engines
 
 
-def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=()):
-    """One task: measured simulations of a block of points in one C call (the library is
-    compiled or loaded once per process). Returns (res, final outputs (N, NOBS), stats).
-    ``terms``: the user's terms of the model, registered here first (a worker started afresh
-    knows only the built-in effects)."""
+def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=(), pole_check=0,
+              fallback=(), which=False):
+    """One task: measured simulations of a block of points (the libraries are compiled or
+    loaded once per process).
+
+    Parameters
+    ----------
+    key, method : tuple, str
+        The first candidate's model and the method.
+    inputs, ps : ndarray
+        The init map's inputs (N, NIN) and the first candidate's parameters (N, NP).
+    t, args, config, integral
+        As :meth:`derive.sweeps.measures.MeasureKernel.run` takes them.
+    terms : tuple
+        The user's terms of the model, registered here first (a worker started afresh knows
+        only the built-in effects).
+    pole_check : int
+        The first candidate's check of each start (0: none).
+    fallback : tuple
+        The next candidates, ``(key, pole check, ps (N, NP))``: the points the previous
+        candidate's check refused (status RANGE) run again with the next, in one C call each.
+    which : bool
+        Also return ``ran`` (the engines' tasks do; every argument is positional there, so
+        that a stand-in for this function in the tests takes ``*args``).
+
+    Returns
+    -------
+    tuple
+        (res (N, len(SLOTS)), final outputs (N, NOBS), stats (N,)), and with ``which`` ``ran``
+        (N,) int8: the index of the candidate whose run gave each point's numbers (0 the
+        first).
+    """
+    from derive.methods.status import Status
     from derive.runtime import catalogue
     from derive.symbolic import terms as user_terms
 
@@ -563,8 +643,22 @@ def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=())
 
     desc = catalogue.describe(key)
     kernel = ms.MeasureKernel.load(desc, method)
-    res, out, st = kernel.run(inputs, ps, t, args, config, integral)
-    return res, np.ascontiguousarray(out[:, :, -1]), st
+    res, out, st = kernel.run(inputs, ps, t, args, config, integral, pole_check)
+    final = np.ascontiguousarray(out[:, :, -1])
+    ran = np.zeros(len(st), dtype=np.int8)
+    todo = np.flatnonzero(st["status"] == Status.RANGE) if pole_check else np.zeros(0, int)
+    for j, (fkey, fcheck, fps) in enumerate(fallback, start=1):
+        if todo.size == 0:
+            break
+        fdesc = catalogue.describe(fkey)
+        if fdesc.outputs != desc.outputs:  # the rows below mix the two models' outputs
+            raise AssertionError(f"{fdesc.name} and {desc.name} have different outputs")
+        sub = None if integral is None else np.asarray(integral)[todo]
+        r, o, s = ms.MeasureKernel.load(fdesc, method).run(inputs[todo], fps[todo], t, args,
+                                                          config, sub, fcheck)
+        res[todo], final[todo], st[todo], ran[todo] = r, o[:, :, -1], s, j
+        todo = todo[s["status"] == Status.RANGE] if fcheck else todo[:0]
+    return (res, final, st, ran) if which else (res, final, st)
 
 
 def _chunks(idx: np.ndarray, parallel: int) -> list:
@@ -1146,7 +1240,9 @@ def _cpus() -> int:
 @dataclass
 class SweepResult:
     """``params`` and ``measures``: {name: (N,) array}, one entry per point (grid points in C
-    order, the first varied key slowest); ``status``: (N,) str, "ok" or why the point failed."""
+    order, the first varied key slowest); ``status``: (N,) str, "ok" or why the point failed;
+    ``formulation``: (N,) str, the formulation whose run gave the point's numbers ("" for a
+    point not run: invalid); ``model``: the models that ran any point, in the order tried."""
 
     params: dict
     measures: dict
@@ -1159,6 +1255,7 @@ class SweepResult:
     model: str = ""
     scene: object = field(default=None, repr=False)
     files: tuple = ()  # the files the sweep read (outputs may not replace them: ``write``)
+    formulation: np.ndarray = field(default=None, repr=False)
 
     @property
     def ok(self) -> np.ndarray:
@@ -1228,8 +1325,10 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
             raise SceneError(f"{sp.source}: --measure: {name} has several columns; plot one of "
                              f"{', '.join(ms.REGISTRY[name].columns)}")
         sp.measures = tuple(dict.fromkeys((*sp.measures, name)))
-    desc = catalogue.describe(sp.key)
-    ms.MeasureKernel.load(desc, sp.method)  # compile here, once, before any worker needs it
+    descs = [catalogue.describe(k) for k in (sp.key, *(f[0] for f in sp.fallback))]
+    desc = descs[0]
+    for d in descs:  # compile here, once, before any worker needs them
+        ms.MeasureKernel.load(d, sp.method)
     s = sp.scene.simulate
     t = np.array([0.0, s.t_end])
     args = (s.rtol, s.atol, 0.0, s.max_steps)
@@ -1243,7 +1342,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
     def submit_args(idx):
         return (sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, config,
-                None if integral is None else integral[idx], sp.terms)
+                None if integral is None else integral[idx], sp.terms, sp.pole_check,
+                tuple((k, c, p[idx]) for k, c, p in sp.fallback), True)
 
     if workers is None and scheduler is None:
         tasks = _chunks(run, processes)
@@ -1260,22 +1360,26 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
 
     stats = np.zeros(n, dtype=STATS_DTYPE)
     status = np.full(n, "ok", dtype=object)
+    ran = np.full(n, -1, dtype=np.int8)  # the candidate that ran each point (-1: not run)
     for i, why in sp.invalid.items():
         status[i] = why
     for k, idx in enumerate(tasks):
-        r, f, st = results[k]
-        res[idx], final[idx], stats[idx] = r, f, st
+        r, f, st, which = results[k]
+        res[idx], final[idx], stats[idx], ran[idx] = r, f, st, which
     for i in np.flatnonzero(stats["status"] != 0):
-        status[i] = _explain(desc, stats[i], s.max_steps)
+        status[i] = _explain(descs[ran[i]], stats[i], s.max_steps)
     for i in run[~np.isfinite(final[run]).all(axis=1)]:
         if status[i] == "ok":
             status[i] = f"t = {s.t_end:.8g}: non-finite outputs (overflow)"
             res[i] = np.nan
     values = ms.read(sp.measures, desc, res, stats, final)
+    names = np.array(["", *(d.formulation for d in descs)], dtype=object)
+    used = [d.name for j, d in enumerate(descs) if (ran == j).any()] or [desc.name]
     return SweepResult(params={k: sp.columns[k] for k in sp.keys}, measures=values,
                        status=status.astype(str), keys=sp.keys, shape=sp.shape,
                        measure_names=sp.measures, title=sp.scene.title or "", source=sp.source,
-                       model=desc.name, scene=sp.scene, files=sp.files)
+                       model=", ".join(used), scene=sp.scene, files=sp.files,
+                       formulation=names[ran.astype(int) + 1].astype(str))
 
 
 def write(result: SweepResult, parquet: str | None, png: str | None = None,

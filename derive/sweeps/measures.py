@@ -242,9 +242,9 @@ class MeasureKernel:
     def __init__(self, desc, method, lib):
         self.desc, self.method, self.lib = desc, method, lib
         self.ny, self.nout = len(desc.states), len(desc.outputs)
-        vp, cl, cd = ctypes.c_void_p, ctypes.c_long, ctypes.c_double
+        vp, cl, cd, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_double, ctypes.c_int
         fn = getattr(lib, f"{desc.name}_measure_batch_{method}")
-        fn.argtypes = [cl, vp, vp, vp, cl, cd, cd, cd, cl, vp, vp, vp, vp, vp, vp]
+        fn.argtypes = [cl, vp, vp, vp, cl, cd, cd, cd, cl, ci, vp, vp, vp, vp, vp, vp]
         fn.restype = ctypes.c_int
         self._fn = fn
         guard = getattr(lib, f"{desc.name}_interrupt_guard")
@@ -277,10 +277,12 @@ class MeasureKernel:
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
-    def run(self, inputs, ps, t, args, config, integral=None):
+    def run(self, inputs, ps, t, args, config, integral=None, pole_check: int = 0):
         """(res (N, len(SLOTS)), out (N, NOBS, n), stats (N,)) for inputs (N, NIN), ps (N, NP),
         output times t, the driver's arguments (rtol, atol, h0, max_steps) and the per-point
-        ``integral_rows`` (None: no integral, integral_drift NaN)."""
+        ``integral_rows`` (None: no integral, integral_drift NaN). ``pole_check``: the driver's
+        check of each start (:func:`derive.sim.auto.pole_mode`; 0 none): a start it refuses
+        has status RANGE and NaN measures, and the other points run on."""
         import threading
 
         from derive.runtime.integrate import STATS_DTYPE
@@ -303,7 +305,7 @@ class MeasureKernel:
             if main:
                 self._guard(1)
             try:
-                rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, ptr(config),
+                rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, int(pole_check), ptr(config),
                               ptr(integral), ptr(y), ptr(out), ptr(st), ptr(res))
             finally:
                 interrupted = self._guard(0) if main else 0
