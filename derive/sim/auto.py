@@ -73,6 +73,19 @@ def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
     return out
 
 
+def structural(symmetric: bool, effects: tuple, method: str) -> tuple:
+    """The formulations ``plan`` would try for this body symmetry, these effects and this
+    method, cheapest first, each with its pole mode, before the scene's numbers are looked at
+    (a sweep's or a batch's model: :func:`derive.sweeps.engine.sweep_plan`).
+
+    Returns
+    -------
+    tuple of (str, int)
+        (formulation, pole mode) pairs; see :func:`pole_mode`.
+    """
+    return _structural(symmetric, tuple(effects), method, fx.VERSION[0])
+
+
 @functools.lru_cache(maxsize=256)
 def _structural(symmetric, effects, method, version) -> tuple:
     """What of ``plan`` depends on the scene's structure alone (cached; ``version`` is the

@@ -584,11 +584,10 @@ def sweep_plan(symmetric: bool, effects: tuple, method: str) -> tuple:
     """
     from derive.runtime import catalogue
     from derive.sim import auto
-    from derive.symbolic import effects as fx
     from derive.symbolic.formulations import REGISTRY as FORMS
 
     out = []
-    for name, mode in auto._structural(symmetric, effects, method, fx.VERSION[0]):
+    for name, mode in auto.structural(symmetric, effects, method):
         if not mode:
             out.append((name, 0))
             break
