@@ -94,23 +94,61 @@ class Plan:
         once per plan: a prepared run does not classify its scene again."""
         return integrals_of(self.scene)
 
+    @functools.cached_property
+    def integral_rows(self) -> list:
+        """The same integrals as ``[(name, formula, values)]``, ``formula(L, n, values)`` taking
+        L and n as rows (3, N), the layout of the C call's outputs: a compiled run evaluates
+        them on its output rows with no conversion or transposition per call."""
+        return integral_rows_of(self.scene)
+
+
+def _integrals_key(scene: Scene) -> tuple:
+    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
+    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
+    from derive.symbolic.integrable import on_area_level
+
+    return (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
+            on_area_level(scene))
+
+
+def _memo(memo: dict, key, make):
+    """``memo[key]``, made by ``make()`` when absent; the memo holds at most :data:`MEMO_SIZE`
+    entries (the oldest goes first): a sweep of many bodies must not grow it without bound."""
+    found = memo.get(key)
+    if found is None:
+        if len(memo) >= MEMO_SIZE:
+            del memo[next(iter(memo))]
+        found = memo[key] = make()
+    return found
+
+
+#: Entries kept by each of this module's memos (classifications, plans).
+MEMO_SIZE = 64
+
 
 def integrals_of(scene: Scene) -> list:
     """``[(name, f(L, n))]``: the extra integral of the scene's integrable case
     (:func:`derive.symbolic.integrable.integrals_for`; empty for a general body)."""
-    from derive.symbolic.integrable import integrals_for, on_area_level
+    from derive.symbolic.integrable import integrals_for
 
-    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
-    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
-           on_area_level(scene))
-    found = _INTEGRALS.get(key)
-    if found is None:
-        found = _INTEGRALS[key] = integrals_for(scene)
-    return found
+    return _memo(_INTEGRALS, _integrals_key(scene), lambda: integrals_for(scene))
+
+
+def integral_rows_of(scene: Scene) -> list:
+    """``[(name, formula, values)]``: the integrals of :func:`integrals_of` as their formulas
+    (``formula(L, n, values)``, L and n rows of shape (3, N)) and the scene's numbers, what
+    :func:`derive.symbolic.integrable.integrals_for` wraps."""
+    from derive.symbolic.integrable import classify, parameters
+
+    def make():
+        integral = classify(scene).extra
+        return [] if integral is None else [(integral.name, integral.formula, parameters(scene))]
+
+    return _memo(_INTEGRAL_ROWS, _integrals_key(scene), make)
 
 
 _INTEGRALS: dict = {}
+_INTEGRAL_ROWS: dict = {}
 
 
 def make(scene: Scene) -> Plan:
