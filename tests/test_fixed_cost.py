@@ -3,6 +3,7 @@ the output rows and evaluates the integrals without an ``np.errstate``; ``derive
 a scene equal to a recent one reuses its plan, and never a stale one."""
 from __future__ import annotations
 
+import copy
 import dataclasses
 import warnings
 
@@ -92,3 +93,131 @@ def test_prepared_runs_do_not_share_their_integrals():
     assert not np.shares_memory(one.integrals[name], two.integrals[name])
     assert np.array_equal(one.integrals[name], two.integrals[name])
     assert not np.array_equal(prepared.run(initial={"gamma_dot": 5.0}).integrals[name], one.integrals[name])
+
+
+# ---------------------------------------------------------------------------------------------
+# the memo of plans (derive.sim.plan.recent)
+
+from derive.runtime import catalogue  # noqa: E402
+from derive.sim import plan as plans  # noqa: E402
+from derive.sim.scene import load_scene  # noqa: E402
+from derive.symbolic import effects  # noqa: E402
+
+
+def _same_result(a: Result, b: Result) -> None:
+    _fields_equal(a, b)
+
+
+def test_an_equal_scene_reuses_its_plan_and_gives_a_fresh_plan_s_result():
+    data = _short()
+    kept = plans.recent(load_scene(data))
+    assert plans.recent(load_scene(copy.deepcopy(data))) is kept
+    res = derive.simulate(data)
+    assert res.scene is kept.scene
+    _same_result(res, simulation.run(plans.make(load_scene(data))))
+
+
+@pytest.mark.parametrize("change", [
+    lambda d: d["initial"].update(beta=0.81),
+    lambda d: d["gravity"].update(M=0.9),
+    lambda d: d["body"].update(I3=0.55),
+    lambda d: d["simulate"].update(rtol=1e-9),
+    lambda d: d["simulate"].update(samples=3),
+    lambda d: d.update(title="another top"),
+    lambda d: d["initial"].update(alpha=-0.0),  # == 0.0, but its own sign
+], ids=["initial", "effect", "body", "rtol", "samples", "title", "signed-zero"])
+def test_changed_numbers_make_a_new_plan(change):
+    data = _short()
+    kept = plans.recent(load_scene(data))
+    changed = copy.deepcopy(data)
+    change(changed)
+    new = plans.recent(load_scene(changed))
+    assert new is not kept
+    assert load_scene(changed) == new.scene
+    _same_result(derive.simulate(changed), simulation.run(plans.make(load_scene(changed))))
+    assert plans.recent(load_scene(data)) is kept  # the first one is still kept
+
+
+def test_a_changed_source_makes_a_new_plan(tmp_path):
+    """Scene equality ignores the source; the memo does not (errors name the scene's file)."""
+    data = _short()
+    data["simulate"].update(max_steps=1, t_end=10.0)
+    path = tmp_path / "top.toml"
+    path.write_text(f'title = "{data["title"]}"\n' + "".join(
+        f"[{table}]\n" + "".join(f"{k} = {v!r}\n" for k, v in data[table].items())
+        for table in ("body", "gravity", "initial", "simulate")))
+    from_dict, from_file = load_scene(data), load_scene(str(path))
+    assert from_dict == from_file
+    assert plans.recent(from_file) is not plans.recent(from_dict)
+    with pytest.raises(derive.IntegrationError) as from_dict_error:
+        derive.simulate(data)
+    assert plans.recent(load_scene(str(path))).scene.source == str(path)
+    assert plans.recent(load_scene(data)).scene.source == "<dict>"
+    with pytest.raises(derive.IntegrationError) as from_file_error:
+        derive.simulate(str(path))
+    assert str(from_file_error.value) == str(from_dict_error.value)  # the run's own, not a scene's
+
+
+def test_a_registered_effect_makes_a_new_plan():
+    data = _short()
+    kept = plans.recent(load_scene(data))
+    table = effects.Table("spring", "a toy table", keys=(effects.Key("k", "N m", "stiffness"),))
+    effect = effects.Effect("spring", "spring", "a toy effect", params=(effects.Param("k_spring"),),
+                            values=lambda v: {"k_spring": v["k"]}, torque=lambda omega, R, sym: None)
+    effects.register(effect, table)
+    try:
+        during = plans.recent(load_scene(data))
+        assert during is not kept
+    finally:
+        effects.unregister("spring")
+    after = plans.recent(load_scene(data))
+    assert after is not kept and after is not during
+    _same_result(derive.simulate(data), simulation.run(plans.make(load_scene(data))))
+
+
+def test_a_cleared_catalogue_makes_a_new_plan():
+    """``catalogue.clear_memory`` forgets the model descriptions (a new cache): a kept plan
+    holds the old ones, so it is not used again."""
+    data = _short()
+    kept = plans.recent(load_scene(data))
+    catalogue.clear_memory()
+    new = plans.recent(load_scene(data))
+    assert new is not kept
+    assert new.candidates[0].desc is catalogue.describe(
+        (new.candidates[0].desc.formulation, new.scene.symmetric, new.scene.effects))
+    _same_result(derive.simulate(data), simulation.run(plans.make(load_scene(data))))
+
+
+def test_the_memo_stays_small_and_keeps_the_recent_plans():
+    data = _short()
+    first = plans.recent(load_scene(data))
+    for k in range(plans.MEMO_SIZE + 10):
+        other = copy.deepcopy(data)
+        other["initial"]["beta"] = 0.5 + 1e-3 * k
+        plans.recent(load_scene(other))
+        plans.recent(load_scene(data))  # used again: stays among the recent ones
+        assert len(plans._PLANS) <= plans.MEMO_SIZE
+    assert plans.recent(load_scene(data)) is first
+    oldest = copy.deepcopy(data)
+    oldest["initial"]["beta"] = 0.5
+    assert load_scene(oldest) not in [p.scene for p in plans._PLANS.values()]
+
+
+def test_a_failing_scene_fails_again_from_the_memo():
+    data = reference_data(10.0)
+    data["simulate"].update(max_steps=5)
+    messages = set()
+    for _ in range(3):
+        with pytest.raises(derive.IntegrationError) as err:
+            derive.simulate(data)
+        messages.add(str(err.value))
+    assert len(messages) == 1
+
+
+def test_fallback_candidates_weigh_their_method_when_asked():
+    """Under method "auto" a fallback's method is the cost model's for its own model, worked out
+    when first asked (a fallback rarely runs)."""
+    pl = plans.make(load_scene(_short()))
+    assert len(pl.candidates) > 1
+    assert "method" not in vars(pl.candidates[1])
+    assert all(c.method == plans.auto_method(pl.scene, c.desc) for c in pl.candidates)

@@ -260,8 +260,9 @@ def _ignoring(fn, *args):
 @_quiet
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
-    plan it once (:func:`derive.sim.plan.make`), then run the plan."""
-    return run(plan.make(load_scene(scene, **overrides)))
+    validate it, plan it (:func:`derive.sim.plan.recent`: the kept plan of an equal scene simulated
+    recently, else a new one), then run the plan."""
+    return run(plan.recent(load_scene(scene, **overrides)))
 
 
 def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None = None) -> Result:
