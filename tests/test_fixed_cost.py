@@ -221,3 +221,23 @@ def test_fallback_candidates_weigh_their_method_when_asked():
     assert len(pl.candidates) > 1
     assert "method" not in vars(pl.candidates[1])
     assert all(c.method == plans.auto_method(pl.scene, c.desc) for c in pl.candidates)
+
+
+# ---------------------------------------------------------------------------------------------
+# the bench's figures
+
+
+def test_the_fixed_cost_race_times_a_hit_and_a_miss_and_reports_both():
+    from derive.bench import peers, report
+    from derive.bench.runner import SMOKE
+
+    plans.forget()
+    out = peers.fixed_cost(SMOKE, [])
+    assert out["derive_prepared"] > 0 and out["derive_simulate"] > 0 and out["derive_simulate_new"] > 0
+    # the misses made plans of their own (the hit one plan): more than two kept, within the bound
+    assert 2 < len(plans._PLANS) <= plans.MEMO_SIZE
+    fake = dict(out, heyoka=1e-5, prepared_vs_heyoka=1.0, simulate_vs_heyoka=2.0, simulate_new_vs_heyoka=3.0)
+    text = "\n".join(report.peers_section({"targets": {"peers": {"peers": ["heyoka"], "fixed_cost": fake}}}))
+    assert "new numbers" in text and "**3×**" in text and "**2×**" in text
+    older = {k: v for k, v in fake.items() if "new" not in k}  # results of an older bench
+    assert "new numbers" not in "\n".join(report.peers_section({"targets": {"peers": {"fixed_cost": older}}}))
