@@ -22,11 +22,13 @@ load hits both alike. Ratios are derive's time over the peer's (the goals are â‰
   ``propagate_until`` t_end (the final state only); heyoka at the tolerance that matched
   derive's error on the reference scene.
 * :func:`fixed_cost` â€” t_end = 1e-3, 2 samples, rtol 1e-10: ``derive.prepare(scene).run()``
-  and ``derive.simulate(dict)`` against heyoka's reset + ``propagate_grid`` of the same two
-  times (and numbalsoda's ``dop853``).
+  and ``derive.simulate(dict)`` (the same scene again, and a scene with new numbers each call)
+  against heyoka's reset + ``propagate_grid`` of the same two times (and numbalsoda's
+  ``dop853``).
 """
 from __future__ import annotations
 
+import itertools
 import math
 import time
 import warnings
@@ -203,17 +205,25 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
 
 
 def fixed_cost(cfg, fams: list[str]) -> dict:
-    """The cost of one short call (t_end = 1e-3, 2 samples, rtol 1e-10): derive's prepared run
-    and ``derive.simulate(dict)`` against the peers' calls, timed in turns."""
+    """The cost of one short call (t_end = 1e-3, 2 samples, rtol 1e-10): derive's prepared run,
+    ``derive.simulate(dict)`` of the same scene again (``derive_simulate``: its plan kept by
+    :func:`derive.sim.plan.recent`) and of a scene with new numbers every call
+    (``derive_simulate_new``: validated, planned and set up anew; the scenes cycle through four
+    times as many as the memo keeps), against the peers' calls, timed in turns."""
     import derive
+    from derive.sim.plan import MEMO_SIZE
 
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
     rtol = float(data["simulate"]["rtol"])
     prepared = derive.prepare(data)
-    names = ["derive_prepared", "derive_simulate"]
-    fns = [prepared.run, lambda: derive.simulate(data)]
+    # the same motion each time but for a start rate that differs in its last digits: no two of
+    # the cycle are equal, and no scene comes back before the memo has let it go
+    fresh = itertools.cycle([dict(data, initial=dict(data["initial"], gamma_dot=data["initial"]["gamma_dot"] + 1e-9 * k))
+                             for k in range(4 * MEMO_SIZE)])
+    names = ["derive_prepared", "derive_simulate", "derive_simulate_new"]
+    fns = [prepared.run, lambda: derive.simulate(data), lambda: derive.simulate(next(fresh))]
     for fam in PEERS:
         if fam in fams:
             c, method = bc.CONTENDERS[fam], PEERS[fam]
@@ -226,6 +236,7 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
         if fam in times:
             out[f"prepared_vs_{fam}"] = times["derive_prepared"] / times[fam]
             out[f"simulate_vs_{fam}"] = times["derive_simulate"] / times[fam]
+            out[f"simulate_new_vs_{fam}"] = times["derive_simulate_new"] / times[fam]
     return out
 
 

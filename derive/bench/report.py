@@ -246,11 +246,17 @@ def peers_section(results: dict) -> list[str]:
     if "error" in fc:
         L += [f"- fixed cost: not measured ({fc['error']})", ""]
     elif fc:
+        new = "derive_simulate_new" in fc  # (results of a bench without the figure: not shown)
         peers = "; ".join(f"{FAMILY_NAMES[f]} {_t(fc[f])}: prepared / it **{fc[f'prepared_vs_{f}']:.3g}×**, "
-                          f"simulate / it **{fc[f'simulate_vs_{f}']:.3g}×**" for f in ("heyoka", "numbalsoda") if f in fc)
+                          f"simulate / it **{fc[f'simulate_vs_{f}']:.3g}×**"
+                          + (f", simulate of new numbers / it **{fc[f'simulate_new_vs_{f}']:.3g}×**" if new else "")
+                          for f in ("heyoka", "numbalsoda") if f in fc)
         L += [f"### Fixed cost (t_end = 1e-3, 2 samples, rtol {fc['rtol']:g})", "",
               f"`derive.prepare(dict).run()` {_t(fc['derive_prepared'])}, `derive.simulate(dict)` "
-              f"{_t(fc['derive_simulate'])}; {peers}. heyoka's call: reset time, state and parameters, "
+              f"{_t(fc['derive_simulate'])} (the same scene again: validated, its plan kept from the call before)"
+              + (f" and {_t(fc['derive_simulate_new'])} (a scene with new numbers every call: validated, planned "
+                 "and its C call set up anew)" if new else "")
+              + f"; {peers}. heyoka's call: reset time, state and parameters, "
               "`propagate_grid` over the two times; numbalsoda's: `dop853` over them.", ""]
     return L
 

@@ -13,6 +13,8 @@ Takes: a validated :class:`derive.sim.scene.Scene`. Gives: a :class:`Plan`.
 from __future__ import annotations
 
 import functools
+import math
+import struct
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,8 +26,11 @@ from derive.runtime.integrate import BoundRun, ModelKernel
 from derive.sim import auto
 from derive.sim.inputs import _settings, choose_method, fastest_rate, inputs_of, params_of
 from derive.sim.scene import Scene
+from derive.symbolic import effects
 from derive.symbolic.formulations import REGISTRY
 
+#: The scene's method that lets the cost model choose.
+AUTO = "auto"
 #: SciPy reference methods: scene name -> solve_ivp method
 SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
 
@@ -37,9 +42,16 @@ class Candidate:
     and driver arguments."""
 
     scene: Scene
-    method: str
+    #: The method, or :data:`AUTO`: the cost model's for ``desc`` (:func:`auto_method`), worked
+    #: out when :attr:`method` is first asked (a fallback formulation rarely runs).
+    given: str
     desc: catalogue.Description
     pole_check: int
+
+    @functools.cached_property
+    def method(self) -> str:
+        """The method this candidate runs."""
+        return auto_method(self.scene, self.desc) if self.given == AUTO else self.given
 
     @functools.cached_property
     def kernel(self) -> ModelKernel:
@@ -94,23 +106,61 @@ class Plan:
         once per plan: a prepared run does not classify its scene again."""
         return integrals_of(self.scene)
 
+    @functools.cached_property
+    def integral_rows(self) -> list:
+        """The same integrals as ``[(name, formula, values)]``, ``formula(L, n, values)`` taking
+        L and n as rows (3, N), the layout of the C call's outputs: a compiled run evaluates
+        them on its output rows with no conversion or transposition per call."""
+        return integral_rows_of(self.scene)
+
+
+def _integrals_key(scene: Scene) -> tuple:
+    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
+    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
+    from derive.symbolic.integrable import on_area_level
+
+    return (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
+            on_area_level(scene))
+
+
+def _memo(memo: dict, key, make):
+    """``memo[key]``, made by ``make()`` when absent; the memo holds at most :data:`MEMO_SIZE`
+    entries (the oldest goes first): a sweep of many bodies must not grow it without bound."""
+    found = memo.get(key)
+    if found is None:
+        if len(memo) >= MEMO_SIZE:
+            del memo[next(iter(memo))]
+        found = memo[key] = make()
+    return found
+
+
+#: Entries kept by each of this module's memos (classifications, plans).
+MEMO_SIZE = 64
+
 
 def integrals_of(scene: Scene) -> list:
     """``[(name, f(L, n))]``: the extra integral of the scene's integrable case
     (:func:`derive.symbolic.integrable.integrals_for`; empty for a general body)."""
-    from derive.symbolic.integrable import integrals_for, on_area_level
+    from derive.symbolic.integrable import integrals_for
 
-    # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
-    # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    key = (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
-           on_area_level(scene))
-    found = _INTEGRALS.get(key)
-    if found is None:
-        found = _INTEGRALS[key] = integrals_for(scene)
-    return found
+    return _memo(_INTEGRALS, _integrals_key(scene), lambda: integrals_for(scene))
+
+
+def integral_rows_of(scene: Scene) -> list:
+    """``[(name, formula, values)]``: the integrals of :func:`integrals_of` as their formulas
+    (``formula(L, n, values)``, L and n rows of shape (3, N)) and the scene's numbers, what
+    :func:`derive.symbolic.integrable.integrals_for` wraps."""
+    from derive.symbolic.integrable import classify, parameters
+
+    def make():
+        integral = classify(scene).extra
+        return [] if integral is None else [(integral.name, integral.formula, parameters(scene))]
+
+    return _memo(_INTEGRAL_ROWS, _integrals_key(scene), make)
 
 
 _INTEGRALS: dict = {}
+_INTEGRAL_ROWS: dict = {}
 
 
 def make(scene: Scene) -> Plan:
@@ -122,11 +172,10 @@ def make(scene: Scene) -> Plan:
         steps = [(auto.model_key(scene, method)[0], 0)]
     else:
         steps = auto.plan(scene)
-    auto_picks = scene.simulate.method == "auto" and method not in SCIPY_METHODS
+    given = AUTO if scene.simulate.method == AUTO and method not in SCIPY_METHODS else method
     # each candidate's method for its own model (a fallback model may weigh differently), so
     # that a fallback runs what a plan of its model would run
-    candidates = tuple(Candidate(scene, auto_method(scene, desc) if auto_picks else method, desc, mode)
-                       for desc, mode in ((catalogue.describe((name, *key)), mode) for name, mode in steps))
+    candidates = tuple(Candidate(scene, given, catalogue.describe((name, *key)), mode) for name, mode in steps)
     return Plan(scene, candidates[0].method if candidates else method, scene.t_out, inputs_of(scene),
                 candidates)
 
@@ -142,3 +191,67 @@ def auto_method(scene: Scene, desc: catalogue.Description) -> str:
                       ny=len(desc.states), n_out=len(desc.outputs), samples=s.samples,
                       span=s.t_end * fastest_rate(scene))
     return costs.choose(work, s.rtol, s.atol)
+
+
+def recent(scene: Scene) -> Plan:
+    """The plan of a validated scene: :func:`make`'s, or the one made for an equal scene among
+    the last :data:`MEMO_SIZE` (its candidates' calls bound already: ``derive.simulate`` of a
+    scene it ran recently skips the planning and the set-up of its C call).
+
+    The memo's key is the scene's whole content (:func:`_content`: its numbers, signed zeros
+    told apart, its settings, its source and title) and the version of the effects registry;
+    a kept plan is used only while the model descriptions it was made with are still the ones
+    :func:`derive.runtime.catalogue.describe` gives (``catalogue.clear_memory`` forgets them:
+    a new cache, a registered effect), so a plan from the memo is the one :func:`make` would make.
+    """
+    key = _content(scene)
+    kept = _PLANS.pop(key, None)  # out and in again: the most recent last (least recent first)
+    if kept is not None and _current(kept):
+        _PLANS[key] = kept
+        return kept
+    pl = make(scene)
+    try:
+        while len(_PLANS) >= MEMO_SIZE:
+            del _PLANS[next(iter(_PLANS))]
+    except (KeyError, RuntimeError, StopIteration):  # another thread changed the memo: it is only a memo
+        pass
+    _PLANS[key] = pl
+    return pl
+
+
+def forget() -> None:
+    """Empty the memo of :func:`recent` (and the integrals' memos)."""
+    _PLANS.clear()
+    _INTEGRALS.clear()
+    _INTEGRAL_ROWS.clear()
+
+
+def _current(pl: Plan) -> bool:
+    """Whether a kept plan's model descriptions are still the catalogue's (forgotten together:
+    the first candidate's tells)."""
+    if not pl.candidates:
+        return True
+    c, sc = pl.candidates[0], pl.scene
+    return catalogue.describe((c.desc.formulation, sc.symmetric, sc.effects)) is c.desc
+
+
+def _content(scene: Scene) -> tuple:
+    """A key of everything a plan is made from: ``Scene.__eq__``'s fields (the body, the effect
+    tables, the initial state, the settings, the title and the terms) with their zeros signed
+    (``-0.0 == 0.0``, but the sign can reach the outputs), the source (which ``==`` ignores but
+    the error messages name) and the effects registry's version. The initial state goes in as
+    its bytes (signed zeros apart; NaN, which no validated number is, for rates not given), the
+    tables and terms by their text (``repr`` tells every float apart, -0.0 from 0.0 too); the
+    body and the settings are positive numbers, names and None."""
+    i = scene.initial
+    ad = i.alpha_dot
+    initial = _NINE(i.alpha, i.beta, i.gamma, *((ad, i.beta_dot, i.gamma_dot) if ad is not None else _NO_RATES),
+                    *i.omega)
+    return (scene.source, scene.title, scene.body, scene.simulate, initial,
+            tuple((name, v.effect, repr(tuple(v._values.values()))) for name, v in scene.tables.items()),
+            repr(scene.terms) if scene.terms else (), effects.VERSION[0])
+
+
+_NINE = struct.Struct("9d").pack
+_NO_RATES = (math.nan,) * 3
+_PLANS: dict = {}

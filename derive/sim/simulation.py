@@ -18,6 +18,7 @@ reference solutions of :mod:`derive.reference.exact`.
 """
 from __future__ import annotations
 
+import contextvars
 import functools
 import math
 from dataclasses import dataclass, field
@@ -135,6 +136,8 @@ def _output_slices() -> list:
 
 
 _SLICES = _output_slices()
+_ROWS = {name: s for name, s, _ in _SLICES}
+_L_ROWS, _N_ROWS = _ROWS["L"], _ROWS["n"]  # the rows of out holding L and n
 _COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
 _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
@@ -228,46 +231,108 @@ def _quiet(fn):
     return quiet
 
 
+def _context_ignoring_errors():
+    """A context (:mod:`contextvars`) in which NumPy ignores floating-point errors, made once;
+    None where NumPy keeps its error state outside the context (NumPy < 2: per thread)."""
+    before = np.geterr()
+    ctx = contextvars.copy_context()
+    ctx.run(np.seterr, all="ignore")
+    if np.geterr() != before:  # the setting escaped the context: undo it, use np.errstate
+        np.seterr(**before)
+        return None
+    return ctx
+
+
+_IGNORING = _context_ignoring_errors()
+
+
+def _ignoring(fn, *args):
+    """``fn(*args)`` with NumPy's floating-point warnings off, for a few NumPy operations: in a
+    copy of :data:`_IGNORING` (about 0.1 µs, an ``np.errstate`` about 1 µs). The copy holds
+    the context variables as they were at import: ``fn`` must read none but NumPy's error
+    state (the integral formulas: arithmetic on arrays)."""
+    if _IGNORING is None:
+        with np.errstate(all="ignore"):
+            return fn(*args)
+    return _IGNORING.copy().run(fn, *args)
+
+
 @_quiet
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
-    plan it once (:func:`derive.sim.plan.make`), then run the plan."""
-    return run(plan.make(load_scene(scene, **overrides)))
+    validate it, plan it (:func:`derive.sim.plan.recent`: the kept plan of an equal scene simulated
+    recently, else a new one), then run the plan."""
+    return run(plan.recent(load_scene(scene, **overrides)))
 
 
-@_quiet
 def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None = None) -> Result:
     """Run a plan: the C call of the first candidate whose pole check passes (or SciPy on the
     generated NumPy right-hand side), then the Result. ``inputs`` replaces the plan's init-map
     inputs and ``params`` ({name: value}) some of the model's parameters, unchecked (the plan's
-    caller, :class:`derive.sim.prepared.Prepared`, checks them)."""
-    sc, method, t = pl.scene, pl.method, pl.t
-    inputs = pl.inputs if inputs is None else inputs
+    caller, :class:`derive.sim.prepared.Prepared`, checks them).
+
+    NumPy's floating-point warnings are off wherever a NumPy operation could raise one (the
+    SciPy path, the integrals: see :func:`_quiet`); the compiled path's other operations
+    (copies, views, the pole check on finite angles) cannot warn, and an ``np.errstate`` costs
+    about a microsecond, a tenth of a short prepared run."""
     if pl.scipy:
-        c = pl.candidates[0]
-        desc = c.desc
-        out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
-        _check_pole(desc, t, out[1], sc.simulate.rtol)
-        # SciPy's solver did not check the outputs finite: _result does
-        return _result(desc, out, y, t, sc, method, nfev, p, integrals=pl.integrals)
+        return _run_scipy(pl, pl.inputs if inputs is None else inputs, params)
     # The compiled path: the candidates' calls were bound once per plan (layout, pointers,
     # converted arguments), so a run is an allocation, the C call and the Result.
-    given = inputs is not pl.inputs
+    t = pl.t
+    given = inputs is not None and inputs is not pl.inputs
     if given:
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+    same = not (given or params)
     for c in pl.candidates:
         bound = c.bound(t, pl.inputs)
-        out, y, p, status, nfev, buf = bound(_with(c, params), inputs if given else None,
-                                             same=not (given or params))
+        out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params),
+                                             inputs if given else None, same=same)
         if status != _RANGE:
             break
-    desc = c.desc
     if status:
-        raise IntegrationError(_explain(desc, bound.stats(buf), sc.simulate.max_steps))
+        raise IntegrationError(_explain(c.desc, bound.stats(buf), pl.scene.simulate.max_steps))
     if c.pole_loss:
-        _check_pole(desc, t, out[1], sc.simulate.rtol)
+        _check_pole(c.desc, t, out[1], pl.scene.simulate.rtol)
     # The compiled drivers checked the outputs finite (status NONFINITE_OUTPUT).
-    return _result(desc, out, y, t, sc, c.method, nfev, p, finite=True, integrals=pl.integrals)
+    return _compiled_result(pl, c, out, y, nfev)
+
+
+@_quiet
+def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Result:
+    sc, t, c = pl.scene, pl.t, pl.candidates[0]
+    desc = c.desc
+    out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
+    _check_pole(desc, t, out[1], sc.simulate.rtol)
+    # SciPy's solver did not check the outputs finite: _result does
+    return _result(desc, out, y, t, sc, pl.method, nfev, p, integrals=pl.integrals)
+
+
+def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
+                     nfev: int) -> Result:
+    """What :func:`_result` gives for outputs the C driver checked finite, built for a short
+    call: the views and the fields straight into a new Result's ``__dict__`` (no dataclass
+    ``__init__`` with twenty keywords), the integrals by the plan's formulas on the rows of
+    ``out`` (:attr:`derive.sim.plan.Plan.integral_rows`), with NumPy's floating-point errors
+    ignored (:func:`_ignoring`: absurd numbers may overflow there; the IntegrationError below
+    names it)."""
+    desc = c.desc
+    fields = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
+    integrals = {}
+    if pl.integral_rows:
+        L, n = out[_L_ROWS], out[_N_ROWS]  # (3, n): the formulas' own layout
+        for name, formula, values in pl.integral_rows:
+            integrals[name] = np.asarray(_ignoring(formula, L, n, values), dtype=float)
+        for name, found in integrals.items():
+            if not _all_finite(found):
+                j = int(np.argwhere(~np.isfinite(found))[0][0])
+                raise IntegrationError(f"t = {pl.t[j]:.6g}: non-finite integral_{name} in the output "
+                                       f"(overflow: the scene's numbers are out of range)")
+    fields.update(t=pl.t, method=c.method, formulation=desc.formulation, nfev=nfev, model=desc.name,
+                  effects=desc.effects, integrals=integrals, state=y, scene=pl.scene)
+    res = object.__new__(Result)  # every field is given: what Result(**fields) would make
+    res.__dict__.update(fields)
+    return res
 
 
 def _with(c, params: dict | None) -> np.ndarray:
