@@ -207,8 +207,8 @@ def _flatten_observables(obs: dict):
 #: Weights of the operation kinds in a right-hand side's cost (roughly cycles on a current
 #: x86-64 core: a libm call costs about ten additions). Only the ranking of formulations by it
 #: matters (``auto`` tries the cheapest applicable one first).
-OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "EXP": 12, "LOG": 12,
-              "SQRT": 6, "POW": 10, "DIV": 4}
+OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "ACOS": 12, "EXP": 12,
+              "LOG": 12, "SQRT": 6, "POW": 10, "DIV": 4}
 
 
 #: What one right-hand side evaluation costs the stepper per state component (DOP853 combines
