@@ -160,6 +160,25 @@ class Block:
     def c(self):
         return [(str(n), c_expr(e)) for n, e in self.temps], [c_expr(e) for e in self.outputs]
 
+    def c_hoisted(self, params) -> tuple[list, list]:
+        """The temporaries printed for C in two lists: those made of ``params`` (and of earlier
+        such temporaries) alone, then the others, each list in the CSE's order. A loop over
+        samples computes the first list once: the same expressions, the same bits."""
+        fixed = set(params)
+        once, each = [], []
+        for n, e in self.temps:
+            if e.free_symbols <= fixed:
+                fixed.add(n)
+                once.append((str(n), c_expr(e)))
+            else:
+                each.append((str(n), c_expr(e)))
+        return once, each
+
+    def uses_time(self) -> bool:
+        """Whether an expression of the block mentions the time ``t``."""
+        return any(str(s) == "t" for _, e in self.temps for s in e.free_symbols) or any(
+            str(s) == "t" for e in self.outputs for s in e.free_symbols)
+
     def numpy(self, params=()):
         """Printed for NumPy, the parameters (and temporaries made of them alone) scalars."""
         scalars = set(params)
@@ -188,8 +207,8 @@ def _flatten_observables(obs: dict):
 #: Weights of the operation kinds in a right-hand side's cost (roughly cycles on a current
 #: x86-64 core: a libm call costs about ten additions). Only the ranking of formulations by it
 #: matters (``auto`` tries the cheapest applicable one first).
-OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "EXP": 12, "LOG": 12,
-              "SQRT": 6, "POW": 10, "DIV": 4}
+OP_WEIGHTS = {"SIN": 12, "COS": 12, "TAN": 15, "ATAN2": 20, "ATAN": 15, "ACOS": 12, "EXP": 12,
+              "LOG": 12, "SQRT": 6, "POW": 10, "DIV": 4}
 
 
 #: What one right-hand side evaluation costs the stepper per state component (DOP853 combines
@@ -272,6 +291,7 @@ class KernelSpec:
         jt, jo = pr(self.jac)
         rg, ro, jg, jo = ro[:nd], ro[nd:], jo[:nd], jo[nd:]
         ot, oo = pr(self.obs)
+        obs_once, obs_each = self.obs.c_hoisted(m.params) if language == "c" else ([], [])
         it, io = pr(self.init)
         ny = len(m.states)
         ct, co = pr(self.checks) if self.checks is not None else ([], [])
@@ -289,6 +309,7 @@ class KernelSpec:
             states=m.state_names, params=m.param_names, state_symbols=[str(s) for s in m.states],
             param_symbols=[str(s) for s in m.params], ny=len(m.states), np=len(m.params),
             rhs_temps=rt, rhs_out=ro, jac_temps=jt, jac_out=jo, obs_temps=ot, obs_out=oo,
+            obs_once=obs_once, obs_each=obs_each, obs_time=self.obs.uses_time(),
             observables=self.observable_names, nobs=len(self.observable_names),
             rhs_guard=rg, jac_guard=jg,
             init_used=init_used, init_temps=it, init_y=io[:ny],

@@ -344,7 +344,7 @@ def reduced_u(effects=()) -> Model:
     the reduced model's (α, β, γ, β̇); parameters (I₁, I₃, the effects', p_α, p_γ, E′), the last
     three derived by the init map: p_γ = I₃ ω̃₃, p_α = p_γ + (p_α − p_γ) as in `reduced`, and
     E′ = T + V − p_γ²/(2I₃) = ½ I₁ (ω̃₁² + ω̃₂²) + V (the spin term cancels symbolically, so
-    nothing cancels in rounding). β = atan2(√((1 − u)(1 + u)), u) ∈ (0, π) for the outputs: the
+    nothing cancels in rounding). β = acos(u) ∈ (0, π) for the outputs: the
     axis cannot pass through a pole in this form (u = ±1 is a turning point of u while the axis
     goes through; α would have to jump by π), so every run carries the pole check (mode 1).
     """
@@ -374,7 +374,10 @@ def reduced_u(effects=()) -> Model:
     Ru = R.subs(at_u)
     w = ZYZ.omega_body_sum().subs({RATES[0]: ad, RATES[1]: bd, RATES[2]: gd},
                                   simultaneous=True).subs(at_u)
-    out = _outputs(Ru, w, _moments(True), effects, sym, (alpha, sp.atan2(sb, u), gamma))
+    # β = acos(u): of u alone, as accurate as atan2(sb, u) or more (glibc, the u of the pole
+    # clearance |u| <= √0.99 against mpmath: within 0.51 ulp vs 1.43 for the atan2 of the
+    # rounded sb) and cheaper (measured: the output map ~49 -> ~43 ns a sample, gcc 12, glibc).
+    out = _outputs(Ru, w, _moments(True), effects, sym, (alpha, sp.acos(u), gamma))
     # From the state (u, u̇), so that it shows the integration's drift: E = ½ I₁ β̇² + p_γ²/(2I₃)
     # + V_eff, V_eff in partial fractions (the centrifugal term without cancellation).
     Veff_u = _cos_beta_form(half_angle_partial_fractions(Veff))

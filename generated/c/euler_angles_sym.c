@@ -161,6 +161,58 @@ int euler_angles_sym_observables(double t, const double *y, const double *p, dou
     return 0;
 }
 
+/* euler_angles_sym_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
+ * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
+ * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+int euler_angles_sym_observables_at(long n_out, const double *t_out, const double *y, const double *p,
+        double *out)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double x9 = (1.0/2.0)*I1;
+    long k_out;
+    (void)t_out;
+    for (k_out = 0; k_out < n_out; ++k_out) {
+        const double alpha = y[k_out * 6 + 0];
+        const double beta = y[k_out * 6 + 1];
+        const double gamma = y[k_out * 6 + 2];
+        const double alpha_d = y[k_out * 6 + 3];
+        const double beta_d = y[k_out * 6 + 4];
+        const double gamma_d = y[k_out * 6 + 5];
+        const double x0 = sin(gamma);
+        const double x1 = sin(beta);
+        const double x2 = cos(gamma);
+        const double x3 = x1*x2;
+        const double x4 = -alpha_d*x3 + beta_d*x0;
+        const double x5 = x0*x1;
+        const double x6 = alpha_d*x5 + beta_d*x2;
+        const double x7 = cos(beta);
+        const double x8 = alpha_d*x7 + gamma_d;
+        const double x10 = I3*x8;
+        const double x11 = I1*x6;
+        const double x12 = I1*x4;
+        out[0 * n_out + k_out] = alpha;
+        out[1 * n_out + k_out] = beta;
+        out[2 * n_out + k_out] = gamma;
+        out[3 * n_out + k_out] = x4;
+        out[4 * n_out + k_out] = x6;
+        out[5 * n_out + k_out] = x8;
+        out[6 * n_out + k_out] = x1*cos(alpha);
+        out[7 * n_out + k_out] = x1*sin(alpha);
+        out[8 * n_out + k_out] = x7;
+        out[9 * n_out + k_out] = (1.0/2.0)*I3*(x8*x8) + (x4*x4)*x9 + (x6*x6)*x9;
+        out[10 * n_out + k_out] = x10*x7 + x11*x5 - x12*x3;
+        out[11 * n_out + k_out] = x10;
+        out[12 * n_out + k_out] = -x3;
+        out[13 * n_out + k_out] = x5;
+        out[14 * n_out + k_out] = x7;
+        out[15 * n_out + k_out] = x12;
+        out[16 * n_out + k_out] = x11;
+        out[17 * n_out + k_out] = x10;
+    }
+    return 0;
+}
+
 int euler_angles_sym_init(const double *in, double *p, double *y)
 {
     const double in_alpha = in[0];

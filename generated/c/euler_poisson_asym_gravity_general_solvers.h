@@ -66,9 +66,12 @@ void euler_poisson_asym_gravity_general_interrupt_request(void);
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int euler_poisson_asym_gravity_general_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
-/* euler_poisson_asym_gravity_general_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
- * with st->t_fail the first such sample's time and st->fail_index the output's column (what the
- * simulate drivers run after a successful solve). */
+/* Every output of out (as euler_poisson_asym_gravity_general_outputs_at writes it) finite: DERIVE_OK, or
+ * DERIVE_NONFINITE_OUTPUT with st->t_fail the first such sample's time and st->fail_index the
+ * output's column (st is written only then). */
+int euler_poisson_asym_gravity_general_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st);
+/* euler_poisson_asym_gravity_general_outputs_at, then euler_poisson_asym_gravity_general_outputs_finite (what the simulate drivers run after a
+ * successful solve). */
 int euler_poisson_asym_gravity_general_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
                         double *out, derive_stats *st);
 /* 1 if the motion from y keeps clear of the poles by the model's Routh check (mode 1), or meets

@@ -9,6 +9,7 @@
 #include <float.h>
 #include <math.h>
 #include <signal.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "euler_poisson_sym_gravity_solvers.h"
@@ -189,49 +190,56 @@ int euler_poisson_sym_gravity_pole_clear(const double *y, const double *p, int m
 }
 
 /* The output arrays at every sample: out[j*n_out + k] = output j (euler_poisson_sym_gravity_observables) at
- * t_out[k] from the state y[k*NY ..], the angles made canonical. */
+ * t_out[k] from the state y[k*NY ..], the angles made canonical: the model's own loop
+ * (euler_poisson_sym_gravity_observables_at: one call, the parameters' temporaries computed once). */
 int euler_poisson_sym_gravity_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out)
 {
-    double o[euler_poisson_sym_gravity_NOBS];
-    long k;
-    int j;
     if (n_out < 0 || (n_out > 0 && (!t_out || !y || !out)))
         return DERIVE_BAD_ARGS;
-    for (k = 0; k < n_out; ++k) {
-        euler_poisson_sym_gravity_observables(t_out[k], y + k * euler_poisson_sym_gravity_NY, p, o);
-        for (j = 0; j < euler_poisson_sym_gravity_NOBS; ++j)
-            out[j * n_out + k] = o[j];
-    }
+    euler_poisson_sym_gravity_observables_at(n_out, t_out, y, p, out);
     derive_euler_poisson_sym_gravity_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
     return DERIVE_OK;
 }
 
-/* euler_poisson_sym_gravity_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
- * with st->t_fail the first such sample's time and st->fail_index the output's column (the
- * arrays are written in full either way). One branch-free pass over the arrays; the first
- * bad entry is looked for only when there is one. */
-int euler_poisson_sym_gravity_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
-                        double *out, derive_stats *st)
+/* Every output out[j*n_out + k] finite? DERIVE_OK, or DERIVE_NONFINITE_OUTPUT with st->t_fail
+ * the first such sample's time (the earliest k, then the lowest j) and st->fail_index its
+ * output's column. The pass over the arrays looks at the bits: a double is non-finite exactly
+ * when its exponent field is all ones, and adding one to that field then carries into the
+ * sign bit. Integer operations without branches, which gcc vectorises (the comparison
+ * fabs(x) <= DBL_MAX it replaces was not, ~0.4 ns a value); the first bad entry is looked
+ * for only when there is one. */
+int euler_poisson_sym_gravity_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st)
 {
+    const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
+    uint64_t bits, carry = 0;
     long i, k, n = n_out * euler_poisson_sym_gravity_NOBS;
-    int j, bad = 0;
-    int rc = euler_poisson_sym_gravity_outputs_at(n_out, t_out, y, p, out);
-    if (rc != DERIVE_OK)
-        return rc;
-    for (i = 0; i < n; ++i)
-        bad |= !(fabs(out[i]) <= DBL_MAX);
-    if (!bad)
+    int j;
+    for (i = 0; i < n; ++i) {
+        memcpy(&bits, out + i, sizeof bits);
+        carry |= (bits & exponent) + one;
+    }
+    if (!(carry >> 63))
         return DERIVE_OK;
     for (k = 0; k < n_out; ++k)
         for (j = 0; j < euler_poisson_sym_gravity_NOBS; ++j)
-            if (!(fabs(out[j * n_out + k]) <= DBL_MAX)) {
+            if (!isfinite(out[j * n_out + k])) {
                 st->status = DERIVE_NONFINITE_OUTPUT;
                 st->t_fail = t_out[k];
                 st->fail_index = j;
                 return DERIVE_NONFINITE_OUTPUT;
             }
     return DERIVE_OK;
+}
+
+/* euler_poisson_sym_gravity_outputs_at, then euler_poisson_sym_gravity_outputs_finite (the arrays are written in full either way). */
+int euler_poisson_sym_gravity_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
+                        double *out, derive_stats *st)
+{
+    int rc = euler_poisson_sym_gravity_outputs_at(n_out, t_out, y, p, out);
+    if (rc != DERIVE_OK)
+        return rc;
+    return euler_poisson_sym_gravity_outputs_finite(n_out, t_out, out, st);
 }
 #endif
 

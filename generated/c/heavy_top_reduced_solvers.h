@@ -66,9 +66,12 @@ void heavy_top_reduced_interrupt_request(void);
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int heavy_top_reduced_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
-/* heavy_top_reduced_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
- * with st->t_fail the first such sample's time and st->fail_index the output's column (what the
- * simulate drivers run after a successful solve). */
+/* Every output of out (as heavy_top_reduced_outputs_at writes it) finite: DERIVE_OK, or
+ * DERIVE_NONFINITE_OUTPUT with st->t_fail the first such sample's time and st->fail_index the
+ * output's column (st is written only then). */
+int heavy_top_reduced_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st);
+/* heavy_top_reduced_outputs_at, then heavy_top_reduced_outputs_finite (what the simulate drivers run after a
+ * successful solve). */
 int heavy_top_reduced_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
                         double *out, derive_stats *st);
 /* 1 if the motion from y keeps clear of the poles by the model's Routh check (mode 1), or meets

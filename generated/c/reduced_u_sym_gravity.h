@@ -37,6 +37,11 @@ int reduced_u_sym_gravity_jac(double t, const double *y, const double *p, double
 /* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
 int reduced_u_sym_gravity_observables(double t, const double *y, const double *p, double *out);
 
+/* The outputs at n_out samples, as reduced_u_sym_gravity_observables gives them (bit for bit):
+ * out[j*n_out + k] = output j at t_out[k] from the state y[k*NY ..]. Returns 0. */
+int reduced_u_sym_gravity_observables_at(long n_out, const double *t_out, const double *y, const double *p,
+        double *out);
+
 /* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
  * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
  * given). rates_given = 1: the state is built from the angles and the rates, omega is not read

@@ -257,6 +257,73 @@ int rigid_body_observables(double t, const double *y, const double *p, double *o
     return 0;
 }
 
+/* rigid_body_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
+ * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
+ * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+int rigid_body_observables_at(long n_out, const double *t_out, const double *y, const double *p,
+        double *out)
+{
+    const double I1 = p[0];
+    const double I2 = p[1];
+    const double I3 = p[2];
+    const double M = p[3];
+    const double g = p[4];
+    const double cx = p[5];
+    const double cy = p[6];
+    const double cz = p[7];
+    long k_out;
+    (void)t_out;
+    for (k_out = 0; k_out < n_out; ++k_out) {
+        const double q0 = y[k_out * 7 + 0];
+        const double q1 = y[k_out * 7 + 1];
+        const double q2 = y[k_out * 7 + 2];
+        const double q3 = y[k_out * 7 + 3];
+        const double omega1 = y[k_out * 7 + 4];
+        const double omega2 = y[k_out * 7 + 5];
+        const double omega3 = y[k_out * 7 + 6];
+        const double x0 = 2*q0;
+        const double x1 = q1*x0;
+        const double x2 = 2*q2*q3 - x1;
+        const double x3 = q2*x0;
+        const double x4 = 2*q3;
+        const double x5 = q1*x4;
+        const double x6 = x3 + x5;
+        const double x7 = (q0*q0) + (q3*q3);
+        const double x8 = (q1*q1);
+        const double x9 = (q2*q2);
+        const double x10 = x8 + x9;
+        const double x11 = x7 - x8 - x9;
+        const double x12 = q2*x4 + x1;
+        const double x13 = x3 - x5;
+        const double x14 = 1.0/(x10 + x7);
+        const double x15 = x11*x14;
+        const double x16 = -x13*x14;
+        const double x17 = x12*x14;
+        const double x18 = I1*omega1;
+        const double x19 = I2*omega2;
+        const double x20 = I3*omega3;
+        out[0 * n_out + k_out] = atan2(x2, x6);
+        out[1 * n_out + k_out] = atan2(2*sqrt(x10)*sqrt(x7), x11);
+        out[2 * n_out + k_out] = atan2(x12, x13);
+        out[3 * n_out + k_out] = omega1;
+        out[4 * n_out + k_out] = omega2;
+        out[5 * n_out + k_out] = omega3;
+        out[6 * n_out + k_out] = x14*x6;
+        out[7 * n_out + k_out] = x14*x2;
+        out[8 * n_out + k_out] = x15;
+        out[9 * n_out + k_out] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
+        out[10 * n_out + k_out] = x15*x20 + x16*x18 + x17*x19;
+        out[11 * n_out + k_out] = x20;
+        out[12 * n_out + k_out] = x16;
+        out[13 * n_out + k_out] = x17;
+        out[14 * n_out + k_out] = x15;
+        out[15 * n_out + k_out] = x18;
+        out[16 * n_out + k_out] = x19;
+        out[17 * n_out + k_out] = x20;
+    }
+    return 0;
+}
+
 int rigid_body_init(const double *in, double *p, double *y)
 {
     const double in_alpha = in[0];

@@ -66,9 +66,12 @@ void rigid_body_interrupt_request(void);
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous). */
 int rigid_body_outputs_at(long n_out, const double *t_out, const double *y, const double *p,
                         double *out);
-/* rigid_body_outputs_at, then every output checked finite: DERIVE_OK, or DERIVE_NONFINITE_OUTPUT
- * with st->t_fail the first such sample's time and st->fail_index the output's column (what the
- * simulate drivers run after a successful solve). */
+/* Every output of out (as rigid_body_outputs_at writes it) finite: DERIVE_OK, or
+ * DERIVE_NONFINITE_OUTPUT with st->t_fail the first such sample's time and st->fail_index the
+ * output's column (st is written only then). */
+int rigid_body_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st);
+/* rigid_body_outputs_at, then rigid_body_outputs_finite (what the simulate drivers run after a
+ * successful solve). */
 int rigid_body_outputs_checked(long n_out, const double *t_out, const double *y, const double *p,
                         double *out, derive_stats *st);
 /* 1 if the motion from y keeps clear of the poles by the model's Routh check (mode 1), or meets
