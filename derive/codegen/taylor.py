@@ -47,17 +47,14 @@ class NoTaylorRule(ValueError):
 
 @dataclass
 class Node:
-    """One series node: ``code`` is the C statement computing its coefficient ``n`` ≥ 1 (a C
-    variable of the generated loop), given every operand's coefficients up to n, ``code0`` the
-    one computing coefficient 0 (the function itself: constants live there only, so the passes
-    n ≥ 1 test nothing); both empty for the second node of a pair computed by the first (cos
-    beside sin)."""
+    """One series node: ``code`` is the C statement computing its coefficient ``n`` (a C
+    variable of the generated loop), given every operand's coefficients up to n; empty for the
+    second node of a pair computed by the first (cos beside sin)."""
 
     index: int
     rule: str
     code: str
     obs: bool = False  # made for an output (computed only when the outputs are wanted)
-    code0: str = ""
 
     @property
     def deps(self) -> set[int]:
@@ -65,8 +62,7 @@ class Node:
         both)."""
         if not self.code:
             return {self.index - 1}
-        text = self.code + " " + self.code0
-        return {int(k) for k in re.findall(r"u\[(\d+)\]", text)} - {self.index}
+        return {int(k) for k in re.findall(r"u\[(\d+)\]", self.code)} - {self.index}
 
 
 @dataclass
@@ -106,12 +102,9 @@ def _u(k: int, n: str = "n") -> str:
 
 
 def coef(op, n: str = "n") -> str:
-    """Coefficient n of an operand as C: a series' entry; a constant's value at order 0
-    (``n == "0"``), 0.0 past it (the passes n ≥ 1, where no constant remains)."""
+    """Coefficient n of an operand as C: a series' entry, a constant's value at n = 0 only."""
     kind, v = op
-    if kind == "u":
-        return _u(v, n)
-    return v if n == "0" else "0.0"
+    return _u(v, n) if kind == "u" else f"({n} == 0 ? {v} : 0.0)"
 
 
 class _Builder:
@@ -126,19 +119,12 @@ class _Builder:
         self.obs_phase = False
 
     # -- nodes ----------------------------------------------------------------------------
-    def node(self, rule: str, code, code0: str = "") -> tuple:
-        """A new node. ``code`` is a function of the coefficient's C index (``"n"`` in the
-        passes n ≥ 1, ``"0"`` at order 0) giving its C statement, or the statement of the
-        passes n ≥ 1 with ``code0`` that of order 0. In both, ``@`` is the node's coefficient
-        and ``#`` its array."""
+    def node(self, rule: str, code: str) -> tuple:
+        """A new node; in ``code``, ``@`` is its coefficient n and ``#`` its array."""
         k = self.next
         self.next += 1
-
-        def fill(text: str, n: str) -> str:
-            return text.replace("@", _u(k, n)).replace("#", f"u[{k}]")
-
-        hi, lo = (code("n"), code("0")) if callable(code) else (code, code0)
-        self.d.nodes.append(Node(k, rule, fill(hi, "n"), self.obs_phase, fill(lo, "0")))
+        self.d.nodes.append(Node(k, rule, code.replace("@", _u(k)).replace("#", f"u[{k}]"),
+                                 self.obs_phase))
         return ("u", k)
 
     def series(self, op) -> int:
@@ -147,7 +133,7 @@ class _Builder:
         if op[0] == "u":
             return op[1]
         if op[1] not in self.const_series:
-            self.const_series[op[1]] = self.node("const", lambda n: f"@ = {coef(op, n)};")[1]
+            self.const_series[op[1]] = self.node("const", f"@ = {coef(op)};")[1]
         return self.const_series[op[1]]
 
     def is_const(self, e) -> bool:
@@ -204,22 +190,15 @@ def _add(b: _Builder, e) -> tuple:
             consts.append(arg)
             continue
         coeff, rest = arg.as_coeff_Mul()  # c * (series), c a number: folded into the sum
-        parts.append((coeff, b.series(b.of(rest))))
-
-    def code(n: str) -> str:
-        terms = []
-        for coeff, k in parts:
-            sign = "-" if coeff < 0 else "+"
-            mag = abs(coeff)
-            terms.append(f"{sign} {_u(k, n)}" if mag == 1 else f"{sign} {c_expr(mag)} * {_u(k, n)}")
-        text = " ".join(terms)
-        text = text[2:] if text.startswith("+ ") else "-" + text[2:]
-        if consts and n == "0":  # the constant terms: order 0 only
-            c = sp.Add(*consts)
-            text += f" - {c_expr(-c)}" if c.could_extract_minus_sign() else f" + {c_expr(c)}"
-        return f"@ = {text};"
-
-    return b.node("add", code)
+        k = b.series(b.of(rest))
+        sign = "-" if coeff < 0 else "+"
+        mag = abs(coeff)
+        parts.append(f"{sign} {_u(k)}" if mag == 1 else f"{sign} {c_expr(mag)} * {_u(k)}")
+    code = " ".join(parts)
+    code = code[2:] if code.startswith("+ ") else "-" + code[2:]
+    if consts:
+        code += f" + (n == 0 ? {c_expr(sp.Add(*consts))} : 0.0)"
+    return b.node("add", f"@ = {code};")
 
 
 def _product(b: _Builder, ks: list) -> int:
@@ -227,10 +206,9 @@ def _product(b: _Builder, ks: list) -> int:
     acc = ks[0]
     for k in ks[1:]:
         if k == acc:
-            acc = b.node("sqr", f"@ = tc_sqr(n, u[{k}]);", f"@ = u[{k}][0] * u[{k}][0];")[1]
+            acc = b.node("sqr", f"@ = tc_sqr(n, u[{k}]);")[1]
         else:
-            acc = b.node("mul", f"@ = tc_mul(n, u[{acc}], u[{k}]);",
-                         f"@ = u[{acc}][0] * u[{k}][0];")[1]
+            acc = b.node("mul", f"@ = tc_mul(n, u[{acc}], u[{k}]);")[1]
     return acc
 
 
@@ -243,7 +221,7 @@ def _power(b: _Builder, base, k: int) -> int:
         return b.series(b.ops[key])
     if k % 2 == 0:
         half = _power(b, base, k // 2)
-        out = b.node("sqr", f"@ = tc_sqr(n, u[{half}]);", f"@ = u[{half}][0] * u[{half}][0];")[1]
+        out = b.node("sqr", f"@ = tc_sqr(n, u[{half}]);")[1]
     else:
         out = _product(b, [_power(b, base, k - 1), _power(b, base, 1)])
     b.ops[key] = ("u", out)
@@ -251,11 +229,11 @@ def _power(b: _Builder, base, k: int) -> int:
 
 
 def _quotient(b: _Builder, num: int, den: int) -> int:
-    return b.node("div", f"tc_div(n, u[{num}], u[{den}], #);", f"@ = u[{num}][0] / u[{den}][0];")[1]
+    return b.node("div", f"tc_div(n, u[{num}], u[{den}], #);")[1]
 
 
 def _scaled(b: _Builder, c, k: int) -> tuple:
-    return ("u", k) if c == 1 else b.node("scale", lambda n: f"@ = {c_expr(c)} * {_u(k, n)};")
+    return ("u", k) if c == 1 else b.node("scale", f"@ = {c_expr(c)} * u[{k}][n];")
 
 
 def _mul(b: _Builder, e) -> tuple:
@@ -290,9 +268,8 @@ def _pow(b: _Builder, e) -> tuple:
         return ("u", _quotient(b, b.series(("c", "1.0")), _power(b, base, -k)))
     a = b.series(b.of(base))
     if ex == sp.Rational(1, 2):
-        return b.node("sqrt", f"tc_sqrt(n, u[{a}], #);", f"@ = sqrt(u[{a}][0]);")
-    return b.node("pow", f"tc_pow(n, u[{a}], {c_expr(ex)}, #);",
-                  f"@ = pow(u[{a}][0], {c_expr(ex)});")
+        return b.node("sqrt", f"tc_sqrt(n, u[{a}], #);")
+    return b.node("pow", f"tc_pow(n, u[{a}], {c_expr(ex)}, #);")
 
 
 def _sincos(b: _Builder, e) -> tuple:
@@ -301,27 +278,25 @@ def _sincos(b: _Builder, e) -> tuple:
     s = b.node("sincos", "")[1]
     c = b.node("sincos", "")[1]
     b.d.nodes[-2].code = f"tc_sincos(n, u[{a}], u[{s}], u[{c}]);"
-    b.d.nodes[-2].code0 = f"u[{s}][0] = sin(u[{a}][0]);  u[{c}][0] = cos(u[{a}][0]);"
     b.ops[sp.sin(x)], b.ops[sp.cos(x)] = ("u", s), ("u", c)
     return b.ops[e]
 
 
 def _exp(b: _Builder, e) -> tuple:
     a = b.series(b.of(e.args[0]))
-    return b.node("exp", f"tc_exp(n, u[{a}], #);", f"@ = exp(u[{a}][0]);")
+    return b.node("exp", f"tc_exp(n, u[{a}], #);")
 
 
 def _log(b: _Builder, e) -> tuple:
     a = b.series(b.of(e.args[0]))
-    return b.node("log", f"tc_log(n, u[{a}], #);", f"@ = log(u[{a}][0]);")
+    return b.node("log", f"tc_log(n, u[{a}], #);")
 
 
 def _atan2(b: _Builder, e) -> tuple:
     y, x = e.args
     r = b.series(b.of(x ** 2 + y ** 2))
     yk, xk = b.series(b.of(y)), b.series(b.of(x))
-    return b.node("atan2", f"tc_atan2(n, u[{yk}], u[{xk}], u[{r}], #);",
-                  f"@ = atan2(u[{yk}][0], u[{xk}][0]);")
+    return b.node("atan2", f"tc_atan2(n, u[{yk}], u[{xk}], u[{r}], #);")
 
 
 def _atan(b: _Builder, e) -> tuple:
@@ -329,21 +304,16 @@ def _atan(b: _Builder, e) -> tuple:
     a = e.args[0]
     r = b.series(b.of(1 + a ** 2))
     ak, one = b.series(b.of(a)), b.series(("c", "1.0"))
-    return b.node("atan2", f"tc_atan2(n, u[{ak}], u[{one}], u[{r}], #);",
-                  f"@ = atan2(u[{ak}][0], 1.0);")
+    return b.node("atan2", f"tc_atan2(n, u[{ak}], u[{one}], u[{r}], #);")
 
 
 def _piecewise(b: _Builder, e) -> tuple:
     ops = [(b.of(value), cond) for value, cond in e.args]
     *pairs, (default, _) = ops
-
-    def code(n: str) -> str:
-        out = coef(default, n)
-        for value, cond in reversed(pairs):
-            out = f"(({b.order0(cond)}) ? {coef(value, n)} : {out})"
-        return f"@ = {out};"
-
-    return b.node("piecewise", code)
+    out = coef(default)
+    for value, cond in reversed(pairs):
+        out = f"(({b.order0(cond)}) ? {coef(value)} : {out})"
+    return b.node("piecewise", f"@ = {out};")
 
 
 #: One rule per elementary function (SymPy function → rule). A rule decomposes its expression
@@ -545,9 +515,8 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     methods_ctx = [_method_context(METHODS[n]) for n in names]
     rhs_nodes = [n for n in d.nodes if n.code and not n.obs]
     obs_nodes = [n for n in d.nodes if n.code and n.obs]
-    jet_text = ([n.code + n.code0 for n in rhs_nodes] + d.guards
-                + [op[1] for op in d.outputs if op[0] == "c"])
-    obs_text = [n.code + n.code0 for n in obs_nodes + d.last]
+    jet_text = [n.code for n in rhs_nodes] + d.guards + [op[1] for op in d.outputs if op[0] == "c"]
+    obs_text = [n.code for n in obs_nodes + d.last]
     ny = len(model.states)
     ctx = {
         "prefix": model.name, "ny": ny, "d": d, "coef": coef,

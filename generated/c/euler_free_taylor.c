@@ -4,9 +4,8 @@
  *
  * The right-hand side is 16 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..2 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_EULER_FREE_TAYLOR_NODES x (EULER_FREE_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_euler_free_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_euler_free_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -54,27 +51,7 @@ static int derive_euler_free_taylor_jet(double t, const double *y, const double 
     (void)t;
     for (i = 0; i < euler_free_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[3][0] = u[1][0] * u[2][0];
-    u[4][0] = u[0][0] * u[1][0];
-    u[5][0] = I2 * u[3][0];
-    u[6][0] = I3 * u[3][0];
-    u[7][0] = u[5][0] - u[6][0];
-    u[8][0] = 1.0/I1 * u[7][0];
-    u[9][0] = u[0][0] * u[2][0];
-    u[10][0] = I3 * u[9][0];
-    u[11][0] = u[0][0] * u[2][0];
-    u[12][0] = I1 * u[11][0];
-    u[13][0] = u[10][0] - u[12][0];
-    u[14][0] = 1.0/I2 * u[13][0];
-    u[15][0] = I1 * u[4][0];
-    u[16][0] = I2 * u[4][0];
-    u[17][0] = u[15][0] - u[16][0];
-    u[18][0] = 1.0/I3 * u[17][0];
-    u[0][1] = u[8][0];
-    u[1][1] = u[14][0];
-    u[2][1] = u[18][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         u[3][n] = derive_euler_free_taylor_tc_mul(n, u[1], u[2]);
         u[4][n] = derive_euler_free_taylor_tc_mul(n, u[0], u[1]);

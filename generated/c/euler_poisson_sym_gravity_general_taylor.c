@@ -4,9 +4,8 @@
  *
  * The right-hand side is 43 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..8 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NODES x (EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_euler_poisson_sym_gravity_general_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_euler_poisson_sym_gravity_general_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -61,60 +58,7 @@ static int derive_euler_poisson_sym_gravity_general_taylor_jet(double t, const d
     (void)t;
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[9][0] = u[1][0] * u[2][0];
-    u[10][0] = I1 * u[9][0];
-    u[11][0] = I3 * u[9][0];
-    u[12][0] = u[10][0] - u[11][0];
-    u[13][0] = x0 * u[12][0];
-    u[14][0] = cy * u[5][0];
-    u[15][0] = cz * u[4][0];
-    u[16][0] = u[14][0] - u[15][0];
-    u[17][0] = x2 * u[16][0];
-    u[18][0] = u[13][0] - u[17][0];
-    u[19][0] = u[0][0] * u[2][0];
-    u[20][0] = I3 * u[19][0];
-    u[21][0] = u[0][0] * u[2][0];
-    u[22][0] = I1 * u[21][0];
-    u[23][0] = u[20][0] - u[22][0];
-    u[24][0] = x0 * u[23][0];
-    u[25][0] = cz * u[3][0];
-    u[26][0] = cx * u[5][0];
-    u[27][0] = u[25][0] - u[26][0];
-    u[28][0] = x2 * u[27][0];
-    u[29][0] = u[24][0] - u[28][0];
-    u[30][0] = cx * u[4][0];
-    u[31][0] = cy * u[3][0];
-    u[32][0] = u[30][0] - u[31][0];
-    u[33][0] = -x1/I3 * u[32][0];
-    u[34][0] = u[4][0] * u[2][0];
-    u[35][0] = u[5][0] * u[1][0];
-    u[36][0] = u[34][0] - u[35][0];
-    u[37][0] = u[5][0] * u[0][0];
-    u[38][0] = u[3][0] * u[2][0];
-    u[39][0] = u[37][0] - u[38][0];
-    u[40][0] = u[3][0] * u[1][0];
-    u[41][0] = u[4][0] * u[0][0];
-    u[42][0] = u[40][0] - u[41][0];
-    u[43][0] = u[7][0] * u[2][0];
-    u[44][0] = u[8][0] * u[1][0];
-    u[45][0] = u[43][0] - u[44][0];
-    u[46][0] = u[8][0] * u[0][0];
-    u[47][0] = u[6][0] * u[2][0];
-    u[48][0] = u[46][0] - u[47][0];
-    u[49][0] = u[6][0] * u[1][0];
-    u[50][0] = u[7][0] * u[0][0];
-    u[51][0] = u[49][0] - u[50][0];
-    u[0][1] = u[18][0];
-    u[1][1] = u[29][0];
-    u[2][1] = u[33][0];
-    u[3][1] = u[36][0];
-    u[4][1] = u[39][0];
-    u[5][1] = u[42][0];
-    u[6][1] = u[45][0];
-    u[7][1] = u[48][0];
-    u[8][1] = u[51][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         u[9][n] = derive_euler_poisson_sym_gravity_general_taylor_tc_mul(n, u[1], u[2]);
         u[10][n] = I1 * u[9][n];

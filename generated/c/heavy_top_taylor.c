@@ -4,9 +4,8 @@
  *
  * The right-hand side is 26 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..5 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_HEAVY_TOP_TAYLOR_NODES x (HEAVY_TOP_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_heavy_top_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_heavy_top_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -43,7 +40,7 @@ static inline double derive_heavy_top_taylor_tc_mul(int n, const double *restric
 }
 
 /* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static inline double derive_heavy_top_taylor_tc_sqr(int n, const double *restrict a)
+static double derive_heavy_top_taylor_tc_sqr(int n, const double *a)
 {
     double s = 0.0;
     int j;
@@ -56,8 +53,7 @@ static inline double derive_heavy_top_taylor_tc_sqr(int n, const double *restric
 }
 
 /* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static inline void derive_heavy_top_taylor_tc_div(int n, const double *restrict a, const double *restrict b,
-                                 double *restrict q)
+static void derive_heavy_top_taylor_tc_div(int n, const double *a, const double *b, double *q)
 {
     double s = a[n];
     int j;
@@ -68,11 +64,15 @@ static inline void derive_heavy_top_taylor_tc_div(int n, const double *restrict 
 
 /* s = sin(a), c = cos(a) together (s' = a' c, c' = -a' s):
  * s_n = sum_{j=1}^{n} j a_j c_{n-j} / n,  c_n = -sum_{j=1}^{n} j a_j s_{n-j} / n. */
-static inline void derive_heavy_top_taylor_tc_sincos(int n, const double *restrict a, double *restrict s,
-                                    double *restrict c)
+static void derive_heavy_top_taylor_tc_sincos(int n, const double *a, double *s, double *c)
 {
     double ss = 0.0, cc = 0.0, ja;
     int j;
+    if (n == 0) {
+        s[0] = sin(a[0]);
+        c[0] = cos(a[0]);
+        return;
+    }
     for (j = 1; j <= n; ++j) {
         ja = j * a[j];
         ss += ja * c[n - j];
@@ -97,41 +97,7 @@ static int derive_heavy_top_taylor_jet(double t, const double *y, const double *
     (void)t;
     for (i = 0; i < heavy_top_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[6][0] = sin(u[1][0]);  u[7][0] = cos(u[1][0]);
-    u[8][0] = u[6][0] * u[6][0];
-    u[9][0] = I3 * u[5][0];
-    u[10][0] = I3 * u[3][0];
-    u[11][0] = I1 * u[3][0];
-    u[12][0] = u[4][0] / u[6][0];
-    u[13][0] = x6 * u[12][0];
-    u[14][0] = u[3][0] * u[3][0];
-    u[15][0] = u[7][0] * u[14][0];
-    u[16][0] = u[7][0] * u[10][0];
-    u[17][0] = u[7][0] * u[11][0];
-    u[18][0] = u[9][0] + u[16][0] - 2 * u[17][0];
-    u[19][0] = u[13][0] * u[18][0];
-    u[20][0] = I1 * u[15][0];
-    u[21][0] = u[9][0] * u[3][0];
-    u[22][0] = I3 * u[15][0];
-    u[23][0] = u[20][0] - u[21][0] - u[22][0] + M*g*l;
-    u[24][0] = u[6][0] * u[23][0];
-    u[25][0] = x6 * u[24][0];
-    u[26][0] = u[8][0] * u[11][0];
-    u[27][0] = u[9][0] * u[7][0];
-    u[28][0] = u[8][0] * u[3][0];
-    u[29][0] = I3 * u[28][0];
-    u[30][0] = -u[10][0] - u[26][0] - u[27][0] + 2 * u[11][0] + u[29][0];
-    u[31][0] = u[13][0] * u[30][0];
-    if (!((-DBL_EPSILON + u[8][0]) > 0))
-        return 1;  /* outside the model's domain (see its description) */
-    u[0][1] = u[3][0];
-    u[1][1] = u[4][0];
-    u[2][1] = u[5][0];
-    u[3][1] = u[19][0];
-    u[4][1] = u[25][0];
-    u[5][1] = u[31][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         derive_heavy_top_taylor_tc_sincos(n, u[1], u[6], u[7]);
         u[8][n] = derive_heavy_top_taylor_tc_sqr(n, u[6]);
@@ -149,7 +115,7 @@ static int derive_heavy_top_taylor_jet(double t, const double *y, const double *
         u[20][n] = I1 * u[15][n];
         u[21][n] = derive_heavy_top_taylor_tc_mul(n, u[9], u[3]);
         u[22][n] = I3 * u[15][n];
-        u[23][n] = u[20][n] - u[21][n] - u[22][n];
+        u[23][n] = u[20][n] - u[21][n] - u[22][n] + (n == 0 ? M*g*l : 0.0);
         u[24][n] = derive_heavy_top_taylor_tc_mul(n, u[6], u[23]);
         u[25][n] = x6 * u[24][n];
         u[26][n] = derive_heavy_top_taylor_tc_mul(n, u[8], u[11]);
@@ -158,6 +124,8 @@ static int derive_heavy_top_taylor_jet(double t, const double *y, const double *
         u[29][n] = I3 * u[28][n];
         u[30][n] = -u[10][n] - u[26][n] - u[27][n] + 2 * u[11][n] + u[29][n];
         u[31][n] = derive_heavy_top_taylor_tc_mul(n, u[13], u[30]);
+        if (n == 0 && !((-DBL_EPSILON + u[8][0]) > 0))
+            return 1;  /* outside the model's domain (see its description) */
         u[0][n + 1] = u[3][n] * inv;
         u[1][n + 1] = u[4][n] * inv;
         u[2][n + 1] = u[5][n] * inv;

@@ -4,9 +4,8 @@
  *
  * The right-hand side is 29 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..3 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_REDUCED_SYM_TAYLOR_NODES x (REDUCED_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_reduced_sym_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_reduced_sym_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -43,7 +40,7 @@ static inline double derive_reduced_sym_taylor_tc_mul(int n, const double *restr
 }
 
 /* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static inline double derive_reduced_sym_taylor_tc_sqr(int n, const double *restrict a)
+static double derive_reduced_sym_taylor_tc_sqr(int n, const double *a)
 {
     double s = 0.0;
     int j;
@@ -56,8 +53,7 @@ static inline double derive_reduced_sym_taylor_tc_sqr(int n, const double *restr
 }
 
 /* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static inline void derive_reduced_sym_taylor_tc_div(int n, const double *restrict a, const double *restrict b,
-                                 double *restrict q)
+static void derive_reduced_sym_taylor_tc_div(int n, const double *a, const double *b, double *q)
 {
     double s = a[n];
     int j;
@@ -68,11 +64,15 @@ static inline void derive_reduced_sym_taylor_tc_div(int n, const double *restric
 
 /* s = sin(a), c = cos(a) together (s' = a' c, c' = -a' s):
  * s_n = sum_{j=1}^{n} j a_j c_{n-j} / n,  c_n = -sum_{j=1}^{n} j a_j s_{n-j} / n. */
-static inline void derive_reduced_sym_taylor_tc_sincos(int n, const double *restrict a, double *restrict s,
-                                    double *restrict c)
+static void derive_reduced_sym_taylor_tc_sincos(int n, const double *a, double *s, double *c)
 {
     double ss = 0.0, cc = 0.0, ja;
     int j;
+    if (n == 0) {
+        s[0] = sin(a[0]);
+        c[0] = cos(a[0]);
+        return;
+    }
     for (j = 1; j <= n; ++j) {
         ja = j * a[j];
         ss += ja * c[n - j];
@@ -102,61 +102,31 @@ static int derive_reduced_sym_taylor_jet(double t, const double *y, const double
     (void)t;
     for (i = 0; i < reduced_sym_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[4][0] = 1.0/2.0 * u[1][0];
-    u[5][0] = sin(u[4][0]);  u[6][0] = cos(u[4][0]);
-    u[7][0] = u[6][0] * u[6][0];
-    u[8][0] = 1.0;
-    u[9][0] = u[8][0] / u[7][0];
-    u[10][0] = x0*x4 * u[9][0];
-    u[11][0] = ((x0 == 0) ? (0) : u[10][0]);
-    u[12][0] = u[5][0] * u[5][0];
-    u[13][0] = u[8][0] / u[12][0];
-    u[14][0] = x4*x5 * u[13][0];
-    u[15][0] = ((x5 == 0) ? (0) : u[14][0]);
-    u[16][0] = u[11][0] + u[15][0];
-    u[17][0] = sin(u[1][0]);  u[18][0] = cos(u[1][0]);
-    u[19][0] = u[16][0] * u[18][0];
-    u[20][0] = -u[19][0] + p_gamma/I3;
-    u[21][0] = u[12][0] * u[5][0];
-    u[22][0] = u[6][0] / u[21][0];
-    u[23][0] = -x10*x9 * u[22][0];
-    u[24][0] = ((x10 == 0) ? (0) : u[23][0]);
-    u[25][0] = u[7][0] * u[6][0];
-    u[26][0] = u[5][0] / u[25][0];
-    u[27][0] = x8*x9 * u[26][0];
-    u[28][0] = ((x8 == 0) ? (0) : u[27][0]);
-    u[29][0] = -u[24][0] - u[28][0];
-    u[30][0] = x3 * u[29][0];
-    u[0][1] = u[16][0];
-    u[1][1] = u[3][0];
-    u[2][1] = u[20][0];
-    u[3][1] = u[30][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         u[4][n] = 1.0/2.0 * u[1][n];
         derive_reduced_sym_taylor_tc_sincos(n, u[4], u[5], u[6]);
         u[7][n] = derive_reduced_sym_taylor_tc_sqr(n, u[6]);
-        u[8][n] = 0.0;
+        u[8][n] = (n == 0 ? 1.0 : 0.0);
         derive_reduced_sym_taylor_tc_div(n, u[8], u[7], u[9]);
         u[10][n] = x0*x4 * u[9][n];
-        u[11][n] = ((x0 == 0) ? 0.0 : u[10][n]);
+        u[11][n] = ((x0 == 0) ? (n == 0 ? (0) : 0.0) : u[10][n]);
         u[12][n] = derive_reduced_sym_taylor_tc_sqr(n, u[5]);
         derive_reduced_sym_taylor_tc_div(n, u[8], u[12], u[13]);
         u[14][n] = x4*x5 * u[13][n];
-        u[15][n] = ((x5 == 0) ? 0.0 : u[14][n]);
+        u[15][n] = ((x5 == 0) ? (n == 0 ? (0) : 0.0) : u[14][n]);
         u[16][n] = u[11][n] + u[15][n];
         derive_reduced_sym_taylor_tc_sincos(n, u[1], u[17], u[18]);
         u[19][n] = derive_reduced_sym_taylor_tc_mul(n, u[16], u[18]);
-        u[20][n] = -u[19][n];
+        u[20][n] = -u[19][n] + (n == 0 ? p_gamma/I3 : 0.0);
         u[21][n] = derive_reduced_sym_taylor_tc_mul(n, u[12], u[5]);
         derive_reduced_sym_taylor_tc_div(n, u[6], u[21], u[22]);
         u[23][n] = -x10*x9 * u[22][n];
-        u[24][n] = ((x10 == 0) ? 0.0 : u[23][n]);
+        u[24][n] = ((x10 == 0) ? (n == 0 ? (0) : 0.0) : u[23][n]);
         u[25][n] = derive_reduced_sym_taylor_tc_mul(n, u[7], u[6]);
         derive_reduced_sym_taylor_tc_div(n, u[5], u[25], u[26]);
         u[27][n] = x8*x9 * u[26][n];
-        u[28][n] = ((x8 == 0) ? 0.0 : u[27][n]);
+        u[28][n] = ((x8 == 0) ? (n == 0 ? (0) : 0.0) : u[27][n]);
         u[29][n] = -u[24][n] - u[28][n];
         u[30][n] = x3 * u[29][n];
         u[0][n + 1] = u[16][n] * inv;
@@ -176,8 +146,7 @@ static void derive_reduced_sym_taylor_jet_outputs(const double *p, int order, do
 {
     int j, n;
     (void)p;
-    u[31][0] = sin(u[4][0]);  u[32][0] = cos(u[4][0]);
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         derive_reduced_sym_taylor_tc_sincos(n, u[4], u[31], u[32]);
     }
     n = order;  /* the last order, of the nodes the outputs read */

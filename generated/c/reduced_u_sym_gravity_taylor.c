@@ -4,9 +4,8 @@
  *
  * The right-hand side is 16 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..3 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NODES x (REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_reduced_u_sym_gravity_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_reduced_u_sym_gravity_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -43,8 +40,7 @@ static inline double derive_reduced_u_sym_gravity_taylor_tc_mul(int n, const dou
 }
 
 /* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static inline void derive_reduced_u_sym_gravity_taylor_tc_div(int n, const double *restrict a, const double *restrict b,
-                                 double *restrict q)
+static void derive_reduced_u_sym_gravity_taylor_tc_div(int n, const double *a, const double *b, double *q)
 {
     double s = a[n];
     int j;
@@ -76,45 +72,24 @@ static int derive_reduced_u_sym_gravity_taylor_jet(double t, const double *y, co
     (void)t;
     for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[4][0] = u[1][0] + 1;
-    u[5][0] = 1.0;
-    u[6][0] = u[5][0] / u[4][0];
-    u[7][0] = x0*x2 * u[6][0];
-    u[8][0] = ((x0 == 0) ? (0) : u[7][0]);
-    u[9][0] = u[1][0] - 1;
-    u[10][0] = u[5][0] / u[9][0];
-    u[11][0] = -x2*x3 * u[10][0];
-    u[12][0] = ((x3 == 0) ? (0) : u[11][0]);
-    u[13][0] = u[8][0] + u[12][0];
-    u[14][0] = u[13][0] * u[1][0];
-    u[15][0] = -u[14][0] + p_gamma/I3;
-    u[16][0] = x1*x6 * u[1][0];
-    u[17][0] = 3 * u[16][0] - x5*(2*E_prime*I1 + (p_gamma*p_gamma));
-    u[18][0] = u[1][0] * u[17][0];
-    u[19][0] = u[18][0] - x5*(I1*x6 - p_alpha*p_gamma);
-    u[0][1] = u[13][0];
-    u[1][1] = u[3][0];
-    u[2][1] = u[15][0];
-    u[3][1] = u[19][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        u[4][n] = u[1][n];
-        u[5][n] = 0.0;
+        u[4][n] = u[1][n] + (n == 0 ? 1 : 0.0);
+        u[5][n] = (n == 0 ? 1.0 : 0.0);
         derive_reduced_u_sym_gravity_taylor_tc_div(n, u[5], u[4], u[6]);
         u[7][n] = x0*x2 * u[6][n];
-        u[8][n] = ((x0 == 0) ? 0.0 : u[7][n]);
-        u[9][n] = u[1][n];
+        u[8][n] = ((x0 == 0) ? (n == 0 ? (0) : 0.0) : u[7][n]);
+        u[9][n] = u[1][n] + (n == 0 ? -1 : 0.0);
         derive_reduced_u_sym_gravity_taylor_tc_div(n, u[5], u[9], u[10]);
         u[11][n] = -x2*x3 * u[10][n];
-        u[12][n] = ((x3 == 0) ? 0.0 : u[11][n]);
+        u[12][n] = ((x3 == 0) ? (n == 0 ? (0) : 0.0) : u[11][n]);
         u[13][n] = u[8][n] + u[12][n];
         u[14][n] = derive_reduced_u_sym_gravity_taylor_tc_mul(n, u[13], u[1]);
-        u[15][n] = -u[14][n];
+        u[15][n] = -u[14][n] + (n == 0 ? p_gamma/I3 : 0.0);
         u[16][n] = x1*x6 * u[1][n];
-        u[17][n] = 3 * u[16][n];
+        u[17][n] = 3 * u[16][n] + (n == 0 ? -x5*(2*E_prime*I1 + (p_gamma*p_gamma)) : 0.0);
         u[18][n] = derive_reduced_u_sym_gravity_taylor_tc_mul(n, u[1], u[17]);
-        u[19][n] = u[18][n];
+        u[19][n] = u[18][n] + (n == 0 ? -x5*(I1*x6 - p_alpha*p_gamma) : 0.0);
         u[0][n + 1] = u[13][n] * inv;
         u[1][n + 1] = u[3][n] * inv;
         u[2][n + 1] = u[15][n] * inv;

@@ -4,9 +4,8 @@
  *
  * The right-hand side is 82 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..6 are the states, the others one operation each,
- * in evaluation order. Order 0 is the right-hand side itself (constants, libm calls, guards);
- * pass n >= 1 computes coefficient n of every node from coefficients <= n of its operands (one
- * helper per elementary function below; no constants left), then y_i,n+1 = f_i,n / (n + 1).
+ * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
+ * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_RIGID_BODY_TAYLOR_NODES x (RIGID_BODY_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -27,13 +26,11 @@
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n >= 1 of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- * Order 0, the function itself, is computed in the jet's own order-0 pass. The operands are
- * distinct rows of the coefficient table, never the row written (restrict). */
+/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
+ * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files). */
 
 /* u = a b: the Cauchy product. */
-static inline double derive_rigid_body_taylor_tc_mul(int n, const double *restrict a, const double *restrict b)
+static double derive_rigid_body_taylor_tc_mul(int n, const double *a, const double *b)
 {
     double s = 0.0;
     int j;
@@ -43,7 +40,7 @@ static inline double derive_rigid_body_taylor_tc_mul(int n, const double *restri
 }
 
 /* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static inline double derive_rigid_body_taylor_tc_sqr(int n, const double *restrict a)
+static double derive_rigid_body_taylor_tc_sqr(int n, const double *a)
 {
     double s = 0.0;
     int j;
@@ -56,8 +53,7 @@ static inline double derive_rigid_body_taylor_tc_sqr(int n, const double *restri
 }
 
 /* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static inline void derive_rigid_body_taylor_tc_div(int n, const double *restrict a, const double *restrict b,
-                                 double *restrict q)
+static void derive_rigid_body_taylor_tc_div(int n, const double *a, const double *b, double *q)
 {
     double s = a[n];
     int j;
@@ -88,99 +84,7 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
     (void)t;
     for (i = 0; i < rigid_body_NY; ++i)
         u[i][0] = y[i];
-    /* Order 0: the right-hand side itself (the only pass with constants and libm calls). */
-    u[7][0] = u[1][0] * u[1][0];
-    u[8][0] = u[2][0] * u[2][0];
-    u[9][0] = u[0][0] * u[0][0];
-    u[10][0] = u[3][0] * u[3][0];
-    u[11][0] = u[9][0] + u[10][0];
-    u[12][0] = u[7][0] + u[8][0] + u[11][0];
-    u[13][0] = 1.0/2.0 * u[4][0];
-    u[14][0] = 1.0/2.0 * u[2][0];
-    u[15][0] = 1.0/2.0 * u[3][0];
-    u[16][0] = 1.0/2.0 * u[5][0];
-    u[17][0] = 1.0/2.0 * u[6][0];
-    u[18][0] = u[5][0] * u[6][0];
-    u[19][0] = 2 * u[0][0];
-    u[20][0] = u[19][0] * u[1][0];
-    u[21][0] = u[2][0] * u[3][0];
-    u[22][0] = u[20][0] + 2 * u[21][0];
-    u[23][0] = 1.0;
-    u[24][0] = u[23][0] / u[12][0];
-    u[25][0] = u[11][0] - u[7][0] - u[8][0];
-    u[26][0] = u[24][0] * u[25][0];
-    u[27][0] = u[19][0] * u[2][0];
-    u[28][0] = u[1][0] * u[3][0];
-    u[29][0] = -u[27][0] + 2 * u[28][0];
-    u[30][0] = u[4][0] * u[5][0];
-    u[31][0] = u[13][0] * u[1][0];
-    u[32][0] = u[14][0] * u[5][0];
-    u[33][0] = u[15][0] * u[6][0];
-    u[34][0] = -u[31][0] - u[32][0] - u[33][0];
-    u[35][0] = u[13][0] * u[0][0];
-    u[36][0] = u[14][0] * u[6][0];
-    u[37][0] = u[15][0] * u[5][0];
-    u[38][0] = u[35][0] + u[36][0] - u[37][0];
-    u[39][0] = u[13][0] * u[3][0];
-    u[40][0] = u[16][0] * u[0][0];
-    u[41][0] = u[17][0] * u[1][0];
-    u[42][0] = u[39][0] + u[40][0] - u[41][0];
-    u[43][0] = u[16][0] * u[1][0];
-    u[44][0] = u[17][0] * u[0][0];
-    u[45][0] = u[13][0] * u[2][0];
-    u[46][0] = u[43][0] + u[44][0] - u[45][0];
-    u[47][0] = I2 * u[18][0];
-    u[48][0] = I3 * u[18][0];
-    u[49][0] = u[47][0] - u[48][0];
-    u[50][0] = x9 * u[49][0];
-    u[51][0] = cy * u[26][0];
-    u[52][0] = u[22][0] * u[24][0];
-    u[53][0] = cz * u[52][0];
-    u[54][0] = u[51][0] - u[53][0];
-    u[55][0] = x15 * u[54][0];
-    u[56][0] = c * u[4][0];
-    u[57][0] = -u[55][0] - u[56][0];
-    u[58][0] = x9 * u[57][0];
-    u[59][0] = u[50][0] + u[58][0];
-    u[60][0] = cx * u[26][0];
-    u[61][0] = u[24][0] * u[29][0];
-    u[62][0] = cz * u[61][0];
-    u[63][0] = -u[60][0] + u[62][0];
-    u[64][0] = x15 * u[63][0];
-    u[65][0] = c * u[5][0];
-    u[66][0] = -u[64][0] - u[65][0];
-    u[67][0] = x16 * u[66][0];
-    u[68][0] = u[4][0] * u[6][0];
-    u[69][0] = I3 * u[68][0];
-    u[70][0] = u[4][0] * u[6][0];
-    u[71][0] = I1 * u[70][0];
-    u[72][0] = u[69][0] - u[71][0];
-    u[73][0] = x16 * u[72][0];
-    u[74][0] = u[67][0] + u[73][0];
-    u[75][0] = I1 * u[30][0];
-    u[76][0] = I2 * u[30][0];
-    u[77][0] = u[75][0] - u[76][0];
-    u[78][0] = x18 * u[77][0];
-    u[79][0] = u[22][0] * u[24][0];
-    u[80][0] = cx * u[79][0];
-    u[81][0] = u[24][0] * u[29][0];
-    u[82][0] = cy * u[81][0];
-    u[83][0] = u[80][0] - u[82][0];
-    u[84][0] = x15 * u[83][0];
-    u[85][0] = c * u[6][0];
-    u[86][0] = -u[84][0] - u[85][0];
-    u[87][0] = x18 * u[86][0];
-    u[88][0] = u[78][0] + u[87][0];
-    if (!((u[12][0]) > 0))
-        return 1;  /* outside the model's domain (see its description) */
-    u[0][1] = u[34][0];
-    u[1][1] = u[38][0];
-    u[2][1] = u[42][0];
-    u[3][1] = u[46][0];
-    u[4][1] = u[59][0];
-    u[5][1] = u[74][0];
-    u[6][1] = u[88][0];
-    for (n = 1; n < order; ++n) {
+    for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         u[7][n] = derive_rigid_body_taylor_tc_sqr(n, u[1]);
         u[8][n] = derive_rigid_body_taylor_tc_sqr(n, u[2]);
@@ -198,7 +102,7 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[20][n] = derive_rigid_body_taylor_tc_mul(n, u[19], u[1]);
         u[21][n] = derive_rigid_body_taylor_tc_mul(n, u[2], u[3]);
         u[22][n] = u[20][n] + 2 * u[21][n];
-        u[23][n] = 0.0;
+        u[23][n] = (n == 0 ? 1.0 : 0.0);
         derive_rigid_body_taylor_tc_div(n, u[23], u[12], u[24]);
         u[25][n] = u[11][n] - u[7][n] - u[8][n];
         u[26][n] = derive_rigid_body_taylor_tc_mul(n, u[24], u[25]);
@@ -264,6 +168,8 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[86][n] = -u[84][n] - u[85][n];
         u[87][n] = x18 * u[86][n];
         u[88][n] = u[78][n] + u[87][n];
+        if (n == 0 && !((u[12][0]) > 0))
+            return 1;  /* outside the model's domain (see its description) */
         u[0][n + 1] = u[34][n] * inv;
         u[1][n + 1] = u[38][n] * inv;
         u[2][n + 1] = u[42][n] * inv;
