@@ -293,10 +293,10 @@ static int derive_euler_poisson_sym_gravity_general_taylor_solve_taylor(const do
 {
     derive_stats local;
     double u[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], y[euler_poisson_sym_gravity_general_NY];
-    double w[EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], tau;
+    double w[EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], tau, fac;
     double o[18];
     int series = 1;
-    double t, tn, t_end, h, fac, floor_, sc, rho, n1, n2, chk;
+    double t, tn, t_end, h, lfac, ip1, ip2, floor_, sc, lr, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -314,7 +314,10 @@ static int derive_euler_poisson_sym_gravity_general_taylor_solve_taylor(const do
         order = 2;
     if (order > 30)
         order = 30;
-    fac = exp(-2.0 - 0.7 / (order - 1));
+    lfac = -2.0 - 0.7 / (order - 1);
+    fac = exp(lfac);  /* (the outputs' test) */
+    ip1 = 1.0 / (order - 1);
+    ip2 = 1.0 / order;
     floor_ = rtol > 0.0 ? atol / rtol : 0.0;
 
     t = t_out[0];
@@ -389,12 +392,15 @@ static int derive_euler_poisson_sym_gravity_general_taylor_solve_taylor(const do
         sc = rtol > 0.0 ? fmax(fabs(y[8]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[8][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[8][order]) / sc);
-        rho = HUGE_VAL;
+        /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)) as exp(ln fac - max(ln n1/(p-1), ln n2/p)):
+         * two logs and one exp where two pows cost about twice as much (glibc); all-zero
+         * coefficients (a polynomial solution) give lr = -inf, an infinite step. */
+        lr = -HUGE_VAL;
         if (n1 > 0.0)
-            rho = pow(n1, -1.0 / (order - 1));
+            lr = log(n1) * ip1;
         if (n2 > 0.0)
-            rho = fmin(rho, pow(n2, -1.0 / order));
-        h = rho * fac;
+            lr = fmax(lr, log(n2) * ip2);
+        h = exp(lfac - lr);
         last = !(t + h < t_end);
         if (last)
             h = t_end - t;
