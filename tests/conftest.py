@@ -13,11 +13,23 @@
 
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
+import pytest
 from hypothesis import settings
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
+
+
+@pytest.fixture(scope="session")
+def lecture_claims():
+    """The lecture's notes read and checked once per test process (``check_notes``, ~4 s),
+    shared by the files that test the reader on them."""
+    from pathlib import Path
+
+    from derive.lecture import notes_check as nc
+
+    return nc.check_notes(Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md")
 
 
 def pytest_configure(config):

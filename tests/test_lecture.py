@@ -196,6 +196,7 @@ _HASH_DOCS = (
 )
 
 
+@pytest.mark.slow  # a fresh process derives every report again (~10 s): `make test-slow`
 def test_reports_are_byte_deterministic_across_runs_and_hash_seeds():
     """A fresh process with a fixed hash seed writes the same bytes as this one (whose seed
     pytest left random, or set otherwise): two runs, two seeds."""

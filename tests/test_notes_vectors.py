@@ -196,11 +196,6 @@ def test_vector_planted_errors_caught():
 NOT_CLAIMS = {"text", "assumption", "expression", "law"}
 
 
-@pytest.fixture(scope="module")
-def lecture_claims():
-    return nc.check_notes(LECTURE)
-
-
 @needs_lecture
 def test_lecture_vector_displays_are_checked(lecture_claims):
     by_line = {}

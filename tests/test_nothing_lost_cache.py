@@ -247,8 +247,10 @@ def folder_at_checksum(cache: Path) -> str:
     return "has a folder where its checksum should be"
 
 
-@pytest.mark.parametrize("damage", [another_library, stamp_as_text_only, folder_at_library,
-                                    folder_at_checksum])
+@pytest.mark.parametrize("damage", [another_library, folder_at_checksum,
+                                    # the same healing path again: `make test-slow`
+                                    pytest.param(stamp_as_text_only, marks=pytest.mark.slow),
+                                    pytest.param(folder_at_library, marks=pytest.mark.slow)])
 def test_a_damaged_library_is_rebuilt_once(cache, tmp_path, pristine, damage):
     copy_of(pristine[0], cache)
     so = library(cache)

@@ -24,11 +24,6 @@ GOLDSTEIN = HERE / "notes" / "rigid-body-zxz.md"
 needs_lecture = pytest.mark.skipif(not LECTURE.exists(), reason="the lecture's notes file is not next to the repository")
 
 
-@pytest.fixture(scope="module")
-def lecture_claims():
-    return nc.check_notes(LECTURE)
-
-
 # ---- the reader -------------------------------------------------------------------------------
 def test_reader_lines_displays_and_assumptions():
     text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Top\n\nIf $I_1 = I_2$ then\n\n"

@@ -172,6 +172,7 @@ def test_examples_run_by_name_from_an_empty_directory(venv, empty):
     assert json.loads(r.stdout)["formulation"]
 
 
+@pytest.mark.slow  # the smoke bench again, from the installed wheel (~7 s): `make test-slow`
 def test_bench_runs_from_the_wheel(venv, empty):
     """The bench is a client of the installed package: its baselines and reference scene come
     with the wheel (the smoke settings: a few seconds)."""
