@@ -26,7 +26,8 @@ def test_taylor_steps_fall_and_jets_grow_with_the_order():
     assert p_hi > p_lo
     lo, hi = costs.cost("taylor", quiet, 1e-6, 1e-8), costs.cost("taylor", quiet, 1e-12, 1e-14)
     steps = lambda p: 1 + costs.A / p  # noqa: E731
-    jet = lambda p: quiet.jet_weight * p * p / 2 + 2 * quiet.ny * p  # noqa: E731
+    jet = lambda p: (costs.TAYLOR_UNIT * (quiet.jet_weight * p * p / 2 + 2 * quiet.ny * p)  # noqa: E731
+                     + costs.TAYLOR_STEP)
     assert hi / lo == pytest.approx(steps(p_hi) * jet(p_hi) / (steps(p_lo) * jet(p_lo)))
     assert steps(p_hi) < steps(p_lo)
 
