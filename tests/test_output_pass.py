@@ -71,6 +71,32 @@ def test_the_output_loop_is_the_output_map_bit_for_bit(models_lib, name):
     assert np.isfinite(expected).any()
     assert np.array_equal(out.view(np.uint64), expected.view(np.uint64))
 
+
+@pytest.mark.parametrize("name", [m for m in MODELS if _description(m)["has_angles"]])
+def test_beta_alone_is_the_output_map_s_beta_bit_for_bit(models_lib, name):
+    """``<model>_beta``, what the sweeps' extremum searches evaluate, has the bits of
+    ``_observables``' out[1] at random states (NaN for NaN); every model with angles has one."""
+    d = _description(name)
+    ny, nobs = len(d["states"]), len(d["outputs"])
+    rng = np.random.default_rng(21)
+    p = rng.uniform(0.2, 2.0, len(d["params"]))
+    one = getattr(models_lib, f"{name}_observables")
+    one.argtypes, one.restype = (ctypes.c_double, DP, DP, DP), ctypes.c_int
+    beta = getattr(models_lib, f"{name}_beta")
+    beta.argtypes, beta.restype = (ctypes.c_double, DP, DP), ctypes.c_double
+    o = np.empty(nobs)
+    got, want = [], []
+    for _ in range(200):
+        y = rng.uniform(-1.5, 1.5, ny)
+        t = float(rng.uniform(0.0, 10.0))
+        one(t, _ptr(y), _ptr(p), _ptr(o))
+        want.append(o[1])
+        got.append(beta(t, _ptr(y), _ptr(p)))
+    want, got = np.array(want), np.array(got)
+    assert np.isfinite(want).sum() > 100
+    assert np.array_equal(got.view(np.uint64), want.view(np.uint64))
+
+
 ARRAYS = ("t", "alpha", "beta", "gamma", "omega", "axis", "energy", "p_alpha", "p_gamma", "n", "L")
 
 

@@ -260,6 +260,9 @@ class KernelSpec:
     init_param_index: tuple
     checks: Block | None = None
     check_names: tuple = ()
+    # output 1 (β) alone, where the outputs start with the z-y-z angles: what a search for β's
+    # extrema evaluates many times a turning point (the sweeps' measures), without the rest
+    beta: Block | None = None
 
     @classmethod
     def of(cls, model: Model) -> KernelSpec:
@@ -269,9 +272,10 @@ class KernelSpec:
         derived = sequential(model.init_params, model.params)
         init = Block.of(list(model.init) + [e for _, e in derived], "x")
         checks = Block.of(list(model.checks.values()), "x") if model.checks else None
+        beta = Block.of([exprs[1]], "x") if tuple(names[:3]) == ("alpha", "beta", "gamma") else None
         return cls(model, Block.of(dom + list(model.rhs), "x"), Block.of(dom + list(model.jacobian), "x"),
                    Block.of(exprs, "x"), tuple(names), init, tuple(i for i, _ in derived),
-                   checks, tuple(model.checks))
+                   checks, tuple(model.checks), beta)
 
     @property
     def cost(self) -> int:
@@ -301,6 +305,9 @@ class KernelSpec:
                 (("rhs", self.rhs), ("jac", self.jac), ("obs", self.obs))}
         if self.checks is not None:
             used["checks"] = (self.checks.uses(m.states), self.checks.uses(m.params))
+        bt, bo = pr(self.beta) if self.beta is not None else ([], [])
+        if self.beta is not None:
+            used["beta"] = (self.beta.uses(m.states), self.beta.uses(m.params))
         init_used = (self.init.uses(INPUTS), self.init.uses(m.params))
         return dict(
             used=used,
@@ -317,5 +324,6 @@ class KernelSpec:
             nin=len(INPUTS), inputs=[str(s) for s in INPUTS],
             has_angles=self.observable_names[:3] == ("alpha", "beta", "gamma"),
             check_temps=ct, check_out=co, check_names=self.check_names,
+            beta_temps=bt, beta_out=bo,
             nchecks=len(self.check_names),
         )

@@ -221,7 +221,7 @@ def source(desc, method: str) -> str:
     m = _method_context(METHODS[method])  # the stage array's size, as the driver declares it
     return environment().get_template("c/measures.c.j2").render(
         prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, nip=len(INTEGRAL_ROW), n_k=m["n_k"],
-        n_stages=m["s"], n_dense=len(m["dense"]["stages"]), **idx)
+        n_stages=m["s"], n_dense=len(m["dense"]["stages"]), has_beta=desc.has_angles, **idx)
 
 
 def c_sources(desc, method: str) -> dict[str, str]:

@@ -142,6 +142,18 @@ int reduced_u_sym_gravity_observables(double t, const double *y, const double *p
     return 0;
 }
 
+/* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
+ * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
+ * reduced_u_sym_gravity_observables' out[1]. */
+double reduced_u_sym_gravity_beta(double t, const double *y, const double *p)
+{
+    const double u = y[1];
+    (void)t;
+    (void)p;
+
+    return acos(u);
+}
+
 /* reduced_u_sym_gravity_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
  * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
  * their temporaries computed once (not once a sample), and no sample goes through a copy. */

@@ -257,6 +257,24 @@ int rigid_body_observables(double t, const double *y, const double *p, double *o
     return 0;
 }
 
+/* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
+ * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
+ * rigid_body_observables' out[1]. */
+double rigid_body_beta(double t, const double *y, const double *p)
+{
+    const double q0 = y[0];
+    const double q1 = y[1];
+    const double q2 = y[2];
+    const double q3 = y[3];
+    (void)t;
+    (void)p;
+
+    const double x0 = (q0*q0) + (q3*q3);
+    const double x1 = (q1*q1);
+    const double x2 = (q2*q2);
+    return atan2(2*sqrt(x0)*sqrt(x1 + x2), x0 - x1 - x2);
+}
+
 /* rigid_body_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
  * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
  * their temporaries computed once (not once a sample), and no sample goes through a copy. */
