@@ -507,8 +507,16 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
         eq = pe.get(part) or {}
         for row in eq.get("rows", []):
             for fam, entry in row["peers"].items():
-                rows.append((f"{what} (t_end = {eq['t_end']:g}) at equal error {row['level']:.0e}: "
-                             f"`derive.simulate` / {names[fam]}", key.format(fam), entry.get("ratio_simulate")))
+                head = f"{what} (t_end = {eq['t_end']:g}) at equal error {row['level']:.0e}: "
+                if not entry.get("reached", True) and row["derive"].get("reached"):
+                    rows.append((head + f"{names[fam]} does not reach it at any tolerance; derive does",
+                                 key.format(fam), None))
+                    continue
+                # the prepared call is the counterpart of the peer's integrator built once and reset
+                rows.append((head + f"`derive.prepare(...).run()` / {names[fam]}", key.format(fam),
+                             entry.get("ratio_prepared")))
+                rows.append((head + f"`derive.simulate` / {names[fam]}", key.format(fam),
+                             entry.get("ratio_simulate")))
     ba = pe.get("batch") or {}
     if "ratio_full_vs_grid" in ba:
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch(..., outputs=\"final\")` / "
