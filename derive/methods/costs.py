@@ -33,6 +33,7 @@ tolerances, does auto pick the faster method?).
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -98,6 +99,8 @@ def cost(method: str, work: Work, rtol: float, atol: float) -> float:
     return math.inf  # a fixed-step or implicit method: not weighed by tolerance
 
 
+@functools.lru_cache(maxsize=1024)
 def choose(work: Work, rtol: float, atol: float) -> str:
-    """The method of :data:`CHOICES` with the least modelled cost (the first on a tie)."""
+    """The method of :data:`CHOICES` with the least modelled cost (the first on a tie).
+    Cached: a scan of one scene's numbers asks the same question every call."""
     return min(CHOICES, key=lambda m: (cost(m, work, rtol, atol), CHOICES.index(m)))
