@@ -14,7 +14,6 @@
    p_α = p_γ at β = 0, p_α = −p_γ at β = π, as the kernel receives them. Without a Routh
    reduction (an asymmetric body, damping, gravity off axis 3) the range is not known and the
    singular formulations are not chosen.
-4. A formulation is not chosen for a method whose driver its entry's ``not_chosen_for`` names.
 """
 from __future__ import annotations
 
@@ -26,13 +25,6 @@ from derive.symbolic.formulations import REGISTRY
 from derive.methods.registry import DEFAULT_METHOD, compiled_methods, method_reason
 from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import choose_method, inputs_of, params_of
-
-
-def not_chosen(method: str, formulation: str) -> str | None:
-    """Why auto does not choose ``formulation`` for the compiled ``method`` (the registry
-    entry's ``not_chosen_for``, by the method's driver), or None."""
-    driver = compiled_methods()[method].driver if method in compiled_methods() else None
-    return REGISTRY[formulation].not_chosen_for.get(driver)
 
 
 def _known_cost(key) -> float | None:
@@ -64,8 +56,7 @@ def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
         return [(scene.simulate.formulation, REGISTRY[scene.simulate.formulation].pole_check)]
     effects = scene.effects if effects is None else effects
     out = []
-    for name, mode in _structural(scene.symmetric, effects, scene.simulate.method,
-                                  fx.VERSION[0]):
+    for name, mode in structural(scene.symmetric, effects, scene.simulate.method):
         if REGISTRY[name].applicable(scene) is None:  # the scene's numbers (e.g. its start)
             out.append((name, mode))
             if not mode:
@@ -95,7 +86,7 @@ def _structural(symmetric, effects, method, version) -> tuple:
     out = []
     routh = has_routh(symmetric, effects)
     for name in _by_cost(symmetric, effects, version):
-        if method_reason(method, name, effects) or not_chosen(method, name):
+        if method_reason(method, name, effects):
             continue
         mode = pole_mode(name)
         if mode and not routh:

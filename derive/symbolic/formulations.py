@@ -15,12 +15,13 @@ Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeS
 5. ``needs_routh``: True when the formulation is exact only for conserved p_α, p_γ (the reduced
    top): it takes their values from the init map, as parameters.
 6. ``pole_check``: the pole check every run of the formulation carries, whoever chose it (1:
-   the motion keeps |sin β| ≥ ``POLE_CLEARANCE``), or 0: only the one ``auto`` gives it. The
+   the motion keeps |sin β| ≥ its ``clearance``), or 0: only the one ``auto`` gives it. The
    reduced-u form cannot follow the axis through a pole (u = ±1 is a turning point of u while
    the axis goes through, and α would have to jump by π), so it refuses such a motion even when
    asked for by name.
-7. ``not_chosen_for``: {method driver: why}: ``auto`` does not choose the formulation for those
-   methods (asked for by name, it runs).
+7. ``clearance``: the |sin β| its pole check keeps (``POLE_CLEARANCE`` unless the formulation
+   loses accuracy nearer a pole: reduced-u's ``REDUCED_U_CLEARANCE``), rendered into its C
+   ``pole_clear`` and its Routh checks.
 8. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
    Euler-angle mass matrix): a trajectory that came closer than the tolerance allows is refused.
 
@@ -33,7 +34,7 @@ Nothing here imports SymPy.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 from derive.symbolic import effects as fx
@@ -116,7 +117,6 @@ class Formulation:
     needs_routh: bool = False
     pole_check: int = 0
     clearance: float = POLE_CLEARANCE  # the |sin β| its pole check keeps (see routh_checks)
-    not_chosen_for: dict = field(default_factory=dict)
     pole_loss: bool = False
 
 
