@@ -129,13 +129,11 @@ class Model:
 
     # frame derivatives
     def dt(self, e):
-        """d/dt of an expression in the angles, rates and 𝐋's body components."""
+        """d/dt of an expression in the angles, rates and 𝐋's body components (the
+        derivation's chain rule, with 𝐋's components as three more coordinates)."""
         from derive.symbolic.lagrangian import ACCELS
-        from derive.symbolic.rotations import ANGLES, RATES
-        out = sum((sp.diff(e, q) * qd for q, qd in zip(ANGLES, RATES)), sp.S.Zero)
-        out += sum((sp.diff(e, qd) * qdd for qd, qdd in zip(RATES, ACCELS)), sp.S.Zero)
-        out += sum((sp.diff(e, x) * xd for x, xd in zip(L_B, LD_B)), sp.S.Zero)
-        return out
+        from derive.symbolic.rotations import ANGLES, RATES, time_derivative
+        return time_derivative(e, coords=(*ANGLES, *L_B), rates=(*RATES, *LD_B), accels=ACCELS)
 
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:
         """Body components of (dX/dt) in the inertial frame (Rᵀ d(R X)/dt) or the body frame (Ẋ)."""
