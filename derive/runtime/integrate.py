@@ -472,24 +472,11 @@ class ModelKernel:
     def simulate(self, inputs, p, t, args, pole_check: int = 0):
         """One trajectory: returns (out (NOBS, n), y (n, NY), p (derived parameters written),
         stats record). ``args``: the driver's arguments (``driver_args``); ``pole_check`` 1 or 2
-        refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``."""
-        n = t.shape[0]
-        # One allocation for the outputs, the states, the parameters and the stats record
-        # (pointers by offset; the record is a whole number of doubles, see _STATS_DOUBLES).
-        size_out, size_y = self.nout * n, n * self.ny
-        k_p = size_out + size_y
-        k_st = k_p + self.np
-        buf = np.empty(k_st + _STATS_DOUBLES)
-        base = _ptr(buf)
-        out = buf[:size_out].reshape(self.nout, n)
-        y = buf[size_out:k_p].reshape(n, self.ny)
-        pp = buf[k_p:k_st]
-        pp[:] = p
-        stats = buf[k_st:]
-        stats[:] = 0.0
-        self._call(self._sim, _ptr(inputs), base + 8 * k_p, _ptr(t), n, *args,
-                   pole_check, base + 8 * size_out, base, base + 8 * k_st)
-        return out, y, pp, stats.view(STATS_DTYPE)[0]
+        refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``. A
+        one-off :class:`BoundRun` (its one buffer layout and guarded call)."""
+        bound = self.bind(t, inputs, args, pole_check)
+        out, y, pp, _, _, buf = bound(np.asarray(p, dtype=np.float64))
+        return out, y, pp, bound.stats(buf)
 
     def bind(self, t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0) -> "BoundRun":
         """The C call of :meth:`simulate` with everything that does not change per run worked out

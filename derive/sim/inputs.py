@@ -32,8 +32,14 @@ def params_of(scene: Scene, desc) -> np.ndarray:
     return np.array([0.0 if k in derived else values[name] for k, name in enumerate(desc.params)])
 
 
+#: The scene's method (and formulation) that lets derive choose.
+AUTO = "auto"
+
+
 def choose_method(scene: Scene) -> str:
-    return DEFAULT_METHOD if scene.simulate.method == "auto" else scene.simulate.method
+    """The scene's method, or the default one for :data:`AUTO` (a plan then weighs the Taylor
+    method per model: :func:`derive.sim.plan.auto_method`)."""
+    return DEFAULT_METHOD if scene.simulate.method == AUTO else scene.simulate.method
 
 
 def fastest_rate(scene: Scene) -> float:

@@ -24,13 +24,11 @@ from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.runtime import catalogue
 from derive.runtime.integrate import BoundRun, ModelKernel
 from derive.sim import auto
-from derive.sim.inputs import _settings, choose_method, fastest_rate, inputs_of, params_of
+from derive.sim.inputs import AUTO, _settings, choose_method, fastest_rate, inputs_of, params_of
 from derive.sim.scene import Scene
 from derive.symbolic import effects
 from derive.symbolic.formulations import REGISTRY
 
-#: The scene's method that lets the cost model choose.
-AUTO = "auto"
 #: SciPy reference methods: scene name -> solve_ivp method
 SCIPY_METHODS = {name: ivp for name, (ivp, _) in REFERENCE_METHODS.items()}
 
@@ -101,16 +99,9 @@ class Plan:
         return SCIPY_METHODS.get(self.method)
 
     @functools.cached_property
-    def integrals(self) -> list:
-        """The scene's integral functions ``[(name, f(L, n))]`` (:func:`integrals_of`), looked up
-        once per plan: a prepared run does not classify its scene again."""
-        return integrals_of(self.scene)
-
-    @functools.cached_property
     def integral_rows(self) -> list:
-        """The same integrals as ``[(name, formula, values)]``, ``formula(L, n, values)`` taking
-        L and n as rows (3, N), the layout of the C call's outputs: a compiled run evaluates
-        them on its output rows with no conversion or transposition per call."""
+        """The scene's integrals (:func:`integral_rows_of`), looked up once per plan: a prepared
+        run does not classify its scene again."""
         return integral_rows_of(self.scene)
 
 
@@ -124,32 +115,32 @@ def _integrals_key(scene: Scene) -> tuple:
 
 
 def _memo(memo: dict, key, make):
-    """``memo[key]``, made by ``make()`` when absent; the memo holds at most :data:`MEMO_SIZE`
-    entries (the oldest goes first): a sweep of many bodies must not grow it without bound."""
+    """``memo[key]``, made by ``make()`` when absent (:func:`_keep`)."""
     found = memo.get(key)
-    if found is None:
-        if len(memo) >= MEMO_SIZE:
+    return _keep(memo, key, make()) if found is None else found
+
+
+def _keep(memo: dict, key, value):
+    """``value``, kept as ``memo[key]``; the memo holds at most :data:`MEMO_SIZE` entries, the
+    oldest inserted going first (a sweep of many bodies must not grow it without bound)."""
+    try:
+        while len(memo) >= MEMO_SIZE:
             del memo[next(iter(memo))]
-        found = memo[key] = make()
-    return found
+    except (KeyError, RuntimeError, StopIteration):  # another thread changed it: it is only a memo
+        pass
+    memo[key] = value
+    return value
 
 
 #: Entries kept by each of this module's memos (classifications, plans).
 MEMO_SIZE = 64
 
 
-def integrals_of(scene: Scene) -> list:
-    """``[(name, f(L, n))]``: the extra integral of the scene's integrable case
-    (:func:`derive.symbolic.integrable.integrals_for`; empty for a general body)."""
-    from derive.symbolic.integrable import integrals_for
-
-    return _memo(_INTEGRALS, _integrals_key(scene), lambda: integrals_for(scene))
-
-
 def integral_rows_of(scene: Scene) -> list:
-    """``[(name, formula, values)]``: the integrals of :func:`integrals_of` as their formulas
-    (``formula(L, n, values)``, L and n rows of shape (3, N)) and the scene's numbers, what
-    :func:`derive.symbolic.integrable.integrals_for` wraps."""
+    """``[(name, formula, values)]``: the extra integral of the scene's integrable case (empty
+    for a general body) as its formula, ``formula(L, n, values)`` with L and n rows of shape
+    (3, N) (the layout of the C call's outputs: nothing is converted per run), and the scene's
+    numbers; what :func:`derive.symbolic.integrable.integrals_for` wraps."""
     from derive.symbolic.integrable import classify, parameters
 
     def make():
@@ -159,7 +150,6 @@ def integral_rows_of(scene: Scene) -> list:
     return _memo(_INTEGRAL_ROWS, _integrals_key(scene), make)
 
 
-_INTEGRALS: dict = {}
 _INTEGRAL_ROWS: dict = {}
 
 
@@ -209,20 +199,12 @@ def recent(scene: Scene) -> Plan:
     if kept is not None and _current(kept):
         _PLANS[key] = kept
         return kept
-    pl = make(scene)
-    try:
-        while len(_PLANS) >= MEMO_SIZE:
-            del _PLANS[next(iter(_PLANS))]
-    except (KeyError, RuntimeError, StopIteration):  # another thread changed the memo: it is only a memo
-        pass
-    _PLANS[key] = pl
-    return pl
+    return _keep(_PLANS, key, make(scene))
 
 
 def forget() -> None:
     """Empty the memo of :func:`recent` (and the integrals' memos)."""
     _PLANS.clear()
-    _INTEGRALS.clear()
     _INTEGRAL_ROWS.clear()
 
 

@@ -31,7 +31,7 @@ from derive.symbolic import effects as fx
 from derive.errors import IntegrationError, SceneError
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
-from derive.sim.inputs import (_check_budget, _settings, choose_method, default_step,  # noqa: F401
+from derive.sim.inputs import (AUTO, _check_budget, _settings, choose_method, default_step,  # noqa: F401
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
 from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
 from derive.methods.registry import DEFAULT_METHOD
@@ -147,7 +147,7 @@ _FEW = 32  # samples below which a list beats NumPy's reductions
 def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
     checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
-    integral functions when the caller has them (:attr:`derive.sim.plan.Plan.integrals`)."""
+    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
     views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, _ in OUTPUTS:
@@ -157,12 +157,8 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integ
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
                  model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
-    res.integrals = _integrals(scene, res, p, integrals)
-    for name, values in res.integrals.items():
-        if not _all_finite(values):
-            j = int(np.argwhere(~np.isfinite(values))[0][0])
-            raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "
-                                   f"(overflow: the scene's numbers are out of range)")
+    rows = plan.integral_rows_of(scene) if integrals is None else integrals
+    res.integrals = _integral_arrays(rows, out, t)
     return res
 
 
@@ -174,14 +170,22 @@ def _all_finite(values: np.ndarray) -> bool:
     return bool(np.isfinite(values).all())
 
 
-def _integrals(scene: Scene, res: Result, p, found=None) -> dict:
-    """``integral_<name>`` arrays of the scene's integrable case (none for a general body);
-    ``found``: its integral functions when the caller has them (a plan keeps them)."""
-    found = plan.integrals_of(scene) if found is None else found
-    return {name: np.asarray(fn(res.L, res.n), dtype=float) for name, fn in found}
-
-
-_integrals_of = plan.integrals_of  # its old home
+def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
+    """``integral_<name>`` arrays of the scene's integrable case (none for a general body) from
+    its formulas ``rows`` (:func:`derive.sim.plan.integral_rows_of`) on the L and n rows of the
+    outputs ``out`` (NOBS, n), the formulas' own layout, with NumPy's floating-point errors
+    ignored (:func:`_ignoring`: absurd numbers may overflow there); IntegrationError naming the
+    first non-finite value."""
+    if not rows:
+        return {}
+    L, n = out[_L_ROWS], out[_N_ROWS]
+    found = {name: np.asarray(_ignoring(formula, L, n, values), dtype=float) for name, formula, values in rows}
+    for name, values in found.items():
+        if not _all_finite(values):
+            j = int(np.argwhere(~np.isfinite(values))[0][0])
+            raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "
+                                   f"(overflow: the scene's numbers are out of range)")
+    return found
 
 
 def _clear_of_pole(sin_beta, rtol):
@@ -305,29 +309,18 @@ def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Resu
     out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
     _check_pole(desc, t, out[1], sc.simulate.rtol)
     # SciPy's solver did not check the outputs finite: _result does
-    return _result(desc, out, y, t, sc, pl.method, nfev, p, integrals=pl.integrals)
+    return _result(desc, out, y, t, sc, pl.method, nfev, p, integrals=pl.integral_rows)
 
 
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
                      nfev: int) -> Result:
     """What :func:`_result` gives for outputs the C driver checked finite, built for a short
     call: the views and the fields straight into a new Result's ``__dict__`` (no dataclass
-    ``__init__`` with twenty keywords), the integrals by the plan's formulas on the rows of
-    ``out`` (:attr:`derive.sim.plan.Plan.integral_rows`), with NumPy's floating-point errors
-    ignored (:func:`_ignoring`: absurd numbers may overflow there; the IntegrationError below
-    names it)."""
+    ``__init__`` with twenty keywords), the integrals by the plan's formulas
+    (:func:`_integral_arrays`)."""
     desc = c.desc
     fields = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
-    integrals = {}
-    if pl.integral_rows:
-        L, n = out[_L_ROWS], out[_N_ROWS]  # (3, n): the formulas' own layout
-        for name, formula, values in pl.integral_rows:
-            integrals[name] = np.asarray(_ignoring(formula, L, n, values), dtype=float)
-        for name, found in integrals.items():
-            if not _all_finite(found):
-                j = int(np.argwhere(~np.isfinite(found))[0][0])
-                raise IntegrationError(f"t = {pl.t[j]:.6g}: non-finite integral_{name} in the output "
-                                       f"(overflow: the scene's numbers are out of range)")
+    integrals = _integral_arrays(pl.integral_rows, out, pl.t)
     fields.update(t=pl.t, method=c.method, formulation=desc.formulation, nfev=nfev, model=desc.name,
                   effects=desc.effects, integrals=integrals, state=y, scene=pl.scene)
     res = object.__new__(Result)  # every field is given: what Result(**fields) would make
@@ -454,7 +447,7 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
         for sc in scs:
             _check_budget(sc, method, h)
     candidates = tuple(auto.batch_plan(scs, effects))
-    if first.simulate.method == "auto" and candidates:
+    if first.simulate.method == AUTO and candidates:
         # one method for the batch: the cost model's, for its first scene and first model
         desc = catalogue.describe((candidates[0][0], first.symmetric, effects))
         method = plan.auto_method(first, desc)
