@@ -365,10 +365,10 @@ def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
     _, exprs = _flatten_observables(m.outputs)
     exprs = [sp.sympify(e) for e in exprs]
     states = set(m.states) | {b.t}
-    # A call of a state the step control leaves out (cos γ of the spin) stays a libm call: the
-    # step follows the controlled states, and over it a fast cyclic angle turns by radians,
-    # more than a series of the step's order resolves (measured: such columns failed
-    # outputs_converged on 4 steps out of 5 of the reference top).
+    # A call of a state that feeds nothing back (cos γ of the spin) stays a libm call: the step
+    # control holds such a state to its rate's size only, and over a step a fast angle turns by
+    # radians, more than a series of the step's order resolves (measured: such columns failed
+    # outputs_converged on 85–96 steps of 86–114 of the reference top).
     cyclic = {s for s, c in zip(m.states, controlled_states(m)) if not c}
     calls: list = []
     for e in exprs:
@@ -481,8 +481,9 @@ def jet_weight(spec: KernelSpec) -> float:
 def controlled_states(model) -> tuple[bool, ...]:
     """Per state: True when it feeds something back (appears in a right-hand side or a domain
     guard). A state that appears in none, a cyclic angle such as α or γ, is integrated from the
-    others but left out of the step control's norms: its growth (γ ~ 6 t on the reference top)
-    would loosen the relative tolerance of every other state."""
+    others; the step control holds it to the size of its rate, not of its value (its growth, γ ~
+    6 t on the reference top, would loosen the relative tolerance of every other state), and
+    the outputs take no series of its functions (:func:`_add_outputs`)."""
     free = set()
     for e in list(model.rhs) + list(model.domain):
         free |= sp.sympify(e).free_symbols

@@ -20,9 +20,10 @@ Order and step follow Jorba & Zou, Experiment. Math. 14 (2005) 99, as heyoka doe
 
   so the truncation error ‖y_p‖ hᵖ ≲ S e⁻²ᵖ ≤ e⁻² max(rtol ‖y‖∞, atol) per step.
 
-The norms run over the states that feed something back (a state that appears in no right-hand
-side, a cyclic angle, is integrated but left out of the step control: its growth would loosen the
-relative tolerance of everything else; see :func:`derive.codegen.taylor.controlled_states`).
+S is per state: the states that feed something back are held to their own size; a state that
+feeds nothing back (a cyclic angle, a quadrature; :func:`derive.codegen.taylor.controlled_states`)
+to the size of its rate, max(|y_{i,1}|, atol/rtol): its truncation error is controlled, and its
+growth never loosens the tolerance of everything else.
 
 Driver ``taylor``: its C parameters are ``(rtol, atol, max_steps)``
 (:data:`derive.methods.registry.DRIVER_PARAMS`). The generated C API (``<prefix>_taylor.h``) is
