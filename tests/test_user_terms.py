@@ -456,3 +456,28 @@ def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
         np.testing.assert_array_equal(got[0], expected[0])
     finally:
         catalogue.clear_memory()
+
+
+def test_a_bodys_effects_do_not_depend_on_which_terms_this_process_registered_first():
+    """A term's effect is registered when a scene first names it, so registration order is the
+    process's history; the order of a model's effects (and with it its name, its parameter
+    layout and the first reason a plot gives) must not be: built-in effects first, then the
+    user's terms by kind (potentials, then torques) and content. A fresh process must find the
+    model this one made."""
+    import json
+    import subprocess
+    import sys
+
+    from derive.sim.scene import load_scene
+
+    drive = {"name": "drive", "tau": ["0", "0", "A*cos(w*t)"], "params": {"A": 0.02, "w": 2.0}}
+    load_scene(scene(torque=[drive]))  # the torque's effect registered first, alone
+    sc = scene(potential=[magnet("-mu*B*R13", mu=0.3, B=1.1)], torque=[drive])
+    effects = load_scene(sc).effects
+    kinds = [name.split("_")[0] for name in effects]
+    assert kinds == ["potential", "torque"], effects
+    code = ("import json, sys; from derive.sim.scene import load_scene; "
+            f"print(json.dumps(load_scene(json.loads({json.dumps(json.dumps(sc))})).effects))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert out.returncode == 0, out.stderr
+    assert tuple(json.loads(out.stdout)) == effects

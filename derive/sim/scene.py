@@ -146,11 +146,12 @@ _VIEW: dict[int, _View] = {}
 
 
 def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
-    """The effects named in ``chosen``, in registry order (memoised per registry version)."""
+    """The effects named in ``chosen``, in registry order (:func:`effects.ordered`; memoised
+    per registry version)."""
     order = _registry_view().order
     names = order.get(chosen)
     if names is None:
-        names = order[chosen] = tuple(name for name in effects.REGISTRY if name in chosen)
+        names = order[chosen] = effects.ordered(chosen)
     return names
 
 

@@ -276,14 +276,25 @@ def for_table(table: str, values: dict) -> Effect:
     raise ValueError(f"no effect claims the values of [{table}]")
 
 
-def lookup(names) -> tuple[Effect, ...]:
-    """The effects named, in registry order (so a model's parameter layout does not depend on
-    the order a scene lists them in)."""
+def ordered(names) -> tuple[str, ...]:
+    """The effects named, in registry order: the built-in (and registered) tables' effects in
+    the order they were registered, then the user's terms by kind (``USER_TABLES``) and name
+    (a digest of their content). So a model's effects, its name and its parameter layout depend
+    neither on the order a scene lists them in nor on which user terms this process registered
+    first (a second process, registering the scene's terms afresh, finds the same model)."""
     unknown = [n for n in names if n not in REGISTRY]
     if unknown:
         raise KeyError(f"unknown effect {unknown[0]!r} (known: {', '.join(REGISTRY)})")
     wanted = set(names)
-    return tuple(e for n, e in REGISTRY.items() if n in wanted)
+    tables = [n for n, e in REGISTRY.items() if n in wanted and e.table not in USER_TABLES]
+    users = sorted((n for n in wanted if REGISTRY[n].table in USER_TABLES),
+                   key=lambda n: (USER_TABLES.index(REGISTRY[n].table), n))
+    return tuple(tables + users)
+
+
+def lookup(names) -> tuple[Effect, ...]:
+    """The effects named, in registry order (:func:`ordered`)."""
+    return tuple(REGISTRY[n] for n in ordered(names))
 
 
 # ---------------------------------------------------------------------------------------------
