@@ -184,7 +184,7 @@ RULES = [
      "at least 100 machine epsilons"),
     ("atol zero", [("simulate.atol", 0.0)], "simulate.atol", "positive"),
     ("unknown formulation", [("simulate.formulation", "lagrangian")], "simulate.formulation",
-     "expected one of auto, euler-angles, reduced, reduced-u, quaternion, euler-poisson"),
+     "expected one of auto, reduced-u, euler-angles, reduced, quaternion, euler-poisson"),
     ("h not positive", [("simulate.method", "rk4"), ("simulate.h", -0.1)], "simulate.h",
      "positive"),
     ("h with an adaptive method", [("simulate.method", "dop853"), ("simulate.h", 0.1)],

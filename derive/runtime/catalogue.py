@@ -201,6 +201,15 @@ def _read_plain(path: Path) -> bytes:
         os.close(fd)
 
 
+def shipped(key) -> Description | None:
+    """The description of a model the package ships in generated/ (the same on every machine
+    and in every process, whatever the cache holds), else None."""
+    key = _norm(key)
+    if (_generated() / "models" / f"{model_name(*key)}.json").is_file():
+        return describe(key)
+    return None
+
+
 def available(key) -> Description | None:
     """The description if it exists already (generated/ or the cache), without deriving."""
     key = _norm(key)

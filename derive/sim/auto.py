@@ -3,8 +3,9 @@
 1. The candidates are the registry's formulations whose ``applicable(scene)`` has no objection.
 2. They are tried in order of cost: the weighted operation count of the generated right-hand
    side plus the stepper's work per state component (``cost`` in the model's description), for
-   the models already generated or cached; a model that would have to be derived first is tried
-   after those, in registry order (choosing must not cost a derivation).
+   the models the package ships (generated/; never the cache's, so the choice does not depend
+   on what was derived before); the others after those, in registry order, which lists the
+   formulations cheapest first for a typical body (choosing must not cost a derivation).
 3. A formulation with a singular set (sin β = 0) is taken only when the derived β range keeps
    clear of it: the model's compiled ``checks`` (run by the simulate driver itself, before it
    integrates: ``<name>_simulate_checked_<method>``) evaluate the Routh polynomial
@@ -28,8 +29,10 @@ from derive.sim.inputs import choose_method, inputs_of, params_of
 
 
 def _known_cost(key) -> float | None:
-    """The cost of a model whose description exists without deriving anything, else None."""
-    desc = catalogue.available(key)
+    """The cost of a model the package ships (generated/), else None: not the cache's, so that
+    the order, and with it the formulation a scene runs, is the same in every process and on
+    every machine whatever was derived before."""
+    desc = catalogue.shipped(key)
     return None if desc is None else desc.cost
 
 
