@@ -137,15 +137,18 @@ MEMO_SIZE = 64
 
 
 def integral_rows_of(scene: Scene) -> list:
-    """``[(name, formula, values)]``: the extra integral of the scene's integrable case (empty
-    for a general body) as its formula, ``formula(L, n, values)`` with L and n rows of shape
-    (3, N) (the layout of the C call's outputs: nothing is converted per run), and the scene's
-    numbers; what :func:`derive.symbolic.integrable.integrals_for` wraps."""
+    """``[(name, formula, values, component)]``: the extra integral of the scene's integrable
+    case (empty for a general body) as its formula, ``formula(L, n, values)`` with L and n rows
+    of shape (3, N) (the layout of the C call's outputs: nothing is converted per run), the
+    scene's numbers, and the component of L it is when it is one (else None; see
+    :attr:`derive.symbolic.integrable.Integral.component`); what
+    :func:`derive.symbolic.integrable.integrals_for` wraps."""
     from derive.symbolic.integrable import classify, parameters
 
     def make():
         integral = classify(scene).extra
-        return [] if integral is None else [(integral.name, integral.formula, parameters(scene))]
+        return [] if integral is None else [(integral.name, integral.formula, parameters(scene),
+                                             integral.component)]
 
     return _memo(_INTEGRAL_ROWS, _integrals_key(scene), make)
 

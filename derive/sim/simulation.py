@@ -179,8 +179,12 @@ def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
     if not rows:
         return {}
     L, n = out[_L_ROWS], out[_N_ROWS]
-    found = {name: np.asarray(_ignoring(formula, L, n, values), dtype=float) for name, formula, values in rows}
-    for name, values in found.items():
+    found = {}
+    for name, formula, values, component in rows:
+        if component is not None:  # L's own component: a copy of the row, finite as L was checked
+            found[name] = L[component].copy()
+            continue
+        found[name] = values = np.asarray(_ignoring(formula, L, n, values), dtype=float)
         if not _all_finite(values):
             j = int(np.argwhere(~np.isfinite(values))[0][0])
             raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "

@@ -139,7 +139,9 @@ class Integral:
     ``expression`` (the JSON contract's), its LaTeX, and ``formula(L, n, p)``; ``on`` names the
     level set it is conserved on ("L.n = 0"), if any; ``relations`` the parameter relations of
     its proof when they are not its case's; ``unit`` its SI unit (ASCII, "1" dimensionless);
-    ``meaning`` what it is, in words (the generated outputs.md)."""
+    ``meaning`` what it is, in words (the generated outputs.md); ``component`` k when the
+    integral is L's component k (0-based, the formulas' axes) and nothing else, so that a run
+    takes it from its L output, already computed and checked, without evaluating ``formula``."""
 
     name: str
     expression: str
@@ -149,6 +151,7 @@ class Integral:
     relations: dict | None = None  # for its proof, instead of its case's RELATIONS
     unit: str = "1"
     meaning: str = ""
+    component: int | None = None
 
 
 ENERGY = Integral("energy", "E = (L1^2/I1 + L2^2/I2 + L3^2/I3)/2 + M g (n . r_c)",
@@ -178,7 +181,7 @@ EXTRA = {
                               "case euler); never a component"),
     "lagrange": Integral("L_3", "L3 = I3 omega3 = p_gamma",
                          r"L_3 = I_3\tilde\omega_3 = p_\gamma", _L3, unit="kg m^2 s^-1",
-                         meaning=_lagrange_meaning(3)),
+                         meaning=_lagrange_meaning(3), component=2),
     "kovalevskaya": Integral(
         "kovalevskaya",
         "K = (w1^2 - w2^2 - (M g/I3)(cx n1 - cy n2))^2 + (2 w1 w2 - (M g/I3)(cx n2 + cy n1))^2, "
@@ -238,7 +241,8 @@ def relabelled(integral: Integral, axes) -> Integral:
     return Integral(name, f"{integral.expression} [axes 1, 2, 3 of this formula = body axes {body}]",
                     rf"{integral.latex}\quad[(1, 2, 3) \to \text{{body axes }} ({body})]", f,
                     on=integral.on, relations=integral.relations, unit=integral.unit,
-                    meaning=meaning)
+                    meaning=meaning,
+                    component=None if integral.component is None else axes[integral.component])
 
 
 @dataclass(frozen=True)

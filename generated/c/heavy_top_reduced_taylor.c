@@ -313,20 +313,20 @@ static int derive_heavy_top_reduced_taylor_times_ok(const double *t_out, long n_
 }
 #endif
 
-/* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1. */
+/* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
+ * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_heavy_top_reduced_taylor_eval(double u[][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
 {
-    double s;
-    int i, j, bad = -1;
-    for (i = 0; i < heavy_top_reduced_NY; ++i) {
-        s = u[i][order];
-        for (j = order - 1; j >= 0; --j)
-            s = s * tau + u[i][j];
-        v[i] = s;
-        if (bad < 0 && !isfinite(s))
-            bad = i;
-    }
-    return bad;
+    int i, j;
+    for (i = 0; i < heavy_top_reduced_NY; ++i)
+        v[i] = u[i][order];
+    for (j = order - 1; j >= 0; --j)
+        for (i = 0; i < heavy_top_reduced_NY; ++i)
+            v[i] = v[i] * tau + u[i][j];
+    for (i = 0; i < heavy_top_reduced_NY; ++i)
+        if (!isfinite(v[i]))
+            return i;
+    return -1;
 }
 
 /* ======================================================================================== */
@@ -457,13 +457,9 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
                         return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                 memcpy(y_out + k_out * heavy_top_reduced_NY, v, sizeof y);
 #ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
-                if (!series) {  /* the output map on the state, as the other methods do */
+                if (!series)  /* the output map on the state, as the other methods do */
                     heavy_top_reduced_observables(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
-                    ++k_out;
-                    continue;
-                }
+                else
 #endif
                 derive_heavy_top_reduced_taylor_outputs_pointwise(t_out[k_out], v, p, o);
                 for (j = 0; j < 18; ++j)

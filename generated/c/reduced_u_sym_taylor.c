@@ -250,20 +250,20 @@ static int derive_reduced_u_sym_taylor_times_ok(const double *t_out, long n_out)
 }
 #endif
 
-/* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1. */
+/* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
+ * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_reduced_u_sym_taylor_eval(double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
 {
-    double s;
-    int i, j, bad = -1;
-    for (i = 0; i < reduced_u_sym_NY; ++i) {
-        s = u[i][order];
-        for (j = order - 1; j >= 0; --j)
-            s = s * tau + u[i][j];
-        v[i] = s;
-        if (bad < 0 && !isfinite(s))
-            bad = i;
-    }
-    return bad;
+    int i, j;
+    for (i = 0; i < reduced_u_sym_NY; ++i)
+        v[i] = u[i][order];
+    for (j = order - 1; j >= 0; --j)
+        for (i = 0; i < reduced_u_sym_NY; ++i)
+            v[i] = v[i] * tau + u[i][j];
+    for (i = 0; i < reduced_u_sym_NY; ++i)
+        if (!isfinite(v[i]))
+            return i;
+    return -1;
 }
 
 /* ======================================================================================== */
@@ -394,13 +394,9 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
                         return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                 memcpy(y_out + k_out * reduced_u_sym_NY, v, sizeof y);
 #ifdef DERIVE_REDUCED_U_SYM_SIMULATE
-                if (!series) {  /* the output map on the state, as the other methods do */
+                if (!series)  /* the output map on the state, as the other methods do */
                     reduced_u_sym_observables(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
-                    ++k_out;
-                    continue;
-                }
+                else
 #endif
                 derive_reduced_u_sym_taylor_outputs_pointwise(t_out[k_out], v, p, o);
                 for (j = 0; j < 18; ++j)
