@@ -387,6 +387,11 @@ static void derive_reduced_u_sym_gravity_add_block(double *m, int n, int bi, int
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853) || defined(DERIVE_WITH_DOP853_FIXED)
 
+/* The explicit step without gcc's vectorisers (templates/c/novectorize.j2). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize ("no-tree-vectorize")
+#endif
 /* One explicit step of tableau "dop853" (for dop853, dop853_fixed): on entry
  * k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -488,8 +493,16 @@ static int derive_reduced_u_sym_gravity_dop853_step(double t, double h, const do
         y_new[i] = y[i] + h * (0.054293734116568765 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] + 0.3111643669578199 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.04471061572777259 * k[11][i]);
     return 0;
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
+/* The error norm without gcc's vectorisers (templates/c/novectorize.j2). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize ("no-tree-vectorize")
+#endif
 
 /* Error norm of the embedded estimate, scaled by sk_i = atol + rtol*max(|y_i|, |y_new_i|).
  * Hairer's DOP853 combination of the 5th- and 3rd-order estimates:
@@ -512,6 +525,9 @@ static double derive_reduced_u_sym_gravity_dop853_error(double h, const double *
         deno = 1.0;
     return fabs(h) * e1 * sqrt(1.0 / (reduced_u_sym_gravity_NY * deno));
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 
 /* The dense output (dop853, order 7) of the accepted step (t, h) from y to y_new: its
  * extra stages (k[0..12] given), then the coefficients cont of the degree-7 polynomial in
@@ -782,6 +798,11 @@ int reduced_u_sym_gravity_simulate_batch_dop853(long n_batch, const double *ins,
  * library: a first run compiles only what it uses). */
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
 
+/* The explicit step without gcc's vectorisers (templates/c/novectorize.j2). */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC push_options
+#pragma GCC optimize ("no-tree-vectorize")
+#endif
 /* One explicit step of tableau "rk4" (for rk4): on entry
  * k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
@@ -819,6 +840,9 @@ static int derive_reduced_u_sym_gravity_rk4_step(double t, double h, const doubl
         y_new[i] = y[i] + h * (0.16666666666666666 * k[0][i] + 0.3333333333333333 * k[1][i] + 0.3333333333333333 * k[2][i] + 0.16666666666666666 * k[3][i]);
     return 0;
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC pop_options
+#endif
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4)
 
