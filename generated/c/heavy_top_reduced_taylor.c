@@ -533,27 +533,13 @@ static int derive_heavy_top_reduced_taylor_solve_outputs_taylor(const double *y0
         const double *t_out, long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
         derive_stats *st)
 {
-    long i, k, n = n_out * heavy_top_reduced_NOBS;
-    int j, bad = 0;
     int rc = derive_heavy_top_reduced_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, n_out > 1 ? out : NULL, st);
     if (rc != DERIVE_OK)
         return rc;
     if (n_out == 1)
         return heavy_top_reduced_outputs_checked(n_out, t_out, y_out, p, out, st);
     derive_heavy_top_reduced_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
-    for (i = 0; i < n; ++i)
-        bad |= !(fabs(out[i]) <= DBL_MAX);
-    if (!bad)
-        return DERIVE_OK;
-    for (k = 0; k < n_out; ++k)
-        for (j = 0; j < heavy_top_reduced_NOBS; ++j)
-            if (!(fabs(out[j * n_out + k]) <= DBL_MAX)) {
-                st->status = DERIVE_NONFINITE_OUTPUT;
-                st->t_fail = t_out[k];
-                st->fail_index = j;
-                return DERIVE_NONFINITE_OUTPUT;
-            }
-    return DERIVE_OK;
+    return heavy_top_reduced_outputs_finite(n_out, t_out, out, st);  /* (the bit test: ~3x a comparison's speed) */
 }
 
 /* The whole-simulation drivers (init map, solve with the outputs), the other methods' own. */
