@@ -32,6 +32,7 @@ and only deriving a model calls ``potential``/``torque``.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
@@ -281,7 +282,13 @@ def ordered(names) -> tuple[str, ...]:
     the order they were registered, then the user's terms by kind (``USER_TABLES``) and name
     (a digest of their content). So a model's effects, its name and its parameter layout depend
     neither on the order a scene lists them in nor on which user terms this process registered
-    first (a second process, registering the scene's terms afresh, finds the same model)."""
+    first (a second process, registering the scene's terms afresh, finds the same model).
+    Cached per registry version (every plan asks it for each candidate formulation)."""
+    return _ordered(tuple(names), VERSION[0])
+
+
+@functools.lru_cache(maxsize=512)
+def _ordered(names: tuple, version: int) -> tuple[str, ...]:
     unknown = [n for n in names if n not in REGISTRY]
     if unknown:
         raise KeyError(f"unknown effect {unknown[0]!r} (known: {', '.join(REGISTRY)})")
