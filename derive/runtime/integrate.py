@@ -375,6 +375,7 @@ class ModelKernel:
         vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
+        self._sim_final = None
         if method is not None:
             spec = compiled_method(method)
             extra = [_C_TYPES[ty] for ty, _ in spec.params]
@@ -386,6 +387,10 @@ class ModelKernel:
             self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
+            # the final-only batch (a splitting method has none: its batches take the full grid)
+            self._sim_final = (self._fn(f"{p}_simulate_final_batch_{method}",
+                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+                               if hasattr(lib, f"{p}_simulate_final_batch_{method}") else None)
             self._guard = _interruptible(lib, p)
             if self._guard is not None:
                 self._guard.argtypes = [ci]
@@ -503,6 +508,51 @@ class ModelKernel:
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
+                   _ptr(y), _ptr(out), _ptr(st))
+        return out, y, ps, st[:nb]
+
+    @property
+    def has_final(self) -> bool:
+        """Whether the library holds the final-only batch driver (:meth:`simulate_final_batch`)."""
+        return self._sim_final is not None
+
+    def simulate_final_batch(self, inputs, ps, t, args, pole_check: int = 0):
+        """N trajectories integrated straight to ``t[-1]``, the last sample only.
+
+        The C driver ``<name>_simulate_final_batch_<method>``: the same steps as
+        :meth:`simulate_batch` (its interior samples are dense output), no output map but at the
+        end, and the angles of that one sample made canonical alone (β's range, no unwrapping
+        from the samples before: for formulations whose α, γ are states, see
+        :attr:`derive.symbolic.formulations.Formulation.angle_states`).
+
+        Parameters
+        ----------
+        inputs : ndarray, shape (N, NIN)
+            The init map's inputs per trajectory.
+        ps : ndarray, shape (N, NP)
+            The parameter vectors (copied; the copy gets the derived parameters).
+        t : ndarray
+            The output times of the full grid (its first and last are used, the rest checked).
+        args : list
+            The driver's arguments (:meth:`driver_args`).
+        pole_check : int
+            0, 1 or 2, as for :meth:`simulate_batch` (the first refusal stops the batch).
+
+        Returns
+        -------
+        tuple
+            (out (N, NOBS), y (N, NY), ps, stats (N,)).
+        """
+        if self._sim_final is None:
+            raise ValueError(f"{self.desc.name}: method {self.method!r} has no final-only batch driver")
+        nb = inputs.shape[0]
+        out = np.empty((nb, self.nout))
+        y = np.empty((nb, self.ny))
+        ps = np.array(ps, dtype=np.float64, order="C")
+        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+        t = np.ascontiguousarray(t, dtype=np.float64)
+        self._call(self._sim_final, nb, _ptr(inputs), _ptr(ps), _ptr(t), t.shape[0], *args, pole_check,
                    _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
 

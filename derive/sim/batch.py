@@ -13,6 +13,18 @@ and reused, and only what was asked for is copied out of them into the arrays re
 The numbers are bit for bit those of the full batch (the same C call per trajectory; a chunk
 changes nothing a trajectory computes). No Result per trajectory: one :class:`BatchResult`.
 
+With ``"final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
+that loses no accuracy near a pole (no ``pole_loss``: its pole check needs β at every sample),
+no sample but the last is made: the driver ``<model>_simulate_final_batch_<method>`` integrates
+each trajectory straight to the end (the same steps: the interior samples of the full grid are
+dense output; adaptive methods only: a fixed-step driver splits each output interval, so the
+samples set its steps) and maps the last state alone; the angles of that one sample get β's canonical
+range, without the unwrapping from the samples before (which for continuous α, γ moves nothing
+in the usual case). Its numbers are then the full batch's last sample bit for bit wherever that
+unwrapping did not fire; ``nfev`` counts no dense-output evaluations. The other formulations
+(angles from atan2, unwrapped along the samples) take the full grid. ``BatchResult.driver``
+says which ran.
+
 Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
 """
 from __future__ import annotations
@@ -24,7 +36,7 @@ import numpy as np
 from derive.errors import IntegrationError, SceneError
 from derive.methods.status import Status
 from derive.sim import simulation
-from derive.symbolic.formulations import OUTPUTS
+from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
 #: per some tens of trajectories), small enough to stay in the caches.
@@ -54,6 +66,11 @@ class BatchResult:
         Right-hand-side evaluations per trajectory.
     method, formulation, model : str
         What ran (one model for the whole batch).
+    effects : tuple
+        The effects of the model.
+    driver : str
+        The compiled batch driver that ran: ``"full"`` (every sample, kept or not) or
+        ``"final"`` (straight to the end, the last sample only).
     """
 
     outputs: dict
@@ -64,6 +81,7 @@ class BatchResult:
     formulation: str
     model: str
     effects: tuple = field(default=())
+    driver: str = "full"
 
     def __len__(self) -> int:
         return len(self.nfev)
@@ -104,12 +122,41 @@ def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
         return None
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
-        refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+        driver = "final" if final and final_only(desc, kernel) else "full"
+        run = _run_final if driver == "final" else _run
+        refused, arrays, nfev = run(bp, desc, kernel, args, pole_check, final, names)
         if not refused:
             break
     else:  # every candidate refused a start: the last one's refusal, named as the full batch names it
         bp.raise_failure(desc, arrays, offset=nfev)
-    return BatchResult(arrays, bp.t, final, nfev, bp.method, desc.formulation, desc.name, desc.effects)
+    return BatchResult(arrays, bp.t, final, nfev, bp.method, desc.formulation, desc.name, desc.effects,
+                       driver)
+
+
+def final_only(desc, kernel) -> bool:
+    """Whether a batch keeping the last sample only may skip the others (see the module): the
+    formulation's α, γ are states, its pole check needs no β along the way, the method steps by
+    its tolerance (a fixed-step driver splits each output interval: the samples set its steps)
+    and the kernel holds the driver."""
+    f = REGISTRY[desc.formulation]
+    return f.angle_states and not f.pole_loss and kernel.adaptive and kernel.has_final
+
+
+def _run_final(bp, desc, kernel, args, pole_check, final, names):
+    """The final-only driver over the whole batch (its arrays are N rows: no chunks), with
+    :func:`_run`'s results."""
+    out, y, _, st = kernel.simulate_final_batch(bp.inputs, bp.params(desc), bp.t, args, pole_check)
+    if (st["status"] == _RANGE).any():
+        return True, st, 0
+    bp.raise_failure(desc, st)
+    arrays = {}
+    for name in names:
+        if name == "state":
+            arrays[name] = y
+            continue
+        o, width = _OFFSET[name], _WIDTH[name]
+        arrays[name] = out[:, o].copy() if width == 1 else out[:, o:o + width].copy()
+    return False, arrays, st["nfev"].astype(np.int64)
 
 
 def _run(bp, desc, kernel, args, pole_check, final, names):

@@ -538,3 +538,77 @@ int euler_poisson_sym_simulate_batch_taylor(long n_batch, const double *ins, dou
     return status;
 }
 #endif /* SIMULATE */
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
+
+/* The final-only solve of taylor: the scalar solver over the m <= 2 times t2, its outputs
+ * from the series as the full grid's last sample has them (the same last step, the same
+ * series), made canonical as a single sample (beta's range; see final_one below). */
+static int derive_euler_poisson_sym_taylor_final_outputs_taylor(const double *y0, const double *p, const double *t2,
+        long m, double rtol, double atol, long max_steps, double *y2, double *y, double *out, derive_stats *st)
+{
+    double o2[2 * euler_poisson_sym_NOBS];
+    int j, rc;
+    if (m == 1) {
+        rc = derive_euler_poisson_sym_taylor_solve_taylor(y0, p, t2, 1, rtol, atol, max_steps, y2, NULL, st);
+        memcpy(y, y2, sizeof(double) * euler_poisson_sym_NY);
+        return rc != DERIVE_OK ? rc : euler_poisson_sym_outputs_checked(1, t2, y, p, out, st);
+    }
+    rc = derive_euler_poisson_sym_taylor_solve_taylor(y0, p, t2, 2, rtol, atol, max_steps, y2, o2, st);
+    memcpy(y, y2 + euler_poisson_sym_NY, sizeof(double) * euler_poisson_sym_NY);
+    if (rc != DERIVE_OK)
+        return rc;
+    for (j = 0; j < euler_poisson_sym_NOBS; ++j)
+        out[j] = o2[2 * j + 1];
+    derive_euler_poisson_sym_canonical_angles(1, out, out + 1, out + 2);
+    return euler_poisson_sym_outputs_finite(1, t2 + 1, out, st);
+}
+/* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
+ * the end only. The steps are those of the full grid's solve (its interior samples are dense
+ * output, which never changes a step), so the last state is bit for bit the full grid's last
+ * sample; only the angles' unwrapping from sample to sample is left out, which for a model whose
+ * alpha and gamma are states (continuous) moves the last sample by nothing in the usual case:
+ * the single sample gets beta's canonical range alone (euler_poisson_sym_outputs_checked of one sample). */
+static int derive_euler_poisson_sym_final_one_taylor(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y, double *out, derive_stats *st)
+{
+    double t2[2], y2[2 * euler_poisson_sym_NY];
+    long m = n_out > 1 ? 2 : 1;
+    int rc;
+    t2[0] = t_out[0];
+    t2[1] = t_out[n_out - 1];
+    if (euler_poisson_sym_init(in, p, y2)) {
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y2, euler_poisson_sym_NY));
+    }
+    if (pole_check && !euler_poisson_sym_pole_clear(y2, p, pole_check)) {
+        derive_euler_poisson_sym_stats_init(st);
+        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
+    }
+    rc = derive_euler_poisson_sym_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
+    return rc;
+}
+
+int euler_poisson_sym_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        if (!derive_euler_poisson_sym_taylor_times_ok(t_out, n_out)) {
+            derive_euler_poisson_sym_stats_init(st + b);
+            rc = derive_euler_poisson_sym_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        } else {
+            rc = derive_euler_poisson_sym_final_one_taylor(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out, n_out,
+                    rtol, atol, max_steps, pole_check, y_final + b * euler_poisson_sym_NY, out_final + b * euler_poisson_sym_NOBS, st + b);
+        }
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
+    }
+    return status;
+}
+#endif /* SIMULATE */
