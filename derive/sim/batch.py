@@ -22,8 +22,11 @@ samples set its steps) and maps the last state alone; the angles of that one sam
 range, without the unwrapping from the samples before (which for continuous α, γ moves nothing
 in the usual case). Its numbers are then the full batch's last sample bit for bit wherever that
 unwrapping did not fire; ``nfev`` counts no dense-output evaluations. The other formulations
-(angles from atan2, unwrapped along the samples) take the full grid. ``BatchResult.driver``
-says which ran.
+(angles from atan2, unwrapped along the samples) take the full grid. A Taylor method's
+final-only batch runs its lanes driver (``<model>_simulate_lanes_batch_<method>``, in a library
+built for this CPU's vector width: W trajectories at once, each lane its own steps), whose
+numbers, statuses and statistics are the scalar final-only driver's bit for bit.
+``BatchResult.driver`` says which ran.
 
 Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
 """
@@ -35,6 +38,7 @@ import numpy as np
 
 from derive.errors import IntegrationError, SceneError
 from derive.methods.status import Status
+from derive.runtime.integrate import ModelKernel
 from derive.sim import simulation
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
@@ -69,8 +73,9 @@ class BatchResult:
     effects : tuple
         The effects of the model.
     driver : str
-        The compiled batch driver that ran: ``"full"`` (every sample, kept or not) or
-        ``"final"`` (straight to the end, the last sample only).
+        The compiled batch driver that ran: ``"full"`` (every sample, kept or not),
+        ``"final"`` (straight to the end, the last sample only) or ``"lanes"`` (that, a Taylor
+        method's trajectories several at a time: ``<model>_simulate_lanes_batch_<method>``).
     """
 
     outputs: dict
@@ -122,9 +127,15 @@ def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
         return None
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
-        driver = "final" if final and final_only(desc, kernel) else "full"
-        run = _run_final if driver == "final" else _run
-        refused, arrays, nfev = run(bp, desc, kernel, args, pole_check, final, names)
+        driver = "full"
+        if final and final_only(desc, kernel):
+            driver = "final"
+            if kernel.lanes:  # a Taylor method: its lanes, built for this CPU's vector width
+                driver, kernel = "lanes", ModelKernel.load(desc, bp.method, native=True)
+        if driver == "full":
+            refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+        else:
+            refused, arrays, nfev = _run_final(bp, desc, kernel, args, pole_check, driver, names)
         if not refused:
             break
     else:  # every candidate refused a start: the last one's refusal, named as the full batch names it
@@ -142,10 +153,11 @@ def final_only(desc, kernel) -> bool:
     return f.angle_states and not f.pole_loss and kernel.adaptive and kernel.has_final
 
 
-def _run_final(bp, desc, kernel, args, pole_check, final, names):
-    """The final-only driver over the whole batch (its arrays are N rows: no chunks), with
-    :func:`_run`'s results."""
-    out, y, _, st = kernel.simulate_final_batch(bp.inputs, bp.params(desc), bp.t, args, pole_check)
+def _run_final(bp, desc, kernel, args, pole_check, driver, names):
+    """The final-only driver (``driver`` "final") or the lanes driver ("lanes") over the whole
+    batch (its arrays are N rows: no chunks), with :func:`_run`'s results."""
+    call = kernel.simulate_lanes_batch if driver == "lanes" else kernel.simulate_final_batch
+    out, y, _, st = call(bp.inputs, bp.params(desc), bp.t, args, pole_check)
     if (st["status"] == _RANGE).any():
         return True, st, 0
     bp.raise_failure(desc, st)
