@@ -669,7 +669,7 @@ int euler_angles_sym_simulate_final_batch_taylor(long n_batch, const double *ins
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int euler_angles_sym_taylor_lanes = DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES;
 
-static void derive_euler_angles_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
+static inline void derive_euler_angles_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -682,7 +682,7 @@ static void derive_euler_angles_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_EUL
         u[lane_] = s[lane_];
 }
 
-static void derive_euler_angles_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
+static inline void derive_euler_angles_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -700,7 +700,7 @@ static void derive_euler_angles_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_EUL
         u[lane_] = s[lane_];
 }
 
-static void derive_euler_angles_sym_taylor_tcl_div(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*q)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
+static inline void derive_euler_angles_sym_taylor_tcl_div(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*q)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
 {
     double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -722,7 +722,7 @@ static void derive_euler_angles_sym_taylor_tcl_div(int n, double (*a)[DERIVE_EUL
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
 #endif
-static void derive_euler_angles_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*s)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*c)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
+static inline void derive_euler_angles_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*s)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*c)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
 {
     double ss[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], cc[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], ja[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
     int j, lane_;

@@ -573,7 +573,7 @@ int euler_free_simulate_final_batch_taylor(long n_batch, const double *ins, doub
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int euler_free_taylor_lanes = DERIVE_EULER_FREE_TAYLOR_LANES;
 
-static void derive_euler_free_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_FREE_TAYLOR_LANES], double (*b)[DERIVE_EULER_FREE_TAYLOR_LANES], double *u)
+static inline void derive_euler_free_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_FREE_TAYLOR_LANES], double (*b)[DERIVE_EULER_FREE_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_EULER_FREE_TAYLOR_LANES];
     int j, lane_;

@@ -666,7 +666,7 @@ int euler_poisson_asym_gravity_general_simulate_final_batch_taylor(long n_batch,
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int euler_poisson_asym_gravity_general_taylor_lanes = DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES;
 
-static void derive_euler_poisson_asym_gravity_general_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES], double (*b)[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES], double *u)
+static inline void derive_euler_poisson_asym_gravity_general_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES], double (*b)[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES];
     int j, lane_;

@@ -691,7 +691,7 @@ int heavy_top_reduced_simulate_final_batch_taylor(long n_batch, const double *in
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int heavy_top_reduced_taylor_lanes = DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES;
 
-static void derive_heavy_top_reduced_taylor_tcl_mul(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*b)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double *u)
+static inline void derive_heavy_top_reduced_taylor_tcl_mul(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*b)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     int j, lane_;
@@ -704,7 +704,7 @@ static void derive_heavy_top_reduced_taylor_tcl_mul(int n, double (*a)[DERIVE_HE
         u[lane_] = s[lane_];
 }
 
-static void derive_heavy_top_reduced_taylor_tcl_sqr(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double *u)
+static inline void derive_heavy_top_reduced_taylor_tcl_sqr(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     int j, lane_;
@@ -722,7 +722,7 @@ static void derive_heavy_top_reduced_taylor_tcl_sqr(int n, double (*a)[DERIVE_HE
         u[lane_] = s[lane_];
 }
 
-static void derive_heavy_top_reduced_taylor_tcl_div(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*b)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*q)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES])
+static inline void derive_heavy_top_reduced_taylor_tcl_div(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*b)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*q)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES])
 {
     double s[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     int j, lane_;
@@ -744,7 +744,7 @@ static void derive_heavy_top_reduced_taylor_tcl_div(int n, double (*a)[DERIVE_HE
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
 #endif
-static void derive_heavy_top_reduced_taylor_tcl_sincos(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*s)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*c)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES])
+static inline void derive_heavy_top_reduced_taylor_tcl_sincos(int n, double (*a)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*s)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], double (*c)[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES])
 {
     double ss[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], cc[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], ja[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     int j, lane_;

@@ -684,7 +684,7 @@ int reduced_sym_simulate_final_batch_taylor(long n_batch, const double *ins, dou
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int reduced_sym_taylor_lanes = DERIVE_REDUCED_SYM_TAYLOR_LANES;
 
-static void derive_reduced_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double *u)
+static inline void derive_reduced_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_REDUCED_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -697,7 +697,7 @@ static void derive_reduced_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_
         u[lane_] = s[lane_];
 }
 
-static void derive_reduced_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double *u)
+static inline void derive_reduced_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_REDUCED_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -715,7 +715,7 @@ static void derive_reduced_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_REDUCED_
         u[lane_] = s[lane_];
 }
 
-static void derive_reduced_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_SYM_TAYLOR_LANES])
+static inline void derive_reduced_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_SYM_TAYLOR_LANES])
 {
     double s[DERIVE_REDUCED_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -737,7 +737,7 @@ static void derive_reduced_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
 #endif
-static void derive_reduced_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*s)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*c)[DERIVE_REDUCED_SYM_TAYLOR_LANES])
+static inline void derive_reduced_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*s)[DERIVE_REDUCED_SYM_TAYLOR_LANES], double (*c)[DERIVE_REDUCED_SYM_TAYLOR_LANES])
 {
     double ss[DERIVE_REDUCED_SYM_TAYLOR_LANES], cc[DERIVE_REDUCED_SYM_TAYLOR_LANES], ja[DERIVE_REDUCED_SYM_TAYLOR_LANES];
     int j, lane_;

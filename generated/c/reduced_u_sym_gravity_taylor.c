@@ -638,7 +638,7 @@ int reduced_u_sym_gravity_simulate_final_batch_taylor(long n_batch, const double
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int reduced_u_sym_gravity_taylor_lanes = DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES;
 
-static void derive_reduced_u_sym_gravity_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double *u)
+static inline void derive_reduced_u_sym_gravity_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
     int j, lane_;
@@ -651,7 +651,7 @@ static void derive_reduced_u_sym_gravity_taylor_tcl_mul(int n, double (*a)[DERIV
         u[lane_] = s[lane_];
 }
 
-static void derive_reduced_u_sym_gravity_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES])
+static inline void derive_reduced_u_sym_gravity_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES])
 {
     double s[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
     int j, lane_;

@@ -628,7 +628,7 @@ int reduced_u_sym_simulate_final_batch_taylor(long n_batch, const double *ins, d
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int reduced_u_sym_taylor_lanes = DERIVE_REDUCED_U_SYM_TAYLOR_LANES;
 
-static void derive_reduced_u_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double *u)
+static inline void derive_reduced_u_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
     int j, lane_;
@@ -641,7 +641,7 @@ static void derive_reduced_u_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCE
         u[lane_] = s[lane_];
 }
 
-static void derive_reduced_u_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES])
+static inline void derive_reduced_u_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES])
 {
     double s[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
     int j, lane_;

@@ -732,7 +732,7 @@ int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, doub
 /* The number of lanes this library was compiled with (a benchmark reports it). */
 const int rigid_body_taylor_lanes = DERIVE_RIGID_BODY_TAYLOR_LANES;
 
-static void derive_rigid_body_taylor_tcl_mul(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*b)[DERIVE_RIGID_BODY_TAYLOR_LANES], double *u)
+static inline void derive_rigid_body_taylor_tcl_mul(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*b)[DERIVE_RIGID_BODY_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_RIGID_BODY_TAYLOR_LANES];
     int j, lane_;
@@ -745,7 +745,7 @@ static void derive_rigid_body_taylor_tcl_mul(int n, double (*a)[DERIVE_RIGID_BOD
         u[lane_] = s[lane_];
 }
 
-static void derive_rigid_body_taylor_tcl_sqr(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double *u)
+static inline void derive_rigid_body_taylor_tcl_sqr(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double *u)
 {
     double s[DERIVE_RIGID_BODY_TAYLOR_LANES];
     int j, lane_;
@@ -763,7 +763,7 @@ static void derive_rigid_body_taylor_tcl_sqr(int n, double (*a)[DERIVE_RIGID_BOD
         u[lane_] = s[lane_];
 }
 
-static void derive_rigid_body_taylor_tcl_div(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*b)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*q)[DERIVE_RIGID_BODY_TAYLOR_LANES])
+static inline void derive_rigid_body_taylor_tcl_div(int n, double (*a)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*b)[DERIVE_RIGID_BODY_TAYLOR_LANES], double (*q)[DERIVE_RIGID_BODY_TAYLOR_LANES])
 {
     double s[DERIVE_RIGID_BODY_TAYLOR_LANES];
     int j, lane_;
