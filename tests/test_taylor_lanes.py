@@ -129,3 +129,16 @@ def test_an_interrupt_stops_the_lanes():
             native.simulate_lanes_batch(bp.inputs, bp.params(desc), bp.t, args, pole)
     finally:
         timer.cancel()
+
+
+def test_the_width_is_the_cpus():
+    """W from the instruction sets of the build (-march=native for the lanes' library): 8 with
+    AVX-512, 4 with AVX, else 2; the default build (x86-64 baseline or another CPU) its own."""
+    from derive.runtime import cbuild
+
+    sc = scenes(2, formulation="reduced-u")
+    _, _, scalar, native, _, _ = kernels(sc, "reduced-u")
+    macros = cbuild._native_identity(tuple(cbuild.compiler()))
+    want = 8 if "__AVX512F__" in macros else 4 if "__AVX__" in macros else 2
+    assert native.lanes == want
+    assert scalar.lanes <= native.lanes
