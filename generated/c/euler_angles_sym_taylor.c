@@ -1059,8 +1059,10 @@ int euler_angles_sym_simulate_lanes_batch_taylor(long n_batch, const double *ins
         derive_euler_angles_sym_stats_init(st + b);
         if (euler_angles_sym_init(ins + b * euler_angles_sym_NIN, p, y))
             derive_euler_angles_sym_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_angles_sym_first_nonfinite(y, euler_angles_sym_NY));
-        else if (pole_check && !euler_angles_sym_pole_clear(y, p, pole_check))
-            return derive_euler_angles_sym_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !euler_angles_sym_pole_clear(y, p, pole_check)) {
+            derive_euler_angles_sym_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_euler_angles_sym_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < euler_angles_sym_NY; ++i)
                 if (!isfinite(y[i])) {

@@ -857,8 +857,10 @@ int euler_free_simulate_lanes_batch_taylor(long n_batch, const double *ins, doub
         derive_euler_free_stats_init(st + b);
         if (euler_free_init(ins + b * euler_free_NIN, p, y))
             derive_euler_free_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_free_first_nonfinite(y, euler_free_NY));
-        else if (pole_check && !euler_free_pole_clear(y, p, pole_check))
-            return derive_euler_free_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !euler_free_pole_clear(y, p, pole_check)) {
+            derive_euler_free_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_euler_free_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < euler_free_NY; ++i)
                 if (!isfinite(y[i])) {

@@ -1077,8 +1077,10 @@ int euler_poisson_asym_gravity_general_simulate_lanes_batch_taylor(long n_batch,
         derive_euler_poisson_asym_gravity_general_stats_init(st + b);
         if (euler_poisson_asym_gravity_general_init(ins + b * euler_poisson_asym_gravity_general_NIN, p, y))
             derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_poisson_asym_gravity_general_first_nonfinite(y, euler_poisson_asym_gravity_general_NY));
-        else if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y, p, pole_check))
-            return derive_euler_poisson_asym_gravity_general_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y, p, pole_check)) {
+            derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
                 if (!isfinite(y[i])) {

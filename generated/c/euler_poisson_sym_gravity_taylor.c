@@ -1013,8 +1013,10 @@ int euler_poisson_sym_gravity_simulate_lanes_batch_taylor(long n_batch, const do
         derive_euler_poisson_sym_gravity_stats_init(st + b);
         if (euler_poisson_sym_gravity_init(ins + b * euler_poisson_sym_gravity_NIN, p, y))
             derive_euler_poisson_sym_gravity_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_poisson_sym_gravity_first_nonfinite(y, euler_poisson_sym_gravity_NY));
-        else if (pole_check && !euler_poisson_sym_gravity_pole_clear(y, p, pole_check))
-            return derive_euler_poisson_sym_gravity_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !euler_poisson_sym_gravity_pole_clear(y, p, pole_check)) {
+            derive_euler_poisson_sym_gravity_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_euler_poisson_sym_gravity_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < euler_poisson_sym_gravity_NY; ++i)
                 if (!isfinite(y[i])) {

@@ -1073,8 +1073,10 @@ int heavy_top_simulate_lanes_batch_taylor(long n_batch, const double *ins, doubl
         derive_heavy_top_stats_init(st + b);
         if (heavy_top_init(ins + b * heavy_top_NIN, p, y))
             derive_heavy_top_fail(st + b, DERIVE_NONFINITE, t0, derive_heavy_top_first_nonfinite(y, heavy_top_NY));
-        else if (pole_check && !heavy_top_pole_clear(y, p, pole_check))
-            return derive_heavy_top_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !heavy_top_pole_clear(y, p, pole_check)) {
+            derive_heavy_top_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_heavy_top_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < heavy_top_NY; ++i)
                 if (!isfinite(y[i])) {

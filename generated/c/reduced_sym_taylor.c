@@ -1073,8 +1073,10 @@ int reduced_sym_simulate_lanes_batch_taylor(long n_batch, const double *ins, dou
         derive_reduced_sym_stats_init(st + b);
         if (reduced_sym_init(ins + b * reduced_sym_NIN, p, y))
             derive_reduced_sym_fail(st + b, DERIVE_NONFINITE, t0, derive_reduced_sym_first_nonfinite(y, reduced_sym_NY));
-        else if (pole_check && !reduced_sym_pole_clear(y, p, pole_check))
-            return derive_reduced_sym_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !reduced_sym_pole_clear(y, p, pole_check)) {
+            derive_reduced_sym_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_reduced_sym_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < reduced_sym_NY; ++i)
                 if (!isfinite(y[i])) {

@@ -967,8 +967,10 @@ int reduced_u_sym_gravity_simulate_lanes_batch_taylor(long n_batch, const double
         derive_reduced_u_sym_gravity_stats_init(st + b);
         if (reduced_u_sym_gravity_init(ins + b * reduced_u_sym_gravity_NIN, p, y))
             derive_reduced_u_sym_gravity_fail(st + b, DERIVE_NONFINITE, t0, derive_reduced_u_sym_gravity_first_nonfinite(y, reduced_u_sym_gravity_NY));
-        else if (pole_check && !reduced_u_sym_gravity_pole_clear(y, p, pole_check))
-            return derive_reduced_u_sym_gravity_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !reduced_u_sym_gravity_pole_clear(y, p, pole_check)) {
+            derive_reduced_u_sym_gravity_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_reduced_u_sym_gravity_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
                 if (!isfinite(y[i])) {

@@ -1213,8 +1213,10 @@ int rigid_body_simulate_lanes_batch_taylor(long n_batch, const double *ins, doub
         derive_rigid_body_stats_init(st + b);
         if (rigid_body_init(ins + b * rigid_body_NIN, p, y))
             derive_rigid_body_fail(st + b, DERIVE_NONFINITE, t0, derive_rigid_body_first_nonfinite(y, rigid_body_NY));
-        else if (pole_check && !rigid_body_pole_clear(y, p, pole_check))
-            return derive_rigid_body_rest_with(b, n_batch, st, DERIVE_RANGE);
+        else if (pole_check && !rigid_body_pole_clear(y, p, pole_check)) {
+            derive_rigid_body_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_rigid_body_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
         else
             for (i = 0; i < rigid_body_NY; ++i)
                 if (!isfinite(y[i])) {
