@@ -21,7 +21,9 @@ dense output; adaptive methods only: a fixed-step driver splits each output inte
 samples set its steps) and maps the last state alone; the angles of that one sample get β's canonical
 range, without the unwrapping from the samples before (which for continuous α, γ moves nothing
 in the usual case). Its numbers are then the full batch's last sample bit for bit wherever that
-unwrapping did not fire; ``nfev`` counts no dense-output evaluations. The other formulations
+unwrapping did not fire; ``nfev`` counts no dense-output evaluations. The samples it does not
+make are not checked either: an output that is not finite at an interior sample only (the full
+batch's NONFINITE_OUTPUT there) goes unnoticed, as the sample is never made. The other formulations
 (angles from atan2, unwrapped along the samples) take the full grid. A Taylor method's
 final-only batch runs its lanes driver (``<model>_simulate_lanes_batch_<method>``, in a library
 built for this CPU's vector width: W trajectories at once, each lane its own steps), whose
