@@ -142,3 +142,28 @@ def test_the_width_is_the_cpus():
     want = 8 if "__AVX512F__" in macros else 4 if "__AVX__" in macros else 2
     assert native.lanes == want
     assert scalar.lanes <= native.lanes
+
+
+@pytest.mark.parametrize("formulation", ["quaternion", "reduced-u"])
+def test_the_avx2_width_is_bit_for_bit_too(formulation):
+    """W = 4 (AVX, here AVX2 with FMA instructions available) on a CPU that would build 8: the
+    lanes' library built with the lanes' flags but -mavx2 -mfma instead of -march=native gives the
+    scalar driver's numbers (no fused multiply-add slips in: the quaternion's init map is where
+    gcc's straight-line vectoriser once fused one)."""
+    from derive.runtime import cbuild
+
+    if "__AVX2__" not in cbuild._native_identity(tuple(cbuild.compiler())):
+        pytest.skip("this CPU has no AVX2")
+    sc = scenes(11, formulation=formulation)
+    bp, desc, scalar, _, args, pole = kernels(sc, formulation)
+    sources = desc.c_sources()
+    unity = f"{desc.name}_taylor_unit.c"
+    sources[unity] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
+                                                             f"{desc.name}_taylor.c"))
+    flags = [*cbuild.DEFAULT_FLAGS, "-mavx2", "-mfma",
+             *(f for f in cbuild.NATIVE_FLAGS if f != "-march=native"), "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
+    avx2 = ModelKernel(desc, "taylor", cbuild.compile_library(f"{desc.name}_taylor_avx2", sources, unity, flags))
+    assert avx2.lanes == 4
+    ps = bp.params(desc)
+    same(scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole),
+         avx2.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
