@@ -132,8 +132,13 @@ def simulate_batch(scenes, outputs=None, **overrides):
         :class:`~derive.sim.batch.BatchResult` with arrays stacked along a first axis of
         length N, bit for bit the numbers of the full batch, and only those arrays allocated
         (the compiled loop runs in chunks whose work arrays are reused): 1000 trajectories of
-        1001 samples keep 1000 final states instead of mapping ~200 MB. The integrals of the
-        integrable cases are not computed (they are functions of ``L`` and ``n``).
+        1001 samples keep 1000 final states instead of mapping ~200 MB. With ``"final"``, a
+        formulation whose α and γ are states and an adaptive method, each trajectory is
+        integrated straight to the end (the same steps; no interior sample is made; ``nfev``
+        then counts no dense-output evaluations), and a Taylor method runs several
+        trajectories at once in SIMD lanes (``BatchResult.driver`` says which driver ran).
+        The integrals of the integrable cases are not computed (they are functions of ``L``
+        and ``n``).
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 

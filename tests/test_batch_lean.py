@@ -21,7 +21,10 @@ def test_final_is_the_full_batch_at_its_last_sample():
     for name in FINAL:
         assert np.array_equal(getattr(final, name), np.array([getattr(r, name)[-1] for r in full])), name
     assert np.array_equal(final.state, np.array([r.state[-1] for r in full]))
-    assert final.nfev.tolist() == [r.nfev for r in full]
+    if final.driver == "final":  # straight to the end: no dense-output evaluations
+        assert (final.nfev <= np.array([r.nfev for r in full])).all()
+    else:
+        assert final.nfev.tolist() == [r.nfev for r in full]
 
 
 def test_a_final_only_batch_of_1000_keeps_its_memory_bounded():

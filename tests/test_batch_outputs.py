@@ -45,7 +45,9 @@ def test_final_outputs_are_the_last_sample_of_the_full_batch_bit_for_bit():
         want = np.array([getattr(r, name)[-1] for r in full])
         assert np.array_equal(got, want), name
     assert np.array_equal(fin.state, np.array([r.state[-1] for r in full]))
-    assert np.array_equal(fin.nfev, [r.nfev for r in full])
+    # straight to the end: the same steps, none of dop853's dense-output evaluations
+    assert fin.driver == "final" and fin.method == "dop853"
+    assert (fin.nfev <= np.array([r.nfev for r in full])).all()
     assert np.array_equal(fin.t, full[0].t)
 
 
@@ -67,6 +69,8 @@ def test_a_fixed_step_batch_keeps_its_outputs_too():
     full = derive.simulate_batch(sc)
     fin = derive.simulate_batch(sc, outputs="final")
     assert np.array_equal(fin.omega, np.array([r.omega[-1] for r in full]))
+    assert fin.driver == "full"  # its samples set its steps: the full grid
+    assert np.array_equal(fin.nfev, [r.nfev for r in full])
 
 
 def test_bad_outputs_are_refused_with_one_line_naming_the_key():

@@ -107,6 +107,7 @@ def test_races_against_heyoka_report_finite_ratios_at_reached_levels():
     ba = out["batch"]
     assert ba["final_axis_difference"] < 1e-8  # both sides integrated the same motions
     assert ba["ratio_full_vs_grid"] > 0 and ba["ratio_final_vs_final"] > 0
+    assert ba["lanes_driver"] == "lanes" and ba["ratio_lanes_vs_final"] > 0
     fc = out["fixed_cost"]
     assert fc["prepared_vs_heyoka"] > 0 and fc["simulate_vs_heyoka"] > 0
     keys = {key for _, key, value in peer_rows(out) if value is not None}

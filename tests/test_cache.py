@@ -255,3 +255,22 @@ def test_a_compiler_killed_by_ctrl_c_is_an_interrupt(cache, tmp_path, monkeypatc
     with pytest.raises(KeyboardInterrupt):
         cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert not [p for p in cache.iterdir() if p.name.startswith(".build-")]
+
+
+def test_a_native_build_is_keyed_by_this_cpu(monkeypatch):
+    """A library built with -march=native (the Taylor lanes) runs only on the CPU it was built
+    for: its key holds that CPU's instruction sets, so a cache shared with another CPU never
+    loads it there; a build without the flag does not depend on them."""
+    sources = tiny("native")
+    cmd = cbuild.compiler()
+    native = list(cbuild.DEFAULT_FLAGS) + list(cbuild.NATIVE_FLAGS)
+    plain = list(cbuild.DEFAULT_FLAGS)
+    here = cbuild._key(sources, ["tiny.c"], cmd, native)
+    assert "#define __" in cbuild._native_identity(tuple(cmd))
+    keys = {}
+    for cpu in ("#define __AVX512F__ 1", "#define __SSE2__ 1"):
+        monkeypatch.setattr(cbuild, "_native_identity", lambda cmd, cpu=cpu: cpu)
+        keys[cpu] = (cbuild._key(sources, ["tiny.c"], cmd, native), cbuild._key(sources, ["tiny.c"], cmd, plain))
+    (a, a_plain), (b, b_plain) = keys.values()
+    assert len({a, b, here}) == 3
+    assert a_plain == b_plain

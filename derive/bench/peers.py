@@ -20,7 +20,9 @@ load hits both alike. Ratios are derive's time over the peer's (the goals are â‰
   (``taylor_adaptive_batch``, one trajectory per SIMD lane, lanes = heyoka's recommended SIMD
   size): ``propagate_grid`` over the output times (the states at every sample), and
   ``propagate_until`` t_end (the final state only); heyoka at the tolerance that matched
-  derive's error on the reference scene.
+  derive's error on the reference scene. When the scenes' method is not Taylor, the Taylor
+  method's ``outputs="final"`` batch too (its lanes driver), against heyoka's final states at
+  the error the Taylor method makes there.
 * :func:`fixed_cost` â€” t_end = 1e-3, 2 samples, rtol 1e-10: ``derive.prepare(scene).run()``
   and ``derive.simulate(dict)`` (the same scene again, and a scene with new numbers each call)
   against heyoka's reset + ``propagate_grid`` of the same two times (and numbalsoda's
@@ -201,7 +203,35 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     out["ratio_full_vs_grid"] = best["derive_full"] / best["heyoka_grid"]
     if "derive_final" in best:
         out["ratio_final_vs_final"] = best["derive_final"] / best["heyoka_final"]
+    if "derive_final" in best and data["simulate"].get("method") != "taylor":
+        out.update(_lanes_race(scenes, prob, probs, ref, rtol))
     return out
+
+
+def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
+    """The Taylor method's final-only batch (its lanes driver, W trajectories at once) against
+    heyoka's final-only batch at the error the Taylor method makes on the reference scene (a
+    tighter one than the scenes' own method's: heyoka is matched to it anew), timed in turns."""
+    import derive
+
+    taylor = [dict(d, simulate=dict(d["simulate"], method="taylor")) for d in scenes]
+    target, _ = _derive_error(taylor[0], ref, rtol)
+    m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
+    _, final_run, _ = heyoka_batch(prob, probs, m["rtol"])
+    ran = derive.simulate_batch(taylor, outputs="final")  # warm: compile, load
+    fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"), "heyoka": final_run}
+    final_run()
+    best = {k: math.inf for k in fns}
+    for _ in range(3 if len(scenes) >= 500 else 5):
+        for key, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            best[key] = min(best[key], time.perf_counter() - t0)
+    n = len(scenes)
+    return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
+            "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
+            "heyoka_final_lanes_per_trajectory": best["heyoka"] / n,
+            "ratio_lanes_vs_final": best["derive"] / best["heyoka"]}
 
 
 def fixed_cost(cfg, fams: list[str]) -> dict:

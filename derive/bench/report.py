@@ -12,6 +12,16 @@ FAMILY_NAMES = {"scipy": "SciPy (plain-Python rhs)", "casadi": "CasADi", "pydy":
                 "heyoka": "heyoka (Taylor, LLVM)", "numbalsoda": "numbalsoda DOP853 (numba rhs)"}
 
 
+def _lanes_line(ba: dict) -> str:
+    """The Taylor lanes' race of the batch section (derive.bench.peers._lanes_race), or nothing."""
+    if "ratio_lanes_vs_final" not in ba:
+        return ""
+    return (f" With the Taylor method (error {_e(ba['lanes_derive_error'])}; driver `{ba['lanes_driver']}`), "
+            f"`outputs=\"final\"` {_t(ba['derive_lanes_per_trajectory'])} per trajectory against heyoka's final "
+            f"states at tol {ba['lanes_heyoka_tol']:.3g} (error {_e(ba['lanes_heyoka_error'])}) "
+            f"{_t(ba['heyoka_final_lanes_per_trajectory'])}: **{ba['ratio_lanes_vs_final']:.3g}×**.")
+
+
 def _t(seconds) -> str:
     """A wall time with a readable unit."""
     if seconds is None or not np.isfinite(seconds):
@@ -241,7 +251,7 @@ def peers_section(results: dict) -> list[str]:
               + f"`derive.simulate_batch(scenes)` (every output at all {ba['samples']} samples) "
               f"{_t(ba['derive_full_per_trajectory'])} against heyoka's `propagate_grid` (the states at every sample) "
               f"{_t(ba['heyoka_grid_per_trajectory'])}: **{ba['ratio_full_vs_grid']:.3g}×**. The final axes of the "
-              f"two agree to {_e(ba['final_axis_difference'])}.", ""]
+              f"two agree to {_e(ba['final_axis_difference'])}." + _lanes_line(ba), ""]
     fc = pe.get("fixed_cost") or {}
     if "error" in fc:
         L += [f"- fixed cost: not measured ({fc['error']})", ""]

@@ -531,8 +531,50 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
         "has_angles": spec.observable_names[:3] == ("alpha", "beta", "gamma"),
         "pointwise": _pointwise(model, d),
     }
+    ctx["lanes"] = _lanes(d, rhs_nodes, ctx["jet_scope"]) if ctx["pointwise"] else None
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
             f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
+
+
+#: The index of the lane loops in the lanes driver's C (templates/c/taylor_lanes.c.j2): a name
+#: no model symbol takes (they never end in an underscore).
+LANE = "lane_"
+
+_SERIES = re.compile(r"u\[(\d+)\]\[([^\]]+)\]")
+_PRODUCT = re.compile(r"^u\[(\d+)\]\[n\] = tc_(mul|sqr)\(n, (.*)\);$")
+
+
+def _lanes(d: Decomposition, rhs_nodes: list, jet_scope: tuple) -> dict | None:
+    """The jet of the lanes driver (several trajectories at once, :mod:`derive.sim.batch`): the
+    statements of :func:`decompose`'s C with every series entry and every parameter and
+    constant indexed by the lane (``u[k][n]`` -> ``u[k][n][lane_]``, ``x0`` -> ``x0[lane_]``), an
+    elementwise node as a loop over the lanes, a rule's helper ``tc_<rule>`` as its lanes helper
+    ``tcl_<rule>`` (the product and the square writing into their node's entry). None when a
+    helper's argument would need a lane (a parameter in a power's exponent): such a model
+    has no lanes driver."""
+    names = [nm for _, nm in jet_scope[0]] + [nm for nm, _ in jet_scope[1]]
+    word = re.compile(r"\b(" + "|".join(map(re.escape, names)) + r")\b") if names else None
+
+    def lane(text: str) -> str:
+        text = _SERIES.sub(lambda m: f"u[{m.group(1)}][{m.group(2)}][{LANE}]", text)
+        return word.sub(lambda m: f"{m.group(1)}[{LANE}]", text) if word else text
+
+    nodes = []
+    for node in rhs_nodes:
+        code = node.code
+        if "tc_" not in code:
+            nodes.append(("loop", lane(code)))
+            continue
+        m = _PRODUCT.match(code)
+        if m:
+            code = f"tc_{m.group(2)}(n, {m.group(3)}, u[{m.group(1)}][n]);"
+        if word and word.search(_SERIES.sub("", code)):
+            return None
+        nodes.append(("call", code.replace("tc_", "tcl_")))
+    return {"nodes": nodes, "params": jet_scope[0],
+            "consts": [(nm, lane(e)) for nm, e in jet_scope[1]],
+            "guards": [lane(g) for g in d.guards],
+            "outputs": [lane(coef(out)) for out in d.outputs], "index": LANE}
 
 
 def _scope(texts: list[str], d: Decomposition) -> tuple[list, list]:

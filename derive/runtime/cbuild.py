@@ -65,6 +65,15 @@ STRICT_FLAGS: tuple[str, ...] = ("-std=c99", "-Wall", "-Wextra", "-Werror", "-pe
 SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-pointer",
                                    "-fsanitize=address,undefined",
                                    "-fno-sanitize-recover=undefined")
+# The lanes drivers' extra flags (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the
+# vector width of this machine. Such a library runs only on the CPU it was built for, so its key
+# also holds that CPU's identity (:func:`_native_identity`). Its numbers must be the default
+# build's bit for bit: no fused multiply-add. ISO C mode contracts nothing, but gcc 12's
+# straight-line (SLP) vectoriser still fuses a pair a*b - c, a*b + c into one vfmaddsub (seen in
+# rigid_body_init with AVX-512, also under -ffp-contract=off and -mno-fma): it is turned off; the
+# lanes are loops, vectorised by the loop vectoriser.
+NATIVE_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize",
+                                 "--param=max-completely-peel-times=1")
 STDERR_LINES = 20
 STALE_BUILD_SECONDS = 600  # a build folder this old belongs to a compile that was killed
 CHECKSUM = ".sha256"       # sidecar suffix: <library>.so.sha256
@@ -258,9 +267,23 @@ def _compiler_identity(cmd: tuple[str, ...]) -> str:
     return out.stdout.strip()
 
 
+@functools.lru_cache(maxsize=None)
+def _native_identity(cmd: tuple[str, ...]) -> str:
+    """What ``-march=native`` means here: the target macros the compiler defines with it (the
+    instruction sets), so a cache shared by machines of other CPUs never loads a library built
+    for another."""
+    try:
+        out = subprocess.run([*cmd, "-march=native", "-dM", "-E", "-x", "c", os.devnull],
+                             capture_output=True, text=True)
+    except OSError:
+        return "?"
+    return "\n".join(sorted(line for line in out.stdout.splitlines() if line.startswith("#define __")))
+
+
 def _key(sources: dict[str, str], main: list[str], cmd: list[str], flags: list[str]) -> str:
     h = hashlib.sha256()
-    for part in (cmd, flags, main, [_compiler_identity(tuple(cmd))]):
+    native = [_native_identity(tuple(cmd))] if "-march=native" in flags else []
+    for part in (cmd, flags, main, [_compiler_identity(tuple(cmd))], *([native] if native else [])):
         h.update(repr(part).encode())
     for name in sorted(sources):
         h.update(b"\0" + name.encode() + b"\0" + sources[name].encode())

@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
+from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS, compile_library
 from derive.errors import IntegrationError
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.codegen.solvers import render_solvers
@@ -375,6 +375,8 @@ class ModelKernel:
         vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
+        self._sim_final = self._sim_lanes = None
+        self.lanes = 0
         if method is not None:
             spec = compiled_method(method)
             extra = [_C_TYPES[ty] for ty, _ in spec.params]
@@ -386,6 +388,16 @@ class ModelKernel:
             self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
+            # the final-only batch (a splitting method has none: its batches take the full grid)
+            self._sim_final = (self._fn(f"{p}_simulate_final_batch_{method}",
+                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+                               if hasattr(lib, f"{p}_simulate_final_batch_{method}") else None)
+            # the Taylor methods' lanes driver (the final-only batch, W trajectories at once)
+            self._sim_lanes = (self._fn(f"{p}_simulate_lanes_batch_{method}",
+                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+                               if hasattr(lib, f"{p}_simulate_lanes_batch_{method}") else None)
+            self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
+                          if self._sim_lanes is not None else 0)
             self._guard = _interruptible(lib, p)
             if self._guard is not None:
                 self._guard.argtypes = [ci]
@@ -412,9 +424,11 @@ class ModelKernel:
         return fn
 
     @classmethod
-    def load(cls, desc, method: str | None) -> "ModelKernel":
-        """Compiled once per machine (the cache), loaded once per process."""
-        key = (desc.folder, desc.name, method)
+    def load(cls, desc, method: str | None, native: bool = False) -> "ModelKernel":
+        """Compiled once per machine (the cache), loaded once per process. ``native``: built
+        for this CPU's vector width (``-march=native``), for the lanes driver of a Taylor method
+        (:meth:`simulate_lanes_batch`); the scalar drivers give the same numbers either way."""
+        key = (desc.folder, desc.name, method, native)
         kernel = cls._cache.get(key)
         if kernel is None:
             sources = desc.c_sources()
@@ -426,10 +440,11 @@ class ModelKernel:
                 if f"{desc.name}_{family}.c" not in sources:  # (interrupt flag, drivers)
                     raise ValueError(f"method {method!r} was not generated for the model {desc.name}")
             sources[unity] = "".join(f'#include "{n}"\n' for n in includes)
-            flags = list(DEFAULT_FLAGS)
+            flags = list(DEFAULT_FLAGS) + (list(NATIVE_FLAGS) if native else [])
             if method is not None:
                 flags += ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}"]
-            lib = compile_library(f"{desc.name}_{method or 'model'}", sources, unity, flags)
+            lib = compile_library(f"{desc.name}_{method or 'model'}{'_native' if native else ''}", sources,
+                                  unity, flags)
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
@@ -503,6 +518,62 @@ class ModelKernel:
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
+                   _ptr(y), _ptr(out), _ptr(st))
+        return out, y, ps, st[:nb]
+
+    @property
+    def has_final(self) -> bool:
+        """Whether the library holds the final-only batch driver (:meth:`simulate_final_batch`)."""
+        return self._sim_final is not None
+
+    def simulate_lanes_batch(self, inputs, ps, t, args, pole_check: int = 0):
+        """:meth:`simulate_final_batch` with the trajectories run :attr:`lanes` at a time by a
+        Taylor method's lanes driver (``<name>_simulate_lanes_batch_<method>``): each trajectory's
+        numbers, status and statistics are the scalar driver's bit for bit (every lane its own
+        steps). Every start is made first: a refused one (``pole_check``) stops the batch with
+        status RANGE before anything is integrated. Same arguments and results."""
+        return self._final_call(self._sim_lanes, "lanes", inputs, ps, t, args, pole_check)
+
+    def simulate_final_batch(self, inputs, ps, t, args, pole_check: int = 0):
+        """N trajectories integrated straight to ``t[-1]``, the last sample only.
+
+        The C driver ``<name>_simulate_final_batch_<method>``: the same steps as
+        :meth:`simulate_batch` (its interior samples are dense output), no output map but at the
+        end, and the angles of that one sample made canonical alone (β's range, no unwrapping
+        from the samples before: for formulations whose α, γ are states, see
+        :attr:`derive.symbolic.formulations.Formulation.angle_states`).
+
+        Parameters
+        ----------
+        inputs : ndarray, shape (N, NIN)
+            The init map's inputs per trajectory.
+        ps : ndarray, shape (N, NP)
+            The parameter vectors (copied; the copy gets the derived parameters).
+        t : ndarray
+            The output times of the full grid (its first and last are used, the rest checked).
+        args : list
+            The driver's arguments (:meth:`driver_args`).
+        pole_check : int
+            0, 1 or 2, as for :meth:`simulate_batch` (the first refusal stops the batch).
+
+        Returns
+        -------
+        tuple
+            (out (N, NOBS), y (N, NY), ps, stats (N,)).
+        """
+        return self._final_call(self._sim_final, "final-only", inputs, ps, t, args, pole_check)
+
+    def _final_call(self, fn, what, inputs, ps, t, args, pole_check):
+        if fn is None:
+            raise ValueError(f"{self.desc.name}: method {self.method!r} has no {what} batch driver")
+        nb = inputs.shape[0]
+        out = np.empty((nb, self.nout))
+        y = np.empty((nb, self.ny))
+        ps = np.array(ps, dtype=np.float64, order="C")
+        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
+        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+        t = np.ascontiguousarray(t, dtype=np.float64)
+        self._call(fn, nb, _ptr(inputs), _ptr(ps), _ptr(t), t.shape[0], *args, pole_check,
                    _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
 

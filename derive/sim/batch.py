@@ -13,6 +13,23 @@ and reused, and only what was asked for is copied out of them into the arrays re
 The numbers are bit for bit those of the full batch (the same C call per trajectory; a chunk
 changes nothing a trajectory computes). No Result per trajectory: one :class:`BatchResult`.
 
+With ``"final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
+that loses no accuracy near a pole (no ``pole_loss``: its pole check needs β at every sample),
+no sample but the last is made: the driver ``<model>_simulate_final_batch_<method>`` integrates
+each trajectory straight to the end (the same steps: the interior samples of the full grid are
+dense output; adaptive methods only: a fixed-step driver splits each output interval, so the
+samples set its steps) and maps the last state alone; the angles of that one sample get β's canonical
+range, without the unwrapping from the samples before (which for continuous α, γ moves nothing
+in the usual case). Its numbers are then the full batch's last sample bit for bit wherever that
+unwrapping did not fire; ``nfev`` counts no dense-output evaluations. The samples it does not
+make are not checked either: an output that is not finite at an interior sample only (the full
+batch's NONFINITE_OUTPUT there) goes unnoticed, as the sample is never made. The other formulations
+(angles from atan2, unwrapped along the samples) take the full grid. A Taylor method's
+final-only batch runs its lanes driver (``<model>_simulate_lanes_batch_<method>``, in a library
+built for this CPU's vector width: W trajectories at once, each lane its own steps), whose
+numbers, statuses and statistics are the scalar final-only driver's bit for bit.
+``BatchResult.driver`` says which ran.
+
 Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
 """
 from __future__ import annotations
@@ -23,8 +40,9 @@ import numpy as np
 
 from derive.errors import IntegrationError, SceneError
 from derive.methods.status import Status
+from derive.runtime.integrate import ModelKernel
 from derive.sim import simulation
-from derive.symbolic.formulations import OUTPUTS
+from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
 #: per some tens of trajectories), small enough to stay in the caches.
@@ -54,6 +72,12 @@ class BatchResult:
         Right-hand-side evaluations per trajectory.
     method, formulation, model : str
         What ran (one model for the whole batch).
+    effects : tuple
+        The effects of the model.
+    driver : str
+        The compiled batch driver that ran: ``"full"`` (every sample, kept or not),
+        ``"final"`` (straight to the end, the last sample only) or ``"lanes"`` (that, a Taylor
+        method's trajectories several at a time: ``<model>_simulate_lanes_batch_<method>``).
     """
 
     outputs: dict
@@ -64,6 +88,7 @@ class BatchResult:
     formulation: str
     model: str
     effects: tuple = field(default=())
+    driver: str = "full"
 
     def __len__(self) -> int:
         return len(self.nfev)
@@ -104,12 +129,48 @@ def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
         return None
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
-        refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+        driver = "full"
+        if final and final_only(desc, kernel):
+            driver = "final"
+            if kernel.lanes:  # a Taylor method: its lanes, built for this CPU's vector width
+                driver, kernel = "lanes", ModelKernel.load(desc, bp.method, native=True)
+        if driver == "full":
+            refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+        else:
+            refused, arrays, nfev = _run_final(bp, desc, kernel, args, pole_check, driver, names)
         if not refused:
             break
     else:  # every candidate refused a start: the last one's refusal, named as the full batch names it
         bp.raise_failure(desc, arrays, offset=nfev)
-    return BatchResult(arrays, bp.t, final, nfev, bp.method, desc.formulation, desc.name, desc.effects)
+    return BatchResult(arrays, bp.t, final, nfev, bp.method, desc.formulation, desc.name, desc.effects,
+                       driver)
+
+
+def final_only(desc, kernel) -> bool:
+    """Whether a batch keeping the last sample only may skip the others (see the module): the
+    formulation's α, γ are states, its pole check needs no β along the way, the method steps by
+    its tolerance (a fixed-step driver splits each output interval: the samples set its steps)
+    and the kernel holds the driver."""
+    f = REGISTRY[desc.formulation]
+    return f.angle_states and not f.pole_loss and kernel.adaptive and kernel.has_final
+
+
+def _run_final(bp, desc, kernel, args, pole_check, driver, names):
+    """The final-only driver (``driver`` "final") or the lanes driver ("lanes") over the whole
+    batch (its arrays are N rows: no chunks), with :func:`_run`'s results."""
+    call = kernel.simulate_lanes_batch if driver == "lanes" else kernel.simulate_final_batch
+    out, y, _, st = call(bp.inputs, bp.params(desc), bp.t, args, pole_check)
+    if (st["status"] == _RANGE).any():
+        return True, st, 0
+    bp.raise_failure(desc, st)
+    arrays = {}
+    for name in names:
+        if name == "state":
+            arrays[name] = y
+            continue
+        o, width = _OFFSET[name], _WIDTH[name]
+        arrays[name] = out[:, o].copy() if width == 1 else out[:, o:o + width].copy()
+    return False, arrays, st["nfev"].astype(np.int64)
 
 
 def _run(bp, desc, kernel, args, pole_check, final, names):

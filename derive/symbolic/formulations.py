@@ -24,6 +24,10 @@ Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeS
    ``pole_clear`` and its Routh checks.
 8. ``pole_loss``: True when its accelerations lose accuracy as eps/sin²β near a pole (the
    Euler-angle mass matrix): a trajectory that came closer than the tolerance allows is refused.
+9. ``angle_states``: True when α and γ are states of the model, continuous along the motion
+   (not read back from a rotation by atan2): the angles of the last sample then need only β's
+   canonical range, not the unwrapping from sample to sample, and a batch that keeps the last
+   sample only integrates straight to the end (:mod:`derive.sim.batch`).
 
 ``auto`` (see :mod:`derive.sim.auto`) tries the applicable formulations in order of the cost of
 their right-hand side (the kernel spec's weighted operation count, stored with the generated
@@ -118,6 +122,7 @@ class Formulation:
     pole_check: int = 0
     clearance: float = POLE_CLEARANCE  # the |sin β| its pole check keeps (see routh_checks)
     pole_loss: bool = False
+    angle_states: bool = False
 
 
 #: Cheapest first for a typical body (the shipped heavy top: reduced-u 149, euler-angles 205,
@@ -127,12 +132,13 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("reduced-u", "u = cos beta and its rate with conserved p_alpha, p_gamma, E': "
                 "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
                 "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
-                singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE),
+                singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE,
+                angle_states=True),
     Formulation("euler-angles", "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
-                "euler_angles", _euler_angles, singular=True, pole_loss=True),
+                "euler_angles", _euler_angles, singular=True, pole_loss=True, angle_states=True),
     Formulation("reduced", "beta alone with conserved p_alpha, p_gamma; symmetric body, "
                 "axisymmetric conservative effects", "reduced", _reduced, singular=True,
-                needs_routh=True),
+                needs_routh=True, angle_states=True),
     Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
                 "quaternion", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "

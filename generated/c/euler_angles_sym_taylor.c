@@ -568,3 +568,517 @@ int euler_angles_sym_simulate_batch_taylor(long n_batch, const double *ins, doub
     return status;
 }
 #endif /* SIMULATE */
+#ifdef DERIVE_EULER_ANGLES_SYM_SIMULATE
+
+/* The final-only solve of taylor: the scalar solver over the m <= 2 times t2, its outputs
+ * from the series as the full grid's last sample has them (the same last step, the same
+ * series), made canonical as a single sample (beta's range; see final_one below). */
+static int derive_euler_angles_sym_taylor_final_outputs_taylor(const double *y0, const double *p, const double *t2,
+        long m, double rtol, double atol, long max_steps, double *y2, double *y, double *out, derive_stats *st)
+{
+    double o2[2 * euler_angles_sym_NOBS];
+    int j, rc;
+    if (m == 1) {
+        rc = derive_euler_angles_sym_taylor_solve_taylor(y0, p, t2, 1, rtol, atol, max_steps, y2, NULL, st);
+        memcpy(y, y2, sizeof(double) * euler_angles_sym_NY);
+        return rc != DERIVE_OK ? rc : euler_angles_sym_outputs_checked(1, t2, y, p, out, st);
+    }
+    rc = derive_euler_angles_sym_taylor_solve_taylor(y0, p, t2, 2, rtol, atol, max_steps, y2, o2, st);
+    memcpy(y, y2 + euler_angles_sym_NY, sizeof(double) * euler_angles_sym_NY);
+    if (rc != DERIVE_OK)
+        return rc;
+    for (j = 0; j < euler_angles_sym_NOBS; ++j)
+        out[j] = o2[2 * j + 1];
+    derive_euler_angles_sym_canonical_angles(1, out, out + 1, out + 2);
+    return euler_angles_sym_outputs_finite(1, t2 + 1, out, st);
+}
+/* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
+ * the end only. The steps are those of the full grid's solve (its interior samples are dense
+ * output, which never changes a step), so the last state is bit for bit the full grid's last
+ * sample; only the angles' unwrapping from sample to sample is left out, which for a model whose
+ * alpha and gamma are states (continuous) moves the last sample by nothing in the usual case:
+ * the single sample gets beta's canonical range alone (euler_angles_sym_outputs_checked of one sample). */
+static int derive_euler_angles_sym_final_one_taylor(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y, double *out, derive_stats *st)
+{
+    double t2[2], y2[2 * euler_angles_sym_NY];
+    long m = n_out > 1 ? 2 : 1;
+    int rc;
+    t2[0] = t_out[0];
+    t2[1] = t_out[n_out - 1];
+    if (euler_angles_sym_init(in, p, y2)) {
+        derive_euler_angles_sym_stats_init(st);
+        return derive_euler_angles_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_angles_sym_first_nonfinite(y2, euler_angles_sym_NY));
+    }
+    if (pole_check && !euler_angles_sym_pole_clear(y2, p, pole_check)) {
+        derive_euler_angles_sym_stats_init(st);
+        return derive_euler_angles_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
+    }
+    rc = derive_euler_angles_sym_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
+    return rc;
+}
+
+int euler_angles_sym_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        if (!derive_euler_angles_sym_taylor_times_ok(t_out, n_out)) {
+            derive_euler_angles_sym_stats_init(st + b);
+            rc = derive_euler_angles_sym_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        } else {
+            rc = derive_euler_angles_sym_final_one_taylor(ins + b * euler_angles_sym_NIN, ps + b * euler_angles_sym_NP, t_out, n_out,
+                    rtol, atol, max_steps, pole_check, y_final + b * euler_angles_sym_NY, out_final + b * euler_angles_sym_NOBS, st + b);
+        }
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_euler_angles_sym_rest_with(b + 1, n_batch, st, rc);
+    }
+    return status;
+}
+
+/* ---------------------------------------------------------------------------------------- */
+/* Lanes: W trajectories at once (the final-only batch). Every node's series is an array
+ * [order][lane] and each elementary operation a loop over the lanes, which gcc vectorises at -O3
+ * (the library is built with -march=native: W is the vector width). Each lane does the scalar
+ * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
+ * ISO C mode contracts nothing into an FMA, and the libm calls (the order-0 terms, the step
+ * size's log and exp) are made per lane, so every lane's numbers are the scalar driver's bit for
+ * bit. Each lane keeps its own step size (Jorba and Zou per lane); all take the same order (one
+ * tolerance for the batch). A lane that has reached the end idles until its group is done. */
+#if defined(__AVX512F__)
+#define DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES 8
+#elif defined(__AVX__)
+#define DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES 4
+#else
+#define DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES 2
+#endif
+
+/* The number of lanes this library was compiled with (a benchmark reports it). */
+const int euler_angles_sym_taylor_lanes = DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES;
+
+static inline void derive_euler_angles_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
+{
+    double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    int j, lane_;
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        s[lane_] = 0.0;
+    for (j = 0; j <= n; ++j)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            s[lane_] += a[j][lane_] * b[n - j][lane_];
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        u[lane_] = s[lane_];
+}
+
+static inline void derive_euler_angles_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double *u)
+{
+    double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    int j, lane_;
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        s[lane_] = 0.0;
+    for (j = 0; j < (n + 1) / 2; ++j)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            s[lane_] += a[j][lane_] * a[n - j][lane_];
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        s[lane_] *= 2.0;
+    if (n % 2 == 0)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            s[lane_] += a[n / 2][lane_] * a[n / 2][lane_];
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        u[lane_] = s[lane_];
+}
+
+static inline void derive_euler_angles_sym_taylor_tcl_div(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*b)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*q)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
+{
+    double s[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    int j, lane_;
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        s[lane_] = a[n][lane_];
+    for (j = 1; j <= n; ++j)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            s[lane_] -= b[j][lane_] * q[n - j][lane_];
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        q[n][lane_] = s[lane_] / b[0][lane_];
+}
+
+/* gcc 12 at -O3 with AVX-512, this helper inlined into the lanes' jet, warns of an iteration 29
+ * of the j loop past an array; it does so with n bounded by an explicit test to n <= 29 too
+ * (where j <= 29 and every index is within the arrays' 31 rows), and the lanes are checked bit
+ * for bit against the scalar driver (tests/test_taylor_lanes.py): the warning is silenced here
+ * alone. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
+#endif
+static inline void derive_euler_angles_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*s)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], double (*c)[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES])
+{
+    double ss[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], cc[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], ja[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    int j, lane_;
+    if (n == 0) {
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_) {
+            s[0][lane_] = sin(a[0][lane_]);
+            c[0][lane_] = cos(a[0][lane_]);
+        }
+        return;
+    }
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+        ss[lane_] = cc[lane_] = 0.0;
+    for (j = 1; j <= n; ++j)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_) {
+            ja[lane_] = j * a[j][lane_];
+            ss[lane_] += ja[lane_] * c[n - j][lane_];
+            cc[lane_] += ja[lane_] * s[n - j][lane_];
+        }
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_) {
+        s[n][lane_] = ss[lane_] / n;
+        c[n][lane_] = -cc[lane_] / n;
+    }
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+/* derive_euler_angles_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
+ * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
+static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], const double *const *p, int order,
+                             double u[][EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], int *bad)
+{
+    double I1[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    double I3[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    double x7[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    int i, n, lane_;
+    (void)t;
+    if (order > EULER_ANGLES_SYM_TAYLOR_MAX_ORDER)  /* never (the callers clamp it): tells gcc the arrays' bound */
+        order = EULER_ANGLES_SYM_TAYLOR_MAX_ORDER;
+    for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_) {
+        bad[lane_] = 0;
+        I1[lane_] = p[lane_][0];
+        I3[lane_] = p[lane_][1];
+        x7[lane_] = 1.0/I1[lane_];
+    }
+    for (i = 0; i < euler_angles_sym_NY; ++i)
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[i][0][lane_] = y[i][lane_];
+    for (n = 0; n < order; ++n) {
+        const double inv = 1.0 / (n + 1);
+        derive_euler_angles_sym_taylor_tcl_sincos(n, u[1], u[6], u[7]);
+        derive_euler_angles_sym_taylor_tcl_sqr(n, u[6], u[8][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[9][n][lane_] = I1[lane_] * u[3][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[10][n][lane_] = I3[lane_] * u[5][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[11][n][lane_] = I3[lane_] * u[3][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[11], u[12][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[13][n][lane_] = u[10][n][lane_] + u[12][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_div(n, u[4], u[6], u[14]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[15][n][lane_] = x7[lane_] * u[14][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[9], u[16][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[17][n][lane_] = u[13][n][lane_] - 2 * u[16][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[15], u[17], u[18][n]);
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[3], u[19][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[20][n][lane_] = I1[lane_] * u[19][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[21][n][lane_] = -u[13][n][lane_] + u[20][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[6], u[3], u[22][n]);
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[22], u[21], u[23][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[24][n][lane_] = x7[lane_] * u[23][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[8], u[9], u[25][n]);
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[10], u[26][n]);
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[8], u[3], u[27][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[28][n][lane_] = I3[lane_] * u[27][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+            u[29][n][lane_] = -u[11][n][lane_] - u[25][n][lane_] - u[26][n][lane_] + 2 * u[9][n][lane_] + u[28][n][lane_];
+        derive_euler_angles_sym_taylor_tcl_mul(n, u[15], u[29], u[30][n]);
+        if (n == 0)
+            for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
+                bad[lane_] = !((-DBL_EPSILON + u[8][0][lane_]) > 0);
+        for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_) {
+            u[0][n + 1][lane_] = u[3][n][lane_] * inv;
+            u[1][n + 1][lane_] = u[4][n][lane_] * inv;
+            u[2][n + 1][lane_] = u[5][n][lane_] * inv;
+            u[3][n + 1][lane_] = u[18][n][lane_] * inv;
+            u[4][n + 1][lane_] = u[24][n][lane_] * inv;
+            u[5][n + 1][lane_] = u[30][n][lane_] * inv;
+        }
+    }
+}
+
+/* The last step of lane l of the taylor lanes: its series copied out (the scalar layout)
+ * and the scalar driver's last sample made of them, as derive_euler_angles_sym_taylor_solve_taylor makes it at
+ * t_end (the outputs' series at tau = h, or the output map where they fail their test), then
+ * canonical and checked as derive_euler_angles_sym_taylor_final_outputs_taylor does. */
+static int derive_euler_angles_sym_taylor_lanes_last_taylor(double u[][EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], int lane, int order,
+        double h, double fac, double rtol, double floor_, double t_end, const double *p, double *y,
+        double *out, derive_stats *st)
+{
+    double us[DERIVE_EULER_ANGLES_SYM_TAYLOR_NODES][EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1], w[EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_NW], v[DERIVE_EULER_ANGLES_SYM_TAYLOR_NW];
+    int i, k, series;
+    for (i = 0; i < DERIVE_EULER_ANGLES_SYM_TAYLOR_NODES; ++i)
+        for (k = 0; k <= order; ++k)
+            us[i][k] = u[i][k][lane];
+    derive_euler_angles_sym_taylor_jet_outputs(p, order, us, w);
+    series = derive_euler_angles_sym_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
+    derive_euler_angles_sym_taylor_horner(w, order, h, v);
+    for (i = 0; i < euler_angles_sym_NY; ++i)
+        if (!isfinite(v[i]))
+            return derive_euler_angles_sym_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
+    memcpy(y, v, sizeof(double) * euler_angles_sym_NY);
+    if (series)
+        derive_euler_angles_sym_taylor_outputs_pointwise(t_end, v, p, out);
+    else
+        euler_angles_sym_observables(t_end, v, p, out);
+    derive_euler_angles_sym_canonical_angles(1, out, out + 1, out + 2);
+    return euler_angles_sym_outputs_finite(1, &t_end, out, st);
+}
+
+/* One group of nl <= W trajectories idx[0..nl-1] (started: their initial states in y_final, their
+ * derived parameters in ps), integrated from t0 to t_end side by side. Returns DERIVE_INTERRUPTED
+ * when the interrupt flag stopped it (every lane still running then says so), else DERIVE_OK. */
+static int derive_euler_angles_sym_taylor_lanes_group_taylor(const long *idx, int nl, double *ps, double t0, double t_end,
+        int order, double lfac, double ip1, double ip2, double floor_, double rtol, long max_steps,
+        double *y_final, double *out_final, derive_stats *st)
+{
+    double u[DERIVE_EULER_ANGLES_SYM_TAYLOR_NODES][EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], y[euler_angles_sym_NY][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], t[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    const double *p[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    double yn[euler_angles_sym_NY][DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], chk[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], n1[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], n2[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], hl[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    double fac = exp(lfac), h, tn, sc, a1, a2, lr;
+    int bad[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], run[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], go[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], last[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES], i, j, l, left = 0;
+    derive_stats *sl;
+    for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+        /* a lane without a trajectory repeats the first one's, and is never read */
+        const long b = idx[l < nl ? l : 0];
+        p[l] = ps + b * euler_angles_sym_NP;
+        t[l] = t0;
+        for (i = 0; i < euler_angles_sym_NY; ++i)
+            y[i][l] = y_final[b * euler_angles_sym_NY + i];
+        run[l] = l < nl;
+        left += run[l];
+    }
+    while (left > 0) {
+        for (l = 0; l < nl; ++l)
+            if (run[l] && st[idx[l]].nstep >= max_steps) {
+                derive_euler_angles_sym_taylor_fail(st + idx[l], DERIVE_MAX_STEPS, t[l], -1);
+                run[l] = 0;
+                --left;
+            }
+        if (left == 0)
+            break;
+        if (derive_euler_angles_sym_stop) {
+            for (l = 0; l < nl; ++l)
+                if (run[l])
+                    derive_euler_angles_sym_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            return DERIVE_INTERRUPTED;
+        }
+        derive_euler_angles_sym_taylor_jet_lanes(t, y, p, order, u, bad);
+        /* The scalar driver's step control (see derive_euler_angles_sym_taylor_solve_taylor) with its arithmetic
+         * over the lanes: the check sum, the scaled last coefficients (max as a comparison: they
+         * are finite where they are used, a finite sum, and there fmax is that comparison), the
+         * libm calls and the tests per lane, then the series at every lane's own h. */
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l)
+            chk[l] = n1[l] = n2[l] = 0.0;
+        for (i = 0; i < euler_angles_sym_NY; ++i)
+            for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l)
+                chk[l] += u[i][order - 1][l] + u[i][order][l];
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(u[0][1][l]);  /* alpha: its rate's scale */
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[0][order - 1][l]) / sc;
+            a2 = fabs(u[0][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(y[1][l]);
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[1][order - 1][l]) / sc;
+            a2 = fabs(u[1][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(u[2][1][l]);  /* gamma: its rate's scale */
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[2][order - 1][l]) / sc;
+            a2 = fabs(u[2][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(y[3][l]);
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[3][order - 1][l]) / sc;
+            a2 = fabs(u[3][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(y[4][l]);
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[4][order - 1][l]) / sc;
+            a2 = fabs(u[4][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l) {
+            sc = fabs(y[5][l]);
+            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+            a1 = fabs(u[5][order - 1][l]) / sc;
+            a2 = fabs(u[5][order][l]) / sc;
+            n1[l] = a1 > n1[l] ? a1 : n1[l];
+            n2[l] = a2 > n2[l] ? a2 : n2[l];
+        }
+        for (l = 0; l < nl; ++l) {
+            hl[l] = 0.0;
+            go[l] = 0;
+            if (!run[l])
+                continue;
+            sl = st + idx[l];
+            sl->nfev++;
+            run[l] = 0;  /* set again when the lane goes on */
+            --left;
+            if (bad[l]) {
+                derive_euler_angles_sym_taylor_fail_rc(sl, t[l], 1);
+                continue;
+            }
+            if (!isfinite(chk[l])) {
+                for (i = 0; i < euler_angles_sym_NY && sl->status == DERIVE_OK; ++i)
+                    for (j = 1; j <= order; ++j)
+                        if (!isfinite(u[i][j][l])) {
+                            derive_euler_angles_sym_taylor_fail(sl, DERIVE_NONFINITE, t[l], i);
+                            break;
+                        }
+                if (sl->status == DERIVE_OK)
+                    derive_euler_angles_sym_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
+                continue;
+            }
+            lr = -HUGE_VAL;
+            if (n1[l] > 0.0)
+                lr = log(n1[l]) * ip1;
+            if (n2[l] > 0.0)
+                lr = fmax(lr, log(n2[l]) * ip2);
+            h = exp(lfac - lr);
+            last[l] = !(t[l] + h < t_end);
+            if (last[l])
+                h = t_end - t[l];
+            if (h < 16.0 * DBL_EPSILON * fabs(t[l]) || !(h >= DBL_MIN)) {
+                sl->h_fail = h;
+                derive_euler_angles_sym_taylor_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
+                continue;
+            }
+            sl->nstep++;
+            sl->naccept++;
+            hl[l] = h;
+            go[l] = 1;
+        }
+        for (i = 0; i < euler_angles_sym_NY; ++i) {
+            for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l)
+                yn[i][l] = u[i][order][l];
+            for (j = order - 1; j >= 0; --j)
+                for (l = 0; l < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++l)
+                    yn[i][l] = yn[i][l] * hl[l] + u[i][j][l];
+        }
+        for (l = 0; l < nl; ++l) {
+            if (!go[l])
+                continue;
+            sl = st + idx[l];
+            if (last[l]) {
+                derive_euler_angles_sym_taylor_lanes_last_taylor(u, l, order, hl[l], fac, rtol, floor_, t_end, p[l],
+                        y_final + idx[l] * euler_angles_sym_NY, out_final + idx[l] * euler_angles_sym_NOBS, sl);
+                continue;
+            }
+            tn = t[l] + hl[l];
+            for (i = 0; i < euler_angles_sym_NY; ++i) {
+                y[i][l] = yn[i][l];
+                if (!isfinite(yn[i][l])) {
+                    derive_euler_angles_sym_taylor_fail(sl, DERIVE_NONFINITE, tn, i);
+                    break;
+                }
+            }
+            if (sl->status != DERIVE_OK)
+                continue;
+            t[l] = tn;
+            run[l] = 1;
+            ++left;
+        }
+    }
+    return DERIVE_OK;
+}
+
+/* euler_angles_sym_simulate_final_batch_taylor with the trajectories run DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES at a time (the same
+ * numbers, statuses and statistics per trajectory). Every start first (the init map, the pole
+ * check: the first refusal stops the batch with DERIVE_RANGE before anything is integrated),
+ * then the groups of the trajectories that started. Bad arguments and a single output time
+ * take the scalar driver, which says so per trajectory as ever. */
+int euler_angles_sym_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
+{
+    long b, idx[DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES];
+    double t0, t_end, lfac, ip1, ip2, floor_;
+    int nl = 0, order, rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
+        return DERIVE_BAD_ARGS;
+    if (n_out < 2 || !derive_euler_angles_sym_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
+        || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
+        return euler_angles_sym_simulate_final_batch_taylor(n_batch, ins, ps, t_out, n_out, rtol, atol, max_steps,
+                pole_check, y_final, out_final, st);
+    /* the scalar driver's order and step constants (see derive_euler_angles_sym_taylor_solve_taylor) */
+    order = (int)ceil(-log(rtol > 0.0 ? rtol : atol) / 2.0) + 1;
+    if (order < 2)
+        order = 2;
+    if (order > 30)
+        order = 30;
+    lfac = -2.0 - 0.7 / (order - 1);
+    ip1 = 1.0 / (order - 1);
+    ip2 = 1.0 / order;
+    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
+    t0 = t_out[0];
+    t_end = t_out[n_out - 1];
+    for (b = 0; b < n_batch; ++b) {
+        double *y = y_final + b * euler_angles_sym_NY, *p = ps + b * euler_angles_sym_NP;
+        int i;
+        derive_euler_angles_sym_stats_init(st + b);
+        if (euler_angles_sym_init(ins + b * euler_angles_sym_NIN, p, y))
+            derive_euler_angles_sym_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_angles_sym_first_nonfinite(y, euler_angles_sym_NY));
+        else if (pole_check && !euler_angles_sym_pole_clear(y, p, pole_check)) {
+            derive_euler_angles_sym_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_euler_angles_sym_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+        }
+        else
+            for (i = 0; i < euler_angles_sym_NY; ++i)
+                if (!isfinite(y[i])) {
+                    derive_euler_angles_sym_fail(st + b, DERIVE_NONFINITE, t0, i);
+                    break;
+                }
+    }
+    for (b = 0; b <= n_batch; ++b) {
+        if (b < n_batch && st[b].status == DERIVE_OK)
+            idx[nl++] = b;
+        if (nl == DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES || (b == n_batch && nl > 0)) {
+            rc = derive_euler_angles_sym_taylor_lanes_group_taylor(idx, nl, ps, t0, t_end, order, lfac, ip1, ip2, floor_,
+                    rtol, max_steps, y_final, out_final, st);
+            if (rc == DERIVE_INTERRUPTED)
+                return derive_euler_angles_sym_rest_interrupted(idx[nl - 1] + 1, n_batch, st);
+            nl = 0;
+        }
+    }
+    for (b = 0; b < n_batch; ++b)
+        if (st[b].status != DERIVE_OK) {
+            status = st[b].status;
+            break;
+        }
+    return status;
+}
+#endif /* SIMULATE */

@@ -44,6 +44,11 @@ int euler_poisson_asym_simulate_checked_taylor(const double *in, double *p, cons
 int euler_poisson_asym_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
+/* The final-only batch (the last sample's state and outputs), as euler_poisson_asym_simulate_final_batch_*
+ * of euler_poisson_asym_solvers.h. */
+int euler_poisson_asym_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
 #endif
 
 #endif /* EULER_POISSON_ASYM_TAYLOR_H */

@@ -102,6 +102,13 @@ int euler_poisson_sym_gravity_general_simulate_checked_dop853(const double *in, 
 int euler_poisson_sym_gravity_general_simulate_batch_dop853(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, double h0, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
+/* The same N simulations with the last sample only: each integrated straight from t_out[0] to
+ * t_out[n_out-1] (the same steps), its state into y_final (NY per trajectory) and its outputs
+ * into out_final (NOBS per trajectory), beta canonical, alpha and gamma as they come (no
+ * unwrapping from sample to sample: for models whose alpha and gamma are states). */
+int euler_poisson_sym_gravity_general_simulate_final_batch_dop853(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
 
 /* rk4: classical Runge-Kutta, order 4, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out

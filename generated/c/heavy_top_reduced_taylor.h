@@ -44,6 +44,11 @@ int heavy_top_reduced_simulate_checked_taylor(const double *in, double *p, const
 int heavy_top_reduced_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
+/* The final-only batch (the last sample's state and outputs), as heavy_top_reduced_simulate_final_batch_*
+ * of heavy_top_reduced_solvers.h. */
+int heavy_top_reduced_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
 #endif
 
 #endif /* HEAVY_TOP_REDUCED_TAYLOR_H */

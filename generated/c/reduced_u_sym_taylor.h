@@ -44,6 +44,11 @@ int reduced_u_sym_simulate_checked_taylor(const double *in, double *p, const dou
 int reduced_u_sym_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
+/* The final-only batch (the last sample's state and outputs), as reduced_u_sym_simulate_final_batch_*
+ * of reduced_u_sym_solvers.h. */
+int reduced_u_sym_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
 #endif
 
 #endif /* REDUCED_U_SYM_TAYLOR_H */

@@ -789,6 +789,59 @@ int rigid_body_simulate_batch_dop853(long n_batch, const double *ins, double *ps
     }
     return status;
 }
+
+/* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
+ * the end only. The steps are those of the full grid's solve (its interior samples are dense
+ * output, which never changes a step), so the last state is bit for bit the full grid's last
+ * sample; only the angles' unwrapping from sample to sample is left out, which for a model whose
+ * alpha and gamma are states (continuous) moves the last sample by nothing in the usual case:
+ * the single sample gets beta's canonical range alone (rigid_body_outputs_checked of one sample). */
+static int derive_rigid_body_final_one_dop853(const double *in, double *p, const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, int pole_check, double *y, double *out, derive_stats *st)
+{
+    double t2[2], y2[2 * rigid_body_NY];
+    long m = n_out > 1 ? 2 : 1;
+    int rc;
+    t2[0] = t_out[0];
+    t2[1] = t_out[n_out - 1];
+    if (rigid_body_init(in, p, y2)) {
+        derive_rigid_body_stats_init(st);
+        return derive_rigid_body_fail(st, DERIVE_NONFINITE, t_out[0], derive_rigid_body_first_nonfinite(y2, rigid_body_NY));
+    }
+    if (pole_check && !rigid_body_pole_clear(y2, p, pole_check)) {
+        derive_rigid_body_stats_init(st);
+        return derive_rigid_body_fail(st, DERIVE_RANGE, t_out[0], -1);
+    }
+    rc = rigid_body_solve_dop853(y2, p, t2, m, rtol, atol, h0, max_steps, y2, st);
+    memcpy(y, y2 + (m - 1) * rigid_body_NY, sizeof(double) * rigid_body_NY);
+    if (rc == DERIVE_OK)
+        rc = rigid_body_outputs_checked(1, t2 + m - 1, y, p, out, st);
+    return rc;
+}
+
+int rigid_body_simulate_final_batch_dop853(long n_batch, const double *ins, double *ps,
+        const double *t_out, long n_out,
+        double rtol, double atol, double h0, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
+{
+    long b;
+    int rc, status = DERIVE_OK;
+    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
+        return DERIVE_BAD_ARGS;
+    for (b = 0; b < n_batch; ++b) {
+        if (!derive_rigid_body_times_ok(t_out, n_out)) {
+            derive_rigid_body_stats_init(st + b);
+            rc = derive_rigid_body_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        } else {
+            rc = derive_rigid_body_final_one_dop853(ins + b * rigid_body_NIN, ps + b * rigid_body_NP, t_out, n_out,
+                    rtol, atol, h0, max_steps, pole_check, y_final + b * rigid_body_NY, out_final + b * rigid_body_NOBS, st + b);
+        }
+        if (rc && !status)
+            status = rc;
+        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
+            return derive_rigid_body_rest_with(b + 1, n_batch, st, rc);
+    }
+    return status;
+}
 #endif /* SIMULATE */
 #endif /* DERIVE_WITH_DOP853 */
 

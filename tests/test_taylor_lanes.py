@@ -1,0 +1,169 @@
+"""The Taylor method's lanes driver (issue 20, "Batches"): ``<model>_simulate_lanes_batch_taylor``
+runs W trajectories at once (W from the CPU it was built for: ``-march=native``), every lane its
+own steps. Each trajectory's state, outputs, status and statistics are the scalar final-only
+driver's (built with the default flags) bit for bit, failing lanes included, and
+``derive.simulate_batch(..., outputs="final")`` with the Taylor method runs it."""
+import threading
+
+import numpy as np
+import pytest
+
+import derive
+from derive.methods.status import Status
+from derive.runtime.integrate import ModelKernel
+from derive.sim import simulation
+from derive.symbolic.formulations import OUTPUTS
+
+BASE = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
+        "simulate": {"t_end": 3.0, "samples": 5, "rtol": 1e-10, "atol": 1e-12, "method": "taylor"}}
+
+
+def scenes(n, seed=3, **simulate):
+    rng = np.random.default_rng(seed)
+    return [{**BASE, "simulate": {**BASE["simulate"], **simulate},
+             "initial": {"alpha": float(rng.uniform(-1, 1)), "beta": float(rng.uniform(0.5, 1.2)),
+                         "gamma": float(rng.uniform(-1, 1)), "alpha_dot": float(rng.uniform(-0.6, 0.6)),
+                         "beta_dot": float(rng.uniform(-0.5, 0.5)), "gamma_dot": float(rng.uniform(3.0, 9.0))}}
+            for _ in range(n)]
+
+
+def kernels(sc, formulation):
+    """(plan, description, scalar kernel (default flags), native kernel, driver arguments,
+    pole check) of a batch of scenes."""
+    bp = simulation.batch_plan(sc)
+    desc, scalar, args = bp.kernel(formulation)
+    pole = dict(bp.candidates).get(formulation, 0)
+    return bp, desc, scalar, ModelKernel.load(desc, bp.method, native=True), args, pole
+
+
+def same(a, b):
+    """Both drivers' (out, y, ps, stats) equal bit for bit: the statistics and the parameters of
+    every trajectory, the outputs and the state of those that succeeded (a failed one's are
+    not written: the caller raises)."""
+    assert a[3].tobytes() == b[3].tobytes()
+    assert np.array_equal(a[2], b[2], equal_nan=True)
+    ok = a[3]["status"] == 0
+    for x, y in zip(a[:2], b[:2]):
+        assert np.array_equal(x[ok], y[ok])
+
+
+@pytest.mark.parametrize("formulation", ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"])
+def test_lanes_are_the_scalar_driver_bit_for_bit(formulation):
+    sc = scenes(13, formulation=formulation)  # one group and a ragged one on any width
+    bp, desc, scalar, native, args, pole = kernels(sc, formulation)
+    assert native.lanes in (2, 4, 8) and scalar.lanes in (2, 4, 8)
+    ps = bp.params(desc)
+    want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
+    got = native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole)
+    assert len(set(want[3]["nstep"])) > 3  # the lanes of a group take different steps
+    assert (want[3]["status"] == 0).all()
+    same(want, got)
+    # the lanes driver of the default build (its narrower width) too
+    same(want, scalar.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+
+
+def test_failing_lanes_say_so_per_trajectory_while_the_others_finish():
+    sc = scenes(11, formulation="reduced-u", t_end=6.0)
+    bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
+    ps = bp.params(desc)
+    steps = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)[3]["nstep"]
+    budget = int(np.median(steps))  # the step budget spent by about half of them
+    args = list(args)
+    args[-1] = budget
+    inputs = bp.inputs.copy()
+    inputs[4, 8] = np.nan  # a start that is not finite (the init map says so)
+    inputs[7, 8] = 1e200  # a spin whose series overflow in the lane's first step
+    want = scalar.simulate_final_batch(inputs, ps, bp.t, args, pole)
+    got = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)
+    same(want, got)
+    st = want[3]
+    assert st["status"][4] == st["status"][7] == Status.NONFINITE
+    assert st["nfev"][4] == 0 and st["nfev"][7] == 1  # the init map; the lane's first step
+    assert (st["status"] == Status.MAX_STEPS).sum() >= 2
+    assert (st["status"] == 0).sum() >= 3
+
+
+def test_a_refused_start_stops_the_lanes_batch_as_the_scalar_one():
+    """A pole check that refuses a start: status RANGE, so the batch's next formulation runs."""
+    sc = scenes(6, formulation="reduced-u")
+    bp, desc, scalar, native, args, _ = kernels(sc, "reduced-u")
+    inputs = bp.inputs.copy()
+    inputs[3, 1] = 0.05  # beta near the pole: reduced-u's check refuses it
+    got = native.simulate_lanes_batch(inputs, bp.params(desc), bp.t, args, 1)
+    want = scalar.simulate_final_batch(inputs, bp.params(desc), bp.t, args, 1)
+    assert want[3]["status"][3] == Status.RANGE
+    assert got[3][3:].tobytes() == want[3][3:].tobytes()  # the refusal and the rest, as there
+
+
+def test_simulate_batch_runs_the_lanes_for_the_taylor_method():
+    sc = scenes(10, formulation="reduced-u", samples=41)
+    full = derive.simulate_batch(sc)
+    fin = derive.simulate_batch(sc, outputs="final")
+    assert fin.driver == "lanes" and fin.method == "taylor"
+    for name, _ in OUTPUTS:
+        assert np.array_equal(fin.outputs[name], np.array([getattr(r, name)[-1] for r in full])), name
+    assert np.array_equal(fin.state, np.array([r.state[-1] for r in full]))
+    assert np.array_equal(fin.nfev, [r.nfev for r in full])
+
+
+def test_a_failing_lane_is_named_as_the_full_batch_names_it():
+    sc = scenes(9, formulation="reduced-u", max_steps=12)
+    with pytest.raises(derive.IntegrationError) as full:
+        derive.simulate_batch(sc)
+    with pytest.raises(derive.IntegrationError) as fin:
+        derive.simulate_batch(sc, outputs="final")
+    assert str(fin.value) == str(full.value)
+
+
+def test_an_interrupt_stops_the_lanes():
+    """The interrupt flag, polled once per step of a group, set from another thread as a SIGINT
+    sets it: KeyboardInterrupt."""
+    sc = scenes(16, formulation="reduced-u", t_end=1e7, rtol=1e-13, atol=1e-15, max_steps=10**12)
+    bp, desc, _, native, args, pole = kernels(sc, "reduced-u")
+    if native._guard is None:
+        pytest.skip("the kernel was loaded outside the main thread: no guard")
+    timer = threading.Timer(0.2, native.lib[f"{desc.name}_interrupt_request"])
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            native.simulate_lanes_batch(bp.inputs, bp.params(desc), bp.t, args, pole)
+    finally:
+        timer.cancel()
+
+
+def test_the_width_is_the_cpus():
+    """W from the instruction sets of the build (-march=native for the lanes' library): 8 with
+    AVX-512, 4 with AVX, else 2; the default build (x86-64 baseline or another CPU) its own."""
+    from derive.runtime import cbuild
+
+    sc = scenes(2, formulation="reduced-u")
+    _, _, scalar, native, _, _ = kernels(sc, "reduced-u")
+    macros = cbuild._native_identity(tuple(cbuild.compiler()))
+    want = 8 if "__AVX512F__" in macros else 4 if "__AVX__" in macros else 2
+    assert native.lanes == want
+    assert scalar.lanes <= native.lanes
+
+
+@pytest.mark.parametrize("formulation", ["quaternion", "reduced-u"])
+def test_the_avx2_width_is_bit_for_bit_too(formulation):
+    """W = 4 (AVX, here AVX2 with FMA instructions available) on a CPU that would build 8: the
+    lanes' library built with the lanes' flags but -mavx2 -mfma instead of -march=native gives the
+    scalar driver's numbers (no fused multiply-add slips in: the quaternion's init map is where
+    gcc's straight-line vectoriser once fused one)."""
+    from derive.runtime import cbuild
+
+    if "__AVX2__" not in cbuild._native_identity(tuple(cbuild.compiler())):
+        pytest.skip("this CPU has no AVX2")
+    sc = scenes(11, formulation=formulation)
+    bp, desc, scalar, _, args, pole = kernels(sc, formulation)
+    sources = desc.c_sources()
+    unity = f"{desc.name}_taylor_unit.c"
+    sources[unity] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
+                                                             f"{desc.name}_taylor.c"))
+    flags = [*cbuild.DEFAULT_FLAGS, "-mavx2", "-mfma",
+             *(f for f in cbuild.NATIVE_FLAGS if f != "-march=native"), "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
+    avx2 = ModelKernel(desc, "taylor", cbuild.compile_library(f"{desc.name}_taylor_avx2", sources, unity, flags))
+    assert avx2.lanes == 4
+    ps = bp.params(desc)
+    same(scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole),
+         avx2.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
