@@ -10,7 +10,9 @@ Contract of an entry (:class:`Measure`):
 2. ``reads``: where the numbers come from, one of
 
    * ``"slot"``: an accumulator of ``templates/c/measures.c.j2`` (``slot``), updated by the
-     driver's hook after every accepted step, with the step's dense output at hand;
+     driver's hook after every accepted step, with the step's dense output at hand (DOP853's
+     polynomial, or a Taylor step's series: the window's flavour is the method family's
+     :func:`derive.methods.registry.measure_window`);
    * ``"stats"``: the solver's statistics record (``nfev``);
    * ``"final"``: the outputs at t_end (the output map, in C);
    * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min).
@@ -124,8 +126,8 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
             options={"integral": ("case", "", "which integral: each point's own ('case') or one "
                                   "named for every point")},
             choices={"integral": ("case", *(i.name for i in C_INTEGRALS))}),
-    Measure("nfev", "", "right-hand-side evaluations (the dense stages included, formed only on "
-            "the steps a search reads)", "stats"),
+    Measure("nfev", "", "right-hand-side evaluations (dop853: the dense stages included, formed "
+            "only on the steps a search reads; taylor: its steps, one jet each)", "stats"),
     Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
             "from the start alone: equal to a sampled run's modulo 2 pi)", "final"),
 )}
