@@ -569,7 +569,13 @@ def _build(spec: Spec) -> None:
 
 def measuring_methods() -> tuple[str, ...]:
     """The methods a sweep can run: those with a measure window
-    (:func:`derive.methods.registry.measure_window`), scene-visible ones only."""
+    (:func:`derive.methods.registry.measure_window`), scene-visible ones only.
+
+    Returns
+    -------
+    tuple of str
+        Their names, in the registry's order (``("dop853", "taylor")``).
+    """
     from derive.methods.registry import INTERNAL_METHODS, compiled_methods, measure_window
 
     return tuple(m for m in compiled_methods() if m not in INTERNAL_METHODS and measure_window(m))

@@ -238,7 +238,22 @@ def source(desc, method: str) -> str:
 def driver_args(method: str, rtol: float, atol: float, max_steps: int) -> tuple:
     """The measured driver's arguments for a tolerance-driven ``method``, in its C order
     (:data:`derive.methods.registry.DRIVER_PARAMS`: DOP853's ``rtol, atol, h0, max_steps``, the
-    Taylor method's ``rtol, atol, max_steps``; ``h0`` = 0, the driver's own first step)."""
+    Taylor method's ``rtol, atol, max_steps``; ``h0`` = 0, the driver's own first step).
+
+    Parameters
+    ----------
+    method : str
+        A compiled method with a measure window (:func:`derive.methods.registry.measure_window`).
+    rtol, atol : float
+        The tolerances.
+    max_steps : int
+        The step budget.
+
+    Returns
+    -------
+    tuple
+        The values, in the order of the method's C parameters after ``n_out``.
+    """
     from derive.methods.registry import method as compiled
 
     values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps}
