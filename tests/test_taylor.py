@@ -395,9 +395,9 @@ def test_nearly_symmetric_body_with_taylor(I3, formulation):
     assert errs[1][1] <= errs[0][1] / 5
 
 
-def test_a_sweep_with_taylor_is_refused_in_one_line(tmp_path):
-    """The sweep measures read dop853's dense polynomial; events on the Taylor series are not
-    there yet: a sweep naming taylor is bad input (one line naming the key), not a traceback."""
+def test_a_sweep_file_naming_taylor_runs_it(tmp_path):
+    """A sweep file whose scene names taylor measures on the Taylor series (once refused: the
+    measures read only dop853's dense polynomial; tests/test_sweep_taylor.py checks the values)."""
     scene = (SCENES / "sleeping_top.toml").read_text()
     body = "\n".join(f"[scene.{line[1:]}" if line.startswith("[") else
                      ("scene." + line if line.startswith("title") else line)
@@ -405,6 +405,10 @@ def test_a_sweep_with_taylor_is_refused_in_one_line(tmp_path):
     spec = tmp_path / "sweep.toml"
     spec.write_text(body.replace("[scene.simulate]", '[scene.simulate]\nmethod = "taylor"')
                     + '\n[vary]\ninitial.beta = { from = 0.1, to = 0.2, num = 2 }\n'
-                    + '[measure]\nnames = ["beta_max"]\n')
-    with pytest.raises(derive.SceneError, match=r"scene\.simulate\.method: .*not taylor"):
-        derive.sweep(spec)
+                    + '[measure]\nnames = ["beta_max", "nfev"]\n')
+    from derive.sweeps.engine import load
+
+    assert load(str(spec)).method == "taylor"
+    res = derive.sweep(str(spec), processes=1)
+    assert (res.status == "ok").all() and np.isfinite(res.measures["beta_max"]).all()
+    assert (res.measures["beta_max"] >= res.params["initial.beta"]).all()

@@ -65,6 +65,13 @@ class Method:
     def params(self) -> tuple[tuple[str, str], ...]:
         return DRIVER_PARAMS[self.driver]
 
+    @property
+    def measure_window(self) -> str | None:
+        """What a sweep's measures search on (:func:`measure_window`): ``"stages"``, the dense
+        polynomial of an adaptive pair formed from its stages; None for a fixed-step or an
+        implicit method (no dense output between its steps that follows the tolerance)."""
+        return "stages" if self.driver == "adaptive" and self.tableau.dense else None
+
 
 METHODS: dict[str, Method] = {m.name: m for m in (
     Method("dop853", DOP853, "adaptive",
@@ -122,6 +129,25 @@ def tolerance_driven(name: str) -> bool:
     """True when the compiled method ``name`` steps by a tolerance (rtol, atol, max_steps), not by
     a given step h."""
     return compiled_methods()[name].driver in TOLERANCE_DRIVERS
+
+
+def measure_window(name: str) -> str | None:
+    """The flavour of the sweep measures' window for the compiled method ``name``
+    (``templates/c/measures.c.j2``): what its dense output between step ends is evaluated from,
+    as the method's family declares it — ``"stages"`` (an adaptive Runge–Kutta pair's dense
+    polynomial, formed from the step's stages where a search reads it), ``"series"`` (a Taylor
+    step's series, the solver's own) — or None: the method cannot run a sweep's measures.
+
+    Parameters
+    ----------
+    name : str
+        A compiled method (:func:`compiled_methods`).
+
+    Returns
+    -------
+    str or None
+    """
+    return getattr(compiled_methods()[name], "measure_window", None)
 
 
 def method_reason(name: str, formulation: str, effects) -> str | None:

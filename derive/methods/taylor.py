@@ -64,6 +64,12 @@ class TaylorMethod:
     def params(self) -> tuple[tuple[str, str], ...]:
         return (("double", "rtol"), ("double", "atol"), ("long", "max_steps"))
 
+    @property
+    def measure_window(self) -> str:
+        """What a sweep's measures search on (:func:`derive.methods.registry.measure_window`):
+        the step's series, the dense output the solver has anyway."""
+        return "series"
+
     def order(self, rtol: float, atol: float) -> int:
         """The order the C driver takes for these tolerances (the same formula, in Python)."""
         eps = rtol if rtol > 0 else atol

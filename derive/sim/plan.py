@@ -173,15 +173,17 @@ def make(scene: Scene) -> Plan:
                 candidates)
 
 
-def auto_method(scene: Scene, desc: catalogue.Description) -> str:
+def auto_method(scene: Scene, desc: catalogue.Description, samples: int | None = None) -> str:
     """The method ``method = "auto"`` runs on the model ``desc``: the one of
     :data:`derive.methods.costs.CHOICES` that the cost model (:mod:`derive.methods.costs`)
-    finds cheapest at the scene's tolerance, output count and span."""
+    finds cheapest at the scene's tolerance, output count and span. ``samples``: the output
+    times the run keeps when they are not the scene's (a sweep keeps t = 0 and t_end)."""
     if desc.jet_weight <= 0:  # no Taylor kernel: nothing to weigh
         return costs.CHOICES[0]
     s = scene.simulate
     work = costs.Work(rhs_cost=desc.cost, jet_weight=desc.jet_weight, output_cost=desc.output_cost,
-                      ny=len(desc.states), n_out=len(desc.outputs), samples=s.samples,
+                      ny=len(desc.states), n_out=len(desc.outputs),
+                      samples=s.samples if samples is None else samples,
                       span=s.t_end * fastest_rate(scene))
     return costs.choose(work, s.rtol, s.atol)
 

@@ -36,7 +36,11 @@ Decisions (documented here once):
   (|sin beta| >= 0.1 all along) and euler-poisson elsewhere. Every point's outcome depends on
   its own numbers only, never on its chunk. ``SweepResult.formulation`` says which
   formulation ran each point. A singular formulation named in the scene is refused. The
-  method must be adaptive (dop853): the measures read its dense output.
+  method must have a dense output that follows the tolerance (its family's measure window,
+  :func:`derive.methods.registry.measure_window`): dop853 (its dense polynomial) or taylor (the
+  step's series); ``auto`` takes the cost model's choice for the first candidate's model at
+  the sweep's tolerance, t_end and rates (the representative point's), and dop853 if a
+  candidate has no Taylor kernel.
 * The scene's ``samples`` is not used: a sweep keeps the outputs at t_end only (final_state).
 * The random points are drawn in the calling process (``numpy.random.default_rng(seed)``, one
   ``uniform`` per key, in the file's order), so a seed gives the same points whatever runs them.
@@ -425,7 +429,9 @@ def _build(spec: Spec) -> None:
     from derive.symbolic.formulations import REGISTRY as FORMS
     from derive.sim.scene import TRIANGLE_SLACK, load_scene
     from derive.sim.simulation import choose_method, inputs_of
-    from derive.methods.registry import METHODS
+    from derive.sim.inputs import AUTO
+    from derive.sim.plan import auto_method
+    from derive.methods.registry import DEFAULT_METHOD, compiled_methods, measure_window
 
     base, n, cols = spec.scene, spec.n, spec.columns
     src = spec.source
@@ -503,9 +509,10 @@ def _build(spec: Spec) -> None:
         raise _scene_error(src, exc, "scene.") from None
 
     method = choose_method(rep)
-    if method not in METHODS or METHODS[method].driver != "adaptive":  # (taylor: not yet)
-        _fail(src, "scene.simulate.method", f"a sweep measures on the dense output of an adaptive "
-                                            f"method (dop853), not {method}")
+    if method not in compiled_methods() or measure_window(method) is None:
+        _fail(src, "scene.simulate.method", f"a sweep measures on the dense output of a "
+                                            f"tolerance-driven method ({', '.join(measuring_methods())}"
+                                            f" or auto), not {method}")
     form = rep.simulate.formulation
     if form == "auto":
         plan = sweep_plan(symmetric, needed, method)
@@ -516,6 +523,13 @@ def _build(spec: Spec) -> None:
         plan = ((form, 0),)
     descs = [catalogue.describe((f, symmetric, needed)) for f, _ in plan]
     desc = descs[0]
+    if rep.simulate.method == AUTO:
+        # the cost model's method for the first candidate's model, at the sweep's tolerance and
+        # span (the representative point's), for every point and every fallback candidate: one
+        # method per sweep, as a batch takes one
+        method = auto_method(rep, desc, samples=2)  # a sweep keeps t = 0 and t_end
+        if any(d.jet_weight <= 0 for d in descs):  # a candidate without a Taylor kernel
+            method = DEFAULT_METHOD
     spec.key, spec.method, spec.pole_check = (plan[0][0], symmetric, needed), method, plan[0][1]
 
     # inputs
@@ -551,6 +565,20 @@ def _build(spec: Spec) -> None:
     com = [values.get(c, zero) for c in ("cx", "cy")] + [values.get("cz", values.get("l", zero))]
     spec.general = np.column_stack([I1, I2, I3, values.get("M", zero), values.get("g", zero), *com])
     spec.damping = np.asarray(values.get("c", zero), dtype=float)
+
+
+def measuring_methods() -> tuple[str, ...]:
+    """The methods a sweep can run: those with a measure window
+    (:func:`derive.methods.registry.measure_window`), scene-visible ones only.
+
+    Returns
+    -------
+    tuple of str
+        Their names, in the registry's order (``("dop853", "taylor")``).
+    """
+    from derive.methods.registry import INTERNAL_METHODS, compiled_methods, measure_window
+
+    return tuple(m for m in compiled_methods() if m not in INTERNAL_METHODS and measure_window(m))
 
 
 def _params(desc, values: dict, n: int) -> np.ndarray:
@@ -1330,7 +1358,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
         ms.MeasureKernel.load(d, sp.method)
     s = sp.scene.simulate
     t = np.array([0.0, s.t_end])
-    args = (s.rtol, s.atol, 0.0, s.max_steps)
+    args = ms.driver_args(sp.method, s.rtol, s.atol, s.max_steps)
     config = ms.config_of(sp.measures, sp.options)
     run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
     processes = processes or _cpus()

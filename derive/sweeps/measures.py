@@ -10,7 +10,9 @@ Contract of an entry (:class:`Measure`):
 2. ``reads``: where the numbers come from, one of
 
    * ``"slot"``: an accumulator of ``templates/c/measures.c.j2`` (``slot``), updated by the
-     driver's hook after every accepted step, with the step's dense output at hand;
+     driver's hook after every accepted step, with the step's dense output at hand (DOP853's
+     polynomial, or a Taylor step's series: the window's flavour is the method family's
+     :func:`derive.methods.registry.measure_window`);
    * ``"stats"``: the solver's statistics record (``nfev``);
    * ``"final"``: the outputs at t_end (the output map, in C);
    * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min).
@@ -124,8 +126,8 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
             options={"integral": ("case", "", "which integral: each point's own ('case') or one "
                                   "named for every point")},
             choices={"integral": ("case", *(i.name for i in C_INTEGRALS))}),
-    Measure("nfev", "", "right-hand-side evaluations (the dense stages included, formed only on "
-            "the steps a search reads)", "stats"),
+    Measure("nfev", "", "right-hand-side evaluations (dop853: the dense stages included, formed "
+            "only on the steps a search reads; taylor: its steps, one jet each)", "stats"),
     Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
             "from the start alone: equal to a sampled run's modulo 2 pi)", "final"),
 )}
@@ -210,18 +212,52 @@ def read(names, desc, res, stats, final) -> dict:
 
 
 def source(desc, method: str) -> str:
-    """``<name>_measures.c`` for a model and method (rendered from templates/c/measures.c.j2)."""
+    """``<name>_measures.c`` for a model and method (rendered from templates/c/measures.c.j2, in
+    the flavour of the method's measure window: :func:`derive.methods.registry.measure_window`)."""
     from derive.codegen.render import environment
-    from derive.methods.registry import METHODS
+    from derive.methods.registry import METHODS, measure_window, method as compiled
     from derive.codegen.solvers import _method_context
 
+    window = measure_window(method)
+    if window is None:
+        raise ValueError(f"measures need a method with a dense output between its steps, not {method}")
     idx = {f"i_{n}": desc.outputs.index(n) for n in READS}
     idx["i_L"] = [desc.outputs.index(f"L{k}") for k in (1, 2, 3)]
     idx["i_n"] = [desc.outputs.index(f"n{k}") for k in (1, 2, 3)]
-    m = _method_context(METHODS[method])  # the stage array's size, as the driver declares it
+    params = compiled(method).params
+    ctx = {"decl": ", ".join(f"{ty} {nm}" for ty, nm in params),
+           "args": ", ".join(nm for _, nm in params)}
+    if window == "stages":
+        m = _method_context(METHODS[method])  # the stage array's size, as the driver declares it
+        ctx.update(n_k=m["n_k"], n_stages=m["s"], n_dense=len(m["dense"]["stages"]))
     return environment().get_template("c/measures.c.j2").render(
-        prefix=desc.name, method=method, slots=SLOTS, config=CONFIG, nip=len(INTEGRAL_ROW), n_k=m["n_k"],
-        n_stages=m["s"], n_dense=len(m["dense"]["stages"]), has_beta=desc.has_angles, **idx)
+        prefix=desc.name, method=method, window=window, slots=SLOTS, config=CONFIG,
+        nip=len(INTEGRAL_ROW), has_beta=desc.has_angles, **ctx, **idx)
+
+
+def driver_args(method: str, rtol: float, atol: float, max_steps: int) -> tuple:
+    """The measured driver's arguments for a tolerance-driven ``method``, in its C order
+    (:data:`derive.methods.registry.DRIVER_PARAMS`: DOP853's ``rtol, atol, h0, max_steps``, the
+    Taylor method's ``rtol, atol, max_steps``; ``h0`` = 0, the driver's own first step).
+
+    Parameters
+    ----------
+    method : str
+        A compiled method with a measure window (:func:`derive.methods.registry.measure_window`).
+    rtol, atol : float
+        The tolerances.
+    max_steps : int
+        The step budget.
+
+    Returns
+    -------
+    tuple
+        The values, in the order of the method's C parameters after ``n_out``.
+    """
+    from derive.methods.registry import method as compiled
+
+    values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps}
+    return tuple(values[name] for _, name in compiled(method).params)
 
 
 def c_sources(desc, method: str) -> dict[str, str]:
@@ -242,9 +278,13 @@ class MeasureKernel:
     def __init__(self, desc, method, lib):
         self.desc, self.method, self.lib = desc, method, lib
         self.ny, self.nout = len(desc.states), len(desc.outputs)
+        from derive.methods.registry import method as compiled
+
         vp, cl, cd, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_double, ctypes.c_int
+        ctype = {"double": cd, "long": cl, "int": ci}
         fn = getattr(lib, f"{desc.name}_measure_batch_{method}")
-        fn.argtypes = [cl, vp, vp, vp, cl, cd, cd, cd, cl, ci, vp, vp, vp, vp, vp, vp]
+        fn.argtypes = [cl, vp, vp, vp, cl, *(ctype[ty] for ty, _ in compiled(method).params),
+                       ci, vp, vp, vp, vp, vp, vp]
         fn.restype = ctypes.c_int
         self._fn = fn
         guard = getattr(lib, f"{desc.name}_interrupt_guard")
@@ -260,17 +300,23 @@ class MeasureKernel:
     def load(cls, desc, method: str) -> "MeasureKernel":
         """Compiled once per machine (the compile cache), loaded once per process."""
         from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-        from derive.methods.registry import METHODS
+        from derive.methods.registry import measure_window
 
-        if METHODS[method].driver != "adaptive":
-            raise ValueError(f"measures need an adaptive method, not {method}")
+        window = measure_window(method)
+        if window is None:
+            raise ValueError(f"measures need a method with a dense output between its steps, not {method}")
         key = (desc.folder, desc.name, method)
         kernel = cls._cache.get(key)
         if kernel is None:
             sources = c_sources(desc, method)
+            # a Taylor method's solver is its own file, after the solvers (the interrupt flag,
+            # the bookkeeping and the measuring flag are theirs)
+            family = [f"{desc.name}_taylor.c"] if window == "series" else []
+            if family and family[0] not in sources:
+                raise ValueError(f"method {method!r} was not generated for the model {desc.name}")
             unity = f"{desc.name}_{method}_measures_unit.c"
             sources[unity] = "".join(f'#include "{n}"\n' for n in (
-                f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_measures.c"))
+                f"{desc.name}.c", f"{desc.name}_solvers.c", *family, f"{desc.name}_measures.c"))
             flags = list(DEFAULT_FLAGS) + ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}",
                                            "-DDERIVE_MEASURES"]
             lib = compile_library(f"{desc.name}_{method}_measures", sources, unity, flags)
@@ -279,7 +325,7 @@ class MeasureKernel:
 
     def run(self, inputs, ps, t, args, config, integral=None, pole_check: int = 0):
         """(res (N, len(SLOTS)), out (N, NOBS, n), stats (N,)) for inputs (N, NIN), ps (N, NP),
-        output times t, the driver's arguments (rtol, atol, h0, max_steps) and the per-point
+        output times t, the driver's arguments (:func:`driver_args`) and the per-point
         ``integral_rows`` (None: no integral, integral_drift NaN). ``pole_check``: the driver's
         check of each start (:func:`derive.sim.auto.pole_mode`; 0 none): a start it refuses
         has status RANGE and NaN measures, and the other points run on."""

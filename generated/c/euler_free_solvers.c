@@ -120,10 +120,13 @@ static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_st
  * sets *dense) only where a measure needs it. Returns 0 or the rhs's code (time in *t_rc). A
  * build without the macro is exactly the plain solver. */
 #ifdef DERIVE_MEASURES
-static int derive_euler_free_measuring = 0;
+static int derive_euler_free_measuring = 0;  /* (read by the Taylor solver too: euler_free_taylor.c) */
+/* (where an adaptive driver is compiled: a Taylor unit's measures define its own hook) */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 static int euler_free_measure_step(double t, double h, const double *y, const double *y_new,
         const double *p, double k[][euler_free_NY], double cont[7][euler_free_NY], int *dense,
         derive_stats *st, double *t_rc);
+#endif
 #endif
 #ifdef DERIVE_EULER_FREE_SIMULATE
 

@@ -324,6 +324,14 @@ static int derive_heavy_top_reduced_taylor_times_ok(const double *t_out, long n_
 }
 #endif
 
+#ifdef DERIVE_MEASURES
+/* The measures' hook (derive.sweep: heavy_top_reduced_measures.c, rendered at run time, defines it): while
+ * derive_heavy_top_reduced_measuring is set, the solver hands it every step (start t, length h, the states' series
+ * u[i][0..order], the end state), the series being the dense output the measures search. */
+static void heavy_top_reduced_measure_series(double t, double h, int order, double u[][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1],
+        const double *y_new, const double *p);
+#endif
+
 /* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
  * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_heavy_top_reduced_taylor_eval(double u[][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
@@ -485,6 +493,10 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
         }
         if ((i = derive_heavy_top_reduced_taylor_eval(u, order, h, y)) >= 0)
             return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, tn, i);
+#ifdef DERIVE_MEASURES
+        if (derive_heavy_top_reduced_measuring)
+            heavy_top_reduced_measure_series(t, h, order, u, y, p);
+#endif
         if (k_out < n_out && t_out[k_out] == tn) {
             memcpy(y_out + k_out * heavy_top_reduced_NY, y, sizeof y);
             ++k_out;

@@ -120,10 +120,13 @@ static int derive_heavy_top_rest_interrupted(long from, long n_batch, derive_sta
  * sets *dense) only where a measure needs it. Returns 0 or the rhs's code (time in *t_rc). A
  * build without the macro is exactly the plain solver. */
 #ifdef DERIVE_MEASURES
-static int derive_heavy_top_measuring = 0;
+static int derive_heavy_top_measuring = 0;  /* (read by the Taylor solver too: heavy_top_taylor.c) */
+/* (where an adaptive driver is compiled: a Taylor unit's measures define its own hook) */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 static int heavy_top_measure_step(double t, double h, const double *y, const double *y_new,
         const double *p, double k[][heavy_top_NY], double cont[7][heavy_top_NY], int *dense,
         derive_stats *st, double *t_rc);
+#endif
 #endif
 #ifdef DERIVE_HEAVY_TOP_SIMULATE
 

@@ -120,10 +120,13 @@ static int derive_reduced_u_sym_gravity_rest_interrupted(long from, long n_batch
  * sets *dense) only where a measure needs it. Returns 0 or the rhs's code (time in *t_rc). A
  * build without the macro is exactly the plain solver. */
 #ifdef DERIVE_MEASURES
-static int derive_reduced_u_sym_gravity_measuring = 0;
+static int derive_reduced_u_sym_gravity_measuring = 0;  /* (read by the Taylor solver too: reduced_u_sym_gravity_taylor.c) */
+/* (where an adaptive driver is compiled: a Taylor unit's measures define its own hook) */
+#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 static int reduced_u_sym_gravity_measure_step(double t, double h, const double *y, const double *y_new,
         const double *p, double k[][reduced_u_sym_gravity_NY], double cont[7][reduced_u_sym_gravity_NY], int *dense,
         derive_stats *st, double *t_rc);
+#endif
 #endif
 #ifdef DERIVE_REDUCED_U_SYM_GRAVITY_SIMULATE
 

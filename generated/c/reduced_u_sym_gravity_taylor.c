@@ -271,6 +271,14 @@ static int derive_reduced_u_sym_gravity_taylor_times_ok(const double *t_out, lon
 }
 #endif
 
+#ifdef DERIVE_MEASURES
+/* The measures' hook (derive.sweep: reduced_u_sym_gravity_measures.c, rendered at run time, defines it): while
+ * derive_reduced_u_sym_gravity_measuring is set, the solver hands it every step (start t, length h, the states' series
+ * u[i][0..order], the end state), the series being the dense output the measures search. */
+static void reduced_u_sym_gravity_measure_series(double t, double h, int order, double u[][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1],
+        const double *y_new, const double *p);
+#endif
+
 /* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
  * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_reduced_u_sym_gravity_taylor_eval(double u[][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
@@ -432,6 +440,10 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
         }
         if ((i = derive_reduced_u_sym_gravity_taylor_eval(u, order, h, y)) >= 0)
             return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, tn, i);
+#ifdef DERIVE_MEASURES
+        if (derive_reduced_u_sym_gravity_measuring)
+            reduced_u_sym_gravity_measure_series(t, h, order, u, y, p);
+#endif
         if (k_out < n_out && t_out[k_out] == tn) {
             memcpy(y_out + k_out * reduced_u_sym_gravity_NY, y, sizeof y);
             ++k_out;
