@@ -185,6 +185,9 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         fns["derive_final"] = lambda: derive.simulate_batch(scenes, outputs="final")
     except (TypeError, ValueError):  # a derive without the outputs option
         pass
+    if "derive_final" in fns and hasattr(derive.prepare(scenes[0]), "run_batch"):
+        prepared, initial = _prepared_batch(scenes)
+        fns["derive_prepared_final"] = lambda: prepared.run_batch(initial=initial)
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
     best = {k: math.inf for k in fns}
     for _ in range(3 if len(scenes) >= 500 else 5):
@@ -203,6 +206,8 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     out["ratio_full_vs_grid"] = best["derive_full"] / best["heyoka_grid"]
     if "derive_final" in best:
         out["ratio_final_vs_final"] = best["derive_final"] / best["heyoka_final"]
+    if "derive_prepared_final" in best:
+        out["ratio_prepared_final_vs_final"] = best["derive_prepared_final"] / best["heyoka_final"]
     if "derive_final" in best and data["simulate"].get("method") != "taylor":
         out.update(_lanes_race(scenes, prob, probs, ref, rtol))
     return out
@@ -219,7 +224,10 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
     _, final_run, _ = heyoka_batch(prob, probs, m["rtol"])
     ran = derive.simulate_batch(taylor, outputs="final")  # warm: compile, load
-    fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"), "heyoka": final_run}
+    prepared, initial = _prepared_batch(taylor)
+    prepared.run_batch(initial=initial)
+    fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
+           "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
     final_run()
     best = {k: math.inf for k in fns}
     for _ in range(3 if len(scenes) >= 500 else 5):
@@ -231,7 +239,21 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
             "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
             "heyoka_final_lanes_per_trajectory": best["heyoka"] / n,
-            "ratio_lanes_vs_final": best["derive"] / best["heyoka"]}
+            "ratio_lanes_vs_final": best["derive"] / best["heyoka"],
+            "derive_prepared_lanes_per_trajectory": best["derive_prepared"] / n,
+            "ratio_prepared_lanes_vs_final": best["derive_prepared"] / best["heyoka"]}
+
+
+def _prepared_batch(scenes: list[dict]):
+    """(the first scene prepared, {initial key: array over the scenes}) for the keys of
+    ``[initial]`` that differ among them: ``Prepared.run_batch``'s arguments for the same
+    trajectories (the scenes differ only there: :func:`derive.bench.targets.batch_scenes`)."""
+    import derive
+
+    first = scenes[0]["initial"]
+    varying = [k for k in first if any(d["initial"][k] != first[k] for d in scenes)]
+    return (derive.prepare(scenes[0]),
+            {k: np.array([float(d["initial"][k]) for d in scenes]) for k in varying})
 
 
 def fixed_cost(cfg, fams: list[str]) -> dict:

@@ -19,7 +19,11 @@ def _lanes_line(ba: dict) -> str:
     return (f" With the Taylor method (error {_e(ba['lanes_derive_error'])}; driver `{ba['lanes_driver']}`), "
             f"`outputs=\"final\"` {_t(ba['derive_lanes_per_trajectory'])} per trajectory against heyoka's final "
             f"states at tol {ba['lanes_heyoka_tol']:.3g} (error {_e(ba['lanes_heyoka_error'])}) "
-            f"{_t(ba['heyoka_final_lanes_per_trajectory'])}: **{ba['ratio_lanes_vs_final']:.3g}×**.")
+            f"{_t(ba['heyoka_final_lanes_per_trajectory'])}: **{ba['ratio_lanes_vs_final']:.3g}×**"
+            + (f"; the same trajectories as arrays, `derive.prepare(scene).run_batch(initial=...)` (no scene "
+               f"read per trajectory) {_t(ba['derive_prepared_lanes_per_trajectory'])}: "
+               f"**{ba['ratio_prepared_lanes_vs_final']:.3g}×**" if "ratio_prepared_lanes_vs_final" in ba else "")
+            + ".")
 
 
 def _t(seconds) -> str:
@@ -244,6 +248,9 @@ def peers_section(results: dict) -> list[str]:
                  f"{_t(ba['derive_final_per_trajectory'])} per trajectory against heyoka's `propagate_until` "
                  f"t_end (final states only) {_t(ba['heyoka_final_per_trajectory'])}: "
                  f"**{ba['ratio_final_vs_final']:.3g}×**; " if "derive_final_per_trajectory" in ba else "")
+        if "ratio_prepared_final_vs_final" in ba:
+            final += (f"as arrays, `derive.prepare(scene).run_batch(initial=...)` "
+                      f"{_t(ba['derive_prepared_final_per_trajectory'])}: **{ba['ratio_prepared_final_vs_final']:.3g}×**; ")
         L += [f"### Batch of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}])", "",
               f"derive at rtol {ba['rtol']:g} (error {_e(ba['derive_error'])} on the reference scene), heyoka's "
               f"batch mode (`taylor_adaptive_batch`, {ba['lanes']} SIMD lanes, one trajectory per lane) at tol "

@@ -522,6 +522,10 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch(..., outputs=\"final\")` / "
                      f"heyoka batch mode ({ba['lanes']} lanes) `propagate_until`", "batch_vs_heyoka",
                      ba.get("ratio_final_vs_final")))
+        if "ratio_prepared_lanes_vs_final" in ba:
+            rows.append((f"batch of {ba['n']}, per trajectory, Taylor: `derive.prepare(...).run_batch(...)` "
+                         f"(final, SIMD lanes) / heyoka batch `propagate_until` at equal error", "batch_vs_heyoka",
+                         ba.get("ratio_prepared_lanes_vs_final")))
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch` (every output, {ba['samples']} "
                      f"samples) / heyoka batch `propagate_grid`", "batch_vs_heyoka", ba.get("ratio_full_vs_grid")))
     fc = pe.get("fixed_cost") or {}

@@ -125,8 +125,15 @@ def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
     ``outputs`` (``"final"`` or a sequence of output names, see the module). None for no scenes."""
     final, names = _selection(outputs)
     bp = simulation.batch_plan(scenes, **overrides)
-    if bp is None:
-        return None
+    return None if bp is None else run_plan(bp, final, names)
+
+
+def run_plan(bp, final: bool, names: tuple) -> BatchResult:
+    """Run a batch plan (:class:`derive.sim.simulation.BatchPlan`, or a prepared scene's:
+    :meth:`derive.sim.prepared.Prepared.run_batch`) keeping ``names`` at every sample, or at
+    the last (``final``; see :func:`_selection`): its candidate formulations in turn until
+    none of the trajectories' starts is refused, by the full, the final-only or the lanes
+    driver."""
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
         driver = "full"
@@ -193,7 +200,7 @@ def _run(bp, desc, kernel, args, pole_check, final, names):
     pole_error = None
     for s in range(0, nb, chunk):
         e = min(nb, s + chunk)
-        out, y, _, st = kernel.simulate_batch(bp.inputs[s:e], bp.params(desc, scs[s:e]), t, args, pole_check,
+        out, y, _, st = kernel.simulate_batch(bp.inputs[s:e], bp.params(desc, slice(s, e)), t, args, pole_check,
                                               buffers=work)
         if (st["status"] == _RANGE).any():
             return True, st, s

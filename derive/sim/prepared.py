@@ -2,9 +2,12 @@
 
 ``derive.prepare(scene)`` gives a :class:`Prepared`; its :meth:`~Prepared.run` makes the C call of
 the plan (:mod:`derive.sim.plan`) with no validation of the scene, no look-up of the model and
-no derivation, optionally with new initial values or parameters of the same shape.
+no derivation, optionally with new initial values or parameters of the same shape;
+:meth:`~Prepared.run_batch` runs N such variations in one batch call (arrays of initial values
+and parameters, checked as arrays: no scene per trajectory).
 
-Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`.
+Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`,
+:class:`derive.sim.batch.BatchResult`.
 """
 from __future__ import annotations
 
@@ -13,9 +16,11 @@ import math
 import numpy as np
 
 from derive.errors import SceneError
-from derive.sim import plan, simulation
+from derive.methods.registry import tolerance_driven
+from derive.sim import batch, plan, simulation
+from derive.sim.inputs import params_of
 from derive.sim.scene import load_scene
-from derive.symbolic.formulations import INPUT_NAMES
+from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
@@ -75,6 +80,43 @@ class Prepared:
                 _finite(self.plan.scene.source, f"params.{name}", value)
         return simulation.run(self.plan, inputs, params)
 
+    def run_batch(self, initial=None, params=None, outputs="final"):
+        """Run the prepared scene N times in one batch call, trajectory b with the b-th entry of
+        every array given: what ``derive.simulate_batch`` gives for N scenes that differ from
+        this one only in those numbers, without reading N scenes.
+
+        Parameters
+        ----------
+        initial : dict, optional
+            Keys as :meth:`run` takes them, each a number (the same for every trajectory) or
+            an array of N numbers (``omega``: three numbers or an (N, 3) array).
+        params : dict, optional
+            The model's parameters by name (as :meth:`run`), numbers or arrays of N.
+        outputs : str or sequence of str
+            ``"final"`` (every output at the last sample) or output names kept at every
+            sample, as ``derive.simulate_batch`` takes them.
+
+        Returns
+        -------
+        derive.sim.batch.BatchResult
+            One entry per trajectory, N the length of the arrays (1 when every value is a
+            number). The formulations tried are this scene's plan's (:attr:`plan`), kept to
+            those every start suits (a singular formulation's clearance of the poles at the
+            start, :func:`derive.symbolic.formulations.starts_accepted`), with the batch's
+            pole check in C sending the whole batch to the next as ``simulate_batch`` does.
+
+        Raises
+        ------
+        SceneError
+            An unknown key, a value that is not a finite number or an array of them, arrays
+            of different lengths; a fixed-step method without ``simulate.h`` (its default
+            step depends on each start); no formulation of the plan that suits every start.
+        IntegrationError
+            Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
+        """
+        final, names = batch._selection(outputs)
+        return batch.run_plan(_PreparedBatch.of(self, initial or {}, params or {}), final, names)
+
     def _inputs(self, initial) -> np.ndarray:
         source = self.plan.scene.source
         inputs = self.plan.inputs.copy()
@@ -98,3 +140,84 @@ def _finite(source: str, key: str, value) -> float:
             or not math.isfinite(float(value)):
         raise SceneError(f"{source}: {key}: must be a finite number, not {value!r}")
     return float(value)
+
+
+def _column(source: str, key: str, value, width: int = 1) -> np.ndarray:
+    """A checked value of a prepared batch: finite float64 of shape () or (N,) ((width,) or
+    (N, width) when ``width`` > 1); SceneError naming ``key`` otherwise."""
+    a = None if isinstance(value, str) else np.asarray(value)
+    shapes = (0, 1) if width == 1 else (1, 2)
+    if a is None or a.dtype.kind not in "iuf" or a.ndim not in shapes or (width > 1 and a.shape[-1] != width):
+        what = "a number or an array of numbers" if width == 1 else "three numbers or an (N, 3) array"
+        raise SceneError(f"{source}: {key}: must be {what}, not {value!r:.60}")
+    a = a.astype(np.float64)
+    finite = np.isfinite(a) if width == 1 else np.isfinite(a).all(axis=-1)
+    if not finite.all():
+        where = f"[{int(np.flatnonzero(~finite.reshape(-1))[0])}]" if a.ndim == shapes[1] else ""
+        raise SceneError(f"{source}: {key}{where}: must be finite")
+    return a
+
+
+class _PreparedBatch(simulation.BatchPlan):
+    """A batch plan of a prepared scene (:meth:`Prepared.run_batch`): every trajectory is the
+    prepared scene but for the numbers given as arrays; their parameter vectors are the
+    scene's with columns replaced, made once per model."""
+
+    @classmethod
+    def of(cls, prepared: Prepared, initial: dict, params: dict) -> "_PreparedBatch":
+        pl = prepared.plan
+        sc, source = pl.scene, pl.scene.source
+        allowed = _ANGLES + (_RATES if prepared._rates else ("omega",))
+        cols: dict = {}
+        for key, value in initial.items():
+            if key not in allowed:
+                raise SceneError(f"{source}: initial.{key}: not a key this prepared scene takes "
+                                 f"(it takes {', '.join(allowed)})")
+            cols[("initial", key)] = _column(source, f"initial.{key}", value, 3 if key == "omega" else 1)
+        for name, value in params.items():
+            if name not in prepared._params:
+                raise SceneError(f"{source}: params: unknown parameter {name!r} "
+                                 f"(the model's: {', '.join(prepared._params)})")
+            cols[("params", name)] = _column(source, f"params.{name}", value)
+        lengths = [(f"{kind}.{key}", a.shape[0]) for (kind, key), a in cols.items()
+                   if a.ndim == (2 if key == "omega" else 1)]
+        for label, size in lengths[1:]:
+            if size != lengths[0][1]:
+                raise SceneError(f"{source}: {label}: {size} values, but {lengths[0][0]} has "
+                                 f"{lengths[0][1]} (a batch's arrays have one value per trajectory)")
+        n = lengths[0][1] if lengths else 1
+        inputs = np.repeat(pl.inputs[None, :], n, axis=0)
+        for (kind, key), a in cols.items():
+            if kind == "initial":
+                if key == "omega":
+                    inputs[:, 3:6] = a
+                else:
+                    inputs[:, INPUT_NAMES.index(key)] = a
+        method = pl.method
+        if not tolerance_driven(method) and sc.simulate.h is None:
+            raise SceneError(f"{source}: simulate.h: a prepared batch of the fixed-step method {method} "
+                             f"needs simulate.h (its default step depends on each start)")
+        sin_beta = np.abs(np.sin(inputs[:, INPUT_NAMES.index("beta")]))
+        candidates = tuple((c.desc.formulation, c.pole_check) for c in pl.candidates
+                           if starts_accepted(c.desc.formulation, sin_beta, prepared._rates).all())
+        if not candidates:
+            name = pl.candidates[0].desc.formulation
+            b = int(np.flatnonzero(~starts_accepted(name, sin_beta, prepared._rates))[0])
+            raise SceneError(f"{source}: initial.beta[{b}]: the formulation {name!r} cannot start at "
+                             f"|sin(beta)| = {sin_beta[b]:.3g}; use 'auto' or 'quaternion'")
+        out = cls([sc] * n, method, pl.t, inputs, sc.effects, None, candidates)
+        out._given = {key: a for (kind, key), a in cols.items() if kind == "params"}
+        out._made = {}
+        return out
+
+    def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
+        p = self._made.get(desc.name)
+        if p is None:
+            p = np.repeat(params_of(self.scenes[0], desc)[None, :], len(self.scenes), axis=0)
+            for name, a in self._given.items():
+                p[:, desc.params.index(name)] = a
+            self._made[desc.name] = p
+        return p[rows]
+
+    def where(self, b: int) -> str:
+        return f"{self.scenes[b].source}: trajectory {b}"

@@ -404,18 +404,22 @@ class BatchPlan:
             args = _settings(first, self.method, kernel)
         return desc, kernel, args
 
-    def params(self, desc, scenes=None) -> np.ndarray:
-        """The parameter vectors (N, NP) of the scenes (default: all) for a model."""
-        return np.array([params_of(sc, desc) for sc in (self.scenes if scenes is None else scenes)])
+    def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model."""
+        return np.array([params_of(sc, desc) for sc in self.scenes[rows]])
+
+    def where(self, b: int) -> str:
+        """How an error names trajectory ``b``: its scene's source."""
+        return self.scenes[b].source
 
     def raise_failure(self, desc, st, offset: int = 0) -> None:
-        """IntegrationError naming the first scene whose status (in ``st``, the stats of scenes
-        ``offset``, ``offset + 1``, …) is a failure; nothing when all succeeded."""
+        """IntegrationError naming the first trajectory whose status (in ``st``, the stats of
+        trajectories ``offset``, ``offset + 1``, …) is a failure; nothing when all succeeded."""
         status = st["status"]
         if status.any():
             b = int(np.flatnonzero(status)[0])
             sc = self.scenes[offset + b]
-            raise IntegrationError(f"{sc.source}: {_explain(desc, st[b], sc.simulate.max_steps)}")
+            raise IntegrationError(f"{self.where(offset + b)}: {_explain(desc, st[b], sc.simulate.max_steps)}")
 
 
 def batch_plan(scenes, **overrides) -> BatchPlan | None:

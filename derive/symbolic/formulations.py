@@ -72,11 +72,16 @@ def _no_damping_axisymmetric(scene) -> str | None:
     return None
 
 
+#: The |sin β₀| a start of a singular Euler-angle formulation needs: (rates given, ω given).
+#: With ω given the init map divides by sin β₀ to find the Euler rates.
+EULER_START = (1e-9, POLE_CLEARANCE)
+
+
 def _starts_clear(scene, name: str) -> str | None:
-    if abs(math.sin(scene.initial.beta)) < POLE_CLEARANCE and not scene.initial.has_rates:
+    if abs(math.sin(scene.initial.beta)) < EULER_START[1] and not scene.initial.has_rates:
         return (f"{name!r} is singular at sin(beta) = 0 and initial.beta = "
                 f"{scene.initial.beta:g} with omega given starts there; use 'quaternion' or 'auto'")
-    if abs(math.sin(scene.initial.beta)) < 1e-9:
+    if abs(math.sin(scene.initial.beta)) < EULER_START[0]:
         return (f"{name!r} is singular at sin(beta) = 0 and initial.beta = "
                 f"{scene.initial.beta:g} starts there; use 'quaternion' or 'auto'")
     return None
@@ -123,6 +128,10 @@ class Formulation:
     clearance: float = POLE_CLEARANCE  # the |sin β| its pole check keeps (see routh_checks)
     pole_loss: bool = False
     angle_states: bool = False
+    #: The |sin β₀| below which ``applicable`` refuses a start, as (rates given, ω given): what
+    #: of ``applicable`` depends on the initial state, for starts checked many at once
+    #: (:func:`starts_accepted`; a prepared batch).
+    start_clearance: tuple = (0.0, 0.0)
 
 
 #: Cheapest first for a typical body (the shipped heavy top: reduced-u 149, euler-angles 205,
@@ -133,17 +142,25 @@ REGISTRY: dict[str, Formulation] = {f.name: f for f in (
                 "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
                 "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
                 singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE,
-                angle_states=True),
+                angle_states=True, start_clearance=(REDUCED_U_CLEARANCE, REDUCED_U_CLEARANCE)),
     Formulation("euler-angles", "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
-                "euler_angles", _euler_angles, singular=True, pole_loss=True, angle_states=True),
+                "euler_angles", _euler_angles, singular=True, pole_loss=True, angle_states=True,
+                start_clearance=EULER_START),
     Formulation("reduced", "beta alone with conserved p_alpha, p_gamma; symmetric body, "
                 "axisymmetric conservative effects", "reduced", _reduced, singular=True,
-                needs_routh=True, angle_states=True),
+                needs_routh=True, angle_states=True, start_clearance=EULER_START),
     Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
                 "quaternion", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "
                 "coordinate singularity", "euler_poisson", _always),
 )}
+
+def starts_accepted(name: str, sin_beta0, rates_given: bool):
+    """Per start, whether formulation ``name`` takes it: |sin β₀| at least its
+    ``start_clearance`` (the part of ``applicable`` that depends on the initial state; the
+    rest, the body and the effects, is the scene's). ``sin_beta0``: an array of |sin β₀|."""
+    return sin_beta0 >= REGISTRY[name].start_clearance[0 if rates_given else 1]
+
 
 #: The formulation that takes every body and every effect (no singular set): what the analysis
 #: derives its equations from.
