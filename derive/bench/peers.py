@@ -185,16 +185,11 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         fns["derive_final"] = lambda: derive.simulate_batch(scenes, outputs="final")
     except (TypeError, ValueError):  # a derive without the outputs option
         pass
-    if "derive_final" in fns and hasattr(derive.prepare(scenes[0]), "run_batch"):
+    if "derive_final" in fns:
         prepared, initial = _prepared_batch(scenes)
         fns["derive_prepared_final"] = lambda: prepared.run_batch(initial=initial)
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
-    best = {k: math.inf for k in fns}
-    for _ in range(3 if len(scenes) >= 500 else 5):
-        for key, fn in fns.items():
-            t0 = time.perf_counter()
-            fn()
-            best[key] = min(best[key], time.perf_counter() - t0)
+    best = _best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     out = {"n": n, "t_end": float(t[-1]), "samples": len(t), "rtol": rtol, "derive_error": target,
            "heyoka_tol": m["rtol"], "heyoka_error": m["error"], "heyoka_reached": m["reached"], "lanes": width,
@@ -229,12 +224,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
            "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
     final_run()
-    best = {k: math.inf for k in fns}
-    for _ in range(3 if len(scenes) >= 500 else 5):
-        for key, fn in fns.items():
-            t0 = time.perf_counter()
-            fn()
-            best[key] = min(best[key], time.perf_counter() - t0)
+    best = _best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
             "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
@@ -242,6 +232,18 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
             "ratio_lanes_vs_final": best["derive"] / best["heyoka"],
             "derive_prepared_lanes_per_trajectory": best["derive_prepared"] / n,
             "ratio_prepared_lanes_vs_final": best["derive_prepared"] / best["heyoka"]}
+
+
+def _best_in_turns(fns: dict, rounds: int) -> dict:
+    """{name: the best of ``rounds`` timings of ``fns[name]()``}, the functions called in turns
+    each round (a change of machine load hits them alike)."""
+    best = {k: math.inf for k in fns}
+    for _ in range(rounds):
+        for key, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            best[key] = min(best[key], time.perf_counter() - t0)
+    return best
 
 
 def _prepared_batch(scenes: list[dict]):
