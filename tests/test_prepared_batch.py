@@ -110,6 +110,11 @@ def test_bad_arrays_are_scene_errors_naming_the_key(initial, params, match):
         derive.prepare(base()).run_batch(initial=initial, params=params)
 
 
+def test_a_scipy_method_is_refused_as_simulate_batch_refuses_it():
+    with pytest.raises(SceneError, match=r"simulate\.method: batches run in the C kernels"):
+        derive.prepare(base(method="scipy-rk45")).run_batch(initial={"beta": BETAS})
+
+
 def test_a_fixed_step_method_needs_its_step():
     with pytest.raises(SceneError, match=r"simulate\.h: a prepared batch of the fixed-step method rk4"):
         derive.prepare(base(method="rk4")).run_batch(initial={"beta": BETAS})

@@ -109,7 +109,7 @@ class Prepared:
         ------
         SceneError
             An unknown key, a value that is not a finite number or an array of them, arrays
-            of different lengths; a fixed-step method without ``simulate.h`` (its default
+            of different lengths; a SciPy method; a fixed-step method without ``simulate.h`` (its default
             step depends on each start); no formulation of the plan that suits every start.
         IntegrationError
             Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
@@ -194,6 +194,8 @@ class _PreparedBatch(simulation.BatchPlan):
                 else:
                     inputs[:, INPUT_NAMES.index(key)] = a
         method = pl.method
+        if pl.scipy:
+            raise SceneError(f"{source}: simulate.method: batches run in the C kernels, not {method}")
         if not tolerance_driven(method) and sc.simulate.h is None:
             raise SceneError(f"{source}: simulate.h: a prepared batch of the fixed-step method {method} "
                              f"needs simulate.h (its default step depends on each start)")
