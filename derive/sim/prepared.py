@@ -109,8 +109,9 @@ class Prepared:
         ------
         SceneError
             An unknown key, a value that is not a finite number or an array of them, arrays
-            of different lengths; a SciPy method; a fixed-step method without ``simulate.h`` (its default
-            step depends on each start); no formulation of the plan that suits every start.
+            of different lengths; a SciPy method; a fixed-step method without ``simulate.h``
+            (its default step depends on each start); no formulation of the plan that suits
+            every start.
         IntegrationError
             Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
         """
