@@ -10,6 +10,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "euler_poisson_sym_gravity_general_taylor.h"
@@ -284,6 +285,62 @@ static void euler_poisson_sym_gravity_general_measure_series(double t, double h,
         const double *y_new, const double *p);
 #endif
 
+/* The step's log2 and 2^y (see derive_euler_poisson_sym_gravity_general_taylor_step): a few multiply-adds on the bits, where glibc's log
+ * and exp are exact to the last bit; the step is a safety estimate, which 1e-5 of it does not
+ * change. log2 x = e + log2(1 + f), x = 2^e (1 + f), f in [0, 1), by a degree-5 fit (2e-5
+ * absolute); a subnormal x is taken as DBL_MIN (its step is enormous either way). */
+static double derive_euler_poisson_sym_gravity_general_taylor_log2(double x)
+{
+    uint64_t bits;
+    double f;
+    int e;
+    if (x < DBL_MIN)
+        x = DBL_MIN;
+    memcpy(&bits, &x, sizeof bits);
+    e = (int)((bits >> 52) & 0x7ff) - 1023;
+    bits = (bits & UINT64_C(0x000fffffffffffff)) | UINT64_C(0x3ff0000000000000);
+    memcpy(&f, &bits, sizeof f);
+    f -= 1.0;
+    return e + f * (1.4418797760086846 + f * (-0.7088638759987402 + f * (0.4152409601545996
+           + f * (-0.19351039095921596 + f * 0.04526550458283618))));
+}
+
+/* 2^y = 2^k 2^f, k = floor(y), f in [0, 1), 2^f by a degree-4 fit (4e-6 relative); +inf from
+ * 1023 up (an infinite step), 0 below -1022 (a step that fails as an underflow). */
+static double derive_euler_poisson_sym_gravity_general_taylor_exp2(double y)
+{
+    uint64_t bits;
+    double k, f, r;
+    if (!(y < 1023.0))
+        return HUGE_VAL;
+    if (!(y > -1022.0))
+        return 0.0;
+    k = (double)(long)y;
+    if (k > y)
+        k -= 1.0;
+    f = y - k;
+    r = 1.0 + f * (0.6930174848370849 + f * (0.241448861484718 + f * (0.05194754919060525
+        + f * 0.013581903239078447)));
+    memcpy(&bits, &r, sizeof bits);
+    bits += (uint64_t)(int64_t)k << 52;
+    memcpy(&r, &bits, sizeof r);
+    return r;
+}
+
+/* Jorba and Zou's step from the scaled norms of the last two coefficients (n1 of order p - 1,
+ * n2 of order p): h = e^lfac min(n1^(-1/(p-1)), n2^(-1/p)) = 2^(lfac log2(e) - max(log2 n1/(p-1),
+ * log2 n2/p)); zero norms (a polynomial solution): an infinite step. The lanes driver takes the
+ * same function, so its steps are the scalar driver's to the bit. */
+static double derive_euler_poisson_sym_gravity_general_taylor_step(double n1, double n2, double ip1, double ip2, double lfac)
+{
+    double lr = -HUGE_VAL;
+    if (n1 > 0.0)
+        lr = derive_euler_poisson_sym_gravity_general_taylor_log2(n1) * ip1;
+    if (n2 > 0.0)
+        lr = fmax(lr, derive_euler_poisson_sym_gravity_general_taylor_log2(n2) * ip2);
+    return derive_euler_poisson_sym_gravity_general_taylor_exp2(lfac * 1.4426950408889634 - lr);
+}
+
 /* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
  * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_euler_poisson_sym_gravity_general_taylor_eval(double u[][EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
@@ -315,7 +372,7 @@ static int derive_euler_poisson_sym_gravity_general_taylor_solve_taylor(const do
     double w[EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NW], tau, fac;
     double o[18];
     int series = 1;
-    double t, tn, t_end, h, lfac, ip1, ip2, floor_, sc, lr, n1, n2, chk;
+    double t, tn, t_end, h, lfac, ip1, ip2, floor_, sc, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -411,15 +468,7 @@ static int derive_euler_poisson_sym_gravity_general_taylor_solve_taylor(const do
         sc = rtol > 0.0 ? fmax(fabs(y[8]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[8][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[8][order]) / sc);
-        /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)) as exp(ln fac - max(ln n1/(p-1), ln n2/p)):
-         * two logs and one exp where two pows cost about twice as much (glibc); all-zero
-         * coefficients (a polynomial solution) give lr = -inf, an infinite step. */
-        lr = -HUGE_VAL;
-        if (n1 > 0.0)
-            lr = log(n1) * ip1;
-        if (n2 > 0.0)
-            lr = fmax(lr, log(n2) * ip2);
-        h = exp(lfac - lr);
+        h = derive_euler_poisson_sym_gravity_general_taylor_step(n1, n2, ip1, ip2, lfac);
         last = !(t + h < t_end);
         if (last)
             h = t_end - t;
@@ -836,7 +885,7 @@ static int derive_euler_poisson_sym_gravity_general_taylor_lanes_group_taylor(co
     double u[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], y[euler_poisson_sym_gravity_general_NY][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], t[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES];
     const double *p[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES];
     double yn[euler_poisson_sym_gravity_general_NY][DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], chk[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], n1[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], n2[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], hl[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES];
-    double fac = exp(lfac), h, tn, sc, a1, a2, lr;
+    double fac = exp(lfac), h, tn, sc, a1, a2;
     int bad[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], run[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], go[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], last[DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES], i, j, l, left = 0;
     derive_stats *sl;
     for (l = 0; l < DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_TAYLOR_LANES; ++l) {
@@ -970,12 +1019,7 @@ static int derive_euler_poisson_sym_gravity_general_taylor_lanes_group_taylor(co
                     derive_euler_poisson_sym_gravity_general_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
                 continue;
             }
-            lr = -HUGE_VAL;
-            if (n1[l] > 0.0)
-                lr = log(n1[l]) * ip1;
-            if (n2[l] > 0.0)
-                lr = fmax(lr, log(n2[l]) * ip2);
-            h = exp(lfac - lr);
+            h = derive_euler_poisson_sym_gravity_general_taylor_step(n1[l], n2[l], ip1, ip2, lfac);
             last[l] = !(t[l] + h < t_end);
             if (last[l])
                 h = t_end - t[l];
