@@ -684,7 +684,7 @@ int heavy_top_reduced_simulate_final_batch_taylor(long n_batch, const double *in
  * ISO C mode contracts nothing into an FMA, and the libm calls (the order-0 terms, the step
  * size's log and exp) are made per lane, so every lane's numbers are the scalar driver's bit for
  * bit. Each lane keeps its own step size (Jorba and Zou per lane); all take the same order (one
- * tolerance for the batch). A lane that has reached the end idles until its group is done. */
+ * tolerance for the batch). A lane whose trajectory is done takes the batch's next one. */
 #if defined(__AVX512F__)
 #define DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES 8
 #elif defined(__AVX__)
@@ -900,10 +900,36 @@ static int derive_heavy_top_reduced_taylor_lanes_last_taylor(double u[][HEAVY_TO
     return heavy_top_reduced_outputs_finite(1, &t_end, out, st);
 }
 
-/* One group of nl <= W trajectories idx[0..nl-1] (started: their initial states in y_final, their
- * derived parameters in ps), integrated from t0 to t_end side by side. Returns DERIVE_INTERRUPTED
- * when the interrupt flag stopped it (every lane still running then says so), else DERIVE_OK. */
-static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, int nl, double *ps, double t0, double t_end,
+/* Lane l takes the next trajectory that started (its state from y_final, its parameters from ps,
+ * its time t0) at or after *next; 0 when none is left. The jet reads a lane's parameters through
+ * p[l] at every step, so nothing else of the lane's is carried from one trajectory to the next. */
+static int derive_heavy_top_reduced_taylor_lanes_load_taylor(int l, long *next, long n_batch, long *idx, double *ps,
+        double t0, const double *y_final, const derive_stats *st, const double **p, double *t,
+        double y[][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES])
+{
+    long b = *next;
+    int i;
+    while (b < n_batch && st[b].status != DERIVE_OK)
+        ++b;
+    *next = b + (b < n_batch);
+    if (b == n_batch)
+        return 0;
+    idx[l] = b;
+    p[l] = ps + b * heavy_top_reduced_NP;
+    t[l] = t0;
+    for (i = 0; i < heavy_top_reduced_NY; ++i)
+        y[i][l] = y_final[b * heavy_top_reduced_NY + i];
+    return 1;
+}
+
+/* The trajectories that started (their initial states in y_final, their derived parameters in
+ * ps), streamed through the W lanes from t0 to t_end: a lane whose trajectory is done (its last
+ * step, or a failure) takes the next one at once, so the lanes idle only at the batch's end
+ * (a lane left idle keeps its last trajectory's numbers, computed on and never read). The
+ * lanes are independent, so a trajectory's numbers do not depend on which lane or beside which
+ * others it runs. Returns DERIVE_INTERRUPTED when the interrupt flag stopped it (every lane
+ * still running says so, and every trajectory not yet loaded), else DERIVE_OK. */
+static int derive_heavy_top_reduced_taylor_lanes_run_taylor(long n_batch, double *ps, double t0, double t_end,
         int order, double lfac, double ip1, double ip2, double floor_, double rtol, long max_steps,
         double *y_final, double *out_final, derive_stats *st)
 {
@@ -911,31 +937,38 @@ static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, i
     const double *p[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     double yn[heavy_top_reduced_NY][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], chk[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], n1[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], n2[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], hl[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
     double fac = exp(lfac), h, tn, sc, a1, a2, lr;
+    long idx[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], next = 0;
     int bad[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], run[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], go[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], last[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES], i, j, l, left = 0;
     derive_stats *sl;
     for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l) {
-        /* a lane without a trajectory repeats the first one's, and is never read */
-        const long b = idx[l < nl ? l : 0];
-        p[l] = ps + b * heavy_top_reduced_NP;
-        t[l] = t0;
-        for (i = 0; i < heavy_top_reduced_NY; ++i)
-            y[i][l] = y_final[b * heavy_top_reduced_NY + i];
-        run[l] = l < nl;
+        run[l] = derive_heavy_top_reduced_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
         left += run[l];
     }
+    if (left == 0)
+        return DERIVE_OK;
+    for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l)
+        if (!run[l]) {  /* a lane without a trajectory repeats the first one's, never read */
+            idx[l] = idx[0];
+            p[l] = p[0];
+            t[l] = t[0];
+            for (i = 0; i < heavy_top_reduced_NY; ++i)
+                y[i][l] = y[i][0];
+        }
     while (left > 0) {
-        for (l = 0; l < nl; ++l)
+        for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l)
+            /* (a lane loaded has nstep 0 < max_steps: one pass) */
             if (run[l] && st[idx[l]].nstep >= max_steps) {
                 derive_heavy_top_reduced_taylor_fail(st + idx[l], DERIVE_MAX_STEPS, t[l], -1);
-                run[l] = 0;
-                --left;
+                run[l] = derive_heavy_top_reduced_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
+                left -= !run[l];
             }
         if (left == 0)
             break;
         if (derive_heavy_top_reduced_stop) {
-            for (l = 0; l < nl; ++l)
+            for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l)
                 if (run[l])
                     derive_heavy_top_reduced_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            derive_heavy_top_reduced_rest_interrupted(next, n_batch, st);
             return DERIVE_INTERRUPTED;
         }
         derive_heavy_top_reduced_taylor_jet_lanes(t, y, p, order, u, bad);
@@ -980,7 +1013,7 @@ static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, i
             n1[l] = a1 > n1[l] ? a1 : n1[l];
             n2[l] = a2 > n2[l] ? a2 : n2[l];
         }
-        for (l = 0; l < nl; ++l) {
+        for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l) {
             hl[l] = 0.0;
             go[l] = 0;
             if (!run[l])
@@ -1030,7 +1063,7 @@ static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, i
                 for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l)
                     yn[i][l] = yn[i][l] * hl[l] + u[i][j][l];
         }
-        for (l = 0; l < nl; ++l) {
+        for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES; ++l) {
             if (!go[l])
                 continue;
             sl = st + idx[l];
@@ -1053,6 +1086,12 @@ static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, i
             run[l] = 1;
             ++left;
         }
+        /* the lanes whose trajectory is done take the next ones */
+        for (l = 0; l < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES && next < n_batch; ++l)
+            if (!run[l]) {
+                run[l] = derive_heavy_top_reduced_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
+                left += run[l];
+            }
     }
     return DERIVE_OK;
 }
@@ -1060,15 +1099,15 @@ static int derive_heavy_top_reduced_taylor_lanes_group_taylor(const long *idx, i
 /* heavy_top_reduced_simulate_final_batch_taylor with the trajectories run DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES at a time (the same
  * numbers, statuses and statistics per trajectory). Every start first (the init map, the pole
  * check: the first refusal stops the batch with DERIVE_RANGE before anything is integrated),
- * then the groups of the trajectories that started. Bad arguments and a single output time
- * take the scalar driver, which says so per trajectory as ever. */
+ * then the trajectories that started, streamed through the lanes. Bad arguments and a single
+ * output time take the scalar driver, which says so per trajectory as ever. */
 int heavy_top_reduced_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
 {
-    long b, idx[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES];
+    long b;
     double t0, t_end, lfac, ip1, ip2, floor_;
-    int nl = 0, order, rc, status = DERIVE_OK;
+    int order, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     if (n_out < 2 || !derive_heavy_top_reduced_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
@@ -1104,17 +1143,9 @@ int heavy_top_reduced_simulate_lanes_batch_taylor(long n_batch, const double *in
                     break;
                 }
     }
-    for (b = 0; b <= n_batch; ++b) {
-        if (b < n_batch && st[b].status == DERIVE_OK)
-            idx[nl++] = b;
-        if (nl == DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES || (b == n_batch && nl > 0)) {
-            rc = derive_heavy_top_reduced_taylor_lanes_group_taylor(idx, nl, ps, t0, t_end, order, lfac, ip1, ip2, floor_,
-                    rtol, max_steps, y_final, out_final, st);
-            if (rc == DERIVE_INTERRUPTED)
-                return derive_heavy_top_reduced_rest_interrupted(idx[nl - 1] + 1, n_batch, st);
-            nl = 0;
-        }
-    }
+    if (derive_heavy_top_reduced_taylor_lanes_run_taylor(n_batch, ps, t0, t_end, order, lfac, ip1, ip2, floor_, rtol, max_steps,
+            y_final, out_final, st) == DERIVE_INTERRUPTED)
+        return DERIVE_INTERRUPTED;
     for (b = 0; b < n_batch; ++b)
         if (st[b].status != DERIVE_OK) {
             status = st[b].status;
