@@ -188,6 +188,36 @@ def test_an_interrupt_stops_the_lanes():
         timer.cancel()
 
 
+def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
+    """The interrupt flag set while lanes that failed in their first step have taken the batch's
+    next trajectories: those failures are the scalar driver's, every trajectory loaded and still
+    running says INTERRUPTED, and so does every one not yet loaded (the call returns the status:
+    no guard, so no KeyboardInterrupt)."""
+    sc = scenes(40, formulation="reduced-u", t_end=1e7, rtol=1e-13, atol=1e-15, max_steps=10**12)
+    bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
+    inputs = bp.inputs.copy()
+    # trajectories whose series overflow in their first step, their lanes refilled at once (one
+    # of them a refill itself): loaded whatever the width
+    early = [0, 1, 2, native.lanes + 1]
+    inputs[early, 8] = 1e200
+    ps = bp.params(desc)
+    want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
+    monkeypatch.setattr(native, "_guard", None)
+    timer = threading.Timer(0.2, native.lib[f"{desc.name}_interrupt_request"])
+    timer.start()
+    try:
+        st = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)[3]
+    finally:
+        timer.cancel()
+        native.lib[f"{desc.name}_interrupt_guard"](0)  # (clears the flag)
+    for name in want.dtype.names:  # (field by field: a fancy index copies no padding)
+        assert np.array_equal(st[early][name], want[name], equal_nan=True), name
+    rest = np.setdiff1d(np.arange(len(sc)), early)
+    assert (st["status"][rest] == Status.INTERRUPTED).all()
+    assert (st["nfev"][rest[:native.lanes]] > 0).all()  # the lanes that ran, refills included
+    assert (st["nfev"][rest[native.lanes:]] == 0).all()
+
+
 def test_the_width_is_the_cpus():
     """W from the instruction sets of the build (-march=native for the lanes' library): 8 with
     AVX-512, 4 with AVX, else 2; the default build (x86-64 baseline or another CPU) its own."""
