@@ -83,6 +83,63 @@ def test_failing_lanes_say_so_per_trajectory_while_the_others_finish():
     assert (st["status"] == 0).sum() >= 3
 
 
+def spread(n, seed=5, **simulate):
+    """Scenes whose step counts differ several fold (spins from slow to fast): lanes finish at
+    very different times, so the lanes take the batch's next trajectories mid-way through their
+    neighbours'."""
+    sc = scenes(n, seed=seed, **simulate)
+    spins = np.random.default_rng(seed).uniform(0.5, 40.0, n)
+    return [{**d, "initial": {**d["initial"], "gamma_dot": float(w)}} for d, w in zip(sc, spins)]
+
+
+@pytest.mark.parametrize("formulation", ["reduced-u", "quaternion"])
+def test_lanes_refilled_mid_batch_are_the_scalar_driver_bit_for_bit(formulation):
+    sc = spread(37, formulation=formulation, t_end=6.0)
+    bp, desc, scalar, native, args, pole = kernels(sc, formulation)
+    ps = bp.params(desc)
+    want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
+    steps = want[3]["nstep"]
+    assert (want[3]["status"] == 0).all()
+    assert steps.max() > 4 * steps.min()  # a lane takes several trajectories while another runs one
+    same(want, native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    same(want, scalar.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    # the batch the other way round: each trajectory in another lane, beside other neighbours
+    rev = bp.inputs[::-1].copy(), ps[::-1].copy()
+    same(scalar.simulate_final_batch(*rev, bp.t, args, pole), native.simulate_lanes_batch(*rev, bp.t, args, pole))
+
+
+def test_lanes_refilled_after_failures_and_budgets_are_the_scalar_driver_bit_for_bit():
+    """Failing starts, lanes failing in their first step and lanes out of steps among trajectories
+    of very different lengths: every lane that stops takes the next trajectory, whatever stopped
+    it, and each trajectory's status and statistics are the scalar driver's."""
+    sc = spread(41, formulation="reduced-u", t_end=6.0)
+    bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
+    ps = bp.params(desc)
+    steps = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)[3]["nstep"]
+    args = list(args)
+    args[-1] = int(np.percentile(steps, 70))
+    inputs = bp.inputs.copy()
+    inputs[[2, 3, 17], 8] = np.nan  # starts that are not finite: never loaded
+    inputs[[0, 9, 10, 30], 8] = 1e200  # lanes whose series overflow in their first step
+    want = scalar.simulate_final_batch(inputs, ps, bp.t, args, pole)
+    st = want[3]
+    assert (st["status"] == Status.MAX_STEPS).sum() >= 5
+    assert (st["status"] == 0).sum() >= 15
+    assert (st["nfev"][[2, 3, 17]] == 0).all() and (st["nfev"][[0, 9, 10, 30]] == 1).all()
+    same(want, native.simulate_lanes_batch(inputs, ps, bp.t, args, pole))
+    same(want, scalar.simulate_lanes_batch(inputs, ps, bp.t, args, pole))
+
+
+def test_a_batch_of_failed_starts_loads_no_lane():
+    sc = scenes(11, formulation="reduced-u")
+    bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
+    inputs = bp.inputs.copy()
+    inputs[:, 8] = np.nan
+    want = scalar.simulate_final_batch(inputs, bp.params(desc), bp.t, args, pole)
+    assert (want[3]["status"] == Status.NONFINITE).all()
+    same(want, native.simulate_lanes_batch(inputs, bp.params(desc), bp.t, args, pole))
+
+
 def test_a_refused_start_stops_the_lanes_batch_as_the_scalar_one():
     """A pole check that refuses a start: status RANGE, so the batch's next formulation runs."""
     sc = scenes(6, formulation="reduced-u")
@@ -129,6 +186,36 @@ def test_an_interrupt_stops_the_lanes():
             native.simulate_lanes_batch(bp.inputs, bp.params(desc), bp.t, args, pole)
     finally:
         timer.cancel()
+
+
+def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
+    """The interrupt flag set while lanes that failed in their first step have taken the batch's
+    next trajectories: those failures are the scalar driver's, every trajectory loaded and still
+    running says INTERRUPTED, and so does every one not yet loaded (the call returns the status:
+    no guard, so no KeyboardInterrupt)."""
+    sc = scenes(40, formulation="reduced-u", t_end=1e7, rtol=1e-13, atol=1e-15, max_steps=10**12)
+    bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
+    inputs = bp.inputs.copy()
+    # trajectories whose series overflow in their first step, their lanes refilled at once (one
+    # of them a refill itself): loaded whatever the width
+    early = [0, 1, 2, native.lanes + 1]
+    inputs[early, 8] = 1e200
+    ps = bp.params(desc)
+    want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
+    monkeypatch.setattr(native, "_guard", None)
+    timer = threading.Timer(0.2, native.lib[f"{desc.name}_interrupt_request"])
+    timer.start()
+    try:
+        st = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)[3]
+    finally:
+        timer.cancel()
+        native.lib[f"{desc.name}_interrupt_guard"](0)  # (clears the flag)
+    for name in want.dtype.names:  # (field by field: a fancy index copies no padding)
+        assert np.array_equal(st[early][name], want[name], equal_nan=True), name
+    rest = np.setdiff1d(np.arange(len(sc)), early)
+    assert (st["status"][rest] == Status.INTERRUPTED).all()
+    assert (st["nfev"][rest[:native.lanes]] > 0).all()  # the lanes that ran, refills included
+    assert (st["nfev"][rest[native.lanes:]] == 0).all()
 
 
 def test_the_width_is_the_cpus():

@@ -280,62 +280,6 @@ static void reduced_u_sym_gravity_measure_series(double t, double h, int order, 
         const double *y_new, const double *p);
 #endif
 
-/* The step's log2 and 2^y (see derive_reduced_u_sym_gravity_taylor_step): a few multiply-adds on the bits, where glibc's log
- * and exp are exact to the last bit; the step is a safety estimate, which 1e-5 of it does not
- * change. log2 x = e + log2(1 + f), x = 2^e (1 + f), f in [0, 1), by a degree-5 fit (2e-5
- * absolute); a subnormal x is taken as DBL_MIN (its step is enormous either way). */
-static double derive_reduced_u_sym_gravity_taylor_log2(double x)
-{
-    uint64_t bits;
-    double f;
-    int e;
-    if (x < DBL_MIN)
-        x = DBL_MIN;
-    memcpy(&bits, &x, sizeof bits);
-    e = (int)((bits >> 52) & 0x7ff) - 1023;
-    bits = (bits & UINT64_C(0x000fffffffffffff)) | UINT64_C(0x3ff0000000000000);
-    memcpy(&f, &bits, sizeof f);
-    f -= 1.0;
-    return e + f * (1.4418797760086846 + f * (-0.7088638759987402 + f * (0.4152409601545996
-           + f * (-0.19351039095921596 + f * 0.04526550458283618))));
-}
-
-/* 2^y = 2^k 2^f, k = floor(y), f in [0, 1), 2^f by a degree-4 fit (4e-6 relative); +inf from
- * 1023 up (an infinite step), 0 below -1022 (a step that fails as an underflow). */
-static double derive_reduced_u_sym_gravity_taylor_exp2(double y)
-{
-    uint64_t bits;
-    double k, f, r;
-    if (!(y < 1023.0))
-        return HUGE_VAL;
-    if (!(y > -1022.0))
-        return 0.0;
-    k = (double)(long)y;
-    if (k > y)
-        k -= 1.0;
-    f = y - k;
-    r = 1.0 + f * (0.6930174848370849 + f * (0.241448861484718 + f * (0.05194754919060525
-        + f * 0.013581903239078447)));
-    memcpy(&bits, &r, sizeof bits);
-    bits += (uint64_t)(int64_t)k << 52;
-    memcpy(&r, &bits, sizeof r);
-    return r;
-}
-
-/* Jorba and Zou's step from the scaled norms of the last two coefficients (n1 of order p - 1,
- * n2 of order p): h = e^lfac min(n1^(-1/(p-1)), n2^(-1/p)) = 2^(lfac log2(e) - max(log2 n1/(p-1),
- * log2 n2/p)); zero norms (a polynomial solution): an infinite step. The lanes driver takes the
- * same function, so its steps are the scalar driver's to the bit. */
-static double derive_reduced_u_sym_gravity_taylor_step(double n1, double n2, double ip1, double ip2, double lfac)
-{
-    double lr = -HUGE_VAL;
-    if (n1 > 0.0)
-        lr = derive_reduced_u_sym_gravity_taylor_log2(n1) * ip1;
-    if (n2 > 0.0)
-        lr = fmax(lr, derive_reduced_u_sym_gravity_taylor_log2(n2) * ip2);
-    return derive_reduced_u_sym_gravity_taylor_exp2(lfac * 1.4426950408889634 - lr);
-}
-
 /* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
  * The states' chains side by side (the order loop outside): each is latency-bound alone. */
 static int derive_reduced_u_sym_gravity_taylor_eval(double u[][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
@@ -352,6 +296,72 @@ static int derive_reduced_u_sym_gravity_taylor_eval(double u[][REDUCED_U_SYM_GRA
     return -1;
 }
 
+/* x^(-1/q) (q >= 1, x >= 0) to about 1e-6 relative, by arithmetic alone, so that the lanes
+ * driver runs it for all its lanes at once where glibc's log and exp (called per lane: they do
+ * not vectorise) took 14 % of its time; the scalar driver calls the same function, so both take
+ * the same steps bit for bit. A first guess: log2 x from the bits of x read as a line,
+ * 2^52 (log2 x + 1023 - 0.043) (the offset centres the line's error, +-0.043, which the root
+ * divides by q), divided by -q, and 2 to that power as the bits of 2^E (the integer part) times
+ * a quadratic in the fraction (relative error 1.7e-3): 3 % for q = 1, 0.5 % for q = 12. Then two
+ * Newton steps on x y^q = 1 (the error e goes to (q + 1)/2 e^2): worst 1e-6 for q <= 31 (a
+ * sweep of x over 2^-200..2^200). y^q by squaring in a fixed number of rounds, a factor of 1.0
+ * where q has no bit, so that the lanes' loop has no branch. x is taken within [2^-1000,
+ * 2^1000] (y^q then stays normal), the tests made on its bits (nonnegative doubles order as
+ * their bits; comparisons of doubles kept gcc from vectorising the selects): a smaller x, 0
+ * excepted, gets the bound's longer step, still finite; x == 0 gives +inf (an infinite step, as
+ * exp(-log 0) did) and a larger x 0 (the step underflows: coefficients beyond 2^1000 of the
+ * state's scale). */
+#if REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER > 31
+#error "derive_reduced_u_sym_gravity_taylor_rootinv squares in 5 rounds: q <= order <= 31"
+#endif
+static inline double derive_reduced_u_sym_gravity_taylor_newton(double y, double x, int q, double iq)
+{
+    double b = y, r = q & 1 ? b : 1.0;
+    b *= b;
+    r *= q & 2 ? b : 1.0;
+    b *= b;
+    r *= q & 4 ? b : 1.0;
+    b *= b;
+    r *= q & 8 ? b : 1.0;
+    b *= b;
+    r *= q & 16 ? b : 1.0;
+    return y * iq * ((q + 1) - x * r);
+}
+
+static inline double derive_reduced_u_sym_gravity_taylor_rootinv(double x, int q, double iq)
+{
+    const int64_t lo = INT64_C(0x0170000000000000), hi = INT64_C(0x7e70000000000000);  /* 2^-+1000 */
+    double xc, y, m;
+    int64_t ix, iy, em;
+    int small, large, zero;
+    memcpy(&ix, &x, sizeof ix);
+    small = ix < lo;
+    large = ix > hi;
+    zero = ix <= 0;
+    ix = small ? lo : ix;
+    ix = large ? hi : ix;
+    memcpy(&xc, &ix, sizeof xc);
+    iy = (int64_t)(0x1p52 * (1023.0 + 0x1.ff7a7dce61f84p+9 * iq) - (double)ix * iq);
+    em = (iy & INT64_C(0x000fffffffffffff)) | INT64_C(0x3ff0000000000000);
+    iy &= INT64_C(0x7ff0000000000000);
+    memcpy(&m, &em, sizeof m);
+    memcpy(&y, &iy, sizeof y);
+    m -= 1.0;
+    y *= 0x1.00712efc118f4p+0 + m * (0x1.50b5568ee2b76p-1 + m * 0x1.5946fd1bc275dp-2);
+    y = derive_reduced_u_sym_gravity_taylor_newton(y, xc, q, iq);
+    y = derive_reduced_u_sym_gravity_taylor_newton(y, xc, q, iq);
+    y = large ? 0.0 : y;
+    return zero ? HUGE_VAL : y;
+}
+
+/* The step, fac min(n1^(-1/(p-1)), n2^(-1/p)) (Jorba and Zou; n1, n2 the scaled last two
+ * coefficients, q1 = p - 1, q2 = p, iq their inverses). */
+static inline double derive_reduced_u_sym_gravity_taylor_step(double n1, double n2, int q1, double iq1, int q2, double iq2, double fac)
+{
+    double y1 = derive_reduced_u_sym_gravity_taylor_rootinv(n1, q1, iq1), y2 = derive_reduced_u_sym_gravity_taylor_rootinv(n2, q2, iq2);
+    return fac * (y1 < y2 ? y1 : y2);
+}
+
 /* ======================================================================================== */
 /* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
 
@@ -364,10 +374,10 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
 {
     derive_stats local;
     double u[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NODES][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1], y[reduced_u_sym_gravity_NY];
-    double w[REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], tau, fac;
+    double w[REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NW], tau;
     double o[18];
     int series = 1;
-    double t, tn, t_end, h, lfac, ip1, ip2, floor_, sc, n1, n2, chk;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -385,8 +395,7 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
         order = 2;
     if (order > 30)
         order = 30;
-    lfac = -2.0 - 0.7 / (order - 1);
-    fac = exp(lfac);  /* (the outputs' test) */
+    fac = exp(-2.0 - 0.7 / (order - 1));
     ip1 = 1.0 / (order - 1);
     ip2 = 1.0 / order;
     floor_ = rtol > 0.0 ? atol / rtol : 0.0;
@@ -448,7 +457,9 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
         sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
         n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
         n2 = fmax(n2, fabs(u[3][order]) / sc);
-        h = derive_reduced_u_sym_gravity_taylor_step(n1, n2, ip1, ip2, lfac);
+        /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
+         * solution) give an infinite step. */
+        h = derive_reduced_u_sym_gravity_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
         last = !(t + h < t_end);
         if (last)
             h = t_end - t;
@@ -677,10 +688,10 @@ int reduced_u_sym_gravity_simulate_final_batch_taylor(long n_batch, const double
  * [order][lane] and each elementary operation a loop over the lanes, which gcc vectorises at -O3
  * (the library is built with -march=native: W is the vector width). Each lane does the scalar
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
- * ISO C mode contracts nothing into an FMA, and the libm calls (the order-0 terms, the step
- * size's log and exp) are made per lane, so every lane's numbers are the scalar driver's bit for
- * bit. Each lane keeps its own step size (Jorba and Zou per lane); all take the same order (one
- * tolerance for the batch). A lane that has reached the end idles until its group is done. */
+ * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
+ * lane and the step size is the scalar driver's own function, so every lane's numbers are the
+ * scalar driver's bit for bit. Each lane keeps its own step size (Jorba and Zou per lane); all take the same order (one
+ * tolerance for the batch). A lane whose trajectory is done takes the batch's next one. */
 #if defined(__AVX512F__)
 #define DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES 8
 #elif defined(__AVX__)
@@ -828,49 +839,82 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_last_taylor(double u[][REDU
     return reduced_u_sym_gravity_outputs_finite(1, &t_end, out, st);
 }
 
-/* One group of nl <= W trajectories idx[0..nl-1] (started: their initial states in y_final, their
- * derived parameters in ps), integrated from t0 to t_end side by side. Returns DERIVE_INTERRUPTED
- * when the interrupt flag stopped it (every lane still running then says so), else DERIVE_OK. */
-static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *idx, int nl, double *ps, double t0, double t_end,
-        int order, double lfac, double ip1, double ip2, double floor_, double rtol, long max_steps,
+/* Lane l takes the next trajectory that started (its state from y_final, its parameters from ps,
+ * its time t0) at or after *next; 0 when none is left. The jet reads a lane's parameters through
+ * p[l] at every step, so nothing else of the lane's is carried from one trajectory to the next. */
+static int derive_reduced_u_sym_gravity_taylor_lanes_load_taylor(int l, long *next, long n_batch, long *idx, double *ps,
+        double t0, const double *y_final, const derive_stats *st, const double **p, double *t,
+        double y[][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES])
+{
+    long b = *next;
+    int i;
+    while (b < n_batch && st[b].status != DERIVE_OK)
+        ++b;
+    *next = b + (b < n_batch);
+    if (b == n_batch)
+        return 0;
+    idx[l] = b;
+    p[l] = ps + b * reduced_u_sym_gravity_NP;
+    t[l] = t0;
+    for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
+        y[i][l] = y_final[b * reduced_u_sym_gravity_NY + i];
+    return 1;
+}
+
+/* The trajectories that started (their initial states in y_final, their derived parameters in
+ * ps), streamed through the W lanes from t0 to t_end: a lane whose trajectory is done (its last
+ * step, or a failure) takes the next one at once, so the lanes idle only at the batch's end
+ * (a lane left idle keeps its last trajectory's numbers, computed on and never read). The
+ * lanes are independent, so a trajectory's numbers do not depend on which lane or beside which
+ * others it runs. Returns DERIVE_INTERRUPTED when the interrupt flag stopped it (every lane
+ * still running says so, and every trajectory not yet loaded), else DERIVE_OK. */
+static int derive_reduced_u_sym_gravity_taylor_lanes_run_taylor(long n_batch, double *ps, double t0, double t_end,
+        int order, double fac, double ip1, double ip2, double floor_, double rtol, long max_steps,
         double *y_final, double *out_final, derive_stats *st)
 {
     double u[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NODES][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], y[reduced_u_sym_gravity_NY][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], t[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
     const double *p[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
-    double yn[reduced_u_sym_gravity_NY][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], chk[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], n1[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], n2[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], hl[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
-    double fac = exp(lfac), h, tn, sc, a1, a2;
+    double yn[reduced_u_sym_gravity_NY][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], chk[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], n1[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], n2[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], hl[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], hs[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
+    double h, tn, sc, a1, a2;
+    long idx[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], next = 0;
     int bad[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], run[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], go[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], last[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES], i, j, l, left = 0;
     derive_stats *sl;
     for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l) {
-        /* a lane without a trajectory repeats the first one's, and is never read */
-        const long b = idx[l < nl ? l : 0];
-        p[l] = ps + b * reduced_u_sym_gravity_NP;
-        t[l] = t0;
-        for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
-            y[i][l] = y_final[b * reduced_u_sym_gravity_NY + i];
-        run[l] = l < nl;
+        run[l] = derive_reduced_u_sym_gravity_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
         left += run[l];
     }
+    if (left == 0)
+        return DERIVE_OK;
+    for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
+        if (!run[l]) {  /* a lane without a trajectory repeats the first one's, never read */
+            idx[l] = idx[0];
+            p[l] = p[0];
+            t[l] = t[0];
+            for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
+                y[i][l] = y[i][0];
+        }
     while (left > 0) {
-        for (l = 0; l < nl; ++l)
+        for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
+            /* (a lane loaded has nstep 0 < max_steps: one pass) */
             if (run[l] && st[idx[l]].nstep >= max_steps) {
                 derive_reduced_u_sym_gravity_taylor_fail(st + idx[l], DERIVE_MAX_STEPS, t[l], -1);
-                run[l] = 0;
-                --left;
+                run[l] = derive_reduced_u_sym_gravity_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
+                left -= !run[l];
             }
         if (left == 0)
             break;
         if (derive_reduced_u_sym_gravity_stop) {
-            for (l = 0; l < nl; ++l)
+            for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
                 if (run[l])
                     derive_reduced_u_sym_gravity_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            derive_reduced_u_sym_gravity_rest_interrupted(next, n_batch, st);
             return DERIVE_INTERRUPTED;
         }
         derive_reduced_u_sym_gravity_taylor_jet_lanes(t, y, p, order, u, bad);
         /* The scalar driver's step control (see derive_reduced_u_sym_gravity_taylor_solve_taylor) with its arithmetic
          * over the lanes: the check sum, the scaled last coefficients (max as a comparison: they
          * are finite where they are used, a finite sum, and there fmax is that comparison), the
-         * libm calls and the tests per lane, then the series at every lane's own h. */
+         * steps, the tests per lane, then the series at every lane's own h. */
         for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
             chk[l] = n1[l] = n2[l] = 0.0;
         for (i = 0; i < reduced_u_sym_gravity_NY; ++i)
@@ -908,7 +952,10 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *id
             n1[l] = a1 > n1[l] ? a1 : n1[l];
             n2[l] = a2 > n2[l] ? a2 : n2[l];
         }
-        for (l = 0; l < nl; ++l) {
+        /* the steps of all lanes at once (the scalar driver's function, no libm call) */
+        for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
+            hs[l] = derive_reduced_u_sym_gravity_taylor_step(n1[l], n2[l], order - 1, ip1, order, ip2, fac);
+        for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l) {
             hl[l] = 0.0;
             go[l] = 0;
             if (!run[l])
@@ -932,7 +979,7 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *id
                     derive_reduced_u_sym_gravity_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
                 continue;
             }
-            h = derive_reduced_u_sym_gravity_taylor_step(n1[l], n2[l], ip1, ip2, lfac);
+            h = hs[l];
             last[l] = !(t[l] + h < t_end);
             if (last[l])
                 h = t_end - t[l];
@@ -953,7 +1000,7 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *id
                 for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l)
                     yn[i][l] = yn[i][l] * hl[l] + u[i][j][l];
         }
-        for (l = 0; l < nl; ++l) {
+        for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES; ++l) {
             if (!go[l])
                 continue;
             sl = st + idx[l];
@@ -976,6 +1023,12 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *id
             run[l] = 1;
             ++left;
         }
+        /* the lanes whose trajectory is done take the next ones */
+        for (l = 0; l < DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES && next < n_batch; ++l)
+            if (!run[l]) {
+                run[l] = derive_reduced_u_sym_gravity_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y_final, st, p, t, y);
+                left += run[l];
+            }
     }
     return DERIVE_OK;
 }
@@ -983,15 +1036,15 @@ static int derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(const long *id
 /* reduced_u_sym_gravity_simulate_final_batch_taylor with the trajectories run DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES at a time (the same
  * numbers, statuses and statistics per trajectory). Every start first (the init map, the pole
  * check: the first refusal stops the batch with DERIVE_RANGE before anything is integrated),
- * then the groups of the trajectories that started. Bad arguments and a single output time
- * take the scalar driver, which says so per trajectory as ever. */
+ * then the trajectories that started, streamed through the lanes. Bad arguments and a single
+ * output time take the scalar driver, which says so per trajectory as ever. */
 int reduced_u_sym_gravity_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
 {
-    long b, idx[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES];
-    double t0, t_end, lfac, ip1, ip2, floor_;
-    int nl = 0, order, rc, status = DERIVE_OK;
+    long b;
+    double t0, t_end, fac, ip1, ip2, floor_;
+    int order, status = DERIVE_OK;
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     if (n_out < 2 || !derive_reduced_u_sym_gravity_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
@@ -1004,7 +1057,7 @@ int reduced_u_sym_gravity_simulate_lanes_batch_taylor(long n_batch, const double
         order = 2;
     if (order > 30)
         order = 30;
-    lfac = -2.0 - 0.7 / (order - 1);
+    fac = exp(-2.0 - 0.7 / (order - 1));
     ip1 = 1.0 / (order - 1);
     ip2 = 1.0 / order;
     floor_ = rtol > 0.0 ? atol / rtol : 0.0;
@@ -1027,17 +1080,9 @@ int reduced_u_sym_gravity_simulate_lanes_batch_taylor(long n_batch, const double
                     break;
                 }
     }
-    for (b = 0; b <= n_batch; ++b) {
-        if (b < n_batch && st[b].status == DERIVE_OK)
-            idx[nl++] = b;
-        if (nl == DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_LANES || (b == n_batch && nl > 0)) {
-            rc = derive_reduced_u_sym_gravity_taylor_lanes_group_taylor(idx, nl, ps, t0, t_end, order, lfac, ip1, ip2, floor_,
-                    rtol, max_steps, y_final, out_final, st);
-            if (rc == DERIVE_INTERRUPTED)
-                return derive_reduced_u_sym_gravity_rest_interrupted(idx[nl - 1] + 1, n_batch, st);
-            nl = 0;
-        }
-    }
+    if (derive_reduced_u_sym_gravity_taylor_lanes_run_taylor(n_batch, ps, t0, t_end, order, fac, ip1, ip2, floor_, rtol, max_steps,
+            y_final, out_final, st) == DERIVE_INTERRUPTED)
+        return DERIVE_INTERRUPTED;
     for (b = 0; b < n_batch; ++b)
         if (st[b].status != DERIVE_OK) {
             status = st[b].status;
