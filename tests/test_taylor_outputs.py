@@ -94,15 +94,19 @@ def test_batch_is_the_single_runs_bit_for_bit():
 
 def test_which_outputs_have_a_series():
     """sin, cos, exp of controlled states have a series (a column); of a cyclic angle (α, γ:
-    the step does not follow them) they stay libm calls; the quaternion's atan2 angles and
-    square roots are evaluated from the state."""
+    the step does not follow them) they are computed at each sample from the state (a pair per
+    angle, ``trig``); the quaternion's atan2 angles and square roots are evaluated from the
+    state."""
     euler = build(*shipped_keys()["heavy_top"])
     d = decompose(KernelSpec.of(euler), outputs=True)
     beta = euler.states[1]
     assert len(d.columns) == 2 and len(d.pointwise) == 18
     exprs = [e for _, e in d.pointwise]
     assert not any(e.has(sp.sin(beta)) or e.has(sp.cos(beta)) for e in exprs)
-    assert any(e.has(sp.cos(euler.states[2])) for e in exprs)  # cos γ: a libm call
+    alpha, gamma = euler.states[0], euler.states[2]
+    assert d.trig == [0, 2]  # sin and cos of α and γ, per sample
+    assert not any(e.has(sp.cos(gamma)) or e.has(sp.sin(alpha)) for e in exprs)
+    assert any(e.has(sp.Symbol("tvc1")) for e in exprs)  # cos γ: read from the pair
     quat = build(*shipped_keys()["euler_poisson_sym_gravity"])
     assert decompose(KernelSpec.of(quat), outputs=True).columns == []
     x, y = quat.states[:2]

@@ -85,6 +85,11 @@ class Decomposition:
     column_symbols: list = field(default_factory=list)
     pointwise: list = field(default_factory=list)
     last: list = field(default_factory=list)       # [Node] the columns need at order p
+    # The sin and cos of the states that stay pointwise (the cyclic angles): [state index], the
+    # pair of state k computed together at every sample (``<prefix>sincos``), their symbols
+    # ``tvs<k>``, ``tvc<k>`` in ``pointwise``.
+    trig: list = field(default_factory=list)
+    trig_symbols: list = field(default_factory=list)
 
     @property
     def rules(self) -> list[str]:
@@ -382,7 +387,18 @@ def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
     b.obs_phase = False
     names = [sp.Symbol(f"tv{c}") for c in range(len(calls))]
     b.d.column_symbols = names
-    b.d.pointwise = [(j, e.xreplace(dict(zip(calls, names)))) for j, e in enumerate(exprs)]
+    subs = dict(zip(calls, names))
+    # sin and cos of a state left out above (a cyclic angle): one reduction and two kernels per
+    # sample for the pair, over a block of samples at once (templates/c/taylor.c.j2,
+    # <prefix>sincos), where glibc's sincos, called per sample, was a quarter of a solve's time.
+    trig_calls = set().union(*(e.atoms(sp.sin, sp.cos) for e in exprs))
+    for k, s in enumerate(m.states):
+        if any(f(s) in trig_calls and f(s) not in subs for f in (sp.sin, sp.cos)):
+            pair = (sp.Symbol(f"tvs{len(b.d.trig)}"), sp.Symbol(f"tvc{len(b.d.trig)}"))
+            b.d.trig.append(k)
+            b.d.trig_symbols.extend(pair)
+            subs[sp.sin(s)], subs[sp.cos(s)] = pair
+    b.d.pointwise = [(j, e.xreplace(subs)) for j, e in enumerate(exprs)]
     # The nodes the columns read at order p (the passes 0..p-1 give the states through p and
     # every node through p-1), in evaluation order.
     by_index = {n.index: n for n in b.d.nodes}
@@ -527,6 +543,8 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
         "jet_scope": _scope(jet_text, d), "obs_scope": _scope(obs_text, d),
         # the columns of the coefficient table w past the states: (column, operand)
         "columns": [(ny + c, op) for c, op in enumerate(d.columns)],
+        # the states whose sin and cos the samples compute (each pair at 2 c, 2 c + 1 past them)
+        "trig": d.trig,
         "nobs": len(d.pointwise),
         "has_angles": spec.observable_names[:3] == ("alpha", "beta", "gamma"),
         "pointwise": _pointwise(model, d),
@@ -601,7 +619,8 @@ def _pointwise(model, d: Decomposition) -> dict | None:
     uses_t = any(t in e.free_symbols for _, e in block.temps) or any(
         t in e.free_symbols for e in block.outputs)
     return {"states": block.uses(model.states), "params": block.uses(model.params),
-            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)],
+            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
+            + [(len(model.states) + len(d.columns) + c, s) for c, s in block.uses(d.trig_symbols)],
             "uses_t": uses_t, "temps": temps,
             "outputs": [(j, c) for (j, _), c in zip(d.pointwise, outs)]}
 

@@ -170,15 +170,33 @@ static int derive_euler_poisson_asym_gravity_general_taylor_outputs_converged(do
     return 1;
 }
 
-/* Every column of w at tau (Horner), into v. */
-static void derive_euler_poisson_asym_gravity_general_taylor_horner(double w[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], int order, double tau, double *v)
+/* Every column of w at the nb times tau of a block of samples (nb <= DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB), by
+ * Horner's scheme: the samples' chains side by side (one alone is bound by the latency of its
+ * multiply-adds), each in the scheme's own order, so a sample's numbers do not depend on its
+ * block. v[c][k]: column c at sample k; past the NW columns, room for the sin and cos of the
+ * states that stay pointwise (derive_euler_poisson_asym_gravity_general_taylor_trig_block; DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV values per sample). */
+#define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB 16
+#define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV (DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW + 0)
+static void derive_euler_poisson_asym_gravity_general_taylor_horner_block(double w[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], int order, int nb, const double *tau,
+                                double v[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB])
 {
-    int j, n;
+    int j, n, k;
     for (j = 0; j < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW; ++j)
-        v[j] = w[order][j];
+        for (k = 0; k < nb; ++k)
+            v[j][k] = w[order][j];
     for (n = order - 1; n >= 0; --n)
         for (j = 0; j < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW; ++j)
-            v[j] = v[j] * tau + w[n][j];
+            for (k = 0; k < nb; ++k)
+                v[j][k] = v[j][k] * tau[k] + w[n][j];
+}
+
+/* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
+ * the columns: derive_euler_poisson_asym_gravity_general_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * argument is beyond its range (and for inf, nan). */
+static void derive_euler_poisson_asym_gravity_general_taylor_trig_block(int nb, double v[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB])
+{
+    (void)nb;
+    (void)v;
 }
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
@@ -387,9 +405,10 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const d
 {
     derive_stats local;
     double u[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], y[euler_poisson_asym_gravity_general_NY];
-    double w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], tau;
+    double w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV];
+    double vb[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB], taub[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB];
     double o[18];
-    int series = 1;
+    int series = 1, nb, kb;
     double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
     long k_out;
     int i, j, order, last;
@@ -504,21 +523,27 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const d
             derive_euler_poisson_asym_gravity_general_taylor_jet_outputs(p, order, u, w);
             series = derive_euler_poisson_asym_gravity_general_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
             while (k_out < n_out && t_out[k_out] <= tn) {
-                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
-                derive_euler_poisson_asym_gravity_general_taylor_horner(w, order, tau, v);
-                for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
-                    if (!isfinite(v[i]))
-                        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                memcpy(y_out + k_out * euler_poisson_asym_gravity_general_NY, v, sizeof y);
+                /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
+                for (nb = 0; nb < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
+                    taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                derive_euler_poisson_asym_gravity_general_taylor_horner_block(w, order, nb, taub, vb);
+                derive_euler_poisson_asym_gravity_general_taylor_trig_block(nb, vb);
+                for (kb = 0; kb < nb; ++kb, ++k_out) {
+                    for (i = 0; i < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV; ++i)
+                        v[i] = vb[i][kb];
+                    for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
+                        if (!isfinite(v[i]))
+                            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                    memcpy(y_out + k_out * euler_poisson_asym_gravity_general_NY, v, sizeof y);
 #ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
-                if (!series)  /* the output map on the state, as the other methods do */
-                    euler_poisson_asym_gravity_general_observables(t_out[k_out], v, p, o);
-                else
+                    if (!series)  /* the output map on the state, as the other methods do */
+                        euler_poisson_asym_gravity_general_observables(t_out[k_out], v, p, o);
+                    else
 #endif
-                derive_euler_poisson_asym_gravity_general_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                for (j = 0; j < 18; ++j)
-                    out[j * n_out + k_out] = o[j];
-                ++k_out;
+                    derive_euler_poisson_asym_gravity_general_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                }
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -889,14 +914,18 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_last_taylor(do
         double h, double fac, double rtol, double floor_, double t_end, const double *p, double *y,
         double *out, derive_stats *st)
 {
-    double us[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW];
+    double us[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1], w[EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NW], v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV];
+    double vb[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KB];
     int i, k, series;
     for (i = 0; i < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_euler_poisson_asym_gravity_general_taylor_jet_outputs(p, order, us, w);
     series = derive_euler_poisson_asym_gravity_general_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_euler_poisson_asym_gravity_general_taylor_horner(w, order, h, v);
+    derive_euler_poisson_asym_gravity_general_taylor_horner_block(w, order, 1, &h, vb);
+    derive_euler_poisson_asym_gravity_general_taylor_trig_block(1, vb);
+    for (i = 0; i < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV; ++i)
+        v[i] = vb[i][0];
     for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
         if (!isfinite(v[i]))
             return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_end, i);

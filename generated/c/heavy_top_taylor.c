@@ -186,15 +186,92 @@ static int derive_heavy_top_taylor_outputs_converged(double w[][DERIVE_HEAVY_TOP
     return 1;
 }
 
-/* Every column of w at tau (Horner), into v. */
-static void derive_heavy_top_taylor_horner(double w[][DERIVE_HEAVY_TOP_TAYLOR_NW], int order, double tau, double *v)
+/* Every column of w at the nb times tau of a block of samples (nb <= DERIVE_HEAVY_TOP_TAYLOR_KB), by
+ * Horner's scheme: the samples' chains side by side (one alone is bound by the latency of its
+ * multiply-adds), each in the scheme's own order, so a sample's numbers do not depend on its
+ * block. v[c][k]: column c at sample k; past the NW columns, room for the sin and cos of the
+ * states that stay pointwise (derive_heavy_top_taylor_trig_block; DERIVE_HEAVY_TOP_TAYLOR_NV values per sample). */
+#define DERIVE_HEAVY_TOP_TAYLOR_KB 16
+#define DERIVE_HEAVY_TOP_TAYLOR_NV (DERIVE_HEAVY_TOP_TAYLOR_NW + 4)
+static void derive_heavy_top_taylor_horner_block(double w[][DERIVE_HEAVY_TOP_TAYLOR_NW], int order, int nb, const double *tau,
+                                double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
 {
-    int j, n;
+    int j, n, k;
     for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-        v[j] = w[order][j];
+        for (k = 0; k < nb; ++k)
+            v[j][k] = w[order][j];
     for (n = order - 1; n >= 0; --n)
         for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-            v[j] = v[j] * tau + w[n][j];
+            for (k = 0; k < nb; ++k)
+                v[j][k] = v[j][k] * tau[k] + w[n][j];
+}
+
+/* sin x and cos x, by arithmetic alone so that a loop over samples vectorises: x = n pi/2 + r
+ * by Cody and Waite's reduction with 118 bits of pi/2 in three parts (the two rounds of
+ * fdlibm's __ieee754_rem_pio2: every product exact for |n| <= 2^20), r as a double-double
+ * (y0, y1) in [-pi/4, pi/4], then fdlibm's kernels __kernel_sin and __kernel_cos there (degree
+ * 13 and 14, < 1 ulp) and the quadrant n mod 4 as selects on the bits. n is read from the bits
+ * of x 2/pi + 1.5 2^52 (rounded to the nearest integer by the addition). Within 1 ulp of
+ * glibc's sin and cos (equal on 97 % of 2e7 arguments up to 8e5, tests/test_taylor_trig.py);
+ * valid for |x| <= 2^19 pi/2 (DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX), beyond which the caller takes libm's. */
+static inline void derive_heavy_top_taylor_sincos_poly(double x, double *s, double *c)
+{
+    const double invpio2 = 6.36619772367581382433e-01, pio2_1 = 1.57079632673412561417e+00,
+        pio2_2 = 6.07710050630396597660e-11, pio2_2t = 2.02226624879595063154e-21;
+    double fn, r, w, t, y0, y1, z, v, rs, rc, hz, ww, sk, ck;
+    uint64_t q, sw, bs, bc, sb, cb;
+    fn = x * invpio2 + 0x1.8p52;
+    memcpy(&q, &fn, sizeof q);
+    fn -= 0x1.8p52;
+    r = x - fn * pio2_1;
+    w = fn * pio2_2;
+    t = r;
+    r = t - w;
+    w = fn * pio2_2t - ((t - r) - w);
+    y0 = r - w;
+    y1 = (r - y0) - w;
+    z = y0 * y0;
+    v = z * y0;
+    rs = 8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04 + z * (2.75573137070700676789e-06
+         + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
+    sk = y0 - ((z * (0.5 * y1 - v * rs) - y1) - v * -1.66666666666666324348e-01);
+    rc = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+         + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    ww = 1.0 - hz;
+    ck = ww + (((1.0 - ww) - hz) + (z * rc - y0 * y1));
+    /* quadrant n: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s) for n mod 4 = 0, 1, 2, 3 */
+    memcpy(&bs, &sk, sizeof bs);
+    memcpy(&bc, &ck, sizeof bc);
+    sw = 0 - (q & 1);
+    sb = ((bs & ~sw) | (bc & sw)) ^ ((q & 2) << 62);
+    cb = ((bc & ~sw) | (bs & sw)) ^ (((q + 1) & 2) << 62);
+    memcpy(s, &sb, sizeof sb);
+    memcpy(c, &cb, sizeof cb);
+}
+
+#define DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX (0x1p19 * 1.57079632679489661923)
+
+/* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
+ * the columns: derive_heavy_top_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * argument is beyond its range (and for inf, nan). */
+static void derive_heavy_top_taylor_trig_block(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
+{
+    int k;
+    for (k = 0; k < nb; ++k)
+        derive_heavy_top_taylor_sincos_poly(v[0][k], &v[DERIVE_HEAVY_TOP_TAYLOR_NW + 0][k], &v[DERIVE_HEAVY_TOP_TAYLOR_NW + 1][k]);
+    for (k = 0; k < nb; ++k)
+        if (!(fabs(v[0][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX)) {
+            v[DERIVE_HEAVY_TOP_TAYLOR_NW + 0][k] = sin(v[0][k]);
+            v[DERIVE_HEAVY_TOP_TAYLOR_NW + 1][k] = cos(v[0][k]);
+        }
+    for (k = 0; k < nb; ++k)
+        derive_heavy_top_taylor_sincos_poly(v[2][k], &v[DERIVE_HEAVY_TOP_TAYLOR_NW + 2][k], &v[DERIVE_HEAVY_TOP_TAYLOR_NW + 3][k]);
+    for (k = 0; k < nb; ++k)
+        if (!(fabs(v[2][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX)) {
+            v[DERIVE_HEAVY_TOP_TAYLOR_NW + 2][k] = sin(v[2][k]);
+            v[DERIVE_HEAVY_TOP_TAYLOR_NW + 3][k] = cos(v[2][k]);
+        }
 }
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
@@ -209,41 +286,43 @@ static void derive_heavy_top_taylor_outputs_pointwise(double t, const double *y,
     const double gamma_d = y[5];
     const double tv0 = y[6];
     const double tv1 = y[7];
+    const double tvs0 = y[8];
+    const double tvc0 = y[9];
+    const double tvs1 = y[10];
+    const double tvc1 = y[11];
     const double I1 = p[0];
     const double I3 = p[1];
     const double M = p[2];
     const double g = p[3];
     const double l = p[4];
     (void)t;
-    const double x0 = sin(gamma);
-    const double x1 = cos(gamma);
-    const double x2 = tv0*x1;
-    const double x3 = -alpha_d*x2 + beta_d*x0;
-    const double x4 = tv0*x0;
-    const double x5 = alpha_d*x4 + beta_d*x1;
-    const double x6 = alpha_d*tv1 + gamma_d;
-    const double x7 = (1.0/2.0)*I1;
-    const double x8 = I3*x6;
-    const double x9 = I1*x5;
-    const double x10 = I1*x3;
+    const double x0 = tv0*tvc1;
+    const double x1 = -alpha_d*x0 + beta_d*tvs1;
+    const double x2 = tv0*tvs1;
+    const double x3 = alpha_d*x2 + beta_d*tvc1;
+    const double x4 = alpha_d*tv1 + gamma_d;
+    const double x5 = (1.0/2.0)*I1;
+    const double x6 = I3*x4;
+    const double x7 = I1*x3;
+    const double x8 = I1*x1;
     o[0] = alpha;
     o[1] = beta;
     o[2] = gamma;
-    o[3] = x3;
-    o[4] = x5;
-    o[5] = x6;
-    o[6] = tv0*cos(alpha);
-    o[7] = tv0*sin(alpha);
+    o[3] = x1;
+    o[4] = x3;
+    o[5] = x4;
+    o[6] = tv0*tvc0;
+    o[7] = tv0*tvs0;
     o[8] = tv1;
-    o[9] = (1.0/2.0)*I3*(x6*x6) + M*g*l*tv1 + (x3*x3)*x7 + (x5*x5)*x7;
-    o[10] = tv1*x8 - x10*x2 + x4*x9;
-    o[11] = x8;
-    o[12] = -x2;
-    o[13] = x4;
+    o[9] = (1.0/2.0)*I3*(x4*x4) + M*g*l*tv1 + (x1*x1)*x5 + (x3*x3)*x5;
+    o[10] = tv1*x6 - x0*x8 + x2*x7;
+    o[11] = x6;
+    o[12] = -x0;
+    o[13] = x2;
     o[14] = tv1;
-    o[15] = x10;
-    o[16] = x9;
-    o[17] = x8;
+    o[15] = x8;
+    o[16] = x7;
+    o[17] = x6;
 }
 
 int heavy_top_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -406,9 +485,10 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
 {
     derive_stats local;
     double u[DERIVE_HEAVY_TOP_TAYLOR_NODES][HEAVY_TOP_TAYLOR_MAX_ORDER + 1], y[heavy_top_NY];
-    double w[HEAVY_TOP_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_TAYLOR_NW], v[DERIVE_HEAVY_TOP_TAYLOR_NW], tau;
+    double w[HEAVY_TOP_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_TAYLOR_NW], v[DERIVE_HEAVY_TOP_TAYLOR_NV];
+    double vb[DERIVE_HEAVY_TOP_TAYLOR_NV][DERIVE_HEAVY_TOP_TAYLOR_KB], taub[DERIVE_HEAVY_TOP_TAYLOR_KB];
     double o[18];
-    int series = 1;
+    int series = 1, nb, kb;
     double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
     long k_out;
     int i, j, order, last;
@@ -514,21 +594,27 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
             derive_heavy_top_taylor_jet_outputs(p, order, u, w);
             series = derive_heavy_top_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
             while (k_out < n_out && t_out[k_out] <= tn) {
-                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
-                derive_heavy_top_taylor_horner(w, order, tau, v);
-                for (i = 0; i < heavy_top_NY; ++i)
-                    if (!isfinite(v[i]))
-                        return derive_heavy_top_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                memcpy(y_out + k_out * heavy_top_NY, v, sizeof y);
+                /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
+                for (nb = 0; nb < DERIVE_HEAVY_TOP_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
+                    taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                derive_heavy_top_taylor_horner_block(w, order, nb, taub, vb);
+                derive_heavy_top_taylor_trig_block(nb, vb);
+                for (kb = 0; kb < nb; ++kb, ++k_out) {
+                    for (i = 0; i < DERIVE_HEAVY_TOP_TAYLOR_NV; ++i)
+                        v[i] = vb[i][kb];
+                    for (i = 0; i < heavy_top_NY; ++i)
+                        if (!isfinite(v[i]))
+                            return derive_heavy_top_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                    memcpy(y_out + k_out * heavy_top_NY, v, sizeof y);
 #ifdef DERIVE_HEAVY_TOP_SIMULATE
-                if (!series)  /* the output map on the state, as the other methods do */
-                    heavy_top_observables(t_out[k_out], v, p, o);
-                else
+                    if (!series)  /* the output map on the state, as the other methods do */
+                        heavy_top_observables(t_out[k_out], v, p, o);
+                    else
 #endif
-                derive_heavy_top_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                for (j = 0; j < 18; ++j)
-                    out[j * n_out + k_out] = o[j];
-                ++k_out;
+                    derive_heavy_top_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                }
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -909,14 +995,18 @@ static int derive_heavy_top_taylor_lanes_last_taylor(double u[][HEAVY_TOP_TAYLOR
         double h, double fac, double rtol, double floor_, double t_end, const double *p, double *y,
         double *out, derive_stats *st)
 {
-    double us[DERIVE_HEAVY_TOP_TAYLOR_NODES][HEAVY_TOP_TAYLOR_MAX_ORDER + 1], w[HEAVY_TOP_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_TAYLOR_NW], v[DERIVE_HEAVY_TOP_TAYLOR_NW];
+    double us[DERIVE_HEAVY_TOP_TAYLOR_NODES][HEAVY_TOP_TAYLOR_MAX_ORDER + 1], w[HEAVY_TOP_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_TAYLOR_NW], v[DERIVE_HEAVY_TOP_TAYLOR_NV];
+    double vb[DERIVE_HEAVY_TOP_TAYLOR_NV][DERIVE_HEAVY_TOP_TAYLOR_KB];
     int i, k, series;
     for (i = 0; i < DERIVE_HEAVY_TOP_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_heavy_top_taylor_jet_outputs(p, order, us, w);
     series = derive_heavy_top_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_heavy_top_taylor_horner(w, order, h, v);
+    derive_heavy_top_taylor_horner_block(w, order, 1, &h, vb);
+    derive_heavy_top_taylor_trig_block(1, vb);
+    for (i = 0; i < DERIVE_HEAVY_TOP_TAYLOR_NV; ++i)
+        v[i] = vb[i][0];
     for (i = 0; i < heavy_top_NY; ++i)
         if (!isfinite(v[i]))
             return derive_heavy_top_taylor_fail(st, DERIVE_NONFINITE, t_end, i);

@@ -137,15 +137,92 @@ static int derive_reduced_u_sym_taylor_outputs_converged(double w[][DERIVE_REDUC
     return 1;
 }
 
-/* Every column of w at tau (Horner), into v. */
-static void derive_reduced_u_sym_taylor_horner(double w[][DERIVE_REDUCED_U_SYM_TAYLOR_NW], int order, double tau, double *v)
+/* Every column of w at the nb times tau of a block of samples (nb <= DERIVE_REDUCED_U_SYM_TAYLOR_KB), by
+ * Horner's scheme: the samples' chains side by side (one alone is bound by the latency of its
+ * multiply-adds), each in the scheme's own order, so a sample's numbers do not depend on its
+ * block. v[c][k]: column c at sample k; past the NW columns, room for the sin and cos of the
+ * states that stay pointwise (derive_reduced_u_sym_taylor_trig_block; DERIVE_REDUCED_U_SYM_TAYLOR_NV values per sample). */
+#define DERIVE_REDUCED_U_SYM_TAYLOR_KB 16
+#define DERIVE_REDUCED_U_SYM_TAYLOR_NV (DERIVE_REDUCED_U_SYM_TAYLOR_NW + 4)
+static void derive_reduced_u_sym_taylor_horner_block(double w[][DERIVE_REDUCED_U_SYM_TAYLOR_NW], int order, int nb, const double *tau,
+                                double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KB])
 {
-    int j, n;
+    int j, n, k;
     for (j = 0; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j)
-        v[j] = w[order][j];
+        for (k = 0; k < nb; ++k)
+            v[j][k] = w[order][j];
     for (n = order - 1; n >= 0; --n)
         for (j = 0; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j)
-            v[j] = v[j] * tau + w[n][j];
+            for (k = 0; k < nb; ++k)
+                v[j][k] = v[j][k] * tau[k] + w[n][j];
+}
+
+/* sin x and cos x, by arithmetic alone so that a loop over samples vectorises: x = n pi/2 + r
+ * by Cody and Waite's reduction with 118 bits of pi/2 in three parts (the two rounds of
+ * fdlibm's __ieee754_rem_pio2: every product exact for |n| <= 2^20), r as a double-double
+ * (y0, y1) in [-pi/4, pi/4], then fdlibm's kernels __kernel_sin and __kernel_cos there (degree
+ * 13 and 14, < 1 ulp) and the quadrant n mod 4 as selects on the bits. n is read from the bits
+ * of x 2/pi + 1.5 2^52 (rounded to the nearest integer by the addition). Within 1 ulp of
+ * glibc's sin and cos (equal on 97 % of 2e7 arguments up to 8e5, tests/test_taylor_trig.py);
+ * valid for |x| <= 2^19 pi/2 (DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX), beyond which the caller takes libm's. */
+static inline void derive_reduced_u_sym_taylor_sincos_poly(double x, double *s, double *c)
+{
+    const double invpio2 = 6.36619772367581382433e-01, pio2_1 = 1.57079632673412561417e+00,
+        pio2_2 = 6.07710050630396597660e-11, pio2_2t = 2.02226624879595063154e-21;
+    double fn, r, w, t, y0, y1, z, v, rs, rc, hz, ww, sk, ck;
+    uint64_t q, sw, bs, bc, sb, cb;
+    fn = x * invpio2 + 0x1.8p52;
+    memcpy(&q, &fn, sizeof q);
+    fn -= 0x1.8p52;
+    r = x - fn * pio2_1;
+    w = fn * pio2_2;
+    t = r;
+    r = t - w;
+    w = fn * pio2_2t - ((t - r) - w);
+    y0 = r - w;
+    y1 = (r - y0) - w;
+    z = y0 * y0;
+    v = z * y0;
+    rs = 8.33333333332248946124e-03 + z * (-1.98412698298579493134e-04 + z * (2.75573137070700676789e-06
+         + z * (-2.50507602534068634195e-08 + z * 1.58969099521155010221e-10)));
+    sk = y0 - ((z * (0.5 * y1 - v * rs) - y1) - v * -1.66666666666666324348e-01);
+    rc = z * (4.16666666666666019037e-02 + z * (-1.38888888888741095749e-03 + z * (2.48015872894767294178e-05
+         + z * (-2.75573143513906633035e-07 + z * (2.08757232129817482790e-09 + z * -1.13596475577881948265e-11)))));
+    hz = 0.5 * z;
+    ww = 1.0 - hz;
+    ck = ww + (((1.0 - ww) - hz) + (z * rc - y0 * y1));
+    /* quadrant n: (sin, cos) = (s, c), (c, -s), (-s, -c), (-c, s) for n mod 4 = 0, 1, 2, 3 */
+    memcpy(&bs, &sk, sizeof bs);
+    memcpy(&bc, &ck, sizeof bc);
+    sw = 0 - (q & 1);
+    sb = ((bs & ~sw) | (bc & sw)) ^ ((q & 2) << 62);
+    cb = ((bc & ~sw) | (bs & sw)) ^ (((q + 1) & 2) << 62);
+    memcpy(s, &sb, sizeof sb);
+    memcpy(c, &cb, sizeof cb);
+}
+
+#define DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX (0x1p19 * 1.57079632679489661923)
+
+/* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
+ * the columns: derive_reduced_u_sym_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * argument is beyond its range (and for inf, nan). */
+static void derive_reduced_u_sym_taylor_trig_block(int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KB])
+{
+    int k;
+    for (k = 0; k < nb; ++k)
+        derive_reduced_u_sym_taylor_sincos_poly(v[0][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 0][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 1][k]);
+    for (k = 0; k < nb; ++k)
+        if (!(fabs(v[0][k]) <= DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX)) {
+            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 0][k] = sin(v[0][k]);
+            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 1][k] = cos(v[0][k]);
+        }
+    for (k = 0; k < nb; ++k)
+        derive_reduced_u_sym_taylor_sincos_poly(v[2][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 2][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 3][k]);
+    for (k = 0; k < nb; ++k)
+        if (!(fabs(v[2][k]) <= DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX)) {
+            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 2][k] = sin(v[2][k]);
+            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 3][k] = cos(v[2][k]);
+        }
 }
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
@@ -156,51 +233,53 @@ static void derive_reduced_u_sym_taylor_outputs_pointwise(double t, const double
     const double u = y[1];
     const double gamma = y[2];
     const double u_d = y[3];
+    const double tvs0 = y[4];
+    const double tvc0 = y[5];
+    const double tvs1 = y[6];
+    const double tvc1 = y[7];
     const double I1 = p[0];
     const double I3 = p[1];
     const double p_alpha = p[2];
     const double p_gamma = p[3];
     (void)t;
-    const double x0 = sin(gamma);
-    const double x1 = u + 1;
-    const double x2 = u - 1;
-    const double x3 = -x2;
-    const double x4 = sqrt(x1*x3);
-    const double x5 = u_d/x4;
-    const double x6 = p_alpha + p_gamma;
-    const double x7 = 1.0/x1;
-    const double x8 = 1.0/I1;
-    const double x9 = (1.0/2.0)*x8;
-    const double x10 = p_alpha - p_gamma;
-    const double x11 = 1.0/x2;
-    const double x12 = ((x10 == 0) ? (0) : (-x10*x11*x9)) + ((x6 == 0) ? (0) : (x6*x7*x9));
-    const double x13 = cos(gamma);
-    const double x14 = x13*x4;
-    const double x15 = -x0*x5 - x12*x14;
-    const double x16 = x0*x12*x4 - x13*x5;
-    const double x17 = 1.0/I3;
-    const double x18 = (p_gamma*p_gamma);
-    const double x19 = 2*p_alpha*p_gamma;
-    const double x20 = (p_alpha*p_alpha) + x18;
-    const double x21 = (1.0/4.0)*x8;
-    const double x22 = 2*I1;
+    const double x0 = u + 1;
+    const double x1 = u - 1;
+    const double x2 = -x1;
+    const double x3 = sqrt(x0*x2);
+    const double x4 = u_d/x3;
+    const double x5 = p_alpha + p_gamma;
+    const double x6 = 1.0/x0;
+    const double x7 = 1.0/I1;
+    const double x8 = (1.0/2.0)*x7;
+    const double x9 = p_alpha - p_gamma;
+    const double x10 = 1.0/x1;
+    const double x11 = ((x5 == 0) ? (0) : (x5*x6*x8)) + ((x9 == 0) ? (0) : (-x10*x8*x9));
+    const double x12 = tvc1*x3;
+    const double x13 = -tvs1*x4 - x11*x12;
+    const double x14 = -tvc1*x4 + tvs1*x11*x3;
+    const double x15 = 1.0/I3;
+    const double x16 = (p_gamma*p_gamma);
+    const double x17 = 2*p_alpha*p_gamma;
+    const double x18 = (p_alpha*p_alpha) + x16;
+    const double x19 = (1.0/4.0)*x7;
+    const double x20 = 2*I1;
     o[0] = alpha;
     o[1] = acos(u);
     o[2] = gamma;
-    o[3] = x15;
-    o[4] = x16;
-    o[5] = p_gamma*x17;
-    o[6] = x4*cos(alpha);
-    o[7] = x4*sin(alpha);
+    o[3] = x13;
+    o[4] = x14;
+    o[5] = p_gamma*x15;
+    o[6] = tvc0*x3;
+    o[7] = tvs0*x3;
     o[8] = u;
-    o[9] = (1.0/2.0)*I1*(u_d*u_d)*x7/x3 + (1.0/2.0)*x17*x18 + x9*(-x18 + x22*((x19 - x20 == 0) ? (0) : (-(x10*x10)*x11*x21)) + x22*((x19 + x20 == 0) ? (0) : (x21*(x6*x6)*x7)));
+    o[9] = (1.0/2.0)*I1*(u_d*u_d)*x6/x2 + (1.0/2.0)*x15*x16 + x8*(-x16 + x20*((x17 - x18 == 0) ? (0) : (-x10*x19*(x9*x9))) + x20*((x17 + x18 == 0) ? (0) : (x19*(x5*x5)*x6)));
     o[10] = p_alpha;
     o[11] = p_gamma;
-    o[12] = -x14;
-    o[13] = x0*x4;
+    o[12] = -x12;
+    o[13] = tvs1*x3;
     o[14] = u;
-    o[15] = I1*x15;
-    o[16] = I1*x16;
+    o[15] = I1*x13;
+    o[16] = I1*x14;
     o[17] = p_gamma;
 }
 
@@ -364,9 +443,10 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
 {
     derive_stats local;
     double u[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], y[reduced_u_sym_NY];
-    double w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_TAYLOR_NW], tau;
+    double w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_TAYLOR_NV];
+    double vb[DERIVE_REDUCED_U_SYM_TAYLOR_NV][DERIVE_REDUCED_U_SYM_TAYLOR_KB], taub[DERIVE_REDUCED_U_SYM_TAYLOR_KB];
     double o[18];
-    int series = 1;
+    int series = 1, nb, kb;
     double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
     long k_out;
     int i, j, order, last;
@@ -466,21 +546,27 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
             derive_reduced_u_sym_taylor_jet_outputs(p, order, u, w);
             series = derive_reduced_u_sym_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
             while (k_out < n_out && t_out[k_out] <= tn) {
-                tau = t_out[k_out] < tn ? t_out[k_out] - t : h;
-                derive_reduced_u_sym_taylor_horner(w, order, tau, v);
-                for (i = 0; i < reduced_u_sym_NY; ++i)
-                    if (!isfinite(v[i]))
-                        return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                memcpy(y_out + k_out * reduced_u_sym_NY, v, sizeof y);
+                /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
+                for (nb = 0; nb < DERIVE_REDUCED_U_SYM_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
+                    taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                derive_reduced_u_sym_taylor_horner_block(w, order, nb, taub, vb);
+                derive_reduced_u_sym_taylor_trig_block(nb, vb);
+                for (kb = 0; kb < nb; ++kb, ++k_out) {
+                    for (i = 0; i < DERIVE_REDUCED_U_SYM_TAYLOR_NV; ++i)
+                        v[i] = vb[i][kb];
+                    for (i = 0; i < reduced_u_sym_NY; ++i)
+                        if (!isfinite(v[i]))
+                            return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                    memcpy(y_out + k_out * reduced_u_sym_NY, v, sizeof y);
 #ifdef DERIVE_REDUCED_U_SYM_SIMULATE
-                if (!series)  /* the output map on the state, as the other methods do */
-                    reduced_u_sym_observables(t_out[k_out], v, p, o);
-                else
+                    if (!series)  /* the output map on the state, as the other methods do */
+                        reduced_u_sym_observables(t_out[k_out], v, p, o);
+                    else
 #endif
-                derive_reduced_u_sym_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                for (j = 0; j < 18; ++j)
-                    out[j * n_out + k_out] = o[j];
-                ++k_out;
+                    derive_reduced_u_sym_taylor_outputs_pointwise(t_out[k_out], v, p, o);
+                    for (j = 0; j < 18; ++j)
+                        out[j * n_out + k_out] = o[j];
+                }
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -796,14 +882,18 @@ static int derive_reduced_u_sym_taylor_lanes_last_taylor(double u[][REDUCED_U_SY
         double h, double fac, double rtol, double floor_, double t_end, const double *p, double *y,
         double *out, derive_stats *st)
 {
-    double us[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_TAYLOR_NW];
+    double us[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_TAYLOR_NV];
+    double vb[DERIVE_REDUCED_U_SYM_TAYLOR_NV][DERIVE_REDUCED_U_SYM_TAYLOR_KB];
     int i, k, series;
     for (i = 0; i < DERIVE_REDUCED_U_SYM_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_reduced_u_sym_taylor_jet_outputs(p, order, us, w);
     series = derive_reduced_u_sym_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_reduced_u_sym_taylor_horner(w, order, h, v);
+    derive_reduced_u_sym_taylor_horner_block(w, order, 1, &h, vb);
+    derive_reduced_u_sym_taylor_trig_block(1, vb);
+    for (i = 0; i < DERIVE_REDUCED_U_SYM_TAYLOR_NV; ++i)
+        v[i] = vb[i][0];
     for (i = 0; i < reduced_u_sym_NY; ++i)
         if (!isfinite(v[i]))
             return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
