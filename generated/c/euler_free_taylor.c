@@ -132,14 +132,24 @@ static int derive_euler_free_taylor_outputs_converged(double w[][DERIVE_EULER_FR
 static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_TAYLOR_NW], int order, int nb, const double *tau,
                                 double v[][DERIVE_EULER_FREE_TAYLOR_KB])
 {
-    int j, n, k;
-    for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-        for (k = 0; k < nb; ++k)
-            v[j][k] = w[order][j];
-    for (n = order - 1; n >= 0; --n)
+    /* four samples at a time, their NW sums in registers (in memory, each pass over the block
+     * reloaded what the previous one had just stored); tau is read up to a multiple of 4 */
+    double a[DERIVE_EULER_FREE_TAYLOR_NW][4], tk[4];
+    int j, n, k, k0;
+    for (k0 = 0; k0 < nb; k0 += 4) {
+        for (k = 0; k < 4; ++k)
+            tk[k] = tau[k0 + k];
         for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-            for (k = 0; k < nb; ++k)
-                v[j][k] = v[j][k] * tau[k] + w[n][j];
+            for (k = 0; k < 4; ++k)
+                a[j][k] = w[order][j];
+        for (n = order - 1; n >= 0; --n)
+            for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
+                for (k = 0; k < 4; ++k)
+                    a[j][k] = a[j][k] * tk[k] + w[n][j];
+        for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
+            for (k = 0; k < 4; ++k)
+                v[j][k0 + k] = a[j][k];
+    }
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
@@ -153,7 +163,7 @@ static void derive_euler_free_taylor_trig_block(int nb, double v[][DERIVE_EULER_
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
  * its sin, cos and exp calls read from the columns). */
-static void derive_euler_free_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+static void derive_euler_free_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
 {
     const double omega1 = y[0];
     const double omega2 = y[1];
@@ -165,11 +175,11 @@ static void derive_euler_free_taylor_outputs_pointwise(double t, const double *y
     const double x0 = (omega1*omega1);
     const double x1 = (omega2*omega2);
     const double x2 = (omega3*omega3);
-    o[0] = (1.0/2.0)*I1*x0 + (1.0/2.0)*I2*x1 + (1.0/2.0)*I3*x2;
-    o[1] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2;
-    o[2] = omega1;
-    o[3] = omega2;
-    o[4] = omega3;
+    o[0 * stride] = (1.0/2.0)*I1*x0 + (1.0/2.0)*I2*x1 + (1.0/2.0)*I3*x2;
+    o[1 * stride] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2;
+    o[2 * stride] = omega1;
+    o[3 * stride] = omega2;
+    o[4 * stride] = omega3;
 }
 
 int euler_free_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -435,6 +445,8 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
                 /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
                 for (nb = 0; nb < DERIVE_EULER_FREE_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
                     taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                for (kb = nb; kb % 4; ++kb)
+                    taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_free_taylor_horner_block(w, order, nb, taub, vb);
                 derive_euler_free_taylor_trig_block(nb, vb);
                 for (kb = 0; kb < nb; ++kb, ++k_out) {
@@ -445,13 +457,14 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
                             return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                     memcpy(y_out + k_out * euler_free_NY, v, sizeof y);
 #ifdef DERIVE_EULER_FREE_SIMULATE
-                    if (!series)  /* the output map on the state, as the other methods do */
+                    if (!series) {  /* the output map on the state, as the other methods do */
                         euler_free_observables(t_out[k_out], v, p, o);
-                    else
+                        for (j = 0; j < 5; ++j)
+                            out[j * n_out + k_out] = o[j];
+                        continue;
+                    }
 #endif
-                    derive_euler_free_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                    for (j = 0; j < 5; ++j)
-                        out[j * n_out + k_out] = o[j];
+                    derive_euler_free_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
                 }
             }
         }
@@ -744,14 +757,15 @@ static int derive_euler_free_taylor_lanes_last_taylor(double u[][EULER_FREE_TAYL
         double *out, derive_stats *st)
 {
     double us[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW], v[DERIVE_EULER_FREE_TAYLOR_NV];
-    double vb[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KB];
+    double vb[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KB], hs[4] = {0.0, 0.0, 0.0, 0.0};
     int i, k, series;
+    hs[0] = h;  /* (the block's Horner reads 4 at a time) */
     for (i = 0; i < DERIVE_EULER_FREE_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_euler_free_taylor_jet_outputs(p, order, us, w);
     series = derive_euler_free_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_euler_free_taylor_horner_block(w, order, 1, &h, vb);
+    derive_euler_free_taylor_horner_block(w, order, 1, hs, vb);
     derive_euler_free_taylor_trig_block(1, vb);
     for (i = 0; i < DERIVE_EULER_FREE_TAYLOR_NV; ++i)
         v[i] = vb[i][0];
@@ -760,7 +774,7 @@ static int derive_euler_free_taylor_lanes_last_taylor(double u[][EULER_FREE_TAYL
             return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * euler_free_NY);
     if (series)
-        derive_euler_free_taylor_outputs_pointwise(t_end, v, p, out);
+        derive_euler_free_taylor_outputs_pointwise(t_end, v, p, out, 1);
     else
         euler_free_observables(t_end, v, p, out);
     return euler_free_outputs_finite(1, &t_end, out, st);

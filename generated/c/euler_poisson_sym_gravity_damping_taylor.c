@@ -167,14 +167,24 @@ static int derive_euler_poisson_sym_gravity_damping_taylor_outputs_converged(dou
 static void derive_euler_poisson_sym_gravity_damping_taylor_horner_block(double w[][DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW], int order, int nb, const double *tau,
                                 double v[][DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_KB])
 {
-    int j, n, k;
-    for (j = 0; j < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW; ++j)
-        for (k = 0; k < nb; ++k)
-            v[j][k] = w[order][j];
-    for (n = order - 1; n >= 0; --n)
+    /* four samples at a time, their NW sums in registers (in memory, each pass over the block
+     * reloaded what the previous one had just stored); tau is read up to a multiple of 4 */
+    double a[DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW][4], tk[4];
+    int j, n, k, k0;
+    for (k0 = 0; k0 < nb; k0 += 4) {
+        for (k = 0; k < 4; ++k)
+            tk[k] = tau[k0 + k];
         for (j = 0; j < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW; ++j)
-            for (k = 0; k < nb; ++k)
-                v[j][k] = v[j][k] * tau[k] + w[n][j];
+            for (k = 0; k < 4; ++k)
+                a[j][k] = w[order][j];
+        for (n = order - 1; n >= 0; --n)
+            for (j = 0; j < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW; ++j)
+                for (k = 0; k < 4; ++k)
+                    a[j][k] = a[j][k] * tk[k] + w[n][j];
+        for (j = 0; j < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW; ++j)
+            for (k = 0; k < 4; ++k)
+                v[j][k0 + k] = a[j][k];
+    }
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
@@ -188,7 +198,7 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_trig_block(int nb, d
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
  * its sin, cos and exp calls read from the columns). */
-static void derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+static void derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
 {
     const double omega1 = y[0];
     const double omega2 = y[1];
@@ -210,24 +220,24 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(do
     const double x2 = I1*omega1;
     const double x3 = I1*omega2;
     const double x4 = I3*omega3;
-    o[0] = atan2(x0, e3);
-    o[1] = atan2(sqrt((n1*n1) + (n2*n2)), n3);
-    o[2] = atan2(n2, -n1);
-    o[3] = omega1;
-    o[4] = omega2;
-    o[5] = omega3;
-    o[6] = e3;
-    o[7] = x0;
-    o[8] = n3;
-    o[9] = (1.0/2.0)*I3*(omega3*omega3) + M*g*l*n3 + (omega1*omega1)*x1 + (omega2*omega2)*x1;
-    o[10] = n1*x2 + n2*x3 + n3*x4;
-    o[11] = x4;
-    o[12] = n1;
-    o[13] = n2;
-    o[14] = n3;
-    o[15] = x2;
-    o[16] = x3;
-    o[17] = x4;
+    o[0 * stride] = atan2(x0, e3);
+    o[1 * stride] = atan2(sqrt((n1*n1) + (n2*n2)), n3);
+    o[2 * stride] = atan2(n2, -n1);
+    o[3 * stride] = omega1;
+    o[4 * stride] = omega2;
+    o[5 * stride] = omega3;
+    o[6 * stride] = e3;
+    o[7 * stride] = x0;
+    o[8 * stride] = n3;
+    o[9 * stride] = (1.0/2.0)*I3*(omega3*omega3) + M*g*l*n3 + (omega1*omega1)*x1 + (omega2*omega2)*x1;
+    o[10 * stride] = n1*x2 + n2*x3 + n3*x4;
+    o[11 * stride] = x4;
+    o[12 * stride] = n1;
+    o[13 * stride] = n2;
+    o[14 * stride] = n3;
+    o[15 * stride] = x2;
+    o[16 * stride] = x3;
+    o[17 * stride] = x4;
 }
 
 int euler_poisson_sym_gravity_damping_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -511,6 +521,8 @@ static int derive_euler_poisson_sym_gravity_damping_taylor_solve_taylor(const do
                 /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
                 for (nb = 0; nb < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
                     taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                for (kb = nb; kb % 4; ++kb)
+                    taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_poisson_sym_gravity_damping_taylor_horner_block(w, order, nb, taub, vb);
                 derive_euler_poisson_sym_gravity_damping_taylor_trig_block(nb, vb);
                 for (kb = 0; kb < nb; ++kb, ++k_out) {
@@ -521,13 +533,14 @@ static int derive_euler_poisson_sym_gravity_damping_taylor_solve_taylor(const do
                             return derive_euler_poisson_sym_gravity_damping_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                     memcpy(y_out + k_out * euler_poisson_sym_gravity_damping_NY, v, sizeof y);
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_SIMULATE
-                    if (!series)  /* the output map on the state, as the other methods do */
+                    if (!series) {  /* the output map on the state, as the other methods do */
                         euler_poisson_sym_gravity_damping_observables(t_out[k_out], v, p, o);
-                    else
+                        for (j = 0; j < 18; ++j)
+                            out[j * n_out + k_out] = o[j];
+                        continue;
+                    }
 #endif
-                    derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
+                    derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
                 }
             }
         }
@@ -875,14 +888,15 @@ static int derive_euler_poisson_sym_gravity_damping_taylor_lanes_last_taylor(dou
         double *out, derive_stats *st)
 {
     double us[DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NODES][EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_MAX_ORDER + 1], w[EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NW], v[DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NV];
-    double vb[DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NV][DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_KB];
+    double vb[DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NV][DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_KB], hs[4] = {0.0, 0.0, 0.0, 0.0};
     int i, k, series;
+    hs[0] = h;  /* (the block's Horner reads 4 at a time) */
     for (i = 0; i < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_euler_poisson_sym_gravity_damping_taylor_jet_outputs(p, order, us, w);
     series = derive_euler_poisson_sym_gravity_damping_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_euler_poisson_sym_gravity_damping_taylor_horner_block(w, order, 1, &h, vb);
+    derive_euler_poisson_sym_gravity_damping_taylor_horner_block(w, order, 1, hs, vb);
     derive_euler_poisson_sym_gravity_damping_taylor_trig_block(1, vb);
     for (i = 0; i < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_NV; ++i)
         v[i] = vb[i][0];
@@ -891,7 +905,7 @@ static int derive_euler_poisson_sym_gravity_damping_taylor_lanes_last_taylor(dou
             return derive_euler_poisson_sym_gravity_damping_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * euler_poisson_sym_gravity_damping_NY);
     if (series)
-        derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(t_end, v, p, out);
+        derive_euler_poisson_sym_gravity_damping_taylor_outputs_pointwise(t_end, v, p, out, 1);
     else
         euler_poisson_sym_gravity_damping_observables(t_end, v, p, out);
     derive_euler_poisson_sym_gravity_damping_canonical_angles(1, out, out + 1, out + 2);

@@ -208,14 +208,24 @@ static int derive_heavy_top_reduced_taylor_outputs_converged(double w[][DERIVE_H
 static void derive_heavy_top_reduced_taylor_horner_block(double w[][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW], int order, int nb, const double *tau,
                                 double v[][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB])
 {
-    int j, n, k;
-    for (j = 0; j < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW; ++j)
-        for (k = 0; k < nb; ++k)
-            v[j][k] = w[order][j];
-    for (n = order - 1; n >= 0; --n)
+    /* four samples at a time, their NW sums in registers (in memory, each pass over the block
+     * reloaded what the previous one had just stored); tau is read up to a multiple of 4 */
+    double a[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW][4], tk[4];
+    int j, n, k, k0;
+    for (k0 = 0; k0 < nb; k0 += 4) {
+        for (k = 0; k < 4; ++k)
+            tk[k] = tau[k0 + k];
         for (j = 0; j < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW; ++j)
-            for (k = 0; k < nb; ++k)
-                v[j][k] = v[j][k] * tau[k] + w[n][j];
+            for (k = 0; k < 4; ++k)
+                a[j][k] = w[order][j];
+        for (n = order - 1; n >= 0; --n)
+            for (j = 0; j < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW; ++j)
+                for (k = 0; k < 4; ++k)
+                    a[j][k] = a[j][k] * tk[k] + w[n][j];
+        for (j = 0; j < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW; ++j)
+            for (k = 0; k < 4; ++k)
+                v[j][k0 + k] = a[j][k];
+    }
 }
 
 /* sin x and cos x, by arithmetic alone so that a loop over samples vectorises: x = n pi/2 + r
@@ -288,7 +298,7 @@ static void derive_heavy_top_reduced_taylor_trig_block(int nb, double v[][DERIVE
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
  * its sin, cos and exp calls read from the columns). */
-static void derive_heavy_top_reduced_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+static void derive_heavy_top_reduced_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
 {
     const double alpha = y[0];
     const double beta = y[1];
@@ -326,24 +336,24 @@ static void derive_heavy_top_reduced_taylor_outputs_pointwise(double t, const do
     const double x13 = (x0*x0);
     const double x14 = (1.0/8.0)*x2;
     const double x15 = (x4*x4);
-    o[0] = alpha;
-    o[1] = beta;
-    o[2] = gamma;
-    o[3] = x8;
-    o[4] = x10;
-    o[5] = p_gamma*x11;
-    o[6] = tv2*tvc0;
-    o[7] = tv2*tvs0;
-    o[8] = tv3;
-    o[9] = (1.0/2.0)*I1*(beta_d*beta_d) + M*g*l*tv3 + x11*x12 - x12*x2 + ((x13 == 0) ? (0) : (x1*x13*x14)) + ((x15 == 0) ? (0) : (x14*x15*x5));
-    o[10] = p_alpha;
-    o[11] = p_gamma;
-    o[12] = -x7;
-    o[13] = x9;
-    o[14] = tv3;
-    o[15] = I1*x8;
-    o[16] = I1*x10;
-    o[17] = p_gamma;
+    o[0 * stride] = alpha;
+    o[1 * stride] = beta;
+    o[2 * stride] = gamma;
+    o[3 * stride] = x8;
+    o[4 * stride] = x10;
+    o[5 * stride] = p_gamma*x11;
+    o[6 * stride] = tv2*tvc0;
+    o[7 * stride] = tv2*tvs0;
+    o[8 * stride] = tv3;
+    o[9 * stride] = (1.0/2.0)*I1*(beta_d*beta_d) + M*g*l*tv3 + x11*x12 - x12*x2 + ((x13 == 0) ? (0) : (x1*x13*x14)) + ((x15 == 0) ? (0) : (x14*x15*x5));
+    o[10 * stride] = p_alpha;
+    o[11 * stride] = p_gamma;
+    o[12 * stride] = -x7;
+    o[13 * stride] = x9;
+    o[14 * stride] = tv3;
+    o[15 * stride] = I1*x8;
+    o[16 * stride] = I1*x10;
+    o[17 * stride] = p_gamma;
 }
 
 int heavy_top_reduced_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -612,6 +622,8 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
                 /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
                 for (nb = 0; nb < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
                     taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                for (kb = nb; kb % 4; ++kb)
+                    taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_heavy_top_reduced_taylor_horner_block(w, order, nb, taub, vb);
                 derive_heavy_top_reduced_taylor_trig_block(nb, vb);
                 for (kb = 0; kb < nb; ++kb, ++k_out) {
@@ -622,13 +634,14 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
                             return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                     memcpy(y_out + k_out * heavy_top_reduced_NY, v, sizeof y);
 #ifdef DERIVE_HEAVY_TOP_REDUCED_SIMULATE
-                    if (!series)  /* the output map on the state, as the other methods do */
+                    if (!series) {  /* the output map on the state, as the other methods do */
                         heavy_top_reduced_observables(t_out[k_out], v, p, o);
-                    else
+                        for (j = 0; j < 18; ++j)
+                            out[j * n_out + k_out] = o[j];
+                        continue;
+                    }
 #endif
-                    derive_heavy_top_reduced_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
+                    derive_heavy_top_reduced_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
                 }
             }
         }
@@ -1027,14 +1040,15 @@ static int derive_heavy_top_reduced_taylor_lanes_last_taylor(double u[][HEAVY_TO
         double *out, derive_stats *st)
 {
     double us[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NODES][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1], w[HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NW], v[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NV];
-    double vb[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NV][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB];
+    double vb[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NV][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB], hs[4] = {0.0, 0.0, 0.0, 0.0};
     int i, k, series;
+    hs[0] = h;  /* (the block's Horner reads 4 at a time) */
     for (i = 0; i < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_heavy_top_reduced_taylor_jet_outputs(p, order, us, w);
     series = derive_heavy_top_reduced_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_heavy_top_reduced_taylor_horner_block(w, order, 1, &h, vb);
+    derive_heavy_top_reduced_taylor_horner_block(w, order, 1, hs, vb);
     derive_heavy_top_reduced_taylor_trig_block(1, vb);
     for (i = 0; i < DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NV; ++i)
         v[i] = vb[i][0];
@@ -1043,7 +1057,7 @@ static int derive_heavy_top_reduced_taylor_lanes_last_taylor(double u[][HEAVY_TO
             return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * heavy_top_reduced_NY);
     if (series)
-        derive_heavy_top_reduced_taylor_outputs_pointwise(t_end, v, p, out);
+        derive_heavy_top_reduced_taylor_outputs_pointwise(t_end, v, p, out, 1);
     else
         heavy_top_reduced_observables(t_end, v, p, out);
     derive_heavy_top_reduced_canonical_angles(1, out, out + 1, out + 2);

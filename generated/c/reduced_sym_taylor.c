@@ -204,14 +204,24 @@ static int derive_reduced_sym_taylor_outputs_converged(double w[][DERIVE_REDUCED
 static void derive_reduced_sym_taylor_horner_block(double w[][DERIVE_REDUCED_SYM_TAYLOR_NW], int order, int nb, const double *tau,
                                 double v[][DERIVE_REDUCED_SYM_TAYLOR_KB])
 {
-    int j, n, k;
-    for (j = 0; j < DERIVE_REDUCED_SYM_TAYLOR_NW; ++j)
-        for (k = 0; k < nb; ++k)
-            v[j][k] = w[order][j];
-    for (n = order - 1; n >= 0; --n)
+    /* four samples at a time, their NW sums in registers (in memory, each pass over the block
+     * reloaded what the previous one had just stored); tau is read up to a multiple of 4 */
+    double a[DERIVE_REDUCED_SYM_TAYLOR_NW][4], tk[4];
+    int j, n, k, k0;
+    for (k0 = 0; k0 < nb; k0 += 4) {
+        for (k = 0; k < 4; ++k)
+            tk[k] = tau[k0 + k];
         for (j = 0; j < DERIVE_REDUCED_SYM_TAYLOR_NW; ++j)
-            for (k = 0; k < nb; ++k)
-                v[j][k] = v[j][k] * tau[k] + w[n][j];
+            for (k = 0; k < 4; ++k)
+                a[j][k] = w[order][j];
+        for (n = order - 1; n >= 0; --n)
+            for (j = 0; j < DERIVE_REDUCED_SYM_TAYLOR_NW; ++j)
+                for (k = 0; k < 4; ++k)
+                    a[j][k] = a[j][k] * tk[k] + w[n][j];
+        for (j = 0; j < DERIVE_REDUCED_SYM_TAYLOR_NW; ++j)
+            for (k = 0; k < 4; ++k)
+                v[j][k0 + k] = a[j][k];
+    }
 }
 
 /* sin x and cos x, by arithmetic alone so that a loop over samples vectorises: x = n pi/2 + r
@@ -284,7 +294,7 @@ static void derive_reduced_sym_taylor_trig_block(int nb, double v[][DERIVE_REDUC
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
  * its sin, cos and exp calls read from the columns). */
-static void derive_reduced_sym_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+static void derive_reduced_sym_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
 {
     const double alpha = y[0];
     const double beta = y[1];
@@ -319,24 +329,24 @@ static void derive_reduced_sym_taylor_outputs_pointwise(double t, const double *
     const double x13 = (x0*x0);
     const double x14 = (1.0/8.0)*x2;
     const double x15 = (x4*x4);
-    o[0] = alpha;
-    o[1] = beta;
-    o[2] = gamma;
-    o[3] = x8;
-    o[4] = x10;
-    o[5] = p_gamma*x11;
-    o[6] = tv2*tvc0;
-    o[7] = tv2*tvs0;
-    o[8] = tv3;
-    o[9] = (1.0/2.0)*I1*(beta_d*beta_d) + x11*x12 - x12*x2 + ((x13 == 0) ? (0) : (x1*x13*x14)) + ((x15 == 0) ? (0) : (x14*x15*x5));
-    o[10] = p_alpha;
-    o[11] = p_gamma;
-    o[12] = -x7;
-    o[13] = x9;
-    o[14] = tv3;
-    o[15] = I1*x8;
-    o[16] = I1*x10;
-    o[17] = p_gamma;
+    o[0 * stride] = alpha;
+    o[1 * stride] = beta;
+    o[2 * stride] = gamma;
+    o[3 * stride] = x8;
+    o[4 * stride] = x10;
+    o[5 * stride] = p_gamma*x11;
+    o[6 * stride] = tv2*tvc0;
+    o[7 * stride] = tv2*tvs0;
+    o[8 * stride] = tv3;
+    o[9 * stride] = (1.0/2.0)*I1*(beta_d*beta_d) + x11*x12 - x12*x2 + ((x13 == 0) ? (0) : (x1*x13*x14)) + ((x15 == 0) ? (0) : (x14*x15*x5));
+    o[10 * stride] = p_alpha;
+    o[11 * stride] = p_gamma;
+    o[12 * stride] = -x7;
+    o[13 * stride] = x9;
+    o[14 * stride] = tv3;
+    o[15 * stride] = I1*x8;
+    o[16 * stride] = I1*x10;
+    o[17 * stride] = p_gamma;
 }
 
 int reduced_sym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -605,6 +615,8 @@ static int derive_reduced_sym_taylor_solve_taylor(const double *y0, const double
                 /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
                 for (nb = 0; nb < DERIVE_REDUCED_SYM_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
                     taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                for (kb = nb; kb % 4; ++kb)
+                    taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_reduced_sym_taylor_horner_block(w, order, nb, taub, vb);
                 derive_reduced_sym_taylor_trig_block(nb, vb);
                 for (kb = 0; kb < nb; ++kb, ++k_out) {
@@ -615,13 +627,14 @@ static int derive_reduced_sym_taylor_solve_taylor(const double *y0, const double
                             return derive_reduced_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                     memcpy(y_out + k_out * reduced_sym_NY, v, sizeof y);
 #ifdef DERIVE_REDUCED_SYM_SIMULATE
-                    if (!series)  /* the output map on the state, as the other methods do */
+                    if (!series) {  /* the output map on the state, as the other methods do */
                         reduced_sym_observables(t_out[k_out], v, p, o);
-                    else
+                        for (j = 0; j < 18; ++j)
+                            out[j * n_out + k_out] = o[j];
+                        continue;
+                    }
 #endif
-                    derive_reduced_sym_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
+                    derive_reduced_sym_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
                 }
             }
         }
@@ -1012,14 +1025,15 @@ static int derive_reduced_sym_taylor_lanes_last_taylor(double u[][REDUCED_SYM_TA
         double *out, derive_stats *st)
 {
     double us[DERIVE_REDUCED_SYM_TAYLOR_NODES][REDUCED_SYM_TAYLOR_MAX_ORDER + 1], w[REDUCED_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_SYM_TAYLOR_NW], v[DERIVE_REDUCED_SYM_TAYLOR_NV];
-    double vb[DERIVE_REDUCED_SYM_TAYLOR_NV][DERIVE_REDUCED_SYM_TAYLOR_KB];
+    double vb[DERIVE_REDUCED_SYM_TAYLOR_NV][DERIVE_REDUCED_SYM_TAYLOR_KB], hs[4] = {0.0, 0.0, 0.0, 0.0};
     int i, k, series;
+    hs[0] = h;  /* (the block's Horner reads 4 at a time) */
     for (i = 0; i < DERIVE_REDUCED_SYM_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_reduced_sym_taylor_jet_outputs(p, order, us, w);
     series = derive_reduced_sym_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_reduced_sym_taylor_horner_block(w, order, 1, &h, vb);
+    derive_reduced_sym_taylor_horner_block(w, order, 1, hs, vb);
     derive_reduced_sym_taylor_trig_block(1, vb);
     for (i = 0; i < DERIVE_REDUCED_SYM_TAYLOR_NV; ++i)
         v[i] = vb[i][0];
@@ -1028,7 +1042,7 @@ static int derive_reduced_sym_taylor_lanes_last_taylor(double u[][REDUCED_SYM_TA
             return derive_reduced_sym_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * reduced_sym_NY);
     if (series)
-        derive_reduced_sym_taylor_outputs_pointwise(t_end, v, p, out);
+        derive_reduced_sym_taylor_outputs_pointwise(t_end, v, p, out, 1);
     else
         reduced_sym_observables(t_end, v, p, out);
     derive_reduced_sym_canonical_angles(1, out, out + 1, out + 2);

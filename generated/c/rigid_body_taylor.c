@@ -237,14 +237,24 @@ static int derive_rigid_body_taylor_outputs_converged(double w[][DERIVE_RIGID_BO
 static void derive_rigid_body_taylor_horner_block(double w[][DERIVE_RIGID_BODY_TAYLOR_NW], int order, int nb, const double *tau,
                                 double v[][DERIVE_RIGID_BODY_TAYLOR_KB])
 {
-    int j, n, k;
-    for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
-        for (k = 0; k < nb; ++k)
-            v[j][k] = w[order][j];
-    for (n = order - 1; n >= 0; --n)
+    /* four samples at a time, their NW sums in registers (in memory, each pass over the block
+     * reloaded what the previous one had just stored); tau is read up to a multiple of 4 */
+    double a[DERIVE_RIGID_BODY_TAYLOR_NW][4], tk[4];
+    int j, n, k, k0;
+    for (k0 = 0; k0 < nb; k0 += 4) {
+        for (k = 0; k < 4; ++k)
+            tk[k] = tau[k0 + k];
         for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
-            for (k = 0; k < nb; ++k)
-                v[j][k] = v[j][k] * tau[k] + w[n][j];
+            for (k = 0; k < 4; ++k)
+                a[j][k] = w[order][j];
+        for (n = order - 1; n >= 0; --n)
+            for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
+                for (k = 0; k < 4; ++k)
+                    a[j][k] = a[j][k] * tk[k] + w[n][j];
+        for (j = 0; j < DERIVE_RIGID_BODY_TAYLOR_NW; ++j)
+            for (k = 0; k < 4; ++k)
+                v[j][k0 + k] = a[j][k];
+    }
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
@@ -258,7 +268,7 @@ static void derive_rigid_body_taylor_trig_block(int nb, double v[][DERIVE_RIGID_
 
 /* The outputs at time t from v, the states and the columns there (the model's output map with
  * its sin, cos and exp calls read from the columns). */
-static void derive_rigid_body_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o)
+static void derive_rigid_body_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
 {
     const double q0 = y[0];
     const double q1 = y[1];
@@ -297,24 +307,24 @@ static void derive_rigid_body_taylor_outputs_pointwise(double t, const double *y
     const double x18 = I1*omega1;
     const double x19 = I2*omega2;
     const double x20 = I3*omega3;
-    o[0] = atan2(x2, x6);
-    o[1] = atan2(2*sqrt(x10)*sqrt(x7), x11);
-    o[2] = atan2(x12, x13);
-    o[3] = omega1;
-    o[4] = omega2;
-    o[5] = omega3;
-    o[6] = x14*x6;
-    o[7] = x14*x2;
-    o[8] = x15;
-    o[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
-    o[10] = x15*x20 + x16*x18 + x17*x19;
-    o[11] = x20;
-    o[12] = x16;
-    o[13] = x17;
-    o[14] = x15;
-    o[15] = x18;
-    o[16] = x19;
-    o[17] = x20;
+    o[0 * stride] = atan2(x2, x6);
+    o[1 * stride] = atan2(2*sqrt(x10)*sqrt(x7), x11);
+    o[2 * stride] = atan2(x12, x13);
+    o[3 * stride] = omega1;
+    o[4 * stride] = omega2;
+    o[5 * stride] = omega3;
+    o[6 * stride] = x14*x6;
+    o[7 * stride] = x14*x2;
+    o[8 * stride] = x15;
+    o[9 * stride] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
+    o[10 * stride] = x15*x20 + x16*x18 + x17*x19;
+    o[11 * stride] = x20;
+    o[12 * stride] = x16;
+    o[13 * stride] = x17;
+    o[14 * stride] = x15;
+    o[15 * stride] = x18;
+    o[16 * stride] = x19;
+    o[17 * stride] = x20;
 }
 
 int rigid_body_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -592,6 +602,8 @@ static int derive_rigid_body_taylor_solve_taylor(const double *y0, const double 
                 /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
                 for (nb = 0; nb < DERIVE_RIGID_BODY_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
                     taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
+                for (kb = nb; kb % 4; ++kb)
+                    taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_rigid_body_taylor_horner_block(w, order, nb, taub, vb);
                 derive_rigid_body_taylor_trig_block(nb, vb);
                 for (kb = 0; kb < nb; ++kb, ++k_out) {
@@ -602,13 +614,14 @@ static int derive_rigid_body_taylor_solve_taylor(const double *y0, const double 
                             return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                     memcpy(y_out + k_out * rigid_body_NY, v, sizeof y);
 #ifdef DERIVE_RIGID_BODY_SIMULATE
-                    if (!series)  /* the output map on the state, as the other methods do */
+                    if (!series) {  /* the output map on the state, as the other methods do */
                         rigid_body_observables(t_out[k_out], v, p, o);
-                    else
+                        for (j = 0; j < 18; ++j)
+                            out[j * n_out + k_out] = o[j];
+                        continue;
+                    }
 #endif
-                    derive_rigid_body_taylor_outputs_pointwise(t_out[k_out], v, p, o);
-                    for (j = 0; j < 18; ++j)
-                        out[j * n_out + k_out] = o[j];
+                    derive_rigid_body_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
                 }
             }
         }
@@ -1067,14 +1080,15 @@ static int derive_rigid_body_taylor_lanes_last_taylor(double u[][RIGID_BODY_TAYL
         double *out, derive_stats *st)
 {
     double us[DERIVE_RIGID_BODY_TAYLOR_NODES][RIGID_BODY_TAYLOR_MAX_ORDER + 1], w[RIGID_BODY_TAYLOR_MAX_ORDER + 1][DERIVE_RIGID_BODY_TAYLOR_NW], v[DERIVE_RIGID_BODY_TAYLOR_NV];
-    double vb[DERIVE_RIGID_BODY_TAYLOR_NV][DERIVE_RIGID_BODY_TAYLOR_KB];
+    double vb[DERIVE_RIGID_BODY_TAYLOR_NV][DERIVE_RIGID_BODY_TAYLOR_KB], hs[4] = {0.0, 0.0, 0.0, 0.0};
     int i, k, series;
+    hs[0] = h;  /* (the block's Horner reads 4 at a time) */
     for (i = 0; i < DERIVE_RIGID_BODY_TAYLOR_NODES; ++i)
         for (k = 0; k <= order; ++k)
             us[i][k] = u[i][k][lane];
     derive_rigid_body_taylor_jet_outputs(p, order, us, w);
     series = derive_rigid_body_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_rigid_body_taylor_horner_block(w, order, 1, &h, vb);
+    derive_rigid_body_taylor_horner_block(w, order, 1, hs, vb);
     derive_rigid_body_taylor_trig_block(1, vb);
     for (i = 0; i < DERIVE_RIGID_BODY_TAYLOR_NV; ++i)
         v[i] = vb[i][0];
@@ -1083,7 +1097,7 @@ static int derive_rigid_body_taylor_lanes_last_taylor(double u[][RIGID_BODY_TAYL
             return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * rigid_body_NY);
     if (series)
-        derive_rigid_body_taylor_outputs_pointwise(t_end, v, p, out);
+        derive_rigid_body_taylor_outputs_pointwise(t_end, v, p, out, 1);
     else
         rigid_body_observables(t_end, v, p, out);
     derive_rigid_body_canonical_angles(1, out, out + 1, out + 2);
