@@ -62,10 +62,12 @@ def test_formulations_with_angles_from_atan2_keep_the_full_grid():
     assert np.array_equal(fin.alpha, np.array([r.alpha[-1] for r in full]))
 
 
-def test_the_final_driver_allocates_no_samples():
+@pytest.mark.parametrize("method, driver", [("dop853", "final"), ("taylor", "lanes")])
+def test_the_final_driver_allocates_no_samples(method, driver):
     """A grid of 400001 samples: the full path would need a chunk of 400001 x (18 + 4) doubles
-    (~70 MB) per trajectory; the final driver only the grid itself and the (N, .) results."""
-    sc = scenes(3, samples=400001, rtol=1e-8, atol=1e-10)
+    (~70 MB) per trajectory; the final drivers (DOP853's, the Taylor lanes) only the grid itself
+    and the (N, .) results."""
+    sc = scenes(3, samples=400001, rtol=1e-8, atol=1e-10, method=method)
     derive.simulate_batch(sc[:1], outputs="final", samples=11)  # compiled and loaded outside
     tracemalloc.start()
     try:
@@ -73,7 +75,7 @@ def test_the_final_driver_allocates_no_samples():
         _, peak = tracemalloc.get_traced_memory()
     finally:
         tracemalloc.stop()
-    assert fin.driver == "final"
+    assert fin.driver == driver
     assert peak < 20e6, peak  # the grid (3.2 MB) and its copies, not 70 MB of samples
     assert np.isfinite(fin.energy).all()
 

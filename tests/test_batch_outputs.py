@@ -34,7 +34,7 @@ def small_chunks(monkeypatch):
 
 
 def test_final_outputs_are_the_last_sample_of_the_full_batch_bit_for_bit():
-    sc = scenes(8)
+    sc = scenes(8, method="dop853")  # (the Taylor lanes: tests/test_taylor_lanes.py)
     full = derive.simulate_batch(sc)
     fin = derive.simulate_batch(sc, outputs="final")
     assert len(fin) == 8 and fin.final and fin.method == full[0].method

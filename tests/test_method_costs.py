@@ -59,3 +59,13 @@ def test_an_auto_plan_runs_the_method_the_cost_model_picks():
     assert all(c.method == plans.auto_method(sc, c.desc) for c in pl.candidates)
     named = plans.make(load_scene("reference_top", method="dop853"))
     assert named.method == "dop853"
+
+
+def test_a_sample_costs_the_output_map_and_a_share_of_its_horner_scheme():
+    quiet = costs.Work(**{**WORK.__dict__, "samples": 0})
+    p = TAYLOR["taylor"].order(1e-10, 0)
+    extra = costs.cost("taylor", WORK, 1e-10, 1e-12) - costs.cost("taylor", quiet, 1e-10, 1e-12)
+    assert extra == pytest.approx(WORK.samples * (costs.TAYLOR_SAMPLE * WORK.ny * p + WORK.output_cost))
+    assert 0 < costs.TAYLOR_SAMPLE <= 1
+    extra_rk = costs.cost("dop853", WORK, 1e-10, 1e-12) - costs.cost("dop853", quiet, 1e-10, 1e-12)
+    assert extra_rk == pytest.approx(WORK.samples * (7 * WORK.ny + WORK.output_cost))

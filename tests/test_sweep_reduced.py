@@ -46,7 +46,10 @@ def test_the_plan_is_reduced_u_then_euler_poisson():
     assert sp.key[0] == "reduced-u" and sp.pole_check == 1
     assert [(k[0], c) for k, c, _ in sp.fallback] == [("euler-poisson", 0)]
     # named, a formulation without a singular set runs alone, as before
-    named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson"}}
+    # one method per sweep (auto's for the first candidate, derive.sweeps.engine.load): the
+    # sweep naming euler-poisson names that method too
+    method = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}}).method
+    named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson", "method": method}}
     sp = load({"scene": named, "vary": {"initial": {"beta": {"values": BETAS}}}})
     assert sp.key[0] == "euler-poisson" and sp.pole_check == 0 and sp.fallback == ()
 
@@ -97,7 +100,10 @@ def test_a_point_refused_by_reduced_u_runs_as_euler_poisson_would_alone(swept):
     """The fallback is per point: a refused point's numbers are those of a sweep that names
     euler-poisson, bit for bit, and the reduced-u points those of one naming reduced-u's
     candidate alone; the refusal itself is the compiled check's status RANGE."""
-    named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson"}}
+    # one method per sweep (auto's for the first candidate, derive.sweeps.engine.load): the
+    # sweep naming euler-poisson names that method too
+    method = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}}).method
+    named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson", "method": method}}
     ep = derive.sweep({"scene": named, "vary": {"initial": {"beta": {"values": BETAS}}},
                        "measures": MEASURES}, processes=1)
     fell = swept.formulation == "euler-poisson"
@@ -107,7 +113,7 @@ def test_a_point_refused_by_reduced_u_runs_as_euler_poisson_would_alone(swept):
     assert not np.array_equal(swept.measures["nfev"][~fell], ep.measures["nfev"][~fell])
     sp = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}})
     t = np.array([0.0, REF["simulate"]["t_end"]])
-    args = (1e-9, 1e-12, 0.0, 10**6)
+    args = ms.driver_args(sp.method, 1e-9, 1e-12, 10**6)
     kernel = ms.MeasureKernel.load(catalogue.describe(sp.key), sp.method)
     res, _, st = kernel.run(sp.inputs, sp.ps, t, args, ms.config_of(MEASURES), None, 1)
     assert np.array_equal(st["status"] == Status.RANGE, fell)
@@ -120,7 +126,7 @@ def test_a_point_refused_by_reduced_u_runs_as_euler_poisson_would_alone(swept):
 def test_results_do_not_depend_on_the_chunking():
     sp = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}})
     t = np.array([0.0, 3.0])
-    args, cfg = (1e-9, 1e-12, 0.0, 10**6), ms.config_of(MEASURES)
+    args, cfg = ms.driver_args(sp.method, 1e-9, 1e-12, 10**6), ms.config_of(MEASURES)
 
     def chunk(idx):
         return run_chunk(sp.key, sp.method, sp.inputs[idx], sp.ps[idx], t, args, cfg, None, (),

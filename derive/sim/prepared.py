@@ -194,20 +194,23 @@ class _PreparedBatch(simulation.BatchPlan):
                     inputs[:, 3:6] = a
                 else:
                     inputs[:, INPUT_NAMES.index(key)] = a
-        method = pl.method
         if pl.scipy:
-            raise SceneError(f"{source}: simulate.method: batches run in the C kernels, not {method}")
-        if not tolerance_driven(method) and sc.simulate.h is None:
-            raise SceneError(f"{source}: simulate.h: a prepared batch of the fixed-step method {method} "
-                             f"needs simulate.h (its default step depends on each start)")
+            raise SceneError(f"{source}: simulate.method: batches run in the C kernels, not {pl.method}")
         sin_beta = np.abs(np.sin(inputs[:, INPUT_NAMES.index("beta")]))
-        candidates = tuple((c.desc.formulation, c.pole_check) for c in pl.candidates
-                           if starts_accepted(c.desc.formulation, sin_beta, prepared._rates).all())
-        if not candidates:
+        accepted = [c for c in pl.candidates
+                    if starts_accepted(c.desc.formulation, sin_beta, prepared._rates).all()]
+        if not accepted:
             name = pl.candidates[0].desc.formulation
             b = int(np.flatnonzero(~starts_accepted(name, sin_beta, prepared._rates))[0])
             raise SceneError(f"{source}: initial.beta[{b}]: the formulation {name!r} cannot start at "
                              f"|sin(beta)| = {sin_beta[b]:.3g}; use 'auto' or 'quaternion'")
+        candidates = tuple((c.desc.formulation, c.pole_check) for c in accepted)
+        # the method of the first formulation that runs (auto's for its model, as
+        # simulate_batch takes it), for the whole batch
+        method = accepted[0].method
+        if not tolerance_driven(method) and sc.simulate.h is None:
+            raise SceneError(f"{source}: simulate.h: a prepared batch of the fixed-step method {method} "
+                             f"needs simulate.h (its default step depends on each start)")
         out = cls([sc] * n, method, pl.t, inputs, sc.effects, None, candidates)
         out._given = {key: a for (kind, key), a in cols.items() if kind == "params"}
         out._made = {}
