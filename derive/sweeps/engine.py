@@ -417,9 +417,11 @@ def _measures(source, data):
 # numbers of every point
 
 
-def _map_math(fn, *cols):
-    """Elementwise with the math module (the scalar libm calls load_scene makes, bit for bit)."""
-    return np.array([fn(*xs) for xs in zip(*cols)], dtype=float)
+def _libm(fn, x) -> np.ndarray:
+    """``fn`` (a function of the math module) of every element: the scalar libm call load_scene
+    makes, bit for bit (NumPy's own vectorised sin and cos may differ in the last bit)."""
+    x = np.asarray(x, dtype=float)
+    return np.fromiter(map(fn, x.tolist()), dtype=float, count=x.size)
 
 
 def _build(spec: Spec) -> None:
@@ -545,12 +547,14 @@ def _build(spec: Spec) -> None:
         inputs[:, 6], inputs[:, 7], inputs[:, 8] = ad, bd, gd
         if any(k in cols for k in ("initial.beta", "initial.gamma", "initial.alpha_dot",
                                    "initial.beta_dot", "initial.gamma_dot")):
-            # the same formula and libm calls as the scene validator
-            inputs[:, 3] = _map_math(lambda a, b, s, c: -a * math.sin(s) * math.cos(c) + b * math.sin(c),
-                                     ad, bd, beta, gamma)
-            inputs[:, 4] = _map_math(lambda a, b, s, c: a * math.sin(s) * math.sin(c) + b * math.cos(c),
-                                     ad, bd, beta, gamma)
-            inputs[:, 5] = _map_math(lambda a, g, s: a * math.cos(s) + g, ad, gd, beta)
+            # the scene validator's formula and libm calls, each product and sum the one it makes
+            # in its order (NumPy's elementwise operations round as Python's floats do)
+            sb, cb = _libm(math.sin, beta), _libm(math.cos, beta)
+            sg, cg = _libm(math.sin, gamma), _libm(math.cos, gamma)
+            ad, bd, gd = (np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in (ad, bd, gd))
+            inputs[:, 3] = -ad * sb * cg + bd * sg
+            inputs[:, 4] = ad * sb * sg + bd * cg
+            inputs[:, 5] = ad * cb + gd
     else:
         for i in range(3):
             if f"initial.omega.{i}" in cols:
