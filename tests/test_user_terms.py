@@ -443,7 +443,7 @@ def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
     sp = load({"scene": base, "vary": {"potential.magnet.mu": {"values": [0.1, 0.4]}},
                "measures": ["beta_max"]})
     name = sp.terms[0].effect
-    args = (sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-10, 1e-12, 0.0, 10**6),
+    args = (sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), ms.driver_args(sp.method, 1e-10, 1e-12, 10**6),
             ms.config_of(("beta_max",), {}))
     expected = run_chunk(*args)
     effects.unregister(name)  # as in a fresh worker

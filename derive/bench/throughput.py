@@ -96,5 +96,5 @@ def _warm_worker():
     candidate of its plan, a start near the pole sending one point to the next."""
     sp = load({"scene": reference_data(1.0),
                "vary": {"initial": {"beta": {"values": [0.8, 0.05]}}}})
-    run_chunk(sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), (1e-8, 1e-12, 0.0, 1000),
+    run_chunk(sp.key, sp.method, sp.inputs, sp.ps, np.array([0.0, 1.0]), ms.driver_args(sp.method, 1e-8, 1e-12, 1000),
               ms.config_of(ms.DEFAULT), None, sp.terms, sp.pole_check, sp.fallback)
