@@ -26,6 +26,11 @@ def _lanes_line(ba: dict) -> str:
             + ".")
 
 
+def _x(ratio) -> str:
+    """A ratio, or a dash where there is none (a contender that did not reach the level)."""
+    return "—" if ratio is None else f"{ratio:.3g}×"
+
+
 def _t(seconds) -> str:
     """A wall time with a readable unit."""
     if seconds is None or not np.isfinite(seconds):
@@ -118,7 +123,7 @@ def targets_section(results: dict) -> list[str]:
         for r in ref["rows"]:
             reached = "" if r["reached"] is None else ("yes" if r["reached"] else "**no** (tightest rtol)")
             L.append(f"| {r['label']} | {r['rtol']:.3g} | {_t(r['time'])} | {_e(r['error'])} | {r['nfev']:,} | "
-                     f"{reached} | {r['ratio']:.3g}× | {_t(r.get('setup'))} |")
+                     f"{reached} | {_x(r['ratio'])} | {_t(r.get('setup'))} |")
         L.append("")
         ph = t.get("phases") or {}
         cold, warm, der = (ph.get(k) or {} for k in ("cold", "warm", "derive"))
