@@ -31,8 +31,6 @@ load hits both alike. Ratios are derive's time over the peer's (the goals are â‰
 from __future__ import annotations
 
 import itertools
-import math
-import time
 import warnings
 
 import numpy as np
@@ -189,7 +187,7 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         prepared, initial = _prepared_batch(scenes)
         fns["derive_prepared_final"] = lambda: prepared.run_batch(initial=initial)
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
-    best = _best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     out = {"n": n, "t_end": float(t[-1]), "samples": len(t), "rtol": rtol, "derive_error": target,
            "heyoka_tol": m["rtol"], "heyoka_error": m["error"], "heyoka_reached": m["reached"], "lanes": width,
@@ -224,7 +222,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
            "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
     final_run()
-    best = _best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
             "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
@@ -232,18 +230,6 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
             "ratio_lanes_vs_final": best["derive"] / best["heyoka"],
             "derive_prepared_lanes_per_trajectory": best["derive_prepared"] / n,
             "ratio_prepared_lanes_vs_final": best["derive_prepared"] / best["heyoka"]}
-
-
-def _best_in_turns(fns: dict, rounds: int) -> dict:
-    """{name: the best of ``rounds`` timings of ``fns[name]()``}, the functions called in turns
-    each round (a change of machine load hits them alike)."""
-    best = {k: math.inf for k in fns}
-    for _ in range(rounds):
-        for key, fn in fns.items():
-            t0 = time.perf_counter()
-            fn()
-            best[key] = min(best[key], time.perf_counter() - t0)
-    return best
 
 
 def _prepared_batch(scenes: list[dict]):

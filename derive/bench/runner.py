@@ -210,6 +210,19 @@ def per_call(fn, calls: int, blocks: int = 7) -> float:
     return statistics.median(out)
 
 
+def best_in_turns(fns: dict, rounds: int) -> dict:
+    """{name: the best of ``rounds`` timings of one call of ``fns[name]``}, the functions called
+    in turns each round (a change of machine load hits them alike): for calls long enough to
+    time one at a time (a whole batch)."""
+    best = {k: math.inf for k in fns}
+    for _ in range(rounds):
+        for key, fn in fns.items():
+            t0 = time.perf_counter()
+            fn()
+            best[key] = min(best[key], time.perf_counter() - t0)
+    return best
+
+
 def interleaved(fns, calls: int, blocks: int = 15, counts=None) -> list[float]:
     """Per-call time of each function (s): blocks of ``calls // blocks`` calls (or ``counts[i]``
     calls of function i: a fast one many times, a slow one once), the functions taking turns

@@ -33,7 +33,6 @@ part that fails is reported as such, with why, and the rest of the bench goes on
 from __future__ import annotations
 
 import json
-import math
 import os
 import statistics
 import subprocess
@@ -290,12 +289,7 @@ def batch(cfg, rtols: dict) -> dict:
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
     for fn in fns.values():
         fn()
-    best = {key: math.inf for key in fns}
-    for _ in range(3 if cfg.batch_n >= 500 else 5):
-        for key, fn in fns.items():
-            t0 = time.perf_counter()
-            fn()
-            best[key] = min(best[key], time.perf_counter() - t0)
+    best = B.best_in_turns(fns, 3 if cfg.batch_n >= 500 else 5)
     out.update(best, per_scene=best["time"] / len(scenes))
     if "raw" in best:
         out["vs_raw"] = best["raw"] / best["time"]

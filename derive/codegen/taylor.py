@@ -86,8 +86,8 @@ class Decomposition:
     pointwise: list = field(default_factory=list)
     last: list = field(default_factory=list)       # [Node] the columns need at order p
     # The sin and cos of the states that stay pointwise (the cyclic angles): [state index], the
-    # pair of state k computed together at every sample (``<prefix>sincos``), their symbols
-    # ``tvs<k>``, ``tvc<k>`` in ``pointwise``.
+    # pair of each computed together at every sample (``<prefix>trig_block``), their symbols
+    # ``tvs<k>``, ``tvc<k>`` (k: the pair's place in ``trig``) in ``pointwise``.
     trig: list = field(default_factory=list)
     trig_symbols: list = field(default_factory=list)
 
@@ -390,7 +390,8 @@ def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
     subs = dict(zip(calls, names))
     # sin and cos of a state left out above (a cyclic angle): one reduction and two kernels per
     # sample for the pair, over a block of samples at once (templates/c/taylor.c.j2,
-    # <prefix>sincos), where glibc's sincos, called per sample, was a quarter of a solve's time.
+    # <prefix>trig_block), where glibc's sincos, called per sample, was a quarter of a solve's
+    # time.
     trig_calls = set().union(*(e.atoms(sp.sin, sp.cos) for e in exprs))
     for k, s in enumerate(m.states):
         if any(f(s) in trig_calls and f(s) not in subs for f in (sp.sin, sp.cos)):

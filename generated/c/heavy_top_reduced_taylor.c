@@ -507,6 +507,25 @@ static inline double derive_heavy_top_reduced_taylor_step(double n1, double n2, 
 /* ======================================================================================== */
 /* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
 
+/* Jorba and Zou (2005): the order from the tolerance (returned), the step from the last two
+ * coefficients, h = fac min(n1^(-1/(p-1)), n2^(-1/p)), with heyoka's safety factor
+ * exp(-0.7/(p-1)) on rho / e^2 (fac), the roots' inverse exponents ip1 = 1/(p-1),
+ * ip2 = 1/p, and the norms' floor atol/rtol: the scalar and the lanes drivers' constants. */
+static int derive_heavy_top_reduced_taylor_control_taylor(double rtol, double atol, double *fac, double *ip1, double *ip2,
+        double *floor_)
+{
+    int order = (int)ceil(-log(rtol > 0.0 ? rtol : atol) / 2.0) + 1;
+    if (order < 2)
+        order = 2;
+    if (order > 30)
+        order = 30;
+    *fac = exp(-2.0 - 0.7 / (order - 1));
+    *ip1 = 1.0 / (order - 1);
+    *ip2 = 1.0 / order;
+    *floor_ = rtol > 0.0 ? atol / rtol : 0.0;
+    return order;
+}
+
 /* The solver; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at t_out[k],
  * with the sin, cos and exp calls from their series, as they come (not yet canonical or
  * checked). */
@@ -531,17 +550,7 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
         return derive_heavy_top_reduced_taylor_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
 
-    /* Jorba and Zou (2005): the order from the tolerance, the step from the last two
-     * coefficients; heyoka's safety factor exp(-0.7/(p-1)) on rho / e^2. */
-    order = (int)ceil(-log(rtol > 0.0 ? rtol : atol) / 2.0) + 1;
-    if (order < 2)
-        order = 2;
-    if (order > 30)
-        order = 30;
-    fac = exp(-2.0 - 0.7 / (order - 1));
-    ip1 = 1.0 / (order - 1);
-    ip2 = 1.0 / order;
-    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
+    order = derive_heavy_top_reduced_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);
 
     t = t_out[0];
     for (i = 0; i < heavy_top_reduced_NY; ++i)
@@ -842,8 +851,9 @@ int heavy_top_reduced_simulate_final_batch_taylor(long n_batch, const double *in
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
  * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
  * lane and the step size is the scalar driver's own function, so every lane's numbers are the
- * scalar driver's bit for bit. Each lane keeps its own step size (Jorba and Zou per lane); all take the same order (one
- * tolerance for the batch). A lane whose trajectory is done takes the batch's next one. */
+ * scalar driver's bit for bit. Each lane keeps its own step size (Jorba and Zou per lane); all
+ * take the same order (one tolerance for the batch). A lane whose trajectory is done takes the
+ * batch's next one. */
 #if defined(__AVX512F__)
 #define DERIVE_HEAVY_TOP_REDUCED_TAYLOR_LANES 8
 #elif defined(__AVX__)
@@ -1276,16 +1286,7 @@ int heavy_top_reduced_simulate_lanes_batch_taylor(long n_batch, const double *in
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
         return heavy_top_reduced_simulate_final_batch_taylor(n_batch, ins, ps, t_out, n_out, rtol, atol, max_steps,
                 pole_check, y_final, out_final, st);
-    /* the scalar driver's order and step constants (see derive_heavy_top_reduced_taylor_solve_taylor) */
-    order = (int)ceil(-log(rtol > 0.0 ? rtol : atol) / 2.0) + 1;
-    if (order < 2)
-        order = 2;
-    if (order > 30)
-        order = 30;
-    fac = exp(-2.0 - 0.7 / (order - 1));
-    ip1 = 1.0 / (order - 1);
-    ip2 = 1.0 / order;
-    floor_ = rtol > 0.0 ? atol / rtol : 0.0;
+    order = derive_heavy_top_reduced_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);  /* the scalar driver's */
     t0 = t_out[0];
     t_end = t_out[n_out - 1];
     for (b = 0; b < n_batch; ++b) {
