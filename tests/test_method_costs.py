@@ -15,13 +15,13 @@ WORK = costs.Work(rhs_cost=200.0, jet_weight=40.0, output_cost=150.0, ny=6, n_ou
 
 
 def test_dop853_steps_grow_as_the_eighth_root_of_the_tolerance():
-    quiet = costs.Work(**{**WORK.__dict__, "samples": 0})
+    quiet = WORK._replace(samples=0)
     ratio = costs.cost("dop853", quiet, 1e-12, 1e-14) / costs.cost("dop853", quiet, 1e-4, 1e-6)
     assert ratio == pytest.approx(1e8 ** (1 / 8))
 
 
 def test_taylor_steps_fall_and_jets_grow_with_the_order():
-    quiet = costs.Work(**{**WORK.__dict__, "samples": 0})
+    quiet = WORK._replace(samples=0)
     p_lo, p_hi = TAYLOR["taylor"].order(1e-6, 0), TAYLOR["taylor"].order(1e-12, 0)
     assert p_hi > p_lo
     lo, hi = costs.cost("taylor", quiet, 1e-6, 1e-8), costs.cost("taylor", quiet, 1e-12, 1e-14)
@@ -33,7 +33,7 @@ def test_taylor_steps_fall_and_jets_grow_with_the_order():
 
 
 def test_a_model_without_a_taylor_kernel_runs_dop853():
-    none = costs.Work(**{**WORK.__dict__, "jet_weight": 0.0})
+    none = WORK._replace(jet_weight=0.0)
     assert math.isinf(costs.cost("taylor", none, 1e-12, 1e-14))
     assert costs.choose(none, 1e-12, 1e-14) == "dop853"
 
@@ -62,7 +62,7 @@ def test_an_auto_plan_runs_the_method_the_cost_model_picks():
 
 
 def test_a_sample_costs_the_output_map_and_a_share_of_its_horner_scheme():
-    quiet = costs.Work(**{**WORK.__dict__, "samples": 0})
+    quiet = WORK._replace(samples=0)
     p = TAYLOR["taylor"].order(1e-10, 0)
     extra = costs.cost("taylor", WORK, 1e-10, 1e-12) - costs.cost("taylor", quiet, 1e-10, 1e-12)
     assert extra == pytest.approx(WORK.samples * (costs.TAYLOR_SAMPLE * WORK.ny * p + WORK.output_cost))

@@ -15,7 +15,7 @@ from __future__ import annotations
 import functools
 import math
 import struct
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -26,7 +26,7 @@ from derive.runtime.integrate import BoundRun, ModelKernel
 from derive.sim import auto
 from derive.sim.inputs import AUTO, _settings, choose_method, fastest_rate, inputs_of, params_of
 from derive.sim.scene import Scene
-from derive.symbolic import effects
+from derive.symbolic import effects, integrable
 from derive.symbolic.formulations import REGISTRY
 
 #: SciPy reference methods: scene name -> solve_ivp method
@@ -53,17 +53,55 @@ class Candidate:
 
     @functools.cached_property
     def kernel(self) -> ModelKernel:
+        near = self._like()
+        if near is not None:
+            return near.kernel
         # a SciPy reference takes the init and output maps from the default method's library
         return ModelKernel.load(self.desc, self.method if self.method not in SCIPY_METHODS
                                 else DEFAULT_METHOD)
 
     @functools.cached_property
     def params(self) -> np.ndarray:
+        near = self.__dict__.get("_near")
+        if near is not None and _same_numbers(self.scene, near.scene):
+            return near.params  # (a run copies it into its buffer: shared, never written)
         return params_of(self.scene, self.desc)
 
     @functools.cached_property
     def args(self) -> list:
+        near = self._like()
+        if near is not None and near.kernel.adaptive:  # an adaptive run's: the settings alone
+            return near.args
         return _settings(self.scene, self.method, self.kernel)
+
+    def sibling(self, scene: Scene) -> "Candidate":
+        """This candidate for ``scene``, a scene of the same family (:func:`_family`: the same
+        settings, model and source; other numbers): its method is worked out for ``scene``,
+        and where it is this one's, the kernel, the adaptive driver arguments and the bound C
+        call are this one's (a run passes its own inputs)."""
+        other = Candidate(scene, self.given, self.desc, self.pole_check)
+        other.__dict__["_near"] = self
+        return other
+
+    def adopt(self) -> None:
+        """Take what this sibling shares with its near candidate now (both run the same method):
+        the kernel, the driver arguments of an adaptive method, the parameters of the same
+        numbers and the bound call, set straight into the instance (what the properties would
+        give, without their first-access cost)."""
+        near, d = self.__dict__["_near"], self.__dict__
+        d["kernel"] = kernel = near.kernel
+        if kernel.adaptive:
+            d["args"] = near.args
+            b = near.__dict__.get("_bound")
+            if b is not None:
+                d["_bound"] = b
+        if _same_numbers(self.scene, near.scene):
+            d["params"] = near.params
+
+    def _like(self) -> "Candidate | None":
+        """The candidate this one is a sibling of, when it runs the same method (else None)."""
+        near = self.__dict__.get("_near")
+        return near if near is not None and near.method == self.method else None
 
     @functools.cached_property
     def pole_loss(self) -> bool:
@@ -72,10 +110,16 @@ class Candidate:
 
     def bound(self, t: np.ndarray, inputs: np.ndarray) -> BoundRun:
         """The kernel's C call bound to the plan's output times and inputs (made on first use,
-        then kept: a candidate belongs to one plan, whose ``t`` and ``inputs`` do not change)."""
+        then kept: a candidate belongs to one plan, whose ``t`` and ``inputs`` do not change).
+        A sibling (:meth:`sibling`) takes its near candidate's bound call, bound to that plan's
+        inputs: its run passes its own (``BoundRun.inputs`` tells which were bound)."""
         b = self.__dict__.get("_bound")
         if b is None:
-            b = self.__dict__["_bound"] = self.kernel.bind(t, inputs, self.args, self.pole_check)
+            near = self._like()
+            made = near.__dict__.get("_bound") if near is not None and near.args is self.args else None
+            if made is not None and made.t is not t:
+                made = None
+            b = self.__dict__["_bound"] = made or self.kernel.bind(t, inputs, self.args, self.pole_check)
         return b
 
 
@@ -92,6 +136,10 @@ class Plan:
     t: np.ndarray
     inputs: np.ndarray
     candidates: tuple
+    #: The plan this one was made from (:func:`sibling`), else None.
+    near: "Plan | None" = field(default=None, repr=False, compare=False)
+    #: :func:`derive.runtime.catalogue.generation` when the candidates' descriptions were made.
+    generation: int = field(default_factory=catalogue.generation, repr=False, compare=False)
 
     @property
     def scipy(self) -> str | None:
@@ -101,17 +149,20 @@ class Plan:
     @functools.cached_property
     def integral_rows(self) -> list:
         """The scene's integrals (:func:`integral_rows_of`), looked up once per plan: a prepared
-        run does not classify its scene again."""
-        return integral_rows_of(self.scene)
+        run does not classify its scene again; a sibling plan with its near plan's body and
+        effect values takes its rows, unless its case may depend on the state)."""
+        near, sc = self.near, self.scene
+        if near is not None and _same_numbers(sc, near.scene) and not integrable.needs_area_level(*sc.body.moments):
+            return near.integral_rows
+        return integral_rows_of(sc)
 
 
 def _integrals_key(scene: Scene) -> tuple:
     # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
     # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    from derive.symbolic.integrable import on_area_level
-
+    level = integrable.on_area_level(scene) if integrable.needs_area_level(*scene.body.moments) else None
     return (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
-            on_area_level(scene))
+            level)
 
 
 def _memo(memo: dict, key, make):
@@ -143,11 +194,9 @@ def integral_rows_of(scene: Scene) -> list:
     scene's numbers, and the component of L it is when it is one (else None; see
     :attr:`derive.symbolic.integrable.Integral.component`); what
     :func:`derive.symbolic.integrable.integrals_for` wraps."""
-    from derive.symbolic.integrable import classify, parameters
-
     def make():
-        integral = classify(scene).extra
-        return [] if integral is None else [(integral.name, integral.formula, parameters(scene),
+        integral = integrable.classify(scene).extra
+        return [] if integral is None else [(integral.name, integral.formula, integrable.parameters(scene),
                                              integral.component)]
 
     return _memo(_INTEGRAL_ROWS, _integrals_key(scene), make)
@@ -204,22 +253,69 @@ def recent(scene: Scene) -> Plan:
     if kept is not None and _current(kept):
         _PLANS[key] = kept
         return kept
-    return _keep(_PLANS, key, make(scene))
+    family = _family(scene)
+    near = _FAMILIES.get(family)
+    pl = sibling(near, scene) if near is not None and _current(near) else None
+    if pl is None:
+        pl = _keep(_FAMILIES, family, make(scene))
+    return _keep(_PLANS, key, pl)
+
+
+def sibling(near: Plan, scene: Scene) -> Plan | None:
+    """The plan of ``scene`` made from ``near``, the plan of a scene of the same family
+    (:func:`_family`: other numbers, the rest equal), or None when the numbers change what
+    auto decides (the formulations to try, their pole checks, the first one's method): then
+    :func:`make` plans it. The candidates are ``near``'s siblings (:meth:`Candidate.sibling`):
+    what :func:`make` would give, with the kernels and bound C calls ``near`` has set up
+    already (a scene with new numbers is validated and planned, but its C call is not set up
+    again)."""
+    method = choose_method(scene)
+    steps = [(auto.model_key(scene, method)[0], 0)] if method in SCIPY_METHODS else auto.plan(scene)
+    if len(steps) != len(near.candidates) or any(
+            c.desc.formulation != name or c.pole_check != mode for c, (name, mode) in zip(near.candidates, steps)):
+        return None
+    candidates = tuple(c.sibling(scene) for c in near.candidates)
+    if candidates:
+        if candidates[0].method != near.candidates[0].method:
+            return None
+        candidates[0].adopt()  # (the others on first use: a fallback rarely runs)
+    # the same settings (the family's): the same output times, and the bound calls keep near's
+    return Plan(scene, candidates[0].method if candidates else method, near.t, inputs_of(scene), candidates,
+                near, near.generation)
+
+
+def _same_numbers(a: Scene, b: Scene) -> bool:
+    """Whether two scenes have the very same body, effect values and terms (the objects, as
+    :func:`derive.sim.scene.load_scene` shares them between dicts that differ only in their
+    initial state): the same parameters and integrable case but for the state's share."""
+    if a.body is not b.body or a.terms is not b.terms or len(a.tables) != len(b.tables):
+        return False
+    return all(x is y for x, y in zip(a.tables.values(), b.tables.values()))
+
+
+def _family(scene: Scene) -> tuple:
+    """A key of what a plan takes from a scene other than its numbers (the initial state, the
+    moments, the effects' values): the settings, the source and title, the model (body
+    symmetry, acting effects, each table's effect), the shape of the initial state (rates or
+    ω̃), the terms and the effects registry's version. Scenes of one family differ only in
+    numbers, and a plan of one is the start of the others' (:func:`sibling`)."""
+    return (scene.source, scene.title, scene.simulate, scene.symmetric, scene.effects,
+            tuple((name, v.effect) for name, v in scene.tables.items()), scene.initial.alpha_dot is None,
+            repr(scene.terms) if scene.terms else (), effects.VERSION[0])
 
 
 def forget() -> None:
     """Empty the memo of :func:`recent` (and the integrals' memos)."""
     _PLANS.clear()
+    _FAMILIES.clear()
     _INTEGRAL_ROWS.clear()
 
 
 def _current(pl: Plan) -> bool:
-    """Whether a kept plan's model descriptions are still the catalogue's (forgotten together:
-    the first candidate's tells)."""
-    if not pl.candidates:
-        return True
-    c, sc = pl.candidates[0], pl.scene
-    return catalogue.describe((c.desc.formulation, sc.symmetric, sc.effects)) is c.desc
+    """Whether a kept plan's model descriptions are still the catalogue's: the catalogue has
+    not forgotten its descriptions since (``catalogue.clear_memory``: a new cache). A newly
+    registered effect changes the memos' keys instead (the effects registry's version)."""
+    return pl.generation == catalogue.generation()
 
 
 def _content(scene: Scene) -> tuple:
@@ -242,3 +338,5 @@ def _content(scene: Scene) -> tuple:
 _NINE = struct.Struct("9d").pack
 _NO_RATES = (math.nan,) * 3
 _PLANS: dict = {}
+#: The latest plan made anew (:func:`make`) of each family (:func:`_family`).
+_FAMILIES: dict = {}

@@ -399,7 +399,63 @@ def load_scene(scene, /, **overrides) -> Scene:
     else:
         raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
                                                    f"like one or a Scene, not {type(scene).__name__}"))
-    return _Validator(source).scene(data, {k: v for k, v in overrides.items() if v is not None})
+    overrides = {k: v for k, v in overrides.items() if v is not None}
+    if type(data) is dict and not overrides:
+        key = _rest_key(data)
+        rest = _RESTS.get(key) if key is not None else None
+        if rest is not None and rest[0] == effects.VERSION[0]:
+            return _Validator(source).scene_like(data, rest[1])
+        scene = _Validator(source).scene(data, overrides)
+        if key is not None:
+            if len(_RESTS) >= _RESTS_SIZE:
+                _RESTS.clear()  # a memo only: emptied when full
+            _RESTS[key] = (effects.VERSION[0], scene)
+        return scene
+    return _Validator(source).scene(data, overrides)
+
+
+def _rest_key(data: dict) -> tuple | None:
+    """A key of a scene dict's raw content but for its ``[initial]`` table: its keys in order,
+    each table's keys, values and their types (``1``, ``1.0`` and ``True`` are equal but
+    validate differently), zeros by their text (``-0.0 == 0.0``); None for a dict this memo
+    leaves to the validator (a table that is not a plain dict, a nested list, the user's terms).
+
+    Two dicts with one key validate alike but for ``[initial]``: :func:`load_scene` validates
+    the first in full and keeps its scene (:data:`_RESTS`), and of the next only its initial
+    state (:meth:`_Validator.scene_like`)."""
+    parts = []
+    for k, v in data.items():
+        if k == "initial":
+            parts.append(k)
+        elif type(v) is dict:
+            values = tuple(v.values())
+            types = tuple(map(type, values))
+            if not _PLAIN.issuperset(types):  # an array, a nested table, …: the validator's
+                return None
+            text = None
+            if list in types:  # a vector (com = [x, y, z]): its entries and their types
+                values = tuple(tuple(x) if type(x) is list else x for x in values)
+                types = tuple(tuple(map(type, x)) if type(x) is list else t for x, t in zip(v.values(), types))
+                if not all(_PLAIN_ENTRY.issuperset(t) for t in types if type(t) is tuple):
+                    return None
+                text = repr(values)  # (zeros inside)
+            elif 0 in values:
+                text = repr(values)
+            parts.append((k, tuple(v), values, types, text))
+        elif type(v) is str:
+            parts.append((k, v))
+        else:
+            return None
+    return tuple(parts)
+
+
+#: The types of a table's values :func:`_rest_key` takes (as TOML gives them), and of a
+#: vector's entries; anything else goes to the validator.
+_PLAIN = frozenset((float, int, str, bool, list))
+_PLAIN_ENTRY = frozenset((float, int, bool))
+#: :func:`load_scene`'s scenes by :func:`_rest_key` (with the effects registry's version).
+_RESTS: dict = {}
+_RESTS_SIZE = 64
 
 
 #: Largest scene or sweep file read, in bytes (1 MiB; a scene is a few hundred bytes, a sweep a
@@ -744,6 +800,21 @@ class _Validator:
         scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
                      simulate=simulate, source=self.source, terms=terms,
                      _effects=(effects.VERSION[0], _acting(tables, terms)))
+        self.formulation_fits(scene)
+        return scene
+
+    def scene_like(self, data: dict, like: Scene) -> Scene:
+        """The scene of ``data``, a dict equal to the one ``like`` was validated from but for
+        its ``[initial]`` table (:func:`_rest_key`): what :meth:`scene` gives, validating the
+        initial state alone (the rest is valid, as ``like``'s was: the first error is the
+        initial state's, the one :meth:`scene` would raise)."""
+        t = data.get("initial")
+        if type(t) is not dict:
+            return self.scene(data, {})
+        initial = self.initial(self.table(t, "initial", _registry_view().key_sets["initial"]))
+        scene = _new(Scene, title=like.title, body=like.body, tables=dict(like.tables), initial=initial,
+                     simulate=like.simulate, source=self.source, terms=like.terms,
+                     _effects=like.__dict__["_effects"])
         self.formulation_fits(scene)
         return scene
 

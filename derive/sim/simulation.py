@@ -294,8 +294,10 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
     same = not (given or params)
     for c in pl.candidates:
         bound = c.bound(t, pl.inputs)
-        out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params),
-                                             inputs if given else None, same=same)
+        # a plan made from another (plan.sibling) shares that one's bound call: its own inputs
+        ins = inputs if given else (None if bound.inputs is pl.inputs else pl.inputs)
+        out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params), ins,
+                                             same=same and ins is None)
         if status != _RANGE:
             break
     if status:

@@ -351,6 +351,14 @@ def area_level(scene) -> tuple[float, float]:
     return math.fsum(a * b for a, b in zip(L, n)), math.hypot(*L) * math.hypot(*n)
 
 
+def needs_area_level(I1: float, I2: float, I3: float) -> bool:
+    """Whether the case of a body with these moments can depend on its state: only where one
+    moment is four times another (the Goryachev–Chaplygin ratio, in any relabelling of the
+    axes), whose case :func:`classify` decides by :func:`on_area_level`."""
+    lo, mid, hi = sorted((I1, I2, I3))  # positive: a = 4 b only for a above b
+    return _equal(hi, 4 * lo) or _equal(hi, 4 * mid) or _equal(mid, 4 * lo)
+
+
 def on_area_level(scene) -> bool:
     """True when the scene starts on L·n = 0 (|L·n| ≤ TOLERANCE·|L||n|), the level on which
     the Goryachev–Chaplygin integral exists."""
