@@ -25,7 +25,7 @@ from derive.runtime import catalogue
 from derive.runtime.integrate import BoundRun, ModelKernel
 from derive.sim import auto
 from derive.sim.inputs import AUTO, _settings, choose_method, fastest_rate, inputs_of, params_of
-from derive.sim.scene import Scene
+from derive.sim.scene import Scene, same_numbers
 from derive.symbolic import effects, integrable
 from derive.symbolic.formulations import REGISTRY
 
@@ -63,7 +63,7 @@ class Candidate:
     @functools.cached_property
     def params(self) -> np.ndarray:
         near = self.__dict__.get("_near")
-        if near is not None and _same_numbers(self.scene, near.scene):
+        if near is not None and same_numbers(self.scene, near.scene):
             return near.params  # (a run copies it into its buffer: shared, never written)
         return params_of(self.scene, self.desc)
 
@@ -95,7 +95,7 @@ class Candidate:
             b = near.__dict__.get("_bound")
             if b is not None:
                 d["_bound"] = b
-        if _same_numbers(self.scene, near.scene):
+        if same_numbers(self.scene, near.scene):
             d["params"] = near.params
 
     def _like(self) -> "Candidate | None":
@@ -152,7 +152,7 @@ class Plan:
         run does not classify its scene again; a sibling plan with its near plan's body and
         effect values takes its rows, unless its case may depend on the state)."""
         near, sc = self.near, self.scene
-        if near is not None and _same_numbers(sc, near.scene) and not integrable.needs_area_level(*sc.body.moments):
+        if near is not None and same_numbers(sc, near.scene) and not integrable.needs_area_level(*sc.body.moments):
             return near.integral_rows
         return integral_rows_of(sc)
 
@@ -282,15 +282,6 @@ def sibling(near: Plan, scene: Scene) -> Plan | None:
     # the same settings (the family's): the same output times, and the bound calls keep near's
     return Plan(scene, candidates[0].method if candidates else method, near.t, inputs_of(scene), candidates,
                 near, near.generation)
-
-
-def _same_numbers(a: Scene, b: Scene) -> bool:
-    """Whether two scenes have the very same body, effect values and terms (the objects, as
-    :func:`derive.sim.scene.load_scene` shares them between dicts that differ only in their
-    initial state): the same parameters and integrable case but for the state's share."""
-    if a.body is not b.body or a.terms is not b.terms or len(a.tables) != len(b.tables):
-        return False
-    return all(x is y for x, y in zip(a.tables.values(), b.tables.values()))
 
 
 def _family(scene: Scene) -> tuple:

@@ -414,6 +414,15 @@ def load_scene(scene, /, **overrides) -> Scene:
     return _Validator(source).scene(data, overrides)
 
 
+def same_numbers(a: Scene, b: Scene) -> bool:
+    """Whether two scenes have the very same body, effect values and terms (the objects, as
+    :func:`load_scene` shares them between dicts that differ only in their initial state):
+    the same model parameters, and the same integrable case but for the state's share."""
+    if a.body is not b.body or a.terms is not b.terms or len(a.tables) != len(b.tables):
+        return False
+    return all(x is y for x, y in zip(a.tables.values(), b.tables.values()))
+
+
 def _rest_key(data: dict) -> tuple | None:
     """A key of a scene dict's raw content but for its ``[initial]`` table: its keys in order,
     each table's keys, values and their types (``1``, ``1.0`` and ``True`` are equal but

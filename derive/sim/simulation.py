@@ -33,7 +33,7 @@ from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import (AUTO, _check_budget, _settings, choose_method, default_step,  # noqa: F401
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
-from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
+from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene, same_numbers
 from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
@@ -407,8 +407,15 @@ class BatchPlan:
         return desc, kernel, args
 
     def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
-        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model."""
-        return np.array([params_of(sc, desc) for sc in self.scenes[rows]])
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model
+        (worked out once for scenes that share their body and effect values: see
+        :func:`derive.sim.scene.same_numbers`)."""
+        out, last, row = [], None, None
+        for sc in self.scenes[rows]:
+            if last is None or not same_numbers(sc, last):
+                last, row = sc, params_of(sc, desc)
+            out.append(row)
+        return np.array(out)
 
     def where(self, b: int) -> str:
         """How an error names trajectory ``b``: its scene's source."""
@@ -445,6 +452,8 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
 
     ref = shared(first)
     for sc in scs[1:]:
+        if sc.simulate is first.simulate and same_numbers(sc, first):
+            continue  # (shared(sc) is ref: only the initial state differs)
         if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
             raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
                              f"times, method, tolerances and formulation as {first.source}")
