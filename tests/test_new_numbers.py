@@ -120,10 +120,32 @@ def test_a_memo_scene_does_not_follow_a_changed_dict():
     assert first.body.I3 == 0.5
 
 
-def test_unmemoised_shapes_still_validate():
-    """User terms (an array of tables) and nested lists are left to the validator."""
+def test_user_terms_are_memoised_by_their_text_and_numbers():
+    """A scene with user terms: a new initial table validates as in full (the terms the
+    memo's); other expressions or params are validated anew (a bad one fails)."""
     data = _short()
-    assert scenes._rest_key(dict(data, potential=[{"name": "k", "V": "0"}])) is None
+    del data["gravity"]
+    data["potential"] = [{"name": "g1", "V": "M*g*l*R33", "params": {"M": 1.0, "g": 1.0, "l": 1.0}}]
+    data["torque"] = [{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"], "params": {"A": 0.01, "w": 3}}]
+    load_scene(data)
+    other = dict(data, initial=dict(data["initial"], beta=0.6))
+    assert scenes._rest_key(other) == scenes._rest_key(data)
+    got = load_scene(other)
+    assert got == _full(other) and got.terms == _full(other).terms
+    for change, key in ((lambda d: d["potential"][0].update(V="M*g*l*R33 + import_"), r"potential\.g1\.V"),
+                        (lambda d: d["torque"][0]["params"].update(w=True), r"torque\.drive\.params\.w"),
+                        (lambda d: d["torque"][0].update(tau=["0", "0", "os.system(1)"]), r"torque\.drive\.tau\.2")):
+        bad = copy.deepcopy(data)
+        change(bad)
+        assert scenes._rest_key(bad) != scenes._rest_key(data)
+        with pytest.raises(SceneError, match=key):
+            load_scene(bad)
+
+
+def test_unmemoised_shapes_still_validate():
+    """Values of types TOML does not give and nested lists are left to the validator."""
+    data = _short()
+    assert scenes._rest_key(dict(data, potential=({"name": "k", "V": "0"},))) is None
     for com in ([[0.0], 0.0, 1.0], np.array([0.0, 0.0, 1.0]), [0.0, 0.0, None]):
         data["gravity"] = {"M": 1.0, "g": 1.0, "com": com}
         assert scenes._rest_key(data) is None

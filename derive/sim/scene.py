@@ -427,7 +427,8 @@ def _rest_key(data: dict) -> tuple | None:
     """A key of a scene dict's raw content but for its ``[initial]`` table: its keys in order,
     each table's keys, values and their types (``1``, ``1.0`` and ``True`` are equal but
     validate differently), zeros by their text (``-0.0 == 0.0``); None for a dict this memo
-    leaves to the validator (a table that is not a plain dict, a nested list, the user's terms).
+    leaves to the validator (a table that is not a plain dict, a nested list, a value of a type
+    TOML does not give).
 
     Two dicts with one key validate alike but for ``[initial]``: :func:`load_scene` validates
     the first in full and keeps its scene (:data:`_RESTS`), and of the next only its initial
@@ -453,9 +454,42 @@ def _rest_key(data: dict) -> tuple | None:
             parts.append((k, tuple(v), values, types, text))
         elif type(v) is str:
             parts.append((k, v))
+        elif k in user_terms.KINDS:
+            terms = _terms_key(v)
+            if terms is None:
+                return None
+            parts.append((k, terms))
         else:
             return None
     return tuple(parts)
+
+
+def _terms_key(entries) -> tuple | None:
+    """:func:`_rest_key`'s part for an array of user terms (``[[potential]]``, ``[[torque]]``):
+    each table's keys and values as TOML gives them (strings, a list of strings, a table of
+    numbers, their types and text), or None for anything else."""
+    if type(entries) is not list:
+        return None
+    out = []
+    for entry in entries:
+        if type(entry) is not dict:
+            return None
+        for k, v in entry.items():
+            t = type(v)
+            if t is str:
+                out.append((k, v))
+            elif t is dict:  # params = {name = number}
+                values = tuple(v.values())
+                types = tuple(map(type, values))
+                if not _PLAIN_ENTRY.issuperset(types):
+                    return None
+                out.append((k, tuple(v), values, types, repr(values)))
+            elif t is list and all(type(x) is str for x in v):  # tau = ["...", "...", "..."]
+                out.append((k, tuple(v)))
+            else:
+                return None
+        out.append(None)  # (the end of one term's table)
+    return tuple(out)
 
 
 #: The types of a table's values :func:`_rest_key` takes (as TOML gives them), and of a
