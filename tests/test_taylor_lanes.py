@@ -51,15 +51,30 @@ def same(a, b):
 def test_lanes_are_the_scalar_driver_bit_for_bit(formulation):
     sc = scenes(13, formulation=formulation)  # one group and a ragged one on any width
     bp, desc, scalar, native, args, pole = kernels(sc, formulation)
-    assert native.lanes in (2, 4, 8) and scalar.lanes in (2, 4, 8)
+    assert native.lanes in (2, 4, 8) and scalar.lanes == 0 and scalar.has_lanes  # (lanes: native only)
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
     got = native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole)
     assert len(set(want[3]["nstep"])) > 3  # the lanes of a group take different steps
     assert (want[3]["status"] == 0).all()
     same(want, got)
-    # the lanes driver of the default build (its narrower width) too
-    same(want, scalar.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    # the lanes driver built with the default flags (the baseline's narrower width) too
+    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
+    assert baseline.lanes == 2
+    same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+
+
+def _lanes_library(desc, tag: str, flags: list) -> ModelKernel:
+    """The model's Taylor library built with the default flags and ``flags`` (a test's own
+    build: derive builds the lanes only with -march=native)."""
+    from derive.runtime import cbuild
+
+    sources = desc.c_sources()
+    unity = f"{desc.name}_taylor_unit.c"
+    sources[unity] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
+                                                             f"{desc.name}_taylor.c"))
+    flags = [*cbuild.DEFAULT_FLAGS, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
+    return ModelKernel(desc, "taylor", cbuild.compile_library(f"{desc.name}_taylor_{tag}", sources, unity, flags))
 
 
 def test_failing_lanes_say_so_per_trajectory_while_the_others_finish():
@@ -102,7 +117,8 @@ def test_lanes_refilled_mid_batch_are_the_scalar_driver_bit_for_bit(formulation)
     assert (want[3]["status"] == 0).all()
     assert steps.max() > 4 * steps.min()  # a lane takes several trajectories while another runs one
     same(want, native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
-    same(want, scalar.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
+    same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
     # the batch the other way round: each trajectory in another lane, beside other neighbours
     rev = bp.inputs[::-1].copy(), ps[::-1].copy()
     same(scalar.simulate_final_batch(*rev, bp.t, args, pole), native.simulate_lanes_batch(*rev, bp.t, args, pole))
@@ -127,7 +143,8 @@ def test_lanes_refilled_after_failures_and_budgets_are_the_scalar_driver_bit_for
     assert (st["status"] == 0).sum() >= 15
     assert (st["nfev"][[2, 3, 17]] == 0).all() and (st["nfev"][[0, 9, 10, 30]] == 1).all()
     same(want, native.simulate_lanes_batch(inputs, ps, bp.t, args, pole))
-    same(want, scalar.simulate_lanes_batch(inputs, ps, bp.t, args, pole))
+    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
+    same(want, baseline.simulate_lanes_batch(inputs, ps, bp.t, args, pole))
 
 
 def test_a_batch_of_failed_starts_loads_no_lane():
@@ -243,13 +260,8 @@ def test_the_avx2_width_is_bit_for_bit_too(formulation):
         pytest.skip("this CPU has no AVX2")
     sc = scenes(11, formulation=formulation)
     bp, desc, scalar, _, args, pole = kernels(sc, formulation)
-    sources = desc.c_sources()
-    unity = f"{desc.name}_taylor_unit.c"
-    sources[unity] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
-                                                             f"{desc.name}_taylor.c"))
-    flags = [*cbuild.DEFAULT_FLAGS, "-mavx2", "-mfma",
-             *(f for f in cbuild.NATIVE_FLAGS if f != "-march=native"), "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
-    avx2 = ModelKernel(desc, "taylor", cbuild.compile_library(f"{desc.name}_taylor_avx2", sources, unity, flags))
+    avx2 = _lanes_library(desc, "avx2", ["-mavx2", "-mfma",
+                                          *(f for f in cbuild.NATIVE_FLAGS if f != "-march=native")])
     assert avx2.lanes == 4
     ps = bp.params(desc)
     same(scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole),

@@ -73,7 +73,7 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
 # rigid_body_init with AVX-512, also under -ffp-contract=off and -mno-fma): it is turned off; the
 # lanes are loops, vectorised by the loop vectoriser.
 NATIVE_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize",
-                                 "--param=max-completely-peel-times=1")
+                                 "--param=max-completely-peel-times=1", "-DDERIVE_LANES")
 STDERR_LINES = 20
 STALE_BUILD_SECONDS = 600  # a build folder this old belongs to a compile that was killed
 CHECKSUM = ".sha256"       # sidecar suffix: <library>.so.sha256

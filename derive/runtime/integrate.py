@@ -377,6 +377,7 @@ class ModelKernel:
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         self._sim_final = self._sim_lanes = None
         self.lanes = 0
+        self.has_lanes = False
         if method is not None:
             spec = compiled_method(method)
             extra = [_C_TYPES[ty] for ty, _ in spec.params]
@@ -398,6 +399,8 @@ class ModelKernel:
                                if hasattr(lib, f"{p}_simulate_lanes_batch_{method}") else None)
             self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
                           if self._sim_lanes is not None else 0)
+            # the method has lanes drivers, compiled in the library built for lanes (native)
+            self.has_lanes = hasattr(lib, f"{p}_taylor_has_lanes")
             self._guard = _interruptible(lib, p)
             if self._guard is not None:
                 self._guard.argtypes = [ci]

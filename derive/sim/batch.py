@@ -139,7 +139,7 @@ def run_plan(bp, final: bool, names: tuple) -> BatchResult:
         driver = "full"
         if final and final_only(desc, kernel):
             driver = "final"
-            if kernel.lanes:  # a Taylor method: its lanes, built for this CPU's vector width
+            if kernel.has_lanes:  # a Taylor method: its lanes, in a library built for this CPU
                 driver, kernel = "lanes", ModelKernel.load(desc, bp.method, native=True)
         if driver == "full":
             refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)

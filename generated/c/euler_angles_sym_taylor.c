@@ -822,6 +822,13 @@ int euler_angles_sym_simulate_final_batch_taylor(long n_batch, const double *ins
     return status;
 }
 
+/* The lanes drivers are compiled only where DERIVE_LANES is defined: derive builds them in the
+ * library it makes for this CPU's vector width (-march=native, for its final-only batches), and
+ * leaves them out of the scalar library, whose compile they made half as long again. This
+ * constant says they exist (a scalar library's caller then loads the lanes' one). */
+const int euler_angles_sym_taylor_has_lanes = 1;
+#ifdef DERIVE_LANES
+
 /* ---------------------------------------------------------------------------------------- */
 /* Lanes: W trajectories at once (the final-only batch). Every node's series is an array
  * [order][lane] and each elementary operation a loop over the lanes, which gcc vectorises at -O3
@@ -1287,4 +1294,5 @@ int euler_angles_sym_simulate_lanes_batch_taylor(long n_batch, const double *ins
         }
     return status;
 }
+#endif /* DERIVE_LANES */
 #endif /* SIMULATE */

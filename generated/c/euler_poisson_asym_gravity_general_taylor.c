@@ -758,6 +758,13 @@ int euler_poisson_asym_gravity_general_simulate_final_batch_taylor(long n_batch,
     return status;
 }
 
+/* The lanes drivers are compiled only where DERIVE_LANES is defined: derive builds them in the
+ * library it makes for this CPU's vector width (-march=native, for its final-only batches), and
+ * leaves them out of the scalar library, whose compile they made half as long again. This
+ * constant says they exist (a scalar library's caller then loads the lanes' one). */
+const int euler_poisson_asym_gravity_general_taylor_has_lanes = 1;
+#ifdef DERIVE_LANES
+
 /* ---------------------------------------------------------------------------------------- */
 /* Lanes: W trajectories at once (the final-only batch). Every node's series is an array
  * [order][lane] and each elementary operation a loop over the lanes, which gcc vectorises at -O3
@@ -1244,4 +1251,5 @@ int euler_poisson_asym_gravity_general_simulate_lanes_batch_taylor(long n_batch,
         }
     return status;
 }
+#endif /* DERIVE_LANES */
 #endif /* SIMULATE */
