@@ -318,7 +318,7 @@ class MeasureKernel:
             sources[unity] = "".join(f'#include "{n}"\n' for n in (
                 f"{desc.name}.c", f"{desc.name}_solvers.c", *family, f"{desc.name}_measures.c"))
             flags = list(DEFAULT_FLAGS) + ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}",
-                                           "-DDERIVE_MEASURES"]
+                                           "-DDERIVE_MEASURES", "-fno-semantic-interposition"]
             lib = compile_library(f"{desc.name}_{method}_measures", sources, unity, flags)
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel

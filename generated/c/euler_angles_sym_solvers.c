@@ -18,6 +18,18 @@
 #error "euler_angles_sym.h: euler_angles_sym_NY differs from the size the solvers were rendered for (6)"
 #endif
 
+/* The explicit steps and the dense outputs take the right-hand side inline, all their stages in
+ * one body (gcc, clang: the flatten attribute), where the compiler can: in a unit built with
+ * -fno-semantic-interposition (the measured sweeps' library, derive.sweeps.measures) the stages
+ * then share the parameters' temporaries (1/I1, ...) and make no call; elsewhere euler_angles_sym_rhs may be
+ * replaced at load time, so it stays a call. The same operations in the same order either way:
+ * the same bits. */
+#if defined(__GNUC__)
+#define DERIVE_EULER_ANGLES_SYM_RHS_INLINE __attribute__((flatten))
+#else
+#define DERIVE_EULER_ANGLES_SYM_RHS_INLINE
+#endif
+
 /* A model header that declares outputs and an init map (euler_angles_sym_NOBS, euler_angles_sym_NIN: every generated
  * model) gets the whole-simulation drivers too; a hand-written model with only rhs and jac gets
  * the solvers alone. */
@@ -398,6 +410,7 @@ static void derive_euler_angles_sym_add_block(double *m, int n, int bi, int bj, 
 /* One explicit step of tableau "dop853" (for dop853, dop853_fixed): on entry
  * k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_EULER_ANGLES_SYM_RHS_INLINE
 static int derive_euler_angles_sym_dop853_step(double t, double h, const double *y, const double *p,
                               double k[][euler_angles_sym_NY], double *y_new, double *t_rc,
                               derive_stats *st)
@@ -535,6 +548,7 @@ static double derive_euler_angles_sym_dop853_error(double h, const double *y, co
 /* The dense output (dop853, order 7) of the accepted step (t, h) from y to y_new: its
  * extra stages (k[0..12] given), then the coefficients cont of the degree-7 polynomial in
  * x = (t' - t)/h. Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_EULER_ANGLES_SYM_RHS_INLINE
 static int derive_euler_angles_sym_dop853_dense(double t, double h, const double *y, const double *y_new,
         const double *p, double k[][euler_angles_sym_NY], double cont[7][euler_angles_sym_NY], derive_stats *st,
         double *t_rc)
@@ -862,6 +876,7 @@ int euler_angles_sym_simulate_final_batch_dop853(long n_batch, const double *ins
 /* One explicit step of tableau "rk4" (for rk4): on entry
  * k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_EULER_ANGLES_SYM_RHS_INLINE
 static int derive_euler_angles_sym_rk4_step(double t, double h, const double *y, const double *p,
                               double k[][euler_angles_sym_NY], double *y_new, double *t_rc,
                               derive_stats *st)
