@@ -693,8 +693,15 @@ def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=(),
 
 
 def _chunks(idx: np.ndarray, parallel: int) -> list:
-    size = max(1, min(CHUNK, math.ceil(idx.size / max(1, 4 * parallel))))
+    """The points ``idx`` in chunks of at most CHUNK, about four per worker of ``parallel``
+    (0: no workers, the calling process runs them: chunks of CHUNK)."""
+    size = CHUNK if parallel <= 0 else max(1, min(CHUNK, math.ceil(idx.size / (4 * parallel))))
     return [idx[i:i + size] for i in range(0, idx.size, size)]
+
+
+def _in_process(points: int, processes: int) -> bool:
+    """Does the local engine run ``points`` in the calling process (no pool to start)?"""
+    return processes <= 1 or points < IN_PROCESS
 
 
 def _progress_bar(total, progress):
@@ -844,7 +851,7 @@ def _local(tasks, submit_args, progress, processes, source="<sweep>"):
 
     results = {}
     with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
-        if processes <= 1 or len(tasks) == 1 or sum(len(i) for i in tasks) < IN_PROCESS:
+        if len(tasks) == 1 or _in_process(sum(len(i) for i in tasks), processes):
             for k, idx in enumerate(tasks):
                 results[k] = run_chunk(*submit_args(idx))
                 bar.update(len(idx))
@@ -1377,7 +1384,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
                 tuple((k, c, p[idx]) for k, c, p in sp.fallback), True)
 
     if workers is None and scheduler is None:
-        tasks = _chunks(run, processes)
+        # in this process: chunks of CHUNK points (one C call each, no pool to feed)
+        tasks = _chunks(run, 0 if _in_process(run.size, processes) else processes)
         results = _local(tasks, submit_args, progress, processes, sp.source)
     else:
         timeout = None if scheduler_timeout is None else float(scheduler_timeout)
