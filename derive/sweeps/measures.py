@@ -23,8 +23,9 @@ Contract of an entry (:class:`Measure`):
    (``integral_rows``).
 4. ``needs``: the compiled loop's work flags (``CONFIG``): ``steps`` runs the per-step hook
    (the outputs read at each step end; the dense output — DOP853's three dense stages, counted
-   in ``nfev`` — only on the steps a search reads: the two steps around a discrete extremum of
-   beta, the first and the last step, the steps of the first tilt and the first flip);
+   in ``nfev`` — only on the steps a search reads, when it first reads them: of the two steps
+   around a discrete extremum of beta those its evaluations fall in, the first and the last
+   step, the steps of the first tilt and the first flip);
    ``extrema`` runs the searches for beta's extrema (and keeps each step for the next one's
    search), so a sweep without a beta measure forms no dense output for them; ``flip_time``
    and ``tilt_time`` locate those times; ``beta``, ``energy``, ``p_alpha``, ``p_gamma`` and
