@@ -419,8 +419,12 @@ def _measures(source, data):
 
 def _libm(fn, x) -> np.ndarray:
     """``fn`` (a function of the math module) of every element: the scalar libm call load_scene
-    makes, bit for bit (NumPy's own vectorised sin and cos may differ in the last bit)."""
+    makes, bit for bit (NumPy's own vectorised sin and cos may differ in the last bit); once for
+    a column that is one number (bit for bit: -0.0 is not 0.0), a key the sweep does not vary."""
     x = np.asarray(x, dtype=float)
+    bits = x.reshape(-1).view(np.int64)
+    if bits.size > 1 and (bits == bits[0]).all():
+        return np.full(x.shape, fn(float(x.reshape(-1)[0])))
     return np.fromiter(map(fn, x.tolist()), dtype=float, count=x.size)
 
 
