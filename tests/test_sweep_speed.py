@@ -123,3 +123,34 @@ def test_values_recorded_before_the_step_ends_read_each_output_alone():
     before, now = np.array([1014, 641, 652, 664]), res.measures["nfev"]
     assert (now < before).all() and ((before - now) % 3 == 0).all()
     assert now.tolist() == [1008, 632, 640, 652]
+
+
+def test_loading_a_sweep_changes_neither_the_given_scene_nor_the_base():
+    """The points' scenes (each varied value checked against the contract, the representative
+    point) are shallow copies of the base scene with the changed tables copied
+    (derive.sweeps.engine._set): neither the caller's dict nor the base scene is touched, a
+    vector key and a user term's parameter included."""
+    from derive.sweeps.engine import _set
+
+    base = reference_data(2.0)
+    base["simulate"] = {"t_end": 2.0}
+    base["potential"] = [{"name": "magnet", "V": "-mu*B*R13", "params": {"mu": 0.2, "B": 1.5}}]
+    spec = {"scene": base, "vary": {"initial": {"beta": {"values": [0.4, 0.9]},
+                                                "gamma_dot": {"values": [3.0, 5.0]}},
+                                    "potential.magnet.mu": {"values": [0.1, 0.3]}},
+            "measures": ["beta_max"]}
+    given = copy.deepcopy(spec)
+    sp = load(spec)
+    assert spec == given and sp.raw == given["scene"]
+    data = dict(sp.raw)
+    _set(data, "potential.magnet.mu", 0.7)
+    _set(data, "initial.beta", 0.5)
+    assert sp.raw == given["scene"]
+    assert data["potential"][0]["params"] == {"mu": 0.7, "B": 1.5} and data["initial"]["beta"] == 0.5
+    omega = {"body": {"I1": 1.0, "I3": 0.5}, "initial": {"alpha": 0.0, "beta": 0.5, "gamma": 0.0,
+                                                          "omega": [0.1, 0.2, 3.0]},
+             "simulate": {"t_end": 1.0}}
+    kept = copy.deepcopy(omega)
+    data = dict(omega)
+    _set(data, "initial.omega.1", -0.2)
+    assert omega == kept and data["initial"]["omega"] == [0.1, -0.2, 3.0]

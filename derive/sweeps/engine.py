@@ -153,20 +153,26 @@ def _flatten(table: Mapping, prefix: str, leaf, source: str = "<sweep>", where: 
 
 
 def _set(data: dict, key: str, value) -> None:
+    """Set the dotted scene key ``key`` in ``data``. The tables and lists on its path are
+    replaced by changed copies, never changed in place: ``data`` may be a shallow copy of the
+    base scene (``dict(raw)``) that shares every other table with it."""
     term = term_key(key)
     if term is not None:  # a user term's param: the entry of [[kind]] with that name
         kind, name, param = term
-        entry = next(e for e in data[kind] if e.get("name") == name)
-        entry["params"] = {**entry.get("params", {}), param: value}
+        entries = list(data[kind])
+        k = next(i for i, e in enumerate(entries) if e.get("name") == name)
+        entries[k] = {**entries[k], "params": {**entries[k].get("params", {}), param: value}}
+        data[kind] = entries
         return
     table, name, index, _ = _variable_keys()[key]
-    t = data.setdefault(table, {})
+    t = dict(data.get(table, {}))
     if index is None:
         t[name] = value
     else:
         vec = list(t[name])
         vec[index] = value
         t[name] = vec
+    data[table] = t
 
 
 def _scene_error(source, exc: SceneError, prefix: str) -> SceneError:
@@ -361,7 +367,7 @@ def _check_values(source, where, raw, distinct):
                 _fail(source, f"{where}.{key}", f"must be positive (moment of inertia), got {bad[0]!r}")
             continue
         for v in np.unique(values):
-            data = copy.deepcopy(raw)
+            data = dict(raw)  # _set copies what it changes
             _set(data, key, float(v))
             try:
                 load_scene(data)
@@ -426,6 +432,13 @@ def _libm(fn, x) -> np.ndarray:
     if bits.size > 1 and (bits == bits[0]).all():
         return np.full(x.shape, fn(float(x.reshape(-1)[0])))
     return np.fromiter(map(fn, x.tolist()), dtype=float, count=x.size)
+
+
+def _runnable(n: int, invalid) -> np.ndarray:
+    """The indices 0..n-1 not in ``invalid`` (the points that are run), in order."""
+    keep = np.ones(n, dtype=bool)
+    keep[np.fromiter(invalid, int, len(invalid))] = False
+    return np.flatnonzero(keep)
 
 
 def _build(spec: Spec) -> None:
@@ -497,18 +510,18 @@ def _build(spec: Spec) -> None:
 
     # the representative scene: a valid point, asymmetric if any point is, and where it can be
     # one at which every effect of the model acts
-    valid = np.setdiff1d(np.arange(n), np.fromiter(spec.invalid, int, len(spec.invalid)))
+    valid = _runnable(n, spec.invalid)
     if valid.size == 0:
         _fail(src, "body", "every point violates the triangle inequality of the moments")
     needed = tuple(e.name for e in effects.lookup([e for e, a in acts.items() if a[valid].any()]))
     fits = valid if symmetric else valid[I1[valid] != I2[valid]]
     full = fits[np.all([acts[e][fits] for e in needed], axis=0)] if needed else fits
     pick = int(full[0] if full.size else fits[0])
-    data = copy.deepcopy(spec.raw)
+    data = dict(spec.raw)  # _set copies what it changes
     for key in spec.keys:
         _set(data, key, float(cols[key][pick]))
     if "I2" not in data["body"]:
-        data["body"]["I2"] = float(I2[pick])
+        data["body"] = {**data["body"], "I2": float(I2[pick])}
     try:
         spec.scene = rep = load_scene(data)
     except SceneError as exc:
@@ -1375,7 +1388,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     t = np.array([0.0, s.t_end])
     args = ms.driver_args(sp.method, s.rtol, s.atol, s.max_steps)
     config = ms.config_of(sp.measures, sp.options)
-    run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
+    run = _runnable(sp.n, sp.invalid)
     processes = processes or _cpus()
     integral = None
     if "integral_drift" in sp.measures:
