@@ -154,3 +154,14 @@ def test_loading_a_sweep_changes_neither_the_given_scene_nor_the_base():
     data = dict(omega)
     _set(data, "initial.omega.1", -0.2)
     assert omega == kept and data["initial"]["omega"] == [0.1, -0.2, 3.0]
+
+
+def test_a_config_of_another_length_is_refused_before_the_c_call():
+    """The compiled loop reads every flag of config (derive.sweeps.measures.CONFIG): an array of
+    the old length (before the output flags) is refused, not read past its end."""
+    sp = load({**_top("dop853"), "measures": ["beta_max"]})
+    kernel = ms.MeasureKernel.load(catalogue.describe(sp.key), sp.method)
+    s = sp.scene.simulate
+    args = ms.driver_args(sp.method, s.rtol, s.atol, s.max_steps)
+    with pytest.raises(ValueError, match="config must hold"):
+        kernel.run(sp.inputs, sp.ps, np.array([0.0, 1.0]), args, np.zeros(6))

@@ -347,6 +347,9 @@ class MeasureKernel:
         ps = np.array(ps, dtype=np.float64, order="C")
         t = np.ascontiguousarray(t, dtype=np.float64)
         config = np.ascontiguousarray(config, dtype=np.float64)
+        if config.shape != (len(CONFIG),):  # the compiled loop reads every entry (config_of)
+            raise ValueError(f"config must hold {len(CONFIG)} numbers (config_of), got shape "
+                             f"{config.shape}")
         integral = (np.zeros((nb, len(INTEGRAL_ROW))) if integral is None
                     else np.ascontiguousarray(integral, dtype=np.float64).reshape(nb, len(INTEGRAL_ROW)))
         y = np.empty((nb, n, self.ny))
