@@ -153,20 +153,26 @@ def _flatten(table: Mapping, prefix: str, leaf, source: str = "<sweep>", where: 
 
 
 def _set(data: dict, key: str, value) -> None:
+    """Set the dotted scene key ``key`` in ``data``. The tables and lists on its path are
+    replaced by changed copies, never changed in place: ``data`` may be a shallow copy of the
+    base scene (``dict(raw)``) that shares every other table with it."""
     term = term_key(key)
     if term is not None:  # a user term's param: the entry of [[kind]] with that name
         kind, name, param = term
-        entry = next(e for e in data[kind] if e.get("name") == name)
-        entry["params"] = {**entry.get("params", {}), param: value}
+        entries = list(data[kind])
+        k = next(i for i, e in enumerate(entries) if e.get("name") == name)
+        entries[k] = {**entries[k], "params": {**entries[k].get("params", {}), param: value}}
+        data[kind] = entries
         return
     table, name, index, _ = _variable_keys()[key]
-    t = data.setdefault(table, {})
+    t = dict(data.get(table, {}))
     if index is None:
         t[name] = value
     else:
         vec = list(t[name])
         vec[index] = value
         t[name] = vec
+    data[table] = t
 
 
 def _scene_error(source, exc: SceneError, prefix: str) -> SceneError:
@@ -361,7 +367,7 @@ def _check_values(source, where, raw, distinct):
                 _fail(source, f"{where}.{key}", f"must be positive (moment of inertia), got {bad[0]!r}")
             continue
         for v in np.unique(values):
-            data = copy.deepcopy(raw)
+            data = dict(raw)  # _set copies what it changes
             _set(data, key, float(v))
             try:
                 load_scene(data)
@@ -419,9 +425,20 @@ def _measures(source, data):
 
 def _libm(fn, x) -> np.ndarray:
     """``fn`` (a function of the math module) of every element: the scalar libm call load_scene
-    makes, bit for bit (NumPy's own vectorised sin and cos may differ in the last bit)."""
+    makes, bit for bit (NumPy's own vectorised sin and cos may differ in the last bit); once for
+    a column that is one number (bit for bit: -0.0 is not 0.0), a key the sweep does not vary."""
     x = np.asarray(x, dtype=float)
+    bits = x.reshape(-1).view(np.int64)
+    if bits.size > 1 and (bits == bits[0]).all():
+        return np.full(x.shape, fn(float(x.reshape(-1)[0])))
     return np.fromiter(map(fn, x.tolist()), dtype=float, count=x.size)
+
+
+def _runnable(n: int, invalid) -> np.ndarray:
+    """The indices 0..n-1 not in ``invalid`` (the points that are run), in order."""
+    keep = np.ones(n, dtype=bool)
+    keep[np.fromiter(invalid, int, len(invalid))] = False
+    return np.flatnonzero(keep)
 
 
 def _build(spec: Spec) -> None:
@@ -493,18 +510,18 @@ def _build(spec: Spec) -> None:
 
     # the representative scene: a valid point, asymmetric if any point is, and where it can be
     # one at which every effect of the model acts
-    valid = np.setdiff1d(np.arange(n), np.fromiter(spec.invalid, int, len(spec.invalid)))
+    valid = _runnable(n, spec.invalid)
     if valid.size == 0:
         _fail(src, "body", "every point violates the triangle inequality of the moments")
     needed = tuple(e.name for e in effects.lookup([e for e, a in acts.items() if a[valid].any()]))
     fits = valid if symmetric else valid[I1[valid] != I2[valid]]
     full = fits[np.all([acts[e][fits] for e in needed], axis=0)] if needed else fits
     pick = int(full[0] if full.size else fits[0])
-    data = copy.deepcopy(spec.raw)
+    data = dict(spec.raw)  # _set copies what it changes
     for key in spec.keys:
         _set(data, key, float(cols[key][pick]))
     if "I2" not in data["body"]:
-        data["body"]["I2"] = float(I2[pick])
+        data["body"] = {**data["body"], "I2": float(I2[pick])}
     try:
         spec.scene = rep = load_scene(data)
     except SceneError as exc:
@@ -693,8 +710,15 @@ def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=(),
 
 
 def _chunks(idx: np.ndarray, parallel: int) -> list:
-    size = max(1, min(CHUNK, math.ceil(idx.size / max(1, 4 * parallel))))
+    """The points ``idx`` in chunks of at most CHUNK, about four per worker of ``parallel``
+    (0: no workers, the calling process runs them: chunks of CHUNK)."""
+    size = CHUNK if parallel <= 0 else max(1, min(CHUNK, math.ceil(idx.size / (4 * parallel))))
     return [idx[i:i + size] for i in range(0, idx.size, size)]
+
+
+def _in_process(points: int, processes: int) -> bool:
+    """Does the local engine run ``points`` in the calling process (no pool to start)?"""
+    return processes <= 1 or points < IN_PROCESS
 
 
 def _progress_bar(total, progress):
@@ -844,7 +868,7 @@ def _local(tasks, submit_args, progress, processes, source="<sweep>"):
 
     results = {}
     with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
-        if processes <= 1 or len(tasks) == 1 or sum(len(i) for i in tasks) < IN_PROCESS:
+        if len(tasks) == 1 or _in_process(sum(len(i) for i in tasks), processes):
             for k, idx in enumerate(tasks):
                 results[k] = run_chunk(*submit_args(idx))
                 bar.update(len(idx))
@@ -1364,7 +1388,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     t = np.array([0.0, s.t_end])
     args = ms.driver_args(sp.method, s.rtol, s.atol, s.max_steps)
     config = ms.config_of(sp.measures, sp.options)
-    run = np.setdiff1d(np.arange(sp.n), np.fromiter(sp.invalid, int, len(sp.invalid)))
+    run = _runnable(sp.n, sp.invalid)
     processes = processes or _cpus()
     integral = None
     if "integral_drift" in sp.measures:
@@ -1377,7 +1401,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
                 tuple((k, c, p[idx]) for k, c, p in sp.fallback), True)
 
     if workers is None and scheduler is None:
-        tasks = _chunks(run, processes)
+        # in this process: chunks of CHUNK points (one C call each, no pool to feed)
+        tasks = _chunks(run, 0 if _in_process(run.size, processes) else processes)
         results = _local(tasks, submit_args, progress, processes, sp.source)
     else:
         timeout = None if scheduler_timeout is None else float(scheduler_timeout)

@@ -22,17 +22,23 @@ Contract of an entry (:class:`Measure`):
    ones: ``integral_drift``'s ``integral``) selects per-point data built in Python
    (``integral_rows``).
 4. ``needs``: the compiled loop's work flags (``CONFIG``): ``steps`` runs the per-step hook
-   (the output map at each step end; the dense output — DOP853's three dense stages, counted
-   in ``nfev`` — only on the steps a search reads: the two steps around a discrete extremum of
-   beta, the first and the last step, the steps of the first tilt and the first flip);
+   (the outputs read at each step end; the dense output — DOP853's three dense stages, counted
+   in ``nfev`` — only on the steps a search reads, when it first reads them: of the two steps
+   around a discrete extremum of beta those its evaluations fall in, the first and the last
+   step, the steps of the first tilt and the first flip);
    ``extrema`` runs the searches for beta's extrema (and keeps each step for the next one's
    search), so a sweep without a beta measure forms no dense output for them; ``flip_time``
-   and ``tilt_time`` locate those times. A sweep asking only for ``nfev`` and
-   ``final_state`` runs the plain loop's work. ``dense_always`` (no measure sets it) forms the
-   dense output on every step, as before the lazy choice: the tests check that no value moves.
+   and ``tilt_time`` locate those times; ``beta``, ``energy``, ``p_alpha``, ``p_gamma`` and
+   ``omega2`` name the outputs read at every step end: only those are computed there (each
+   alone: the output map inlined and cut down by the compiler, the same bits), so that a sweep
+   of beta's extrema and the energy drift computes no omega, no axis and none of their sines
+   and cosines per step. A sweep asking only for ``nfev`` and ``final_state`` runs the plain
+   loop's work. ``dense_always`` (no measure sets it) forms the dense output on every step, as
+   before the lazy choice: the tests check that no value moves.
 
-The accumulators (``SLOTS``) are all updated whenever the hook runs (a compare or two per
-step; the extrema search runs only at the turning points).
+The accumulators (``SLOTS``) of the outputs read are updated whenever the hook runs (a compare
+or two per step; the extrema search runs only at the turning points); the others are NaN in
+the compiled call's result (``integral_drift`` too where the point has no integral).
 
 ``integral_drift`` — the drift of the extra first integral of the integrable cases
 (:mod:`derive.symbolic.integrable`: |L|² for Euler's free body, L₃ = I₃ω̃₃ = p_γ about the symmetry axis
@@ -74,7 +80,8 @@ from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, classify_values, r
 SLOTS = ("beta_max", "beta_min", "energy_drift", "p_alpha_drift", "p_gamma_drift", "flips",
          "time_to_flip", "time_to_tilt", "integral_drift")
 #: config[] of the compiled loop: the option values and the work flags a measure ``needs``.
-CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3, "dense_always": 4, "extrema": 5}
+CONFIG = {"angle": 0, "steps": 1, "flip_time": 2, "tilt_time": 3, "dense_always": 4, "extrema": 5,
+          "beta": 6, "energy": 7, "p_alpha": 8, "p_gamma": 9, "omega2": 10}
 #: The outputs the compiled loop reads (by name; their indices come from the model's outputs).
 READS = ("beta", "energy", "omega2", "p_alpha", "p_gamma", "L1", "L2", "L3", "n1", "n2", "n3")
 #: The outputs ``final_state`` reports at t_end.
@@ -100,25 +107,25 @@ class Measure:
 
 REGISTRY: dict[str, Measure] = {m.name: m for m in (
     Measure("beta_max", "rad", "largest nutation angle beta, located on the dense output", "slot",
-            "beta_max", needs=("steps", "extrema")),
+            "beta_max", needs=("steps", "extrema", "beta")),
     Measure("beta_min", "rad", "smallest nutation angle beta, located on the dense output", "slot",
-            "beta_min", needs=("steps", "extrema")),
+            "beta_min", needs=("steps", "extrema", "beta")),
     Measure("nutation", "rad", "beta_max - beta_min: the nutation amplitude (a top released at a "
             "turning point)", "slots", formula=lambda r: r["beta_max"] - r["beta_min"],
-            needs=("steps", "extrema")),
+            needs=("steps", "extrema", "beta")),
     Measure("energy_drift", "", "max over the steps of |E - E0| / |E0|", "slot", "energy_drift",
-            needs=("steps",)),
+            needs=("steps", "energy")),
     Measure("p_alpha_drift", "kg m^2/s", "max over the steps of |p_alpha - p_alpha(0)|", "slot",
-            "p_alpha_drift", needs=("steps",)),
+            "p_alpha_drift", needs=("steps", "p_alpha")),
     Measure("p_gamma_drift", "kg m^2/s", "max over the steps of |p_gamma - p_gamma(0)|", "slot",
-            "p_gamma_drift", needs=("steps",)),
+            "p_gamma_drift", needs=("steps", "p_gamma")),
     Measure("flips", "", "sign changes of omega2 (body frame) between step ends", "slot", "flips",
-            needs=("steps",)),
+            needs=("steps", "omega2")),
     Measure("time_to_flip", "s", "first sign change of omega2, on the dense output (NaN: none)",
-            "slot", "time_to_flip", needs=("steps", "flip_time")),
+            "slot", "time_to_flip", needs=("steps", "flip_time", "omega2")),
     Measure("time_to_tilt", "s", "first time beta exceeds the option angle (NaN: never)", "slot",
             "time_to_tilt", options={"angle": (math.pi / 2, "rad", "the tilt threshold")},
-            needs=("steps", "tilt_time", "extrema")),  # "rose and fell back": a maximum's search
+            needs=("steps", "tilt_time", "extrema", "beta")),  # "rose and fell back": a maximum's search
     Measure("integral_drift", "", "max over the steps of |I - I0| / S for the extra integral I of "
             "the point's integrable case (|L|^2, L3 = p_gamma, L.r_c, Kovalevskaya's K, "
             "Goryachev-Chaplygin's G), S its size at t = 0 (NaN: no extra integral)", "slot",
@@ -232,7 +239,8 @@ def source(desc, method: str) -> str:
         ctx.update(n_k=m["n_k"], n_stages=m["s"], n_dense=len(m["dense"]["stages"]))
     return environment().get_template("c/measures.c.j2").render(
         prefix=desc.name, method=method, window=window, slots=SLOTS, config=CONFIG,
-        nip=len(INTEGRAL_ROW), has_beta=desc.has_angles, **ctx, **idx)
+        nip=len(INTEGRAL_ROW), has_beta=desc.has_angles,
+        out_index={n: desc.outputs.index(n) for n in READS}, **ctx, **idx)
 
 
 def driver_args(method: str, rtol: float, atol: float, max_steps: int) -> tuple:
@@ -318,7 +326,7 @@ class MeasureKernel:
             sources[unity] = "".join(f'#include "{n}"\n' for n in (
                 f"{desc.name}.c", f"{desc.name}_solvers.c", *family, f"{desc.name}_measures.c"))
             flags = list(DEFAULT_FLAGS) + ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}",
-                                           "-DDERIVE_MEASURES"]
+                                           "-DDERIVE_MEASURES", "-fno-semantic-interposition"]
             lib = compile_library(f"{desc.name}_{method}_measures", sources, unity, flags)
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
@@ -339,6 +347,9 @@ class MeasureKernel:
         ps = np.array(ps, dtype=np.float64, order="C")
         t = np.ascontiguousarray(t, dtype=np.float64)
         config = np.ascontiguousarray(config, dtype=np.float64)
+        if config.shape != (len(CONFIG),):  # the compiled loop reads every entry (config_of)
+            raise ValueError(f"config must hold {len(CONFIG)} numbers (config_of), got shape "
+                             f"{config.shape}")
         integral = (np.zeros((nb, len(INTEGRAL_ROW))) if integral is None
                     else np.ascontiguousarray(integral, dtype=np.float64).reshape(nb, len(INTEGRAL_ROW)))
         y = np.empty((nb, n, self.ny))

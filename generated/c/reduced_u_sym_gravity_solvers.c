@@ -18,6 +18,18 @@
 #error "reduced_u_sym_gravity.h: reduced_u_sym_gravity_NY differs from the size the solvers were rendered for (4)"
 #endif
 
+/* The explicit steps and the dense outputs take the right-hand side inline, all their stages in
+ * one body (gcc, clang: the flatten attribute), where the compiler can: in a unit built with
+ * -fno-semantic-interposition (the measured sweeps' library, derive.sweeps.measures) the stages
+ * then share the parameters' temporaries (1/I1, ...) and make no call; elsewhere reduced_u_sym_gravity_rhs may be
+ * replaced at load time, so it stays a call. The same operations in the same order either way:
+ * the same bits. */
+#if defined(__GNUC__)
+#define DERIVE_REDUCED_U_SYM_GRAVITY_RHS_INLINE __attribute__((flatten))
+#else
+#define DERIVE_REDUCED_U_SYM_GRAVITY_RHS_INLINE
+#endif
+
 /* A model header that declares outputs and an init map (reduced_u_sym_gravity_NOBS, reduced_u_sym_gravity_NIN: every generated
  * model) gets the whole-simulation drivers too; a hand-written model with only rhs and jac gets
  * the solvers alone. */
@@ -283,6 +295,18 @@ static int derive_reduced_u_sym_gravity_fixed_args_ok(const double *t_out, long 
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
+/* fmax and fmin as C99 defines them (a NaN argument gives the other one), taken inline: gcc
+ * calls libm's for these (its maxsd and minsd differ for a NaN), several times a step. */
+static double derive_reduced_u_sym_gravity_max(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
+static double derive_reduced_u_sym_gravity_min(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
 /* Initial step size, Hairer's HINIT (dop853.f; Hairer, Nørsett & Wanner, Solving ODEs I,
  * II.4): h such that h^iord * max(|f0|, |f'|) = 0.01 in the tolerance-weighted norm. */
 static int derive_reduced_u_sym_gravity_initial_step(double t, const double *y, const double *p, const double *f0,
@@ -398,6 +422,7 @@ static void derive_reduced_u_sym_gravity_add_block(double *m, int n, int bi, int
 /* One explicit step of tableau "dop853" (for dop853, dop853_fixed): on entry
  * k[0] = f(t, y); fills k[1..11] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_REDUCED_U_SYM_GRAVITY_RHS_INLINE
 static int derive_reduced_u_sym_gravity_dop853_step(double t, double h, const double *y, const double *p,
                               double k[][reduced_u_sym_gravity_NY], double *y_new, double *t_rc,
                               derive_stats *st)
@@ -517,7 +542,7 @@ static double derive_reduced_u_sym_gravity_dop853_error(double h, const double *
     double e2 = 0.0, deno;
     int i;
     for (i = 0; i < reduced_u_sym_gravity_NY; ++i) {
-        sk = atol + rtol * fmax(fabs(y[i]), fabs(y_new[i]));
+        sk = atol + rtol * derive_reduced_u_sym_gravity_max(fabs(y[i]), fabs(y_new[i]));
         e = (0.01312004499419488 * k[0][i] - 1.2251564463762044 * k[5][i] - 0.4957589496572502 * k[6][i] + 1.6643771824549864 * k[7][i] - 0.35032884874997366 * k[8][i] + 0.3341791187130175 * k[9][i] + 0.08192320648511571 * k[10][i] - 0.022355307863886294 * k[11][i]) / sk;
         e1 += e * e;
         e = (-0.18980075407240762 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] - 0.42268232132379197 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.022651792198360825 * k[11][i]) / sk;
@@ -535,6 +560,7 @@ static double derive_reduced_u_sym_gravity_dop853_error(double h, const double *
 /* The dense output (dop853, order 7) of the accepted step (t, h) from y to y_new: its
  * extra stages (k[0..12] given), then the coefficients cont of the degree-7 polynomial in
  * x = (t' - t)/h. Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_REDUCED_U_SYM_GRAVITY_RHS_INLINE
 static int derive_reduced_u_sym_gravity_dop853_dense(double t, double h, const double *y, const double *y_new,
         const double *p, double k[][reduced_u_sym_gravity_NY], double cont[7][reduced_u_sym_gravity_NY], derive_stats *st,
         double *t_rc)
@@ -661,7 +687,7 @@ int reduced_u_sym_gravity_solve_dop853(const double *y0, const double *p, const 
         }
         fac11 = pow(err, expo);
         if (err > 1.0) {
-            h /= fmin(facc1, fac11 / safe);
+            h /= derive_reduced_u_sym_gravity_min(facc1, fac11 / safe);
             rejected = 1;
             st->nreject++;
             continue;
@@ -670,7 +696,7 @@ int reduced_u_sym_gravity_solve_dop853(const double *y0, const double *p, const 
         /* Accepted. */
         st->naccept++;
         tn = last ? t_end : t + h;
-        hnew = h / fmax(facc2, fmin(facc1, fac11 / safe));
+        hnew = h / derive_reduced_u_sym_gravity_max(facc2, derive_reduced_u_sym_gravity_min(facc1, fac11 / safe));
         st->nfev++;
         rc = reduced_u_sym_gravity_rhs(tn, y_new, p, k[12]);
         if (rc)
@@ -713,7 +739,7 @@ int reduced_u_sym_gravity_solve_dop853(const double *y0, const double *p, const 
         if (hnew > hmax)
             hnew = hmax;
         if (rejected)
-            hnew = fmin(hnew, h);
+            hnew = derive_reduced_u_sym_gravity_min(hnew, h);
         rejected = 0;
         nonfinite_trial = 0;
         st->fail_index = -1;
@@ -862,6 +888,7 @@ int reduced_u_sym_gravity_simulate_final_batch_dop853(long n_batch, const double
 /* One explicit step of tableau "rk4" (for rk4): on entry
  * k[0] = f(t, y); fills k[1..3] and y_new.
  * Returns 0, or the rhs's non-zero code with *t_rc the stage time. */
+DERIVE_REDUCED_U_SYM_GRAVITY_RHS_INLINE
 static int derive_reduced_u_sym_gravity_rk4_step(double t, double h, const double *y, const double *p,
                               double k[][reduced_u_sym_gravity_NY], double *y_new, double *t_rc,
                               derive_stats *st)
