@@ -9,7 +9,9 @@ tested against libm in tests/test_taylor_acos.py). For every shipped model with 
 map, on random states and columns with exact 0, ±1 among them and parameters with
 p_alpha = ±p_gamma (the guarded poles of the reduced tops, where the branch not taken is 0/0),
 the block's outputs have the reference's bits — or are NaN where it is — whether a sample is
-alone or in a block of 16, in the default build and in the lanes build (``-march=native``)."""
+alone or in a block of 16, in the default build and in the lanes build (``-march=native``); and
+``<prefix>outputs_block_trig``, which computes the cyclic angles' sin and cos in its own loop, has
+the bits of ``<prefix>trig_block`` followed by the map."""
 from __future__ import annotations
 
 import math
@@ -76,10 +78,12 @@ static void wr(double x)
 }
 
 /* stdin: NP parameters, the number of samples n, then n samples of NV values and a time.
- * stdout, per sample: the reference's outputs, the block's (blocks of 16), the block's alone. */
+ * stdout, per sample: the reference's outputs, the block's (blocks of 16), the block's alone;
+ * with TRIG, then the block's after trig_block and the block map computing those itself. */
 int main(void)
 {
-    static double vb[NV][KB], v1[NV][KB], ob[NOBS][KB], o1[NOBS][KB];
+    static double vb[NV][KB], v1[NV][KB], ob[NOBS][KB], o1[NOBS][KB], vt[NV][KB], ot[NOBS][KB],
+        of[NOBS][KB];
     double p[NP], y[NV], tb[KB], ref[NOBS];
     long n, s, k0;
     int i, j, k, nb;
@@ -94,6 +98,12 @@ int main(void)
             tb[k] = rd();
         }
         BLOCK(nb, tb, vb, p, ob);
+#ifdef TRIG
+        memcpy(vt, vb, sizeof vt);
+        TRIG(nb, vt);
+        BLOCK(nb, tb, vt, p, ot);
+        BLOCK_TRIG(nb, tb, vb, p, of);
+#endif
         for (k = 0; k < nb; ++k) {
             for (i = 0; i < NV; ++i)
                 y[i] = v1[i][0] = vb[i][k];
@@ -105,6 +115,12 @@ int main(void)
                 wr(ob[j][k]);
             for (j = 0; j < NOBS; ++j)
                 wr(o1[j][0]);
+#ifdef TRIG
+            for (j = 0; j < NOBS; ++j)
+                wr(ot[j][k]);
+            for (j = 0; j < NOBS; ++j)
+                wr(of[j][k]);
+#endif
             printf("\n");
         }
     }
@@ -125,6 +141,9 @@ def _harness(tmp_path, name, flags, model, d):
         f'#include "{m}.c"\n#include "{m}_solvers.c"\n#include "{m}_taylor.c"\n'
         f"#define NV {up}NV\n#define KB {up}KB\n#define NP {m}_NP\n#define NOBS {nobs}\n"
         f"#define BLOCK(nb, tb, v, p, o) {prefix}outputs_block(nb, tb, v, p, {rows})\n"
+        + (f"#define TRIG {prefix}trig_block\n"
+           f"#define BLOCK_TRIG(nb, tb, v, p, o) {prefix}outputs_block_trig(nb, tb, v, p, {rows})\n"
+           if d.trig else "")
         + _reference(model, d, prefix) + HARNESS)
     exe = tmp_path / name
     cc = os.environ.get("CC", "cc")
@@ -184,10 +203,13 @@ def test_the_block_map_is_the_conditional_map_bit_for_bit(tmp_path, name):
     for p in sets:
         runs = [_run(exe, p, samples) for exe in builds]
         for r in runs:
-            ref, blk, one = r[:, :nobs], r[:, nobs:2 * nobs], r[:, 2 * nobs:]
+            ref, blk, one = r[:, :nobs], r[:, nobs:2 * nobs], r[:, 2 * nobs:3 * nobs]
             assert _same(blk, ref).all(), (name, p, np.argwhere(~_same(blk, ref))[:5])
             assert _same(one, ref).all(), (name, p)
         np.testing.assert_array_equal(runs[0], runs[1])
+        if d.trig:  # the map with its own sin and cos: trig_block's, then the map, to the bit
+            r = runs[0]
+            assert _same(r[:, 4 * nobs:], r[:, 3 * nobs:4 * nobs]).all(), name
 
 
 SELECTS = r"""
@@ -256,3 +278,25 @@ def test_a_guarded_term_is_the_guards_value_where_the_other_branch_is_singular(t
             assert g in ("nan", "-nan")
         else:
             assert str(float(g)) == str(float(want)), (got, expected)  # (the sign of 0 too)
+
+
+@pytest.mark.parametrize("gamma0", [0.0, 1.0e9])
+def test_angles_beyond_the_polynomial_range_take_libm_in_a_run(gamma0):
+    """The reference top (reduced-u) with γ starting at 1e9 rad, beyond sincos_poly's range
+    (2^19 π/2): the run's blocks take trig_block's libm fallback, and the outputs made of
+    cos γ, sin γ (ω1, ω2, L1, L2) agree with the output map of the written states to
+    round-off, as they do from γ = 0 (the polynomial path)."""
+    import derive
+    from derive.bench.reference import reference_data
+    data = reference_data(10.0)
+    data["initial"] = dict(data["initial"], gamma=gamma0)
+    data["simulate"] = dict(data["simulate"], method="taylor", rtol=1e-8, atol=1e-10,
+                            samples=201)
+    plan = derive.prepare(data).plan
+    c = plan.candidates[0]
+    out, y, p, st = c.kernel.simulate(plan.inputs, c.params, plan.t, c.args, c.pole_check)
+    assert st["status"] == 0
+    ref = c.kernel.outputs_at(plan.t, y, p)
+    for j in (3, 4, 15, 16):
+        scale = max(np.max(np.abs(ref[j])), 1.0)
+        assert np.max(np.abs(out[j] - ref[j])) <= 1e-12 * scale, (j, gamma0)

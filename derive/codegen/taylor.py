@@ -679,9 +679,15 @@ def _pointwise(model, d: Decomposition) -> dict | None:
         else:
             pr.each.append(("double", str(name), text))
     outs = [(j, pr.doprint(e)) for (j, _), e in zip(d.pointwise, block.outputs)]
+    series_columns = [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
     return {"states": block.uses(model.states), "params": block.uses(model.params),
-            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
+            "columns": series_columns
             + [(len(model.states) + len(d.columns) + c, s) for c, s in block.uses(d.trig_symbols)],
+            # the map computing the trig pairs itself (<prefix>outputs_block_trig): the columns
+            # from the series, then per pair (state index, sin name, cos name)
+            "series_columns": series_columns,
+            "trig_pairs": [(k, str(d.trig_symbols[2 * c]), str(d.trig_symbols[2 * c + 1]))
+                           for c, k in enumerate(d.trig)],
             "uses_t": uses_t, "once": pr.once, "each": pr.each, "outputs": outs,
             "acos": pr.uses_acos}
 

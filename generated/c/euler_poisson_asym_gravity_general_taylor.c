@@ -285,6 +285,7 @@ static void derive_euler_poisson_asym_gravity_general_taylor_outputs_block(int n
     }
 }
 
+
 int euler_poisson_asym_gravity_general_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES][EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_MAX_ORDER + 1];
@@ -576,7 +577,6 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_taylor(const d
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_poisson_asym_gravity_general_taylor_horner_block(w, order, nb, taub, vb);
-                derive_euler_poisson_asym_gravity_general_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = euler_poisson_asym_gravity_general_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < euler_poisson_asym_gravity_general_NY && isfinite(vb[bad][kb]); ++bad)

@@ -256,6 +256,7 @@ static void derive_euler_poisson_asym_taylor_outputs_block(int nb, const double 
     }
 }
 
+
 int euler_poisson_asym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_EULER_POISSON_ASYM_TAYLOR_NODES][EULER_POISSON_ASYM_TAYLOR_MAX_ORDER + 1];
@@ -547,7 +548,6 @@ static int derive_euler_poisson_asym_taylor_solve_taylor(const double *y0, const
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_poisson_asym_taylor_horner_block(w, order, nb, taub, vb);
-                derive_euler_poisson_asym_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = euler_poisson_asym_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < euler_poisson_asym_NY && isfinite(vb[bad][kb]); ++bad)

@@ -398,6 +398,101 @@ static void derive_heavy_top_reduced_taylor_outputs_block(int nb, const double *
     }
 }
 
+
+/* derive_heavy_top_reduced_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
+ * loop (derive_heavy_top_reduced_taylor_sincos_poly, as derive_heavy_top_reduced_taylor_trig_block does: the same numbers), not read from v:
+ * where every angle of the block is within DERIVE_HEAVY_TOP_REDUCED_TAYLOR_TRIG_MAX. One loop instead of two:
+ * the output map's divisions and square roots (the divider) run beside sincos's multiplies
+ * and adds, which had the loop of their own before them. */
+static void derive_heavy_top_reduced_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    const double p_alpha = p[5];
+    const double p_gamma = p[6];
+    const double x0 = p_alpha + p_gamma;
+    const double x2 = 1.0/I1;
+    const double x3 = (1.0/4.0)*x2;
+    const double x4 = p_alpha - p_gamma;
+    const uint64_t pw1_ = 0 - (uint64_t)(x0 == 0);
+    const double pw2_ = 0;
+    const uint64_t pw4_ = 0 - (uint64_t)(x4 == 0);
+    const double pw5_ = 0;
+    const double x11 = 1.0/I3;
+    const double x12 = (1.0/2.0)*(p_gamma*p_gamma);
+    const double x13 = (x0*x0);
+    const double x14 = (1.0/8.0)*x2;
+    const double x15 = (x4*x4);
+    const uint64_t pw7_ = 0 - (uint64_t)(x13 == 0);
+    const double pw8_ = 0;
+    const uint64_t pw10_ = 0 - (uint64_t)(x15 == 0);
+    const double pw11_ = 0;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double beta = v[1][k];
+        const double gamma = v[2][k];
+        const double beta_d = v[3][k];
+        const double tv0 = v[4][k];
+        const double tv1 = v[5][k];
+        const double tv2 = v[6][k];
+        const double tv3 = v[7][k];
+        double tvs0, tvc0;
+        double tvs1, tvc1;
+        derive_heavy_top_reduced_taylor_sincos_poly(v[0][k], &tvs0, &tvc0);
+        derive_heavy_top_reduced_taylor_sincos_poly(v[2][k], &tvs1, &tvc1);
+        const double x1 = 1.0/(tv0*tv0);
+        const double x5 = 1.0/(tv1*tv1);
+        const double pw0_ = x0*x1*x3;
+        const double pw3_ = x3*x4*x5;
+        const double x6 = derive_heavy_top_reduced_taylor_select(pw1_, pw2_, pw0_) + derive_heavy_top_reduced_taylor_select(pw4_, pw5_, pw3_);
+        const double x7 = tv2*tvc1;
+        const double x8 = beta_d*tvs1 - x6*x7;
+        const double x9 = tv2*tvs1;
+        const double x10 = beta_d*tvc1 + x6*x9;
+        const double pw6_ = x1*x13*x14;
+        const double pw9_ = x14*x15*x5;
+        o0[k] = alpha;
+        o1[k] = beta;
+        o2[k] = gamma;
+        o3[k] = x8;
+        o4[k] = x10;
+        o5[k] = p_gamma*x11;
+        o6[k] = tv2*tvc0;
+        o7[k] = tv2*tvs0;
+        o8[k] = tv3;
+        o9[k] = (1.0/2.0)*I1*(beta_d*beta_d) + M*g*l*tv3 + x11*x12 - x12*x2 + derive_heavy_top_reduced_taylor_select(pw7_, pw8_, pw6_) + derive_heavy_top_reduced_taylor_select(pw10_, pw11_, pw9_);
+        o10[k] = p_alpha;
+        o11[k] = p_gamma;
+        o12[k] = -x7;
+        o13[k] = x9;
+        o14[k] = tv3;
+        o15[k] = I1*x8;
+        o16[k] = I1*x10;
+        o17[k] = p_gamma;
+    }
+}
+
+
+/* Every angle of the samples (finite) within derive_heavy_top_reduced_taylor_sincos_poly's range? */
+static int derive_heavy_top_reduced_taylor_trig_in_range(int nb, double v[][DERIVE_HEAVY_TOP_REDUCED_TAYLOR_KB])
+{
+    int k, ok = 1;
+    for (k = 0; k < nb; ++k)
+        ok &= (fabs(v[0][k]) <= DERIVE_HEAVY_TOP_REDUCED_TAYLOR_TRIG_MAX) & (fabs(v[2][k]) <= DERIVE_HEAVY_TOP_REDUCED_TAYLOR_TRIG_MAX);
+    return ok;
+}
+
 int heavy_top_reduced_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_HEAVY_TOP_REDUCED_TAYLOR_NODES][HEAVY_TOP_REDUCED_TAYLOR_MAX_ORDER + 1];
@@ -674,7 +769,6 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_heavy_top_reduced_taylor_horner_block(w, order, nb, taub, vb);
-                derive_heavy_top_reduced_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = heavy_top_reduced_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < heavy_top_reduced_NY && isfinite(vb[bad][kb]); ++bad)
@@ -697,12 +791,22 @@ static int derive_heavy_top_reduced_taylor_solve_taylor(const double *y0, const 
                     }
                 } else
 #endif
+                if (derive_heavy_top_reduced_taylor_trig_in_range(kb, vb))
+                    derive_heavy_top_reduced_taylor_outputs_block_trig(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
+                    derive_heavy_top_reduced_taylor_trig_block(kb, vb);
                     derive_heavy_top_reduced_taylor_outputs_block(kb, t_out + k_out, vb, p,
                         out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
                         out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
                         out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
                         out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
                         out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                }
                 if (kb < nb)
                     return derive_heavy_top_reduced_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
                 k_out += nb;

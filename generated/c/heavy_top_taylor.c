@@ -365,6 +365,80 @@ static void derive_heavy_top_taylor_outputs_block(int nb, const double *tb, doub
     }
 }
 
+
+/* derive_heavy_top_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
+ * loop (derive_heavy_top_taylor_sincos_poly, as derive_heavy_top_taylor_trig_block does: the same numbers), not read from v:
+ * where every angle of the block is within DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX. One loop instead of two:
+ * the output map's divisions and square roots (the divider) run beside sincos's multiplies
+ * and adds, which had the loop of their own before them. */
+static void derive_heavy_top_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_HEAVY_TOP_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    const double x5 = (1.0/2.0)*I1;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double beta = v[1][k];
+        const double gamma = v[2][k];
+        const double alpha_d = v[3][k];
+        const double beta_d = v[4][k];
+        const double gamma_d = v[5][k];
+        const double tv0 = v[6][k];
+        const double tv1 = v[7][k];
+        double tvs0, tvc0;
+        double tvs1, tvc1;
+        derive_heavy_top_taylor_sincos_poly(v[0][k], &tvs0, &tvc0);
+        derive_heavy_top_taylor_sincos_poly(v[2][k], &tvs1, &tvc1);
+        const double x0 = tv0*tvc1;
+        const double x1 = -alpha_d*x0 + beta_d*tvs1;
+        const double x2 = tv0*tvs1;
+        const double x3 = alpha_d*x2 + beta_d*tvc1;
+        const double x4 = alpha_d*tv1 + gamma_d;
+        const double x6 = I3*x4;
+        const double x7 = I1*x3;
+        const double x8 = I1*x1;
+        o0[k] = alpha;
+        o1[k] = beta;
+        o2[k] = gamma;
+        o3[k] = x1;
+        o4[k] = x3;
+        o5[k] = x4;
+        o6[k] = tv0*tvc0;
+        o7[k] = tv0*tvs0;
+        o8[k] = tv1;
+        o9[k] = (1.0/2.0)*I3*(x4*x4) + M*g*l*tv1 + (x1*x1)*x5 + (x3*x3)*x5;
+        o10[k] = tv1*x6 - x0*x8 + x2*x7;
+        o11[k] = x6;
+        o12[k] = -x0;
+        o13[k] = x2;
+        o14[k] = tv1;
+        o15[k] = x8;
+        o16[k] = x7;
+        o17[k] = x6;
+    }
+}
+
+
+/* Every angle of the samples (finite) within derive_heavy_top_taylor_sincos_poly's range? */
+static int derive_heavy_top_taylor_trig_in_range(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
+{
+    int k, ok = 1;
+    for (k = 0; k < nb; ++k)
+        ok &= (fabs(v[0][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX) & (fabs(v[2][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX);
+    return ok;
+}
+
 int heavy_top_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_HEAVY_TOP_TAYLOR_NODES][HEAVY_TOP_TAYLOR_MAX_ORDER + 1];
@@ -647,7 +721,6 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_heavy_top_taylor_horner_block(w, order, nb, taub, vb);
-                derive_heavy_top_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = heavy_top_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < heavy_top_NY && isfinite(vb[bad][kb]); ++bad)
@@ -670,12 +743,22 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
                     }
                 } else
 #endif
+                if (derive_heavy_top_taylor_trig_in_range(kb, vb))
+                    derive_heavy_top_taylor_outputs_block_trig(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
+                    derive_heavy_top_taylor_trig_block(kb, vb);
                     derive_heavy_top_taylor_outputs_block(kb, t_out + k_out, vb, p,
                         out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
                         out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
                         out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
                         out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
                         out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                }
                 if (kb < nb)
                     return derive_heavy_top_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
                 k_out += nb;

@@ -385,6 +385,102 @@ static void derive_reduced_u_sym_gravity_taylor_outputs_block(int nb, const doub
     }
 }
 
+
+/* derive_reduced_u_sym_gravity_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
+ * loop (derive_reduced_u_sym_gravity_taylor_sincos_poly, as derive_reduced_u_sym_gravity_taylor_trig_block does: the same numbers), not read from v:
+ * where every angle of the block is within DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_TRIG_MAX. One loop instead of two:
+ * the output map's divisions and square roots (the divider) run beside sincos's multiplies
+ * and adds, which had the loop of their own before them. */
+static void derive_reduced_u_sym_gravity_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double M = p[2];
+    const double g = p[3];
+    const double l = p[4];
+    const double p_alpha = p[5];
+    const double p_gamma = p[6];
+    const double x5 = p_alpha + p_gamma;
+    const double x7 = 1.0/I1;
+    const double x8 = (1.0/2.0)*x7;
+    const double x9 = p_alpha - p_gamma;
+    const uint64_t pw1_ = 0 - (uint64_t)(x5 == 0);
+    const double pw2_ = 0;
+    const uint64_t pw4_ = 0 - (uint64_t)(x9 == 0);
+    const double pw5_ = 0;
+    const double x15 = 1.0/I3;
+    const double x16 = (p_gamma*p_gamma);
+    const double x17 = 2*I1;
+    const double x18 = 2*p_alpha*p_gamma;
+    const double x19 = (p_alpha*p_alpha) + x16;
+    const double x20 = (1.0/4.0)*x7;
+    const uint64_t pw7_ = 0 - (uint64_t)(x18 - x19 == 0);
+    const double pw8_ = 0;
+    const uint64_t pw10_ = 0 - (uint64_t)(x18 + x19 == 0);
+    const double pw11_ = 0;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double u = v[1][k];
+        const double gamma = v[2][k];
+        const double u_d = v[3][k];
+        double tvs0, tvc0;
+        double tvs1, tvc1;
+        derive_reduced_u_sym_gravity_taylor_sincos_poly(v[0][k], &tvs0, &tvc0);
+        derive_reduced_u_sym_gravity_taylor_sincos_poly(v[2][k], &tvs1, &tvc1);
+        const double x0 = u + 1;
+        const double x1 = u - 1;
+        const double x2 = -x1;
+        const double x3 = sqrt(x0*x2);
+        const double x4 = u_d/x3;
+        const double x6 = 1.0/x0;
+        const double x10 = 1.0/x1;
+        const double pw0_ = x5*x6*x8;
+        const double pw3_ = -x10*x8*x9;
+        const double x11 = derive_reduced_u_sym_gravity_taylor_select(pw1_, pw2_, pw0_) + derive_reduced_u_sym_gravity_taylor_select(pw4_, pw5_, pw3_);
+        const double x12 = tvc1*x3;
+        const double x13 = -tvs1*x4 - x11*x12;
+        const double x14 = -tvc1*x4 + tvs1*x11*x3;
+        const double pw6_ = -x10*x20*(x9*x9);
+        const double pw9_ = x20*(x5*x5)*x6;
+        o0[k] = alpha;
+        o1[k] = derive_reduced_u_sym_gravity_taylor_acos_poly(u);
+        o2[k] = gamma;
+        o3[k] = x13;
+        o4[k] = x14;
+        o5[k] = p_gamma*x15;
+        o6[k] = tvc0*x3;
+        o7[k] = tvs0*x3;
+        o8[k] = u;
+        o9[k] = (1.0/2.0)*I1*(u_d*u_d)*x6/x2 + (1.0/2.0)*x15*x16 + x8*(M*g*l*u*x17 - x16 + x17*derive_reduced_u_sym_gravity_taylor_select(pw7_, pw8_, pw6_) + x17*derive_reduced_u_sym_gravity_taylor_select(pw10_, pw11_, pw9_));
+        o10[k] = p_alpha;
+        o11[k] = p_gamma;
+        o12[k] = -x12;
+        o13[k] = tvs1*x3;
+        o14[k] = u;
+        o15[k] = I1*x13;
+        o16[k] = I1*x14;
+        o17[k] = p_gamma;
+    }
+}
+
+
+/* Every angle of the samples (finite) within derive_reduced_u_sym_gravity_taylor_sincos_poly's range? */
+static int derive_reduced_u_sym_gravity_taylor_trig_in_range(int nb, double v[][DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_KB])
+{
+    int k, ok = 1;
+    for (k = 0; k < nb; ++k)
+        ok &= (fabs(v[0][k]) <= DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_TRIG_MAX) & (fabs(v[2][k]) <= DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_TRIG_MAX);
+    return ok;
+}
+
 int reduced_u_sym_gravity_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_REDUCED_U_SYM_GRAVITY_TAYLOR_NODES][REDUCED_U_SYM_GRAVITY_TAYLOR_MAX_ORDER + 1];
@@ -661,7 +757,6 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_reduced_u_sym_gravity_taylor_horner_block(w, order, nb, taub, vb);
-                derive_reduced_u_sym_gravity_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = reduced_u_sym_gravity_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < reduced_u_sym_gravity_NY && isfinite(vb[bad][kb]); ++bad)
@@ -684,12 +779,22 @@ static int derive_reduced_u_sym_gravity_taylor_solve_taylor(const double *y0, co
                     }
                 } else
 #endif
+                if (derive_reduced_u_sym_gravity_taylor_trig_in_range(kb, vb))
+                    derive_reduced_u_sym_gravity_taylor_outputs_block_trig(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
+                    derive_reduced_u_sym_gravity_taylor_trig_block(kb, vb);
                     derive_reduced_u_sym_gravity_taylor_outputs_block(kb, t_out + k_out, vb, p,
                         out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
                         out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
                         out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
                         out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
                         out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                }
                 if (kb < nb)
                     return derive_reduced_u_sym_gravity_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
                 k_out += nb;

@@ -357,6 +357,7 @@ static void derive_rigid_body_taylor_outputs_block(int nb, const double *tb, dou
     }
 }
 
+
 int rigid_body_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_RIGID_BODY_TAYLOR_NODES][RIGID_BODY_TAYLOR_MAX_ORDER + 1];
@@ -642,7 +643,6 @@ static int derive_rigid_body_taylor_solve_taylor(const double *y0, const double 
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_rigid_body_taylor_horner_block(w, order, nb, taub, vb);
-                derive_rigid_body_taylor_trig_block(nb, vb);
                 /* the states into y_out, up to the first sample with a non-finite one */
                 for (kb = 0, bad = rigid_body_NY; kb < nb; ++kb) {
                     for (bad = 0; bad < rigid_body_NY && isfinite(vb[bad][kb]); ++bad)
