@@ -143,10 +143,14 @@ static int derive_euler_angles_sym_angles_usual(long k0, long k1, const double *
 {
     const double pi = 3.14159265358979323846, pi_lo = 3.1415926535897927, tiny = 4.9406564584124654e-324;
     const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
-    uint64_t acc = 0, x[6], f[5];
+    uint64_t acc = 0, x[6], f[3];
     double d[6];
     long k;
     int i;
+    /* sample k0 - 1's angles finite (those of the samples after it are tested as sample k) */
+    memcpy(&f[0], &a[k0 - 1], sizeof f[0]);
+    memcpy(&f[1], &c[k0 - 1], sizeof f[1]);
+    acc |= ((f[0] & exponent) + one) | ((f[1] & exponent) + one);
     for (k = k0; k < k1; ++k) {
         d[0] = b[k];
         d[1] = pi - b[k];
@@ -155,14 +159,12 @@ static int derive_euler_angles_sym_angles_usual(long k0, long k1, const double *
         d[4] = fabs(a[k]) - tiny;
         d[5] = fabs(c[k]) - tiny;
         memcpy(x, d, sizeof x);
-        memcpy(&f[0], &a[k - 1], sizeof f[0]);
-        memcpy(&f[1], &a[k], sizeof f[1]);
-        memcpy(&f[2], &b[k], sizeof f[2]);
-        memcpy(&f[3], &c[k - 1], sizeof f[3]);
-        memcpy(&f[4], &c[k], sizeof f[4]);
+        memcpy(&f[0], &a[k], sizeof f[0]);
+        memcpy(&f[1], &b[k], sizeof f[1]);
+        memcpy(&f[2], &c[k], sizeof f[2]);
         for (i = 0; i < 6; ++i)
             acc |= x[i];
-        for (i = 0; i < 5; ++i)
+        for (i = 0; i < 3; ++i)
             acc |= (f[i] & exponent) + one;
     }
     return !(acc >> 63);

@@ -257,6 +257,20 @@ static void derive_euler_poisson_asym_taylor_outputs_block(int nb, const double 
 }
 
 
+/* Every state of the nb samples in v finite? The bit test of euler_poisson_asym_outputs_finite over the
+ * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+static int derive_euler_poisson_asym_taylor_states_finite(int nb, double v[][DERIVE_EULER_POISSON_ASYM_TAYLOR_KB])
+{
+    uint64_t bits, carry = 0;
+    int i, k;
+    for (i = 0; i < euler_poisson_asym_NY; ++i)
+        for (k = 0; k < nb; ++k) {
+            memcpy(&bits, &v[i][k], sizeof bits);
+            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
+        }
+    return !(carry >> 63);
+}
+
 int euler_poisson_asym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
 {
     double u[DERIVE_EULER_POISSON_ASYM_TAYLOR_NODES][EULER_POISSON_ASYM_TAYLOR_MAX_ORDER + 1];
@@ -439,7 +453,7 @@ static int derive_euler_poisson_asym_taylor_solve_taylor(const double *y0, const
     double w[EULER_POISSON_ASYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_ASYM_TAYLOR_NW];
     double vb[DERIVE_EULER_POISSON_ASYM_TAYLOR_NV][DERIVE_EULER_POISSON_ASYM_TAYLOR_KB], taub[DERIVE_EULER_POISSON_ASYM_TAYLOR_KB];
     int series = 1, nb, kb, bad;
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -495,34 +509,64 @@ static int derive_euler_poisson_asym_taylor_solve_taylor(const double *y0, const
          * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
+        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
+         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
+         * keeps n1 as fmax does; glibc's fmax is a call) */
         n1 = n2 = 0.0;
-        sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[0][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[1][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[2]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[2][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[3][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[4]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[4][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[4][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[5]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[5][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[5][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[6]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[6][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[6][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[7]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[7][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[7][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[8]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[8][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[8][order]) / sc);
+        sc = fabs(y[0]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[0][order - 1]) / sc;
+        a2 = fabs(u[0][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[1]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[1][order - 1]) / sc;
+        a2 = fabs(u[1][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[2]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[2][order - 1]) / sc;
+        a2 = fabs(u[2][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[3]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[3][order - 1]) / sc;
+        a2 = fabs(u[3][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[4]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[4][order - 1]) / sc;
+        a2 = fabs(u[4][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[5]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[5][order - 1]) / sc;
+        a2 = fabs(u[5][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[6]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[6][order - 1]) / sc;
+        a2 = fabs(u[6][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[7]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[7][order - 1]) / sc;
+        a2 = fabs(u[7][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[8]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[8][order - 1]) / sc;
+        a2 = fabs(u[8][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
         /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
          * solution) give an infinite step. */
         h = derive_euler_poisson_asym_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
@@ -548,15 +592,20 @@ static int derive_euler_poisson_asym_taylor_solve_taylor(const double *y0, const
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_poisson_asym_taylor_horner_block(w, order, nb, taub, vb);
-                /* the states into y_out, up to the first sample with a non-finite one */
-                for (kb = 0, bad = euler_poisson_asym_NY; kb < nb; ++kb) {
-                    for (bad = 0; bad < euler_poisson_asym_NY && isfinite(vb[bad][kb]); ++bad)
-                        ;
-                    if (bad < euler_poisson_asym_NY)
-                        break;
+                /* the states into y_out, up to the first sample with a non-finite one (looked for
+                 * only when the block has one) */
+                kb = nb;
+                bad = euler_poisson_asym_NY;
+                if (!derive_euler_poisson_asym_taylor_states_finite(nb, vb))
+                    for (kb = 0; kb < nb; ++kb) {
+                        for (bad = 0; bad < euler_poisson_asym_NY && isfinite(vb[bad][kb]); ++bad)
+                            ;
+                        if (bad < euler_poisson_asym_NY)
+                            break;
+                    }
+                for (j = 0; j < kb; ++j)
                     for (i = 0; i < euler_poisson_asym_NY; ++i)
-                        y_out[(k_out + kb) * euler_poisson_asym_NY + i] = vb[i][kb];
-                }
+                        y_out[(k_out + j) * euler_poisson_asym_NY + i] = vb[i][j];
                 /* the outputs of those samples */
 #ifdef DERIVE_EULER_POISSON_ASYM_SIMULATE
                 if (!series) {  /* the output map on the state, as the other methods do */

@@ -430,13 +430,36 @@ static void derive_heavy_top_taylor_outputs_block_trig(int nb, const double *tb,
 }
 
 
-/* Every angle of the samples (finite) within derive_heavy_top_taylor_sincos_poly's range? */
+/* Every angle of the samples (finite) within derive_heavy_top_taylor_sincos_poly's range? TRIG_MAX - |x| has
+ * its sign bit set exactly when |x| > TRIG_MAX: one OR a value, a loop gcc vectorises. */
 static int derive_heavy_top_taylor_trig_in_range(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
 {
-    int k, ok = 1;
-    for (k = 0; k < nb; ++k)
-        ok &= (fabs(v[0][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX) & (fabs(v[2][k]) <= DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX);
-    return ok;
+    uint64_t bits, acc = 0;
+    double d;
+    int k;
+    for (k = 0; k < nb; ++k) {
+        d = DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX - fabs(v[0][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+        d = DERIVE_HEAVY_TOP_TAYLOR_TRIG_MAX - fabs(v[2][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+    }
+    return !(acc >> 63);
+}
+
+/* Every state of the nb samples in v finite? The bit test of heavy_top_outputs_finite over the
+ * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+static int derive_heavy_top_taylor_states_finite(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
+{
+    uint64_t bits, carry = 0;
+    int i, k;
+    for (i = 0; i < heavy_top_NY; ++i)
+        for (k = 0; k < nb; ++k) {
+            memcpy(&bits, &v[i][k], sizeof bits);
+            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
+        }
+    return !(carry >> 63);
 }
 
 int heavy_top_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -621,7 +644,7 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
     double w[HEAVY_TOP_TAYLOR_MAX_ORDER + 1][DERIVE_HEAVY_TOP_TAYLOR_NW];
     double vb[DERIVE_HEAVY_TOP_TAYLOR_NV][DERIVE_HEAVY_TOP_TAYLOR_KB], taub[DERIVE_HEAVY_TOP_TAYLOR_KB];
     int series = 1, nb, kb, bad;
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -677,25 +700,46 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
          * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
+        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
+         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
+         * keeps n1 as fmax does; glibc's fmax is a call) */
         n1 = n2 = 0.0;
-        sc = rtol > 0.0 ? fmax(fabs(u[0][1]), floor_) : 1.0;  /* alpha: its rate's scale */
-        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[0][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[1][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(u[2][1]), floor_) : 1.0;  /* gamma: its rate's scale */
-        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[2][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[3][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[4]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[4][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[4][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[5]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[5][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[5][order]) / sc);
+        sc = fabs(u[0][1]);  /* alpha: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[0][order - 1]) / sc;
+        a2 = fabs(u[0][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[1]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[1][order - 1]) / sc;
+        a2 = fabs(u[1][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(u[2][1]);  /* gamma: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[2][order - 1]) / sc;
+        a2 = fabs(u[2][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[3]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[3][order - 1]) / sc;
+        a2 = fabs(u[3][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[4]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[4][order - 1]) / sc;
+        a2 = fabs(u[4][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[5]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[5][order - 1]) / sc;
+        a2 = fabs(u[5][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
         /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
          * solution) give an infinite step. */
         h = derive_heavy_top_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
@@ -721,15 +765,20 @@ static int derive_heavy_top_taylor_solve_taylor(const double *y0, const double *
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_heavy_top_taylor_horner_block(w, order, nb, taub, vb);
-                /* the states into y_out, up to the first sample with a non-finite one */
-                for (kb = 0, bad = heavy_top_NY; kb < nb; ++kb) {
-                    for (bad = 0; bad < heavy_top_NY && isfinite(vb[bad][kb]); ++bad)
-                        ;
-                    if (bad < heavy_top_NY)
-                        break;
+                /* the states into y_out, up to the first sample with a non-finite one (looked for
+                 * only when the block has one) */
+                kb = nb;
+                bad = heavy_top_NY;
+                if (!derive_heavy_top_taylor_states_finite(nb, vb))
+                    for (kb = 0; kb < nb; ++kb) {
+                        for (bad = 0; bad < heavy_top_NY && isfinite(vb[bad][kb]); ++bad)
+                            ;
+                        if (bad < heavy_top_NY)
+                            break;
+                    }
+                for (j = 0; j < kb; ++j)
                     for (i = 0; i < heavy_top_NY; ++i)
-                        y_out[(k_out + kb) * heavy_top_NY + i] = vb[i][kb];
-                }
+                        y_out[(k_out + j) * heavy_top_NY + i] = vb[i][j];
                 /* the outputs of those samples */
 #ifdef DERIVE_HEAVY_TOP_SIMULATE
                 if (!series) {  /* the output map on the state, as the other methods do */
