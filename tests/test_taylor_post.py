@@ -72,6 +72,7 @@ def test_canonical_angles_are_the_rule_bit_for_bit_on_smooth_trajectories(event)
             ang = _smooth(rng, n)
             EVENTS[event](ang, k)
             got = _canonical(kernel, ang.copy())
-            want = _canonical_reference(ang[:, 0], ang[:, 1], ang[:, 2])
+            with np.errstate(invalid="ignore"):  # (inf - inf in the rule, as in C)
+                want = _canonical_reference(ang[:, 0], ang[:, 1], ang[:, 2])
             for g, w in zip(got, want):
                 assert np.array_equal(g.view(np.int64), w.view(np.int64)), (event, n, k)
