@@ -36,7 +36,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.codegen.kernelspec import Block, KernelSpec, _flatten_observables, c_expr
+from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, _flatten_observables, c_expr
 from derive.codegen.render import render
 from derive.methods.taylor import METHODS, TaylorMethod
 
@@ -609,21 +609,87 @@ def _scope(texts: list[str], d: Decomposition) -> tuple[list, list]:
     return params, consts[::-1]
 
 
+class _BlockPrinter(CPrinter):
+    """C for the output map over a block of samples (``<prefix>outputs_block``), a loop that gcc
+    can vectorise: the same text as :class:`CPrinter` prints, but
+
+    * a Piecewise term is a select on the bits of named values, ``<select>(pc, pv, pd)``, each
+      branch's value a statement of its own, computed unconditionally, and each condition a
+      mask (all ones where it holds): gcc does not if-convert ``cond ? 0 : x*y`` under the
+      default ``-ftrapping-math`` (it will not speculate a product or a quotient, and sinks a
+      value computed ahead into the branch that uses it), but and/or on the bits of two
+      computed values is straight-line code. The chosen value is the branch's own expression,
+      so the bits are those of the conditional; where the branch not taken is singular (0/0 at
+      a guarded pole) its NaN is computed and dropped;
+    * a statement made of ``fixed`` symbols alone (the parameters and temporaries of theirs:
+      the guards' conditions) goes to ``once``, computed before the loop, the others to
+      ``each``, in the loop: (type, name, C text), in the order printed (a statement's operands
+      before it);
+    * ``acos`` is ``<prefix>acos_poly`` (the block's own, arithmetic alone: libm's does not
+      vectorise).
+
+    The names end in an underscore, which no model symbol does."""
+
+    def __init__(self, fixed, prefix: str):
+        super().__init__()
+        self.fixed = set(fixed)
+        self.prefix = prefix
+        self.uses_acos = False
+        self.once: list = []
+        self.each: list = []
+        self.count = 0
+
+    def statement(self, kind: str, e, text: str) -> str:
+        name = f"pw{self.count}_"
+        self.count += 1
+        (self.once if e.free_symbols <= self.fixed else self.each).append((kind, name, text))
+        return name
+
+    def _print_Piecewise(self, expr):
+        *pairs, (default, _) = expr.args
+        out = self.statement("double", default, self._print(default))
+        for value, cond in reversed(pairs):
+            c = self.statement("uint64_t", cond, f"0 - (uint64_t)({self._print(cond)})")
+            v = self.statement("double", value, self._print(value))
+            out = f"{self.prefix}select({c}, {v}, {out})"
+        return out
+
+    def _print_acos(self, expr):
+        self.uses_acos = True
+        return f"{self.prefix}acos_poly({self._print(expr.args[0])})"
+
+
 def _pointwise(model, d: Decomposition) -> dict | None:
     """The outputs at a sample from the states and the columns there, printed as a C function
-    body: their own CSE, the states, columns and parameters they read."""
+    body: their own CSE, the states, columns and parameters they read; ``block``: the same map
+    over a block of samples (:class:`_BlockPrinter`)."""
     if not d.pointwise:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
-    temps, outs = block.c()
     t = sp.Symbol("t")
     uses_t = any(t in e.free_symbols for _, e in block.temps) or any(
         t in e.free_symbols for e in block.outputs)
+    pr = _BlockPrinter(model.params, f"derive_{model.name}_taylor_")
+    temps = []
+    for name, e in block.temps:
+        text = pr.doprint(e)
+        if e.free_symbols <= pr.fixed:
+            pr.fixed.add(name)
+            pr.once.append(("double", str(name), text))
+        else:
+            pr.each.append(("double", str(name), text))
+    outs = [(j, pr.doprint(e)) for (j, _), e in zip(d.pointwise, block.outputs)]
+    series_columns = [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
     return {"states": block.uses(model.states), "params": block.uses(model.params),
-            "columns": [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
+            "columns": series_columns
             + [(len(model.states) + len(d.columns) + c, s) for c, s in block.uses(d.trig_symbols)],
-            "uses_t": uses_t, "temps": temps,
-            "outputs": [(j, c) for (j, _), c in zip(d.pointwise, outs)]}
+            # the map computing the trig pairs itself (<prefix>outputs_block_trig): the columns
+            # from the series, then per pair (state index, sin name, cos name)
+            "series_columns": series_columns,
+            "trig_pairs": [(k, str(d.trig_symbols[2 * c]), str(d.trig_symbols[2 * c + 1]))
+                           for c, k in enumerate(d.trig)],
+            "uses_t": uses_t, "once": pr.once, "each": pr.each, "outputs": outs,
+            "acos": pr.uses_acos}
 
 
 def _method_context(m: TaylorMethod) -> dict:

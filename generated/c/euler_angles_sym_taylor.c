@@ -280,52 +280,176 @@ static void derive_euler_angles_sym_taylor_trig_block(int nb, double v[][DERIVE_
         }
 }
 
-/* The outputs at time t from v, the states and the columns there (the model's output map with
- * its sin, cos and exp calls read from the columns). */
-static void derive_euler_angles_sym_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
+/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
+ * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
+ * or outside the loop). */
+static inline double derive_euler_angles_sym_taylor_select(uint64_t m, double a, double b)
 {
-    const double alpha = y[0];
-    const double beta = y[1];
-    const double gamma = y[2];
-    const double alpha_d = y[3];
-    const double beta_d = y[4];
-    const double gamma_d = y[5];
-    const double tv0 = y[6];
-    const double tv1 = y[7];
-    const double tvs0 = y[8];
-    const double tvc0 = y[9];
-    const double tvs1 = y[10];
-    const double tvc1 = y[11];
+    uint64_t ia, ib;
+    memcpy(&ia, &a, sizeof ia);
+    memcpy(&ib, &b, sizeof ib);
+    ia = (ia & m) | (ib & ~m);
+    memcpy(&a, &ia, sizeof a);
+    return a;
+}
+
+/* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
+ * (v[c][k], as derive_euler_angles_sym_taylor_horner_block and derive_euler_angles_sym_taylor_trig_block leave them): the model's output map,
+ * its sin, cos and exp calls read from the columns, o<j>[k] = output j at sample k. The rows
+ * are restrict parameters: with one array and a stride gcc cannot tell that they do not
+ * overlap, and would not vectorise (a block in a buffer of its own, copied out, cost more:
+ * gcc makes the copies rep movsq).
+ * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
+ * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
+ * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
+ * derive_euler_angles_sym_taylor_acos_poly's. A sample's numbers do not depend on its block. */
+static void derive_euler_angles_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_EULER_ANGLES_SYM_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
     const double I1 = p[0];
     const double I3 = p[1];
-    (void)t;
-    const double x0 = tv0*tvc1;
-    const double x1 = -alpha_d*x0 + beta_d*tvs1;
-    const double x2 = tv0*tvs1;
-    const double x3 = alpha_d*x2 + beta_d*tvc1;
-    const double x4 = alpha_d*tv1 + gamma_d;
     const double x5 = (1.0/2.0)*I1;
-    const double x6 = I3*x4;
-    const double x7 = I1*x3;
-    const double x8 = I1*x1;
-    o[0 * stride] = alpha;
-    o[1 * stride] = beta;
-    o[2 * stride] = gamma;
-    o[3 * stride] = x1;
-    o[4 * stride] = x3;
-    o[5 * stride] = x4;
-    o[6 * stride] = tv0*tvc0;
-    o[7 * stride] = tv0*tvs0;
-    o[8 * stride] = tv1;
-    o[9 * stride] = (1.0/2.0)*I3*(x4*x4) + (x1*x1)*x5 + (x3*x3)*x5;
-    o[10 * stride] = tv1*x6 - x0*x8 + x2*x7;
-    o[11 * stride] = x6;
-    o[12 * stride] = -x0;
-    o[13 * stride] = x2;
-    o[14 * stride] = tv1;
-    o[15 * stride] = x8;
-    o[16 * stride] = x7;
-    o[17 * stride] = x6;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double beta = v[1][k];
+        const double gamma = v[2][k];
+        const double alpha_d = v[3][k];
+        const double beta_d = v[4][k];
+        const double gamma_d = v[5][k];
+        const double tv0 = v[6][k];
+        const double tv1 = v[7][k];
+        const double tvs0 = v[8][k];
+        const double tvc0 = v[9][k];
+        const double tvs1 = v[10][k];
+        const double tvc1 = v[11][k];
+        const double x0 = tv0*tvc1;
+        const double x1 = -alpha_d*x0 + beta_d*tvs1;
+        const double x2 = tv0*tvs1;
+        const double x3 = alpha_d*x2 + beta_d*tvc1;
+        const double x4 = alpha_d*tv1 + gamma_d;
+        const double x6 = I3*x4;
+        const double x7 = I1*x3;
+        const double x8 = I1*x1;
+        o0[k] = alpha;
+        o1[k] = beta;
+        o2[k] = gamma;
+        o3[k] = x1;
+        o4[k] = x3;
+        o5[k] = x4;
+        o6[k] = tv0*tvc0;
+        o7[k] = tv0*tvs0;
+        o8[k] = tv1;
+        o9[k] = (1.0/2.0)*I3*(x4*x4) + (x1*x1)*x5 + (x3*x3)*x5;
+        o10[k] = tv1*x6 - x0*x8 + x2*x7;
+        o11[k] = x6;
+        o12[k] = -x0;
+        o13[k] = x2;
+        o14[k] = tv1;
+        o15[k] = x8;
+        o16[k] = x7;
+        o17[k] = x6;
+    }
+}
+
+
+/* derive_euler_angles_sym_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
+ * loop (derive_euler_angles_sym_taylor_sincos_poly, as derive_euler_angles_sym_taylor_trig_block does: the same numbers), not read from v:
+ * where every angle of the block is within DERIVE_EULER_ANGLES_SYM_TAYLOR_TRIG_MAX. One loop instead of two:
+ * the output map's divisions and square roots (the divider) run beside sincos's multiplies
+ * and adds, which had the loop of their own before them. */
+static void derive_euler_angles_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_EULER_ANGLES_SYM_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double x5 = (1.0/2.0)*I1;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double beta = v[1][k];
+        const double gamma = v[2][k];
+        const double alpha_d = v[3][k];
+        const double beta_d = v[4][k];
+        const double gamma_d = v[5][k];
+        const double tv0 = v[6][k];
+        const double tv1 = v[7][k];
+        double tvs0, tvc0;
+        double tvs1, tvc1;
+        derive_euler_angles_sym_taylor_sincos_poly(v[0][k], &tvs0, &tvc0);
+        derive_euler_angles_sym_taylor_sincos_poly(v[2][k], &tvs1, &tvc1);
+        const double x0 = tv0*tvc1;
+        const double x1 = -alpha_d*x0 + beta_d*tvs1;
+        const double x2 = tv0*tvs1;
+        const double x3 = alpha_d*x2 + beta_d*tvc1;
+        const double x4 = alpha_d*tv1 + gamma_d;
+        const double x6 = I3*x4;
+        const double x7 = I1*x3;
+        const double x8 = I1*x1;
+        o0[k] = alpha;
+        o1[k] = beta;
+        o2[k] = gamma;
+        o3[k] = x1;
+        o4[k] = x3;
+        o5[k] = x4;
+        o6[k] = tv0*tvc0;
+        o7[k] = tv0*tvs0;
+        o8[k] = tv1;
+        o9[k] = (1.0/2.0)*I3*(x4*x4) + (x1*x1)*x5 + (x3*x3)*x5;
+        o10[k] = tv1*x6 - x0*x8 + x2*x7;
+        o11[k] = x6;
+        o12[k] = -x0;
+        o13[k] = x2;
+        o14[k] = tv1;
+        o15[k] = x8;
+        o16[k] = x7;
+        o17[k] = x6;
+    }
+}
+
+
+/* Every angle of the samples (finite) within derive_euler_angles_sym_taylor_sincos_poly's range? TRIG_MAX - |x| has
+ * its sign bit set exactly when |x| > TRIG_MAX: one OR a value, a loop gcc vectorises. */
+static int derive_euler_angles_sym_taylor_trig_in_range(int nb, double v[][DERIVE_EULER_ANGLES_SYM_TAYLOR_KB])
+{
+    uint64_t bits, acc = 0;
+    double d;
+    int k;
+    for (k = 0; k < nb; ++k) {
+        d = DERIVE_EULER_ANGLES_SYM_TAYLOR_TRIG_MAX - fabs(v[0][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+        d = DERIVE_EULER_ANGLES_SYM_TAYLOR_TRIG_MAX - fabs(v[2][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+    }
+    return !(acc >> 63);
+}
+
+/* Every state of the nb samples in v finite? The bit test of euler_angles_sym_outputs_finite over the
+ * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+static int derive_euler_angles_sym_taylor_states_finite(int nb, double v[][DERIVE_EULER_ANGLES_SYM_TAYLOR_KB])
+{
+    uint64_t bits, carry = 0;
+    int i, k;
+    for (i = 0; i < euler_angles_sym_NY; ++i)
+        for (k = 0; k < nb; ++k) {
+            memcpy(&bits, &v[i][k], sizeof bits);
+            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
+        }
+    return !(carry >> 63);
 }
 
 int euler_angles_sym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -507,11 +631,10 @@ static int derive_euler_angles_sym_taylor_solve_taylor(const double *y0, const d
 {
     derive_stats local;
     double u[DERIVE_EULER_ANGLES_SYM_TAYLOR_NODES][EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1], y[euler_angles_sym_NY];
-    double w[EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_NW], v[DERIVE_EULER_ANGLES_SYM_TAYLOR_NV];
+    double w[EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_ANGLES_SYM_TAYLOR_NW];
     double vb[DERIVE_EULER_ANGLES_SYM_TAYLOR_NV][DERIVE_EULER_ANGLES_SYM_TAYLOR_KB], taub[DERIVE_EULER_ANGLES_SYM_TAYLOR_KB];
-    double o[18];
-    int series = 1, nb, kb;
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
+    int series = 1, nb, kb, bad;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -534,7 +657,6 @@ static int derive_euler_angles_sym_taylor_solve_taylor(const double *y0, const d
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    (void)o;  /* (used by the output map, in the kernel build) */
     (void)series;
     k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
@@ -568,25 +690,46 @@ static int derive_euler_angles_sym_taylor_solve_taylor(const double *y0, const d
          * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
+        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
+         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
+         * keeps n1 as fmax does; glibc's fmax is a call) */
         n1 = n2 = 0.0;
-        sc = rtol > 0.0 ? fmax(fabs(u[0][1]), floor_) : 1.0;  /* alpha: its rate's scale */
-        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[0][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[1][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(u[2][1]), floor_) : 1.0;  /* gamma: its rate's scale */
-        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[2][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[3][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[4]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[4][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[4][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[5]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[5][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[5][order]) / sc);
+        sc = fabs(u[0][1]);  /* alpha: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[0][order - 1]) / sc;
+        a2 = fabs(u[0][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[1]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[1][order - 1]) / sc;
+        a2 = fabs(u[1][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(u[2][1]);  /* gamma: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[2][order - 1]) / sc;
+        a2 = fabs(u[2][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[3]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[3][order - 1]) / sc;
+        a2 = fabs(u[3][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[4]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[4][order - 1]) / sc;
+        a2 = fabs(u[4][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[5]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[5][order - 1]) / sc;
+        a2 = fabs(u[5][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
         /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
          * solution) give an infinite step. */
         h = derive_euler_angles_sym_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
@@ -612,24 +755,52 @@ static int derive_euler_angles_sym_taylor_solve_taylor(const double *y0, const d
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_angles_sym_taylor_horner_block(w, order, nb, taub, vb);
-                derive_euler_angles_sym_taylor_trig_block(nb, vb);
-                for (kb = 0; kb < nb; ++kb, ++k_out) {
-                    for (i = 0; i < DERIVE_EULER_ANGLES_SYM_TAYLOR_NV; ++i)
-                        v[i] = vb[i][kb];
-                    for (i = 0; i < euler_angles_sym_NY; ++i)
-                        if (!isfinite(v[i]))
-                            return derive_euler_angles_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                    memcpy(y_out + k_out * euler_angles_sym_NY, v, sizeof y);
-#ifdef DERIVE_EULER_ANGLES_SYM_SIMULATE
-                    if (!series) {  /* the output map on the state, as the other methods do */
-                        euler_angles_sym_observables(t_out[k_out], v, p, o);
-                        for (j = 0; j < 18; ++j)
-                            out[j * n_out + k_out] = o[j];
-                        continue;
+                /* the states into y_out, up to the first sample with a non-finite one (looked for
+                 * only when the block has one) */
+                kb = nb;
+                bad = euler_angles_sym_NY;
+                if (!derive_euler_angles_sym_taylor_states_finite(nb, vb))
+                    for (kb = 0; kb < nb; ++kb) {
+                        for (bad = 0; bad < euler_angles_sym_NY && isfinite(vb[bad][kb]); ++bad)
+                            ;
+                        if (bad < euler_angles_sym_NY)
+                            break;
                     }
+                for (j = 0; j < kb; ++j)
+                    for (i = 0; i < euler_angles_sym_NY; ++i)
+                        y_out[(k_out + j) * euler_angles_sym_NY + i] = vb[i][j];
+                /* the outputs of those samples */
+#ifdef DERIVE_EULER_ANGLES_SYM_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    double v[euler_angles_sym_NY], o[18];
+                    for (j = 0; j < kb; ++j) {
+                        for (i = 0; i < euler_angles_sym_NY; ++i)
+                            v[i] = vb[i][j];
+                        euler_angles_sym_observables(t_out[k_out + j], v, p, o);
+                        for (i = 0; i < 18; ++i)
+                            out[i * n_out + k_out + j] = o[i];
+                    }
+                } else
 #endif
-                    derive_euler_angles_sym_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
+                if (derive_euler_angles_sym_taylor_trig_in_range(kb, vb))
+                    derive_euler_angles_sym_taylor_outputs_block_trig(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
+                    derive_euler_angles_sym_taylor_trig_block(kb, vb);
+                    derive_euler_angles_sym_taylor_outputs_block(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
                 }
+                if (kb < nb)
+                    return derive_euler_angles_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
+                k_out += nb;
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -1029,7 +1200,12 @@ static int derive_euler_angles_sym_taylor_lanes_last_taylor(double u[][EULER_ANG
             return derive_euler_angles_sym_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * euler_angles_sym_NY);
     if (series)
-        derive_euler_angles_sym_taylor_outputs_pointwise(t_end, v, p, out, 1);
+        derive_euler_angles_sym_taylor_outputs_block(1, &t_end, vb, p,
+            out + 0, out + 1, out + 2, out + 3,
+            out + 4, out + 5, out + 6, out + 7,
+            out + 8, out + 9, out + 10, out + 11,
+            out + 12, out + 13, out + 14, out + 15,
+            out + 16, out + 17);
     else
         euler_angles_sym_observables(t_end, v, p, out);
     derive_euler_angles_sym_canonical_angles(1, out, out + 1, out + 2);

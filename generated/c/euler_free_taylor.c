@@ -161,25 +161,67 @@ static void derive_euler_free_taylor_trig_block(int nb, double v[][DERIVE_EULER_
     (void)v;
 }
 
-/* The outputs at time t from v, the states and the columns there (the model's output map with
- * its sin, cos and exp calls read from the columns). */
-static void derive_euler_free_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
+/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
+ * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
+ * or outside the loop). */
+static inline double derive_euler_free_taylor_select(uint64_t m, double a, double b)
 {
-    const double omega1 = y[0];
-    const double omega2 = y[1];
-    const double omega3 = y[2];
+    uint64_t ia, ib;
+    memcpy(&ia, &a, sizeof ia);
+    memcpy(&ib, &b, sizeof ib);
+    ia = (ia & m) | (ib & ~m);
+    memcpy(&a, &ia, sizeof a);
+    return a;
+}
+
+/* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
+ * (v[c][k], as derive_euler_free_taylor_horner_block and derive_euler_free_taylor_trig_block leave them): the model's output map,
+ * its sin, cos and exp calls read from the columns, o<j>[k] = output j at sample k. The rows
+ * are restrict parameters: with one array and a stride gcc cannot tell that they do not
+ * overlap, and would not vectorise (a block in a buffer of its own, copied out, cost more:
+ * gcc makes the copies rep movsq).
+ * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
+ * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
+ * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
+ * derive_euler_free_taylor_acos_poly's. A sample's numbers do not depend on its block. */
+static void derive_euler_free_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_EULER_FREE_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4)
+{
     const double I1 = p[0];
     const double I2 = p[1];
     const double I3 = p[2];
-    (void)t;
-    const double x0 = (omega1*omega1);
-    const double x1 = (omega2*omega2);
-    const double x2 = (omega3*omega3);
-    o[0 * stride] = (1.0/2.0)*I1*x0 + (1.0/2.0)*I2*x1 + (1.0/2.0)*I3*x2;
-    o[1 * stride] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2;
-    o[2 * stride] = omega1;
-    o[3 * stride] = omega2;
-    o[4 * stride] = omega3;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double omega1 = v[0][k];
+        const double omega2 = v[1][k];
+        const double omega3 = v[2][k];
+        const double x0 = (omega1*omega1);
+        const double x1 = (omega2*omega2);
+        const double x2 = (omega3*omega3);
+        o0[k] = (1.0/2.0)*I1*x0 + (1.0/2.0)*I2*x1 + (1.0/2.0)*I3*x2;
+        o1[k] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2;
+        o2[k] = omega1;
+        o3[k] = omega2;
+        o4[k] = omega3;
+    }
+}
+
+
+/* Every state of the nb samples in v finite? The bit test of euler_free_outputs_finite over the
+ * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+static int derive_euler_free_taylor_states_finite(int nb, double v[][DERIVE_EULER_FREE_TAYLOR_KB])
+{
+    uint64_t bits, carry = 0;
+    int i, k;
+    for (i = 0; i < euler_free_NY; ++i)
+        for (k = 0; k < nb; ++k) {
+            memcpy(&bits, &v[i][k], sizeof bits);
+            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
+        }
+    return !(carry >> 63);
 }
 
 int euler_free_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -361,11 +403,10 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
 {
     derive_stats local;
     double u[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], y[euler_free_NY];
-    double w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW], v[DERIVE_EULER_FREE_TAYLOR_NV];
+    double w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW];
     double vb[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KB], taub[DERIVE_EULER_FREE_TAYLOR_KB];
-    double o[5];
-    int series = 1, nb, kb;
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
+    int series = 1, nb, kb, bad;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -388,7 +429,6 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    (void)o;  /* (used by the output map, in the kernel build) */
     (void)series;
     k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
@@ -422,16 +462,28 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
          * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
+        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
+         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
+         * keeps n1 as fmax does; glibc's fmax is a call) */
         n1 = n2 = 0.0;
-        sc = rtol > 0.0 ? fmax(fabs(y[0]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[0][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[1][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[2]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[2][order]) / sc);
+        sc = fabs(y[0]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[0][order - 1]) / sc;
+        a2 = fabs(u[0][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[1]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[1][order - 1]) / sc;
+        a2 = fabs(u[1][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[2]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[2][order - 1]) / sc;
+        a2 = fabs(u[2][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
         /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
          * solution) give an infinite step. */
         h = derive_euler_free_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
@@ -457,24 +509,39 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_euler_free_taylor_horner_block(w, order, nb, taub, vb);
-                derive_euler_free_taylor_trig_block(nb, vb);
-                for (kb = 0; kb < nb; ++kb, ++k_out) {
-                    for (i = 0; i < DERIVE_EULER_FREE_TAYLOR_NV; ++i)
-                        v[i] = vb[i][kb];
-                    for (i = 0; i < euler_free_NY; ++i)
-                        if (!isfinite(v[i]))
-                            return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                    memcpy(y_out + k_out * euler_free_NY, v, sizeof y);
-#ifdef DERIVE_EULER_FREE_SIMULATE
-                    if (!series) {  /* the output map on the state, as the other methods do */
-                        euler_free_observables(t_out[k_out], v, p, o);
-                        for (j = 0; j < 5; ++j)
-                            out[j * n_out + k_out] = o[j];
-                        continue;
+                /* the states into y_out, up to the first sample with a non-finite one (looked for
+                 * only when the block has one) */
+                kb = nb;
+                bad = euler_free_NY;
+                if (!derive_euler_free_taylor_states_finite(nb, vb))
+                    for (kb = 0; kb < nb; ++kb) {
+                        for (bad = 0; bad < euler_free_NY && isfinite(vb[bad][kb]); ++bad)
+                            ;
+                        if (bad < euler_free_NY)
+                            break;
                     }
+                for (j = 0; j < kb; ++j)
+                    for (i = 0; i < euler_free_NY; ++i)
+                        y_out[(k_out + j) * euler_free_NY + i] = vb[i][j];
+                /* the outputs of those samples */
+#ifdef DERIVE_EULER_FREE_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    double v[euler_free_NY], o[5];
+                    for (j = 0; j < kb; ++j) {
+                        for (i = 0; i < euler_free_NY; ++i)
+                            v[i] = vb[i][j];
+                        euler_free_observables(t_out[k_out + j], v, p, o);
+                        for (i = 0; i < 5; ++i)
+                            out[i * n_out + k_out + j] = o[i];
+                    }
+                } else
 #endif
-                    derive_euler_free_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
-                }
+                    derive_euler_free_taylor_outputs_block(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out);
+                if (kb < nb)
+                    return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
+                k_out += nb;
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -791,7 +858,9 @@ static int derive_euler_free_taylor_lanes_last_taylor(double u[][EULER_FREE_TAYL
             return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * euler_free_NY);
     if (series)
-        derive_euler_free_taylor_outputs_pointwise(t_end, v, p, out, 1);
+        derive_euler_free_taylor_outputs_block(1, &t_end, vb, p,
+            out + 0, out + 1, out + 2, out + 3,
+            out + 4);
     else
         euler_free_observables(t_end, v, p, out);
     return euler_free_outputs_finite(1, &t_end, out, st);

@@ -142,6 +142,46 @@ static int euler_poisson_sym_measure_step(double t, double h, const double *y, c
 #endif
 #ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
 
+/* Would the rule below leave samples k0..k1-1 as they are (k0 > 0, sample k0 - 1 final)? Yes
+ * when every one has beta in [+0, pi] (no reflection), |alpha_k - alpha_k-1| <= pi/2 (no whole
+ * turn, target = gamma_k-1), |gamma_k - gamma_k-1| < pi, alpha_k, gamma_k != 0, all finite: then
+ * each sample's tests read only unchanged values. Tested on sign bits (x >= 0 exactly when
+ * x - y, y <= x, has a clear sign bit; pi_lo is the double below pi, |d| < pi exactly when
+ * |d| <= pi_lo; |x| - 2^-1074 < 0 exactly when x = 0) and the non-finite values by the carry
+ * of outputs_finite, all OR-ed together: one loop gcc vectorises (comparisons of doubles left
+ * branches), where the rule's tests cost a branch each per sample. A no may be a false one
+ * (beta = -0, a NaN): the rule then runs, as it always did. */
+static int derive_euler_poisson_sym_angles_usual(long k0, long k1, const double *a, const double *b, const double *c)
+{
+    const double pi = 3.14159265358979323846, pi_lo = 3.1415926535897927, tiny = 4.9406564584124654e-324;
+    const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
+    uint64_t acc = 0, x[6], f[3];
+    double d[6];
+    long k;
+    int i;
+    /* sample k0 - 1's angles finite (those of the samples after it are tested as sample k) */
+    memcpy(&f[0], &a[k0 - 1], sizeof f[0]);
+    memcpy(&f[1], &c[k0 - 1], sizeof f[1]);
+    acc |= ((f[0] & exponent) + one) | ((f[1] & exponent) + one);
+    for (k = k0; k < k1; ++k) {
+        d[0] = b[k];
+        d[1] = pi - b[k];
+        d[2] = 0.5 * pi - fabs(a[k] - a[k - 1]);
+        d[3] = pi_lo - fabs(c[k] - c[k - 1]);
+        d[4] = fabs(a[k]) - tiny;
+        d[5] = fabs(c[k]) - tiny;
+        memcpy(x, d, sizeof x);
+        memcpy(&f[0], &a[k], sizeof f[0]);
+        memcpy(&f[1], &b[k], sizeof f[1]);
+        memcpy(&f[2], &c[k], sizeof f[2]);
+        for (i = 0; i < 6; ++i)
+            acc |= x[i];
+        for (i = 0; i < 3; ++i)
+            acc |= (f[i] & exponent) + one;
+    }
+    return !(acc >> 63);
+}
+
 /* Canonical z-y-z angles along a trajectory: beta in [0, pi] (a beta outside is reflected,
  * beta -> 2 pi - beta, alpha and gamma turned by pi: the same rotation); alpha and gamma
  * continuous, not wrapped: each is moved by whole turns to within pi of the previous sample. At
@@ -152,30 +192,35 @@ static void derive_euler_poisson_sym_canonical_angles(long n, double *a, double 
 {
     const double pi = 3.14159265358979323846, twopi = 2.0 * 3.14159265358979323846;
     double bb, target;
-    long k;
-    for (k = 0; k < n; ++k) {
-        /* The usual case skips the libm calls, with the same bits: fmod(x, 2 pi) is x on
-         * [0, 2 pi), and a whole-turn shift by nearbyint(d / 2 pi) with |d| < pi adds a zero,
-         * which changes nothing but the sign of a zero (hence the x != 0 condition). */
-        bb = b[k] >= 0.0 && b[k] < twopi ? b[k] : fmod(b[k], twopi);
-        if (bb < 0.0)
-            bb += twopi;
-        if (bb > pi) {
-            bb = twopi - bb;
-            a[k] += pi;
-            c[k] += pi;
+    long k, k0, k1;
+    for (k0 = 0; k0 < n; k0 = k1) {
+        k1 = n - k0 > 16 ? k0 + 16 : n;
+        if (k0 > 0 && derive_euler_poisson_sym_angles_usual(k0, k1, a, b, c))
+            continue;  /* (nothing below would change a value of these samples) */
+        for (k = k0; k < k1; ++k) {
+            /* The usual case skips the libm calls, with the same bits: fmod(x, 2 pi) is x on
+             * [0, 2 pi), and a whole-turn shift by nearbyint(d / 2 pi) with |d| < pi adds a
+             * zero, which changes nothing but the sign of a zero (hence the x != 0 condition). */
+            bb = b[k] >= 0.0 && b[k] < twopi ? b[k] : fmod(b[k], twopi);
+            if (bb < 0.0)
+                bb += twopi;
+            if (bb > pi) {
+                bb = twopi - bb;
+                a[k] += pi;
+                c[k] += pi;
+            }
+            b[k] = bb;
+            if (k == 0)
+                continue;
+            if (!(fabs(a[k - 1] - a[k]) < pi && a[k] != 0.0))
+                a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
+            if (fabs(a[k] - a[k - 1]) > 0.5 * pi)
+                target = bb < 0.5 * pi ? a[k - 1] + c[k - 1] - a[k] : a[k] - (a[k - 1] - c[k - 1]);
+            else
+                target = c[k - 1];
+            if (!(fabs(target - c[k]) < pi && c[k] != 0.0))
+                c[k] += twopi * nearbyint((target - c[k]) / twopi);
         }
-        b[k] = bb;
-        if (k == 0)
-            continue;
-        if (!(fabs(a[k - 1] - a[k]) < pi && a[k] != 0.0))
-            a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
-        if (fabs(a[k] - a[k - 1]) > 0.5 * pi)
-            target = bb < 0.5 * pi ? a[k - 1] + c[k - 1] - a[k] : a[k] - (a[k - 1] - c[k - 1]);
-        else
-            target = c[k - 1];
-        if (!(fabs(target - c[k]) < pi && c[k] != 0.0))
-            c[k] += twopi * nearbyint((target - c[k]) / twopi);
     }
 }
 

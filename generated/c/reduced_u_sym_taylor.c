@@ -235,62 +235,260 @@ static void derive_reduced_u_sym_taylor_trig_block(int nb, double v[][DERIVE_RED
         }
 }
 
-/* The outputs at time t from v, the states and the columns there (the model's output map with
- * its sin, cos and exp calls read from the columns). */
-static void derive_reduced_u_sym_taylor_outputs_pointwise(double t, const double *y, const double *p, double *o, long stride)
+/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
+ * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
+ * or outside the loop). */
+static inline double derive_reduced_u_sym_taylor_select(uint64_t m, double a, double b)
 {
-    const double alpha = y[0];
-    const double u = y[1];
-    const double gamma = y[2];
-    const double u_d = y[3];
-    const double tvs0 = y[4];
-    const double tvc0 = y[5];
-    const double tvs1 = y[6];
-    const double tvc1 = y[7];
+    uint64_t ia, ib;
+    memcpy(&ia, &a, sizeof ia);
+    memcpy(&ib, &b, sizeof ib);
+    ia = (ia & m) | (ib & ~m);
+    memcpy(&a, &ia, sizeof a);
+    return a;
+}
+
+/* acos x by arithmetic alone, so that the output map's loop over a block vectorises (glibc's
+ * acos, called per sample, does not): fdlibm's __ieee754_acos (e_acos.c) with its three
+ * branches computed and the result chosen on the bits. |x| < 0.5: pi/2 - (x + x r(x^2));
+ * |x| >= 0.5: z = (1 - |x|)/2, s = sqrt(z), acos |x| = 2 (s + s r(z)) (s as a high part df and
+ * a correction c), acos -|x| = pi - 2 (s + s r(z)); r = p/q, the rational approximation of
+ * (asin(sqrt z) - sqrt z)/sqrt(z)^3 on [0, 1/4]. The branches not taken may be NaN (sqrt of a
+ * negative z) and are dropped. c's denominator s + df gets 2^-1000, which rounds away unless
+ * s = 0 (x = 1: then c = 0, not 0/0, and acos 1 = 0). |x| > 1 and NaN give NaN; fdlibm's
+ * shortcut for |x| < 2^-57 (pi/2) is what the formula gives. Within 1 ulp of glibc's acos
+ * (tests/test_taylor_acos.py). */
+static inline double derive_reduced_u_sym_taylor_acos_poly(double x)
+{
+    const double pi = 3.14159265358979311600e+00, pio2_hi = 1.57079632679489655800e+00,
+        pio2_lo = 6.12323399573676603587e-17;
+    double a = fabs(x), d = a - 0.5, z, pz, qz, r, s, df, c, small, neg, pos;
+    uint64_t b, msmall, mneg;
+    /* the branch masks from sign bits: d < 0 exactly when |x| < 0.5 (a difference of two
+     * doubles is zero only when they are equal), x's sign (x = -0 takes the small branch) */
+    memcpy(&msmall, &d, sizeof msmall);
+    msmall = 0 - (msmall >> 63);
+    memcpy(&mneg, &x, sizeof mneg);
+    mneg = 0 - (mneg >> 63);
+    z = derive_reduced_u_sym_taylor_select(msmall, x * x, (1.0 - a) * 0.5);
+    pz = z * (1.66666666666666657415e-01 + z * (-3.25565818622400915405e-01
+        + z * (2.01212532134862925881e-01 + z * (-4.00555345006794114027e-02
+        + z * (7.91534994289814532176e-04 + z * 3.47933107596021167570e-05)))));
+    qz = 1.0 + z * (-2.40339491173441421878e+00 + z * (2.02094576023350569471e+00
+        + z * (-6.88283971605453293030e-01 + z * 7.70381505559019352791e-02)));
+    r = pz / qz;
+    s = sqrt(z);
+    memcpy(&b, &s, sizeof b);
+    b &= UINT64_C(0xffffffff00000000);
+    memcpy(&df, &b, sizeof df);
+    c = (z - df * df) / ((s + df) + 0x1p-1000);
+    small = pio2_hi - (x - (pio2_lo - x * r));
+    neg = pi - 2.0 * (s + (r * s - pio2_lo));
+    pos = 2.0 * (df + (r * s + c));
+    return derive_reduced_u_sym_taylor_select(msmall, small, derive_reduced_u_sym_taylor_select(mneg, neg, pos));
+}
+
+/* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
+ * (v[c][k], as derive_reduced_u_sym_taylor_horner_block and derive_reduced_u_sym_taylor_trig_block leave them): the model's output map,
+ * its sin, cos and exp calls read from the columns, o<j>[k] = output j at sample k. The rows
+ * are restrict parameters: with one array and a stride gcc cannot tell that they do not
+ * overlap, and would not vectorise (a block in a buffer of its own, copied out, cost more:
+ * gcc makes the copies rep movsq).
+ * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
+ * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
+ * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
+ * derive_reduced_u_sym_taylor_acos_poly's. A sample's numbers do not depend on its block. */
+static void derive_reduced_u_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_U_SYM_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
     const double I1 = p[0];
     const double I3 = p[1];
     const double p_alpha = p[2];
     const double p_gamma = p[3];
-    (void)t;
-    const double x0 = u + 1;
-    const double x1 = u - 1;
-    const double x2 = -x1;
-    const double x3 = sqrt(x0*x2);
-    const double x4 = u_d/x3;
     const double x5 = p_alpha + p_gamma;
-    const double x6 = 1.0/x0;
     const double x7 = 1.0/I1;
     const double x8 = (1.0/2.0)*x7;
     const double x9 = p_alpha - p_gamma;
-    const double x10 = 1.0/x1;
-    const double x11 = ((x5 == 0) ? (0) : (x5*x6*x8)) + ((x9 == 0) ? (0) : (-x10*x8*x9));
-    const double x12 = tvc1*x3;
-    const double x13 = -tvs1*x4 - x11*x12;
-    const double x14 = -tvc1*x4 + tvs1*x11*x3;
+    const uint64_t pw1_ = 0 - (uint64_t)(x5 == 0);
+    const double pw2_ = 0;
+    const uint64_t pw4_ = 0 - (uint64_t)(x9 == 0);
+    const double pw5_ = 0;
     const double x15 = 1.0/I3;
     const double x16 = (p_gamma*p_gamma);
     const double x17 = 2*p_alpha*p_gamma;
     const double x18 = (p_alpha*p_alpha) + x16;
     const double x19 = (1.0/4.0)*x7;
     const double x20 = 2*I1;
-    o[0 * stride] = alpha;
-    o[1 * stride] = acos(u);
-    o[2 * stride] = gamma;
-    o[3 * stride] = x13;
-    o[4 * stride] = x14;
-    o[5 * stride] = p_gamma*x15;
-    o[6 * stride] = tvc0*x3;
-    o[7 * stride] = tvs0*x3;
-    o[8 * stride] = u;
-    o[9 * stride] = (1.0/2.0)*I1*(u_d*u_d)*x6/x2 + (1.0/2.0)*x15*x16 + x8*(-x16 + x20*((x17 - x18 == 0) ? (0) : (-x10*x19*(x9*x9))) + x20*((x17 + x18 == 0) ? (0) : (x19*(x5*x5)*x6)));
-    o[10 * stride] = p_alpha;
-    o[11 * stride] = p_gamma;
-    o[12 * stride] = -x12;
-    o[13 * stride] = tvs1*x3;
-    o[14 * stride] = u;
-    o[15 * stride] = I1*x13;
-    o[16 * stride] = I1*x14;
-    o[17 * stride] = p_gamma;
+    const uint64_t pw7_ = 0 - (uint64_t)(x17 - x18 == 0);
+    const double pw8_ = 0;
+    const uint64_t pw10_ = 0 - (uint64_t)(x17 + x18 == 0);
+    const double pw11_ = 0;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double u = v[1][k];
+        const double gamma = v[2][k];
+        const double u_d = v[3][k];
+        const double tvs0 = v[4][k];
+        const double tvc0 = v[5][k];
+        const double tvs1 = v[6][k];
+        const double tvc1 = v[7][k];
+        const double x0 = u + 1;
+        const double x1 = u - 1;
+        const double x2 = -x1;
+        const double x3 = sqrt(x0*x2);
+        const double x4 = u_d/x3;
+        const double x6 = 1.0/x0;
+        const double x10 = 1.0/x1;
+        const double pw0_ = x5*x6*x8;
+        const double pw3_ = -x10*x8*x9;
+        const double x11 = derive_reduced_u_sym_taylor_select(pw1_, pw2_, pw0_) + derive_reduced_u_sym_taylor_select(pw4_, pw5_, pw3_);
+        const double x12 = tvc1*x3;
+        const double x13 = -tvs1*x4 - x11*x12;
+        const double x14 = -tvc1*x4 + tvs1*x11*x3;
+        const double pw6_ = -x10*x19*(x9*x9);
+        const double pw9_ = x19*(x5*x5)*x6;
+        o0[k] = alpha;
+        o1[k] = derive_reduced_u_sym_taylor_acos_poly(u);
+        o2[k] = gamma;
+        o3[k] = x13;
+        o4[k] = x14;
+        o5[k] = p_gamma*x15;
+        o6[k] = tvc0*x3;
+        o7[k] = tvs0*x3;
+        o8[k] = u;
+        o9[k] = (1.0/2.0)*I1*(u_d*u_d)*x6/x2 + (1.0/2.0)*x15*x16 + x8*(-x16 + x20*derive_reduced_u_sym_taylor_select(pw7_, pw8_, pw6_) + x20*derive_reduced_u_sym_taylor_select(pw10_, pw11_, pw9_));
+        o10[k] = p_alpha;
+        o11[k] = p_gamma;
+        o12[k] = -x12;
+        o13[k] = tvs1*x3;
+        o14[k] = u;
+        o15[k] = I1*x13;
+        o16[k] = I1*x14;
+        o17[k] = p_gamma;
+    }
+}
+
+
+/* derive_reduced_u_sym_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
+ * loop (derive_reduced_u_sym_taylor_sincos_poly, as derive_reduced_u_sym_taylor_trig_block does: the same numbers), not read from v:
+ * where every angle of the block is within DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX. One loop instead of two:
+ * the output map's divisions and square roots (the divider) run beside sincos's multiplies
+ * and adds, which had the loop of their own before them. */
+static void derive_reduced_u_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_U_SYM_TAYLOR_KB],
+                                 const double *p,
+                                 double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
+                                 double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
+                                 double *restrict o8, double *restrict o9, double *restrict o10, double *restrict o11,
+                                 double *restrict o12, double *restrict o13, double *restrict o14, double *restrict o15,
+                                 double *restrict o16, double *restrict o17)
+{
+    const double I1 = p[0];
+    const double I3 = p[1];
+    const double p_alpha = p[2];
+    const double p_gamma = p[3];
+    const double x5 = p_alpha + p_gamma;
+    const double x7 = 1.0/I1;
+    const double x8 = (1.0/2.0)*x7;
+    const double x9 = p_alpha - p_gamma;
+    const uint64_t pw1_ = 0 - (uint64_t)(x5 == 0);
+    const double pw2_ = 0;
+    const uint64_t pw4_ = 0 - (uint64_t)(x9 == 0);
+    const double pw5_ = 0;
+    const double x15 = 1.0/I3;
+    const double x16 = (p_gamma*p_gamma);
+    const double x17 = 2*p_alpha*p_gamma;
+    const double x18 = (p_alpha*p_alpha) + x16;
+    const double x19 = (1.0/4.0)*x7;
+    const double x20 = 2*I1;
+    const uint64_t pw7_ = 0 - (uint64_t)(x17 - x18 == 0);
+    const double pw8_ = 0;
+    const uint64_t pw10_ = 0 - (uint64_t)(x17 + x18 == 0);
+    const double pw11_ = 0;
+    int k;
+    (void)tb;
+    for (k = 0; k < nb; ++k) {
+        const double alpha = v[0][k];
+        const double u = v[1][k];
+        const double gamma = v[2][k];
+        const double u_d = v[3][k];
+        double tvs0, tvc0;
+        double tvs1, tvc1;
+        derive_reduced_u_sym_taylor_sincos_poly(v[0][k], &tvs0, &tvc0);
+        derive_reduced_u_sym_taylor_sincos_poly(v[2][k], &tvs1, &tvc1);
+        const double x0 = u + 1;
+        const double x1 = u - 1;
+        const double x2 = -x1;
+        const double x3 = sqrt(x0*x2);
+        const double x4 = u_d/x3;
+        const double x6 = 1.0/x0;
+        const double x10 = 1.0/x1;
+        const double pw0_ = x5*x6*x8;
+        const double pw3_ = -x10*x8*x9;
+        const double x11 = derive_reduced_u_sym_taylor_select(pw1_, pw2_, pw0_) + derive_reduced_u_sym_taylor_select(pw4_, pw5_, pw3_);
+        const double x12 = tvc1*x3;
+        const double x13 = -tvs1*x4 - x11*x12;
+        const double x14 = -tvc1*x4 + tvs1*x11*x3;
+        const double pw6_ = -x10*x19*(x9*x9);
+        const double pw9_ = x19*(x5*x5)*x6;
+        o0[k] = alpha;
+        o1[k] = derive_reduced_u_sym_taylor_acos_poly(u);
+        o2[k] = gamma;
+        o3[k] = x13;
+        o4[k] = x14;
+        o5[k] = p_gamma*x15;
+        o6[k] = tvc0*x3;
+        o7[k] = tvs0*x3;
+        o8[k] = u;
+        o9[k] = (1.0/2.0)*I1*(u_d*u_d)*x6/x2 + (1.0/2.0)*x15*x16 + x8*(-x16 + x20*derive_reduced_u_sym_taylor_select(pw7_, pw8_, pw6_) + x20*derive_reduced_u_sym_taylor_select(pw10_, pw11_, pw9_));
+        o10[k] = p_alpha;
+        o11[k] = p_gamma;
+        o12[k] = -x12;
+        o13[k] = tvs1*x3;
+        o14[k] = u;
+        o15[k] = I1*x13;
+        o16[k] = I1*x14;
+        o17[k] = p_gamma;
+    }
+}
+
+
+/* Every angle of the samples (finite) within derive_reduced_u_sym_taylor_sincos_poly's range? TRIG_MAX - |x| has
+ * its sign bit set exactly when |x| > TRIG_MAX: one OR a value, a loop gcc vectorises. */
+static int derive_reduced_u_sym_taylor_trig_in_range(int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KB])
+{
+    uint64_t bits, acc = 0;
+    double d;
+    int k;
+    for (k = 0; k < nb; ++k) {
+        d = DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX - fabs(v[0][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+        d = DERIVE_REDUCED_U_SYM_TAYLOR_TRIG_MAX - fabs(v[2][k]);
+        memcpy(&bits, &d, sizeof bits);
+        acc |= bits;
+    }
+    return !(acc >> 63);
+}
+
+/* Every state of the nb samples in v finite? The bit test of reduced_u_sym_outputs_finite over the
+ * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+static int derive_reduced_u_sym_taylor_states_finite(int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KB])
+{
+    uint64_t bits, carry = 0;
+    int i, k;
+    for (i = 0; i < reduced_u_sym_NY; ++i)
+        for (k = 0; k < nb; ++k) {
+            memcpy(&bits, &v[i][k], sizeof bits);
+            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
+        }
+    return !(carry >> 63);
 }
 
 int reduced_u_sym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
@@ -472,11 +670,10 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
 {
     derive_stats local;
     double u[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], y[reduced_u_sym_NY];
-    double w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW], v[DERIVE_REDUCED_U_SYM_TAYLOR_NV];
+    double w[REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_NW];
     double vb[DERIVE_REDUCED_U_SYM_TAYLOR_NV][DERIVE_REDUCED_U_SYM_TAYLOR_KB], taub[DERIVE_REDUCED_U_SYM_TAYLOR_KB];
-    double o[18];
-    int series = 1, nb, kb;
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, chk;
+    int series = 1, nb, kb, bad;
+    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
     long k_out;
     int i, j, order, last;
 
@@ -499,7 +696,6 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
 
-    (void)o;  /* (used by the output map, in the kernel build) */
     (void)series;
     k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
@@ -533,19 +729,34 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
          * is singular nearer than any singularity of u: steps from u alone left alpha off).
          * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
          * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
+        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
+         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
+         * keeps n1 as fmax does; glibc's fmax is a call) */
         n1 = n2 = 0.0;
-        sc = rtol > 0.0 ? fmax(fabs(u[0][1]), floor_) : 1.0;  /* alpha: its rate's scale */
-        n1 = fmax(n1, fabs(u[0][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[0][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[1]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[1][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[1][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(u[2][1]), floor_) : 1.0;  /* gamma: its rate's scale */
-        n1 = fmax(n1, fabs(u[2][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[2][order]) / sc);
-        sc = rtol > 0.0 ? fmax(fabs(y[3]), floor_) : 1.0;
-        n1 = fmax(n1, fabs(u[3][order - 1]) / sc);
-        n2 = fmax(n2, fabs(u[3][order]) / sc);
+        sc = fabs(u[0][1]);  /* alpha: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[0][order - 1]) / sc;
+        a2 = fabs(u[0][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[1]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[1][order - 1]) / sc;
+        a2 = fabs(u[1][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(u[2][1]);  /* gamma: its rate's scale */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[2][order - 1]) / sc;
+        a2 = fabs(u[2][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
+        sc = fabs(y[3]);
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
+        a1 = fabs(u[3][order - 1]) / sc;
+        a2 = fabs(u[3][order]) / sc;
+        n1 = a1 > n1 ? a1 : n1;
+        n2 = a2 > n2 ? a2 : n2;
         /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
          * solution) give an infinite step. */
         h = derive_reduced_u_sym_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
@@ -571,24 +782,52 @@ static int derive_reduced_u_sym_taylor_solve_taylor(const double *y0, const doub
                 for (kb = nb; kb % 4; ++kb)
                     taub[kb] = 0.0;  /* (the block's Horner reads 4 at a time) */
                 derive_reduced_u_sym_taylor_horner_block(w, order, nb, taub, vb);
-                derive_reduced_u_sym_taylor_trig_block(nb, vb);
-                for (kb = 0; kb < nb; ++kb, ++k_out) {
-                    for (i = 0; i < DERIVE_REDUCED_U_SYM_TAYLOR_NV; ++i)
-                        v[i] = vb[i][kb];
-                    for (i = 0; i < reduced_u_sym_NY; ++i)
-                        if (!isfinite(v[i]))
-                            return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-                    memcpy(y_out + k_out * reduced_u_sym_NY, v, sizeof y);
-#ifdef DERIVE_REDUCED_U_SYM_SIMULATE
-                    if (!series) {  /* the output map on the state, as the other methods do */
-                        reduced_u_sym_observables(t_out[k_out], v, p, o);
-                        for (j = 0; j < 18; ++j)
-                            out[j * n_out + k_out] = o[j];
-                        continue;
+                /* the states into y_out, up to the first sample with a non-finite one (looked for
+                 * only when the block has one) */
+                kb = nb;
+                bad = reduced_u_sym_NY;
+                if (!derive_reduced_u_sym_taylor_states_finite(nb, vb))
+                    for (kb = 0; kb < nb; ++kb) {
+                        for (bad = 0; bad < reduced_u_sym_NY && isfinite(vb[bad][kb]); ++bad)
+                            ;
+                        if (bad < reduced_u_sym_NY)
+                            break;
                     }
+                for (j = 0; j < kb; ++j)
+                    for (i = 0; i < reduced_u_sym_NY; ++i)
+                        y_out[(k_out + j) * reduced_u_sym_NY + i] = vb[i][j];
+                /* the outputs of those samples */
+#ifdef DERIVE_REDUCED_U_SYM_SIMULATE
+                if (!series) {  /* the output map on the state, as the other methods do */
+                    double v[reduced_u_sym_NY], o[18];
+                    for (j = 0; j < kb; ++j) {
+                        for (i = 0; i < reduced_u_sym_NY; ++i)
+                            v[i] = vb[i][j];
+                        reduced_u_sym_observables(t_out[k_out + j], v, p, o);
+                        for (i = 0; i < 18; ++i)
+                            out[i * n_out + k_out + j] = o[i];
+                    }
+                } else
 #endif
-                    derive_reduced_u_sym_taylor_outputs_pointwise(t_out[k_out], v, p, out + k_out, n_out);
+                if (derive_reduced_u_sym_taylor_trig_in_range(kb, vb))
+                    derive_reduced_u_sym_taylor_outputs_block_trig(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
+                else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
+                    derive_reduced_u_sym_taylor_trig_block(kb, vb);
+                    derive_reduced_u_sym_taylor_outputs_block(kb, t_out + k_out, vb, p,
+                        out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
+                        out + k_out + 4 * n_out, out + k_out + 5 * n_out, out + k_out + 6 * n_out, out + k_out + 7 * n_out,
+                        out + k_out + 8 * n_out, out + k_out + 9 * n_out, out + k_out + 10 * n_out, out + k_out + 11 * n_out,
+                        out + k_out + 12 * n_out, out + k_out + 13 * n_out, out + k_out + 14 * n_out, out + k_out + 15 * n_out,
+                        out + k_out + 16 * n_out, out + k_out + 17 * n_out);
                 }
+                if (kb < nb)
+                    return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
+                k_out += nb;
             }
         }
         while (k_out < n_out && t_out[k_out] < tn) {
@@ -930,7 +1169,12 @@ static int derive_reduced_u_sym_taylor_lanes_last_taylor(double u[][REDUCED_U_SY
             return derive_reduced_u_sym_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
     memcpy(y, v, sizeof(double) * reduced_u_sym_NY);
     if (series)
-        derive_reduced_u_sym_taylor_outputs_pointwise(t_end, v, p, out, 1);
+        derive_reduced_u_sym_taylor_outputs_block(1, &t_end, vb, p,
+            out + 0, out + 1, out + 2, out + 3,
+            out + 4, out + 5, out + 6, out + 7,
+            out + 8, out + 9, out + 10, out + 11,
+            out + 12, out + 13, out + 14, out + 15,
+            out + 16, out + 17);
     else
         reduced_u_sym_observables(t_end, v, p, out);
     derive_reduced_u_sym_canonical_angles(1, out, out + 1, out + 2);
