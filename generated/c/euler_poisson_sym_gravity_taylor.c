@@ -182,7 +182,7 @@ static void derive_euler_poisson_sym_gravity_taylor_horner_block(double w[][DERI
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
  * the columns: derive_euler_poisson_sym_gravity_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
-static void derive_euler_poisson_sym_gravity_taylor_trig_block(int nb, double v[][DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_KB])
+static inline void derive_euler_poisson_sym_gravity_taylor_trig_block(int nb, double v[][DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_KB])
 {
     (void)nb;
     (void)v;

@@ -265,7 +265,7 @@ static inline void derive_heavy_top_taylor_sincos_poly(double x, double *s, doub
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
  * the columns: derive_heavy_top_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
-static void derive_heavy_top_taylor_trig_block(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
+static inline void derive_heavy_top_taylor_trig_block(int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KB])
 {
     int k;
     for (k = 0; k < nb; ++k)

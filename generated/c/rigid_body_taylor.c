@@ -260,7 +260,7 @@ static void derive_rigid_body_taylor_horner_block(double w[][DERIVE_RIGID_BODY_T
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
  * the columns: derive_rigid_body_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
-static void derive_rigid_body_taylor_trig_block(int nb, double v[][DERIVE_RIGID_BODY_TAYLOR_KB])
+static inline void derive_rigid_body_taylor_trig_block(int nb, double v[][DERIVE_RIGID_BODY_TAYLOR_KB])
 {
     (void)nb;
     (void)v;
