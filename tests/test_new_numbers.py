@@ -280,3 +280,28 @@ def test_a_batch_of_family_scenes_gives_each_its_own_numbers():
         one = derive.simulate(scene)
         assert np.array_equal(res.omega, one.omega) and np.array_equal(res.energy, one.energy)
     assert not np.array_equal(batch[0].energy, batch[1].energy)
+
+
+@pytest.mark.parametrize("method", ["dop853", "taylor"])
+def test_the_c_drivers_refuse_output_times_that_are_not_finite_and_increasing(method):
+    """The drivers' own check of the output times (``times_ok``: one branch-free pass,
+    increasing from a finite first to a finite last time): every bad kind is BAD_ARGS, the
+    good times run. Python checks them first, so these reach C only through the raw call."""
+    from derive.methods.status import Status
+
+    data = _short()
+    data["simulate"]["method"] = method
+    pl = plans.make(load_scene(data))
+    c = pl.candidates[0]
+    good = np.linspace(0.0, 1e-3, 40)
+    bad = {"nan inside": np.where(np.arange(40) == 17, np.nan, good),
+           "inf last": np.where(np.arange(40) == 39, np.inf, good),
+           "-inf first": np.where(np.arange(40) == 0, -np.inf, good),
+           "nan last": np.where(np.arange(40) == 39, np.nan, good),
+           "repeated": np.where(np.arange(40) == 21, good[20], good),
+           "decreasing": good[::-1].copy(),
+           "none": good[:0]}
+    assert c.kernel.bind(good, pl.inputs, c.args, c.pole_check)(c.params)[3] == 0
+    for name, t in bad.items():
+        status = c.kernel.bind(np.ascontiguousarray(t), pl.inputs, c.args, c.pole_check)(c.params)[3]
+        assert status == Status.BAD_ARGS, name
