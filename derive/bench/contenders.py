@@ -396,7 +396,10 @@ def solve_numbalsoda(prob: Problem, method: str, rtol: float, atol: float, setup
     from numbalsoda import dop853
 
     address, consts = setup or numbalsoda_setup(prob, method)
-    Y, ok = dop853(address, np.asarray(prob.y0, dtype=float), prob.t, data=consts, rtol=rtol, atol=atol)
+    # the step budget derive's scenes have by default (numbalsoda's own is 10 000: a long run
+    # would fail at every tolerance only for want of steps), as odeint gets above
+    Y, ok = dop853(address, np.asarray(prob.y0, dtype=float), prob.t, data=consts, rtol=rtol, atol=atol,
+                   mxstep=1_000_000)
     if not ok:
         raise IntegrationError("numbalsoda dop853: failed")
     return Y, 0
