@@ -184,15 +184,16 @@ except ImportError:  # pragma: no cover - the folder tests above still run
 @pytest.fixture(scope="module")
 def top_fmu(tmp_path_factory):
     """The reference top's FMU (dop853, heavy_top), built once for the tests below. The scene
-    names the Euler-angle formulation: auto would now take the cheaper reduced-u model, and
-    these tests are about the heavy_top's FMU (its states beta, beta_dot, ...)."""
+    names the Euler-angle formulation and DOP853: auto would now take the cheaper reduced-u
+    model and the Taylor method, and these tests are about the heavy_top's FMU (its states
+    beta, beta_dot, ...) with DOP853."""
     pytest.importorskip("fmpy")
     tmp = tmp_path_factory.mktemp("fmu")
     path = tmp / "top.fmu"
     text = (SCENES / "reference_top.toml").read_text(encoding="utf-8")
     scene = tmp / "reference_top.toml"
-    scene.write_text(text.replace("[simulate]", '[simulate]\nformulation = "euler-angles"', 1),
-                     encoding="utf-8")
+    pinned = '[simulate]\nformulation = "euler-angles"\nmethod = "dop853"'
+    scene.write_text(text.replace("[simulate]", pinned, 1), encoding="utf-8")
     assert "euler-angles" in scene.read_text(encoding="utf-8")
     assert main(["export", str(scene), "--fmu", str(path)]) == 0
     return path

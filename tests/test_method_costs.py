@@ -65,7 +65,8 @@ def test_a_sample_costs_the_output_map_and_a_share_of_its_horner_scheme():
     quiet = WORK._replace(samples=0)
     p = TAYLOR["taylor"].order(1e-10, 0)
     extra = costs.cost("taylor", WORK, 1e-10, 1e-12) - costs.cost("taylor", quiet, 1e-10, 1e-12)
-    assert extra == pytest.approx(WORK.samples * (costs.TAYLOR_SAMPLE * WORK.ny * p + WORK.output_cost))
-    assert 0 < costs.TAYLOR_SAMPLE <= 1
+    assert extra == pytest.approx(WORK.samples * (costs.TAYLOR_SAMPLE * WORK.ny * p
+                                                  + costs.TAYLOR_OUTPUT * WORK.output_cost))
+    assert 0 < costs.TAYLOR_SAMPLE <= 1 and 0 < costs.TAYLOR_OUTPUT <= 1
     extra_rk = costs.cost("dop853", WORK, 1e-10, 1e-12) - costs.cost("dop853", quiet, 1e-10, 1e-12)
     assert extra_rk == pytest.approx(WORK.samples * (7 * WORK.ny + WORK.output_cost))

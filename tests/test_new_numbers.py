@@ -208,15 +208,15 @@ def test_a_start_that_changes_auto_s_formulations_gets_its_own_plan():
 
 
 def test_a_start_that_changes_auto_s_method_gets_its_own_plan():
-    """A spin ten times faster makes the run ten times longer in radians: the cost model picks
-    DOP853 for it where the family's plan runs the Taylor method (many samples, rtol 1e-6);
-    the scene is planned anew, with make()'s method."""
+    """A spin a hundred times faster makes the run a hundred times longer in radians: the cost
+    model picks DOP853 for it where the family's plan runs the Taylor method (many samples,
+    rtol 1e-6); the scene is planned anew, with make()'s method."""
     plans.forget()
     data = reference_data(10.0)
     data["simulate"].update(samples=10001, rtol=1e-6, atol=1e-8)
     derive.simulate(data)
     assert plans._FAMILIES[plans._family(load_scene(data))].method == "taylor"
-    fast = dict(data, initial=dict(data["initial"], gamma_dot=60.0))
+    fast = dict(data, initial=dict(data["initial"], gamma_dot=600.0))
     pl = plans.recent(load_scene(fast))
     assert pl.near is None and pl.method == plans.make(load_scene(fast)).method == "dop853"
     _fields_equal(derive.simulate(fast), _fresh_run(fast))

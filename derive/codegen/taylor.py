@@ -112,6 +112,17 @@ def coef(op, n: str = "n") -> str:
     return _u(v, n) if kind == "u" else f"({n} == 0 ? {v} : 0.0)"
 
 
+def _is_time(s) -> bool:
+    """Whether ``s`` is the time: the symbol named ``t``, whatever its assumptions (a user
+    term's ``t`` is real, the built-in models' plain; the C printers name both ``t``)."""
+    return isinstance(s, sp.Symbol) and s.name == "t"
+
+
+def _times(exprs) -> set:
+    """The time symbols (:func:`_is_time`) of ``exprs``."""
+    return {s for e in exprs for s in sp.sympify(e).free_symbols if _is_time(s)}
+
+
 class _Builder:
     def __init__(self, spec: KernelSpec):
         m = spec.model
@@ -144,7 +155,7 @@ class _Builder:
     def is_const(self, e) -> bool:
         for s in e.free_symbols:
             op = self.ops.get(s)
-            if s == self.t or (op is not None and op[0] == "u"):
+            if _is_time(s) or (op is not None and op[0] == "u"):
                 return False
         return True
 
@@ -154,9 +165,10 @@ class _Builder:
         found = self.ops.get(e)
         if found is not None:
             return found
-        if e == self.t:
-            self.d.time_node = self.next
-            self.next += 1
+        if _is_time(e):  # one node, whichever symbol of the time
+            if self.d.time_node is None:
+                self.d.time_node = self.next
+                self.next += 1
             out = ("u", self.d.time_node)
         elif self.is_const(e):
             out = ("c", f"({c_expr(e)})")
@@ -369,7 +381,7 @@ def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
     m = spec.model
     _, exprs = _flatten_observables(m.outputs)
     exprs = [sp.sympify(e) for e in exprs]
-    states = set(m.states) | {b.t}
+    states = set(m.states) | {b.t} | _times(exprs)
     # A call of a state that feeds nothing back (cos γ of the spin) stays a libm call: the step
     # control holds such a state to its rate's size only, and over a step a fast angle turns by
     # radians, more than a series of the step's order resolves (measured: such columns failed
@@ -462,7 +474,7 @@ def series_safe(model, e) -> bool:
     log or atan2 argument: there the states' own series see the singularity). Anything else
     (an atan2 of the outputs alone, a square root the dynamics do not take, a piecewise term
     switching on the state) is evaluated pointwise from the evaluated state instead."""
-    states = set(model.states) | {sp.Symbol("t")}
+    states = set(model.states) | {sp.Symbol("t")} | _times([e, *model.rhs, *model.domain])
     keys = _singular_keys(sp.sympify(e), states)
     if keys is None:
         return False
@@ -666,9 +678,7 @@ def _pointwise(model, d: Decomposition) -> dict | None:
     if not d.pointwise:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
-    t = sp.Symbol("t")
-    uses_t = any(t in e.free_symbols for _, e in block.temps) or any(
-        t in e.free_symbols for e in block.outputs)
+    uses_t = bool(_times([e for _, e in block.temps] + list(block.outputs)))
     pr = _BlockPrinter(model.params, f"derive_{model.name}_taylor_")
     temps = []
     for name, e in block.temps:
