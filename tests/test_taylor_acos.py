@@ -11,17 +11,12 @@ driver (``-march=native``)."""
 from __future__ import annotations
 
 import math
-import os
-import subprocess
 
 import numpy as np
 import pytest
 
-from derive.codegen.render import ROOT
 from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS
-
-GEN = ROOT / "generated" / "c"
-PREFIX = "derive_reduced_u_sym_gravity_taylor_"
+from tests.bits_harness import PREFIX, compile_harness, run_bits, ulps
 
 HARNESS = r"""
 #include "reduced_u_sym_gravity.c"
@@ -63,20 +58,9 @@ int main(void)
 
 
 def _harness(tmp_path, flags, name):
-    src = tmp_path / f"{name}.c"
-    src.write_text(f"#define ACOS {PREFIX}acos_poly\n" + HARNESS)
-    exe = tmp_path / name
-    cc = os.environ.get("CC", "cc")
-    subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
-                    "-o", str(exe), "-lm"], check=True, capture_output=True, text=True)
-    return exe
+    return compile_harness(tmp_path, flags, name, f"#define ACOS {PREFIX}acos_poly\n" + HARNESS)
 
 
-def _run(exe, x: np.ndarray) -> np.ndarray:
-    text = "\n".join(f"{b:x}" for b in x.view(np.uint64))
-    out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
-                    dtype=np.uint64).view(np.float64)
 
 
 def _libm(x: np.ndarray) -> np.ndarray:
@@ -85,11 +69,6 @@ def _libm(x: np.ndarray) -> np.ndarray:
     return np.array([math.acos(z) if -1.0 <= z <= 1.0 else math.nan for z in x.tolist()])
 
 
-def _ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    def ordered(z):
-        i = z.view(np.int64).astype(np.int64)
-        return np.where(i < 0, np.int64(-(2 ** 63)) - i, i)
-    return np.abs(ordered(a) - ordered(b))
 
 
 EDGES = np.array([1.0, -1.0, 0.5, -0.5, 0.0, -0.0, np.nextafter(1.0, 0.0), np.nextafter(-1.0, 0.0),
@@ -109,9 +88,9 @@ def arguments():
 
 
 def test_acos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_path, arguments):
-    r = _run(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
+    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
     ref = _libm(arguments)
-    assert _ulps(r[:, 0], ref).max() <= 1
+    assert ulps(r[:, 0], ref).max() <= 1
     assert (r[:, 0] == ref).mean() > 0.9  # (94 %): a 1-ulp bound that is not a loose one
     np.testing.assert_array_equal(r[:, 0].view(np.uint64), r[:, 1].view(np.uint64))
 
@@ -122,7 +101,7 @@ def test_acos_at_the_edges_is_libm():
     import tempfile
     from pathlib import Path
     with tempfile.TemporaryDirectory() as tmp:
-        r = _run(_harness(Path(tmp), [*DEFAULT_FLAGS], "acos"), EDGES)
+        r = run_bits(_harness(Path(tmp), [*DEFAULT_FLAGS], "acos"), EDGES)
     np.testing.assert_array_equal(r[:, 0], _libm(EDGES))
     np.testing.assert_array_equal(r[:, 1], _libm(EDGES))
 
@@ -130,13 +109,13 @@ def test_acos_at_the_edges_is_libm():
 def test_acos_outside_its_domain_is_nan(tmp_path):
     x = np.array([np.nextafter(1.0, 2.0), np.nextafter(-1.0, -2.0), 1.5, -3.0, 1e300, -1e300,
                   np.inf, -np.inf, np.nan, -np.nan])
-    r = _run(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), x)
+    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), x)
     assert np.isnan(r).all()
 
 
 def test_acos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native; its last samples must be the
     scalar driver's to the bit."""
-    plain = _run(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
-    native = _run(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "acos_native"), arguments)
+    plain = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
+    native = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "acos_native"), arguments)
     np.testing.assert_array_equal(plain.view(np.uint64), native.view(np.uint64))

@@ -9,17 +9,12 @@ alone, inside a block, and in the build of the lanes driver (``-march=native``).
 from __future__ import annotations
 
 import math
-import os
-import subprocess
 
 import numpy as np
 import pytest
 
-from derive.codegen.render import ROOT
 from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS
-
-GEN = ROOT / "generated" / "c"
-PREFIX = "derive_reduced_u_sym_gravity_taylor_"
+from tests.bits_harness import PREFIX, compile_harness, run_bits, ulps
 
 HARNESS = r"""
 #include "reduced_u_sym_gravity.c"
@@ -64,23 +59,11 @@ int main(void)
 
 def _harness(tmp_path, flags, name):
     up = PREFIX.upper()
-    src = tmp_path / f"{name}.c"
-    src.write_text(
-        f"#define P_NV {up}NV\n#define P_KB {up}KB\n#define P_NW {up}NW\n"
-        f"#define TRIG_BLOCK {PREFIX}trig_block\n" + HARNESS)
-    exe = tmp_path / name
-    cc = os.environ.get("CC", "cc")
-    subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
-                    "-o", str(exe), "-lm"],
-                   check=True, capture_output=True, text=True)
-    return exe
+    return compile_harness(tmp_path, flags, name,
+                           f"#define P_NV {up}NV\n#define P_KB {up}KB\n#define P_NW {up}NW\n"
+                           f"#define TRIG_BLOCK {PREFIX}trig_block\n" + HARNESS)
 
 
-def _run(exe, x: np.ndarray) -> np.ndarray:
-    text = "\n".join(f"{b:x}" for b in x.view(np.uint64))
-    out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
-                    dtype=np.uint64).view(np.float64)
 
 
 def _libm(x: np.ndarray):
@@ -91,12 +74,6 @@ def _libm(x: np.ndarray):
             np.array([one(math.cos, z) for z in x.tolist()]))
 
 
-def _ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """The distance in units in the last place (doubles as ordered integers)."""
-    def ordered(z):
-        i = z.view(np.int64).astype(np.int64)
-        return np.where(i < 0, np.int64(-(2 ** 63)) - i, i)
-    return np.abs(ordered(a) - ordered(b))
 
 
 @pytest.fixture(scope="module")
@@ -112,9 +89,9 @@ def arguments():
 
 def test_sincos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_path, arguments):
     exe = _harness(tmp_path, [*DEFAULT_FLAGS], "trig")
-    r = _run(exe, arguments)
+    r = run_bits(exe, arguments)
     s, c = _libm(arguments)
-    assert _ulps(r[:, 0], s).max() <= 1 and _ulps(r[:, 1], c).max() <= 1
+    assert ulps(r[:, 0], s).max() <= 1 and ulps(r[:, 1], c).max() <= 1
     # equal to libm on all but a few per cent, so a 1-ulp bound is not a loose one
     assert (r[:, 0] == s).mean() > 0.95 and (r[:, 1] == c).mean() > 0.95
     np.testing.assert_array_equal(r[:, 0].view(np.uint64), r[:, 2].view(np.uint64))
@@ -123,7 +100,7 @@ def test_sincos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_p
 
 def test_sincos_beyond_its_range_is_libm(tmp_path):
     x = np.array([1e6, -1e6, 3e7, 1e300, -1e300, np.inf, -np.inf, np.nan])
-    r = _run(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), x)
+    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), x)
     s, c = _libm(x)
     np.testing.assert_array_equal(r[:, 0], s)
     np.testing.assert_array_equal(r[:, 1], c)
@@ -132,6 +109,6 @@ def test_sincos_beyond_its_range_is_libm(tmp_path):
 def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native: its last samples must be the
     scalar driver's to the bit, so the same arithmetic vectorised wider gives the same bits."""
-    plain = _run(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), arguments)
-    native = _run(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "trig_native"), arguments)
+    plain = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), arguments)
+    native = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "trig_native"), arguments)
     np.testing.assert_array_equal(plain.view(np.uint64), native.view(np.uint64))

@@ -1,0 +1,43 @@
+"""What the tests of the Taylor solver's own arithmetic share (tests/test_taylor_trig.py,
+tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver, its
+doubles passed both ways as their bits in hex (no decimal rounding), and the distance of two
+results in units in the last place."""
+from __future__ import annotations
+
+import os
+import subprocess
+
+import numpy as np
+
+from derive.codegen.render import ROOT
+
+GEN = ROOT / "generated" / "c"
+PREFIX = "derive_reduced_u_sym_gravity_taylor_"
+
+
+def compile_harness(tmp_path, flags, name: str, text: str):
+    """The executable of the C program ``text`` (it includes the generated solver from GEN),
+    built with ``flags`` and the Taylor method selected."""
+    src = tmp_path / f"{name}.c"
+    src.write_text(text)
+    exe = tmp_path / name
+    cc = os.environ.get("CC", "cc")
+    subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
+                    "-o", str(exe), "-lm"], check=True, capture_output=True, text=True)
+    return exe
+
+
+def run_bits(exe, x: np.ndarray) -> np.ndarray:
+    """The harness's rows of doubles for the arguments ``x``, bits in and bits out."""
+    text = "\n".join(f"{b:x}" for b in x.view(np.uint64))
+    out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
+    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
+                    dtype=np.uint64).view(np.float64)
+
+
+def ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The distance in units in the last place (doubles as ordered integers)."""
+    def ordered(z):
+        i = z.view(np.int64).astype(np.int64)
+        return np.where(i < 0, np.int64(-(2 ** 63)) - i, i)
+    return np.abs(ordered(a) - ordered(b))
