@@ -23,13 +23,11 @@ import pytest
 import sympy as sp
 
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec
-from derive.codegen.render import ROOT
 from derive.codegen.sources import shipped_keys
 from derive.codegen.taylor import _pointwise, decompose
 from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS
 from derive.symbolic.models import build
-
-GEN = ROOT / "generated" / "c"
+from tests.bits_harness import GEN, compile_harness, run_bits
 
 
 class _RefPrinter(CPrinter):
@@ -136,8 +134,7 @@ def _harness(tmp_path, name, flags, model, d):
     up = prefix.upper()
     nobs = len(d.pointwise)
     rows = ", ".join(f"(o)[{j}]" for j in range(nobs))
-    src = tmp_path / f"{name}.c"
-    src.write_text(
+    return compile_harness(tmp_path, flags, name,
         f'#include "{m}.c"\n#include "{m}_solvers.c"\n#include "{m}_taylor.c"\n'
         f"#define NV {up}NV\n#define KB {up}KB\n#define NP {m}_NP\n#define NOBS {nobs}\n"
         f"#define BLOCK(nb, tb, v, p, o) {prefix}outputs_block(nb, tb, v, p, {rows})\n"
@@ -145,11 +142,6 @@ def _harness(tmp_path, name, flags, model, d):
            f"#define BLOCK_TRIG(nb, tb, v, p, o) {prefix}outputs_block_trig(nb, tb, v, p, {rows})\n"
            if d.trig else "")
         + _reference(model, d, prefix) + HARNESS)
-    exe = tmp_path / name
-    cc = os.environ.get("CC", "cc")
-    subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
-                    "-o", str(exe), "-lm"], check=True, capture_output=True, text=True)
-    return exe
 
 
 def _inputs(model, d, rng, n=400):
@@ -173,11 +165,9 @@ def _inputs(model, d, rng, n=400):
 
 
 def _run(exe, p, samples) -> np.ndarray:
+    """The harness's rows as bits (the parameters, the count, then the samples in)."""
     vals = list(p) + [float(len(samples))] + list(samples.ravel())
-    text = "\n".join(f"{b:x}" for b in np.array(vals).view(np.uint64))
-    out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
-                    dtype=np.uint64)
+    return run_bits(exe, np.array(vals)).view(np.uint64)
 
 
 def _same(a: np.ndarray, b: np.ndarray) -> np.ndarray:

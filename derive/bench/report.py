@@ -473,7 +473,7 @@ def splitting_section(results: dict) -> list[str]:
             cells.append("not reached" if not v else f"{_t(v['seconds'])} (error {v['error']:.1e})")
         ratio = r.get("ratio_dop853")
         L.append(f"| {r['case']} | {r['measure']} | {r['periods']:g} | {r['target']:g} | "
-                 + " | ".join(cells) + f" | {'—' if ratio is None else f'{ratio:.3g}×'} |")
+                 + " | ".join(cells) + f" | {_x(ratio)} |")
     L.append("")
     return L
 

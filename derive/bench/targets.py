@@ -162,8 +162,6 @@ def reference_scene(cfg, fams) -> dict:
     # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
     scipy_rtol = rows[0]["rtol"]
     odeint = next(r for r in rows if r["method"] == "scipy-odeint")
-    for r in rows:  # (the report's rows read these)
-        r.setdefault("ours_paired", None)
     t_np, res_np = B.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
                                                    atol=B.ATOL_RATIO * scipy_rtol), 1)
     rows.append({"family": "scipy-numpy", "method": "scipy-dop853",

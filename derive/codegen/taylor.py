@@ -114,7 +114,8 @@ def coef(op, n: str = "n") -> str:
 
 def _is_time(s) -> bool:
     """Whether ``s`` is the time: the symbol named ``t``, whatever its assumptions (a user
-    term's ``t`` is real, the built-in models' plain; the C printers name both ``t``)."""
+    term's ``t`` is real, the built-in models' plain; the C printers name both ``t``, and
+    :meth:`derive.codegen.kernelspec.Block.uses_time` asks by the name too)."""
     return isinstance(s, sp.Symbol) and s.name == "t"
 
 
@@ -129,7 +130,6 @@ class _Builder:
         self.d = Decomposition(ny=len(m.states))
         self.ops: dict = {s: ("u", i) for i, s in enumerate(m.states)}  # memo: expr -> operand
         self.params = set(m.params)
-        self.t = sp.Symbol("t")
         self.next = self.d.ny
         self.const_series: dict = {}
         self.obs_phase = False
@@ -381,7 +381,7 @@ def _add_outputs(b: _Builder, spec: KernelSpec) -> None:
     m = spec.model
     _, exprs = _flatten_observables(m.outputs)
     exprs = [sp.sympify(e) for e in exprs]
-    states = set(m.states) | {b.t} | _times(exprs)
+    states = set(m.states) | _times(exprs)
     # A call of a state that feeds nothing back (cos γ of the spin) stays a libm call: the step
     # control holds such a state to its rate's size only, and over a step a fast angle turns by
     # radians, more than a series of the step's order resolves (measured: such columns failed
@@ -474,7 +474,7 @@ def series_safe(model, e) -> bool:
     log or atan2 argument: there the states' own series see the singularity). Anything else
     (an atan2 of the outputs alone, a square root the dynamics do not take, a piecewise term
     switching on the state) is evaluated pointwise from the evaluated state instead."""
-    states = set(model.states) | {sp.Symbol("t")} | _times([e, *model.rhs, *model.domain])
+    states = set(model.states) | _times([e, *model.rhs, *model.domain])
     keys = _singular_keys(sp.sympify(e), states)
     if keys is None:
         return False
@@ -678,7 +678,7 @@ def _pointwise(model, d: Decomposition) -> dict | None:
     if not d.pointwise:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
-    uses_t = bool(_times([e for _, e in block.temps] + list(block.outputs)))
+    uses_t = block.uses_time()
     pr = _BlockPrinter(model.params, f"derive_{model.name}_taylor_")
     temps = []
     for name, e in block.temps:

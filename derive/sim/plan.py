@@ -53,55 +53,53 @@ class Candidate:
 
     @functools.cached_property
     def kernel(self) -> ModelKernel:
-        near = self._like()
-        if near is not None:
-            return near.kernel
+        if self.adopt():
+            return self.__dict__["kernel"]
         # a SciPy reference takes the init and output maps from the default method's library
         return ModelKernel.load(self.desc, self.method if self.method not in SCIPY_METHODS
                                 else DEFAULT_METHOD)
 
     @functools.cached_property
     def params(self) -> np.ndarray:
-        near = self.__dict__.get("_near")
-        if near is not None and same_numbers(self.scene, near.scene):
-            return near.params  # (a run copies it into its buffer: shared, never written)
         return params_of(self.scene, self.desc)
 
     @functools.cached_property
     def args(self) -> list:
-        near = self._like()
-        if near is not None and near.kernel.adaptive:  # an adaptive run's: the settings alone
-            return near.args
+        if self.adopt() and "args" in self.__dict__:
+            return self.__dict__["args"]
         return _settings(self.scene, self.method, self.kernel)
 
-    def sibling(self, scene: Scene) -> "Candidate":
+    def sibling(self, scene: Scene, same: bool) -> "Candidate":
         """This candidate for ``scene``, a scene of the same family (:func:`_family`: the same
-        settings, model and source; other numbers): its method is worked out for ``scene``,
-        and where it is this one's, the kernel, the adaptive driver arguments and the bound C
-        call are this one's (a run passes its own inputs)."""
+        settings, model and source; other numbers). Its parameters are this one's where the
+        scene has the very same body and effect values (``same``:
+        :func:`derive.sim.scene.same_numbers`; a run copies them into its buffer: shared, never
+        written); its method is worked out for
+        ``scene``, and where it is this one's the rest is shared too (:meth:`adopt`)."""
         other = Candidate(scene, self.given, self.desc, self.pole_check)
         other.__dict__["_near"] = self
+        if same:
+            other.__dict__["params"] = self.params
         return other
 
-    def adopt(self) -> None:
-        """Take what this sibling shares with its near candidate now (both run the same method):
-        the kernel, the driver arguments of an adaptive method, the parameters of the same
-        numbers and the bound call, set straight into the instance (what the properties would
-        give, without their first-access cost)."""
-        near, d = self.__dict__["_near"], self.__dict__
-        d["kernel"] = kernel = near.kernel
-        if kernel.adaptive:
-            d["args"] = near.args
-            b = near.__dict__.get("_bound")
-            if b is not None:
-                d["_bound"] = b
-        if same_numbers(self.scene, near.scene):
-            d["params"] = near.params
-
-    def _like(self) -> "Candidate | None":
-        """The candidate this one is a sibling of, when it runs the same method (else None)."""
-        near = self.__dict__.get("_near")
-        return near if near is not None and near.method == self.method else None
+    def adopt(self) -> bool:
+        """Whether this candidate is a sibling running its near candidate's method; if so, take
+        what they share (once), set straight into the instance: the kernel, and for an adaptive
+        method (its driver arguments are the settings alone) the driver arguments and the bound
+        C call, bound to the near plan's inputs (a run passes its own: ``BoundRun.inputs`` tells
+        which were bound). The one place these rules live: the properties ask it first."""
+        d = self.__dict__
+        near = d.get("_near")
+        if near is None or near.method != self.method:
+            return False
+        if "kernel" not in d:
+            d["kernel"] = kernel = near.kernel
+            if kernel.adaptive:
+                d["args"] = near.args
+                b = near.__dict__.get("_bound")
+                if b is not None:
+                    d["_bound"] = b
+        return True
 
     @functools.cached_property
     def pole_loss(self) -> bool:
@@ -111,15 +109,12 @@ class Candidate:
     def bound(self, t: np.ndarray, inputs: np.ndarray) -> BoundRun:
         """The kernel's C call bound to the plan's output times and inputs (made on first use,
         then kept: a candidate belongs to one plan, whose ``t`` and ``inputs`` do not change).
-        A sibling (:meth:`sibling`) takes its near candidate's bound call, bound to that plan's
-        inputs: its run passes its own (``BoundRun.inputs`` tells which were bound)."""
+        A sibling takes its near candidate's (:meth:`adopt`)."""
         b = self.__dict__.get("_bound")
+        if b is None and self.adopt():
+            b = self.__dict__.get("_bound")
         if b is None:
-            near = self._like()
-            made = near.__dict__.get("_bound") if near is not None and near.args is self.args else None
-            if made is not None and made.t is not t:
-                made = None
-            b = self.__dict__["_bound"] = made or self.kernel.bind(t, inputs, self.args, self.pole_check)
+            b = self.__dict__["_bound"] = self.kernel.bind(t, inputs, self.args, self.pole_check)
         return b
 
 
@@ -274,11 +269,12 @@ def sibling(near: Plan, scene: Scene) -> Plan | None:
     if len(steps) != len(near.candidates) or any(
             c.desc.formulation != name or c.pole_check != mode for c, (name, mode) in zip(near.candidates, steps)):
         return None
-    candidates = tuple(c.sibling(scene) for c in near.candidates)
+    same = same_numbers(scene, near.scene)
+    candidates = tuple(c.sibling(scene, same) for c in near.candidates)
     if candidates:
         if candidates[0].method != near.candidates[0].method:
             return None
-        candidates[0].adopt()  # (the others on first use: a fallback rarely runs)
+        candidates[0].adopt()  # now (the others on first use: a fallback rarely runs)
     # the same settings (the family's): the same output times, and the bound calls keep near's
     return Plan(scene, candidates[0].method if candidates else method, near.t, inputs_of(scene), candidates,
                 near, near.generation)

@@ -712,7 +712,7 @@ def run_chunk(key, method, inputs, ps, t, args, config, integral=None, terms=(),
 def _chunks(idx: np.ndarray, parallel: int) -> list:
     """The points ``idx`` in chunks of at most CHUNK, about four per worker of ``parallel``
     (0: no workers, the calling process runs them: chunks of CHUNK)."""
-    size = CHUNK if parallel <= 0 else max(1, min(CHUNK, math.ceil(idx.size / (4 * parallel))))
+    size = max(1, min(CHUNK, math.ceil(idx.size / max(1, 4 * parallel))))
     return [idx[i:i + size] for i in range(0, idx.size, size)]
 
 

@@ -139,7 +139,8 @@ static int derive_euler_poisson_asym_taylor_outputs_converged(double w[][DERIVE_
     double sc;
     int j;
     for (j = euler_poisson_asym_NY; j < DERIVE_EULER_POISSON_ASYM_TAYLOR_NW; ++j) {
-        sc = rtol > 0.0 ? fmax(fabs(w[0][j]), floor_) : 1.0;
+        sc = fabs(w[0][j]);  /* (as fmax(sc, floor_), a comparison: glibc's fmax is a call) */
+        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
         if (!(fabs(w[order - 1][j]) * r1 <= sc && fabs(w[order][j]) * r2 <= sc))
             return 0;
     }

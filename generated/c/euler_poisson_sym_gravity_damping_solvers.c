@@ -100,6 +100,19 @@ static int derive_euler_poisson_sym_gravity_damping_fail_rc(derive_stats *st, do
     return derive_euler_poisson_sym_gravity_damping_fail(st, DERIVE_DOMAIN, t, -1);
 }
 
+/* fmax and fmin as C99 defines them (a NaN argument gives the other one), taken inline: gcc
+ * calls libm's for these (its maxsd and minsd differ for a NaN), several times a step (the
+ * adaptive step control, the error norm; the measures' accumulators: measures.c.j2). */
+static inline double derive_euler_poisson_sym_gravity_damping_max(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
+static inline double derive_euler_poisson_sym_gravity_damping_min(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
 static int derive_euler_poisson_sym_gravity_damping_first_nonfinite(const double *v, int n)
 {
     int i;
@@ -341,18 +354,6 @@ static int derive_euler_poisson_sym_gravity_damping_fixed_args_ok(const double *
 }
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
-
-/* fmax and fmin as C99 defines them (a NaN argument gives the other one), taken inline: gcc
- * calls libm's for these (its maxsd and minsd differ for a NaN), several times a step. */
-static double derive_euler_poisson_sym_gravity_damping_max(double a, double b)
-{
-    return a > b || b != b ? a : b;
-}
-
-static double derive_euler_poisson_sym_gravity_damping_min(double a, double b)
-{
-    return a < b || b != b ? a : b;
-}
 
 /* Initial step size, Hairer's HINIT (dop853.f; Hairer, Nørsett & Wanner, Solving ODEs I,
  * II.4): h such that h^iord * max(|f0|, |f'|) = 0.01 in the tolerance-weighted norm. */
