@@ -5,6 +5,7 @@ import ctypes
 import hashlib
 import io
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -266,7 +267,10 @@ def test_a_native_build_is_keyed_by_this_cpu(monkeypatch):
     native = list(cbuild.DEFAULT_FLAGS) + list(cbuild.NATIVE_FLAGS)
     plain = list(cbuild.DEFAULT_FLAGS)
     here = cbuild._key(sources, ["tiny.c"], cmd, native)
-    assert "#define __" in cbuild._native_identity(tuple(cmd))
+    identity = cbuild._native_identity(tuple(cmd))
+    assert identity and identity != "?"
+    if os.path.exists("/proc/cpuinfo"):  # Linux: the CPU as the kernel reports it (no compiler run)
+        assert any(line.startswith(("flags", "Features")) for line in identity.splitlines())
     keys = {}
     for cpu in ("#define __AVX512F__ 1", "#define __SSE2__ 1"):
         monkeypatch.setattr(cbuild, "_native_identity", lambda cmd, cpu=cpu: cpu)
@@ -274,3 +278,29 @@ def test_a_native_build_is_keyed_by_this_cpu(monkeypatch):
     (a, a_plain), (b, b_plain) = keys.values()
     assert len({a, b, here}) == 3
     assert a_plain == b_plain
+
+
+def test_a_compiler_without_march_native_gets_the_baseline_build(cache, tmp_path, monkeypatch):
+    """The vector and lanes builds ask for -march=native; a compiler that refuses it (older clang
+    on Arm) gets the same build for the architecture's baseline, and is not asked again."""
+    real = shutil.which("cc") or shutil.which("gcc")
+    log = tmp_path / "calls"
+    wrapper = tmp_path / "cc-no-native"
+    wrapper.write_text("#!/bin/sh\n"
+                       f'echo "$*" >> "{log}"\n'
+                       'for a in "$@"; do [ "$a" = "-march=native" ] && '
+                       '{ echo "error: unsupported option -march=native" >&2; exit 1; }; done\n'
+                       f'exec "{real}" "$@"\n')
+    wrapper.chmod(0o755)
+    monkeypatch.setenv("CC", str(wrapper))
+    monkeypatch.setattr(cbuild, "_native_refused", set())
+    flags = [*cbuild.DEFAULT_FLAGS, *cbuild.BUILDS["vector"]]
+    lib = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c", flags)
+    assert lib.tiny_answer() == 42
+    assert (str(wrapper),) in cbuild._native_refused
+    builds = [line for line in log.read_text().splitlines() if "tiny.c" in line]
+    assert sum("-march=native" in line for line in builds) == 1  # the refused try, then without
+    lib2 = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c", flags)
+    assert lib2.tiny_answer() == 42
+    builds = [line for line in log.read_text().splitlines() if "tiny.c" in line]
+    assert sum("-march=native" in line for line in builds) == 1  # not asked again

@@ -28,12 +28,13 @@ def scenes(n, seed=3, **simulate):
 
 
 def kernels(sc, formulation):
-    """(plan, description, scalar kernel (default flags), native kernel, driver arguments,
+    """(plan, description, scalar kernel (the portable build), lanes kernel, driver arguments,
     pole check) of a batch of scenes."""
     bp = simulation.batch_plan(sc)
-    desc, scalar, args = bp.kernel(formulation)
+    desc, _, args = bp.kernel(formulation)
     pole = dict(bp.candidates).get(formulation, 0)
-    return bp, desc, scalar, ModelKernel.load(desc, bp.method, native=True), args, pole
+    return (bp, desc, ModelKernel.load(desc, bp.method, "portable"), ModelKernel.load(desc, bp.method, "lanes"),
+            args, pole)
 
 
 def same(a, b):
@@ -242,7 +243,7 @@ def test_the_width_is_the_cpus():
 
     sc = scenes(2, formulation="reduced-u")
     _, _, scalar, native, _, _ = kernels(sc, "reduced-u")
-    macros = cbuild._native_identity(tuple(cbuild.compiler()))
+    macros = cbuild.native_macros(tuple(cbuild.compiler()))
     want = 8 if "__AVX512F__" in macros else 4 if "__AVX__" in macros else 2
     assert native.lanes == want
     assert scalar.lanes <= native.lanes
@@ -256,7 +257,7 @@ def test_the_avx2_width_is_bit_for_bit_too(formulation):
     gcc's straight-line vectoriser once fused one)."""
     from derive.runtime import cbuild
 
-    if "__AVX2__" not in cbuild._native_identity(tuple(cbuild.compiler())):
+    if "__AVX2__" not in cbuild.native_macros(tuple(cbuild.compiler())):
         pytest.skip("this CPU has no AVX2")
     sc = scenes(11, formulation=formulation)
     bp, desc, scalar, _, args, pole = kernels(sc, formulation)
@@ -266,3 +267,24 @@ def test_the_avx2_width_is_bit_for_bit_too(formulation):
     ps = bp.params(desc)
     same(scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole),
          avx2.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+
+
+@pytest.mark.parametrize("formulation", ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"])
+def test_the_vector_build_is_the_portable_one_bit_for_bit(formulation):
+    """A Taylor method's single runs use the vector build (this CPU's width for the output map
+    over a step's block of samples); every sample's outputs, the states, the parameters and the
+    statistics are the portable build's bit for bit (samples many to a step: blocks of 16)."""
+    sc = scenes(6, samples=401, formulation=formulation)
+    bp = simulation.batch_plan(sc)
+    desc, kernel, args = bp.kernel(formulation)
+    pole = dict(bp.candidates).get(formulation, 0)
+    vector = ModelKernel.load(desc, bp.method, "vector")
+    assert kernel is vector  # the build a Taylor method's plan runs in
+    portable = ModelKernel.load(desc, bp.method, "portable")
+    ps = bp.params(desc)
+    got = vector.simulate_batch(bp.inputs, ps, bp.t, args, pole)
+    want = portable.simulate_batch(bp.inputs, ps, bp.t, args, pole)
+    same(want, got)
+    for i in range(len(sc)):  # and one at a time (the prepared run's call)
+        one = vector.simulate(bp.inputs[i], ps[i], bp.t, args, pole)
+        np.testing.assert_array_equal(one[0].view(np.uint64), want[0][i].view(np.uint64))

@@ -150,6 +150,14 @@ def measure_window(name: str) -> str | None:
     return getattr(compiled_methods()[name], "measure_window", None)
 
 
+def build(name: str | None) -> str:
+    """The library build the compiled method ``name`` runs in, as its family declares it
+    (:data:`derive.runtime.cbuild.BUILDS`): ``"vector"`` (this CPU's vector width, the same
+    numbers: the Taylor methods, whose output map over a step's samples vectorises) or
+    ``"portable"`` (the others, and the model's own library: ``name`` None)."""
+    return "portable" if name is None else getattr(compiled_methods()[name], "build", "portable")
+
+
 def method_reason(name: str, formulation: str, effects) -> str | None:
     """None if the compiled method ``name`` can run that formulation with those effects, else
     why not ("auto" as the formulation: can any formulation)."""

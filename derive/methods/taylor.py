@@ -55,6 +55,9 @@ class TaylorMethod:
     max_order: int = 30
     safety: float = 0.7
     driver: str = "taylor"
+    #: The library build its drivers run in (:data:`derive.runtime.cbuild.BUILDS`): this CPU's
+    #: vector width, for the output map over a step's block of samples (same numbers).
+    build: str = "vector"
 
     def __post_init__(self):
         if not 2 <= self.min_order <= self.max_order:

@@ -65,15 +65,28 @@ STRICT_FLAGS: tuple[str, ...] = ("-std=c99", "-Wall", "-Wextra", "-Werror", "-pe
 SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-pointer",
                                    "-fsanitize=address,undefined",
                                    "-fno-sanitize-recover=undefined")
-# The lanes drivers' extra flags (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the
-# vector width of this machine. Such a library runs only on the CPU it was built for, so its key
-# also holds that CPU's identity (:func:`_native_identity`). Its numbers must be the default
-# build's bit for bit: no fused multiply-add. ISO C mode contracts nothing, but gcc 12's
-# straight-line (SLP) vectoriser still fuses a pair a*b - c, a*b + c into one vfmaddsub (seen in
-# rigid_body_init with AVX-512, also under -ffp-contract=off and -mno-fma): it is turned off; the
-# lanes are loops, vectorised by the loop vectoriser.
-NATIVE_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize",
-                                 "--param=max-completely-peel-times=1", "-DDERIVE_LANES")
+# The vector build: this CPU's vector width (-march=native) for the scalar drivers' loops over
+# samples (a Taylor step's output map over a block of samples takes 4 or 8 at a time where the
+# portable build's SSE2 takes 2: the reference run at rtol 1e-8, 68.6 -> 55.6 us here). Such a
+# library runs only on the CPU it was built for, so its key also holds that CPU's identity
+# (:func:`_native_identity`). Its numbers must be the portable build's bit for bit: no fused
+# multiply-add. ISO C mode contracts nothing, but gcc 12's straight-line (SLP) vectoriser still
+# fuses a pair a*b - c, a*b + c into one vfmaddsub (seen in rigid_body_init with AVX-512, also
+# under -ffp-contract=off and -mno-fma): it is turned off; the loops are vectorised by the loop
+# vectoriser.
+VECTOR_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize")
+# The lanes build (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the vector build with
+# the lanes compiled in, and no complete peeling of small loops: peeled, the lanes' loops over W
+# become straight lines the loop vectoriser never sees (the reference batch 7.5 -> 17.4 us per
+# trajectory). The scalar drivers want the peeling (their loops over 4 states or 4 samples:
+# 55.6 -> 80 us for the reference run without it), hence two builds.
+NATIVE_FLAGS: tuple[str, ...] = VECTOR_FLAGS + ("--param=max-completely-peel-times=1", "-DDERIVE_LANES")
+#: The builds of a library: name -> the flags each adds to DEFAULT_FLAGS. ``portable`` runs on
+#: any CPU of the architecture; ``vector`` and ``lanes`` (above) on this one, with the same
+#: numbers. A compiler that refuses -march=native gets them without it (:func:`compile_library`).
+BUILDS: dict[str, tuple[str, ...]] = {"portable": (), "vector": VECTOR_FLAGS, "lanes": NATIVE_FLAGS}
+_NATIVE = "-march=native"
+_native_refused: set[tuple[str, ...]] = set()  # the compilers that failed a build with it
 STDERR_LINES = 20
 STALE_BUILD_SECONDS = 600  # a build folder this old belongs to a compile that was killed
 CHECKSUM = ".sha256"       # sidecar suffix: <library>.so.sha256
@@ -269,20 +282,44 @@ def _compiler_identity(cmd: tuple[str, ...]) -> str:
 
 @functools.lru_cache(maxsize=None)
 def _native_identity(cmd: tuple[str, ...]) -> str:
-    """What ``-march=native`` means here: the target macros the compiler defines with it (the
-    instruction sets), so a cache shared by machines of other CPUs never loads a library built
-    for another."""
+    """What ``-march=native`` means here, so a cache shared by machines of other CPUs never loads
+    a library built for another: the CPU's model and instruction sets as Linux reports them
+    (the first processor of ``/proc/cpuinfo``: what the compiler reads, by cpuid, to resolve
+    the flag; the compiler itself is keyed by its ``--version``), or else the target macros the
+    compiler defines with the flag (a preprocessor run: 40 ms, which the first simulation of
+    every process would pay)."""
     try:
-        out = subprocess.run([*cmd, "-march=native", "-dM", "-E", "-x", "c", os.devnull],
+        with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as f:
+            first = f.read(1 << 16).split("\n\n", 1)[0]
+    except OSError:
+        first = ""
+    keep = [line for line in first.splitlines()
+            if line.split(":", 1)[0].strip() in _CPU_FIELDS]
+    return "\n".join(keep) if keep else native_macros(cmd)
+
+
+@functools.lru_cache(maxsize=None)
+def native_macros(cmd: tuple[str, ...]) -> str:
+    """The target macros the compiler ``cmd`` defines with ``-march=native`` (``#define
+    __AVX2__ 1``, ...; sorted lines), "?" when it cannot be run."""
+    try:
+        out = subprocess.run([*cmd, _NATIVE, "-dM", "-E", "-x", "c", os.devnull],
                              capture_output=True, text=True)
     except OSError:
         return "?"
     return "\n".join(sorted(line for line in out.stdout.splitlines() if line.startswith("#define __")))
 
 
+# The fields of /proc/cpuinfo that name a CPU (x86: vendor, family, model, flags; Arm: the
+# implementer, part and features).
+_CPU_FIELDS = frozenset({"vendor_id", "cpu family", "model", "model name", "stepping", "flags",
+                         "CPU implementer", "CPU architecture", "CPU variant", "CPU part",
+                         "CPU revision", "Features", "isa", "uarch"})
+
+
 def _key(sources: dict[str, str], main: list[str], cmd: list[str], flags: list[str]) -> str:
     h = hashlib.sha256()
-    native = [_native_identity(tuple(cmd))] if "-march=native" in flags else []
+    native = [_native_identity(tuple(cmd))] if _NATIVE in flags else []
     for part in (cmd, flags, main, [_compiler_identity(tuple(cmd))], *([native] if native else [])):
         h.update(repr(part).encode())
     for name in sorted(sources):
@@ -328,6 +365,8 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
     (see :func:`cache_dir`) and in-process: a second call with the same inputs returns the same
     :class:`ctypes.CDLL` without running the compiler. Raises :class:`CompilerError` if there is
     no working compiler or the code does not compile (with the first lines of its stderr).
+    ``flags`` with ``-march=native`` (:data:`BUILDS`) that the compiler fails are retried
+    without it, and the flag is left out of this compiler's builds for the rest of the process.
     """
     if not name.isidentifier():
         raise ValueError(f"library name {name!r} must be an identifier")
@@ -337,13 +376,24 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
     mains = _mains(main, sources)
     cmd = compiler()
     flags = list(flags)
+    if _NATIVE in flags and tuple(cmd) in _native_refused:
+        flags.remove(_NATIVE)
     key = _key(sources, mains, cmd, flags)
     with _lock:
         lib = _loaded.get(key)
-        if lib is None:
-            lib = _load_or_build(f"{name}-{key[:24]}.so", key, name, sources, mains, cmd, flags)
-            _loaded[key] = lib
-        return lib
+        if lib is not None:
+            return lib
+        try:
+            lib = _loaded[key] = _load_or_build(f"{name}-{key[:24]}.so", key, name, sources, mains,
+                                                cmd, flags)
+            return lib
+        except CompilerError:
+            if _NATIVE not in flags:
+                raise
+            # a compiler that knows no -march=native (older clang on Arm): the same build for
+            # the architecture's baseline, the same numbers (see VECTOR_FLAGS)
+            _native_refused.add(tuple(cmd))
+    return compile_library(name, sources, main, flags)
 
 
 def _sha256(path: Path) -> str:

@@ -22,9 +22,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS, compile_library
+from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
 from derive.errors import IntegrationError
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
+from derive.methods.registry import build as method_build
 from derive.codegen.solvers import render_solvers
 from derive.methods.registry import method as compiled_method
 from derive.methods.status import Status
@@ -427,11 +428,14 @@ class ModelKernel:
         return fn
 
     @classmethod
-    def load(cls, desc, method: str | None, native: bool = False) -> "ModelKernel":
-        """Compiled once per machine (the cache), loaded once per process. ``native``: built
-        for this CPU's vector width (``-march=native``), for the lanes driver of a Taylor method
-        (:meth:`simulate_lanes_batch`); the scalar drivers give the same numbers either way."""
-        key = (desc.folder, desc.name, method, native)
+    def load(cls, desc, method: str | None, build: str | None = None) -> "ModelKernel":
+        """Compiled once per machine (the cache), loaded once per process. ``build``
+        (:data:`derive.runtime.cbuild.BUILDS`): ``"lanes"`` for the lanes driver of a Taylor
+        method (:meth:`simulate_lanes_batch`), ``"portable"`` for the baseline build; by
+        default the method's own (:func:`derive.methods.registry.build`). The scalar drivers
+        give the same numbers in every build."""
+        build = build or method_build(method)
+        key = (desc.folder, desc.name, method, build)
         kernel = cls._cache.get(key)
         if kernel is None:
             sources = desc.c_sources()
@@ -443,11 +447,11 @@ class ModelKernel:
                 if f"{desc.name}_{family}.c" not in sources:  # (interrupt flag, drivers)
                     raise ValueError(f"method {method!r} was not generated for the model {desc.name}")
             sources[unity] = "".join(f'#include "{n}"\n' for n in includes)
-            flags = list(DEFAULT_FLAGS) + (list(NATIVE_FLAGS) if native else [])
+            flags = list(DEFAULT_FLAGS) + list(BUILDS[build])
             if method is not None:
                 flags += ["-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}"]
-            lib = compile_library(f"{desc.name}_{method or 'model'}{'_native' if native else ''}", sources,
-                                  unity, flags)
+            lib = compile_library(f"{desc.name}_{method or 'model'}{'' if build == 'portable' else '_' + build}",
+                                  sources, unity, flags)
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
