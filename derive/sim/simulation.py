@@ -107,7 +107,14 @@ class Result:
         return out
 
     def __getattr__(self, name):
-        if name.startswith("integral_") and name[9:] in self.__dict__.get("integrals", {}):
+        # (called only for a name the instance does not hold yet)
+        d = self.__dict__
+        row = _VIEWS.get(name)
+        if row is not None and "_out" in d:  # an output of the C call's buffer: its view, once
+            s, wide = row
+            value = d[name] = d["_out"][s].T if wide else d["_out"][s]
+            return value
+        if name.startswith("integral_") and name[9:] in d.get("integrals", {}):
             return self.integrals[name[9:]]
         raise AttributeError(name)
 
@@ -137,6 +144,7 @@ def _output_slices() -> list:
 
 _SLICES = _output_slices()
 _ROWS = {name: s for name, s, _ in _SLICES}
+_VIEWS = {name: (s, wide) for name, s, wide in _SLICES}  # output -> (rows of out, transposed)
 _L_ROWS, _N_ROWS = _ROWS["L"], _ROWS["n"]  # the rows of out holding L and n
 _COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
 _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
@@ -321,16 +329,16 @@ def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Resu
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
                      nfev: int) -> Result:
     """What :func:`_result` gives for outputs the C driver checked finite, built for a short
-    call: the views and the fields straight into a new Result's ``__dict__`` (no dataclass
-    ``__init__`` with twenty keywords), the integrals by the plan's formulas
-    (:func:`_integral_arrays`)."""
+    call: the fields straight into a new Result's ``__dict__`` (no dataclass ``__init__`` with
+    twenty keywords), the integrals by the plan's formulas (:func:`_integral_arrays`), and the
+    outputs' views of ``out`` made when first read (:meth:`Result.__getattr__`: ten views cost
+    ~1.8 us, a sixth of a short prepared run, whose caller may read one)."""
     desc = c.desc
-    fields = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     integrals = _integral_arrays(pl.integral_rows, out, pl.t)
-    fields.update(t=pl.t, method=c.method, formulation=desc.formulation, nfev=nfev, model=desc.name,
-                  effects=desc.effects, integrals=integrals, state=y, scene=pl.scene)
-    res = object.__new__(Result)  # every field is given: what Result(**fields) would make
-    res.__dict__.update(fields)
+    res = object.__new__(Result)  # every other field is given: what Result(**fields) would make
+    res.__dict__.update(_out=out, t=pl.t, method=c.method, formulation=desc.formulation, nfev=nfev,
+                        model=desc.name, effects=desc.effects, integrals=integrals, state=y,
+                        scene=pl.scene)
     return res
 
 
