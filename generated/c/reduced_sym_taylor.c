@@ -315,8 +315,16 @@ static inline double derive_reduced_sym_taylor_select(uint64_t m, double a, doub
  * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
  * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
  * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_reduced_sym_taylor_acos_poly's. A sample's numbers do not depend on its block. */
-static void derive_reduced_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_SYM_TAYLOR_KB],
+ * derive_reduced_sym_taylor_acos_poly's. A sample's numbers do not depend on its block.
+ * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
+ * block maps made the solver one function so large that its register allocation took the
+ * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
+#if defined(__GNUC__)
+#define DERIVE_REDUCED_SYM_TAYLOR_NOINLINE __attribute__((noinline))
+#else
+#define DERIVE_REDUCED_SYM_TAYLOR_NOINLINE
+#endif
+static DERIVE_REDUCED_SYM_TAYLOR_NOINLINE void derive_reduced_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_SYM_TAYLOR_KB],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
@@ -398,7 +406,7 @@ static void derive_reduced_sym_taylor_outputs_block(int nb, const double *tb, do
  * where every angle of the block is within DERIVE_REDUCED_SYM_TAYLOR_TRIG_MAX. One loop instead of two:
  * the output map's divisions and square roots (the divider) run beside sincos's multiplies
  * and adds, which had the loop of their own before them. */
-static void derive_reduced_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_SYM_TAYLOR_KB],
+static DERIVE_REDUCED_SYM_TAYLOR_NOINLINE void derive_reduced_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_SYM_TAYLOR_KB],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,

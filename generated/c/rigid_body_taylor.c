@@ -289,8 +289,16 @@ static inline double derive_rigid_body_taylor_select(uint64_t m, double a, doubl
  * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
  * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
  * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_rigid_body_taylor_acos_poly's. A sample's numbers do not depend on its block. */
-static void derive_rigid_body_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_RIGID_BODY_TAYLOR_KB],
+ * derive_rigid_body_taylor_acos_poly's. A sample's numbers do not depend on its block.
+ * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
+ * block maps made the solver one function so large that its register allocation took the
+ * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
+#if defined(__GNUC__)
+#define DERIVE_RIGID_BODY_TAYLOR_NOINLINE __attribute__((noinline))
+#else
+#define DERIVE_RIGID_BODY_TAYLOR_NOINLINE
+#endif
+static DERIVE_RIGID_BODY_TAYLOR_NOINLINE void derive_rigid_body_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_RIGID_BODY_TAYLOR_KB],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
