@@ -108,6 +108,12 @@ def test_races_against_heyoka_report_finite_ratios_at_reached_levels():
     assert ba["final_axis_difference"] < 1e-8  # both sides integrated the same motions
     assert ba["ratio_full_vs_grid"] > 0 and ba["ratio_final_vs_final"] > 0
     assert ba["lanes_driver"] == "lanes" and ba["ratio_lanes_vs_final"] > 0
+    assert ba["ratio_prepared_axis_vs_grid"] > 0
+    assert ba["ratio_prepared_axis_vs_grid_axis"] < ba["ratio_prepared_axis_vs_grid"]  # the axis costs heyoka's user
+    from derive.bench.report import peers_section
+
+    text = "\n".join(peers_section({"targets": {"peers": out}}))
+    assert "the axis alone at every sample" in text and "propagate_grid" in text
     fc = out["fixed_cost"]
     assert fc["prepared_vs_heyoka"] > 0 and fc["simulate_vs_heyoka"] > 0
     keys = {key for _, key, value in peer_rows(out) if value is not None}

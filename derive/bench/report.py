@@ -263,8 +263,14 @@ def peers_section(results: dict) -> list[str]:
               f"{ba['heyoka_tol']:.3g} (error {_e(ba['heyoka_error'])}), best of a few rounds in turns. " + final
               + f"`derive.simulate_batch(scenes)` (every output at all {ba['samples']} samples) "
               f"{_t(ba['derive_full_per_trajectory'])} against heyoka's `propagate_grid` (the states at every sample) "
-              f"{_t(ba['heyoka_grid_per_trajectory'])}: **{ba['ratio_full_vs_grid']:.3g}×**. The final axes of the "
-              f"two agree to {_e(ba['final_axis_difference'])}." + _lanes_line(ba), ""]
+              f"{_t(ba['heyoka_grid_per_trajectory'])}: **{ba['ratio_full_vs_grid']:.3g}×**"
+              + (f"; the axis alone at every sample, `derive.prepare(scene).run_batch(initial=..., "
+                 f"outputs=(\"axis\",))`, {_t(ba['derive_prepared_axis_per_trajectory'])}: "
+                 f"**{ba['ratio_prepared_axis_vs_grid']:.3g}×** heyoka's states, "
+                 f"**{ba['ratio_prepared_axis_vs_grid_axis']:.3g}×** its states and the axis computed from them "
+                 f"with NumPy ({_t(ba['heyoka_grid_axis_per_trajectory'])})"
+                 if "ratio_prepared_axis_vs_grid" in ba else "")
+              + f". The final axes of the two agree to {_e(ba['final_axis_difference'])}." + _lanes_line(ba), ""]
     fc = pe.get("fixed_cost") or {}
     if "error" in fc:
         L += [f"- fixed cost: not measured ({fc['error']})", ""]

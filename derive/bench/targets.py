@@ -534,6 +534,10 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
                          ba.get("ratio_prepared_lanes_vs_final")))
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch` (every output, {ba['samples']} "
                      f"samples) / heyoka batch `propagate_grid`", "batch_vs_heyoka", ba.get("ratio_full_vs_grid")))
+        if "ratio_prepared_axis_vs_grid" in ba:
+            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
+                         f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
+                         "batch_vs_heyoka", ba.get("ratio_prepared_axis_vs_grid")))
     fc = pe.get("fixed_cost") or {}
     if "prepared_vs_heyoka" in fc:
         rows.append(("fixed cost (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / heyoka",
