@@ -156,17 +156,26 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integ
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
     checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
     integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
-    views = {name: (out[s].T if wide else out[s]) for name, s, wide in _SLICES}
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
-        for name, _ in OUTPUTS:
-            bad = ~np.isfinite(views[name])
+        for name, s, wide in _SLICES:
+            bad = ~np.isfinite(out[s].T if wide else out[s])
             if bad.any():
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
-    res = Result(t=t, method=method, formulation=desc.formulation, nfev=int(nfev),
-                 model=desc.name, effects=desc.effects, state=y, scene=scene, **views)
     rows = plan.integral_rows_of(scene) if integrals is None else integrals
-    res.integrals = _integral_arrays(rows, out, t)
+    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t))
+
+
+def _new_result(out: np.ndarray, y: np.ndarray, t: np.ndarray, scene, method: str, desc, nfev: int,
+                integrals: dict) -> Result:
+    """A Result whose outputs are the rows of ``out`` (NOBS, n), made when first read
+    (:meth:`Result.__getattr__`: ten views cost ~1.8 us, a sixth of a short prepared run, and a
+    batch of 1000 made 10 000 of them), every other field straight into its ``__dict__`` (no
+    dataclass ``__init__`` with twenty keywords)."""
+    res = object.__new__(Result)  # every other field is given: what Result(**fields) would make
+    res.__dict__.update(_out=out, t=t, method=method, formulation=desc.formulation, nfev=nfev,
+                        model=desc.name, effects=desc.effects, integrals=integrals, state=y,
+                        scene=scene)
     return res
 
 
@@ -328,18 +337,10 @@ def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Resu
 
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
                      nfev: int) -> Result:
-    """What :func:`_result` gives for outputs the C driver checked finite, built for a short
-    call: the fields straight into a new Result's ``__dict__`` (no dataclass ``__init__`` with
-    twenty keywords), the integrals by the plan's formulas (:func:`_integral_arrays`), and the
-    outputs' views of ``out`` made when first read (:meth:`Result.__getattr__`: ten views cost
-    ~1.8 us, a sixth of a short prepared run, whose caller may read one)."""
-    desc = c.desc
-    integrals = _integral_arrays(pl.integral_rows, out, pl.t)
-    res = object.__new__(Result)  # every other field is given: what Result(**fields) would make
-    res.__dict__.update(_out=out, t=pl.t, method=c.method, formulation=desc.formulation, nfev=nfev,
-                        model=desc.name, effects=desc.effects, integrals=integrals, state=y,
-                        scene=pl.scene)
-    return res
+    """What :func:`_result` gives for outputs the C driver checked finite, with the plan's
+    integral formulas (:func:`_integral_arrays`)."""
+    return _new_result(out, y, pl.t, pl.scene, c.method, c.desc, nfev,
+                       _integral_arrays(pl.integral_rows, out, pl.t))
 
 
 def _with(c, params: dict | None) -> np.ndarray:
