@@ -305,3 +305,96 @@ def test_the_c_drivers_refuse_output_times_that_are_not_finite_and_increasing(me
     for name, t in bad.items():
         status = c.kernel.bind(np.ascontiguousarray(t), pl.inputs, c.args, c.pole_check)(c.params)[3]
         assert status == Status.BAD_ARGS, name
+
+
+# ---------------------------------------------------------------------------------------------
+# a dict simulated recently (plan.for_dict): its plan, not validated again
+
+
+def _counting(monkeypatch):
+    """Count the scenes ``derive.simulate`` validates (its calls of load_scene)."""
+    calls = []
+    real = simulation.load_scene
+    monkeypatch.setattr(simulation, "load_scene", lambda *a, **k: calls.append(1) or real(*a, **k))
+    return calls
+
+
+def test_an_equal_dict_runs_the_kept_plan_without_validation(monkeypatch):
+    plans.forget()
+    calls = _counting(monkeypatch)
+    data = _short()
+    first = derive.simulate(data)
+    again = derive.simulate(copy.deepcopy(data))  # another dict, the same content
+    assert len(calls) == 1
+    _fields_equal(again, first)
+    assert again.energy.tobytes() == first.energy.tobytes()
+
+
+@pytest.mark.parametrize("change", [
+    lambda d: d["initial"].update(gamma=-0.0),     # -0.0 == 0.0, but the sign is the scene's
+    lambda d: d["initial"].update(beta_dot=0),     # an int where a float was: validated as given
+    lambda d: d["gravity"].update(l=1),
+    lambda d: d["simulate"].update(samples=3),
+    lambda d: d.update(title="another"),
+])
+def test_a_dict_that_differs_in_any_way_is_validated_again(monkeypatch, change):
+    plans.forget()
+    calls = _counting(monkeypatch)
+    data = _short()
+    derive.simulate(data)
+    other = copy.deepcopy(data)
+    change(other)
+    res = derive.simulate(other)
+    assert len(calls) == 2
+    _fields_equal(res, _fresh_run(other))
+    if other["initial"]["gamma"] == 0.0 and math.copysign(1, other["initial"]["gamma"]) < 0:
+        assert math.copysign(1, res.scene.initial.gamma) == -1
+
+
+def test_a_dict_changed_in_place_is_simulated_as_it_is_now(monkeypatch):
+    plans.forget()
+    data = _short()
+    before = derive.simulate(data)
+    data["initial"]["beta"] = 0.9  # the caller's dict changes between the calls
+    after = derive.simulate(data)
+    assert after.beta[0] == pytest.approx(0.9) and before.beta[0] == pytest.approx(0.8)
+
+
+def test_an_invalid_dict_fails_every_time_and_a_valid_one_after_it_runs(monkeypatch):
+    plans.forget()
+    bad = _short()
+    bad["body"]["I3"] = -1.0
+    for _ in range(2):
+        with pytest.raises(SceneError, match="I3"):
+            derive.simulate(bad)
+    good = _short()
+    derive.simulate(good)
+    bad2 = copy.deepcopy(good)
+    bad2["initial"]["beta"] = float("nan")
+    for _ in range(2):
+        with pytest.raises(SceneError, match="beta"):
+            derive.simulate(bad2)
+
+
+def test_a_dict_that_does_not_pickle_is_left_to_the_validator():
+    data = _short()
+    data["title"] = lambda: None  # pickle refuses a lambda; the validator names the key
+    assert scenes.dict_key(data) is None
+    with pytest.raises(SceneError, match="title"):
+        derive.simulate(data)
+
+
+def test_a_new_effects_registry_is_not_served_from_the_dict_memo(monkeypatch):
+    """The key holds the effects registry's version: a registered effect changes what a dict
+    validates to."""
+    plans.forget()
+    calls = _counting(monkeypatch)
+    data = _short()
+    derive.simulate(data)
+    version = scenes.effects.VERSION
+    version[0] += 1  # (a list bumped in place, as registering an effect does)
+    try:
+        derive.simulate(data)
+    finally:
+        version[0] -= 1
+    assert len(calls) == 2

@@ -1,8 +1,9 @@
 """Compile generated C into a shared library, once, and load it with ctypes.
 
 Builds live in a cache outside the source tree (``$DERIVE_CACHE``, default ``~/.cache/derive``)
-keyed by the SHA-256 of the sources, the compiler (its command and ``--version``) and the flags,
-so an unchanged model is compiled once per machine. Each build happens in a private hidden
+keyed by the SHA-256 of the sources, the compiler (its command and ``--version``) and the flags
+(and, for a build for this CPU's vector width, :data:`BUILDS`, the CPU), so an unchanged model is
+compiled once per machine. Each build happens in a private hidden
 folder (``.build-<name>-XXXXXXXX``) and is moved into place with ``os.replace``: concurrent
 processes (parallel pytest workers) may both compile, but neither ever loads a half-written
 library.

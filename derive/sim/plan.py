@@ -256,6 +256,18 @@ def recent(scene: Scene) -> Plan:
     return _keep(_PLANS, key, pl)
 
 
+def for_dict(key: tuple, load) -> Plan:
+    """The plan of a scene dict whose raw content has the key ``key``
+    (:func:`derive.sim.scene.dict_key`): the plan kept for an equal dict among the last
+    :data:`MEMO_SIZE`, else :func:`recent`'s plan of ``load()`` (the dict validated), kept. An
+    equal dict validates to an equal scene, so ``derive.simulate`` of a dict it ran recently
+    skips the validation too: 25 -> 15 us a short call."""
+    kept = _DICT_PLANS.pop(key, None)  # out and in again: the most recent last
+    if kept is None or not _current(kept):
+        kept = recent(load())
+    return _keep(_DICT_PLANS, key, kept)
+
+
 def sibling(near: Plan, scene: Scene) -> Plan | None:
     """The plan of ``scene`` made from ``near``, the plan of a scene of the same family
     (:func:`_family`: other numbers, the rest equal), or None when the numbers change what
@@ -292,8 +304,9 @@ def _family(scene: Scene) -> tuple:
 
 
 def forget() -> None:
-    """Empty the memo of :func:`recent` (and the integrals' memos)."""
+    """Empty the memos of :func:`recent` and :func:`for_dict` (and the integrals' memos)."""
     _PLANS.clear()
+    _DICT_PLANS.clear()
     _FAMILIES.clear()
     _INTEGRAL_ROWS.clear()
 
@@ -325,5 +338,7 @@ def _content(scene: Scene) -> tuple:
 _NINE = struct.Struct("9d").pack
 _NO_RATES = (math.nan,) * 3
 _PLANS: dict = {}
+#: The plans of recent scene dicts, by their raw content (:func:`for_dict`).
+_DICT_PLANS: dict = {}
 #: The latest plan made anew (:func:`make`) of each family (:func:`_family`).
 _FAMILIES: dict = {}

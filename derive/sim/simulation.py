@@ -33,7 +33,7 @@ from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import (AUTO, _check_budget, _settings, choose_method, default_step,  # noqa: F401
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
-from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene, same_numbers
+from derive.sim.scene import FIXED_STEP_METHODS, Scene, dict_key, load_scene, same_numbers
 from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
@@ -286,7 +286,11 @@ def _ignoring(fn, *args):
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
     validate it, plan it (:func:`derive.sim.plan.recent`: the kept plan of an equal scene simulated
-    recently, else a new one), then run the plan."""
+    recently, else a new one), then run the plan. A dict equal to one simulated recently, without
+    overrides, runs that one's plan (:func:`derive.sim.plan.for_dict`)."""
+    key = dict_key(scene) if not overrides or all(v is None for v in overrides.values()) else None
+    if key is not None:
+        return run(plan.for_dict(key, lambda: load_scene(scene)))
     return run(plan.recent(load_scene(scene, **overrides)))
 
 
