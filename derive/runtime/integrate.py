@@ -25,9 +25,8 @@ import numpy as np
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
 from derive.errors import IntegrationError
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
-from derive.methods.registry import build as method_build
+from derive.methods.registry import build as method_build, method as compiled_method
 from derive.codegen.solvers import render_solvers
-from derive.methods.registry import method as compiled_method
 from derive.methods.status import Status
 from derive.methods.status import message as _status_message
 

@@ -502,12 +502,11 @@ def _terms_key(entries) -> tuple | None:
             t = type(v)
             if t is str:
                 out.append((k, v))
-            elif t is dict:  # params = {name = number}
-                values = tuple(v.values())
-                types = tuple(map(type, values))
-                if not _PLAIN_ENTRY.issuperset(types):
+            elif t is dict:  # params = {name = number}: numbers only
+                part = _table_key(v)
+                if part is None or not _PLAIN_ENTRY.issuperset(part[2]):
                     return None
-                out.append((k, tuple(v), values, types, repr(values)))
+                out.append((k, *part))
             elif t is list and all(type(x) is str for x in v):  # tau = ["...", "...", "..."]
                 out.append((k, tuple(v)))
             else:

@@ -111,8 +111,7 @@ class Result:
         d = self.__dict__
         row = _VIEWS.get(name)
         if row is not None and "_out" in d:  # an output of the C call's buffer: its view, once
-            s, wide = row
-            value = d[name] = d["_out"][s].T if wide else d["_out"][s]
+            value = d[name] = _view(d["_out"], *row)
             return value
         if name.startswith("integral_") and name[9:] in d.get("integrals", {}):
             return self.integrals[name[9:]]
@@ -143,9 +142,8 @@ def _output_slices() -> list:
 
 
 _SLICES = _output_slices()
-_ROWS = {name: s for name, s, _ in _SLICES}
 _VIEWS = {name: (s, wide) for name, s, wide in _SLICES}  # output -> (rows of out, transposed)
-_L_ROWS, _N_ROWS = _ROWS["L"], _ROWS["n"]  # the rows of out holding L and n
+_L_ROWS, _N_ROWS = _VIEWS["L"][0], _VIEWS["n"][0]  # the rows of out holding L and n
 _COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
 _RANGE = int(Status.RANGE)  # an int: no enum lookup per call
 _EPS = float(np.finfo(float).eps)
@@ -158,12 +156,17 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integ
     integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, s, wide in _SLICES:
-            bad = ~np.isfinite(out[s].T if wide else out[s])
+            bad = ~np.isfinite(_view(out, s, wide))
             if bad.any():
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     rows = plan.integral_rows_of(scene) if integrals is None else integrals
     return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t))
+
+
+def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
+    """An output's view of ``out`` (NOBS, n): its row, or its rows transposed to (n, width)."""
+    return out[rows].T if wide else out[rows]
 
 
 def _new_result(out: np.ndarray, y: np.ndarray, t: np.ndarray, scene, method: str, desc, nfev: int,
