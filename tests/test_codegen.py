@@ -279,6 +279,33 @@ def test_generated_c_compiles_cleanly_with_strict_warnings(tmp_path):
     _compile_strictly(tmp_path, sample, ["-O2"])
 
 
+def test_the_lanes_drivers_compile_cleanly_with_strict_warnings(tmp_path):
+    """The Taylor lanes drivers, compiled only in the lanes' build (-DDERIVE_LANES, GNU C's
+    vector types), strict at that build's flags (-O3 -march=native ...: the optimiser's
+    warnings), in a unity file as derive builds them: the heavy top reduced (every rule of
+    the heavy tops) and the rigid body (the quaternion's)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS, STRICT_FLAGS
+
+    cc = os.environ.get("CC", "cc")
+
+    def compile_one(name):
+        unity = tmp_path / f"{name}_unit.c"
+        unity.write_text("".join(f'#include "{name}{part}.c"\n' for part in ("", "_solvers", "_taylor")))
+        obj = tmp_path / f"{name}.o"
+        r = subprocess.run([cc, *STRICT_FLAGS, *DEFAULT_FLAGS, *NATIVE_FLAGS, "-DDERIVE_SELECT",
+                            "-DDERIVE_WITH_TAYLOR", "-I", str(GENERATED / "c"), "-c", str(unity),
+                            "-o", str(obj)], capture_output=True, text=True)
+        return name, r, obj
+
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        for name, r, obj in pool.map(compile_one, ["heavy_top_reduced", "rigid_body"]):
+            assert r.returncode == 0, f"{name}:\n{r.stderr}"
+            symbols = subprocess.run(["nm", str(obj)], capture_output=True, text=True).stdout
+            assert f"{name}_simulate_lanes_batch_taylor" in symbols  # (the lanes were compiled)
+
+
 @pytest.mark.slow
 def test_every_generated_c_file_compiles_cleanly_at_O2(tmp_path):
     """Every generated C file, strict, at -O2 (~25 s of compiling)."""

@@ -78,6 +78,35 @@ def _lanes_library(desc, tag: str, flags: list) -> ModelKernel:
     return ModelKernel(desc, "taylor", cbuild.compile_library(f"{desc.name}_taylor_{tag}", sources, unity, flags))
 
 
+#: A body of user terms whose jet uses every rule the shipped models do not: a power with a
+#: non-integer exponent, exp and sqrt (the potential's gradient), log and atan2 (the torque's).
+RULES = {"body": {"I1": 1.0, "I3": 0.5},
+         "potential": [{"name": "field", "params": {"mu": 0.3},
+                        "V": "mu*((2 + R13)**1.5 + exp(0.3*R33) + sqrt(2 + R13*R33))"}],
+         "torque": [{"name": "push", "frame": "body", "params": {"mu": 0.1},
+                     "tau": ["mu*log(3 + R23)", "mu*atan2(R13, 2 + R33)", "0"]}],
+         "simulate": {**BASE["simulate"], "t_end": 2.0}}
+
+
+def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit():
+    """The lanes' helpers of every rule (written on GNU C's vector types) against the scalar
+    driver's, on a user body whose jet has them all, in this CPU's width and the baseline's."""
+    sc = [{**RULES, "initial": d["initial"]} for d in scenes(11)]
+    bp = simulation.batch_plan(sc)
+    formulation, pole = bp.candidates[0]
+    desc, _, args = bp.kernel(formulation)
+    source = desc.c_sources()[f"{desc.name}_taylor.c"]
+    for rule in ("mul", "sqr", "div", "sqrt", "pow", "exp", "log", "atan2"):
+        assert f"tcl_{rule}(n" in source, rule
+    scalar, native = (ModelKernel.load(desc, bp.method, b) for b in ("portable", "lanes"))
+    ps = bp.params(desc)
+    want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
+    assert (want[3]["status"] == 0).all() and len(set(want[3]["nstep"])) > 3
+    same(want, native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
+    same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+
+
 def test_failing_lanes_say_so_per_trajectory_while_the_others_finish():
     sc = scenes(11, formulation="reduced-u", t_end=6.0)
     bp, desc, scalar, native, args, pole = kernels(sc, "reduced-u")
@@ -179,6 +208,19 @@ def test_simulate_batch_runs_the_lanes_for_the_taylor_method():
         assert np.array_equal(fin.outputs[name], np.array([getattr(r, name)[-1] for r in full])), name
     assert np.array_equal(fin.state, np.array([r.state[-1] for r in full]))
     assert np.array_equal(fin.nfev, [r.nfev for r in full])
+
+
+def test_a_lanes_library_without_the_lanes_runs_the_scalar_final_driver(monkeypatch):
+    """The lanes are written on GNU C's vector types: a compiler without them builds the lanes'
+    library with no lanes driver (``lanes`` 0), and the batch runs the scalar final-only driver,
+    with the same numbers."""
+    sc = scenes(10, formulation="reduced-u", samples=41)
+    lanes = derive.simulate_batch(sc, outputs="final")
+    bp, desc, _, native, _, _ = kernels(sc, "reduced-u")
+    monkeypatch.setattr(native, "lanes", 0)  # (the kernel the batch loads: one per build)
+    fin = derive.simulate_batch(sc, outputs="final")
+    assert lanes.driver == "lanes" and fin.driver == "final"
+    assert np.array_equal(fin.state, lanes.state) and np.array_equal(fin.nfev, lanes.nfev)
 
 
 def test_a_failing_lane_is_named_as_the_full_batch_names_it():

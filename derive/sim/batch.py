@@ -140,7 +140,9 @@ def run_plan(bp, final: bool, names: tuple) -> BatchResult:
         if final and final_only(desc, kernel):
             driver = "final"
             if kernel.has_lanes:  # a Taylor method: its lanes, in a library built for this CPU
-                driver, kernel = "lanes", ModelKernel.load(desc, bp.method, "lanes")
+                lanes = ModelKernel.load(desc, bp.method, "lanes")
+                if lanes.lanes:  # (none from a compiler without GNU C's vectors: the scalar's)
+                    driver, kernel = "lanes", lanes
         if driver == "full":
             refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
         else:
