@@ -426,11 +426,13 @@ class BatchPlan:
         """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model
         (worked out once for scenes that share their body and effect values: see
         :func:`derive.sim.scene.same_numbers`)."""
-        out, last, row = [], None, None
+        out, last, row, made = [], None, None, 0
         for sc in self.scenes[rows]:
             if last is None or not same_numbers(sc, last):
-                last, row = sc, params_of(sc, desc)
+                last, row, made = sc, params_of(sc, desc), made + 1
             out.append(row)
+        if made == 1:  # one row for all (np.array of N rows took 1 us a row)
+            return np.repeat(row[None, :], len(out), axis=0)
         return np.array(out)
 
     def where(self, b: int) -> str:
