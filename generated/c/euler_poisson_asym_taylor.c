@@ -847,7 +847,7 @@ const int euler_poisson_asym_taylor_has_lanes = 1;
  * written on a vector of the W lanes (GNU C's vector extension: gcc and clang; the lanes are
  * compiled only there), one register for each sum: as loops over arrays of lanes gcc kept the
  * sums in memory and split them into halves it stored apart and loaded whole, and the 1000
- * tops of the bench took 7.6 instead of 5.9 ms (tests/test_taylor_lanes.py checks the bits).
+ * tops of the bench took 7.4 instead of 5.9 ms (tests/test_taylor_lanes.py checks the bits).
  * W is the vector width (the library is built with -march=native). Each lane does the scalar
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
  * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
