@@ -138,7 +138,10 @@ def simulate_batch(scenes, outputs=None, **overrides):
         then counts no dense-output evaluations), and a Taylor method runs several
         trajectories at once in SIMD lanes (``BatchResult.driver`` says which driver ran).
         The integrals of the integrable cases are not computed (they are functions of ``L``
-        and ``n``).
+        and ``n``). Dicts that differ only in the numbers of ``[initial]`` (the other tables
+        equal value for value and type for type, the same initial keys in the same order) run
+        as one prepared batch, without reading each dict (:func:`prepare`'s ``run_batch``:
+        the same numbers).
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 
@@ -173,8 +176,11 @@ def simulate_batch(scenes, outputs=None, **overrides):
     """
     if outputs is not None:
         from derive.sim.batch import simulate_batch as _selected
+        from derive.sim.prepared import family_batch
 
-        return _selected(scenes, outputs, **overrides)
+        # dicts that differ only in their initial numbers: one prepared batch, the same numbers
+        ran = None if overrides else family_batch(scenes, outputs)
+        return ran if ran is not None else _selected(scenes, outputs, **overrides)
     from derive.sim.simulation import simulate_batch as _batch
 
     return _batch(scenes, **overrides)

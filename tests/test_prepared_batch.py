@@ -7,6 +7,7 @@ import pytest
 
 import derive
 from derive.errors import IntegrationError, SceneError
+from derive.sim import batch
 from derive.symbolic.formulations import REGISTRY, starts_accepted
 from derive.sim.scene import load_scene
 
@@ -28,6 +29,13 @@ def variants(data: dict, betas, masses=None) -> list[dict]:
     return out
 
 
+def by_scene(scenes, outputs):
+    """The scene-by-scene batch (each dict read and checked), which ``derive.simulate_batch``
+    leaves for one prepared batch when the dicts are a family (derive.sim.prepared.family_batch):
+    the reference the prepared batch is held to."""
+    return batch.simulate_batch(scenes, outputs)
+
+
 def same(a, b) -> None:
     assert a.outputs.keys() == b.outputs.keys()
     for k in a.outputs:
@@ -45,7 +53,7 @@ BETAS = np.linspace(0.3, 1.2, 11)
 def test_equals_simulate_batch_of_the_scenes(simulate, outputs):
     data = base(**simulate)
     got = derive.prepare(data).run_batch(initial={"beta": BETAS}, outputs=outputs)
-    want = derive.simulate_batch(variants(data, BETAS), outputs=outputs)
+    want = by_scene(variants(data, BETAS), outputs)
     same(got, want)
     assert len(got) == len(BETAS)
 
@@ -64,7 +72,7 @@ def test_parameters_and_omega_as_arrays():
     for k, d in enumerate(variants(data, BETAS, masses)):
         d["initial"] = dict(d["initial"], omega=omegas[k].tolist(), gamma=0.25)
         scenes.append(d)
-    same(got, derive.simulate_batch(scenes, outputs="final"))
+    same(got, by_scene(scenes, "final"))
 
 
 def test_starts_near_a_pole_send_the_batch_to_a_formulation_that_takes_them():
@@ -73,7 +81,7 @@ def test_starts_near_a_pole_send_the_batch_to_a_formulation_that_takes_them():
     data = base()
     betas = np.array([0.8, 0.05, 1.0])
     got = derive.prepare(data).run_batch(initial={"beta": betas})
-    want = derive.simulate_batch(variants(data, betas), outputs="final")
+    want = by_scene(variants(data, betas), "final")
     assert got.formulation != "reduced-u"
     same(got, want)
 
@@ -132,6 +140,6 @@ def test_a_failure_names_the_trajectory():
 
 def test_numbers_alone_make_one_trajectory():
     got = derive.prepare(base()).run_batch(initial={"beta": 0.9}, params={"M": 1.5})
-    want = derive.simulate_batch(variants(base(), [0.9], [1.5]), outputs="final")
+    want = by_scene(variants(base(), [0.9], [1.5]), "final")
     same(got, want)
     assert len(got) == 1

@@ -6,16 +6,20 @@ no derivation, optionally with new initial values or parameters of the same shap
 :meth:`~Prepared.run_batch` runs N such variations in one batch call (arrays of initial values
 and parameters, checked as arrays: no scene per trajectory).
 
+:func:`family_batch` runs scene dicts that differ only in their initial numbers (a family) as one
+prepared batch, for ``derive.simulate_batch``.
+
 Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`,
 :class:`derive.sim.batch.BatchResult`.
 """
 from __future__ import annotations
 
 import math
+import pickle
 
 import numpy as np
 
-from derive.errors import SceneError
+from derive.errors import IntegrationError, SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
@@ -24,6 +28,10 @@ from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
+#: The ``[initial]`` keys a family's dicts may vary (numbers; ``omega`` is a list: not a family).
+_FAMILY_KEYS = frozenset(_ANGLES + _RATES)
+#: The types of a family's initial values (as TOML and JSON give numbers; bool is not one).
+_NUMBERS = frozenset((float, int))
 
 
 class Prepared:
@@ -227,3 +235,47 @@ class _PreparedBatch(simulation.BatchPlan):
 
     def where(self, b: int) -> str:
         return f"{self.scenes[b].source}: trajectory {b}"
+
+
+def family_batch(scenes, outputs):
+    """``derive.simulate_batch(scenes, outputs)`` for a family of scene dicts, as one prepared
+    batch: the first dict prepared, the others' initial values its columns
+    (:meth:`Prepared.run_batch`, whose results are the scene-by-scene batch's bit for bit), with
+    no scene read per dict. A family: a list or tuple of two or more plain dicts whose tables
+    other than ``[initial]`` pickle to the first's bytes (equal values of equal types, signed
+    zeros apart), whose ``[initial]`` tables have the first's keys in its order (angles and
+    rates), each value an int or a float.
+
+    Returns None for anything else, and when the prepared batch raises SceneError or
+    IntegrationError: the caller then reads the scenes one by one, and raises the error as it
+    names it (the scene-by-scene batch runs again). 1.5 us a dict where reading it takes 12 us
+    (the bench's 1000 tops: ``simulation.batch_plan``)."""
+    if type(scenes) not in (list, tuple) or len(scenes) < 2 or type(scenes[0]) is not dict:
+        return None
+    first = scenes[0]
+    start = first.get("initial")
+    if type(start) is not dict or not start or not _FAMILY_KEYS.issuperset(start):
+        return None
+    keys = tuple(start)
+    try:
+        rest = pickle.dumps({**first, "initial": None}, 5)
+        rows = []
+        for d in scenes:
+            if type(d) is not dict:
+                return None
+            values = d.get("initial")
+            if type(values) is not dict or tuple(values) != keys:
+                return None
+            values = tuple(values.values())
+            if not _NUMBERS.issuperset(map(type, values)):
+                return None
+            if d is not first and pickle.dumps({**d, "initial": None}, 5) != rest:
+                return None
+            rows.append(values)
+        columns = np.array(rows, dtype=np.float64).T
+    except Exception:  # noqa: BLE001 - a value pickle or NumPy refuses (an int past float's range): not a family
+        return None
+    try:
+        return Prepared(first).run_batch(initial=dict(zip(keys, columns)), outputs=outputs)
+    except (SceneError, IntegrationError):
+        return None
