@@ -179,7 +179,8 @@ def simulate_batch(scenes, outputs=None, **overrides):
         from derive.sim.prepared import family_batch
 
         # dicts that differ only in their initial numbers: one prepared batch, the same numbers
-        ran = None if overrides else family_batch(scenes, outputs)
+        given = any(v is not None for v in overrides.values())  # (None: not given, as simulate takes it)
+        ran = None if given else family_batch(scenes, outputs)
         return ran if ran is not None else _selected(scenes, outputs, **overrides)
     from derive.sim.simulation import simulate_batch as _batch
 

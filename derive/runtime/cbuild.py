@@ -78,8 +78,8 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
 VECTOR_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize")
 # The lanes build (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the vector build with
 # the lanes compiled in, and no complete peeling of small loops: peeled, the lanes' loops over W
-# become straight lines the loop vectoriser never sees (the reference batch 7.5 -> 17.4 us per
-# trajectory). The scalar drivers want the peeling (their loops over 4 states or 4 samples:
+# become straight lines the loop vectoriser never sees (the lanes' C call on the bench's 1000
+# tops 5.9 -> 16.7 ms without the flag, measured after the lanes' sums took GNU C's vectors). The scalar drivers want the peeling (their loops over 4 states or 4 samples:
 # 55.6 -> 80 us for the reference run without it), hence two builds.
 NATIVE_FLAGS: tuple[str, ...] = VECTOR_FLAGS + ("--param=max-completely-peel-times=1", "-DDERIVE_LANES")
 #: The builds of a library: name -> the flags each adds to DEFAULT_FLAGS. ``portable`` runs on

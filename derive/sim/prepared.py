@@ -15,7 +15,6 @@ Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.si
 from __future__ import annotations
 
 import math
-import pickle
 
 import numpy as np
 
@@ -23,7 +22,7 @@ from derive.errors import IntegrationError, SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
-from derive.sim.scene import load_scene
+from derive.sim.scene import dict_key, load_scene
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
@@ -257,23 +256,25 @@ def family_batch(scenes, outputs):
     if type(start) is not dict or not start or not _FAMILY_KEYS.issuperset(start):
         return None
     keys = tuple(start)
+    rest = dict_key({**first, "initial": None})  # (its pickle: types and signed zeros apart)
+    if rest is None:
+        return None
+    rows = []
+    for d in scenes:
+        if type(d) is not dict:
+            return None
+        values = d.get("initial")
+        if type(values) is not dict or tuple(values) != keys:
+            return None
+        values = tuple(values.values())
+        if not _NUMBERS.issuperset(map(type, values)):
+            return None
+        if d is not first and dict_key({**d, "initial": None}) != rest:
+            return None
+        rows.append(values)
     try:
-        rest = pickle.dumps({**first, "initial": None}, 5)
-        rows = []
-        for d in scenes:
-            if type(d) is not dict:
-                return None
-            values = d.get("initial")
-            if type(values) is not dict or tuple(values) != keys:
-                return None
-            values = tuple(values.values())
-            if not _NUMBERS.issuperset(map(type, values)):
-                return None
-            if d is not first and pickle.dumps({**d, "initial": None}, 5) != rest:
-                return None
-            rows.append(values)
         columns = np.array(rows, dtype=np.float64).T
-    except Exception:  # noqa: BLE001 - a value pickle or NumPy refuses (an int past float's range): not a family
+    except OverflowError:  # an int past a double's range: the scene's own error, one by one
         return None
     try:
         return Prepared(first).run_batch(initial=dict(zip(keys, columns)), outputs=outputs)
