@@ -563,6 +563,13 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
         "pointwise": _pointwise(model, d),
     }
     ctx["lanes"] = _lanes(d, rhs_nodes, ctx["jet_scope"]) if ctx["pointwise"] else None
+    # the nodes the dense output reads of the jet's (the states, and what the outputs' series are
+    # made of, less the nodes made for them): what the lanes' full-grid driver copies out of a
+    # lane before it (templates/c/taylor_lanes_driver.c.j2)
+    read = set(range(ny)) | {int(k) for k in _NODE.findall(" ".join(obs_text + [coef(op) for op in d.columns]))}
+    ctx["dense_nodes"] = sorted(read - {n.index for n in d.nodes if n.obs})
+    # the doubles a lane keeps of its steps (at least one step's at the highest order)
+    ctx["LBUF"] = max(2048, 6 + len(ctx["dense_nodes"]) * (ctx["max_order"] + 1))
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
             f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
 
@@ -572,6 +579,7 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
 LANE = "lane_"
 
 _SERIES = re.compile(r"u\[(\d+)\]\[([^\]]+)\]")
+_NODE = re.compile(r"\bu\[(\d+)\]")
 _PRODUCT = re.compile(r"^u\[(\d+)\]\[n\] = tc_(mul|sqr)\(n, (.*)\);$")
 
 

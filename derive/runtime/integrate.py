@@ -375,7 +375,7 @@ class ModelKernel:
         vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
-        self._sim_final = self._sim_lanes = None
+        self._sim_final = self._sim_lanes = self._sim_lanes_full = None
         self.lanes = 0
         self.has_lanes = False
         if method is not None:
@@ -397,6 +397,10 @@ class ModelKernel:
             self._sim_lanes = (self._fn(f"{p}_simulate_lanes_batch_{method}",
                                         [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
                                if hasattr(lib, f"{p}_simulate_lanes_batch_{method}") else None)
+            # and its full-grid lanes driver (every sample, W trajectories at once)
+            self._sim_lanes_full = (self._fn(f"{p}_simulate_lanes_full_batch_{method}",
+                                             [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+                                    if hasattr(lib, f"{p}_simulate_lanes_full_batch_{method}") else None)
             self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
                           if self._sim_lanes is not None else 0)
             # the method has lanes drivers, compiled in the library built for lanes (native)
@@ -504,12 +508,20 @@ class ModelKernel:
         once (see :class:`BoundRun`): for a prepared simulation run many times."""
         return BoundRun(self, t, inputs, args, pole_check)
 
-    def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0, buffers=None):
+    def simulate_batch(self, inputs, ps, t, args, pole_check: int = 0, buffers=None, lanes: bool = False):
         """N trajectories (inputs (N, NIN), ps (N, NP)): (out (N, NOBS, n), y (N, n, NY), ps,
         stats (N,)); each bit-for-bit what ``simulate`` gives. With ``pole_check`` the first
         start that fails it stops the batch (its status RANGE). ``buffers``: (out, y) arrays to
         write into instead of new ones (C-contiguous float64, at least N trajectories long; the
-        first N are used), so a caller running chunks maps its work arrays once."""
+        first N are used), so a caller running chunks maps its work arrays once. ``lanes``: by
+        a Taylor method's full-grid lanes driver (``<name>_simulate_lanes_full_batch_<method>``,
+        :attr:`has_lanes_full`: :attr:`lanes` trajectories at once), the same numbers, statuses
+        and statistics; a refused start then stops the batch before anything is integrated."""
+        fn = self._sim_batch
+        if lanes:
+            if self._sim_lanes_full is None:
+                raise ValueError(f"{self.desc.name}: method {self.method!r} has no full-grid lanes batch driver")
+            fn = self._sim_lanes_full
         nb, n = inputs.shape[0], t.shape[0]
         if buffers is None:
             out = np.empty((nb, self.nout, n))
@@ -523,9 +535,26 @@ class ModelKernel:
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-        self._call(self._sim_batch, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
+        self._call(fn, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
                    _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
+
+    def full_lanes(self, n: int) -> "ModelKernel | None":
+        """The kernel whose full-grid lanes driver runs this kernel's full batch of ``n``
+        trajectories (``simulate_batch(..., lanes=True)``: the same numbers), or None: a Taylor
+        method's lanes library (built for this CPU, compiled on first use) where the compiler
+        has GNU C's vectors, for a batch of at least :data:`LANES_MIN` (a smaller one gains
+        nothing from the lanes and would compile their library for it)."""
+        if not self.has_lanes or n < LANES_MIN:
+            return None
+        lanes = ModelKernel.load(self.desc, self.method, "lanes")
+        return lanes if lanes.has_lanes_full else None
+
+    @property
+    def has_lanes_full(self) -> bool:
+        """Whether the library holds the full-grid lanes driver (``simulate_batch(lanes=True)``):
+        a Taylor method's lanes library (``load(..., "lanes")``) built with GNU C's vectors."""
+        return self._sim_lanes_full is not None and self.lanes > 0
 
     @property
     def has_final(self) -> bool:
@@ -592,6 +621,10 @@ class ModelKernel:
                          _ptr(np.ascontiguousarray(p, dtype=np.float64)), _ptr(out))
         return out
 
+
+#: The fewest trajectories a full batch runs in lanes (:meth:`ModelKernel.full_lanes`): one
+#: lane set of AVX-512.
+LANES_MIN = 8
 
 _STATUS_OFFSET = STATS_DTYPE.fields["status"][1]
 _NFEV_OFFSET = STATS_DTYPE.fields["nfev"][1]

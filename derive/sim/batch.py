@@ -76,8 +76,10 @@ class BatchResult:
         The effects of the model.
     driver : str
         The compiled batch driver that ran: ``"full"`` (every sample, kept or not),
-        ``"final"`` (straight to the end, the last sample only) or ``"lanes"`` (that, a Taylor
-        method's trajectories several at a time: ``<model>_simulate_lanes_batch_<method>``).
+        ``"full-lanes"`` (that, a Taylor method's trajectories several at a time:
+        ``<model>_simulate_lanes_full_batch_<method>``), ``"final"`` (straight to the end, the
+        last sample only) or ``"lanes"`` (that, several at a time:
+        ``<model>_simulate_lanes_batch_<method>``).
     """
 
     outputs: dict
@@ -144,7 +146,10 @@ def run_plan(bp, final: bool, names: tuple) -> BatchResult:
                 if lanes.lanes:  # (none from a compiler without GNU C's vectors: the scalar's)
                     driver, kernel = "lanes", lanes
         if driver == "full":
-            refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names)
+            lanes = kernel.full_lanes(len(bp.scenes))
+            if lanes is not None:  # a Taylor method's full grid, W trajectories at a time
+                driver, kernel = "full-lanes", lanes
+            refused, arrays, nfev = _run(bp, desc, kernel, args, pole_check, final, names, lanes is not None)
         else:
             refused, arrays, nfev = _run_final(bp, desc, kernel, args, pole_check, driver, names)
         if not refused:
@@ -182,15 +187,18 @@ def _run_final(bp, desc, kernel, args, pole_check, driver, names):
     return False, arrays, st["nfev"].astype(np.int64)
 
 
-def _run(bp, desc, kernel, args, pole_check, final, names):
+def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
     """The chunks of one candidate formulation: (False, {name: array}, nfev), or (True, the
     chunk's stats, its offset) when the driver's pole check refused a start (status RANGE: the
-    next candidate runs the whole batch)."""
+    next candidate runs the whole batch). ``lanes``: by the kernel's full-grid lanes driver,
+    chunks of whole lane sets."""
     scs, t = bp.scenes, bp.t
     nb, n = len(scs), len(t)
     nout, ny = kernel.nout, kernel.ny
     per = 8 * n * (nout + ny)
     chunk = max(1, min(nb, CHUNK_BYTES // per))
+    if lanes:  # (a chunk's last lanes idle while its last trajectories run)
+        chunk = min(nb, max(kernel.lanes, chunk // kernel.lanes * kernel.lanes))
     work = (np.empty((chunk, nout, n)), np.empty((chunk, n, ny)))
     arrays = {}
     for name in names:
@@ -203,7 +211,7 @@ def _run(bp, desc, kernel, args, pole_check, final, names):
     for s in range(0, nb, chunk):
         e = min(nb, s + chunk)
         out, y, _, st = kernel.simulate_batch(bp.inputs[s:e], bp.params(desc, slice(s, e)), t, args, pole_check,
-                                              buffers=work)
+                                              buffers=work, lanes=lanes)
         if (st["status"] == _RANGE).any():
             return True, st, s
         bp.raise_failure(desc, st, offset=s)

@@ -380,7 +380,11 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
         ps = bp.params(desc)
-        out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        lanes = kernel.full_lanes(len(scs))  # a Taylor method's trajectories W at a time
+        if lanes is not None:
+            out, y, ps, st = lanes.simulate_batch(bp.inputs, ps, t, args, pole_check, lanes=True)
+        else:
+            out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
         if not (st["status"] == Status.RANGE).any():
             break
     bp.raise_failure(desc, st)
