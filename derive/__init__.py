@@ -174,17 +174,19 @@ def simulate_batch(scenes, outputs=None, **overrides):
     >>> ends.beta.shape, ends.omega.shape, bool(ends.beta[1] == runs[1].beta[-1])
     ((2,), (2, 3), True)
     """
+    from derive.sim.prepared import family_batch, family_results
+
+    # dicts that differ only in their initial numbers: one prepared batch, the same numbers
+    given = any(v is not None for v in overrides.values())  # (None: not given, as simulate takes it)
     if outputs is not None:
         from derive.sim.batch import simulate_batch as _selected
-        from derive.sim.prepared import family_batch
 
-        # dicts that differ only in their initial numbers: one prepared batch, the same numbers
-        given = any(v is not None for v in overrides.values())  # (None: not given, as simulate takes it)
         ran = None if given else family_batch(scenes, outputs)
         return ran if ran is not None else _selected(scenes, outputs, **overrides)
     from derive.sim.simulation import simulate_batch as _batch
 
-    return _batch(scenes, **overrides)
+    ran = None if given else family_results(scenes)
+    return ran if ran is not None else _batch(scenes, **overrides)
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):

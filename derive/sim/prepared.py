@@ -14,6 +14,7 @@ Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.si
 """
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -23,6 +24,7 @@ from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
 from derive.sim.scene import dict_key, load_scene
+from derive.symbolic import integrable
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
@@ -249,6 +251,57 @@ def family_batch(scenes, outputs):
     IntegrationError: the caller then reads the scenes one by one, and raises the error as it
     names it (the scene-by-scene batch runs again). About 2.4 us a dict (1.4 us its pickle),
     where reading it takes 12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
+    family = _family(scenes)
+    if family is None:
+        return None
+    first, keys, _, columns = family
+    try:
+        return Prepared(first).run_batch(initial=dict(zip(keys, columns)), outputs=outputs)
+    except (SceneError, IntegrationError):
+        return None
+
+
+def family_results(scenes):
+    """``derive.simulate_batch(scenes)`` (one Result per scene, every output at every sample)
+    for a family of scene dicts (see :func:`family_batch`): one prepared batch plan run as the
+    scene-by-scene batch runs its plan (:func:`derive.sim.simulation.batch_results`: the same
+    numbers), each Result's ``scene`` made from its dict when first read (:class:`_FamilyScene`),
+    the integral rows the first scene's. None as :func:`family_batch` says, and for a body whose
+    integrable case depends on each state (Goryachev and Chaplygin's, on L.n = 0)."""
+    family = _family(scenes)
+    if family is None:
+        return None
+    first, keys, rows, columns = family
+    try:
+        prepared = Prepared(first)
+        sc = prepared.plan.scene
+        if integrable.needs_area_level(*sc.body.moments):
+            return None
+        bp = _PreparedBatch.of(prepared, dict(zip(keys, columns)), {})
+        rest = copy.deepcopy({k: v for k, v in first.items() if k != "initial"})  # (as called)
+        return simulation.batch_results(bp, [_FamilyScene(rest, keys, row) for row in rows],
+                                        integrals=plan.integral_rows_of(sc))
+    except (SceneError, IntegrationError):
+        return None
+
+
+class _FamilyScene:
+    """A family batch's trajectory's Scene, validated when first read (``Result.scene``): its
+    dict as the batch was called with it, the first dict's other tables (a copy) with its own
+    initial values."""
+
+    __slots__ = ("rest", "keys", "values")
+
+    def __init__(self, rest: dict, keys: tuple, values: tuple):
+        self.rest, self.keys, self.values = rest, keys, values
+
+    def __call__(self):
+        return load_scene({**self.rest, "initial": dict(zip(self.keys, self.values))})
+
+
+def _family(scenes):
+    """(first dict, initial keys, each dict's initial values, their columns) of a family of
+    scene dicts (see :func:`family_batch`), or None."""
     if type(scenes) not in (list, tuple) or len(scenes) < 2 or type(scenes[0]) is not dict:
         return None
     first = scenes[0]
@@ -276,7 +329,4 @@ def family_batch(scenes, outputs):
         columns = np.array(rows, dtype=np.float64).T
     except OverflowError:  # an int past a double's range: the scene's own error, one by one
         return None
-    try:
-        return Prepared(first).run_batch(initial=dict(zip(keys, columns)), outputs=outputs)
-    except (SceneError, IntegrationError):
-        return None
+    return first, keys, rows, columns

@@ -94,7 +94,9 @@ class Result:
     effects: tuple = ()
     integrals: dict = field(default_factory=dict)
     state: np.ndarray | None = field(default=None, repr=False)
-    scene: Scene | None = field(default=None, repr=False)
+    # (a factory, not a default: a default is a class attribute, and a Result of a family batch
+    # makes its scene when first read, in __getattr__)
+    scene: Scene | None = field(default_factory=lambda: None, repr=False)
 
     def arrays(self) -> dict:
         """Everything the output file holds, by name (``integral_<name>`` for the integrals,
@@ -115,6 +117,10 @@ class Result:
             return value
         if name.startswith("integral_") and name[9:] in d.get("integrals", {}):
             return self.integrals[name[9:]]
+        if name == "scene" and "_scene_of" in d:  # a family batch's: validated when first read
+            value = d["scene"] = d["_scene_of"]()
+            del d["_scene_of"]
+            return value
         raise AttributeError(name)
 
 
@@ -150,10 +156,12 @@ _EPS = float(np.finfo(float).eps)
 _FEW = 32  # samples below which a list beats NumPy's reductions
 
 
-def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None) -> Result:
+def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None,
+            made=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
     checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
-    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
+    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`);
+    ``made``: the arrays of those already made (a batch's components of L)."""
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, s, wide in _SLICES:
             bad = ~np.isfinite(_view(out, s, wide))
@@ -161,7 +169,7 @@ def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integ
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     rows = plan.integral_rows_of(scene) if integrals is None else integrals
-    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t))
+    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t, made))
 
 
 def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
@@ -190,7 +198,7 @@ def _all_finite(values: np.ndarray) -> bool:
     return bool(np.isfinite(values).all())
 
 
-def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
+def _integral_arrays(rows, out: np.ndarray, t: np.ndarray, made=None) -> dict:
     """``integral_<name>`` arrays of the scene's integrable case (none for a general body) from
     its formulas ``rows`` (:func:`derive.sim.plan.integral_rows_of`) on the L and n rows of the
     outputs ``out`` (NOBS, n), the formulas' own layout, with NumPy's floating-point errors
@@ -201,6 +209,9 @@ def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
     L, n = out[_L_ROWS], out[_N_ROWS]
     found = {}
     for name, formula, values, component in rows:
+        if made and name in made:
+            found[name] = made[name]
+            continue
         if component is not None:  # L's own component: a copy of the row, finite as L was checked
             found[name] = L[component].copy()
             continue
@@ -374,8 +385,16 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     coefficient, and a scene without the table cannot join such a batch (nothing gives c).
     """
     bp = batch_plan(scenes, **overrides)
-    if bp is None:
-        return []
+    return [] if bp is None else batch_results(bp)
+
+
+def batch_results(bp: "BatchPlan", scene_of=None, integrals=None) -> list[Result]:
+    """A batch plan run, one Result per trajectory (what :func:`simulate_batch` returns):
+    its candidate formulations in turn until no start is refused, by the full batch driver
+    (a Taylor method's lanes for a batch of at least LANES_MIN). ``scene_of``: trajectory b's
+    Result.scene is ``scene_of[b]()``, made when first read, instead of ``bp.scenes[b]`` (a
+    family batch's scenes are all its first's, but for their initial values); ``integrals``:
+    the integral rows every trajectory shares (else each scene's)."""
     scs, t, method = bp.scenes, bp.t, bp.method
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
@@ -392,11 +411,21 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
     suspect = _pole_suspects(desc, out[:, 1], scs[0].simulate.rtol)
     nfev = st["nfev"].tolist()
+    # integrals that are components of L, shared by every trajectory: one copy for the batch
+    # (a copy per trajectory was 6 us of the bench's 60)
+    made = {name: out[:, _L_ROWS.start + component].copy() for name, _, _, component in integrals or ()
+            if component is not None}
     results = []
     for b, sc in enumerate(scs):
         if suspect[b]:
             _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
-        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True))
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True,
+                               integrals=integrals, made={k: v[b] for k, v in made.items()}))
+    if scene_of is not None:
+        for res, make in zip(results, scene_of):
+            d = res.__dict__
+            del d["scene"]
+            d["_scene_of"] = make
     return results
 
 
