@@ -189,6 +189,9 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         # every sample of the quantity both sides are judged on: derive's axis, asked for by
         # name, against heyoka's states (its user computes the axis from them after: timed apart)
         fns["derive_prepared_axis"] = lambda: prepared.run_batch(initial=initial, outputs=("axis",))
+        # like for like: the states at every sample, derive's (its formulation's: 4 for reduced-u)
+        # against heyoka's (its Euler-angle equations': 6)
+        fns["derive_prepared_state"] = lambda: prepared.run_batch(initial=initial, outputs=("state",))
         ny = len(prob.y0)
         fns["heyoka_grid_axis"] = lambda: prob.axis(grid_run().reshape(-1, ny))
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
@@ -209,6 +212,8 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     if "derive_prepared_axis" in best:
         out["ratio_prepared_axis_vs_grid"] = best["derive_prepared_axis"] / best["heyoka_grid"]
         out["ratio_prepared_axis_vs_grid_axis"] = best["derive_prepared_axis"] / best["heyoka_grid_axis"]
+    if "derive_prepared_state" in best:
+        out["ratio_prepared_state_vs_grid"] = best["derive_prepared_state"] / best["heyoka_grid"]
     if "derive_final" in best and data["simulate"].get("method") != "taylor":
         out.update(_lanes_race(scenes, prob, probs, ref, rtol))
     return out

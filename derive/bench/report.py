@@ -270,6 +270,10 @@ def peers_section(results: dict) -> list[str]:
                  f"**{ba['ratio_prepared_axis_vs_grid_axis']:.3g}×** its states and the axis computed from them "
                  f"with NumPy ({_t(ba['heyoka_grid_axis_per_trajectory'])})"
                  if "ratio_prepared_axis_vs_grid" in ba else "")
+              + (f"; the states alone at every sample (derive's formulation's, heyoka's equations'), "
+                 f"`outputs=(\"state\",)`, {_t(ba['derive_prepared_state_per_trajectory'])}: "
+                 f"**{ba['ratio_prepared_state_vs_grid']:.3g}×**"
+                 if "ratio_prepared_state_vs_grid" in ba else "")
               + f". The final axes of the two agree to {_e(ba['final_axis_difference'])}." + _lanes_line(ba), ""]
     fc = pe.get("fixed_cost") or {}
     if "error" in fc:

@@ -538,6 +538,10 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
             rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
                          f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
                          "batch_vs_heyoka", ba.get("ratio_prepared_axis_vs_grid")))
+        if "ratio_prepared_state_vs_grid" in ba:
+            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"state\",))` "
+                         f"(the states at {ba['samples']} samples) / heyoka `propagate_grid` (its states)",
+                         "batch_vs_heyoka", ba.get("ratio_prepared_state_vs_grid")))
     fc = pe.get("fixed_cost") or {}
     if "prepared_vs_heyoka" in fc:
         rows.append(("fixed cost (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / heyoka",

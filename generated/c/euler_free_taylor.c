@@ -149,35 +149,48 @@ static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_T
 {
 #if defined(__GNUC__)
     /* two vectors at a time while the second holds a sample: a column's chain alone waits on
-     * its multiply and its add (for four states, four chains left the units half idle) */
-    derive_euler_free_taylor_hv a[DERIVE_EULER_FREE_TAYLOR_NW], b[DERIVE_EULER_FREE_TAYLOR_NW], tk, tl;
-    int j, n, k, k0 = 0;
+     * its multiply and its add (for four states, four chains left the units half idle). The
+     * columns written out, one variable each: as an array indexed in a loop, the lanes' build
+     * (which peels no loop) kept them in memory, each step of a chain waiting on a store. A
+     * column's vector starts as its coefficient minus a zero vector (exactly the coefficient,
+     * -0 included). */
+    const derive_euler_free_taylor_hv zero = {0};
+    derive_euler_free_taylor_hv tk, tl, a0, b0, a1, b1, a2, b2;
+    int n, k0 = 0;
     for (; k0 + DERIVE_EULER_FREE_TAYLOR_HW < nb; k0 += 2 * DERIVE_EULER_FREE_TAYLOR_HW) {
         tk = *(const derive_euler_free_taylor_hv *)(tau + k0);
         tl = *(const derive_euler_free_taylor_hv *)(tau + k0 + DERIVE_EULER_FREE_TAYLOR_HW);
-        for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_EULER_FREE_TAYLOR_HW; ++k)
-                a[j][k] = b[j][k] = w[order][j];
-        for (n = order - 1; n >= 0; --n)
-            for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j) {
-                a[j] = a[j] * tk + w[n][j];
-                b[j] = b[j] * tl + w[n][j];
-            }
-        for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j) {
-            *(derive_euler_free_taylor_hv *)&v[j][k0] = a[j];
-            *(derive_euler_free_taylor_hv *)&v[j][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b[j];
+        a0 = b0 = w[order][0] - zero;
+        a1 = b1 = w[order][1] - zero;
+        a2 = b2 = w[order][2] - zero;
+        for (n = order - 1; n >= 0; --n) {
+            a0 = a0 * tk + w[n][0];
+            b0 = b0 * tl + w[n][0];
+            a1 = a1 * tk + w[n][1];
+            b1 = b1 * tl + w[n][1];
+            a2 = a2 * tk + w[n][2];
+            b2 = b2 * tl + w[n][2];
         }
+        *(derive_euler_free_taylor_hv *)&v[0][k0] = a0;
+        *(derive_euler_free_taylor_hv *)&v[0][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b0;
+        *(derive_euler_free_taylor_hv *)&v[1][k0] = a1;
+        *(derive_euler_free_taylor_hv *)&v[1][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b1;
+        *(derive_euler_free_taylor_hv *)&v[2][k0] = a2;
+        *(derive_euler_free_taylor_hv *)&v[2][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b2;
     }
     if (k0 < nb) {
         tk = *(const derive_euler_free_taylor_hv *)(tau + k0);
-        for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_EULER_FREE_TAYLOR_HW; ++k)
-                a[j][k] = w[order][j];
-        for (n = order - 1; n >= 0; --n)
-            for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-                a[j] = a[j] * tk + w[n][j];
-        for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
-            *(derive_euler_free_taylor_hv *)&v[j][k0] = a[j];
+        a0 = w[order][0] - zero;
+        a1 = w[order][1] - zero;
+        a2 = w[order][2] - zero;
+        for (n = order - 1; n >= 0; --n) {
+            a0 = a0 * tk + w[n][0];
+            a1 = a1 * tk + w[n][1];
+            a2 = a2 * tk + w[n][2];
+        }
+        *(derive_euler_free_taylor_hv *)&v[0][k0] = a0;
+        *(derive_euler_free_taylor_hv *)&v[1][k0] = a1;
+        *(derive_euler_free_taylor_hv *)&v[2][k0] = a2;
     }
 #else
     double a[DERIVE_EULER_FREE_TAYLOR_NW][DERIVE_EULER_FREE_TAYLOR_HW], tk[DERIVE_EULER_FREE_TAYLOR_HW];

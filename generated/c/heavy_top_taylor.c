@@ -213,35 +213,88 @@ static void derive_heavy_top_taylor_horner_block(double w[][DERIVE_HEAVY_TOP_TAY
 {
 #if defined(__GNUC__)
     /* two vectors at a time while the second holds a sample: a column's chain alone waits on
-     * its multiply and its add (for four states, four chains left the units half idle) */
-    derive_heavy_top_taylor_hv a[DERIVE_HEAVY_TOP_TAYLOR_NW], b[DERIVE_HEAVY_TOP_TAYLOR_NW], tk, tl;
-    int j, n, k, k0 = 0;
+     * its multiply and its add (for four states, four chains left the units half idle). The
+     * columns written out, one variable each: as an array indexed in a loop, the lanes' build
+     * (which peels no loop) kept them in memory, each step of a chain waiting on a store. A
+     * column's vector starts as its coefficient minus a zero vector (exactly the coefficient,
+     * -0 included). */
+    const derive_heavy_top_taylor_hv zero = {0};
+    derive_heavy_top_taylor_hv tk, tl, a0, b0, a1, b1, a2, b2, a3, b3, a4, b4, a5, b5, a6, b6, a7, b7;
+    int n, k0 = 0;
     for (; k0 + DERIVE_HEAVY_TOP_TAYLOR_HW < nb; k0 += 2 * DERIVE_HEAVY_TOP_TAYLOR_HW) {
         tk = *(const derive_heavy_top_taylor_hv *)(tau + k0);
         tl = *(const derive_heavy_top_taylor_hv *)(tau + k0 + DERIVE_HEAVY_TOP_TAYLOR_HW);
-        for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_HEAVY_TOP_TAYLOR_HW; ++k)
-                a[j][k] = b[j][k] = w[order][j];
-        for (n = order - 1; n >= 0; --n)
-            for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j) {
-                a[j] = a[j] * tk + w[n][j];
-                b[j] = b[j] * tl + w[n][j];
-            }
-        for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j) {
-            *(derive_heavy_top_taylor_hv *)&v[j][k0] = a[j];
-            *(derive_heavy_top_taylor_hv *)&v[j][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b[j];
+        a0 = b0 = w[order][0] - zero;
+        a1 = b1 = w[order][1] - zero;
+        a2 = b2 = w[order][2] - zero;
+        a3 = b3 = w[order][3] - zero;
+        a4 = b4 = w[order][4] - zero;
+        a5 = b5 = w[order][5] - zero;
+        a6 = b6 = w[order][6] - zero;
+        a7 = b7 = w[order][7] - zero;
+        for (n = order - 1; n >= 0; --n) {
+            a0 = a0 * tk + w[n][0];
+            b0 = b0 * tl + w[n][0];
+            a1 = a1 * tk + w[n][1];
+            b1 = b1 * tl + w[n][1];
+            a2 = a2 * tk + w[n][2];
+            b2 = b2 * tl + w[n][2];
+            a3 = a3 * tk + w[n][3];
+            b3 = b3 * tl + w[n][3];
+            a4 = a4 * tk + w[n][4];
+            b4 = b4 * tl + w[n][4];
+            a5 = a5 * tk + w[n][5];
+            b5 = b5 * tl + w[n][5];
+            a6 = a6 * tk + w[n][6];
+            b6 = b6 * tl + w[n][6];
+            a7 = a7 * tk + w[n][7];
+            b7 = b7 * tl + w[n][7];
         }
+        *(derive_heavy_top_taylor_hv *)&v[0][k0] = a0;
+        *(derive_heavy_top_taylor_hv *)&v[0][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b0;
+        *(derive_heavy_top_taylor_hv *)&v[1][k0] = a1;
+        *(derive_heavy_top_taylor_hv *)&v[1][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b1;
+        *(derive_heavy_top_taylor_hv *)&v[2][k0] = a2;
+        *(derive_heavy_top_taylor_hv *)&v[2][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b2;
+        *(derive_heavy_top_taylor_hv *)&v[3][k0] = a3;
+        *(derive_heavy_top_taylor_hv *)&v[3][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b3;
+        *(derive_heavy_top_taylor_hv *)&v[4][k0] = a4;
+        *(derive_heavy_top_taylor_hv *)&v[4][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b4;
+        *(derive_heavy_top_taylor_hv *)&v[5][k0] = a5;
+        *(derive_heavy_top_taylor_hv *)&v[5][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b5;
+        *(derive_heavy_top_taylor_hv *)&v[6][k0] = a6;
+        *(derive_heavy_top_taylor_hv *)&v[6][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b6;
+        *(derive_heavy_top_taylor_hv *)&v[7][k0] = a7;
+        *(derive_heavy_top_taylor_hv *)&v[7][k0 + DERIVE_HEAVY_TOP_TAYLOR_HW] = b7;
     }
     if (k0 < nb) {
         tk = *(const derive_heavy_top_taylor_hv *)(tau + k0);
-        for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_HEAVY_TOP_TAYLOR_HW; ++k)
-                a[j][k] = w[order][j];
-        for (n = order - 1; n >= 0; --n)
-            for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-                a[j] = a[j] * tk + w[n][j];
-        for (j = 0; j < DERIVE_HEAVY_TOP_TAYLOR_NW; ++j)
-            *(derive_heavy_top_taylor_hv *)&v[j][k0] = a[j];
+        a0 = w[order][0] - zero;
+        a1 = w[order][1] - zero;
+        a2 = w[order][2] - zero;
+        a3 = w[order][3] - zero;
+        a4 = w[order][4] - zero;
+        a5 = w[order][5] - zero;
+        a6 = w[order][6] - zero;
+        a7 = w[order][7] - zero;
+        for (n = order - 1; n >= 0; --n) {
+            a0 = a0 * tk + w[n][0];
+            a1 = a1 * tk + w[n][1];
+            a2 = a2 * tk + w[n][2];
+            a3 = a3 * tk + w[n][3];
+            a4 = a4 * tk + w[n][4];
+            a5 = a5 * tk + w[n][5];
+            a6 = a6 * tk + w[n][6];
+            a7 = a7 * tk + w[n][7];
+        }
+        *(derive_heavy_top_taylor_hv *)&v[0][k0] = a0;
+        *(derive_heavy_top_taylor_hv *)&v[1][k0] = a1;
+        *(derive_heavy_top_taylor_hv *)&v[2][k0] = a2;
+        *(derive_heavy_top_taylor_hv *)&v[3][k0] = a3;
+        *(derive_heavy_top_taylor_hv *)&v[4][k0] = a4;
+        *(derive_heavy_top_taylor_hv *)&v[5][k0] = a5;
+        *(derive_heavy_top_taylor_hv *)&v[6][k0] = a6;
+        *(derive_heavy_top_taylor_hv *)&v[7][k0] = a7;
     }
 #else
     double a[DERIVE_HEAVY_TOP_TAYLOR_NW][DERIVE_HEAVY_TOP_TAYLOR_HW], tk[DERIVE_HEAVY_TOP_TAYLOR_HW];
