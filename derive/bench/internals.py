@@ -62,22 +62,20 @@ def batch_inputs(scenes, formulation: str):
 def own_batch_call(scenes):
     """A callable making the one C call ``simulate_batch`` makes for ``scenes`` (state maps,
     integration and outputs of every scene), its inputs prepared beforehand: what
-    ``simulate_batch`` costs without its Python."""
-    from derive.sim import auto
-    from derive.runtime import catalogue
+    ``simulate_batch`` costs without its Python. The batch's own plan
+    (:func:`derive.sim.simulation.batch_plan`: its method, first formulation, inputs and
+    parameters) and its driver: a Taylor method's full-grid lanes where the batch takes them
+    (:meth:`ModelKernel.full_lanes`). (This took the method of the first scene alone before:
+    DOP853 where the batch ran Taylor.)"""
     from derive.sim import simulation as sim
-    from derive.runtime.integrate import ModelKernel
-    from derive.sim.scene import load_scene
 
-    scs = [load_scene(s) for s in scenes]
-    formulation, pole_check = auto.batch_plan(scs)[0]
-    desc = catalogue.describe((formulation, scs[0].symmetric, scs[0].effects))
-    method = sim.choose_method(scs[0])
-    kernel = ModelKernel.load(desc, method)
-    args = sim._settings(scs[0], method, kernel)
-    inputs = np.array([sim.inputs_of(sc) for sc in scs])
-    ps = np.array([sim.params_of(sc, desc) for sc in scs])
-    t = scs[0].t_out
+    bp = sim.batch_plan(scenes)
+    formulation, pole_check = bp.candidates[0]
+    desc, kernel, args = bp.kernel(formulation)
+    inputs, ps, t = bp.inputs, bp.params(desc), bp.t
+    lanes = kernel.full_lanes(len(bp.scenes))
+    if lanes is not None:
+        return lambda: lanes.simulate_batch(inputs, ps, t, args, pole_check, lanes=True)
     return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
 
 
