@@ -156,7 +156,7 @@ _EPS = float(np.finfo(float).eps)
 _FEW = 32  # samples below which a list beats NumPy's reductions
 
 
-def _result(desc, out, y, t, scene, method, nfev, p, finite: bool = False, integrals=None,
+def _result(desc, out, y, t, scene, method, nfev, finite: bool = False, integrals=None,
             made=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
     checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
@@ -347,10 +347,10 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
 def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Result:
     sc, t, c = pl.scene, pl.t, pl.candidates[0]
     desc = c.desc
-    out, y, p, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
+    out, y, _, nfev = _solve_scipy(desc, pl.scipy, inputs, _with(c, params), t, sc)
     _check_pole(desc, t, out[1], sc.simulate.rtol)
     # SciPy's solver did not check the outputs finite: _result does
-    return _result(desc, out, y, t, sc, pl.method, nfev, p, integrals=pl.integral_rows)
+    return _result(desc, out, y, t, sc, pl.method, nfev, integrals=pl.integral_rows)
 
 
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
@@ -419,13 +419,13 @@ def batch_results(bp: "BatchPlan", scene_of=None, integrals=None) -> list[Result
     for b, sc in enumerate(scs):
         if suspect[b]:
             _check_pole(desc, t, out[b, 1], sc.simulate.rtol)
-        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], ps[b], finite=True,
-                               integrals=integrals, made={k: v[b] for k, v in made.items()}))
-    if scene_of is not None:
-        for res, make in zip(results, scene_of):
+        res = _result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=integrals,
+                      made={k: v[b] for k, v in made.items()} if made else None)
+        if scene_of is not None:  # its scene made from its dict when first read
             d = res.__dict__
             del d["scene"]
-            d["_scene_of"] = make
+            d["_scene_of"] = scene_of[b]
+        results.append(res)
     return results
 
 

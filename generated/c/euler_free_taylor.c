@@ -1065,7 +1065,7 @@ static int derive_euler_free_taylor_lanes_run_taylor(long n_batch, double *ps, c
     const double t0 = t_out[0], t_end = t_out[n_out - 1];
     double h, tn, sc, a1, a2, *y0s = out ? y_work : y_final, *ob;
     const long ystride = out ? n_out * euler_free_NY : euler_free_NY;
-    long idx[DERIVE_EULER_FREE_TAYLOR_LANES], k_out[DERIVE_EULER_FREE_TAYLOR_LANES], kr[DERIVE_EULER_FREE_TAYLOR_LANES], next = 0;
+    long idx[DERIVE_EULER_FREE_TAYLOR_LANES], k_out[DERIVE_EULER_FREE_TAYLOR_LANES], kr[DERIVE_EULER_FREE_TAYLOR_LANES], kk, next = 0;
     int bad[DERIVE_EULER_FREE_TAYLOR_LANES], run[DERIVE_EULER_FREE_TAYLOR_LANES], go[DERIVE_EULER_FREE_TAYLOR_LANES], last[DERIVE_EULER_FREE_TAYLOR_LANES], i, j, k, l, left = 0;
     derive_stats *sl;
     for (l = 0; l < DERIVE_EULER_FREE_TAYLOR_LANES; ++l) {
@@ -1225,8 +1225,9 @@ static int derive_euler_free_taylor_lanes_run_taylor(long n_batch, double *ps, c
                 for (k = 0; k <= order; ++k)
                     *q++ = u[2][k][l];
                 sn[l] += DERIVE_EULER_FREE_TAYLOR_LREC(order);
-                while (kr[l] < n_out && t_out[kr[l]] <= tn)
-                    ++kr[l];
+                for (kk = kr[l]; kk < n_out && t_out[kk] <= tn; ++kk)
+                    ;
+                kr[l] = kk;
             }
             for (i = 0; i < euler_free_NY; ++i) {
                 y[i][l] = yn[i][l];

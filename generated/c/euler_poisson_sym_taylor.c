@@ -1233,7 +1233,7 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
     const double t0 = t_out[0], t_end = t_out[n_out - 1];
     double h, tn, sc, a1, a2, *y0s = out ? y_work : y_final, *ob;
     const long ystride = out ? n_out * euler_poisson_sym_NY : euler_poisson_sym_NY;
-    long idx[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], k_out[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], kr[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], next = 0;
+    long idx[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], k_out[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], kr[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], kk, next = 0;
     int bad[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], run[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], go[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], last[DERIVE_EULER_POISSON_SYM_TAYLOR_LANES], i, j, k, l, left = 0;
     derive_stats *sl;
     for (l = 0; l < DERIVE_EULER_POISSON_SYM_TAYLOR_LANES; ++l) {
@@ -1453,8 +1453,9 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                 for (k = 0; k <= order; ++k)
                     *q++ = u[8][k][l];
                 sn[l] += DERIVE_EULER_POISSON_SYM_TAYLOR_LREC(order);
-                while (kr[l] < n_out && t_out[kr[l]] <= tn)
-                    ++kr[l];
+                for (kk = kr[l]; kk < n_out && t_out[kk] <= tn; ++kk)
+                    ;
+                kr[l] = kk;
             }
             for (i = 0; i < euler_poisson_sym_NY; ++i) {
                 y[i][l] = yn[i][l];
