@@ -147,15 +147,22 @@ class Plan:
         run does not classify its scene again; a sibling plan with its near plan's body and
         effect values takes its rows, unless its case may depend on the state)."""
         near, sc = self.near, self.scene
-        if near is not None and same_numbers(sc, near.scene) and not integrable.needs_area_level(*sc.body.moments):
+        if near is not None and same_numbers(sc, near.scene) and not integrals_depend_on_state(sc):
             return near.integral_rows
         return integral_rows_of(sc)
+
+
+def integrals_depend_on_state(scene: Scene) -> bool:
+    """Whether the scene's integrable case may depend on its initial state, not on its body and
+    effect values alone (a Goryachev–Chaplygin body: the case holds on L·n = 0 only): scenes
+    that differ only in their start then may not share :func:`integral_rows_of`."""
+    return integrable.needs_area_level(*scene.body.moments)
 
 
 def _integrals_key(scene: Scene) -> tuple:
     # The case depends on the body and the effects' numbers, and for a Goryachev–Chaplygin body
     # on whether the state is on L·n = 0 (a cheap test): classified once per body and level.
-    level = integrable.on_area_level(scene) if integrable.needs_area_level(*scene.body.moments) else None
+    level = integrable.on_area_level(scene) if integrals_depend_on_state(scene) else None
     return (scene.body, tuple((k, v.effect, tuple(v._values.values())) for k, v in scene.tables.items()),
             level)
 

@@ -6,8 +6,9 @@ no derivation, optionally with new initial values or parameters of the same shap
 :meth:`~Prepared.run_batch` runs N such variations in one batch call (arrays of initial values
 and parameters, checked as arrays: no scene per trajectory).
 
-:func:`family_batch` runs scene dicts that differ only in their initial numbers (a family) as one
-prepared batch, for ``derive.simulate_batch``.
+:func:`family_batch` and :func:`family_results` run scene dicts that differ only in their initial
+numbers (a family) as one prepared batch, for ``derive.simulate_batch`` with and without
+``outputs``.
 
 Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`,
 :class:`derive.sim.batch.BatchResult`.
@@ -24,7 +25,6 @@ from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
 from derive.sim.scene import dict_key, load_scene
-from derive.symbolic import integrable
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
@@ -249,8 +249,9 @@ def family_batch(scenes, outputs):
 
     Returns None for anything else, and when the prepared batch raises SceneError or
     IntegrationError: the caller then reads the scenes one by one, and raises the error as it
-    names it (the scene-by-scene batch runs again). About 2.4 us a dict (1.4 us its pickle),
-    where reading it takes 12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
+    names it (the scene-by-scene batch runs again). The family check takes about 1.9 us a dict
+    (0.9 us its pickle), where reading it takes 12 us (the bench's 1000 tops:
+    ``simulation.batch_plan``)."""
     family = _family(scenes)
     if family is None:
         return None
@@ -275,7 +276,7 @@ def family_results(scenes):
     try:
         prepared = Prepared(first)
         sc = prepared.plan.scene
-        if integrable.needs_area_level(*sc.body.moments):
+        if plan.integrals_depend_on_state(sc):
             return None
         bp = _PreparedBatch.of(prepared, dict(zip(keys, columns)), {})
         rest = copy.deepcopy({k: v for k, v in first.items() if k != "initial"})  # (as called)

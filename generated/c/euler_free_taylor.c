@@ -448,8 +448,9 @@ static inline double derive_euler_free_taylor_step(double n1, double n2, int q1,
  * to it), a block of samples at a time: the states into y_out, the outputs into out
  * (out[j*n_out + k], as they come: not yet canonical or checked), *k_io past them. DERIVE_OK,
  * or the failure at the first sample with a non-finite state (st says where, *k_io is its
- * block's first). The scalar solver calls it at every step; the lanes' full-grid driver at
- * every step of a lane, with the lane's series copied out: the same numbers. */
+ * block's first). The scalar solver calls it at every step; the lanes drivers with a lane's
+ * series copied out (the full grid's at every step of a lane, the final-only one at a lane's
+ * last step): the same numbers. */
 static int derive_euler_free_taylor_dense(double u[][EULER_FREE_TAYLOR_MAX_ORDER + 1], int order, double t, double h, double tn, double fac,
         double rtol, double floor_, const double *p, const double *t_out, long n_out, long *k_io,
         double *y_out, double *out, derive_stats *st)
@@ -940,37 +941,29 @@ static void derive_euler_free_taylor_jet_lanes(const double *t, double y[][DERIV
     }
 }
 
-/* The last step of lane l of the taylor lanes: its series copied out (the scalar layout)
- * and the scalar driver's last sample made of them, as derive_euler_free_taylor_solve_taylor makes it at
- * t_end (the outputs' series at tau = h, or the output map where they fail their test), then
- * canonical and checked as derive_euler_free_taylor_final_outputs_taylor does. */
+/* The last step of lane l of the taylor lanes (from t, of length h, to t_end): the series
+ * the dense output reads copied out (the scalar layout) and the scalar driver's last sample
+ * made of them by its own dense output (derive_euler_free_taylor_dense at the times t0, t_end, as
+ * derive_euler_free_taylor_final_outputs_taylor asks for it), then canonical and checked as there. */
 static int derive_euler_free_taylor_lanes_last_taylor(double u[][EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_LANES], int lane, int order,
-        double h, double fac, double rtol, double floor_, double t_end, const double *p, double *y,
-        double *out, derive_stats *st)
+        double t, double h, double fac, double rtol, double floor_, double t0, double t_end,
+        const double *p, double *y, double *out, derive_stats *st)
 {
-    double us[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW], v[DERIVE_EULER_FREE_TAYLOR_NV];
-    double vb[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KB], hs[DERIVE_EULER_FREE_TAYLOR_HW] = {0.0};
-    int i, k, series;
-    hs[0] = h;  /* (the block's Horner reads HW at a time) */
-    for (i = 0; i < DERIVE_EULER_FREE_TAYLOR_NODES; ++i)
-        for (k = 0; k <= order; ++k)
-            us[i][k] = u[i][k][lane];
-    derive_euler_free_taylor_jet_outputs(p, order, us, w);
-    series = derive_euler_free_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    derive_euler_free_taylor_horner_block(w, order, 1, hs, vb);
-    derive_euler_free_taylor_trig_block(1, vb);
-    for (i = 0; i < DERIVE_EULER_FREE_TAYLOR_NV; ++i)
-        v[i] = vb[i][0];
-    for (i = 0; i < euler_free_NY; ++i)
-        if (!isfinite(v[i]))
-            return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_end, i);
-    memcpy(y, v, sizeof(double) * euler_free_NY);
-    if (series)
-        derive_euler_free_taylor_outputs_block(1, &t_end, vb, p,
-            out + 0, out + 1, out + 2, out + 3,
-            out + 4);
-    else
-        euler_free_observables(t_end, v, p, out);
+    double us[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], y2[2 * euler_free_NY], o2[2 * euler_free_NOBS];
+    const double t2[2] = {t0, t_end};
+    long k1 = 1;
+    int j, k, rc;
+    for (k = 0; k <= order; ++k)
+        us[0][k] = u[0][k][lane];
+    for (k = 0; k <= order; ++k)
+        us[1][k] = u[1][k][lane];
+    for (k = 0; k <= order; ++k)
+        us[2][k] = u[2][k][lane];
+    if ((rc = derive_euler_free_taylor_dense(us, order, t, h, t_end, fac, rtol, floor_, p, t2, 2, &k1, y2, o2, st)))
+        return rc;
+    memcpy(y, y2 + euler_free_NY, sizeof(double) * euler_free_NY);
+    for (j = 0; j < euler_free_NOBS; ++j)
+        out[j] = o2[2 * j + 1];
     return euler_free_outputs_finite(1, &t_end, out, st);
 }
 
@@ -1200,8 +1193,8 @@ static int derive_euler_free_taylor_lanes_run_taylor(long n_batch, double *ps, c
             tn = last[l] ? t_end : t[l] + hl[l];
             if (!out) {
                 if (last[l]) {
-                    derive_euler_free_taylor_lanes_last_taylor(u, l, order, hl[l], fac, rtol, floor_, t_end, p[l],
-                            y_final + idx[l] * euler_free_NY, out_final + idx[l] * euler_free_NOBS, sl);
+                    derive_euler_free_taylor_lanes_last_taylor(u, l, order, t[l], hl[l], fac, rtol, floor_, t0, t_end,
+                            p[l], y_final + idx[l] * euler_free_NY, out_final + idx[l] * euler_free_NOBS, sl);
                     continue;
                 }
             }
