@@ -82,7 +82,7 @@ static void wr(double x)
  * with TRIG, then the block's after trig_block and the block map computing those itself. */
 int main(void)
 {
-    static double vb[NV][KB], v1[NV][KB], ob[NOBS][KB], o1[NOBS][KB], vt[NV][KB], ot[NOBS][KB],
+    static double vb[NV][KO], v1[NV][KO], ob[NOBS][KB], o1[NOBS][KB], vt[NV][KO], ot[NOBS][KB],
         of[NOBS][KB];
     double p[NP], y[NV], tb[KB], ref[NOBS];
     long n, s, k0;
@@ -138,7 +138,7 @@ def _harness(tmp_path, name, flags, model, d):
     rows = ", ".join(f"(o)[{j}]" for j in range(nobs))
     return compile_harness(tmp_path, flags, name,
         f'#include "{m}.c"\n#include "{m}_solvers.c"\n#include "{m}_taylor.c"\n'
-        f"#define NV {up}NV\n#define KB {up}KB\n#define NP {m}_NP\n#define NOBS {nobs}\n"
+        f"#define NV {up}NV\n#define KB {up}KB\n#define KO {up}KO\n#define NP {m}_NP\n#define NOBS {nobs}\n"
         f"#define BLOCK(nb, tb, v, p, o) {prefix}outputs_block(nb, tb, v, p, {rows})\n"
         + (f"#define TRIG {prefix}trig_block\n"
            f"#define BLOCK_TRIG(nb, tb, v, p, o) {prefix}outputs_block_trig(nb, tb, v, p, {rows})\n"

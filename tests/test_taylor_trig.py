@@ -26,7 +26,7 @@ HARNESS = r"""
  * cos from a block of 16 (the vectorised loop), from a block of 1 (the scalar epilogue). */
 int main(void)
 {
-    static double vb[P_NV][P_KB], v1[P_NV][P_KB];
+    static double vb[P_NV][P_KO], v1[P_NV][P_KO];
     double x[P_KB];
     unsigned long long bits;
     int n = 0, k;
@@ -60,7 +60,7 @@ int main(void)
 def _harness(tmp_path, flags, name):
     up = PREFIX.upper()
     return compile_harness(tmp_path, flags, name,
-                           f"#define P_NV {up}NV\n#define P_KB {up}KB\n#define P_NW {up}NW\n"
+                           f"#define P_NV {up}NV\n#define P_KB {up}KB\n#define P_KO {up}KO\n#define P_NW {up}NW\n"
                            f"#define TRIG_BLOCK {PREFIX}trig_block\n" + HARNESS)
 
 

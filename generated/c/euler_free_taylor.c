@@ -126,16 +126,19 @@ static int derive_euler_free_taylor_outputs_converged(double w[][DERIVE_EULER_FR
 /* Every column of w at the nb times tau of a block of samples (nb <= DERIVE_EULER_FREE_TAYLOR_KB), by
  * Horner's scheme: the samples' chains side by side (one alone is bound by the latency of its
  * multiply-adds), each in the scheme's own order, so a sample's numbers do not depend on its
- * block. v[c][k]: column c at sample k; past the NW columns, room for the sin and cos of the
- * states that stay pointwise (derive_euler_free_taylor_trig_block; DERIVE_EULER_FREE_TAYLOR_NV values per sample).
+ * block. v[c][at + k]: column c at sample k; past the NW columns, room for the sin and cos of
+ * the states that stay pointwise (derive_euler_free_taylor_trig_block; DERIVE_EULER_FREE_TAYLOR_NV values per sample).
  * DERIVE_EULER_FREE_TAYLOR_HW samples at a time, their NW sums in registers (in memory, each pass over the
- * block reloaded what the previous one had just stored); tau is read up to a multiple of HW.
+ * block reloaded what the previous one had just stored); tau is read, and v written, up to a
+ * multiple of HW.
  * Under GNU C the HW samples are one vector (GNU C's vector type: one register with AVX-512):
  * as a loop over 4 samples, gcc peeled it into scalar chains (the vector builds leave the
  * straight-line vectoriser off, see derive.runtime.cbuild), and this Horner took a fifth of
  * the full batch's time. A multiply then an add either way, never fused: the same numbers. */
 #define DERIVE_EULER_FREE_TAYLOR_KB 16
 #define DERIVE_EULER_FREE_TAYLOR_NV (DERIVE_EULER_FREE_TAYLOR_NW + 0)
+/* The samples of a block of the output map: DERIVE_EULER_FREE_TAYLOR_KO, those of many steps (derive_euler_free_taylor_samples). */
+#define DERIVE_EULER_FREE_TAYLOR_KO 128
 #if defined(__AVX512F__)
 #define DERIVE_EULER_FREE_TAYLOR_HW 8
 #else
@@ -145,7 +148,7 @@ static int derive_euler_free_taylor_outputs_converged(double w[][DERIVE_EULER_FR
 typedef double derive_euler_free_taylor_hv __attribute__((vector_size(8 * DERIVE_EULER_FREE_TAYLOR_HW), aligned(8), may_alias));
 #endif
 static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_TAYLOR_NW], int order, int nb, const double *tau,
-                                double v[][DERIVE_EULER_FREE_TAYLOR_KB])
+                                double v[][DERIVE_EULER_FREE_TAYLOR_KO], int at)
 {
 #if defined(__GNUC__)
     /* two vectors at a time while the second holds a sample: a column's chain alone waits on
@@ -171,12 +174,12 @@ static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_T
             a2 = a2 * tk + w[n][2];
             b2 = b2 * tl + w[n][2];
         }
-        *(derive_euler_free_taylor_hv *)&v[0][k0] = a0;
-        *(derive_euler_free_taylor_hv *)&v[0][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b0;
-        *(derive_euler_free_taylor_hv *)&v[1][k0] = a1;
-        *(derive_euler_free_taylor_hv *)&v[1][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b1;
-        *(derive_euler_free_taylor_hv *)&v[2][k0] = a2;
-        *(derive_euler_free_taylor_hv *)&v[2][k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b2;
+        *(derive_euler_free_taylor_hv *)&v[0][at + k0] = a0;
+        *(derive_euler_free_taylor_hv *)&v[0][at + k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b0;
+        *(derive_euler_free_taylor_hv *)&v[1][at + k0] = a1;
+        *(derive_euler_free_taylor_hv *)&v[1][at + k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b1;
+        *(derive_euler_free_taylor_hv *)&v[2][at + k0] = a2;
+        *(derive_euler_free_taylor_hv *)&v[2][at + k0 + DERIVE_EULER_FREE_TAYLOR_HW] = b2;
     }
     if (k0 < nb) {
         tk = *(const derive_euler_free_taylor_hv *)(tau + k0);
@@ -188,9 +191,9 @@ static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_T
             a1 = a1 * tk + w[n][1];
             a2 = a2 * tk + w[n][2];
         }
-        *(derive_euler_free_taylor_hv *)&v[0][k0] = a0;
-        *(derive_euler_free_taylor_hv *)&v[1][k0] = a1;
-        *(derive_euler_free_taylor_hv *)&v[2][k0] = a2;
+        *(derive_euler_free_taylor_hv *)&v[0][at + k0] = a0;
+        *(derive_euler_free_taylor_hv *)&v[1][at + k0] = a1;
+        *(derive_euler_free_taylor_hv *)&v[2][at + k0] = a2;
     }
 #else
     double a[DERIVE_EULER_FREE_TAYLOR_NW][DERIVE_EULER_FREE_TAYLOR_HW], tk[DERIVE_EULER_FREE_TAYLOR_HW];
@@ -207,7 +210,7 @@ static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_T
                     a[j][k] = a[j][k] * tk[k] + w[n][j];
         for (j = 0; j < DERIVE_EULER_FREE_TAYLOR_NW; ++j)
             for (k = 0; k < DERIVE_EULER_FREE_TAYLOR_HW; ++k)
-                v[j][k0 + k] = a[j][k];
+                v[j][at + k0 + k] = a[j][k];
     }
 #endif
 }
@@ -215,7 +218,7 @@ static void derive_euler_free_taylor_horner_block(double w[][DERIVE_EULER_FREE_T
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
  * the columns: derive_euler_free_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
-static inline void derive_euler_free_taylor_trig_block(int nb, double v[][DERIVE_EULER_FREE_TAYLOR_KB])
+static inline void derive_euler_free_taylor_trig_block(int nb, double v[][DERIVE_EULER_FREE_TAYLOR_KO])
 {
     (void)nb;
     (void)v;
@@ -252,7 +255,7 @@ static inline double derive_euler_free_taylor_select(uint64_t m, double a, doubl
 #else
 #define DERIVE_EULER_FREE_TAYLOR_NOINLINE
 #endif
-static DERIVE_EULER_FREE_TAYLOR_NOINLINE void derive_euler_free_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_EULER_FREE_TAYLOR_KB],
+static DERIVE_EULER_FREE_TAYLOR_NOINLINE void derive_euler_free_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_EULER_FREE_TAYLOR_KO],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4)
@@ -278,14 +281,14 @@ static DERIVE_EULER_FREE_TAYLOR_NOINLINE void derive_euler_free_taylor_outputs_b
 }
 
 
-/* Every state of the nb samples in v finite? The bit test of euler_free_outputs_finite over the
+/* Every state of the nb samples in v from column at finite? The bit test of euler_free_outputs_finite over the
  * block (a loop gcc vectorises), where a comparison per value left a branch each. */
-static int derive_euler_free_taylor_states_finite(int nb, double v[][DERIVE_EULER_FREE_TAYLOR_KB])
+static int derive_euler_free_taylor_states_finite(int at, int nb, double v[][DERIVE_EULER_FREE_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;
     int i, k;
     for (i = 0; i < euler_free_NY; ++i)
-        for (k = 0; k < nb; ++k) {
+        for (k = at; k < at + nb; ++k) {
             memcpy(&bits, &v[i][k], sizeof bits);
             carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
         }
@@ -442,73 +445,107 @@ static inline double derive_euler_free_taylor_step(double n1, double n2, int q1,
     return fac * (y1 < y2 ? y1 : y2);
 }
 
+/* The samples whose states are made and whose outputs are not yet: v[c][k] is column c of
+ * sample k0 + k, k < n (as derive_euler_free_taylor_horner_block leaves them). The output map runs over
+ * DERIVE_EULER_FREE_TAYLOR_KO of them at a time, many steps' samples (derive_euler_free_taylor_outputs_flush): called per step
+ * (a dozen samples), a quarter of its vectors were padding, and it set up its constants at
+ * every step (the bench's 1000 tops, every output: 39.0 -> 35.5 ms in C). */
+typedef struct {
+    double v[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KO];
+    long k0;
+    int n;
+} derive_euler_free_taylor_samples;
+
+/* The outputs of the samples held in sa, into out (out[j*n_out + k], as they come: not yet
+ * canonical or checked); sa then holds none. A whole number of vectors where the rows have
+ * room, so that the map's loop has no scalar tail (gcc vectorises it by HW): the samples past
+ * n are copies of the last (finite, and within the angles' range where it is) written where
+ * later samples go, which their own flush writes again (a failure before that leaves them as
+ * it leaves every sample after it: unspecified). */
+static void derive_euler_free_taylor_outputs_flush(derive_euler_free_taylor_samples *sa, const double *p, const double *t_out, long n_out,
+        double *out)
+{
+    const long k0 = sa->k0;
+    int mb = (DERIVE_EULER_FREE_TAYLOR_HW - 1 + sa->n) / DERIVE_EULER_FREE_TAYLOR_HW * DERIVE_EULER_FREE_TAYLOR_HW, c, k;
+    if (sa->n == 0)
+        return;
+    if (k0 + mb > n_out)
+        mb = sa->n;
+    for (c = 0; c < DERIVE_EULER_FREE_TAYLOR_NV; ++c)
+        for (k = sa->n; k < mb; ++k)
+            sa->v[c][k] = sa->v[c][sa->n - 1];
+    sa->n = 0;
+    derive_euler_free_taylor_outputs_block(mb, t_out + k0, sa->v, p,
+        out + k0 + 0 * n_out, out + k0 + 1 * n_out, out + k0 + 2 * n_out, out + k0 + 3 * n_out,
+        out + k0 + 4 * n_out);
+}
+
 /* The dense output of one step (from t, of length h, to tn) with the outputs: the samples from
  * *k_io on with t_out <= tn (the one at tn: tau = h exactly) from the series u (the states'
  * through order, the right-hand side's nodes through order - 1; the outputs' series are added
- * to it), a block of samples at a time: the states into y_out, the outputs into out
- * (out[j*n_out + k], as they come: not yet canonical or checked), *k_io past them. DERIVE_OK,
- * or the failure at the first sample with a non-finite state (st says where, *k_io is its
- * block's first). The scalar solver calls it at every step; the lanes drivers with a lane's
- * series copied out (the full grid's at every step of a lane, the final-only one at a lane's
- * last step): the same numbers. */
+ * to it), a block of samples at a time: the states into y_out, and into sa, whose outputs the
+ * caller has made (derive_euler_free_taylor_outputs_flush) once sa is full and when it is done; *k_io past them.
+ * The samples follow sa's, every step's in turn. DERIVE_OK, or the failure at the first sample
+ * with a non-finite state (st says where, *k_io is its block's first; sa holds the samples
+ * before it). The scalar solver calls it at every step; the lanes drivers with a lane's series
+ * copied out (the full grid's at every step of a lane, the final-only one at a lane's last
+ * step): the same numbers. */
 static int derive_euler_free_taylor_dense(double u[][EULER_FREE_TAYLOR_MAX_ORDER + 1], int order, double t, double h, double tn, double fac,
         double rtol, double floor_, const double *p, const double *t_out, long n_out, long *k_io,
-        double *y_out, double *out, derive_stats *st)
+        double *y_out, double *out, derive_euler_free_taylor_samples *sa, derive_stats *st)
 {
-    double w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW];
-    double vb[DERIVE_EULER_FREE_TAYLOR_NV][DERIVE_EULER_FREE_TAYLOR_KB], taub[DERIVE_EULER_FREE_TAYLOR_KB];
+    double w[EULER_FREE_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_FREE_TAYLOR_NW], taub[DERIVE_EULER_FREE_TAYLOR_KB];
     long k_out = *k_io;
-    int series, nb, kb, bad, i, j;
+    int series, nb, kb, bad, at, i, j;
     derive_euler_free_taylor_jet_outputs(p, order, u, w);
     series = derive_euler_free_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-    (void)series;  /* (read only where SIMULATE is defined) */
+#ifdef DERIVE_EULER_FREE_SIMULATE
+    if (!series)  /* (this step's samples leave sa: those before have their outputs first) */
+        derive_euler_free_taylor_outputs_flush(sa, p, t_out, n_out, out);
+#else
+    (void)series;
+    (void)out;
+#endif
     while (k_out < n_out && t_out[k_out] <= tn) {
         /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
         for (nb = 0; nb < DERIVE_EULER_FREE_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
             taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
         for (kb = nb; kb % DERIVE_EULER_FREE_TAYLOR_HW; ++kb)
             taub[kb] = 0.0;  /* (the block's Horner reads HW at a time) */
-        derive_euler_free_taylor_horner_block(w, order, nb, taub, vb);
+        if (sa->n > 0 && (sa->n + DERIVE_EULER_FREE_TAYLOR_KB > DERIVE_EULER_FREE_TAYLOR_KO || sa->k0 + sa->n != k_out))
+            derive_euler_free_taylor_outputs_flush(sa, p, t_out, n_out, out);
+        if (sa->n == 0)
+            sa->k0 = k_out;
+        at = sa->n;
+        derive_euler_free_taylor_horner_block(w, order, nb, taub, sa->v, at);
         /* the states into y_out, up to the first sample with a non-finite one (looked for
          * only when the block has one) */
         kb = nb;
         bad = euler_free_NY;
-        if (!derive_euler_free_taylor_states_finite(nb, vb))
+        if (!derive_euler_free_taylor_states_finite(at, nb, sa->v))
             for (kb = 0; kb < nb; ++kb) {
-                for (bad = 0; bad < euler_free_NY && isfinite(vb[bad][kb]); ++bad)
+                for (bad = 0; bad < euler_free_NY && isfinite(sa->v[bad][at + kb]); ++bad)
                     ;
                 if (bad < euler_free_NY)
                     break;
             }
         for (j = 0; j < kb; ++j)
             for (i = 0; i < euler_free_NY; ++i)
-                y_out[(k_out + j) * euler_free_NY + i] = vb[i][j];
-        /* the outputs of those samples */
+                y_out[(k_out + j) * euler_free_NY + i] = sa->v[i][at + j];
+        /* the outputs of those samples: later, from sa */
 #ifdef DERIVE_EULER_FREE_SIMULATE
-        if (!series) {  /* the output map on the state, as the other methods do */
+        if (!series) {  /* the output map on the state, as the other methods do, now */
             double v[euler_free_NY], o[5];
             for (j = 0; j < kb; ++j) {
                 for (i = 0; i < euler_free_NY; ++i)
-                    v[i] = vb[i][j];
+                    v[i] = sa->v[i][at + j];
                 euler_free_observables(t_out[k_out + j], v, p, o);
                 for (i = 0; i < 5; ++i)
                     out[i * n_out + k_out + j] = o[i];
             }
         } else
 #endif
-        {
-            /* a whole number of vectors where the rows have room, so that the map's loop has
-             * no scalar tail (gcc vectorises it by HW; a step has a dozen samples): the
-             * samples past nb are made of the Horner's tau = 0 (the step's start, finite) and
-             * written where later samples go, which their own steps write again (a failure
-             * before that leaves them as it leaves every sample after it: unspecified) */
-            int mb = (DERIVE_EULER_FREE_TAYLOR_HW - 1 + kb) / DERIVE_EULER_FREE_TAYLOR_HW * DERIVE_EULER_FREE_TAYLOR_HW;
-            if (kb < nb || k_out + mb > n_out)
-                mb = kb;
-            derive_euler_free_taylor_outputs_block(mb, t_out + k_out, vb, p,
-                    out + k_out + 0 * n_out, out + k_out + 1 * n_out, out + k_out + 2 * n_out, out + k_out + 3 * n_out,
-                    out + k_out + 4 * n_out);
-        }
+            sa->n += kb;
         if (kb < nb) {
             *k_io = k_out;
             return derive_euler_free_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
@@ -541,12 +578,12 @@ static int derive_euler_free_taylor_control_taylor(double rtol, double atol, dou
     return order;
 }
 
-/* The solver; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at t_out[k],
- * with the sin, cos and exp calls from their series, as they come (not yet canonical or
- * checked). */
-static int derive_euler_free_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
+/* The solver's steps; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at
+ * t_out[k], with the sin, cos and exp calls from their series, as they come (not yet canonical
+ * or checked), except those of the samples left in sa. */
+static int derive_euler_free_taylor_steps_taylor(const double *y0, const double *p, const double *t_out,
         long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
-        derive_stats *st)
+derive_euler_free_taylor_samples *sa, derive_stats *st)
 {
     derive_stats local;
     double u[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1], y[euler_free_NY];
@@ -643,7 +680,7 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
 
         /* Dense output: the series itself at every requested time inside the step. */
         if (out && k_out < n_out && t_out[k_out] <= tn
-            && (i = derive_euler_free_taylor_dense(u, order, t, h, tn, fac, rtol, floor_, p, t_out, n_out, &k_out, y_out, out, st)))
+            && (i = derive_euler_free_taylor_dense(u, order, t, h, tn, fac, rtol, floor_, p, t_out, n_out, &k_out, y_out, out, sa, st)))
             return i;
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_euler_free_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * euler_free_NY)) >= 0)
@@ -664,6 +701,21 @@ static int derive_euler_free_taylor_solve_taylor(const double *y0, const double 
         if (last)
             return DERIVE_OK;
     }
+}
+
+/* The solver: its steps, then the outputs of the samples they left (those of every sample
+ * whose state was made, a failure's too). */
+static int derive_euler_free_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
+        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
+        derive_stats *st)
+{
+    derive_euler_free_taylor_samples sa;
+    int rc;
+    sa.n = 0;
+    rc = derive_euler_free_taylor_steps_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, out, &sa, st);
+    if (out)
+        derive_euler_free_taylor_outputs_flush(&sa, p, t_out, n_out, out);
+    return rc;
 }
 
 int euler_free_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
@@ -959,8 +1011,12 @@ static int derive_euler_free_taylor_lanes_last_taylor(double u[][EULER_FREE_TAYL
         us[1][k] = u[1][k][lane];
     for (k = 0; k <= order; ++k)
         us[2][k] = u[2][k][lane];
-    if ((rc = derive_euler_free_taylor_dense(us, order, t, h, t_end, fac, rtol, floor_, p, t2, 2, &k1, y2, o2, st)))
+    derive_euler_free_taylor_samples sa;
+    sa.n = 0;
+    rc = derive_euler_free_taylor_dense(us, order, t, h, t_end, fac, rtol, floor_, p, t2, 2, &k1, y2, o2, &sa, st);
+    if (rc)
         return rc;
+    derive_euler_free_taylor_outputs_flush(&sa, p, t2, 2, o2);
     memcpy(y, y2 + euler_free_NY, sizeof(double) * euler_free_NY);
     for (j = 0; j < euler_free_NOBS; ++j)
         out[j] = o2[2 * j + 1];
@@ -1009,9 +1065,11 @@ static int derive_euler_free_taylor_lanes_flush_taylor(const double *sb, int *sn
         double *out, derive_stats *sl)
 {
     double us[DERIVE_EULER_FREE_TAYLOR_NODES][EULER_FREE_TAYLOR_MAX_ORDER + 1];
+    derive_euler_free_taylor_samples sa;
     const double *q;
     int r, k, rc, n = *sn;
     *sn = 0;
+    sa.n = 0;
     for (r = 0; r < n; r += DERIVE_EULER_FREE_TAYLOR_LREC(order)) {
         q = sb + r + 6;
         for (k = 0; k <= order; ++k)
@@ -1021,14 +1079,16 @@ static int derive_euler_free_taylor_lanes_flush_taylor(const double *sb, int *sn
         for (k = 0; k <= order; ++k)
             us[2][k] = *q++;
         rc = derive_euler_free_taylor_dense(us, order, sb[r], sb[r + 1], sb[r + 2], fac, rtol, floor_, p, t_out, n_out, k_out,
-                y_out, out, sl);
+                y_out, out, &sa, sl);
         if (rc) {
+            derive_euler_free_taylor_outputs_flush(&sa, p, t_out, n_out, out);
             sl->nfev = (long)sb[r + 3];
             sl->nstep = (long)sb[r + 4];
             sl->naccept = (long)sb[r + 5];
             return rc;
         }
     }
+    derive_euler_free_taylor_outputs_flush(&sa, p, t_out, n_out, out);
     return DERIVE_OK;
 }
 
