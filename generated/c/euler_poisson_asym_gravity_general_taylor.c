@@ -405,8 +405,9 @@ static DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NOINLINE void derive_eul
 }
 
 
-/* Every state of the nb samples in v from column at finite? The bit test of euler_poisson_asym_gravity_general_outputs_finite over the
- * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+/* Every state of the nb samples in v from column at finite? The bit test of
+ * euler_poisson_asym_gravity_general_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
+ * left a branch each. */
 static int derive_euler_poisson_asym_gravity_general_taylor_states_finite(int at, int nb, double v[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;

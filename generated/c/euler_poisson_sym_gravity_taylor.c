@@ -382,8 +382,9 @@ static DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_NOINLINE void derive_euler_poisso
 }
 
 
-/* Every state of the nb samples in v from column at finite? The bit test of euler_poisson_sym_gravity_outputs_finite over the
- * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+/* Every state of the nb samples in v from column at finite? The bit test of
+ * euler_poisson_sym_gravity_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
+ * left a branch each. */
 static int derive_euler_poisson_sym_gravity_taylor_states_finite(int at, int nb, double v[][DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;

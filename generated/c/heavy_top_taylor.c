@@ -559,8 +559,9 @@ static int derive_heavy_top_taylor_trig_in_range(int nb, double v[][DERIVE_HEAVY
     return !(acc >> 63);
 }
 
-/* Every state of the nb samples in v from column at finite? The bit test of heavy_top_outputs_finite over the
- * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+/* Every state of the nb samples in v from column at finite? The bit test of
+ * heavy_top_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
+ * left a branch each. */
 static int derive_heavy_top_taylor_states_finite(int at, int nb, double v[][DERIVE_HEAVY_TOP_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;

@@ -556,8 +556,9 @@ static int derive_reduced_u_sym_taylor_trig_in_range(int nb, double v[][DERIVE_R
     return !(acc >> 63);
 }
 
-/* Every state of the nb samples in v from column at finite? The bit test of reduced_u_sym_outputs_finite over the
- * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+/* Every state of the nb samples in v from column at finite? The bit test of
+ * reduced_u_sym_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
+ * left a branch each. */
 static int derive_reduced_u_sym_taylor_states_finite(int at, int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;

@@ -461,8 +461,9 @@ static DERIVE_RIGID_BODY_TAYLOR_NOINLINE void derive_rigid_body_taylor_outputs_b
 }
 
 
-/* Every state of the nb samples in v from column at finite? The bit test of rigid_body_outputs_finite over the
- * block (a loop gcc vectorises), where a comparison per value left a branch each. */
+/* Every state of the nb samples in v from column at finite? The bit test of
+ * rigid_body_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
+ * left a branch each. */
 static int derive_rigid_body_taylor_states_finite(int at, int nb, double v[][DERIVE_RIGID_BODY_TAYLOR_KO])
 {
     uint64_t bits, carry = 0;
