@@ -232,6 +232,52 @@ def test_every_output_of_a_batch_equals_the_single_run_bit_for_bit():
             np.testing.assert_array_equal(a[k], b[k], err_msg=k)
 
 
+def _kovalevskaya(k: int) -> dict:
+    sc = _scene_dict(ROOT / "scenes" / "kovalevskaya_top.toml")
+    sc["simulate"] = {**sc.get("simulate", {}), "t_end": 2.0, "samples": 41}
+    sc["initial"] = {**sc["initial"], "beta": 0.8 + 0.05 * k}
+    return sc
+
+
+def _tennis(k: int) -> dict:
+    sc = _scene_dict(ROOT / "scenes" / "tennis_racket.toml")
+    sc["simulate"] = {**sc.get("simulate", {}), "t_end": 2.0, "samples": 41}
+    sc["initial"] = {**sc["initial"], "beta": 0.8 + 0.05 * k}
+    return sc
+
+
+def _scene_dict(path) -> dict:
+    import tomllib
+
+    with open(path, "rb") as f:
+        return tomllib.load(f)
+
+
+@pytest.mark.parametrize("make", [
+    lambda k: {**_top(), "initial": {**_top()["initial"], "beta": 0.4 + 0.1 * k}},  # L3: an integral from L
+    _kovalevskaya,  # K: an integral from its formula
+    _tennis,  # none
+], ids=["lagrange", "kovalevskaya", "asymmetric"])
+def test_every_field_of_a_batch_result_is_the_single_runs(make):
+    """Each Result of ``simulate_batch`` (9 scenes: a Taylor batch runs in lanes) has the single
+    run's every field: outputs, state, integrals, statistics, model, effects and scene, whichever
+    way the batch makes its Results (every integral a component of L, or one from a formula)."""
+    scenes = [make(k) for k in range(9)]
+    batch = derive.simulate_batch(scenes)
+    assert len(batch) == 9
+    for sc, res in zip(scenes, batch):
+        single = derive.simulate(sc, formulation=res.formulation, method=res.method)
+        a, b = res.arrays(), single.arrays()
+        assert a.keys() == b.keys()
+        for k in a:
+            np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+        assert (res.model, res.effects, res.nfev) == (single.model, single.effects, single.nfev)
+        assert res.integrals.keys() == single.integrals.keys()
+        assert res.scene == load_scene(sc)  # (the single run's names its formulation and method)
+        for k in res.integrals:  # each Result's own arrays
+            assert not np.shares_memory(res.integrals[k], batch[0].integrals[k]) or res is batch[0]
+
+
 # ---------------------------------------------------------------------------------------------
 # warm path: no SymPy, no matplotlib
 
