@@ -1319,7 +1319,7 @@ static int derive_euler_poisson_sym_gravity_taylor_lanes_run_taylor(long n_batch
     double yn[euler_poisson_sym_gravity_NY][DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES], chk[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES], n1[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES], n2[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES], hl[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES], hs[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES];
     double sb[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES][DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LBUF], *q;  /* (out) the lanes' kept steps */
     int sn[DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES];
-    derive_euler_poisson_sym_gravity_taylor_lanes_v ys[euler_poisson_sym_gravity_NY];
+    derive_euler_poisson_sym_gravity_taylor_lanes_v ys0, ys1, ys2, ys3, ys4, ys5, ys6, ys7, ys8;
     const double t0 = t_out[0], t_end = t_out[n_out - 1];
     double h, tn, sc, a1, a2, *y0s = out ? y_work : y_final, *ob;
     const long ystride = out ? n_out * euler_poisson_sym_gravity_NY : euler_poisson_sym_gravity_NY;
@@ -1491,14 +1491,41 @@ static int derive_euler_poisson_sym_gravity_taylor_lanes_run_taylor(long n_batch
             hl[l] = h;
             go[l] = 1;
         }
-        /* every state's series at every lane's h, the states' Horner chains side by side */
-        for (i = 0; i < euler_poisson_sym_gravity_NY; ++i)
-            ys[i] = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[i][order]);
-        for (j = order - 1; j >= 0; --j)
-            for (i = 0; i < euler_poisson_sym_gravity_NY; ++i)
-                ys[i] = ys[i] * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(hl) + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[i][j]);
-        for (i = 0; i < euler_poisson_sym_gravity_NY; ++i)
-            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[i]) = ys[i];
+        /* every state's series at every lane's h, the states' Horner chains side by side, each
+         * state's vector a variable of its own (as an array indexed in the loop over the states,
+         * which the lanes' build does not peel, each step of a chain waited on a store) */
+        {
+            const derive_euler_poisson_sym_gravity_taylor_lanes_v hv = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(hl);
+            ys0 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][order]);
+            ys1 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][order]);
+            ys2 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][order]);
+            ys3 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][order]);
+            ys4 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][order]);
+            ys5 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][order]);
+            ys6 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][order]);
+            ys7 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][order]);
+            ys8 = DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][order]);
+            for (j = order - 1; j >= 0; --j) {
+                ys0 = ys0 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][j]);
+                ys1 = ys1 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][j]);
+                ys2 = ys2 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][j]);
+                ys3 = ys3 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][j]);
+                ys4 = ys4 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][j]);
+                ys5 = ys5 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][j]);
+                ys6 = ys6 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][j]);
+                ys7 = ys7 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][j]);
+                ys8 = ys8 * hv + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][j]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[0]) = ys0;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[1]) = ys1;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[2]) = ys2;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[3]) = ys3;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[4]) = ys4;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[5]) = ys5;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[6]) = ys6;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[7]) = ys7;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(yn[8]) = ys8;
+        }
         for (l = 0; l < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++l) {
             if (!go[l])
                 continue;

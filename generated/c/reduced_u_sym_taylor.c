@@ -1435,7 +1435,7 @@ static int derive_reduced_u_sym_taylor_lanes_run_taylor(long n_batch, double *ps
     double yn[reduced_u_sym_NY][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], chk[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], n1[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], n2[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], hl[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], hs[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
     double sb[DERIVE_REDUCED_U_SYM_TAYLOR_LANES][DERIVE_REDUCED_U_SYM_TAYLOR_LBUF], *q;  /* (out) the lanes' kept steps */
     int sn[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    derive_reduced_u_sym_taylor_lanes_v ys[reduced_u_sym_NY];
+    derive_reduced_u_sym_taylor_lanes_v ys0, ys1, ys2, ys3;
     const double t0 = t_out[0], t_end = t_out[n_out - 1];
     double h, tn, sc, a1, a2, *y0s = out ? y_work : y_final, *ob;
     const long ystride = out ? n_out * reduced_u_sym_NY : reduced_u_sym_NY;
@@ -1567,14 +1567,26 @@ static int derive_reduced_u_sym_taylor_lanes_run_taylor(long n_batch, double *ps
             hl[l] = h;
             go[l] = 1;
         }
-        /* every state's series at every lane's h, the states' Horner chains side by side */
-        for (i = 0; i < reduced_u_sym_NY; ++i)
-            ys[i] = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[i][order]);
-        for (j = order - 1; j >= 0; --j)
-            for (i = 0; i < reduced_u_sym_NY; ++i)
-                ys[i] = ys[i] * DERIVE_REDUCED_U_SYM_TAYLOR_LV(hl) + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[i][j]);
-        for (i = 0; i < reduced_u_sym_NY; ++i)
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[i]) = ys[i];
+        /* every state's series at every lane's h, the states' Horner chains side by side, each
+         * state's vector a variable of its own (as an array indexed in the loop over the states,
+         * which the lanes' build does not peel, each step of a chain waited on a store) */
+        {
+            const derive_reduced_u_sym_taylor_lanes_v hv = DERIVE_REDUCED_U_SYM_TAYLOR_LV(hl);
+            ys0 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[0][order]);
+            ys1 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[1][order]);
+            ys2 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[2][order]);
+            ys3 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[3][order]);
+            for (j = order - 1; j >= 0; --j) {
+                ys0 = ys0 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[0][j]);
+                ys1 = ys1 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[1][j]);
+                ys2 = ys2 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[2][j]);
+                ys3 = ys3 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[3][j]);
+            }
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[0]) = ys0;
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[1]) = ys1;
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[2]) = ys2;
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[3]) = ys3;
+        }
         for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
             if (!go[l])
                 continue;
