@@ -152,3 +152,40 @@ def test_an_invalid_first_scene_fails_as_the_scene_by_scene_batch_says():
     with pytest.raises(SceneError) as got:
         derive.simulate_batch(scenes, outputs="final")
     assert str(got.value) == str(want.value) and "body.I3" in str(got.value)
+
+
+@pytest.mark.parametrize("n", [1, 2, 999, 1000, 1001, 2001])
+def test_same_contents_tells_a_family_across_the_pickles_batches(n):
+    """derive.sim.scene.same_contents pickles all the dicts at once: the first's content
+    repeated in the list's layout (batches of 1000 items) is a yes, whatever n, and a single
+    difference anywhere, the first or the last of a batch included, is a no."""
+    from derive.sim.scene import same_contents
+
+    dicts = [copy.deepcopy(BASE) for _ in range(n)]
+    assert same_contents(dicts)
+    if n == 1:  # (nothing to differ from)
+        return
+    changes = (lambda d: d["body"].update(I1=1), lambda d: d["gravity"].update(l=-0.0),
+               lambda d: d.update(title="another top"),
+               lambda d: d.__setitem__("body", {"I3": 0.5, "I1": 1.0}))  # equal by ==, another order
+    for at in sorted({0, n // 2, min(999, n - 1), min(1000, n - 1), n - 1}):
+        for change in changes:
+            other = copy.deepcopy(dicts)
+            change(other[at])
+            assert not same_contents(other), (n, at)
+
+
+def test_a_family_past_the_pickles_batch_is_one():
+    """1001 dicts (the pickle's second batch of one item): still one family."""
+    scenes = family(1001)
+    got = prepared._family(scenes)
+    assert got is not None and got[3].shape == (6, 1001)
+
+
+def test_what_does_not_pickle_is_not_a_family():
+    from derive.sim.scene import same_contents
+
+    a = copy.deepcopy(BASE)
+    a["body"]["self"] = a["body"]  # a cycle
+    assert not same_contents([a, copy.deepcopy(a)])
+    assert not same_contents([{"f": lambda: 0}, {"f": lambda: 0}])

@@ -16,6 +16,7 @@ Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.si
 from __future__ import annotations
 
 import copy
+import itertools
 import math
 
 import numpy as np
@@ -24,7 +25,7 @@ from derive.errors import IntegrationError, SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
-from derive.sim.scene import dict_key, load_scene
+from derive.sim.scene import load_scene, same_contents
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
@@ -249,9 +250,10 @@ def family_batch(scenes, outputs):
 
     Returns None for anything else, and when the prepared batch raises SceneError or
     IntegrationError: the caller then reads the scenes one by one, and raises the error as it
-    names it (the scene-by-scene batch runs again). The family check takes about 1.9 us a dict
-    (0.9 us its pickle), where reading it takes 12 us (the bench's 1000 tops:
-    ``simulation.batch_plan``)."""
+    names it (the scene-by-scene batch runs again). The family check takes about 1.3 us a dict
+    (one pickle of them all, 0.45 us a dict: :func:`derive.sim.scene.same_contents`), 1.9 us
+    beside a batch's C call, which leaves the dicts out of the caches; reading each dict takes
+    12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
     family = _family(scenes)
     if family is None:
         return None
@@ -310,22 +312,19 @@ def _family(scenes):
     if type(start) is not dict or not start or not _FAMILY_KEYS.issuperset(start):
         return None
     keys = tuple(start)
-    rest = dict_key({**first, "initial": None})  # (its pickle: types and signed zeros apart)
-    if rest is None:
-        return None
-    rows = []
+    rows, rests = [], []
     for d in scenes:
         if type(d) is not dict:
             return None
         values = d.get("initial")
         if type(values) is not dict or tuple(values) != keys:
             return None
-        values = tuple(values.values())
-        if not _NUMBERS.issuperset(map(type, values)):
-            return None
-        if d is not first and dict_key({**d, "initial": None}) != rest:
-            return None
-        rows.append(values)
+        rows.append(tuple(values.values()))
+        rests.append({**d, "initial": None})
+    # the initial numbers all ints or floats (one pass over them all), and everything else the
+    # first dict's exactly (types and signed zeros apart: one pickle of all the rests)
+    if not _NUMBERS.issuperset(map(type, itertools.chain.from_iterable(rows))) or not same_contents(rests):
+        return None
     try:
         columns = np.array(rows, dtype=np.float64).T
     except OverflowError:  # an int past a double's range: the scene's own error, one by one

