@@ -3,6 +3,7 @@ runs W trajectories at once (W from the CPU it was built for: ``-march=native``)
 own steps. Each trajectory's state, outputs, status and statistics are the scalar final-only
 driver's (built with the default flags) bit for bit, failing lanes included, and
 ``derive.simulate_batch(..., outputs="final")`` with the Taylor method runs it."""
+import re
 import threading
 
 import numpy as np
@@ -90,14 +91,18 @@ RULES = {"body": {"I1": 1.0, "I3": 0.5},
 
 def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit():
     """The lanes' helpers of every rule (written on GNU C's vector types) against the scalar
-    driver's, on a user body whose jet has them all, in this CPU's width and the baseline's."""
+    driver's, on a user body whose jet has them all, in this CPU's width and the baseline's;
+    the products and quotients also as sums side by side in one loop (derive.codegen.taylor
+    ._fused)."""
     sc = [{**RULES, "initial": d["initial"]} for d in scenes(11)]
     bp = simulation.batch_plan(sc)
     formulation, pole = bp.candidates[0]
     desc, _, args = bp.kernel(formulation)
     source = desc.c_sources()[f"{desc.name}_taylor.c"]
+    fused = re.findall(r"s\d+_ ([-+])= ", source)
+    assert "+" in fused and "-" in fused  # a product and a quotient among the fused sums
     for rule in ("mul", "sqr", "div", "sqrt", "pow", "exp", "log", "atan2"):
-        assert f"tcl_{rule}(n" in source, rule
+        assert f"tcl_{rule}(n" in source or rule in ("mul", "div"), rule
     scalar, native = (ModelKernel.load(desc, bp.method, b) for b in ("portable", "lanes"))
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)

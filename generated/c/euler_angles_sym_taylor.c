@@ -1312,36 +1312,74 @@ static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[]
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_euler_angles_sym_taylor_tcl_sincos(n, u[1], u[6], u[7]);
-        derive_euler_angles_sym_taylor_tcl_sqr(n, u[6], u[8][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[9][n][lane_] = I1[lane_] * u[3][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[10][n][lane_] = I3[lane_] * u[5][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[11][n][lane_] = I3[lane_] * u[3][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[11], u[12][n]);
+        derive_euler_angles_sym_taylor_tcl_sincos(n, u[1], u[6], u[7]);
+        derive_euler_angles_sym_taylor_tcl_sqr(n, u[6], u[8][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[11][n]);
+            derive_euler_angles_sym_taylor_lanes_v s1_ = DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[4][n]);
+            derive_euler_angles_sym_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[9][n]);
+            derive_euler_angles_sym_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[11][n - j_]);
+                s1_ -= DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[14][n - j_]);
+                s2_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[9][n - j_]);
+                s3_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n - j_]);
+            }
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[12][n]) = s0_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[14][n]) = s1_ / DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[6][0]);
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[16][n]) = s2_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[19][n]) = s3_;
+        }
+        {  /* 2 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[6][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n]);
+            derive_euler_angles_sym_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[10][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n - j_]);
+                s1_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[10][n - j_]);
+            }
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[22][n]) = s0_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[26][n]) = s1_;
+        }
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[13][n][lane_] = u[10][n][lane_] + u[12][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_div(n, u[4], u[6], u[14]);
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[15][n][lane_] = x7[lane_] * u[14][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[9], u[16][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[17][n][lane_] = u[13][n][lane_] - 2 * u[16][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[15], u[17], u[18][n]);
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[3], u[19][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[20][n][lane_] = I1[lane_] * u[19][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[21][n][lane_] = -u[13][n][lane_] + u[20][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[6], u[3], u[22][n]);
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[22], u[21], u[23][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[15][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[17][n]);
+            derive_euler_angles_sym_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[22][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[21][n]);
+            derive_euler_angles_sym_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[8][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[9][n]);
+            derive_euler_angles_sym_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[8][0]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[15][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[17][n - j_]);
+                s1_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[22][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[21][n - j_]);
+                s2_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[9][n - j_]);
+                s3_ += DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[3][n - j_]);
+            }
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[18][n]) = s0_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[23][n]) = s1_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[25][n]) = s2_;
+            DERIVE_EULER_ANGLES_SYM_TAYLOR_LV(u[27][n]) = s3_;
+        }
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[24][n][lane_] = x7[lane_] * u[23][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[8], u[9], u[25][n]);
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[7], u[10], u[26][n]);
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[8], u[3], u[27][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)
             u[28][n][lane_] = I3[lane_] * u[27][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_ANGLES_SYM_TAYLOR_LANES; ++lane_)

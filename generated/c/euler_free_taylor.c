@@ -958,8 +958,24 @@ static void derive_euler_free_taylor_jet_lanes(const double *t, double y[][DERIV
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_euler_free_taylor_tcl_mul(n, u[1], u[2], u[3][n]);
-        derive_euler_free_taylor_tcl_mul(n, u[0], u[1], u[4][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_free_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_free_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_FREE_TAYLOR_LV(u[1][0]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n]);
+            derive_euler_free_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_FREE_TAYLOR_LV(u[0][0]) * DERIVE_EULER_FREE_TAYLOR_LV(u[1][n]);
+            derive_euler_free_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_FREE_TAYLOR_LV(u[0][0]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n]);
+            derive_euler_free_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_FREE_TAYLOR_LV(u[0][0]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_FREE_TAYLOR_LV(u[1][j_]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n - j_]);
+                s1_ += DERIVE_EULER_FREE_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_FREE_TAYLOR_LV(u[1][n - j_]);
+                s2_ += DERIVE_EULER_FREE_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n - j_]);
+                s3_ += DERIVE_EULER_FREE_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_FREE_TAYLOR_LV(u[2][n - j_]);
+            }
+            DERIVE_EULER_FREE_TAYLOR_LV(u[3][n]) = s0_;
+            DERIVE_EULER_FREE_TAYLOR_LV(u[4][n]) = s1_;
+            DERIVE_EULER_FREE_TAYLOR_LV(u[9][n]) = s2_;
+            DERIVE_EULER_FREE_TAYLOR_LV(u[11][n]) = s3_;
+        }
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)
             u[5][n][lane_] = I2[lane_] * u[3][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)
@@ -968,10 +984,8 @@ static void derive_euler_free_taylor_jet_lanes(const double *t, double y[][DERIV
             u[7][n][lane_] = u[5][n][lane_] - u[6][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)
             u[8][n][lane_] = 1.0/I1[lane_] * u[7][n][lane_];
-        derive_euler_free_taylor_tcl_mul(n, u[0], u[2], u[9][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)
             u[10][n][lane_] = I3[lane_] * u[9][n][lane_];
-        derive_euler_free_taylor_tcl_mul(n, u[0], u[2], u[11][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)
             u[12][n][lane_] = I1[lane_] * u[11][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_FREE_TAYLOR_LANES; ++lane_)

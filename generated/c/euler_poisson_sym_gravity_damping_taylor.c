@@ -1118,15 +1118,6 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_jet_lanes(const doub
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[1], u[2], u[9][n]);
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[10][n][lane_] = I1[lane_] * u[9][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[11][n][lane_] = I3[lane_] * u[9][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[12][n][lane_] = u[10][n][lane_] - u[11][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[13][n][lane_] = x0[lane_] * u[12][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[14][n][lane_] = x2[lane_] * u[4][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
@@ -1136,8 +1127,6 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_jet_lanes(const doub
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[17][n][lane_] = x0[lane_] * u[16][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[18][n][lane_] = u[13][n][lane_] + u[17][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[19][n][lane_] = x2[lane_] * u[3][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[20][n][lane_] = c[lane_] * u[1][n][lane_];
@@ -1145,10 +1134,89 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_jet_lanes(const doub
             u[21][n][lane_] = -u[19][n][lane_] - u[20][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[22][n][lane_] = x0[lane_] * u[21][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[0], u[2], u[23][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[30][n][lane_] = -c[lane_]/I3[lane_] * u[2][n][lane_];
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_damping_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[4][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[4][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[9][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[23][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[25][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[31][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_damping_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[5][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[5][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[3][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[3][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[5][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[5][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[3][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[3][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[32][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[34][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[35][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[37][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_damping_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[4][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[7][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[8][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[8][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[4][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[38][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[40][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[41][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[43][n]) = s3_;
+        }
+        {  /* 3 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_damping_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[6][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[6][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_damping_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[7][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[2][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[1][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[0][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[44][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[46][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LV(u[47][n]) = s2_;
+        }
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[10][n][lane_] = I1[lane_] * u[9][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[11][n][lane_] = I3[lane_] * u[9][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[12][n][lane_] = u[10][n][lane_] - u[11][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[13][n][lane_] = x0[lane_] * u[12][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
+            u[18][n][lane_] = u[13][n][lane_] + u[17][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[24][n][lane_] = I3[lane_] * u[23][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[0], u[2], u[25][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[26][n][lane_] = I1[lane_] * u[25][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
@@ -1158,29 +1226,15 @@ static void derive_euler_poisson_sym_gravity_damping_taylor_jet_lanes(const doub
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[29][n][lane_] = u[22][n][lane_] + u[28][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
-            u[30][n][lane_] = -c[lane_]/I3[lane_] * u[2][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[4], u[2], u[31][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[5], u[1], u[32][n]);
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[33][n][lane_] = u[31][n][lane_] - u[32][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[5], u[0], u[34][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[3], u[2], u[35][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[36][n][lane_] = u[34][n][lane_] - u[35][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[3], u[1], u[37][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[4], u[0], u[38][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[39][n][lane_] = u[37][n][lane_] - u[38][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[7], u[2], u[40][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[8], u[1], u[41][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[42][n][lane_] = u[40][n][lane_] - u[41][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[8], u[0], u[43][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[6], u[2], u[44][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[45][n][lane_] = u[43][n][lane_] - u[44][n][lane_];
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[6], u[1], u[46][n]);
-        derive_euler_poisson_sym_gravity_damping_taylor_tcl_mul(n, u[7], u[0], u[47][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_)
             u[48][n][lane_] = u[46][n][lane_] - u[47][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_DAMPING_TAYLOR_LANES; ++lane_) {

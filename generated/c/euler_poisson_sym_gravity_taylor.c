@@ -1108,7 +1108,79 @@ static void derive_euler_poisson_sym_gravity_taylor_jet_lanes(const double *t, d
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[1], u[2], u[9][n]);
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
+            u[14][n][lane_] = x1[lane_] * u[4][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
+            u[22][n][lane_] = x1[lane_] * u[3][n][lane_];
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[9][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[16][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[18][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[24][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[5][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[3][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[25][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[27][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[28][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[30][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s3_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[4][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n - j_]);
+                s3_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[8][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[31][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[33][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[34][n]) = s2_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[36][n]) = s3_;
+        }
+        {  /* 3 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_euler_poisson_sym_gravity_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s0_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s1_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n]);
+            derive_euler_poisson_sym_gravity_taylor_lanes_v s2_ = zero_ + DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][0]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[2][n - j_]);
+                s1_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[6][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[1][n - j_]);
+                s2_ += DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[7][j_]) * DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[0][n - j_]);
+            }
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[37][n]) = s0_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[39][n]) = s1_;
+            DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LV(u[40][n]) = s2_;
+        }
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[10][n][lane_] = I1[lane_] * u[9][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
@@ -1118,13 +1190,9 @@ static void derive_euler_poisson_sym_gravity_taylor_jet_lanes(const double *t, d
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[13][n][lane_] = x0[lane_] * u[12][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
-            u[14][n][lane_] = x1[lane_] * u[4][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[15][n][lane_] = u[13][n][lane_] + u[14][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[0], u[2], u[16][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[17][n][lane_] = I3[lane_] * u[16][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[0], u[2], u[18][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[19][n][lane_] = I1[lane_] * u[18][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
@@ -1132,31 +1200,17 @@ static void derive_euler_poisson_sym_gravity_taylor_jet_lanes(const double *t, d
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[21][n][lane_] = x0[lane_] * u[20][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
-            u[22][n][lane_] = x1[lane_] * u[3][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[23][n][lane_] = u[21][n][lane_] - u[22][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[4], u[2], u[24][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[5], u[1], u[25][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[26][n][lane_] = u[24][n][lane_] - u[25][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[5], u[0], u[27][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[3], u[2], u[28][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[29][n][lane_] = u[27][n][lane_] - u[28][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[3], u[1], u[30][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[4], u[0], u[31][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[32][n][lane_] = u[30][n][lane_] - u[31][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[7], u[2], u[33][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[8], u[1], u[34][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[35][n][lane_] = u[33][n][lane_] - u[34][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[8], u[0], u[36][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[6], u[2], u[37][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[38][n][lane_] = u[36][n][lane_] - u[37][n][lane_];
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[6], u[1], u[39][n]);
-        derive_euler_poisson_sym_gravity_taylor_tcl_mul(n, u[7], u[0], u[40][n]);
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_)
             u[41][n][lane_] = u[39][n][lane_] - u[40][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_EULER_POISSON_SYM_GRAVITY_TAYLOR_LANES; ++lane_) {

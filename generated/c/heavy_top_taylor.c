@@ -1328,37 +1328,65 @@ static void derive_heavy_top_taylor_jet_lanes(const double *t, double y[][DERIVE
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_heavy_top_taylor_tcl_sincos(n, u[1], u[6], u[7]);
-        derive_heavy_top_taylor_tcl_sqr(n, u[6], u[8][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[9][n][lane_] = I3[lane_] * u[5][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[10][n][lane_] = I3[lane_] * u[3][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[11][n][lane_] = I1[lane_] * u[3][n][lane_];
-        derive_heavy_top_taylor_tcl_div(n, u[4], u[6], u[12]);
+        derive_heavy_top_taylor_tcl_sincos(n, u[1], u[6], u[7]);
+        derive_heavy_top_taylor_tcl_sqr(n, u[3], u[14][n]);
+        derive_heavy_top_taylor_tcl_mul(n, u[9], u[3], u[21][n]);
+        derive_heavy_top_taylor_tcl_sqr(n, u[6], u[8][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_heavy_top_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_heavy_top_taylor_lanes_v s0_ = DERIVE_HEAVY_TOP_TAYLOR_LV(u[4][n]);
+            derive_heavy_top_taylor_lanes_v s1_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[14][n]);
+            derive_heavy_top_taylor_lanes_v s2_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[10][n]);
+            derive_heavy_top_taylor_lanes_v s3_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[11][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ -= DERIVE_HEAVY_TOP_TAYLOR_LV(u[6][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[12][n - j_]);
+                s1_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[14][n - j_]);
+                s2_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[10][n - j_]);
+                s3_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[7][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[11][n - j_]);
+            }
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[12][n]) = s0_ / DERIVE_HEAVY_TOP_TAYLOR_LV(u[6][0]);
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[15][n]) = s1_;
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[16][n]) = s2_;
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[17][n]) = s3_;
+        }
+        derive_heavy_top_taylor_tcl_mul(n, u[9], u[7], u[27][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[13][n][lane_] = x6[lane_] * u[12][n][lane_];
-        derive_heavy_top_taylor_tcl_sqr(n, u[3], u[14][n]);
-        derive_heavy_top_taylor_tcl_mul(n, u[7], u[14], u[15][n]);
-        derive_heavy_top_taylor_tcl_mul(n, u[7], u[10], u[16][n]);
-        derive_heavy_top_taylor_tcl_mul(n, u[7], u[11], u[17][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[18][n][lane_] = u[9][n][lane_] + u[16][n][lane_] - 2 * u[17][n][lane_];
-        derive_heavy_top_taylor_tcl_mul(n, u[13], u[18], u[19][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[20][n][lane_] = I1[lane_] * u[15][n][lane_];
-        derive_heavy_top_taylor_tcl_mul(n, u[9], u[3], u[21][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[22][n][lane_] = I3[lane_] * u[15][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[23][n][lane_] = u[20][n][lane_] - u[21][n][lane_] - u[22][n][lane_] + (n == 0 ? M[lane_]*g[lane_]*l[lane_] : 0.0);
-        derive_heavy_top_taylor_tcl_mul(n, u[6], u[23], u[24][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_heavy_top_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_heavy_top_taylor_lanes_v s0_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[13][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[18][n]);
+            derive_heavy_top_taylor_lanes_v s1_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[6][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[23][n]);
+            derive_heavy_top_taylor_lanes_v s2_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[8][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[11][n]);
+            derive_heavy_top_taylor_lanes_v s3_ = zero_ + DERIVE_HEAVY_TOP_TAYLOR_LV(u[8][0]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[3][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[13][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[18][n - j_]);
+                s1_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[6][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[23][n - j_]);
+                s2_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[8][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[11][n - j_]);
+                s3_ += DERIVE_HEAVY_TOP_TAYLOR_LV(u[8][j_]) * DERIVE_HEAVY_TOP_TAYLOR_LV(u[3][n - j_]);
+            }
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[19][n]) = s0_;
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[24][n]) = s1_;
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[26][n]) = s2_;
+            DERIVE_HEAVY_TOP_TAYLOR_LV(u[28][n]) = s3_;
+        }
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[25][n][lane_] = x6[lane_] * u[24][n][lane_];
-        derive_heavy_top_taylor_tcl_mul(n, u[8], u[11], u[26][n]);
-        derive_heavy_top_taylor_tcl_mul(n, u[9], u[7], u[27][n]);
-        derive_heavy_top_taylor_tcl_mul(n, u[8], u[3], u[28][n]);
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)
             u[29][n][lane_] = I3[lane_] * u[28][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_HEAVY_TOP_TAYLOR_LANES; ++lane_)

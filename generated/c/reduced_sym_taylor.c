@@ -1372,35 +1372,61 @@ static void derive_reduced_sym_taylor_jet_lanes(const double *t, double y[][DERI
         const double inv = 1.0 / (n + 1);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[4][n][lane_] = 1.0/2.0 * u[1][n][lane_];
-        derive_reduced_sym_taylor_tcl_sincos(n, u[4], u[5], u[6]);
-        derive_reduced_sym_taylor_tcl_sqr(n, u[6], u[7][n]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[8][n][lane_] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_sym_taylor_tcl_div(n, u[8], u[7], u[9]);
+        derive_reduced_sym_taylor_tcl_sincos(n, u[4], u[5], u[6]);
+        derive_reduced_sym_taylor_tcl_sincos(n, u[1], u[17], u[18]);
+        derive_reduced_sym_taylor_tcl_sqr(n, u[6], u[7][n]);
+        derive_reduced_sym_taylor_tcl_sqr(n, u[5], u[12][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_reduced_sym_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_reduced_sym_taylor_lanes_v s0_ = DERIVE_REDUCED_SYM_TAYLOR_LV(u[8][n]);
+            derive_reduced_sym_taylor_lanes_v s1_ = DERIVE_REDUCED_SYM_TAYLOR_LV(u[8][n]);
+            derive_reduced_sym_taylor_lanes_v s2_ = zero_ + DERIVE_REDUCED_SYM_TAYLOR_LV(u[12][0]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[5][n]);
+            derive_reduced_sym_taylor_lanes_v s3_ = zero_ + DERIVE_REDUCED_SYM_TAYLOR_LV(u[7][0]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[6][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ -= DERIVE_REDUCED_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[9][n - j_]);
+                s1_ -= DERIVE_REDUCED_SYM_TAYLOR_LV(u[12][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[13][n - j_]);
+                s2_ += DERIVE_REDUCED_SYM_TAYLOR_LV(u[12][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[5][n - j_]);
+                s3_ += DERIVE_REDUCED_SYM_TAYLOR_LV(u[7][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[6][n - j_]);
+            }
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[9][n]) = s0_ / DERIVE_REDUCED_SYM_TAYLOR_LV(u[7][0]);
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[13][n]) = s1_ / DERIVE_REDUCED_SYM_TAYLOR_LV(u[12][0]);
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[21][n]) = s2_;
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[25][n]) = s3_;
+        }
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[10][n][lane_] = x0[lane_]*x4[lane_] * u[9][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[11][n][lane_] = ((x0[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[10][n][lane_]);
-        derive_reduced_sym_taylor_tcl_sqr(n, u[5], u[12][n]);
-        derive_reduced_sym_taylor_tcl_div(n, u[8], u[12], u[13]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[14][n][lane_] = x4[lane_]*x5[lane_] * u[13][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[15][n][lane_] = ((x5[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[14][n][lane_]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[16][n][lane_] = u[11][n][lane_] + u[15][n][lane_];
-        derive_reduced_sym_taylor_tcl_sincos(n, u[1], u[17], u[18]);
-        derive_reduced_sym_taylor_tcl_mul(n, u[16], u[18], u[19][n]);
+        {  /* 3 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_reduced_sym_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_reduced_sym_taylor_lanes_v s0_ = zero_ + DERIVE_REDUCED_SYM_TAYLOR_LV(u[16][0]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[18][n]);
+            derive_reduced_sym_taylor_lanes_v s1_ = DERIVE_REDUCED_SYM_TAYLOR_LV(u[6][n]);
+            derive_reduced_sym_taylor_lanes_v s2_ = DERIVE_REDUCED_SYM_TAYLOR_LV(u[5][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_REDUCED_SYM_TAYLOR_LV(u[16][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[18][n - j_]);
+                s1_ -= DERIVE_REDUCED_SYM_TAYLOR_LV(u[21][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[22][n - j_]);
+                s2_ -= DERIVE_REDUCED_SYM_TAYLOR_LV(u[25][j_]) * DERIVE_REDUCED_SYM_TAYLOR_LV(u[26][n - j_]);
+            }
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[19][n]) = s0_;
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[22][n]) = s1_ / DERIVE_REDUCED_SYM_TAYLOR_LV(u[21][0]);
+            DERIVE_REDUCED_SYM_TAYLOR_LV(u[26][n]) = s2_ / DERIVE_REDUCED_SYM_TAYLOR_LV(u[25][0]);
+        }
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[20][n][lane_] = -u[19][n][lane_] + (n == 0 ? p_gamma[lane_]/I3[lane_] : 0.0);
-        derive_reduced_sym_taylor_tcl_mul(n, u[12], u[5], u[21][n]);
-        derive_reduced_sym_taylor_tcl_div(n, u[6], u[21], u[22]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[23][n][lane_] = -x10[lane_]*x9[lane_] * u[22][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[24][n][lane_] = ((x10[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[23][n][lane_]);
-        derive_reduced_sym_taylor_tcl_mul(n, u[7], u[6], u[25][n]);
-        derive_reduced_sym_taylor_tcl_div(n, u[5], u[25], u[26]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)
             u[27][n][lane_] = x8[lane_]*x9[lane_] * u[26][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_SYM_TAYLOR_LANES; ++lane_)

@@ -1279,14 +1279,27 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
             u[4][n][lane_] = u[1][n][lane_] + (n == 0 ? 1 : 0.0);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
             u[5][n][lane_] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_u_sym_taylor_tcl_div(n, u[5], u[4], u[6]);
+        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+            u[9][n][lane_] = u[1][n][lane_] + (n == 0 ? -1 : 0.0);
+        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+            u[16][n][lane_] = x4[lane_]*(2*E_prime[lane_]*I1[lane_] + (p_gamma[lane_]*p_gamma[lane_])) * u[1][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+            u[17][n][lane_] = -u[16][n][lane_] + (n == 0 ? p_alpha[lane_]*p_gamma[lane_]*x4[lane_] : 0.0);
+        {  /* 2 sums side by side, each in its rule's own order (the same numbers) */
+            int j_;
+            derive_reduced_u_sym_taylor_lanes_v s0_ = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[5][n]);
+            derive_reduced_u_sym_taylor_lanes_v s1_ = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[5][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ -= DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[4][j_]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[6][n - j_]);
+                s1_ -= DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[9][j_]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[10][n - j_]);
+            }
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[6][n]) = s0_ / DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[4][0]);
+            DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[10][n]) = s1_ / DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[9][0]);
+        }
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
             u[7][n][lane_] = x0[lane_]*x1[lane_] * u[6][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
             u[8][n][lane_] = ((x0[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[7][n][lane_]);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
-            u[9][n][lane_] = u[1][n][lane_] + (n == 0 ? -1 : 0.0);
-        derive_reduced_u_sym_taylor_tcl_div(n, u[5], u[9], u[10]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
             u[11][n][lane_] = -x1[lane_]*x2[lane_] * u[10][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
@@ -1296,10 +1309,6 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
         derive_reduced_u_sym_taylor_tcl_mul(n, u[13], u[1], u[14][n]);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
             u[15][n][lane_] = -u[14][n][lane_] + (n == 0 ? p_gamma[lane_]/I3[lane_] : 0.0);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
-            u[16][n][lane_] = x4[lane_]*(2*E_prime[lane_]*I1[lane_] + (p_gamma[lane_]*p_gamma[lane_])) * u[1][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
-            u[17][n][lane_] = -u[16][n][lane_] + (n == 0 ? p_alpha[lane_]*p_gamma[lane_]*x4[lane_] : 0.0);
         for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_) {
             u[0][n + 1][lane_] = u[13][n][lane_] * inv;
             u[1][n + 1][lane_] = u[3][n][lane_] * inv;

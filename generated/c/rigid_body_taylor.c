@@ -1208,14 +1208,6 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_rigid_body_taylor_tcl_sqr(n, u[1], u[7][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[2], u[8][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[0], u[9][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[3], u[10][n]);
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[11][n][lane_] = u[9][n][lane_] + u[10][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[12][n][lane_] = u[7][n][lane_] + u[8][n][lane_] + u[11][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[13][n][lane_] = 1.0/2.0 * u[4][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
@@ -1226,42 +1218,126 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             u[16][n][lane_] = 1.0/2.0 * u[5][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[17][n][lane_] = 1.0/2.0 * u[6][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[5], u[6], u[18][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[19][n][lane_] = 2 * u[0][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[19], u[1], u[20][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[2], u[3], u[21][n]);
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[23][n][lane_] = (n == 0 ? 1.0 : 0.0);
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[56][n][lane_] = c[lane_] * u[4][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[65][n][lane_] = c[lane_] * u[5][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[85][n][lane_] = c[lane_] * u[6][n][lane_];
+        derive_rigid_body_taylor_tcl_sqr(n, u[1], u[7][n]);
+        derive_rigid_body_taylor_tcl_sqr(n, u[2], u[8][n]);
+        derive_rigid_body_taylor_tcl_sqr(n, u[0], u[9][n]);
+        derive_rigid_body_taylor_tcl_sqr(n, u[3], u[10][n]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[5][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[19][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[2][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[19][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[2][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[5][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[19][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[2][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[19][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[2][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[18][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[20][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[21][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[27][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[1][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[4][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[13][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[14][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[1][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[4][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[13][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[14][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[28][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[30][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[31][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[32][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[15][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[13][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[14][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[15][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[15][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[13][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[14][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[15][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[5][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[33][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[35][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[36][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[37][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[13][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[16][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[17][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[16][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[13][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[3][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[16][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[17][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[16][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[1][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[39][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[40][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[41][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[43][n]) = s3_;
+        }
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[17][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[13][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[2][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[4][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[4][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[17][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[0][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[13][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[2][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[4][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[4][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[6][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[44][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[45][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[68][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[70][n]) = s3_;
+        }
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[11][n][lane_] = u[9][n][lane_] + u[10][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[12][n][lane_] = u[7][n][lane_] + u[8][n][lane_] + u[11][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[22][n][lane_] = u[20][n][lane_] + 2 * u[21][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[23][n][lane_] = (n == 0 ? 1.0 : 0.0);
-        derive_rigid_body_taylor_tcl_div(n, u[23], u[12], u[24]);
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[25][n][lane_] = u[11][n][lane_] - u[7][n][lane_] - u[8][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[24], u[25], u[26][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[19], u[2], u[27][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[1], u[3], u[28][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[29][n][lane_] = -u[27][n][lane_] + 2 * u[28][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[4], u[5], u[30][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[13], u[1], u[31][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[14], u[5], u[32][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[15], u[6], u[33][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[34][n][lane_] = -u[31][n][lane_] - u[32][n][lane_] - u[33][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[13], u[0], u[35][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[14], u[6], u[36][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[15], u[5], u[37][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[38][n][lane_] = u[35][n][lane_] + u[36][n][lane_] - u[37][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[13], u[3], u[39][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[16], u[0], u[40][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[17], u[1], u[41][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[42][n][lane_] = u[39][n][lane_] + u[40][n][lane_] - u[41][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[16], u[1], u[43][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[17], u[0], u[44][n]);
-        derive_rigid_body_taylor_tcl_mul(n, u[13], u[2], u[45][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[46][n][lane_] = u[43][n][lane_] + u[44][n][lane_] - u[45][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
@@ -1273,49 +1349,13 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[50][n][lane_] = x9[lane_] * u[49][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[51][n][lane_] = cy[lane_] * u[26][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[22], u[24], u[52][n]);
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[53][n][lane_] = cz[lane_] * u[52][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[54][n][lane_] = u[51][n][lane_] - u[53][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[55][n][lane_] = x15[lane_] * u[54][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[56][n][lane_] = c[lane_] * u[4][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[57][n][lane_] = -u[55][n][lane_] - u[56][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[58][n][lane_] = x9[lane_] * u[57][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[59][n][lane_] = u[50][n][lane_] + u[58][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[60][n][lane_] = cx[lane_] * u[26][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[24], u[29], u[61][n]);
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[62][n][lane_] = cz[lane_] * u[61][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[63][n][lane_] = -u[60][n][lane_] + u[62][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[64][n][lane_] = x15[lane_] * u[63][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[65][n][lane_] = c[lane_] * u[5][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[66][n][lane_] = -u[64][n][lane_] - u[65][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[67][n][lane_] = x16[lane_] * u[66][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[4], u[6], u[68][n]);
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[69][n][lane_] = I3[lane_] * u[68][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[4], u[6], u[70][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[71][n][lane_] = I1[lane_] * u[70][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[72][n][lane_] = u[69][n][lane_] - u[71][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[73][n][lane_] = x16[lane_] * u[72][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[74][n][lane_] = u[67][n][lane_] + u[73][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[75][n][lane_] = I1[lane_] * u[30][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
@@ -1324,18 +1364,62 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             u[77][n][lane_] = u[75][n][lane_] - u[76][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[78][n][lane_] = x18[lane_] * u[77][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[22], u[24], u[79][n]);
+        derive_rigid_body_taylor_tcl_div(n, u[23], u[12], u[24]);
+        {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
+            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            int j_;
+            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[24][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[25][n]);
+            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[22][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[24][n]);
+            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[24][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[29][n]);
+            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_RIGID_BODY_TAYLOR_LV(u[22][0]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[24][n]);
+            for (j_ = 1; j_ <= n; ++j_) {
+                s0_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[24][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[25][n - j_]);
+                s1_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[22][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[24][n - j_]);
+                s2_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[24][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[29][n - j_]);
+                s3_ += DERIVE_RIGID_BODY_TAYLOR_LV(u[22][j_]) * DERIVE_RIGID_BODY_TAYLOR_LV(u[24][n - j_]);
+            }
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[26][n]) = s0_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[52][n]) = s1_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[61][n]) = s2_;
+            DERIVE_RIGID_BODY_TAYLOR_LV(u[79][n]) = s3_;
+        }
+        derive_rigid_body_taylor_tcl_mul(n, u[24], u[29], u[81][n]);
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[51][n][lane_] = cy[lane_] * u[26][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[53][n][lane_] = cz[lane_] * u[52][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[54][n][lane_] = u[51][n][lane_] - u[53][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[55][n][lane_] = x15[lane_] * u[54][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[57][n][lane_] = -u[55][n][lane_] - u[56][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[58][n][lane_] = x9[lane_] * u[57][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[59][n][lane_] = u[50][n][lane_] + u[58][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[60][n][lane_] = cx[lane_] * u[26][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[62][n][lane_] = cz[lane_] * u[61][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[63][n][lane_] = -u[60][n][lane_] + u[62][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[64][n][lane_] = x15[lane_] * u[63][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[66][n][lane_] = -u[64][n][lane_] - u[65][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[67][n][lane_] = x16[lane_] * u[66][n][lane_];
+        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
+            u[74][n][lane_] = u[67][n][lane_] + u[73][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[80][n][lane_] = cx[lane_] * u[79][n][lane_];
-        derive_rigid_body_taylor_tcl_mul(n, u[24], u[29], u[81][n]);
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[82][n][lane_] = cy[lane_] * u[81][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[83][n][lane_] = u[80][n][lane_] - u[82][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[84][n][lane_] = x15[lane_] * u[83][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
-            u[85][n][lane_] = c[lane_] * u[6][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
             u[86][n][lane_] = -u[84][n][lane_] - u[85][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_RIGID_BODY_TAYLOR_LANES; ++lane_)
