@@ -189,3 +189,35 @@ def test_what_does_not_pickle_is_not_a_family():
     a["body"]["self"] = a["body"]  # a cycle
     assert not same_contents([a, copy.deepcopy(a)])
     assert not same_contents([{"f": lambda: 0}, {"f": lambda: 0}])
+
+
+def test_family_columns_are_the_initial_values_bit_for_bit():
+    """derive.sim.scene.family_columns reads the values out of one pickle of all the dicts:
+    the very doubles (signed zeros, the largest and smallest, a NaN's bits), in the keys' order."""
+    from derive.sim.scene import family_columns
+
+    scenes = family(7)
+    odd = [-0.0, 1.7976931348623157e308, 5e-324, float("nan"), -1e-300, 2.5]
+    scenes[3]["initial"] = dict(zip(scenes[3]["initial"], odd))
+    keys = tuple(scenes[0]["initial"])
+    got = family_columns(scenes, keys)
+    want = np.array([[d["initial"][k] for d in scenes] for k in keys])
+    assert got.shape == (6, 7) and got.dtype == np.float64
+    assert np.array_equal(got.view(np.uint64), want.view(np.uint64))
+
+
+@pytest.mark.parametrize("case", [*NOT_A_FAMILY, "an int among the initial values", "three dicts"])
+def test_family_columns_say_no_to_all_but_floats_in_the_first_ones_layout(case):
+    """Anything but the first dict with other floats in its [initial] table: None (the family
+    check then looks dict by dict, and an int among the initial values is still a family)."""
+    from derive.sim.scene import family_columns
+
+    if case == "an int among the initial values":
+        scenes = family(6)
+        scenes[2]["initial"]["beta_dot"] = 1
+        assert prepared._family(scenes) is not None
+    elif case == "three dicts":
+        scenes = family(3)
+    else:
+        scenes = _variant(NOT_A_FAMILY[case])
+    assert family_columns(scenes, tuple(scenes[0]["initial"])) is None

@@ -25,7 +25,7 @@ from derive.errors import IntegrationError, SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
-from derive.sim.scene import load_scene, same_contents
+from derive.sim.scene import family_columns, load_scene, same_contents
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
@@ -282,6 +282,8 @@ def family_results(scenes):
             return None
         bp = _PreparedBatch.of(prepared, dict(zip(keys, columns)), {})
         rest = copy.deepcopy({k: v for k, v in first.items() if k != "initial"})  # (as called)
+        if rows is None:  # (each dict's values: the floats of the columns)
+            rows = list(zip(*columns.tolist()))
         return simulation.batch_results(bp, [_FamilyScene(rest, keys, row) for row in rows],
                                         integrals=plan.integral_rows_of(sc))
     except (SceneError, IntegrationError):
@@ -312,6 +314,9 @@ def _family(scenes):
     if type(start) is not dict or not start or not _FAMILY_KEYS.issuperset(start):
         return None
     keys = tuple(start)
+    columns = family_columns(scenes, keys)  # (the usual family: floats, one pickle of them all)
+    if columns is not None:
+        return first, keys, None, columns
     rows, rests = [], []
     for d in scenes:
         if type(d) is not dict:
