@@ -250,10 +250,11 @@ def family_batch(scenes, outputs):
 
     Returns None for anything else, and when the prepared batch raises SceneError or
     IntegrationError: the caller then reads the scenes one by one, and raises the error as it
-    names it (the scene-by-scene batch runs again). The family check takes about 1.3 us a dict
-    (one pickle of them all, 0.45 us a dict: :func:`derive.sim.scene.same_contents`), 1.9 us
-    beside a batch's C call, which leaves the dicts out of the caches; reading each dict takes
-    12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
+    names it (the scene-by-scene batch runs again). The family check takes about 1.5 us a dict
+    beside a batch's C call, which leaves the dicts out of the caches (one pickle of them all,
+    read as bytes: :func:`derive.sim.scene.family_columns`; 1.9 us dict by dict,
+    :func:`derive.sim.scene.same_contents`, where an initial value is an int); reading each
+    dict takes 12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
     family = _family(scenes)
     if family is None:
         return None
@@ -305,8 +306,9 @@ class _FamilyScene:
 
 
 def _family(scenes):
-    """(first dict, initial keys, each dict's initial values, their columns) of a family of
-    scene dicts (see :func:`family_batch`), or None."""
+    """(first dict, initial keys, each dict's initial values (None where every one is a float:
+    the columns hold them, :func:`derive.sim.scene.family_columns`), their columns) of a family
+    of scene dicts (see :func:`family_batch`), or None."""
     if type(scenes) not in (list, tuple) or len(scenes) < 2 or type(scenes[0]) is not dict:
         return None
     first = scenes[0]
