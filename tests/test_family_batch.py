@@ -176,10 +176,15 @@ def test_same_contents_tells_a_family_across_the_pickles_batches(n):
 
 
 def test_a_family_past_the_pickles_batch_is_one():
-    """1001 dicts (the pickle's second batch of one item): still one family."""
+    """1001 dicts: one family read from the pickle's bytes (floats), and one checked dict by
+    dict (an int among the initial values: the list's second batch holds one item)."""
     scenes = family(1001)
     got = prepared._family(scenes)
-    assert got is not None and got[3].shape == (6, 1001)
+    assert got is not None and got[2] is None and got[3].shape == (6, 1001)
+    scenes[1000]["initial"]["beta_dot"] = 1
+    got = prepared._family(scenes)
+    assert got is not None and got[2] is not None and got[3].shape == (6, 1001)
+    assert got[3][4, 1000] == 1.0
 
 
 def test_what_does_not_pickle_is_not_a_family():
