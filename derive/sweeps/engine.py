@@ -198,7 +198,7 @@ def input_files(spec) -> tuple:
 
     if isinstance(spec, Mapping) or not isinstance(spec, (str, os.PathLike)):
         return ()
-    source = os.fspath(spec)
+    source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example, as in load
     sc = read_toml(source, "sweep").get("scene")
     if not isinstance(sc, str):
         return (source,)
