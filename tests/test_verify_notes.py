@@ -35,7 +35,7 @@ def test_reader_lines_displays_and_assumptions():
 
 
 @pytest.mark.parametrize("text, key", [
-    ("---\nconvention: x-y-z\n---\n", "convention"),
+    ("---\nconvention: x-x-z\n---\n", "convention"),
     ("---\nangles: [a, b]\n---\n", "angles"),
     ("---\nimport: os\n---\n", "import"),
     ("---\nconvention: z-y-z\n", "front matter"),

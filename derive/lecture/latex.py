@@ -329,8 +329,8 @@ class Vocabulary:
         sub = a.sub
         if sub and len(sub) == 1 and sub in env:
             sub = str(env[sub])
-        k = self.angle_index(a.base)
-        if k is not None and not a.sub and not a.hat and not a.tilde and not a.bold and not a.primes:
+        k = self.angle_index(a.base + ("_" + a.sub if a.sub else ""))
+        if k is not None and not a.hat and not a.tilde and not a.bold and not a.primes:
             if a.dots == 0:
                 return ANGLES[k]
             return (RATES if a.dots == 1 else ACCELS)[k]

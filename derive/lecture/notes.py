@@ -28,17 +28,24 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from derive.errors import SceneError
+from derive.lecture import source
 
 
 def ValidationError(path, key, what) -> SceneError:
     """Bad notes input: ``<file>: <key>: <what>`` (exit status 2 on the command line)."""
     return SceneError(f"{path}: {key}: {what}")
 
-CONVENTIONS = ("z-y-z", "z-x-z")
-DEFAULT_ANGLES = {"z-y-z": ("alpha", "beta", "gamma"), "z-x-z": ("phi", "theta", "psi")}
+PROPER = ("z-y-z", "z-x-z", "x-y-x", "x-z-x", "y-x-y", "y-z-y")
+TAIT_BRYAN = ("z-y-x", "z-x-y", "x-y-z", "x-z-y", "y-x-z", "y-z-x")
+CONVENTIONS = PROPER + TAIT_BRYAN
+"""The twelve sequences, turning about the new (intrinsic) axes: six proper Euler, six Tait–Bryan."""
+DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma")}
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided"}
-_ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)")
-_MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
+_ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
+_DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math"
+_MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
+                   r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
+                   r"|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 
@@ -72,23 +79,67 @@ class Notes:
     items: list = field(default_factory=list)
 
 
+def _symbols(value: str, path: str) -> dict:
+    """``{M: angular momentum, a: l}``: the text's names (LaTeX) → what they stand for."""
+    value = value.strip()
+    if not (value.startswith("{") and value.endswith("}")):
+        raise ValidationError(path, "symbols", "expected a map like {M: angular momentum, a: l}")
+    out = {}
+    for entry in _top_level_commas(value[1:-1]):
+        if not entry.strip():
+            continue
+        name, sep, meaning = entry.rpartition(":")
+        if not sep or not name.strip() or not meaning.strip():
+            raise ValidationError(path, "symbols", f"expected 'name: meaning', got {entry.strip()!r}")
+        out[name.strip().strip("'\"")] = meaning.strip().strip("'\"")
+    return out
+
+
+def _top_level_commas(text: str) -> list[str]:
+    """Split at the commas outside braces (``I_{1,2}: …`` keeps its comma)."""
+    parts, depth, start = [], 0, 0
+    for k, ch in enumerate(text):
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif ch == "," and depth == 0:
+            parts.append(text[start:k])
+            start = k + 1
+    parts.append(text[start:])
+    return parts
+
+
 def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
-    """``key: value`` pairs between the opening and closing ``---`` (whitelisted keys only)."""
+    """``key: value`` pairs between the opening and closing ``---`` (whitelisted keys only).
+
+    ``symbols`` is a flow map on its line, or a block of indented ``name: meaning`` lines."""
     if not lines or lines[0].strip() != "---":
         return {}, 0
     out = {}
+    block = None          # the key whose indented lines follow ("symbols")
     for k, raw in enumerate(lines[1:], start=2):
         line = raw.strip()
         if line == "---":
+            if block is not None:
+                out[block] = _symbols("{" + ", ".join(out.pop("_" + block, [])) + "}", path)
             return out, k
         if not line or line.startswith("#"):
             continue
+        if block is not None and raw[:1] in (" ", "\t"):
+            out.setdefault("_" + block, []).append(line.lstrip("- "))
+            continue
+        if block is not None:
+            out[block] = _symbols("{" + ", ".join(out.pop("_" + block, [])) + "}", path)
+            block = None
         key, sep, value = line.partition(":")
         key, value = key.strip(), value.strip()
         if not sep:
             raise ValidationError(path, f"front matter line {k}", f"expected 'key: value', got {line!r}")
         if key == "convention":
-            value = value.strip("'\"").lower()
+            value = value.strip("'\"").lower().replace("–", "-").replace(" ", "")
+            if re.fullmatch(r"[xyz]{3}", value):
+                value = "-".join(value)
             if value not in CONVENTIONS:
                 raise ValidationError(path, "convention", f"{value!r} is not one of {', '.join(CONVENTIONS)}")
             out[key] = value
@@ -101,14 +152,21 @@ def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
                 m = _ANGLE_NAME.fullmatch(name)
                 if not m:
                     raise ValidationError(path, "angles", f"{name!r} is not a symbol name")
-                parsed.append(m.group(1))
+                # a subscripted angle (\\psi_{\\beta\\alpha}) is named by its letters: psi_betaalpha
+                sub = re.sub(r"[\\{}\s]", "", m.group(2) or "")
+                parsed.append(m.group(1) + ("_" + sub if sub else ""))
             if len(parsed) != 3 or len(set(parsed)) != 3:
                 raise ValidationError(path, "angles", "expected three different names")
             out[key] = tuple(parsed)
-        elif key in ("title", "author", "date", "course", "source", "notes"):
+        elif key == "symbols":
+            if value:
+                out[key] = _symbols(value, path)
+            else:
+                block = key
+        elif key in ("title", "author", "date", "course", "source", "notes", "licence", "license"):
             out[key] = value
         else:
-            raise ValidationError(path, key, "unknown front matter key (convention, angles, title, …)")
+            raise ValidationError(path, key, "unknown front matter key (convention, angles, symbols, title, …)")
     raise ValidationError(path, "front matter", "no closing '---'")
 
 
@@ -154,7 +212,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
     angles = declared.get("angles") or DEFAULT_ANGLES[conv]
     notes = Notes(path, conv, tuple(angles), declared)
-    body = "\n".join([""] * skip + lines[skip:])
+    body = source.rendered("\n".join([""] * skip + lines[skip:]))
+    user_macros = source.macros(body)
     starts = [0]
     for m in re.finditer("\n", body):
         starts.append(m.end())
@@ -178,7 +237,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     for k, title in heading_lines.items():
         events.append((starts[k - 1], Item("heading", k, text=title)))
         for m in _MATH.finditer(title):
-            inner = (m.group("i") or m.group("d") or "").strip().lstrip("-").strip()
+            inner = source.normalize(m.group("i") or m.group("d") or "").lstrip("-").strip()
             if _RELATION.search(inner) and "\\neq" not in inner and "\\equiv" not in inner:
                 events.append((starts[k - 1] + 1, Item("assumption", k, latex=inner, lead=title)))
     prev_end = 0
@@ -192,8 +251,11 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         # the prose that introduces the math: same line, or the previous non-empty line for a display
         near = lead_line[-1].strip() if lead_line[-1].strip() or m.group("i") else \
             next((x.strip() for x in reversed(lead_line) if x.strip()), "")
-        if m.group("d") is not None or m.group("b") is not None:
-            latex = (m.group("d") if m.group("d") is not None else m.group("b")).strip()
+        if m.group("i") is None:
+            raw = next(m.group(g) for g in ("d", "b", "e") if m.group(g) is not None)
+            latex = source.normalize(raw, user_macros)
+            if not latex:
+                continue            # the file's macro definitions, nothing to read
             word = _last_word(near) if near and not near.endswith((".", ";")) else ""
             inequality = re.search(r"\\ge|\\le|(?<!\\)[<>]", latex)
             # X ≡ … introduces a symbol (a definition, checked), never an assumption
@@ -203,7 +265,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             else:
                 events.append((m.start(), Item("display", line, latex=latex, lead=near, display=True)))
             continue
-        latex = m.group("i").strip()
+        latex = source.normalize(m.group("i"), user_macros)
         line_text = body[starts[line - 1]:body.find("\n", m.start()) if body.find("\n", m.start()) >= 0 else len(body)]
         signs = _signs(line_text)
         if signs and not _RELATION.search(latex):

@@ -61,7 +61,7 @@ class Derivation:
     def __init__(self, convention: str):
         from derive.symbolic import rotations as rot
         self.rot = rot
-        self.conv = rot.ZXZ if convention == "z-x-z" else rot.ZYZ
+        self.conv = rot.convention(convention)
 
     @functools.cached_property
     def omega(self) -> sp.Matrix:
@@ -167,6 +167,12 @@ class Derivation:
 @functools.cache
 def derivation(convention: str) -> Derivation:
     return Derivation(convention)
+
+
+def _name_tex(name: str) -> str:
+    """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
+    base, _, sub = name.partition("_")
+    return "\\" + base + (f"_{{{sub}}}" if sub else "")
 
 
 def _linear(col) -> sp.Expr:
@@ -469,8 +475,9 @@ class Checker:
         from derive.symbolic.rotations import ANGLES, RATES
         from derive.symbolic.lagrangian import ACCELS
         names = {}
+        angle_tex = [_name_tex(a) for a in self.notes.angles]
         for k in range(3):
-            a = "\\" + self.notes.angles[k]
+            a = angle_tex[k]
             names[ANGLES[k]] = a
             names[RATES[k]] = rf"\dot{{{a}}}"
             names[ACCELS[k]] = rf"\ddot{{{a}}}"
@@ -479,8 +486,8 @@ class Checker:
             names[lx.BASIS[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}"
             names[lx.PRIMED[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}'"
             names[lx.INERTIAL[k]] = rf"\hat{{\mathbf{{e}}}}_{{{k + 1}}}^{{0}}"
-        names[lx.p_alpha_sym()] = rf"p_{{\{self.notes.angles[0]}}}"
-        names[lx.p_gamma_sym()] = rf"p_{{\{self.notes.angles[2]}}}"
+        names[lx.p_alpha_sym()] = rf"p_{{{angle_tex[0]}}}"
+        names[lx.p_gamma_sym()] = rf"p_{{{angle_tex[2]}}}"
         names.update(lx.QUANTITY_LATEX)
         return names
 

@@ -171,3 +171,17 @@ class Convention:
 ZYZ = Convention("zyz", ("z", "y", "z"), "z-y-z: the notes' (quantum-mechanics) convention")
 ZXZ = Convention("zxz", ("z", "x", "z"), "z-x-z: Goldstein's (classical-mechanics) convention")
 CONVENTIONS = {c.name: c for c in (ZYZ, ZXZ)}
+
+
+def convention(sequence: str) -> Convention:
+    """Any of the twelve sequences by its dashed name (``"z-x-z"``, ``"z-y-x"``): the proper Euler
+    ones (first and third axis equal) and the Tait–Bryan ones (three different axes), turning
+    about the new (intrinsic) axes, so R = active(a₁, α) active(a₂, β) active(a₃, γ)."""
+    axes = tuple(sequence.split("-"))
+    if len(axes) != 3 or any(a not in _AXIS_INDEX for a in axes) or axes[0] == axes[1] or axes[1] == axes[2]:
+        raise ValueError(f"{sequence!r} is not an Euler or Tait–Bryan sequence")
+    name = "".join(axes)
+    if name in CONVENTIONS:
+        return CONVENTIONS[name]
+    kind = "proper Euler" if axes[0] == axes[2] else "Tait–Bryan"
+    return Convention(name, axes, f"{sequence}: {kind} angles")

@@ -1,0 +1,375 @@
+"""LaTeX as real texts write it, brought to the plain form the formula reader takes.
+
+Takes: the text of a notes file, or one formula of it. Gives: the text with what is not rendered
+blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
+(`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
+May import: the standard library and ``pylatexenc``.
+
+Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
+(``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
+walker turns the formula into nodes (macro with its parsed arguments, group, characters,
+environment), so each rule below is one entry of a table acting on a node, and nothing is
+matched with a regular expression across braces. Text is never evaluated: the nodes are
+printed back as LaTeX.
+
+What is normalised:
+
+* **Characters**: Unicode math (− × · ⋅ ≤ ≥ ≈ ≡ ≠ ′ ″ ² ³ ½ ∂ ∑ √ ∞ →, Greek letters, the
+  non-breaking space) becomes its command; HTML entities (``&#8211;``, ``&minus;``, ``&lt;``)
+  are decoded.
+* **Not mathematics**: ``\\tag``, ``\\notag``, ``\\nonumber``, ``\\label``, ``\\displaystyle``,
+  ``\\hspace``, ``\\phantom``, comments, ``\\left.`` and ``\\right.`` are dropped.
+* **Wrappers**: ``\\boxed{X}``, ``\\ensuremath``, ``\\mathcal``/``\\mathscr`` (their letter),
+  ``\\pmb``/``\\vb``/``\\bm`` (bold), ``\\vu`` (a bold hat), ``\\operatorname{sin}`` (the
+  function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
+  ``\\dv``/``\\pdv`` (the physics package's derivatives), ``\\vdot``/``\\cross``.
+* **Degrees**: ``30^{\\circ}`` is 30·π/180.
+* **The file's macros**: ``\\newcommand``, ``\\renewcommand``, ``\\def`` and
+  ``\\DeclareMathOperator``, with their arguments (#1 … #9), expanded wherever they are used.
+"""
+from __future__ import annotations
+
+import functools
+import html
+import re
+import unicodedata
+
+from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvironmentNode,
+                                    LatexGroupNode, LatexMacroNode, LatexMathNode,
+                                    LatexSpecialsNode, LatexWalker,
+                                    get_default_latex_context_db)
+from pylatexenc.macrospec import MacroSpec
+
+# --- characters --------------------------------------------------------------------------------
+_UNICODE = {
+    "\u2212": "-", "\u2013": "-", "\u2014": "-", "\u00d7": r"\times ", "\u00b7": r"\cdot ",
+    "\u22c5": r"\cdot ", "\u2219": r"\cdot ", "\u2264": r"\le ", "\u2265": r"\ge ",
+    "\u2a7d": r"\le ", "\u2a7e": r"\ge ", "\u2248": r"\approx ", "\u2261": r"\equiv ",
+    "\u2260": r"\neq ", "\u2032": "'", "\u2033": "''",
+    "\u00bd": r"\frac{1}{2}", "\u2202": r"\partial ", "\u2211": r"\sum ",
+    "\u221a": r"\sqrt ", "\u221e": r"\infty ", "\u2192": r"\to ", "\u21d2": r"\Rightarrow ",
+    "\u00a0": " ", "\u2009": " ", "\u202f": " ", "\u2061": "", "\u2062": " ", "\u200b": "", "\u00b1": r"\pm ",
+    "\u2207": r"\nabla ", "\u03d5": r"\phi ", "\u03c6": r"\varphi ", "\u03b5": r"\varepsilon ",
+    "\u03d1": r"\vartheta ", "\u2218": r"\circ ", "\u00b0": r"^{\circ}", "\u2225": r"\parallel ",
+    "\u22a5": r"\perp ", "\u27c2": r"\perp ", "\u2026": r"\ldots ", "\u22ef": r"\cdots ",
+}
+
+
+def _greek(ch: str) -> str | None:
+    """ω → \\omega, Ω → \\Omega (by the character's Unicode name)."""
+    try:
+        name = unicodedata.name(ch)
+    except ValueError:
+        return None
+    m = re.fullmatch(r"(?:MATHEMATICAL ITALIC )?GREEK (SMALL|CAPITAL) LETTER ([A-Z]+)", name)
+    if not m:
+        return None
+    letter = m.group(2).lower()
+    if letter == "lamda":
+        letter = "lambda"
+    return "\\" + (letter if m.group(1) == "SMALL" else letter.capitalize()) + " "
+
+
+_SUBSCRIPTS = {chr(0x2080 + k): str(k) for k in range(10)}
+_SUPERSCRIPTS = {"\u2070": "0", "\u00b9": "1", "\u00b2": "2", "\u00b3": "3",
+                 **{chr(0x2070 + k): str(k) for k in range(4, 10)}}
+_COMBINING = {"\u0307": r"\dot", "\u0308": r"\ddot", "\u0303": r"\tilde", "\u0302": r"\hat",
+              "\u20d7": r"\vec", "\u0304": r"\bar"}
+
+
+def characters(latex: str) -> str:
+    """Unicode math and HTML entities as LaTeX commands (everything else unchanged): ω → \\omega,
+    ω₃ → \\omega_{3}, θ̇ (a combining dot) → \\dot{\\theta}, r² → r^{2}."""
+    if "&" in latex and re.search(r"&(#\d+|#x[0-9a-fA-F]+|[A-Za-z]+);", latex):
+        latex = re.sub(r"&(#\d+|#x[0-9a-fA-F]+|[A-Za-z]+);", lambda m: html.unescape(m.group(0)), latex)
+    if latex.isascii():
+        return latex
+    out = []
+    for ch in latex:
+        if ch.isascii():
+            out.append(ch)
+        elif ch in _COMBINING and out:
+            out[-1] = _COMBINING[ch] + "{" + out[-1].strip() + "}"
+        elif ch in _SUBSCRIPTS:
+            out.append("_{" + _SUBSCRIPTS[ch] + "}")
+        elif ch in _SUPERSCRIPTS:
+            out.append("^{" + _SUPERSCRIPTS[ch] + "}")
+        else:
+            out.append(_UNICODE.get(ch) or _greek(ch) or ch)
+    return "".join(out)
+
+
+# --- what is not rendered ----------------------------------------------------------------------
+def _blank(m: re.Match) -> str:
+    """The matched text as spaces, its newlines kept (so line numbers do not move)."""
+    return re.sub(r"[^\n]", " ", m.group(0))
+
+
+_COMMENT = re.compile(r"<!--.*?-->", re.S)
+_FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
+_CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
+
+
+def rendered(text: str) -> str:
+    """The text with what a reader never sees blanked out: HTML comments, fenced code blocks and
+    inline code spans (the line structure is kept)."""
+    text = _COMMENT.sub(_blank, text)
+    text = _FENCE.sub(_blank, text)
+    return _CODE.sub(_blank, text)
+
+
+# --- the file's macros -------------------------------------------------------------------------
+_NEWCOMMAND = re.compile(r"\\(?:re)?newcommand\*?\s*\{?\s*\\([A-Za-z]+)\s*\}?\s*(?:\[(\d)\])?\s*(?:\[[^\]]*\])?\s*\{")
+_DEF = re.compile(r"\\def\s*\\([A-Za-z]+)\s*((?:#\d)*)\s*\{")
+_OPERATOR = re.compile(r"\\DeclareMathOperator\*?\s*\{?\s*\\([A-Za-z]+)\s*\}?\s*\{")
+
+
+def _braced(text: str, start: int) -> tuple[str, int] | None:
+    """The content of the group whose '{' is text[start - 1], and the index after its '}'."""
+    depth, j = 1, start
+    while j < len(text):
+        ch = text[j]
+        if ch == "\\":
+            j += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+            if depth == 0:
+                return text[start:j], j + 1
+        j += 1
+    return None
+
+
+def macros(text: str) -> dict:
+    """The macros a file defines: name → (number of arguments, body). Later definitions win."""
+    found = []
+    for pattern, kind in ((_NEWCOMMAND, "new"), (_DEF, "def"), (_OPERATOR, "op")):
+        for m in pattern.finditer(text):
+            got = _braced(text, m.end())
+            if got is None:
+                continue
+            body = got[0]
+            if kind == "new":
+                nargs = int(m.group(2) or 0)
+            elif kind == "def":
+                nargs = len(m.group(2)) // 2
+            else:
+                nargs, body = 0, r"\operatorname{" + body + "}"
+            found.append((m.start(), m.group(1), (nargs, body)))
+    return {name: spec for _, name, spec in sorted(found)}
+
+
+def definitions_removed(latex: str) -> str:
+    """A formula without the macro definitions written in it (a display that only defines macros
+    becomes empty)."""
+    out, i, spans = [], 0, []
+    for pattern in (_NEWCOMMAND, _DEF, _OPERATOR):
+        for m in pattern.finditer(latex):
+            got = _braced(latex, m.end())
+            if got is not None:
+                spans.append((m.start(), got[1]))
+    for a, b in sorted(spans):
+        if a < i:
+            continue
+        out.append(latex[i:a])
+        i = b
+    out.append(latex[i:])
+    return "".join(out)
+
+
+# --- the walk ----------------------------------------------------------------------------------
+_DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle": "", "textstyle": "",
+         "scriptstyle": "", "hspace": "*{", "vspace": "*{", "phantom": "{", "hphantom": "{",
+         "vphantom": "{", "mathstrut": "", "strut": "", "eqref": "{", "ref": "{", "allowbreak": "",
+         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": ""}
+_WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
+         "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
+         "cancel": "", "bbox": None}
+_BOLD = {"pmb", "vb", "bold", "mathbfit"}
+_RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "cross": "times",
+           "cp": "times", "lvert": "vert", "rvert": "vert", "lVert": "vert", "rVert": "vert",
+           "Vert": "vert", "cdotp": "cdot", "leqslant": "le", "geqslant": "ge", "dotsb": "cdots",
+           "dotsm": "cdots", "dotsc": "cdots", "land": "quad", "And": "quad", "implies": "Rightarrow",
+           "iff": "Leftrightarrow", "Longrightarrow": "Rightarrow", "longrightarrow": "to",
+           "mathbb": "mathrm", "rm": "mathrm", "degree": "circ", "lbrace": "{", "rbrace": "}",
+           "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad"}
+_FUNCTION_NAMES = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
+                   "arcsin", "arccos", "arctan"}
+
+
+def _context():
+    db = get_default_latex_context_db()
+    specs = [MacroSpec(name, args) for name, args in _DROP.items()]
+    specs += [MacroSpec(name, "{") for name, a in _WRAP.items() if a is not None]
+    specs += [MacroSpec("color", "{"), MacroSpec("textcolor", "{{"), MacroSpec("bbox", "[{")]
+    specs += [MacroSpec(name, "{") for name in _BOLD | {"vu", "abs", "norm", "operatorname", "qty",
+                                                          "mathrm", "text", "mathit", "hat", "dot", "ddot",
+                                                          "tilde", "widetilde", "widehat", "bar"}]
+    specs += [MacroSpec("dv", "[{{"), MacroSpec("pdv", "[{{"), MacroSpec("frac", "{{"),
+              MacroSpec("dfrac", "{{"), MacroSpec("tfrac", "{{"), MacroSpec("cfrac", "{{")]
+    db.add_context_category("derive-notes", macros=specs, prepend=True)
+    return db
+
+
+@functools.lru_cache(maxsize=1)
+def _ctx():
+    return _context()
+
+
+def _arg(node, k: int, user: dict) -> str | None:
+    args = node.nodeargd.argnlist if node.nodeargd is not None else []
+    if k >= len(args) or args[k] is None:
+        return None
+    a = args[k]
+    return _print(a.nodelist, user) if isinstance(a, LatexGroupNode) else _print([a], user)
+
+
+def _last_arg(node, user: dict) -> str | None:
+    args = node.nodeargd.argnlist if node.nodeargd is not None else []
+    for a in reversed(args):
+        if a is not None:
+            return _print(a.nodelist, user) if isinstance(a, LatexGroupNode) else _print([a], user)
+    return None
+
+
+def _macro(node, nodes, k, user) -> tuple[str, int]:
+    """One macro node printed normalised; returns the text and how many following nodes it used."""
+    name = node.macroname
+    post = node.macro_post_space or ""
+    if name in user:
+        nargs, body = user[name]
+        args, used, j = [], 0, k + 1
+        while len(args) < nargs and j < len(nodes):
+            nxt = nodes[j]
+            j += 1
+            used += 1
+            if isinstance(nxt, LatexCharsNode):
+                text = nxt.chars.lstrip()
+                if not text:
+                    continue
+                args.append(text[0])
+                rest = text[1:]
+                if rest:
+                    # the characters after a one-letter argument are text again
+                    nodes.insert(j, LatexCharsNode(parsing_state=nxt.parsing_state, chars=rest,
+                                                   pos=nxt.pos, len=nxt.len))
+                continue
+            args.append(_print(nxt.nodelist, user) if isinstance(nxt, LatexGroupNode) else _print([nxt], user))
+        for n, value in enumerate(args, start=1):
+            body = body.replace(f"#{n}", value)
+        return " " + normalize(body, user) + " ", used
+    if name in _DROP:
+        return " ", 0
+    if name in _WRAP:
+        inner = _last_arg(node, user) or ""
+        if name in ("mathcal", "mathscr", "mathfrak", "mathsf", "mathtt"):
+            return r"\mathrm{" + inner + "}", 0
+        if name in ("boxed", "ensuremath", "color", "textcolor", "bbox"):
+            return " " + inner + " ", 0   # a frame or a colour around a statement: the statement
+        return "{" + inner + "}", 0
+    if name in _BOLD:
+        inner = _last_arg(node, user)
+        if inner is None:
+            return "\\" + name + post, 0
+        return r"\boldsymbol{" + inner + "}" if name not in ("vec", "overrightarrow") else \
+            "\\" + name + "{" + inner + "}", 0
+    if name == "vu":
+        return r"\hat{\boldsymbol{" + (_last_arg(node, user) or "") + "}}", 0
+    if name in ("abs", "norm"):
+        return r"\left|" + (_last_arg(node, user) or "") + r"\right|", 0
+    if name == "qty":
+        return r"\left(" + (_last_arg(node, user) or "") + r"\right)", 0
+    if name == "operatorname":
+        inner = (_last_arg(node, user) or "").strip()
+        return ("\\" + inner + " ") if inner in _FUNCTION_NAMES else r"\mathrm{" + inner + "}", 0
+    if name in ("dv", "pdv"):
+        order, f, x = _arg(node, 0, user), _arg(node, 1, user) or "", _arg(node, 2, user) or ""
+        d = "d" if name == "dv" else r"\partial "
+        n = f"^{{{order}}}" if order else ""
+        return rf"\frac{{{d}{n} {f}}}{{{d} {x}{n}}}", 0
+    if name == "left" or name == "right":
+        # \left. and \right. are invisible delimiters
+        if k + 1 < len(nodes) and isinstance(nodes[k + 1], LatexCharsNode) and nodes[k + 1].chars.startswith("."):
+            nodes[k + 1] = LatexCharsNode(parsing_state=nodes[k + 1].parsing_state,
+                                          chars=nodes[k + 1].chars[1:], pos=nodes[k + 1].pos, len=nodes[k + 1].len)
+            return " ", 0
+        return "\\" + name + post, 0
+    if name in _RENAME:
+        new = _RENAME[name]
+        args = node.nodeargd.argnlist if node.nodeargd is not None else []
+        printed = "".join(a.latex_verbatim() if not isinstance(a, LatexGroupNode) else "{" + _print(a.nodelist, user) + "}"
+                          for a in args if a is not None)
+        if new in ("{", "}"):
+            return "\\" + new, 0
+        return "\\" + new + (" " if not printed else "") + printed, 0
+    # any other macro: its own name, with its arguments normalised
+    args = node.nodeargd.argnlist if node.nodeargd is not None else []
+    printed = []
+    for a in args:
+        if a is None:
+            continue
+        if isinstance(a, LatexGroupNode):
+            printed.append("{" + _print(a.nodelist, user) + "}")
+        else:
+            printed.append(a.latex_verbatim())
+    return "\\" + name + ("".join(printed) if printed else post), 0
+
+
+def _print(nodes, user: dict) -> str:
+    nodes = list(nodes or [])
+    out, k = [], 0
+    while k < len(nodes):
+        node = nodes[k]
+        if isinstance(node, LatexCommentNode):
+            out.append(" ")
+        elif isinstance(node, LatexMacroNode):
+            text, used = _macro(node, nodes, k, user)
+            out.append(text)
+            k += used
+        elif isinstance(node, LatexGroupNode):
+            out.append("{" + _print(node.nodelist, user) + "}")
+        elif isinstance(node, LatexEnvironmentNode):
+            name = node.environmentname
+            args = "".join(a.latex_verbatim() for a in (node.nodeargd.argnlist if node.nodeargd else []) if a)
+            out.append(rf"\begin{{{name}}}{args}" + _print(node.nodelist, user) + rf"\end{{{name}}}")
+        elif isinstance(node, LatexMathNode):
+            out.append(_print(node.nodelist, user))
+        elif isinstance(node, LatexSpecialsNode):
+            out.append(node.specials_chars)
+        elif isinstance(node, LatexCharsNode):
+            out.append(node.chars)
+        else:
+            out.append(node.latex_verbatim())
+        k += 1
+    return "".join(out)
+
+
+_DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
+
+
+def normalize(latex: str, user: dict | None = None) -> str:
+    """One formula in the reader's dialect (see the module docstring).
+
+    Parameters
+    ----------
+    latex : str
+        The formula as the text writes it (without its ``$$`` delimiters).
+    user : dict, optional
+        The file's macros (`macros`), expanded where used.
+
+    Returns
+    -------
+    str
+        The same formula, normalised; a formula the walker cannot follow is returned with only
+        its characters normalised.
+    """
+    latex = definitions_removed(characters(latex))
+    try:
+        nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()
+        text = _print(nodes, user or {})
+    except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
+        text = latex
+    text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
+    return re.sub(r"[ \t]{2,}", " ", text).strip()
