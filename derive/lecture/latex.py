@@ -54,6 +54,16 @@ class Quantity(sp.Symbol):
     replaces it by what the derivation says it is."""
 
 
+class DT(sp.Function):
+    """d/dt of its argument as written (``\\frac{d}{dt}``, ``\\frac{dX}{dt}``): the checker
+    differentiates once it knows what the argument stands for."""
+
+
+class Generic(sp.Symbol):
+    """A symbol of the text's own (``u``, ``N_1``, ``T_{rot}``, ``m_1``): what it stands for is
+    what the text says, in a definition the checker records, or nothing."""
+
+
 def quantity(name: str) -> Quantity:
     return Quantity(name)
 
@@ -65,12 +75,13 @@ ENERGY = quantity("E")
 EPRIME = quantity("E'")
 VEFF = quantity("V_eff")
 OMEGA_VEC = quantity("omega_vec")        # 𝛚 (= ω̃ in body components)
+LMAG = quantity("|L|")                   # the magnitude of the angular momentum
 DLDT = quantity("dL/dt")
 DLDT_BODY = quantity("(dL/dt)_body")
 MOMENTUM = {0: quantity("dL/dalpha_d"), 2: quantity("dL/dgamma_d"), 1: quantity("dL/dbeta_d")}
 
 QUANTITY_LATEX = {
-    T_: "T", LAGRANGIAN: "L", LVEC: r"\mathbf{L}", ENERGY: "E", EPRIME: "E'", VEFF: r"V_{\mathrm{eff}}",
+    T_: "T", LAGRANGIAN: "L", LVEC: r"\mathbf{L}", LMAG: "L", ENERGY: "E", EPRIME: "E'", VEFF: r"V_{\mathrm{eff}}",
     OMEGA_VEC: r"\boldsymbol{\omega}", DLDT: r"\frac{d\mathbf{L}}{dt}",
 }
 
@@ -104,6 +115,7 @@ DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "til
 SPACES = {",", ";", ":", "!", " ", "quad", "qquad", "left", "right", "big", "Big", "bigg", "Bigg",
           "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
 FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+             "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
              "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
              "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
@@ -254,6 +266,8 @@ def scan(s: str) -> list[Tok]:
             raise NotRead("a prime on something that is not a symbol", i + 1)
         if ch == "\\":
             m = _CMD.match(s, i)
+            if m is None:
+                raise NotRead("a lone '\\' at the end", i + 1)
             name = m.group(1)
             if name == "\\":
                 toks.append(Tok("op", "\\\\", i))
@@ -313,6 +327,17 @@ class Vocabulary:
     angles: tuple = ("alpha", "beta", "gamma")
     aliases: tuple = ("phi", "theta", "psi")
     defined: dict = field(default_factory=dict)
+    open: bool = False
+    """Open to the text's own names: an atom outside the vocabulary is a symbol of the text's
+    (`Generic`) instead of an unknown symbol."""
+    generic: dict = field(default_factory=dict)
+    """The text's own symbols met so far: Generic → the atom (without its text)."""
+    omega_names: bool = False
+    """Ω, Ω₁, Ω₂ are the lecture's frequencies (once the text defines Ω with ≡); otherwise a text's
+    Ω is its own symbol."""
+    readings: dict = field(default_factory=dict)
+    """A second reading of an ambiguous name, tried when the first makes a formula fail:
+    ``{"L": LMAG}`` reads a plain L as the angular momentum's magnitude."""
 
     def angle_index(self, base: str) -> int | None:
         for names in (self.angles, self.aliases):
@@ -356,8 +381,10 @@ class Vocabulary:
                 if a.primes == 0:
                     return BASIS[i]
         if b == "I" and not a.bold and not a.dots and not a.primes:
-            if sub in ("1", "2", "3"):
-                return (I1, I2, I3)[int(sub) - 1]
+            if len(sub) == 2 and sub[0] == sub[1] and sub[0] in env:
+                sub = str(env[sub[0]])            # Σ_i I_ii ω_i²: the principal moments
+            if sub in ("1", "2", "3", "11", "22", "33"):
+                return (I1, I2, I3)[int(sub[0]) - 1]
         if b == "M" and not sub and not a.dots:
             return Mass
         if b in ("g", "l") and not sub and not a.dots and not a.bold:
@@ -368,7 +395,9 @@ class Vocabulary:
                 return p_alpha
             if k == 2:
                 return p_gamma
-        if b == "Omega" and not a.dots and not a.bold:
+        if not a.bold and not a.dots and not a.primes and (b + sub) in self.readings:
+            return self.readings[b + sub]
+        if b == "Omega" and not a.dots and not a.bold and self.omega_names:
             if sub == "":
                 return Omega
             if sub in ("1", "2"):
@@ -383,7 +412,35 @@ class Vocabulary:
             return VEFF
         if not a.dots and not a.sub and not a.bold and not a.hat and not a.tilde and b in FREE_NAMES:
             return sp.Symbol(FREE_NAMES[b], real=True)
+        plain = not a.dots and not a.bold and not a.hat and not a.tilde and not a.primes
+        if plain and not a.sub and b == "pi":
+            return sp.pi
+        if plain and not a.sub and b == "e":
+            return sp.E
+        if b == "T" and sub in ("rot", "kin", "k", "R", "rotation") and not a.dots and not a.primes:
+            return T_
+        if self.open and not a.bold and not a.hat:
+            return self._generic(a)
         return None
+
+    def _generic(self, a: Atom):
+        """The text's own symbol for an atom: one per spelling of base, decorations and scripts."""
+        key = a.with_(text="")
+        for sym, atom in self.generic.items():
+            if atom == key:
+                return sym
+        name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + (f"_{a.sub}" if a.sub else "") \
+            + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
+        sym = Generic(name, real=True)
+        self.generic[sym] = key
+        return sym
+
+    def undotted(self, sym):
+        """For the text's symbol Ẋ: (X, number of dots), or None."""
+        atom = self.generic.get(sym)
+        if atom is None or not atom.dots:
+            return None
+        return self._generic(atom.with_(dots=0)), atom.dots
 
 
 def p_alpha_sym():
@@ -683,24 +740,45 @@ class _Parser:
         if den is None:
             return None
         is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
-        if len(num) == 2 and is_d(num[0]) and num[1].kind == "atom" and len(den) == 2 and is_d(den[0]) \
-                and den[1].kind == "atom" and den[1].value.base == "t":
+        dt = len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" \
+            and not den[1].value.sub
+        if dt and len(num) == 1 and is_d(num[0]):
+            self.i = k2                                   # d/dt of what follows
+            return self._evaluated(DT(self.term({})))
+        if dt and len(num) == 2 and is_d(num[0]) and num[1].kind == "atom":
             what = self.vocab.resolve(num[1].value)
             if what is LVEC:
                 self.i = k2
                 return DLDT
-            raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
-                          num[1].pos + 1)
-        if len(num) == 2 and num[0].kind == "cmd" and num[0].value == "partial" and len(den) == 2 \
-                and den[0].kind == "cmd" and den[0].value == "partial" and den[1].kind == "atom":
-            top = self.vocab.resolve(num[1].value) if num[1].kind == "atom" else None
+            if what is None or num[1].value.bold:
+                raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
+                              num[1].pos + 1)
+            self.i = k2
+            return self._evaluated(DT(what))
+        is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
+        if len(den) == 2 and is_partial(den[0]) and den[1].kind == "atom":
             var = self.vocab.resolve(den[1].value)
-            if top is LAGRANGIAN and var in RATES:
-                self.i = k2
-                return MOMENTUM[RATES.index(var)]
-            raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative other than ∂L/∂q̇",
-                          num[0].pos + 1)
+            if len(num) == 1 and is_partial(num[0]) and isinstance(var, sp.Symbol):
+                self.i = k2                               # ∂/∂v of what follows
+                return sp.Derivative(self.term({}), var, evaluate=False)
+            if len(num) == 2 and is_partial(num[0]) and num[1].kind == "atom" and isinstance(var, sp.Symbol):
+                top = self.vocab.resolve(num[1].value)
+                if top is LAGRANGIAN and var in RATES:
+                    self.i = k2
+                    return MOMENTUM[RATES.index(var)]
+                if isinstance(top, sp.Symbol) and not num[1].value.bold:
+                    self.i = k2
+                    return sp.Derivative(top, var, evaluate=False)
+            if num and is_partial(num[0]):
+                raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative of this form",
+                              num[0].pos + 1)
         return None
+
+    def _evaluated(self, value):
+        """A derivative followed by '(': evaluated at a point (φ̇(t + T)), which is not read."""
+        if self.at("op", "("):
+            self.fail("a derivative evaluated at a point")
+        return value
 
     def sum(self, env, tok):
         """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""

@@ -47,11 +47,15 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.textnames import TextNames
+from derive.symbolic.lagrangian import ACCELS as ACCELS_
 from derive.lecture import vectors as vc
 from derive.lecture import verify as vf
 
 VERDICTS = ("holds", "typo", "fails", "unchecked")
-_ENVS = ("split", "aligned", "align", "align*", "gathered", "equation", "equation*", "multline", "eqnarray")
+_ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
+         "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
+         "alignedat", "subequations", "displaymath", "math")
 
 
 # ---- the derivation, per convention -------------------------------------------------------------
@@ -124,15 +128,17 @@ class Derivation:
         if key is lx.LAGRANGIAN:
             if args and set(args) <= {self.rot.beta, self.rot.beta_d}:
                 return [self.reduction.lagrangian_substituted]
-            return [self.top.lagrangian]
+            return [self.top.lagrangian, self.top_kinetic()]      # a free body's L is its T
         if key is lx.LVEC:
             return [_linear(sp.Matrix(Iw))]
         if key is lx.ENERGY:
-            return [self.reduction.energy, self.top.energy]
+            return [self.reduction.energy, self.top.energy, self.top_kinetic()]
         if key is lx.EPRIME:
             return [self.reduction.reduced_energy]
         if key is lx.VEFF:
             return [self.reduction.effective_potential]
+        if key is lx.LMAG:
+            return [sp.sqrt(sum((m * w)**2 for m, w in zip((I1, I2, I3), lx.W)))]
         if key is lx.OMEGA_VEC:
             return [_linear(sp.Matrix(lx.W)), _linear(self.omega)]
         if key is lx.DLDT:
@@ -287,9 +293,56 @@ def _text_only(piece: str) -> bool:
     return not rest.strip(" &,.;:") and "\\text" in piece
 
 
+_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?\s*\}")
+_TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
+_RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
+
+
+def _cleaned(piece: str) -> str:
+    """A statement without the words after it (``&&\\text{stable}``); ``\\text{const}`` becomes a
+    constant of the text's."""
+    piece = _CONST.sub(r" \\mathrm{const} ", piece)
+    while True:
+        cut = _TRAILING_WORDS.sub("", piece)
+        if cut == piece or not cut.strip():
+            break
+        piece = cut
+    return piece
+
+
+def _lists(row: str) -> list[str]:
+    """A row that lists statements: cut at top-level ``;`` and at top-level commas between
+    relations (``\\theta = 0, \\dot\\theta = 0``), never inside brackets (f(a, b))."""
+    pieces = []
+    for part in _top_level_split(row, (";",)):
+        if part.rstrip().endswith("\\"):
+            pieces.append(part)
+            continue
+        commas = _bracket_free_split(part)
+        if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
+            pieces.extend(commas)
+        else:
+            pieces.append(part)
+    return [p.replace("\\\x00", "\\;") for p in pieces]
+
+
+def _bracket_free_split(s: str) -> list[str]:
+    out, depth, start = [], 0, 0
+    for i, ch in enumerate(s):
+        if ch in "({[":
+            depth += 1
+        elif ch in ")}]":
+            depth -= 1
+        elif ch == "," and depth == 0 and (i == 0 or s[i - 1] != "\\"):
+            out.append(s[start:i])
+            start = i + 1
+    out.append(s[start:])
+    return out
+
+
 def statements(latex: str) -> list[str]:
     """The statements of one display (see the module docstring), each a LaTeX string."""
-    body = _strip_envs(latex)
+    body = _strip_envs(latex).replace("\\;", "\\\x00")
     rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
@@ -302,11 +355,43 @@ def statements(latex: str) -> list[str]:
             joined.append(row)
     out = []
     for row in joined:
-        for piece in _top_level_split(row, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
-            piece = piece.strip().strip(",.;:").strip()
-            if piece and not _text_only(piece):
-                out.append(piece)
+        for piece in _colon_parts(row):
+            for part in _top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
+                for one in _lists(part):
+                    one = _cleaned(_trimmed(one))
+                    if _trimmed(one) and not _text_only(one):
+                        out.append(_trimmed(one))
     return out
+
+
+def _trimmed(s: str) -> str:
+    """Without spacing commands and punctuation at its ends."""
+    prev = None
+    while prev != s:
+        prev = s
+        s = re.sub(r"^(?:\s|[,.;:]|\\[,;:! ]|\\q?quad)+", "", s)
+        s = re.sub(r"(?:\s|(?<!\\)[,.;:]|\\[,;:! ]|\\q?quad)+$", "", s)
+    return s
+
+
+def _colon_parts(row: str) -> list[str]:
+    """``label: statement`` → the statement; ``case: statement`` (θ = 0: ω_z = ω₃) → both, the case
+    first (a statement of a value, read as the case it is)."""
+    parts = [p for p in re.split(r"(?<!\\)(?<![:<>!])\s*:(?!=)\s*", row)]
+    if len(parts) == 1:
+        return parts
+    out = []
+    for k, part in enumerate(parts):
+        if k < len(parts) - 1 and not _RELATION_IN.search(part):
+            continue                      # a label (\\Omega_1:, \\theta:)
+        out.append(part)
+    return out
+
+
+def _second_readings(piece: str):
+    """(name, value, description) of the names in a statement that have a second reading."""
+    if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
+        yield "L", lx.LMAG, "L as the magnitude of the angular momentum"
 
 
 # ---- the comparisons ----------------------------------------------------------------------------
@@ -387,7 +472,10 @@ def _quick_equal(a, b) -> bool:
 # ---- single edits ------------------------------------------------------------------------------
 def _paths(e, path=()):
     yield path, e
-    if isinstance(e, sp.Basic) and not e.is_Atom:
+    # inside a derivative the variables are not edited (∂/∂ of a power is no formula)
+    if isinstance(e, sp.Derivative):
+        yield from _paths(e.expr, path + (0,))
+    elif isinstance(e, sp.Basic) and not e.is_Atom:
         for k, a in enumerate(e.args):
             yield from _paths(a, path + (k,))
 
@@ -456,15 +544,17 @@ def _at(e, path):
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker:
+class Checker(TextNames):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
         self.notes = notes
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles),
-                                   aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"])
+                                   aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"],
+                                   open=True)
         self.d = derivation(notes.convention)
         self.ctx = _Context()
+        self._open_display()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
         self._last_fix = None       # the corrected value the last single-edit search found
@@ -573,15 +663,57 @@ class Checker:
             self._add(item.line, latex, "text", "unchecked", "not a formula")
             return
         seen = []
+        self._open_display()
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
-            self._statement(item.line, piece, duplicate=dup, pieces=pieces)
+            try:
+                self._read_once_or_twice(item.line, piece, dup, pieces)
+            except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
+                    KeyError, NotImplementedError, RecursionError, sp.PolynomialError) as err:
+                # a formula the checker cannot follow is reported as such, never given a verdict
+                self._add(item.line, piece, "unknown", "unchecked",
+                          f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
+        self._close_display()
+
+    def _read_once_or_twice(self, line, piece, dup, pieces):
+        """The statement as read; if that flags it and a name in it has a second reading (a plain
+        L as the angular momentum's magnitude), the second reading is tried too, and kept when
+        it makes the statement hold."""
+        before, saved = len(self.claims), self._snapshot()
+        self._statement(line, piece, duplicate=dup, pieces=pieces)
+        first = self.claims[before:]
+        if not any(c.verdict in ("typo", "fails") for c in first):
+            return
+        for name, value, what in _second_readings(piece):
+            after = self._snapshot()
+            del self.claims[before:]
+            self.ctx = saved
+            saved = self._snapshot()
+            self.vocab.readings[name] = value
+            try:
+                self._statement(line, piece, duplicate=dup, pieces=pieces)
+            finally:
+                del self.vocab.readings[name]
+            second = self.claims[before:]
+            if second and all(c.verdict == "holds" for c in second):
+                for c in second:
+                    c.why += f" (reading {what})"
+                return
+            del self.claims[before:]
+            self.claims.extend(first)
+            self.ctx = after
+
+    def _snapshot(self):
+        """A copy of the context whose containers can change without touching this one."""
+        return _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(self.ctx).items()})
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
         text = piece
         if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
             text = self.ctx.head + " " + piece
+        if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
+            self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:
@@ -601,6 +733,9 @@ class Checker:
         head_end = _first_relation(text)
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
+        if not duplicate and self._text_statement(line, piece, parsed):
+            return
+        self.settings_only = False
         rels = set(parsed.relations)
         if rels & {"≠", "→", "∝", "∼", "⇒"}:
             self._add(line, piece, "relation", "unchecked", f"not a claim the derivation decides ({', '.join(sorted(rels))})")
@@ -616,7 +751,8 @@ class Checker:
         if rels & {"≥", "≤", ">", "<"}:
             self._inequality(line, piece, parsed)
         elif self._steady_section() and not isinstance(m0.value, lx.Quantity) and len(parsed.members) == 2 \
-                and _free(m0.value) | _free(parsed.members[1].value) & {self.d.rot.alpha_d}:
+                and m0.value not in lx.W and not isinstance(m0.value, lx.Generic) \
+                and (_free(m0.value) | _free(parsed.members[1].value)) & {self.d.rot.alpha_d}:
             self._steady(line, piece, parsed)
         elif isinstance(m0.value, lx.Quantity):
             self._definition(line, piece, parsed)
@@ -631,10 +767,13 @@ class Checker:
         """A statement in vectors, tensors, sums over particles or frame derivatives
         (`derive.lecture.vectors`): each member against the first, a single-edit search of the
         LaTeX for a correction. False when that reader cannot read it either."""
+        self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
         try:
             reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
         except lx.NotRead:
             return False
+        finally:
+            self.vocab.open = True
         if set(reading.relations) - {"=", "≡"}:
             return False
         first = reading.members[0]
@@ -711,10 +850,11 @@ class Checker:
                         rep[s] = forms[0]
                 elif s in self.ctx.defs:
                     rep[s] = self.ctx.defs[s]
+            rep.update(self._dotted_definitions(v))
             if not rep:
                 break
             v = v.xreplace(rep)
-        return v
+        return self._calculus(v)
 
     def _unify(self, values: list) -> list:
         """Mixed variables: with α̇ or γ̇ present, p_α, p_γ and ω̃ᵢ become functions of the angles;
@@ -860,12 +1000,37 @@ class Checker:
             if ok:
                 self._add(line, piece, kind, "holds", why)
                 return
+        if " against a " in why:
+            self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
+            return
+        undecided = None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
+        if undecided:
+            self._add(line, piece, kind, "unchecked", undecided)
+            return
         self._last_fix = None
         fix = self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
         else:
             self._add(line, piece, kind, "fails", f"as written: {why}")
+
+    def _undecidable(self, written, val, targets) -> str | None:
+        """Why a relation that does not hold as an identity is no slip the derivation can name:
+        it ties only the text's free variables (ω̃ᵢ, the moments, its own undefined symbols) and so
+        is a condition the text imposes; or it ties the angles to ω̃ᵢ without their rates, which
+        only the rates connect. None when the derivation decides it."""
+        rot = self.d.rot
+        rates = set(rot.RATES) | set(ACCELS_)
+        frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
+        derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
+                      for m in written for x in _free(m)) or \
+            any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
+        if not derived:
+            return "an equation between the text's variables: a condition it imposes, not an identity"
+        every = _free(val).union(*(_free(self._resolve(f)) for f in targets))
+        if not every & rates and every & set(rot.ANGLES) and every & set(lx.W):
+            return "ties the angles to ω̃ᵢ without their rates: true only for the orientation the text chose"
+        return None
 
     def _search(self, value, targets, label, parsed, k, small, order, keep):
         """The nearest correct form by one edit of the member or of the label, or None."""
@@ -929,6 +1094,11 @@ class Checker:
             self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
             return
         raw = members[0] - members[1]
+        used = [x for x in _free(raw) if x in self.ctx.defs]
+        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
+            names = ", ".join(sorted(self.tex(x) for x in used))
+            self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
+            return
         ok, why, residual = self._eom_check(raw)
         if ok:
             self.ctx.eoms.append((raw, line))
@@ -994,7 +1164,15 @@ class Checker:
             q = sp.cancel(sp.together(r / R))
             if not (_free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
-        return False, "not a multiple of any of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+        # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
+        flow = {}
+        for i, R in enumerate(euler):
+            coef = sp.diff(R, lx.WD[i])
+            if coef != 0:
+                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+        if _free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
+            return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
+        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
 
     def _duplicate(self, line, piece, parsed, pieces):
         """A row repeated within one block: a transcription slip; the missing equation is named."""
@@ -1021,6 +1199,13 @@ class Checker:
             return
         rel = parsed.relations[0]
         a, b = (self._resolve(m.value) for m in parsed.members)
+        from derive.symbolic.lagrangian import Mass, g, l
+        syms = _free(a) | _free(b)
+        spin = {lx.p_gamma_sym(), lx.W[2], self.d.rot.gamma_d, self.d.rot.alpha_d}
+        if not (syms & {Mass, g, l} and syms & spin):
+            self._add(line, piece, "inequality", "unchecked",
+                      "an inequality the derivation does not decide (it knows the sleeping top's condition)")
+            return
         claim = (a - b) if rel in ("≥", ">") else (b - a)
         strict = rel in (">", "<")
         cond = self.d.sleeping.condition

@@ -24,6 +24,7 @@ What is normalised:
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
   ``\\dv``/``\\pdv`` (the physics package's derivatives), ``\\vdot``/``\\cross``.
 * **Degrees**: ``30^{\\circ}`` is 30·π/180.
+* **Order of scripts**: ``\\omega^2_1`` is ``\\omega_1^2``; an empty group ``{}`` is nothing.
 * **The file's macros**: ``\\newcommand``, ``\\renewcommand``, ``\\def`` and
   ``\\DeclareMathOperator``, with their arguments (#1 … #9), expanded wherever they are used.
 """
@@ -194,7 +195,9 @@ _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "c
            "dotsm": "cdots", "dotsc": "cdots", "land": "quad", "And": "quad", "implies": "Rightarrow",
            "iff": "Leftrightarrow", "Longrightarrow": "Rightarrow", "longrightarrow": "to",
            "mathbb": "mathrm", "rm": "mathrm", "degree": "circ", "lbrace": "{", "rbrace": "}",
-           "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad"}
+           "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad",
+           **{"var" + g: g for g in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi",
+                                     "Psi", "Omega")}}
 _FUNCTION_NAMES = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
                    "arcsin", "arccos", "arctan"}
 
@@ -347,6 +350,9 @@ def _print(nodes, user: dict) -> str:
 
 
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
+_EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
+_SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
+_SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*(" + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
 
 def normalize(latex: str, user: dict | None = None) -> str:
@@ -372,4 +378,6 @@ def normalize(latex: str, user: dict | None = None) -> str:
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
+    text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
+    text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     return re.sub(r"[ \t]{2,}", " ", text).strip()

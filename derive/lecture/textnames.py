@@ -1,0 +1,204 @@
+"""A text's own names and settings, as a reader keeps them while reading: the part of the notes
+checker that learns from the text instead of knowing in advance.
+
+Takes: statements parsed by `derive.lecture.latex` with an *open* vocabulary (an atom outside the
+derivation's vocabulary is a `latex.Generic` symbol of the text's). Gives: the mixin `TextNames`
+of `derive.lecture.notes_check.Checker`, which
+
+1. **records a new name's definition**: ``X = …`` or ``X \\equiv …`` with X a symbol the text has
+   not defined (``u = \\cos\\theta``, ``T_{rot} = …``, ``\\dot p_\\phi = …``, ``k_1 = I_z - I_y``)
+   is not a claim: X stands for its right side from here on, and a chain ``X = a = b`` checks
+   a = b;
+2. **takes settings for what they are**: ``\\theta = 0``, ``I_3 = 0``, ``\\omega_1 = 0``,
+   ``I_1 = I_2 \\neq I_3``, ``\\phi = 30^\\circ`` set a variable or a parameter to a value (a case,
+   a special body, a numeric example): they hold for the rest of their display, or, when the
+   display says nothing else, for the rest of the section; never a claim;
+3. **declines to judge names it cannot tie**: a relation between symbols of the text's that no
+   definition ties to the derivation is checked only when it is an identity whatever they stand
+   for (then ``holds``); otherwise it is ``unchecked`` naming the symbols;
+4. **differentiates**: ``\\frac{d}{dt}`` (`latex.DT`) by the chain rule through the angles, their
+   rates, ω̃ᵢ (→ ω̃̇ᵢ) and the text's symbols (X → Ẋ, and Ẋ of a defined X is the derivative of its
+   definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
+   through ω̃(q, q̇).
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
+from derive.symbolic.rotations import ANGLES, RATES, time_derivative
+
+PARAMETERS = (I1, I2, I3, Mass, g, l)
+VARIABLES = ANGLES + RATES + ACCELS + tuple(lx.W) + tuple(lx.WD)
+
+
+def _free(obj) -> set:
+    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+
+
+def _is_value(v, defined) -> bool:
+    """What a setting sets a variable to: a number, a parameter, or an expression in the
+    parameters and the text's own symbols not yet defined (an example's ω sin α)."""
+    if isinstance(v, sp.MatrixBase):
+        return False
+    return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
+               for s in _free(v))
+
+
+class TextNames:
+    """Mixin of the checker: see the module docstring. Uses ``self.ctx`` (defs, subs),
+    ``self.vocab``, ``self.d`` (the derivation) and ``self._add``."""
+
+    # -- 1 to 3: before the kinds -----------------------------------------------------------------
+    def _text_statement(self, line, piece, parsed) -> bool:
+        """Handle a statement about the text's own names or a setting; True when it is done."""
+        members = [m.value for m in parsed.members]
+        rels = parsed.relations
+        const = [k for k, m in enumerate(members) if isinstance(m, lx.Generic) and m.name == "const"]
+        if const:                     # "= const": the text says a quantity is conserved
+            if len(members) == 2:
+                self._add(line, piece, "assumption", "unchecked",
+                          "states that a quantity is constant (an assumption or a conservation law)")
+                return True
+            keep = [k for k in range(len(members)) if k not in const]
+            members = [members[k] for k in keep]
+            rels = [rels[k - 1] for k in keep[1:]]
+            parsed = type(parsed)([parsed.members[k] for k in keep], rels)
+        if any(isinstance(m, sp.MatrixBase) for m in members):
+            if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
+                self._matrix_name(members[0], members[1])
+                self.settings_only = False
+                self._add(line, piece, "new symbol", "unchecked",
+                          f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
+                return True
+            return False
+        if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
+            return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
+        if set(rels) - {"=", "≡", "≈"}:
+            return self._undefined(line, piece, members, rels)
+        m0 = members[0]
+        if self._new_name(m0) and not (_free(members[1]) & {m0}):
+            self.ctx.defs[m0] = members[1]
+            self._mark_defined(m0)
+            self.settings_only = False
+            if len(members) == 2:
+                self._add(line, piece, "new symbol", "unchecked",
+                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
+                return True
+            for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked
+                self._one(line, piece, "identity", members[1], members[k], parsed, k, approx=rels[k - 1] == "≈")
+            return True
+        if len(members) == 2 and rels[0] == "=" and self._settable(m0) \
+                and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
+            self.ctx.subs[m0] = members[1]
+            self.display_settings.append(m0)
+            if m0 in lx.W and not _free(members[1]) & {lx.t}:
+                self.ctx.subs[lx.WD[lx.W.index(m0)]] = sp.S.Zero     # a constant component
+            self._add(line, piece, "setting", "unchecked",
+                      f"sets {self.tex(m0)} = {self.tex(members[1])}: a case or an assumption of the text, not a claim")
+            return True
+        return self._undefined(line, piece, members, rels)
+
+    def _settings_before_neq(self, line, piece, members, rels) -> bool:
+        """``I_1 = I_2 \\neq I_3``: the equalities are what the text assumes (the ≠ says the rest)."""
+        for k, rel in enumerate(rels):
+            a, b = members[k], members[k + 1]
+            if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and a != b:
+                self.ctx.subs[b] = a
+                self.display_settings.append(b)
+        self._add(line, piece, "setting", "unchecked", "an assumption of the text (its equalities hold from here on)")
+        return True
+
+    def _undefined(self, line, piece, members, rels) -> bool:
+        """A relation with symbols of the text's that nothing ties: decided only if it is an
+        identity whatever they are."""
+        loose = set()
+        for m in members:
+            loose |= {s for s in _free(self._resolve(m)) if isinstance(s, lx.Generic)}
+        if not loose:
+            return False
+        self.settings_only = False
+        if self._vectors(line, piece, piece):
+            return True
+        names = ", ".join(sorted(self.tex(s) for s in loose))
+        if set(rels) <= {"=", "≡"}:
+            first = self._calculus(self._resolve(members[0]))
+            if all(sp.expand(self._calculus(self._resolve(m)) - first) == 0 for m in members[1:]):
+                self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
+                self.settings_only = False
+                return True
+        self._add(line, piece, "unknown", "unchecked",
+                  f"relates {names}, which the text has not tied to the derivation")
+        self.settings_only = False
+        return True
+
+    def _new_name(self, sym) -> bool:
+        return isinstance(sym, lx.Generic) and sym not in self.ctx.defs
+
+    def _settable(self, sym) -> bool:
+        return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym is lx.t or
+                                               sym in (lx.p_alpha_sym(), lx.p_gamma_sym()))
+
+    def _mark_defined(self, sym):
+        """A defined symbol of the text's is no longer 'loose'."""
+
+    def _matrix_name(self, sym, value):
+        """X = (a matrix): X is from here on a non-commuting symbol, so that a product of the
+        text's matrices keeps its order when they are substituted."""
+        atom = self.vocab.generic.pop(sym)
+        mat = lx.Generic(sym.name, commutative=False)
+        self.vocab.generic[mat] = atom
+        self.ctx.defs[mat] = sp.ImmutableMatrix(value)
+
+    # -- display scope of settings ----------------------------------------------------------------
+    def _open_display(self):
+        self.display_settings = []
+        self.settings_only = True
+        self._subs_before = dict(self.ctx.subs)
+
+    def _close_display(self):
+        """Settings made inside a display with claims hold for that display only."""
+        if self.display_settings and not self.settings_only:
+            self.ctx.subs = self._subs_before
+
+    # -- 4: calculus ------------------------------------------------------------------------------
+    def _calculus(self, v):
+        """``DT(e)`` and ``Derivative(e, x)`` evaluated (the module docstring, item 4)."""
+        if not hasattr(v, "has") or not (v.has(lx.DT) or v.has(sp.Derivative)):
+            return v
+        v = v.replace(lambda e: isinstance(e, sp.Derivative), lambda e: self._partial(e))
+        return v.replace(lambda e: isinstance(e, lx.DT), lambda e: self._dt(e.args[0]))
+
+    def _partial(self, e):
+        expr, pairs = self._resolve(e.expr), e.variable_count
+        for var, n in pairs:
+            if var in ANGLES or var in RATES:
+                expr = expr.xreplace({w: self.d.omega[i] for i, w in enumerate(lx.W)})
+            expr = sp.diff(expr, var, n)
+        return expr
+
+    def _dt(self, e):
+        e = self._resolve(e)
+        out = time_derivative(e, accels=ACCELS)
+        out += sum((sp.diff(e, w) * wd for w, wd in zip(lx.W, lx.WD)), sp.S.Zero)
+        for s in _free(e):
+            if isinstance(s, lx.Generic):
+                atom = self.vocab.generic[s]
+                out += sp.diff(e, s) * self.vocab._generic(atom.with_(dots=atom.dots + 1))
+        return out + sp.diff(e, lx.t)
+
+    def _dotted_definitions(self, v) -> dict:
+        """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined."""
+        rep = {}
+        for s in _free(v):
+            if isinstance(s, lx.Generic) and s not in self.ctx.defs:
+                base = self.vocab.undotted(s)
+                if base is not None and base[0] in self.ctx.defs:
+                    value = self.ctx.defs[base[0]]
+                    for _ in range(base[1]):
+                        value = self._dt(value)
+                    rep[s] = value
+        return rep
