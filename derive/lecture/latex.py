@@ -44,6 +44,7 @@ BASIS = sp.symbols("e1 e2 e3", real=True)          # ê₁ ê₂ ê₃ (body)
 PRIMED = sp.symbols("e1' e2' e3'", real=True)      # ê′ᵢ: the frame after the first two turns
 INERTIAL = sp.symbols("e1^0 e2^0 e3^0", real=True)  # ê⁰ᵢ: the inertial frame
 Omega, Omega1, Omega2 = sp.symbols("Omega Omega_1 Omega_2", real=True)
+TAU = sp.symbols("tau1:4", real=True)              # τᵢ: the torque's body components
 t = sp.Symbol("t", real=True)
 FREE_NAMES = {"A": "A", "B": "B", "C": "C", "t": "t", "varphi": "varphi", "delta": "delta", "epsilon": "epsilon"}
 """Letters a text may use as its own constants without defining them (amplitude, time, phase…)."""
@@ -118,6 +119,7 @@ FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": 
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
              "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
+             "ll": "≪", "gg": "≫",
              "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
              "rightarrow": "→", "propto": "∝", "sim": "∼"}
 
@@ -335,6 +337,10 @@ class Vocabulary:
     omega_names: bool = False
     """Ω, Ω₁, Ω₂ are the lecture's frequencies (once the text defines Ω with ≡); otherwise a text's
     Ω is its own symbol."""
+    names: object = None
+    """The text's own names (`derive.lecture.names.Names`): they win over the usual spellings."""
+    names_off: bool = False
+    """Read as if the text had named nothing (a second opinion on a learned name)."""
     readings: dict = field(default_factory=dict)
     """A second reading of an ambiguous name, tried when the first makes a formula fail:
     ``{"L": LMAG}`` reads a plain L as the angular momentum's magnitude."""
@@ -351,6 +357,11 @@ class Vocabulary:
         mine = self.defined.get(a.with_(text=""))
         if mine is not None:
             return mine
+        meaning = self.names.meaning(a) if self.names is not None and not self.names_off else None
+        if meaning is not None:
+            value = self._meant(meaning, a, env)
+            if value is not None:
+                return value
         sub = a.sub
         if sub and len(sub) == 1 and sub in env:
             sub = str(env[sub])
@@ -422,6 +433,44 @@ class Vocabulary:
         if self.open and not a.bold and not a.hat:
             return self._generic(a)
         return None
+
+    def _meant(self, meaning: str, a: Atom, env: dict):
+        """What an atom the text has named (`derive.lecture.names.MEANINGS`) stands for; None
+        where the meaning says nothing of this spelling (an index it does not cover)."""
+        sub = str(env.get(a.sub, a.sub)) if len(a.sub) == 1 else a.sub
+        k = {"1": 0, "2": 1, "3": 2}.get(sub)
+        if not k and k != 0 and sub in ("x", "y", "z") and meaning == "angular velocity":
+            k = "xyz".index(sub)              # body axes called x, y, z
+        plain = not a.dots and not a.primes and not a.hat and not a.tilde
+        moments = (I1, I2, I3)
+        if meaning == "angular momentum":
+            if a.bold and not sub and plain:
+                return LVEC
+            if k is not None and plain and not a.bold:
+                return moments[k] * W[k]
+            if sub in ("z", "Z") and plain:
+                return p_alpha
+            if not sub and plain:
+                return LMAG
+            return None
+        if meaning == "angular velocity":
+            if a.bold and not sub and not a.dots:
+                return OMEGA_VEC
+            if k is not None and not a.bold and a.dots <= 1 and not a.primes:
+                return (W if a.dots == 0 else WD)[k]
+            return None
+        if meaning == "torque":
+            if k is not None and plain:
+                return TAU[k]
+            return None
+        if not plain or a.bold:
+            return None
+        if meaning == "potential energy":
+            return self._generic(a)            # the text's own potential: its definition says what
+        return {"vertical angular momentum": p_alpha, "axial angular momentum": p_gamma, "mass": Mass,
+                "centre-of-mass distance": l, "gravity": g, "kinetic energy": T_, "energy": ENERGY,
+                "lagrangian": LAGRANGIAN, "effective potential": VEFF, "transverse moment": I1,
+                "second moment": I2, "axial moment": I3}.get(meaning)
 
     def _generic(self, a: Atom):
         """The text's own symbol for an atom: one per spelling of base, decorations and scripts."""
@@ -635,6 +684,10 @@ class _Parser:
             # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
             if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
                 return value
+            if self.at("op", "(") and (value in W or value in WD or isinstance(value, Generic)):
+                at = self._at_a_time(tok, value)
+                if at is not None:
+                    return at
             return value
         if tok.kind == "op" and tok.value in "({":
             value = self.paren(env)
@@ -670,6 +723,24 @@ class _Parser:
                 return self.sum(env, tok)
             self.fail(f"'\\{name}' here")
         self.fail(f"unexpected {tok.value!r}")
+
+    def _at_a_time(self, tok, value):
+        """ω_y(0), u(t_1): a function of time at a time given by a number or a symbol other than
+        t — the text's own symbol for that value (ω_y(0) is an initial value, not ω_y × 0)."""
+        inner = self.peek(1)
+        close = self.peek(2)
+        if inner is None or close is None or close.kind != "op" or close.value != ")":
+            return None
+        if inner.kind == "num":
+            label = inner.value
+        elif inner.kind == "atom" and inner.value.base != "t" or (inner.kind == "atom" and inner.value.sub):
+            label = inner.value.text
+        else:
+            return None
+        self.i += 3
+        if not self.vocab.open:
+            raise Unknown(f"unknown symbol {tok.value.text}({label})", tok.pos + 1)
+        return self.vocab._generic(tok.value.with_(sup=f"({label})"))
 
     def factor_no_implicit(self, env):
         """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ))."""
@@ -828,7 +899,17 @@ class _Parser:
         return value
 
 
+VECTORS = (LVEC, OMEGA_VEC, DLDT, DLDT_BODY)
+
+
 def _mul(a, b):
+    """a·b or a b of scalars (and of a matrix with scalars); a product that involves a vector
+    quantity twice, or a matrix and a vector quantity, is the vector reader's
+    (`derive.lecture.vectors`): a dot product, or a tensor acting on a vector."""
+    vec = lambda x: hasattr(x, "free_symbols") and bool(set(VECTORS) & x.free_symbols)  # noqa: E731
+    mat = lambda x: isinstance(x, sp.MatrixBase)  # noqa: E731
+    if (vec(a) and vec(b)) or (mat(a) and vec(b)) or (vec(a) and mat(b)):
+        raise NotRead("a product of vectors: read as vectors")
     return a * b
 
 

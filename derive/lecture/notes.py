@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from derive.errors import SceneError
+from derive.lecture import names as nm
 from derive.lecture import source
 
 
@@ -77,6 +78,7 @@ class Notes:
     angles: tuple = DEFAULT_ANGLES["z-y-z"]
     declared: dict = field(default_factory=dict)
     items: list = field(default_factory=list)
+    names: nm.Names = field(default_factory=nm.Names)
 
 
 def _symbols(value: str, path: str) -> dict:
@@ -214,6 +216,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     notes = Notes(path, conv, tuple(angles), declared)
     body = source.rendered("\n".join([""] * skip + lines[skip:]))
     user_macros = source.macros(body)
+    notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     starts = [0]
     for m in re.finditer("\n", body):
         starts.append(m.end())

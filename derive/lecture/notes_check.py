@@ -298,6 +298,20 @@ _TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|m
 _RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 
+def _unwrapped(piece: str) -> str:
+    """A statement written in parentheses, ``(\\dot\\theta = \\text{const})``, without them."""
+    s = piece.strip()
+    if s.startswith("(") and s.endswith(")") and _RELATION_IN.search(s):
+        depth = 0
+        for k, ch in enumerate(s):
+            depth += ch == "("
+            depth -= ch == ")"
+            if depth == 0 and k < len(s) - 1:
+                return piece
+        return s[1:-1]
+    return piece
+
+
 def _cleaned(piece: str) -> str:
     """A statement without the words after it (``&&\\text{stable}``); ``\\text{const}`` becomes a
     constant of the text's."""
@@ -358,7 +372,7 @@ def statements(latex: str) -> list[str]:
         for piece in _colon_parts(row):
             for part in _top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
                 for one in _lists(part):
-                    one = _cleaned(_trimmed(one))
+                    one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
                         out.append(_trimmed(one))
     return out
@@ -551,7 +565,7 @@ class Checker(TextNames):
         self.notes = notes
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles),
                                    aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"],
-                                   open=True)
+                                   open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.ctx = _Context()
         self._open_display()
@@ -677,32 +691,75 @@ class Checker(TextNames):
         self._close_display()
 
     def _read_once_or_twice(self, line, piece, dup, pieces):
-        """The statement as read; if that flags it and a name in it has a second reading (a plain
-        L as the angular momentum's magnitude), the second reading is tried too, and kept when
-        it makes the statement hold."""
+        """The statement as read; if that flags it, the second readings of its names are tried:
+        a plain L as the angular momentum's magnitude (kept when it makes the statement hold),
+        and the statement without the names learned from the prose (when only that reading
+        flags it, the verdict rests on an uncertain reading of the text: unchecked, saying so)."""
         before, saved = len(self.claims), self._snapshot()
         self._statement(line, piece, duplicate=dup, pieces=pieces)
         first = self.claims[before:]
         if not any(c.verdict in ("typo", "fails") for c in first):
             return
         for name, value, what in _second_readings(piece):
-            after = self._snapshot()
-            del self.claims[before:]
-            self.ctx = saved
-            saved = self._snapshot()
-            self.vocab.readings[name] = value
-            try:
-                self._statement(line, piece, duplicate=dup, pieces=pieces)
-            finally:
-                del self.vocab.readings[name]
-            second = self.claims[before:]
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value})
             if second and all(c.verdict == "holds" for c in second):
                 for c in second:
                     c.why += f" (reading {what})"
+                self._keep(before, second, ctx)
                 return
-            del self.claims[before:]
-            self.claims.extend(first)
-            self.ctx = after
+        learned = self._learned(piece)
+        if learned:
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
+            if not any(c.verdict in ("typo", "fails") for c in second):
+                for c in first:
+                    if c.verdict in ("typo", "fails"):
+                        c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
+                                 "unchecked, since the text may mean something else by it here")
+                        c.verdict, c.correction = "unchecked", None
+
+    def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
+        """The statement read again from the context ``saved`` with other readings: its claims and
+        the context it leaves; the checker's own state is left as it was."""
+        keep_claims, keep_ctx = len(self.claims), self.ctx
+        self.ctx = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
+        self.vocab.readings.update(readings or {})
+        self.vocab.names_off = names_off
+        try:
+            self._statement(line, piece, duplicate=dup, pieces=pieces)
+        except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
+                KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
+            pass
+        finally:
+            for name in readings or {}:
+                del self.vocab.readings[name]
+            self.vocab.names_off = False
+        out, ctx = self.claims[keep_claims:], self.ctx
+        del self.claims[keep_claims:]
+        self.ctx = keep_ctx
+        return out, ctx
+
+    def _keep(self, before, claims, ctx):
+        del self.claims[before:]
+        self.claims.extend(claims)
+        self.ctx = ctx
+
+    def _learned(self, piece) -> str:
+        """The names in a statement whose meaning came from the prose (not the front matter)."""
+        try:
+            toks = lx.scan(piece)
+        except lx.NotRead:
+            return ""
+        names = self.notes.names
+        out = []
+        for t in toks:
+            if t.kind == "atom" and names.meaning(t.value) is not None:
+                key = (t.value.base, t.value.sub)
+                where = names.where.get(key) or next((w for k, w in names.where.items() if k[0] == key[0]), "")
+                if where != "the front matter":
+                    text = f"{t.value.text} as {names.meaning(t.value)}"
+                    if text not in out:
+                        out.append(text)
+        return ", ".join(out)
 
     def _snapshot(self):
         """A copy of the context whose containers can change without touching this one."""
@@ -733,11 +790,12 @@ class Checker(TextNames):
         head_end = _first_relation(text)
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
-        if not duplicate and self._text_statement(line, piece, parsed):
+        parsed = self._constant_dropped(line, piece, parsed)
+        if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):
             return
         self.settings_only = False
         rels = set(parsed.relations)
-        if rels & {"≠", "→", "∝", "∼", "⇒"}:
+        if rels & {"≠", "→", "∝", "∼", "⇒", "≪", "≫"}:
             self._add(line, piece, "relation", "unchecked", f"not a claim the derivation decides ({', '.join(sorted(rels))})")
             return
         if duplicate:
@@ -790,6 +848,9 @@ class Checker(TextNames):
             ok, how = vc.holds(reading, k, f"{piece}/{k}")
             if ok:
                 self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
+                continue
+            if "not a vector" in how or " against a " in how:
+                self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
                 continue
             fix = self._vector_fix(reading, k, piece)
             if fix:
@@ -1003,7 +1064,9 @@ class Checker(TextNames):
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
             return
-        undecided = None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
+        loose = sorted(self.tex(x) for x in _free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
+            None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:
             self._add(line, piece, kind, "unchecked", undecided)
             return
@@ -1028,6 +1091,9 @@ class Checker(TextNames):
         if not derived:
             return "an equation between the text's variables: a condition it imposes, not an identity"
         every = _free(val).union(*(_free(self._resolve(f)) for f in targets))
+        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        if loose:
+            return f"involves {', '.join(loose)}, which the text has not defined"
         if not every & rates and every & set(rot.ANGLES) and every & set(lx.W):
             return "ties the angles to ω̃ᵢ without their rates: true only for the orientation the text chose"
         return None
@@ -1157,6 +1223,15 @@ class Checker(TextNames):
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         euler = self.d.euler(self.ctx.subs)
+        loose = [x for x in _free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
+        if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not _free(sp.diff(r, loose[0])) & set(lx.W):
+            # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)
+            for i in range(3):
+                if _free(r) & {lx.WD[i]}:
+                    r = r.xreplace({loose[0]: lx.TAU[i]})
+                    break
+        if _free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
+            euler = [R - tau for R, tau in zip(euler, lx.TAU)]
         dyn = set(lx.W) | set(lx.WD)
         for i, R in enumerate(euler):
             if R == 0:

@@ -241,9 +241,15 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     """One macro node printed normalised; returns the text and how many following nodes it used."""
     name = node.macroname
     post = node.macro_post_space or ""
+    if name == "\\":
+        return "\\\\ ", 0                  # a row break; its spacing argument ([10pt]) is no mathematics
     if name in user:
         nargs, body = user[name]
         args, used, j = [], 0, k + 1
+        # arguments the walker already took (it knows \\b, \\u as accents), then the nodes after it
+        for a in (node.nodeargd.argnlist if node.nodeargd is not None else []):
+            if a is not None and len(args) < nargs:
+                args.append(_print(a.nodelist, user) if isinstance(a, LatexGroupNode) else _print([a], user))
         while len(args) < nargs and j < len(nodes):
             nxt = nodes[j]
             j += 1
@@ -314,7 +320,8 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
         if a is None:
             continue
         if isinstance(a, LatexGroupNode):
-            printed.append("{" + _print(a.nodelist, user) + "}")
+            left, right = getattr(a, "delimiters", ("{", "}")) or ("{", "}")
+            printed.append(left + _print(a.nodelist, user) + right)
         else:
             printed.append(a.latex_verbatim())
     return "\\" + name + ("".join(printed) if printed else post), 0

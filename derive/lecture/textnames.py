@@ -53,20 +53,24 @@ class TextNames:
     ``self.vocab``, ``self.d`` (the derivation) and ``self._add``."""
 
     # -- 1 to 3: before the kinds -----------------------------------------------------------------
+    def _constant_dropped(self, line, piece, parsed):
+        """``… = \\text{const}``: the text says a quantity is conserved. A chain is checked without
+        that member; ``X = const`` alone is an assumption (None: nothing left to check)."""
+        members = [m.value for m in parsed.members]
+        const = [k for k, m in enumerate(members) if isinstance(m, lx.Generic) and m.name == "const"]
+        if not const:
+            return parsed
+        if len(members) == 2:
+            self._add(line, piece, "assumption", "unchecked",
+                      "states that a quantity is constant (an assumption or a conservation law)")
+            return None
+        keep = [k for k in range(len(members)) if k not in const]
+        return type(parsed)([parsed.members[k] for k in keep], [parsed.relations[k - 1] for k in keep[1:]])
+
     def _text_statement(self, line, piece, parsed) -> bool:
         """Handle a statement about the text's own names or a setting; True when it is done."""
         members = [m.value for m in parsed.members]
         rels = parsed.relations
-        const = [k for k, m in enumerate(members) if isinstance(m, lx.Generic) and m.name == "const"]
-        if const:                     # "= const": the text says a quantity is conserved
-            if len(members) == 2:
-                self._add(line, piece, "assumption", "unchecked",
-                          "states that a quantity is constant (an assumption or a conservation law)")
-                return True
-            keep = [k for k in range(len(members)) if k not in const]
-            members = [members[k] for k in keep]
-            rels = [rels[k - 1] for k in keep[1:]]
-            parsed = type(parsed)([parsed.members[k] for k in keep], rels)
         if any(isinstance(m, sp.MatrixBase) for m in members):
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
                 self._matrix_name(members[0], members[1])
@@ -77,9 +81,15 @@ class TextNames:
             return False
         if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
-        if set(rels) - {"=", "≡", "≈"}:
-            return self._undefined(line, piece, members, rels)
         m0 = members[0]
+        if set(rels) - {"=", "≡", "≈"}:
+            if self._new_name(m0) and rels[0] in ("=", "≡") and not (_free(members[1]) & {m0}):
+                self.ctx.defs[m0] = members[1]       # k₁ ≡ I_z − I_y > 0: the name, and a condition
+                self._add(line, piece, "new symbol", "unchecked",
+                          f"defines the text's symbol {self.tex(m0)} (recorded, then used) and states a condition")
+                self.settings_only = False
+                return True
+            return self._undefined(line, piece, members, rels)
         if self._new_name(m0) and not (_free(members[1]) & {m0}):
             self.ctx.defs[m0] = members[1]
             self._mark_defined(m0)

@@ -1,0 +1,295 @@
+"""What a text calls things: its names learned from its prose and its front matter.
+
+Takes: the rendered text of a notes file (prose with inline ``$…$`` math, displays) and the
+front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's spellings to
+*meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
+own spellings, so that the text's names win over the lecture's.
+May import: the standard library and :mod:`derive.lecture.latex`.
+
+A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
+it is — "$\\mathbf{M}$ is the angular momentum", "mass $m$", "$J_z$ (angular momentum about the
+vertical)", "the body-frame components $\\Omega_1, \\Omega_2, \\Omega_3$ of the angular
+velocity", "a distance $h$ from the pivot to the centre of mass", "the principal moments $A$,
+$B$, $C$". The phrase nearest the symbol within its clause wins. A meaning binds either the
+exact symbol (``J_z``) or its letter with any index (``M``: 𝐌, M_i, M_z, |𝐌|).
+
+The meanings (`MEANINGS`, a registry: adding one adds a row):
+
+==========================  =======  ===================================================
+meaning                     binds    the text's symbol stands for
+==========================  =======  ===================================================
+angular momentum            letter   𝐋 (bold), Iᵢω̃ᵢ (index 1–3), p of the first angle
+                                     (index z: about the vertical), |𝐋| (plain)
+vertical angular momentum   symbol   p of the first angle (L·ẑ)
+axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃₃)
+angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
+torque                      letter   the torque's body components τᵢ (Euler's equations
+                                     with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
+mass                        symbol   M
+centre-of-mass distance     symbol   l
+gravity                     symbol   g
+kinetic energy, energy,     symbol   T, E, L (the Lagrangian), V_eff
+lagrangian, eff. potential
+transverse moment           symbol   I₁ (= I₂)
+axial moment                symbol   I₃
+principal moments           list     I₁, I₂, I₃ in the order written
+==========================  =======  ===================================================
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from derive.errors import SceneError
+from derive.lecture import latex as lx
+from derive.lecture import source
+
+# meaning → (how it binds, the phrases that say it). Order matters: the more specific first.
+MEANINGS = {
+    "vertical angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:fixed |space |spatial |inertial )?(?:vertical|z|Z|\$z\$|\$Z\$)"),
+    "axial angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:body'?s? )?(?:symmetry|figure|body|top'?s?|spin)\s*(?:axis|x_3)"),
+    "angular momentum": ("letter", r"angular momentum"),
+    "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
+    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces"),
+    "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
+    "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia about the (?:symmetry|figure) axis"),
+    "principal moments": ("list", r"principal moments(?: of inertia)?"),
+    "centre-of-mass distance": ("symbol", r"(?:distance|length|height)\b[^.;$]{0,60}(?:centre|center) of (?:mass|gravity)|(?:centre|center) of (?:mass|gravity)[^.;$]{0,40}(?:distance|from the (?:pivot|support|fixed point|origin|tip))"),
+    "kinetic energy": ("symbol", r"kinetic energy"),
+    "effective potential": ("symbol", r"effective potential"),
+    "lagrangian": ("symbol", r"[Ll]agrangian"),
+    "energy": ("symbol", r"\benergy"),
+    "gravity": ("symbol", r"(?:acceleration of|gravitational acceleration|acceleration due to) gravity"),
+    "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
+    "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
+    "potential energy": ("symbol", r"potential(?: energy)?"),
+}
+"""The meanings a text may give its symbols: how each binds and the phrase that gives it."""
+
+LETTERS = {
+    "angular momentum": ("L", "M", "J"), "angular velocity": ("omega", "Omega", "w", "W"),
+    "torque": ("tau", "N", "T", "M", "G", "Gamma", "K"), "mass": ("m", "M", "mu"),
+    "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravity": ("g",),
+    "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
+    "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
+    "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
+}
+"""The letters a reader takes for each meaning: a phrase next to any other letter is about
+something else (a point C, a matrix S), so it binds nothing."""
+
+ALIASES = {"L": "angular momentum", "M": "angular momentum", "angular momentum body": "angular momentum",
+           "omega": "angular velocity", "angular velocity body": "angular velocity",
+           "l": "centre-of-mass distance", "distance": "centre-of-mass distance", "I_1": "transverse moment",
+           "I1": "transverse moment", "I_3": "axial moment", "I3": "axial moment", "g": "gravity",
+           "T": "kinetic energy", "E": "energy", "V_eff": "effective potential", "p_alpha": "vertical angular momentum",
+           "p_gamma": "axial angular momentum", "tau": "torque"}
+"""Other spellings a front matter may use for a meaning (``a: l``, ``I_\\perp: I_1``)."""
+
+
+@dataclass
+class Names:
+    """The text's spellings → meanings: ``symbols`` by exact symbol (base, index), ``letters`` by
+    letter (any index), and where each was learned (a line, or the front matter)."""
+
+    symbols: dict = field(default_factory=dict)
+    letters: dict = field(default_factory=dict)
+    where: dict = field(default_factory=dict)
+
+    def meaning(self, atom) -> str | None:
+        """The meaning of an atom of `latex.scan`, or None. A letter learned as a vector (bold) or
+        its components (indexed) names both; the plain letter only if the text used it plain."""
+        key = (atom.base, atom.sub)
+        if key in self.symbols:
+            return self.symbols[key]
+        return self.letters.get((atom.base, "plain" if not (atom.bold or atom.sub) else "vector"))
+
+
+_INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
+_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline)\*?\}.+?\\end\{\1\*?\}", re.S)
+_CLAUSE = re.compile(r"[.;:!?]\s|\n\s*\n")
+
+
+def _atoms(latex: str) -> list:
+    """The atoms of an inline formula that is a symbol or a list of symbols, else []."""
+    try:
+        toks = lx.scan(latex)
+    except lx.NotRead:
+        return []
+    atoms = [t.value for t in toks if t.kind == "atom"]
+    rest = [t for t in toks if t.kind != "atom" and not (t.kind == "op" and t.value == ",")]
+    return atoms if atoms and not rest else []
+
+
+def _resolve_meaning(text: str) -> str | None:
+    """A front matter's meaning (``angular momentum``, ``l``, ``I_1``) as a key of `MEANINGS`."""
+    t = text.strip().strip("'\"").replace("\\", "")
+    if t in MEANINGS:
+        return t
+    if t in ALIASES:
+        return ALIASES[t]
+    for name, (_, phrase) in MEANINGS.items():
+        if re.search(phrase, text, flags=re.I):
+            return name
+    return None
+
+
+def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros: dict | None = None) -> Names:
+    """The names a text gives its symbols (see the module docstring).
+
+    Parameters
+    ----------
+    body : str
+        The rendered text (`derive.lecture.source.rendered`).
+    declared : dict, optional
+        The front matter's ``symbols`` map (LaTeX name → meaning); it wins over the prose.
+    path : str
+        For the error naming a meaning the map cannot use.
+    macros : dict, optional
+        The file's own macros (`derive.lecture.source.macros`), expanded in its inline math.
+
+    Returns
+    -------
+    Names
+    """
+    names = Names()
+    body = _INLINE.sub(lambda m: "$" + source.normalize(m.group(1), macros).replace("$", "") + "$", body)
+    prose = _DISPLAY.sub("\n\n", body)
+    starts = [0] + [m.end() for m in re.finditer("\n", body)]
+    for clause in _clauses(prose):
+        text, offset = clause
+        found = list(_INLINE.finditer(text))
+        listed = re.search(MEANINGS["principal moments"][1] + r"\W{0,12}\$", text, flags=re.I)
+        if listed:      # "the principal moments $A$, $B$, $C$": the three symbols right after it
+            run = [m for m in found if m.start() >= listed.end() - 1][:3]
+            gaps = [text[a.end():b.start()] for a, b in zip(run, run[1:])]
+            after = [a for m in run for a in _atoms(m.group(1))]
+            if len(after) == 3 and all(re.fullmatch(r"\s*(,|and|,\s*and)?\s*", g) for g in gaps):
+                _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
+        for k, m in enumerate(found):
+            atoms = _atoms(m.group(1))
+            if not atoms:
+                continue
+            # this symbol as §, the others as ¤: a phrase that reaches past another symbol is its
+            marked = "".join(("§" if j == k else "¤") if isinstance(piece, int) else piece
+                             for j, piece in _pieces(text, found))
+            meaning = _nearest(marked)
+            if meaning is None or meaning == "principal moments" or not _fits(meaning, atoms):
+                continue
+            _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
+    _principal_axes(names, body, prose)
+    for latex, what in (declared or {}).items():
+        meaning = _resolve_meaning(what)
+        atoms = _atoms(latex)
+        if meaning is None or not atoms:
+            raise SceneError(f"{path}: symbols: {latex}: {what!r} is no meaning derive knows "
+                             f"(one of: {', '.join(m for m in MEANINGS if m != 'second moment')})")
+        _bind(names, atoms, meaning, "the front matter", override=True)
+    return names
+
+
+def _principal_axes(names: Names, body: str, prose: str):
+    """A text that says its axes are principal and writes I_x, ω_x, … (with no I_1, ω_1 beside
+    them) means the body's principal axes 1, 2, 3 by x, y, z."""
+    if not re.search(r"principal ax[ie]s", prose, flags=re.I):
+        return
+    used = set()
+    for m in re.finditer(r"\\(omega|Omega)\s*_\s*\{?\s*([xyz123])|\bI\s*_\s*\{?\s*([xyz123])(?![a-z])", body):
+        used.add(((m.group(1) or "I"), m.group(2) or m.group(3)))
+    for letter, meaning in (("I", None), ("omega", "angular velocity"), ("Omega", "angular velocity")):
+        if {(letter, x) for x in "xyz"} & used and not {(letter, x) for x in "123"} & used:
+            if letter == "I":
+                for x, m in zip("xyz", ("transverse moment", "second moment", "axial moment")):
+                    _put(names.symbols, ("I", x), m, False)
+                    names.where[("I", x)] = "prose (principal axes x, y, z)"
+            else:
+                _put(names.letters, (letter, "vector"), meaning, False)
+                names.where[(letter, "x")] = "prose (principal axes x, y, z)"
+
+
+def _line(starts, pos) -> int:
+    return sum(1 for s in starts if s <= pos)
+
+
+def _fits(meaning: str, atoms) -> bool:
+    """Can these symbols carry this meaning? A letter for a vector is bold, indexed or a capital
+    (a lower-case plain letter near "angular momentum" is something else); a quantity that is a
+    number (a mass, a length) is written without an index or with a body's label."""
+    how = MEANINGS[meaning][0]
+    for a in atoms:
+        if meaning in LETTERS and a.base not in LETTERS[meaning]:
+            return False
+        if how == "letter" and not (a.bold or a.sub or a.base[0].isupper()):
+            return False
+        if meaning in ("mass", "centre-of-mass distance", "gravity") and (a.bold or a.dots):
+            return False
+        if meaning == "mass" and a.base not in ("m", "M", "mu"):
+            return False
+        if meaning == "gravity" and a.base != "g":
+            return False
+    return True
+
+
+def _clauses(prose: str):
+    """(clause text, its offset) — the stretch of prose within which a phrase names a symbol."""
+    last = 0
+    for m in _CLAUSE.finditer(prose):
+        yield prose[last:m.end()], last
+        last = m.end()
+    yield prose[last:], last
+
+
+def _pieces(text, found):
+    """The clause as prose pieces and the indices of its inline formulas, in order."""
+    last = 0
+    for j, m in enumerate(found):
+        yield None, text[last:m.start()]
+        yield j, j
+        last = m.end()
+    yield None, text[last:]
+
+
+def _nearest(marked: str) -> str | None:
+    """The meaning whose phrase stands nearest § (the symbol): a phrase around it ("a distance §
+    from the pivot to the centre of mass"), right before it ("mass §") or right after it when the
+    text goes on to say what it is ("§ (angular momentum about …)", "§ is the …", "§ of the …").
+    Nothing past another symbol (¤), nothing farther than a few words."""
+    at = marked.index("§")
+    lead = marked[at + 1:].lstrip()
+    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the )", lead)
+    best = None
+    for name, (_, phrase) in MEANINGS.items():
+        for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):
+            if "¤" in marked[min(m.end(), at):max(m.start(), at)]:
+                continue
+            if m.start() <= at < m.end():
+                d = 0
+            elif m.end() <= at:
+                d = at - m.end()
+            elif explains:
+                d = m.start() - at - 1
+            else:
+                continue
+            if best is None or d < best[0]:
+                best = (d, name)
+    return best[1] if best is not None and best[0] <= 25 else None
+
+
+def _bind(names: Names, atoms, meaning, where, override=False):
+    how = MEANINGS[meaning][0]
+    if how == "list":
+        for atom, m in zip(atoms, ("transverse moment", "second moment", "axial moment")):
+            _put(names.symbols, (atom.base, atom.sub), m, override)
+            names.where[(atom.base, atom.sub)] = where
+        return
+    for atom in atoms:
+        if how == "letter":
+            _put(names.letters, (atom.base, "plain" if not (atom.bold or atom.sub) else "vector"), meaning,
+                 override)
+        else:
+            _put(names.symbols, (atom.base, atom.sub), meaning, override)
+        names.where[(atom.base, atom.sub)] = where
+
+
+def _put(table, key, meaning, override):
+    if override or key not in table:
+        table[key] = meaning
