@@ -37,8 +37,9 @@ def test_reader_assumption_at_the_opening_of_a_sentence():
     from derive.lecture import notes as nt
     text = ("# Top\nFor a symmetric top, $I_1 = I_2$, and so on. The energy is $E = T + V$ here.\n\n"
             "If the spin is large, with\n\n$$\\Omega \\equiv \\tilde{\\omega}_3$$\n")
-    kinds = [(i.kind, i.latex) for i in nt.parse_notes(text).items if i.kind != "heading"]
+    kinds = [(i.kind, i.latex) for i in nt.parse_notes(text).items if i.kind not in ("heading", "context")]
     assert kinds == [("assumption", "I_1 = I_2"), ("inline", "E = T + V"), ("display", "\\Omega \\equiv \\tilde{\\omega}_3")]
+    assert [i.text for i in nt.parse_notes(text).items if i.kind == "context"] == ["symmetric"]
 
 
 def test_steady_precession_and_squared_stability_condition():

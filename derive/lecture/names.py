@@ -105,7 +105,7 @@ class Names:
 
 
 _INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
-_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline)\*?\}.+?\\end\{\1\*?\}", re.S)
+_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|numcases|subnumcases)\*?\}.+?\\end\{\1\*?\}", re.S)
 _CLAUSE = re.compile(r"[.;:!?]\s|\n\s*\n")
 
 

@@ -43,10 +43,13 @@ CONVENTIONS = PROPER + TAIT_BRYAN
 DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma")}
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
-_DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math"
+_DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
                    r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
                    r"|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
+_SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
+                        r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
+"""Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 
@@ -54,7 +57,8 @@ _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\s
 class Item:
     """One thing of the notes, in order.
 
-    ``kind``: ``"heading"`` (``text`` is the title), ``"display"`` (``latex``), ``"inline"`` (a
+    ``kind``: ``"heading"`` (``text`` is the title), ``"context"`` (``text``: ``"symmetric"``, the
+    prose says the body is symmetric), ``"display"`` (``latex``), ``"inline"`` (a
     relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
     here to the next heading) or ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
     ``"same"`` or ``"opposite"``). ``line`` is 1-based; ``lead`` the prose just before the math.
@@ -284,6 +288,10 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
         else:
             events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
+    # what the prose says of the body: "a symmetric top" holds to the next heading
+    prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
+    for m in _SYMMETRIC.finditer(prose):
+        events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
     events.sort(key=lambda e: e[0])
     # merge consecutive sign items of one line ("$\Omega_1$ and $\Omega_2$ are both …")
     items: list[Item] = []

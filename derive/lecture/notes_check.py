@@ -55,7 +55,7 @@ from derive.lecture import verify as vf
 VERDICTS = ("holds", "typo", "fails", "unchecked")
 _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
          "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
-         "alignedat", "subequations", "displaymath", "math")
+         "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
 
 
 # ---- the derivation, per convention -------------------------------------------------------------
@@ -607,6 +607,10 @@ class Checker(TextNames):
             if item.kind == "heading":
                 self._flush()
                 self.ctx.new_section()
+                if nt._SYMMETRIC.search(item.text):
+                    self._symmetric(item.line, item.text)
+            elif item.kind == "context":
+                self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
                 self._assume(item)
             elif item.kind == "signs":
@@ -622,6 +626,13 @@ class Checker(TextNames):
             k += 1
         self._flush()
         return self.claims
+
+    def _symmetric(self, line, words):
+        """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
+        from derive.symbolic.lagrangian import I1, I2
+        if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
+            self.ctx.subs[I2] = I1
+            self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
@@ -651,6 +662,8 @@ class Checker(TextNames):
             else:
                 self.ctx.subs[a] = sp.S.Zero
         elif rel in ("=", "≈") and isinstance(a, sp.Symbol) and not isinstance(a, lx.Quantity):
+            if a.xreplace(self.ctx.subs) == sp.sympify(b).xreplace(self.ctx.subs):
+                return                            # already so (the prose said "a symmetric top")
             self.ctx.subs[a] = b
 
     def _signs(self, item):
@@ -816,6 +829,8 @@ class Checker(TextNames):
             self._definition(line, piece, parsed)
         elif any(_free(m.value) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
+        elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS_) for m in parsed.members):
+            self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
@@ -1181,6 +1196,31 @@ class Checker(TextNames):
         found = [i for i in range(3) if lx.WD[i] in _free(raw)]
         if len(found) == 1:   # … or, past correcting, the derived one for that component
             self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
+
+    def _angle_eom(self, line, piece, parsed):
+        """An equation of motion in the angles (I₁θ̈ = …): solved for the one acceleration it has,
+        against the heavy symmetric top's Lagrange equations — in the rates, or with the cyclic
+        momenta for the rates (Routh's reduction)."""
+        raw = self._resolve(parsed.members[0].value - parsed.members[1].value)
+        accels = [a for a in ACCELS_ if a in _free(raw)]
+        rot = self.d.rot
+        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS_[1]:
+            self._add(line, piece, "equation of motion", "unchecked", "an equation of motion the derivation does not write")
+            return
+        a = accels[0]
+        claim = sp.cancel(sp.together(-raw.xreplace({a: 0}) / sp.diff(raw, a)))
+        forms = [self.d.reduction.beta_acceleration, self.d.top.accelerations[1]]
+        why = ""
+        for f in forms:
+            ok, why = self._compare(claim, f, piece + "/angle")
+            if ok:
+                self._add(line, piece, "equation of motion", "holds", f"Lagrange's equation for ${self.tex(rot.beta)}$: {why}")
+                return
+        if self._learned(piece) or _free(claim) & {lx.Generic}:
+            self._add(line, piece, "equation of motion", "unchecked", f"does not match the heavy top's equation ({why})")
+            return
+        self._add(line, piece, "equation of motion", "fails",
+                  f"as written: not Lagrange's equation for ${self.tex(rot.beta)}$ of the heavy symmetric top ({why})")
 
     # -- steady precession
     def _steady_section(self) -> bool:
