@@ -51,7 +51,8 @@ def test_steady_precession_and_squared_stability_condition():
     stab = "# Sleeping\n\n$$p_{\\gamma}^2 %s 4 M g l %s$$\n"
     assert [c.verdict for c in nc.check_text(stab % ("\\ge", "I_1"))] == ["holds"]
     wrong_moment = nc.check_text(stab % ("\\ge", "I_3"))
-    assert [c.verdict for c in wrong_moment] == ["typo"] and "I_{1}" in wrong_moment[0].correction
+    assert [c.verdict for c in wrong_moment] == ["typo"]
+    assert wrong_moment[0].correction == "p_{\\gamma}^2 \\ge 4 M g l I_1"      # in the text's own notation
     assert [c.verdict for c in nc.check_text(stab % ("\\le", "I_1"))] == ["typo"]
 
 

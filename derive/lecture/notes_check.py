@@ -402,6 +402,26 @@ def _colon_parts(row: str) -> list[str]:
     return out
 
 
+_DIFFERENCE = re.compile(r"\(\s*([^()+\-=]+?)\s*-\s*([^()+\-=]+?)\s*\)")
+
+
+def _latex_edits(piece: str):
+    """Single edits of a statement's LaTeX, cheapest first: (edited, what)."""
+    seen = {piece}
+    out = []
+    for m in _DIFFERENCE.finditer(piece):
+        out.append((piece[:m.start()] + f"({m.group(2)} - {m.group(1)})" + piece[m.end():], "the order of a difference"))
+    for m in re.finditer(r"\\(sin|cos)\b", piece):
+        other = "cos" if m.group(1) == "sin" else "sin"
+        out.append((piece[:m.start()] + "\\" + other + piece[m.end():], "sin ↔ cos"))
+    out += [(e, w) for e, w in vc.member_edits(piece) if w not in ("the sign of the whole side", "a factor 1/2", "a factor 2")
+            or not e.lstrip().startswith(("-", "2 ", "\\frac{1}{2} "))]
+    for edited, what in out:
+        if edited not in seen:
+            seen.add(edited)
+            yield edited, what
+
+
 def _second_readings(piece: str):
     """(name, value, description) of the names in a statement that have a second reading."""
     if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
@@ -713,6 +733,8 @@ class Checker(TextNames):
         first = self.claims[before:]
         if not any(c.verdict in ("typo", "fails") for c in first):
             return
+        if any(c.verdict == "typo" for c in first) and not dup:
+            self._in_their_notation(saved, line, piece, pieces, first)
         for name, value, what in _second_readings(piece):
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value})
             if second and all(c.verdict == "holds" for c in second):
@@ -729,6 +751,21 @@ class Checker(TextNames):
                         c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
+
+    def _in_their_notation(self, saved, line, piece, pieces, claims):
+        """The correction of a typo as the text would write it: the one edit of its own LaTeX (a
+        sign, an index, sin ↔ cos, a difference's order, a factor, a power) after which the
+        statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
+        does it (the correction then is the derivation's form)."""
+        for n, (edited, what) in enumerate(_latex_edits(piece)):
+            if n >= 60:
+                return
+            second, _ = self._sandbox(saved, line, edited, False, pieces)
+            if second and all(c.verdict == "holds" for c in second):
+                for c in claims:
+                    if c.verdict == "typo":
+                        c.correction = edited.strip()
+                return
 
     def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
         """The statement read again from the context ``saved`` with other readings: its claims and
