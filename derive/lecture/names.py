@@ -283,8 +283,9 @@ def _bind(names: Names, atoms, meaning, where, override=False):
         return
     for atom in atoms:
         if how == "letter":
-            _put(names.letters, (atom.base, "plain" if not (atom.bold or atom.sub) else "vector"), meaning,
-                 override)
+            kinds = ("plain", "vector") if override else ("plain" if not (atom.bold or atom.sub) else "vector",)
+            for kind in kinds:        # the front matter names the letter in every spelling
+                _put(names.letters, (atom.base, kind), meaning, override)
         else:
             _put(names.symbols, (atom.base, atom.sub), meaning, override)
         names.where[(atom.base, atom.sub)] = where

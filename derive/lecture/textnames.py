@@ -146,7 +146,11 @@ class TextNames:
         return True
 
     def _new_name(self, sym) -> bool:
-        return isinstance(sym, lx.Generic) and sym not in self.ctx.defs
+        """A symbol of the text's that it has not defined, nor the rate of one it has (u̇ of u)."""
+        if not isinstance(sym, lx.Generic) or sym in self.ctx.defs:
+            return False
+        base = self.vocab.undotted(sym)
+        return base is None or base[0] not in self.ctx.defs
 
     def _settable(self, sym) -> bool:
         return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym is lx.t or

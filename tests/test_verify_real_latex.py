@@ -1,0 +1,119 @@
+"""The notes reader on LaTeX as real texts write it: characters, commands, environments, macros,
+the text's own names and settings, other angle sequences, corrections in the text's notation."""
+import pytest
+
+from derive.errors import SceneError
+from derive.lecture import notes as nt
+from derive.lecture import notes_check as nc
+from derive.lecture import source
+
+
+def verdicts(text, **kw):
+    return [(c.line, c.verdict) for c in nc.check_text(text, **kw)]
+
+
+@pytest.mark.parametrize("written, read", [
+    ("T = \u00bd I\u2081\u03c9\u2081\u00b2 \u2212 x", r"T = \frac{1}{2} I_{1}\omega _{1}^{2} - x"),
+    (r"I_3 \dot{\omega}_3 = 0 \tag{13.89}\label{eq:e3}", r"I_3 \dot{\omega}_3 = 0"),
+    (r"\boxed{T = 0} \notag", "T = 0"),
+    (r"\pmb{\omega} \cdot \pmb{L}", r"\boldsymbol{\omega} \cdot \boldsymbol{L}"),
+    (r"\phi = 30^{\circ}", r"\phi = 30 \cdot \frac{\pi}{180}"),
+    ("a &#8211; b &lt; c", "a - b < c"),
+    (r"\omega^2_1 + \dfrac{1}{2}", r"\omega_1^2 + \frac{1}{2}"),
+    (r"\operatorname{sin}\theta", r"\sin \theta"),
+    (r"\dv{\theta}{t}", r"\frac{d \theta}{d t}"),
+    (r"\varOmega", r"\Omega"),
+    ("\u03b8\u0307", r"\dot{\theta}"),
+])
+def test_a_formula_is_read_as_the_text_writes_it(written, read):
+    assert source.normalize(written) == read
+
+
+def test_the_files_own_macros_are_expanded_with_their_arguments():
+    macros = source.macros(r"\newcommand{\vw}[1]{\boldsymbol{\omega}_{#1}} \def\half{\frac12}")
+    assert source.normalize(r"\half I \vw{3}", macros) == r"\frac12 I \boldsymbol{\omega}_{3}"
+
+
+def test_what_is_not_rendered_is_not_read():
+    text = ("# Notes\n\n<!-- $$T = 5$$ -->\n\n```\n$$T = 6$$\n```\n\nSee `$$T = 7$$`.\n\n"
+            "$$T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + \\frac{1}{2} I_3 \\omega_3^2$$\n")
+    assert verdicts(text) == [(11, "holds")]
+
+
+def test_latex_environments_are_displays():
+    text = ("# Euler\n\n\\begin{align}\n I_1 \\dot{\\omega}_1 &= (I_2 - I_3)\\omega_2\\omega_3 \\label{a} \\\\\n"
+            " I_2 \\dot{\\omega}_2 &= (I_3 - I_1)\\omega_3\\omega_1 \\nonumber\n\\end{align}\n\n"
+            "\\begin{equation}\n I_3 \\dot{\\omega}_3 = (I_1 - I_2)\\omega_1\\omega_2 \\tag{3}\n\\end{equation}\n")
+    assert verdicts(text) == [(3, "holds"), (3, "holds"), (8, "holds")]
+
+
+def test_a_z_x_z_texts_omega_1_is_its_angular_velocity_not_the_lectures_frequency():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Angles\n\n"
+            "The body components $\\Omega_1, \\Omega_2, \\Omega_3$ of the angular velocity are\n\n"
+            "$$\\Omega_1 = \\dot\\phi \\sin\\theta \\sin\\psi + \\dot\\theta\\cos\\psi$$\n\n"
+            "$$\\Omega_3 = \\dot\\phi \\cos\\theta - \\dot\\psi$$\n")
+    assert verdicts(text) == [(9, "holds"), (11, "unchecked")]      # a learned name flags nothing alone
+
+
+def test_a_symbols_map_says_a_texts_names_outright():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\nsymbols: {M: angular momentum, a: l}\n---\n"
+            "# Top\n\n$$M_3 = I_3 \\left(\\dot\\phi\\cos\\theta + \\dot\\psi\\right)$$\n\n"
+            "$$M_3 = I_3 \\left(\\dot\\phi\\cos\\theta - \\dot\\psi\\right)$$\n\n"
+            "$$V = M g a \\cos\\theta$$\n")
+    claims = nc.check_text(text)
+    assert [(c.line, c.verdict) for c in claims][:2] == [(8, "holds"), (10, "typo")]
+    assert claims[1].correction == r"M_3 = I_3 \left(\dot\phi\cos\theta + \dot\psi\right)"
+
+
+def test_a_symbols_map_with_a_meaning_derive_does_not_know_is_bad_input():
+    with pytest.raises(SceneError, match="symbols"):
+        nt.parse_notes("---\nsymbols: {M: the moon}\n---\n# x\n")
+
+
+def test_a_new_name_is_recorded_and_its_rate_follows_from_it():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# u\n\n"
+            "$$u = \\cos\\theta$$\n\n$$\\dot{u} = -\\sin\\theta\\,\\dot\\theta$$\n\n"
+            "$$\\dot{u}^2 = (1 - u^2)\\dot\\theta^2$$\n\n$$\\dot{u} = \\sin\\theta\\,\\dot\\theta$$\n")
+    assert verdicts(text) == [(7, "unchecked"), (9, "holds"), (11, "holds"), (13, "typo")]
+
+
+def test_settings_and_numeric_values_are_cases_not_claims():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Example\n\n"
+            "$$\\theta = 30^{\\circ}, \\quad \\psi = 90^{\\circ}$$\n\n"
+            "$$\\omega_1 = \\frac{1}{2} \\dot\\phi$$\n\n"
+            "$$I_1 = I_2 \\neq I_3$$\n")
+    out = verdicts(text)
+    assert out == [(7, "unchecked"), (7, "unchecked"), (9, "holds"), (11, "unchecked")]
+
+
+def test_a_correction_is_written_in_the_texts_own_notation():
+    text = "# Euler\n\nWith no torque,\n\n$$I_3 \\dot{\\omega}_3 = (I_2 - I_1)\\,\\omega_1\\omega_2$$\n"
+    [claim] = nc.check_text(text)
+    assert claim.verdict == "typo"
+    assert claim.correction == r"I_3 \dot{\omega}_3 = (I_1 - I_2)\,\omega_1\omega_2"
+
+
+def test_a_symmetric_body_named_in_the_prose_makes_i1_equal_i2():
+    t = ("\\frac{1}{2} I_1 \\left(\\dot\\phi^2\\sin^2\\theta + \\dot\\theta^2\\right) + "
+         "\\frac{1}{2} I_3 \\left(\\dot\\phi\\cos\\theta + \\dot\\psi\\right)^2")
+    head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Top\n\n"
+    assert verdicts(head + f"For a symmetric top:\n\n$$T = {t}$$\n") == [(9, "holds")]
+    assert verdicts(head + f"For a body:\n\n$$T = {t}$$\n")[0][1] in ("typo", "fails")
+
+
+def test_euler_rates_in_an_aerospace_sequence():
+    head = "---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Rates\n\n"
+    right = "$$\\omega_1 = \\dot\\phi - \\dot\\psi \\sin\\theta$$\n"
+    wrong = "$$\\omega_1 = \\dot\\phi + \\dot\\psi \\sin\\theta$$\n"
+    assert verdicts(head + right) == [(7, "holds")]
+    assert verdicts(head + wrong) == [(7, "typo")]
+
+
+def test_a_consequence_of_eulers_equations_holds():
+    text = ("# Free body\n\nWith no torque,\n\n"
+            "$$I_1^2 \\omega_1 \\dot{\\omega}_1 + I_2^2 \\omega_2 \\dot{\\omega}_2 + I_3^2 \\omega_3 \\dot{\\omega}_3 = 0$$\n")
+    assert verdicts(text) == [(5, "holds")]
+
+
+def test_a_condition_between_free_variables_is_not_judged():
+    assert verdicts("# Steady\n\n$$(I_2 - I_3)\\,\\omega_2 \\omega_3 = 0$$\n") == [(3, "unchecked")]
