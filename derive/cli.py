@@ -342,8 +342,9 @@ def parser() -> argparse.ArgumentParser:
                    help="a Markdown file with LaTeX math to check (default: the lecture's curated table)")
     v.add_argument("--format", choices=("text", "markdown", "json"), default="text",
                    help="text (aligned columns, default), markdown (a table) or json (with a notes file)")
-    v.add_argument("--convention", choices=("z-y-z", "z-x-z"), default=None,
-                   help="the notes' Euler-angle convention (overrides their front matter; default z-y-z)")
+    v.add_argument("--convention", default=None, metavar="A-B-C",
+                   help="the notes' angle sequence, any of the twelve proper Euler and Tait-Bryan ones "
+                        "(z-y-z, z-x-z, z-y-x, ...; overrides their front matter; default z-y-z)")
     v.set_defaults(func=_cmd_verify)
 
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())
