@@ -41,7 +41,8 @@ TAIT_BRYAN = ("z-y-x", "z-x-y", "x-y-z", "x-z-y", "y-x-z", "y-z-x")
 CONVENTIONS = PROPER + TAIT_BRYAN
 """The twelve sequences, turning about the new (intrinsic) axes: six proper Euler, six Tait–Bryan."""
 DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma")}
-TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided"}
+TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided", "set",
+            "setting", "put", "putting", "taking", "substitution", "substituting"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
 _DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
@@ -71,6 +72,7 @@ class Item:
     lead: str = ""
     symbols: tuple = ()
     display: bool = False
+    level: int = 0                 # a heading's level (the number of #)
 
 
 @dataclass
@@ -242,7 +244,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             heading_lines[k] = raw.strip().lstrip("#").strip()
     events = []
     for k, title in heading_lines.items():
-        events.append((starts[k - 1], Item("heading", k, text=title)))
+        level = len(body.split("\n")[k - 1].lstrip()) - len(body.split("\n")[k - 1].lstrip().lstrip("#"))
+        events.append((starts[k - 1], Item("heading", k, text=title, level=level)))
         for m in _MATH.finditer(title):
             inner = source.normalize(m.group("i") or m.group("d") or "").lstrip("-").strip()
             if _RELATION.search(inner) and "\\neq" not in inner and "\\equiv" not in inner:

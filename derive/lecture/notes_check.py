@@ -588,6 +588,7 @@ class Checker(TextNames):
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.ctx = _Context()
+        self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
@@ -626,7 +627,7 @@ class Checker(TextNames):
             item = items[k]
             if item.kind == "heading":
                 self._flush()
-                self.ctx.new_section()
+                self._enter_section(item.level)
                 if nt._SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
             elif item.kind == "context":
@@ -647,6 +648,22 @@ class Checker(TextNames):
         self._flush()
         return self.claims
 
+    def _enter_section(self, level):
+        """A heading: what the text assumed in the enclosing section (a heading of a lower level)
+        before its first subsection holds in each subsection; what a subsection assumed ends
+        with it."""
+        stack = self._sections
+        if stack and stack[-1][0] < level and stack[-1][1] is None:
+            stack[-1][1] = self._snapshot()            # the parent's assumptions, for its children
+        while stack and stack[-1][0] >= level:
+            stack.pop()
+        self.ctx.new_section()
+        if stack and stack[-1][1] is not None:
+            parent = stack[-1][1]
+            self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
+            self.ctx.assumptions, self.ctx.defs = list(parent.assumptions), dict(self.ctx.defs)
+        stack.append([level, None])
+
     def _symmetric(self, line, words):
         """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
         from derive.symbolic.lagrangian import I1, I2
@@ -666,6 +683,14 @@ class Checker(TextNames):
                 self.ctx.assumptions.append(item.latex)      # τ = 0: the torque-free case
             if item.display:
                 self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
+            return
+        m0 = parsed.members[0].value if parsed.members else None
+        if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
+                and _free(parsed.members[1].value) and not _free(parsed.members[1].value) & {m0}:
+            self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
+            if item.display:
+                self._add(item.line, item.latex, "new symbol", "unchecked",
+                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
             return
         if item.display:
             self._add(item.line, item.latex, "assumption", "unchecked",
@@ -841,6 +866,7 @@ class Checker(TextNames):
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
         parsed = self._constant_dropped(line, piece, parsed)
+        parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
         if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):
             return
         self.settings_only = False

@@ -64,8 +64,22 @@ class TextNames:
             self._add(line, piece, "assumption", "unchecked",
                       "states that a quantity is constant (an assumption or a conservation law)")
             return None
-        keep = [k for k in range(len(members)) if k not in const]
+        return self._members_kept(parsed, [k for k in range(len(members)) if k not in const])
+
+    def _members_kept(self, parsed, keep):
+        """The statement with only the members ``keep`` (and the relations between them)."""
         return type(parsed)([parsed.members[k] for k in keep], [parsed.relations[k - 1] for k in keep[1:]])
+
+    def _loose_ends_dropped(self, parsed):
+        """A chain ``a = b = G(u)`` whose end is a lone symbol the text has not defined yet (it
+        names the expression, as G(u) is defined on the next line): checked without it."""
+        members = [m.value for m in parsed.members]
+        if len(members) < 3 or not set(parsed.relations) <= {"=", "≡"}:
+            return parsed
+        loose = [k for k, m in enumerate(members) if self._new_name(m)]
+        if not loose or len(members) - len(loose) < 2 or 0 in loose:
+            return parsed
+        return self._members_kept(parsed, [k for k in range(len(members)) if k not in loose])
 
     def _text_statement(self, line, piece, parsed) -> bool:
         """Handle a statement about the text's own names or a setting; True when it is done."""
@@ -103,8 +117,9 @@ class TextNames:
             return True
         if len(members) == 2 and rels[0] == "=" and self._settable(m0) \
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
-            self.ctx.subs[m0] = members[1]
-            self.display_settings.append(m0)
+            if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
+                self.ctx.subs[m0] = members[1]        # (not again what the text already said)
+                self.display_settings.append(m0)
             if m0 in lx.W and not _free(members[1]) & {lx.t}:
                 self.ctx.subs[lx.WD[lx.W.index(m0)]] = sp.S.Zero     # a constant component
             self._add(line, piece, "setting", "unchecked",
@@ -116,7 +131,8 @@ class TextNames:
         """``I_1 = I_2 \\neq I_3``: the equalities are what the text assumes (the ≠ says the rest)."""
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
-            if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and a != b:
+            if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \
+                    sp.sympify(a).xreplace(self.ctx.subs) != b.xreplace(self.ctx.subs):
                 self.ctx.subs[b] = a
                 self.display_settings.append(b)
         self._add(line, piece, "setting", "unchecked", "an assumption of the text (its equalities hold from here on)")
