@@ -339,6 +339,9 @@ class Vocabulary:
     Ω is its own symbol."""
     names: object = None
     """The text's own names (`derive.lecture.names.Names`): they win over the usual spellings."""
+    axial: int = 2
+    """The body axis of the third turn (2 for z-y-z and z-x-z): the angular momentum's component
+    on it is the third angle's momentum, I₃ω̃₃ = p_γ."""
     names_off: bool = False
     """Read as if the text had named nothing (a second opinion on a learned name)."""
     readings: dict = field(default_factory=dict)
@@ -447,7 +450,7 @@ class Vocabulary:
             if a.bold and not sub and plain:
                 return LVEC
             if k is not None and plain and not a.bold:
-                return moments[k] * W[k]
+                return p_gamma if k == self.axial else moments[k] * W[k]
             if sub in ("z", "Z") and plain:
                 return p_alpha
             if not sub and plain:

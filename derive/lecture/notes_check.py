@@ -587,6 +587,7 @@ class Checker(TextNames):
                                    aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"],
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
+        self.vocab.axial = "xyz".index(self.d.conv.axes[2])
         self.ctx = _Context()
         self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()
@@ -987,6 +988,8 @@ class Checker(TextNames):
                     forms = self.d.forms(s)
                     if forms:
                         rep[s] = forms[0]
+                elif isinstance(s, lx.Generic) and s in self.ctx.subs:
+                    rep[s] = self.ctx.subs[s]      # a case the text sets for its own symbol wins
                 elif s in self.ctx.defs:
                     rep[s] = self.ctx.defs[s]
             rep.update(self._dotted_definitions(v))
@@ -1172,8 +1175,9 @@ class Checker(TextNames):
         loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs)
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
-        if not every & rates and every & set(rot.ANGLES) and every & set(lx.W):
-            return "ties the angles to ω̃ᵢ without their rates: true only for the orientation the text chose"
+        if not every & rates and every & set(rot.ANGLES):
+            return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
+                    "of them there): a condition, such as a turning point or the orientation the text chose")
         return None
 
     def _search(self, value, targets, label, parsed, k, small, order, keep):
