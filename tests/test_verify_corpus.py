@@ -29,7 +29,6 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("cline-euler-angles-to-euler-equations", "checked"): "rotation matrices as products of the text's own matrices",
-    ("cline-euler-angles-to-euler-equations", "found"): "a slip in a space-components matrix, one in a Lagrange equation with torque",
     ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "checked"): "perturbation solutions and orientation relative to L",
     ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "found"): "amplitudes of linearised solutions",
     ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "false"): "orientation chosen along L; a linearised equation",
@@ -51,7 +50,7 @@ SHORT = {
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "found"): "a rolling half hoop's geometry",
 }
 
-FLOOR = {"checked": 67, "slips_flagged": 6, "holds_flagged": 5}
+FLOOR = {"checked": 71, "slips_flagged": 8, "holds_flagged": 6}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

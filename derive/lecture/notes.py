@@ -42,7 +42,7 @@ CONVENTIONS = PROPER + TAIT_BRYAN
 """The twelve sequences, turning about the new (intrinsic) axes: six proper Euler, six Tait–Bryan."""
 DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma")}
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided", "set",
-            "setting", "put", "putting", "taking", "substitution", "substituting"}
+            "setting", "put", "putting", "taking", "substitution", "substituting", "since", "because"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
 _DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"

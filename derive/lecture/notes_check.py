@@ -736,7 +736,7 @@ class Checker(TextNames):
             self._add(item.line, latex, "text", "unchecked", "not a formula")
             return
         seen = []
-        self._open_display()
+        self._open_display(inline=item.kind == "inline")
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
@@ -891,7 +891,7 @@ class Checker(TextNames):
             self._steady(line, piece, parsed)
         elif isinstance(m0.value, lx.Quantity):
             self._definition(line, piece, parsed)
-        elif any(_free(m.value) & set(lx.WD) for m in parsed.members):
+        elif any(_free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
         elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS_) for m in parsed.members):
             self._angle_eom(line, piece, parsed)
@@ -1329,7 +1329,8 @@ class Checker(TextNames):
         r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
-        euler = self.d.euler(self.ctx.subs)
+        # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
+        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         loose = [x for x in _free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
         if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not _free(sp.diff(r, loose[0])) & set(lx.W):
             # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)

@@ -146,6 +146,8 @@ class TextNames:
             loose |= {s for s in _free(self._resolve(m)) if isinstance(s, lx.Generic)}
         if not loose:
             return False
+        if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members):
+            return False          # an equation of motion with a torque of the text's own (N₃)
         self.settings_only = False
         if self._vectors(line, piece, piece):
             return True
@@ -184,15 +186,18 @@ class TextNames:
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
 
     # -- display scope of settings ----------------------------------------------------------------
-    def _open_display(self):
+    def _open_display(self, inline=False):
         self.display_settings = []
-        self.settings_only = True
+        self.settings_only = not inline
+        self._inline = inline      # the body's parameters set in running text stay (I₁ = I₂)
         self._subs_before = dict(self.ctx.subs)
 
     def _close_display(self):
-        """Settings made inside a display with claims hold for that display only."""
+        """Settings made inside a display with claims, or in running text ("the case $\\theta = 0$"),
+        hold there only; a display of settings alone sets them for the section."""
         if self.display_settings and not self.settings_only:
-            self.ctx.subs = self._subs_before
+            keep = {k: v for k, v in self.ctx.subs.items() if k in PARAMETERS and k in self.display_settings}
+            self.ctx.subs = {**self._subs_before, **(keep if self._inline else {})}
 
     # -- 4: calculus ------------------------------------------------------------------------------
     def _calculus(self, v):
