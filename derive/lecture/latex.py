@@ -60,6 +60,10 @@ class DT(sp.Function):
     differentiates once it knows what the argument stands for."""
 
 
+class Transposed(sp.Function):
+    """Xᵀ of a matrix the text has named (``\\lambda^T``): the transpose once X is substituted."""
+
+
 class Generic(sp.Symbol):
     """A symbol of the text's own (``u``, ``N_1``, ``T_{rot}``, ``m_1``): what it stands for is
     what the text says, in a definition the checker records, or nothing."""
@@ -109,11 +113,11 @@ class Words(NotRead):
 GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta",
          "iota", "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi",
          "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma",
-         "Phi", "Psi", "Omega"}
+         "Phi", "Psi", "Omega", "top", "intercal"}
 DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
                "widehat": "hat", "mathbf": "bold", "boldsymbol": "bold", "bm": "bold", "vec": "vec",
                "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec"}
-SPACES = {",", ";", ":", "!", " ", "quad", "qquad", "left", "right", "big", "Big", "bigg", "Bigg",
+SPACES = {",", ";", ":", "!", " ", "quad", "qquad",  "left", "right", "big", "Big", "bigg", "Bigg",
           "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
 FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
@@ -433,7 +437,7 @@ class Vocabulary:
             return sp.E
         if b == "T" and sub in ("rot", "kin", "k", "R", "rotation") and not a.dots and not a.primes:
             return T_
-        if self.open and not a.bold and not a.hat:
+        if self.open and not a.hat:
             return self._generic(a)
         return None
 
@@ -471,7 +475,7 @@ class Vocabulary:
         if meaning == "potential energy":
             return self._generic(a)            # the text's own potential: its definition says what
         return {"vertical angular momentum": p_alpha, "axial angular momentum": p_gamma, "mass": Mass,
-                "centre-of-mass distance": l, "gravity": g, "kinetic energy": T_, "energy": ENERGY,
+                "centre-of-mass distance": l, "gravitational acceleration": g, "kinetic energy": T_, "energy": ENERGY,
                 "lagrangian": LAGRANGIAN, "effective potential": VEFF, "transverse moment": I1,
                 "second moment": I2, "axial moment": I3}.get(meaning)
 
@@ -634,9 +638,30 @@ class _Parser:
         base = self.primary(env)
         while self.at("op", "^"):
             self.i += 1
+            if self._transpose_mark():
+                base = base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+                continue
             exp = self.group_or_token(env)
+            if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
+                    and not (isinstance(exp, sp.Integer)):
+                self.fail("a power of a matrix other than a whole number")
             base = base ** exp
         return base
+
+    def _transpose_mark(self) -> bool:
+        """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""
+        tok = self.peek()
+        if tok is not None and tok.kind == "atom" and tok.value.base in ("T", "top", "intercal") \
+                and not tok.value.sub and not tok.value.dots:
+            self.i += 1
+            return True
+        if tok is not None and tok.kind == "op" and tok.value == "{":
+            inner, close = self.peek(1), self.peek(2)
+            if inner is not None and inner.kind == "atom" and inner.value.base in ("T", "top", "intercal") \
+                    and close is not None and close.kind == "op" and close.value == "}":
+                self.i += 3
+                return True
+        return False
 
     def group_or_token(self, env):
         """A superscript or a function argument written without braces: one token or a group."""

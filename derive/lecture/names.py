@@ -59,7 +59,7 @@ MEANINGS = {
     "effective potential": ("symbol", r"effective potential"),
     "lagrangian": ("symbol", r"[Ll]agrangian"),
     "energy": ("symbol", r"\benergy"),
-    "gravity": ("symbol", r"(?:acceleration of|gravitational acceleration|acceleration due to) gravity"),
+    "gravitational acceleration": ("symbol", r"(?:acceleration of|acceleration due to) gravity|gravitational acceleration"),
     "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
     "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
     "potential energy": ("symbol", r"potential(?: energy)?"),
@@ -69,7 +69,7 @@ MEANINGS = {
 LETTERS = {
     "angular momentum": ("L", "M", "J"), "angular velocity": ("omega", "Omega", "w", "W"),
     "torque": ("tau", "N", "T", "M", "G", "Gamma", "K"), "mass": ("m", "M", "mu"),
-    "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravity": ("g",),
+    "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravitational acceleration": ("g",),
     "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
     "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
@@ -80,7 +80,7 @@ something else (a point C, a matrix S), so it binds nothing."""
 ALIASES = {"L": "angular momentum", "M": "angular momentum", "angular momentum body": "angular momentum",
            "omega": "angular velocity", "angular velocity body": "angular velocity",
            "l": "centre-of-mass distance", "distance": "centre-of-mass distance", "I_1": "transverse moment",
-           "I1": "transverse moment", "I_3": "axial moment", "I3": "axial moment", "g": "gravity",
+           "I1": "transverse moment", "I_3": "axial moment", "I3": "axial moment", "g": "gravitational acceleration",
            "T": "kinetic energy", "E": "energy", "V_eff": "effective potential", "p_alpha": "vertical angular momentum",
            "p_gamma": "axial angular momentum", "tau": "torque"}
 """Other spellings a front matter may use for a meaning (``a: l``, ``I_\\perp: I_1``)."""
@@ -220,11 +220,11 @@ def _fits(meaning: str, atoms) -> bool:
             return False
         if how == "letter" and not (a.bold or a.sub or a.base[0].isupper()):
             return False
-        if meaning in ("mass", "centre-of-mass distance", "gravity") and (a.bold or a.dots):
+        if meaning in ("mass", "centre-of-mass distance", "gravitational acceleration") and (a.bold or a.dots):
             return False
         if meaning == "mass" and a.base not in ("m", "M", "mu"):
             return False
-        if meaning == "gravity" and a.base != "g":
+        if meaning == "gravitational acceleration" and a.base != "g":
             return False
     return True
 

@@ -866,6 +866,7 @@ class Checker(TextNames):
         head_end = _first_relation(text)
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
+        self._text = text                   # the statement with the left side it continues
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
         if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):

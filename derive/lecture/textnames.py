@@ -87,10 +87,13 @@ class TextNames:
         rels = parsed.relations
         if any(isinstance(m, sp.MatrixBase) for m in members):
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
+                if self.vocab.generic[members[0]].bold and self._vectors(line, piece, getattr(self, "_text", piece)):
+                    return True          # a tensor the vector reader knows (Ï, 𝐈 as a matrix)
                 self._matrix_name(members[0], members[1])
                 self.settings_only = False
-                self._add(line, piece, "new symbol", "unchecked",
-                          f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
+                if not self._rotation(line, piece, sp.Matrix(members[1])):
+                    self._add(line, piece, "new symbol", "unchecked",
+                              f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
                 return True
             return False
         if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
@@ -120,6 +123,8 @@ class TextNames:
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
                 self.display_settings.append(m0)
+            if m0 in self.d.rot.ANGLES:
+                self.last_angle_set = m0                   # the turn a numeric matrix then shows
             if m0 in lx.W and not _free(members[1]) & {lx.t}:
                 self.ctx.subs[lx.WD[lx.W.index(m0)]] = sp.S.Zero     # a constant component
             self._add(line, piece, "setting", "unchecked",
@@ -149,7 +154,7 @@ class TextNames:
         if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members):
             return False          # an equation of motion with a torque of the text's own (N₃)
         self.settings_only = False
-        if self._vectors(line, piece, piece):
+        if self._vectors(line, piece, getattr(self, "_text", piece)):
             return True
         names = ", ".join(sorted(self.tex(s) for s in loose))
         if set(rels) <= {"=", "≡"}:
@@ -177,6 +182,52 @@ class TextNames:
     def _mark_defined(self, sym):
         """A defined symbol of the text's is no longer 'loose'."""
 
+    def _rotation(self, line, piece, m) -> bool:
+        """A 3×3 matrix of the angles the text names as a matrix of its own: a rotation, checked as
+        one. Of one angle: the active or the passive (coordinate) turn about x, y or z by it; of
+        all three: the convention's R (body → space) or its transpose, the passive matrix that
+        takes space components to body ones. False (nothing said) for any other matrix."""
+        rot = self.d.rot
+        angles = set(rot.ANGLES)
+        if m.shape != (3, 3) or not _free(m) <= angles:
+            return False
+        if not _free(m):       # numbers: the turn at the angle the text has just set (φ = 30°)
+            last = getattr(self, "last_angle_set", None)
+            used = [last] if last in self.ctx.subs and sp.sympify(self.ctx.subs[last]).is_number else []
+            if not used:
+                return False
+            at = {used[0]: self.ctx.subs[used[0]]}
+        else:
+            used, at = sorted(_free(m) & angles, key=rot.ANGLES.index), {}
+        if len(used) == 1:
+            a = used[0]
+            named = {f"the {kind} turn about {axis} by {self.tex(a)}": f(axis, a)
+                     for axis in "xyz" for kind, f in (("passive", rot.passive), ("active", rot.active))}
+        elif len(used) == 3:
+            R = self.d.conv.matrix()
+            named = {"the rotation R (body → space)": R, "the passive matrix Rᵀ (space → body)": R.T}
+        else:
+            return False
+        named = {what: target.xreplace(at) for what, target in named.items()}
+
+        def zero(d):      # polynomials in sin and cos: their canonical form (never simplify's search)
+            d = sp.sympify(d)
+            return abs(sp.N(d, 30)) < 1e-25 if d.is_number else rot.trig_reduce(d) == 0
+
+        for what, target in named.items():
+            if all(zero(x - y) for x, y in zip(m, target)):
+                self._add(line, piece, "rotation", "holds", f"{what}")
+                return True
+        for what, target in named.items():         # one entry off: a typo of that matrix
+            off = [k for k in range(9) if not zero(m[k] - target[k])]
+            if len(off) == 1 and zero(m[off[0]] + target[off[0]]):
+                row, col = divmod(off[0], 3)
+                self._add(line, piece, "rotation", "typo",
+                          f"{what} but for the sign of the entry in row {row + 1}, column {col + 1}",
+                          self.tex(target))
+                return True
+        return False
+
     def _matrix_name(self, sym, value):
         """X = (a matrix): X is from here on a non-commuting symbol, so that a product of the
         text's matrices keeps its order when they are substituted."""
@@ -202,7 +253,12 @@ class TextNames:
     # -- 4: calculus ------------------------------------------------------------------------------
     def _calculus(self, v):
         """``DT(e)`` and ``Derivative(e, x)`` evaluated (the module docstring, item 4)."""
-        if not hasattr(v, "has") or not (v.has(lx.DT) or v.has(sp.Derivative)):
+        if not hasattr(v, "has"):
+            return v
+        if v.has(lx.Transposed):
+            v = v.replace(lambda e: isinstance(e, lx.Transposed) and isinstance(e.args[0], sp.MatrixBase),
+                          lambda e: e.args[0].T)
+        if not (v.has(lx.DT) or v.has(sp.Derivative)):
             return v
         v = v.replace(lambda e: isinstance(e, sp.Derivative), lambda e: self._partial(e))
         return v.replace(lambda e: isinstance(e, lx.DT), lambda e: self._dt(e.args[0]))
