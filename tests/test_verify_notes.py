@@ -131,7 +131,8 @@ def test_lecture_json_contract(capsys):
     assert set(data) == {"claims", "summary"}
     lines = LECTURE.read_text(encoding="utf-8").split("\n")
     for c in data["claims"]:
-        assert set(c) == {"line", "latex", "kind", "verdict", "correction", "why"}
+        assert set(c) == {"line", "latex", "kind", "verdict", "correction", "why", "assumes"}
+        assert isinstance(c["assumes"], list)
         assert c["verdict"] in ("holds", "typo", "fails", "unchecked")
         assert ("$$" in lines[c["line"] - 1]) or ("$" in lines[c["line"] - 1]) or ("\\[" in lines[c["line"] - 1])
         assert (c["correction"] is not None) == (c["verdict"] == "typo")

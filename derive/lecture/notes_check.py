@@ -211,10 +211,11 @@ class Claim:
     verdict: str
     correction: str | None = None
     why: str = ""
+    assumes: list = field(default_factory=list)    # what it holds under: stated (with where) or not
 
     def as_dict(self) -> dict:
         return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,
-                "correction": self.correction, "why": self.why}
+                "correction": self.correction, "why": self.why, "assumes": list(self.assumes)}
 
 
 @dataclass
@@ -230,10 +231,11 @@ class _Context:
     head: str | None = None                           # left side continued by "= …" displays
     assumptions: list = field(default_factory=list)   # their LaTeX, for the why
     vec_model: str | None = None                      # "particle" after a sum over particles
+    stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
-        self.head, self.assumptions, self.vec_model = None, [], None
+        self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
 
 
 # ---- cutting displays into statements -----------------------------------------------------------
@@ -663,6 +665,7 @@ class Checker(TextNames):
             parent = stack[-1][1]
             self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
             self.ctx.assumptions, self.ctx.defs = list(parent.assumptions), dict(self.ctx.defs)
+            self.ctx.stated = dict(parent.stated)
         stack.append([level, None])
 
     def _symmetric(self, line, words):
@@ -671,6 +674,7 @@ class Checker(TextNames):
         if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
             self.ctx.subs[I2] = I1
             self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
+            self.ctx.stated[I2] = f"line {line}"
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
@@ -711,6 +715,7 @@ class Checker(TextNames):
             if a.xreplace(self.ctx.subs) == sp.sympify(b).xreplace(self.ctx.subs):
                 return                            # already so (the prose said "a symmetric top")
             self.ctx.subs[a] = b
+            self.ctx.stated[a] = f"line {item.line}"
 
     def _signs(self, item):
         syms = []
@@ -758,6 +763,9 @@ class Checker(TextNames):
         self._statement(line, piece, duplicate=dup, pieces=pieces)
         first = self.claims[before:]
         if not any(c.verdict in ("typo", "fails") for c in first):
+            self._under_symmetry(saved, line, piece, pieces, first)
+            return
+        if self._if_symmetric(saved, line, piece, dup, pieces, before):
             return
         if any(c.verdict == "typo" for c in first) and not dup:
             self._in_their_notation(saved, line, piece, pieces, first)
@@ -792,6 +800,48 @@ class Checker(TextNames):
                     if c.verdict == "typo":
                         c.correction = edited.strip()
                 return
+
+    def _symmetry_keys(self):
+        from derive.symbolic.lagrangian import I1, I2
+        return [k for k in (I1, I2) if k in self.ctx.subs and {k, self.ctx.subs[k]} == {I1, I2}]
+
+    def _under_symmetry(self, saved, line, piece, pieces, claims):
+        """A statement that holds only because the text made the body symmetric says so:
+        'under I₁ = I₂' with where the text said it."""
+        keys = [k for k in self._symmetry_keys() if k in saved.subs]
+        if not keys or not claims or not re.search(r"I_\{?[12]|T\b|L\b|E\b|p_", piece):
+            return
+        bare = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
+        for k in keys:
+            del bare.subs[k]
+        second, _ = self._sandbox(bare, line, piece, False, pieces)
+        if any(c.verdict in ("typo", "fails") for c in second):
+            where = self.ctx.stated.get(keys[0], "stated in the text")
+            for c in claims:
+                if c.verdict == "holds":
+                    c.why += f" (under I₁ = I₂, {where})"
+                    c.assumes.append(f"I_1 = I_2 ({where})")
+
+    def _if_symmetric(self, saved, line, piece, dup, pieces, before) -> bool:
+        """A statement that fails as written but holds for a symmetric body, which the text has
+        not said it is: 'holds if I₁ = I₂', never fails."""
+        from derive.symbolic.lagrangian import I1, I2
+        # only a formula written for a symmetric body: I₁ (or a quantity) and no I₂ in it — where
+        # the text writes both, they differ, and I₁ = I₂ would hide its slip
+        if self._symmetry_keys() or re.search(r"I_\{?2", piece) or \
+                not re.search(r"I_\{?1|\bT\b|\bL\b|\bE\b|p_", piece):
+            return False
+        sym = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
+        sym.subs[I2] = I1
+        second, _ = self._sandbox(sym, line, piece, dup, pieces)
+        if not second or not all(c.verdict == "holds" for c in second):
+            return False
+        for c in second:
+            c.why += " — holds if I₁ = I₂ (the text does not say so)"
+            c.assumes.append("I_1 = I_2 (not stated)")
+        del self.claims[before:]
+        self.claims.extend(second)
+        return True
 
     def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
         """The statement read again from the context ``saved`` with other readings: its claims and

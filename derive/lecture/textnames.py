@@ -122,6 +122,7 @@ class TextNames:
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
+                self.ctx.stated[m0] = f"line {line}"
                 self.display_settings.append(m0)
             if m0 in self.d.rot.ANGLES:
                 self.last_angle_set = m0                   # the turn a numeric matrix then shows
@@ -139,6 +140,7 @@ class TextNames:
             if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \
                     sp.sympify(a).xreplace(self.ctx.subs) != b.xreplace(self.ctx.subs):
                 self.ctx.subs[b] = a
+                self.ctx.stated[b] = f"line {line}"
                 self.display_settings.append(b)
         self._add(line, piece, "setting", "unchecked", "an assumption of the text (its equalities hold from here on)")
         return True
