@@ -47,15 +47,14 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.rereading import Rereading
+from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
 from derive.symbolic.lagrangian import ACCELS as ACCELS_
 from derive.lecture import vectors as vc
 from derive.lecture import verify as vf
 
 VERDICTS = ("holds", "typo", "fails", "unchecked")
-_ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
-         "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
-         "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
 
 
 # ---- the derivation, per convention -------------------------------------------------------------
@@ -238,198 +237,6 @@ class _Context:
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
 
 
-# ---- cutting displays into statements -----------------------------------------------------------
-def _strip_envs(s: str) -> str:
-    for env in _ENVS:
-        s = s.replace(f"\\begin{{{env}}}", " ").replace(f"\\end{{{env}}}", " ")
-    return s
-
-
-def _top_level_split(s: str, seps: tuple) -> list[str]:
-    """Split at separators outside braces and outside matrix environments."""
-    out, depth, env, i, start = [], 0, 0, 0, 0
-    while i < len(s):
-        if s.startswith("\\begin{", i):
-            env += 1
-        elif s.startswith("\\end{", i):
-            env -= 1
-        ch = s[i]
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-        elif depth == 0 and env == 0:
-            for sep in seps:
-                if s.startswith(sep, i) and not (sep[-1].isalpha() and i + len(sep) < len(s) and s[i + len(sep)].isalpha()):
-                    out.append(s[start:i])
-                    i += len(sep)
-                    start = i
-                    break
-            else:
-                i += 1
-                continue
-            continue
-        i += 1
-    out.append(s[start:])
-    return out
-
-
-def _alignment_free(s: str) -> str:
-    """Drop the alignment '&' of aligned/split rows, keeping the '&' that separates matrix entries."""
-    out, env, i = [], 0, 0
-    while i < len(s):
-        if s.startswith("\\begin{", i):
-            env += 1
-        elif s.startswith("\\end{", i):
-            env -= 1
-        if s[i] == "&" and env == 0 and (i == 0 or s[i - 1] != "\\"):
-            out.append(" ")
-        else:
-            out.append(s[i])
-        i += 1
-    return "".join(out)
-
-
-def _text_only(piece: str) -> bool:
-    rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
-    return not rest.strip(" &,.;:") and "\\text" in piece
-
-
-_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?\s*\}")
-_TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
-_RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
-
-
-def _unwrapped(piece: str) -> str:
-    """A statement written in parentheses, ``(\\dot\\theta = \\text{const})``, without them."""
-    s = piece.strip()
-    if s.startswith("(") and s.endswith(")") and _RELATION_IN.search(s):
-        depth = 0
-        for k, ch in enumerate(s):
-            depth += ch == "("
-            depth -= ch == ")"
-            if depth == 0 and k < len(s) - 1:
-                return piece
-        return s[1:-1]
-    return piece
-
-
-def _cleaned(piece: str) -> str:
-    """A statement without the words after it (``&&\\text{stable}``); ``\\text{const}`` becomes a
-    constant of the text's."""
-    piece = _CONST.sub(r" \\mathrm{const} ", piece)
-    while True:
-        cut = _TRAILING_WORDS.sub("", piece)
-        if cut == piece or not cut.strip():
-            break
-        piece = cut
-    return piece
-
-
-def _lists(row: str) -> list[str]:
-    """A row that lists statements: cut at top-level ``;`` and at top-level commas between
-    relations (``\\theta = 0, \\dot\\theta = 0``), never inside brackets (f(a, b))."""
-    pieces = []
-    for part in _top_level_split(row, (";",)):
-        if part.rstrip().endswith("\\"):
-            pieces.append(part)
-            continue
-        commas = _bracket_free_split(part)
-        if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
-            pieces.extend(commas)
-        else:
-            pieces.append(part)
-    return [p.replace("\\\x00", "\\;") for p in pieces]
-
-
-def _bracket_free_split(s: str) -> list[str]:
-    out, depth, start = [], 0, 0
-    for i, ch in enumerate(s):
-        if ch in "({[":
-            depth += 1
-        elif ch in ")}]":
-            depth -= 1
-        elif ch == "," and depth == 0 and (i == 0 or s[i - 1] != "\\"):
-            out.append(s[start:i])
-            start = i + 1
-    out.append(s[start:])
-    return out
-
-
-def statements(latex: str) -> list[str]:
-    """The statements of one display (see the module docstring), each a LaTeX string."""
-    body = _strip_envs(latex).replace("\\;", "\\\x00")
-    rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
-    # a row that ends with a binary operator continues on the next
-    joined: list[str] = []
-    for row in rows:
-        if not row:
-            continue
-        if joined and re.search(r"[+\-]\s*$", joined[-1]):
-            joined[-1] = joined[-1] + " " + row
-        else:
-            joined.append(row)
-    out = []
-    for row in joined:
-        for piece in _colon_parts(row):
-            for part in _top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
-                for one in _lists(part):
-                    one = _unwrapped(_cleaned(_trimmed(one)))
-                    if _trimmed(one) and not _text_only(one):
-                        out.append(_trimmed(one))
-    return out
-
-
-def _trimmed(s: str) -> str:
-    """Without spacing commands and punctuation at its ends."""
-    prev = None
-    while prev != s:
-        prev = s
-        s = re.sub(r"^(?:\s|[,.;:]|\\[,;:! ]|\\q?quad)+", "", s)
-        s = re.sub(r"(?:\s|(?<!\\)[,.;:]|\\[,;:! ]|\\q?quad)+$", "", s)
-    return s
-
-
-def _colon_parts(row: str) -> list[str]:
-    """``label: statement`` → the statement; ``case: statement`` (θ = 0: ω_z = ω₃) → both, the case
-    first (a statement of a value, read as the case it is)."""
-    parts = [p for p in re.split(r"(?<!\\)(?<![:<>!])\s*:(?!=)\s*", row)]
-    if len(parts) == 1:
-        return parts
-    out = []
-    for k, part in enumerate(parts):
-        if k < len(parts) - 1 and not _RELATION_IN.search(part):
-            continue                      # a label (\\Omega_1:, \\theta:)
-        out.append(part)
-    return out
-
-
-_DIFFERENCE = re.compile(r"\(\s*([^()+\-=]+?)\s*-\s*([^()+\-=]+?)\s*\)")
-
-
-def _latex_edits(piece: str):
-    """Single edits of a statement's LaTeX, cheapest first: (edited, what)."""
-    seen = {piece}
-    out = []
-    for m in _DIFFERENCE.finditer(piece):
-        out.append((piece[:m.start()] + f"({m.group(2)} - {m.group(1)})" + piece[m.end():], "the order of a difference"))
-    for m in re.finditer(r"\\(sin|cos)\b", piece):
-        other = "cos" if m.group(1) == "sin" else "sin"
-        out.append((piece[:m.start()] + "\\" + other + piece[m.end():], "sin ↔ cos"))
-    out += [(e, w) for e, w in vc.member_edits(piece) if w not in ("the sign of the whole side", "a factor 1/2", "a factor 2")
-            or not e.lstrip().startswith(("-", "2 ", "\\frac{1}{2} "))]
-    for edited, what in out:
-        if edited not in seen:
-            seen.add(edited)
-            yield edited, what
-
-
-def _second_readings(piece: str):
-    """(name, value, description) of the names in a statement that have a second reading."""
-    if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
-        yield "L", lx.LMAG, "L as the magnitude of the angular momentum"
-
-
 # ---- the comparisons ----------------------------------------------------------------------------
 def _has_rates(objs, rot) -> bool:
     return any(_free(o) & set(rot.RATES) for o in objs)
@@ -580,7 +387,7 @@ def _at(e, path):
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames):
+class Checker(TextNames, Rereading):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -754,142 +561,6 @@ class Checker(TextNames):
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
         self._close_display()
 
-    def _read_once_or_twice(self, line, piece, dup, pieces):
-        """The statement as read; if that flags it, the second readings of its names are tried:
-        a plain L as the angular momentum's magnitude (kept when it makes the statement hold),
-        and the statement without the names learned from the prose (when only that reading
-        flags it, the verdict rests on an uncertain reading of the text: unchecked, saying so)."""
-        before, saved = len(self.claims), self._snapshot()
-        self._statement(line, piece, duplicate=dup, pieces=pieces)
-        first = self.claims[before:]
-        if not any(c.verdict in ("typo", "fails") for c in first):
-            self._under_symmetry(saved, line, piece, pieces, first)
-            return
-        if self._if_symmetric(saved, line, piece, dup, pieces, before):
-            return
-        if any(c.verdict == "typo" for c in first) and not dup:
-            self._in_their_notation(saved, line, piece, pieces, first)
-        for name, value, what in _second_readings(piece):
-            second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value})
-            if second and all(c.verdict == "holds" for c in second):
-                for c in second:
-                    c.why += f" (reading {what})"
-                self._keep(before, second, ctx)
-                return
-        learned = self._learned(piece)
-        if learned:
-            second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
-            if not any(c.verdict in ("typo", "fails") for c in second):
-                for c in first:
-                    if c.verdict in ("typo", "fails"):
-                        c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
-                                 "unchecked, since the text may mean something else by it here")
-                        c.verdict, c.correction = "unchecked", None
-
-    def _in_their_notation(self, saved, line, piece, pieces, claims):
-        """The correction of a typo as the text would write it: the one edit of its own LaTeX (a
-        sign, an index, sin ↔ cos, a difference's order, a factor, a power) after which the
-        statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
-        does it (the correction then is the derivation's form)."""
-        for n, (edited, what) in enumerate(_latex_edits(piece)):
-            if n >= 60:
-                return
-            second, _ = self._sandbox(saved, line, edited, False, pieces)
-            if second and all(c.verdict == "holds" for c in second):
-                for c in claims:
-                    if c.verdict == "typo":
-                        c.correction = edited.strip()
-                return
-
-    def _symmetry_keys(self):
-        from derive.symbolic.lagrangian import I1, I2
-        return [k for k in (I1, I2) if k in self.ctx.subs and {k, self.ctx.subs[k]} == {I1, I2}]
-
-    def _under_symmetry(self, saved, line, piece, pieces, claims):
-        """A statement that holds only because the text made the body symmetric says so:
-        'under I₁ = I₂' with where the text said it."""
-        keys = [k for k in self._symmetry_keys() if k in saved.subs]
-        if not keys or not claims or not re.search(r"I_\{?[12]|T\b|L\b|E\b|p_", piece):
-            return
-        bare = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
-        for k in keys:
-            del bare.subs[k]
-        second, _ = self._sandbox(bare, line, piece, False, pieces)
-        if any(c.verdict in ("typo", "fails") for c in second):
-            where = self.ctx.stated.get(keys[0], "stated in the text")
-            for c in claims:
-                if c.verdict == "holds":
-                    c.why += f" (under I₁ = I₂, {where})"
-                    c.assumes.append(f"I_1 = I_2 ({where})")
-
-    def _if_symmetric(self, saved, line, piece, dup, pieces, before) -> bool:
-        """A statement that fails as written but holds for a symmetric body, which the text has
-        not said it is: 'holds if I₁ = I₂', never fails."""
-        from derive.symbolic.lagrangian import I1, I2
-        # only a formula written for a symmetric body: I₁ (or a quantity) and no I₂ in it — where
-        # the text writes both, they differ, and I₁ = I₂ would hide its slip
-        if self._symmetry_keys() or re.search(r"I_\{?2", piece) or \
-                not re.search(r"I_\{?1|\bT\b|\bL\b|\bE\b|p_", piece):
-            return False
-        sym = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
-        sym.subs[I2] = I1
-        second, _ = self._sandbox(sym, line, piece, dup, pieces)
-        if not second or not all(c.verdict == "holds" for c in second):
-            return False
-        for c in second:
-            c.why += " — holds if I₁ = I₂ (the text does not say so)"
-            c.assumes.append("I_1 = I_2 (not stated)")
-        del self.claims[before:]
-        self.claims.extend(second)
-        return True
-
-    def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
-        """The statement read again from the context ``saved`` with other readings: its claims and
-        the context it leaves; the checker's own state is left as it was."""
-        keep_claims, keep_ctx = len(self.claims), self.ctx
-        self.ctx = _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(saved).items()})
-        self.vocab.readings.update(readings or {})
-        self.vocab.names_off = names_off
-        try:
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
-        except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
-                KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
-            pass
-        finally:
-            for name in readings or {}:
-                del self.vocab.readings[name]
-            self.vocab.names_off = False
-        out, ctx = self.claims[keep_claims:], self.ctx
-        del self.claims[keep_claims:]
-        self.ctx = keep_ctx
-        return out, ctx
-
-    def _keep(self, before, claims, ctx):
-        del self.claims[before:]
-        self.claims.extend(claims)
-        self.ctx = ctx
-
-    def _learned(self, piece) -> str:
-        """The names in a statement whose meaning came from the prose (not the front matter)."""
-        try:
-            toks = lx.scan(piece)
-        except lx.NotRead:
-            return ""
-        names = self.notes.names
-        out = []
-        for t in toks:
-            if t.kind == "atom" and names.meaning(t.value) is not None:
-                key = (t.value.base, t.value.sub)
-                where = names.where.get(key) or next((w for k, w in names.where.items() if k[0] == key[0]), "")
-                if where != "the front matter":
-                    text = f"{t.value.text} as {names.meaning(t.value)}"
-                    if text not in out:
-                        out.append(text)
-        return ", ".join(out)
-
-    def _snapshot(self):
-        """A copy of the context whose containers can change without touching this one."""
-        return _Context(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(self.ctx).items()})
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
         text = piece

@@ -1,0 +1,197 @@
+"""Second readings of a statement, as a careful reader gives them before calling a formula wrong.
+
+Takes: a statement the notes checker (`derive.lecture.notes_check.Checker`) has just judged, with
+the context it was judged in. Gives: the mixin `Rereading` of the checker, which reads a flagged
+statement again —
+
+1. with a name's second meaning (a plain L as the angular momentum's magnitude), kept when it
+   makes the statement hold;
+2. for a symmetric body, when the formula is written for one (I₁, no I₂) and the text never said
+   so: ``holds if I₁ = I₂``, never ``fails``; and a statement that holds only because the text
+   made the body symmetric says where it did;
+3. without the names learned from the prose: when only those make it fail, the verdict rests on
+   an uncertain reading, so it is ``unchecked``, saying which reading it tried;
+4. edited, one edit of its own LaTeX at a time, to find the correction in the text's notation.
+
+Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
+left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture import vectors as vc
+
+
+def _copied(ctx):
+    """The context with containers of its own (its values are immutable SymPy objects)."""
+    return type(ctx)(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(ctx).items()})
+
+
+_DIFFERENCE = re.compile(r"\(\s*([^()+\-=]+?)\s*-\s*([^()+\-=]+?)\s*\)")
+
+def _latex_edits(piece: str):
+    """Single edits of a statement's LaTeX, cheapest first: (edited, what)."""
+    seen = {piece}
+    out = []
+    for m in _DIFFERENCE.finditer(piece):
+        out.append((piece[:m.start()] + f"({m.group(2)} - {m.group(1)})" + piece[m.end():], "the order of a difference"))
+    for m in re.finditer(r"\\(sin|cos)\b", piece):
+        other = "cos" if m.group(1) == "sin" else "sin"
+        out.append((piece[:m.start()] + "\\" + other + piece[m.end():], "sin ↔ cos"))
+    out += [(e, w) for e, w in vc.member_edits(piece) if w not in ("the sign of the whole side", "a factor 1/2", "a factor 2")
+            or not e.lstrip().startswith(("-", "2 ", "\\frac{1}{2} "))]
+    for edited, what in out:
+        if edited not in seen:
+            seen.add(edited)
+            yield edited, what
+
+def _second_readings(piece: str):
+    """(name, value, description) of the names in a statement that have a second reading."""
+    if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
+        yield "L", lx.LMAG, "L as the magnitude of the angular momentum"
+
+
+class Rereading:
+    """Mixin of the checker: see the module docstring. Uses ``self.claims``, ``self.ctx``,
+    ``self.vocab``, ``self.notes`` and ``self._statement``."""
+
+    def _read_once_or_twice(self, line, piece, dup, pieces):
+        """The statement as read; if that flags it, the second readings of its names are tried:
+        a plain L as the angular momentum's magnitude (kept when it makes the statement hold),
+        and the statement without the names learned from the prose (when only that reading
+        flags it, the verdict rests on an uncertain reading of the text: unchecked, saying so)."""
+        before, saved = len(self.claims), self._snapshot()
+        self._statement(line, piece, duplicate=dup, pieces=pieces)
+        first = self.claims[before:]
+        if not any(c.verdict in ("typo", "fails") for c in first):
+            self._under_symmetry(saved, line, piece, pieces, first)
+            return
+        if self._if_symmetric(saved, line, piece, dup, pieces, before):
+            return
+        if any(c.verdict == "typo" for c in first) and not dup:
+            self._in_their_notation(saved, line, piece, pieces, first)
+        for name, value, what in _second_readings(piece):
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value})
+            if second and all(c.verdict == "holds" for c in second):
+                for c in second:
+                    c.why += f" (reading {what})"
+                self._keep(before, second, ctx)
+                return
+        learned = self._learned(piece)
+        if learned:
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
+            if not any(c.verdict in ("typo", "fails") for c in second):
+                for c in first:
+                    if c.verdict in ("typo", "fails"):
+                        c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
+                                 "unchecked, since the text may mean something else by it here")
+                        c.verdict, c.correction = "unchecked", None
+
+    def _in_their_notation(self, saved, line, piece, pieces, claims):
+        """The correction of a typo as the text would write it: the one edit of its own LaTeX (a
+        sign, an index, sin ↔ cos, a difference's order, a factor, a power) after which the
+        statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
+        does it (the correction then is the derivation's form)."""
+        for n, (edited, what) in enumerate(_latex_edits(piece)):
+            if n >= 60:
+                return
+            second, _ = self._sandbox(saved, line, edited, False, pieces)
+            if second and all(c.verdict == "holds" for c in second):
+                for c in claims:
+                    if c.verdict == "typo":
+                        c.correction = edited.strip()
+                return
+
+    def _symmetry_keys(self):
+        from derive.symbolic.lagrangian import I1, I2
+        return [k for k in (I1, I2) if k in self.ctx.subs and {k, self.ctx.subs[k]} == {I1, I2}]
+
+    def _under_symmetry(self, saved, line, piece, pieces, claims):
+        """A statement that holds only because the text made the body symmetric says so:
+        'under I₁ = I₂' with where the text said it."""
+        keys = [k for k in self._symmetry_keys() if k in saved.subs]
+        if not keys or not claims or not re.search(r"I_\{?[12]|T\b|L\b|E\b|p_", piece):
+            return
+        bare = _copied(saved)
+        for k in keys:
+            del bare.subs[k]
+        second, _ = self._sandbox(bare, line, piece, False, pieces)
+        if any(c.verdict in ("typo", "fails") for c in second):
+            where = self.ctx.stated.get(keys[0], "stated in the text")
+            for c in claims:
+                if c.verdict == "holds":
+                    c.why += f" (under I₁ = I₂, {where})"
+                    c.assumes.append(f"I_1 = I_2 ({where})")
+
+    def _if_symmetric(self, saved, line, piece, dup, pieces, before) -> bool:
+        """A statement that fails as written but holds for a symmetric body, which the text has
+        not said it is: 'holds if I₁ = I₂', never fails."""
+        from derive.symbolic.lagrangian import I1, I2
+        # only a formula written for a symmetric body: I₁ (or a quantity) and no I₂ in it — where
+        # the text writes both, they differ, and I₁ = I₂ would hide its slip
+        if self._symmetry_keys() or re.search(r"I_\{?2", piece) or \
+                not re.search(r"I_\{?1|\bT\b|\bL\b|\bE\b|p_", piece):
+            return False
+        sym = _copied(saved)
+        sym.subs[I2] = I1
+        second, _ = self._sandbox(sym, line, piece, dup, pieces)
+        if not second or not all(c.verdict == "holds" for c in second):
+            return False
+        for c in second:
+            c.why += " — holds if I₁ = I₂ (the text does not say so)"
+            c.assumes.append("I_1 = I_2 (not stated)")
+        del self.claims[before:]
+        self.claims.extend(second)
+        return True
+
+    def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
+        """The statement read again from the context ``saved`` with other readings: its claims and
+        the context it leaves; the checker's own state is left as it was."""
+        keep_claims, keep_ctx = len(self.claims), self.ctx
+        self.ctx = _copied(saved)
+        self.vocab.readings.update(readings or {})
+        self.vocab.names_off = names_off
+        try:
+            self._statement(line, piece, duplicate=dup, pieces=pieces)
+        except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
+                KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
+            pass
+        finally:
+            for name in readings or {}:
+                del self.vocab.readings[name]
+            self.vocab.names_off = False
+        out, ctx = self.claims[keep_claims:], self.ctx
+        del self.claims[keep_claims:]
+        self.ctx = keep_ctx
+        return out, ctx
+
+    def _keep(self, before, claims, ctx):
+        del self.claims[before:]
+        self.claims.extend(claims)
+        self.ctx = ctx
+
+    def _learned(self, piece) -> str:
+        """The names in a statement whose meaning came from the prose (not the front matter)."""
+        try:
+            toks = lx.scan(piece)
+        except lx.NotRead:
+            return ""
+        names = self.notes.names
+        out = []
+        for t in toks:
+            if t.kind == "atom" and names.meaning(t.value) is not None:
+                key = (t.value.base, t.value.sub)
+                where = names.where.get(key) or next((w for k, w in names.where.items() if k[0] == key[0]), "")
+                if where != "the front matter":
+                    text = f"{t.value.text} as {names.meaning(t.value)}"
+                    if text not in out:
+                        out.append(text)
+        return ", ".join(out)
+
+    def _snapshot(self):
+        """A copy of the context whose containers can change without touching this one."""
+        return _copied(self.ctx)

@@ -1,0 +1,175 @@
+"""A display cut into the statements it makes, as a reader cuts it.
+
+Takes: the LaTeX of one display (normalised by `derive.lecture.source`). Gives: `statements`,
+the list of its statements, each a LaTeX string. May import: the standard library.
+
+A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
+other display environments, which are dropped), a row ending in ``+``/``-`` continuing on the
+next; a row into pieces at ``\\qquad``, ``\\quad``, ``\\Rightarrow``, ``\\implies``; a piece at
+top-level ``;`` and at commas between relations (never inside brackets). A label before a colon
+(``\\theta:``, ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are
+dropped; a case before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
+``\\text{const}`` is kept as the constant it names.
+"""
+from __future__ import annotations
+
+import re
+
+_ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
+         "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
+         "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
+
+def _strip_envs(s: str) -> str:
+    for env in _ENVS:
+        s = s.replace(f"\\begin{{{env}}}", " ").replace(f"\\end{{{env}}}", " ")
+    return s
+
+def _top_level_split(s: str, seps: tuple) -> list[str]:
+    """Split at separators outside braces and outside matrix environments."""
+    out, depth, env, i, start = [], 0, 0, 0, 0
+    while i < len(s):
+        if s.startswith("\\begin{", i):
+            env += 1
+        elif s.startswith("\\end{", i):
+            env -= 1
+        ch = s[i]
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+        elif depth == 0 and env == 0:
+            for sep in seps:
+                if s.startswith(sep, i) and not (sep[-1].isalpha() and i + len(sep) < len(s) and s[i + len(sep)].isalpha()):
+                    out.append(s[start:i])
+                    i += len(sep)
+                    start = i
+                    break
+            else:
+                i += 1
+                continue
+            continue
+        i += 1
+    out.append(s[start:])
+    return out
+
+def _alignment_free(s: str) -> str:
+    """Drop the alignment '&' of aligned/split rows, keeping the '&' that separates matrix entries."""
+    out, env, i = [], 0, 0
+    while i < len(s):
+        if s.startswith("\\begin{", i):
+            env += 1
+        elif s.startswith("\\end{", i):
+            env -= 1
+        if s[i] == "&" and env == 0 and (i == 0 or s[i - 1] != "\\"):
+            out.append(" ")
+        else:
+            out.append(s[i])
+        i += 1
+    return "".join(out)
+
+def _text_only(piece: str) -> bool:
+    rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
+    return not rest.strip(" &,.;:") and "\\text" in piece
+
+_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?\s*\}")
+
+_TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
+
+_RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
+
+def _unwrapped(piece: str) -> str:
+    """A statement written in parentheses, ``(\\dot\\theta = \\text{const})``, without them."""
+    s = piece.strip()
+    if s.startswith("(") and s.endswith(")") and _RELATION_IN.search(s):
+        depth = 0
+        for k, ch in enumerate(s):
+            depth += ch == "("
+            depth -= ch == ")"
+            if depth == 0 and k < len(s) - 1:
+                return piece
+        return s[1:-1]
+    return piece
+
+def _cleaned(piece: str) -> str:
+    """A statement without the words after it (``&&\\text{stable}``); ``\\text{const}`` becomes a
+    constant of the text's."""
+    piece = _CONST.sub(r" \\mathrm{const} ", piece)
+    while True:
+        cut = _TRAILING_WORDS.sub("", piece)
+        if cut == piece or not cut.strip():
+            break
+        piece = cut
+    return piece
+
+def _lists(row: str) -> list[str]:
+    """A row that lists statements: cut at top-level ``;`` and at top-level commas between
+    relations (``\\theta = 0, \\dot\\theta = 0``), never inside brackets (f(a, b))."""
+    pieces = []
+    for part in _top_level_split(row, (";",)):
+        if part.rstrip().endswith("\\"):
+            pieces.append(part)
+            continue
+        commas = _bracket_free_split(part)
+        if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
+            pieces.extend(commas)
+        else:
+            pieces.append(part)
+    return [p.replace("\\\x00", "\\;") for p in pieces]
+
+def _bracket_free_split(s: str) -> list[str]:
+    out, depth, start = [], 0, 0
+    for i, ch in enumerate(s):
+        if ch in "({[":
+            depth += 1
+        elif ch in ")}]":
+            depth -= 1
+        elif ch == "," and depth == 0 and (i == 0 or s[i - 1] != "\\"):
+            out.append(s[start:i])
+            start = i + 1
+    out.append(s[start:])
+    return out
+
+def statements(latex: str) -> list[str]:
+    """The statements of one display (see the module docstring), each a LaTeX string."""
+    body = _strip_envs(latex).replace("\\;", "\\\x00")
+    rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
+    # a row that ends with a binary operator continues on the next
+    joined: list[str] = []
+    for row in rows:
+        if not row:
+            continue
+        if joined and re.search(r"[+\-]\s*$", joined[-1]):
+            joined[-1] = joined[-1] + " " + row
+        else:
+            joined.append(row)
+    out = []
+    for row in joined:
+        for piece in _colon_parts(row):
+            for part in _top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
+                for one in _lists(part):
+                    one = _unwrapped(_cleaned(_trimmed(one)))
+                    if _trimmed(one) and not _text_only(one):
+                        out.append(_trimmed(one))
+    return out
+
+def _trimmed(s: str) -> str:
+    """Without spacing commands and punctuation at its ends."""
+    prev = None
+    while prev != s:
+        prev = s
+        s = re.sub(r"^(?:\s|[,.;:]|\\[,;:! ]|\\q?quad)+", "", s)
+        s = re.sub(r"(?:\s|(?<!\\)[,.;:]|\\[,;:! ]|\\q?quad)+$", "", s)
+    return s
+
+def _colon_parts(row: str) -> list[str]:
+    """``label: statement`` → the statement; ``case: statement`` (θ = 0: ω_z = ω₃) → both, the case
+    first (a statement of a value, read as the case it is)."""
+    parts = [p for p in re.split(r"(?<!\\)(?<![:<>!])\s*:(?!=)\s*", row)]
+    if len(parts) == 1:
+        return parts
+    out = []
+    for k, part in enumerate(parts):
+        if k < len(parts) - 1 and not _RELATION_IN.search(part):
+            continue                      # a label (\\Omega_1:, \\theta:)
+        out.append(part)
+    return out
