@@ -653,7 +653,7 @@ class Checker(TextNames, Rereading):
             if "not a vector" in how or " against a " in how:
                 self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
                 continue
-            fix = self._vector_fix(reading, k, piece)
+            fix = None if self.judging_only else self._vector_fix(reading, k, piece)
             if fix:
                 self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "
                           f"({vc.WHY[reading.model]})", fix[0])
@@ -874,7 +874,7 @@ class Checker(TextNames, Rereading):
             self._add(line, piece, kind, "unchecked", undecided)
             return
         self._last_fix = None
-        fix = self._search(value, targets, label, parsed, k, small, order, keep)
+        fix = None if self.judging_only else self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
         else:
@@ -974,7 +974,7 @@ class Checker(TextNames, Rereading):
             self.ctx.eoms.append((raw, line))
             self._add(line, piece, "equation of motion", "holds", why)
             return
-        for cand, what in edits(raw):
+        for cand, what in ([] if self.judging_only else edits(raw)):
             if self._eom_check(cand)[0]:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
@@ -1025,7 +1025,7 @@ class Checker(TextNames, Rereading):
         if ok:
             self._add(line, piece, "steady precession", "holds", why)
             return
-        for cand, what in edits(raw):
+        for cand, what in ([] if self.judging_only else edits(raw)):
             if self._steady_check(cand)[0]:
                 self._add(line, piece, "steady precession", "typo",
                           f"as written: {why}; one edit ({what}) makes it hold", self.tex(cand) + " = 0")
@@ -1137,7 +1137,7 @@ class Checker(TextNames, Rereading):
             self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
             return
         for side in (1, 0):
-            for cand, what in edits(parsed.members[side].value):
+            for cand, what in ([] if self.judging_only else edits(parsed.members[side].value)):
                 c2 = self._resolve(cand) - b if side == 0 else a - self._resolve(cand)
                 c2 = c2 if rel in ("≥", ">") else -c2
                 if (_quick_equal(c2, d) or _positive_multiple(c2, k2)) and derived(c2):

@@ -14,7 +14,8 @@ statement again —
 4. edited, one edit of its own LaTeX at a time, to find the correction in the text's notation.
 
 Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
-left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`, SymPy.
+left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`,
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -24,6 +25,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import vectors as vc
+from derive.symbolic.lagrangian import I1, I2
 
 
 def _copied(ctx):
@@ -58,6 +60,9 @@ def _second_readings(piece: str):
 class Rereading:
     """Mixin of the checker: see the module docstring. Uses ``self.claims``, ``self.ctx``,
     ``self.vocab``, ``self.notes`` and ``self._statement``."""
+
+    judging_only = False
+    """Verdicts without the search for a correction (while a correction's candidates are read)."""
 
     def _read_once_or_twice(self, line, piece, dup, pieces):
         """The statement as read; if that flags it, the second readings of its names are tried:
@@ -96,10 +101,12 @@ class Rereading:
         sign, an index, sin ↔ cos, a difference's order, a factor, a power) after which the
         statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
         does it (the correction then is the derivation's form)."""
-        for n, (edited, what) in enumerate(_latex_edits(piece)):
+        found = " ".join(c.why for c in claims if c.verdict == "typo")
+        ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found)   # the kind found first
+        for n, (edited, what) in enumerate(ordered):
             if n >= 60:
                 return
-            second, _ = self._sandbox(saved, line, edited, False, pieces)
+            second, _ = self._sandbox(saved, line, edited, False, pieces, judging_only=True)
             if second and all(c.verdict == "holds" for c in second):
                 for c in claims:
                     if c.verdict == "typo":
@@ -107,7 +114,6 @@ class Rereading:
                 return
 
     def _symmetry_keys(self):
-        from derive.symbolic.lagrangian import I1, I2
         return [k for k in (I1, I2) if k in self.ctx.subs and {k, self.ctx.subs[k]} == {I1, I2}]
 
     def _under_symmetry(self, saved, line, piece, pieces, claims):
@@ -130,7 +136,6 @@ class Rereading:
     def _if_symmetric(self, saved, line, piece, dup, pieces, before) -> bool:
         """A statement that fails as written but holds for a symmetric body, which the text has
         not said it is: 'holds if I₁ = I₂', never fails."""
-        from derive.symbolic.lagrangian import I1, I2
         # only a formula written for a symmetric body: I₁ (or a quantity) and no I₂ in it — where
         # the text writes both, they differ, and I₁ = I₂ would hide its slip
         if self._symmetry_keys() or re.search(r"I_\{?2", piece) or \
@@ -148,13 +153,14 @@ class Rereading:
         self.claims.extend(second)
         return True
 
-    def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False):
+    def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False, judging_only=False):
         """The statement read again from the context ``saved`` with other readings: its claims and
         the context it leaves; the checker's own state is left as it was."""
         keep_claims, keep_ctx = len(self.claims), self.ctx
         self.ctx = _copied(saved)
         self.vocab.readings.update(readings or {})
         self.vocab.names_off = names_off
+        self.judging_only = judging_only
         try:
             self._statement(line, piece, duplicate=dup, pieces=pieces)
         except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
@@ -164,6 +170,7 @@ class Rereading:
             for name in readings or {}:
                 del self.vocab.readings[name]
             self.vocab.names_off = False
+            self.judging_only = False
         out, ctx = self.claims[keep_claims:], self.ctx
         del self.claims[keep_claims:]
         self.ctx = keep_ctx
