@@ -18,6 +18,9 @@ _moved.install()  # derive.simulation, derive.scene, …: the old module paths s
 
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
+DISTRIBUTION = "derive-rigid-body"
+"""The name on the package index (``pip install derive-rigid-body``): a plain ``derive`` there is an
+unrelated project. The import and the command stay ``derive``."""
 
 __all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep",
            "analyze", "prepare"]

@@ -267,11 +267,11 @@ def version() -> str:
     from importlib.metadata import PackageNotFoundError
     from importlib.metadata import version as dist_version
 
-    try:
-        return dist_version("derive")
-    except PackageNotFoundError:
-        from derive import __version__
+    from derive import DISTRIBUTION, __version__
 
+    try:
+        return dist_version(DISTRIBUTION)
+    except PackageNotFoundError:
         return __version__
 
 

@@ -5,6 +5,8 @@
   stored in ``.hypothesis/`` and replayed). The suite's outcome then depends on the code alone:
   a clone does not go red because an earlier run in it found (and stored) a failing example,
   and a fresh clone in CI runs exactly what the developer ran.
+* The compile cache: ``.cache/derive-tests`` in the checkout (``DERIVE_CACHE``), so that the
+  suite leaves nothing in the user's own cache.
 * Profile ``explore``: fresh random examples, still nothing stored; a failure prints its
   ``@reproduce_failure`` blob. Selected by ``--hypothesis-seed=N`` (a reproducible exploration
   with seed N) or ``--hypothesis-profile=explore`` (a new seed each run)::
@@ -13,8 +15,15 @@
 
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
+import os
+from pathlib import Path
+
 import pytest
 from hypothesis import settings
+
+# The suite compiles into a cache of its own inside the checkout (kept between runs, ignored by
+# git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
+os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)

@@ -69,7 +69,7 @@ def wheel(tmp_path_factory) -> Path:
     r = _run([sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-index", "--no-build-isolation",
               "--disable-pip-version-check", "-w", str(out), str(src)], cwd=src)
     assert r.returncode == 0, r.stderr
-    (whl,) = out.glob("derive-*.whl")
+    (whl,) = out.glob("derive_rigid_body-*.whl")    # the distribution's name, derive.DISTRIBUTION
     return whl
 
 

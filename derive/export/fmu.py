@@ -150,8 +150,10 @@ def _version() -> str:
     above this stage)."""
     from importlib.metadata import PackageNotFoundError, version
 
+    from derive import DISTRIBUTION
+
     try:
-        return version("derive")
+        return version(DISTRIBUTION)
     except PackageNotFoundError:
         return "(source checkout)"
 
