@@ -148,12 +148,10 @@ def _platform() -> tuple[str, str]:
 def _version() -> str:
     """derive's version for generationTool (the distribution's; the package root is a layer
     above this stage)."""
-    from importlib.metadata import PackageNotFoundError, version
+    from importlib.metadata import PackageNotFoundError, packages_distributions, version
 
-    from derive import DISTRIBUTION
-
-    try:
-        return version(DISTRIBUTION)
+    try:    # the distribution that installs the package derive (derive.DISTRIBUTION)
+        return version(packages_distributions().get("derive", ["derive-rigid-body"])[0])
     except PackageNotFoundError:
         return "(source checkout)"
 
