@@ -48,7 +48,7 @@ _DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displa
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
                    r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
                    r"|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
-_SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
+SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
@@ -293,7 +293,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
     # what the prose says of the body: "a symmetric top" holds to the next heading
     prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
-    for m in _SYMMETRIC.finditer(prose):
+    for m in SYMMETRIC.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
     events.sort(key=lambda e: e[0])
     # merge consecutive sign items of one line ("$\Omega_1$ and $\Omega_2$ are both …")

@@ -50,7 +50,11 @@ from derive.lecture import notes as nt
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
-from derive.symbolic.lagrangian import ACCELS as ACCELS_
+from derive.symbolic import rotations as rot
+from derive.symbolic.lagrangian import (ACCELS, I1, I2, I3, Mass, Reduction, g, heavy_symmetric_top,
+                                        kinetic_energy, l)
+from derive.symbolic.rotations import ANGLES, RATES
+from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
 from derive.lecture import vectors as vc
 from derive.lecture import verify as vf
 
@@ -62,7 +66,6 @@ class Derivation:
     """The derived quantities of one convention (computed on first use)."""
 
     def __init__(self, convention: str):
-        from derive.symbolic import rotations as rot
         self.rot = rot
         self.conv = rot.convention(convention)
 
@@ -83,17 +86,14 @@ class Derivation:
 
     @functools.cached_property
     def top(self):
-        from derive.symbolic.lagrangian import heavy_symmetric_top
         return heavy_symmetric_top(self.conv)
 
     @functools.cached_property
     def reduction(self):
-        from derive.symbolic.lagrangian import Reduction
         return Reduction(self.top)
 
     @functools.cached_property
     def sleeping(self):
-        from derive.symbolic.stability import SleepingTop
         return SleepingTop(self.reduction)
 
     @functools.cached_property
@@ -104,21 +104,17 @@ class Derivation:
 
     def euler(self, subs: dict) -> list:
         """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
-        from derive.symbolic.lagrangian import I1, I2, I3
-        from derive.symbolic.stability import euler_rhs
         moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
         rhs = euler_rhs(moments, sp.Matrix(lx.W))
         return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
 
     def frequencies(self):
-        from derive.symbolic.stability import SteadySpin, omega0
         o1, o2 = SteadySpin(2).frequencies
         return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
 
     @functools.lru_cache(maxsize=None)
     def forms(self, key, args=None) -> list:
         """What a named quantity is, in the forms a text may use (each compared in turn)."""
-        from derive.symbolic.lagrangian import I1, I2, I3
         half = sp.Rational(1, 2)
         Iw = [I1 * lx.W[0], I2 * lx.W[1], I3 * lx.W[2]]
         if key is lx.T_:
@@ -165,7 +161,6 @@ class Derivation:
 
     @functools.lru_cache(maxsize=None)
     def top_kinetic(self):
-        from derive.symbolic.lagrangian import kinetic_energy
         return kinetic_energy(convention=self.conv)
 
 
@@ -335,8 +330,6 @@ _SIBLINGS = None
 
 
 def _siblings():
-    from derive.symbolic.lagrangian import I1, I2, I3
-    from derive.symbolic.rotations import ANGLES, RATES
     fams = [(I1, I2, I3), lx.W, lx.WD, lx.BASIS, lx.PRIMED, ANGLES, RATES, (lx.Omega1, lx.Omega2)]
     out = {}
     for fam in fams:
@@ -407,8 +400,6 @@ class Checker(TextNames, Rereading):
     # -- names for LaTeX output
     @functools.cached_property
     def names(self) -> dict:
-        from derive.symbolic.rotations import ANGLES, RATES
-        from derive.symbolic.lagrangian import ACCELS
         names = {}
         angle_tex = [_name_tex(a) for a in self.notes.angles]
         for k in range(3):
@@ -438,7 +429,7 @@ class Checker(TextNames, Rereading):
             if item.kind == "heading":
                 self._flush()
                 self._enter_section(item.level)
-                if nt._SYMMETRIC.search(item.text):
+                if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
             elif item.kind == "context":
                 self._symmetric(item.line, item.lead)
@@ -477,7 +468,6 @@ class Checker(TextNames, Rereading):
 
     def _symmetric(self, line, words):
         """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
-        from derive.symbolic.lagrangian import I1, I2
         if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
             self.ctx.subs[I2] = I1
             self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
@@ -513,7 +503,6 @@ class Checker(TextNames, Rereading):
         a, b = parsed.members[0].value, parsed.members[1].value
         rel = parsed.relations[0]
         if rel == "≈" and b == 0 and isinstance(a, sp.Symbol):
-            from derive.symbolic.rotations import ANGLES
             if a in ANGLES:
                 self.ctx.small.append(a)
             else:
@@ -615,7 +604,7 @@ class Checker(TextNames, Rereading):
             self._definition(line, piece, parsed)
         elif any(_free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
-        elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS_) for m in parsed.members):
+        elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS) for m in parsed.members):
             self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
@@ -886,7 +875,7 @@ class Checker(TextNames, Rereading):
         is a condition the text imposes; or it ties the angles to ω̃ᵢ without their rates, which
         only the rates connect. None when the derivation decides it."""
         rot = self.d.rot
-        rates = set(rot.RATES) | set(ACCELS_)
+        rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
                       for m in written for x in _free(m)) or \
@@ -991,9 +980,9 @@ class Checker(TextNames, Rereading):
         against the heavy symmetric top's Lagrange equations — in the rates, or with the cyclic
         momenta for the rates (Routh's reduction)."""
         raw = self._resolve(parsed.members[0].value - parsed.members[1].value)
-        accels = [a for a in ACCELS_ if a in _free(raw)]
+        accels = [a for a in ACCELS if a in _free(raw)]
         rot = self.d.rot
-        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS_[1]:
+        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS[1]:
             self._add(line, piece, "equation of motion", "unchecked", "an equation of motion the derivation does not write")
             return
         a = accels[0]
@@ -1104,7 +1093,6 @@ class Checker(TextNames, Rereading):
             return
         rel = parsed.relations[0]
         a, b = (self._resolve(m.value) for m in parsed.members)
-        from derive.symbolic.lagrangian import Mass, g, l
         syms = _free(a) | _free(b)
         spin = {lx.p_gamma_sym(), lx.W[2], self.d.rot.gamma_d, self.d.rot.alpha_d}
         if not (syms & {Mass, g, l} and syms & spin):
@@ -1213,7 +1201,6 @@ class Checker(TextNames, Rereading):
 
 def _positive_multiple(a, b) -> bool:
     """Is a = q b with q > 0 a function of the positive parameters only (I₁, I₃, M, g, l)?"""
-    from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
     if sp.expand(a) == 0 or sp.expand(b) == 0:
         return False
     q = sp.cancel(sp.together(a / b))
