@@ -364,9 +364,8 @@ class Vocabulary:
         mine = self.defined.get(a.with_(text=""))
         if mine is not None:
             return mine
-        meaning = self.names.meaning(a) if self.names is not None and not self.names_off else None
-        if meaning is not None:
-            value = self._meant(meaning, a, env)
+        if self.names is not None and not self.names_off:
+            value = self.names.value(a, env, self)      # the text's own names win
             if value is not None:
                 return value
         sub = a.sub
@@ -440,44 +439,6 @@ class Vocabulary:
         if self.open and not a.hat:
             return self._generic(a)
         return None
-
-    def _meant(self, meaning: str, a: Atom, env: dict):
-        """What an atom the text has named (`derive.lecture.names.MEANINGS`) stands for; None
-        where the meaning says nothing of this spelling (an index it does not cover)."""
-        sub = str(env.get(a.sub, a.sub)) if len(a.sub) == 1 else a.sub
-        k = {"1": 0, "2": 1, "3": 2}.get(sub)
-        if not k and k != 0 and sub in ("x", "y", "z") and meaning == "angular velocity":
-            k = "xyz".index(sub)              # body axes called x, y, z
-        plain = not a.dots and not a.primes and not a.hat and not a.tilde
-        moments = (I1, I2, I3)
-        if meaning == "angular momentum":
-            if a.bold and not sub and plain:
-                return LVEC
-            if k is not None and plain and not a.bold:
-                return p_gamma if k == self.axial else moments[k] * W[k]
-            if sub in ("z", "Z") and plain:
-                return p_alpha
-            if not sub and plain:
-                return LMAG
-            return None
-        if meaning == "angular velocity":
-            if a.bold and not sub and not a.dots:
-                return OMEGA_VEC
-            if k is not None and not a.bold and a.dots <= 1 and not a.primes:
-                return (W if a.dots == 0 else WD)[k]
-            return None
-        if meaning == "torque":
-            if k is not None and plain:
-                return TAU[k]
-            return None
-        if not plain or a.bold:
-            return None
-        if meaning == "potential energy":
-            return self._generic(a)            # the text's own potential: its definition says what
-        return {"vertical angular momentum": p_alpha, "axial angular momentum": p_gamma, "mass": Mass,
-                "centre-of-mass distance": l, "gravitational acceleration": g, "kinetic energy": T_, "energy": ENERGY,
-                "lagrangian": LAGRANGIAN, "effective potential": VEFF, "transverse moment": I1,
-                "second moment": I2, "axial moment": I3}.get(meaning)
 
     def _generic(self, a: Atom):
         """The text's own symbol for an atom: one per spelling of base, decorations and scripts."""

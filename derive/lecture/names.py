@@ -4,7 +4,8 @@ Takes: the rendered text of a notes file (prose with inline ``$…$`` math, disp
 front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's spellings to
 *meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
 own spellings, so that the text's names win over the lecture's.
-May import: the standard library and :mod:`derive.lecture.latex`.
+May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source` and
+:mod:`derive.symbolic` (the quantities a meaning stands for).
 
 A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
 it is — "$\\mathbf{M}$ is the angular momentum", "mass $m$", "$J_z$ (angular momentum about the
@@ -43,6 +44,7 @@ from dataclasses import dataclass, field
 from derive.errors import SceneError
 from derive.lecture import latex as lx
 from derive.lecture import source
+from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
 
 # meaning → (how it binds, the phrases that say it). Order matters: the more specific first.
 MEANINGS = {
@@ -102,6 +104,48 @@ class Names:
         if key in self.symbols:
             return self.symbols[key]
         return self.letters.get((atom.base, "plain" if not (atom.bold or atom.sub) else "vector"))
+
+    def value(self, a, env: dict, vocab):
+        """What an atom stands for by the meaning the text gave it (`MEANINGS`); None where it
+        gave none, or the meaning says nothing of this spelling (an index it does not cover).
+        ``vocab`` is the reader's `latex.Vocabulary` (the third turn's axis, the text's symbols)."""
+        meaning = self.meaning(a)
+        if meaning is None:
+            return None
+        sub = str(env.get(a.sub, a.sub)) if len(a.sub) == 1 else a.sub
+        k = {"1": 0, "2": 1, "3": 2}.get(sub)
+        if not k and k != 0 and sub in ("x", "y", "z") and meaning == "angular velocity":
+            k = "xyz".index(sub)              # body axes called x, y, z
+        plain = not a.dots and not a.primes and not a.hat and not a.tilde
+        moments = (I1, I2, I3)
+        if meaning == "angular momentum":
+            if a.bold and not sub and plain:
+                return lx.LVEC
+            if k is not None and plain and not a.bold:
+                return lx.p_gamma if k == vocab.axial else moments[k] * lx.W[k]
+            if sub in ("z", "Z") and plain:
+                return lx.p_alpha
+            if not sub and plain:
+                return lx.LMAG
+            return None
+        if meaning == "angular velocity":
+            if a.bold and not sub and not a.dots:
+                return lx.OMEGA_VEC
+            if k is not None and not a.bold and a.dots <= 1 and not a.primes:
+                return (lx.W if a.dots == 0 else lx.WD)[k]
+            return None
+        if meaning == "torque":
+            if k is not None and plain:
+                return lx.TAU[k]
+            return None
+        if not plain or a.bold:
+            return None
+        if meaning == "potential energy":
+            return vocab._generic(a)            # the text's own potential: its definition says what
+        return {"vertical angular momentum": lx.p_alpha, "axial angular momentum": lx.p_gamma, "mass": Mass,
+                "centre-of-mass distance": l, "gravitational acceleration": g, "kinetic energy": lx.T_, "energy": lx.ENERGY,
+                "lagrangian": lx.LAGRANGIAN, "effective potential": lx.VEFF, "transverse moment": I1,
+                "second moment": I2, "axial moment": I3}.get(meaning)
 
 
 _INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
