@@ -31,7 +31,9 @@ AZIMUTH = math.radians(-60.0)
 ELEVATION = math.radians(25.0)
 #: Picture size in pixels (width, height): small enough for a GIF of a few seconds to stay small.
 PIXELS = (320, 360)
-GIF_COLORS = 64
+GIF_COLORS = 32
+#: A longer title is cut (the HTML page shows it whole).
+TITLE_CHARS = 52
 LIGHT = np.array([-0.4, 0.5, 0.77])  # in camera axes (right, up, toward the viewer)
 LIGHT = LIGHT / np.linalg.norm(LIGHT)
 TRACE = "#c0392b"
@@ -125,7 +127,8 @@ class Painter:
         ax.text(-1.27, -1.17, "\n".join(_wrap(n, 70) for n in frames.notes), fontsize=5.2, va="top",
                 color="#333333", linespacing=1.25)
         if frames.title:
-            ax.text(-1.27, 1.37, frames.title, fontsize=7, va="top", color="#222222", weight="bold")
+            title = frames.title if len(frames.title) <= TITLE_CHARS else frames.title[:TITLE_CHARS - 1] + "…"
+            ax.text(-1.27, 1.37, title, fontsize=7, va="top", color="#222222", weight="bold")
 
     def draw(self, k: int) -> np.ndarray:
         """Frame k as an RGB array (height, width, 3)."""

@@ -196,7 +196,7 @@ def _box(I1, I2, I3, M, com) -> Mesh:
                               1e-6 * max(I1, I2, I3) / mass))
     centre = com if com is not None else np.zeros(3)
     reach = float(np.linalg.norm(centre) + np.linalg.norm(half))
-    s = 0.8 / reach
+    s = 0.65 / reach  # (room on the unit sphere for the path of ê₃ around it)
     c, h = s * centre, s * half
     verts = [c + h * np.array([x, y, z]) for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]
     faces = [[0, 1, 3, 2], [4, 6, 7, 5], [0, 4, 5, 1], [2, 3, 7, 6], [0, 2, 6, 4], [1, 5, 7, 3]]
