@@ -17,13 +17,21 @@ pytestmark = pytest.mark.skipif(BROWSER is None, reason="no Chromium on PATH (.c
                                                         "distribution's chromium package)")
 
 
-def _screenshot(page, frame: int, out) -> np.ndarray:
-    cmd = [BROWSER, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-           "--no-first-run", "--disable-extensions", "--window-size=560,760",
-           f"--screenshot={out}", f"{page.as_uri()}#frame={frame}"]
-    r = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-    assert r.returncode == 0 and out.exists(), r.stderr[-2000:]
-    return np.asarray(Image.open(out).convert("RGB")).astype(int)
+def _screenshots(page, frames, tmp_path) -> list:
+    """Screenshots of the page opened at each of ``frames`` (browsers started side by side)."""
+    runs = []
+    for k in frames:
+        out = tmp_path / f"frame{k}.png"
+        cmd = [BROWSER, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+               "--no-first-run", "--disable-extensions", f"--user-data-dir={tmp_path / f'profile{k}'}",
+               "--window-size=560,760", f"--screenshot={out}", f"{page.as_uri()}#frame={k}"]
+        runs.append((out, subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)))
+    shots = []
+    for out, proc in runs:
+        _, err = proc.communicate(timeout=120)
+        assert proc.returncode == 0 and out.exists(), err[-2000:]
+        shots.append(np.asarray(Image.open(out).convert("RGB")).astype(int))
+    return shots
 
 
 def _body_pixels(shot: np.ndarray) -> np.ndarray:
@@ -38,8 +46,7 @@ def test_the_page_shows_the_body_turning_in_headless_chromium(tmp_path):
     page = tmp_path / "top.html"
     fr = animate.write(res, page, fps=20, speed=0.05)
     last = len(fr.t) - 1
-    first = _body_pixels(_screenshot(page, 0, tmp_path / "a.png"))
-    later = _body_pixels(_screenshot(page, last, tmp_path / "b.png"))
+    first, later = map(_body_pixels, _screenshots(page, (0, last), tmp_path))
     # the canvas is the square under the title: the body is drawn there, a few thousand pixels
     ys, xs = np.nonzero(first)
     assert first.sum() > 2000 and later.sum() > 2000, (first.sum(), later.sum())
