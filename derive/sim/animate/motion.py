@@ -39,6 +39,7 @@ import numpy as np
 
 from derive.errors import SceneError
 from derive.reference.rotation import euler_angles, euler_matrix
+from derive.symbolic import effects as fx
 
 #: Above this much of a turn about ê₃ between frames the spin is drawn stroboscopically: at half
 #: a turn a single stripe's direction of turning cannot be told, and well before that it jumps.
@@ -103,7 +104,7 @@ class Mesh:
 
 
 def _gravity(scene):
-    g = scene.tables.get("gravity") if scene is not None else None
+    g = scene.tables.get(fx.GRAVITY_TABLE.name) if scene is not None else None
     if g is None:
         return None, None
     return float(g["M"]), np.asarray(g["com"], dtype=float)

@@ -75,12 +75,12 @@ def energy_row(res) -> tuple[str, str]:
     conservative, else the change E(end) − E(0) (work done by damping or a drive, not error)."""
     e = np.asarray(res.energy, dtype=float)
     e0 = float(e[0])
-    working = [eff.name for eff in fx.lookup(res.effects) if not eff.conservative]
+    working = [eff for eff in fx.lookup(res.effects) if not eff.conservative]
     if not working:
         dev = float(np.max(np.abs(e - e0)))
         return ("energy drift", f"{dev / abs(e0):.2e} (relative)" if e0 else f"{dev:.3g} J")
-    # (a torque written in the scene has a registry name made from its text: say what it is)
-    named = sorted({"the scene's torque" if n.startswith("torque_") else n for n in working})
+    # (a term written in the scene has a registry name made from its text: say what it is)
+    named = sorted({f"the scene's {eff.table}" if eff.table in fx.USER_TABLES else eff.name for eff in working})
     return ("energy change", f"{float(e[-1]) - e0:+.4g} J (work done by {', '.join(named)})")
 
 
