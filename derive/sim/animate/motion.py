@@ -133,21 +133,22 @@ def body_mesh(scene) -> Mesh:
 def _top(I1, I3, M, com) -> Mesh:
     on_axis = com is not None and abs(com[0]) + abs(com[1]) <= 1e-12 * max(abs(com[2]), 1e-300)
     r = math.sqrt(2.0 * I3 / M) if M else 1.0
-    if on_axis and com[2] > 0:
-        centre, I1c, where = float(com[2]), I1 - M * com[2] ** 2, "at the centre of mass, l above the pivot"
+    if on_axis and com[2] != 0:
+        centre, I1c, where = float(com[2]), I1 - M * com[2] ** 2, "at the centre of mass, l along ê₃ from the pivot"
     else:
         centre, I1c, where = 0.0, I1, "centred on the pivot" if com is not None else "centred on the centre of mass"
     H = r * math.sqrt(max(6.0 * (I1c / I3 - 0.5), 0.0))
     thin = H < MIN_THICKNESS * r
     H = max(H, MIN_THICKNESS * r)
-    tip = centre + H / 2 + 0.6 * r
-    base = 0.0 if centre > 0 else -tip
-    s = 1.0 / tip
+    end = H / 2 + 0.6 * r  # the spindle's reach beyond the disc's centre
+    lo = min(0.0, centre - end) if centre <= 0 else 0.0  # a top on its tip: the spindle starts at the pivot
+    hi = centre + end if centre >= 0 else 0.0
+    s = 1.0 / max(hi, -lo)
     verts, faces, colors, layers = [], [], [], []
     bottom, top = s * (centre - H / 2), s * (centre + H / 2)
     _cylinder(verts, faces, colors, s * r, bottom, top, SIDES, BODY, stripe=True)
     layers += [0] * len(faces)
-    _spindle(verts, faces, colors, layers, 0.035, s * base, bottom, top, 1.0)
+    _spindle(verts, faces, colors, layers, 0.035, s * lo, bottom, top, 1.0)  # its tip on the unit sphere
     mark = None if com is None or on_axis else s * com
     shape = (f"a top: a uniform disc {where}, radius and thickness from I3 and I1 "
              f"(r = sqrt(2 I3/M), H = r sqrt(6 (I1c/I3 - 1/2))){', drawn thicker than its moments say' if thin else ''}"
