@@ -2,6 +2,7 @@
 stroboscopic rule for fast spins, the three formats, the command line's rules."""
 import io
 import shutil
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,6 +15,7 @@ from derive.reference.rotation import euler_matrix
 from derive.sim import animate, examples
 from derive.sim.animate import draw, motion, page
 
+ROOT = Path(__file__).resolve().parents[1]
 #: The looping top over a fifth of a second: 51 samples, 4 ms apart; spin about 147 rad/s.
 SHORT = {"t_end": 0.2, "samples": 51}
 
@@ -238,3 +240,12 @@ def test_png_still_of_a_frame(top):
     fr, mesh = animate.prepare(top, fps=5, speed=0.1)
     im = Image.open(io.BytesIO(draw.png_bytes(fr, mesh, 0)))
     assert im.size == draw.PIXELS
+
+
+@pytest.mark.parametrize("name", ["looping_top", "sleeping_top", "tennis_racket", "kovalevskaya_top"])
+def test_the_docs_show_each_example_animated_in_a_small_gif(name):
+    gif = ROOT / "docs" / "animate" / f"{name}.gif"
+    im = Image.open(gif)
+    assert im.format == "GIF" and im.n_frames >= 40 and im.size == draw.PIXELS
+    assert gif.stat().st_size < 400_000
+    assert f"animate/{name}.gif" in (ROOT / "docs" / "animate.md").read_text(encoding="utf-8")

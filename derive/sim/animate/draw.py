@@ -107,7 +107,7 @@ class Painter:
             (fx, fy), (nx, ny) = _split(circle, self.V)
             ax.plot(fx, fy, color="#cccccc", lw=0.6, ls=(0, (2, 2)), zorder=1)
             ax.plot(nx, ny, color="#bbbbbb", lw=0.7, zorder=4)
-        up = np.array([[0, 0, 0], [0, 0, 1.25]]) @ self.V.T
+        up = np.array([[0, 0, 0], [0, 0, 1.12]]) @ self.V.T  # (short of the readout)
         ax.plot(up[:, 0], up[:, 1], color="#555555", lw=0.9, ls=(0, (4, 2)), zorder=1)
         ax.text(up[1, 0] + 0.03, up[1, 1], "z", fontsize=7, color="#555555")
         self.far, = ax.plot([], [], color=TRACE, lw=0.8, alpha=0.35, zorder=1)
@@ -151,7 +151,8 @@ class Painter:
         self.Lhead.set_data([tip[0]], [tip[1]])
         self.Ltext.set_position((tip[0] + 0.04, tip[1]))
         a, b, g = np.degrees(fr.angles[k])
-        self.clock.set_text(f"t = {fr.t[k]:.3f} s\nα = {a:6.1f}°  β = {b:5.1f}°  γ = {g:6.1f}°")
+        self.clock.set_text(f"t = {fr.t[k]:.3f} s\nα = {a:6.1f}°  β = {b:5.1f}°  γ = {g:6.1f}°"
+                            + ("\nspin: stroboscopic" if fr.strobe else ""))
         if self.background is None:
             self.canvas.draw()
             self.background = self.canvas.copy_from_bbox(self.fig.bbox)

@@ -33,6 +33,7 @@ def page_html(frames: Frames, mesh: Mesh) -> str:
     step = max(1, int(np.ceil(len(frames.trace_t) / TRACE_POINTS)))
     data = {
         "title": frames.title, "notes": frames.notes + [f"The body: {mesh.shape}."], "fps": frames.fps, "speed": frames.speed,
+        "strobe": frames.strobe,
         "view": {"az": AZIMUTH, "el": ELEVATION},
         "t": _numbers(frames.t, 6), "R": _numbers(frames.R), "ang": _numbers(np.degrees(frames.angles), 2),
         "L": _numbers(frames.L, 4),
