@@ -413,7 +413,10 @@ def parser() -> argparse.ArgumentParser:
     x.set_defaults(func=_cmd_export)
 
     m = sub.add_parser("animate", help="watch the motion: the body turning in 3-D, as a GIF, an MP4 or "
-                                       "a self-contained web page (docs/animate.md)")
+                                       "a self-contained web page (docs/animate.md)",
+                       description="Simulate a scene and draw its motion in 3-D: the body turning, the path "
+                       "of its axis on the unit sphere, L, the vertical, the time and the angles. The "
+                       "output's extension picks the format: .gif, .mp4 (ffmpeg) or .html (offline).")
     m.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
     m.add_argument("-o", "--output", required=True,
                    help="the animation: .gif, .mp4 (needs ffmpeg on PATH) or .html, by its extension")
