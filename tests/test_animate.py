@@ -249,3 +249,8 @@ def test_the_docs_show_each_example_animated_in_a_small_gif(name):
     assert im.format == "GIF" and im.n_frames >= 40 and im.size == draw.PIXELS
     assert gif.stat().st_size < 400_000
     assert f"animate/{name}.gif" in (ROOT / "docs" / "animate.md").read_text(encoding="utf-8")
+
+
+def test_more_frames_than_the_limit_are_refused_naming_speed(top):
+    with pytest.raises(SceneError, match="animate: speed: .* at most 3000"):
+        motion.frames(top, fps=50, speed=0.2 * 50 / 3000 / 2)

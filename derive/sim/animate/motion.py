@@ -350,7 +350,7 @@ def frames(res, fps: int | None = None, speed: float | None = None, title: str =
     count = int(math.floor((ts[-1] - ts[0]) * fps / speed * (1 + 1e-12))) + 1
     if count > MAX_FRAMES:
         raise SceneError(f"animate: speed: {count} frames at {fps} frames per second and {speed:g} simulated "
-                         f"seconds per second; at most {MAX_FRAMES} (raise the speed or lower fps)")
+                         f"seconds per second; at most {MAX_FRAMES} (raise the speed, --speed, or lower fps, --fps)")
     t = ts[0] + np.arange(count) * (speed / fps)
     R = rotation_at(res, t)
     a, b, g = euler_angles(R, unwrap=False)
