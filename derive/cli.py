@@ -190,6 +190,22 @@ def _cmd_export(args) -> int:
     return EXIT_OK
 
 
+def _cmd_animate(args) -> int:
+    """``derive animate SCENE -o OUT``: the motion drawn in 3-D, as GIF, MP4 or HTML."""
+    from derive.sim import animate
+    from derive.sim.simulation import simulate
+
+    # before the work: the suffix, ffmpeg for .mp4, the path, --fps and --speed
+    animate.check_output(args.output, inputs=[args.scene])
+    animate.motion.check_settings(args.fps, args.speed, names=("--fps", "--speed"))
+    res = simulate(args.scene)
+    fr = animate.write(res, args.output, fps=args.fps, speed=args.speed)
+    print(f"{len(fr.t)} frames at {fr.fps} frames/s -> {args.output}")
+    for line in fr.notes:
+        print(f"  {line}")
+    return EXIT_OK
+
+
 def _cmd_bench(args) -> int:
     from derive.bench import suite as bench
 
@@ -395,6 +411,19 @@ def parser() -> argparse.ArgumentParser:
     where.add_argument("--fmu", metavar="OUT.fmu", help="the FMU file to write")
     x.add_argument("--method", help=f"overrides [simulate] method; a compiled one of: {', '.join(METHODS)}")
     x.set_defaults(func=_cmd_export)
+
+    m = sub.add_parser("animate", help="watch the motion: the body turning in 3-D, as a GIF, an MP4 or "
+                                       "a self-contained web page (docs/animate.md)",
+                       description="Simulate a scene and draw its motion in 3-D: the body turning, the path "
+                       "of its axis on the unit sphere, L, the vertical, the time and the angles. The "
+                       "output's extension picks the format: .gif, .mp4 (ffmpeg) or .html (offline).")
+    m.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
+    m.add_argument("-o", "--output", required=True,
+                   help="the animation: .gif, .mp4 (needs ffmpeg on PATH) or .html, by its extension")
+    m.add_argument("--fps", type=int, metavar="N", help="frames per second, 1 to 50 (default 20)")
+    m.add_argument("--speed", type=float, metavar="X",
+                   help="simulated seconds per second on screen (default: chosen from the motion)")
+    m.set_defaults(func=_cmd_animate)
 
     b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")
     b.add_argument("-o", "--out", default="bench-out", help="output directory")

@@ -40,6 +40,7 @@ import numpy as np
 from scipy import optimize
 
 from derive.reference.elliptic import elliptic_f_from_jacobi, reduce_argument, sn2_rational_integral
+from derive.reference.rotation import _rz, euler_angles, euler_matrix
 
 __all__ = [
     "Trajectory",
@@ -84,44 +85,7 @@ class Trajectory:
 
 
 # --------------------------------------------------------------------------------------------
-# rotations
-
-
-def _rz(a):
-    a = np.asarray(a, dtype=float)
-    c, s = np.cos(a), np.sin(a)
-    o, z = np.ones_like(a), np.zeros_like(a)
-    return np.stack([np.stack([c, -s, z], -1), np.stack([s, c, z], -1), np.stack([z, z, o], -1)], -2)
-
-
-def _ry(b):
-    b = np.asarray(b, dtype=float)
-    c, s = np.cos(b), np.sin(b)
-    o, z = np.ones_like(b), np.zeros_like(b)
-    return np.stack([np.stack([c, z, s], -1), np.stack([z, o, z], -1), np.stack([-s, z, c], -1)], -2)
-
-
-def euler_matrix(alpha, beta, gamma):
-    """R = Rz(alpha) Ry(beta) Rz(gamma) (body -> inertial), broadcast over the angles."""
-    return _rz(alpha) @ _ry(beta) @ _rz(gamma)
-
-
-def euler_angles(R, unwrap=True):
-    """z-y-z angles of rotation matrices R (..., 3, 3): beta = atan2(|R[:2, 2]|, R[2, 2]) in
-    [0, pi], alpha = atan2(R[1, 2], R[0, 2]), gamma = atan2(R[2, 1], -R[2, 0]); where sin(beta)
-    is zero only alpha + gamma is defined and alpha is set to 0. With unwrap (samples along the
-    first axis, ordered in time) alpha and gamma are unwrapped; near beta = 0 they are
-    ill-conditioned and may still jump by pi between samples."""
-    R = np.asarray(R, dtype=float)
-    sb = np.hypot(R[..., 0, 2], R[..., 1, 2])
-    beta = np.arctan2(sb, R[..., 2, 2])
-    degenerate = sb == 0.0
-    alpha = np.where(degenerate, 0.0, np.arctan2(R[..., 1, 2], R[..., 0, 2]))
-    gamma = np.where(degenerate, np.arctan2(R[..., 1, 0], R[..., 0, 0]),
-                     np.arctan2(R[..., 2, 1], -R[..., 2, 0]))
-    if unwrap and R.ndim == 3:
-        alpha, gamma = np.unwrap(alpha), np.unwrap(gamma)
-    return alpha, beta, gamma
+# rotations: derive.reference.rotation (light, shared with the drawing of a motion)
 
 
 def _axis_angle(n, theta):

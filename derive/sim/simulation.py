@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from derive.sim import animate as views
 from derive.sim import auto, plan
 from derive.runtime import catalogue
 from derive.symbolic import effects as fx
@@ -107,6 +108,31 @@ class Result:
         out.update(method=np.array(self.method), formulation=np.array(self.formulation),
                    nfev=np.array(self.nfev, dtype=np.int64))
         return out
+
+    def animate(self, path=None, *, fps=None, speed=None):
+        """The motion drawn in 3-D: the body turning, the path of ê₃ on the unit sphere, L, the
+        vertical, the time and the angles (:mod:`derive.sim.animate`; ``derive animate``).
+
+        Parameters
+        ----------
+        path : str or os.PathLike, optional
+            ``.gif``, ``.mp4`` (needs ffmpeg) or ``.html`` (self-contained): written all or
+            nothing. None: return the player for Jupyter to show inline.
+        fps : int, optional
+            Frames per second (default 20).
+        speed : float, optional
+            Simulated seconds per wall second (default: chosen from the motion).
+
+        Returns
+        -------
+        str or os.PathLike, or derive.sim.animate.page.Animation
+            ``path`` when given, else an object with ``_repr_html_`` (and ``save``).
+        """
+        return views.animate(self, path, fps, speed)
+
+    def _repr_html_(self) -> str:
+        """A short summary table for Jupyter (scene, method, t range, samples, energy drift)."""
+        return views.summary_html(self)
 
     def __getattr__(self, name):
         # (called only for a name the instance does not hold yet)
