@@ -181,7 +181,9 @@ def _cmd_export(args) -> int:
               f"co-simulation) -> {args.fmu}")
         return EXIT_OK
     from derive.export.folder import export_folder
+    from derive.sim.outputs import check_parent
 
+    check_parent(args.out)  # the one rule of every output flag, before the work
     try:
         b = export_folder(args.scene, args.out, method=args.method)
     except SceneError as exc:
@@ -205,8 +207,9 @@ def _cmd_examples(args) -> int:
         try:
             made = examples.copy(args.copy, Path(args.to))
         except KeyError:
-            known = ", ".join(examples.names("scene") + examples.names("sweep"))
-            raise SceneError(f"derive examples: --copy: no example {args.copy!r} (the examples: {known})") from None
+            hint = examples.did_you_mean(args.copy) or (
+                f" (the examples: {', '.join(examples.names('scene') + examples.names('sweep'))})")
+            raise SceneError(f"{args.copy}: --copy: not found among the examples{hint}") from None
         except FileExistsError as exc:
             raise SceneError(f"derive examples: --copy: {exc} exists; not overwritten") from None
         except OSError as exc:
@@ -224,8 +227,8 @@ def _cmd_examples(args) -> int:
 
 
 def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
-    """A directory the command may write into, made (with its parents) unless ``create`` is
-    false.
+    """A directory the command may write into, made unless ``create`` is false; the directory
+    that holds it must exist (:func:`derive.sim.outputs.check_parent`).
 
     Parameters
     ----------
@@ -245,15 +248,18 @@ def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
     ------
     SceneError
         ``<path>: <flag>: <what>`` (exit 2): a file or other non-directory of that name, a
-        parent that is a file, or a directory that cannot be made or written.
+        missing parent or one that is a file, or a directory that cannot be made or written.
     """
+    from derive.sim.outputs import check_parent
+
     if "\0" in str(path):
         raise SceneError(f"{str(path)!r}: {flag}: not a directory name")
+    check_parent(path)  # the one rule of every output flag: no folder above the output is made
     if path.exists() and not path.is_dir():
         raise SceneError(f"{path}: {flag}: not a directory (a file of that name exists)")
     if create:
         try:
-            path.mkdir(parents=True, exist_ok=True)
+            path.mkdir(exist_ok=True)
         except OSError as err:
             raise SceneError(f"{path}: {flag}: cannot create the directory "
                              f"({err.strerror or err})") from None
@@ -322,14 +328,17 @@ def _bytes(n: int) -> str:
 
 
 def parser() -> argparse.ArgumentParser:
+    from derive.methods.registry import REFERENCE_METHODS
     from derive.sim.scene import FORMULATIONS, METHODS
+    from derive.sweeps.measures import REGISTRY as MEASURES
 
     p = _Parser(prog="derive", description=__doc__.splitlines()[0])
     p.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True)
 
-    g = sub.add_parser("generate", help="write generated/ (C and NumPy kernels, reports)")
-    g.add_argument("--out", help="output directory (default: the checkout's generated/; required when "
+    g = sub.add_parser("generate", help="derive every model and write generated/ (the C and NumPy "
+                                        "kernels, the derivation and lecture reports)")
+    g.add_argument("--out", metavar="DIR", help="output directory (default: the checkout's generated/; required when "
                                  "derive is installed, except with --check, which then compares the "
                                  "package's own copy)")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 listing stale files")
@@ -348,7 +357,8 @@ def parser() -> argparse.ArgumentParser:
     v.set_defaults(func=_cmd_verify)
 
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())
-    s = sub.add_parser("simulate", help="simulate a scene file",
+    s = sub.add_parser("simulate", help="simulate a scene: its motion as arrays (-o), a figure "
+                                        "(--plot) or a one-line summary (--json)",
                        description=f"Simulate a scene. Methods: {methods}.")
     s.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
     s.add_argument("-o", "--output", help="output file: .npz (NumPy arrays) or .csv (a header row, "
@@ -393,11 +403,14 @@ def parser() -> argparse.ArgumentParser:
     where = x.add_mutually_exclusive_group(required=True)
     where.add_argument("--out", metavar="DIR", help="a new (or empty) directory to write the folder into")
     where.add_argument("--fmu", metavar="OUT.fmu", help="the FMU file to write")
-    x.add_argument("--method", help=f"overrides [simulate] method; a compiled one of: {', '.join(METHODS)}")
+    compiled = [m for m in METHODS if m not in REFERENCE_METHODS]  # export refuses SciPy's
+    x.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(compiled)}")
     x.set_defaults(func=_cmd_export)
 
-    b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")
-    b.add_argument("-o", "--out", default="bench-out", help="output directory")
+    b = sub.add_parser("bench", help="the work-precision report: every method against SciPy on the "
+                                     "example scenes (Markdown tables and PNG plots; minutes)")
+    b.add_argument("-o", "--out", default="bench-out", metavar="DIR",
+                   help="the directory to write the report into (made if missing; its parent must exist)")
     b.add_argument("--quick", action="store_true", help="fewer tolerances and repeats")
     b.set_defaults(func=_cmd_bench)
 
@@ -408,7 +421,9 @@ def parser() -> argparse.ArgumentParser:
                    help="results, one row per point: .parquet or .csv, by its extension")
     w.add_argument("--plot", default=None,
                    help="map (2-D sweep) or line (1-D): .png, .pdf or .svg, by its extension")
-    w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
+    w.add_argument("--measure", default=None, metavar="NAME",
+                   help="the measure to plot, also computed when the sweep file does not ask for it; "
+                        f"one of: {', '.join(MEASURES)} (docs/sweeps.md)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,
                         help="start a Dask LocalCluster with N worker processes (TLS, loopback "
@@ -430,6 +445,10 @@ def parser() -> argparse.ArgumentParser:
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
     c.add_argument("--clear", action="store_true", help="remove every cached library")
     c.set_defaults(func=_cmd_cache)
+    for action in sub._choices_actions:  # each command's --help opens with its one-line summary
+        command = sub.choices[action.dest]
+        if not command.description:
+            command.description = action.help[:1].upper() + action.help[1:] + "."
     return p
 
 
