@@ -137,23 +137,32 @@ def _flag_named(exc: SceneError, overrides) -> SceneError:
 def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | None = None) -> dict:
     """The one-line summary of ``derive simulate --json``.
 
-    ``energy_drift`` = max_t |E(t) − E(0)| / |E(0)| over the output samples (max |E(t) − E(0)|
-    when E(0) = 0; then ``energy_drift_relative`` is false). With damping this is the energy
-    lost, not an error. ``wall_time`` is the `simulate` call in seconds (scene loading, model,
-    kernel from cache or compiled, solve, outputs computed), not the file writing. ``model``
-    and ``effects`` name the kernel that ran and the effects in it (a table whose values make
-    its effect vanish, ``[damping] c = 0``, is not among them).
+    ``energy_change`` = E(t_end) − E(0), J: the work the torques did over the run (a damping
+    torque's is negative, a drive's what it supplied). ``energy_drift`` = max_t |E(t) − E(0)| /
+    |E(0)| over the output samples (max |E(t) − E(0)| when E(0) = 0; then
+    ``energy_drift_relative`` is false), the integration's error, reported only when the
+    physics conserves the energy (every effect in the model has a potential and no torque);
+    otherwise both are null, since E(t) − E(0) is then work done, not drift. ``wall_time`` is
+    the `simulate` call in seconds (scene loading, model, kernel from cache or compiled, solve,
+    outputs computed), not the file writing. ``model`` and ``effects`` name the kernel that ran
+    and the effects in it (a table whose values make its effect vanish, ``[damping] c = 0``, is
+    not among them).
     """
     import numpy as np
+
+    from derive.symbolic import effects
 
     e = np.asarray(res.energy, dtype=float)
     e0 = float(e[0])
     dev = float(np.max(np.abs(e - e0)))
     relative = e0 != 0.0
+    conserved = all(effect.conservative for effect in effects.lookup(res.effects))
     s = res.scene.simulate if res.scene is not None else None
     return {"method": res.method, "formulation": res.formulation, "model": res.model,
             "effects": list(res.effects), "nfev": int(res.nfev),
-            "energy_drift": dev / abs(e0) if relative else dev, "energy_drift_relative": relative,
+            "energy_drift": (dev / abs(e0) if relative else dev) if conserved else None,
+            "energy_drift_relative": relative if conserved else None,
+            "energy_change": float(e[-1] - e0),
             "wall_time": wall_time, "samples": int(len(res.t)), "t_end": float(res.t[-1]),
             "rtol": None if s is None else s.rtol, "atol": None if s is None else s.atol,
             "outputs": {"npz": npz, "png": png}}
@@ -383,8 +392,9 @@ def parser() -> argparse.ArgumentParser:
                         "fixed-step runs needing more are refused up front)")
     s.add_argument("--json", action="store_true",
                    help="print a one-line JSON summary instead: method, formulation, nfev, "
-                        "energy_drift (max |E - E0| / |E0|), wall_time (s), samples, t_end, rtol, "
-                        "atol, outputs")
+                        "energy_change (E(t_end) - E0: the work the torques did, J), energy_drift "
+                        "(max |E - E0| / |E0|; null when the physics does not conserve E), "
+                        "wall_time (s), samples, t_end, rtol, atol, outputs")
     s.set_defaults(func=_cmd_simulate)
 
     a = sub.add_parser("analyze", help="the lecture's analysis for a scene's body: energies, equations, "
