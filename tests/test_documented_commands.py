@@ -13,7 +13,7 @@ a relative 1e-9 (the last digits of a double may differ between C libraries).
 A command is skipped, never silently, by one of the rules of :data:`SKIPPED` (each skip is its
 own test, listed by ``pytest -rs`` with its rule): what a clone does not have (a Dask cluster,
 an optional peer such as fmpy, a C compiler) or what the suite itself runs under (``make
-derive``, ``make test``).
+derive``, ``make test``, ``pytest``).
 """
 from __future__ import annotations
 
@@ -44,6 +44,7 @@ SKIPPED = [
     (r"^make (%s)\b" % "|".join(sorted(_make_targets())),
      "a target of the repository's Makefile: the suite itself runs under `make derive` / `make test`",
      True),
+    (r"-m pytest\b", "runs the test suite itself (a suite inside the suite)", True),
     (r"^dask ", "starts a Dask scheduler or worker on the reader's machines", True),
     (r"<host>", "names the reader's own Dask scheduler", True),
     (r"\bfmpy\b", "needs the optional peer fmpy (pip install fmpy)",
