@@ -211,8 +211,10 @@ def _cmd_bench(args) -> int:
 
 def _cmd_examples(args) -> int:
     from derive.sim import examples
+    from derive.sim.outputs import check_parent
 
     if args.copy:
+        check_parent(args.to)  # the one rule of every output flag
         try:
             made = examples.copy(args.copy, Path(args.to))
         except KeyError:

@@ -66,7 +66,7 @@ OUTPUT_FLAGS = [
     ("simulate", "looping_top -o {o}.npz"), ("simulate", "looping_top --plot {o}.png"),
     ("sweep", "sleeping_threshold -o {o}.csv"), ("sweep", "sleeping_threshold -o x.csv --plot {o}.png"),
     ("export", "looping_top --fmu {o}.fmu"), ("export", "looping_top --out {o}"),
-    ("bench", "-o {o}"), ("generate", "--out {o}"),
+    ("bench", "-o {o}"), ("generate", "--out {o}"), ("examples", "--copy looping_top --to {o}"),
 ]
 
 

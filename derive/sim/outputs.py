@@ -180,7 +180,7 @@ def check_parent(path) -> None:
     """Raise SceneError when the folder that is to hold the output ``path`` is missing or is
     not a folder.
 
-    One rule for every output flag, a file's (``-o``, ``--plot``, ``--fmu``) and a folder's
+    One rule for every output flag, a file's (``-o``, ``--plot``, ``--fmu``, ``--to``) and a folder's
     (``export --out``, ``bench -o``, ``generate --out``): derive makes the one thing it was
     asked to write and no folder above it, as the shell's ``>`` and ``mkdir`` without ``-p``
     do, so that a mistyped path fails at once instead of leaving a tree of new folders.
