@@ -1,4 +1,7 @@
-"""What ``method = "auto"`` runs: a cost model of the compiled tolerance-driven methods.
+"""What a run will cost before it starts: the cost model behind ``method = "auto"`` (which of the
+compiled tolerance-driven methods is cheaper), and the floor on a run's steps
+(:func:`least_steps`, :data:`STEP_LAWS`) by which a run its step budget cannot cover is refused
+up front (:func:`over_budget`, asked where a plan is made).
 
 A run's time is its steps times the work per step plus its samples times the work per sample,
 in the units of the kernel spec's operation count (:data:`derive.codegen.kernelspec.OP_WEIGHTS`,
