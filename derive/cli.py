@@ -137,23 +137,32 @@ def _flag_named(exc: SceneError, overrides) -> SceneError:
 def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | None = None) -> dict:
     """The one-line summary of ``derive simulate --json``.
 
-    ``energy_drift`` = max_t |E(t) − E(0)| / |E(0)| over the output samples (max |E(t) − E(0)|
-    when E(0) = 0; then ``energy_drift_relative`` is false). With damping this is the energy
-    lost, not an error. ``wall_time`` is the `simulate` call in seconds (scene loading, model,
-    kernel from cache or compiled, solve, outputs computed), not the file writing. ``model``
-    and ``effects`` name the kernel that ran and the effects in it (a table whose values make
-    its effect vanish, ``[damping] c = 0``, is not among them).
+    ``energy_change`` = E(t_end) − E(0), J: the work the torques did over the run (a damping
+    torque's is negative, a drive's what it supplied). ``energy_drift`` = max_t |E(t) − E(0)| /
+    |E(0)| over the output samples (max |E(t) − E(0)| when E(0) = 0; then
+    ``energy_drift_relative`` is false), the integration's error, reported only when the
+    physics conserves the energy (every effect in the model has a potential and no torque);
+    otherwise both are null, since E(t) − E(0) is then work done, not drift. ``wall_time`` is
+    the `simulate` call in seconds (scene loading, model, kernel from cache or compiled, solve,
+    outputs computed), not the file writing. ``model`` and ``effects`` name the kernel that ran
+    and the effects in it (a table whose values make its effect vanish, ``[damping] c = 0``, is
+    not among them).
     """
     import numpy as np
+
+    from derive.symbolic import effects
 
     e = np.asarray(res.energy, dtype=float)
     e0 = float(e[0])
     dev = float(np.max(np.abs(e - e0)))
     relative = e0 != 0.0
+    conserved = all(effect.conservative for effect in effects.lookup(res.effects))
     s = res.scene.simulate if res.scene is not None else None
     return {"method": res.method, "formulation": res.formulation, "model": res.model,
             "effects": list(res.effects), "nfev": int(res.nfev),
-            "energy_drift": dev / abs(e0) if relative else dev, "energy_drift_relative": relative,
+            "energy_drift": (dev / abs(e0) if relative else dev) if conserved else None,
+            "energy_drift_relative": relative if conserved else None,
+            "energy_change": float(e[-1] - e0),
             "wall_time": wall_time, "samples": int(len(res.t)), "t_end": float(res.t[-1]),
             "rtol": None if s is None else s.rtol, "atol": None if s is None else s.atol,
             "outputs": {"npz": npz, "png": png}}
@@ -181,7 +190,9 @@ def _cmd_export(args) -> int:
               f"co-simulation) -> {args.fmu}")
         return EXIT_OK
     from derive.export.folder import export_folder
+    from derive.sim.outputs import check_parent
 
+    check_parent(args.out)  # the one rule of every output flag, before the work
     try:
         b = export_folder(args.scene, args.out, method=args.method)
     except SceneError as exc:
@@ -216,13 +227,16 @@ def _cmd_bench(args) -> int:
 
 def _cmd_examples(args) -> int:
     from derive.sim import examples
+    from derive.sim.outputs import check_parent
 
     if args.copy:
+        check_parent(args.to)  # the one rule of every output flag
         try:
             made = examples.copy(args.copy, Path(args.to))
         except KeyError:
-            known = ", ".join(examples.names("scene") + examples.names("sweep"))
-            raise SceneError(f"derive examples: --copy: no example {args.copy!r} (the examples: {known})") from None
+            hint = examples.did_you_mean(args.copy) or (
+                f" (the examples: {', '.join(examples.names('scene') + examples.names('sweep'))})")
+            raise SceneError(f"{args.copy}: --copy: not found among the examples{hint}") from None
         except FileExistsError as exc:
             raise SceneError(f"derive examples: --copy: {exc} exists; not overwritten") from None
         except OSError as exc:
@@ -240,8 +254,8 @@ def _cmd_examples(args) -> int:
 
 
 def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
-    """A directory the command may write into, made (with its parents) unless ``create`` is
-    false.
+    """A directory the command may write into, made unless ``create`` is false; the directory
+    that holds it must exist (:func:`derive.sim.outputs.check_parent`).
 
     Parameters
     ----------
@@ -261,15 +275,18 @@ def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
     ------
     SceneError
         ``<path>: <flag>: <what>`` (exit 2): a file or other non-directory of that name, a
-        parent that is a file, or a directory that cannot be made or written.
+        missing parent or one that is a file, or a directory that cannot be made or written.
     """
+    from derive.sim.outputs import check_parent
+
     if "\0" in str(path):
         raise SceneError(f"{str(path)!r}: {flag}: not a directory name")
+    check_parent(path)  # the one rule of every output flag: no folder above the output is made
     if path.exists() and not path.is_dir():
         raise SceneError(f"{path}: {flag}: not a directory (a file of that name exists)")
     if create:
         try:
-            path.mkdir(parents=True, exist_ok=True)
+            path.mkdir(exist_ok=True)
         except OSError as err:
             raise SceneError(f"{path}: {flag}: cannot create the directory "
                              f"({err.strerror or err})") from None
@@ -338,14 +355,17 @@ def _bytes(n: int) -> str:
 
 
 def parser() -> argparse.ArgumentParser:
+    from derive.methods.registry import REFERENCE_METHODS
     from derive.sim.scene import FORMULATIONS, METHODS
+    from derive.sweeps.measures import REGISTRY as MEASURES
 
     p = _Parser(prog="derive", description=__doc__.splitlines()[0])
     p.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
     sub = p.add_subparsers(dest="command", required=True)
 
-    g = sub.add_parser("generate", help="write generated/ (C and NumPy kernels, reports)")
-    g.add_argument("--out", help="output directory (default: the checkout's generated/; required when "
+    g = sub.add_parser("generate", help="derive every model and write generated/ (the C and NumPy "
+                                        "kernels, the derivation and lecture reports)")
+    g.add_argument("--out", metavar="DIR", help="output directory (default: the checkout's generated/; required when "
                                  "derive is installed, except with --check, which then compares the "
                                  "package's own copy)")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 listing stale files")
@@ -364,7 +384,8 @@ def parser() -> argparse.ArgumentParser:
     v.set_defaults(func=_cmd_verify)
 
     methods = "; ".join(f"{k}: {d}" for k, d in METHODS.items())
-    s = sub.add_parser("simulate", help="simulate a scene file",
+    s = sub.add_parser("simulate", help="simulate a scene: its motion as arrays (-o), a figure "
+                                        "(--plot) or a one-line summary (--json)",
                        description=f"Simulate a scene. Methods: {methods}.")
     s.add_argument("scene", help="scene file (TOML), or the name of an example (derive examples)")
     s.add_argument("-o", "--output", help="output file: .npz (NumPy arrays) or .csv (a header row, "
@@ -389,8 +410,9 @@ def parser() -> argparse.ArgumentParser:
                         "fixed-step runs needing more are refused up front)")
     s.add_argument("--json", action="store_true",
                    help="print a one-line JSON summary instead: method, formulation, nfev, "
-                        "energy_drift (max |E - E0| / |E0|), wall_time (s), samples, t_end, rtol, "
-                        "atol, outputs")
+                        "energy_change (E(t_end) - E0: the work the torques did, J), energy_drift "
+                        "(max |E - E0| / |E0|; null when the physics does not conserve E), "
+                        "wall_time (s), samples, t_end, rtol, atol, outputs")
     s.set_defaults(func=_cmd_simulate)
 
     a = sub.add_parser("analyze", help="the lecture's analysis for a scene's body: energies, equations, "
@@ -409,7 +431,8 @@ def parser() -> argparse.ArgumentParser:
     where = x.add_mutually_exclusive_group(required=True)
     where.add_argument("--out", metavar="DIR", help="a new (or empty) directory to write the folder into")
     where.add_argument("--fmu", metavar="OUT.fmu", help="the FMU file to write")
-    x.add_argument("--method", help=f"overrides [simulate] method; a compiled one of: {', '.join(METHODS)}")
+    compiled = [m for m in METHODS if m not in REFERENCE_METHODS]  # export refuses SciPy's
+    x.add_argument("--method", help=f"overrides [simulate] method; one of: {', '.join(compiled)}")
     x.set_defaults(func=_cmd_export)
 
     m = sub.add_parser("animate", help="watch the motion: the body turning in 3-D, as a GIF, an MP4 or "
@@ -425,8 +448,10 @@ def parser() -> argparse.ArgumentParser:
                    help="simulated seconds per second on screen (default: chosen from the motion)")
     m.set_defaults(func=_cmd_animate)
 
-    b = sub.add_parser("bench", help="work-precision report (Markdown table + PNG plots)")
-    b.add_argument("-o", "--out", default="bench-out", help="output directory")
+    b = sub.add_parser("bench", help="the work-precision report: every method against SciPy on the "
+                                     "example scenes (Markdown tables and PNG plots; minutes)")
+    b.add_argument("-o", "--out", default="bench-out", metavar="DIR",
+                   help="the directory to write the report into (made if missing; its parent must exist)")
     b.add_argument("--quick", action="store_true", help="fewer tolerances and repeats")
     b.set_defaults(func=_cmd_bench)
 
@@ -437,7 +462,9 @@ def parser() -> argparse.ArgumentParser:
                    help="results, one row per point: .parquet or .csv, by its extension")
     w.add_argument("--plot", default=None,
                    help="map (2-D sweep) or line (1-D): .png, .pdf or .svg, by its extension")
-    w.add_argument("--measure", default=None, help="the measure to plot (added if the file has not it)")
+    w.add_argument("--measure", default=None, metavar="NAME",
+                   help="the measure to plot, also computed when the sweep file does not ask for it; "
+                        f"one of: {', '.join(MEASURES)} (docs/sweeps.md)")
     engine = w.add_mutually_exclusive_group()
     engine.add_argument("--workers", type=int, default=None,
                         help="start a Dask LocalCluster with N worker processes (TLS, loopback "
@@ -459,6 +486,10 @@ def parser() -> argparse.ArgumentParser:
     c = sub.add_parser("cache", help="where compiled kernels are cached (DERIVE_CACHE) and what is there")
     c.add_argument("--clear", action="store_true", help="remove every cached library")
     c.set_defaults(func=_cmd_cache)
+    for action in sub._choices_actions:  # each command's --help opens with its one-line summary
+        command = sub.choices[action.dest]
+        if not command.description:
+            command.description = action.help[:1].upper() + action.help[1:] + "."
     return p
 
 

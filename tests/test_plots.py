@@ -72,12 +72,19 @@ def _close(fig):
     """Figures are shared between tests and closed at the end of the module."""
 
 
-def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped):
-    assert plots.panels(symmetric) == ["beta", "omega", "energy", "momenta", "top", "sphere"]
-    assert plots.panels(asymmetric) == ["beta", "omega", "energy", "momenta", "top", "sphere",
-                                        "polhode"]
+@pytest.fixture(scope="module")
+def heavy():
+    """A symmetric heavy top in the reduced formulation: p_α and p_γ are its parameters."""
+    return derive.simulate(_scene("looping_top", t_end=0.5, samples=201))
+
+
+def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped, heavy):
+    # a free body (symmetric or not) is read in its own axes: the polhode, no view from above
+    assert plots.panels(symmetric) == ["beta", "omega", "energy", "momenta", "sphere", "polhode"]
+    assert plots.panels(asymmetric) == ["beta", "omega", "energy", "momenta", "sphere", "polhode"]
     assert plots.panels(damped) == ["beta", "omega", "energy", "balance", "top", "sphere"]
-    for res in (symmetric, asymmetric, damped):
+    assert plots.panels(heavy) == ["beta", "omega", "energy", "momenta", "top", "sphere"]
+    for res in (symmetric, asymmetric, damped, heavy):
         fig = _fig(res)
         try:
             names = [ax.get_label() for ax in fig.axes if not ax.get_label().endswith(":twin")]
@@ -280,3 +287,70 @@ def test_deviation_from_zero_is_absolute_and_labelled_so():
     dev, how, linthresh = plots._deviation(np.array([-2.0, -2.0, -1.0]))
     np.testing.assert_array_equal(dev, [0.0, 0.0, 0.5])
     assert how == "/ |{0}(0)|" and linthresh == 1e-16
+
+
+def test_the_grid_has_no_empty_cell(symmetric, asymmetric, damped, heavy):
+    for res in (symmetric, asymmetric, damped, heavy):
+        fig = _fig(res)
+        panels = [ax for ax in fig.axes if not ax.get_label().endswith(":twin")]
+        rows, columns = panels[0].get_subplotspec().get_gridspec().get_geometry()
+        assert rows * columns == len(panels), plots.panels(res)
+
+
+def test_exactly_conserved_momenta_are_said_in_words_not_drawn(heavy):
+    assert np.all(heavy.p_alpha == heavy.p_alpha[0]) and np.all(heavy.p_gamma == heavy.p_gamma[0])
+    ax = _axes(_fig(heavy), "momenta")
+    assert not ax.axison and ax.get_lines() == []
+    words = " ".join(t.get_text() for t in ax.texts)
+    assert "conserved exactly" in words and f"{heavy.t.size} samples" in words
+    assert f"p_γ = {heavy.p_gamma[0]:.10g}" in words and f"p_α = {heavy.p_alpha[0]:.10g}" in words
+
+
+def test_an_exact_quantity_beside_a_drifting_one_is_named_not_drawn(symmetric):
+    ax = _axes(_fig(symmetric), "momenta")
+    drawn = {ln.get_label() for ln in ax.get_lines()}
+    assert ax.axison and drawn and not any("p_α" in label or "p_γ" in label for label in drawn)
+    assert "exactly constant (not drawn): p_α = " in ax.get_title()
+
+
+def test_an_exactly_conserved_energy_is_said_in_words(heavy):
+    import dataclasses
+
+    res = dataclasses.replace(heavy, energy=np.full_like(heavy.energy, heavy.energy[0]))
+    fig = plots.figure(res)
+    try:
+        ax = _axes(fig, "energy")
+        assert not ax.axison and ax.get_lines() == []
+        assert "E is conserved exactly" in " ".join(t.get_text() for t in ax.texts)
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)
+
+
+def test_a_free_body_shows_its_polhode_on_the_momentum_sphere(asymmetric):
+    ax = _axes(_fig(asymmetric), "polhode")
+    L = np.linalg.norm(asymmetric.L, axis=1)
+    assert np.ptp(L) < 1e-8 * L[0]  # |L̃| is conserved: the path lies on one sphere
+    assert "momentum sphere" in ax.get_title() and f"{np.median(L):.4g} kg m²/s" in ax.get_title()
+    path = next(ln for ln in ax.get_lines() if ln.get_label() == "L̃/|L̃|")
+    P = np.column_stack(path.get_data_3d())
+    np.testing.assert_allclose(np.linalg.norm(P, axis=1), 1.0, rtol=1e-12)
+    np.testing.assert_allclose(P * L[:, None], asymmetric.L, rtol=1e-12, atol=1e-15)
+
+
+def test_the_sphere_sends_no_reader_to_a_view_that_is_not_there(symmetric):
+    assert "top view" not in _axes(_fig(symmetric), "sphere").get_title()
+
+
+def test_a_driven_run_names_its_energy_change_as_work_done():
+    res = derive.simulate(str(ROOT / "docs" / "own-body" / "magnetic_top.toml"), t_end=0.5, samples=101)
+    fig = plots.figure(res)
+    try:
+        ax = _axes(fig, "energy")
+        assert "work done" in ax.get_title() and "error" not in ax.get_title()
+        np.testing.assert_array_equal(ax.get_lines()[0].get_ydata(), res.energy - res.energy[0])
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)

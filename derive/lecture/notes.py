@@ -313,7 +313,7 @@ def read_notes(path, convention: str | None = None) -> Notes:
     try:
         text = p.read_text(encoding="utf-8")
     except FileNotFoundError:
-        raise ValidationError(str(path), "file", "no such file") from None
+        raise ValidationError(str(path), "file", "not found") from None
     except IsADirectoryError:
         raise ValidationError(str(path), "file", "is a directory, not a notes file") from None
     except UnicodeDecodeError as err:

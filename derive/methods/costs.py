@@ -1,4 +1,7 @@
-"""What ``method = "auto"`` runs: a cost model of the compiled tolerance-driven methods.
+"""What a run will cost before it starts: the cost model behind ``method = "auto"`` (which of the
+compiled tolerance-driven methods is cheaper), and the floor on a run's steps
+(:func:`least_steps`, :data:`STEP_LAWS`) by which a run its step budget cannot cover is refused
+up front (:func:`over_budget`, asked where a plan is made).
 
 A run's time is its steps times the work per step plus its samples times the work per sample,
 in the units of the kernel spec's operation count (:data:`derive.codegen.kernelspec.OP_WEIGHTS`,
@@ -116,3 +119,95 @@ def choose(work: Work, rtol: float, atol: float) -> str:
     """The method of :data:`CHOICES` with the least modelled cost (the first on a tie).
     Cached: a scan of one scene's numbers asks the same question every call."""
     return min(CHOICES, key=lambda m: (cost(m, work, rtol, atol), CHOICES.index(m)))
+
+
+# ---------------------------------------------------------------------------------------------
+# the work a run needs, before it starts
+
+
+class StepLaw(NamedTuple):
+    """How many steps a tolerance-driven method takes at the least, per radian of the fastest
+    motion: ``k · s · ε^(−1/(q+1))`` for an embedded pair with error order ``q``, and
+    ``k · s · (1 + A/p)`` for a Taylor method of order ``p`` (``q`` None)."""
+
+    k: float
+    q: int | None
+
+
+#: The least steps each tolerance-driven method takes (keys: scene method names). ``k`` is half
+#: the smallest constant fitted to the step counts of the example scenes (:data:`STEP_CALIBRATION`):
+#: the span ``s`` over-counts a motion whose fastest part a formulation integrates in closed form
+#: (the spin of a reduced top), so the law is a floor, and a run below it is refused only when
+#: even the floor exceeds the budget.
+STEP_LAWS: dict[str, StepLaw] = {
+    "dop853": StepLaw(0.003, 7),
+    "taylor": StepLaw(0.02, None),
+    "scipy-rk45": StepLaw(0.0015, 4),
+    "scipy-dop853": StepLaw(0.003, 7),
+    "scipy-radau": StepLaw(0.004, 3),
+    "scipy-lsoda": StepLaw(0.05, 11),
+}
+
+STEP_CALIBRATION = ("steps of each method on every example scene at its own tolerance (SciPy's "
+                    "over t ∈ [0, 0.5]), against t_end × the fastest rate; the smallest constant "
+                    "seen halved")
+
+
+def least_steps(method: str, span: float, rtol: float, atol: float) -> float:
+    """The fewest steps a run of ``method`` over ``span`` radians of its fastest motion can take.
+
+    ``k s ε^(−1/(q+1))`` (an embedded pair of error order q) or ``k s (1 + A/p)`` (a Taylor
+    method of order p, :meth:`derive.methods.taylor.TaylorMethod.order`), with ε = rtol (atol
+    when rtol is 0) and k, q from :data:`STEP_LAWS`.
+
+    Parameters
+    ----------
+    method : str
+        A scene method name (``"dop853"``, ``"taylor"``, ``"scipy-rk45"``, ...).
+    span : float
+        ``t_end`` times the scene's fastest natural rate, radians.
+    rtol, atol : float
+        The run's tolerances.
+
+    Returns
+    -------
+    float
+        The floor on the steps; 0 for a method without a law (a fixed step counts its steps
+        exactly, :func:`derive.sim.inputs.fixed_steps`).
+    """
+    law = STEP_LAWS.get(method)
+    if law is None or not span > 0:
+        return 0.0
+    if law.q is None:
+        return law.k * span * (1.0 + A / TAYLOR[method].order(rtol, atol))
+    eps = rtol if rtol > 0 else atol
+    return law.k * span * eps ** (-1.0 / (law.q + 1))
+
+
+def over_budget(method: str, span: float, rtol: float, atol: float, max_steps: int) -> str | None:
+    """Why a run cannot finish within its step budget, said before it starts, or None when it may.
+
+    Parameters
+    ----------
+    method : str
+        The method that will run.
+    span : float
+        ``t_end`` times the fastest natural rate, radians.
+    rtol, atol : float
+        The run's tolerances.
+    max_steps : int
+        The step budget (``[simulate] max_steps``).
+
+    Returns
+    -------
+    str or None
+        ``"<method> needs at least about N steps ..., more than simulate.max_steps = M; ..."``
+        when :func:`least_steps` exceeds ``max_steps``.
+    """
+    steps = least_steps(method, span, rtol, atol)
+    if steps <= max_steps:
+        return None
+    return (f"{method} needs at least about {steps:.2g} steps (t_end × the fastest rate = "
+            f"{span:.3g} rad at rtol {rtol:g}), more than simulate.max_steps = {max_steps}; "
+            f"raise it ([simulate] max_steps or --max-steps, up to 1e12), loosen the tolerances, "
+            f"or shorten t_end")

@@ -9,6 +9,7 @@ Takes names; gives paths. Imports only :mod:`derive.codegen.render` (where the d
 """
 from __future__ import annotations
 
+import difflib
 import os
 from pathlib import Path
 
@@ -43,16 +44,48 @@ def resolve(arg, kind: str = "scene"):
 
 
 def summary(file: Path) -> str:
-    """The example's one-line description: its ``title``, else its first comment line."""
-    title, comment = None, None
-    for line in file.read_text(encoding="utf-8").splitlines():
+    """The example's one-line description: its ``title``, else the first sentence of its
+    leading comment (the comment's first paragraph, its lines joined, up to the first ``.``,
+    ``?`` or ``!`` that ends a sentence outside parentheses), never a line cut mid-sentence."""
+    lines = file.read_text(encoding="utf-8").splitlines()
+    for line in lines:
         s = line.strip()
-        if comment is None and s.startswith("#"):
-            comment = s.lstrip("# ").strip() or None
         if s.startswith("title") and "=" in s:
-            title = s.split("=", 1)[1].strip().strip('"')
-            break
-    return title or comment or ""
+            return s.split("=", 1)[1].strip().strip('"')
+    paragraph = []
+    for line in lines:
+        s = line.strip()
+        text = s.lstrip("#").strip()
+        if not s.startswith("#") or not text:
+            if paragraph:
+                break
+            if not s.startswith("#") and s:
+                break
+            continue
+        paragraph.append(text)
+    return first_sentence(" ".join(paragraph))
+
+
+def first_sentence(text: str) -> str:
+    """``text`` up to and including the first ``.``, ``?`` or ``!`` followed by a space or the
+    end, outside parentheses (``1.8e-4`` and ``(e.g. this)`` do not end it); all of it if none."""
+    depth = 0
+    for k, ch in enumerate(text):
+        depth += (ch == "(") - (ch == ")")
+        if ch in ".?!" and depth <= 0 and (k + 1 == len(text) or text[k + 1] == " "):
+            return text[:k + 1]
+    return text
+
+
+def did_you_mean(name: str, kind: str | None = None) -> str:
+    """`` (did you mean looping_top?)`` when ``name`` is close to an example's name (of
+    ``kind``, or of either kind), by :func:`difflib.get_close_matches`; else ``""``."""
+    stem = name[:-5] if name.endswith(".toml") else name
+    if not stem or "/" in stem or os.sep in stem:
+        return ""
+    known = [n for k in ([kind] if kind in KINDS else KINDS) for n in names(k)]
+    close = difflib.get_close_matches(stem, known, n=1, cutoff=0.75)
+    return f" (did you mean {close[0]}?)" if close else ""
 
 
 def copy(name: str, dest: Path, kind: str | None = None) -> Path:

@@ -166,10 +166,7 @@ def check_paths(paths, inputs=()) -> None:
         if st is not None and not stat.S_ISREG(st.st_mode):
             raise SceneError(f"{name}: output: not a regular file")
         parent = target.parent
-        if not parent.exists():
-            raise SceneError(f"{name}: output: directory {str(parent)!r} does not exist")
-        if not parent.is_dir():
-            raise SceneError(f"{name}: output: {str(parent)!r} is not a directory")
+        check_parent(name)
         try:
             fd, probe = tempfile.mkstemp(dir=parent, prefix=f".{target.name}.", suffix=".probe")
         except OSError as err:
@@ -177,6 +174,34 @@ def check_paths(paths, inputs=()) -> None:
                              f"({_why(err)})") from None
         os.close(fd)
         os.unlink(probe)
+
+
+def check_parent(path) -> None:
+    """Raise SceneError when the folder that is to hold the output ``path`` is missing or is
+    not a folder.
+
+    One rule for every output flag, a file's (``-o``, ``--plot``, ``--fmu``, ``--to``) and a folder's
+    (``export --out``, ``bench -o``, ``generate --out``): derive makes the one thing it was
+    asked to write and no folder above it, as the shell's ``>`` and ``mkdir`` without ``-p``
+    do, so that a mistyped path fails at once instead of leaving a tree of new folders.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The output (a file or a folder to create).
+
+    Raises
+    ------
+    SceneError
+        ``<path>: output: directory '<parent>' does not exist`` or ``... '<parent>' is not a
+        directory`` (CLI exit 2).
+    """
+    name = os.fspath(path)
+    parent = _target(name.rstrip(os.sep) or name).parent
+    if not parent.exists():
+        raise SceneError(f"{name}: output: directory {str(parent)!r} does not exist")
+    if not parent.is_dir():
+        raise SceneError(f"{name}: output: {str(parent)!r} is not a directory")
 
 
 def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:

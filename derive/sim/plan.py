@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from derive.errors import IntegrationError
 from derive.methods import costs
 from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.runtime import catalogue
@@ -135,6 +136,12 @@ class Plan:
     near: "Plan | None" = field(default=None, repr=False, compare=False)
     #: :func:`derive.runtime.catalogue.generation` when the candidates' descriptions were made.
     generation: int = field(default_factory=catalogue.generation, repr=False, compare=False)
+
+    def __post_init__(self):
+        s = self.scene.simulate  # a run its step budget cannot cover is refused before it starts
+        why = costs.over_budget(self.method, s.t_end * fastest_rate(self.scene), s.rtol, s.atol, s.max_steps)
+        if why:
+            raise IntegrationError(f"{self.scene.source}: {why}")
 
     @property
     def scipy(self) -> str | None:

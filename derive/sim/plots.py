@@ -17,14 +17,20 @@ writes it as PNG, PDF or SVG. Panels, three to a row:
   sum, which stays at E(0);
 * ``balance`` (damped scenes): (E + W − E(0))/|E(0)| on a symlog axis — the trapezoid rule's
   error on the output grid plus the integration error;
-* ``momenta`` (symmetric, undamped): relative deviation of p_α and p_γ, conserved there;
-* ``top``: the path of ê₃ seen from above (orthographic projection on the x-y plane, upper
-  hemisphere solid, lower dashed), where loops, cusps and waves show;
+* ``momenta`` (undamped): relative deviation of what the motion conserves (p_α, p_γ, the
+  integrable case's integral);
+* ``top`` (symmetric heavy tops): the path of ê₃ seen from above (orthographic projection on
+  the x-y plane, upper hemisphere solid, lower dashed), where loops, cusps and waves show;
 * ``sphere``: the textbook figure, the path of ê₃ on the unit sphere in 3-D;
-* ``polhode`` (asymmetric bodies): the direction of the angular momentum in the body frame,
-  L̃/|L̃| with L̃ = (I1 ω̃₁, I2 ω̃₂, I3 ω̃₃), on the unit sphere: for a free body it runs along the
-  intersection with the energy ellipsoid, and a flip is the path going from one side of the
-  intermediate axis ê₂ to the other.
+* ``polhode`` (free and asymmetric bodies, instead of ``top``): the angular momentum in body
+  axes, L̃ = (I1 ω̃₁, I2 ω̃₂, I3 ω̃₃), on the momentum sphere |L̃| = const (for a free body; for a
+  heavy one its direction L̃/|L̃|): a free body's runs along the intersection with the energy
+  ellipsoid, and a flip is the path going from one side of the intermediate axis ê₂ to the other.
+
+A quantity that is exactly conserved (every sample equal to the first: p_γ of a formulation
+that holds it as a parameter) is said to be so in words; it is not drawn as a row of zeros. A
+run whose energy the physics does not conserve (damping, a user's torque) shows E(t) − E(0) as
+the work done, never as an error. The grid holds six panels, none empty.
 
 The title names the scene, the formulation, the method and its tolerances (or its step).
 Tick labels never use matplotlib's offset notation: `PlainFormatter` prints every tick in
@@ -117,6 +123,13 @@ def _symlog(ax, values, what: str, linthresh: float):
     top = float(np.max(values)) if values.size else 0.0
     ax.set_ylim(0.0, 10.0 ** math.ceil(math.log10(max(top, 10 * linthresh)) + 1e-9))
     ax.set_ylabel(what + "\n(symlog: linear from 0 to " + f"{linthresh:.3g})")
+
+
+def _say(ax, title: str, text: str):
+    """A panel of words: what an exactly conserved quantity would draw as a row of zeros."""
+    ax.set_axis_off()
+    ax.set_title(title, fontsize=10)
+    ax.text(0.5, 0.5, text, ha="center", va="center", fontsize=10, transform=ax.transAxes, wrap=True)
 
 
 def _zeros_note(values: np.ndarray) -> str:
@@ -312,14 +325,20 @@ def _symmetries(effect_names, symmetric, labels) -> dict:
 def _panel_energy_error(ax, res):
     found = _user_symmetries(res)
     if found is not None and not found["energy"]:
-        # A user's torque does work: E(t) is physics, not an error to plot against E(0).
-        ax.plot(res.t, np.asarray(res.energy, dtype=float), lw=1)
+        # A user's torque does work: E(t) − E(0) is that work, not an error.
+        E = np.asarray(res.energy, dtype=float)
+        ax.plot(res.t, E - E[0], lw=1)
         ax.set_xlabel("t [s]")
-        ax.set_ylabel("E = T + V [J]")
-        ax.set_title(f"energy (not conserved: {found['why']['energy']})", fontsize=10)
-        _plain(ax, "x")
+        ax.set_ylabel("E(t) − E(0) [J]")
+        ax.set_title(f"work done on the body, E(t) − E(0)\n(energy not conserved: {found['why']['energy']})",
+                     fontsize=10)
+        _plain(ax)
         return
-    rel, how, lin = _deviation(np.asarray(res.energy, dtype=float))
+    E = np.asarray(res.energy, dtype=float)
+    if np.all(E == E[0]):
+        return _say(ax, "energy error (no damping: E is conserved)",
+                    f"E is conserved exactly:\nE(t) = E(0) = {E[0]:.10g} J\nat every one of the {E.size} samples")
+    rel, how, lin = _deviation(E)
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E − E(0)| " + how.format("E"), lin)
     ax.set_xlabel("t [s]")
@@ -387,8 +406,16 @@ def _panel_momenta(ax, res):
         _plain(ax, "x")
         _legend_outside(ax)
         return
+    conserved = _conserved(res)
+    exact = [(sym, v) for sym, v in conserved if np.all(v == v[0])]
+    said = ", ".join(f"{sym} = {v[0]:.10g}" for sym, v in exact)
+    if len(exact) == len(conserved):
+        return _say(ax, "conserved: " + ", ".join(sym for sym, _ in exact),
+                    f"conserved exactly, every one of the {res.t.size} samples\nequal to the first:\n{said}")
     devs, lins, names = [], [], []
-    for sym, values in _conserved(res):
+    for sym, values in conserved:
+        if any(sym == e for e, _ in exact):
+            continue
         rel, how, lin = _deviation(values)
         _plot_deviation(ax, res.t, rel, label=f"|{sym} − {sym}(0)| {how.format(sym)}")
         devs.append(rel)
@@ -396,7 +423,8 @@ def _panel_momenta(ax, res):
         names.append(sym)
     _symlog(ax, np.concatenate(devs), "deviation", min(lins))
     ax.set_xlabel("t [s]")
-    ax.set_title("conserved: " + ", ".join(names) + _zeros_note(np.concatenate(devs)), fontsize=10)
+    ax.set_title("conserved: " + ", ".join(names) + _zeros_note(np.concatenate(devs))
+                 + (f"\nexactly constant (not drawn): {said}" if exact else ""), fontsize=10)
     _plain(ax, "x")
     _legend_outside(ax)
 
@@ -464,7 +492,9 @@ def _panel_sphere(ax, res):
     centre = P.mean(axis=0)
     centre /= max(np.linalg.norm(centre), 1e-300)
     spread = float(np.degrees(np.max(np.arccos(np.clip(P @ centre, -1.0, 1.0)))))
-    note = f", within {spread:.2g}° of one point:\nthe top view shows its shape" if spread < 2.0 else ""
+    note = f", within {spread:.2g}° of one point" if spread < 2.0 else ""
+    if note and "top" in panels(res):
+        note += ":\nthe top view shows its shape"
     ax.set_title(f"{which} ê₃ on the unit sphere\n(inertial frame{note})", fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(0.0, 1.0), fontsize=7, frameon=False)
 
@@ -474,8 +504,14 @@ def _panel_polhode(ax, res):
     L = getattr(res, "L", None)
     L = np.asarray(L) if L is not None else np.asarray(res.omega) * I
     _sphere(ax, ("ê₁", "ê₂", "ê₃"))
-    _path3d(ax, L / np.linalg.norm(L, axis=1, keepdims=True), "L̃/|L̃|")
-    ax.set_title("angular momentum direction, body frame\n(ê₂: intermediate axis)", fontsize=10)
+    size = np.linalg.norm(L, axis=1)
+    _path3d(ax, L / size[:, None], "L̃/|L̃|")
+    flip = "" if _is_symmetric(res) else "; ê₂: intermediate axis,\na flip crosses from one side of it to the other"
+    if _free(res):
+        ax.set_title(f"polhode: L̃ in body axes on the momentum sphere\n|L̃| = {np.median(size):.4g} kg m²/s"
+                     + flip, fontsize=10)
+    else:
+        ax.set_title("direction of L̃ in body axes" + flip, fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(0.0, 1.0), fontsize=7, frameon=False)
 
 
@@ -487,10 +523,15 @@ def panels(res) -> list[str]:
         names.append("balance")
     else:
         names.append("momenta")
-    names += ["top", "sphere"]
-    if not _is_symmetric(res):
-        names.append("polhode")
+    # a symmetric heavy top's loops and cusps show from above; a free or asymmetric body's
+    # motion is read in its own axes (the polhode)
+    names += ["top", "sphere"] if _is_symmetric(res) and not _free(res) else ["sphere", "polhode"]
     return names
+
+
+def _free(res) -> bool:
+    """No force field acts (damping aside): the angular momentum is conserved."""
+    return not any(name != "damping" for name in getattr(res, "effects", ()))
 
 
 _DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": None, "balance": _panel_balance,
@@ -504,11 +545,12 @@ def figure(res):
     as its label (``ax.get_label()``); twin axes are labelled ``<panel>:twin``."""
     plt, _ = _matplotlib()
     names = panels(res)
-    rows = -(-len(names) // COLUMNS)
-    fig = plt.figure(figsize=(6.2 * COLUMNS, 4.6 * rows + 0.8), layout="constrained")
+    columns = COLUMNS if len(names) % COLUMNS == 0 or len(names) % 2 else 2  # no empty cell
+    rows = -(-len(names) // columns)
+    fig = plt.figure(figsize=(6.2 * columns, 4.6 * rows + 0.8), layout="constrained")
     fig.get_layout_engine().set(w_pad=0.12, h_pad=0.12, wspace=0.06, hspace=0.06)
     for k, name in enumerate(names):
-        ax = fig.add_subplot(rows, COLUMNS, k + 1, projection="3d" if name in _3D else None, label=name)
+        ax = fig.add_subplot(rows, columns, k + 1, projection="3d" if name in _3D else None, label=name)
         before = set(fig.axes)
         if name == "energy":
             (_panel_energy_damped if _damping_c(res) != 0.0 else _panel_energy_error)(ax, res)

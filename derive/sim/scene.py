@@ -652,7 +652,7 @@ def read_toml(source: str, kind: str = "scene") -> dict:
         # at once and fstat refuses the FIFO (regular files ignore the flag).
         fd = os.open(source, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0))
     except FileNotFoundError as err:
-        raise fail("not found") from err
+        raise fail("not found" + examples.did_you_mean(source, kind)) from err
     except IsADirectoryError as err:
         raise fail(f"is a directory, not a {kind} file") from err
     except PermissionError as err:
