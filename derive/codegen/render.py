@@ -33,6 +33,9 @@ def data_dir(name: str) -> Path:
 
 
 TEMPLATES = data_dir("templates")
+#: The C runtime every model's solvers share (``derive.codegen.sources.runtime_sources``), one
+#: copy in ``generated/c`` beside the models.
+RUNTIME_FILES = ("derive_runtime.h", "derive_runtime.c", "derive_libm.h")
 GENERATED = data_dir("generated")
 
 

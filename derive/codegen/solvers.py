@@ -6,9 +6,10 @@ coefficients become correctly rounded C literals (:func:`lincomb`).
 """
 from __future__ import annotations
 
+import functools
 from fractions import Fraction
 
-from derive.codegen.render import c_double, render
+from derive.codegen.render import RUNTIME_FILES, c_double, render
 from derive.methods.registry import METHODS, Method
 from derive.methods.status import c_table
 from derive.symbolic.formulations import POLE_CLEARANCE
@@ -99,7 +100,8 @@ def _prod(it):
 
 def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
                    has_angles: bool = False, pole_clearance: float = POLE_CLEARANCE) -> dict[str, str]:
-    """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``.
+    """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``, with
+    the shared runtime they include (:func:`runtime_sources`).
 
     The C includes ``"<prefix>.h"`` (the model ABI: ``<prefix>_NY``, ``<prefix>_NP``,
     ``<prefix>_rhs``, ``<prefix>_jac``, ``<prefix>_init``, ``<prefix>_observables``, the name
@@ -135,4 +137,16 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
     return {
         f"{prefix}_solvers.h": render("c/solvers.h.j2", **ctx),
         f"{prefix}_solvers.c": render("c/solvers.c.j2", **ctx),
+        **runtime_sources(),
     }
+
+
+@functools.lru_cache(maxsize=1)
+def runtime_sources() -> dict[str, str]:
+    """The C runtime every model's solvers share, ``{file name: text}``: ``derive_runtime.h``
+    and ``derive_runtime.c`` (statistics, status codes, the interrupt hook, argument checks,
+    LU, the canonical angles) and ``derive_libm.h`` (the vectorisable sin, cos and acos ported
+    from fdlibm, with Sun's notice)."""
+    h, c, libm = RUNTIME_FILES
+    return {h: render("c/runtime.h.j2", status=c_table()), c: render("c/runtime.c.j2"),
+            libm: render("c/libm.h.j2")}

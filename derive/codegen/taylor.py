@@ -673,7 +673,8 @@ class _BlockPrinter(CPrinter):
     """C for the output map over a block of samples (``<prefix>outputs_block``), a loop that gcc
     can vectorise: the same text as :class:`CPrinter` prints, but
 
-    * a Piecewise term is a select on the bits of named values, ``<select>(pc, pv, pd)``, each
+    * a Piecewise term is a select on the bits of named values, ``derive_select(pc, pv, pd)``
+      (``derive_libm.h``), each
       branch's value a statement of its own, computed unconditionally, and each condition a
       mask (all ones where it holds): gcc does not if-convert ``cond ? 0 : x*y`` under the
       default ``-ftrapping-math`` (it will not speculate a product or a quotient, and sinks a
@@ -685,15 +686,14 @@ class _BlockPrinter(CPrinter):
       the guards' conditions) goes to ``once``, computed before the loop, the others to
       ``each``, in the loop: (type, name, C text), in the order printed (a statement's operands
       before it);
-    * ``acos`` is ``<prefix>acos_poly`` (the block's own, arithmetic alone: libm's does not
-      vectorise).
+    * ``acos`` is ``derive_acos_poly`` (``derive_libm.h``: arithmetic alone, fdlibm's; libm's
+      does not vectorise).
 
     The names end in an underscore, which no model symbol does."""
 
-    def __init__(self, fixed, prefix: str):
+    def __init__(self, fixed):
         super().__init__()
         self.fixed = set(fixed)
-        self.prefix = prefix
         self.uses_acos = False
         self.once: list = []
         self.each: list = []
@@ -711,12 +711,12 @@ class _BlockPrinter(CPrinter):
         for value, cond in reversed(pairs):
             c = self.statement("uint64_t", cond, f"0 - (uint64_t)({self._print(cond)})")
             v = self.statement("double", value, self._print(value))
-            out = f"{self.prefix}select({c}, {v}, {out})"
+            out = f"derive_select({c}, {v}, {out})"
         return out
 
     def _print_acos(self, expr):
         self.uses_acos = True
-        return f"{self.prefix}acos_poly({self._print(expr.args[0])})"
+        return f"derive_acos_poly({self._print(expr.args[0])})"
 
 
 def _pointwise(model, d: Decomposition) -> dict | None:
@@ -727,7 +727,7 @@ def _pointwise(model, d: Decomposition) -> dict | None:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
     uses_t = block.uses_time()
-    pr = _BlockPrinter(model.params, f"derive_{model.name}_taylor_")
+    pr = _BlockPrinter(model.params)
     temps = []
     for name, e in block.temps:
         text = pr.doprint(e)

@@ -8,11 +8,13 @@
  */
 #include <float.h>
 #include <math.h>
-#include <signal.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "euler_free_solvers.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if euler_free_NY != 3
 #error "euler_free.h: euler_free_NY differs from the size the solvers were rendered for (3)"
@@ -39,104 +41,6 @@ const int euler_free_dims[4] = { euler_free_NY, euler_free_NP, euler_free_NOBS, 
 #else
 const int euler_free_dims[4] = { euler_free_NY, euler_free_NP, 0, 0 };
 #endif
-
-/* ---------------------------------------------------------------------------------------- */
-/* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
- * set: by a SIGINT while euler_free_interrupt_guard(1) is in force (the caller's handler is
- * restored by euler_free_interrupt_guard(0)), or by euler_free_interrupt_request() from another thread. */
-
-static volatile sig_atomic_t derive_euler_free_stop = 0;
-static void (*derive_euler_free_old_handler)(int) = SIG_DFL;
-static int derive_euler_free_guarded = 0;
-
-static void derive_euler_free_on_sigint(int sig)
-{
-    (void)sig;
-    derive_euler_free_stop = 1;
-}
-
-int euler_free_interrupt_guard(int on)
-{
-    int was = derive_euler_free_stop;
-    if (on && !derive_euler_free_guarded) {
-        derive_euler_free_stop = 0;
-        derive_euler_free_old_handler = signal(SIGINT, derive_euler_free_on_sigint);
-        derive_euler_free_guarded = derive_euler_free_old_handler != SIG_ERR;
-    } else if (!on && derive_euler_free_guarded) {
-        signal(SIGINT, derive_euler_free_old_handler);
-        derive_euler_free_guarded = 0;
-    }
-    if (!on)
-        derive_euler_free_stop = 0;
-    return was;
-}
-
-void euler_free_interrupt_request(void)
-{
-    derive_euler_free_stop = 1;
-}
-
-/* ---------------------------------------------------------------------------------------- */
-/* Shared pieces: statistics, failures, argument checks.                                     */
-
-static void derive_euler_free_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_euler_free_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
-/* The model said the state is outside its domain: its non-zero return value is kept. */
-static int derive_euler_free_fail_rc(derive_stats *st, double t, int rc)
-{
-    st->rhs_code = rc;
-    return derive_euler_free_fail(st, DERIVE_DOMAIN, t, -1);
-}
-
-/* fmax and fmin as C99 defines them (a NaN argument gives the other one), taken inline: gcc
- * calls libm's for these (its maxsd and minsd differ for a NaN), several times a step (the
- * adaptive step control, the error norm; the measures' accumulators: measures.c.j2). */
-static inline double derive_euler_free_max(double a, double b)
-{
-    return a > b || b != b ? a : b;
-}
-
-static inline double derive_euler_free_min(double a, double b)
-{
-    return a < b || b != b ? a : b;
-}
-
-static int derive_euler_free_first_nonfinite(const double *v, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i)
-        if (!isfinite(v[i]))
-            return i;
-    return -1;
-}
-
-/* A batch stopped early (an interrupt, a refused start): the trajectories not run say why. */
-static int derive_euler_free_rest_with(long from, long n_batch, derive_stats *st, int status)
-{
-    long b;
-    for (b = from; b < n_batch; ++b) {
-        derive_euler_free_stats_init(st + b);
-        st[b].status = status;
-    }
-    return status;
-}
-
-static int derive_euler_free_rest_interrupted(long from, long n_batch, derive_stats *st)
-{
-    return derive_euler_free_rest_with(from, n_batch, st, DERIVE_INTERRUPTED);
-}
 
 /* Measures (derive.sweep): a build with -DDERIVE_MEASURES also includes euler_free_measures.c
  * (rendered at run time by derive.measures), which defines the hook declared here. While
@@ -192,34 +96,10 @@ int euler_free_outputs_at(long n_out, const double *t_out, const double *y, cons
     return DERIVE_OK;
 }
 
-/* Every output out[j*n_out + k] finite? DERIVE_OK, or DERIVE_NONFINITE_OUTPUT with st->t_fail
- * the first such sample's time (the earliest k, then the lowest j) and st->fail_index its
- * output's column. The pass over the arrays looks at the bits: a double is non-finite exactly
- * when its exponent field is all ones, and adding one to that field then carries into the
- * sign bit. Integer operations without branches, which gcc vectorises (the comparison
- * fabs(x) <= DBL_MAX it replaces was not, ~0.4 ns a value); the first bad entry is looked
- * for only when there is one. */
+/* Every output finite (derive_outputs_finite over the model's outputs). */
 int euler_free_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st)
 {
-    const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
-    uint64_t bits, carry = 0;
-    long i, k, n = n_out * euler_free_NOBS;
-    int j;
-    for (i = 0; i < n; ++i) {
-        memcpy(&bits, out + i, sizeof bits);
-        carry |= (bits & exponent) + one;
-    }
-    if (!(carry >> 63))
-        return DERIVE_OK;
-    for (k = 0; k < n_out; ++k)
-        for (j = 0; j < euler_free_NOBS; ++j)
-            if (!isfinite(out[j * n_out + k])) {
-                st->status = DERIVE_NONFINITE_OUTPUT;
-                st->t_fail = t_out[k];
-                st->fail_index = j;
-                return DERIVE_NONFINITE_OUTPUT;
-            }
-    return DERIVE_OK;
+    return derive_outputs_finite(n_out, euler_free_NOBS, t_out, out, st);
 }
 
 /* euler_free_outputs_at, then euler_free_outputs_finite (the arrays are written in full either way). */
@@ -233,43 +113,6 @@ int euler_free_outputs_checked(long n_out, const double *t_out, const double *y,
 }
 #endif
 
-/* n_out >= 1 and t_out finite and strictly increasing: increasing (a NaN compares false) from a
- * finite first to a finite last time, so every time between is finite. One pass without a
- * branch (gcc vectorises it): a simulate checks its times before every run. */
-static int derive_euler_free_times_ok(const double *t_out, long n_out)
-{
-    long k;
-    double up = 1.0;  /* (a double: the form of the loop gcc vectorises) */
-    if (!t_out || n_out < 1 || !isfinite(t_out[0]) || !isfinite(t_out[n_out - 1]))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        up = t_out[k] > t_out[k - 1] ? up : 0.0;
-    return up != 0.0;
-}
-#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6) || defined(DERIVE_WITH_DOP853_FIXED)
-
-/* Fixed-step drivers: an output interval dt is split into ceil(dt/h) equal steps (a ratio
- * within a relative 1e-10 above an integer counts as that integer, so that round-off in dt/h
- * does not add a step). */
-static long derive_euler_free_substeps(double dt, double h)
-{
-    double r = dt / h, n = ceil(r);
-    if (n > 1.0 && n - r > 1.0 - 1e-10 * r)
-        n -= 1.0;
-    return n < 1.0 ? 1 : (long)n;
-}
-
-static int derive_euler_free_fixed_args_ok(const double *t_out, long n_out, double h)
-{
-    long k;
-    if (!(h > 0.0) || !isfinite(h))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        if (!((t_out[k] - t_out[k - 1]) / h < 1e15))
-            return 0;
-    return 1;
-}
-#endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* Initial step size, Hairer's HINIT (dop853.f; Hairer, Nørsett & Wanner, Solving ODEs I,
@@ -306,62 +149,6 @@ static int derive_euler_free_initial_step(double t, const double *y, const doubl
 }
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6)
-
-/* LU factorisation with partial pivoting, in place, row-major n x n (rows swapped whole, as
- * LAPACK's getrf). Returns non-zero for a zero or non-finite pivot. */
-static int derive_euler_free_lu_factor(int n, double *a, int *piv)
-{
-    int i, j, k, r;
-    double amax, v, l, inv;
-    for (k = 0; k < n; ++k) {
-        r = k;
-        amax = fabs(a[k * n + k]);
-        for (i = k + 1; i < n; ++i) {
-            v = fabs(a[i * n + k]);
-            if (v > amax) {
-                amax = v;
-                r = i;
-            }
-        }
-        piv[k] = r;
-        if (!(amax > 0.0) || !isfinite(amax))
-            return 1;
-        if (r != k)
-            for (j = 0; j < n; ++j) {
-                v = a[k * n + j];
-                a[k * n + j] = a[r * n + j];
-                a[r * n + j] = v;
-            }
-        inv = 1.0 / a[k * n + k];
-        for (i = k + 1; i < n; ++i) {
-            l = a[i * n + k] *= inv;
-            if (l != 0.0)
-                for (j = k + 1; j < n; ++j)
-                    a[i * n + j] -= l * a[k * n + j];
-        }
-    }
-    return 0;
-}
-
-static void derive_euler_free_lu_solve(int n, const double *a, const int *piv, double *b)
-{
-    int i, j;
-    double v;
-    for (i = 0; i < n; ++i)
-        if (piv[i] != i) {
-            v = b[i];
-            b[i] = b[piv[i]];
-            b[piv[i]] = v;
-        }
-    for (i = 1; i < n; ++i)
-        for (j = 0; j < i; ++j)
-            b[i] -= a[i * n + j] * b[j];
-    for (i = n - 1; i >= 0; --i) {
-        for (j = i + 1; j < n; ++j)
-            b[i] -= a[i * n + j] * b[j];
-        b[i] /= a[i * n + i];
-    }
-}
 
 /* Block (i, j) of the (s*NY)^2 Newton matrix: M_ij += coef * J. */
 static void derive_euler_free_add_block(double *m, int n, int bi, int bj, double coef, const double *jac)
@@ -507,7 +294,7 @@ static double derive_euler_free_dop853_error(double h, const double *y, const do
     double e2 = 0.0, deno;
     int i;
     for (i = 0; i < euler_free_NY; ++i) {
-        sk = atol + rtol * derive_euler_free_max(fabs(y[i]), fabs(y_new[i]));
+        sk = atol + rtol * derive_max(fabs(y[i]), fabs(y_new[i]));
         e = (0.01312004499419488 * k[0][i] - 1.2251564463762044 * k[5][i] - 0.4957589496572502 * k[6][i] + 1.6643771824549864 * k[7][i] - 0.35032884874997366 * k[8][i] + 0.3341791187130175 * k[9][i] + 0.08192320648511571 * k[10][i] - 0.022355307863886294 * k[11][i]) / sk;
         e1 += e * e;
         e = (-0.18980075407240762 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] - 0.42268232132379197 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.022651792198360825 * k[11][i]) / sk;
@@ -585,17 +372,17 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
 
     if (!st)
         st = &local;
-    derive_euler_free_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_free_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0)
         || !(h0 >= 0.0) || !isfinite(h0) || max_steps < 1)
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
 
     t = t_out[0];
     for (i = 0; i < euler_free_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t, i);
+    if ((i = derive_first_nonfinite(y, euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (n_out == 1)
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
@@ -604,20 +391,20 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
     st->nfev++;
     rc = euler_free_rhs(t, y, p, k[0]);
     if (rc)
-        return derive_euler_free_fail_rc(st, t, rc);
-    if ((i = derive_euler_free_first_nonfinite(k[0], euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t, i);
+        return derive_fail_rc(st, t, rc);
+    if ((i = derive_first_nonfinite(k[0], euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (h0 > 0.0)
         h = fmin(h0, hmax);
     else if ((rc = derive_euler_free_initial_step(t, y, p, k[0], hmax, rtol, atol, 8, &h, st)))
-        return derive_euler_free_fail_rc(st, t, rc);
+        return derive_fail_rc(st, t, rc);
 
     k_out = 1;
     for (;;) {
         if (st->nstep >= max_steps)
-            return derive_euler_free_fail(st, DERIVE_MAX_STEPS, t, -1);
-        if (derive_euler_free_stop)
-            return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
+            return derive_fail(st, DERIVE_MAX_STEPS, t, -1);
+        if (derive_interrupted())
+            return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
         last = 0;
         if (t + 1.01 * h >= t_end) {
             h = t_end - t;
@@ -628,14 +415,14 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
             /* The step shrank to nothing while trial steps kept producing non-finite values:
              * report where (a finite-time blow-up, typically). */
             if (nonfinite_trial)
-                return derive_euler_free_fail(st, DERIVE_NONFINITE, st->t_fail, st->fail_index);
-            return derive_euler_free_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
+                return derive_fail(st, DERIVE_NONFINITE, st->t_fail, st->fail_index);
+            return derive_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
         }
         st->nstep++;
         rc = derive_euler_free_dop853_step(t, h, y, p, k, y_new, &t_rc, st);
         if (rc)
-            return derive_euler_free_fail_rc(st, t_rc, rc);
-        i = derive_euler_free_first_nonfinite(y_new, euler_free_NY);
+            return derive_fail_rc(st, t_rc, rc);
+        i = derive_first_nonfinite(y_new, euler_free_NY);
         err = i < 0 ? derive_euler_free_dop853_error(h, y, y_new, k, rtol, atol) : HUGE_VAL;
         if (!(err < HUGE_VAL)) {
             /* Non-finite trial (overflow or NaN): the step may just be too long. Shrink hard and
@@ -652,7 +439,7 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
         }
         fac11 = pow(err, expo);
         if (err > 1.0) {
-            h /= derive_euler_free_min(facc1, fac11 / safe);
+            h /= derive_min(facc1, fac11 / safe);
             rejected = 1;
             st->nreject++;
             continue;
@@ -661,23 +448,23 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
         /* Accepted. */
         st->naccept++;
         tn = last ? t_end : t + h;
-        hnew = h / derive_euler_free_max(facc2, derive_euler_free_min(facc1, fac11 / safe));
+        hnew = h / derive_max(facc2, derive_min(facc1, fac11 / safe));
         st->nfev++;
         rc = euler_free_rhs(tn, y_new, p, k[12]);
         if (rc)
-            return derive_euler_free_fail_rc(st, tn, rc);
-        if ((i = derive_euler_free_first_nonfinite(k[12], euler_free_NY)) >= 0)
-            return derive_euler_free_fail(st, DERIVE_NONFINITE, tn, i);
+            return derive_fail_rc(st, tn, rc);
+        if ((i = derive_first_nonfinite(k[12], euler_free_NY)) >= 0)
+            return derive_fail(st, DERIVE_NONFINITE, tn, i);
 
         dense = 0;
 #ifdef DERIVE_MEASURES
         if (derive_euler_free_measuring && (rc = euler_free_measure_step(t, h, y, y_new, p, k, cont, &dense, st, &t_rc)))
-            return derive_euler_free_fail_rc(st, t_rc, rc);
+            return derive_fail_rc(st, t_rc, rc);
 #endif
         if (k_out < n_out && t_out[k_out] <= tn) {
             /* Dense output at every requested time in (t, tn] (formed once per step). */
             if (!dense && (rc = derive_euler_free_dop853_dense(t, h, y, y_new, p, k, cont, st, &t_rc)))
-                return derive_euler_free_fail_rc(st, t_rc, rc);
+                return derive_fail_rc(st, t_rc, rc);
             while (k_out < n_out && t_out[k_out] <= tn) {
                 yo = y_out + k_out * euler_free_NY;
                 if (t_out[k_out] == tn) {
@@ -690,8 +477,8 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
                                 + x1 * (cont[3][i] + x * (cont[4][i] + x1 * (cont[5][i]
                                 + x * cont[6][i]))))));
                 }
-                if ((i = derive_euler_free_first_nonfinite(yo, euler_free_NY)) >= 0)
-                    return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                if ((i = derive_first_nonfinite(yo, euler_free_NY)) >= 0)
+                    return derive_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                 ++k_out;
             }
         }
@@ -704,7 +491,7 @@ int euler_free_solve_dop853(const double *y0, const double *p, const double *t_o
         if (hnew > hmax)
             hnew = hmax;
         if (rejected)
-            hnew = derive_euler_free_min(hnew, h);
+            hnew = derive_min(hnew, h);
         rejected = 0;
         nonfinite_trial = 0;
         st->fail_index = -1;
@@ -727,7 +514,7 @@ int euler_free_solve_batch_dop853(long n_batch, const double *y0s, const double 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -746,17 +533,17 @@ int euler_free_simulate_checked_dop853(const double *in, double *p, const double
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_free_init(in, p, y_work)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y_work, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_dop853(y_work, p, t_out, n_out, rtol, atol, h0, max_steps, y_work, st);
     if (rc == DERIVE_OK)
@@ -779,7 +566,7 @@ int euler_free_simulate_batch_dop853(long n_batch, const double *ins, double *ps
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -799,12 +586,12 @@ static int derive_euler_free_final_one_dop853(const double *in, double *p, const
     t2[0] = t_out[0];
     t2[1] = t_out[n_out - 1];
     if (euler_free_init(in, p, y2)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y2, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y2, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_dop853(y2, p, t2, m, rtol, atol, h0, max_steps, y2, st);
     memcpy(y, y2 + (m - 1) * euler_free_NY, sizeof(double) * euler_free_NY);
@@ -822,9 +609,9 @@ int euler_free_simulate_final_batch_dop853(long n_batch, const double *ins, doub
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        if (!derive_euler_free_times_ok(t_out, n_out)) {
-            derive_euler_free_stats_init(st + b);
-            rc = derive_euler_free_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        if (!derive_times_ok(t_out, n_out)) {
+            derive_stats_init(st + b);
+            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
         } else {
             rc = derive_euler_free_final_one_dop853(ins + b * euler_free_NIN, ps + b * euler_free_NP, t_out, n_out,
                     rtol, atol, h0, max_steps, pole_check, y_final + b * euler_free_NY, out_final + b * euler_free_NOBS, st + b);
@@ -832,7 +619,7 @@ int euler_free_simulate_final_batch_dop853(long n_batch, const double *ins, doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -905,35 +692,35 @@ int euler_free_solve_rk4(const double *y0, const double *p, const double *t_out,
 
     if (!st)
         st = &local;
-    derive_euler_free_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_free_times_ok(t_out, n_out) || !derive_euler_free_fixed_args_ok(t_out, n_out, h))
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h))
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_free_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
 
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_free_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-            if (derive_euler_free_stop)
-                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
             rc = euler_free_rhs(t, y, p, k[0]);
             if (rc)
-                return derive_euler_free_fail_rc(st, t, rc);
+                return derive_fail_rc(st, t, rc);
             rc = derive_euler_free_rk4_step(t, hs, y, p, k, y_new, &t_rc, st);
             if (rc)
-                return derive_euler_free_fail_rc(st, t_rc, rc);
-            if ((i = derive_euler_free_first_nonfinite(y_new, euler_free_NY)) >= 0) {
+                return derive_fail_rc(st, t_rc, rc);
+            if ((i = derive_first_nonfinite(y_new, euler_free_NY)) >= 0) {
                 st->h_fail = hs;
-                return derive_euler_free_fail(st, DERIVE_NONFINITE, t + hs, i);
+                return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
             }
             memcpy(y, y_new, sizeof y);
             st->naccept++;
@@ -957,7 +744,7 @@ int euler_free_solve_batch_rk4(long n_batch, const double *y0s, const double *ps
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -976,17 +763,17 @@ int euler_free_simulate_checked_rk4(const double *in, double *p, const double *t
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_free_init(in, p, y_work)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y_work, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_rk4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -1009,7 +796,7 @@ int euler_free_simulate_batch_rk4(long n_batch, const double *ins, double *ps,
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1073,7 +860,7 @@ static int derive_euler_free_gauss4_step(double t, double h, const double *y, co
         *t_code = t;
         return 3;
     }
-    if ((i = derive_euler_free_first_nonfinite(jac, euler_free_NY * euler_free_NY)) >= 0) {
+    if ((i = derive_first_nonfinite(jac, euler_free_NY * euler_free_NY)) >= 0) {
         *index = i / euler_free_NY;
         return 2;
     }
@@ -1085,7 +872,7 @@ static int derive_euler_free_gauss4_step(double t, double h, const double *y, co
     for (i = 0; i < 2 * euler_free_NY; ++i)
         mat[i * (2 * euler_free_NY) + i] += 1.0;
     st->nlu++;
-    if (derive_euler_free_lu_factor(2 * euler_free_NY, mat, piv))
+    if (derive_lu_factor(2 * euler_free_NY, mat, piv))
         return 1;
 
     for (it = 0; it < maxiter; ++it) {
@@ -1111,11 +898,11 @@ static int derive_euler_free_gauss4_step(double t, double h, const double *y, co
             r[0 * euler_free_NY + a] = h * (0.25 * f[0][a] - 0.03867513459481288 * f[1][a]) - z[0][a];
             r[1 * euler_free_NY + a] = h * (0.5386751345948129 * f[0][a] + 0.25 * f[1][a]) - z[1][a];
         }
-        if ((i = derive_euler_free_first_nonfinite(r, 2 * euler_free_NY)) >= 0) {
+        if ((i = derive_first_nonfinite(r, 2 * euler_free_NY)) >= 0) {
             *index = i % euler_free_NY;
             return 2;
         }
-        derive_euler_free_lu_solve(2 * euler_free_NY, mat, piv, r);
+        derive_lu_solve(2 * euler_free_NY, mat, piv, r);
         /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
          * whole state would let a large, growing coordinate (an unbounded angle) hide an
          * unconverged small one, and the step would stop being symplectic. */
@@ -1177,7 +964,7 @@ static int derive_euler_free_gauss4_advance(double ta, double tb, double *y, dou
             st->nstep++;
             res = derive_euler_free_gauss4_step(t, hq, y, p, z, dy, tol, maxiter, st, &code, &t_code, &index);
             if (res == 3)
-                return derive_euler_free_fail_rc(st, t_code, code);
+                return derive_fail_rc(st, t_code, code);
             if (res == 0) {
                 /* y += dy with compensated summation (Kahan): round-off does not drift. */
                 for (a = 0; a < euler_free_NY; ++a) {
@@ -1186,7 +973,7 @@ static int derive_euler_free_gauss4_advance(double ta, double tb, double *y, dou
                     ye[a] = (y[a] - yn) + d;
                     y[a] = yn;
                 }
-                if ((index = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
+                if ((index = derive_first_nonfinite(y, euler_free_NY)) >= 0)
                     res = 2;
             }
             if (res) {
@@ -1208,8 +995,8 @@ static int derive_euler_free_gauss4_advance(double ta, double tb, double *y, dou
     }
     st->h_fail = h_bad;
     if (bad == 2)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_bad, index);
-    return derive_euler_free_fail(st, DERIVE_NEWTON, t_bad, -1);
+        return derive_fail(st, DERIVE_NONFINITE, t_bad, index);
+    return derive_fail(st, DERIVE_NEWTON, t_bad, -1);
 }
 
 int euler_free_solve_gauss4(const double *y0, const double *p, const double *t_out, long n_out,
@@ -1222,25 +1009,25 @@ int euler_free_solve_gauss4(const double *y0, const double *p, const double *t_o
 
     if (!st)
         st = &local;
-    derive_euler_free_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_free_times_ok(t_out, n_out) || !derive_euler_free_fixed_args_ok(t_out, n_out, h)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h)
         || !(newton_tol > 0.0) || !isfinite(newton_tol) || newton_maxiter < 1)
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_free_NY; ++i) {
         y[i] = y_out[i] = y0[i];
         ye[i] = 0.0;
     }
-    if ((i = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     memset(z, 0, sizeof z);
 
     for (kk = 1; kk < n_out; ++kk) {
-        n = derive_euler_free_substeps(t_out[kk] - t_out[kk - 1], h);
+        n = derive_substeps(t_out[kk] - t_out[kk - 1], h);
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
-            if (derive_euler_free_stop)
-                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, ta, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_free_gauss4_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1265,7 +1052,7 @@ int euler_free_solve_batch_gauss4(long n_batch, const double *y0s, const double 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1284,17 +1071,17 @@ int euler_free_simulate_checked_gauss4(const double *in, double *p, const double
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_free_init(in, p, y_work)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y_work, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_gauss4(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1317,7 +1104,7 @@ int euler_free_simulate_batch_gauss4(long n_batch, const double *ins, double *ps
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1381,7 +1168,7 @@ static int derive_euler_free_gauss6_step(double t, double h, const double *y, co
         *t_code = t;
         return 3;
     }
-    if ((i = derive_euler_free_first_nonfinite(jac, euler_free_NY * euler_free_NY)) >= 0) {
+    if ((i = derive_first_nonfinite(jac, euler_free_NY * euler_free_NY)) >= 0) {
         *index = i / euler_free_NY;
         return 2;
     }
@@ -1398,7 +1185,7 @@ static int derive_euler_free_gauss6_step(double t, double h, const double *y, co
     for (i = 0; i < 3 * euler_free_NY; ++i)
         mat[i * (3 * euler_free_NY) + i] += 1.0;
     st->nlu++;
-    if (derive_euler_free_lu_factor(3 * euler_free_NY, mat, piv))
+    if (derive_lu_factor(3 * euler_free_NY, mat, piv))
         return 1;
 
     for (it = 0; it < maxiter; ++it) {
@@ -1434,11 +1221,11 @@ static int derive_euler_free_gauss6_step(double t, double h, const double *y, co
             r[1 * euler_free_NY + a] = h * (0.30026319498086457 * f[0][a] + 0.2222222222222222 * f[1][a] - 0.022485417203086815 * f[2][a]) - z[1][a];
             r[2 * euler_free_NY + a] = h * (0.26798833376246944 * f[0][a] + 0.48042111196938336 * f[1][a] + 0.1388888888888889 * f[2][a]) - z[2][a];
         }
-        if ((i = derive_euler_free_first_nonfinite(r, 3 * euler_free_NY)) >= 0) {
+        if ((i = derive_first_nonfinite(r, 3 * euler_free_NY)) >= 0) {
             *index = i % euler_free_NY;
             return 2;
         }
-        derive_euler_free_lu_solve(3 * euler_free_NY, mat, piv, r);
+        derive_lu_solve(3 * euler_free_NY, mat, piv, r);
         /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
          * whole state would let a large, growing coordinate (an unbounded angle) hide an
          * unconverged small one, and the step would stop being symplectic. */
@@ -1503,7 +1290,7 @@ static int derive_euler_free_gauss6_advance(double ta, double tb, double *y, dou
             st->nstep++;
             res = derive_euler_free_gauss6_step(t, hq, y, p, z, dy, tol, maxiter, st, &code, &t_code, &index);
             if (res == 3)
-                return derive_euler_free_fail_rc(st, t_code, code);
+                return derive_fail_rc(st, t_code, code);
             if (res == 0) {
                 /* y += dy with compensated summation (Kahan): round-off does not drift. */
                 for (a = 0; a < euler_free_NY; ++a) {
@@ -1512,7 +1299,7 @@ static int derive_euler_free_gauss6_advance(double ta, double tb, double *y, dou
                     ye[a] = (y[a] - yn) + d;
                     y[a] = yn;
                 }
-                if ((index = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
+                if ((index = derive_first_nonfinite(y, euler_free_NY)) >= 0)
                     res = 2;
             }
             if (res) {
@@ -1534,8 +1321,8 @@ static int derive_euler_free_gauss6_advance(double ta, double tb, double *y, dou
     }
     st->h_fail = h_bad;
     if (bad == 2)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_bad, index);
-    return derive_euler_free_fail(st, DERIVE_NEWTON, t_bad, -1);
+        return derive_fail(st, DERIVE_NONFINITE, t_bad, index);
+    return derive_fail(st, DERIVE_NEWTON, t_bad, -1);
 }
 
 int euler_free_solve_gauss6(const double *y0, const double *p, const double *t_out, long n_out,
@@ -1548,25 +1335,25 @@ int euler_free_solve_gauss6(const double *y0, const double *p, const double *t_o
 
     if (!st)
         st = &local;
-    derive_euler_free_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_free_times_ok(t_out, n_out) || !derive_euler_free_fixed_args_ok(t_out, n_out, h)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h)
         || !(newton_tol > 0.0) || !isfinite(newton_tol) || newton_maxiter < 1)
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_free_NY; ++i) {
         y[i] = y_out[i] = y0[i];
         ye[i] = 0.0;
     }
-    if ((i = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     memset(z, 0, sizeof z);
 
     for (kk = 1; kk < n_out; ++kk) {
-        n = derive_euler_free_substeps(t_out[kk] - t_out[kk - 1], h);
+        n = derive_substeps(t_out[kk] - t_out[kk - 1], h);
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
-            if (derive_euler_free_stop)
-                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, ta, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_free_gauss6_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1591,7 +1378,7 @@ int euler_free_solve_batch_gauss6(long n_batch, const double *y0s, const double 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1610,17 +1397,17 @@ int euler_free_simulate_checked_gauss6(const double *in, double *p, const double
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_free_init(in, p, y_work)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y_work, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_gauss6(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1643,7 +1430,7 @@ int euler_free_simulate_batch_gauss6(long n_batch, const double *ins, double *ps
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1667,35 +1454,35 @@ int euler_free_solve_dop853_fixed(const double *y0, const double *p, const doubl
 
     if (!st)
         st = &local;
-    derive_euler_free_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_free_times_ok(t_out, n_out) || !derive_euler_free_fixed_args_ok(t_out, n_out, h))
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h))
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_free_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_free_first_nonfinite(y, euler_free_NY)) >= 0)
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_free_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
 
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_free_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-            if (derive_euler_free_stop)
-                return derive_euler_free_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
             rc = euler_free_rhs(t, y, p, k[0]);
             if (rc)
-                return derive_euler_free_fail_rc(st, t, rc);
+                return derive_fail_rc(st, t, rc);
             rc = derive_euler_free_dop853_step(t, hs, y, p, k, y_new, &t_rc, st);
             if (rc)
-                return derive_euler_free_fail_rc(st, t_rc, rc);
-            if ((i = derive_euler_free_first_nonfinite(y_new, euler_free_NY)) >= 0) {
+                return derive_fail_rc(st, t_rc, rc);
+            if ((i = derive_first_nonfinite(y_new, euler_free_NY)) >= 0) {
                 st->h_fail = hs;
-                return derive_euler_free_fail(st, DERIVE_NONFINITE, t + hs, i);
+                return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
             }
             memcpy(y, y_new, sizeof y);
             st->naccept++;
@@ -1719,7 +1506,7 @@ int euler_free_solve_batch_dop853_fixed(long n_batch, const double *y0s, const d
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_free_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1738,17 +1525,17 @@ int euler_free_simulate_checked_dop853_fixed(const double *in, double *p, const 
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_free_times_ok(t_out, n_out)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_free_init(in, p, y_work)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_free_first_nonfinite(y_work, euler_free_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_free_NY));
     }
     if (pole_check && !euler_free_pole_clear(y_work, p, pole_check)) {
-        derive_euler_free_stats_init(st);
-        return derive_euler_free_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_free_solve_dop853_fixed(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -1771,7 +1558,7 @@ int euler_free_simulate_batch_dop853_fixed(long n_batch, const double *ins, doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_free_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }

@@ -14,6 +14,10 @@
 #include <string.h>
 
 #include "euler_poisson_asym_gravity_general_taylor.h"
+#include "derive_libm.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if euler_poisson_asym_gravity_general_NY != 9
 #error "euler_poisson_asym_gravity_general.h: euler_poisson_asym_gravity_general_NY differs from the size the Taylor solvers were rendered for (9)"
@@ -22,8 +26,7 @@
 #define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NODES 58
 
 /* Compiled in one translation unit after euler_poisson_asym_gravity_general_solvers.c (the kernel build), which then
- * defines DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE, the solvers poll the same interrupt flag once per step
- * (derive_euler_poisson_asym_gravity_general_stop) and get the whole-simulation drivers euler_poisson_asym_gravity_general_simulate[_checked|_batch]_<method>
+ * defines DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE, the solvers get the whole-simulation drivers euler_poisson_asym_gravity_general_simulate[_checked|_batch]_<method>
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -31,8 +34,8 @@
  * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
  */
 /* gcc's vectoriser off from here to the end of
- * derive_euler_poisson_asym_gravity_general_taylor_jet (see templates/c/novectorize.j2): with
- * it the jet of the reference top took 2.4 times as long (order 13: 440 ns, 183 ns). */
+ * derive_euler_poisson_asym_gravity_general_taylor_jet (see templates/c/novectorize.j2): its
+ * stores of single coefficients read back in pairs stall the jet. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
@@ -312,25 +315,12 @@ static void derive_euler_poisson_asym_gravity_general_taylor_horner_block(double
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
- * the columns: derive_euler_poisson_asym_gravity_general_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * the columns: derive_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
 static inline void derive_euler_poisson_asym_gravity_general_taylor_trig_block(int nb, double v[][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KO])
 {
     (void)nb;
     (void)v;
-}
-
-/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
- * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
- * or outside the loop). */
-static inline double derive_euler_poisson_asym_gravity_general_taylor_select(uint64_t m, double a, double b)
-{
-    uint64_t ia, ib;
-    memcpy(&ia, &a, sizeof ia);
-    memcpy(&ib, &b, sizeof ib);
-    ia = (ia & m) | (ib & ~m);
-    memcpy(&a, &ia, sizeof a);
-    return a;
 }
 
 /* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
@@ -342,7 +332,7 @@ static inline double derive_euler_poisson_asym_gravity_general_taylor_select(uin
  * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
  * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
  * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_euler_poisson_asym_gravity_general_taylor_acos_poly's. A sample's numbers do not depend on its block.
+ * derive_acos_poly's. A sample's numbers do not depend on its block.
  * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
  * block maps made the solver one function so large that its register allocation took the
  * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
@@ -435,50 +425,6 @@ int euler_poisson_asym_gravity_general_taylor_coefficients(double t, const doubl
     return 0;
 }
 
-/* ---------------------------------------------------------------------------------------- */
-/* Bookkeeping, the rules of euler_poisson_asym_gravity_general_solvers.c: in the kernel build its own functions.       */
-#ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
-#define derive_euler_poisson_asym_gravity_general_taylor_stats_init derive_euler_poisson_asym_gravity_general_stats_init
-#define derive_euler_poisson_asym_gravity_general_taylor_fail derive_euler_poisson_asym_gravity_general_fail
-#define derive_euler_poisson_asym_gravity_general_taylor_fail_rc derive_euler_poisson_asym_gravity_general_fail_rc
-#define derive_euler_poisson_asym_gravity_general_taylor_times_ok derive_euler_poisson_asym_gravity_general_times_ok
-#else
-
-static void derive_euler_poisson_asym_gravity_general_taylor_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_euler_poisson_asym_gravity_general_taylor_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
-/* The model said the state is outside its domain: its non-zero return value is kept. */
-static int derive_euler_poisson_asym_gravity_general_taylor_fail_rc(derive_stats *st, double t, int rc)
-{
-    st->rhs_code = rc;
-    return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_DOMAIN, t, -1);
-}
-
-/* n_out >= 1 and t_out finite and strictly increasing: increasing (a NaN compares false) from a
- * finite first to a finite last time, so every time between is finite. One pass without a
- * branch (gcc vectorises it): a simulate checks its times before every run. */
-static int derive_euler_poisson_asym_gravity_general_taylor_times_ok(const double *t_out, long n_out)
-{
-    long k;
-    double up = 1.0;  /* (a double: the form of the loop gcc vectorises) */
-    if (!t_out || n_out < 1 || !isfinite(t_out[0]) || !isfinite(t_out[n_out - 1]))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        up = t_out[k] > t_out[k - 1] ? up : 0.0;
-    return up != 0.0;
-}
-#endif
 
 #ifdef DERIVE_MEASURES
 /* The measures' hook (derive.sweep: euler_poisson_asym_gravity_general_measures.c, rendered at run time, defines it): while
@@ -573,8 +519,8 @@ static inline double derive_euler_poisson_asym_gravity_general_taylor_step(doubl
 /* The samples whose states are made and whose outputs are not yet: v[c][k] is column c of
  * sample k0 + k, k < n (as derive_euler_poisson_asym_gravity_general_taylor_horner_block leaves them). The output map runs over
  * DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KO of them at a time, many steps' samples (derive_euler_poisson_asym_gravity_general_taylor_outputs_flush): called per step
- * (a dozen samples), a quarter of its vectors were padding, and it set up its constants at
- * every step (the bench's 1000 tops, every output: the lanes' C call 37.95 -> 33.26 ms). */
+ * (a dozen samples), a quarter of its vectors would be padding, and it would set up its
+ * constants at every step. */
 typedef struct {
     double v[DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_NV][DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_KO];
     long k0;
@@ -676,7 +622,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_dense(double u[][EUL
             sa->n += kb;
         if (kb < nb) {
             *k_io = k_out;
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
+            return derive_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
         }
         k_out += nb;
     }
@@ -721,10 +667,10 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
 
     if (!st)
         st = &local;
-    derive_euler_poisson_asym_gravity_general_taylor_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_asym_gravity_general_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
-        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
 
     order = derive_euler_poisson_asym_gravity_general_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);
 
@@ -733,7 +679,7 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
         y[i] = y_out[i] = y0[i];
     for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
         if (!isfinite(y[i]))
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (n_out == 1)
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
@@ -741,14 +687,14 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
     k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
         if (st->nstep >= max_steps)
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
+            return derive_fail(st, DERIVE_MAX_STEPS, t, -1);
 #ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
-        if (derive_euler_poisson_asym_gravity_general_stop)
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_INTERRUPTED, t, -1);
+        if (derive_interrupted())
+            return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
         st->nfev++;
         if ((i = derive_euler_poisson_asym_gravity_general_taylor_jet(t, y, p, order, u)))
-            return derive_euler_poisson_asym_gravity_general_taylor_fail_rc(st, t, i);
+            return derive_fail_rc(st, t, i);
         /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
          * evaluated state, checked there): one sum over them, the culprit looked for only then. */
         chk = 0.0;
@@ -758,8 +704,8 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
             for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
                 for (j = 1; j <= order; ++j)
                     if (!isfinite(u[i][j]))
-                        return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, i);
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+                        return derive_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_fail(st, DERIVE_NONFINITE, t, -1);
         }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
@@ -836,7 +782,7 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
             h = t_end - t;
         if (h < 16.0 * DBL_EPSILON * fabs(t) || !(h >= DBL_MIN)) {
             st->h_fail = h;
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
+            return derive_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
         }
         tn = last ? t_end : t + h;
         st->nstep++;
@@ -848,11 +794,11 @@ derive_euler_poisson_asym_gravity_general_taylor_samples *sa, derive_stats *st)
             return i;
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_euler_poisson_asym_gravity_general_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * euler_poisson_asym_gravity_general_NY)) >= 0)
-                return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                return derive_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
             ++k_out;
         }
         if ((i = derive_euler_poisson_asym_gravity_general_taylor_eval(u, order, h, y)) >= 0)
-            return derive_euler_poisson_asym_gravity_general_taylor_fail(st, DERIVE_NONFINITE, tn, i);
+            return derive_fail(st, DERIVE_NONFINITE, tn, i);
 #ifdef DERIVE_MEASURES
         if (derive_euler_poisson_asym_gravity_general_measuring)
             euler_poisson_asym_gravity_general_measure_series(t, h, order, u, y, p);
@@ -903,7 +849,7 @@ int euler_poisson_asym_gravity_general_solve_batch_taylor(long n_batch, const do
             status = rc;
 #ifdef DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_asym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
 #endif
     }
     return status;
@@ -925,7 +871,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_solve_outputs_taylor
         return rc;
     if (n_out == 1)
         return euler_poisson_asym_gravity_general_outputs_checked(n_out, t_out, y_out, p, out, st);
-    derive_euler_poisson_asym_gravity_general_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    derive_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
     return euler_poisson_asym_gravity_general_outputs_finite(n_out, t_out, out, st);  /* (the bit test: ~3x a comparison's speed) */
 }
 
@@ -942,17 +888,17 @@ int euler_poisson_asym_gravity_general_simulate_checked_taylor(const double *in,
     derive_stats local;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_asym_gravity_general_taylor_times_ok(t_out, n_out)) {
-        derive_euler_poisson_asym_gravity_general_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_asym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_asym_gravity_general_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_gravity_general_first_nonfinite(y_work, euler_poisson_asym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_asym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_asym_gravity_general_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     return derive_euler_poisson_asym_gravity_general_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
 }
@@ -972,7 +918,7 @@ int euler_poisson_asym_gravity_general_simulate_batch_taylor(long n_batch, const
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -998,7 +944,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_final_outputs_taylor
         return rc;
     for (j = 0; j < euler_poisson_asym_gravity_general_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_euler_poisson_asym_gravity_general_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return euler_poisson_asym_gravity_general_outputs_finite(1, t2 + 1, out, st);
 }
 /* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
@@ -1016,12 +962,12 @@ static int derive_euler_poisson_asym_gravity_general_final_one_taylor(const doub
     t2[0] = t_out[0];
     t2[1] = t_out[n_out - 1];
     if (euler_poisson_asym_gravity_general_init(in, p, y2)) {
-        derive_euler_poisson_asym_gravity_general_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_asym_gravity_general_first_nonfinite(y2, euler_poisson_asym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, euler_poisson_asym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y2, p, pole_check)) {
-        derive_euler_poisson_asym_gravity_general_stats_init(st);
-        return derive_euler_poisson_asym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = derive_euler_poisson_asym_gravity_general_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
     return rc;
@@ -1036,9 +982,9 @@ int euler_poisson_asym_gravity_general_simulate_final_batch_taylor(long n_batch,
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        if (!derive_euler_poisson_asym_gravity_general_taylor_times_ok(t_out, n_out)) {
-            derive_euler_poisson_asym_gravity_general_stats_init(st + b);
-            rc = derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        if (!derive_times_ok(t_out, n_out)) {
+            derive_stats_init(st + b);
+            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
         } else {
             rc = derive_euler_poisson_asym_gravity_general_final_one_taylor(ins + b * euler_poisson_asym_gravity_general_NIN, ps + b * euler_poisson_asym_gravity_general_NP, t_out, n_out,
                     rtol, atol, max_steps, pole_check, y_final + b * euler_poisson_asym_gravity_general_NY, out_final + b * euler_poisson_asym_gravity_general_NOBS, st + b);
@@ -1046,7 +992,7 @@ int euler_poisson_asym_gravity_general_simulate_final_batch_taylor(long n_batch,
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1065,9 +1011,9 @@ const int euler_poisson_asym_gravity_general_taylor_has_lanes = 1;
  * [order][lane]; an elementwise node is a loop over the lanes, which gcc vectorises at -O3, and
  * the rules' sums (the Cauchy products, the quotient's, ...) and the step's Horner sums are
  * written on a vector of the W lanes (GNU C's vector extension: gcc and clang; the lanes are
- * compiled only there), one register for each sum: as loops over arrays of lanes gcc kept the
- * sums in memory and split them into halves it stored apart and loaded whole, and the 1000
- * tops of the bench took 7.4 instead of 5.9 ms (tests/test_taylor_lanes.py checks the bits).
+ * compiled only there), one register for each sum: as loops over arrays of lanes gcc keeps the
+ * sums in memory and splits them into halves it stores apart and loads whole
+ * (tests/test_taylor_lanes.py checks the bits).
  * W is the vector width (the library is built with -march=native). Each lane does the scalar
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
  * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
@@ -1332,7 +1278,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_last_taylor(do
     memcpy(y, y2 + euler_poisson_asym_gravity_general_NY, sizeof(double) * euler_poisson_asym_gravity_general_NY);
     for (j = 0; j < euler_poisson_asym_gravity_general_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_euler_poisson_asym_gravity_general_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return euler_poisson_asym_gravity_general_outputs_finite(1, &t_end, out, st);
 }
 
@@ -1364,9 +1310,8 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_load_taylor(in
  * series the dense output reads (9 nodes through the order), until the
  * buffer is full or the trajectory ends; then their samples are made in order, as the scalar
  * solver makes them (derive_euler_poisson_asym_gravity_general_taylor_dense). A trajectory's rows are so written in one go, each in turn:
- * made step by step beside the other lanes' (eight trajectories' 18 rows, 1.4 MB in flight),
- * they left the caches before the trajectory's angles were made canonical, and the lanes took
- * 66 ms where the scalar driver takes 49 (the bench's 1000 tops). */
+ * made step by step beside the other lanes' (eight trajectories' 18 rows in flight), they
+ * would leave the caches before the trajectory's angles are made canonical. */
 #define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LBUF 2048
 #define DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LREC(order) (6 + 9 * ((order) + 1))
 
@@ -1468,18 +1413,18 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_run_taylor(lon
                 sl = st + idx[l];
                 if (!(out && derive_euler_poisson_asym_gravity_general_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS, sl)))
-                    derive_euler_poisson_asym_gravity_general_taylor_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
+                    derive_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
                 run[l] = derive_euler_poisson_asym_gravity_general_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
                 left -= !run[l];
                 k_out[l] = kr[l] = sn[l] = 0;
             }
         if (left == 0)
             break;
-        if (derive_euler_poisson_asym_gravity_general_stop) {
+        if (derive_interrupted()) {
             for (l = 0; l < DERIVE_EULER_POISSON_ASYM_GRAVITY_GENERAL_TAYLOR_LANES; ++l)
                 if (run[l])
-                    derive_euler_poisson_asym_gravity_general_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
-            derive_euler_poisson_asym_gravity_general_rest_interrupted(next, n_batch, st);
+                    derive_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            derive_rest_with(next, n_batch, st, DERIVE_INTERRUPTED);
             return DERIVE_INTERRUPTED;
         }
         derive_euler_poisson_asym_gravity_general_taylor_jet_lanes(t, y, p, order, u, bad);
@@ -1580,18 +1525,18 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_run_taylor(lon
                     y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS, sl))
                 continue;  /* (a sample of the steps before failed first) */
             if (bad[l]) {
-                derive_euler_poisson_asym_gravity_general_taylor_fail_rc(sl, t[l], 1);
+                derive_fail_rc(sl, t[l], 1);
                 continue;
             }
             if (!isfinite(chk[l])) {
                 for (i = 0; i < euler_poisson_asym_gravity_general_NY && sl->status == DERIVE_OK; ++i)
                     for (j = 1; j <= order; ++j)
                         if (!isfinite(u[i][j][l])) {
-                            derive_euler_poisson_asym_gravity_general_taylor_fail(sl, DERIVE_NONFINITE, t[l], i);
+                            derive_fail(sl, DERIVE_NONFINITE, t[l], i);
                             break;
                         }
                 if (sl->status == DERIVE_OK)
-                    derive_euler_poisson_asym_gravity_general_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
+                    derive_fail(sl, DERIVE_NONFINITE, t[l], -1);
                 continue;
             }
             h = hs[l];
@@ -1603,7 +1548,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_run_taylor(lon
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS, sl))
                     continue;
                 sl->h_fail = h;
-                derive_euler_poisson_asym_gravity_general_taylor_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
+                derive_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
                 continue;
             }
             sl->nstep++;
@@ -1698,7 +1643,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_run_taylor(lon
                 y[i][l] = yn[i][l];
                 if (!isfinite(yn[i][l]) && !(out && derive_euler_poisson_asym_gravity_general_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                             y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS, sl))) {
-                    derive_euler_poisson_asym_gravity_general_taylor_fail(sl, DERIVE_NONFINITE, tn, i);
+                    derive_fail(sl, DERIVE_NONFINITE, tn, i);
                     break;
                 }
             }
@@ -1709,7 +1654,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_run_taylor(lon
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS, sl))
                     continue;
                 ob = out + idx[l] * n_out * euler_poisson_asym_gravity_general_NOBS;
-                derive_euler_poisson_asym_gravity_general_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
+                derive_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
                 euler_poisson_asym_gravity_general_outputs_finite(n_out, t_out, ob, sl);
                 continue;
             }
@@ -1738,17 +1683,17 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_starts_taylor(
     int i;
     for (b = 0; b < n_batch; ++b) {
         double *y = y0s + b * ystride, *p = ps + b * euler_poisson_asym_gravity_general_NP;
-        derive_euler_poisson_asym_gravity_general_stats_init(st + b);
+        derive_stats_init(st + b);
         if (euler_poisson_asym_gravity_general_init(ins + b * euler_poisson_asym_gravity_general_NIN, p, y))
-            derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_poisson_asym_gravity_general_first_nonfinite(y, euler_poisson_asym_gravity_general_NY));
+            derive_fail(st + b, DERIVE_NONFINITE, t0, derive_first_nonfinite(y, euler_poisson_asym_gravity_general_NY));
         else if (pole_check && !euler_poisson_asym_gravity_general_pole_clear(y, p, pole_check)) {
-            derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_RANGE, t0, -1);
-            return derive_euler_poisson_asym_gravity_general_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+            derive_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
         }
         else
             for (i = 0; i < euler_poisson_asym_gravity_general_NY; ++i)
                 if (!isfinite(y[i])) {
-                    derive_euler_poisson_asym_gravity_general_fail(st + b, DERIVE_NONFINITE, t0, i);
+                    derive_fail(st + b, DERIVE_NONFINITE, t0, i);
                     break;
                 }
     }
@@ -1772,7 +1717,7 @@ static int derive_euler_poisson_asym_gravity_general_taylor_lanes_status_taylor(
  * and says so per trajectory, as ever; a single output time too). */
 static int derive_euler_poisson_asym_gravity_general_taylor_lanes_args_ok_taylor(const double *t_out, long n_out, double rtol, double atol, long max_steps)
 {
-    return n_out >= 2 && derive_euler_poisson_asym_gravity_general_taylor_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
+    return n_out >= 2 && derive_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
         && isfinite(atol) && !(rtol == 0.0 && atol == 0.0) && max_steps >= 1;
 }
 

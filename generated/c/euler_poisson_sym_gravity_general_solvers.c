@@ -8,11 +8,13 @@
  */
 #include <float.h>
 #include <math.h>
-#include <signal.h>
 #include <stdint.h>
 #include <string.h>
 
 #include "euler_poisson_sym_gravity_general_solvers.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if euler_poisson_sym_gravity_general_NY != 9
 #error "euler_poisson_sym_gravity_general.h: euler_poisson_sym_gravity_general_NY differs from the size the solvers were rendered for (9)"
@@ -40,104 +42,6 @@ const int euler_poisson_sym_gravity_general_dims[4] = { euler_poisson_sym_gravit
 const int euler_poisson_sym_gravity_general_dims[4] = { euler_poisson_sym_gravity_general_NY, euler_poisson_sym_gravity_general_NP, 0, 0 };
 #endif
 
-/* ---------------------------------------------------------------------------------------- */
-/* Interrupts. The loops poll a flag once per step and stop with DERIVE_INTERRUPTED when it is
- * set: by a SIGINT while euler_poisson_sym_gravity_general_interrupt_guard(1) is in force (the caller's handler is
- * restored by euler_poisson_sym_gravity_general_interrupt_guard(0)), or by euler_poisson_sym_gravity_general_interrupt_request() from another thread. */
-
-static volatile sig_atomic_t derive_euler_poisson_sym_gravity_general_stop = 0;
-static void (*derive_euler_poisson_sym_gravity_general_old_handler)(int) = SIG_DFL;
-static int derive_euler_poisson_sym_gravity_general_guarded = 0;
-
-static void derive_euler_poisson_sym_gravity_general_on_sigint(int sig)
-{
-    (void)sig;
-    derive_euler_poisson_sym_gravity_general_stop = 1;
-}
-
-int euler_poisson_sym_gravity_general_interrupt_guard(int on)
-{
-    int was = derive_euler_poisson_sym_gravity_general_stop;
-    if (on && !derive_euler_poisson_sym_gravity_general_guarded) {
-        derive_euler_poisson_sym_gravity_general_stop = 0;
-        derive_euler_poisson_sym_gravity_general_old_handler = signal(SIGINT, derive_euler_poisson_sym_gravity_general_on_sigint);
-        derive_euler_poisson_sym_gravity_general_guarded = derive_euler_poisson_sym_gravity_general_old_handler != SIG_ERR;
-    } else if (!on && derive_euler_poisson_sym_gravity_general_guarded) {
-        signal(SIGINT, derive_euler_poisson_sym_gravity_general_old_handler);
-        derive_euler_poisson_sym_gravity_general_guarded = 0;
-    }
-    if (!on)
-        derive_euler_poisson_sym_gravity_general_stop = 0;
-    return was;
-}
-
-void euler_poisson_sym_gravity_general_interrupt_request(void)
-{
-    derive_euler_poisson_sym_gravity_general_stop = 1;
-}
-
-/* ---------------------------------------------------------------------------------------- */
-/* Shared pieces: statistics, failures, argument checks.                                     */
-
-static void derive_euler_poisson_sym_gravity_general_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_euler_poisson_sym_gravity_general_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
-/* The model said the state is outside its domain: its non-zero return value is kept. */
-static int derive_euler_poisson_sym_gravity_general_fail_rc(derive_stats *st, double t, int rc)
-{
-    st->rhs_code = rc;
-    return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_DOMAIN, t, -1);
-}
-
-/* fmax and fmin as C99 defines them (a NaN argument gives the other one), taken inline: gcc
- * calls libm's for these (its maxsd and minsd differ for a NaN), several times a step (the
- * adaptive step control, the error norm; the measures' accumulators: measures.c.j2). */
-static inline double derive_euler_poisson_sym_gravity_general_max(double a, double b)
-{
-    return a > b || b != b ? a : b;
-}
-
-static inline double derive_euler_poisson_sym_gravity_general_min(double a, double b)
-{
-    return a < b || b != b ? a : b;
-}
-
-static int derive_euler_poisson_sym_gravity_general_first_nonfinite(const double *v, int n)
-{
-    int i;
-    for (i = 0; i < n; ++i)
-        if (!isfinite(v[i]))
-            return i;
-    return -1;
-}
-
-/* A batch stopped early (an interrupt, a refused start): the trajectories not run say why. */
-static int derive_euler_poisson_sym_gravity_general_rest_with(long from, long n_batch, derive_stats *st, int status)
-{
-    long b;
-    for (b = from; b < n_batch; ++b) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st + b);
-        st[b].status = status;
-    }
-    return status;
-}
-
-static int derive_euler_poisson_sym_gravity_general_rest_interrupted(long from, long n_batch, derive_stats *st)
-{
-    return derive_euler_poisson_sym_gravity_general_rest_with(from, n_batch, st, DERIVE_INTERRUPTED);
-}
-
 /* Measures (derive.sweep): a build with -DDERIVE_MEASURES also includes euler_poisson_sym_gravity_general_measures.c
  * (rendered at run time by derive.measures), which defines the hook declared here. While
  * derive_euler_poisson_sym_gravity_general_measuring is set, the adaptive drivers hand every accepted step to the hook with its
@@ -154,87 +58,6 @@ static int euler_poisson_sym_gravity_general_measure_step(double t, double h, co
 #endif
 #endif
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_GENERAL_SIMULATE
-
-/* Would the rule below leave samples k0..k1-1 as they are (k0 > 0, sample k0 - 1 final)? Yes
- * when every one has beta in [+0, pi] (no reflection), |alpha_k - alpha_k-1| <= pi/2 (no whole
- * turn, target = gamma_k-1), |gamma_k - gamma_k-1| < pi, alpha_k, gamma_k != 0, all finite: then
- * each sample's tests read only unchanged values. Tested on sign bits (x >= 0 exactly when
- * x - y, y <= x, has a clear sign bit; pi_lo is the double below pi, |d| < pi exactly when
- * |d| <= pi_lo; |x| - 2^-1074 < 0 exactly when x = 0) and the non-finite values by the carry
- * of outputs_finite, all OR-ed together: one loop gcc vectorises (comparisons of doubles left
- * branches), where the rule's tests cost a branch each per sample. A no may be a false one
- * (beta = -0, a NaN): the rule then runs, as it always did. */
-static int derive_euler_poisson_sym_gravity_general_angles_usual(long k0, long k1, const double *a, const double *b, const double *c)
-{
-    const double pi = 3.14159265358979323846, pi_lo = 3.1415926535897927, tiny = 4.9406564584124654e-324;
-    const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
-    uint64_t acc = 0, x[6], f[3];
-    double d[6];
-    long k;
-    /* sample k0 - 1's angles finite (those of the samples after it are tested as sample k) */
-    memcpy(&f[0], &a[k0 - 1], sizeof f[0]);
-    memcpy(&f[1], &c[k0 - 1], sizeof f[1]);
-    acc |= ((f[0] & exponent) + one) | ((f[1] & exponent) + one);
-    for (k = k0; k < k1; ++k) {
-        d[0] = b[k];
-        d[1] = pi - b[k];
-        d[2] = 0.5 * pi - fabs(a[k] - a[k - 1]);
-        d[3] = pi_lo - fabs(c[k] - c[k - 1]);
-        d[4] = fabs(a[k]) - tiny;
-        d[5] = fabs(c[k]) - tiny;
-        memcpy(x, d, sizeof x);
-        memcpy(&f[0], &a[k], sizeof f[0]);
-        memcpy(&f[1], &b[k], sizeof f[1]);
-        memcpy(&f[2], &c[k], sizeof f[2]);
-        /* (written out: a loop over the six left x in memory in the lanes build, which peels
-         * no loop, and each load waited on the stores just made: 12 us a trajectory) */
-        acc |= x[0] | x[1] | x[2] | x[3] | x[4] | x[5];
-        acc |= ((f[0] & exponent) + one) | ((f[1] & exponent) + one) | ((f[2] & exponent) + one);
-    }
-    return !(acc >> 63);
-}
-
-/* Canonical z-y-z angles along a trajectory: beta in [0, pi] (a beta outside is reflected,
- * beta -> 2 pi - beta, alpha and gamma turned by pi: the same rotation); alpha and gamma
- * continuous, not wrapped: each is moved by whole turns to within pi of the previous sample. At
- * a pole passage alpha and gamma jump by about pi; the jump is taken so that the combination
- * that stays defined at the pole is continuous: alpha + gamma near beta = 0, alpha - gamma near
- * beta = pi. */
-static void derive_euler_poisson_sym_gravity_general_canonical_angles(long n, double *a, double *b, double *c)
-{
-    const double pi = 3.14159265358979323846, twopi = 2.0 * 3.14159265358979323846;
-    double bb, target;
-    long k, k0, k1;
-    for (k0 = 0; k0 < n; k0 = k1) {
-        k1 = n - k0 > 16 ? k0 + 16 : n;
-        if (k0 > 0 && derive_euler_poisson_sym_gravity_general_angles_usual(k0, k1, a, b, c))
-            continue;  /* (nothing below would change a value of these samples) */
-        for (k = k0; k < k1; ++k) {
-            /* The usual case skips the libm calls, with the same bits: fmod(x, 2 pi) is x on
-             * [0, 2 pi), and a whole-turn shift by nearbyint(d / 2 pi) with |d| < pi adds a
-             * zero, which changes nothing but the sign of a zero (hence the x != 0 condition). */
-            bb = b[k] >= 0.0 && b[k] < twopi ? b[k] : fmod(b[k], twopi);
-            if (bb < 0.0)
-                bb += twopi;
-            if (bb > pi) {
-                bb = twopi - bb;
-                a[k] += pi;
-                c[k] += pi;
-            }
-            b[k] = bb;
-            if (k == 0)
-                continue;
-            if (!(fabs(a[k - 1] - a[k]) < pi && a[k] != 0.0))
-                a[k] += twopi * nearbyint((a[k - 1] - a[k]) / twopi);
-            if (fabs(a[k] - a[k - 1]) > 0.5 * pi)
-                target = bb < 0.5 * pi ? a[k - 1] + c[k - 1] - a[k] : a[k] - (a[k - 1] - c[k - 1]);
-            else
-                target = c[k - 1];
-            if (!(fabs(target - c[k]) < pi && c[k] != 0.0))
-                c[k] += twopi * nearbyint((target - c[k]) / twopi);
-        }
-    }
-}
 
 /* Does the motion from state y keep clear of the poles, by the model's Routh check (euler_poisson_sym_gravity_general_checks:
  * f(u_c), f(-u_c), u0, p_alpha - p_gamma, p_alpha + p_gamma; see models.routh_checks)?
@@ -270,38 +93,14 @@ int euler_poisson_sym_gravity_general_outputs_at(long n_out, const double *t_out
     if (n_out < 0 || (n_out > 0 && (!t_out || !y || !out)))
         return DERIVE_BAD_ARGS;
     euler_poisson_sym_gravity_general_observables_at(n_out, t_out, y, p, out);
-    derive_euler_poisson_sym_gravity_general_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    derive_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
     return DERIVE_OK;
 }
 
-/* Every output out[j*n_out + k] finite? DERIVE_OK, or DERIVE_NONFINITE_OUTPUT with st->t_fail
- * the first such sample's time (the earliest k, then the lowest j) and st->fail_index its
- * output's column. The pass over the arrays looks at the bits: a double is non-finite exactly
- * when its exponent field is all ones, and adding one to that field then carries into the
- * sign bit. Integer operations without branches, which gcc vectorises (the comparison
- * fabs(x) <= DBL_MAX it replaces was not, ~0.4 ns a value); the first bad entry is looked
- * for only when there is one. */
+/* Every output finite (derive_outputs_finite over the model's outputs). */
 int euler_poisson_sym_gravity_general_outputs_finite(long n_out, const double *t_out, const double *out, derive_stats *st)
 {
-    const uint64_t exponent = UINT64_C(0x7ff0000000000000), one = UINT64_C(0x0010000000000000);
-    uint64_t bits, carry = 0;
-    long i, k, n = n_out * euler_poisson_sym_gravity_general_NOBS;
-    int j;
-    for (i = 0; i < n; ++i) {
-        memcpy(&bits, out + i, sizeof bits);
-        carry |= (bits & exponent) + one;
-    }
-    if (!(carry >> 63))
-        return DERIVE_OK;
-    for (k = 0; k < n_out; ++k)
-        for (j = 0; j < euler_poisson_sym_gravity_general_NOBS; ++j)
-            if (!isfinite(out[j * n_out + k])) {
-                st->status = DERIVE_NONFINITE_OUTPUT;
-                st->t_fail = t_out[k];
-                st->fail_index = j;
-                return DERIVE_NONFINITE_OUTPUT;
-            }
-    return DERIVE_OK;
+    return derive_outputs_finite(n_out, euler_poisson_sym_gravity_general_NOBS, t_out, out, st);
 }
 
 /* euler_poisson_sym_gravity_general_outputs_at, then euler_poisson_sym_gravity_general_outputs_finite (the arrays are written in full either way). */
@@ -315,43 +114,6 @@ int euler_poisson_sym_gravity_general_outputs_checked(long n_out, const double *
 }
 #endif
 
-/* n_out >= 1 and t_out finite and strictly increasing: increasing (a NaN compares false) from a
- * finite first to a finite last time, so every time between is finite. One pass without a
- * branch (gcc vectorises it): a simulate checks its times before every run. */
-static int derive_euler_poisson_sym_gravity_general_times_ok(const double *t_out, long n_out)
-{
-    long k;
-    double up = 1.0;  /* (a double: the form of the loop gcc vectorises) */
-    if (!t_out || n_out < 1 || !isfinite(t_out[0]) || !isfinite(t_out[n_out - 1]))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        up = t_out[k] > t_out[k - 1] ? up : 0.0;
-    return up != 0.0;
-}
-#if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_RK4) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6) || defined(DERIVE_WITH_DOP853_FIXED)
-
-/* Fixed-step drivers: an output interval dt is split into ceil(dt/h) equal steps (a ratio
- * within a relative 1e-10 above an integer counts as that integer, so that round-off in dt/h
- * does not add a step). */
-static long derive_euler_poisson_sym_gravity_general_substeps(double dt, double h)
-{
-    double r = dt / h, n = ceil(r);
-    if (n > 1.0 && n - r > 1.0 - 1e-10 * r)
-        n -= 1.0;
-    return n < 1.0 ? 1 : (long)n;
-}
-
-static int derive_euler_poisson_sym_gravity_general_fixed_args_ok(const double *t_out, long n_out, double h)
-{
-    long k;
-    if (!(h > 0.0) || !isfinite(h))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        if (!((t_out[k] - t_out[k - 1]) / h < 1e15))
-            return 0;
-    return 1;
-}
-#endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_DOP853)
 
 /* Initial step size, Hairer's HINIT (dop853.f; Hairer, Nørsett & Wanner, Solving ODEs I,
@@ -388,62 +150,6 @@ static int derive_euler_poisson_sym_gravity_general_initial_step(double t, const
 }
 #endif
 #if !defined(DERIVE_SELECT) || defined(DERIVE_WITH_GAUSS4) || defined(DERIVE_WITH_GAUSS6)
-
-/* LU factorisation with partial pivoting, in place, row-major n x n (rows swapped whole, as
- * LAPACK's getrf). Returns non-zero for a zero or non-finite pivot. */
-static int derive_euler_poisson_sym_gravity_general_lu_factor(int n, double *a, int *piv)
-{
-    int i, j, k, r;
-    double amax, v, l, inv;
-    for (k = 0; k < n; ++k) {
-        r = k;
-        amax = fabs(a[k * n + k]);
-        for (i = k + 1; i < n; ++i) {
-            v = fabs(a[i * n + k]);
-            if (v > amax) {
-                amax = v;
-                r = i;
-            }
-        }
-        piv[k] = r;
-        if (!(amax > 0.0) || !isfinite(amax))
-            return 1;
-        if (r != k)
-            for (j = 0; j < n; ++j) {
-                v = a[k * n + j];
-                a[k * n + j] = a[r * n + j];
-                a[r * n + j] = v;
-            }
-        inv = 1.0 / a[k * n + k];
-        for (i = k + 1; i < n; ++i) {
-            l = a[i * n + k] *= inv;
-            if (l != 0.0)
-                for (j = k + 1; j < n; ++j)
-                    a[i * n + j] -= l * a[k * n + j];
-        }
-    }
-    return 0;
-}
-
-static void derive_euler_poisson_sym_gravity_general_lu_solve(int n, const double *a, const int *piv, double *b)
-{
-    int i, j;
-    double v;
-    for (i = 0; i < n; ++i)
-        if (piv[i] != i) {
-            v = b[i];
-            b[i] = b[piv[i]];
-            b[piv[i]] = v;
-        }
-    for (i = 1; i < n; ++i)
-        for (j = 0; j < i; ++j)
-            b[i] -= a[i * n + j] * b[j];
-    for (i = n - 1; i >= 0; --i) {
-        for (j = i + 1; j < n; ++j)
-            b[i] -= a[i * n + j] * b[j];
-        b[i] /= a[i * n + i];
-    }
-}
 
 /* Block (i, j) of the (s*NY)^2 Newton matrix: M_ij += coef * J. */
 static void derive_euler_poisson_sym_gravity_general_add_block(double *m, int n, int bi, int bj, double coef, const double *jac)
@@ -589,7 +295,7 @@ static double derive_euler_poisson_sym_gravity_general_dop853_error(double h, co
     double e2 = 0.0, deno;
     int i;
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i) {
-        sk = atol + rtol * derive_euler_poisson_sym_gravity_general_max(fabs(y[i]), fabs(y_new[i]));
+        sk = atol + rtol * derive_max(fabs(y[i]), fabs(y_new[i]));
         e = (0.01312004499419488 * k[0][i] - 1.2251564463762044 * k[5][i] - 0.4957589496572502 * k[6][i] + 1.6643771824549864 * k[7][i] - 0.35032884874997366 * k[8][i] + 0.3341791187130175 * k[9][i] + 0.08192320648511571 * k[10][i] - 0.022355307863886294 * k[11][i]) / sk;
         e1 += e * e;
         e = (-0.18980075407240762 * k[0][i] + 4.450312892752409 * k[5][i] + 1.8915178993145003 * k[6][i] - 5.801203960010585 * k[7][i] - 0.42268232132379197 * k[8][i] - 0.1521609496625161 * k[9][i] + 0.20136540080403034 * k[10][i] + 0.022651792198360825 * k[11][i]) / sk;
@@ -667,17 +373,17 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_general_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0)
         || !(h0 >= 0.0) || !isfinite(h0) || max_steps < 1)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
 
     t = t_out[0];
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t, i);
+    if ((i = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (n_out == 1)
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
@@ -686,20 +392,20 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
     st->nfev++;
     rc = euler_poisson_sym_gravity_general_rhs(t, y, p, k[0]);
     if (rc)
-        return derive_euler_poisson_sym_gravity_general_fail_rc(st, t, rc);
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(k[0], euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t, i);
+        return derive_fail_rc(st, t, rc);
+    if ((i = derive_first_nonfinite(k[0], euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (h0 > 0.0)
         h = fmin(h0, hmax);
     else if ((rc = derive_euler_poisson_sym_gravity_general_initial_step(t, y, p, k[0], hmax, rtol, atol, 8, &h, st)))
-        return derive_euler_poisson_sym_gravity_general_fail_rc(st, t, rc);
+        return derive_fail_rc(st, t, rc);
 
     k_out = 1;
     for (;;) {
         if (st->nstep >= max_steps)
-            return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_MAX_STEPS, t, -1);
-        if (derive_euler_poisson_sym_gravity_general_stop)
-            return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_INTERRUPTED, t, -1);
+            return derive_fail(st, DERIVE_MAX_STEPS, t, -1);
+        if (derive_interrupted())
+            return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
         last = 0;
         if (t + 1.01 * h >= t_end) {
             h = t_end - t;
@@ -710,14 +416,14 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
             /* The step shrank to nothing while trial steps kept producing non-finite values:
              * report where (a finite-time blow-up, typically). */
             if (nonfinite_trial)
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, st->t_fail, st->fail_index);
-            return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
+                return derive_fail(st, DERIVE_NONFINITE, st->t_fail, st->fail_index);
+            return derive_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
         }
         st->nstep++;
         rc = derive_euler_poisson_sym_gravity_general_dop853_step(t, h, y, p, k, y_new, &t_rc, st);
         if (rc)
-            return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_rc, rc);
-        i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY);
+            return derive_fail_rc(st, t_rc, rc);
+        i = derive_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY);
         err = i < 0 ? derive_euler_poisson_sym_gravity_general_dop853_error(h, y, y_new, k, rtol, atol) : HUGE_VAL;
         if (!(err < HUGE_VAL)) {
             /* Non-finite trial (overflow or NaN): the step may just be too long. Shrink hard and
@@ -734,7 +440,7 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
         }
         fac11 = pow(err, expo);
         if (err > 1.0) {
-            h /= derive_euler_poisson_sym_gravity_general_min(facc1, fac11 / safe);
+            h /= derive_min(facc1, fac11 / safe);
             rejected = 1;
             st->nreject++;
             continue;
@@ -743,23 +449,23 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
         /* Accepted. */
         st->naccept++;
         tn = last ? t_end : t + h;
-        hnew = h / derive_euler_poisson_sym_gravity_general_max(facc2, derive_euler_poisson_sym_gravity_general_min(facc1, fac11 / safe));
+        hnew = h / derive_max(facc2, derive_min(facc1, fac11 / safe));
         st->nfev++;
         rc = euler_poisson_sym_gravity_general_rhs(tn, y_new, p, k[12]);
         if (rc)
-            return derive_euler_poisson_sym_gravity_general_fail_rc(st, tn, rc);
-        if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(k[12], euler_poisson_sym_gravity_general_NY)) >= 0)
-            return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, tn, i);
+            return derive_fail_rc(st, tn, rc);
+        if ((i = derive_first_nonfinite(k[12], euler_poisson_sym_gravity_general_NY)) >= 0)
+            return derive_fail(st, DERIVE_NONFINITE, tn, i);
 
         dense = 0;
 #ifdef DERIVE_MEASURES
         if (derive_euler_poisson_sym_gravity_general_measuring && (rc = euler_poisson_sym_gravity_general_measure_step(t, h, y, y_new, p, k, cont, &dense, st, &t_rc)))
-            return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_rc, rc);
+            return derive_fail_rc(st, t_rc, rc);
 #endif
         if (k_out < n_out && t_out[k_out] <= tn) {
             /* Dense output at every requested time in (t, tn] (formed once per step). */
             if (!dense && (rc = derive_euler_poisson_sym_gravity_general_dop853_dense(t, h, y, y_new, p, k, cont, st, &t_rc)))
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_rc, rc);
+                return derive_fail_rc(st, t_rc, rc);
             while (k_out < n_out && t_out[k_out] <= tn) {
                 yo = y_out + k_out * euler_poisson_sym_gravity_general_NY;
                 if (t_out[k_out] == tn) {
@@ -772,8 +478,8 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
                                 + x1 * (cont[3][i] + x * (cont[4][i] + x1 * (cont[5][i]
                                 + x * cont[6][i]))))));
                 }
-                if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(yo, euler_poisson_sym_gravity_general_NY)) >= 0)
-                    return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                if ((i = derive_first_nonfinite(yo, euler_poisson_sym_gravity_general_NY)) >= 0)
+                    return derive_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
                 ++k_out;
             }
         }
@@ -786,7 +492,7 @@ int euler_poisson_sym_gravity_general_solve_dop853(const double *y0, const doubl
         if (hnew > hmax)
             hnew = hmax;
         if (rejected)
-            hnew = derive_euler_poisson_sym_gravity_general_min(hnew, h);
+            hnew = derive_min(hnew, h);
         rejected = 0;
         nonfinite_trial = 0;
         st->fail_index = -1;
@@ -809,7 +515,7 @@ int euler_poisson_sym_gravity_general_solve_batch_dop853(long n_batch, const dou
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -828,17 +534,17 @@ int euler_poisson_sym_gravity_general_simulate_checked_dop853(const double *in, 
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_dop853(y_work, p, t_out, n_out, rtol, atol, h0, max_steps, y_work, st);
     if (rc == DERIVE_OK)
@@ -861,7 +567,7 @@ int euler_poisson_sym_gravity_general_simulate_batch_dop853(long n_batch, const 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -881,12 +587,12 @@ static int derive_euler_poisson_sym_gravity_general_final_one_dop853(const doubl
     t2[0] = t_out[0];
     t2[1] = t_out[n_out - 1];
     if (euler_poisson_sym_gravity_general_init(in, p, y2)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y2, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y2, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_dop853(y2, p, t2, m, rtol, atol, h0, max_steps, y2, st);
     memcpy(y, y2 + (m - 1) * euler_poisson_sym_gravity_general_NY, sizeof(double) * euler_poisson_sym_gravity_general_NY);
@@ -904,9 +610,9 @@ int euler_poisson_sym_gravity_general_simulate_final_batch_dop853(long n_batch, 
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        if (!derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-            derive_euler_poisson_sym_gravity_general_stats_init(st + b);
-            rc = derive_euler_poisson_sym_gravity_general_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        if (!derive_times_ok(t_out, n_out)) {
+            derive_stats_init(st + b);
+            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
         } else {
             rc = derive_euler_poisson_sym_gravity_general_final_one_dop853(ins + b * euler_poisson_sym_gravity_general_NIN, ps + b * euler_poisson_sym_gravity_general_NP, t_out, n_out,
                     rtol, atol, h0, max_steps, pole_check, y_final + b * euler_poisson_sym_gravity_general_NY, out_final + b * euler_poisson_sym_gravity_general_NOBS, st + b);
@@ -914,7 +620,7 @@ int euler_poisson_sym_gravity_general_simulate_final_batch_dop853(long n_batch, 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -987,35 +693,35 @@ int euler_poisson_sym_gravity_general_solve_rk4(const double *y0, const double *
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_general_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out) || !derive_euler_poisson_sym_gravity_general_fixed_args_ok(t_out, n_out, h))
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h))
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
 
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_poisson_sym_gravity_general_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-            if (derive_euler_poisson_sym_gravity_general_stop)
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
             rc = euler_poisson_sym_gravity_general_rhs(t, y, p, k[0]);
             if (rc)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t, rc);
+                return derive_fail_rc(st, t, rc);
             rc = derive_euler_poisson_sym_gravity_general_rk4_step(t, hs, y, p, k, y_new, &t_rc, st);
             if (rc)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_rc, rc);
-            if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY)) >= 0) {
+                return derive_fail_rc(st, t_rc, rc);
+            if ((i = derive_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY)) >= 0) {
                 st->h_fail = hs;
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t + hs, i);
+                return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
             }
             memcpy(y, y_new, sizeof y);
             st->naccept++;
@@ -1039,7 +745,7 @@ int euler_poisson_sym_gravity_general_solve_batch_rk4(long n_batch, const double
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1058,17 +764,17 @@ int euler_poisson_sym_gravity_general_simulate_checked_rk4(const double *in, dou
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_rk4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -1091,7 +797,7 @@ int euler_poisson_sym_gravity_general_simulate_batch_rk4(long n_batch, const dou
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1155,7 +861,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_step(double t, double
         *t_code = t;
         return 3;
     }
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(jac, euler_poisson_sym_gravity_general_NY * euler_poisson_sym_gravity_general_NY)) >= 0) {
+    if ((i = derive_first_nonfinite(jac, euler_poisson_sym_gravity_general_NY * euler_poisson_sym_gravity_general_NY)) >= 0) {
         *index = i / euler_poisson_sym_gravity_general_NY;
         return 2;
     }
@@ -1167,7 +873,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_step(double t, double
     for (i = 0; i < 2 * euler_poisson_sym_gravity_general_NY; ++i)
         mat[i * (2 * euler_poisson_sym_gravity_general_NY) + i] += 1.0;
     st->nlu++;
-    if (derive_euler_poisson_sym_gravity_general_lu_factor(2 * euler_poisson_sym_gravity_general_NY, mat, piv))
+    if (derive_lu_factor(2 * euler_poisson_sym_gravity_general_NY, mat, piv))
         return 1;
 
     for (it = 0; it < maxiter; ++it) {
@@ -1193,11 +899,11 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_step(double t, double
             r[0 * euler_poisson_sym_gravity_general_NY + a] = h * (0.25 * f[0][a] - 0.03867513459481288 * f[1][a]) - z[0][a];
             r[1 * euler_poisson_sym_gravity_general_NY + a] = h * (0.5386751345948129 * f[0][a] + 0.25 * f[1][a]) - z[1][a];
         }
-        if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(r, 2 * euler_poisson_sym_gravity_general_NY)) >= 0) {
+        if ((i = derive_first_nonfinite(r, 2 * euler_poisson_sym_gravity_general_NY)) >= 0) {
             *index = i % euler_poisson_sym_gravity_general_NY;
             return 2;
         }
-        derive_euler_poisson_sym_gravity_general_lu_solve(2 * euler_poisson_sym_gravity_general_NY, mat, piv, r);
+        derive_lu_solve(2 * euler_poisson_sym_gravity_general_NY, mat, piv, r);
         /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
          * whole state would let a large, growing coordinate (an unbounded angle) hide an
          * unconverged small one, and the step would stop being symplectic. */
@@ -1259,7 +965,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_advance(double ta, do
             st->nstep++;
             res = derive_euler_poisson_sym_gravity_general_gauss4_step(t, hq, y, p, z, dy, tol, maxiter, st, &code, &t_code, &index);
             if (res == 3)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_code, code);
+                return derive_fail_rc(st, t_code, code);
             if (res == 0) {
                 /* y += dy with compensated summation (Kahan): round-off does not drift. */
                 for (a = 0; a < euler_poisson_sym_gravity_general_NY; ++a) {
@@ -1268,7 +974,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_advance(double ta, do
                     ye[a] = (y[a] - yn) + d;
                     y[a] = yn;
                 }
-                if ((index = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+                if ((index = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
                     res = 2;
             }
             if (res) {
@@ -1290,8 +996,8 @@ static int derive_euler_poisson_sym_gravity_general_gauss4_advance(double ta, do
     }
     st->h_fail = h_bad;
     if (bad == 2)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_bad, index);
-    return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NEWTON, t_bad, -1);
+        return derive_fail(st, DERIVE_NONFINITE, t_bad, index);
+    return derive_fail(st, DERIVE_NEWTON, t_bad, -1);
 }
 
 int euler_poisson_sym_gravity_general_solve_gauss4(const double *y0, const double *p, const double *t_out, long n_out,
@@ -1304,25 +1010,25 @@ int euler_poisson_sym_gravity_general_solve_gauss4(const double *y0, const doubl
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_general_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out) || !derive_euler_poisson_sym_gravity_general_fixed_args_ok(t_out, n_out, h)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h)
         || !(newton_tol > 0.0) || !isfinite(newton_tol) || newton_maxiter < 1)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i) {
         y[i] = y_out[i] = y0[i];
         ye[i] = 0.0;
     }
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     memset(z, 0, sizeof z);
 
     for (kk = 1; kk < n_out; ++kk) {
-        n = derive_euler_poisson_sym_gravity_general_substeps(t_out[kk] - t_out[kk - 1], h);
+        n = derive_substeps(t_out[kk] - t_out[kk - 1], h);
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
-            if (derive_euler_poisson_sym_gravity_general_stop)
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_INTERRUPTED, ta, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_poisson_sym_gravity_general_gauss4_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1347,7 +1053,7 @@ int euler_poisson_sym_gravity_general_solve_batch_gauss4(long n_batch, const dou
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1366,17 +1072,17 @@ int euler_poisson_sym_gravity_general_simulate_checked_gauss4(const double *in, 
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_gauss4(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1399,7 +1105,7 @@ int euler_poisson_sym_gravity_general_simulate_batch_gauss4(long n_batch, const 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1463,7 +1169,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_step(double t, double
         *t_code = t;
         return 3;
     }
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(jac, euler_poisson_sym_gravity_general_NY * euler_poisson_sym_gravity_general_NY)) >= 0) {
+    if ((i = derive_first_nonfinite(jac, euler_poisson_sym_gravity_general_NY * euler_poisson_sym_gravity_general_NY)) >= 0) {
         *index = i / euler_poisson_sym_gravity_general_NY;
         return 2;
     }
@@ -1480,7 +1186,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_step(double t, double
     for (i = 0; i < 3 * euler_poisson_sym_gravity_general_NY; ++i)
         mat[i * (3 * euler_poisson_sym_gravity_general_NY) + i] += 1.0;
     st->nlu++;
-    if (derive_euler_poisson_sym_gravity_general_lu_factor(3 * euler_poisson_sym_gravity_general_NY, mat, piv))
+    if (derive_lu_factor(3 * euler_poisson_sym_gravity_general_NY, mat, piv))
         return 1;
 
     for (it = 0; it < maxiter; ++it) {
@@ -1516,11 +1222,11 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_step(double t, double
             r[1 * euler_poisson_sym_gravity_general_NY + a] = h * (0.30026319498086457 * f[0][a] + 0.2222222222222222 * f[1][a] - 0.022485417203086815 * f[2][a]) - z[1][a];
             r[2 * euler_poisson_sym_gravity_general_NY + a] = h * (0.26798833376246944 * f[0][a] + 0.48042111196938336 * f[1][a] + 0.1388888888888889 * f[2][a]) - z[2][a];
         }
-        if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(r, 3 * euler_poisson_sym_gravity_general_NY)) >= 0) {
+        if ((i = derive_first_nonfinite(r, 3 * euler_poisson_sym_gravity_general_NY)) >= 0) {
             *index = i % euler_poisson_sym_gravity_general_NY;
             return 2;
         }
-        derive_euler_poisson_sym_gravity_general_lu_solve(3 * euler_poisson_sym_gravity_general_NY, mat, piv, r);
+        derive_lu_solve(3 * euler_poisson_sym_gravity_general_NY, mat, piv, r);
         /* Each component against its own round-off scale |y_a| + max_i |Z_ia|: a norm over the
          * whole state would let a large, growing coordinate (an unbounded angle) hide an
          * unconverged small one, and the step would stop being symplectic. */
@@ -1585,7 +1291,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_advance(double ta, do
             st->nstep++;
             res = derive_euler_poisson_sym_gravity_general_gauss6_step(t, hq, y, p, z, dy, tol, maxiter, st, &code, &t_code, &index);
             if (res == 3)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_code, code);
+                return derive_fail_rc(st, t_code, code);
             if (res == 0) {
                 /* y += dy with compensated summation (Kahan): round-off does not drift. */
                 for (a = 0; a < euler_poisson_sym_gravity_general_NY; ++a) {
@@ -1594,7 +1300,7 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_advance(double ta, do
                     ye[a] = (y[a] - yn) + d;
                     y[a] = yn;
                 }
-                if ((index = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+                if ((index = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
                     res = 2;
             }
             if (res) {
@@ -1616,8 +1322,8 @@ static int derive_euler_poisson_sym_gravity_general_gauss6_advance(double ta, do
     }
     st->h_fail = h_bad;
     if (bad == 2)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_bad, index);
-    return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NEWTON, t_bad, -1);
+        return derive_fail(st, DERIVE_NONFINITE, t_bad, index);
+    return derive_fail(st, DERIVE_NEWTON, t_bad, -1);
 }
 
 int euler_poisson_sym_gravity_general_solve_gauss6(const double *y0, const double *p, const double *t_out, long n_out,
@@ -1630,25 +1336,25 @@ int euler_poisson_sym_gravity_general_solve_gauss6(const double *y0, const doubl
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_general_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out) || !derive_euler_poisson_sym_gravity_general_fixed_args_ok(t_out, n_out, h)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h)
         || !(newton_tol > 0.0) || !isfinite(newton_tol) || newton_maxiter < 1)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i) {
         y[i] = y_out[i] = y0[i];
         ye[i] = 0.0;
     }
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     memset(z, 0, sizeof z);
 
     for (kk = 1; kk < n_out; ++kk) {
-        n = derive_euler_poisson_sym_gravity_general_substeps(t_out[kk] - t_out[kk - 1], h);
+        n = derive_substeps(t_out[kk] - t_out[kk - 1], h);
         hh = (t_out[kk] - t_out[kk - 1]) / n;
         for (j = 0; j < n; ++j) {
             ta = t_out[kk - 1] + j * hh;
-            if (derive_euler_poisson_sym_gravity_general_stop)
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_INTERRUPTED, ta, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, ta, -1);
             tb = j == n - 1 ? t_out[kk] : t_out[kk - 1] + (j + 1) * hh;
             rc = derive_euler_poisson_sym_gravity_general_gauss6_advance(ta, tb, y, ye, p, z, &h_prev, newton_tol, newton_maxiter, st);
             if (rc)
@@ -1673,7 +1379,7 @@ int euler_poisson_sym_gravity_general_solve_batch_gauss6(long n_batch, const dou
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1692,17 +1398,17 @@ int euler_poisson_sym_gravity_general_simulate_checked_gauss6(const double *in, 
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_gauss6(y_work, p, t_out, n_out, h, newton_tol, newton_maxiter, y_work, st);
     if (rc == DERIVE_OK)
@@ -1725,7 +1431,7 @@ int euler_poisson_sym_gravity_general_simulate_batch_gauss6(long n_batch, const 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1749,35 +1455,35 @@ int euler_poisson_sym_gravity_general_solve_dop853_fixed(const double *y0, const
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_general_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out) || !derive_euler_poisson_sym_gravity_general_fixed_args_ok(t_out, n_out, h))
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !derive_fixed_args_ok(t_out, n_out, h))
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < euler_poisson_sym_gravity_general_NY; ++i)
         y[i] = y_out[i] = y0[i];
-    if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], i);
+    if ((i = derive_first_nonfinite(y, euler_poisson_sym_gravity_general_NY)) >= 0)
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
 
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_poisson_sym_gravity_general_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
-            if (derive_euler_poisson_sym_gravity_general_stop)
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
             st->nfev++;
             rc = euler_poisson_sym_gravity_general_rhs(t, y, p, k[0]);
             if (rc)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t, rc);
+                return derive_fail_rc(st, t, rc);
             rc = derive_euler_poisson_sym_gravity_general_dop853_step(t, hs, y, p, k, y_new, &t_rc, st);
             if (rc)
-                return derive_euler_poisson_sym_gravity_general_fail_rc(st, t_rc, rc);
-            if ((i = derive_euler_poisson_sym_gravity_general_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY)) >= 0) {
+                return derive_fail_rc(st, t_rc, rc);
+            if ((i = derive_first_nonfinite(y_new, euler_poisson_sym_gravity_general_NY)) >= 0) {
                 st->h_fail = hs;
-                return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t + hs, i);
+                return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
             }
             memcpy(y, y_new, sizeof y);
             st->naccept++;
@@ -1801,7 +1507,7 @@ int euler_poisson_sym_gravity_general_solve_batch_dop853_fixed(long n_batch, con
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_general_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
     }
     return status;
 }
@@ -1820,17 +1526,17 @@ int euler_poisson_sym_gravity_general_simulate_checked_dop853_fixed(const double
     int rc;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_general_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_general_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_general_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_general_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_general_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_general_stats_init(st);
-        return derive_euler_poisson_sym_gravity_general_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_general_solve_dop853_fixed(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -1853,7 +1559,7 @@ int euler_poisson_sym_gravity_general_simulate_batch_dop853_fixed(long n_batch, 
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_general_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }

@@ -14,6 +14,10 @@
 #include <string.h>
 
 #include "rigid_body_taylor.h"
+#include "derive_libm.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if rigid_body_NY != 7
 #error "rigid_body.h: rigid_body_NY differs from the size the Taylor solvers were rendered for (7)"
@@ -22,8 +26,7 @@
 #define DERIVE_RIGID_BODY_TAYLOR_NODES 89
 
 /* Compiled in one translation unit after rigid_body_solvers.c (the kernel build), which then
- * defines DERIVE_RIGID_BODY_SIMULATE, the solvers poll the same interrupt flag once per step
- * (derive_rigid_body_stop) and get the whole-simulation drivers rigid_body_simulate[_checked|_batch]_<method>
+ * defines DERIVE_RIGID_BODY_SIMULATE, the solvers get the whole-simulation drivers rigid_body_simulate[_checked|_batch]_<method>
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -31,8 +34,8 @@
  * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
  */
 /* gcc's vectoriser off from here to the end of derive_rigid_body_taylor_jet (see
- * templates/c/novectorize.j2): with it the jet of the reference top took 2.4 times as long
- * (order 13: 440 ns, 183 ns). */
+ * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
+ * jet. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
@@ -353,25 +356,12 @@ static void derive_rigid_body_taylor_horner_block(double w[][DERIVE_RIGID_BODY_T
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
- * the columns: derive_rigid_body_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * the columns: derive_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
 static inline void derive_rigid_body_taylor_trig_block(int nb, double v[][DERIVE_RIGID_BODY_TAYLOR_KO])
 {
     (void)nb;
     (void)v;
-}
-
-/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
- * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
- * or outside the loop). */
-static inline double derive_rigid_body_taylor_select(uint64_t m, double a, double b)
-{
-    uint64_t ia, ib;
-    memcpy(&ia, &a, sizeof ia);
-    memcpy(&ib, &b, sizeof ib);
-    ia = (ia & m) | (ib & ~m);
-    memcpy(&a, &ia, sizeof a);
-    return a;
 }
 
 /* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
@@ -383,7 +373,7 @@ static inline double derive_rigid_body_taylor_select(uint64_t m, double a, doubl
  * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
  * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
  * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_rigid_body_taylor_acos_poly's. A sample's numbers do not depend on its block.
+ * derive_acos_poly's. A sample's numbers do not depend on its block.
  * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
  * block maps made the solver one function so large that its register allocation took the
  * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
@@ -491,50 +481,6 @@ int rigid_body_taylor_coefficients(double t, const double *y, const double *p, i
     return 0;
 }
 
-/* ---------------------------------------------------------------------------------------- */
-/* Bookkeeping, the rules of rigid_body_solvers.c: in the kernel build its own functions.       */
-#ifdef DERIVE_RIGID_BODY_SIMULATE
-#define derive_rigid_body_taylor_stats_init derive_rigid_body_stats_init
-#define derive_rigid_body_taylor_fail derive_rigid_body_fail
-#define derive_rigid_body_taylor_fail_rc derive_rigid_body_fail_rc
-#define derive_rigid_body_taylor_times_ok derive_rigid_body_times_ok
-#else
-
-static void derive_rigid_body_taylor_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_rigid_body_taylor_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
-/* The model said the state is outside its domain: its non-zero return value is kept. */
-static int derive_rigid_body_taylor_fail_rc(derive_stats *st, double t, int rc)
-{
-    st->rhs_code = rc;
-    return derive_rigid_body_taylor_fail(st, DERIVE_DOMAIN, t, -1);
-}
-
-/* n_out >= 1 and t_out finite and strictly increasing: increasing (a NaN compares false) from a
- * finite first to a finite last time, so every time between is finite. One pass without a
- * branch (gcc vectorises it): a simulate checks its times before every run. */
-static int derive_rigid_body_taylor_times_ok(const double *t_out, long n_out)
-{
-    long k;
-    double up = 1.0;  /* (a double: the form of the loop gcc vectorises) */
-    if (!t_out || n_out < 1 || !isfinite(t_out[0]) || !isfinite(t_out[n_out - 1]))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        up = t_out[k] > t_out[k - 1] ? up : 0.0;
-    return up != 0.0;
-}
-#endif
 
 #ifdef DERIVE_MEASURES
 /* The measures' hook (derive.sweep: rigid_body_measures.c, rendered at run time, defines it): while
@@ -629,8 +575,8 @@ static inline double derive_rigid_body_taylor_step(double n1, double n2, int q1,
 /* The samples whose states are made and whose outputs are not yet: v[c][k] is column c of
  * sample k0 + k, k < n (as derive_rigid_body_taylor_horner_block leaves them). The output map runs over
  * DERIVE_RIGID_BODY_TAYLOR_KO of them at a time, many steps' samples (derive_rigid_body_taylor_outputs_flush): called per step
- * (a dozen samples), a quarter of its vectors were padding, and it set up its constants at
- * every step (the bench's 1000 tops, every output: the lanes' C call 37.95 -> 33.26 ms). */
+ * (a dozen samples), a quarter of its vectors would be padding, and it would set up its
+ * constants at every step. */
 typedef struct {
     double v[DERIVE_RIGID_BODY_TAYLOR_NV][DERIVE_RIGID_BODY_TAYLOR_KO];
     long k0;
@@ -732,7 +678,7 @@ static int derive_rigid_body_taylor_dense(double u[][RIGID_BODY_TAYLOR_MAX_ORDER
             sa->n += kb;
         if (kb < nb) {
             *k_io = k_out;
-            return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
+            return derive_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
         }
         k_out += nb;
     }
@@ -777,10 +723,10 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
 
     if (!st)
         st = &local;
-    derive_rigid_body_taylor_stats_init(st);
-    if (!y0 || !y_out || !derive_rigid_body_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
+    derive_stats_init(st);
+    if (!y0 || !y_out || !derive_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
         || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
-        return derive_rigid_body_taylor_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
 
     order = derive_rigid_body_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);
 
@@ -789,7 +735,7 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
         y[i] = y_out[i] = y0[i];
     for (i = 0; i < rigid_body_NY; ++i)
         if (!isfinite(y[i]))
-            return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_fail(st, DERIVE_NONFINITE, t, i);
     if (n_out == 1)
         return DERIVE_OK;
     t_end = t_out[n_out - 1];
@@ -797,14 +743,14 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
     k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
     for (;;) {
         if (st->nstep >= max_steps)
-            return derive_rigid_body_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
+            return derive_fail(st, DERIVE_MAX_STEPS, t, -1);
 #ifdef DERIVE_RIGID_BODY_SIMULATE
-        if (derive_rigid_body_stop)
-            return derive_rigid_body_taylor_fail(st, DERIVE_INTERRUPTED, t, -1);
+        if (derive_interrupted())
+            return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
         st->nfev++;
         if ((i = derive_rigid_body_taylor_jet(t, y, p, order, u)))
-            return derive_rigid_body_taylor_fail_rc(st, t, i);
+            return derive_fail_rc(st, t, i);
         /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
          * evaluated state, checked there): one sum over them, the culprit looked for only then. */
         chk = 0.0;
@@ -814,8 +760,8 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
             for (i = 0; i < rigid_body_NY; ++i)
                 for (j = 1; j <= order; ++j)
                     if (!isfinite(u[i][j]))
-                        return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, i);
-            return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t, -1);
+                        return derive_fail(st, DERIVE_NONFINITE, t, i);
+            return derive_fail(st, DERIVE_NONFINITE, t, -1);
         }
 
         /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
@@ -880,7 +826,7 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
             h = t_end - t;
         if (h < 16.0 * DBL_EPSILON * fabs(t) || !(h >= DBL_MIN)) {
             st->h_fail = h;
-            return derive_rigid_body_taylor_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
+            return derive_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
         }
         tn = last ? t_end : t + h;
         st->nstep++;
@@ -892,11 +838,11 @@ derive_rigid_body_taylor_samples *sa, derive_stats *st)
             return i;
         while (k_out < n_out && t_out[k_out] < tn) {
             if ((i = derive_rigid_body_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * rigid_body_NY)) >= 0)
-                return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
+                return derive_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
             ++k_out;
         }
         if ((i = derive_rigid_body_taylor_eval(u, order, h, y)) >= 0)
-            return derive_rigid_body_taylor_fail(st, DERIVE_NONFINITE, tn, i);
+            return derive_fail(st, DERIVE_NONFINITE, tn, i);
 #ifdef DERIVE_MEASURES
         if (derive_rigid_body_measuring)
             rigid_body_measure_series(t, h, order, u, y, p);
@@ -947,7 +893,7 @@ int rigid_body_solve_batch_taylor(long n_batch, const double *y0s, const double 
             status = rc;
 #ifdef DERIVE_RIGID_BODY_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
-            return derive_rigid_body_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
 #endif
     }
     return status;
@@ -969,7 +915,7 @@ static int derive_rigid_body_taylor_solve_outputs_taylor(const double *y0, const
         return rc;
     if (n_out == 1)
         return rigid_body_outputs_checked(n_out, t_out, y_out, p, out, st);
-    derive_rigid_body_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
+    derive_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
     return rigid_body_outputs_finite(n_out, t_out, out, st);  /* (the bit test: ~3x a comparison's speed) */
 }
 
@@ -986,17 +932,17 @@ int rigid_body_simulate_checked_taylor(const double *in, double *p, const double
     derive_stats local;
     if (!st)
         st = &local;
-    if (!in || !y_work || !out || !derive_rigid_body_taylor_times_ok(t_out, n_out)) {
-        derive_rigid_body_stats_init(st);
-        return derive_rigid_body_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+    if (!in || !y_work || !out || !derive_times_ok(t_out, n_out)) {
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (rigid_body_init(in, p, y_work)) {
-        derive_rigid_body_stats_init(st);
-        return derive_rigid_body_fail(st, DERIVE_NONFINITE, t_out[0], derive_rigid_body_first_nonfinite(y_work, rigid_body_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, rigid_body_NY));
     }
     if (pole_check && !rigid_body_pole_clear(y_work, p, pole_check)) {
-        derive_rigid_body_stats_init(st);
-        return derive_rigid_body_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     return derive_rigid_body_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
 }
@@ -1016,7 +962,7 @@ int rigid_body_simulate_batch_taylor(long n_batch, const double *ins, double *ps
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_rigid_body_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1042,7 +988,7 @@ static int derive_rigid_body_taylor_final_outputs_taylor(const double *y0, const
         return rc;
     for (j = 0; j < rigid_body_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_rigid_body_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return rigid_body_outputs_finite(1, t2 + 1, out, st);
 }
 /* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
@@ -1060,12 +1006,12 @@ static int derive_rigid_body_final_one_taylor(const double *in, double *p, const
     t2[0] = t_out[0];
     t2[1] = t_out[n_out - 1];
     if (rigid_body_init(in, p, y2)) {
-        derive_rigid_body_stats_init(st);
-        return derive_rigid_body_fail(st, DERIVE_NONFINITE, t_out[0], derive_rigid_body_first_nonfinite(y2, rigid_body_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, rigid_body_NY));
     }
     if (pole_check && !rigid_body_pole_clear(y2, p, pole_check)) {
-        derive_rigid_body_stats_init(st);
-        return derive_rigid_body_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = derive_rigid_body_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
     return rc;
@@ -1080,9 +1026,9 @@ int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, doub
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        if (!derive_rigid_body_taylor_times_ok(t_out, n_out)) {
-            derive_rigid_body_stats_init(st + b);
-            rc = derive_rigid_body_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        if (!derive_times_ok(t_out, n_out)) {
+            derive_stats_init(st + b);
+            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
         } else {
             rc = derive_rigid_body_final_one_taylor(ins + b * rigid_body_NIN, ps + b * rigid_body_NP, t_out, n_out,
                     rtol, atol, max_steps, pole_check, y_final + b * rigid_body_NY, out_final + b * rigid_body_NOBS, st + b);
@@ -1090,7 +1036,7 @@ int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_rigid_body_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1109,9 +1055,9 @@ const int rigid_body_taylor_has_lanes = 1;
  * [order][lane]; an elementwise node is a loop over the lanes, which gcc vectorises at -O3, and
  * the rules' sums (the Cauchy products, the quotient's, ...) and the step's Horner sums are
  * written on a vector of the W lanes (GNU C's vector extension: gcc and clang; the lanes are
- * compiled only there), one register for each sum: as loops over arrays of lanes gcc kept the
- * sums in memory and split them into halves it stored apart and loaded whole, and the 1000
- * tops of the bench took 7.4 instead of 5.9 ms (tests/test_taylor_lanes.py checks the bits).
+ * compiled only there), one register for each sum: as loops over arrays of lanes gcc keeps the
+ * sums in memory and splits them into halves it stores apart and loads whole
+ * (tests/test_taylor_lanes.py checks the bits).
  * W is the vector width (the library is built with -march=native). Each lane does the scalar
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
  * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
@@ -1476,7 +1422,7 @@ static int derive_rigid_body_taylor_lanes_last_taylor(double u[][RIGID_BODY_TAYL
     memcpy(y, y2 + rigid_body_NY, sizeof(double) * rigid_body_NY);
     for (j = 0; j < rigid_body_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_rigid_body_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return rigid_body_outputs_finite(1, &t_end, out, st);
 }
 
@@ -1508,9 +1454,8 @@ static int derive_rigid_body_taylor_lanes_load_taylor(int l, long *next, long n_
  * series the dense output reads (7 nodes through the order), until the
  * buffer is full or the trajectory ends; then their samples are made in order, as the scalar
  * solver makes them (derive_rigid_body_taylor_dense). A trajectory's rows are so written in one go, each in turn:
- * made step by step beside the other lanes' (eight trajectories' 18 rows, 1.4 MB in flight),
- * they left the caches before the trajectory's angles were made canonical, and the lanes took
- * 66 ms where the scalar driver takes 49 (the bench's 1000 tops). */
+ * made step by step beside the other lanes' (eight trajectories' 18 rows in flight), they
+ * would leave the caches before the trajectory's angles are made canonical. */
 #define DERIVE_RIGID_BODY_TAYLOR_LBUF 2048
 #define DERIVE_RIGID_BODY_TAYLOR_LREC(order) (6 + 7 * ((order) + 1))
 
@@ -1608,18 +1553,18 @@ static int derive_rigid_body_taylor_lanes_run_taylor(long n_batch, double *ps, c
                 sl = st + idx[l];
                 if (!(out && derive_rigid_body_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                         y_work + idx[l] * ystride, out + idx[l] * n_out * rigid_body_NOBS, sl)))
-                    derive_rigid_body_taylor_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
+                    derive_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
                 run[l] = derive_rigid_body_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
                 left -= !run[l];
                 k_out[l] = kr[l] = sn[l] = 0;
             }
         if (left == 0)
             break;
-        if (derive_rigid_body_stop) {
+        if (derive_interrupted()) {
             for (l = 0; l < DERIVE_RIGID_BODY_TAYLOR_LANES; ++l)
                 if (run[l])
-                    derive_rigid_body_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
-            derive_rigid_body_rest_interrupted(next, n_batch, st);
+                    derive_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            derive_rest_with(next, n_batch, st, DERIVE_INTERRUPTED);
             return DERIVE_INTERRUPTED;
         }
         derive_rigid_body_taylor_jet_lanes(t, y, p, order, u, bad);
@@ -1704,18 +1649,18 @@ static int derive_rigid_body_taylor_lanes_run_taylor(long n_batch, double *ps, c
                     y_work + idx[l] * ystride, out + idx[l] * n_out * rigid_body_NOBS, sl))
                 continue;  /* (a sample of the steps before failed first) */
             if (bad[l]) {
-                derive_rigid_body_taylor_fail_rc(sl, t[l], 1);
+                derive_fail_rc(sl, t[l], 1);
                 continue;
             }
             if (!isfinite(chk[l])) {
                 for (i = 0; i < rigid_body_NY && sl->status == DERIVE_OK; ++i)
                     for (j = 1; j <= order; ++j)
                         if (!isfinite(u[i][j][l])) {
-                            derive_rigid_body_taylor_fail(sl, DERIVE_NONFINITE, t[l], i);
+                            derive_fail(sl, DERIVE_NONFINITE, t[l], i);
                             break;
                         }
                 if (sl->status == DERIVE_OK)
-                    derive_rigid_body_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
+                    derive_fail(sl, DERIVE_NONFINITE, t[l], -1);
                 continue;
             }
             h = hs[l];
@@ -1727,7 +1672,7 @@ static int derive_rigid_body_taylor_lanes_run_taylor(long n_batch, double *ps, c
                         y_work + idx[l] * ystride, out + idx[l] * n_out * rigid_body_NOBS, sl))
                     continue;
                 sl->h_fail = h;
-                derive_rigid_body_taylor_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
+                derive_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
                 continue;
             }
             sl->nstep++;
@@ -1812,7 +1757,7 @@ static int derive_rigid_body_taylor_lanes_run_taylor(long n_batch, double *ps, c
                 y[i][l] = yn[i][l];
                 if (!isfinite(yn[i][l]) && !(out && derive_rigid_body_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                             y_work + idx[l] * ystride, out + idx[l] * n_out * rigid_body_NOBS, sl))) {
-                    derive_rigid_body_taylor_fail(sl, DERIVE_NONFINITE, tn, i);
+                    derive_fail(sl, DERIVE_NONFINITE, tn, i);
                     break;
                 }
             }
@@ -1823,7 +1768,7 @@ static int derive_rigid_body_taylor_lanes_run_taylor(long n_batch, double *ps, c
                         y_work + idx[l] * ystride, out + idx[l] * n_out * rigid_body_NOBS, sl))
                     continue;
                 ob = out + idx[l] * n_out * rigid_body_NOBS;
-                derive_rigid_body_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
+                derive_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
                 rigid_body_outputs_finite(n_out, t_out, ob, sl);
                 continue;
             }
@@ -1852,17 +1797,17 @@ static int derive_rigid_body_taylor_lanes_starts_taylor(long n_batch, const doub
     int i;
     for (b = 0; b < n_batch; ++b) {
         double *y = y0s + b * ystride, *p = ps + b * rigid_body_NP;
-        derive_rigid_body_stats_init(st + b);
+        derive_stats_init(st + b);
         if (rigid_body_init(ins + b * rigid_body_NIN, p, y))
-            derive_rigid_body_fail(st + b, DERIVE_NONFINITE, t0, derive_rigid_body_first_nonfinite(y, rigid_body_NY));
+            derive_fail(st + b, DERIVE_NONFINITE, t0, derive_first_nonfinite(y, rigid_body_NY));
         else if (pole_check && !rigid_body_pole_clear(y, p, pole_check)) {
-            derive_rigid_body_fail(st + b, DERIVE_RANGE, t0, -1);
-            return derive_rigid_body_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+            derive_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
         }
         else
             for (i = 0; i < rigid_body_NY; ++i)
                 if (!isfinite(y[i])) {
-                    derive_rigid_body_fail(st + b, DERIVE_NONFINITE, t0, i);
+                    derive_fail(st + b, DERIVE_NONFINITE, t0, i);
                     break;
                 }
     }
@@ -1886,7 +1831,7 @@ static int derive_rigid_body_taylor_lanes_status_taylor(int rc, long n_batch, co
  * and says so per trajectory, as ever; a single output time too). */
 static int derive_rigid_body_taylor_lanes_args_ok_taylor(const double *t_out, long n_out, double rtol, double atol, long max_steps)
 {
-    return n_out >= 2 && derive_rigid_body_taylor_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
+    return n_out >= 2 && derive_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
         && isfinite(atol) && !(rtol == 0.0 && atol == 0.0) && max_steps >= 1;
 }
 
