@@ -110,7 +110,7 @@ def test_rendered_header_declares_every_method():
 
 
 def test_stage_sums_are_unrolled_literals_without_zero_terms():
-    c = render_solvers("osc", 2, ["rk4"])["osc_solvers.c"]
+    c = render_solvers("osc", 2, ["rk4"])["derive_solvers.inc"]
     assert "yt[i] = y[i] + h * (0.5 * k[0][i]);" in c
     assert "yt[i] = y[i] + h * (0.5 * k[1][i]);" in c
     assert "yt[i] = y[i] + h * (k[2][i]);" in c

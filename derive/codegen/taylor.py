@@ -31,13 +31,14 @@ powers a division, ½ a sqrt. Order 0 of every rule is the function itself.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
 import sympy as sp
 
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, _flatten_observables, c_expr
-from derive.codegen.render import render
+from derive.codegen.render import TAYLOR_INC, render
 from derive.methods.taylor import METHODS, TaylorMethod
 
 
@@ -571,7 +572,16 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     # the doubles a lane keeps of its steps (at least one step's at the highest order)
     ctx["LBUF"] = max(2048, 6 + len(ctx["dense_nodes"]) * (ctx["max_order"] + 1))
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
-            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
+            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx),
+            TAYLOR_INC: taylor_drivers()}
+
+
+@functools.lru_cache(maxsize=1)
+def taylor_drivers() -> str:
+    """``derive_taylor.inc``: the Taylor methods' drivers (step-size control, dense output, the
+    solve and simulate drivers), one text for every model; a model's ``<model>_taylor.c``
+    defines its jet and sizes as macros and includes it."""
+    return render("c/taylor.inc.j2", methods=[_method_context(m) for m in METHODS.values()])
 
 
 #: The index of the lane loops in the lanes driver's C (templates/c/taylor_lanes.c.j2): a name

@@ -81,6 +81,13 @@ int derive_outputs_finite(long n_out, int nobs, const double *t_out, const doubl
  * [0, pi], alpha and gamma continuous. */
 void derive_canonical_angles(long n, double *a, double *b, double *c);
 
+/* The names of the shared solvers (derive_solvers.inc), compiled for the model DERIVE_MODEL:
+ * DERIVE_M(rhs) is <model>_rhs, DERIVE_S(step) the file-local derive_<model>_step. */
+#define DERIVE_CAT_(a, b) a##b
+#define DERIVE_CAT(a, b) DERIVE_CAT_(a, b)
+#define DERIVE_M(name) DERIVE_CAT(DERIVE_MODEL, DERIVE_CAT(_, name))
+#define DERIVE_S(name) DERIVE_CAT(derive_, DERIVE_M(name))
+
 /* fmax and fmin as C99 defines them (a NaN argument gives the other one), inline: gcc calls
  * libm's for these, several times a step. */
 static inline double derive_max(double a, double b)
