@@ -102,11 +102,13 @@ MARKER_TEXT = ("Signature: 8a477f597d28d172789f06886806bc55\n"
 # The stamp linked into every library: a symbol naming the library's full key, in a source
 # file the cache adds to the compile (a name no generated source has: it is not an identifier).
 STAMP_SOURCE = "derive-build-stamp.c"
-# Ctrl-C for Python (templates/c/host_sigint.c): compiled into every library that holds the
-# runtime (its sources name derive_runtime.h), which then exports derive_sigint_guard and
-# derive_sigint_request. The runtime itself installs no signal handler.
-HOST_SOURCE = "derive_host_sigint.c"
+# The runtime and Ctrl-C for Python (templates/c/host_sigint.c): a translation unit of its own in
+# every library whose sources hold the runtime (derive_runtime.h), the model's units compiled with
+# RUNTIME_LINKED so that the runtime is compiled once there; the library then exports
+# derive_sigint_guard and derive_sigint_request. The runtime itself installs no signal handler.
+HOST_SOURCE = "derive_host.c"
 RUNTIME_HEADER = "derive_runtime.h"
+RUNTIME_LINKED = "-DDERIVE_RUNTIME_LINKED"
 STAMP_PREFIX = "derive_build_"
 _CHECKSUM_LINE = re.compile(r"([0-9a-f]{64})  (.+)\n")
 _KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.so")  # which stamp a library should carry
@@ -380,11 +382,12 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
         if reserved in sources:
             raise ValueError(f"{reserved!r} is the cache's own file name, not a source name")
     mains = _mains(main, sources)
+    flags = list(flags)
     if RUNTIME_HEADER in sources and HOST_SOURCE not in mains:
         sources = {**sources, HOST_SOURCE: _host_source()}
         mains.append(HOST_SOURCE)
+        flags += [RUNTIME_LINKED] if RUNTIME_LINKED not in flags else []
     cmd = compiler()
-    flags = list(flags)
     if _NATIVE in flags and tuple(cmd) in _native_refused:
         flags.remove(_NATIVE)
     key = _key(sources, mains, cmd, flags)

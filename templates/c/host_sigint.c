@@ -1,5 +1,7 @@
-/* derive_host_sigint.c — Ctrl-C for the Python loader (derive.runtime.cbuild adds this file to
- * every library it compiles that holds the runtime); not part of the runtime an export carries.
+/* derive_host.c — the runtime and Ctrl-C for the Python loader: derive.runtime.cbuild compiles
+ * this file beside the model's translation unit in every library whose sources hold the runtime,
+ * and the model's unit with DERIVE_RUNTIME_LINKED (the runtime compiled once, here, and linked).
+ * The SIGINT handling is the loader's own, not part of the runtime an export carries.
  *
  * derive_sigint_guard(1) installs a SIGINT handler that sets a flag and makes that flag the
  * runtime's interrupt check (derive_set_interrupt_check); derive_sigint_guard(0) restores the
@@ -9,7 +11,7 @@
  */
 #include <signal.h>
 
-#include "derive_runtime.h"
+#include "derive_runtime.c"
 
 int derive_sigint_guard(int on);
 void derive_sigint_request(void);
