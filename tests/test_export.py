@@ -96,6 +96,23 @@ def test_example_prints_what_simulate_gives(tmp_path, capsys, scene, method):
     assert compared == len([k for k in got if k not in ("t_end", "nfev")]) == 10
 
 
+def test_export_carries_the_shared_runtime_and_the_notice_of_what_it_ported(tmp_path, capsys):
+    """A Taylor export holds the shared runtime (compiled once on its own by the Makefile,
+    under strict warnings) and derive_libm.h, the fdlibm port, with Sun's notice in the file
+    and in NOTICE.md."""
+    folder = tmp_path / "export"
+    rc, out, err = _cli(capsys, "export", _scene(tmp_path, "reference_top"), "--out", folder,
+                        "--method", "taylor")
+    assert rc == 0, err
+    sun = "Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved."
+    for name in ("derive_libm.h", "NOTICE.md"):
+        text = (folder / name).read_text(encoding="utf-8")
+        assert sun in text and "provided that this notice" in text, name
+    assert "derive_runtime.o" in (folder / "Makefile").read_text(encoding="utf-8")
+    _build_and_run(folder)
+    assert (folder / "derive_runtime.o").is_file()
+
+
 def test_export_readme_names_state_params_and_init_map(tmp_path, capsys):
     folder = tmp_path / "export"
     rc, _, err = _cli(capsys, "export", _scene(tmp_path, "reduced"), "--out", folder)

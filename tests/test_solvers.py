@@ -21,6 +21,7 @@ from derive.errors import CompilerError, IntegrationError
 from derive.runtime.integrate import Kernel
 from derive.methods.registry import METHODS
 from derive.codegen.solvers import render_solvers
+from derive.methods.status import Status
 from derive.methods.tableaux import DOP853, RK4
 
 C_DIR = Path(__file__).parent / "c"
@@ -105,11 +106,11 @@ def test_rendered_header_declares_every_method():
     h = render_solvers("osc", 2)["osc_solvers.h"]
     for name, m in METHODS.items():
         assert f"int osc_solve_{name}(" in h and f"int osc_solve_batch_{name}(" in h
-    assert "typedef struct" in h and "#ifndef DERIVE_SOLVERS_COMMON" in h
+    assert '#include "derive_runtime.h"' in h and "typedef struct" not in h
 
 
 def test_stage_sums_are_unrolled_literals_without_zero_terms():
-    c = render_solvers("osc", 2, ["rk4"])["osc_solvers.c"]
+    c = render_solvers("osc", 2, ["rk4"])["derive_solvers.inc"]
     assert "yt[i] = y[i] + h * (0.5 * k[0][i]);" in c
     assert "yt[i] = y[i] + h * (0.5 * k[1][i]);" in c
     assert "yt[i] = y[i] + h * (k[2][i]);" in c
@@ -442,3 +443,47 @@ def test_whole_trajectories_are_much_faster_than_scipy(free3):
     scipy_time = time.perf_counter() - t0
     assert np.max(np.abs(ours.y - ref.y.T)) < 1e-8
     assert scipy_time / ours_time > 50, (scipy_time, ours_time)
+
+
+HOOK_MAIN = r"""
+#include <stdio.h>
+#include "osc.c"
+#include "osc_solvers.c"
+
+/* The host's check: interrupted from its n-th question on. */
+static int after(void *data)
+{
+    long *n = data;
+    return --*n < 0;
+}
+
+int main(void)
+{
+    const double y0[2] = {1.0, 0.0}, p[1] = {2.0}, t[2] = {0.0, 100.0};
+    double y[4];
+    derive_stats st;
+    long n = 5;
+    int free_run = osc_solve_rk4(y0, p, t, 2, 0.01, y, &st), stopped;
+    derive_set_interrupt_check(after, &n);
+    stopped = osc_solve_rk4(y0, p, t, 2, 0.01, y, &st);
+    printf("%d %d %ld\n", free_run, stopped, st.nstep);
+    derive_set_interrupt_check(NULL, NULL);
+    printf("%d\n", osc_solve_rk4(y0, p, t, 2, 0.01, y, &st));
+    return 0;
+}
+"""
+
+
+def test_the_host_interrupt_hook_stops_a_loop_and_the_runtime_installs_no_signal_handler(tmp_path):
+    """An embedding program's check, installed through derive_set_interrupt_check, stops a
+    solver at the step it first answers yes (DERIVE_INTERRUPTED); removed, the same call runs
+    to the end. The runtime and the solvers hold no signal handler of their own."""
+    files = model_sources("osc")
+    files.update(render_solvers("osc", 2, ["rk4"]))
+    files["main.c"] = HOOK_MAIN
+    exe = check_compiles(files, "main.c", [*STRICT_FLAGS, "-O1"], executable=tmp_path / "hook")
+    out = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout.split()
+    assert out == ["0", str(int(Status.INTERRUPTED)), "5", "0"]
+    for name, text in files.items():
+        if name.startswith(("derive_", "osc_")):
+            assert "signal(" not in text and "<signal.h>" not in text, name

@@ -381,8 +381,8 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
             y, _ = sp.solve(m, y_work[:9], p, t, 0.001)
             assert np.array_equal(y.ravel(), y_work)
     assert np.abs(outs["splitting4"] - outs["rk4"]).max() < 1e-6 * np.abs(outs["rk4"]).max()
-    lib_req = getattr(lib, f"{P}_interrupt_request")
-    guard = getattr(lib, f"{P}_interrupt_guard")
+    lib_req = lib.derive_sigint_request
+    guard = lib.derive_sigint_guard
     guard.argtypes = [ctypes.c_int]
     lib_req()
     try:

@@ -4,7 +4,7 @@ vectorises: the parameters' part computed before it, each piecewise term a selec
 of values computed unconditionally.
 
 The reference is the map as the model's C prints it, one sample at a time: the same CSE, the
-piecewise terms C conditionals (``(c) ? (a) : (b)``), the same acos (``<prefix>acos_poly``,
+piecewise terms C conditionals (``(c) ? (a) : (b)``), the same acos (``derive_acos_poly``,
 tested against libm in tests/test_taylor_acos.py). For every shipped model with a Taylor output
 map, on random states and columns with exact 0, ±1 among them and parameters with
 p_alpha = ±p_gamma (the guarded poles of the reduced tops, where the branch not taken is 0/0),
@@ -40,7 +40,7 @@ class _RefPrinter(CPrinter):
         self.prefix = prefix
 
     def _print_acos(self, expr):
-        return f"{self.prefix}acos_poly({self._print(expr.args[0])})"
+        return f"derive_acos_poly({self._print(expr.args[0])})"
 
 
 def _reference(model, d, prefix) -> str:
@@ -211,7 +211,7 @@ SELECTS = r"""
 #include <stdio.h>
 #include <string.h>
 
-static inline double t_select(uint64_t m, double a, double b)
+static inline double derive_select(uint64_t m, double a, double b)
 {
     uint64_t ia, ib;
     memcpy(&ia, &a, sizeof ia);
@@ -252,7 +252,7 @@ def test_a_guarded_term_is_the_guards_value_where_the_other_branch_is_singular(t
     from derive.codegen.taylor import _BlockPrinter
     ap, x = sp.Symbol("a"), sp.Symbol("x")
     e = sp.Piecewise((0, sp.Eq(ap, 0)), (ap / x + sp.Piecewise((x, x > 0), (1, True)), True))
-    pr = _BlockPrinter([ap], "t_")
+    pr = _BlockPrinter([ap])
     out = pr.doprint(e)
     once = "\n".join(f"    const {ty} {n} = {t};" for ty, n, t in pr.once)
     each = "\n".join(f"        const {ty} {n} = {t};" for ty, n, t in pr.each)

@@ -244,7 +244,7 @@ def test_an_interrupt_stops_the_lanes():
     bp, desc, _, native, args, pole = kernels(sc, "reduced-u")
     if native._guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
-    timer = threading.Timer(0.2, native.lib[f"{desc.name}_interrupt_request"])
+    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
@@ -268,13 +268,13 @@ def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
     monkeypatch.setattr(native, "_guard", None)
-    timer = threading.Timer(0.2, native.lib[f"{desc.name}_interrupt_request"])
+    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         st = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)[3]
     finally:
         timer.cancel()
-        native.lib[f"{desc.name}_interrupt_guard"](0)  # (clears the flag)
+        native.lib.derive_sigint_guard(0)  # (clears the flag)
     for name in want.dtype.names:  # (field by field: a fancy index copies no padding)
         assert np.array_equal(st[early][name], want[name], equal_nan=True), name
     rest = np.setdiff1d(np.arange(len(sc)), early)

@@ -91,7 +91,7 @@ def test_an_interrupt_stops_a_long_prepared_run():
     kernel = prepared.plan.candidates[0].kernel
     if kernel._guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
-    request = kernel.lib[f"{kernel.desc.name}_interrupt_request"]
+    request = kernel.lib.derive_sigint_request
     timer = threading.Timer(0.2, request)
     timer.start()
     try:

@@ -33,6 +33,12 @@ def data_dir(name: str) -> Path:
 
 
 TEMPLATES = data_dir("templates")
+#: The C runtime every model's solvers share (``derive.codegen.sources.runtime_sources``), one
+#: copy in ``generated/c`` beside the models.
+RUNTIME_FILES = ("derive_runtime.h", "derive_runtime.c", "derive_libm.h", "derive_solvers.inc")
+#: The Taylor methods' drivers every model's Taylor solvers share
+#: (``derive.codegen.taylor.taylor_drivers``).
+TAYLOR_INC = "derive_taylor.inc"
 GENERATED = data_dir("generated")
 
 
@@ -42,6 +48,24 @@ def c_double(x) -> str:
     if x == int(x) and abs(x) < 1e15:
         return f"{int(x)}.0"
     return repr(x)
+
+
+def c_id(prefix: str | None, rest: str) -> str:
+    """A model's C name: ``<prefix>_<rest>``, or ``DERIVE_M(rest)`` in the shared solver file
+    (``derive_solvers.inc``), whose model is a macro (``DERIVE_MODEL``)."""
+    return f"DERIVE_M({rest})" if prefix is None else f"{prefix}_{rest}"
+
+
+def c_static_id(prefix: str | None, rest: str) -> str:
+    """A model's file-local C name: ``<prefix><rest>`` (``prefix`` ends in ``_``), or
+    ``DERIVE_S(rest)`` in the shared solver file (``derive_<model>_<rest>`` once expanded)."""
+    return f"DERIVE_S({rest})" if prefix is None else f"{prefix}{rest}"
+
+
+def taylor_helpers() -> tuple[str, ...]:
+    """The Taylor rules with C helpers of their own: one file each in templates/c/taylor_rules/
+    (the scalar and the lanes helper side by side)."""
+    return tuple(sorted(p.stem for p in (TEMPLATES / "c" / "taylor_rules").glob("*.j2")))
 
 
 @functools.lru_cache(maxsize=None)
@@ -59,6 +83,7 @@ def environment():
         autoescape=False,
     )
     env.filters["c_double"] = c_double
+    env.globals.update(cid=c_id, sid=c_static_id, TAYLOR_HELPERS=taylor_helpers())
     return env
 
 

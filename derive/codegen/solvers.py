@@ -6,9 +6,10 @@ coefficients become correctly rounded C literals (:func:`lincomb`).
 """
 from __future__ import annotations
 
+import functools
 from fractions import Fraction
 
-from derive.codegen.render import c_double, render
+from derive.codegen.render import RUNTIME_FILES, c_double, render
 from derive.methods.registry import METHODS, Method
 from derive.methods.status import c_table
 from derive.symbolic.formulations import POLE_CLEARANCE
@@ -99,7 +100,8 @@ def _prod(it):
 
 def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
                    has_angles: bool = False, pole_clearance: float = POLE_CLEARANCE) -> dict[str, str]:
-    """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``.
+    """Render ``<prefix>_solvers.h`` and ``<prefix>_solvers.c`` for the model ``prefix``, with
+    the shared runtime they include (:func:`runtime_sources`).
 
     The C includes ``"<prefix>.h"`` (the model ABI: ``<prefix>_NY``, ``<prefix>_NP``,
     ``<prefix>_rhs``, ``<prefix>_jac``, ``<prefix>_init``, ``<prefix>_observables``, the name
@@ -119,20 +121,40 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
         "prefix": prefix,
         "ny": ny,
         "methods": [_method_context(METHODS[n]) for n in names],
-        "status": STATUS,
-        "lincomb": lincomb,
+        "selected": None if names == list(METHODS) else names,
         "newton_halvings": NEWTON_HALVINGS,
         "has_angles": has_angles,
         "pole_clearance": pole_clearance,  # the formulation's (Formulation.clearance)
     }
-    ctx["any_implicit"] = any(m["driver"] == "implicit" for m in ctx["methods"])
-    # One explicit step function per tableau, named after the first method that runs it and
-    # compiled when any of them is (dop853 and dop853_fixed share DOP853's step).
-    explicit = [m for m in ctx["methods"] if m["driver"] in ("adaptive", "fixed")]
-    for m in explicit:
-        m["step_users"] = [u["name"] for u in explicit if u["tableau"] is m["tableau"]]
-        m["step_of"] = m["step_users"][0]
     return {
         f"{prefix}_solvers.h": render("c/solvers.h.j2", **ctx),
         f"{prefix}_solvers.c": render("c/solvers.c.j2", **ctx),
+        **runtime_sources(),
     }
+
+
+def _solvers_inc() -> str:
+    """``derive_solvers.inc``: every registered method's solvers, one text for every model
+    (the model's names and sizes are macros its ``<model>_solvers.c`` defines)."""
+    methods = [_method_context(m) for m in METHODS.values()]
+    # One explicit step function per tableau, named after the first method that runs it and
+    # compiled when any of them is (dop853 and dop853_fixed share DOP853's step).
+    explicit = [m for m in methods if m["driver"] in ("adaptive", "fixed")]
+    for m in explicit:
+        m["step_users"] = [u["name"] for u in explicit if u["tableau"] is m["tableau"]]
+        m["step_of"] = m["step_users"][0]
+    return render("c/solvers.inc.j2", methods=methods, status=STATUS, lincomb=lincomb,
+                  newton_halvings=NEWTON_HALVINGS,
+                  any_implicit=any(m["driver"] == "implicit" for m in methods))
+
+
+@functools.lru_cache(maxsize=1)
+def runtime_sources() -> dict[str, str]:
+    """The C runtime every model's solvers share, ``{file name: text}``: ``derive_runtime.h``
+    and ``derive_runtime.c`` (statistics, status codes, the interrupt hook, argument checks,
+    LU, the canonical angles), ``derive_libm.h`` (the vectorisable sin, cos and acos ported
+    from fdlibm, with Sun's notice) and ``derive_solvers.inc`` (the Runge–Kutta solvers, which
+    each model's ``<model>_solvers.c`` compiles for itself)."""
+    h, c, libm, inc = RUNTIME_FILES
+    return {h: render("c/runtime.h.j2", status=c_table()), c: render("c/runtime.c.j2"),
+            libm: render("c/libm.h.j2"), inc: _solvers_inc()}

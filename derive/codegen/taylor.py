@@ -31,13 +31,14 @@ powers a division, ½ a sqrt. Order 0 of every rule is the function itself.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
 import sympy as sp
 
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, _flatten_observables, c_expr
-from derive.codegen.render import render
+from derive.codegen.render import TAYLOR_INC, render
 from derive.methods.taylor import METHODS, TaylorMethod
 
 
@@ -571,7 +572,16 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     # the doubles a lane keeps of its steps (at least one step's at the highest order)
     ctx["LBUF"] = max(2048, 6 + len(ctx["dense_nodes"]) * (ctx["max_order"] + 1))
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
-            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx)}
+            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx),
+            TAYLOR_INC: taylor_drivers()}
+
+
+@functools.lru_cache(maxsize=1)
+def taylor_drivers() -> str:
+    """``derive_taylor.inc``: the Taylor methods' drivers (step-size control, dense output, the
+    solve and simulate drivers), one text for every model; a model's ``<model>_taylor.c``
+    defines its jet and sizes as macros and includes it."""
+    return render("c/taylor.inc.j2", methods=[_method_context(m) for m in METHODS.values()])
 
 
 #: The index of the lane loops in the lanes driver's C (templates/c/taylor_lanes.c.j2): a name
@@ -673,7 +683,8 @@ class _BlockPrinter(CPrinter):
     """C for the output map over a block of samples (``<prefix>outputs_block``), a loop that gcc
     can vectorise: the same text as :class:`CPrinter` prints, but
 
-    * a Piecewise term is a select on the bits of named values, ``<select>(pc, pv, pd)``, each
+    * a Piecewise term is a select on the bits of named values, ``derive_select(pc, pv, pd)``
+      (``derive_libm.h``), each
       branch's value a statement of its own, computed unconditionally, and each condition a
       mask (all ones where it holds): gcc does not if-convert ``cond ? 0 : x*y`` under the
       default ``-ftrapping-math`` (it will not speculate a product or a quotient, and sinks a
@@ -685,15 +696,14 @@ class _BlockPrinter(CPrinter):
       the guards' conditions) goes to ``once``, computed before the loop, the others to
       ``each``, in the loop: (type, name, C text), in the order printed (a statement's operands
       before it);
-    * ``acos`` is ``<prefix>acos_poly`` (the block's own, arithmetic alone: libm's does not
-      vectorise).
+    * ``acos`` is ``derive_acos_poly`` (``derive_libm.h``: arithmetic alone, fdlibm's; libm's
+      does not vectorise).
 
     The names end in an underscore, which no model symbol does."""
 
-    def __init__(self, fixed, prefix: str):
+    def __init__(self, fixed):
         super().__init__()
         self.fixed = set(fixed)
-        self.prefix = prefix
         self.uses_acos = False
         self.once: list = []
         self.each: list = []
@@ -711,12 +721,12 @@ class _BlockPrinter(CPrinter):
         for value, cond in reversed(pairs):
             c = self.statement("uint64_t", cond, f"0 - (uint64_t)({self._print(cond)})")
             v = self.statement("double", value, self._print(value))
-            out = f"{self.prefix}select({c}, {v}, {out})"
+            out = f"derive_select({c}, {v}, {out})"
         return out
 
     def _print_acos(self, expr):
         self.uses_acos = True
-        return f"{self.prefix}acos_poly({self._print(expr.args[0])})"
+        return f"derive_acos_poly({self._print(expr.args[0])})"
 
 
 def _pointwise(model, d: Decomposition) -> dict | None:
@@ -727,7 +737,7 @@ def _pointwise(model, d: Decomposition) -> dict | None:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
     uses_t = block.uses_time()
-    pr = _BlockPrinter(model.params, f"derive_{model.name}_taylor_")
+    pr = _BlockPrinter(model.params)
     temps = []
     for name, e in block.temps:
         text = pr.doprint(e)

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from derive.codegen.render import render
 from derive.errors import SceneError
 from derive.methods.registry import method as compiled_method
 from derive.runtime.catalogue import Description
@@ -226,3 +227,11 @@ def make(scene, method: str | None = None) -> Bundle:
     return Bundle(scene=sc, desc=c.desc, method=pl.method, driver=driver,
                   pole_check=c.pole_check, inputs=np.array(pl.inputs, dtype=float),
                   params=np.array(c.params, dtype=float), nfev=int(res.nfev))
+
+
+def notice(names) -> str:
+    """``NOTICE.md`` of an export holding the files ``names``: the notice of every third-party
+    piece among them (fdlibm's in ``derive_libm.h``, the FMI headers'), as the licences ask."""
+    names = set(names)
+    return render("export/NOTICE.md.j2", libm="derive_libm.h" in names,
+                  fmi="fmi2Functions.h" in names)

@@ -36,7 +36,7 @@ from xml.sax.saxutils import escape
 from derive.codegen.render import TEMPLATES, c_double, environment
 from derive.errors import CompilerError, SceneError
 from derive.export import bundle as bundles
-from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, output_groups, state_unit
+from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
 from derive.runtime.cbuild import compiler
 from derive.sim.outputs import check_paths, write_all
 
@@ -168,6 +168,7 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     out = {n: files[n] for n in wanted}
     for name in HEADERS:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
+    out["NOTICE.md"] = notice(out)
     vs = variables(b)
     digest = hashlib.sha256(repr((sorted(out.items()), [(v.name, v.start) for v in vs],
                                   b.method, b.pole_check)).encode()).hexdigest()

@@ -22,7 +22,7 @@ from pathlib import Path
 from derive.codegen.render import c_double, render
 from derive.errors import SceneError
 from derive.export import bundle as bundles
-from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, output_groups, state_unit
+from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
 from derive.methods.registry import method as compiled_method
 from derive.sim.outputs import umask
 
@@ -83,7 +83,10 @@ def files(b: Bundle) -> dict[str, str]:
     out["example.c"] = render("c/example.c.j2", initial=b.initial(), params=params,
                               t_end=b.t_end, samples=b.samples,
                               groups=output_groups(b.desc.outputs), **common)
-    out["Makefile"] = render("export/Makefile.j2", sources=model + extra, **common)
+    runtime = "derive_runtime.c"
+    out["Makefile"] = render("export/Makefile.j2", sources=[n for n in model + extra if n != runtime],
+                             runtime=runtime, **common)
+    out["NOTICE.md"] = notice(out)
 
     outputs = []
     for base, cols in output_groups(b.desc.outputs):

@@ -27,6 +27,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from derive.codegen.render import RUNTIME_FILES, TAYLOR_INC
 from derive.errors import note
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import model_name
@@ -66,7 +67,7 @@ class Description:
         names = [f"{self.name}{suffix}" for suffix in (".h", ".c", "_solvers.h", "_solvers.c",
                                                         "_splitting.h", "_splitting.c",
                                                         "_taylor.h", "_taylor.c")]
-        names.append("derive_elliptic.h")
+        names += ["derive_elliptic.h", *RUNTIME_FILES, TAYLOR_INC]
         return {n: self.source(f"c/{n}") for n in names if (Path(self.folder) / "c" / n).is_file()}
 
     @classmethod

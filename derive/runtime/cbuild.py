@@ -57,6 +57,7 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
+from derive.codegen.render import TEMPLATES
 from derive.errors import CompilerError, note
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
@@ -68,7 +69,7 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
                                    "-fno-sanitize-recover=undefined")
 # The vector build: this CPU's vector width (-march=native) for the scalar drivers' loops over
 # samples (a Taylor step's output map over a block of samples takes 4 or 8 at a time where the
-# portable build's SSE2 takes 2: the reference run at rtol 1e-8, 68.6 -> 55.6 us here). Such a
+# portable build's SSE2 takes 2). Such a
 # library runs only on the CPU it was built for, so its key also holds that CPU's identity
 # (:func:`_native_identity`). Its numbers must be the portable build's bit for bit: no fused
 # multiply-add. ISO C mode contracts nothing, but gcc 12's straight-line (SLP) vectoriser still
@@ -78,9 +79,8 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
 VECTOR_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize")
 # The lanes build (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the vector build with
 # the lanes compiled in, and no complete peeling of small loops: peeled, the lanes' loops over W
-# become straight lines the loop vectoriser never sees (the lanes' C call on the bench's 1000
-# tops 5.9 -> 16.7 ms without the flag, measured after the lanes' sums took GNU C's vectors). The scalar drivers want the peeling (their loops over 4 states or 4 samples:
-# 55.6 -> 80 us for the reference run without it), hence two builds.
+# become straight lines the loop vectoriser never sees. The scalar drivers want the peeling
+# (their loops over 4 states or 4 samples), hence two builds.
 NATIVE_FLAGS: tuple[str, ...] = VECTOR_FLAGS + ("--param=max-completely-peel-times=1", "-DDERIVE_LANES")
 #: The builds of a library: name -> the flags each adds to DEFAULT_FLAGS. ``portable`` runs on
 #: any CPU of the architecture; ``vector`` and ``lanes`` (above) on this one, with the same
@@ -102,6 +102,13 @@ MARKER_TEXT = ("Signature: 8a477f597d28d172789f06886806bc55\n"
 # The stamp linked into every library: a symbol naming the library's full key, in a source
 # file the cache adds to the compile (a name no generated source has: it is not an identifier).
 STAMP_SOURCE = "derive-build-stamp.c"
+# The runtime and Ctrl-C for Python (templates/c/host_sigint.c): a translation unit of its own in
+# every library whose sources hold the runtime (derive_runtime.h), the model's units compiled with
+# RUNTIME_LINKED so that the runtime is compiled once there; the library then exports
+# derive_sigint_guard and derive_sigint_request. The runtime itself installs no signal handler.
+HOST_SOURCE = "derive_host.c"
+RUNTIME_HEADER = "derive_runtime.h"
+RUNTIME_LINKED = "-DDERIVE_RUNTIME_LINKED"
 STAMP_PREFIX = "derive_build_"
 _CHECKSUM_LINE = re.compile(r"([0-9a-f]{64})  (.+)\n")
 _KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.so")  # which stamp a library should carry
@@ -287,8 +294,8 @@ def _native_identity(cmd: tuple[str, ...]) -> str:
     a library built for another: the CPU's model and instruction sets as Linux reports them
     (the first processor of ``/proc/cpuinfo``: what the compiler reads, by cpuid, to resolve
     the flag; the compiler itself is keyed by its ``--version``), or else the target macros the
-    compiler defines with the flag (a preprocessor run: 40 ms, which the first simulation of
-    every process would pay)."""
+    compiler defines with the flag (a preprocessor run, which the first simulation of every
+    process would pay)."""
     try:
         with open("/proc/cpuinfo", encoding="utf-8", errors="replace") as f:
             first = f.read(1 << 16).split("\n\n", 1)[0]
@@ -375,8 +382,12 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
         if reserved in sources:
             raise ValueError(f"{reserved!r} is the cache's own file name, not a source name")
     mains = _mains(main, sources)
-    cmd = compiler()
     flags = list(flags)
+    if RUNTIME_HEADER in sources and HOST_SOURCE not in mains:
+        sources = {**sources, HOST_SOURCE: _host_source()}
+        mains.append(HOST_SOURCE)
+        flags += [RUNTIME_LINKED] if RUNTIME_LINKED not in flags else []
+    cmd = compiler()
     if _NATIVE in flags and tuple(cmd) in _native_refused:
         flags.remove(_NATIVE)
     key = _key(sources, mains, cmd, flags)
@@ -395,6 +406,11 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
             # the architecture's baseline, the same numbers (see VECTOR_FLAGS)
             _native_refused.add(tuple(cmd))
     return compile_library(name, sources, main, flags)
+
+
+@functools.lru_cache(maxsize=1)
+def _host_source() -> str:
+    return (TEMPLATES / "c" / "host_sigint.c").read_text(encoding="utf-8")
 
 
 def _sha256(path: Path) -> str:

@@ -342,17 +342,17 @@ class Kernel:
 # One C call per simulation: a (model, method) library built from a generated model's files.
 
 def _ptr(a: np.ndarray) -> int:
-    # ndarray.ctypes.data: ~1 µs; __array_interface__ would build a structured dtype's
-    # description on every call (~10 µs for derive_stats).
+    # ndarray.ctypes.data: __array_interface__ would build a structured dtype's description
+    # (derive_stats) on every call.
     return a.ctypes.data
 
 
 def _interruptible(lib, prefix: str):
     """Run a C call with SIGINT handled by the library (the loops poll its flag) when called
-    from the main thread; a call from another thread relies on ``interrupt_request``."""
+    from the main thread; a call from another thread relies on ``derive_sigint_request``."""
     import threading
 
-    guard = getattr(lib, f"{prefix}_interrupt_guard")
+    guard = lib.derive_sigint_guard
     return guard if threading.current_thread() is threading.main_thread() else None
 
 
@@ -712,8 +712,8 @@ class BoundRun:
         """
         # Uninitialised but for the stats record, cleared as in simulate (every driver path starts
         # it with stats_init; clearing it too costs nothing): the outputs and states are written
-        # by the driver before they are read, and zeroing the whole buffer (~176 KB at 1001
-        # samples) cost ~1.3 us a run. On a failure they are never read (the caller raises).
+        # by the driver before they are read, so zeroing the whole buffer would be wasted work.
+        # On a failure they are never read (the caller raises).
         buf = np.empty(self._size)
         k_p, k_st = self._k_p, self._k_st
         buf[k_st:] = 0.0

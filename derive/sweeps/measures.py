@@ -295,7 +295,7 @@ class MeasureKernel:
                        ci, vp, vp, vp, vp, vp, vp]
         fn.restype = ctypes.c_int
         self._fn = fn
-        guard = getattr(lib, f"{desc.name}_interrupt_guard")
+        guard = lib.derive_sigint_guard
         guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
         self._guard = guard
         # The measures' accumulators are static in the library: one run at a time (a Dask

@@ -12,7 +12,7 @@ const char *const euler_free_param_names[euler_free_NP] = { "I1", "I2", "I3" };
 const char *const euler_free_observable_names[euler_free_NOBS] = { "energy", "L_squared", "omega1", "omega2", "omega3" };
 
 /* The right-hand side without gcc's vectorisers (templates/c/novectorize.j2): a solver's stage
- * reads dydt back in pairs; DOP853 on the reference top took 18 % longer with them. */
+ * reads dydt back in pairs, and the stores and loads of different widths stall. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")

@@ -4,8 +4,10 @@
  * Every solver integrates y' = euler_free_rhs(t, y, p) from t_out[0] to t_out[n_out-1] and writes
  * the state at each requested time: y_out[k*euler_free_NY + i] = y_i(t_out[k]), y_out[0..NY) = y0.
  * t_out must be finite and strictly increasing (n_out >= 1). The integration loop runs here in
- * C; no allocation. The return value equals st->status (0 = success, see DERIVE_* below); st is
- * always filled (it may be NULL). On failure y_out holds the outputs reached so far.
+ * C; no allocation. The return value equals st->status (0 = success, DERIVE_* of
+ * derive_runtime.h); st is always filled (it may be NULL). Every loop asks derive_interrupted()
+ * once per step and stops with DERIVE_INTERRUPTED when it says so. On failure y_out holds the
+ * outputs reached so far.
  *
  * Fixed-step methods split each output interval [t_k, t_k+1] into ceil((t_k+1 - t_k)/h) equal
  * steps, so steps land on the output times. The adaptive method (dop853) steps freely and
@@ -18,48 +20,12 @@
 #ifndef EULER_FREE_SOLVERS_H
 #define EULER_FREE_SOLVERS_H
 
+#include "derive_runtime.h"  /* derive_stats, the DERIVE_* status codes, the interrupt hook */
 #include "euler_free.h"
 
-/* Shared by every model's solvers, so several models can live in one translation unit. */
-#ifndef DERIVE_SOLVERS_COMMON
-#define DERIVE_SOLVERS_COMMON
-
-typedef struct {
-    long nfev;       /* right-hand-side evaluations */
-    long njev;       /* Jacobian evaluations */
-    long nstep;      /* steps attempted */
-    long naccept;    /* steps accepted */
-    long nreject;    /* steps rejected (error test, non-finite trial, Newton failure) */
-    long nlu;        /* LU factorisations */
-    double t_fail;   /* status != 0: the time at which the failure was detected */
-    int fail_index;  /* status 2: index of the non-finite state component; else -1 */
-    int status;      /* DERIVE_* */
-    double h_fail;   /* status 1 and 5: the step size at the failure; else 0 */
-    int rhs_code;    /* status 4: the non-zero value the rhs (or jac) returned; else 0 */
-} derive_stats;
-
-#define DERIVE_OK              0  /* success */
-#define DERIVE_STEP_UNDERFLOW  1  /* step size underflow */
-#define DERIVE_NONFINITE       2  /* non-finite value in the state */
-#define DERIVE_MAX_STEPS       3  /* step budget (max_steps) spent */
-#define DERIVE_DOMAIN          4  /* state outside the model's domain */
-#define DERIVE_NEWTON          5  /* Newton iteration failed to converge */
-#define DERIVE_BAD_ARGS        6  /* bad arguments */
-#define DERIVE_INTERRUPTED     7  /* interrupted */
-#define DERIVE_RANGE           8  /* the motion comes closer to a pole than the formulation allows */
-#define DERIVE_NONFINITE_OUTPUT 9  /* non-finite value in the output */
-
-#endif /* DERIVE_SOLVERS_COMMON */
 
 /* euler_free_dims = { NY, NP, NOBS, NIN }, so a loader can size the name arrays. */
 extern const int euler_free_dims[4];
-
-/* SIGINT handling for a caller that wants Ctrl-C to stop a running loop: guard(1) installs a
- * handler that sets a flag the loops poll every step (they then return DERIVE_INTERRUPTED);
- * guard(0) restores the previous handler and returns 1 if an interrupt came. request() sets
- * the flag from anywhere (another thread). */
-int euler_free_interrupt_guard(int on);
-void euler_free_interrupt_request(void);
 
 /* For a model with outputs and an init map (euler_free_NOBS, euler_free_NIN defined; every generated model):
  * out[j*n_out + k] = output j (euler_free_observables) at t_out[k] from the states y[k*NY ..],

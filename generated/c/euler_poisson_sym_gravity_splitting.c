@@ -21,14 +21,16 @@
 #include <string.h>
 
 #include "euler_poisson_sym_gravity_splitting.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if euler_poisson_sym_gravity_NY != 9
 #error "euler_poisson_sym_gravity.h: the splitting solvers need the Euler-Poisson state (L, n, e), NY = 9"
 #endif
 
 /* Compiled in one translation unit after euler_poisson_sym_gravity_solvers.c (the kernel build), which then
- * defines DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE, the splitting solvers poll the same interrupt flag once per
- * step (derive_euler_poisson_sym_gravity_stop) and get the whole-simulation drivers euler_poisson_sym_gravity_simulate[_checked|_batch]_<method>
+ * defines DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE, the splitting solvers get the whole-simulation drivers euler_poisson_sym_gravity_simulate[_checked|_batch]_<method>
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* The body: principal moments about the pivot, M g and the centre of mass. */
@@ -53,43 +55,10 @@ static int derive_euler_poisson_sym_gravity_split_body_of(const double *p, deriv
     return !isfinite(b->mg);
 }
 
-/* ---------------------------------------------------------------------------------------- */
-/* Fixed-step bookkeeping, the rules of euler_poisson_sym_gravity_solvers.c.                                   */
-
-static void derive_euler_poisson_sym_gravity_split_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_euler_poisson_sym_gravity_split_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
 /* n_out >= 1, t_out finite and strictly increasing, h > 0 finite and not absurdly small. */
 static int derive_euler_poisson_sym_gravity_split_args_ok(const double *t_out, long n_out, double h)
 {
-    long k;
-    if (!t_out || n_out < 1 || !(h > 0.0) || !isfinite(h))
-        return 0;
-    for (k = 0; k < n_out; ++k)
-        if (!isfinite(t_out[k]) || (k > 0 && !(t_out[k] > t_out[k - 1]))
-            || (k > 0 && !((t_out[k] - t_out[k - 1]) / h < 1e15)))
-            return 0;
-    return 1;
-}
-
-/* ceil(dt/h) steps; a ratio within a relative 1e-10 above an integer counts as that integer. */
-static long derive_euler_poisson_sym_gravity_split_substeps(double dt, double h)
-{
-    double r = dt / h, n = ceil(r);
-    if (n > 1.0 && n - r > 1.0 - 1e-10 * r)
-        n -= 1.0;
-    return n < 1.0 ? 1 : (long)n;
+    return derive_times_ok(t_out, n_out) && derive_fixed_args_ok(t_out, n_out, h);
 }
 
 /* ---------------------------------------------------------------------------------------- */
@@ -180,13 +149,13 @@ int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_split_stats_init(st);
+    derive_stats_init(st);
     if (!y0 || !y_out || !p || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h) || derive_euler_poisson_sym_gravity_split_body_of(p, &b))
-        return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < 9; ++i) {
         y[i] = y_out[i] = y0[i];
         if (!isfinite(y[i]))
-            return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t_out[0], i);
+            return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     }
     /* The model's state holds w; the flows act on L = I w (converted back at each output). */
     for (i = 0; i < 3; ++i)
@@ -194,14 +163,14 @@ int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_poisson_sym_gravity_split_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
-            if (derive_euler_poisson_sym_gravity_stop)
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
@@ -212,7 +181,7 @@ int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p
             for (i = 0; i < 9; ++i)
                 if (!isfinite(y[i])) {
                     st->h_fail = hs;
-                    return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t + hs, i);
+                    return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
                 }
             st->naccept++;
         }
@@ -222,7 +191,7 @@ int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p
         derive_euler_poisson_sym_gravity_split_turn_axis(2, -(b.I[0] - b.I[2]) / (b.I[0] * b.I[2]) * y[2] * (tb - ta), y);
         for (i = 0; i < 9; ++i)
             if (!isfinite(y[i]))
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, tb, i);
+                return derive_fail(st, DERIVE_NONFINITE, tb, i);
         memcpy(y_out + kk * 9, y, sizeof y);
         for (i = 0; i < 3; ++i)
             y_out[kk * 9 + i] = y[i] / b.I[i];
@@ -245,7 +214,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting2(long n_batch, const double 
             status = rc;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
 #endif
     }
     return status;
@@ -268,16 +237,16 @@ int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, doub
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_solve_splitting2(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -300,7 +269,7 @@ int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -343,13 +312,13 @@ int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_split_stats_init(st);
+    derive_stats_init(st);
     if (!y0 || !y_out || !p || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h) || derive_euler_poisson_sym_gravity_split_body_of(p, &b))
-        return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < 9; ++i) {
         y[i] = y_out[i] = y0[i];
         if (!isfinite(y[i]))
-            return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t_out[0], i);
+            return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     }
     /* The model's state holds w; the flows act on L = I w (converted back at each output). */
     for (i = 0; i < 3; ++i)
@@ -357,14 +326,14 @@ int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_poisson_sym_gravity_split_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
-            if (derive_euler_poisson_sym_gravity_stop)
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
@@ -375,7 +344,7 @@ int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p
             for (i = 0; i < 9; ++i)
                 if (!isfinite(y[i])) {
                     st->h_fail = hs;
-                    return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t + hs, i);
+                    return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
                 }
             st->naccept++;
         }
@@ -384,7 +353,7 @@ int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p
         derive_euler_poisson_sym_gravity_split_turn_axis(2, -(b.I[0] - b.I[2]) / (b.I[0] * b.I[2]) * y[2] * (tb - ta), y);
         for (i = 0; i < 9; ++i)
             if (!isfinite(y[i]))
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, tb, i);
+                return derive_fail(st, DERIVE_NONFINITE, tb, i);
         memcpy(y_out + kk * 9, y, sizeof y);
         for (i = 0; i < 3; ++i)
             y_out[kk * 9 + i] = y[i] / b.I[i];
@@ -407,7 +376,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting4(long n_batch, const double 
             status = rc;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
 #endif
     }
     return status;
@@ -430,16 +399,16 @@ int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, doub
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_solve_splitting4(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -462,7 +431,7 @@ int euler_poisson_sym_gravity_simulate_batch_splitting4(long n_batch, const doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -507,13 +476,13 @@ int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p
 
     if (!st)
         st = &local;
-    derive_euler_poisson_sym_gravity_split_stats_init(st);
+    derive_stats_init(st);
     if (!y0 || !y_out || !p || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h) || derive_euler_poisson_sym_gravity_split_body_of(p, &b))
-        return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     for (i = 0; i < 9; ++i) {
         y[i] = y_out[i] = y0[i];
         if (!isfinite(y[i]))
-            return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t_out[0], i);
+            return derive_fail(st, DERIVE_NONFINITE, t_out[0], i);
     }
     /* The model's state holds w; the flows act on L = I w (converted back at each output). */
     for (i = 0; i < 3; ++i)
@@ -521,14 +490,14 @@ int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p
     for (kk = 1; kk < n_out; ++kk) {
         ta = t_out[kk - 1];
         tb = t_out[kk];
-        n = derive_euler_poisson_sym_gravity_split_substeps(tb - ta, h);
+        n = derive_substeps(tb - ta, h);
         hh = (tb - ta) / n;
         pend = 0.0;  /* the previous step's last sub-flow, not yet applied */
         for (j = 0; j < n; ++j) {
             t = ta + j * hh;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
-            if (derive_euler_poisson_sym_gravity_stop)
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_INTERRUPTED, t, -1);
+            if (derive_interrupted())
+                return derive_fail(st, DERIVE_INTERRUPTED, t, -1);
 #endif
             hs = j == n - 1 ? tb - t : hh;  /* the last step lands on tb exactly */
             st->nstep++;
@@ -539,7 +508,7 @@ int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p
             for (i = 0; i < 9; ++i)
                 if (!isfinite(y[i])) {
                     st->h_fail = hs;
-                    return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, t + hs, i);
+                    return derive_fail(st, DERIVE_NONFINITE, t + hs, i);
                 }
             st->naccept++;
         }
@@ -549,7 +518,7 @@ int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p
         derive_euler_poisson_sym_gravity_split_turn_axis(2, -(b.I[0] - b.I[2]) / (b.I[0] * b.I[2]) * y[2] * (tb - ta), y);
         for (i = 0; i < 9; ++i)
             if (!isfinite(y[i]))
-                return derive_euler_poisson_sym_gravity_split_fail(st, DERIVE_NONFINITE, tb, i);
+                return derive_fail(st, DERIVE_NONFINITE, tb, i);
         memcpy(y_out + kk * 9, y, sizeof y);
         for (i = 0; i < 3; ++i)
             y_out[kk * 9 + i] = y[i] / b.I[i];
@@ -572,7 +541,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting6(long n_batch, const double 
             status = rc;
 #ifdef DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE
         if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_gravity_rest_interrupted(b + 1, n_batch, st);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_INTERRUPTED);
 #endif
     }
     return status;
@@ -595,16 +564,16 @@ int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, doub
     if (!st)
         st = &local;
     if (!in || !y_work || !out || !derive_euler_poisson_sym_gravity_split_args_ok(t_out, n_out, h)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
     }
     if (euler_poisson_sym_gravity_init(in, p, y_work)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_gravity_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y_work, euler_poisson_sym_gravity_NY));
     }
     if (pole_check && !euler_poisson_sym_gravity_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_gravity_stats_init(st);
-        return derive_euler_poisson_sym_gravity_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = euler_poisson_sym_gravity_solve_splitting6(y_work, p, t_out, n_out, h, y_work, st);
     if (rc == DERIVE_OK)
@@ -627,7 +596,7 @@ int euler_poisson_sym_gravity_simulate_batch_splitting6(long n_batch, const doub
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_gravity_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }

@@ -14,6 +14,10 @@
 #include <string.h>
 
 #include "euler_poisson_sym_taylor.h"
+#include "derive_libm.h"
+#ifndef DERIVE_RUNTIME_LINKED
+#include "derive_runtime.c"
+#endif
 
 #if euler_poisson_sym_NY != 9
 #error "euler_poisson_sym.h: euler_poisson_sym_NY differs from the size the Taylor solvers were rendered for (9)"
@@ -22,8 +26,7 @@
 #define DERIVE_EULER_POISSON_SYM_TAYLOR_NODES 38
 
 /* Compiled in one translation unit after euler_poisson_sym_solvers.c (the kernel build), which then
- * defines DERIVE_EULER_POISSON_SYM_SIMULATE, the solvers poll the same interrupt flag once per step
- * (derive_euler_poisson_sym_stop) and get the whole-simulation drivers euler_poisson_sym_simulate[_checked|_batch]_<method>
+ * defines DERIVE_EULER_POISSON_SYM_SIMULATE, the solvers get the whole-simulation drivers euler_poisson_sym_simulate[_checked|_batch]_<method>
  * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
 
 /* ---------------------------------------------------------------------------------------- */
@@ -31,8 +34,8 @@
  * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
  */
 /* gcc's vectoriser off from here to the end of derive_euler_poisson_sym_taylor_jet (see
- * templates/c/novectorize.j2): with it the jet of the reference top took 2.4 times as long
- * (order 13: 440 ns, 183 ns). */
+ * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
+ * jet. */
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
@@ -283,25 +286,12 @@ static void derive_euler_poisson_sym_taylor_horner_block(double w[][DERIVE_EULER
 }
 
 /* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
- * the columns: derive_euler_poisson_sym_taylor_sincos_poly over the block (a loop gcc vectorises), then libm where an
+ * the columns: derive_sincos_poly over the block (a loop gcc vectorises), then libm where an
  * argument is beyond its range (and for inf, nan). */
 static inline void derive_euler_poisson_sym_taylor_trig_block(int nb, double v[][DERIVE_EULER_POISSON_SYM_TAYLOR_KO])
 {
     (void)nb;
     (void)v;
-}
-
-/* a where the mask m is all ones, b where it is zero: a choice on the bits, straight-line code
- * in a loop gcc vectorises (SSE2 compares no 64-bit integers: the masks are made of sign bits
- * or outside the loop). */
-static inline double derive_euler_poisson_sym_taylor_select(uint64_t m, double a, double b)
-{
-    uint64_t ia, ib;
-    memcpy(&ia, &a, sizeof ia);
-    memcpy(&ib, &b, sizeof ib);
-    ia = (ia & m) | (ib & ~m);
-    memcpy(&a, &ia, sizeof a);
-    return a;
 }
 
 /* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
@@ -313,7 +303,7 @@ static inline double derive_euler_poisson_sym_taylor_select(uint64_t m, double a
  * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
  * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
  * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_euler_poisson_sym_taylor_acos_poly's. A sample's numbers do not depend on its block.
+ * derive_acos_poly's. A sample's numbers do not depend on its block.
  * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
  * block maps made the solver one function so large that its register allocation took the
  * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
@@ -401,50 +391,6 @@ int euler_poisson_sym_taylor_coefficients(double t, const double *y, const doubl
     return 0;
 }
 
-/* ---------------------------------------------------------------------------------------- */
-/* Bookkeeping, the rules of euler_poisson_sym_solvers.c: in the kernel build its own functions.       */
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-#define derive_euler_poisson_sym_taylor_stats_init derive_euler_poisson_sym_stats_init
-#define derive_euler_poisson_sym_taylor_fail derive_euler_poisson_sym_fail
-#define derive_euler_poisson_sym_taylor_fail_rc derive_euler_poisson_sym_fail_rc
-#define derive_euler_poisson_sym_taylor_times_ok derive_euler_poisson_sym_times_ok
-#else
-
-static void derive_euler_poisson_sym_taylor_stats_init(derive_stats *st)
-{
-    memset(st, 0, sizeof *st);
-    st->fail_index = -1;
-}
-
-static int derive_euler_poisson_sym_taylor_fail(derive_stats *st, int status, double t, int index)
-{
-    st->status = status;
-    st->t_fail = t;
-    st->fail_index = index;
-    return status;
-}
-
-/* The model said the state is outside its domain: its non-zero return value is kept. */
-static int derive_euler_poisson_sym_taylor_fail_rc(derive_stats *st, double t, int rc)
-{
-    st->rhs_code = rc;
-    return derive_euler_poisson_sym_taylor_fail(st, DERIVE_DOMAIN, t, -1);
-}
-
-/* n_out >= 1 and t_out finite and strictly increasing: increasing (a NaN compares false) from a
- * finite first to a finite last time, so every time between is finite. One pass without a
- * branch (gcc vectorises it): a simulate checks its times before every run. */
-static int derive_euler_poisson_sym_taylor_times_ok(const double *t_out, long n_out)
-{
-    long k;
-    double up = 1.0;  /* (a double: the form of the loop gcc vectorises) */
-    if (!t_out || n_out < 1 || !isfinite(t_out[0]) || !isfinite(t_out[n_out - 1]))
-        return 0;
-    for (k = 1; k < n_out; ++k)
-        up = t_out[k] > t_out[k - 1] ? up : 0.0;
-    return up != 0.0;
-}
-#endif
 
 #ifdef DERIVE_MEASURES
 /* The measures' hook (derive.sweep: euler_poisson_sym_measures.c, rendered at run time, defines it): while
@@ -454,93 +400,12 @@ static void euler_poisson_sym_measure_series(double t, double h, int order, doub
         const double *y_new, const double *p);
 #endif
 
-/* The series of every state at tau (Horner) into v; the index of a non-finite value, or -1.
- * The states' chains side by side (the order loop outside): each is latency-bound alone. */
-static int derive_euler_poisson_sym_taylor_eval(double u[][EULER_POISSON_SYM_TAYLOR_MAX_ORDER + 1], int order, double tau, double *v)
-{
-    int i, j;
-    for (i = 0; i < euler_poisson_sym_NY; ++i)
-        v[i] = u[i][order];
-    for (j = order - 1; j >= 0; --j)
-        for (i = 0; i < euler_poisson_sym_NY; ++i)
-            v[i] = v[i] * tau + u[i][j];
-    for (i = 0; i < euler_poisson_sym_NY; ++i)
-        if (!isfinite(v[i]))
-            return i;
-    return -1;
-}
-
-/* x^(-1/q) (q >= 1, x >= 0) to about 1e-6 relative, by arithmetic alone, so that the lanes
- * driver runs it for all its lanes at once where glibc's log and exp (called per lane: they do
- * not vectorise) took 14 % of its time; the scalar driver calls the same function, so both take
- * the same steps bit for bit. A first guess: log2 x from the bits of x read as a line,
- * 2^52 (log2 x + 1023 - 0.043) (the offset centres the line's error, +-0.043, which the root
- * divides by q), divided by -q, and 2 to that power as the bits of 2^E (the integer part) times
- * a quadratic in the fraction (relative error 1.7e-3): 3 % for q = 1, 0.5 % for q = 12. Then two
- * Newton steps on x y^q = 1 (the error e goes to (q + 1)/2 e^2): worst 1e-6 for q <= 31 (a
- * sweep of x over 2^-200..2^200). y^q by squaring in a fixed number of rounds, a factor of 1.0
- * where q has no bit, so that the lanes' loop has no branch. x is taken within [2^-1000,
- * 2^1000] (y^q then stays normal), the tests made on its bits (nonnegative doubles order as
- * their bits; comparisons of doubles kept gcc from vectorising the selects): a smaller x, 0
- * excepted, gets the bound's longer step, still finite; x == 0 gives +inf (an infinite step, as
- * exp(-log 0) did) and a larger x 0 (the step underflows: coefficients beyond 2^1000 of the
- * state's scale). */
-#if EULER_POISSON_SYM_TAYLOR_MAX_ORDER > 31
-#error "derive_euler_poisson_sym_taylor_rootinv squares in 5 rounds: q <= order <= 31"
-#endif
-static inline double derive_euler_poisson_sym_taylor_newton(double y, double x, int q, double iq)
-{
-    double b = y, r = q & 1 ? b : 1.0;
-    b *= b;
-    r *= q & 2 ? b : 1.0;
-    b *= b;
-    r *= q & 4 ? b : 1.0;
-    b *= b;
-    r *= q & 8 ? b : 1.0;
-    b *= b;
-    r *= q & 16 ? b : 1.0;
-    return y * iq * ((q + 1) - x * r);
-}
-
-static inline double derive_euler_poisson_sym_taylor_rootinv(double x, int q, double iq)
-{
-    const int64_t lo = INT64_C(0x0170000000000000), hi = INT64_C(0x7e70000000000000);  /* 2^-+1000 */
-    double xc, y, m;
-    int64_t ix, iy, em;
-    int small, large, zero;
-    memcpy(&ix, &x, sizeof ix);
-    small = ix < lo;
-    large = ix > hi;
-    zero = ix <= 0;
-    ix = small ? lo : ix;
-    ix = large ? hi : ix;
-    memcpy(&xc, &ix, sizeof xc);
-    iy = (int64_t)(0x1p52 * (1023.0 + 0x1.ff7a7dce61f84p+9 * iq) - (double)ix * iq);
-    em = (iy & INT64_C(0x000fffffffffffff)) | INT64_C(0x3ff0000000000000);
-    iy &= INT64_C(0x7ff0000000000000);
-    memcpy(&m, &em, sizeof m);
-    memcpy(&y, &iy, sizeof y);
-    m -= 1.0;
-    y *= 0x1.00712efc118f4p+0 + m * (0x1.50b5568ee2b76p-1 + m * 0x1.5946fd1bc275dp-2);
-    y = derive_euler_poisson_sym_taylor_newton(y, xc, q, iq);
-    y = derive_euler_poisson_sym_taylor_newton(y, xc, q, iq);
-    y = large ? 0.0 : y;
-    return zero ? HUGE_VAL : y;
-}
-
-/* The step, fac min(n1^(-1/(p-1)), n2^(-1/p)) (Jorba and Zou; n1, n2 the scaled last two
- * coefficients, q1 = p - 1, q2 = p, iq their inverses). */
-static inline double derive_euler_poisson_sym_taylor_step(double n1, double n2, int q1, double iq1, int q2, double iq2, double fac)
-{
-    double y1 = derive_euler_poisson_sym_taylor_rootinv(n1, q1, iq1), y2 = derive_euler_poisson_sym_taylor_rootinv(n2, q2, iq2);
-    return fac * (y1 < y2 ? y1 : y2);
-}
 
 /* The samples whose states are made and whose outputs are not yet: v[c][k] is column c of
  * sample k0 + k, k < n (as derive_euler_poisson_sym_taylor_horner_block leaves them). The output map runs over
  * DERIVE_EULER_POISSON_SYM_TAYLOR_KO of them at a time, many steps' samples (derive_euler_poisson_sym_taylor_outputs_flush): called per step
- * (a dozen samples), a quarter of its vectors were padding, and it set up its constants at
- * every step (the bench's 1000 tops, every output: the lanes' C call 37.95 -> 33.26 ms). */
+ * (a dozen samples), a quarter of its vectors would be padding, and it would set up its
+ * constants at every step. */
 typedef struct {
     double v[DERIVE_EULER_POISSON_SYM_TAYLOR_NV][DERIVE_EULER_POISSON_SYM_TAYLOR_KO];
     long k0;
@@ -574,375 +439,54 @@ static void derive_euler_poisson_sym_taylor_outputs_flush(derive_euler_poisson_s
         out + k0 + 16 * n_out, out + k0 + 17 * n_out);
 }
 
-/* The dense output of one step (from t, of length h, to tn) with the outputs: the samples from
- * *k_io on with t_out <= tn (the one at tn: tau = h exactly) from the series u (the states'
- * through order, the right-hand side's nodes through order - 1; the outputs' series are added
- * to it), a block of samples at a time: the states into y_out, and into sa, whose outputs the
- * caller has made (derive_euler_poisson_sym_taylor_outputs_flush) once sa is full and when it is done; *k_io past them.
- * The samples follow sa's, every step's in turn. DERIVE_OK, or the failure at the first sample
- * with a non-finite state (st says where, *k_io is its block's first; sa holds the samples
- * before it). The scalar solver calls it at every step; the lanes drivers with a lane's series
- * copied out (the full grid's at every step of a lane, the final-only one at a lane's last
- * step): the same numbers. */
-static int derive_euler_poisson_sym_taylor_dense(double u[][EULER_POISSON_SYM_TAYLOR_MAX_ORDER + 1], int order, double t, double h, double tn, double fac,
-        double rtol, double floor_, const double *p, const double *t_out, long n_out, long *k_io,
-        double *y_out, double *out, derive_euler_poisson_sym_taylor_samples *sa, derive_stats *st)
-{
-    double w[EULER_POISSON_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_EULER_POISSON_SYM_TAYLOR_NW], taub[DERIVE_EULER_POISSON_SYM_TAYLOR_KB];
-    long k_out = *k_io;
-    int series, nb, kb, bad, at, i, j;
-    derive_euler_poisson_sym_taylor_jet_outputs(p, order, u, w);
-    series = derive_euler_poisson_sym_taylor_outputs_converged(w, order, h, fac, rtol, floor_);
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-    if (!series)  /* (this step's samples leave sa: those before have their outputs first) */
-        derive_euler_poisson_sym_taylor_outputs_flush(sa, p, t_out, n_out, out);
-#else
-    (void)series;
-    (void)out;
-#endif
-    while (k_out < n_out && t_out[k_out] <= tn) {
-        /* the step's samples a block at a time (the sample at tn: tau = h exactly) */
-        for (nb = 0; nb < DERIVE_EULER_POISSON_SYM_TAYLOR_KB && k_out + nb < n_out && t_out[k_out + nb] <= tn; ++nb)
-            taub[nb] = t_out[k_out + nb] < tn ? t_out[k_out + nb] - t : h;
-        for (kb = nb; kb % DERIVE_EULER_POISSON_SYM_TAYLOR_HW; ++kb)
-            taub[kb] = 0.0;  /* (the block's Horner reads HW at a time) */
-        if (sa->n > 0 && (sa->n + DERIVE_EULER_POISSON_SYM_TAYLOR_KB > DERIVE_EULER_POISSON_SYM_TAYLOR_KO || sa->k0 + sa->n != k_out))
-            derive_euler_poisson_sym_taylor_outputs_flush(sa, p, t_out, n_out, out);
-        if (sa->n == 0)
-            sa->k0 = k_out;
-        at = sa->n;
-        derive_euler_poisson_sym_taylor_horner_block(w, order, nb, taub, sa->v, at);
-        /* the states into y_out, up to the first sample with a non-finite one (looked for
-         * only when the block has one) */
-        kb = nb;
-        bad = euler_poisson_sym_NY;
-        if (!derive_euler_poisson_sym_taylor_states_finite(at, nb, sa->v))
-            for (kb = 0; kb < nb; ++kb) {
-                for (bad = 0; bad < euler_poisson_sym_NY && isfinite(sa->v[bad][at + kb]); ++bad)
-                    ;
-                if (bad < euler_poisson_sym_NY)
-                    break;
-            }
-        for (j = 0; j < kb; ++j)
-            for (i = 0; i < euler_poisson_sym_NY; ++i)
-                y_out[(k_out + j) * euler_poisson_sym_NY + i] = sa->v[i][at + j];
-        /* the outputs of those samples: later, from sa */
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-        if (!series) {  /* the output map on the state, as the other methods do, now */
-            double v[euler_poisson_sym_NY], o[18];
-            for (j = 0; j < kb; ++j) {
-                for (i = 0; i < euler_poisson_sym_NY; ++i)
-                    v[i] = sa->v[i][at + j];
-                euler_poisson_sym_observables(t_out[k_out + j], v, p, o);
-                for (i = 0; i < 18; ++i)
-                    out[i * n_out + k_out + j] = o[i];
-            }
-        } else
-#endif
-            sa->n += kb;
-        if (kb < nb) {
-            *k_io = k_out;
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out + kb], bad);
-        }
-        k_out += nb;
-    }
-    *k_io = k_out;
-    return DERIVE_OK;
-}
 
-/* ======================================================================================== */
-/* taylor: Taylor series from the model's expression graph, order and step from the tolerance (Jorba-Zou), dense output from the series. */
+/* ---------------------------------------------------------------------------------------- */
+/* The drivers (derive_taylor.inc), compiled for this model.                                 */
 
-/* Jorba and Zou (2005): the order from the tolerance (returned), the step from the last two
- * coefficients, h = fac min(n1^(-1/(p-1)), n2^(-1/p)), with heyoka's safety factor
- * exp(-0.7/(p-1)) on rho / e^2 (fac), the roots' inverse exponents ip1 = 1/(p-1),
- * ip2 = 1/p, and the norms' floor atol/rtol: the scalar and the lanes drivers' constants. */
-static int derive_euler_poisson_sym_taylor_control_taylor(double rtol, double atol, double *fac, double *ip1, double *ip2,
-        double *floor_)
-{
-    int order = (int)ceil(-log(rtol > 0.0 ? rtol : atol) / 2.0) + 1;
-    if (order < 2)
-        order = 2;
-    if (order > 30)
-        order = 30;
-    *fac = exp(-2.0 - 0.7 / (order - 1));
-    *ip1 = 1.0 / (order - 1);
-    *ip2 = 1.0 / order;
-    *floor_ = rtol > 0.0 ? atol / rtol : 0.0;
-    return order;
-}
-
-/* The solver's steps; with out (n_out > 1), the outputs too: out[j*n_out + k] = output j at
- * t_out[k], with the sin, cos and exp calls from their series, as they come (not yet canonical
- * or checked), except those of the samples left in sa. */
-static int derive_euler_poisson_sym_taylor_steps_taylor(const double *y0, const double *p, const double *t_out,
-        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
-derive_euler_poisson_sym_taylor_samples *sa, derive_stats *st)
-{
-    derive_stats local;
-    double u[DERIVE_EULER_POISSON_SYM_TAYLOR_NODES][EULER_POISSON_SYM_TAYLOR_MAX_ORDER + 1], y[euler_poisson_sym_NY];
-    double t, tn, t_end, h, fac, ip1, ip2, floor_, sc, n1, n2, a1, a2, chk;
-    long k_out;
-    int i, j, order, last;
-
-    if (!st)
-        st = &local;
-    derive_euler_poisson_sym_taylor_stats_init(st);
-    if (!y0 || !y_out || !derive_euler_poisson_sym_taylor_times_ok(t_out, n_out) || !(rtol >= 0.0) || !(atol >= 0.0)
-        || !isfinite(rtol) || !isfinite(atol) || (rtol == 0.0 && atol == 0.0) || max_steps < 1)
-        return derive_euler_poisson_sym_taylor_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
-
-    order = derive_euler_poisson_sym_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);
-
-    t = t_out[0];
-    for (i = 0; i < euler_poisson_sym_NY; ++i)
-        y[i] = y_out[i] = y0[i];
-    for (i = 0; i < euler_poisson_sym_NY; ++i)
-        if (!isfinite(y[i]))
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, t, i);
-    if (n_out == 1)
-        return DERIVE_OK;
-    t_end = t_out[n_out - 1];
-
-    k_out = out ? 0 : 1;  /* with outputs, the first sample too (the first step's series at 0) */
-    for (;;) {
-        if (st->nstep >= max_steps)
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_MAX_STEPS, t, -1);
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-        if (derive_euler_poisson_sym_stop)
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_INTERRUPTED, t, -1);
-#endif
-        st->nfev++;
-        if ((i = derive_euler_poisson_sym_taylor_jet(t, y, p, order, u)))
-            return derive_euler_poisson_sym_taylor_fail_rc(st, t, i);
-        /* A NaN or an infinity anywhere in the expansion reaches the last coefficients (or the
-         * evaluated state, checked there): one sum over them, the culprit looked for only then. */
-        chk = 0.0;
-        for (i = 0; i < euler_poisson_sym_NY; ++i)
-            chk += u[i][order - 1] + u[i][order];
-        if (!isfinite(chk)) {
-            for (i = 0; i < euler_poisson_sym_NY; ++i)
-                for (j = 1; j <= order; ++j)
-                    if (!isfinite(u[i][j]))
-                        return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, t, i);
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, t, -1);
-        }
-
-        /* The last two coefficients against each state's own scale S_i = max(|y_i|, atol/rtol)
-         * (1 when rtol = 0) for the states that feed something back (9 of 9: all);
-         * a state that feeds nothing back (a cyclic angle, a quadrature) counts against the scale
-         * of its rate, max(|y_i,1|, atol/rtol): its truncation error is controlled, its growth
-         * never loosens the control (in u = cos(beta) form the integrand of alpha, 1/(1 -+ u(t)),
-         * is singular nearer than any singularity of u: steps from u alone left alpha off).
-         * (heyoka's single scale max_i |y_i| was tried: the small states, a quaternion beside a
-         * fast spin, then lose the tolerance — axis errors up to 70 rtol on the exact scenes.) */
-        /* (max as a comparison, as the lanes driver takes it: the coefficients are finite here
-         * (the check sum), and where a quotient is not (0/0 at a zero scale) the comparison
-         * keeps n1 as fmax does; glibc's fmax is a call) */
-        n1 = n2 = 0.0;
-        sc = fabs(y[0]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[0][order - 1]) / sc;
-        a2 = fabs(u[0][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[1]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[1][order - 1]) / sc;
-        a2 = fabs(u[1][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[2]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[2][order - 1]) / sc;
-        a2 = fabs(u[2][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[3]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[3][order - 1]) / sc;
-        a2 = fabs(u[3][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[4]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[4][order - 1]) / sc;
-        a2 = fabs(u[4][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[5]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[5][order - 1]) / sc;
-        a2 = fabs(u[5][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[6]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[6][order - 1]) / sc;
-        a2 = fabs(u[6][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[7]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[7][order - 1]) / sc;
-        a2 = fabs(u[7][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        sc = fabs(y[8]);
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        a1 = fabs(u[8][order - 1]) / sc;
-        a2 = fabs(u[8][order]) / sc;
-        n1 = a1 > n1 ? a1 : n1;
-        n2 = a2 > n2 ? a2 : n2;
-        /* h = fac min(n1^(-1/(p-1)), n2^(-1/p)); all-zero coefficients (a polynomial
-         * solution) give an infinite step. */
-        h = derive_euler_poisson_sym_taylor_step(n1, n2, order - 1, ip1, order, ip2, fac);
-        last = !(t + h < t_end);
-        if (last)
-            h = t_end - t;
-        if (h < 16.0 * DBL_EPSILON * fabs(t) || !(h >= DBL_MIN)) {
-            st->h_fail = h;
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_STEP_UNDERFLOW, t, -1);
-        }
-        tn = last ? t_end : t + h;
-        st->nstep++;
-        st->naccept++;
-
-        /* Dense output: the series itself at every requested time inside the step. */
-        if (out && k_out < n_out && t_out[k_out] <= tn
-            && (i = derive_euler_poisson_sym_taylor_dense(u, order, t, h, tn, fac, rtol, floor_, p, t_out, n_out, &k_out, y_out, out, sa, st)))
-            return i;
-        while (k_out < n_out && t_out[k_out] < tn) {
-            if ((i = derive_euler_poisson_sym_taylor_eval(u, order, t_out[k_out] - t, y_out + k_out * euler_poisson_sym_NY)) >= 0)
-                return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, t_out[k_out], i);
-            ++k_out;
-        }
-        if ((i = derive_euler_poisson_sym_taylor_eval(u, order, h, y)) >= 0)
-            return derive_euler_poisson_sym_taylor_fail(st, DERIVE_NONFINITE, tn, i);
-#ifdef DERIVE_MEASURES
-        if (derive_euler_poisson_sym_measuring)
-            euler_poisson_sym_measure_series(t, h, order, u, y, p);
-#endif
-        if (k_out < n_out && t_out[k_out] == tn) {
-            memcpy(y_out + k_out * euler_poisson_sym_NY, y, sizeof y);
-            ++k_out;
-        }
-        t = tn;
-        if (last)
-            return DERIVE_OK;
-    }
-}
-
-/* The solver: its steps, then the outputs of the samples they left (those of every sample
- * whose state was made, a failure's too). */
-static int derive_euler_poisson_sym_taylor_solve_taylor(const double *y0, const double *p, const double *t_out,
-        long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
-        derive_stats *st)
-{
-    derive_euler_poisson_sym_taylor_samples sa;
-    int rc;
-    sa.n = 0;
-    rc = derive_euler_poisson_sym_taylor_steps_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, out, &sa, st);
-    if (out)
-        derive_euler_poisson_sym_taylor_outputs_flush(&sa, p, t_out, n_out, out);
-    return rc;
-}
-
-int euler_poisson_sym_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
-{
-    return derive_euler_poisson_sym_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, NULL, st);
-}
-
-int euler_poisson_sym_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st)
-{
-    long b;
-    int rc, status = DERIVE_OK;
-    if (n_batch < 0 || (n_batch > 0 && (!y0s || !y_out || !st)))
-        return DERIVE_BAD_ARGS;
-    for (b = 0; b < n_batch; ++b) {
-        rc = euler_poisson_sym_solve_taylor(y0s + b * euler_poisson_sym_NY, ps ? ps + b * euler_poisson_sym_NP : ps, t_out, n_out,
-                rtol, atol, max_steps, y_out + b * n_out * euler_poisson_sym_NY, st + b);
-        if (rc && !status)
-            status = rc;
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-        if (rc == DERIVE_INTERRUPTED)
-            return derive_euler_poisson_sym_rest_interrupted(b + 1, n_batch, st);
-#endif
-    }
-    return status;
-}
-#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
-
+/* Per state: 1 when it feeds something back (its own scale controls the step), 0 for one that
+ * feeds nothing back (a cyclic angle, a quadrature: its rate's scale does). */
+static const int derive_euler_poisson_sym_taylor_controlled[euler_poisson_sym_NY] = { 1, 1, 1, 1, 1, 1, 1, 1, 1 };
 #if euler_poisson_sym_NOBS != 18
 #error "euler_poisson_sym.h: euler_poisson_sym_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
 #endif
 
-/* The solve with the outputs from the series, made canonical and checked as
- * euler_poisson_sym_outputs_checked does (a single sample: euler_poisson_sym_outputs_checked itself). */
-static int derive_euler_poisson_sym_taylor_solve_outputs_taylor(const double *y0, const double *p,
-        const double *t_out, long n_out, double rtol, double atol, long max_steps, double *y_out, double *out,
-        derive_stats *st)
-{
-    int rc = derive_euler_poisson_sym_taylor_solve_taylor(y0, p, t_out, n_out, rtol, atol, max_steps, y_out, n_out > 1 ? out : NULL, st);
-    if (rc != DERIVE_OK)
-        return rc;
-    if (n_out == 1)
-        return euler_poisson_sym_outputs_checked(n_out, t_out, y_out, p, out, st);
-    derive_euler_poisson_sym_canonical_angles(n_out, out, out + n_out, out + 2 * n_out);
-    return euler_poisson_sym_outputs_finite(n_out, t_out, out, st);  /* (the bit test: ~3x a comparison's speed) */
-}
+#define DERIVE_MODEL euler_poisson_sym
+#define DERIVE_NY euler_poisson_sym_NY
+#define DERIVE_NP euler_poisson_sym_NP
+#define DERIVE_NOBS 18
+#define DERIVE_TS(name) DERIVE_CAT(derive_euler_poisson_sym_taylor_, name)
+#define DERIVE_T_MAXO EULER_POISSON_SYM_TAYLOR_MAX_ORDER
+#define DERIVE_T_NODES DERIVE_EULER_POISSON_SYM_TAYLOR_NODES
+#define DERIVE_T_CONTROLLED derive_euler_poisson_sym_taylor_controlled
+#define DERIVE_T_POINTWISE 1
+#define DERIVE_T_NW DERIVE_EULER_POISSON_SYM_TAYLOR_NW
+#define DERIVE_T_KB DERIVE_EULER_POISSON_SYM_TAYLOR_KB
+#define DERIVE_T_KO DERIVE_EULER_POISSON_SYM_TAYLOR_KO
+#define DERIVE_T_HW DERIVE_EULER_POISSON_SYM_TAYLOR_HW
+#ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
+#define DERIVE_T_SIMULATE 1
+#else
+#define DERIVE_T_SIMULATE 0
+#endif
+#define DERIVE_HAS_ANGLES 1
 
-/* The whole-simulation drivers (init map, solve with the outputs), the other methods' own. */
-int euler_poisson_sym_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_sym_simulate_checked_taylor(in, p, t_out, n_out, rtol, atol, max_steps, 0, y_work, out, st);
-}
+#include "derive_taylor.inc"
 
-int euler_poisson_sym_simulate_checked_taylor(const double *in, double *p, const double *t_out,
-        long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
-{
-    derive_stats local;
-    if (!st)
-        st = &local;
-    if (!in || !y_work || !out || !derive_euler_poisson_sym_taylor_times_ok(t_out, n_out)) {
-        derive_euler_poisson_sym_stats_init(st);
-        return derive_euler_poisson_sym_fail(st, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
-    }
-    if (euler_poisson_sym_init(in, p, y_work)) {
-        derive_euler_poisson_sym_stats_init(st);
-        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y_work, euler_poisson_sym_NY));
-    }
-    if (pole_check && !euler_poisson_sym_pole_clear(y_work, p, pole_check)) {
-        derive_euler_poisson_sym_stats_init(st);
-        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
-    }
-    return derive_euler_poisson_sym_taylor_solve_outputs_taylor(y_work, p, t_out, n_out, rtol, atol, max_steps, y_work, out, st);
-}
-
-int euler_poisson_sym_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
-{
-    long b;
-    int rc, status = DERIVE_OK;
-    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
-        return DERIVE_BAD_ARGS;
-    for (b = 0; b < n_batch; ++b) {
-        rc = euler_poisson_sym_simulate_checked_taylor(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out,
-                n_out, rtol, atol, max_steps, pole_check, y_work + b * n_out * euler_poisson_sym_NY,
-                out + b * n_out * euler_poisson_sym_NOBS, st + b);
-        if (rc && !status)
-            status = rc;
-        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
-    }
-    return status;
-}
-#endif /* SIMULATE */
+#undef DERIVE_MODEL
+#undef DERIVE_NY
+#undef DERIVE_NP
+#undef DERIVE_NOBS
+#undef DERIVE_TS
+#undef DERIVE_T_MAXO
+#undef DERIVE_T_NODES
+#undef DERIVE_T_CONTROLLED
+#undef DERIVE_T_POINTWISE
+#undef DERIVE_T_NW
+#undef DERIVE_T_KB
+#undef DERIVE_T_KO
+#undef DERIVE_T_HW
+#undef DERIVE_T_SIMULATE
+#undef DERIVE_HAS_ANGLES
 #ifdef DERIVE_EULER_POISSON_SYM_SIMULATE
 
 /* The final-only solve of taylor: the scalar solver over the m <= 2 times t2, its outputs
@@ -964,7 +508,7 @@ static int derive_euler_poisson_sym_taylor_final_outputs_taylor(const double *y0
         return rc;
     for (j = 0; j < euler_poisson_sym_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_euler_poisson_sym_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return euler_poisson_sym_outputs_finite(1, t2 + 1, out, st);
 }
 /* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
@@ -982,12 +526,12 @@ static int derive_euler_poisson_sym_final_one_taylor(const double *in, double *p
     t2[0] = t_out[0];
     t2[1] = t_out[n_out - 1];
     if (euler_poisson_sym_init(in, p, y2)) {
-        derive_euler_poisson_sym_stats_init(st);
-        return derive_euler_poisson_sym_fail(st, DERIVE_NONFINITE, t_out[0], derive_euler_poisson_sym_first_nonfinite(y2, euler_poisson_sym_NY));
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, euler_poisson_sym_NY));
     }
     if (pole_check && !euler_poisson_sym_pole_clear(y2, p, pole_check)) {
-        derive_euler_poisson_sym_stats_init(st);
-        return derive_euler_poisson_sym_fail(st, DERIVE_RANGE, t_out[0], -1);
+        derive_stats_init(st);
+        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
     }
     rc = derive_euler_poisson_sym_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
     return rc;
@@ -1002,9 +546,9 @@ int euler_poisson_sym_simulate_final_batch_taylor(long n_batch, const double *in
     if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
         return DERIVE_BAD_ARGS;
     for (b = 0; b < n_batch; ++b) {
-        if (!derive_euler_poisson_sym_taylor_times_ok(t_out, n_out)) {
-            derive_euler_poisson_sym_stats_init(st + b);
-            rc = derive_euler_poisson_sym_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
+        if (!derive_times_ok(t_out, n_out)) {
+            derive_stats_init(st + b);
+            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
         } else {
             rc = derive_euler_poisson_sym_final_one_taylor(ins + b * euler_poisson_sym_NIN, ps + b * euler_poisson_sym_NP, t_out, n_out,
                     rtol, atol, max_steps, pole_check, y_final + b * euler_poisson_sym_NY, out_final + b * euler_poisson_sym_NOBS, st + b);
@@ -1012,7 +556,7 @@ int euler_poisson_sym_simulate_final_batch_taylor(long n_batch, const double *in
         if (rc && !status)
             status = rc;
         if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, rc);
+            return derive_rest_with(b + 1, n_batch, st, rc);
     }
     return status;
 }
@@ -1031,9 +575,9 @@ const int euler_poisson_sym_taylor_has_lanes = 1;
  * [order][lane]; an elementwise node is a loop over the lanes, which gcc vectorises at -O3, and
  * the rules' sums (the Cauchy products, the quotient's, ...) and the step's Horner sums are
  * written on a vector of the W lanes (GNU C's vector extension: gcc and clang; the lanes are
- * compiled only there), one register for each sum: as loops over arrays of lanes gcc kept the
- * sums in memory and split them into halves it stored apart and loaded whole, and the 1000
- * tops of the bench took 7.4 instead of 5.9 ms (tests/test_taylor_lanes.py checks the bits).
+ * compiled only there), one register for each sum: as loops over arrays of lanes gcc keeps the
+ * sums in memory and splits them into halves it stores apart and loads whole
+ * (tests/test_taylor_lanes.py checks the bits).
  * W is the vector width (the library is built with -march=native). Each lane does the scalar
  * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
  * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
@@ -1239,7 +783,7 @@ static int derive_euler_poisson_sym_taylor_lanes_last_taylor(double u[][EULER_PO
     memcpy(y, y2 + euler_poisson_sym_NY, sizeof(double) * euler_poisson_sym_NY);
     for (j = 0; j < euler_poisson_sym_NOBS; ++j)
         out[j] = o2[2 * j + 1];
-    derive_euler_poisson_sym_canonical_angles(1, out, out + 1, out + 2);
+    derive_canonical_angles(1, out, out + 1, out + 2);
     return euler_poisson_sym_outputs_finite(1, &t_end, out, st);
 }
 
@@ -1271,9 +815,8 @@ static int derive_euler_poisson_sym_taylor_lanes_load_taylor(int l, long *next, 
  * series the dense output reads (9 nodes through the order), until the
  * buffer is full or the trajectory ends; then their samples are made in order, as the scalar
  * solver makes them (derive_euler_poisson_sym_taylor_dense). A trajectory's rows are so written in one go, each in turn:
- * made step by step beside the other lanes' (eight trajectories' 18 rows, 1.4 MB in flight),
- * they left the caches before the trajectory's angles were made canonical, and the lanes took
- * 66 ms where the scalar driver takes 49 (the bench's 1000 tops). */
+ * made step by step beside the other lanes' (eight trajectories' 18 rows in flight), they
+ * would leave the caches before the trajectory's angles are made canonical. */
 #define DERIVE_EULER_POISSON_SYM_TAYLOR_LBUF 2048
 #define DERIVE_EULER_POISSON_SYM_TAYLOR_LREC(order) (6 + 9 * ((order) + 1))
 
@@ -1375,18 +918,18 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                 sl = st + idx[l];
                 if (!(out && derive_euler_poisson_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_sym_NOBS, sl)))
-                    derive_euler_poisson_sym_taylor_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
+                    derive_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
                 run[l] = derive_euler_poisson_sym_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
                 left -= !run[l];
                 k_out[l] = kr[l] = sn[l] = 0;
             }
         if (left == 0)
             break;
-        if (derive_euler_poisson_sym_stop) {
+        if (derive_interrupted()) {
             for (l = 0; l < DERIVE_EULER_POISSON_SYM_TAYLOR_LANES; ++l)
                 if (run[l])
-                    derive_euler_poisson_sym_taylor_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
-            derive_euler_poisson_sym_rest_interrupted(next, n_batch, st);
+                    derive_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
+            derive_rest_with(next, n_batch, st, DERIVE_INTERRUPTED);
             return DERIVE_INTERRUPTED;
         }
         derive_euler_poisson_sym_taylor_jet_lanes(t, y, p, order, u, bad);
@@ -1487,18 +1030,18 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                     y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_sym_NOBS, sl))
                 continue;  /* (a sample of the steps before failed first) */
             if (bad[l]) {
-                derive_euler_poisson_sym_taylor_fail_rc(sl, t[l], 1);
+                derive_fail_rc(sl, t[l], 1);
                 continue;
             }
             if (!isfinite(chk[l])) {
                 for (i = 0; i < euler_poisson_sym_NY && sl->status == DERIVE_OK; ++i)
                     for (j = 1; j <= order; ++j)
                         if (!isfinite(u[i][j][l])) {
-                            derive_euler_poisson_sym_taylor_fail(sl, DERIVE_NONFINITE, t[l], i);
+                            derive_fail(sl, DERIVE_NONFINITE, t[l], i);
                             break;
                         }
                 if (sl->status == DERIVE_OK)
-                    derive_euler_poisson_sym_taylor_fail(sl, DERIVE_NONFINITE, t[l], -1);
+                    derive_fail(sl, DERIVE_NONFINITE, t[l], -1);
                 continue;
             }
             h = hs[l];
@@ -1510,7 +1053,7 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_sym_NOBS, sl))
                     continue;
                 sl->h_fail = h;
-                derive_euler_poisson_sym_taylor_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
+                derive_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
                 continue;
             }
             sl->nstep++;
@@ -1605,7 +1148,7 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                 y[i][l] = yn[i][l];
                 if (!isfinite(yn[i][l]) && !(out && derive_euler_poisson_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
                             y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_sym_NOBS, sl))) {
-                    derive_euler_poisson_sym_taylor_fail(sl, DERIVE_NONFINITE, tn, i);
+                    derive_fail(sl, DERIVE_NONFINITE, tn, i);
                     break;
                 }
             }
@@ -1616,7 +1159,7 @@ static int derive_euler_poisson_sym_taylor_lanes_run_taylor(long n_batch, double
                         y_work + idx[l] * ystride, out + idx[l] * n_out * euler_poisson_sym_NOBS, sl))
                     continue;
                 ob = out + idx[l] * n_out * euler_poisson_sym_NOBS;
-                derive_euler_poisson_sym_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
+                derive_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
                 euler_poisson_sym_outputs_finite(n_out, t_out, ob, sl);
                 continue;
             }
@@ -1645,17 +1188,17 @@ static int derive_euler_poisson_sym_taylor_lanes_starts_taylor(long n_batch, con
     int i;
     for (b = 0; b < n_batch; ++b) {
         double *y = y0s + b * ystride, *p = ps + b * euler_poisson_sym_NP;
-        derive_euler_poisson_sym_stats_init(st + b);
+        derive_stats_init(st + b);
         if (euler_poisson_sym_init(ins + b * euler_poisson_sym_NIN, p, y))
-            derive_euler_poisson_sym_fail(st + b, DERIVE_NONFINITE, t0, derive_euler_poisson_sym_first_nonfinite(y, euler_poisson_sym_NY));
+            derive_fail(st + b, DERIVE_NONFINITE, t0, derive_first_nonfinite(y, euler_poisson_sym_NY));
         else if (pole_check && !euler_poisson_sym_pole_clear(y, p, pole_check)) {
-            derive_euler_poisson_sym_fail(st + b, DERIVE_RANGE, t0, -1);
-            return derive_euler_poisson_sym_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
+            derive_fail(st + b, DERIVE_RANGE, t0, -1);
+            return derive_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
         }
         else
             for (i = 0; i < euler_poisson_sym_NY; ++i)
                 if (!isfinite(y[i])) {
-                    derive_euler_poisson_sym_fail(st + b, DERIVE_NONFINITE, t0, i);
+                    derive_fail(st + b, DERIVE_NONFINITE, t0, i);
                     break;
                 }
     }
@@ -1679,7 +1222,7 @@ static int derive_euler_poisson_sym_taylor_lanes_status_taylor(int rc, long n_ba
  * and says so per trajectory, as ever; a single output time too). */
 static int derive_euler_poisson_sym_taylor_lanes_args_ok_taylor(const double *t_out, long n_out, double rtol, double atol, long max_steps)
 {
-    return n_out >= 2 && derive_euler_poisson_sym_taylor_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
+    return n_out >= 2 && derive_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
         && isfinite(atol) && !(rtol == 0.0 && atol == 0.0) && max_steps >= 1;
 }
 
