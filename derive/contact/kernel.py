@@ -1,0 +1,102 @@
+"""The contact equations as C: one evaluator per shape and law, compiled and loaded once.
+
+The derivation (:mod:`derive.contact.equations`) is printed block by block with common
+subexpressions shared inside each block (``sympy.cse``): the contact point a(n), the sliding
+normal force and contact force, the rolling system (A, b) whose 3×3 solve is in the template,
+Euler's equations for a given force, and the monitored integrals. The template
+``templates/contact/contact.c.j2`` holds the state layout, the quaternion kinematics and
+the phase switch; :func:`kernel` compiles it through the package's compile cache.
+"""
+from __future__ import annotations
+
+import ctypes
+import functools
+
+import numpy as np
+import sympy as sp
+
+from derive.codegen.render import render
+from derive.contact.equations import FORCE, I1, I2, I3, MASS, GRAV, contact, omega_dot
+from derive.contact.geometry import OFFSET, RADIUS
+from derive.contact.integrals import expressions
+from derive.contact.laws import EPS, LAWS, MU, NORMAL
+from derive.runtime.cbuild import compile_library
+
+#: The parameter vector's layout (the C names are the symbols' names).
+PARAMS = (I1, I2, I3, MASS, GRAV, RADIUS, OFFSET, MU, EPS)
+PARAM_NAMES = tuple(str(p) for p in PARAMS)
+#: The evaluator's ``out`` array, in order.
+OUTPUTS = ("N", "ft_x", "ft_y", "ft_z", "slip_x", "slip_y", "slip_z", "gap", "power",
+           "a_x", "a_y", "a_z", "u_n", "energy", "p_alpha", "p_gamma", "jellett", "routh")
+STATE = ("q0", "q1", "q2", "q3", "w1", "w2", "w3", "x", "y", "z", "vx", "vy", "vz")
+PHASES = {"slide": 0, "roll": 1, "flight": 2}
+
+
+def c_block(assign: list[tuple[str, sp.Expr]]) -> str:
+    """C statements assigning each expression to its (already declared) name, subexpressions
+    shared through ``sympy.cse``."""
+    subs, reduced = sp.cse([e for _, e in assign], symbols=sp.numbered_symbols("x"), optimizations="basic")
+    lines = [f"const double {s} = {sp.ccode(e)};" for s, e in subs]
+    lines += [f"{name} = {sp.ccode(e)};" for (name, _), e in zip(assign, reduced)]
+    return "\n".join(lines)
+
+
+@functools.lru_cache(maxsize=None)
+def source(shape: str, law: str) -> str:
+    """The C source of the evaluator for ``shape`` under the contact law ``law``."""
+    c = contact(shape)
+    lw = LAWS[law]
+    geometry = c_block([(f"a{i + 1}", c.a[i]) for i in range(3)])
+    slide = ""
+    if lw.slides:
+        N, f = c.sliding(lw)
+        slide = c_block([("N", N)] + [(f"f{i + 1}", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)])
+    roll = ""
+    if lw.rolls:
+        A, b = c.rolling
+        roll = c_block([(f"A[{3 * i + j}]", A[i, j]) for i in range(3) for j in range(3)]
+                       + [(f"b[{i}]", b[i]) for i in range(3)])
+    accel = c_block([(f"wd{i + 1}", e) for i, e in enumerate(omega_dot(c.a, FORCE))])
+    ints = expressions(c)
+    monitors = c_block([(f"out[{13 + i}]", e) for i, e in enumerate(ints.values())])
+
+    return render("contact/contact.c.j2", prefix=f"contact_{shape}_{law}", shape=shape, law=law,
+                  ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS), params=PARAM_NAMES,
+                  outputs=OUTPUTS, geometry=geometry, slide=slide, roll=roll, accel=accel,
+                  monitors=monitors)
+
+
+class Kernel:
+    """A loaded evaluator: ``eval(phase, y, p, dir)`` → (dy/dt, outputs), NumPy arrays."""
+
+    def __init__(self, shape: str, law: str):
+        name = f"contact_{shape}_{law}"
+        lib = compile_library(name, {f"{name}.c": source(shape, law)}, f"{name}.c")
+        self.fn = getattr(lib, f"{name}_eval")
+        self.fn.restype = ctypes.c_int
+        self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
+        self.dy = np.zeros(len(STATE))
+        self.out = np.zeros(len(OUTPUTS))
+        self._dy, self._out = self.dy.ctypes.data, self.out.ctypes.data
+        self.nfev = 0
+
+    def rhs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """dy/dt in ``phase``; a fresh array. Raises FloatingPointError outside the domain."""
+        y = np.ascontiguousarray(y, dtype=float)
+        self.nfev += 1
+        if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, None):
+            raise FloatingPointError("the contact is singular here")
+        return self.dy.copy()
+
+    def outputs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """The monitored outputs (``OUTPUTS``) at the state ``y`` in ``phase``; a fresh array."""
+        y = np.ascontiguousarray(y, dtype=float)
+        if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, self._out):
+            raise FloatingPointError("the contact is singular here")
+        return self.out.copy()
+
+
+@functools.lru_cache(maxsize=None)
+def kernel(shape: str, law: str) -> Kernel:
+    """The compiled evaluator of a shape and law (compiled once, then from the cache)."""
+    return Kernel(shape, law)

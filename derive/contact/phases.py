@@ -1,0 +1,271 @@
+"""The phases slide, roll and flight as separate vector fields, joined by located events.
+
+Each phase is integrated by DOP853 (SciPy's stepper, the right-hand side the compiled C
+evaluator of :mod:`derive.contact.kernel`); after every accepted step the phase's event
+functions are evaluated on the step's dense output and the first sign change is located by
+Brent's method. The rules:
+
+* slide → roll (exact Coulomb, event ``stick``): the slip u_t reverses along the direction it had
+  at the step's start, g = u_t(t)·u_t(t_k)/|u_t(t_k)| ≤ 0. The slip is set to zero (the
+  centre of mass's horizontal velocity takes the difference, so Jellett's J, which has no v,
+  is untouched) and the rolling force is computed: inside the cone |F_t| ≤ μN the body
+  rolls, outside it slides on in the predicted direction (below).
+* roll → slide (event ``slip``): the rolling force leaves the cone, g = μN − |F_t| ≤ 0. It
+  slides in the predicted direction d: the one along which the slip starts to grow under the
+  friction −μN d, found by a fixed point d ← u̇_t(d)/|u̇_t(d)| from d = −F_t/|F_t|.
+* slide or roll → flight (event ``lift-off``): N ≤ 0. The body flies as a free body.
+* flight → contact (event ``landing``): the gap z + a·n ≤ 0. An impact law changes the
+  velocities at once: a normal impulse P ẑ with restitution e (u_n⁺ = −e u_n⁻) on a frictionless
+  or sliding contact, the whole impulse that stops the contact point (u⁺ = 0) for rolling;
+  then the contact phase is chosen as at the start.
+
+A run records every switch (time, from, to, event) and refuses more than ``max_switches``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.integrate import DOP853
+from scipy.optimize import brentq
+
+from derive.contact.kernel import OUTPUTS, PHASES, Kernel
+from derive.contact.laws import Law
+from derive.errors import IntegrationError
+
+_O = {name: i for i, name in enumerate(OUTPUTS)}
+SLIDE, ROLL, FLIGHT = PHASES["slide"], PHASES["roll"], PHASES["flight"]
+PHASE_NAMES = {v: k for k, v in PHASES.items()}
+
+
+@dataclass
+class Switch:
+    """One phase change: when, from what to what, by which event, and the energy across it."""
+
+    t: float
+    before: str
+    after: str
+    event: str
+    energy_before: float
+    energy_after: float
+
+
+@dataclass
+class Run:
+    """What the event-driven integration gives: the samples, their phases and the switches."""
+
+    t: np.ndarray
+    y: np.ndarray
+    phase: np.ndarray
+    direction: np.ndarray
+    switches: list[Switch] = field(default_factory=list)
+    nfev: int = 0
+    nstep: int = 0
+
+
+def quaternion_matrix(q: np.ndarray) -> np.ndarray:
+    """R(q), body → inertial, for a quaternion (normalised here)."""
+    q0, q1, q2, q3 = q / np.linalg.norm(q)
+    return np.array([
+        [1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2)],
+        [2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3), 2 * (q2 * q3 - q0 * q1)],
+        [2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), 1 - 2 * (q1 * q1 + q2 * q2)]])
+
+
+class Phases:
+    """The event-driven integrator of one scene's model (a kernel, a law and its numbers)."""
+
+    def __init__(self, k: Kernel, law: Law, p: np.ndarray, restitution: float = 0.0,
+                 rtol: float = 1e-10, atol: float = 1e-12, max_steps: int = 1_000_000,
+                 max_switches: int = 10_000):
+        self.k, self.law, self.p = k, law, np.ascontiguousarray(p, dtype=float)
+        self.e, self.rtol, self.atol = restitution, rtol, atol
+        self.max_steps, self.max_switches = max_steps, max_switches
+        self.mu = p[7]
+
+    # ---- what the kernel says at a state
+    def out(self, phase, y, d):
+        return self.k.outputs(phase, y, self.p, d)
+
+    def slip(self, phase, y, d):
+        o = self.out(phase, y, d)
+        return o[_O["slip_x"]:_O["slip_z"] + 1]
+
+    # ---- events: name -> g(phase, y, d, ref); an event fires when g goes from ≥ 0 to < 0
+    def events(self, phase: int) -> list[str]:
+        if phase == FLIGHT:
+            return ["landing"]
+        names = ["lift-off"]
+        if self.law.switches:
+            names.append("stick" if phase == SLIDE else "slip")
+        return names
+
+    def g(self, name, phase, y, d, ref):
+        o = self.out(phase, y, d)
+        if name == "landing":
+            return o[_O["gap"]]
+        if name == "lift-off":
+            return o[_O["N"]]
+        if name == "slip":
+            return self.mu * o[_O["N"]] - np.linalg.norm(o[_O["ft_x"]:_O["ft_z"] + 1])
+        return float(o[_O["slip_x"]:_O["slip_z"] + 1] @ ref)  # stick
+
+    # ---- the switch rules
+    def predicted_direction(self, y: np.ndarray, ft: np.ndarray) -> np.ndarray:
+        """The slip direction d at zero slip along which −μN d makes the slip grow."""
+        d = -ft / np.linalg.norm(ft)
+        for _ in range(30):
+            dy = self.k.rhs(SLIDE, y, self.p, d)
+            h = 1e-7 * max(1.0, 1.0 / max(np.linalg.norm(y[4:7]), 1e-300))
+            acc = (self.slip(SLIDE, y + h * dy, d) - self.slip(SLIDE, y - h * dy, d)) / (2 * h)
+            new = acc / np.linalg.norm(acc)
+            if np.linalg.norm(new - d) < 1e-12:
+                return new
+            d = new
+        return d
+
+    def stop_slip(self, y: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """The state with the contact point's slip removed (the horizontal velocity adjusted)."""
+        y = y.copy()
+        y[10:13] -= self.slip(SLIDE, y, d)
+        return y
+
+    def contact_phase(self, y: np.ndarray, d: np.ndarray) -> tuple[int, np.ndarray]:
+        """The phase a body touching the plane takes at ``y``, and its slip direction."""
+        if not self.law.rolls:
+            return SLIDE, d
+        if self.law.slides:
+            s = self.slip(SLIDE, y, d)
+            if np.linalg.norm(s) > 1e-9 * max(1.0, np.linalg.norm(y[10:13])):
+                return SLIDE, s / np.linalg.norm(s)
+            y[:] = self.stop_slip(y, d)
+            o = self.out(ROLL, y, d)
+            ft = o[_O["ft_x"]:_O["ft_z"] + 1]
+            if np.linalg.norm(ft) <= self.mu * o[_O["N"]]:
+                return ROLL, d
+            return SLIDE, self.predicted_direction(y, ft)
+        y[:] = self.stop_slip(y, d)
+        return ROLL, d
+
+    def impact(self, y: np.ndarray) -> np.ndarray:
+        """The velocities just after landing (the impact law), positions unchanged."""
+        y = y.copy()
+        o = self.out(FLIGHT, y, np.zeros(3))
+        a = o[_O["a_x"]:_O["a_z"] + 1]
+        R = quaternion_matrix(y[:4])
+        inertia = np.diag(self.p[:3])
+        inv_in = R @ np.linalg.inv(inertia) @ R.T
+        ax = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        K = np.eye(3) / self.p[3] - ax @ inv_in @ ax
+        u = y[10:13] + np.cross(R @ y[4:7], a)
+        if self.law.name == "rolling":
+            P = -np.linalg.solve(K, u)
+        else:
+            P = np.array([0.0, 0.0, -(1 + self.e) * u[2] / K[2, 2]])
+        y[10:13] += P / self.p[3]
+        y[4:7] += np.linalg.solve(inertia, R.T @ np.cross(a, P))
+        return y
+
+    # ---- the integration
+    def run(self, y0: np.ndarray, t_out: np.ndarray, direction=(1.0, 0.0, 0.0)) -> Run:
+        t_end = float(t_out[-1])
+        d = np.asarray(direction, dtype=float)
+        y = np.array(y0, dtype=float)
+        phase, d = self.start(y, d)
+        ys = np.empty((len(t_out), len(y)))
+        phases = np.empty(len(t_out), dtype=int)
+        dirs = np.empty((len(t_out), 3))
+        nxt = 0
+        while nxt < len(t_out) and t_out[nxt] <= 0.0:
+            ys[nxt], phases[nxt], dirs[nxt] = y, phase, d
+            nxt += 1
+        run = Run(t_out, ys, phases, dirs)
+        t = 0.0
+        while t < t_end:
+            t, y, new = self._phase(run, phase, t, y, d, t_end, nxt)
+            nxt = new[0]
+            if new[1] is None:
+                break
+            event = new[1]
+            e0 = self.out(phase, y, d)[_O["energy"]]
+            before = PHASE_NAMES[phase]
+            if event == "lift-off":
+                phase = FLIGHT
+            elif event == "landing":
+                y = self.impact(y)
+                phase, d = self.contact_phase(y, d)
+                if phase != FLIGHT and self.out(phase, y, d)[_O["N"]] < 0:
+                    phase = FLIGHT
+            elif event == "stick":
+                phase, d = self.contact_phase(self.stop_slip(y, d), d)
+                y = self.stop_slip(y, d)
+            else:  # slip
+                ft = self.out(ROLL, y, d)[_O["ft_x"]:_O["ft_z"] + 1]
+                d = self.predicted_direction(y, ft)
+                phase = SLIDE
+            run.switches.append(Switch(t, before, PHASE_NAMES[phase], event, float(e0),
+                                       float(self.out(phase, y, d)[_O["energy"]])))
+            if len(run.switches) > self.max_switches:
+                raise IntegrationError(f"more than {self.max_switches} phase switches by t = {t:.8g} "
+                                       f"(last: {event})")
+        run.nfev = self.k.nfev
+        return run
+
+    def start(self, y: np.ndarray, d: np.ndarray) -> tuple[int, np.ndarray]:
+        phase, d = self.contact_phase(y, d)
+        if self.out(phase, y, d)[_O["N"]] < 0:
+            return FLIGHT, d
+        return phase, d
+
+    def _phase(self, run: Run, phase, t0, y0, d, t_end, nxt):
+        """Integrate one phase from (t0, y0) until an event or t_end; fills the samples."""
+        k, p = self.k, self.p
+        events = self.events(phase)
+        solver = DOP853(lambda t, y: k.rhs(phase, y, p, d), t0, y0, t_end, rtol=self.rtol,
+                        atol=self.atol)
+        ref = d.copy()
+        g_old = {name: self.g(name, phase, y0, d, ref) for name in events}
+        while solver.status == "running":
+            try:
+                msg = solver.step()
+            except FloatingPointError as err:
+                raise IntegrationError(f"t = {solver.t:.8g}: {err}") from None
+            if solver.status == "failed":
+                raise IntegrationError(f"t = {solver.t:.8g}: {msg}")
+            run.nstep += 1
+            if run.nstep > self.max_steps:
+                raise IntegrationError(f"t = {solver.t:.8g}: step budget of {self.max_steps} spent")
+            if not np.all(np.isfinite(solver.y)):
+                raise IntegrationError(f"t = {solver.t:.8g}: non-finite state")
+            ta, tb = solver.t_old, solver.t
+            dense = solver.dense_output()
+            hit = None
+            for name in events:
+                g = lambda t, name=name: self.g(name, phase, dense(t), d, ref)
+                ts = np.linspace(ta, tb, 5)[1:]
+                prev_t, prev = ta, g_old[name]
+                for tt in ts:
+                    cur = g(tt)
+                    if prev >= 0 and cur < 0:
+                        if prev == 0.0:
+                            root = prev_t
+                        else:
+                            root = brentq(g, prev_t, tt, xtol=1e-15 * max(1.0, abs(tt)), rtol=1e-15)
+                        if hit is None or root < hit[0]:
+                            hit = (root, name)
+                        break
+                    prev_t, prev = tt, cur
+            stop = hit[0] if hit else tb
+            while nxt < len(run.t) and run.t[nxt] <= stop:
+                run.y[nxt], run.phase[nxt], run.direction[nxt] = dense(run.t[nxt]), phase, d
+                nxt += 1
+            if hit:
+                return hit[0], dense(hit[0]), (nxt, hit[1])
+            y_new = solver.y
+            g_old = {name: self.g(name, phase, y_new, d, ref) for name in events}
+            if "stick" in events:
+                s = self.slip(phase, y_new, d)
+                if np.linalg.norm(s) > 0:
+                    ref = s / np.linalg.norm(s)
+                    g_old["stick"] = float(s @ ref)
+        return solver.t, solver.y, (nxt, None)

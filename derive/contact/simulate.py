@@ -1,0 +1,136 @@
+"""Simulate a top on a table: a validated contact scene in, a :class:`ContactResult` out.
+
+The initial state: the quaternion of the z-y-z angles, ω̃ from the rates (or ``omega``), the
+centre of mass over the origin at the height the contact sets, z = −a·n, its horizontal velocity
+(vx, vy) — or, rolling, v = −ω × a — and its vertical velocity from the constraint,
+v_z = −(ω × a)·ẑ.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from derive.contact.equations import contact
+from derive.contact.integrals import holds
+from derive.contact.kernel import OUTPUTS, kernel
+from derive.contact.laws import LAWS
+from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
+from derive.contact.scene import ContactScene
+
+_O = {name: i for i, name in enumerate(OUTPUTS)}
+
+
+def _qaxis(axis: int, angle: float) -> np.ndarray:
+    q = np.zeros(4)
+    q[0], q[1 + axis] = np.cos(angle / 2), np.sin(angle / 2)
+    return q
+
+
+def _qmul(p, q):
+    return np.concatenate([[p[0] * q[0] - p[1:] @ q[1:]], p[0] * q[1:] + q[0] * p[1:] + np.cross(p[1:], q[1:])])
+
+
+def quaternion(alpha: float, beta: float, gamma: float) -> np.ndarray:
+    """The unit quaternion of R = R_z(α) R_y(β) R_z(γ) (z-y-z, body → inertial)."""
+    return _qmul(_qmul(_qaxis(2, alpha), _qaxis(1, beta)), _qaxis(2, gamma))
+
+
+def body_omega(beta, gamma, rates) -> np.ndarray:
+    """ω̃ = α̇ Rᵀẑ + β̇ ê′₂ + γ̇ ê₃ (z-y-z) in body components."""
+    ad, bd, gd = rates
+    return np.array([-ad * np.sin(beta) * np.cos(gamma) + bd * np.sin(gamma),
+                     ad * np.sin(beta) * np.sin(gamma) + bd * np.cos(gamma),
+                     ad * np.cos(beta) + gd])
+
+
+def params(sc: ContactScene) -> np.ndarray:
+    """The parameter vector in the kernel's order (I1, I2, I3, M, g, r, s, μ, ε)."""
+    return np.array([sc.I1, sc.I2, sc.I3, sc.M, sc.g, sc.radius, sc.offset, sc.mu,
+                     sc.regularization or 0.0])
+
+
+def initial_state(sc: ContactScene) -> np.ndarray:
+    q = quaternion(*sc.angles)
+    w = np.array(sc.omega) if sc.omega is not None else body_omega(sc.angles[1], sc.angles[2], sc.rates)
+    y = np.concatenate([q, w, np.zeros(6)])
+    k = kernel(sc.shape, sc.law)
+    a = k.outputs(2, y, params(sc), np.zeros(3))[_O["a_x"]:_O["a_z"] + 1]
+    y[9] = -a[2]
+    wi = quaternion_matrix(q) @ w
+    v = -np.cross(wi, a)
+    y[10:13] = v if sc.friction == "rolling" else (sc.vx, sc.vy, v[2])
+    return y
+
+
+@dataclass
+class ContactResult:
+    """The arrays of a contact run (the output file's), its phase history and its switches."""
+
+    scene: ContactScene
+    t: np.ndarray
+    alpha: np.ndarray
+    beta: np.ndarray
+    gamma: np.ndarray
+    omega: np.ndarray
+    axis: np.ndarray
+    energy: np.ndarray
+    com: np.ndarray
+    contact: np.ndarray
+    normal_force: np.ndarray
+    slip_speed: np.ndarray
+    phase: np.ndarray
+    gap: np.ndarray
+    p_alpha: np.ndarray
+    p_gamma: np.ndarray
+    integrals: dict[str, np.ndarray]
+    switches: list[Switch] = field(default_factory=list)
+    nfev: int = 0
+    method: str = "dop853"
+    formulation: str = "contact"
+    model: str = ""
+    effects: tuple = ("gravity", "contact")
+
+    def arrays(self) -> dict:
+        """The output file's arrays (``integral_<name>`` for each integral the case has)."""
+        out = {k: getattr(self, k) for k in ("t", "alpha", "beta", "gamma", "omega", "axis", "energy",
+                                             "com", "contact", "normal_force", "slip_speed", "gap",
+                                             "p_alpha", "p_gamma")}
+        out["phase"] = self.phase.astype(str)
+        out.update({f"integral_{k}": v for k, v in self.integrals.items()})
+        out["switch_t"] = np.array([s.t for s in self.switches])
+        out["switch_event"] = np.array([s.event for s in self.switches], dtype=str)
+        out.update(method=np.array(self.method), formulation=np.array(self.formulation),
+                   nfev=np.array(self.nfev))
+        return out
+
+
+def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
+    """The output arrays from a run's sampled states."""
+    outs = np.array([k.outputs(ph, y, p, d) for y, ph, d in zip(run.y, run.phase, run.direction)])
+    R = np.array([quaternion_matrix(y[:4]) for y in run.y])
+    beta = np.arccos(np.clip(R[:, 2, 2], -1.0, 1.0))
+    alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
+    gamma = np.unwrap(np.arctan2(R[:, 2, 1], -R[:, 2, 0]))
+    com = run.y[:, 7:10]
+    names = holds(contact(sc.shape), LAWS[sc.law], sc.symmetric)
+    return ContactResult(
+        scene=sc, t=run.t, alpha=alpha, beta=beta, gamma=gamma, omega=run.y[:, 4:7].copy(),
+        axis=R[:, :, 2].copy(), energy=outs[:, _O["energy"]], com=com.copy(),
+        contact=com + outs[:, _O["a_x"]:_O["a_z"] + 1], normal_force=outs[:, _O["N"]],
+        slip_speed=np.linalg.norm(outs[:, _O["slip_x"]:_O["slip_z"] + 1], axis=1),
+        phase=np.array([PHASE_NAMES[int(x)] for x in run.phase]), gap=outs[:, _O["gap"]],
+        p_alpha=outs[:, _O["p_alpha"]], p_gamma=outs[:, _O["p_gamma"]],
+        integrals={n: outs[:, _O[n]] for n in names}, switches=run.switches, nfev=run.nfev,
+        model=f"contact_{sc.shape}_{sc.law}")
+
+
+def simulate(sc: ContactScene) -> ContactResult:
+    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases)."""
+    k = kernel(sc.shape, sc.law)
+    p = params(sc)
+    ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
+                max_steps=sc.max_steps)
+    k.nfev = 0
+    run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
+    return result(sc, run, k, p)
