@@ -12,10 +12,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from derive.contact.geometry import SHAPES
 from derive.errors import SceneError
 
 FRICTIONS = ("none", "coulomb", "viscous", "rolling")
+#: The shapes of :data:`derive.contact.geometry.SHAPES` (named here so reading a scene needs no SymPy).
+SHAPES = ("point", "sphere", "disc")
 METHODS = ("auto", "dop853")
 _KEYS = {
     "body": ("I1", "I2", "I3"),

@@ -16,7 +16,7 @@ from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
-from derive.contact.scene import ContactScene
+from derive.contact.scene import ContactScene, read
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
 
@@ -134,3 +134,45 @@ def simulate(sc: ContactScene) -> ContactResult:
     k.nfev = 0
     run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
     return result(sc, run, k, p)
+
+
+def run_scene(data: dict, source: str = "<dict>", **overrides) -> ContactResult:
+    """Validate a contact scene's dict and simulate it (``overrides`` replace [simulate] keys)."""
+    return simulate(read(data, source, **overrides))
+
+
+def plot_page(res: ContactResult, f, fmt: str = "png") -> None:
+    """One page: the tracks of the centre of mass and the contact on the table, the tilt β(t),
+    N(t), the slip speed, the phase, and the relative change of E and of the integrals."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(2, 3, figsize=(13, 7.5))
+    ax[0, 0].plot(res.contact[:, 0], res.contact[:, 1], lw=0.6, label="contact")
+    ax[0, 0].plot(res.com[:, 0], res.com[:, 1], lw=1.0, label="centre of mass")
+    ax[0, 0].set(xlabel="x (m)", ylabel="y (m)", title="tracks on the table", aspect="equal")
+    ax[0, 0].legend(fontsize=8)
+    ax[0, 1].plot(res.t, res.beta)
+    ax[0, 1].set(xlabel="t (s)", ylabel="β (rad)", title="tilt")
+    ax[0, 2].plot(res.t, res.normal_force)
+    ax[0, 2].set(xlabel="t (s)", ylabel="N (N)", title="normal force")
+    ax[1, 0].semilogy(res.t, np.maximum(res.slip_speed, 1e-18))
+    ax[1, 0].set(xlabel="t (s)", ylabel="|u_t| (m/s)", title="slip speed")
+    codes = {"slide": 0, "roll": 1, "flight": 2}
+    ax[1, 1].step(res.t, [codes[str(p)] for p in res.phase], where="post")
+    ax[1, 1].set(yticks=[0, 1, 2], yticklabels=list(codes), xlabel="t (s)", title="phase")
+    for name, v in {"energy": res.energy, **res.integrals}.items():
+        if name != "energy" or "energy" not in res.integrals:
+            scale = abs(v[0]) if v[0] != 0 else 1.0
+            ax[1, 2].plot(res.t, (v - v[0]) / scale, label=name)
+    ax[1, 2].set(xlabel="t (s)", title="relative change")
+    ax[1, 2].legend(fontsize=8)
+    fig.suptitle(res.scene.title or f"{res.scene.shape}, {res.scene.law}")
+    fig.tight_layout()
+    fig.savefig(f, format=fmt)
+    plt.close(fig)
+
+
+ContactResult.plot_to = plot_page
