@@ -14,7 +14,7 @@ components), a(n) the contact point from the centre of mass and z the centre of 
                                                         a = s ê₃ − r n, under any contact force:
                                                         dJ/dt = (a × f)·a + L·ȧ = s L·(ω × ê₃) = 0
                                                         when I₁ = I₂)
-* routh       ω₃ √(I₁ I₃ + M I₃ |a|² + M I₁ (a·ê₃)²)   (rolling, axisymmetric, spherical contact)
+* routh       ω₃ √(I₁ I₃ + M aᵀ I a)                   (rolling, axisymmetric, spherical contact)
 
 The horizontal momentum M v_x, M v_y is conserved on the frictionless plane too.
 """
@@ -23,7 +23,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.contact.equations import I1, I2, I3, INERTIA, MASS, GRAV, OMEGA, VEL, Contact, dot
-from derive.contact.geometry import N_VEC, E3
+from derive.contact.geometry import N_VEC
 from derive.contact.laws import Law
 
 HEIGHT = sp.Symbol("z", real=True)
@@ -42,7 +42,7 @@ def expressions(c: Contact) -> dict[str, sp.Expr]:
         "p_alpha": dot(INERTIA * OMEGA, N_VEC),
         "p_gamma": I3 * OMEGA[2],
         "jellett": dot(INERTIA * OMEGA, a),
-        "routh": OMEGA[2] * sp.sqrt(I1 * I3 + MASS * I3 * dot(a, a) + MASS * I1 * dot(a, E3) ** 2),
+        "routh": OMEGA[2] * sp.sqrt(I1 * I3 + MASS * dot(a, INERTIA * a)),
     }
 
 

@@ -88,7 +88,8 @@ class Phases:
         return self.k.outputs(phase, y, self.p, d)
 
     def slip(self, phase, y, d):
-        o = self.out(phase, y, d)
+        """The slip u_t, inertial, of the body touching the plane (kinematic: any contact phase)."""
+        o = self.out(SLIDE if self.law.slides else ROLL, y, d)
         return o[_O["slip_x"]:_O["slip_z"] + 1]
 
     # ---- events: name -> g(phase, y, d, ref); an event fires when g goes from ≥ 0 to < 0
@@ -123,6 +124,13 @@ class Phases:
                 return new
             d = new
         return d
+
+    def touching(self, y: np.ndarray, phase: int, d: np.ndarray) -> np.ndarray:
+        """The state with z and v_z those the contact sets (read in flight, not in contact)."""
+        o = self.out(phase, y, d)
+        y = y.copy()
+        y[9], y[12] = o[_O["z"]], o[_O["vz"]]
+        return y
 
     def stop_slip(self, y: np.ndarray, d: np.ndarray) -> np.ndarray:
         """The state with the contact point's slip removed (the horizontal velocity adjusted)."""
@@ -189,7 +197,8 @@ class Phases:
             event = new[1]
             e0 = self.out(phase, y, d)[_O["energy"]]
             before = PHASE_NAMES[phase]
-            if event == "lift-off":
+            if event == "lift-off":  # the height and its rate the contact set become states
+                y = self.touching(y, phase, d)
                 phase = FLIGHT
             elif event == "landing":
                 y = self.impact(y)
@@ -257,10 +266,13 @@ class Phases:
                     prev_t, prev = tt, cur
             stop = hit[0] if hit else tb
             while nxt < len(run.t) and run.t[nxt] <= stop:
-                run.y[nxt], run.phase[nxt], run.direction[nxt] = dense(run.t[nxt]), phase, d
+                ys = dense(run.t[nxt])
+                run.y[nxt] = ys if phase == FLIGHT else self.touching(ys, phase, d)
+                run.phase[nxt], run.direction[nxt] = phase, d
                 nxt += 1
             if hit:
-                return hit[0], dense(hit[0]), (nxt, hit[1])
+                y_hit = dense(hit[0])
+                return hit[0], y_hit if phase == FLIGHT else self.touching(y_hit, phase, d), (nxt, hit[1])
             y_new = solver.y
             g_old = {name: self.g(name, phase, y_new, d, ref) for name in events}
             if "stick" in events:
