@@ -1,0 +1,238 @@
+"""Tops on a table: the derived contact equations against independent derivations, the phases
+and their events, the integrals each case keeps, the analysis, and bad scenes."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from derive.contact import analysis
+from derive.contact.kernel import OUTPUTS, kernel
+from derive.contact.phases import quaternion_matrix
+from derive.contact.scene import read
+from derive.contact.simulate import initial_state, params, quaternion, run_scene
+from derive.errors import SceneError
+
+O = {name: i for i, name in enumerate(OUTPUTS)}
+TIPPE = {"body": {"I1": 8e-7, "I3": 7e-7}, "gravity": {"M": 0.006, "g": 9.81},
+         "contact": {"shape": "sphere", "radius": 0.015, "offset": 0.003, "friction": "coulomb", "mu": 0.3},
+         "initial": {"beta": 0.1, "omega": [0.0, 0.0, 180.0]}}
+
+
+def _scene(base, **tables):
+    d = {k: dict(v) for k, v in base.items()}
+    for k, v in tables.items():
+        d.setdefault(k, {}).update(v)
+    return d
+
+
+def _state(shape, law, p, angles, w, rolling=False):
+    """A state touching the plane (z and v_z from the contact; v = −ω × a when rolling)."""
+    k = kernel(shape, law)
+    q = quaternion(*angles)
+    y = np.concatenate([q, w, np.zeros(6)])
+    a = k.outputs(2, y, p, np.zeros(3))[O["a_x"]:O["a_z"] + 1]
+    y[9] = -a[2]
+    v = -np.cross(quaternion_matrix(q) @ w, a)
+    y[10:13] = v if rolling else (0.3, -0.2, v[2])
+    return k, y
+
+
+def _slip_rate(k, phase, y, p, d, h=1e-6):
+    """d/dt of the contact point's velocity (inertial) along the phase's flow, central differences."""
+    dy = k.rhs(phase, y, p, d)
+
+    def u(yy):
+        o = k.outputs(2, yy, p, d)
+        return yy[10:13] + np.cross(quaternion_matrix(yy[:4]) @ yy[4:7], o[O["a_x"]:O["a_z"] + 1])
+    return (u(y + h * dy) - u(y - h * dy)) / (2 * h)
+
+
+P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0])
+
+
+def test_a_body_at_rest_upright_presses_with_its_weight():
+    for shape in ("point", "sphere"):
+        k, y = _state(shape, "none", P_TIPPE, (0.0, 0.0, 0.0), np.zeros(3))
+        y[10:13] = 0.0
+        assert k.outputs(0, y, P_TIPPE, np.zeros(3))[O["N"]] == pytest.approx(0.006 * 9.81, rel=1e-14)
+
+
+@pytest.mark.parametrize("shape,law", [("sphere", "coulomb"), ("sphere", "viscous"), ("disc", "coulomb"),
+                                       ("point", "coulomb_regularized")])
+def test_the_sliding_normal_force_keeps_the_contact_on_the_plane(shape, law):
+    p = P_TIPPE.copy()
+    p[6] = 0.0 if shape == "disc" else p[6]
+    k, y = _state(shape, law, p, (0.3, 0.7, 1.1), np.array([3.0, -2.0, 40.0]))
+    assert abs(_slip_rate(k, 0, y, p, np.array([1.0, 0, 0]))[2]) < 1e-7
+
+
+@pytest.mark.parametrize("shape", ["sphere", "disc"])
+def test_the_rolling_force_keeps_the_contact_point_at_rest(shape):
+    p = P_TIPPE.copy()
+    k, y = _state(shape, "rolling", p, (0.3, 0.9, 1.1), np.array([3.0, -2.0, 40.0]), rolling=True)
+    assert np.max(np.abs(_slip_rate(k, 1, y, p, np.zeros(3)))) < 1e-7
+
+
+def test_the_normal_force_equals_an_independent_lagrangian_derivation():
+    """A pointed top on a frictionless plane from L = ½ M ż² + T_rot − M g z(β), z = l cos β, with
+    the Euler–Lagrange equations written out here: N = M (g + z̈)."""
+    b, a_, g_ = sp.symbols("b a c", real=True)
+    bd, ad, gd = sp.symbols("bd ad gd", real=True)
+    I1, I3, M, g, l = 1e-4, 5e-5, 0.1, 9.81, 0.04
+    w1 = -ad * sp.sin(b) * sp.cos(g_) + bd * sp.sin(g_)
+    w2 = ad * sp.sin(b) * sp.sin(g_) + bd * sp.cos(g_)
+    w3 = ad * sp.cos(b) + gd
+    z = l * sp.cos(b)
+    zd = sp.diff(z, b) * bd
+    L = M * zd**2 / 2 + (I1 * (w1**2 + w2**2) + I3 * w3**2) / 2 - M * g * z
+    q, qd = (a_, b, g_), (ad, bd, gd)
+    qdd = sp.symbols("add bdd gdd")
+    eqs = [sum(sp.diff(L, v, w) * x for w, x in zip(qd, qdd)) + sum(sp.diff(L, v, w) * x for w, x in zip(q, qd))
+           - sp.diff(L, c) for v, c in zip(qd, q)]
+    sol = sp.solve(eqs, qdd, dict=True)[0]
+    state = {a_: 0.2, b: 0.6, g_: 0.4, ad: 2.0, bd: 1.5, gd: 90.0}
+    bdd = float(sol[qdd[1]].subs(state))
+    zdd = float((sp.diff(z, b, 2) * bd**2).subs(state)) + float(sp.diff(z, b).subs(state)) * bdd
+    p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0])
+    w = np.array([float(e.subs(state)) for e in (w1, w2, w3)])
+    k, y = _state("point", "none", p, (0.2, 0.6, 0.4), w)
+    assert k.outputs(0, y, p, np.zeros(3))[O["N"]] == pytest.approx(M * (g + zdd), rel=1e-12)
+
+
+def test_jellett_and_routh_are_constant_along_the_rolling_equations():
+    p = np.array([1e-3, 1e-3, 0.9e-3, 1.0, 9.81, 0.05, 0.01, 0.0, 0.0])
+    k, y = _state("sphere", "rolling", p, (0.3, 1.0, 2.0), np.array([2.0, -1.0, 5.0]), rolling=True)
+    dy = k.rhs(1, y, p, np.zeros(3))
+    h = 1e-6
+    up, dn = (k.outputs(1, y + s * h * dy, p, np.zeros(3)) for s in (1, -1))
+    for name in ("jellett", "routh", "energy"):
+        scale = abs(k.outputs(1, y, p, np.zeros(3))[O[name]])
+        assert abs(up[O[name]] - dn[O[name]]) / (2 * h) / scale < 1e-7, name
+
+
+def test_a_frictionless_top_keeps_its_energy_and_both_momenta():
+    r = run_scene(read_example("frictionless_top"), t_end=0.5)
+    for v in (r.energy, r.p_alpha, r.p_gamma):
+        assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
+    assert set(r.phase) == {"slide"} and not r.switches
+
+
+def test_rouths_sphere_keeps_energy_jellett_and_routh():
+    r = run_scene(read_example("rolling_sphere"), t_end=2.0)
+    for v in (r.energy, r.integrals["jellett"], r.integrals["routh"]):
+        assert np.max(np.abs(v - v[0])) <= 1e-11 * abs(v[0])
+    assert np.max(r.slip_speed) < 1e-9
+
+
+def test_exact_coulomb_tippe_top_is_captured_into_rolling_at_a_located_event_keeping_jellett():
+    r = run_scene(_scene(TIPPE, simulate={"t_end": 0.1, "samples": 201}))
+    assert [(s.event, s.before, s.after) for s in r.switches] == [("stick", "slide", "roll")]
+    assert 0.03 < r.switches[0].t < 0.04
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+    sliding = r.phase == "slide"
+    assert np.all(np.diff(r.energy[sliding]) <= 1e-15 * r.energy[0])
+    rolling = r.phase == "roll"
+    assert np.ptp(r.energy[rolling]) <= 1e-11 * r.energy[0]
+
+
+def test_a_knocked_top_lifts_off_at_a_located_event_and_lands():
+    d = {"body": {"I1": 2e-5, "I3": 1.5e-5}, "gravity": {"M": 0.05, "g": 9.81},
+         "contact": {"shape": "sphere", "radius": 0.005, "offset": -0.01, "friction": "coulomb", "mu": 0.3},
+         "initial": {"beta": 0.5, "gamma_dot": 150.0, "beta_dot": 40.0}, "simulate": {"t_end": 0.1, "samples": 401}}
+    r = run_scene(d)
+    events = [s.event for s in r.switches]
+    assert events[:3] == ["landing", "lift-off", "landing"]  # the knock starts it in the air
+    for s in r.switches:
+        if s.event == "lift-off":
+            assert s.energy_after == pytest.approx(s.energy_before, rel=1e-12)
+        else:
+            assert s.energy_after <= s.energy_before  # an inelastic impact loses energy
+    flight = np.where(r.phase == "flight")[0]
+    assert len(flight) > 2 and np.all(r.gap[flight] >= -1e-12)
+    runs = np.split(flight, np.where(np.diff(flight) > 1)[0] + 1)
+    for idx in runs:
+        assert np.ptp(r.energy[idx]) <= 1e-10 * r.energy[0]
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-9 * abs(J[0])
+
+
+def test_the_analysis_derives_the_inversion_interval_and_final_spin():
+    assert analysis.inversion_interval() == (1 - analysis.RATIO, 1 + analysis.RATIO)
+    spin = analysis.final_spin().subs({analysis.RATIO: 0.2, analysis.N0: 180.0, analysis.THETA0: 0.1})
+    assert float(spin) == pytest.approx(-119.2506, abs=1e-4)
+    out = analysis.analyze(read(TIPPE))
+    assert out["inversion"]["inverts"] and [i["name"] for i in out["integrals"]] == ["jellett"]
+
+
+def test_the_sleeping_top_on_a_frictionless_plane_uses_the_moment_about_the_centre_of_mass():
+    from derive.contact.equations import I1, I3, MASS, GRAV
+    from derive.contact.geometry import OFFSET
+
+    # the tip at s = −l below the centre of mass: I₃²ω₃² > 4 I₁ M g l, I₁ about the centre of mass
+    expected = I3**2 * analysis.SPIN**2 + 4 * I1 * MASS * GRAV * OFFSET
+    assert sp.expand(analysis.sleeping_condition("point") - expected) == 0
+    assert sp.expand(analysis.sleeping_condition("sphere") - expected) == 0
+
+
+@pytest.mark.parametrize("change,key", [
+    ({"contact": {"mu": -0.1}}, "contact.mu"),
+    ({"contact": {"shape": "cube"}}, "contact.shape"),
+    ({"contact": {"radius": -0.01}}, "contact.radius"),
+    ({"gravity": {"l": 0.1}}, "gravity.l"),
+    ({"gravity": {"com": [0, 0, 0.1]}}, "gravity.com"),
+    ({"contact": {"friction": "viscous", "regularization": 0.01}}, "contact.regularization"),
+    ({"contact": {"friction": "rolling", "mu": None}, "initial": {"vx": 0.1}}, "initial.vx"),
+])
+def test_a_bad_contact_scene_names_its_key(change, key):
+    d = _scene(TIPPE, **change)
+    d["contact"] = {k: v for k, v in d["contact"].items() if v is not None}
+    with pytest.raises(SceneError, match=rf": {key}: "):
+        read(d, "top.toml")
+
+
+def test_the_command_line_runs_a_contact_scene_and_refuses_a_bad_one(tmp_path):
+    out = tmp_path / "r.npz"
+    r = subprocess.run([sys.executable, "-m", "derive", "simulate", "rolling_sphere", "--t-end", "0.2",
+                        "-o", str(out)], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    data = np.load(out)
+    for name in ("com", "contact", "normal_force", "slip_speed", "phase", "integral_jellett", "integral_routh"):
+        assert name in data.files
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[body]\nI1 = 1.0\nI3 = 0.5\n[gravity]\nM = 1.0\ng = 9.81\n'
+                   '[contact]\nshape = "sphere"\nradius = 0.1\nfriction = "coulomb"\nmu = -1.0\n')
+    r = subprocess.run([sys.executable, "-m", "derive", "simulate", str(bad), "-o", str(tmp_path / "x.npz")],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and r.stderr.strip().splitlines() == [r.stderr.strip()]
+    assert "contact.mu" in r.stderr and not (tmp_path / "x.npz").exists()
+
+
+def read_example(name):
+    import tomllib
+
+    from derive.codegen.render import data_dir
+
+    return tomllib.loads((data_dir("scenes") / f"{name}.toml").read_text(encoding="utf-8"))
+
+
+def test_initial_state_touches_the_plane_with_no_normal_velocity():
+    sc = read(TIPPE)
+    y = initial_state(sc)
+    o = kernel("sphere", "coulomb").outputs(0, y, params(sc), np.zeros(3))
+    assert o[O["gap"]] == 0.0 and abs(o[O["u_n"]]) < 1e-15
+
+
+@pytest.mark.slow
+def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
+    r = run_scene(_scene(TIPPE, contact={"friction": "viscous"}, simulate={"t_end": 3.0, "samples": 3001}))
+    near = np.where(r.beta > np.pi - 0.02)[0]
+    assert len(near) > 0
+    expected = 180.0 * (0.2 - np.cos(0.1)) / 1.2
+    assert abs(r.omega[near[0], 2] - expected) <= 1e-3 * abs(expected)
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
