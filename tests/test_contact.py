@@ -236,3 +236,82 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
     assert abs(r.omega[near[0], 2] - expected) <= 1e-3 * abs(expected)
     J = r.integrals["jellett"]
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+
+
+def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
+    from derive.contact.kernel import source
+    from derive.runtime.cbuild import check_compiles
+
+    for shape in ("point", "sphere", "disc"):
+        for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling"):
+            check_compiles({"c.c": source(shape, law)}, "c.c")
+
+
+def test_exact_coulomb_moves_less_than_a_thousandth_when_the_tolerance_is_tightened_tenfold():
+    runs = [run_scene(_scene(TIPPE, simulate={"t_end": 0.3, "samples": 301, "rtol": rtol, "atol": rtol * 1e-2}))
+            for rtol in (1e-9, 1e-10)]
+    (a, b) = runs
+    assert [s.event for s in a.switches] == [s.event for s in b.switches] == ["stick"]
+    assert abs(a.switches[0].t - b.switches[0].t) <= 1e-3 * b.switches[0].t
+    assert abs(a.beta[-1] - b.beta[-1]) <= 1e-3 * b.beta[-1]
+
+
+def _newton_euler_inertial(eps, t_end, rtol=1e-12):
+    """The tippe top under regularised Coulomb friction, written independently: inertial frame,
+    rotation matrix and inertial ω as states, the ball's centre held at height r, N solved from
+    M z̈ = N − M g by its linearity (two evaluations). Returns the time β first reaches π/2."""
+    from scipy.integrate import solve_ivp
+
+    I = np.diag([8e-7, 8e-7, 7e-7])
+    M, g, r, s, mu = 0.006, 9.81, 0.015, 0.003, 0.3
+    zhat = np.array([0.0, 0.0, 1.0])
+
+    def forces(R, w, v):
+        e3 = R[:, 2]
+        Iin = R @ I @ R.T
+        a = s * e3 - r * zhat
+        vz = -s * np.cross(w, e3)[2]
+        vel = np.array([v[0], v[1], vz])
+        u = vel + np.cross(w, a)
+        ut = np.array([u[0], u[1], 0.0])
+        phi = -mu * ut / np.sqrt(ut @ ut + eps**2)
+
+        def wdot(N):
+            return np.linalg.solve(Iin, np.cross(a, N * (zhat + phi)) - np.cross(w, Iin @ w))
+
+        def residual(N):  # M z̈ − (N − M g), z = r − s e3_z
+            e3dd = np.cross(wdot(N), e3) + np.cross(w, np.cross(w, e3))
+            return -M * s * e3dd[2] - (N - M * g)
+        c0, c1 = residual(0.0), residual(1.0)
+        N = -c0 / (c1 - c0)
+        return N * (zhat + phi), wdot(N)
+
+    def rhs(t, y):
+        R, w, v = y[:9].reshape(3, 3), y[9:12], y[12:14]
+        F, wd = forces(R, w, v)
+        W = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+        return np.concatenate([(W @ R).ravel(), wd, F[:2] / M])
+
+    R0 = np.array([[np.cos(0.1), 0, np.sin(0.1)], [0, 1, 0], [-np.sin(0.1), 0, np.cos(0.1)]])
+    w0 = R0 @ np.array([0.0, 0.0, 180.0])
+    ev = lambda t, y: y[8]  # R33 = cos β
+    ev.terminal, ev.direction = True, -1
+    sol = solve_ivp(rhs, (0, t_end), np.concatenate([R0.ravel(), w0, [0.0, 0.0]]), method="DOP853",
+                    rtol=rtol, atol=rtol * 1e-3, events=ev)
+    return float(sol.t_events[0][0])
+
+
+@pytest.mark.slow
+def test_regularised_coulomb_tippe_top_passes_ninety_degrees_when_an_independent_integration_does():
+    from scipy.interpolate import CubicSpline
+
+    eps = 1e-2
+    r = run_scene(_scene(TIPPE, contact={"regularization": eps},
+                         simulate={"t_end": 1.2, "samples": 24001, "rtol": 1e-12, "atol": 1e-14}))
+    i = int(np.argmax(r.beta > np.pi / 2))
+    sl = slice(i - 4, i + 4)
+    t90 = float(CubicSpline(r.t[sl], np.cos(r.beta[sl])).solve(0.0, extrapolate=False)[0])
+    reference = _newton_euler_inertial(eps, 1.2)
+    assert abs(t90 - reference) <= 1e-4 * reference
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
