@@ -217,7 +217,7 @@ def read_example(name):
 
     from derive.codegen.render import data_dir
 
-    return tomllib.loads((data_dir("scenes") / f"{name}.toml").read_text(encoding="utf-8"))
+    return tomllib.loads((data_dir("scenes") / "contact" / f"{name}.toml").read_text(encoding="utf-8"))
 
 
 def test_initial_state_touches_the_plane_with_no_normal_velocity():

@@ -14,5 +14,8 @@ phases slide, roll and flight (:mod:`~derive.contact.phases`), the validated sce
 (:mod:`~derive.contact.scene`) and the result (:mod:`~derive.contact.simulate`).
 
 May import: :mod:`derive.runtime` (compile and load), :mod:`derive.codegen` (the Jinja2
-environment), :mod:`derive.symbolic` (the z-y-z rotation), :mod:`derive.errors`.
+environment), :mod:`derive.methods` (the stepper's registry name), :mod:`derive.symbolic` (the
+z-y-z rotation, the gravity table's name), :mod:`derive.errors`. :mod:`derive.sim` hands a
+contact scene over (its TOML reader, example names, output files) and imports this stage only
+for such scenes, so a warm run of another scene loads neither SymPy nor SciPy.
 """

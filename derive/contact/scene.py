@@ -13,19 +13,25 @@ import math
 from dataclasses import dataclass
 
 from derive.errors import SceneError
+from derive.methods.registry import REFERENCE_METHODS
+from derive.symbolic.effects import TABLES
 
 FRICTIONS = ("none", "coulomb", "viscous", "rolling")
 #: The shapes of :data:`derive.contact.geometry.SHAPES` (named here so reading a scene needs no SymPy).
 SHAPES = ("point", "sphere", "disc")
-METHODS = ("auto", "dop853")
+#: The effect table that holds M and g (the only effect a contact scene has besides the contact).
+GRAVITY = next(name for name, t in TABLES.items() if {"M", "g"} <= {k.name for k in t.keys})
+#: The stepper the phases use: SciPy's DOP853, by its registry name.
+METHOD = next(name for name, (cls, _) in REFERENCE_METHODS.items() if cls == "DOP853")
+METHODS = ("auto", METHOD)
 _KEYS = {
     "body": ("I1", "I2", "I3"),
-    "gravity": ("M", "g"),
+    GRAVITY: ("M", "g"),
     "contact": ("shape", "radius", "offset", "friction", "mu", "regularization", "restitution"),
     "initial": ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot", "omega", "vx", "vy"),
     "simulate": ("t_end", "samples", "method", "rtol", "atol", "max_steps"),
 }
-_REQUIRED = {"body": ("I1", "I3"), "gravity": ("M", "g"), "contact": ("shape", "friction")}
+_REQUIRED = {"body": ("I1", "I3"), GRAVITY: ("M", "g"), "contact": ("shape", "friction")}
 
 
 @dataclass(frozen=True)
@@ -104,14 +110,14 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
         if not isinstance(data[key], dict):
             raise _fail(source, key, "must be a table")
         for k in data[key]:
-            if key == "gravity" and k in ("l", "com"):
-                raise _fail(source, f"gravity.{k}", "not with [contact]: the contact places the centre of mass")
+            if key == GRAVITY and k in ("l", "com"):
+                raise _fail(source, f"{GRAVITY}.{k}", "not with [contact]: the contact places the centre of mass")
             if k not in _KEYS[key]:
                 raise _fail(source, f"{key}.{k}", f"unknown key (known: {', '.join(_KEYS[key])})")
-    for table in ("body", "gravity", "contact"):
+    for table in ("body", GRAVITY, "contact"):
         if table not in data:
             raise _fail(source, table, "missing table")
-    b, gr, c = data["body"], data["gravity"], data["contact"]
+    b, gr, c = data["body"], data[GRAVITY], data["contact"]
     ini, sim = data.get("initial", {}), dict(data.get("simulate", {}))
     sim.update({k: v for k, v in overrides.items() if v is not None})
     pos = lambda x: x > 0
@@ -121,8 +127,8 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     for i, j, k in ((I1, I2, I3), (I2, I3, I1), (I3, I1, I2)):
         if i + j < k:
             raise _fail(source, "body", "the moments violate the triangle inequality I1 + I2 >= I3")
-    M = _number(source, gr, "gravity", "M", test=pos, must="a positive number")
-    g = _number(source, gr, "gravity", "g", test=lambda x: x >= 0, must="a number >= 0")
+    M = _number(source, gr, GRAVITY, "M", test=pos, must="a positive number")
+    g = _number(source, gr, GRAVITY, "g", test=lambda x: x >= 0, must="a number >= 0")
     shape = c.get("shape")
     if shape not in SHAPES:
         raise _fail(source, "contact.shape", f"unknown shape {shape!r} (known: {', '.join(SHAPES)})")

@@ -16,7 +16,7 @@ from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
-from derive.contact.scene import ContactScene, read
+from derive.contact.scene import GRAVITY, METHOD, ContactScene, read
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
 
@@ -86,10 +86,10 @@ class ContactResult:
     integrals: dict[str, np.ndarray]
     switches: list[Switch] = field(default_factory=list)
     nfev: int = 0
-    method: str = "dop853"
+    method: str = METHOD
     formulation: str = "contact"
     model: str = ""
-    effects: tuple = ("gravity", "contact")
+    effects: tuple = (GRAVITY, "contact")
 
     def arrays(self) -> dict:
         """The output file's arrays (``integral_<name>`` for each integral the case has)."""
