@@ -2,9 +2,6 @@
 and their events, the integrals each case keeps, the analysis, and bad scenes."""
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 import sympy as sp
@@ -195,21 +192,23 @@ def test_a_bad_contact_scene_names_its_key(change, key):
         read(d, "top.toml")
 
 
-def test_the_command_line_runs_a_contact_scene_and_refuses_a_bad_one(tmp_path):
+def test_the_command_line_runs_a_contact_scene_and_refuses_a_bad_one(tmp_path, capsys):
+    from derive.cli import main
+
     out = tmp_path / "r.npz"
-    r = subprocess.run([sys.executable, "-m", "derive", "simulate", "rolling_sphere", "--t-end", "0.2",
-                        "-o", str(out)], capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0, r.stderr
+    assert main(["simulate", "rolling_sphere", "--t-end", "0.2", "-o", str(out)]) == 0
     data = np.load(out)
     for name in ("com", "contact", "normal_force", "slip_speed", "phase", "integral_jellett", "integral_routh"):
         assert name in data.files
     bad = tmp_path / "bad.toml"
     bad.write_text('[body]\nI1 = 1.0\nI3 = 0.5\n[gravity]\nM = 1.0\ng = 9.81\n'
                    '[contact]\nshape = "sphere"\nradius = 0.1\nfriction = "coulomb"\nmu = -1.0\n')
-    r = subprocess.run([sys.executable, "-m", "derive", "simulate", str(bad), "-o", str(tmp_path / "x.npz")],
-                       capture_output=True, text=True, timeout=120)
-    assert r.returncode == 2 and r.stderr.strip().splitlines() == [r.stderr.strip()]
-    assert "contact.mu" in r.stderr and not (tmp_path / "x.npz").exists()
+    capsys.readouterr()
+    assert main(["simulate", str(bad), "-o", str(tmp_path / "x.npz")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "contact.mu" in err and not (tmp_path / "x.npz").exists()
+    assert main(["analyze", "tippe_top", "--format", "json"]) == 0
+    assert '"final_spin": -119.25' in capsys.readouterr().out
 
 
 def read_example(name):
@@ -238,13 +237,22 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
 
 
-def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
+def _compiles_clean(pairs):
     from derive.contact.kernel import source
     from derive.runtime.cbuild import check_compiles
 
-    for shape in ("point", "sphere", "disc"):
-        for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling"):
-            check_compiles({"c.c": source(shape, law)}, "c.c")
+    for shape, law in pairs:
+        check_compiles({"c.c": source(shape, law)}, "c.c")
+
+
+def test_the_contact_kernels_compile_clean_under_the_strict_flags():
+    _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
+
+
+@pytest.mark.slow
+def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
+    _compiles_clean([(s, law) for s in ("point", "sphere", "disc")
+                     for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling")])
 
 
 def test_exact_coulomb_moves_less_than_a_thousandth_when_the_tolerance_is_tightened_tenfold():
@@ -315,3 +323,55 @@ def test_regularised_coulomb_tippe_top_passes_ninety_degrees_when_an_independent
     assert abs(t90 - reference) <= 1e-4 * reference
     J = r.integrals["jellett"]
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+
+
+def _frictionless_reference(b0=0.5, spin=100.0, I1=1e-4, I3=5e-5, M=0.1, g=9.81, l=0.04):
+    """The pointed top on a frictionless plane by quadrature, released at rest in β and α: the
+    centre of mass on a vertical line, E = ½ (I₁ + M l² sin²β) β̇² + V_eff(β). Returns the
+    largest tilt and the nutation period."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    pa, pg = I3 * spin * np.cos(b0), I3 * spin
+    V = lambda b: (pa - pg * np.cos(b)) ** 2 / (2 * I1 * np.sin(b) ** 2) + M * g * l * np.cos(b)
+    f = lambda b: V(b0) - V(b)
+    bmax = brentq(f, b0 + 1e-6, 2.5, xtol=1e-16)
+    c, h = (b0 + bmax) / 2, (bmax - b0) / 2
+    rate = lambda b: np.sqrt(2 * f(b) / (I1 + M * l * l * np.sin(b) ** 2))
+    T = 2 * quad(lambda ph: h * np.cos(ph) / rate(c + h * np.sin(ph)), -np.pi / 2, np.pi / 2,
+                 epsabs=1e-15, epsrel=1e-13, limit=200)[0]
+    return bmax, T
+
+
+def test_the_frictionless_tilt_range_and_nutation_period_equal_an_independent_quadrature():
+    from scipy.interpolate import make_interp_spline
+    from scipy.optimize import brentq
+
+    r = run_scene(read_example("frictionless_top"), t_end=1.0, samples=20001)
+    beta = make_interp_spline(r.t, r.beta, k=5)
+    rate = beta.derivative()
+    db = rate(r.t)
+    turns = np.array([brentq(rate, r.t[i], r.t[i + 1], xtol=1e-15)
+                      for i in np.where(np.sign(db[:-1]) != np.sign(db[1:]))[0]])
+    bmax, period = _frictionless_reference()
+    tops = turns[beta(turns) > 0.6]
+    assert np.max(np.abs(beta(tops) - bmax)) <= 1e-9 * bmax
+    assert abs((tops[-1] - tops[0]) / (len(tops) - 1) - period) <= 1e-9 * period
+
+
+@pytest.mark.slow
+def test_the_tippe_top_with_regularised_coulomb_friction_inverts_to_jelletts_spin():
+    r = run_scene(_scene(TIPPE, contact={"regularization": 1e-2}, simulate={"t_end": 13.0, "samples": 6501}))
+    near = np.where(r.beta > np.pi - 0.02)[0]
+    assert len(near) > 0
+    expected = 180.0 * (0.2 - np.cos(0.1)) / 1.2
+    assert abs(r.omega[near[0], 2] - expected) <= 1e-3 * abs(expected)
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+
+
+@pytest.mark.slow
+def test_a_frictionless_top_keeps_its_integrals_over_a_hundred_nutations():
+    r = run_scene(read_example("frictionless_top"), t_end=100 * _frictionless_reference()[1], samples=2001)
+    for v in (r.energy, r.p_alpha, r.p_gamma):
+        assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])

@@ -78,6 +78,9 @@ class Kernel:
         self.dy = np.zeros(len(STATE))
         self.out = np.zeros(len(OUTPUTS))
         self._dy, self._out = self.dy.ctypes.data, self.out.ctypes.data
+        self.many = getattr(lib, f"{name}_outputs")
+        self.many.restype = ctypes.c_long
+        self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 5
         self.nfev = 0
 
     def rhs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
@@ -94,6 +97,18 @@ class Kernel:
         if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, self._out):
             raise FloatingPointError("the contact is singular here")
         return self.out.copy()
+
+
+    def outputs_many(self, phase: np.ndarray, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """The outputs of many states (rows of ``y``, a phase and a direction each), one C call."""
+        phase = np.ascontiguousarray(phase, dtype=np.intc)
+        y, d = (np.ascontiguousarray(a, dtype=float) for a in (y, d))
+        out = np.empty((len(y), len(OUTPUTS)))
+        bad = self.many(len(y), phase.ctypes.data, y.ctypes.data, p.ctypes.data, d.ctypes.data,
+                        out.ctypes.data)
+        if bad:
+            raise FloatingPointError(f"the contact is singular at sample {bad - 1}")
+        return out
 
 
 @functools.lru_cache(maxsize=None)

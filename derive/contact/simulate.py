@@ -107,7 +107,7 @@ class ContactResult:
 
 def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
     """The output arrays from a run's sampled states."""
-    outs = np.array([k.outputs(ph, y, p, d) for y, ph, d in zip(run.y, run.phase, run.direction)])
+    outs = k.outputs_many(run.phase, run.y, p, run.direction)
     R = np.array([quaternion_matrix(y[:4]) for y in run.y])
     beta = np.arccos(np.clip(R[:, 2, 2], -1.0, 1.0))
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
