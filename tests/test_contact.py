@@ -375,3 +375,49 @@ def test_a_frictionless_top_keeps_its_integrals_over_a_hundred_nutations():
     r = run_scene(read_example("frictionless_top"), t_end=100 * _frictionless_reference()[1], samples=2001)
     for v in (r.energy, r.p_alpha, r.p_gamma):
         assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
+
+
+def _extrema(t, b):
+    from scipy.interpolate import make_interp_spline
+    from scipy.optimize import brentq
+
+    spline = make_interp_spline(t, b, k=5)
+    rate = spline.derivative()
+    db = rate(t)
+    return spline(np.array([brentq(rate, t[i], t[i + 1], xtol=1e-15)
+                            for i in np.where(np.sign(db[:-1]) != np.sign(db[1:]))[0]]))
+
+
+def _routh_sphere_reference(t):
+    """Routh's sphere written independently: inertial frame, the ball's centre rolling with
+    v_c = ω × r ẑ, the contact force eliminated into (I⁰ − M [a]ₓ²) ω̇ = −ω × I⁰ω
+    + M a × (g ẑ − s ω × (ω × ê₃)). Returns β at the times t."""
+    from scipy.integrate import solve_ivp
+
+    I = np.diag([1e-3, 1e-3, 0.9e-3])
+    M, g, r, s = 1.0, 9.81, 0.05, 0.01
+    zhat = np.array([0.0, 0.0, 1.0])
+
+    def rhs(_, y):
+        R, w = y[:9].reshape(3, 3), y[9:12]
+        e3 = R[:, 2]
+        Iin = R @ I @ R.T
+        a = s * e3 - r * zhat
+        ax = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+        wd = np.linalg.solve(Iin - M * ax @ ax, -np.cross(w, Iin @ w)
+                             + M * np.cross(a, g * zhat - s * np.cross(w, np.cross(w, e3))))
+        W = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+        return np.concatenate([(W @ R).ravel(), wd])
+
+    R0 = np.array([[np.cos(1.0), 0, np.sin(1.0)], [0, 1, 0], [-np.sin(1.0), 0, np.cos(1.0)]])
+    sol = solve_ivp(rhs, (0, t[-1]), np.concatenate([R0.ravel(), 3.0 * zhat + 5.0 * R0[:, 2]]),
+                    method="DOP853", rtol=1e-13, atol=1e-15, t_eval=t)
+    return np.arccos(np.clip(sol.y[8], -1, 1))
+
+
+def test_rouths_sphere_tilt_range_equals_an_independent_derivation():
+    r = run_scene(read_example("rolling_sphere"), t_end=1.0, samples=10001)
+    ours, ref = _extrema(r.t, r.beta), _extrema(r.t, _routh_sphere_reference(r.t))
+    assert len(ref) >= 3
+    for pick in (lambda e: e[e > 0.5], lambda e: e[e < 0.5]):
+        assert np.max(np.abs(pick(ours)[:, None] - pick(ref)[None, :]).min(axis=0)) <= 1e-9
