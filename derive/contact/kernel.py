@@ -6,6 +6,10 @@ normal force and contact force, the rolling system (A, b) whose 3×3 solve is in
 Euler's equations for a given force, and the monitored integrals. The template
 ``templates/contact/contact.c.j2`` holds the state layout, the quaternion kinematics and
 the phase switch; :func:`kernel` compiles it through the package's compile cache.
+
+Every shape and law's source is also written by ``make derive`` into ``generated/contact/``
+(:func:`generated_sources`); a kernel takes its text from there when it is present, so a run
+derives nothing (``tests`` check that ``generated/`` is what the derivation gives).
 """
 from __future__ import annotations
 
@@ -15,7 +19,8 @@ import functools
 import numpy as np
 import sympy as sp
 
-from derive.codegen.render import render
+from derive.codegen.render import GENERATED, render
+from derive.contact.geometry import SHAPES
 from derive.contact.equations import FORCE, I1, I2, I3, MASS, GRAV, contact, omega_dot
 from derive.contact.geometry import OFFSET, RADIUS
 from derive.contact.integrals import expressions
@@ -66,12 +71,24 @@ def source(shape: str, law: str) -> str:
                   monitors=monitors)
 
 
+def generated_sources() -> dict[str, str]:
+    """Every shape and law's C source, keyed by its path under ``generated/``."""
+    return {f"contact/contact_{shape}_{law}.c": source(shape, law) for shape in SHAPES for law in LAWS}
+
+
+def shipped_source(shape: str, law: str) -> str | None:
+    """The source ``make derive`` wrote for ``shape`` and ``law``, or None."""
+    path = GENERATED / "contact" / f"contact_{shape}_{law}.c"
+    return path.read_text(encoding="utf-8") if path.is_file() else None
+
+
 class Kernel:
     """A loaded evaluator: ``eval(phase, y, p, dir)`` → (dy/dt, outputs), NumPy arrays."""
 
     def __init__(self, shape: str, law: str):
         name = f"contact_{shape}_{law}"
-        lib = compile_library(name, {f"{name}.c": source(shape, law)}, f"{name}.c")
+        text = shipped_source(shape, law) or source(shape, law)
+        lib = compile_library(name, {f"{name}.c": text}, f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
