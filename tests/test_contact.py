@@ -421,3 +421,20 @@ def test_rouths_sphere_tilt_range_equals_an_independent_derivation():
     assert len(ref) >= 3
     for pick in (lambda e: e[e > 0.5], lambda e: e[e < 0.5]):
         assert np.max(np.abs(pick(ours)[:, None] - pick(ref)[None, :]).min(axis=0)) <= 1e-9
+
+
+def test_the_compiled_phase_loop_takes_the_steps_scipys_dop853_takes():
+    d = _scene(TIPPE, simulate={"t_end": 0.3, "samples": 301})
+    c, s = run_scene(d), run_scene(d, method="scipy-dop853")
+    assert (c.method, s.method) == ("dop853", "scipy-dop853")
+    assert [x.event for x in c.switches] == [x.event for x in s.switches] == ["stick"]
+    assert abs(c.switches[0].t - s.switches[0].t) <= 1e-12
+    assert np.max(np.abs(c.omega - s.omega)) <= 1e-9 * 180.0
+    assert np.max(np.abs(c.beta - s.beta)) <= 1e-10
+
+
+def test_a_spent_step_budget_is_a_numerical_failure_saying_where():
+    from derive.errors import IntegrationError
+
+    with pytest.raises(IntegrationError, match=r"t = .*step budget"):
+        run_scene(_scene(TIPPE, simulate={"t_end": 1.0, "max_steps": 20}))

@@ -19,12 +19,13 @@ import functools
 import numpy as np
 import sympy as sp
 
-from derive.codegen.render import GENERATED, render
+from derive.codegen.render import GENERATED, c_double, render
 from derive.contact.geometry import SHAPES
 from derive.contact.equations import FORCE, I1, I2, I3, MASS, GRAV, contact, omega_dot
 from derive.contact.geometry import OFFSET, RADIUS
 from derive.contact.integrals import expressions
 from derive.contact.laws import EPS, LAWS, MU, NORMAL
+from derive.methods.registry import DEFAULT_METHOD, METHODS
 from derive.runtime.cbuild import compile_library
 
 #: The parameter vector's layout (the C names are the symbols' names).
@@ -65,10 +66,21 @@ def source(shape: str, law: str) -> str:
     ints = expressions(c)
     monitors = c_block([(f"out[{13 + i}]", e) for i, e in enumerate(ints.values())])
 
-    return render("contact/contact.c.j2", prefix=f"contact_{shape}_{law}", shape=shape, law=law,
+    return render("contact/contact.c.j2", dop=_dop853(), dop_name=DEFAULT_METHOD, prefix=f"contact_{shape}_{law}", shape=shape, law=law,
                   ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS), params=PARAM_NAMES,
                   outputs=OUTPUTS, geometry=geometry, slide=slide, roll=roll, accel=accel,
                   monitors=monitors)
+
+
+def _dop853() -> dict:
+    """The registry's DOP853 tableau as C double literals for the template's step loop: A with
+    the FSAL row (b) and the three dense-output stages, 16 × 16; the two error weights with
+    the FSAL stage's zero; the dense output's D."""
+    t = METHODS[DEFAULT_METHOD].tableau
+    lit = lambda row, n: [c_double(x) for x in row] + ["0.0"] * (n - len(row))
+    A = [lit(row, 16) for row in t.A] + [lit(t.b, 16)] + [lit(row, 16) for row in t.dense.A_extra]
+    return {"A": A, "B": lit(t.b, 12), "E3": lit(t.b_err2, 13), "E5": lit(t.b_err, 13),
+            "D": [lit(row, 16) for row in t.dense.D]}
 
 
 def generated_sources() -> dict[str, str]:
@@ -98,6 +110,12 @@ class Kernel:
         self.many = getattr(lib, f"{name}_outputs")
         self.many.restype = ctypes.c_long
         self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 5
+        self.step = getattr(lib, f"{name}_advance")
+        self.step.restype = ctypes.c_int
+        self.step.argtypes = ([ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_double]
+                              + [ctypes.c_void_p] * 2 + [ctypes.c_double, ctypes.c_double, ctypes.c_void_p,
+                                                         ctypes.c_long, ctypes.c_int]
+                              + [ctypes.c_void_p] * 2 + [ctypes.c_long] + [ctypes.c_void_p] * 5)
         self.nfev = 0
 
     def rhs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
@@ -115,6 +133,18 @@ class Kernel:
             raise FloatingPointError("the contact is singular here")
         return self.out.copy()
 
+
+    def advance(self, phase: int, t: float, y: np.ndarray, t_end: float, p: np.ndarray, d: np.ndarray,
+                rtol: float, atol: float, h: float, max_steps: int, events: np.ndarray, ref: np.ndarray,
+                ts: np.ndarray, its: int, ys: np.ndarray, counts: np.ndarray):
+        """One phase integrated in C (``{name}_advance``) until an event or ``t_end``: returns
+        (code, t, which, h, its) with ``y``, ``ref``, ``ys`` and ``counts`` updated in place."""
+        tt, hh, ii, which = ctypes.c_double(t), ctypes.c_double(h), ctypes.c_long(its), ctypes.c_int(-1)
+        code = self.step(phase, ctypes.addressof(tt), y.ctypes.data, t_end, p.ctypes.data, d.ctypes.data,
+                         rtol, atol, ctypes.addressof(hh), max_steps, len(events), events.ctypes.data,
+                         ref.ctypes.data, len(ts), ts.ctypes.data, ctypes.addressof(ii), ys.ctypes.data,
+                         ctypes.addressof(which), counts.ctypes.data)
+        return code, tt.value, which.value, hh.value, ii.value
 
     def outputs_many(self, phase: np.ndarray, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
         """The outputs of many states (rows of ``y``, a phase and a direction each), one C call."""

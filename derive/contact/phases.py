@@ -1,9 +1,10 @@
 """The phases slide, roll and flight as separate vector fields, joined by located events.
 
-Each phase is integrated by DOP853 (SciPy's stepper, the right-hand side the compiled C
-evaluator of :mod:`derive.contact.kernel`); after every accepted step the phase's event
-functions are evaluated on the step's dense output and the first sign change is located by
-Brent's method. The rules:
+Each phase is integrated by DOP853 — in C by the kernel's phase loop (``<kernel>_advance``,
+the default), or by SciPy's stepper calling the compiled right-hand side (``scipy-dop853``, a
+reference: the same step control, so the same steps). After every accepted step the phase's
+event functions are evaluated at four points of the step's dense output and the first sign
+change is located (Illinois in C, Brent's method in Python). The rules:
 
 * slide → roll (exact Coulomb, event ``stick``): the slip u_t reverses along the direction it had
   at the step's start, g = u_t(t)·u_t(t_k)/|u_t(t_k)| ≤ 0. The slip is set to zero (the
@@ -34,6 +35,10 @@ from derive.contact.laws import Law
 from derive.errors import IntegrationError
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
+#: The event codes of the C phase loop (``event_value`` in the template).
+EVENT_CODES = {"landing": 0, "lift-off": 1, "slip": 2, "stick": 3}
+_FAILURES = {2: "the step budget is spent", 3: "the step size fell below the spacing of doubles",
+             4: "the contact is singular or the state not finite"}
 SLIDE, ROLL, FLIGHT = PHASES["slide"], PHASES["roll"], PHASES["flight"]
 PHASE_NAMES = {v: k for k, v in PHASES.items()}
 
@@ -77,11 +82,12 @@ class Phases:
 
     def __init__(self, k: Kernel, law: Law, p: np.ndarray, restitution: float = 0.0,
                  rtol: float = 1e-10, atol: float = 1e-12, max_steps: int = 1_000_000,
-                 max_switches: int = 10_000):
+                 max_switches: int = 10_000, compiled: bool = True):
         self.k, self.law, self.p = k, law, np.ascontiguousarray(p, dtype=float)
         self.e, self.rtol, self.atol = restitution, rtol, atol
         self.max_steps, self.max_switches = max_steps, max_switches
         self.mu = p[7]
+        self.compiled = compiled
 
     # ---- what the kernel says at a state
     def out(self, phase, y, d):
@@ -190,7 +196,8 @@ class Phases:
         run = Run(t_out, ys, phases, dirs)
         t = 0.0
         while t < t_end:
-            t, y, new = self._phase(run, phase, t, y, d, t_end, nxt)
+            step = self._phase_c if self.compiled else self._phase
+            t, y, new = step(run, phase, t, y, d, t_end, nxt)
             nxt = new[0]
             if new[1] is None:
                 break
@@ -217,7 +224,7 @@ class Phases:
             if len(run.switches) > self.max_switches:
                 raise IntegrationError(f"more than {self.max_switches} phase switches by t = {t:.8g} "
                                        f"(last: {event})")
-        run.nfev = self.k.nfev
+        run.nfev += self.k.nfev
         return run
 
     def start(self, y: np.ndarray, d: np.ndarray) -> tuple[int, np.ndarray]:
@@ -281,3 +288,30 @@ class Phases:
                     ref = s / np.linalg.norm(s)
                     g_old["stick"] = float(s @ ref)
         return solver.t, solver.y, (nxt, None)
+
+    def _phase_c(self, run: Run, phase, t0, y0, d, t_end, nxt):
+        """One phase integrated by the compiled loop (``<kernel>_advance``): the same DOP853, step
+        control, events and samples as :meth:`_phase`, without a Python call per step."""
+        events = self.events(phase)
+        codes = np.array([EVENT_CODES[e] for e in events], dtype=np.intc)
+        y = np.array(y0, dtype=float)
+        ref, counts = d.copy(), np.zeros(2, dtype=np.int_)
+        if "stick" in events:
+            s = self.slip(phase, y, d)
+            if np.linalg.norm(s) > 0:
+                ref = s / np.linalg.norm(s)
+        code, t, which, _, its = self.k.advance(phase, t0, y, t_end, self.p, d, self.rtol, self.atol, 0.0,
+                                                self.max_steps - run.nstep, codes, ref, run.t, nxt, run.y,
+                                                counts)
+        run.nstep += int(counts[0])
+        run.nfev += int(counts[1])
+        rows = slice(nxt, its)
+        run.phase[rows], run.direction[rows] = phase, d
+        if phase != FLIGHT and its > nxt:
+            o = self.k.outputs_many(run.phase[rows], run.y[rows], self.p, run.direction[rows])
+            run.y[rows, 9], run.y[rows, 12] = o[:, _O["z"]], o[:, _O["vz"]]
+        if code in _FAILURES:
+            raise IntegrationError(f"t = {t:.8g}: {_FAILURES[code]} ({PHASE_NAMES[phase]})")
+        if code == 1:
+            return t, (y if phase == FLIGHT else self.touching(y, phase, d)), (its, events[which])
+        return t, y, (its, None)

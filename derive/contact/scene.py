@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from derive.errors import SceneError
-from derive.methods.registry import REFERENCE_METHODS
+from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.symbolic.effects import TABLES
 
 FRICTIONS = ("none", "coulomb", "viscous", "rolling")
@@ -21,9 +21,11 @@ FRICTIONS = ("none", "coulomb", "viscous", "rolling")
 SHAPES = ("point", "sphere", "disc")
 #: The effect table that holds M and g (the only effect a contact scene has besides the contact).
 GRAVITY = next(name for name, t in TABLES.items() if {"M", "g"} <= {k.name for k in t.keys})
-#: The stepper the phases use: SciPy's DOP853, by its registry name.
+#: The steppers: the compiled phase loop on the registry's DOP853 tableau ("auto"), and SciPy's
+#: DOP853 stepping the same compiled right-hand sides from Python (a reference).
+COMPILED = DEFAULT_METHOD
 METHOD = next(name for name, (cls, _) in REFERENCE_METHODS.items() if cls == "DOP853")
-METHODS = ("auto", METHOD)
+METHODS = ("auto", COMPILED, METHOD)
 _KEYS = {
     "body": ("I1", "I2", "I3"),
     GRAVITY: ("M", "g"),

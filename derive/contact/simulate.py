@@ -16,7 +16,7 @@ from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
-from derive.contact.scene import GRAVITY, METHOD, ContactScene, read
+from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, read
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
 
@@ -86,7 +86,7 @@ class ContactResult:
     integrals: dict[str, np.ndarray]
     switches: list[Switch] = field(default_factory=list)
     nfev: int = 0
-    method: str = METHOD
+    method: str = COMPILED
     formulation: str = "contact"
     model: str = ""
     effects: tuple = (GRAVITY, "contact")
@@ -122,7 +122,7 @@ def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
         phase=np.array([PHASE_NAMES[int(x)] for x in run.phase]), gap=outs[:, _O["gap"]],
         p_alpha=outs[:, _O["p_alpha"]], p_gamma=outs[:, _O["p_gamma"]],
         integrals={n: outs[:, _O[n]] for n in names}, switches=run.switches, nfev=run.nfev,
-        model=f"contact_{sc.shape}_{sc.law}")
+        model=f"contact_{sc.shape}_{sc.law}", method=METHOD if sc.method == METHOD else COMPILED)
 
 
 def simulate(sc: ContactScene) -> ContactResult:
@@ -130,7 +130,7 @@ def simulate(sc: ContactScene) -> ContactResult:
     k = kernel(sc.shape, sc.law)
     p = params(sc)
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
-                max_steps=sc.max_steps)
+                max_steps=sc.max_steps, compiled=sc.method != METHOD)
     k.nfev = 0
     run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
     return result(sc, run, k, p)

@@ -181,3 +181,251 @@ long contact_sphere_viscous_outputs(long n, const int *phase, const double *y, c
     }
     return 0;
 }
+
+/* ---- The phase loop: DOP853 stepping one phase's vector field in C until an event or t_end.
+ *
+ * Dormand and Prince's 8(5,3) pair with dense output of order 7 (Hairer, Norsett & Wanner,
+ * Solving ODEs I, II.5; the tableau of derive's method registry, dop853). The step-size
+ * control, error norm, initial step and dense output follow SciPy's DOP853
+ * (scipy/integrate/_ivp/rk.py and common.py). SciPy: Copyright (c) 2001-2002 Enthought, Inc.
+ * 2003-2024, SciPy Developers; BSD 3-Clause licence (redistributions keep this notice; neither
+ * the names of the copyright holders nor of the contributors may be used to endorse or promote
+ * products derived from this software without specific prior written permission). The phases
+ * are autonomous, so the nodes c_i are not needed.
+ */
+static const double DOP_A[16][16] = {
+    { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.05260015195876773, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.0197250569845379, 0.0591751709536137, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.02958758547680685, 0.0, 0.08876275643042054, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.2413651341592667, 0.0, -0.8845494793282861, 0.924834003261792, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.037037037037037035, 0.0, 0.0, 0.17082860872947386, 0.12546768756682242, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.037109375, 0.0, 0.0, 0.17025221101954405, 0.06021653898045596, -0.017578125, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.03709200011850479, 0.0, 0.0, 0.17038392571223998, 0.10726203044637328, -0.015319437748624402, 0.008273789163814023, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.6241109587160757, 0.0, 0.0, -3.3608926294469414, -0.868219346841726, 27.59209969944671, 20.154067550477894, -43.48988418106996, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.47766253643826434, 0.0, 0.0, -2.4881146199716677, -0.590290826836843, 21.230051448181193, 15.279233632882423, -33.28821096898486, -0.020331201708508627, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { -0.9371424300859873, 0.0, 0.0, 5.186372428844064, 1.0914373489967295, -8.149787010746927, -18.52006565999696, 22.739487099350505, 2.4936055526796523, -3.0467644718982196, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 2.273310147516538, 0.0, 0.0, -10.53449546673725, -2.0008720582248625, -17.9589318631188, 27.94888452941996, -2.8589982771350235, -8.87285693353063, 12.360567175794303, 0.6433927460157636, 0.0, 0.0, 0.0, 0.0, 0.0 },
+    { 0.054293734116568765, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, 0.3111643669578199, -0.1521609496625161, 0.20136540080403034, 0.04471061572777259, 0.0, 0.0, 0.0, 0.0 },
+    { 0.056167502283047954, 0.0, 0.0, 0.0, 0.0, 0.0, 0.25350021021662483, -0.2462390374708025, -0.12419142326381637, 0.15329179827876568, 0.00820105229563469, 0.007567897660545699, -0.008298, 0.0, 0.0, 0.0 },
+    { 0.03183464816350214, 0.0, 0.0, 0.0, 0.0, 0.028300909672366776, 0.053541988307438566, -0.05492374857139099, 0.0, 0.0, -0.00010834732869724932, 0.0003825710908356584, -0.00034046500868740456, 0.1413124436746325, 0.0, 0.0 },
+    { -0.42889630158379194, 0.0, 0.0, 0.0, 0.0, -4.697621415361164, 7.683421196062599, 4.06898981839711, 0.3567271874552811, 0.0, 0.0, 0.0, -0.0013990241651590145, 2.9475147891527724, -9.15095847217987, 0.0 },
+};
+static const double DOP_B[12] = { 0.054293734116568765, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, 0.3111643669578199, -0.1521609496625161, 0.20136540080403034, 0.04471061572777259 };
+static const double DOP_E3[13] = { -0.18980075407240762, 0.0, 0.0, 0.0, 0.0, 4.450312892752409, 1.8915178993145003, -5.801203960010585, -0.42268232132379197, -0.1521609496625161, 0.20136540080403034, 0.022651792198360825, 0.0 };
+static const double DOP_E5[13] = { 0.01312004499419488, 0.0, 0.0, 0.0, 0.0, -1.2251564463762044, -0.4957589496572502, 1.6643771824549864, -0.35032884874997366, 0.3341791187130175, 0.08192320648511571, -0.022355307863886294, 0.0 };
+static const double DOP_D[4][16] = {
+    { -8.428938276109013, 0.0, 0.0, 0.0, 0.0, 0.5667149535193777, -3.0689499459498917, 2.38466765651207, 2.117034582445028, -0.871391583777973, 2.2404374302607883, 0.6315787787694688, -0.08899033645133331, 18.148505520854727, -9.194632392478356, -4.436036387594894 },
+    { 10.427508642579134, 0.0, 0.0, 0.0, 0.0, 242.28349177525817, 165.20045171727028, -374.5467547226902, -22.113666853125306, 7.733432668472264, -30.674084731089398, -9.332130526430229, 15.697238121770845, -31.139403219565178, -9.35292435884448, 35.81684148639408 },
+    { 19.985053242002433, 0.0, 0.0, 0.0, 0.0, -387.0373087493518, -189.17813819516758, 527.8081592054236, -11.57390253995963, 6.8812326946963, -1.0006050966910838, 0.7777137798053443, -2.778205752353508, -60.19669523126412, 84.32040550667716, 11.99229113618279 },
+    { -25.69393346270375, 0.0, 0.0, 0.0, 0.0, -154.18974869023643, -231.5293791760455, 357.6391179106141, 93.40532418362432, -37.45832313645163, 104.0996495089623, 29.8402934266605, -43.53345659001114, 96.32455395918828, -39.17726167561544, -149.72683625798564 },
+};
+
+#define NY 13
+#define NOUT 20
+
+/* the events: landing (the gap), lift-off (N), slip (the cone mu N - |F_t|), stick (the slip
+ * along its direction at the step's start); each fires when its value goes from >= 0 to < 0 */
+static double event_value(int ev, int phase, const double *y, const double *p, const double *dir,
+                          const double *ref)
+{
+    double out[NOUT];
+    if (contact_sphere_viscous_eval(phase, y, p, dir, NULL, out)) return NAN;
+    switch (ev) {
+    case 0: return out[7];
+    case 1: return out[0];
+    case 2: return p[7] * out[0] - sqrt(out[1] * out[1] + out[2] * out[2] + out[3] * out[3]);
+    default: return out[4] * ref[0] + out[5] * ref[1] + out[6] * ref[2];
+    }
+}
+
+static void dense(double F[7][NY], const double *y_old, double t_old, double h, double t,
+                  double *y)
+{
+    double x = (t - t_old) / h;
+    int i, j;
+    for (j = 0; j < NY; j++) {
+        double v = 0.0;
+        for (i = 0; i < 7; i++) {
+            v += F[6 - i][j];
+            v *= (i % 2 == 0) ? x : 1.0 - x;
+        }
+        y[j] = v + y_old[j];
+    }
+}
+
+static double rms(const double *v, const double *scale)
+{
+    double s = 0.0;
+    int j;
+    for (j = 0; j < NY; j++) s += (v[j] / scale[j]) * (v[j] / scale[j]);
+    return sqrt(s / NY);
+}
+
+/* contact_sphere_viscous_advance: integrate `phase` from (*t, y) toward t_end.
+ * h_io: the step to try (0: chosen as SciPy does), on return the next one. max_steps: accepted
+ * steps allowed. evs[nev]: the event codes to watch; ref: the stick event's slip direction
+ * (updated after each step). Samples: ts[nts] ascending, *its the next one to write into
+ * ys (row-major NY per sample). counts: [accepted steps, rhs evaluations], added to.
+ * Returns 0 at t_end, 1 at an event (*t, y there, *which its index in evs), 2 when the step
+ * budget is spent, 3 when the step falls below the spacing of doubles, 4 outside the domain
+ * (a singular contact or a non-finite state), with *t where it happened. */
+int contact_sphere_viscous_advance(int phase, double *t, double *y, double t_end, const double *p,
+                         const double *dir, double rtol, double atol, double *h_io,
+                         long max_steps, int nev, const int *evs, double *ref, long nts,
+                         const double *ts, long *its, double *ys, int *which, long *counts)
+{
+    double K[16][NY], F[7][NY], y_new[NY], y_tmp[NY], scale[NY], g_old[4], g_new, gsub;
+    double t0 = *t, h_abs = *h_io, h, t_new, err, err3, err5, e3n, e5n, denom, factor;
+    double root;
+    int i, j, s, e, rejected, hit;
+    const double exponent = -1.0 / 8.0;
+
+    if (contact_sphere_viscous_eval(phase, y, p, dir, K[0], NULL)) return 4;
+    counts[1]++;
+    for (e = 0; e < nev; e++) g_old[e] = event_value(evs[e], phase, y, p, dir, ref);
+    if (!(h_abs > 0.0)) { /* Hairer's initial step, as SciPy's select_initial_step */
+        double d0, d1, d2, h0, h1, len = t_end - t0;
+        for (j = 0; j < NY; j++) scale[j] = atol + fabs(y[j]) * rtol;
+        d0 = rms(y, scale);
+        d1 = rms(K[0], scale);
+        h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+        if (h0 > len) h0 = len;
+        for (j = 0; j < NY; j++) y_tmp[j] = y[j] + h0 * K[0][j];
+        if (contact_sphere_viscous_eval(phase, y_tmp, p, dir, K[1], NULL)) return 4;
+        counts[1]++;
+        for (j = 0; j < NY; j++) y_new[j] = K[1][j] - K[0][j];
+        d2 = rms(y_new, scale) / h0;
+        h1 = (d1 <= 1e-15 && d2 <= 1e-15) ? fmax(1e-6, h0 * 1e-3)
+                                          : pow(0.01 / fmax(d1, d2), 1.0 / 8.0);
+        h_abs = fmin(fmin(100 * h0, h1), len);
+    }
+    while (*t < t_end) {
+        double t_old = *t, min_step = 10.0 * fabs(nextafter(t_old, INFINITY) - t_old);
+        rejected = 0;
+        for (;;) { /* one accepted step */
+            if (h_abs < min_step) return 3;
+            h = h_abs;
+            t_new = t_old + h;
+            if (t_new > t_end) { t_new = t_end; h = t_new - t_old; h_abs = h; }
+            for (s = 1; s < 12; s++) {
+                for (j = 0; j < NY; j++) {
+                    double dy = 0.0;
+                    for (i = 0; i < s; i++) dy += DOP_A[s][i] * K[i][j];
+                    y_tmp[j] = y[j] + h * dy;
+                }
+                if (contact_sphere_viscous_eval(phase, y_tmp, p, dir, K[s], NULL)) { *t = t_old; return 4; }
+            }
+            for (j = 0; j < NY; j++) {
+                double dy = 0.0;
+                for (i = 0; i < 12; i++) dy += DOP_B[i] * K[i][j];
+                y_new[j] = y[j] + h * dy;
+            }
+            if (contact_sphere_viscous_eval(phase, y_new, p, dir, K[12], NULL)) { *t = t_old; return 4; }
+            counts[1] += 12;
+            e3n = e5n = 0.0;
+            for (j = 0; j < NY; j++) {
+                scale[j] = atol + fmax(fabs(y[j]), fabs(y_new[j])) * rtol;
+                err3 = err5 = 0.0;
+                for (i = 0; i < 13; i++) { err3 += DOP_E3[i] * K[i][j]; err5 += DOP_E5[i] * K[i][j]; }
+                e3n += (err3 / scale[j]) * (err3 / scale[j]);
+                e5n += (err5 / scale[j]) * (err5 / scale[j]);
+            }
+            denom = e5n + 0.01 * e3n;
+            err = (e5n == 0.0 && e3n == 0.0) ? 0.0 : h_abs * e5n / sqrt(denom * NY);
+            if (err < 1.0) {
+                factor = err == 0.0 ? 10.0 : fmin(10.0, 0.9 * pow(err, exponent));
+                if (rejected) factor = fmin(1.0, factor);
+                h_abs *= factor;
+                break;
+            }
+            h_abs *= fmax(0.2, 0.9 * pow(err, exponent));
+            rejected = 1;
+        }
+        for (j = 0; j < NY; j++) if (!isfinite(y_new[j])) { *t = t_new; return 4; }
+        counts[0]++;
+        /* the dense output: three more stages */
+        for (s = 13; s < 16; s++) {
+            for (j = 0; j < NY; j++) {
+                double dy = 0.0;
+                for (i = 0; i < s; i++) dy += DOP_A[s][i] * K[i][j];
+                y_tmp[j] = y[j] + h * dy;
+            }
+            if (contact_sphere_viscous_eval(phase, y_tmp, p, dir, K[s], NULL)) { *t = t_old; return 4; }
+        }
+        counts[1] += 3;
+        for (j = 0; j < NY; j++) {
+            double dy = y_new[j] - y[j];
+            F[0][j] = dy;
+            F[1][j] = h * K[0][j] - dy;
+            F[2][j] = 2 * dy - h * (K[12][j] + K[0][j]);
+            for (i = 0; i < 4; i++) {
+                double v = 0.0;
+                for (s = 0; s < 16; s++) v += DOP_D[i][s] * K[s][j];
+                F[3 + i][j] = h * v;
+            }
+        }
+        /* the events: the first sign change at four points of the step, located (Illinois) */
+        hit = -1;
+        root = t_new;
+        for (e = 0; e < nev; e++) {
+            double ta = t_old, ga = g_old[e];
+            for (i = 1; i <= 4; i++) {
+                double tb = t_old + h * i / 4.0;
+                if (i == 4) tb = t_new;
+                dense(F, y, t_old, h, tb, y_tmp);
+                g_new = event_value(evs[e], phase, y_tmp, p, dir, ref);
+                if (ga >= 0.0 && g_new < 0.0) {
+                    double a = ta, b = tb, gb = g_new, c;
+                    int side = 0, it;
+                    if (ga == 0.0) b = ta;
+                    for (it = 0; it < 200 && ga != 0.0 && b - a > 1e-15 * fmax(1.0, fabs(b)); it++) {
+                        c = b - gb * (b - a) / (gb - ga);
+                        if (!(c > a && c < b)) c = 0.5 * (a + b);
+                        dense(F, y, t_old, h, c, y_tmp);
+                        gsub = event_value(evs[e], phase, y_tmp, p, dir, ref);
+                        if (gsub < 0.0) {
+                            b = c; gb = gsub;
+                            if (side == -1) ga *= 0.5;
+                            side = -1;
+                        } else {
+                            a = c; ga = gsub;
+                            if (side == 1) gb *= 0.5;
+                            side = 1;
+                        }
+                    }
+                    if (b < root || hit < 0) { root = b; hit = e; }
+                    break;
+                }
+                ta = tb;
+                ga = g_new;
+            }
+        }
+        while (*its < nts && ts[*its] <= root) {
+            dense(F, y, t_old, h, ts[*its], ys + (*its) * NY);
+            (*its)++;
+        }
+        if (hit >= 0) {
+            dense(F, y, t_old, h, root, y_tmp);
+            for (j = 0; j < NY; j++) y[j] = y_tmp[j];
+            *t = root;
+            *which = hit;
+            *h_io = h_abs;
+            return 1;
+        }
+        for (j = 0; j < NY; j++) { y[j] = y_new[j]; K[0][j] = K[12][j]; }
+        *t = t_new;
+        for (e = 0; e < nev; e++) {
+            if (evs[e] == 3) { /* stick: the slip direction at the new step's start */
+                double out[NOUT], n2;
+                if (contact_sphere_viscous_eval(phase, y, p, dir, NULL, out)) return 4;
+                n2 = sqrt(out[4] * out[4] + out[5] * out[5] + out[6] * out[6]);
+                if (n2 > 0.0) { ref[0] = out[4] / n2; ref[1] = out[5] / n2; ref[2] = out[6] / n2; }
+            }
+            g_old[e] = event_value(evs[e], phase, y, p, dir, ref);
+        }
+        *h_io = h_abs;
+        if (counts[0] >= max_steps) return 2;
+    }
+    return 0;
+}
