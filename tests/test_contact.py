@@ -229,6 +229,7 @@ def test_initial_state_touches_the_plane_with_no_normal_velocity():
 @pytest.mark.slow
 def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
     r = run_scene(_scene(TIPPE, contact={"friction": "viscous"}, simulate={"t_end": 3.0, "samples": 3001}))
+    assert np.all(np.diff(r.energy) <= 1e-15 * r.energy[0])  # Ė = −μ|u_t|² ≤ 0
     near = np.where(r.beta > np.pi - 0.02)[0]
     assert len(near) > 0
     expected = 180.0 * (0.2 - np.cos(0.1)) / 1.2
@@ -438,3 +439,11 @@ def test_a_spent_step_budget_is_a_numerical_failure_saying_where():
 
     with pytest.raises(IntegrationError, match=r"t = .*step budget"):
         run_scene(_scene(TIPPE, simulate={"t_end": 1.0, "max_steps": 20}))
+
+
+@pytest.mark.slow
+def test_a_frictionless_top_keeps_its_integrals_over_a_thousand_nutations_at_the_tightest_tolerance():
+    r = run_scene(read_example("frictionless_top"), t_end=1000 * _frictionless_reference()[1], samples=2001,
+                  rtol=1e-15, atol=1e-18, max_steps=10_000_000)
+    for v in (r.energy, r.p_alpha, r.p_gamma):
+        assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
