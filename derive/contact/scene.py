@@ -33,6 +33,13 @@ _KEYS = {
     "initial": ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot", "omega", "vx", "vy"),
     "simulate": ("t_end", "samples", "method", "rtol", "atol", "max_steps"),
 }
+# The limits every scene has (derive.sim.scene's, which this stage may not import): rtol from
+# 100 machine epsilons (written as the documented 2.2e-14), samples and steps capped so that a
+# typo cannot exhaust memory or time, the triangle inequality with a slack for rounding.
+MIN_RTOL = float(f"{100 * 2.0 ** -52:.1e}")
+MAX_SAMPLES = 10_000_000
+MAX_STEPS_LIMIT = 10**12
+TRIANGLE_SLACK = 1e-12
 _REQUIRED = {"body": ("I1", "I3"), GRAVITY: ("M", "g"), "contact": ("shape", "friction")}
 
 
@@ -127,7 +134,7 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     I2 = _number(source, b, "body", "I2", I1, test=pos, must="a positive number")
     I3 = _number(source, b, "body", "I3", test=pos, must="a positive number")
     for i, j, k in ((I1, I2, I3), (I2, I3, I1), (I3, I1, I2)):
-        if i + j < k:
+        if i + j < k * (1 - TRIANGLE_SLACK):
             raise _fail(source, "body", "the moments violate the triangle inequality I1 + I2 >= I3")
     M = _number(source, gr, GRAVITY, "M", test=pos, must="a positive number")
     g = _number(source, gr, GRAVITY, "g", test=lambda x: x >= 0, must="a number >= 0")
@@ -173,17 +180,18 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     vx, vy = (_number(source, ini, "initial", k, 0.0) for k in ("vx", "vy"))
     t_end = _number(source, sim, "simulate", "t_end", 1.0, pos, "a positive number")
     samples = sim.get("samples", 1001)
-    if isinstance(samples, bool) or not isinstance(samples, int) or samples < 2:
-        raise _fail(source, "simulate.samples", "must be a whole number >= 2")
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 2 <= samples <= MAX_SAMPLES:
+        raise _fail(source, "simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}")
     method = sim.get("method", "auto")
     if method not in METHODS:
         raise _fail(source, "simulate.method", f"unknown method {method!r} for a contact scene "
                                                f"(known: {', '.join(METHODS)})")
-    rtol = _number(source, sim, "simulate", "rtol", 1e-10, lambda x: 0 < x < 1, "a number in (0, 1)")
+    rtol = _number(source, sim, "simulate", "rtol", 1e-10, lambda x: MIN_RTOL <= x < 1,
+                   f"a number in [{MIN_RTOL:.1e}, 1) (100 machine epsilons and up)")
     atol = _number(source, sim, "simulate", "atol", 1e-12, pos, "a positive number")
     max_steps = sim.get("max_steps", 1_000_000)
-    if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
-        raise _fail(source, "simulate.max_steps", "must be a whole number >= 1")
+    if isinstance(max_steps, bool) or not isinstance(max_steps, int) or not 1 <= max_steps <= MAX_STEPS_LIMIT:
+        raise _fail(source, "simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}")
     title = data.get("title", "")
     if not isinstance(title, str):
         raise _fail(source, "title", "must be a string")
