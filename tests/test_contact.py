@@ -489,3 +489,14 @@ def test_eulers_disk_rolls_as_an_independent_derivation_says():
     r = run_scene(read_example("euler_disk"), t_end=0.5, samples=501, rtol=1e-13, atol=1e-15)
     assert np.max(np.abs(r.beta - _euler_disk_reference(r.t))) <= 1e-9
     assert np.ptp(r.energy) <= 1e-11 * abs(r.energy[0])
+
+
+def test_the_reduced_potential_on_a_frictionless_plane_is_the_pivoted_tops_form_with_z_of_the_contact():
+    from derive.contact.equations import I1, I3, MASS, GRAV
+    from derive.contact.geometry import OFFSET, RADIUS
+    from derive.symbolic.lagrangian import p_alpha, p_gamma
+    from derive.symbolic.rotations import beta
+
+    expected = ((p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2) + p_gamma**2 / (2 * I3)
+                + MASS * GRAV * (RADIUS - OFFSET * sp.cos(beta)))
+    assert sp.simplify(analysis.reduced_potential("sphere") - expected) == 0

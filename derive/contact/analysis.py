@@ -3,7 +3,7 @@
 * The sleeping top on a frictionless plane. The centre of mass moves only vertically (no
   horizontal force, horizontal momentum zero), z = z(β) from the height constraint, so
   L = ½ M ż² + T_rot(β, α̇, β̇, γ̇) − M g z(β). α and γ are cyclic; Routh's reduction gives
-  V_eff(β) = (p_α − p_γ cos β)² / (2 I₁ sin² β) + M g z(β) (ż² is kinetic: it does not enter).
+  V_eff(β) (:func:`reduced_potential`; ż² is kinetic, so it does not enter).
   The upright spin (β = 0, p_α = p_γ = I₃ ω₃) is stable when V_eff''(0) > 0,
   I₃² ω₃² > −4 I₁ M g z''(0), with I₁ about the centre of mass — for the pivoted top it is
   I₁ + M l² about the pivot.
@@ -25,16 +25,28 @@ from derive.contact.geometry import OFFSET, RADIUS, height_in_angles, vertical_i
 from derive.contact.integrals import expressions, holds
 from derive.contact.laws import LAWS, NORMAL
 from derive.contact.scene import ContactScene
-from derive.symbolic.rotations import alpha, beta
+from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
+from derive.symbolic.rotations import alpha, alpha_d, beta, beta_d, gamma_d
 
 SPIN, N0, THETA0, RATIO = sp.symbols("omega3 n0 theta0 alpha", real=True)
 
 
-def sleeping_condition(shape: str) -> sp.Expr:
-    """The upright spin's stability on a frictionless plane, as ``expr > 0`` (ω₃ the spin)."""
+def reduced_potential(shape: str) -> sp.Expr:
+    """V_eff(β) of the body on a frictionless plane with its centre of mass on a vertical line:
+    Routh's reduction of L = ½ M ż² + T_rot − M g z(β), z(β) the height constraint, with
+    p_α = ∂L/∂α̇ and p_γ = ∂L/∂γ̇ held (the symbols ``p_alpha``, ``p_gamma``) and β̇ = 0."""
     z = height_in_angles(contact(shape).shape)
-    p = I3 * SPIN
-    veff = (p - p * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2) + MASS * GRAV * z
+    zdot = sp.diff(z, beta) * beta_d
+    L = MASS * zdot**2 / 2 + kinetic_energy_symmetric() - MASS * GRAV * z
+    rates = sp.solve([sp.diff(L, alpha_d) - p_alpha, sp.diff(L, gamma_d) - p_gamma], [alpha_d, gamma_d], dict=True)[0]
+    routhian = (L - p_alpha * alpha_d - p_gamma * gamma_d).subs(rates).subs(beta_d, 0)
+    return sp.simplify(-routhian)
+
+
+def sleeping_condition(shape: str) -> sp.Expr:
+    """The upright spin's stability on a frictionless plane, as ``expr > 0`` (ω₃ the spin):
+    8 I₁ times the β² coefficient of V_eff at p_α = p_γ = I₃ ω₃."""
+    veff = reduced_potential(shape).subs({p_alpha: I3 * SPIN, p_gamma: I3 * SPIN})
     return sp.factor(sp.series(veff, beta, 0, 3).removeO().coeff(beta, 2) * 8 * I1)
 
 
