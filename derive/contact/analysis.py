@@ -87,7 +87,23 @@ def final_spin() -> sp.Expr:
 
 
 def analyze(sc: ContactScene) -> dict:
-    """The analysis of a contact scene, as the JSON of ``derive analyze``."""
+    """The analysis of a contact scene, as the JSON of ``derive analyze``.
+
+    Parameters
+    ----------
+    sc : ContactScene
+        The validated scene.
+
+    Returns
+    -------
+    dict
+        ``case`` ("contact"), ``shape``, ``law``; ``integrals`` (name and expression in the
+        body-frame symbols n, ω = (w1, w2, w3), v_b, z) the case keeps; ``energy_rate_sliding``
+        (Ė = F_t·u_t); ``equilibria`` (the sleeping top: I₃²ω₃² + 4 I₁ M g s > 0, stable with
+        the scene's numbers on a frictionless plane, else null); for a tippe top (sphere, s > 0)
+        ``inversion``: the interval 1 − α < I₁/I₃ < 1 + α, whether the scene is in it, and the
+        final spin n₀(α − cos θ₀)/(1 + α) with the scene's numbers.
+    """
     c, law = contact(sc.shape), LAWS[sc.law]
     ints = expressions(c)
     names = holds(c, law, sc.symmetric)

@@ -182,6 +182,30 @@ class Phases:
 
     # ---- the integration
     def run(self, y0: np.ndarray, t_out: np.ndarray, direction=(1.0, 0.0, 0.0)) -> Run:
+        """Integrate from the state ``y0`` at t = 0, sampling at ``t_out`` (ascending, last = t_end).
+
+        Parameters
+        ----------
+        y0 : ndarray, shape (13,)
+            q (body → inertial quaternion), ω̃ (body), the centre of mass and its velocity
+            (inertial), touching the plane (z = −a·n, v_z = −(ω × a)·ẑ).
+        t_out : ndarray
+            The sample times.
+        direction : sequence of 3 floats
+            The slip direction (inertial) exact Coulomb friction starts with when the slip is
+            zero and the body cannot roll.
+
+        Returns
+        -------
+        Run
+            The sampled states with their phase and slip direction, every switch, the counts.
+
+        Raises
+        ------
+        IntegrationError
+            Step budget spent, step size underflow, a singular contact, a non-finite state, or
+            more than ``max_switches`` switches, with the time.
+        """
         t_end = float(t_out[-1])
         d = np.asarray(direction, dtype=float)
         y = np.array(y0, dtype=float)

@@ -110,7 +110,28 @@ def _number(source, t, table, key, default=None, test=None, must="a finite numbe
 
 
 def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
-    """Validate a contact scene dict (``overrides`` replace ``[simulate]`` keys; None = not given)."""
+    """Validate a contact scene.
+
+    Parameters
+    ----------
+    data : dict
+        The scene, shaped like the TOML.
+    source : str
+        What names the scene in error messages.
+    **overrides
+        Replace keys of ``[simulate]``; None means "not given".
+
+    Returns
+    -------
+    ContactScene
+        The numbers, SI units and radians (z-y-z angles: α about ẑ, β about the intermediate
+        y′ axis, γ about the body axis ê₃).
+
+    Raises
+    ------
+    SceneError
+        ``<source>: <table.key>: <what is wrong>``, the first problem found.
+    """
     for key in data:
         if key == "title":
             continue

@@ -137,7 +137,29 @@ def simulate(sc: ContactScene) -> ContactResult:
 
 
 def run_scene(data: dict, source: str = "<dict>", **overrides) -> ContactResult:
-    """Validate a contact scene's dict and simulate it (``overrides`` replace [simulate] keys)."""
+    """Validate a contact scene's dict and simulate it.
+
+    Parameters
+    ----------
+    data : dict
+        The scene, shaped like the TOML (``[body]``, ``[gravity]``, ``[contact]``, ``[initial]``,
+        ``[simulate]``).
+    source : str
+        What names the scene in error messages (its file, or ``"<dict>"``).
+    **overrides
+        Replace keys of ``[simulate]`` (None: not given).
+
+    Returns
+    -------
+    ContactResult
+        The sampled motion (z-y-z angles, ω̃ in body axes, the centre of mass and contact point in
+        inertial axes, N, the slip speed, the phase), the integrals the case has, the switches.
+
+    Raises
+    ------
+    SceneError
+        Bad input, naming the key. IntegrationError: numerical failure, saying where.
+    """
     return simulate(read(data, source, **overrides))
 
 
