@@ -7,13 +7,22 @@ event functions are evaluated at four points of the step's dense output and the 
 change is located (Illinois in C, Brent's method in Python). The rules:
 
 * slide → roll (exact Coulomb, event ``stick``): the slip u_t reverses along the direction it had
-  at the step's start, g = u_t(t)·u_t(t_k)/|u_t(t_k)| ≤ 0. The slip is set to zero (the
+  at the step's start, g = u_t(t)·u_t(t_k)/|u_t(t_k)| + δ ≤ 0, δ = 1e-12 (|v| + |ω||a|) the
+  slip's round-off floor (below it u_t has no direction: the event is armed once the slip at a
+  step's start exceeds δ, and the sliding force keeps the direction it started with). A slip
+  still below max(δ, rtol (|v| + |ω||a|)) at a step's end while the rolling force is inside
+  the cone sticks there too (a slip that began on the cone's edge and did not grow, or one that
+  spirals into zero, its direction turning without reversing). The slip is set to zero (the
   centre of mass's horizontal velocity takes the difference, so Jellett's J, which has no v,
   is untouched) and the rolling force is computed: inside the cone |F_t| ≤ μN the body
   rolls, outside it slides on in the predicted direction (below).
 * roll → slide (event ``slip``): the rolling force leaves the cone, g = μN − |F_t| ≤ 0. It
-  slides in the predicted direction d: the one along which the slip starts to grow under the
-  friction −μN d, found by a fixed point d ← u̇_t(d)/|u̇_t(d)| from d = −F_t/|F_t|.
+  slides with d = −F_t/|F_t|: on the cone the sliding force −μN d is the rolling force, so the
+  contact force is continuous and the slip grows from zero (a slip acceleration along d would
+  need the cone to be left by a finite amount, which it is not at the event).
+* slide → slide (a slip reversal where rolling would leave the cone): the slip restarts in the
+  predicted direction d along which −μN d makes it grow, found by a fixed point
+  d ← u̇_t(d)/|u̇_t(d)| from d = −F_t/|F_t|.
 * slide or roll → flight (event ``lift-off``): N ≤ 0. The body flies as a free body.
 * flight → contact (event ``landing``): the gap z + a·n ≤ 0. An impact law changes the
   velocities at once: a normal impulse P ẑ with restitution e (u_n⁺ = −e u_n⁻) on a frictionless
@@ -115,7 +124,21 @@ class Phases:
             return o[_O["N"]]
         if name == "slip":
             return self.mu * o[_O["N"]] - np.linalg.norm(o[_O["ft_x"]:_O["ft_z"] + 1])
-        return float(o[_O["slip_x"]:_O["slip_z"] + 1] @ ref)  # stick
+        return float(o[_O["slip_x"]:_O["slip_z"] + 1] @ ref) + o[_O["slip_floor"]]  # stick
+
+    def stick_reference(self, phase, y, d) -> np.ndarray:
+        """The slip's direction at a step's start, which the stick event watches reverse; zero
+        (the event not armed) while the slip is below its round-off floor, as just after it
+        starts from zero, when it has no direction of its own yet."""
+        o = self.out(phase, y, d)
+        s = o[_O["slip_x"]:_O["slip_z"] + 1]
+        n = np.linalg.norm(s)
+        return s / n if n > max(1.0, self.rtol * 1e12) * o[_O["slip_floor"]] else np.zeros(3)
+
+    def rolls_inside_cone(self, y, d) -> bool:
+        """Whether the rolling force at ``y`` is inside the friction cone, |F_t| ≤ μN."""
+        o = self.out(ROLL, y, d)
+        return bool(np.linalg.norm(o[_O["ft_x"]:_O["ft_z"] + 1]) <= self.mu * o[_O["N"]])
 
     # ---- the switch rules
     def predicted_direction(self, y: np.ndarray, ft: np.ndarray) -> np.ndarray:
@@ -149,8 +172,9 @@ class Phases:
         if not self.law.rolls:
             return SLIDE, d
         if self.law.slides:
-            s = self.slip(SLIDE, y, d)
-            if np.linalg.norm(s) > 1e-9 * max(1.0, np.linalg.norm(y[10:13])):
+            o = self.out(SLIDE, y, d)
+            s = o[_O["slip_x"]:_O["slip_z"] + 1]
+            if np.linalg.norm(s) > o[_O["slip_floor"]]:
                 return SLIDE, s / np.linalg.norm(s)
             y[:] = self.stop_slip(y, d)
             o = self.out(ROLL, y, d)
@@ -239,9 +263,9 @@ class Phases:
             elif event == "stick":
                 phase, d = self.contact_phase(self.stop_slip(y, d), d)
                 y = self.stop_slip(y, d)
-            else:  # slip
+            else:  # slip: on the cone, the sliding force −μN d takes over the rolling force
                 ft = self.out(ROLL, y, d)[_O["ft_x"]:_O["ft_z"] + 1]
-                d = self.predicted_direction(y, ft)
+                d = -ft / np.linalg.norm(ft)
                 phase = SLIDE
             run.switches.append(Switch(t, before, PHASE_NAMES[phase], event, float(e0),
                                        float(self.out(phase, y, d)[_O["energy"]])))
@@ -263,7 +287,7 @@ class Phases:
         events = self.events(phase)
         solver = DOP853(lambda t, y: k.rhs(phase, y, p, d), t0, y0, t_end, rtol=self.rtol,
                         atol=self.atol)
-        ref = d.copy()
+        ref = self.stick_reference(phase, y0, d)
         g_old = {name: self.g(name, phase, y0, d, ref) for name in events}
         while solver.status == "running":
             try:
@@ -307,10 +331,10 @@ class Phases:
             y_new = solver.y
             g_old = {name: self.g(name, phase, y_new, d, ref) for name in events}
             if "stick" in events:
-                s = self.slip(phase, y_new, d)
-                if np.linalg.norm(s) > 0:
-                    ref = s / np.linalg.norm(s)
-                    g_old["stick"] = float(s @ ref)
+                ref = self.stick_reference(phase, y_new, d)
+                if not ref.any() and self.rolls_inside_cone(y_new, d):
+                    return solver.t, self.touching(y_new, phase, d), (nxt, "stick")
+                g_old["stick"] = self.g("stick", phase, y_new, d, ref)
         return solver.t, solver.y, (nxt, None)
 
     def _phase_c(self, run: Run, phase, t0, y0, d, t_end, nxt):
@@ -319,11 +343,7 @@ class Phases:
         events = self.events(phase)
         codes = np.array([EVENT_CODES[e] for e in events], dtype=np.intc)
         y = np.array(y0, dtype=float)
-        ref, counts = d.copy(), np.zeros(2, dtype=np.int_)
-        if "stick" in events:
-            s = self.slip(phase, y, d)
-            if np.linalg.norm(s) > 0:
-                ref = s / np.linalg.norm(s)
+        ref, counts = self.stick_reference(phase, y, d), np.zeros(2, dtype=np.int_)
         code, t, which, _, its = self.k.advance(phase, t0, y, t_end, self.p, d, self.rtol, self.atol, 0.0,
                                                 self.max_steps - run.nstep, codes, ref, run.t, nxt, run.y,
                                                 counts)

@@ -8,7 +8,7 @@
  * dir (3): the slip direction (inertial) exact Coulomb friction uses when the slip is zero.
  *
  * contact_point_rolling_eval(phase, y, p, dir, dy, out): phase 0 slide, 1 roll, 2 flight. Writes
- * dy = dy/dt (when dy is not NULL) and out (20): N, ft_x, ft_y, ft_z, slip_x, slip_y, slip_z, gap, power, a_x, a_y, a_z, u_n, energy, p_alpha, p_gamma, jellett, routh, z, vz.
+ * dy = dy/dt (when dy is not NULL) and out (21): N, ft_x, ft_y, ft_z, slip_x, slip_y, slip_z, gap, power, a_x, a_y, a_z, u_n, energy, p_alpha, p_gamma, jellett, routh, z, vz, slip_floor.
  * Returns 0, or 1 when the state is outside the model's domain (a singular contact).
  */
 #include <math.h>
@@ -16,7 +16,7 @@
 
 #define CONTACT_POINT_ROLLING_NY 13
 #define CONTACT_POINT_ROLLING_NP 9
-#define CONTACT_POINT_ROLLING_NOUT 20
+#define CONTACT_POINT_ROLLING_NOUT 21
 
 int contact_point_rolling_eval(int phase, const double *y, const double *p, const double *dir,
                       double *dy, double *out);
@@ -84,6 +84,10 @@ int contact_point_rolling_eval(int phase, const double *y, const double *p, cons
     ut2 = u2 - un * n2;
     ut3 = u3 - un * n3;
     (void)ut1; (void)ut2; (void)ut3;
+    /* the slip's round-off floor: below it u_t is the difference of O(|v| + |w||a|) numbers and
+     * has no direction of its own */
+    const double slip_floor = 1e-12 * (sqrt(vb1 * vb1 + vb2 * vb2 + vb3 * vb3)
+                                       + sqrt(w1 * w1 + w2 * w2 + w3 * w3) * sqrt(a1 * a1 + a2 * a2 + a3 * a3));
     if (phase == 0) {
         return 1;
     } else if (phase == 1) {
@@ -152,6 +156,7 @@ int contact_point_rolling_eval(int phase, const double *y, const double *p, cons
         out[12] = un;
         out[18] = z;
         out[19] = vz;
+        out[20] = slip_floor;
         {
             const double x0 = I3*w3;
             out[13] = (1.0/2.0)*I1*pow(w1, 2) + (1.0/2.0)*I2*pow(w2, 2) + (1.0/2.0)*I3*pow(w3, 2) + M*g*z + (1.0/2.0)*M*(pow(vb1, 2) + pow(vb2, 2) + pow(vb3, 2));
@@ -172,7 +177,7 @@ long contact_point_rolling_outputs(long n, const int *phase, const double *y, co
 {
     long i;
     for (i = 0; i < n; i++) {
-        if (contact_point_rolling_eval(phase[i], y + i * 13, p, dir + 3 * i, NULL, out + i * 20))
+        if (contact_point_rolling_eval(phase[i], y + i * 13, p, dir + 3 * i, NULL, out + i * 21))
             return i + 1;
     }
     return 0;
@@ -218,10 +223,11 @@ static const double DOP_D[4][16] = {
 };
 
 #define NY 13
-#define NOUT 20
+#define NOUT 21
 
 /* the events: landing (the gap), lift-off (N), slip (the cone mu N - |F_t|), stick (the slip
- * along its direction at the step's start); each fires when its value goes from >= 0 to < 0 */
+ * along its direction at the step's start, past its round-off floor); each fires when its
+ * value goes from >= 0 to < 0 */
 static double event_value(int ev, int phase, const double *y, const double *p, const double *dir,
                           const double *ref)
 {
@@ -231,7 +237,7 @@ static double event_value(int ev, int phase, const double *y, const double *p, c
     case 0: return out[7];
     case 1: return out[0];
     case 2: return p[7] * out[0] - sqrt(out[1] * out[1] + out[2] * out[2] + out[3] * out[3]);
-    default: return out[4] * ref[0] + out[5] * ref[1] + out[6] * ref[2];
+    default: return out[4] * ref[0] + out[5] * ref[1] + out[6] * ref[2] + out[20];
     }
 }
 
@@ -261,7 +267,8 @@ static double rms(const double *v, const double *scale)
 /* contact_point_rolling_advance: integrate `phase` from (*t, y) toward t_end.
  * h_io: the step to try (0: chosen as SciPy does), on return the next one. max_steps: accepted
  * steps allowed. evs[nev]: the event codes to watch; ref: the stick event's slip direction
- * (updated after each step). Samples: ts[nts] ascending, *its the next one to write into
+ * (updated after each step; zero while the slip is below its round-off floor, when a slip
+ * that has just started has no direction to reverse and the event is not armed). Samples: ts[nts] ascending, *its the next one to write into
  * ys (row-major NY per sample). counts: [accepted steps, rhs evaluations], added to.
  * Returns 0 at t_end, 1 at an event (*t, y there, *which its index in evs), 2 when the step
  * budget is spent, 3 when the step falls below the spacing of doubles, 4 outside the domain
@@ -416,7 +423,19 @@ int contact_point_rolling_advance(int phase, double *t, double *y, double t_end,
                 double out[NOUT], n2;
                 if (contact_point_rolling_eval(phase, y, p, dir, NULL, out)) return 4;
                 n2 = sqrt(out[4] * out[4] + out[5] * out[5] + out[6] * out[6]);
-                if (n2 > 0.0) { ref[0] = out[4] / n2; ref[1] = out[5] / n2; ref[2] = out[6] / n2; }
+                /* below rtol of the velocities' scale the slip counts as none: a slip that
+                 * spirals into zero (its direction turning, never reversing) sticks there */
+                if (n2 > fmax(out[20], rtol * 1e12 * out[20])) {
+                    ref[0] = out[4] / n2; ref[1] = out[5] / n2; ref[2] = out[6] / n2;
+                } else { /* no slip to speak of: it sticks if rolling keeps inside the cone */
+                    ref[0] = ref[1] = ref[2] = 0.0;
+                    if (contact_point_rolling_eval(1, y, p, dir, NULL, out) == 0
+                        && sqrt(out[1] * out[1] + out[2] * out[2] + out[3] * out[3]) <= p[7] * out[0]) {
+                        *which = e;
+                        *h_io = h_abs;
+                        return 1;
+                    }
+                }
             }
             g_old[e] = event_value(evs[e], phase, y, p, dir, ref);
         }
