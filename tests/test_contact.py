@@ -434,9 +434,9 @@ def test_the_compiled_phase_loop_takes_the_steps_scipys_dop853_takes():
     c, s = run_scene(d), run_scene(d, method="scipy-dop853")
     assert (c.method, s.method) == ("dop853", "scipy-dop853")
     assert [x.event for x in c.switches] == [x.event for x in s.switches] == ["stick"]
-    # the stick is located on the dense output of the step across the slip's kink, whose value
-    # is good to the tolerance asked (rtol 1e-10), not to round-off
-    assert abs(c.switches[0].t - s.switches[0].t) <= 1e-10 * s.switches[0].t
+    # a slip below rtol (|v| + |ω||a|) ≈ 2e-10 m/s sticks at the step's end; it falls at ~6 m/s²,
+    # so either loop may stick up to ~4e-11 s before the slip's zero
+    assert abs(c.switches[0].t - s.switches[0].t) <= 1e-10
     assert np.max(np.abs(c.omega - s.omega)) <= 1e-9 * 180.0
     assert np.max(np.abs(c.beta - s.beta)) <= 1e-10
 
