@@ -502,3 +502,24 @@ def test_the_reduced_potential_on_a_frictionless_plane_is_the_pivoted_tops_form_
     expected = ((p_alpha - p_gamma * sp.cos(beta)) ** 2 / (2 * I1 * sp.sin(beta) ** 2) + p_gamma**2 / (2 * I3)
                 + MASS * GRAV * (RADIUS - OFFSET * sp.cos(beta)))
     assert sp.simplify(analysis.reduced_potential("sphere") - expected) == 0
+
+
+def test_a_round_peg_with_little_friction_sticks_and_slips_each_nutation_keeping_jellett():
+    d = read_example("round_peg_top")
+    d["contact"]["mu"] = 0.1
+    r = run_scene(d, t_end=0.8, samples=801)
+    events = [s.event for s in r.switches]
+    assert events.count("slip") >= 3 and events.count("stick") >= 4
+    assert len(r.switches) < 60  # the cycles, not a cascade
+    J = r.integrals["jellett"]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+    for s in r.switches:  # nothing gains energy at a switch beyond round-off
+        assert s.energy_after <= s.energy_before * (1 + 1e-12)
+
+
+@pytest.mark.slow
+def test_a_round_peg_with_little_friction_rises():
+    d = read_example("round_peg_top")
+    d["contact"]["mu"] = 0.02
+    r = run_scene(d, t_end=10.0, samples=1001)
+    assert r.beta[-1] < 0.15 and r.beta[0] == pytest.approx(0.5)
