@@ -33,7 +33,7 @@ PARAMS = (I1, I2, I3, MASS, GRAV, RADIUS, OFFSET, MU, EPS)
 PARAM_NAMES = tuple(str(p) for p in PARAMS)
 #: The evaluator's ``out`` array, in order.
 OUTPUTS = ("N", "ft_x", "ft_y", "ft_z", "slip_x", "slip_y", "slip_z", "gap", "power",
-           "a_x", "a_y", "a_z", "u_n", "energy", "p_alpha", "p_gamma", "jellett", "routh", "z", "vz", "slip_floor")
+           "a_x", "a_y", "a_z", "u_n", "energy", "p_alpha", "p_gamma", "jellett", "routh", "z", "vx", "vy", "vz", "slip_floor")
 STATE = ("q0", "q1", "q2", "q3", "w1", "w2", "w3", "x", "y", "z", "vx", "vy", "vz")
 PHASES = {"slide": 0, "roll": 1, "flight": 2}
 

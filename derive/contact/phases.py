@@ -155,10 +155,11 @@ class Phases:
         return d
 
     def touching(self, y: np.ndarray, phase: int, d: np.ndarray) -> np.ndarray:
-        """The state with z and v_z those the contact sets (read in flight, not in contact)."""
+        """The state with z and v_z those the contact sets, and rolling the whole velocity
+        v = −ω × a (the values the phase reads in place of the integrated ones)."""
         o = self.out(phase, y, d)
         y = y.copy()
-        y[9], y[12] = o[_O["z"]], o[_O["vz"]]
+        y[9:13] = o[_O["z"]:_O["vz"] + 1]
         return y
 
     def stop_slip(self, y: np.ndarray, d: np.ndarray) -> np.ndarray:
@@ -353,7 +354,7 @@ class Phases:
         run.phase[rows], run.direction[rows] = phase, d
         if phase != FLIGHT and its > nxt:
             o = self.k.outputs_many(run.phase[rows], run.y[rows], self.p, run.direction[rows])
-            run.y[rows, 9], run.y[rows, 12] = o[:, _O["z"]], o[:, _O["vz"]]
+            run.y[rows, 9:13] = o[:, _O["z"]:_O["vz"] + 1]
         if code in _FAILURES:
             raise IntegrationError(f"t = {t:.8g}: {_FAILURES[code]} ({PHASE_NAMES[phase]})")
         if code == 1:

@@ -91,6 +91,10 @@ class ContactResult:
     model: str = ""
     effects: tuple = (GRAVITY, "contact")
 
+    def plot_to(self, f, fmt: str = "png") -> None:
+        """Draw the result's page (:func:`plot_page`) into the file object ``f``."""
+        plot_page(self, f, fmt)
+
     def arrays(self) -> dict:
         """The output file's arrays (``integral_<name>`` for each integral the case has)."""
         out = {k: getattr(self, k) for k in ("t", "alpha", "beta", "gamma", "omega", "axis", "energy",
@@ -196,5 +200,3 @@ def plot_page(res: ContactResult, f, fmt: str = "png") -> None:
     fig.savefig(f, format=fmt)
     plt.close(fig)
 
-
-ContactResult.plot_to = plot_page

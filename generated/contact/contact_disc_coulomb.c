@@ -8,15 +8,18 @@
  * dir (3): the slip direction (inertial) exact Coulomb friction uses when the slip is zero.
  *
  * contact_disc_coulomb_eval(phase, y, p, dir, dy, out): phase 0 slide, 1 roll, 2 flight. Writes
- * dy = dy/dt (when dy is not NULL) and out (21): N, ft_x, ft_y, ft_z, slip_x, slip_y, slip_z, gap, power, a_x, a_y, a_z, u_n, energy, p_alpha, p_gamma, jellett, routh, z, vz, slip_floor.
+ * dy = dy/dt (when dy is not NULL) and out (23): N, ft_x, ft_y, ft_z, slip_x, slip_y, slip_z, gap, power, a_x, a_y, a_z, u_n, energy, p_alpha, p_gamma, jellett, routh, z, vx, vy, vz, slip_floor.
  * Returns 0, or 1 when the state is outside the model's domain (a singular contact).
+ * While touching (phases 0 and 1) the height z and its rate vz are those the contact sets,
+ * z = -a.n and vz = -n.(w x a), and rolling (phase 1) the whole velocity is v = -w x a: those
+ * states are integrated but read only where the phase leaves them free.
  */
 #include <math.h>
 #include <stddef.h>
 
 #define CONTACT_DISC_COULOMB_NY 13
 #define CONTACT_DISC_COULOMB_NP 9
-#define CONTACT_DISC_COULOMB_NOUT 21
+#define CONTACT_DISC_COULOMB_NOUT 23
 
 int contact_disc_coulomb_eval(int phase, const double *y, const double *p, const double *dir,
                       double *dy, double *out);
@@ -62,7 +65,7 @@ int contact_disc_coulomb_eval(int phase, const double *y, const double *p, const
     const double n1 = R[6], n2 = R[7], n3 = R[8];
     double a1, a2, a3, u1, u2, u3, ut1, ut2, ut3, un;
     double f1 = 0.0, f2 = 0.0, f3 = 0.0, N = 0.0;
-    double z = y[9], vz = y[12];
+    double z = y[9], vx = y[10], vy = y[11], vz = y[12];
     {
         const double x0 = r/sqrt(pow(n1, 2) + pow(n2, 2));
         a1 = -n1*x0;
@@ -74,9 +77,14 @@ int contact_disc_coulomb_eval(int phase, const double *y, const double *p, const
         z = -(a1 * n1 + a2 * n2 + a3 * n3);
         vz = -(n1 * (w2 * a3 - w3 * a2) + n2 * (w3 * a1 - w1 * a3) + n3 * (w1 * a2 - w2 * a1));
     }
-    const double vb1 = R[0] * y[10] + R[3] * y[11] + R[6] * vz;
-    const double vb2 = R[1] * y[10] + R[4] * y[11] + R[7] * vz;
-    const double vb3 = R[2] * y[10] + R[5] * y[11] + R[8] * vz;
+    if (phase == 1) { /* rolling: the centre of mass's velocity is v = -w x a, all of it */
+        const double c1 = w2 * a3 - w3 * a2, c2 = w3 * a1 - w1 * a3, c3 = w1 * a2 - w2 * a1;
+        vx = -(R[0] * c1 + R[1] * c2 + R[2] * c3);
+        vy = -(R[3] * c1 + R[4] * c2 + R[5] * c3);
+    }
+    const double vb1 = R[0] * vx + R[3] * vy + R[6] * vz;
+    const double vb2 = R[1] * vx + R[4] * vy + R[7] * vz;
+    const double vb3 = R[2] * vx + R[5] * vy + R[8] * vz;
     u1 = vb1 + w2 * a3 - w3 * a2;
     u2 = vb2 + w3 * a1 - w1 * a3;
     u3 = vb3 + w1 * a2 - w2 * a1;
@@ -271,7 +279,7 @@ int contact_disc_coulomb_eval(int phase, const double *y, const double *p, const
         dy[2] = 0.5 * (y[0] * w2 + y[3] * w1 - y[1] * w3);
         dy[3] = 0.5 * (y[0] * w3 + y[1] * w2 - y[2] * w1);
         dy[4] = wd1; dy[5] = wd2; dy[6] = wd3;
-        dy[7] = y[10]; dy[8] = y[11]; dy[9] = vz;
+        dy[7] = vx; dy[8] = vy; dy[9] = vz;
         dy[10] = (R[0] * f1 + R[1] * f2 + R[2] * f3) / M;
         dy[11] = (R[3] * f1 + R[4] * f2 + R[5] * f3) / M;
         dy[12] = (R[6] * f1 + R[7] * f2 + R[8] * f3) / M - g;
@@ -293,8 +301,10 @@ int contact_disc_coulomb_eval(int phase, const double *y, const double *p, const
         out[11] = R[6] * a1 + R[7] * a2 + R[8] * a3;
         out[12] = un;
         out[18] = z;
-        out[19] = vz;
-        out[20] = slip_floor;
+        out[19] = vx;
+        out[20] = vy;
+        out[21] = vz;
+        out[22] = slip_floor;
         {
             const double x0 = I1*n1*w1;
             const double x1 = I2*n2*w2;
@@ -322,7 +332,7 @@ long contact_disc_coulomb_outputs(long n, const int *phase, const double *y, con
 {
     long i;
     for (i = 0; i < n; i++) {
-        if (contact_disc_coulomb_eval(phase[i], y + i * 13, p, dir + 3 * i, NULL, out + i * 21))
+        if (contact_disc_coulomb_eval(phase[i], y + i * 13, p, dir + 3 * i, NULL, out + i * 23))
             return i + 1;
     }
     return 0;
@@ -368,7 +378,7 @@ static const double DOP_D[4][16] = {
 };
 
 #define NY 13
-#define NOUT 21
+#define NOUT 23
 
 /* the events: landing (the gap), lift-off (N), slip (the cone mu N - |F_t|), stick (the slip
  * along its direction at the step's start, past its round-off floor); each fires when its
@@ -382,7 +392,7 @@ static double event_value(int ev, int phase, const double *y, const double *p, c
     case 0: return out[7];
     case 1: return out[0];
     case 2: return p[7] * out[0] - sqrt(out[1] * out[1] + out[2] * out[2] + out[3] * out[3]);
-    default: return out[4] * ref[0] + out[5] * ref[1] + out[6] * ref[2] + out[20];
+    default: return out[4] * ref[0] + out[5] * ref[1] + out[6] * ref[2] + out[22];
     }
 }
 
@@ -570,7 +580,7 @@ int contact_disc_coulomb_advance(int phase, double *t, double *y, double t_end, 
                 n2 = sqrt(out[4] * out[4] + out[5] * out[5] + out[6] * out[6]);
                 /* below rtol of the velocities' scale the slip counts as none: a slip that
                  * spirals into zero (its direction turning, never reversing) sticks there */
-                if (n2 > fmax(out[20], rtol * 1e12 * out[20])) {
+                if (n2 > fmax(out[22], rtol * 1e12 * out[22])) {
                     ref[0] = out[4] / n2; ref[1] = out[5] / n2; ref[2] = out[6] / n2;
                 } else { /* no slip to speak of: it sticks if rolling keeps inside the cone */
                     ref[0] = ref[1] = ref[2] = 0.0;
