@@ -170,8 +170,16 @@ def simulate_summary(res, wall_time: float, npz: str | None = None, png: str | N
 
 def _cmd_analyze(args) -> int:
     from derive.lecture.analysis import render
-    from derive.sim.scene import load_scene
+    from derive.sim.scene import contact_data, load_scene
 
+    found = contact_data(args.scene)  # -- contact hook: a top on a table, derive.contact's analysis --
+    if found is not None:
+        from derive.contact import analysis, scene as contact_scene
+
+        sc = contact_scene.read(*found)
+        note("deriving the contact's integrals and conditions with SymPy (a few seconds)")
+        print(analysis.render(sc, args.format), end="" if args.format == "markdown" else "\n")
+        return EXIT_OK  # -- end of the contact hook --
     scene = load_scene(args.scene)  # bad input is exit 2 at once, without the note
     note("deriving the equations, integrals and equilibria with SymPy (a few seconds)")
     print(render(scene, args.format), end="" if args.format == "markdown" else "\n")

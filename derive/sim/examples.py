@@ -18,11 +18,14 @@ from derive.codegen.render import data_dir
 #: The folder of the example scenes (sweeps in its ``sweeps/`` subfolder).
 SCENES = data_dir("scenes")
 KINDS = {"scene": SCENES, "sweep": SCENES / "sweeps"}
+#: Tops on a table (``[contact]`` scenes, run by derive.contact): scenes by name too (contact hook).
+CONTACT = SCENES / "contact"
 
 
 def names(kind: str = "scene") -> list[str]:
     """The example names of one kind (``"scene"`` or ``"sweep"``), sorted."""
-    return sorted(p.stem for p in KINDS[kind].glob("*.toml"))
+    extra = CONTACT.glob("*.toml") if kind == "scene" else ()  # contact hook
+    return sorted(p.stem for p in (*KINDS[kind].glob("*.toml"), *extra))
 
 
 def path(name: str, kind: str = "scene") -> Path | None:
@@ -31,6 +34,8 @@ def path(name: str, kind: str = "scene") -> Path | None:
     if not stem or os.sep in stem or "/" in stem or stem.startswith("."):
         return None
     found = KINDS[kind] / f"{stem}.toml"
+    if kind == "scene" and not found.is_file():
+        found = CONTACT / f"{stem}.toml"  # contact hook
     return found if found.is_file() else None
 
 

@@ -417,6 +417,20 @@ def load_scene(scene, /, **overrides) -> Scene:
     return _Validator(source).scene(data, overrides)
 
 
+# -- tops on a table: a scene with a [contact] table belongs to derive.contact (hook) --
+def contact_data(scene) -> tuple[dict, str] | None:
+    """(the TOML dict, its source) when ``scene`` (a path, example name or dict) has a
+    ``[contact]`` table — a top on a table, read and run by :mod:`derive.contact` — else None."""
+    if isinstance(scene, Mapping):
+        return (dict(scene), "<dict>") if "contact" in scene else None
+    if not isinstance(scene, (str, os.PathLike)) or isinstance(scene, bytes):
+        return None
+    source = examples.resolve(os.fspath(scene), "scene")
+    data = read_toml(source)
+    return (data, source) if "contact" in data else None
+# -- end of the contact hook --
+
+
 def dict_key(data) -> tuple | None:
     """A key of a scene dict's whole content, for a memo of what it validates to: its pickle
     (every value with its type, floats by their bits: ``1``, ``1.0`` and ``True`` apart, and

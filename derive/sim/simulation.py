@@ -35,6 +35,7 @@ from derive.runtime.integrate import ModelKernel
 from derive.sim.inputs import (AUTO, _check_budget, _settings, choose_method, default_step,  # noqa: F401
                                fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
 from derive.sim.scene import FIXED_STEP_METHODS, Scene, dict_key, load_scene, same_numbers
+from derive.sim.scene import contact_data  # contact hook
 from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
@@ -345,6 +346,10 @@ def simulate(scene, **overrides) -> Result:
     validate it, plan it (:func:`derive.sim.plan.recent`: the kept plan of an equal scene simulated
     recently, else a new one), then run the plan. A dict equal to one simulated recently, without
     overrides, runs that one's plan (:func:`derive.sim.plan.for_dict`)."""
+    found = contact_data(scene)  # -- contact hook: a top on a table runs in derive.contact --
+    if found is not None:
+        from derive.contact.simulate import run_scene  # SymPy and SciPy: only for contact scenes
+        return run_scene(*found, **overrides)  # -- end of the contact hook --
     key = dict_key(scene) if not overrides or all(v is None for v in overrides.values()) else None
     if key is not None:
         return run(plan.for_dict(key, lambda: load_scene(scene)))
@@ -750,6 +755,8 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
         def plot(f):
             from derive.sim.plots import plot_result
 
+            if hasattr(res, "plot_to"):  # contact hook: a top on a table draws its own page
+                return res.plot_to(f, plot_format)
             plot_result(res, f, plot_format)
 
         writers[png] = plot
