@@ -12,7 +12,7 @@ the loop, y_{i,n+1} = f_i,n / (n + 1).
 Nothing here is C text: the scalar jet and the lanes jet (several trajectories at once) are both
 rendered from the same steps by :mod:`derive.codegen.taylor`, each step by the macros of its
 rule's file ``templates/c/taylor_rules/<rule>.j2``, which holds the rule's recurrence and its
-scalar and lanes C. :data:`RULE_TABLE` has one row per rule, a , b the operands' coefficients
+scalar and lanes C. :data:`RULE_TABLE` has one row per rule, a and b the operands' coefficients
 and u the step's:
 
 ===========  ==========================================================================
@@ -43,7 +43,7 @@ from derive.codegen.kernelspec import KernelSpec, _flatten_observables
 
 
 class NoTaylorRule(ValueError):
-    """The expression uses a function without a rule in :data:`RULES`."""
+    """The expression uses a function without a rule (:data:`RULES`, :data:`RULE_TABLE`)."""
 
 
 @dataclass(frozen=True)
@@ -64,7 +64,9 @@ class Rule:
     unary: tuple = ()
 
 
-#: One row per rule, in the order their C helpers are emitted.
+#: One row per rule, in the order their C helpers are emitted. Adding a rule adds its row here
+#: and its file ``templates/c/taylor_rules/<name>.j2``; a function of more than one operand (or
+#: made of several steps) also its decomposition in :data:`RULES`.
 RULE_TABLE = (
     Rule("const", elementwise=True),
     Rule("add", elementwise=True),
@@ -80,9 +82,14 @@ RULE_TABLE = (
     Rule("atan2", 3.0),
     Rule("piecewise", elementwise=True),
 )
-RULE_BY_NAME = {r.name: r for r in RULE_TABLE}
-#: The rules, in the order their C helpers are emitted.
-RULE_NAMES = tuple(r.name for r in RULE_TABLE)
+
+
+def rule_of(name: str) -> Rule:
+    """The row of :data:`RULE_TABLE` named ``name``."""
+    for r in RULE_TABLE:
+        if r.name == name:
+            return r
+    raise KeyError(name)
 
 
 @dataclass(frozen=True)
@@ -163,7 +170,7 @@ class Decomposition:
     def rules(self) -> list[str]:
         """The rules the steps use, in the order of :data:`RULE_TABLE` (the C helpers to emit)."""
         used = {s.rule for s in self.steps}
-        return [r for r in RULE_NAMES if r in used]
+        return [r.name for r in RULE_TABLE if r.name in used]
 
     @property
     def n_op_nodes(self) -> int:
@@ -237,7 +244,7 @@ class _Builder:
         elif self.is_const(e):
             out = Const(e)
         else:
-            rule = RULES.get(e.func)
+            rule = _decomposition(e.func)
             if rule is None:
                 raise NoTaylorRule(f"no Taylor rule for {e.func.__name__} (in {e})")
             out = rule(self, e)
@@ -380,8 +387,8 @@ def _piecewise(b: _Builder, e) -> int:
     return b.step("piecewise", branches=tuple(branches), reads0=frozenset(reads))
 
 
-#: SymPy function → its decomposition into steps (the unary rules come from their rows of
-#: :data:`RULE_TABLE`).
+#: SymPy function → its decomposition into steps, for the functions that are more than one rule
+#: of one series operand (those come from :attr:`Rule.unary` of their rows).
 RULES = {
     sp.Add: _add,
     sp.Mul: _mul,
@@ -391,8 +398,18 @@ RULES = {
     sp.atan2: _atan2,
     sp.atan: _atan,
     sp.Piecewise: _piecewise,
-    **{f: _unary(r.name) for r in RULE_TABLE for f in r.unary},
 }
+
+
+def _decomposition(func):
+    """The decomposition of SymPy function ``func`` (:data:`RULES`, or the rule of
+    :data:`RULE_TABLE` that takes it as a unary function), or None."""
+    if func in RULES:
+        return RULES[func]
+    for r in RULE_TABLE:
+        if func in r.unary:
+            return _unary(r.name)
+    return None
 
 
 def decompose(spec: KernelSpec, outputs: bool = False) -> Decomposition:
@@ -538,7 +555,7 @@ def jet_weight(spec: KernelSpec) -> float:
         d = decompose(spec)
     except NoTaylorRule:
         return 0.0
-    return round(sum(RULE_BY_NAME[s.rule].weight for s in d.steps), 3)
+    return round(sum(rule_of(s.rule).weight for s in d.steps), 3)
 
 
 def controlled_states(model) -> tuple[bool, ...]:

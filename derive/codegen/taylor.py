@@ -19,9 +19,9 @@ import functools
 
 import sympy as sp
 
-from derive.codegen.jet import (RULE_BY_NAME, RULE_NAMES, RULE_TABLE, RULES, Const,  # noqa: F401
-                                Decomposition, NoTaylorRule, Rule, Step, applicable,
-                                controlled_states, decompose, jet_weight, series_safe)
+from derive.codegen import jet
+from derive.codegen.jet import (Const, Decomposition, NoTaylorRule, applicable,  # noqa: F401
+                                controlled_states, decompose, jet_weight, rule_of, series_safe)
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, c_expr
 from derive.codegen.render import TAYLOR_INC, environment, render
 from derive.methods.taylor import METHODS, TaylorMethod
@@ -76,12 +76,11 @@ def coef(op, n: str = "n") -> str:
     return SCALAR.coef(op, n)
 
 
-@functools.lru_cache(maxsize=None)
 def rule_templates() -> dict:
     """{rule: its file's macros} (``templates/c/taylor_rules/<rule>.j2``), one per row of
-    :data:`RULE_TABLE`."""
+    :data:`derive.codegen.jet.RULE_TABLE`."""
     env = environment()
-    return {r.name: env.get_template(f"c/taylor_rules/{r.name}.j2").module for r in RULE_TABLE}
+    return {r.name: env.get_template(f"c/taylor_rules/{r.name}.j2").module for r in jet.RULE_TABLE}
 
 
 def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | None = None
@@ -170,7 +169,7 @@ def _lanes(d: Decomposition, rhs_steps: list, scope: tuple) -> dict | None:
     :class:`CView`. None when a helper's argument would need a lane (a parameter in a power's
     exponent): such a model has no lanes driver."""
     for s in rhs_steps:
-        if not RULE_BY_NAME[s.rule].elementwise and any(
+        if not rule_of(s.rule).elementwise and any(
                 isinstance(a, Const) and sp.sympify(a.expr).free_symbols for a in s.args):
             return None
     laned = {nm for _, nm in scope[0]} | {nm for nm, _ in scope[1]} | {str(s) for s in d.order0}
@@ -195,14 +194,14 @@ def _fused(d: Decomposition, rhs_steps: list) -> list:
     for s in rhs_steps:
         deps = ({writer[k].index for k in s.reads if k in writer} & made) - {s.index}
         stage[s.index] = max((stage[k] + sums[k] for k in deps), default=0)
-        sums[s.index] = not RULE_BY_NAME[s.rule].elementwise
+        sums[s.index] = not rule_of(s.rule).elementwise
     out = []
     for st in sorted(set(stage.values())):
         here = [s for s in rhs_steps if stage[s.index] == st]
-        out += [("loop", s) for s in here if RULE_BY_NAME[s.rule].elementwise]
-        calls = [s for s in here if not RULE_BY_NAME[s.rule].elementwise]
-        out += [("call", s) for s in calls if not RULE_BY_NAME[s.rule].fusable]
-        group = [s for s in calls if RULE_BY_NAME[s.rule].fusable]
+        out += [("loop", s) for s in here if rule_of(s.rule).elementwise]
+        calls = [s for s in here if not rule_of(s.rule).elementwise]
+        out += [("call", s) for s in calls if not rule_of(s.rule).fusable]
+        group = [s for s in calls if rule_of(s.rule).fusable]
         for k in range(0, len(group), FUSED_MAX):
             chunk = group[k:k + FUSED_MAX]
             out.append(("call", chunk[0]) if len(chunk) == 1 else ("fused", chunk))
