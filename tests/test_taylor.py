@@ -25,7 +25,9 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 
 import derive
-from derive.codegen.render import ROOT
+from derive.codegen import jet
+from derive.codegen import taylor as taylor_codegen
+from derive.codegen.render import ROOT, environment
 from derive.codegen.solvers import render_solvers
 from derive.codegen.sources import shipped_keys
 from derive.codegen.taylor import NoTaylorRule, controlled_states, decompose, render_taylor
@@ -176,15 +178,15 @@ def _rules_model():
                  states=(y0, y1, y2), params=(a, b), rhs=rhs, domain=(y1**2 - sp.Rational(1, 100),))
 
 
-def _rules_library(model):
-    header = ("#ifndef TAYLOR_RULES_H\n#define TAYLOR_RULES_H\n#define taylor_rules_NY 3\n"
-              "#define taylor_rules_NP 2\n#endif\n")
-    files = {"taylor_rules.h": header}
-    files.update(render_solvers("taylor_rules", 3))
+def _rules_library(model, name="taylor_rules"):
+    ny, npar = len(model.states), len(model.params)
+    header = (f"#ifndef {name.upper()}_H\n#define {name.upper()}_H\n#define {name}_NY {ny}\n"
+              f"#define {name}_NP {npar}\n#endif\n")
+    files = {f"{name}.h": header}
+    files.update(render_solvers(name, ny))
     files.update(render_taylor(model))
     # strict C99, every warning an error: the Taylor file compiled alone (the solvers only)
-    return compile_library("taylor_rules", files, "taylor_rules_taylor.c",
-                           (*STRICT_FLAGS, "-O2", "-fPIC"))
+    return compile_library(name, files, f"{name}_taylor.c", (*STRICT_FLAGS, "-O2", "-fPIC"))
 
 
 def test_every_rule_against_the_composed_series_and_strict_c99():
@@ -225,6 +227,63 @@ def test_the_solver_alone_against_mpmath():
     ref = solve_ivp(lambda tt, yy: f(tt, yy, list(p)), (0.0, 1.0), y0, method="DOP853",
                     t_eval=t_out, rtol=1e-13, atol=1e-15).y.T
     assert np.max(np.abs(y - ref)) < 1e-11
+
+
+def _expo_rule(tmp_path, monkeypatch):
+    """A rule added from data alone: ``expo`` (the exp recurrence under a name of its own), its
+    file (exp's, its helpers renamed) in a templates folder searched first, and its one row of
+    RULE_TABLE taking the SymPy function ``expo``. Returns that function."""
+    import jinja2
+
+    folder = tmp_path / "c" / "taylor_rules"
+    folder.mkdir(parents=True)
+    text = (ROOT / "templates" / "c" / "taylor_rules" / "exp.j2").read_text()
+    (folder / "expo.j2").write_text(text.replace("tc_exp(", "tc_expo(").replace("tcl_exp(", "tcl_expo("))
+    env = environment()
+    monkeypatch.setattr(env, "loader", jinja2.ChoiceLoader([jinja2.FileSystemLoader(str(tmp_path)),
+                                                            env.loader]))
+    expo = sp.Function("expo")
+    monkeypatch.setattr(jet, "RULE_TABLE", (*jet.RULE_TABLE, jet.Rule("expo", 1.0, unary=(expo,))))
+    return expo
+
+
+def _exp_model(f, outputs=False):
+    y0, y1 = sp.symbols("y0 y1", real=True)
+    a = sp.Symbol("a", positive=True)
+    return Model(name="expo_model", formulation="test", description="", states=(y0, y1), params=(a,),
+                 rhs=(f(-y1) * y0, a * y0 - f(y0 * y1)), outputs={"q": y0 * y1} if outputs else {})
+
+
+def test_a_rule_from_its_file_and_one_row_gives_the_scalar_and_the_lanes_jet(tmp_path, monkeypatch):
+    """A rule added as its file and one row of RULE_TABLE, nothing else: the scalar jet calls its
+    helper and gives exp's coefficients bit for bit (the same recurrence), and the lanes jet (a
+    model with outputs) defines and calls its lanes helper, from the same steps."""
+    expo = _expo_rule(tmp_path, monkeypatch)
+    d = decompose(KernelSpec.of(_exp_model(expo)))
+    assert "expo" in d.rules and "exp" not in d.rules
+    lib = _rules_library(_exp_model(expo), "expo_model")
+    source = render_taylor(_exp_model(expo))["expo_model_taylor.c"]
+    assert "tc_expo(int n" in source and "tc_exp(int n" not in source
+    monkeypatch.undo()  # the shipped rules again: the same model with exp
+    ref = _rules_library(_exp_model(sp.exp), "expo_model")
+    y, p = [0.4, -0.3], [1.7]
+    assert lib._name != ref._name  # two libraries (their sources differ)
+    got, want = (c_coefficients(lib_, "expo_model", y, p, 14) for lib_ in (lib, ref))
+    assert got[0] == want[0] == 0 and got[1].tobytes() == want[1].tobytes()
+    expo = _expo_rule(tmp_path / "again", monkeypatch)
+    lanes = render_taylor(_exp_model(expo, outputs=True))["expo_model_taylor.c"]
+    steps = [s for s in decompose(KernelSpec.of(_exp_model(expo, outputs=True))).steps if s.rule == "expo"]
+    assert len(steps) == 2 and "tcl_expo(int n" in lanes
+    for s in steps:
+        call = f"tc_expo(n, u[{s.args[0]}], u[{s.index}]);"
+        assert call in lanes and f"tcl_expo(n, u[{s.args[0]}], u[{s.index}]);" in lanes
+
+
+def test_the_jet_is_not_read_back_from_c_text():
+    """The decomposition and its rendering hold no regular expression: the lanes jet, the
+    scopes and the dependencies come from the steps, not from the scalar jet's C."""
+    for module in (jet, taylor_codegen):
+        assert "import re\n" not in inspect.getsource(module), module.__name__
 
 
 def test_a_function_without_a_rule_is_named():

@@ -62,12 +62,6 @@ def c_static_id(prefix: str | None, rest: str) -> str:
     return f"DERIVE_S({rest})" if prefix is None else f"{prefix}{rest}"
 
 
-def taylor_helpers() -> tuple[str, ...]:
-    """The Taylor rules with C helpers of their own: one file each in templates/c/taylor_rules/
-    (the scalar and the lanes helper side by side)."""
-    return tuple(sorted(p.stem for p in (TEMPLATES / "c" / "taylor_rules").glob("*.j2")))
-
-
 @functools.lru_cache(maxsize=None)
 def environment():
     # Jinja2 is imported here, not at module level: the warm path (a model already generated)
@@ -83,7 +77,7 @@ def environment():
         autoescape=False,
     )
     env.filters["c_double"] = c_double
-    env.globals.update(cid=c_id, sid=c_static_id, TAYLOR_HELPERS=taylor_helpers())
+    env.globals.update(cid=c_id, sid=c_static_id)
     return env
 
 

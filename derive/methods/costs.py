@@ -8,7 +8,7 @@ in the units of the kernel spec's operation count (:data:`derive.codegen.kernels
 roughly cycles). For a model with right-hand-side cost ``c_f`` (the description's ``cost``:
 operations plus the stepper's work per state), Taylor-jet weight ``w`` (the description's
 ``jet_weight``: for each series node of the decomposition the multiply-adds of its rule per
-term of a Cauchy sum, :func:`derive.codegen.taylor.jet_weight`), ``ny`` states and ``n_out``
+term of a Cauchy sum, :func:`derive.codegen.jet.jet_weight`), ``ny`` states and ``n_out``
 outputs, over a span of ``s`` radians of the fastest natural motion (``t_end`` times the
 fastest rate the scene sets, see :func:`derive.sim.inputs.fastest_rate`):
 

@@ -6,7 +6,7 @@ A Taylor method has no tableau. Each step expands the solution about the current
 
 with the coefficients of the right-hand side f from the recurrences of automatic
 differentiation, one rule per elementary function of the model's expression graph
-(:mod:`derive.codegen.taylor`, rendered by ``templates/c/taylor.c.j2``), and evaluates the series
+(:mod:`derive.codegen.jet`, rendered by ``templates/c/taylor.c.j2``), and evaluates the series
 at the step's end and at every requested output time inside the step (dense output is the
 series itself).
 
@@ -21,7 +21,7 @@ Order and step follow Jorba & Zou, Experiment. Math. 14 (2005) 99, as heyoka doe
   so the truncation error ‖y_p‖ hᵖ ≲ S e⁻²ᵖ ≤ e⁻² max(rtol ‖y‖∞, atol) per step.
 
 S is per state: the states that feed something back are held to their own size; a state that
-feeds nothing back (a cyclic angle, a quadrature; :func:`derive.codegen.taylor.controlled_states`)
+feeds nothing back (a cyclic angle, a quadrature; :func:`derive.codegen.jet.controlled_states`)
 to the size of its rate, max(|y_{i,1}|, atol/rtol): its truncation error is controlled, and its
 growth never loosens the tolerance of everything else.
 
