@@ -42,7 +42,7 @@ import functools
 import math
 from typing import NamedTuple
 
-from derive.methods.registry import DEFAULT_METHOD, METHODS as RUNGE_KUTTA
+from derive.methods.registry import DEFAULT_METHOD, METHODS as RUNGE_KUTTA, STEP_CALIBRATION, STEP_LAWS, StepLaw
 from derive.methods.taylor import METHODS as TAYLOR
 
 #: Steps per radian of the fastest motion: DOP853 at ε = 1 (scaled by ε^(−1/8)), the Taylor
@@ -123,34 +123,6 @@ def choose(work: Work, rtol: float, atol: float) -> str:
 
 # ---------------------------------------------------------------------------------------------
 # the work a run needs, before it starts
-
-
-class StepLaw(NamedTuple):
-    """How many steps a tolerance-driven method takes at the least, per radian of the fastest
-    motion: ``k · s · ε^(−1/(q+1))`` for an embedded pair with error order ``q``, and
-    ``k · s · (1 + A/p)`` for a Taylor method of order ``p`` (``q`` None)."""
-
-    k: float
-    q: int | None
-
-
-#: The least steps each tolerance-driven method takes (keys: scene method names). ``k`` is half
-#: the smallest constant fitted to the step counts of the example scenes (:data:`STEP_CALIBRATION`):
-#: the span ``s`` over-counts a motion whose fastest part a formulation integrates in closed form
-#: (the spin of a reduced top), so the law is a floor, and a run below it is refused only when
-#: even the floor exceeds the budget.
-STEP_LAWS: dict[str, StepLaw] = {
-    "dop853": StepLaw(0.003, 7),
-    "taylor": StepLaw(0.02, None),
-    "scipy-rk45": StepLaw(0.0015, 4),
-    "scipy-dop853": StepLaw(0.003, 7),
-    "scipy-radau": StepLaw(0.004, 3),
-    "scipy-lsoda": StepLaw(0.05, 11),
-}
-
-STEP_CALIBRATION = ("steps of each method on every example scene at its own tolerance (SciPy's "
-                    "over t ∈ [0, 0.5]), against t_end × the fastest rate; the smallest constant "
-                    "seen halved")
 
 
 def least_steps(method: str, span: float, rtol: float, atol: float) -> float:

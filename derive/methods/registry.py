@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
+from typing import NamedTuple
 
 from derive.symbolic.effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
 from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
@@ -195,3 +196,35 @@ def fixed_step_methods() -> tuple[str, ...]:
     """The compiled methods that take a fixed step h."""
     return tuple(name for name, m in compiled_methods().items()
                  if m.driver not in TOLERANCE_DRIVERS and name not in INTERNAL_METHODS)
+
+
+# ---------------------------------------------------------------------------------------------
+# the least work of each tolerance-driven method (read by derive.methods.costs.least_steps)
+
+
+class StepLaw(NamedTuple):
+    """How many steps a tolerance-driven method takes at the least, per radian of the fastest
+    motion: ``k · s · ε^(−1/(q+1))`` for an embedded pair with error order ``q``, and
+    ``k · s · (1 + A/p)`` for a Taylor method of order ``p`` (``q`` None)."""
+
+    k: float
+    q: int | None
+
+
+#: The least steps each tolerance-driven method takes (keys: scene method names). ``k`` is half
+#: the smallest constant fitted to the step counts of the example scenes (:data:`STEP_CALIBRATION`):
+#: the span ``s`` over-counts a motion whose fastest part a formulation integrates in closed form
+#: (the spin of a reduced top), so the law is a floor, and a run below it is refused only when
+#: even the floor exceeds the budget.
+STEP_LAWS: dict[str, StepLaw] = {
+    "dop853": StepLaw(0.003, 7),
+    "taylor": StepLaw(0.02, None),
+    "scipy-rk45": StepLaw(0.0015, 4),
+    "scipy-dop853": StepLaw(0.003, 7),
+    "scipy-radau": StepLaw(0.004, 3),
+    "scipy-lsoda": StepLaw(0.05, 11),
+}
+
+STEP_CALIBRATION = ("steps of each method on every example scene at its own tolerance (SciPy's "
+                    "over t ∈ [0, 0.5]), against t_end × the fastest rate; the smallest constant "
+                    "seen halved")

@@ -43,6 +43,8 @@ import math
 
 import numpy as np
 
+from derive.symbolic import effects
+
 #: Relative spread of β below which the β panel shows β − β(0).
 FLAT_BETA = 1e-6
 #: ω̃₃ gets its own axis when it exceeds the transverse components by this factor.
@@ -375,8 +377,6 @@ def _conserved(res) -> list[tuple[str, np.ndarray]]:
     """What the undamped motion conserves besides the energy: p_α always (the vertical is a
     symmetry axis of gravity); p_γ when the body is symmetric and every effect axisymmetric
     (not for a centre of mass off axis 3: the Kovalevskaya top); the integrable case's integral."""
-    from derive.symbolic import effects
-
     found = _user_symmetries(res)
     if found is not None:  # a body with user terms: what their symmetry leaves, and only that
         return [(name, np.asarray(getattr(res, key), dtype=float))
@@ -530,8 +530,8 @@ def panels(res) -> list[str]:
 
 
 def _free(res) -> bool:
-    """No force field acts (damping aside): the angular momentum is conserved."""
-    return not any(name != "damping" for name in getattr(res, "effects", ()))
+    """No force field acts (no effect with a potential): the motion is read in the body's axes."""
+    return all(e.potential is None for e in effects.lookup(getattr(res, "effects", ())))
 
 
 _DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": None, "balance": _panel_balance,
