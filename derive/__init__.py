@@ -11,10 +11,7 @@ The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulat
 ``derive.methods``, ``derive.codegen``, ``derive.runtime``, ``derive.sim``, ``derive.sweeps``,
 ``derive.lecture``), each saying in its docstring what it takes, gives and may import.
 """
-from derive import _moved
 from derive.errors import CompilerError, IntegrationError, SceneError
-
-_moved.install()  # derive.simulation, derive.scene, …: the old module paths still import
 
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"

@@ -1,4 +1,4 @@
-"""heyoka and numbalsoda as contenders of `derive bench` (issue 20): they integrate the baselines'
+"""heyoka and numbalsoda as contenders of `derive bench`: they integrate the baselines'
 equations, land on the exact solution, and the races report finite ratios. Skipped where the
 peer is not installed (``pip install -e '.[peers]'``; numbalsoda needs a Fortran compiler).
 

@@ -1,4 +1,4 @@
-"""The fixed cost of a call (issue 20, item 3): a prepared run builds its Result straight from
+"""The fixed cost of a call: a prepared run builds its Result straight from
 the output rows and evaluates the integrals without an ``np.errstate``; ``derive.simulate`` of
 a scene equal to a recent one reuses its plan, and never a stale one."""
 from __future__ import annotations

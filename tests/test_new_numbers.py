@@ -1,4 +1,4 @@
-"""``derive.simulate`` of scene dicts with new numbers (issue 20, item 3): a dict equal to one
+"""``derive.simulate`` of scene dicts with new numbers: a dict equal to one
 validated recently but for its ``[initial]`` table validates only that table
 (``scene._rest_key``, ``_Validator.scene_like``), and a scene of a planned family (the same
 settings and model, other numbers) is planned from the family's plan (``plan.sibling``),

@@ -1,4 +1,4 @@
-"""`derive verify NOTES.md` on vectors, tensors, sums over particles and frame derivatives (issue 19).
+"""`derive verify NOTES.md` on vectors, tensors, sums over particles and frame derivatives.
 
 Each kind the vector reader (`derive.lecture.vectors`) adds holds on its correct form and is flagged
 on a planted error, with the correction where the single-edit search finds one:

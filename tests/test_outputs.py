@@ -183,7 +183,7 @@ def scene(tmp_path):
 
 
 def test_plot_into_a_directory_keeps_the_existing_output(tmp_path, scene):
-    """The issue's case: `-o old.npz --plot d` with d a directory replaced old.npz and left a
+    """`-o old.npz --plot d` with d a directory replaced old.npz and left a
     temporary behind."""
     old = tmp_path / "old.npz"
     old.write_text("old\n")

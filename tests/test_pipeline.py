@@ -1,4 +1,4 @@
-"""The one-way pipeline (issue 8): registries, state maps, one C call, no SymPy on the warm path."""
+"""The one-way pipeline: registries, state maps, one C call, no SymPy on the warm path."""
 import ast
 import os
 import subprocess

@@ -92,7 +92,7 @@ VALID = [
                                                        "com": (0.01, 0.0, 0.03)},
                                            "gravity_general", ("M", "g", "com")),
                    "damping": table_values("damping", {"c": 0.25}, "damping", ("c",))})),
-    # ... and is l, written back as l (issue 17, item 12: one spelling per body)
+    # ... and is l, written back as l
     ("com on axis 3 selects axial gravity, l derived",
      edited(gravity={"M": 1.0, "g": 1.0, "com": [0, 0, 2]}), {},
      scene(tables={"gravity": table_values("gravity", {"M": 1.0, "g": 1.0, "l": 2.0,

@@ -1,4 +1,4 @@
-"""The Taylor method (issue 20 item 1): recurrences generated from the model's expression graph.
+"""The Taylor method: recurrences generated from the model's expression graph.
 
 References, none of them derive's own recurrences:
 

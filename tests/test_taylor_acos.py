@@ -1,4 +1,4 @@
-"""The Taylor solvers' own acos (issue 20): ``<prefix>acos_poly`` (templates/c/taylor.c.j2),
+"""The Taylor solvers' own acos: ``<prefix>acos_poly`` (templates/c/taylor.c.j2),
 fdlibm's e_acos.c by arithmetic alone with its branches chosen on the bits, so that the output
 map's loop over a block of samples vectorises (``<prefix>outputs_block``). Compiled here in a
 small C harness that includes the generated solver of ``reduced_u_sym_gravity`` (β = acos u is

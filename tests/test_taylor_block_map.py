@@ -1,4 +1,4 @@
-"""The Taylor solvers' output map over a block of samples (issue 20): ``<prefix>outputs_block``
+"""The Taylor solvers' output map over a block of samples: ``<prefix>outputs_block``
 (templates/c/taylor.c.j2, printed by ``derive.codegen.taylor._BlockPrinter``), a loop gcc
 vectorises: the parameters' part computed before it, each piecewise term a select on the bits
 of values computed unconditionally.

@@ -1,4 +1,4 @@
-"""The Taylor method's lanes driver (issue 20, "Batches"): ``<model>_simulate_lanes_batch_taylor``
+"""The Taylor method's lanes driver: ``<model>_simulate_lanes_batch_taylor``
 runs W trajectories at once (W from the CPU it was built for: ``-march=native``), every lane its
 own steps. Each trajectory's state, outputs, status and statistics are the scalar final-only
 driver's (built with the default flags) bit for bit, failing lanes included, and

@@ -1,4 +1,4 @@
-"""The Taylor method's full-grid lanes driver (issue 20, "Batches"):
+"""The Taylor method's full-grid lanes driver:
 ``<model>_simulate_lanes_full_batch_taylor`` runs W trajectories at once with every sample, each
 lane its own steps, each step's samples made by the scalar solver's own dense output from the
 lane's series (kept a few steps and then made together). Each trajectory's states, outputs,

@@ -1,4 +1,4 @@
-"""The Taylor solvers' sin and cos of the cyclic angles (issue 20): ``<prefix>sincos_poly``
+"""The Taylor solvers' sin and cos of the cyclic angles: ``<prefix>sincos_poly``
 (templates/c/taylor.c.j2), arithmetic alone so that a block of samples vectorises, with libm
 beyond its range. Compiled here in a small C harness that includes the generated solver of
 ``reduced_u_sym_gravity`` (its α and γ are such angles) and calls its block routine.

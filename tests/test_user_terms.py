@@ -1,4 +1,4 @@
-"""Your own body (issue 18, part 1): potentials and torques written in the scene.
+"""Your own body: potentials and torques written in the scene.
 
 The references are independent: the equations of motion written out here by hand (L̇ = τ in the
 inertial frame, ṅ = n × ω̃, the dipole's torque m × B) and integrated with SciPy, or closed forms;

@@ -1,4 +1,4 @@
-"""`derive verify` on notes written for it: tests/notes/ (issue 19, steps 5-6).
+"""`derive verify` on notes written for it: tests/notes/.
 
 * rigid-body-zyz.md — the lecture's derivation in its own convention (z-y-z, α β γ, body
   components with a tilde), written correctly: every display holds.

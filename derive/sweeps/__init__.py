@@ -9,8 +9,3 @@ varied key and per measure) and its Parquet file; run locally in processes or on
 
 May import: :mod:`derive.sim` and every stage below it, :mod:`derive.errors`.
 """
-from derive import _moved
-
-# ``derive.sweeps`` was one module (now :mod:`derive.sweeps.engine`): its names still resolve here,
-# loaded on first use.
-__getattr__ = _moved.forward("derive.sweeps", "derive.sweeps.engine")

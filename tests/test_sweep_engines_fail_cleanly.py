@@ -1,4 +1,4 @@
-"""Issue 22, sweeps: engines that fail fast, clean and closed.
+"""Sweep engines that fail fast, clean and closed.
 
 A local pool that breaks fails at once (exit 3, one line); Ctrl-C and SIGTERM stop the workers
 and leave no temporary; a scheduler address is validated and reached within a timeout (a closed

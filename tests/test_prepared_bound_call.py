@@ -1,4 +1,4 @@
-"""The thin call (issue 20, item 3): a prepared run binds its C call once (buffer layout,
+"""The thin call: a prepared run binds its C call once (buffer layout,
 pointers, converted arguments) and gives the same numbers, statuses and exceptions as
 ``derive.simulate``; ``derive.simulate(dict)`` reuses the structural work of a scene of the same
 shape and never a stale plan."""

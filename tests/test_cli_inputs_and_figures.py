@@ -1,4 +1,4 @@
-"""What a newcomer and a physicist hit (issue 17, items 1, 5, 6, 9, 10).
+"""Inputs of the wrong shape, output extensions, overrides, figures and notes on the command line.
 
 1. Validation: a value of the wrong shape where a vector belongs (a 0-d array, a NumPy scalar,
    an array of another shape, a ragged list, a string, booleans) is a SceneError naming the key,
@@ -56,7 +56,7 @@ def with_value(base: dict, table: str, key: str, value) -> dict:
 # --- 1. vectors of the wrong shape ------------------------------------------------------------
 
 NOT_A_VECTOR = [
-    np.array(2.0),                      # the issue's case: len() of a 0-d array raises
+    np.array(2.0),                      # len() of a 0-d array raises
     np.array(2.0, dtype=object),
     np.float64(2.0), np.int64(3), np.bool_(True), 2.0, 3, True,
     np.array([[1.0, 2.0, 3.0]]), np.array([[1.0], [2.0], [3.0]]), np.zeros((3, 3)),

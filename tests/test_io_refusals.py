@@ -1,4 +1,4 @@
-"""Issue 22 ("nothing lost, nothing hangs"), inputs and outputs: an output never replaces an input,
+"""Inputs and outputs: an output never replaces an input,
 special and oversized files are refused before they are read, a key named twice in any spelling
 is refused, `analyze` survives extreme but finite numbers, and the smaller holes (bench and
 generate output folders, a NUL in a path, the documented rtol floor, huge titles, the SciPy step
