@@ -138,10 +138,7 @@ def simulate_batch(scenes, outputs=None, **overrides):
         then counts no dense-output evaluations), and a Taylor method runs several
         trajectories at once in SIMD lanes (``BatchResult.driver`` says which driver ran).
         The integrals of the integrable cases are not computed (they are functions of ``L``
-        and ``n``). Dicts that differ only in the numbers of ``[initial]`` (the other tables
-        equal value for value and type for type, the same initial keys in the same order) run
-        as one prepared batch, without reading each dict (:func:`prepare`'s ``run_batch``:
-        the same numbers).
+        and ``n``).
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 
@@ -174,19 +171,9 @@ def simulate_batch(scenes, outputs=None, **overrides):
     >>> ends.beta.shape, ends.omega.shape, bool(ends.beta[1] == runs[1].beta[-1])
     ((2,), (2, 3), True)
     """
-    from derive.sim.prepared import family_batch, family_results
+    from derive.sim.batch import simulate_batch as _batch
 
-    # dicts that differ only in their initial numbers: one prepared batch, the same numbers
-    given = any(v is not None for v in overrides.values())  # (None: not given, as simulate takes it)
-    if outputs is not None:
-        from derive.sim.batch import simulate_batch as _selected
-
-        ran = None if given else family_batch(scenes, outputs)
-        return ran if ran is not None else _selected(scenes, outputs, **overrides)
-    from derive.sim.simulation import simulate_batch as _batch
-
-    ran = None if given else family_results(scenes)
-    return ran if ran is not None else _batch(scenes, **overrides)
+    return _batch(scenes, outputs, **overrides)
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):

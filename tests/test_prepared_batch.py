@@ -30,9 +30,8 @@ def variants(data: dict, betas, masses=None) -> list[dict]:
 
 
 def by_scene(scenes, outputs):
-    """The scene-by-scene batch (each dict read and checked), which ``derive.simulate_batch``
-    leaves for one prepared batch when the dicts are a family (derive.sim.prepared.family_batch):
-    the reference the prepared batch is held to."""
+    """The scene-by-scene batch (each dict read and checked): the reference the prepared batch
+    is held to."""
     return batch.simulate_batch(scenes, outputs)
 
 

@@ -259,22 +259,19 @@ def _prepared_batch(scenes: list[dict]):
 
 def fixed_cost(cfg, fams: list[str]) -> dict:
     """The cost of one short call (t_end = 1e-3, 2 samples, rtol 1e-10): derive's prepared run,
-    ``derive.simulate(dict)`` of the same scene again (``derive_simulate``: its plan kept by
-    :func:`derive.sim.plan.recent`) and of a scene with new numbers every call
-    (``derive_simulate_new``: validated, planned and set up anew; the scenes cycle through four
-    times as many as the memo keeps), against the peers' calls, timed in turns."""
+    ``derive.simulate(dict)`` of the same scene again (``derive_simulate``) and of a scene with
+    new numbers every call (``derive_simulate_new``), each validated and planned, against the
+    peers' calls, timed in turns."""
     import derive
-    from derive.sim.plan import MEMO_SIZE
 
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
     rtol = float(data["simulate"]["rtol"])
     prepared = derive.prepare(data)
-    # the same motion each time but for a start rate that differs in its last digits: no two of
-    # the cycle are equal, and no scene comes back before the memo has let it go
+    # the same motion each time but for a start rate that differs in its last digits
     fresh = itertools.cycle([dict(data, initial=dict(data["initial"], gamma_dot=data["initial"]["gamma_dot"] + 1e-9 * k))
-                             for k in range(4 * MEMO_SIZE)])
+                             for k in range(256)])
     names = ["derive_prepared", "derive_simulate", "derive_simulate_new"]
     fns = [prepared.run, lambda: derive.simulate(data), lambda: derive.simulate(next(fresh))]
     for fam in PEERS:

@@ -122,9 +122,12 @@ def _selection(outputs) -> tuple[bool, tuple[str, ...]]:
     return False, tuple(dict.fromkeys(names))
 
 
-def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
-    """Simulate the scenes as :func:`derive.sim.simulation.simulate_batch` does, keeping only
-    ``outputs`` (``"final"`` or a sequence of output names, see the module). None for no scenes."""
+def simulate_batch(scenes, outputs=None, **overrides):
+    """Simulate the scenes in one batch (:func:`derive.sim.simulation.batch_plan`): one Result
+    per scene without ``outputs``, else one :class:`BatchResult` keeping only ``outputs``
+    (``"final"`` or a sequence of output names, see the module; None for no scenes)."""
+    if outputs is None:
+        return simulation.simulate_batch(scenes, **overrides)
     final, names = _selection(outputs)
     bp = simulation.batch_plan(scenes, **overrides)
     return None if bp is None else run_plan(bp, final, names)

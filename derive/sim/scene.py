@@ -51,12 +51,9 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
-import io
 import math
 import numbers
 import os
-import pickle
-import pickletools
 import re
 import stat
 import tomllib
@@ -124,7 +121,6 @@ class _View(NamedTuple):
     #: The effect tables in registry order: (name, Table, its keys as readers (name, Key, is a
     #: vector, check, must, default or ... when required)).
     effect_tables: tuple[tuple[str, effects.Table, tuple], ...]
-    order: dict[tuple[str, ...], tuple[str, ...]]  # memo of _in_registry_order
 
 
 def _registry_view() -> _View:
@@ -139,23 +135,13 @@ def _registry_view() -> _View:
         (name, t, tuple((k.name, k, k.kind == "vector3", k.check, k.must,
                          ... if k.default is effects.REQUIRED else k.default) for k in t.keys))
         for name, t in effects.TABLES.items())
-    view = _View(keys, {name: frozenset(k) for name, k in keys.items()}, effect_tables, {})
+    view = _View(keys, {name: frozenset(k) for name, k in keys.items()}, effect_tables)
     _VIEW.clear()  # only the current version is ever asked for again
     _VIEW[effects.VERSION[0]] = view
     return view
 
 
 _VIEW: dict[int, _View] = {}
-
-
-def _in_registry_order(chosen: tuple[str, ...]) -> tuple[str, ...]:
-    """The effects named in ``chosen``, in registry order (:func:`effects.ordered`; memoised
-    per registry version)."""
-    order = _registry_view().order
-    names = order.get(chosen)
-    if names is None:
-        names = order[chosen] = effects.ordered(chosen)
-    return names
 
 
 def _vanishes(values: "TableValues") -> bool:
@@ -167,7 +153,7 @@ def _vanishes(values: "TableValues") -> bool:
 def _acting(tables: dict, terms: tuple = ()) -> tuple[str, ...]:
     """The effects of ``tables`` that act on the body (vanishing ones left out) and those of the
     user's ``terms``, in registry order."""
-    return _in_registry_order(tuple(t.effect for t in tables.values() if not _vanishes(t))
+    return effects.ordered(tuple(t.effect for t in tables.values() if not _vanishes(t))
                               + tuple(t.effect for t in terms))
 
 
@@ -305,17 +291,12 @@ class Scene:
         ("gravity", "damping") or ("gravity_general",): the ones the scene's tables select,
         less those whose values make them vanish (``[damping] c = 0``, ``g = 0``; the effects
         contract, item 7). They fix the model: a term that is zero costs nothing."""
-        cached = self.__dict__.get("_effects")
-        if cached is not None and cached[0] == effects.VERSION[0]:
-            return cached[1]
-        names = _acting(self.tables, self.terms)
-        object.__setattr__(self, "_effects", (effects.VERSION[0], names))  # frozen: a memo only
-        return names
+        return _acting(self.tables, self.terms)
 
     @property
     def named_effects(self) -> tuple[str, ...]:
         """Every effect the scene's tables select, acting or not, in registry order."""
-        return _in_registry_order(tuple(t.effect for t in self.tables.values())
+        return effects.ordered(tuple(t.effect for t in self.tables.values())
                                   + tuple(t.effect for t in self.terms))
 
     def param_values(self) -> dict[str, float]:
@@ -403,209 +384,7 @@ def load_scene(scene, /, **overrides) -> Scene:
         raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
                                                    f"like one or a Scene, not {type(scene).__name__}"))
     overrides = {k: v for k, v in overrides.items() if v is not None}
-    if type(data) is dict and not overrides:
-        key = _rest_key(data)
-        rest = _RESTS.get(key) if key is not None else None
-        if rest is not None and rest[0] == effects.VERSION[0]:
-            return _Validator(source).scene_like(data, rest[1])
-        scene = _Validator(source).scene(data, overrides)
-        if key is not None:
-            if len(_RESTS) >= _RESTS_SIZE:
-                _RESTS.clear()  # a memo only: emptied when full
-            _RESTS[key] = (effects.VERSION[0], scene)
-        return scene
     return _Validator(source).scene(data, overrides)
-
-
-def dict_key(data) -> tuple | None:
-    """A key of a scene dict's whole content, for a memo of what it validates to: its pickle
-    (every value with its type, floats by their bits: ``1``, ``1.0`` and ``True`` apart, and
-    ``-0.0`` and ``0.0``; equal pickles are equal contents) and the effects registry's version;
-    None for anything but a plain dict, or one that does not pickle. 1.3 us for a scene of
-    fifteen numbers, where the key of :func:`_rest_key` and its ``[initial]`` took 6 us."""
-    if type(data) is not dict:
-        return None
-    try:
-        return pickle.dumps(data, 5), effects.VERSION[0]
-    except Exception:  # noqa: BLE001 - an object pickle refuses: left to the validator
-        return None
-
-
-def same_contents(dicts: list) -> bool:
-    """Whether every dict of ``dicts`` has exactly the first's content, as :func:`dict_key` tells
-    contents apart (every value with its type, floats by their bits, key order): one pickle of
-    them all without a memo (each pickled in full, as alone), against the first's pickle
-    repeated in the list's own layout (batches of up to 1000 between MARK and APPENDS; equal
-    bytes are equal contents whatever the layout, and a layout other than this one only says
-    no). False for anything that does not pickle. 0.45 us a dict of the bench's tops, where a
-    pickle each took 0.85 (the call's own cost the most of it)."""
-    if not dicts:
-        return True
-    try:
-        one = _pickled(dicts[0])[2:-1]  # (less PROTO 3 and STOP)
-        whole = _pickled(dicts)
-    except Exception:  # noqa: BLE001 - an object pickle refuses, a cycle: no
-        return False
-    if len(dicts) == 1:
-        return whole == b"\x80\x03]" + one + b"a."
-    batches = [b"(" + one * min(_PICKLE_BATCH, len(dicts) - k) + b"e"
-               for k in range(0, len(dicts), _PICKLE_BATCH)]
-    return whole == b"".join([b"\x80\x03]", *batches, b"."])
-
-
-def family_columns(dicts, keys: tuple):
-    """The (len(keys), n) float64 columns of the dicts' ``[initial]`` values, when every dict
-    is exactly the first (as :func:`same_contents` compares) but for the values of its
-    ``[initial]`` table, which holds the first's ``keys`` in their order, every value a float;
-    else None (the caller then looks dict by dict). One pickle of them all (a tuple: its items
-    one after another, no batches), read as an (n, L) array of bytes: every byte the first's
-    but the eight of each initial value (a float's, after its opcode: a value of another type
-    changes the length or an opcode), and those eight bytes are the values (big-endian
-    doubles). 1.4 us a dict of the bench's tops (1.5 beside a batch's C call, which leaves the
-    dicts out of the caches, where the dict-by-dict check took 1.9), no dict read by Python."""
-    n = len(dicts)
-    first = dicts[0] if n > 3 and type(dicts[0]) is dict else None  # (a tuple of 3 or fewer: TUPLE1..3)
-    start = first.get("initial") if first is not None else None
-    if type(start) is not dict or tuple(start) != keys or not all(type(v) is float for v in start.values()):
-        return None
-    try:
-        one = _pickled(first)[2:-1]
-        at = _initial_offsets(one, start)
-        whole = _pickled(tuple(dicts))
-    except Exception:  # noqa: BLE001 - an object pickle refuses, a cycle: no
-        return None
-    size = len(one)
-    if at is None or len(whole) != 5 + n * size or whole[:3] != b"\x80\x03(" or whole[-2:] != b"t.":
-        return None
-    rows = np.frombuffer(whole, np.uint8, n * size, 3).reshape(n, size)
-    values = np.zeros(size, dtype=bool)
-    for k in at:
-        values[k:k + 8] = True
-    if not (rows[:, ~values] == rows[0, ~values]).all():
-        return None
-    picked = np.ascontiguousarray(rows[:, values]).view(">f8")  # (n, len(keys)), in the keys' order
-    return picked.astype(np.float64).T
-
-
-def _initial_offsets(one: bytes, start: dict):
-    """The offsets in ``one`` (a dict's pickle, less PROTO and STOP) of the eight bytes of each
-    of its ``[initial]`` values, in order; None unless its table's pickle follows its key once."""
-    whole = _pickled(start)
-    table, key = whole[2:-1], _pickled("initial")[2:-1]
-    where = one.find(key + table)
-    if where < 0 or one.find(key + table, where + 1) >= 0:
-        return None
-    base = where + len(key) - 2  # (the table's positions in its own pickle are 2 past PROTO's)
-    at = [base + pos + 1 for op, _, pos in pickletools.genops(whole) if op.name == "BINFLOAT"]
-    return at if len(at) == len(start) else None
-
-
-_PICKLE_BATCH = 1000  # a list's items between one MARK and its APPENDS (CPython's pickle)
-
-
-def _pickled(obj) -> bytes:
-    """``obj``'s pickle, protocol 3 (no frames between the items) without a memo (a repeated
-    object pickled in full each time)."""
-    buf = io.BytesIO()
-    pickler = pickle.Pickler(buf, 3)
-    pickler.fast = True
-    pickler.dump(obj)
-    return buf.getvalue()
-
-
-def same_numbers(a: Scene, b: Scene) -> bool:
-    """Whether two scenes have the very same body, effect values and terms (the objects, as
-    :func:`load_scene` shares them between dicts that differ only in their initial state):
-    the same model parameters, and the same integrable case but for the state's share."""
-    if a.body is not b.body or a.terms is not b.terms or len(a.tables) != len(b.tables):
-        return False
-    return all(x is y for x, y in zip(a.tables.values(), b.tables.values()))
-
-
-def _rest_key(data: dict) -> tuple | None:
-    """A key of a scene dict's raw content but for its ``[initial]`` table: its keys in order,
-    each table's keys, values and their types (``1``, ``1.0`` and ``True`` are equal but
-    validate differently), zeros by their text (``-0.0 == 0.0``); None for a dict this memo
-    leaves to the validator (a table that is not a plain dict, a nested list, a value of a type
-    TOML does not give).
-
-    Two dicts with one key validate alike but for ``[initial]``: :func:`load_scene` validates
-    the first in full and keeps its scene (:data:`_RESTS`), and of the next only its initial
-    state (:meth:`_Validator.scene_like`)."""
-    parts = []
-    for k, v in data.items():
-        if k == "initial":
-            parts.append(k)
-        elif type(v) is dict:
-            part = _table_key(v)
-            if part is None:
-                return None
-            parts.append((k, *part))
-        elif type(v) is str:
-            parts.append((k, v))
-        elif k in user_terms.KINDS:
-            terms = _terms_key(v)
-            if terms is None:
-                return None
-            parts.append((k, terms))
-        else:
-            return None
-    return tuple(parts)
-
-
-def _table_key(v: dict) -> tuple | None:
-    """:func:`_rest_key`'s part for one table: (its keys, values, their types, the values' text
-    where a zero is among them), or None for a value the key leaves to the validator."""
-    values = tuple(v.values())
-    types = tuple(map(type, values))
-    if not _PLAIN.issuperset(types):  # an array, a nested table, …: the validator's
-        return None
-    text = None
-    if list in types:  # a vector (com = [x, y, z]): its entries and their types
-        values = tuple(tuple(x) if type(x) is list else x for x in values)
-        types = tuple(tuple(map(type, x)) if type(x) is list else t for x, t in zip(v.values(), types))
-        if not all(_PLAIN_ENTRY.issuperset(t) for t in types if type(t) is tuple):
-            return None
-        text = repr(values)  # (zeros inside)
-    elif 0 in values:
-        text = repr(values)
-    return tuple(v), values, types, text
-
-
-def _terms_key(entries) -> tuple | None:
-    """:func:`_rest_key`'s part for an array of user terms (``[[potential]]``, ``[[torque]]``):
-    each table's keys and values as TOML gives them (strings, a list of strings, a table of
-    numbers, their types and text), or None for anything else."""
-    if type(entries) is not list:
-        return None
-    out = []
-    for entry in entries:
-        if type(entry) is not dict:
-            return None
-        for k, v in entry.items():
-            t = type(v)
-            if t is str:
-                out.append((k, v))
-            elif t is dict:  # params = {name = number}: numbers only
-                part = _table_key(v)
-                if part is None or not _PLAIN_ENTRY.issuperset(part[2]):
-                    return None
-                out.append((k, *part))
-            elif t is list and all(type(x) is str for x in v):  # tau = ["...", "...", "..."]
-                out.append((k, tuple(v)))
-            else:
-                return None
-        out.append(None)  # (the end of one term's table)
-    return tuple(out)
-
-
-#: The types of a table's values :func:`_rest_key` takes (as TOML gives them), and of a
-#: vector's entries; anything else goes to the validator.
-_PLAIN = frozenset((float, int, str, bool, list))
-_PLAIN_ENTRY = frozenset((float, int, bool))
-#: :func:`load_scene`'s scenes by :func:`_rest_key` (with the effects registry's version).
-_RESTS: dict = {}
-_RESTS_SIZE = 64
 
 
 #: Largest scene or sweep file read, in bytes (1 MiB; a scene is a few hundred bytes, a sweep a
@@ -770,7 +549,7 @@ def _show_full(value, depth: int = 0) -> str:
 
 def _real(value) -> float | None:
     """value as a finite float, or None. Booleans are not numbers; ints are welcome."""
-    if type(value) is float:  # the common case first: no ABC checks on the warm path
+    if type(value) is float:
         return value if math.isfinite(value) else None
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         return None
@@ -814,17 +593,6 @@ def _unknown(key: str, valid: tuple[str, ...], where: str, expected: str = "") -
     return hint + (expected or f"expected one of {', '.join(valid)}")
 
 
-def _new(cls, /, **fields):
-    """``cls(**fields)`` for this module's frozen dataclasses (Body, Initial, Simulate, Scene),
-    filling the instance's __dict__ in one step instead of the generated __init__'s
-    ``object.__setattr__`` per field: half the cost, the same object. Give every field (defaults
-    are not applied) and nothing else, bar Scene's ``_effects`` memo; these classes have no
-    __post_init__."""
-    obj = object.__new__(cls)
-    obj.__dict__.update(fields)
-    return obj
-
-
 def _positive(x) -> bool:
     return x > 0
 
@@ -842,10 +610,8 @@ _TRIANGLE = ((0, 1, 2), (1, 2, 0), (0, 2, 1))
 class _Validator:
     """Turns the raw dict into a Scene, raising SceneError at the first problem.
 
-    Speed matters here: ``derive.simulate`` validates every scene it is given (each scene of a
-    batch too), so the common case (plain dicts of floats, as TOML gives them) takes the short
-    way: key sets and readers precomputed per registry version (:func:`_registry_view`), exact
-    type checks before ABC checks, messages built only when something fails.
+    The key sets and readers come from the registries (:func:`_registry_view`); messages are
+    built only when something fails.
     """
 
     def __init__(self, source: str):
@@ -878,9 +644,7 @@ class _Validator:
                 self.fail(f"{table}.{key}", "missing required key")
             return default
         value = data[key]
-        # A float is finite when x - x == 0 (inf - inf and nan - nan are nan): the common case
-        # needs no call to _real.
-        x = value if type(value) is float and value - value == 0.0 else _real(value)
+        x = _real(value)
         if x is None or (test is not None and not test(x)):
             self.fail(f"{table}.{key}", f"must be {must}, got {_show(value)}")
         return x
@@ -946,25 +710,8 @@ class _Validator:
             simulate = {**simulate, **overrides}
         simulate = self.simulate(simulate)
 
-        # Scene.effects is known already: its memo is set (what the property would compute).
-        scene = _new(Scene, title=title, body=body, tables=tables, initial=initial,
-                     simulate=simulate, source=self.source, terms=terms,
-                     _effects=(effects.VERSION[0], _acting(tables, terms)))
-        self.formulation_fits(scene)
-        return scene
-
-    def scene_like(self, data: dict, like: Scene) -> Scene:
-        """The scene of ``data``, a dict equal to the one ``like`` was validated from but for
-        its ``[initial]`` table (:func:`_rest_key`): what :meth:`scene` gives, validating the
-        initial state alone (the rest is valid, as ``like``'s was: the first error is the
-        initial state's, the one :meth:`scene` would raise)."""
-        t = data.get("initial")
-        if type(t) is not dict:
-            return self.scene(data, {})
-        initial = self.initial(self.table(t, "initial", _registry_view().key_sets["initial"]))
-        scene = _new(Scene, title=like.title, body=like.body, tables=dict(like.tables), initial=initial,
-                     simulate=like.simulate, source=self.source, terms=like.terms,
-                     _effects=like.__dict__["_effects"])
+        scene = Scene(title=title, body=body, tables=tables, initial=initial, simulate=simulate,
+                      source=self.source, terms=terms)
         self.formulation_fits(scene)
         return scene
 
@@ -981,7 +728,7 @@ class _Validator:
                 self.fail("body", f"moments violate the triangle inequality {names[a]} + "
                                   f"{names[b]} >= {names[c]} ({values}); no rigid body has these "
                                   f"principal moments")
-        return _new(Body, I1=I1, I2=I2, I3=I3)
+        return Body(I1=I1, I2=I2, I3=I3)
 
     def effect_table(self, t, table: effects.Table, readers: tuple) -> TableValues:
         """An effect's table, read by its declaration (``readers``: its keys, see _View): each
@@ -1125,8 +872,7 @@ class _Validator:
         alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
         beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
         gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
-        # Any of _RATES, spelt out: no generator on the warm path.
-        rates_given = "alpha_dot" in t or "beta_dot" in t or "gamma_dot" in t
+        rates_given = any(k in t for k in _RATES)
         both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
         if rates_given and "omega" in t:
             self.fail("initial", both + ", not both")
@@ -1136,7 +882,7 @@ class _Validator:
             ad = self.number(t, "initial", "alpha_dot", None, must, 0.0)
             bd = self.number(t, "initial", "beta_dot", None, must, 0.0)
             gd = self.number(t, "initial", "gamma_dot", None, must, 0.0)
-            return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
+            return Initial(alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
                         gamma_dot=gd, omega=body_omega(beta, gamma, ad, bd, gd))
         if "omega" not in t:
             self.fail("initial", both + " = [w1, w2, w3] (body frame, rad/s); got neither")
@@ -1145,7 +891,7 @@ class _Validator:
         if omega is None:
             self.fail("initial.omega", f"must be a list of 3 finite numbers [w1, w2, w3] "
                                        f"(body frame, rad/s), got {_show(value)}")
-        return _new(Initial, alpha=alpha, beta=beta, gamma=gamma, alpha_dot=None, beta_dot=None,
+        return Initial(alpha=alpha, beta=beta, gamma=gamma, alpha_dot=None, beta_dot=None,
                     gamma_dot=None, omega=tuple(omega))
 
     def simulate(self, t) -> Simulate:
@@ -1177,7 +923,7 @@ class _Validator:
                 self.fail("simulate.h", f"is the step of a fixed-step method "
                                         f"({', '.join(FIXED_STEP_METHODS)}), but method is "
                                         f"{method!r}; remove h or name a fixed-step method")
-        return _new(Simulate, t_end=t_end, samples=int(samples), method=method, rtol=rtol,
+        return Simulate(t_end=t_end, samples=int(samples), method=method, rtol=rtol,
                     atol=atol, formulation=formulation, h=h, max_steps=int(max_steps))
 
     def formulation_fits(self, scene: Scene) -> None:

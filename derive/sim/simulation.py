@@ -31,9 +31,8 @@ from derive.symbolic import effects as fx
 from derive.errors import IntegrationError, SceneError
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
-from derive.sim.inputs import (AUTO, _check_budget, _settings, choose_method, default_step,  # noqa: F401
-                               fixed_steps, inputs_of, params_of)  # (fixed_steps: its old home)
-from derive.sim.scene import FIXED_STEP_METHODS, Scene, dict_key, load_scene, same_numbers
+from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, default_step, inputs_of, params_of
+from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
 from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
@@ -94,9 +93,7 @@ class Result:
     effects: tuple = ()
     integrals: dict = field(default_factory=dict)
     state: np.ndarray | None = field(default=None, repr=False)
-    # (a factory, not a default: a default is a class attribute, and a Result of a family batch
-    # makes its scene when first read, in __getattr__)
-    scene: Scene | None = field(default_factory=lambda: None, repr=False)
+    scene: Scene | None = field(default=None, repr=False)
 
     def arrays(self) -> dict:
         """Everything the output file holds, by name (``integral_<name>`` for the integrals,
@@ -117,10 +114,6 @@ class Result:
             return value
         if name.startswith("integral_") and name[9:] in d.get("integrals", {}):
             return self.integrals[name[9:]]
-        if name == "scene" and "_scene_of" in d:  # a family batch's: validated when first read
-            value = d["scene"] = d["_scene_of"]()
-            del d["_scene_of"]
-            return value
         raise AttributeError(name)
 
 
@@ -156,12 +149,10 @@ _EPS = float(np.finfo(float).eps)
 _FEW = 32  # samples below which a list beats NumPy's reductions
 
 
-def _result(desc, out, y, t, scene, method, nfev, finite: bool = False, integrals=None,
-            made=None) -> Result:
+def _result(desc, out, y, t, scene, method, nfev, finite: bool = False, integrals=None) -> Result:
     """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
     checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
-    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`);
-    ``made``: the arrays of those already made (a batch's components of L)."""
+    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
         for name, s, wide in _SLICES:
             bad = ~np.isfinite(_view(out, s, wide))
@@ -169,7 +160,7 @@ def _result(desc, out, y, t, scene, method, nfev, finite: bool = False, integral
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     rows = plan.integral_rows_of(scene) if integrals is None else integrals
-    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t, made))
+    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t))
 
 
 def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
@@ -179,11 +170,9 @@ def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
 
 def _new_result(out: np.ndarray, y: np.ndarray, t: np.ndarray, scene, method: str, desc, nfev: int,
                 integrals: dict) -> Result:
-    """A Result whose outputs are the rows of ``out`` (NOBS, n), made when first read
-    (:meth:`Result.__getattr__`: ten views cost ~1.8 us, a sixth of a short prepared run, and a
-    batch of 1000 made 10 000 of them), every other field straight into its ``__dict__`` (no
-    dataclass ``__init__`` with twenty keywords)."""
-    return _filled(_shared_fields(t, method, desc), out, y, nfev, integrals, "scene", scene)
+    """A Result whose outputs are the rows of ``out`` (NOBS, n), each view made when first read
+    (:meth:`Result.__getattr__`: a batch of 1000 would otherwise make 10 000 views)."""
+    return _filled(_shared_fields(t, method, desc), out, y, nfev, integrals, scene)
 
 
 def _shared_fields(t: np.ndarray, method: str, desc) -> dict:
@@ -192,10 +181,8 @@ def _shared_fields(t: np.ndarray, method: str, desc) -> dict:
             "effects": desc.effects}
 
 
-def _filled(shared: dict, out: np.ndarray, y: np.ndarray, nfev: int, integrals: dict, scene_key: str,
-            scene) -> Result:
-    """A Result of the ``shared`` fields and its own: ``scene_key`` "scene" (a Scene) or
-    "_scene_of" (what makes it when first read)."""
+def _filled(shared: dict, out: np.ndarray, y: np.ndarray, nfev: int, integrals: dict, scene) -> Result:
+    """A Result of the ``shared`` fields and its own, its outputs the rows of ``out``."""
     res = object.__new__(Result)  # every other field is given: what Result(**fields) would make
     d = res.__dict__
     d.update(shared)
@@ -203,7 +190,7 @@ def _filled(shared: dict, out: np.ndarray, y: np.ndarray, nfev: int, integrals: 
     d["state"] = y
     d["nfev"] = nfev
     d["integrals"] = integrals
-    d[scene_key] = scene
+    d["scene"] = scene
     return res
 
 
@@ -215,7 +202,7 @@ def _all_finite(values: np.ndarray) -> bool:
     return bool(np.isfinite(values).all())
 
 
-def _integral_arrays(rows, out: np.ndarray, t: np.ndarray, made=None) -> dict:
+def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
     """``integral_<name>`` arrays of the scene's integrable case (none for a general body) from
     its formulas ``rows`` (:func:`derive.sim.plan.integral_rows_of`) on the L and n rows of the
     outputs ``out`` (NOBS, n), the formulas' own layout, with NumPy's floating-point errors
@@ -226,9 +213,6 @@ def _integral_arrays(rows, out: np.ndarray, t: np.ndarray, made=None) -> dict:
     L, n = out[_L_ROWS], out[_N_ROWS]
     found = {}
     for name, formula, values, component in rows:
-        if made and name in made:
-            found[name] = made[name]
-            continue
         if component is not None:  # L's own component: a copy of the row, finite as L was checked
             found[name] = L[component].copy()
             continue
@@ -304,7 +288,7 @@ _IGNORING = _context_ignoring_errors()
 
 def _ignoring(fn, *args):
     """``fn(*args)`` with NumPy's floating-point warnings off, for a few NumPy operations: in a
-    copy of :data:`_IGNORING` (about 0.1 µs, an ``np.errstate`` about 1 µs). The copy holds
+    copy of :data:`_IGNORING` (cheaper than entering an ``np.errstate``). The copy holds
     the context variables as they were at import: ``fn`` must read none but NumPy's error
     state (the integral formulas: arithmetic on arrays)."""
     if _IGNORING is None:
@@ -316,13 +300,8 @@ def _ignoring(fn, *args):
 @_quiet
 def simulate(scene, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
-    validate it, plan it (:func:`derive.sim.plan.recent`: the kept plan of an equal scene simulated
-    recently, else a new one), then run the plan. A dict equal to one simulated recently, without
-    overrides, runs that one's plan (:func:`derive.sim.plan.for_dict`)."""
-    key = dict_key(scene) if not overrides or all(v is None for v in overrides.values()) else None
-    if key is not None:
-        return run(plan.for_dict(key, lambda: load_scene(scene)))
-    return run(plan.recent(load_scene(scene, **overrides)))
+    validate it, plan it, run the plan."""
+    return run(plan.make(load_scene(scene, **overrides)))
 
 
 def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None = None) -> Result:
@@ -333,8 +312,7 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
 
     NumPy's floating-point warnings are off wherever a NumPy operation could raise one (the
     SciPy path, the integrals: see :func:`_quiet`); the compiled path's other operations
-    (copies, views, the pole check on finite angles) cannot warn, and an ``np.errstate`` costs
-    about a microsecond, a tenth of a short prepared run."""
+    (copies, views, the pole check on finite angles) cannot warn."""
     if pl.scipy:
         return _run_scipy(pl, pl.inputs if inputs is None else inputs, params)
     # The compiled path: the candidates' calls were bound once per plan (layout, pointers,
@@ -346,10 +324,8 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
     same = not (given or params)
     for c in pl.candidates:
         bound = c.bound(t, pl.inputs)
-        # a plan made from another (plan.sibling) shares that one's bound call: its own inputs
-        ins = inputs if given else (None if bound.inputs is pl.inputs else pl.inputs)
-        out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params), ins,
-                                             same=same and ins is None)
+        out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params),
+                                             inputs if given else None, same=same)
         if status != _RANGE:
             break
     if status:
@@ -405,13 +381,12 @@ def simulate_batch(scenes, **overrides) -> list[Result]:
     return [] if bp is None else batch_results(bp)
 
 
-def batch_results(bp: "BatchPlan", scene_of=None, integrals=None) -> list[Result]:
+def batch_results(bp: "BatchPlan") -> list[Result]:
     """A batch plan run, one Result per trajectory (what :func:`simulate_batch` returns):
     its candidate formulations in turn until no start is refused, by the full batch driver
-    (a Taylor method's lanes for a batch of at least LANES_MIN). ``scene_of``: trajectory b's
-    Result.scene is ``scene_of[b]()``, made when first read, instead of ``bp.scenes[b]`` (a
-    family batch's scenes are all its first's, but for their initial values); ``integrals``:
-    the integral rows every trajectory shares (else each scene's)."""
+    (a Taylor method's lanes for a batch of at least LANES_MIN). The integrals of the
+    integrable cases are classified once per body and effect values
+    (:func:`derive.sim.plan.integrals_key`)."""
     scs, t, method = bp.scenes, bp.t, bp.method
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
@@ -427,32 +402,17 @@ def batch_results(bp: "BatchPlan", scene_of=None, integrals=None) -> list[Result
     # The pole check of every trajectory at once; one that fails is then found and named per
     # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
     suspect = _pole_suspects(desc, out[:, 1], scs[0].simulate.rtol)
+    for b in np.flatnonzero(suspect).tolist():
+        _check_pole(desc, t, out[b, 1], scs[b].simulate.rtol)
     nfev = st["nfev"].tolist()
-    # integrals that are components of L, shared by every trajectory: one copy for the batch
-    # (a copy per trajectory was 6 us of the bench's 60)
-    made = {name: out[:, _L_ROWS.start + component].copy() for name, _, _, component in integrals or ()
-            if component is not None}
-    if suspect.any():
-        for b in np.flatnonzero(suspect).tolist():
-            _check_pole(desc, t, out[b, 1], scs[b].simulate.rtol)
-    if integrals is None or len(made) < len(integrals):  # an integral from a formula, per scene
-        results = []
-        for b, sc in enumerate(scs):
-            res = _result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=integrals,
-                          made={k: v[b] for k, v in made.items()} if made else None)
-            if scene_of is not None:  # its scene made from its dict when first read
-                d = res.__dict__
-                del d["scene"]
-                d["_scene_of"] = scene_of[b]
-            results.append(res)
-        return results
-    # Every integral (if any) a component of L, copied above: each Result made at once (through
-    # _result: 3.5 us a trajectory of the bench's every-output batch of ~55; this way 2.1)
-    shared = _shared_fields(t, method, desc)
-    rows = tuple(made.items())
-    scene_key, scenes = ("scene", scs) if scene_of is None else ("_scene_of", scene_of)
-    return [_filled(shared, out[b], y[b], nfev[b], {k: v[b] for k, v in rows}, scene_key, scenes[b])
-            for b in range(len(scs))]
+    rows: dict = {}
+    results = []
+    for b, sc in enumerate(scs):
+        key = plan.integrals_key(sc)
+        if key not in rows:
+            rows[key] = plan.integral_rows_of(sc)
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=rows[key]))
+    return results
 
 
 @dataclass
@@ -482,17 +442,8 @@ class BatchPlan:
         return desc, kernel, args
 
     def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
-        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model
-        (worked out once for scenes that share their body and effect values: see
-        :func:`derive.sim.scene.same_numbers`)."""
-        out, last, row, made = [], None, None, 0
-        for sc in self.scenes[rows]:
-            if last is None or not same_numbers(sc, last):
-                last, row, made = sc, params_of(sc, desc), made + 1
-            out.append(row)
-        if made == 1:  # one row for all (np.array of N rows took 1 us a row)
-            return np.repeat(row[None, :], len(out), axis=0)
-        return np.array(out)
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model."""
+        return np.array([params_of(sc, desc) for sc in self.scenes[rows]])
 
     def where(self, b: int) -> str:
         """How an error names trajectory ``b``: its scene's source."""
@@ -529,8 +480,6 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
 
     ref = shared(first)
     for sc in scs[1:]:
-        if sc.simulate is first.simulate and same_numbers(sc, first):
-            continue  # (shared(sc) is ref: only the initial state differs)
         if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
             raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
                              f"times, method, tolerances and formulation as {first.source}")
