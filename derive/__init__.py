@@ -12,6 +12,7 @@ The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulat
 ``derive.lecture``), each saying in its docstring what it takes, gives and may import.
 """
 from derive.errors import CompilerError, IntegrationError, SceneError
+from derive.sim.saveat import SaveAt, choose as _choose
 
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
@@ -19,11 +20,11 @@ DISTRIBUTION = "derive-rigid-body"
 """The name on the package index (``pip install derive-rigid-body``): a plain ``derive`` there is an
 unrelated project. The import and the command stay ``derive``."""
 
-__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep",
-           "analyze", "prepare"]
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "SaveAt", "simulate", "simulate_batch",
+           "sweep", "analyze", "prepare"]
 
 
-def simulate(scene, **overrides):
+def simulate(scene, *, saveat=None, **overrides):
     """Simulate one scene: derive (or load) its model, integrate it in one C call, return the arrays.
 
     Parameters
@@ -32,6 +33,10 @@ def simulate(scene, **overrides):
         A scene file (TOML), the name of a shipped example (``"looping_top"``; ``derive
         examples`` lists them), or a dict shaped like the TOML (tables ``body``, optional
         ``gravity`` and ``damping``, ``initial``, optional ``simulate``).
+    saveat : SaveAt, optional
+        What to keep: ``SaveAt(t="final")`` every array at t_end alone (length 1 along time),
+        ``SaveAt(outputs=("beta", …))`` only those outputs (the others None). Default: every
+        output at every sample.
     **overrides
         Keys of the ``[simulate]`` table that replace the scene's: ``method``, ``rtol``,
         ``atol``, ``formulation``, ``h``, ``max_steps``, ``t_end``, ``samples``. ``None`` means
@@ -76,7 +81,7 @@ def simulate(scene, **overrides):
     """
     from derive.sim.simulation import simulate as _simulate
 
-    return _simulate(scene, **overrides)
+    return _simulate(scene, _choose(saveat), **overrides)
 
 
 def prepare(scene, **overrides):
@@ -116,7 +121,7 @@ def prepare(scene, **overrides):
     return Prepared(scene, **overrides)
 
 
-def simulate_batch(scenes, outputs=None, **overrides):
+def simulate_batch(scenes, outputs=None, *, saveat=None, **overrides):
     """Simulate many scenes that differ only in numbers, with one call into C for all of them.
 
     Parameters
@@ -125,10 +130,11 @@ def simulate_batch(scenes, outputs=None, **overrides):
         Scenes as :func:`simulate` takes them. They must name the same effects, body symmetry,
         output times, method and tolerances; the moments, effect parameters and initial states
         may differ.
-    outputs : None, "final" or sequence of str, optional
-        What to keep. None (default): everything, one Result per scene. ``"final"``: every
-        output (and ``state``) at the last sample only; a sequence of output names (``"beta"``,
-        ``"axis"``, …, ``"state"``): those at every sample. Either way one
+    saveat : SaveAt, optional
+        What to keep. The default (every output at every sample): one Result per scene.
+        ``SaveAt(t="final")``: every output (and ``state``) at the last sample only;
+        ``SaveAt(outputs=("beta", "axis", …, "state"))``: those at every sample (with
+        ``t="final"``, at the last). Any selection gives one
         :class:`~derive.sim.batch.BatchResult` with arrays stacked along a first axis of
         length N, bit for bit the numbers of the full batch, and only those arrays allocated
         (the compiled loop runs in chunks whose work arrays are reused): 1000 trajectories of
@@ -139,6 +145,9 @@ def simulate_batch(scenes, outputs=None, **overrides):
         trajectories at once in SIMD lanes (``BatchResult.driver`` says which driver ran).
         The integrals of the integrable cases are not computed (they are functions of ``L``
         and ``n``).
+    outputs : None, "final" or sequence of str, optional
+        The short spelling of ``saveat`` (:meth:`SaveAt.of`): ``"final"`` is
+        ``SaveAt(t="final")``, names are ``SaveAt(outputs=names)``; give one of the two.
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 
@@ -173,10 +182,10 @@ def simulate_batch(scenes, outputs=None, **overrides):
     """
     from derive.sim.batch import simulate_batch as _batch
 
-    return _batch(scenes, outputs, **overrides)
+    return _batch(scenes, _choose(saveat, outputs), **overrides)
 
 
-def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
+def sweep(spec, *, workers=None, scheduler=None, progress=None, saveat=None, **kwargs):
     """Run a parameter sweep: many points of one scene, each measured while it is integrated.
 
     Parameters
@@ -194,6 +203,9 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
         The address of a running Dask scheduler (``tcp://host:port``).
     progress : bool, optional
         A progress bar on stderr (default: when stderr is a terminal).
+    saveat : SaveAt, optional
+        A sweep keeps t_end only: ``SaveAt(t="final")`` (with ``outputs`` among ``alpha``,
+        ``beta``, ``gamma``, ``omega``) adds the ``final_state`` measure's columns.
     **kwargs
         ``processes`` (the local engine's process count, default one per core) and
         ``add_measure`` (a measure added to the spec's list).
@@ -227,7 +239,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
     """
     from derive.sweeps.engine import sweep as _sweep
 
-    return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress, **kwargs)
+    return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress,
+                  saveat=None if saveat is None else _choose(saveat), **kwargs)
 
 
 def analyze(scene):

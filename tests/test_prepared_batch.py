@@ -32,7 +32,7 @@ def variants(data: dict, betas, masses=None) -> list[dict]:
 def by_scene(scenes, outputs):
     """The scene-by-scene batch (each dict read and checked): the reference the prepared batch
     is held to."""
-    return batch.simulate_batch(scenes, outputs)
+    return derive.simulate_batch(scenes, outputs=outputs)
 
 
 def same(a, b) -> None:

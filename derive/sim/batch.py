@@ -1,19 +1,20 @@
-"""A batch that keeps only the outputs asked for: ``derive.simulate_batch(scenes, outputs=...)``.
+"""A batch that keeps only what its :class:`~derive.sim.saveat.SaveAt` asks for:
+``derive.simulate_batch(scenes, saveat=...)``.
 
 The compiled batch driver writes every output at every sample of each trajectory (and its
 states) into the arrays it is given: 1000 trajectories of 1001 samples would map about 200 MB.
 Here the driver runs in chunks of trajectories whose work arrays (a few MB) are allocated once
 and reused, and only what was asked for is copied out of them into the arrays returned:
 
-* ``outputs="final"``: every output (and the state) at the last sample only, arrays of shape
+* ``SaveAt(t="final")``: every output (and the state) at the last sample only, arrays of shape
   (N,) or (N, 3) (state (N, NY));
-* ``outputs=("beta", "axis", ...)``: those outputs at every sample, (N, n) or (N, n, 3)
-  (``"state"``: (N, n, NY)).
+* ``SaveAt(outputs=("beta", "axis", ...))``: those outputs at every sample, (N, n) or (N, n, 3)
+  (``"state"``: (N, n, NY)); with ``t="final"``, those at the last sample.
 
 The numbers are bit for bit those of the full batch (the same C call per trajectory; a chunk
 changes nothing a trajectory computes). No Result per trajectory: one :class:`BatchResult`.
 
-With ``"final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
+With ``t="final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
 that loses no accuracy near a pole (no ``pole_loss``: its pole check needs β at every sample),
 no sample but the last is made: the driver ``<model>_simulate_final_batch_<method>`` integrates
 each trajectory straight to the end (the same steps: the interior samples of the full grid are
@@ -42,6 +43,7 @@ from derive.errors import IntegrationError, SceneError
 from derive.methods.status import Status
 from derive.runtime.integrate import ModelKernel
 from derive.sim import simulation
+from derive.sim.saveat import SaveAt
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
@@ -102,33 +104,13 @@ class BatchResult:
         raise AttributeError(name)
 
 
-def _selection(outputs) -> tuple[bool, tuple[str, ...]]:
-    """(final, names) of the ``outputs`` argument; SceneError for anything else."""
-    if isinstance(outputs, str):
-        if outputs == "final":
-            return True, tuple(name for name, _ in OUTPUTS) + ("state",)
-        outputs = (outputs,)
-    try:
-        names = tuple(outputs)
-    except TypeError:
-        names = None
-    known = tuple(name for name, _ in OUTPUTS) + ("state",)
-    if not names or not all(isinstance(n, str) for n in names):
-        raise SceneError(f"<batch>: outputs: \"final\" or a sequence of output names ({', '.join(known)}), "
-                         f"not {outputs!r}")
-    for n in names:
-        if n not in known:
-            raise SceneError(f"<batch>: outputs: unknown output {n!r} (the outputs: {', '.join(known)})")
-    return False, tuple(dict.fromkeys(names))
-
-
-def simulate_batch(scenes, outputs=None, **overrides):
+def simulate_batch(scenes, saveat: SaveAt, **overrides):
     """Simulate the scenes in one batch (:func:`derive.sim.simulation.batch_plan`): one Result
-    per scene without ``outputs``, else one :class:`BatchResult` keeping only ``outputs``
-    (``"final"`` or a sequence of output names, see the module; None for no scenes)."""
-    if outputs is None:
+    per scene when ``saveat`` keeps everything (the default), else one :class:`BatchResult`
+    with what it keeps (see the module); None for no scenes."""
+    if saveat.everything:
         return simulation.simulate_batch(scenes, **overrides)
-    final, names = _selection(outputs)
+    final, names = simulation.selection(saveat)
     bp = simulation.batch_plan(scenes, **overrides)
     return None if bp is None else run_plan(bp, final, names)
 
@@ -136,7 +118,7 @@ def simulate_batch(scenes, outputs=None, **overrides):
 def run_plan(bp, final: bool, names: tuple) -> BatchResult:
     """Run a batch plan (:class:`derive.sim.simulation.BatchPlan`, or a prepared scene's:
     :meth:`derive.sim.prepared.Prepared.run_batch`) keeping ``names`` at every sample, or at
-    the last (``final``; see :func:`_selection`): its candidate formulations in turn until
+    the last (``final``; see :func:`derive.sim.simulation.selection`): its candidate formulations in turn until
     none of the trajectories' starts is refused, by the full, the final-only or the lanes
     driver."""
     for formulation, pole_check in bp.candidates:

@@ -19,6 +19,7 @@ from derive.errors import SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
+from derive.sim.saveat import choose
 from derive.sim.scene import load_scene
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
@@ -42,7 +43,7 @@ class Prepared:
         derived = {desc.params[k] for k in desc.derived_params}
         self._params = tuple(n for n in desc.params if n not in derived)
 
-    def run(self, initial=None, params=None):
+    def run(self, initial=None, params=None, saveat=None):
         """Run the prepared simulation.
 
         Parameters
@@ -55,6 +56,9 @@ class Prepared:
         params : dict, optional
             New values of the model's parameters by name (``I1``, ``I3``, ``M``, ``g``, ``l``,
             …: the names of ``[body]`` and the effect tables, as the model takes them).
+        saveat : derive.SaveAt, optional
+            What to keep (:func:`derive.sim.simulation.kept`); default every output at every
+            sample.
 
         Returns
         -------
@@ -78,9 +82,9 @@ class Prepared:
                     raise SceneError(f"{self.plan.scene.source}: params: unknown parameter {name!r} "
                                      f"(the model's: {', '.join(self._params)})")
                 _finite(self.plan.scene.source, f"params.{name}", value)
-        return simulation.run(self.plan, inputs, params)
+        return simulation.kept(simulation.run(self.plan, inputs, params), saveat)
 
-    def run_batch(self, initial=None, params=None, outputs="final"):
+    def run_batch(self, initial=None, params=None, outputs=None, saveat=None):
         """Run the prepared scene N times in one batch call, trajectory b with the b-th entry of
         every array given: what ``derive.simulate_batch`` gives for N scenes that differ from
         this one only in those numbers, without reading N scenes.
@@ -92,9 +96,12 @@ class Prepared:
             an array of N numbers (``omega``: three numbers or an (N, 3) array).
         params : dict, optional
             The model's parameters by name (as :meth:`run`), numbers or arrays of N.
-        outputs : str or sequence of str
-            ``"final"`` (every output at the last sample) or output names kept at every
-            sample, as ``derive.simulate_batch`` takes them.
+        saveat : derive.SaveAt, optional
+            What to keep, as ``derive.simulate_batch`` takes it; default ``SaveAt(t="final")``
+            (every output at the last sample).
+        outputs : str or sequence of str, optional
+            The short spelling of ``saveat``: ``"final"`` or output names kept at every sample
+            (:meth:`derive.SaveAt.of`).
 
         Returns
         -------
@@ -115,7 +122,7 @@ class Prepared:
         IntegrationError
             Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
         """
-        final, names = batch._selection(outputs)
+        final, names = simulation.selection(choose(saveat, outputs, default="final"))
         return batch.run_plan(_PreparedBatch.of(self, initial or {}, params or {}), final, names)
 
     def _inputs(self, initial) -> np.ndarray:

@@ -31,6 +31,7 @@ from derive.symbolic import effects as fx
 from derive.errors import IntegrationError, SceneError
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 from derive.runtime.integrate import ModelKernel
+from derive.sim.saveat import SaveAt
 from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, default_step, inputs_of, params_of
 from derive.sim.scene import FIXED_STEP_METHODS, Scene, load_scene
 from derive.methods.registry import DEFAULT_METHOD
@@ -98,7 +99,7 @@ class Result:
     def arrays(self) -> dict:
         """Everything the output file holds, by name (``integral_<name>`` for the integrals,
         ``method``, ``formulation`` and ``nfev`` as 0-d arrays)."""
-        out = {name: getattr(self, name) for name, _ in OUTPUTS}
+        out = {name: getattr(self, name) for name, _ in OUTPUTS if getattr(self, name) is not None}
         out["t"] = self.t
         out.update({f"integral_{k}": v for k, v in self.integrals.items()})
         out.update(method=np.array(self.method), formulation=np.array(self.formulation),
@@ -109,6 +110,8 @@ class Result:
         # (called only for a name the instance does not hold yet)
         d = self.__dict__
         row = _VIEWS.get(name)
+        if row is not None and name not in d.get("_kept", (name,)):
+            return None  # not kept (SaveAt.outputs)
         if row is not None and "_out" in d:  # an output of the C call's buffer: its view, once
             value = d[name] = _view(d["_out"], *row)
             return value
@@ -297,11 +300,55 @@ def _ignoring(fn, *args):
     return _IGNORING.copy().run(fn, *args)
 
 
+#: What a SaveAt may name: the outputs of the output file and the integrator's state.
+KNOWN = tuple(name for name, _ in OUTPUTS) + ("state",)
+
+
+def selection(saveat: SaveAt) -> tuple[bool, tuple[str, ...]]:
+    """(final, names) of a :class:`~derive.sim.saveat.SaveAt`: whether only t_end is kept, and
+    the outputs kept (every one and the state when it names none); SceneError naming
+    ``outputs`` for a name that is not an output."""
+    names = saveat.outputs or KNOWN
+    for n in names:
+        if n not in KNOWN:
+            raise SceneError(f"<saveat>: outputs: unknown output {n!r} (the outputs: {', '.join(KNOWN)})")
+    return saveat.final, names
+
+
+def kept(res: Result, saveat: SaveAt | None) -> Result:
+    """``res`` as ``saveat`` keeps it: with ``t="final"`` every array at t_end alone (length 1
+    along time), with ``outputs`` only those outputs (the others None; ``arrays()`` leaves them
+    out). The default SaveAt keeps ``res`` as it is."""
+    if saveat is None or saveat.everything:
+        return res
+    final, names = selection(saveat)
+    d = res.__dict__
+    out, y, t = d["_out"], res.state, res.t
+    integrals = res.integrals
+    if final:
+        out, y, t = out[:, -1:], y[-1:], t[-1:]
+        integrals = {k: v[-1:] for k, v in integrals.items()}
+    new = _filled(_shared_fields(t, res.method, _Ran(res.formulation, res.model, res.effects)), out,
+                  y if "state" in names else None, res.nfev, integrals, res.scene)
+    if saveat.outputs is not None:
+        new.__dict__["_kept"] = frozenset(names)
+    return new
+
+
+@dataclass(frozen=True)
+class _Ran:
+    """What :func:`_shared_fields` reads of a model description."""
+
+    formulation: str
+    name: str
+    effects: tuple
+
+
 @_quiet
-def simulate(scene, **overrides) -> Result:
+def simulate(scene, saveat: SaveAt | None = None, **overrides) -> Result:
     """Simulate a scene (path or dict shaped like the TOML); overrides replace [simulate] keys:
-    validate it, plan it, run the plan."""
-    return run(plan.make(load_scene(scene, **overrides)))
+    validate it, plan it, run the plan, keep what ``saveat`` asks for (:func:`kept`)."""
+    return kept(run(plan.make(load_scene(scene, **overrides))), saveat)
 
 
 def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None = None) -> Result:

@@ -1326,7 +1326,8 @@ class SweepResult:
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
-          add_measure=None, scheduler_timeout=None, dashboard=False, security=None) -> SweepResult:
+          add_measure=None, scheduler_timeout=None, dashboard=False, security=None,
+          saveat=None) -> SweepResult:
     """Run a sweep (a file path or a dict shaped like one).
 
     Parameters
@@ -1352,6 +1353,10 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
         stderr; needs bokeh).
     security : distributed.security.Security, optional
         The credentials for a ``tls://`` scheduler.
+    saveat : derive.SaveAt, optional
+        What to keep besides the measures: a sweep keeps t_end only (``t="final"``); its
+        outputs there (:func:`final_measures`: ``alpha``, ``beta``, ``gamma``, ``omega``) add
+        the ``final_state`` measure's columns.
 
     Returns
     -------
@@ -1371,6 +1376,9 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     source = os.fspath(spec) if isinstance(spec, (str, os.PathLike)) else "<sweep>"
     scheduler = check_engine(source, workers, scheduler, scheduler_timeout, dashboard)
     sp = load(spec)
+    extra = final_measures(saveat, sp.source)
+    if extra:
+        sp.measures = tuple(dict.fromkeys((*sp.measures, *extra)))
     if add_measure is not None:  # the column to plot: a measure's (final_beta) or a measure
         name = ms.owner(add_measure)
         if name is None:
@@ -1436,6 +1444,21 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
                        measure_names=sp.measures, title=sp.scene.title or "", source=sp.source,
                        model=", ".join(used), scene=sp.scene, files=sp.files,
                        formulation=names[ran.astype(int) + 1].astype(str))
+
+
+def final_measures(saveat, source: str = "<sweep>") -> tuple[str, ...]:
+    """The measures a sweep adds for ``saveat`` (a :class:`derive.SaveAt` or None): a sweep
+    keeps no samples, only t_end, where the ``final_state`` measure gives α, β, γ and ω̃; ()
+    for None. SceneError for the grid or another output."""
+    if saveat is None:
+        return ()
+    if not saveat.final:
+        raise SceneError(f"{source}: saveat: a sweep keeps t_end only (SaveAt(t=\"final\")), not the grid")
+    allowed = ("alpha", "beta", "gamma", "omega")
+    for name in saveat.outputs or ():
+        if name not in allowed:
+            raise SceneError(f"{source}: saveat: a sweep keeps {', '.join(allowed)} at t_end, not {name!r}")
+    return ("final_state",)
 
 
 def write(result: SweepResult, parquet: str | None, png: str | None = None,
