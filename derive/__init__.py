@@ -212,7 +212,7 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, saveat=None, **k
 
     Returns
     -------
-    derive.sweeps.engine.SweepResult
+    derive.sweeps.result.SweepResult
         ``params`` and ``measures`` ({name: (N,) array}, one entry per point), ``status``
         ((N,) str: "ok" or why the point failed) and ``to_pandas()``. The numbers are the same
         whichever engine ran them.

@@ -99,7 +99,7 @@ def test_the_python_writers_refuse_their_inputs(files):
     # Internal modules: derive.simulate and derive.sweep return results; the writers that put
     # them into files are simulation.write_outputs and sweeps.write.
     from derive.sim.simulation import write_outputs
-    from derive.sweeps.engine import write
+    from derive.sweeps.result import write
 
     scene, sweep = files
     res = derive.simulate(str(scene))

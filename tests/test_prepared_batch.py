@@ -7,7 +7,6 @@ import pytest
 
 import derive
 from derive.errors import IntegrationError, SceneError
-from derive.sim import batch
 from derive.symbolic.formulations import REGISTRY, starts_accepted
 from derive.sim.scene import load_scene
 

@@ -7,9 +7,9 @@ number of LocalCluster workers is capped; the LocalCluster derive starts speaks 
 credentials and listens on 127.0.0.1 only, without a dashboard unless asked.
 
 Every wait is bounded (subprocess timeouts, an alarm around in-process sweeps, socket timeouts);
-every socket is on 127.0.0.1. Internal hooks used: ``derive.sweeps.engine`` (``local_cluster`` to get at
-the cluster derive starts, ``worker_cap`` and ``_cpus`` for the cap, ``run_chunk`` and
-``_receive`` patched to break the pool).
+every socket is on 127.0.0.1. Internal hooks used: ``derive.sweeps.cluster`` (``local_cluster`` to get at
+the cluster derive starts, ``worker_cap`` and ``_cpus`` for the cap) and ``derive.sweeps.local``
+(``run_chunk`` and ``_receive`` patched to break the pool).
 """
 from __future__ import annotations
 
@@ -29,7 +29,8 @@ import pytest
 
 import derive
 import derive.cli
-from derive.sweeps import engine as sweeps
+from derive.sweeps import cluster as sweeps
+from derive.sweeps import local
 
 psutil = pytest.importorskip("psutil")
 linux = pytest.mark.skipif(sys.platform != "linux", reason="fork and PR_SET_PDEATHSIG")
@@ -38,7 +39,7 @@ TOP = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0}
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,
                    "gamma_dot": 6.0},
        "simulate": {"t_end": 0.5, "rtol": 1e-8, "atol": 1e-12}}
-#: Enough points for the local engine's worker processes (sweeps.IN_PROCESS is 200).
+#: Enough points for the local engine's worker processes (derive.sweeps.local.IN_PROCESS is 200).
 POOLED = {"scene": TOP, "random": {"n": 400, "seed": 5, "initial": {"beta": {"low": 0.3, "high": 1.2}}},
           "measures": ["beta_max", "nfev"]}
 SMALL = {"scene": TOP, "vary": {"initial": {"beta": {"values": [0.4, 0.8]}}},
@@ -69,10 +70,11 @@ rtol = 1e-8
 DRIVER = """
 import os, signal, sys, time
 import derive.sweeps.engine as sweeps
+import derive.sweeps.local as local
 sweeps._cpus = lambda: 2
 case = sys.argv[1]
 if case == "killed":
-    sweeps.run_chunk = lambda *args: os.kill(os.getpid(), signal.SIGKILL)
+    local.run_chunk = lambda *args: os.kill(os.getpid(), signal.SIGKILL)
 elif case == "term_while_writing":
     import pandas
     def to_parquet(self, f, **kwargs):
@@ -145,11 +147,10 @@ def reference():
 
 @linux
 def test_a_killed_worker_fails_the_sweep_at_once(monkeypatch, alarm, reference):
-    monkeypatch.setattr(sweeps, "run_chunk", lambda *args: os.kill(os.getpid(), signal.SIGKILL))
-    before, t0 = _children(), time.monotonic()
-    with pytest.raises(derive.IntegrationError) as info:
+    monkeypatch.setattr(local, "run_chunk", lambda *args: os.kill(os.getpid(), signal.SIGKILL))
+    before = _children()
+    with pytest.raises(derive.IntegrationError) as info:  # (the alarm: no wait for a lost chunk)
         derive.sweep(POOLED, processes=2)
-    assert time.monotonic() - t0 < 10
     msg = str(info.value)
     assert msg.startswith("<sweep>: sweep: worker process ") and "killed by SIGKILL" in msg, msg
     assert _children() <= before  # every worker reaped
@@ -160,7 +161,7 @@ def test_a_worker_out_of_memory_fails_the_sweep(monkeypatch, alarm, reference):
     def no_memory(*args):
         raise MemoryError
 
-    monkeypatch.setattr(sweeps, "run_chunk", no_memory)
+    monkeypatch.setattr(local, "run_chunk", no_memory)
     before = _children()
     with pytest.raises(derive.IntegrationError, match=r"^<sweep>: sweep: worker process \d+ ran "
                                                       r"out of memory in chunk \d+ of \d+$"):
@@ -175,7 +176,7 @@ def test_a_result_that_cannot_be_received_fails_the_sweep(monkeypatch, alarm, re
     def no_memory(conn):
         raise MemoryError
 
-    monkeypatch.setattr(sweeps, "_receive", no_memory)
+    monkeypatch.setattr(local, "_receive", no_memory)
     before = _children()
     with pytest.raises(derive.IntegrationError, match=r"^<sweep>: sweep: out of memory receiving "
                                                       r"the results of chunk \d+ of \d+"):

@@ -20,7 +20,8 @@ from derive.reference.exact import heavy_top
 from derive.runtime import catalogue
 from derive.sim.plan import auto_method
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, measuring_methods
+from derive.sweeps.spec import load
+from derive.sweeps.plan import measuring_methods
 
 TIGHT = {"rtol": 1e-12, "atol": 1e-14}
 #: The tennis racket (intermediate axis 2, spun about it with a small perturbation omega1): it

@@ -406,7 +406,7 @@ def test_a_sweep_file_naming_taylor_runs_it(tmp_path):
     spec.write_text(body.replace("[scene.simulate]", '[scene.simulate]\nmethod = "taylor"')
                     + '\n[vary]\ninitial.beta = { from = 0.1, to = 0.2, num = 2 }\n'
                     + '[measure]\nnames = ["beta_max", "nfev"]\n')
-    from derive.sweeps.engine import load
+    from derive.sweeps.spec import load
 
     assert load(str(spec)).method == "taylor"
     res = derive.sweep(str(spec), processes=1)

@@ -293,7 +293,8 @@ def test_a_batch_of_one_user_body_equals_its_single_runs():
 def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
     """A sweep over potential.magnet.mu: each point's largest tilt (the sweep's dense output)
     is that of derive.simulate with the same mu, sampled finely, and differs between points."""
-    from derive.sweeps.engine import load, sweep
+    from derive.sweeps.spec import load
+    from derive.sweeps.engine import sweep
 
     base = scene(potential=[magnet("-mu*B*R13", mu=0.2, B=1.5)],
                  simulate={"t_end": 2.0, "samples": 2})
@@ -441,7 +442,8 @@ def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
     task carries the terms and registers them before it loads the model."""
     from derive.runtime import catalogue
     from derive.sweeps import measures as ms
-    from derive.sweeps.engine import load, run_chunk
+    from derive.sweeps.spec import load
+    from derive.sweeps.tasks import run_chunk
     from derive.symbolic import effects
 
     base = scene(potential=[magnet("-mu*B*R13", mu=0.2, B=1.5)],

@@ -11,7 +11,10 @@ from derive.bench.contenders import baselines
 from derive.bench.reference import reference_data
 from derive.sim.scene import load_scene
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, local_cluster, run_chunk, sweep
+from derive.sweeps.spec import load
+from derive.sweeps.cluster import local_cluster
+from derive.sweeps.tasks import run_chunk
+from derive.sweeps.engine import sweep
 
 
 def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, scipy_n: int = 20,

@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.errors import IntegrationError, SceneError
+from derive.errors import IntegrationError
 from derive.methods.status import Status
 from derive.runtime.integrate import ModelKernel
 from derive.sim import simulation

@@ -351,14 +351,26 @@ def body_omega(beta, gamma, alpha_dot, beta_dot, gamma_dot):
         w2 =  alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma)
         w3 =  alpha_dot cos(beta) + gamma_dot
 
-    Works elementwise on NumPy arrays; on Python floats it uses ``math`` (the same libm values,
-    a tenth of NumPy's cost on scalars). Returns a tuple (w1, w2, w3).
+    The one place it is written: the validator calls it on floats, a sweep on its columns
+    (NumPy arrays of N points). Either way the sines and cosines are the math module's (libm),
+    element by element, so a point of a sweep gets the bits a scene of its own gets. Returns a
+    tuple (w1, w2, w3) of floats or of arrays.
     """
-    m = math if isinstance(beta, float) and isinstance(gamma, float) else np
-    sb, sg, cg = m.sin(beta), m.sin(gamma), m.cos(gamma)
+    sin, cos = (math.sin, math.cos) if isinstance(beta, float) and isinstance(gamma, float) \
+        else (_libm(math.sin), _libm(math.cos))
+    sb, sg, cg = sin(beta), sin(gamma), cos(gamma)
     return (-alpha_dot * sb * cg + beta_dot * sg,
             alpha_dot * sb * sg + beta_dot * cg,
-            alpha_dot * m.cos(beta) + gamma_dot)
+            alpha_dot * cos(beta) + gamma_dot)
+
+
+def _libm(fn):
+    """``fn`` (a function of the math module) of every element of an array (NumPy's own
+    vectorised sin and cos may differ from libm in the last bit)."""
+    def each(x):
+        x = np.asarray(x, dtype=float)
+        return np.fromiter(map(fn, x.reshape(-1).tolist()), dtype=float, count=x.size).reshape(x.shape)
+    return each
 
 
 # --------------------------------------------------------------------------------------------
