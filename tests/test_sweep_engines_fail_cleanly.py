@@ -66,13 +66,21 @@ rtol = 1e-8
 
 #: Runs the command line with the local engine on two processes whatever the machine, after
 #: breaking what argv[1] names: "killed" (every worker SIGKILLs itself in its chunk),
-#: "term_while_writing" (SIGTERM arrives while the Parquet file is being written), "none".
+#: "term_while_writing" (SIGTERM arrives while the Parquet file is being written), "none"; or
+#: "ready" FILE: every local worker appends its pid to FILE as it begins a chunk.
 DRIVER = """
 import os, signal, sys, time
 import derive.sweeps.engine as sweeps
 import derive.sweeps.local as local
 sweeps._cpus = lambda: 2
 case = sys.argv[1]
+if case == "ready":  # each local worker says it has begun a chunk (a line in argv[2]), then runs it
+    ready, run_chunk = sys.argv.pop(2), local.run_chunk
+    def announced(*args):
+        with open(ready, "a") as f:
+            f.write(f"{os.getpid()}\\n")
+        return run_chunk(*args)
+    local.run_chunk = announced
 if case == "killed":
     local.run_chunk = lambda *args: os.kill(os.getpid(), signal.SIGKILL)
 elif case == "term_while_writing":
@@ -209,30 +217,38 @@ def _computing(pid) -> bool:
 def _start_long_sweep(tmp_path, extra=(), computing=True):
     """``derive sweep`` (two local processes, or ``extra`` flags) on a sweep of about ten
     seconds, in a session of its own; returns (process, output path, worker pids) once two
-    workers run (``computing``: with the library loaded, in their chunks)."""
+    workers run. Local workers say so themselves (a line each in a file as they begin a chunk:
+    the parent is then past starting them, in its loop over the chunks); Dask workers are
+    watched (``computing``: with the library loaded, in their chunks)."""
     sweep, out = _files(tmp_path, t_end=100.0, n=40_000), tmp_path / "r.parquet"
-    p = subprocess.Popen([sys.executable, "-c", DRIVER, "none", "sweep", str(sweep), "-o", str(out),
+    ready = tmp_path / "ready"
+    case = ["none"] if extra else ["ready", str(ready)]
+    p = subprocess.Popen([sys.executable, "-c", DRIVER, *case, "sweep", str(sweep), "-o", str(out),
                           *extra], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                          start_new_session=True)
 
-    def running(kid):  # a local worker (forked), a Dask one (spawned), or one in its chunk
+    def running(kid):  # a Dask worker (spawned), or one in its chunk
         with contextlib.suppress(psutil.Error):
             if computing:
                 return _computing(kid.pid)
-            return not extra or "spawn_main" in " ".join(kid.cmdline())
+            return "spawn_main" in " ".join(kid.cmdline())
         return False
 
-    deadline = time.monotonic() + 60
+    def started() -> int:
+        if not extra:
+            return len(ready.read_text().split()) if ready.exists() else 0
+        return sum(map(running, psutil.Process(p.pid).children(recursive=True)))
+
+    deadline = time.monotonic() + 120
     while time.monotonic() < deadline and p.poll() is None:
-        if sum(map(running, psutil.Process(p.pid).children(recursive=True))) >= 2:
+        if started() >= 2:
             break
         time.sleep(0.05)
     else:
         p.kill()
-        p.communicate()
-        raise AssertionError(f"the sweep's workers did not start within 60 s: {p.returncode}")
-    time.sleep(0.2)
-    assert p.poll() is None
+        _, err = p.communicate()
+        raise AssertionError(f"the sweep's workers did not start within 120 s: {p.returncode} {err}")
+    assert p.poll() is None, p.communicate()
     return p, out, [k.pid for k in psutil.Process(p.pid).children(recursive=True)]
 
 
