@@ -113,6 +113,7 @@ def test_acos_outside_its_domain_is_nan(tmp_path):
     assert np.isnan(r).all()
 
 
+@pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
 def test_acos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native; its last samples must be the
     scalar driver's to the bit."""

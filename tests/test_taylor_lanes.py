@@ -296,7 +296,7 @@ def test_the_width_is_the_cpus():
     assert scalar.lanes <= native.lanes
 
 
-@pytest.mark.parametrize("formulation", ["quaternion", "reduced-u"])
+@pytest.mark.parametrize("formulation", [pytest.param("quaternion", marks=pytest.mark.slow), "reduced-u"])
 def test_the_avx2_width_is_bit_for_bit_too(formulation):
     """W = 4 (AVX, here AVX2 with FMA instructions available) on a CPU that would build 8: the
     lanes' library built with the lanes' flags but -mavx2 -mfma instead of -march=native gives the

@@ -23,8 +23,9 @@ def full(kernel, inputs, ps, t, args, pole, lanes):
     return kernel.simulate_batch(inputs, ps, t, args, pole, lanes=lanes)
 
 
-@pytest.mark.parametrize("samples", [21, 401])
-@pytest.mark.parametrize("formulation", FORMULATIONS)
+@pytest.mark.parametrize("samples", [21, pytest.param(401, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("formulation", [f if f in ("quaternion", "reduced-u", "reduced") else
+                                         pytest.param(f, marks=pytest.mark.slow) for f in FORMULATIONS])
 def test_the_full_lanes_are_the_scalar_full_driver_bit_for_bit(formulation, samples):
     """Over 3 s, 21 samples (steps without one) or 401 (a dozen and more in a step), a ragged
     last group (13 trajectories), this CPU's width and the baseline's."""
@@ -42,6 +43,7 @@ def test_the_full_lanes_are_the_scalar_full_driver_bit_for_bit(formulation, samp
     same(want, full(baseline, bp.inputs, ps, bp.t, args, pole, True))
 
 
+@pytest.mark.slow  # (the rules in the lanes: test_taylor_lanes.py; the full driver: above)
 def test_every_rule_and_the_outputs_series_in_the_full_lanes():
     """A user body whose jet has every rule, and whose outputs have series of their own (the
     nodes a lane copies out for the dense output beyond the states)."""

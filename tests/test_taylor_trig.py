@@ -106,6 +106,7 @@ def test_sincos_beyond_its_range_is_libm(tmp_path):
     np.testing.assert_array_equal(r[:, 1], c)
 
 
+@pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
 def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native: its last samples must be the
     scalar driver's to the bit, so the same arithmetic vectorised wider gives the same bits."""
