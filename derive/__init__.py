@@ -44,7 +44,7 @@ def simulate(scene, *, saveat=None, **overrides):
 
     Returns
     -------
-    derive.sim.simulation.Result
+    derive.sim.result.Result
         The arrays of the output file as attributes: ``t`` (n,), the z-y-z angles ``alpha``,
         ``beta`` (in [0, π]), ``gamma`` (α, γ continuous, not wrapped), ``omega`` (n, 3, body
         frame ω̃), ``axis`` (n, 3, inertial components of body axis ê₃), ``energy`` (T + V),
@@ -97,7 +97,7 @@ def prepare(scene, **overrides):
     Returns
     -------
     derive.sim.prepared.Prepared
-        ``run()`` gives the :class:`~derive.sim.simulation.Result` :func:`simulate` would, with
+        ``run()`` gives the :class:`~derive.sim.result.Result` :func:`simulate` would, with
         no validation, look-up or derivation per call; ``run(initial={...}, params={...})``
         reruns with new initial values or parameters of the same shape.
 
@@ -153,7 +153,7 @@ def simulate_batch(scenes, outputs=None, *, saveat=None, **overrides):
 
     Returns
     -------
-    list of derive.sim.simulation.Result, or derive.sim.batch.BatchResult
+    list of derive.sim.result.Result, or derive.sim.batch.BatchResult
         Without ``outputs``: one result per scene, in order, each as :func:`simulate` would
         give it. With ``outputs``: one BatchResult (None for no scenes). With
         ``formulation = "auto"`` the scenes share one formulation.

@@ -15,10 +15,10 @@ import derive
 from derive.bench.reference import reference_data
 from derive.errors import SceneError
 from derive.sim import plan as plans
-from derive.sim import simulation
+from derive.sim import result
 from derive.sim.scene import load_scene
 from derive.symbolic import integrable
-from derive.sim.simulation import Result
+from derive.sim.result import Result
 
 
 def _short() -> dict:
@@ -79,7 +79,7 @@ def test_ignoring_leaves_the_callers_error_state_alone():
     big = np.array([1e300])
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        assert np.isinf(simulation._ignoring(np.multiply, big, big)).all()
+        assert np.isinf(result._ignoring(np.multiply, big, big)).all()
     assert np.geterr() == before
     with pytest.warns(RuntimeWarning):
         np.multiply(big, big)

@@ -12,7 +12,7 @@ import pytest
 import derive
 from derive.methods.status import Status
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 
 BASE = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
@@ -31,7 +31,7 @@ def scenes(n, seed=3, **simulate):
 def kernels(sc, formulation):
     """(plan, description, scalar kernel (the portable build), lanes kernel, driver arguments,
     pole check) of a batch of scenes."""
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     desc, _, args = bp.kernel(formulation)
     pole = dict(bp.candidates).get(formulation, 0)
     return (bp, desc, ModelKernel.load(desc, bp.method, "portable"), ModelKernel.load(desc, bp.method, "lanes"),
@@ -95,7 +95,7 @@ def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit():
     the products and quotients also as sums side by side in one loop (derive.codegen.taylor
     ._fused)."""
     sc = [{**RULES, "initial": d["initial"]} for d in scenes(11)]
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     formulation, pole = bp.candidates[0]
     desc, _, args = bp.kernel(formulation)
     source = desc.c_sources()[f"{desc.name}_taylor.c"]
@@ -322,7 +322,7 @@ def test_the_vector_build_is_the_portable_one_bit_for_bit(formulation):
     over a step's block of samples); every sample's outputs, the states, the parameters and the
     statistics are the portable build's bit for bit (samples many to a step: blocks of 16)."""
     sc = scenes(6, samples=401, formulation=formulation)
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     desc, kernel, args = bp.kernel(formulation)
     pole = dict(bp.candidates).get(formulation, 0)
     vector = ModelKernel.load(desc, bp.method, "vector")

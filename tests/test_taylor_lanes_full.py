@@ -12,7 +12,7 @@ import derive
 from derive.methods.status import Status
 from derive.runtime import integrate
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 from tests.test_taylor_lanes import RULES, _lanes_library, kernels, same, scenes, spread
 
@@ -49,7 +49,7 @@ def test_every_rule_and_the_outputs_series_in_the_full_lanes():
     nodes a lane copies out for the dense output beyond the states)."""
     sc = [{**RULES, "initial": d["initial"], "simulate": {**RULES["simulate"], "samples": 101}}
           for d in scenes(11)]
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     formulation, pole = bp.candidates[0]
     desc, _, args = bp.kernel(formulation)
     scalar, native = (ModelKernel.load(desc, bp.method, b) for b in ("portable", "lanes"))
@@ -156,7 +156,7 @@ def test_simulate_batch_runs_the_full_lanes_for_the_taylor_method(monkeypatch):
             assert np.array_equal(getattr(a, name), getattr(b, name)), name
         assert np.array_equal(a.state, b.state) and a.nfev == b.nfev
     monkeypatch.undo()
-    kernel = simulation.batch_plan(sc).kernel("reduced-u")[1]
+    kernel = batch.batch_plan(sc).kernel("reduced-u")[1]
     assert integrate.LANES_MIN == 8
     assert kernel.full_lanes(7) is None and kernel.full_lanes(8).has_lanes_full
 

@@ -1,4 +1,4 @@
-"""Stage 5, simulation: a scene file in, a :class:`~derive.sim.simulation.Result` (and files) out.
+"""Stage 5, simulation: a scene file in, a :class:`~derive.sim.result.Result` (and files) out.
 
 Takes: a scene (a TOML path, an example's name, or a dict). Gives: the validated
 :class:`~derive.sim.scene.Scene` (:mod:`~derive.sim.scene`: the file read by

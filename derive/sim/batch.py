@@ -31,7 +31,8 @@ built for this CPU's vector width: W trajectories at once, each lane its own ste
 numbers, statuses and statistics are the scalar final-only driver's bit for bit.
 ``BatchResult.driver`` says which ran.
 
-Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
+Takes: scenes that share a model. Gives: a Result per scene (:func:`batch_results`) or a
+:class:`BatchResult`; the plan of a batch (:func:`batch_plan`).
 """
 from __future__ import annotations
 
@@ -39,11 +40,17 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.errors import IntegrationError
+from derive.errors import IntegrationError, SceneError
+from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
+from derive.runtime import catalogue
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import auto, plan
+from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, default_step, inputs_of, params_of
+from derive.sim.result import Result, _check_pole, _explain, _pole_suspects, _quiet, _result, selection
 from derive.sim.saveat import SaveAt
+from derive.sim.scene import load_scene
+from derive.symbolic import effects as fx
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
@@ -104,21 +111,22 @@ class BatchResult:
         raise AttributeError(name)
 
 
+@_quiet
 def simulate_batch(scenes, saveat: SaveAt, **overrides):
-    """Simulate the scenes in one batch (:func:`derive.sim.simulation.batch_plan`): one Result
+    """Simulate the scenes in one batch (:func:`batch_plan`): one Result
     per scene when ``saveat`` keeps everything (the default), else one :class:`BatchResult`
     with what it keeps (see the module); None for no scenes."""
+    bp = batch_plan(scenes, **overrides)
     if saveat.everything:
-        return simulation.simulate_batch(scenes, **overrides)
-    final, names = simulation.selection(saveat)
-    bp = simulation.batch_plan(scenes, **overrides)
+        return [] if bp is None else batch_results(bp)
+    final, names = selection(saveat)
     return None if bp is None else run_plan(bp, final, names)
 
 
 def run_plan(bp, final: bool, names: tuple) -> BatchResult:
-    """Run a batch plan (:class:`derive.sim.simulation.BatchPlan`, or a prepared scene's:
+    """Run a batch plan (:class:`BatchPlan`, or a prepared scene's:
     :meth:`derive.sim.prepared.Prepared.run_batch`) keeping ``names`` at every sample, or at
-    the last (``final``; see :func:`derive.sim.simulation.selection`): its candidate formulations in turn until
+    the last (``final``; see :func:`derive.sim.result.selection`): its candidate formulations in turn until
     none of the trajectories' starts is refused, by the full, the final-only or the lanes
     driver."""
     for formulation, pole_check in bp.candidates:
@@ -204,10 +212,10 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
         # The pole check of the full batch, per chunk while β is at hand; its error is raised
         # after every chunk ran, so a failed integration elsewhere is named first, as there.
         if pole_error is None:
-            suspect = simulation._pole_suspects(desc, out[:, 1], rtol)
+            suspect = _pole_suspects(desc, out[:, 1], rtol)
             for b in np.flatnonzero(suspect):
                 try:
-                    simulation._check_pole(desc, t, out[b, 1], scs[s + b].simulate.rtol)
+                    _check_pole(desc, t, out[b, 1], scs[s + b].simulate.rtol)
                 except IntegrationError as exc:  # kept until every chunk ran
                     pole_error = exc
                     break
@@ -226,3 +234,121 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
     if pole_error is not None:
         raise pole_error
     return False, arrays, nfev
+
+
+def batch_results(bp: "BatchPlan") -> list[Result]:
+    """A batch plan run, one Result per trajectory (what :func:`simulate_batch` returns):
+    its candidate formulations in turn until no start is refused, by the full batch driver
+    (a Taylor method's lanes for a batch of at least LANES_MIN). The integrals of the
+    integrable cases are classified once per body and effect values
+    (:func:`derive.sim.plan.integrals_key`)."""
+    scs, t, method = bp.scenes, bp.t, bp.method
+    for formulation, pole_check in bp.candidates:
+        desc, kernel, args = bp.kernel(formulation)
+        ps = bp.params(desc)
+        lanes = kernel.full_lanes(len(scs))  # a Taylor method's trajectories W at a time
+        if lanes is not None:
+            out, y, ps, st = lanes.simulate_batch(bp.inputs, ps, t, args, pole_check, lanes=True)
+        else:
+            out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        if not (st["status"] == Status.RANGE).any():
+            break
+    bp.raise_failure(desc, st)
+    # The pole check of every trajectory at once; one that fails is then found and named per
+    # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
+    suspect = _pole_suspects(desc, out[:, 1], scs[0].simulate.rtol)
+    for b in np.flatnonzero(suspect).tolist():
+        _check_pole(desc, t, out[b, 1], scs[b].simulate.rtol)
+    nfev = st["nfev"].tolist()
+    rows: dict = {}
+    results = []
+    for b, sc in enumerate(scs):
+        key = plan.integrals_key(sc)
+        if key not in rows:
+            rows[key] = plan.integral_rows_of(sc)
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=rows[key]))
+    return results
+
+
+@dataclass
+class BatchPlan:
+    """What a batch runs, decided once for all its scenes (:func:`batch_plan`): the validated
+    ``scenes``, the ``method``, the shared output times ``t``, the init-map ``inputs`` (N, NIN),
+    the ``effects`` of the one model, the fixed step ``h`` (None: the scene's or adaptive) and
+    the ``candidates`` (formulation, pole check) in the order they are tried."""
+    scenes: list
+    method: str
+    t: np.ndarray
+    inputs: np.ndarray
+    effects: tuple
+    h: float | None
+    candidates: tuple
+
+    def kernel(self, formulation: str):
+        """(model description, compiled kernel, driver arguments) of one candidate."""
+        first = self.scenes[0]
+        desc = catalogue.describe((formulation, first.symmetric, self.effects))
+        kernel = ModelKernel.load(desc, self.method)
+        if self.h is not None:
+            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
+        else:
+            args = _settings(first, self.method, kernel)
+        return desc, kernel, args
+
+    def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model."""
+        return np.array([params_of(sc, desc) for sc in self.scenes[rows]])
+
+    def where(self, b: int) -> str:
+        """How an error names trajectory ``b``: its scene's source."""
+        return self.scenes[b].source
+
+    def raise_failure(self, desc, st, offset: int = 0) -> None:
+        """IntegrationError naming the first trajectory whose status (in ``st``, the stats of
+        trajectories ``offset``, ``offset + 1``, …) is a failure; nothing when all succeeded."""
+        status = st["status"]
+        if status.any():
+            b = int(np.flatnonzero(status)[0])
+            sc = self.scenes[offset + b]
+            raise IntegrationError(f"{self.where(offset + b)}: {_explain(desc, st[b], sc.simulate.max_steps)}")
+
+
+def batch_plan(scenes, **overrides) -> BatchPlan | None:
+    """Validate the scenes of a batch and decide what it runs (None for no scenes): one model
+    with every effect that acts in any scene, the shared method, output times and settings."""
+    scs = [load_scene(s, **overrides) for s in scenes]
+    if not scs:
+        return None
+    first = scs[0]
+
+    # One model for the batch: the effects that act in any scene (registry order), each named
+    # by every scene so that each gives its parameters.
+    effects = first.effects
+    if any(sc.effects != effects for sc in scs):
+        effects = tuple(e.name for e in fx.lookup(set().union(*(sc.effects for sc in scs))))
+
+    def shared(sc):
+        s = sc.simulate
+        return (sc.symmetric, set(effects) <= set(sc.named_effects), s.samples, s.t_end,
+                choose_method(sc), s.rtol, s.atol, s.h, s.max_steps, s.formulation)
+
+    ref = shared(first)
+    for sc in scs[1:]:
+        if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
+            raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
+                             f"times, method, tolerances and formulation as {first.source}")
+    method = choose_method(first)
+    if method in plan.SCIPY_METHODS:
+        raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
+    h = None
+    if not tolerance_driven(method) and first.simulate.h is None:
+        h = min(default_step(sc) for sc in scs)
+        for sc in scs:
+            _check_budget(sc, method, h)
+    candidates = tuple(auto.batch_plan(scs, effects))
+    if first.simulate.method == AUTO and candidates:
+        # one method for the batch: the cost model's, for its first scene and first model
+        desc = catalogue.describe((candidates[0][0], first.symmetric, effects))
+        method = plan.auto_method(first, desc)
+    return BatchPlan(scs, method, first.t_out, np.array([inputs_of(sc) for sc in scs]), effects, h,
+                     candidates)

@@ -6,7 +6,7 @@ no derivation, optionally with new initial values or parameters of the same shap
 :meth:`~Prepared.run_batch` runs N such variations in one batch call (arrays of initial values
 and parameters, checked as arrays: no scene per trajectory).
 
-Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`,
+Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.result.Result`,
 :class:`derive.sim.batch.BatchResult`.
 """
 from __future__ import annotations
@@ -19,6 +19,7 @@ from derive.errors import SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
+from derive.sim.result import kept, selection
 from derive.sim.saveat import choose
 from derive.sim.scene import load_scene
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
@@ -57,12 +58,12 @@ class Prepared:
             New values of the model's parameters by name (``I1``, ``I3``, ``M``, ``g``, ``l``,
             …: the names of ``[body]`` and the effect tables, as the model takes them).
         saveat : derive.SaveAt, optional
-            What to keep (:func:`derive.sim.simulation.kept`); default every output at every
+            What to keep (:func:`derive.sim.result.kept`); default every output at every
             sample.
 
         Returns
         -------
-        derive.sim.simulation.Result
+        derive.sim.result.Result
             As :func:`derive.simulate` gives it. ``Result.scene`` is the prepared scene (its
             initial values and parameters, not the ones given here), and the integrals are
             those of its integrable case.
@@ -82,7 +83,7 @@ class Prepared:
                     raise SceneError(f"{self.plan.scene.source}: params: unknown parameter {name!r} "
                                      f"(the model's: {', '.join(self._params)})")
                 _finite(self.plan.scene.source, f"params.{name}", value)
-        return simulation.kept(simulation.run(self.plan, inputs, params), saveat)
+        return kept(simulation.run(self.plan, inputs, params), saveat)
 
     def run_batch(self, initial=None, params=None, outputs=None, saveat=None):
         """Run the prepared scene N times in one batch call, trajectory b with the b-th entry of
@@ -122,7 +123,7 @@ class Prepared:
         IntegrationError
             Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
         """
-        final, names = simulation.selection(choose(saveat, outputs, default="final"))
+        final, names = selection(choose(saveat, outputs, default="final"))
         return batch.run_plan(_PreparedBatch.of(self, initial or {}, params or {}), final, names)
 
     def _inputs(self, initial) -> np.ndarray:
@@ -166,7 +167,7 @@ def _column(source: str, key: str, value, width: int = 1) -> np.ndarray:
     return a
 
 
-class _PreparedBatch(simulation.BatchPlan):
+class _PreparedBatch(batch.BatchPlan):
     """A batch plan of a prepared scene (:meth:`Prepared.run_batch`): every trajectory is the
     prepared scene but for the numbers given as arrays; their parameter vectors are the
     scene's with columns replaced, made once per model."""

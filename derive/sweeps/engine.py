@@ -61,7 +61,7 @@ from derive.errors import SceneError, Terminated
 from derive.runtime import catalogue
 from derive.runtime.integrate import STATS_DTYPE
 from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format
-from derive.sim.simulation import _explain
+from derive.sim.result import _explain
 from derive.sweeps import measures as ms
 from derive.sweeps.cluster import _dask, check_engine
 from derive.sweeps.local import _in_process, _local
