@@ -16,6 +16,7 @@ import warnings
 
 from derive.bench import runner as B
 from derive.sim import examples
+import derive
 
 #: The tolerances raced (atol = rtol / 100, as the scenes' defaults relate them).
 LEVELS = (1e-6, 1e-8, 1e-10, 1e-12)
@@ -39,8 +40,6 @@ def bench_auto_choice(levels=LEVELS, scenes=SCENES, blocks: int = 5) -> dict:
     """Rows ``{scene, rtol, chose, faster, dop853, taylor, auto, auto_over_best}`` (times in s
     per prepared run) and ``right``: how many rows auto chose the faster method, or one within
     10 % of it (a tie)."""
-    import derive
-
     rows = []
     for label, name, extra in scenes:
         with open(examples.path(name), "rb") as fh:

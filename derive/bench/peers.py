@@ -38,6 +38,7 @@ import numpy as np
 from derive.bench import contenders as bc
 from derive.bench import runner as B
 from derive.bench.reference import reference_data
+import derive
 
 #: The peers of issue 20 and the contender method each runs.
 PEERS = {"heyoka": "heyoka-taylor", "numbalsoda": "numbalsoda-dop853"}
@@ -59,8 +60,6 @@ def _peer_error(fam: str, prob: bc.Problem, ref: np.ndarray, rtol: float):
 def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
     """derive against each installed peer at equal error on the reference scene over
     [0, ``t_end``] (1001 samples), at each error level of ``levels``."""
-    import derive
-
     data = reference_data(t_end)
     t = np.linspace(0.0, t_end, data["simulate"]["samples"])
     ref = B.exact_axis(data, t)
@@ -163,8 +162,6 @@ def heyoka_batch(prob: bc.Problem, probs: list[bc.Problem], tol: float):
 def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     """``derive.simulate_batch`` over ``scenes`` (variants of the reference scene) against
     heyoka's batch mode, per trajectory, timed in turns (best of a few rounds each)."""
-    import derive
-
     if "heyoka" not in fams:
         return {"skipped": "heyoka not installed"}
     data = dict(scenes[0])
@@ -223,8 +220,6 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     """The Taylor method's final-only batch (its lanes driver, W trajectories at once) against
     heyoka's final-only batch at the error the Taylor method makes on the reference scene (a
     tighter one than the scenes' own method's: heyoka is matched to it anew), timed in turns."""
-    import derive
-
     taylor = [dict(d, simulate=dict(d["simulate"], method="taylor")) for d in scenes]
     target, _ = _derive_error(taylor[0], ref, rtol)
     m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
@@ -249,8 +244,6 @@ def _prepared_batch(scenes: list[dict]):
     """(the first scene prepared, {initial key: array over the scenes}) for the keys of
     ``[initial]`` that differ among them: ``Prepared.run_batch``'s arguments for the same
     trajectories (the scenes differ only there: :func:`derive.bench.targets.batch_scenes`)."""
-    import derive
-
     first = scenes[0]["initial"]
     varying = [k for k in first if any(d["initial"][k] != first[k] for d in scenes)]
     return (derive.prepare(scenes[0]),
@@ -262,8 +255,6 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
     ``derive.simulate(dict)`` of the same scene again (``derive_simulate``) and of a scene with
     new numbers every call (``derive_simulate_new``), each validated and planned, against the
     peers' calls, timed in turns."""
-    import derive
-
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")

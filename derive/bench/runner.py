@@ -52,7 +52,14 @@ from derive.codegen.render import CHECKOUT
 from derive.errors import IntegrationError
 from derive.methods.registry import compiled_methods, tolerance_driven
 from derive.sim import examples
-from derive.sim.scene import FIXED_STEP_METHODS, MIN_RTOL  # noqa: F401 - MIN_RTOL: B.MIN_RTOL for the bench
+from derive.sim.scene import FIXED_STEP_METHODS, MIN_RTOL
+from derive.sim.scene import FORMULATIONS
+import derive
+from derive.reference import exact
+from derive.codegen.render import GENERATED
+from derive.runtime.cbuild import check_compiles
+from derive.bench import internals as bi
+from derive.runtime.cbuild import compiler
 
 #: The source checkout (for the commit the report names), or None when installed.
 REPO = CHECKOUT
@@ -87,7 +94,6 @@ WP_SCENES = {
 def our_formulations() -> tuple[str, ...]:
     """Every formulation a scene can ask for (the scene format's registry), "auto" excluded."""
     try:
-        from derive.sim.scene import FORMULATIONS
 
         return tuple(f for f in FORMULATIONS if f != "auto")
     except ImportError:
@@ -102,7 +108,6 @@ GOAL_KERNEL_RATIO = 1.2
 @dataclass(frozen=True)
 class Settings:
     """How much to measure. FULL is `derive bench`, QUICK `--quick`, SMOKE the test suite's."""
-
     name: str
     rtols: tuple[float, ...]              # adaptive sweeps, loose to tight
     max_refinements: int                  # fixed-step sweeps: h = dt_out / 2**k, k < this
@@ -259,8 +264,6 @@ def axis_error(axis: np.ndarray, ref: np.ndarray) -> float:
 
 def ours(scene, **overrides):
     """``derive.simulate`` (the public entry point): (axis at the output times, rhs evaluations)."""
-    import derive
-
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         res = derive.simulate(scene, **overrides)
@@ -320,8 +323,6 @@ def _rotation(a: float, b: float, c: float) -> np.ndarray:
 def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
     """ê₃(t) from `derive.reference.exact` for scene data (`bench_contenders.scene_data`), or None when
     the scene has no closed form (damping, or an asymmetric heavy body)."""
-    from derive.reference import exact
-
     if data.get("damping"):
         return None
     b = bc.baselines()
@@ -394,15 +395,11 @@ def reference(scene, data: dict, **overrides) -> Reference:
 
 def _generated_heavy_top() -> dict[str, str]:
     """The committed contract files generated/c/heavy_top.{h,c} (what `make derive` writes)."""
-    from derive.codegen.render import GENERATED
-
     return {n: (GENERATED / "c" / n).read_text() for n in ("heavy_top.h", "heavy_top.c")}
 
 
 def c_loop(cfg: Settings) -> list[dict]:
     """ns/call of generated, hand-written and no-op rhs per flag set (one run each)."""
-    from derive.runtime.cbuild import check_compiles
-
     sources = _generated_heavy_top()
     for name in ("handwritten_heavy_top.c", "noop_rhs.c", "rhs_loop.c"):
         sources[name] = (BENCH_SOURCES / name).read_text()
@@ -450,7 +447,6 @@ def generated_numpy(name: str = "heavy_top"):
     """The committed generated/numpy/<name>.py as a module."""
     import importlib.util
 
-    from derive.codegen.render import GENERATED
 
     spec = importlib.util.spec_from_file_location(f"derive_bench_generated_{name}", GENERATED / "numpy" / f"{name}.py")
     mod = importlib.util.module_from_spec(spec)
@@ -483,7 +479,6 @@ def python_calls(cfg: Settings, fams=("scipy",)) -> dict:
            "numpy_us": per_call(lambda: mod.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6,
            "ctypes_us": None}
     try:
-        from derive.bench import internals as bi
 
         kc = bi.kernel_case(SCENES / "looping_top.toml", "euler-angles")
         out["ctypes_us"] = per_call(lambda: kc.kernel.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6
@@ -545,8 +540,6 @@ def _ours_point(name, method, formulation, setting, path, over: dict, ref: Refer
     validated, planned and its kernel loaded by ``derive.prepare`` outside the timing, then
     ``.run()`` timed (what a user who runs a scene again calls; ``derive.simulate``'s own cost
     per call is the fixed cost of the targets section)."""
-    import derive
-
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         try:
@@ -691,7 +684,6 @@ def work_precision(cfg: Settings, name: str, fams: list[str]) -> dict:
     path = SCENES / f"{name}.toml"
     data = bc.scene_data(path, **cfg.scene_overrides)
     ref = reference(path, data, **cfg.scene_overrides)
-    import derive
 
     auto = derive.simulate(path, **cfg.scene_overrides, rtol=1e-4, atol=1e-6).formulation
     base_forms = WP_SCENES[name] if cfg.all_baseline_forms else WP_SCENES[name][:1]
@@ -854,8 +846,6 @@ def drift(cfg: Settings, bar=None) -> dict:
     """max |ΔE/E₀|, |Δp_α/p_α₀|, |Δp_γ/p_γ₀| (and ||q| − 1| when the state is exposed) over
     ``drift_steps`` fixed steps (looping top, quaternion formulation: neither momentum is built
     in), and dop853 adaptive over the same span; all through ``derive.simulate``."""
-    import derive
-
     t_end = cfg.drift_steps * DRIFT_H
     path = SCENES / "looping_top.toml"
     rows = []
@@ -910,7 +900,6 @@ def machine() -> dict:
     except OSError:
         pass
     try:
-        from derive.runtime.cbuild import compiler
 
         cc = subprocess.run([*compiler(), "--version"], capture_output=True, text=True).stdout.splitlines()[0]
     except (OSError, IndexError):

@@ -47,7 +47,12 @@ from tqdm import tqdm
 from derive.bench import runner as B
 from derive.bench import contenders as bc
 from derive.bench import peers as bench_peers
-from derive.bench.reference import REFERENCE, reference_data  # noqa: F401 - REFERENCE: T.REFERENCE
+from derive.bench.reference import reference_data
+import derive
+from derive.bench import internals as bi
+from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
+from derive.bench.own_body import bench_own_body
+from derive.bench.throughput import bench_throughput
 
 
 GOALS = {
@@ -90,7 +95,6 @@ _match = B.match_tolerance
 
 
 def reference_scene(cfg, fams) -> dict:
-    import derive
 
     data = reference_data(cfg.ref_t_end)
     rtol = data["simulate"]["rtol"]
@@ -105,7 +109,6 @@ def reference_scene(cfg, fams) -> dict:
     parts, errors = {}, {}
     for key, make in (("own_call", "own_batch_call"), ("output_map", "output_map_call")):
         try:
-            from derive.bench import internals as bi
 
             arg = [data] if key == "own_call" else data
             parts[key] = getattr(bi, make)(arg)
@@ -205,8 +208,6 @@ def phases(cfg) -> dict:
     second ``simulate`` with an empty ``DERIVE_CACHE`` (cold) and with a filled one (warm);
     compilation = cold first call − warm first call; and, apart, the SymPy derivation and code
     generation of the model (`bench_internals.DERIVE_SCRIPT`)."""
-    from derive.bench import internals as bi
-
     arg = json.dumps(reference_data(cfg.ref_t_end))
     out = {}
     with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
@@ -225,7 +226,6 @@ def phases(cfg) -> dict:
 
 
 def fixed_cost(cfg) -> dict:
-    import derive
 
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
@@ -258,8 +258,6 @@ def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
 
 def batch(cfg, rtols: dict) -> dict:
     """``rtols``: SciPy method -> the rtol that matched derive's error on the reference scene."""
-    import derive
-
     scenes = batch_scenes(cfg.batch_n, cfg.batch_t_end)
     res = derive.simulate_batch(scenes)  # compile once
     # the method auto chose for the batch, named in every scene: the C calls timed beside
@@ -271,7 +269,6 @@ def batch(cfg, rtols: dict) -> dict:
     # (best of three rounds each), so that a change of machine load hits all three alike.
     fns = {"time": lambda: derive.simulate_batch(scenes)}
     try:
-        from derive.bench import internals as bi
 
         kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
         raw = lambda: kernel.solve_batch(method, y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
@@ -280,7 +277,6 @@ def batch(cfg, rtols: dict) -> dict:
     except Exception as exc:  # noqa: BLE001
         out["raw_error"] = f"{type(exc).__name__}: {exc}"
     try:  # informational: simulate_batch's own C call (outputs included) without its Python
-        from derive.bench import internals as bi
 
         fns["own_call"] = bi.own_batch_call(scenes)
     except Exception as exc:  # noqa: BLE001
@@ -354,7 +350,6 @@ def processes(cfg) -> dict:
 def numpy_vs_lambdify(cfg) -> dict:
     import sympy as sp
 
-    from derive.bench import internals as bi
 
     states, params, rhs = bi.heavy_top_expressions()
     f = sp.lambdify([states, params], list(rhs), modules="numpy", cse=True)
@@ -421,8 +416,6 @@ def run(cfg, fams) -> dict:
 def auto_choice(cfg) -> dict:
     """Issue 20, item 5: does ``method = "auto"`` pick the faster of dop853 and taylor
     (:mod:`derive.bench.autochoice`)?"""
-    from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
-
     if cfg.name == "smoke":
         return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
     return bench_auto_choice(levels=LEVELS if cfg.name == "full" else LEVELS[1::2], blocks=5)
@@ -430,8 +423,6 @@ def auto_choice(cfg) -> dict:
 
 def own_body(cfg) -> dict:
     """Issue 18's targets for user terms (:mod:`derive.bench.own_body`)."""
-    from derive.bench.own_body import bench_own_body
-
     return bench_own_body()
 
 
@@ -440,8 +431,6 @@ def sweeps(cfg) -> dict:
     trajectory against ``solve_ivp(DOP853)`` on a plain-Python rhs at rtol 1e-8, t ∈ [0, 10];
     with ``cfg.sweep_big`` points, a 2-worker Dask LocalCluster against the local engine with 2
     processes, and the scaling from 1 to 2 workers."""
-    from derive.bench.throughput import bench_throughput
-
     return bench_throughput(n=cfg.sweep_n, scipy_n=cfg.sweep_scipy_n, engines=cfg.sweep_big > 0,
                             big=max(cfg.sweep_big, 1))
 
