@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from derive.bench import runner as bench
+from derive.bench import workprecision as work_precision
 from derive.bench import suite
 from derive.bench import contenders as bc
 
@@ -17,35 +18,35 @@ RNG_SEED = 12
 
 
 def _point(time, error):
-    return bench.Point("s", "ours", "m", "f", "", time, 1, error)
+    return work_precision.Point("s", "ours", "m", "f", "", time, 1, error)
 
 
 def test_cost_at_interpolates_log_log_between_the_runs_around_the_level():
     pts = [_point(1.0, 1e-4), _point(10.0, 1e-8)]
-    t, bound = bench.cost_at(pts, 1e-6)
+    t, bound = work_precision.cost_at(pts, 1e-6)
     assert not bound and math.isclose(t, math.sqrt(10.0), rel_tol=1e-12)
 
 
 def test_cost_at_ignores_runs_that_are_slower_and_no_more_accurate():
     pts = [_point(1.0, 1e-4), _point(5.0, 1e-3), _point(10.0, 1e-8), _point(20.0, 1e-8)]
-    assert math.isclose(bench.cost_at(pts, 1e-6)[0], math.sqrt(10.0), rel_tol=1e-12)
+    assert math.isclose(work_precision.cost_at(pts, 1e-6)[0], math.sqrt(10.0), rel_tol=1e-12)
 
 
 def test_cost_at_marks_an_upper_bound_and_an_unreached_level():
     pts = [_point(2.0, 1e-9), _point(4.0, 1e-11)]
-    assert bench.cost_at(pts, 1e-6) == (2.0, True)
-    assert bench.cost_at(pts, 1e-13) == (None, False)
-    assert bench.cost_at([_point(math.nan, math.nan)], 1.0) == (None, False)
+    assert work_precision.cost_at(pts, 1e-6) == (2.0, True)
+    assert work_precision.cost_at(pts, 1e-13) == (None, False)
+    assert work_precision.cost_at([_point(math.nan, math.nan)], 1.0) == (None, False)
 
 
 def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_level():
-    curves = [bench.Curve("ours", "dop853", "f", [_point(1.0, 1e-4), _point(2.0, 1e-10)]),
-              bench.Curve("scipy", "x", "g", [bench.Point("s", "scipy", "x", "g", "", 50.0, 1, 1e-5),
-                                              bench.Point("s", "scipy", "x", "g", "", 500.0, 1, 1e-7)])]
-    row = bench.compare(curves, 1e-6, "scipy")
+    curves = [work_precision.Curve("ours", "dop853", "f", [_point(1.0, 1e-4), _point(2.0, 1e-10)]),
+              work_precision.Curve("scipy", "x", "g", [work_precision.Point("s", "scipy", "x", "g", "", 50.0, 1, 1e-5),
+                                              work_precision.Point("s", "scipy", "x", "g", "", 500.0, 1, 1e-7)])]
+    row = work_precision.compare(curves, 1e-6, "scipy")
     assert row["kind"] == "" and math.isclose(row["ratio"], math.sqrt(50.0 * 500.0) / 2.0 ** (1 / 3), rel_tol=1e-12)
-    row = bench.compare(curves, 1e-9, "scipy")
-    assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / bench.cost_at(curves[0].points, 1e-9)[0])
+    row = work_precision.compare(curves, 1e-9, "scipy")
+    assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / work_precision.cost_at(curves[0].points, 1e-9)[0])
 
 
 def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():

@@ -614,7 +614,7 @@ def test_flip_line_is_one_based_with_its_slope_per_decade_and_nan_marked(mpl):
 
 
 def _wp_points(family, method, formulation, t0, n, failed=0):
-    from derive.bench.runner import Point
+    from derive.bench.workprecision import Point
 
     pts = [Point("s", family, method, formulation, f"rtol=1e-{k + 4}", t0 * 1.6 ** k,
                  int(1000 * 1.6 ** k), 10.0 ** (-4 - k)) for k in range(n)]
@@ -626,7 +626,7 @@ def _wp_points(family, method, formulation, t0, n, failed=0):
 def test_work_precision_series_differ_by_colour_and_marker_in_a_grouped_legend(mpl):
     from matplotlib.colors import to_rgba
 
-    from derive.bench.runner import Curve, work_precision_figure
+    from derive.bench.workprecision import Curve, work_precision_figure
 
     curves = [Curve("ours", "dop853", form, _wp_points("ours", "dop853", form, 1e-3 * (1 + k), 6,
                                                          failed=int(form == "quaternion")))

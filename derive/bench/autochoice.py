@@ -14,7 +14,7 @@ from __future__ import annotations
 import tomllib
 import warnings
 
-from derive.bench import runner as B
+from derive.bench import timing
 from derive.sim import examples
 import derive
 
@@ -50,7 +50,7 @@ def bench_auto_choice(levels=LEVELS, scenes=SCENES, blocks: int = 5) -> dict:
                 prepared = {m: derive.prepare(_variant(data, m, rtol, extra))
                             for m in ("dop853", "taylor", "auto")}
                 fns = [prepared[m].run for m in ("dop853", "taylor", "auto")]
-                t_d, t_t, t_a = B.interleaved(fns, 0, blocks=blocks, counts=B.block_counts(fns, most=5_000))
+                t_d, t_t, t_a = timing.interleaved(fns, 0, blocks=blocks, counts=timing.block_counts(fns, most=5_000))
             best = min(t_d, t_t)
             rows.append({"scene": label, "rtol": rtol, "chose": prepared["auto"].plan.method,
                          "faster": "dop853" if t_d <= t_t else "taylor", "dop853": t_d,

@@ -37,6 +37,7 @@ import numpy as np
 
 from derive.bench import contenders as bc
 from derive.bench import runner as B
+from derive.bench import timing
 from derive.bench.reference import reference_data
 import derive
 
@@ -95,8 +96,8 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
                     with_axis = lambda theirs=theirs: prob.axis(theirs()[0])  # noqa: E731
                     fns = [theirs, sim, run, with_axis]
                     (entry["time"], entry["derive_simulate"], entry["derive_prepared"],
-                     entry["time_with_axis"]) = B.interleaved(
-                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=B.block_counts(fns))
+                     entry["time_with_axis"]) = timing.interleaved(
+                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=timing.block_counts(fns))
                     entry["ratio_simulate"] = entry["derive_simulate"] / entry["time"]
                     entry["ratio_prepared"] = entry["derive_prepared"] / entry["time"]
                     entry["ratio_prepared_with_axis"] = entry["derive_prepared"] / entry["time_with_axis"]
@@ -192,7 +193,7 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         ny = len(prob.y0)
         fns["heyoka_grid_axis"] = lambda: prob.axis(grid_run().reshape(-1, ny))
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
-    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     out = {"n": n, "t_end": float(t[-1]), "samples": len(t), "rtol": rtol, "derive_error": target,
            "heyoka_tol": m["rtol"], "heyoka_error": m["error"], "heyoka_reached": m["reached"], "lanes": width,
@@ -230,7 +231,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
            "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
     final_run()
-    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
             "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
@@ -271,7 +272,7 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
             setup = c.setup(prob, method, rtol, B.ATOL_RATIO * rtol)
             names.append(fam)
             fns.append(lambda c=c, method=method, setup=setup: c.solve(prob, method, rtol, B.ATOL_RATIO * rtol, setup))
-    times = dict(zip(names, B.interleaved(fns, max(cfg.fixed_cost_calls, 15))))
+    times = dict(zip(names, timing.interleaved(fns, max(cfg.fixed_cost_calls, 15))))
     out = {"rtol": rtol, **times}
     for fam in PEERS:
         if fam in times:

@@ -45,6 +45,7 @@ import numpy as np
 from tqdm import tqdm
 
 from derive.bench import runner as B
+from derive.bench import timing
 from derive.bench import contenders as bc
 from derive.bench import peers as bench_peers
 from derive.bench.reference import reference_data
@@ -115,8 +116,8 @@ def reference_scene(cfg, fams) -> dict:
         except Exception as exc:  # noqa: BLE001
             errors[f"{key}_error"] = f"{type(exc).__name__}: {exc}"
     own_call = parts.get("own_call")
-    k = max(1, int(0.02 / B.timed(ours_call, 3)[0]))
-    t_ours, *t_parts = B.interleaved([ours_call, *parts.values()], 0, blocks=max(3, cfg.ref_repeats),
+    k = max(1, int(0.02 / timing.timed(ours_call, 3)[0]))
+    t_ours, *t_parts = timing.interleaved([ours_call, *parts.values()], 0, blocks=max(3, cfg.ref_repeats),
                                      counts=[k] * (1 + len(parts)))
     ours = {"time": t_ours, "error": B.axis_error(res.axis, ref), "nfev": int(res.nfev),
             "method": res.method, "formulation": res.formulation, "rtol": rtol,
@@ -157,7 +158,7 @@ def reference_scene(cfg, fams) -> dict:
         fns, counts = [theirs, ours_call], [1, k]
         if own_call is not None and method == "scipy-dop853":
             fns, counts = fns + [own_call], counts + [k]
-        m["time"], m["ours_paired"], *own = B.interleaved(fns, 0, blocks=max(3, cfg.ref_repeats), counts=counts)
+        m["time"], m["ours_paired"], *own = timing.interleaved(fns, 0, blocks=max(3, cfg.ref_repeats), counts=counts)
         if own:
             m["own_call_paired"] = own[0]
         rows.append({"family": fam, "method": method, "label": label, **m,
@@ -165,7 +166,7 @@ def reference_scene(cfg, fams) -> dict:
     # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
     scipy_rtol = rows[0]["rtol"]
     odeint = next(r for r in rows if r["method"] == "scipy-odeint")
-    t_np, res_np = B.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
+    t_np, res_np = timing.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
                                                    atol=B.ATOL_RATIO * scipy_rtol), 1)
     rows.append({"family": "scipy-numpy", "method": "scipy-dop853",
                  "label": "`solve_ivp` DOP853 on derive's generated NumPy rhs (`method = \"scipy-dop853\"`)",
@@ -234,7 +235,7 @@ def fixed_cost(cfg) -> dict:
     rtol = data["simulate"]["rtol"]
     derive.simulate(data)
     setup_o = bc.scipy_setup(prob, "scipy-odeint")
-    t_ours, t_scipy, t_odeint = B.interleaved(
+    t_ours, t_scipy, t_odeint = timing.interleaved(
         [lambda: derive.simulate(data),
          lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
          lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o)],
@@ -283,7 +284,7 @@ def batch(cfg, rtols: dict) -> dict:
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
     for fn in fns.values():
         fn()
-    best = B.best_in_turns(fns, 3 if cfg.batch_n >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if cfg.batch_n >= 500 else 5)
     out.update(best, per_scene=best["time"] / len(scenes))
     if "raw" in best:
         out["vs_raw"] = best["raw"] / best["time"]
@@ -297,7 +298,7 @@ def batch(cfg, rtols: dict) -> dict:
             prob = bc.problem(d, "euler-angles")
             setup = bc.scipy_setup(prob, peer)
             run = lambda: bc.solve_scipy(prob, peer, r, B.ATOL_RATIO * r, setup)  # noqa: E731
-            times.append(min(B.timed(run, 1)[0] for _ in range(2)))  # the better of two: load spikes
+            times.append(min(timing.timed(run, 1)[0] for _ in range(2)))  # the better of two: load spikes
         per = statistics.median(times)
         out.update({f"{key}_rtol": r, f"{key}_n": len(times), f"{key}_per_trajectory": per,
                     f"vs_{key}": per / out["per_scene"]})
@@ -373,7 +374,7 @@ def numpy_vs_lambdify(cfg) -> dict:
             return out
 
         # in turns, so that a change of machine load hits all alike
-        t_gen, t_lam, t_raw, t_blk = B.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P), blocked],
+        t_gen, t_lam, t_raw, t_blk = timing.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P), blocked],
                                                    0, blocks=reps, counts=[3, 3, 3, 3])
     return {"n": n, "generated": t_gen, "lambdify": t_lam, "lambdify_raw": t_raw, "ratio": t_gen / t_lam,
             "ratio_raw": t_gen / t_raw, "max_rel_diff": diff, "generated_ns_per_state": t_gen / n * 1e9,
