@@ -1,4 +1,4 @@
-"""Does ``method = "auto"`` pick the faster method? (issue 20, item 5; a report of ``derive bench``)
+"""Does ``method = "auto"`` pick the faster method? (a report of ``derive bench``)
 
 For a few example scenes of different shapes (the reference heavy top at its 1001 samples and at
 11, an off-axis asymmetric top, a damped top, the tennis racket) and each tolerance of

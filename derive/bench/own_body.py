@@ -1,4 +1,4 @@
-"""Issue 18's targets for user terms (``[[potential]]``, ``[[torque]]``), measured in `derive bench`.
+"""The targets for user terms (``[[potential]]``, ``[[torque]]``), measured in `derive bench`.
 
 * ``own_first_run``: seconds of the first ``derive.simulate`` of a new user body (derive with
   SymPy, generate, compile, run) in a fresh process with an empty ``DERIVE_CACHE``; goal ≤ 3 s.

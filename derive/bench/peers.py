@@ -1,4 +1,4 @@
-"""Issue 20's races against the two peers a user can ``pip install`` that beat derive: heyoka
+"""The races against the two peers a user can ``pip install`` that beat derive: heyoka
 (LLVM-compiled Taylor method of adaptive order) and numbalsoda (Hairer's DOP853 in C++ on a
 numba ``cfunc`` right-hand side), each raced when it imports (:mod:`derive.bench.contenders`).
 
@@ -41,7 +41,7 @@ from derive.bench import timing
 from derive.bench.reference import reference_data
 import derive
 
-#: The peers of issue 20 and the contender method each runs.
+#: The peers and the contender method each runs.
 PEERS = {"heyoka": "heyoka-taylor", "numbalsoda": "numbalsoda-dop853"}
 
 
@@ -283,7 +283,7 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
 
 
 def run(cfg, fams: list[str], batch_scenes) -> dict:
-    """Every race of issue 20 that an installed peer can run; ``batch_scenes(n, t_end)`` gives
+    """Every race that an installed peer can run; ``batch_scenes(n, t_end)`` gives
     the batch's scenes (:func:`derive.bench.targets.batch_scenes`). Each part is guarded by the
     caller; without heyoka and numbalsoda: ``{"skipped": ...}``."""
     peers = [f for f in PEERS if f in fams]

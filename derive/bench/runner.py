@@ -11,7 +11,7 @@ README's "Measured" section; both by `derive.bench.report`), one work–precisio
    ``derive/bench/baselines/handwritten_heavy_top.c`` (the same equations typed from the textbook), each in
    its own translation unit, called through a pointer by ``derive/bench/baselines/rhs_loop.c``; the
    generated NumPy ``rhs`` on a batch of states; one call through Python.
-2. **Targets** of issue 8 (`derive.bench.targets`), each a ratio measured side by side in one
+2. **Targets** (`derive.bench.targets`), each a ratio measured side by side in one
    run: the reference heavy top against ``solve_ivp(DOP853)`` with a hand-written plain-Python
    rhs and against CasADi, the fixed cost of a call, ``simulate_batch`` against its own raw C
    loop and SciPy, process start-up warm and cold, NumPy rhs against ``sympy.lambdify``; and
@@ -133,7 +133,7 @@ class Settings:
     ref_t_end: float = 10.0
     ref_repeats: int = 7
     fixed_cost_calls: int = 1500
-    # issue 20's races against heyoka and numbalsoda (derive.bench.peers): the error levels on the
+    # the races against heyoka and numbalsoda (derive.bench.peers): the error levels on the
     # reference scene, and the long run's span and levels
     peer_levels: tuple[float, ...] = (1e-8, 1e-10, 1e-12)
     long_t_end: float = 1000.0
@@ -151,7 +151,7 @@ class Settings:
     splitting_target: float = 1e-8
     splitting_budget: float = 30.0
     lambdify_n: int = 100_000
-    # issue 11's sweep targets (derive.bench.throughput.bench_throughput): trajectories per process,
+    # the sweep targets (derive.bench.throughput.bench_throughput): trajectories per process,
     # SciPy runs, and the 2-process / Dask comparison's points (0: not run)
     sweep_n: int = 2000
     sweep_scipy_n: int = 20

@@ -1,4 +1,4 @@
-"""The targets of issue 8, each a ratio measured side by side in one run of `derive bench`.
+"""The targets, each a ratio measured side by side in one run of `derive bench`.
 
 * **Reference scene** (:data:`REFERENCE`: symmetric heavy top I₁ = I₂ = 1, I₃ = 0.5,
   M = g = l = 1; α₀ = 0, β₀ = 0.8, γ₀ = 0, α̇₀ = −0.4, β̇₀ = 0.3, γ̇₀ = 6; t ∈ [0, 10], 1001
@@ -13,9 +13,9 @@
 * **Batch**: ``simulate_batch`` over 1000 variants of the reference scene against the C batch
   loop doing the same work (its own C call on prepared arrays: init map, integration and the
   outputs; goal ≥ 70 % of its throughput) and against SciPy per trajectory (goal ≥ 150×). The
-  solve-only C loop (``Kernel.solve_batch``, states only, no outputs) is reported as context: the
-  issue first named it, but with the outputs about 40 % of the C work, 70 % of a loop that skips
-  them is out of reach of any Python around the same C.
+  solve-only C loop (``Kernel.solve_batch``, states only, no outputs) is reported as context:
+  with the outputs a large share of the C work, 70 % of a loop that skips them is out of reach
+  of any Python around the same C.
 * **Ceilings**, as context: each SciPy time over derive's C call alone (no Python at all), the
   largest ratio any Python around that C could reach; where it is below a goal, the goal needs
   fewer rhs evaluations, not less overhead.
@@ -60,7 +60,7 @@ GOALS = {
     "vs_scipy": ("≥", 100.0), "vs_casadi": ("≥", 10.0), "fixed_cost": ("≤", 0.5),
     "batch_vs_own": ("≥", 0.70), "batch_vs_scipy": ("≥", 150.0), "warm_process": ("≤", 3.0),
     "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
-    # issue 11
+    # sweeps
     "sweep_vs_scipy": ("≥", 100.0), "dask_vs_local": ("≤", 1.1), "dask_scaling": ("≥", 0.8),
     # derive.bench.peers: derive's time over the peer's, at equal error
     "vs_heyoka": ("≤", 0.7), "vs_numbalsoda": ("≤", 0.5), "long_vs_heyoka": ("≤", 0.7),
@@ -415,7 +415,7 @@ def run(cfg, fams) -> dict:
 
 
 def auto_choice(cfg) -> dict:
-    """Issue 20, item 5: does ``method = "auto"`` pick the faster of dop853 and taylor
+    """Does ``method = "auto"`` pick the faster of dop853 and taylor
     (:mod:`derive.bench.autochoice`)?"""
     if cfg.name == "smoke":
         return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
@@ -423,12 +423,12 @@ def auto_choice(cfg) -> dict:
 
 
 def own_body(cfg) -> dict:
-    """Issue 18's targets for user terms (:mod:`derive.bench.own_body`)."""
+    """The targets for user terms (:mod:`derive.bench.own_body`)."""
     return bench_own_body()
 
 
 def sweeps(cfg) -> dict:
-    """Issue 11's targets (:func:`derive.bench.throughput.bench_throughput`): the measured sweep loop per
+    """The sweep targets (:func:`derive.bench.throughput.bench_throughput`): the measured sweep loop per
     trajectory against ``solve_ivp(DOP853)`` on a plain-Python rhs at rtol 1e-8, t ∈ [0, 10];
     with ``cfg.sweep_big`` points, a 2-worker Dask LocalCluster against the local engine with 2
     processes, and the scaling from 1 to 2 workers."""
@@ -496,7 +496,7 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
 
 
 def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
-    """Issue 20's rows (what, goal key, derive's time / the peer's) from :mod:`derive.bench.peers`."""
+    """The peers' rows (what, goal key, derive's time / the peer's) from :mod:`derive.bench.peers`."""
     rows = []
     names = {"heyoka": "heyoka `taylor_adaptive`", "numbalsoda": "numbalsoda `dop853`"}
     for part, what, key in (("reference", "reference scene", "vs_{}"), ("long", "long run", "long_vs_{}")):
