@@ -196,3 +196,28 @@ def test_an_invalid_dict_fails_every_time_and_a_valid_one_after_it_runs():
     for _ in range(2):
         with pytest.raises(SceneError, match="beta"):
             derive.simulate(bad2)
+
+
+def test_a_batch_reads_the_model_part_once_and_each_initial_state():
+    """Dicts equal but for [initial] share the first's validated model part: the same scenes as
+    validated one by one; a model part that differs in a type or a signed zero is validated on
+    its own (and fails as it would alone)."""
+    from derive.sim import batch
+    from derive.sim.validator import same_model_part
+
+    a, b = _short(), _short()
+    b["initial"] = dict(b["initial"], beta=0.9)
+    assert same_model_part(a, b)
+    scenes = batch.batch_plan([a, b]).scenes
+    assert scenes == [load_scene(a), load_scene(b)]
+    assert scenes[1].body is scenes[0].body  # read once
+    bad = copy.deepcopy(b)
+    bad["initial"]["beta"] = float("nan")
+    with pytest.raises(SceneError, match="initial.beta"):
+        batch.batch_plan([a, bad])
+    assert not same_model_part(a, dict(b, body={"I1": 1, "I3": 0.5}))
+    assert not same_model_part(a, dict(b, body=dict(a["body"], I3=-0.0)))
+    with pytest.raises(SceneError, match="body.I3"):
+        batch.batch_plan([a, dict(b, body=dict(a["body"], I3=-0.0))])
+    with pytest.raises(SceneError, match="body.I1"):
+        batch.batch_plan([a, dict(b, body=dict(a["body"], I1=True))])

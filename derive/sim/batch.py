@@ -50,6 +50,7 @@ from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, def
 from derive.sim.result import Result, _check_pole, _explain, _pole_suspects, _quiet, _result, selection
 from derive.sim.saveat import SaveAt
 from derive.sim.scene import load_scene
+from derive.sim.validator import _Validator, same_model_part
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
@@ -296,8 +297,12 @@ class BatchPlan:
         return desc, kernel, args
 
     def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
-        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model."""
-        return np.array([params_of(sc, desc) for sc in self.scenes[rows]])
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model: one
+        row for all when they have the first scene's model part (:func:`_validated`)."""
+        scs = self.scenes[rows]
+        if scs and all(_model_part_of(sc, scs[0]) for sc in scs):
+            return np.repeat(params_of(scs[0], desc)[None, :], len(scs), axis=0)
+        return np.array([params_of(sc, desc) for sc in scs])
 
     def where(self, b: int) -> str:
         """How an error names trajectory ``b``: its scene's source."""
@@ -313,10 +318,33 @@ class BatchPlan:
             raise IntegrationError(f"{self.where(offset + b)}: {_explain(desc, st[b], sc.simulate.max_steps)}")
 
 
+def _validated(scenes, overrides: dict) -> list:
+    """Each scene of a batch validated (:func:`derive.sim.scene.load_scene`). A dict whose model
+    part is the first dict's (everything but ``[initial]``, value for value and type for type:
+    :func:`derive.sim.validator.same_model_part`) has only its initial state read: its model,
+    settings and so its plan are the first's."""
+    out, first, like = [], None, None
+    for s in scenes:
+        if like is not None and same_model_part(s, first):
+            out.append(_Validator("<dict>").with_initial(s, like))
+            continue
+        sc = load_scene(s, **overrides)
+        if not out and type(s) is dict:
+            first, like = s, sc
+        out.append(sc)
+    return out
+
+
+def _model_part_of(sc, first) -> bool:
+    """Whether ``sc`` was read with ``first``'s model part (the very objects: :func:`_validated`)."""
+    return (sc.body is first.body and sc.tables is first.tables and sc.terms is first.terms
+            and sc.simulate is first.simulate and sc.title is first.title)
+
+
 def batch_plan(scenes, **overrides) -> BatchPlan | None:
     """Validate the scenes of a batch and decide what it runs (None for no scenes): one model
     with every effect that acts in any scene, the shared method, output times and settings."""
-    scs = [load_scene(s, **overrides) for s in scenes]
+    scs = _validated(scenes, overrides)
     if not scs:
         return None
     first = scs[0]
@@ -334,6 +362,8 @@ def batch_plan(scenes, **overrides) -> BatchPlan | None:
 
     ref = shared(first)
     for sc in scs[1:]:
+        if _model_part_of(sc, first):
+            continue  # (its model part is the first's: shared(sc) is ref)
         if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
             raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
                              f"times, method, tolerances and formulation as {first.source}")

@@ -9,6 +9,7 @@ loads a scene into.
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -193,7 +194,7 @@ class Scene:
             raise AttributeError(name)
         return self.tables.get(name)
 
-    @property
+    @functools.cached_property
     def effects(self) -> tuple[str, ...]:
         """The registry effects acting on the body, in registry order, e.g.
         ("gravity", "damping") or ("gravity_general",): the ones the scene's tables select,

@@ -289,6 +289,18 @@ class _Validator:
         self.formulation_fits(scene)
         return scene
 
+    def with_initial(self, data: Mapping, like: Scene) -> Scene:
+        """The scene of ``data``, a dict whose model part is that of the dict ``like`` was
+        validated from (:func:`same_model_part`): its ``[initial]`` table read, everything else
+        ``like``'s (valid: the first problem of ``data`` can only be in its initial state)."""
+        if "initial" not in data:
+            self.fail("initial", "missing required table")
+        initial = self.initial(self.table(data["initial"], "initial", _registry_view().key_sets["initial"]))
+        scene = dataclasses.replace(like, initial=initial, source=self.source)
+        scene.__dict__["effects"] = like.effects  # (its tables and terms are like's)
+        self.formulation_fits(scene)
+        return scene
+
     def body(self, t) -> Body:
         I1 = self.number(t, "body", "I1", _positive, _POSITIVE)
         I2 = self.number(t, "body", "I2", _positive, _POSITIVE, I1)  # symmetric unless told
@@ -510,3 +522,13 @@ class _Validator:
         reason = solvers.method_reason(scene.simulate.method, form, scene.effects)
         if reason:
             self.fail("simulate.method", reason)
+
+
+def same_model_part(a, b) -> bool:
+    """Whether two scene dicts are equal but for their ``[initial]`` table: each other table
+    the same object, or the same text (``repr`` tells ``1``, ``1.0`` and ``True`` apart, and
+    ``-0.0`` from ``0.0``). Then the scene validated from one has the other's body, effect
+    tables, terms, settings and title, and so its model and plan (:meth:`_Validator.with_initial`)."""
+    if type(a) is not dict or type(b) is not dict or a.keys() != b.keys():
+        return False
+    return all(k == "initial" or a[k] is b[k] or repr(a[k]) == repr(b[k]) for k in a)
