@@ -68,9 +68,9 @@ def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
 KERNELS = [  # (kernel key, baseline formulation)
     (("euler-angles", True, ("gravity",)), "euler-angles"),
     (("euler-angles", True, ()), "euler-angles"),
-    (("quaternion", False, ()), "quaternion"),
-    (("quaternion", True, ("gravity",)), "quaternion"),
-    (("quaternion", False, ("gravity",)), "quaternion"),
+    pytest.param(("quaternion", False, ()), "quaternion", marks=pytest.mark.slow),
+    pytest.param(("quaternion", True, ("gravity",)), "quaternion", marks=pytest.mark.slow),
+    (("quaternion", False, ("gravity",)), "quaternion"),  # (the most general: in make test)
 ]
 MOMENTS = {"I1": 1.3, "I2": 1.7, "I3": 0.6, "M": 0.9, "g": 1.1, "l": 0.7}
 
@@ -165,6 +165,7 @@ def test_scipy_baseline_reaches_the_exact_solution():
 # end to end
 
 
+@pytest.mark.slow  # the whole smoke bench (every part, every scene): `make test-slow`
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     res = suite.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()
