@@ -11,10 +11,8 @@ The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulat
 ``derive.methods``, ``derive.codegen``, ``derive.runtime``, ``derive.sim``, ``derive.sweeps``,
 ``derive.lecture``), each saying in its docstring what it takes, gives and may import.
 """
-from derive import _moved
 from derive.errors import CompilerError, IntegrationError, SceneError
-
-_moved.install()  # derive.simulation, derive.scene, …: the old module paths still import
+from derive.sim.saveat import SaveAt, choose as _choose
 
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
@@ -22,11 +20,11 @@ DISTRIBUTION = "derive-rigid-body"
 """The name on the package index (``pip install derive-rigid-body``): a plain ``derive`` there is an
 unrelated project. The import and the command stay ``derive``."""
 
-__all__ = ["SceneError", "IntegrationError", "CompilerError", "simulate", "simulate_batch", "sweep",
-           "analyze", "prepare"]
+__all__ = ["SceneError", "IntegrationError", "CompilerError", "SaveAt", "simulate", "simulate_batch",
+           "sweep", "analyze", "prepare"]
 
 
-def simulate(scene, **overrides):
+def simulate(scene, *, saveat=None, **overrides):
     """Simulate one scene: derive (or load) its model, integrate it in one C call, return the arrays.
 
     Parameters
@@ -35,6 +33,10 @@ def simulate(scene, **overrides):
         A scene file (TOML), the name of a shipped example (``"looping_top"``; ``derive
         examples`` lists them), or a dict shaped like the TOML (tables ``body``, optional
         ``gravity`` and ``damping``, ``initial``, optional ``simulate``).
+    saveat : SaveAt, optional
+        What to keep: ``SaveAt(t="final")`` every array at t_end alone (length 1 along time),
+        ``SaveAt(outputs=("beta", …))`` only those outputs (the others None). Default: every
+        output at every sample.
     **overrides
         Keys of the ``[simulate]`` table that replace the scene's: ``method``, ``rtol``,
         ``atol``, ``formulation``, ``h``, ``max_steps``, ``t_end``, ``samples``. ``None`` means
@@ -42,7 +44,7 @@ def simulate(scene, **overrides):
 
     Returns
     -------
-    derive.sim.simulation.Result
+    derive.sim.result.Result
         The arrays of the output file as attributes: ``t`` (n,), the z-y-z angles ``alpha``,
         ``beta`` (in [0, π]), ``gamma`` (α, γ continuous, not wrapped), ``omega`` (n, 3, body
         frame ω̃), ``axis`` (n, 3, inertial components of body axis ê₃), ``energy`` (T + V),
@@ -79,7 +81,7 @@ def simulate(scene, **overrides):
     """
     from derive.sim.simulation import simulate as _simulate
 
-    return _simulate(scene, **overrides)
+    return _simulate(scene, _choose(saveat), **overrides)
 
 
 def prepare(scene, **overrides):
@@ -95,7 +97,7 @@ def prepare(scene, **overrides):
     Returns
     -------
     derive.sim.prepared.Prepared
-        ``run()`` gives the :class:`~derive.sim.simulation.Result` :func:`simulate` would, with
+        ``run()`` gives the :class:`~derive.sim.result.Result` :func:`simulate` would, with
         no validation, look-up or derivation per call; ``run(initial={...}, params={...})``
         reruns with new initial values or parameters of the same shape.
 
@@ -119,7 +121,7 @@ def prepare(scene, **overrides):
     return Prepared(scene, **overrides)
 
 
-def simulate_batch(scenes, outputs=None, **overrides):
+def simulate_batch(scenes, outputs=None, *, saveat=None, **overrides):
     """Simulate many scenes that differ only in numbers, with one call into C for all of them.
 
     Parameters
@@ -128,10 +130,11 @@ def simulate_batch(scenes, outputs=None, **overrides):
         Scenes as :func:`simulate` takes them. They must name the same effects, body symmetry,
         output times, method and tolerances; the moments, effect parameters and initial states
         may differ.
-    outputs : None, "final" or sequence of str, optional
-        What to keep. None (default): everything, one Result per scene. ``"final"``: every
-        output (and ``state``) at the last sample only; a sequence of output names (``"beta"``,
-        ``"axis"``, …, ``"state"``): those at every sample. Either way one
+    saveat : SaveAt, optional
+        What to keep. The default (every output at every sample): one Result per scene.
+        ``SaveAt(t="final")``: every output (and ``state``) at the last sample only;
+        ``SaveAt(outputs=("beta", "axis", …, "state"))``: those at every sample (with
+        ``t="final"``, at the last). Any selection gives one
         :class:`~derive.sim.batch.BatchResult` with arrays stacked along a first axis of
         length N, bit for bit the numbers of the full batch, and only those arrays allocated
         (the compiled loop runs in chunks whose work arrays are reused): 1000 trajectories of
@@ -141,16 +144,16 @@ def simulate_batch(scenes, outputs=None, **overrides):
         then counts no dense-output evaluations), and a Taylor method runs several
         trajectories at once in SIMD lanes (``BatchResult.driver`` says which driver ran).
         The integrals of the integrable cases are not computed (they are functions of ``L``
-        and ``n``). Dicts that differ only in the numbers of ``[initial]`` (the other tables
-        equal value for value and type for type, the same initial keys in the same order) run
-        as one prepared batch, without reading each dict (:func:`prepare`'s ``run_batch``:
-        the same numbers).
+        and ``n``).
+    outputs : None, "final" or sequence of str, optional
+        The short spelling of ``saveat`` (:meth:`SaveAt.of`): ``"final"`` is
+        ``SaveAt(t="final")``, names are ``SaveAt(outputs=names)``; give one of the two.
     **overrides
         ``[simulate]`` keys applied to every scene, as in :func:`simulate`.
 
     Returns
     -------
-    list of derive.sim.simulation.Result, or derive.sim.batch.BatchResult
+    list of derive.sim.result.Result, or derive.sim.batch.BatchResult
         Without ``outputs``: one result per scene, in order, each as :func:`simulate` would
         give it. With ``outputs``: one BatchResult (None for no scenes). With
         ``formulation = "auto"`` the scenes share one formulation.
@@ -177,22 +180,12 @@ def simulate_batch(scenes, outputs=None, **overrides):
     >>> ends.beta.shape, ends.omega.shape, bool(ends.beta[1] == runs[1].beta[-1])
     ((2,), (2, 3), True)
     """
-    from derive.sim.prepared import family_batch, family_results
+    from derive.sim.batch import simulate_batch as _batch
 
-    # dicts that differ only in their initial numbers: one prepared batch, the same numbers
-    given = any(v is not None for v in overrides.values())  # (None: not given, as simulate takes it)
-    if outputs is not None:
-        from derive.sim.batch import simulate_batch as _selected
-
-        ran = None if given else family_batch(scenes, outputs)
-        return ran if ran is not None else _selected(scenes, outputs, **overrides)
-    from derive.sim.simulation import simulate_batch as _batch
-
-    ran = None if given else family_results(scenes)
-    return ran if ran is not None else _batch(scenes, **overrides)
+    return _batch(scenes, _choose(saveat, outputs), **overrides)
 
 
-def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
+def sweep(spec, *, workers=None, scheduler=None, progress=None, saveat=None, **kwargs):
     """Run a parameter sweep: many points of one scene, each measured while it is integrated.
 
     Parameters
@@ -210,13 +203,16 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
         The address of a running Dask scheduler (``tcp://host:port``).
     progress : bool, optional
         A progress bar on stderr (default: when stderr is a terminal).
+    saveat : SaveAt, optional
+        A sweep keeps t_end only: ``SaveAt(t="final")`` (with ``outputs`` among ``alpha``,
+        ``beta``, ``gamma``, ``omega``) adds the ``final_state`` measure's columns.
     **kwargs
         ``processes`` (the local engine's process count, default one per core) and
         ``add_measure`` (a measure added to the spec's list).
 
     Returns
     -------
-    derive.sweeps.engine.SweepResult
+    derive.sweeps.result.SweepResult
         ``params`` and ``measures`` ({name: (N,) array}, one entry per point), ``status``
         ((N,) str: "ok" or why the point failed) and ``to_pandas()``. The numbers are the same
         whichever engine ran them.
@@ -243,7 +239,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, **kwargs):
     """
     from derive.sweeps.engine import sweep as _sweep
 
-    return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress, **kwargs)
+    return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress,
+                  saveat=None if saveat is None else _choose(saveat), **kwargs)
 
 
 def analyze(scene):

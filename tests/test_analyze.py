@@ -107,7 +107,7 @@ def test_example_scene_markdown(path):
 
 
 def test_new_scenes_are_covered():
-    """The scenes this issue added are in the table (so their verdicts are checked)."""
+    """The added example scenes are in the table (so their verdicts are checked)."""
     for name in ("kovalevskaya_top", "goryachev_chaplygin_top", "off_axis_top"):
         assert (SCENES / f"{name}.toml").exists()
 

@@ -1,4 +1,4 @@
-"""`derive analyze`'s numbers against independent physics (issue 17, items 2, 3, 4, 8, 11).
+"""`derive analyze`'s numbers against independent physics.
 
 * Steady precession: each rate α̇ carries its own V_eff″ and eigenvalues (one record per root),
   checked against the closed-form nutation frequency and against a simulation.

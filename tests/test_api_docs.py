@@ -25,7 +25,9 @@ def test_each_public_name_has_a_numpydoc_docstring(name):
     if name.endswith("Error"):
         assert "CLI exit status" in doc or "compile" in doc, name
         return
-    for section in ("Parameters", "Returns", "Raises", "Examples"):
+    sections = ("Parameters", "Raises", "Examples") if isinstance(getattr(derive, name), type) \
+        else ("Parameters", "Returns", "Raises", "Examples")  # a class returns nothing
+    for section in sections:
         assert f"\n    {section}\n    ---" in doc, (name, section)
 
 

@@ -1,4 +1,4 @@
-"""Lean batches (issue 20, item 4): ``outputs="final"`` keeps only the (N, …) final arrays, its
+"""Lean batches: ``outputs="final"`` keeps only the (N, …) final arrays, its
 work bounded by the chunks' buffers whatever N, with the full batch's numbers at the last sample."""
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""`derive.simulate_batch(scenes, outputs=...)` keeps only what is asked for (issue 20 item 4):
+"""`derive.simulate_batch(scenes, outputs=...)` keeps only what is asked for:
 the numbers are bit for bit those of the full batch, and only the arrays asked for are
 allocated (the compiled loop runs in chunks whose work arrays are reused)."""
 import tracemalloc

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from derive.bench import runner as bench
+from derive.bench import workprecision as work_precision
 from derive.bench import suite
 from derive.bench import contenders as bc
 
@@ -17,35 +18,35 @@ RNG_SEED = 12
 
 
 def _point(time, error):
-    return bench.Point("s", "ours", "m", "f", "", time, 1, error)
+    return work_precision.Point("s", "ours", "m", "f", "", time, 1, error)
 
 
 def test_cost_at_interpolates_log_log_between_the_runs_around_the_level():
     pts = [_point(1.0, 1e-4), _point(10.0, 1e-8)]
-    t, bound = bench.cost_at(pts, 1e-6)
+    t, bound = work_precision.cost_at(pts, 1e-6)
     assert not bound and math.isclose(t, math.sqrt(10.0), rel_tol=1e-12)
 
 
 def test_cost_at_ignores_runs_that_are_slower_and_no_more_accurate():
     pts = [_point(1.0, 1e-4), _point(5.0, 1e-3), _point(10.0, 1e-8), _point(20.0, 1e-8)]
-    assert math.isclose(bench.cost_at(pts, 1e-6)[0], math.sqrt(10.0), rel_tol=1e-12)
+    assert math.isclose(work_precision.cost_at(pts, 1e-6)[0], math.sqrt(10.0), rel_tol=1e-12)
 
 
 def test_cost_at_marks_an_upper_bound_and_an_unreached_level():
     pts = [_point(2.0, 1e-9), _point(4.0, 1e-11)]
-    assert bench.cost_at(pts, 1e-6) == (2.0, True)
-    assert bench.cost_at(pts, 1e-13) == (None, False)
-    assert bench.cost_at([_point(math.nan, math.nan)], 1.0) == (None, False)
+    assert work_precision.cost_at(pts, 1e-6) == (2.0, True)
+    assert work_precision.cost_at(pts, 1e-13) == (None, False)
+    assert work_precision.cost_at([_point(math.nan, math.nan)], 1.0) == (None, False)
 
 
 def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_level():
-    curves = [bench.Curve("ours", "dop853", "f", [_point(1.0, 1e-4), _point(2.0, 1e-10)]),
-              bench.Curve("scipy", "x", "g", [bench.Point("s", "scipy", "x", "g", "", 50.0, 1, 1e-5),
-                                              bench.Point("s", "scipy", "x", "g", "", 500.0, 1, 1e-7)])]
-    row = bench.compare(curves, 1e-6, "scipy")
+    curves = [work_precision.Curve("ours", "dop853", "f", [_point(1.0, 1e-4), _point(2.0, 1e-10)]),
+              work_precision.Curve("scipy", "x", "g", [work_precision.Point("s", "scipy", "x", "g", "", 50.0, 1, 1e-5),
+                                              work_precision.Point("s", "scipy", "x", "g", "", 500.0, 1, 1e-7)])]
+    row = work_precision.compare(curves, 1e-6, "scipy")
     assert row["kind"] == "" and math.isclose(row["ratio"], math.sqrt(50.0 * 500.0) / 2.0 ** (1 / 3), rel_tol=1e-12)
-    row = bench.compare(curves, 1e-9, "scipy")
-    assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / bench.cost_at(curves[0].points, 1e-9)[0])
+    row = work_precision.compare(curves, 1e-9, "scipy")
+    assert row["kind"] == ">" and math.isclose(row["ratio"], 500.0 / work_precision.cost_at(curves[0].points, 1e-9)[0])
 
 
 def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
@@ -67,9 +68,9 @@ def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
 KERNELS = [  # (kernel key, baseline formulation)
     (("euler-angles", True, ("gravity",)), "euler-angles"),
     (("euler-angles", True, ()), "euler-angles"),
-    (("quaternion", False, ()), "quaternion"),
-    (("quaternion", True, ("gravity",)), "quaternion"),
-    (("quaternion", False, ("gravity",)), "quaternion"),
+    pytest.param(("quaternion", False, ()), "quaternion", marks=pytest.mark.slow),
+    pytest.param(("quaternion", True, ("gravity",)), "quaternion", marks=pytest.mark.slow),
+    (("quaternion", False, ("gravity",)), "quaternion"),  # (the most general: in make test)
 ]
 MOMENTS = {"I1": 1.3, "I2": 1.7, "I3": 0.6, "M": 0.9, "g": 1.1, "l": 0.7}
 
@@ -98,7 +99,7 @@ def _states(formulation, n, rng):
 
 @pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
 def test_baseline_rhs_agrees_with_the_generated_kernel(key, formulation):
-    from derive.sim.simulation import kernel_for
+    from derive.sim.derived import kernel_for
 
     kernel = kernel_for(*key)
     p = np.array([MOMENTS[n] for n in kernel.param_names])
@@ -124,7 +125,7 @@ def test_baseline_jacobian_is_the_derivative_of_its_rhs(key, formulation):
         J = np.array(jac_real(0.0, y))
         assert np.allclose(J, fd, rtol=1e-12, atol=1e-12 * np.max(np.abs(fd)))
     if formulation == "euler-angles" or "gravity" not in key[2]:
-        from derive.sim.simulation import kernel_for
+        from derive.sim.derived import kernel_for
 
         kernel = kernel_for(*key)
         p = np.array([MOMENTS[n] for n in kernel.param_names])
@@ -164,6 +165,7 @@ def test_scipy_baseline_reaches_the_exact_solution():
 # end to end
 
 
+@pytest.mark.slow  # the whole smoke bench (every part, every scene): `make test-slow`
 def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
     res = suite.main(out=tmp_path, quick=True, smoke=True, peers=False)
     report = (tmp_path / "report.md").read_text()

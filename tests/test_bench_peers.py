@@ -1,4 +1,4 @@
-"""heyoka and numbalsoda as contenders of `derive bench` (issue 20): they integrate the baselines'
+"""heyoka and numbalsoda as contenders of `derive bench`: they integrate the baselines'
 equations, land on the exact solution, and the races report finite ratios. Skipped where the
 peer is not installed (``pip install -e '.[peers]'``; numbalsoda needs a Fortran compiler).
 
@@ -139,3 +139,16 @@ def test_numbalsoda_equations_are_the_baselines_and_reach_the_exact_solution(for
     prob = bc.problem(data, formulation)
     Y, _ = bc.solve_numbalsoda(prob, "numbalsoda-dop853", 1e-10, 1e-12)
     assert bench.axis_error(prob.axis(Y), bench.exact_axis(data, prob.t)) < 1e-7
+
+
+def test_the_fixed_cost_race_times_a_repeat_and_new_numbers_and_reports_both():
+    from derive.bench import peers, report
+    from derive.bench.runner import SMOKE
+
+    out = peers.fixed_cost(SMOKE, [])
+    assert out["derive_prepared"] > 0 and out["derive_simulate"] > 0 and out["derive_simulate_new"] > 0
+    fake = dict(out, heyoka=1e-5, prepared_vs_heyoka=1.0, simulate_vs_heyoka=2.0, simulate_new_vs_heyoka=3.0)
+    text = "\n".join(report.peers_section({"targets": {"peers": {"peers": ["heyoka"], "fixed_cost": fake}}}))
+    assert "new numbers" in text and "**3×**" in text and "**2×**" in text
+    older = {k: v for k, v in fake.items() if "new" not in k}  # results of an older bench
+    assert "new numbers" not in "\n".join(report.peers_section({"targets": {"peers": {"fixed_cost": older}}}))

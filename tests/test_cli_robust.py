@@ -220,13 +220,13 @@ def test_keyboard_interrupt_in_process_is_exit_130(tmp_path, monkeypatch):
 
 
 def test_keyboard_interrupt_while_writing_removes_the_temporaries(tmp_path, monkeypatch):
-    from derive.sim import plots
+    from derive.sim import simulation
 
     def interrupted(res, fh, *a, **k):
         fh.write(b"\x89PNG half")
         raise KeyboardInterrupt
 
-    monkeypatch.setattr(plots, "plot_result", interrupted)
+    monkeypatch.setattr(simulation, "plot_result", interrupted)  # (what write_outputs calls)
     scene = tmp_path / "scene.toml"
     scene.write_text(toml(TOP))
     old = tmp_path / "out.npz"

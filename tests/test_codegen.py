@@ -161,7 +161,7 @@ def test_rigid_body_matches_heavy_top_physics():
     model's, mapped through ω̃ = B(q) q̇ (finite state set; exact same physics, other route)."""
     import sympy as sp
     from derive.symbolic.rotations import ANGLES, RATES, ZYZ
-    from derive.sim.simulation import _quaternion
+    from derive.sim.derived import _quaternion
 
     rb = CModel("rigid_body")
     ht = CModel("heavy_top")

@@ -1,6 +1,6 @@
 """The integrable cases: classification from numbers (with near misses), each integral proved
 along the derived Euler–Poisson equations (with controls that fail), the numeric evaluators,
-and the issue's Kovalevskaya target through `derive.simulate`."""
+and the Kovalevskaya target through `derive.simulate`."""
 from __future__ import annotations
 
 import math
@@ -181,7 +181,7 @@ def test_integrals_for():
 
 
 # ---------------------------------------------------------------------------------------------
-# the issue's target: Kovalevskaya top over t in [0, 200] at rtol 1e-12
+# the target: Kovalevskaya top over t in [0, 200] at rtol 1e-12
 
 
 def _drifts(I3: float):

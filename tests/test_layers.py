@@ -118,22 +118,3 @@ def test_nothing_outside_the_bench_imports_it_but_the_command_line():
     users = sorted(m for m, deps in graph.items() if not m.startswith("derive.bench")
                    and any(d.startswith("derive.bench") for d in deps))
     assert users == ["derive.cli"]
-
-
-def test_old_module_paths_still_import_and_name_the_new_place():
-    code = ("import warnings, json; warnings.simplefilter('always'); "
-            "from warnings import catch_warnings\n"
-            "with catch_warnings(record=True) as w:\n"
-            "    warnings.simplefilter('always')\n"
-            "    import derive.simulation as s, derive.scene as sc\n"
-            "    from derive import cbuild\n"
-            "import derive.sim.simulation, derive.sim.scene\n"
-            "print(json.dumps([s is derive.sim.simulation, sc is derive.sim.scene, cbuild.__name__,"
-            " [str(x.message) for x in w]]))")
-    r = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True, text=True, timeout=60)
-    assert r.returncode == 0, r.stderr
-    import json
-
-    same_sim, same_scene, cbuild, messages = json.loads(r.stdout)
-    assert same_sim and same_scene and cbuild == "derive.runtime.cbuild"
-    assert any("derive.simulation has moved to derive.sim.simulation" in m for m in messages)

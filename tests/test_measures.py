@@ -19,7 +19,8 @@ from derive.sweeps import measures as ms
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.errors import SceneError
 from derive.codegen.render import CHECKOUT, GENERATED
-from derive.sweeps.engine import load, run_chunk
+from derive.sweeps.spec import load
+from derive.sweeps.tasks import run_chunk
 
 TOP = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,

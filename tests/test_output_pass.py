@@ -1,4 +1,4 @@
-"""The cost of each output sample (issue 20).
+"""The cost of each output sample.
 
 * ``<model>_observables_at``, the output map as one loop over the samples (the parameters'
   temporaries computed once), is ``<model>_observables`` sample by sample, bit for bit, for

@@ -183,7 +183,7 @@ def scene(tmp_path):
 
 
 def test_plot_into_a_directory_keeps_the_existing_output(tmp_path, scene):
-    """The issue's case: `-o old.npz --plot d` with d a directory replaced old.npz and left a
+    """`-o old.npz --plot d` with d a directory replaced old.npz and left a
     temporary behind."""
     old = tmp_path / "old.npz"
     old.write_text("old\n")
@@ -214,13 +214,13 @@ def test_bad_output_path_is_exit_2_before_the_run(tmp_path, scene, target, monke
 def test_failing_plot_after_the_npz_leaves_nothing(tmp_path, scene, monkeypatch):
     old = tmp_path / "out.npz"
     old.write_bytes(b"old")
-    from derive.sim import plots
+    from derive.sim import simulation
 
     def full(res, fh, *a, **k):
         fh.write(b"\x89PNG partial")
         raise OSError(errno.ENOSPC, "No space left on device")
 
-    monkeypatch.setattr(plots, "plot_result", full)
+    monkeypatch.setattr(simulation, "plot_result", full)  # (what write_outputs calls)
     rc, out, err = run("simulate", scene, "-o", old, "--plot", tmp_path / "out.png")
     assert rc == 2 and error_lines(err) == [
         f"error: {tmp_path / 'out.png'}: output: cannot write (no space left on device)"]

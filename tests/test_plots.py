@@ -254,7 +254,7 @@ def test_plot_result_writes_a_png(symmetric):
 
 @pytest.mark.parametrize("amplitude", [1e-12, 1e-5])
 def test_near_constant_series_print_in_full_without_offset(symmetric, amplitude):
-    # The example: β = 0.6435011088 + 1e-12 … printed by default as "1e-12+6.435011088e-1";
+    # β = 0.6435011088 + 1e-12 … printed by default as "1e-12+6.435011088e-1";
     # and a fast, nearly constant spin ω̃₃ = 500 + 1e-9 sin t on its own axis.
     import dataclasses
 

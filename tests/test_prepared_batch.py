@@ -7,7 +7,6 @@ import pytest
 
 import derive
 from derive.errors import IntegrationError, SceneError
-from derive.sim import batch
 from derive.symbolic.formulations import REGISTRY, starts_accepted
 from derive.sim.scene import load_scene
 
@@ -30,10 +29,9 @@ def variants(data: dict, betas, masses=None) -> list[dict]:
 
 
 def by_scene(scenes, outputs):
-    """The scene-by-scene batch (each dict read and checked), which ``derive.simulate_batch``
-    leaves for one prepared batch when the dicts are a family (derive.sim.prepared.family_batch):
-    the reference the prepared batch is held to."""
-    return batch.simulate_batch(scenes, outputs)
+    """The scene-by-scene batch (each dict read and checked): the reference the prepared batch
+    is held to."""
+    return derive.simulate_batch(scenes, outputs=outputs)
 
 
 def same(a, b) -> None:

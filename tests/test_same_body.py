@@ -1,5 +1,4 @@
-"""The same body gets the same model, and every init map takes the input it is given (issue 17,
-items 12 and 13; issue 18, item 6).
+"""The same body gets the same model, and every init map takes the input it is given.
 
 * Item 13: every shipped model's compiled ``<name>_init`` (the C ABI, called through ctypes on a
   library built from ``generated/c`` alone) starts from the Euler rates when rates_given = 1:

@@ -94,7 +94,7 @@ def test_t_out_spans_zero_to_t_end_inclusive():
 
 
 def test_damping_with_zero_coefficient_is_named_but_does_not_act():
-    """Issue 17, item 12: a zero term costs nothing (tests/test_same_body.py runs it)."""
+    """A zero term costs nothing (tests/test_same_body.py runs it)."""
     scene = load_scene(changed(("damping.c", 0)))
     assert "damping" in scene.named_effects and "damping" not in scene.effects
     assert scene.damping.c == 0.0  # the table stays readable

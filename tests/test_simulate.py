@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import derive
-from derive.sim import simulation
+from derive.sim import derived, result, simulation
 from derive.symbolic.formulations import REGISTRY
 from derive.codegen.render import ROOT
 
@@ -115,9 +115,9 @@ def test_euler_angles_at_the_pole_refuse_or_stay_right():
 
 def test_no_gravity_scene_gets_kernel_without_gravity_parameters():
     res = derive.simulate(top(gravity=None))
-    model = simulation.model_for(res.formulation, True, simulation.effect_names(res.scene))
+    model = derived.model_for(res.formulation, True, derived.effect_names(res.scene))
     assert not {"M", "g", "l"} & set(model.param_names)
-    assert "g" not in (simulation.kernel_for(res.formulation, True, ()).param_names)
+    assert "g" not in (derived.kernel_for(res.formulation, True, ()).param_names)
 
 
 @pytest.mark.parametrize("formulation", ["reduced", "quaternion", "euler-angles"])
@@ -265,7 +265,7 @@ def test_nonfinite_output_is_reported_by_the_compiled_check():
 
 
 def test_pole_loss_check_from_the_extremes_equals_the_rule_on_every_sample():
-    """simulation._check_pole reads only the smallest and largest canonical β (sin is concave
+    """result._check_pole reads only the smallest and largest canonical β (sin is concave
     on [0, π]); it must refuse exactly the trajectories whose smallest |sin β| over the samples
     has sin²β < eps/rtol, single and batched (_pole_suspects)."""
     from derive.runtime import catalogue
@@ -284,12 +284,12 @@ def test_pole_loss_check_from_the_extremes_equals_the_rule_on_every_sample():
         beta[rng.integers(t.size)], beta[rng.integers(t.size)] = lo, hi
         want = float(np.min(np.abs(np.sin(beta)))) ** 2 < eps / rtol
         try:
-            simulation._check_pole(desc, t, beta, rtol)
+            result._check_pole(desc, t, beta, rtol)
             got = False
         except IntegrationError:
             got = True
         assert got == want, (lo, hi)
         rows.append(beta)
         refused.append(want)
-    suspects = simulation._pole_suspects(desc, np.array(rows), rtol)
+    suspects = result._pole_suspects(desc, np.array(rows), rtol)
     assert (suspects == np.array(refused)).all() and any(refused) and not all(refused)

@@ -1,4 +1,4 @@
-"""Parameter sweeps (derive.sweeps.engine) and the measures computed in the compiled loop (derive.sweeps.measures)."""
+"""Parameter sweeps (derive.sweeps) and the measures computed in the compiled loop (derive.sweeps.measures)."""
 from __future__ import annotations
 
 import math
@@ -14,7 +14,7 @@ from derive.runtime import catalogue
 from derive.errors import SceneError
 from derive.reference.exact import heavy_top
 from derive.sweeps.measures import REGISTRY, MeasureKernel, c_sources
-from derive.sweeps.engine import load
+from derive.sweeps.spec import load
 
 REF = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
        "initial": {"alpha": 0.0, "beta": 0.8, "gamma": 0.0, "alpha_dot": -0.4, "beta_dot": 0.3,
@@ -278,7 +278,7 @@ def test_threads_sharing_a_library_get_their_own_trajectories():
     with several threads) are serialised and give the single-threaded numbers."""
     from concurrent.futures import ThreadPoolExecutor
 
-    from derive.sweeps.engine import run_chunk
+    from derive.sweeps.tasks import run_chunk
 
     sp = load({"scene": REF, "random": {"n": 40, "seed": 5, "initial": {"beta": {"low": 0.3, "high": 1.2}}}})
     from derive.sweeps.measures import config_of

@@ -1,4 +1,4 @@
-"""Sweeps on auto's formulations per point (derive.sweeps.engine.sweep_plan): reduced-u where its
+"""Sweeps on auto's formulations per point (derive.sweeps.plan.sweep_plan): reduced-u where its
 compiled pole check takes the start, euler-poisson for the starts it refuses, with measures of
 the same meaning whichever ran a point."""
 from __future__ import annotations
@@ -13,7 +13,9 @@ from derive.methods.status import Status
 from derive.reference.exact import heavy_top
 from derive.runtime import catalogue
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, run_chunk, sweep_plan
+from derive.sweeps.spec import load
+from derive.sweeps.tasks import run_chunk
+from derive.sweeps.plan import sweep_plan
 from derive.symbolic.formulations import REDUCED_U_CLEARANCE
 
 REF = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
@@ -46,7 +48,7 @@ def test_the_plan_is_reduced_u_then_euler_poisson():
     assert sp.key[0] == "reduced-u" and sp.pole_check == 1
     assert [(k[0], c) for k, c, _ in sp.fallback] == [("euler-poisson", 0)]
     # named, a formulation without a singular set runs alone, as before
-    # one method per sweep (auto's for the first candidate, derive.sweeps.engine.load): the
+    # one method per sweep (auto's for the first candidate, derive.sweeps.spec.load): the
     # sweep naming euler-poisson names that method too
     method = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}}).method
     named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson", "method": method}}
@@ -100,7 +102,7 @@ def test_a_point_refused_by_reduced_u_runs_as_euler_poisson_would_alone(swept):
     """The fallback is per point: a refused point's numbers are those of a sweep that names
     euler-poisson, bit for bit, and the reduced-u points those of one naming reduced-u's
     candidate alone; the refusal itself is the compiled check's status RANGE."""
-    # one method per sweep (auto's for the first candidate, derive.sweeps.engine.load): the
+    # one method per sweep (auto's for the first candidate, derive.sweeps.spec.load): the
     # sweep naming euler-poisson names that method too
     method = load({"scene": REF, "vary": {"initial": {"beta": {"values": BETAS}}}}).method
     named = {**REF, "simulate": {**REF["simulate"], "formulation": "euler-poisson", "method": method}}

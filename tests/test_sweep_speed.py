@@ -14,7 +14,8 @@ import pytest
 from derive.bench.reference import reference_data
 from derive.runtime import catalogue
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, run_chunk
+from derive.sweeps.spec import load
+from derive.sweeps.tasks import run_chunk
 
 ALL = ["beta_max", "beta_min", "nutation", "energy_drift", "p_alpha_drift", "p_gamma_drift",
        "flips", "time_to_flip", "time_to_tilt", "integral_drift", "final_state", "nfev"]
@@ -128,9 +129,9 @@ def test_values_recorded_before_the_step_ends_read_each_output_alone():
 def test_loading_a_sweep_changes_neither_the_given_scene_nor_the_base():
     """The points' scenes (each varied value checked against the contract, the representative
     point) are shallow copies of the base scene with the changed tables copied
-    (derive.sweeps.engine._set): neither the caller's dict nor the base scene is touched, a
+    (derive.sweeps.points._set): neither the caller's dict nor the base scene is touched, a
     vector key and a user term's parameter included."""
-    from derive.sweeps.engine import _set
+    from derive.sweeps.points import _set
 
     base = reference_data(2.0)
     base["simulate"] = {"t_end": 2.0}

@@ -20,7 +20,8 @@ from derive.reference.exact import heavy_top
 from derive.runtime import catalogue
 from derive.sim.plan import auto_method
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, measuring_methods
+from derive.sweeps.spec import load
+from derive.sweeps.plan import measuring_methods
 
 TIGHT = {"rtol": 1e-12, "atol": 1e-14}
 #: The tennis racket (intermediate axis 2, spun about it with a small perturbation omega1): it
@@ -252,7 +253,7 @@ def test_the_series_window_compiles_under_the_strict_flags(tmp_path):
     unit = tmp_path / "unit.c"
     unit.write_text("".join(f'#include "{n}"\n' for n in (
         f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_taylor.c", f"{desc.name}_measures.c")))
-    # as derive.measures builds it: one method per library
+    # as derive.sweeps.measures builds it: one method per library
     p = subprocess.run([gcc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c",
                         "-o", str(tmp_path / "unit.o"), "-DDERIVE_MEASURES", "-DDERIVE_SELECT",
                         "-DDERIVE_WITH_TAYLOR", str(unit)],

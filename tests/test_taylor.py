@@ -1,4 +1,4 @@
-"""The Taylor method (issue 20 item 1): recurrences generated from the model's expression graph.
+"""The Taylor method: recurrences generated from the model's expression graph.
 
 References, none of them derive's own recurrences:
 
@@ -465,7 +465,7 @@ def test_a_sweep_file_naming_taylor_runs_it(tmp_path):
     spec.write_text(body.replace("[scene.simulate]", '[scene.simulate]\nmethod = "taylor"')
                     + '\n[vary]\ninitial.beta = { from = 0.1, to = 0.2, num = 2 }\n'
                     + '[measure]\nnames = ["beta_max", "nfev"]\n')
-    from derive.sweeps.engine import load
+    from derive.sweeps.spec import load
 
     assert load(str(spec)).method == "taylor"
     res = derive.sweep(str(spec), processes=1)

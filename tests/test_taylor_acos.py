@@ -1,4 +1,4 @@
-"""The Taylor solvers' own acos (issue 20): ``derive_acos_poly`` (templates/c/libm.h.j2),
+"""The Taylor solvers' own acos: ``derive_acos_poly`` (templates/c/libm.h.j2),
 fdlibm's e_acos.c by arithmetic alone with its branches chosen on the bits, so that the output
 map's loop over a block of samples vectorises (``<prefix>outputs_block``). Compiled here in a
 small C harness that includes the generated solver of ``reduced_u_sym_gravity`` (β = acos u is
@@ -113,6 +113,7 @@ def test_acos_outside_its_domain_is_nan(tmp_path):
     assert np.isnan(r).all()
 
 
+@pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
 def test_acos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native; its last samples must be the
     scalar driver's to the bit."""

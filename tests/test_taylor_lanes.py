@@ -1,4 +1,4 @@
-"""The Taylor method's lanes driver (issue 20, "Batches"): ``<model>_simulate_lanes_batch_taylor``
+"""The Taylor method's lanes driver: ``<model>_simulate_lanes_batch_taylor``
 runs W trajectories at once (W from the CPU it was built for: ``-march=native``), every lane its
 own steps. Each trajectory's state, outputs, status and statistics are the scalar final-only
 driver's (built with the default flags) bit for bit, failing lanes included, and
@@ -12,7 +12,7 @@ import pytest
 import derive
 from derive.methods.status import Status
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 
 BASE = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
@@ -31,7 +31,7 @@ def scenes(n, seed=3, **simulate):
 def kernels(sc, formulation):
     """(plan, description, scalar kernel (the portable build), lanes kernel, driver arguments,
     pole check) of a batch of scenes."""
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     desc, _, args = bp.kernel(formulation)
     pole = dict(bp.candidates).get(formulation, 0)
     return (bp, desc, ModelKernel.load(desc, bp.method, "portable"), ModelKernel.load(desc, bp.method, "lanes"),
@@ -95,7 +95,7 @@ def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit():
     the products and quotients also as sums side by side in one loop (derive.codegen.taylor
     ._fused)."""
     sc = [{**RULES, "initial": d["initial"]} for d in scenes(11)]
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     formulation, pole = bp.candidates[0]
     desc, _, args = bp.kernel(formulation)
     source = desc.c_sources()[f"{desc.name}_taylor.c"]
@@ -296,7 +296,7 @@ def test_the_width_is_the_cpus():
     assert scalar.lanes <= native.lanes
 
 
-@pytest.mark.parametrize("formulation", ["quaternion", "reduced-u"])
+@pytest.mark.parametrize("formulation", [pytest.param("quaternion", marks=pytest.mark.slow), "reduced-u"])
 def test_the_avx2_width_is_bit_for_bit_too(formulation):
     """W = 4 (AVX, here AVX2 with FMA instructions available) on a CPU that would build 8: the
     lanes' library built with the lanes' flags but -mavx2 -mfma instead of -march=native gives the
@@ -322,7 +322,7 @@ def test_the_vector_build_is_the_portable_one_bit_for_bit(formulation):
     over a step's block of samples); every sample's outputs, the states, the parameters and the
     statistics are the portable build's bit for bit (samples many to a step: blocks of 16)."""
     sc = scenes(6, samples=401, formulation=formulation)
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     desc, kernel, args = bp.kernel(formulation)
     pole = dict(bp.candidates).get(formulation, 0)
     vector = ModelKernel.load(desc, bp.method, "vector")

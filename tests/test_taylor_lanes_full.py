@@ -1,4 +1,4 @@
-"""The Taylor method's full-grid lanes driver (issue 20, "Batches"):
+"""The Taylor method's full-grid lanes driver:
 ``<model>_simulate_lanes_full_batch_taylor`` runs W trajectories at once with every sample, each
 lane its own steps, each step's samples made by the scalar solver's own dense output from the
 lane's series (kept a few steps and then made together). Each trajectory's states, outputs,
@@ -12,7 +12,7 @@ import derive
 from derive.methods.status import Status
 from derive.runtime import integrate
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 from tests.test_taylor_lanes import RULES, _lanes_library, kernels, same, scenes, spread
 
@@ -23,8 +23,9 @@ def full(kernel, inputs, ps, t, args, pole, lanes):
     return kernel.simulate_batch(inputs, ps, t, args, pole, lanes=lanes)
 
 
-@pytest.mark.parametrize("samples", [21, 401])
-@pytest.mark.parametrize("formulation", FORMULATIONS)
+@pytest.mark.parametrize("samples", [21, pytest.param(401, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("formulation", [f if f in ("quaternion", "reduced-u", "reduced") else
+                                         pytest.param(f, marks=pytest.mark.slow) for f in FORMULATIONS])
 def test_the_full_lanes_are_the_scalar_full_driver_bit_for_bit(formulation, samples):
     """Over 3 s, 21 samples (steps without one) or 401 (a dozen and more in a step), a ragged
     last group (13 trajectories), this CPU's width and the baseline's."""
@@ -42,12 +43,13 @@ def test_the_full_lanes_are_the_scalar_full_driver_bit_for_bit(formulation, samp
     same(want, full(baseline, bp.inputs, ps, bp.t, args, pole, True))
 
 
+@pytest.mark.slow  # (the rules in the lanes: test_taylor_lanes.py; the full driver: above)
 def test_every_rule_and_the_outputs_series_in_the_full_lanes():
     """A user body whose jet has every rule, and whose outputs have series of their own (the
     nodes a lane copies out for the dense output beyond the states)."""
     sc = [{**RULES, "initial": d["initial"], "simulate": {**RULES["simulate"], "samples": 101}}
           for d in scenes(11)]
-    bp = simulation.batch_plan(sc)
+    bp = batch.batch_plan(sc)
     formulation, pole = bp.candidates[0]
     desc, _, args = bp.kernel(formulation)
     scalar, native = (ModelKernel.load(desc, bp.method, b) for b in ("portable", "lanes"))
@@ -154,7 +156,7 @@ def test_simulate_batch_runs_the_full_lanes_for_the_taylor_method(monkeypatch):
             assert np.array_equal(getattr(a, name), getattr(b, name)), name
         assert np.array_equal(a.state, b.state) and a.nfev == b.nfev
     monkeypatch.undo()
-    kernel = simulation.batch_plan(sc).kernel("reduced-u")[1]
+    kernel = batch.batch_plan(sc).kernel("reduced-u")[1]
     assert integrate.LANES_MIN == 8
     assert kernel.full_lanes(7) is None and kernel.full_lanes(8).has_lanes_full
 

@@ -1,4 +1,4 @@
-"""The Taylor method's outputs from the series (issue 20): the model's output map is part of the
+"""The Taylor method's outputs from the series: the model's output map is part of the
 Taylor decomposition, and the whole-simulation driver evaluates every output at every sample
 from its own series (Horner), not by the output map on the evaluated state.
 

@@ -1,4 +1,4 @@
-"""The passes after a solve over its output arrays (issue 20), fast on the usual samples and
+"""The passes after a solve over its output arrays, fast on the usual samples and
 the rule's own numbers on all: ``<prefix>canonical_angles`` (templates/c/solvers.c.j2) skips
 the chunks of 16 samples that ``<prefix>angles_usual`` finds it would leave as they are (a
 vectorised test on the bits), and runs the rule on the others.

@@ -1,4 +1,4 @@
-"""The Taylor solvers' sin and cos of the cyclic angles (issue 20): ``derive_sincos_poly``
+"""The Taylor solvers' sin and cos of the cyclic angles: ``derive_sincos_poly``
 (templates/c/libm.h.j2), arithmetic alone so that a block of samples vectorises, with libm
 beyond its range. Compiled here in a small C harness that includes the generated solver of
 ``reduced_u_sym_gravity`` (its α and γ are such angles) and calls its block routine.
@@ -106,6 +106,7 @@ def test_sincos_beyond_its_range_is_libm(tmp_path):
     np.testing.assert_array_equal(r[:, 1], c)
 
 
+@pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
 def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
     """The lanes driver's library is built with -march=native: its last samples must be the
     scalar driver's to the bit, so the same arithmetic vectorised wider gives the same bits."""

@@ -1,4 +1,4 @@
-"""Your own body (issue 18, part 1): potentials and torques written in the scene.
+"""Your own body: potentials and torques written in the scene.
 
 The references are independent: the equations of motion written out here by hand (L̇ = τ in the
 inertial frame, ṅ = n × ω̃, the dipole's torque m × B) and integrated with SciPy, or closed forms;
@@ -293,7 +293,8 @@ def test_a_batch_of_one_user_body_equals_its_single_runs():
 def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
     """A sweep over potential.magnet.mu: each point's largest tilt (the sweep's dense output)
     is that of derive.simulate with the same mu, sampled finely, and differs between points."""
-    from derive.sweeps.engine import load, sweep
+    from derive.sweeps.spec import load
+    from derive.sweeps.engine import sweep
 
     base = scene(potential=[magnet("-mu*B*R13", mu=0.2, B=1.5)],
                  simulate={"t_end": 2.0, "samples": 2})
@@ -419,21 +420,26 @@ def test_the_figure_of_a_driven_body_does_not_call_its_energy_change_an_error():
 
 def test_a_warm_run_of_a_user_body_imports_no_sympy(tmp_path):
     """Validation reads the expressions with ast alone; the model comes from the compile
-    cache: a second process runs the body without SymPy."""
+    cache: a second process runs the body without SymPy. Both processes use a cache of this
+    test's own, so that nothing another test does to the shared cache can change the second
+    run's path."""
     import json
+    import os
     import subprocess
     import sys
 
     sc = scene(potential=[magnet()], torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
                                               "params": {"A": 0.01, "w": 3.0}}])
-    derive.simulate(sc, formulation="quaternion")  # derived and cached here if it was not
     code = ("import json, sys, derive; "
-            f"derive.simulate(json.loads({json.dumps(json.dumps(sc))}), formulation='quaternion'); "
+            "derive.simulate(json.loads(sys.argv[1]), formulation='quaternion'); "
             "print([m for m in ('sympy', 'jinja2') if m in sys.modules])")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=120)
-    assert out.returncode == 0, out.stderr
-    assert out.stdout.strip() == "[]"
+    env = dict(os.environ, DERIVE_CACHE=str(tmp_path / "cache"))
+    runs = [subprocess.run([sys.executable, "-c", code, json.dumps(sc)], capture_output=True, text=True,
+                           env=env, timeout=300) for _ in range(2)]
+    for out in runs:
+        assert out.returncode == 0, out.stderr
+    assert "sympy" in runs[0].stdout  # the first derived it (with SymPy) ...
+    assert runs[1].stdout.strip() == "[]", runs[1].stderr  # ... the second did not
 
 
 def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
@@ -441,7 +447,8 @@ def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():
     task carries the terms and registers them before it loads the model."""
     from derive.runtime import catalogue
     from derive.sweeps import measures as ms
-    from derive.sweeps.engine import load, run_chunk
+    from derive.sweeps.spec import load
+    from derive.sweeps.tasks import run_chunk
     from derive.symbolic import effects
 
     base = scene(potential=[magnet("-mu*B*R13", mu=0.2, B=1.5)],

@@ -114,6 +114,7 @@ def _share(f, target):
     return {"checked": f.checked_share, "found": f.found_share, "false": f.false_share}[target]
 
 
+@pytest.mark.slow  # (every text of the corpus read and checked: minutes)
 @pytest.mark.parametrize("target", ["checked", "found", "false"])
 @pytest.mark.parametrize("slug", TEXTS)
 def test_the_reader_meets_its_targets_on_a_text(figures, slug, target, request):
@@ -126,6 +127,7 @@ def test_the_reader_meets_its_targets_on_a_text(figures, slug, target, request):
         assert _share(f, target) >= TARGETS[target], (f.checked, f.checkable, f.slips_flagged, f.slips, f.missed)
 
 
+@pytest.mark.slow  # (every text of the corpus read and checked: minutes)
 def test_the_corpus_totals_do_not_fall(figures):
     total = {k: sum(getattr(f, k) for f in figures.values()) for k in FLOOR}
     print("\n" + measure.table(list(figures.values())))

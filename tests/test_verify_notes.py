@@ -7,8 +7,6 @@ both check. Our own notes (tests/notes/) hold as written; one planted error at a
 """
 import json
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -45,13 +43,15 @@ def test_front_matter_is_whitelisted(text, key):
         nt.parse_notes(text, "n.md")
 
 
-def test_unreadable_file_is_exit_2_one_line(tmp_path):
+def test_unreadable_file_is_exit_2_one_line(tmp_path, capsys):
+    from derive.cli import main
+
     bad = tmp_path / "bad.md"
     bad.write_bytes(b"\xff\xfe$$x$$")
     for path in (bad, tmp_path / "missing.md", tmp_path):
-        r = subprocess.run([sys.executable, "-m", "derive", "verify", str(path)], capture_output=True, text=True)
-        assert r.returncode == 2, r.stderr
-        assert r.stdout == "" and r.stderr.count("\n") == 1 and r.stderr.startswith(f"error: {path}: file: ")
+        assert main(["verify", str(path)]) == 2
+        out, err = capsys.readouterr()
+        assert out == "" and err.count("\n") == 1 and err.startswith(f"error: {path}: file: "), err
 
 
 # ---- the LaTeX layer ----------------------------------------------------------------------------

@@ -135,6 +135,7 @@ def test_console_script_simulates_a_scene_from_an_empty_directory(venv, empty):
     assert (empty / "out.npz").stat().st_size > 0
 
 
+@pytest.mark.slow  # verify derives with SymPy in the installed wheel: `make test-slow`
 def test_version_and_verify_work_installed(venv, empty):
     r = _run([str(venv / "bin" / "derive"), "--version"], cwd=empty)
     assert r.returncode == 0 and r.stdout.strip() == f"derive {derive.__version__}", r.stdout + r.stderr

@@ -1,4 +1,4 @@
-"""Does ``method = "auto"`` pick the faster method? (issue 20, item 5; a report of ``derive bench``)
+"""Does ``method = "auto"`` pick the faster method? (a report of ``derive bench``)
 
 For a few example scenes of different shapes (the reference heavy top at its 1001 samples and at
 11, an off-axis asymmetric top, a damped top, the tennis racket) and each tolerance of
@@ -14,8 +14,9 @@ from __future__ import annotations
 import tomllib
 import warnings
 
-from derive.bench import runner as B
+from derive.bench import timing
 from derive.sim import examples
+import derive
 
 #: The tolerances raced (atol = rtol / 100, as the scenes' defaults relate them).
 LEVELS = (1e-6, 1e-8, 1e-10, 1e-12)
@@ -39,8 +40,6 @@ def bench_auto_choice(levels=LEVELS, scenes=SCENES, blocks: int = 5) -> dict:
     """Rows ``{scene, rtol, chose, faster, dop853, taylor, auto, auto_over_best}`` (times in s
     per prepared run) and ``right``: how many rows auto chose the faster method, or one within
     10 % of it (a tie)."""
-    import derive
-
     rows = []
     for label, name, extra in scenes:
         with open(examples.path(name), "rb") as fh:
@@ -51,7 +50,7 @@ def bench_auto_choice(levels=LEVELS, scenes=SCENES, blocks: int = 5) -> dict:
                 prepared = {m: derive.prepare(_variant(data, m, rtol, extra))
                             for m in ("dop853", "taylor", "auto")}
                 fns = [prepared[m].run for m in ("dop853", "taylor", "auto")]
-                t_d, t_t, t_a = B.interleaved(fns, 0, blocks=blocks, counts=B.block_counts(fns, most=5_000))
+                t_d, t_t, t_a = timing.interleaved(fns, 0, blocks=blocks, counts=timing.block_counts(fns, most=5_000))
             best = min(t_d, t_t)
             rows.append({"scene": label, "rtol": rtol, "chose": prepared["auto"].plan.method,
                          "faster": "dop853" if t_d <= t_t else "taylor", "dop853": t_d,

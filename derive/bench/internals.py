@@ -22,6 +22,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from derive.runtime import catalogue
+from derive.runtime.integrate import ModelKernel
+from derive.sim import auto, batch, derived
+from derive.sim.inputs import _settings, choose_method, inputs_of, params_of
+from derive.sim.scene import load_scene
+from derive.symbolic import models
+
 
 @dataclass
 class KernelCase:
@@ -40,14 +47,12 @@ class KernelCase:
 
 def kernel_case(scene, formulation: str | None = None, **overrides) -> KernelCase:
     """The kernel `simulate` would run for ``scene`` (path or dict), with its inputs."""
-    from derive.sim import simulation as sim
-    from derive.sim.scene import load_scene
 
     sc = load_scene(scene, **overrides)
-    form = formulation or sim.choose_formulation(sc)
-    key = (form, sc.symmetric, sim.effect_names(sc))
-    model = sim.model_for(*key)
-    return KernelCase(sim.kernel_for(*key), form, sim._initial_state(sc, model), sim._params(sc, model),
+    form = formulation or derived.choose_formulation(sc)
+    key = (form, sc.symmetric, derived.effect_names(sc))
+    model = derived.model_for(*key)
+    return KernelCase(derived.kernel_for(*key), form, derived._initial_state(sc, model), derived._params(sc, model),
                       sc.t_out, sc.simulate.rtol, sc.simulate.atol)
 
 
@@ -63,13 +68,12 @@ def own_batch_call(scenes):
     """A callable making the one C call ``simulate_batch`` makes for ``scenes`` (state maps,
     integration and outputs of every scene), its inputs prepared beforehand: what
     ``simulate_batch`` costs without its Python. The batch's own plan
-    (:func:`derive.sim.simulation.batch_plan`: its method, first formulation, inputs and
+    (:func:`derive.sim.batch.batch_plan`: its method, first formulation, inputs and
     parameters) and its driver: a Taylor method's full-grid lanes where the batch takes them
     (:meth:`ModelKernel.full_lanes`). (This took the method of the first scene alone before:
     DOP853 where the batch ran Taylor.)"""
-    from derive.sim import simulation as sim
 
-    bp = sim.batch_plan(scenes)
+    bp = batch.batch_plan(scenes)
     formulation, pole_check = bp.candidates[0]
     desc, kernel, args = bp.kernel(formulation)
     inputs, ps, t = bp.inputs, bp.params(desc), bp.t
@@ -83,27 +87,21 @@ def output_map_call(scene):
     """A callable running the compiled output map (``<model>_outputs_at``: every output at every
     sample) on the states ``simulate`` integrated for ``scene``: what of ``simulate``'s C call is
     not the integration."""
-    from derive.sim import auto
-    from derive.runtime import catalogue
-    from derive.sim import simulation as sim
-    from derive.runtime.integrate import ModelKernel
-    from derive.sim.scene import load_scene
 
     sc = load_scene(scene)
     formulation, pole_check = auto.plan(sc)[0]
     desc = catalogue.describe((formulation, sc.symmetric, sc.effects))
-    method = sim.choose_method(sc)
+    method = choose_method(sc)
     kernel = ModelKernel.load(desc, method)
     t = sc.t_out
-    _, y, p, _ = kernel.simulate(sim.inputs_of(sc), sim.params_of(sc, desc), t,
-                                 sim._settings(sc, method, kernel), pole_check)
+    _, y, p, _ = kernel.simulate(inputs_of(sc), params_of(sc, desc), t,
+                                 _settings(sc, method, kernel), pole_check)
     y, p = y.copy(), p.copy()
     return lambda: kernel.outputs_at(t, y, p)
 
 
 def heavy_top_expressions():
     """(states, params, rhs) of the contract's heavy top (generated/c/heavy_top.c) as SymPy."""
-    from derive.symbolic import models
 
     m = models.CATALOGUE["heavy_top"]()
     return tuple(m.states), tuple(m.params), tuple(m.rhs)
@@ -116,12 +114,12 @@ DERIVE_SCRIPT = r"""
 import json, sys, time
 arg = sys.argv[1]
 scene = json.loads(arg) if arg.startswith("{") else arg
-from derive.sim import simulation as sim
+from derive.sim import derived
 from derive.sim.scene import load_scene
 sc = load_scene(scene)
-key = (sim.choose_formulation(sc), sc.symmetric, sim.effect_names(sc))
-a = time.perf_counter(); sim.model_for(*key)
-b = time.perf_counter(); sim.sources_for(*key)
+key = (derived.choose_formulation(sc), sc.symmetric, derived.effect_names(sc))
+a = time.perf_counter(); derived.model_for(*key)
+b = time.perf_counter(); derived.sources_for(*key)
 c = time.perf_counter()
 print(json.dumps({"derivation": b - a, "codegen": c - b}))
 """

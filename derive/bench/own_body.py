@@ -1,4 +1,4 @@
-"""Issue 18's targets for user terms (``[[potential]]``, ``[[torque]]``), measured in `derive bench`.
+"""The targets for user terms (``[[potential]]``, ``[[torque]]``), measured in `derive bench`.
 
 * ``own_first_run``: seconds of the first ``derive.simulate`` of a new user body (derive with
   SymPy, generate, compile, run) in a fresh process with an empty ``DERIVE_CACHE``; goal ≤ 3 s.
@@ -18,6 +18,7 @@ import tempfile
 import timeit
 
 import numpy as np
+import derive
 
 #: The body of the measurements: a symmetric top at 1 rad, spinning, for 20 s.
 BASE = {
@@ -53,8 +54,6 @@ def scenes() -> tuple[dict, dict, dict]:
 
 def bench_own_body(repeats: int = 5, number: int = 20) -> dict:
     """The three measurements of the module docstring."""
-    import derive
-
     gravity, restated, new = scenes()
     out = {}
     with tempfile.TemporaryDirectory(prefix="derive-bench-own-") as tmp:

@@ -1,4 +1,4 @@
-"""Issue 20's races against the two peers a user can ``pip install`` that beat derive: heyoka
+"""The races against the two peers a user can ``pip install`` that beat derive: heyoka
 (LLVM-compiled Taylor method of adaptive order) and numbalsoda (Hairer's DOP853 in C++ on a
 numba ``cfunc`` right-hand side), each raced when it imports (:mod:`derive.bench.contenders`).
 
@@ -37,9 +37,11 @@ import numpy as np
 
 from derive.bench import contenders as bc
 from derive.bench import runner as B
+from derive.bench import timing
 from derive.bench.reference import reference_data
+import derive
 
-#: The peers of issue 20 and the contender method each runs.
+#: The peers and the contender method each runs.
 PEERS = {"heyoka": "heyoka-taylor", "numbalsoda": "numbalsoda-dop853"}
 
 
@@ -59,8 +61,6 @@ def _peer_error(fam: str, prob: bc.Problem, ref: np.ndarray, rtol: float):
 def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
     """derive against each installed peer at equal error on the reference scene over
     [0, ``t_end``] (1001 samples), at each error level of ``levels``."""
-    import derive
-
     data = reference_data(t_end)
     t = np.linspace(0.0, t_end, data["simulate"]["samples"])
     ref = B.exact_axis(data, t)
@@ -96,8 +96,8 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
                     with_axis = lambda theirs=theirs: prob.axis(theirs()[0])  # noqa: E731
                     fns = [theirs, sim, run, with_axis]
                     (entry["time"], entry["derive_simulate"], entry["derive_prepared"],
-                     entry["time_with_axis"]) = B.interleaved(
-                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=B.block_counts(fns))
+                     entry["time_with_axis"]) = timing.interleaved(
+                        fns, 0, blocks=max(3, cfg.ref_repeats), counts=timing.block_counts(fns))
                     entry["ratio_simulate"] = entry["derive_simulate"] / entry["time"]
                     entry["ratio_prepared"] = entry["derive_prepared"] / entry["time"]
                     entry["ratio_prepared_with_axis"] = entry["derive_prepared"] / entry["time_with_axis"]
@@ -163,8 +163,6 @@ def heyoka_batch(prob: bc.Problem, probs: list[bc.Problem], tol: float):
 def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     """``derive.simulate_batch`` over ``scenes`` (variants of the reference scene) against
     heyoka's batch mode, per trajectory, timed in turns (best of a few rounds each)."""
-    import derive
-
     if "heyoka" not in fams:
         return {"skipped": "heyoka not installed"}
     data = dict(scenes[0])
@@ -195,7 +193,7 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
         ny = len(prob.y0)
         fns["heyoka_grid_axis"] = lambda: prob.axis(grid_run().reshape(-1, ny))
     results = {k: fn() for k, fn in fns.items()}  # warm: compile, JIT, first touch
-    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     out = {"n": n, "t_end": float(t[-1]), "samples": len(t), "rtol": rtol, "derive_error": target,
            "heyoka_tol": m["rtol"], "heyoka_error": m["error"], "heyoka_reached": m["reached"], "lanes": width,
@@ -223,8 +221,6 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     """The Taylor method's final-only batch (its lanes driver, W trajectories at once) against
     heyoka's final-only batch at the error the Taylor method makes on the reference scene (a
     tighter one than the scenes' own method's: heyoka is matched to it anew), timed in turns."""
-    import derive
-
     taylor = [dict(d, simulate=dict(d["simulate"], method="taylor")) for d in scenes]
     target, _ = _derive_error(taylor[0], ref, rtol)
     m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
@@ -235,7 +231,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
            "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
     final_run()
-    best = B.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if len(scenes) >= 500 else 5)
     n = len(scenes)
     return {"lanes_driver": ran.driver, "lanes_derive_error": target, "lanes_heyoka_tol": m["rtol"],
             "lanes_heyoka_error": m["error"], "derive_lanes_per_trajectory": best["derive"] / n,
@@ -249,8 +245,6 @@ def _prepared_batch(scenes: list[dict]):
     """(the first scene prepared, {initial key: array over the scenes}) for the keys of
     ``[initial]`` that differ among them: ``Prepared.run_batch``'s arguments for the same
     trajectories (the scenes differ only there: :func:`derive.bench.targets.batch_scenes`)."""
-    import derive
-
     first = scenes[0]["initial"]
     varying = [k for k in first if any(d["initial"][k] != first[k] for d in scenes)]
     return (derive.prepare(scenes[0]),
@@ -259,22 +253,17 @@ def _prepared_batch(scenes: list[dict]):
 
 def fixed_cost(cfg, fams: list[str]) -> dict:
     """The cost of one short call (t_end = 1e-3, 2 samples, rtol 1e-10): derive's prepared run,
-    ``derive.simulate(dict)`` of the same scene again (``derive_simulate``: its plan kept by
-    :func:`derive.sim.plan.recent`) and of a scene with new numbers every call
-    (``derive_simulate_new``: validated, planned and set up anew; the scenes cycle through four
-    times as many as the memo keeps), against the peers' calls, timed in turns."""
-    import derive
-    from derive.sim.plan import MEMO_SIZE
-
+    ``derive.simulate(dict)`` of the same scene again (``derive_simulate``) and of a scene with
+    new numbers every call (``derive_simulate_new``), each validated and planned, against the
+    peers' calls, timed in turns."""
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
     rtol = float(data["simulate"]["rtol"])
     prepared = derive.prepare(data)
-    # the same motion each time but for a start rate that differs in its last digits: no two of
-    # the cycle are equal, and no scene comes back before the memo has let it go
+    # the same motion each time but for a start rate that differs in its last digits
     fresh = itertools.cycle([dict(data, initial=dict(data["initial"], gamma_dot=data["initial"]["gamma_dot"] + 1e-9 * k))
-                             for k in range(4 * MEMO_SIZE)])
+                             for k in range(256)])
     names = ["derive_prepared", "derive_simulate", "derive_simulate_new"]
     fns = [prepared.run, lambda: derive.simulate(data), lambda: derive.simulate(next(fresh))]
     for fam in PEERS:
@@ -283,7 +272,7 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
             setup = c.setup(prob, method, rtol, B.ATOL_RATIO * rtol)
             names.append(fam)
             fns.append(lambda c=c, method=method, setup=setup: c.solve(prob, method, rtol, B.ATOL_RATIO * rtol, setup))
-    times = dict(zip(names, B.interleaved(fns, max(cfg.fixed_cost_calls, 15))))
+    times = dict(zip(names, timing.interleaved(fns, max(cfg.fixed_cost_calls, 15))))
     out = {"rtol": rtol, **times}
     for fam in PEERS:
         if fam in times:
@@ -294,7 +283,7 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
 
 
 def run(cfg, fams: list[str], batch_scenes) -> dict:
-    """Every race of issue 20 that an installed peer can run; ``batch_scenes(n, t_end)`` gives
+    """Every race that an installed peer can run; ``batch_scenes(n, t_end)`` gives
     the batch's scenes (:func:`derive.bench.targets.batch_scenes`). Each part is guarded by the
     caller; without heyoka and numbalsoda: ``{"skipped": ...}``."""
     peers = [f for f in PEERS if f in fams]

@@ -200,10 +200,10 @@ def targets_section(results: dict) -> list[str]:
 
 
 def peers_section(results: dict) -> list[str]:
-    """Issue 20's races against heyoka and numbalsoda (:mod:`derive.bench.peers`): what each side
+    """The races against heyoka and numbalsoda (:mod:`derive.bench.peers`): what each side
     ran, the tolerances that reached each error level, the times and ratios."""
     pe = (results.get("targets") or {}).get("peers") or {}
-    L = ["## Against heyoka and numbalsoda (issue 20)", ""]
+    L = ["## Against heyoka and numbalsoda", ""]
     if "skipped" in pe or "error" in pe:
         return L + [f"Not raced: {pe.get('skipped') or pe.get('error')}.", ""]
     if not pe:
@@ -295,12 +295,12 @@ def peers_section(results: dict) -> list[str]:
 
 
 def auto_choice_section(results: dict) -> list[str]:
-    """Issue 20, item 5 (:mod:`derive.bench.autochoice`): the method auto chose against the
+    """The method choice (:mod:`derive.bench.autochoice`): the method auto chose against the
     faster of dop853 and taylor, per scene and tolerance."""
     ac = (results.get("targets") or {}).get("auto_choice") or {}
     if not ac:
         return []
-    L = ["## What `method = \"auto\"` picks (issue 20)", ""]
+    L = ["## What `method = \"auto\"` picks", ""]
     if "error" in ac:
         return L + [f"Not measured: {ac['error']}.", ""]
     L += ["Each scene prepared with `method` = dop853, taylor and auto (atol = rtol / 100), the three "

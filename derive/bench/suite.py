@@ -19,9 +19,8 @@ from derive.bench import contenders as bc
 from derive.bench import report as bench_report
 from derive.bench import splitting
 from derive.bench import targets as bench_targets
-from derive.bench.runner import (FULL, QUICK, SMOKE, Settings, _jsonable, c_loop, drift, machine,
-                                 numpy_batch, plot_work_precision, python_calls, work_precision,
-                                 write_points)
+from derive.bench.runner import FULL, QUICK, SMOKE, Settings, c_loop, drift, machine, numpy_batch, python_calls
+from derive.bench.workprecision import _jsonable, plot_work_precision, work_precision, write_points
 
 
 def splitting_runs(cfg: Settings) -> list[dict]:

@@ -1,4 +1,4 @@
-"""The targets of issue 8, each a ratio measured side by side in one run of `derive bench`.
+"""The targets, each a ratio measured side by side in one run of `derive bench`.
 
 * **Reference scene** (:data:`REFERENCE`: symmetric heavy top I₁ = I₂ = 1, I₃ = 0.5,
   M = g = l = 1; α₀ = 0, β₀ = 0.8, γ₀ = 0, α̇₀ = −0.4, β̇₀ = 0.3, γ̇₀ = 6; t ∈ [0, 10], 1001
@@ -13,9 +13,9 @@
 * **Batch**: ``simulate_batch`` over 1000 variants of the reference scene against the C batch
   loop doing the same work (its own C call on prepared arrays: init map, integration and the
   outputs; goal ≥ 70 % of its throughput) and against SciPy per trajectory (goal ≥ 150×). The
-  solve-only C loop (``Kernel.solve_batch``, states only, no outputs) is reported as context: the
-  issue first named it, but with the outputs about 40 % of the C work, 70 % of a loop that skips
-  them is out of reach of any Python around the same C.
+  solve-only C loop (``Kernel.solve_batch``, states only, no outputs) is reported as context:
+  with the outputs a large share of the C work, 70 % of a loop that skips them is out of reach
+  of any Python around the same C.
 * **Ceilings**, as context: each SciPy time over derive's C call alone (no Python at all), the
   largest ratio any Python around that C could reach; where it is below a goal, the goal needs
   fewer rhs evaluations, not less overhead.
@@ -45,16 +45,22 @@ import numpy as np
 from tqdm import tqdm
 
 from derive.bench import runner as B
+from derive.bench import timing
 from derive.bench import contenders as bc
 from derive.bench import peers as bench_peers
-from derive.bench.reference import REFERENCE, reference_data  # noqa: F401 - REFERENCE: T.REFERENCE
+from derive.bench.reference import reference_data
+import derive
+from derive.bench import internals as bi
+from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
+from derive.bench.own_body import bench_own_body
+from derive.bench.throughput import bench_throughput
 
 
 GOALS = {
     "vs_scipy": ("≥", 100.0), "vs_casadi": ("≥", 10.0), "fixed_cost": ("≤", 0.5),
     "batch_vs_own": ("≥", 0.70), "batch_vs_scipy": ("≥", 150.0), "warm_process": ("≤", 3.0),
     "cold_minus_warm": ("≤", 1.0), "numpy_vs_lambdify": ("≤", 1.0),
-    # issue 11
+    # sweeps
     "sweep_vs_scipy": ("≥", 100.0), "dask_vs_local": ("≤", 1.1), "dask_scaling": ("≥", 0.8),
     # derive.bench.peers: derive's time over the peer's, at equal error
     "vs_heyoka": ("≤", 0.7), "vs_numbalsoda": ("≤", 0.5), "long_vs_heyoka": ("≤", 0.7),
@@ -90,7 +96,6 @@ _match = B.match_tolerance
 
 
 def reference_scene(cfg, fams) -> dict:
-    import derive
 
     data = reference_data(cfg.ref_t_end)
     rtol = data["simulate"]["rtol"]
@@ -105,15 +110,14 @@ def reference_scene(cfg, fams) -> dict:
     parts, errors = {}, {}
     for key, make in (("own_call", "own_batch_call"), ("output_map", "output_map_call")):
         try:
-            from derive.bench import internals as bi
 
             arg = [data] if key == "own_call" else data
             parts[key] = getattr(bi, make)(arg)
         except Exception as exc:  # noqa: BLE001
             errors[f"{key}_error"] = f"{type(exc).__name__}: {exc}"
     own_call = parts.get("own_call")
-    k = max(1, int(0.02 / B.timed(ours_call, 3)[0]))
-    t_ours, *t_parts = B.interleaved([ours_call, *parts.values()], 0, blocks=max(3, cfg.ref_repeats),
+    k = max(1, int(0.02 / timing.timed(ours_call, 3)[0]))
+    t_ours, *t_parts = timing.interleaved([ours_call, *parts.values()], 0, blocks=max(3, cfg.ref_repeats),
                                      counts=[k] * (1 + len(parts)))
     ours = {"time": t_ours, "error": B.axis_error(res.axis, ref), "nfev": int(res.nfev),
             "method": res.method, "formulation": res.formulation, "rtol": rtol,
@@ -154,7 +158,7 @@ def reference_scene(cfg, fams) -> dict:
         fns, counts = [theirs, ours_call], [1, k]
         if own_call is not None and method == "scipy-dop853":
             fns, counts = fns + [own_call], counts + [k]
-        m["time"], m["ours_paired"], *own = B.interleaved(fns, 0, blocks=max(3, cfg.ref_repeats), counts=counts)
+        m["time"], m["ours_paired"], *own = timing.interleaved(fns, 0, blocks=max(3, cfg.ref_repeats), counts=counts)
         if own:
             m["own_call_paired"] = own[0]
         rows.append({"family": fam, "method": method, "label": label, **m,
@@ -162,7 +166,7 @@ def reference_scene(cfg, fams) -> dict:
     # Labelled apart: SciPy on derive's generated NumPy rhs (one state per call through NumPy).
     scipy_rtol = rows[0]["rtol"]
     odeint = next(r for r in rows if r["method"] == "scipy-odeint")
-    t_np, res_np = B.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
+    t_np, res_np = timing.timed(lambda: derive.simulate(data, method="scipy-dop853", rtol=scipy_rtol,
                                                    atol=B.ATOL_RATIO * scipy_rtol), 1)
     rows.append({"family": "scipy-numpy", "method": "scipy-dop853",
                  "label": "`solve_ivp` DOP853 on derive's generated NumPy rhs (`method = \"scipy-dop853\"`)",
@@ -205,8 +209,6 @@ def phases(cfg) -> dict:
     second ``simulate`` with an empty ``DERIVE_CACHE`` (cold) and with a filled one (warm);
     compilation = cold first call − warm first call; and, apart, the SymPy derivation and code
     generation of the model (`bench_internals.DERIVE_SCRIPT`)."""
-    from derive.bench import internals as bi
-
     arg = json.dumps(reference_data(cfg.ref_t_end))
     out = {}
     with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
@@ -225,7 +227,6 @@ def phases(cfg) -> dict:
 
 
 def fixed_cost(cfg) -> dict:
-    import derive
 
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
@@ -234,7 +235,7 @@ def fixed_cost(cfg) -> dict:
     rtol = data["simulate"]["rtol"]
     derive.simulate(data)
     setup_o = bc.scipy_setup(prob, "scipy-odeint")
-    t_ours, t_scipy, t_odeint = B.interleaved(
+    t_ours, t_scipy, t_odeint = timing.interleaved(
         [lambda: derive.simulate(data),
          lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
          lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o)],
@@ -258,8 +259,6 @@ def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
 
 def batch(cfg, rtols: dict) -> dict:
     """``rtols``: SciPy method -> the rtol that matched derive's error on the reference scene."""
-    import derive
-
     scenes = batch_scenes(cfg.batch_n, cfg.batch_t_end)
     res = derive.simulate_batch(scenes)  # compile once
     # the method auto chose for the batch, named in every scene: the C calls timed beside
@@ -271,7 +270,6 @@ def batch(cfg, rtols: dict) -> dict:
     # (best of three rounds each), so that a change of machine load hits all three alike.
     fns = {"time": lambda: derive.simulate_batch(scenes)}
     try:
-        from derive.bench import internals as bi
 
         kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
         raw = lambda: kernel.solve_batch(method, y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
@@ -280,14 +278,13 @@ def batch(cfg, rtols: dict) -> dict:
     except Exception as exc:  # noqa: BLE001
         out["raw_error"] = f"{type(exc).__name__}: {exc}"
     try:  # informational: simulate_batch's own C call (outputs included) without its Python
-        from derive.bench import internals as bi
 
         fns["own_call"] = bi.own_batch_call(scenes)
     except Exception as exc:  # noqa: BLE001
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
     for fn in fns.values():
         fn()
-    best = B.best_in_turns(fns, 3 if cfg.batch_n >= 500 else 5)
+    best = timing.best_in_turns(fns, 3 if cfg.batch_n >= 500 else 5)
     out.update(best, per_scene=best["time"] / len(scenes))
     if "raw" in best:
         out["vs_raw"] = best["raw"] / best["time"]
@@ -301,7 +298,7 @@ def batch(cfg, rtols: dict) -> dict:
             prob = bc.problem(d, "euler-angles")
             setup = bc.scipy_setup(prob, peer)
             run = lambda: bc.solve_scipy(prob, peer, r, B.ATOL_RATIO * r, setup)  # noqa: E731
-            times.append(min(B.timed(run, 1)[0] for _ in range(2)))  # the better of two: load spikes
+            times.append(min(timing.timed(run, 1)[0] for _ in range(2)))  # the better of two: load spikes
         per = statistics.median(times)
         out.update({f"{key}_rtol": r, f"{key}_n": len(times), f"{key}_per_trajectory": per,
                     f"vs_{key}": per / out["per_scene"]})
@@ -354,7 +351,6 @@ def processes(cfg) -> dict:
 def numpy_vs_lambdify(cfg) -> dict:
     import sympy as sp
 
-    from derive.bench import internals as bi
 
     states, params, rhs = bi.heavy_top_expressions()
     f = sp.lambdify([states, params], list(rhs), modules="numpy", cse=True)
@@ -378,7 +374,7 @@ def numpy_vs_lambdify(cfg) -> dict:
             return out
 
         # in turns, so that a change of machine load hits all alike
-        t_gen, t_lam, t_raw, t_blk = B.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P), blocked],
+        t_gen, t_lam, t_raw, t_blk = timing.interleaved([lambda: mod.rhs(0.0, Y, P), stacked, lambda: f(Y, P), blocked],
                                                    0, blocks=reps, counts=[3, 3, 3, 3])
     return {"n": n, "generated": t_gen, "lambdify": t_lam, "lambdify_raw": t_raw, "ratio": t_gen / t_lam,
             "ratio_raw": t_gen / t_raw, "max_rel_diff": diff, "generated_ns_per_state": t_gen / n * 1e9,
@@ -419,29 +415,23 @@ def run(cfg, fams) -> dict:
 
 
 def auto_choice(cfg) -> dict:
-    """Issue 20, item 5: does ``method = "auto"`` pick the faster of dop853 and taylor
+    """Does ``method = "auto"`` pick the faster of dop853 and taylor
     (:mod:`derive.bench.autochoice`)?"""
-    from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
-
     if cfg.name == "smoke":
         return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
     return bench_auto_choice(levels=LEVELS if cfg.name == "full" else LEVELS[1::2], blocks=5)
 
 
 def own_body(cfg) -> dict:
-    """Issue 18's targets for user terms (:mod:`derive.bench.own_body`)."""
-    from derive.bench.own_body import bench_own_body
-
+    """The targets for user terms (:mod:`derive.bench.own_body`)."""
     return bench_own_body()
 
 
 def sweeps(cfg) -> dict:
-    """Issue 11's targets (:func:`derive.bench.throughput.bench_throughput`): the measured sweep loop per
+    """The sweep targets (:func:`derive.bench.throughput.bench_throughput`): the measured sweep loop per
     trajectory against ``solve_ivp(DOP853)`` on a plain-Python rhs at rtol 1e-8, t ∈ [0, 10];
     with ``cfg.sweep_big`` points, a 2-worker Dask LocalCluster against the local engine with 2
     processes, and the scaling from 1 to 2 workers."""
-    from derive.bench.throughput import bench_throughput
-
     return bench_throughput(n=cfg.sweep_n, scipy_n=cfg.sweep_scipy_n, engines=cfg.sweep_big > 0,
                             big=max(cfg.sweep_big, 1))
 
@@ -506,7 +496,7 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
 
 
 def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
-    """Issue 20's rows (what, goal key, derive's time / the peer's) from :mod:`derive.bench.peers`."""
+    """The peers' rows (what, goal key, derive's time / the peer's) from :mod:`derive.bench.peers`."""
     rows = []
     names = {"heyoka": "heyoka `taylor_adaptive`", "numbalsoda": "numbalsoda `dop853`"}
     for part, what, key in (("reference", "reference scene", "vs_{}"), ("long", "long run", "long_vs_{}")):

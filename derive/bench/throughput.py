@@ -11,12 +11,15 @@ from derive.bench.contenders import baselines
 from derive.bench.reference import reference_data
 from derive.sim.scene import load_scene
 from derive.sweeps import measures as ms
-from derive.sweeps.engine import load, local_cluster, run_chunk, sweep
+from derive.sweeps.spec import load
+from derive.sweeps.cluster import local_cluster
+from derive.sweeps.tasks import run_chunk
+from derive.sweeps.engine import sweep
 
 
 def bench_throughput(n: int = 2000, t_end: float = 10.0, rtol: float = 1e-8, scipy_n: int = 20,
                      engines: bool = False, big: int = 100_000, repeat: int = 2) -> dict:
-    """Figures for issue 11's targets, on the reference heavy top (I1 = 1, I3 = 0.5, M g l = 1,
+    """Figures for the sweep targets, on the reference heavy top (I1 = 1, I3 = 0.5, M g l = 1,
     β₀ = 0.8, α̇₀ = −0.4, β̇₀ = 0.3, γ̇₀ = 6, random β₀ ∈ [0.3, 1.2]):
 
     * ``per_traj_sweep`` (s): one process, the measured loop (beta extrema, energy drift, nfev);

@@ -12,8 +12,3 @@ scene's own body, evaluated at the scene's numbers.
 May import: :mod:`derive.sim` (a scene, for the analysis) and the stages below it,
 :mod:`derive.errors`.
 """
-from derive import _moved
-
-# ``derive.lecture`` was one module (now :mod:`derive.lecture.claims`): its names still resolve here,
-# loaded on first use (the claims need SymPy).
-__getattr__ = _moved.forward("derive.lecture", "derive.lecture.claims")

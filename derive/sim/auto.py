@@ -70,7 +70,7 @@ def plan(scene, effects: tuple | None = None) -> list[tuple[str, int]]:
 def structural(symmetric: bool, effects: tuple, method: str) -> tuple:
     """The formulations ``plan`` would try for this body symmetry, these effects and this
     method, cheapest first, each with its pole mode, before the scene's numbers are looked at
-    (a sweep's or a batch's model: :func:`derive.sweeps.engine.sweep_plan`).
+    (a sweep's or a batch's model: :func:`derive.sweeps.plan.sweep_plan`).
 
     Returns
     -------

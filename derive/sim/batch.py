@@ -1,19 +1,20 @@
-"""A batch that keeps only the outputs asked for: ``derive.simulate_batch(scenes, outputs=...)``.
+"""A batch that keeps only what its :class:`~derive.sim.saveat.SaveAt` asks for:
+``derive.simulate_batch(scenes, saveat=...)``.
 
 The compiled batch driver writes every output at every sample of each trajectory (and its
 states) into the arrays it is given: 1000 trajectories of 1001 samples would map about 200 MB.
 Here the driver runs in chunks of trajectories whose work arrays (a few MB) are allocated once
 and reused, and only what was asked for is copied out of them into the arrays returned:
 
-* ``outputs="final"``: every output (and the state) at the last sample only, arrays of shape
+* ``SaveAt(t="final")``: every output (and the state) at the last sample only, arrays of shape
   (N,) or (N, 3) (state (N, NY));
-* ``outputs=("beta", "axis", ...)``: those outputs at every sample, (N, n) or (N, n, 3)
-  (``"state"``: (N, n, NY)).
+* ``SaveAt(outputs=("beta", "axis", ...))``: those outputs at every sample, (N, n) or (N, n, 3)
+  (``"state"``: (N, n, NY)); with ``t="final"``, those at the last sample.
 
 The numbers are bit for bit those of the full batch (the same C call per trajectory; a chunk
 changes nothing a trajectory computes). No Result per trajectory: one :class:`BatchResult`.
 
-With ``"final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
+With ``t="final"`` and a formulation whose α and γ are states (``angle_states`` in the registry)
 that loses no accuracy near a pole (no ``pole_loss``: its pole check needs β at every sample),
 no sample but the last is made: the driver ``<model>_simulate_final_batch_<method>`` integrates
 each trajectory straight to the end (the same steps: the interior samples of the full grid are
@@ -30,7 +31,8 @@ built for this CPU's vector width: W trajectories at once, each lane its own ste
 numbers, statuses and statistics are the scalar final-only driver's bit for bit.
 ``BatchResult.driver`` says which ran.
 
-Takes: what :func:`derive.sim.simulation.batch_plan` takes. Gives: :class:`BatchResult`.
+Takes: scenes that share a model. Gives: a Result per scene (:func:`batch_results`) or a
+:class:`BatchResult`; the plan of a batch (:func:`batch_plan`).
 """
 from __future__ import annotations
 
@@ -39,9 +41,17 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from derive.errors import IntegrationError, SceneError
+from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
+from derive.runtime import catalogue
 from derive.runtime.integrate import ModelKernel
-from derive.sim import simulation
+from derive.sim import auto, plan
+from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, default_step, inputs_of, params_of
+from derive.sim.result import Result, _check_pole, _explain, _pole_suspects, _quiet, _result, selection
+from derive.sim.saveat import SaveAt
+from derive.sim.scene import load_scene
+from derive.sim.validator import _Validator, same_model_part
+from derive.symbolic import effects as fx
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
@@ -102,38 +112,22 @@ class BatchResult:
         raise AttributeError(name)
 
 
-def _selection(outputs) -> tuple[bool, tuple[str, ...]]:
-    """(final, names) of the ``outputs`` argument; SceneError for anything else."""
-    if isinstance(outputs, str):
-        if outputs == "final":
-            return True, tuple(name for name, _ in OUTPUTS) + ("state",)
-        outputs = (outputs,)
-    try:
-        names = tuple(outputs)
-    except TypeError:
-        names = None
-    known = tuple(name for name, _ in OUTPUTS) + ("state",)
-    if not names or not all(isinstance(n, str) for n in names):
-        raise SceneError(f"<batch>: outputs: \"final\" or a sequence of output names ({', '.join(known)}), "
-                         f"not {outputs!r}")
-    for n in names:
-        if n not in known:
-            raise SceneError(f"<batch>: outputs: unknown output {n!r} (the outputs: {', '.join(known)})")
-    return False, tuple(dict.fromkeys(names))
-
-
-def simulate_batch(scenes, outputs, **overrides) -> BatchResult | None:
-    """Simulate the scenes as :func:`derive.sim.simulation.simulate_batch` does, keeping only
-    ``outputs`` (``"final"`` or a sequence of output names, see the module). None for no scenes."""
-    final, names = _selection(outputs)
-    bp = simulation.batch_plan(scenes, **overrides)
+@_quiet
+def simulate_batch(scenes, saveat: SaveAt, **overrides):
+    """Simulate the scenes in one batch (:func:`batch_plan`): one Result
+    per scene when ``saveat`` keeps everything (the default), else one :class:`BatchResult`
+    with what it keeps (see the module); None for no scenes."""
+    bp = batch_plan(scenes, **overrides)
+    if saveat.everything:
+        return [] if bp is None else batch_results(bp)
+    final, names = selection(saveat)
     return None if bp is None else run_plan(bp, final, names)
 
 
 def run_plan(bp, final: bool, names: tuple) -> BatchResult:
-    """Run a batch plan (:class:`derive.sim.simulation.BatchPlan`, or a prepared scene's:
+    """Run a batch plan (:class:`BatchPlan`, or a prepared scene's:
     :meth:`derive.sim.prepared.Prepared.run_batch`) keeping ``names`` at every sample, or at
-    the last (``final``; see :func:`_selection`): its candidate formulations in turn until
+    the last (``final``; see :func:`derive.sim.result.selection`): its candidate formulations in turn until
     none of the trajectories' starts is refused, by the full, the final-only or the lanes
     driver."""
     for formulation, pole_check in bp.candidates:
@@ -219,10 +213,10 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
         # The pole check of the full batch, per chunk while β is at hand; its error is raised
         # after every chunk ran, so a failed integration elsewhere is named first, as there.
         if pole_error is None:
-            suspect = simulation._pole_suspects(desc, out[:, 1], rtol)
+            suspect = _pole_suspects(desc, out[:, 1], rtol)
             for b in np.flatnonzero(suspect):
                 try:
-                    simulation._check_pole(desc, t, out[b, 1], scs[s + b].simulate.rtol)
+                    _check_pole(desc, t, out[b, 1], scs[s + b].simulate.rtol)
                 except IntegrationError as exc:  # kept until every chunk ran
                     pole_error = exc
                     break
@@ -241,3 +235,150 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
     if pole_error is not None:
         raise pole_error
     return False, arrays, nfev
+
+
+def batch_results(bp: "BatchPlan") -> list[Result]:
+    """A batch plan run, one Result per trajectory (what :func:`simulate_batch` returns):
+    its candidate formulations in turn until no start is refused, by the full batch driver
+    (a Taylor method's lanes for a batch of at least LANES_MIN). The integrals of the
+    integrable cases are classified once per body and effect values
+    (:func:`derive.sim.plan.integrals_key`)."""
+    scs, t, method = bp.scenes, bp.t, bp.method
+    for formulation, pole_check in bp.candidates:
+        desc, kernel, args = bp.kernel(formulation)
+        ps = bp.params(desc)
+        lanes = kernel.full_lanes(len(scs))  # a Taylor method's trajectories W at a time
+        if lanes is not None:
+            out, y, ps, st = lanes.simulate_batch(bp.inputs, ps, t, args, pole_check, lanes=True)
+        else:
+            out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        if not (st["status"] == Status.RANGE).any():
+            break
+    bp.raise_failure(desc, st)
+    # The pole check of every trajectory at once; one that fails is then found and named per
+    # scene. The C call has checked the outputs finite (status NONFINITE_OUTPUT).
+    suspect = _pole_suspects(desc, out[:, 1], scs[0].simulate.rtol)
+    for b in np.flatnonzero(suspect).tolist():
+        _check_pole(desc, t, out[b, 1], scs[b].simulate.rtol)
+    nfev = st["nfev"].tolist()
+    rows: dict = {}
+    results = []
+    for b, sc in enumerate(scs):
+        key = plan.integrals_key(sc)
+        if key not in rows:
+            rows[key] = plan.integral_rows_of(sc)
+        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=rows[key]))
+    return results
+
+
+@dataclass
+class BatchPlan:
+    """What a batch runs, decided once for all its scenes (:func:`batch_plan`): the validated
+    ``scenes``, the ``method``, the shared output times ``t``, the init-map ``inputs`` (N, NIN),
+    the ``effects`` of the one model, the fixed step ``h`` (None: the scene's or adaptive) and
+    the ``candidates`` (formulation, pole check) in the order they are tried."""
+    scenes: list
+    method: str
+    t: np.ndarray
+    inputs: np.ndarray
+    effects: tuple
+    h: float | None
+    candidates: tuple
+
+    def kernel(self, formulation: str):
+        """(model description, compiled kernel, driver arguments) of one candidate."""
+        first = self.scenes[0]
+        desc = catalogue.describe((formulation, first.symmetric, self.effects))
+        kernel = ModelKernel.load(desc, self.method)
+        if self.h is not None:
+            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
+        else:
+            args = _settings(first, self.method, kernel)
+        return desc, kernel, args
+
+    def params(self, desc, rows: slice = slice(None)) -> np.ndarray:
+        """The parameter vectors (N, NP) of the scenes ``rows`` (default: all) for a model: one
+        row for all when they have the first scene's model part (:func:`_validated`)."""
+        scs = self.scenes[rows]
+        if scs and all(_model_part_of(sc, scs[0]) for sc in scs):
+            return np.repeat(params_of(scs[0], desc)[None, :], len(scs), axis=0)
+        return np.array([params_of(sc, desc) for sc in scs])
+
+    def where(self, b: int) -> str:
+        """How an error names trajectory ``b``: its scene's source."""
+        return self.scenes[b].source
+
+    def raise_failure(self, desc, st, offset: int = 0) -> None:
+        """IntegrationError naming the first trajectory whose status (in ``st``, the stats of
+        trajectories ``offset``, ``offset + 1``, …) is a failure; nothing when all succeeded."""
+        status = st["status"]
+        if status.any():
+            b = int(np.flatnonzero(status)[0])
+            sc = self.scenes[offset + b]
+            raise IntegrationError(f"{self.where(offset + b)}: {_explain(desc, st[b], sc.simulate.max_steps)}")
+
+
+def _validated(scenes, overrides: dict) -> list:
+    """Each scene of a batch validated (:func:`derive.sim.scene.load_scene`). A dict whose model
+    part is the first dict's (everything but ``[initial]``, value for value and type for type:
+    :func:`derive.sim.validator.same_model_part`) has only its initial state read: its model,
+    settings and so its plan are the first's."""
+    out, first, like = [], None, None
+    for s in scenes:
+        if like is not None and same_model_part(s, first):
+            out.append(_Validator("<dict>").with_initial(s, like))
+            continue
+        sc = load_scene(s, **overrides)
+        if not out and type(s) is dict:
+            first, like = s, sc
+        out.append(sc)
+    return out
+
+
+def _model_part_of(sc, first) -> bool:
+    """Whether ``sc`` was read with ``first``'s model part (the very objects: :func:`_validated`)."""
+    return (sc.body is first.body and sc.tables is first.tables and sc.terms is first.terms
+            and sc.simulate is first.simulate and sc.title is first.title)
+
+
+def batch_plan(scenes, **overrides) -> BatchPlan | None:
+    """Validate the scenes of a batch and decide what it runs (None for no scenes): one model
+    with every effect that acts in any scene, the shared method, output times and settings."""
+    scs = _validated(scenes, overrides)
+    if not scs:
+        return None
+    first = scs[0]
+
+    # One model for the batch: the effects that act in any scene (registry order), each named
+    # by every scene so that each gives its parameters.
+    effects = first.effects
+    if any(sc.effects != effects for sc in scs):
+        effects = tuple(e.name for e in fx.lookup(set().union(*(sc.effects for sc in scs))))
+
+    def shared(sc):
+        s = sc.simulate
+        return (sc.symmetric, set(effects) <= set(sc.named_effects), s.samples, s.t_end,
+                choose_method(sc), s.rtol, s.atol, s.h, s.max_steps, s.formulation)
+
+    ref = shared(first)
+    for sc in scs[1:]:
+        if _model_part_of(sc, first):
+            continue  # (its model part is the first's: shared(sc) is ref)
+        if shared(sc) != ref or not set(sc.effects) <= set(first.named_effects):
+            raise SceneError(f"{sc.source}: simulate: a batch needs the same effects, body symmetry, output "
+                             f"times, method, tolerances and formulation as {first.source}")
+    method = choose_method(first)
+    if method in plan.SCIPY_METHODS:
+        raise SceneError(f"{first.source}: simulate.method: batches run in the C kernels, not {method}")
+    h = None
+    if not tolerance_driven(method) and first.simulate.h is None:
+        h = min(default_step(sc) for sc in scs)
+        for sc in scs:
+            _check_budget(sc, method, h)
+    candidates = tuple(auto.batch_plan(scs, effects))
+    if first.simulate.method == AUTO and candidates:
+        # one method for the batch: the cost model's, for its first scene and first model
+        desc = catalogue.describe((candidates[0][0], first.symmetric, effects))
+        method = plan.auto_method(first, desc)
+    return BatchPlan(scs, method, first.t_out, np.array([inputs_of(sc) for sc in scs]), effects, h,
+                     candidates)

@@ -6,34 +6,26 @@ no derivation, optionally with new initial values or parameters of the same shap
 :meth:`~Prepared.run_batch` runs N such variations in one batch call (arrays of initial values
 and parameters, checked as arrays: no scene per trajectory).
 
-:func:`family_batch` and :func:`family_results` run scene dicts that differ only in their initial
-numbers (a family) as one prepared batch, for ``derive.simulate_batch`` with and without
-``outputs``.
-
-Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.simulation.Result`,
+Takes: a scene (path, example name, dict or Scene). Gives: :class:`derive.sim.result.Result`,
 :class:`derive.sim.batch.BatchResult`.
 """
 from __future__ import annotations
 
-import copy
-import itertools
 import math
 
 import numpy as np
 
-from derive.errors import IntegrationError, SceneError
+from derive.errors import SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
-from derive.sim.scene import family_columns, load_scene, same_contents
+from derive.sim.result import kept, selection
+from derive.sim.saveat import choose
+from derive.sim.scene import load_scene
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
-#: The ``[initial]`` keys a family's dicts may vary (numbers; ``omega`` is a list: not a family).
-_FAMILY_KEYS = frozenset(_ANGLES + _RATES)
-#: The types of a family's initial values (as TOML and JSON give numbers; bool is not one).
-_NUMBERS = frozenset((float, int))
 
 
 class Prepared:
@@ -52,7 +44,7 @@ class Prepared:
         derived = {desc.params[k] for k in desc.derived_params}
         self._params = tuple(n for n in desc.params if n not in derived)
 
-    def run(self, initial=None, params=None):
+    def run(self, initial=None, params=None, saveat=None):
         """Run the prepared simulation.
 
         Parameters
@@ -65,10 +57,13 @@ class Prepared:
         params : dict, optional
             New values of the model's parameters by name (``I1``, ``I3``, ``M``, ``g``, ``l``,
             …: the names of ``[body]`` and the effect tables, as the model takes them).
+        saveat : derive.SaveAt, optional
+            What to keep (:func:`derive.sim.result.kept`); default every output at every
+            sample.
 
         Returns
         -------
-        derive.sim.simulation.Result
+        derive.sim.result.Result
             As :func:`derive.simulate` gives it. ``Result.scene`` is the prepared scene (its
             initial values and parameters, not the ones given here), and the integrals are
             those of its integrable case.
@@ -88,9 +83,9 @@ class Prepared:
                     raise SceneError(f"{self.plan.scene.source}: params: unknown parameter {name!r} "
                                      f"(the model's: {', '.join(self._params)})")
                 _finite(self.plan.scene.source, f"params.{name}", value)
-        return simulation.run(self.plan, inputs, params)
+        return kept(simulation.run(self.plan, inputs, params), saveat)
 
-    def run_batch(self, initial=None, params=None, outputs="final"):
+    def run_batch(self, initial=None, params=None, outputs=None, saveat=None):
         """Run the prepared scene N times in one batch call, trajectory b with the b-th entry of
         every array given: what ``derive.simulate_batch`` gives for N scenes that differ from
         this one only in those numbers, without reading N scenes.
@@ -102,9 +97,12 @@ class Prepared:
             an array of N numbers (``omega``: three numbers or an (N, 3) array).
         params : dict, optional
             The model's parameters by name (as :meth:`run`), numbers or arrays of N.
-        outputs : str or sequence of str
-            ``"final"`` (every output at the last sample) or output names kept at every
-            sample, as ``derive.simulate_batch`` takes them.
+        saveat : derive.SaveAt, optional
+            What to keep, as ``derive.simulate_batch`` takes it; default ``SaveAt(t="final")``
+            (every output at the last sample).
+        outputs : str or sequence of str, optional
+            The short spelling of ``saveat``: ``"final"`` or output names kept at every sample
+            (:meth:`derive.SaveAt.of`).
 
         Returns
         -------
@@ -125,7 +123,7 @@ class Prepared:
         IntegrationError
             Numerical failure, naming the trajectory (``<scene>: trajectory b: ...``).
         """
-        final, names = batch._selection(outputs)
+        final, names = selection(choose(saveat, outputs, default="final"))
         return batch.run_plan(_PreparedBatch.of(self, initial or {}, params or {}), final, names)
 
     def _inputs(self, initial) -> np.ndarray:
@@ -169,7 +167,7 @@ def _column(source: str, key: str, value, width: int = 1) -> np.ndarray:
     return a
 
 
-class _PreparedBatch(simulation.BatchPlan):
+class _PreparedBatch(batch.BatchPlan):
     """A batch plan of a prepared scene (:meth:`Prepared.run_batch`): every trajectory is the
     prepared scene but for the numbers given as arrays; their parameter vectors are the
     scene's with columns replaced, made once per model."""
@@ -237,103 +235,3 @@ class _PreparedBatch(simulation.BatchPlan):
 
     def where(self, b: int) -> str:
         return f"{self.scenes[b].source}: trajectory {b}"
-
-
-def family_batch(scenes, outputs):
-    """``derive.simulate_batch(scenes, outputs)`` for a family of scene dicts, as one prepared
-    batch: the first dict prepared, the others' initial values its columns
-    (:meth:`Prepared.run_batch`, whose results are the scene-by-scene batch's bit for bit), with
-    no scene read per dict. A family: a list or tuple of two or more plain dicts whose tables
-    other than ``[initial]`` pickle to the first's bytes (equal values of equal types, signed
-    zeros apart), whose ``[initial]`` tables have the first's keys in its order (angles and
-    rates), each value an int or a float.
-
-    Returns None for anything else, and when the prepared batch raises SceneError or
-    IntegrationError: the caller then reads the scenes one by one, and raises the error as it
-    names it (the scene-by-scene batch runs again). The family check takes about 1.5 us a dict
-    beside a batch's C call, which leaves the dicts out of the caches (one pickle of them all,
-    read as bytes: :func:`derive.sim.scene.family_columns`; 1.9 us dict by dict,
-    :func:`derive.sim.scene.same_contents`, where an initial value is an int); reading each
-    dict takes 12 us (the bench's 1000 tops: ``simulation.batch_plan``)."""
-    family = _family(scenes)
-    if family is None:
-        return None
-    first, keys, _, columns = family
-    try:
-        return Prepared(first).run_batch(initial=dict(zip(keys, columns)), outputs=outputs)
-    except (SceneError, IntegrationError):
-        return None
-
-
-def family_results(scenes):
-    """``derive.simulate_batch(scenes)`` (one Result per scene, every output at every sample)
-    for a family of scene dicts (see :func:`family_batch`): one prepared batch plan run as the
-    scene-by-scene batch runs its plan (:func:`derive.sim.simulation.batch_results`: the same
-    numbers), each Result's ``scene`` made from its dict when first read (:class:`_FamilyScene`),
-    the integral rows the first scene's. None as :func:`family_batch` says, and for a body whose
-    integrable case depends on each state (Goryachev and Chaplygin's, on L.n = 0)."""
-    family = _family(scenes)
-    if family is None:
-        return None
-    first, keys, rows, columns = family
-    try:
-        prepared = Prepared(first)
-        sc = prepared.plan.scene
-        if plan.integrals_depend_on_state(sc):
-            return None
-        bp = _PreparedBatch.of(prepared, dict(zip(keys, columns)), {})
-        rest = copy.deepcopy({k: v for k, v in first.items() if k != "initial"})  # (as called)
-        if rows is None:  # (each dict's values: the floats of the columns)
-            rows = list(zip(*columns.tolist()))
-        return simulation.batch_results(bp, [_FamilyScene(rest, keys, row) for row in rows],
-                                        integrals=plan.integral_rows_of(sc))
-    except (SceneError, IntegrationError):
-        return None
-
-
-class _FamilyScene:
-    """A family batch's trajectory's Scene, validated when first read (``Result.scene``): its
-    dict as the batch was called with it, the first dict's other tables (a copy) with its own
-    initial values."""
-
-    __slots__ = ("rest", "keys", "values")
-
-    def __init__(self, rest: dict, keys: tuple, values: tuple):
-        self.rest, self.keys, self.values = rest, keys, values
-
-    def __call__(self):
-        return load_scene({**self.rest, "initial": dict(zip(self.keys, self.values))})
-
-
-def _family(scenes):
-    """(first dict, initial keys, each dict's initial values (None where every one is a float:
-    the columns hold them, :func:`derive.sim.scene.family_columns`), their columns) of a family
-    of scene dicts (see :func:`family_batch`), or None."""
-    if type(scenes) not in (list, tuple) or len(scenes) < 2 or type(scenes[0]) is not dict:
-        return None
-    first = scenes[0]
-    start = first.get("initial")
-    if type(start) is not dict or not start or not _FAMILY_KEYS.issuperset(start):
-        return None
-    keys = tuple(start)
-    columns = family_columns(scenes, keys)  # (the usual family: floats, one pickle of them all)
-    if columns is not None:
-        return first, keys, None, columns
-    rows, rests = [], []
-    for d in scenes:
-        if type(d) is not dict:
-            return None
-        values = d.get("initial")
-        if type(values) is not dict or tuple(values) != keys:
-            return None
-        rows.append(tuple(values.values()))
-        rests.append({**d, "initial": None})
-    # the initial numbers all ints or floats (one pass over them all), and everything else the
-    # first dict's exactly (types and signed zeros apart: one pickle of all the rests)
-    if not _NUMBERS.issuperset(map(type, itertools.chain.from_iterable(rows))) or not same_contents(rests):
-        return None
-    try:
-        columns = np.array(rows, dtype=np.float64).T
-    except OverflowError:  # an int past a double's range: the scene's own error, one by one
-        return None
-    return first, keys, rows, columns

@@ -5,6 +5,7 @@ the scene (their units are the user's business)."""
 from __future__ import annotations
 
 from derive.symbolic import effects
+from derive.symbolic.effects import USER_TABLES
 
 
 def variable_keys() -> dict:
@@ -32,8 +33,6 @@ def unit_of(key: str) -> str:
 def term_key(key: str):
     """(kind, term name, param) of a user term's param key (``potential.magnet.mu``), else
     None."""
-    from derive.symbolic.effects import USER_TABLES
-
     parts = key.split(".")
     if len(parts) == 3 and parts[0] in USER_TABLES and all(parts):
         return tuple(parts)

@@ -28,6 +28,10 @@ import numpy as np
 
 from derive.errors import SceneError
 from derive.sim.plots import display_title
+from derive.sweeps.keys import unit_of
+from derive.sweeps.measures import REGISTRY
+from derive.sim.auto import has_routh
+from derive.symbolic.integrable import classify
 
 
 #: The physical symbol of a varied scene key (initial values with a subscript 0).
@@ -50,8 +54,6 @@ def symbol(key: str) -> str:
 def _label(key: str) -> str:
     """Axis label of a varied key: symbol, what it is (the key, unless that is a zero-based
     vector component) and unit."""
-    from derive.sweeps.keys import unit_of
-
     unit = unit_of(key)
     sym = symbol(key)
     if key.startswith("initial.omega."):
@@ -64,7 +66,6 @@ def _label(key: str) -> str:
 
 
 def _measure_label(name: str) -> str:
-    from derive.sweeps.measures import REGISTRY
 
     m = REGISTRY.get(name)
     return f"{name} [{m.unit}]" if m is not None and m.unit else name
@@ -74,7 +75,6 @@ def _nan_meaning(name: str) -> str:
     """What NaN means for a measure, from its documentation ("... (NaN: never)"), or ""."""
     import re
 
-    from derive.sweeps.measures import REGISTRY
 
     m = REGISTRY.get(name)
     found = re.search(r"\(NaN: ([^)]*)\)", m.doc) if m is not None else None
@@ -98,8 +98,6 @@ def _title(res, measure: str, n: int, failed: int) -> str:
 def _heavy_top(scene):
     """(I1, I3, M g l, α̇₀) when the scene is a heavy symmetric top (a symmetric body whose
     effects are all conservative and axisymmetric, with M, g, l: the Lagrange top), else None."""
-    from derive.sim.auto import has_routh
-
     if scene is None or not scene.initial.has_rates or not has_routh(scene.symmetric, scene.effects):
         return None
     v = scene.param_values()
@@ -255,7 +253,6 @@ def _integrable_moments(ax, sc, key, x) -> None:
     the scene has them (``derive.symbolic.integrable.classify``): a dotted line labelled with the case."""
     import dataclasses
 
-    from derive.symbolic.integrable import classify
 
     i = ("body.I1", "body.I2", "body.I3").index(key)
     moments = list(sc.body.moments)

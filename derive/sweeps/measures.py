@@ -74,6 +74,12 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from derive.codegen.render import environment
+from derive.codegen.solvers import _method_context
+from derive.methods.registry import METHODS, measure_window, method as compiled
+from derive.methods.status import Status
+from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
+from derive.runtime.integrate import STATS_DTYPE
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, classify_values, relabel_params
 
 #: The compiled accumulators, in the order of the C enum (rendered from this tuple).
@@ -221,10 +227,6 @@ def read(names, desc, res, stats, final) -> dict:
 def source(desc, method: str) -> str:
     """``<name>_measures.c`` for a model and method (rendered from templates/c/measures.c.j2, in
     the flavour of the method's measure window: :func:`derive.methods.registry.measure_window`)."""
-    from derive.codegen.render import environment
-    from derive.methods.registry import METHODS, measure_window, method as compiled
-    from derive.codegen.solvers import _method_context
-
     window = measure_window(method)
     if window is None:
         raise ValueError(f"measures need a method with a dense output between its steps, not {method}")
@@ -262,8 +264,6 @@ def driver_args(method: str, rtol: float, atol: float, max_steps: int) -> tuple:
     tuple
         The values, in the order of the method's C parameters after ``n_out``.
     """
-    from derive.methods.registry import method as compiled
-
     values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps}
     return tuple(values[name] for _, name in compiled(method).params)
 
@@ -280,13 +280,11 @@ def c_sources(desc, method: str) -> dict[str, str]:
 class MeasureKernel:
     """``<name>_measure_batch_<method>``: N measured simulations in one C call (init map,
     integration with the measures' hook, outputs at the requested times)."""
-
     _cache: dict = {}
 
     def __init__(self, desc, method, lib):
         self.desc, self.method, self.lib = desc, method, lib
         self.ny, self.nout = len(desc.states), len(desc.outputs)
-        from derive.methods.registry import method as compiled
 
         vp, cl, cd, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_double, ctypes.c_int
         ctype = {"double": cd, "long": cl, "int": ci}
@@ -307,9 +305,6 @@ class MeasureKernel:
     @classmethod
     def load(cls, desc, method: str) -> "MeasureKernel":
         """Compiled once per machine (the compile cache), loaded once per process."""
-        from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-        from derive.methods.registry import measure_window
-
         window = measure_window(method)
         if window is None:
             raise ValueError(f"measures need a method with a dense output between its steps, not {method}")
@@ -339,8 +334,6 @@ class MeasureKernel:
         has status RANGE and NaN measures, and the other points run on."""
         import threading
 
-        from derive.runtime.integrate import STATS_DTYPE
-        from derive.methods.status import Status
 
         nb, n = inputs.shape[0], t.shape[0]
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)

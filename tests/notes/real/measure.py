@@ -7,7 +7,7 @@ verdict per display (``holds``, ``typo``, ``fails``, ``not a claim``) with the r
 ``<slug>_truth.py``: a SymPy derivation in the text's own convention and names that never goes
 through the reader. Every ``typo``/``fails`` row carries two hand checks.
 
-A display's figures (the issue's three):
+A display's figures (three of them):
 
 * **checkable**: its truth is not ``not a claim``;
 * **checked**: the reader gave at least one statement of it a verdict (holds, typo, fails);

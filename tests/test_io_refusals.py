@@ -1,4 +1,4 @@
-"""Issue 22 ("nothing lost, nothing hangs"), inputs and outputs: an output never replaces an input,
+"""Inputs and outputs: an output never replaces an input,
 special and oversized files are refused before they are read, a key named twice in any spelling
 is refused, `analyze` survives extreme but finite numbers, and the smaller holes (bench and
 generate output folders, a NUL in a path, the documented rtol floor, huge titles, the SciPy step
@@ -99,7 +99,7 @@ def test_the_python_writers_refuse_their_inputs(files):
     # Internal modules: derive.simulate and derive.sweep return results; the writers that put
     # them into files are simulation.write_outputs and sweeps.write.
     from derive.sim.simulation import write_outputs
-    from derive.sweeps.engine import write
+    from derive.sweeps.result import write
 
     scene, sweep = files
     res = derive.simulate(str(scene))

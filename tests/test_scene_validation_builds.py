@@ -1,10 +1,6 @@
-"""What scene validation must keep while it is made fast (it runs for every scene ``simulate``
-is given): the Scene it builds, field by field and type by type, for the shapes of valid input a
-shortcut could mishandle; the first problem in document order when a fast check skips the slow
-one; the registry-derived key sets following the registry; the objects built without their
-``__init__`` being the same objects."""
+"""What scene validation builds: the Scene, field by field and type by type, for every shape of
+valid input; the first problem in document order; the key sets following the effects registry."""
 import copy
-import dataclasses
 import math
 import types
 
@@ -92,7 +88,7 @@ VALID = [
                                                        "com": (0.01, 0.0, 0.03)},
                                            "gravity_general", ("M", "g", "com")),
                    "damping": table_values("damping", {"c": 0.25}, "damping", ("c",))})),
-    # ... and is l, written back as l (issue 17, item 12: one spelling per body)
+    # ... and is l, written back as l
     ("com on axis 3 selects axial gravity, l derived",
      edited(gravity={"M": 1.0, "g": 1.0, "com": [0, 0, 2]}), {},
      scene(tables={"gravity": table_values("gravity", {"M": 1.0, "g": 1.0, "l": 2.0,
@@ -141,36 +137,13 @@ def test_valid_variants_give_the_scene_built_by_hand(name, data, overrides, expe
     assert load_scene(got) == got
 
 
-def test_the_objects_validation_builds_are_those_the_constructors_build():
-    """The validator fills the frozen dataclasses' __dict__ directly: every field must be there,
-    nothing else (bar Scene's effects memo), and the result must behave like a constructed one."""
-    got = load_scene(VALID[4][1])
-    for obj in (got.body, got.initial, got.simulate, got):
-        cls = type(obj)
-        names = [f.name for f in dataclasses.fields(cls)]
-        assert set(vars(obj)) - {"_effects"} == set(names)
-        rebuilt = cls(**{n: getattr(obj, n) for n in names})
-        assert rebuilt == obj and repr(rebuilt) == repr(obj)
-        with pytest.raises(dataclasses.FrozenInstanceError):
-            setattr(obj, names[0], None)
-    assert hash(got.body) == hash(Body(*got.body.moments))
-
-
-def test_the_effects_memo_set_by_validation_is_what_the_property_computes():
-    for _, data, overrides, _ in VALID:
-        got = load_scene(data, **overrides)
-        memo = got.effects
-        object.__delattr__(got, "_effects")
-        assert got.effects == memo
-
-
 def error(data, **overrides) -> str:
     with pytest.raises(SceneError) as info:
         load_scene(data, **overrides)
     return str(info.value)
 
 
-# The first problem in document order, where a fast check could skip to a later one.
+# The first problem in document order.
 FIRST_PROBLEM = [
     ("unknown key before a bad value in the same table",
      edited(body={"I1": 1.0, "i3": 2.0, "I3": -1.0}), {},

@@ -1,4 +1,4 @@
-"""What a newcomer and a physicist hit (issue 17, items 1, 5, 6, 9, 10).
+"""Inputs of the wrong shape, output extensions, overrides, figures and notes on the command line.
 
 1. Validation: a value of the wrong shape where a vector belongs (a 0-d array, a NumPy scalar,
    an array of another shape, a ragged list, a string, booleans) is a SceneError naming the key,
@@ -56,7 +56,7 @@ def with_value(base: dict, table: str, key: str, value) -> dict:
 # --- 1. vectors of the wrong shape ------------------------------------------------------------
 
 NOT_A_VECTOR = [
-    np.array(2.0),                      # the issue's case: len() of a 0-d array raises
+    np.array(2.0),                      # len() of a 0-d array raises
     np.array(2.0, dtype=object),
     np.float64(2.0), np.int64(3), np.bool_(True), 2.0, 3, True,
     np.array([[1.0, 2.0, 3.0]]), np.array([[1.0], [2.0], [3.0]]), np.zeros((3, 3)),
@@ -614,7 +614,7 @@ def test_flip_line_is_one_based_with_its_slope_per_decade_and_nan_marked(mpl):
 
 
 def _wp_points(family, method, formulation, t0, n, failed=0):
-    from derive.bench.runner import Point
+    from derive.bench.workprecision import Point
 
     pts = [Point("s", family, method, formulation, f"rtol=1e-{k + 4}", t0 * 1.6 ** k,
                  int(1000 * 1.6 ** k), 10.0 ** (-4 - k)) for k in range(n)]
@@ -626,7 +626,7 @@ def _wp_points(family, method, formulation, t0, n, failed=0):
 def test_work_precision_series_differ_by_colour_and_marker_in_a_grouped_legend(mpl):
     from matplotlib.colors import to_rgba
 
-    from derive.bench.runner import Curve, work_precision_figure
+    from derive.bench.workprecision import Curve, work_precision_figure
 
     curves = [Curve("ours", "dop853", form, _wp_points("ours", "dop853", form, 1e-3 * (1 + k), 6,
                                                          failed=int(form == "quaternion")))

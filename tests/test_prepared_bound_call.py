@@ -1,7 +1,5 @@
-"""The thin call (issue 20, item 3): a prepared run binds its C call once (buffer layout,
-pointers, converted arguments) and gives the same numbers, statuses and exceptions as
-``derive.simulate``; ``derive.simulate(dict)`` reuses the structural work of a scene of the same
-shape and never a stale plan."""
+"""A prepared run binds its C call once (buffer layout, pointers, converted arguments) and gives
+the same numbers, statuses and exceptions as ``derive.simulate``, run after run."""
 from __future__ import annotations
 
 import copy

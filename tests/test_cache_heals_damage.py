@@ -1,4 +1,4 @@
-"""Issue 22, items 2 and 8: the compile cache owns only what it made (it knows its own files by
+"""The compile cache owns only what it made (it knows its own files by
 the marks it wrote, never by a name pattern, and never reaches through a symbolic link), and it
 heals every damage to a cached library, checksum, derived-model description or C source once,
 after which the next run is warm.
