@@ -5,11 +5,11 @@
  * save (derive_saveat of derive_runtime.h) says which times (the grid save->t_out or its last
  * time alone) and which outputs (the states from given starts, or the init map's start, the
  * states and the checked outputs); it integrates y' = euler_poisson_sym_rhs(t, y, p) from t_out[0] to
- * t_out[n_out-1] for each of n_batch trajectories, y_i(t_out[k]) at y[k*euler_poisson_sym_NY + i]. The integration loop runs here in
- * C; no allocation. The return value equals st->status (0 = success, DERIVE_* of
- * derive_runtime.h); st is always filled (it may be NULL). Every loop asks derive_interrupted()
- * once per step and stops with DERIVE_INTERRUPTED when it says so. On failure y_out holds the
- * outputs reached so far.
+ * t_out[n_out-1] for each of n_batch trajectories, y_i(t_out[k]) at y[k*euler_poisson_sym_NY + i]. The
+ * integration loop runs here in C; no allocation. The return value equals st->status (0 =
+ * success, DERIVE_* of derive_runtime.h); st is always filled (it may be NULL for one
+ * trajectory). Every loop asks derive_interrupted() once per step and stops with
+ * DERIVE_INTERRUPTED when it says so. On failure y holds the states reached so far.
  *
  * Fixed-step methods split each output interval [t_k, t_k+1] into ceil((t_k+1 - t_k)/h) equal
  * steps, so steps land on the output times. The adaptive method (dop853) steps freely and
