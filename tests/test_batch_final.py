@@ -1,6 +1,6 @@
 """The final-only batch driver: ``derive.simulate_batch(scenes,
 outputs="final")`` on a formulation whose α and γ are states integrates each trajectory straight
-to the end (``<model>_simulate_final_batch_<method>``), with the full batch's last sample bit
+to the end (``<model>_run_<method>`` saving the last time), with the full batch's last sample bit
 for bit where the full path's unwrapping of the angles did not fire; the others keep the full
 grid."""
 import tracemalloc

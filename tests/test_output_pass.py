@@ -142,12 +142,14 @@ def test_a_failing_prepared_run_in_a_dirty_buffer_reports_simulate_s_status(monk
 
 @pytest.fixture(scope="module")
 def finite_check():
-    """``<model>_outputs_finite`` of the reduced-u top's dop853 kernel, and its sizes."""
+    """The runtime's ``derive_outputs_finite`` (the pass the run drivers make over a model's
+    outputs) over the reduced-u top's outputs, and their count."""
     data = _scene(method="dop853", formulation="reduced-u")
     c = derive.prepare(data).plan.candidates[0]
-    fn = getattr(c.kernel.lib, f"{c.desc.name}_outputs_finite")
-    fn.argtypes, fn.restype = (ctypes.c_long, DP, DP, ctypes.c_void_p), ctypes.c_int
-    return fn, c.kernel.nout
+    nobs = c.kernel.nout
+    raw = c.kernel.lib.derive_outputs_finite
+    raw.argtypes, raw.restype = (ctypes.c_long, ctypes.c_int, DP, DP, ctypes.c_void_p), ctypes.c_int
+    return (lambda n_out, t, out, st: raw(n_out, nobs, t, out, st)), nobs
 
 
 def _check(finite_check, out, t):

@@ -102,10 +102,11 @@ def test_each_method_selected_from_the_full_file_compiles_with_all_warnings_as_e
                                     f"-DDERIVE_WITH_{method.upper()}"])
 
 
-def test_rendered_header_declares_every_method():
+def test_rendered_header_declares_one_run_driver_per_method():
     h = render_solvers("osc", 2)["osc_solvers.h"]
     for name, m in METHODS.items():
-        assert f"int osc_solve_{name}(" in h and f"int osc_solve_batch_{name}(" in h
+        assert f"int osc_run_{name}(const derive_saveat *save, long n_batch," in h
+    assert "osc_solve_" not in h and "osc_simulate_" not in h
     assert '#include "derive_runtime.h"' in h and "typedef struct" not in h
 
 
@@ -459,16 +460,17 @@ static int after(void *data)
 
 int main(void)
 {
-    const double y0[2] = {1.0, 0.0}, p[1] = {2.0}, t[2] = {0.0, 100.0};
-    double y[4];
+    const double y0[2] = {1.0, 0.0}, t[2] = {0.0, 100.0};
+    double p[1] = {2.0}, y[4];
+    const derive_saveat save = {t, 2, 0, 0, 0, 0};
     derive_stats st;
     long n = 5;
-    int free_run = osc_solve_rk4(y0, p, t, 2, 0.01, y, &st), stopped;
+    int free_run = osc_run_rk4(&save, 1, y0, p, 0.01, y, NULL, &st), stopped;
     derive_set_interrupt_check(after, &n);
-    stopped = osc_solve_rk4(y0, p, t, 2, 0.01, y, &st);
+    stopped = osc_run_rk4(&save, 1, y0, p, 0.01, y, NULL, &st);
     printf("%d %d %ld\n", free_run, stopped, st.nstep);
     derive_set_interrupt_check(NULL, NULL);
-    printf("%d\n", osc_solve_rk4(y0, p, t, 2, 0.01, y, &st));
+    printf("%d\n", osc_run_rk4(&save, 1, y0, p, 0.01, y, NULL, &st));
     return 0;
 }
 """

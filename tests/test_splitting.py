@@ -361,6 +361,7 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
     import ctypes
 
     from derive.methods.status import Status
+    from derive.runtime.integrate import SaveAt, saveat
 
     sp = splitters(False, ("gravity_general",))
     lib, P = sp.lib, sp.model.name
@@ -372,10 +373,10 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
     f64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
     outs = {}
     for m, extra, cty in (("splitting4", (0.001,), [ctypes.c_double]), ("rk4", (0.001,), [ctypes.c_double])):
-        fn = getattr(lib, f"{P}_simulate_{m}")
-        fn.argtypes = [f64, f64, f64, ctypes.c_long, *cty, f64, f64, ctypes.c_void_p]
+        fn = lib[f"{P}_run_{m}"]  # (a fresh function object: the splitter keeps its own)
+        fn.argtypes = [ctypes.POINTER(SaveAt), ctypes.c_long, f64, f64, *cty, f64, f64, ctypes.c_void_p]
         y_work, out = np.zeros(len(t) * 9), np.zeros(nobs * len(t))
-        assert fn(inp, p.copy(), t, len(t), *extra, y_work, out, None) == 0
+        assert fn(saveat(t), 1, inp, p.copy(), *extra, y_work, out, None) == 0
         outs[m] = out
         if m == "splitting4":
             y, _ = sp.solve(m, y_work[:9], p, t, 0.001)

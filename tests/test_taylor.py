@@ -37,7 +37,7 @@ from derive.methods.taylor import METHODS as TAYLOR
 from derive.reference import exact
 from derive.runtime import catalogue
 from derive.runtime.cbuild import STRICT_FLAGS, compile_library
-from derive.runtime.integrate import STATS_DTYPE, ModelKernel
+from derive.runtime.integrate import STATS_DTYPE, ModelKernel, SaveAt, saveat
 from derive.sim.scene import METHODS as SCENE_METHODS
 from derive.symbolic.models import Model, build
 
@@ -207,20 +207,20 @@ def test_every_rule_against_the_composed_series_and_strict_c99():
 
 
 def test_the_solver_alone_against_mpmath():
-    """taylor_rules_solve_taylor (no model header beyond the sizes, no simulate driver) against
+    """taylor_rules_run_taylor from given starts (no model header beyond the sizes, no init map) against
     SciPy's DOP853 at rtol 1e-13 on the lambdified SymPy right-hand side, t ∈ [0, 1], rtol
     1e-12: within 1e-11."""
     model = _rules_model()
     lib = _rules_library(model)
-    fn = lib.taylor_rules_solve_taylor
-    fn.argtypes = [_P, _P, _P, ctypes.c_long, _D, _D, ctypes.c_long, _P, _P]
+    fn = lib.taylor_rules_run_taylor
+    fn.argtypes = [ctypes.POINTER(SaveAt), ctypes.c_long, _P, _P, _D, _D, ctypes.c_long, _P, _P, _P]
     fn.restype = _I
     y0, p = np.array([0.3, 0.7, 0.4]), np.array([0.8, 1.5])
     t_out = np.linspace(0.0, 1.0, 11)
     y = np.full((11, 3), np.nan)
     st = np.zeros(1, dtype=STATS_DTYPE)
-    rc = fn(y0.ctypes.data, p.ctypes.data, t_out.ctypes.data, 11, 1e-12, 1e-14, 10000,
-            y.ctypes.data, st.ctypes.data)
+    rc = fn(saveat(t_out, outputs=False), 1, y0.ctypes.data, p.ctypes.data, 1e-12, 1e-14, 10000,
+            y.ctypes.data, None, st.ctypes.data)
     assert rc == 0 and st[0]["status"] == 0 and st[0]["nfev"] == st[0]["nstep"] > 0
     t = sp.Symbol("t")
     f = sp.lambdify([t, list(model.states), list(model.params)], list(model.rhs), modules="math")

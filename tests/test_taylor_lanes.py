@@ -1,5 +1,5 @@
-"""The Taylor method's lanes driver: ``<model>_simulate_lanes_batch_taylor``
-runs W trajectories at once (W from the CPU it was built for: ``-march=native``), every lane its
+"""The Taylor method's lanes driver (``<model>_run_taylor`` saving the last time with
+``save->lanes``) runs W trajectories at once (W from the CPU it was built for: ``-march=native``), every lane its
 own steps. Each trajectory's state, outputs, status and statistics are the scalar final-only
 driver's (built with the default flags) bit for bit, failing lanes included, and
 ``derive.simulate_batch(..., outputs="final")`` with the Taylor method runs it."""

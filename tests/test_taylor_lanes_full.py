@@ -1,5 +1,5 @@
-"""The Taylor method's full-grid lanes driver:
-``<model>_simulate_lanes_full_batch_taylor`` runs W trajectories at once with every sample, each
+"""The Taylor method's full-grid lanes driver (``<model>_run_taylor`` saving every sample with
+``save->lanes``) runs W trajectories at once with every sample, each
 lane its own steps, each step's samples made by the scalar solver's own dense output from the
 lane's series (kept a few steps and then made together). Each trajectory's states, outputs,
 status and statistics are the scalar full batch driver's bit for bit, and

@@ -5,7 +5,7 @@ One FMU, both interfaces (FMI 2.0, model exchange and co-simulation):
 * model exchange: the states ``state.<name>`` are the model's state y, their derivatives
   ``der(state.<name>)`` its right-hand side; the importer integrates;
 * co-simulation: ``fmi2DoStep`` integrates from one communication point to the next with the
-  generated solver of the scene's method (``<model>_solve_<method>``, restarted at each point).
+  generated solver of the scene's method (``<model>_run_<method>`` from the state, restarted at each point).
 
 Parameters (variability "fixed", start values from the scene): the model's parameters by scene
 key (``body.I1``, ``gravity.M``, …), the init map's inputs (``initial.alpha`` …

@@ -17,11 +17,10 @@ Adding a Runge–Kutta method adds a tableau and one :data:`METHODS` entry;
 registries of their own, with their own templates, merged by :func:`compiled_methods`. The generated C API (``<prefix>_solvers.h``)
 is, for each method ``m`` and model prefix ``M``::
 
-    int M_solve_m(const double *y0, const double *p, const double *t_out, long n_out,
-                  <driver parameters>, double *y_out, derive_stats *st);
-    int M_solve_batch_m(long n_batch, const double *y0s, const double *ps,
-                        const double *t_out, long n_out, <driver parameters>,
-                        double *y_out, derive_stats *st);
+    int M_run_m(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+                <driver parameters>, double *y, double *out, derive_stats *st);
+
+(``derive_saveat`` of ``derive_runtime.h``: which times and which outputs to save).
 """
 from __future__ import annotations
 

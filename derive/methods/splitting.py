@@ -50,11 +50,8 @@ against them.
 
 The generated C API (``<prefix>_splitting.h``) is that of the fixed-step solvers::
 
-    int M_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
-                           double h, double *y_out, derive_stats *st);
-    int M_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
-                                 const double *t_out, long n_out, double h,
-                                 double *y_out, derive_stats *st);
+    int M_run_splitting4(const derive_saveat *save, long n_batch, const double *ins,
+                         double *ps, double h, double *y, double *out, derive_stats *st);
 """
 from __future__ import annotations
 

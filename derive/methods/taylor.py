@@ -31,9 +31,9 @@ that of the adaptive solvers, plus the coefficients themselves::
 
     int M_taylor_coefficients(double t, const double *y, const double *p, int order,
                               double *c);      /* c[i*(order+1) + n] = y_i,n */
-    int M_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-                       double rtol, double atol, long max_steps, double *y_out,
-                       derive_stats *st);
+    int M_run_taylor(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+                     double rtol, double atol, long max_steps, double *y, double *out,
+                     derive_stats *st);
 """
 from __future__ import annotations
 

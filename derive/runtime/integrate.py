@@ -1,7 +1,8 @@
 """Integrate a compiled model: the Python face of the generated C solvers.
 
 A :class:`Kernel` wraps one loaded library holding a model (``<prefix>_rhs``, ``<prefix>_jac``,
-the state and parameter names) and its rendered solvers (``<prefix>_solve_<method>``). Python
+the state and parameter names) and its rendered solvers: one driver per method,
+``<prefix>_run_<method>``, told what to save by a ``derive_saveat`` (:class:`SaveAt`). Python
 enters C once per trajectory (``solve``) or once per batch (``solve_batch``); the stepping,
 step-size control and dense output all run in C.
 
@@ -46,6 +47,23 @@ _STATS_DOUBLES = STATS_DTYPE.itemsize // 8
 assert STATS_DTYPE.itemsize % 8 == 0 and STATS_DTYPE.alignment <= 8  # a record fits a double slice
 
 _C_TYPES = {"double": ctypes.c_double, "long": ctypes.c_long, "int": ctypes.c_int}
+
+
+class SaveAt(ctypes.Structure):
+    """``derive_saveat`` of ``derive_runtime.h``: what a run driver ``<prefix>_run_<method>``
+    saves. ``t_out``/``n_out``: the output times; ``final``: 1 for the last time alone;
+    ``outputs``: 1 when the inputs go through the init map and the checked outputs are written
+    (0: the inputs are start states, the states alone are written); ``pole_check``: 0, 1 or 2;
+    ``lanes``: 1 to run a Taylor method's trajectories several at once where compiled."""
+
+    _fields_ = [("t_out", ctypes.c_void_p), ("n_out", ctypes.c_long), ("final", ctypes.c_int),
+                ("outputs", ctypes.c_int), ("pole_check", ctypes.c_int), ("lanes", ctypes.c_int)]
+
+
+def saveat(t: np.ndarray, *, final: bool = False, outputs: bool = True, pole_check: int = 0,
+           lanes: bool = False) -> SaveAt:
+    """A :class:`SaveAt` over the C-contiguous float64 times ``t`` (the caller keeps ``t``)."""
+    return SaveAt(t.ctypes.data, t.shape[0], int(final), int(outputs), int(pole_check), int(lanes))
 _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
 _STATS = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
 
@@ -145,7 +163,7 @@ class Kernel:
         self.param_names = self._names("param_names", self.np)
         self._rhs = self._bind(f"{prefix}_rhs", [ctypes.c_double, _F64, _F64, _F64])
         self._jac = self._bind(f"{prefix}_jac", [ctypes.c_double, _F64, _F64, _F64])
-        self.methods = tuple(m for m in METHODS if hasattr(lib, f"{prefix}_solve_{m}"))
+        self.methods = tuple(m for m in METHODS if hasattr(lib, f"{prefix}_run_{m}"))
         self._solvers: dict[str, tuple] = {}
 
     def __repr__(self) -> str:
@@ -188,12 +206,10 @@ class Kernel:
             if method not in self.methods:
                 raise ValueError(f"method {method!r} was not compiled into {self.prefix}")
             extra = [_C_TYPES[ty] for ty, _ in METHODS[method].params]
-            single = self._bind(f"{self.prefix}_solve_{method}",
-                                [_F64, _F64, _F64, ctypes.c_long, *extra, _F64, _STATS])
-            batch = self._bind(f"{self.prefix}_solve_batch_{method}",
-                               [ctypes.c_long, _F64, _F64, _F64, ctypes.c_long, *extra, _F64,
-                                _STATS])
-            self._solvers[method] = (single, batch)
+            self._solvers[method] = self._bind(
+                f"{self.prefix}_run_{method}",
+                [ctypes.POINTER(SaveAt), ctypes.c_long, _F64, _F64, *extra, _F64, ctypes.c_void_p,
+                 _STATS])
         return self._solvers[method]
 
     def _vector(self, x, n: int, what: str) -> np.ndarray:
@@ -288,8 +304,7 @@ class Kernel:
         p = self._params(p)
         y = np.full((t.size, self.ny), np.nan)
         st = np.zeros(1, dtype=STATS_DTYPE)
-        single, _ = self._solver(method)
-        single(y0, p, t, t.size, *extra, y, st)
+        self._solver(method)(saveat(t, outputs=False), 1, y0, p, *extra, y, None, st)
         st = st[0]
         message = "success"
         if st["status"]:
@@ -326,8 +341,7 @@ class Kernel:
             raise ValueError("ps must be finite")
         y = np.full((n, t.size, self.ny), np.nan)
         st = np.zeros(max(n, 1), dtype=STATS_DTYPE)
-        _, batch = self._solver(method)
-        batch(n, y0s, ps, t, t.size, *extra, y, st)
+        self._solver(method)(saveat(t, outputs=False), n, y0s, ps, *extra, y, None, st)
         st = st[:n]
         messages = tuple(failure_message(s, self.state_names, max_steps) if s["status"]
                          else "success" for s in st)
@@ -357,8 +371,9 @@ def _interruptible(lib, prefix: str):
 
 
 class ModelKernel:
-    """A compiled (model, method) pair: ``<name>_simulate_<method>`` runs the init map, the
-    whole integration and the output map in one call, writing into arrays passed in.
+    """A compiled (model, method) pair: ``<name>_run_<method>`` runs the init map, the whole
+    integration and the output map in one call, writing into arrays passed in; what it saves
+    (every sample or the last, one trajectory or a batch, lanes) is its :class:`SaveAt`.
 
     Built from a :class:`derive.runtime.catalogue.Description` and its generated C files (the model and
     its solvers, one translation unit compiled with only this method: ``-DDERIVE_SELECT
@@ -375,53 +390,41 @@ class ModelKernel:
         vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
         self._init = self._fn(f"{p}_init", [vp, vp, vp])
         self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
-        self._sim_final = self._sim_lanes = self._sim_lanes_full = None
         self.lanes = 0
-        self.has_lanes = False
+        self.has_lanes = self.has_final = False
         if method is not None:
             spec = compiled_method(method)
             extra = [_C_TYPES[ty] for ty, _ in spec.params]
             self._arg_names = tuple(name for _, name in spec.params)
             self.adaptive = spec.driver in TOLERANCE_DRIVERS  # steps by rtol/atol, not by h
-            self._sim = self._fn(f"{p}_simulate_checked_{method}",
-                                 [vp, vp, vp, cl, *extra, ci, vp, vp, vp])
+            # the final-only saves: the methods that step by the tolerance alone (a fixed step's
+            # samples set its steps)
+            self.has_final = self.adaptive
+            self._run = self._fn(f"{p}_run_{method}", [vp, cl, vp, vp, *extra, vp, vp, vp])
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
-            self._sim_batch = self._fn(f"{p}_simulate_batch_{method}",
-                                       [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
-            # the final-only batch (a splitting method has none: its batches take the full grid)
-            self._sim_final = (self._fn(f"{p}_simulate_final_batch_{method}",
-                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
-                               if hasattr(lib, f"{p}_simulate_final_batch_{method}") else None)
-            # the Taylor methods' lanes driver (the final-only batch, W trajectories at once)
-            self._sim_lanes = (self._fn(f"{p}_simulate_lanes_batch_{method}",
-                                        [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
-                               if hasattr(lib, f"{p}_simulate_lanes_batch_{method}") else None)
-            # and its full-grid lanes driver (every sample, W trajectories at once)
-            self._sim_lanes_full = (self._fn(f"{p}_simulate_lanes_full_batch_{method}",
-                                             [cl, vp, vp, vp, cl, *extra, ci, vp, vp, vp])
-                                    if hasattr(lib, f"{p}_simulate_lanes_full_batch_{method}") else None)
-            self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
-                          if self._sim_lanes is not None else 0)
-            # the method has lanes drivers, compiled in the library built for lanes (native)
+            # a Taylor method has lanes (its lanes library built for this CPU, where the
+            # compiler has GNU C's vectors, holds them: taylor_lanes, the lanes' width)
             self.has_lanes = hasattr(lib, f"{p}_taylor_has_lanes")
+            self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
+                          if hasattr(lib, f"{p}_taylor_lanes") else 0)
             self._guard = _interruptible(lib, p)
             if self._guard is not None:
                 self._guard.argtypes = [ci]
                 self._guard.restype = ci
         self._bound_parts: dict = {}
 
-    def _unchecked_call(self, args, pole_check: int):
+    def _unchecked_call(self, args):
         """(driver, guard, driver arguments as ctypes instances) for :class:`BoundRun`: the
         driver and the guard without argtypes (they convert nothing), made once per kernel and
         set of arguments."""
-        key = (tuple(args), pole_check)
+        key = tuple(args)
         parts = self._bound_parts.get(key)
         if parts is None:
-            sim = self._sim
-            conv = tuple(ty(v) for ty, v in zip(sim.argtypes[4:], [*args, pole_check]))
+            run = self._run
+            conv = tuple(ty(v) for ty, v in zip(run.argtypes[4:], args))
             guard = None if self._guard is None else _unchecked(self.lib, self._guard.__name__)
-            parts = self._bound_parts[key] = (_unchecked(self.lib, sim.__name__), guard, conv)
+            parts = self._bound_parts[key] = (_unchecked(self.lib, run.__name__), guard, conv)
         return parts
 
     def _fn(self, symbol, argtypes):
@@ -514,14 +517,11 @@ class ModelKernel:
         start that fails it stops the batch (its status RANGE). ``buffers``: (out, y) arrays to
         write into instead of new ones (C-contiguous float64, at least N trajectories long; the
         first N are used), so a caller running chunks maps its work arrays once. ``lanes``: by
-        a Taylor method's full-grid lanes driver (``<name>_simulate_lanes_full_batch_<method>``,
-        :attr:`has_lanes_full`: :attr:`lanes` trajectories at once), the same numbers, statuses
-        and statistics; a refused start then stops the batch before anything is integrated."""
-        fn = self._sim_batch
-        if lanes:
-            if self._sim_lanes_full is None:
-                raise ValueError(f"{self.desc.name}: method {self.method!r} has no full-grid lanes batch driver")
-            fn = self._sim_lanes_full
+        a Taylor method's lanes (``SaveAt.lanes``, :attr:`has_lanes_full`: :attr:`lanes`
+        trajectories at once), the same numbers, statuses and statistics; a refused start then
+        stops the batch before anything is integrated."""
+        if lanes and not self.has_lanes_full:
+            raise ValueError(f"{self.desc.name}: method {self.method!r} has no full-grid lanes batch driver")
         nb, n = inputs.shape[0], t.shape[0]
         if buffers is None:
             out = np.empty((nb, self.nout, n))
@@ -535,7 +535,9 @@ class ModelKernel:
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-        self._call(fn, nb, _ptr(inputs), _ptr(ps), _ptr(t), n, *args, pole_check,
+        t = np.ascontiguousarray(t, dtype=np.float64)
+        save = saveat(t, pole_check=pole_check, lanes=lanes)
+        self._call(self._run, ctypes.byref(save), nb, _ptr(inputs), _ptr(ps), *args,
                    _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
 
@@ -554,25 +556,22 @@ class ModelKernel:
     def has_lanes_full(self) -> bool:
         """Whether the library holds the full-grid lanes driver (``simulate_batch(lanes=True)``):
         a Taylor method's lanes library (``load(..., "lanes")``) built with GNU C's vectors."""
-        return self._sim_lanes_full is not None and self.lanes > 0
-
-    @property
-    def has_final(self) -> bool:
-        """Whether the library holds the final-only batch driver (:meth:`simulate_final_batch`)."""
-        return self._sim_final is not None
+        return self.lanes > 0
 
     def simulate_lanes_batch(self, inputs, ps, t, args, pole_check: int = 0):
         """:meth:`simulate_final_batch` with the trajectories run :attr:`lanes` at a time by a
-        Taylor method's lanes driver (``<name>_simulate_lanes_batch_<method>``): each trajectory's
+        Taylor method's lanes (``SaveAt.lanes``, :attr:`has_lanes_full`): each trajectory's
         numbers, status and statistics are the scalar driver's bit for bit (every lane its own
         steps). Every start is made first: a refused one (``pole_check``) stops the batch with
         status RANGE before anything is integrated. Same arguments and results."""
-        return self._final_call(self._sim_lanes, "lanes", inputs, ps, t, args, pole_check)
+        if not self.has_lanes_full:
+            raise ValueError(f"{self.desc.name}: method {self.method!r} has no lanes batch driver")
+        return self._final_call(True, inputs, ps, t, args, pole_check)
 
     def simulate_final_batch(self, inputs, ps, t, args, pole_check: int = 0):
         """N trajectories integrated straight to ``t[-1]``, the last sample only.
 
-        The C driver ``<name>_simulate_final_batch_<method>``: the same steps as
+        The C driver ``<name>_run_<method>`` saving the last time (``SaveAt.final``): the same steps as
         :meth:`simulate_batch` (its interior samples are dense output), no output map but at the
         end, and the angles of that one sample made canonical alone (β's range, no unwrapping
         from the samples before: for formulations whose α, γ are states, see
@@ -596,11 +595,11 @@ class ModelKernel:
         tuple
             (out (N, NOBS), y (N, NY), ps, stats (N,)).
         """
-        return self._final_call(self._sim_final, "final-only", inputs, ps, t, args, pole_check)
+        if not self.has_final:
+            raise ValueError(f"{self.desc.name}: method {self.method!r} has no final-only batch driver")
+        return self._final_call(False, inputs, ps, t, args, pole_check)
 
-    def _final_call(self, fn, what, inputs, ps, t, args, pole_check):
-        if fn is None:
-            raise ValueError(f"{self.desc.name}: method {self.method!r} has no {what} batch driver")
+    def _final_call(self, lanes, inputs, ps, t, args, pole_check):
         nb = inputs.shape[0]
         out = np.empty((nb, self.nout))
         y = np.empty((nb, self.ny))
@@ -608,7 +607,8 @@ class ModelKernel:
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         t = np.ascontiguousarray(t, dtype=np.float64)
-        self._call(fn, nb, _ptr(inputs), _ptr(ps), _ptr(t), t.shape[0], *args, pole_check,
+        save = saveat(t, final=True, pole_check=pole_check, lanes=lanes)
+        self._call(self._run, ctypes.byref(save), nb, _ptr(inputs), _ptr(ps), *args,
                    _ptr(y), _ptr(out), _ptr(st))
         return out, y, ps, st[:nb]
 
@@ -667,7 +667,7 @@ class BoundRun:
     """
 
     __slots__ = ("kernel", "t", "inputs", "_size", "_shape_out", "_shape_y", "_k_y", "_k_p", "_k_st",
-                 "_fn", "_head", "_tail", "_guard", "_status", "_nfev", "_short")
+                 "_fn", "_save", "_head", "_settings", "_guard", "_status", "_nfev", "_short")
 
     def __init__(self, kernel: "ModelKernel", t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0):
         t = np.ascontiguousarray(t, dtype=np.float64)
@@ -681,9 +681,10 @@ class BoundRun:
         self._shape_out, self._shape_y = (kernel.nout, n), (n, kernel.ny)
         # The driver without argtypes, given ctypes instances: nothing is converted per call
         # (the instances of the arguments that do not change are made once per kernel).
-        self._fn, self._guard, conv = kernel._unchecked_call(args, pole_check)
-        self._head = ctypes.c_void_p(inputs.ctypes.data)
-        self._tail = (ctypes.c_void_p(t.ctypes.data), ctypes.c_long(n), *conv)
+        self._fn, self._guard, self._settings = kernel._unchecked_call(args)
+        self._save = saveat(t, pole_check=pole_check)  # (kept: the driver reads it each call)
+        self._head = (ctypes.c_void_p(ctypes.addressof(self._save)), ctypes.c_long(1),
+                      ctypes.c_void_p(inputs.ctypes.data))
         self._status = 8 * self._k_st + _STATUS_OFFSET
         self._nfev = 8 * self._k_st + _NFEV_OFFSET
         self._short = False
@@ -719,9 +720,10 @@ class BoundRun:
         buf[k_st:] = 0.0
         buf[k_p:k_st] = p
         base = ctypes.addressof(ctypes.c_char.from_buffer(buf))
-        args = (self._head if inputs is None else ctypes.c_void_p(inputs.ctypes.data),
-                ctypes.c_void_p(base + 8 * k_p), *self._tail, ctypes.c_void_p(base + 8 * self._k_y),
-                ctypes.c_void_p(base), ctypes.c_void_p(base + 8 * k_st))
+        head = self._head if inputs is None else (*self._head[:2], ctypes.c_void_p(inputs.ctypes.data))
+        args = (*head, ctypes.c_void_p(base + 8 * k_p), *self._settings,
+                ctypes.c_void_p(base + 8 * self._k_y), ctypes.c_void_p(base),
+                ctypes.c_void_p(base + 8 * k_st))
         guard = self._guard
         if guard is None or (same and self._short):
             rc = self._fn(*args)

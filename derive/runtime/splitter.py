@@ -14,7 +14,7 @@ from derive.codegen.sources import model_sources
 from derive.codegen.splitting import _omega_state, render_splitting
 from derive.methods.splitting import METHODS
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-from derive.runtime.integrate import STATS_DTYPE, Kernel
+from derive.runtime.integrate import STATS_DTYPE, Kernel, SaveAt, saveat
 
 
 def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], str]:
@@ -42,22 +42,20 @@ class Splitter:
         f64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
         st = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
         self._fns = {}
-        for name in METHODS:
-            fn = getattr(self.lib, f"{model.name}_solve_{name}")
-            fn.argtypes = [f64, f64, f64, ctypes.c_long, ctypes.c_double, f64, st]
+        for name in METHODS:  # the run drivers, saving the states from given starts
+            fn = getattr(self.lib, f"{model.name}_run_{name}")
+            fn.argtypes = [ctypes.POINTER(SaveAt), ctypes.c_long, f64, f64, ctypes.c_double, f64,
+                           ctypes.c_void_p, st]
             fn.restype = ctypes.c_int
-            bf = getattr(self.lib, f"{model.name}_solve_batch_{name}")
-            bf.argtypes = [ctypes.c_long, f64, f64, f64, ctypes.c_long, ctypes.c_double, f64, st]
-            bf.restype = ctypes.c_int
-            self._fns[name] = (fn, bf)
+            self._fns[name] = fn
 
     def solve(self, method: str, y0, p, t_out, h: float):
         """(y at every t_out, the derive_stats record) for one trajectory."""
         t = np.ascontiguousarray(t_out, dtype=np.float64)
         y = np.full((t.size, 9), np.nan)
         st = np.zeros(1, dtype=self._stats)
-        self._fns[method][0](np.ascontiguousarray(y0, dtype=np.float64),
-                             np.ascontiguousarray(p, dtype=np.float64), t, t.size, float(h), y, st)
+        self._fns[method](saveat(t, outputs=False), 1, np.ascontiguousarray(y0, dtype=np.float64),
+                          np.ascontiguousarray(p, dtype=np.float64), float(h), y, None, st)
         return y, st[0]
 
     def solve_batch(self, method: str, y0s, ps, t_out, h: float):
@@ -69,7 +67,7 @@ class Splitter:
                                                   (n, len(self.model.params))))
         y = np.full((n, t.size, 9), np.nan)
         st = np.zeros(max(n, 1), dtype=self._stats)
-        self._fns[method][1](n, y0s, ps, t, t.size, float(h), y, st)
+        self._fns[method](saveat(t, outputs=False), n, y0s, ps, float(h), y, None, st)
         return y, st[:n]
 
 

@@ -81,6 +81,38 @@ int derive_outputs_finite(long n_out, int nobs, const double *t_out, const doubl
  * [0, pi], alpha and gamma continuous. */
 void derive_canonical_angles(long n, double *a, double *b, double *c);
 
+/* What a run saves (diffrax's SaveAt), the one selector of a model's drivers
+ * <model>_run_<method>(save, n_batch, ins, ps, <the method's settings>, y, out, st):
+ *   t_out, n_out  the output times (n_out >= 1, finite, strictly increasing); t_out[0] is the start
+ *   final         0: every t_out, y[b*n_out*NY + k*NY + i] and out[b*NOBS*n_out + j*n_out + k];
+ *                 1: the last time alone, integrated straight from t_out[0] (the same steps),
+ *                 y[b*NY + i] and out[b*NOBS + j] (adaptive methods only, with outputs)
+ *   outputs       0: ins are start states (NY per trajectory), ps read only (NP each, or NULL
+ *                 for a model without parameters), the states into y, out unused;
+ *                 1: ins are the init map's inputs (NIN each), ps get the derived parameters,
+ *                 the states into y and the checked outputs (made canonical) into out
+ *   pole_check    with outputs: 0, or 1 or 2 to refuse (DERIVE_RANGE, the batch stopped) a start
+ *                 that fails <model>_pole_clear(y0, p, pole_check)
+ *   lanes         1: a Taylor method's trajectories run several at once where its lanes are
+ *                 compiled (-DDERIVE_LANES, GNU C), the same numbers; elsewhere ignored
+ * A batch stops at an interrupt (DERIVE_INTERRUPTED) or a refused start; otherwise the return
+ * value is the first trajectory's non-zero status (0 if all succeeded), st[b] each one's. */
+typedef struct derive_saveat {
+    const double *t_out;
+    long n_out;
+    int final;
+    int outputs;
+    int pole_check;
+    int lanes;
+} derive_saveat;
+
+/* Functions of a model's solver files that its run drivers call (file-local, never exported). */
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+
 /* The names of the shared solvers (derive_solvers.inc), compiled for the model DERIVE_MODEL:
  * DERIVE_M(rhs) is <model>_rhs, DERIVE_S(step) the file-local derive_<model>_step. */
 #define DERIVE_CAT_(a, b) a##b

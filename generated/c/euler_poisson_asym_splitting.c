@@ -283,7 +283,7 @@ static void derive_euler_poisson_asym_split_free(const derive_euler_poisson_asym
 /* splitting2: Lie-Poisson splitting, Strang (exact free flow and gravity kick), order 2, fixed step.
  * Scheme "strang" (BAB, 1 free flow and 2 kicks per step), order 2. */
 
-int euler_poisson_asym_solve_splitting2(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_asym_solve_splitting2(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -333,7 +333,7 @@ int euler_poisson_asym_solve_splitting2(const double *y0, const double *p, const
     return DERIVE_OK;
 }
 
-int euler_poisson_asym_solve_batch_splitting2(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_solve_batch_splitting2(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -357,13 +357,7 @@ int euler_poisson_asym_solve_batch_splitting2(long n_batch, const double *y0s, c
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
-int euler_poisson_asym_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_asym_simulate_checked_splitting2(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -388,7 +382,7 @@ int euler_poisson_asym_simulate_checked_splitting2(const double *in, double *p, 
     return rc;
 }
 
-int euler_poisson_asym_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -409,11 +403,40 @@ int euler_poisson_asym_simulate_batch_splitting2(long n_batch, const double *ins
 }
 #endif /* SIMULATE */
 
+/* splitting2: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_asym_run_splitting2(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_asym_solve_splitting2(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_asym_solve_batch_splitting2(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_asym_simulate_checked_splitting2(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_asym_simulate_batch_splitting2(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}
+
 /* ======================================================================================== */
 /* splitting4: Lie-Poisson splitting, ABA(10,6,4) of Blanes et al. for near-integrable problems, order 4, fixed step.
  * Scheme "aba(10,6,4)" (ABA, 9 free flows and 8 kicks per step), order 4, error O(eps h^10 + eps^2 h^6 + eps^3 h^4). */
 
-int euler_poisson_asym_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_asym_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -463,7 +486,7 @@ int euler_poisson_asym_solve_splitting4(const double *y0, const double *p, const
     return DERIVE_OK;
 }
 
-int euler_poisson_asym_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -487,13 +510,7 @@ int euler_poisson_asym_solve_batch_splitting4(long n_batch, const double *y0s, c
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
-int euler_poisson_asym_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_asym_simulate_checked_splitting4(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -518,7 +535,7 @@ int euler_poisson_asym_simulate_checked_splitting4(const double *in, double *p, 
     return rc;
 }
 
-int euler_poisson_asym_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -539,11 +556,40 @@ int euler_poisson_asym_simulate_batch_splitting4(long n_batch, const double *ins
 }
 #endif /* SIMULATE */
 
+/* splitting4: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_asym_run_splitting4(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_asym_solve_splitting4(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_asym_solve_batch_splitting4(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_asym_simulate_checked_splitting4(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_asym_simulate_batch_splitting4(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}
+
 /* ======================================================================================== */
 /* splitting6: Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step.
  * Scheme "kahan-li-s9" (BAB, 9 free flows and 10 kicks per step), order 6. */
 
-int euler_poisson_asym_solve_splitting6(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_asym_solve_splitting6(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -593,7 +639,7 @@ int euler_poisson_asym_solve_splitting6(const double *y0, const double *p, const
     return DERIVE_OK;
 }
 
-int euler_poisson_asym_solve_batch_splitting6(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_solve_batch_splitting6(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -617,13 +663,7 @@ int euler_poisson_asym_solve_batch_splitting6(long n_batch, const double *y0s, c
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_asym_pole_clear all the same. */
-int euler_poisson_asym_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_asym_simulate_checked_splitting6(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -648,7 +688,7 @@ int euler_poisson_asym_simulate_checked_splitting6(const double *in, double *p, 
     return rc;
 }
 
-int euler_poisson_asym_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_asym_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -668,3 +708,32 @@ int euler_poisson_asym_simulate_batch_splitting6(long n_batch, const double *ins
     return status;
 }
 #endif /* SIMULATE */
+
+/* splitting6: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_asym_run_splitting6(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_asym_solve_splitting6(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_asym_solve_batch_splitting6(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_ASYM_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_asym_simulate_checked_splitting6(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_asym_simulate_batch_splitting6(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}

@@ -137,7 +137,7 @@ static void derive_euler_poisson_sym_gravity_split_splitting2_inner(const derive
     derive_euler_poisson_sym_gravity_split_free(b, 1.0 * h, y);
 }
 
-int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -199,7 +199,7 @@ int euler_poisson_sym_gravity_solve_splitting2(const double *y0, const double *p
     return DERIVE_OK;
 }
 
-int euler_poisson_sym_gravity_solve_batch_splitting2(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_batch_splitting2(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -223,13 +223,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting2(long n_batch, const double 
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_gravity_pole_clear all the same. */
-int euler_poisson_sym_gravity_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_sym_gravity_simulate_checked_splitting2(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -254,7 +248,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting2(const double *in, doub
     return rc;
 }
 
-int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -274,6 +268,35 @@ int euler_poisson_sym_gravity_simulate_batch_splitting2(long n_batch, const doub
     return status;
 }
 #endif /* SIMULATE */
+
+/* splitting2: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_sym_gravity_run_splitting2(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_sym_gravity_solve_splitting2(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_sym_gravity_solve_batch_splitting2(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_sym_gravity_simulate_checked_splitting2(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_sym_gravity_simulate_batch_splitting2(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}
 
 /* ======================================================================================== */
 /* splitting4: Lie-Poisson splitting, ABA(10,6,4) of Blanes et al. for near-integrable problems, order 4, fixed step.
@@ -300,7 +323,7 @@ static void derive_euler_poisson_sym_gravity_split_splitting4_inner(const derive
     derive_euler_poisson_sym_gravity_split_kick(b, 0.09585888083707521 * h, y);
 }
 
-int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -361,7 +384,7 @@ int euler_poisson_sym_gravity_solve_splitting4(const double *y0, const double *p
     return DERIVE_OK;
 }
 
-int euler_poisson_sym_gravity_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -385,13 +408,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting4(long n_batch, const double 
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_gravity_pole_clear all the same. */
-int euler_poisson_sym_gravity_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_sym_gravity_simulate_checked_splitting4(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -416,7 +433,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting4(const double *in, doub
     return rc;
 }
 
-int euler_poisson_sym_gravity_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -436,6 +453,35 @@ int euler_poisson_sym_gravity_simulate_batch_splitting4(long n_batch, const doub
     return status;
 }
 #endif /* SIMULATE */
+
+/* splitting4: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_sym_gravity_run_splitting4(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_sym_gravity_solve_splitting4(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_sym_gravity_solve_batch_splitting4(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_sym_gravity_simulate_checked_splitting4(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_sym_gravity_simulate_batch_splitting4(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}
 
 /* ======================================================================================== */
 /* splitting6: Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step.
@@ -464,7 +510,7 @@ static void derive_euler_poisson_sym_gravity_split_splitting6_inner(const derive
     derive_euler_poisson_sym_gravity_split_free(b, 0.3921614440073141 * h, y);
 }
 
-int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p, const double *t_out, long n_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p, const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
     derive_stats local;
@@ -526,7 +572,7 @@ int euler_poisson_sym_gravity_solve_splitting6(const double *y0, const double *p
     return DERIVE_OK;
 }
 
-int euler_poisson_sym_gravity_solve_batch_splitting6(long n_batch, const double *y0s, const double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_solve_batch_splitting6(long n_batch, const double *y0s, const double *ps,
         const double *t_out, long n_out,
         double h, double *y_out, derive_stats *st)
 {
@@ -550,13 +596,7 @@ int euler_poisson_sym_gravity_solve_batch_splitting6(long n_batch, const double 
 
 /* The whole-simulation drivers (init map, solve, outputs), the other methods' own. The
  * Euler-Poisson state has no pole: pole_check is passed to euler_poisson_sym_gravity_pole_clear all the same. */
-int euler_poisson_sym_gravity_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st)
-{
-    return euler_poisson_sym_gravity_simulate_checked_splitting6(in, p, t_out, n_out, h, 0, y_work, out, st);
-}
-
-int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
         long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
     derive_stats local;
@@ -581,7 +621,7 @@ int euler_poisson_sym_gravity_simulate_checked_splitting6(const double *in, doub
     return rc;
 }
 
-int euler_poisson_sym_gravity_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int euler_poisson_sym_gravity_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double h, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -601,3 +641,32 @@ int euler_poisson_sym_gravity_simulate_batch_splitting6(long n_batch, const doub
     return status;
 }
 #endif /* SIMULATE */
+
+/* splitting6: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int euler_poisson_sym_gravity_run_splitting6(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double h, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return euler_poisson_sym_gravity_solve_splitting6(ins, ps, save->t_out, save->n_out, h, y, st);
+        return euler_poisson_sym_gravity_solve_batch_splitting6(n_batch, ins, ps, save->t_out, save->n_out, h, y, st);
+    }
+#if defined(DERIVE_EULER_POISSON_SYM_GRAVITY_SIMULATE)
+    if (save->final)
+        return DERIVE_BAD_ARGS;  /* the samples set a fixed-step method's steps */
+    if (n_batch == 1)
+        return euler_poisson_sym_gravity_simulate_checked_splitting6(ins, ps, save->t_out, save->n_out, h,
+                save->pole_check, y, out, st);
+    return euler_poisson_sym_gravity_simulate_batch_splitting6(n_batch, ins, ps, save->t_out, save->n_out, h,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}

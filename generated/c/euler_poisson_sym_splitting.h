@@ -20,61 +20,19 @@
 /* splitting2: Lie-Poisson splitting, Strang (exact free flow and gravity kick), order 2, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
  */
-int euler_poisson_sym_solve_splitting2(const double *y0, const double *p, const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-int euler_poisson_sym_solve_batch_splitting2(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-#if defined(euler_poisson_sym_NOBS) && defined(euler_poisson_sym_NIN)
-/* Whole simulations (init map, solve, outputs), defined when this file is compiled in one
- * translation unit after euler_poisson_sym_solvers.c; the contract of euler_poisson_sym_simulate_* there. */
-int euler_poisson_sym_simulate_splitting2(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_checked_splitting2(const double *in, double *p, const double *t_out,
-        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_batch_splitting2(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double h, int pole_check, double *y_work, double *out, derive_stats *st);
-#endif
+int euler_poisson_sym_run_splitting2(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+        double h, double *y, double *out, derive_stats *st);
 
 /* splitting4: Lie-Poisson splitting, ABA(10,6,4) of Blanes et al. for near-integrable problems, order 4, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
  */
-int euler_poisson_sym_solve_splitting4(const double *y0, const double *p, const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-int euler_poisson_sym_solve_batch_splitting4(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-#if defined(euler_poisson_sym_NOBS) && defined(euler_poisson_sym_NIN)
-/* Whole simulations (init map, solve, outputs), defined when this file is compiled in one
- * translation unit after euler_poisson_sym_solvers.c; the contract of euler_poisson_sym_simulate_* there. */
-int euler_poisson_sym_simulate_splitting4(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_checked_splitting4(const double *in, double *p, const double *t_out,
-        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_batch_splitting4(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double h, int pole_check, double *y_work, double *out, derive_stats *st);
-#endif
+int euler_poisson_sym_run_splitting4(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+        double h, double *y, double *out, derive_stats *st);
 
 /* splitting6: Lie-Poisson splitting, Kahan-Li 9-stage composition, order 6, fixed step.
  *   h           maximum step size (> 0); steps land on every t_out
  */
-int euler_poisson_sym_solve_splitting6(const double *y0, const double *p, const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-int euler_poisson_sym_solve_batch_splitting6(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double h, double *y_out, derive_stats *st);
-#if defined(euler_poisson_sym_NOBS) && defined(euler_poisson_sym_NIN)
-/* Whole simulations (init map, solve, outputs), defined when this file is compiled in one
- * translation unit after euler_poisson_sym_solvers.c; the contract of euler_poisson_sym_simulate_* there. */
-int euler_poisson_sym_simulate_splitting6(const double *in, double *p, const double *t_out, long n_out,
-        double h, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_checked_splitting6(const double *in, double *p, const double *t_out,
-        long n_out, double h, int pole_check, double *y_work, double *out, derive_stats *st);
-int euler_poisson_sym_simulate_batch_splitting6(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double h, int pole_check, double *y_work, double *out, derive_stats *st);
-#endif
+int euler_poisson_sym_run_splitting6(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+        double h, double *y, double *out, derive_stats *st);
 
 #endif /* EULER_POISSON_SYM_SPLITTING_H */

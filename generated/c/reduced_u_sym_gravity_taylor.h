@@ -3,9 +3,9 @@
  *
  * The coefficients of the solution through (t, y), y(t + tau) = sum_n y_n tau^n, from the
  * recurrences of automatic differentiation over the right-hand side's expression graph, and
- * solvers with the contract of the adaptive solvers of reduced_u_sym_gravity_solvers.h: integrate from t_out[0]
- * to t_out[n_out-1], y_out[k*reduced_u_sym_gravity_NY + i] = y_i(t_out[k]); the return value equals st->status
- * (DERIVE_* of reduced_u_sym_gravity_solvers.h). st->nfev counts expansions (one per step: every coefficient
+ * drivers with the contract of the adaptive ones of reduced_u_sym_gravity_solvers.h (reduced_u_sym_gravity_run_<method>: what
+ * to save as derive_saveat says; save->lanes runs the trajectories several at once where the
+ * lanes are compiled, the same numbers). st->nfev counts expansions (one per step: every coefficient
  * of every state to the method's order), st->nstep the steps; there are no rejected steps.
  */
 #ifndef REDUCED_U_SYM_GRAVITY_TAYLOR_H
@@ -29,26 +29,7 @@ int reduced_u_sym_gravity_taylor_coefficients(double t, const double *y, const d
  *               per state), over the states that feed something back
  *   max_steps   limit on steps (status 3 when exceeded)
  */
-int reduced_u_sym_gravity_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st);
-int reduced_u_sym_gravity_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st);
-#if defined(reduced_u_sym_gravity_NOBS) && defined(reduced_u_sym_gravity_NIN)
-/* Whole simulations (init map, solve, outputs), defined when this file is compiled in one
- * translation unit after reduced_u_sym_gravity_solvers.c; the contract of reduced_u_sym_gravity_simulate_* there. */
-int reduced_u_sym_gravity_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st);
-int reduced_u_sym_gravity_simulate_checked_taylor(const double *in, double *p, const double *t_out,
-        long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
-int reduced_u_sym_gravity_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
-/* The final-only batch (the last sample's state and outputs), as reduced_u_sym_gravity_simulate_final_batch_*
- * of reduced_u_sym_gravity_solvers.h. */
-int reduced_u_sym_gravity_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
-#endif
+int reduced_u_sym_gravity_run_taylor(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+        double rtol, double atol, long max_steps, double *y, double *out, derive_stats *st);
 
 #endif /* REDUCED_U_SYM_GRAVITY_TAYLOR_H */

@@ -627,7 +627,7 @@ static int derive_rigid_body_final_one_taylor(const double *in, double *p, const
     return rc;
 }
 
-int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
 {
@@ -1449,7 +1449,7 @@ static int derive_rigid_body_taylor_lanes_args_ok_taylor(const double *t_out, lo
  * numbers, statuses and statistics per trajectory). Every start first (the init map, the pole
  * check: the first refusal stops the batch with DERIVE_RANGE before anything is integrated),
  * then the trajectories that started, streamed through the lanes. */
-int rigid_body_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int rigid_body_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
 {
@@ -1473,7 +1473,7 @@ int rigid_body_simulate_lanes_batch_taylor(long n_batch, const double *ins, doub
  * as above: a refused start stops the batch before anything is integrated (the scalar driver
  * has integrated the trajectories before it; the caller takes the batch to the next
  * formulation either way). */
-int rigid_body_simulate_lanes_full_batch_taylor(long n_batch, const double *ins, double *ps,
+DERIVE_INTERNAL int rigid_body_simulate_lanes_full_batch_taylor(long n_batch, const double *ins, double *ps,
         const double *t_out, long n_out,
         double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
 {
@@ -1492,3 +1492,41 @@ int rigid_body_simulate_lanes_full_batch_taylor(long n_batch, const double *ins,
 }
 #endif /* DERIVE_LANES && __GNUC__ */
 #endif /* SIMULATE */
+
+/* taylor: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
+ * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
+ * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
+int rigid_body_run_taylor(const derive_saveat *save, long n_batch, const double *ins,
+        double *ps, double rtol, double atol, long max_steps, double *y, double *out, derive_stats *st)
+{
+    if (!save || n_batch < 0)
+        return DERIVE_BAD_ARGS;
+    if (!save->outputs) {
+        if (save->final)
+            return DERIVE_BAD_ARGS;
+        if (n_batch == 1)
+            return rigid_body_solve_taylor(ins, ps, save->t_out, save->n_out, rtol, atol, max_steps, y, st);
+        return rigid_body_solve_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out, rtol, atol, max_steps, y, st);
+    }
+#if defined(DERIVE_RIGID_BODY_SIMULATE)
+#if defined(DERIVE_LANES) && defined(__GNUC__)
+    if (save->lanes && save->final)
+        return rigid_body_simulate_lanes_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
+                rtol, atol, max_steps, save->pole_check, y, out, st);
+    if (save->lanes)
+        return rigid_body_simulate_lanes_full_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
+                rtol, atol, max_steps, save->pole_check, y, out, st);
+#endif
+    if (save->final)
+        return rigid_body_simulate_final_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
+                rtol, atol, max_steps, save->pole_check, y, out, st);
+    if (n_batch == 1)
+        return rigid_body_simulate_checked_taylor(ins, ps, save->t_out, save->n_out, rtol, atol, max_steps,
+                save->pole_check, y, out, st);
+    return rigid_body_simulate_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out, rtol, atol, max_steps,
+            save->pole_check, y, out, st);
+#else
+    (void)out;
+    return DERIVE_BAD_ARGS;
+#endif
+}

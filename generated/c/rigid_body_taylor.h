@@ -3,9 +3,9 @@
  *
  * The coefficients of the solution through (t, y), y(t + tau) = sum_n y_n tau^n, from the
  * recurrences of automatic differentiation over the right-hand side's expression graph, and
- * solvers with the contract of the adaptive solvers of rigid_body_solvers.h: integrate from t_out[0]
- * to t_out[n_out-1], y_out[k*rigid_body_NY + i] = y_i(t_out[k]); the return value equals st->status
- * (DERIVE_* of rigid_body_solvers.h). st->nfev counts expansions (one per step: every coefficient
+ * drivers with the contract of the adaptive ones of rigid_body_solvers.h (rigid_body_run_<method>: what
+ * to save as derive_saveat says; save->lanes runs the trajectories several at once where the
+ * lanes are compiled, the same numbers). st->nfev counts expansions (one per step: every coefficient
  * of every state to the method's order), st->nstep the steps; there are no rejected steps.
  */
 #ifndef RIGID_BODY_TAYLOR_H
@@ -29,26 +29,7 @@ int rigid_body_taylor_coefficients(double t, const double *y, const double *p, i
  *               per state), over the states that feed something back
  *   max_steps   limit on steps (status 3 when exceeded)
  */
-int rigid_body_solve_taylor(const double *y0, const double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st);
-int rigid_body_solve_batch_taylor(long n_batch, const double *y0s, const double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_out, derive_stats *st);
-#if defined(rigid_body_NOBS) && defined(rigid_body_NIN)
-/* Whole simulations (init map, solve, outputs), defined when this file is compiled in one
- * translation unit after rigid_body_solvers.c; the contract of rigid_body_simulate_* there. */
-int rigid_body_simulate_taylor(const double *in, double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, double *y_work, double *out, derive_stats *st);
-int rigid_body_simulate_checked_taylor(const double *in, double *p, const double *t_out,
-        long n_out, double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
-int rigid_body_simulate_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st);
-/* The final-only batch (the last sample's state and outputs), as rigid_body_simulate_final_batch_*
- * of rigid_body_solvers.h. */
-int rigid_body_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st);
-#endif
+int rigid_body_run_taylor(const derive_saveat *save, long n_batch, const double *ins, double *ps,
+        double rtol, double atol, long max_steps, double *y, double *out, derive_stats *st);
 
 #endif /* RIGID_BODY_TAYLOR_H */
