@@ -386,7 +386,7 @@ class Vocabulary:
                     return W[i]
                 if a.dots == 1:
                     return WD[i]
-            if sub == "0":
+            if sub == "0" and not self.open:
                 raise Unknown(f"unknown symbol {a.text}")
         if b == "e" and (a.hat or a.bold):
             if sub in ("1", "2", "3"):

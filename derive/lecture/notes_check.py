@@ -39,7 +39,6 @@ from __future__ import annotations
 
 import functools
 import json
-import random
 import re
 from dataclasses import dataclass, field
 
@@ -47,151 +46,23 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
+from derive.lecture.derivation import derivation, families
+from derive.lecture.motion import Motion
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
-from derive.symbolic import rotations as rot
-from derive.symbolic.lagrangian import (ACCELS, I1, I2, I3, Mass, Reduction, g, heavy_symmetric_top,
-                                        kinetic_energy, l)
+from derive.symbolic.lagrangian import ACCELS, I1, I2
 from derive.symbolic.rotations import ANGLES, RATES
-from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
 from derive.lecture import vectors as vc
-from derive.lecture import verify as vf
 
 VERDICTS = ("holds", "typo", "fails", "unchecked")
-
-
-# ---- the derivation, per convention -------------------------------------------------------------
-class Derivation:
-    """The derived quantities of one convention (computed on first use)."""
-
-    def __init__(self, convention: str):
-        self.rot = rot
-        self.conv = rot.convention(convention)
-
-    @functools.cached_property
-    def omega(self) -> sp.Matrix:
-        """ω̃ from the skew route Rᵀ Ṙ (independent of the notes' sum route)."""
-        return sp.Matrix(self.conv.omega_body_skew())
-
-    @functools.cached_property
-    def frames(self) -> dict:
-        """ê′ₖ and ê⁰ₖ as linear forms in the body basis (ê′ₖ = passive(a₃, γ) eₖ, ê⁰ₖ = Rᵀ eₖ)."""
-        rot, out = self.rot, {}
-        R = self.conv.matrix()
-        for k, axis in enumerate("xyz"):
-            out[lx.PRIMED[k]] = _linear(rot.passive(self.conv.axes[2], rot.gamma) * rot.unit(axis))
-            out[lx.INERTIAL[k]] = _linear(R.T * rot.unit(axis))
-        return out
-
-    @functools.cached_property
-    def top(self):
-        return heavy_symmetric_top(self.conv)
-
-    @functools.cached_property
-    def reduction(self):
-        return Reduction(self.top)
-
-    @functools.cached_property
-    def sleeping(self):
-        return SleepingTop(self.reduction)
-
-    @functools.cached_property
-    def steady_force(self):
-        """∂L/∂β at β̇ = 0: the β equation of motion of a steady precession (β̈ = 0 too)."""
-        rot = self.rot
-        return sp.expand(sp.diff(self.top.lagrangian, rot.beta).xreplace({rot.beta_d: 0}))
-
-    def euler(self, subs: dict) -> list:
-        """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
-        moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
-        rhs = euler_rhs(moments, sp.Matrix(lx.W))
-        return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
-
-    def frequencies(self):
-        o1, o2 = SteadySpin(2).frequencies
-        return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
-
-    @functools.lru_cache(maxsize=None)
-    def forms(self, key, args=None) -> list:
-        """What a named quantity is, in the forms a text may use (each compared in turn)."""
-        half = sp.Rational(1, 2)
-        Iw = [I1 * lx.W[0], I2 * lx.W[1], I3 * lx.W[2]]
-        if key is lx.T_:
-            return [half * sum(m * w**2 for m, w in zip((I1, I2, I3), lx.W)),
-                    self.top_kinetic()]
-        if key is lx.LAGRANGIAN:
-            if args and set(args) <= {self.rot.beta, self.rot.beta_d}:
-                return [self.reduction.lagrangian_substituted]
-            return [self.top.lagrangian, self.top_kinetic()]      # a free body's L is its T
-        if key is lx.LVEC:
-            return [_linear(sp.Matrix(Iw))]
-        if key is lx.ENERGY:
-            return [self.reduction.energy, self.top.energy, self.top_kinetic()]
-        if key is lx.EPRIME:
-            return [self.reduction.reduced_energy]
-        if key is lx.VEFF:
-            return [self.reduction.effective_potential]
-        if key is lx.LMAG:
-            return [sp.sqrt(sum((m * w)**2 for m, w in zip((I1, I2, I3), lx.W)))]
-        if key is lx.OMEGA_VEC:
-            return [_linear(sp.Matrix(lx.W)), _linear(self.omega)]
-        if key is lx.DLDT:
-            return [_linear(sp.Matrix(self.euler({})))]
-        if key in (lx.MOMENTUM[0], lx.p_alpha_sym()):
-            return [self.top.momentum(self.rot.alpha)]
-        if key in (lx.MOMENTUM[2], lx.p_gamma_sym()):
-            return [self.top.momentum(self.rot.gamma)]
-        if key is lx.MOMENTUM[1]:
-            return [self.top.momentum(self.rot.beta)]
-        if key in lx.W:
-            return [self.omega[lx.W.index(key)]]
-        if key in lx.PRIMED or key in lx.INERTIAL:
-            return [self.frames[key]]
-        if key in lx.BASIS:
-            return [key]
-        if key is lx.Omega:
-            o1, o2 = self.frequencies()
-            return [o1.xreplace({I2: I1}), o2.xreplace({I2: I1})]
-        if key is lx.Omega1:
-            return [self.frequencies()[0]]
-        if key is lx.Omega2:
-            return [self.frequencies()[1]]
-        return []
-
-    @functools.lru_cache(maxsize=None)
-    def top_kinetic(self):
-        return kinetic_energy(convention=self.conv)
-
-
-@functools.cache
-def derivation(convention: str) -> Derivation:
-    return Derivation(convention)
 
 
 def _name_tex(name: str) -> str:
     """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
     base, _, sub = name.partition("_")
     return "\\" + base + (f"_{{{sub}}}" if sub else "")
-
-
-def _linear(col) -> sp.Expr:
-    return sum((col[i] * lx.BASIS[i] for i in range(3)), sp.S.Zero)
-
-
-KNOWN = None   # filled below (needs lx)
-
-
-def _families():
-    """Quantities that can stand for one another by a slip of the label."""
-    return [
-        [lx.T_, lx.ENERGY, lx.EPRIME, lx.VEFF, lx.LAGRANGIAN],
-        list(lx.W),
-        list(lx.PRIMED) + list(lx.INERTIAL),
-        [lx.Omega, lx.Omega1, lx.Omega2],
-        [lx.p_alpha_sym(), lx.p_gamma_sym()],
-        [lx.LVEC, lx.OMEGA_VEC, lx.DLDT],
-    ]
 
 
 # ---- results ------------------------------------------------------------------------------------
@@ -232,155 +103,8 @@ class _Context:
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
 
 
-# ---- the comparisons ----------------------------------------------------------------------------
-def _has_rates(objs, rot) -> bool:
-    return any(_free(o) & set(rot.RATES) for o in objs)
-
-
-def _free(obj) -> set:
-    return set(getattr(obj, "free_symbols", set()))
-
-
-def _column(v):
-    """A vector as a 3-column (from a matrix, or a linear form in ê₁ ê₂ ê₃); scalars as 1×1."""
-    if isinstance(v, sp.MatrixBase):
-        if v.shape == (1, 3):
-            return sp.Matrix(v).T
-        return sp.Matrix(v).reshape(len(v), 1)
-    v = sp.sympify(v)
-    if v.free_symbols & set(lx.BASIS):
-        ex = sp.expand(v)
-        coeffs = [ex.coeff(e) for e in lx.BASIS]
-        rest = sp.expand(ex - sum(c * e for c, e in zip(coeffs, lx.BASIS)))
-        if rest != 0 or any(c.free_symbols & set(lx.BASIS) for c in coeffs):
-            raise _Mismatch("not a vector: a product of unit vectors, or a scalar added to a vector")
-        return sp.Matrix(coeffs)
-    return sp.Matrix([v])
-
-
-class _Mismatch(Exception):
-    pass
-
-
-def _zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
-    if lhs.shape != rhs.shape:
-        return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
-    steps = [_symbolic_zero(d) for d in lhs - rhs]
-    if all(steps):
-        return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
-    out = vf._numeric_zero(lhs, rhs, seed)
-    return out.ok, out.method
-
-
-def _symbolic_zero(d):
-    """`verify`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
-    (trig_reduce refuses a sine nested in a sine's argument)."""
-    try:
-        return vf._symbolic_zero(d)
-    except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
-        return None
-
-
-def _shape(m) -> str:
-    return "scalar" if m.shape == (1, 1) else ("vector" if m.shape[1] == 1 else f"{m.shape[0]}×{m.shape[1]} matrix")
-
-
-def _quick_equal(a, b) -> bool:
-    """A fast float test (two random points) used to screen the single-edit candidates."""
-    try:
-        A, B = _column(a), _column(b)
-    except _Mismatch:
-        return False
-    if A.shape != B.shape:
-        return False
-    syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
-    rng = random.Random(7)
-    for _ in range(2):
-        point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
-        try:
-            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
-            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
-        except (TypeError, ValueError, ZeroDivisionError):
-            return False
-        if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
-            return False
-    return True
-
-
-# ---- single edits ------------------------------------------------------------------------------
-def _paths(e, path=()):
-    yield path, e
-    # inside a derivative the variables are not edited (∂/∂ of a power is no formula)
-    if isinstance(e, sp.Derivative):
-        yield from _paths(e.expr, path + (0,))
-    elif isinstance(e, sp.Basic) and not e.is_Atom:
-        for k, a in enumerate(e.args):
-            yield from _paths(a, path + (k,))
-
-
-def _replace(e, path, new):
-    if not path:
-        return new
-    args = list(e.args)
-    args[path[0]] = _replace(args[path[0]], path[1:], new)
-    return e.func(*args)
-
-
-_SIBLINGS = None
-
-
-def _siblings():
-    fams = [(I1, I2, I3), lx.W, lx.WD, lx.BASIS, lx.PRIMED, ANGLES, RATES, (lx.Omega1, lx.Omega2)]
-    out = {}
-    for fam in fams:
-        for s in fam:
-            out[s] = [x for x in fam if x != s]
-    return out
-
-
-def edits(e):
-    """Single edits of an expression: (edited, what was changed)."""
-    if isinstance(e, sp.MatrixBase):
-        for k in range(len(e)):
-            for new, what in edits(e[k]):
-                m = sp.Matrix(e)
-                m[k] = new
-                yield m, f"{what} (entry {k + 1})"
-        return
-    e = sp.sympify(e)
-    sib = _siblings()
-    yield -e, "the sign of the whole side"
-    yield 2 * e, "a factor 2"
-    yield e / 2, "a factor 1/2"
-    for path, node in list(_paths(e)):
-        if isinstance(node, sp.Add):
-            for k, a in enumerate(node.args):
-                p = path + (k,)
-                yield _replace(e, p, -a), "a sign"
-                yield _replace(e, p, 2 * a), "a factor 2"
-                yield _replace(e, p, a / 2), "a factor 1/2"
-        elif isinstance(node, (sp.sin, sp.cos)):
-            other = sp.cos if isinstance(node, sp.sin) else sp.sin
-            yield _replace(e, path, other(*node.args)), "sin ↔ cos"
-        elif isinstance(node, sp.Pow) and node.exp.is_Integer:
-            for d in (1, -1):
-                if node.exp + d != 0:
-                    yield _replace(e, path, node.base ** (node.exp + d)), "a power"
-        elif isinstance(node, sp.Symbol) and node in sib:
-            for s in sib[node]:
-                yield _replace(e, path, s), "an index"
-            if path and not isinstance(_at(e, path[:-1]), sp.Pow):
-                yield _replace(e, path, node**2), "a power"
-
-
-def _at(e, path):
-    for k in path:
-        e = e.args[k]
-    return e
-
-
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading):
+class Checker(TextNames, Rereading, Motion):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -488,7 +212,7 @@ class Checker(TextNames, Rereading):
             return
         m0 = parsed.members[0].value if parsed.members else None
         if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
-                and _free(parsed.members[1].value) and not _free(parsed.members[1].value) & {m0}:
+                and free(parsed.members[1].value) and not free(parsed.members[1].value) & {m0}:
             self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
             if item.display:
                 self._add(item.line, item.latex, "new symbol", "unchecked",
@@ -598,13 +322,13 @@ class Checker(TextNames, Rereading):
             self._inequality(line, piece, parsed)
         elif self._steady_section() and not isinstance(m0.value, lx.Quantity) and len(parsed.members) == 2 \
                 and m0.value not in lx.W and not isinstance(m0.value, lx.Generic) \
-                and (_free(m0.value) | _free(parsed.members[1].value)) & {self.d.rot.alpha_d}:
+                and (free(m0.value) | free(parsed.members[1].value)) & {self.d.rot.alpha_d}:
             self._steady(line, piece, parsed)
         elif isinstance(m0.value, lx.Quantity):
             self._definition(line, piece, parsed)
-        elif any(_free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
+        elif any(free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
-        elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS) for m in parsed.members):
+        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members):
             self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
@@ -692,7 +416,7 @@ class Checker(TextNames, Rereading):
         """Quantities → derived values, the notes' definitions → their right sides (not ``keep``)."""
         for _ in range(4):
             rep = {}
-            for s in _free(v):
+            for s in free(v):
                 if s in keep:
                     continue
                 if isinstance(s, lx.Quantity):
@@ -714,10 +438,10 @@ class Checker(TextNames, Rereading):
         PRIMED/INERTIAL frame vectors go to the body basis."""
         rot = self.d.rot
         out = []
-        rates = _has_rates(values, rot)
-        cyc = any(_free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
+        rates = has_rates(values, rot)
+        cyc = any(free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
         for v in values:
-            rep = dict(self.d.frames) if _free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
+            rep = dict(self.d.frames) if free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
             if rates:
                 rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
             if cyc:
@@ -738,8 +462,8 @@ class Checker(TextNames, Rereading):
         """Is the claim's value the derived form, in every case of the section?"""
         a, b = self._unify([claim_value, form])
         try:
-            A, B = _column(a), _column(b)
-        except _Mismatch as err:
+            A, B = column(a), column(b)
+        except Mismatch as err:
             return False, str(err)
         why = []
         for k, case in enumerate(self.ctx.cases):
@@ -748,7 +472,7 @@ class Checker(TextNames, Rereading):
             if small is not None:
                 ok, how = self._series_zero(Ac, Bc, small, order)
             else:
-                ok, how = _zero(Ac, Bc, f"{seed}/{k}")
+                ok, how = zero(Ac, Bc, f"{seed}/{k}")
             if not ok:
                 where = f" (case {k + 1} of {len(self.ctx.cases)}: {self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
                 return False, how + where
@@ -782,7 +506,7 @@ class Checker(TextNames, Rereading):
         if not forms:
             # an identity: both sides written out
             if isinstance(key, sp.Symbol) and not isinstance(key, lx.Quantity) and key not in lx.BASIS \
-                    and len(parsed.members) == 2 and not _free(parsed.members[1].value) & {key}:
+                    and len(parsed.members) == 2 and not free(parsed.members[1].value) & {key}:
                 kind = "definition"
             else:
                 kind = "identity"
@@ -820,8 +544,8 @@ class Checker(TextNames, Rereading):
                       "d𝐋/dt = 0: the torque-free case (τ = 0, stated in the text), an assumption")
             return
         try:
-            col = _column(self._resolve(written[-1]))
-        except _Mismatch as err:
+            col = column(self._resolve(written[-1]))
+        except Mismatch as err:
             self._add(line, piece, "equation of motion", "fails", f"d𝐋/dt = 0 with d𝐋/dt = {err}")
             return
         euler = self.d.euler(self.ctx.subs)
@@ -829,7 +553,7 @@ class Checker(TextNames, Rereading):
         for i in range(3):
             r = sp.expand(col[i].xreplace(self.ctx.subs)) if len(col) == 3 else None
             q = sp.cancel(sp.together(r / euler[i])) if r is not None and euler[i] != 0 else None
-            if q is None or q == 0 or _free(q) & dyn:
+            if q is None or q == 0 or free(q) & dyn:
                 self._add(line, piece, "equation of motion", "fails",
                           f"d𝐋/dt = 0 (τ = 0 stated): component {i + 1} is not Euler's equation {i + 1}")
                 return
@@ -845,7 +569,7 @@ class Checker(TextNames, Rereading):
         small = order = None
         if approx:
             small = self.ctx.small[-1]
-            order = _order(val, small)
+            order = series_order(val, small)
         seed = f"{piece}/{k}"
         why = ""
         for f in targets:
@@ -856,7 +580,7 @@ class Checker(TextNames, Rereading):
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
             return
-        loose = sorted(self.tex(x) for x in _free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:
@@ -878,11 +602,11 @@ class Checker(TextNames, Rereading):
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
-                      for m in written for x in _free(m)) or \
+                      for m in written for x in free(m)) or \
             any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
         if not derived:
             return "an equation between the text's variables: a condition it imposes, not an identity"
-        every = _free(val).union(*(_free(self._resolve(f)) for f in targets))
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
         loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs)
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
@@ -902,7 +626,7 @@ class Checker(TextNames, Rereading):
                     return None
                 val = self._resolve(cand, keep=keep)
                 a, b = self._unify([val, target])
-                if small is None and not _quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
+                if small is None and not quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
                     continue
                 ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
                 if ok:
@@ -910,7 +634,7 @@ class Checker(TextNames, Rereading):
                     return self._render(parsed, k, cand), what
         # a swapped label
         if isinstance(label, sp.Symbol):
-            for fam in _families():
+            for fam in families():
                 if label in fam:
                     for other in fam:
                         if other == label:
@@ -946,279 +670,6 @@ class Checker(TextNames, Rereading):
             self._add(line, piece, "lagrangian", "fails",
                       f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
                       f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
-
-    def _eom(self, line, piece, parsed):
-        members = [m.value for m in parsed.members]
-        if len(members) != 2 or isinstance(members[0], sp.MatrixBase):
-            self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
-            return
-        raw = members[0] - members[1]
-        used = [x for x in _free(raw) if x in self.ctx.defs]
-        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
-            names = ", ".join(sorted(self.tex(x) for x in used))
-            self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
-            return
-        ok, why, residual = self._eom_check(raw)
-        if ok:
-            self.ctx.eoms.append((raw, line))
-            self._add(line, piece, "equation of motion", "holds", why)
-            return
-        for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._eom_check(cand)[0]:
-                fixed = sp.Eq(cand, 0) if members[1] == 0 else None
-                corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
-                self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
-                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
-                return
-        self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
-        found = [i for i in range(3) if lx.WD[i] in _free(raw)]
-        if len(found) == 1:   # … or, past correcting, the derived one for that component
-            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
-
-    def _angle_eom(self, line, piece, parsed):
-        """An equation of motion in the angles (I₁θ̈ = …): solved for the one acceleration it has,
-        against the heavy symmetric top's Lagrange equations — in the rates, or with the cyclic
-        momenta for the rates (Routh's reduction)."""
-        raw = self._resolve(parsed.members[0].value - parsed.members[1].value)
-        accels = [a for a in ACCELS if a in _free(raw)]
-        rot = self.d.rot
-        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS[1]:
-            self._add(line, piece, "equation of motion", "unchecked", "an equation of motion the derivation does not write")
-            return
-        a = accels[0]
-        claim = sp.cancel(sp.together(-raw.xreplace({a: 0}) / sp.diff(raw, a)))
-        forms = [self.d.reduction.beta_acceleration, self.d.top.accelerations[1]]
-        why = ""
-        for f in forms:
-            ok, why = self._compare(claim, f, piece + "/angle")
-            if ok:
-                self._add(line, piece, "equation of motion", "holds", f"Lagrange's equation for ${self.tex(rot.beta)}$: {why}")
-                return
-        if self._learned(piece) or _free(claim) & {lx.Generic}:
-            self._add(line, piece, "equation of motion", "unchecked", f"does not match the heavy top's equation ({why})")
-            return
-        self._add(line, piece, "equation of motion", "fails",
-                  f"as written: not Lagrange's equation for ${self.tex(rot.beta)}$ of the heavy symmetric top ({why})")
-
-    # -- steady precession
-    def _steady_section(self) -> bool:
-        """The text has set β̇ = 0 (a steady precession at a fixed tilt)."""
-        return self.ctx.subs.get(self.d.rot.beta_d, None) == 0
-
-    def _steady(self, line, piece, parsed):
-        """A condition for steady precession: with β̇ = β̈ = 0 the β equation of motion reduces to
-        ∂L/∂β = 0; the claim's lhs − rhs (rates and momenta in terms of the angles) must be a
-        non-zero multiple of it by a factor free of the rates."""
-        raw = parsed.members[0].value - parsed.members[1].value
-        ok, why = self._steady_check(raw)
-        if ok:
-            self._add(line, piece, "steady precession", "holds", why)
-            return
-        for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._steady_check(cand)[0]:
-                self._add(line, piece, "steady precession", "typo",
-                          f"as written: {why}; one edit ({what}) makes it hold", self.tex(cand) + " = 0")
-                return
-        self._add(line, piece, "steady precession", "fails", f"as written: {why}")
-
-    def _steady_check(self, raw):
-        rot = self.d.rot
-        (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
-        r = sp.expand(r)
-        if r == 0:
-            return False, "the condition is empty (0 = 0)"
-        force = self.d.steady_force
-        q = sp.cancel(sp.together(r / force))
-        if q != 0 and not _free(q) & (set(rot.RATES) | {rot.alpha, rot.gamma}):
-            return True, f"a multiple ({self.tex(q)}) of the β equation at β̇ = β̈ = 0: ∂L/∂β = 0"
-        return False, "not a multiple of the β equation at β̇ = β̈ = 0 (derived: ∂L/∂β = 0)"
-
-    def _render_eq(self, residual, parsed):
-        return self.tex(residual) + " = 0"
-
-    def _eom_check(self, raw):
-        r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
-        if r == 0:
-            return False, "the equation is empty (0 = 0)", r
-        # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
-        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
-        loose = [x for x in _free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
-        if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not _free(sp.diff(r, loose[0])) & set(lx.W):
-            # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)
-            for i in range(3):
-                if _free(r) & {lx.WD[i]}:
-                    r = r.xreplace({loose[0]: lx.TAU[i]})
-                    break
-        if _free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
-            euler = [R - tau for R, tau in zip(euler, lx.TAU)]
-        dyn = set(lx.W) | set(lx.WD)
-        for i, R in enumerate(euler):
-            if R == 0:
-                continue
-            q = sp.cancel(sp.together(r / R))
-            if not (_free(q) & dyn) and q != 0:
-                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
-        # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        flow = {}
-        for i, R in enumerate(euler):
-            coef = sp.diff(R, lx.WD[i])
-            if coef != 0:
-                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
-        if _free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
-            return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
-        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
-
-    def _duplicate(self, line, piece, parsed, pieces):
-        """A row repeated within one block: a transcription slip; the missing equation is named."""
-        missing = None
-        have = set()
-        for p in pieces:  # the rows that are one component's equation (not the vector sum)
-            found = [i for i, w in enumerate(lx.WD) if lx.latex_atoms(p, self.vocab) & {w}]
-            if len(found) == 1:
-                have.add(found[0])
-        gaps = [i for i in range(3) if i not in have]
-        if gaps:
-            R = self.d.euler(self.ctx.subs)[gaps[0]]
-            missing = self.tex(R) + " = 0"
-        kind = "equation of motion" if any(_free(m.value) & set(lx.WD) for m in parsed.members) else "identity"
-        if gaps:  # a typo: the row that should stand here is the missing component's equation
-            self._add(line, piece, kind, "typo", "repeats an earlier row of the same block; the "
-                      f"equation for component {gaps[0] + 1} is missing", missing)
-        else:  # nothing is missing: a repeat is no wrong formula (a typo would need a correction)
-            self._add(line, piece, kind, "unchecked", "repeats an earlier row of the same block")
-
-    def _inequality(self, line, piece, parsed):
-        if len(parsed.members) != 2:
-            self._add(line, piece, "inequality", "unchecked", "a chain of inequalities")
-            return
-        rel = parsed.relations[0]
-        a, b = (self._resolve(m.value) for m in parsed.members)
-        syms = _free(a) | _free(b)
-        spin = {lx.p_gamma_sym(), lx.W[2], self.d.rot.gamma_d, self.d.rot.alpha_d}
-        if not (syms & {Mass, g, l} and syms & spin):
-            self._add(line, piece, "inequality", "unchecked",
-                      "an inequality the derivation does not decide (it knows the sleeping top's condition)")
-            return
-        claim = (a - b) if rel in ("≥", ">") else (b - a)
-        strict = rel in (">", "<")
-        cond = self.d.sleeping.condition
-        d = (cond.lhs - cond.rhs) if isinstance(cond, (sp.GreaterThan, sp.StrictGreaterThan)) else (cond.rhs - cond.lhs)
-        d_strict = isinstance(cond, (sp.StrictGreaterThan, sp.StrictLessThan))
-        ok, why = _zero(sp.Matrix([claim, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)
-        if ok:
-            self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
-            return
-        k2 = self.d.sleeping.coefficient(2)
-        # the condition squared or scaled: k₂ ≥ 0 itself (p_γ² ≥ 4 M g l I₁), up to a positive factor
-        if not strict and _positive_multiple(claim, k2):
-            self._add(line, piece, "inequality", "holds",
-                      "a positive multiple of the sleeping top's k₂ ≥ 0 (the β² coefficient of V_eff)")
-            return
-
-        def derived(c) -> bool:
-            return (not strict and _positive_multiple(c, k2)) or \
-                _zero(sp.Matrix([c, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]
-
-        if derived(-claim):
-            flip = r"\le" if rel in ("≥", ">") else r"\ge"
-            corr = f"{self.tex(parsed.members[0].value)} {flip} {self.tex(parsed.members[1].value)}"
-            self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
-            return
-        for side in (1, 0):
-            for cand, what in ([] if self.judging_only else edits(parsed.members[side].value)):
-                c2 = self._resolve(cand) - b if side == 0 else a - self._resolve(cand)
-                c2 = c2 if rel in ("≥", ">") else -c2
-                if (_quick_equal(c2, d) or _positive_multiple(c2, k2)) and derived(c2):
-                    fixed = [m.value for m in parsed.members]
-                    fixed[side] = cand
-                    rel_tex = {"≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[rel]
-                    self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
-                              f"{self.tex(fixed[0])} {rel_tex} {self.tex(fixed[1])}")
-                    return
-        self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
-
-    def _flush(self):
-        """Check the pending group of solutions ω̃ᵢ(t) = f(t) against the latest equations."""
-        if not self.pending:
-            return
-        group, self.pending = self.pending, []
-        sol = {w: f for _, _, w, f in group}
-        t = lx.t
-        rates = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol.items()}
-        chosen = []
-        for w in sol:
-            i = lx.W.index(w)
-            for raw, ln in reversed(self.ctx.eoms):
-                if _free(raw) & {lx.WD[i]} and (_free(raw) & set(lx.W)) - {lx.W[2]} <= set(sol):
-                    chosen.append(raw)
-                    break
-        for w, f in sol.items():
-            self.ctx.solutions[w] = f
-        if not chosen:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "unchecked", "no earlier equation of motion for these components to substitute into")
-            return
-
-        def holds(sol_):
-            rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
-            for k, case in enumerate(self.ctx.cases):
-                for raw in chosen:
-                    r = raw.xreplace({**sol_, **rates_})
-                    r = r.xreplace(case) if case else r
-                    ok, how = _zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
-                    if not ok:
-                        where = f" in case {k + 1} of {len(self.ctx.cases)} ({self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
-                        return False, f"substituted into the earlier equations: {how}{where}"
-            return True, f"substituted into the earlier equations of motion ({len(chosen)}), in {len(self.ctx.cases)} case(s)"
-
-        ok, why = holds(sol)
-        _ = rates
-        if ok:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "holds", why)
-            return
-        # one edit of which member restores the group? When several can (a phase's sign flipped in
-        # one of a pair: either line may be the slip), each is named with its own correction.
-        fixes = {}
-        for j, (line, piece, w, f) in enumerate(group):
-            for cand, what in edits(f):
-                if holds({**sol, w: cand})[0]:
-                    fixes[j] = (cand, what)
-                    break
-        if not fixes:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "fails", why)
-            return
-        either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
-        for j, (line, piece, w, _) in enumerate(group):
-            if j in fixes:
-                cand, what = fixes[j]
-                self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
-                          f"{self.tex(w)}(t) = {self.tex(cand)}")
-            else:
-                self._add(line, piece, "solution", "holds", "with the corrected companion")
-
-
-def _positive_multiple(a, b) -> bool:
-    """Is a = q b with q > 0 a function of the positive parameters only (I₁, I₃, M, g, l)?"""
-    if sp.expand(a) == 0 or sp.expand(b) == 0:
-        return False
-    q = sp.cancel(sp.together(a / b))
-    params = (I1, I2, I3, Mass, g, l)
-    if not _free(q) <= set(params):
-        return False
-    pos = {s: sp.Symbol(s.name, positive=True) for s in params}
-    return bool(q.xreplace(pos).is_positive)
-
-
-def _order(value, x) -> int:
-    """The order n of the series check: one above the highest power of x the claim keeps."""
-    try:
-        v = sp.expand(sp.cancel(sp.together(value)))
-        deg = sp.Poly(v, x).degree() if v.is_polynomial(x) else 2
-    except (sp.PolynomialError, sp.GeneratorsNeeded):
-        deg = 2
-    return max(deg, 0) + 1
 
 
 def _first_relation(text: str) -> int | None:

@@ -1,0 +1,283 @@
+"""Equations of motion in a text, and their solutions: the part of the notes checker that checks
+a formula with ω̃̇ᵢ, ω̃̈ᵢ or an angle's acceleration, a solution ω̃ᵢ(t) = f(t), a steady
+precession, a stability inequality and a row repeated in its block.
+
+Takes: statements parsed by `derive.lecture.latex` and the checker's context (the section's
+settings, the text's definitions, the equations it has written). Gives: the mixin `Motion` of
+`derive.lecture.notes_check.Checker`:
+
+* an equation with ω̃̇ᵢ is a non-zero constant multiple of one of Euler's equations
+  Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ under the section's settings (ω̃₁ = Ω, a constant spin, linearises them), or
+  a combination of them;
+* an equation with ω̃̈ᵢ follows from the text's latest first-order equations (or Euler's under the
+  settings) by one more derivative, ω̃̈ᵢ = Σⱼ ∂ω̃̇ᵢ/∂ω̃ⱼ ω̃̇ⱼ;
+* a group of consecutive solutions ω̃ᵢ(t) = f(t) (or Lᵢ = Iᵢω̃ᵢ = f(t)) is substituted into the
+  latest equations the text wrote for those components under the same settings, or Euler's
+  under them; the text's undefined symbols in a solution are its integration constants.
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
+from derive.symbolic.lagrangian import ACCELS, Mass, g, l
+
+
+class Motion:
+    """Mixin of the checker: see the module docstring. Uses ``self.ctx`` (subs, defs, eoms, cases,
+    solutions), ``self.d`` (the derivation), ``self.pending``, ``self._resolve``, ``self._unify``,
+    ``self._compare``, ``self._add`` and ``self.tex``."""
+
+    def _eom(self, line, piece, parsed):
+        members = [m.value for m in parsed.members]
+        if len(members) != 2 or isinstance(members[0], sp.MatrixBase):
+            self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
+            return
+        raw = members[0] - members[1]
+        used = [x for x in free(raw) if x in self.ctx.defs]
+        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
+            names = ", ".join(sorted(self.tex(x) for x in used))
+            self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
+            return
+        ok, why, residual = self._eom_check(raw)
+        if ok:
+            self.ctx.eoms.append((raw, line))
+            self._add(line, piece, "equation of motion", "holds", why)
+            return
+        for cand, what in ([] if self.judging_only else edits(raw)):
+            if self._eom_check(cand)[0]:
+                fixed = sp.Eq(cand, 0) if members[1] == 0 else None
+                corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
+                self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
+                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
+                return
+        self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
+        found = [i for i in range(3) if lx.WD[i] in free(raw)]
+        if len(found) == 1:   # … or, past correcting, the derived one for that component
+            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
+
+    def _angle_eom(self, line, piece, parsed):
+        """An equation of motion in the angles (I₁θ̈ = …): solved for the one acceleration it has,
+        against the heavy symmetric top's Lagrange equations — in the rates, or with the cyclic
+        momenta for the rates (Routh's reduction)."""
+        raw = self._resolve(parsed.members[0].value - parsed.members[1].value)
+        accels = [a for a in ACCELS if a in free(raw)]
+        rot = self.d.rot
+        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS[1]:
+            self._add(line, piece, "equation of motion", "unchecked", "an equation of motion the derivation does not write")
+            return
+        a = accels[0]
+        claim = sp.cancel(sp.together(-raw.xreplace({a: 0}) / sp.diff(raw, a)))
+        forms = [self.d.reduction.beta_acceleration, self.d.top.accelerations[1]]
+        why = ""
+        for f in forms:
+            ok, why = self._compare(claim, f, piece + "/angle")
+            if ok:
+                self._add(line, piece, "equation of motion", "holds", f"Lagrange's equation for ${self.tex(rot.beta)}$: {why}")
+                return
+        if self._learned(piece) or free(claim) & {lx.Generic}:
+            self._add(line, piece, "equation of motion", "unchecked", f"does not match the heavy top's equation ({why})")
+            return
+        self._add(line, piece, "equation of motion", "fails",
+                  f"as written: not Lagrange's equation for ${self.tex(rot.beta)}$ of the heavy symmetric top ({why})")
+
+    # -- steady precession
+    def _steady_section(self) -> bool:
+        """The text has set β̇ = 0 (a steady precession at a fixed tilt)."""
+        return self.ctx.subs.get(self.d.rot.beta_d, None) == 0
+
+    def _steady(self, line, piece, parsed):
+        """A condition for steady precession: with β̇ = β̈ = 0 the β equation of motion reduces to
+        ∂L/∂β = 0; the claim's lhs − rhs (rates and momenta in terms of the angles) must be a
+        non-zero multiple of it by a factor free of the rates."""
+        raw = parsed.members[0].value - parsed.members[1].value
+        ok, why = self._steady_check(raw)
+        if ok:
+            self._add(line, piece, "steady precession", "holds", why)
+            return
+        for cand, what in ([] if self.judging_only else edits(raw)):
+            if self._steady_check(cand)[0]:
+                self._add(line, piece, "steady precession", "typo",
+                          f"as written: {why}; one edit ({what}) makes it hold", self.tex(cand) + " = 0")
+                return
+        self._add(line, piece, "steady precession", "fails", f"as written: {why}")
+
+    def _steady_check(self, raw):
+        rot = self.d.rot
+        (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
+        r = sp.expand(r)
+        if r == 0:
+            return False, "the condition is empty (0 = 0)"
+        force = self.d.steady_force
+        q = sp.cancel(sp.together(r / force))
+        if q != 0 and not free(q) & (set(rot.RATES) | {rot.alpha, rot.gamma}):
+            return True, f"a multiple ({self.tex(q)}) of the β equation at β̇ = β̈ = 0: ∂L/∂β = 0"
+        return False, "not a multiple of the β equation at β̇ = β̈ = 0 (derived: ∂L/∂β = 0)"
+
+    def _render_eq(self, residual, parsed):
+        return self.tex(residual) + " = 0"
+
+    def _eom_check(self, raw):
+        r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
+        if r == 0:
+            return False, "the equation is empty (0 = 0)", r
+        # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
+        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
+        loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
+        if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not free(sp.diff(r, loose[0])) & set(lx.W):
+            # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)
+            for i in range(3):
+                if free(r) & {lx.WD[i]}:
+                    r = r.xreplace({loose[0]: lx.TAU[i]})
+                    break
+        if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
+            euler = [R - tau for R, tau in zip(euler, lx.TAU)]
+        dyn = set(lx.W) | set(lx.WD)
+        for i, R in enumerate(euler):
+            if R == 0:
+                continue
+            q = sp.cancel(sp.together(r / R))
+            if not (free(q) & dyn) and q != 0:
+                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
+        # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
+        flow = {}
+        for i, R in enumerate(euler):
+            coef = sp.diff(R, lx.WD[i])
+            if coef != 0:
+                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
+            return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
+        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+
+    def _duplicate(self, line, piece, parsed, pieces):
+        """A row repeated within one block: a transcription slip; the missing equation is named."""
+        missing = None
+        have = set()
+        for p in pieces:  # the rows that are one component's equation (not the vector sum)
+            found = [i for i, w in enumerate(lx.WD) if lx.latex_atoms(p, self.vocab) & {w}]
+            if len(found) == 1:
+                have.add(found[0])
+        gaps = [i for i in range(3) if i not in have]
+        if gaps:
+            R = self.d.euler(self.ctx.subs)[gaps[0]]
+            missing = self.tex(R) + " = 0"
+        kind = "equation of motion" if any(free(m.value) & set(lx.WD) for m in parsed.members) else "identity"
+        if gaps:  # a typo: the row that should stand here is the missing component's equation
+            self._add(line, piece, kind, "typo", "repeats an earlier row of the same block; the "
+                      f"equation for component {gaps[0] + 1} is missing", missing)
+        else:  # nothing is missing: a repeat is no wrong formula (a typo would need a correction)
+            self._add(line, piece, kind, "unchecked", "repeats an earlier row of the same block")
+
+    def _inequality(self, line, piece, parsed):
+        if len(parsed.members) != 2:
+            self._add(line, piece, "inequality", "unchecked", "a chain of inequalities")
+            return
+        rel = parsed.relations[0]
+        a, b = (self._resolve(m.value) for m in parsed.members)
+        syms = free(a) | free(b)
+        spin = {lx.p_gamma_sym(), lx.W[2], self.d.rot.gamma_d, self.d.rot.alpha_d}
+        if not (syms & {Mass, g, l} and syms & spin):
+            self._add(line, piece, "inequality", "unchecked",
+                      "an inequality the derivation does not decide (it knows the sleeping top's condition)")
+            return
+        claim = (a - b) if rel in ("≥", ">") else (b - a)
+        strict = rel in (">", "<")
+        cond = self.d.sleeping.condition
+        d = (cond.lhs - cond.rhs) if isinstance(cond, (sp.GreaterThan, sp.StrictGreaterThan)) else (cond.rhs - cond.lhs)
+        d_strict = isinstance(cond, (sp.StrictGreaterThan, sp.StrictLessThan))
+        ok, why = zero(sp.Matrix([claim, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)
+        if ok:
+            self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
+            return
+        k2 = self.d.sleeping.coefficient(2)
+        # the condition squared or scaled: k₂ ≥ 0 itself (p_γ² ≥ 4 M g l I₁), up to a positive factor
+        if not strict and positive_multiple(claim, k2):
+            self._add(line, piece, "inequality", "holds",
+                      "a positive multiple of the sleeping top's k₂ ≥ 0 (the β² coefficient of V_eff)")
+            return
+
+        def derived(c) -> bool:
+            return (not strict and positive_multiple(c, k2)) or \
+                zero(sp.Matrix([c, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]
+
+        if derived(-claim):
+            flip = r"\le" if rel in ("≥", ">") else r"\ge"
+            corr = f"{self.tex(parsed.members[0].value)} {flip} {self.tex(parsed.members[1].value)}"
+            self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
+            return
+        for side in (1, 0):
+            for cand, what in ([] if self.judging_only else edits(parsed.members[side].value)):
+                c2 = self._resolve(cand) - b if side == 0 else a - self._resolve(cand)
+                c2 = c2 if rel in ("≥", ">") else -c2
+                if (quick_equal(c2, d) or positive_multiple(c2, k2)) and derived(c2):
+                    fixed = [m.value for m in parsed.members]
+                    fixed[side] = cand
+                    rel_tex = {"≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[rel]
+                    self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
+                              f"{self.tex(fixed[0])} {rel_tex} {self.tex(fixed[1])}")
+                    return
+        self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
+
+    def _flush(self):
+        """Check the pending group of solutions ω̃ᵢ(t) = f(t) against the latest equations."""
+        if not self.pending:
+            return
+        group, self.pending = self.pending, []
+        sol = {w: f for _, _, w, f in group}
+        t = lx.t
+        rates = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol.items()}
+        chosen = []
+        for w in sol:
+            i = lx.W.index(w)
+            for raw, ln in reversed(self.ctx.eoms):
+                if free(raw) & {lx.WD[i]} and (free(raw) & set(lx.W)) - {lx.W[2]} <= set(sol):
+                    chosen.append(raw)
+                    break
+        for w, f in sol.items():
+            self.ctx.solutions[w] = f
+        if not chosen:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "unchecked", "no earlier equation of motion for these components to substitute into")
+            return
+
+        def holds(sol_):
+            rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
+            for k, case in enumerate(self.ctx.cases):
+                for raw in chosen:
+                    r = raw.xreplace({**sol_, **rates_})
+                    r = r.xreplace(case) if case else r
+                    ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
+                    if not ok:
+                        where = f" in case {k + 1} of {len(self.ctx.cases)} ({self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
+                        return False, f"substituted into the earlier equations: {how}{where}"
+            return True, f"substituted into the earlier equations of motion ({len(chosen)}), in {len(self.ctx.cases)} case(s)"
+
+        ok, why = holds(sol)
+        _ = rates
+        if ok:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "holds", why)
+            return
+        # one edit of which member restores the group? When several can (a phase's sign flipped in
+        # one of a pair: either line may be the slip), each is named with its own correction.
+        fixes = {}
+        for j, (line, piece, w, f) in enumerate(group):
+            for cand, what in edits(f):
+                if holds({**sol, w: cand})[0]:
+                    fixes[j] = (cand, what)
+                    break
+        if not fixes:
+            for line, piece, _, _ in group:
+                self._add(line, piece, "solution", "fails", why)
+            return
+        either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
+        for j, (line, piece, w, _) in enumerate(group):
+            if j in fixes:
+                cand, what = fixes[j]
+                self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
+                          f"{self.tex(w)}(t) = {self.tex(cand)}")
+            else:
+                self._add(line, piece, "solution", "holds", "with the corrected companion")
