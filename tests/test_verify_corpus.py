@@ -30,7 +30,6 @@ SHORT = {
     # (text, target): why the reader is short of it today
     ("cline-euler-angles-to-euler-equations", "checked"): "rotation matrices as products of the text's own matrices",
     ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "checked"): "perturbation solutions and orientation relative to L",
-    ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "found"): "amplitudes of linearised solutions",
     ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "false"): "orientation chosen along L; a linearised equation",
     ("free-rigid-body-euler-case-zh-notes-zxz", "checked"): "the space cone's geometry in the text's own angles",
     ("free-rigid-body-euler-case-zh-notes-zxz", "found"): "a trigonometric identity in the text's own angles",
@@ -50,7 +49,7 @@ SHORT = {
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "found"): "a rolling half hoop's geometry",
 }
 
-FLOOR = {"checked": 75, "slips_flagged": 8, "holds_flagged": 6}
+FLOOR = {"checked": 87, "slips_flagged": 12, "holds_flagged": 5}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -23,7 +23,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
-from derive.symbolic.lagrangian import ACCELS, Mass, g, l
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
 class Motion:
@@ -44,7 +44,7 @@ class Motion:
             return
         ok, why, residual = self._eom_check(raw)
         if ok:
-            self.ctx.eoms.append((raw, line))
+            self._eom_noted(raw, line)
             self._add(line, piece, "equation of motion", "holds", why)
             return
         for cand, what in ([] if self.judging_only else edits(raw)):
@@ -52,12 +52,12 @@ class Motion:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
-                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
+                self._eom_noted(cand, line)   # the solutions that follow meet the corrected equation
                 return
         self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
         found = [i for i in range(3) if lx.WD[i] in free(raw)]
         if len(found) == 1:   # … or, past correcting, the derived one for that component
-            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
+            self._eom_noted(self.d.euler(self.ctx.subs)[found[0]], line)
 
     def _angle_eom(self, line, piece, parsed):
         """An equation of motion in the angles (I₁θ̈ = …): solved for the one acceleration it has,
@@ -221,33 +221,160 @@ class Motion:
                     return
         self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
 
+    # -- second-order equations ω̃̈ᵢ = …
+    def _second_order(self, line, piece, parsed) -> bool:
+        """An equation with ω̃̈ᵢ (the text eliminating one component): ω̃̈ᵢ = Σⱼ ∂ω̃̇ᵢ/∂ω̃ⱼ ω̃̇ⱼ with ω̃̇
+        from the latest first-order equations the text wrote under the same settings (or Euler's
+        under them). False when the statement has no ω̃̈ᵢ."""
+        dd = {}
+        for m in parsed.members:
+            for s in free(m.value):
+                atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
+                if atom is not None and atom.base == "omega" and atom.dots == 2 and atom.sub in ("1", "2", "3") \
+                        and not atom.bold:
+                    dd[s] = int(atom.sub) - 1
+        if not dd or len(parsed.members) != 2 or set(parsed.relations) != {"="}:
+            return False
+        self._flush()
+        flows = self._flows()
+        accel = {}
+        for s, i in dd.items():
+            f = flows.get(lx.WD[i])
+            if f is None or any(w in free(f) and lx.WD[j] not in flows for j, w in enumerate(lx.W)):
+                self._add(line, piece, "equation of motion", "unchecked",
+                          f"no first-order equation for {self.tex(lx.WD[i])} in the text to differentiate")
+                return True
+            accel[s] = sum((sp.diff(f, w) * flows[lx.WD[j]] for j, w in enumerate(lx.W) if w in free(f)), sp.S.Zero)
+        raw = parsed.members[0].value - parsed.members[1].value
+
+        def residual(r):
+            r = self._own_defs(self._resolve(r)).xreplace(accel).xreplace(self.ctx.subs).xreplace(flows)
+            return sp.expand(r.xreplace(self.ctx.subs))
+
+        r = residual(raw)
+        known = set(dd) | self._constants() | set(self.ctx.defs)
+        loose = sorted(self.tex(x) for x in free(r) if isinstance(x, lx.Generic) and x not in known)
+        why = "one more derivative of the first-order equations (ω̃̈ᵢ = Σⱼ ∂ω̃̇ᵢ/∂ω̃ⱼ ω̃̇ⱼ, under the section's settings)"
+        ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), piece + "/second")
+        if ok:
+            self._add(line, piece, "equation of motion", "holds", f"{why}: {how}")
+            return True
+        if loose:
+            self._add(line, piece, "equation of motion", "unchecked", f"involves {', '.join(loose)}, which the text has not defined")
+            return True
+        for cand, what in ([] if self.judging_only else edits(raw)):
+            if zero(sp.Matrix([residual(cand)]), sp.Matrix([0]), piece + "/second-edit")[0]:
+                self._add(line, piece, "equation of motion", "typo", f"as written: {how}; one edit ({what}) makes it "
+                          f"{why}", self.tex(cand) + " = 0")
+                return True
+        self._add(line, piece, "equation of motion", "fails", f"as written: not {why}: {how}")
+        return True
+
+    def _flows(self) -> dict:
+        """ω̃̇ⱼ → its value, from the equation for it that applies now (`_eom_for`)."""
+        flows = {}
+        for j in range(3):
+            eq = self._eom_for(j, self.ctx.subs, set(lx.W))
+            if eq is None:
+                continue
+            eq = sp.expand(self._own_defs(eq).xreplace(self.ctx.subs))
+            c = sp.diff(eq, lx.WD[j])
+            if c == 0 or free(c) & set(lx.WD) or (free(eq) & set(lx.WD)) - {lx.WD[j]}:
+                continue
+            flows[lx.WD[j]] = sp.cancel(-eq.xreplace({lx.WD[j]: 0}) / c)
+        return flows
+
+    # -- solutions ω̃ᵢ(t) = f(t)
+    def _solution_row(self, parsed):
+        """``ω̃ᵢ = f(t)`` or the angular momentum's component ``Lᵢ = Iᵢω̃ᵢ = f(t)``: (ω̃ᵢ, f, the factor
+        Iᵢ or 1), or None. The right side depends on t and not on ω̃ (else it is an equation)."""
+        if len(parsed.members) != 2 or parsed.relations[0] != "=":
+            return None
+        m0, value = parsed.members[0], parsed.members[1].value
+        if isinstance(value, sp.MatrixBase) or isinstance(m0.value, sp.MatrixBase):
+            return None
+        lhs = m0.value
+        if m0.args and lhs in lx.W:
+            return lhs, value, sp.S.One
+        if lx.t not in free(value) or free(value) & (set(lx.W) | set(lx.WD)):
+            return None
+        if lhs in lx.W:
+            return lhs, value, sp.S.One
+        moments = (I1, I2, I3)
+        if lhs == lx.p_gamma_sym():
+            lhs = moments[self.vocab.axial] * lx.W[self.vocab.axial]
+        for i in range(3):
+            if lhs == moments[i] * lx.W[i]:
+                return lx.W[i], value / moments[i], moments[i]
+        return None
+
+    def _own_defs(self, v):
+        """The text's own symbols replaced by their definitions (ω₀ ≡ …, n ≡ …)."""
+        for _ in range(4):
+            rep = {s: self.ctx.defs[s] for s in free(v) if isinstance(s, lx.Generic) and s in self.ctx.defs}
+            if not rep:
+                break
+            v = v.xreplace(rep)
+        return v
+
+    def _eom_for(self, i, subs, allowed):
+        """The latest equation the text wrote for ω̃̇ᵢ under the same settings of ω̃ (ω̃₁ = Ω): its
+        residual, or, when it wrote none that applies, Euler's equation i under the settings. None
+        when that equation involves a component outside ``allowed``."""
+        wset = {k: v for k, v in subs.items() if k in lx.W}
+        for raw, _, settings in reversed(self.ctx.eoms):
+            if free(raw) & {lx.WD[i]} and settings == wset and \
+                    (free(raw) & set(lx.W)) - {lx.W[2]} - set(wset) <= set(allowed):
+                return raw
+        if lx.W[i] in wset:
+            return None
+        R = sp.expand(self.d.euler(subs)[i].xreplace(subs))
+        if R == 0 or (free(R) & set(lx.W)) - set(allowed):
+            return None
+        return R
+
+    def _eom_noted(self, raw, line):
+        """Keep an equation of motion the text wrote, with the settings of ω̃ it was written under."""
+        self.ctx.eoms.append((raw, line, {k: v for k, v in self.ctx.subs.items() if k in lx.W}))
+
     def _flush(self):
-        """Check the pending group of solutions ω̃ᵢ(t) = f(t) against the latest equations."""
+        """Check the pending group of solutions against the latest equations, under the settings of
+        the display that wrote them (a row ``ω̃₃ = Ω`` beside them)."""
         if not self.pending:
             return
         group, self.pending = self.pending, []
-        sol = {w: f for _, _, w, f in group}
+        subs = self.pending_subs if self.pending_subs is not None else dict(self.ctx.subs)
+        self.pending_subs = None
+        saved, self.ctx.subs = self.ctx.subs, subs
+        start = len(self.claims)
+        try:
+            self._solutions(group)
+        finally:
+            self.ctx.subs = saved
+            self.flushed.extend(self.claims[start:])
+            del self.claims[start:]
+
+    def _solutions(self, group):
+        sol = {w: self._own_defs(f) for _, _, w, f, _ in group}
         t = lx.t
-        rates = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol.items()}
         chosen = []
         for w in sol:
-            i = lx.W.index(w)
-            for raw, ln in reversed(self.ctx.eoms):
-                if free(raw) & {lx.WD[i]} and (free(raw) & set(lx.W)) - {lx.W[2]} <= set(sol):
-                    chosen.append(raw)
-                    break
+            raw = self._eom_for(lx.W.index(w), self.ctx.subs, sol)
+            if raw is not None:
+                chosen.append(self._own_defs(raw))
         for w, f in sol.items():
             self.ctx.solutions[w] = f
         if not chosen:
-            for line, piece, _, _ in group:
+            for line, piece, *_ in group:
                 self._add(line, piece, "solution", "unchecked", "no earlier equation of motion for these components to substitute into")
             return
+        subs = {k: v for k, v in self.ctx.subs.items() if k not in sol}
 
         def holds(sol_):
             rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
             for k, case in enumerate(self.ctx.cases):
                 for raw in chosen:
-                    r = raw.xreplace({**sol_, **rates_})
+                    r = raw.xreplace({**sol_, **rates_}).xreplace(subs)
                     r = r.xreplace(case) if case else r
                     ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
                     if not ok:
@@ -256,28 +383,46 @@ class Motion:
             return True, f"substituted into the earlier equations of motion ({len(chosen)}), in {len(self.ctx.cases)} case(s)"
 
         ok, why = holds(sol)
-        _ = rates
         if ok:
-            for line, piece, _, _ in group:
+            for line, piece, *_ in group:
                 self._add(line, piece, "solution", "holds", why)
+            return
+        loose = self._loose_frequencies(sol)
+        if loose:
+            for line, piece, *_ in group:
+                self._add(line, piece, "solution", "unchecked",
+                          f"the frequency or rate {loose} is not defined in the text, so the solution cannot be substituted")
             return
         # one edit of which member restores the group? When several can (a phase's sign flipped in
         # one of a pair: either line may be the slip), each is named with its own correction.
         fixes = {}
-        for j, (line, piece, w, f) in enumerate(group):
+        for j, (line, piece, w, f, scale) in enumerate(group):
             for cand, what in edits(f):
-                if holds({**sol, w: cand})[0]:
+                if holds({**sol, w: self._own_defs(cand)})[0]:
                     fixes[j] = (cand, what)
                     break
         if not fixes:
-            for line, piece, _, _ in group:
+            for line, piece, *_ in group:
                 self._add(line, piece, "solution", "fails", why)
             return
         either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
-        for j, (line, piece, w, _) in enumerate(group):
+        for j, (line, piece, w, _, scale) in enumerate(group):
             if j in fixes:
                 cand, what = fixes[j]
+                left = piece.split("=")[0].strip() if scale != 1 else f"{self.tex(w)}(t)"
                 self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
-                          f"{self.tex(w)}(t) = {self.tex(cand)}")
+                          f"{left} = {self.tex(sp.expand(scale * cand) if scale != 1 else cand)}")
             else:
                 self._add(line, piece, "solution", "holds", "with the corrected companion")
+
+    def _loose_frequencies(self, sol) -> str:
+        """The text's undefined symbols that multiply t inside a function of a solution (a frequency
+        it never gave): the LaTeX names, or ''. Amplitudes and phases are integration constants."""
+        out = set()
+        for f in sol.values():
+            for fn in sp.sympify(f).atoms(sp.Function, sp.Pow):
+                arg = fn.args[0] if isinstance(fn, sp.Function) else fn.exp
+                if lx.t in free(arg):
+                    out |= {s for s in free(sp.diff(arg, lx.t)) if isinstance(s, lx.Generic) and s not in self.ctx.defs
+                            and s not in set(free(sp.Matrix(list(self.ctx.subs.values()))))}
+        return ", ".join(sorted(self.tex(s) for s in out))

@@ -284,7 +284,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         if not _RELATION.search(latex):
             continue
         word = _last_word(near)
-        wrapped = latex.startswith("(") and latex.endswith(")")
+        # "(… $\omega_2 = \Omega$ to first order)": an aside in brackets states a condition
+        wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
         if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()):

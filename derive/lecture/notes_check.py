@@ -92,7 +92,7 @@ class _Context:
     cases: list = field(default_factory=lambda: [{}])  # sign cases
     solutions: dict = field(default_factory=dict)     # ω̃ᵢ → f(t)
     defs: dict = field(default_factory=dict)          # Ω → the notes' definition
-    eoms: list = field(default_factory=list)          # (residual as written, line)
+    eoms: list = field(default_factory=list)          # (residual as written, line, settings of ω̃)
     head: str | None = None                           # left side continued by "= …" displays
     assumptions: list = field(default_factory=list)   # their LaTeX, for the why
     vec_model: str | None = None                      # "particle" after a sum over particles
@@ -119,6 +119,8 @@ class Checker(TextNames, Rereading, Motion):
         self._open_display()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
+        self.pending_subs = None    # the settings of the display that wrote them
+        self.flushed: list = []     # the verdicts of the group, until placed
         self._last_fix = None       # the corrected value the last single-edit search found
 
     # -- names for LaTeX output
@@ -152,6 +154,7 @@ class Checker(TextNames, Rereading, Motion):
             item = items[k]
             if item.kind == "heading":
                 self._flush()
+                self._place_flushed(len(self.claims))
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
@@ -171,6 +174,7 @@ class Checker(TextNames, Rereading, Motion):
                 self._display(item, latex)
             k += 1
         self._flush()
+        self._place_flushed(len(self.claims))
         return self.claims
 
     def _enter_section(self, level):
@@ -236,6 +240,7 @@ class Checker(TextNames, Rereading, Motion):
                 return                            # already so (the prose said "a symmetric top")
             self.ctx.subs[a] = b
             self.ctx.stated[a] = f"line {item.line}"
+            self._spin_set(a, b)
 
     def _signs(self, item):
         syms = []
@@ -265,6 +270,7 @@ class Checker(TextNames, Rereading, Motion):
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
+            before = len(self.claims)
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
@@ -272,7 +278,15 @@ class Checker(TextNames, Rereading, Motion):
                 # a formula the checker cannot follow is reported as such, never given a verdict
                 self._add(item.line, piece, "unknown", "unchecked",
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
+            self._place_flushed(before)
         self._close_display()
+
+    def _place_flushed(self, at):
+        """The verdicts of a group of solutions that a later statement closed, placed before that
+        statement's (they are not its claims, so its second readings leave them alone)."""
+        if self.flushed:
+            self.claims[at:at] = self.flushed
+            self.flushed = []
 
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
@@ -303,6 +317,15 @@ class Checker(TextNames, Rereading, Motion):
         self._text = text                   # the statement with the left side it continues
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
+        if parsed is not None and not duplicate and self._second_order(line, piece, parsed):
+            return
+        row = None if parsed is None or duplicate else self._solution_row(parsed)
+        if row is not None:
+            if any(p[2] == row[0] for p in self.pending):
+                self._flush()                  # a component met again starts a new group (Lᵢ after ω̃ᵢ)
+            self.pending.append((line, piece, *row))
+            self.settings_only = False
+            return
         if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):
             return
         self.settings_only = False
@@ -314,9 +337,6 @@ class Checker(TextNames, Rereading, Motion):
             self._duplicate(line, piece, parsed, pieces)
             return
         m0 = parsed.members[0]
-        if m0.args and m0.value in lx.W and len(parsed.members) == 2:
-            self.pending.append((line, piece, m0.value, parsed.members[1].value))
-            return
         self._flush()
         if rels & {"≥", "≤", ">", "<"}:
             self._inequality(line, piece, parsed)
@@ -567,6 +587,9 @@ class Checker(TextNames, Rereading, Motion):
         val = self._resolve(value, keep=keep)
         targets = forms if forms else [left]
         small = order = None
+        if approx and not self.ctx.small:
+            self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
+            return
         if approx:
             small = self.ctx.small[-1]
             order = series_order(val, small)
@@ -580,7 +603,8 @@ class Checker(TextNames, Rereading, Motion):
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
             return
-        loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs
+                       and x not in self._constants())
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:
@@ -601,13 +625,19 @@ class Checker(TextNames, Rereading, Motion):
         rot = self.d.rot
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
+        variables = rates | set(rot.ANGLES) | set(lx.W)
+        if written and isinstance(written[0], sp.Symbol) and written[0] in variables and \
+                all(not free(self._resolve(m)) & variables for m in written[1:]):
+            return (f"states the value of {self.tex(written[0])} in this motion: a result the derivation does "
+                    "not give without solving the motion")
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
                       for m in written for x in free(m)) or \
             any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
         if not derived:
             return "an equation between the text's variables: a condition it imposes, not an identity"
         every = free(val).union(*(free(self._resolve(f)) for f in targets))
-        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs
+                       and x not in self._constants())
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
         if not every & rates and every & set(rot.ANGLES):

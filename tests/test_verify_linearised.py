@@ -1,0 +1,124 @@
+"""Linearised equations of motion, their second-order forms and their solutions, checked against
+the text's own earlier equations (`derive.lecture.motion`)."""
+import pytest
+
+from derive.lecture import notes_check
+
+HEAD = "---\nconvention: z-x-z\n---\n# Stability of rotation about an axis\n\n"
+
+LINEARISED = HEAD + r"""The torque-free Euler equations:
+
+$$I_1\dot{\omega}_1-(I_2-I_3)\omega_2\omega_3 = 0$$
+
+$$I_2\dot{\omega}_2-(I_3-I_1)\omega_1\omega_3 = 0$$
+
+$$I_3\dot{\omega}_3-(I_1-I_2)\omega_1\omega_2 = 0$$
+
+Near rotation about the first axis,
+
+$$\omega_1 = \Omega$$
+
+and the other two equations become
+
+$$\dot{\omega}_2 = \frac{I_3-I_1}{I_2}\Omega\omega_3$$
+
+$$\dot{\omega}_3 = \frac{I_1-I_2}{I_3}\Omega\omega_2$$
+
+Eliminating one of them,
+
+$$\ddot{\omega}_2 + \frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}\Omega^2\omega_2 = 0$$
+
+whose solution is
+
+$$\omega_2 = a \sqrt{I_3(I_3-I_1)} \sin(\omega_0 t + \phi_0)$$
+
+$$\omega_3 = a \sqrt{I_2(I_2-I_1)} \cos(\omega_0 t + \phi_0)$$
+
+where $a$ is a small constant and $\omega_0 = \sqrt{\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}}\Omega$. The angular momentum's components:
+
+$$L_2 = a I_2 \sqrt{I_3(I_3-I_1)} \sin(\omega_0 t + \phi_0)$$
+
+$$L_3 = a I_3 \sqrt{I_2(I_2-I_1)} \cos(\omega_0 t + \phi_0)$$
+
+For rotation near the second axis ($\omega_2 = \Omega$ to first order) the equations are
+
+$$\dot{\omega}_1 = \frac{I_2-I_3}{I_1}\Omega\omega_3$$
+
+$$\dot{\omega}_3 = \frac{I_1-I_2}{I_3}\Omega\omega_1$$
+
+$$\ddot{\omega}_1 - \frac{(I_2-I_1)(I_3-I_2)}{I_1I_3}\Omega^2\omega_1 = 0$$
+"""
+
+
+def _verdicts(text):
+    claims = notes_check.check_text(text)
+    out = {}
+    for c in claims:
+        out.setdefault(c.line, []).append(c.verdict)
+    return claims, out
+
+
+def _line(text, start):
+    return next(k for k, row in enumerate(text.split("\n"), start=1) if row.startswith(start))
+
+
+def test_linearised_equations_their_second_order_form_and_solution_hold():
+    claims, by_line = _verdicts(LINEARISED)
+    assert not [c for c in claims if c.verdict in ("typo", "fails")], [(c.line, c.latex, c.why) for c in claims]
+    for start in (r"$$\dot{\omega}_2 =", r"$$\ddot{\omega}_2", r"$$\omega_2 = a", r"$$\omega_3 = a", r"$$L_2",
+                  r"$$L_3", r"$$\dot{\omega}_1 =", r"$$\ddot{\omega}_1"):
+        assert by_line[_line(LINEARISED, start)] == ["holds"], start
+
+
+@pytest.mark.parametrize("old, new", [
+    (r"$$\omega_3 = a \sqrt{I_2(I_2-I_1)} \cos", r"$$\omega_3 = a \sqrt{I_2(I_2-I_1)} \sin"),      # sin for cos
+    (r"$$\omega_2 = a \sqrt{I_3(I_3-I_1)}", r"$$\omega_2 = a \sqrt{I_2(I_3-I_1)}"),                # an index
+    (r"$$L_3 = a I_3 \sqrt{I_2(I_2-I_1)}", r"$$L_3 = a I_2 \sqrt{I_2(I_2-I_1)}"),                  # Lᵢ ≠ Iᵢωᵢ of it
+    (r"\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}\Omega^2\omega_2", r"\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}\Omega\omega_2"),
+])
+def test_a_slip_in_a_linearised_solution_or_its_second_order_form_is_flagged(old, new):
+    assert old in LINEARISED
+    text = LINEARISED.replace(old, new, 1)
+    claims, by_line = _verdicts(text)
+    line = _line(text, new.split("\\frac")[0] if new.startswith("$$") else "$$\\ddot{\\omega}_2")
+    assert set(by_line[line]) & {"typo", "fails"}, by_line[line]
+    flagged = {c.line for c in claims if c.verdict in ("typo", "fails")}
+    solution_rows = {_line(text, r"$$\omega_2 = a"), _line(text, r"$$\omega_3 = a")}
+    assert flagged <= {line} | (solution_rows if line in solution_rows else set())
+
+
+def test_a_solution_whose_frequency_the_text_never_gives_is_unchecked():
+    text = LINEARISED.replace(r"and $\omega_0 = \sqrt{\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}}\Omega$", "and")
+    claims, by_line = _verdicts(text)
+    row = by_line[_line(text, r"$$\omega_2 = a")]
+    assert row == ["unchecked"]
+    assert any("\\omega_{0}" in c.why for c in claims if c.line == _line(text, r"$$\omega_2 = a"))
+
+
+def test_later_identities_use_the_solution_and_its_constants():
+    text = HEAD + r"""For a symmetric body, $I_1 = I_2$, with
+
+$$\omega_3 = \Omega$$
+
+the equations are
+
+$$\dot{\omega}_1 + n\omega_2 = 0$$
+
+$$\dot{\omega}_2 - n\omega_1 = 0$$
+
+where $n = \frac{I_3 - I_1}{I_1}\Omega$. Their solution:
+
+$$\omega_1 = \omega_0 \cos(nt + \varepsilon)$$
+
+$$\omega_2 = \omega_0 \sin(nt + \varepsilon)$$
+
+so that
+
+$$\omega = \sqrt{\omega_1^2 + \omega_2^2 + \omega_3^2} = \sqrt{\omega_0^2 + \Omega^2}$$
+
+$$\omega = \sqrt{\omega_1^2 + \omega_2^2 + \omega_3^2} = \sqrt{\omega_0^2 + 2\Omega^2}$$
+"""
+    claims, by_line = _verdicts(text)
+    lines = [k for k, row in enumerate(text.split("\n"), start=1) if row.startswith(r"$$\omega = ")]
+    assert by_line[lines[0]] == ["holds"]
+    assert set(by_line[lines[1]]) & {"typo", "fails"}
