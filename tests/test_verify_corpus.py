@@ -29,9 +29,6 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("cline-euler-angles-to-euler-equations", "checked"): "rotation matrices as products of the text's own matrices",
-    ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "checked"): "perturbation solutions and orientation relative to L",
-    ("free-asymmetric-body-orientation-stability-zh-notes-zxz", "false"): "orientation chosen along L; a linearised equation",
-    ("free-rigid-body-euler-case-zh-notes-zxz", "checked"): "the space cone's geometry in the text's own angles",
     ("free-rigid-body-euler-case-zh-notes-zxz", "found"): "a trigonometric identity in the text's own angles",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "found"): "a square dropped in the text's own variable",
@@ -49,7 +46,7 @@ SHORT = {
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "found"): "a rolling half hoop's geometry",
 }
 
-FLOOR = {"checked": 87, "slips_flagged": 12, "holds_flagged": 5}
+FLOOR = {"checked": 92, "slips_flagged": 12, "holds_flagged": 3}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -122,3 +122,57 @@ $$\omega = \sqrt{\omega_1^2 + \omega_2^2 + \omega_3^2} = \sqrt{\omega_0^2 + 2\Om
     lines = [k for k, row in enumerate(text.split("\n"), start=1) if row.startswith(r"$$\omega = ")]
     assert by_line[lines[0]] == ["holds"]
     assert set(by_line[lines[1]]) & {"typo", "fails"}
+
+
+SMALL = HEAD + r"""The torque-free Euler equations:
+
+$$I_1\dot{\omega}_1-(I_2-I_3)\omega_2\omega_3 = 0$$
+
+Suppose the body turns nearly about the first axis, so $\omega_2, \omega_3$ are first-order small. To first order
+
+$$I_1\dot{\omega}_1 = 0$$
+"""
+
+
+def test_an_equation_to_first_order_in_components_the_prose_calls_small_holds():
+    claims, by_line = _verdicts(SMALL)
+    line = _line(SMALL, r"$$I_1\dot{\omega}_1 = 0")
+    assert by_line[line] == ["holds"]
+    assert "first order" in next(c.why for c in claims if c.line == line)
+
+
+def test_without_the_prose_saying_so_the_first_order_equation_is_flagged():
+    text = SMALL.replace(r"so $\omega_2, \omega_3$ are first-order small", "so")
+    claims, by_line = _verdicts(text)
+    assert set(by_line[_line(text, r"$$I_1\dot{\omega}_1 = 0")]) & {"typo", "fails"}
+
+
+ALONG_L = HEAD + r"""The fixed $Z$ axis is taken along the angular momentum, of magnitude $L$:
+
+$$I_1\omega_1 = L\sin\theta\sin\psi$$
+
+$$I_2\omega_2 = L\sin\theta\cos\psi$$
+
+$$I_3\omega_3 = L\cos\theta$$
+
+With the body components of the angular velocity,
+
+$$\dot{\phi} = \frac{\omega_1\sin\psi+\omega_2\cos\psi}{\sin \theta}$$
+
+the precession rate is
+
+$$\dot{\phi} = L\frac{I_1\omega_1^2+I_2\omega_2^2}{L^2-I_3^2\omega_3^2}$$
+"""
+
+
+def test_relations_for_the_orientation_with_the_fixed_axis_along_l_hold():
+    claims, by_line = _verdicts(ALONG_L)
+    assert not [c for c in claims if c.verdict in ("typo", "fails")], [(c.line, c.why) for c in claims]
+    for start in (r"$$I_1\omega_1 = L", r"$$I_3\omega_3", r"$$\dot{\phi} = L"):
+        assert by_line[_line(ALONG_L, start)] == ["holds"], start
+
+
+def test_a_slip_under_the_chosen_orientation_is_still_flagged():
+    text = ALONG_L.replace(r"{L^2-I_3^2\omega_3^2}", r"{L^2+I_3^2\omega_3^2}")
+    claims, by_line = _verdicts(text)
+    assert set(by_line[_line(text, r"$$\dot{\phi} = L")]) & {"typo", "fails"}

@@ -135,13 +135,15 @@ class Motion:
                     break
         if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]
+        if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
+            r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
         dyn = set(lx.W) | set(lx.WD)
         for i, R in enumerate(euler):
             if R == 0:
                 continue
             q = sp.cancel(sp.together(r / R))
             if not (free(q) & dyn) and q != 0:
-                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
+                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = {}
         for i, R in enumerate(euler):
@@ -220,6 +222,22 @@ class Motion:
                               f"{self.tex(fixed[0])} {rel_tex} {self.tex(fixed[1])}")
                     return
         self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
+
+    def _order_note(self) -> str:
+        if not self.ctx.first_order:
+            return ""
+        return f" (to first order in {', '.join(self.tex(w) for w in lx.W if w in self.ctx.first_order)}, small as the text says)"
+
+    def _to_first_order(self, e):
+        """e without its terms of second or higher order in the small ω̃ᵢ (and their rates)."""
+        small = [w for w in lx.W if w in self.ctx.first_order] + \
+            [lx.WD[i] for i, w in enumerate(lx.W) if w in self.ctx.first_order]
+        keep = []
+        for term in sp.Add.make_args(sp.expand(e)):
+            powers = term.as_powers_dict()
+            if sum(powers.get(s, 0) for s in small) < 2:
+                keep.append(term)
+        return sp.Add(*keep)
 
     # -- second-order equations ω̃̈ᵢ = …
     def _second_order(self, line, piece, parsed) -> bool:

@@ -49,10 +49,11 @@ from derive.lecture import notes as nt
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
 from derive.lecture.derivation import derivation, families
 from derive.lecture.motion import Motion
+from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
-from derive.symbolic.lagrangian import ACCELS, I1, I2
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 from derive.lecture import vectors as vc
 
@@ -97,10 +98,13 @@ class _Context:
     assumptions: list = field(default_factory=list)   # their LaTeX, for the why
     vec_model: str | None = None                      # "particle" after a sum over particles
     stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
+    orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
+    first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
+        self.first_order = set()
 
 
 # ---- the checker ------------------------------------------------------------------------------
@@ -164,6 +168,8 @@ class Checker(TextNames, Rereading, Motion):
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
+            elif item.kind == "small":
+                self._small(item)
             elif item.kind in ("display", "inline"):
                 latex = item.latex
                 # displays that start with + or − continue the previous one's right side
@@ -241,6 +247,22 @@ class Checker(TextNames, Rereading, Motion):
             self.ctx.subs[a] = b
             self.ctx.stated[a] = f"line {item.line}"
             self._spin_set(a, b)
+
+    def _small(self, item):
+        """The prose calls ω̃ᵢ (or Lᵢ = Iᵢω̃ᵢ) small: the equations that follow hold to first order in them."""
+        moments = (I1, I2, I3)
+        for text in item.symbols:
+            for part in text.split(","):
+                try:
+                    parsed = lx.parse(part, self.vocab)
+                except lx.NotRead:
+                    continue
+                if len(parsed.members) != 1:
+                    continue
+                v = parsed.members[0].value
+                for i, w in enumerate(lx.W):
+                    if v == w or v == moments[i] * w:
+                        self.ctx.first_order.add(w)
 
     def _signs(self, item):
         syms = []
@@ -600,6 +622,10 @@ class Checker(TextNames, Rereading, Motion):
             if ok:
                 self._add(line, piece, kind, "holds", why)
                 return
+        oriented = None if small is not None else self._oriented(line, val, targets, seed)
+        if oriented:
+            self._add(line, piece, kind, "holds", oriented)
+            return
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
             return
@@ -616,6 +642,31 @@ class Checker(TextNames, Rereading, Motion):
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
         else:
             self._add(line, piece, kind, "fails", f"as written: {why}")
+
+    def _oriented(self, line, val, targets, seed) -> str | None:
+        """Why the claim holds with the fixed first axis along 𝐋 (`derive.lecture.orientation`), or
+        None. Tried for a relation of the angles without rates (the text stating its orientation,
+        I₁ω₁ = L sin θ sin ψ) and, once one held so, for the relations that follow."""
+        rot = self.d.rot
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        if isinstance(val, sp.MatrixBase) or rot.ANGLES[0] in every or not every & set(lx.W) | {lx.LMAG}:
+            return None
+        stating = every & set(rot.ANGLES[1:]) and not every & (set(rot.RATES) | set(ACCELS))
+        if self.ctx.orientation is None and not stating:
+            return None
+        along = along_momentum(self.notes.convention, sp.ImmutableMatrix(self.d.omega))
+        if not along.ok:
+            return None
+        for f in targets:
+            a, b = along.apply(val), along.apply(self._resolve(f))
+            if along.angles_left(a) or along.angles_left(b):
+                continue
+            ok, how = self._compare(a, b, seed + "/along-L")
+            if ok:
+                where = f", line {self.ctx.orientation}" if self.ctx.orientation is not None else ""
+                self.ctx.orientation = self.ctx.orientation if self.ctx.orientation is not None else line
+                return f"{how}, with the fixed first axis along 𝐋 (the orientation the text chooses{where})"
+        return None
 
     def _undecidable(self, written, val, targets) -> str | None:
         """Why a relation that does not hold as an identity is no slip the derivation can name:
