@@ -176,3 +176,57 @@ def test_a_slip_under_the_chosen_orientation_is_still_flagged():
     text = ALONG_L.replace(r"{L^2-I_3^2\omega_3^2}", r"{L^2+I_3^2\omega_3^2}")
     claims, by_line = _verdicts(text)
     assert set(by_line[_line(text, r"$$\dot{\phi} = L")]) & {"typo", "fails"}
+
+
+OSCILLATOR = HEAD + r"""The principal axes are $x$, $y$, $z$, with principal moments $I_x$, $I_y$, $I_z$. Euler's equations:
+
+$$I_{x} \dot{\omega}_{x} = -(I_z - I_y) \omega_{y} \omega_{z}$$
+
+$$I_{y} \dot{\omega}_{y} = (I_z - I_x) \omega_{z} \omega_{x}$$
+
+$$I_{z} \dot{\omega}_{z} = -(I_y - I_x) \omega_{x} \omega_{y}$$
+
+Rotation mostly about $x$: $0 \approx \omega_y, \omega_z \ll \omega_x$. Differentiating,
+
+$$\ddot{\omega}_{y} = - \frac{(I_z - I_x)(I_y - I_x) \omega_{x}^2}{I_y I_z} \omega_{y}$$
+
+The bracket is named $k^2 = \frac{(I_z - I_x)(I_y - I_x) \omega_{x}^2}{I_y I_z} > 0$, so
+
+$$\ddot{\omega}_y = - k^2 \omega_y \quad\implies\quad \omega_y(t) = \omega_y(0) \cos(k t) + \frac{1}{k}\dot{\omega}_y(0) \sin(k t)$$
+"""
+
+
+def test_an_oscillator_equation_in_the_texts_axes_and_its_solution_hold():
+    claims, by_line = _verdicts(OSCILLATOR)
+    assert not [c for c in claims if c.verdict in ("typo", "fails")], [(c.line, c.latex, c.why) for c in claims]
+    assert by_line[_line(OSCILLATOR, r"$$\ddot{\omega}_{y} =")] == ["holds"]
+    assert by_line[_line(OSCILLATOR, r"$$\ddot{\omega}_y = - k^2")] == ["holds", "holds"]
+
+
+def _numbered(text):
+    """The text with axes 1, 2, 3 for x, y, z (no names learned from the prose)."""
+    text = text.replace("The principal axes are $x$, $y$, $z$, with principal moments $I_x$, $I_y$, $I_z$. ", "")
+    for a, k in zip("xyz", "123"):
+        text = text.replace("_{" + a + "}", "_" + k).replace("_" + a, "_" + k)
+    return text
+
+
+def test_a_second_order_equation_that_drops_a_power_is_flagged():
+    text = _numbered(OSCILLATOR).replace(r"$$\ddot{\omega}_2 = - k^2 \omega_2", r"$$\ddot{\omega}_2 = - k \omega_2")
+    assert not [c for c in notes_check.check_text(_numbered(OSCILLATOR)) if c.verdict in ("typo", "fails")]
+    claims, by_line = _verdicts(text)
+    assert set(by_line[_line(text, r"$$\ddot{\omega}_2 = - k")]) & {"typo", "fails"}
+
+
+def test_a_label_set_twice_in_a_block_is_a_typo_for_the_one_left_out():
+    text = HEAD + r"""A box of sides $a$, $b$, $c$ and mass $M$ has
+
+$$
+I_{x} = \frac{1}{12}M(b^2 + c^2), \quad I_{x} = \frac{1}{12}M(c^2 + a^2), \quad I_{z} = \frac{1}{12}M(a^2 + b^2)
+$$
+"""
+    claims = notes_check.check_text(text)
+    typos = [c for c in claims if c.verdict == "typo"]
+    assert len(typos) == 1 and typos[0].correction.startswith("I_{y} =")
+    assert not [c for c in notes_check.check_text(text.replace("I_{x} = \\frac{1}{12}M(c", "I_{y} = \\frac{1}{12}M(c"))
+                if c.verdict in ("typo", "fails")]

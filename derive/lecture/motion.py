@@ -247,10 +247,9 @@ class Motion:
         dd = {}
         for m in parsed.members:
             for s in free(m.value):
-                atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
-                if atom is not None and atom.base == "omega" and atom.dots == 2 and atom.sub in ("1", "2", "3") \
-                        and not atom.bold:
-                    dd[s] = int(atom.sub) - 1
+                i = self._second_rate(s)
+                if i is not None:
+                    dd[s] = i
         if not dd or len(parsed.members) != 2 or set(parsed.relations) != {"="}:
             return False
         self._flush()
@@ -267,7 +266,8 @@ class Motion:
 
         def residual(r):
             r = self._own_defs(self._resolve(r)).xreplace(accel).xreplace(self.ctx.subs).xreplace(flows)
-            return sp.expand(r.xreplace(self.ctx.subs))
+            r = sp.expand(r.xreplace(self.ctx.subs))
+            return self._to_first_order(r) if self.ctx.first_order else r
 
         r = residual(raw)
         known = set(dd) | self._constants() | set(self.ctx.defs)
@@ -275,18 +275,36 @@ class Motion:
         why = "one more derivative of the first-order equations (ω̃̈ᵢ = Σⱼ ∂ω̃̇ᵢ/∂ω̃ⱼ ω̃̇ⱼ, under the section's settings)"
         ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), piece + "/second")
         if ok:
-            self._add(line, piece, "equation of motion", "holds", f"{why}: {how}")
+            self._add(line, piece, "equation of motion", "holds", f"{why}: {how}{self._order_note()}")
+            self._second_noted(raw, dd)
             return True
         if loose:
             self._add(line, piece, "equation of motion", "unchecked", f"involves {', '.join(loose)}, which the text has not defined")
             return True
         for cand, what in ([] if self.judging_only else edits(raw)):
             if zero(sp.Matrix([residual(cand)]), sp.Matrix([0]), piece + "/second-edit")[0]:
+                self._second_noted(cand, dd)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {how}; one edit ({what}) makes it "
                           f"{why}", self.tex(cand) + " = 0")
                 return True
         self._add(line, piece, "equation of motion", "fails", f"as written: not {why}: {how}")
         return True
+
+    def _second_rate(self, s):
+        """The component i of a symbol of the text's that is ω̃̈ᵢ (``\\ddot{\\omega}_1``, or ``_y`` where
+        the text calls the axes x, y, z), or None."""
+        atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
+        if atom is None or atom.dots != 2 or atom.bold:
+            return None
+        try:
+            plain = self.vocab.resolve(atom.with_(dots=0))
+        except lx.NotRead:
+            return None
+        return lx.W.index(plain) if plain in lx.W else None
+
+    def _second_noted(self, raw, dd):
+        """Keep a second-order equation: the solutions after it are substituted into it."""
+        self.ctx.eoms2.append((raw, dd, self._regime()))
 
     def _flows(self) -> dict:
         """ω̃̇ⱼ → its value, from the equation for it that applies now (`_eom_for`)."""
@@ -296,6 +314,7 @@ class Motion:
             if eq is None:
                 continue
             eq = sp.expand(self._own_defs(eq).xreplace(self.ctx.subs))
+            eq = self._to_first_order(eq) if self.ctx.first_order else eq
             c = sp.diff(eq, lx.WD[j])
             if c == 0 or free(c) & set(lx.WD) or (free(eq) & set(lx.WD)) - {lx.WD[j]}:
                 continue
@@ -340,8 +359,9 @@ class Motion:
         residual, or, when it wrote none that applies, Euler's equation i under the settings. None
         when that equation involves a component outside ``allowed``."""
         wset = {k: v for k, v in subs.items() if k in lx.W}
+        regime = self._regime(subs)
         for raw, _, settings in reversed(self.ctx.eoms):
-            if free(raw) & {lx.WD[i]} and settings == wset and \
+            if free(raw) & {lx.WD[i]} and settings == regime and \
                     (free(raw) & set(lx.W)) - {lx.W[2]} - set(wset) <= set(allowed):
                 return raw
         if lx.W[i] in wset:
@@ -351,9 +371,15 @@ class Motion:
             return None
         return R
 
+    def _regime(self, subs=None) -> dict:
+        """The settings of ω̃ (ω̃₁ = Ω) and the components taken as small: an equation the text wrote
+        under other ones (another axis, another linearisation) no longer applies."""
+        subs = self.ctx.subs if subs is None else subs
+        return {**{k: v for k, v in subs.items() if k in lx.W}, "small": frozenset(self.ctx.first_order)}
+
     def _eom_noted(self, raw, line):
-        """Keep an equation of motion the text wrote, with the settings of ω̃ it was written under."""
-        self.ctx.eoms.append((raw, line, {k: v for k, v in self.ctx.subs.items() if k in lx.W}))
+        """Keep an equation of motion the text wrote, with the regime it was written under."""
+        self.ctx.eoms.append((raw, line, self._regime()))
 
     def _flush(self):
         """Check the pending group of solutions against the latest equations, under the settings of
@@ -376,10 +402,16 @@ class Motion:
         sol = {w: self._own_defs(f) for _, _, w, f, _ in group}
         t = lx.t
         chosen = []
+        regime = self._regime()
         for w in sol:
-            raw = self._eom_for(lx.W.index(w), self.ctx.subs, sol)
-            if raw is not None:
-                chosen.append(self._own_defs(raw))
+            second = next((r.xreplace({d: sp.Derivative(lx.W[i], lx.t, 2) for d, i in dd.items()})
+                           for r, dd, settings in reversed(self.ctx.eoms2)
+                           if settings == regime and lx.W.index(w) in dd.values()
+                           and free(r) & set(lx.W) <= set(sol) | {lx.W[lx.W.index(w)]}), None)
+            raw = second if second is not None else self._eom_for(lx.W.index(w), self.ctx.subs, sol)
+            raw = raw if raw is None else self._own_defs(raw)
+            if raw is not None and raw not in chosen:
+                chosen.append(raw)
         for w, f in sol.items():
             self.ctx.solutions[w] = f
         if not chosen:
@@ -392,7 +424,8 @@ class Motion:
             rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
             for k, case in enumerate(self.ctx.cases):
                 for raw in chosen:
-                    r = raw.xreplace({**sol_, **rates_}).xreplace(subs)
+                    r = raw.xreplace({sp.Derivative(w, t, 2): sp.diff(f, t, 2) for w, f in sol_.items()})
+                    r = r.xreplace({**sol_, **rates_}).xreplace(subs)
                     r = r.xreplace(case) if case else r
                     ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
                     if not ok:

@@ -60,6 +60,28 @@ from derive.lecture import vectors as vc
 VERDICTS = ("holds", "typo", "fails", "unchecked")
 
 
+_LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
+
+
+def _repeated_labels(pieces) -> dict:
+    """Rows of one block that set one label twice (``I_{x} = …``, ``I_{x} = …``, ``I_{z} = …``): the
+    second is a typo for the index the block leaves out. Row → its correction."""
+    rows = [(p, _LABEL.match(p)) for p in pieces]
+    out = {}
+    for base in {m.group(1) for _, m in rows if m}:
+        mine = [(p, m) for p, m in rows if m and m.group(1) == base]
+        subs = [m.group(3) or m.group(4) for _, m in mine]
+        for family in ("123", "xyz"):
+            if len(mine) < 3 or not set(subs) <= set(family):
+                continue
+            left = [x for x in family if x not in subs]
+            twice = [k for k in range(len(subs)) if subs[k] in subs[:k]]
+            if len(left) == 1 and len(twice) == 1 and mine[twice[0]][0] != mine[subs.index(subs[twice[0]])][0]:
+                p, m = mine[twice[0]]
+                out[p] = (p[:m.start(2)] + "{" + left[0] + "}" + p[m.end(2):]).strip()
+    return out
+
+
 def _name_tex(name: str) -> str:
     """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
     base, _, sub = name.partition("_")
@@ -100,6 +122,7 @@ class _Context:
     stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
     orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
     first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
+    eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
@@ -165,12 +188,14 @@ class Checker(TextNames, Rereading, Motion):
             elif item.kind == "context":
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
+                self._small_before_ll(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
             elif item.kind == "small":
-                self._small(item)
+                self._small(item.symbols)
             elif item.kind in ("display", "inline"):
+                self._small_before_ll(item.latex)
                 latex = item.latex
                 # displays that start with + or − continue the previous one's right side
                 while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
@@ -248,10 +273,16 @@ class Checker(TextNames, Rereading, Motion):
             self.ctx.stated[a] = f"line {item.line}"
             self._spin_set(a, b)
 
-    def _small(self, item):
+    def _small_before_ll(self, latex):
+        """``0 \\approx \\omega_y, \\omega_z \\ll \\omega_x``: what stands before ≪ is small."""
+        if "\\ll" in latex:
+            left = re.split(r"\\ll(?![a-z])", latex)[0]
+            self._small([re.split(r"\\approx|\\simeq", left)[-1]])
+
+    def _small(self, symbols):
         """The prose calls ω̃ᵢ (or Lᵢ = Iᵢω̃ᵢ) small: the equations that follow hold to first order in them."""
         moments = (I1, I2, I3)
-        for text in item.symbols:
+        for text in symbols:
             for part in text.split(","):
                 try:
                     parsed = lx.parse(part, self.vocab)
@@ -289,9 +320,15 @@ class Checker(TextNames, Rereading, Motion):
             return
         seen = []
         self._open_display(inline=item.kind == "inline")
+        relabelled = _repeated_labels(pieces)
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
+            if piece in relabelled:
+                self._add(item.line, piece, "setting", "typo", "repeats the label of an earlier row of this block with "
+                          "another value; the row that should stand here is the label the block leaves out (an index)",
+                          relabelled[piece])
+                continue
             before = len(self.claims)
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
@@ -317,6 +354,7 @@ class Checker(TextNames, Rereading, Motion):
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:

@@ -99,6 +99,15 @@ class TextNames:
         if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
+        base = m0.base if isinstance(m0, sp.Pow) and m0.exp == 2 else None
+        if self._new_name(base) and base not in getattr(self, "generics_before", ()) and rels[0] in ("=", "≡") \
+                and not (_free(members[1]) & {base}):
+            # "names it k₄² = …": k₄ is the positive root (a rate or a frequency)
+            self.ctx.defs[base] = sp.sqrt(members[1])
+            self._add(line, piece, "new symbol", "unchecked",
+                      f"defines the text's symbol {self.tex(base)} by its square (recorded, then used)")
+            self.settings_only = False
+            return True
         if set(rels) - {"=", "≡", "≈"}:
             if self._new_name(m0) and rels[0] in ("=", "≡") and not (_free(members[1]) & {m0}):
                 self.ctx.defs[m0] = members[1]       # k₁ ≡ I_z − I_y > 0: the name, and a condition
