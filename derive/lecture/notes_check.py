@@ -122,6 +122,7 @@ class _Context:
     stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
     orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
     first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
+    forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
 
     def new_section(self):
@@ -502,7 +503,7 @@ class Checker(TextNames, Rereading, Motion):
                 if isinstance(s, lx.Quantity):
                     forms = self.d.forms(s)
                     if forms:
-                        rep[s] = forms[0]
+                        rep[s] = self.ctx.forms_held.get(s, forms[0])
                 elif isinstance(s, lx.Generic) and s in self.ctx.subs:
                     rep[s] = self.ctx.subs[s]      # a case the text sets for its own symbol wins
                 elif s in self.ctx.defs:
@@ -659,6 +660,8 @@ class Checker(TextNames, Rereading, Motion):
             ok, why = self._compare(val, self._resolve(f), seed, small, order)
             if ok:
                 self._add(line, piece, kind, "holds", why)
+                if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
+                    self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
                 return
         oriented = None if small is not None else self._oriented(line, val, targets, seed)
         if oriented:
