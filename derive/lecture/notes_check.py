@@ -38,26 +38,26 @@ why (not a claim, unknown symbol, cannot parse).
 from __future__ import annotations
 
 import functools
-import json
 import re
-from dataclasses import dataclass, field
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
+from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
 from derive.lecture.motion import Motion
+from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
-from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
+from derive.lecture.vector_claims import VectorStatements
+from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
-from derive.lecture import vectors as vc
 
-VERDICTS = ("holds", "typo", "fails", "unchecked")
+
 
 
 _LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
@@ -89,50 +89,8 @@ def _name_tex(name: str) -> str:
 
 
 # ---- results ------------------------------------------------------------------------------------
-@dataclass
-class Claim:
-    """One checked (or not) formula: the JSON row of the contract."""
-
-    line: int
-    latex: str
-    kind: str
-    verdict: str
-    correction: str | None = None
-    why: str = ""
-    assumes: list = field(default_factory=list)    # what it holds under: stated (with where) or not
-
-    def as_dict(self) -> dict:
-        return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,
-                "correction": self.correction, "why": self.why, "assumes": list(self.assumes)}
-
-
-@dataclass
-class _Context:
-    """What the text has said so far: assumptions of the section, definitions, equations."""
-
-    subs: dict = field(default_factory=dict)          # I₂ → I₁, p_α → p_γ, ω̃̇₃ → 0
-    small: list = field(default_factory=list)         # β ≈ 0
-    cases: list = field(default_factory=lambda: [{}])  # sign cases
-    solutions: dict = field(default_factory=dict)     # ω̃ᵢ → f(t)
-    defs: dict = field(default_factory=dict)          # Ω → the notes' definition
-    eoms: list = field(default_factory=list)          # (residual as written, line, settings of ω̃)
-    head: str | None = None                           # left side continued by "= …" displays
-    assumptions: list = field(default_factory=list)   # their LaTeX, for the why
-    vec_model: str | None = None                      # "particle" after a sum over particles
-    stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
-    orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
-    first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
-    forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
-    eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
-
-    def new_section(self):
-        self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
-        self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
-        self.first_order = set()
-
-
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -142,7 +100,7 @@ class Checker(TextNames, Rereading, Motion):
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
-        self.ctx = _Context()
+        self.ctx = Context()
         self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()
         self.claims: list[Claim] = []
@@ -209,109 +167,8 @@ class Checker(TextNames, Rereading, Motion):
         self._place_flushed(len(self.claims))
         return self.claims
 
-    def _enter_section(self, level):
-        """A heading: what the text assumed in the enclosing section (a heading of a lower level)
-        before its first subsection holds in each subsection; what a subsection assumed ends
-        with it."""
-        stack = self._sections
-        if stack and stack[-1][0] < level and stack[-1][1] is None:
-            stack[-1][1] = self._snapshot()            # the parent's assumptions, for its children
-        while stack and stack[-1][0] >= level:
-            stack.pop()
-        self.ctx.new_section()
-        if stack and stack[-1][1] is not None:
-            parent = stack[-1][1]
-            self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
-            self.ctx.assumptions, self.ctx.defs = list(parent.assumptions), dict(self.ctx.defs)
-            self.ctx.stated = dict(parent.stated)
-        stack.append([level, None])
-
-    def _symmetric(self, line, words):
-        """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
-        if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
-            self.ctx.subs[I2] = I1
-            self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
-            self.ctx.stated[I2] = f"line {line}"
-
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
-
-    # -- context
-    def _assume(self, item):
-        try:
-            parsed = lx.parse(item.latex, self.vocab)
-        except lx.NotRead as err:
-            if re.search(r"\\tau(?![a-z])", item.latex):
-                self.ctx.assumptions.append(item.latex)      # τ = 0: the torque-free case
-            if item.display:
-                self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
-            return
-        m0 = parsed.members[0].value if parsed.members else None
-        if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
-                and free(parsed.members[1].value) and not free(parsed.members[1].value) & {m0}:
-            self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
-            if item.display:
-                self._add(item.line, item.latex, "new symbol", "unchecked",
-                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
-            return
-        if item.display:
-            self._add(item.line, item.latex, "assumption", "unchecked",
-                      "an assumption of the text: applies to the displays that follow, up to the next heading")
-        self.ctx.assumptions.append(item.latex)
-        if len(parsed.members) != 2:
-            return
-        a, b = parsed.members[0].value, parsed.members[1].value
-        rel = parsed.relations[0]
-        if rel == "≈" and b == 0 and isinstance(a, sp.Symbol):
-            if a in ANGLES:
-                self.ctx.small.append(a)
-            else:
-                self.ctx.subs[a] = sp.S.Zero
-        elif rel in ("=", "≈") and isinstance(a, sp.Symbol) and not isinstance(a, lx.Quantity):
-            if a.xreplace(self.ctx.subs) == sp.sympify(b).xreplace(self.ctx.subs):
-                return                            # already so (the prose said "a symmetric top")
-            self.ctx.subs[a] = b
-            self.ctx.stated[a] = f"line {item.line}"
-            self._spin_set(a, b)
-
-    def _small_before_ll(self, latex):
-        """``0 \\approx \\omega_y, \\omega_z \\ll \\omega_x``: what stands before ≪ is small."""
-        if "\\ll" in latex:
-            left = re.split(r"\\ll(?![a-z])", latex)[0]
-            self._small([re.split(r"\\approx|\\simeq", left)[-1]])
-
-    def _small(self, symbols):
-        """The prose calls ω̃ᵢ (or Lᵢ = Iᵢω̃ᵢ) small: the equations that follow hold to first order in them."""
-        moments = (I1, I2, I3)
-        for text in symbols:
-            for part in text.split(","):
-                try:
-                    parsed = lx.parse(part, self.vocab)
-                except lx.NotRead:
-                    continue
-                if len(parsed.members) != 1:
-                    continue
-                v = parsed.members[0].value
-                for i, w in enumerate(lx.W):
-                    if v == w or v == moments[i] * w:
-                        self.ctx.first_order.add(w)
-
-    def _signs(self, item):
-        syms = []
-        for s in item.symbols:
-            try:
-                p = lx.parse(s, self.vocab)
-            except lx.NotRead:
-                return
-            syms.append(p.members[0].value)
-        if len(syms) != 2 or not all(isinstance(s, sp.Symbol) for s in syms):
-            return
-        u, v = sp.Dummy("u", positive=True), sp.Dummy("v", positive=True)
-        x, y = syms
-        if item.text == "same":
-            self.ctx.cases = [{x: u, y: v}, {x: -u, y: -v}]
-        else:
-            self.ctx.cases = [{x: u, y: -v}, {x: -u, y: v}]
 
     # -- a display
     def _display(self, item, latex):
@@ -415,63 +272,6 @@ class Checker(TextNames, Rereading, Motion):
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
             self._definition(line, piece, parsed)
-
-    def _vectors(self, line, piece, text) -> bool:
-        """A statement in vectors, tensors, sums over particles or frame derivatives
-        (`derive.lecture.vectors`): each member against the first, a single-edit search of the
-        LaTeX for a correction. False when that reader cannot read it either."""
-        self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
-        try:
-            reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
-        except lx.NotRead:
-            return False
-        finally:
-            self.vocab.open = True
-        if set(reading.relations) - {"=", "≡"}:
-            return False
-        first = reading.members[0]
-        self.ctx.head = reading.source[:first[0].end].strip()
-        if reading.model == "particle":
-            self.ctx.vec_model = "particle"
-        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
-        where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
-        for k in range(1, len(first)):
-            if first[k].value is vc.LAW or first[0].value is vc.LAW:
-                self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
-                          "starts (Euler's equations are it in body axes), not a consequence of it")
-                continue
-            ok, how = vc.holds(reading, k, f"{piece}/{k}")
-            if ok:
-                self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
-                continue
-            if "not a vector" in how or " against a " in how:
-                self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
-                continue
-            fix = None if self.judging_only else self._vector_fix(reading, k, piece)
-            if fix:
-                self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "
-                          f"({vc.WHY[reading.model]})", fix[0])
-            else:
-                self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
-        return True
-
-    def _vector_fix(self, reading, k, piece):
-        """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
-        src, m = reading.source, reading.members[0][k]
-        rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
-        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
-        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
-            if n >= 80:
-                break
-            try:
-                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
-            except lx.NotRead:
-                continue
-            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
-                continue
-            if vc.holds(again, k, f"{piece}/edit{n}")[0]:
-                return vc.restore(f"{left} {rel} {edited.strip()}"), what
-        return None
 
     def _new_symbol(self, line, piece, text) -> bool:
         """X ≡ … with X unknown: record X (a new symbol of the notes) and its definition."""
@@ -610,37 +410,6 @@ class Checker(TextNames, Rereading, Motion):
                 self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
-
-    def _torque_free(self, line, piece, parsed):
-        """d𝐋/dt = 0 = Σ cᵢ êᵢ with τ = 0 stated: component i of the written d𝐋/dt, set to 0, must be
-        Euler's equation i (a non-zero multiple of Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ); without a written
-        d𝐋/dt it restates the torque-free case."""
-        stated = any(re.search(r"\\tau(?![a-z])", a) for a in self.ctx.assumptions)
-        written = [mm.value for mm in parsed.members[1:] if mm.value != 0]
-        if not stated:
-            self._add(line, piece, "equation of motion", "unchecked", "d𝐋/dt = 0 needs τ = 0, which the text does not state")
-            return
-        if not written:
-            self._add(line, piece, "equation of motion", "unchecked",
-                      "d𝐋/dt = 0: the torque-free case (τ = 0, stated in the text), an assumption")
-            return
-        try:
-            col = column(self._resolve(written[-1]))
-        except Mismatch as err:
-            self._add(line, piece, "equation of motion", "fails", f"d𝐋/dt = 0 with d𝐋/dt = {err}")
-            return
-        euler = self.d.euler(self.ctx.subs)
-        dyn = set(lx.W) | set(lx.WD)
-        for i in range(3):
-            r = sp.expand(col[i].xreplace(self.ctx.subs)) if len(col) == 3 else None
-            q = sp.cancel(sp.together(r / euler[i])) if r is not None and euler[i] != 0 else None
-            if q is None or q == 0 or free(q) & dyn:
-                self._add(line, piece, "equation of motion", "fails",
-                          f"d𝐋/dt = 0 (τ = 0 stated): component {i + 1} is not Euler's equation {i + 1}")
-                return
-        self._add(line, piece, "equation of motion", "holds",
-                  "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
-                  "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
 
     def _one(self, line, piece, kind, left, value, parsed, k, approx=False, label=None, forms=None, args=None):
         """Check member k against the label's derived forms (or the written left side)."""
@@ -819,42 +588,3 @@ def check_notes(path, convention: str | None = None) -> list[Claim]:
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
     return Checker(nt.parse_notes(text, path, convention)).run()
-
-
-def summary(claims) -> dict:
-    out = {v: sum(c.verdict == v for c in claims) for v in VERDICTS}
-    out["claims"] = len(claims)
-    out["checked"] = sum(c.verdict != "unchecked" for c in claims)
-    return out
-
-
-def exit_status(claims) -> int:
-    """0 when every checked claim holds, 1 when any is a typo or fails."""
-    return 1 if any(c.verdict in ("typo", "fails") for c in claims) else 0
-
-
-def render(claims, fmt: str = "text", path: str = "") -> str:
-    """The report: ``text`` (one line per claim, indented why/correction), ``markdown`` (a table)
-    or ``json`` (the contract's shape)."""
-    if fmt == "json":
-        return json.dumps({"claims": [c.as_dict() for c in claims], "summary": summary(claims)}, ensure_ascii=False, indent=1) + "\n"
-    s = summary(claims)
-    total = f"{s['claims']} claims ({s['checked']} checked): " + ", ".join(f"{s[v]} {v}" for v in VERDICTS)
-    if fmt == "markdown":
-        lines = ["| line | kind | verdict | formula | why |", "|---|---|---|---|---|"]
-        for c in claims:
-            verdict = f"typo → ${c.correction}$" if c.verdict == "typo" and c.correction else f"**{c.verdict}**"
-            cells = (str(c.line), c.kind, verdict, f"${' '.join(c.latex.split())}$", c.why)
-            lines.append("| " + " | ".join(x.replace("|", r"\|").replace("\n", " ") for x in cells) + " |")
-        return "\n".join(lines) + f"\n\n{total}\n"
-    if fmt != "text":
-        raise ValueError(f"unknown format {fmt!r} (text, markdown or json)")
-    out = []
-    for c in claims:
-        out.append(f"{path}:{c.line}: {c.verdict:<9} {c.kind}: {' '.join(c.latex.split())[:100]}")
-        if c.correction:
-            out.append(f"    corrected: {c.correction}")
-        if c.why:
-            out.append(f"    why: {c.why}")
-    out.append(total)
-    return "\n".join(out) + "\n"
