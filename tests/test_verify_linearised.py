@@ -230,3 +230,30 @@ $$
     assert len(typos) == 1 and typos[0].correction.startswith("I_{y} =")
     assert not [c for c in notes_check.check_text(text.replace("I_{x} = \\frac{1}{12}M(c", "I_{y} = \\frac{1}{12}M(c"))
                 if c.verdict in ("typo", "fails")]
+
+
+ORDERED = HEAD + r"""A box has sides
+
+$$a > b > c$$
+
+so that
+
+$$b^2 + c^2 < c^2 + a^2 < a^2 + b^2$$
+
+Since $I_1<I_2<I_3$,
+
+$$- \frac{(I_2-I_1)(I_3-I_2)}{I_1I_3}\Omega^2 < 0$$
+"""
+
+
+def test_inequalities_follow_from_the_orderings_the_text_states():
+    claims, by_line = _verdicts(ORDERED)
+    assert by_line[_line(ORDERED, "$$b^2")] == ["holds"]
+    assert by_line[_line(ORDERED, "$$- \\frac")] == ["holds"]
+
+
+def test_a_reversed_inequality_under_a_stated_ordering_is_a_typo_and_an_undecided_one_unchecked():
+    text = ORDERED.replace(r"\Omega^2 < 0", r"\Omega^2 > 0")
+    assert "typo" in _verdicts(text)[1][_line(text, "$$- \\frac")]
+    text = ORDERED.replace(r"(I_2-I_1)(I_3-I_2)", r"(I_2-I_1)(I_3-\Omega)")
+    assert _verdicts(text)[1][_line(text, "$$- \\frac")] == ["unchecked"]

@@ -37,6 +37,7 @@ class Context:
     orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
     first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
     forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
+    orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
 
     def new_section(self):
@@ -94,6 +95,11 @@ class Reading:
             self._add(item.line, item.latex, "assumption", "unchecked",
                       "an assumption of the text: applies to the displays that follow, up to the next heading")
         self.ctx.assumptions.append(item.latex)
+        values = [m.value for m in parsed.members]
+        if len(values) > 1 and set(parsed.relations) <= {"<", ">", "≤", "≥"} and \
+                all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+            self.ctx.orderings.append(values if parsed.relations[0] in ("<", "≤") else values[::-1])
+            return
         if len(parsed.members) != 2:
             return
         a, b = parsed.members[0].value, parsed.members[1].value

@@ -174,6 +174,8 @@ class Motion:
             self._add(line, piece, kind, "unchecked", "repeats an earlier row of the same block")
 
     def _inequality(self, line, piece, parsed):
+        if self._ordered(line, piece, [m.value for m in parsed.members], parsed.relations):
+            return
         if len(parsed.members) != 2:
             self._add(line, piece, "inequality", "unchecked", "a chain of inequalities")
             return
@@ -238,6 +240,64 @@ class Motion:
             if sum(powers.get(s, 0) for s in small) < 2:
                 keep.append(term)
         return sp.Add(*keep)
+
+    # -- inequalities under the orderings the text states
+    def _ordered(self, line, piece, written, rels) -> bool:
+        """A chain of symbols (``a > b > c``, ``I_1 < I_2 < I_3``) is an ordering the text states;
+        an inequality in the symbols it ordered (and others, with the section's settings) holds
+        when it follows from the orderings, and is a typo (the relation reversed) when its
+        opposite does. False when the statement is neither."""
+        values = [sp.sympify(v) for v in written]
+        if not set(rels) <= {"<", ">", "≤", "≥"} or any(isinstance(v, sp.MatrixBase) for v in values):
+            return False
+        if all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+            chain = values if rels[0] in ("<", "≤") else values[::-1]
+            self.ctx.orderings.append(chain)
+            self._add(line, piece, "assumption", "unchecked", "an ordering the text states (used for the inequalities that follow)")
+            return True
+        ordered = set().union(*map(set, self.ctx.orderings)) if self.ctx.orderings else set()
+        values = [self._own_defs(self._resolve(v)).xreplace(self.ctx.subs) for v in values]
+        syms = set().union(*(free(v) for v in values))
+        if not ordered or not syms & ordered or not syms <= ordered | set(lx.W) | {s for s in syms if isinstance(s, lx.Generic)}:
+            return False
+        verdicts = []
+        for k, rel in enumerate(rels):
+            d = values[k + 1] - values[k] if rel in ("<", "≤") else values[k] - values[k + 1]
+            verdicts.append(self._sign_under_orderings(d, sorted(syms, key=lambda x: x.name)))
+        if all(v == "positive" for v in verdicts):
+            self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}")
+        elif all(v == "negative" for v in verdicts) and len(rels) == 1:
+            flip = {"<": ">", ">": "<", "≤": r"\ge", "≥": r"\le"}[rels[0]]
+            self._add(line, piece, "inequality", "typo", f"the relation is reversed: its opposite follows from "
+                      f"{self._orderings_text()}", f"{self.tex(written[0])} {flip} {self.tex(written[1])}")
+        else:
+            self._add(line, piece, "inequality", "unchecked", f"not decided by {self._orderings_text()}")
+        return True
+
+    def _orderings_text(self) -> str:
+        return "; ".join(" < ".join(self.tex(x) for x in chain) for chain in self.ctx.orderings)
+
+    def _sign_under_orderings(self, d, syms) -> str:
+        """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
+        Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
+        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not."""
+        rep, k = {}, 0
+        for chain in self.ctx.orderings:
+            total = sp.S.Zero
+            for x in chain:
+                if x in rep:
+                    continue
+                k += 1
+                total = total + sp.Symbol(f"gap{k}", positive=True)
+                rep[x] = total
+        for x in syms:
+            rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))
+        e = sp.factor(sp.together(sp.expand(d.xreplace(rep))))
+        if e.is_positive:
+            return "positive"
+        if e.is_negative:
+            return "negative"
+        return "mixed"
 
     # -- second-order equations ω̃̈ᵢ = …
     def _second_order(self, line, piece, parsed) -> bool:

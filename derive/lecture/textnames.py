@@ -170,6 +170,8 @@ class TextNames:
         """A relation with symbols of the text's that nothing ties: decided only if it is an
         identity whatever they are."""
         self._flush()                   # a claim: the solutions before it are a complete group
+        if set(rels) <= {"<", ">", "≤", "≥"} and self._ordered(line, piece, members, rels):
+            return True
         loose = set()
         for m in members:
             loose |= {s for s in _free(self._resolve(m)) if isinstance(s, lx.Generic)}
