@@ -51,6 +51,8 @@ _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
+_SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:(?:first|1st)[- ]order\s+)?small\b|\bsmall of (?:the )?first order\b", re.I)
+"""Prose that calls the quantities before it in its sentence small (to first order)."""
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 
@@ -61,8 +63,9 @@ class Item:
     ``kind``: ``"heading"`` (``text`` is the title), ``"context"`` (``text``: ``"symmetric"``, the
     prose says the body is symmetric), ``"display"`` (``latex``), ``"inline"`` (a
     relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
-    here to the next heading) or ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
-    ``"same"`` or ``"opposite"``). ``line`` is 1-based; ``lead`` the prose just before the math.
+    here to the next heading), ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
+    ``"same"`` or ``"opposite"``) or ``"small"`` (``symbols``: the LaTeX of quantities the prose
+    calls small, "$\\omega_2, \\omega_3$ are first-order small": equations to first order in them). ``line`` is 1-based; ``lead`` the prose just before the math.
     """
 
     kind: str
@@ -284,7 +287,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         if not _RELATION.search(latex):
             continue
         word = _last_word(near)
-        wrapped = latex.startswith("(") and latex.endswith(")")
+        # "(… $\omega_2 = \Omega$ to first order)": an aside in brackets states a condition
+        wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
         if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()):
@@ -295,6 +299,12 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
+    for m in _SMALL.finditer(prose):
+        start = max([0] + [e.end() for e in _SENTENCE_END.finditer(prose, 0, m.start())])
+        maths = [x.group("i") for x in _MATH.finditer(body, start, m.start()) if x.group("i")]
+        if maths:
+            events.append((m.start(), Item("small", line_of(m.start()), symbols=tuple(
+                source.normalize(x, user_macros) for x in maths), lead=m.group(0))))
     events.sort(key=lambda e: e[0])
     # merge consecutive sign items of one line ("$\Omega_1$ and $\Omega_2$ are both …")
     items: list[Item] = []

@@ -38,135 +38,48 @@ why (not a claim, unknown symbol, cannot parse).
 from __future__ import annotations
 
 import functools
-import json
-import random
 import re
-from dataclasses import dataclass, field
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
+from derive.lecture.context import Context, Reading
+from derive.lecture.derivation import derivation, families
+from derive.lecture.motion import Motion
+from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
+from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import _strip_envs, statements
 from derive.lecture.textnames import TextNames
-from derive.symbolic import rotations as rot
-from derive.symbolic.lagrangian import (ACCELS, I1, I2, I3, Mass, Reduction, g, heavy_symmetric_top,
-                                        kinetic_energy, l)
+from derive.lecture.vector_claims import VectorStatements
+from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
-from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
-from derive.lecture import vectors as vc
-from derive.lecture import verify as vf
-
-VERDICTS = ("holds", "typo", "fails", "unchecked")
 
 
-# ---- the derivation, per convention -------------------------------------------------------------
-class Derivation:
-    """The derived quantities of one convention (computed on first use)."""
-
-    def __init__(self, convention: str):
-        self.rot = rot
-        self.conv = rot.convention(convention)
-
-    @functools.cached_property
-    def omega(self) -> sp.Matrix:
-        """ω̃ from the skew route Rᵀ Ṙ (independent of the notes' sum route)."""
-        return sp.Matrix(self.conv.omega_body_skew())
-
-    @functools.cached_property
-    def frames(self) -> dict:
-        """ê′ₖ and ê⁰ₖ as linear forms in the body basis (ê′ₖ = passive(a₃, γ) eₖ, ê⁰ₖ = Rᵀ eₖ)."""
-        rot, out = self.rot, {}
-        R = self.conv.matrix()
-        for k, axis in enumerate("xyz"):
-            out[lx.PRIMED[k]] = _linear(rot.passive(self.conv.axes[2], rot.gamma) * rot.unit(axis))
-            out[lx.INERTIAL[k]] = _linear(R.T * rot.unit(axis))
-        return out
-
-    @functools.cached_property
-    def top(self):
-        return heavy_symmetric_top(self.conv)
-
-    @functools.cached_property
-    def reduction(self):
-        return Reduction(self.top)
-
-    @functools.cached_property
-    def sleeping(self):
-        return SleepingTop(self.reduction)
-
-    @functools.cached_property
-    def steady_force(self):
-        """∂L/∂β at β̇ = 0: the β equation of motion of a steady precession (β̈ = 0 too)."""
-        rot = self.rot
-        return sp.expand(sp.diff(self.top.lagrangian, rot.beta).xreplace({rot.beta_d: 0}))
-
-    def euler(self, subs: dict) -> list:
-        """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
-        moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
-        rhs = euler_rhs(moments, sp.Matrix(lx.W))
-        return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
-
-    def frequencies(self):
-        o1, o2 = SteadySpin(2).frequencies
-        return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
-
-    @functools.lru_cache(maxsize=None)
-    def forms(self, key, args=None) -> list:
-        """What a named quantity is, in the forms a text may use (each compared in turn)."""
-        half = sp.Rational(1, 2)
-        Iw = [I1 * lx.W[0], I2 * lx.W[1], I3 * lx.W[2]]
-        if key is lx.T_:
-            return [half * sum(m * w**2 for m, w in zip((I1, I2, I3), lx.W)),
-                    self.top_kinetic()]
-        if key is lx.LAGRANGIAN:
-            if args and set(args) <= {self.rot.beta, self.rot.beta_d}:
-                return [self.reduction.lagrangian_substituted]
-            return [self.top.lagrangian, self.top_kinetic()]      # a free body's L is its T
-        if key is lx.LVEC:
-            return [_linear(sp.Matrix(Iw))]
-        if key is lx.ENERGY:
-            return [self.reduction.energy, self.top.energy, self.top_kinetic()]
-        if key is lx.EPRIME:
-            return [self.reduction.reduced_energy]
-        if key is lx.VEFF:
-            return [self.reduction.effective_potential]
-        if key is lx.LMAG:
-            return [sp.sqrt(sum((m * w)**2 for m, w in zip((I1, I2, I3), lx.W)))]
-        if key is lx.OMEGA_VEC:
-            return [_linear(sp.Matrix(lx.W)), _linear(self.omega)]
-        if key is lx.DLDT:
-            return [_linear(sp.Matrix(self.euler({})))]
-        if key in (lx.MOMENTUM[0], lx.p_alpha_sym()):
-            return [self.top.momentum(self.rot.alpha)]
-        if key in (lx.MOMENTUM[2], lx.p_gamma_sym()):
-            return [self.top.momentum(self.rot.gamma)]
-        if key is lx.MOMENTUM[1]:
-            return [self.top.momentum(self.rot.beta)]
-        if key in lx.W:
-            return [self.omega[lx.W.index(key)]]
-        if key in lx.PRIMED or key in lx.INERTIAL:
-            return [self.frames[key]]
-        if key in lx.BASIS:
-            return [key]
-        if key is lx.Omega:
-            o1, o2 = self.frequencies()
-            return [o1.xreplace({I2: I1}), o2.xreplace({I2: I1})]
-        if key is lx.Omega1:
-            return [self.frequencies()[0]]
-        if key is lx.Omega2:
-            return [self.frequencies()[1]]
-        return []
-
-    @functools.lru_cache(maxsize=None)
-    def top_kinetic(self):
-        return kinetic_energy(convention=self.conv)
 
 
-@functools.cache
-def derivation(convention: str) -> Derivation:
-    return Derivation(convention)
+_LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
+
+
+def _repeated_labels(pieces) -> dict:
+    """Rows of one block that set one label twice (``I_{x} = …``, ``I_{x} = …``, ``I_{z} = …``): the
+    second is a typo for the index the block leaves out. Row → its correction."""
+    rows = [(p, _LABEL.match(p)) for p in pieces]
+    out = {}
+    for base in {m.group(1) for _, m in rows if m}:
+        mine = [(p, m) for p, m in rows if m and m.group(1) == base]
+        subs = [m.group(3) or m.group(4) for _, m in mine]
+        for family in ("123", "xyz"):
+            if len(mine) < 3 or not set(subs) <= set(family):
+                continue
+            left = [x for x in family if x not in subs]
+            twice = [k for k in range(len(subs)) if subs[k] in subs[:k]]
+            if len(left) == 1 and len(twice) == 1 and mine[twice[0]][0] != mine[subs.index(subs[twice[0]])][0]:
+                p, m = mine[twice[0]]
+                out[p] = (p[:m.start(2)] + "{" + left[0] + "}" + p[m.end(2):]).strip()
+    return out
 
 
 def _name_tex(name: str) -> str:
@@ -175,212 +88,9 @@ def _name_tex(name: str) -> str:
     return "\\" + base + (f"_{{{sub}}}" if sub else "")
 
 
-def _linear(col) -> sp.Expr:
-    return sum((col[i] * lx.BASIS[i] for i in range(3)), sp.S.Zero)
-
-
-KNOWN = None   # filled below (needs lx)
-
-
-def _families():
-    """Quantities that can stand for one another by a slip of the label."""
-    return [
-        [lx.T_, lx.ENERGY, lx.EPRIME, lx.VEFF, lx.LAGRANGIAN],
-        list(lx.W),
-        list(lx.PRIMED) + list(lx.INERTIAL),
-        [lx.Omega, lx.Omega1, lx.Omega2],
-        [lx.p_alpha_sym(), lx.p_gamma_sym()],
-        [lx.LVEC, lx.OMEGA_VEC, lx.DLDT],
-    ]
-
-
 # ---- results ------------------------------------------------------------------------------------
-@dataclass
-class Claim:
-    """One checked (or not) formula: the JSON row of the contract."""
-
-    line: int
-    latex: str
-    kind: str
-    verdict: str
-    correction: str | None = None
-    why: str = ""
-    assumes: list = field(default_factory=list)    # what it holds under: stated (with where) or not
-
-    def as_dict(self) -> dict:
-        return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,
-                "correction": self.correction, "why": self.why, "assumes": list(self.assumes)}
-
-
-@dataclass
-class _Context:
-    """What the text has said so far: assumptions of the section, definitions, equations."""
-
-    subs: dict = field(default_factory=dict)          # I₂ → I₁, p_α → p_γ, ω̃̇₃ → 0
-    small: list = field(default_factory=list)         # β ≈ 0
-    cases: list = field(default_factory=lambda: [{}])  # sign cases
-    solutions: dict = field(default_factory=dict)     # ω̃ᵢ → f(t)
-    defs: dict = field(default_factory=dict)          # Ω → the notes' definition
-    eoms: list = field(default_factory=list)          # (residual as written, line)
-    head: str | None = None                           # left side continued by "= …" displays
-    assumptions: list = field(default_factory=list)   # their LaTeX, for the why
-    vec_model: str | None = None                      # "particle" after a sum over particles
-    stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
-
-    def new_section(self):
-        self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
-        self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
-
-
-# ---- the comparisons ----------------------------------------------------------------------------
-def _has_rates(objs, rot) -> bool:
-    return any(_free(o) & set(rot.RATES) for o in objs)
-
-
-def _free(obj) -> set:
-    return set(getattr(obj, "free_symbols", set()))
-
-
-def _column(v):
-    """A vector as a 3-column (from a matrix, or a linear form in ê₁ ê₂ ê₃); scalars as 1×1."""
-    if isinstance(v, sp.MatrixBase):
-        if v.shape == (1, 3):
-            return sp.Matrix(v).T
-        return sp.Matrix(v).reshape(len(v), 1)
-    v = sp.sympify(v)
-    if v.free_symbols & set(lx.BASIS):
-        ex = sp.expand(v)
-        coeffs = [ex.coeff(e) for e in lx.BASIS]
-        rest = sp.expand(ex - sum(c * e for c, e in zip(coeffs, lx.BASIS)))
-        if rest != 0 or any(c.free_symbols & set(lx.BASIS) for c in coeffs):
-            raise _Mismatch("not a vector: a product of unit vectors, or a scalar added to a vector")
-        return sp.Matrix(coeffs)
-    return sp.Matrix([v])
-
-
-class _Mismatch(Exception):
-    pass
-
-
-def _zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
-    if lhs.shape != rhs.shape:
-        return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
-    steps = [_symbolic_zero(d) for d in lhs - rhs]
-    if all(steps):
-        return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
-    out = vf._numeric_zero(lhs, rhs, seed)
-    return out.ok, out.method
-
-
-def _symbolic_zero(d):
-    """`verify`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
-    (trig_reduce refuses a sine nested in a sine's argument)."""
-    try:
-        return vf._symbolic_zero(d)
-    except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
-        return None
-
-
-def _shape(m) -> str:
-    return "scalar" if m.shape == (1, 1) else ("vector" if m.shape[1] == 1 else f"{m.shape[0]}×{m.shape[1]} matrix")
-
-
-def _quick_equal(a, b) -> bool:
-    """A fast float test (two random points) used to screen the single-edit candidates."""
-    try:
-        A, B = _column(a), _column(b)
-    except _Mismatch:
-        return False
-    if A.shape != B.shape:
-        return False
-    syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
-    rng = random.Random(7)
-    for _ in range(2):
-        point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
-        try:
-            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
-            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
-        except (TypeError, ValueError, ZeroDivisionError):
-            return False
-        if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
-            return False
-    return True
-
-
-# ---- single edits ------------------------------------------------------------------------------
-def _paths(e, path=()):
-    yield path, e
-    # inside a derivative the variables are not edited (∂/∂ of a power is no formula)
-    if isinstance(e, sp.Derivative):
-        yield from _paths(e.expr, path + (0,))
-    elif isinstance(e, sp.Basic) and not e.is_Atom:
-        for k, a in enumerate(e.args):
-            yield from _paths(a, path + (k,))
-
-
-def _replace(e, path, new):
-    if not path:
-        return new
-    args = list(e.args)
-    args[path[0]] = _replace(args[path[0]], path[1:], new)
-    return e.func(*args)
-
-
-_SIBLINGS = None
-
-
-def _siblings():
-    fams = [(I1, I2, I3), lx.W, lx.WD, lx.BASIS, lx.PRIMED, ANGLES, RATES, (lx.Omega1, lx.Omega2)]
-    out = {}
-    for fam in fams:
-        for s in fam:
-            out[s] = [x for x in fam if x != s]
-    return out
-
-
-def edits(e):
-    """Single edits of an expression: (edited, what was changed)."""
-    if isinstance(e, sp.MatrixBase):
-        for k in range(len(e)):
-            for new, what in edits(e[k]):
-                m = sp.Matrix(e)
-                m[k] = new
-                yield m, f"{what} (entry {k + 1})"
-        return
-    e = sp.sympify(e)
-    sib = _siblings()
-    yield -e, "the sign of the whole side"
-    yield 2 * e, "a factor 2"
-    yield e / 2, "a factor 1/2"
-    for path, node in list(_paths(e)):
-        if isinstance(node, sp.Add):
-            for k, a in enumerate(node.args):
-                p = path + (k,)
-                yield _replace(e, p, -a), "a sign"
-                yield _replace(e, p, 2 * a), "a factor 2"
-                yield _replace(e, p, a / 2), "a factor 1/2"
-        elif isinstance(node, (sp.sin, sp.cos)):
-            other = sp.cos if isinstance(node, sp.sin) else sp.sin
-            yield _replace(e, path, other(*node.args)), "sin ↔ cos"
-        elif isinstance(node, sp.Pow) and node.exp.is_Integer:
-            for d in (1, -1):
-                if node.exp + d != 0:
-                    yield _replace(e, path, node.base ** (node.exp + d)), "a power"
-        elif isinstance(node, sp.Symbol) and node in sib:
-            for s in sib[node]:
-                yield _replace(e, path, s), "an index"
-            if path and not isinstance(_at(e, path[:-1]), sp.Pow):
-                yield _replace(e, path, node**2), "a power"
-
-
-def _at(e, path):
-    for k in path:
-        e = e.args[k]
-    return e
-
-
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -390,11 +100,13 @@ class Checker(TextNames, Rereading):
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
-        self.ctx = _Context()
+        self.ctx = Context()
         self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()
         self.claims: list[Claim] = []
         self.pending: list = []     # solution statements waiting for their group
+        self.pending_subs = None    # the settings of the display that wrote them
+        self.flushed: list = []     # the verdicts of the group, until placed
         self._last_fix = None       # the corrected value the last single-edit search found
 
     # -- names for LaTeX output
@@ -428,16 +140,21 @@ class Checker(TextNames, Rereading):
             item = items[k]
             if item.kind == "heading":
                 self._flush()
+                self._place_flushed(len(self.claims))
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
             elif item.kind == "context":
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
+                self._small_before_ll(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
+            elif item.kind == "small":
+                self._small(item.symbols)
             elif item.kind in ("display", "inline"):
+                self._small_before_ll(item.latex)
                 latex = item.latex
                 # displays that start with + or − continue the previous one's right side
                 while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
@@ -447,88 +164,11 @@ class Checker(TextNames, Rereading):
                 self._display(item, latex)
             k += 1
         self._flush()
+        self._place_flushed(len(self.claims))
         return self.claims
-
-    def _enter_section(self, level):
-        """A heading: what the text assumed in the enclosing section (a heading of a lower level)
-        before its first subsection holds in each subsection; what a subsection assumed ends
-        with it."""
-        stack = self._sections
-        if stack and stack[-1][0] < level and stack[-1][1] is None:
-            stack[-1][1] = self._snapshot()            # the parent's assumptions, for its children
-        while stack and stack[-1][0] >= level:
-            stack.pop()
-        self.ctx.new_section()
-        if stack and stack[-1][1] is not None:
-            parent = stack[-1][1]
-            self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
-            self.ctx.assumptions, self.ctx.defs = list(parent.assumptions), dict(self.ctx.defs)
-            self.ctx.stated = dict(parent.stated)
-        stack.append([level, None])
-
-    def _symmetric(self, line, words):
-        """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
-        if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
-            self.ctx.subs[I2] = I1
-            self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
-            self.ctx.stated[I2] = f"line {line}"
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
-
-    # -- context
-    def _assume(self, item):
-        try:
-            parsed = lx.parse(item.latex, self.vocab)
-        except lx.NotRead as err:
-            if re.search(r"\\tau(?![a-z])", item.latex):
-                self.ctx.assumptions.append(item.latex)      # τ = 0: the torque-free case
-            if item.display:
-                self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
-            return
-        m0 = parsed.members[0].value if parsed.members else None
-        if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
-                and _free(parsed.members[1].value) and not _free(parsed.members[1].value) & {m0}:
-            self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
-            if item.display:
-                self._add(item.line, item.latex, "new symbol", "unchecked",
-                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
-            return
-        if item.display:
-            self._add(item.line, item.latex, "assumption", "unchecked",
-                      "an assumption of the text: applies to the displays that follow, up to the next heading")
-        self.ctx.assumptions.append(item.latex)
-        if len(parsed.members) != 2:
-            return
-        a, b = parsed.members[0].value, parsed.members[1].value
-        rel = parsed.relations[0]
-        if rel == "≈" and b == 0 and isinstance(a, sp.Symbol):
-            if a in ANGLES:
-                self.ctx.small.append(a)
-            else:
-                self.ctx.subs[a] = sp.S.Zero
-        elif rel in ("=", "≈") and isinstance(a, sp.Symbol) and not isinstance(a, lx.Quantity):
-            if a.xreplace(self.ctx.subs) == sp.sympify(b).xreplace(self.ctx.subs):
-                return                            # already so (the prose said "a symmetric top")
-            self.ctx.subs[a] = b
-            self.ctx.stated[a] = f"line {item.line}"
-
-    def _signs(self, item):
-        syms = []
-        for s in item.symbols:
-            try:
-                p = lx.parse(s, self.vocab)
-            except lx.NotRead:
-                return
-            syms.append(p.members[0].value)
-        if len(syms) != 2 or not all(isinstance(s, sp.Symbol) for s in syms):
-            return
-        u, v = sp.Dummy("u", positive=True), sp.Dummy("v", positive=True)
-        x, y = syms
-        if item.text == "same":
-            self.ctx.cases = [{x: u, y: v}, {x: -u, y: -v}]
-        else:
-            self.ctx.cases = [{x: u, y: -v}, {x: -u, y: v}]
 
     # -- a display
     def _display(self, item, latex):
@@ -538,9 +178,16 @@ class Checker(TextNames, Rereading):
             return
         seen = []
         self._open_display(inline=item.kind == "inline")
+        relabelled = _repeated_labels(pieces)
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
+            if piece in relabelled:
+                self._add(item.line, piece, "setting", "typo", "repeats the label of an earlier row of this block with "
+                          "another value; the row that should stand here is the label the block leaves out (an index)",
+                          relabelled[piece])
+                continue
+            before = len(self.claims)
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
@@ -548,7 +195,15 @@ class Checker(TextNames, Rereading):
                 # a formula the checker cannot follow is reported as such, never given a verdict
                 self._add(item.line, piece, "unknown", "unchecked",
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
+            self._place_flushed(before)
         self._close_display()
+
+    def _place_flushed(self, at):
+        """The verdicts of a group of solutions that a later statement closed, placed before that
+        statement's (they are not its claims, so its second readings leave them alone)."""
+        if self.flushed:
+            self.claims[at:at] = self.flushed
+            self.flushed = []
 
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
@@ -557,6 +212,7 @@ class Checker(TextNames, Rereading):
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:
@@ -579,6 +235,15 @@ class Checker(TextNames, Rereading):
         self._text = text                   # the statement with the left side it continues
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
+        if parsed is not None and not duplicate and self._second_order(line, piece, parsed):
+            return
+        row = None if parsed is None or duplicate else self._solution_row(parsed)
+        if row is not None:
+            if any(p[2] == row[0] for p in self.pending):
+                self._flush()                  # a component met again starts a new group (Lᵢ after ω̃ᵢ)
+            self.pending.append((line, piece, *row))
+            self.settings_only = False
+            return
         if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):
             return
         self.settings_only = False
@@ -590,83 +255,23 @@ class Checker(TextNames, Rereading):
             self._duplicate(line, piece, parsed, pieces)
             return
         m0 = parsed.members[0]
-        if m0.args and m0.value in lx.W and len(parsed.members) == 2:
-            self.pending.append((line, piece, m0.value, parsed.members[1].value))
-            return
         self._flush()
         if rels & {"≥", "≤", ">", "<"}:
             self._inequality(line, piece, parsed)
         elif self._steady_section() and not isinstance(m0.value, lx.Quantity) and len(parsed.members) == 2 \
                 and m0.value not in lx.W and not isinstance(m0.value, lx.Generic) \
-                and (_free(m0.value) | _free(parsed.members[1].value)) & {self.d.rot.alpha_d}:
+                and (free(m0.value) | free(parsed.members[1].value)) & {self.d.rot.alpha_d}:
             self._steady(line, piece, parsed)
         elif isinstance(m0.value, lx.Quantity):
             self._definition(line, piece, parsed)
-        elif any(_free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
+        elif any(free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
-        elif len(parsed.members) == 2 and any(_free(m.value) & set(ACCELS) for m in parsed.members):
+        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members):
             self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
             self._definition(line, piece, parsed)
-
-    def _vectors(self, line, piece, text) -> bool:
-        """A statement in vectors, tensors, sums over particles or frame derivatives
-        (`derive.lecture.vectors`): each member against the first, a single-edit search of the
-        LaTeX for a correction. False when that reader cannot read it either."""
-        self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
-        try:
-            reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
-        except lx.NotRead:
-            return False
-        finally:
-            self.vocab.open = True
-        if set(reading.relations) - {"=", "≡"}:
-            return False
-        first = reading.members[0]
-        self.ctx.head = reading.source[:first[0].end].strip()
-        if reading.model == "particle":
-            self.ctx.vec_model = "particle"
-        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
-        where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
-        for k in range(1, len(first)):
-            if first[k].value is vc.LAW or first[0].value is vc.LAW:
-                self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
-                          "starts (Euler's equations are it in body axes), not a consequence of it")
-                continue
-            ok, how = vc.holds(reading, k, f"{piece}/{k}")
-            if ok:
-                self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
-                continue
-            if "not a vector" in how or " against a " in how:
-                self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
-                continue
-            fix = None if self.judging_only else self._vector_fix(reading, k, piece)
-            if fix:
-                self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "
-                          f"({vc.WHY[reading.model]})", fix[0])
-            else:
-                self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
-        return True
-
-    def _vector_fix(self, reading, k, piece):
-        """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
-        src, m = reading.source, reading.members[0][k]
-        rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
-        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
-        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
-            if n >= 80:
-                break
-            try:
-                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
-            except lx.NotRead:
-                continue
-            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
-                continue
-            if vc.holds(again, k, f"{piece}/edit{n}")[0]:
-                return vc.restore(f"{left} {rel} {edited.strip()}"), what
-        return None
 
     def _new_symbol(self, line, piece, text) -> bool:
         """X ≡ … with X unknown: record X (a new symbol of the notes) and its definition."""
@@ -692,13 +297,13 @@ class Checker(TextNames, Rereading):
         """Quantities → derived values, the notes' definitions → their right sides (not ``keep``)."""
         for _ in range(4):
             rep = {}
-            for s in _free(v):
+            for s in free(v):
                 if s in keep:
                     continue
                 if isinstance(s, lx.Quantity):
                     forms = self.d.forms(s)
                     if forms:
-                        rep[s] = forms[0]
+                        rep[s] = self.ctx.forms_held.get(s, forms[0])
                 elif isinstance(s, lx.Generic) and s in self.ctx.subs:
                     rep[s] = self.ctx.subs[s]      # a case the text sets for its own symbol wins
                 elif s in self.ctx.defs:
@@ -714,10 +319,10 @@ class Checker(TextNames, Rereading):
         PRIMED/INERTIAL frame vectors go to the body basis."""
         rot = self.d.rot
         out = []
-        rates = _has_rates(values, rot)
-        cyc = any(_free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
+        rates = has_rates(values, rot)
+        cyc = any(free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
         for v in values:
-            rep = dict(self.d.frames) if _free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
+            rep = dict(self.d.frames) if free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
             if rates:
                 rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
             if cyc:
@@ -738,8 +343,8 @@ class Checker(TextNames, Rereading):
         """Is the claim's value the derived form, in every case of the section?"""
         a, b = self._unify([claim_value, form])
         try:
-            A, B = _column(a), _column(b)
-        except _Mismatch as err:
+            A, B = column(a), column(b)
+        except Mismatch as err:
             return False, str(err)
         why = []
         for k, case in enumerate(self.ctx.cases):
@@ -748,7 +353,7 @@ class Checker(TextNames, Rereading):
             if small is not None:
                 ok, how = self._series_zero(Ac, Bc, small, order)
             else:
-                ok, how = _zero(Ac, Bc, f"{seed}/{k}")
+                ok, how = zero(Ac, Bc, f"{seed}/{k}")
             if not ok:
                 where = f" (case {k + 1} of {len(self.ctx.cases)}: {self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
                 return False, how + where
@@ -782,7 +387,7 @@ class Checker(TextNames, Rereading):
         if not forms:
             # an identity: both sides written out
             if isinstance(key, sp.Symbol) and not isinstance(key, lx.Quantity) and key not in lx.BASIS \
-                    and len(parsed.members) == 2 and not _free(parsed.members[1].value) & {key}:
+                    and len(parsed.members) == 2 and not free(parsed.members[1].value) & {key}:
                 kind = "definition"
             else:
                 kind = "identity"
@@ -806,57 +411,36 @@ class Checker(TextNames, Rereading):
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 
-    def _torque_free(self, line, piece, parsed):
-        """d𝐋/dt = 0 = Σ cᵢ êᵢ with τ = 0 stated: component i of the written d𝐋/dt, set to 0, must be
-        Euler's equation i (a non-zero multiple of Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ); without a written
-        d𝐋/dt it restates the torque-free case."""
-        stated = any(re.search(r"\\tau(?![a-z])", a) for a in self.ctx.assumptions)
-        written = [mm.value for mm in parsed.members[1:] if mm.value != 0]
-        if not stated:
-            self._add(line, piece, "equation of motion", "unchecked", "d𝐋/dt = 0 needs τ = 0, which the text does not state")
-            return
-        if not written:
-            self._add(line, piece, "equation of motion", "unchecked",
-                      "d𝐋/dt = 0: the torque-free case (τ = 0, stated in the text), an assumption")
-            return
-        try:
-            col = _column(self._resolve(written[-1]))
-        except _Mismatch as err:
-            self._add(line, piece, "equation of motion", "fails", f"d𝐋/dt = 0 with d𝐋/dt = {err}")
-            return
-        euler = self.d.euler(self.ctx.subs)
-        dyn = set(lx.W) | set(lx.WD)
-        for i in range(3):
-            r = sp.expand(col[i].xreplace(self.ctx.subs)) if len(col) == 3 else None
-            q = sp.cancel(sp.together(r / euler[i])) if r is not None and euler[i] != 0 else None
-            if q is None or q == 0 or _free(q) & dyn:
-                self._add(line, piece, "equation of motion", "fails",
-                          f"d𝐋/dt = 0 (τ = 0 stated): component {i + 1} is not Euler's equation {i + 1}")
-                return
-        self._add(line, piece, "equation of motion", "holds",
-                  "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
-                  "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
-
     def _one(self, line, piece, kind, left, value, parsed, k, approx=False, label=None, forms=None, args=None):
         """Check member k against the label's derived forms (or the written left side)."""
         keep = (label,) if label in (lx.Omega, lx.Omega1, lx.Omega2) and parsed.relations[k - 1] == "≡" else ()
         val = self._resolve(value, keep=keep)
         targets = forms if forms else [left]
         small = order = None
+        if approx and not self.ctx.small:
+            self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
+            return
         if approx:
             small = self.ctx.small[-1]
-            order = _order(val, small)
+            order = series_order(val, small)
         seed = f"{piece}/{k}"
         why = ""
         for f in targets:
             ok, why = self._compare(val, self._resolve(f), seed, small, order)
             if ok:
                 self._add(line, piece, kind, "holds", why)
+                if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
+                    self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
                 return
+        oriented = None if small is not None else self._oriented(line, val, targets, seed)
+        if oriented:
+            self._add(line, piece, kind, "holds", oriented)
+            return
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")
             return
-        loose = sorted(self.tex(x) for x in _free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs
+                       and x not in self._constants())
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:
@@ -869,6 +453,31 @@ class Checker(TextNames, Rereading):
         else:
             self._add(line, piece, kind, "fails", f"as written: {why}")
 
+    def _oriented(self, line, val, targets, seed) -> str | None:
+        """Why the claim holds with the fixed first axis along 𝐋 (`derive.lecture.orientation`), or
+        None. Tried for a relation of the angles without rates (the text stating its orientation,
+        I₁ω₁ = L sin θ sin ψ) and, once one held so, for the relations that follow."""
+        rot = self.d.rot
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        if isinstance(val, sp.MatrixBase) or rot.ANGLES[0] in every or not every & set(lx.W) | {lx.LMAG}:
+            return None
+        stating = every & set(rot.ANGLES[1:]) and not every & (set(rot.RATES) | set(ACCELS))
+        if self.ctx.orientation is None and not stating:
+            return None
+        along = along_momentum(self.notes.convention, sp.ImmutableMatrix(self.d.omega))
+        if not along.ok:
+            return None
+        for f in targets:
+            a, b = along.apply(val), along.apply(self._resolve(f))
+            if along.angles_left(a) or along.angles_left(b):
+                continue
+            ok, how = self._compare(a, b, seed + "/along-L")
+            if ok:
+                where = f", line {self.ctx.orientation}" if self.ctx.orientation is not None else ""
+                self.ctx.orientation = self.ctx.orientation if self.ctx.orientation is not None else line
+                return f"{how}, with the fixed first axis along 𝐋 (the orientation the text chooses{where})"
+        return None
+
     def _undecidable(self, written, val, targets) -> str | None:
         """Why a relation that does not hold as an identity is no slip the derivation can name:
         it ties only the text's free variables (ω̃ᵢ, the moments, its own undefined symbols) and so
@@ -877,13 +486,19 @@ class Checker(TextNames, Rereading):
         rot = self.d.rot
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
+        variables = rates | set(rot.ANGLES) | set(lx.W)
+        if written and isinstance(written[0], sp.Symbol) and written[0] in variables and \
+                all(not free(self._resolve(m)) & variables for m in written[1:]):
+            return (f"states the value of {self.tex(written[0])} in this motion: a result the derivation does "
+                    "not give without solving the motion")
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
-                      for m in written for x in _free(m)) or \
+                      for m in written for x in free(m)) or \
             any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
         if not derived:
             return "an equation between the text's variables: a condition it imposes, not an identity"
-        every = _free(val).union(*(_free(self._resolve(f)) for f in targets))
-        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs)
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs
+                       and x not in self._constants())
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
         if not every & rates and every & set(rot.ANGLES):
@@ -902,7 +517,7 @@ class Checker(TextNames, Rereading):
                     return None
                 val = self._resolve(cand, keep=keep)
                 a, b = self._unify([val, target])
-                if small is None and not _quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
+                if small is None and not quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
                     continue
                 ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
                 if ok:
@@ -910,7 +525,7 @@ class Checker(TextNames, Rereading):
                     return self._render(parsed, k, cand), what
         # a swapped label
         if isinstance(label, sp.Symbol):
-            for fam in _families():
+            for fam in families():
                 if label in fam:
                     for other in fam:
                         if other == label:
@@ -947,279 +562,6 @@ class Checker(TextNames, Rereading):
                       f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
                       f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
 
-    def _eom(self, line, piece, parsed):
-        members = [m.value for m in parsed.members]
-        if len(members) != 2 or isinstance(members[0], sp.MatrixBase):
-            self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
-            return
-        raw = members[0] - members[1]
-        used = [x for x in _free(raw) if x in self.ctx.defs]
-        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
-            names = ", ".join(sorted(self.tex(x) for x in used))
-            self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
-            return
-        ok, why, residual = self._eom_check(raw)
-        if ok:
-            self.ctx.eoms.append((raw, line))
-            self._add(line, piece, "equation of motion", "holds", why)
-            return
-        for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._eom_check(cand)[0]:
-                fixed = sp.Eq(cand, 0) if members[1] == 0 else None
-                corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
-                self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
-                self.ctx.eoms.append((cand, line))   # the solutions that follow meet the corrected equation
-                return
-        self._add(line, piece, "equation of motion", "fails", f"as written: {why}")
-        found = [i for i in range(3) if lx.WD[i] in _free(raw)]
-        if len(found) == 1:   # … or, past correcting, the derived one for that component
-            self.ctx.eoms.append((self.d.euler(self.ctx.subs)[found[0]], line))
-
-    def _angle_eom(self, line, piece, parsed):
-        """An equation of motion in the angles (I₁θ̈ = …): solved for the one acceleration it has,
-        against the heavy symmetric top's Lagrange equations — in the rates, or with the cyclic
-        momenta for the rates (Routh's reduction)."""
-        raw = self._resolve(parsed.members[0].value - parsed.members[1].value)
-        accels = [a for a in ACCELS if a in _free(raw)]
-        rot = self.d.rot
-        if len(accels) != 1 or sp.diff(raw, accels[0], 2) != 0 or accels[0] != ACCELS[1]:
-            self._add(line, piece, "equation of motion", "unchecked", "an equation of motion the derivation does not write")
-            return
-        a = accels[0]
-        claim = sp.cancel(sp.together(-raw.xreplace({a: 0}) / sp.diff(raw, a)))
-        forms = [self.d.reduction.beta_acceleration, self.d.top.accelerations[1]]
-        why = ""
-        for f in forms:
-            ok, why = self._compare(claim, f, piece + "/angle")
-            if ok:
-                self._add(line, piece, "equation of motion", "holds", f"Lagrange's equation for ${self.tex(rot.beta)}$: {why}")
-                return
-        if self._learned(piece) or _free(claim) & {lx.Generic}:
-            self._add(line, piece, "equation of motion", "unchecked", f"does not match the heavy top's equation ({why})")
-            return
-        self._add(line, piece, "equation of motion", "fails",
-                  f"as written: not Lagrange's equation for ${self.tex(rot.beta)}$ of the heavy symmetric top ({why})")
-
-    # -- steady precession
-    def _steady_section(self) -> bool:
-        """The text has set β̇ = 0 (a steady precession at a fixed tilt)."""
-        return self.ctx.subs.get(self.d.rot.beta_d, None) == 0
-
-    def _steady(self, line, piece, parsed):
-        """A condition for steady precession: with β̇ = β̈ = 0 the β equation of motion reduces to
-        ∂L/∂β = 0; the claim's lhs − rhs (rates and momenta in terms of the angles) must be a
-        non-zero multiple of it by a factor free of the rates."""
-        raw = parsed.members[0].value - parsed.members[1].value
-        ok, why = self._steady_check(raw)
-        if ok:
-            self._add(line, piece, "steady precession", "holds", why)
-            return
-        for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._steady_check(cand)[0]:
-                self._add(line, piece, "steady precession", "typo",
-                          f"as written: {why}; one edit ({what}) makes it hold", self.tex(cand) + " = 0")
-                return
-        self._add(line, piece, "steady precession", "fails", f"as written: {why}")
-
-    def _steady_check(self, raw):
-        rot = self.d.rot
-        (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
-        r = sp.expand(r)
-        if r == 0:
-            return False, "the condition is empty (0 = 0)"
-        force = self.d.steady_force
-        q = sp.cancel(sp.together(r / force))
-        if q != 0 and not _free(q) & (set(rot.RATES) | {rot.alpha, rot.gamma}):
-            return True, f"a multiple ({self.tex(q)}) of the β equation at β̇ = β̈ = 0: ∂L/∂β = 0"
-        return False, "not a multiple of the β equation at β̇ = β̈ = 0 (derived: ∂L/∂β = 0)"
-
-    def _render_eq(self, residual, parsed):
-        return self.tex(residual) + " = 0"
-
-    def _eom_check(self, raw):
-        r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
-        if r == 0:
-            return False, "the equation is empty (0 = 0)", r
-        # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
-        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
-        loose = [x for x in _free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
-        if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not _free(sp.diff(r, loose[0])) & set(lx.W):
-            # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)
-            for i in range(3):
-                if _free(r) & {lx.WD[i]}:
-                    r = r.xreplace({loose[0]: lx.TAU[i]})
-                    break
-        if _free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
-            euler = [R - tau for R, tau in zip(euler, lx.TAU)]
-        dyn = set(lx.W) | set(lx.WD)
-        for i, R in enumerate(euler):
-            if R == 0:
-                continue
-            q = sp.cancel(sp.together(r / R))
-            if not (_free(q) & dyn) and q != 0:
-                return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}", r
-        # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        flow = {}
-        for i, R in enumerate(euler):
-            coef = sp.diff(R, lx.WD[i])
-            if coef != 0:
-                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
-        if _free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
-            return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
-        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
-
-    def _duplicate(self, line, piece, parsed, pieces):
-        """A row repeated within one block: a transcription slip; the missing equation is named."""
-        missing = None
-        have = set()
-        for p in pieces:  # the rows that are one component's equation (not the vector sum)
-            found = [i for i, w in enumerate(lx.WD) if lx.latex_atoms(p, self.vocab) & {w}]
-            if len(found) == 1:
-                have.add(found[0])
-        gaps = [i for i in range(3) if i not in have]
-        if gaps:
-            R = self.d.euler(self.ctx.subs)[gaps[0]]
-            missing = self.tex(R) + " = 0"
-        kind = "equation of motion" if any(_free(m.value) & set(lx.WD) for m in parsed.members) else "identity"
-        if gaps:  # a typo: the row that should stand here is the missing component's equation
-            self._add(line, piece, kind, "typo", "repeats an earlier row of the same block; the "
-                      f"equation for component {gaps[0] + 1} is missing", missing)
-        else:  # nothing is missing: a repeat is no wrong formula (a typo would need a correction)
-            self._add(line, piece, kind, "unchecked", "repeats an earlier row of the same block")
-
-    def _inequality(self, line, piece, parsed):
-        if len(parsed.members) != 2:
-            self._add(line, piece, "inequality", "unchecked", "a chain of inequalities")
-            return
-        rel = parsed.relations[0]
-        a, b = (self._resolve(m.value) for m in parsed.members)
-        syms = _free(a) | _free(b)
-        spin = {lx.p_gamma_sym(), lx.W[2], self.d.rot.gamma_d, self.d.rot.alpha_d}
-        if not (syms & {Mass, g, l} and syms & spin):
-            self._add(line, piece, "inequality", "unchecked",
-                      "an inequality the derivation does not decide (it knows the sleeping top's condition)")
-            return
-        claim = (a - b) if rel in ("≥", ">") else (b - a)
-        strict = rel in (">", "<")
-        cond = self.d.sleeping.condition
-        d = (cond.lhs - cond.rhs) if isinstance(cond, (sp.GreaterThan, sp.StrictGreaterThan)) else (cond.rhs - cond.lhs)
-        d_strict = isinstance(cond, (sp.StrictGreaterThan, sp.StrictLessThan))
-        ok, why = _zero(sp.Matrix([claim, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)
-        if ok:
-            self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
-            return
-        k2 = self.d.sleeping.coefficient(2)
-        # the condition squared or scaled: k₂ ≥ 0 itself (p_γ² ≥ 4 M g l I₁), up to a positive factor
-        if not strict and _positive_multiple(claim, k2):
-            self._add(line, piece, "inequality", "holds",
-                      "a positive multiple of the sleeping top's k₂ ≥ 0 (the β² coefficient of V_eff)")
-            return
-
-        def derived(c) -> bool:
-            return (not strict and _positive_multiple(c, k2)) or \
-                _zero(sp.Matrix([c, int(strict)]), sp.Matrix([d, int(d_strict)]), piece)[0]
-
-        if derived(-claim):
-            flip = r"\le" if rel in ("≥", ">") else r"\ge"
-            corr = f"{self.tex(parsed.members[0].value)} {flip} {self.tex(parsed.members[1].value)}"
-            self._add(line, piece, "inequality", "typo", "the relation is reversed", corr)
-            return
-        for side in (1, 0):
-            for cand, what in ([] if self.judging_only else edits(parsed.members[side].value)):
-                c2 = self._resolve(cand) - b if side == 0 else a - self._resolve(cand)
-                c2 = c2 if rel in ("≥", ">") else -c2
-                if (_quick_equal(c2, d) or _positive_multiple(c2, k2)) and derived(c2):
-                    fixed = [m.value for m in parsed.members]
-                    fixed[side] = cand
-                    rel_tex = {"≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[rel]
-                    self._add(line, piece, "inequality", "typo", f"one edit ({what}) makes it the derived condition",
-                              f"{self.tex(fixed[0])} {rel_tex} {self.tex(fixed[1])}")
-                    return
-        self._add(line, piece, "inequality", "fails", f"not the derived stability condition {self.tex(cond)}: {why}")
-
-    def _flush(self):
-        """Check the pending group of solutions ω̃ᵢ(t) = f(t) against the latest equations."""
-        if not self.pending:
-            return
-        group, self.pending = self.pending, []
-        sol = {w: f for _, _, w, f in group}
-        t = lx.t
-        rates = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol.items()}
-        chosen = []
-        for w in sol:
-            i = lx.W.index(w)
-            for raw, ln in reversed(self.ctx.eoms):
-                if _free(raw) & {lx.WD[i]} and (_free(raw) & set(lx.W)) - {lx.W[2]} <= set(sol):
-                    chosen.append(raw)
-                    break
-        for w, f in sol.items():
-            self.ctx.solutions[w] = f
-        if not chosen:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "unchecked", "no earlier equation of motion for these components to substitute into")
-            return
-
-        def holds(sol_):
-            rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
-            for k, case in enumerate(self.ctx.cases):
-                for raw in chosen:
-                    r = raw.xreplace({**sol_, **rates_})
-                    r = r.xreplace(case) if case else r
-                    ok, how = _zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
-                    if not ok:
-                        where = f" in case {k + 1} of {len(self.ctx.cases)} ({self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
-                        return False, f"substituted into the earlier equations: {how}{where}"
-            return True, f"substituted into the earlier equations of motion ({len(chosen)}), in {len(self.ctx.cases)} case(s)"
-
-        ok, why = holds(sol)
-        _ = rates
-        if ok:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "holds", why)
-            return
-        # one edit of which member restores the group? When several can (a phase's sign flipped in
-        # one of a pair: either line may be the slip), each is named with its own correction.
-        fixes = {}
-        for j, (line, piece, w, f) in enumerate(group):
-            for cand, what in edits(f):
-                if holds({**sol, w: cand})[0]:
-                    fixes[j] = (cand, what)
-                    break
-        if not fixes:
-            for line, piece, _, _ in group:
-                self._add(line, piece, "solution", "fails", why)
-            return
-        either = " (or, instead, the companion named with it)" if len(fixes) > 1 else ""
-        for j, (line, piece, w, _) in enumerate(group):
-            if j in fixes:
-                cand, what = fixes[j]
-                self._add(line, piece, "solution", "typo", f"as written: {why}; one edit ({what}) makes it hold{either}",
-                          f"{self.tex(w)}(t) = {self.tex(cand)}")
-            else:
-                self._add(line, piece, "solution", "holds", "with the corrected companion")
-
-
-def _positive_multiple(a, b) -> bool:
-    """Is a = q b with q > 0 a function of the positive parameters only (I₁, I₃, M, g, l)?"""
-    if sp.expand(a) == 0 or sp.expand(b) == 0:
-        return False
-    q = sp.cancel(sp.together(a / b))
-    params = (I1, I2, I3, Mass, g, l)
-    if not _free(q) <= set(params):
-        return False
-    pos = {s: sp.Symbol(s.name, positive=True) for s in params}
-    return bool(q.xreplace(pos).is_positive)
-
-
-def _order(value, x) -> int:
-    """The order n of the series check: one above the highest power of x the claim keeps."""
-    try:
-        v = sp.expand(sp.cancel(sp.together(value)))
-        deg = sp.Poly(v, x).degree() if v.is_polynomial(x) else 2
-    except (sp.PolynomialError, sp.GeneratorsNeeded):
-        deg = 2
-    return max(deg, 0) + 1
-
 
 def _first_relation(text: str) -> int | None:
     try:
@@ -1246,42 +588,3 @@ def check_notes(path, convention: str | None = None) -> list[Claim]:
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
     return Checker(nt.parse_notes(text, path, convention)).run()
-
-
-def summary(claims) -> dict:
-    out = {v: sum(c.verdict == v for c in claims) for v in VERDICTS}
-    out["claims"] = len(claims)
-    out["checked"] = sum(c.verdict != "unchecked" for c in claims)
-    return out
-
-
-def exit_status(claims) -> int:
-    """0 when every checked claim holds, 1 when any is a typo or fails."""
-    return 1 if any(c.verdict in ("typo", "fails") for c in claims) else 0
-
-
-def render(claims, fmt: str = "text", path: str = "") -> str:
-    """The report: ``text`` (one line per claim, indented why/correction), ``markdown`` (a table)
-    or ``json`` (the contract's shape)."""
-    if fmt == "json":
-        return json.dumps({"claims": [c.as_dict() for c in claims], "summary": summary(claims)}, ensure_ascii=False, indent=1) + "\n"
-    s = summary(claims)
-    total = f"{s['claims']} claims ({s['checked']} checked): " + ", ".join(f"{s[v]} {v}" for v in VERDICTS)
-    if fmt == "markdown":
-        lines = ["| line | kind | verdict | formula | why |", "|---|---|---|---|---|"]
-        for c in claims:
-            verdict = f"typo → ${c.correction}$" if c.verdict == "typo" and c.correction else f"**{c.verdict}**"
-            cells = (str(c.line), c.kind, verdict, f"${' '.join(c.latex.split())}$", c.why)
-            lines.append("| " + " | ".join(x.replace("|", r"\|").replace("\n", " ") for x in cells) + " |")
-        return "\n".join(lines) + f"\n\n{total}\n"
-    if fmt != "text":
-        raise ValueError(f"unknown format {fmt!r} (text, markdown or json)")
-    out = []
-    for c in claims:
-        out.append(f"{path}:{c.line}: {c.verdict:<9} {c.kind}: {' '.join(c.latex.split())[:100]}")
-        if c.correction:
-            out.append(f"    corrected: {c.correction}")
-        if c.why:
-            out.append(f"    why: {c.why}")
-    out.append(total)
-    return "\n".join(out) + "\n"

@@ -99,6 +99,15 @@ class TextNames:
         if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
+        base = m0.base if isinstance(m0, sp.Pow) and m0.exp == 2 else None
+        if self._new_name(base) and base not in getattr(self, "generics_before", ()) and rels[0] in ("=", "≡") \
+                and not (_free(members[1]) & {base}):
+            # "names it k₄² = …": k₄ is the positive root (a rate or a frequency)
+            self.ctx.defs[base] = sp.sqrt(members[1])
+            self._add(line, piece, "new symbol", "unchecked",
+                      f"defines the text's symbol {self.tex(base)} by its square (recorded, then used)")
+            self.settings_only = False
+            return True
         if set(rels) - {"=", "≡", "≈"}:
             if self._new_name(m0) and rels[0] in ("=", "≡") and not (_free(members[1]) & {m0}):
                 self.ctx.defs[m0] = members[1]       # k₁ ≡ I_z − I_y > 0: the name, and a condition
@@ -115,6 +124,7 @@ class TextNames:
                 self._add(line, piece, "new symbol", "unchecked",
                           f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
                 return True
+            self._flush()
             for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked
                 self._one(line, piece, "identity", members[1], members[k], parsed, k, approx=rels[k - 1] == "≈")
             return True
@@ -126,12 +136,23 @@ class TextNames:
                 self.display_settings.append(m0)
             if m0 in self.d.rot.ANGLES:
                 self.last_angle_set = m0                   # the turn a numeric matrix then shows
-            if m0 in lx.W and not _free(members[1]) & {lx.t}:
-                self.ctx.subs[lx.WD[lx.W.index(m0)]] = sp.S.Zero     # a constant component
+            self._spin_set(m0, members[1])
             self._add(line, piece, "setting", "unchecked",
                       f"sets {self.tex(m0)} = {self.tex(members[1])}: a case or an assumption of the text, not a claim")
             return True
         return self._undefined(line, piece, members, rels)
+
+    def _spin_set(self, w, value):
+        """ω̃ᵢ set to a constant: ω̃̇ᵢ = 0 too; and a spin the text has moved to this axis (ω̃₂ = Ω after
+        ω̃₁ = Ω: the body turning about another axis) is no longer about the old one."""
+        if w not in lx.W:
+            return
+        for k, other in enumerate(lx.W):
+            if other != w and other in self.ctx.subs and self.ctx.subs[other] == value and _free(value):
+                del self.ctx.subs[other]
+                self.ctx.subs.pop(lx.WD[k], None)
+        if not _free(value) & {lx.t}:
+            self.ctx.subs[lx.WD[lx.W.index(w)]] = sp.S.Zero     # a constant component
 
     def _settings_before_neq(self, line, piece, members, rels) -> bool:
         """``I_1 = I_2 \\neq I_3``: the equalities are what the text assumes (the ≠ says the rest)."""
@@ -148,9 +169,13 @@ class TextNames:
     def _undefined(self, line, piece, members, rels) -> bool:
         """A relation with symbols of the text's that nothing ties: decided only if it is an
         identity whatever they are."""
+        self._flush()                   # a claim: the solutions before it are a complete group
+        if set(rels) <= {"<", ">", "≤", "≥"} and self._ordered(line, piece, members, rels):
+            return True
         loose = set()
         for m in members:
             loose |= {s for s in _free(self._resolve(m)) if isinstance(s, lx.Generic)}
+        loose -= self._constants()
         if not loose:
             return False
         if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members):
@@ -169,6 +194,15 @@ class TextNames:
                   f"relates {names}, which the text has not tied to the derivation")
         self.settings_only = False
         return True
+
+    def _constants(self) -> set:
+        """The text's symbols that its settings and solutions give meaning to: the value of a
+        setting (Ω of ω̃₁ = Ω) and the integration constants of a solution it wrote (ω₀, ε of
+        ω̃₁ = ω₀ cos(nt + ε)). A relation in them is checked with the settings and solutions put in."""
+        out = set()
+        for v in list(self.ctx.subs.values()) + list(self.ctx.solutions.values()):
+            out |= {s for s in _free(v) if isinstance(s, lx.Generic)}
+        return out
 
     def _new_name(self, sym) -> bool:
         """A symbol of the text's that it has not defined, nor the rate of one it has (u̇ of u)."""
@@ -248,6 +282,8 @@ class TextNames:
     def _close_display(self):
         """Settings made inside a display with claims, or in running text ("the case $\\theta = 0$"),
         hold there only; a display of settings alone sets them for the section."""
+        if getattr(self, "pending", None):
+            self.pending_subs = dict(self.ctx.subs)      # the settings the pending solutions were written under
         if self.display_settings and not self.settings_only:
             keep = {k: v for k, v in self.ctx.subs.items() if k in PARAMETERS and k in self.display_settings}
             self.ctx.subs = {**self._subs_before, **(keep if self._inline else {})}

@@ -1,0 +1,226 @@
+"""The comparisons of the notes checker: is a claim's value the derived one, and which single edit
+of a formula would make it so.
+
+Takes: SymPy expressions and matrices in the derivation's symbols (`derive.lecture.latex`).
+Gives: `zero` (the zero test of `derive.lecture.verify`: bounded symbolic steps, then seeded
+exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `column` (a vector
+as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
+power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.verify`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import random
+
+import mpmath
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture import verify as vf
+from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
+from derive.symbolic.rotations import ANGLES, RATES
+
+
+def has_rates(objs, rot) -> bool:
+    return any(free(o) & set(rot.RATES) for o in objs)
+
+
+def free(obj) -> set:
+    return set(getattr(obj, "free_symbols", set()))
+
+
+def column(v):
+    """A vector as a 3-column (from a matrix, or a linear form in ê₁ ê₂ ê₃); scalars as 1×1."""
+    if isinstance(v, sp.MatrixBase):
+        if v.shape == (1, 3):
+            return sp.Matrix(v).T
+        return sp.Matrix(v).reshape(len(v), 1)
+    v = sp.sympify(v)
+    if v.free_symbols & set(lx.BASIS):
+        ex = sp.expand(v)
+        coeffs = [ex.coeff(e) for e in lx.BASIS]
+        rest = sp.expand(ex - sum(c * e for c, e in zip(coeffs, lx.BASIS)))
+        if rest != 0 or any(c.free_symbols & set(lx.BASIS) for c in coeffs):
+            raise Mismatch("not a vector: a product of unit vectors, or a scalar added to a vector")
+        return sp.Matrix(coeffs)
+    return sp.Matrix([v])
+
+
+class Mismatch(Exception):
+    pass
+
+
+def zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
+    if lhs.shape != rhs.shape:
+        return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
+    steps = [_symbolic_zero(d) for d in lhs - rhs]
+    if all(steps):
+        return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
+    if any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow)):
+        real = _real_zero(lhs, rhs, seed)
+        if real is not None:
+            return real
+    out = vf._numeric_zero(lhs, rhs, seed)
+    return out.ok, out.method
+
+
+def _real_zero(lhs, rhs, seed):
+    """The numeric test of a formula with roots where they are real: seeded points at which every
+    radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where its roots exist, not
+    on another branch of them); None when no such point turns up."""
+    exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
+    symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
+    bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
+    f = sp.lambdify(symbols, exprs, modules="mpmath")
+    radicands = sp.lambdify(symbols, bases, modules="mpmath")
+    rng = random.Random(seed)
+    n, used = len(lhs), 0
+    for _ in range(300):
+        point = [mpmath.mpf(p.p) / p.q for p in vf._sample(symbols, rng)]
+        with mpmath.workdps(vf._DIGITS):
+            try:
+                if not all(mpmath.im(b) == 0 and mpmath.re(b) > 0 for b in map(mpmath.mpmathify, radicands(*point))):
+                    continue
+                vals = [mpmath.mpmathify(v) for v in f(*point)]
+            except (ZeroDivisionError, ValueError, TypeError):
+                continue
+            if not all(mpmath.isfinite(v) for v in vals):
+                continue
+            used += 1
+            for a, b in zip(vals[:n], vals[n:]):
+                if abs(a - b) > max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - vf._DIGITS):
+                    return False, (f"mpmath {vf._DIGITS} digits where its roots are real: |claim − derived| = "
+                                   f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
+        if used == vf._POINTS:
+            break
+    return (True, f"mpmath {vf._DIGITS} digits at {used} points where its roots are real") if used else None
+
+
+def _symbolic_zero(d):
+    """`verify`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
+    (trig_reduce refuses a sine nested in a sine's argument)."""
+    try:
+        return vf._symbolic_zero(d)
+    except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
+        return None
+
+
+def _shape(m) -> str:
+    return "scalar" if m.shape == (1, 1) else ("vector" if m.shape[1] == 1 else f"{m.shape[0]}×{m.shape[1]} matrix")
+
+
+def quick_equal(a, b) -> bool:
+    """A fast float test (two random points) used to screen the single-edit candidates."""
+    try:
+        A, B = column(a), column(b)
+    except Mismatch:
+        return False
+    if A.shape != B.shape:
+        return False
+    syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
+    rng = random.Random(7)
+    for _ in range(2):
+        point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
+        try:
+            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
+            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+        except (TypeError, ValueError, ZeroDivisionError):
+            return False
+        if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
+            return False
+    return True
+
+
+# ---- single edits ------------------------------------------------------------------------------
+def _paths(e, path=()):
+    yield path, e
+    # inside a derivative the variables are not edited (∂/∂ of a power is no formula)
+    if isinstance(e, sp.Derivative):
+        yield from _paths(e.expr, path + (0,))
+    elif isinstance(e, sp.Basic) and not e.is_Atom:
+        for k, a in enumerate(e.args):
+            yield from _paths(a, path + (k,))
+
+
+def _replace(e, path, new):
+    if not path:
+        return new
+    args = list(e.args)
+    args[path[0]] = _replace(args[path[0]], path[1:], new)
+    return e.func(*args)
+
+
+_SIBLINGS = None
+
+
+def _siblings():
+    fams = [(I1, I2, I3), lx.W, lx.WD, lx.BASIS, lx.PRIMED, ANGLES, RATES, (lx.Omega1, lx.Omega2)]
+    out = {}
+    for fam in fams:
+        for s in fam:
+            out[s] = [x for x in fam if x != s]
+    return out
+
+
+def edits(e):
+    """Single edits of an expression: (edited, what was changed)."""
+    if isinstance(e, sp.MatrixBase):
+        for k in range(len(e)):
+            for new, what in edits(e[k]):
+                m = sp.Matrix(e)
+                m[k] = new
+                yield m, f"{what} (entry {k + 1})"
+        return
+    e = sp.sympify(e)
+    sib = _siblings()
+    yield -e, "the sign of the whole side"
+    yield 2 * e, "a factor 2"
+    yield e / 2, "a factor 1/2"
+    for path, node in list(_paths(e)):
+        if isinstance(node, sp.Add):
+            for k, a in enumerate(node.args):
+                p = path + (k,)
+                yield _replace(e, p, -a), "a sign"
+                yield _replace(e, p, 2 * a), "a factor 2"
+                yield _replace(e, p, a / 2), "a factor 1/2"
+        elif isinstance(node, (sp.sin, sp.cos)):
+            other = sp.cos if isinstance(node, sp.sin) else sp.sin
+            yield _replace(e, path, other(*node.args)), "sin ↔ cos"
+        elif isinstance(node, sp.Pow) and node.exp.is_Integer:
+            for d in (1, -1):
+                if node.exp + d != 0:
+                    yield _replace(e, path, node.base ** (node.exp + d)), "a power"
+        elif isinstance(node, sp.Symbol) and node in sib:
+            for s in sib[node]:
+                yield _replace(e, path, s), "an index"
+            if path and not isinstance(_at(e, path[:-1]), sp.Pow):
+                yield _replace(e, path, node**2), "a power"
+
+
+def _at(e, path):
+    for k in path:
+        e = e.args[k]
+    return e
+
+
+def positive_multiple(a, b) -> bool:
+    """Is a = q b with q > 0 a function of the positive parameters only (I₁, I₃, M, g, l)?"""
+    if sp.expand(a) == 0 or sp.expand(b) == 0:
+        return False
+    q = sp.cancel(sp.together(a / b))
+    params = (I1, I2, I3, Mass, g, l)
+    if not free(q) <= set(params):
+        return False
+    pos = {s: sp.Symbol(s.name, positive=True) for s in params}
+    return bool(q.xreplace(pos).is_positive)
+
+
+def series_order(value, x) -> int:
+    """The order n of the series check: one above the highest power of x the claim keeps."""
+    try:
+        v = sp.expand(sp.cancel(sp.together(value)))
+        deg = sp.Poly(v, x).degree() if v.is_polynomial(x) else 2
+    except (sp.PolynomialError, sp.GeneratorsNeeded):
+        deg = 2
+    return max(deg, 0) + 1

@@ -1,0 +1,156 @@
+"""What a text has said so far, for the notes checker: the context of a section (its settings,
+small quantities, sign cases, definitions, equations) and how headings, assumptions in the prose
+("for a symmetric top", "$\\omega_2, \\omega_3$ are first-order small", "$0 \\approx \\omega_y
+\\ll \\omega_x$") and sign statements change it.
+
+Gives `Context` and the mixin `Reading` of `derive.lecture.notes_check.Checker`.
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.comparing import free
+from derive.symbolic.lagrangian import I1, I2, I3
+from derive.symbolic.rotations import ANGLES
+
+
+@dataclass
+class Context:
+    """What the text has said so far: assumptions of the section, definitions, equations."""
+
+    subs: dict = field(default_factory=dict)          # I₂ → I₁, p_α → p_γ, ω̃̇₃ → 0
+    small: list = field(default_factory=list)         # β ≈ 0
+    cases: list = field(default_factory=lambda: [{}])  # sign cases
+    solutions: dict = field(default_factory=dict)     # ω̃ᵢ → f(t)
+    defs: dict = field(default_factory=dict)          # Ω → the notes' definition
+    eoms: list = field(default_factory=list)          # (residual as written, line, settings of ω̃)
+    head: str | None = None                           # left side continued by "= …" displays
+    assumptions: list = field(default_factory=list)   # their LaTeX, for the why
+    vec_model: str | None = None                      # "particle" after a sum over particles
+    stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
+    orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
+    first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
+    forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
+    orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
+    eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
+
+    def new_section(self):
+        self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
+        self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
+        self.first_order = set()
+
+
+class Reading:
+    """Mixin of the checker: keeps ``self.ctx`` as the text goes on. Uses ``self.vocab``,
+    ``self._add``, ``self._new_name``, ``self._spin_set``, ``self._snapshot`` and ``self.tex``."""
+
+    def _enter_section(self, level):
+        """A heading: what the text assumed in the enclosing section (a heading of a lower level)
+        before its first subsection holds in each subsection; what a subsection assumed ends
+        with it."""
+        stack = self._sections
+        if stack and stack[-1][0] < level and stack[-1][1] is None:
+            stack[-1][1] = self._snapshot()            # the parent's assumptions, for its children
+        while stack and stack[-1][0] >= level:
+            stack.pop()
+        self.ctx.new_section()
+        if stack and stack[-1][1] is not None:
+            parent = stack[-1][1]
+            self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
+            self.ctx.assumptions, self.ctx.defs = list(parent.assumptions), dict(self.ctx.defs)
+            self.ctx.stated = dict(parent.stated)
+        stack.append([level, None])
+
+    def _symmetric(self, line, words):
+        """The text says the body is symmetric ("a symmetric top", a section's title): I₂ = I₁."""
+        if I1 not in self.ctx.subs and I2 not in self.ctx.subs:
+            self.ctx.subs[I2] = I1
+            self.ctx.assumptions.append(f"I_2 = I_1 ({words.strip()!r}, line {line})")
+            self.ctx.stated[I2] = f"line {line}"
+
+    def _assume(self, item):
+        try:
+            parsed = lx.parse(item.latex, self.vocab)
+        except lx.NotRead as err:
+            if re.search(r"\\tau(?![a-z])", item.latex):
+                self.ctx.assumptions.append(item.latex)      # τ = 0: the torque-free case
+            if item.display:
+                self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
+            return
+        m0 = parsed.members[0].value if parsed.members else None
+        if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
+                and free(parsed.members[1].value) and not free(parsed.members[1].value) & {m0}:
+            self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
+            if item.display:
+                self._add(item.line, item.latex, "new symbol", "unchecked",
+                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
+            return
+        if item.display:
+            self._add(item.line, item.latex, "assumption", "unchecked",
+                      "an assumption of the text: applies to the displays that follow, up to the next heading")
+        self.ctx.assumptions.append(item.latex)
+        values = [m.value for m in parsed.members]
+        if len(values) > 1 and set(parsed.relations) <= {"<", ">", "≤", "≥"} and \
+                all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+            self.ctx.orderings.append(values if parsed.relations[0] in ("<", "≤") else values[::-1])
+            return
+        if len(parsed.members) != 2:
+            return
+        a, b = parsed.members[0].value, parsed.members[1].value
+        rel = parsed.relations[0]
+        if rel == "≈" and b == 0 and isinstance(a, sp.Symbol):
+            if a in ANGLES:
+                self.ctx.small.append(a)
+            else:
+                self.ctx.subs[a] = sp.S.Zero
+        elif rel in ("=", "≈") and isinstance(a, sp.Symbol) and not isinstance(a, lx.Quantity):
+            if a.xreplace(self.ctx.subs) == sp.sympify(b).xreplace(self.ctx.subs):
+                return                            # already so (the prose said "a symmetric top")
+            self.ctx.subs[a] = b
+            self.ctx.stated[a] = f"line {item.line}"
+            self._spin_set(a, b)
+
+    def _small_before_ll(self, latex):
+        """``0 \\approx \\omega_y, \\omega_z \\ll \\omega_x``: what stands before ≪ is small."""
+        if "\\ll" in latex:
+            left = re.split(r"\\ll(?![a-z])", latex)[0]
+            self._small([re.split(r"\\approx|\\simeq", left)[-1]])
+
+    def _small(self, symbols):
+        """The prose calls ω̃ᵢ (or Lᵢ = Iᵢω̃ᵢ) small: the equations that follow hold to first order in them."""
+        moments = (I1, I2, I3)
+        for text in symbols:
+            for part in text.split(","):
+                try:
+                    parsed = lx.parse(part, self.vocab)
+                except lx.NotRead:
+                    continue
+                if len(parsed.members) != 1:
+                    continue
+                v = parsed.members[0].value
+                for i, w in enumerate(lx.W):
+                    if v == w or v == moments[i] * w:
+                        self.ctx.first_order.add(w)
+
+    def _signs(self, item):
+        syms = []
+        for s in item.symbols:
+            try:
+                p = lx.parse(s, self.vocab)
+            except lx.NotRead:
+                return
+            syms.append(p.members[0].value)
+        if len(syms) != 2 or not all(isinstance(s, sp.Symbol) for s in syms):
+            return
+        u, v = sp.Dummy("u", positive=True), sp.Dummy("v", positive=True)
+        x, y = syms
+        if item.text == "same":
+            self.ctx.cases = [{x: u, y: v}, {x: -u, y: -v}]
+        else:
+            self.ctx.cases = [{x: u, y: -v}, {x: -u, y: v}]

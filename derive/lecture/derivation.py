@@ -1,0 +1,143 @@
+"""The derivation the notes checker compares a text with, per convention: ω̃, the frames, the
+heavy symmetric top (its Lagrangian, momenta, Routh's reduction, the sleeping top), Euler's
+equations and the named quantities in the forms a text may write them.
+
+Takes: an angle sequence (`derive.symbolic.rotations.convention`). Gives: `derivation(conv)`
+(cached `Derivation`), `linear` (a column as a linear form in ê₁ ê₂ ê₃) and `families` (the
+quantities one slip of a label may swap).
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import functools
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.symbolic import rotations as rot
+from derive.symbolic.lagrangian import I1, I2, I3, Reduction, heavy_symmetric_top, kinetic_energy
+from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
+
+
+class Derivation:
+    """The derived quantities of one convention (computed on first use)."""
+
+    def __init__(self, convention: str):
+        self.rot = rot
+        self.conv = rot.convention(convention)
+
+    @functools.cached_property
+    def omega(self) -> sp.Matrix:
+        """ω̃ from the skew route Rᵀ Ṙ (independent of the notes' sum route)."""
+        return sp.Matrix(self.conv.omega_body_skew())
+
+    @functools.cached_property
+    def frames(self) -> dict:
+        """ê′ₖ and ê⁰ₖ as linear forms in the body basis (ê′ₖ = passive(a₃, γ) eₖ, ê⁰ₖ = Rᵀ eₖ)."""
+        rot, out = self.rot, {}
+        R = self.conv.matrix()
+        for k, axis in enumerate("xyz"):
+            out[lx.PRIMED[k]] = linear(rot.passive(self.conv.axes[2], rot.gamma) * rot.unit(axis))
+            out[lx.INERTIAL[k]] = linear(R.T * rot.unit(axis))
+        return out
+
+    @functools.cached_property
+    def top(self):
+        return heavy_symmetric_top(self.conv)
+
+    @functools.cached_property
+    def reduction(self):
+        return Reduction(self.top)
+
+    @functools.cached_property
+    def sleeping(self):
+        return SleepingTop(self.reduction)
+
+    @functools.cached_property
+    def steady_force(self):
+        """∂L/∂β at β̇ = 0: the β equation of motion of a steady precession (β̈ = 0 too)."""
+        rot = self.rot
+        return sp.expand(sp.diff(self.top.lagrangian, rot.beta).xreplace({rot.beta_d: 0}))
+
+    def euler(self, subs: dict) -> list:
+        """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
+        moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
+        rhs = euler_rhs(moments, sp.Matrix(lx.W))
+        return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
+
+    def frequencies(self):
+        o1, o2 = SteadySpin(2).frequencies
+        return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
+
+    @functools.lru_cache(maxsize=None)
+    def forms(self, key, args=None) -> list:
+        """What a named quantity is, in the forms a text may use (each compared in turn)."""
+        half = sp.Rational(1, 2)
+        Iw = [I1 * lx.W[0], I2 * lx.W[1], I3 * lx.W[2]]
+        if key is lx.T_:
+            return [half * sum(m * w**2 for m, w in zip((I1, I2, I3), lx.W)),
+                    self.top_kinetic()]
+        if key is lx.LAGRANGIAN:
+            if args and set(args) <= {self.rot.beta, self.rot.beta_d}:
+                return [self.reduction.lagrangian_substituted]
+            return [self.top.lagrangian, self.top_kinetic()]      # a free body's L is its T
+        if key is lx.LVEC:
+            return [linear(sp.Matrix(Iw))]
+        if key is lx.ENERGY:
+            return [self.reduction.energy, self.top.energy, self.top_kinetic()]
+        if key is lx.EPRIME:
+            return [self.reduction.reduced_energy]
+        if key is lx.VEFF:
+            return [self.reduction.effective_potential]
+        if key is lx.LMAG:
+            return [sp.sqrt(sum((m * w)**2 for m, w in zip((I1, I2, I3), lx.W)))]
+        if key is lx.OMEGA_VEC:
+            return [linear(sp.Matrix(lx.W)), linear(self.omega)]
+        if key is lx.DLDT:
+            return [linear(sp.Matrix(self.euler({})))]
+        if key in (lx.MOMENTUM[0], lx.p_alpha_sym()):
+            return [self.top.momentum(self.rot.alpha)]
+        if key in (lx.MOMENTUM[2], lx.p_gamma_sym()):
+            return [self.top.momentum(self.rot.gamma)]
+        if key is lx.MOMENTUM[1]:
+            return [self.top.momentum(self.rot.beta)]
+        if key in lx.W:
+            return [self.omega[lx.W.index(key)]]
+        if key in lx.PRIMED or key in lx.INERTIAL:
+            return [self.frames[key]]
+        if key in lx.BASIS:
+            return [key]
+        if key is lx.Omega:
+            o1, o2 = self.frequencies()
+            return [o1.xreplace({I2: I1}), o2.xreplace({I2: I1})]
+        if key is lx.Omega1:
+            return [self.frequencies()[0]]
+        if key is lx.Omega2:
+            return [self.frequencies()[1]]
+        return []
+
+    @functools.lru_cache(maxsize=None)
+    def top_kinetic(self):
+        return kinetic_energy(convention=self.conv)
+
+
+@functools.cache
+def derivation(convention: str) -> Derivation:
+    return Derivation(convention)
+
+
+def linear(col) -> sp.Expr:
+    return sum((col[i] * lx.BASIS[i] for i in range(3)), sp.S.Zero)
+
+
+def families():
+    """Quantities that can stand for one another by a slip of the label."""
+    return [
+        [lx.T_, lx.ENERGY, lx.EPRIME, lx.VEFF, lx.LAGRANGIAN],
+        list(lx.W),
+        list(lx.PRIMED) + list(lx.INERTIAL),
+        [lx.Omega, lx.Omega1, lx.Omega2],
+        [lx.p_alpha_sym(), lx.p_gamma_sym()],
+        [lx.LVEC, lx.OMEGA_VEC, lx.DLDT],
+    ]

@@ -1,0 +1,111 @@
+"""Statements in vectors for the notes checker: sums over particles, the inertia tensor, frame
+derivatives (read by `derive.lecture.vectors`, with a single-edit search of the LaTeX for a
+correction), and the torque-free d𝐋/dt = 0 written out in components.
+
+Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`,
+:mod:`derive.lecture.comparing`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture import vectors as vc
+from derive.lecture.comparing import Mismatch, column, free
+
+
+class VectorStatements:
+    """Mixin of the checker. Uses ``self.vocab``, ``self.d``, ``self.ctx``, ``self._add``,
+    ``self._resolve`` and ``self.judging_only``."""
+
+    def _vectors(self, line, piece, text) -> bool:
+        """A statement in vectors, tensors, sums over particles or frame derivatives
+        (`derive.lecture.vectors`): each member against the first, a single-edit search of the
+        LaTeX for a correction. False when that reader cannot read it either."""
+        self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
+        try:
+            reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
+        except lx.NotRead:
+            return False
+        finally:
+            self.vocab.open = True
+        if set(reading.relations) - {"=", "≡"}:
+            return False
+        first = reading.members[0]
+        self.ctx.head = reading.source[:first[0].end].strip()
+        if reading.model == "particle":
+            self.ctx.vec_model = "particle"
+        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
+        where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
+        for k in range(1, len(first)):
+            if first[k].value is vc.LAW or first[0].value is vc.LAW:
+                self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
+                          "starts (Euler's equations are it in body axes), not a consequence of it")
+                continue
+            ok, how = vc.holds(reading, k, f"{piece}/{k}")
+            if ok:
+                self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
+                continue
+            if "not a vector" in how or " against a " in how:
+                self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
+                continue
+            fix = None if self.judging_only else self._vector_fix(reading, k, piece)
+            if fix:
+                self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "
+                          f"({vc.WHY[reading.model]})", fix[0])
+            else:
+                self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
+        return True
+
+    def _vector_fix(self, reading, k, piece):
+        """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
+        src, m = reading.source, reading.members[0][k]
+        rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
+        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
+        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
+            if n >= 80:
+                break
+            try:
+                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                continue
+            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
+                continue
+            if vc.holds(again, k, f"{piece}/edit{n}")[0]:
+                return vc.restore(f"{left} {rel} {edited.strip()}"), what
+        return None
+
+    def _torque_free(self, line, piece, parsed):
+        """d𝐋/dt = 0 = Σ cᵢ êᵢ with τ = 0 stated: component i of the written d𝐋/dt, set to 0, must be
+        Euler's equation i (a non-zero multiple of Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ); without a written
+        d𝐋/dt it restates the torque-free case."""
+        stated = any(re.search(r"\\tau(?![a-z])", a) for a in self.ctx.assumptions)
+        written = [mm.value for mm in parsed.members[1:] if mm.value != 0]
+        if not stated:
+            self._add(line, piece, "equation of motion", "unchecked", "d𝐋/dt = 0 needs τ = 0, which the text does not state")
+            return
+        if not written:
+            self._add(line, piece, "equation of motion", "unchecked",
+                      "d𝐋/dt = 0: the torque-free case (τ = 0, stated in the text), an assumption")
+            return
+        try:
+            col = column(self._resolve(written[-1]))
+        except Mismatch as err:
+            self._add(line, piece, "equation of motion", "fails", f"d𝐋/dt = 0 with d𝐋/dt = {err}")
+            return
+        euler = self.d.euler(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD)
+        for i in range(3):
+            r = sp.expand(col[i].xreplace(self.ctx.subs)) if len(col) == 3 else None
+            q = sp.cancel(sp.together(r / euler[i])) if r is not None and euler[i] != 0 else None
+            if q is None or q == 0 or free(q) & dyn:
+                self._add(line, piece, "equation of motion", "fails",
+                          f"d𝐋/dt = 0 (τ = 0 stated): component {i + 1} is not Euler's equation {i + 1}")
+                return
+        self._add(line, piece, "equation of motion", "holds",
+                  "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
+                  "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")

@@ -1,0 +1,469 @@
+"""The vocabulary of the formula reader: the symbols of the notes, the scanner that turns LaTeX
+into atoms and tokens, and `Vocabulary`, which looks each atom up among the derivation's
+quantities and their usual spellings (or, open to the text's own names, makes it a `Generic`
+symbol of the text's). See `derive.lecture.latex` for the parser built on them.
+
+May import: :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
+from derive.symbolic.rotations import ANGLES, RATES
+from derive.symbolic.lagrangian import ACCELS
+
+# --- the symbols of the notes ------------------------------------------------------------------
+W = sp.symbols("omega1:4", real=True)              # ω̃ᵢ (the symbols of derive.symbolic.stability)
+WD = sp.symbols("omega_d1:4", real=True)           # dω̃ᵢ/dt
+BASIS = sp.symbols("e1 e2 e3", real=True)          # ê₁ ê₂ ê₃ (body)
+PRIMED = sp.symbols("e1' e2' e3'", real=True)      # ê′ᵢ: the frame after the first two turns
+INERTIAL = sp.symbols("e1^0 e2^0 e3^0", real=True)  # ê⁰ᵢ: the inertial frame
+Omega, Omega1, Omega2 = sp.symbols("Omega Omega_1 Omega_2", real=True)
+TAU = sp.symbols("tau1:4", real=True)              # τᵢ: the torque's body components
+t = sp.Symbol("t", real=True)
+FREE_NAMES = {"A": "A", "B": "B", "C": "C", "t": "t", "varphi": "varphi", "delta": "delta", "epsilon": "epsilon"}
+"""Letters a text may use as its own constants without defining them (amplitude, time, phase…)."""
+
+
+class Quantity(sp.Symbol):
+    """A named quantity of the derivation (T, E, V_eff, …) as it appears in a formula: the checker
+    replaces it by what the derivation says it is."""
+
+
+class DT(sp.Function):
+    """d/dt of its argument as written (``\\frac{d}{dt}``, ``\\frac{dX}{dt}``): the checker
+    differentiates once it knows what the argument stands for."""
+
+
+class Transposed(sp.Function):
+    """Xᵀ of a matrix the text has named (``\\lambda^T``): the transpose once X is substituted."""
+
+
+class Generic(sp.Symbol):
+    """A symbol of the text's own (``u``, ``N_1``, ``T_{rot}``, ``m_1``): what it stands for is
+    what the text says, in a definition the checker records, or nothing."""
+
+
+def quantity(name: str) -> Quantity:
+    return Quantity(name)
+
+
+T_ = quantity("T")
+LAGRANGIAN = quantity("L")
+LVEC = quantity("Lvec")                  # angular momentum 𝐋
+ENERGY = quantity("E")
+EPRIME = quantity("E'")
+VEFF = quantity("V_eff")
+OMEGA_VEC = quantity("omega_vec")        # 𝛚 (= ω̃ in body components)
+LMAG = quantity("|L|")                   # the magnitude of the angular momentum
+DLDT = quantity("dL/dt")
+DLDT_BODY = quantity("(dL/dt)_body")
+MOMENTUM = {0: quantity("dL/dalpha_d"), 2: quantity("dL/dgamma_d"), 1: quantity("dL/dbeta_d")}
+
+QUANTITY_LATEX = {
+    T_: "T", LAGRANGIAN: "L", LVEC: r"\mathbf{L}", LMAG: "L", ENERGY: "E", EPRIME: "E'", VEFF: r"V_{\mathrm{eff}}",
+    OMEGA_VEC: r"\boldsymbol{\omega}", DLDT: r"\frac{d\mathbf{L}}{dt}",
+}
+
+
+# --- errors ------------------------------------------------------------------------------------
+class NotRead(Exception):
+    """A formula that cannot be read: ``why`` says what and where."""
+
+    def __init__(self, why: str, column: int | None = None):
+        super().__init__(why)
+        self.why = why
+        self.column = column
+
+
+class Unknown(NotRead):
+    """An atom outside the vocabulary."""
+
+
+class Words(NotRead):
+    """Text, not a formula (``\\text{…}``)."""
+
+
+# --- scanning ----------------------------------------------------------------------------------
+GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta",
+         "iota", "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi",
+         "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma",
+         "Phi", "Psi", "Omega", "top", "intercal"}
+DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
+               "widehat": "hat", "mathbf": "bold", "boldsymbol": "bold", "bm": "bold", "vec": "vec",
+               "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec"}
+SPACES = {",", ";", ":", "!", " ", "quad", "qquad",  "left", "right", "big", "Big", "bigg", "Bigg",
+          "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
+FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+             "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
+             "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
+RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
+             "ll": "≪", "gg": "≫",
+             "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
+             "rightarrow": "→", "propto": "∝", "sim": "∼"}
+
+
+@dataclass(frozen=True)
+class Atom:
+    """One symbol as written: its base letter (a Latin letter or a Greek name) and decorations."""
+
+    base: str
+    dots: int = 0
+    tilde: bool = False
+    hat: bool = False
+    bold: bool = False
+    sub: str = ""
+    sup: str = ""
+    primes: int = 0
+    text: str = ""
+
+    def with_(self, **kw) -> "Atom":
+        return Atom(**{**self.__dict__, **kw})
+
+
+@dataclass(frozen=True)
+class Tok:
+    kind: str       # num, atom, op, rel, func, cmd, begin, end, text
+    value: object
+    pos: int        # 0-based offset in the formula
+
+
+_CMD = re.compile(r"\\([A-Za-z]+|.)")
+
+
+def _group(s: str, i: int) -> tuple[str, int]:
+    """The braced group starting at s[i] == '{' (content, index after it); a single token otherwise."""
+    while i < len(s) and s[i] == " ":
+        i += 1
+    if i >= len(s):
+        raise NotRead("a group is missing at the end", i + 1)
+    if s[i] == "{":
+        depth, j = 0, i
+        while j < len(s):
+            if s[j] == "\\":
+                j += 2
+                continue
+            if s[j] == "{":
+                depth += 1
+            elif s[j] == "}":
+                depth -= 1
+                if depth == 0:
+                    return s[i + 1:j], j + 1
+            j += 1
+        raise NotRead("unbalanced '{'", i + 1)
+    m = _CMD.match(s, i)
+    if m:
+        return m.group(0), m.end()
+    return s[i], i + 1
+
+
+def _plain(s: str) -> str:
+    """A subscript or superscript as plain text: 'eff', '1', 'ij', '\\alpha' → 'alpha', "'" kept."""
+    s = re.sub(r"\\(mathrm|text|mathit|rm)\s*", "", s)
+    s = s.replace("\\prime", "'").replace("{", "").replace("}", "").replace(" ", "")
+    return re.sub(r"\\([A-Za-z]+)", r"\1", s)
+
+
+def _atom_at(s: str, i: int) -> tuple[Atom, int]:
+    """Read one (possibly decorated) atom at s[i]; return it and the index after its sub/superscripts."""
+    m = _CMD.match(s, i)
+    if m and m.group(1) in DECORATIONS:
+        kind = DECORATIONS[m.group(1)]
+        inner, j = _group(s, m.end())
+        if kind == "roman" and re.fullmatch(r"[A-Za-z]+", inner.strip()) and len(inner.strip()) > 1:
+            atom = Atom(inner.strip())
+        else:
+            atom, k = _atom_at(inner.strip(), 0)
+            if k < len(inner.strip()):
+                raise NotRead(f"cannot read '\\{m.group(1)}{{{inner}}}'", i + 1)
+        if kind == "dot":
+            atom = atom.with_(dots=atom.dots + 1)
+        elif kind == "ddot":
+            atom = atom.with_(dots=atom.dots + 2)
+        elif kind == "tilde":
+            atom = atom.with_(tilde=True)
+        elif kind == "hat":
+            atom = atom.with_(hat=True)
+        elif kind in ("bold", "vec"):
+            atom = atom.with_(bold=True)
+    elif m and m.group(1) in GREEK:
+        atom, j = Atom(m.group(1)), m.end()
+    elif i < len(s) and s[i].isalpha() and s[i].isascii():
+        atom, j = Atom(s[i]), i + 1
+    else:
+        raise NotRead(f"cannot read {s[i:i + 12]!r}", i + 1)
+    # sub- and superscripts that belong to the symbol: subscripts always; primes; a superscript
+    # that is 0 or a prime (ê⁰₃, E′); numeric superscripts otherwise are powers (left to the parser).
+    while j < len(s):
+        k = j
+        while k < len(s) and s[k] == " ":
+            k += 1
+        if k < len(s) and s[k] == "_":
+            sub, j = _group(s, k + 1)
+            atom = atom.with_(sub=atom.sub + _plain(sub))
+        elif k < len(s) and s[k] == "'":
+            atom, j = atom.with_(primes=atom.primes + 1), k + 1
+        elif k < len(s) and s[k] == "^":
+            sup, after = _group(s, k + 1)
+            plain = _plain(sup)
+            if plain and set(plain) == {"'"}:
+                atom, j = atom.with_(primes=atom.primes + len(plain)), after
+            elif plain == "0" and (atom.hat or atom.bold):
+                atom, j = atom.with_(sup="0"), after
+            else:
+                break
+        else:
+            break
+    return atom.with_(text=s[i:j].strip()), j
+
+
+def scan(s: str) -> list[Tok]:
+    """The tokens of one formula (see the module docstring)."""
+    toks: list[Tok] = []
+    i, n = 0, len(s)
+    while i < n:
+        ch = s[i]
+        if ch.isspace() or ch in "&~":
+            i += 1
+            continue
+        if ch.isdigit() or (ch == "." and i + 1 < n and s[i + 1].isdigit()):
+            m = re.match(r"\d*\.?\d+|\d+", s[i:])
+            toks.append(Tok("num", m.group(0), i))
+            i += m.end()
+            continue
+        if ch in "+-*/^_(){},|!":
+            toks.append(Tok("op", ch, i))
+            i += 1
+            continue
+        if ch in "[]":
+            toks.append(Tok("op", "(" if ch == "[" else ")", i))
+            i += 1
+            continue
+        if ch in "=<>":
+            toks.append(Tok("rel", RELATIONS[ch], i))
+            i += 1
+            continue
+        if ch == "'":
+            raise NotRead("a prime on something that is not a symbol", i + 1)
+        if ch == "\\":
+            m = _CMD.match(s, i)
+            if m is None:
+                raise NotRead("a lone '\\' at the end", i + 1)
+            name = m.group(1)
+            if name == "\\":
+                toks.append(Tok("op", "\\\\", i))
+                i = m.end()
+                continue
+            if name in SPACES:
+                i = m.end()
+                continue
+            if name in ("{", "}"):
+                toks.append(Tok("op", "(" if name == "{" else ")", i))
+                i = m.end()
+                continue
+            if name in ("lbrack", "rbrack", "lvert", "rvert", "vert"):
+                toks.append(Tok("op", {"lbrack": "(", "rbrack": ")"}.get(name, "|"), i))
+                i = m.end()
+                continue
+            if name in RELATIONS:
+                toks.append(Tok("rel", RELATIONS[name], i))
+                i = m.end()
+                continue
+            if name in ("text", "mbox", "textrm", "textbf", "textit", "hbox"):
+                raise Words("words, not a formula", i + 1)
+            if name in ("begin", "end"):
+                env, j = _group(s, m.end())
+                toks.append(Tok(name, env.strip(), i))
+                i = j
+                continue
+            if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
+                                             "times", "pm", "mp", "infty", "ldots", "cdots", "dots"):
+                toks.append(Tok("cmd", name, i))
+                i = m.end()
+                continue
+            if name in DECORATIONS or name in GREEK:
+                atom, j = _atom_at(s, i)
+                toks.append(Tok("atom", atom, i))
+                i = j
+                continue
+            raise NotRead(f"cannot read '\\{name}'", i + 1)
+        if ch.isalpha() and ch.isascii():
+            atom, j = _atom_at(s, i)
+            toks.append(Tok("atom", atom, i))
+            i = j
+            continue
+        raise NotRead(f"cannot read {ch!r}", i + 1)
+    return toks
+
+
+# --- the vocabulary ----------------------------------------------------------------------------
+@dataclass
+class Vocabulary:
+    """Atoms → SymPy: the derivation's symbols and quantities under their usual spellings.
+
+    ``angles`` are the notes' names of the three Euler angles, in order (the first about the
+    inertial axis); ``defined`` holds the symbols the notes define themselves (Ω ≡ …).
+    """
+
+    angles: tuple = ("alpha", "beta", "gamma")
+    aliases: tuple = ("phi", "theta", "psi")
+    defined: dict = field(default_factory=dict)
+    open: bool = False
+    """Open to the text's own names: an atom outside the vocabulary is a symbol of the text's
+    (`Generic`) instead of an unknown symbol."""
+    generic: dict = field(default_factory=dict)
+    """The text's own symbols met so far: Generic → the atom (without its text)."""
+    omega_names: bool = False
+    """Ω, Ω₁, Ω₂ are the lecture's frequencies (once the text defines Ω with ≡); otherwise a text's
+    Ω is its own symbol."""
+    names: object = None
+    """The text's own names (`derive.lecture.names.Names`): they win over the usual spellings."""
+    axial: int = 2
+    """The body axis of the third turn (2 for z-y-z and z-x-z): the angular momentum's component
+    on it is the third angle's momentum, I₃ω̃₃ = p_γ."""
+    names_off: bool = False
+    """Read as if the text had named nothing (a second opinion on a learned name)."""
+    readings: dict = field(default_factory=dict)
+    """A second reading of an ambiguous name, tried when the first makes a formula fail:
+    ``{"L": LMAG}`` reads a plain L as the angular momentum's magnitude."""
+
+    def angle_index(self, base: str) -> int | None:
+        for names in (self.angles, self.aliases):
+            if base in names:
+                return names.index(base)
+        return None
+
+    def resolve(self, a: Atom, env: dict | None = None):
+        """The SymPy object an atom stands for (``env``: a summation index → 1, 2 or 3)."""
+        env = env or {}
+        mine = self.defined.get(a.with_(text=""))
+        if mine is not None:
+            return mine
+        if self.names is not None and not self.names_off:
+            value = self.names.value(a, env, self)      # the text's own names win
+            if value is not None:
+                return value
+        sub = a.sub
+        if sub and len(sub) == 1 and sub in env:
+            sub = str(env[sub])
+        k = self.angle_index(a.base + ("_" + a.sub if a.sub else ""))
+        if k is not None and not a.hat and not a.tilde and not a.bold and not a.primes:
+            if a.dots == 0:
+                return ANGLES[k]
+            return (RATES if a.dots == 1 else ACCELS)[k]
+        b = a.base
+        if b == "omega":
+            if a.bold and not sub:
+                return OMEGA_VEC if a.dots == 0 else None
+            if sub in ("1", "2", "3") and not a.bold:
+                i = int(sub) - 1
+                if a.dots == 0:
+                    return W[i]
+                if a.dots == 1:
+                    return WD[i]
+            if sub == "0" and not self.open:
+                raise Unknown(f"unknown symbol {a.text}")
+        if b == "e" and (a.hat or a.bold):
+            if sub in ("1", "2", "3"):
+                i = int(sub) - 1
+                if a.sup == "0":
+                    return INERTIAL[i]
+                if a.primes == 1:
+                    return PRIMED[i]
+                if a.primes == 0:
+                    return BASIS[i]
+        if b == "I" and not a.bold and not a.dots and not a.primes:
+            if len(sub) == 2 and sub[0] == sub[1] and sub[0] in env:
+                sub = str(env[sub[0]])            # Σ_i I_ii ω_i²: the principal moments
+            if sub in ("1", "2", "3", "11", "22", "33"):
+                return (I1, I2, I3)[int(sub[0]) - 1]
+        if b == "M" and not sub and not a.dots:
+            return Mass
+        if b in ("g", "l") and not sub and not a.dots and not a.bold:
+            return {"g": g, "l": l}[b]
+        if b == "p" and not a.dots and not a.bold:
+            k = self.angle_index(sub)
+            if k == 0:
+                return p_alpha
+            if k == 2:
+                return p_gamma
+        if not a.bold and not a.dots and not a.primes and (b + sub) in self.readings:
+            return self.readings[b + sub]
+        if b == "Omega" and not a.dots and not a.bold and self.omega_names:
+            if sub == "":
+                return Omega
+            if sub in ("1", "2"):
+                return (Omega1, Omega2)[int(sub) - 1]
+        if b == "T" and not sub and not a.dots and not a.primes:
+            return T_
+        if b == "L" and not sub and not a.dots and not a.primes:
+            return LVEC if a.bold else LAGRANGIAN
+        if b == "L" and sub in ("1", "2", "3") and self.open and not self.names_off and not (a.bold or a.dots or a.primes or a.hat or a.tilde):
+            return (I1, I2, I3)[int(sub) - 1] * W[int(sub) - 1]      # Lᵢ: the components of 𝐋 = Iᵢω̃ᵢ
+        if b == "E" and not sub and not a.dots:
+            return {0: ENERGY, 1: EPRIME}.get(a.primes)
+        if b == "V" and sub == "eff":
+            return VEFF
+        if not a.dots and not a.sub and not a.bold and not a.hat and not a.tilde and b in FREE_NAMES:
+            return sp.Symbol(FREE_NAMES[b], real=True)
+        plain = not a.dots and not a.bold and not a.hat and not a.tilde and not a.primes
+        if plain and not a.sub and b == "pi":
+            return sp.pi
+        if plain and not a.sub and b == "e":
+            return sp.E
+        if b == "T" and sub in ("rot", "kin", "k", "R", "rotation") and not a.dots and not a.primes:
+            return T_
+        if self.open and not a.hat:
+            return self._generic(a)
+        return None
+
+    def _generic(self, a: Atom):
+        """The text's own symbol for an atom: one per spelling of base, decorations and scripts."""
+        key = a.with_(text="")
+        for sym, atom in self.generic.items():
+            if atom == key:
+                return sym
+        name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + (f"_{a.sub}" if a.sub else "") \
+            + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
+        sym = Generic(name, real=True)
+        self.generic[sym] = key
+        return sym
+
+    def undotted(self, sym):
+        """For the text's symbol Ẋ: (X, number of dots), or None."""
+        atom = self.generic.get(sym)
+        if atom is None or not atom.dots:
+            return None
+        return self._generic(atom.with_(dots=0)), atom.dots
+
+
+def p_alpha_sym():
+    """p for the first angle (the derivation's ``p_alpha``)."""
+    return p_alpha
+
+
+def p_gamma_sym():
+    """p for the third angle (the derivation's ``p_gamma``)."""
+    return p_gamma
+
+
+def latex_atoms(latex: str, vocab: Vocabulary) -> set:
+    """The derivation symbols the atoms of a formula stand for (unknown atoms left out)."""
+    out = set()
+    try:
+        toks = scan(latex)
+    except NotRead:
+        return out
+    for tok in toks:
+        if tok.kind == "atom":
+            try:
+                v = vocab.resolve(tok.value)
+            except NotRead:
+                continue
+            if isinstance(v, sp.Symbol):
+                out.add(v)
+    return out
