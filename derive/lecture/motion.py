@@ -384,8 +384,9 @@ class Motion:
     # -- solutions ω̃ᵢ(t) = f(t)
     def _solution_row(self, parsed):
         """``ω̃ᵢ = f(t)`` or the angular momentum's component ``Lᵢ = Iᵢω̃ᵢ = f(t)``: (ω̃ᵢ, f, the factor
-        Iᵢ or 1), or None. The right side depends on t and not on ω̃ (else it is an equation)."""
-        if len(parsed.members) != 2 or parsed.relations[0] != "=":
+        Iᵢ or 1), or None. The right side depends on t and not on ω̃ (else it is an equation); ``≈``
+        is a solution of the linearised equations the text wrote before it, checked as ``=``."""
+        if len(parsed.members) != 2 or parsed.relations[0] not in ("=", "≈"):
             return None
         m0, value = parsed.members[0], parsed.members[1].value
         if isinstance(value, sp.MatrixBase) or isinstance(m0.value, sp.MatrixBase):
