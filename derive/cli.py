@@ -317,7 +317,7 @@ def version() -> str:
 
 
 class _Version(argparse.Action):
-    """--version, looked up only when asked for (importlib.metadata costs a warm run ~10 ms)."""
+    """--version, looked up only when asked for (importlib.metadata is slow to import on a warm run)."""
 
     def __call__(self, parser, namespace, values, option_string=None):
         print(f"{parser.prog} {version()}")  # stdout, like argparse's own version action
