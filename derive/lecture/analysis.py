@@ -383,9 +383,12 @@ def analyze(scene) -> Analysis:
         from derive.lecture import own_body
 
         return own_body.analyze(sc)
+    # The proofs load SymPy; importing them here keeps `import derive.lecture.analysis` light.
+    from derive.symbolic import integral_proofs
+
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
-    proofs = integrable.proofs(cls)
+    proofs = integral_proofs.proofs(cls)
     try:
         eqs = _equilibria(sc, cls)
         for e in eqs:
