@@ -3,7 +3,8 @@
 Takes: a model key (formulation, symmetry, effects) or source files. Gives: the model's
 description (:mod:`~derive.runtime.catalogue`: from ``generated/``, or derived once and cached
 by a content hash), compiled libraries in the self-healing compile cache
-(:mod:`~derive.runtime.cbuild`), and the ctypes kernels that integrate in one C call
+(:mod:`~derive.runtime.cbuild`; the cache folder and what in it is its own:
+:mod:`~derive.runtime.cache`), and the ctypes kernels that integrate in one C call
 (:mod:`~derive.runtime.integrate`, :mod:`~derive.runtime.splitter`).
 
 May import: :mod:`derive.codegen`, :mod:`derive.methods`, :mod:`derive.symbolic`,
