@@ -42,7 +42,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.symbolic import effects as fx
-from derive.symbolic.formulations import REGISTRY as FORMULATIONS, model_name
+from derive.symbolic.formulations import POLE_CLEARANCE, REGISTRY as FORMULATIONS, model_name
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
 from derive.symbolic.stability import euler_rhs
@@ -424,8 +424,6 @@ def routh_checks(effects, sym, E_prime, pa, pg, Veff=None, clearance=None) -> di
     f_bottom = f(−u_c), cos_beta = u₀ and p_α ∓ p_γ; (p_α − p_γ u) stays a square so that
     nothing cancels when p_α ≈ p_γ.
     """
-    from derive.symbolic.formulations import POLE_CLEARANCE
-
     u = sp.Symbol("u", real=True)
     V = fx.potential(effects, ZYZ.matrix(), sym)
     V_u = trig_reduce(V).subs(sp.cos(beta), u)
