@@ -296,15 +296,16 @@ def _sign_ratio(x, scale) -> int:
 @functools.lru_cache(maxsize=None)
 def _lagrangian(symmetric: bool, effects: tuple):
     """(T, V, EulerLagrange) in z-y-z angles for the body and the conservative effects."""
+    from derive.symbolic import effect_sums as sums
     from derive.symbolic import effects as fx
     from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, kinetic_energy
     from derive.symbolic.rotations import ZYZ, trig_reduce
 
     effs = fx.lookup(effects)
-    sym = fx.Symbols(effs)
+    sym = sums.Symbols(effs)
     moments = (I1, I1, I3) if symmetric else (I1, I2, I3)
     T = trig_reduce(kinetic_energy(moments))
-    V = trig_reduce(fx.potential(effs, ZYZ.matrix(), sym))
+    V = trig_reduce(sums.potential(effs, ZYZ.matrix(), sym))
     return T, V, EulerLagrange(T - V)
 
 
