@@ -332,15 +332,15 @@ class _Parser(argparse.ArgumentParser):
 
 
 def _cmd_cache(args) -> int:
-    from derive.runtime import cbuild
+    from derive.runtime import cache
 
-    root = cbuild.cache_dir()
+    root = cache.cache_dir()
     try:
         if args.clear:
-            count, size = cbuild.clear_cache(root)
+            count, size = cache.clear_cache(root)
             print(f"removed {count} entries ({_bytes(size)}) from {root}")
             return EXIT_OK
-        entries = cbuild.cache_entries(root)
+        entries = cache.cache_entries(root)
     except OSError as exc:
         raise SceneError(f"{root}: cache: {exc.strerror or exc}") from None
     where = "DERIVE_CACHE" if os.environ.get("DERIVE_CACHE") else "default; DERIVE_CACHE moves it"

@@ -9,7 +9,7 @@ import pytest
 import derive
 from derive.bench.reference import reference_data
 from derive.methods.status import Status
-from derive.runtime.integrate import STATS_DTYPE, SaveAt, saveat
+from derive.runtime.records import STATS_DTYPE, SaveAt, saveat
 
 _VP = ctypes.c_void_p
 

@@ -14,6 +14,7 @@ import uuid
 import pytest
 
 from derive import cli
+from derive.runtime import cache as cache_folder
 from derive.runtime import cbuild
 from derive.codegen.render import ROOT
 
@@ -27,7 +28,7 @@ def tiny(tag: str) -> dict:
 def cache(tmp_path, monkeypatch):
     root = tmp_path / "cache"
     monkeypatch.setenv("DERIVE_CACHE", str(root))
-    monkeypatch.setattr(cbuild, "_fallback", None)
+    monkeypatch.setattr(cache_folder, "_fallback", None)
     return root
 
 
@@ -55,7 +56,7 @@ def test_a_build_writes_the_library_and_its_checksum(cache):
     side = so.with_name(so.name + ".sha256")
     digest, name = side.read_text().split()
     assert name == so.name and digest == hashlib.sha256(so.read_bytes()).hexdigest()
-    assert [e.status for e in cbuild.cache_entries() if e.name == so.name] == ["ok"]
+    assert [e.status for e in cache_folder.cache_entries() if e.name == so.name] == ["ok"]
     assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no build folder left
 
 
@@ -129,13 +130,13 @@ def test_unwritable_home_falls_back(tmp_path):
 
 def test_fallback_in_process_warns_once(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("DERIVE_CACHE", str(unwritable(tmp_path)))
-    monkeypatch.setattr(cbuild, "_fallback", None)
+    monkeypatch.setattr(cache_folder, "_fallback", None)
     a = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     b = cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert a.tiny_answer() == b.tiny_answer() == 42
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("warning: compile cache")
-    assert len(libraries(cbuild._fallback)) == 2
+    assert len(libraries(cache_folder._fallback)) == 2
 
 
 def test_simulate_with_an_unwritable_cache_runs_with_one_warning(tmp_path):
@@ -155,9 +156,9 @@ def test_stale_build_folders_are_removed(cache):
                             cache / ".heavy_top-k2j4h5g6")
     for d in (stale, fresh, legacy):
         d.mkdir()
-        cbuild.mark(d)  # what the cache removes is what it made: marked folders only
+        cache_folder.mark(d)  # what the cache removes is what it made: marked folders only
         (d / "tiny.c").write_text("int x;\n")
-    old = time.time() - 2 * cbuild.STALE_BUILD_SECONDS
+    old = time.time() - 2 * cache_folder.STALE_BUILD_SECONDS
     for d in (stale, legacy):
         os.utime(d, (old, old))
     foreign = cache / ".not-ours"
@@ -168,7 +169,7 @@ def test_stale_build_folders_are_removed(cache):
     stale_model = models / ".quaternion_sym-0123abcd-4567ef-k2j4h5g6"  # a killed derivation
     for d in (stale_model, model):
         d.mkdir(parents=True)
-        cbuild.mark(d)
+        cache_folder.mark(d)
         os.utime(d, (old, old))
     cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert not stale.exists() and not legacy.exists() and not stale_model.exists()
@@ -187,9 +188,9 @@ def test_cache_command_lists_and_clears(cache):
     (so,) = cache.glob("tiny-*.so")
     (cache / "notes.txt").write_text("the user's own file\n")
     (cache / ".build-tiny-abcd1234").mkdir()
-    cbuild.mark(cache / ".build-tiny-abcd1234")  # the cache's own (marked) folders
+    cache_folder.mark(cache / ".build-tiny-abcd1234")  # the cache's own (marked) folders
     (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c").mkdir(parents=True)
-    cbuild.mark(cache / "models" / "quaternion_sym-0123abcd-4567ef")
+    cache_folder.mark(cache / "models" / "quaternion_sym-0123abcd-4567ef")
     (cache / "models" / "quaternion_sym-0123abcd-4567ef" / "c" / "m.c").write_text("int m;\n")
     rc, out, err = run("cache")
     assert rc == 0 and err == ""

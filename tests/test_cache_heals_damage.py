@@ -163,12 +163,12 @@ def outside_models(tmp_path: Path) -> Path:
     """A folder outside the cache that looks like a derive cache's models/: a killed
     derivation's marked temporary (which the cache would clean in its own models/), a variant
     and a user file."""
-    from derive.runtime import cbuild  # the marker's name and text: what makes a folder the cache's
+    from derive.runtime import cache  # the marker's name and text: what makes a folder the cache's
 
     outside = tmp_path / "elsewhere"
     for name in (".quaternion_sym-0123abcd-4567ef-k2j4h5g6", "quaternion_sym-0123abcd-4567ef"):
         (outside / name).mkdir(parents=True)
-        (outside / name / cbuild.MARKER).write_text(cbuild.MARKER_TEXT)
+        (outside / name / cache.MARKER).write_text(cache.MARKER_TEXT)
         old = time.time() - DAY
         os.utime(outside / name, (old, old))
     (outside / "notes.txt").write_text("the user's own file\n")

@@ -11,6 +11,7 @@ import sympy as sp
 
 import derive
 from derive.symbolic import integrable as ig
+from derive.symbolic import integral_proofs as ip
 from derive.sim.scene import load_scene
 
 TOL = ig.TOLERANCE
@@ -98,21 +99,21 @@ def test_classify_scene():
 
 @pytest.mark.parametrize("name", ["euler", "lagrange", "kovalevskaya"])
 def test_extra_integral_proved(name):
-    proof = ig.prove(name)
+    proof = ip.prove(name)
     assert proof.derivative == 0 and proof.holds
 
 
 @pytest.mark.parametrize("name", ["energy", "p_alpha", "n_squared"])
 def test_classical_integrals_of_any_body(name):
-    assert ig.prove("general", name).holds
+    assert ip.prove("general", name).holds
 
 
 def test_goryachev_chaplygin_on_the_area_level():
-    proof = ig.prove("goryachev-chaplygin")
+    proof = ip.prove("goryachev-chaplygin")
     assert proof.remainder == 0 and proof.holds
     assert proof.derivative != 0  # conserved only where L.n = 0
-    _, p, L, n = ig._symbols()
-    rel = ig.relations("goryachev-chaplygin")
+    _, p, L, n = ip._symbols()
+    rel = ip.relations("goryachev-chaplygin")
     I3, M, g, cx, cy = p["I3"], p["M"], p["g"], p["cx"], p["cy"]
     w1, w2 = (L[0] / p["I1"]).subs(rel), (L[1] / p["I2"]).subs(rel)
     # the module docstring's dG/dt = -(M g / (4 I3^2)) (cx w2 - cy w1) (L.n)
@@ -122,14 +123,14 @@ def test_goryachev_chaplygin_on_the_area_level():
 def test_controls_fail():
     """The proofs can fail: each integral under another body's relations is not conserved."""
     k = ig.EXTRA["kovalevskaya"].formula
-    _, p, _, _ = ig._symbols()
+    _, p, _, _ = ip._symbols()
     I3 = p["I3"]
     not_kovalevskaya = {p["I1"]: 3 * I3, p["I2"]: 3 * I3, p["cz"]: 0}
-    assert ig.time_derivative(k, not_kovalevskaya) != 0
-    assert not ig.prove("kovalevskaya", None, "goryachev-chaplygin").holds
-    assert not ig.prove("lagrange", None, "kovalevskaya").holds
-    assert not ig.prove("euler", None, "lagrange").holds
-    gc = ig.prove("goryachev-chaplygin", None, "kovalevskaya")
+    assert ip.time_derivative(k, not_kovalevskaya) != 0
+    assert not ip.prove("kovalevskaya", None, "goryachev-chaplygin").holds
+    assert not ip.prove("lagrange", None, "kovalevskaya").holds
+    assert not ip.prove("euler", None, "lagrange").holds
+    gc = ip.prove("goryachev-chaplygin", None, "kovalevskaya")
     assert gc.remainder != 0
 
 
@@ -259,9 +260,9 @@ def test_spherical_body_is_lagrange_about_r_c():
     c = ig.classify_values(1.0, 1.0, 1.0, M=1.0, g=9.81, com=(0.1, 0.2, 0.3))
     assert c.case == "lagrange" and c.extra is ig.SPHERE
     assert ig.classify_values(1.0, 1.0, 1.0 + 1e-6, M=1.0, g=9.81, com=(0.1, 0.2, 0.3)).case == "general"
-    assert ig.prove("lagrange", "L_dot_rc").holds
-    assert not ig.prove("lagrange", "L_dot_rc", "general").holds  # control: distinct moments
-    assert not ig.prove("lagrange", "L_dot_rc", "kovalevskaya").holds
+    assert ip.prove("lagrange", "L_dot_rc").holds
+    assert not ip.prove("lagrange", "L_dot_rc", "general").holds  # control: distinct moments
+    assert not ip.prove("lagrange", "L_dot_rc", "kovalevskaya").holds
     sc = load_scene(scene_dict((1.0, 1.0, 1.0), (0.1, 0.2, 0.3), t_end=5.0, rtol=1e-12, atol=1e-14,
                                formulation="euler-poisson"))
     ((name, f),) = ig.integrals_for(sc)
@@ -283,10 +284,10 @@ def test_symmetry_axis_1_or_2_by_cyclic_relabelling(I, com, expected, axes, name
     body's own equations with the relations rewritten in its axes."""
     c = ig.classify_values(*I, M=1.0, g=9.81, com=com)
     assert (c.case, tuple(c.axes), c.extra.name) == (expected, axes, name)
-    assert ig.proofs(c)[name].holds
+    assert ip.proofs(c)[name].holds
     # control: the formula in the unrelabelled axes is not conserved by this body
     canonical = c.canonical_extra
-    dF = ig.time_derivative(canonical.formula, ig._relations(ig.extra_relations(c)))
+    dF = ip.time_derivative(canonical.formula, ip._relations(ig.extra_relations(c)))
     assert dF != 0
 
 

@@ -22,7 +22,7 @@ from derive.bench.reference import reference_data
 from derive.codegen.render import GENERATED
 from derive.methods.status import Status
 from derive.runtime.cbuild import compile_library
-from derive.runtime.integrate import STATS_DTYPE
+from derive.runtime.records import STATS_DTYPE
 
 MODELS = sorted(json.loads(f.read_text())["name"] for f in (GENERATED / "models").glob("*.json"))
 DP = ctypes.POINTER(ctypes.c_double)

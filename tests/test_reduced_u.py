@@ -20,7 +20,8 @@ from derive.bench.runner import axis_error, exact_axis
 from derive.errors import IntegrationError
 from derive.reference import exact
 from derive.runtime import catalogue
-from derive.runtime.integrate import Kernel, ModelKernel
+from derive.runtime.integrate import ModelKernel
+from derive.runtime.kernel import Kernel
 from derive.sim.auto import formulation as auto_formulation
 from derive.sim.inputs import inputs_of, params_of
 from derive.sim.scene import load_scene

@@ -18,7 +18,7 @@ import pytest
 
 from derive.runtime.cbuild import (SANITIZE_FLAGS, STRICT_FLAGS, check_compiles, compile_library)
 from derive.errors import CompilerError, IntegrationError
-from derive.runtime.integrate import Kernel
+from derive.runtime.kernel import Kernel
 from derive.methods.registry import METHODS
 from derive.codegen.solvers import render_solvers
 from derive.methods.status import Status

@@ -361,7 +361,7 @@ def test_simulate_drivers_and_interrupt_in_the_kernel_translation_unit(splitters
     import ctypes
 
     from derive.methods.status import Status
-    from derive.runtime.integrate import SaveAt, saveat
+    from derive.runtime.records import SaveAt, saveat
 
     sp = splitters(False, ("gravity_general",))
     lib, P = sp.lib, sp.model.name

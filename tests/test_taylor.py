@@ -37,7 +37,8 @@ from derive.methods.taylor import METHODS as TAYLOR
 from derive.reference import exact
 from derive.runtime import catalogue
 from derive.runtime.cbuild import STRICT_FLAGS, compile_library
-from derive.runtime.integrate import STATS_DTYPE, ModelKernel, SaveAt, saveat
+from derive.runtime.integrate import ModelKernel
+from derive.runtime.records import STATS_DTYPE, SaveAt, saveat
 from derive.sim.scene import METHODS as SCENE_METHODS
 from derive.symbolic.models import Model, build
 

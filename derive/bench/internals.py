@@ -32,7 +32,7 @@ from derive.symbolic import models
 
 @dataclass
 class KernelCase:
-    kernel: object          # derive.runtime.integrate.Kernel
+    kernel: object          # derive.runtime.kernel.Kernel
     formulation: str
     y0: np.ndarray
     p: np.ndarray

@@ -14,7 +14,7 @@ import sympy as sp
 from sympy.printing.c import C99CodePrinter
 from sympy.printing.numpy import NumPyPrinter
 
-from derive.symbolic.models import Model
+from derive.symbolic.models import INPUTS, Model
 
 
 def _small_power(printer, expr) -> str | None:
@@ -299,8 +299,6 @@ class KernelSpec:
         it, io = pr(self.init)
         ny = len(m.states)
         ct, co = pr(self.checks) if self.checks is not None else ([], [])
-        from derive.symbolic.models import INPUTS
-
         used = {k: (b.uses(m.states), b.uses(m.params)) for k, b in
                 (("rhs", self.rhs), ("jac", self.jac), ("obs", self.obs))}
         if self.checks is not None:

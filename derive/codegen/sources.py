@@ -15,10 +15,10 @@ from derive.codegen.kernelspec import STEP_COST_PER_STATE, KernelSpec, operation
 from derive.codegen.splitting import render_splitting
 from derive.codegen.taylor import NoTaylorRule, jet_weight, render_taylor
 from derive.methods.splitting import applicable as splitting_applicable
-from derive.symbolic.models import Model
+from derive.symbolic.models import CATALOGUE_KEYS, Model
 from derive.codegen.render import render
 from derive.codegen.solvers import render_solvers
-from derive.symbolic.formulations import INPUT_NAMES, POLE_CLEARANCE, REGISTRY as FORMULATIONS
+from derive.symbolic.formulations import INPUT_NAMES, POLE_CLEARANCE, REGISTRY as FORMULATIONS, model_name
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, c_code
 
 
@@ -89,9 +89,6 @@ def model_sources(model: Model) -> dict[str, str]:
 def shipped_keys() -> dict[str, tuple]:
     """{model name: key} of every model written to generated/: the contract's catalogue, then
     the models the example scenes run (`catalogue.SHIPPED`)."""
-    from derive.symbolic.formulations import model_name
-    from derive.symbolic.models import CATALOGUE_KEYS
-
     keys = dict(CATALOGUE_KEYS)
     for key in SHIPPED:
         keys.setdefault(model_name(*key), key)

@@ -24,7 +24,7 @@ import numpy as np
 
 from derive.codegen.render import render
 from derive.errors import SceneError
-from derive.methods.registry import method as compiled_method
+from derive.methods.registry import METHODS, method as compiled_method
 from derive.runtime.catalogue import Description
 from derive.sim import plan, simulation
 from derive.sim.scene import Scene, load_scene
@@ -123,8 +123,6 @@ class Bundle:
         """The C file of the method's own family beside the solvers (``<name>_<family>.{h,c}``):
         "splitting" for a Lie–Poisson splitting, "taylor" for a Taylor method, None for the
         Runge–Kutta family (in ``<name>_solvers.c``) — as the kernel build includes them."""
-        from derive.methods.registry import METHODS
-
         if self.method in METHODS:
             return None
         return "taylor" if compiled_method(self.method).driver == "taylor" else "splitting"

@@ -296,15 +296,16 @@ def _sign_ratio(x, scale) -> int:
 @functools.lru_cache(maxsize=None)
 def _lagrangian(symmetric: bool, effects: tuple):
     """(T, V, EulerLagrange) in z-y-z angles for the body and the conservative effects."""
+    from derive.symbolic import effect_sums as sums
     from derive.symbolic import effects as fx
     from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, kinetic_energy
     from derive.symbolic.rotations import ZYZ, trig_reduce
 
     effs = fx.lookup(effects)
-    sym = fx.Symbols(effs)
+    sym = sums.Symbols(effs)
     moments = (I1, I1, I3) if symmetric else (I1, I2, I3)
     T = trig_reduce(kinetic_energy(moments))
-    V = trig_reduce(fx.potential(effs, ZYZ.matrix(), sym))
+    V = trig_reduce(sums.potential(effs, ZYZ.matrix(), sym))
     return T, V, EulerLagrange(T - V)
 
 
@@ -383,9 +384,12 @@ def analyze(scene) -> Analysis:
         from derive.lecture import own_body
 
         return own_body.analyze(sc)
+    # The proofs load SymPy; importing them here keeps `import derive.lecture.analysis` light.
+    from derive.symbolic import integral_proofs
+
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
-    proofs = integrable.proofs(cls)
+    proofs = integral_proofs.proofs(cls)
     try:
         eqs = _equilibria(sc, cls)
         for e in eqs:

@@ -216,6 +216,7 @@ def _ep(sc):
 
 def _energies(sc):
     """(T, V) in z-y-z angles: T of the body, V the sum over the conservative effects."""
+    from derive.symbolic import effect_sums as sums
     from derive.symbolic import effects as fx
     from derive.symbolic.lagrangian import I1, I2, I3, kinetic_energy
     from derive.symbolic.rotations import ZYZ, trig_reduce
@@ -223,7 +224,7 @@ def _energies(sc):
     effs = fx.lookup(sc.effects)
     moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
     T = trig_reduce(kinetic_energy(moments))
-    V = trig_reduce(fx.potential(effs, ZYZ.matrix(), fx.Symbols(effs)))
+    V = trig_reduce(sums.potential(effs, ZYZ.matrix(), sums.Symbols(effs)))
     return T, V
 
 
@@ -235,17 +236,18 @@ def _potential_functions(sc):
     """(V(R), grad(R), H(R)) as NumPy functions of the 3×3 matrix R at the scene's numbers:
     grad_k = ∂/∂ε_k V(R exp([ε]ₓ)) and H_jk = ∂²/∂ε_j∂ε_k at ε = 0 (body-frame rotations)."""
     sp = _sp()
+    from derive.symbolic import effect_sums as sums
     from derive.symbolic import effects as fx
     from derive.symbolic.rotations import skew
 
     effs = fx.lookup(sc.effects)
-    sym = fx.Symbols(effs)
+    sym = sums.Symbols(effs)
     r = sp.Matrix(3, 3, sp.symbols("r0:9", real=True))
     eps = sp.Matrix(sp.symbols("eps0:3", real=True))
     S = skew(eps)
     values = sc.param_values()
     at = {sym(p.name): values[p.name] for e in effs for p in e.params}
-    Vp = fx.potential(effs, r * (sp.eye(3) + S + S * S / 2), sym).subs(at)
+    Vp = sums.potential(effs, r * (sp.eye(3) + S + S * S / 2), sym).subs(at)
     zero = {e: 0 for e in eps}
     grad = [sp.diff(Vp, e).subs(zero) for e in eps]
     H = [[sp.diff(Vp, a, b).subs(zero) for b in eps] for a in eps]

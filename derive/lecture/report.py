@@ -18,6 +18,7 @@ import sympy as sp
 
 from derive.lecture import claims as lecture
 from derive.lecture import verify
+from derive.symbolic import integral_proofs
 
 INERTIA_SOLIDS = ("cylinder", "sphere", "cone", "box")
 """Solids of `inertia.SOLIDS` whose tensors derivation.md shows (plus the thin disk)."""
@@ -187,9 +188,7 @@ def derivation() -> str:
 
 
 def _integrable_section() -> list[str]:
-    from derive.symbolic import integrable
-
-    return ["## 5. Integrable cases and their integrals", ""] + integrable.markdown() + [""]
+    return ["## 5. Integrable cases and their integrals", ""] + integral_proofs.markdown() + [""]
 
 
 @functools.cache

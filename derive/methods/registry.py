@@ -25,12 +25,15 @@ is, for each method ``m`` and model prefix ``M``::
 from __future__ import annotations
 
 import functools
+from types import MappingProxyType
 from dataclasses import dataclass
 from typing import NamedTuple
 
 from derive.symbolic.effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
 from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
+from derive.methods import splitting
 from derive.methods.taylor import METHODS as TAYLOR
+from derive.symbolic.formulations import UNIVERSAL
 
 # Each driver's extra C parameters, in order: (C type, name). Used by the header template and by
 # derive.runtime.integrate for the ctypes signatures, so the two cannot disagree.
@@ -113,11 +116,7 @@ def compiled_methods() -> dict:
 
 @functools.lru_cache(maxsize=1)
 def _compiled():
-    from types import MappingProxyType
-
-    from derive.methods.splitting import METHODS as SPLITTING
-
-    return MappingProxyType({**METHODS, **SPLITTING, **TAYLOR})  # fixed at import: merged once
+    return MappingProxyType({**METHODS, **splitting.METHODS, **TAYLOR})  # fixed at import: merged once
 
 
 def method(name: str):
@@ -168,9 +167,6 @@ def method_reason(name: str, formulation: str, effects) -> str | None:
 def _method_reason(name: str, formulation: str, effects: tuple, version: int) -> str | None:
     """``method_reason``, cached per effects-registry version (the answer depends on the
     effects' declarations)."""
-    from derive.methods import splitting
-    from derive.symbolic.formulations import UNIVERSAL
-
     if name not in splitting.METHODS:
         return None
     from types import SimpleNamespace

@@ -4,10 +4,10 @@ A model is identified by its key (formulation, symmetric body, effects). Its gen
 
 * in ``generated/`` (committed, written by ``derive generate``) for the models the package ships
   (``models.CATALOGUE_KEYS`` and every model an example scene runs: ``codegen.sources.SHIPPED``), or
-* in the compile cache (``cbuild.cache_dir() / "models"``), derived once with SymPy the first time
+* in the compile cache (``cache.cache_dir() / "models"``), derived once with SymPy the first time
   a scene needs it, in a folder keyed by a content hash of the package's derivation sources and
   templates, so a change to the derivation invalidates it. The folder carries the cache's marker
-  (``cbuild.MARKER``) and a ``SHA256SUMS`` of every file in it; one that does not verify (a
+  (``cache.MARKER``) and a ``SHA256SUMS`` of every file in it; one that does not verify (a
   file missing, truncated or changed) is derived again, once, with a one-line note.
 
 Either way a :class:`Description` (``models/<name>.json``: states, parameters, outputs, sizes,
@@ -21,14 +21,16 @@ import hashlib
 import json
 import os
 import re
+import shutil
 import stat
 import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from derive.codegen.render import RUNTIME_FILES, TAYLOR_INC
+from derive.codegen.render import GENERATED, RUNTIME_FILES, TAYLOR_INC, TEMPLATES
 from derive.errors import note
+from derive.runtime.cache import is_marked, make_room, mark, models_dir, remove_marked, writable_cache_dir
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import model_name
 
@@ -83,8 +85,6 @@ class Description:
 
 
 def _generated() -> Path:
-    from derive.codegen.render import GENERATED
-
     return GENERATED
 
 
@@ -122,8 +122,7 @@ def _load(key) -> Description:
     desc, problem = _cached(folder, name)
     if desc is not None:
         return desc
-    from derive.runtime.cbuild import writable_cache_dir  # an unwritable cache: a private one, warned
-
+    # an unwritable cache: a private one, warned
     writable = _cache_folder(name, key, writable_cache_dir(), writing=True)
     if writable != folder:
         folder = writable
@@ -233,18 +232,14 @@ _absent: set = set()
 
 
 def _cache_folder(name: str, key, root: Path | None = None, writing: bool = False) -> Path:
-    from derive.runtime.cbuild import models_dir  # never through a `models` that is not a real folder
-
     variant = f"{name}-{_derivation_hash()[:16]}-{_effects_fingerprint(key[2])}"
-    return models_dir(root, writing) / variant
+    return models_dir(root, writing) / variant  # never through a `models` that is not a real folder
 
 
 @functools.lru_cache(maxsize=1)
 def _derivation_hash() -> str:
     """SHA-256 of what a derivation depends on: the package's modules, the templates and the
     effects registry's declarations (a test may register a toy effect)."""
-    from derive.codegen.render import TEMPLATES
-
     h = hashlib.sha256()
     package = Path(__file__).resolve().parents[1]
     for base, pattern in ((package, "*.py"), (TEMPLATES, "*.j2")):
@@ -279,11 +274,9 @@ def derive_model(key, folder: Path) -> None:
     """Derive the model (SymPy), render its files and write them with its description, the
     cache's marker and a ``SHA256SUMS`` of them into ``folder`` (atomically: a reader sees no
     folder or the whole one). A damaged folder already there is replaced: removed if the cache
-    made it (marked), else moved aside (``cbuild.make_room``)."""
-    import shutil
-
+    made it (marked), else moved aside (``cache.make_room``)."""
+    # SymPy and the code generators load only when a model is derived: a cached one never needs them.
     from derive.symbolic import models
-    from derive.runtime.cbuild import is_marked, make_room, mark, remove_marked
     from derive.codegen.sources import model_sources
 
     model = models.build(*key)

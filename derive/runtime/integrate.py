@@ -1,359 +1,28 @@
-"""Integrate a compiled model: the Python face of the generated C solvers.
+"""One C call per simulation: a (model, method) library built from a generated model's files.
 
-A :class:`Kernel` wraps one loaded library holding a model (``<prefix>_rhs``, ``<prefix>_jac``,
-the state and parameter names) and its rendered solvers: one driver per method,
-``<prefix>_run_<method>``, told what to save by a ``derive_saveat`` (:class:`SaveAt`). Python
-enters C once per trajectory (``solve``) or once per batch (``solve_batch``); the stepping,
-step-size control and dense output all run in C.
+A :class:`ModelKernel` is a compiled (model, method) pair: its run driver ``<name>_run_<method>``
+runs the init map, the whole integration and the output map in one call, told what to save by a
+``derive_saveat`` (:class:`~derive.runtime.records.SaveAt`). A :class:`BoundRun` binds one
+trajectory's call to its arrays once, so a repeated call only enters C. The generic kernel over
+any model's sources is :class:`derive.runtime.kernel.Kernel`.
 
-Methods are the registry :data:`derive.methods.registry.METHODS` (``dop853``, ``rk4``, ``gauss4``,
-``gauss6``, ``dop853_fixed``); how each is called follows from its driver's parameter list
-(:data:`derive.methods.registry.DRIVER_PARAMS`), so a new method needs no code here.
-
-Failures come back from C as a status code (:data:`derive.codegen.solvers.STATUS`) plus where they
-happened; :func:`failure_message` turns them into the one line that
-:class:`~derive.errors.IntegrationError` carries, naming the state by its model name.
+Failures come back from C as a status code (:data:`derive.codegen.solvers.STATUS`) in the
+statistics record (:data:`~derive.runtime.records.STATS_DTYPE`).
 """
 from __future__ import annotations
 
 import ctypes
-import re
+import threading
 import time
-from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.errors import IntegrationError
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
-from derive.codegen.solvers import render_solvers
 from derive.methods.status import Status
-from derive.methods.status import message as _status_message
-
-DEFAULT_MAX_STEPS = 1_000_000
-DEFAULT_NEWTON_TOL = 1e-15
-DEFAULT_NEWTON_MAXITER = 20
-
-# derive_stats of <prefix>_solvers.h, as a NumPy record (aligned = the C layout), so a batch's
-# statistics are one array.
-_LONG = np.dtype(f"i{ctypes.sizeof(ctypes.c_long)}")
-STATS_DTYPE = np.dtype([
-    ("nfev", _LONG), ("njev", _LONG), ("nstep", _LONG), ("naccept", _LONG),
-    ("nreject", _LONG), ("nlu", _LONG), ("t_fail", np.float64), ("fail_index", np.intc),
-    ("status", np.intc), ("h_fail", np.float64), ("rhs_code", np.intc)], align=True)
-
-_STATS_DOUBLES = STATS_DTYPE.itemsize // 8
-assert STATS_DTYPE.itemsize % 8 == 0 and STATS_DTYPE.alignment <= 8  # a record fits a double slice
-
-_C_TYPES = {"double": ctypes.c_double, "long": ctypes.c_long, "int": ctypes.c_int}
-
-
-class SaveAt(ctypes.Structure):
-    """``derive_saveat`` of ``derive_runtime.h``: what a run driver ``<prefix>_run_<method>``
-    saves. ``t_out``/``n_out``: the output times; ``final``: 1 for the last time alone;
-    ``outputs``: 1 when the inputs go through the init map and the checked outputs are written
-    (0: the inputs are start states, the states alone are written); ``pole_check``: 0, 1 or 2;
-    ``lanes``: 1 to run a Taylor method's trajectories several at once where compiled."""
-
-    _fields_ = [("t_out", ctypes.c_void_p), ("n_out", ctypes.c_long), ("final", ctypes.c_int),
-                ("outputs", ctypes.c_int), ("pole_check", ctypes.c_int), ("lanes", ctypes.c_int)]
-
-
-def saveat(t: np.ndarray, *, final: bool = False, outputs: bool = True, pole_check: int = 0,
-           lanes: bool = False) -> SaveAt:
-    """A :class:`SaveAt` over the C-contiguous float64 times ``t`` (the caller keeps ``t``)."""
-    return SaveAt(t.ctypes.data, t.shape[0], int(final), int(outputs), int(pole_check), int(lanes))
-_F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
-_STATS = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
-
-
-def _fmt(x: float) -> str:
-    return f"{x:.8g}"
-
-
-def failure_message(stats, state_names=(), max_steps: int | None = None) -> str:
-    """The one-line description of a failed solve (``stats``: a STATS_DTYPE record)."""
-    return _status_message(stats, state_names, max_steps)
-
-
-@dataclass(frozen=True)
-class Solution:
-    """One trajectory: ``y[k]`` is the state at ``t[k]``; rows after a failure are NaN."""
-
-    t: np.ndarray
-    y: np.ndarray
-    method: str
-    status: int
-    nfev: int
-    njev: int
-    nstep: int
-    naccept: int
-    nreject: int
-    nlu: int
-    message: str = "success"
-    t_fail: float | None = None
-    fail_index: int | None = None
-
-    @property
-    def success(self) -> bool:
-        return self.status == 0
-
-
-@dataclass(frozen=True)
-class BatchSolution:
-    """``n_batch`` trajectories on the same output times: ``y[b, k]`` is trajectory ``b`` at
-    ``t[k]``; the statistics are arrays over ``b`` (``stats`` is the raw record array)."""
-
-    t: np.ndarray
-    y: np.ndarray
-    method: str
-    stats: np.ndarray = field(repr=False)
-    messages: tuple[str, ...] = ()
-
-    @property
-    def status(self) -> np.ndarray:
-        return self.stats["status"].copy()
-
-    @property
-    def nfev(self) -> np.ndarray:
-        return self.stats["nfev"].copy()
-
-    def __len__(self) -> int:
-        return len(self.y)
-
-    def __getitem__(self, b: int) -> Solution:
-        return _solution(self.t, self.y[b], self.method, self.stats[b], self.messages[b])
-
-
-def _solution(t, y, method, st, message) -> Solution:
-    status = int(st["status"])
-    return Solution(
-        t=t, y=y, method=method, status=status,
-        nfev=int(st["nfev"]), njev=int(st["njev"]), nstep=int(st["nstep"]),
-        naccept=int(st["naccept"]), nreject=int(st["nreject"]), nlu=int(st["nlu"]),
-        message=message,
-        t_fail=float(st["t_fail"]) if status else None,
-        fail_index=int(st["fail_index"]) if status == 2 else None)
-
-
-def _header_ny(prefix: str, sources: dict[str, str]) -> int:
-    header = sources.get(f"{prefix}.h")
-    if header is None:
-        raise ValueError(f"sources lack the model header {prefix}.h")
-    m = re.search(rf"^\s*#\s*define\s+{re.escape(prefix)}_NY\s+\(?\s*(\d+)\s*\)?", header, re.M)
-    if not m:
-        raise ValueError(f"{prefix}.h does not #define {prefix}_NY as an integer literal")
-    return int(m.group(1))
-
-
-class Kernel:
-    """A compiled model and its solvers.
-
-    ``prefix``, ``ny``, ``np``, ``state_names``, ``param_names`` come from the library itself
-    (``<prefix>_dims`` and the model's name arrays); ``methods`` lists the solvers it holds.
-    """
-
-    def __init__(self, lib: ctypes.CDLL, prefix: str):
-        self.lib = lib
-        self.prefix = prefix
-        dims = (ctypes.c_int * 4).in_dll(lib, f"{prefix}_dims")
-        self.ny, self.np = int(dims[0]), int(dims[1])
-        self.state_names = self._names("state_names", self.ny)
-        self.param_names = self._names("param_names", self.np)
-        self._rhs = self._bind(f"{prefix}_rhs", [ctypes.c_double, _F64, _F64, _F64])
-        self._jac = self._bind(f"{prefix}_jac", [ctypes.c_double, _F64, _F64, _F64])
-        self.methods = tuple(m for m in METHODS if hasattr(lib, f"{prefix}_run_{m}"))
-        self._solvers: dict[str, tuple] = {}
-
-    def __repr__(self) -> str:
-        return (f"Kernel({self.prefix!r}, y=({', '.join(self.state_names)}), "
-                f"p=({', '.join(self.param_names)}))")
-
-    # ---------------------------------------------------------------------------------------
-    @classmethod
-    def from_sources(cls, prefix: str, sources: dict[str, str], methods: list[str] | None = None,
-                     flags=DEFAULT_FLAGS) -> "Kernel":
-        """Render the solvers for the model in ``sources`` (``<prefix>.h``, ``<prefix>.c``, ...),
-        compile everything as one translation unit (so the compiler can inline the rhs into the
-        stepper) and load it. Compiled once per machine, loaded once per process."""
-        ny = _header_ny(prefix, sources)
-        files = dict(sources)
-        files.update(render_solvers(prefix, ny, methods))
-        unity = f"{prefix}_unity.c"
-        model_c = [f"{prefix}.c"] + sorted(n for n in sources
-                                           if n.endswith(".c") and n != f"{prefix}.c")
-        files[unity] = "".join(f'#include "{n}"\n' for n in [*model_c, f"{prefix}_solvers.c"])
-        return cls(compile_library(prefix, files, unity, flags), prefix)
-
-    # ---------------------------------------------------------------------------------------
-    def _names(self, what: str, n: int) -> tuple[str, ...]:
-        if n == 0:
-            return ()
-        arr = (ctypes.c_char_p * n).in_dll(self.lib, f"{self.prefix}_{what}")
-        return tuple(x.decode() for x in arr)
-
-    def _bind(self, symbol: str, argtypes):
-        fn = getattr(self.lib, symbol)
-        fn.argtypes = argtypes
-        fn.restype = ctypes.c_int
-        return fn
-
-    def _solver(self, method: str):
-        if method not in self._solvers:
-            if method not in METHODS:
-                raise ValueError(f"unknown method {method!r}; known: {', '.join(METHODS)}")
-            if method not in self.methods:
-                raise ValueError(f"method {method!r} was not compiled into {self.prefix}")
-            extra = [_C_TYPES[ty] for ty, _ in METHODS[method].params]
-            self._solvers[method] = self._bind(
-                f"{self.prefix}_run_{method}",
-                [ctypes.POINTER(SaveAt), ctypes.c_long, _F64, _F64, *extra, _F64, ctypes.c_void_p,
-                 _STATS])
-        return self._solvers[method]
-
-    def _vector(self, x, n: int, what: str) -> np.ndarray:
-        a = np.ascontiguousarray(x, dtype=np.float64)
-        if a.shape != (n,):
-            raise ValueError(f"{what} must have shape ({n},), got {a.shape}")
-        return a
-
-    def _params(self, p) -> np.ndarray:
-        a = self._vector(p, self.np, "p")
-        if not np.all(np.isfinite(a)):
-            raise ValueError("p must be finite")
-        return a
-
-    # ---------------------------------------------------------------------------------------
-    def rhs(self, t: float, y, p) -> np.ndarray:
-        """f(t, y; p) as an array; raises IntegrationError if the model rejects the state."""
-        y = self._vector(y, self.ny, "y")
-        out = np.empty(self.ny)
-        rc = self._rhs(float(t), y, self._vector(p, self.np, "p"), out)
-        if rc:
-            raise IntegrationError(
-                f"t = {_fmt(t)}: state outside the model's domain (rhs returned {rc})")
-        return out
-
-    def jac(self, t: float, y, p) -> np.ndarray:
-        """df_i/dy_j as an (ny, ny) array."""
-        y = self._vector(y, self.ny, "y")
-        out = np.empty(self.ny * self.ny)
-        rc = self._jac(float(t), y, self._vector(p, self.np, "p"), out)
-        if rc:
-            raise IntegrationError(
-                f"t = {_fmt(t)}: state outside the model's domain (jac returned {rc})")
-        return out.reshape(self.ny, self.ny)
-
-    # ---------------------------------------------------------------------------------------
-    def _settings(self, method, t_out, rtol, atol, h, max_steps, newton_tol, newton_maxiter):
-        """Validate the common arguments; returns (t_out array, driver arguments)."""
-        m = METHODS.get(method)
-        if m is None:
-            raise ValueError(f"unknown method {method!r}; known: {', '.join(METHODS)}")
-        t = np.ascontiguousarray(t_out, dtype=np.float64)
-        if t.ndim != 1 or t.size < 1:
-            raise ValueError("t_out must be a non-empty 1-D array")
-        if not np.all(np.isfinite(t)):
-            raise ValueError("t_out must be finite")
-        if t.size > 1 and not np.all(np.diff(t) > 0):
-            raise ValueError("t_out must be strictly increasing")
-        if h is not None and not (np.isfinite(h) and h > 0):
-            raise ValueError(f"h must be finite and > 0, got {h}")
-        values = {}
-        if m.driver == "adaptive":
-            if not (np.isfinite(rtol) and np.isfinite(atol) and rtol >= 0 and atol >= 0
-                    and (rtol > 0 or atol > 0)):
-                raise ValueError(f"rtol and atol must be finite, >= 0 and not both 0, "
-                                 f"got rtol={rtol}, atol={atol}")
-            if int(max_steps) < 1:
-                raise ValueError("max_steps must be >= 1")
-            values = {"rtol": float(rtol), "atol": float(atol),
-                      "h0": 0.0 if h is None else float(h), "max_steps": int(max_steps)}
-        else:
-            if h is None:
-                raise ValueError(f"method {method!r} is fixed-step: pass the step size h")
-            if t.size > 1 and np.max(np.diff(t)) / h >= 1e15:
-                raise ValueError(f"h = {h} is too small for the output spacing")
-            values = {"h": float(h)}
-            if m.driver == "implicit":
-                if not (np.isfinite(newton_tol) and newton_tol > 0):
-                    raise ValueError("newton_tol must be finite and > 0")
-                if int(newton_maxiter) < 1:
-                    raise ValueError("newton_maxiter must be >= 1")
-                values.update(newton_tol=float(newton_tol), newton_maxiter=int(newton_maxiter))
-        return t, [values[name] for _, name in m.params]
-
-    def solve(self, method: str, y0, p, t_out, rtol: float = 1e-10, atol: float = 1e-12,
-              h: float | None = None, max_steps: int = DEFAULT_MAX_STEPS,
-              newton_tol: float = DEFAULT_NEWTON_TOL,
-              newton_maxiter: int = DEFAULT_NEWTON_MAXITER, check: bool = True) -> Solution:
-        """Integrate from ``t_out[0]`` (state ``y0``) and return the state at every ``t_out``.
-
-        ``dop853`` uses ``rtol``/``atol`` (``h``: initial step, default automatic) and
-        ``max_steps``; fixed-step methods need ``h`` (each output interval is split into
-        ``ceil(dt/h)`` equal steps); Gauss methods also use ``newton_tol``/``newton_maxiter``.
-        With ``check`` (default) a failure raises :class:`IntegrationError`; otherwise it is
-        reported in ``Solution.status``/``message``.
-        """
-        t, extra = self._settings(method, t_out, rtol, atol, h, max_steps, newton_tol,
-                                  newton_maxiter)
-        y0 = self._vector(y0, self.ny, "y0")
-        if not np.all(np.isfinite(y0)):
-            raise ValueError("y0 must be finite")
-        p = self._params(p)
-        y = np.full((t.size, self.ny), np.nan)
-        st = np.zeros(1, dtype=STATS_DTYPE)
-        self._solver(method)(saveat(t, outputs=False), 1, y0, p, *extra, y, None, st)
-        st = st[0]
-        message = "success"
-        if st["status"]:
-            message = failure_message(st, self.state_names, max_steps)
-            if check:
-                raise IntegrationError(message)
-        return _solution(t, y, method, st, message)
-
-    def solve_batch(self, method: str, y0s, ps, t_out, rtol: float = 1e-10,
-                    atol: float = 1e-12, h: float | None = None,
-                    max_steps: int = DEFAULT_MAX_STEPS, newton_tol: float = DEFAULT_NEWTON_TOL,
-                    newton_maxiter: int = DEFAULT_NEWTON_MAXITER,
-                    check: bool = True) -> BatchSolution:
-        """Integrate ``len(y0s)`` trajectories (one C call). ``y0s``: (n_batch, ny); ``ps``:
-        (n_batch, np), or (np,) shared by all. Each trajectory is bit-for-bit what ``solve``
-        gives. With ``check``, the first failure raises ``IntegrationError``
-        (``trajectory <b>: <message>``)."""
-        t, extra = self._settings(method, t_out, rtol, atol, h, max_steps, newton_tol,
-                                  newton_maxiter)
-        y0s = np.ascontiguousarray(y0s, dtype=np.float64)
-        if y0s.ndim != 2 or y0s.shape[1] != self.ny:
-            raise ValueError(f"y0s must have shape (n_batch, {self.ny}), got {y0s.shape}")
-        if not np.all(np.isfinite(y0s)):
-            raise ValueError("y0s must be finite")
-        n = y0s.shape[0]
-        ps = np.asarray(ps, dtype=np.float64)
-        if ps.ndim == 1:
-            ps = np.broadcast_to(ps, (n, ps.shape[0]))
-        ps = np.ascontiguousarray(ps)
-        if ps.shape != (n, self.np):
-            raise ValueError(f"ps must have shape ({n}, {self.np}) or ({self.np},), "
-                             f"got {ps.shape}")
-        if not np.all(np.isfinite(ps)):
-            raise ValueError("ps must be finite")
-        y = np.full((n, t.size, self.ny), np.nan)
-        st = np.zeros(max(n, 1), dtype=STATS_DTYPE)
-        self._solver(method)(saveat(t, outputs=False), n, y0s, ps, *extra, y, None, st)
-        st = st[:n]
-        messages = tuple(failure_message(s, self.state_names, max_steps) if s["status"]
-                         else "success" for s in st)
-        if check:
-            for b, s in enumerate(st):
-                if s["status"]:
-                    raise IntegrationError(f"trajectory {b}: {messages[b]}")
-        return BatchSolution(t=t, y=y, method=method, stats=st, messages=messages)
-
-
-# ---------------------------------------------------------------------------------------------
-# One C call per simulation: a (model, method) library built from a generated model's files.
+from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
+from derive.runtime.records import (C_TYPES, DEFAULT_NEWTON_MAXITER, DEFAULT_NEWTON_TOL,
+                                    STATS_DOUBLES, STATS_DTYPE, saveat)
 
 def _ptr(a: np.ndarray) -> int:
     # ndarray.ctypes.data: __array_interface__ would build a structured dtype's description
@@ -364,8 +33,6 @@ def _ptr(a: np.ndarray) -> int:
 def _interruptible(lib, prefix: str):
     """Run a C call with SIGINT handled by the library (the loops poll its flag) when called
     from the main thread; a call from another thread relies on ``derive_sigint_request``."""
-    import threading
-
     guard = lib.derive_sigint_guard
     return guard if threading.current_thread() is threading.main_thread() else None
 
@@ -394,7 +61,7 @@ class ModelKernel:
         self.has_lanes = self.has_final = False
         if method is not None:
             spec = compiled_method(method)
-            extra = [_C_TYPES[ty] for ty, _ in spec.params]
+            extra = [C_TYPES[ty] for ty, _ in spec.params]
             self._arg_names = tuple(name for _, name in spec.params)
             self.adaptive = spec.driver in TOLERANCE_DRIVERS  # steps by rtol/atol, not by h
             # the final-only saves: the methods that step by the tolerance alone (a fixed step's
@@ -677,7 +344,7 @@ class BoundRun:
         size_out, size_y = kernel.nout * n, n * kernel.ny
         self._k_y, self._k_p = size_out, size_out + size_y
         self._k_st = self._k_p + kernel.np
-        self._size = self._k_st + _STATS_DOUBLES
+        self._size = self._k_st + STATS_DOUBLES
         self._shape_out, self._shape_y = (kernel.nout, n), (n, kernel.ny)
         # The driver without argtypes, given ctypes instances: nothing is converted per call
         # (the instances of the arguments that do not change are made once per kernel).

@@ -14,7 +14,8 @@ from derive.codegen.sources import model_sources
 from derive.codegen.splitting import _omega_state, render_splitting
 from derive.methods.splitting import METHODS
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-from derive.runtime.integrate import STATS_DTYPE, Kernel, SaveAt, saveat
+from derive.runtime.kernel import Kernel
+from derive.runtime.records import STATS_DTYPE, SaveAt, saveat
 
 
 def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], str]:
@@ -30,7 +31,7 @@ def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], st
 
 class Splitter:
     """A compiled Euler–Poisson model with its splitting solvers (``solve``) and, as
-    ``kernel`` (:class:`derive.runtime.integrate.Kernel`), the registered ones (dop853, gauss4, …)."""
+    ``kernel`` (:class:`derive.runtime.kernel.Kernel`), the registered ones (dop853, gauss4, …)."""
 
     def __init__(self, model, flags=None):
         files, unity = sources(model)

@@ -14,7 +14,8 @@ import numpy as np
 from derive.codegen.sources import model_sources
 from derive.errors import IntegrationError
 from derive.runtime import catalogue
-from derive.runtime.integrate import Kernel, ModelKernel
+from derive.runtime.integrate import ModelKernel
+from derive.runtime.kernel import Kernel
 from derive.sim import auto
 from derive.sim.inputs import inputs_of, params_of
 from derive.sim.scene import Scene

@@ -43,7 +43,9 @@ import math
 
 import numpy as np
 
+from derive.sim.scene_types import FIXED_STEP_METHODS
 from derive.symbolic import effects
+from derive.symbolic.terms import symmetries
 
 #: Relative spread of β below which the β panel shows β − β(0).
 FLAT_BETA = 1e-6
@@ -208,8 +210,6 @@ def _title(res) -> str:
     name = display_title(sc.title if sc is not None and sc.title else "") or res.model or "simulation"
     parts = [f"formulation {res.formulation}", f"method {res.method}"]
     if sc is not None:
-        from derive.sim.scene import FIXED_STEP_METHODS
-
         s = sc.simulate
         if res.method in FIXED_STEP_METHODS:
             parts.append(f"h = {s.h:g} s" if s.h is not None else "default step h")
@@ -319,8 +319,6 @@ def _user_symmetries(res) -> dict | None:
 
 @functools.lru_cache(maxsize=32)
 def _symmetries(effect_names, symmetric, labels) -> dict:
-    from derive.symbolic.terms import symmetries
-
     return symmetries(effect_names, symmetric, dict(labels))
 
 

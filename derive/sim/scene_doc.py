@@ -13,6 +13,7 @@ from derive.symbolic import formulations
 from derive.symbolic import integrable
 from derive.symbolic import terms
 from derive.sim import scene
+from derive.sim.plots import TITLE_DISPLAY_LIMIT  # plots loads matplotlib only when drawing
 from derive.methods import registry as solvers
 
 
@@ -22,8 +23,6 @@ def _row(*cells) -> str:
 
 def scene_format() -> str:
     """The scene file (TOML) reference, from the scene validator's tables and the registries."""
-    from derive.sim.plots import TITLE_DISPLAY_LIMIT  # a constant; plots imports matplotlib only when drawing
-
     d = scene.SIMULATE_DEFAULTS
     out = [
         "# Scene files", "",

@@ -59,7 +59,7 @@ import numpy as np
 
 from derive.errors import SceneError, Terminated
 from derive.runtime import catalogue
-from derive.runtime.integrate import STATS_DTYPE
+from derive.runtime.records import STATS_DTYPE
 from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format
 from derive.sim.result import _explain
 from derive.sweeps import measures as ms

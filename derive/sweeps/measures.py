@@ -79,7 +79,7 @@ from derive.codegen.solvers import _method_context
 from derive.methods.registry import METHODS, measure_window, method as compiled
 from derive.methods.status import Status
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-from derive.runtime.integrate import STATS_DTYPE
+from derive.runtime.records import STATS_DTYPE
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, classify_values, relabel_params
 
 #: The compiled accumulators, in the order of the C enum (rendered from this tuple).

@@ -6,9 +6,11 @@ Lagrangian quantities of the lecture (ω̃ from the Euler angles, T, L, p_α, p_
 stability series and the integrable cases.
 
 Modules: ``rotations`` (z-y-z Euler angles, R, ω̃), ``inertia``, ``lagrangian``, ``stability``,
-``effects`` (the effects registry), ``formulations`` (the formulations registry), ``models``
+``effects`` (the effects registry), ``effect_sums`` (their potentials and torques summed as
+SymPy expressions), ``formulations`` (the formulations registry), ``models``
 (build a model from a formulation, a body symmetry and effects), ``integrable`` (integrable
-cases and their integrals).
+cases and their integrals, classified without SymPy), ``integral_proofs`` (those integrals
+proved along the derived equations).
 
 May import: :mod:`derive.errors` and :mod:`derive.reference` only. Nothing here renders,
 compiles or integrates.

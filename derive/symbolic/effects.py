@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import functools
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, Callable
 
 REQUIRED = object()  # a key without a default
@@ -302,68 +302,3 @@ def _ordered(names: tuple, version: int) -> tuple[str, ...]:
 def lookup(names) -> tuple[Effect, ...]:
     """The effects named, in registry order (:func:`ordered`)."""
     return tuple(REGISTRY[n] for n in ordered(names))
-
-
-# ---------------------------------------------------------------------------------------------
-# symbolic helpers (SymPy imported by the callers that derive)
-
-@dataclass
-class Symbols:
-    """``sym(name)`` for the parameters of a set of effects: one SymPy symbol per name, with the
-    declared assumptions (shared with the derivation core's M, g, l)."""
-
-    effects: tuple
-    _cache: dict = field(default_factory=dict)
-
-    def __call__(self, name: str):
-        if name not in self._cache:
-            import sympy as sp
-
-            from derive.symbolic import lagrangian
-
-            known = {"M": lagrangian.Mass, "g": lagrangian.g, "l": lagrangian.l}
-            if name in known:
-                self._cache[name] = known[name]
-            else:
-                assumptions = next((dict(p.assumptions) for e in self.effects for p in e.params
-                                    if p.name == name), {"real": True})
-                self._cache[name] = sp.Symbol(name, **assumptions)
-        return self._cache[name]
-
-    def params(self) -> tuple:
-        return tuple(self(p.name) for e in self.effects for p in e.params)
-
-
-def potential(effects, R, sym):
-    """ΣV of the conservative effects."""
-    import sympy as sp
-
-    return sum((e.potential(R, sym) for e in effects if e.potential), sp.S.Zero)
-
-
-def torque_from_potential(V: Callable, R, sym):
-    """τ̃_k = −d/dε V(R (1 + ε [ê_k]ₓ), sym) at ε = 0: the torque of a potential, in body axes."""
-    import sympy as sp
-
-    from derive.symbolic.rotations import skew
-
-    eps = sp.Symbol("epsilon")
-    tau = []
-    for k in range(3):
-        e = sp.zeros(3, 1)
-        e[k] = 1
-        tau.append(-sp.diff(V(R * (sp.eye(3) + eps * skew(e)), sym), eps).subs(eps, 0))
-    return sp.Matrix(tau)
-
-
-def torque(effects, omega, R, sym):
-    """Σ τ̃ of every effect: the torques, and the potentials' torques by virtual rotation."""
-    import sympy as sp
-
-    tau = sp.zeros(3, 1)
-    for e in effects:
-        if e.torque:
-            tau += e.torque(omega, R, sym)
-        if e.potential:
-            tau += torque_from_potential(e.potential, R, sym)
-    return tau

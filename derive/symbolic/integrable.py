@@ -35,13 +35,12 @@ that body axis), ``L_dot_rc``, ``kovalevskaya``, ``goryachev_chaplygin``.
 
 Each formula is written once (``Integral.formula``), as arithmetic on three L components, three
 n components and a parameter mapping, so the same code evaluates it on NumPy arrays (the
-simulation's observables, ``integrals_for``) and on SymPy symbols (the proofs, ``prove``).
-SymPy is imported only inside the proofs.
+simulation's observables, ``integrals_for``) and on SymPy symbols (the proofs, which live in
+:mod:`derive.symbolic.integral_proofs`). SymPy is imported only inside ``c_code``.
 """
 from __future__ import annotations
 
 import dataclasses
-import functools
 import math
 import re
 from dataclasses import dataclass
@@ -433,77 +432,16 @@ def integrals_for(scene) -> list[tuple[str, Callable]]:
     return [(integral.name, f)]
 
 
-# ---------------------------------------------------------------------------------------------
-# symbolic proofs along the derived equations
-
-
-@dataclass(frozen=True)
-class Proof:
-    """dF/dt along the Euler–Poisson flow with the case's relations substituted: ``derivative``
-    (simplified; 0 proves F conserved) and, for an integral on a level set ("L.n = 0"),
-    ``derivative = factor · (L·n)`` with ``remainder`` 0."""
-
-    case: str
-    integral: str
-    derivative: object
-    factor: object = None
-    remainder: object = None
-
-    @property
-    def holds(self) -> bool:
-        if self.factor is not None:
-            return self.remainder == 0
-        return self.derivative == 0
-
-
-@functools.lru_cache(maxsize=None)
-def _general_model():
-    from derive.symbolic import models
-    from derive.symbolic.effects import GENERAL_GRAVITY
-    from derive.symbolic.formulations import UNIVERSAL
-
-    return models.build(UNIVERSAL, False, (GENERAL_GRAVITY,))
-
-
-def _symbols():
-    """(model, {name: parameter symbol}, L, n): L as the model gives it — its state (L1, L2, L3)
-    or, when the model's state is the body angular velocity, (I1 ω̃1, I2 ω̃2, I3 ω̃3)."""
-    m = _general_model()
-    p = {s.name: s for s in m.params}
-    first = m.states[0:3]
-    if first[0].name.startswith("omega"):
-        L = tuple(p[f"I{i + 1}"] * first[i] for i in range(3))
-    else:
-        L = tuple(first)
-    n = tuple(m.states[3:6])
-    return m, p, L, n
-
-
-def relations(case: str) -> dict:
-    """The case's relations as a SymPy substitution {symbol: expression}."""
-    return _relations(RELATIONS[case])
-
-
 def extra_relations(c: Classification) -> dict:
     """The relations under which a classified scene's extra integral is proved, in the body's
     axes (e.g. {"I3": "I2", "cy": 0, "cz": 0} for a Lagrange top about body axis 1)."""
     integral = c.canonical_extra
     if integral is None:
         return {}
-    return _relabel_spec(integral.relations or RELATIONS[c.case], c.axes)
+    return relabel_spec(integral.relations or RELATIONS[c.case], c.axes)
 
 
-def proofs(c: Classification) -> dict:
-    """{name: Proof} for every integral of a classified scene (``integrals(c)``)."""
-    out = {i.name: prove("general", i.name) for i in integrals(c) if i.name in
-           (ENERGY.name, AREA.name, CASIMIR.name)}
-    extra = c.canonical_extra
-    if extra is not None:
-        out[c.extra.name] = prove(c.case, extra.name, None, tuple(c.axes))
-    return out
-
-
-def _relabel_spec(spec: dict, axes) -> dict:
+def relabel_spec(spec: dict, axes) -> dict:
     """Relations written in the formulas' axes, rewritten in the body's (e.g. I2 = I1 becomes
     I3 = I2 for axes (1, 2, 0))."""
     if tuple(axes) == RELABELLINGS[0]:
@@ -516,74 +454,6 @@ def _relabel_spec(spec: dict, axes) -> dict:
 
     return {sub(k): sub(v) for k, v in spec.items()}
 
-
-def _relations(spec: dict) -> dict:
-    import sympy as sp
-
-    _, p, _, _ = _symbols()
-    return {p[k]: sp.sympify(v, locals=p) for k, v in spec.items()}
-
-
-def time_derivative(formula: Callable, subs: dict):
-    """dF/dt = Σ ∂F/∂y · ẏ along the derived Euler–Poisson rhs, with ``subs`` applied to the
-    parameters, as one cancelled rational expression."""
-    import sympy as sp
-
-    m, p, L, n = _symbols()
-    F = formula(L, n, p)
-    dF = sum((sp.diff(F, y) * f for y, f in zip(m.states[:6], m.rhs[:6])), sp.S.Zero)
-    return sp.factor(sp.cancel(sp.together(dF.subs(subs))))
-
-
-@functools.lru_cache(maxsize=None)
-def prove(case: str, integral_name: str | None = None, relations_of: str | None = None,
-          axes: tuple = RELABELLINGS[0]) -> Proof:
-    """Prove a case's integral (default: its extra one; names in the formulas' axes) along the
-    derived equations, with the relations of ``relations_of`` (default: the case itself; another
-    case gives a control). With ``axes`` the integral and the relations are first relabelled to
-    the body's axes, and the proof runs on the body's own equations. Integrals on a level set
-    are divided by L·n as polynomials in the state."""
-    import sympy as sp
-
-    integral = (EXTRA[case] if integral_name is None
-                else next(i for i in (ENERGY, AREA, CASIMIR, SPHERE, *EXTRA.values())
-                          if i.name == integral_name))
-    spec = (integral.relations if relations_of is None and integral.relations is not None
-            else RELATIONS[relations_of or case])
-    subs = _relations(_relabel_spec(spec, axes))
-    integral = relabelled(integral, axes)
-    dF = time_derivative(integral.formula, subs)
-    if integral.on is None:
-        return Proof(case, integral.name, dF)
-    m, p, L, n = _symbols()
-    num, den = sp.fraction(sp.together(dF))
-    Ln = sp.expand(_area(L, n, p).subs(subs))
-    q, r = sp.div(sp.expand(num), Ln, *m.states[:6])
-    return Proof(case, integral.name, dF, factor=sp.factor(q / den), remainder=sp.expand(r))
-
-
-def markdown() -> list[str]:
-    """Markdown lines for the derivation report: each case, its extra integral and what the
-    proof along the derived Euler–Poisson equations gave."""
-    import sympy as sp
-
-    out = ["Integrable cases of the heavy body about a fixed point (classified within the relative "
-           f"tolerance {TOLERANCE:g}); each integral's time derivative along the derived "
-           "Euler–Poisson equations, with the case's relations substituted:", ""]
-    names = {sp.Symbol(f"omega{i}", real=True): rf"\tilde\omega_{i}" for i in (1, 2, 3)}
-    names.update({sp.Symbol(c, real=True): f"c_{c[1]}" for c in ("cx", "cy", "cz")})
-    names = {sp.Symbol(f"omega{i}", real=True): rf"\tilde\omega_{i}" for i in (1, 2, 3)}
-    names.update({sp.Symbol(c, real=True): f"c_{c[1]}" for c in ("cx", "cy", "cz")})
-    for case, integral in EXTRA.items():
-        rel = ", ".join(f"{k} = {v}" for k, v in RELATIONS[case].items())
-        proof = prove(case)
-        if proof.factor is not None:
-            result = (rf"$\dot G = {sp.latex(proof.factor, symbol_names=names)}\,(\tilde L\cdot\tilde n)$, zero on "
-                      rf"$\tilde L\cdot\tilde n = 0$")
-        else:
-            result = r"$\dot F = 0$" if proof.holds else rf"$\dot F = {sp.latex(proof.derivative, symbol_names=names)}$"
-        out += [f"- **{case}** ({rel}):", "", f"  $$ {integral.latex} $$", "", f"  {result}.", ""]
-    return out
 
 
 # ---------------------------------------------------------------------------------------------

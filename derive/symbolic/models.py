@@ -41,8 +41,9 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive.symbolic import effect_sums as sums
 from derive.symbolic import effects as fx
-from derive.symbolic.formulations import REGISTRY as FORMULATIONS, model_name
+from derive.symbolic.formulations import POLE_CLEARANCE, REGISTRY as FORMULATIONS, model_name
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
 from derive.symbolic.stability import euler_rhs
@@ -117,7 +118,7 @@ def _moment_params(symmetric: bool):
 def _outputs(R: sp.Matrix, w: sp.Matrix, moments, effects, sym, angles) -> dict:
     """The output map from R (body → inertial), ω̃ and the z-y-z angles."""
     Iw = sp.Matrix([m * wi for m, wi in zip(moments, w)])
-    V = fx.potential(effects, R, sym)
+    V = sums.potential(effects, R, sym)
     return {
         "alpha": angles[0], "beta": angles[1], "gamma": angles[2],
         "omega": tuple(w),
@@ -186,11 +187,11 @@ def euler_free(symmetric: bool = False) -> Model:
 def euler_angles(symmetric: bool, effects=()) -> Model:
     """The z-y-z Euler-angle Lagrangian model, L = T − ΣV, Q from the non-conservative torques."""
     effects = tuple(effects)
-    sym = fx.Symbols(effects)
+    sym = sums.Symbols(effects)
     moments = _moments(symmetric)
     R = ZYZ.matrix()
     w = ZYZ.omega_body_sum()
-    V = fx.potential(effects, R, sym)
+    V = sums.potential(effects, R, sym)
     system = EulerLagrange(trig_reduce(kinetic_energy(moments)) - trig_reduce(V))
     tau = sum((e.torque(w, R, sym) for e in effects if e.torque), sp.zeros(3, 1))
     # Generalised forces from torques by virtual power: Q_j = τ̃ · ∂ω̃/∂q̇_j.
@@ -271,9 +272,9 @@ def reduced(effects=()) -> Model:
     if any(not (e.conservative and e.axisymmetric) for e in effects):
         raise ValueError("the reduced formulation needs conserved p_alpha, p_gamma: "
                          "axisymmetric conservative effects only")
-    sym = fx.Symbols(effects)
+    sym = sums.Symbols(effects)
     R = ZYZ.matrix()
-    V = fx.potential(effects, R, sym)
+    V = sums.potential(effects, R, sym)
     system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
     red = Reduction(system)
     rates = red.rates_from_momenta
@@ -353,9 +354,9 @@ def reduced_u(effects=()) -> Model:
         raise ValueError("the reduced-u formulation needs conserved p_alpha, p_gamma: "
                          "axisymmetric conservative effects only")
     base = reduced(effects)  # the β model: its init map for p_α, p_γ and its Routh derivation
-    sym = fx.Symbols(effects)
+    sym = sums.Symbols(effects)
     R = ZYZ.matrix()
-    V = fx.potential(effects, R, sym)
+    V = sums.potential(effects, R, sym)
     system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
     red = Reduction(system)
     Veff = red.effective_potential
@@ -393,7 +394,7 @@ def reduced_u(effects=()) -> Model:
     if Ep_w.has(wsym[2]):
         raise ValueError("E' depends on the spin: p_gamma is not the momentum of gamma")
     Ep_in = Ep_w.subs(dict(zip(wsym, _omega_in())), simultaneous=True) \
-        + fx.potential(effects, ZYZ.matrix(_A, _B, _G), sym)
+        + sums.potential(effects, ZYZ.matrix(_A, _B, _G), sym)
     init_params = base.init_params + ((params.index(E_prime), Ep_in),)
     bd_in = base.init[3]  # β̇ at the start, given or from ω̃
     ud_in = sp.diff(sp.cos(beta), beta).subs(beta, _B) * bd_in  # u̇ = −sin β β̇
@@ -424,10 +425,8 @@ def routh_checks(effects, sym, E_prime, pa, pg, Veff=None, clearance=None) -> di
     f_bottom = f(−u_c), cos_beta = u₀ and p_α ∓ p_γ; (p_α − p_γ u) stays a square so that
     nothing cancels when p_α ≈ p_γ.
     """
-    from derive.symbolic.formulations import POLE_CLEARANCE
-
     u = sp.Symbol("u", real=True)
-    V = fx.potential(effects, ZYZ.matrix(), sym)
+    V = sums.potential(effects, ZYZ.matrix(), sym)
     V_u = trig_reduce(V).subs(sp.cos(beta), u)
     if V_u.has(beta):
         raise ValueError("a Routh check needs a potential that depends on cos(beta) alone")
@@ -462,7 +461,7 @@ def quaternion_of_angles(a, b, c):
 def quaternion(symmetric: bool, effects=()) -> Model:
     """Unit quaternion + body angular velocity (Newton–Euler): singularity-free."""
     effects = tuple(effects)
-    sym = fx.Symbols(effects)
+    sym = sums.Symbols(effects)
     q = sp.Matrix(sp.symbols("q0:4", real=True))
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     moments = _moments(symmetric)
@@ -477,7 +476,7 @@ def quaternion(symmetric: bool, effects=()) -> Model:
     # q̇ = ½ q ⊗ (0, ω̃): the body-frame angular velocity composes on the right.
     qv = sp.Matrix([q1, q2, q3])
     qdot = [-(qv.T * w)[0, 0] / 2] + list((q0 * w + qv.cross(w)) / 2)
-    tau = fx.torque(effects, w, R, sym)
+    tau = sums.torque(effects, w, R, sym)
     wdot = euler_rhs(moments, w) + sp.Matrix([tau[i] / moments[i] for i in range(3)])
     # β from the quaternion directly: cos β ∝ q0² − q1² − q2² + q3², sin β ∝ 2√((q0²+q3²)(q1²+q2²)),
     # both accurate near the poles.
@@ -501,13 +500,13 @@ def euler_poisson(symmetric: bool, effects=()) -> Model:
     virtual rotation).
     """
     effects = tuple(effects)
-    sym = fx.Symbols(effects)
+    sym = sums.Symbols(effects)
     moments = _moments(symmetric)
     w = sp.Matrix(sp.symbols("omega1:4", real=True))
     n = sp.Matrix(sp.symbols("n1:4", real=True))
     e = sp.Matrix(sp.symbols("e1:4", real=True))
     R = sp.Matrix.vstack(e.T, n.cross(e).T, n.T)
-    tau = fx.torque(effects, w, R, sym)
+    tau = sums.torque(effects, w, R, sym)
     wdot = euler_rhs(moments, w) + sp.Matrix([tau[i] / moments[i] for i in range(3)])
     rhs = tuple(wdot) + tuple(n.cross(w)) + tuple(e.cross(w))
     R0 = ZYZ.matrix(_A, _B, _G)

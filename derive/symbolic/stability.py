@@ -23,7 +23,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, Reduction, g, heavy_symmetric_top, l, p_alpha, p_gamma
-from derive.symbolic.rotations import beta
+from derive.symbolic.rotations import beta, beta_d
 
 omega0 = sp.Symbol("omega_0", real=True)
 delta = sp.symbols("delta1:4", real=True)
@@ -51,8 +51,6 @@ class SleepingTop:
     @functools.cached_property
     def reduced_energy_series(self):
         """E′ ≈ ½ I₁ β̇² + V₀ + k₂ β² (the notes' second-order form)."""
-        from derive.symbolic.rotations import beta_d
-
         return sp.Rational(1, 2) * I1 * beta_d**2 + self.coefficient(0) + self.coefficient(2) * beta**2
 
     @functools.cached_property

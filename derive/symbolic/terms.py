@@ -267,6 +267,7 @@ def symmetries(effect_names, symmetric: bool, labels=None) -> dict:
     """
     import sympy as sp
 
+    from derive.symbolic.effect_sums import Symbols
     from derive.symbolic.rotations import ANGLES, ZYZ, trig_reduce
 
     labels = labels or {}
@@ -277,7 +278,7 @@ def symmetries(effect_names, symmetric: bool, labels=None) -> dict:
     why = {}
     for effect in fx.lookup(effect_names):
         label = labels.get(effect.name, f"effect {effect.name!r}")
-        sym = fx.Symbols((effect,))
+        sym = Symbols((effect,))
         if effect.potential is not None:
             V = effect.potential(R, sym)
             if not _zero(sp.diff(V, ANGLES[0]), trig_reduce):
