@@ -55,6 +55,7 @@ import numpy as np
 
 from derive.symbolic import integrable
 from derive.errors import IntegrationError
+from derive.lecture import own_body
 from derive.sim.scene import load_scene
 
 #: A real part above this fraction of the spectrum's scale counts as growth (round-off in the
@@ -380,8 +381,6 @@ def analyze(scene) -> Analysis:
     if sc.terms:
         # A body with terms written by the user: its own analysis (integrals by symmetry,
         # rest equilibria at the critical points of V).
-        from derive.lecture import own_body
-
         return own_body.analyze(sc)
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)

@@ -50,6 +50,8 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import verify as vf
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
+from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
 PARTICLES = 2
 M_P = sp.symbols(f"m_p1:{PARTICLES + 1}", positive=True)
@@ -104,7 +106,6 @@ class Model:
 
     @property
     def moments(self):
-        from derive.symbolic.lagrangian import I1, I2, I3
         return (I1, I2, I3)
 
     @functools.cached_property
@@ -131,8 +132,6 @@ class Model:
     def dt(self, e):
         """d/dt of an expression in the angles, rates and 𝐋's body components (the
         derivation's chain rule, with 𝐋's components as three more coordinates)."""
-        from derive.symbolic.lagrangian import ACCELS
-        from derive.symbolic.rotations import ANGLES, RATES, time_derivative
         return time_derivative(e, coords=(*ANGLES, *L_B), rates=(*RATES, *LD_B), accels=ACCELS)
 
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:

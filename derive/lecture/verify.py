@@ -34,6 +34,7 @@ import sympy as sp
 
 from derive.lecture import claims as lec
 from derive.lecture.claims import Claim, Correction, Derived
+from derive.symbolic import inertia, lagrangian, rotations, stability
 
 VERDICTS = ("holds", "typo", "fails")
 _SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
@@ -68,10 +69,6 @@ def _linear(vec) -> sp.Expr:
 
 
 def _core():
-    from derive.symbolic import inertia
-    from derive.symbolic import lagrangian
-    from derive.symbolic import rotations
-    from derive.symbolic import stability
     return rotations, inertia, lagrangian, stability
 
 
