@@ -33,7 +33,8 @@ import mpmath
 import sympy as sp
 
 from derive.lecture import claims as lec
-from derive.lecture.claims import Claim, Correction, Derived
+from derive.lecture import slides as sl
+from derive.lecture.slides import Claim, Correction, Derived
 from derive.symbolic import inertia, lagrangian, rotations, stability
 
 VERDICTS = ("holds", "typo", "fails")
@@ -65,7 +66,7 @@ def derived(name: str):
 
 def _linear(vec) -> sp.Expr:
     """A body-component column as a linear form in the basis symbols ê₁, ê₂, ê₃."""
-    return sum((vec[i] * lec.BASIS[i] for i in range(3)), sp.S.Zero)
+    return sum((vec[i] * sl.BASIS[i] for i in range(3)), sp.S.Zero)
 
 
 def _core():
@@ -109,7 +110,7 @@ def _velocity():
     """
     rot = _core()[0]
     R = rot.ZYZ.matrix()
-    return R.applyfunc(rot.time_derivative) * R.T * sp.Matrix(lec.X)
+    return R.applyfunc(rot.time_derivative) * R.T * sp.Matrix(sl.X)
 
 
 @_derives("e2prime")
@@ -140,8 +141,8 @@ def _frames() -> dict:
     """
     rot = _core()[0]
     primed = {sym: _linear(rot.passive("z", rot.gamma) * rot.unit(axis))
-              for sym, axis in zip((lec.e1p, lec.e2p, lec.e3p), "xyz")}
-    return {**primed, lec.e30: derived("e30-linear")}
+              for sym, axis in zip((sl.e1p, sl.e2p, sl.e3p), "xyz")}
+    return {**primed, sl.e30: derived("e30-linear")}
 
 
 # Particles: T, L and I from the velocity field v = ω × r (core `skew`) and `inertia.point_masses`.
@@ -149,8 +150,8 @@ def _frames() -> dict:
 def _t_particles():
     skew = _core()[0].skew
     total = sp.S.Zero
-    for m, r in zip(lec.m_p, lec.r_p):
-        vel = skew(lec.w_vec) * r
+    for m, r in zip(sl.m_p, sl.r_p):
+        vel = skew(sl.w_vec) * r
         total += sp.Rational(1, 2) * m * (vel.T * vel)[0, 0]
     return total
 
@@ -159,14 +160,14 @@ def _t_particles():
 def _l_particles():
     skew = _core()[0].skew
     total = sp.zeros(3, 1)
-    for m, r in zip(lec.m_p, lec.r_p):
-        total += m * skew(r) * (skew(lec.w_vec) * r)
+    for m, r in zip(sl.m_p, sl.r_p):
+        total += m * skew(r) * (skew(sl.w_vec) * r)
     return total
 
 
 @_derives("inertia-particles")
 def _inertia_particles():
-    return _core()[1].point_masses(lec.m_p, lec.r_p)
+    return _core()[1].point_masses(sl.m_p, sl.r_p)
 
 
 @_derives("inertia-body-frame")
@@ -179,12 +180,12 @@ def _inertia_body_frame():
 
 @_derives("T-body")
 def _t_body():
-    return sp.Rational(1, 2) * (lec.w_vec.T * derived("inertia-body-frame") * lec.w_vec)[0, 0]
+    return sp.Rational(1, 2) * (sl.w_vec.T * derived("inertia-body-frame") * sl.w_vec)[0, 0]
 
 
 @_derives("L-body")
 def _l_body():
-    return _linear(derived("inertia-body-frame") * lec.w_vec)
+    return _linear(derived("inertia-body-frame") * sl.w_vec)
 
 
 @_derives("dLdt-transport", shown=("Rᵀ d(R L̃)/dt", r"R^{T}\frac{d}{dt}\left(R\tilde{\mathbf{L}}\right)"))
@@ -193,8 +194,8 @@ def _dldt_transport():
     (left unreduced, like `velocity`)."""
     rot = _core()[0]
     R = rot.ZYZ.matrix()
-    coords, rates = rot.ANGLES + lec.Lb, rot.RATES + lec.Lbd
-    dL = (R * sp.Matrix(lec.Lb)).applyfunc(lambda e: rot.time_derivative(e, coords, rates))
+    coords, rates = rot.ANGLES + sl.Lb, rot.RATES + sl.Lbd
+    dL = (R * sp.Matrix(sl.Lb)).applyfunc(lambda e: rot.time_derivative(e, coords, rates))
     return R.T * dL
 
 
@@ -202,8 +203,8 @@ def _dldt_transport():
 def _euler_residual(moments=None):
     lag, stab = _core()[2], _core()[3]
     moments = moments or (lag.I1, lag.I2, lag.I3)
-    rhs = stab.euler_rhs(moments, lec.w_vec)
-    wd = (lec.wd1, lec.wd2, lec.wd3)
+    rhs = stab.euler_rhs(moments, sl.w_vec)
+    wd = (sl.wd1, sl.wd2, sl.wd3)
     return sp.Matrix([sp.expand(moments[i] * (wd[i] - rhs[i])) for i in range(3)])
 
 
@@ -219,7 +220,7 @@ for _i in range(3):
 @_derives("euler-rhs-symmetric")
 def _euler_rhs_symmetric():
     lag, stab = _core()[2], _core()[3]
-    return stab.euler_rhs((lag.I1, lag.I1, lag.I3), lec.w_vec)[:2, :]
+    return stab.euler_rhs((lag.I1, lag.I1, lag.I3), sl.w_vec)[:2, :]
 
 
 for _i in range(2):
@@ -234,17 +235,17 @@ def _spin(moments=None):
 @_derives("symmetric-frequencies")
 def _symmetric_frequencies():
     lag, stab = _core()[2], _core()[3]
-    return sp.Matrix(_spin((lag.I1, lag.I1, lag.I3)).frequencies).subs(stab.omega0, lec.w3)
+    return sp.Matrix(_spin((lag.I1, lag.I1, lag.I3)).frequencies).subs(stab.omega0, sl.w3)
 
 
 @_derives("asym-Omega1")
 def _asym_omega1():
-    return _spin().frequencies[0].subs(_core()[3].omega0, lec.w3)
+    return _spin().frequencies[0].subs(_core()[3].omega0, sl.w3)
 
 
 @_derives("asym-Omega2")
 def _asym_omega2():
-    return _spin().frequencies[1].subs(_core()[3].omega0, lec.w3)
+    return _spin().frequencies[1].subs(_core()[3].omega0, sl.w3)
 
 
 @_derives("asym-omega3-dot")
@@ -258,8 +259,8 @@ def _asym_omega3_dot():
 def _asym_linear():
     """(ω̇₁, ω̇₂) linearised about ω₃ ê₃, the small components being ω₁, ω₂ themselves."""
     stab = _core()[3]
-    lin = _spin().jacobian * sp.Matrix([lec.w1, lec.w2, stab.delta[2]])
-    return lin[:2, :].subs(stab.omega0, lec.w3)
+    lin = _spin().jacobian * sp.Matrix([sl.w1, sl.w2, stab.delta[2]])
+    return lin[:2, :].subs(stab.omega0, sl.w3)
 
 
 @functools.cache
@@ -269,12 +270,12 @@ def _plane_matrix() -> sp.Matrix:
     J = _spin().jacobian
     Oi, Oj = _spin().frequencies
     assert sp.expand(J[0, 1] + Oi) == 0 and sp.expand(J[1, 0] - Oj) == 0
-    return sp.Matrix([[J[0, 0], -lec.Omega1], [lec.Omega2, J[1, 1]]])
+    return sp.Matrix([[J[0, 0], -sl.Omega1], [sl.Omega2, J[1, 1]]])
 
 
 @_derives("asym-linear-system")
 def _asym_linear_system():
-    return _plane_matrix() * sp.Matrix([lec.w1, lec.w2])
+    return _plane_matrix() * sp.Matrix([sl.w1, sl.w2])
 
 
 @_derives("asym-lambda-squared")
@@ -331,7 +332,7 @@ DERIVED.update({
 @_derives("assignment-20-matrix")
 def _assignment_matrix():
     rot = _core()[0]
-    return rot.ZYZ.matrix(*(lec.ASSIGNMENT_ANGLES[q] for q in rot.ANGLES)).T
+    return rot.ZYZ.matrix(*(sl.ASSIGNMENT_ANGLES[q] for q in rot.ANGLES)).T
 
 
 @_derives("assignment-20-gram")
@@ -342,7 +343,7 @@ def _assignment_gram():
 
 @_derives("assignment-20-V")
 def _assignment_v():
-    return derived("assignment-20-matrix") * sp.Matrix([lec.Vx, lec.Vy, lec.Vz])
+    return derived("assignment-20-matrix") * sp.Matrix([sl.Vx, sl.Vy, sl.Vz])
 
 
 # ---- the comparison ---------------------------------------------------------------------------
@@ -404,7 +405,7 @@ def _substitute(obj, mapping: dict):
 def _prepared(claim: Claim, expr):
     """The claim as meant: slide definitions (``given``) in, frame vectors in the body basis."""
     expr = _substitute(expr, {k: _resolve(v) for k, v in claim.given.items()})
-    frames = set(lec.FRAME_SYMBOLS)
+    frames = set(sl.FRAME_SYMBOLS)
     has_frames = any(getattr(x, "free_symbols", set()) & frames for x in (expr if isinstance(expr, tuple) else (expr,)))
     return _substitute(expr, _frames()) if has_frames else expr
 
@@ -600,11 +601,11 @@ def _symbol_names() -> dict:
     rot = _core()[0]
     names = {qd: rf"\dot{{{sp.latex(q)}}}" for q, qd in zip(rot.ANGLES, rot.RATES)}
     for i in range(3):
-        names[lec.w_vec[i]] = rf"\tilde{{\omega}}_{{{i + 1}}}"
-        names[(lec.wd1, lec.wd2, lec.wd3)[i]] = rf"\dot{{\tilde{{\omega}}}}_{{{i + 1}}}"
-        names[lec.Lb[i]] = rf"\tilde{{L}}_{{{i + 1}}}"
-        names[lec.Lbd[i]] = rf"\dot{{\tilde{{L}}}}_{{{i + 1}}}"
-        names[lec.BASIS[i]] = rf"\hat{{\mathbf{{e}}}}_{{{i + 1}}}"
+        names[sl.w_vec[i]] = rf"\tilde{{\omega}}_{{{i + 1}}}"
+        names[(sl.wd1, sl.wd2, sl.wd3)[i]] = rf"\dot{{\tilde{{\omega}}}}_{{{i + 1}}}"
+        names[sl.Lb[i]] = rf"\tilde{{L}}_{{{i + 1}}}"
+        names[sl.Lbd[i]] = rf"\dot{{\tilde{{L}}}}_{{{i + 1}}}"
+        names[sl.BASIS[i]] = rf"\hat{{\mathbf{{e}}}}_{{{i + 1}}}"
     return names
 
 
