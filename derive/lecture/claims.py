@@ -8,7 +8,7 @@ slides is one `Claim` below, with
   (both are searched for in the notes file by the tests, so they cannot drift);
 * ``latex`` — the LaTeX exactly as in the transcript (one string per display line used);
 * ``expr`` — the same formula as a sympy expression, typed from the slide, slips and all;
-* ``target`` — the name of the derived quantity it claims to equal (see `derive.lecture.verify.DERIVED`);
+* ``target`` — the name of the derived quantity it claims to equal (see `derive.lecture.targets.DERIVED`);
 * ``correction`` — where the slide has an evident slip, the corrected form (and what it equals).
 
 Nothing in the package computes *with* these expressions; `derive.lecture.verify` compares each one with

@@ -17,7 +17,7 @@ import functools
 import sympy as sp
 
 from derive.lecture import claims as lecture
-from derive.lecture import verify
+from derive.lecture import targets, verify
 from derive.symbolic import inertia, integrable
 from derive.symbolic import lagrangian as lg
 from derive.symbolic import rotations as rot
@@ -89,7 +89,7 @@ def _rotations_section() -> list[str]:
     for conv in (rot.ZYZ, rot.ZXZ):
         w_sum = conv.omega_body_sum()
         # The z-y-z skew route is already computed (and cached) by the verification.
-        w_skew = verify.derived("omega-body") if conv is rot.ZYZ else conv.omega_body_skew()
+        w_skew = targets.derived("omega-body") if conv is rot.ZYZ else conv.omega_body_skew()
         # Both routes come out of `trig_reduce`, a canonical form: equal iff identical.
         agree = w_sum == w_skew or (w_sum - w_skew).applyfunc(rot.trig_reduce) == sp.zeros(3, 1)
         out += [f"### {conv.description}", "",

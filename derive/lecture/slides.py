@@ -74,7 +74,7 @@ SLIDE_PASSIVE = slide_Rz(gamma) * slide_Ry(beta) * slide_Rz(alpha)      # compon
 
 @dataclass(frozen=True)
 class Derived:
-    """A reference to a derived quantity (entry ``index`` of it, if given) of `derive.lecture.verify`."""
+    """A reference to a derived quantity (entry ``index`` of it, if given) of `derive.lecture.targets`."""
 
     name: str
     index: int | None = None
