@@ -10,6 +10,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_parser import _Parser
 from derive.lecture.vector_models import (
     AXES, FRAMES, LAW, L_B, M_P, PARTICLES, R_B, R_P, Model, _FreeIndex, _is_tensor, _is_vector,
 )
@@ -22,8 +23,8 @@ class VMember:
     quantity: bool      # a single known quantity (T, 𝐋, Ï, I_ij): member 0 is its definition
 
 
-class _VParser(lx._Parser):
-    """The grammar of `derive.lecture.latex._Parser` with vector values (see the module docstring)."""
+class _VParser(_Parser):
+    """The grammar of `derive.lecture.latex_parser._Parser` with vector values (see the module docstring)."""
 
     def __init__(self, toks, vocab, source, model: Model, plain_l_vector: bool):
         super().__init__(toks, vocab, source)
