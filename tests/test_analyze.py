@@ -13,6 +13,7 @@ import sympy as sp
 
 import derive
 from derive.lecture import analysis
+from derive.lecture import closed_forms
 from derive.symbolic import integrable
 from derive.cli import main
 
@@ -139,7 +140,7 @@ def test_bad_input_exit_2(tmp_path, capsys):
 def test_sleeping_condition_is_the_lectures():
     from derive.symbolic.lagrangian import I1, Mass, g, l
 
-    R = analysis._routh()
+    R = closed_forms._routh()
     assert sp.simplify(R["threshold"] ** 2 - 4 * Mass * g * l * I1) == 0
     e = find(lecture_top(), "sleeping", 3)
     assert e.condition == "p_gamma >= sqrt(4*I1*M*g*l)"
@@ -157,7 +158,7 @@ def test_hanging_series_by_symmetry():
     from derive.symbolic.lagrangian import l, p_alpha
     from derive.symbolic.rotations import beta
 
-    V = analysis._routh()["Veff"]
+    V = closed_forms._routh()["Veff"]
     flipped = V.subs({beta: sp.pi - beta, p_alpha: -p_alpha, l: -l}, simultaneous=True)
     assert sp.simplify(flipped - V) == 0
 

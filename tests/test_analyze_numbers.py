@@ -31,6 +31,7 @@ from scipy.spatial.transform import Rotation
 
 import derive
 from derive.lecture import analysis
+from derive.lecture import closed_forms, equilibria
 from derive.symbolic import integrable
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -50,7 +51,7 @@ def lecture_top(beta: float, gamma_dot: float = 200.0) -> dict:
             "simulate": {"t_end": 1.0, "samples": 101}}
 
 
-def precession(a: analysis.Analysis) -> analysis.Equilibrium:
+def precession(a: analysis.Analysis) -> equilibria.Equilibrium:
     (e,) = [e for e in a.equilibria if e.kind == "steady-precession"]
     return e
 
@@ -369,4 +370,4 @@ def test_v_eff_shown_compact(wavy_cli_json, analysed):
     assert len(sp.Add.make_args(shown)) < len(sp.Add.make_args(expanded))
     assert sp.count_ops(shown) < sp.count_ops(expanded)
     md = analysed["wavy_top"].to_markdown()
-    assert f"V_\\text{{eff}} = {analysis._latex(analysis._routh()['Veff_display'])} $$" in md
+    assert f"V_\\text{{eff}} = {closed_forms._latex(closed_forms._routh()['Veff_display'])} $$" in md

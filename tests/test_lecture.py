@@ -14,7 +14,7 @@ import derive
 from derive.lecture import claims as lecture
 from derive.lecture import report
 from derive.lecture import verify
-from derive.lecture.claims import Correction
+from derive.lecture.slides import Correction
 
 # The course's notes file is not part of the repository: the quotes are checked against it when
 # it is at hand ($DERIVE_NOTES, else the course folder next to the checkout, as on the

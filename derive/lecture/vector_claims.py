@@ -4,7 +4,8 @@ correction), and the torque-free d𝐋/dt = 0 written out in components.
 
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
+:mod:`~derive.lecture.vector_models`),
 :mod:`derive.lecture.comparing`, SymPy.
 """
 from __future__ import annotations
@@ -16,6 +17,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
+from derive.lecture.vector_models import LAW
 
 
 class VectorStatements:
@@ -42,7 +44,7 @@ class VectorStatements:
         kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         for k in range(1, len(first)):
-            if first[k].value is vc.LAW or first[0].value is vc.LAW:
+            if first[k].value is LAW or first[0].value is LAW:
                 self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
                           "starts (Euler's equations are it in body axes), not a consequence of it")
                 continue

@@ -1,0 +1,472 @@
+"""The fast path of the LaTeX reader (`derive.lecture.latex.parse`): a recursive-descent parser
+over the scanner's tokens (sums, products, implicit products, powers, ``\\frac``, ``\\sqrt``,
+functions, sums over body axes, matrices, d𝐋/dt and ∂L/∂q̇) that builds SymPy objects directly,
+the vocabulary resolving every atom.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+
+from derive.lecture.vocabulary import (
+    DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
+    Quantity, Tok, Transposed, Unknown, Vocabulary, W,
+)
+from derive.symbolic.rotations import RATES
+
+
+@dataclass
+class Member:
+    """One side of a relation: its value and what the notes wrote as a quantity's arguments."""
+
+    value: object
+    args: tuple | None = None       # T(α, …), L(β, β̇), ω̃₁(t): the argument symbols written
+    pos: int = 0
+
+
+@dataclass
+class Parsed:
+    """A formula: members m₀ r₁ m₁ r₂ m₂ … (relations between consecutive members)."""
+
+    members: list
+    relations: list
+
+
+class _Parser:
+    def __init__(self, toks: list[Tok], vocab: Vocabulary, source: str):
+        self.toks, self.vocab, self.source, self.i = toks, vocab, source, 0
+        self.args = None
+
+    # helpers
+    def peek(self, k=0):
+        j = self.i + k
+        return self.toks[j] if j < len(self.toks) else None
+
+    def fail(self, why, tok=None):
+        tok = tok or self.peek()
+        col = (tok.pos + 1) if tok else len(self.source) + 1
+        raise NotRead(f"cannot parse at column {col}: {why}", col)
+
+    def take(self, kind, value=None):
+        tok = self.peek()
+        if tok is None or tok.kind != kind or (value is not None and tok.value != value):
+            self.fail(f"expected {value or kind}")
+        self.i += 1
+        return tok
+
+    def at(self, kind, value=None):
+        tok = self.peek()
+        return tok is not None and tok.kind == kind and (value is None or tok.value == value)
+
+    # grammar
+    def chain(self) -> Parsed:
+        members, rels = [self.member()], []
+        while self.at("rel"):
+            rels.append(self.take("rel").value)
+            members.append(self.member())
+        if self.peek() is not None:
+            self.fail(f"unexpected {self.peek().value!r}")
+        return Parsed(members, rels)
+
+    def member(self) -> Member:
+        pos = self.peek().pos if self.peek() else len(self.source)
+        self.args = None
+        if self.peek() is None or self.at("rel"):
+            self.fail("a side of a relation is empty")
+        value = self.expr({})
+        return Member(value, self.args, pos)
+
+    def expr(self, env):
+        sign = 1
+        if self.at("op", "+"):
+            self.i += 1
+        elif self.at("op", "-"):
+            self.i += 1
+            sign = -1
+        total = sign * self.term(env)
+        while self.at("op", "+") or self.at("op", "-") or self.at("cmd", "pm"):
+            op = self.take(self.peek().kind).value
+            if op == "pm":
+                self.fail("± is not a single formula")
+            rhs = self.term(env)
+            total = total + rhs if op == "+" else total - rhs
+        return total
+
+    def _starts_factor(self):
+        tok = self.peek()
+        if tok is None:
+            return False
+        if tok.kind in ("num", "atom", "func", "begin"):
+            return True
+        if tok.kind == "op" and tok.value in "({":
+            return True
+        return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial") | FUNCTIONS.keys()
+
+    def term(self, env):
+        value = self.factor(env)
+        while True:
+            if self.at("cmd", "cdot") or self.at("op", "*"):
+                self.i += 1
+                value = _mul(value, self.factor(env))
+            elif self.at("cmd", "times"):
+                self.fail("vector products (×) are not read")
+            elif self.at("op", "/"):
+                self.i += 1
+                value = value / self.factor(env)
+            elif self._starts_factor():
+                value = _mul(value, self.factor(env))
+            else:
+                return value
+
+    def factor(self, env):
+        if self.at("op", "-"):
+            self.i += 1
+            return -self.factor(env)
+        base = self.primary(env)
+        while self.at("op", "^"):
+            self.i += 1
+            if self._transpose_mark():
+                base = base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+                continue
+            exp = self.group_or_token(env)
+            if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
+                    and not (isinstance(exp, sp.Integer)):
+                self.fail("a power of a matrix other than a whole number")
+            base = base ** exp
+        return base
+
+    def _transpose_mark(self) -> bool:
+        """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""
+        tok = self.peek()
+        if tok is not None and tok.kind == "atom" and tok.value.base in ("T", "top", "intercal") \
+                and not tok.value.sub and not tok.value.dots:
+            self.i += 1
+            return True
+        if tok is not None and tok.kind == "op" and tok.value == "{":
+            inner, close = self.peek(1), self.peek(2)
+            if inner is not None and inner.kind == "atom" and inner.value.base in ("T", "top", "intercal") \
+                    and close is not None and close.kind == "op" and close.value == "}":
+                self.i += 3
+                return True
+        return False
+
+    def group_or_token(self, env):
+        """A superscript or a function argument written without braces: one token or a group."""
+        if self.at("op", "{") or self.at("op", "("):
+            return self.paren(env)
+        tok = self.peek()
+        if tok is not None and tok.kind == "num":
+            self.i += 1
+            # ^23 means ^{2}3 in TeX: one digit only
+            digits = tok.value
+            if len(digits) > 1 and digits.isdigit():
+                self.toks.insert(self.i, Tok("num", digits[1:], tok.pos + 1))
+                return sp.Integer(digits[0])
+            return sp.Rational(digits)
+        if tok is not None and tok.kind == "atom":
+            self.i += 1
+            return self.atom(tok, env)
+        if tok is not None and tok.kind == "op" and tok.value == "-":
+            self.i += 1
+            return -self.group_or_token(env)
+        self.fail("expected an exponent")
+
+    def paren(self, env):
+        open_ = self.take("op").value
+        close = ")" if open_ == "(" else "}"
+        value = self.expr(env)
+        if not self.at("op", close):
+            self.fail("expected a closing bracket")
+        self.i += 1
+        return value
+
+    def atom(self, tok, env):
+        value = self.vocab.resolve(tok.value, env)
+        if value is None:
+            raise Unknown(f"unknown symbol {tok.value.text}", tok.pos + 1)
+        return value
+
+    def primary(self, env):
+        tok = self.peek()
+        if tok is None:
+            self.fail("the formula ends too early")
+        if tok.kind == "num":
+            self.i += 1
+            return sp.Rational(tok.value)
+        if tok.kind == "atom":
+            self.i += 1
+            value = self.atom(tok, env)
+            # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
+            if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
+                return value
+            if self.at("op", "(") and (value in W or value in WD or isinstance(value, Generic)):
+                at = self._at_a_time(tok, value)
+                if at is not None:
+                    return at
+            return value
+        if tok.kind == "op" and tok.value in "({":
+            value = self.paren(env)
+            if self.at("op", "_"):
+                self.fail("a subscript on a bracket")
+            return value
+        if tok.kind == "op" and tok.value == "|":
+            self.i += 1
+            value = self.expr(env)
+            self.take("op", "|")
+            return sp.Abs(value)
+        if tok.kind == "begin":
+            return self.matrix(env)
+        if tok.kind == "cmd":
+            name = tok.value
+            self.i += 1
+            if name in ("frac", "dfrac", "tfrac"):
+                return self.frac(env, tok)
+            if name == "sqrt":
+                return sp.sqrt(self.group_or_token(env))
+            if name in FUNCTIONS:
+                power = None
+                if self.at("op", "^"):
+                    self.i += 1
+                    power = self.group_or_token(env)
+                if self.at("op", "("):
+                    arg = self.paren(env)
+                else:
+                    arg = self.factor_no_implicit(env)
+                value = FUNCTIONS[name](arg)
+                return value ** power if power is not None else value
+            if name == "sum":
+                return self.sum(env, tok)
+            self.fail(f"'\\{name}' here")
+        self.fail(f"unexpected {tok.value!r}")
+
+    def _at_a_time(self, tok, value):
+        """ω_y(0), u(t_1): a function of time at a time given by a number or a symbol other than
+        t — the text's own symbol for that value (ω_y(0) is an initial value, not ω_y × 0)."""
+        inner = self.peek(1)
+        close = self.peek(2)
+        if inner is None or close is None or close.kind != "op" or close.value != ")":
+            return None
+        if inner.kind == "num":
+            label = inner.value
+        elif inner.kind == "atom" and inner.value.base != "t" or (inner.kind == "atom" and inner.value.sub):
+            label = inner.value.text
+        else:
+            return None
+        self.i += 3
+        if not self.vocab.open:
+            raise Unknown(f"unknown symbol {tok.value.text}({label})", tok.pos + 1)
+        return self.vocab._generic(tok.value.with_(sup=f"({label})"))
+
+    def factor_no_implicit(self, env):
+        """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ))."""
+        return self.primary(env)
+
+    def _argument_list(self) -> bool:
+        """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""
+        j, args = self.i + 1, []
+        while j < len(self.toks):
+            tok = self.toks[j]
+            if tok.kind != "atom":
+                return False
+            try:
+                args.append(self.vocab.resolve(tok.value))
+            except NotRead:
+                return False
+            if args[-1] is None:
+                return False
+            nxt = self.toks[j + 1] if j + 1 < len(self.toks) else None
+            if nxt is not None and nxt.kind == "op" and nxt.value == ",":
+                j += 2
+                continue
+            if nxt is not None and nxt.kind == "op" and nxt.value == ")":
+                self.i = j + 2
+                self.args = tuple(args)
+                return True
+            return False
+        return False
+
+    def frac(self, env, tok):
+        # d𝐋/dt and ∂L/∂q̇ first: they are quantities, not quotients.
+        num_start = self.i
+        special = self._derivative()
+        if special is not None:
+            return special
+        self.i = num_start
+        num = self.braced(env)
+        den = self.braced(env)
+        return num / den
+
+    def braced(self, env):
+        if self.at("op", "{"):
+            return self.paren(env)
+        return self.group_or_token(env)
+
+    def _derivative(self):
+        """\\frac{d X}{dt} or \\frac{\\partial L}{\\partial \\dot q}: the quantity, or None."""
+        toks = self.toks
+        i = self.i
+
+        def braced_tokens(k):
+            if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
+                return None, k
+            depth = 0
+            for j in range(k, len(toks)):
+                if toks[j].kind == "op" and toks[j].value == "{":
+                    depth += 1
+                elif toks[j].kind == "op" and toks[j].value == "}":
+                    depth -= 1
+                    if depth == 0:
+                        return toks[k + 1:j], j + 1
+            return None, k
+
+        num, k = braced_tokens(i)
+        if num is None:
+            return None
+        den, k2 = braced_tokens(k)
+        if den is None:
+            return None
+        is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
+        dt = len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" \
+            and not den[1].value.sub
+        if dt and len(num) == 1 and is_d(num[0]):
+            self.i = k2                                   # d/dt of what follows
+            return self._evaluated(DT(self.term({})))
+        if dt and len(num) == 2 and is_d(num[0]) and num[1].kind == "atom":
+            what = self.vocab.resolve(num[1].value)
+            if what is LVEC:
+                self.i = k2
+                return DLDT
+            if what is None or num[1].value.bold:
+                raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
+                              num[1].pos + 1)
+            self.i = k2
+            return self._evaluated(DT(what))
+        is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
+        if len(den) == 2 and is_partial(den[0]) and den[1].kind == "atom":
+            var = self.vocab.resolve(den[1].value)
+            if len(num) == 1 and is_partial(num[0]) and isinstance(var, sp.Symbol):
+                self.i = k2                               # ∂/∂v of what follows
+                return sp.Derivative(self.term({}), var, evaluate=False)
+            if len(num) == 2 and is_partial(num[0]) and num[1].kind == "atom" and isinstance(var, sp.Symbol):
+                top = self.vocab.resolve(num[1].value)
+                if top is LAGRANGIAN and var in RATES:
+                    self.i = k2
+                    return MOMENTUM[RATES.index(var)]
+                if isinstance(top, sp.Symbol) and not num[1].value.bold:
+                    self.i = k2
+                    return sp.Derivative(top, var, evaluate=False)
+            if num and is_partial(num[0]):
+                raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative of this form",
+                              num[0].pos + 1)
+        return None
+
+    def _evaluated(self, value):
+        """A derivative followed by '(': evaluated at a point (φ̇(t + T)), which is not read."""
+        if self.at("op", "("):
+            self.fail("a derivative evaluated at a point")
+        return value
+
+    def sum(self, env, tok):
+        """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""
+        if not self.at("op", "_"):
+            self.fail("a sum without its index", tok)
+        self.i += 1
+        sub_tok = self.peek()
+        if self.at("op", "{"):
+            self.i += 1
+            names = []
+            while not self.at("op", "}"):
+                t_ = self.peek()
+                if t_ is None:
+                    self.fail("unbalanced '{'", tok)
+                if t_.kind == "atom":
+                    names.append(t_.value.base + t_.value.sub)
+                elif t_.kind in ("rel", "num"):
+                    pass
+                self.i += 1
+            self.i += 1
+        else:
+            t_ = self.take("atom")
+            names = [t_.value.base]
+        index = "".join(names)
+        if self.at("op", "^"):
+            self.i += 1
+            self.group_or_token(env)
+        letters = [ch for ch in index if ch in "ijkn"]
+        if not letters or any(ch not in "ijkn" for ch in index.replace("=", "").rstrip("0123456789")):
+            raise NotRead(f"cannot parse at column {sub_tok.pos + 1}: sums over {index!r} (not a body axis) "
+                          "are not read", sub_tok.pos + 1)
+        start = self.i
+        total = sp.S.Zero
+        import itertools
+        for values in itertools.product((1, 2, 3), repeat=len(letters)):
+            self.i = start
+            inner = {**env, **dict(zip(letters, values))}
+            total = total + self.sum_term(inner)
+        return total
+
+    def sum_term(self, env):
+        value = self.factor(env)
+        while (self.at("cmd", "cdot") or self._starts_factor()) and not self.at("cmd", "sum"):
+            if self.at("cmd", "cdot"):
+                self.i += 1
+            value = _mul(value, self.factor(env))
+        return value
+
+
+VECTORS = (LVEC, OMEGA_VEC, DLDT, DLDT_BODY)
+
+
+def _mul(a, b):
+    """a·b or a b of scalars (and of a matrix with scalars); a product that involves a vector
+    quantity twice, or a matrix and a vector quantity, is the vector reader's
+    (`derive.lecture.vectors`): a dot product, or a tensor acting on a vector."""
+    vec = lambda x: hasattr(x, "free_symbols") and bool(set(VECTORS) & x.free_symbols)  # noqa: E731
+    mat = lambda x: isinstance(x, sp.MatrixBase)  # noqa: E731
+    if (vec(a) and vec(b)) or (mat(a) and vec(b)) or (vec(a) and mat(b)):
+        raise NotRead("a product of vectors: read as vectors")
+    return a * b
+
+
+# matrices: rows of entries separated by '&'
+def _matrix(self, env):
+    tok = self.take("begin")
+    env_name = tok.value
+    if env_name not in ("pmatrix", "bmatrix", "matrix", "Bmatrix", "array"):
+        self.fail(f"the environment {env_name!r} inside a formula", tok)
+    if env_name == "array" and self.at("op", "("):
+        depth = 0
+        while True:
+            if self.at("op", "("):
+                depth += 1
+            elif self.at("op", ")"):
+                depth -= 1
+                if depth == 0:
+                    self.i += 1
+                    break
+            self.i += 1
+    rows, row = [], []
+    while True:
+        if self.at("end"):
+            self.i += 1
+            break
+        if self.peek() is None:
+            self.fail("a matrix without its end", tok)
+        row.append(self.expr(env))
+        if self.at("op", "&"):
+            self.i += 1
+        elif self.at("op", "\\\\"):
+            self.i += 1
+            rows.append(row)
+            row = []
+        elif not self.at("end"):
+            self.fail("expected '&', '\\\\' or the end of the matrix")
+    if row:
+        rows.append(row)
+    if len({len(r) for r in rows}) != 1:
+        self.fail("rows of different lengths", tok)
+    return sp.Matrix(rows)
+
+
+_Parser.matrix = _matrix
