@@ -31,8 +31,7 @@ def _same(a, b):
 
 
 def test_repeated_prepared_runs_are_simulate_bit_for_bit():
-    """The first run is guarded and timed; the later ones (the same work, shown short) skip the
-    guard: every one is simulate's result, in arrays of its own."""
+    """Every run is simulate's result, in arrays of its own."""
     data = _short()
     prepared = derive.prepare(data)
     direct = derive.simulate(data)
@@ -81,7 +80,7 @@ def test_the_pole_check_of_a_short_output_is_simulate_s():
 
 
 def test_an_interrupt_stops_a_long_prepared_run():
-    """The first run of a prepared scene is guarded: the kernel's interrupt flag, set from
+    """A prepared run is guarded: the kernel's interrupt flag, set from
     another thread as a SIGINT sets it, stops the loop and surfaces as KeyboardInterrupt."""
     data = reference_data(10.0)
     data["simulate"].update(t_end=1e7, samples=3, rtol=1e-13, atol=1e-15, max_steps=10**12)

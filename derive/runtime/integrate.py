@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import ctypes
 import threading
-import time
 
 import numpy as np
 
@@ -300,10 +299,6 @@ _NFEV_OFFSET = STATS_DTYPE.fields["nfev"][1]
 _INTERRUPTED = int(Status.INTERRUPTED)
 _ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
 
-#: Seconds under which a guarded prepared call counts as short (see :class:`BoundRun`): far
-#: below the half second within which Ctrl-C must stop a run, even on a loaded machine.
-SHORT_CALL = 0.02
-
 
 def _unchecked(lib, symbol: str):
     """A fresh function object of ``symbol`` with no argtypes (int result): called with ctypes
@@ -334,7 +329,7 @@ class BoundRun:
     """
 
     __slots__ = ("kernel", "t", "inputs", "_size", "_shape_out", "_shape_y", "_k_y", "_k_p", "_k_st",
-                 "_fn", "_save", "_head", "_settings", "_guard", "_status", "_nfev", "_short")
+                 "_fn", "_save", "_head", "_settings", "_guard", "_status", "_nfev")
 
     def __init__(self, kernel: "ModelKernel", t: np.ndarray, inputs: np.ndarray, args, pole_check: int = 0):
         t = np.ascontiguousarray(t, dtype=np.float64)
@@ -354,9 +349,8 @@ class BoundRun:
                       ctypes.c_void_p(inputs.ctypes.data))
         self._status = 8 * self._k_st + _STATUS_OFFSET
         self._nfev = 8 * self._k_st + _NFEV_OFFSET
-        self._short = False
 
-    def __call__(self, p: np.ndarray, inputs: np.ndarray | None = None, same: bool = False):
+    def __call__(self, p: np.ndarray, inputs: np.ndarray | None = None):
         """Run once.
 
         Parameters
@@ -366,12 +360,6 @@ class BoundRun:
             derived parameters there).
         inputs : ndarray, optional
             C-contiguous float64 inputs replacing the bound ones for this call.
-        same : bool
-            The caller's word that ``p`` and the inputs are those of every other ``same`` call
-            (a prepared run without new values): the C work is then the same each time, and once
-            a guarded call has shown it short (:data:`SHORT_CALL`), the interrupt guard is left
-            out, as a Ctrl-C during so short a call is raised by Python when it returns.
-
         Returns
         -------
         tuple
@@ -391,11 +379,10 @@ class BoundRun:
         args = (*head, ctypes.c_void_p(base + 8 * k_p), *self._settings,
                 ctypes.c_void_p(base + 8 * self._k_y), ctypes.c_void_p(base),
                 ctypes.c_void_p(base + 8 * k_st))
-        guard = self._guard
-        if guard is None or (same and self._short):
+        guard = self._guard  # Ctrl-C stops the C loop on every call from the main thread
+        if guard is None:
             rc = self._fn(*args)
         else:
-            t0 = time.perf_counter()
             guard(_ON)
             try:
                 rc = self._fn(*args)
@@ -403,8 +390,6 @@ class BoundRun:
                 interrupted = guard(_OFF)
             if interrupted or rc == _INTERRUPTED:
                 raise KeyboardInterrupt
-            if same and time.perf_counter() - t0 < SHORT_CALL:
-                self._short = True
         # a driver returns its record's status; read the record only when it is not OK
         status = ctypes.c_int.from_buffer(buf, self._status).value if rc else 0
         nfev = ctypes.c_long.from_buffer(buf, self._nfev).value

@@ -63,11 +63,10 @@ def run(pl: "plan.Plan", inputs: np.ndarray | None = None, params: dict | None =
     given = inputs is not None and inputs is not pl.inputs
     if given:
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-    same = not (given or params)
     for c in pl.candidates:
         bound = c.bound(t, pl.inputs)
         out, y, p, status, nfev, buf = bound(c.params if not params else _with(c, params),
-                                             inputs if given else None, same=same)
+                                             inputs if given else None)
         if status != _RANGE:
             break
     if status:
