@@ -215,18 +215,20 @@ def _computing(pid) -> bool:
 
 
 def _start_long_sweep(tmp_path, extra=(), computing=True):
-    """``derive sweep`` (two local processes, or ``extra`` flags) on a sweep of about half a
-    minute on two quiet cores (long beside any stall of this process on a loaded machine, so
-    that the signal always finds it running), in a session of its own; returns (process, output path, worker pids) once two
+    """``derive sweep`` (two local processes, or ``extra`` flags) on a sweep of about ten
+    seconds on two quiet cores, in a session of its own; returns (process, output path, worker pids) once two
     workers run. Local workers say so themselves (a line each in a file as they begin a chunk:
     the parent is then past starting them, in its loop over the chunks); Dask workers are
     watched (``computing``: with the library loaded, in their chunks)."""
-    sweep, out = _files(tmp_path, t_end=100.0, n=400_000), tmp_path / "r.parquet"
+    sweep, out = _files(tmp_path, t_end=100.0, n=100_000), tmp_path / "r.parquet"
     ready = tmp_path / "ready"
     case = ["none"] if extra else ["ready", str(ready)]
+    # SIGINT as in a terminal: a test runner started in the background has it ignored, and the
+    # child would inherit that (a shell starts a foreground command with it at its default)
     p = subprocess.Popen([sys.executable, "-c", DRIVER, *case, "sweep", str(sweep), "-o", str(out),
                           *extra], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                         start_new_session=True)
+                         start_new_session=True,
+                         preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
     def running(kid):  # a Dask worker (spawned), or one in its chunk
         with contextlib.suppress(psutil.Error):
