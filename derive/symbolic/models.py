@@ -377,7 +377,7 @@ def reduced_u(effects=()) -> Model:
                                   simultaneous=True).subs(at_u)
     # β = acos(u): of u alone, as accurate as atan2(sb, u) or more (glibc, the u of the pole
     # clearance |u| <= √0.99 against mpmath: within 0.51 ulp vs 1.43 for the atan2 of the
-    # rounded sb) and cheaper (measured: the output map ~49 -> ~43 ns a sample, gcc 12, glibc).
+    # rounded sb) and cheaper (one libm call where atan2 needs the root of 1 - u² first).
     out = _outputs(Ru, w, _moments(True), effects, sym, (alpha, sp.acos(u), gamma))
     # From the state (u, u̇), so that it shows the integration's drift: E = ½ I₁ β̇² + p_γ²/(2I₃)
     # + V_eff, V_eff in partial fractions (the centrifugal term without cancellation).
