@@ -244,11 +244,11 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
 
 
 def _compiles_clean(pairs):
-    from derive.contact.kernel import source
+    from derive.contact.kernel import LOOP, loop_source, source
     from derive.runtime.cbuild import check_compiles
 
     for shape, law in pairs:
-        check_compiles({"c.c": source(shape, law)}, "c.c")
+        check_compiles({"c.c": source(shape, law), LOOP: loop_source()}, "c.c")
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():

@@ -66,7 +66,7 @@ def source(shape: str, law: str) -> str:
     ints = expressions(c)
     monitors = c_block([(f"out[{13 + i}]", e) for i, e in enumerate(ints.values())])
 
-    return render("contact/contact.c.j2", dop=_dop853(), dop_name=DEFAULT_METHOD, prefix=f"contact_{shape}_{law}", shape=shape, law=law,
+    return render("contact/contact.c.j2", prefix=f"contact_{shape}_{law}", shape=shape, law=law,
                   ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS), params=PARAM_NAMES,
                   outputs=OUTPUTS, geometry=geometry, slide=slide, roll=roll, accel=accel,
                   monitors=monitors)
@@ -83,9 +83,24 @@ def _dop853() -> dict:
             "D": [lit(row, 16) for row in t.dense.D]}
 
 
+#: The phase loop's file name: one text that every shape and law's source includes.
+LOOP = "contact_phase_loop.inc"
+
+
+@functools.lru_cache(maxsize=None)
+def loop_source() -> str:
+    """The phase loop (DOP853 on the method registry's tableau, dense output, located events),
+    shared by every contact model: each defines ``NY``, ``NOUT``, ``CONTACT_EVAL`` and
+    ``CONTACT_ADVANCE`` and includes it."""
+    return render("contact/dop853.c.j2", dop=_dop853(), dop_name=DEFAULT_METHOD)
+
+
 def generated_sources() -> dict[str, str]:
-    """Every shape and law's C source, keyed by its path under ``generated/``."""
-    return {f"contact/contact_{shape}_{law}.c": source(shape, law) for shape in SHAPES for law in LAWS}
+    """Every shape and law's C source and the phase loop they share, keyed by their paths under
+    ``generated/``."""
+    out = {f"contact/contact_{shape}_{law}.c": source(shape, law) for shape in SHAPES for law in LAWS}
+    out[f"contact/{LOOP}"] = loop_source()
+    return out
 
 
 def shipped_source(shape: str, law: str) -> str | None:
@@ -100,7 +115,9 @@ class Kernel:
     def __init__(self, shape: str, law: str):
         name = f"contact_{shape}_{law}"
         text = shipped_source(shape, law) or source(shape, law)
-        lib = compile_library(name, {f"{name}.c": text}, f"{name}.c")
+        loop = GENERATED / "contact" / LOOP
+        shared = loop.read_text(encoding="utf-8") if loop.is_file() else loop_source()
+        lib = compile_library(name, {f"{name}.c": text, LOOP: shared}, f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
