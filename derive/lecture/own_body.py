@@ -23,7 +23,6 @@ Parameters of a term are shown with the term's name as a subscript (μ_magnet).
 from __future__ import annotations
 
 import functools
-import json
 import math
 from dataclasses import dataclass, field
 
@@ -334,7 +333,3 @@ def _classify(R, fV, fH, I, scale) -> Rest | None:
     else:
         stable = None
     return Rest(V0, tuple(float(x) for x in R[2, :]), [float(x) for x in h], lam, stable, family)
-
-
-def render_json(a: OwnBodyAnalysis) -> str:
-    return json.dumps(a.to_json(), indent=2)

@@ -225,9 +225,3 @@ def effect_of(term: Term) -> fx.Effect:
 
     return fx.Effect(name, "torque", f"{term.frame} torque tau = ({', '.join(term.exprs)})",
                      params=model_params, values=values, torque=torque)
-
-
-def terms_of(effect_names, terms) -> tuple:
-    """The terms among ``terms`` whose effects are named."""
-    wanted = set(effect_names)
-    return tuple(t for t in terms if t.effect in wanted)
