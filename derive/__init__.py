@@ -10,6 +10,11 @@ The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulat
 :class:`CompilerError`. The stages behind it are subpackages (``derive.symbolic``,
 ``derive.methods``, ``derive.codegen``, ``derive.runtime``, ``derive.sim``, ``derive.sweeps``,
 ``derive.lecture``), each saying in its docstring what it takes, gives and may import.
+
+Each entry point here imports its stage when first called, not at ``import derive``: a stage
+brings NumPy, compiled libraries or SymPy, which ``derive --help`` and a program that only
+imports the package do not pay for. The functions here are the documented face (signatures,
+docstrings, examples); the stages' own functions take the normalised arguments.
 """
 from derive.errors import CompilerError, IntegrationError, SceneError
 from derive.sim.saveat import SaveAt, choose as _choose

@@ -99,7 +99,7 @@ def _states(formulation, n, rng):
 
 @pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
 def test_baseline_rhs_agrees_with_the_generated_kernel(key, formulation):
-    from derive.sim.derived import kernel_for
+    from derive.bench.internals import kernel_for
 
     kernel = kernel_for(*key)
     p = np.array([MOMENTS[n] for n in kernel.param_names])
@@ -125,7 +125,7 @@ def test_baseline_jacobian_is_the_derivative_of_its_rhs(key, formulation):
         J = np.array(jac_real(0.0, y))
         assert np.allclose(J, fd, rtol=1e-12, atol=1e-12 * np.max(np.abs(fd)))
     if formulation == "euler-angles" or "gravity" not in key[2]:
-        from derive.sim.derived import kernel_for
+        from derive.bench.internals import kernel_for
 
         kernel = kernel_for(*key)
         p = np.array([MOMENTS[n] for n in kernel.param_names])

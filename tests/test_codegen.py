@@ -161,7 +161,6 @@ def test_rigid_body_matches_heavy_top_physics():
     model's, mapped through ω̃ = B(q) q̇ (finite state set; exact same physics, other route)."""
     import sympy as sp
     from derive.symbolic.rotations import ANGLES, RATES, ZYZ
-    from derive.sim.derived import _quaternion
 
     rb = CModel("rigid_body")
     ht = CModel("heavy_top")
@@ -172,7 +171,7 @@ def test_rigid_body_matches_heavy_top_physics():
         I1, I3, M, g, l = RNG.uniform(1, 2), RNG.uniform(0.3, 1), 1.0, 9.81, RNG.uniform(0.05, 0.3)
         _, f = ht.call("rhs", y, [I1, I3, M, g, l], 6)
         wdot = np.asarray(J_of(*y), dtype=float) @ np.concatenate([y[3:], f[3:]])
-        x = np.concatenate([_quaternion(*y[:3]), w_of(*y)])
+        x = np.concatenate([quaternion(*y[:3]), w_of(*y)])
         _, frb = rb.call("rhs", x, [I1, I1, I3, M, g, 0.0, 0.0, l, 0.0], 7)
         assert close(frb[4:], wdot, 1e-11)
 
@@ -366,3 +365,14 @@ def test_generated_kernels_run_clean_under_address_and_undefined_sanitizers(tmp_
     proc = subprocess.run([str(exe)], capture_output=True, text=True, env=env, timeout=120)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert "runtime error" not in proc.stderr
+
+
+def quaternion(a, b, c) -> np.ndarray:
+    """q of R = Rz(α) Ry(β) Rz(γ), scalar first (the quaternion model's init map, in NumPy)."""
+    def mul(p, q):
+        p0, pv, q0, qv = p[0], p[1:], q[0], q[1:]
+        return np.concatenate([[p0 * q0 - pv @ qv], p0 * qv + q0 * pv + np.cross(pv, qv)])
+
+    return mul(mul(np.array([np.cos(a / 2), 0.0, 0.0, np.sin(a / 2)]),
+                   np.array([np.cos(b / 2), 0.0, np.sin(b / 2), 0.0])),
+               np.array([np.cos(c / 2), 0.0, 0.0, np.sin(c / 2)]))

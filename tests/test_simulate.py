@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 import derive
-from derive.sim import derived, result, simulation
+from derive.bench.internals import kernel_for, model_for
+from derive.sim import result, simulation
 from derive.symbolic.formulations import REGISTRY
 from derive.codegen.render import ROOT
 
@@ -115,9 +116,9 @@ def test_euler_angles_at_the_pole_refuse_or_stay_right():
 
 def test_no_gravity_scene_gets_kernel_without_gravity_parameters():
     res = derive.simulate(top(gravity=None))
-    model = derived.model_for(res.formulation, True, derived.effect_names(res.scene))
+    model = model_for(res.formulation, True, res.scene.effects)
     assert not {"M", "g", "l"} & set(model.param_names)
-    assert "g" not in (derived.kernel_for(res.formulation, True, ()).param_names)
+    assert "g" not in (kernel_for(res.formulation, True, ()).param_names)
 
 
 @pytest.mark.parametrize("formulation", ["reduced", "quaternion", "euler-angles"])

@@ -162,6 +162,10 @@ BAD = [
     ({"vary": {"damping": {"c": {"values": [0.1]}}}}, "vary.damping.c"),
     ({"vary": {"initial": {"omega": {"0": {"values": [0.1]}}}}}, "vary.initial.omega.0"),
     ({"vary": {"initial": {"beta": {"values": []}}}}, "vary.initial.beta"),
+    ({"vary": {"initial": {"beta": {"values": [10**400]}}}}, "vary.initial.beta"),  # beyond a double
+    ({"vary": {"initial": {"beta": {"from": 0.1, "to": 10**400, "num": 3}}}}, "vary.initial.beta"),
+    ({"random": {"n": 5, "seed": 1, "initial": {"beta": {"low": 0.1, "high": 10**400}}}, "vary": None},
+     "random.initial.beta"),
     ({"random": {"n": 0, "seed": 1, "initial": {"beta": {"low": 0.1, "high": 0.2}}}, "vary": None}, "random.n"),
     ({"random": {"n": 5, "seed": 1, "initial": {"beta": {"low": 0.3, "high": 0.2}}}, "vary": None},
      "random.initial.beta"),

@@ -319,7 +319,7 @@ def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
 # conserved quantities found by symmetry, and seen in the trajectories
 
 def _symmetries(sc):
-    from derive.symbolic.terms import symmetries
+    from derive.symbolic.symmetries import symmetries
 
     s = load_scene(sc)
     return symmetries(s.effects, s.symmetric)

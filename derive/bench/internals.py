@@ -6,7 +6,9 @@ keeps working while the pipeline behind them changes. What needs more lives here
 small, and each caller degrades to "unavailable (<why>)" in the report if one breaks:
 
 * :func:`kernel_case` — the compiled kernel of a scene with its initial state and parameters,
-  for one rhs call through ctypes and the solve-only C batch loop;
+  for one rhs call through ctypes and the solve-only C batch loop (:func:`model_for`,
+  :func:`sources_for` and :func:`kernel_for` derive, render and compile a model in this
+  process, with SymPy: never the path ``simulate`` takes);
 * :func:`own_batch_call` — the one C call ``simulate_batch`` makes, inputs prepared: its cost
   without Python;
 * :func:`output_map_call` — the output map alone (the compiled ``outputs_at``) on a solved
@@ -20,14 +22,41 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import functools
+from pathlib import Path
+
 import numpy as np
 
+from derive.codegen.sources import model_sources
+from derive.errors import IntegrationError
 from derive.runtime import catalogue
 from derive.runtime.integrate import ModelKernel
-from derive.sim import auto, batch, derived
+from derive.runtime.kernel import Kernel
+from derive.sim import auto, batch
 from derive.sim.inputs import _settings, choose_method, inputs_of, params_of
 from derive.sim.scene import load_scene
 from derive.symbolic import models
+
+
+@functools.lru_cache(maxsize=None)
+def model_for(formulation: str, symmetric: bool, effects: tuple):
+    """A model derived in this process (SymPy)."""
+    return models.build(formulation, symmetric, effects)
+
+
+@functools.lru_cache(maxsize=None)
+def sources_for(formulation: str, symmetric: bool, effects: tuple) -> dict:
+    """The generated files of a model (CSE and rendering done once per process)."""
+    return model_sources(model_for(formulation, symmetric, effects))
+
+
+@functools.lru_cache(maxsize=None)
+def kernel_for(formulation: str, symmetric: bool, effects: tuple):
+    """The compiled C kernel (model + every solver) of a model."""
+    model = model_for(formulation, symmetric, effects)
+    files = sources_for(formulation, symmetric, effects)
+    sources = {Path(k).name: v for k, v in files.items() if k in (f"c/{model.name}.h", f"c/{model.name}.c")}
+    return Kernel.from_sources(model.name, sources)
 
 
 @dataclass
@@ -49,11 +78,13 @@ def kernel_case(scene, formulation: str | None = None, **overrides) -> KernelCas
     """The kernel `simulate` would run for ``scene`` (path or dict), with its inputs."""
 
     sc = load_scene(scene, **overrides)
-    form = formulation or derived.choose_formulation(sc)
-    key = (form, sc.symmetric, derived.effect_names(sc))
-    model = derived.model_for(*key)
-    return KernelCase(derived.kernel_for(*key), form, derived._initial_state(sc, model), derived._params(sc, model),
-                      sc.t_out, sc.simulate.rtol, sc.simulate.atol)
+    form = formulation or auto.model_key(sc)[0]
+    desc = catalogue.describe((form, sc.symmetric, sc.effects))
+    y0, p, rc = ModelKernel.load(desc, None).init(inputs_of(sc), params_of(sc, desc))
+    if rc:
+        raise IntegrationError("the initial state is not finite")
+    return KernelCase(kernel_for(form, sc.symmetric, sc.effects), form, y0, p, sc.t_out, sc.simulate.rtol,
+                      sc.simulate.atol)
 
 
 def batch_inputs(scenes, formulation: str):
@@ -114,12 +145,13 @@ DERIVE_SCRIPT = r"""
 import json, sys, time
 arg = sys.argv[1]
 scene = json.loads(arg) if arg.startswith("{") else arg
-from derive.sim import derived
+from derive.bench.internals import model_for, sources_for
+from derive.sim import auto
 from derive.sim.scene import load_scene
 sc = load_scene(scene)
-key = (derived.choose_formulation(sc), sc.symmetric, derived.effect_names(sc))
-a = time.perf_counter(); derived.model_for(*key)
-b = time.perf_counter(); derived.sources_for(*key)
+key = (auto.model_key(sc)[0], sc.symmetric, sc.effects)
+a = time.perf_counter(); model_for(*key)
+b = time.perf_counter(); sources_for(*key)
 c = time.perf_counter()
 print(json.dumps({"derivation": b - a, "codegen": c - b}))
 """

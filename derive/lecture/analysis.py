@@ -41,8 +41,8 @@ after the number). Expressions are displayed in a compact form (``closed_forms._
 grouped and factored, for display only); the numbers are evaluated from the derived expressions.
 
 This module assembles the analysis and its document; :mod:`derive.lecture.closed_forms` holds the
-derived expressions (SymPy loads there, on the first analysis, not on import) and
-:mod:`derive.lecture.equilibria` the relative equilibria.
+derived expressions and :mod:`derive.lecture.equilibria` the relative equilibria. All three import
+SymPy: the command line and ``derive.analyze`` load this module when an analysis is asked for.
 """
 
 from __future__ import annotations
@@ -51,13 +51,18 @@ import json
 from dataclasses import dataclass
 
 import numpy as np
+import sympy as sp
 
 from derive.errors import IntegrationError
 from derive.lecture import own_body
-from derive.lecture.closed_forms import _compact, _ep_model, _lagrangian, _latex, _routh, _sp
+from derive.lecture.closed_forms import _compact, _ep_model, _lagrangian, _latex, _routh
 from derive.lecture.equilibria import UNITS, _axial, _check_finite, _equilibria, _Overflow
 from derive.sim.scene import load_scene
 from derive.symbolic import integrable
+from derive.symbolic import effects as fx
+from derive.symbolic import integral_proofs
+from derive.symbolic.lagrangian import I1, I2, I3, l
+from derive.symbolic.rotations import ANGLES
 
 
 @dataclass
@@ -87,7 +92,7 @@ class Analysis:
             "integrals": [{"name": i.name, "expression": i.expression, "unit": i.unit,
                            "proved": self.proofs[i.name].holds if i.name in self.proofs else None,
                            **({"on": i.on} if i.on else {})} for i in self.integrals],
-            **({"V_eff": _sp().sstr(veff)} if veff is not None else {}),
+            **({"V_eff": sp.sstr(veff)} if veff is not None else {}),
             "equilibria": [e.to_json() for e in self.equilibria],
         }
 
@@ -125,9 +130,6 @@ def analyze(scene) -> Analysis:
         return own_body.analyze(sc)
     cls = integrable.classify(sc)
     ints = integrable.integrals(cls)
-    # The proofs load SymPy; importing them here keeps `import derive.lecture.analysis` light.
-    from derive.symbolic import integral_proofs
-
     proofs = integral_proofs.proofs(cls)
     try:
         eqs = _equilibria(sc, cls)
@@ -166,9 +168,7 @@ def _section_body(sc, cls):
 
 
 def _section_energies(sc):
-    sp = _sp()
     T, V, system = _lagrangian(sc.symmetric, _conservative(sc))
-    from derive.symbolic.lagrangian import I1, I2, I3
 
     Lv = sp.symbols("L1:4", real=True)
     moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
@@ -186,13 +186,10 @@ def _damped(sc) -> bool:
 
 
 def _conservative(sc) -> tuple:
-    from derive.symbolic import effects as fx
-
     return tuple(e.name for e in fx.lookup(sc.effects) if e.conservative)
 
 
 def _section_equations(sc):
-    sp = _sp()
     m = _ep_model(sc.symmetric, sc.effects)
     lhs = r"\dot{\tilde\omega}" if m.state_names[0].startswith("omega") else r"\dot{\tilde L}"
     lines = ["Euler–Poisson (L = I ω̃ about the pivot, n = Rᵀẑ), derived from the effects registry:", "",
@@ -211,9 +208,6 @@ def _effective_potential(sc):
     """The Routh reduction's V_eff(β; p_α, p_γ) for the scene's body in its display form
     (``_compact``; M g l = 0 without gravity), or None when α and γ are not both cyclic (the
     body is not symmetric about axis 3 with the centre of mass on it)."""
-    from derive.symbolic.lagrangian import l
-    from derive.symbolic.rotations import ANGLES
-
     if not (sc.symmetric and _axial(sc)):
         return None
     cyc = _lagrangian(sc.symmetric, _conservative(sc))[2].cyclic
@@ -227,7 +221,6 @@ def _section_cyclic(sc, cls):
     _, _, system = _lagrangian(sc.symmetric, _conservative(sc))
     cyc = system.cyclic
     lines = ["Cyclic coordinates: " + ", ".join(f"${_latex(q)}$" for q in cyc) + ".", ""]
-    from derive.symbolic.rotations import ANGLES
 
     for q in cyc:
         lines += [rf"$$ p_{{{_latex(q)}}} = \partial L/\partial\dot{{{_latex(q)}}} = "

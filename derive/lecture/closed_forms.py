@@ -1,14 +1,21 @@
 """The derived expressions of `derive analyze`, cached per process: T, V and the Euler–Lagrange
 equations in z-y-z angles, the Euler–Poisson model and its Jacobian, the symmetric top's Routh
 reduction, and their compact LaTeX display.
-
-SymPy and :mod:`derive.symbolic` load on the first call, not on import, so that
-``import derive.lecture.analysis`` (and ``import derive``) stays free of SymPy.
 """
 
 from __future__ import annotations
 
 import functools
+
+import sympy as sp
+
+from derive.symbolic import effect_sums as sums
+from derive.symbolic import effects as fx
+from derive.symbolic import models, stability
+from derive.symbolic.formulations import UNIVERSAL
+from derive.symbolic.lagrangian import (I1, I2, I3, EulerLagrange, Mass, g, kinetic_energy, l, p_alpha,
+                                        p_gamma)
+from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha_d, beta, gamma_d, trig_reduce
 
 
 #: Above this many operations (SymPy's count_ops) an expression is displayed as derived:
@@ -18,17 +25,7 @@ COMPACT_MAX_OPS = 400
 COMPACT_MAX_TERMS = 6
 
 
-
-def _sp():
-    import sympy as sp
-
-    return sp
-
-
 def _latex(expr) -> str:
-    sp = _sp()
-    from derive.symbolic.rotations import ANGLES, RATES
-
     names = {qd: rf"\dot{{{sp.latex(q)}}}" for q, qd in zip(ANGLES, RATES)}
     for i in range(3):
         for s in (sp.Symbol(f"L{i + 1}", real=True), sp.Symbol(f"n{i + 1}", real=True)):
@@ -41,9 +38,6 @@ def _latex(expr) -> str:
 
 def _is_variable(s) -> bool:
     """An angle, a rate, a momentum or a state component (not a body or effect parameter)."""
-    from derive.symbolic.lagrangian import p_alpha, p_gamma
-    from derive.symbolic.rotations import ANGLES, RATES
-
     return s in ANGLES or s in RATES or s in (p_alpha, p_gamma) or s.name[:-1] in ("L", "n", "omega")
 
 
@@ -56,8 +50,6 @@ def _compact(expr):
     polynomials: about 0.05 s for V_eff, 0.3 s for all the expressions of a symmetric top, 0.6 s
     for an asymmetric body; once per process). E.g. the expanded V_eff becomes
     (p_α − p_γ cos β)²/(2 I₁ sin²β) + M g l cos β."""
-    sp = _sp()
-
     if isinstance(expr, sp.MatrixBase):
         return expr.applyfunc(_compact)
     return _compact_cached(sp.sympify(expr))
@@ -65,9 +57,6 @@ def _compact(expr):
 
 @functools.lru_cache(maxsize=256)
 def _compact_cached(expr):
-    sp = _sp()
-    from derive.symbolic.rotations import ANGLES
-
     if sp.count_ops(expr) > COMPACT_MAX_OPS:
         return expr
     groups: dict[frozenset, list] = {}
@@ -87,32 +76,21 @@ def _compact_cached(expr):
 
 @functools.lru_cache(maxsize=None)
 def _ep_model(symmetric: bool, effects: tuple):
-    from derive.symbolic import models
-    from derive.symbolic.formulations import UNIVERSAL
-
     return models.build(UNIVERSAL, symmetric, effects)
 
 
 @functools.lru_cache(maxsize=None)
 def _ep_jacobian(symmetric: bool, effects: tuple):
     """The (L, n) block of the Euler–Poisson Jacobian as a NumPy function of (y6, p)."""
-    sp = _sp()
     m = _ep_model(symmetric, effects)
     y = m.states[:6]
     J = sp.Matrix(m.rhs[:6]).jacobian(sp.Matrix(y))
     return sp.lambdify((y, m.params), J, "numpy"), m
 
 
-
-
 @functools.lru_cache(maxsize=None)
 def _lagrangian(symmetric: bool, effects: tuple):
     """(T, V, EulerLagrange) in z-y-z angles for the body and the conservative effects."""
-    from derive.symbolic import effect_sums as sums
-    from derive.symbolic import effects as fx
-    from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, kinetic_energy
-    from derive.symbolic.rotations import ZYZ, trig_reduce
-
     effs = fx.lookup(effects)
     sym = sums.Symbols(effs)
     moments = (I1, I1, I3) if symmetric else (I1, I2, I3)
@@ -125,11 +103,6 @@ def _lagrangian(symmetric: bool, effects: tuple):
 def _routh():
     """The symmetric top's Routh reduction (symbol l; l = 0 is the free symmetric body), the
     steady-precession quadratic and the series of V_eff about β = 0 and π."""
-    sp = _sp()
-    from derive.symbolic import stability
-    from derive.symbolic.lagrangian import I1, Mass, g, l, p_alpha, p_gamma
-    from derive.symbolic.rotations import ANGLES, alpha_d, beta, gamma_d, trig_reduce
-
     st = stability.sleeping_top()
     red = st.reduction
     system = red.system

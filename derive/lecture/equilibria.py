@@ -10,9 +10,13 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import sympy as sp
 
-from derive.lecture.closed_forms import _ep_jacobian, _latex, _routh, _sp
+from derive.lecture.closed_forms import _ep_jacobian, _latex, _routh
 from derive.symbolic import integrable
+from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_gamma
+from derive.symbolic.rotations import ZYZ
+from derive.symbolic.stability import SteadySpin, omega0
 
 
 #: A real part above this fraction of the spectrum's scale counts as growth (round-off in the
@@ -66,7 +70,6 @@ class Equilibrium:
         return {k: UNITS[k] for k in dict.fromkeys(names + ["eigenvalues"]) if k in UNITS}
 
 
-
 def _state(m, L, n, moments) -> list:
     """The model's (first six) state at the point (L, n): L itself, or ω̃ = I⁻¹L when the
     model's state is the angular velocity (the Jacobians are similar: same eigenvalues)."""
@@ -104,7 +107,7 @@ def _big(x):
     """``x`` as a SymPy Float, whose exponent is unbounded: products and squares of the scene's
     doubles (ω₀² I, p_γ², M g l I₁ at 1e300) are exact in magnitude instead of inf, so a verdict
     read from their ratio is right whatever the scale."""
-    return _sp().Float(float(x))
+    return sp.Float(float(x))
 
 
 def _sign_ratio(x, scale) -> int:
@@ -172,8 +175,6 @@ class _Top:
 
 
 def _top(sc, cls, p) -> _Top:
-    from derive.symbolic.rotations import ZYZ
-
     I = np.array(sc.body.moments)
     c = np.array([p["cx"], p["cy"], p["cz"]])
     if cls.extra is not None and cls.extra.name == integrable.SPHERE.name:
@@ -212,9 +213,6 @@ def _equilibria(sc, cls) -> list[Equilibrium]:
 
 def _free_rotation(sc, k: int) -> Equilibrium:
     """Spin of a free body about principal axis k (0-based) at the scene's |ω̃(0)|."""
-    from derive.symbolic.lagrangian import I1, I2, I3
-    from derive.symbolic.stability import SteadySpin, omega0
-
     Ivals = sc.body.moments
     i, j = (k + 1) % 3, (k + 2) % 3
     Isym = (I1, I2, I3)
@@ -257,9 +255,6 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
     """Sleeping (centre of mass above the pivot) or hanging top of the Lagrange case, from the
     series of V_eff about β = 0 (p_α = p_γ) or β = π (p_α = −p_γ); β is the tilt of the
     symmetry direction u (body axis 3, or the body's own symmetry axis / r̂_c of a sphere)."""
-    sp = _sp()
-    from derive.symbolic.lagrangian import I1, Mass, g, l, p_gamma
-
     R = _routh()
     lval = top.l
     pg = top.p_gamma
@@ -296,7 +291,7 @@ def _lagrange_vertical(sc, p, top: _Top, kind: str) -> Equilibrium:
         f"of mass {'above' if kind == 'sleeping' else 'below'} the pivot" + _top_note(top),
         "series of V_eff(beta) about the pole with p_alpha = +-p_gamma: V_eff = V0 + k2 eps^2 + ...; "
         "Euler-Poisson linearisation",
-        {"p_gamma": pg, "threshold": float(_sp().sqrt(abs(4 * Mgl * _big(top.I_perp)))),
+        {"p_gamma": pg, "threshold": float(sp.sqrt(abs(4 * Mgl * _big(top.I_perp)))),
          "k2": k2v},
         list(eig))
 
@@ -382,9 +377,6 @@ def _quadratic_roots(a, b, c, disc, lib=math) -> list:
 def _steady_precession(sc, p, top: _Top, gravity: bool) -> Equilibrium:
     """Steady precession at the scene's tilt β₀ of the symmetry axis (Lagrange top, free
     symmetric body): one ``Precession`` record per real root α̇, in ascending order."""
-    sp = _sp()
-    from derive.symbolic.lagrangian import l
-
     R = _routh()
     b0 = top.beta0
     pg = top.p_gamma

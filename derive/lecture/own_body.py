@@ -5,7 +5,7 @@ Everything is derived from the scene's effects (built-in and the user's) as for 
 1. T, V and L = T − V in z-y-z Euler angles (ΣV of every conservative effect);
 2. the Euler–Poisson equations (``models.euler_poisson``): ω̃̇, ṅ = n × ω̃ and ė = e × ω̃ (a user's
    V may depend on all of R, whose rows are e, n × e, n);
-3. the integrals their symmetry leaves (:func:`derive.symbolic.terms.symmetries`): the energy
+3. the integrals their symmetry leaves (:func:`derive.symbolic.symmetries.symmetries`): the energy
    without torques, p_α = L·n when V is invariant about the vertical and no torque has a
    vertical component, p_γ = I₃ω̃₃ for a symmetric body when V is invariant about axis 3 and no
    torque acts along it, and |n|² = 1 always;
@@ -23,11 +23,18 @@ Parameters of a term are shown with the term's name as a subscript (μ_magnet).
 from __future__ import annotations
 
 import functools
-import json
 import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import sympy as sp
+
+from derive.symbolic import effect_sums as sums
+from derive.symbolic import effects as fx
+from derive.symbolic import models
+from derive.symbolic.lagrangian import I1, I2, I3, kinetic_energy
+from derive.symbolic.rotations import ZYZ, skew, trig_reduce
+from derive.symbolic.symmetries import symmetries
 
 #: Relative size of a torque below which a point counts as a critical point of V.
 CRITICAL_TOLERANCE = 1e-10
@@ -75,7 +82,7 @@ class OwnBodyAnalysis:
     :class:`derive.lecture.analysis.Analysis`."""
 
     scene: object
-    integrals: dict  # terms.symmetries(...)
+    integrals: dict  # symmetries(...)
     equilibria: list = field(default_factory=list)
     searched: bool = False  # rest equilibria searched (a conservative body)
 
@@ -119,7 +126,6 @@ class OwnBodyAnalysis:
         }
 
     def to_markdown(self) -> str:
-        sp = _sp()
         sc = self.scene
         title = sc.title or sc.source
         b = sc.body
@@ -175,18 +181,10 @@ class OwnBodyAnalysis:
         return "\n".join(out).rstrip() + "\n"
 
 
-def _sp():
-    import sympy as sp
-
-    return sp
-
-
 def analyze(sc) -> OwnBodyAnalysis:
     """The analysis of a validated scene with user terms (see the module docstring)."""
-    from derive.symbolic import terms as user_terms
-
     labels = {t.effect: f"{t.kind} {t.name!r}" for t in sc.terms}
-    found = user_terms.symmetries(sc.effects, sc.symmetric, labels)
+    found = symmetries(sc.effects, sc.symmetric, labels)
     conservative = found["energy"]
     eqs = _rest_equilibria(sc) if conservative else []
     return OwnBodyAnalysis(sc, found, eqs, searched=conservative)
@@ -194,7 +192,6 @@ def analyze(sc) -> OwnBodyAnalysis:
 
 def _display_symbols(sc) -> dict:
     """{model parameter symbol: display symbol}: μ_magnet for the term magnet's μ."""
-    sp = _sp()
     out = {}
     for t in sc.terms:
         for p, _ in t.params:
@@ -204,9 +201,6 @@ def _display_symbols(sc) -> dict:
 
 @functools.lru_cache(maxsize=32)
 def _ep_cached(symmetric, effects):
-    from derive.symbolic import effects as fx
-    from derive.symbolic import models
-
     return models.euler_poisson(symmetric, fx.lookup(effects))
 
 
@@ -216,11 +210,6 @@ def _ep(sc):
 
 def _energies(sc):
     """(T, V) in z-y-z angles: T of the body, V the sum over the conservative effects."""
-    from derive.symbolic import effect_sums as sums
-    from derive.symbolic import effects as fx
-    from derive.symbolic.lagrangian import I1, I2, I3, kinetic_energy
-    from derive.symbolic.rotations import ZYZ, trig_reduce
-
     effs = fx.lookup(sc.effects)
     moments = (I1, I1, I3) if sc.symmetric else (I1, I2, I3)
     T = trig_reduce(kinetic_energy(moments))
@@ -235,11 +224,6 @@ def _energies(sc):
 def _potential_functions(sc):
     """(V(R), grad(R), H(R)) as NumPy functions of the 3×3 matrix R at the scene's numbers:
     grad_k = ∂/∂ε_k V(R exp([ε]ₓ)) and H_jk = ∂²/∂ε_j∂ε_k at ε = 0 (body-frame rotations)."""
-    sp = _sp()
-    from derive.symbolic import effect_sums as sums
-    from derive.symbolic import effects as fx
-    from derive.symbolic.rotations import skew
-
     effs = fx.lookup(sc.effects)
     sym = sums.Symbols(effs)
     r = sp.Matrix(3, 3, sp.symbols("r0:9", real=True))
@@ -349,7 +333,3 @@ def _classify(R, fV, fH, I, scale) -> Rest | None:
     else:
         stable = None
     return Rest(V0, tuple(float(x) for x in R[2, :]), [float(x) for x in h], lam, stable, family)
-
-
-def render_json(a: OwnBodyAnalysis) -> str:
-    return json.dumps(a.to_json(), indent=2)

@@ -316,18 +316,8 @@ def derive_model(key, folder: Path) -> None:
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-def generation() -> int:
-    """How many times :func:`clear_memory` has run in this process: a description
-    :func:`describe` gave is still the one it gives while this number stays."""
-    return _GENERATION[0]
-
-
-_GENERATION = [0]
-
-
 def clear_memory() -> None:
     """Forget the descriptions loaded in this process (tests that register effects)."""
-    _GENERATION[0] += 1
     _describe.cache_clear()
     _derivation_hash.cache_clear()
     _fingerprint.cache_clear()

@@ -45,7 +45,6 @@ import numpy as np
 
 from derive.sim.scene_types import FIXED_STEP_METHODS
 from derive.symbolic import effects
-from derive.symbolic.terms import symmetries
 
 #: Relative spread of β below which the β panel shows β − β(0).
 FLAT_BETA = 1e-6
@@ -308,7 +307,7 @@ def _zero_aligned(left: list, right: np.ndarray, margins=(1.1, 1.1)):
 
 def _user_symmetries(res) -> dict | None:
     """For a scene with terms written by the user, what their symmetry conserves
-    (``derive.symbolic.terms.symmetries``: checked symbolically, so SymPy is imported here, for
+    (``derive.symbolic.symmetries.symmetries``: checked symbolically, so SymPy is imported here, for
     such a scene only); None for any other scene."""
     sc = res.scene
     if sc is None or not getattr(sc, "terms", ()):
@@ -319,6 +318,9 @@ def _user_symmetries(res) -> dict | None:
 
 @functools.lru_cache(maxsize=32)
 def _symmetries(effect_names, symmetric, labels) -> dict:
+    # SymPy decides the invariances; a plot of a scene without user terms never loads it.
+    from derive.symbolic.symmetries import symmetries
+
     return symmetries(effect_names, symmetric, dict(labels))
 
 

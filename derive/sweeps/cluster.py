@@ -7,7 +7,7 @@ Takes: the runnable points and their arguments. Gives: (chunks, {chunk: result})
 from __future__ import annotations
 
 from derive.errors import EngineError, SceneError
-from derive.sweeps.points import _real
+from derive.sim.validator import _real
 from derive.sweeps.tasks import _chunks, _cpus, _held, _progress_bar, run_chunk
 
 

@@ -9,8 +9,6 @@ method (:func:`build`).
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from derive.errors import SceneError
@@ -27,13 +25,6 @@ from derive.symbolic.formulations import REGISTRY as FORMS
 
 def _fail(source, key, what):
     raise SceneError(f"{source}: {key}: {what}")
-
-
-def _real(x) -> float | None:
-    if isinstance(x, bool) or not isinstance(x, (int, float)):
-        return None
-    x = float(x)
-    return x if math.isfinite(x) else None
 
 
 def _set(data: dict, key: str, value) -> None:

@@ -17,9 +17,10 @@ import numpy as np
 from derive.errors import SceneError
 from derive.sim import examples
 from derive.sim.scene import load_scene, read_toml
+from derive.sim.validator import _real
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import term_key, variable_keys as _variable_keys
-from derive.sweeps.points import _fail, _real, _scene_error, _set, build
+from derive.sweeps.points import _fail, _scene_error, _set, build
 
 
 _SPEC_KEYS = ("scene", "vary", "random", "measure", "measures", "title")

@@ -9,7 +9,8 @@ Modules: ``rotations`` (z-y-z Euler angles, R, ω̃), ``inertia``, ``lagrangian`
 ``effects`` (the effects registry), ``effect_sums`` (their potentials and torques summed as
 SymPy expressions), ``formulations`` (the formulations registry), ``models``
 (build a model from a formulation, a body symmetry and effects), ``integrable`` (integrable
-cases and their integrals, classified without SymPy), ``integral_proofs`` (those integrals
+cases and their integrals, classified without SymPy), ``symmetries`` (the integrals a user's terms
+leave, by symbolic invariance), ``integral_proofs`` (those integrals
 proved along the derived equations).
 
 May import: :mod:`derive.errors` and :mod:`derive.reference` only. Nothing here renders,

@@ -373,7 +373,7 @@ def classify(scene) -> Classification:
     terms = getattr(scene, "terms", ())
     if terms:
         # A term written by the user is outside the classical cases' hypotheses (the analysis
-        # derives which integrals its symmetry leaves: derive.symbolic.terms.symmetries).
+        # derives which integrals its symmetry leaves: derive.symbolic.symmetries.symmetries).
         torques = [t.name for t in terms if t.kind == "torque"]
         return Classification("general", "the scene has terms written by the user ("
                               + ", ".join(f"{t.kind} {t.name!r}" for t in terms)
