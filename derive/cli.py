@@ -195,8 +195,8 @@ def _cmd_export(args) -> int:
             b = export_fmu(args.scene, args.fmu, method=args.method)
         except SceneError as exc:
             raise _flag_named(exc, {"method": args.method}) from None
-        print(f"exported {b.name} ({b.method}) as an FMI 2.0 FMU (model exchange and "
-              f"co-simulation) -> {args.fmu}")
+        interfaces = getattr(b, "interfaces", "model exchange and co-simulation")  # contact hook
+        print(f"exported {b.name} ({b.method}) as an FMI 2.0 FMU ({interfaces}) -> {args.fmu}")
         return EXIT_OK
     from derive.export.folder import export_folder
     from derive.sim.outputs import check_parent

@@ -102,6 +102,8 @@ class ContactBundle:
     name: str
     method: str
     nfev: int
+    #: The FMU's interfaces (no model exchange: the switch rules act between the phases).
+    interfaces: str = "co-simulation"
 
 
 def bundle(found: tuple[dict, str], method: str | None = None) -> ContactBundle:
