@@ -64,6 +64,7 @@ from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_
 from derive.sim.result import _explain
 from derive.sweeps import measures as ms
 from derive.sweeps.cluster import _dask, check_engine
+from derive.sweeps.contact import contact_sweep, sweep as run_contact
 from derive.sweeps.local import _in_process, _local
 from derive.sweeps.points import _runnable
 from derive.sweeps.result import SweepResult, write
@@ -118,6 +119,11 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     """
     source = os.fspath(spec) if isinstance(spec, (str, os.PathLike)) else "<sweep>"
     scheduler = check_engine(source, workers, scheduler, scheduler_timeout, dashboard)
+    found = contact_sweep(spec)  # -- contact hook: a top on a table, run by derive.sweeps.contact --
+    if found is not None:
+        if saveat is not None:
+            raise SceneError(f"{source}: saveat: a sweep over a top on a table keeps its measures only")
+        return run_contact(found, workers=workers, scheduler=scheduler, add_measure=add_measure)
     sp = load(spec)
     extra = final_measures(saveat, sp.source)
     if extra:
