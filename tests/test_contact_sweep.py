@@ -162,3 +162,58 @@ def test_prepared_contact_refuses_keys_it_does_not_take():
         p.run(params={"l": 0.1})
     with pytest.raises(derive.SceneError, match="contact.mu"):
         p.run(params={"mu": -1.0})
+
+
+# ---------------------------------------------------------------------------------------------
+# derive animate of a top on a table
+
+
+@pytest.fixture(scope="module")
+def tippe_run():
+    return derive.simulate(_scene("tippe_top", 0.4, 81))
+
+
+def test_table_frames_follow_the_run_at_its_samples(tippe_run):
+    from derive.sim.animate import table
+
+    fr = table.frames(tippe_run, fps=5, speed=0.1)
+    assert len(fr.t) == 21 and np.allclose(fr.t, np.arange(21) * 0.02)
+    k = np.searchsorted(tippe_run.t, fr.t[10])  # t = 0.2, a sample time
+    assert np.allclose(fr.com[10], tippe_run.com[k], atol=1e-15)
+    assert np.allclose(fr.contact[10], tippe_run.contact[k], atol=1e-15)
+    assert np.allclose(fr.R[10][:, 2], tippe_run.axis[k], atol=1e-12)
+    assert fr.phase[10] == tippe_run.phase[k]
+
+
+def test_the_tippe_tops_ball_touches_the_table_in_every_frame(tippe_run):
+    from derive.sim.animate import table
+
+    fr = table.frames(tippe_run, fps=5, speed=0.1)
+    mesh = table.body_mesh(tippe_run.scene)
+    sc = tippe_run.scene
+    ball = np.linalg.norm(mesh.verts - [0, 0, sc.offset], axis=1) <= sc.radius * (1 + 1e-12)
+    for k in range(len(fr.t)):
+        z = fr.com[k, 2] + mesh.verts[ball] @ fr.R[k][2]
+        # the vertices lie on the ball, which touches z = 0: none below it, the lowest within
+        # the mesh's spacing (20 degrees: r (1 - cos 20°) = 0.06 r) of it
+        assert z.min() >= -1e-12 and z.min() < (1 - math.cos(math.radians(20))) * sc.radius
+
+
+def test_cli_animates_a_top_on_a_table_as_gif_and_html(tmp_path, capsys):
+    from PIL import Image
+
+    from derive.sim.animate import draw
+
+    scene = tmp_path / "peg.toml"
+    text = (CONTACT / "round_peg_top.toml").read_text(encoding="utf-8")
+    scene.write_text(text.split("[simulate]")[0] + "[simulate]\nt_end = 0.3\nsamples = 31\n",
+                     encoding="utf-8")
+    gif, page = tmp_path / "peg.gif", tmp_path / "peg.html"
+    assert main(["animate", str(scene), "-o", str(gif), "--fps", "5", "--speed", "0.1"]) == 0
+    assert "16 frames at 5 frames/s" in capsys.readouterr().out
+    im = Image.open(gif)
+    assert im.format == "GIF" and im.n_frames == 16 and im.size == draw.PIXELS
+    assert main(["animate", str(scene), "-o", str(page), "--fps", "5", "--speed", "0.3"]) == 0
+    text = page.read_text(encoding="utf-8")
+    assert "data:image/gif;base64," in text and "http" not in text.lower().replace("http-equiv", "")
+    assert "round peg" not in text or "<script" not in text  # data, no script
