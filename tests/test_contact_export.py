@@ -43,6 +43,8 @@ def _short(tmp_path: Path, name: str, t_end: float, samples: int) -> Path:
     ("round_peg_top", 1.0, 101),     # exact Coulomb: slides, then a stick event into rolling
     ("rolling_sphere", 0.5, 51),     # rolling: v = -w x a
     ("tippe_top", 0.3, 31),          # viscous sliding on a sphere with Jellett's integral
+    ("frictionless_top", 0.5, 51),   # a point on a frictionless plane
+    ("euler_disk", 0.3, 31),         # a disc's rim, rolling
 ])
 def test_contact_example_prints_what_simulate_gives(tmp_path, capsys, name, t_end, samples):
     path = _short(tmp_path, name, t_end, samples)
