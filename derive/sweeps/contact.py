@@ -19,7 +19,6 @@ for these sweeps.
 from __future__ import annotations
 
 import copy
-import os
 from collections.abc import Mapping
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
@@ -29,40 +28,12 @@ import numpy as np
 from derive.contact.scene import read as read_scene
 from derive.contact.simulate import simulate
 from derive.errors import IntegrationError, SceneError
-from derive.sim import examples
 from derive.sim.scene import read_toml
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
 from derive.sweeps.points import _fail, _real
 from derive.sweeps.result import SweepResult
 from derive.sweeps.spec import _SPEC_KEYS, _flatten, _grid_values, _measures, _scene_path
-
-
-def contact_sweep(spec) -> tuple[dict, str, Path] | None:
-    """(the sweep's data, its source, its folder) when the sweep ``spec`` (path, example name or
-    dict) names a scene with a ``[contact]`` table, else None (an unreadable sweep too: the
-    general reader reports it)."""
-    if isinstance(spec, Mapping):
-        data, source, folder = spec, "<sweep>", Path.cwd()
-    elif isinstance(spec, (str, os.PathLike)):
-        source = examples.resolve(os.fspath(spec), "sweep")
-        try:
-            data = read_toml(source, "sweep")
-        except SceneError:
-            return None
-        folder = Path(source).resolve().parent
-    else:
-        return None
-    sc = data.get("scene")
-    if isinstance(sc, str):
-        path = folder / sc
-        if "\0" in sc or not path.is_file():
-            return None
-        try:
-            return (data, source, folder) if "contact" in read_toml(str(path)) else None
-        except SceneError:
-            return None
-    return (data, source, folder) if isinstance(sc, Mapping) and "contact" in sc else None
 
 
 def _set(data: dict, key: str, value: float) -> dict:
@@ -170,12 +141,13 @@ def _run_chunk(raw: dict, keys: tuple, rows: list, names: tuple) -> list:
 
 def sweep(found: tuple[dict, str, Path], workers: int | None = None,
           scheduler: str | None = None, add_measure: str | None = None) -> SweepResult:
-    """Run a sweep over a ``[contact]`` scene (``found``: :func:`contact_sweep`'s answer).
+    """Run a sweep over a ``[contact]`` scene (``found``: :func:`derive.sweeps.spec.contact_sweep`'s answer).
 
     Parameters
     ----------
     found : (dict, str, Path)
-        The sweep's data, its source and its folder.
+        The sweep's data, its source and its folder
+        (:func:`derive.sweeps.spec.contact_sweep`).
     workers : int, optional
         Run the points in that many worker processes (default: in this process).
     scheduler : str, optional

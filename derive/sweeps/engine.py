@@ -64,11 +64,10 @@ from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_
 from derive.sim.result import _explain
 from derive.sweeps import measures as ms
 from derive.sweeps.cluster import _dask, check_engine
-from derive.sweeps.contact import contact_sweep, sweep as run_contact
 from derive.sweeps.local import _in_process, _local
 from derive.sweeps.points import _runnable
 from derive.sweeps.result import SweepResult, write
-from derive.sweeps.spec import input_files, load
+from derive.sweeps.spec import contact_sweep, input_files, load
 from derive.sweeps.tasks import _chunks, _cpus
 
 
@@ -123,6 +122,8 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     if found is not None:
         if saveat is not None:
             raise SceneError(f"{source}: saveat: a sweep over a top on a table keeps its measures only")
+        from derive.sweeps.contact import sweep as run_contact  # SymPy and SciPy: only for these
+
         return run_contact(found, workers=workers, scheduler=scheduler, add_measure=add_measure)
     sp = load(spec)
     extra = final_measures(saveat, sp.source)

@@ -100,6 +100,33 @@ def input_files(spec) -> tuple:
     return (source, _scene_path(source, Path(source).resolve().parent, sc))
 
 
+def contact_sweep(spec) -> tuple[dict, str, Path] | None:
+    """(the sweep's data, its source, its folder) when the sweep ``spec`` (path, example name or
+    dict) names a scene with a ``[contact]`` table, else None (an unreadable sweep too: the
+    general reader reports it)."""
+    if isinstance(spec, Mapping):
+        data, source, folder = spec, "<sweep>", Path.cwd()
+    elif isinstance(spec, (str, os.PathLike)):
+        source = examples.resolve(os.fspath(spec), "sweep")
+        try:
+            data = read_toml(source, "sweep")
+        except SceneError:
+            return None
+        folder = Path(source).resolve().parent
+    else:
+        return None
+    sc = data.get("scene")
+    if isinstance(sc, str):
+        path = folder / sc
+        if "\0" in sc or not path.is_file():
+            return None
+        try:
+            return (data, source, folder) if "contact" in read_toml(str(path)) else None
+        except SceneError:
+            return None
+    return (data, source, folder) if isinstance(sc, Mapping) and "contact" in sc else None
+
+
 def load(spec) -> Spec:
     """Read and validate a sweep (path or dict); raises SceneError ``<file>: <key>: <what>``.
 
