@@ -89,6 +89,18 @@ def test_round_peg_rise_map_over_mu_and_radius():
     assert np.all(res.measures["switches"] >= 1)  # captured into rolling: a located stick
 
 
+def test_contact_sweep_gives_the_same_numbers_in_worker_processes():
+    spec = {"scene": _scene("round_peg_top", 0.1, 11),
+            "vary": {"contact.mu": {"values": [0.2, 0.4]}, "contact.radius": {"values": [0.003, 0.006]}},
+            "measure": {"names": ["min_tilt", "final_spin", "switches", "nfev"]}}
+    here, there = derive.sweep(spec), derive.sweep(spec, workers=2)
+    for name in here.measures:
+        assert np.array_equal(here.measures[name], there.measures[name]), name
+    assert list(there.status) == ["ok"] * 4
+    with pytest.raises(derive.SceneError, match="--scheduler"):
+        derive.sweep(spec, scheduler="tcp://127.0.0.1:1")
+
+
 def test_contact_sweep_refuses_a_pivoted_measure(capsys, tmp_path):
     spec = tmp_path / "s.toml"
     spec.write_text(f'scene = "{CONTACT / "round_peg_top.toml"}"\n[vary]\ncontact.mu = '
