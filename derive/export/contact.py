@@ -119,6 +119,9 @@ def bundle(found: tuple[dict, str], method: str | None = None) -> ContactBundle:
         The scene's simulation fails.
     """
     sc = read(*found, method=method)
+    if getattr(sc, "stem", None) is not None:  # the driver joins one sphere's phases
+        raise SceneError(f"{sc.source}: contact.stem: the export's phase driver has no second "
+                         f"sphere yet (derive simulate runs it)")
     if sc.method == METHOD:
         raise SceneError(f"{sc.source}: simulate.method: {METHOD} steps the phases from Python; "
                          f"export the compiled phase loop (--method {COMPILED})")

@@ -113,8 +113,13 @@ def body_mesh(scene) -> Mesh:
         what = f"a thin disc of radius r = {r:g} m (thickness from I1 = M (r²/4 + H²/12))"
     elif shape == "sphere" and s > 0:
         _sphere(verts, faces, colors, (0.0, 0.0, s), r)
-        _cyl(verts, faces, colors, 0.16 * r, s + 0.8 * r, s + 1.7 * r, SPINDLE, False, 8)
-        what = f"a ball of radius r = {r:g} m centred s = {s:g} m from the centre of mass along ê₃, its stem beyond"
+        stem = getattr(scene, "stem", None)  # a second sphere (radius, offset) the stem ends in
+        end = s + 1.7 * r if stem is None else stem[1]
+        _cyl(verts, faces, colors, 0.16 * r, s + 0.8 * r, end, SPINDLE, False, 8)
+        if stem is not None:
+            _sphere(verts, faces, colors, (0.0, 0.0, stem[1]), stem[0], 6, 10)
+        what = (f"a ball of radius r = {r:g} m centred s = {s:g} m from the centre of mass along ê₃, "
+                f"its stem beyond" + ("" if stem is None else f", ending in a sphere of radius {stem[0]:g} m"))
     else:
         rd = math.sqrt(2.0 * I3 / M)
         # no thicker than keeps its lower face above the peg's centre (or the point): a body
