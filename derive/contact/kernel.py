@@ -95,12 +95,33 @@ def loop_source() -> str:
     return render("contact/dop853.c.j2", dop=_dop853(), dop_name=DEFAULT_METHOD)
 
 
+#: The phase driver's file name: the phases joined by their switch rules, in C (what an export
+#: and an FMU run; :mod:`derive.contact.phases` is the same rules driving the phase loop from
+#: Python).
+RUN = "contact_run.inc"
+
+
+@functools.lru_cache(maxsize=None)
+def run_source() -> str:
+    """The phase driver (``contact_initial``, ``contact_start``, ``contact_integrate``), shared by
+    every contact model's export: the including file includes a model first and defines
+    ``CONTACT_SLIDES`` and ``CONTACT_ROLLS``."""
+    return render("contact/run.c.j2")
+
+
 def generated_sources() -> dict[str, str]:
-    """Every shape and law's C source and the phase loop they share, keyed by their paths under
-    ``generated/``."""
+    """Every shape and law's C source, the phase loop they share and the phase driver, keyed by
+    their paths under ``generated/``."""
     out = {f"contact/contact_{shape}_{law}.c": source(shape, law) for shape in SHAPES for law in LAWS}
     out[f"contact/{LOOP}"] = loop_source()
+    out[f"contact/{RUN}"] = run_source()
     return out
+
+
+def shipped_text(name: str, fallback) -> str:
+    """``generated/contact/<name>`` as ``make derive`` wrote it, or ``fallback()`` rendered now."""
+    path = GENERATED / "contact" / name
+    return path.read_text(encoding="utf-8") if path.is_file() else fallback()
 
 
 def shipped_source(shape: str, law: str) -> str | None:

@@ -91,6 +91,11 @@ class ContactResult:
     model: str = ""
     effects: tuple = (GRAVITY, "contact")
 
+    @property
+    def conserves_energy(self) -> bool:
+        """Whether the physics keeps E (frictionless or rolling): then its change is drift."""
+        return "energy" in self.integrals
+
     def plot_to(self, f, fmt: str = "png") -> None:
         """Draw the result's page (:func:`plot_page`) into the file object ``f``."""
         plot_page(self, f, fmt)

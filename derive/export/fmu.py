@@ -24,38 +24,15 @@ from __future__ import annotations
 
 import hashlib
 import os
-import platform
-import subprocess
-import sys
-import tempfile
-import zipfile
-from dataclasses import dataclass
-from pathlib import Path
 from xml.sax.saxutils import escape
 
 from derive.codegen.render import TEMPLATES, c_double, environment
-from derive.errors import CompilerError, SceneError
+from derive.errors import SceneError
 from derive.export import bundle as bundles
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
-from derive.runtime.cbuild import compiler
+from derive.export.fmi import HEADERS, UNITS, Var, archive, version, zip_files
 from derive.sim.outputs import check_paths, write_all
-
-HEADERS = ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h")
-
-#: The units the FMU's variables may carry, as SI base-unit exponents.
-UNITS = {
-    "rad": (("rad", 1),),
-    "rad/s": (("rad", 1), ("s", -1)),
-    "s": (("s", 1),),
-    "kg": (("kg", 1),),
-    "m": (("m", 1),),
-    "m/s^2": (("m", 1), ("s", -2)),
-    "kg m^2": (("kg", 1), ("m", 2)),
-    "kg m^2/s": (("kg", 1), ("m", 2), ("s", -1)),
-    "N m s": (("kg", 1), ("m", 2), ("s", -1)),
-    "J": (("kg", 1), ("m", 2), ("s", -2)),
-    "kg^2 m^4/s^2": (("kg", 2), ("m", 4), ("s", -2)),
-}
+from derive.sim.scene import contact_data
 
 #: Solver settings shown as parameters (``simulate.<name>``); the rest keep the scene's value.
 _SETTINGS = {"rtol": "", "atol": "", "max_steps": "", "h": "s"}
@@ -64,24 +41,6 @@ _SETTING_DOCS = {"rtol": "relative tolerance of each step's solve",
                  "max_steps": "step budget of each communication step",
                  "h": "the method's fixed step (each communication step is split into "
                       "ceil(dt/h) equal steps)"}
-
-
-@dataclass
-class Var:
-    """One ScalarVariable: ``vr`` its value reference, ``kind``/``index`` where fmu.c keeps it."""
-
-    name: str
-    vr: int
-    kind: str
-    index: int
-    type: str
-    causality: str | None
-    variability: str
-    initial: str | None
-    start: str | None
-    unit: str
-    doc: str
-    derivative: int | None = None
 
 
 def variables(b: Bundle) -> list[Var]:
@@ -133,29 +92,6 @@ def model_identifier(b: Bundle) -> str:
     return f"{b.name}_{b.method}"
 
 
-def _platform() -> tuple[str, str]:
-    """(binaries folder, shared-library suffix) of this machine, as FMI 2.0 names them."""
-    bits = "64" if sys.maxsize > 2**32 else "32"
-    system = platform.system()
-    if system == "Linux":
-        return f"linux{bits}", ".so"
-    if system == "Darwin":
-        return f"darwin{bits}", ".dylib"
-    raise SceneError(f"derive export: --fmu: building an FMU on {system} is not supported "
-                     f"(Linux or macOS)")
-
-
-def _version() -> str:
-    """derive's version for generationTool (the distribution's; the package root is a layer
-    above this stage)."""
-    from importlib.metadata import PackageNotFoundError, packages_distributions, version
-
-    try:    # the distribution that installs the package derive (derive.DISTRIBUTION)
-        return version(packages_distributions().get("derive", ["derive-rigid-body"])[0])
-    except PackageNotFoundError:
-        return "(source checkout)"
-
-
 def sources(b: Bundle) -> tuple[dict[str, str], str]:
     """(the FMU's ``sources/`` files, modelDescription.xml)."""
     P, ID = b.name, model_identifier(b)
@@ -186,7 +122,7 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     title = " ".join((b.scene.title or "").split())
     adaptive = any(name == "rtol" for _, name, _ in b.driver)
     xml = env.get_template("fmi2/modelDescription.xml.j2").render(
-        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=guid, version=_version(),
+        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=guid, version=version(),
         description=(f"{P} ({b.desc.formulation}; effects: {', '.join(b.desc.effects) or 'none'}) "
                      f"with {b.method}, exported by derive"),
         units=[(u, UNITS[u]) for u in units], t_end=c_double(b.t_end),
@@ -201,38 +137,7 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
 def build(b: Bundle) -> dict[str, bytes]:
     """Every file of the FMU: ``{path in the archive: bytes}``; compiles the binary."""
     src, xml = sources(b)
-    folder, suffix = _platform()
-    ID = model_identifier(b)
-    with tempfile.TemporaryDirectory(prefix="derive-fmu-") as tmp:
-        work = Path(tmp)
-        for name, text in src.items():
-            (work / name).write_text(text, encoding="utf-8")
-        lib = work / f"{ID}{suffix}"
-        cmd = [*compiler(), "-std=c99", "-O2", "-fPIC", "-shared",
-               "-Werror=implicit-function-declaration", "-o", str(lib), "fmu.c", "-lm"]
-        try:
-            proc = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
-        except OSError as exc:
-            raise CompilerError(f"no working C compiler: {cmd[0]!r} cannot be run "
-                                f"({exc.strerror or exc}); install gcc or set CC") from None
-        if proc.returncode != 0:
-            head = "\n".join(proc.stderr.strip().splitlines()[:20])
-            raise CompilerError(f"compiling the FMU failed ({' '.join(cmd)}):\n{head}")
-        binary = lib.read_bytes()
-    files = {"modelDescription.xml": xml.encode("utf-8"),
-             f"binaries/{folder}/{ID}{suffix}": binary}
-    files.update({f"sources/{name}": text.encode("utf-8") for name, text in src.items()})
-    return files
-
-
-def _zip(files: dict[str, bytes], fh) -> None:
-    """The archive, byte-stable: entries in a fixed order with a fixed time stamp."""
-    with zipfile.ZipFile(fh, "w", compression=zipfile.ZIP_DEFLATED) as zf:
-        for name in sorted(files, key=lambda n: (n != "modelDescription.xml", n)):
-            info = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
-            info.external_attr = 0o644 << 16
-            info.compress_type = zipfile.ZIP_DEFLATED
-            zf.writestr(info, files[name])
+    return archive(src, xml, model_identifier(b))
 
 
 def export_fmu(scene, out, method: str | None = None) -> Bundle:
@@ -267,7 +172,14 @@ def export_fmu(scene, out, method: str | None = None) -> Bundle:
     check_paths([name], inputs=[source] if source else [])
     if not name.lower().endswith(".fmu"):
         raise SceneError(f"{name}: --fmu: the file name must end in .fmu")
-    b = bundles.make(scene, method)
-    files = build(b)
-    write_all({name: lambda fh: _zip(files, fh)}, inputs=[b.scene.source] if source else [])
+    found = contact_data(scene) if not isinstance(scene, bundles.Scene) else None
+    if found is not None:  # a top on a table: co-simulation of the phases and their events
+        from derive.export import contact as contact_export, contact_fmu  # SymPy, SciPy: only these
+
+        b = contact_export.bundle(found, method)
+        files = archive(*contact_fmu.sources(b), contact_fmu.model_identifier(b))
+    else:
+        b = bundles.make(scene, method)
+        files = build(b)
+    write_all({name: lambda fh: zip_files(files, fh)}, inputs=[b.scene.source] if source else [])
     return b

@@ -25,6 +25,7 @@ from derive.export import bundle as bundles
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
 from derive.methods.registry import method as compiled_method
 from derive.sim.outputs import umask
+from derive.sim.scene import contact_data
 
 POLE_NOTES = {
     0: "none: the formulation has no singular set, or the scene asked for it",
@@ -134,8 +135,15 @@ def export_folder(scene, out, method: str | None = None) -> Bundle:
     """
     out = Path(out)
     check_out(out)  # before the work
-    b = bundles.make(scene, method)
-    texts = files(b)
+    found = contact_data(scene) if not isinstance(scene, bundles.Scene) else None
+    if found is not None:  # a top on a table: its evaluator and the phase driver
+        from derive.export import contact as contact_export  # SymPy and SciPy: only for these
+
+        b = contact_export.bundle(found, method)
+        texts = contact_export.files(b.scene)
+    else:
+        b = bundles.make(scene, method)
+        texts = files(b)
     parent = out.absolute().parent
     try:
         parent.mkdir(parents=True, exist_ok=True)

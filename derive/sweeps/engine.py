@@ -67,7 +67,7 @@ from derive.sweeps.cluster import _dask, check_engine
 from derive.sweeps.local import _in_process, _local
 from derive.sweeps.points import _runnable
 from derive.sweeps.result import SweepResult, write
-from derive.sweeps.spec import input_files, load
+from derive.sweeps.spec import contact_sweep, input_files, load
 from derive.sweeps.tasks import _chunks, _cpus
 
 
@@ -118,6 +118,13 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     """
     source = os.fspath(spec) if isinstance(spec, (str, os.PathLike)) else "<sweep>"
     scheduler = check_engine(source, workers, scheduler, scheduler_timeout, dashboard)
+    found = contact_sweep(spec)  # -- contact hook: a top on a table, run by derive.sweeps.contact --
+    if found is not None:
+        if saveat is not None:
+            raise SceneError(f"{source}: saveat: a sweep over a top on a table keeps its measures only")
+        from derive.sweeps.contact import sweep as run_contact  # SymPy and SciPy: only for these
+
+        return run_contact(found, workers=workers, scheduler=scheduler, add_measure=add_measure)
     sp = load(spec)
     extra = final_measures(saveat, sp.source)
     if extra:

@@ -4,6 +4,7 @@ with their tables and units, from the effects registry; and the params of the us
 the scene (their units are the user's business)."""
 from __future__ import annotations
 
+from derive.contact.scene import GRAVITY
 from derive.symbolic import effects
 from derive.symbolic.effects import USER_TABLES
 
@@ -24,9 +25,22 @@ def variable_keys() -> dict:
     return out
 
 
+def contact_keys() -> dict:
+    """{dotted key: (table, key, index or None, unit)} of what a point of a sweep over a top on
+    a table (a ``[contact]`` scene) may vary."""
+    out = {k: v for k, v in variable_keys().items() if k.startswith(("body.", "initial."))}
+    out.update({f"{GRAVITY}.M": (GRAVITY, "M", None, "kg"), f"{GRAVITY}.g": (GRAVITY, "g", None, "m/s^2")})
+    for name, unit in (("radius", "m"), ("offset", "m"), ("mu", ""), ("regularization", "m/s"),
+                       ("restitution", "")):
+        out[f"contact.{name}"] = ("contact", name, None, unit)
+    for name in ("vx", "vy"):
+        out[f"initial.{name}"] = ("initial", name, None, "m/s")
+    return out
+
+
 def unit_of(key: str) -> str:
     """The SI unit of a dotted scene key a sweep may vary ('' if it has none)."""
-    found = variable_keys().get(key)
+    found = variable_keys().get(key) or contact_keys().get(key)
     return found[3] if found else ""
 
 

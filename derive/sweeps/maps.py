@@ -1,7 +1,8 @@
 """Pictures of a sweep: a map (2-D grid) or a line (1-D) of one measure, with the boundary the
 analysis predicts drawn over it where it knows one.
 
-Predictions (the heavy symmetric top, I1 = I2, centre of mass on axis 3, no damping; released
+Predictions (a top on a table: the tippe top's inversion condition, :func:`_contact_lines`;
+the heavy symmetric top, I1 = I2, centre of mass on axis 3, no damping; released
 with rates α̇₀, γ̇₀ so that p_γ = I₃ ω̃₃ = I₃ (α̇₀ cos β₀ + γ̇₀)):
 
 * sleeping-top threshold: the upright spin is stable when p_γ² > 4 M g l I₁, i.e. on the spin
@@ -39,7 +40,10 @@ SYMBOLS = {"initial.alpha": "α₀", "initial.beta": "β₀", "initial.gamma": "
            "initial.alpha_dot": "α̇₀", "initial.beta_dot": "β̇₀", "initial.gamma_dot": "γ̇₀",
            "initial.omega.0": "ω̃₁(0)", "initial.omega.1": "ω̃₂(0)", "initial.omega.2": "ω̃₃(0)",
            "body.I1": "I₁", "body.I2": "I₂", "body.I3": "I₃",
-           "gravity.M": "M", "gravity.g": "g", "gravity.l": "l", "damping.c": "c"}
+           "gravity.M": "M", "gravity.g": "g", "gravity.l": "l", "damping.c": "c",
+           "contact.radius": "r", "contact.offset": "s", "contact.mu": "μ",
+           "contact.regularization": "ε", "contact.restitution": "e",
+           "initial.vx": "v_x(0)", "initial.vy": "v_y(0)"}
 
 
 def symbol(key: str) -> str:
@@ -98,7 +102,9 @@ def _title(res, measure: str, n: int, failed: int) -> str:
 def _heavy_top(scene):
     """(I1, I3, M g l, α̇₀) when the scene is a heavy symmetric top (a symmetric body whose
     effects are all conservative and axisymmetric, with M, g, l: the Lagrange top), else None."""
-    if scene is None or not scene.initial.has_rates or not has_routh(scene.symmetric, scene.effects):
+    if scene is None or not hasattr(scene, "initial"):  # a top on a table: _contact_lines
+        return None
+    if not scene.initial.has_rates or not has_routh(scene.symmetric, scene.effects):
         return None
     v = scene.param_values()
     if not {"M", "g", "l"} <= set(v):
@@ -118,6 +124,20 @@ def _spin_curves(res, beta):
         steady = np.where(cb > 0, 2 * np.sqrt(mgl * I1 * cb) / I3 - ad * cb, np.nan)
     curves["steady precession exists: p_γ² = 4MglI₁cos β"] = steady
     return curves
+
+
+def _contact_lines(ax, res, keys: dict) -> None:
+    """The tippe top's inversion condition over a map that varies the ball's offset s = αr (and
+    not its radius or moments): Jellett's integral lets an axisymmetric body on a ball turn
+    over only when 1 − α < I₁/I₃ < 1 + α, i.e. beyond s = r |I₁/I₃ − 1| (white line)."""
+    sc = res.scene
+    if (sc is None or not hasattr(sc, "shape") or sc.shape != "sphere" or not sc.symmetric
+            or "contact.offset" not in keys or {"contact.radius", "body.I1", "body.I3"} & set(keys)):
+        return
+    s = sc.radius * abs(sc.I1 / sc.I3 - 1)
+    label = f"inversion possible beyond s = r|I₁/I₃ − 1| = {s:.4g} m"
+    (ax.axvline if keys["contact.offset"] == "x" else ax.axhline)(s, color="w", ls="-", lw=1.6,
+                                                                   label=label)
 
 
 def sweep_figure(res, measure: str | None = None):
@@ -194,6 +214,7 @@ def sweep_figure(res, measure: str | None = None):
                 ax.plot(xs, ys, style, lw=1.6, label=label)
             ax.set_xlim(x.min(), x.max())
             ax.set_ylim(y.min(), y.max())
+        _contact_lines(ax, res, keys)
         handles, labels = ax.get_legend_handles_labels()
         if handles or marks:
             # A dark box: the predicted curves are white (they are drawn over the colour map).

@@ -15,7 +15,10 @@ Contract of an entry (:class:`Measure`):
      :func:`derive.methods.registry.measure_window`);
    * ``"stats"``: the solver's statistics record (``nfev``);
    * ``"final"``: the outputs at t_end (the output map, in C);
-   * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min).
+   * ``"slots"``: a ``formula`` of the accumulators (``nutation`` = beta_max − beta_min);
+   * ``"contact"``: a top on a table's run (:mod:`derive.sweeps.contact`), its ``contact``
+     function of the run's result. Only a sweep over a ``[contact]`` scene takes them, and it
+     takes only the measures that have a ``contact`` function (``nfev`` too).
 3. ``options``: {option: (default, unit, one-line meaning)} — read from the sweep file's
    ``[measure.<name>]`` table. A number is passed to the compiled loop through ``config``
    (index ``CONFIG``: ``time_to_tilt``'s ``angle``); a name (``choices`` lists the allowed
@@ -105,6 +108,7 @@ class Measure:
     options: dict = field(default_factory=dict)
     needs: tuple = ()  # work flags of the compiled loop (CONFIG): "steps", "extrema", "flip_time", ...
     choices: dict = field(default_factory=dict)  # {option: allowed names} of a named option
+    contact: object = None  # a top on a table's run -> the value (derive.sweeps.contact)
 
     @property
     def columns(self) -> tuple[str, ...]:
@@ -140,12 +144,72 @@ REGISTRY: dict[str, Measure] = {m.name: m for m in (
                                   "named for every point")},
             choices={"integral": ("case", *(i.name for i in C_INTEGRALS))}),
     Measure("nfev", "", "right-hand-side evaluations (dop853: the dense stages included, formed "
-            "only on the steps a search reads; taylor: its steps, one jet each)", "stats"),
+            "only on the steps a search reads; taylor: its steps, one jet each)", "stats",
+            contact=lambda r: r.nfev),
     Measure("final_state", "", "alpha, beta, gamma, omega1..3 at t_end (alpha, gamma unwrapped "
             "from the start alone: equal to a sampled run's modulo 2 pi)", "final"),
 )}
 
 DEFAULT = ("beta_max", "beta_min", "energy_drift", "nfev")
+
+
+def _first_past(t: np.ndarray, v: np.ndarray, dv: np.ndarray, level: float) -> float:
+    """The first time ``v`` reaches ``level`` from below (NaN: never): between the two samples
+    around it, the root of the cubic Hermite interpolant of v and its rate ``dv`` (an error of
+    order h⁴ in the sample spacing h), found by bisection."""
+    above = np.flatnonzero(v >= level)
+    if not above.size:
+        return math.nan
+    k = int(above[0])
+    if k == 0:
+        return float(t[0])
+    t0, h = float(t[k - 1]), float(t[k] - t[k - 1])
+    y0, y1, m0, m1 = v[k - 1] - level, v[k] - level, dv[k - 1] * h, dv[k] * h
+
+    def cubic(x):
+        return ((2 * x**3 - 3 * x**2 + 1) * y0 + (x**3 - 2 * x**2 + x) * m0
+                + (-2 * x**3 + 3 * x**2) * y1 + (x**3 - x**2) * m1)
+
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if cubic(mid) < 0 else (lo, mid)
+    return t0 + h * hi
+
+
+def _tilt_rate(r) -> np.ndarray:
+    """β̇ = ω̃₁ sin γ + ω̃₂ cos γ (z-y-z, ω̃ in body axes)."""
+    return r.omega[:, 0] * np.sin(r.gamma) + r.omega[:, 1] * np.cos(r.gamma)
+
+
+def _relative_drift(v) -> float:
+    return math.nan if v is None else float(np.max(np.abs(v - v[0])) / (abs(v[0]) or 1.0))
+
+
+#: A top on a table's measures (``reads = "contact"``), from its run's samples and switches;
+#: the tilt is the z-y-z β of body axis 3 from the vertical (θ of the tippe-top literature).
+CONTACT_MEASURES: dict[str, Measure] = {m.name: m for m in (
+    Measure("final_tilt", "rad", "the tilt beta at t_end", "contact", contact=lambda r: float(r.beta[-1])),
+    Measure("min_tilt", "rad", "the smallest tilt beta over the samples (how far it rose)", "contact",
+            contact=lambda r: float(np.min(r.beta))),
+    Measure("max_tilt", "rad", "the largest tilt beta over the samples", "contact",
+            contact=lambda r: float(np.max(r.beta))),
+    Measure("inverted", "", "1 if the tilt beta passed 90 degrees (the body turned over), else 0",
+            "contact", contact=lambda r: float(np.max(r.beta) >= math.pi / 2)),
+    Measure("time_to_invert", "s", "the first time beta passes 90 degrees, located between the "
+            "samples on the cubic through beta and its rate (NaN: never)", "contact",
+            contact=lambda r: _first_past(r.t, r.beta, _tilt_rate(r), math.pi / 2)),
+    Measure("switches", "", "phase switches (slide, roll, flight) located in the run", "contact",
+            contact=lambda r: len(r.switches)),
+    Measure("final_spin", "rad/s", "omega3, the spin about body axis 3, at t_end", "contact",
+            contact=lambda r: float(r.omega[-1, 2])),
+    Measure("jellett_drift", "", "max over the samples of |J - J0| / |J0| for Jellett's J = L.a "
+            "(NaN: the case has no Jellett integral)", "contact",
+            contact=lambda r: _relative_drift(r.integrals.get("jellett"))),
+)}
+REGISTRY.update(CONTACT_MEASURES)
+#: The measures of a contact sweep that names none.
+CONTACT_DEFAULT = ("final_tilt", "min_tilt", "switches", "nfev")
 
 
 def owner(column: str) -> str | None:

@@ -101,6 +101,33 @@ def input_files(spec) -> tuple:
     return (source, _scene_path(source, Path(source).resolve().parent, sc))
 
 
+def contact_sweep(spec) -> tuple[dict, str, Path] | None:
+    """(the sweep's data, its source, its folder) when the sweep ``spec`` (path, example name or
+    dict) names a scene with a ``[contact]`` table, else None (an unreadable sweep too: the
+    general reader reports it)."""
+    if isinstance(spec, Mapping):
+        data, source, folder = spec, "<sweep>", Path.cwd()
+    elif isinstance(spec, (str, os.PathLike)):
+        source = examples.resolve(os.fspath(spec), "sweep")
+        try:
+            data = read_toml(source, "sweep")
+        except SceneError:
+            return None
+        folder = Path(source).resolve().parent
+    else:
+        return None
+    sc = data.get("scene")
+    if isinstance(sc, str):
+        path = folder / sc
+        if "\0" in sc or not path.is_file():
+            return None
+        try:
+            return (data, source, folder) if "contact" in read_toml(str(path)) else None
+        except SceneError:
+            return None
+    return (data, source, folder) if isinstance(sc, Mapping) and "contact" in sc else None
+
+
 def load(spec) -> Spec:
     """Read and validate a sweep (path or dict); raises SceneError ``<file>: <key>: <what>``.
 
@@ -268,8 +295,11 @@ def _check_values(source, where, raw, distinct):
                 _fail(source, f"{where}.{key}", f"{float(v)!r} makes the scene invalid ({inner})")
 
 
-def _measures(source, data):
-    names, options = list(ms.DEFAULT), {}
+def _measures(source, data, contact: bool = False):
+    """The measures' names and options; ``contact``: a sweep over a ``[contact]`` scene, which
+    takes the measures with a ``contact`` function only (and the others never take those)."""
+    default = ms.CONTACT_DEFAULT if contact else ms.DEFAULT
+    names, options = list(default), {}
     if "measure" in data and "measures" in data:
         _fail(source, "measure", "give [measure] or measures, not both")
     if "measures" in data:
@@ -280,7 +310,7 @@ def _measures(source, data):
         table = data["measure"]
         if not isinstance(table, Mapping):
             _fail(source, "measure", "must be a table with names = [...]")
-        names = table.get("names", list(ms.DEFAULT))
+        names = table.get("names", list(default))
         where = "measure.names"
         extra = {k: v for k, v in table.items() if k != "names"}
     else:
@@ -293,6 +323,11 @@ def _measures(source, data):
     for n in names:
         if n not in ms.REGISTRY:
             _fail(source, where, f"unknown measure {n!r} (one of {', '.join(ms.REGISTRY)})")
+        if contact and ms.REGISTRY[n].contact is None:
+            _fail(source, where, f"{n!r} is not a measure of a top on a table (those: "
+                                 f"{', '.join(k for k, m in ms.REGISTRY.items() if m.contact)})")
+        if not contact and ms.REGISTRY[n].reads == "contact":
+            _fail(source, where, f"{n!r} measures a top on a table (a scene with [contact])")
     for n, opts in extra.items():
         if n not in ms.REGISTRY or not ms.REGISTRY[n].options:
             _fail(source, f"measure.{n}", "unknown key (a measure with options, e.g. time_to_tilt)")

@@ -1,7 +1,8 @@
 """Views of a motion: a Result and its scene's body in, an animation (GIF, MP4, HTML) out.
 
 Takes: a :class:`~derive.sim.simulation.Result` (the arrays ``t``, ``alpha``/``beta``/``gamma``,
-``omega``, ``axis``, ``L``) and its scene's body. Gives: the body's shape and the motion at the
+``omega``, ``axis``, ``L``) and its scene's body, or a top on a table's result (its body drawn
+on the plane with the contact's track, :mod:`~derive.sim.animate.table`). Gives: the body's shape and the motion at the
 frames (:mod:`~derive.sim.animate.motion`), the frames painted and written as GIF or MP4
 (:mod:`~derive.sim.animate.draw`), the self-contained HTML player, the object Jupyter shows
 inline and a Result's summary table (:mod:`~derive.sim.animate.page`). :func:`write` writes an
@@ -17,7 +18,7 @@ from __future__ import annotations
 import os
 
 from derive.errors import SceneError
-from derive.sim.animate import draw, motion, page
+from derive.sim.animate import draw, motion, page, table
 from derive.sim.outputs import check_paths, output_format, write_all
 
 #: Suffix -> format of ``derive animate -o``.
@@ -32,6 +33,16 @@ def check_output(path, inputs=()) -> str:
         draw.ffmpeg_path()
     check_paths([path], inputs=inputs)
     return fmt
+
+
+def on_table(res) -> bool:
+    """Whether ``res`` is a top on a table's run (it has the contact point's track)."""
+    return hasattr(res, "contact") and hasattr(res, "com")
+
+
+def _title(res) -> str:
+    scene = res.scene
+    return (scene.title or os.path.basename(str(scene.source))) if scene is not None else ""
 
 
 def prepare(res, fps=None, speed=None):
@@ -74,6 +85,10 @@ def write(res, path, fps=None, speed=None):
     inputs = [source] if source and source != "<dict>" else []
     fmt = check_output(path, inputs)
     motion.check_settings(fps, speed)
+    if on_table(res):  # a top on a table: the body at its place on the plane, the track on it
+        fr, writer = table.writer(res, fmt, fps, speed, _title(res))
+        write_all({path: writer}, inputs=inputs)
+        return fr
     fr, mesh = prepare(res, fps, speed)
     if fmt == "html":
         text = page.page_html(fr, mesh).encode("utf-8")
@@ -92,6 +107,9 @@ def animate(res, path=None, fps=None, speed=None):
     if path is not None:
         write(res, path, fps, speed)
         return path
+    if on_table(res):
+        fr = table.frames(res, fps, speed, _title(res))
+        return page.Animation(table.page_html(fr, table.body_mesh(res.scene)), fr)
     fr, mesh = prepare(res, fps, speed)
     return page.Animation(page.page_html(fr, mesh), fr)
 

@@ -173,27 +173,30 @@ def pictures(frames: Frames, mesh: Mesh):
         yield painter.draw(k)
 
 
-def palette(frames: Frames, mesh: Mesh):
-    """One palette of :data:`GIF_COLORS` colours for every frame, from a few frames spread over
-    the animation: a GIF whose frames share it stores only what changed from frame to frame."""
+def encode_gif(fh, picture, n: int, fps: int, keep=()) -> None:
+    """A looping GIF of the ``n`` frames ``picture(k)`` (RGB arrays) into the binary file ``fh``
+    (Pillow): one palette of :data:`GIF_COLORS` colours for every frame, from a few frames spread
+    over the animation (a GIF whose frames share it stores only what changed), no dithering
+    (flat colours compress well). ``keep``: RGB colours (0-255) the palette must hold, such as
+    thin lines' that the palette of a few frames would merge into their neighbours."""
     from PIL import Image
 
-    painter = Painter(frames, mesh)
-    picks = np.unique(np.linspace(0, len(frames.t) - 1, min(6, len(frames.t))).round().astype(int))
-    strip = np.vstack([painter.draw(int(k)) for k in picks])
-    return Image.fromarray(strip).quantize(GIF_COLORS, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    picks = np.unique(np.linspace(0, n - 1, min(6, n)).round().astype(int))
+    strip = np.vstack([picture(int(k)) for k in picks])
+    if len(keep):
+        width = strip.shape[1]
+        swatches = np.repeat(np.asarray(keep, dtype=strip.dtype)[:, None, :], width, axis=1)
+        strip = np.vstack([strip, np.repeat(swatches, strip.shape[0] // (4 * len(keep)) + 1, axis=0)])
+    pal = Image.fromarray(strip).quantize(GIF_COLORS, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    images = (Image.fromarray(picture(k)).quantize(palette=pal, dither=Image.Dither.NONE) for k in range(n))
+    first = next(images)
+    first.save(fh, format="GIF", save_all=True, append_images=images, loop=0,
+               duration=1000 / fps, disposal=1)
 
 
 def write_gif(fh, frames: Frames, mesh: Mesh) -> None:
-    """The animation as a looping GIF into the binary file ``fh`` (Pillow), one palette for all
-    frames (:func:`palette`), no dithering (flat colours compress well)."""
-    from PIL import Image
-
-    pal = palette(frames, mesh)
-    images = (Image.fromarray(a).quantize(palette=pal, dither=Image.Dither.NONE) for a in pictures(frames, mesh))
-    first = next(images)
-    first.save(fh, format="GIF", save_all=True, append_images=images, loop=0,
-               duration=1000 / frames.fps, disposal=1)
+    """The animation as a looping GIF into the binary file ``fh`` (:func:`encode_gif`)."""
+    encode_gif(fh, Painter(frames, mesh).draw, len(frames.t), frames.fps)
 
 
 def ffmpeg_path() -> str:
@@ -205,19 +208,20 @@ def ffmpeg_path() -> str:
     return found
 
 
-def write_mp4(fh, frames: Frames, mesh: Mesh) -> None:
-    """The animation as H.264 MP4 into the binary file ``fh``, encoded by ffmpeg (to a
-    temporary file first: MP4's index goes at its start, which needs a seekable file)."""
+def encode_mp4(fh, pictures_, fps: int) -> None:
+    """H.264 MP4 of the RGB arrays ``pictures_`` (an iterable) into the binary file ``fh``,
+    encoded by ffmpeg (to a temporary file first: MP4's index goes at its start, which needs a
+    seekable file)."""
     exe = ffmpeg_path()
     with tempfile.TemporaryDirectory(prefix="derive-animate-") as tmp:
         out = os.path.join(tmp, "out.mp4")
         cmd = [exe, "-nostdin", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24",
-               "-s", f"{PIXELS[0]}x{PIXELS[1]}", "-r", str(frames.fps), "-i", "-", "-an", "-c:v", "libx264",
+               "-s", f"{PIXELS[0]}x{PIXELS[1]}", "-r", str(fps), "-i", "-", "-an", "-c:v", "libx264",
                "-pix_fmt", "yuv420p", "-movflags", "+faststart", out]
         proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stderr=subprocess.PIPE)
         try:
             try:
-                for a in pictures(frames, mesh):
+                for a in pictures_:
                     proc.stdin.write(a.tobytes())
                 proc.stdin.close()
             except BrokenPipeError:
@@ -231,6 +235,11 @@ def write_mp4(fh, frames: Frames, mesh: Mesh) -> None:
                 proc.wait()
         with open(out, "rb") as f:
             shutil.copyfileobj(f, fh)
+
+
+def write_mp4(fh, frames: Frames, mesh: Mesh) -> None:
+    """The animation as H.264 MP4 into the binary file ``fh`` (:func:`encode_mp4`)."""
+    encode_mp4(fh, pictures(frames, mesh), frames.fps)
 
 
 def png_bytes(frames: Frames, mesh: Mesh, k: int) -> bytes:

@@ -1,0 +1,217 @@
+"""Sweeps over a top on a table: one ``[contact]`` scene, many numbers, each run measured.
+
+The sweep file is the one every sweep has (``scene``, ``[vary]`` or ``[random]``,
+``[measure]``); its scene has a ``[contact]`` table. The keys a point may vary are
+:func:`derive.sweeps.keys.contact_keys` (``initial.omega.2``, ``contact.offset``,
+``contact.mu``, ``contact.radius``, …); the measures are the registry's entries with a
+``contact`` function (:data:`derive.sweeps.measures.CONTACT_MEASURES` and ``nfev``).
+
+Each point is the base scene with its numbers, validated by the scene's own rules and run by
+:func:`derive.contact.simulate.simulate` (the compiled phase loop, the shape and law's kernel
+loaded once per process). Every distinct value of a grid (both bounds of a random range) is
+checked first, substituted alone into the base scene: a value the scene refuses is a bad sweep
+(SceneError naming ``vary.<key>``). A point whose combination is refused (the moments' triangle
+inequality) or whose run fails is not a bad sweep: its ``status`` says why and its measures are
+NaN. The points run in this process, or with ``workers`` in that many worker processes (the
+same numbers: each point's run depends on its own numbers only); a Dask scheduler is not used
+for these sweeps.
+"""
+from __future__ import annotations
+
+import copy
+from collections.abc import Mapping
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import numpy as np
+
+from derive.contact.scene import read as read_scene
+from derive.contact.simulate import simulate
+from derive.errors import IntegrationError, SceneError
+from derive.sim.scene import read_toml
+from derive.sweeps import measures as ms
+from derive.sweeps.keys import contact_keys
+from derive.sweeps.points import _fail, _real
+from derive.sweeps.result import SweepResult
+from derive.sweeps.spec import _SPEC_KEYS, _flatten, _grid_values, _measures, _scene_path
+
+
+def _set(data: dict, key: str, value: float) -> dict:
+    """A copy of the scene ``data`` with the dotted key set (``initial.omega.2``: a component)."""
+    table, name, index, _ = contact_keys()[key]
+    out = dict(data)
+    t = dict(out.get(table, {}))
+    if index is None:
+        t[name] = value
+    else:
+        vec = list(t[name])
+        vec[index] = value
+        t[name] = vec
+    out[table] = t
+    return out
+
+
+def _check_key(source: str, where: str, key: str, raw: dict) -> None:
+    keys = contact_keys()
+    if key.startswith("simulate.") or key == "title":
+        _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
+    if key not in keys:
+        _fail(source, where, "not a key of a top on a table that takes a number (e.g. "
+                             "initial.omega.2, initial.beta, contact.offset, contact.mu)")
+    table, name, index, _ = keys[key]
+    init = raw.get("initial", {})
+    if index is not None and "omega" not in init:
+        _fail(source, where, "the scene gives Euler-angle rates, not omega")
+    if name.endswith("_dot") and "omega" in init:
+        _fail(source, where, "the scene gives omega, not Euler-angle rates")
+
+
+def _points(source: str, data: dict, raw: dict):
+    """(keys, grid shape or None, {key: (N,) column}), every distinct value checked."""
+    if ("vary" in data) == ("random" in data):
+        _fail(source, "vary", "give [vary] (a grid) or [random] (random points), one of them")
+    if "vary" in data:
+        table = data["vary"]
+        if not isinstance(table, Mapping) or not table:
+            _fail(source, "vary", "must be a table of dotted scene keys")
+        leaves = _flatten(table, "", lambda v: bool({"from", "to", "num", "values"} & set(v)),
+                          source, "vary")
+        distinct = {}
+        for key, rule in leaves.items():
+            _check_key(source, f"vary.{key}", key, raw)
+            distinct[key] = _grid_values(source, f"vary.{key}", rule)
+        keys = tuple(distinct)
+        shape = tuple(len(v) for v in distinct.values())
+        grids = np.meshgrid(*distinct.values(), indexing="ij")
+        cols = {k: g.ravel(order="C").copy() for k, g in zip(keys, grids)}
+        where = "vary"
+    else:
+        table = data["random"]
+        if not isinstance(table, Mapping):
+            _fail(source, "random", "must be a table")
+        n, seed = table.get("n"), table.get("seed")
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 10**6:
+            _fail(source, "random.n", f"must be an integer from 1 to 1e6, got {n!r}")
+        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+            _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
+        rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
+        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)), source, "random")
+        if not leaves:
+            _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
+        rng = np.random.default_rng(seed)
+        cols, distinct = {}, {}
+        for key, rule in leaves.items():
+            _check_key(source, f"random.{key}", key, raw)
+            if not isinstance(rule, Mapping) or set(rule) != {"low", "high"}:
+                _fail(source, f"random.{key}", "must be { low = a, high = b }")
+            lo, hi = _real(rule["low"]), _real(rule["high"])
+            if lo is None or hi is None or not lo <= hi:
+                _fail(source, f"random.{key}", f"low and high must be finite numbers with low <= high, "
+                                               f"got {dict(rule)}")
+            cols[key] = rng.uniform(lo, hi, n)
+            distinct[key] = np.array([lo, hi])
+        keys, shape, where = tuple(cols), None, "random"
+    for key, values in distinct.items():
+        for v in np.unique(values):
+            try:
+                read_scene(_set(raw, key, float(v)))
+            except SceneError as exc:
+                inner = str(exc).split(": ", 2)[-1]
+                _fail(source, f"{where}.{key}", f"{float(v)!r} makes the scene invalid ({inner})")
+    return keys, shape, cols
+
+
+def _run_point(raw: dict, values: dict, names: tuple) -> tuple[str, list]:
+    """(status, [value per measure column]) of one point."""
+    data = raw
+    for key, v in values.items():
+        data = _set(data, key, v)
+    try:
+        res = simulate(read_scene(data))
+    except SceneError as exc:
+        return str(exc).split(": ", 1)[-1], [np.nan] * len(names)
+    except IntegrationError as exc:
+        return str(exc), [np.nan] * len(names)
+    return "ok", [float(ms.REGISTRY[n].contact(res)) for n in names]
+
+
+def _run_chunk(raw: dict, keys: tuple, rows: list, names: tuple) -> list:
+    return [_run_point(raw, dict(zip(keys, row)), names) for row in rows]
+
+
+def sweep(found: tuple[dict, str, Path], workers: int | None = None,
+          scheduler: str | None = None, add_measure: str | None = None) -> SweepResult:
+    """Run a sweep over a ``[contact]`` scene (``found``: :func:`derive.sweeps.spec.contact_sweep`'s answer).
+
+    Parameters
+    ----------
+    found : (dict, str, Path)
+        The sweep's data, its source and its folder
+        (:func:`derive.sweeps.spec.contact_sweep`).
+    workers : int, optional
+        Run the points in that many worker processes (default: in this process).
+    scheduler : str, optional
+        Refused: a Dask cluster does not run these sweeps.
+    add_measure : str, optional
+        A measure added to the file's list (the column to plot).
+
+    Returns
+    -------
+    SweepResult
+        A row per point (grid points in C order, the first key slowest), a column per varied
+        key and per measure, ``status`` "ok" or why the point has no values.
+
+    Raises
+    ------
+    SceneError
+        A bad sweep (``<file>: <key>: <what>``).
+    """
+    data, source, folder = found
+    if scheduler is not None:
+        raise SceneError(f"{source}: --scheduler: a sweep over a top on a table runs on this "
+                         f"machine (--workers N for processes)")
+    for k in data:
+        if k not in _SPEC_KEYS:
+            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
+    sc = data["scene"]
+    files = (source,) if source != "<sweep>" else ()
+    if isinstance(sc, str):
+        path = _scene_path(source, folder, sc)
+        files += (path,)
+        raw, scene_source = read_toml(path), path
+    else:
+        raw, scene_source = copy.deepcopy(dict(sc)), source
+    try:
+        base = read_scene(raw, scene_source)
+    except SceneError as exc:
+        raise SceneError(str(exc) if scene_source != source else
+                         f"{source}: scene.{str(exc).split(': ', 1)[-1]}") from None
+    if "title" in data and "title" not in raw and isinstance(data["title"], str):
+        raw["title"] = data["title"]
+    keys, shape, cols = _points(source, data, raw)
+    names, _ = _measures(source, data, contact=True)
+    if add_measure is not None:
+        if add_measure not in ms.REGISTRY or ms.REGISTRY[add_measure].contact is None:
+            raise SceneError(f"{source}: --measure: {add_measure!r} is not a measure of a top on a table")
+        names = tuple(dict.fromkeys((*names, add_measure)))
+    n = len(cols[keys[0]])
+    rows = np.column_stack([cols[k] for k in keys]).tolist()
+    if workers is None or workers <= 1 or n == 1:
+        out = _run_chunk(raw, keys, rows, names)
+    else:
+        size = -(-n // workers)
+        parts = [rows[i:i + size] for i in range(0, n, size)]
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            out = [r for part in pool.map(_run_chunk, [raw] * len(parts), [keys] * len(parts),
+                                          parts, [names] * len(parts)) for r in part]
+    values = np.array([v for _, v in out], dtype=float).reshape(n, len(names))
+    measures = {}
+    for j, name in enumerate(names):
+        col = values[:, j]
+        integer = name in ("switches", "nfev") and np.isfinite(col).all()
+        measures[name] = col.astype(np.int64) if integer else col
+    status = np.array([s for s, _ in out], dtype=str)
+    return SweepResult(params=cols, measures=measures, status=status, keys=keys, shape=shape,
+                       measure_names=names, title=raw.get("title", "") or "", source=source,
+                       model=f"contact_{base.shape}_{base.law}", scene=base, files=files,
+                       formulation=np.where(status == "ok", "contact", "").astype(str))
