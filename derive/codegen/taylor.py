@@ -15,8 +15,6 @@ by the lane. Adding a function adds its rule's file and its row of
 """
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derive.codegen import jet
@@ -131,7 +129,6 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
             f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx), **taylor_shared()}
 
 
-@functools.lru_cache(maxsize=1)
 def taylor_shared() -> dict[str, str]:
     """``derive_taylor_base.inc`` (the sizes and vector types a model's jet and output map are
     written against) and ``derive_taylor.inc`` (the Taylor methods' drivers: step-size control,
@@ -139,7 +136,8 @@ def taylor_shared() -> dict[str, str]:
     each for every model; a model's ``<model>_taylor.c`` defines its sizes as macros, includes
     the first, defines its jet, and includes the second."""
     base, drivers = TAYLOR_INCS
-    return {base: render("c/taylor_base.inc.j2"),
+    return {base: render("c/taylor_base.inc.j2", rules=rule_templates(),
+                         names=[r.name for r in jet.RULE_TABLE], lane=LANE),
             drivers: render("c/taylor.inc.j2", methods=[_method_context(m) for m in METHODS.values()])}
 
 

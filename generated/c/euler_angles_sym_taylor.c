@@ -5,7 +5,7 @@
  * The right-hand side is 25 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..5 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (EULER_ANGLES_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -64,11 +64,6 @@ static const int derive_euler_angles_sym_taylor_controlled[euler_angles_sym_NY] 
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_euler_angles_sym_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -76,59 +71,6 @@ static const int derive_euler_angles_sym_taylor_controlled[euler_angles_sym_NY] 
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_euler_angles_sym_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
-
-/* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static double derive_euler_angles_sym_taylor_tc_sqr(int n, const double *a)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += a[j] * a[n - j];
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += a[n / 2] * a[n / 2];
-    return s;
-}
-
-/* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static void derive_euler_angles_sym_taylor_tc_div(int n, const double *a, const double *b, double *q)
-{
-    double s = a[n];
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= b[j] * q[n - j];
-    q[n] = s / b[0];
-}
-
-/* s = sin(a), c = cos(a) together (s' = a' c, c' = -a' s):
- * s_n = sum_{j=1}^{n} j a_j c_{n-j} / n,  c_n = -sum_{j=1}^{n} j a_j s_{n-j} / n. */
-static void derive_euler_angles_sym_taylor_tc_sincos(int n, const double *a, double *s, double *c)
-{
-    double ss = 0.0, cc = 0.0, ja;
-    int j;
-    if (n == 0) {
-        s[0] = sin(a[0]);
-        c[0] = cos(a[0]);
-        return;
-    }
-    for (j = 1; j <= n; ++j) {
-        ja = j * a[j];
-        ss += ja * c[n - j];
-        cc += ja * s[n - j];
-    }
-    s[n] = ss / n;
-    c[n] = -cc / n;
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..5]. Returns 0, or 1 when a domain guard of the model fails at y (as euler_angles_sym_rhs does). */
@@ -144,30 +86,30 @@ static int derive_euler_angles_sym_taylor_jet(double t, const double *y, const d
         u[i][0] = y[i];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        derive_euler_angles_sym_taylor_tc_sincos(n, u[1], u[6], u[7]);
-        u[8][n] = derive_euler_angles_sym_taylor_tc_sqr(n, u[6]);
+        derive_tc_sincos(n, u[1], u[6], u[7]);
+        u[8][n] = derive_tc_sqr(n, u[6]);
         u[9][n] = I1 * u[3][n];
         u[10][n] = I3 * u[5][n];
         u[11][n] = I3 * u[3][n];
-        u[12][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[7], u[11]);
+        u[12][n] = derive_tc_mul(n, u[7], u[11]);
         u[13][n] = u[10][n] + u[12][n];
-        derive_euler_angles_sym_taylor_tc_div(n, u[4], u[6], u[14]);
+        derive_tc_div(n, u[4], u[6], u[14]);
         u[15][n] = x7 * u[14][n];
-        u[16][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[7], u[9]);
+        u[16][n] = derive_tc_mul(n, u[7], u[9]);
         u[17][n] = u[13][n] - 2 * u[16][n];
-        u[18][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[15], u[17]);
-        u[19][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[7], u[3]);
+        u[18][n] = derive_tc_mul(n, u[15], u[17]);
+        u[19][n] = derive_tc_mul(n, u[7], u[3]);
         u[20][n] = I1 * u[19][n];
         u[21][n] = -u[13][n] + u[20][n];
-        u[22][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[6], u[3]);
-        u[23][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[22], u[21]);
+        u[22][n] = derive_tc_mul(n, u[6], u[3]);
+        u[23][n] = derive_tc_mul(n, u[22], u[21]);
         u[24][n] = x7 * u[23][n];
-        u[25][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[8], u[9]);
-        u[26][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[7], u[10]);
-        u[27][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[8], u[3]);
+        u[25][n] = derive_tc_mul(n, u[8], u[9]);
+        u[26][n] = derive_tc_mul(n, u[7], u[10]);
+        u[27][n] = derive_tc_mul(n, u[8], u[3]);
         u[28][n] = I3 * u[27][n];
         u[29][n] = -u[11][n] - u[25][n] - u[26][n] + 2 * u[9][n] + u[28][n];
-        u[30][n] = derive_euler_angles_sym_taylor_tc_mul(n, u[15], u[29]);
+        u[30][n] = derive_tc_mul(n, u[15], u[29]);
         if (n == 0 && !((-DBL_EPSILON + u[8][0]) > 0))
             return 1;  /* outside the model's domain (see its description) */
         u[0][n + 1] = u[3][n] * inv;
@@ -192,7 +134,7 @@ static void derive_euler_angles_sym_taylor_jet_outputs(const double *p, int orde
     int j, n;
     (void)p;
     n = order;  /* the last order, of the nodes the outputs read */
-    derive_euler_angles_sym_taylor_tc_sincos(n, u[1], u[6], u[7]);
+    derive_tc_sincos(n, u[1], u[6], u[7]);
     for (n = 0; n <= order; ++n) {
         for (j = 0; j < euler_angles_sym_NY; ++j)
             w[n][j] = u[j][n];
@@ -335,68 +277,6 @@ static DERIVE_T_NOINLINE void derive_euler_angles_sym_taylor_outputs_block_trig(
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_euler_angles_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_euler_angles_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_euler_angles_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_T_W], double *u)
-{
-    derive_euler_angles_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(a[n - j]);
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += DERIVE_T_LV(a[n / 2]) * DERIVE_T_LV(a[n / 2]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_euler_angles_sym_taylor_tcl_div(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double (*q)[DERIVE_T_W])
-{
-    derive_euler_angles_sym_taylor_lanes_v s = DERIVE_T_LV(a[n]);
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= DERIVE_T_LV(b[j]) * DERIVE_T_LV(q[n - j]);
-    DERIVE_T_LV(q[n]) = s / DERIVE_T_LV(b[0]);
-}
-
-/* gcc 12 at -O3 with AVX-512, this helper inlined into the lanes' jet, warns of an iteration 29
- * of the j loop past an array; it does so with n bounded by an explicit test to n <= 29 too
- * (where j <= 29 and every index is within the arrays' 31 rows), and the lanes are checked bit
- * for bit against the scalar driver (tests/test_taylor_lanes.py): the warning is silenced here
- * alone. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
-#endif
-static inline void derive_euler_angles_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_T_W], double (*s)[DERIVE_T_W], double (*c)[DERIVE_T_W])
-{
-    derive_euler_angles_sym_taylor_lanes_v ss = {0}, cc = {0}, ja;
-    int j, lane_;
-    if (n == 0) {
-        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_) {
-            s[0][lane_] = sin(a[0][lane_]);
-            c[0][lane_] = cos(a[0][lane_]);
-        }
-        return;
-    }
-    for (j = 1; j <= n; ++j) {
-        ja = (double)j * DERIVE_T_LV(a[j]);
-        ss += ja * DERIVE_T_LV(c[n - j]);
-        cc += ja * DERIVE_T_LV(s[n - j]);
-    }
-    DERIVE_T_LV(s[n]) = ss / (double)n;
-    DERIVE_T_LV(c[n]) = -cc / (double)n;
-}
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
-
 /* derive_euler_angles_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -426,15 +306,15 @@ static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[]
             u[10][n][lane_] = I3[lane_] * u[5][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[11][n][lane_] = I3[lane_] * u[3][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_sincos(n, u[1], u[6], u[7]);
-        derive_euler_angles_sym_taylor_tcl_sqr(n, u[6], u[8][n]);
+        derive_tcl_sincos(n, u[1], u[6], u[7]);
+        derive_tcl_sqr(n, u[6], u[8][n]);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[11][n]);
-            derive_euler_angles_sym_taylor_lanes_v s1_ = DERIVE_T_LV(u[4][n]);
-            derive_euler_angles_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[9][n]);
-            derive_euler_angles_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[11][n]);
+            derive_lanes_v s1_ = DERIVE_T_LV(u[4][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[9][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[3][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[7][j_]) * DERIVE_T_LV(u[11][n - j_]);
                 s1_ -= DERIVE_T_LV(u[6][j_]) * DERIVE_T_LV(u[14][n - j_]);
@@ -447,10 +327,10 @@ static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[]
             DERIVE_T_LV(u[19][n]) = s3_;
         }
         {  /* 2 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[3][n]);
-            derive_euler_angles_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[10][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[10][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[6][j_]) * DERIVE_T_LV(u[3][n - j_]);
                 s1_ += DERIVE_T_LV(u[7][j_]) * DERIVE_T_LV(u[10][n - j_]);
@@ -469,12 +349,12 @@ static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[]
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[21][n][lane_] = -u[13][n][lane_] + u[20][n][lane_];
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_angles_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_angles_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[17][n]);
-            derive_euler_angles_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[21][n]);
-            derive_euler_angles_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[9][n]);
-            derive_euler_angles_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[17][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[21][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[9][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[3][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[15][j_]) * DERIVE_T_LV(u[17][n - j_]);
                 s1_ += DERIVE_T_LV(u[22][j_]) * DERIVE_T_LV(u[21][n - j_]);
@@ -492,7 +372,7 @@ static void derive_euler_angles_sym_taylor_jet_lanes(const double *t, double y[]
             u[28][n][lane_] = I3[lane_] * u[27][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[29][n][lane_] = -u[11][n][lane_] - u[25][n][lane_] - u[26][n][lane_] + 2 * u[9][n][lane_] + u[28][n][lane_];
-        derive_euler_angles_sym_taylor_tcl_mul(n, u[15], u[29], u[30][n]);
+        derive_tcl_mul(n, u[15], u[29], u[30][n]);
         if (n == 0)
             for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
                 bad[lane_] = !((-DBL_EPSILON + u[8][0][lane_]) > 0);

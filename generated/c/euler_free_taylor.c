@@ -5,7 +5,7 @@
  * The right-hand side is 16 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..2 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (EULER_FREE_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -63,11 +63,6 @@ static const int derive_euler_free_taylor_controlled[euler_free_NY] = { 1, 1, 1 
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_euler_free_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -75,16 +70,6 @@ static const int derive_euler_free_taylor_controlled[euler_free_NY] = { 1, 1, 1 
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_euler_free_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..2]. Returns 0, or 1 when a domain guard of the model fails at y (as euler_free_rhs does). */
@@ -100,15 +85,15 @@ static int derive_euler_free_taylor_jet(double t, const double *y, const double 
         u[i][0] = y[i];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        u[3][n] = derive_euler_free_taylor_tc_mul(n, u[1], u[2]);
-        u[4][n] = derive_euler_free_taylor_tc_mul(n, u[0], u[1]);
+        u[3][n] = derive_tc_mul(n, u[1], u[2]);
+        u[4][n] = derive_tc_mul(n, u[0], u[1]);
         u[5][n] = I2 * u[3][n];
         u[6][n] = I3 * u[3][n];
         u[7][n] = u[5][n] - u[6][n];
         u[8][n] = 1.0/I1 * u[7][n];
-        u[9][n] = derive_euler_free_taylor_tc_mul(n, u[0], u[2]);
+        u[9][n] = derive_tc_mul(n, u[0], u[2]);
         u[10][n] = I3 * u[9][n];
-        u[11][n] = derive_euler_free_taylor_tc_mul(n, u[0], u[2]);
+        u[11][n] = derive_tc_mul(n, u[0], u[2]);
         u[12][n] = I1 * u[11][n];
         u[13][n] = u[10][n] - u[12][n];
         u[14][n] = 1.0/I2 * u[13][n];
@@ -183,15 +168,6 @@ static DERIVE_T_NOINLINE void derive_euler_free_taylor_outputs_block(int nb, con
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_euler_free_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_euler_free_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
 /* derive_euler_free_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_euler_free_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -216,12 +192,12 @@ static void derive_euler_free_taylor_jet_lanes(const double *t, double y[][DERIV
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_free_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_free_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_free_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[1][n]);
-            derive_euler_free_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_free_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[1][j_]) * DERIVE_T_LV(u[2][n - j_]);
                 s1_ += DERIVE_T_LV(u[0][j_]) * DERIVE_T_LV(u[1][n - j_]);

@@ -5,7 +5,7 @@
  * The right-hand side is 29 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..8 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (EULER_POISSON_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -64,11 +64,6 @@ static const int derive_euler_poisson_sym_taylor_controlled[euler_poisson_sym_NY
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_euler_poisson_sym_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -76,16 +71,6 @@ static const int derive_euler_poisson_sym_taylor_controlled[euler_poisson_sym_NY
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_euler_poisson_sym_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..8]. Returns 0, or 1 when a domain guard of the model fails at y (as euler_poisson_sym_rhs does). */
@@ -101,34 +86,34 @@ static int derive_euler_poisson_sym_taylor_jet(double t, const double *y, const 
         u[i][0] = y[i];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        u[9][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[1], u[2]);
+        u[9][n] = derive_tc_mul(n, u[1], u[2]);
         u[10][n] = I1 * u[9][n];
         u[11][n] = I3 * u[9][n];
         u[12][n] = u[10][n] - u[11][n];
         u[13][n] = x0 * u[12][n];
-        u[14][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[0], u[2]);
+        u[14][n] = derive_tc_mul(n, u[0], u[2]);
         u[15][n] = I3 * u[14][n];
-        u[16][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[0], u[2]);
+        u[16][n] = derive_tc_mul(n, u[0], u[2]);
         u[17][n] = I1 * u[16][n];
         u[18][n] = u[15][n] - u[17][n];
         u[19][n] = x0 * u[18][n];
-        u[20][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[4], u[2]);
-        u[21][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[5], u[1]);
+        u[20][n] = derive_tc_mul(n, u[4], u[2]);
+        u[21][n] = derive_tc_mul(n, u[5], u[1]);
         u[22][n] = u[20][n] - u[21][n];
-        u[23][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[5], u[0]);
-        u[24][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[3], u[2]);
+        u[23][n] = derive_tc_mul(n, u[5], u[0]);
+        u[24][n] = derive_tc_mul(n, u[3], u[2]);
         u[25][n] = u[23][n] - u[24][n];
-        u[26][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[3], u[1]);
-        u[27][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[4], u[0]);
+        u[26][n] = derive_tc_mul(n, u[3], u[1]);
+        u[27][n] = derive_tc_mul(n, u[4], u[0]);
         u[28][n] = u[26][n] - u[27][n];
-        u[29][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[7], u[2]);
-        u[30][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[8], u[1]);
+        u[29][n] = derive_tc_mul(n, u[7], u[2]);
+        u[30][n] = derive_tc_mul(n, u[8], u[1]);
         u[31][n] = u[29][n] - u[30][n];
-        u[32][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[8], u[0]);
-        u[33][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[6], u[2]);
+        u[32][n] = derive_tc_mul(n, u[8], u[0]);
+        u[33][n] = derive_tc_mul(n, u[6], u[2]);
         u[34][n] = u[32][n] - u[33][n];
-        u[35][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[6], u[1]);
-        u[36][n] = derive_euler_poisson_sym_taylor_tc_mul(n, u[7], u[0]);
+        u[35][n] = derive_tc_mul(n, u[6], u[1]);
+        u[36][n] = derive_tc_mul(n, u[7], u[0]);
         u[37][n] = u[35][n] - u[36][n];
         u[0][n + 1] = u[13][n] * inv;
         u[1][n + 1] = u[19][n] * inv;
@@ -226,15 +211,6 @@ static DERIVE_T_NOINLINE void derive_euler_poisson_sym_taylor_outputs_block(int 
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_euler_poisson_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_euler_poisson_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
 /* derive_euler_poisson_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_euler_poisson_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -259,12 +235,12 @@ static void derive_euler_poisson_sym_taylor_jet_lanes(const double *t, double y[
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_poisson_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_poisson_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[0][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[2][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[1][j_]) * DERIVE_T_LV(u[2][n - j_]);
                 s1_ += DERIVE_T_LV(u[0][j_]) * DERIVE_T_LV(u[2][n - j_]);
@@ -277,12 +253,12 @@ static void derive_euler_poisson_sym_taylor_jet_lanes(const double *t, double y[
             DERIVE_T_LV(u[20][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_poisson_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_poisson_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[1][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[0][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[3][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[3][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[3][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[3][0]) * DERIVE_T_LV(u[1][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[5][j_]) * DERIVE_T_LV(u[1][n - j_]);
                 s1_ += DERIVE_T_LV(u[5][j_]) * DERIVE_T_LV(u[0][n - j_]);
@@ -295,12 +271,12 @@ static void derive_euler_poisson_sym_taylor_jet_lanes(const double *t, double y[
             DERIVE_T_LV(u[26][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_poisson_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_poisson_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[0][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[1][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[8][0]) * DERIVE_T_LV(u[0][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[4][j_]) * DERIVE_T_LV(u[0][n - j_]);
                 s1_ += DERIVE_T_LV(u[7][j_]) * DERIVE_T_LV(u[2][n - j_]);
@@ -313,11 +289,11 @@ static void derive_euler_poisson_sym_taylor_jet_lanes(const double *t, double y[
             DERIVE_T_LV(u[32][n]) = s3_;
         }
         {  /* 3 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_euler_poisson_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_euler_poisson_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[2][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[1][n]);
-            derive_euler_poisson_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[6][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[0][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[6][j_]) * DERIVE_T_LV(u[2][n - j_]);
                 s1_ += DERIVE_T_LV(u[6][j_]) * DERIVE_T_LV(u[1][n - j_]);

@@ -5,7 +5,7 @@
  * The right-hand side is 29 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..3 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (REDUCED_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -64,11 +64,6 @@ static const int derive_reduced_sym_taylor_controlled[reduced_sym_NY] = { 0, 1, 
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_reduced_sym_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -76,59 +71,6 @@ static const int derive_reduced_sym_taylor_controlled[reduced_sym_NY] = { 0, 1, 
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_reduced_sym_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
-
-/* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static double derive_reduced_sym_taylor_tc_sqr(int n, const double *a)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += a[j] * a[n - j];
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += a[n / 2] * a[n / 2];
-    return s;
-}
-
-/* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static void derive_reduced_sym_taylor_tc_div(int n, const double *a, const double *b, double *q)
-{
-    double s = a[n];
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= b[j] * q[n - j];
-    q[n] = s / b[0];
-}
-
-/* s = sin(a), c = cos(a) together (s' = a' c, c' = -a' s):
- * s_n = sum_{j=1}^{n} j a_j c_{n-j} / n,  c_n = -sum_{j=1}^{n} j a_j s_{n-j} / n. */
-static void derive_reduced_sym_taylor_tc_sincos(int n, const double *a, double *s, double *c)
-{
-    double ss = 0.0, cc = 0.0, ja;
-    int j;
-    if (n == 0) {
-        s[0] = sin(a[0]);
-        c[0] = cos(a[0]);
-        return;
-    }
-    for (j = 1; j <= n; ++j) {
-        ja = j * a[j];
-        ss += ja * c[n - j];
-        cc += ja * s[n - j];
-    }
-    s[n] = ss / n;
-    c[n] = -cc / n;
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..3]. Returns 0, or 1 when a domain guard of the model fails at y (as reduced_sym_rhs does). */
@@ -153,26 +95,26 @@ static int derive_reduced_sym_taylor_jet(double t, const double *y, const double
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
         u[4][n] = 1.0/2.0 * u[1][n];
-        derive_reduced_sym_taylor_tc_sincos(n, u[4], u[5], u[6]);
-        u[7][n] = derive_reduced_sym_taylor_tc_sqr(n, u[6]);
+        derive_tc_sincos(n, u[4], u[5], u[6]);
+        u[7][n] = derive_tc_sqr(n, u[6]);
         u[8][n] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_sym_taylor_tc_div(n, u[8], u[7], u[9]);
+        derive_tc_div(n, u[8], u[7], u[9]);
         u[10][n] = x0*x4 * u[9][n];
         u[11][n] = ((x0 == 0) ? (n == 0 ? (0) : 0.0) : u[10][n]);
-        u[12][n] = derive_reduced_sym_taylor_tc_sqr(n, u[5]);
-        derive_reduced_sym_taylor_tc_div(n, u[8], u[12], u[13]);
+        u[12][n] = derive_tc_sqr(n, u[5]);
+        derive_tc_div(n, u[8], u[12], u[13]);
         u[14][n] = x4*x5 * u[13][n];
         u[15][n] = ((x5 == 0) ? (n == 0 ? (0) : 0.0) : u[14][n]);
         u[16][n] = u[11][n] + u[15][n];
-        derive_reduced_sym_taylor_tc_sincos(n, u[1], u[17], u[18]);
-        u[19][n] = derive_reduced_sym_taylor_tc_mul(n, u[16], u[18]);
+        derive_tc_sincos(n, u[1], u[17], u[18]);
+        u[19][n] = derive_tc_mul(n, u[16], u[18]);
         u[20][n] = -u[19][n] + (n == 0 ? p_gamma/I3 : 0.0);
-        u[21][n] = derive_reduced_sym_taylor_tc_mul(n, u[12], u[5]);
-        derive_reduced_sym_taylor_tc_div(n, u[6], u[21], u[22]);
+        u[21][n] = derive_tc_mul(n, u[12], u[5]);
+        derive_tc_div(n, u[6], u[21], u[22]);
         u[23][n] = -x10*x9 * u[22][n];
         u[24][n] = ((x10 == 0) ? (n == 0 ? (0) : 0.0) : u[23][n]);
-        u[25][n] = derive_reduced_sym_taylor_tc_mul(n, u[7], u[6]);
-        derive_reduced_sym_taylor_tc_div(n, u[5], u[25], u[26]);
+        u[25][n] = derive_tc_mul(n, u[7], u[6]);
+        derive_tc_div(n, u[5], u[25], u[26]);
         u[27][n] = x8*x9 * u[26][n];
         u[28][n] = ((x8 == 0) ? (n == 0 ? (0) : 0.0) : u[27][n]);
         u[29][n] = -u[24][n] - u[28][n];
@@ -197,12 +139,12 @@ static void derive_reduced_sym_taylor_jet_outputs(const double *p, int order, do
     int j, n;
     (void)p;
     for (n = 0; n < order; ++n) {
-        derive_reduced_sym_taylor_tc_sincos(n, u[4], u[31], u[32]);
+        derive_tc_sincos(n, u[4], u[31], u[32]);
     }
     n = order;  /* the last order, of the nodes the outputs read */
     u[4][n] = 1.0/2.0 * u[1][n];
-    derive_reduced_sym_taylor_tc_sincos(n, u[1], u[17], u[18]);
-    derive_reduced_sym_taylor_tc_sincos(n, u[4], u[31], u[32]);
+    derive_tc_sincos(n, u[1], u[17], u[18]);
+    derive_tc_sincos(n, u[4], u[31], u[32]);
     for (n = 0; n <= order; ++n) {
         for (j = 0; j < reduced_sym_NY; ++j)
             w[n][j] = u[j][n];
@@ -389,68 +331,6 @@ static DERIVE_T_NOINLINE void derive_reduced_sym_taylor_outputs_block_trig(int n
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_reduced_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_reduced_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_reduced_sym_taylor_tcl_sqr(int n, double (*a)[DERIVE_T_W], double *u)
-{
-    derive_reduced_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(a[n - j]);
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += DERIVE_T_LV(a[n / 2]) * DERIVE_T_LV(a[n / 2]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_reduced_sym_taylor_tcl_div(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double (*q)[DERIVE_T_W])
-{
-    derive_reduced_sym_taylor_lanes_v s = DERIVE_T_LV(a[n]);
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= DERIVE_T_LV(b[j]) * DERIVE_T_LV(q[n - j]);
-    DERIVE_T_LV(q[n]) = s / DERIVE_T_LV(b[0]);
-}
-
-/* gcc 12 at -O3 with AVX-512, this helper inlined into the lanes' jet, warns of an iteration 29
- * of the j loop past an array; it does so with n bounded by an explicit test to n <= 29 too
- * (where j <= 29 and every index is within the arrays' 31 rows), and the lanes are checked bit
- * for bit against the scalar driver (tests/test_taylor_lanes.py): the warning is silenced here
- * alone. */
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Waggressive-loop-optimizations"
-#endif
-static inline void derive_reduced_sym_taylor_tcl_sincos(int n, double (*a)[DERIVE_T_W], double (*s)[DERIVE_T_W], double (*c)[DERIVE_T_W])
-{
-    derive_reduced_sym_taylor_lanes_v ss = {0}, cc = {0}, ja;
-    int j, lane_;
-    if (n == 0) {
-        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_) {
-            s[0][lane_] = sin(a[0][lane_]);
-            c[0][lane_] = cos(a[0][lane_]);
-        }
-        return;
-    }
-    for (j = 1; j <= n; ++j) {
-        ja = (double)j * DERIVE_T_LV(a[j]);
-        ss += ja * DERIVE_T_LV(c[n - j]);
-        cc += ja * DERIVE_T_LV(s[n - j]);
-    }
-    DERIVE_T_LV(s[n]) = ss / (double)n;
-    DERIVE_T_LV(c[n]) = -cc / (double)n;
-}
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic pop
-#endif
-
 /* derive_reduced_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_reduced_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -494,17 +374,17 @@ static void derive_reduced_sym_taylor_jet_lanes(const double *t, double y[][DERI
             u[4][n][lane_] = 1.0/2.0 * u[1][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[8][n][lane_] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_sym_taylor_tcl_sincos(n, u[4], u[5], u[6]);
-        derive_reduced_sym_taylor_tcl_sincos(n, u[1], u[17], u[18]);
-        derive_reduced_sym_taylor_tcl_sqr(n, u[6], u[7][n]);
-        derive_reduced_sym_taylor_tcl_sqr(n, u[5], u[12][n]);
+        derive_tcl_sincos(n, u[4], u[5], u[6]);
+        derive_tcl_sincos(n, u[1], u[17], u[18]);
+        derive_tcl_sqr(n, u[6], u[7][n]);
+        derive_tcl_sqr(n, u[5], u[12][n]);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_reduced_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_reduced_sym_taylor_lanes_v s0_ = DERIVE_T_LV(u[8][n]);
-            derive_reduced_sym_taylor_lanes_v s1_ = DERIVE_T_LV(u[8][n]);
-            derive_reduced_sym_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[12][0]) * DERIVE_T_LV(u[5][n]);
-            derive_reduced_sym_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s0_ = DERIVE_T_LV(u[8][n]);
+            derive_lanes_v s1_ = DERIVE_T_LV(u[8][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[12][0]) * DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[7][0]) * DERIVE_T_LV(u[6][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ -= DERIVE_T_LV(u[7][j_]) * DERIVE_T_LV(u[9][n - j_]);
                 s1_ -= DERIVE_T_LV(u[12][j_]) * DERIVE_T_LV(u[13][n - j_]);
@@ -527,11 +407,11 @@ static void derive_reduced_sym_taylor_jet_lanes(const double *t, double y[][DERI
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[16][n][lane_] = u[11][n][lane_] + u[15][n][lane_];
         {  /* 3 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_reduced_sym_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_reduced_sym_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[18][n]);
-            derive_reduced_sym_taylor_lanes_v s1_ = DERIVE_T_LV(u[6][n]);
-            derive_reduced_sym_taylor_lanes_v s2_ = DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[18][n]);
+            derive_lanes_v s1_ = DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s2_ = DERIVE_T_LV(u[5][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[16][j_]) * DERIVE_T_LV(u[18][n - j_]);
                 s1_ -= DERIVE_T_LV(u[21][j_]) * DERIVE_T_LV(u[22][n - j_]);

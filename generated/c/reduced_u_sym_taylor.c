@@ -5,7 +5,7 @@
  * The right-hand side is 14 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..3 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -64,11 +64,6 @@ static const int derive_reduced_u_sym_taylor_controlled[reduced_u_sym_NY] = { 0,
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_reduced_u_sym_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -76,26 +71,6 @@ static const int derive_reduced_u_sym_taylor_controlled[reduced_u_sym_NY] = { 0,
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_reduced_u_sym_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
-
-/* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static void derive_reduced_u_sym_taylor_tc_div(int n, const double *a, const double *b, double *q)
-{
-    double s = a[n];
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= b[j] * q[n - j];
-    q[n] = s / b[0];
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..3]. Returns 0, or 1 when a domain guard of the model fails at y (as reduced_u_sym_rhs does). */
@@ -119,15 +94,15 @@ static int derive_reduced_u_sym_taylor_jet(double t, const double *y, const doub
         const double inv = 1.0 / (n + 1);
         u[4][n] = u[1][n] + (n == 0 ? 1 : 0.0);
         u[5][n] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_u_sym_taylor_tc_div(n, u[5], u[4], u[6]);
+        derive_tc_div(n, u[5], u[4], u[6]);
         u[7][n] = x0*x1 * u[6][n];
         u[8][n] = ((x0 == 0) ? (n == 0 ? (0) : 0.0) : u[7][n]);
         u[9][n] = u[1][n] + (n == 0 ? -1 : 0.0);
-        derive_reduced_u_sym_taylor_tc_div(n, u[5], u[9], u[10]);
+        derive_tc_div(n, u[5], u[9], u[10]);
         u[11][n] = -x1*x2 * u[10][n];
         u[12][n] = ((x2 == 0) ? (n == 0 ? (0) : 0.0) : u[11][n]);
         u[13][n] = u[8][n] + u[12][n];
-        u[14][n] = derive_reduced_u_sym_taylor_tc_mul(n, u[13], u[1]);
+        u[14][n] = derive_tc_mul(n, u[13], u[1]);
         u[15][n] = -u[14][n] + (n == 0 ? p_gamma/I3 : 0.0);
         u[16][n] = x4*(2*E_prime*I1 + (p_gamma*p_gamma)) * u[1][n];
         u[17][n] = -u[16][n] + (n == 0 ? p_alpha*p_gamma*x4 : 0.0);
@@ -334,24 +309,6 @@ static DERIVE_T_NOINLINE void derive_reduced_u_sym_taylor_outputs_block_trig(int
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_reduced_u_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_reduced_u_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_reduced_u_sym_taylor_tcl_div(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double (*q)[DERIVE_T_W])
-{
-    derive_reduced_u_sym_taylor_lanes_v s = DERIVE_T_LV(a[n]);
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= DERIVE_T_LV(b[j]) * DERIVE_T_LV(q[n - j]);
-    DERIVE_T_LV(q[n]) = s / DERIVE_T_LV(b[0]);
-}
-
 /* derive_reduced_u_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -399,8 +356,8 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
             u[17][n][lane_] = -u[16][n][lane_] + (n == 0 ? p_alpha[lane_]*p_gamma[lane_]*x4[lane_] : 0.0);
         {  /* 2 sums side by side, each in its rule's own order (the same numbers) */
             int j_;
-            derive_reduced_u_sym_taylor_lanes_v s0_ = DERIVE_T_LV(u[5][n]);
-            derive_reduced_u_sym_taylor_lanes_v s1_ = DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s0_ = DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s1_ = DERIVE_T_LV(u[5][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ -= DERIVE_T_LV(u[4][j_]) * DERIVE_T_LV(u[6][n - j_]);
                 s1_ -= DERIVE_T_LV(u[9][j_]) * DERIVE_T_LV(u[10][n - j_]);
@@ -418,7 +375,7 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
             u[12][n][lane_] = ((x2[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[11][n][lane_]);
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[13][n][lane_] = u[8][n][lane_] + u[12][n][lane_];
-        derive_reduced_u_sym_taylor_tcl_mul(n, u[13], u[1], u[14][n]);
+        derive_tcl_mul(n, u[13], u[1], u[14][n]);
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[15][n][lane_] = -u[14][n][lane_] + (n == 0 ? p_gamma[lane_]/I3[lane_] : 0.0);
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_) {

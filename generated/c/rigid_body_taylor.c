@@ -5,7 +5,7 @@
  * The right-hand side is 82 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..6 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
  * No allocation: the series live on the stack (DERIVE_T_NODES x (RIGID_BODY_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
@@ -64,11 +64,6 @@ static const int derive_rigid_body_taylor_controlled[rigid_body_NY] = { 1, 1, 1,
 
 #include "derive_taylor_base.inc"
 
-
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
 /* gcc's vectoriser off from here to the end of derive_rigid_body_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -76,39 +71,6 @@ static const int derive_rigid_body_taylor_controlled[rigid_body_NY] = { 1, 1, 1,
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_rigid_body_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
-
-/* u = a^2: the Cauchy product of a with itself, each pair of terms once. */
-static double derive_rigid_body_taylor_tc_sqr(int n, const double *a)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += a[j] * a[n - j];
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += a[n / 2] * a[n / 2];
-    return s;
-}
-
-/* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static void derive_rigid_body_taylor_tc_div(int n, const double *a, const double *b, double *q)
-{
-    double s = a[n];
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= b[j] * q[n - j];
-    q[n] = s / b[0];
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..6]. Returns 0, or 1 when a domain guard of the model fails at y (as rigid_body_rhs does). */
@@ -134,10 +96,10 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[i][0] = y[i];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        u[7][n] = derive_rigid_body_taylor_tc_sqr(n, u[1]);
-        u[8][n] = derive_rigid_body_taylor_tc_sqr(n, u[2]);
-        u[9][n] = derive_rigid_body_taylor_tc_sqr(n, u[0]);
-        u[10][n] = derive_rigid_body_taylor_tc_sqr(n, u[3]);
+        u[7][n] = derive_tc_sqr(n, u[1]);
+        u[8][n] = derive_tc_sqr(n, u[2]);
+        u[9][n] = derive_tc_sqr(n, u[0]);
+        u[10][n] = derive_tc_sqr(n, u[3]);
         u[11][n] = u[9][n] + u[10][n];
         u[12][n] = u[7][n] + u[8][n] + u[11][n];
         u[13][n] = 1.0/2.0 * u[4][n];
@@ -145,41 +107,41 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[15][n] = 1.0/2.0 * u[3][n];
         u[16][n] = 1.0/2.0 * u[5][n];
         u[17][n] = 1.0/2.0 * u[6][n];
-        u[18][n] = derive_rigid_body_taylor_tc_mul(n, u[5], u[6]);
+        u[18][n] = derive_tc_mul(n, u[5], u[6]);
         u[19][n] = 2 * u[0][n];
-        u[20][n] = derive_rigid_body_taylor_tc_mul(n, u[19], u[1]);
-        u[21][n] = derive_rigid_body_taylor_tc_mul(n, u[2], u[3]);
+        u[20][n] = derive_tc_mul(n, u[19], u[1]);
+        u[21][n] = derive_tc_mul(n, u[2], u[3]);
         u[22][n] = u[20][n] + 2 * u[21][n];
         u[23][n] = (n == 0 ? 1.0 : 0.0);
-        derive_rigid_body_taylor_tc_div(n, u[23], u[12], u[24]);
+        derive_tc_div(n, u[23], u[12], u[24]);
         u[25][n] = u[11][n] - u[7][n] - u[8][n];
-        u[26][n] = derive_rigid_body_taylor_tc_mul(n, u[24], u[25]);
-        u[27][n] = derive_rigid_body_taylor_tc_mul(n, u[19], u[2]);
-        u[28][n] = derive_rigid_body_taylor_tc_mul(n, u[1], u[3]);
+        u[26][n] = derive_tc_mul(n, u[24], u[25]);
+        u[27][n] = derive_tc_mul(n, u[19], u[2]);
+        u[28][n] = derive_tc_mul(n, u[1], u[3]);
         u[29][n] = -u[27][n] + 2 * u[28][n];
-        u[30][n] = derive_rigid_body_taylor_tc_mul(n, u[4], u[5]);
-        u[31][n] = derive_rigid_body_taylor_tc_mul(n, u[13], u[1]);
-        u[32][n] = derive_rigid_body_taylor_tc_mul(n, u[14], u[5]);
-        u[33][n] = derive_rigid_body_taylor_tc_mul(n, u[15], u[6]);
+        u[30][n] = derive_tc_mul(n, u[4], u[5]);
+        u[31][n] = derive_tc_mul(n, u[13], u[1]);
+        u[32][n] = derive_tc_mul(n, u[14], u[5]);
+        u[33][n] = derive_tc_mul(n, u[15], u[6]);
         u[34][n] = -u[31][n] - u[32][n] - u[33][n];
-        u[35][n] = derive_rigid_body_taylor_tc_mul(n, u[13], u[0]);
-        u[36][n] = derive_rigid_body_taylor_tc_mul(n, u[14], u[6]);
-        u[37][n] = derive_rigid_body_taylor_tc_mul(n, u[15], u[5]);
+        u[35][n] = derive_tc_mul(n, u[13], u[0]);
+        u[36][n] = derive_tc_mul(n, u[14], u[6]);
+        u[37][n] = derive_tc_mul(n, u[15], u[5]);
         u[38][n] = u[35][n] + u[36][n] - u[37][n];
-        u[39][n] = derive_rigid_body_taylor_tc_mul(n, u[13], u[3]);
-        u[40][n] = derive_rigid_body_taylor_tc_mul(n, u[16], u[0]);
-        u[41][n] = derive_rigid_body_taylor_tc_mul(n, u[17], u[1]);
+        u[39][n] = derive_tc_mul(n, u[13], u[3]);
+        u[40][n] = derive_tc_mul(n, u[16], u[0]);
+        u[41][n] = derive_tc_mul(n, u[17], u[1]);
         u[42][n] = u[39][n] + u[40][n] - u[41][n];
-        u[43][n] = derive_rigid_body_taylor_tc_mul(n, u[16], u[1]);
-        u[44][n] = derive_rigid_body_taylor_tc_mul(n, u[17], u[0]);
-        u[45][n] = derive_rigid_body_taylor_tc_mul(n, u[13], u[2]);
+        u[43][n] = derive_tc_mul(n, u[16], u[1]);
+        u[44][n] = derive_tc_mul(n, u[17], u[0]);
+        u[45][n] = derive_tc_mul(n, u[13], u[2]);
         u[46][n] = u[43][n] + u[44][n] - u[45][n];
         u[47][n] = I2 * u[18][n];
         u[48][n] = I3 * u[18][n];
         u[49][n] = u[47][n] - u[48][n];
         u[50][n] = x9 * u[49][n];
         u[51][n] = cy * u[26][n];
-        u[52][n] = derive_rigid_body_taylor_tc_mul(n, u[22], u[24]);
+        u[52][n] = derive_tc_mul(n, u[22], u[24]);
         u[53][n] = cz * u[52][n];
         u[54][n] = u[51][n] - u[53][n];
         u[55][n] = x15 * u[54][n];
@@ -188,16 +150,16 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[58][n] = x9 * u[57][n];
         u[59][n] = u[50][n] + u[58][n];
         u[60][n] = cx * u[26][n];
-        u[61][n] = derive_rigid_body_taylor_tc_mul(n, u[24], u[29]);
+        u[61][n] = derive_tc_mul(n, u[24], u[29]);
         u[62][n] = cz * u[61][n];
         u[63][n] = -u[60][n] + u[62][n];
         u[64][n] = x15 * u[63][n];
         u[65][n] = c * u[5][n];
         u[66][n] = -u[64][n] - u[65][n];
         u[67][n] = x16 * u[66][n];
-        u[68][n] = derive_rigid_body_taylor_tc_mul(n, u[4], u[6]);
+        u[68][n] = derive_tc_mul(n, u[4], u[6]);
         u[69][n] = I3 * u[68][n];
-        u[70][n] = derive_rigid_body_taylor_tc_mul(n, u[4], u[6]);
+        u[70][n] = derive_tc_mul(n, u[4], u[6]);
         u[71][n] = I1 * u[70][n];
         u[72][n] = u[69][n] - u[71][n];
         u[73][n] = x16 * u[72][n];
@@ -206,9 +168,9 @@ static int derive_rigid_body_taylor_jet(double t, const double *y, const double 
         u[76][n] = I2 * u[30][n];
         u[77][n] = u[75][n] - u[76][n];
         u[78][n] = x18 * u[77][n];
-        u[79][n] = derive_rigid_body_taylor_tc_mul(n, u[22], u[24]);
+        u[79][n] = derive_tc_mul(n, u[22], u[24]);
         u[80][n] = cx * u[79][n];
-        u[81][n] = derive_rigid_body_taylor_tc_mul(n, u[24], u[29]);
+        u[81][n] = derive_tc_mul(n, u[24], u[29]);
         u[82][n] = cy * u[81][n];
         u[83][n] = u[80][n] - u[82][n];
         u[84][n] = x15 * u[83][n];
@@ -332,36 +294,6 @@ static DERIVE_T_NOINLINE void derive_rigid_body_taylor_outputs_block(int nb, con
  * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
  * in its order: the same numbers. */
 
-static inline void derive_rigid_body_taylor_tcl_mul(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double *u)
-{
-    derive_rigid_body_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(b[n - j]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_rigid_body_taylor_tcl_sqr(int n, double (*a)[DERIVE_T_W], double *u)
-{
-    derive_rigid_body_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j < (n + 1) / 2; ++j)
-        s += DERIVE_T_LV(a[j]) * DERIVE_T_LV(a[n - j]);
-    s *= 2.0;
-    if (n % 2 == 0)
-        s += DERIVE_T_LV(a[n / 2]) * DERIVE_T_LV(a[n / 2]);
-    DERIVE_T_LV(u) = s;
-}
-
-static inline void derive_rigid_body_taylor_tcl_div(int n, double (*a)[DERIVE_T_W], double (*b)[DERIVE_T_W], double (*q)[DERIVE_T_W])
-{
-    derive_rigid_body_taylor_lanes_v s = DERIVE_T_LV(a[n]);
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= DERIVE_T_LV(b[j]) * DERIVE_T_LV(q[n - j]);
-    DERIVE_T_LV(q[n]) = s / DERIVE_T_LV(b[0]);
-}
-
 /* derive_rigid_body_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
 static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
@@ -425,17 +357,17 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             u[65][n][lane_] = c[lane_] * u[5][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[85][n][lane_] = c[lane_] * u[6][n][lane_];
-        derive_rigid_body_taylor_tcl_sqr(n, u[1], u[7][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[2], u[8][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[0], u[9][n]);
-        derive_rigid_body_taylor_tcl_sqr(n, u[3], u[10][n]);
+        derive_tcl_sqr(n, u[1], u[7][n]);
+        derive_tcl_sqr(n, u[2], u[8][n]);
+        derive_tcl_sqr(n, u[0], u[9][n]);
+        derive_tcl_sqr(n, u[3], u[10][n]);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[6][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[19][0]) * DERIVE_T_LV(u[1][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[2][0]) * DERIVE_T_LV(u[3][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[19][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[5][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[19][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[2][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[19][0]) * DERIVE_T_LV(u[2][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[5][j_]) * DERIVE_T_LV(u[6][n - j_]);
                 s1_ += DERIVE_T_LV(u[19][j_]) * DERIVE_T_LV(u[1][n - j_]);
@@ -448,12 +380,12 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             DERIVE_T_LV(u[27][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[3][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[5][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[1][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[14][0]) * DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[1][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[14][0]) * DERIVE_T_LV(u[5][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[1][j_]) * DERIVE_T_LV(u[3][n - j_]);
                 s1_ += DERIVE_T_LV(u[4][j_]) * DERIVE_T_LV(u[5][n - j_]);
@@ -466,12 +398,12 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             DERIVE_T_LV(u[32][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[6][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[0][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[14][0]) * DERIVE_T_LV(u[6][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[14][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[15][0]) * DERIVE_T_LV(u[5][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[15][j_]) * DERIVE_T_LV(u[6][n - j_]);
                 s1_ += DERIVE_T_LV(u[13][j_]) * DERIVE_T_LV(u[0][n - j_]);
@@ -484,12 +416,12 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             DERIVE_T_LV(u[37][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[3][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[0][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[17][0]) * DERIVE_T_LV(u[1][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[3][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[17][0]) * DERIVE_T_LV(u[1][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[16][0]) * DERIVE_T_LV(u[1][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[13][j_]) * DERIVE_T_LV(u[3][n - j_]);
                 s1_ += DERIVE_T_LV(u[16][j_]) * DERIVE_T_LV(u[0][n - j_]);
@@ -502,12 +434,12 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             DERIVE_T_LV(u[43][n]) = s3_;
         }
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[17][0]) * DERIVE_T_LV(u[0][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[2][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[6][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[17][0]) * DERIVE_T_LV(u[0][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[13][0]) * DERIVE_T_LV(u[2][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[6][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[4][0]) * DERIVE_T_LV(u[6][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[17][j_]) * DERIVE_T_LV(u[0][n - j_]);
                 s1_ += DERIVE_T_LV(u[13][j_]) * DERIVE_T_LV(u[2][n - j_]);
@@ -561,14 +493,14 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             u[77][n][lane_] = u[75][n][lane_] - u[76][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[78][n][lane_] = x18[lane_] * u[77][n][lane_];
-        derive_rigid_body_taylor_tcl_div(n, u[23], u[12], u[24]);
+        derive_tcl_div(n, u[23], u[12], u[24]);
         {  /* 4 sums side by side, each in its rule's own order (the same numbers) */
-            const derive_rigid_body_taylor_lanes_v zero_ = {0};
+            const derive_lanes_v zero_ = {0};
             int j_;
-            derive_rigid_body_taylor_lanes_v s0_ = zero_ + DERIVE_T_LV(u[24][0]) * DERIVE_T_LV(u[25][n]);
-            derive_rigid_body_taylor_lanes_v s1_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[24][n]);
-            derive_rigid_body_taylor_lanes_v s2_ = zero_ + DERIVE_T_LV(u[24][0]) * DERIVE_T_LV(u[29][n]);
-            derive_rigid_body_taylor_lanes_v s3_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[24][n]);
+            derive_lanes_v s0_ = zero_ + DERIVE_T_LV(u[24][0]) * DERIVE_T_LV(u[25][n]);
+            derive_lanes_v s1_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[24][n]);
+            derive_lanes_v s2_ = zero_ + DERIVE_T_LV(u[24][0]) * DERIVE_T_LV(u[29][n]);
+            derive_lanes_v s3_ = zero_ + DERIVE_T_LV(u[22][0]) * DERIVE_T_LV(u[24][n]);
             for (j_ = 1; j_ <= n; ++j_) {
                 s0_ += DERIVE_T_LV(u[24][j_]) * DERIVE_T_LV(u[25][n - j_]);
                 s1_ += DERIVE_T_LV(u[22][j_]) * DERIVE_T_LV(u[24][n - j_]);
@@ -580,7 +512,7 @@ static void derive_rigid_body_taylor_jet_lanes(const double *t, double y[][DERIV
             DERIVE_T_LV(u[61][n]) = s2_;
             DERIVE_T_LV(u[79][n]) = s3_;
         }
-        derive_rigid_body_taylor_tcl_mul(n, u[24], u[29], u[81][n]);
+        derive_tcl_mul(n, u[24], u[29], u[81][n]);
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[51][n][lane_] = cy[lane_] * u[26][n][lane_];
         for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
