@@ -5,6 +5,7 @@ results in units in the last place."""
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 
 import numpy as np
@@ -25,6 +26,16 @@ def compile_harness(tmp_path, flags, name: str, text: str):
     subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
                     "-o", str(exe), "-lm"], check=True, capture_output=True, text=True)
     return exe
+
+
+def taylor_sizes(model: str) -> dict[str, int]:
+    """The sizes a model's ``<model>_taylor.c`` defines for the shared Taylor text (``NW``,
+    ``NTRIG``, ...: its ``#define DERIVE_T_<name> <number>``), and ``NV``, the values a sample
+    of a block holds (the columns, then a sin and a cos per pointwise angle)."""
+    text = (GEN / f"{model}_taylor.c").read_text()
+    sizes = {k: int(v) for k, v in re.findall(r"^#define DERIVE_T_(\w+) (\d+)$", text, re.M)}
+    sizes["NV"] = sizes["NW"] + 2 * sizes["NTRIG"]
+    return sizes
 
 
 def run_bits(exe, x: np.ndarray) -> np.ndarray:

@@ -263,8 +263,10 @@ def test_a_rule_from_its_file_and_one_row_gives_the_scalar_and_the_lanes_jet(tmp
     d = decompose(KernelSpec.of(_exp_model(expo)))
     assert "expo" in d.rules and "exp" not in d.rules
     lib = _rules_library(_exp_model(expo), "expo_model")
-    source = render_taylor(_exp_model(expo))["expo_model_taylor.c"]
-    assert "tc_expo(int n" in source and "tc_exp(int n" not in source
+    files = render_taylor(_exp_model(expo))
+    source = files["expo_model_taylor.c"]
+    assert "tc_expo(int n" in files["derive_taylor_base.inc"]  # its helper, from its file
+    assert "tc_expo(n, " in source and "tc_exp(n, " not in source  # the jet calls it
     monkeypatch.undo()  # the shipped rules again: the same model with exp
     ref = _rules_library(_exp_model(sp.exp), "expo_model")
     y, p = [0.4, -0.3], [1.7]
@@ -272,9 +274,10 @@ def test_a_rule_from_its_file_and_one_row_gives_the_scalar_and_the_lanes_jet(tmp
     got, want = (c_coefficients(lib_, "expo_model", y, p, 14) for lib_ in (lib, ref))
     assert got[0] == want[0] == 0 and got[1].tobytes() == want[1].tobytes()
     expo = _expo_rule(tmp_path / "again", monkeypatch)
-    lanes = render_taylor(_exp_model(expo, outputs=True))["expo_model_taylor.c"]
+    files = render_taylor(_exp_model(expo, outputs=True))
+    lanes = files["expo_model_taylor.c"]
     steps = [s for s in decompose(KernelSpec.of(_exp_model(expo, outputs=True))).steps if s.rule == "expo"]
-    assert len(steps) == 2 and "tcl_expo(int n" in lanes
+    assert len(steps) == 2 and "tcl_expo(int n" in files["derive_taylor_base.inc"]
     for s in steps:
         call = f"tc_expo(n, u[{s.args[0]}], u[{s.index}]);"
         assert call in lanes and f"tcl_expo(n, u[{s.args[0]}], u[{s.index}]);" in lanes

@@ -133,12 +133,12 @@ int main(void)
 def _harness(tmp_path, name, flags, model, d):
     m = model.name
     prefix = f"derive_{m}_taylor_"
-    up = prefix.upper()
+    nv = len(model.states) + len(d.columns) + 2 * len(d.trig)
     nobs = len(d.pointwise)
     rows = ", ".join(f"(o)[{j}]" for j in range(nobs))
     return compile_harness(tmp_path, flags, name,
         f'#include "{m}.c"\n#include "{m}_solvers.c"\n#include "{m}_taylor.c"\n'
-        f"#define NV {up}NV\n#define KB {up}KB\n#define KO {up}KO\n#define NP {m}_NP\n#define NOBS {nobs}\n"
+        f"#define NV {nv}\n#define KB DERIVE_T_KB\n#define KO DERIVE_T_KO\n#define NP {m}_NP\n#define NOBS {nobs}\n"
         f"#define BLOCK(nb, tb, v, p, o) {prefix}outputs_block(nb, tb, v, p, {rows})\n"
         + (f"#define TRIG {prefix}trig_block\n"
            f"#define BLOCK_TRIG(nb, tb, v, p, o) {prefix}outputs_block_trig(nb, tb, v, p, {rows})\n"

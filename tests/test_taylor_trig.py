@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS
-from tests.bits_harness import PREFIX, compile_harness, run_bits, ulps
+from tests.bits_harness import PREFIX, compile_harness, run_bits, taylor_sizes, ulps
 
 HARNESS = r"""
 #include "reduced_u_sym_gravity.c"
@@ -58,9 +58,10 @@ int main(void)
 
 
 def _harness(tmp_path, flags, name):
-    up = PREFIX.upper()
+    n = taylor_sizes("reduced_u_sym_gravity")
     return compile_harness(tmp_path, flags, name,
-                           f"#define P_NV {up}NV\n#define P_KB {up}KB\n#define P_KO {up}KO\n#define P_NW {up}NW\n"
+                           f"#define P_NV {n['NV']}\n#define P_KB DERIVE_T_KB\n#define P_KO DERIVE_T_KO\n"
+                           f"#define P_NW {n['NW']}\n"
                            f"#define TRIG_BLOCK {PREFIX}trig_block\n" + HARNESS)
 
 

@@ -36,9 +36,9 @@ TEMPLATES = data_dir("templates")
 #: The C runtime every model's solvers share (``derive.codegen.sources.runtime_sources``), one
 #: copy in ``generated/c`` beside the models.
 RUNTIME_FILES = ("derive_runtime.h", "derive_runtime.c", "derive_libm.h", "derive_solvers.inc")
-#: The Taylor methods' drivers every model's Taylor solvers share
-#: (``derive.codegen.taylor.taylor_drivers``).
-TAYLOR_INC = "derive_taylor.inc"
+#: The Taylor methods' shared text every model's Taylor solvers include: the sizes and vector
+#: types its jet is written against, then the drivers (``derive.codegen.taylor.taylor_shared``).
+TAYLOR_INCS = ("derive_taylor_base.inc", "derive_taylor.inc")
 GENERATED = data_dir("generated")
 
 

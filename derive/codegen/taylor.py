@@ -2,7 +2,7 @@
 
 :func:`derive.codegen.jet.decompose` gives the right-hand side as elementary steps (rule,
 operands, output node); ``templates/c/taylor.c.j2`` renders the scalar jet from them and
-``templates/c/taylor_lanes_driver.c.j2`` the lanes jet (several trajectories at once), each step
+the same template the lanes jet (several trajectories at once), each step
 by the macros of its rule's file ``templates/c/taylor_rules/<rule>.j2``: ``step`` (the scalar
 statement computing coefficient n), ``lanes_step`` (the lanes' call of a sum's vector helper; an
 elementwise rule's ``step`` printed per lane instead), ``scalar`` and ``lanes`` (the helpers
@@ -15,18 +15,16 @@ by the lane. Adding a function adds its rule's file and its row of
 """
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derive.codegen import jet
 from derive.codegen.jet import (Const, Decomposition, NoTaylorRule, applicable,  # noqa: F401
                                 controlled_states, decompose, jet_weight, rule_of, series_safe)
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, c_expr
-from derive.codegen.render import TAYLOR_INC, environment, render
+from derive.codegen.render import TAYLOR_INCS, environment, render
 from derive.methods.taylor import METHODS, TaylorMethod
 
-#: The index of the lane loops in the lanes driver's C (templates/c/taylor_lanes.c.j2): a name
+#: The index of the lane loops in the lanes jet's C (templates/c/taylor.c.j2): a name
 #: no model symbol takes (they never end in an underscore).
 LANE = "lane_"
 FUSED_MAX = 4  # the sums of one fused loop (each a vector accumulator, its operands' loads)
@@ -120,7 +118,7 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     ctx["lanes"] = _lanes(d, rhs_steps, jet_scope) if ctx["pointwise"] else None
     # the nodes the dense output reads of the jet's (the states, and what the outputs' series are
     # made of, less the nodes made for them): what the lanes' full-grid driver copies out of a
-    # lane before it (templates/c/taylor_lanes_driver.c.j2)
+    # lane before it (DERIVE_T_EACH_DENSE, templates/c/taylor.inc.j2)
     read = set(range(ny)) | {op for op in d.columns if isinstance(op, int)}
     for s in obs_steps + d.last:
         read |= s.reads | set(s.outs)
@@ -128,16 +126,19 @@ def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | No
     # the doubles a lane keeps of its steps (at least one step's at the highest order)
     ctx["LBUF"] = max(2048, 6 + len(ctx["dense_nodes"]) * (ctx["max_order"] + 1))
     return {f"{model.name}_taylor.h": render("c/taylor.h.j2", **ctx),
-            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx),
-            TAYLOR_INC: taylor_drivers()}
+            f"{model.name}_taylor.c": render("c/taylor.c.j2", **ctx), **taylor_shared()}
 
 
-@functools.lru_cache(maxsize=1)
-def taylor_drivers() -> str:
-    """``derive_taylor.inc``: the Taylor methods' drivers (step-size control, dense output, the
-    solve and simulate drivers), one text for every model; a model's ``<model>_taylor.c``
-    defines its jet and sizes as macros and includes it."""
-    return render("c/taylor.inc.j2", methods=[_method_context(m) for m in METHODS.values()])
+def taylor_shared() -> dict[str, str]:
+    """``derive_taylor_base.inc`` (the sizes and vector types a model's jet and output map are
+    written against) and ``derive_taylor.inc`` (the Taylor methods' drivers: step-size control,
+    dense output, the output blocks, the solve, simulate, final-only and lanes drivers), one text
+    each for every model; a model's ``<model>_taylor.c`` defines its sizes as macros, includes
+    the first, defines its jet, and includes the second."""
+    base, drivers = TAYLOR_INCS
+    return {base: render("c/taylor_base.inc.j2", rules=rule_templates(),
+                         names=[r.name for r in jet.RULE_TABLE], lane=LANE),
+            drivers: render("c/taylor.inc.j2", methods=[_method_context(m) for m in METHODS.values()])}
 
 
 def _scope(steps: list, exprs: list, d: Decomposition) -> tuple[list, list]:

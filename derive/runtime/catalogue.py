@@ -28,7 +28,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from derive.codegen.render import GENERATED, RUNTIME_FILES, TAYLOR_INC, TEMPLATES
+from derive.codegen.render import GENERATED, RUNTIME_FILES, TAYLOR_INCS, TEMPLATES
 from derive.errors import note
 from derive.runtime.cache import is_marked, make_room, mark, models_dir, remove_marked, writable_cache_dir
 from derive.symbolic import effects as fx
@@ -69,7 +69,7 @@ class Description:
         names = [f"{self.name}{suffix}" for suffix in (".h", ".c", "_solvers.h", "_solvers.c",
                                                         "_splitting.h", "_splitting.c",
                                                         "_taylor.h", "_taylor.c")]
-        names += ["derive_elliptic.h", *RUNTIME_FILES, TAYLOR_INC]
+        names += ["derive_elliptic.h", *RUNTIME_FILES, *TAYLOR_INCS]
         return {n: self.source(f"c/{n}") for n in names if (Path(self.folder) / "c" / n).is_file()}
 
     @classmethod

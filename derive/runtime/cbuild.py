@@ -60,7 +60,7 @@ SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-poi
 # under -ffp-contract=off and -mno-fma): it is turned off; the loops are vectorised by the loop
 # vectoriser.
 VECTOR_FLAGS: tuple[str, ...] = ("-march=native", "-ffp-contract=off", "-fno-tree-slp-vectorize")
-# The lanes build (the Taylor batch, templates/c/taylor_lanes_driver.c.j2): the vector build with
+# The lanes build (the Taylor batch, the lanes of templates/c/taylor.inc.j2): the vector build with
 # the lanes compiled in, and no complete peeling of small loops: peeled, the lanes' loops over W
 # become straight lines the loop vectoriser never sees. The scalar drivers want the peeling
 # (their loops over 4 states or 4 samples), hence two builds.

@@ -7,6 +7,16 @@
 #include <math.h>
 #include "euler_free.h"
 
+/* euler_free_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const euler_free_state_names[euler_free_NY] = { "omega1", "omega2", "omega3" };
 const char *const euler_free_param_names[euler_free_NP] = { "I1", "I2", "I3" };
 const char *const euler_free_observable_names[euler_free_NOBS] = { "energy", "L_squared", "omega1", "omega2", "omega3" };

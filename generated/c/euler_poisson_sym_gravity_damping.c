@@ -7,6 +7,16 @@
 #include <math.h>
 #include "euler_poisson_sym_gravity_damping.h"
 
+/* euler_poisson_sym_gravity_damping_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const euler_poisson_sym_gravity_damping_state_names[euler_poisson_sym_gravity_damping_NY] = { "omega1", "omega2", "omega3", "n1", "n2", "n3", "e1", "e2", "e3" };
 const char *const euler_poisson_sym_gravity_damping_param_names[euler_poisson_sym_gravity_damping_NP] = { "I1", "I3", "M", "g", "l", "c" };
 const char *const euler_poisson_sym_gravity_damping_observable_names[euler_poisson_sym_gravity_damping_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
@@ -213,7 +223,7 @@ int euler_poisson_sym_gravity_damping_observables(double t, const double *y, con
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
  * euler_poisson_sym_gravity_damping_observables' out[1]. */
-double euler_poisson_sym_gravity_damping_beta(double t, const double *y, const double *p)
+DERIVE_INTERNAL double euler_poisson_sym_gravity_damping_beta(double t, const double *y, const double *p)
 {
     const double n1 = y[3];
     const double n2 = y[4];

@@ -7,6 +7,16 @@
 #include <math.h>
 #include "heavy_top.h"
 
+/* heavy_top_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const heavy_top_state_names[heavy_top_NY] = { "alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot" };
 const char *const heavy_top_param_names[heavy_top_NP] = { "I1", "I3", "M", "g", "l" };
 const char *const heavy_top_observable_names[heavy_top_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
@@ -182,7 +192,7 @@ int heavy_top_observables(double t, const double *y, const double *p, double *ou
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
  * heavy_top_observables' out[1]. */
-double heavy_top_beta(double t, const double *y, const double *p)
+DERIVE_INTERNAL double heavy_top_beta(double t, const double *y, const double *p)
 {
     const double beta = y[1];
     (void)t;

@@ -7,6 +7,16 @@
 #include <math.h>
 #include "heavy_top_reduced.h"
 
+/* heavy_top_reduced_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const heavy_top_reduced_state_names[heavy_top_reduced_NY] = { "alpha", "beta", "gamma", "beta_dot" };
 const char *const heavy_top_reduced_param_names[heavy_top_reduced_NP] = { "I1", "I3", "M", "g", "l", "p_alpha", "p_gamma" };
 const char *const heavy_top_reduced_observable_names[heavy_top_reduced_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
@@ -164,7 +174,7 @@ int heavy_top_reduced_observables(double t, const double *y, const double *p, do
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
  * heavy_top_reduced_observables' out[1]. */
-double heavy_top_reduced_beta(double t, const double *y, const double *p)
+DERIVE_INTERNAL double heavy_top_reduced_beta(double t, const double *y, const double *p)
 {
     const double beta = y[1];
     (void)t;

@@ -7,6 +7,16 @@
 #include <math.h>
 #include "reduced_sym.h"
 
+/* reduced_sym_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const reduced_sym_state_names[reduced_sym_NY] = { "alpha", "beta", "gamma", "beta_dot" };
 const char *const reduced_sym_param_names[reduced_sym_NP] = { "I1", "I3", "p_alpha", "p_gamma" };
 const char *const reduced_sym_observable_names[reduced_sym_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
@@ -154,7 +164,7 @@ int reduced_sym_observables(double t, const double *y, const double *p, double *
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
  * reduced_sym_observables' out[1]. */
-double reduced_sym_beta(double t, const double *y, const double *p)
+DERIVE_INTERNAL double reduced_sym_beta(double t, const double *y, const double *p)
 {
     const double beta = y[1];
     (void)t;

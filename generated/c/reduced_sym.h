@@ -42,9 +42,6 @@ int reduced_sym_observables(double t, const double *y, const double *p, double *
 int reduced_sym_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out);
 
-/* Output 1 (beta) alone, as reduced_sym_observables computes it (not yet in [0, pi]). */
-double reduced_sym_beta(double t, const double *y, const double *p);
-
 /* The init map: y from in = (in_alpha, in_beta, in_gamma, in_omega1, in_omega2, in_omega3, in_alpha_dot, in_beta_dot, in_gamma_dot, in_rates_given)
  * (the scene's z-y-z angles, body angular velocity, Euler-angle rates and whether the rates were
  * given). rates_given = 1: the state is built from the angles and the rates, omega is not read

@@ -5,8 +5,8 @@
  * The right-hand side is 14 elementary operations on Taylor series u[k][0..p]:
  * nodes 0..3 are the states, the others one operation each,
  * in evaluation order. Pass n computes coefficient n of every node from coefficients <= n of
- * its operands (one helper per elementary function below), then y_i,n+1 = f_i,n / (n + 1).
- * No allocation: the series live on the stack (DERIVE_REDUCED_U_SYM_TAYLOR_NODES x (REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1) doubles).
+ * its operands (one helper per elementary function, derive_tc_<rule> of derive_taylor_base.inc), then y_i,n+1 = f_i,n / (n + 1).
+ * No allocation: the series live on the stack (DERIVE_T_NODES x (REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1) doubles).
  */
 #include <float.h>
 #include <math.h>
@@ -23,16 +23,47 @@
 #error "reduced_u_sym.h: reduced_u_sym_NY differs from the size the Taylor solvers were rendered for (4)"
 #endif
 
-#define DERIVE_REDUCED_U_SYM_TAYLOR_NODES 18
+#if reduced_u_sym_NOBS != 18
+#error "reduced_u_sym.h: reduced_u_sym_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
+#endif
 
-/* Compiled in one translation unit after reduced_u_sym_solvers.c (the kernel build), which then
- * defines DERIVE_REDUCED_U_SYM_SIMULATE, the solvers get the whole-simulation drivers reduced_u_sym_simulate[_checked|_batch]_<method>
- * of the other methods (templates/c/drivers.c.j2). Compiled alone, they are the solvers only. */
+/* The model as the shared text sees it (derive_taylor_base.inc lists these). Compiled in one
+ * translation unit after reduced_u_sym_solvers.c (the kernel build), which then defines
+ * DERIVE_REDUCED_U_SYM_SIMULATE, the solvers get the whole-simulation drivers; compiled
+ * alone, they are the solvers only. */
+#define DERIVE_MODEL reduced_u_sym
+#define DERIVE_NY reduced_u_sym_NY
+#define DERIVE_NP reduced_u_sym_NP
+#define DERIVE_NOBS 18
+#define DERIVE_TS(name) DERIVE_CAT(derive_reduced_u_sym_taylor_, name)
+#define DERIVE_T_MAXO REDUCED_U_SYM_TAYLOR_MAX_ORDER
+#define DERIVE_T_NODES 18
+#define DERIVE_T_CONTROLLED derive_reduced_u_sym_taylor_controlled
+#ifdef DERIVE_REDUCED_U_SYM_SIMULATE
+#define DERIVE_T_SIMULATE 1
+#else
+#define DERIVE_T_SIMULATE 0
+#endif
+#define DERIVE_HAS_ANGLES 1
+#define DERIVE_T_POINTWISE 1
+#define DERIVE_T_NW 4
+#define DERIVE_T_NTRIG 2
+#define DERIVE_T_EACH_STATE(X) X(0) X(1) X(2) X(3)
+#define DERIVE_T_EACH_COLUMN(X) X(0) X(1) X(2) X(3)
+#define DERIVE_T_EACH_OUTPUT(X) X(0) X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10) X(11) \
+    X(12) X(13) X(14) X(15) X(16) X(17)
+#define DERIVE_T_EACH_TRIG(X) X(0, 0) X(2, 1)
+#define DERIVE_T_LANES 1
+#define DERIVE_T_LBUF 2048
+#define DERIVE_T_NDENSE 4
+#define DERIVE_T_EACH_DENSE(X) X(0) X(1) X(2) X(3)
 
-/* ---------------------------------------------------------------------------------------- */
-/* The rules: coefficient n of u = phi(a, b) from coefficients 0..n of the operands and
- * 0..n-1 of u (Griewank & Walther, Evaluating Derivatives, ch. 13; heyoka's taylor_* files).
- */
+/* Per state: 1 when it feeds something back (its own scale controls the step), 0 for one that
+ * feeds nothing back (a cyclic angle, a quadrature: its rate's scale does). */
+static const int derive_reduced_u_sym_taylor_controlled[reduced_u_sym_NY] = { 0, 1, 0, 1 };
+
+#include "derive_taylor_base.inc"
+
 /* gcc's vectoriser off from here to the end of derive_reduced_u_sym_taylor_jet (see
  * templates/c/novectorize.j2): its stores of single coefficients read back in pairs stall the
  * jet. */
@@ -40,26 +71,6 @@
 #pragma GCC push_options
 #pragma GCC optimize ("no-tree-vectorize")
 #endif
-
-/* u = a b: the Cauchy product. */
-static double derive_reduced_u_sym_taylor_tc_mul(int n, const double *a, const double *b)
-{
-    double s = 0.0;
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += a[j] * b[n - j];
-    return s;
-}
-
-/* q = a / b: q_n = (a_n - sum_{j=1}^{n} b_j q_{n-j}) / b_0. */
-static void derive_reduced_u_sym_taylor_tc_div(int n, const double *a, const double *b, double *q)
-{
-    double s = a[n];
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= b[j] * q[n - j];
-    q[n] = s / b[0];
-}
 
 /* The coefficients 0..order of every node of the right-hand side about (t, y): the states' in
  * u[0..3]. Returns 0, or 1 when a domain guard of the model fails at y (as reduced_u_sym_rhs does). */
@@ -83,15 +94,15 @@ static int derive_reduced_u_sym_taylor_jet(double t, const double *y, const doub
         const double inv = 1.0 / (n + 1);
         u[4][n] = u[1][n] + (n == 0 ? 1 : 0.0);
         u[5][n] = (n == 0 ? 1.0 : 0.0);
-        derive_reduced_u_sym_taylor_tc_div(n, u[5], u[4], u[6]);
+        derive_tc_div(n, u[5], u[4], u[6]);
         u[7][n] = x0*x1 * u[6][n];
         u[8][n] = ((x0 == 0) ? (n == 0 ? (0) : 0.0) : u[7][n]);
         u[9][n] = u[1][n] + (n == 0 ? -1 : 0.0);
-        derive_reduced_u_sym_taylor_tc_div(n, u[5], u[9], u[10]);
+        derive_tc_div(n, u[5], u[9], u[10]);
         u[11][n] = -x1*x2 * u[10][n];
         u[12][n] = ((x2 == 0) ? (n == 0 ? (0) : 0.0) : u[11][n]);
         u[13][n] = u[8][n] + u[12][n];
-        u[14][n] = derive_reduced_u_sym_taylor_tc_mul(n, u[13], u[1]);
+        u[14][n] = derive_tc_mul(n, u[13], u[1]);
         u[15][n] = -u[14][n] + (n == 0 ? p_gamma/I3 : 0.0);
         u[16][n] = x4*(2*E_prime*I1 + (p_gamma*p_gamma)) * u[1][n];
         u[17][n] = -u[16][n] + (n == 0 ? p_alpha*p_gamma*x4 : 0.0);
@@ -109,9 +120,8 @@ static int derive_reduced_u_sym_taylor_jet(double t, const double *y, const doub
 /* The series of the outputs' sin, cos and exp calls (0) through order `order`, from the
  * right-hand side's nodes of derive_reduced_u_sym_taylor_jet (through order-1, the states through order), and the
  * table w[n][c] = coefficient n of column c: the states (c < reduced_u_sym_NY), then those calls. */
-#define DERIVE_REDUCED_U_SYM_TAYLOR_NW 4
 static void derive_reduced_u_sym_taylor_jet_outputs(const double *p, int order, double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1],
-                               double w[][DERIVE_REDUCED_U_SYM_TAYLOR_NW])
+                               double w[][DERIVE_T_NW])
 {
     int j, n;
     (void)p;
@@ -121,167 +131,15 @@ static void derive_reduced_u_sym_taylor_jet_outputs(const double *p, int order, 
     }
 }
 
-/* Jorba and Zou's test on the outputs' columns: would their own series take a step of at least
- * h? |w_j,q| (h / fac)^q <= S_j for q = order-1 and order, S_j = max(|w_j,0|, atol/rtol) (1 when
- * rtol = 0): the rule that chose h from the states, per output. An output made of a state the
- * step control leaves out (cos alpha of a fast precession) may fail it; so does a series that
- * is not finite (an output singular where the state is not). */
-static int derive_reduced_u_sym_taylor_outputs_converged(double w[][DERIVE_REDUCED_U_SYM_TAYLOR_NW], int order, double h, double fac,
-                                    double rtol, double floor_)
-{
-    const double r1 = pow(h / fac, order - 1), r2 = r1 * (h / fac);
-    double sc;
-    int j;
-    for (j = reduced_u_sym_NY; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j) {
-        sc = fabs(w[0][j]);  /* (as fmax(sc, floor_), a comparison: glibc's fmax is a call) */
-        sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-        if (!(fabs(w[order - 1][j]) * r1 <= sc && fabs(w[order][j]) * r2 <= sc))
-            return 0;
-    }
-    return 1;
-}
-
-/* Every column of w at the nb times tau of a block of samples (nb <= DERIVE_REDUCED_U_SYM_TAYLOR_KB), by
- * Horner's scheme: the samples' chains side by side (one alone is bound by the latency of its
- * multiply-adds), each in the scheme's own order, so a sample's numbers do not depend on its
- * block. v[c][at + k]: column c at sample k; past the NW columns, room for the sin and cos of
- * the states that stay pointwise (derive_reduced_u_sym_taylor_trig_block; DERIVE_REDUCED_U_SYM_TAYLOR_NV values per sample).
- * DERIVE_REDUCED_U_SYM_TAYLOR_HW samples at a time, their NW sums in registers (in memory, each pass over the
- * block reloaded what the previous one had just stored); tau is read, and v written, up to a
- * multiple of HW.
- * Under GNU C the HW samples are one vector (GNU C's vector type: one register with AVX-512):
- * as a loop over 4 samples, gcc peeled it into scalar chains (the vector builds leave the
- * straight-line vectoriser off, see derive.runtime.cbuild), and this Horner took a fifth of
- * the full batch's time. A multiply then an add either way, never fused: the same numbers. */
-#define DERIVE_REDUCED_U_SYM_TAYLOR_KB 16
-#define DERIVE_REDUCED_U_SYM_TAYLOR_NV (DERIVE_REDUCED_U_SYM_TAYLOR_NW + 4)
-/* The samples of a block of the output map: DERIVE_REDUCED_U_SYM_TAYLOR_KO, those of many steps (derive_reduced_u_sym_taylor_samples). */
-#define DERIVE_REDUCED_U_SYM_TAYLOR_KO 128
-#if defined(__AVX512F__)
-#define DERIVE_REDUCED_U_SYM_TAYLOR_HW 8
-#else
-#define DERIVE_REDUCED_U_SYM_TAYLOR_HW 4
-#endif
-#if defined(__GNUC__)
-typedef double derive_reduced_u_sym_taylor_hv __attribute__((vector_size(8 * DERIVE_REDUCED_U_SYM_TAYLOR_HW), aligned(8), may_alias));
-#endif
-static void derive_reduced_u_sym_taylor_horner_block(double w[][DERIVE_REDUCED_U_SYM_TAYLOR_NW], int order, int nb, const double *tau,
-                                double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KO], int at)
-{
-#if defined(__GNUC__)
-    /* two vectors at a time while the second holds a sample: a column's chain alone waits on
-     * its multiply and its add (for four states, four chains left the units half idle). The
-     * columns written out, one variable each: as an array indexed in a loop, the lanes' build
-     * (which peels no loop) kept them in memory, each step of a chain waiting on a store. A
-     * column's vector starts as its coefficient minus a zero vector (exactly the coefficient,
-     * -0 included). */
-    const derive_reduced_u_sym_taylor_hv zero = {0};
-    derive_reduced_u_sym_taylor_hv tk, tl, a0, b0, a1, b1, a2, b2, a3, b3;
-    int n, k0 = 0;
-    for (; k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW < nb; k0 += 2 * DERIVE_REDUCED_U_SYM_TAYLOR_HW) {
-        tk = *(const derive_reduced_u_sym_taylor_hv *)(tau + k0);
-        tl = *(const derive_reduced_u_sym_taylor_hv *)(tau + k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW);
-        a0 = b0 = w[order][0] - zero;
-        a1 = b1 = w[order][1] - zero;
-        a2 = b2 = w[order][2] - zero;
-        a3 = b3 = w[order][3] - zero;
-        for (n = order - 1; n >= 0; --n) {
-            a0 = a0 * tk + w[n][0];
-            b0 = b0 * tl + w[n][0];
-            a1 = a1 * tk + w[n][1];
-            b1 = b1 * tl + w[n][1];
-            a2 = a2 * tk + w[n][2];
-            b2 = b2 * tl + w[n][2];
-            a3 = a3 * tk + w[n][3];
-            b3 = b3 * tl + w[n][3];
-        }
-        *(derive_reduced_u_sym_taylor_hv *)&v[0][at + k0] = a0;
-        *(derive_reduced_u_sym_taylor_hv *)&v[0][at + k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW] = b0;
-        *(derive_reduced_u_sym_taylor_hv *)&v[1][at + k0] = a1;
-        *(derive_reduced_u_sym_taylor_hv *)&v[1][at + k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW] = b1;
-        *(derive_reduced_u_sym_taylor_hv *)&v[2][at + k0] = a2;
-        *(derive_reduced_u_sym_taylor_hv *)&v[2][at + k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW] = b2;
-        *(derive_reduced_u_sym_taylor_hv *)&v[3][at + k0] = a3;
-        *(derive_reduced_u_sym_taylor_hv *)&v[3][at + k0 + DERIVE_REDUCED_U_SYM_TAYLOR_HW] = b3;
-    }
-    if (k0 < nb) {
-        tk = *(const derive_reduced_u_sym_taylor_hv *)(tau + k0);
-        a0 = w[order][0] - zero;
-        a1 = w[order][1] - zero;
-        a2 = w[order][2] - zero;
-        a3 = w[order][3] - zero;
-        for (n = order - 1; n >= 0; --n) {
-            a0 = a0 * tk + w[n][0];
-            a1 = a1 * tk + w[n][1];
-            a2 = a2 * tk + w[n][2];
-            a3 = a3 * tk + w[n][3];
-        }
-        *(derive_reduced_u_sym_taylor_hv *)&v[0][at + k0] = a0;
-        *(derive_reduced_u_sym_taylor_hv *)&v[1][at + k0] = a1;
-        *(derive_reduced_u_sym_taylor_hv *)&v[2][at + k0] = a2;
-        *(derive_reduced_u_sym_taylor_hv *)&v[3][at + k0] = a3;
-    }
-#else
-    double a[DERIVE_REDUCED_U_SYM_TAYLOR_NW][DERIVE_REDUCED_U_SYM_TAYLOR_HW], tk[DERIVE_REDUCED_U_SYM_TAYLOR_HW];
-    int j, n, k, k0;
-    for (k0 = 0; k0 < nb; k0 += DERIVE_REDUCED_U_SYM_TAYLOR_HW) {
-        for (k = 0; k < DERIVE_REDUCED_U_SYM_TAYLOR_HW; ++k)
-            tk[k] = tau[k0 + k];
-        for (j = 0; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_REDUCED_U_SYM_TAYLOR_HW; ++k)
-                a[j][k] = w[order][j];
-        for (n = order - 1; n >= 0; --n)
-            for (j = 0; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j)
-                for (k = 0; k < DERIVE_REDUCED_U_SYM_TAYLOR_HW; ++k)
-                    a[j][k] = a[j][k] * tk[k] + w[n][j];
-        for (j = 0; j < DERIVE_REDUCED_U_SYM_TAYLOR_NW; ++j)
-            for (k = 0; k < DERIVE_REDUCED_U_SYM_TAYLOR_HW; ++k)
-                v[j][at + k0 + k] = a[j][k];
-    }
-#endif
-}
-
-/* The sin and cos of the states that stay pointwise, for a block of nb samples, into v past
- * the columns: derive_sincos_poly over the block (a loop gcc vectorises), then libm where an
- * argument is beyond its range (and for inf, nan). */
-static inline void derive_reduced_u_sym_taylor_trig_block(int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KO])
-{
-    int k;
-    for (k = 0; k < nb; ++k)
-        derive_sincos_poly(v[0][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 0][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 1][k]);
-    for (k = 0; k < nb; ++k)
-        if (!(fabs(v[0][k]) <= DERIVE_TRIG_MAX)) {
-            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 0][k] = sin(v[0][k]);
-            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 1][k] = cos(v[0][k]);
-        }
-    for (k = 0; k < nb; ++k)
-        derive_sincos_poly(v[2][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 2][k], &v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 3][k]);
-    for (k = 0; k < nb; ++k)
-        if (!(fabs(v[2][k]) <= DERIVE_TRIG_MAX)) {
-            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 2][k] = sin(v[2][k]);
-            v[DERIVE_REDUCED_U_SYM_TAYLOR_NW + 3][k] = cos(v[2][k]);
-        }
-}
-
 /* The outputs of the nb samples of a block (times tb) from v, the states and the columns there
- * (v[c][k], as derive_reduced_u_sym_taylor_horner_block and derive_reduced_u_sym_taylor_trig_block leave them): the model's output map,
- * its sin, cos and exp calls read from the columns, o<j>[k] = output j at sample k. The rows
- * are restrict parameters: with one array and a stride gcc cannot tell that they do not
- * overlap, and would not vectorise (a block in a buffer of its own, copied out, cost more:
- * gcc makes the copies rep movsq).
- * One loop over the samples that gcc vectorises: what depends on the parameters alone (the
- * guards' conditions of the piecewise terms) computed before it, every piecewise term a select
- * between values computed unconditionally (see derive.codegen.taylor._BlockPrinter), acos
- * derive_acos_poly's. A sample's numbers do not depend on its block.
- * A function of its own, not inlined into the solver (gcc, clang): inlined there, the two
- * block maps made the solver one function so large that its register allocation took the
- * vector build's compile of the reference top from 0.87 to 1.04 s, and the run no faster. */
-#if defined(__GNUC__)
-#define DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE __attribute__((noinline))
-#else
-#define DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE
-#endif
-static DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE void derive_reduced_u_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_U_SYM_TAYLOR_KO],
+ * (v[c][k], as the shared horner_block and trig_block leave them): the model's output map, its
+ * sin, cos and exp calls read from the columns, o<j>[k] = output j at sample k (restrict rows:
+ * see the shared outputs_flush). One loop over the samples that gcc vectorises: what depends on
+ * the parameters alone (the guards' conditions of the piecewise terms) computed before it,
+ * every piecewise term a select between values computed unconditionally (see
+ * derive.codegen.taylor._BlockPrinter), acos derive_acos_poly's. A sample's numbers do not
+ * depend on its block. */
+static DERIVE_T_NOINLINE void derive_reduced_u_sym_taylor_outputs_block(int nb, const double *tb, double v[restrict][DERIVE_T_KO],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
@@ -360,11 +218,11 @@ static DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE void derive_reduced_u_sym_taylor_out
 
 
 /* derive_reduced_u_sym_taylor_outputs_block with the sin and cos of the states that stay pointwise computed in its
- * loop (derive_sincos_poly, as derive_reduced_u_sym_taylor_trig_block does: the same numbers), not read from v:
+ * loop (derive_sincos_poly, as the shared trig_block does: the same numbers), not read from v:
  * where every angle of the block is within DERIVE_TRIG_MAX. One loop instead of two:
  * the output map's divisions and square roots (the divider) run beside sincos's multiplies
  * and adds, which had the loop of their own before them. */
-static DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE void derive_reduced_u_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_REDUCED_U_SYM_TAYLOR_KO],
+static DERIVE_T_NOINLINE void derive_reduced_u_sym_taylor_outputs_block_trig(int nb, const double *tb, double v[restrict][DERIVE_T_KO],
                                  const double *p,
                                  double *restrict o0, double *restrict o1, double *restrict o2, double *restrict o3,
                                  double *restrict o4, double *restrict o5, double *restrict o6, double *restrict o7,
@@ -441,312 +299,35 @@ static DERIVE_REDUCED_U_SYM_TAYLOR_NOINLINE void derive_reduced_u_sym_taylor_out
     }
 }
 
+#if DERIVE_T_LANES_BUILT
 
-/* Every angle of the samples (finite) within derive_sincos_poly's range? TRIG_MAX - |x| has
- * its sign bit set exactly when |x| > TRIG_MAX: one OR a value, a loop gcc vectorises. */
-static int derive_reduced_u_sym_taylor_trig_in_range(int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KO])
-{
-    uint64_t bits, acc = 0;
-    double d;
-    int k;
-    for (k = 0; k < nb; ++k) {
-        d = DERIVE_TRIG_MAX - fabs(v[0][k]);
-        memcpy(&bits, &d, sizeof bits);
-        acc |= bits;
-        d = DERIVE_TRIG_MAX - fabs(v[2][k]);
-        memcpy(&bits, &d, sizeof bits);
-        acc |= bits;
-    }
-    return !(acc >> 63);
-}
-
-/* Every state of the nb samples in v from column at finite? The bit test of
- * reduced_u_sym_outputs_finite over the block (a loop gcc vectorises), where a comparison per value
- * left a branch each. */
-static int derive_reduced_u_sym_taylor_states_finite(int at, int nb, double v[][DERIVE_REDUCED_U_SYM_TAYLOR_KO])
-{
-    uint64_t bits, carry = 0;
-    int i, k;
-    for (i = 0; i < reduced_u_sym_NY; ++i)
-        for (k = at; k < at + nb; ++k) {
-            memcpy(&bits, &v[i][k], sizeof bits);
-            carry |= (bits & UINT64_C(0x7ff0000000000000)) + UINT64_C(0x0010000000000000);
-        }
-    return !(carry >> 63);
-}
-
-int reduced_u_sym_taylor_coefficients(double t, const double *y, const double *p, int order, double *c)
-{
-    double u[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1];
-    int i, n, rc;
-    if (!y || !c || order < 1 || order > REDUCED_U_SYM_TAYLOR_MAX_ORDER)
-        return -1;
-    rc = derive_reduced_u_sym_taylor_jet(t, y, p, order, u);
-    if (rc)
-        return rc;
-    for (i = 0; i < reduced_u_sym_NY; ++i)
-        for (n = 0; n <= order; ++n)
-            c[i * (order + 1) + n] = u[i][n];
-    return 0;
-}
-
-
-#ifdef DERIVE_MEASURES
-/* The measures' hook (derive.sweep: reduced_u_sym_measures.c, rendered at run time, defines it): while
- * derive_reduced_u_sym_measuring is set, the solver hands it every step (start t, length h, the states' series
- * u[i][0..order], the end state), the series being the dense output the measures search. */
-static void reduced_u_sym_measure_series(double t, double h, int order, double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1],
-        const double *y_new, const double *p);
-#endif
-
-
-/* The samples whose states are made and whose outputs are not yet: v[c][k] is column c of
- * sample k0 + k, k < n (as derive_reduced_u_sym_taylor_horner_block leaves them). The output map runs over
- * DERIVE_REDUCED_U_SYM_TAYLOR_KO of them at a time, many steps' samples (derive_reduced_u_sym_taylor_outputs_flush): called per step
- * (a dozen samples), a quarter of its vectors would be padding, and it would set up its
- * constants at every step. */
-typedef struct {
-    double v[DERIVE_REDUCED_U_SYM_TAYLOR_NV][DERIVE_REDUCED_U_SYM_TAYLOR_KO];
-    long k0;
-    int n;
-} derive_reduced_u_sym_taylor_samples;
-
-/* The outputs of the samples held in sa, into out (out[j*n_out + k], as they come: not yet
- * canonical or checked); sa then holds none. A whole number of vectors where the rows have
- * room, so that the map's loop has no scalar tail (gcc vectorises it by HW): the samples past
- * n are copies of the last (finite, and within the angles' range where it is) written where
- * later samples go, which their own flush writes again (a failure before that leaves them as
- * it leaves every sample after it: unspecified). */
-static void derive_reduced_u_sym_taylor_outputs_flush(derive_reduced_u_sym_taylor_samples *sa, const double *p, const double *t_out, long n_out,
-        double *out)
-{
-    const long k0 = sa->k0;
-    int mb = (DERIVE_REDUCED_U_SYM_TAYLOR_HW - 1 + sa->n) / DERIVE_REDUCED_U_SYM_TAYLOR_HW * DERIVE_REDUCED_U_SYM_TAYLOR_HW, c, k;
-    if (sa->n == 0)
-        return;
-    if (k0 + mb > n_out)
-        mb = sa->n;
-    for (c = 0; c < DERIVE_REDUCED_U_SYM_TAYLOR_NV; ++c)
-        for (k = sa->n; k < mb; ++k)
-            sa->v[c][k] = sa->v[c][sa->n - 1];
-    sa->n = 0;
-    if (derive_reduced_u_sym_taylor_trig_in_range(mb, sa->v))
-        derive_reduced_u_sym_taylor_outputs_block_trig(mb, t_out + k0, sa->v, p,
-            out + k0 + 0 * n_out, out + k0 + 1 * n_out, out + k0 + 2 * n_out, out + k0 + 3 * n_out,
-            out + k0 + 4 * n_out, out + k0 + 5 * n_out, out + k0 + 6 * n_out, out + k0 + 7 * n_out,
-            out + k0 + 8 * n_out, out + k0 + 9 * n_out, out + k0 + 10 * n_out, out + k0 + 11 * n_out,
-            out + k0 + 12 * n_out, out + k0 + 13 * n_out, out + k0 + 14 * n_out, out + k0 + 15 * n_out,
-            out + k0 + 16 * n_out, out + k0 + 17 * n_out);
-    else {  /* (an angle beyond 2^19 pi/2: libm's sin and cos there) */
-        derive_reduced_u_sym_taylor_trig_block(mb, sa->v);
-        derive_reduced_u_sym_taylor_outputs_block(mb, t_out + k0, sa->v, p,
-            out + k0 + 0 * n_out, out + k0 + 1 * n_out, out + k0 + 2 * n_out, out + k0 + 3 * n_out,
-            out + k0 + 4 * n_out, out + k0 + 5 * n_out, out + k0 + 6 * n_out, out + k0 + 7 * n_out,
-            out + k0 + 8 * n_out, out + k0 + 9 * n_out, out + k0 + 10 * n_out, out + k0 + 11 * n_out,
-            out + k0 + 12 * n_out, out + k0 + 13 * n_out, out + k0 + 14 * n_out, out + k0 + 15 * n_out,
-            out + k0 + 16 * n_out, out + k0 + 17 * n_out);
-    }
-}
-
-
-/* ---------------------------------------------------------------------------------------- */
-/* The drivers (derive_taylor.inc), compiled for this model.                                 */
-
-/* Per state: 1 when it feeds something back (its own scale controls the step), 0 for one that
- * feeds nothing back (a cyclic angle, a quadrature: its rate's scale does). */
-static const int derive_reduced_u_sym_taylor_controlled[reduced_u_sym_NY] = { 0, 1, 0, 1 };
-#if reduced_u_sym_NOBS != 18
-#error "reduced_u_sym.h: reduced_u_sym_NOBS differs from the outputs the Taylor solvers were rendered for (18)"
-#endif
-
-#define DERIVE_MODEL reduced_u_sym
-#define DERIVE_NY reduced_u_sym_NY
-#define DERIVE_NP reduced_u_sym_NP
-#define DERIVE_NOBS 18
-#define DERIVE_TS(name) DERIVE_CAT(derive_reduced_u_sym_taylor_, name)
-#define DERIVE_T_MAXO REDUCED_U_SYM_TAYLOR_MAX_ORDER
-#define DERIVE_T_NODES DERIVE_REDUCED_U_SYM_TAYLOR_NODES
-#define DERIVE_T_CONTROLLED derive_reduced_u_sym_taylor_controlled
-#define DERIVE_T_POINTWISE 1
-#define DERIVE_T_NW DERIVE_REDUCED_U_SYM_TAYLOR_NW
-#define DERIVE_T_KB DERIVE_REDUCED_U_SYM_TAYLOR_KB
-#define DERIVE_T_KO DERIVE_REDUCED_U_SYM_TAYLOR_KO
-#define DERIVE_T_HW DERIVE_REDUCED_U_SYM_TAYLOR_HW
-#ifdef DERIVE_REDUCED_U_SYM_SIMULATE
-#define DERIVE_T_SIMULATE 1
-#else
-#define DERIVE_T_SIMULATE 0
-#endif
-#define DERIVE_HAS_ANGLES 1
-
-#include "derive_taylor.inc"
-
-#undef DERIVE_MODEL
-#undef DERIVE_NY
-#undef DERIVE_NP
-#undef DERIVE_NOBS
-#undef DERIVE_TS
-#undef DERIVE_T_MAXO
-#undef DERIVE_T_NODES
-#undef DERIVE_T_CONTROLLED
-#undef DERIVE_T_POINTWISE
-#undef DERIVE_T_NW
-#undef DERIVE_T_KB
-#undef DERIVE_T_KO
-#undef DERIVE_T_HW
-#undef DERIVE_T_SIMULATE
-#undef DERIVE_HAS_ANGLES
-#ifdef DERIVE_REDUCED_U_SYM_SIMULATE
-
-/* The final-only solve of taylor: the scalar solver over the m <= 2 times t2, its outputs
- * from the series as the full grid's last sample has them (the same last step, the same
- * series), made canonical as a single sample (beta's range; see final_one below). */
-static int derive_reduced_u_sym_taylor_final_outputs_taylor(const double *y0, const double *p, const double *t2,
-        long m, double rtol, double atol, long max_steps, double *y2, double *y, double *out, derive_stats *st)
-{
-    double o2[2 * reduced_u_sym_NOBS];
-    int j, rc;
-    if (m == 1) {
-        rc = derive_reduced_u_sym_taylor_solve_taylor(y0, p, t2, 1, rtol, atol, max_steps, y2, NULL, st);
-        memcpy(y, y2, sizeof(double) * reduced_u_sym_NY);
-        return rc != DERIVE_OK ? rc : reduced_u_sym_outputs_checked(1, t2, y, p, out, st);
-    }
-    rc = derive_reduced_u_sym_taylor_solve_taylor(y0, p, t2, 2, rtol, atol, max_steps, y2, o2, st);
-    memcpy(y, y2 + reduced_u_sym_NY, sizeof(double) * reduced_u_sym_NY);
-    if (rc != DERIVE_OK)
-        return rc;
-    for (j = 0; j < reduced_u_sym_NOBS; ++j)
-        out[j] = o2[2 * j + 1];
-    derive_canonical_angles(1, out, out + 1, out + 2);
-    return reduced_u_sym_outputs_finite(1, t2 + 1, out, st);
-}
-/* One whole simulation straight from t_out[0] to t_out[n_out-1], the state and the outputs at
- * the end only. The steps are those of the full grid's solve (its interior samples are dense
- * output, which never changes a step), so the last state is bit for bit the full grid's last
- * sample; only the angles' unwrapping from sample to sample is left out, which for a model whose
- * alpha and gamma are states (continuous) moves the last sample by nothing in the usual case:
- * the single sample gets beta's canonical range alone (reduced_u_sym_outputs_checked of one sample). */
-static int derive_reduced_u_sym_final_one_taylor(const double *in, double *p, const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y, double *out, derive_stats *st)
-{
-    double t2[2], y2[2 * reduced_u_sym_NY];
-    long m = n_out > 1 ? 2 : 1;
-    int rc;
-    t2[0] = t_out[0];
-    t2[1] = t_out[n_out - 1];
-    if (reduced_u_sym_init(in, p, y2)) {
-        derive_stats_init(st);
-        return derive_fail(st, DERIVE_NONFINITE, t_out[0], derive_first_nonfinite(y2, reduced_u_sym_NY));
-    }
-    if (pole_check && !reduced_u_sym_pole_clear(y2, p, pole_check)) {
-        derive_stats_init(st);
-        return derive_fail(st, DERIVE_RANGE, t_out[0], -1);
-    }
-    rc = derive_reduced_u_sym_taylor_final_outputs_taylor(y2, p, t2, m, rtol, atol, max_steps, y2, y, out, st);
-    return rc;
-}
-
-DERIVE_INTERNAL int reduced_u_sym_simulate_final_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
-{
-    long b;
-    int rc, status = DERIVE_OK;
-    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
-        return DERIVE_BAD_ARGS;
-    for (b = 0; b < n_batch; ++b) {
-        if (!derive_times_ok(t_out, n_out)) {
-            derive_stats_init(st + b);
-            rc = derive_fail(st + b, DERIVE_BAD_ARGS, t_out && n_out > 0 ? t_out[0] : 0.0, -1);
-        } else {
-            rc = derive_reduced_u_sym_final_one_taylor(ins + b * reduced_u_sym_NIN, ps + b * reduced_u_sym_NP, t_out, n_out,
-                    rtol, atol, max_steps, pole_check, y_final + b * reduced_u_sym_NY, out_final + b * reduced_u_sym_NOBS, st + b);
-        }
-        if (rc && !status)
-            status = rc;
-        if (rc == DERIVE_INTERRUPTED || rc == DERIVE_RANGE)  /* the whole batch stops */
-            return derive_rest_with(b + 1, n_batch, st, rc);
-    }
-    return status;
-}
-
-/* The lanes drivers are compiled only where DERIVE_LANES is defined: derive builds them in the
- * library it makes for this CPU's vector width (-march=native, for its final-only batches), and
- * leaves them out of the scalar library, whose compile they made half as long again. They are
- * written on GNU C's vector types (gcc, clang): another compiler's library has no lanes driver
- * and derive runs the scalar final-only one. This constant says the method has them (a scalar
- * library's caller then loads the lanes' one). */
-const int reduced_u_sym_taylor_has_lanes = 1;
-#if defined(DERIVE_LANES) && defined(__GNUC__)
-
-/* ---------------------------------------------------------------------------------------- */
-/* Lanes: W trajectories at once (the final-only batch). Every node's series is an array
- * [order][lane]; an elementwise node is a loop over the lanes, which gcc vectorises at -O3, and
- * the rules' sums (the Cauchy products, the quotient's, ...) and the step's Horner sums are
- * written on a vector of the W lanes (GNU C's vector extension: gcc and clang; the lanes are
- * compiled only there), one register for each sum: as loops over arrays of lanes gcc keeps the
- * sums in memory and splits them into halves it stores apart and loads whole
- * (tests/test_taylor_lanes.py checks the bits).
- * W is the vector width (the library is built with -march=native). Each lane does the scalar
- * driver's operations in the scalar driver's order: +, -, *, / and sqrt are correctly rounded,
- * ISO C mode contracts nothing into an FMA, the libm calls (the order-0 terms) are made per
- * lane and the step size is the scalar driver's own function, so every lane's numbers are the
- * scalar driver's bit for bit. Each lane keeps its own step size (Jorba and Zou per lane); all
- * take the same order (one tolerance for the batch). A lane whose trajectory is done takes the
- * batch's next one. */
-#if defined(__AVX512F__)
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LANES 8
-#elif defined(__AVX__)
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LANES 4
-#else
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LANES 2
-#endif
-
-/* The W lanes' doubles as one vector; DERIVE_REDUCED_U_SYM_TAYLOR_LV(p) is the W doubles at p as one (p: a row of an
- * array [..][W]; may_alias: it is read and written as doubles too; aligned(8): a row's own). */
-typedef double derive_reduced_u_sym_taylor_lanes_v __attribute__((vector_size(8 * DERIVE_REDUCED_U_SYM_TAYLOR_LANES), aligned(8), may_alias));
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LV(p) (*(derive_reduced_u_sym_taylor_lanes_v *)(p))
-
-/* The number of lanes this library was compiled with (a benchmark reports it). */
-const int reduced_u_sym_taylor_lanes = DERIVE_REDUCED_U_SYM_TAYLOR_LANES;
-
-static inline void derive_reduced_u_sym_taylor_tcl_mul(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double *u)
-{
-    derive_reduced_u_sym_taylor_lanes_v s = {0};
-    int j;
-    for (j = 0; j <= n; ++j)
-        s += DERIVE_REDUCED_U_SYM_TAYLOR_LV(a[j]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(b[n - j]);
-    DERIVE_REDUCED_U_SYM_TAYLOR_LV(u) = s;
-}
-
-static inline void derive_reduced_u_sym_taylor_tcl_div(int n, double (*a)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*b)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], double (*q)[DERIVE_REDUCED_U_SYM_TAYLOR_LANES])
-{
-    derive_reduced_u_sym_taylor_lanes_v s = DERIVE_REDUCED_U_SYM_TAYLOR_LV(a[n]);
-    int j;
-    for (j = 1; j <= n; ++j)
-        s -= DERIVE_REDUCED_U_SYM_TAYLOR_LV(b[j]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(q[n - j]);
-    DERIVE_REDUCED_U_SYM_TAYLOR_LV(q[n]) = s / DERIVE_REDUCED_U_SYM_TAYLOR_LV(b[0]);
-}
+/* The lanes' jet (W trajectories at once, the final-only and full-grid batches; the driver is
+ * the shared one). Every node's series is an array [order][lane]; an elementwise node is a loop
+ * over the lanes, which gcc vectorises at -O3, and the rules' sums (the Cauchy products, the
+ * quotient's, ...) are written on a vector of the W lanes (GNU C's vector extension), one
+ * register for each sum: as loops over arrays of lanes gcc keeps the sums in memory and splits
+ * them into halves it stores apart and loads whole. Each lane does the scalar jet's operations
+ * in its order: the same numbers. */
 
 /* derive_reduced_u_sym_taylor_jet for every lane: lane l from its time t[l], its state y[.][l] and its parameters
  * p[l]; bad[l] set when a domain guard fails at its state (the scalar jet's return 1). */
-static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], const double *const *p, int order,
-                             double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], int *bad)
+static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DERIVE_T_W], const double *const *p, int order,
+                             double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_T_W], int *bad)
 {
-    double I1[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double I3[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double p_alpha[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double p_gamma[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double E_prime[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double x0[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double x1[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double x2[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double x4[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
+    double I1[DERIVE_T_W];
+    double I3[DERIVE_T_W];
+    double p_alpha[DERIVE_T_W];
+    double p_gamma[DERIVE_T_W];
+    double E_prime[DERIVE_T_W];
+    double x0[DERIVE_T_W];
+    double x1[DERIVE_T_W];
+    double x2[DERIVE_T_W];
+    double x4[DERIVE_T_W];
     int i, n, lane_;
     (void)t;
     if (order > REDUCED_U_SYM_TAYLOR_MAX_ORDER)  /* never (the callers clamp it): tells gcc the arrays' bound */
         order = REDUCED_U_SYM_TAYLOR_MAX_ORDER;
-    for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_) {
+    for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_) {
         bad[lane_] = 0;
         I1[lane_] = p[lane_][0];
         I3[lane_] = p[lane_][1];
@@ -759,45 +340,45 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
         x4[lane_] = 1.0/(I1[lane_]*I1[lane_]);
     }
     for (i = 0; i < reduced_u_sym_NY; ++i)
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[i][0][lane_] = y[i][lane_];
     for (n = 0; n < order; ++n) {
         const double inv = 1.0 / (n + 1);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[4][n][lane_] = u[1][n][lane_] + (n == 0 ? 1 : 0.0);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[5][n][lane_] = (n == 0 ? 1.0 : 0.0);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[9][n][lane_] = u[1][n][lane_] + (n == 0 ? -1 : 0.0);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[16][n][lane_] = x4[lane_]*(2*E_prime[lane_]*I1[lane_] + (p_gamma[lane_]*p_gamma[lane_])) * u[1][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[17][n][lane_] = -u[16][n][lane_] + (n == 0 ? p_alpha[lane_]*p_gamma[lane_]*x4[lane_] : 0.0);
         {  /* 2 sums side by side, each in its rule's own order (the same numbers) */
             int j_;
-            derive_reduced_u_sym_taylor_lanes_v s0_ = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[5][n]);
-            derive_reduced_u_sym_taylor_lanes_v s1_ = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[5][n]);
+            derive_lanes_v s0_ = DERIVE_T_LV(u[5][n]);
+            derive_lanes_v s1_ = DERIVE_T_LV(u[5][n]);
             for (j_ = 1; j_ <= n; ++j_) {
-                s0_ -= DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[4][j_]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[6][n - j_]);
-                s1_ -= DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[9][j_]) * DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[10][n - j_]);
+                s0_ -= DERIVE_T_LV(u[4][j_]) * DERIVE_T_LV(u[6][n - j_]);
+                s1_ -= DERIVE_T_LV(u[9][j_]) * DERIVE_T_LV(u[10][n - j_]);
             }
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[6][n]) = s0_ / DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[4][0]);
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[10][n]) = s1_ / DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[9][0]);
+            DERIVE_T_LV(u[6][n]) = s0_ / DERIVE_T_LV(u[4][0]);
+            DERIVE_T_LV(u[10][n]) = s1_ / DERIVE_T_LV(u[9][0]);
         }
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[7][n][lane_] = x0[lane_]*x1[lane_] * u[6][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[8][n][lane_] = ((x0[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[7][n][lane_]);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[11][n][lane_] = -x1[lane_]*x2[lane_] * u[10][n][lane_];
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[12][n][lane_] = ((x2[lane_] == 0) ? (n == 0 ? (0) : 0.0) : u[11][n][lane_]);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[13][n][lane_] = u[8][n][lane_] + u[12][n][lane_];
-        derive_reduced_u_sym_taylor_tcl_mul(n, u[13], u[1], u[14][n]);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_)
+        derive_tcl_mul(n, u[13], u[1], u[14][n]);
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_)
             u[15][n][lane_] = -u[14][n][lane_] + (n == 0 ? p_gamma[lane_]/I3[lane_] : 0.0);
-        for (lane_ = 0; lane_ < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++lane_) {
+        for (lane_ = 0; lane_ < DERIVE_T_W; ++lane_) {
             u[0][n + 1][lane_] = u[13][n][lane_] * inv;
             u[1][n + 1][lane_] = u[3][n][lane_] * inv;
             u[2][n + 1][lane_] = u[15][n][lane_] * inv;
@@ -805,486 +386,6 @@ static void derive_reduced_u_sym_taylor_jet_lanes(const double *t, double y[][DE
         }
     }
 }
+#endif /* DERIVE_T_LANES_BUILT */
 
-/* The last step of lane l of the taylor lanes (from t, of length h, to t_end): the series
- * the dense output reads copied out (the scalar layout) and the scalar driver's last sample
- * made of them by its own dense output (derive_reduced_u_sym_taylor_dense at the times t0, t_end, as
- * derive_reduced_u_sym_taylor_final_outputs_taylor asks for it), then canonical and checked as there. */
-static int derive_reduced_u_sym_taylor_lanes_last_taylor(double u[][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], int lane, int order,
-        double t, double h, double fac, double rtol, double floor_, double t0, double t_end,
-        const double *p, double *y, double *out, derive_stats *st)
-{
-    double us[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1], y2[2 * reduced_u_sym_NY], o2[2 * reduced_u_sym_NOBS];
-    const double t2[2] = {t0, t_end};
-    long k1 = 1;
-    int j, k, rc;
-    for (k = 0; k <= order; ++k)
-        us[0][k] = u[0][k][lane];
-    for (k = 0; k <= order; ++k)
-        us[1][k] = u[1][k][lane];
-    for (k = 0; k <= order; ++k)
-        us[2][k] = u[2][k][lane];
-    for (k = 0; k <= order; ++k)
-        us[3][k] = u[3][k][lane];
-    derive_reduced_u_sym_taylor_samples sa;
-    sa.n = 0;
-    rc = derive_reduced_u_sym_taylor_dense(us, order, t, h, t_end, fac, rtol, floor_, p, t2, 2, &k1, y2, o2, &sa, st);
-    if (rc)
-        return rc;
-    derive_reduced_u_sym_taylor_outputs_flush(&sa, p, t2, 2, o2);
-    memcpy(y, y2 + reduced_u_sym_NY, sizeof(double) * reduced_u_sym_NY);
-    for (j = 0; j < reduced_u_sym_NOBS; ++j)
-        out[j] = o2[2 * j + 1];
-    derive_canonical_angles(1, out, out + 1, out + 2);
-    return reduced_u_sym_outputs_finite(1, &t_end, out, st);
-}
-
-/* Lane l takes the next trajectory that started (its state from y0s + b * ystride, its
- * parameters from ps, its time t0) at or after *next; 0 when none is left. The jet reads a
- * lane's parameters through p[l] at every step, so nothing else of the lane's is carried from
- * one trajectory to the next. */
-static int derive_reduced_u_sym_taylor_lanes_load_taylor(int l, long *next, long n_batch, long *idx, double *ps,
-        double t0, const double *y0s, long ystride, const derive_stats *st, const double **p,
-        double *t, double y[][DERIVE_REDUCED_U_SYM_TAYLOR_LANES])
-{
-    long b = *next;
-    int i;
-    while (b < n_batch && st[b].status != DERIVE_OK)
-        ++b;
-    *next = b + (b < n_batch);
-    if (b == n_batch)
-        return 0;
-    idx[l] = b;
-    p[l] = ps + b * reduced_u_sym_NP;
-    t[l] = t0;
-    for (i = 0; i < reduced_u_sym_NY; ++i)
-        y[i][l] = y0s[b * ystride + i];
-    return 1;
-}
-
-/* (The full grid.) A lane's steps that have samples are kept, 2048 doubles a lane, each as
- * its start t, length h and end tn, the trajectory's nfev, nstep and naccept then, and the
- * series the dense output reads (4 nodes through the order), until the
- * buffer is full or the trajectory ends; then their samples are made in order, as the scalar
- * solver makes them (derive_reduced_u_sym_taylor_dense). A trajectory's rows are so written in one go, each in turn:
- * made step by step beside the other lanes' (eight trajectories' 18 rows in flight), they
- * would leave the caches before the trajectory's angles are made canonical. */
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LBUF 2048
-#define DERIVE_REDUCED_U_SYM_TAYLOR_LREC(order) (6 + 4 * ((order) + 1))
-
-/* The samples of lane buffer sb's steps (sn doubles), into the trajectory's y_out and out;
- * *sn then 0. DERIVE_OK, or the failure at a sample, with the step counts set back to its
- * step's (the scalar solver stops there: the lanes went on). */
-static int derive_reduced_u_sym_taylor_lanes_flush_taylor(const double *sb, int *sn, int order, double fac, double rtol,
-        double floor_, const double *p, const double *t_out, long n_out, long *k_out, double *y_out,
-        double *out, derive_stats *sl)
-{
-    double us[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1];
-    derive_reduced_u_sym_taylor_samples sa;
-    const double *q;
-    int r, k, rc, n = *sn;
-    *sn = 0;
-    sa.n = 0;
-    for (r = 0; r < n; r += DERIVE_REDUCED_U_SYM_TAYLOR_LREC(order)) {
-        q = sb + r + 6;
-        for (k = 0; k <= order; ++k)
-            us[0][k] = *q++;
-        for (k = 0; k <= order; ++k)
-            us[1][k] = *q++;
-        for (k = 0; k <= order; ++k)
-            us[2][k] = *q++;
-        for (k = 0; k <= order; ++k)
-            us[3][k] = *q++;
-        rc = derive_reduced_u_sym_taylor_dense(us, order, sb[r], sb[r + 1], sb[r + 2], fac, rtol, floor_, p, t_out, n_out, k_out,
-                y_out, out, &sa, sl);
-        if (rc) {
-            derive_reduced_u_sym_taylor_outputs_flush(&sa, p, t_out, n_out, out);
-            sl->nfev = (long)sb[r + 3];
-            sl->nstep = (long)sb[r + 4];
-            sl->naccept = (long)sb[r + 5];
-            return rc;
-        }
-    }
-    derive_reduced_u_sym_taylor_outputs_flush(&sa, p, t_out, n_out, out);
-    return DERIVE_OK;
-}
-
-/* The trajectories that started (their derived parameters in ps), streamed through the W lanes
- * from t_out[0] to t_out[n_out - 1]: a lane whose trajectory is done (its last step, or a
- * failure) takes the next one at once, so the lanes idle only at the batch's end (a lane left
- * idle keeps its last trajectory's numbers, computed on and never read). The lanes are
- * independent, so a trajectory's numbers do not depend on which lane or beside which others it
- * runs. Without out (the final-only batch): the initial states in y_final (NY per trajectory),
- * which gets the last states, and out_final the last sample's outputs. With out (the full
- * grid): the initial states at the start of each trajectory's y_work (n_out x NY), and every
- * sample of the states and the outputs into y_work and out (NOBS x n_out per trajectory) as the
- * scalar solver makes them (derive_reduced_u_sym_taylor_dense on the lane's series), then made canonical and checked
- * as derive_reduced_u_sym_taylor_solve_outputs_taylor does. Returns DERIVE_INTERRUPTED when the interrupt flag
- * stopped it (every lane still running says so, and every trajectory not yet loaded), else
- * DERIVE_OK. */
-static int derive_reduced_u_sym_taylor_lanes_run_taylor(long n_batch, double *ps, const double *t_out, long n_out,
-        int order, double fac, double ip1, double ip2, double floor_, double rtol, long max_steps,
-        double *y_final, double *out_final, double *y_work, double *out, derive_stats *st)
-{
-    double u[DERIVE_REDUCED_U_SYM_TAYLOR_NODES][REDUCED_U_SYM_TAYLOR_MAX_ORDER + 1][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], y[reduced_u_sym_NY][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], t[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    const double *p[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double yn[reduced_u_sym_NY][DERIVE_REDUCED_U_SYM_TAYLOR_LANES], chk[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], n1[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], n2[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], hl[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], hs[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    double sb[DERIVE_REDUCED_U_SYM_TAYLOR_LANES][DERIVE_REDUCED_U_SYM_TAYLOR_LBUF], *q;  /* (out) the lanes' kept steps */
-    int sn[DERIVE_REDUCED_U_SYM_TAYLOR_LANES];
-    derive_reduced_u_sym_taylor_lanes_v ys0, ys1, ys2, ys3;
-    const double t0 = t_out[0], t_end = t_out[n_out - 1];
-    double h, tn, sc, a1, a2, *y0s = out ? y_work : y_final, *ob;
-    const long ystride = out ? n_out * reduced_u_sym_NY : reduced_u_sym_NY;
-    long idx[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], k_out[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], kr[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], kk, next = 0;
-    int bad[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], run[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], go[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], last[DERIVE_REDUCED_U_SYM_TAYLOR_LANES], i, j, k, l, left = 0;
-    derive_stats *sl;
-    for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-        run[l] = derive_reduced_u_sym_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
-        left += run[l];
-        k_out[l] = kr[l] = sn[l] = 0;  /* (out: the first sample too, the first step's series at 0) */
-    }
-    if (left == 0)
-        return DERIVE_OK;
-    for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-        if (!run[l]) {  /* a lane without a trajectory repeats the first one's, never read */
-            idx[l] = idx[0];
-            p[l] = p[0];
-            t[l] = t[0];
-            for (i = 0; i < reduced_u_sym_NY; ++i)
-                y[i][l] = y[i][0];
-        }
-    while (left > 0) {
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-            /* (a lane loaded has nstep 0 < max_steps: one pass) */
-            if (run[l] && st[idx[l]].nstep >= max_steps) {
-                sl = st + idx[l];
-                if (!(out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                        y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl)))
-                    derive_fail(sl, DERIVE_MAX_STEPS, t[l], -1);
-                run[l] = derive_reduced_u_sym_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
-                left -= !run[l];
-                k_out[l] = kr[l] = sn[l] = 0;
-            }
-        if (left == 0)
-            break;
-        if (derive_interrupted()) {
-            for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-                if (run[l])
-                    derive_fail(st + idx[l], DERIVE_INTERRUPTED, t[l], -1);
-            derive_rest_with(next, n_batch, st, DERIVE_INTERRUPTED);
-            return DERIVE_INTERRUPTED;
-        }
-        derive_reduced_u_sym_taylor_jet_lanes(t, y, p, order, u, bad);
-        /* The scalar driver's step control (see derive_reduced_u_sym_taylor_solve_taylor) with its arithmetic
-         * over the lanes: the check sum, the scaled last coefficients (max as a comparison: they
-         * are finite where they are used, a finite sum, and there fmax is that comparison), the
-         * steps, the tests per lane, then the series at every lane's own h. */
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-            chk[l] = n1[l] = n2[l] = 0.0;
-        for (i = 0; i < reduced_u_sym_NY; ++i)
-            for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-                chk[l] += u[i][order - 1][l] + u[i][order][l];
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            sc = fabs(u[0][1][l]);  /* alpha: its rate's scale */
-            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-            a1 = fabs(u[0][order - 1][l]) / sc;
-            a2 = fabs(u[0][order][l]) / sc;
-            n1[l] = a1 > n1[l] ? a1 : n1[l];
-            n2[l] = a2 > n2[l] ? a2 : n2[l];
-        }
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            sc = fabs(y[1][l]);
-            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-            a1 = fabs(u[1][order - 1][l]) / sc;
-            a2 = fabs(u[1][order][l]) / sc;
-            n1[l] = a1 > n1[l] ? a1 : n1[l];
-            n2[l] = a2 > n2[l] ? a2 : n2[l];
-        }
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            sc = fabs(u[2][1][l]);  /* gamma: its rate's scale */
-            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-            a1 = fabs(u[2][order - 1][l]) / sc;
-            a2 = fabs(u[2][order][l]) / sc;
-            n1[l] = a1 > n1[l] ? a1 : n1[l];
-            n2[l] = a2 > n2[l] ? a2 : n2[l];
-        }
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            sc = fabs(y[3][l]);
-            sc = rtol > 0.0 ? (sc > floor_ ? sc : floor_) : 1.0;
-            a1 = fabs(u[3][order - 1][l]) / sc;
-            a2 = fabs(u[3][order][l]) / sc;
-            n1[l] = a1 > n1[l] ? a1 : n1[l];
-            n2[l] = a2 > n2[l] ? a2 : n2[l];
-        }
-        /* the steps of all lanes at once (the scalar driver's function, no libm call) */
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l)
-            hs[l] = derive_reduced_u_sym_taylor_step(n1[l], n2[l], order - 1, ip1, order, ip2, fac);
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            hl[l] = 0.0;
-            go[l] = 0;
-            if (!run[l])
-                continue;
-            sl = st + idx[l];
-            sl->nfev++;
-            run[l] = 0;  /* set again when the lane goes on */
-            --left;
-            if ((bad[l] || !isfinite(chk[l])) && out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                    y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl))
-                continue;  /* (a sample of the steps before failed first) */
-            if (bad[l]) {
-                derive_fail_rc(sl, t[l], 1);
-                continue;
-            }
-            if (!isfinite(chk[l])) {
-                for (i = 0; i < reduced_u_sym_NY && sl->status == DERIVE_OK; ++i)
-                    for (j = 1; j <= order; ++j)
-                        if (!isfinite(u[i][j][l])) {
-                            derive_fail(sl, DERIVE_NONFINITE, t[l], i);
-                            break;
-                        }
-                if (sl->status == DERIVE_OK)
-                    derive_fail(sl, DERIVE_NONFINITE, t[l], -1);
-                continue;
-            }
-            h = hs[l];
-            last[l] = !(t[l] + h < t_end);
-            if (last[l])
-                h = t_end - t[l];
-            if (h < 16.0 * DBL_EPSILON * fabs(t[l]) || !(h >= DBL_MIN)) {
-                if (out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                        y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl))
-                    continue;
-                sl->h_fail = h;
-                derive_fail(sl, DERIVE_STEP_UNDERFLOW, t[l], -1);
-                continue;
-            }
-            sl->nstep++;
-            sl->naccept++;
-            hl[l] = h;
-            go[l] = 1;
-        }
-        /* every state's series at every lane's h, the states' Horner chains side by side, each
-         * state's vector a variable of its own (as an array indexed in the loop over the states,
-         * which the lanes' build does not peel, each step of a chain waited on a store) */
-        {
-            const derive_reduced_u_sym_taylor_lanes_v hv = DERIVE_REDUCED_U_SYM_TAYLOR_LV(hl);
-            ys0 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[0][order]);
-            ys1 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[1][order]);
-            ys2 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[2][order]);
-            ys3 = DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[3][order]);
-            for (j = order - 1; j >= 0; --j) {
-                ys0 = ys0 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[0][j]);
-                ys1 = ys1 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[1][j]);
-                ys2 = ys2 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[2][j]);
-                ys3 = ys3 * hv + DERIVE_REDUCED_U_SYM_TAYLOR_LV(u[3][j]);
-            }
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[0]) = ys0;
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[1]) = ys1;
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[2]) = ys2;
-            DERIVE_REDUCED_U_SYM_TAYLOR_LV(yn[3]) = ys3;
-        }
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES; ++l) {
-            if (!go[l])
-                continue;
-            sl = st + idx[l];
-            tn = last[l] ? t_end : t[l] + hl[l];
-            if (!out) {
-                if (last[l]) {
-                    derive_reduced_u_sym_taylor_lanes_last_taylor(u, l, order, t[l], hl[l], fac, rtol, floor_, t0, t_end,
-                            p[l], y_final + idx[l] * reduced_u_sym_NY, out_final + idx[l] * reduced_u_sym_NOBS, sl);
-                    continue;
-                }
-            }
-            else if (kr[l] < n_out && t_out[kr[l]] <= tn) {
-                /* a step with samples: kept (the buffer's steps made first when it is full) */
-                if (sn[l] + DERIVE_REDUCED_U_SYM_TAYLOR_LREC(order) > DERIVE_REDUCED_U_SYM_TAYLOR_LBUF && out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                        y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl))
-                    continue;
-                q = sb[l] + sn[l];
-                q[0] = t[l];
-                q[1] = hl[l];
-                q[2] = tn;
-                q[3] = (double)sl->nfev;
-                q[4] = (double)sl->nstep;
-                q[5] = (double)sl->naccept;
-                q += 6;
-                for (k = 0; k <= order; ++k)
-                    *q++ = u[0][k][l];
-                for (k = 0; k <= order; ++k)
-                    *q++ = u[1][k][l];
-                for (k = 0; k <= order; ++k)
-                    *q++ = u[2][k][l];
-                for (k = 0; k <= order; ++k)
-                    *q++ = u[3][k][l];
-                sn[l] += DERIVE_REDUCED_U_SYM_TAYLOR_LREC(order);
-                for (kk = kr[l]; kk < n_out && t_out[kk] <= tn; ++kk)
-                    ;
-                kr[l] = kk;
-            }
-            for (i = 0; i < reduced_u_sym_NY; ++i) {
-                y[i][l] = yn[i][l];
-                if (!isfinite(yn[i][l]) && !(out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                            y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl))) {
-                    derive_fail(sl, DERIVE_NONFINITE, tn, i);
-                    break;
-                }
-            }
-            if (sl->status != DERIVE_OK)
-                continue;
-            if (last[l]) {  /* (out) the trajectory's last step: its samples, made canonical, checked */
-                if (out && derive_reduced_u_sym_taylor_lanes_flush_taylor(sb[l], sn + l, order, fac, rtol, floor_, p[l], t_out, n_out, k_out + l,
-                        y_work + idx[l] * ystride, out + idx[l] * n_out * reduced_u_sym_NOBS, sl))
-                    continue;
-                ob = out + idx[l] * n_out * reduced_u_sym_NOBS;
-                derive_canonical_angles(n_out, ob, ob + n_out, ob + 2 * n_out);
-                reduced_u_sym_outputs_finite(n_out, t_out, ob, sl);
-                continue;
-            }
-            t[l] = tn;
-            run[l] = 1;
-            ++left;
-        }
-        /* the lanes whose trajectory is done take the next ones */
-        for (l = 0; l < DERIVE_REDUCED_U_SYM_TAYLOR_LANES && next < n_batch; ++l)
-            if (!run[l]) {
-                run[l] = derive_reduced_u_sym_taylor_lanes_load_taylor(l, &next, n_batch, idx, ps, t0, y0s, ystride, st, p, t, y);
-                left += run[l];
-                k_out[l] = kr[l] = sn[l] = 0;
-            }
-    }
-    return DERIVE_OK;
-}
-
-/* Every start of a lanes batch, before anything is integrated: the init map into y0s + b *
- * ystride, the pole check (the first refusal stops the batch: DERIVE_RANGE, the rest said so),
- * a start not finite failed where it is. DERIVE_OK or DERIVE_RANGE. */
-static int derive_reduced_u_sym_taylor_lanes_starts_taylor(long n_batch, const double *ins, double *ps, double t0,
-        int pole_check, double *y0s, long ystride, derive_stats *st)
-{
-    long b;
-    int i;
-    for (b = 0; b < n_batch; ++b) {
-        double *y = y0s + b * ystride, *p = ps + b * reduced_u_sym_NP;
-        derive_stats_init(st + b);
-        if (reduced_u_sym_init(ins + b * reduced_u_sym_NIN, p, y))
-            derive_fail(st + b, DERIVE_NONFINITE, t0, derive_first_nonfinite(y, reduced_u_sym_NY));
-        else if (pole_check && !reduced_u_sym_pole_clear(y, p, pole_check)) {
-            derive_fail(st + b, DERIVE_RANGE, t0, -1);
-            return derive_rest_with(b + 1, n_batch, st, DERIVE_RANGE);
-        }
-        else
-            for (i = 0; i < reduced_u_sym_NY; ++i)
-                if (!isfinite(y[i])) {
-                    derive_fail(st + b, DERIVE_NONFINITE, t0, i);
-                    break;
-                }
-    }
-    return DERIVE_OK;
-}
-
-/* The batch's status once the lanes ran: the first trajectory's failure, in order (as the
- * scalar batch drivers report it), or DERIVE_OK; DERIVE_INTERRUPTED when they were stopped. */
-static int derive_reduced_u_sym_taylor_lanes_status_taylor(int rc, long n_batch, const derive_stats *st)
-{
-    long b;
-    if (rc == DERIVE_INTERRUPTED)
-        return rc;
-    for (b = 0; b < n_batch; ++b)
-        if (st[b].status != DERIVE_OK)
-            return st[b].status;
-    return DERIVE_OK;
-}
-
-/* The lanes' arguments as the scalar driver would take them (else the scalar batch driver runs
- * and says so per trajectory, as ever; a single output time too). */
-static int derive_reduced_u_sym_taylor_lanes_args_ok_taylor(const double *t_out, long n_out, double rtol, double atol, long max_steps)
-{
-    return n_out >= 2 && derive_times_ok(t_out, n_out) && rtol >= 0.0 && atol >= 0.0 && isfinite(rtol)
-        && isfinite(atol) && !(rtol == 0.0 && atol == 0.0) && max_steps >= 1;
-}
-
-/* reduced_u_sym_simulate_final_batch_taylor with the trajectories run DERIVE_REDUCED_U_SYM_TAYLOR_LANES at a time (the same
- * numbers, statuses and statistics per trajectory). Every start first (the init map, the pole
- * check: the first refusal stops the batch with DERIVE_RANGE before anything is integrated),
- * then the trajectories that started, streamed through the lanes. */
-DERIVE_INTERNAL int reduced_u_sym_simulate_lanes_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_final, double *out_final, derive_stats *st)
-{
-    double fac, ip1, ip2, floor_;
-    int order;
-    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_final || !out_final || !st)))
-        return DERIVE_BAD_ARGS;
-    if (!derive_reduced_u_sym_taylor_lanes_args_ok_taylor(t_out, n_out, rtol, atol, max_steps))
-        return reduced_u_sym_simulate_final_batch_taylor(n_batch, ins, ps, t_out, n_out, rtol, atol, max_steps,
-                pole_check, y_final, out_final, st);
-    order = derive_reduced_u_sym_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);  /* the scalar driver's */
-    if (derive_reduced_u_sym_taylor_lanes_starts_taylor(n_batch, ins, ps, t_out[0], pole_check, y_final, reduced_u_sym_NY, st))
-        return DERIVE_RANGE;
-    return derive_reduced_u_sym_taylor_lanes_status_taylor(derive_reduced_u_sym_taylor_lanes_run_taylor(n_batch, ps, t_out, n_out, order, fac, ip1,
-            ip2, floor_, rtol, max_steps, y_final, out_final, NULL, NULL, st), n_batch, st);
-}
-
-/* reduced_u_sym_simulate_batch_taylor (every sample) with the trajectories run DERIVE_REDUCED_U_SYM_TAYLOR_LANES at a time:
- * the same numbers, statuses and statistics per trajectory (the steps of the lanes, each lane's
- * samples by the scalar solver's own dense output), and the same arguments. Every start first,
- * as above: a refused start stops the batch before anything is integrated (the scalar driver
- * has integrated the trajectories before it; the caller takes the batch to the next
- * formulation either way). */
-DERIVE_INTERNAL int reduced_u_sym_simulate_lanes_full_batch_taylor(long n_batch, const double *ins, double *ps,
-        const double *t_out, long n_out,
-        double rtol, double atol, long max_steps, int pole_check, double *y_work, double *out, derive_stats *st)
-{
-    double fac, ip1, ip2, floor_;
-    int order;
-    if (n_batch < 0 || (n_batch > 0 && (!ins || !ps || !y_work || !out || !st)))
-        return DERIVE_BAD_ARGS;
-    if (!derive_reduced_u_sym_taylor_lanes_args_ok_taylor(t_out, n_out, rtol, atol, max_steps))
-        return reduced_u_sym_simulate_batch_taylor(n_batch, ins, ps, t_out, n_out, rtol, atol, max_steps,
-                pole_check, y_work, out, st);
-    order = derive_reduced_u_sym_taylor_control_taylor(rtol, atol, &fac, &ip1, &ip2, &floor_);
-    if (derive_reduced_u_sym_taylor_lanes_starts_taylor(n_batch, ins, ps, t_out[0], pole_check, y_work, n_out * reduced_u_sym_NY, st))
-        return DERIVE_RANGE;
-    return derive_reduced_u_sym_taylor_lanes_status_taylor(derive_reduced_u_sym_taylor_lanes_run_taylor(n_batch, ps, t_out, n_out, order, fac, ip1,
-            ip2, floor_, rtol, max_steps, NULL, NULL, y_work, out, st), n_batch, st);
-}
-#endif /* DERIVE_LANES && __GNUC__ */
-#endif /* SIMULATE */
-
-/* taylor: n_batch trajectories over save->t_out, saving what save says (derive_saveat of
- * derive_runtime.h); the settings as the method's solver takes them. DERIVE_BAD_ARGS (st not
- * written) without save or with n_batch < 0; with n_batch = 1, st may be NULL. */
-int reduced_u_sym_run_taylor(const derive_saveat *save, long n_batch, const double *ins,
-        double *ps, double rtol, double atol, long max_steps, double *y, double *out, derive_stats *st)
-{
-    if (!save || n_batch < 0)
-        return DERIVE_BAD_ARGS;
-    if (!save->outputs) {
-        if (save->final)
-            return DERIVE_BAD_ARGS;
-        if (n_batch == 1)
-            return reduced_u_sym_solve_taylor(ins, ps, save->t_out, save->n_out, rtol, atol, max_steps, y, st);
-        return reduced_u_sym_solve_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out, rtol, atol, max_steps, y, st);
-    }
-#if defined(DERIVE_REDUCED_U_SYM_SIMULATE)
-#if defined(DERIVE_LANES) && defined(__GNUC__)
-    if (save->lanes && save->final)
-        return reduced_u_sym_simulate_lanes_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
-                rtol, atol, max_steps, save->pole_check, y, out, st);
-    if (save->lanes)
-        return reduced_u_sym_simulate_lanes_full_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
-                rtol, atol, max_steps, save->pole_check, y, out, st);
-#endif
-    if (save->final)
-        return reduced_u_sym_simulate_final_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out,
-                rtol, atol, max_steps, save->pole_check, y, out, st);
-    if (n_batch == 1)
-        return reduced_u_sym_simulate_checked_taylor(ins, ps, save->t_out, save->n_out, rtol, atol, max_steps,
-                save->pole_check, y, out, st);
-    return reduced_u_sym_simulate_batch_taylor(n_batch, ins, ps, save->t_out, save->n_out, rtol, atol, max_steps,
-            save->pole_check, y, out, st);
-#else
-    (void)out;
-    return DERIVE_BAD_ARGS;
-#endif
-}
+#include "derive_taylor.inc"

@@ -7,6 +7,16 @@
 #include <math.h>
 #include "rigid_body.h"
 
+/* rigid_body_beta serves the sweeps' measures compiled in the same unit after this file:
+ * file-local, as derive_runtime.h has such functions. */
+#ifndef DERIVE_INTERNAL
+#if defined(__GNUC__)
+#define DERIVE_INTERNAL static __attribute__((unused))
+#else
+#define DERIVE_INTERNAL static
+#endif
+#endif
+
 const char *const rigid_body_state_names[rigid_body_NY] = { "q0", "q1", "q2", "q3", "omega1", "omega2", "omega3" };
 const char *const rigid_body_param_names[rigid_body_NP] = { "I1", "I2", "I3", "M", "g", "cx", "cy", "cz", "c" };
 const char *const rigid_body_observable_names[rigid_body_NOBS] = { "alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_y", "axis_z", "energy", "p_alpha", "p_gamma", "n1", "n2", "n3", "L1", "L2", "L3" };
@@ -269,7 +279,7 @@ int rigid_body_observables(double t, const double *y, const double *p, double *o
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
  * rigid_body_observables' out[1]. */
-double rigid_body_beta(double t, const double *y, const double *p)
+DERIVE_INTERNAL double rigid_body_beta(double t, const double *y, const double *p)
 {
     const double q0 = y[0];
     const double q1 = y[1];
