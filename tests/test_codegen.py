@@ -42,11 +42,17 @@ class CModel:
         self.lib = compile_library(f"test_{name}", src, f"{name}.c")
         self.mod = _numpy_module(name)
         D = ctypes.POINTER(ctypes.c_double)
-        for fn in ("rhs", "jac", "observables"):
+        for fn in ("rhs", "jac"):
             f = getattr(self.lib, f"{name}_{fn}")
             f.argtypes = [ctypes.c_double, D, D, D]
             f.restype = ctypes.c_int
             setattr(self, f"_{fn}", f)
+        at = self.lib[f"{name}_observables_at"]
+        at.argtypes = [ctypes.c_long, D, D, D, D]
+        at.restype = ctypes.c_int
+        zero = np.zeros(1)
+        # the outputs of one state: the output map over one sample
+        self._observables = lambda t, y, p, out: at(1, zero.ctypes.data_as(D), y, p, out)
 
     def call(self, fn, y, p, n_out):
         y = np.ascontiguousarray(y, dtype=float)

@@ -1,7 +1,7 @@
 """The cost of each output sample.
 
 * ``<model>_observables_at``, the output map as one loop over the samples (the parameters'
-  temporaries computed once), is ``<model>_observables`` sample by sample, bit for bit, for
+  temporaries computed once), has the bits of the same map called one sample at a time, for
   every generated model;
 * ``<model>_outputs_finite``, the finiteness pass on the bits of the output arrays, reports the
   first non-finite output (earliest sample, then lowest column) as the comparison did;
@@ -56,21 +56,19 @@ def _description(name: str) -> dict:
 def test_the_output_loop_is_the_output_map_bit_for_bit(models_lib, name):
     """At states and parameters drawn at random (any finite numbers: the map need not be in its
     domain for the two to agree, NaN for NaN), every output of every sample has the bits of
-    ``_observables`` at that sample."""
+    the map called on that sample alone."""
     d = _description(name)
     ny, nobs, n = len(d["states"]), len(d["outputs"]), 37
     rng = np.random.default_rng(20)
     t = np.sort(rng.uniform(0.0, 10.0, n))
     y = rng.uniform(-1.5, 1.5, (n, ny))
     p = rng.uniform(0.2, 2.0, len(d["params"]))
-    one = getattr(models_lib, f"{name}_observables")
-    one.argtypes, one.restype = (ctypes.c_double, DP, DP, DP), ctypes.c_int
     loop = getattr(models_lib, f"{name}_observables_at")
     loop.argtypes, loop.restype = (ctypes.c_long, DP, DP, DP, DP), ctypes.c_int
     expected = np.empty((nobs, n))
     o = np.empty(nobs)
     for k in range(n):
-        assert one(t[k], _ptr(y[k]), _ptr(p), _ptr(o)) == 0
+        assert loop(1, _ptr(t[k:k + 1]), _ptr(y[k]), _ptr(p), _ptr(o)) == 0
         expected[:, k] = o
     out = np.full((nobs, n), -7.0)
     assert loop(n, _ptr(t), _ptr(y), _ptr(p), _ptr(out)) == 0
@@ -81,13 +79,13 @@ def test_the_output_loop_is_the_output_map_bit_for_bit(models_lib, name):
 @pytest.mark.parametrize("name", [m for m in MODELS if _description(m)["has_angles"]])
 def test_beta_alone_is_the_output_map_s_beta_bit_for_bit(models_lib, name):
     """``<model>_beta``, what the sweeps' extremum searches evaluate, has the bits of
-    ``_observables``' out[1] at random states (NaN for NaN); every model with angles has one."""
+    ``_observables_at``' out[1] at random states (NaN for NaN); every model with angles has one."""
     d = _description(name)
     ny, nobs = len(d["states"]), len(d["outputs"])
     rng = np.random.default_rng(21)
     p = rng.uniform(0.2, 2.0, len(d["params"]))
-    one = getattr(models_lib, f"{name}_observables")
-    one.argtypes, one.restype = (ctypes.c_double, DP, DP, DP), ctypes.c_int
+    one = getattr(models_lib, f"{name}_observables_at")
+    one.argtypes, one.restype = (ctypes.c_long, DP, DP, DP, DP), ctypes.c_int
     beta = getattr(models_lib, f"test_{name}_beta")
     beta.argtypes, beta.restype = (ctypes.c_double, DP, DP), ctypes.c_double
     o = np.empty(nobs)
@@ -95,7 +93,7 @@ def test_beta_alone_is_the_output_map_s_beta_bit_for_bit(models_lib, name):
     for _ in range(200):
         y = rng.uniform(-1.5, 1.5, ny)
         t = float(rng.uniform(0.0, 10.0))
-        one(t, _ptr(y), _ptr(p), _ptr(o))
+        one(1, _ptr(np.array([t])), _ptr(y), _ptr(p), _ptr(o))
         want.append(o[1])
         got.append(beta(t, _ptr(y), _ptr(p)))
     want, got = np.array(want), np.array(got)

@@ -63,7 +63,7 @@ def _compile(c_files: list[Path], include: Path, out: Path) -> ctypes.CDLL:
 
 
 class CModel:
-    """One model's ``_init`` and ``_observables`` from a compiled library and its description."""
+    """One model's ``_init`` and ``_observables_at`` from a compiled library and its description."""
 
     def __init__(self, lib: ctypes.CDLL, desc: dict):
         self.desc = desc
@@ -72,8 +72,8 @@ class CModel:
         self._init = getattr(lib, f"{self.name}_init")
         self._init.argtypes = (dp, dp, dp)
         self._init.restype = ctypes.c_int
-        self._obs = getattr(lib, f"{self.name}_observables")
-        self._obs.argtypes = (ctypes.c_double, dp, dp, dp)
+        self._obs = getattr(lib, f"{self.name}_observables_at")
+        self._obs.argtypes = (ctypes.c_long, dp, dp, dp, dp)
         self._obs.restype = ctypes.c_int
 
     def params(self, values: dict) -> np.ndarray:
@@ -93,7 +93,7 @@ class CModel:
     def outputs(self, y, p) -> dict:
         """The output map at (y, p) as {name: value or 3-vector}."""
         out = np.full(len(self.desc["outputs"]), np.nan)
-        assert self._obs(0.0, _ptr(y), _ptr(p), _ptr(out)) == 0
+        assert self._obs(1, _ptr(np.zeros(1)), _ptr(y), _ptr(p), _ptr(out)) == 0
         flat = dict(zip(self.desc["outputs"], out))
         # The output file's vectors, flattened with suffixes; a name that is not a complete
         # vector stays a scalar (euler_free's "L2" is |L|², not L₂).

@@ -104,7 +104,7 @@ def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,
     the shared runtime they include (:func:`runtime_sources`).
 
     The C includes ``"<prefix>.h"`` (the model ABI: ``<prefix>_NY``, ``<prefix>_NP``,
-    ``<prefix>_rhs``, ``<prefix>_jac``, ``<prefix>_init``, ``<prefix>_observables``, the name
+    ``<prefix>_rhs``, ``<prefix>_jac``, ``<prefix>_init``, ``<prefix>_observables_at``, the name
     arrays); ``ny`` is checked against ``<prefix>_NY`` at compile time. ``methods`` defaults to
     every registered method. ``has_angles``: the first three outputs are z-y-z angles, made
     canonical by ``<prefix>_outputs_at``.

@@ -44,7 +44,7 @@ class Description:
     effects: tuple
     states: tuple
     params: tuple
-    outputs: tuple  # flat output names, in the order of <name>_observables
+    outputs: tuple  # flat output names, in the order of <name>_observables_at
     nin: int
     cost: int
     derived_params: tuple  # parameter indices the init map writes

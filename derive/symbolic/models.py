@@ -91,7 +91,7 @@ class Model:
 
     @property
     def observables(self) -> dict:
-        """The outputs (kept under their old name: the generated ``<name>_observables``)."""
+        """The outputs (named as the generated ``<name>_observables_at``)."""
         return self.outputs
 
     @functools.cached_property

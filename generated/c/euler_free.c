@@ -78,30 +78,9 @@ int euler_free_jac(double t, const double *y, const double *p, double *J)
     return 0;
 }
 
-int euler_free_observables(double t, const double *y, const double *p, double *out)
-{
-    const double omega1 = y[0];
-    const double omega2 = y[1];
-    const double omega3 = y[2];
-    const double I1 = p[0];
-    const double I2 = p[1];
-    const double I3 = p[2];
-    (void)t;
-
-    const double x0 = (omega1*omega1);
-    const double x1 = (omega2*omega2);
-    const double x2 = (omega3*omega3);
-    out[0] = (1.0/2.0)*I1*x0 + (1.0/2.0)*I2*x1 + (1.0/2.0)*I3*x2;
-    out[1] = (I1*I1)*x0 + (I2*I2)*x1 + (I3*I3)*x2;
-    out[2] = omega1;
-    out[3] = omega2;
-    out[4] = omega3;
-    return 0;
-}
-
-/* euler_free_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int euler_free_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {

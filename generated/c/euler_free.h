@@ -34,11 +34,9 @@ int euler_free_rhs(double t, const double *y, const double *p, double *dydt);
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int euler_free_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (energy, L_squared, omega1, omega2, omega3). Returns 0. */
-int euler_free_observables(double t, const double *y, const double *p, double *out);
-
-/* The outputs at n_out samples, as euler_free_observables gives them (bit for bit):
- * out[j*n_out + k] = output j at t_out[k] from the state y[k*NY ..]. Returns 0. */
+/* The outputs (energy, L_squared, omega1, omega2, omega3) at n_out samples (n_out = 1 for one state):
+ * out[j*n_out + k] = output j at t_out[k] from the state y[k*NY ..]; the parameters'
+ * temporaries are computed once a call. Returns 0. */
 int euler_free_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out);
 

@@ -189,55 +189,9 @@ int euler_poisson_asym_gravity_general_jac(double t, const double *y, const doub
     return 0;
 }
 
-int euler_poisson_asym_gravity_general_observables(double t, const double *y, const double *p, double *out)
-{
-    const double omega1 = y[0];
-    const double omega2 = y[1];
-    const double omega3 = y[2];
-    const double n1 = y[3];
-    const double n2 = y[4];
-    const double n3 = y[5];
-    const double e1 = y[6];
-    const double e2 = y[7];
-    const double e3 = y[8];
-    const double I1 = p[0];
-    const double I2 = p[1];
-    const double I3 = p[2];
-    const double M = p[3];
-    const double g = p[4];
-    const double cx = p[5];
-    const double cy = p[6];
-    const double cz = p[7];
-    (void)t;
-
-    const double x0 = -e1*n2 + e2*n1;
-    const double x1 = I1*omega1;
-    const double x2 = I2*omega2;
-    const double x3 = I3*omega3;
-    out[0] = atan2(x0, e3);
-    out[1] = atan2(sqrt((n1*n1) + (n2*n2)), n3);
-    out[2] = atan2(n2, -n1);
-    out[3] = omega1;
-    out[4] = omega2;
-    out[5] = omega3;
-    out[6] = e3;
-    out[7] = x0;
-    out[8] = n3;
-    out[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*n1 + cy*n2 + cz*n3);
-    out[10] = n1*x1 + n2*x2 + n3*x3;
-    out[11] = x3;
-    out[12] = n1;
-    out[13] = n2;
-    out[14] = n3;
-    out[15] = x1;
-    out[16] = x2;
-    out[17] = x3;
-    return 0;
-}
-
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
- * euler_poisson_asym_gravity_general_observables' out[1]. */
+ * euler_poisson_asym_gravity_general_observables_at's out[1]. */
 DERIVE_INTERNAL double euler_poisson_asym_gravity_general_beta(double t, const double *y, const double *p)
 {
     const double n1 = y[3];
@@ -249,9 +203,9 @@ DERIVE_INTERNAL double euler_poisson_asym_gravity_general_beta(double t, const d
     return atan2(sqrt((n1*n1) + (n2*n2)), n3);
 }
 
-/* euler_poisson_asym_gravity_general_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int euler_poisson_asym_gravity_general_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {

@@ -140,58 +140,9 @@ int heavy_top_jac(double t, const double *y, const double *p, double *J)
     return 0;
 }
 
-int heavy_top_observables(double t, const double *y, const double *p, double *out)
-{
-    const double alpha = y[0];
-    const double beta = y[1];
-    const double gamma = y[2];
-    const double alpha_d = y[3];
-    const double beta_d = y[4];
-    const double gamma_d = y[5];
-    const double I1 = p[0];
-    const double I3 = p[1];
-    const double M = p[2];
-    const double g = p[3];
-    const double l = p[4];
-    (void)t;
-
-    const double x0 = sin(gamma);
-    const double x1 = sin(beta);
-    const double x2 = cos(gamma);
-    const double x3 = x1*x2;
-    const double x4 = -alpha_d*x3 + beta_d*x0;
-    const double x5 = x0*x1;
-    const double x6 = alpha_d*x5 + beta_d*x2;
-    const double x7 = cos(beta);
-    const double x8 = alpha_d*x7 + gamma_d;
-    const double x9 = (1.0/2.0)*I1;
-    const double x10 = I3*x8;
-    const double x11 = I1*x6;
-    const double x12 = I1*x4;
-    out[0] = alpha;
-    out[1] = beta;
-    out[2] = gamma;
-    out[3] = x4;
-    out[4] = x6;
-    out[5] = x8;
-    out[6] = x1*cos(alpha);
-    out[7] = x1*sin(alpha);
-    out[8] = x7;
-    out[9] = (1.0/2.0)*I3*(x8*x8) + M*g*l*x7 + (x4*x4)*x9 + (x6*x6)*x9;
-    out[10] = x10*x7 + x11*x5 - x12*x3;
-    out[11] = x10;
-    out[12] = -x3;
-    out[13] = x5;
-    out[14] = x7;
-    out[15] = x12;
-    out[16] = x11;
-    out[17] = x10;
-    return 0;
-}
-
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
- * heavy_top_observables' out[1]. */
+ * heavy_top_observables_at's out[1]. */
 DERIVE_INTERNAL double heavy_top_beta(double t, const double *y, const double *p)
 {
     const double beta = y[1];
@@ -201,9 +152,9 @@ DERIVE_INTERNAL double heavy_top_beta(double t, const double *y, const double *p
     return beta;
 }
 
-/* heavy_top_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int heavy_top_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {

@@ -34,11 +34,9 @@ int heavy_top_rhs(double t, const double *y, const double *p, double *dydt);
 /* J[i*NY + j] = d f_i / d y_j (row-major). Returns 0, or non-zero outside the domain. */
 int heavy_top_jac(double t, const double *y, const double *p, double *J);
 
-/* out = (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3). Returns 0. */
-int heavy_top_observables(double t, const double *y, const double *p, double *out);
-
-/* The outputs at n_out samples, as heavy_top_observables gives them (bit for bit):
- * out[j*n_out + k] = output j at t_out[k] from the state y[k*NY ..]. Returns 0. */
+/* The outputs (alpha, beta, gamma, omega1, omega2, omega3, axis_x, axis_y, axis_z, energy, p_alpha, p_gamma, n1, n2, n3, L1, L2, L3) at n_out samples (n_out = 1 for one state):
+ * out[j*n_out + k] = output j at t_out[k] from the state y[k*NY ..]; the parameters'
+ * temporaries are computed once a call. Returns 0. */
 int heavy_top_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out);
 

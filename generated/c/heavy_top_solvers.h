@@ -30,7 +30,7 @@
 extern const int heavy_top_dims[4];
 
 /* For a model with outputs and an init map (heavy_top_NOBS, heavy_top_NIN defined; every generated model):
- * out[j*n_out + k] = output j (heavy_top_observables) at t_out[k] from the states y[k*NY ..],
+ * out[j*n_out + k] = output j (heavy_top_observables_at) at t_out[k] from the states y[k*NY ..],
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous), as the run drivers
  * make them (e.g. for states from another integrator). */
 int heavy_top_outputs_at(long n_out, const double *t_out, const double *y, const double *p,

@@ -107,63 +107,9 @@ int reduced_sym_jac(double t, const double *y, const double *p, double *J)
     return 0;
 }
 
-int reduced_sym_observables(double t, const double *y, const double *p, double *out)
-{
-    const double alpha = y[0];
-    const double beta = y[1];
-    const double gamma = y[2];
-    const double beta_d = y[3];
-    const double I1 = p[0];
-    const double I3 = p[1];
-    const double p_alpha = p[2];
-    const double p_gamma = p[3];
-    (void)t;
-
-    const double x0 = sin(gamma);
-    const double x1 = p_alpha + p_gamma;
-    const double x2 = (1.0/2.0)*beta;
-    const double x3 = 1.0/(cos(x2)*cos(x2));
-    const double x4 = 1.0/I1;
-    const double x5 = (1.0/4.0)*x4;
-    const double x6 = p_alpha - p_gamma;
-    const double x7 = 1.0/(sin(x2)*sin(x2));
-    const double x8 = ((x1 == 0) ? (0) : (x1*x3*x5)) + ((x6 == 0) ? (0) : (x5*x6*x7));
-    const double x9 = sin(beta);
-    const double x10 = cos(gamma);
-    const double x11 = x10*x9;
-    const double x12 = beta_d*x0 - x11*x8;
-    const double x13 = x0*x9;
-    const double x14 = beta_d*x10 + x13*x8;
-    const double x15 = 1.0/I3;
-    const double x16 = cos(beta);
-    const double x17 = (1.0/2.0)*(p_gamma*p_gamma);
-    const double x18 = (x1*x1);
-    const double x19 = (1.0/8.0)*x4;
-    const double x20 = (x6*x6);
-    out[0] = alpha;
-    out[1] = beta;
-    out[2] = gamma;
-    out[3] = x12;
-    out[4] = x14;
-    out[5] = p_gamma*x15;
-    out[6] = x9*cos(alpha);
-    out[7] = x9*sin(alpha);
-    out[8] = x16;
-    out[9] = (1.0/2.0)*I1*(beta_d*beta_d) + x15*x17 - x17*x4 + ((x18 == 0) ? (0) : (x18*x19*x3)) + ((x20 == 0) ? (0) : (x19*x20*x7));
-    out[10] = p_alpha;
-    out[11] = p_gamma;
-    out[12] = -x11;
-    out[13] = x13;
-    out[14] = x16;
-    out[15] = I1*x12;
-    out[16] = I1*x14;
-    out[17] = p_gamma;
-    return 0;
-}
-
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
- * reduced_sym_observables' out[1]. */
+ * reduced_sym_observables_at's out[1]. */
 DERIVE_INTERNAL double reduced_sym_beta(double t, const double *y, const double *p)
 {
     const double beta = y[1];
@@ -173,9 +119,9 @@ DERIVE_INTERNAL double reduced_sym_beta(double t, const double *y, const double 
     return beta;
 }
 
-/* reduced_sym_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int reduced_sym_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {

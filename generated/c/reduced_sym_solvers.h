@@ -30,7 +30,7 @@
 extern const int reduced_sym_dims[4];
 
 /* For a model with outputs and an init map (reduced_sym_NOBS, reduced_sym_NIN defined; every generated model):
- * out[j*n_out + k] = output j (reduced_sym_observables) at t_out[k] from the states y[k*NY ..],
+ * out[j*n_out + k] = output j (reduced_sym_observables_at) at t_out[k] from the states y[k*NY ..],
  * z-y-z angles made canonical (beta in [0, pi]; alpha, gamma continuous), as the run drivers
  * make them (e.g. for states from another integrator). */
 int reduced_sym_outputs_at(long n_out, const double *t_out, const double *y, const double *p,

@@ -93,65 +93,9 @@ int reduced_u_sym_jac(double t, const double *y, const double *p, double *J)
     return 0;
 }
 
-int reduced_u_sym_observables(double t, const double *y, const double *p, double *out)
-{
-    const double alpha = y[0];
-    const double u = y[1];
-    const double gamma = y[2];
-    const double u_d = y[3];
-    const double I1 = p[0];
-    const double I3 = p[1];
-    const double p_alpha = p[2];
-    const double p_gamma = p[3];
-    (void)t;
-
-    const double x0 = sin(gamma);
-    const double x1 = u + 1;
-    const double x2 = u - 1;
-    const double x3 = -x2;
-    const double x4 = sqrt(x1*x3);
-    const double x5 = u_d/x4;
-    const double x6 = p_alpha + p_gamma;
-    const double x7 = 1.0/x1;
-    const double x8 = 1.0/I1;
-    const double x9 = (1.0/2.0)*x8;
-    const double x10 = p_alpha - p_gamma;
-    const double x11 = 1.0/x2;
-    const double x12 = ((x10 == 0) ? (0) : (-x10*x11*x9)) + ((x6 == 0) ? (0) : (x6*x7*x9));
-    const double x13 = cos(gamma);
-    const double x14 = x13*x4;
-    const double x15 = -x0*x5 - x12*x14;
-    const double x16 = x0*x12*x4 - x13*x5;
-    const double x17 = 1.0/I3;
-    const double x18 = (p_gamma*p_gamma);
-    const double x19 = 2*p_alpha*p_gamma;
-    const double x20 = (p_alpha*p_alpha) + x18;
-    const double x21 = (1.0/4.0)*x8;
-    const double x22 = 2*I1;
-    out[0] = alpha;
-    out[1] = acos(u);
-    out[2] = gamma;
-    out[3] = x15;
-    out[4] = x16;
-    out[5] = p_gamma*x17;
-    out[6] = x4*cos(alpha);
-    out[7] = x4*sin(alpha);
-    out[8] = u;
-    out[9] = (1.0/2.0)*I1*(u_d*u_d)*x7/x3 + (1.0/2.0)*x17*x18 + x9*(-x18 + x22*((x19 - x20 == 0) ? (0) : (-(x10*x10)*x11*x21)) + x22*((x19 + x20 == 0) ? (0) : (x21*(x6*x6)*x7)));
-    out[10] = p_alpha;
-    out[11] = p_gamma;
-    out[12] = -x14;
-    out[13] = x0*x4;
-    out[14] = u;
-    out[15] = I1*x15;
-    out[16] = I1*x16;
-    out[17] = p_gamma;
-    return 0;
-}
-
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
- * reduced_u_sym_observables' out[1]. */
+ * reduced_u_sym_observables_at's out[1]. */
 DERIVE_INTERNAL double reduced_u_sym_beta(double t, const double *y, const double *p)
 {
     const double u = y[1];
@@ -161,9 +105,9 @@ DERIVE_INTERNAL double reduced_u_sym_beta(double t, const double *y, const doubl
     return acos(u);
 }
 
-/* reduced_u_sym_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int reduced_u_sym_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {

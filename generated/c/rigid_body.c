@@ -215,70 +215,9 @@ int rigid_body_jac(double t, const double *y, const double *p, double *J)
     return 0;
 }
 
-int rigid_body_observables(double t, const double *y, const double *p, double *out)
-{
-    const double q0 = y[0];
-    const double q1 = y[1];
-    const double q2 = y[2];
-    const double q3 = y[3];
-    const double omega1 = y[4];
-    const double omega2 = y[5];
-    const double omega3 = y[6];
-    const double I1 = p[0];
-    const double I2 = p[1];
-    const double I3 = p[2];
-    const double M = p[3];
-    const double g = p[4];
-    const double cx = p[5];
-    const double cy = p[6];
-    const double cz = p[7];
-    (void)t;
-
-    const double x0 = 2*q0;
-    const double x1 = q1*x0;
-    const double x2 = 2*q2*q3 - x1;
-    const double x3 = q2*x0;
-    const double x4 = 2*q3;
-    const double x5 = q1*x4;
-    const double x6 = x3 + x5;
-    const double x7 = (q0*q0) + (q3*q3);
-    const double x8 = (q1*q1);
-    const double x9 = (q2*q2);
-    const double x10 = x8 + x9;
-    const double x11 = x7 - x8 - x9;
-    const double x12 = q2*x4 + x1;
-    const double x13 = x3 - x5;
-    const double x14 = 1.0/(x10 + x7);
-    const double x15 = x11*x14;
-    const double x16 = -x13*x14;
-    const double x17 = x12*x14;
-    const double x18 = I1*omega1;
-    const double x19 = I2*omega2;
-    const double x20 = I3*omega3;
-    out[0] = atan2(x2, x6);
-    out[1] = atan2(2*sqrt(x10)*sqrt(x7), x11);
-    out[2] = atan2(x12, x13);
-    out[3] = omega1;
-    out[4] = omega2;
-    out[5] = omega3;
-    out[6] = x14*x6;
-    out[7] = x14*x2;
-    out[8] = x15;
-    out[9] = (1.0/2.0)*I1*(omega1*omega1) + (1.0/2.0)*I2*(omega2*omega2) + (1.0/2.0)*I3*(omega3*omega3) + M*g*(cx*x16 + cy*x17 + cz*x15);
-    out[10] = x15*x20 + x16*x18 + x17*x19;
-    out[11] = x20;
-    out[12] = x16;
-    out[13] = x17;
-    out[14] = x15;
-    out[15] = x18;
-    out[16] = x19;
-    out[17] = x20;
-    return 0;
-}
-
 /* Output 1, beta, alone (before the canonical ranges): what a search for beta's extrema
  * evaluates many times a turning point. tests/test_output_pass.py holds it to the bits of
- * rigid_body_observables' out[1]. */
+ * rigid_body_observables_at's out[1]. */
 DERIVE_INTERNAL double rigid_body_beta(double t, const double *y, const double *p)
 {
     const double q0 = y[0];
@@ -294,9 +233,9 @@ DERIVE_INTERNAL double rigid_body_beta(double t, const double *y, const double *
     return atan2(2*sqrt(x0)*sqrt(x1 + x2), x0 - x1 - x2);
 }
 
-/* rigid_body_observables at n_out samples, bit for bit: out[j*n_out + k] = output j at t_out[k]
- * from the state y[k*NY ..]. One call for a whole output pass: the parameters are read and
- * their temporaries computed once (not once a sample), and no sample goes through a copy. */
+/* The outputs at n_out samples: out[j*n_out + k] = output j at t_out[k] from the state
+ * y[k*NY ..]. The parameters are read and their temporaries computed once a call (not once a
+ * sample), and no sample goes through a copy. */
 int rigid_body_observables_at(long n_out, const double *t_out, const double *y, const double *p,
         double *out)
 {
