@@ -17,7 +17,6 @@ happened; :func:`failure_message` turns them into the one line that
 from __future__ import annotations
 
 import ctypes
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -103,16 +102,6 @@ def _solution(t, y, method, st, message) -> Solution:
         fail_index=int(st["fail_index"]) if status == 2 else None)
 
 
-def _header_ny(prefix: str, sources: dict[str, str]) -> int:
-    header = sources.get(f"{prefix}.h")
-    if header is None:
-        raise ValueError(f"sources lack the model header {prefix}.h")
-    m = re.search(rf"^\s*#\s*define\s+{re.escape(prefix)}_NY\s+\(?\s*(\d+)\s*\)?", header, re.M)
-    if not m:
-        raise ValueError(f"{prefix}.h does not #define {prefix}_NY as an integer literal")
-    return int(m.group(1))
-
-
 class Kernel:
     """A compiled model and its solvers.
 
@@ -138,12 +127,15 @@ class Kernel:
 
     # ---------------------------------------------------------------------------------------
     @classmethod
-    def from_sources(cls, prefix: str, sources: dict[str, str], methods: list[str] | None = None,
-                     flags=DEFAULT_FLAGS) -> "Kernel":
+    def from_sources(cls, prefix: str, ny: int, sources: dict[str, str],
+                     methods: list[str] | None = None, flags=DEFAULT_FLAGS) -> "Kernel":
         """Render the solvers for the model in ``sources`` (``<prefix>.h``, ``<prefix>.c``, ...),
         compile everything as one translation unit (so the compiler can inline the rhs into the
-        stepper) and load it. Compiled once per machine, loaded once per process."""
-        ny = _header_ny(prefix, sources)
+        stepper) and load it. Compiled once per machine, loaded once per process.
+
+        ``ny`` is the model's state count, given by whoever produced the sources (the model or
+        its description), never read back from them.
+        """
         files = dict(sources)
         files.update(render_solvers(prefix, ny, methods))
         unity = f"{prefix}_unity.c"
