@@ -86,7 +86,7 @@ def test_an_interrupt_stops_a_long_prepared_run():
     data["simulate"].update(t_end=1e7, samples=3, rtol=1e-13, atol=1e-15, max_steps=10**12)
     prepared = derive.prepare(data)
     kernel = prepared.plan.candidates[0].kernel
-    if kernel._guard is None:
+    if kernel._run.guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
     request = kernel.lib.derive_sigint_request
     timer = threading.Timer(0.2, request)

@@ -181,7 +181,7 @@ def _model_kernel():
     """The compiled rhs and Jacobian of the generated model (its .h and .c alone)."""
     desc = catalogue.describe(("reduced-u", True, ("gravity",)))
     src = {n: desc.source(f"c/{n}") for n in (f"{desc.name}.h", f"{desc.name}.c")}
-    return Kernel.from_sources(desc.name, src, methods=["dop853"])
+    return Kernel.from_sources(desc.name, len(desc.states), src, methods=["dop853"])
 
 
 def test_rhs_and_jacobian_match_the_notes_polynomial():

@@ -38,7 +38,7 @@ def model_sources(name: str) -> dict[str, str]:
 
 @pytest.fixture(scope="module")
 def kernels() -> dict[str, Kernel]:
-    return {name: Kernel.from_sources(name, model_sources(name)) for name in MODELS}
+    return {name: Kernel.from_sources(name, MODELS[name], model_sources(name)) for name in MODELS}
 
 
 @pytest.fixture(scope="module")
@@ -391,10 +391,17 @@ def test_rhs_and_jacobian_wrappers(kernels):
 
 def test_second_build_is_served_from_the_cache():
     t0 = time.perf_counter()
-    a = Kernel.from_sources("osc", model_sources("osc"))
-    b = Kernel.from_sources("osc", model_sources("osc"))
+    a = Kernel.from_sources("osc", MODELS["osc"], model_sources("osc"))
+    b = Kernel.from_sources("osc", MODELS["osc"], model_sources("osc"))
     assert a.lib is b.lib
     assert time.perf_counter() - t0 < 5.0
+
+
+def test_a_state_count_other_than_the_headers_is_refused_at_compile_time(monkeypatch, tmp_path):
+    """The caller's ny is checked against <prefix>_NY by the compiler, never parsed from C."""
+    monkeypatch.setenv("DERIVE_CACHE", str(tmp_path / "cache"))
+    with pytest.raises(CompilerError, match=r"osc_NY differs from the size"):
+        Kernel.from_sources("osc", 3, model_sources("osc"), methods=["rk4"])
 
 
 def test_missing_compiler_is_one_clear_line(monkeypatch, tmp_path):

@@ -414,6 +414,12 @@ def test_a_closed_port_is_refused_at_once(reference):
     assert took < 3  # refused, not retried for the timeout (Dask's own: 30 s)
 
 
+def test_an_unknown_host_is_named_at_once(reference):
+    msg, took = _refused("tcp://no-such-host.invalid:8786", 5)
+    assert msg.startswith("<sweep>: scheduler tcp://no-such-host.invalid:8786: unknown host (")
+    assert took < 3  # not retried for the timeout
+
+
 def test_a_silent_listener_times_out(listener, reference):
     port = listener(None)
     msg, took = _refused(f"tcp://127.0.0.1:{port}", 0.5)

@@ -242,7 +242,7 @@ def test_an_interrupt_stops_the_lanes():
     sets it: KeyboardInterrupt."""
     sc = scenes(16, formulation="reduced-u", t_end=1e7, rtol=1e-13, atol=1e-15, max_steps=10**12)
     bp, desc, _, native, args, pole = kernels(sc, "reduced-u")
-    if native._guard is None:
+    if native._run.guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
     timer = threading.Timer(0.2, native.lib.derive_sigint_request)
     timer.start()
@@ -267,7 +267,7 @@ def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
     inputs[early, 8] = 1e200
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
-    monkeypatch.setattr(native, "_guard", None)
+    monkeypatch.setattr(native._run, "guard", None)
     timer = threading.Timer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:

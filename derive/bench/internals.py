@@ -56,7 +56,7 @@ def kernel_for(formulation: str, symmetric: bool, effects: tuple):
     model = model_for(formulation, symmetric, effects)
     files = sources_for(formulation, symmetric, effects)
     sources = {Path(k).name: v for k, v in files.items() if k in (f"c/{model.name}.h", f"c/{model.name}.c")}
-    return Kernel.from_sources(model.name, sources)
+    return Kernel.from_sources(model.name, len(model.states), sources)
 
 
 @dataclass

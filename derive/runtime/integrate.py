@@ -4,7 +4,8 @@ A :class:`ModelKernel` is a compiled (model, method) pair: its run driver ``<nam
 runs the init map, the whole integration and the output map in one call, told what to save by a
 ``derive_saveat`` (:class:`~derive.runtime.records.SaveAt`). A :class:`BoundRun` binds one
 trajectory's call to its arrays once, so a repeated call only enters C. The generic kernel over
-any model's sources is :class:`derive.runtime.kernel.Kernel`.
+any model's sources is :class:`derive.runtime.kernel.Kernel`; all bind their drivers through
+:class:`~derive.runtime.records.Driver`.
 
 Failures come back from C as a status code (:data:`derive.codegen.solvers.STATUS`) in the
 statistics record (:data:`~derive.runtime.records.STATS_DTYPE`).
@@ -12,28 +13,15 @@ statistics record (:data:`~derive.runtime.records.STATS_DTYPE`).
 from __future__ import annotations
 
 import ctypes
-import threading
 
 import numpy as np
 
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
-from derive.methods.status import Status
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (C_TYPES, DEFAULT_NEWTON_MAXITER, DEFAULT_NEWTON_TOL,
-                                    STATS_DOUBLES, STATS_DTYPE, saveat)
-
-def _ptr(a: np.ndarray) -> int:
-    # ndarray.ctypes.data: __array_interface__ would build a structured dtype's description
-    # (derive_stats) on every call.
-    return a.ctypes.data
-
-
-def _interruptible(lib, prefix: str):
-    """Run a C call with SIGINT handled by the library (the loops poll its flag) when called
-    from the main thread; a call from another thread relies on ``derive_sigint_request``."""
-    guard = lib.derive_sigint_guard
-    return guard if threading.current_thread() is threading.main_thread() else None
+from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, DEFAULT_NEWTON_MAXITER,
+                                    DEFAULT_NEWTON_TOL, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
+                                    saveat)
 
 
 class ModelKernel:
@@ -59,14 +47,11 @@ class ModelKernel:
         self.lanes = 0
         self.has_lanes = self.has_final = False
         if method is not None:
-            spec = compiled_method(method)
-            extra = [C_TYPES[ty] for ty, _ in spec.params]
-            self._arg_names = tuple(name for _, name in spec.params)
-            self.adaptive = spec.driver in TOLERANCE_DRIVERS  # steps by rtol/atol, not by h
+            self.adaptive = compiled_method(method).driver in TOLERANCE_DRIVERS  # rtol/atol, not h
             # the final-only saves: the methods that step by the tolerance alone (a fixed step's
             # samples set its steps)
             self.has_final = self.adaptive
-            self._run = self._fn(f"{p}_run_{method}", [vp, cl, vp, vp, *extra, vp, vp, vp])
+            self._run = Driver(lib, p, method)
             self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
             self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
             # a Taylor method has lanes (its lanes library built for this CPU, where the
@@ -74,24 +59,6 @@ class ModelKernel:
             self.has_lanes = hasattr(lib, f"{p}_taylor_has_lanes")
             self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
                           if hasattr(lib, f"{p}_taylor_lanes") else 0)
-            self._guard = _interruptible(lib, p)
-            if self._guard is not None:
-                self._guard.argtypes = [ci]
-                self._guard.restype = ci
-        self._bound_parts: dict = {}
-
-    def _unchecked_call(self, args):
-        """(driver, guard, driver arguments as ctypes instances) for :class:`BoundRun`: the
-        driver and the guard without argtypes (they convert nothing), made once per kernel and
-        set of arguments."""
-        key = tuple(args)
-        parts = self._bound_parts.get(key)
-        if parts is None:
-            run = self._run
-            conv = tuple(ty(v) for ty, v in zip(run.argtypes[4:], args))
-            guard = None if self._guard is None else _unchecked(self.lib, self._guard.__name__)
-            parts = self._bound_parts[key] = (_unchecked(self.lib, run.__name__), guard, conv)
-        return parts
 
     def _fn(self, symbol, argtypes):
         fn = getattr(self.lib, symbol)
@@ -131,7 +98,7 @@ class ModelKernel:
                     newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
         values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
                   "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
-        return [values[name] for name in self._arg_names]
+        return [values[name] for name in self._run.params]
 
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""
@@ -145,18 +112,6 @@ class ModelKernel:
         self._checks(_ptr(np.ascontiguousarray(y, dtype=np.float64)),
                      _ptr(np.ascontiguousarray(p, dtype=np.float64)), _ptr(out))
         return out
-
-    def _call(self, fn, *args):
-        if self._guard is None:
-            return fn(*args)
-        self._guard(1)
-        try:
-            rc = fn(*args)
-        finally:
-            interrupted = self._guard(0)
-        if interrupted or rc == Status.INTERRUPTED:
-            raise KeyboardInterrupt
-        return rc
 
     def pole_clear(self, y, p, mode: int) -> bool:
         """The model's compiled Routh check (see ``<name>_pole_clear``)."""
@@ -203,8 +158,7 @@ class ModelKernel:
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         t = np.ascontiguousarray(t, dtype=np.float64)
         save = saveat(t, pole_check=pole_check, lanes=lanes)
-        self._call(self._run, ctypes.byref(save), nb, _ptr(inputs), _ptr(ps), *args,
-                   _ptr(y), _ptr(out), _ptr(st))
+        self._run(save, nb, inputs, ps, args, y, out, st)
         return out, y, ps, st[:nb]
 
     def full_lanes(self, n: int) -> "ModelKernel | None":
@@ -274,8 +228,7 @@ class ModelKernel:
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         t = np.ascontiguousarray(t, dtype=np.float64)
         save = saveat(t, final=True, pole_check=pole_check, lanes=lanes)
-        self._call(self._run, ctypes.byref(save), nb, _ptr(inputs), _ptr(ps), *args,
-                   _ptr(y), _ptr(out), _ptr(st))
+        self._run(save, nb, inputs, ps, args, y, out, st)
         return out, y, ps, st[:nb]
 
     def outputs_at(self, t, y, p) -> np.ndarray:
@@ -294,18 +247,6 @@ LANES_MIN = 8
 
 _STATUS_OFFSET = STATS_DTYPE.fields["status"][1]
 _NFEV_OFFSET = STATS_DTYPE.fields["nfev"][1]
-
-
-_INTERRUPTED = int(Status.INTERRUPTED)
-_ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
-
-
-def _unchecked(lib, symbol: str):
-    """A fresh function object of ``symbol`` with no argtypes (int result): called with ctypes
-    instances only, it converts nothing (the library's own object keeps its argtypes)."""
-    fn = lib[symbol]
-    fn.restype = ctypes.c_int
-    return fn
 
 
 class BoundRun:
@@ -343,7 +284,7 @@ class BoundRun:
         self._shape_out, self._shape_y = (kernel.nout, n), (n, kernel.ny)
         # The driver without argtypes, given ctypes instances: nothing is converted per call
         # (the instances of the arguments that do not change are made once per kernel).
-        self._fn, self._guard, self._settings = kernel._unchecked_call(args)
+        self._fn, self._guard, self._settings = kernel._run.unchecked(args)
         self._save = saveat(t, pole_check=pole_check)  # (kept: the driver reads it each call)
         self._head = (ctypes.c_void_p(ctypes.addressof(self._save)), ctypes.c_long(1),
                       ctypes.c_void_p(inputs.ctypes.data))

@@ -17,21 +17,19 @@ happened; :func:`failure_message` turns them into the one line that
 from __future__ import annotations
 
 import ctypes
-import re
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from derive.codegen.solvers import render_solvers
 from derive.errors import IntegrationError
-from derive.methods.registry import METHODS
+from derive.methods.registry import METHODS, compiled_methods
 from derive.methods.status import message as _status_message
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (C_TYPES, DEFAULT_MAX_STEPS, DEFAULT_NEWTON_MAXITER,
-                                    DEFAULT_NEWTON_TOL, STATS_DTYPE, SaveAt, saveat)
+from derive.runtime.records import (DEFAULT_MAX_STEPS, DEFAULT_NEWTON_MAXITER,
+                                    DEFAULT_NEWTON_TOL, STATS_DTYPE, Driver, saveat)
 
 _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
-_STATS = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
 
 
 def _fmt(x: float) -> str:
@@ -103,21 +101,12 @@ def _solution(t, y, method, st, message) -> Solution:
         fail_index=int(st["fail_index"]) if status == 2 else None)
 
 
-def _header_ny(prefix: str, sources: dict[str, str]) -> int:
-    header = sources.get(f"{prefix}.h")
-    if header is None:
-        raise ValueError(f"sources lack the model header {prefix}.h")
-    m = re.search(rf"^\s*#\s*define\s+{re.escape(prefix)}_NY\s+\(?\s*(\d+)\s*\)?", header, re.M)
-    if not m:
-        raise ValueError(f"{prefix}.h does not #define {prefix}_NY as an integer literal")
-    return int(m.group(1))
-
-
 class Kernel:
     """A compiled model and its solvers.
 
     ``prefix``, ``ny``, ``np``, ``state_names``, ``param_names`` come from the library itself
-    (``<prefix>_dims`` and the model's name arrays); ``methods`` lists the solvers it holds.
+    (``<prefix>_dims`` and the model's name arrays); ``methods`` lists the registered solvers it
+    holds (``solve``, ``solve_batch``); :meth:`driver` binds any compiled method it holds.
     """
 
     def __init__(self, lib: ctypes.CDLL, prefix: str):
@@ -130,7 +119,7 @@ class Kernel:
         self._rhs = self._bind(f"{prefix}_rhs", [ctypes.c_double, _F64, _F64, _F64])
         self._jac = self._bind(f"{prefix}_jac", [ctypes.c_double, _F64, _F64, _F64])
         self.methods = tuple(m for m in METHODS if hasattr(lib, f"{prefix}_run_{m}"))
-        self._solvers: dict[str, tuple] = {}
+        self._drivers: dict[str, Driver] = {}
 
     def __repr__(self) -> str:
         return (f"Kernel({self.prefix!r}, y=({', '.join(self.state_names)}), "
@@ -138,12 +127,15 @@ class Kernel:
 
     # ---------------------------------------------------------------------------------------
     @classmethod
-    def from_sources(cls, prefix: str, sources: dict[str, str], methods: list[str] | None = None,
-                     flags=DEFAULT_FLAGS) -> "Kernel":
+    def from_sources(cls, prefix: str, ny: int, sources: dict[str, str],
+                     methods: list[str] | None = None, flags=DEFAULT_FLAGS) -> "Kernel":
         """Render the solvers for the model in ``sources`` (``<prefix>.h``, ``<prefix>.c``, ...),
         compile everything as one translation unit (so the compiler can inline the rhs into the
-        stepper) and load it. Compiled once per machine, loaded once per process."""
-        ny = _header_ny(prefix, sources)
+        stepper) and load it. Compiled once per machine, loaded once per process.
+
+        ``ny`` is the model's state count, given by whoever produced the sources (the model or
+        its description), never read back from them.
+        """
         files = dict(sources)
         files.update(render_solvers(prefix, ny, methods))
         unity = f"{prefix}_unity.c"
@@ -165,18 +157,17 @@ class Kernel:
         fn.restype = ctypes.c_int
         return fn
 
-    def _solver(self, method: str):
-        if method not in self._solvers:
-            if method not in METHODS:
-                raise ValueError(f"unknown method {method!r}; known: {', '.join(METHODS)}")
-            if method not in self.methods:
+    def driver(self, method: str) -> Driver:
+        """The run driver of ``method`` in this library, bound once: its arguments unchecked,
+        an interrupt its status (:class:`~derive.runtime.records.Driver`)."""
+        if method not in self._drivers:
+            if method not in compiled_methods():
+                raise ValueError(f"unknown method {method!r}; known: "
+                                 f"{', '.join(compiled_methods())}")
+            if not hasattr(self.lib, f"{self.prefix}_run_{method}"):
                 raise ValueError(f"method {method!r} was not compiled into {self.prefix}")
-            extra = [C_TYPES[ty] for ty, _ in METHODS[method].params]
-            self._solvers[method] = self._bind(
-                f"{self.prefix}_run_{method}",
-                [ctypes.POINTER(SaveAt), ctypes.c_long, _F64, _F64, *extra, _F64, ctypes.c_void_p,
-                 _STATS])
-        return self._solvers[method]
+            self._drivers[method] = Driver(self.lib, self.prefix, method, interruptible=False)
+        return self._drivers[method]
 
     def _vector(self, x, n: int, what: str) -> np.ndarray:
         a = np.ascontiguousarray(x, dtype=np.float64)
@@ -270,7 +261,7 @@ class Kernel:
         p = self._params(p)
         y = np.full((t.size, self.ny), np.nan)
         st = np.zeros(1, dtype=STATS_DTYPE)
-        self._solver(method)(saveat(t, outputs=False), 1, y0, p, *extra, y, None, st)
+        self.driver(method)(saveat(t, outputs=False), 1, y0, p, extra, y, None, st)
         st = st[0]
         message = "success"
         if st["status"]:
@@ -307,7 +298,7 @@ class Kernel:
             raise ValueError("ps must be finite")
         y = np.full((n, t.size, self.ny), np.nan)
         st = np.zeros(max(n, 1), dtype=STATS_DTYPE)
-        self._solver(method)(saveat(t, outputs=False), n, y0s, ps, *extra, y, None, st)
+        self.driver(method)(saveat(t, outputs=False), n, y0s, ps, extra, y, None, st)
         st = st[:n]
         messages = tuple(failure_message(s, self.state_names, max_steps) if s["status"]
                          else "success" for s in st)

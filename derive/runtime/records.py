@@ -1,14 +1,19 @@
-"""The records a generated run driver shares with Python: its statistics (``derive_stats`` of
+"""A generated run driver as Python calls it: the driver itself, bound once (:class:`Driver`),
+and the records it shares with Python: its statistics (``derive_stats`` of
 ``<prefix>_solvers.h``, :data:`STATS_DTYPE`), what it saves (``derive_saveat``, :class:`SaveAt`),
 the C types of a method's extra driver parameters (:data:`C_TYPES`) and the solvers' defaults.
-Both kernels (:mod:`derive.runtime.kernel`, :mod:`derive.runtime.integrate`) and the batch
-engines read them.
+Every kernel (:mod:`derive.runtime.kernel`, :mod:`derive.runtime.integrate`,
+:mod:`derive.runtime.splitter`) and the batch engines use them.
 """
 from __future__ import annotations
 
 import ctypes
+import threading
 
 import numpy as np
+
+from derive.methods.registry import method as compiled_method
+from derive.methods.status import Status
 
 DEFAULT_MAX_STEPS = 1_000_000
 DEFAULT_NEWTON_TOL = 1e-15
@@ -43,3 +48,92 @@ def saveat(t: np.ndarray, *, final: bool = False, outputs: bool = True, pole_che
            lanes: bool = False) -> SaveAt:
     """A :class:`SaveAt` over the C-contiguous float64 times ``t`` (the caller keeps ``t``)."""
     return SaveAt(t.ctypes.data, t.shape[0], int(final), int(outputs), int(pole_check), int(lanes))
+
+
+_INTERRUPTED = int(Status.INTERRUPTED)
+_ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
+
+
+class Driver:
+    """The run driver of one compiled method in a loaded library, bound once::
+
+        int <prefix>_run_<method>(const derive_saveat *save, long n_batch, const double *ins,
+                                  double *ps, <the method's parameters>, double *y,
+                                  double *out, derive_stats *st);
+
+    whatever library holds it (a model with one method, a model with every solver, a
+    splitting). The method's parameters are its registry entry's
+    (:func:`derive.methods.registry.method`), in that order (:attr:`params` names them).
+
+    Parameters
+    ----------
+    lib : ctypes.CDLL
+        The loaded library.
+    prefix : str
+        The model's C prefix.
+    method : str
+        A compiled method (:func:`derive.methods.registry.compiled_methods`).
+    interruptible : bool
+        Run each call under the library's Ctrl-C guard (``derive_sigint_guard``) when bound in
+        the main thread, an interrupt surfacing as KeyboardInterrupt; otherwise an interrupt
+        is the call's status (:attr:`Status.INTERRUPTED`) like any other.
+    """
+
+    def __init__(self, lib: ctypes.CDLL, prefix: str, method: str, interruptible: bool = True):
+        spec = compiled_method(method)
+        self.lib, self.method = lib, method
+        self.params = tuple(name for _, name in spec.params)
+        vp = ctypes.c_void_p
+        self.fn = getattr(lib, f"{prefix}_run_{method}")
+        self.fn.argtypes = [vp, ctypes.c_long, vp, vp, *(C_TYPES[ty] for ty, _ in spec.params),
+                            vp, vp, vp]
+        self.fn.restype = ctypes.c_int
+        # The guard's SIGINT handler can only be installed from the main thread.
+        self.guard = None
+        if interruptible and threading.current_thread() is threading.main_thread():
+            self.guard = lib.derive_sigint_guard
+            self.guard.argtypes, self.guard.restype = [ctypes.c_int], ctypes.c_int
+        self._unchecked: dict = {}
+
+    def __call__(self, save: SaveAt, n_batch: int, ins, ps, args, y, out, st) -> int:
+        """Run once: the arrays (C-contiguous, of the driver's layout) or None for NULL, ``args``
+        the method's parameters in :attr:`params` order. Returns the driver's return code."""
+        call = (ctypes.byref(save), n_batch, _ptr(ins), _ptr(ps), *args, _ptr(y), _ptr(out),
+                _ptr(st))
+        if self.guard is None:
+            return self.fn(*call)
+        self.guard(1)
+        try:
+            rc = self.fn(*call)
+        finally:
+            interrupted = self.guard(0)
+        if interrupted or rc == _INTERRUPTED:
+            raise KeyboardInterrupt
+        return rc
+
+    def unchecked(self, args) -> tuple:
+        """(driver, guard or None, ``args`` as ctypes instances) for a caller that converts its
+        own arguments (:class:`derive.runtime.integrate.BoundRun`): the driver and the guard as
+        function objects without argtypes, which then convert nothing. Made once per set of
+        arguments."""
+        key = tuple(args)
+        parts = self._unchecked.get(key)
+        if parts is None:
+            conv = tuple(ty(v) for ty, v in zip(self.fn.argtypes[4:], args))
+            guard = None if self.guard is None else _bare(self.lib, self.guard.__name__)
+            parts = self._unchecked[key] = (_bare(self.lib, self.fn.__name__), guard, conv)
+        return parts
+
+
+def _ptr(a) -> int | None:
+    # ndarray.ctypes.data: __array_interface__ would build a structured dtype's description
+    # (derive_stats) on every call.
+    return None if a is None else a.ctypes.data
+
+
+def _bare(lib, symbol: str):
+    """A fresh function object of ``symbol`` with no argtypes (int result): called with ctypes
+    instances only, it converts nothing (the library's own object keeps its argtypes)."""
+    fn = lib[symbol]
+    fn.restype = ctypes.c_int
+    return fn

@@ -6,16 +6,13 @@ and e = Rᵀx̂ in body axes (:mod:`derive.methods.splitting`).
 """
 from __future__ import annotations
 
-import ctypes
-
 import numpy as np
 
 from derive.codegen.sources import model_sources
 from derive.codegen.splitting import _omega_state, render_splitting
-from derive.methods.splitting import METHODS
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.runtime.kernel import Kernel
-from derive.runtime.records import STATS_DTYPE, SaveAt, saveat
+from derive.runtime.records import STATS_DTYPE, saveat
 
 
 def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], str]:
@@ -30,8 +27,9 @@ def sources(model, methods: list[str] | None = None) -> tuple[dict[str, str], st
 
 
 class Splitter:
-    """A compiled Euler–Poisson model with its splitting solvers (``solve``) and, as
-    ``kernel`` (:class:`derive.runtime.kernel.Kernel`), the registered ones (dop853, gauss4, …)."""
+    """A compiled Euler–Poisson model with its splitting solvers (``solve``: their run drivers,
+    arguments unchecked, so the C checks answer) and, as ``kernel``
+    (:class:`derive.runtime.kernel.Kernel`), the registered ones (dop853, gauss4, …)."""
 
     def __init__(self, model, flags=None):
         files, unity = sources(model)
@@ -39,36 +37,22 @@ class Splitter:
         self.lib = compile_library(f"{model.name}_split", files, unity,
                                    DEFAULT_FLAGS if flags is None else flags)
         self.kernel = Kernel(self.lib, model.name)
-        self._stats = STATS_DTYPE
-        f64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
-        st = np.ctypeslib.ndpointer(dtype=STATS_DTYPE, flags="C_CONTIGUOUS")
-        self._fns = {}
-        for name in METHODS:  # the run drivers, saving the states from given starts
-            fn = getattr(self.lib, f"{model.name}_run_{name}")
-            fn.argtypes = [ctypes.POINTER(SaveAt), ctypes.c_long, f64, f64, ctypes.c_double, f64,
-                           ctypes.c_void_p, st]
-            fn.restype = ctypes.c_int
-            self._fns[name] = fn
 
     def solve(self, method: str, y0, p, t_out, h: float):
         """(y at every t_out, the derive_stats record) for one trajectory."""
-        t = np.ascontiguousarray(t_out, dtype=np.float64)
-        y = np.full((t.size, 9), np.nan)
-        st = np.zeros(1, dtype=self._stats)
-        self._fns[method](saveat(t, outputs=False), 1, np.ascontiguousarray(y0, dtype=np.float64),
-                          np.ascontiguousarray(p, dtype=np.float64), float(h), y, None, st)
-        return y, st[0]
+        y, st = self.solve_batch(method, np.reshape(y0, (1, -1)), p, t_out, h)
+        return y[0], st[0]
 
     def solve_batch(self, method: str, y0s, ps, t_out, h: float):
-        """(y[b, k], stats[b]) for n_batch trajectories."""
+        """(y[b, k], stats[b]) for n_batch trajectories (``ps``: one per trajectory, or shared)."""
         t = np.ascontiguousarray(t_out, dtype=np.float64)
         y0s = np.ascontiguousarray(y0s, dtype=np.float64)
         n = y0s.shape[0]
         ps = np.ascontiguousarray(np.broadcast_to(np.asarray(ps, dtype=np.float64),
                                                   (n, len(self.model.params))))
         y = np.full((n, t.size, 9), np.nan)
-        st = np.zeros(max(n, 1), dtype=self._stats)
-        self._fns[method](saveat(t, outputs=False), n, y0s, ps, float(h), y, None, st)
+        st = np.zeros(max(n, 1), dtype=STATS_DTYPE)
+        self.kernel.driver(method)(saveat(t, outputs=False), n, y0s, ps, [float(h)], y, None, st)
         return y, st[:n]
 
 

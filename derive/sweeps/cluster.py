@@ -6,6 +6,9 @@ Takes: the runnable points and their arguments. Gives: (chunks, {chunk: result})
 """
 from __future__ import annotations
 
+import concurrent.futures
+import socket
+
 from derive.errors import EngineError, SceneError
 from derive.sim.validator import _real
 from derive.sweeps.tasks import _chunks, _cpus, _held, _progress_bar, run_chunk
@@ -258,68 +261,78 @@ def _parse_address(address: str) -> str:
     return f"{scheme}://{host}:{int(port)}"
 
 
-def _probe(address: str, source: str, timeout: float) -> None:
-    """Reach the scheduler at ``address`` within ``timeout`` seconds and, for tcp://, read its
-    Dask handshake (the server speaks first: an 8-byte length, then a small msgpack dict), so
-    that a closed port, a silent listener or another protocol is one clear EngineError instead
-    of Dask's retries, a wait for ever or a gigabyte-sized allocation from an HTTP reply."""
-    import socket
-    import struct
-    import time
+def _probe(address: str, source: str, timeout: float, security=None) -> None:
+    """Reach the scheduler at ``address`` and read its Dask handshake within ``timeout`` seconds,
+    through ``distributed``'s connector and comm, so that a closed port, an unknown host, a
+    silent listener, another protocol or a tls:// address without credentials is one clear
+    EngineError instead of Dask's retries or a wait for ever."""
+    import asyncio
 
-    scheme, loc = address.split("://", 1)
-    host, port = loc.rsplit(":", 1)
-    host = host.strip("[]")
+    from distributed.comm.addressing import parse_address
+    from distributed.comm.core import CommClosedError
+    from distributed.comm.registry import get_backend
+    from distributed.security import Security
+
     where = f"{source}: scheduler {address}"
-    deadline = time.monotonic() + timeout
+    closed = f"{where}: closed the connection without a Dask handshake"
+    scheme, loc = parse_address(address)
+    args = (security or Security()).get_connection_args("client")
 
-    def left():
-        return max(0.01, deadline - time.monotonic())
+    async def handshake():
+        # The connector, not distributed.comm.connect: connect() retries a refused port until
+        # its timeout and then names only the timeout, and waits for the handshake for ever.
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + timeout
+        try:
+            comm = await asyncio.wait_for(
+                get_backend(scheme).get_connector().connect(loc, deserialize=False, **args),
+                timeout)
+        except OSError as exc:
+            cause = exc.__cause__ or exc
+            if isinstance(cause, socket.gaierror):
+                raise EngineError(f"{where}: unknown host ({cause.strerror or cause})") from None
+            if isinstance(cause, ConnectionRefusedError):
+                raise EngineError(f"{where}: connection refused (nothing listens there)") from None
+            if isinstance(exc, TimeoutError):
+                raise EngineError(f"{where}: no answer within {timeout:g} s") from None
+            if type(exc) is CommClosedError and exc.__cause__ is None:  # accepted, then closed
+                raise EngineError(closed) from None
+            raise EngineError(f"{where}: cannot connect ({_why(cause)})") from None
+        except (TypeError, RuntimeError) as exc:  # no ssl_context; encryption required on tcp://
+            if scheme == "tls" and args.get("ssl_context") is None:
+                raise EngineError(f"{where}: cannot connect ({_NO_CREDENTIALS})") from None
+            raise EngineError(f"{where}: cannot connect ({_why(exc)})") from None
+        try:
+            await comm.write(comm.handshake_info())
+            return await asyncio.wait_for(comm.read(), max(0.01, deadline - loop.time()))
+        except TimeoutError:
+            raise EngineError(f"{where}: accepted the connection but sent no Dask handshake "
+                              f"within {timeout:g} s (is it a Dask scheduler?)") from None
+        except (CommClosedError, ConnectionError):
+            raise EngineError(closed) from None
+        except Exception:  # undecodable, or a length no handshake has ("HTTP/1.1": 3 EiB)
+            raise EngineError(f"{where}: answered, but not as a Dask scheduler (is it one?)") \
+                from None
+        finally:
+            comm.abort()
 
     try:
-        sock = socket.create_connection((host, int(port)), timeout=left())
-    except socket.gaierror as exc:
-        raise EngineError(f"{where}: unknown host ({exc.strerror or exc})") from None
-    except ConnectionRefusedError:
-        raise EngineError(f"{where}: connection refused (nothing listens there)") from None
-    except (TimeoutError, socket.timeout):
-        raise EngineError(f"{where}: no answer within {timeout:g} s") from None
-    except OSError as exc:
-        raise EngineError(f"{where}: cannot connect ({exc.strerror or exc})") from None
-    if scheme != "tcp":  # TLS: the client speaks first; Dask's own timeout covers the rest
-        sock.close()
-        return
-
-    def read(n):
-        data = bytearray()
-        while len(data) < n:
-            sock.settimeout(left())
-            chunk = sock.recv(n - len(data))
-            if not chunk:
-                raise EngineError(f"{where}: closed the connection without a Dask handshake")
-            data += chunk
-        return bytes(data)
-
-    try:
-        with sock:
-            (size,) = struct.unpack("Q", read(8))
-            if not 8 <= size <= 1 << 16:  # a handshake is ~60 bytes; "HTTP/1.1" reads as 10^18
-                raise EngineError(f"{where}: answered, but not as a Dask scheduler (is it one?)")
-            body = read(size)
-    except (TimeoutError, socket.timeout):
-        raise EngineError(f"{where}: accepted the connection but sent no Dask handshake within "
-                          f"{timeout:g} s (is it a Dask scheduler?)") from None
-    except ConnectionError as exc:
-        raise EngineError(f"{where}: the connection failed ({exc.strerror or exc})") from None
-    try:
-        from distributed.protocol import loads
-        from distributed.protocol.utils import unpack_frames
-
-        hello = loads(unpack_frames(body), deserialize=False)
-    except Exception:
-        hello = None
+        asyncio.get_running_loop()
+    except RuntimeError:
+        hello = asyncio.run(handshake())
+    else:  # called from a running loop (a notebook): the probe gets a thread of its own
+        with concurrent.futures.ThreadPoolExecutor(1) as pool:
+            hello = pool.submit(asyncio.run, handshake()).result()
     if not isinstance(hello, dict) or "python" not in hello:
         raise EngineError(f"{where}: answered, but not as a Dask scheduler (is it one?)")
+
+
+_NO_CREDENTIALS = ("a tls:// scheduler needs credentials: security= in the API, or Dask's "
+                   "distributed.comm.tls configuration")
+
+
+def _why(exc: BaseException) -> str:
+    return " ".join(str(getattr(exc, "strerror", None) or exc).split())[:200]
 
 
 def _connect(address: str, source: str, timeout: float, security=None):
@@ -327,17 +340,12 @@ def _connect(address: str, source: str, timeout: float, security=None):
     the connection and as much again for the first worker; EngineError otherwise."""
     from dask.distributed import Client
 
-    _probe(address, source, timeout)
+    _probe(address, source, timeout, security)
     where = f"{source}: scheduler {address}"
     try:
         client = Client(address, timeout=timeout, security=security)
     except (OSError, TimeoutError, TypeError, ValueError) as exc:
-        if address.startswith("tls://") and security is None:  # Dask: "TLS expects a ssl_context"
-            why = ("a tls:// scheduler needs credentials: security= in the API, or Dask's "
-                   "distributed.comm.tls configuration")
-        else:
-            why = " ".join(str(exc).split())[:200]
-        raise EngineError(f"{where}: cannot connect ({why})") from None
+        raise EngineError(f"{where}: cannot connect ({_why(exc)})") from None
     try:
         client.wait_for_workers(1, timeout=timeout)
     except (TimeoutError, OSError):
