@@ -78,12 +78,14 @@ class Run:
 
 
 def quaternion_matrix(q: np.ndarray) -> np.ndarray:
-    """R(q), body → inertial, for a quaternion (normalised here)."""
-    q0, q1, q2, q3 = q / np.linalg.norm(q)
-    return np.array([
-        [1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2)],
-        [2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3), 2 * (q2 * q3 - q0 * q1)],
-        [2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), 1 - 2 * (q1 * q1 + q2 * q2)]])
+    """R(q), body → inertial, for a quaternion (normalised here), or (n, 3, 3) for n of them."""
+    q = np.asarray(q, dtype=float)
+    q0, q1, q2, q3 = np.moveaxis(q / np.linalg.norm(q, axis=-1, keepdims=True), -1, 0)
+    R = np.stack([
+        1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2),
+        2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3), 2 * (q2 * q3 - q0 * q1),
+        2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), 1 - 2 * (q1 * q1 + q2 * q2)], axis=-1)
+    return R.reshape(q.shape[:-1] + (3, 3))
 
 
 class Phases:

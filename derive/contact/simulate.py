@@ -112,7 +112,7 @@ class ContactResult:
 def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
     """The output arrays from a run's sampled states."""
     outs = k.outputs_many(run.phase, run.y, p, run.direction)
-    R = np.array([quaternion_matrix(y[:4]) for y in run.y])
+    R = quaternion_matrix(run.y[:, :4])
     beta = np.arccos(np.clip(R[:, 2, 2], -1.0, 1.0))
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
     gamma = np.unwrap(np.arctan2(R[:, 2, 1], -R[:, 2, 0]))
@@ -123,7 +123,7 @@ def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
         axis=R[:, :, 2].copy(), energy=outs[:, _O["energy"]], com=com.copy(),
         contact=com + outs[:, _O["a_x"]:_O["a_z"] + 1], normal_force=outs[:, _O["N"]],
         slip_speed=np.linalg.norm(outs[:, _O["slip_x"]:_O["slip_z"] + 1], axis=1),
-        phase=np.array([PHASE_NAMES[int(x)] for x in run.phase]), gap=outs[:, _O["gap"]],
+        phase=np.array([PHASE_NAMES[i] for i in range(len(PHASE_NAMES))])[run.phase], gap=outs[:, _O["gap"]],
         p_alpha=outs[:, _O["p_alpha"]], p_gamma=outs[:, _O["p_gamma"]],
         integrals={n: outs[:, _O[n]] for n in names}, switches=run.switches, nfev=run.nfev,
         model=f"contact_{sc.shape}_{sc.law}", method=METHOD if sc.method == METHOD else COMPILED)
