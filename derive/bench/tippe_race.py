@@ -217,6 +217,10 @@ def rows(tt: dict) -> list[tuple[str, str, float | None]]:
              "the worst setting", SPIN_GOAL, tt.get("time_ratio"))]
 
 
+def _t90(m: dict) -> str:
+    return "never" if m["t90"] is None else f"{m['t90']:.3f}"
+
+
 def _sr(s) -> str:
     return "default (0.02, 1)" if not s else f"({s[0]:g}, {s[1]:g})"
 
@@ -239,10 +243,10 @@ def section(results: dict) -> list[str]:
           "| side | setting | wall (s) | J drift | θ max | spin error | θ = 90° at (s) |", "|---|---|---|---|---|---|---|"]
     for o in tt["derive"]:
         L.append(f"| derive | rtol {o['rtol']:.0e} | {o['time']:.4f} | {o['jellett_drift']:.1e} | "
-                 f"{o['theta_max']:.4f} | {o['spin_error']:.1e} | {o['t90']} |")
+                 f"{o['theta_max']:.4f} | {o['spin_error']:.1e} | {_t90(o)} |")
     for m in tt["mujoco_runs"]:
         L.append(f"| MuJoCo | dt {m['dt']:.0e}, solref {_sr(m['solref'])} | {m['time']:.4f} | "
-                 f"{m['jellett_drift']:.1e} | {m['theta_max']:.4f} | {m['spin_error']:.1e} | {m['t90']} |")
+                 f"{m['jellett_drift']:.1e} | {m['theta_max']:.4f} | {m['spin_error']:.1e} | {_t90(m)} |")
     L += ["", "| MuJoCo setting | derive at equal or less time | J: MuJoCo / derive | derive at equal or smaller "
           "spin error | time: derive / MuJoCo |", "|---|---|---|---|---|"]
     for m in tt["mujoco_runs"]:
