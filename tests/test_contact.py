@@ -523,3 +523,64 @@ def test_a_round_peg_with_little_friction_rises():
     d["contact"]["mu"] = 0.02
     r = run_scene(d, t_end=10.0, samples=1001)
     assert r.beta[-1] < 0.15 and r.beta[0] == pytest.approx(0.5)
+
+
+STEM = {"radius": 0.005, "offset": 0.016}
+
+
+def _ends_on_its_stem(r):
+    """The run turned over, switched to the stem at located events and stands on it at the end:
+    the stem's gap closed, the ball's open, the stem's Jellett integral kept since the last switch."""
+    events = [s.event for s in r.switches]
+    assert events[0] == "stem" and events[-1] == "stem" and set(events) <= {"stem", "ball"}
+    for s in r.switches:  # an inelastic impact at each touch: no energy gained
+        assert s.energy_after <= s.energy_before * (1 + 1e-12)
+    after = r.t > r.switches[-1].t
+    cb = np.cos(r.beta[after])
+    assert np.max(np.abs(r.com[after, 2] - (STEM["radius"] - STEM["offset"] * cb))) <= 1e-12
+    assert np.all(r.com[after, 2] + 0.003 * cb - 0.015 > 0)  # the ball off the table
+    J = r.integrals["jellett"][after]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+    assert r.beta[-1] > np.pi - 0.1
+
+
+def test_the_tippe_top_with_viscous_friction_turns_over_and_ends_on_its_stem():
+    r = run_scene(read_example("tippe_top_stem"), t_end=2.0, samples=2001)
+    _ends_on_its_stem(r)
+    assert 0.5 < r.switches[0].t < 0.7
+
+
+@pytest.mark.slow
+def test_the_tippe_top_with_regularised_coulomb_friction_turns_over_and_ends_on_its_stem():
+    r = run_scene(_scene(TIPPE, contact={"regularization": 1e-2, "stem": STEM},
+                         simulate={"t_end": 13.0, "samples": 6501}))
+    _ends_on_its_stem(r)
+
+
+def test_the_stem_touches_when_scipys_dop853_says_it_does():
+    d = read_example("tippe_top_stem")
+    c, s = (run_scene(d, t_end=0.65, samples=66, method=m) for m in ("dop853", "scipy-dop853"))
+    assert [x.event for x in c.switches] == [x.event for x in s.switches] == ["stem"]
+    assert abs(c.switches[0].t - s.switches[0].t) <= 1e-9
+
+
+def test_a_top_started_upside_down_stands_on_its_stem():
+    d = _scene(TIPPE, contact={"friction": "viscous", "stem": STEM}, initial={"beta": np.pi - 0.05},
+               simulate={"t_end": 0.05, "samples": 51})
+    r = run_scene(d)
+    assert r.com[0, 2] == pytest.approx(STEM["radius"] - STEM["offset"] * np.cos(np.pi - 0.05), rel=1e-14)
+    assert not r.switches and np.all(r.gap >= -1e-15)
+
+
+@pytest.mark.parametrize("contact,key", [
+    ({"stem": {"radius": -0.005, "offset": 0.016}}, "contact.stem.radius"),
+    ({"stem": {"offset": 0.016}}, "contact.stem"),
+    ({"stem": {"radius": 0.005, "length": 0.016}}, "contact.stem"),
+    ({"stem": 0.005}, "contact.stem"),
+    ({"shape": "point", "radius": None, "stem": {"radius": 0.005}}, "contact.stem"),
+])
+def test_a_bad_stem_names_its_key(contact, key):
+    d = _scene(TIPPE, contact=contact)
+    d["contact"] = {k: v for k, v in d["contact"].items() if v is not None}
+    with pytest.raises(SceneError, match=rf": {key}: "):
+        read(d, "top.toml")

@@ -55,7 +55,11 @@ def initial_state(sc: ContactScene) -> np.ndarray:
     w = np.array(sc.omega) if sc.omega is not None else body_omega(sc.angles[1], sc.angles[2], sc.rates)
     y = np.concatenate([q, w, np.zeros(6)])
     k = kernel(sc.shape, sc.law)
-    a = k.outputs(2, y, params(sc), np.zeros(3))[_O["a_x"]:_O["a_z"] + 1]
+    p = params(sc)
+    n3 = quaternion_matrix(q)[2, 2]
+    if sc.stem is not None and sc.stem[1] * n3 - sc.stem[0] < sc.offset * n3 - sc.radius:
+        p[5:7] = sc.stem  # the stem is the lower sphere: the body stands on it
+    a = k.outputs(2, y, p, np.zeros(3))[_O["a_x"]:_O["a_z"] + 1]
     y[9] = -a[2]
     wi = quaternion_matrix(q) @ w
     v = -np.cross(wi, a)
@@ -109,9 +113,14 @@ class ContactResult:
         return out
 
 
-def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
-    """The output arrays from a run's sampled states."""
+def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
+    """The output arrays from a run's sampled states (``params_of(i)``: the kernel's parameters
+    with sphere i touching, for a body with a stem)."""
     outs = k.outputs_many(run.phase, run.y, p, run.direction)
+    if run.sphere is not None and params_of is not None and run.sphere.any():
+        on = run.sphere == 1
+        outs[on] = k.outputs_many(run.phase[on], run.y[on], params_of(1), run.direction[on])
+        outs[~on] = k.outputs_many(run.phase[~on], run.y[~on], params_of(0), run.direction[~on])
     R = quaternion_matrix(run.y[:, :4])
     beta = np.arccos(np.clip(R[:, 2, 2], -1.0, 1.0))
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
@@ -134,10 +143,10 @@ def simulate(sc: ContactScene) -> ContactResult:
     k = kernel(sc.shape, sc.law)
     p = params(sc)
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
-                max_steps=sc.max_steps, compiled=sc.method != METHOD)
+                max_steps=sc.max_steps, compiled=sc.method != METHOD, stem=sc.stem)
     k.nfev = 0
     run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
-    return result(sc, run, k, p)
+    return result(sc, run, k, p, ph.params)
 
 
 def run_scene(data: dict, source: str = "<dict>", **overrides) -> ContactResult:
