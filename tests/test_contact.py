@@ -456,6 +456,27 @@ def test_a_frictionless_top_keeps_its_integrals_over_a_thousand_nutations_at_the
         assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
 
 
+@pytest.mark.slow
+def test_over_ten_thousand_nutations_energy_and_p_gamma_hold_and_p_alpha_drifts_with_the_tolerance():
+    """p_γ = I₃ω₃ is a state whose rate is zero term by term, so every Runge–Kutta step keeps it;
+    E stays within 1e-12; p_α = (Iω)·n is a product of states that DOP853's truncation error
+    moves a little every step, the same way each nutation: its drift grows linearly and
+    shrinks with the tolerance (measured in docs/contact.md)."""
+    T = _frictionless_reference()[1]
+    drift = {}
+    for rtol, n in ((2.2e-14, 10_000), (1e-12, 1000)):
+        r = run_scene(read_example("frictionless_top"), t_end=n * T, samples=11, rtol=rtol, atol=rtol * 1e-3,
+                      max_steps=100_000_000)
+        rel = {k: (v - v[0]) / abs(v[0]) for k, v in (("E", r.energy), ("p_alpha", r.p_alpha), ("p_gamma", r.p_gamma))}
+        assert np.all(rel["p_gamma"] == 0.0)
+        drift[rtol] = rel["p_alpha"][-1] / n
+        if n == 10_000:
+            assert np.max(np.abs(rel["E"])) <= 1e-12
+            steps = np.diff(rel["p_alpha"])  # the same drift in each tenth of the run: linear
+            assert np.all(np.sign(steps) == np.sign(steps[0])) and np.ptp(steps) <= 0.2 * abs(steps).max()
+    assert abs(drift[1e-12]) > 20 * abs(drift[2.2e-14])  # truncation, not round-off
+
+
 def _euler_disk_reference(t):
     """A thin disc rolling on its rim, written independently: inertial frame, the contact
     a = −r p/|p| with p = ẑ − (ê₃·ẑ) ê₃ and its rate by hand, the centre of mass's velocity
