@@ -605,3 +605,16 @@ def test_a_bad_stem_names_its_key(contact, key):
     d["contact"] = {k: v for k, v in d["contact"].items() if v is not None}
     with pytest.raises(SceneError, match=rf": {key}: "):
         read(d, "top.toml")
+
+
+def test_the_stem_touches_at_the_tilt_the_analysis_derives():
+    from scipy.interpolate import make_interp_spline
+
+    d = read_example("tippe_top_stem")
+    tilt = analysis.analyze(read(d))["stem"]["tilt"]
+    assert np.cos(tilt) == pytest.approx((0.005 - 0.015) / (0.016 - 0.003), rel=1e-15)
+    r = run_scene(d, t_end=0.65, samples=6501)
+    t_s = r.switches[0].t
+    assert r.switches[0].event == "stem"
+    before = slice(int(np.searchsorted(r.t, t_s)) - 40, int(np.searchsorted(r.t, t_s)))  # the impact kinks β
+    assert abs(float(make_interp_spline(r.t[before], r.beta[before], k=5)(t_s)) - tilt) <= 1e-9
