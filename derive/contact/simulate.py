@@ -15,6 +15,7 @@ from derive.contact.equations import contact
 from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
+from derive.contact import reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
 from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, read
 
@@ -139,13 +140,26 @@ def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
 
 
 def simulate(sc: ContactScene) -> ContactResult:
-    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases)."""
+    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases). A
+    frictionless axisymmetric body runs in the reduced formulation of :mod:`derive.contact.reduced`
+    (p_α and p_γ held as parameters) while it serves, else in the full one."""
     k = kernel(sc.shape, sc.law)
     p = params(sc)
+    t_out = np.linspace(0.0, sc.t_end, sc.samples)
+    if reduced.eligible(sc):
+        y0 = initial_state(sc)
+        got = reduced.run(sc, y0, t_out, p, k)
+        if got is not None:
+            ys, nfev, nstep = got
+            n = len(t_out)
+            run = Run(t_out, ys, np.zeros(n, dtype=int), np.zeros((n, 3)), nfev=nfev, nstep=nstep)
+            res = result(sc, run, k, p)
+            res.formulation = "reduced"
+            return res
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
                 max_steps=sc.max_steps, compiled=sc.method != METHOD, stem=sc.stem)
     k.nfev = 0
-    run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
+    run = ph.run(initial_state(sc), t_out)
     return result(sc, run, k, p, ph.params)
 
 
