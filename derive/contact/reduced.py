@@ -94,6 +94,9 @@ class ReducedKernel:
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
+        self.many = getattr(lib, f"{name}_many")
+        self.many.restype = ctypes.c_long
+        self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 4
         self.step = getattr(lib, f"{name}_advance")
         self.step.restype = ctypes.c_int
         self.step.argtypes = ([ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_double]
@@ -103,17 +106,16 @@ class ReducedKernel:
 
     def rates(self, y: np.ndarray, p: np.ndarray) -> np.ndarray:
         """(α̇, β̇, γ̇, β̈) and (N, z, ż) at each row of ``y``."""
-        dy, out = np.zeros(len(STATE)), np.zeros(len(OUTPUTS))
-        d = np.zeros(3)
+        y = np.ascontiguousarray(y, dtype=float)
+        dy, out = np.empty_like(y), np.empty((len(y), len(OUTPUTS)))
+        if self.many(len(y), y.ctypes.data, p.ctypes.data, dy.ctypes.data, out.ctypes.data):
+            raise FloatingPointError("the reduced chart is singular here (sin β = 0)")
         res = np.empty((len(y), 7))
-        for i, row in enumerate(np.ascontiguousarray(y, dtype=float)):
-            if self.fn(0, row.ctypes.data, p.ctypes.data, d.ctypes.data, dy.ctypes.data, out.ctypes.data):
-                raise FloatingPointError("the reduced chart is singular here (sin β = 0)")
-            # a rate on the unit circle: θ̇ = (c ṡ − s ċ)/(c² + s²)
-            res[i, 0] = (row[0] * dy[1] - row[1] * dy[0]) / (row[0] ** 2 + row[1] ** 2)
-            res[i, 2] = (row[3] * dy[4] - row[4] * dy[3]) / (row[3] ** 2 + row[4] ** 2)
-            res[i, 1], res[i, 3] = dy[2], dy[5]
-            res[i, 4:] = out[[OUTPUTS.index("N"), OUTPUTS.index("z"), OUTPUTS.index("vz")]]
+        # a rate on the unit circle: θ̇ = (c ṡ − s ċ)/(c² + s²)
+        res[:, 0] = (y[:, 0] * dy[:, 1] - y[:, 1] * dy[:, 0]) / (y[:, 0] ** 2 + y[:, 1] ** 2)
+        res[:, 2] = (y[:, 3] * dy[:, 4] - y[:, 4] * dy[:, 3]) / (y[:, 3] ** 2 + y[:, 4] ** 2)
+        res[:, 1], res[:, 3] = dy[:, 2], dy[:, 5]
+        res[:, 4:] = out[:, [OUTPUTS.index("N"), OUTPUTS.index("z"), OUTPUTS.index("vz")]]
         return res
 
 

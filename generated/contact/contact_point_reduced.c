@@ -18,6 +18,7 @@
 
 int contact_point_reduced_eval(int phase, const double *y, const double *p, const double *dir,
                       double *dy, double *out);
+long contact_point_reduced_many(long n, const double *y, const double *p, double *dy, double *out);
 
 int contact_point_reduced_eval(int phase, const double *y, const double *p, const double *dir,
                       double *dy, double *out)
@@ -68,6 +69,16 @@ int contact_point_reduced_eval(int phase, const double *y, const double *p, cons
         out[0] = N;
         out[18] = z;
         out[21] = z_d;
+    }
+    return 0;
+}
+/* dy and out of n states (row-major y): the samples of a run in one call. Returns 0, or 1 + the
+ * index of the first state at the chart's pole. */
+long contact_point_reduced_many(long n, const double *y, const double *p, double *dy, double *out)
+{
+    long i;
+    for (i = 0; i < n; i++) {
+        if (contact_point_reduced_eval(0, y + 6 * i, p, NULL, dy + 6 * i, out + 23 * i)) return i + 1;
     }
     return 0;
 }
