@@ -35,6 +35,7 @@ from derive.contact.equations import GRAV, I1, I3, MASS, contact
 from derive.contact.geometry import OFFSET, RADIUS, SHAPES, height_in_angles
 from derive.contact.kernel import LOOP, OUTPUTS, c_block, loop_source
 from derive.contact.phases import quaternion_matrix
+from derive.contact.scene import METHOD
 from derive.errors import IntegrationError
 from derive.runtime.cbuild import compile_library
 from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
@@ -44,6 +45,8 @@ from derive.symbolic.rotations import alpha_d, beta, beta_d, gamma_d
 PARAMS = (I1, I3, MASS, GRAV, RADIUS, OFFSET, p_alpha, p_gamma)
 STATE = ("cos_alpha", "sin_alpha", "beta", "cos_gamma", "sin_gamma", "beta_dot")
 BETA_DD = sp.Symbol("beta_dd", real=True)
+#: The result's ``formulation`` when this chart ran.
+FORMULATION = "contact-reduced"
 #: sin β below this (a start or a sample) hands the scene to the full formulation.
 POLE = 1e-2
 
@@ -141,7 +144,7 @@ def body_rates(beta, gamma, alpha_d, beta_d, gamma_d) -> np.ndarray:
 def eligible(sc) -> bool:
     """Whether a scene is the reduced problem's: frictionless, axisymmetric, one contact surface,
     the compiled loop."""
-    return sc.law == "none" and sc.symmetric and sc.stem is None and sc.method != "scipy-dop853"
+    return sc.law == "none" and sc.symmetric and sc.stem is None and sc.method != METHOD
 
 
 def run(sc, y0: np.ndarray, t_out: np.ndarray, p_full: np.ndarray, full):

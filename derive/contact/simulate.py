@@ -154,7 +154,7 @@ def simulate(sc: ContactScene) -> ContactResult:
             n = len(t_out)
             run = Run(t_out, ys, np.zeros(n, dtype=int), np.zeros((n, 3)), nfev=nfev, nstep=nstep)
             res = result(sc, run, k, p)
-            res.formulation = "reduced"
+            res.formulation = reduced.FORMULATION
             return res
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
                 max_steps=sc.max_steps, compiled=sc.method != METHOD, stem=sc.stem)
