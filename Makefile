@@ -35,14 +35,14 @@ docs: $(STAMP)
 	@$(PY) -m sphinx -W -q -b html docs/api docs/api/_build/html
 	@echo "API reference: docs/api/_build/html/index.html"
 
-# The same bench with the peers installed (the optional extra: CasADi, PyDy, heyoka, numbalsoda)
-# and raced. numbalsoda needs a Fortran compiler to build: without one, the others are installed
+# The same bench with the peers installed (the optional extras: CasADi, PyDy, heyoka, numbalsoda;
+# MuJoCo for the tippe top) and raced. numbalsoda needs a Fortran compiler to build: without one, the others are installed
 # and the bench says numbalsoda was not raced.
 bench-peers: $(STAMP)
-	@$(PY) -m pip install -q --disable-pip-version-check -e '.[test,peers]' 2>/dev/null \
+	@$(PY) -m pip install -q --disable-pip-version-check -e '.[test,peers,contact-peers]' 2>/dev/null \
 		|| { echo "numbalsoda did not build (a Fortran compiler?): racing the other peers"; \
 		     $(PY) -m pip install -q --disable-pip-version-check "casadi>=3.6" "pydy>=0.7" "cython>=3.0" \
-		     "heyoka>=6.0"; }
+		     "heyoka>=6.0" "mujoco>=3.0"; }
 	@$(PY) -m derive bench -o bench-out
 
 # The compile cache (DERIVE_CACHE, default ~/.cache/derive) is emptied through the tool itself,

@@ -252,7 +252,13 @@ def _compiles_clean(pairs):
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
+    from derive.contact import reduced
+    from derive.contact.kernel import LOOP, loop_source
+    from derive.runtime.cbuild import check_compiles
+
     _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
+    for shape in ("point", "sphere", "disc"):
+        check_compiles({"c.c": reduced.source(shape), LOOP: loop_source()}, "c.c")
 
 
 @pytest.mark.slow
@@ -456,6 +462,38 @@ def test_a_frictionless_top_keeps_its_integrals_over_a_thousand_nutations_at_the
         assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
 
 
+@pytest.mark.slow
+def test_a_frictionless_top_keeps_its_integrals_over_ten_thousand_nutations():
+    r = run_scene(read_example("frictionless_top"), t_end=10_000 * _frictionless_reference()[1], samples=2001,
+                  rtol=2.2e-14, atol=1e-17, max_steps=100_000_000)
+    assert r.formulation == "contact-reduced"
+    for v in (r.energy, r.p_alpha, r.p_gamma):
+        assert np.max(np.abs(v - v[0])) <= 1e-12 * abs(v[0])
+
+
+def test_the_reduced_frictionless_plane_moves_as_the_full_formulation_does():
+    d = read_example("frictionless_top")
+    d["initial"].update(vx=0.02, vy=-0.01, alpha=0.3, gamma=0.2, alpha_dot=3.0)
+    red, full = (run_scene(d, t_end=0.3, samples=301, rtol=1e-12, atol=1e-14, method=m)
+                 for m in ("auto", "scipy-dop853"))
+    assert (red.formulation, full.formulation) == ("contact-reduced", "contact")
+    for name in ("beta", "alpha", "gamma"):
+        assert np.max(np.abs(getattr(red, name) - getattr(full, name))) <= 1e-9, name
+    assert np.max(np.abs(red.omega - full.omega)) <= 1e-9 * 100
+    assert np.max(np.abs(red.com - full.com)) <= 1e-11
+    assert np.max(np.abs(red.normal_force - full.normal_force)) <= 1e-9 * full.normal_force.max()
+
+
+def test_the_full_formulation_runs_a_frictionless_top_near_its_pole_or_leaving_the_table():
+    d = read_example("frictionless_top")
+    d["initial"]["beta"] = 1e-3  # sin β below the reduced chart's bound
+    assert run_scene(d, t_end=0.05, samples=51).formulation == "contact"
+    d["initial"].update(beta=0.5, beta_dot=12.0)  # a knock: N > 0 at the start, later zero
+    r = run_scene(d, t_end=0.2, samples=51)
+    assert r.normal_force[0] > 0 and r.formulation == "contact"
+    assert [s.event for s in r.switches][:1] == ["lift-off"]
+
+
 def _euler_disk_reference(t):
     """A thin disc rolling on its rim, written independently: inertial frame, the contact
     a = −r p/|p| with p = ẑ − (ê₃·ẑ) ê₃ and its rate by hand, the centre of mass's velocity
@@ -523,3 +561,77 @@ def test_a_round_peg_with_little_friction_rises():
     d["contact"]["mu"] = 0.02
     r = run_scene(d, t_end=10.0, samples=1001)
     assert r.beta[-1] < 0.15 and r.beta[0] == pytest.approx(0.5)
+
+
+STEM = {"radius": 0.005, "offset": 0.016}
+
+
+def _ends_on_its_stem(r):
+    """The run turned over, switched to the stem at located events and stands on it at the end:
+    the stem's gap closed, the ball's open, the stem's Jellett integral kept since the last switch."""
+    events = [s.event for s in r.switches]
+    assert events[0] == "stem" and events[-1] == "stem" and set(events) <= {"stem", "ball"}
+    for s in r.switches:  # an inelastic impact at each touch: no energy gained
+        assert s.energy_after <= s.energy_before * (1 + 1e-12)
+    after = r.t > r.switches[-1].t
+    cb = np.cos(r.beta[after])
+    assert np.max(np.abs(r.com[after, 2] - (STEM["radius"] - STEM["offset"] * cb))) <= 1e-12
+    assert np.all(r.com[after, 2] + 0.003 * cb - 0.015 > 0)  # the ball off the table
+    J = r.integrals["jellett"][after]
+    assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
+    assert r.beta[-1] > np.pi - 0.1
+
+
+def test_the_tippe_top_with_viscous_friction_turns_over_and_ends_on_its_stem():
+    r = run_scene(read_example("tippe_top_stem"), t_end=2.0, samples=2001)
+    _ends_on_its_stem(r)
+    assert 0.5 < r.switches[0].t < 0.7
+
+
+@pytest.mark.slow
+def test_the_tippe_top_with_regularised_coulomb_friction_turns_over_and_ends_on_its_stem():
+    r = run_scene(_scene(TIPPE, contact={"regularization": 1e-2, "stem": STEM},
+                         simulate={"t_end": 13.0, "samples": 6501}))
+    _ends_on_its_stem(r)
+
+
+def test_the_stem_touches_when_scipys_dop853_says_it_does():
+    d = read_example("tippe_top_stem")
+    c, s = (run_scene(d, t_end=0.65, samples=66, method=m) for m in ("dop853", "scipy-dop853"))
+    assert [x.event for x in c.switches] == [x.event for x in s.switches] == ["stem"]
+    assert abs(c.switches[0].t - s.switches[0].t) <= 1e-9
+
+
+def test_a_top_started_upside_down_stands_on_its_stem():
+    d = _scene(TIPPE, contact={"friction": "viscous", "stem": STEM}, initial={"beta": np.pi - 0.05},
+               simulate={"t_end": 0.05, "samples": 51})
+    r = run_scene(d)
+    assert r.com[0, 2] == pytest.approx(STEM["radius"] - STEM["offset"] * np.cos(np.pi - 0.05), rel=1e-14)
+    assert not r.switches and np.all(r.gap >= -1e-15)
+
+
+@pytest.mark.parametrize("contact,key", [
+    ({"stem": {"radius": -0.005, "offset": 0.016}}, "contact.stem.radius"),
+    ({"stem": {"offset": 0.016}}, "contact.stem"),
+    ({"stem": {"radius": 0.005, "length": 0.016}}, "contact.stem"),
+    ({"stem": 0.005}, "contact.stem"),
+    ({"shape": "point", "radius": None, "stem": {"radius": 0.005}}, "contact.stem"),
+])
+def test_a_bad_stem_names_its_key(contact, key):
+    d = _scene(TIPPE, contact=contact)
+    d["contact"] = {k: v for k, v in d["contact"].items() if v is not None}
+    with pytest.raises(SceneError, match=rf": {key}: "):
+        read(d, "top.toml")
+
+
+def test_the_stem_touches_at_the_tilt_the_analysis_derives():
+    from scipy.interpolate import make_interp_spline
+
+    d = read_example("tippe_top_stem")
+    tilt = analysis.analyze(read(d))["stem"]["tilt"]
+    assert np.cos(tilt) == pytest.approx((0.005 - 0.015) / (0.016 - 0.003), rel=1e-15)
+    r = run_scene(d, t_end=0.65, samples=6501)
+    t_s = r.switches[0].t
+    assert r.switches[0].event == "stem"
+    before = slice(int(np.searchsorted(r.t, t_s)) - 40, int(np.searchsorted(r.t, t_s)))  # the impact kinks β
+    assert abs(float(make_interp_spline(r.t[before], r.beta[before], k=5)(t_s)) - tilt) <= 1e-9

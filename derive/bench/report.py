@@ -7,6 +7,7 @@ import numpy as np
 
 from derive.bench import runner as B
 from derive.bench import targets as T
+from derive.bench import tippe_race
 
 FAMILY_NAMES = {"scipy": "SciPy (plain-Python rhs)", "casadi": "CasADi", "pydy": "PyDy (Cython) + odeint",
                 "heyoka": "heyoka (Taylor, LLVM)", "numbalsoda": "numbalsoda DOP853 (numba rhs)"}
@@ -489,7 +490,8 @@ def splitting_section(results: dict) -> list[str]:
 
 
 def write_report(results: dict, out: Path) -> str:
-    L = header(results) + targets_section(results) + peers_section(results) + auto_choice_section(results) \
+    L = header(results) + targets_section(results) + peers_section(results) + tippe_race.section(results) \
+        + auto_choice_section(results) \
         + kernel_section(results) \
         + wp_section(results) \
         + drift_section(results) + splitting_section(results)

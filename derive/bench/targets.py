@@ -48,6 +48,7 @@ from derive.bench import runner as B
 from derive.bench import timing
 from derive.bench import contenders as bc
 from derive.bench import peers as bench_peers
+from derive.bench import tippe_race
 from derive.bench.reference import reference_data
 import derive
 from derive.bench import internals as bi
@@ -70,6 +71,8 @@ GOALS = {
     # user terms (derive.bench.own_body)
     "own_first_run": ("≤", 3.0), "own_gravity_vs_gravity": ("≤", 1.1),
     "own_warm_vs_shipped": ("≤", 1.2),
+    # derive.bench.tippe_race: the tippe top against MuJoCo
+    tippe_race.JELLETT_GOAL: ("≥", 1000.0), tippe_race.SPIN_GOAL: ("≤", 1.0),
 }
 
 
@@ -390,7 +393,7 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=10, desc="targets", unit="part", file=sys.stderr) as bar:
+    with tqdm(total=11, desc="targets", unit="part", file=sys.stderr) as bar:
         out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
         bar.update()
         out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
@@ -412,6 +415,8 @@ def run(cfg, fams) -> dict:
         out["own_body"] = _guard("own body", own_body, cfg)
         bar.update()
         out["auto_choice"] = _guard("auto choice", auto_choice, cfg)
+        bar.update()
+        out["tippe_top"] = _guard("tippe top vs MuJoCo", tippe_race.run, cfg)
         bar.update()
     return out
 
@@ -495,6 +500,7 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
          "own_warm_vs_shipped", ob.get("warm_ratio")),
     ]
     rows += peer_rows(t.get("peers") or {})
+    rows += tippe_race.rows(t.get("tippe_top") or {})
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]
 
 

@@ -10,7 +10,9 @@ constraint and the rolling force from the no-slip condition), the integrals each
 the analysis of its steady states (:mod:`~derive.contact.integrals`,
 :mod:`~derive.contact.analysis`), the phase right-hand sides, event functions and monitors as C
 (:mod:`~derive.contact.kernel`, ``templates/contact/``), the event-driven integration of the
-phases slide, roll and flight (:mod:`~derive.contact.phases`), the validated scene
+phases slide, roll and flight (:mod:`~derive.contact.phases`; a second sphere, the tippe top's
+stem, switched to at a located event), the frictionless plane reduced by its symmetries
+(:mod:`~derive.contact.reduced`: p_α and p_γ held as parameters), the validated scene
 (:mod:`~derive.contact.scene`) and the result (:mod:`~derive.contact.simulate`).
 
 May import: :mod:`derive.runtime` (compile and load), :mod:`derive.codegen` (the Jinja2

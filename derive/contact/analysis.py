@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 import json
+import math
 
 import sympy as sp
 
@@ -29,6 +30,8 @@ from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamm
 from derive.symbolic.rotations import alpha, alpha_d, beta, beta_d, gamma_d
 
 SPIN, N0, THETA0, RATIO = sp.symbols("omega3 n0 theta0 alpha", real=True)
+#: The stem sphere's radius r₂ and the offset s₂ of its centre along ê₃.
+STEM_RADIUS, STEM_OFFSET = sp.symbols("r2 s2", real=True)
 
 
 def reduced_potential(shape: str) -> sp.Expr:
@@ -86,6 +89,14 @@ def final_spin() -> sp.Expr:
     return sp.simplify(sp.solve(sp.Eq(start, end), SPIN)[0].subs(OFFSET, RATIO * RADIUS))
 
 
+def stem_tilt() -> sp.Expr:
+    """cos θ at which a second sphere (radius r₂ centred at s₂ ê₃) is as low as the first: the
+    lowest points' heights above the centre of mass, s cos θ − r and s₂ cos θ − r₂, equal at
+    cos θ = (r₂ − r)/(s₂ − s); past it (the stem farther out, s₂ > s) the stem is the lower."""
+    c = sp.Symbol("c", real=True)
+    return sp.solve(sp.Eq(OFFSET * c - RADIUS, STEM_OFFSET * c - STEM_RADIUS), c)[0]
+
+
 def analyze(sc: ContactScene) -> dict:
     """The analysis of a contact scene, as the JSON of ``derive analyze``.
 
@@ -102,7 +113,8 @@ def analyze(sc: ContactScene) -> dict:
         (Ė = F_t·u_t); ``equilibria`` (the sleeping top: I₃²ω₃² + 4 I₁ M g s > 0, stable with
         the scene's numbers on a frictionless plane, else null); for a tippe top (sphere, s > 0)
         ``inversion``: the interval 1 − α < I₁/I₃ < 1 + α, whether the scene is in it, and the
-        final spin n₀(α − cos θ₀)/(1 + α) with the scene's numbers.
+        final spin n₀(α − cos θ₀)/(1 + α) with the scene's numbers; with a ``stem``, ``stem``:
+        cos θ past which the stem is the lower sphere, and that tilt with the scene's numbers.
     """
     c, law = contact(sc.shape), LAWS[sc.law]
     ints = expressions(c)
@@ -128,6 +140,12 @@ def analyze(sc: ContactScene) -> dict:
                             "inverts": bool(lo.subs(RATIO, a) < sc.I1 / sc.I3 < hi.subs(RATIO, a)),
                             "final_spin_expression": str(spin),
                             "final_spin": float(spin.subs({RATIO: a, N0: n0, THETA0: sc.angles[1]}))}
+    if sc.stem is not None:
+        cos_s = stem_tilt()
+        v = float(cos_s.subs({RADIUS: sc.radius, OFFSET: sc.offset, STEM_RADIUS: sc.stem[0],
+                              STEM_OFFSET: sc.stem[1]})) if sc.stem[1] != sc.offset else math.nan
+        out["stem"] = {"condition": f"cos(theta) < {cos_s}" if sc.stem[1] > sc.offset else f"cos(theta) > {cos_s}",
+                       "tilt": math.acos(v) if -1 <= v <= 1 else None}
     return out
 
 
@@ -147,4 +165,10 @@ def render(sc: ContactScene, fmt: str = "markdown") -> str:
         inv = res["inversion"]
         lines += ["", "## Tippe top", "", f"Inverts when `{inv['condition']}`: {inv['inverts']}",
                   f"Final spin `{inv['final_spin_expression']}` = {inv['final_spin']:.6g} rad/s"]
+    if "stem" in res:
+        st = res["stem"]
+        tilt = "never" if st["tilt"] is None else f"θ = {st['tilt']:.6g} rad"
+        lines += ["", "## Stem", "", f"The stem is the lower sphere when `{st['condition']}` (from {tilt}); "
+                  "a top that turns over onto it spins there at J/(I3 (s2 + r2)), J the stem's Jellett "
+                  "integral as the switch leaves it (the final spin above is a top's without a stem)."]
     return "\n".join(lines) + "\n"

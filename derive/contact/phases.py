@@ -28,6 +28,12 @@ change is located (Illinois in C, Brent's method in Python). The rules:
   velocities at once: a normal impulse P ẑ with restitution e (u_n⁺ = −e u_n⁻) on a frictionless
   or sliding contact, the whole impulse that stops the contact point (u⁺ = 0) for rolling;
   then the contact phase is chosen as at the start.
+* ball ↔ stem (event ``touch``, a body with a second sphere, the tippe top's stem): the other
+  sphere's gap z + s₂ n₃ − r₂ ≤ 0, in any phase. The spheres change roles (the kernel's r, s
+  become the other sphere's: both are spheres under the same law), the new contact takes the
+  impact above, and the contact phase is chosen as at the start; the sphere that touched
+  before leaves the plane with no impulse of its own (a contact on both spheres at once is not
+  modelled: the run would switch back at once, and ``max_switches`` ends it).
 
 A run records every switch (time, from, to, event) and refuses more than ``max_switches``.
 """
@@ -45,7 +51,7 @@ from derive.errors import IntegrationError
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
 #: The event codes of the C phase loop (``event_value`` in the template).
-EVENT_CODES = {"landing": 0, "lift-off": 1, "slip": 2, "stick": 3}
+EVENT_CODES = {"landing": 0, "lift-off": 1, "slip": 2, "stick": 3, "touch": 4}
 _FAILURES = {2: "the step budget is spent", 3: "the step size fell below the spacing of doubles",
              4: "the contact is singular or the state not finite"}
 SLIDE, ROLL, FLIGHT = PHASES["slide"], PHASES["roll"], PHASES["flight"]
@@ -73,17 +79,21 @@ class Run:
     phase: np.ndarray
     direction: np.ndarray
     switches: list[Switch] = field(default_factory=list)
+    #: Which sphere touches at each sample (0 the first, 1 the stem); None without a stem.
+    sphere: np.ndarray | None = None
     nfev: int = 0
     nstep: int = 0
 
 
 def quaternion_matrix(q: np.ndarray) -> np.ndarray:
-    """R(q), body → inertial, for a quaternion (normalised here)."""
-    q0, q1, q2, q3 = q / np.linalg.norm(q)
-    return np.array([
-        [1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2)],
-        [2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3), 2 * (q2 * q3 - q0 * q1)],
-        [2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), 1 - 2 * (q1 * q1 + q2 * q2)]])
+    """R(q), body → inertial, for a quaternion (normalised here), or (n, 3, 3) for n of them."""
+    q = np.asarray(q, dtype=float)
+    q0, q1, q2, q3 = np.moveaxis(q / np.linalg.norm(q, axis=-1, keepdims=True), -1, 0)
+    R = np.stack([
+        1 - 2 * (q2 * q2 + q3 * q3), 2 * (q1 * q2 - q0 * q3), 2 * (q1 * q3 + q0 * q2),
+        2 * (q1 * q2 + q0 * q3), 1 - 2 * (q1 * q1 + q3 * q3), 2 * (q2 * q3 - q0 * q1),
+        2 * (q1 * q3 - q0 * q2), 2 * (q2 * q3 + q0 * q1), 1 - 2 * (q1 * q1 + q2 * q2)], axis=-1)
+    return R.reshape(q.shape[:-1] + (3, 3))
 
 
 class Phases:
@@ -91,12 +101,31 @@ class Phases:
 
     def __init__(self, k: Kernel, law: Law, p: np.ndarray, restitution: float = 0.0,
                  rtol: float = 1e-10, atol: float = 1e-12, max_steps: int = 1_000_000,
-                 max_switches: int = 10_000, compiled: bool = True):
-        self.k, self.law, self.p = k, law, np.ascontiguousarray(p, dtype=float)
+                 max_switches: int = 10_000, compiled: bool = True, stem=None):
+        self.k, self.law = k, law
+        #: (radius, offset) of each sphere the body may touch with; the kernel's p[5:7] is the
+        #: touching one's, p[9:11] the other's (read by the ``touch`` event)
+        self.spheres = [(float(p[5]), float(p[6]))] + ([tuple(map(float, stem))] if stem else [])
+        self.base = np.array(p[:9], dtype=float)
+        self.active = 0
+        self.p = self.params(0)
         self.e, self.rtol, self.atol = restitution, rtol, atol
         self.max_steps, self.max_switches = max_steps, max_switches
         self.mu = p[7]
         self.compiled = compiled
+
+    def params(self, i: int) -> np.ndarray:
+        """The kernel's parameters with sphere ``i`` touching (the other's after them)."""
+        p = self.base.copy()
+        p[5:7] = self.spheres[i]
+        if len(self.spheres) > 1:
+            p = np.concatenate([p, self.spheres[1 - i]])
+        return np.ascontiguousarray(p)
+
+    def lowest(self, y: np.ndarray) -> int:
+        """The sphere whose lowest point is lower (the one the body stands on)."""
+        n3 = quaternion_matrix(y[:4])[2, 2]
+        return int(np.argmin([s * n3 - r for r, s in self.spheres]))
 
     # ---- what the kernel says at a state
     def out(self, phase, y, d):
@@ -109,12 +138,13 @@ class Phases:
 
     # ---- events: name -> g(phase, y, d, ref); an event fires when g goes from ≥ 0 to < 0
     def events(self, phase: int) -> list[str]:
+        touch = ["touch"] if len(self.spheres) > 1 else []
         if phase == FLIGHT:
-            return ["landing"]
+            return ["landing"] + touch
         names = ["lift-off"]
         if self.law.switches:
             names.append("stick" if phase == SLIDE else "slip")
-        return names
+        return names + touch
 
     def g(self, name, phase, y, d, ref):
         o = self.out(phase, y, d)
@@ -124,6 +154,9 @@ class Phases:
             return o[_O["N"]]
         if name == "slip":
             return self.mu * o[_O["N"]] - np.linalg.norm(o[_O["ft_x"]:_O["ft_z"] + 1])
+        if name == "touch":
+            r, s = self.spheres[1 - self.active]
+            return o[_O["z"]] + s * quaternion_matrix(y[:4])[2, 2] - r
         return float(o[_O["slip_x"]:_O["slip_z"] + 1] @ ref) + o[_O["slip_floor"]]  # stick
 
     def stick_reference(self, phase, y, d) -> np.ndarray:
@@ -242,7 +275,7 @@ class Phases:
         while nxt < len(t_out) and t_out[nxt] <= 0.0:
             ys[nxt], phases[nxt], dirs[nxt] = y, phase, d
             nxt += 1
-        run = Run(t_out, ys, phases, dirs)
+        run = Run(t_out, ys, phases, dirs, sphere=np.full(len(t_out), self.active))
         t = 0.0
         while t < t_end:
             step = self._phase_c if self.compiled else self._phase
@@ -256,7 +289,11 @@ class Phases:
             if event == "lift-off":  # the height and its rate the contact set become states
                 y = self.touching(y, phase, d)
                 phase = FLIGHT
-            elif event == "landing":
+            elif event in ("landing", "touch"):
+                if event == "touch":  # the other sphere meets the plane: it becomes the contact
+                    self.active = 1 - self.active
+                    self.p = self.params(self.active)
+                    event = "stem" if self.active else "ball"
                 y = self.impact(y)
                 phase, d = self.contact_phase(y, d)
                 if phase != FLIGHT and self.out(phase, y, d)[_O["N"]] < 0:
@@ -277,6 +314,8 @@ class Phases:
         return run
 
     def start(self, y: np.ndarray, d: np.ndarray) -> tuple[int, np.ndarray]:
+        self.active = self.lowest(y)
+        self.p = self.params(self.active)
         phase, d = self.contact_phase(y, d)
         if self.out(phase, y, d)[_O["N"]] < 0:
             return FLIGHT, d
@@ -324,7 +363,7 @@ class Phases:
             while nxt < len(run.t) and run.t[nxt] <= stop:
                 ys = dense(run.t[nxt])
                 run.y[nxt] = ys if phase == FLIGHT else self.touching(ys, phase, d)
-                run.phase[nxt], run.direction[nxt] = phase, d
+                run.phase[nxt], run.direction[nxt], run.sphere[nxt] = phase, d, self.active
                 nxt += 1
             if hit:
                 y_hit = dense(hit[0])
@@ -351,7 +390,7 @@ class Phases:
         run.nstep += int(counts[0])
         run.nfev += int(counts[1])
         rows = slice(nxt, its)
-        run.phase[rows], run.direction[rows] = phase, d
+        run.phase[rows], run.direction[rows], run.sphere[rows] = phase, d, self.active
         if phase != FLIGHT and its > nxt:
             o = self.k.outputs_many(run.phase[rows], run.y[rows], self.p, run.direction[rows])
             run.y[rows, 9:13] = o[:, _O["z"]:_O["vz"] + 1]

@@ -2,7 +2,8 @@
 
 The format (see ``docs/contact.md``): ``[body]`` I1, I2 (default I1), I3 about the centre of
 mass; ``[gravity]`` M, g (no ``l``/``com``: the contact places the centre of mass);
-``[contact]`` shape, radius, offset, friction, mu, regularization, restitution;
+``[contact]`` shape, radius, offset, friction, mu, regularization, restitution, and ``stem``
+(a second sphere on axis 3, ``{radius, offset}``, with a sphere: the tippe top's stem);
 ``[initial]`` the z-y-z angles, their rates or ``omega``, and ``vx``, ``vy`` (not with
 ``rolling``); ``[simulate]`` t_end, samples, method, rtol, atol, max_steps. Every problem is a
 :class:`~derive.errors.SceneError` ``<file>: <key>: <what>``.
@@ -29,7 +30,7 @@ METHODS = ("auto", COMPILED, METHOD)
 _KEYS = {
     "body": ("I1", "I2", "I3"),
     GRAVITY: ("M", "g"),
-    "contact": ("shape", "radius", "offset", "friction", "mu", "regularization", "restitution"),
+    "contact": ("shape", "radius", "offset", "friction", "mu", "regularization", "restitution", "stem"),
     "initial": ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot", "omega", "vx", "vy"),
     "simulate": ("t_end", "samples", "method", "rtol", "atol", "max_steps"),
 }
@@ -72,6 +73,8 @@ class ContactScene:
     rtol: float
     atol: float
     max_steps: int
+    #: The second sphere (radius, offset along ê₃ from the centre of mass), or None.
+    stem: tuple[float, float] | None = None
 
     @property
     def law(self) -> str:
@@ -180,6 +183,7 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     reg = _number(source, c, "contact", "regularization", None, pos, "a positive number (m/s)")
     if reg is not None and friction != "coulomb":
         raise _fail(source, "contact.regularization", "only with friction = 'coulomb'")
+    stem = _stem(source, c, shape)
     e = _number(source, c, "contact", "restitution", 0.0, lambda x: 0 <= x <= 1, "a number in [0, 1]")
     angles = tuple(_number(source, ini, "initial", k, 0.0) for k in ("alpha", "beta", "gamma"))
     has_rates = any(k in ini for k in ("alpha_dot", "beta_dot", "gamma_dot"))
@@ -218,4 +222,17 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
         raise _fail(source, "title", "must be a string")
     return ContactScene(source, title, I1, I2, I3, M, g, shape, radius, offset, friction,
                         0.0 if mu is None else mu, reg, e, angles, rates, omega, vx, vy,
-                        t_end, samples, method, rtol, atol, max_steps)
+                        t_end, samples, method, rtol, atol, max_steps, stem=stem)
+
+
+def _stem(source, c, shape):
+    """``[contact] stem = {radius, offset}``: a second sphere the body may touch the plane with."""
+    if "stem" not in c:
+        return None
+    st = c["stem"]
+    if shape != "sphere":
+        raise _fail(source, "contact.stem", "only with shape = 'sphere'")
+    if not isinstance(st, dict) or set(st) - {"radius", "offset"} or "radius" not in st:
+        raise _fail(source, "contact.stem", "must be a table {radius = ..., offset = ...}")
+    r = _number(source, st, "contact.stem", "radius", None, lambda x: x > 0, "a positive number")
+    return r, _number(source, st, "contact.stem", "offset", 0.0)

@@ -15,6 +15,7 @@ from derive.contact.equations import contact
 from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
+from derive.contact import reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
 from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, read
 
@@ -55,7 +56,11 @@ def initial_state(sc: ContactScene) -> np.ndarray:
     w = np.array(sc.omega) if sc.omega is not None else body_omega(sc.angles[1], sc.angles[2], sc.rates)
     y = np.concatenate([q, w, np.zeros(6)])
     k = kernel(sc.shape, sc.law)
-    a = k.outputs(2, y, params(sc), np.zeros(3))[_O["a_x"]:_O["a_z"] + 1]
+    p = params(sc)
+    n3 = quaternion_matrix(q)[2, 2]
+    if sc.stem is not None and sc.stem[1] * n3 - sc.stem[0] < sc.offset * n3 - sc.radius:
+        p[5:7] = sc.stem  # the stem is the lower sphere: the body stands on it
+    a = k.outputs(2, y, p, np.zeros(3))[_O["a_x"]:_O["a_z"] + 1]
     y[9] = -a[2]
     wi = quaternion_matrix(q) @ w
     v = -np.cross(wi, a)
@@ -114,10 +119,15 @@ class ContactResult:
         return out
 
 
-def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
-    """The output arrays from a run's sampled states."""
+def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
+    """The output arrays from a run's sampled states (``params_of(i)``: the kernel's parameters
+    with sphere i touching, for a body with a stem)."""
     outs = k.outputs_many(run.phase, run.y, p, run.direction)
-    R = np.array([quaternion_matrix(y[:4]) for y in run.y])
+    if run.sphere is not None and params_of is not None and run.sphere.any():
+        on = run.sphere == 1
+        outs[on] = k.outputs_many(run.phase[on], run.y[on], params_of(1), run.direction[on])
+        outs[~on] = k.outputs_many(run.phase[~on], run.y[~on], params_of(0), run.direction[~on])
+    R = quaternion_matrix(run.y[:, :4])
     beta = np.arccos(np.clip(R[:, 2, 2], -1.0, 1.0))
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
     gamma = np.unwrap(np.arctan2(R[:, 2, 1], -R[:, 2, 0]))
@@ -128,21 +138,34 @@ def result(sc: ContactScene, run: Run, k, p) -> ContactResult:
         axis=R[:, :, 2].copy(), energy=outs[:, _O["energy"]], com=com.copy(),
         contact=com + outs[:, _O["a_x"]:_O["a_z"] + 1], normal_force=outs[:, _O["N"]],
         slip_speed=np.linalg.norm(outs[:, _O["slip_x"]:_O["slip_z"] + 1], axis=1),
-        phase=np.array([PHASE_NAMES[int(x)] for x in run.phase]), gap=outs[:, _O["gap"]],
+        phase=np.array([PHASE_NAMES[i] for i in range(len(PHASE_NAMES))])[run.phase], gap=outs[:, _O["gap"]],
         p_alpha=outs[:, _O["p_alpha"]], p_gamma=outs[:, _O["p_gamma"]],
         integrals={n: outs[:, _O[n]] for n in names}, switches=run.switches, nfev=run.nfev,
         model=f"contact_{sc.shape}_{sc.law}", method=METHOD if sc.method == METHOD else COMPILED)
 
 
 def simulate(sc: ContactScene) -> ContactResult:
-    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases)."""
+    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases). A
+    frictionless axisymmetric body runs in the reduced formulation of :mod:`derive.contact.reduced`
+    (p_α and p_γ held as parameters) while it serves, else in the full one."""
     k = kernel(sc.shape, sc.law)
     p = params(sc)
+    t_out = np.linspace(0.0, sc.t_end, sc.samples)
+    if reduced.eligible(sc):
+        y0 = initial_state(sc)
+        got = reduced.run(sc, y0, t_out, p, k)
+        if got is not None:
+            ys, nfev, nstep = got
+            n = len(t_out)
+            run = Run(t_out, ys, np.zeros(n, dtype=int), np.zeros((n, 3)), nfev=nfev, nstep=nstep)
+            res = result(sc, run, k, p)
+            res.formulation = reduced.FORMULATION
+            return res
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
-                max_steps=sc.max_steps, compiled=sc.method != METHOD)
+                max_steps=sc.max_steps, compiled=sc.method != METHOD, stem=sc.stem)
     k.nfev = 0
-    run = ph.run(initial_state(sc), np.linspace(0.0, sc.t_end, sc.samples))
-    return result(sc, run, k, p)
+    run = ph.run(initial_state(sc), t_out)
+    return result(sc, run, k, p, ph.params)
 
 
 def run_scene(data: dict, source: str = "<dict>", **overrides) -> ContactResult:

@@ -250,6 +250,7 @@ long contact_disc_none_outputs(long n, const int *phase, const double *y, const 
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_disc_none_eval
 #define CONTACT_ADVANCE contact_disc_none_advance

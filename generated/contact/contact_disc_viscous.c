@@ -272,6 +272,7 @@ long contact_disc_viscous_outputs(long n, const int *phase, const double *y, con
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_disc_viscous_eval
 #define CONTACT_ADVANCE contact_disc_viscous_advance

@@ -228,6 +228,7 @@ long contact_point_coulomb_outputs(long n, const int *phase, const double *y, co
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_point_coulomb_eval
 #define CONTACT_ADVANCE contact_point_coulomb_advance

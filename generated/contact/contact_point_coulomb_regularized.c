@@ -190,6 +190,7 @@ long contact_point_coulomb_regularized_outputs(long n, const int *phase, const d
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_point_coulomb_regularized_eval
 #define CONTACT_ADVANCE contact_point_coulomb_regularized_advance

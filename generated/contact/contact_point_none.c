@@ -182,6 +182,7 @@ long contact_point_none_outputs(long n, const int *phase, const double *y, const
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_point_none_eval
 #define CONTACT_ADVANCE contact_point_none_advance

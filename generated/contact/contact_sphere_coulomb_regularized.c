@@ -198,6 +198,7 @@ long contact_sphere_coulomb_regularized_outputs(long n, const int *phase, const 
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_sphere_coulomb_regularized_eval
 #define CONTACT_ADVANCE contact_sphere_coulomb_regularized_advance

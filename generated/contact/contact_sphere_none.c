@@ -187,6 +187,7 @@ long contact_sphere_none_outputs(long n, const int *phase, const double *y, cons
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_sphere_none_eval
 #define CONTACT_ADVANCE contact_sphere_none_advance

@@ -197,6 +197,7 @@ long contact_sphere_viscous_outputs(long n, const int *phase, const double *y, c
     return 0;
 }
 #define NY 13
+#define NP 9
 #define NOUT 23
 #define CONTACT_EVAL contact_sphere_viscous_eval
 #define CONTACT_ADVANCE contact_sphere_viscous_advance
