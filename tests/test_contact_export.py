@@ -82,7 +82,12 @@ def test_contact_example_prints_what_simulate_gives(tmp_path, capsys, name, t_en
     npz = tmp_path / "ref.npz"
     rc, out, err = _cli(capsys, "simulate", path, "-o", npz, "--json")
     assert rc == 0, err
-    assert got["nfev"] == json.loads(out)["nfev"]
+    # simulate runs a frictionless axisymmetric top in its reduced formulation (p_alpha, p_gamma
+    # as parameters), the export the full one: the two agree to the integration's error
+    same_path = json.loads(out)["formulation"] != "contact-reduced"
+    rtol = 1e-12 if same_path else 1e-8
+    if same_path:
+        assert got["nfev"] == json.loads(out)["nfev"]
     ref = np.load(npz)
     assert got["t_end"] == float(ref["t"][-1])
     assert got["switches"] == len(ref["switch_t"])
@@ -96,7 +101,7 @@ def test_contact_example_prints_what_simulate_gives(tmp_path, capsys, name, t_en
         want = np.atleast_1d(ref[key][-1])
         have = np.atleast_1d(np.asarray(value, dtype=float))
         assert have.shape == want.shape, key
-        assert np.all(np.abs(have - want) <= 1e-12 * np.maximum(1.0, np.abs(want))), key
+        assert np.all(np.abs(have - want) <= rtol * np.maximum(1.0, np.abs(want))), key
         compared += 1
     assert compared >= 13
 

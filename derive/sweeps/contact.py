@@ -31,7 +31,8 @@ from derive.errors import IntegrationError, SceneError
 from derive.sim.scene import read_toml
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
-from derive.sweeps.points import _fail, _real
+from derive.sim.validator import _real
+from derive.sweeps.points import _fail
 from derive.sweeps.result import SweepResult
 from derive.sweeps.spec import _SPEC_KEYS, _flatten, _grid_values, _measures, _scene_path
 
