@@ -19,7 +19,6 @@ for these sweeps.
 from __future__ import annotations
 
 import copy
-from collections.abc import Mapping
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -31,10 +30,9 @@ from derive.errors import IntegrationError, SceneError
 from derive.sim.scene import read_toml
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
-from derive.sim.validator import _real
 from derive.sweeps.points import _fail
 from derive.sweeps.result import SweepResult
-from derive.sweeps.spec import _SPEC_KEYS, _flatten, _grid_values, _measures, _scene_path
+from derive.sweeps.spec import _SPEC_KEYS, _measures, _scene_path, grid_or_random
 
 
 def _set(data: dict, key: str, value: float) -> dict:
@@ -69,49 +67,9 @@ def _check_key(source: str, where: str, key: str, raw: dict) -> None:
 
 def _points(source: str, data: dict, raw: dict):
     """(keys, grid shape or None, {key: (N,) column}), every distinct value checked."""
-    if ("vary" in data) == ("random" in data):
-        _fail(source, "vary", "give [vary] (a grid) or [random] (random points), one of them")
-    if "vary" in data:
-        table = data["vary"]
-        if not isinstance(table, Mapping) or not table:
-            _fail(source, "vary", "must be a table of dotted scene keys")
-        leaves = _flatten(table, "", lambda v: bool({"from", "to", "num", "values"} & set(v)),
-                          source, "vary")
-        distinct = {}
-        for key, rule in leaves.items():
-            _check_key(source, f"vary.{key}", key, raw)
-            distinct[key] = _grid_values(source, f"vary.{key}", rule)
-        keys = tuple(distinct)
-        shape = tuple(len(v) for v in distinct.values())
-        grids = np.meshgrid(*distinct.values(), indexing="ij")
-        cols = {k: g.ravel(order="C").copy() for k, g in zip(keys, grids)}
-        where = "vary"
-    else:
-        table = data["random"]
-        if not isinstance(table, Mapping):
-            _fail(source, "random", "must be a table")
-        n, seed = table.get("n"), table.get("seed")
-        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 10**6:
-            _fail(source, "random.n", f"must be an integer from 1 to 1e6, got {n!r}")
-        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-            _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
-        rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
-        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)), source, "random")
-        if not leaves:
-            _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
-        rng = np.random.default_rng(seed)
-        cols, distinct = {}, {}
-        for key, rule in leaves.items():
-            _check_key(source, f"random.{key}", key, raw)
-            if not isinstance(rule, Mapping) or set(rule) != {"low", "high"}:
-                _fail(source, f"random.{key}", "must be { low = a, high = b }")
-            lo, hi = _real(rule["low"]), _real(rule["high"])
-            if lo is None or hi is None or not lo <= hi:
-                _fail(source, f"random.{key}", f"low and high must be finite numbers with low <= high, "
-                                               f"got {dict(rule)}")
-            cols[key] = rng.uniform(lo, hi, n)
-            distinct[key] = np.array([lo, hi])
-        keys, shape, where = tuple(cols), None, "random"
+    keys, shape, cols, distinct = grid_or_random(
+        source, data, lambda where, key: _check_key(source, where, key, raw), n_max=10**6)
+    where = "vary" if shape is not None else "random"
     for key, values in distinct.items():
         for v in np.unique(values):
             try:

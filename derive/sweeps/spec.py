@@ -180,6 +180,17 @@ def load(spec) -> Spec:
 
 def _points(source, data, raw, base):
     variable = _variable_keys()
+    keys, shape, cols, distinct = grid_or_random(
+        source, data, lambda where, key: _check_key(source, where, key, variable, raw))
+    _check_values(source, "vary" if shape is not None else "random", raw, distinct)
+    return keys, shape, cols
+
+
+def grid_or_random(source, data, check_key, n_max: int = 10**9):
+    """The points of a sweep file's ``[vary]`` (a grid, C order over its keys as written) or
+    ``[random]`` (n uniform draws from a seeded generator): (keys, grid shape or None,
+    {key: (N,) column}, {key: the distinct values, or a random key's bounds}).
+    ``check_key(where, key)`` refuses a key the scene cannot vary."""
     if ("vary" in data) == ("random" in data):
         _fail(source, "vary", "give [vary] (a grid) or [random] (random points), one of them")
     if "vary" in data:
@@ -190,41 +201,38 @@ def _points(source, data, raw, base):
                           source, "vary")
         columns = {}
         for key, rule in leaves.items():
-            _check_key(source, f"vary.{key}", key, variable, raw)
+            check_key(f"vary.{key}", key)
             columns[key] = _grid_values(source, f"vary.{key}", rule)
         keys = tuple(columns)
         shape = tuple(len(v) for v in columns.values())
         grids = np.meshgrid(*columns.values(), indexing="ij")
         cols = {k: g.ravel(order="C").copy() for k, g in zip(keys, grids)}
-        distinct = columns
-    else:
-        table = data["random"]
-        if not isinstance(table, Mapping):
-            _fail(source, "random", "must be a table")
-        n, seed = table.get("n"), table.get("seed")
-        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= 10**9:
-            _fail(source, "random.n", f"must be an integer from 1 to 1e9, got {n!r}")
-        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-            _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
-        rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
-        leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)), source, "random")
-        if not leaves:
-            _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
-        rng = np.random.default_rng(seed)
-        cols, distinct = {}, {}
-        for key, rule in leaves.items():
-            where = f"random.{key}"
-            _check_key(source, where, key, variable, raw)
-            if not isinstance(rule, Mapping) or set(rule) != {"low", "high"}:
-                _fail(source, where, "must be { low = a, high = b }")
-            lo, hi = _real(rule["low"]), _real(rule["high"])
-            if lo is None or hi is None or not lo <= hi:
-                _fail(source, where, f"low and high must be finite numbers with low <= high, got {dict(rule)}")
-            cols[key] = rng.uniform(lo, hi, n)
-            distinct[key] = np.array([lo, hi])
-        keys, shape = tuple(cols), None
-    _check_values(source, "vary" if shape is not None else "random", raw, distinct)
-    return keys, shape, cols
+        return keys, shape, cols, columns
+    table = data["random"]
+    if not isinstance(table, Mapping):
+        _fail(source, "random", "must be a table")
+    n, seed = table.get("n"), table.get("seed")
+    if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= n_max:
+        _fail(source, "random.n", f"must be an integer from 1 to {n_max:.0e}, got {n!r}".replace("e+0", "e"))
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        _fail(source, "random.seed", f"must be a non-negative integer, got {seed!r}")
+    rest = {k: v for k, v in table.items() if k not in ("n", "seed")}
+    leaves = _flatten(rest, "", lambda v: bool({"low", "high"} & set(v)), source, "random")
+    if not leaves:
+        _fail(source, "random", "names no scene key to vary ({ low = a, high = b } per key)")
+    rng = np.random.default_rng(seed)
+    cols, distinct = {}, {}
+    for key, rule in leaves.items():
+        where = f"random.{key}"
+        check_key(where, key)
+        if not isinstance(rule, Mapping) or set(rule) != {"low", "high"}:
+            _fail(source, where, "must be { low = a, high = b }")
+        lo, hi = _real(rule["low"]), _real(rule["high"])
+        if lo is None or hi is None or not lo <= hi:
+            _fail(source, where, f"low and high must be finite numbers with low <= high, got {dict(rule)}")
+        cols[key] = rng.uniform(lo, hi, n)
+        distinct[key] = np.array([lo, hi])
+    return tuple(cols), None, cols, distinct
 
 
 def _check_key(source, where, key, variable, raw):
