@@ -51,6 +51,14 @@ def _latex_edits(piece: str):
             seen.add(edited)
             yield edited, what
 
+def _free_of(parsed) -> set:
+    """The symbols of a parsed statement's members (none for a statement not read)."""
+    out = set()
+    for m in getattr(parsed, "members", ()):
+        out |= set(getattr(m.value, "free_symbols", ()))
+    return out
+
+
 def _second_readings(piece: str):
     """(name, value, description) of the names in a statement that have a second reading."""
     if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
@@ -86,6 +94,8 @@ class Rereading:
                     c.why += f" (reading {what})"
                 self._keep(before, second, ctx)
                 return
+        if self._running_names_off(saved, line, piece, dup, pieces, first):
+            return
         learned = self._learned(piece)
         if learned:
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
@@ -95,6 +105,34 @@ class Rereading:
                         c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
+
+    def _running_names_off(self, saved, line, piece, dup, pieces, first) -> bool:
+        """A statement flagged only through names the running text defined (a table's
+        ``$\\dot\\psi_3 = \\psi$``): the slip, if any, is in that sentence, not in the display, so
+        the display's flagged members are unchecked, saying which definition they rest on."""
+        used = {s: n for s, n in saved.running.items() if s in saved.defs and any(
+            s in _free_of(c) for c in [self._parsed_or_none(piece)])}
+        if not used:
+            return False
+        bare = _copied(saved)
+        for s in used:
+            del bare.defs[s]
+        second, _ = self._sandbox(bare, line, piece, dup, pieces)
+        if any(c.verdict in ("typo", "fails") for c in second):
+            return False
+        names = ", ".join(f"{self.tex(s)} = {self.tex(saved.defs[s])} (line {n})" for s, n in used.items())
+        for c in first:
+            if c.verdict in ("typo", "fails"):
+                c.why = (f"reading {names} as the running text defines it, it does not hold: {c.why}; "
+                         "unchecked, since the slip may be in that sentence rather than in this display")
+                c.verdict, c.correction = "unchecked", None
+        return True
+
+    def _parsed_or_none(self, piece):
+        try:
+            return lx.parse(piece, self.vocab)
+        except (lx.NotRead, lx.Words):
+            return None
 
     def _in_their_notation(self, saved, line, piece, pieces, claims):
         """The correction of a typo as the text would write it: the one edit of its own LaTeX (a
