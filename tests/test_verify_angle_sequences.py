@@ -154,3 +154,12 @@ def test_what_holds_on_the_texts_motion_and_lagranges_equation_hold_but_a_rate_i
     assert {c.verdict for c in got[15]} == {"holds"} and "in the motion the text describes" in got[15][-1].why
     assert {c.verdict for c in got[17]} == {"holds"} and "Lagrange's equation" in got[17][0].why
     assert "holds" not in {c.verdict for c in got[19]}
+
+
+def test_a_wrong_sign_in_a_matrix_is_corrected_in_the_texts_own_matrix():
+    row = (r"\begin{pmatrix} \omega_1 \\ \omega_2 \\ \omega_3 \end{pmatrix} = \begin{pmatrix} \sin \theta \sin \psi & \cos \psi & 0 \\ "
+           r"\sin \theta \cos \psi & \sin \psi & 0 \\ \cos \theta & 0 & 1 \end{pmatrix} \cdot "
+           r"\begin{pmatrix} \dot{\phi} \\ \dot{\theta} \\ \dot{\psi} \end{pmatrix}")
+    claims = by_line(ZXZ + f"$${row}$$\n")[7]
+    typo = [c for c in claims if c.verdict == "typo"]
+    assert typo and typo[0].correction == row.replace(r"& \sin \psi & 0", r"& - \sin \psi & 0")

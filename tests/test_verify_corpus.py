@@ -32,7 +32,6 @@ SHORT = {
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "found"): "a square dropped in the text's own variable",
     ("inertia-tensor-derivation-blog", "checked"): "integrals over the body and the text's matrix notation",
-    ("intermediate-axis-theorem-slab-blog", "checked"): "a slab's integrals; a moment written ≈ 0",
     ("intermediate-axis-theorem-slab-blog", "found"): "a slip read only through the axes the prose names (x, y, z); I ≈ 0 for ω ≈ const",
     ("murundb-euler-angles-321-rates", "checked"): "products of frame-labelled matrices defined after their use; the identity's columns 𝐈ᵢ",
     ("rigid-body-formula-notebook-landau-zxz", "checked"): "inertia tensors and stability exponents",

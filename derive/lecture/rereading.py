@@ -44,12 +44,37 @@ def _latex_edits(piece: str):
     for m in re.finditer(r"\\(sin|cos)\b", piece):
         other = "cos" if m.group(1) == "sin" else "sin"
         out.append((piece[:m.start()] + "\\" + other + piece[m.end():], "sin ↔ cos"))
+    out += list(_entry_sign_edits(piece))
     out += [(e, w) for e, w in vc.member_edits(piece) if w not in ("the sign of the whole side", "a factor 1/2", "a factor 2")
             or not e.lstrip().startswith(("-", "2 ", "\\frac{1}{2} "))]
     for edited, what in out:
         if edited not in seen:
             seen.add(edited)
             yield edited, what
+
+_MATRIX = re.compile(r"\\begin\{([pbBvV]?matrix|array)\}(\{[^{}]*\})?(.*?)\\end\{\1\}", re.S)
+
+
+def _entry_sign_edits(piece: str):
+    """The sign of one entry of a matrix the statement writes, flipped: (edited, what)."""
+    for m in _MATRIX.finditer(piece):
+        body, start = m.group(3), m.start(3)
+        rows = body.split("\\\\")
+        offset = start
+        for r, row in enumerate(rows):
+            cells = row.split("&")
+            at = offset
+            for c, cell in enumerate(cells):
+                text = cell.strip()
+                lead = at + len(cell) - len(cell.lstrip())
+                if text and text != "0":
+                    flipped = text[1:].lstrip() if text.startswith("-") else (
+                        "-" + text[1:].lstrip() if text.startswith("+") else "- " + text)
+                    edited = piece[:lead] + flipped + piece[lead + len(text):]
+                    yield edited, f"the sign of the entry in row {r + 1}, column {c + 1}"
+                at += len(cell) + 1
+            offset += len(row) + 2
+
 
 def _free_of(parsed) -> set:
     """The symbols of a parsed statement's members (none for a statement not read)."""
@@ -140,7 +165,9 @@ class Rereading:
         statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
         does it (the correction then is the derivation's form)."""
         found = " ".join(c.why for c in claims if c.verdict == "typo")
-        ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found)   # the kind found first
+        entry = "(entry" in found         # a matrix's entry: its entries' signs first
+        ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found and not (
+            entry and e[1].startswith("the sign of the entry")))              # the kind found first
         for n, (edited, what) in enumerate(ordered):
             if n >= 60:
                 return
