@@ -52,7 +52,7 @@ from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, su
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
-from derive.lecture.statements import _strip_envs, statements
+from derive.lecture.statements import continues, statements
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
@@ -83,33 +83,6 @@ def _repeated_labels(pieces) -> dict:
     return out
 
 
-_MARKS = re.compile(r"\\(label|tag|eqref)\*?\s*\{[^{}]*\}|\\(notag|nonumber)\b")
-
-
-def _continues(before: str, after: str) -> bool:
-    """A display that starts with + or − continues the previous one's right side — unless the
-    previous one ended its sentence (a full stop) or the new one states a relation of its own
-    in its first row (``-\\dot{R} R^T = …``)."""
-    head = _strip_envs(after)
-    if not re.match(r"\s*(&\s*)?[+\-]", head):
-        return False
-    if _MARKS.sub(" ", _strip_envs(before)).rstrip().endswith("."):
-        return False
-    return not re.search(r"(?<![<>!\\])=|\\(le|ge|leq|geq|approx|equiv)\b", head.split("\\\\")[0])
-
-
-def _aliases(notes) -> tuple:
-    """Other names of the angles: the usual φ, θ, ψ when the text declares none; when it declares
-    them with a subscript (``\\psi_{\\beta\\alpha}``), their bare letters, which texts write once
-    the frames are clear (none if two angles share a letter)."""
-    if "angles" not in notes.declared:
-        return nt.DEFAULT_ANGLES["z-x-z"]
-    bases = tuple(a.split("_")[0] for a in notes.angles)
-    if all("_" in a for a in notes.angles) and len(set(bases)) == 3:
-        return bases
-    return ()
-
-
 def _name_tex(name: str) -> str:
     """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
     base, _, sub = name.partition("_")
@@ -123,7 +96,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
 
     def __init__(self, notes: nt.Notes):
         self.notes = notes
-        self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=_aliases(notes),
+        self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
@@ -186,7 +159,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
                 latex = item.latex
                 # displays that start with + or − continue the previous one's right side
                 while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
-                        and _continues(latex, items[k + 1].latex):
+                        and continues(latex, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
                 self._display(item, latex)
