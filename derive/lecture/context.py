@@ -39,11 +39,14 @@ class Context:
     forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
     orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
+    running: dict = field(default_factory=dict)       # the text's names defined in running text → line
+    motion: dict = field(default_factory=dict)        # a rate the text states for its motion → (value, line)
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
+        self.motion = {}
 
 
 class Reading:

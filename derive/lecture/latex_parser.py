@@ -11,9 +11,10 @@ import sympy as sp
 
 from derive.lecture.vocabulary import (
     DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
-    Quantity, Tok, Transposed, Unknown, Vocabulary, W,
+    Atom, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
-from derive.symbolic.rotations import RATES
+from derive.symbolic.lagrangian import I1, I2, I3
+from derive.symbolic.rotations import ANGLES, RATES
 
 
 @dataclass
@@ -108,7 +109,9 @@ class _Parser:
         while True:
             if self.at("cmd", "cdot") or self.at("op", "*"):
                 self.i += 1
-                value = _mul(value, self.factor(env))
+                right = self.factor(env)
+                dot = _dot(value, right)
+                value = dot if dot is not None else _mul(value, right)
             elif self.at("cmd", "times"):
                 self.fail("vector products (×) are not read")
             elif self.at("op", "/"):
@@ -200,6 +203,14 @@ class _Parser:
             # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
             if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
                 return value
+            trig = self._abbreviated_trig(tok, env) if isinstance(value, Generic) else None
+            if trig is not None:
+                return trig
+            if self.at("op", "(") and isinstance(value, Generic) and tok.value.bold:
+                kept = self.args
+                if self._argument_list():       # 𝐒(φ, θ): a matrix of the text's, with what it depends on
+                    self.args = kept
+                    return value
             if self.at("op", "(") and (value in W or value in WD or isinstance(value, Generic)):
                 at = self._at_a_time(tok, value)
                 if at is not None:
@@ -214,6 +225,10 @@ class _Parser:
             self.i += 1
             value = self.expr(env)
             self.take("op", "|")
+            plain_omega = isinstance(value, Generic) and (self.vocab.generic.get(value) or Atom("")).base == "omega" \
+                and not self.vocab.generic[value].sub and not self.vocab.generic[value].dots
+            if value is OMEGA_VEC or plain_omega:
+                return sp.sqrt(_dot(OMEGA_VEC, OMEGA_VEC))     # |𝛚|, |ω|: the angular velocity's magnitude
             return sp.Abs(value)
         if tok.kind == "begin":
             return self.matrix(env)
@@ -239,6 +254,29 @@ class _Parser:
                 return self.sum(env, tok)
             self.fail(f"'\\{name}' here")
         self.fail(f"unexpected {tok.value!r}")
+
+    def _abbreviated_trig(self, tok, env):
+        """``c(\\psi)``, ``s(\\theta)``, ``c_{\\psi}``, ``s_\\theta``: the cosine and sine of an angle
+        as engineering texts abbreviate them (only with one of the text's angles as argument)."""
+        a = tok.value
+        if a.base not in ("c", "s") or a.dots or a.bold or a.hat or a.tilde or a.primes or a.sup:
+            return None
+        f = sp.cos if a.base == "c" else sp.sin
+        if a.sub:
+            k = self.vocab.angle_index(a.sub)
+            return f(ANGLES[k]) if k is not None else None
+        if not self.at("op", "("):
+            return None
+        start = self.i
+        try:
+            arg = self.paren(env)
+        except NotRead:
+            self.i = start
+            return None
+        if arg in ANGLES:
+            return f(arg)
+        self.i = start
+        return None
 
     def _at_a_time(self, tok, value):
         """ω_y(0), u(t_1): a function of time at a time given by a number or a symbol other than
@@ -416,6 +454,15 @@ class _Parser:
 
 
 VECTORS = (LVEC, OMEGA_VEC, DLDT, DLDT_BODY)
+
+
+def _dot(a, b):
+    """𝛚·𝛚, 𝐋·𝐋, 𝛚·𝐋 of the body's vectors written as such: their dot product in body
+    components (𝛚 = ω̃, 𝐋 = (Iᵢ ω̃ᵢ)); None for anything else."""
+    comps = {OMEGA_VEC: W, LVEC: [m * w for m, w in zip((I1, I2, I3), W)]}
+    if isinstance(a, Quantity) and isinstance(b, Quantity) and a in comps and b in comps:
+        return sum((x * y for x, y in zip(comps[a], comps[b])), sp.S.Zero)
+    return None
 
 
 def _mul(a, b):

@@ -333,3 +333,15 @@ def read_notes(path, convention: str | None = None) -> Notes:
     if "\x00" in text:
         raise ValidationError(str(path), "file", "binary, not Markdown text")
     return parse_notes(text, str(path), convention)
+
+
+def angle_aliases(notes) -> tuple:
+    """Other names of the angles: the usual φ, θ, ψ when the text declares none; when it declares
+    them with a subscript (``\\psi_{\\beta\\alpha}``), their bare letters, which texts write once
+    the frames are clear (none if two angles share a letter)."""
+    if "angles" not in notes.declared:
+        return DEFAULT_ANGLES["z-x-z"]
+    bases = tuple(a.split("_")[0] for a in notes.angles)
+    if all("_" in a for a in notes.angles) and len(set(bases)) == 3:
+        return bases
+    return ()

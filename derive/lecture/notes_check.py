@@ -49,9 +49,10 @@ from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
+from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
-from derive.lecture.statements import _strip_envs, statements
+from derive.lecture.statements import continues, statements
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
@@ -90,13 +91,12 @@ def _name_tex(name: str) -> str:
 
 # ---- results ------------------------------------------------------------------------------------
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMotion):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
         self.notes = notes
-        self.vocab = lx.Vocabulary(angles=tuple(notes.angles),
-                                   aliases=() if "angles" in notes.declared else nt.DEFAULT_ANGLES["z-x-z"],
+        self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
@@ -108,6 +108,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
         self.pending_subs = None    # the settings of the display that wrote them
         self.flushed: list = []     # the verdicts of the group, until placed
         self._last_fix = None       # the corrected value the last single-edit search found
+        self.deferred: list = []    # (claim, line, statement, context) read again with later definitions
 
     # -- names for LaTeX output
     @functools.cached_property
@@ -158,13 +159,14 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
                 latex = item.latex
                 # displays that start with + or − continue the previous one's right side
                 while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
-                        and re.match(r"\s*(&\s*)?[+\-]", _strip_envs(items[k + 1].latex)):
+                        and continues(latex, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
                 self._display(item, latex)
             k += 1
         self._flush()
         self._place_flushed(len(self.claims))
+        self._read_later_definitions()
         return self.claims
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
@@ -178,6 +180,9 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
             return
         seen = []
         self._open_display(inline=item.kind == "inline")
+        if self._coordinate_turn(item.line, pieces):
+            self._close_display()
+            return
         relabelled = _repeated_labels(pieces)
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
@@ -195,7 +200,10 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
                 # a formula the checker cannot follow is reported as such, never given a verdict
                 self._add(item.line, piece, "unknown", "unchecked",
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
+                if not isinstance(err, lx.NotRead):
+                    self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
             self._place_flushed(before)
+            self._note_motion(item.line, piece)
         self._close_display()
 
     def _place_flushed(self, at):
@@ -432,7 +440,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
                 if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
                     self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
                 return
-        oriented = None if small is not None else self._oriented(line, val, targets, seed)
+        oriented = None if small is not None else self._oriented(line, val, targets, seed) or \
+            self._on_the_motion(val, targets, seed)
         if oriented:
             self._add(line, piece, kind, "holds", oriented)
             return

@@ -44,12 +44,45 @@ def _latex_edits(piece: str):
     for m in re.finditer(r"\\(sin|cos)\b", piece):
         other = "cos" if m.group(1) == "sin" else "sin"
         out.append((piece[:m.start()] + "\\" + other + piece[m.end():], "sin ↔ cos"))
+    out += list(_entry_sign_edits(piece))
     out += [(e, w) for e, w in vc.member_edits(piece) if w not in ("the sign of the whole side", "a factor 1/2", "a factor 2")
             or not e.lstrip().startswith(("-", "2 ", "\\frac{1}{2} "))]
     for edited, what in out:
         if edited not in seen:
             seen.add(edited)
             yield edited, what
+
+_MATRIX = re.compile(r"\\begin\{([pbBvV]?matrix|array)\}(\{[^{}]*\})?(.*?)\\end\{\1\}", re.S)
+
+
+def _entry_sign_edits(piece: str):
+    """The sign of one entry of a matrix the statement writes, flipped: (edited, what)."""
+    for m in _MATRIX.finditer(piece):
+        body, start = m.group(3), m.start(3)
+        rows = body.split("\\\\")
+        offset = start
+        for r, row in enumerate(rows):
+            cells = row.split("&")
+            at = offset
+            for c, cell in enumerate(cells):
+                text = cell.strip()
+                lead = at + len(cell) - len(cell.lstrip())
+                if text and text != "0":
+                    flipped = text[1:].lstrip() if text.startswith("-") else (
+                        "-" + text[1:].lstrip() if text.startswith("+") else "- " + text)
+                    edited = piece[:lead] + flipped + piece[lead + len(text):]
+                    yield edited, f"the sign of the entry in row {r + 1}, column {c + 1}"
+                at += len(cell) + 1
+            offset += len(row) + 2
+
+
+def _free_of(parsed) -> set:
+    """The symbols of a parsed statement's members (none for a statement not read)."""
+    out = set()
+    for m in getattr(parsed, "members", ()):
+        out |= set(getattr(m.value, "free_symbols", ()))
+    return out
+
 
 def _second_readings(piece: str):
     """(name, value, description) of the names in a statement that have a second reading."""
@@ -86,6 +119,8 @@ class Rereading:
                     c.why += f" (reading {what})"
                 self._keep(before, second, ctx)
                 return
+        if self._running_names_off(saved, line, piece, dup, pieces, first):
+            return
         learned = self._learned(piece)
         if learned:
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
@@ -96,13 +131,43 @@ class Rereading:
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
 
+    def _running_names_off(self, saved, line, piece, dup, pieces, first) -> bool:
+        """A statement flagged only through names the running text defined (a table's
+        ``$\\dot\\psi_3 = \\psi$``): the slip, if any, is in that sentence, not in the display, so
+        the display's flagged members are unchecked, saying which definition they rest on."""
+        used = {s: n for s, n in saved.running.items() if s in saved.defs and any(
+            s in _free_of(c) for c in [self._parsed_or_none(piece)])}
+        if not used:
+            return False
+        bare = _copied(saved)
+        for s in used:
+            del bare.defs[s]
+        second, _ = self._sandbox(bare, line, piece, dup, pieces)
+        if any(c.verdict in ("typo", "fails") for c in second):
+            return False
+        names = ", ".join(f"{self.tex(s)} = {self.tex(saved.defs[s])} (line {n})" for s, n in used.items())
+        for c in first:
+            if c.verdict in ("typo", "fails"):
+                c.why = (f"reading {names} as the running text defines it, it does not hold: {c.why}; "
+                         "unchecked, since the slip may be in that sentence rather than in this display")
+                c.verdict, c.correction = "unchecked", None
+        return True
+
+    def _parsed_or_none(self, piece):
+        try:
+            return lx.parse(piece, self.vocab)
+        except (lx.NotRead, lx.Words):
+            return None
+
     def _in_their_notation(self, saved, line, piece, pieces, claims):
         """The correction of a typo as the text would write it: the one edit of its own LaTeX (a
         sign, an index, sin ↔ cos, a difference's order, a factor, a power) after which the
         statement holds, so that it can be pasted back. Kept as found when no edit of the LaTeX
         does it (the correction then is the derivation's form)."""
         found = " ".join(c.why for c in claims if c.verdict == "typo")
-        ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found)   # the kind found first
+        entry = "(entry" in found         # a matrix's entry: its entries' signs first
+        ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found and not (
+            entry and e[1].startswith("the sign of the entry")))              # the kind found first
         for n, (edited, what) in enumerate(ordered):
             if n >= 60:
                 return

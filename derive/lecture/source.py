@@ -210,6 +210,8 @@ def _context():
     specs += [MacroSpec(name, "{") for name in _BOLD | {"vu", "abs", "norm", "operatorname", "qty",
                                                           "mathrm", "text", "mathit", "hat", "dot", "ddot",
                                                           "tilde", "widetilde", "widehat", "bar"}]
+    specs += [MacroSpec("overbrace", "{"), MacroSpec("underbrace", "{"), MacroSpec("overset", "{{"),
+              MacroSpec("underset", "{{"), MacroSpec("stackrel", "{{")]
     specs += [MacroSpec("dv", "[{{"), MacroSpec("pdv", "[{{"), MacroSpec("frac", "{{"),
               MacroSpec("dfrac", "{{"), MacroSpec("tfrac", "{{"), MacroSpec("cfrac", "{{")]
     db.add_context_category("derive-notes", macros=specs, prepend=True)
@@ -284,6 +286,8 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
             return "\\" + name + post, 0
         return r"\boldsymbol{" + inner + "}" if name not in ("vec", "overrightarrow") else \
             "\\" + name + "{" + inner + "}", 0
+    if name in ("overbrace", "underbrace", "overset", "underset", "stackrel") and node.nodeargd is not None:
+        return _braced_label(name, node, nodes, k, user)
     if name == "vu":
         return r"\hat{\boldsymbol{" + (_last_arg(node, user) or "") + "}}", 0
     if name in ("abs", "norm"):
@@ -291,7 +295,7 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name == "qty":
         return r"\left(" + (_last_arg(node, user) or "") + r"\right)", 0
     if name == "operatorname":
-        inner = (_last_arg(node, user) or "").strip()
+        inner = (_last_arg(node, user) or "").strip().lstrip("\\")
         return ("\\" + inner + " ") if inner in _FUNCTION_NAMES else r"\mathrm{" + inner + "}", 0
     if name in ("dv", "pdv"):
         order, f, x = _arg(node, 0, user), _arg(node, 1, user) or "", _arg(node, 2, user) or ""
@@ -327,6 +331,33 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     return "\\" + name + ("".join(printed) if printed else post), 0
 
 
+def _braced_label(name, node, nodes, k, user) -> tuple[str, int]:
+    """``\\underbrace{X}_{label}`` and ``\\overbrace{X}^{label}`` are X (the label is a comment on it),
+    but ``\\overbrace{X}^{\\cdot}``, a dot over a long product, is its time derivative;
+    ``\\overset{a}{=}`` and ``\\stackrel{a}{=}`` are the relation."""
+    inner = _last_arg(node, user) or ""
+    if name in ("overset", "underset", "stackrel"):
+        return " " + inner + " ", 0
+    used, label = 0, ""
+    j = k + 1
+    if j < len(nodes) and isinstance(nodes[j], LatexCharsNode) and nodes[j].chars.lstrip()[:1] in "^_" \
+            and nodes[j].chars.strip():
+        rest = nodes[j].chars.lstrip()[1:]
+        if rest.strip():
+            label = rest.strip()[0]
+            tail = rest.strip()[1:]
+            nodes[j] = LatexCharsNode(parsing_state=nodes[j].parsing_state, chars=tail, pos=nodes[j].pos, len=nodes[j].len)
+        elif j + 1 < len(nodes):
+            nxt = nodes[j + 1]
+            label = _print(nxt.nodelist, user) if isinstance(nxt, LatexGroupNode) else _print([nxt], user)
+            used = 2
+        else:
+            used = 1
+    if name == "overbrace" and label.strip() in ("\\cdot", "\\cdot ", "."):
+        return r" \frac{d}{dt}\left(" + inner + r"\right) ", used
+    return " " + inner + " ", used
+
+
 def _print(nodes, user: dict) -> str:
     nodes = list(nodes or [])
     out, k = [], 0
@@ -349,17 +380,53 @@ def _print(nodes, user: dict) -> str:
         elif isinstance(node, LatexSpecialsNode):
             out.append(node.specials_chars)
         elif isinstance(node, LatexCharsNode):
-            out.append(node.chars)
+            out.append(_BARE_TRIG.sub(r"\\\1 ", node.chars))
         else:
             out.append(node.latex_verbatim())
         k += 1
     return "".join(out)
 
 
+# `cos \theta` (or `\ cos`) typed without its backslash renders as the word cos: a reader reads cosine
+_BARE_TRIG = re.compile(r"(?<![A-Za-z])(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh)(?![A-Za-z])")
+_WORD_TRIG = re.compile(r"\\(text|mathrm|mathit|operatorname)\{\s*\\(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh) \}")
+
+
+_CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
+
+
+def _cross_matrices(text: str) -> str:
+    """``[\\mathbf{r}]_\\times`` (also ``\\left[ … \\right]_{\\times}``, ``^\\times``): the cross-product
+    matrix of r, written ``\\crossmatrix\\left( … \\right)`` for the formula reader."""
+    while True:
+        m = next((m for m in _CROSS.finditer(text) if text[:m.start()].rstrip().endswith("]")), None)
+        if m is None:
+            return text
+        close = text[:m.start()].rstrip()
+        end = len(close) - 1
+        right = close.endswith("\\right]")
+        depth, k = 0, end
+        while k >= 0:
+            if text[k] == "]":
+                depth += 1
+            elif text[k] == "[":
+                depth -= 1
+                if depth == 0:
+                    break
+            k -= 1
+        if k < 0:
+            return text
+        left = k - 5 if text[max(k - 5, 0):k] == "\\left" else k
+        inner = text[k + 1:end - (6 if right else 0)]
+        text = text[:left] + r"\crossmatrix\left(" + inner + r"\right)" + text[m.end():]
+
+
+_ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
-_SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*(" + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
+_SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*("
+                        + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
 
 def normalize(latex: str, user: dict | None = None) -> str:
@@ -384,6 +451,9 @@ def normalize(latex: str, user: dict | None = None) -> str:
         text = _print(nodes, user or {})
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
+    text = _cross_matrices(text)
+    text = _ROW_STOP.sub(" ", text)                  # "1." before a row's end: punctuation
+    text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2

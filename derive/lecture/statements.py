@@ -173,3 +173,18 @@ def _colon_parts(row: str) -> list[str]:
             continue                      # a label (\\Omega_1:, \\theta:)
         out.append(part)
     return out
+
+
+_MARKS = re.compile(r"\\(label|tag|eqref)\*?\s*\{[^{}]*\}|\\(notag|nonumber)\b")
+
+
+def continues(before: str, after: str) -> bool:
+    """A display that starts with + or − continues the previous one's right side — unless the
+    previous one ended its sentence (a full stop) or the new one states a relation of its own
+    in its first row (``-\\dot{R} R^T = …``)."""
+    head = _strip_envs(after)
+    if not re.match(r"\s*(&\s*)?[+\-]", head):
+        return False
+    if _MARKS.sub(" ", _strip_envs(before)).rstrip().endswith("."):
+        return False
+    return not re.search(r"(?<![<>!\\])=|\\(le|ge|leq|geq|approx|equiv)\b", head.split("\\\\")[0])

@@ -25,14 +25,24 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
+import itertools
+import re
+
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.vocabulary import Atom
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
-from derive.symbolic.rotations import ANGLES, RATES, time_derivative
+from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
 PARAMETERS = (I1, I2, I3, Mass, g, l)
 VARIABLES = ANGLES + RATES + ACCELS + tuple(lx.W) + tuple(lx.WD)
+
+
+_FRAME = r"\s*\^\s*(\{[^{}]*\}|\\[A-Za-z]+|\w)"
+_COORDINATE = re.compile(r"^\s*&?\s*([xyz])" + _FRAME + r"\s*&?=\s*(.+?)\s*[.,]?\s*$", re.S)
+_COORDINATE_USE = re.compile(r"(?<![A-Za-z\\])([xyz])" + _FRAME)
+"""A coordinate labelled by its frame (x^{\\psi}), the rows of a change of frame."""
 
 
 def _free(obj) -> set:
@@ -46,6 +56,18 @@ def _is_value(v, defined) -> bool:
         return False
     return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
                for s in _free(v))
+
+
+def _matrix_power(e):
+    """M^n of a matrix the text wrote; M⁻¹ by the adjugate over the determinant, both in their
+    canonical trigonometric form (a rotation's determinant reduces to 1)."""
+    m, n = sp.ImmutableMatrix(e.args[0]), int(e.args[1])
+    if n >= 0:
+        return m ** n
+    det = trig_reduce(m.det())
+    if det == 0:
+        return e
+    return sp.ImmutableMatrix((m.adjugate() / det).applyfunc(trig_reduce)) ** (-n)
 
 
 class TextNames:
@@ -72,11 +94,20 @@ class TextNames:
 
     def _loose_ends_dropped(self, parsed):
         """A chain ``a = b = G(u)`` whose end is a lone symbol the text has not defined yet (it
-        names the expression, as G(u) is defined on the next line): checked without it."""
+        names the expression, as G(u) is defined on the next line), or with a member written in
+        names the text has not defined: checked without it."""
         members = [m.value for m in parsed.members]
         if len(members) < 3 or not set(parsed.relations) <= {"=", "≡"}:
             return parsed
-        loose = [k for k, m in enumerate(members) if self._new_name(m)]
+        known = self._constants()
+
+        def unread(m):      # a member in names the text has not defined (or cannot combine yet)
+            try:
+                return any(self._new_name(x) and x not in known for x in _free(self._resolve(m)))
+            except (TypeError, ValueError, AttributeError):
+                return True
+
+        loose = [k for k, m in enumerate(members) if self._new_name(m) or k and unread(m)]
         if not loose or len(members) - len(loose) < 2 or 0 in loose:
             return parsed
         return self._members_kept(parsed, [k for k in range(len(members)) if k not in loose])
@@ -118,11 +149,19 @@ class TextNames:
             return self._undefined(line, piece, members, rels)
         if self._new_name(m0) and not (_free(members[1]) & {m0}):
             self.ctx.defs[m0] = members[1]
+            if getattr(self, "_inline", False):
+                self.ctx.running[m0] = line
             self._mark_defined(m0)
             self.settings_only = False
             if len(members) == 2:
-                self._add(line, piece, "new symbol", "unchecked",
-                          f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
+                value = self._resolve(members[1])
+                if isinstance(value, sp.MatrixBase) and value.shape == (3, 3) and \
+                        self._rotation(line, piece, sp.Matrix(value)):
+                    self._matrix_name(m0, value)     # a product of the text's matrices: a rotation
+                    return True
+                if not self._space_component(line, piece, m0, members[1]):
+                    self._add(line, piece, "new symbol", "unchecked",
+                              f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
                 return True
             self._flush()
             for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked
@@ -135,7 +174,7 @@ class TextNames:
                 self.ctx.stated[m0] = f"line {line}"
                 self.display_settings.append(m0)
             if m0 in self.d.rot.ANGLES:
-                self.last_angle_set = m0                   # the turn a numeric matrix then shows
+                self.last_angle_set = (m0, members[1])     # the turn a numeric matrix then shows
             self._spin_set(m0, members[1])
             self._add(line, piece, "setting", "unchecked",
                       f"sets {self.tex(m0)} = {self.tex(members[1])}: a case or an assumption of the text, not a claim")
@@ -184,16 +223,47 @@ class TextNames:
         if self._vectors(line, piece, getattr(self, "_text", piece)):
             return True
         names = ", ".join(sorted(self.tex(s) for s in loose))
-        if set(rels) <= {"=", "≡"}:
-            first = self._calculus(self._resolve(members[0]))
-            if all(sp.expand(self._calculus(self._resolve(m)) - first) == 0 for m in members[1:]):
-                self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
-                self.settings_only = False
-                return True
+        if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
+            self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
+            self.settings_only = False
+            return True
         self._add(line, piece, "unknown", "unchecked",
                   f"relates {names}, which the text has not tied to the derivation")
+        if not getattr(self, "_rereading_later", False):
+            self.deferred.append((self.claims[-1], line, piece, self._snapshot()))
         self.settings_only = False
         return True
+
+    def _identity_whatever(self, members) -> bool:
+        """Every member the same expression whatever the text's undefined names stand for."""
+        try:
+            first = self._calculus(self._resolve(members[0]))
+            return all(sp.expand(self._calculus(self._resolve(m)) - first) == 0 for m in members[1:])
+        except TypeError:           # a matrix of the text's beside names it has not defined
+            return False
+
+    def _read_later_definitions(self):
+        """A statement in names the text defines only further on (a product of matrices given one
+        by one below it) is read again at the end with those definitions; kept only when it
+        then holds — a reading the text had not yet given is no ground for a flag."""
+        final = self.ctx.defs
+        self._rereading_later = True
+        try:
+            for claim, line, piece, saved in self.deferred:
+                later = {k: v for k, v in final.items() if k not in saved.defs}
+                if not later or claim not in self.claims:
+                    continue
+                ctx = self._snapshot()
+                ctx.__dict__.update(saved.__dict__)
+                ctx.defs = {**saved.defs, **later}
+                second, _ = self._sandbox(ctx, line, piece, False, ())
+                if second and all(c.verdict == "holds" for c in second):
+                    for c in second:
+                        c.why += " (with names the text defines further on)"
+                    at = self.claims.index(claim)
+                    self.claims[at:at + 1] = second
+        finally:
+            self._rereading_later = False
 
     def _constants(self) -> set:
         """The text's symbols that its settings and solutions give meaning to: the value of a
@@ -218,6 +288,25 @@ class TextNames:
     def _mark_defined(self, sym):
         """A defined symbol of the text's is no longer 'loose'."""
 
+    def _space_component(self, line, piece, sym, value) -> bool:
+        """``\\omega_x = …`` where the text's ω₁, ω₂, ω₃ are the body components: the reading that
+        fits is the space (inertial) component (R ω̃)ₓ = ω⁰ₓ of the text's sequence. Holds when that
+        reading makes it hold; otherwise nothing is said (the text may mean something else)."""
+        atom = self.vocab.generic.get(sym)
+        if atom is None or atom.base != "omega" or atom.sub not in ("x", "y", "z") or \
+                atom.dots or atom.bold or atom.hat or atom.tilde or atom.primes:
+            return False
+        claim = self._resolve(value)
+        if not _free(claim) <= set(ANGLES) | set(RATES):
+            return False
+        target = self.d.conv.omega_space()["xyz".index(atom.sub)]
+        if self.d.rot.trig_reduce(sp.expand(claim - target)) != 0:
+            return False
+        self._add(line, piece, "definition", "holds",
+                  f"reading {self.tex(sym)} as the space (inertial) component of the angular velocity, "
+                  f"(R ω̃)_{atom.sub} = {self.tex(target)}: trig_reduce")
+        return True
+
     def _rotation(self, line, piece, m) -> bool:
         """A 3×3 matrix of the angles the text names as a matrix of its own: a rotation, checked as
         one. Of one angle: the active or the passive (coordinate) turn about x, y or z by it; of
@@ -228,11 +317,11 @@ class TextNames:
         if m.shape != (3, 3) or not _free(m) <= angles:
             return False
         if not _free(m):       # numbers: the turn at the angle the text has just set (φ = 30°)
-            last = getattr(self, "last_angle_set", None)
-            used = [last] if last in self.ctx.subs and sp.sympify(self.ctx.subs[last]).is_number else []
-            if not used:
+            # (an angle set in running text holds for its sentence only, so the value is kept here)
+            last, value = getattr(self, "last_angle_set", (None, None))
+            if last is None or not sp.sympify(value).is_number:
                 return False
-            at = {used[0]: self.ctx.subs[used[0]]}
+            used, at = [last], {last: value}
         else:
             used, at = sorted(_free(m) & angles, key=rot.ANGLES.index), {}
         if len(used) == 1:
@@ -243,7 +332,7 @@ class TextNames:
             R = self.d.conv.matrix()
             named = {"the rotation R (body → space)": R, "the passive matrix Rᵀ (space → body)": R.T}
         else:
-            return False
+            return self._rate_matrix(line, piece, m)
         named = {what: target.xreplace(at) for what, target in named.items()}
 
         def zero(d):      # polynomials in sin and cos: their canonical form (never simplify's search)
@@ -263,6 +352,53 @@ class TextNames:
                           self.tex(target))
                 return True
         return False
+
+    def _rate_matrix(self, line, piece, m) -> bool:
+        """A 3×3 matrix of two angles: the matrix of the rates, ω̃ = B q̇ (body) or ω⁰ = B⁰ q̇ (space),
+        or its inverse, with the rates in any order (a text lists its Euler vector as it likes:
+        (φ̇, θ̇, ψ̇) for a 3-2-1 sequence whose first turn is ψ). Only a match is reported."""
+        conv, rot = self.d.conv, self.d.rot
+        names = [self.tex(q) for q in RATES]
+        for what, B, cols in (("ω̃ = B q̇, the body components", conv.rate_matrix(), True),
+                              ("ω⁰ = B⁰ q̇, the space components", conv.space_rate_matrix(), True),
+                              ("q̇ = B⁻¹ ω̃, the rates from the body components", None, False)):
+            if B is None:
+                B = sp.Matrix(conv.rates_from_omega(sp.Matrix(lx.W))).jacobian(sp.Matrix(lx.W))
+            for order in itertools.permutations(range(3)):
+                P = B[:, list(order)] if cols else B[list(order), :]
+                if all(rot.trig_reduce(sp.together(x - y)) == 0 for x, y in zip(m, P)):
+                    listed = ", ".join(names[k] for k in order)
+                    self._add(line, piece, "rotation", "holds", f"the matrix of the rates: {what}, "
+                              f"with the rates in the order ({listed})")
+                    return True
+        return False
+
+    def _coordinate_turn(self, line, pieces) -> bool:
+        """Three rows ``x^{B} = … x^{A} + … y^{A}``, ``y^{B} = …``, ``z^{B} = …``: coordinates in frame B
+        from those in frame A, a linear map whose matrix is checked as a rotation (`_rotation`).
+        False (the rows read one by one) when they are not such a block or the matrix is no turn."""
+        rows = [_COORDINATE.match(p) for p in pieces]
+        if len(pieces) != 3 or not all(rows) or [r.group(1) for r in rows] != ["x", "y", "z"] \
+                or len({r.group(2) for r in rows}) != 1:
+            return False
+        frames = {m.group(2) for r in rows for m in _COORDINATE_USE.finditer(r.group(3))}
+        if len(frames) != 1 or frames == {rows[0].group(2)}:
+            return False
+        xyz = [self.vocab._generic(Atom(c)) for c in "xyz"]
+        try:
+            sides = [lx.parse(_COORDINATE_USE.sub(lambda m: " " + m.group(1) + " ", r.group(3)), self.vocab)
+                     for r in rows]
+        except lx.NotRead:
+            return False
+        values = [sp.expand(p.members[0].value) for p in sides if len(p.members) == 1]
+        if len(values) != 3:
+            return False
+        m = sp.Matrix([[sp.diff(v, c) for c in xyz] for v in values])
+        if any(sp.expand(v - sum(m[i, j] * xyz[j] for j in range(3))) != 0 for i, v in enumerate(values)) \
+                or _free(m) & set(xyz):
+            return False
+        self.settings_only = False
+        return self._rotation(line, " \\\\ ".join(pieces), m)
 
     def _matrix_name(self, sym, value):
         """X = (a matrix): X is from here on a non-commuting symbol, so that a product of the
@@ -296,6 +432,9 @@ class TextNames:
         if v.has(lx.Transposed):
             v = v.replace(lambda e: isinstance(e, lx.Transposed) and isinstance(e.args[0], sp.MatrixBase),
                           lambda e: e.args[0].T)
+        if v.has(sp.MatPow):
+            v = v.replace(lambda e: isinstance(e, sp.MatPow) and isinstance(e.args[0], sp.MatrixBase)
+                          and e.args[1].is_integer, _matrix_power)
         if not (v.has(lx.DT) or v.has(sp.Derivative)):
             return v
         v = v.replace(lambda e: isinstance(e, sp.Derivative), lambda e: self._partial(e))
@@ -311,6 +450,8 @@ class TextNames:
 
     def _dt(self, e):
         e = self._resolve(e)
+        if isinstance(e, sp.MatrixBase):
+            return e.applyfunc(self._dt)         # a matrix of the text's: entry by entry
         out = time_derivative(e, accels=ACCELS)
         out += sum((sp.diff(e, w) * wd for w, wd in zip(lx.W, lx.WD)), sp.S.Zero)
         for s in _free(e):

@@ -98,7 +98,22 @@ DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "til
                "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec"}
 SPACES = {",", ";", ":", "!", " ", "quad", "qquad",  "left", "right", "big", "Big", "bigg", "Bigg",
           "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
-FUNCTIONS = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
+class CrossMatrix(sp.Function):
+    """[v]ₓ, the cross-product (skew) matrix of a column v: [v]ₓ w = v × w. Evaluated once v is a
+    3-column (a text's symbols are substituted first); a product's factor v·s moves out."""
+
+    @classmethod
+    def eval(cls, v):
+        if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
+            return sp.ImmutableMatrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+        if isinstance(v, sp.MatMul) or (isinstance(v, sp.Mul) and any(isinstance(a, sp.MatrixBase) for a in v.args)):
+            done = v.doit() if hasattr(v, "doit") else v
+            if isinstance(done, sp.MatrixBase) and done.shape == (3, 1):
+                return cls.eval(done)
+        return None
+
+
+FUNCTIONS = {"crossmatrix": CrossMatrix, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
              "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
@@ -197,7 +212,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
     else:
         raise NotRead(f"cannot read {s[i:i + 12]!r}", i + 1)
     # sub- and superscripts that belong to the symbol: subscripts always; primes; a superscript
-    # that is 0 or a prime (ê⁰₃, E′); numeric superscripts otherwise are powers (left to the parser).
+    # that is 0 or a prime (ê⁰₃, E′), or a letter on a bold symbol (a frame: 𝐑^α_β, 𝛚^α); numeric
+    # superscripts otherwise are powers (left to the parser).
     while j < len(s):
         k = j
         while k < len(s) and s[k] == " ":
@@ -214,6 +230,9 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
                 atom, j = atom.with_(primes=atom.primes + len(plain)), after
             elif plain == "0" and (atom.hat or atom.bold):
                 atom, j = atom.with_(sup="0"), after
+            elif atom.bold and not atom.sup and plain not in ("T", "top", "intercal", "t") and \
+                    (plain in GREEK or re.fullmatch(r"[A-Za-z]", plain)):
+                atom, j = atom.with_(sup=plain), after     # a frame's label on a vector or a matrix (𝐑^α_β)
             else:
                 break
         else:
@@ -278,6 +297,9 @@ def scan(s: str) -> list[Tok]:
             if name in ("begin", "end"):
                 env, j = _group(s, m.end())
                 toks.append(Tok(name, env.strip(), i))
+                if name == "begin" and env.strip() in ("array", "alignat", "alignat*"):
+                    spec = re.match(r"\s*\{[^{}]*\}", s[j:])      # its column layout {ccc} or {2}
+                    j += spec.end() if spec else 0
                 i = j
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",

@@ -24,6 +24,10 @@ Angular velocity in the body frame, two independent routes that must agree:
 1. the notes' sum  ω̃ = α̇ ê⁰₃ + β̇ ê′₂ + γ̇ ê₃, each axis written in body components
    (ê⁰_{a₁} = Rᵀ e_{a₁}, ê′_{a₂} = passive(a₃, γ) e_{a₂}, ê_{a₃} = e_{a₃});
 2. the skew matrix  [ω̃]ₓ = Rᵀ Ṙ  (body-frame angular velocity tensor).
+
+In space (inertial) components ω⁰ = R ω̃, from [ω⁰]ₓ = Ṙ Rᵀ (``omega_space``). Every one of the
+twelve sequences (``convention``) gives R, ω̃, ω⁰ and the rate matrices B, B⁰ (ω̃ = B q̇,
+ω⁰ = B⁰ q̇) the same way.
 """
 from __future__ import annotations
 
@@ -149,6 +153,22 @@ class Convention:
         R = self.matrix()
         Rdot = R.applyfunc(time_derivative)
         return sp.ImmutableMatrix(unskew(R.T * Rdot).applyfunc(trig_reduce))
+
+    @functools.lru_cache(maxsize=None)
+    def omega_space(self) -> sp.Matrix:
+        """ω⁰, the angular velocity in inertial (space) components: [ω⁰]ₓ = Ṙ Rᵀ, equal to R ω̃.
+
+        For any of the twelve sequences, ω⁰ = α̇ e_{a₁} + β̇ active(a₁, α) e_{a₂} + γ̇ active(a₁, α)
+        active(a₂, β) e_{a₃}: each rate about its turn's axis, written in space components.
+        """
+        R = self.matrix()
+        Rdot = R.applyfunc(time_derivative)
+        return sp.ImmutableMatrix(unskew(Rdot * R.T).applyfunc(trig_reduce))
+
+    @functools.lru_cache(maxsize=None)
+    def space_rate_matrix(self) -> sp.Matrix:
+        """B⁰(q) with ω⁰ = B⁰(q) q̇: the space components' matrix of the rates."""
+        return sp.ImmutableMatrix(self.omega_space().jacobian(sp.Matrix(RATES)))
 
     @functools.lru_cache(maxsize=None)
     def rate_matrix(self) -> sp.Matrix:
