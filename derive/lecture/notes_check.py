@@ -44,6 +44,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
 from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
@@ -90,7 +91,7 @@ def _name_tex(name: str) -> str:
 
 # ---- results ------------------------------------------------------------------------------------
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -213,6 +214,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._algebra_first(text) and self._algebra(line, piece, text):
+            return
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:
@@ -220,7 +223,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements):
             return
         except lx.NotRead as err:
             why = err.why
-            if self._vectors(line, piece, text):
+            if self._vectors(line, piece, text) or self._algebra(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return
