@@ -31,6 +31,7 @@ vectors), δ_ij, the unit tensor 𝕀.
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 from dataclasses import dataclass, field
@@ -131,21 +132,36 @@ def rate(e):
     return out
 
 
-def momentum(system: str) -> sp.Matrix:
+@functools.lru_cache(maxsize=None)
+def momentum(system: str) -> sp.ImmutableMatrix:
+    """𝐋 = Σ m 𝐫 × (𝛚 × 𝐫) of the system (one point mass, or the body's points)."""
+    return sp.ImmutableMatrix(_momentum(system))
+
+
+@functools.lru_cache(maxsize=None)
+def torque(system: str) -> sp.ImmutableMatrix:
+    """d𝐋/dt under rigid rotation."""
+    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(sp.expand))
+
+
+def _momentum(system: str) -> sp.Matrix:
     if system == "single":
         return M0 * R0.cross(W.cross(R0))
     return sum((MU[k] * RK[k].cross(W.cross(RK[k])) for k in range(POINTS)), sp.zeros(3, 1))
 
 
-def tensor(system: str) -> sp.Matrix:
+@functools.lru_cache(maxsize=None)
+def tensor(system: str) -> sp.ImmutableMatrix:
     """𝐈 = ∂𝐋/∂𝛚 of the system."""
-    return momentum(system).jacobian(W).applyfunc(sp.expand)
+    return sp.ImmutableMatrix(momentum(system).jacobian(W).applyfunc(sp.expand))
 
 
-def linear(system: str) -> sp.Matrix:
+@functools.lru_cache(maxsize=None)
+def linear(system: str) -> sp.ImmutableMatrix:
+    """𝐩 = Σ m 𝛚 × 𝐫 of the system."""
     if system == "single":
-        return M0 * W.cross(R0)
-    return sum((MU[k] * W.cross(RK[k]) for k in range(POINTS)), sp.zeros(3, 1))
+        return sp.ImmutableMatrix(M0 * W.cross(R0))
+    return sp.ImmutableMatrix(sum((MU[k] * W.cross(RK[k]) for k in range(POINTS)), sp.zeros(3, 1)))
 
 
 def _as_value(v):
@@ -505,9 +521,9 @@ class _AParser(_Parser):
             return None
         if base in self.state.torques:
             if bold and not sub:
-                return rate(momentum(self.system))
+                return torque(self.system)
             if not bold and sub in AXIS and len(sub) == 1:
-                return rate(momentum(self.system))[AXIS[sub]]
+                return torque(self.system)[AXIS[sub]]
             return None
         if base == "F" and bold and not sub:
             self.force_at.append(self.i)
@@ -599,6 +615,6 @@ def difference(a, b):
 
 def _zeroed(d):
     d = sp.expand(d)
-    if d != 0 and d.has(sp.Pow):
-        d = sp.simplify(d)
+    if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)):
+        d = sp.simplify(d)          # |𝛚| and 𝛚̂: a polynomial's expansion is already canonical
     return d
