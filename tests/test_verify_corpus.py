@@ -32,7 +32,6 @@ SHORT = {
     ("free-rigid-body-euler-case-zh-notes-zxz", "found"): "a trigonometric identity in the text's own angles",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "found"): "a square dropped in the text's own variable",
-    ("intermediate-axis-theorem-slab-blog", "found"): "a slip read only through the axes the prose names (x, y, z); I ≈ 0 for ω ≈ const",
     ("murundb-euler-angles-321-rates", "checked"): "products of the text's rotation matrices and skew matrices",
     ("rigid-body-formula-notebook-landau-zxz", "checked"): "inertia tensors and stability exponents",
     ("rigid-body-formula-notebook-landau-zxz", "false"): "a steady precession about the fixed axis along M (∂L/∂θ = 0 at θ = const)",
@@ -42,7 +41,7 @@ SHORT = {
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "found"): "a rolling half hoop's geometry",
 }
 
-FLOOR = {"checked": 145, "slips_flagged": 17, "holds_flagged": 2}
+FLOOR = {"checked": 145, "slips_flagged": 19, "holds_flagged": 2}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -39,6 +39,7 @@ class Context:
     forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
     orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
+    given: dict = field(default_factory=dict)         # a left side as written → (the value the text set it to, where): kept across sections
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}

@@ -45,6 +45,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.moments_small import SmallMoments, written_name
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
 from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
@@ -91,7 +92,7 @@ def _name_tex(name: str) -> str:
 
 # ---- results ------------------------------------------------------------------------------------
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraStatements):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraStatements, SmallMoments):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -187,6 +188,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraSt
                 self._add(item.line, piece, "setting", "typo", "repeats the label of an earlier row of this block with "
                           "another value; the row that should stand here is the label the block leaves out (an index)",
                           relabelled[piece])
+                self._given(item.line, relabelled[piece])
                 continue
             before = len(self.claims)
             try:
@@ -198,6 +200,15 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraSt
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
             self._place_flushed(before)
         self._close_display()
+
+    def _given(self, line, latex):
+        """A setting X = value the reader corrected: the text's value of X from here on (``ctx.given``)."""
+        try:
+            parsed = lx.parse(latex, self.vocab)
+        except lx.NotRead:
+            return
+        if len(parsed.members) == 2 and isinstance(parsed.members[0].value, sp.Symbol):
+            self.ctx.given[written_name(latex)] = (parsed.members[1].value, f"line {line}, as corrected")
 
     def _place_flushed(self, at):
         """The verdicts of a group of solutions that a later statement closed, placed before that
@@ -239,6 +250,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraSt
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
         if parsed is not None and not duplicate and self._second_order(line, piece, parsed):
+            return
+        if parsed is not None and not duplicate and self._small_moment(line, piece, parsed):
             return
         row = None if parsed is None or duplicate else self._solution_row(parsed)
         if row is not None:
