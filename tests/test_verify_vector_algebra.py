@@ -96,3 +96,17 @@ def test_the_vector_triple_product_holds_for_any_vectors_and_an_undefined_vector
 def test_the_lectures_own_vector_notation_is_left_to_its_reader():
     assert va.lecture_notation("T = \\sum_p \\frac{1}{2} m_p v_p^2")
     assert not va.lecture_notation("\\mathbf{L} = \\sum_i m_i \\mathbf{r}_i \\times \\mathbf{v}_i")
+
+
+@pytest.mark.parametrize("law", [
+    "\\boldsymbol{\\tau} = 0",
+    "\\mathbf{F} = -k \\mathbf{r}",
+    "\\boldsymbol{\\tau} = \\mathbf{r} \\times m \\mathbf{g}",
+])
+def test_a_torque_or_force_the_text_gives_without_a_rate_is_never_flagged(law):
+    assert not only(f"$${law}$$\n") & {"fails", "typo"}
+
+
+def test_a_sum_up_to_three_is_over_the_axes_not_the_particles():
+    with pytest.raises(Exception):
+        va.read("\\mathbf{L} = \\sum_{i=1}^{3} m_i \\mathbf{r}_i \\times \\mathbf{v}_i", va.State())

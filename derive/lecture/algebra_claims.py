@@ -74,6 +74,10 @@ class AlgebraStatements:
         if first[ref].generics != first[k].generics:
             loose = sorted(first[ref].generics ^ first[k].generics)
             return "unchecked", f"involves 𝐚 = {', '.join(loose)}, which the text has not tied to the body"
+        a, b = first[ref], first[k]
+        if (a.law and not b.law and not b.rated) or (b.law and not a.law and not a.rated):
+            return "unchecked", ("a torque or a force set equal to an expression without a rate: a law or an "
+                                 "assumption of the text (the reader knows only τ = d𝐋/dt and 𝐅 = d𝐩/dt)")
         convention = False
         principal = False
         for members in reading.members:

@@ -37,7 +37,16 @@ def written_name(latex: str) -> str:
 
 
 class SmallMoments:
-    """Mixin of the checker. Uses ``self.ctx``, ``self._add`` and ``self.tex``."""
+    """Mixin of the checker. Uses ``self.ctx``, ``self.vocab``, ``self._add`` and ``self.tex``."""
+
+    def _given(self, line, latex):
+        """A setting X = value the reader corrected: the text's value of X from here on (``ctx.given``)."""
+        try:
+            parsed = lx.parse(latex, self.vocab)
+        except lx.NotRead:
+            return
+        if len(parsed.members) == 2 and isinstance(parsed.members[0].value, sp.Symbol):
+            self.ctx.given[written_name(latex)] = (parsed.members[1].value, f"line {line}, as corrected")
 
     def _small_moment(self, line, piece, parsed) -> bool:
         """X ≈ 0 decided by the text's value of X (a constant of the body) or, for a principal moment,

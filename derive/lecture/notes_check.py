@@ -45,7 +45,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
-from derive.lecture.moments_small import SmallMoments, written_name
+from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
 from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
@@ -200,15 +200,6 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, AlgebraSt
                           f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
             self._place_flushed(before)
         self._close_display()
-
-    def _given(self, line, latex):
-        """A setting X = value the reader corrected: the text's value of X from here on (``ctx.given``)."""
-        try:
-            parsed = lx.parse(latex, self.vocab)
-        except lx.NotRead:
-            return
-        if len(parsed.members) == 2 and isinstance(parsed.members[0].value, sp.Symbol):
-            self.ctx.given[written_name(latex)] = (parsed.members[1].value, f"line {line}, as corrected")
 
     def _place_flushed(self, at):
         """The verdicts of a group of solutions that a later statement closed, placed before that
