@@ -110,3 +110,39 @@ def test_a_torque_or_force_the_text_gives_without_a_rate_is_never_flagged(law):
 def test_a_sum_up_to_three_is_over_the_axes_not_the_particles():
     with pytest.raises(Exception):
         va.read("\\mathbf{L} = \\sum_{i=1}^{3} m_i \\mathbf{r}_i \\times \\mathbf{v}_i", va.State())
+
+
+def _planted_sign_slips(slug):
+    """Each '- x' of a correct display of a corpus text turned into '+ x', one at a time (at most two
+    per line): (display line, the edited text)."""
+    import re
+    import sys
+    from pathlib import Path
+    real = Path(__file__).resolve().parent / "notes" / "real"
+    sys.path.insert(0, str(real))
+    import measure
+    lines = (real / f"{slug}.md").read_text().split("\n")
+    holds = [r["line"] for r in measure.truth(slug) if r["verdict"] == "holds"]
+    for start in holds:
+        k = start - 1
+        while True:
+            for m in list(re.finditer(r"(?<=[\s(&])- (?=[a-z\\])", lines[k]))[:2]:
+                edited = lines[:]
+                edited[k] = lines[k][:m.start()] + "+ " + lines[k][m.end():]
+                yield start, holds, "\n".join(edited)
+            body = lines[k].strip()
+            if body.endswith("$$") and (k > start - 1 or body.count("$$") == 2):
+                break
+            k += 1
+
+
+@pytest.mark.slow  # (every planted slip is a whole text read again)
+@pytest.mark.parametrize("slug", ["inertia-tensor-derivation-blog", "rigid-body-inertia-tensor-blog-nrsyed"])
+def test_a_sign_planted_in_an_inertia_tensor_text_is_flagged_on_its_display_only(slug):
+    planted = 0
+    for line, holds, text in _planted_sign_slips(slug):
+        flagged = {c.line for c in notes_check.check_text(text) if c.verdict in ("typo", "fails")}
+        assert line in flagged, line
+        assert not flagged & (set(holds) - {line}), (line, flagged)
+        planted += 1
+    assert planted >= 5
