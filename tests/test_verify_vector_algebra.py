@@ -146,3 +146,10 @@ def test_a_sign_planted_in_an_inertia_tensor_text_is_flagged_on_its_display_only
         assert not flagged & (set(holds) - {line}), (line, flagged)
         planted += 1
     assert planted >= 5
+
+
+def test_a_cross_product_in_the_wrong_order_is_a_typo_corrected_in_the_texts_notation():
+    claims = notes_check.check_text(HEAD + "$$\\mathbf{L} = m \\mathbf{r} \\times (\\mathbf{r} \\times \\boldsymbol{\\omega})$$\n")
+    assert [c.verdict for c in claims if "bmatrix" not in c.latex and "L" in c.latex] == ["typo"]
+    fixed = [c.correction for c in claims if c.verdict == "typo"][0]
+    assert "\\times (\\boldsymbol{\\omega} \\times \\mathbf{r})" in fixed

@@ -5,23 +5,26 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra`, the single edits
+of :mod:`derive.lecture.vectors`, SymPy.
 """
 from __future__ import annotations
 
+import copy
 import itertools
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra as va
+from derive.lecture import vectors as vc
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
        "torque d𝐋/dt; sums and ∫ dm read for three generic mass points")
 
 
 class AlgebraStatements:
-    """Mixin of the checker. Uses ``self.ctx``, ``self._add`` and ``self.claims``."""
+    """Mixin of the checker. Uses ``self.ctx``, ``self._add``, ``self.claims`` and ``self.judging_only``."""
 
     @property
     def _alg(self) -> va.State:
@@ -65,11 +68,32 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
+            if fix:
+                verdict, why = "typo", f"{why}; one edit ({fix[1]}) makes it hold"
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
-                      why + (where if verdict != "unchecked" else ""))
+                      why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
 
-    def _algebra_pair(self, reading, ref, k) -> tuple[str, str]:
+    def _algebra_fix(self, reading, ref, k):
+        """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
+        power) after which it equals the reference member: (the statement corrected, what), or None."""
+        src, m = reading.source, reading.members[0][k]
+        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
+            if n >= 60:
+                return None
+            again_src = src[:m.start] + edited + " " + src[m.end:]
+            try:
+                again = va.read(again_src, copy.deepcopy(self._alg))
+            except lx.NotRead:
+                continue
+            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
+                continue
+            if self._algebra_pair(again, ref, k, record=False)[0] == "holds":
+                return again_src.strip(), what
+        return None
+
+    def _algebra_pair(self, reading, ref, k, record=True) -> tuple[str, str]:
         first = reading.members[0]
         if first[ref].generics != first[k].generics:
             loose = sorted(first[ref].generics ^ first[k].generics)
@@ -98,7 +122,8 @@ class AlgebraStatements:
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
-            self._alg.defs[name] = reading.members[0][k].value
+            if record:
+                self._alg.defs[name] = reading.members[0][k].value
             return "holds", (f"{WHY}: the entry of 𝐈 with the opposite sign — the text's product of inertia "
                              "(some texts define I_xy = ∫xy dm and write −I_xy in the tensor)")
         if principal:
