@@ -41,6 +41,7 @@ class Context:
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
     running: dict = field(default_factory=dict)       # the text's names defined in running text → line
     motion: dict = field(default_factory=dict)        # a rate the text states for its motion → (value, line)
+    given: dict = field(default_factory=dict)         # a left side as written → (the value the text set it to, where): kept across sections
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}

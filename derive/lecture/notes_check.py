@@ -44,6 +44,8 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
 from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, families
@@ -91,7 +93,8 @@ def _name_tex(name: str) -> str:
 
 # ---- results ------------------------------------------------------------------------------------
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMotion):
+class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
+              SmallMoments):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -191,6 +194,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
                 self._add(item.line, piece, "setting", "typo", "repeats the label of an earlier row of this block with "
                           "another value; the row that should stand here is the label the block leaves out (an index)",
                           relabelled[piece])
+                self._given(item.line, relabelled[piece])
                 continue
             before = len(self.claims)
             try:
@@ -221,6 +225,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._algebra_first(text) and self._algebra(line, piece, text):
+            return
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:
@@ -228,7 +234,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
             return
         except lx.NotRead as err:
             why = err.why
-            if self._vectors(line, piece, text):
+            if self._vectors(line, piece, text) or self._algebra(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return
@@ -244,6 +250,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
         if parsed is not None and not duplicate and self._second_order(line, piece, parsed):
+            return
+        if parsed is not None and not duplicate and self._small_moment(line, piece, parsed):
             return
         row = None if parsed is None or duplicate else self._solution_row(parsed)
         if row is not None:

@@ -32,6 +32,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
+from derive.lecture.moments_small import written_name
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
@@ -172,6 +173,7 @@ class TextNames:
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
                 self.ctx.stated[m0] = f"line {line}"
+                self.ctx.given[written_name(piece)] = (members[1], f"line {line}")
                 self.display_settings.append(m0)
             if m0 in self.d.rot.ANGLES:
                 self.last_angle_set = (m0, members[1])     # the turn a numeric matrix then shows
@@ -195,6 +197,8 @@ class TextNames:
 
     def _settings_before_neq(self, line, piece, members, rels) -> bool:
         """``I_1 = I_2 \\neq I_3``: the equalities are what the text assumes (the ≠ says the rest)."""
+        if set(rels) <= {"<", "≤"} and all(m in (I1, I2, I3) for m in members):
+            self.ctx.orderings.append(list(members))        # I₁ < I₂ < I₃: an ordering of the moments
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
             if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \

@@ -1,0 +1,183 @@
+"""Statements in textbook vector algebra for the notes checker (read by `derive.lecture.vector_algebra`):
+each member against the first readable one, in the model of rigid rotation that module derives.
+
+Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_algebra_first`
+(a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
+verdicts).
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra`, the single edits
+of :mod:`derive.lecture.vectors`, SymPy.
+"""
+from __future__ import annotations
+
+import copy
+import itertools
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture import vector_algebra as va
+from derive.lecture import vectors as vc
+
+WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
+       "torque d𝐋/dt; sums and ∫ dm read for three generic mass points")
+
+
+class AlgebraStatements:
+    """Mixin of the checker. Uses ``self.ctx``, ``self._add``, ``self.claims`` and ``self.judging_only``."""
+
+    @property
+    def _alg(self) -> va.State:
+        if "_alg_state" not in self.__dict__:
+            self._alg_state = va.State()
+            self._alg_read = False
+        return self._alg_state
+
+    def _algebra_first(self, text) -> bool:
+        """Whether a statement goes to this reader before the scalar one: written in its notation
+        (or continuing a side it read), once it has read a display of the text or when the
+        statement has its markers; never the lecture's own vector notation."""
+        if va.lecture_notation(text):
+            return False
+        state = self._alg
+        if va.markers(text, bold=self._alg_read):
+            return True
+        return self._alg_read and (state.head is not None and text.startswith(state.head) or _mentions(text, state))
+
+    def _algebra(self, line, piece, text) -> bool:
+        """Read and judge a statement (False when this reader cannot read it)."""
+        if va.lecture_notation(text):
+            return False
+        state = self._alg
+        try:
+            reading = va.read(text, state)
+        except lx.NotRead:
+            return False
+        if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
+            return False
+        self._alg_read = True
+        state.system = reading.system
+        first = reading.members[0]
+        state.head = reading.source[:first[0].end].strip()
+        self.ctx.head = state.head
+        where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
+        ref = next((k for k, m in enumerate(first) if not m.skip), None)
+        for k in range(1, len(first)):
+            if first[k].skip or ref is None or k == ref:
+                if first[k].skip:
+                    self._add(line, piece, "identity", "unchecked", first[k].skip)
+                continue
+            verdict, why = self._algebra_pair(reading, ref, k)
+            fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
+            if fix:
+                verdict, why = "typo", f"{why}; one edit ({fix[1]}) makes it hold"
+            self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
+                      why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
+        return True
+
+    def _algebra_fix(self, reading, ref, k):
+        """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
+        power) after which it equals the reference member: (the statement corrected, what), or None."""
+        src, m = reading.source, reading.members[0][k]
+        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
+            if n >= 60:
+                return None
+            again_src = src[:m.start] + edited + " " + src[m.end:]
+            try:
+                again = va.read(again_src, copy.deepcopy(self._alg))
+            except lx.NotRead:
+                continue
+            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
+                continue
+            if self._algebra_pair(again, ref, k, record=False)[0] == "holds":
+                return again_src.strip(), what
+        return None
+
+    def _algebra_pair(self, reading, ref, k, record=True) -> tuple[str, str]:
+        first = reading.members[0]
+        if first[ref].generics != first[k].generics:
+            loose = sorted(first[ref].generics ^ first[k].generics)
+            return "unchecked", f"involves 𝐚 = {', '.join(loose)}, which the text has not tied to the body"
+        a, b = first[ref], first[k]
+        if (a.law and not b.law and not b.rated) or (b.law and not a.law and not a.rated):
+            return "unchecked", ("a torque or a force set equal to an expression without a rate: a law or an "
+                                 "assumption of the text (the reader knows only τ = d𝐋/dt and 𝐅 = d𝐩/dt)")
+        convention = False
+        principal = False
+        for members in reading.members:
+            d = va.difference(members[k].value, members[ref].value)
+            if d is None:
+                return "unchecked", "cannot compare its sides: their shapes differ"
+            if _zero(d):
+                continue
+            if ref == 0 and _entry_name(reading.source, members[0]) and not isinstance(d, sp.MatrixBase) \
+                    and _zero(va.difference(members[k].value, -members[ref].value)):
+                convention = True          # a product of inertia defined with the other sign
+                continue
+            lit = members[k].literal if members[k].literal is not None else members[ref].literal
+            if isinstance(d, sp.MatrixBase) and d.shape == (3, 3) and lit is not None and \
+                    all(_zero(d[i, j]) or (i != j and lit[i, j] == 0) for i, j in itertools.product(range(3), repeat=2)):
+                principal = True           # the written tensor is diagonal where the derived one is not
+                continue
+            return "fails", f"as written: {_where(d)} ({WHY})"
+        if convention:
+            name = _entry_name(reading.source, reading.members[0][0])
+            if record:
+                self._alg.defs[name] = reading.members[0][k].value
+            return "holds", (f"{WHY}: the entry of 𝐈 with the opposite sign — the text's product of inertia "
+                             "(some texts define I_xy = ∫xy dm and write −I_xy in the tensor)")
+        if principal:
+            return "holds", f"{WHY}: holds if the axes are principal axes (the products of inertia vanish)"
+        return "holds", f"{WHY}: exact (expand)"
+
+
+def _zero(d) -> bool:
+    if isinstance(d, sp.MatrixBase):
+        return all(x == 0 for x in d)
+    return d == 0
+
+
+def _where(d) -> str:
+    if not isinstance(d, sp.MatrixBase):
+        return "claim − derived ≠ 0"
+    k = next(n for n, x in enumerate(d) if x != 0)
+    if d.shape == (3, 1):
+        return f"claim − derived ≠ 0 (component {k + 1})"
+    return f"claim − derived ≠ 0 (entry {k // d.shape[1] + 1},{k % d.shape[1] + 1})"
+
+
+def _named(text) -> bool:
+    try:
+        toks = lx.scan(va.prepare(text))
+    except lx.NotRead:
+        return False
+    return len(toks) > 1 and toks[0].kind == "atom" and toks[1].kind == "rel"
+
+
+def _entry_name(source, member):
+    """('I', 'xy') when the member is one off-diagonal entry of the inertia tensor, else None."""
+    try:
+        toks = lx.scan(source[member.start:member.end])
+    except lx.NotRead:
+        return None
+    if len(toks) == 1 and toks[0].kind == "atom" and toks[0].value.base == "I" and len(toks[0].value.sub) == 2 \
+            and toks[0].value.sub[0] != toks[0].value.sub[1] and not toks[0].value.bold:
+        return ("I", toks[0].value.sub)
+    return None
+
+
+def _mentions(text, state) -> bool:
+    """A torque letter of the text, or an entry of the inertia tensor (I_xy), in the statement."""
+    try:
+        toks = lx.scan(va.prepare(text))
+    except lx.NotRead:
+        return False
+    for t in toks:
+        if t.kind != "atom":
+            continue
+        a = t.value
+        if a.base in state.torques and a.base not in va.TORQUES:
+            return True
+        if a.base == "I" and len(a.sub) == 2 and all(c in "xyz" for c in a.sub):
+            return True
+    return False
