@@ -121,15 +121,9 @@ def prepare(scene, **overrides):
     >>> round(float(a.beta[0]), 3), round(float(b.beta[0]), 3)
     (0.5, 0.6)
     """
-    from derive.sim.prepared import Prepared
-    from derive.sim.scene import contact_data
+    from derive.sim.prepared import prepare as _prepare
 
-    found = contact_data(scene)  # contact hook: a top on a table is prepared by derive.contact
-    if found is not None:
-        from derive.contact.prepared import ContactPrepared
-
-        return ContactPrepared(*found, **overrides)
-    return Prepared(scene, **overrides)
+    return _prepare(scene, **overrides)
 
 
 def simulate_batch(scenes, outputs=None, *, saveat=None, **overrides):

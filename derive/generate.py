@@ -16,8 +16,7 @@ from pathlib import Path
 
 from derive.codegen.render import render
 from derive.codegen.sources import model_sources, shipped_keys
-from derive.contact.kernel import generated_sources as contact_sources  # contact hook
-from derive.contact.reduced import generated_sources as reduced_sources  # contact hook
+from derive.contact.sources import generated_sources as contact_sources  # contact hook
 from derive.lecture import report
 from derive.sim import scene_doc
 from derive.sim.outputs import write_all
@@ -51,8 +50,7 @@ def _generate_everything() -> tuple:
     names = list(shipped_keys())
     files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=names)}
     files.update(scene_doc.documents())
-    files.update(contact_sources())  # contact hook: the kernels of tops on a table
-    files.update(reduced_sources())  # contact hook: the frictionless plane, reduced
+    files.update(contact_sources())  # contact hook: the kernels of tops on a table, full and reduced
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
         # Two workers derive the kernels (split so the costly Lagrangian models are shared out)
         # while this process writes the reports.

@@ -244,7 +244,8 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
 
 
 def _compiles_clean(pairs):
-    from derive.contact.kernel import LOOP, loop_source, source
+    from derive.contact.kernel import LOOP, loop_source
+    from derive.contact.sources import source
     from derive.runtime.cbuild import check_compiles
 
     for shape, law in pairs:
@@ -252,13 +253,13 @@ def _compiles_clean(pairs):
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
-    from derive.contact import reduced
     from derive.contact.kernel import LOOP, loop_source
+    from derive.contact.sources import reduced_source
     from derive.runtime.cbuild import check_compiles
 
     _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
     for shape in ("point", "sphere", "disc"):
-        check_compiles({"c.c": reduced.source(shape), LOOP: loop_source()}, "c.c")
+        check_compiles({"c.c": reduced_source(shape), LOOP: loop_source()}, "c.c")
 
 
 @pytest.mark.slow
@@ -635,3 +636,33 @@ def test_the_stem_touches_at_the_tilt_the_analysis_derives():
     assert r.switches[0].event == "stem"
     before = slice(int(np.searchsorted(r.t, t_s)) - 40, int(np.searchsorted(r.t, t_s)))  # the impact kinks β
     assert abs(float(make_interp_spline(r.t[before], r.beta[before], k=5)(t_s)) - tilt) <= 1e-9
+
+
+def test_the_contact_run_path_imports_neither_sympy_nor_scipy():
+    import subprocess
+    import sys
+
+    code = ("import sys, derive.contact.simulate, derive.contact.prepared, derive.export.contact, "
+            "derive.export.contact_fmu, derive.sweeps.contact; "
+            "print('sympy' in sys.modules, 'scipy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["False", "False"]
+
+
+def test_the_run_side_names_are_the_derivation_s_symbols():
+    from derive.contact import kernel as ck, reduced, scene, sources
+    from derive.contact.geometry import SHAPES
+
+    assert ck.PARAM_NAMES == tuple(str(p) for p in sources.PARAMS)
+    assert reduced.PARAM_NAMES == tuple(str(p) for p in sources.REDUCED_PARAMS)
+    assert scene.SHAPES == tuple(SHAPES)
+    assert scene.SPHERICAL == tuple(name for name, s in SHAPES.items() if s.spherical)
+
+
+def test_a_contact_model_missing_from_generated_is_derived_on_demand(tmp_path, monkeypatch):
+    from derive.codegen.render import GENERATED
+    from derive.contact import kernel as ck
+
+    name = "contact_point_none.c"
+    monkeypatch.setattr(ck, "GENERATED", tmp_path)
+    assert ck.text(name) == (GENERATED / "contact" / name).read_text(encoding="utf-8")

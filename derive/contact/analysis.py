@@ -24,7 +24,8 @@ import sympy as sp
 from derive.contact.equations import I1, I3, MASS, GRAV, OMEGA, contact
 from derive.contact.geometry import OFFSET, RADIUS, height_in_angles, vertical_in_body
 from derive.contact.integrals import expressions, holds
-from derive.contact.laws import LAWS, NORMAL
+from derive.contact.friction import NORMAL, power
+from derive.contact.laws import LAWS
 from derive.contact.scene import ContactScene
 from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
 from derive.symbolic.rotations import alpha, alpha_d, beta, beta_d, gamma_d
@@ -121,8 +122,7 @@ def analyze(sc: ContactScene) -> dict:
     names = holds(c, law, sc.symmetric)
     out = {"case": "contact", "shape": sc.shape, "law": sc.law,
            "integrals": [{"name": k, "expression": str(ints[k])} for k in names],
-           "energy_rate_sliding": None if law.power is None else
-           f"dE/dt = {law.power(NORMAL, sp.Matrix(sp.symbols('ut1 ut2 ut3', real=True)))}",
+           "energy_rate_sliding": f"dE/dt = {power(law, NORMAL, sp.Matrix(sp.symbols('ut1 ut2 ut3', real=True)))}",
            "equilibria": []}
     num = {I1: sc.I1, I3: sc.I3, MASS: sc.M, GRAV: sc.g, RADIUS: sc.radius, OFFSET: sc.offset}
     if sc.shape != "disc" and sc.symmetric:

@@ -28,7 +28,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.contact.geometry import N_VEC, SHAPES, Shape
-from derive.contact.laws import LAWS, NORMAL, Law
+from derive.contact.friction import NORMAL, force
+from derive.contact.laws import LAWS, Law
 
 I1, I2, I3 = sp.symbols("I1 I2 I3", positive=True)
 MASS, GRAV = sp.symbols("M g", positive=True)
@@ -88,7 +89,7 @@ class Contact:
 
     def sliding(self, law: Law) -> tuple[sp.Expr, sp.Matrix]:
         """(N, f) while sliding under ``law``: N solved from φ̈ = 0, f = N n + F_t(N, u_t)."""
-        f = NORMAL * N_VEC + law.force(NORMAL, SLIP)
+        f = NORMAL * N_VEC + force(law, NORMAL, SLIP)
         acc = sp.expand(self.gap_acceleration(f))
         c1, c0 = acc.coeff(NORMAL, 1), acc.coeff(NORMAL, 0)
         if sp.expand(acc - c1 * NORMAL - c0) != 0:

@@ -25,6 +25,7 @@ import sympy as sp
 from derive.contact.equations import I1, I2, I3, INERTIA, MASS, GRAV, OMEGA, VEL, Contact, dot
 from derive.contact.geometry import N_VEC
 from derive.contact.laws import Law
+from derive.contact.scene import integrals_held
 
 HEIGHT = sp.Symbol("z", real=True)
 
@@ -47,19 +48,8 @@ def expressions(c: Contact) -> dict[str, sp.Expr]:
 
 
 def holds(c: Contact, law: Law, symmetric: bool) -> tuple[str, ...]:
-    """The integrals the case has: what the law, the shape and the body's symmetry allow."""
-    out = []
-    if law.name == "none" or law.name == "rolling":
-        out.append("energy")
-    if law.name == "none":
-        out.append("p_alpha")
-        if symmetric:
-            out.append("p_gamma")
-    if symmetric and c.shape.spherical:
-        out.append("jellett")
-        if law.name == "rolling" and c.shape.name == "sphere":
-            out.append("routh")
-    return tuple(out)
+    """The integrals the case has (:func:`derive.contact.scene.integrals_held`)."""
+    return integrals_held(c.shape.name, law.name, symmetric)
 
 
 #: Moments of an axisymmetric body (I₂ = I₁) for the checks of the integrals.

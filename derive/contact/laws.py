@@ -1,4 +1,5 @@
-"""The contact laws as a registry: the tangential force at the contact and the phases it allows.
+"""The contact laws as a registry: the phases each allows (its force, in SymPy, is
+:mod:`derive.contact.friction`'s, so that a run reads this registry without SymPy).
 
 u is the velocity of the body's material point at the contact (body components), u_t = u − (u·n) n
 its slip (tangential) part, N ≥ 0 the normal force. While sliding the tangential force is
@@ -18,24 +19,14 @@ u = 0, bounded by |F_t| ≤ μ N for Coulomb. The power of the contact force is 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
-
-import sympy as sp
-
-MU, EPS = sp.symbols("mu epsilon", nonnegative=True)
-NORMAL = sp.Symbol("N", real=True)
-#: The slip direction the C code supplies for exact Coulomb (u_t/|u_t|, or the predicted one).
-SLIP_DIR = sp.Matrix(sp.symbols("d1 d2 d3", real=True))
 
 
 @dataclass(frozen=True)
 class Law:
-    """A contact law: the phases it has and its sliding friction force F_t(N, u_t)."""
+    """A contact law: its registry name, the phases it has and what it models."""
 
     name: str
     phases: tuple[str, ...]
-    force: Callable[[sp.Expr, sp.Matrix], sp.Matrix] | None
-    power: Callable[[sp.Expr, sp.Matrix], sp.Expr] | None
     description: str
 
     @property
@@ -52,23 +43,13 @@ class Law:
         return self.slides and self.rolls
 
 
-def _norm(v):
-    return sp.sqrt((v.T * v)[0])
-
-
 #: The laws by their registry name; ``[contact] friction`` (and ``regularization``) select one.
 LAWS: dict[str, Law] = {law.name: law for law in (
-    Law("none", ("slide", "flight"), lambda N, ut: sp.zeros(3, 1), lambda N, ut: sp.S.Zero,
-        "frictionless plane"),
-    Law("coulomb", ("slide", "roll", "flight"), lambda N, ut: -MU * N * SLIP_DIR,
-        lambda N, ut: -MU * N * _norm(ut), "Coulomb friction, sliding and rolling joined by events"),
-    Law("coulomb_regularized", ("slide", "flight"),
-        lambda N, ut: -MU * N * ut / sp.sqrt((ut.T * ut)[0] + EPS**2),
-        lambda N, ut: -MU * N * (ut.T * ut)[0] / sp.sqrt((ut.T * ut)[0] + EPS**2),
-        "Coulomb friction regularised with ε"),
-    Law("viscous", ("slide", "flight"), lambda N, ut: -MU * ut, lambda N, ut: -MU * (ut.T * ut)[0],
-        "viscous friction, force per slip speed μ"),
-    Law("rolling", ("roll", "flight"), None, lambda N, ut: sp.S.Zero, "rolling without slipping"),
+    Law("none", ("slide", "flight"), "frictionless plane"),
+    Law("coulomb", ("slide", "roll", "flight"), "Coulomb friction, sliding and rolling joined by events"),
+    Law("coulomb_regularized", ("slide", "flight"), "Coulomb friction regularised with ε"),
+    Law("viscous", ("slide", "flight"), "viscous friction, force per slip speed μ"),
+    Law("rolling", ("roll", "flight"), "rolling without slipping"),
 )}
 
 

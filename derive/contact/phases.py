@@ -42,8 +42,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.integrate import DOP853
-from scipy.optimize import brentq
 
 from derive.contact.kernel import OUTPUTS, PHASES, Kernel
 from derive.contact.laws import Law
@@ -323,6 +321,10 @@ class Phases:
 
     def _phase(self, run: Run, phase, t0, y0, d, t_end, nxt):
         """Integrate one phase from (t0, y0) until an event or t_end; fills the samples."""
+        # SciPy is the reference stepper's alone: a compiled run never loads it.
+        from scipy.integrate import DOP853
+        from scipy.optimize import brentq
+
         k, p = self.k, self.p
         events = self.events(phase)
         solver = DOP853(lambda t, y: k.rhs(phase, y, p, d), t0, y0, t_end, rtol=self.rtol,

@@ -13,7 +13,7 @@ Routh's reduction keeps them as parameters and leaves one degree of freedom,
     d/dt ∂R/∂β̇ = ∂R/∂β  (R = L − p_α α̇ − p_γ γ̇, solved for β̈),
     N = M (g + z̈) = M (g + z″ β̇² + z′ β̈),
 
-derived here from the shape's z(β) (:func:`derive.contact.geometry.height_in_angles`). The state
+derived (:mod:`derive.contact.sources`) from the shape's z(β) (:func:`derive.contact.geometry.height_in_angles`). The state
 (cos α, sin α, β, cos γ, sin γ, β̇) is integrated by the same compiled phase loop, with the
 lift-off event N = 0: α and γ as points on the unit circle, bounded, so that the loop's
 relative error control holds them as tightly at every time (as angles they grow without bound
@@ -28,60 +28,20 @@ import ctypes
 import functools
 
 import numpy as np
-import sympy as sp
 
-from derive.codegen.render import GENERATED, render
-from derive.contact.equations import GRAV, I1, I3, MASS, contact
-from derive.contact.geometry import OFFSET, RADIUS, SHAPES, height_in_angles
-from derive.contact.kernel import LOOP, OUTPUTS, c_block, loop_source
+from derive.contact.kernel import LOOP, OUTPUTS, text
 from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import METHOD
 from derive.errors import IntegrationError
 from derive.runtime.cbuild import compile_library
-from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
-from derive.symbolic.rotations import alpha_d, beta, beta_d, gamma_d
 
-#: The parameters, in order (the C names are the symbols').
-PARAMS = (I1, I3, MASS, GRAV, RADIUS, OFFSET, p_alpha, p_gamma)
+#: The parameters, in order (:data:`derive.contact.sources.REDUCED_PARAMS`, the symbols' names).
+PARAM_NAMES = ("I1", "I3", "M", "g", "r", "s", "p_alpha", "p_gamma")
 STATE = ("cos_alpha", "sin_alpha", "beta", "cos_gamma", "sin_gamma", "beta_dot")
-BETA_DD = sp.Symbol("beta_dd", real=True)
 #: The result's ``formulation`` when this chart ran.
 FORMULATION = "contact-reduced"
 #: sin β below this (a start or a sample) hands the scene to the full formulation.
 POLE = 1e-2
-
-
-@functools.lru_cache(maxsize=None)
-def equations(shape: str) -> dict[str, sp.Expr]:
-    """α̇, γ̇, β̈ and N of the reduced problem for ``shape``, in β, β̇ and the parameters."""
-    # the disc's rim height has |sin β|: β ∈ (0, π) here, where it is sin β
-    z = height_in_angles(contact(shape).shape).replace(sp.Abs, lambda x: x)
-    zdot = sp.diff(z, beta) * beta_d
-    L = MASS * zdot**2 / 2 + kinetic_energy_symmetric() - MASS * GRAV * z
-    rates = sp.solve([sp.diff(L, alpha_d) - p_alpha, sp.diff(L, gamma_d) - p_gamma], [alpha_d, gamma_d], dict=True)[0]
-    R = (L - p_alpha * alpha_d - p_gamma * gamma_d).subs(rates)
-    pb = sp.diff(R, beta_d)
-    acc = sp.diff(pb, beta) * beta_d + sp.diff(pb, beta_d) * BETA_DD - sp.diff(R, beta)
-    bdd = sp.solve(acc, BETA_DD)[0]
-    zdd = sp.diff(z, beta, 2) * beta_d**2 + sp.diff(z, beta) * BETA_DD
-    return {"alpha_d": rates[alpha_d], "gamma_d": rates[gamma_d], "beta_dd": bdd,
-            "N": MASS * (GRAV + zdd), "z": z, "z_d": zdot}
-
-
-@functools.lru_cache(maxsize=None)
-def source(shape: str) -> str:
-    """The C source of the reduced evaluator for ``shape`` (it includes the shared phase loop)."""
-    eq = equations(shape)
-    block = c_block([("alpha_d", eq["alpha_d"]), ("gamma_d", eq["gamma_d"]), ("beta_dd", eq["beta_dd"]),
-                     ("N", eq["N"].subs(BETA_DD, sp.Symbol("beta_dd"))), ("z", eq["z"]), ("z_d", eq["z_d"])])
-    return render("contact/reduced.c.j2", prefix=f"contact_{shape}_reduced", shape=shape, np=len(PARAMS),
-                  params=[str(p) for p in PARAMS], nout=len(OUTPUTS), block=block,
-                  o_N=OUTPUTS.index("N"), o_z=OUTPUTS.index("z"), o_vz=OUTPUTS.index("vz"))
-
-
-def generated_sources() -> dict[str, str]:
-    """Each shape's reduced source, keyed by its path under ``generated/``."""
-    return {f"contact/contact_{shape}_reduced.c": source(shape) for shape in SHAPES}
 
 
 class ReducedKernel:
@@ -89,11 +49,7 @@ class ReducedKernel:
 
     def __init__(self, shape: str):
         name = f"contact_{shape}_reduced"
-        path = GENERATED / "contact" / f"{name}.c"
-        text = path.read_text(encoding="utf-8") if path.is_file() else source(shape)
-        loop = GENERATED / "contact" / LOOP
-        shared = loop.read_text(encoding="utf-8") if loop.is_file() else loop_source()
-        lib = compile_library(name, {f"{name}.c": text, LOOP: shared}, f"{name}.c")
+        lib = compile_library(name, {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP)}, f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5

@@ -20,6 +20,9 @@ from derive.symbolic.effects import TABLES
 FRICTIONS = ("none", "coulomb", "viscous", "rolling")
 #: The shapes of :data:`derive.contact.geometry.SHAPES` (named here so reading a scene needs no SymPy).
 SHAPES = ("point", "sphere", "disc")
+#: The shapes whose ``spherical`` is set there: the contact point on a sphere about a point of
+#: the symmetry axis (a tip is a sphere of radius 0).
+SPHERICAL = ("point", "sphere")
 #: The effect table that holds M and g (the only effect a contact scene has besides the contact).
 GRAVITY = next(name for name, t in TABLES.items() if {"M", "g"} <= {k.name for k in t.keys})
 #: The steppers: the compiled phase loop on the registry's DOP853 tableau ("auto"), and SciPy's
@@ -236,3 +239,21 @@ def _stem(source, c, shape):
         raise _fail(source, "contact.stem", "must be a table {radius = ..., offset = ...}")
     r = _number(source, st, "contact.stem", "radius", None, lambda x: x > 0, "a positive number")
     return r, _number(source, st, "contact.stem", "offset", 0.0)
+
+
+def integrals_held(shape: str, law: str, symmetric: bool) -> tuple[str, ...]:
+    """The integrals a case has, by what the law, the shape and the body's symmetry allow:
+    E frictionless or rolling; p_α frictionless, and p_γ with I₁ = I₂; Jellett's J = (I ω)·a
+    for an axisymmetric body on a spherical surface, and Routh's for a ball rolling."""
+    out = []
+    if law in ("none", "rolling"):
+        out.append("energy")
+    if law == "none":
+        out.append("p_alpha")
+        if symmetric:
+            out.append("p_gamma")
+    if symmetric and shape in SPHERICAL:
+        out.append("jellett")
+        if law == "rolling" and shape == "sphere":
+            out.append("routh")
+    return tuple(out)

@@ -11,13 +11,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.contact.equations import contact
-from derive.contact.integrals import holds
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
 from derive.contact import reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
-from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, read
+from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, integrals_held, read
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
 
@@ -132,7 +130,7 @@ def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
     gamma = np.unwrap(np.arctan2(R[:, 2, 1], -R[:, 2, 0]))
     com = run.y[:, 7:10]
-    names = holds(contact(sc.shape), LAWS[sc.law], sc.symmetric)
+    names = integrals_held(sc.shape, sc.law, sc.symmetric)
     return ContactResult(
         scene=sc, t=run.t, alpha=alpha, beta=beta, gamma=gamma, omega=run.y[:, 4:7].copy(),
         axis=R[:, :, 2].copy(), energy=outs[:, _O["energy"]], com=com.copy(),

@@ -16,10 +16,8 @@ import numpy as np
 
 from derive.codegen.render import c_double, render
 from derive.contact import kernel as ck
-from derive.contact.equations import contact
-from derive.contact.integrals import holds
 from derive.contact.laws import LAWS
-from derive.contact.scene import COMPILED, METHOD, ContactScene, read
+from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
 from derive.contact.simulate import body_omega, params, simulate
 from derive.errors import SceneError
 
@@ -41,9 +39,7 @@ def model_name(sc: ContactScene) -> str:
 def model_files(sc: ContactScene) -> dict[str, str]:
     """The model's C: its evaluator, the phase loop and the driver, by file name."""
     name = model_name(sc)
-    shipped = ck.shipped_source(sc.shape, sc.law) or ck.source(sc.shape, sc.law)
-    return {f"{name}.c": shipped, ck.LOOP: ck.shipped_text(ck.LOOP, ck.loop_source),
-            ck.RUN: ck.shipped_text(ck.RUN, ck.run_source)}
+    return {f"{name}.c": ck.text(f"{name}.c"), ck.LOOP: ck.text(ck.LOOP), ck.RUN: ck.text(ck.RUN)}
 
 
 def lib_source(sc: ContactScene) -> str:
@@ -66,7 +62,7 @@ def start_omega(sc: ContactScene) -> np.ndarray:
 
 def integral_outputs(sc: ContactScene) -> list[tuple[str, int]]:
     """The integrals the case has and their index in the evaluator's outputs."""
-    names = holds(contact(sc.shape), LAWS[sc.law], sc.symmetric)
+    names = integrals_held(sc.shape, sc.law, sc.symmetric)
     return [(n, ck.OUTPUTS.index(n)) for n in names]
 
 

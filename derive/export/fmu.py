@@ -29,6 +29,7 @@ from xml.sax.saxutils import escape
 from derive.codegen.render import TEMPLATES, c_double, environment
 from derive.errors import SceneError
 from derive.export import bundle as bundles
+from derive.export import contact as contact_export, contact_fmu
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
 from derive.export.fmi import HEADERS, UNITS, Var, archive, version, zip_files
 from derive.sim.outputs import check_paths, write_all
@@ -174,8 +175,6 @@ def export_fmu(scene, out, method: str | None = None) -> Bundle:
         raise SceneError(f"{name}: --fmu: the file name must end in .fmu")
     found = contact_data(scene) if not isinstance(scene, bundles.Scene) else None
     if found is not None:  # a top on a table: co-simulation of the phases and their events
-        from derive.export import contact as contact_export, contact_fmu  # SymPy, SciPy: only these
-
         b = contact_export.bundle(found, method)
         files = archive(*contact_fmu.sources(b), contact_fmu.model_identifier(b))
     else:

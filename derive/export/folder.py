@@ -22,6 +22,7 @@ from pathlib import Path
 from derive.codegen.render import c_double, render
 from derive.errors import SceneError
 from derive.export import bundle as bundles
+from derive.export import contact as contact_export
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
 from derive.methods.registry import method as compiled_method
 from derive.sim.outputs import umask
@@ -137,8 +138,6 @@ def export_folder(scene, out, method: str | None = None) -> Bundle:
     check_out(out)  # before the work
     found = contact_data(scene) if not isinstance(scene, bundles.Scene) else None
     if found is not None:  # a top on a table: its evaluator and the phase driver
-        from derive.export import contact as contact_export  # SymPy and SciPy: only for these
-
         b = contact_export.bundle(found, method)
         texts = contact_export.files(b.scene)
     else:

@@ -15,17 +15,27 @@ import math
 
 import numpy as np
 
+from derive.contact.prepared import ContactPrepared  # the contact hook
 from derive.errors import SceneError
 from derive.methods.registry import tolerance_driven
 from derive.sim import batch, plan, simulation
 from derive.sim.inputs import params_of
 from derive.sim.result import kept, selection
 from derive.sim.saveat import choose
-from derive.sim.scene import load_scene
+from derive.sim.scene import contact_data, load_scene  # contact_data: the contact hook
 from derive.symbolic.formulations import INPUT_NAMES, starts_accepted
 
 _ANGLES = ("alpha", "beta", "gamma")
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
+
+
+def prepare(scene, **overrides):
+    """A :class:`Prepared` of ``scene``, or for a top on a table the contact stage's
+    :class:`~derive.contact.prepared.ContactPrepared` (see :func:`derive.prepare`)."""
+    found = contact_data(scene)  # contact hook: a top on a table is prepared by derive.contact
+    if found is not None:
+        return ContactPrepared(*found, **overrides)
+    return Prepared(scene, **overrides)
 
 
 class Prepared:

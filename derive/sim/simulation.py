@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from derive.contact.simulate import run_scene  # the contact hook
 from derive.errors import IntegrationError
 from derive.methods.status import Status
 from derive.sim import plan
@@ -41,7 +42,6 @@ def simulate(scene, saveat: SaveAt | None = None, **overrides) -> Result:
     validate it, plan it, run the plan, keep what ``saveat`` asks for (:func:`kept`)."""
     found = contact_data(scene)  # -- contact hook: a top on a table runs in derive.contact --
     if found is not None:
-        from derive.contact.simulate import run_scene  # SymPy and SciPy: only for contact scenes
         return run_scene(*found, **overrides)  # -- end of the contact hook --
     return kept(run(plan.make(load_scene(scene, **overrides))), saveat)
 

@@ -65,6 +65,7 @@ from derive.sim.result import _explain
 from derive.sweeps import measures as ms
 from derive.sweeps.cluster import _dask, check_engine
 from derive.sweeps.local import _in_process, _local
+from derive.sweeps.contact import sweep as run_contact  # the contact hook
 from derive.sweeps.points import _runnable
 from derive.sweeps.result import SweepResult, write
 from derive.sweeps.spec import contact_sweep, input_files, load
@@ -122,8 +123,6 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, processes=None,
     if found is not None:
         if saveat is not None:
             raise SceneError(f"{source}: saveat: a sweep over a top on a table keeps its measures only")
-        from derive.sweeps.contact import sweep as run_contact  # SymPy and SciPy: only for these
-
         return run_contact(found, workers=workers, scheduler=scheduler, add_measure=add_measure)
     sp = load(spec)
     extra = final_measures(saveat, sp.source)
