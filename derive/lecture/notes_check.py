@@ -46,9 +46,10 @@ from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.moments_small import SmallMoments
-from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, series_order, zero
+from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.context import Context, Reading
-from derive.lecture.derivation import derivation, families
+from derive.lecture.derivation import derivation
+from derive.lecture.judging import Judging
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.on_the_motion import OnTheMotion
@@ -91,10 +92,9 @@ def _name_tex(name: str) -> str:
     return "\\" + base + (f"_{{{sub}}}" if sub else "")
 
 
-# ---- results ------------------------------------------------------------------------------------
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
-              SmallMoments):
+              SmallMoments, Judging):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -347,51 +347,6 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
             out.append(v.xreplace(rep) if rep else v)
         return out
 
-    def _case_subs(self, v, case, solutions=True):
-        rep = dict(self.ctx.subs)
-        if solutions:
-            rep.update(self.ctx.solutions)
-        if rep:
-            v = self._resolve(v.xreplace(rep)).xreplace(rep)
-        return v.xreplace(case) if case else v
-
-    def _compare(self, claim_value, form, seed, small=None, order=None) -> tuple[bool, str]:
-        """Is the claim's value the derived form, in every case of the section?"""
-        a, b = self._unify([claim_value, form])
-        try:
-            A, B = column(a), column(b)
-        except Mismatch as err:
-            return False, str(err)
-        why = []
-        for k, case in enumerate(self.ctx.cases):
-            Ac = A.applyfunc(lambda x: self._case_subs(x, case))
-            Bc = B.applyfunc(lambda x: self._case_subs(x, case))
-            if small is not None:
-                ok, how = self._series_zero(Ac, Bc, small, order)
-            else:
-                ok, how = zero(Ac, Bc, f"{seed}/{k}")
-            if not ok:
-                where = f" (case {k + 1} of {len(self.ctx.cases)}: {self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
-                return False, how + where
-            why.append(how)
-        return True, why[0]
-
-    def _case_text(self, case):
-        return ", ".join(f"{self.tex(s)} {'> 0' if v.could_extract_minus_sign() is False else '< 0'}" for s, v in case.items())
-
-    def _series_zero(self, A, B, x, order):
-        # sin x and cos x by their Taylor polynomials first: the series of a rational function is
-        # cheap, that of quotients of sines is not (a second each).
-        n = order + 4
-        taylor = {sp.sin(x): sum((-1) ** k * x ** (2 * k + 1) / sp.factorial(2 * k + 1) for k in range(n // 2 + 1)),
-                  sp.cos(x): sum((-1) ** k * x ** (2 * k) / sp.factorial(2 * k) for k in range(n // 2 + 1))}
-        for a, b in zip(A, B):
-            d = sp.cancel(sp.together((a - b).xreplace(taylor)))
-            d = sp.series(d, x, 0, order).removeO()
-            if sp.simplify(d) != 0:
-                return False, f"series in {self.tex(x)} to order {order - 1}: claim − derived = {self.tex(sp.factor(d))}"
-        return True, f"series in ${self.tex(x)}$ to order {order - 1}"
-
     # -- kinds
     def _definition(self, line, piece, parsed):
         m0 = parsed.members[0]
@@ -522,44 +477,6 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
             return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
                     "of them there): a condition, such as a turning point or the orientation the text chose")
         return None
-
-    def _search(self, value, targets, label, parsed, k, small, order, keep):
-        """The nearest correct form by one edit of the member or of the label, or None."""
-        tried = 0
-        for f in targets:
-            target = self._resolve(f)
-            for cand, what in edits(value):
-                tried += 1
-                if tried > 400:
-                    return None
-                val = self._resolve(cand, keep=keep)
-                a, b = self._unify([val, target])
-                if small is None and not quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
-                    continue
-                ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
-                if ok:
-                    self._last_fix = cand
-                    return self._render(parsed, k, cand), what
-        # a swapped label
-        if isinstance(label, sp.Symbol):
-            for fam in families():
-                if label in fam:
-                    for other in fam:
-                        if other == label:
-                            continue
-                        for f in self.d.forms(other):
-                            ok, _ = self._compare(self._resolve(value), self._resolve(f), "label", small, order)
-                            if ok:
-                                return self._render(parsed, k, value, label=other), "a swapped label"
-        return None
-
-    def _render(self, parsed, k, value, label=None):
-        left = label if label is not None else parsed.members[0].value
-        rel = {"=": "=", "≡": r"\equiv", "≈": r"\approx", "≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[parsed.relations[k - 1]]
-        lhs = self.tex(left)
-        if parsed.members[0].args and label is None:
-            lhs += r"\left(" + ", ".join(self.tex(a) for a in parsed.members[0].args) + r"\right)"
-        return f"{lhs} {rel} {self.tex(value)}"
 
     def _lagrangian(self, line, piece, value):
         """L(β, β̇) used as a Lagrangian: β̈ from its Euler–Lagrange equation against the derived one."""

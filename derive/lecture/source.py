@@ -3,7 +3,7 @@
 Takes: the text of a notes file, or one formula of it. Gives: the text with what is not rendered
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
-May import: the standard library and ``pylatexenc``.
+May import: the standard library, ``pylatexenc`` and `derive.lecture.texmacros`.
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -25,8 +25,9 @@ What is normalised:
   ``\\dv``/``\\pdv`` (the physics package's derivatives), ``\\vdot``/``\\cross``.
 * **Degrees**: ``30^{\\circ}`` is 30·π/180.
 * **Order of scripts**: ``\\omega^2_1`` is ``\\omega_1^2``; an empty group ``{}`` is nothing.
-* **The file's macros**: ``\\newcommand``, ``\\renewcommand``, ``\\def`` and
-  ``\\DeclareMathOperator``, with their arguments (#1 … #9), expanded wherever they are used.
+* **The file's macros**: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand``, ``\\def``
+  and ``\\DeclareMathOperator``, with their arguments (#1 … #9) and an optional first argument's
+  default, expanded as TeX expands them before the walk (`derive.lecture.texmacros`).
 """
 from __future__ import annotations
 
@@ -40,6 +41,8 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     LatexSpecialsNode, LatexWalker,
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
+
+from derive.lecture import texmacros
 
 # --- characters --------------------------------------------------------------------------------
 _UNICODE = {
@@ -119,65 +122,9 @@ def rendered(text: str) -> str:
     return _CODE.sub(_blank, text)
 
 
-# --- the file's macros -------------------------------------------------------------------------
-_NEWCOMMAND = re.compile(r"\\(?:re)?newcommand\*?\s*\{?\s*\\([A-Za-z]+)\s*\}?\s*(?:\[(\d)\])?\s*(?:\[[^\]]*\])?\s*\{")
-_DEF = re.compile(r"\\def\s*\\([A-Za-z]+)\s*((?:#\d)*)\s*\{")
-_OPERATOR = re.compile(r"\\DeclareMathOperator\*?\s*\{?\s*\\([A-Za-z]+)\s*\}?\s*\{")
-
-
-def _braced(text: str, start: int) -> tuple[str, int] | None:
-    """The content of the group whose '{' is text[start - 1], and the index after its '}'."""
-    depth, j = 1, start
-    while j < len(text):
-        ch = text[j]
-        if ch == "\\":
-            j += 2
-            continue
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-            if depth == 0:
-                return text[start:j], j + 1
-        j += 1
-    return None
-
-
-def macros(text: str) -> dict:
-    """The macros a file defines: name → (number of arguments, body). Later definitions win."""
-    found = []
-    for pattern, kind in ((_NEWCOMMAND, "new"), (_DEF, "def"), (_OPERATOR, "op")):
-        for m in pattern.finditer(text):
-            got = _braced(text, m.end())
-            if got is None:
-                continue
-            body = got[0]
-            if kind == "new":
-                nargs = int(m.group(2) or 0)
-            elif kind == "def":
-                nargs = len(m.group(2)) // 2
-            else:
-                nargs, body = 0, r"\operatorname{" + body + "}"
-            found.append((m.start(), m.group(1), (nargs, body)))
-    return {name: spec for _, name, spec in sorted(found)}
-
-
-def definitions_removed(latex: str) -> str:
-    """A formula without the macro definitions written in it (a display that only defines macros
-    becomes empty)."""
-    out, i, spans = [], 0, []
-    for pattern in (_NEWCOMMAND, _DEF, _OPERATOR):
-        for m in pattern.finditer(latex):
-            got = _braced(latex, m.end())
-            if got is not None:
-                spans.append((m.start(), got[1]))
-    for a, b in sorted(spans):
-        if a < i:
-            continue
-        out.append(latex[i:a])
-        i = b
-    out.append(latex[i:])
-    return "".join(out)
+# --- the file's macros (read and expanded in `derive.lecture.texmacros`) ------------------------
+macros = texmacros.definitions
+definitions_removed = texmacros.definitions_removed
 
 
 # --- the walk ----------------------------------------------------------------------------------
@@ -245,32 +192,6 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     post = node.macro_post_space or ""
     if name == "\\":
         return "\\\\ ", 0                  # a row break; its spacing argument ([10pt]) is no mathematics
-    if name in user:
-        nargs, body = user[name]
-        args, used, j = [], 0, k + 1
-        # arguments the walker already took (it knows \\b, \\u as accents), then the nodes after it
-        for a in (node.nodeargd.argnlist if node.nodeargd is not None else []):
-            if a is not None and len(args) < nargs:
-                args.append(_print(a.nodelist, user) if isinstance(a, LatexGroupNode) else _print([a], user))
-        while len(args) < nargs and j < len(nodes):
-            nxt = nodes[j]
-            j += 1
-            used += 1
-            if isinstance(nxt, LatexCharsNode):
-                text = nxt.chars.lstrip()
-                if not text:
-                    continue
-                args.append(text[0])
-                rest = text[1:]
-                if rest:
-                    # the characters after a one-letter argument are text again
-                    nodes.insert(j, LatexCharsNode(parsing_state=nxt.parsing_state, chars=rest,
-                                                   pos=nxt.pos, len=nxt.len))
-                continue
-            args.append(_print(nxt.nodelist, user) if isinstance(nxt, LatexGroupNode) else _print([nxt], user))
-        for n, value in enumerate(args, start=1):
-            body = body.replace(f"#{n}", value)
-        return " " + normalize(body, user) + " ", used
     if name in _DROP:
         return " ", 0
     if name in _WRAP:
@@ -423,6 +344,8 @@ def _cross_matrices(text: str) -> str:
 
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
+_DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
+_EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
 _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*("
@@ -446,15 +369,23 @@ def normalize(latex: str, user: dict | None = None) -> str:
         its characters normalised.
     """
     latex = definitions_removed(characters(latex))
+    user = user or {}
+    try:
+        latex = texmacros.expand(latex, user)
+    except texmacros.MacroLoop as loop:
+        # a macro that expands into itself stays as written: the reader names it as unreadable
+        latex = texmacros.expand(latex, {k: v for k, v in user.items() if k != loop.name})
     try:
         nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()
-        text = _print(nodes, user or {})
+        text = _print(nodes, user)
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
     text = _cross_matrices(text)
     text = _ROW_STOP.sub(" ", text)                  # "1." before a row's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
+    text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
+    text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     return re.sub(r"[ \t]{2,}", " ", text).strip()

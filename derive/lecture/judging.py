@@ -1,0 +1,108 @@
+"""A claim's value against the derived forms, in every case of its section, and the nearest
+correct form by one edit.
+
+Takes: the state of the notes checker (`derive.lecture.notes_check.Checker`: its context's
+settings, solutions and sign cases, its resolution of the text's names). Gives: the mixin
+`Judging` of the checker —
+
+* ``_compare``: is the value the derived form in every sign case the section states (the zero
+  test of `derive.lecture.comparing`, or a series to the claim's own order for an approximation)?
+* ``_search``: one edit of the value (a sign, an index, sin ↔ cos, a factor, a power) or of the
+  label that makes it hold, rendered as the statement with its left side;
+* ``_render``: a statement as LaTeX in the text's relation.
+
+May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.derivation`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture.comparing import Mismatch, column, edits, quick_equal, zero
+from derive.lecture.derivation import families
+
+
+class Judging:
+    """Mixin of the notes checker: compare with the derivation, search for a one-edit correction."""
+
+    def _case_subs(self, v, case, solutions=True):
+        rep = dict(self.ctx.subs)
+        if solutions:
+            rep.update(self.ctx.solutions)
+        if rep:
+            v = self._resolve(v.xreplace(rep)).xreplace(rep)
+        return v.xreplace(case) if case else v
+
+    def _compare(self, claim_value, form, seed, small=None, order=None) -> tuple[bool, str]:
+        """Is the claim's value the derived form, in every case of the section?"""
+        a, b = self._unify([claim_value, form])
+        try:
+            A, B = column(a), column(b)
+        except Mismatch as err:
+            return False, str(err)
+        why = []
+        for k, case in enumerate(self.ctx.cases):
+            Ac = A.applyfunc(lambda x: self._case_subs(x, case))
+            Bc = B.applyfunc(lambda x: self._case_subs(x, case))
+            if small is not None:
+                ok, how = self._series_zero(Ac, Bc, small, order)
+            else:
+                ok, how = zero(Ac, Bc, f"{seed}/{k}")
+            if not ok:
+                where = f" (case {k + 1} of {len(self.ctx.cases)}: {self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
+                return False, how + where
+            why.append(how)
+        return True, why[0]
+
+    def _case_text(self, case):
+        return ", ".join(f"{self.tex(s)} {'> 0' if v.could_extract_minus_sign() is False else '< 0'}" for s, v in case.items())
+
+    def _series_zero(self, A, B, x, order):
+        # sin x and cos x by their Taylor polynomials first: the series of a rational function is
+        # cheap, that of quotients of sines is not (a second each).
+        n = order + 4
+        taylor = {sp.sin(x): sum((-1) ** k * x ** (2 * k + 1) / sp.factorial(2 * k + 1) for k in range(n // 2 + 1)),
+                  sp.cos(x): sum((-1) ** k * x ** (2 * k) / sp.factorial(2 * k) for k in range(n // 2 + 1))}
+        for a, b in zip(A, B):
+            d = sp.cancel(sp.together((a - b).xreplace(taylor)))
+            d = sp.series(d, x, 0, order).removeO()
+            if sp.simplify(d) != 0:
+                return False, f"series in {self.tex(x)} to order {order - 1}: claim − derived = {self.tex(sp.factor(d))}"
+        return True, f"series in ${self.tex(x)}$ to order {order - 1}"
+
+    def _search(self, value, targets, label, parsed, k, small, order, keep):
+        """The nearest correct form by one edit of the member or of the label, or None."""
+        tried = 0
+        for f in targets:
+            target = self._resolve(f)
+            for cand, what in edits(value):
+                tried += 1
+                if tried > 400:
+                    return None
+                val = self._resolve(cand, keep=keep)
+                a, b = self._unify([val, target])
+                if small is None and not quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
+                    continue
+                ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
+                if ok:
+                    self._last_fix = cand
+                    return self._render(parsed, k, cand), what
+        # a swapped label
+        if isinstance(label, sp.Symbol):
+            for fam in families():
+                if label in fam:
+                    for other in fam:
+                        if other == label:
+                            continue
+                        for f in self.d.forms(other):
+                            ok, _ = self._compare(self._resolve(value), self._resolve(f), "label", small, order)
+                            if ok:
+                                return self._render(parsed, k, value, label=other), "a swapped label"
+        return None
+
+    def _render(self, parsed, k, value, label=None):
+        left = label if label is not None else parsed.members[0].value
+        rel = {"=": "=", "≡": r"\equiv", "≈": r"\approx", "≥": r"\ge", "≤": r"\le", ">": ">", "<": "<"}[parsed.relations[k - 1]]
+        lhs = self.tex(left)
+        if parsed.members[0].args and label is None:
+            lhs += r"\left(" + ", ".join(self.tex(a) for a in parsed.members[0].args) + r"\right)"
+        return f"{lhs} {rel} {self.tex(value)}"

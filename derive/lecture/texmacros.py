@@ -1,0 +1,247 @@
+"""A text's own LaTeX macros: their definitions read, and their uses expanded as TeX expands them.
+
+Takes: the text of a notes file (its definitions) and one formula of it (the uses). Gives: the
+macros the file defines (`definitions`), the formula without those definitions
+(`definitions_removed`) and the formula with every use replaced by the macro's body
+(`expand`).
+May import: the standard library.
+
+What is read: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand`` (starred or not, the
+name braced or not), with ``[n]`` arguments and an optional first argument with its default
+(``\\newcommand{\\diff}[3][]{…}``: ``\\diff{x}{t}`` takes #1 from the default, ``\\diff[2]{x}{t}``
+from the brackets); ``\\def\\x{…}`` and ``\\def\\x#1#2{…}``; ``\\DeclareMathOperator{\\Tr}{Tr}``
+(an ``\\operatorname``). Arguments are read as TeX reads undelimited ones: a braced group (its
+braces stripped), else one token (a control sequence or a character). Macros used inside other
+macros' bodies are expanded in turn; a macro whose expansion reaches itself raises `MacroLoop`
+naming it, where TeX would loop forever.
+
+Why a scanner of its own rather than pylatexenc's walker: the walker parses the arguments of the
+macros it is told about but expands nothing (no #n substitution, no default, no rescanning of a
+body), and it does not know ``\\def``'s parameter text; the TeX rules for one argument (a group or
+one token) are the whole grammar needed here, and they are applied on the text before the walker
+(`derive.lecture.source`) normalises the expanded formula.
+"""
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+_HEAD = re.compile(r"\\(newcommand|renewcommand|providecommand|DeclareMathOperator|def)(?![A-Za-z])")
+_WORD = re.compile(r"\\([A-Za-z]+)")
+
+
+class Macro(NamedTuple):
+    """One macro: how many arguments, its body (#1 … #9 in it) and the default of an optional
+    first argument (None when the first argument is not optional)."""
+    nargs: int
+    body: str
+    default: str | None = None
+
+
+class MacroLoop(ValueError):
+    """A macro whose expansion reaches itself (TeX would loop forever)."""
+
+    def __init__(self, name: str):
+        super().__init__(f"the macro '\\{name}' expands into itself")
+        self.name = name
+
+
+def _skip_space(text: str, i: int) -> int:
+    while i < len(text) and text[i] in " \t\n":
+        i += 1
+    return i
+
+
+def _group(text: str, i: int, open_: str = "{", close: str = "}") -> tuple[str, int] | None:
+    """The content of the group opening at text[i] (brace-balanced) and the index after it."""
+    if i >= len(text) or text[i] != open_:
+        return None
+    depth, j = 0, i + (0 if open_ == "{" else 1)
+    while j < len(text):
+        ch = text[j]
+        if ch == "\\":
+            j += 2
+            continue
+        if ch == "{":
+            depth += 1
+        elif ch == "}":
+            depth -= 1
+            if open_ == "{" and depth == 0:
+                return text[i + 1:j], j + 1
+            if depth < 0:
+                return None
+        elif ch == close and depth == 0 and open_ != "{":
+            return text[i + 1:j], j + 1
+        j += 1
+    return None
+
+
+def _token(text: str, i: int) -> tuple[str, int] | None:
+    """One undelimited argument at text[i] (spaces skipped): a braced group's content, a control
+    sequence, a parameter (#1) or one character."""
+    i = _skip_space(text, i)
+    if i >= len(text) or text[i] in "}":
+        return None
+    if text[i] == "{":
+        return _group(text, i)
+    if text[i] == "\\":
+        m = _WORD.match(text, i)
+        return (m.group(0), m.end()) if m else (text[i:i + 2], i + 2)
+    if text[i] == "#" and i + 1 < len(text) and text[i + 1].isdigit():
+        return text[i:i + 2], i + 2
+    return text[i], i + 1
+
+
+def _name(text: str, i: int) -> tuple[str, int] | None:
+    """The macro name being defined at text[i]: ``\\x`` or ``{\\x}``."""
+    i = _skip_space(text, i)
+    got = _group(text, i)
+    inner, j = got if got else (text[i:], None)
+    m = _WORD.match(inner.strip())
+    if m is None:
+        return None
+    return (m.group(1), j) if got else (m.group(1), i + m.end())
+
+
+def _definition(text: str, m: re.Match) -> tuple[str, Macro, int] | None:
+    """The definition starting at match m: its name, the macro and the index after its body."""
+    kind, i = m.group(1), m.end()
+    if kind != "def" and text[i:i + 1] == "*":
+        i += 1
+    got = _name(text, i)
+    if got is None:
+        return None
+    name, i = got
+    if kind == "def":
+        params = re.compile(r"\s*((?:#\d)*)\s*\{").match(text, i)
+        if params is None:
+            return None                  # delimited parameters (#1.) are not read
+        body = _group(text, params.end() - 1)
+        return (name, Macro(len(params.group(1)) // 2, body[0]), body[1]) if body else None
+    if kind == "DeclareMathOperator":
+        body = _group(text, _skip_space(text, i))
+        return (name, Macro(0, r"\operatorname{" + body[0] + "}"), body[1]) if body else None
+    nargs, default = 0, None
+    j = _skip_space(text, i)
+    count = _group(text, j, "[", "]")
+    if count is not None and count[0].strip().isdigit():
+        nargs, j = int(count[0]), _skip_space(text, count[1])
+        opt = _group(text, j, "[", "]")
+        if opt is not None:
+            default, j = opt[0], _skip_space(text, opt[1])
+    body = _group(text, j)
+    return (name, Macro(nargs, body[0], default), body[1]) if body else None
+
+
+def _definitions_in(text: str):
+    for m in _HEAD.finditer(text):
+        got = _definition(text, m)
+        if got is not None:
+            yield m.start(), m.group(1), got
+
+
+def definitions(text: str) -> dict[str, Macro]:
+    """The macros a file defines, name → `Macro`, in the order TeX meets them: a later
+    ``\\newcommand``, ``\\renewcommand`` or ``\\def`` replaces an earlier one; ``\\providecommand``
+    defines only a name the file has not defined before."""
+    found: dict[str, Macro] = {}
+    for _, kind, (name, macro, _) in _definitions_in(text):
+        if kind == "providecommand" and name in found:
+            continue
+        found[name] = macro
+    return found
+
+
+def definitions_removed(latex: str) -> str:
+    """A formula without the macro definitions written in it (a display that only defines macros
+    becomes blank)."""
+    out, i = [], 0
+    for start, _, (_, _, end) in _definitions_in(latex):
+        if start < i:
+            continue
+        out.append(latex[i:start])
+        i = end
+    out.append(latex[i:])
+    return "".join(out)
+
+
+def _join(left: str, right: str) -> str:
+    """left + right, a space between a control word and a letter that would otherwise merge."""
+    if right[:1].isalpha() and re.search(r"\\[A-Za-z]+$", left):
+        return left + " " + right
+    return left + right
+
+
+def _substitute(body: str, args: list[str]) -> str:
+    """The body with #1 … #9 replaced by the arguments, in one pass (an argument that contains
+    ``#2`` is not substituted again)."""
+    out, i = "", 0
+    for m in re.finditer(r"#(\d)", body):
+        n = int(m.group(1))
+        out = _join(_join(out, body[i:m.start()]), args[n - 1] if n <= len(args) else m.group(0))
+        i = m.end()
+    return _join(out, body[i:])
+
+
+def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) -> str:
+    """The formula with each use of the file's macros replaced by its body, arguments
+    substituted, and macros in the result expanded in turn.
+
+    Parameters
+    ----------
+    latex : str
+        One formula.
+    user : dict
+        The file's macros (`definitions`).
+    active : frozenset
+        The macros being expanded around this text (a use of one of them is a loop).
+
+    Returns
+    -------
+    str
+        The expanded formula; a use without all its arguments is left as written.
+
+    Raises
+    ------
+    MacroLoop
+        A macro's expansion reaches that macro again.
+    """
+    if not user or "\\" not in latex:
+        return latex
+    out, i = "", 0
+    while i < len(latex):
+        m = _WORD.search(latex, i)
+        if m is None:
+            break
+        # a control symbol (\\, \{) is one token: never the start of a control word
+        j = m.start()
+        if m.group(1) not in user or (j > 0 and latex[j - 1] == "\\" and (j < 2 or latex[j - 2] != "\\")):
+            out, i = _join(out, latex[i:m.end()]), m.end()
+            continue
+        name, macro = m.group(1), user[m.group(1)]
+        if name in active:
+            raise MacroLoop(name)
+        args, k, complete = [], m.end(), True
+        if macro.default is not None:
+            opt = _group(latex, _skip_space(latex, k), "[", "]")
+            if opt is not None:
+                args.append(opt[0])
+                k = opt[1]
+            else:
+                args.append(macro.default)
+        while len(args) < macro.nargs:
+            got = _token(latex, k)
+            if got is None:
+                complete = False
+                break
+            args.append(got[0])
+            k = got[1]
+        if not complete:
+            out, i = _join(out, latex[i:m.end()]), m.end()
+            continue
+        args = [expand(a, user, active) for a in args]
+        body = expand(macro.body, user, active | {name})
+        body = _substitute(body, args)
+        out = _join(_join(out, latex[i:m.start()]), body)
+        i = k
+    return _join(out, latex[i:])
