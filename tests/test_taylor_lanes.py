@@ -4,10 +4,10 @@ own steps. Each trajectory's state, outputs, status and statistics are the scala
 driver's (built with the default flags) bit for bit, failing lanes included, and
 ``derive.simulate_batch(..., outputs="final")`` with the Taylor method runs it."""
 import re
-import threading
 
 import numpy as np
 import pytest
+from interrupts import CpuTimer
 
 import derive
 from derive.methods.status import Status
@@ -244,7 +244,7 @@ def test_an_interrupt_stops_the_lanes():
     bp, desc, _, native, args, pole = kernels(sc, "reduced-u")
     if native._guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
-    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
+    timer = CpuTimer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
@@ -268,7 +268,7 @@ def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
     monkeypatch.setattr(native, "_guard", None)
-    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
+    timer = CpuTimer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         st = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)[3]
