@@ -55,6 +55,13 @@ def once_per_run(tmp_path_factory, name: str, compute):
         return value
 
 
+@pytest.fixture(scope="session")
+def once(tmp_path_factory):
+    """``once(name, compute)``: :func:`once_per_run` for a test's own costly result (a path into
+    the run's temporary folder is shared as well as a value)."""
+    return lambda name, compute: once_per_run(tmp_path_factory, name, compute)
+
+
 #: The course's notes file (not part of the repository): $DERIVE_NOTES, else the course folder
 #: next to the checkout.
 LECTURE_NOTES = Path(os.environ.get("DERIVE_NOTES")
