@@ -14,6 +14,7 @@ the cluster derive starts, ``worker_cap`` and ``_cpus`` for the cap) and ``deriv
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import signal
 import socket
@@ -553,6 +554,9 @@ def test_the_cluster_refuses_a_client_without_its_credentials(cluster, reference
         Client(address.replace("tls://", "tcp://"), timeout=1)
     with pytest.raises(OSError):  # TLS with other credentials: its CA did not sign them
         Client(address, security=Security.temporary(), timeout=1)
+    # the refused Clients sit in cycles with their tracebacks: collected here, not inside the
+    # next Client's start, where their __del__ would wait on the lock that start holds
+    gc.collect()
     with pytest.raises(derive.IntegrationError, match=rf"^<sweep>: scheduler {address}: cannot connect"):
         derive.sweep(SMALL, scheduler=address, scheduler_timeout=1)  # no credentials at all
     # with them, a sweep runs there and gives the local numbers

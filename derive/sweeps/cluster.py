@@ -6,6 +6,8 @@ Takes: the runnable points and their arguments. Gives: (chunks, {chunk: result})
 """
 from __future__ import annotations
 
+import gc
+
 from derive.errors import EngineError, SceneError
 from derive.sweeps.points import _real
 from derive.sweeps.tasks import _chunks, _cpus, _held, _progress_bar, run_chunk
@@ -332,12 +334,17 @@ def _connect(address: str, source: str, timeout: float, security=None):
     try:
         client = Client(address, timeout=timeout, security=security)
     except (OSError, TimeoutError, TypeError, ValueError) as exc:
+        client = None
         if address.startswith("tls://") and security is None:  # Dask: "TLS expects a ssl_context"
             why = ("a tls:// scheduler needs credentials: security= in the API, or Dask's "
                    "distributed.comm.tls configuration")
         else:
             why = " ".join(str(exc).split())[:200]
-        raise EngineError(f"{where}: cannot connect ({why})") from None
+    if client is None:
+        # The half-made Client is held in a cycle by its traceback; collected now, its __del__
+        # (which stops Dask's loop runner) cannot fire inside a later Client's start and deadlock.
+        gc.collect()
+        raise EngineError(f"{where}: cannot connect ({why})")
     try:
         client.wait_for_workers(1, timeout=timeout)
     except (TimeoutError, OSError):
