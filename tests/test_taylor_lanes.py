@@ -49,7 +49,11 @@ def same(a, b):
         assert np.array_equal(x[ok], y[ok])
 
 
-@pytest.mark.parametrize("formulation", ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"])
+# a reduced top and the quaternion body in make test (each builds three libraries); the others
+# in make test-slow
+@pytest.mark.parametrize("formulation", ["reduced-u", "quaternion",
+                                         *(pytest.param(f, marks=pytest.mark.slow)
+                                           for f in ("reduced", "euler-angles", "euler-poisson"))])
 def test_lanes_are_the_scalar_driver_bit_for_bit(formulation):
     sc = scenes(13, formulation=formulation)  # one group and a ragged one on any width
     bp, desc, scalar, native, args, pole = kernels(sc, formulation)
