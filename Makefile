@@ -20,9 +20,11 @@ derive: $(STAMP)
 verify: $(STAMP)
 	@$(PY) -m derive verify
 
-# One test process per core (pytest-xdist): the suite is many independent compiles and runs.
+# One test process per core (pytest-xdist): the suite is many independent compiles and runs;
+# an idle process takes tests queued for the other (worksteal), so the last few long tests do
+# not leave a core waiting.
 test: $(STAMP)
-	@$(PY) -m pytest -q -n auto
+	@$(PY) -m pytest -q -n auto --dist worksteal
 
 test-slow: $(STAMP)
 	@$(PY) -m pytest -q -m slow

@@ -15,7 +15,9 @@
 
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
+import fcntl
 import os
+import pickle
 from pathlib import Path
 
 import pytest
@@ -25,20 +27,61 @@ from hypothesis import settings
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
+from derive import generate  # noqa: E402  (after DERIVE_CACHE: the suite's own cache)
+from derive.lecture import notes_check as nc  # noqa: E402
+
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
 
 
+def once_per_run(tmp_path_factory, name: str, compute):
+    """``compute()`` once per test run, whatever the number of test processes: the first
+    process to ask computes it (under a lock) and leaves it pickled in the run's temporary
+    folder, which every pytest-xdist worker shares; the others load it. For costly pure results
+    (the lecture checked, every generated file) that several test files read."""
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent  # the workers' folders sit side by side in one folder of the run
+    path = root / f"{name}.pickle"
+    with open(root / f"{name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if path.is_file():
+            return pickle.loads(path.read_bytes())
+        value = compute()
+        part = path.with_suffix(".part")
+        part.write_bytes(pickle.dumps(value))
+        part.replace(path)
+        return value
+
+
 @pytest.fixture(scope="session")
-def lecture_claims():
-    """The lecture's notes read and checked once per test process (``check_notes``, ~4 s),
-    shared by the files that test the reader on them."""
-    from pathlib import Path
+def once(tmp_path_factory):
+    """``once(name, compute)``: :func:`once_per_run` for a test's own costly result (a path into
+    the run's temporary folder is shared as well as a value)."""
+    return lambda name, compute: once_per_run(tmp_path_factory, name, compute)
 
-    from derive.lecture import notes_check as nc
 
-    return nc.check_notes(Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md")
+#: The course's notes file (not part of the repository): $DERIVE_NOTES, else the course folder
+#: next to the checkout.
+LECTURE_NOTES = Path(os.environ.get("DERIVE_NOTES")
+                     or Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md")
+
+
+@pytest.fixture(scope="session")
+def lecture_claims(tmp_path_factory):
+    """The lecture's notes read and checked once per test run (``check_notes``), shared by the
+    files that test the reader on them."""
+    if not LECTURE_NOTES.is_file():
+        pytest.skip(f"the lecture's notes file is not at {LECTURE_NOTES} (set DERIVE_NOTES)")
+    return once_per_run(tmp_path_factory, "lecture-claims", lambda: nc.check_notes(LECTURE_NOTES))
+
+
+@pytest.fixture(scope="session")
+def generated_files(tmp_path_factory):
+    """Every file ``make derive`` writes (``derive.generate.generate_all``), derived once per
+    test run and shared by the tests that compare or read them."""
+    return once_per_run(tmp_path_factory, "generated-files", generate.generate_all)
 
 
 def pytest_configure(config):

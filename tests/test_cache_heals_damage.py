@@ -307,7 +307,9 @@ def garbage_c_source(folder: Path) -> str:
     return f"has a damaged c/{c.name} (it does not match its checksum)"
 
 
-@pytest.mark.parametrize("damage", [truncated_description, missing_description, garbage_c_source])
+# one kind of damage in make test, each other derives the model again in make test-slow
+@pytest.mark.parametrize("damage", [truncated_description, pytest.param(missing_description, marks=pytest.mark.slow),
+                                    pytest.param(garbage_c_source, marks=pytest.mark.slow)])
 def test_a_damaged_derived_model_is_derived_again_once(cache, tmp_path, pristine_derived, damage):
     copy_of(pristine_derived[0], cache)
     folder = variant(cache)

@@ -3,6 +3,7 @@ warnings, and a last-resort handler for the unforeseen (exit 1)."""
 import contextlib
 import io
 import math
+import os
 import re
 import signal
 import subprocess
@@ -248,7 +249,7 @@ def start(*argv):
                             preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
 
 
-def wait_until_mapped(proc, pattern, timeout=60.0):
+def wait_until_mapped(proc, pattern, timeout=300.0):
     """Wait until the process has mapped a file matching ``pattern`` (a regex on its
     /proc/<pid>/maps): it has reached the phase that loads it. Without /proc: a fixed wait."""
     maps = f"/proc/{proc.pid}/maps"
@@ -264,22 +265,37 @@ def wait_until_mapped(proc, pattern, timeout=60.0):
         time.sleep(0.05)
 
 
+def cpu_seconds(pid) -> float:
+    """User plus system CPU seconds the process ``pid`` has used (``/proc/<pid>/stat``; a
+    process that has exited but is not yet reaped still shows its totals)."""
+    fields = open(f"/proc/{pid}/stat").read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def interrupt_after(proc, seconds, mapped=None):
     """SIGINT ``seconds`` after the process mapped ``mapped`` (see wait_until_mapped); returns
-    (exit status, stdout, stderr, seconds from the signal to the exit)."""
+    (exit status, stdout, stderr, CPU seconds the process used from the signal to its exit).
+
+    What the signal costs is counted in the process's own CPU time, not on the wall clock: on
+    a loaded machine the scheduler may hold a process off its core for seconds, which says
+    nothing about how soon it stops its loop. The wall clock only bounds the wait."""
     if mapped:
         wait_until_mapped(proc, mapped)
     time.sleep(seconds)
     assert proc.poll() is None, "finished before it could be interrupted"
+    before = cpu_seconds(proc.pid)
     proc.send_signal(signal.SIGINT)
-    t0 = time.monotonic()
-    try:
-        out, err = proc.communicate(timeout=20)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        proc.communicate()
-        pytest.fail("still running 20 s after SIGINT")
-    return proc.returncode, out, err, time.monotonic() - t0
+    # wait for the exit without reaping it, so that its CPU totals can still be read
+    end = time.monotonic() + 120
+    while os.waitid(os.P_PID, proc.pid, os.WEXITED | os.WNOWAIT | os.WNOHANG) is None:
+        if time.monotonic() > end:
+            proc.kill()
+            proc.communicate()
+            pytest.fail("still running 120 s after SIGINT")
+        time.sleep(0.01)
+    took = cpu_seconds(proc.pid) - before
+    out, err = proc.communicate(timeout=60)
+    return proc.returncode, out, err, took
 
 
 def test_sigint_during_a_python_phase(tmp_path):
@@ -295,16 +311,11 @@ def test_sigint_during_a_python_phase(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
 
 
-def _kernels_poll_interrupts() -> bool:
-    return "interrupt" in (ROOT / "templates" / "c" / "solvers.c.j2").read_text()
-
-
-@pytest.mark.skipif(not _kernels_poll_interrupts(), reason="solver kernels poll no interrupt flag yet")
 @pytest.mark.parametrize("method, extra", [("rk4", {"h": 1e-6}),
                                            ("dop853", {"rtol": 1e-13, "t_end": 1e10})])
 def test_sigint_inside_a_compiled_loop(tmp_path, method, extra):
-    """A long run in a compiled loop stops within 0.5 s of Ctrl-C (measured from the signal to
-    the process's exit, the interpreter's shutdown included)."""
+    """A long run in a compiled loop stops within 0.5 s of Ctrl-C: at most 0.5 s of the
+    process's CPU from the signal to its exit, the interpreter's shutdown included."""
     scene = tmp_path / "long.toml"
     scene.write_text(toml(with_(simulate={"t_end": 1e5, "samples": 11, "method": method,
                                           "max_steps": 10**12, **extra})))

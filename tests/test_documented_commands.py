@@ -110,6 +110,17 @@ def _blocks() -> list[Block]:
 
 BLOCKS = _blocks()
 RUN = [b for b in BLOCKS if any(_skip_reason(c.text) is None for c in b.commands)]
+
+#: The guides whose worked examples (each a few seconds of simulating, compiling or analysing)
+#: run in ``make test-slow``, as do the blocks that build C with the system's compiler (the
+#: builds themselves are checked in tests/test_export.py and tests/test_codegen.py); the README's
+#: other blocks and the other documents' run in ``make test``.
+GUIDES = ("docs/analyze.md", "docs/animate.md", "docs/export.md", "docs/own-body.md", "docs/sweeps.md")
+BUILDS_C = r"(^|&& )cc |\bmake -"
+
+
+def _slow(block: Block) -> bool:
+    return block.where.startswith(GUIDES) or any(re.search(BUILDS_C, c.text) for c in block.commands)
 SKIP = [(b.where, c.text, why) for b in BLOCKS for c in b.commands if (why := _skip_reason(c.text))]
 
 
@@ -155,7 +166,8 @@ def test_a_transcript_line_matches_with_dots_and_close_numbers():
     assert not _matches('{"nfev": 88, ...}', '{"nfev": 2141, "beta": 1}')
 
 
-@pytest.mark.parametrize("block", RUN, ids=lambda b: b.where)
+@pytest.mark.parametrize("block", [pytest.param(b, marks=pytest.mark.slow) if _slow(b) else b for b in RUN],
+                         ids=lambda b: b.where)
 def test_a_documented_command_runs_as_written(block, tmp_path):
     for part in ("generated", "docs", "scenes"):
         (tmp_path / part).symlink_to(ROOT / part)

@@ -3,10 +3,10 @@ the same numbers, statuses and exceptions as ``derive.simulate``, run after run.
 from __future__ import annotations
 
 import copy
-import threading
 
 import numpy as np
 import pytest
+from interrupts import CpuTimer
 
 import derive
 from derive.bench.reference import reference_data
@@ -89,7 +89,7 @@ def test_an_interrupt_stops_a_long_prepared_run():
     if kernel._run.guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
     request = kernel.lib.derive_sigint_request
-    timer = threading.Timer(0.2, request)
+    timer = CpuTimer(0.2, request)
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):

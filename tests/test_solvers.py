@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from derive.runtime import cbuild
 from derive.runtime.cbuild import (SANITIZE_FLAGS, STRICT_FLAGS, check_compiles, compile_library)
 from derive.errors import CompilerError, IntegrationError
 from derive.runtime.kernel import Kernel
@@ -389,12 +390,11 @@ def test_rhs_and_jacobian_wrappers(kernels):
 
 # --- building -----------------------------------------------------------------------------
 
-def test_second_build_is_served_from_the_cache():
-    t0 = time.perf_counter()
+def test_second_build_is_served_from_the_cache(monkeypatch):
     a = Kernel.from_sources("osc", MODELS["osc"], model_sources("osc"))
+    monkeypatch.setattr(cbuild, "_run", lambda *args, **kwargs: pytest.fail("compiled a second time"))
     b = Kernel.from_sources("osc", MODELS["osc"], model_sources("osc"))
     assert a.lib is b.lib
-    assert time.perf_counter() - t0 < 5.0
 
 
 def test_a_state_count_other_than_the_headers_is_refused_at_compile_time(monkeypatch, tmp_path):

@@ -14,6 +14,7 @@ the cluster derive starts, ``worker_cap`` and ``_cpus`` for the cap) and ``deriv
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import signal
 import socket
@@ -116,7 +117,7 @@ def _children() -> set:
     return {k.pid for k in psutil.Process().children(recursive=True)}
 
 
-def _gone(pids, within=5.0) -> list:
+def _gone(pids, within=30.0) -> list:
     """The processes of ``pids`` still alive (zombies count as gone) after up to ``within`` s."""
     deadline = time.monotonic() + within
     while True:
@@ -257,7 +258,8 @@ def _start_long_sweep(tmp_path, extra=(), computing=True):
 
 def _stopped(p, tmp_path, out, workers, code, line):
     try:
-        _, err = p.communicate(timeout=10)  # honoured at once: a bound, not a measurement
+        _, err = p.communicate(timeout=60)  # a bound on a hang, not a measurement: a loaded
+        # machine may keep the stopping processes off the cores for seconds
     except subprocess.TimeoutExpired:
         os.killpg(p.pid, signal.SIGKILL)
         p.communicate()
@@ -288,7 +290,7 @@ def test_sigterm_to_the_parent_stops_a_local_sweep_and_its_workers(tmp_path):
 def test_sigkill_to_the_parent_takes_the_workers_along(tmp_path):
     p, out, workers = _start_long_sweep(tmp_path)
     os.kill(p.pid, signal.SIGKILL)
-    p.communicate(timeout=10)
+    p.communicate(timeout=60)
     assert _gone(workers) == []  # PR_SET_PDEATHSIG: no orphan computing for no one
 
 
@@ -558,6 +560,9 @@ def test_the_cluster_refuses_a_client_without_its_credentials(cluster, reference
         Client(address.replace("tls://", "tcp://"), timeout=1)
     with pytest.raises(OSError):  # TLS with other credentials: its CA did not sign them
         Client(address, security=Security.temporary(), timeout=1)
+    # the refused Clients sit in cycles with their tracebacks: collected here, not inside the
+    # next Client's start, where their __del__ would wait on the lock that start holds
+    gc.collect()
     with pytest.raises(derive.IntegrationError, match=rf"^<sweep>: scheduler {address}: cannot connect"):
         derive.sweep(SMALL, scheduler=address, scheduler_timeout=1)  # no credentials at all
     # with them, a sweep runs there and gives the local numbers

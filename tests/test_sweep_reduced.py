@@ -145,6 +145,7 @@ def test_results_do_not_depend_on_the_chunking():
     assert np.array_equal(odd[0], whole[0][1::2], equal_nan=True)
 
 
+@pytest.mark.slow  # the engines' agreement: tests/test_sweep.py in make test
 def test_engines_identical_with_both_formulations():
     """In-process, a local pool and a Dask LocalCluster: the same formulation per point and the
     same numbers, bit for bit, on a sweep that runs both formulations."""

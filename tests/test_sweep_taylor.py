@@ -197,6 +197,7 @@ def test_fallback_formulation_runs_taylor_too():
         assert np.array_equal(res.measures[k][[0, 3]], ep.measures[k], equal_nan=True), k
 
 
+@pytest.mark.slow  # the engines' agreement: tests/test_sweep.py in make test
 def test_engines_give_identical_results():
     """In-process, a local process pool and a dask LocalCluster give the same numbers bit for
     bit with the Taylor method too."""

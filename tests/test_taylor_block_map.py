@@ -179,9 +179,9 @@ def _same(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 MODELS = [m for m in shipped_keys() if (GEN / f"{m}_taylor.c").exists()]
-#: The models checked in ``make test`` (a symmetric top, a free asymmetric body, the reference
-#: top's reduced formulation); every other model in ``make test-slow``.
-FAST_MODELS = ("heavy_top", "rigid_body", "euler_angles_sym")
+#: The model checked in ``make test`` (the heavy top: every rule of the tops); every other model
+#: in ``make test-slow``.
+FAST_MODELS = ("heavy_top",)
 
 
 @pytest.mark.parametrize("name", [m if m in FAST_MODELS else pytest.param(m, marks=pytest.mark.slow) for m in MODELS])

@@ -4,10 +4,10 @@ own steps. Each trajectory's state, outputs, status and statistics are the scala
 driver's (built with the default flags) bit for bit, failing lanes included, and
 ``derive.simulate_batch(..., outputs="final")`` with the Taylor method runs it."""
 import re
-import threading
 
 import numpy as np
 import pytest
+from interrupts import CpuTimer
 
 import derive
 from derive.methods.status import Status
@@ -49,7 +49,11 @@ def same(a, b):
         assert np.array_equal(x[ok], y[ok])
 
 
-@pytest.mark.parametrize("formulation", ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"])
+# a reduced top and the quaternion body in make test (each builds three libraries); the others
+# in make test-slow
+@pytest.mark.parametrize("formulation", ["reduced-u", "quaternion",
+                                         *(pytest.param(f, marks=pytest.mark.slow)
+                                           for f in ("reduced", "euler-angles", "euler-poisson"))])
 def test_lanes_are_the_scalar_driver_bit_for_bit(formulation):
     sc = scenes(13, formulation=formulation)  # one group and a ragged one on any width
     bp, desc, scalar, native, args, pole = kernels(sc, formulation)
@@ -244,7 +248,7 @@ def test_an_interrupt_stops_the_lanes():
     bp, desc, _, native, args, pole = kernels(sc, "reduced-u")
     if native._run.guard is None:
         pytest.skip("the kernel was loaded outside the main thread: no guard")
-    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
+    timer = CpuTimer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
@@ -268,7 +272,7 @@ def test_an_interrupt_after_refills_says_so_per_trajectory(monkeypatch):
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(inputs[early], ps[early], bp.t, args, pole)[3]
     monkeypatch.setattr(native._run, "guard", None)
-    timer = threading.Timer(0.2, native.lib.derive_sigint_request)
+    timer = CpuTimer(0.2, native.lib.derive_sigint_request)
     timer.start()
     try:
         st = native.simulate_lanes_batch(inputs, ps, bp.t, args, pole)[3]

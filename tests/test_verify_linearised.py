@@ -72,10 +72,12 @@ def test_linearised_equations_their_second_order_form_and_solution_hold():
 
 @pytest.mark.parametrize("old, new", [
     (r"$$\omega_3 = a \sqrt{I_2(I_2-I_1)} \cos", r"$$\omega_3 = a \sqrt{I_2(I_2-I_1)} \sin"),      # sin for cos
-    (r"$$\omega_2 = a \sqrt{I_3(I_3-I_1)}", r"$$\omega_2 = a \sqrt{I_2(I_3-I_1)}"),                # an index
-    (r"$$L_3 = a I_3 \sqrt{I_2(I_2-I_1)}", r"$$L_3 = a I_2 \sqrt{I_2(I_2-I_1)}"),                  # Lᵢ ≠ Iᵢωᵢ of it
+    pytest.param(r"$$\omega_2 = a \sqrt{I_3(I_3-I_1)}", r"$$\omega_2 = a \sqrt{I_2(I_3-I_1)}",      # an index
+                 marks=pytest.mark.slow),
+    pytest.param(r"$$L_3 = a I_3 \sqrt{I_2(I_2-I_1)}", r"$$L_3 = a I_2 \sqrt{I_2(I_2-I_1)}",        # Lᵢ ≠ Iᵢωᵢ of it
+                 marks=pytest.mark.slow),
     (r"\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}\Omega^2\omega_2", r"\frac{(I_3-I_1)(I_2-I_1)}{I_2 I_3}\Omega\omega_2"),
-])
+])  # a solution's slip and a second-order form's in make test; the others in make test-slow
 def test_a_slip_in_a_linearised_solution_or_its_second_order_form_is_flagged(old, new):
     assert old in LINEARISED
     text = LINEARISED.replace(old, new, 1)

@@ -57,7 +57,12 @@ def _run(cmd, cwd, **kw):
 
 
 @pytest.fixture(scope="module")
-def wheel(tmp_path_factory) -> Path:
+def wheel(once, tmp_path_factory) -> Path:
+    """The wheel, built once per test run (the test processes share it)."""
+    return once("wheel", lambda: _build_wheel(tmp_path_factory))
+
+
+def _build_wheel(tmp_path_factory) -> Path:
     src = tmp_path_factory.mktemp("src")
     for name in PACKAGING_INPUTS:
         path = CHECKOUT / name
@@ -74,7 +79,13 @@ def wheel(tmp_path_factory) -> Path:
 
 
 @pytest.fixture(scope="module")
-def venv(wheel, tmp_path_factory) -> Path:
+def venv(once, wheel, tmp_path_factory) -> Path:
+    """A virtual environment with the wheel installed, made once per test run (the tests only
+    run its Python)."""
+    return once("wheel-venv", lambda: _install(wheel, tmp_path_factory))
+
+
+def _install(wheel: Path, tmp_path_factory) -> Path:
     env_dir = tmp_path_factory.mktemp("venv")
     r = _run([sys.executable, "-m", "venv", "--without-pip", "--clear", str(env_dir)], cwd=env_dir)
     assert r.returncode == 0, r.stderr

@@ -7,6 +7,7 @@ Takes: the runnable points and their arguments. Gives: (chunks, {chunk: result})
 from __future__ import annotations
 
 import concurrent.futures
+import gc
 import socket
 
 from derive.errors import EngineError, SceneError
@@ -345,7 +346,13 @@ def _connect(address: str, source: str, timeout: float, security=None):
     try:
         client = Client(address, timeout=timeout, security=security)
     except (OSError, TimeoutError, TypeError, ValueError) as exc:
-        raise EngineError(f"{where}: cannot connect ({_why(exc)})") from None
+        client = None
+        why = _NO_CREDENTIALS if address.startswith("tls://") and security is None else _why(exc)
+    if client is None:
+        # The half-made Client is held in a cycle by its traceback; collected now, its __del__
+        # (which stops Dask's loop runner) cannot fire inside a later Client's start and deadlock.
+        gc.collect()
+        raise EngineError(f"{where}: cannot connect ({why})")
     try:
         client.wait_for_workers(1, timeout=timeout)
     except (TimeoutError, OSError):
