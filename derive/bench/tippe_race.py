@@ -20,7 +20,7 @@ cone, its semi-implicit Euler step). What is compared holds for any contact law:
   (sampled every millisecond) against it.
 
 Timing, in turns (best of a few rounds): derive's public ``derive.simulate(dict)`` (validation,
-the phase loop and every output at 1 ms samples), against MuJoCo's bare ``mj_step(model, data,
+the phase loop and every output, sampled every millisecond), against MuJoCo's bare ``mj_step(model, data,
 nstep)`` from the initial state (no output at all, the fastest MuJoCo can run it). The measures
 of MuJoCo come from a second, untimed run of the same steps recording every millisecond (MuJoCo
 is deterministic: the same states). Goals (:data:`derive.bench.targets.GOALS`): at equal wall
