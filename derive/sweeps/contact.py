@@ -30,23 +30,15 @@ from derive.errors import IntegrationError, SceneError
 from derive.sim.scene import read_toml
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
-from derive.sweeps.points import _fail
+from derive.sweeps.points import _fail, set_entry
 from derive.sweeps.result import SweepResult
 from derive.sweeps.spec import _SPEC_KEYS, _measures, _scene_path, grid_or_random
 
 
 def _set(data: dict, key: str, value: float) -> dict:
     """A copy of the scene ``data`` with the dotted key set (``initial.omega.2``: a component)."""
-    table, name, index, _ = contact_keys()[key]
     out = dict(data)
-    t = dict(out.get(table, {}))
-    if index is None:
-        t[name] = value
-    else:
-        vec = list(t[name])
-        vec[index] = value
-        t[name] = vec
-    out[table] = t
+    set_entry(out, contact_keys()[key], value)
     return out
 
 

@@ -39,7 +39,13 @@ def _set(data: dict, key: str, value) -> None:
         entries[k] = {**entries[k], "params": {**entries[k].get("params", {}), param: value}}
         data[kind] = entries
         return
-    table, name, index, _ = _variable_keys()[key]
+    set_entry(data, _variable_keys()[key], value)
+
+
+def set_entry(data: dict, where: tuple, value) -> None:
+    """Set ``data[table][name]`` (``index`` None) or its component ``index``, where ``where`` is
+    a keys registry's ``(table, name, index, ...)``; the table and the list are changed copies."""
+    table, name, index = where[:3]
     t = dict(data.get(table, {}))
     if index is None:
         t[name] = value
