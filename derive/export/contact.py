@@ -15,14 +15,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from derive.codegen.render import c_double, render
-from derive.contact import kernel as ck
+from derive.contact import driver, kernel as ck
 from derive.contact.laws import LAWS
 from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
 from derive.contact.simulate import body_omega, params, simulate
 from derive.errors import SceneError
 
-#: How many phase switches a run may make (derive.contact.phases' default).
-MAX_SWITCHES = 10_000
+#: How many phase switches a run may make.
+MAX_SWITCHES = driver.MAX_SWITCHES
 #: The units of the parameters, by name.
 PARAM_UNITS = {"I1": "kg m^2", "I2": "kg m^2", "I3": "kg m^2", "M": "kg", "g": "m/s^2",
                "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m"}
@@ -57,15 +57,8 @@ def model_files(sc: ContactScene) -> dict[str, str]:
 
 
 def lib_source(sc: ContactScene) -> str:
-    """``<model>_lib.c``: the evaluator, then the driver, with the law's phases defined."""
-    law = LAWS[sc.law]
-    name = model_name(sc)
-    return (f"/* {name}_lib.c: the contact model {name} and the phase driver as one translation\n"
-            f" * unit; the law's phases ({', '.join(law.phases)}) select the driver's switch rules.\n"
-            f" * Written by `derive export`. */\n"
-            f"#define CONTACT_SLIDES {int(law.slides)}\n#define CONTACT_ROLLS {int(law.rolls)}\n"
-            f"#define CONTACT_STEM {int(sc.stem is not None)}\n"
-            f'#include "{name}.c"\n#include "{ck.RUN}"\n')
+    """``<model>_lib.c``: the evaluator, then the driver (the unit ``derive simulate`` runs)."""
+    return driver.lib_source(sc.shape, sc.law, sc.stem is not None)
 
 
 def start_omega(sc: ContactScene) -> np.ndarray:
