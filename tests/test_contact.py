@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from derive.contact import analysis
+from derive.contact import analysis, driver
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import read
 from derive.contact.simulate import initial_state, params, quaternion, run_scene
-from derive.errors import SceneError
+from derive.errors import IntegrationError, SceneError
 
 O = {name: i for i, name in enumerate(OUTPUTS)}
 TIPPE = {"body": {"I1": 8e-7, "I3": 7e-7}, "gravity": {"M": 0.006, "g": 9.81},
@@ -601,6 +601,14 @@ def test_the_stem_touches_when_scipys_dop853_says_it_does():
     c, s = (run_scene(d, t_end=0.65, samples=66, method=m) for m in ("dop853", "scipy-dop853"))
     assert [x.event for x in c.switches] == [x.event for x in s.switches] == ["stem"]
     assert abs(c.switches[0].t - s.switches[0].t) <= 1e-9
+
+
+def test_a_spent_switch_budget_is_a_numerical_failure_naming_the_time_and_the_last_switch():
+    sc = read(read_example("tippe_top_stem"), "<dict>", t_end=0.7, samples=8)
+    with pytest.raises(IntegrationError, match=r"more than 2 phase switches by t = 0\.68.* \(last: stem\)"):
+        driver.run(sc.shape, sc.law, params(sc), sc.stem, initial_state(sc), np.linspace(0.0, 0.7, 8),
+                   restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol, max_steps=sc.max_steps,
+                   max_switches=2)
 
 
 def test_a_top_started_upside_down_stands_on_its_stem():

@@ -61,6 +61,7 @@ def _short(tmp_path: Path, name: str, t_end: float, samples: int) -> Path:
     ("euler_disk", 0.3, 31),         # a disc's rim, rolling
     ("stick_slip", 0.5, 51),         # slip and stick events in turn
     ("knocked", 0.1, 41),            # landing and lift-off events, the impact law
+    ("tippe_top_stem", 0.7, 71),     # touch events: onto the stem, back to the ball, the stem again
 ])
 def test_contact_example_prints_what_simulate_gives(tmp_path, capsys, name, t_end, samples):
     path = _short(tmp_path, name, t_end, samples)
@@ -93,6 +94,9 @@ def test_contact_example_prints_what_simulate_gives(tmp_path, capsys, name, t_en
     assert got["switches"] == len(ref["switch_t"])
     if name in VARIANTS:
         assert got["switches"] >= 4  # the rules the variant is there for did run
+    if name == "tippe_top_stem":  # the spheres changed roles, and the run ends on the stem
+        assert {"stem", "ball"} <= set(map(str, ref["switch_event"]))
+        assert str(ref["switch_event"][-1]) == "stem"
     assert got["phase"] == str(ref["phase"][-1])
     compared = 0
     for key, value in got.items():
@@ -217,3 +221,23 @@ def test_contact_fmu_start_values_change_the_start(peg_fmu):
     for name, want in _columns(res).items():
         scale = max(1.0, float(np.max(np.abs(want))))
         assert np.max(np.abs(got[name] - want)) <= 1e-8 * scale, name
+
+
+def test_contact_fmu_of_the_tippe_top_with_its_stem_changes_spheres_as_simulate_does(tmp_path):
+    pytest.importorskip("fmpy")
+    import fmpy
+
+    scene = _short(tmp_path, "tippe_top_stem", 0.7, 71)
+    path = tmp_path / "stem.fmu"
+    assert main(["export", str(scene), "--fmu", str(path)]) == 0
+    md = fmpy.read_model_description(str(path))
+    params = {v.name: float(v.start) for v in md.modelVariables if v.causality == "parameter"}
+    assert params["contact.stem.radius"] == 0.005 and params["contact.stem.offset"] == 0.016
+    got, res = _cosimulate(path, scene)
+    for name, want in _columns(res).items():
+        scale = max(1.0, float(np.max(np.abs(want))))
+        assert np.max(np.abs(got[name] - want)) <= 1e-8 * scale, name
+    codes = {"slide": 0, "roll": 1, "flight": 2}
+    assert list(got["phase"]) == [codes[str(p)] for p in res.phase]
+    assert [s.event for s in res.switches] == ["stem", "ball", "stem"]
+    assert got["switches"][-1] == len(res.switches)

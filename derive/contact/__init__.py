@@ -12,12 +12,14 @@ condition), the integrals each case has and the analysis of its steady states
 event functions and monitors as C (:mod:`~derive.contact.sources`, ``templates/contact/``,
 written by ``make derive`` into ``generated/contact/``; :mod:`~derive.contact.layout`: the
 names and the shared C), the compiled evaluators (:mod:`~derive.contact.kernel`), the
-event-driven integration of the phases slide, roll and flight (:mod:`~derive.contact.phases`; a
-second sphere, the tippe top's stem, switched to at a located event), the frictionless plane
+event-driven integration of the phases slide, roll and flight — in C by the phase driver
+(:mod:`~derive.contact.driver`, the compiled method's one call), with its switch rules stated
+and kept as the ``scipy-dop853`` reference in :mod:`~derive.contact.phases` (a second sphere,
+the tippe top's stem, switched to at a located event) — the frictionless plane
 reduced by its symmetries (:mod:`~derive.contact.reduced`: p_α and p_γ held as parameters), the
 validated scene (:mod:`~derive.contact.scene`) and the result (:mod:`~derive.contact.simulate`).
 
-Two sides: a run (scene, kernel, phases, reduced, simulate, prepared) reads the generated C and
+Two sides: a run (scene, kernel, driver, phases, reduced, simulate, prepared) reads the generated C and
 imports neither SymPy nor SciPy; the derivation (geometry, friction, equations, integrals,
 analysis, sources) is SymPy, reached from a run only through
 :func:`derive.contact.kernel.text` when a file of ``generated/contact/`` is missing. SciPy

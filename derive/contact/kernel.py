@@ -46,12 +46,6 @@ class Kernel:
         self.many = getattr(lib, f"{name}_outputs")
         self.many.restype = ctypes.c_long
         self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 5
-        self.step = getattr(lib, f"{name}_advance")
-        self.step.restype = ctypes.c_int
-        self.step.argtypes = ([ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_double]
-                              + [ctypes.c_void_p] * 2 + [ctypes.c_double, ctypes.c_double, ctypes.c_void_p,
-                                                         ctypes.c_long, ctypes.c_int]
-                              + [ctypes.c_void_p] * 2 + [ctypes.c_long] + [ctypes.c_void_p] * 5)
         self.nfev = 0
 
     def rhs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
@@ -68,19 +62,6 @@ class Kernel:
         if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, self._out):
             raise FloatingPointError("the contact is singular here")
         return self.out.copy()
-
-
-    def advance(self, phase: int, t: float, y: np.ndarray, t_end: float, p: np.ndarray, d: np.ndarray,
-                rtol: float, atol: float, h: float, max_steps: int, events: np.ndarray, ref: np.ndarray,
-                ts: np.ndarray, its: int, ys: np.ndarray, counts: np.ndarray):
-        """One phase integrated in C (``{name}_advance``) until an event or ``t_end``: returns
-        (code, t, which, h, its) with ``y``, ``ref``, ``ys`` and ``counts`` updated in place."""
-        tt, hh, ii, which = ctypes.c_double(t), ctypes.c_double(h), ctypes.c_long(its), ctypes.c_int(-1)
-        code = self.step(phase, ctypes.addressof(tt), y.ctypes.data, t_end, p.ctypes.data, d.ctypes.data,
-                         rtol, atol, ctypes.addressof(hh), max_steps, len(events), events.ctypes.data,
-                         ref.ctypes.data, len(ts), ts.ctypes.data, ctypes.addressof(ii), ys.ctypes.data,
-                         ctypes.addressof(which), counts.ctypes.data)
-        return code, tt.value, which.value, hh.value, ii.value
 
     def outputs_many(self, phase: np.ndarray, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
         """The outputs of many states (rows of ``y``, a phase and a direction each), one C call."""

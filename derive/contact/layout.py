@@ -45,15 +45,15 @@ def loop_source() -> str:
     return render("contact/dop853.c.j2", dop=_dop853(), dop_name=DEFAULT_METHOD)
 
 
-#: The phase driver's file name: the phases joined by their switch rules, in C (what an export
-#: and an FMU run; :mod:`derive.contact.phases` is the same rules driving the phase loop from
-#: Python).
+#: The phase driver's file name: the phases joined by their switch rules, in C (what
+#: ``derive simulate``'s compiled method, an export and an FMU run; :mod:`derive.contact.phases`
+#: keeps the same rules as the reference stepper).
 RUN = "contact_run.inc"
 
 
 @functools.lru_cache(maxsize=None)
 def run_source() -> str:
-    """The phase driver (``contact_initial``, ``contact_start``, ``contact_integrate``), shared by
-    every contact model's export: the including file includes a model first and defines
-    ``CONTACT_SLIDES`` and ``CONTACT_ROLLS``."""
+    """The phase driver (``contact_initial``, ``contact_start``, ``contact_integrate``,
+    ``contact_simulate``), shared by every contact model's run and export: the including file
+    includes a model first and defines ``CONTACT_SLIDES``, ``CONTACT_ROLLS`` and ``CONTACT_STEM``."""
     return render("contact/run.c.j2")

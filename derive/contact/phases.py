@@ -1,10 +1,14 @@
-"""The phases slide, roll and flight as separate vector fields, joined by located events.
+"""The phases slide, roll and flight as separate vector fields, joined by located events: the
+switch rules, and the reference stepper ``scipy-dop853`` that applies them from Python.
 
-Each phase is integrated by DOP853 — in C by the kernel's phase loop (``<kernel>_advance``,
-the default), or by SciPy's stepper calling the compiled right-hand side (``scipy-dop853``, a
-reference: the same step control, so the same steps). After every accepted step the phase's
-event functions are evaluated at four points of the step's dense output and the first sign
-change is located (Illinois in C, Brent's method in Python). The rules:
+The product path is C: ``derive simulate``'s compiled method, ``derive export`` and the FMU run
+the phase driver ``contact_run.inc`` (:mod:`derive.contact.driver`), which integrates each phase
+with the compiled phase loop and applies these rules between its located events. This module
+states the rules and keeps them as the reference the targets compare with: :class:`Phases`
+integrates each phase with SciPy's DOP853 calling the compiled right-hand side (the same step
+control, so the same steps as the C loop), evaluates the phase's event functions at four points
+of each accepted step's dense output and locates the first sign change with Brent's method (the
+C loop uses Illinois), and applies the rules below in Python. The rules:
 
 * slide → roll (exact Coulomb, event ``stick``): the slip u_t reverses along the direction it had
   at the step's start, g = u_t(t)·u_t(t_k)/|u_t(t_k)| + δ ≤ 0, δ = 1e-12 (|v| + |ω||a|) the
@@ -48,10 +52,6 @@ from derive.contact.laws import Law
 from derive.errors import IntegrationError
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
-#: The event codes of the C phase loop (``event_value`` in the template).
-EVENT_CODES = {"landing": 0, "lift-off": 1, "slip": 2, "stick": 3, "touch": 4}
-_FAILURES = {2: "the step budget is spent", 3: "the step size fell below the spacing of doubles",
-             4: "the contact is singular or the state not finite"}
 SLIDE, ROLL, FLIGHT = PHASES["slide"], PHASES["roll"], PHASES["flight"]
 PHASE_NAMES = {v: k for k, v in PHASES.items()}
 
@@ -99,7 +99,7 @@ class Phases:
 
     def __init__(self, k: Kernel, law: Law, p: np.ndarray, restitution: float = 0.0,
                  rtol: float = 1e-10, atol: float = 1e-12, max_steps: int = 1_000_000,
-                 max_switches: int = 10_000, compiled: bool = True, stem=None):
+                 max_switches: int = 10_000, stem=None):
         self.k, self.law = k, law
         #: (radius, offset) of each sphere the body may touch with; the kernel's p[5:7] is the
         #: touching one's, p[9:11] the other's (read by the ``touch`` event)
@@ -110,7 +110,6 @@ class Phases:
         self.e, self.rtol, self.atol = restitution, rtol, atol
         self.max_steps, self.max_switches = max_steps, max_switches
         self.mu = p[7]
-        self.compiled = compiled
 
     def params(self, i: int) -> np.ndarray:
         """The kernel's parameters with sphere ``i`` touching (the other's after them)."""
@@ -276,8 +275,7 @@ class Phases:
         run = Run(t_out, ys, phases, dirs, sphere=np.full(len(t_out), self.active))
         t = 0.0
         while t < t_end:
-            step = self._phase_c if self.compiled else self._phase
-            t, y, new = step(run, phase, t, y, d, t_end, nxt)
+            t, y, new = self._phase(run, phase, t, y, d, t_end, nxt)
             nxt = new[0]
             if new[1] is None:
                 break
@@ -321,7 +319,7 @@ class Phases:
 
     def _phase(self, run: Run, phase, t0, y0, d, t_end, nxt):
         """Integrate one phase from (t0, y0) until an event or t_end; fills the samples."""
-        # SciPy is the reference stepper's alone: a compiled run never loads it.
+        # SciPy is the reference stepper's alone: the compiled method never loads it.
         from scipy.integrate import DOP853
         from scipy.optimize import brentq
 
@@ -378,26 +376,3 @@ class Phases:
                     return solver.t, self.touching(y_new, phase, d), (nxt, "stick")
                 g_old["stick"] = self.g("stick", phase, y_new, d, ref)
         return solver.t, solver.y, (nxt, None)
-
-    def _phase_c(self, run: Run, phase, t0, y0, d, t_end, nxt):
-        """One phase integrated by the compiled loop (``<kernel>_advance``): the same DOP853, step
-        control, events and samples as :meth:`_phase`, without a Python call per step."""
-        events = self.events(phase)
-        codes = np.array([EVENT_CODES[e] for e in events], dtype=np.intc)
-        y = np.array(y0, dtype=float)
-        ref, counts = self.stick_reference(phase, y, d), np.zeros(2, dtype=np.int_)
-        code, t, which, _, its = self.k.advance(phase, t0, y, t_end, self.p, d, self.rtol, self.atol, 0.0,
-                                                self.max_steps - run.nstep, codes, ref, run.t, nxt, run.y,
-                                                counts)
-        run.nstep += int(counts[0])
-        run.nfev += int(counts[1])
-        rows = slice(nxt, its)
-        run.phase[rows], run.direction[rows], run.sphere[rows] = phase, d, self.active
-        if phase != FLIGHT and its > nxt:
-            o = self.k.outputs_many(run.phase[rows], run.y[rows], self.p, run.direction[rows])
-            run.y[rows, 9:13] = o[:, _O["z"]:_O["vz"] + 1]
-        if code in _FAILURES:
-            raise IntegrationError(f"t = {t:.8g}: {_FAILURES[code]} ({PHASE_NAMES[phase]})")
-        if code == 1:
-            return t, (y if phase == FLIGHT else self.touching(y, phase, d)), (its, events[which])
-        return t, y, (its, None)

@@ -20,7 +20,8 @@ relative error control holds them as tightly at every time (as angles they grow 
 and a relative tolerance on them would loosen with time). p_α and p_γ are not states, so no
 step can move them: what the symmetry keeps, the formulation keeps. The chart is singular where sin β = 0, which a motion reaches only when p_α = ±p_γ;
 :func:`run` declines a start near it, a motion that comes near it, and a lift-off (the full
-formulation of :mod:`derive.contact.phases` then runs the scene from the start).
+formulation, the phase driver of :mod:`derive.contact.driver`, then runs the scene from the
+start).
 """
 from __future__ import annotations
 

@@ -13,7 +13,7 @@ import numpy as np
 
 from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import LAWS
-from derive.contact import reduced
+from derive.contact import driver, reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
 from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, integrals_held, read
 
@@ -143,9 +143,11 @@ def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
 
 
 def simulate(sc: ContactScene) -> ContactResult:
-    """Run a validated contact scene (see :mod:`derive.contact.phases` for the phases). A
-    frictionless axisymmetric body runs in the reduced formulation of :mod:`derive.contact.reduced`
-    (p_α and p_γ held as parameters) while it serves, else in the full one."""
+    """Run a validated contact scene: the compiled method by the C phase driver
+    (:mod:`derive.contact.driver`, one call), ``scipy-dop853`` by the reference stepper
+    (:mod:`derive.contact.phases`, which states the switch rules). A frictionless axisymmetric
+    body runs in the reduced formulation of :mod:`derive.contact.reduced` (p_α and p_γ held as
+    parameters) while it serves, else in the full one."""
     k = kernel(sc.shape, sc.law)
     p = params(sc)
     t_out = np.linspace(0.0, sc.t_end, sc.samples)
@@ -159,11 +161,23 @@ def simulate(sc: ContactScene) -> ContactResult:
             res = result(sc, run, k, p)
             res.formulation = reduced.FORMULATION
             return res
+    if sc.method != METHOD:  # the C driver, the one an export ships, in one call
+        run = driver.run(sc.shape, sc.law, p, sc.stem, initial_state(sc), t_out,
+                         restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol, max_steps=sc.max_steps)
+        return result(sc, run, k, p, lambda i: sphere_params(p, sc.stem, i))
     ph = Phases(k, LAWS[sc.law], p, restitution=sc.restitution, rtol=sc.rtol, atol=sc.atol,
-                max_steps=sc.max_steps, compiled=sc.method != METHOD, stem=sc.stem)
+                max_steps=sc.max_steps, stem=sc.stem)
     k.nfev = 0
     run = ph.run(initial_state(sc), t_out)
     return result(sc, run, k, p, ph.params)
+
+
+def sphere_params(p: np.ndarray, stem, i: int) -> np.ndarray:
+    """The kernel's parameters with sphere ``i`` touching (1: the stem's radius and offset)."""
+    q = np.array(p, dtype=float)
+    if i == 1:
+        q[5:7] = stem
+    return q
 
 
 def run_scene(data: dict, source: str = "<dict>", **overrides) -> ContactResult:

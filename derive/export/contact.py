@@ -15,21 +15,35 @@ from dataclasses import dataclass
 import numpy as np
 
 from derive.codegen.render import c_double, render
-from derive.contact import kernel as ck
+from derive.contact import driver, kernel as ck
 from derive.contact.laws import LAWS
 from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
 from derive.contact.simulate import body_omega, params, simulate
 from derive.errors import SceneError
 
-#: How many phase switches a run may make (derive.contact.phases' default).
-MAX_SWITCHES = 10_000
+#: How many phase switches a run may make.
+MAX_SWITCHES = driver.MAX_SWITCHES
 #: The units of the parameters, by name.
 PARAM_UNITS = {"I1": "kg m^2", "I2": "kg m^2", "I3": "kg m^2", "M": "kg", "g": "m/s^2",
-               "r": "m", "s": "m", "mu": "", "epsilon": "m/s"}
+               "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m"}
 #: The scene key each parameter comes from.
 PARAM_KEYS = {"I1": "body.I1", "I2": "body.I2", "I3": "body.I3", "M": "gravity.M",
               "g": "gravity.g", "r": "contact.radius", "s": "contact.offset", "mu": "contact.mu",
-              "epsilon": "contact.regularization"}
+              "epsilon": "contact.regularization", "r2": "contact.stem.radius",
+              "s2": "contact.stem.offset"}
+#: The names of the stem's parameters, after the model's in a run's parameters.
+STEM_NAMES = ("r2", "s2")
+
+
+def param_names(sc: ContactScene) -> tuple[str, ...]:
+    """The names of a run's parameters: the model's, then the stem's radius and offset if any."""
+    return tuple(ck.PARAM_NAMES) + (STEM_NAMES if sc.stem is not None else ())
+
+
+def run_params(sc: ContactScene) -> np.ndarray:
+    """The parameters the driver takes (``CONTACT_NPAR``): the model's, then the stem's."""
+    p = params(sc)
+    return np.concatenate([p, sc.stem]) if sc.stem is not None else p
 
 
 def model_name(sc: ContactScene) -> str:
@@ -43,14 +57,8 @@ def model_files(sc: ContactScene) -> dict[str, str]:
 
 
 def lib_source(sc: ContactScene) -> str:
-    """``<model>_lib.c``: the evaluator, then the driver, with the law's phases defined."""
-    law = LAWS[sc.law]
-    name = model_name(sc)
-    return (f"/* {name}_lib.c: the contact model {name} and the phase driver as one translation\n"
-            f" * unit; the law's phases ({', '.join(law.phases)}) select the driver's switch rules.\n"
-            f" * Written by `derive export`. */\n"
-            f"#define CONTACT_SLIDES {int(law.slides)}\n#define CONTACT_ROLLS {int(law.rolls)}\n"
-            f'#include "{name}.c"\n#include "{ck.RUN}"\n')
+    """``<model>_lib.c``: the evaluator, then the driver (the unit ``derive simulate`` runs)."""
+    return driver.lib_source(sc.shape, sc.law, sc.stem is not None)
 
 
 def start_omega(sc: ContactScene) -> np.ndarray:
@@ -72,10 +80,10 @@ def files(sc: ContactScene) -> dict[str, str]:
     out = model_files(sc)
     out[f"{P}_lib.c"] = lib_source(sc)
     scene_file = sc.source.rsplit("/", 1)[-1] if sc.source != "<dict>" else "the scene"
-    p = params(sc)
+    p = run_params(sc)
     common = dict(P=P, scene_file=scene_file, title=" ".join((sc.title or "").split()))
     out["example.c"] = render(
-        "contact/example.c.j2", params=[c_double(x) for x in p], param_names=ck.PARAM_NAMES,
+        "contact/example.c.j2", params=[c_double(x) for x in p], param_names=param_names(sc),
         angles=[c_double(x) for x in sc.angles], omega=[c_double(x) for x in start_omega(sc)],
         vx=c_double(sc.vx), vy=c_double(sc.vy), samples=sc.samples, t_end=c_double(sc.t_end),
         rtol=c_double(sc.rtol), atol=c_double(sc.atol), restitution=c_double(sc.restitution),
@@ -84,7 +92,7 @@ def files(sc: ContactScene) -> dict[str, str]:
     law = LAWS[sc.law]
     out["README.md"] = render(
         "contact/README.md.j2", law=law, shape=sc.shape, states=ck.STATE, outputs=ck.OUTPUTS,
-        parameters=[(n, PARAM_KEYS[n], c_double(v), PARAM_UNITS[n]) for n, v in zip(ck.PARAM_NAMES, p)],
+        parameters=[(n, PARAM_KEYS[n], c_double(v), PARAM_UNITS[n]) for n, v in zip(param_names(sc), p)],
         integrals=[n for n, _ in integral_outputs(sc)], run=ck.RUN, loop=ck.LOOP, **common)
     out["NOTICE.md"] = render("contact/NOTICE.md.j2", loop=ck.LOOP, fmi=False)
     return out
@@ -115,9 +123,6 @@ def bundle(found: tuple[dict, str], method: str | None = None) -> ContactBundle:
         The scene's simulation fails.
     """
     sc = read(*found, method=method)
-    if getattr(sc, "stem", None) is not None:  # the driver joins one sphere's phases
-        raise SceneError(f"{sc.source}: contact.stem: the export's phase driver has no second "
-                         f"sphere yet (derive simulate runs it)")
     if sc.method == METHOD:
         raise SceneError(f"{sc.source}: simulate.method: {METHOD} steps the phases from Python; "
                          f"export the compiled phase loop (--method {COMPILED})")

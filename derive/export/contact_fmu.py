@@ -23,7 +23,6 @@ import hashlib
 from xml.sax.saxutils import escape
 
 from derive.codegen.render import TEMPLATES, c_double, render
-from derive.contact.kernel import PARAM_NAMES
 from derive.contact.laws import LAWS
 from derive.export import contact as ce
 from derive.export.fmi import HEADERS, UNITS, Var, version
@@ -74,7 +73,7 @@ def _used(b: ce.ContactBundle) -> list[int]:
         skip.add("epsilon")
     if b.scene.shape == "point":
         skip.add("r")
-    return [k for k, n in enumerate(PARAM_NAMES) if n not in skip]
+    return [k for k, n in enumerate(ce.param_names(b.scene)) if n not in skip]
 
 
 def variables(b: ce.ContactBundle) -> list[Var]:
@@ -85,9 +84,9 @@ def variables(b: ce.ContactBundle) -> list[Var]:
         out.append(Var(name, len(out), kind, index, type_, causality, variability, initial,
                        start, unit if unit in UNITS else "", doc))
 
-    p = ce.params(sc)
+    p, names = ce.run_params(sc), ce.param_names(sc)
     for k in _used(b):
-        n = PARAM_NAMES[k]
+        n = names[k]
         unit = "N s/m" if n == "mu" and sc.friction == "viscous" else ce.PARAM_UNITS[n]
         add(ce.PARAM_KEYS[n], "V_PARAM", k, "Real", "parameter", "fixed", "exact", c_double(p[k]),
             unit, f"model parameter {n}")
@@ -131,7 +130,7 @@ def sources(b: ce.ContactBundle) -> tuple[dict[str, str], str]:
     integrals = ce.integral_outputs(sc)
     out["fmu.c"] = render(
         "contact/fmu.c.j2", P=P, ID=ID, guid=guid, variables=vs,
-        p_start=[c_double(x) for x in ce.params(sc)], in_start=[c_double(x) for x in start],
+        p_start=[c_double(x) for x in ce.run_params(sc)], in_start=[c_double(x) for x in start],
         set_start=[c_double(x) for x in (sc.restitution, sc.rtol, sc.atol, sc.max_steps)],
         n_out=len(OUTPUTS) + len(integrals), integrals=integrals, max_switches=ce.MAX_SWITCHES)
     index = {v.vr: v.vr + 1 for v in vs}  # ModelStructure counts variables from 1
