@@ -67,3 +67,29 @@ def test_name_never_defined_leaves_the_equation_unchecked():
     (c,) = [c for c in notes_check.check_text(text) if c.latex.startswith(r"\dot{v}")]
     assert c.verdict == "unchecked"
     assert "never defines" in c.why
+
+
+CUBIC = HEAD + r"""With $u = \cos\theta$ the nutation obeys
+
+$$\dot{u}^2 = (\alpha-au)(1-u^2)-(\beta-b u)^2$$
+
+and, with the roots of the cubic on the right,
+
+$$\dot{u}^2 = FACTORED$$
+"""
+
+
+def _factored(factored):
+    (c,) = [c for c in notes_check.check_text(CUBIC.replace("FACTORED", factored))
+            if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
+    return c
+
+
+def test_equation_by_its_named_roots_holds_with_the_leading_coefficient():
+    c = _factored("a(u-u_1)(u-u_2)(u-u_3)")
+    assert c.verdict == "holds", c.why
+
+
+@pytest.mark.parametrize("factored", ["2a(u-u_1)(u-u_2)(u-u_3)", "-a(u-u_1)(u-u_2)(u-u_3)", "a(u-u_1)(u-u_2)"])
+def test_equation_by_its_named_roots_fails_with_another_degree_or_leading_coefficient(factored):
+    assert _factored(factored).verdict == "fails"

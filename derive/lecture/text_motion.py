@@ -83,7 +83,10 @@ class TextMotion:
                 self.settings_only = False
                 return True
             if dot not in _free(right) and not isinstance(var, lx.Quantity):
+                before = self.text_motion.get(var)
                 self.text_motion[var] = (n, right, line)
+                if before is not None and before[0] == n:
+                    return self._by_roots(line, piece, var, before, right)
             return False
         if left in self.text_motion and isinstance(left, lx.Generic):
             n, eq, _ = self.text_motion[left]
@@ -97,6 +100,45 @@ class TextMotion:
                 self.settings_only = False
                 return True
         return False
+
+    def _by_roots(self, line, piece, var, before, right) -> bool:
+        """``\\dot u^n = c(u-u_1)(u-u_2)(u-u_3)`` after ``\\dot u^n = F(u)``, the roots named by the
+        text and not computed: holds when F is a polynomial in u of that degree with leading
+        coefficient c (then the factored form is F's, whatever its roots), fails when it is
+        not; False (not this statement) for any other right side."""
+        _, eq, eq_line = before
+        roots, scale = [], sp.S.One
+        for f in sp.Mul.make_args(right):
+            base, k = f.as_base_exp()
+            r = sp.expand(var - base)
+            if var in _free(base) and isinstance(r, lx.Generic) and r not in self.ctx.defs \
+                    and r not in _free(eq) and k.is_Integer and k > 0:
+                roots += [r] * int(k)
+            elif var in _free(f):
+                return False
+            else:
+                scale *= f
+        if not roots or _free(scale) & set(roots):
+            return False
+        try:
+            poly = sp.Poly(sp.expand(eq), var)
+        except sp.PolynomialError:
+            return False
+        if _free(sp.Matrix(poly.all_coeffs())) & {var}:
+            return False
+        names = ", ".join(self.tex(r) for r in dict.fromkeys(roots))
+        self.settings_only = False
+        if poly.degree() == len(roots) and sp.expand(poly.LC() - scale) == 0:
+            self._add(line, piece, "identity", "holds",
+                      f"the text's {self.tex(eq)} (line {eq_line}) is a polynomial in {self.tex(var)} of degree "
+                      f"{len(roots)} with leading coefficient {self.tex(scale)}: its factored form, whatever roots "
+                      f"{names} it names")
+        else:
+            self._add(line, piece, "identity", "fails",
+                      f"the text's {self.tex(eq)} (line {eq_line}) is a polynomial in {self.tex(var)} of degree "
+                      f"{poly.degree()} with leading coefficient {self.tex(poly.LC())}, not {len(roots)} and "
+                      f"{self.tex(scale)}")
+        return True
 
     def _check_changes(self):
         """Item 3, at the end of the text: each held check replaces its placeholder claim."""
