@@ -93,3 +93,10 @@ def test_equation_by_its_named_roots_holds_with_the_leading_coefficient():
 @pytest.mark.parametrize("factored", ["2a(u-u_1)(u-u_2)(u-u_3)", "-a(u-u_1)(u-u_2)(u-u_3)", "a(u-u_1)(u-u_2)"])
 def test_equation_by_its_named_roots_fails_with_another_degree_or_leading_coefficient(factored):
     assert _factored(factored).verdict == "fails"
+
+
+def test_equation_of_a_variable_is_kept_for_its_section_only():
+    text = CUBIC.replace("FACTORED", "2a(u-u_1)(u-u_2)(u-u_3)").replace(
+        "and, with the roots", "# Another body\n\nWith $u = \\cos\\theta$ and, with the roots")
+    (c,) = [c for c in notes_check.check_text(text) if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
+    assert c.verdict == "unchecked"

@@ -6,8 +6,8 @@ Gives: the mixin `TextMotion` of `derive.lecture.notes_check.Checker`, which
 
 1. **keeps the text's equation for a variable of its own**: ``\\dot u^2 = F(u)`` (or ``\\dot u =
    F(u)``) with u a symbol of the text's, written in the text's names (``a(u-u_1)(u-u_2)(u-u_3)``
-   with roots the text names but does not compute), is kept as the text states it, whatever the
-   rest of the checker makes of it;
+   with roots the text names but does not compute), is kept as the text states it for the rest of its
+   section, whatever the rest of the checker makes of it;
 2. **follows a change of variable**: ``u = S(v)`` with v a name the text has not used yet
    introduces v (not a claim);
 3. **checks the equation the change gives**: ``\\dot v^n = R(v)`` is the kept equation with
@@ -53,7 +53,9 @@ def _equal(a, b) -> bool:
 
 class TextMotion:
     """Mixin of the checker: see the module docstring. Uses ``self.vocab``, ``self.ctx`` (defs),
-    ``self.tex`` and ``self._add``; keeps ``text_motion`` and ``text_changes``."""
+    ``self.tex`` and ``self._add``; keeps the section's equations and changes in ``self.ctx``
+    (``own_motion``, ``changes``) and the checks waiting for the end of the text
+    (``change_checks``, ``later_defs``)."""
 
     def _rate_power(self, m):
         """Ẋ^n with X a symbol of the text's: (X, Ẋ, n); None for anything else."""
@@ -67,8 +69,8 @@ class TextMotion:
 
     def _text_motion(self, line, piece, parsed) -> bool:
         """Items 1 to 3 of the module docstring; True when the statement is done."""
-        if not hasattr(self, "text_motion"):
-            self.text_motion, self.text_changes, self.change_checks, self.later_defs = {}, {}, [], {}
+        if not hasattr(self, "change_checks"):
+            self.change_checks, self.later_defs = [], {}
         members = [m.value for m in parsed.members]
         if len(members) != 2 or parsed.relations != ["="] or any(isinstance(m, sp.MatrixBase) for m in members):
             return False
@@ -77,26 +79,28 @@ class TextMotion:
         rate = self._rate_power(left)
         if rate is not None:
             var, dot, n = rate
-            if var in self.text_changes:
+            if var in self.ctx.changes:
                 self._add(line, piece, "identity", "unchecked", "waits for the end of the text")
-                self.change_checks.append((self.claims[-1], var, dot, n, right))
+                old, change, change_line = self.ctx.changes[var]
+                self.change_checks.append((self.claims[-1], var, dot, n, right, (old, change, change_line),
+                                           self.ctx.own_motion[old]))
                 self.settings_only = False
                 return True
             if dot not in _free(right) and not isinstance(var, lx.Quantity):
-                before = self.text_motion.get(var)
-                self.text_motion[var] = (n, right, line)
+                before = self.ctx.own_motion.get(var)
+                self.ctx.own_motion[var] = (n, right, line)
                 if before is not None and before[0] == n:
                     return self._by_roots(line, piece, var, before, right)
             return False
-        if left in self.text_motion and isinstance(left, lx.Generic):
-            n, eq, _ = self.text_motion[left]
+        if left in self.ctx.own_motion and isinstance(left, lx.Generic):
+            n, eq, _ = self.ctx.own_motion[left]
             new = [s for s in _free(right) if isinstance(s, lx.Generic) and s not in self.ctx.defs
-                   and s not in _free(eq) and s not in self.text_motion and self.vocab.undotted(s) is None]
+                   and s not in _free(eq) and s not in self.ctx.own_motion and self.vocab.undotted(s) is None]
             if len(new) == 1 and lx.t not in _free(right):
-                self.text_changes[new[0]] = (left, right, line)
+                self.ctx.changes[new[0]] = (left, right, line)
                 self._add(line, piece, "change of variable", "unchecked",
                           f"introduces {self.tex(new[0])} by {self.tex(left)} = {self.tex(right)}: "
-                          f"the text's equation for {self.tex(left)} (line {self.text_motion[left][2]}) is carried to it")
+                          f"the text's equation for {self.tex(left)} (line {self.ctx.own_motion[left][2]}) is carried to it")
                 self.settings_only = False
                 return True
         return False
@@ -142,12 +146,9 @@ class TextMotion:
 
     def _check_changes(self):
         """Item 3, at the end of the text: each held check replaces its placeholder claim."""
-        for placeholder, var, dot, n, right in getattr(self, "change_checks", ()):
-            old, change, change_line = self.text_changes[var]
-            m, eq, eq_line = self.text_motion[old]
-            new = next(s for s in _free(change) if s not in _free(eq) and isinstance(s, lx.Generic)
-                       and s in self.text_changes)
-            derived = eq.xreplace({old: change}) / sp.diff(change, new) ** m     # v̇^m
+        for placeholder, var, dot, n, right, (old, change, change_line), (m, eq, eq_line) in \
+                getattr(self, "change_checks", ()):
+            derived = eq.xreplace({old: change}) / sp.diff(change, var) ** m     # v̇^m
             claim = self._later_names(right, _free(eq) | _free(change))
             if claim is None:
                 placeholder.why = f"uses names the text never defines ({', '.join(sorted(map(str, _free(right))))})"
