@@ -100,3 +100,28 @@ def test_equation_of_a_variable_is_kept_for_its_section_only():
         "and, with the roots", "# Another body\n\nWith $u = \\cos\\theta$ and, with the roots")
     (c,) = [c for c in notes_check.check_text(text) if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
     assert c.verdict == "unchecked"
+
+
+FUNCTION = HEAD + r"""The text names the right side
+
+$$G(u) = (\alpha-au)(1-u^2)-(\beta-bu)^2$$
+
+and evaluates it where the precession stops:
+
+$$G\left(\frac{\beta}{b}\right) = VALUE$$
+"""
+
+
+def _at(value):
+    (c,) = [c for c in notes_check.check_text(FUNCTION.replace("VALUE", value)) if c.latex.startswith("G\\left")]
+    return c
+
+
+def test_function_of_the_text_at_an_argument_holds_with_its_definition():
+    c = _at(r"\left(\alpha-\frac{a\beta}{b}\right)\left(1-\frac{\beta^2}{b^2}\right)")
+    assert c.verdict == "holds", c.why
+
+
+def test_function_of_the_text_at_an_argument_is_never_flagged_by_that_reading():
+    c = _at(r"\left(\alpha+\frac{a\beta}{b}\right)\left(1-\frac{\beta^2}{b^2}\right)")
+    assert c.verdict not in ("holds", "typo", "fails")

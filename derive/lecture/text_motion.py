@@ -75,6 +75,8 @@ class TextMotion:
         if len(members) != 2 or parsed.relations != ["="] or any(isinstance(m, sp.MatrixBase) for m in members):
             return False
         left, right = members
+        if self._function_of_the_text(line, piece, members):
+            return True
         self._later_definition(left, right)
         rate = self._rate_power(left)
         if rate is not None:
@@ -104,6 +106,40 @@ class TextMotion:
                 self.settings_only = False
                 return True
         return False
+
+    def _function_of_the_text(self, line, piece, members) -> bool:
+        """``G\\left(\\frac{\\beta}{b\\Omega}\\right) = …`` after the text defined ``G(u) = …``: G at
+        that argument, its definition with u put in. Only a statement that then holds in the
+        text's names is taken (True); anything else is left to the rest of the checker."""
+        applied, where = [], {}
+        for k, m in enumerate(members):
+            for f in _free(m):
+                atom = self.vocab.generic.get(f) if isinstance(f, lx.Generic) else None
+                if atom is None or atom.sup or f in self.ctx.defs or not isinstance(m, sp.Mul) \
+                        or f not in m.args:
+                    continue
+                defined = [(s, a) for s, a in self.vocab.generic.items() if s in self.ctx.defs
+                           and a == atom.with_(sup=a.sup) and a.sup.startswith("(") and a.sup.endswith(")")]
+                if len(defined) != 1:
+                    continue
+                sym, a = defined[0]
+                body = self.ctx.defs[sym]
+                var = [x for x in _free(body) if str(x) == a.sup[1:-1]]
+                arg = m / f
+                if len(var) != 1 or f in _free(arg):
+                    continue
+                applied.append(k)
+                where[k] = (body.xreplace({var[0]: arg}), a)
+        if not applied:
+            return False
+        values = [where[k][0] if k in where else m for k, m in enumerate(members)]
+        if not all(_equal(values[0], v) for v in values[1:]):
+            return False
+        names = ", ".join(sorted({f"{a.base}{a.sup}" for _, a in where.values()}))
+        self._add(line, piece, "identity", "holds",
+                  f"with the text's function {names} put in (equal at random values of its names)")
+        self.settings_only = False
+        return True
 
     def _by_roots(self, line, piece, var, before, right) -> bool:
         """``\\dot u^n = c(u-u_1)(u-u_2)(u-u_3)`` after ``\\dot u^n = F(u)``, the roots named by the
