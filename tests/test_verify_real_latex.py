@@ -65,6 +65,17 @@ def test_a_symbols_map_says_a_texts_names_outright():
     assert claims[1].correction == r"M_3 = I_3 \left(\dot\phi\cos\theta + \dot\psi\right)"
 
 
+@pytest.mark.parametrize("prose", [
+    "Here $m$ is the top's mass, $a$ is the distance from the pivot to the centre of mass.",
+    "Here $a$ is the distance from the pivot to the centre of mass, and $m$ is the mass.",
+])
+def test_what_the_prose_says_a_symbol_is_wins_over_a_phrase_just_before_it(prose):
+    text = "---\nconvention: z-x-z\n---\n# Heavy top\n\n" + prose + "\n\n$$V = m g a \\cos\\theta$$\n"
+    names = nt.parse_notes(text).names
+    assert names.symbols[("a", "")] == "centre-of-mass distance"
+    assert names.symbols[("m", "")] == "mass"
+
+
 def test_a_symbols_map_with_a_meaning_derive_does_not_know_is_bad_input():
     with pytest.raises(SceneError, match="symbols"):
         nt.parse_notes("---\nsymbols: {M: the moon}\n---\n# x\n")

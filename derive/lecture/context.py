@@ -42,12 +42,14 @@ class Context:
     running: dict = field(default_factory=dict)       # the text's names defined in running text → line
     motion: dict = field(default_factory=dict)        # a rate the text states for its motion → (value, line)
     given: dict = field(default_factory=dict)         # a left side as written → (the value the text set it to, where): kept across sections
+    own_motion: dict = field(default_factory=dict)    # a variable of the text's → (power n, F, line) of its u̇ⁿ = F(u)
+    changes: dict = field(default_factory=dict)       # a new variable v → (u, S(v), line) of the text's u = S(v)
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
-        self.motion = {}
+        self.motion, self.own_motion, self.changes = {}, {}, {}
 
 
 class Reading:

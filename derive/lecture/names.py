@@ -300,7 +300,7 @@ def _nearest(marked: str) -> str | None:
     at = marked.index("§")
     lead = marked[at + 1:].lstrip()
     explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the )", lead)
-    best = None
+    best, told = None, None     # told: the nearest phrase that "§ is the …" goes on to say
     for name, (_, phrase) in MEANINGS.items():
         for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):
             if "¤" in marked[min(m.end(), at):max(m.start(), at)]:
@@ -311,10 +311,14 @@ def _nearest(marked: str) -> str | None:
                 d = at - m.end()
             elif explains:
                 d = m.start() - at - 1
+                if told is None or d < told[0]:
+                    told = (d, name)
             else:
                 continue
             if best is None or d < best[0]:
                 best = (d, name)
+    if told is not None and told[0] <= len(explains.group(0)) + 12:
+        return told[1]          # "…'s mass, § is the distance …": what the text says § is wins
     return best[1] if best is not None and best[0] <= 25 else None
 
 

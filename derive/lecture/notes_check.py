@@ -56,6 +56,7 @@ from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
+from derive.lecture.text_motion import TextMotion
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
@@ -93,7 +94,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
+class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
               SmallMoments, Judging):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -170,6 +171,7 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
         self._flush()
         self._place_flushed(len(self.claims))
         self._read_later_definitions()
+        self._check_changes()
         return self.claims
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
@@ -259,6 +261,8 @@ class Checker(TextNames, Rereading, Motion, Reading, VectorStatements, OnTheMoti
                 self._flush()                  # a component met again starts a new group (Lᵢ after ω̃ᵢ)
             self.pending.append((line, piece, *row))
             self.settings_only = False
+            return
+        if parsed is not None and not duplicate and self._text_motion(line, piece, parsed):
             return
         if parsed is None or (not duplicate and self._text_statement(line, piece, parsed)):
             return

@@ -1,0 +1,229 @@
+"""A text's own equation of motion in a variable of its own, carried through its changes of
+variable: the part of the notes checker that follows a reduction as the text writes it.
+
+Takes: statements parsed by `derive.lecture.latex` with the text's symbols (`latex.Generic`).
+Gives: the mixin `TextMotion` of `derive.lecture.notes_check.Checker`, which
+
+1. **keeps the text's equation for a variable of its own**: ``\\dot u^2 = F(u)`` (or ``\\dot u =
+   F(u)``) with u a symbol of the text's, written in the text's names (``a(u-u_1)(u-u_2)(u-u_3)``
+   with roots the text names but does not compute), is kept as the text states it for the rest of its
+   section, whatever the rest of the checker makes of it;
+2. **follows a change of variable**: ``u = S(v)`` with v a name the text has not used yet
+   introduces v (not a claim);
+3. **checks the equation the change gives**: ``\\dot v^n = R(v)`` is the kept equation with
+   ``u = S(v)`` and ``\\dot u = S'(v)\\,\\dot v`` put in, ``\\dot v^m = F(S(v)) / S'(v)^m``. A name
+   of R the text defines only further on (``where k^2 = …``) is read with that definition, so
+   the check waits for the end of the text. R equal to the m-th power's right side under another
+   power on the left (``\\dot v = …`` for ``\\dot v^2 = …``) is a typo of the power.
+
+The check compares the two sides at random values of the text's names (an identity in them
+holds at every point; a difference shows at almost every one), exact in rational arithmetic
+where the expressions allow it.
+
+May import: :mod:`derive.lecture.latex`, SymPy.
+"""
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+
+_POINTS = 4
+"""Random points at which the two sides are compared (an identity holds at all of them)."""
+
+
+def _free(obj) -> set:
+    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+
+
+def _equal(a, b) -> bool:
+    """a ≡ b as functions of their free symbols, compared at random points away from 0 and 1."""
+    diff = sp.sympify(a) - sp.sympify(b)
+    names = sorted(_free(diff), key=str)
+    rng = random.Random(20240601)
+    for _ in range(_POINTS):
+        point = {s: sp.Rational(rng.randint(11, 97), rng.randint(3, 10)) for s in names}
+        value = sp.N(diff.xreplace(point), 30)
+        if not value.is_number or abs(value) > 1e-20 * (1 + abs(sp.N(sp.sympify(a).xreplace(point), 30))):
+            return False
+    return True
+
+
+class TextMotion:
+    """Mixin of the checker: see the module docstring. Uses ``self.vocab``, ``self.ctx`` (defs),
+    ``self.tex`` and ``self._add``; keeps the section's equations and changes in ``self.ctx``
+    (``own_motion``, ``changes``) and the checks waiting for the end of the text
+    (``change_checks``, ``later_defs``)."""
+
+    def _rate_power(self, m):
+        """Ẋ^n with X a symbol of the text's: (X, Ẋ, n); None for anything else."""
+        base, n = (m.base, m.exp) if isinstance(m, sp.Pow) else (m, sp.S.One)
+        if not isinstance(base, lx.Generic) or not (n.is_Integer and n > 0):
+            return None
+        undotted = self.vocab.undotted(base)
+        if undotted is None or undotted[1] != 1:
+            return None
+        return undotted[0], base, int(n)
+
+    def _text_motion(self, line, piece, parsed) -> bool:
+        """Items 1 to 3 of the module docstring; True when the statement is done."""
+        if not hasattr(self, "change_checks"):
+            self.change_checks, self.later_defs = [], {}
+        members = [m.value for m in parsed.members]
+        if len(members) != 2 or parsed.relations != ["="] or any(isinstance(m, sp.MatrixBase) for m in members):
+            return False
+        left, right = members
+        if self._function_of_the_text(line, piece, members):
+            return True
+        self._later_definition(left, right)
+        rate = self._rate_power(left)
+        if rate is not None:
+            var, dot, n = rate
+            if var in self.ctx.changes:
+                self._add(line, piece, "identity", "unchecked", "waits for the end of the text")
+                old, change, change_line = self.ctx.changes[var]
+                self.change_checks.append((self.claims[-1], var, dot, n, right, (old, change, change_line),
+                                           self.ctx.own_motion[old]))
+                self.settings_only = False
+                return True
+            if dot not in _free(right) and not isinstance(var, lx.Quantity):
+                before = self.ctx.own_motion.get(var)
+                self.ctx.own_motion[var] = (n, right, line)
+                if before is not None and before[0] == n:
+                    return self._by_roots(line, piece, var, before, right)
+            return False
+        if left in self.ctx.own_motion and isinstance(left, lx.Generic):
+            n, eq, _ = self.ctx.own_motion[left]
+            new = [s for s in _free(right) if isinstance(s, lx.Generic) and s not in self.ctx.defs
+                   and s not in _free(eq) and s not in self.ctx.own_motion and self.vocab.undotted(s) is None]
+            if len(new) == 1 and lx.t not in _free(right):
+                self.ctx.changes[new[0]] = (left, right, line)
+                self._add(line, piece, "change of variable", "unchecked",
+                          f"introduces {self.tex(new[0])} by {self.tex(left)} = {self.tex(right)}: "
+                          f"the text's equation for {self.tex(left)} (line {self.ctx.own_motion[left][2]}) is carried to it")
+                self.settings_only = False
+                return True
+        return False
+
+    def _function_of_the_text(self, line, piece, members) -> bool:
+        """``G\\left(\\frac{\\beta}{b\\Omega}\\right) = …`` after the text defined ``G(u) = …``: G at
+        that argument, its definition with u put in. Only a statement that then holds in the
+        text's names is taken (True); anything else is left to the rest of the checker."""
+        applied, where = [], {}
+        for k, m in enumerate(members):
+            for f in _free(m):
+                atom = self.vocab.generic.get(f) if isinstance(f, lx.Generic) else None
+                if atom is None or atom.sup or f in self.ctx.defs or not isinstance(m, sp.Mul) \
+                        or f not in m.args:
+                    continue
+                defined = [(s, a) for s, a in self.vocab.generic.items() if s in self.ctx.defs
+                           and a == atom.with_(sup=a.sup) and a.sup.startswith("(") and a.sup.endswith(")")]
+                if len(defined) != 1:
+                    continue
+                sym, a = defined[0]
+                body = self.ctx.defs[sym]
+                var = [x for x in _free(body) if str(x) == a.sup[1:-1]]
+                arg = m / f
+                if len(var) != 1 or f in _free(arg):
+                    continue
+                applied.append(k)
+                where[k] = (body.xreplace({var[0]: arg}), a)
+        if not applied:
+            return False
+        values = [where[k][0] if k in where else m for k, m in enumerate(members)]
+        if not all(_equal(values[0], v) for v in values[1:]):
+            return False
+        names = ", ".join(sorted({f"{a.base}{a.sup}" for _, a in where.values()}))
+        self._add(line, piece, "identity", "holds",
+                  f"with the text's function {names} put in (equal at random values of its names)")
+        self.settings_only = False
+        return True
+
+    def _by_roots(self, line, piece, var, before, right) -> bool:
+        """``\\dot u^n = c(u-u_1)(u-u_2)(u-u_3)`` after ``\\dot u^n = F(u)``, the roots named by the
+        text and not computed: holds when F is a polynomial in u of that degree with leading
+        coefficient c (then the factored form is F's, whatever its roots), fails when it is
+        not; False (not this statement) for any other right side."""
+        _, eq, eq_line = before
+        roots, scale = [], sp.S.One
+        for f in sp.Mul.make_args(right):
+            base, k = f.as_base_exp()
+            r = sp.expand(var - base)
+            if var in _free(base) and isinstance(r, lx.Generic) and r not in self.ctx.defs \
+                    and r not in _free(eq) and k.is_Integer and k > 0:
+                roots += [r] * int(k)
+            elif var in _free(f):
+                return False
+            else:
+                scale *= f
+        if not roots or _free(scale) & set(roots):
+            return False
+        try:
+            poly = sp.Poly(sp.expand(eq), var)
+        except sp.PolynomialError:
+            return False
+        if _free(sp.Matrix(poly.all_coeffs())) & {var}:
+            return False
+        names = ", ".join(self.tex(r) for r in dict.fromkeys(roots))
+        self.settings_only = False
+        if poly.degree() == len(roots) and sp.expand(poly.LC() - scale) == 0:
+            self._add(line, piece, "identity", "holds",
+                      f"the text's {self.tex(eq)} (line {eq_line}) is a polynomial in {self.tex(var)} of degree "
+                      f"{len(roots)} with leading coefficient {self.tex(scale)}: its factored form, whatever roots "
+                      f"{names} it names")
+        else:
+            self._add(line, piece, "identity", "fails",
+                      f"the text's {self.tex(eq)} (line {eq_line}) is a polynomial in {self.tex(var)} of degree "
+                      f"{poly.degree()} with leading coefficient {self.tex(poly.LC())}, not {len(roots)} and "
+                      f"{self.tex(scale)}")
+        return True
+
+    def _check_changes(self):
+        """Item 3, at the end of the text: each held check replaces its placeholder claim."""
+        for placeholder, var, dot, n, right, (old, change, change_line), (m, eq, eq_line) in \
+                getattr(self, "change_checks", ()):
+            derived = eq.xreplace({old: change}) / sp.diff(change, var) ** m     # v̇^m
+            claim = self._later_names(right, _free(eq) | _free(change))
+            if claim is None:
+                placeholder.why = f"uses names the text never defines ({', '.join(sorted(map(str, _free(right))))})"
+                continue
+            how = (f"{self.tex(old)} = {self.tex(change)} (line {change_line}) put into the text's "
+                   f"equation for {self.tex(old)} (line {eq_line})")
+            written, _, rest = placeholder.latex.partition("=")
+            written = written.strip()
+            power = written if n == m else f"{written}^{m}" if n == 1 else self.tex(dot ** m)
+            if m == n and _equal(claim, derived) or m != n and _equal(claim ** m, derived ** n):
+                placeholder.kind, placeholder.verdict, placeholder.why = "identity", "holds", how
+            elif m != n and _equal(claim, derived):
+                placeholder.kind, placeholder.verdict = "identity", "typo"
+                placeholder.why = f"the left side is {power}, not {written}: {how}"
+                placeholder.correction = f"{power} = {rest.strip()}"
+            else:
+                placeholder.kind, placeholder.verdict = "identity", "fails"
+                placeholder.why = f"{how} gives {power} = {self.tex(sp.factor(derived))}"
+                placeholder.correction = f"{power} = {self.tex(sp.factor(derived))}"
+
+    def _later_definition(self, left, right):
+        """``k^2 = …`` or ``k = …`` for a name a waiting check uses and nothing defined before
+        (``where k^2 = …`` after the equation): kept for that check."""
+        base, n = (left.base, left.exp) if isinstance(left, sp.Pow) else (left, sp.S.One)
+        waiting = set().union(*(_free(c[4]) for c in self.change_checks)) if self.change_checks else set()
+        if isinstance(base, lx.Generic) and base in waiting and base not in self.ctx.defs \
+                and n.is_Integer and n > 0 and base not in _free(right):
+            self.later_defs.setdefault(base, right ** sp.Rational(1, int(n)))
+
+    def _later_names(self, value, known):
+        """value with the text's names outside ``known`` replaced by their definitions (as the
+        text gives them by its end), or None when one has none."""
+        for _ in range(4):
+            loose = {s for s in _free(value) if isinstance(s, lx.Generic) and s not in known}
+            defs = {**self.later_defs, **self.ctx.defs}
+            rep = {s: defs[s] for s in loose if s in defs}
+            if len(rep) < len(loose):
+                return None
+            if not rep:
+                return value
+            value = value.xreplace(rep)
+        return None
