@@ -328,6 +328,23 @@ def test_sigint_inside_a_compiled_loop(tmp_path, method, extra):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
 
 
+@pytest.mark.parametrize("name, library", [("tippe_top", "contact_sphere_viscous_run"),
+                                           ("frictionless_top", "contact_point_reduced")])
+def test_sigint_inside_a_compiled_contact_run(tmp_path, name, library):
+    """A long contact run (the phase driver; the frictionless top's reduced loop) stops within
+    0.5 s of the process's CPU after Ctrl-C, with exit 130, one line and no output file."""
+    scene = tmp_path / "long.toml"
+    text = (ROOT / "scenes" / "contact" / f"{name}.toml").read_text(encoding="utf-8")
+    text = re.sub(r"(?m)^t_end = .*$", "t_end = 1e5\nmax_steps = 1000000000000", text)
+    scene.write_text(re.sub(r"(?m)^samples = .*$", "samples = 11", text))
+    out = tmp_path / "out.npz"
+    proc = start("simulate", scene, "-o", out)
+    rc, stdout, stderr, took = interrupt_after(proc, 0.5, mapped=library + r"-[0-9a-f]{24}\.so$")
+    assert (rc, stdout, stderr) == (130, "", "error: interrupted\n")
+    assert took < 0.5
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml"]
+
+
 @pytest.mark.parametrize("argv, code", [
     (["simulate", "scenes/does-not-exist.toml"], 2),
     (["simulate", "scenes/looping_top.toml", "--rtol", "nan"], 2),

@@ -244,22 +244,22 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
 
 
 def _compiles_clean(pairs):
-    from derive.contact.kernel import LOOP, loop_source
+    from derive.contact.kernel import LOOP, loop_source, runtime_sources
     from derive.contact.sources import source
     from derive.runtime.cbuild import check_compiles
 
     for shape, law in pairs:
-        check_compiles({"c.c": source(shape, law), LOOP: loop_source()}, "c.c")
+        check_compiles({"c.c": source(shape, law), LOOP: loop_source(), **runtime_sources()}, "c.c")
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
-    from derive.contact.kernel import LOOP, loop_source
+    from derive.contact.kernel import LOOP, loop_source, runtime_sources
     from derive.contact.sources import reduced_source
     from derive.runtime.cbuild import check_compiles
 
     _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
     for shape in ("point", "sphere", "disc"):
-        check_compiles({"c.c": reduced_source(shape), LOOP: loop_source()}, "c.c")
+        check_compiles({"c.c": reduced_source(shape), LOOP: loop_source(), **runtime_sources()}, "c.c")
 
 
 @pytest.mark.slow

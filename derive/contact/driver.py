@@ -13,11 +13,13 @@ import functools
 
 import numpy as np
 
-from derive.contact.kernel import LOOP, RUN, STATE, text
+from derive.contact.kernel import RUN, STATE, loop_sources, text
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Run, Switch
 from derive.errors import IntegrationError
+from derive.methods.status import Status
 from derive.runtime.cbuild import compile_library
+from derive.runtime.records import guarded, sigint_guard
 
 #: How many phase switches a run may make.
 MAX_SWITCHES = 10_000
@@ -65,16 +67,17 @@ def lib_source(shape: str, law: str, stem: bool) -> str:
 
 @functools.lru_cache(maxsize=None)
 def library(shape: str, law: str, stem: bool):
-    """``contact_simulate`` of a shape and law's driver library (compiled once, then cached)."""
+    """``contact_simulate`` of a shape and law's driver library (compiled once, then cached) and
+    the library (its Ctrl-C guard: :func:`derive.runtime.records.sigint_guard`)."""
     name = f"contact_{shape}_{law}"
     lib_name = f"{name}_stem_run" if stem else f"{name}_run"
-    sources = {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP), RUN: text(RUN),
-               f"{name}_lib.c": lib_source(shape, law, stem)}
-    fn = compile_library(lib_name, sources, f"{name}_lib.c").contact_simulate
+    sources = {**loop_sources(name), RUN: text(RUN), f"{name}_lib.c": lib_source(shape, law, stem)}
+    lib = compile_library(lib_name, sources, f"{name}_lib.c")
+    fn = lib.contact_simulate
     fn.restype = ctypes.c_int
     fn.argtypes = ([ctypes.POINTER(_RunState)] + [ctypes.c_void_p] * 3 + [ctypes.POINTER(_Settings),
                    ctypes.c_long] + [ctypes.c_void_p] * 6 + [ctypes.c_long])
-    return fn
+    return fn, lib
 
 
 def run(shape: str, law: str, p: np.ndarray, stem, y0: np.ndarray, t_out: np.ndarray, *,
@@ -105,11 +108,13 @@ def run(shape: str, law: str, p: np.ndarray, stem, y0: np.ndarray, t_out: np.nda
 
     Raises
     ------
+    KeyboardInterrupt
+        Ctrl-C during the run (the C loop stops at its next step).
     IntegrationError
         Step budget spent, step size underflow, a singular contact, a non-finite state, or more
         than ``max_switches`` switches, with the time.
     """
-    fn = library(shape, law, stem is not None)
+    fn, lib = library(shape, law, stem is not None)
     pr = np.ascontiguousarray(np.concatenate([p, stem]) if stem is not None else p, dtype=float)
     y0 = np.ascontiguousarray(y0, dtype=float)
     ts = np.ascontiguousarray(t_out, dtype=float)
@@ -120,9 +125,11 @@ def run(shape: str, law: str, p: np.ndarray, stem, y0: np.ndarray, t_out: np.nda
     d0 = np.ascontiguousarray(direction, dtype=float)
     state = _RunState()
     settings = _Settings(rtol, atol, restitution, max_steps, max_switches)
-    code = fn(ctypes.byref(state), y0.ctypes.data, pr.ctypes.data, d0.ctypes.data,
-              ctypes.byref(settings), n, ts.ctypes.data, ys.ctypes.data, phases.ctypes.data,
-              spheres.ctypes.data, dirs.ctypes.data, sw.ctypes.data, len(sw))
+    code = guarded(sigint_guard(lib), fn, ctypes.byref(state), y0.ctypes.data, pr.ctypes.data,
+                   d0.ctypes.data, ctypes.byref(settings), n, ts.ctypes.data, ys.ctypes.data,
+                   phases.ctypes.data, spheres.ctypes.data, dirs.ctypes.data, sw.ctypes.data, len(sw))
+    if code == Status.INTERRUPTED:  # a request from another thread, unguarded
+        raise KeyboardInterrupt
     kept = sw[:min(state.nswitch, len(sw))]
     if code == _TOO_MANY_SWITCHES:
         raise IntegrationError(f"more than {max_switches} phase switches by t = {state.t:.8g} "

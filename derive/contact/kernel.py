@@ -17,8 +17,13 @@ from derive.codegen.render import GENERATED
 from derive.contact.layout import LOOP, OUTPUTS, PARAM_NAMES, PHASES, RUN, STATE, loop_source, run_source
 from derive.runtime.cbuild import compile_library
 
-__all__ = ["LOOP", "OUTPUTS", "PARAM_NAMES", "PHASES", "RUN", "STATE", "Kernel", "kernel", "loop_source",
-           "run_source", "text"]
+__all__ = ["LOOP", "OUTPUTS", "PARAM_NAMES", "PHASES", "RUN", "RUNTIME", "STATE", "Kernel", "kernel",
+           "loop_source", "run_source", "runtime_sources", "text"]
+
+#: The shared runtime the phase loop asks for an interrupt (``generated/c/``): compiled with the
+#: contact libraries as with the pivoted models' (:mod:`derive.runtime.cbuild` adds the host's
+#: Ctrl-C guard to every library whose sources hold it), shipped with every contact export.
+RUNTIME = ("derive_runtime.h", "derive_runtime.c")
 
 
 def text(name: str) -> str:
@@ -31,12 +36,22 @@ def text(name: str) -> str:
     return sources.derive(name)
 
 
+def runtime_sources() -> dict[str, str]:
+    """The shared runtime's files (:data:`RUNTIME`) by name, as ``make derive`` wrote them."""
+    return {n: (GENERATED / "c" / n).read_text(encoding="utf-8") for n in RUNTIME}
+
+
+def loop_sources(name: str) -> dict[str, str]:
+    """The evaluator ``<name>.c`` with what it includes: the phase loop and the runtime."""
+    return {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP), **runtime_sources()}
+
+
 class Kernel:
     """A loaded evaluator: ``eval(phase, y, p, dir)`` → (dy/dt, outputs), NumPy arrays."""
 
     def __init__(self, shape: str, law: str):
         name = f"contact_{shape}_{law}"
-        lib = compile_library(name, {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP)}, f"{name}.c")
+        lib = compile_library(name, loop_sources(name), f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5

@@ -30,11 +30,13 @@ import functools
 
 import numpy as np
 
-from derive.contact.kernel import LOOP, OUTPUTS, text
+from derive.contact.kernel import OUTPUTS, loop_sources
 from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import METHOD
 from derive.errors import IntegrationError
+from derive.methods.status import Status
 from derive.runtime.cbuild import compile_library
+from derive.runtime.records import guarded, sigint_guard
 
 #: The parameters, in order (:data:`derive.contact.sources.REDUCED_PARAMS`, the symbols' names).
 PARAM_NAMES = ("I1", "I3", "M", "g", "r", "s", "p_alpha", "p_gamma")
@@ -50,7 +52,7 @@ class ReducedKernel:
 
     def __init__(self, shape: str):
         name = f"contact_{shape}_reduced"
-        lib = compile_library(name, {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP)}, f"{name}.c")
+        lib = compile_library(name, loop_sources(name), f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
@@ -63,6 +65,7 @@ class ReducedKernel:
                               + [ctypes.c_void_p] * 2 + [ctypes.c_double, ctypes.c_double, ctypes.c_void_p,
                                                          ctypes.c_long, ctypes.c_int]
                               + [ctypes.c_void_p] * 2 + [ctypes.c_long] + [ctypes.c_void_p] * 5)
+        self.lib = lib
 
     def rates(self, y: np.ndarray, p: np.ndarray) -> np.ndarray:
         """(α̇, β̇, γ̇, β̈) and (N, z, ż) at each row of ``y``."""
@@ -133,10 +136,12 @@ def run(sc, y0: np.ndarray, t_out: np.ndarray, p_full: np.ndarray, full):
     counts = np.zeros(2, dtype=np.int_)
     events, ref, d = np.array([1], dtype=np.intc), np.zeros(3), np.zeros(3)
     ts = np.ascontiguousarray(t_out, dtype=float)
-    code = k.step(0, ctypes.addressof(t), y.ctypes.data, float(t_out[-1]), p.ctypes.data, d.ctypes.data,
-                  sc.rtol, sc.atol, ctypes.addressof(h), sc.max_steps, 1, events.ctypes.data, ref.ctypes.data,
-                  len(ts), ts.ctypes.data, ctypes.addressof(its), ys.ctypes.data, ctypes.addressof(which),
-                  counts.ctypes.data)
+    code = guarded(sigint_guard(k.lib), k.step, 0, ctypes.addressof(t), y.ctypes.data, float(t_out[-1]),
+                   p.ctypes.data, d.ctypes.data, sc.rtol, sc.atol, ctypes.addressof(h), sc.max_steps, 1,
+                   events.ctypes.data, ref.ctypes.data, len(ts), ts.ctypes.data, ctypes.addressof(its),
+                   ys.ctypes.data, ctypes.addressof(which), counts.ctypes.data)
+    if code == Status.INTERRUPTED:  # a request from another thread, unguarded
+        raise KeyboardInterrupt
     if code == 1 or (code == 4 and np.sin(y[2]) < POLE):
         return None  # lift-off, or the chart's pole: the full formulation runs it
     if code == 2:

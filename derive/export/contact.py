@@ -51,9 +51,9 @@ def model_name(sc: ContactScene) -> str:
 
 
 def model_files(sc: ContactScene) -> dict[str, str]:
-    """The model's C: its evaluator, the phase loop and the driver, by file name."""
-    name = model_name(sc)
-    return {f"{name}.c": ck.text(f"{name}.c"), ck.LOOP: ck.text(ck.LOOP), ck.RUN: ck.text(ck.RUN)}
+    """The model's C: its evaluator, the phase loop, the shared runtime (the loop's interrupt
+    hook) and the driver, by file name."""
+    return {**ck.loop_sources(model_name(sc)), ck.RUN: ck.text(ck.RUN)}
 
 
 def lib_source(sc: ContactScene) -> str:

@@ -54,6 +54,40 @@ _INTERRUPTED = int(Status.INTERRUPTED)
 _ON, _OFF = ctypes.c_int(1), ctypes.c_int(0)  # the guard's arguments, made once
 
 
+def sigint_guard(lib: ctypes.CDLL):
+    """The Ctrl-C guard ``int derive_sigint_guard(int on)`` of a loaded library (every library
+    whose sources hold the shared runtime exports it, :mod:`derive.runtime.cbuild`), bound; None
+    off the main thread, where its SIGINT handler cannot be installed."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    guard = lib.derive_sigint_guard
+    guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
+    return guard
+
+
+def guarded(guard, fn, *args) -> int:
+    """``fn(*args)``, a compiled loop that asks the runtime's interrupt hook once per step, under
+    the Ctrl-C guard ``guard`` (:func:`sigint_guard`; None: a plain call whose interrupt is its
+    return code). Returns ``fn``'s return code.
+
+    Raises
+    ------
+    KeyboardInterrupt
+        A SIGINT came during the call, or the call returned ``DERIVE_INTERRUPTED`` (a request
+        from another thread, ``derive_sigint_request``).
+    """
+    if guard is None:
+        return fn(*args)
+    guard(_ON)
+    try:
+        rc = fn(*args)
+    finally:
+        interrupted = guard(_OFF)
+    if interrupted or rc == _INTERRUPTED:
+        raise KeyboardInterrupt
+    return rc
+
+
 class Driver:
     """The run driver of one compiled method in a loaded library, bound once::
 
@@ -88,28 +122,14 @@ class Driver:
         self.fn.argtypes = [vp, ctypes.c_long, vp, vp, *(C_TYPES[ty] for ty, _ in spec.params),
                             vp, vp, vp]
         self.fn.restype = ctypes.c_int
-        # The guard's SIGINT handler can only be installed from the main thread.
-        self.guard = None
-        if interruptible and threading.current_thread() is threading.main_thread():
-            self.guard = lib.derive_sigint_guard
-            self.guard.argtypes, self.guard.restype = [ctypes.c_int], ctypes.c_int
+        self.guard = sigint_guard(lib) if interruptible else None
         self._unchecked: dict = {}
 
     def __call__(self, save: SaveAt, n_batch: int, ins, ps, args, y, out, st) -> int:
         """Run once: the arrays (C-contiguous, of the driver's layout) or None for NULL, ``args``
         the method's parameters in :attr:`params` order. Returns the driver's return code."""
-        call = (ctypes.byref(save), n_batch, _ptr(ins), _ptr(ps), *args, _ptr(y), _ptr(out),
-                _ptr(st))
-        if self.guard is None:
-            return self.fn(*call)
-        self.guard(1)
-        try:
-            rc = self.fn(*call)
-        finally:
-            interrupted = self.guard(0)
-        if interrupted or rc == _INTERRUPTED:
-            raise KeyboardInterrupt
-        return rc
+        return guarded(self.guard, self.fn, ctypes.byref(save), n_batch, _ptr(ins), _ptr(ps),
+                       *args, _ptr(y), _ptr(out), _ptr(st))
 
     def unchecked(self, args) -> tuple:
         """(driver, guard or None, ``args`` as ctypes instances) for a caller that converts its
