@@ -29,6 +29,7 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 
 from derive import generate  # noqa: E402  (after DERIVE_CACHE: the suite's own cache)
 from derive.lecture import notes_check as nc  # noqa: E402
+from derive.lecture import report  # noqa: E402
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
@@ -82,6 +83,13 @@ def generated_files(tmp_path_factory):
     """Every file ``make derive`` writes (``derive.generate.generate_all``), derived once per
     test run and shared by the tests that compare or read them."""
     return once_per_run(tmp_path_factory, "generated-files", generate.generate_all)
+
+
+@pytest.fixture(scope="session")
+def generated_reports(tmp_path_factory):
+    """The two reports ``make derive`` writes (``derive.lecture.report.documents``), derived once
+    per test run: the part of ``generated_files`` that the fast tests read."""
+    return once_per_run(tmp_path_factory, "generated-reports", report.documents)
 
 
 def pytest_configure(config):

@@ -60,7 +60,8 @@ def test_a_build_writes_the_library_and_its_checksum(cache):
     assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no build folder left
 
 
-@pytest.mark.parametrize("damage", ["truncate", "flip", "garbage-with-checksum", "no-checksum"])
+@pytest.mark.parametrize("damage", ["truncate", pytest.param("flip", marks=pytest.mark.slow),
+                                    pytest.param("garbage-with-checksum", marks=pytest.mark.slow), "no-checksum"])
 def test_a_damaged_library_is_rebuilt_once_with_a_note(cache, damage):
     tag = uuid.uuid4().hex
     rc, err = build_in_subprocess(cache, tag)

@@ -347,10 +347,10 @@ def test_sigint_inside_a_compiled_contact_run(tmp_path, name, library):
 
 @pytest.mark.parametrize("argv, code", [
     (["simulate", "scenes/does-not-exist.toml"], 2),
-    (["simulate", "scenes/looping_top.toml", "--rtol", "nan"], 2),
+    pytest.param(["simulate", "scenes/looping_top.toml", "--rtol", "nan"], 2, marks=pytest.mark.slow),
     (["simulate", "scenes/looping_top.toml", "-o", "/proc/x.npz"], 2),
     (["simulate", "--no-such-flag"], 2),
-    (["cache", "--bogus"], 2),
+    pytest.param(["cache", "--bogus"], 2, marks=pytest.mark.slow),
 ])
 def test_real_process_failures_are_one_line(argv, code):
     r = subprocess.run([sys.executable, "-m", "derive", *argv], cwd=ROOT, capture_output=True,

@@ -55,11 +55,11 @@ def _short(tmp_path: Path, name: str, t_end: float, samples: int) -> Path:
 
 @pytest.mark.parametrize("name, t_end, samples", [
     ("round_peg_top", 1.0, 101),     # exact Coulomb: slides, then a stick event into rolling
-    ("rolling_sphere", 0.5, 51),     # rolling: v = -w x a
-    ("tippe_top", 0.3, 31),          # viscous sliding on a sphere with Jellett's integral
-    ("frictionless_top", 0.5, 51),   # a point on a frictionless plane
-    ("euler_disk", 0.3, 31),         # a disc's rim, rolling
-    ("stick_slip", 0.5, 51),         # slip and stick events in turn
+    pytest.param("rolling_sphere", 0.5, 51, marks=pytest.mark.slow),     # rolling: v = -w x a
+    pytest.param("tippe_top", 0.3, 31, marks=pytest.mark.slow),          # viscous sliding on a sphere with Jellett's integral
+    pytest.param("frictionless_top", 0.5, 51, marks=pytest.mark.slow),   # a point on a frictionless plane
+    pytest.param("euler_disk", 0.3, 31, marks=pytest.mark.slow),         # a disc's rim, rolling
+    pytest.param("stick_slip", 0.5, 51, marks=pytest.mark.slow),         # slip and stick events in turn
     ("knocked", 0.1, 41),            # landing and lift-off events, the impact law
     ("tippe_top_stem", 0.7, 71),     # touch events: onto the stem, back to the ball, the stem again
 ])

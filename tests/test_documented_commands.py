@@ -119,8 +119,14 @@ GUIDES = ("docs/analyze.md", "docs/animate.md", "docs/export.md", "docs/own-body
 BUILDS_C = r"(^|&& )cc |\bmake -"
 
 
+#: derive's costliest commands (a whole text verified, equilibria derived, a sweep run): their
+#: behaviour is pinned by their own tests in ``make test``; their documented blocks run in the slow run.
+COSTLY = r"\bderive (verify|analyze|sweep)\b"
+
+
 def _slow(block: Block) -> bool:
-    return block.where.startswith(GUIDES) or any(re.search(BUILDS_C, c.text) for c in block.commands)
+    return block.where.startswith(GUIDES) or any(re.search(BUILDS_C, c.text) or re.search(COSTLY, c.text)
+                                                 for c in block.commands)
 SKIP = [(b.where, c.text, why) for b in BLOCKS for c in b.commands if (why := _skip_reason(c.text))]
 
 

@@ -272,7 +272,8 @@ ASYMMETRIC_CASES = {
 }
 
 
-@pytest.mark.parametrize("name", list(ASYMMETRIC_CASES))
+@pytest.mark.parametrize("name", [n if n in ("polar-largest", "polar-smallest", "separatrix")
+                                  else pytest.param(n, marks=pytest.mark.slow) for n in ASYMMETRIC_CASES])
 def test_free_asymmetric_matches_high_precision_integration(name):
     I, w0 = ASYMMETRIC_CASES[name]
     angles = (0.3, 0.7, -0.4)

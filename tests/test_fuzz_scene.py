@@ -397,8 +397,9 @@ def test_malformed_corpus(path):
     assert fragment in err, err
 
 
-@pytest.mark.parametrize("name", ["bad_utf8.toml", "truncated_table.toml", "nan_moment.toml",
-                                  "both_rates_and_omega.toml", "triangle.toml"])
+@pytest.mark.parametrize("name", ["bad_utf8.toml", pytest.param("truncated_table.toml", marks=pytest.mark.slow),
+                                  "nan_moment.toml", pytest.param("both_rates_and_omega.toml", marks=pytest.mark.slow),
+                                  pytest.param("triangle.toml", marks=pytest.mark.slow)])  # a byte and a value
 def test_malformed_corpus_in_a_real_process(name):
     def runner(argv):
         r = subprocess.run([sys.executable, "-m", "derive", *map(str, argv)], cwd=ROOT,

@@ -76,7 +76,7 @@ def test_kernel_reads_dimensions_and_names_from_the_library(kernels):
     assert set(k.methods) == set(METHODS)
 
 
-@pytest.mark.parametrize("opt", ["-O0", "-O2"])
+@pytest.mark.parametrize("opt", [pytest.param("-O0", marks=pytest.mark.slow), "-O2"])  # -O2 warns of more
 def test_generated_solvers_compile_with_all_warnings_as_errors(opt):
     files = all_sources()
     # Two models in one translation unit: the shared derive_stats block must be guarded.

@@ -140,7 +140,8 @@ def test_near_integrable_schemes_are_quadratures_of_their_eps_order(name):
     assert abs(sum(w * x**p1 for x, w in nodes) - F(1, p1 + 1)) > F(1, 10**9)
 
 
-@pytest.mark.parametrize("symmetric,effects", VARIANTS)
+@pytest.mark.parametrize("symmetric,effects", [v if i < 2 else pytest.param(*v, marks=pytest.mark.slow)
+                                              for i, v in enumerate(VARIANTS)])  # a symmetric and a general body
 def test_generated_c_is_strict_c99(symmetric, effects):
     model = models.build("euler-poisson", symmetric, effects)
     files, unity = splitter.sources(model)

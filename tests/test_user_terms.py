@@ -327,10 +327,10 @@ def _symmetries(sc):
 
 @pytest.mark.parametrize("V, p_alpha, p_gamma", [
     ("-mu*B*R33", True, True),          # dipole on axis 3, field vertical: both
-    ("-mu*B*R13", False, True),         # field horizontal: about axis 3 only
+    pytest.param("-mu*B*R13", False, True, marks=pytest.mark.slow),  # field horizontal: axis 3 only
     ("-mu*B*R31", True, False),         # dipole across axis 3, field vertical: about z only
     ("mu*B*cos(beta)**2", True, True),  # a function of the tilt alone, written in the angles
-    ("mu*B*sin(alpha)", False, True),
+    pytest.param("mu*B*sin(alpha)", False, True, marks=pytest.mark.slow),
 ])
 def test_conserved_momenta_are_found_by_symmetry_and_hold_in_the_trajectory(V, p_alpha, p_gamma):
     sc = scene(potential=[magnet(V, mu=0.4, B=1.5)], simulate={"t_end": 3.0, "samples": 61})

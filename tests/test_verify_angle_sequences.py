@@ -32,7 +32,8 @@ SEQUENCES = ["z-y-z", "z-x-z", "x-y-x", "x-z-x", "y-x-y", "y-z-y",
              "z-y-x", "z-x-y", "x-y-z", "x-z-y", "y-x-z", "y-z-x"]
 
 
-@pytest.mark.parametrize("sequence", SEQUENCES)
+@pytest.mark.parametrize("sequence", [s if s in ("z-y-z", "z-y-x") else pytest.param(s, marks=pytest.mark.slow)
+                                      for s in SEQUENCES])  # a proper Euler and a Tait-Bryan one fast
 def test_the_space_angular_velocity_is_r_times_the_body_one_in_every_sequence(sequence):
     conv = rot.convention(sequence)
     R = conv.matrix()

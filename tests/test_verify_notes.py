@@ -6,6 +6,7 @@ failure it finds must be found by reading the file, and the verdicts must agree 
 both check. Our own notes (tests/notes/) hold as written; one planted error at a time is caught.
 """
 import json
+import os
 import re
 from pathlib import Path
 
@@ -16,7 +17,8 @@ from derive.lecture import notes as nt
 from derive.lecture import notes_check as nc
 
 HERE = Path(__file__).parent
-LECTURE = Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md"
+LECTURE = Path(os.environ.get("DERIVE_NOTES")
+               or Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md")
 OWN = HERE / "notes" / "rigid-body-zyz.md"
 GOLDSTEIN = HERE / "notes" / "rigid-body-zxz.md"
 needs_lecture = pytest.mark.skipif(not LECTURE.exists(), reason="the lecture's notes file is not next to the repository")
@@ -119,13 +121,21 @@ def test_lecture_many_checked_and_agreeing(lecture_claims):
 
 
 @needs_lecture
-def test_lecture_json_contract(capsys):
-    # the command line in this process: the derived forms the other lecture tests built are
-    # cached here, so the contract costs no second reading of the lecture
+def test_lecture_json_contract(capsys, monkeypatch, lecture_claims):
+    # the command line in this process, given the run's one checked reading of the lecture (the
+    # checks themselves are pinned above): this pins the command's JSON and its exit status
     from derive.cli import main
 
+    asked = []
+
+    def checked(path, convention=None):
+        asked.append((Path(path), convention))
+        return lecture_claims
+
+    monkeypatch.setattr(nc, "check_notes", checked)
     code = main(["verify", str(LECTURE), "--format", "json"])
     out, err = capsys.readouterr()
+    assert asked == [(LECTURE, None)]
     assert code == 1, err                         # the lecture has slips
     data = json.loads(out)
     assert set(data) == {"claims", "summary"}
