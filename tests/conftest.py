@@ -29,7 +29,6 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 
 from derive import generate  # noqa: E402  (after DERIVE_CACHE: the suite's own cache)
 from derive.lecture import notes_check as nc  # noqa: E402
-from derive.lecture import report  # noqa: E402
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
@@ -86,10 +85,10 @@ def generated_files(tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
-def generated_reports(tmp_path_factory):
-    """The two reports ``make derive`` writes (``derive.lecture.report.documents``), derived once
-    per test run: the part of ``generated_files`` that the fast tests read."""
-    return once_per_run(tmp_path_factory, "generated-reports", report.documents)
+def generated_reports(generated_files):
+    """The two reports ``make derive`` writes (``derive.lecture.report.documents``): the part of
+    ``generated_files`` the lecture's tests read (derived once with the rest)."""
+    return {name: generated_files[name] for name in ("lecture-verification.md", "derivation.md")}
 
 
 def pytest_configure(config):

@@ -317,24 +317,13 @@ def test_every_generated_c_file_compiles_cleanly_at_O2(tmp_path):
     _compile_strictly(tmp_path, sorted((GENERATED / "c").glob("*.c")), ["-O2"])
 
 
-@pytest.fixture(scope="module")
-def reduced_top_files():
-    """The files ``make derive`` writes for the reduced heavy top (its kernels in C and NumPy)."""
-    return generate.generate_all(models=["heavy_top_reduced"])
-
-
-def _differing(files):
-    """Paths among ``files`` whose committed copy under generated/ differs or is missing."""
-    return [rel for rel in generate.stale(files, GENERATED) if rel in files]
-
-
 def test_generated_dir_is_what_generate_writes(generated_files):
     """Every model, every contact law and shape, the reports, and no file left over: the
     committed folder is what ``make derive`` writes."""
     assert generate.stale(generated_files, GENERATED) == []
 
 
-def test_generation_is_independent_of_hash_seed(reduced_top_files):
+def test_generation_is_independent_of_hash_seed(generated_files):
     """A fresh process with a fixed hash seed renders the same sources as the run's own
     generate_all (whose processes' seeds pytest left random, or set otherwise)."""
     seed = "12345" if os.environ.get("PYTHONHASHSEED") != "12345" else "0"
@@ -344,16 +333,13 @@ def test_generation_is_independent_of_hash_seed(reduced_top_files):
     r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, cwd=ROOT, check=True)
     theirs = json.loads(r.stdout)
     assert "c/heavy_top_reduced.c" in theirs
-    assert theirs == {name: reduced_top_files.get(name) for name in theirs}
+    assert theirs == {name: generated_files.get(name) for name in theirs}
 
 
-def test_generate_check_cli_reports_stale_file(tmp_path, capsys, monkeypatch, reduced_top_files):
-    """``generate --check`` names a file edited after generation and passes once it is restored.
-    The command compares the reduced top's files derived now and every other file as committed
-    (that the whole committed folder is what generation writes: the tests above)."""
-    committed = {p.relative_to(GENERATED).as_posix(): p.read_text(encoding="utf-8")
-                 for p in GENERATED.rglob("*") if p.is_file() and "__pycache__" not in p.parts}
-    monkeypatch.setattr(generate, "generate_all", lambda: {**committed, **reduced_top_files})
+def test_generate_check_cli_reports_stale_file(tmp_path, capsys, monkeypatch, generated_files):
+    """``generate --check`` names a file edited after generation and passes once it is restored
+    (generation itself is the run's one derivation of every file)."""
+    monkeypatch.setattr(generate, "generate_all", lambda: dict(generated_files))
     out = tmp_path / "gen"
     shutil.copytree(GENERATED, out)
     target = out / "c" / "heavy_top_reduced.c"
