@@ -1,6 +1,6 @@
 """Opt-in pytest plugin: the CPU seconds each test used, summed over the run.
 
-``pytest -p cpu_time`` (from the checkout, with ``tests`` on the path as pytest puts it) ends with
+``pytest -p cpu_time`` (and ``CPU_TIME_JSON=FILE`` to keep every test's figure) (from the checkout, with ``tests`` on the path as pytest puts it) ends with
 the CPU seconds of every test's setup, call and teardown: this process's and those of the
 processes it started and waited for (compilers, ``derive`` commands, process pools), summed over
 the run and listed for the costliest tests and files. With pytest-xdist each worker measures its
@@ -14,6 +14,8 @@ machine (collection and the workers' start come on top).
 from __future__ import annotations
 
 import collections
+import json
+import os
 import resource
 
 import pytest
@@ -54,6 +56,9 @@ def pytest_terminal_summary(terminalreporter):
     by_file: collections.Counter = collections.Counter()
     for nodeid, seconds in _by_test.items():
         by_file[nodeid.split("::")[0]] += seconds
+    if os.environ.get("CPU_TIME_JSON"):
+        with open(os.environ["CPU_TIME_JSON"], "w") as out:
+            json.dump(dict(_by_test), out, indent=0)
     write = terminalreporter.write_line
     terminalreporter.section("CPU seconds")
     write(f"{sum(_by_test.values()):.1f} s of CPU in {len(_by_test)} tests")
