@@ -17,11 +17,13 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
+import threading
 import warnings
 from pathlib import Path
 
-from derive.errors import NOTE_STREAM, CompilerError, IntegrationError, SceneError, Terminated, note
+from derive.errors import NOTE_STREAM, SIGNALLED, CompilerError, IntegrationError, SceneError, Terminated, note
 
 EXIT_OK, EXIT_DIFF, EXIT_INPUT, EXIT_NUMERIC, EXIT_COMPILER = 0, 1, 2, 3, 4
 EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_TERMINATED = 1, 130, 143
@@ -505,6 +507,8 @@ def parser() -> argparse.ArgumentParser:
 def main(argv=None) -> int:
     """Run the command line; returns the exit status. Every failure is one ``error:`` line on
     stderr: warnings are silenced, Ctrl-C is exit 130, anything unforeseen exit 1."""
+    SIGNALLED.clear()
+    previous = _record_sigint()
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
@@ -522,7 +526,30 @@ def main(argv=None) -> int:
     except MemoryError:
         return _fail("out of memory", EXIT_NUMERIC)
     except Exception as exc:  # last resort: a bug, but never a traceback
+        if SIGNALLED:  # a library turned the Ctrl-C into another error (NumPy's import does)
+            return _fail("interrupted", EXIT_INTERRUPTED)
         return _fail(f"internal error: {type(exc).__name__}: {_one_line(exc)}", EXIT_INTERNAL)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+
+
+def _on_sigint(signum, frame):
+    SIGNALLED.append(signum)
+    raise KeyboardInterrupt
+
+
+def _record_sigint():
+    """Install :func:`_on_sigint` (Python's own Ctrl-C plus a record of it) for the length of a
+    command; returns the handler to restore. None off the main thread, or where SIGINT is not
+    Python's default (ignored in a background job, or a host program's own handler)."""
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    previous = signal.getsignal(signal.SIGINT)
+    if previous is not signal.default_int_handler:
+        return None
+    signal.signal(signal.SIGINT, _on_sigint)
+    return previous
 
 
 def _one_line(exc: BaseException) -> str:

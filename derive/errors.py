@@ -55,6 +55,19 @@ class EngineError(IntegrationError):
     """
 
 
+#: The signals (SIGINT) that came during the running command, recorded by the command line's
+#: handler before it raises KeyboardInterrupt: an interrupt that a library swallowed (a
+#: finaliser) or rewrapped (NumPy's import turns it into ImportError) still ends the command.
+SIGNALLED: list[int] = []
+
+
+def raise_if_signalled() -> None:
+    """Raise KeyboardInterrupt if a Ctrl-C was recorded in :data:`SIGNALLED` (a Python loop
+    calls it once per step, so a swallowed interrupt still stops it at the next step)."""
+    if SIGNALLED:
+        raise KeyboardInterrupt
+
+
 class Terminated(KeyboardInterrupt):
     """SIGTERM, raised where Ctrl-C would raise KeyboardInterrupt so that the same clean-up runs
     (workers stopped, temporaries removed). CLI exit status 143, ``error: terminated``."""

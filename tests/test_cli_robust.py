@@ -15,6 +15,7 @@ import pytest
 
 import derive
 from derive import SceneError, cli
+from derive import errors as derive_errors
 from derive.codegen.render import ROOT
 
 TOP = {
@@ -358,3 +359,36 @@ def test_real_process_failures_are_one_line(argv, code):
     lines = errors(r.stderr)
     assert r.returncode == code and len(lines) == 1 and lines[0].startswith("error: "), r.stderr
     assert "Traceback" not in r.stderr
+
+
+def test_a_ctrl_c_that_a_library_turns_into_another_error_is_still_exit_130(monkeypatch, capsys):
+    """A Ctrl-C that lands in an import NumPy rewraps (ImportError) is still an interrupt: the
+    CLI's handler recorded it, so the error line is ``interrupted``, not an internal error."""
+    def command(argv):
+        try:
+            signal.raise_signal(signal.SIGINT)
+        except KeyboardInterrupt:
+            raise ImportError("the C-extensions failed to import") from None
+        return 0
+
+    monkeypatch.setattr(cli, "_main", command)
+    assert cli.main([]) == 130
+    assert capsys.readouterr().err == "error: interrupted\n"
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler  # restored after
+
+
+def test_an_import_error_without_a_ctrl_c_stays_an_internal_error(monkeypatch, capsys):
+    def command(argv):
+        raise ImportError("no such module")
+
+    monkeypatch.setattr(cli, "_main", command)
+    assert cli.main([]) == 1
+    assert capsys.readouterr().err == "error: internal error: ImportError: no such module\n"
+
+
+def test_a_recorded_ctrl_c_stops_a_scipy_run_at_its_next_step(monkeypatch):
+    """A Ctrl-C the CLI recorded but a library swallowed (a finaliser) still stops SciPy's
+    Python loop: each step asks for a recorded interrupt first."""
+    monkeypatch.setattr(derive_errors, "SIGNALLED", [signal.SIGINT])
+    with pytest.raises(KeyboardInterrupt):
+        derive.simulate(with_(simulate={"t_end": 1.0, "samples": 3, "method": "scipy-rk45"}))

@@ -9,7 +9,7 @@ import functools
 import importlib.util
 from pathlib import Path
 
-from derive.errors import IntegrationError
+from derive.errors import IntegrationError, raise_if_signalled
 from derive.methods.registry import DEFAULT_METHOD
 from derive.methods.status import Status
 from derive.methods.status import message as status_message
@@ -28,6 +28,7 @@ def _budgeted(method: str, max_steps: int, where: list):
         steps = 0
 
         def _step_impl(self):
+            raise_if_signalled()
             if self.steps >= max_steps:
                 where.append(self.t)
                 return False, _BUDGET_SPENT
