@@ -84,8 +84,12 @@ def _cached_everything() -> tuple:
         print(f"note: cached generation {folder} {problem}; deriving it again", file=sys.stderr, flush=True)
     everything = _generate_everything()
     folder = models_dir(writable_cache_dir(), writing=True) / name
-    write_folder(folder, dict(everything), REQUIRED)
-    _prune(folder.parent)
+    try:  # keeping it is a saving for the next run, never a reason for this one to fail
+        write_folder(folder, dict(everything), REQUIRED)
+        _prune(folder.parent)
+    except OSError as exc:
+        print(f"note: cannot keep the generation in {folder} ({exc.strerror or exc})", file=sys.stderr,
+              flush=True)
     return everything
 
 
@@ -117,17 +121,18 @@ def _generate_everything() -> tuple:
     names = list(shipped_keys())
     files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=names)}
     files.update(scene_doc.documents())
-    files.update(contact_sources())  # contact hook: the kernels of tops on a table, full and reduced
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
-        # Two workers derive the kernels (split so the costly Lagrangian models are shared out)
-        # while this process writes the reports.
+        # Two workers derive the contact kernels (the costliest part, first) and the models'
+        # (split so that each reduced model shares a worker with its u = cos β form) while this
+        # process writes the reports.
         ctx = multiprocessing.get_context("fork")
         with concurrent.futures.ProcessPoolExecutor(max_workers=2, mp_context=ctx) as pool:
-            parts = [pool.submit(_sources_of, names[i::2]) for i in range(2)]
+            parts = [pool.submit(contact_sources)] + [pool.submit(_sources_of, names[i::2]) for i in range(2)]
             files.update(report.documents())
             for part in parts:
                 files.update(part.result())
     else:
+        files.update(contact_sources())  # contact hook: the kernels of tops on a table, full and reduced
         files.update(report.documents())
         files.update(_sources_of(names))
     return tuple(sorted(files.items()))
