@@ -77,7 +77,8 @@ def test_only_the_newest_generations_the_cache_made_are_kept(fake, monkeypatch):
     assert mine.is_dir()
 
 
-def test_the_key_covers_every_file_of_the_sources(tmp_path):
+def test_the_key_covers_every_file_of_the_sources(tmp_path, monkeypatch):
+    monkeypatch.setattr(importlib.metadata, "distributions", lambda: [])  # (read once per key: slow)
     pkg, templates = tmp_path / "derive", tmp_path / "templates"
     (pkg / "sub").mkdir(parents=True)
     templates.mkdir()
