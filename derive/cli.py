@@ -43,7 +43,7 @@ def _cmd_generate(args) -> int:
         _output_dir(out, "--out", create=not args.check)  # before the (slow) generation
     note(f"deriving every model and rendering every file, to {'compare with' if args.check else 'write'} "
          f"{out} (ten seconds or more)")
-    files = generate.generate_all()
+    files = generate.generate_all(cache=True)  # a fresh process: the cache's key covers its inputs
     if args.check:
         stale = generate.stale(files, out)
         for rel in stale:

@@ -5,6 +5,13 @@ lecture's verification and derivation reports (:mod:`derive.lecture.report`), an
 pages written from the registries (:mod:`derive.sim.scene_doc`). :func:`generate_all` returns
 every file as text; :func:`write` and :func:`stale` compare that against a directory. Nothing
 here reads the clock or iterates over unordered collections, so two runs produce identical bytes.
+
+``generate_all(cache=True)`` (what ``derive generate`` runs) keeps the files in the compile cache,
+in a folder of ``models/`` named by :func:`derivation_key`, a hash of every input of the
+derivation: a repeated run with unchanged sources reads them back instead of deriving again. The
+folder is checked against its SHA-256 manifest; one that does not verify is derived again. Only a
+fresh process may use it: the key cannot see what a process changed in itself (a registered toy
+effect, a patched function), so the default, for callers inside a longer process, is to derive.
 """
 from __future__ import annotations
 
@@ -12,15 +19,24 @@ import concurrent.futures
 import functools
 import multiprocessing
 import os
+import sys
 from pathlib import Path
 
-from derive.codegen.render import render
+from derive.codegen.render import TEMPLATES, render
 from derive.codegen.sources import model_sources, shipped_keys
 from derive.contact.sources import generated_sources as contact_sources  # contact hook
 from derive.lecture import report
+from derive.runtime.cache import (ABSENT, derivation_fingerprint, is_marked, models_dir, read_folder,
+                                  remove_marked, writable_cache_dir, write_folder)
 from derive.sim import scene_doc
 from derive.sim.outputs import write_all
 from derive.symbolic.models import build
+
+PACKAGE = Path(__file__).resolve().parent
+#: The cache's folders of generated files are named ``<PREFIX><key>``; the newest ``KEEP`` stay.
+PREFIX, KEEP = "generated-", 3
+#: A file every generation writes (the cache's check that a folder holds a whole generation).
+REQUIRED = "numpy/__init__.py"
 
 
 def _sources_of(names) -> dict[str, str]:
@@ -31,17 +47,72 @@ def _sources_of(names) -> dict[str, str]:
     return files
 
 
-def generate_all(models=None) -> dict[str, str]:
-    """Every generated file, keyed by its path relative to generated/.
+def generate_all(models=None, cache: bool = False) -> dict[str, str]:
+    """Every generated file, keyed by its path relative to generated/ (with ``models``, only
+    those models' files).
 
     The model kernels and the two reports are independent derivations; on a machine with more
     than one core the kernels are derived in a forked worker while this process writes the
     reports (the results are merged by file name, so the output does not depend on timing).
+    With ``cache`` (a fresh process only: see the module docstring) every file comes from the
+    compile cache when a generation from the same inputs is kept there, and is kept there
+    otherwise.
     """
     names = [n for n in shipped_keys() if models is None or n in models]
     if models is not None:
         return dict(sorted(_sources_of(names).items()))
-    return dict(_generate_everything())
+    return dict(_cached_everything() if cache else _generate_everything())
+
+
+def derivation_key() -> str:
+    """The hash naming a generation in the cache: :func:`derive.runtime.cache.derivation_fingerprint`
+    of this package's source and the templates (with the interpreter, the installed libraries'
+    versions and SymPy's settings)."""
+    return derivation_fingerprint((PACKAGE, TEMPLATES))[:32]
+
+
+@functools.lru_cache(maxsize=1)
+def _cached_everything() -> tuple:
+    """:func:`_generate_everything` read from the compile cache, or derived and kept there."""
+    name = PREFIX + derivation_key()
+    folder = models_dir() / name
+    files, problem = read_folder(folder, REQUIRED)
+    if files is not None:
+        _touch(folder)
+        return tuple(sorted((rel, data.decode("utf-8")) for rel, data in files.items()))
+    if problem != ABSENT:
+        print(f"note: cached generation {folder} {problem}; deriving it again", file=sys.stderr, flush=True)
+    everything = _generate_everything()
+    folder = models_dir(writable_cache_dir(), writing=True) / name
+    try:  # keeping it is a saving for the next run, never a reason for this one to fail
+        write_folder(folder, dict(everything), REQUIRED)
+        _prune(folder.parent)
+    except OSError as exc:
+        print(f"note: cannot keep the generation in {folder} ({exc.strerror or exc})", file=sys.stderr,
+              flush=True)
+    return everything
+
+
+def _touch(folder: Path) -> None:
+    """Mark a kept generation as just used (:func:`_prune` keeps the most recently used)."""
+    try:
+        os.utime(folder)
+    except OSError:
+        pass
+
+
+def _prune(models: Path) -> None:
+    """Remove all but the :data:`KEEP` most recently used generations the cache made (marked
+    folders named ``<PREFIX><key>``); nothing else in ``models`` is touched."""
+    kept = []
+    for entry in os.scandir(models):
+        if entry.name.startswith(PREFIX) and is_marked(entry.path):
+            try:
+                kept.append((entry.stat(follow_symlinks=False).st_mtime, entry.name))
+            except OSError:
+                pass
+    for _, old in sorted(kept, reverse=True)[KEEP:]:
+        remove_marked(models / old)
 
 
 @functools.lru_cache(maxsize=1)
@@ -50,17 +121,18 @@ def _generate_everything() -> tuple:
     names = list(shipped_keys())
     files: dict[str, str] = {"numpy/__init__.py": render("numpy/__init__.py.j2", models=names)}
     files.update(scene_doc.documents())
-    files.update(contact_sources())  # contact hook: the kernels of tops on a table, full and reduced
     if (os.cpu_count() or 1) > 1 and "fork" in multiprocessing.get_all_start_methods():
-        # Two workers derive the kernels (split so the costly Lagrangian models are shared out)
-        # while this process writes the reports.
+        # Two workers derive the contact kernels (the costliest part, first) and the models'
+        # (split so that each reduced model shares a worker with its u = cos β form) while this
+        # process writes the reports.
         ctx = multiprocessing.get_context("fork")
         with concurrent.futures.ProcessPoolExecutor(max_workers=2, mp_context=ctx) as pool:
-            parts = [pool.submit(_sources_of, names[i::2]) for i in range(2)]
+            parts = [pool.submit(contact_sources)] + [pool.submit(_sources_of, names[i::2]) for i in range(2)]
             files.update(report.documents())
             for part in parts:
                 files.update(part.result())
     else:
+        files.update(contact_sources())  # contact hook: the kernels of tops on a table, full and reduced
         files.update(report.documents())
         files.update(_sources_of(names))
     return tuple(sorted(files.items()))

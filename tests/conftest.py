@@ -16,8 +16,11 @@
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
 import fcntl
+import json
 import os
 import pickle
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -27,7 +30,6 @@ from hypothesis import settings
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
-from derive import generate  # noqa: E402  (after DERIVE_CACHE: the suite's own cache)
 from derive.lecture import notes_check as nc  # noqa: E402
 
 settings.register_profile("derive", database=None, derandomize=True)
@@ -77,11 +79,24 @@ def lecture_claims(tmp_path_factory):
     return once_per_run(tmp_path_factory, "lecture-claims", lambda: nc.check_notes(LECTURE_NOTES))
 
 
+def _generate_in_a_fresh_process() -> dict[str, str]:
+    """``generate_all(cache=True)`` as ``make derive`` runs it, in a process of its own (whose
+    state no test has touched): derived in a fresh checkout (its cache is empty), read from the
+    suite's cache when a generation from the same sources is kept there."""
+    code = ("import json, sys; from derive import generate; "
+            "sys.stdout.write(json.dumps(generate.generate_all(cache=True)))")
+    r = subprocess.run([sys.executable, "-c", code], cwd=Path(__file__).resolve().parents[1],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        raise RuntimeError(f"generate_all failed:\n{r.stderr}")
+    return json.loads(r.stdout)
+
+
 @pytest.fixture(scope="session")
 def generated_files(tmp_path_factory):
-    """Every file ``make derive`` writes (``derive.generate.generate_all``), derived once per
-    test run and shared by the tests that compare or read them."""
-    return once_per_run(tmp_path_factory, "generated-files", generate.generate_all)
+    """Every file ``make derive`` writes (``derive.generate.generate_all``), once per test run
+    and shared by the tests that compare or read them."""
+    return once_per_run(tmp_path_factory, "generated-files", _generate_in_a_fresh_process)
 
 
 @pytest.fixture(scope="session")

@@ -125,7 +125,7 @@ def test_generate_out_never_deletes_files_it_did_not_generate(capsys, tmp_path, 
     from derive import generate as codegen
 
     files = {"c/m.c": "int x;\n", "m.md": "# m\n"}
-    monkeypatch.setattr(codegen, "generate_all", lambda: dict(files))
+    monkeypatch.setattr(codegen, "generate_all", lambda **kw: dict(files))
     out = tmp_path / "out"
     out.mkdir()
     (out / "notes.txt").write_text("mine")

@@ -339,7 +339,7 @@ def test_generation_is_independent_of_hash_seed(generated_files):
 def test_generate_check_cli_reports_stale_file(tmp_path, capsys, monkeypatch, generated_files):
     """``generate --check`` names a file edited after generation and passes once it is restored
     (generation itself is the run's one derivation of every file)."""
-    monkeypatch.setattr(generate, "generate_all", lambda: dict(generated_files))
+    monkeypatch.setattr(generate, "generate_all", lambda **kw: dict(generated_files))
     out = tmp_path / "gen"
     shutil.copytree(GENERATED, out)
     target = out / "c" / "heavy_top_reduced.c"

@@ -68,6 +68,13 @@ def source(shape: str, law: str) -> str:
 
 
 @functools.lru_cache(maxsize=None)
+def _root(equation: sp.Expr, unknown: sp.Symbol) -> sp.Expr:
+    """The solution of ``equation = 0`` for ``unknown`` (linear in it), simplified; once per
+    equation: shapes whose heights differ by a constant (the point and the sphere) share it."""
+    return sp.solve(equation, unknown)[0]
+
+
+@functools.lru_cache(maxsize=None)
 def equations(shape: str) -> dict[str, sp.Expr]:
     """α̇, γ̇, β̈ and N of the reduced problem for ``shape``, in β, β̇ and the parameters."""
     # the disc's rim height has |sin β|: β ∈ (0, π) here, where it is sin β
@@ -78,7 +85,7 @@ def equations(shape: str) -> dict[str, sp.Expr]:
     R = (L - p_alpha * alpha_d - p_gamma * gamma_d).subs(rates)
     pb = sp.diff(R, beta_d)
     acc = sp.diff(pb, beta) * beta_d + sp.diff(pb, beta_d) * BETA_DD - sp.diff(R, beta)
-    bdd = sp.solve(acc, BETA_DD)[0]
+    bdd = _root(acc, BETA_DD)
     zdd = sp.diff(z, beta, 2) * beta_d**2 + sp.diff(z, beta) * BETA_DD
     return {"alpha_d": rates[alpha_d], "gamma_d": rates[gamma_d], "beta_dd": bdd,
             "N": MASS * (GRAV + zdd), "z": z, "z_d": zdot}

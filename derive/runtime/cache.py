@@ -48,8 +48,11 @@ STAMP_PREFIX = "derive_build_"
 _CHECKSUM_LINE = re.compile(r"([0-9a-f]{64})  (.+)\n")
 _KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.so")  # which stamp a library should carry
 # Models derived on demand (derive.runtime.catalogue) live in MODELS: each variant in a marked folder,
-# written as a hidden marked temporary (".<variant>-XXXXXXXX") and renamed into place.
+# written as a hidden marked temporary (".<variant>-XXXXXXXX") and renamed into place
+# (write_folder), with a MANIFEST of its files' SHA-256 that read_folder checks.
 MODELS = "models"
+MANIFEST = "SHA256SUMS"  # in a derived folder: `sha256sum -c SHA256SUMS` checks it
+ABSENT = "is absent"
 
 
 _fallback: Path | None = None  # the private cache of this process, once the real one failed
@@ -400,6 +403,124 @@ def clear_cache(root: Path | None = None) -> tuple[int, int]:
         size += e.size
     _rmdir_if_empty(root)
     return count, size
+
+
+def read_plain(path: Path) -> bytes:
+    """The bytes of ``path`` if it is a regular file (not a link, a folder or a device); else
+    OSError."""
+    fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise OSError(f"{path} is not a regular file")
+        with os.fdopen(fd, "rb", closefd=False) as f:
+            return f.read()
+    finally:
+        os.close(fd)
+
+
+def _manifest(folder: Path) -> tuple[list[tuple[str, str]] | None, str]:
+    """([(sha256, relative path)] of ``folder``'s :data:`MANIFEST`, "") or (None, why not)."""
+    try:
+        if not stat.S_ISDIR(os.lstat(folder).st_mode):
+            return None, "is not a folder"
+        text = read_plain(folder / MANIFEST).decode("ascii")
+    except FileNotFoundError:
+        return None, "has no checksums"
+    except (OSError, UnicodeDecodeError):
+        return None, "has unreadable checksums"
+    listed = re.findall(r"^([0-9a-f]{64})  ([\w./-]+)$", text, re.MULTILINE)
+    if len(listed) != text.count("\n") or any(rel.startswith("/") or ".." in rel.split("/")
+                                              for _, rel in listed):
+        return None, "has unreadable checksums"
+    return listed, ""
+
+
+def read_folder(folder: Path, required: str) -> tuple[dict[str, bytes] | None, str]:
+    """({relative path: bytes} of every file :func:`write_folder` wrote into ``folder``, "") if
+    each matches the SHA-256 of its :data:`MANIFEST` and ``required`` is among them; else (None,
+    why not), :data:`ABSENT` if there is nothing there. Files are read without following
+    symbolic links out of the folder."""
+    if not os.path.lexists(folder):
+        return None, ABSENT
+    listed, problem = _manifest(folder)
+    if listed is None:
+        return None, problem
+    if required not in {rel for _, rel in listed}:
+        return None, "has unreadable checksums"
+    files = {}
+    for digest, rel in listed:
+        try:
+            data = read_plain(folder / rel)
+        except OSError:
+            return None, f"is missing {rel}"
+        if hashlib.sha256(data).hexdigest() != digest:
+            return None, f"has a damaged {rel} (it does not match its checksum)"
+        files[rel] = data
+    return files, ""
+
+
+def write_folder(folder: Path, files: dict[str, str], required: str) -> None:
+    """Write ``files`` ({relative path: text}, UTF-8) with the cache's marker and a
+    :data:`MANIFEST` of them into ``folder``, atomically: a reader sees no folder or the whole
+    one. A damaged folder already there is replaced: removed if the cache made it (marked),
+    else moved aside (:func:`make_room`); a whole one (another process got there first, with
+    the same content, the name being a hash of it) is kept."""
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
+    try:
+        mark(tmp)
+        sums = []
+        for rel, text in sorted(files.items()):
+            path = tmp / rel
+            path.parent.mkdir(parents=True, exist_ok=True)
+            data = text.encode("utf-8")
+            path.write_bytes(data)
+            sums.append(f"{hashlib.sha256(data).hexdigest()}  {rel}\n")
+        (tmp / MANIFEST).write_text("".join(sums), encoding="ascii")  # last: the folder is whole
+        for attempt in range(2):
+            try:
+                os.replace(tmp, folder)
+                return
+            except OSError:
+                if read_folder(folder, required)[0] is not None or attempt:
+                    return
+                # A damaged folder in the way: the cache's own goes (into a marked trash
+                # first, so the name is free at once), anything else is moved aside.
+                if is_marked(folder):
+                    trash = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
+                    mark(trash)
+                    try:
+                        os.replace(folder, trash / "old")
+                    except OSError:
+                        pass
+                    remove_marked(trash)
+                else:
+                    make_room(folder, folder=True)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def derivation_fingerprint(folders) -> str:
+    """SHA-256 of every input of a derivation run in a fresh process: each file under
+    ``folders`` (the package's source, the templates: path and bytes, ``__pycache__`` left out),
+    the interpreter (``sys.version``, its implementation), the name and version of every
+    installed distribution (SymPy, mpmath, Jinja2, NumPy, gmpy2, …: the whole environment, so
+    that no library a derivation reaches is missed) and the ``SYMPY_*`` environment variables
+    (the ground types SymPy computes with)."""
+    import importlib.metadata  # only when a derivation's cache is consulted
+
+    h = hashlib.sha256()
+    for base in folders:
+        base = Path(base)
+        h.update(b"folder\0" + base.name.encode() + b"\0")
+        for path in sorted(p for p in base.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
+            h.update(path.relative_to(base).as_posix().encode() + b"\0")
+            h.update(hashlib.sha256(path.read_bytes()).digest())
+    h.update(repr((sys.version, sys.implementation.name, sys.implementation.version)).encode())
+    dists = sorted({(d.metadata["Name"] or "", d.version) for d in importlib.metadata.distributions()})
+    h.update(repr(dists).encode())
+    h.update(repr(sorted((k, v) for k, v in os.environ.items() if k.startswith("SYMPY_"))).encode())
+    return h.hexdigest()
 
 
 def _rmdir_if_empty(path: Path) -> None:

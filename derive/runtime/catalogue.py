@@ -19,18 +19,13 @@ from __future__ import annotations
 import functools
 import hashlib
 import json
-import os
-import re
-import shutil
-import stat
 import sys
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from derive.codegen.render import GENERATED, RUNTIME_FILES, TAYLOR_INCS, TEMPLATES
 from derive.errors import note
-from derive.runtime.cache import is_marked, make_room, mark, models_dir, remove_marked, writable_cache_dir
+from derive.runtime.cache import ABSENT, models_dir, read_folder, writable_cache_dir, write_folder
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import model_name
 
@@ -129,7 +124,7 @@ def _load(key) -> Description:
         desc, problem = _cached(folder, name)
         if desc is not None:
             return desc
-    if problem != _ABSENT:
+    if problem != ABSENT:
         print(f"note: derived model {folder} {problem}; deriving it again", file=sys.stderr,
               flush=True)
     else:
@@ -142,63 +137,18 @@ def _load(key) -> Description:
     return desc
 
 
-MANIFEST = "SHA256SUMS"  # in a derived model's folder: `sha256sum -c SHA256SUMS` checks it
-_ABSENT = "is absent"
-
-
 def _cached(folder: Path, name: str) -> tuple[Description | None, str]:
     """(the description of the model derived into ``folder``, "") if the folder is whole: every
     file its manifest lists, the description among them, has the SHA-256 written with it and
-    the description parses; else (None, why not), ``_ABSENT`` if there is nothing there."""
-    if not os.path.lexists(folder):
-        return None, _ABSENT
-    problem = _verify(folder, f"models/{name}.json")
-    if problem is not None:
+    the description parses; else (None, why not), ``ABSENT`` if there is nothing there."""
+    required = f"models/{name}.json"
+    files, problem = read_folder(folder, required)
+    if files is None:
         return None, problem
     try:
-        text = (folder / "models" / f"{name}.json").read_text(encoding="utf-8")
-        return Description.from_json(text, folder), ""
-    except (OSError, ValueError, KeyError, TypeError) as exc:
+        return Description.from_json(files[required].decode("utf-8"), folder), ""
+    except (ValueError, KeyError, TypeError) as exc:
         return None, f"has an unreadable description ({type(exc).__name__})"
-
-
-def _verify(folder: Path, required: str) -> str | None:
-    """Why the files of ``folder`` do not match its manifest (or it lists no ``required``), or
-    None. Files are read without following symbolic links out of the folder."""
-    try:
-        if not stat.S_ISDIR(os.lstat(folder).st_mode):
-            return "is not a folder"
-        text = _read_plain(folder / MANIFEST).decode("ascii")
-    except FileNotFoundError:
-        return "has no checksums"
-    except (OSError, UnicodeDecodeError):
-        return "has unreadable checksums"
-    listed = re.findall(r"^([0-9a-f]{64})  ([\w./-]+)$", text, re.MULTILINE)
-    if len(listed) != text.count("\n") or required not in {rel for _, rel in listed}:
-        return "has unreadable checksums"
-    for digest, rel in listed:
-        if rel.startswith("/") or ".." in rel.split("/"):
-            return "has unreadable checksums"
-        try:
-            data = _read_plain(folder / rel)
-        except OSError:
-            return f"is missing {rel}"
-        if hashlib.sha256(data).hexdigest() != digest:
-            return f"has a damaged {rel} (it does not match its checksum)"
-    return None
-
-
-def _read_plain(path: Path) -> bytes:
-    """The bytes of ``path`` if it is a regular file (not a link, a folder or a device); else
-    OSError."""
-    fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
-    try:
-        if not stat.S_ISREG(os.fstat(fd).st_mode):
-            raise OSError(f"{path} is not a regular file")
-        with os.fdopen(fd, "rb", closefd=False) as f:
-            return f.read()
-    finally:
-        os.close(fd)
 
 
 def shipped(key) -> Description | None:
@@ -280,40 +230,7 @@ def derive_model(key, folder: Path) -> None:
     from derive.codegen.sources import model_sources
 
     model = models.build(*key)
-    files = model_sources(model)
-    folder.parent.mkdir(parents=True, exist_ok=True)
-    tmp = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
-    try:
-        mark(tmp)
-        sums = []
-        for rel, text in sorted(files.items()):
-            path = tmp / rel
-            path.parent.mkdir(parents=True, exist_ok=True)
-            data = text.encode("utf-8")
-            path.write_bytes(data)
-            sums.append(f"{hashlib.sha256(data).hexdigest()}  {rel}\n")
-        (tmp / MANIFEST).write_text("".join(sums), encoding="ascii")  # last: the folder is whole
-        for attempt in range(2):
-            try:
-                os.replace(tmp, folder)
-                return
-            except OSError:
-                if _cached(folder, model.name)[0] is not None or attempt:
-                    return  # another process got there first: theirs is identical
-                # A damaged folder in the way: the cache's own goes (into a marked trash
-                # first, so the name is free at once), anything else is moved aside.
-                if is_marked(folder):
-                    trash = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
-                    mark(trash)
-                    try:
-                        os.replace(folder, trash / "old")
-                    except OSError:
-                        pass
-                    remove_marked(trash)
-                else:
-                    make_room(folder, folder=True)
-    finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+    write_folder(folder, model_sources(model), f"models/{model.name}.json")
 
 
 def clear_memory() -> None:

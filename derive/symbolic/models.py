@@ -265,6 +265,16 @@ def half_angle_partial_fractions(expr, x=beta, guard=True):
     return out
 
 
+@functools.lru_cache(maxsize=None)
+def _routh(effects: tuple):
+    """(the effects' symbols, R, V, the Routh :class:`Reduction` of the symmetric top under
+    ``effects``): one derivation per set of effects, shared by the β and the u = cos β models."""
+    sym = sums.Symbols(effects)
+    R = ZYZ.matrix()
+    V = sums.potential(effects, R, sym)
+    return sym, R, V, Reduction(EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V)))
+
+
 def reduced(effects=()) -> Model:
     """The symmetric top reduced to β, with α and γ carried along (axisymmetric conservative
     effects only)."""
@@ -272,11 +282,13 @@ def reduced(effects=()) -> Model:
     if any(not (e.conservative and e.axisymmetric) for e in effects):
         raise ValueError("the reduced formulation needs conserved p_alpha, p_gamma: "
                          "axisymmetric conservative effects only")
-    sym = sums.Symbols(effects)
-    R = ZYZ.matrix()
-    V = sums.potential(effects, R, sym)
-    system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
-    red = Reduction(system)
+    return _reduced(effects)
+
+
+@functools.lru_cache(maxsize=None)
+def _reduced(effects: tuple) -> Model:
+    """:func:`reduced`, built once per set of effects (the u = cos β model reads it too)."""
+    sym, R, V, red = _routh(effects)
     rates = red.rates_from_momenta
     ad = half_angle_partial_fractions(rates[RATES[0]])
     gd = p_gamma / I3 - ad * sp.cos(beta)
@@ -354,11 +366,7 @@ def reduced_u(effects=()) -> Model:
         raise ValueError("the reduced-u formulation needs conserved p_alpha, p_gamma: "
                          "axisymmetric conservative effects only")
     base = reduced(effects)  # the β model: its init map for p_α, p_γ and its Routh derivation
-    sym = sums.Symbols(effects)
-    R = ZYZ.matrix()
-    V = sums.potential(effects, R, sym)
-    system = EulerLagrange(trig_reduce(kinetic_energy(_moments(True))) - trig_reduce(V))
-    red = Reduction(system)
+    sym, R, V, red = _routh(effects)
     Veff = red.effective_potential
     f = sp.cancel((1 - u**2) * (2 / I1) * (E_prime - _cos_beta_form(Veff)))
     if not f.is_polynomial(u):
