@@ -88,6 +88,8 @@ class Notes:
     declared: dict = field(default_factory=dict)
     items: list = field(default_factory=list)
     names: nm.Names = field(default_factory=nm.Names)
+    body: str = ""
+    """The rendered text (prose and math), for readings that need what the prose says."""
 
 
 def _symbols(value: str, path: str) -> dict:
@@ -226,6 +228,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     body = source.rendered("\n".join([""] * skip + lines[skip:]))
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
+    notes.body = body
     starts = [0]
     for m in re.finditer("\n", body):
         starts.append(m.end())

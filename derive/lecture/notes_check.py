@@ -53,6 +53,7 @@ from derive.lecture.judging import Judging
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.on_the_motion import OnTheMotion
+from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
@@ -87,6 +88,10 @@ def _repeated_labels(pieces) -> dict:
     return out
 
 
+_UNTIED = ("A", "B", "C")
+"""Letters the reader knows only as free symbols (`derive.lecture.vocabulary.FREE_NAMES`)."""
+
+
 def _name_tex(name: str) -> str:
     """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
     base, _, sub = name.partition("_")
@@ -95,7 +100,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
-              SmallMoments, Judging):
+              SmallMoments, Judging, OperatorStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -227,6 +232,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._operator(line, piece, text):
+            return
         if self._algebra_first(text) and self._algebra(line, piece, text):
             return
         try:
@@ -417,6 +424,10 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             return
         loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs
                        and x not in self._constants())
+        if forms and not loose:
+            # a derived quantity written in capitals the text never tied to it (diag(A, B, C) for the
+            # inertia tensor) defines those letters: it is no slip
+            loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:
