@@ -1,10 +1,9 @@
 """Texts in operator notation (Sussman & Wisdom's functional style): D, 𝒜, the orientation matrix.
 
-Takes: a text's prose (what it says its letters are) and one statement's LaTeX. Gives:
-`Declarations` (learned once per text: the letter of the time derivative, the orientation
-matrix, the operator 𝒜 of the cross product, the labels of the principal axes) and `evaluate`,
-the statement's members as numbers on one instant of one motion (`derive.lecture.motion_jets`).
-May import: the standard library, numpy, :mod:`derive.lecture.motion_jets`, :mod:`derive.lecture.source`.
+Takes: one statement's LaTeX and what the text says its operators are
+(`derive.lecture.operator_prose.Declarations`). Gives: `evaluate`, the statement's members as
+numbers on one instant of one motion (`derive.lecture.motion_jets`).
+May import: the standard library, numpy, :mod:`derive.lecture.motion_jets`.
 
 What such a text writes, and what it is read as (a quantity with a prime is on the principal
 axes, one without on the inertial axes, when the text says primes mark principal-axis
@@ -30,12 +29,11 @@ from __future__ import annotations
 
 import random
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
 from derive.lecture import motion_jets as mj
-from derive.lecture import source
 
 
 class NotHandled(Exception):
@@ -46,60 +44,6 @@ _GREEK = {"omega", "theta", "phi", "psi", "varphi", "vartheta", "alpha", "beta",
 _BOLD = ("mathbf", "boldsymbol", "vec", "bm", "pmb")
 _SKIP = {",", ";", ":", "!", " ", "quad", "qquad", "left", "right", "big", "Big", "bigg", "Bigg",
          "bigl", "bigr", "Bigl", "Bigr", "displaystyle"}
-
-
-@dataclass
-class Declarations:
-    """What a text says its operator notation means (None or empty: it does not say)."""
-
-    derivative: str | None = None       # the letter of d/dt
-    orientation: str | None = None      # the letter of the orientation matrix
-    cross: str | None = None            # the letter of 𝒜
-    primes_principal: bool = False      # a prime marks principal-axis components
-    labels: dict = field(default_factory=dict)   # an axis label → 0, 1, 2 (a, b, c after A, B, C)
-    moments: tuple = ()                 # the letters of the principal moments
-
-    @property
-    def on(self) -> bool:
-        return bool(self.derivative or self.cross) and bool(self.moments)
-
-
-_INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
-_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|gather)\*?\}.+?\\end\{\1\*?\}", re.S)
-
-
-def _letter(latex: str) -> str | None:
-    """The letter of an inline formula that is one symbol (bold, script or plain), else None."""
-    m = re.fullmatch(r"\s*(?:\\(?:mathbf|boldsymbol|mathrm|mathscr|mathcal|bm)\s*\{\s*([A-Za-z])\s*\}|([A-Za-z]))\s*", latex)
-    return (m.group(1) or m.group(2)) if m else None
-
-
-def declarations(body: str) -> Declarations:
-    """Read what the prose says of D, the orientation matrix, 𝒜, primes and the principal moments."""
-    prose = _DISPLAY.sub("\n\n", body)
-    out = Declarations()
-    for m in _INLINE.finditer(prose):
-        letter = _letter(m.group(1))
-        if letter is None:
-            continue
-        after = prose[m.end():m.end() + 80].split("$")[0]
-        before = prose[max(0, m.start() - 40):m.start()]
-        if re.match(r"\s*(?:is|for|denotes|stands for|,)\s+(?:the\s+)?(?:time\s+)?derivative", after):
-            out.derivative = out.derivative or letter
-        elif re.match(r"\s*(?:is|denotes|stands for)\s+the\s+orientation(?:\s+matrix)?", after) or \
-                re.search(r"orientation matrix\s*$", before):
-            out.orientation = out.orientation or letter
-        elif re.search(r"antisymmetric matrix|skew[- ]symmetric matrix|cross[- ]product matrix", after):
-            out.cross = out.cross or letter
-    if re.search(r"primes?\s+(?:mark|denote|indicate)[^.]{0,30}(?:principal|body)", prose, flags=re.I):
-        out.primes_principal = True
-    listed = re.search(r"\$([A-Z])\$\s*,\s*\$([A-Z])\$\s*,?\s*(?:and\s*)?\$([A-Z])\$\s+(?:are|denote)\s+the\s+principal moments", prose) or \
-        re.search(r"principal moments(?: of inertia)?\W{0,12}\$([A-Z])\$\s*,\s*\$([A-Z])\$\s*,?\s*(?:and\s*)?\$([A-Z])\$", prose)
-    if listed:
-        out.moments = listed.groups()
-        out.labels = {x.lower(): k for k, x in enumerate(out.moments)}
-        out.labels.update({str(k + 1): k for k in range(3)})
-    return out
 
 
 # ---- reading a statement -------------------------------------------------------------------------
@@ -231,9 +175,6 @@ def tokens(s: str) -> list[Tok]:
                 out.append(Tok("env", name))
                 i = j
                 continue
-        if ch == "&":
-            i += 1
-            continue
         tok, j = _atom(s, i)
         out.append(tok)
         i = j
@@ -245,7 +186,7 @@ class Values:
     text leaves arbitrary — a bold lower-case letter (a vector), a capital letter it calls a
     rotation — get random values, the same for every member of a statement."""
 
-    def __init__(self, decl: Declarations, instant: mj.Instant, angle_names, names, seed, rotations=False):
+    def __init__(self, decl, instant: mj.Instant, angle_names, names, seed, rotations=False):
         self.decl, self.x, self.angle_names, self.names = decl, instant, angle_names, names
         self.rng = random.Random(seed)
         self.rotations = rotations

@@ -3,8 +3,8 @@
 Takes: the notes (their prose, convention and angles) and one statement. Gives: the mixin
 `OperatorStatements` of `derive.lecture.notes_check.Checker`: a statement the operator reading
 follows entirely gets its verdict here, any other goes on to the general reader.
-May import: the standard library, :mod:`derive.lecture.operator_notation`,
-:mod:`derive.lecture.motion_jets`.
+May import: the standard library, mpmath, :mod:`derive.lecture.operator_notation`,
+:mod:`derive.lecture.operator_prose`, :mod:`derive.lecture.motion_jets`.
 
 A chain a = b = c is evaluated on three instants of motions with a torque (random angle
 accelerations; the torque is the one they imply) and, where the section says the body is free,
@@ -24,6 +24,7 @@ import mpmath
 
 from derive.lecture import motion_jets as mj
 from derive.lecture import operator_notation as on
+from derive.lecture import operator_prose
 
 _POINTS = 3
 _NEAR = 12
@@ -38,8 +39,8 @@ class OperatorStatements:
     """Mixin of the checker (see the module docstring)."""
 
     @functools.cached_property
-    def _op(self) -> on.Declarations:
-        return on.declarations(getattr(self.notes, "body", ""))
+    def _op(self) -> operator_prose.Declarations:
+        return operator_prose.declarations(getattr(self.notes, "body", ""))
 
     @functools.cached_property
     def _op_names(self) -> dict:
@@ -59,10 +60,23 @@ class OperatorStatements:
         return _DISPLAYS.sub(" ", "\n".join(self._op_lines[start:line - 1]))
 
     def _operator(self, line, piece, text) -> bool:
-        """Check the statement in operator notation; False when that reading does not follow it."""
-        decl = self._op
-        if not decl.on:
+        """Check the statement in operator notation; False when that reading does not follow it.
+        A statement read again (a second reading of the checker) gets the verdicts of the first."""
+        if not self._op.on:
             return False
+        done = self.__dict__.setdefault("_op_done", {})
+        if (line, piece, text) not in done:
+            start = len(self.claims)
+            handled = self._op_read(line, piece, text)
+            done[(line, piece, text)] = [(c.line, c.latex, c.kind, c.verdict, c.why, c.correction)
+                                         for c in self.claims[start:]] if handled else []
+            return handled
+        for claim in done[(line, piece, text)]:
+            self._add(*claim)
+        return bool(done[(line, piece, text)])
+
+    def _op_read(self, line, piece, text) -> bool:
+        decl = self._op
         seen = self.__dict__.setdefault("_op_seen", set())
         try:
             toks = on.tokens(on.prepared(text))
