@@ -74,3 +74,9 @@ def test_an_inline_formula_broken_across_a_line_is_read():
     text = HEAD + "The moment about the contact point is $I_{P}(\\theta) =\n2mR(R-a\\cos\\theta)$ here.\n\n" + \
         f"$$\n{LAGRANGIAN}\n$$\n\n$$\nI_{{P}}'(\\theta) = 2maR\\sin\\theta\n$$\n"
     assert notes_check.check_text(text)[-1].verdict == "holds"
+
+
+def test_a_text_in_euler_angles_is_left_to_the_general_reader():
+    head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Heavy top\n\n"
+    claims = notes_check.check_text(head + f"$$\n{LAGRANGIAN}\n$$\n")
+    assert not [c for c in claims if c.why.startswith("defines L (recorded")]

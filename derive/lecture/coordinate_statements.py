@@ -2,7 +2,9 @@
 
 Takes: the notes and one statement. Gives: the mixin `CoordinateStatements` of
 `derive.lecture.notes_check.Checker`. It is on for a text that writes its own Lagrangian of one
-coordinate, ``L(\\theta, \\dot\\theta) = …``; a statement it cannot read goes on to the general reader.
+coordinate, ``L(\\theta, \\dot\\theta) = …``, and declares no Euler angles in its front matter
+(those the general reader's derivation knows); a statement it cannot read goes on to the general
+reader.
 May import: the standard library, sympy, :mod:`derive.lecture.coordinate_functions`,
 :mod:`derive.lecture.operator_notation`, :mod:`derive.lecture.operator_statements`.
 
@@ -50,8 +52,8 @@ class CoordinateStatements:
     def _cf(self) -> cf.Defined | None:
         body = getattr(self.notes, "body", "")
         m = _LAGRANGIAN.search(body)
-        if not m:
-            return None
+        if not m or {"convention", "angles"} & set(self.notes.declared):
+            return None                 # a text in Euler angles: the general reader's derivation applies
         defined = cf.Defined(sp.Symbol(m.group(1).lstrip("\\"), real=True))
         self._cf_prose = []             # (line, symbol) the prose introduces ("mass $m$")
         for inline in _SINGLE.finditer(body):
