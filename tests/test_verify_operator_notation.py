@@ -30,16 +30,22 @@ def _display(latex, before=""):
     return before + "\n\n$$\n" + latex + "\n$$\n"
 
 
-def test_the_orientation_matrix_rate_holds_and_its_sign_slip_fails():
+def test_the_orientation_matrix_rate_holds_and_its_sign_slip_is_a_typo_corrected_in_the_texts_notation():
     assert _verdicts(_display(r"D\mathbf{M} = \mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0][0] == "holds"
-    assert _verdicts(_display(r"D\mathbf{M} = -\mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0][0] == "fails"
+    claim = notes_check.check_text(HEAD + _display(r"D\mathbf{M} = -\mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0]
+    assert claim.verdict == "typo" and "-" not in claim.correction
+    assert _verdicts(_display(claim.correction))[0][0] == "holds"
+
+
+def test_a_slip_that_no_sign_repairs_fails():
+    assert _verdicts(_display(r"D\mathbf{M} = \mathscr{A}(\boldsymbol{\omega}')\mathbf{M}"))[0][0] == "fails"
 
 
 def test_euler_equations_in_components_hold_for_the_free_body_the_section_states():
     text = _display(r"A D\omega^a = (B - C) \omega^b \omega^c", "For a free body the angular momentum is constant.")
     verdict, why = _verdicts(text)[0]
     assert verdict == "holds" and "free body" in why
-    assert _verdicts(_display(r"A D\omega^a = (C - B) \omega^b \omega^c", "For a free body:"))[0][0] == "fails"
+    assert _verdicts(_display(r"A D\omega^a = (C - B) \omega^b \omega^c", "For a free body:"))[0][0] in ("typo", "fails")
 
 
 def test_a_torque_makes_euler_equations_hold_on_any_motion():
@@ -54,8 +60,9 @@ def test_without_a_free_body_stated_the_torque_free_equations_fail():
 def test_the_potentials_slot_derivative_is_minus_the_generalised_force():
     v = r"\partial_{1,1} V(t; \theta(t), \phi(t), \psi(t))"
     assert _verdicts(_display(rf"D p_\phi = -{v}"))[0][0] == "holds"
-    assert _verdicts(_display(rf"D p_\phi = {v}"))[0][0] == "fails"
-    assert _verdicts(_display(rf"D \partial_{{\dot\phi}} L = -D p_\phi"))[0][0] == "fails"
+    assert _verdicts(_display(rf"D p_\phi = {v}"))[0][0] == "typo"
+    claim = notes_check.check_text(HEAD + _display(rf"D \partial_{{\dot\phi}} L = -D p_\phi = {v}"))[0]
+    assert claim.verdict == "typo" and claim.correction == rf"-D \partial_{{\dot\phi}} L = -D p_\phi = {v}"
 
 
 def test_an_identity_in_vectors_the_text_leaves_arbitrary_holds_and_a_wrong_one_is_not_judged():

@@ -121,8 +121,13 @@ class OperatorStatements:
             return True
         which = _disagreeing(free) if free is not None else bad
         motion = "on a torque-free motion" if free is not None else "on a motion with a torque"
-        self._add(line, piece, "operator identity", "fails",
-                  f"as written: member {which + 1} ≠ member {which + 2} {motion} ({self._op_reading(forced)})")
+        why = f"as written: member {which + 1} ≠ member {which + 2} {motion} ({self._op_reading(forced)})"
+        fix = _sign_fix(text, piece, forced, free)
+        if fix is not None:
+            self._add(line, piece, "operator identity", "typo", f"{why}; one edit (the sign of member {fix[1] + 1}) "
+                      "makes it hold", fix[0])
+        else:
+            self._add(line, piece, "operator identity", "fails", why)
         return True
 
     def _op_values(self, text, k, free, prose):
@@ -145,7 +150,7 @@ class OperatorStatements:
         if decl.derivative:
             parts.append(f"{decl.derivative} the time derivative")
         if decl.orientation:
-            parts.append(f"{decl.orientation} the orientation matrix of the {self.d.conv.name} angles")
+            parts.append(f"{decl.orientation} the orientation matrix of the {self.notes.convention} angles")
         if decl.cross:
             parts.append(f"{decl.cross}(v) the cross-product matrix of v")
         return ", ".join(parts)
@@ -159,6 +164,47 @@ def _notation(tok, decl) -> bool:
         return tok.kind == "env"
     return tok.bold or tok.value in (decl.derivative, decl.orientation) or (tok.roman and tok.value == decl.cross) \
         or bool(tok.sup) or (tok.sub in decl.labels and not tok.sub.isdigit())
+
+
+def _sign_fix(text, piece, forced, free):
+    """(the statement with one member's sign turned, that member) when that makes it hold, else
+    None; only a member of one term is turned (its leading '-' added or dropped)."""
+    members = _split_members(text)
+    if len(members) != len(forced[0][0]):
+        return None
+    head = len(_split_members(piece)) < len(members)         # a continuation row: its head is member 0
+    order = sorted(range(1 if head else 0, len(members)), key=lambda k: not members[k].strip().startswith("-"))
+    for k in order:                                         # dropping a '-' first, then adding one
+        body = members[k].strip()
+        bare = body[1:].strip() if body.startswith("-") else body
+        if _split_members(bare, "+-") != [bare]:
+            continue
+        turned = [([-x for x in m] if j == k else m for j, m in enumerate(v[0])) for v in forced]
+        ok = _disagreeing([(list(t), ()) for t in turned]) is None
+        if not ok and free is not None:
+            turned = [([-x for x in m] if j == k else m for j, m in enumerate(v[0])) for v in free]
+            ok = _disagreeing([(list(t), ()) for t in turned]) is None
+        if ok:
+            out = list(members)
+            out[k] = (" " if k else "") + (bare if body.startswith("-") else "-" + body) + " "
+            latex = "=".join(out).strip()
+            return (latex[len(_left_side(text)):].strip() if head else latex), k
+    return None
+
+
+def _split_members(text, seps="=") -> list:
+    """The text cut at top-level separators (outside braces and brackets); a leading one is no cut."""
+    out, depth, last = [], 0, 0
+    for i, ch in enumerate(text):
+        if ch in "{([":
+            depth += 1
+        elif ch in "})]":
+            depth -= 1
+        elif ch in seps and depth == 0 and i > 0 and text[i - 1] != "\\" and text[:i].strip():
+            out.append(text[last:i])
+            last = i + 1
+    out.append(text[last:])
+    return out
 
 
 def _disagreeing(points) -> int | None:
