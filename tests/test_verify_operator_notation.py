@@ -112,3 +112,34 @@ def test_a_free_instant_has_no_torque_and_a_forced_one_has_one(free):
     instant = mj.Instant(("z", "x", "z"), [1.0, 2.0, 3.5], "seed", free)
     size = max(abs(t.value) for t in instant.torque)
     assert (size < 1e-12) == free
+
+
+@pytest.mark.slow
+def test_every_planted_sign_slip_in_the_sicm_notes_is_flagged_on_its_display_only():
+    """Each '-' of a correct display of the SICM study notes turned into '+', one at a time (up to
+    three per display): flagged on that display, and on no other correct display."""
+    import re
+    import sys
+    from pathlib import Path
+
+    real = Path(__file__).resolve().parent / "notes" / "real"
+    sys.path.insert(0, str(real))
+    import measure
+
+    slug = "sicm-workbook-euler-equations-forced"
+    lines = (real / f"{slug}.md").read_text().split("\n")
+    rows = {r["line"]: r["verdict"] for r in measure.truth(slug)}
+    planted, missed, alarms = 0, [], []
+    for ln in sorted(k for k, v in rows.items() if v == "holds"):
+        end = ln
+        while end < len(lines) and not (end > ln and lines[end - 1].strip().startswith("$$")):
+            end += 1
+        seg = "\n".join(lines[ln - 1:end])
+        for m in list(re.finditer(r"(?<=[ =(])- ?", seg))[:3]:
+            text = "\n".join(lines[:ln - 1] + [seg[:m.start()] + "+ " + seg[m.end():]] + lines[end:])
+            flagged = {c.line for c in notes_check.check_text(text) if c.verdict in ("typo", "fails")}
+            planted += 1
+            if ln not in flagged:
+                missed.append(ln)
+            alarms += [x for x in flagged if rows.get(x) == "holds" and x != ln]
+    assert planted >= 20 and not missed and not alarms, (planted, missed, alarms)
