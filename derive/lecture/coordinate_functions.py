@@ -2,8 +2,8 @@
 
 Takes: one statement's LaTeX and what the text has defined so far (`Defined`). Gives: the
 statement's members as SymPy expressions in q, q̇, q̈ and the text's parameters (`read`).
-May import: the standard library, sympy, :mod:`derive.lecture.operator_notation` (its tokenizer's
-symbol reading).
+May import: the standard library, sympy, :mod:`derive.lecture.operator_notation` (`NotHandled`:
+a statement this reading leaves to the general reader).
 
 A body with one coordinate (a hoop rolling on the floor through an angle θ, a pendulum) is
 described by functions the text names: ``I_P(\\theta) = 2mR(R - a\\cos\\theta)``, ``x_C =
