@@ -203,6 +203,13 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
         text, offset = clause
         found = list(_INLINE.finditer(text))
         listed = re.search(MEANINGS["principal moments"][1] + r"\W{0,12}\$", text, flags=re.I)
+        named = re.search(r"\$[^$]+\$\s*,\s*\$[^$]+\$\s*,?\s*(?:and\s*)?\$[^$]+\$\s+(?:are|denote) the " +
+                          MEANINGS["principal moments"][1], text, flags=re.I)
+        if named:       # "$A$, $B$, $C$ are the principal moments": the three symbols right before it
+            run = [m for m in found if named.start() <= m.start() < named.end()][:3]
+            after = [a for m in run for a in _atoms(m.group(1))]
+            if len(after) == 3:
+                _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
         if listed:      # "the principal moments $A$, $B$, $C$": the three symbols right after it
             run = [m for m in found if m.start() >= listed.end() - 1][:3]
             gaps = [text[a.end():b.start()] for a, b in zip(run, run[1:])]

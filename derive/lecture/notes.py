@@ -47,7 +47,7 @@ _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
 _DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
                    r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
-                   r"|(?<![\\$])\$(?P<i>[^$\n]+?)(?<!\\)\$", re.S)
+                   r"|(?<![\\$])\$(?P<i>(?:[^$\n]|\n(?![ \t]*\n))+?)(?<!\\)\$", re.S)
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
@@ -88,6 +88,8 @@ class Notes:
     declared: dict = field(default_factory=dict)
     items: list = field(default_factory=list)
     names: nm.Names = field(default_factory=nm.Names)
+    body: str = ""
+    """The rendered text (prose and math), for readings that need what the prose says."""
 
 
 def _symbols(value: str, path: str) -> dict:
@@ -226,6 +228,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     body = source.rendered("\n".join([""] * skip + lines[skip:]))
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
+    notes.body = body
     starts = [0]
     for m in re.finditer("\n", body):
         starts.append(m.end())

@@ -53,6 +53,8 @@ from derive.lecture.judging import Judging
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.on_the_motion import OnTheMotion
+from derive.lecture.operator_statements import OperatorStatements
+from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
@@ -87,6 +89,12 @@ def _repeated_labels(pieces) -> dict:
     return out
 
 
+_CASE_LEAD = re.compile(r"\s*,?\s*(?:where|when|whenever|if|in which case)\s*", re.I)
+"""The prose between an inline case and the inline relation it governs."""
+_UNTIED = ("A", "B", "C")
+"""Letters the reader knows only as free symbols (`derive.lecture.vocabulary.FREE_NAMES`)."""
+
+
 def _name_tex(name: str) -> str:
     """An angle's name (``theta``, ``psi_betaalpha``) as LaTeX."""
     base, _, sub = name.partition("_")
@@ -95,7 +103,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
-              SmallMoments, Judging):
+              SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -179,6 +187,21 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
 
     # -- a display
     def _display(self, item, latex):
+        start = len(self.claims)
+        self._display_statements(item, latex)
+        lead = item.lead or ""
+        self._in_case = item.kind == "inline" and (_CASE_LEAD.fullmatch(lead) is not None or (
+            getattr(self, "_in_case", False) and re.fullmatch(r"\s*(?:,|and|,\s*and)\s*", lead) is not None))
+        if self._in_case:
+            # "… $\cos\theta = 0$, where $\omega_z = \dot\phi$": the sentence's own special case,
+            # which the reader does not apply; a flag there would rest on the case left out
+            for c in self.claims[start:]:
+                if c.verdict in ("typo", "fails"):
+                    c.verdict, c.correction = "unchecked", None
+                    c.why = ("stated in a sentence for the case it names just before (\"…, where\"), "
+                             f"which the reader does not apply: as read without it, {c.why}")
+
+    def _display_statements(self, item, latex):
         pieces = statements(latex)
         if not pieces:
             self._add(item.line, latex, "text", "unchecked", "not a formula")
@@ -227,6 +250,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._operator(line, piece, text) or self._coordinate(line, piece, text):
+            return
         if self._algebra_first(text) and self._algebra(line, piece, text):
             return
         try:
@@ -417,6 +442,10 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             return
         loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs
                        and x not in self._constants())
+        if forms and not loose:
+            # a derived quantity written in capitals the text never tied to it (diag(A, B, C) for the
+            # inertia tensor) defines those letters: it is no slip
+            loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         if undecided:

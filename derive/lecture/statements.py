@@ -24,18 +24,20 @@ def _strip_envs(s: str) -> str:
         s = s.replace(f"\\begin{{{env}}}", " ").replace(f"\\end{{{env}}}", " ")
     return s
 
-def _top_level_split(s: str, seps: tuple) -> list[str]:
-    """Split at separators outside braces and outside matrix environments."""
+def _top_level_split(s: str, seps: tuple, parens: bool = False) -> list[str]:
+    """Split at separators outside braces and outside matrix environments (and, with ``parens``,
+    outside brackets: the ``;`` of ``V(t; q)`` separates a function's arguments, not statements)."""
     out, depth, env, i, start = [], 0, 0, 0, 0
+    opening, closing = ("{([", "})]") if parens else ("{", "}")
     while i < len(s):
         if s.startswith("\\begin{", i):
             env += 1
         elif s.startswith("\\end{", i):
             env -= 1
         ch = s[i]
-        if ch == "{":
+        if ch in opening and not (ch != "{" and i and s[i - 1] == "\\"):
             depth += 1
-        elif ch == "}":
+        elif ch in closing and not (ch != "}" and i and s[i - 1] == "\\"):
             depth -= 1
         elif depth == 0 and env == 0:
             for sep in seps:
@@ -105,7 +107,7 @@ def _lists(row: str) -> list[str]:
     """A row that lists statements: cut at top-level ``;`` and at top-level commas between
     relations (``\\theta = 0, \\dot\\theta = 0``), never inside brackets (f(a, b))."""
     pieces = []
-    for part in _top_level_split(row, (";",)):
+    for part in _top_level_split(row, (";",), parens=True):
         if part.rstrip().endswith("\\"):
             pieces.append(part)
             continue

@@ -55,6 +55,11 @@ class VectorStatements:
             if "not a vector" in how or " against a " in how:
                 self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
                 continue
+            untied = sorted({str(x) for x in getattr(first[k].value, "free_symbols", ()) if str(x) in ("A", "B", "C")})
+            if untied:          # diag(A, B, C) for the inertia tensor: the text naming its moments
+                self._add(line, piece, kind, "unchecked", f"involves {', '.join(untied)}, which the text has not "
+                          "tied to the derivation (a definition of them?)")
+                continue
             fix = None if self.judging_only else self._vector_fix(reading, k, piece)
             if fix:
                 self._add(line, piece, kind, "typo", f"as written: {how}; one edit ({fix[1]}) makes it hold "

@@ -1,0 +1,214 @@
+"""A rigid body's motion at one instant, as Taylor jets: what a text in operator notation is read against.
+
+Takes: the convention's three axes and the text's principal moments (numbers). Gives: `Jet`, a
+truncated Taylor series f(t₀ + h) = Σₖ aₖ hᵏ (k < `ORDER`) with exact arithmetic on it, and
+`Instant`, the body's state along one motion — the orientation matrix **M**(t) = R(q(t)) of the
+convention (body → inertial components), the principal-axis angular velocity 𝛚′ from
+**M**ᵀ D**M** = 𝒜(𝛚′), the torque **T**′ = **I**′ D𝛚′ + 𝛚′ × **I**′𝛚′ it implies (Euler's
+equations with a torque, in principal axes) and the generalised forces Q_k = **T**·∂𝛚/∂q̇_k of
+the angles. A free body's instant has q̈ chosen so that **T**′ = 0.
+May import: the standard library, mpmath, numpy.
+
+The time derivative D of a jet is exact up to the order it keeps; a coefficient it cannot know is
+NaN, so a formula that differentiates more often than the jet allows evaluates to NaN (and is
+not judged) instead of to a wrong number.
+"""
+from __future__ import annotations
+
+import random
+
+import mpmath
+import numpy as np
+
+ORDER = 4
+"""Taylor coefficients kept: enough for D applied three times."""
+
+_NAN = mpmath.mpf("nan")
+
+
+class Jet:
+    """f(t₀ + h) = Σ aₖ hᵏ, k < ORDER (aₖ = f⁽ᵏ⁾(t₀)/k!)."""
+
+    __slots__ = ("a",)
+
+    def __init__(self, coefficients):
+        a = [mpmath.mpf(x) for x in coefficients][:ORDER]
+        self.a = a + [mpmath.mpf(0)] * (ORDER - len(a))
+
+    @staticmethod
+    def lift(x) -> "Jet":
+        return x if isinstance(x, Jet) else Jet([x])
+
+    def __add__(self, other):
+        if isinstance(other, np.ndarray):
+            return NotImplemented
+        o = Jet.lift(other)
+        return Jet([x + y for x, y in zip(self.a, o.a)])
+
+    __radd__ = __add__
+
+    def __neg__(self):
+        return Jet([-x for x in self.a])
+
+    def __sub__(self, other):
+        if isinstance(other, np.ndarray):
+            return NotImplemented
+        return self + (-Jet.lift(other))
+
+    def __rsub__(self, other):
+        return Jet.lift(other) - self
+
+    def __mul__(self, other):
+        if isinstance(other, np.ndarray):
+            return NotImplemented
+        o = Jet.lift(other)
+        return Jet([sum(self.a[k] * o.a[n - k] for k in range(n + 1)) for n in range(ORDER)])
+
+    __rmul__ = __mul__
+
+    def reciprocal(self) -> "Jet":
+        """1/f by the recursion b₀ = 1/a₀, bₙ = −(Σ_{k≥1} aₖ bₙ₋ₖ)/a₀."""
+        if self.a[0] == 0:
+            raise ZeroDivisionError("division by a quantity that vanishes here")
+        b = [1 / self.a[0]]
+        for n in range(1, ORDER):
+            b.append(-sum(self.a[k] * b[n - k] for k in range(1, n + 1)) / self.a[0])
+        return Jet(b)
+
+    def __truediv__(self, other):
+        return self * Jet.lift(other).reciprocal()
+
+    def __rtruediv__(self, other):
+        return Jet.lift(other) * self.reciprocal()
+
+    def __pow__(self, n):
+        if not isinstance(n, int) or n < -8 or n > 8:
+            raise ValueError("only small whole powers")
+        out = Jet([1])
+        for _ in range(abs(n)):
+            out = out * self
+        return out if n >= 0 else out.reciprocal()
+
+    def derivative(self) -> "Jet":
+        """D f: the coefficients shift down; the last is unknown (NaN)."""
+        return Jet([(k + 1) * self.a[k + 1] for k in range(ORDER - 1)] + [_NAN])
+
+    @property
+    def value(self):
+        return self.a[0]
+
+
+def sin_cos(x: Jet) -> tuple[Jet, Jet]:
+    """sin and cos of a jet: with x = x₀ + h, sin x = sin x₀ cos h + cos x₀ sin h (h has no constant)."""
+    h = Jet([0] + x.a[1:])
+    s0, c0 = mpmath.sin(x.a[0]), mpmath.cos(x.a[0])
+    sin_h, cos_h, power = Jet([0]), Jet([1]), Jet([1])
+    for k in range(1, ORDER):
+        power = power * h / k                     # hᵏ/k!
+        if k % 2:
+            sin_h = sin_h + power * (-1) ** ((k - 1) // 2)
+        else:
+            cos_h = cos_h + power * (-1) ** (k // 2)
+    return s0 * cos_h + c0 * sin_h, c0 * cos_h - s0 * sin_h
+
+
+def jet_array(values) -> np.ndarray:
+    return np.array([Jet.lift(v) for v in np.ravel(values)], dtype=object).reshape(np.shape(values))
+
+
+def derivative(x):
+    """D of a jet, a vector or a matrix of jets."""
+    if isinstance(x, np.ndarray):
+        return np.vectorize(lambda e: Jet.lift(e).derivative(), otypes=[object])(x)
+    return Jet.lift(x).derivative()
+
+
+def hat(v) -> np.ndarray:
+    """𝒜(v): the antisymmetric matrix with 𝒜(v) w = v × w."""
+    zero = Jet([0])
+    return np.array([[zero, -v[2], v[1]], [v[2], zero, -v[0]], [-v[1], v[0], zero]], dtype=object)
+
+
+def vee(m) -> np.ndarray:
+    """𝒜⁻¹: the vector of an antisymmetric matrix (its antisymmetric part)."""
+    return np.array([(m[2, 1] - m[1, 2]) / 2, (m[0, 2] - m[2, 0]) / 2, (m[1, 0] - m[0, 1]) / 2], dtype=object)
+
+
+def cross(u, v) -> np.ndarray:
+    return np.array([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]], dtype=object)
+
+
+def active(axis: str, angle: Jet) -> np.ndarray:
+    """The active right-handed turn about x, y or z by the angle (as `derive.symbolic.rotations.active`)."""
+    s, c = sin_cos(angle)
+    i = "xyz".index(axis)
+    j, k = (i + 1) % 3, (i + 2) % 3
+    m = jet_array(np.eye(3))
+    m[j, j], m[j, k], m[k, j], m[k, k] = c, -s, s, c
+    return m
+
+
+def rotation(axes, angles) -> np.ndarray:
+    """R = active(a₁, q₁) active(a₂, q₂) active(a₃, q₃): body → inertial components."""
+    return active(axes[0], angles[0]) @ active(axes[1], angles[1]) @ active(axes[2], angles[2])
+
+
+class Instant:
+    """One instant of one motion of a body with principal moments ``moments`` (see the module
+    docstring). ``free``: the motion is torque-free (q̈ from Euler's equations); otherwise q̈ is
+    random and the torque is what the motion implies."""
+
+    def __init__(self, axes, moments, seed, free: bool):
+        rng = random.Random(seed)
+        self.axes = axes
+        self.moments = [mpmath.mpf(m) for m in moments]
+        q0 = [mpmath.mpf(rng.uniform(0.3, 1.2)) for _ in range(3)]
+        q1 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
+        q3 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
+        q2 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
+        if free:
+            q2 = self._free_acceleration(q0, q1, q3)
+        self.angles = [Jet([q0[k], q1[k], q2[k] / 2, q3[k] / 6]) for k in range(3)]
+        self.M = rotation(axes, self.angles)
+        self.inertia = jet_array(np.diag(self.moments))
+        self.omega = vee(self.M.T @ derivative(self.M))              # 𝛚′, principal axes
+        self.torque = self.inertia @ derivative(self.omega) + cross(self.omega, self.inertia @ self.omega)
+        self.q1 = q1
+
+    def _omega_rate(self, q0, q1, q2, q3):
+        angles = [Jet([q0[k], q1[k], q2[k] / 2, q3[k] / 6]) for k in range(3)]
+        M = rotation(self.axes, angles)
+        w = vee(M.T @ derivative(M))
+        return [x.a[1] for x in w], [x.a[0] for x in w]
+
+    def _free_acceleration(self, q0, q1, q3):
+        """q̈ with I′ D𝛚′ = −𝛚′ × I′𝛚′ (D𝛚′ is affine in q̈: solved from four evaluations)."""
+        zero = [mpmath.mpf(0)] * 3
+        base, w = self._omega_rate(q0, q1, zero, q3)
+        cols = []
+        for k in range(3):
+            e = list(zero)
+            e[k] = mpmath.mpf(1)
+            rate, _ = self._omega_rate(q0, q1, e, q3)
+            cols.append([rate[i] - base[i] for i in range(3)])
+        Iw = [self.moments[i] * w[i] for i in range(3)]
+        want = [-(w[(i + 1) % 3] * Iw[(i + 2) % 3] - w[(i + 2) % 3] * Iw[(i + 1) % 3]) / self.moments[i]
+                for i in range(3)]
+        A = mpmath.matrix([[cols[k][i] for k in range(3)] for i in range(3)])
+        rhs = mpmath.matrix([want[i] - base[i] for i in range(3)])
+        return list(mpmath.lu_solve(A, rhs))
+
+    def rates_matrix(self) -> np.ndarray:
+        """B⁰: the inertial angular velocity 𝛚 = B⁰ q̇ (column k: the axis of the k-th turn)."""
+        s = [active(self.axes[0], self.angles[0]), active(self.axes[1], self.angles[1])]
+        e = [jet_array(np.eye(3)[:, "xyz".index(a)]) for a in self.axes]
+        cols = [e[0], s[0] @ e[1], s[0] @ s[1] @ e[2]]
+        return np.array([[cols[k][i] for k in range(3)] for i in range(3)], dtype=object)
+
+    def generalised_forces(self) -> np.ndarray:
+        """Q_k = 𝐓·(axis of the k-th turn): the torque's power per unit rate of each angle."""
+        return self.rates_matrix().T @ (self.M @ self.torque)
+
+    def momenta(self) -> np.ndarray:
+        """p_k = ∂T/∂q̇_k = 𝐋·(axis of the k-th turn)."""
+        return self.rates_matrix().T @ (self.M @ (self.inertia @ self.omega))
