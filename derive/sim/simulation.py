@@ -27,13 +27,12 @@ from derive.sim import plan
 from derive.sim.outputs import (PLOT_FORMATS, RESULT_FORMATS, check_paths, output_format, write_all,
                                 write_csv)
 from derive.sim.plots import plot_result
-from derive.sim.result import (Result, _check_pole, _explain, _integral_arrays, _new_result, _quiet,
-                               _result, kept)
+from derive.sim.result import Result, _check_pole, _explain, _quiet, _result, kept
 from derive.sim.saveat import SaveAt
 from derive.sim.scene import contact_data, load_scene  # contact_data: the contact hook
 from derive.sim.scipy_ref import _solve_scipy
 
-_RANGE = int(Status.RANGE)  # an int: no enum lookup per call
+_RANGE = int(Status.RANGE)
 
 
 @_quiet
@@ -89,10 +88,8 @@ def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Resu
 
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
                      nfev: int) -> Result:
-    """What :func:`_result` gives for outputs the C driver checked finite, with the plan's
-    integral formulas (:func:`_integral_arrays`)."""
-    return _new_result(out, y, pl.t, pl.scene, c.method, c.desc, nfev,
-                       _integral_arrays(pl.integral_rows, out, pl.t))
+    """The Result of outputs the C driver checked finite, with the plan's integral formulas."""
+    return _result(c.desc, out, y, pl.t, pl.scene, c.method, nfev, finite=True, integrals=pl.integral_rows)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
