@@ -88,12 +88,16 @@ def _cell(what: str, value) -> str:
     return f"{value:.0%}" if "scaling" in what else f"{value:.3g}×"
 
 
+def _targets_table(t: dict) -> list[str]:
+    """The targets' table: what, goal, the measured value and whether it is met."""
+    return ["| target | goal | measured | |", "|---|---|---|---|"] + [
+        f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |"
+        for what, goal, value, ok in T.summary(t)]
+
+
 def targets_section(results: dict) -> list[str]:
     t = results["targets"]
-    L = ["## Targets, measured side by side in this run", "",
-         "| target | goal | measured | |", "|---|---|---|---|"]
-    for what, goal, value, ok in T.summary(t):
-        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+    L = ["## Targets, measured side by side in this run", "", *_targets_table(t)]
     L += ["", "(stronger baseline): no goal was set against it; reported because `odeint` — LSODA whose "
           "stepping loop is Fortran, not Python — is the cheapest way SciPy offers to integrate a Python rhs.", ""]
     for key in ("reference", "fixed_cost", "batch", "processes", "lambdify", "sweeps"):
@@ -435,9 +439,7 @@ def summary(results: dict) -> str:
     cmd = "make bench" if cfg["name"] == "full" else f"derive bench --{cfg['name']}"
     L = [f"From one `{cmd}` run ({results['elapsed']:.0f} s; {m['cpu']}, {m['cores']} cores, load average "
          f"{la[0]:.2f} at the start; commit {m['commit']}; versions in the full report).", "",
-         "| target | goal | measured | |", "|---|---|---|---|"]
-    for what, goal, value, ok in T.summary(results["targets"]):
-        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+         *_targets_table(results["targets"])]
     c = results["c_loop"][-1]
     L += ["", f"Generated C `heavy_top_rhs` {c['generated_ns']:.1f} ns/call against the same equations typed "
           f"by hand {c['handwritten_ns']:.1f} ns/call ({c['ratio']:.2f}×, `{c['flags']}`).", "",

@@ -56,6 +56,7 @@ from derive.sim.scene import FIXED_STEP_METHODS, MIN_RTOL
 from derive.sim.scene import FORMULATIONS
 import derive
 from derive.reference import exact
+from derive.reference.rotation import euler_matrix
 from derive.codegen.render import GENERATED
 from derive.runtime.cbuild import check_compiles
 from derive.bench import internals as bi
@@ -93,11 +94,7 @@ WP_SCENES = {
 
 def our_formulations() -> tuple[str, ...]:
     """Every formulation a scene can ask for (the scene format's registry), "auto" excluded."""
-    try:
-
-        return tuple(f for f in FORMULATIONS if f != "auto")
-    except ImportError:
-        return ("reduced", "euler-angles", "quaternion")
+    return tuple(f for f in FORMULATIONS if f != "auto")
 
 
 HEAVY_TOP_PARAMS = np.array([1.8e-4, 4.0e-5, 0.1, 9.81, 0.04])  # (I1, I3, M, g, l) of the scenes' top
@@ -240,14 +237,6 @@ def match_tolerance(solve, target: float, rtol0: float = 1e-10) -> dict:
 # reference solutions
 
 
-def _rotation(a: float, b: float, c: float) -> np.ndarray:
-    """R = Rz(α) Ry(β) Rz(γ): body components -> inertial components."""
-    def rz(x):
-        return np.array([[np.cos(x), -np.sin(x), 0.0], [np.sin(x), np.cos(x), 0.0], [0.0, 0.0, 1.0]])
-    ry = np.array([[np.cos(b), 0.0, np.sin(b)], [0.0, 1.0, 0.0], [-np.sin(b), 0.0, np.cos(b)]])
-    return rz(a) @ ry @ rz(c)
-
-
 def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
     """ê₃(t) from `derive.reference.exact` for scene data (`bench_contenders.scene_data`), or None when
     the scene has no closed form (damping, or an asymmetric heavy body)."""
@@ -263,7 +252,7 @@ def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
         rates = [float(init.get(k, 0.0)) for k in ("alpha_dot", "beta_dot", "gamma_dot")]
     w0 = np.array(b.body_rates(be, ga, *rates) if rates is not None else list(map(float, init["omega"])))
     if grav is None:
-        R0 = _rotation(a, be, ga)
+        R0 = euler_matrix(a, be, ga)
         sol = (exact.free_symmetric(I1, I3, w0, t, R0=R0) if I2 == I1
                else exact.free_asymmetric(I1, I2, I3, w0, t, R0=R0))
     elif I2 == I1:
@@ -375,7 +364,6 @@ def generated_numpy(name: str = "heavy_top"):
     """The committed generated/numpy/<name>.py as a module."""
     import importlib.util
 
-
     spec = importlib.util.spec_from_file_location(f"derive_bench_generated_{name}", GENERATED / "numpy" / f"{name}.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
@@ -407,7 +395,6 @@ def python_calls(cfg: Settings, fams=("scipy",)) -> dict:
            "numpy_us": per_call(lambda: mod.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6,
            "ctypes_us": None}
     try:
-
         kc = bi.kernel_case(SCENES / "looping_top.toml", "euler-angles")
         out["ctypes_us"] = per_call(lambda: kc.kernel.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6
     except Exception as exc:  # noqa: BLE001 - an internal moved: report, don't fail the bench
@@ -484,7 +471,6 @@ def machine() -> dict:
     except OSError:
         pass
     try:
-
         cc = subprocess.run([*compiler(), "--version"], capture_output=True, text=True).stdout.splitlines()[0]
     except (OSError, IndexError):
         cc = "?"

@@ -101,7 +101,6 @@ _match = B.match_tolerance
 
 
 def reference_scene(cfg, fams) -> dict:
-
     data = reference_data(cfg.ref_t_end)
     rtol = data["simulate"]["rtol"]
     t = np.linspace(0.0, data["simulate"]["t_end"], data["simulate"]["samples"])
@@ -115,7 +114,6 @@ def reference_scene(cfg, fams) -> dict:
     parts, errors = {}, {}
     for key, make in (("own_call", "own_batch_call"), ("output_map", "output_map_call")):
         try:
-
             arg = [data] if key == "own_call" else data
             parts[key] = getattr(bi, make)(arg)
         except Exception as exc:  # noqa: BLE001
@@ -232,7 +230,6 @@ def phases(cfg) -> dict:
 
 
 def fixed_cost(cfg) -> dict:
-
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
@@ -356,7 +353,6 @@ def processes(cfg) -> dict:
 def numpy_vs_lambdify(cfg) -> dict:
     import sympy as sp
 
-
     states, params, rhs = bi.heavy_top_expressions()
     f = sp.lambdify([states, params], list(rhs), modules="numpy", cse=True)
     mod = B.generated_numpy()
@@ -393,31 +389,26 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=11, desc="targets", unit="part", file=sys.stderr) as bar:
-        out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
-        bar.update()
-        out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
-        bar.update()
-        out["fixed_cost"] = _guard("fixed cost", fixed_cost, cfg)
-        bar.update()
-        rtols = {r["method"]: r["rtol"] for r in out["reference"].get("rows", [])
-                 if r["family"] == "scipy" and r["reached"] is not False}
-        out["batch"] = _guard("batch", batch, cfg, rtols)
-        bar.update()
-        out["processes"] = _guard("processes", processes, cfg) if cfg.process_repeats else {}
-        bar.update()
-        out["lambdify"] = _guard("lambdify", numpy_vs_lambdify, cfg)
-        bar.update()
-        out["sweeps"] = _guard("sweeps", sweeps, cfg)
-        bar.update()
-        out["peers"] = _guard("peers", bench_peers.run, cfg, fams, batch_scenes)
-        bar.update()
-        out["own_body"] = _guard("own body", own_body, cfg)
-        bar.update()
-        out["auto_choice"] = _guard("auto choice", auto_choice, cfg)
-        bar.update()
-        out["tippe_top"] = _guard("tippe top vs MuJoCo", tippe_race.run, cfg)
-        bar.update()
+
+    def rtols():  # the SciPy methods' rtols that matched derive's error on the reference scene
+        return {r["method"]: r["rtol"] for r in out["reference"].get("rows", [])
+                if r["family"] == "scipy" and r["reached"] is not False}
+
+    parts = [("reference", "reference scene", lambda: reference_scene(cfg, fams)),
+             ("phases", "phases", lambda: phases(cfg) if cfg.process_repeats else {}),
+             ("fixed_cost", "fixed cost", lambda: fixed_cost(cfg)),
+             ("batch", "batch", lambda: batch(cfg, rtols())),
+             ("processes", "processes", lambda: processes(cfg) if cfg.process_repeats else {}),
+             ("lambdify", "lambdify", lambda: numpy_vs_lambdify(cfg)),
+             ("sweeps", "sweeps", lambda: sweeps(cfg)),
+             ("peers", "peers", lambda: bench_peers.run(cfg, fams, batch_scenes)),
+             ("own_body", "own body", bench_own_body),
+             ("auto_choice", "auto choice", lambda: auto_choice(cfg)),
+             ("tippe_top", "tippe top vs MuJoCo", lambda: tippe_race.run(cfg))]
+    with tqdm(total=len(parts), desc="targets", unit="part", file=sys.stderr) as bar:
+        for key, name, part in parts:
+            out[key] = _guard(name, part)
+            bar.update()
     return out
 
 
@@ -427,11 +418,6 @@ def auto_choice(cfg) -> dict:
     if cfg.name == "smoke":
         return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
     return bench_auto_choice(levels=LEVELS if cfg.name == "full" else LEVELS[1::2], blocks=5)
-
-
-def own_body(cfg) -> dict:
-    """The targets for user terms (:mod:`derive.bench.own_body`)."""
-    return bench_own_body()
 
 
 def sweeps(cfg) -> dict:
