@@ -88,33 +88,35 @@ def _scene_path(source: str, folder: Path, sc: str) -> str:
     return str(path)
 
 
+def _read(spec) -> tuple[dict, str, Path]:
+    """(the sweep's data, its source, its folder) of a path, an example's name or a dict;
+    SceneError for anything else or a file the scene files' reader refuses."""
+    if isinstance(spec, Mapping):
+        return spec, "<sweep>", Path.cwd()
+    if not isinstance(spec, (str, os.PathLike)):
+        raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
+    source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
+    return read_toml(source, "sweep"), source, Path(source).resolve().parent
+
+
 def input_files(spec) -> tuple:
     """The files a sweep reads (the sweep file, and the scene file it names), to compare the
     outputs with before any work (``outputs.check_paths``); () for a dict. Reads the sweep file
     with the checks of :func:`load` (SceneError as it would raise)."""
     if isinstance(spec, Mapping) or not isinstance(spec, (str, os.PathLike)):
         return ()
-    source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example, as in load
-    sc = read_toml(source, "sweep").get("scene")
-    if not isinstance(sc, str):
-        return (source,)
-    return (source, _scene_path(source, Path(source).resolve().parent, sc))
+    data, source, folder = _read(spec)
+    sc = data.get("scene")
+    return (source,) if not isinstance(sc, str) else (source, _scene_path(source, folder, sc))
 
 
 def contact_sweep(spec) -> tuple[dict, str, Path] | None:
     """(the sweep's data, its source, its folder) when the sweep ``spec`` (path, example name or
     dict) names a scene with a ``[contact]`` table, else None (an unreadable sweep too: the
     general reader reports it)."""
-    if isinstance(spec, Mapping):
-        data, source, folder = spec, "<sweep>", Path.cwd()
-    elif isinstance(spec, (str, os.PathLike)):
-        source = examples.resolve(os.fspath(spec), "sweep")
-        try:
-            data = read_toml(source, "sweep")
-        except SceneError:
-            return None
-        folder = Path(source).resolve().parent
-    else:
+    try:
+        data, source, folder = _read(spec)
+    except SceneError:
         return None
     sc = data.get("scene")
     if isinstance(sc, str):
@@ -135,14 +137,7 @@ def load(spec) -> Spec:
     most ``scene.MAX_SCENE_BYTES``, nothing special such as /dev/zero or a FIFO); a key named
     twice in any spelling (quoted or dotted) is refused, as is a table that names no key.
     """
-    if isinstance(spec, Mapping):
-        source, data, folder = "<sweep>", spec, Path.cwd()
-    elif isinstance(spec, (str, os.PathLike)):
-        source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
-        data = read_toml(source, "sweep")
-        folder = Path(source).resolve().parent
-    else:
-        raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
+    data, source, folder = _read(spec)
     for k in data:
         if k not in _SPEC_KEYS:
             _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
