@@ -513,24 +513,20 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch(..., outputs=\"final\")` / "
                      f"heyoka batch mode ({ba['lanes']} lanes) `propagate_until`", "dict_call",
                      ba.get("ratio_final_vs_final")))
-        if "ratio_prepared_final_vs_final" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(...)` (final states) / "
-                         f"heyoka batch mode `propagate_until`", "batch_vs_heyoka",
-                         ba.get("ratio_prepared_final_vs_final")))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(...)` (final states) / "
+                     f"heyoka batch mode `propagate_until`", "batch_vs_heyoka", ba["ratio_prepared_final_vs_final"]))
         if "ratio_prepared_lanes_vs_final" in ba:
             rows.append((f"batch of {ba['n']}, per trajectory, Taylor: `derive.prepare(...).run_batch(...)` "
                          f"(final, SIMD lanes) / heyoka batch `propagate_until` at equal error", "batch_vs_heyoka",
                          ba.get("ratio_prepared_lanes_vs_final")))
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch` (every output, {ba['samples']} "
                      f"samples) / heyoka batch `propagate_grid`", "dict_call", ba.get("ratio_full_vs_grid")))
-        if "ratio_prepared_axis_vs_grid" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
-                         f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
-                         "batch_vs_heyoka", ba.get("ratio_prepared_axis_vs_grid")))
-        if "ratio_prepared_state_vs_grid" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"state\",))` "
-                         f"(the states at {ba['samples']} samples) / heyoka `propagate_grid` (its states)",
-                         "batch_vs_heyoka", ba.get("ratio_prepared_state_vs_grid")))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
+                     f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
+                     "batch_vs_heyoka", ba["ratio_prepared_axis_vs_grid"]))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"state\",))` "
+                     f"(the states at {ba['samples']} samples) / heyoka `propagate_grid` (its states)",
+                     "batch_vs_heyoka", ba["ratio_prepared_state_vs_grid"]))
     fc = pe.get("fixed_cost") or {}
     if "prepared_vs_heyoka" in fc:
         rows.append(("fixed cost (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / heyoka",
