@@ -63,52 +63,47 @@ def _matplotlib():
     return plt, ticker
 
 
-class _PlainFormatterBase:
-    """Mixin body of `PlainFormatter` (the class is made once matplotlib is imported)."""
-
-    def set_locs(self, locs):
-        self._ticks = [float(v) for v in locs]
-
-    def __call__(self, x, pos=None):
-        locs = [v for v in getattr(self, "_ticks", []) if np.isfinite(v)] or [x]
-        steps = np.diff(sorted(set(locs)))
-        step = float(np.min(steps)) if steps.size else abs(x) or 1.0
-        if x == 0 or abs(x) < 1e-9 * step:  # a tick at zero (up to round-off of the locator)
-            return "0"
-        big = max(abs(v) for v in locs)
-        fixed = 1e-3 <= big < 1e5
-        lead = -math.floor(math.log10(step) + 1e-9)  # decimals of the tick spacing's first digit
-        if not fixed:
-            lead += math.floor(math.log10(big))
-        # The fewest digits that print every tick exactly (a spacing of 2.5 needs one decimal).
-        for digits in range(max(0, lead), max(0, lead) + 6):
-            fmt = f"{{:.{digits}{'f' if fixed else 'e'}}}"
-            if all(abs(float(fmt.format(v)) - v) <= 1e-3 * step for v in locs):
-                break
-        text = fmt.format(x)
-        if not fixed:
-            mant, exp = text.split("e")
-            text = f"{mant}e{int(exp)}"
-        return text
-
-    def get_offset(self):
-        return ""
+def _plain_label(x: float, ticks) -> str:
+    """The label of tick ``x`` among ``ticks``: in full, the fewest digits that tell them apart."""
+    locs = [float(v) for v in ticks if np.isfinite(v)] or [x]
+    steps = np.diff(sorted(set(locs)))
+    step = float(np.min(steps)) if steps.size else abs(x) or 1.0
+    if x == 0 or abs(x) < 1e-9 * step:  # a tick at zero (up to round-off of the locator)
+        return "0"
+    big = max(abs(v) for v in locs)
+    fixed = 1e-3 <= big < 1e5
+    lead = -math.floor(math.log10(step) + 1e-9)  # decimals of the tick spacing's first digit
+    if not fixed:
+        lead += math.floor(math.log10(big))
+    # The fewest digits that print every tick exactly (a spacing of 2.5 needs one decimal).
+    for digits in range(max(0, lead), max(0, lead) + 6):
+        fmt = f"{{:.{digits}{'f' if fixed else 'e'}}}"
+        if all(abs(float(fmt.format(v)) - v) <= 1e-3 * step for v in locs):
+            break
+    text = fmt.format(x)
+    if not fixed:
+        mant, exp = text.split("e")
+        text = f"{mant}e{int(exp)}"
+    return text
 
 
 def plain_formatter():
     """A tick formatter without offset or common multiplier: every label is the full number."""
     _, ticker = _matplotlib()
 
-    class PlainFormatter(_PlainFormatterBase, ticker.Formatter):
-        pass
+    class PlainFormatter(ticker.Formatter):
+        def set_locs(self, locs):  # (kept here: Formatter.locs is deprecated)
+            self.ticks = list(locs)
+
+        def __call__(self, x, pos=None):
+            return _plain_label(x, getattr(self, "ticks", []))
 
     return PlainFormatter()
 
 
 def _plain(ax, axes="xy"):
     for name in axes:
-        axis = getattr(ax, f"{name}axis")
-        axis.set_major_formatter(plain_formatter())
+        getattr(ax, f"{name}axis").set_major_formatter(plain_formatter())
 
 
 def _legend_outside(ax, **kw):
@@ -395,7 +390,8 @@ def _conserved(res) -> list[tuple[str, np.ndarray]]:
 
 
 def _panel_momenta(ax, res):
-    if not _conserved(res):  # a body with user terms that conserve neither momentum
+    conserved = _conserved(res)
+    if not conserved:  # a body with user terms that conserve neither momentum
         why = _user_symmetries(res)["why"]
         for name, key in (("p_α", "p_alpha"), ("p_γ", "p_gamma")):
             ax.plot(res.t, np.asarray(getattr(res, key), dtype=float), lw=1, label=name)
@@ -406,7 +402,6 @@ def _panel_momenta(ax, res):
         _plain(ax, "x")
         _legend_outside(ax)
         return
-    conserved = _conserved(res)
     exact = [(sym, v) for sym, v in conserved if np.all(v == v[0])]
     said = ", ".join(f"{sym} = {v[0]:.10g}" for sym, v in exact)
     if len(exact) == len(conserved):
@@ -451,12 +446,8 @@ def _panel_top(ax, res):
     ax.set_ylabel("ê₃ · ŷ")
     ax.set_title("path of ê₃, seen from above")
     _plain(ax)
-    ax.xaxis.set_major_locator(_ticker().MaxNLocator(5))
+    ax.xaxis.set_major_locator(_matplotlib()[1].MaxNLocator(5))
     _legend_outside(ax)
-
-
-def _ticker():
-    return _matplotlib()[1]
 
 
 def _sphere(ax, labels):
@@ -517,12 +508,7 @@ def _panel_polhode(ax, res):
 
 def panels(res) -> list[str]:
     """The panel names `figure` draws for this result, in order."""
-    damped = _damping_c(res) != 0.0
-    names = ["beta", "omega", "energy"]
-    if damped:
-        names.append("balance")
-    else:
-        names.append("momenta")
+    names = ["beta", "omega", "energy", "balance" if _damping_c(res) != 0.0 else "momenta"]
     # a symmetric heavy top's loops and cusps show from above; a free or asymmetric body's
     # motion is read in its own axes (the polhode)
     names += ["top", "sphere"] if _is_symmetric(res) and not _free(res) else ["sphere", "polhode"]
@@ -534,7 +520,11 @@ def _free(res) -> bool:
     return all(e.potential is None for e in effects.lookup(getattr(res, "effects", ())))
 
 
-_DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": None, "balance": _panel_balance,
+def _panel_energy(ax, res):
+    (_panel_energy_damped if _damping_c(res) != 0.0 else _panel_energy_error)(ax, res)
+
+
+_DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": _panel_energy, "balance": _panel_balance,
          "momenta": _panel_momenta, "top": _panel_top, "sphere": _panel_sphere, "polhode": _panel_polhode}
 _3D = ("sphere", "polhode")
 COLUMNS = 3
@@ -552,10 +542,7 @@ def figure(res):
     for k, name in enumerate(names):
         ax = fig.add_subplot(rows, columns, k + 1, projection="3d" if name in _3D else None, label=name)
         before = set(fig.axes)
-        if name == "energy":
-            (_panel_energy_damped if _damping_c(res) != 0.0 else _panel_energy_error)(ax, res)
-        else:
-            _DRAW[name](ax, res)
+        _DRAW[name](ax, res)
         for extra in set(fig.axes) - before:
             extra.set_label(f"{name}:twin")
     fig.suptitle(_title(res), fontsize=12)
