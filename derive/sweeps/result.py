@@ -60,9 +60,5 @@ def write(result: SweepResult, parquet: str | None, png: str | None = None,
         writers[parquet] = lambda f: result.to_pandas().to_csv(
             f, index=False, float_format=lambda x: repr(float(x)), na_rep="nan")
     if png:
-        def plot(f):
-
-            plot_sweep(result, f, measure, plot_format)
-
-        writers[png] = plot
+        writers[png] = lambda f: plot_sweep(result, f, measure, plot_format)
     write_all(writers, inputs=result.files)
