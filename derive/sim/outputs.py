@@ -28,6 +28,7 @@ it can be (setting it to read it is process-wide, so that fallback happens under
 """
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import stat
@@ -77,18 +78,14 @@ def _target(path: str | os.PathLike) -> Path:
     return Path(os.path.realpath(p)) if p.is_symlink() else p
 
 
+_WHY = {errno.EROFS: "read-only file system", errno.EACCES: "permission denied",
+        errno.EPERM: "permission denied", errno.ENOSPC: "no space left on device",
+        errno.EDQUOT: "disk quota exceeded",
+        errno.ENOENT: "the file system takes no new files there"}  # e.g. /proc
+
+
 def _why(err: OSError) -> str:
-    if err.errno == errno.EROFS:
-        return "read-only file system"
-    if err.errno in (errno.EACCES, errno.EPERM):
-        return "permission denied"
-    if err.errno == errno.ENOSPC:
-        return "no space left on device"
-    if err.errno == errno.EDQUOT:
-        return "disk quota exceeded"
-    if err.errno == errno.ENOENT:  # e.g. /proc: the folder is there but takes no new files
-        return "the file system takes no new files there"
-    return err.strerror or str(err)
+    return _WHY.get(err.errno) or err.strerror or str(err)
 
 
 class _File:
@@ -237,10 +234,8 @@ def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:
         _commit(staged)
     except BaseException:
         for _, _, tmp in staged:
-            try:
+            with contextlib.suppress(FileNotFoundError):
                 os.unlink(tmp)
-            except FileNotFoundError:
-                pass
         raise
 
 
@@ -265,20 +260,33 @@ def _commit(staged: list[tuple[str, Path, str]]) -> None:
             done.append((target, existed, backup))
     except BaseException:
         for target, existed, backup in reversed(done):
-            try:
+            with contextlib.suppress(OSError):
                 if backup is not None:
                     os.replace(backup, target)
                 elif not existed:
                     os.unlink(target)
-            except OSError:
-                pass
         raise
     finally:
         for backup in backups:
-            try:
+            with contextlib.suppress(FileNotFoundError):
                 os.unlink(backup)
-            except FileNotFoundError:
-                pass
+
+
+def write_data_and_plot(data, data_writers: Mapping[str, Writer], formats: Mapping[str, str], plot,
+                        plot_writer, inputs=()) -> None:
+    """Write a command's table or arrays (``data``: ``-o``) and its figure (``plot``:
+    ``--plot``; either None when not asked for), each in the format its extension names
+    (``data_writers``: format -> writer, among ``formats``; ``plot_writer(fmt)`` -> writer),
+    all or nothing (:func:`write_all`); neither may be one of ``inputs`` (checked first: a
+    clash with an input is what matters most), and another extension is refused before
+    anything is written."""
+    check_paths([data, plot], inputs=inputs)
+    data_format = output_format(data, "-o", formats) if data else None
+    plot_format = output_format(plot, "--plot", PLOT_FORMATS) if plot else None
+    writers = {data: data_writers[data_format]} if data_format else {}
+    if plot_format:
+        writers[plot] = plot_writer(plot_format)
+    write_all(writers, inputs=inputs)
 
 
 def output_format(path, flag: str, formats: Mapping[str, str]) -> str | None:
