@@ -32,7 +32,7 @@ from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
 from derive.sweeps.points import _fail, set_entry
 from derive.sweeps.result import SweepResult
-from derive.sweeps.spec import _SPEC_KEYS, _measures, _scene_path, grid_or_random
+from derive.sweeps.spec import _SPEC_KEYS, _check_key, _measures, _scene_path, grid_or_random
 
 
 def _set(data: dict, key: str, value: float) -> dict:
@@ -42,25 +42,14 @@ def _set(data: dict, key: str, value: float) -> dict:
     return out
 
 
-def _check_key(source: str, where: str, key: str, raw: dict) -> None:
-    keys = contact_keys()
-    if key.startswith("simulate.") or key == "title":
-        _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
-    if key not in keys:
-        _fail(source, where, "not a key of a top on a table that takes a number (e.g. "
-                             "initial.omega.2, initial.beta, contact.offset, contact.mu)")
-    table, name, index, _ = keys[key]
-    init = raw.get("initial", {})
-    if index is not None and "omega" not in init:
-        _fail(source, where, "the scene gives Euler-angle rates, not omega")
-    if name.endswith("_dot") and "omega" in init:
-        _fail(source, where, "the scene gives omega, not Euler-angle rates")
+_WHAT = ("a key of a top on a table that takes a number (e.g. initial.omega.2, initial.beta, contact.offset, "
+         "contact.mu)")
 
 
 def _points(source: str, data: dict, raw: dict):
     """(keys, grid shape or None, {key: (N,) column}), every distinct value checked."""
     keys, shape, cols, distinct = grid_or_random(
-        source, data, lambda where, key: _check_key(source, where, key, raw), n_max=10**6)
+        source, data, lambda where, key: _check_key(source, where, key, contact_keys(), raw, _WHAT), n_max=10**6)
     where = "vary" if shape is not None else "random"
     for key, values in distinct.items():
         for v in np.unique(values):

@@ -230,7 +230,11 @@ def grid_or_random(source, data, check_key, n_max: int = 10**9):
     return tuple(cols), None, cols, distinct
 
 
-def _check_key(source, where, key, variable, raw):
+def _check_key(source, where, key, variable, raw,
+               what="a scene key that takes a number (e.g. initial.beta, body.I3, gravity.l, initial.omega.0)"):
+    """Refuse a key ``where`` that no point may vary: not in ``variable`` (the keys registry:
+    :func:`derive.sweeps.keys.variable_keys` or ``contact_keys``), a table the scene ``raw``
+    lacks, a user term's param it lacks, the rates of a scene given ``omega`` or the reverse."""
     if key.startswith("simulate.") or key == "title":
         _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
     term = term_key(key)
@@ -246,8 +250,7 @@ def _check_key(source, where, key, variable, raw):
                                  f"the scene gives a value)")
         return
     if key not in variable:
-        _fail(source, where, "not a scene key that takes a number (e.g. initial.beta, body.I3, "
-                             "gravity.l, initial.omega.0)")
+        _fail(source, where, f"not {what}")
     table, name, index, _ = variable[key]
     if table not in ("body", "initial") and table not in raw:
         _fail(source, where, f"the scene has no [{table}] table")
