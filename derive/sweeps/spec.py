@@ -138,39 +138,44 @@ def load(spec) -> Spec:
     twice in any spelling (quoted or dotted) is refused, as is a table that names no key.
     """
     data, source, folder = _read(spec)
-    for k in data:
-        if k not in _SPEC_KEYS:
-            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
 
-    # the base scene
-    if "scene" not in data:
-        _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
-    sc = data["scene"]
-    files = (source,) if source != "<sweep>" else ()
-    if isinstance(sc, str):
-        path = _scene_path(source, folder, sc)
-        files += (path,)
-        raw = read_toml(path)  # read once, with the scene files' checks
+    def read(raw, where):  # a scene file's errors name it; an inline scene's, scene.<key>
         try:
-            base = load_scene(raw)
+            return load_scene(raw)
         except SceneError as exc:
-            raise _scene_error(path, exc, "") from None  # its errors name the scene file
-    elif isinstance(sc, Mapping):
-        raw = copy.deepcopy(dict(sc))
-        try:
-            base = load_scene(raw)
-        except SceneError as exc:
-            raise _scene_error(source, exc, "scene.") from None
-    else:
-        _fail(source, "scene", f"must be a path or a table, got {sc!r}")
-    if "title" in data and "title" not in raw and isinstance(data["title"], str):
-        raw["title"] = data["title"]
+            raise _scene_error(where, exc, "" if where != source else "scene.") from None
 
+    raw, base, files = base_scene(data, source, folder, read)
     keys, shape, columns = _points(source, data, raw, base)
     names, options = _measures(source, data)
     out = Spec(source, base, raw, keys, shape, columns, names, options, files=files)
     build(out)
     return out
+
+
+def base_scene(data, source: str, folder: Path, read):
+    """(the base scene as a dict, ``read(raw, where)`` of it, the files read) of a sweep's
+    ``data``: its keys checked, its ``scene`` a path relative to ``folder`` (read once, with the
+    scene files' checks; ``where`` the path) or an inline table (``where`` the sweep's
+    ``source``); the sweep's title given to a scene without one."""
+    for k in data:
+        if k not in _SPEC_KEYS:
+            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
+    if "scene" not in data:
+        _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
+    sc = data["scene"]
+    files = (source,) if source != "<sweep>" else ()
+    if isinstance(sc, str):
+        where = _scene_path(source, folder, sc)
+        files, raw = files + (where,), read_toml(where)
+    elif isinstance(sc, Mapping):
+        where, raw = source, copy.deepcopy(dict(sc))
+    else:
+        _fail(source, "scene", f"must be a path or a table, got {sc!r}")
+    base = read(raw, where)
+    if "title" in data and "title" not in raw and isinstance(data["title"], str):
+        raw["title"] = data["title"]
+    return raw, base, files
 
 
 def _points(source, data, raw, base):
