@@ -66,11 +66,6 @@ def umask() -> int:
     return mask
 
 
-def new_file_mode() -> int:
-    """The permission bits ``open(path, "w")`` would give a new file."""
-    return 0o666 & ~umask()
-
-
 def _target(path: str | os.PathLike) -> Path:
     """Where ``path`` really is: a symlink is followed, so the file it points to is replaced
     (not the link); the path's own parent otherwise."""
@@ -212,7 +207,7 @@ def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:
     computed from) or the same file as another output is a SceneError (see ``check_paths``).
     """
     _check_clashes([_name_of(p) for p in outputs], inputs)
-    mode = new_file_mode()
+    mode = 0o666 & ~umask()  # what open(path, "w") would give a new file
     staged: list[tuple[str, Path, str]] = []  # (name, target, temporary)
     try:
         for path, writer in outputs.items():
@@ -313,10 +308,18 @@ def output_format(path, flag: str, formats: Mapping[str, str]) -> str | None:
 INERTIAL_VECTORS = ("axis",)
 
 
-def csv_columns(arrays: Mapping[str, object]) -> tuple[list[str], list, dict[str, str]]:
-    """(header, columns, metadata) of ``arrays`` as ``write_csv`` lays them out: one column per
-    1-D array and per component of an (n, k) array (``axis_x, axis_y, axis_z`` for the inertial
-    ``axis``, ``omega1, omega2, omega3`` for a body vector); 0-d arrays are the metadata."""
+def write_csv(fh, arrays: Mapping[str, object]) -> None:
+    """Write ``arrays`` (name -> array, as in the .npz) to the binary file ``fh`` as CSV.
+
+    Layout: first the metadata (the 0-d arrays), one comment line ``# <name>: <value>`` each;
+    then one header row; then one row per sample, a column per 1-D array and per component of
+    an (n, k) array (``axis_x, axis_y, axis_z`` for the inertial ``axis``, ``omega1, omega2,
+    omega3`` for a body vector). Numbers are written as Python's ``repr`` of the double, the
+    shortest text that reads back to the same bits. Read it with ``pandas.read_csv(path,
+    comment="#")``, or with NumPy skipping the comment lines (three for a `derive simulate`
+    result: method, formulation, nfev):
+    ``numpy.genfromtxt(path, delimiter=",", names=True, skip_header=3)``.
+    """
     import numpy as np
 
     header, columns, meta = [], [], {}
@@ -334,21 +337,6 @@ def csv_columns(arrays: Mapping[str, object]) -> tuple[list[str], list, dict[str
             columns += list(a.T)
         else:
             raise ValueError(f"{name}: a {a.ndim}-d array has no CSV columns")
-    return header, columns, meta
-
-
-def write_csv(fh, arrays: Mapping[str, object]) -> None:
-    """Write ``arrays`` (name -> array, as in the .npz) to the binary file ``fh`` as CSV.
-
-    Layout: first the metadata (the 0-d arrays), one comment line ``# <name>: <value>`` each;
-    then one header row; then one row per sample, a column per 1-D array and per component of
-    an (n, k) array (see :func:`csv_columns`). Numbers are written as Python's ``repr`` of the
-    double, the shortest text that reads back to the same bits. Read it with
-    ``pandas.read_csv(path, comment="#")``, or with NumPy skipping the comment lines (three for
-    a `derive simulate` result: method, formulation, nfev):
-    ``numpy.genfromtxt(path, delimiter=",", names=True, skip_header=3)``.
-    """
-    header, columns, meta = csv_columns(arrays)
     lines = [f"# {k}: {' '.join(v.split())}" for k, v in meta.items()]
     lines.append(",".join(header))
     rows = zip(*(c.tolist() for c in columns))
