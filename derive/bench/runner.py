@@ -46,25 +46,19 @@ from pathlib import Path
 
 import numpy as np
 
+import derive
 from derive.bench import contenders as bc
+from derive.bench import internals as bi
 from derive.bench.timing import per_call, timed
-from derive.codegen.render import CHECKOUT
+from derive.codegen.render import CHECKOUT, GENERATED
 from derive.errors import IntegrationError
 from derive.methods.registry import compiled_methods, tolerance_driven
-from derive.sim import examples
-from derive.sim.scene import FIXED_STEP_METHODS, MIN_RTOL
-from derive.sim.scene import FORMULATIONS
-import derive
 from derive.reference import exact
 from derive.reference.rotation import euler_matrix
-from derive.codegen.render import GENERATED
-from derive.runtime.cbuild import check_compiles
-from derive.bench import internals as bi
-from derive.runtime.cbuild import compiler
+from derive.runtime.cbuild import check_compiles, compiler
+from derive.sim import examples
+from derive.sim.scene import FIXED_STEP_METHODS, FORMULATIONS, MIN_RTOL
 
-#: The source checkout (for the commit the report names), or None when installed.
-REPO = CHECKOUT
-BENCH_SOURCES = bc.BENCH_SOURCES
 SCENES = examples.SCENES
 
 #: Error levels at which the cost of each contender's best method is compared with ours.
@@ -319,7 +313,7 @@ def c_loop(cfg: Settings) -> list[dict]:
     """ns/call of generated, hand-written and no-op rhs per flag set (one run each)."""
     sources = _generated_heavy_top()
     for name in ("handwritten_heavy_top.c", "noop_rhs.c", "rhs_loop.c"):
-        sources[name] = (BENCH_SOURCES / name).read_text()
+        sources[name] = (bc.BENCH_SOURCES / name).read_text()
     rows = []
     with tempfile.TemporaryDirectory(prefix="derive-bench-") as tmp:
         for flags in cfg.c_flags:
@@ -479,7 +473,7 @@ def machine() -> dict:
 
     versions = {"python": platform.python_version(), "numpy": np.__version__, "scipy": scipy.__version__,
                 "sympy": sympy.__version__}
-    versions.update({k: v for k, v in bc.peers_available().items()})
+    versions.update(bc.peers_available())
     try:
         from importlib.metadata import version
 
@@ -487,8 +481,8 @@ def machine() -> dict:
     except Exception:  # noqa: BLE001
         versions["derive"] = "?"
     try:
-        commit = "?" if REPO is None else subprocess.run(
-            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, cwd=REPO).stdout.strip() or "?"
+        commit = "?" if CHECKOUT is None else subprocess.run(  # the source checkout, else installed
+            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, cwd=CHECKOUT).stdout.strip() or "?"
     except OSError:
         commit = "?"
     return {"cpu": cpu, "cores": os.cpu_count(), "compiler": cc, "platform": platform.platform(),
