@@ -102,9 +102,8 @@ def own_batch_call(scenes):
     desc, kernel, args = bp.kernel(formulation)
     inputs, ps, t = bp.inputs, bp.params(desc), bp.t
     lanes = kernel.full_lanes(len(bp.scenes))
-    if lanes is not None:
-        return lambda: lanes.simulate_batch(inputs, ps, t, args, pole_check, lanes=True)
-    return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
+    k = lanes or kernel
+    return lambda: k.simulate_batch(inputs, ps, t, args, pole_check, lanes=lanes is not None)
 
 
 def output_map_call(scene):

@@ -254,12 +254,9 @@ def batch_results(bp: "BatchPlan") -> list[Result]:
     scs, t, method = bp.scenes, bp.t, bp.method
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
-        ps = bp.params(desc)
         lanes = kernel.full_lanes(len(scs))  # a Taylor method's trajectories W at a time
-        if lanes is not None:
-            out, y, ps, st = lanes.simulate_batch(bp.inputs, ps, t, args, pole_check, lanes=True)
-        else:
-            out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        out, y, ps, st = (lanes or kernel).simulate_batch(bp.inputs, bp.params(desc), t, args, pole_check,
+                                                          lanes=lanes is not None)
         if not (st["status"] == Status.RANGE).any():
             break
     bp.raise_failure(desc, st)
