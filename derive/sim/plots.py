@@ -230,7 +230,6 @@ def _panel_beta(ax, res):
         ax.plot(res.t, beta)
         ax.set_ylabel("β [rad]")
         ax.set_title(f"tilt β of the {axis} ê₃")
-    ax.set_xlabel("t [s]")
     _plain(ax)
 
 
@@ -281,7 +280,6 @@ def _panel_omega(ax, res):
     # Above the axes, one row: clear of the data and of the tick labels on either side.
     ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left", bbox_to_anchor=(0.0, 1.0),
               ncol=len(lines), borderaxespad=0.2, fontsize=8, frameon=False, handlelength=1.5)
-    ax.set_xlabel("t [s]")
     ax.set_title("angular velocity, body frame" + ("\n(ω̃₁, ω̃₂ turn faster than the samples resolve)"
                                                    if fast else ""), fontsize=10, pad=18)
 
@@ -325,7 +323,6 @@ def _panel_energy_error(ax, res):
         # A user's torque does work: E(t) − E(0) is that work, not an error.
         E = np.asarray(res.energy, dtype=float)
         ax.plot(res.t, E - E[0], lw=1)
-        ax.set_xlabel("t [s]")
         ax.set_ylabel("E(t) − E(0) [J]")
         ax.set_title(f"work done on the body, E(t) − E(0)\n(energy not conserved: {found['why']['energy']})",
                      fontsize=10)
@@ -338,7 +335,6 @@ def _panel_energy_error(ax, res):
     rel, how, lin = _deviation(E)
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E − E(0)| " + how.format("E"), lin)
-    ax.set_xlabel("t [s]")
     ax.set_title("energy error (no damping: E is conserved)" + _zeros_note(rel), fontsize=10)
     _plain(ax, "x")
 
@@ -349,7 +345,6 @@ def _panel_energy_damped(ax, res):
     ax.plot(res.t, E, label="E(t) = T + V")
     ax.plot(res.t, W, label="W(t) = ∫₀ᵗ c|ω̃|² dt′\n(trapezoid rule on\nthe output samples)")
     ax.plot(res.t, E + W, "--", color="k", lw=1, label="E + W (= E(0))")
-    ax.set_xlabel("t [s]")
     ax.set_ylabel("energy [J]")
     ax.set_title(f"energy and work done by damping (c = {_damping_c(res):g} N m s)")
     _plain(ax)
@@ -362,7 +357,6 @@ def _panel_balance(ax, res):
     rel, how, lin = _deviation(total)
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E + W − E(0)| " + how.format("E"), lin)
-    ax.set_xlabel("t [s]")
     ax.set_title("energy balance residual: trapezoid rule on the\noutput grid + integration error"
                  + _zeros_note(rel), fontsize=10)
     _plain(ax, "x")
@@ -395,7 +389,6 @@ def _panel_momenta(ax, res):
         why = _user_symmetries(res)["why"]
         for name, key in (("p_α", "p_alpha"), ("p_γ", "p_gamma")):
             ax.plot(res.t, np.asarray(getattr(res, key), dtype=float), lw=1, label=name)
-        ax.set_xlabel("t [s]")
         ax.set_ylabel("kg m²/s")
         ax.set_title(f"p_α, p_γ (not conserved: {why['p_alpha']};\n{why['p_gamma']})",
                      fontsize=10)
@@ -417,7 +410,6 @@ def _panel_momenta(ax, res):
         lins.append(lin)
         names.append(sym)
     _symlog(ax, np.concatenate(devs), "deviation", min(lins))
-    ax.set_xlabel("t [s]")
     ax.set_title("conserved: " + ", ".join(names) + _zeros_note(np.concatenate(devs))
                  + (f"\nexactly constant (not drawn): {said}" if exact else ""), fontsize=10)
     _plain(ax, "x")
@@ -527,6 +519,7 @@ def _panel_energy(ax, res):
 _DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": _panel_energy, "balance": _panel_balance,
          "momenta": _panel_momenta, "top": _panel_top, "sphere": _panel_sphere, "polhode": _panel_polhode}
 _3D = ("sphere", "polhode")
+_OF_TIME = ("beta", "omega", "energy", "balance", "momenta")  # panels over t: their x axis is t [s]
 COLUMNS = 3
 
 
@@ -542,6 +535,8 @@ def figure(res):
     for k, name in enumerate(names):
         ax = fig.add_subplot(rows, columns, k + 1, projection="3d" if name in _3D else None, label=name)
         before = set(fig.axes)
+        if name in _OF_TIME:
+            ax.set_xlabel("t [s]")
         _DRAW[name](ax, res)
         for extra in set(fig.axes) - before:
             extra.set_label(f"{name}:twin")
