@@ -95,12 +95,10 @@ class Mesh:
 
     def normals(self) -> np.ndarray:
         """Outward unit normals (f, 3), from each face's first three vertices."""
-        out = []
-        for f in self.faces:
-            a, b, c = self.verts[f[0]], self.verts[f[1]], self.verts[f[2]]
-            n = np.cross(b - a, c - a)
-            out.append(n / (np.linalg.norm(n) or 1.0))
-        return np.array(out)
+        a, b, c = self.verts[np.array([f[:3] for f in self.faces])].transpose(1, 0, 2)
+        n = np.cross(b - a, c - a)
+        norm = np.linalg.norm(n, axis=1, keepdims=True)
+        return n / np.where(norm > 0, norm, 1.0)
 
 
 def _gravity(scene):
