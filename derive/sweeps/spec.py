@@ -310,23 +310,15 @@ def _measures(source, data, contact: bool = False):
     """The measures' names and options; ``contact``: a sweep over a ``[contact]`` scene, which
     takes the measures with a ``contact`` function only (and the others never take those)."""
     default = ms.CONTACT_DEFAULT if contact else ms.DEFAULT
-    names, options = list(default), {}
+    options = {}
     if "measure" in data and "measures" in data:
         _fail(source, "measure", "give [measure] or measures, not both")
-    if "measures" in data:
-        names = data["measures"]
-        where = "measures"
-        extra = {}
-    elif "measure" in data:
-        table = data["measure"]
-        if not isinstance(table, Mapping):
-            _fail(source, "measure", "must be a table with names = [...]")
-        names = table.get("names", list(default))
-        where = "measure.names"
-        extra = {k: v for k, v in table.items() if k != "names"}
-    else:
-        extra = {}
-        where = "measure.names"
+    table = data.get("measure", {})
+    if not isinstance(table, Mapping):
+        _fail(source, "measure", "must be a table with names = [...]")
+    names = data["measures"] if "measures" in data else table.get("names", list(default))
+    where = "measures" if "measures" in data else "measure.names"
+    extra = {k: v for k, v in table.items() if k != "names"}
     if isinstance(names, str):
         names = [names]
     if not isinstance(names, (list, tuple)) or not names or not all(isinstance(n, str) for n in names):
