@@ -421,19 +421,15 @@ class _Validator:
         return tuple(vec)
 
     def initial(self, t) -> Initial:
-        alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
-        beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
-        gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
+        alpha, beta, gamma = (self.number(t, "initial", k, None, "a finite number (rad)")
+                              for k in ("alpha", "beta", "gamma"))
         rates_given = any(k in t for k in _RATES)
         both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
         if rates_given and "omega" in t:
             self.fail("initial", both + ", not both")
         if rates_given:
             # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
-            must = "a finite number (rad/s)"
-            ad = self.number(t, "initial", "alpha_dot", None, must, 0.0)
-            bd = self.number(t, "initial", "beta_dot", None, must, 0.0)
-            gd = self.number(t, "initial", "gamma_dot", None, must, 0.0)
+            ad, bd, gd = (self.number(t, "initial", k, None, "a finite number (rad/s)", 0.0) for k in _RATES)
             return Initial(alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
                         gamma_dot=gd, omega=body_omega(beta, gamma, ad, bd, gd))
         if "omega" not in t:
