@@ -150,5 +150,3 @@ def test_the_fixed_cost_race_times_a_repeat_and_new_numbers_and_reports_both():
     fake = dict(out, heyoka=1e-5, prepared_vs_heyoka=1.0, simulate_vs_heyoka=2.0, simulate_new_vs_heyoka=3.0)
     text = "\n".join(report.peers_section({"targets": {"peers": {"peers": ["heyoka"], "fixed_cost": fake}}}))
     assert "new numbers" in text and "**3×**" in text and "**2×**" in text
-    older = {k: v for k, v in fake.items() if "new" not in k}  # results of an older bench
-    assert "new numbers" not in "\n".join(report.peers_section({"targets": {"peers": {"fixed_cost": older}}}))

@@ -431,13 +431,6 @@ def families(peers: bool = True) -> list[str]:
     """The contender families to run: SciPy always; casadi, pydy, heyoka, numbalsoda when asked
     and installed."""
     have = peers_available() if peers else {}
-    out = ["scipy"]
-    if have.get("casadi"):
-        out.append("casadi")
-    if have.get("pydy") and have.get("cython"):
-        out.append("pydy")
-    if have.get("heyoka"):
-        out.append("heyoka")
-    if have.get("numbalsoda") and have.get("numba"):
-        out.append("numbalsoda")
-    return out
+    needs = {"casadi": ("casadi",), "pydy": ("pydy", "cython"), "heyoka": ("heyoka",),
+             "numbalsoda": ("numbalsoda", "numba")}
+    return ["scipy"] + [fam for fam, names in needs.items() if all(have.get(n) for n in names)]

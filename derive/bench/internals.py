@@ -69,14 +69,9 @@ class KernelCase:
     rtol: float
     atol: float
 
-    def solve(self, method: str = "dop853"):
-        """The C solve alone: states at the output times."""
-        return self.kernel.solve(method, self.y0, self.p, self.t, rtol=self.rtol, atol=self.atol)
-
 
 def kernel_case(scene, formulation: str | None = None, **overrides) -> KernelCase:
     """The kernel `simulate` would run for ``scene`` (path or dict), with its inputs."""
-
     sc = load_scene(scene, **overrides)
     form = formulation or auto.model_key(sc)[0]
     desc = catalogue.describe((form, sc.symmetric, sc.effects))
@@ -101,24 +96,20 @@ def own_batch_call(scenes):
     ``simulate_batch`` costs without its Python. The batch's own plan
     (:func:`derive.sim.batch.batch_plan`: its method, first formulation, inputs and
     parameters) and its driver: a Taylor method's full-grid lanes where the batch takes them
-    (:meth:`ModelKernel.full_lanes`). (This took the method of the first scene alone before:
-    DOP853 where the batch ran Taylor.)"""
-
+    (:meth:`ModelKernel.full_lanes`)."""
     bp = batch.batch_plan(scenes)
     formulation, pole_check = bp.candidates[0]
     desc, kernel, args = bp.kernel(formulation)
     inputs, ps, t = bp.inputs, bp.params(desc), bp.t
     lanes = kernel.full_lanes(len(bp.scenes))
-    if lanes is not None:
-        return lambda: lanes.simulate_batch(inputs, ps, t, args, pole_check, lanes=True)
-    return lambda: kernel.simulate_batch(inputs, ps, t, args, pole_check)
+    k = lanes or kernel
+    return lambda: k.simulate_batch(inputs, ps, t, args, pole_check, lanes=lanes is not None)
 
 
 def output_map_call(scene):
     """A callable running the compiled output map (``<model>_outputs_at``: every output at every
     sample) on the states ``simulate`` integrated for ``scene``: what of ``simulate``'s C call is
     not the integration."""
-
     sc = load_scene(scene)
     formulation, pole_check = auto.plan(sc)[0]
     desc = catalogue.describe((formulation, sc.symmetric, sc.effects))
@@ -133,7 +124,6 @@ def output_map_call(scene):
 
 def heavy_top_expressions():
     """(states, params, rhs) of the contract's heavy top (generated/c/heavy_top.c) as SymPy."""
-
     m = models.CATALOGUE["heavy_top"]()
     return tuple(m.states), tuple(m.params), tuple(m.rhs)
 

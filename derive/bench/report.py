@@ -88,12 +88,16 @@ def _cell(what: str, value) -> str:
     return f"{value:.0%}" if "scaling" in what else f"{value:.3g}×"
 
 
+def _targets_table(t: dict) -> list[str]:
+    """The targets' table: what, goal, the measured value and whether it is met."""
+    return ["| target | goal | measured | |", "|---|---|---|---|"] + [
+        f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |"
+        for what, goal, value, ok in T.summary(t)]
+
+
 def targets_section(results: dict) -> list[str]:
     t = results["targets"]
-    L = ["## Targets, measured side by side in this run", "",
-         "| target | goal | measured | |", "|---|---|---|---|"]
-    for what, goal, value, ok in T.summary(t):
-        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+    L = ["## Targets, measured side by side in this run", "", *_targets_table(t)]
     L += ["", "(stronger baseline): no goal was set against it; reported because `odeint` — LSODA whose "
           "stepping loop is Fortran, not Python — is the cheapest way SciPy offers to integrate a Python rhs.", ""]
     for key in ("reference", "fixed_cost", "batch", "processes", "lambdify", "sweeps"):
@@ -254,10 +258,8 @@ def peers_section(results: dict) -> list[str]:
         final = (f"`derive.simulate_batch(scenes, outputs=\"final\")` (the last sample of every output only) "
                  f"{_t(ba['derive_final_per_trajectory'])} per trajectory against heyoka's `propagate_until` "
                  f"t_end (final states only) {_t(ba['heyoka_final_per_trajectory'])}: "
-                 f"**{ba['ratio_final_vs_final']:.3g}×**; " if "derive_final_per_trajectory" in ba else "")
-        if "ratio_prepared_final_vs_final" in ba:
-            final += (f"as arrays, `derive.prepare(scene).run_batch(initial=...)` "
-                      f"{_t(ba['derive_prepared_final_per_trajectory'])}: **{ba['ratio_prepared_final_vs_final']:.3g}×**; ")
+                 f"**{ba['ratio_final_vs_final']:.3g}×**; as arrays, `derive.prepare(scene).run_batch(initial=...)` "
+                 f"{_t(ba['derive_prepared_final_per_trajectory'])}: **{ba['ratio_prepared_final_vs_final']:.3g}×**; ")
         L += [f"### Batch of {ba['n']} variants of the reference scene (t ∈ [0, {ba['t_end']:g}])", "",
               f"derive at rtol {ba['rtol']:g} (error {_e(ba['derive_error'])} on the reference scene), heyoka's "
               f"batch mode (`taylor_adaptive_batch`, {ba['lanes']} SIMD lanes, one trajectory per lane) at tol "
@@ -265,32 +267,27 @@ def peers_section(results: dict) -> list[str]:
               + f"`derive.simulate_batch(scenes)` (every output at all {ba['samples']} samples) "
               f"{_t(ba['derive_full_per_trajectory'])} against heyoka's `propagate_grid` (the states at every sample) "
               f"{_t(ba['heyoka_grid_per_trajectory'])}: **{ba['ratio_full_vs_grid']:.3g}×**"
-              + (f"; the axis alone at every sample, `derive.prepare(scene).run_batch(initial=..., "
-                 f"outputs=(\"axis\",))`, {_t(ba['derive_prepared_axis_per_trajectory'])}: "
-                 f"**{ba['ratio_prepared_axis_vs_grid']:.3g}×** heyoka's states, "
-                 f"**{ba['ratio_prepared_axis_vs_grid_axis']:.3g}×** its states and the axis computed from them "
-                 f"with NumPy ({_t(ba['heyoka_grid_axis_per_trajectory'])})"
-                 if "ratio_prepared_axis_vs_grid" in ba else "")
-              + (f"; the states alone at every sample (derive's formulation's, heyoka's equations'), "
-                 f"`outputs=(\"state\",)`, {_t(ba['derive_prepared_state_per_trajectory'])}: "
-                 f"**{ba['ratio_prepared_state_vs_grid']:.3g}×**"
-                 if "ratio_prepared_state_vs_grid" in ba else "")
+              + f"; the axis alone at every sample, `derive.prepare(scene).run_batch(initial=..., "
+                f"outputs=(\"axis\",))`, {_t(ba['derive_prepared_axis_per_trajectory'])}: "
+                f"**{ba['ratio_prepared_axis_vs_grid']:.3g}×** heyoka's states, "
+                f"**{ba['ratio_prepared_axis_vs_grid_axis']:.3g}×** its states and the axis computed from them "
+                f"with NumPy ({_t(ba['heyoka_grid_axis_per_trajectory'])})"
+                f"; the states alone at every sample (derive's formulation's, heyoka's equations'), "
+                f"`outputs=(\"state\",)`, {_t(ba['derive_prepared_state_per_trajectory'])}: "
+                f"**{ba['ratio_prepared_state_vs_grid']:.3g}×**"
               + f". The final axes of the two agree to {_e(ba['final_axis_difference'])}." + _lanes_line(ba), ""]
     fc = pe.get("fixed_cost") or {}
     if "error" in fc:
         L += [f"- fixed cost: not measured ({fc['error']})", ""]
     elif fc:
-        new = "derive_simulate_new" in fc  # (results of a bench without the figure: not shown)
         peers = "; ".join(f"{FAMILY_NAMES[f]} {_t(fc[f])}: prepared / it **{fc[f'prepared_vs_{f}']:.3g}×**, "
-                          f"simulate / it **{fc[f'simulate_vs_{f}']:.3g}×**"
-                          + (f", simulate of new numbers / it **{fc[f'simulate_new_vs_{f}']:.3g}×**" if new else "")
-                          for f in ("heyoka", "numbalsoda") if f in fc)
+                          f"simulate / it **{fc[f'simulate_vs_{f}']:.3g}×**, simulate of new numbers / it "
+                          f"**{fc[f'simulate_new_vs_{f}']:.3g}×**" for f in ("heyoka", "numbalsoda") if f in fc)
         L += [f"### Fixed cost (t_end = 1e-3, 2 samples, rtol {fc['rtol']:g})", "",
               f"`derive.prepare(dict).run()` {_t(fc['derive_prepared'])}, `derive.simulate(dict)` "
               f"{_t(fc['derive_simulate'])} (the same scene again: validated, its plan kept from the call before)"
-              + (f" and {_t(fc['derive_simulate_new'])} (a scene with new numbers every call: validated, planned "
-                 "and its C call set up anew)" if new else "")
-              + f"; {peers}. heyoka's call: reset time, state and parameters, "
+              f" and {_t(fc['derive_simulate_new'])} (a scene with new numbers every call: validated, planned "
+              f"and its C call set up anew); {peers}. heyoka's call: reset time, state and parameters, "
               "`propagate_grid` over the two times; numbalsoda's: `dop853` over them.", ""]
     return L
 
@@ -435,9 +432,7 @@ def summary(results: dict) -> str:
     cmd = "make bench" if cfg["name"] == "full" else f"derive bench --{cfg['name']}"
     L = [f"From one `{cmd}` run ({results['elapsed']:.0f} s; {m['cpu']}, {m['cores']} cores, load average "
          f"{la[0]:.2f} at the start; commit {m['commit']}; versions in the full report).", "",
-         "| target | goal | measured | |", "|---|---|---|---|"]
-    for what, goal, value, ok in T.summary(results["targets"]):
-        L.append(f"| {what} | {goal} | {_cell(what, value)} | {_verdict(ok) if goal[0] in '≤≥' else ''} |")
+         *_targets_table(results["targets"])]
     c = results["c_loop"][-1]
     L += ["", f"Generated C `heavy_top_rhs` {c['generated_ns']:.1f} ns/call against the same equations typed "
           f"by hand {c['handwritten_ns']:.1f} ns/call ({c['ratio']:.2f}×, `{c['flags']}`).", "",

@@ -46,24 +46,19 @@ from pathlib import Path
 
 import numpy as np
 
+import derive
 from derive.bench import contenders as bc
+from derive.bench import internals as bi
 from derive.bench.timing import per_call, timed
-from derive.codegen.render import CHECKOUT
+from derive.codegen.render import CHECKOUT, GENERATED
 from derive.errors import IntegrationError
 from derive.methods.registry import compiled_methods, tolerance_driven
-from derive.sim import examples
-from derive.sim.scene import FIXED_STEP_METHODS, MIN_RTOL
-from derive.sim.scene import FORMULATIONS
-import derive
 from derive.reference import exact
-from derive.codegen.render import GENERATED
-from derive.runtime.cbuild import check_compiles
-from derive.bench import internals as bi
-from derive.runtime.cbuild import compiler
+from derive.reference.rotation import euler_matrix
+from derive.runtime.cbuild import check_compiles, compiler
+from derive.sim import examples
+from derive.sim.scene import FIXED_STEP_METHODS, FORMULATIONS, MIN_RTOL
 
-#: The source checkout (for the commit the report names), or None when installed.
-REPO = CHECKOUT
-BENCH_SOURCES = bc.BENCH_SOURCES
 SCENES = examples.SCENES
 
 #: Error levels at which the cost of each contender's best method is compared with ours.
@@ -93,11 +88,7 @@ WP_SCENES = {
 
 def our_formulations() -> tuple[str, ...]:
     """Every formulation a scene can ask for (the scene format's registry), "auto" excluded."""
-    try:
-
-        return tuple(f for f in FORMULATIONS if f != "auto")
-    except ImportError:
-        return ("reduced", "euler-angles", "quaternion")
+    return tuple(f for f in FORMULATIONS if f != "auto")
 
 
 HEAVY_TOP_PARAMS = np.array([1.8e-4, 4.0e-5, 0.1, 9.81, 0.04])  # (I1, I3, M, g, l) of the scenes' top
@@ -240,14 +231,6 @@ def match_tolerance(solve, target: float, rtol0: float = 1e-10) -> dict:
 # reference solutions
 
 
-def _rotation(a: float, b: float, c: float) -> np.ndarray:
-    """R = Rz(α) Ry(β) Rz(γ): body components -> inertial components."""
-    def rz(x):
-        return np.array([[np.cos(x), -np.sin(x), 0.0], [np.sin(x), np.cos(x), 0.0], [0.0, 0.0, 1.0]])
-    ry = np.array([[np.cos(b), 0.0, np.sin(b)], [0.0, 1.0, 0.0], [-np.sin(b), 0.0, np.cos(b)]])
-    return rz(a) @ ry @ rz(c)
-
-
 def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
     """ê₃(t) from `derive.reference.exact` for scene data (`bench_contenders.scene_data`), or None when
     the scene has no closed form (damping, or an asymmetric heavy body)."""
@@ -263,7 +246,7 @@ def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
         rates = [float(init.get(k, 0.0)) for k in ("alpha_dot", "beta_dot", "gamma_dot")]
     w0 = np.array(b.body_rates(be, ga, *rates) if rates is not None else list(map(float, init["omega"])))
     if grav is None:
-        R0 = _rotation(a, be, ga)
+        R0 = euler_matrix(a, be, ga)
         sol = (exact.free_symmetric(I1, I3, w0, t, R0=R0) if I2 == I1
                else exact.free_asymmetric(I1, I2, I3, w0, t, R0=R0))
     elif I2 == I1:
@@ -330,7 +313,7 @@ def c_loop(cfg: Settings) -> list[dict]:
     """ns/call of generated, hand-written and no-op rhs per flag set (one run each)."""
     sources = _generated_heavy_top()
     for name in ("handwritten_heavy_top.c", "noop_rhs.c", "rhs_loop.c"):
-        sources[name] = (BENCH_SOURCES / name).read_text()
+        sources[name] = (bc.BENCH_SOURCES / name).read_text()
     rows = []
     with tempfile.TemporaryDirectory(prefix="derive-bench-") as tmp:
         for flags in cfg.c_flags:
@@ -375,7 +358,6 @@ def generated_numpy(name: str = "heavy_top"):
     """The committed generated/numpy/<name>.py as a module."""
     import importlib.util
 
-
     spec = importlib.util.spec_from_file_location(f"derive_bench_generated_{name}", GENERATED / "numpy" / f"{name}.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
@@ -407,7 +389,6 @@ def python_calls(cfg: Settings, fams=("scipy",)) -> dict:
            "numpy_us": per_call(lambda: mod.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6,
            "ctypes_us": None}
     try:
-
         kc = bi.kernel_case(SCENES / "looping_top.toml", "euler-angles")
         out["ctypes_us"] = per_call(lambda: kc.kernel.rhs(0.0, y, HEAVY_TOP_PARAMS), cfg.python_calls) * 1e6
     except Exception as exc:  # noqa: BLE001 - an internal moved: report, don't fail the bench
@@ -484,7 +465,6 @@ def machine() -> dict:
     except OSError:
         pass
     try:
-
         cc = subprocess.run([*compiler(), "--version"], capture_output=True, text=True).stdout.splitlines()[0]
     except (OSError, IndexError):
         cc = "?"
@@ -493,7 +473,7 @@ def machine() -> dict:
 
     versions = {"python": platform.python_version(), "numpy": np.__version__, "scipy": scipy.__version__,
                 "sympy": sympy.__version__}
-    versions.update({k: v for k, v in bc.peers_available().items()})
+    versions.update(bc.peers_available())
     try:
         from importlib.metadata import version
 
@@ -501,8 +481,8 @@ def machine() -> dict:
     except Exception:  # noqa: BLE001
         versions["derive"] = "?"
     try:
-        commit = "?" if REPO is None else subprocess.run(
-            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, cwd=REPO).stdout.strip() or "?"
+        commit = "?" if CHECKOUT is None else subprocess.run(  # the source checkout, else installed
+            ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, cwd=CHECKOUT).stdout.strip() or "?"
     except OSError:
         commit = "?"
     return {"cpu": cpu, "cores": os.cpu_count(), "compiler": cc, "platform": platform.platform(),

@@ -101,23 +101,19 @@ _match = B.match_tolerance
 
 
 def reference_scene(cfg, fams) -> dict:
-
     data = reference_data(cfg.ref_t_end)
     rtol = data["simulate"]["rtol"]
     t = np.linspace(0.0, data["simulate"]["t_end"], data["simulate"]["samples"])
     ref = B.exact_axis(data, t)
-    derive.simulate(data)  # derive, compile (or load) once: the timing is of a warm call
     ours_call = lambda: derive.simulate(data)  # noqa: E731
-    res = ours_call()
+    res = ours_call()  # derive, compile (or load) once: the timing is of a warm call
     # The same call's C alone (init, solve, outputs; inputs prepared): the ratio's ceiling; and
     # the output map alone, its share of that C. Timed in turns with the whole call, so that
     # their differences mean something.
     parts, errors = {}, {}
-    for key, make in (("own_call", "own_batch_call"), ("output_map", "output_map_call")):
+    for key, make, arg in (("own_call", bi.own_batch_call, [data]), ("output_map", bi.output_map_call, data)):
         try:
-
-            arg = [data] if key == "own_call" else data
-            parts[key] = getattr(bi, make)(arg)
+            parts[key] = make(arg)
         except Exception as exc:  # noqa: BLE001
             errors[f"{key}_error"] = f"{type(exc).__name__}: {exc}"
     own_call = parts.get("own_call")
@@ -232,7 +228,6 @@ def phases(cfg) -> dict:
 
 
 def fixed_cost(cfg) -> dict:
-
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
@@ -275,7 +270,6 @@ def batch(cfg, rtols: dict) -> dict:
     # (best of three rounds each), so that a change of machine load hits all three alike.
     fns = {"time": lambda: derive.simulate_batch(scenes)}
     try:
-
         kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
         raw = lambda: kernel.solve_batch(method, y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
         raw()  # (the model kernel's solve-only loops are the Runge-Kutta methods': a Taylor batch has none)
@@ -283,7 +277,6 @@ def batch(cfg, rtols: dict) -> dict:
     except Exception as exc:  # noqa: BLE001
         out["raw_error"] = f"{type(exc).__name__}: {exc}"
     try:  # informational: simulate_batch's own C call (outputs included) without its Python
-
         fns["own_call"] = bi.own_batch_call(scenes)
     except Exception as exc:  # noqa: BLE001
         out["own_call_error"] = f"{type(exc).__name__}: {exc}"
@@ -356,7 +349,6 @@ def processes(cfg) -> dict:
 def numpy_vs_lambdify(cfg) -> dict:
     import sympy as sp
 
-
     states, params, rhs = bi.heavy_top_expressions()
     f = sp.lambdify([states, params], list(rhs), modules="numpy", cse=True)
     mod = B.generated_numpy()
@@ -393,31 +385,26 @@ def numpy_vs_lambdify(cfg) -> dict:
 def run(cfg, fams) -> dict:
     """All targets; each part guarded (a failure is reported, not raised)."""
     out = {}
-    with tqdm(total=11, desc="targets", unit="part", file=sys.stderr) as bar:
-        out["reference"] = _guard("reference scene", reference_scene, cfg, fams)
-        bar.update()
-        out["phases"] = _guard("phases", phases, cfg) if cfg.process_repeats else {}
-        bar.update()
-        out["fixed_cost"] = _guard("fixed cost", fixed_cost, cfg)
-        bar.update()
-        rtols = {r["method"]: r["rtol"] for r in out["reference"].get("rows", [])
-                 if r["family"] == "scipy" and r["reached"] is not False}
-        out["batch"] = _guard("batch", batch, cfg, rtols)
-        bar.update()
-        out["processes"] = _guard("processes", processes, cfg) if cfg.process_repeats else {}
-        bar.update()
-        out["lambdify"] = _guard("lambdify", numpy_vs_lambdify, cfg)
-        bar.update()
-        out["sweeps"] = _guard("sweeps", sweeps, cfg)
-        bar.update()
-        out["peers"] = _guard("peers", bench_peers.run, cfg, fams, batch_scenes)
-        bar.update()
-        out["own_body"] = _guard("own body", own_body, cfg)
-        bar.update()
-        out["auto_choice"] = _guard("auto choice", auto_choice, cfg)
-        bar.update()
-        out["tippe_top"] = _guard("tippe top vs MuJoCo", tippe_race.run, cfg)
-        bar.update()
+
+    def rtols():  # the SciPy methods' rtols that matched derive's error on the reference scene
+        return {r["method"]: r["rtol"] for r in out["reference"].get("rows", [])
+                if r["family"] == "scipy" and r["reached"] is not False}
+
+    parts = [("reference", "reference scene", lambda: reference_scene(cfg, fams)),
+             ("phases", "phases", lambda: phases(cfg) if cfg.process_repeats else {}),
+             ("fixed_cost", "fixed cost", lambda: fixed_cost(cfg)),
+             ("batch", "batch", lambda: batch(cfg, rtols())),
+             ("processes", "processes", lambda: processes(cfg) if cfg.process_repeats else {}),
+             ("lambdify", "lambdify", lambda: numpy_vs_lambdify(cfg)),
+             ("sweeps", "sweeps", lambda: sweeps(cfg)),
+             ("peers", "peers", lambda: bench_peers.run(cfg, fams, batch_scenes)),
+             ("own_body", "own body", bench_own_body),
+             ("auto_choice", "auto choice", lambda: auto_choice(cfg)),
+             ("tippe_top", "tippe top vs MuJoCo", lambda: tippe_race.run(cfg))]
+    with tqdm(total=len(parts), desc="targets", unit="part", file=sys.stderr) as bar:
+        for key, name, part in parts:
+            out[key] = _guard(name, part)
+            bar.update()
     return out
 
 
@@ -427,11 +414,6 @@ def auto_choice(cfg) -> dict:
     if cfg.name == "smoke":
         return bench_auto_choice(levels=LEVELS[:1], scenes=SCENES[:1], blocks=1)
     return bench_auto_choice(levels=LEVELS if cfg.name == "full" else LEVELS[1::2], blocks=5)
-
-
-def own_body(cfg) -> dict:
-    """The targets for user terms (:mod:`derive.bench.own_body`)."""
-    return bench_own_body()
 
 
 def sweeps(cfg) -> dict:
@@ -527,24 +509,20 @@ def peer_rows(pe: dict) -> list[tuple[str, str, float | None]]:
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch(..., outputs=\"final\")` / "
                      f"heyoka batch mode ({ba['lanes']} lanes) `propagate_until`", "dict_call",
                      ba.get("ratio_final_vs_final")))
-        if "ratio_prepared_final_vs_final" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(...)` (final states) / "
-                         f"heyoka batch mode `propagate_until`", "batch_vs_heyoka",
-                         ba.get("ratio_prepared_final_vs_final")))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(...)` (final states) / "
+                     f"heyoka batch mode `propagate_until`", "batch_vs_heyoka", ba["ratio_prepared_final_vs_final"]))
         if "ratio_prepared_lanes_vs_final" in ba:
             rows.append((f"batch of {ba['n']}, per trajectory, Taylor: `derive.prepare(...).run_batch(...)` "
                          f"(final, SIMD lanes) / heyoka batch `propagate_until` at equal error", "batch_vs_heyoka",
                          ba.get("ratio_prepared_lanes_vs_final")))
         rows.append((f"batch of {ba['n']}, per trajectory: `derive.simulate_batch` (every output, {ba['samples']} "
                      f"samples) / heyoka batch `propagate_grid`", "dict_call", ba.get("ratio_full_vs_grid")))
-        if "ratio_prepared_axis_vs_grid" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
-                         f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
-                         "batch_vs_heyoka", ba.get("ratio_prepared_axis_vs_grid")))
-        if "ratio_prepared_state_vs_grid" in ba:
-            rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"state\",))` "
-                         f"(the states at {ba['samples']} samples) / heyoka `propagate_grid` (its states)",
-                         "batch_vs_heyoka", ba.get("ratio_prepared_state_vs_grid")))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"axis\",))` "
+                     f"(the axis at {ba['samples']} samples) / heyoka `propagate_grid` (the states, no axis)",
+                     "batch_vs_heyoka", ba["ratio_prepared_axis_vs_grid"]))
+        rows.append((f"batch of {ba['n']}, per trajectory: `derive.prepare(...).run_batch(..., outputs=(\"state\",))` "
+                     f"(the states at {ba['samples']} samples) / heyoka `propagate_grid` (its states)",
+                     "batch_vs_heyoka", ba["ratio_prepared_state_vs_grid"]))
     fc = pe.get("fixed_cost") or {}
     if "prepared_vs_heyoka" in fc:
         rows.append(("fixed cost (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / heyoka",

@@ -25,15 +25,7 @@ def timed(fn, repeats: int, long_run: float = math.inf, min_total: float = 0.0):
 
 def per_call(fn, calls: int, blocks: int = 7) -> float:
     """Median over ``blocks`` blocks of the mean time of one call (s)."""
-    n = max(1, calls // blocks)
-    fn()
-    out = []
-    for _ in range(blocks):
-        t0 = time.perf_counter()
-        for _ in range(n):
-            fn()
-        out.append((time.perf_counter() - t0) / n)
-    return statistics.median(out)
+    return interleaved([fn], calls, blocks)[0]
 
 
 def best_in_turns(fns: dict, rounds: int) -> dict:

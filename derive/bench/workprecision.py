@@ -91,8 +91,8 @@ def sweep_ours(name: str, path: Path, ref: Reference, formulation: str, method: 
     None when the scene refuses the method in this formulation (e.g. a splitting needs
     Euler–Poisson variables and conservative effects)."""
     over = dict(cfg.scene_overrides, formulation=formulation, method=method)
-    t_end = float(cfg.scene_overrides.get("t_end", 0) or _scene_simulate(path)["t_end"])
-    samples = int(cfg.scene_overrides.get("samples", 0) or _scene_simulate(path).get("samples", 1001))
+    sim = dict(bc.scene_data(path)["simulate"], **cfg.scene_overrides)
+    t_end, samples = float(sim["t_end"]), int(sim.get("samples", 1001))
     dt_out = t_end / (samples - 1)
     try:  # derive and compile this formulation's model and method outside the timing
         if method in FIXED:
@@ -147,10 +147,6 @@ def sweep_contender(name: str, prob: bc.Problem, ref: Reference, family: str, me
         if pt.ok and pt.time > cfg.cap:
             break
     return Curve(family, method, prob.formulation, points)
-
-
-def _scene_simulate(path: Path) -> dict:
-    return bc.scene_data(path)["simulate"]
 
 
 def cost_at(points: list[Point], level: float):

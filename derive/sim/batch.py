@@ -171,14 +171,37 @@ def _run_final(bp, desc, kernel, args, pole_check, driver, names):
     if (st["status"] == _RANGE).any():
         return True, st, 0
     bp.raise_failure(desc, st)
+    arrays = _arrays(names, len(y), 1, y.shape[1], True)
+    _fill(arrays, slice(None), out[:, :, None], y[:, None], True)
+    return False, arrays, st["nfev"].astype(np.int64)
+
+
+def _arrays(names, nb: int, n: int, ny: int, final: bool) -> dict:
+    """The arrays a batch returns: each output (N,) or (N, width), at every sample (N, n, ...)
+    unless ``final``; ``state`` (N, [n,] NY)."""
     arrays = {}
     for name in names:
+        width = ny if name == "state" else _WIDTH[name]
+        shape = (nb,) + (() if final else (n,)) + (() if width == 1 and name != "state" else (width,))
+        arrays[name] = np.empty(shape)
+    return arrays
+
+
+def _fill(arrays: dict, rows: slice, out: np.ndarray, y: np.ndarray, final: bool) -> None:
+    """Copy trajectories ``rows`` of the driver's outputs ``out`` (N, NOBS, n) and states ``y``
+    (N, n, NY) into ``arrays`` (:func:`_arrays`): every sample, or the last (``final``)."""
+    k = slice(None) if not final else -1
+    for name, dest in arrays.items():
         if name == "state":
-            arrays[name] = y
+            dest[rows] = y[:, k]
             continue
         o, width = _OFFSET[name], _WIDTH[name]
-        arrays[name] = out[:, o].copy() if width == 1 else out[:, o:o + width].copy()
-    return False, arrays, st["nfev"].astype(np.int64)
+        if width == 1:
+            dest[rows] = out[:, o, k]
+        elif final:
+            dest[rows] = out[:, o:o + width, -1]
+        else:  # the driver writes (NOBS, n) per trajectory: a wide output is (width, n)
+            dest[rows] = np.swapaxes(out[:, o:o + width], 1, 2)
 
 
 def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
@@ -194,11 +217,7 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
     if lanes:  # (a chunk's last lanes idle while its last trajectories run)
         chunk = min(nb, max(kernel.lanes, chunk // kernel.lanes * kernel.lanes))
     work = (np.empty((chunk, nout, n)), np.empty((chunk, n, ny)))
-    arrays = {}
-    for name in names:
-        width = ny if name == "state" else _WIDTH[name]
-        shape = (nb,) + (() if final else (n,)) + (() if width == 1 and name != "state" else (width,))
-        arrays[name] = np.empty(shape)
+    arrays = _arrays(names, nb, n, ny, final)
     nfev = np.empty(nb, dtype=np.int64)
     rtol = scs[0].simulate.rtol
     pole_error = None
@@ -220,18 +239,7 @@ def _run(bp, desc, kernel, args, pole_check, final, names, lanes=False):
                 except IntegrationError as exc:  # kept until every chunk ran
                     pole_error = exc
                     break
-        k = slice(None) if not final else -1
-        for name, dest in arrays.items():
-            if name == "state":
-                dest[s:e] = y[:, k]
-                continue
-            o, width = _OFFSET[name], _WIDTH[name]
-            if width == 1:
-                dest[s:e] = out[:, o, k]
-            elif final:
-                dest[s:e] = out[:, o:o + width, -1]
-            else:  # the driver writes (NOBS, n) per trajectory: a wide output is (width, n)
-                dest[s:e] = np.swapaxes(out[:, o:o + width], 1, 2)
+        _fill(arrays, slice(s, e), out, y, final)
     if pole_error is not None:
         raise pole_error
     return False, arrays, nfev
@@ -246,12 +254,9 @@ def batch_results(bp: "BatchPlan") -> list[Result]:
     scs, t, method = bp.scenes, bp.t, bp.method
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
-        ps = bp.params(desc)
         lanes = kernel.full_lanes(len(scs))  # a Taylor method's trajectories W at a time
-        if lanes is not None:
-            out, y, ps, st = lanes.simulate_batch(bp.inputs, ps, t, args, pole_check, lanes=True)
-        else:
-            out, y, ps, st = kernel.simulate_batch(bp.inputs, ps, t, args, pole_check)
+        out, y, ps, st = (lanes or kernel).simulate_batch(bp.inputs, bp.params(desc), t, args, pole_check,
+                                                          lanes=lanes is not None)
         if not (st["status"] == Status.RANGE).any():
             break
     bp.raise_failure(desc, st)

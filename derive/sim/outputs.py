@@ -28,6 +28,7 @@ it can be (setting it to read it is process-wide, so that fallback happens under
 """
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import stat
@@ -65,11 +66,6 @@ def umask() -> int:
     return mask
 
 
-def new_file_mode() -> int:
-    """The permission bits ``open(path, "w")`` would give a new file."""
-    return 0o666 & ~umask()
-
-
 def _target(path: str | os.PathLike) -> Path:
     """Where ``path`` really is: a symlink is followed, so the file it points to is replaced
     (not the link); the path's own parent otherwise."""
@@ -77,18 +73,14 @@ def _target(path: str | os.PathLike) -> Path:
     return Path(os.path.realpath(p)) if p.is_symlink() else p
 
 
+_WHY = {errno.EROFS: "read-only file system", errno.EACCES: "permission denied",
+        errno.EPERM: "permission denied", errno.ENOSPC: "no space left on device",
+        errno.EDQUOT: "disk quota exceeded",
+        errno.ENOENT: "the file system takes no new files there"}  # e.g. /proc
+
+
 def _why(err: OSError) -> str:
-    if err.errno == errno.EROFS:
-        return "read-only file system"
-    if err.errno in (errno.EACCES, errno.EPERM):
-        return "permission denied"
-    if err.errno == errno.ENOSPC:
-        return "no space left on device"
-    if err.errno == errno.EDQUOT:
-        return "disk quota exceeded"
-    if err.errno == errno.ENOENT:  # e.g. /proc: the folder is there but takes no new files
-        return "the file system takes no new files there"
-    return err.strerror or str(err)
+    return _WHY.get(err.errno) or err.strerror or str(err)
 
 
 class _File:
@@ -215,7 +207,7 @@ def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:
     computed from) or the same file as another output is a SceneError (see ``check_paths``).
     """
     _check_clashes([_name_of(p) for p in outputs], inputs)
-    mode = new_file_mode()
+    mode = 0o666 & ~umask()  # what open(path, "w") would give a new file
     staged: list[tuple[str, Path, str]] = []  # (name, target, temporary)
     try:
         for path, writer in outputs.items():
@@ -237,10 +229,8 @@ def write_all(outputs: Mapping[str | os.PathLike, Writer], inputs=()) -> None:
         _commit(staged)
     except BaseException:
         for _, _, tmp in staged:
-            try:
+            with contextlib.suppress(FileNotFoundError):
                 os.unlink(tmp)
-            except FileNotFoundError:
-                pass
         raise
 
 
@@ -265,20 +255,33 @@ def _commit(staged: list[tuple[str, Path, str]]) -> None:
             done.append((target, existed, backup))
     except BaseException:
         for target, existed, backup in reversed(done):
-            try:
+            with contextlib.suppress(OSError):
                 if backup is not None:
                     os.replace(backup, target)
                 elif not existed:
                     os.unlink(target)
-            except OSError:
-                pass
         raise
     finally:
         for backup in backups:
-            try:
+            with contextlib.suppress(FileNotFoundError):
                 os.unlink(backup)
-            except FileNotFoundError:
-                pass
+
+
+def write_data_and_plot(data, data_writers: Mapping[str, Writer], formats: Mapping[str, str], plot,
+                        plot_writer, inputs=()) -> None:
+    """Write a command's table or arrays (``data``: ``-o``) and its figure (``plot``:
+    ``--plot``; either None when not asked for), each in the format its extension names
+    (``data_writers``: format -> writer, among ``formats``; ``plot_writer(fmt)`` -> writer),
+    all or nothing (:func:`write_all`); neither may be one of ``inputs`` (checked first: a
+    clash with an input is what matters most), and another extension is refused before
+    anything is written."""
+    check_paths([data, plot], inputs=inputs)
+    data_format = output_format(data, "-o", formats) if data else None
+    plot_format = output_format(plot, "--plot", PLOT_FORMATS) if plot else None
+    writers = {data: data_writers[data_format]} if data_format else {}
+    if plot_format:
+        writers[plot] = plot_writer(plot_format)
+    write_all(writers, inputs=inputs)
 
 
 def output_format(path, flag: str, formats: Mapping[str, str]) -> str | None:
@@ -305,10 +308,18 @@ def output_format(path, flag: str, formats: Mapping[str, str]) -> str | None:
 INERTIAL_VECTORS = ("axis",)
 
 
-def csv_columns(arrays: Mapping[str, object]) -> tuple[list[str], list, dict[str, str]]:
-    """(header, columns, metadata) of ``arrays`` as ``write_csv`` lays them out: one column per
-    1-D array and per component of an (n, k) array (``axis_x, axis_y, axis_z`` for the inertial
-    ``axis``, ``omega1, omega2, omega3`` for a body vector); 0-d arrays are the metadata."""
+def write_csv(fh, arrays: Mapping[str, object]) -> None:
+    """Write ``arrays`` (name -> array, as in the .npz) to the binary file ``fh`` as CSV.
+
+    Layout: first the metadata (the 0-d arrays), one comment line ``# <name>: <value>`` each;
+    then one header row; then one row per sample, a column per 1-D array and per component of
+    an (n, k) array (``axis_x, axis_y, axis_z`` for the inertial ``axis``, ``omega1, omega2,
+    omega3`` for a body vector). Numbers are written as Python's ``repr`` of the double, the
+    shortest text that reads back to the same bits. Read it with ``pandas.read_csv(path,
+    comment="#")``, or with NumPy skipping the comment lines (three for a `derive simulate`
+    result: method, formulation, nfev):
+    ``numpy.genfromtxt(path, delimiter=",", names=True, skip_header=3)``.
+    """
     import numpy as np
 
     header, columns, meta = [], [], {}
@@ -326,21 +337,6 @@ def csv_columns(arrays: Mapping[str, object]) -> tuple[list[str], list, dict[str
             columns += list(a.T)
         else:
             raise ValueError(f"{name}: a {a.ndim}-d array has no CSV columns")
-    return header, columns, meta
-
-
-def write_csv(fh, arrays: Mapping[str, object]) -> None:
-    """Write ``arrays`` (name -> array, as in the .npz) to the binary file ``fh`` as CSV.
-
-    Layout: first the metadata (the 0-d arrays), one comment line ``# <name>: <value>`` each;
-    then one header row; then one row per sample, a column per 1-D array and per component of
-    an (n, k) array (see :func:`csv_columns`). Numbers are written as Python's ``repr`` of the
-    double, the shortest text that reads back to the same bits. Read it with
-    ``pandas.read_csv(path, comment="#")``, or with NumPy skipping the comment lines (three for
-    a `derive simulate` result: method, formulation, nfev):
-    ``numpy.genfromtxt(path, delimiter=",", names=True, skip_header=3)``.
-    """
-    header, columns, meta = csv_columns(arrays)
     lines = [f"# {k}: {' '.join(v.split())}" for k, v in meta.items()]
     lines.append(",".join(header))
     rows = zip(*(c.tolist() for c in columns))

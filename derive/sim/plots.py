@@ -63,52 +63,47 @@ def _matplotlib():
     return plt, ticker
 
 
-class _PlainFormatterBase:
-    """Mixin body of `PlainFormatter` (the class is made once matplotlib is imported)."""
-
-    def set_locs(self, locs):
-        self._ticks = [float(v) for v in locs]
-
-    def __call__(self, x, pos=None):
-        locs = [v for v in getattr(self, "_ticks", []) if np.isfinite(v)] or [x]
-        steps = np.diff(sorted(set(locs)))
-        step = float(np.min(steps)) if steps.size else abs(x) or 1.0
-        if x == 0 or abs(x) < 1e-9 * step:  # a tick at zero (up to round-off of the locator)
-            return "0"
-        big = max(abs(v) for v in locs)
-        fixed = 1e-3 <= big < 1e5
-        lead = -math.floor(math.log10(step) + 1e-9)  # decimals of the tick spacing's first digit
-        if not fixed:
-            lead += math.floor(math.log10(big))
-        # The fewest digits that print every tick exactly (a spacing of 2.5 needs one decimal).
-        for digits in range(max(0, lead), max(0, lead) + 6):
-            fmt = f"{{:.{digits}{'f' if fixed else 'e'}}}"
-            if all(abs(float(fmt.format(v)) - v) <= 1e-3 * step for v in locs):
-                break
-        text = fmt.format(x)
-        if not fixed:
-            mant, exp = text.split("e")
-            text = f"{mant}e{int(exp)}"
-        return text
-
-    def get_offset(self):
-        return ""
+def _plain_label(x: float, ticks) -> str:
+    """The label of tick ``x`` among ``ticks``: in full, the fewest digits that tell them apart."""
+    locs = [float(v) for v in ticks if np.isfinite(v)] or [x]
+    steps = np.diff(sorted(set(locs)))
+    step = float(np.min(steps)) if steps.size else abs(x) or 1.0
+    if x == 0 or abs(x) < 1e-9 * step:  # a tick at zero (up to round-off of the locator)
+        return "0"
+    big = max(abs(v) for v in locs)
+    fixed = 1e-3 <= big < 1e5
+    lead = -math.floor(math.log10(step) + 1e-9)  # decimals of the tick spacing's first digit
+    if not fixed:
+        lead += math.floor(math.log10(big))
+    # The fewest digits that print every tick exactly (a spacing of 2.5 needs one decimal).
+    for digits in range(max(0, lead), max(0, lead) + 6):
+        fmt = f"{{:.{digits}{'f' if fixed else 'e'}}}"
+        if all(abs(float(fmt.format(v)) - v) <= 1e-3 * step for v in locs):
+            break
+    text = fmt.format(x)
+    if not fixed:
+        mant, exp = text.split("e")
+        text = f"{mant}e{int(exp)}"
+    return text
 
 
 def plain_formatter():
     """A tick formatter without offset or common multiplier: every label is the full number."""
     _, ticker = _matplotlib()
 
-    class PlainFormatter(_PlainFormatterBase, ticker.Formatter):
-        pass
+    class PlainFormatter(ticker.Formatter):
+        def set_locs(self, locs):  # (kept here: Formatter.locs is deprecated)
+            self.ticks = list(locs)
+
+        def __call__(self, x, pos=None):
+            return _plain_label(x, getattr(self, "ticks", []))
 
     return PlainFormatter()
 
 
 def _plain(ax, axes="xy"):
     for name in axes:
-        axis = getattr(ax, f"{name}axis")
-        axis.set_major_formatter(plain_formatter())
+        getattr(ax, f"{name}axis").set_major_formatter(plain_formatter())
 
 
 def _legend_outside(ax, **kw):
@@ -235,7 +230,6 @@ def _panel_beta(ax, res):
         ax.plot(res.t, beta)
         ax.set_ylabel("β [rad]")
         ax.set_title(f"tilt β of the {axis} ê₃")
-    ax.set_xlabel("t [s]")
     _plain(ax)
 
 
@@ -286,7 +280,6 @@ def _panel_omega(ax, res):
     # Above the axes, one row: clear of the data and of the tick labels on either side.
     ax.legend(lines, [ln.get_label() for ln in lines], loc="lower left", bbox_to_anchor=(0.0, 1.0),
               ncol=len(lines), borderaxespad=0.2, fontsize=8, frameon=False, handlelength=1.5)
-    ax.set_xlabel("t [s]")
     ax.set_title("angular velocity, body frame" + ("\n(ω̃₁, ω̃₂ turn faster than the samples resolve)"
                                                    if fast else ""), fontsize=10, pad=18)
 
@@ -330,7 +323,6 @@ def _panel_energy_error(ax, res):
         # A user's torque does work: E(t) − E(0) is that work, not an error.
         E = np.asarray(res.energy, dtype=float)
         ax.plot(res.t, E - E[0], lw=1)
-        ax.set_xlabel("t [s]")
         ax.set_ylabel("E(t) − E(0) [J]")
         ax.set_title(f"work done on the body, E(t) − E(0)\n(energy not conserved: {found['why']['energy']})",
                      fontsize=10)
@@ -343,7 +335,6 @@ def _panel_energy_error(ax, res):
     rel, how, lin = _deviation(E)
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E − E(0)| " + how.format("E"), lin)
-    ax.set_xlabel("t [s]")
     ax.set_title("energy error (no damping: E is conserved)" + _zeros_note(rel), fontsize=10)
     _plain(ax, "x")
 
@@ -354,7 +345,6 @@ def _panel_energy_damped(ax, res):
     ax.plot(res.t, E, label="E(t) = T + V")
     ax.plot(res.t, W, label="W(t) = ∫₀ᵗ c|ω̃|² dt′\n(trapezoid rule on\nthe output samples)")
     ax.plot(res.t, E + W, "--", color="k", lw=1, label="E + W (= E(0))")
-    ax.set_xlabel("t [s]")
     ax.set_ylabel("energy [J]")
     ax.set_title(f"energy and work done by damping (c = {_damping_c(res):g} N m s)")
     _plain(ax)
@@ -367,7 +357,6 @@ def _panel_balance(ax, res):
     rel, how, lin = _deviation(total)
     _plot_deviation(ax, res.t, rel)
     _symlog(ax, rel, "|E + W − E(0)| " + how.format("E"), lin)
-    ax.set_xlabel("t [s]")
     ax.set_title("energy balance residual: trapezoid rule on the\noutput grid + integration error"
                  + _zeros_note(rel), fontsize=10)
     _plain(ax, "x")
@@ -395,18 +384,17 @@ def _conserved(res) -> list[tuple[str, np.ndarray]]:
 
 
 def _panel_momenta(ax, res):
-    if not _conserved(res):  # a body with user terms that conserve neither momentum
+    conserved = _conserved(res)
+    if not conserved:  # a body with user terms that conserve neither momentum
         why = _user_symmetries(res)["why"]
         for name, key in (("p_α", "p_alpha"), ("p_γ", "p_gamma")):
             ax.plot(res.t, np.asarray(getattr(res, key), dtype=float), lw=1, label=name)
-        ax.set_xlabel("t [s]")
         ax.set_ylabel("kg m²/s")
         ax.set_title(f"p_α, p_γ (not conserved: {why['p_alpha']};\n{why['p_gamma']})",
                      fontsize=10)
         _plain(ax, "x")
         _legend_outside(ax)
         return
-    conserved = _conserved(res)
     exact = [(sym, v) for sym, v in conserved if np.all(v == v[0])]
     said = ", ".join(f"{sym} = {v[0]:.10g}" for sym, v in exact)
     if len(exact) == len(conserved):
@@ -422,7 +410,6 @@ def _panel_momenta(ax, res):
         lins.append(lin)
         names.append(sym)
     _symlog(ax, np.concatenate(devs), "deviation", min(lins))
-    ax.set_xlabel("t [s]")
     ax.set_title("conserved: " + ", ".join(names) + _zeros_note(np.concatenate(devs))
                  + (f"\nexactly constant (not drawn): {said}" if exact else ""), fontsize=10)
     _plain(ax, "x")
@@ -451,12 +438,8 @@ def _panel_top(ax, res):
     ax.set_ylabel("ê₃ · ŷ")
     ax.set_title("path of ê₃, seen from above")
     _plain(ax)
-    ax.xaxis.set_major_locator(_ticker().MaxNLocator(5))
+    ax.xaxis.set_major_locator(_matplotlib()[1].MaxNLocator(5))
     _legend_outside(ax)
-
-
-def _ticker():
-    return _matplotlib()[1]
 
 
 def _sphere(ax, labels):
@@ -517,12 +500,7 @@ def _panel_polhode(ax, res):
 
 def panels(res) -> list[str]:
     """The panel names `figure` draws for this result, in order."""
-    damped = _damping_c(res) != 0.0
-    names = ["beta", "omega", "energy"]
-    if damped:
-        names.append("balance")
-    else:
-        names.append("momenta")
+    names = ["beta", "omega", "energy", "balance" if _damping_c(res) != 0.0 else "momenta"]
     # a symmetric heavy top's loops and cusps show from above; a free or asymmetric body's
     # motion is read in its own axes (the polhode)
     names += ["top", "sphere"] if _is_symmetric(res) and not _free(res) else ["sphere", "polhode"]
@@ -534,9 +512,14 @@ def _free(res) -> bool:
     return all(e.potential is None for e in effects.lookup(getattr(res, "effects", ())))
 
 
-_DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": None, "balance": _panel_balance,
+def _panel_energy(ax, res):
+    (_panel_energy_damped if _damping_c(res) != 0.0 else _panel_energy_error)(ax, res)
+
+
+_DRAW = {"beta": _panel_beta, "omega": _panel_omega, "energy": _panel_energy, "balance": _panel_balance,
          "momenta": _panel_momenta, "top": _panel_top, "sphere": _panel_sphere, "polhode": _panel_polhode}
 _3D = ("sphere", "polhode")
+_OF_TIME = ("beta", "omega", "energy", "balance", "momenta")  # panels over t: their x axis is t [s]
 COLUMNS = 3
 
 
@@ -552,10 +535,9 @@ def figure(res):
     for k, name in enumerate(names):
         ax = fig.add_subplot(rows, columns, k + 1, projection="3d" if name in _3D else None, label=name)
         before = set(fig.axes)
-        if name == "energy":
-            (_panel_energy_damped if _damping_c(res) != 0.0 else _panel_energy_error)(ax, res)
-        else:
-            _DRAW[name](ax, res)
+        if name in _OF_TIME:
+            ax.set_xlabel("t [s]")
+        _DRAW[name](ax, res)
         for extra in set(fig.axes) - before:
             extra.set_label(f"{name}:twin")
     fig.suptitle(_title(res), fontsize=12)

@@ -86,13 +86,10 @@ class Prepared:
         IntegrationError
             Numerical failure, as for :func:`derive.simulate`.
         """
+        self._check_keys(initial or {}, params or {})
         inputs = None if not initial else self._inputs(initial)
-        if params:
-            for name, value in params.items():
-                if name not in self._params:
-                    raise SceneError(f"{self.plan.scene.source}: params: unknown parameter {name!r} "
-                                     f"(the model's: {', '.join(self._params)})")
-                _finite(self.plan.scene.source, f"params.{name}", value)
+        for name, value in (params or {}).items():
+            _finite(self.plan.scene.source, f"params.{name}", value)
         return kept(simulation.run(self.plan, inputs, params), saveat)
 
     def run_batch(self, initial=None, params=None, outputs=None, saveat=None):
@@ -136,14 +133,23 @@ class Prepared:
         final, names = selection(choose(saveat, outputs, default="final"))
         return batch.run_plan(_PreparedBatch.of(self, initial or {}, params or {}), final, names)
 
-    def _inputs(self, initial) -> np.ndarray:
-        source = self.plan.scene.source
-        inputs = self.plan.inputs.copy()
-        allowed = _ANGLES + (_RATES if self._rates else ("omega",))
-        for key, value in initial.items():
+    def _check_keys(self, initial: dict, params: dict) -> None:
+        """SceneError for a key of ``initial`` of the other shape (rates for a scene given
+        ``omega``, or the reverse) or unknown, or a parameter the model does not take."""
+        source, allowed = self.plan.scene.source, _ANGLES + (_RATES if self._rates else ("omega",))
+        for key in initial:
             if key not in allowed:
                 raise SceneError(f"{source}: initial.{key}: not a key this prepared scene takes "
                                  f"(it takes {', '.join(allowed)})")
+        for name in params:
+            if name not in self._params:
+                raise SceneError(f"{source}: params: unknown parameter {name!r} "
+                                 f"(the model's: {', '.join(self._params)})")
+
+    def _inputs(self, initial) -> np.ndarray:
+        source = self.plan.scene.source
+        inputs = self.plan.inputs.copy()
+        for key, value in initial.items():
             if key == "omega":
                 w = np.asarray(value, dtype=float) if not isinstance(value, str) else None
                 if w is None or w.shape != (3,) or not np.isfinite(w).all():
@@ -186,18 +192,10 @@ class _PreparedBatch(batch.BatchPlan):
     def of(cls, prepared: Prepared, initial: dict, params: dict) -> "_PreparedBatch":
         pl = prepared.plan
         sc, source = pl.scene, pl.scene.source
-        allowed = _ANGLES + (_RATES if prepared._rates else ("omega",))
-        cols: dict = {}
-        for key, value in initial.items():
-            if key not in allowed:
-                raise SceneError(f"{source}: initial.{key}: not a key this prepared scene takes "
-                                 f"(it takes {', '.join(allowed)})")
-            cols[("initial", key)] = _column(source, f"initial.{key}", value, 3 if key == "omega" else 1)
-        for name, value in params.items():
-            if name not in prepared._params:
-                raise SceneError(f"{source}: params: unknown parameter {name!r} "
-                                 f"(the model's: {', '.join(prepared._params)})")
-            cols[("params", name)] = _column(source, f"params.{name}", value)
+        prepared._check_keys(initial, params)
+        cols: dict = {("initial", key): _column(source, f"initial.{key}", value, 3 if key == "omega" else 1)
+                      for key, value in initial.items()}
+        cols.update({("params", name): _column(source, f"params.{name}", value) for name, value in params.items()})
         lengths = [(f"{kind}.{key}", a.shape[0]) for (kind, key), a in cols.items()
                    if a.ndim == (2 if key == "omega" else 1)]
         for label, size in lengths[1:]:

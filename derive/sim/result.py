@@ -6,7 +6,6 @@ Takes: the output rows of a C call. Gives: :class:`Result`.
 """
 from __future__ import annotations
 
-import contextvars
 import functools
 import math
 from dataclasses import dataclass, field
@@ -136,44 +135,29 @@ def _explain(desc, stats, max_steps) -> str:
     return status_message(stats, desc.states, max_steps)
 
 
-def _output_slices() -> list:
-    k, slices = 0, []
-    for name, width in OUTPUTS:
-        slices.append((name, k if width == 1 else slice(k, k + width), width > 1))
-        k += width
-    return slices
-
-
-_SLICES = _output_slices()
-
-
-_VIEWS = {name: (s, wide) for name, s, wide in _SLICES}  # output -> (rows of out, transposed)
-
-
+#: output -> (its rows of out (NOBS, n), wide: its rows transposed to (n, width)).
+_VIEWS = {name: (k if w == 1 else slice(k, k + w), w > 1)
+          for k, (name, w) in zip(np.cumsum([0] + [w for _, w in OUTPUTS]).tolist(), OUTPUTS)}
 _L_ROWS, _N_ROWS = _VIEWS["L"][0], _VIEWS["n"][0]  # the rows of out holding L and n
-
-
 _COLUMN_OUTPUT = tuple(name for name, width in OUTPUTS for _ in range(width))  # column -> output
-
-
 _EPS = float(np.finfo(float).eps)
 
 
-_FEW = 32  # samples below which a list beats NumPy's reductions
-
-
 def _result(desc, out, y, t, scene, method, nfev, finite: bool = False, integrals=None) -> Result:
-    """The Result of one trajectory's outputs ``out`` (NOBS, n); ``finite``: the caller has
-    checked them already (a batch checks all trajectories at once); ``integrals``: the scene's
-    integral formulas when the caller has them (:attr:`derive.sim.plan.Plan.integral_rows`)."""
+    """The Result of one trajectory's outputs ``out`` (NOBS, n), each output's view made when
+    first read (:meth:`Result.__getattr__`: a batch of 1000 would otherwise make 10 000 views);
+    ``finite``: the caller has checked them already (a batch checks all trajectories at once);
+    ``integrals``: the scene's integral formulas when the caller has them
+    (:attr:`derive.sim.plan.Plan.integral_rows`)."""
     if not finite and not np.isfinite(out).all():  # find where only when something is wrong
-        for name, s, wide in _SLICES:
-            bad = ~np.isfinite(_view(out, s, wide))
+        for name, (rows, wide) in _VIEWS.items():
+            bad = ~np.isfinite(_view(out, rows, wide))
             if bad.any():
                 j = int(np.argwhere(bad)[0][0])
                 raise IntegrationError(f"t = {t[j]:.6g}: non-finite {name} in the output")
     rows = plan.integral_rows_of(scene) if integrals is None else integrals
-    return _new_result(out, y, t, scene, method, desc, int(nfev), _integral_arrays(rows, out, t))
+    return _filled(t, method, desc.formulation, desc.name, desc.effects, out, y, int(nfev),
+                   _integral_arrays(rows, out, t), scene)
 
 
 def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
@@ -181,56 +165,29 @@ def _view(out: np.ndarray, rows, wide: bool) -> np.ndarray:
     return out[rows].T if wide else out[rows]
 
 
-def _new_result(out: np.ndarray, y: np.ndarray, t: np.ndarray, scene, method: str, desc, nfev: int,
-                integrals: dict) -> Result:
-    """A Result whose outputs are the rows of ``out`` (NOBS, n), each view made when first read
-    (:meth:`Result.__getattr__`: a batch of 1000 would otherwise make 10 000 views)."""
-    return _filled(_shared_fields(t, method, desc), out, y, nfev, integrals, scene)
-
-
-def _shared_fields(t: np.ndarray, method: str, desc) -> dict:
-    """The fields of a Result that every trajectory of one run shares."""
-    return {"t": t, "method": method, "formulation": desc.formulation, "model": desc.name,
-            "effects": desc.effects}
-
-
-def _filled(shared: dict, out: np.ndarray, y: np.ndarray, nfev: int, integrals: dict, scene) -> Result:
-    """A Result of the ``shared`` fields and its own, its outputs the rows of ``out``."""
+def _filled(t, method, formulation, model, effects, out, y, nfev, integrals, scene) -> Result:
+    """A Result whose outputs are the rows of ``out``, made when first read."""
     res = object.__new__(Result)  # every other field is given: what Result(**fields) would make
-    d = res.__dict__
-    d.update(shared)
-    d["_out"] = out
-    d["state"] = y
-    d["nfev"] = nfev
-    d["integrals"] = integrals
-    d["scene"] = scene
+    res.__dict__.update(t=t, method=method, formulation=formulation, model=model, effects=effects,
+                        _out=out, state=y, nfev=nfev, integrals=integrals, scene=scene)
     return res
-
-
-def _all_finite(values: np.ndarray) -> bool:
-    """Whether every entry is finite (a list for a short array: cheaper than the ufunc and its
-    reduction)."""
-    if values.ndim == 1 and values.shape[0] <= _FEW:
-        return all(map(math.isfinite, values.tolist()))
-    return bool(np.isfinite(values).all())
 
 
 def _integral_arrays(rows, out: np.ndarray, t: np.ndarray) -> dict:
     """``integral_<name>`` arrays of the scene's integrable case (none for a general body) from
     its formulas ``rows`` (:func:`derive.sim.plan.integral_rows_of`) on the L and n rows of the
     outputs ``out`` (NOBS, n), the formulas' own layout, with NumPy's floating-point errors
-    ignored (:func:`_ignoring`: absurd numbers may overflow there); IntegrationError naming the
-    first non-finite value."""
-    if not rows:
-        return {}
+    ignored (absurd numbers may overflow there); IntegrationError naming the first non-finite
+    value."""
     L, n = out[_L_ROWS], out[_N_ROWS]
     found = {}
     for name, formula, values, component in rows:
         if component is not None:  # L's own component: a copy of the row, finite as L was checked
             found[name] = L[component].copy()
             continue
-        found[name] = values = np.asarray(_ignoring(formula, L, n, values), dtype=float)
-        if not _all_finite(values):
+        with np.errstate(all="ignore"):
+            found[name] = values = np.asarray(formula(L, n, values), dtype=float)
+        if not np.isfinite(values).all():
             j = int(np.argwhere(~np.isfinite(values))[0][0])
             raise IntegrationError(f"t = {t[j]:.6g}: non-finite integral_{name} in the output "
                                    f"(overflow: the scene's numbers are out of range)")
@@ -251,13 +208,7 @@ def _check_pole(desc, t, beta, rtol):
     samples is at the smallest or the largest β (two reductions, not a sine per sample)."""
     if not REGISTRY[desc.formulation].pole_loss:
         return
-    if beta.shape[0] <= _FEW:  # a short output: Python's min and max cost less than two reductions
-        b = beta.tolist()
-        lo, hi = min(b), max(b)
-        if lo != lo or hi != hi:  # a NaN: Python's min and max may not see it
-            lo = hi = math.nan
-    else:
-        lo, hi = float(beta.min()), float(beta.max())
+    lo, hi = float(beta.min()), float(beta.max())
     if not (math.isfinite(lo) and math.isfinite(hi)):
         return  # _result names the non-finite output
     if _clear_of_pole(min(math.sin(lo), math.sin(hi)), rtol):
@@ -289,32 +240,6 @@ def _quiet(fn):
     return quiet
 
 
-def _context_ignoring_errors():
-    """A context (:mod:`contextvars`) in which NumPy ignores floating-point errors, made once;
-    None where NumPy keeps its error state outside the context (NumPy < 2: per thread)."""
-    before = np.geterr()
-    ctx = contextvars.copy_context()
-    ctx.run(np.seterr, all="ignore")
-    if np.geterr() != before:  # the setting escaped the context: undo it, use np.errstate
-        np.seterr(**before)
-        return None
-    return ctx
-
-
-_IGNORING = _context_ignoring_errors()
-
-
-def _ignoring(fn, *args):
-    """``fn(*args)`` with NumPy's floating-point warnings off, for a few NumPy operations: in a
-    copy of :data:`_IGNORING` (cheaper than entering an ``np.errstate``). The copy holds
-    the context variables as they were at import: ``fn`` must read none but NumPy's error
-    state (the integral formulas: arithmetic on arrays)."""
-    if _IGNORING is None:
-        with np.errstate(all="ignore"):
-            return fn(*args)
-    return _IGNORING.copy().run(fn, *args)
-
-
 #: What a SaveAt may name: the outputs of the output file and the integrator's state.
 KNOWN = tuple(name for name, _ in OUTPUTS) + ("state",)
 
@@ -343,17 +268,8 @@ def kept(res: Result, saveat: SaveAt | None) -> Result:
     if final:
         out, y, t = out[:, -1:], y[-1:], t[-1:]
         integrals = {k: v[-1:] for k, v in integrals.items()}
-    new = _filled(_shared_fields(t, res.method, _Ran(res.formulation, res.model, res.effects)), out,
+    new = _filled(t, res.method, res.formulation, res.model, res.effects, out,
                   y if "state" in names else None, res.nfev, integrals, res.scene)
     if saveat.outputs is not None:
         new.__dict__["_kept"] = frozenset(names)
     return new
-
-
-@dataclass(frozen=True)
-class _Ran:
-    """What :func:`_shared_fields` reads of a model description."""
-
-    formulation: str
-    name: str
-    effects: tuple

@@ -24,16 +24,14 @@ from derive.contact.simulate import run_scene  # the contact hook
 from derive.errors import IntegrationError
 from derive.methods.status import Status
 from derive.sim import plan
-from derive.sim.outputs import (PLOT_FORMATS, RESULT_FORMATS, check_paths, output_format, write_all,
-                                write_csv)
+from derive.sim.outputs import RESULT_FORMATS, write_csv, write_data_and_plot
 from derive.sim.plots import plot_result
-from derive.sim.result import (Result, _check_pole, _explain, _integral_arrays, _new_result, _quiet,
-                               _result, kept)
+from derive.sim.result import Result, _check_pole, _explain, _quiet, _result, kept
 from derive.sim.saveat import SaveAt
 from derive.sim.scene import contact_data, load_scene  # contact_data: the contact hook
 from derive.sim.scipy_ref import _solve_scipy
 
-_RANGE = int(Status.RANGE)  # an int: no enum lookup per call
+_RANGE = int(Status.RANGE)
 
 
 @_quiet
@@ -89,10 +87,8 @@ def _run_scipy(pl: "plan.Plan", inputs: np.ndarray, params: dict | None) -> Resu
 
 def _compiled_result(pl: "plan.Plan", c: "plan.Candidate", out: np.ndarray, y: np.ndarray,
                      nfev: int) -> Result:
-    """What :func:`_result` gives for outputs the C driver checked finite, with the plan's
-    integral formulas (:func:`_integral_arrays`)."""
-    return _new_result(out, y, pl.t, pl.scene, c.method, c.desc, nfev,
-                       _integral_arrays(pl.integral_rows, out, pl.t))
+    """The Result of outputs the C driver checked finite, with the plan's integral formulas."""
+    return _result(c.desc, out, y, pl.t, pl.scene, c.method, nfev, finite=True, integrals=pl.integral_rows)
 
 
 def _with(c, params: dict | None) -> np.ndarray:
@@ -112,21 +108,9 @@ def write_outputs(res: Result, npz: str | None = None, png: str | None = None) -
     SceneError naming ``-o`` or ``--plot`` before anything is written; neither may be the
     scene file the result came from (SceneError naming both)."""
     source = res.scene.source if res.scene is not None else None
-    inputs = [source] if source and source != "<dict>" else []
-    check_paths([npz, png], inputs=inputs)  # a clash with the scene first: it is what matters most
-    data_format = output_format(npz, "-o", RESULT_FORMATS) if npz else None
-    plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
-    writers = {}
-    if data_format == "csv":
-        arrays = res.arrays()
-        writers[npz] = lambda f: write_csv(f, {"t": arrays.pop("t"), **arrays})  # t first
-    elif data_format == "npz":
-        writers[npz] = lambda f: np.savez(f, **res.arrays())
-    if plot_format:
-        def plot(f):
-            if hasattr(res, "plot_to"):  # contact hook: a top on a table draws its own page
-                return res.plot_to(f, plot_format)
-            plot_result(res, f, plot_format)
-
-        writers[png] = plot
-    write_all(writers, inputs=inputs)
+    # the plot: a top on a table draws its own page (the contact hook)
+    plot = res.plot_to if hasattr(res, "plot_to") else lambda f, fmt: plot_result(res, f, fmt)
+    write_data_and_plot(npz, {"csv": lambda f: write_csv(f, {"t": res.t, **res.arrays()}),  # t first
+                              "npz": lambda f: np.savez(f, **res.arrays())}, RESULT_FORMATS,
+                        png, lambda fmt: lambda f: plot(f, fmt),
+                        inputs=[source] if source and source != "<dict>" else [])

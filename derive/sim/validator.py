@@ -11,7 +11,6 @@ import difflib
 import math
 import numbers
 from collections.abc import Mapping
-from typing import NamedTuple
 
 import numpy as np
 
@@ -38,39 +37,12 @@ _FIXED_KEYS = {  # table -> its keys, in the order they are documented
 
 
 def _table_keys() -> dict[str, tuple[str, ...]]:
-    """Every table's keys: body, the effects' tables (from the registry), initial, simulate."""
-    return _registry_view().keys
-
-
-class _View(NamedTuple):
-    """What validation reads from the registries, computed once per effects-registry version."""
-
-    keys: dict[str, tuple[str, ...]]  # table -> its keys in documented order (for messages)
-    key_sets: dict[str, frozenset]  # table -> the same keys as a set (for the checks)
-    #: The effect tables in registry order: (name, Table, its keys as readers (name, Key, is a
-    #: vector, check, must, default or ... when required)).
-    effect_tables: tuple[tuple[str, effects.Table, tuple], ...]
-
-
-def _registry_view() -> _View:
-    """The tables' keys and readers for the current effects registry (built on first use)."""
-    view = _VIEW.get(effects.VERSION[0])
-    if view is not None:
-        return view
+    """Every table's keys in documented order: body, the effects' tables (from the registry),
+    initial, simulate."""
     keys = {"body": _FIXED_KEYS["body"]}
     keys.update({name: tuple(k.name for k in t.keys) for name, t in effects.TABLES.items()})
     keys.update(initial=_FIXED_KEYS["initial"], simulate=_FIXED_KEYS["simulate"])
-    effect_tables = tuple(
-        (name, t, tuple((k.name, k, k.kind == "vector3", k.check, k.must,
-                         ... if k.default is effects.REQUIRED else k.default) for k in t.keys))
-        for name, t in effects.TABLES.items())
-    view = _View(keys, {name: frozenset(k) for name, k in keys.items()}, effect_tables)
-    _VIEW.clear()  # only the current version is ever asked for again
-    _VIEW[effects.VERSION[0]] = view
-    return view
-
-
-_VIEW: dict[int, _View] = {}
+    return keys
 
 
 _TOP_KEYS = ("title",)
@@ -184,8 +156,8 @@ _TRIANGLE = ((0, 1, 2), (1, 2, 0), (0, 2, 1))
 class _Validator:
     """Turns the raw dict into a Scene, raising SceneError at the first problem.
 
-    The key sets and readers come from the registries (:func:`_registry_view`); messages are
-    built only when something fails.
+    The keys come from the registries (:func:`_table_keys`); messages are built only when
+    something fails.
     """
 
     def __init__(self, source: str):
@@ -199,11 +171,9 @@ class _Validator:
 
     # ---- generic readers ----
 
-    def table(self, data: Mapping, name: str, key_set: frozenset) -> Mapping:
-        """The table ``name`` after checking it has only known keys (``key_set``); the first
-        unknown one in document order is reported."""
-        if type(data) is dict and key_set.issuperset(data):
-            return data
+    def table(self, data: Mapping, name: str) -> Mapping:
+        """The table ``name`` after checking it has only known keys; the first unknown one in
+        document order is reported."""
         keys = _table_keys()[name]
         for key in data:
             if key not in keys:
@@ -240,14 +210,13 @@ class _Validator:
     # ---- the tables ----
 
     def scene(self, data: Mapping, overrides: dict) -> Scene:
-        view = _registry_view()
-        key_sets = view.key_sets
+        tables = _table_keys()
         for key, value in data.items():
             if key in _TOP_KEYS or key in user_terms.KINDS:
                 continue
-            if key not in key_sets:
+            if key not in tables:
                 if isinstance(value, Mapping):
-                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(_table_keys()), "")
+                    self.fail(str(key), "unknown table (" + _unknown(key, tuple(tables), "")
                               + ")")
                 self.fail(str(key), "unknown key (" + _unknown(
                     key, _TOP_KEYS, "", "the only top-level key is title") + ")")
@@ -259,16 +228,13 @@ class _Validator:
         # Tables in document order, so the first problem reported is the first one in the file.
         if "body" not in data:
             self.fail("body", "missing required table")
-        body = self.body(self.table(data["body"], "body", key_sets["body"]))
-        tables = {}
-        for name, table, readers in view.effect_tables:
-            if name in data:
-                tables[name] = self.effect_table(self.table(data[name], name, key_sets[name]),
-                                                 table, readers)
+        body = self.body(self.table(data["body"], "body"))
+        tables = {name: self.effect_table(self.table(data[name], name), table)
+                  for name, table in effects.TABLES.items() if name in data}
         terms = self.terms(data)
         if "initial" not in data:
             self.fail("initial", "missing required table")
-        initial = self.initial(self.table(data["initial"], "initial", key_sets["initial"]))
+        initial = self.initial(self.table(data["initial"], "initial"))
 
         if overrides:
             for key in overrides:
@@ -278,7 +244,7 @@ class _Validator:
                         key, _FIXED_KEYS["simulate"], "simulate") + ")")
         if "simulate" not in data and "t_end" not in overrides:
             self.fail("simulate", "missing required table (simulate.t_end has no default)")
-        simulate = self.table(data.get("simulate", {}), "simulate", key_sets["simulate"])
+        simulate = self.table(data.get("simulate", {}), "simulate")
         if overrides:
             self.overridden.update(f"simulate.{key}" for key in overrides)
             simulate = {**simulate, **overrides}
@@ -295,7 +261,7 @@ class _Validator:
         ``like``'s (valid: the first problem of ``data`` can only be in its initial state)."""
         if "initial" not in data:
             self.fail("initial", "missing required table")
-        initial = self.initial(self.table(data["initial"], "initial", _registry_view().key_sets["initial"]))
+        initial = self.initial(self.table(data["initial"], "initial"))
         scene = dataclasses.replace(like, initial=initial, source=self.source)
         scene.__dict__["effects"] = like.effects  # (its tables and terms are like's)
         self.formulation_fits(scene)
@@ -316,10 +282,9 @@ class _Validator:
                                   f"principal moments")
         return Body(I1=I1, I2=I2, I3=I3)
 
-    def effect_table(self, t, table: effects.Table, readers: tuple) -> TableValues:
-        """An effect's table, read by its declaration (``readers``: its keys, see _View): each
-        key a finite real (or a list of 3) passing its check; of each ``one_of`` group exactly
-        one key given."""
+    def effect_table(self, t, table: effects.Table) -> TableValues:
+        """An effect's table, read by its declaration: each key a finite real (or a list of 3)
+        passing its check; of each ``one_of`` group exactly one key given."""
         for group in table.one_of:
             given = [k for k in group if k in t]
             if len(given) > 1:
@@ -329,11 +294,12 @@ class _Validator:
                 self.fail(f"{table.name}.{group[0]}",
                           f"missing required key (give {' or '.join(group)})")
         values = {}
-        for name, key, is_vector, check, must, default in readers:
-            if is_vector:
-                values[name] = self.vector3(t, table.name, key)
+        for key in table.keys:
+            if key.kind == "vector3":
+                values[key.name] = self.vector3(t, table.name, key)
             else:
-                values[name] = self.number(t, table.name, name, check, must, default)
+                default = ... if key.default is effects.REQUIRED else key.default
+                values[key.name] = self.number(t, table.name, key.name, key.check, key.must, default)
         values = table.complete(values)
         out = TableValues(table.name, values, effects.for_table(table.name, values).name)
         given = set(t)
@@ -455,19 +421,15 @@ class _Validator:
         return tuple(vec)
 
     def initial(self, t) -> Initial:
-        alpha = self.number(t, "initial", "alpha", None, "a finite number (rad)")
-        beta = self.number(t, "initial", "beta", None, "a finite number (rad)")
-        gamma = self.number(t, "initial", "gamma", None, "a finite number (rad)")
+        alpha, beta, gamma = (self.number(t, "initial", k, None, "a finite number (rad)")
+                              for k in ("alpha", "beta", "gamma"))
         rates_given = any(k in t for k in _RATES)
         both = "give either the Euler-angle rates (alpha_dot, beta_dot, gamma_dot) or omega"
         if rates_given and "omega" in t:
             self.fail("initial", both + ", not both")
         if rates_given:
             # Missing rates are 0: a scene released at a turning point need not say beta_dot = 0.
-            must = "a finite number (rad/s)"
-            ad = self.number(t, "initial", "alpha_dot", None, must, 0.0)
-            bd = self.number(t, "initial", "beta_dot", None, must, 0.0)
-            gd = self.number(t, "initial", "gamma_dot", None, must, 0.0)
+            ad, bd, gd = (self.number(t, "initial", k, None, "a finite number (rad/s)", 0.0) for k in _RATES)
             return Initial(alpha=alpha, beta=beta, gamma=gamma, alpha_dot=ad, beta_dot=bd,
                         gamma_dot=gd, omega=body_omega(beta, gamma, ad, bd, gd))
         if "omega" not in t:
@@ -483,12 +445,7 @@ class _Validator:
     def simulate(self, t) -> Simulate:
         s = {**SIMULATE_DEFAULTS, **t}
         t_end = self.number(t, "simulate", "t_end", _positive, "a positive finite number (s)")
-        samples = s["samples"]
-        if not (type(samples) is int or (not isinstance(samples, (bool, np.bool_))  # int: no ABC check
-                                         and isinstance(samples, numbers.Integral))) \
-                or not 2 <= samples <= MAX_SAMPLES:
-            self.fail("simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}, "
-                                          f"got {_show(samples)}")
+        samples = self.integer(s, "samples", 2, MAX_SAMPLES, f"{MAX_SAMPLES}")
         method = self.choice(s, "simulate", "method", METHODS)
         rtol = self.number(s, "simulate", "rtol", _below_one, "a number in (0, 1)")
         if rtol < MIN_RTOL:
@@ -496,12 +453,7 @@ class _Validator:
                                        f"no double-precision integrator can meet {rtol:g}")
         atol = self.number(s, "simulate", "atol", _positive, _POSITIVE)
         formulation = self.choice(s, "simulate", "formulation", FORMULATIONS)
-        max_steps = s["max_steps"]
-        if not (type(max_steps) is int or (not isinstance(max_steps, (bool, np.bool_))
-                                           and isinstance(max_steps, numbers.Integral))) \
-                or not 1 <= max_steps <= MAX_STEPS_LIMIT:
-            self.fail("simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}, "
-                                            f"got {_show(max_steps)}")
+        max_steps = self.integer(s, "max_steps", 1, MAX_STEPS_LIMIT, f"{MAX_STEPS_LIMIT:.0e}")
         h = None
         if s["h"] is not None:
             h = self.number(s, "simulate", "h", _positive, "a positive finite number (s)")
@@ -509,8 +461,16 @@ class _Validator:
                 self.fail("simulate.h", f"is the step of a fixed-step method "
                                         f"({', '.join(FIXED_STEP_METHODS)}), but method is "
                                         f"{method!r}; remove h or name a fixed-step method")
-        return Simulate(t_end=t_end, samples=int(samples), method=method, rtol=rtol,
-                    atol=atol, formulation=formulation, h=h, max_steps=int(max_steps))
+        return Simulate(t_end=t_end, samples=samples, method=method, rtol=rtol,
+                    atol=atol, formulation=formulation, h=h, max_steps=max_steps)
+
+    def integer(self, s, key, lo, hi, shown) -> int:
+        """``simulate.<key>``: an integer (not a boolean) from ``lo`` to ``hi``."""
+        value = s[key]
+        if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral) \
+                or not lo <= value <= hi:
+            self.fail(f"simulate.{key}", f"must be an integer from {lo} to {shown}, got {_show(value)}")
+        return int(value)
 
     def formulation_fits(self, scene: Scene) -> None:
         """Reject a formulation that cannot represent this scene (the registry says why)."""

@@ -18,7 +18,6 @@ for these sweeps.
 """
 from __future__ import annotations
 
-import copy
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -27,12 +26,11 @@ import numpy as np
 from derive.contact.scene import read as read_scene
 from derive.contact.simulate import simulate
 from derive.errors import IntegrationError, SceneError
-from derive.sim.scene import read_toml
 from derive.sweeps import measures as ms
 from derive.sweeps.keys import contact_keys
 from derive.sweeps.points import _fail, set_entry
 from derive.sweeps.result import SweepResult
-from derive.sweeps.spec import _SPEC_KEYS, _measures, _scene_path, grid_or_random
+from derive.sweeps.spec import _check_key, _measures, base_scene, grid_or_random
 
 
 def _set(data: dict, key: str, value: float) -> dict:
@@ -42,25 +40,14 @@ def _set(data: dict, key: str, value: float) -> dict:
     return out
 
 
-def _check_key(source: str, where: str, key: str, raw: dict) -> None:
-    keys = contact_keys()
-    if key.startswith("simulate.") or key == "title":
-        _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
-    if key not in keys:
-        _fail(source, where, "not a key of a top on a table that takes a number (e.g. "
-                             "initial.omega.2, initial.beta, contact.offset, contact.mu)")
-    table, name, index, _ = keys[key]
-    init = raw.get("initial", {})
-    if index is not None and "omega" not in init:
-        _fail(source, where, "the scene gives Euler-angle rates, not omega")
-    if name.endswith("_dot") and "omega" in init:
-        _fail(source, where, "the scene gives omega, not Euler-angle rates")
+_WHAT = ("a key of a top on a table that takes a number (e.g. initial.omega.2, initial.beta, contact.offset, "
+         "contact.mu)")
 
 
 def _points(source: str, data: dict, raw: dict):
     """(keys, grid shape or None, {key: (N,) column}), every distinct value checked."""
     keys, shape, cols, distinct = grid_or_random(
-        source, data, lambda where, key: _check_key(source, where, key, raw), n_max=10**6)
+        source, data, lambda where, key: _check_key(source, where, key, contact_keys(), raw, _WHAT), n_max=10**6)
     where = "vary" if shape is not None else "random"
     for key, values in distinct.items():
         for v in np.unique(values):
@@ -121,24 +108,15 @@ def sweep(found: tuple[dict, str, Path], workers: int | None = None,
     if scheduler is not None:
         raise SceneError(f"{source}: --scheduler: a sweep over a top on a table runs on this "
                          f"machine (--workers N for processes)")
-    for k in data:
-        if k not in _SPEC_KEYS:
-            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
-    sc = data["scene"]
-    files = (source,) if source != "<sweep>" else ()
-    if isinstance(sc, str):
-        path = _scene_path(source, folder, sc)
-        files += (path,)
-        raw, scene_source = read_toml(path), path
-    else:
-        raw, scene_source = copy.deepcopy(dict(sc)), source
-    try:
-        base = read_scene(raw, scene_source)
-    except SceneError as exc:
-        raise SceneError(str(exc) if scene_source != source else
-                         f"{source}: scene.{str(exc).split(': ', 1)[-1]}") from None
-    if "title" in data and "title" not in raw and isinstance(data["title"], str):
-        raw["title"] = data["title"]
+
+    def read(raw, where):  # a scene file's errors name it; an inline scene's, scene.<key>
+        try:
+            return read_scene(raw, where)
+        except SceneError as exc:
+            raise SceneError(str(exc) if where != source else
+                             f"{source}: scene.{str(exc).split(': ', 1)[-1]}") from None
+
+    raw, base, files = base_scene(data, source, folder, read)
     keys, shape, cols = _points(source, data, raw)
     names, _ = _measures(source, data, contact=True)
     if add_measure is not None:

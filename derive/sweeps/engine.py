@@ -53,7 +53,12 @@ whose integration fails is recorded in ``status``; Ctrl-C cancels the outstandin
 """
 from __future__ import annotations
 
+import contextlib
 import os
+import signal
+import sys
+import threading
+import time
 
 import numpy as np
 
@@ -212,10 +217,6 @@ def final_measures(saveat, source: str = "<sweep>") -> tuple[str, ...]:
 def cli(args) -> int:
     """``derive sweep``: run, write, print a one-line summary. SIGTERM is handled as Ctrl-C is
     (workers stopped, no temporary left), raised as :class:`Terminated` (exit 143)."""
-    import sys
-    import time
-
-
     timeout = getattr(args, "scheduler_timeout", None)
     dashboard = bool(getattr(args, "dashboard", False))
     check_engine(args.sweep, args.workers, args.scheduler, timeout, dashboard, flags=True)
@@ -234,30 +235,21 @@ def cli(args) -> int:
     return 0
 
 
-class _sigterm_raises:
+@contextlib.contextmanager
+def _sigterm_raises():
     """Within the ``with`` body (main thread only), SIGTERM raises :class:`Terminated` where
     Ctrl-C would raise KeyboardInterrupt, once: a second SIGTERM during the clean-up is ignored
     (the workers die with this process in any case). The previous handler is restored after."""
-    def __enter__(self):
-        import signal
-        import threading
-
-        self.old = None
-        if (threading.current_thread() is threading.main_thread()
-                and signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN):  # kept ignored
-            self.old = signal.signal(signal.SIGTERM, self._raise)
-        return self
-
-    @staticmethod
-    def _raise(signum, frame):
-        import signal
-
-
+    def raise_terminated(signum, frame):
         signal.signal(signal.SIGTERM, signal.SIG_IGN)
         raise Terminated()
 
-    def __exit__(self, *exc):
-        import signal
-
-        if self.old is not None:
-            signal.signal(signal.SIGTERM, self.old)
+    old = None
+    if (threading.current_thread() is threading.main_thread()
+            and signal.getsignal(signal.SIGTERM) is not signal.SIG_IGN):  # kept ignored
+        old = signal.signal(signal.SIGTERM, raise_terminated)
+    try:
+        yield
+    finally:
+        if old is not None:
+            signal.signal(signal.SIGTERM, old)

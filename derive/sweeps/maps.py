@@ -23,7 +23,9 @@ tilted" within t_end) in grey, failed points in red. :func:`sweep_figure` return
 """
 from __future__ import annotations
 
+import dataclasses
 import math
+import re
 
 import numpy as np
 
@@ -70,16 +72,12 @@ def _label(key: str) -> str:
 
 
 def _measure_label(name: str) -> str:
-
     m = REGISTRY.get(name)
     return f"{name} [{m.unit}]" if m is not None and m.unit else name
 
 
 def _nan_meaning(name: str) -> str:
     """What NaN means for a measure, from its documentation ("... (NaN: never)"), or ""."""
-    import re
-
-
     m = REGISTRY.get(name)
     found = re.search(r"\(NaN: ([^)]*)\)", m.doc) if m is not None else None
     return found.group(1) if found else ""
@@ -272,9 +270,6 @@ _RATIOS = (0.25, 0.5, 1.0, 2.0, 4.0)
 def _integrable_moments(ax, sc, key, x) -> None:
     """Where the swept moment makes the scene's body an integrable case, the other numbers as
     the scene has them (``derive.symbolic.integrable.classify``): a dotted line labelled with the case."""
-    import dataclasses
-
-
     i = ("body.I1", "body.I2", "body.I3").index(key)
     moments = list(sc.body.moments)
     found = {}

@@ -73,6 +73,7 @@ from __future__ import annotations
 
 import ctypes
 import math
+import threading
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -362,23 +363,18 @@ class MeasureKernel:
         self._guard = guard
         # The measures' accumulators are static in the library: one run at a time (a Dask
         # worker with several threads would otherwise mix trajectories).
-        import threading
-
         self._lock = threading.Lock()
 
     @classmethod
     def load(cls, desc, method: str) -> "MeasureKernel":
         """Compiled once per machine (the compile cache), loaded once per process."""
-        window = measure_window(method)
-        if window is None:
-            raise ValueError(f"measures need a method with a dense output between its steps, not {method}")
         key = (desc.folder, desc.name, method)
         kernel = cls._cache.get(key)
         if kernel is None:
-            sources = c_sources(desc, method)
+            sources = c_sources(desc, method)  # (ValueError for a method without a measure window)
             # a Taylor method's solver is its own file, after the solvers (the interrupt flag,
             # the bookkeeping and the measuring flag are theirs)
-            family = [f"{desc.name}_taylor.c"] if window == "series" else []
+            family = [f"{desc.name}_taylor.c"] if measure_window(method) == "series" else []
             if family and family[0] not in sources:
                 raise ValueError(f"method {method!r} was not generated for the model {desc.name}")
             unity = f"{desc.name}_{method}_measures_unit.c"
@@ -396,9 +392,6 @@ class MeasureKernel:
         ``integral_rows`` (None: no integral, integral_drift NaN). ``pole_check``: the driver's
         check of each start (:func:`derive.sim.auto.pole_mode`; 0 none): a start it refuses
         has status RANGE and NaN measures, and the other points run on."""
-        import threading
-
-
         nb, n = inputs.shape[0], t.shape[0]
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         ps = np.array(ps, dtype=np.float64, order="C")

@@ -174,14 +174,10 @@ def build(spec) -> None:
 
     # inputs
     inputs = np.tile(inputs_of(base), (n, 1))
-    alpha = col("initial", "alpha", base.initial.alpha)
-    beta = col("initial", "beta", base.initial.beta)
-    gamma = col("initial", "gamma", base.initial.gamma)
+    alpha, beta, gamma = (col("initial", k, getattr(base.initial, k)) for k in ("alpha", "beta", "gamma"))
     inputs[:, 0], inputs[:, 1], inputs[:, 2] = alpha, beta, gamma
     if base.initial.has_rates:
-        ad = col("initial", "alpha_dot", base.initial.alpha_dot)
-        bd = col("initial", "beta_dot", base.initial.beta_dot)
-        gd = col("initial", "gamma_dot", base.initial.gamma_dot)
+        ad, bd, gd = (col("initial", k, getattr(base.initial, k)) for k in ("alpha_dot", "beta_dot", "gamma_dot"))
         inputs[:, 6], inputs[:, 7], inputs[:, 8] = ad, bd, gd
         if any(k in cols for k in ("initial.beta", "initial.gamma", "initial.alpha_dot",
                                    "initial.beta_dot", "initial.gamma_dot")):

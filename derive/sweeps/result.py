@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.sim.outputs import PLOT_FORMATS, TABLE_FORMATS, check_paths, output_format, write_all
+from derive.sim.outputs import TABLE_FORMATS, write_data_and_plot
 from derive.sweeps.maps import plot_sweep
 
 
@@ -49,20 +49,9 @@ def write(result: SweepResult, parquet: str | None, png: str | None = None,
     """The table (one row per point: .parquet, or .csv with one header row) and the plot (.png,
     .pdf or .svg), each in the format its extension names, all or nothing; neither may be a
     file the sweep read (``result.files``: SceneError naming both)."""
-    check_paths([parquet, png], inputs=result.files)  # a clash with an input first
-    table_format = output_format(parquet, "-o", TABLE_FORMATS) if parquet else None
-    plot_format = output_format(png, "--plot", PLOT_FORMATS) if png else None
-    writers = {}
-    if table_format == "parquet":
-        writers[parquet] = lambda f: result.to_pandas().to_parquet(f, engine="pyarrow", index=False)
-    elif table_format == "csv":
-        # repr: the shortest text that reads back to the same double
-        writers[parquet] = lambda f: result.to_pandas().to_csv(
-            f, index=False, float_format=lambda x: repr(float(x)), na_rep="nan")
-    if png:
-        def plot(f):
-
-            plot_sweep(result, f, measure, plot_format)
-
-        writers[png] = plot
-    write_all(writers, inputs=result.files)
+    write_data_and_plot(
+        parquet, {"parquet": lambda f: result.to_pandas().to_parquet(f, engine="pyarrow", index=False),
+                  # repr: the shortest text that reads back to the same double
+                  "csv": lambda f: result.to_pandas().to_csv(f, index=False, float_format=lambda x: repr(float(x)),
+                                                             na_rep="nan")},
+        TABLE_FORMATS, png, lambda fmt: lambda f: plot_sweep(result, f, measure, fmt), inputs=result.files)

@@ -88,33 +88,35 @@ def _scene_path(source: str, folder: Path, sc: str) -> str:
     return str(path)
 
 
+def _read(spec) -> tuple[dict, str, Path]:
+    """(the sweep's data, its source, its folder) of a path, an example's name or a dict;
+    SceneError for anything else or a file the scene files' reader refuses."""
+    if isinstance(spec, Mapping):
+        return spec, "<sweep>", Path.cwd()
+    if not isinstance(spec, (str, os.PathLike)):
+        raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
+    source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
+    return read_toml(source, "sweep"), source, Path(source).resolve().parent
+
+
 def input_files(spec) -> tuple:
     """The files a sweep reads (the sweep file, and the scene file it names), to compare the
     outputs with before any work (``outputs.check_paths``); () for a dict. Reads the sweep file
     with the checks of :func:`load` (SceneError as it would raise)."""
     if isinstance(spec, Mapping) or not isinstance(spec, (str, os.PathLike)):
         return ()
-    source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example, as in load
-    sc = read_toml(source, "sweep").get("scene")
-    if not isinstance(sc, str):
-        return (source,)
-    return (source, _scene_path(source, Path(source).resolve().parent, sc))
+    data, source, folder = _read(spec)
+    sc = data.get("scene")
+    return (source,) if not isinstance(sc, str) else (source, _scene_path(source, folder, sc))
 
 
 def contact_sweep(spec) -> tuple[dict, str, Path] | None:
     """(the sweep's data, its source, its folder) when the sweep ``spec`` (path, example name or
     dict) names a scene with a ``[contact]`` table, else None (an unreadable sweep too: the
     general reader reports it)."""
-    if isinstance(spec, Mapping):
-        data, source, folder = spec, "<sweep>", Path.cwd()
-    elif isinstance(spec, (str, os.PathLike)):
-        source = examples.resolve(os.fspath(spec), "sweep")
-        try:
-            data = read_toml(source, "sweep")
-        except SceneError:
-            return None
-        folder = Path(source).resolve().parent
-    else:
+    try:
+        data, source, folder = _read(spec)
+    except SceneError:
         return None
     sc = data.get("scene")
     if isinstance(sc, str):
@@ -135,47 +137,45 @@ def load(spec) -> Spec:
     most ``scene.MAX_SCENE_BYTES``, nothing special such as /dev/zero or a FIFO); a key named
     twice in any spelling (quoted or dotted) is refused, as is a table that names no key.
     """
-    if isinstance(spec, Mapping):
-        source, data, folder = "<sweep>", spec, Path.cwd()
-    elif isinstance(spec, (str, os.PathLike)):
-        source = examples.resolve(os.fspath(spec), "sweep")  # a bare name: a shipped example
-        data = read_toml(source, "sweep")
-        folder = Path(source).resolve().parent
-    else:
-        raise SceneError(f"<sweep>: sweep: must be a path to a TOML file or a dict, not {type(spec).__name__}")
-    for k in data:
-        if k not in _SPEC_KEYS:
-            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
+    data, source, folder = _read(spec)
 
-    # the base scene
-    if "scene" not in data:
-        _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
-    sc = data["scene"]
-    files = (source,) if source != "<sweep>" else ()
-    if isinstance(sc, str):
-        path = _scene_path(source, folder, sc)
-        files += (path,)
-        raw = read_toml(path)  # read once, with the scene files' checks
+    def read(raw, where):  # a scene file's errors name it; an inline scene's, scene.<key>
         try:
-            base = load_scene(raw)
+            return load_scene(raw)
         except SceneError as exc:
-            raise _scene_error(path, exc, "") from None  # its errors name the scene file
-    elif isinstance(sc, Mapping):
-        raw = copy.deepcopy(dict(sc))
-        try:
-            base = load_scene(raw)
-        except SceneError as exc:
-            raise _scene_error(source, exc, "scene.") from None
-    else:
-        _fail(source, "scene", f"must be a path or a table, got {sc!r}")
-    if "title" in data and "title" not in raw and isinstance(data["title"], str):
-        raw["title"] = data["title"]
+            raise _scene_error(where, exc, "" if where != source else "scene.") from None
 
+    raw, base, files = base_scene(data, source, folder, read)
     keys, shape, columns = _points(source, data, raw, base)
     names, options = _measures(source, data)
     out = Spec(source, base, raw, keys, shape, columns, names, options, files=files)
     build(out)
     return out
+
+
+def base_scene(data, source: str, folder: Path, read):
+    """(the base scene as a dict, ``read(raw, where)`` of it, the files read) of a sweep's
+    ``data``: its keys checked, its ``scene`` a path relative to ``folder`` (read once, with the
+    scene files' checks; ``where`` the path) or an inline table (``where`` the sweep's
+    ``source``); the sweep's title given to a scene without one."""
+    for k in data:
+        if k not in _SPEC_KEYS:
+            _fail(source, k, f"unknown key (the keys of a sweep: {', '.join(_SPEC_KEYS)})")
+    if "scene" not in data:
+        _fail(source, "scene", "missing (a path relative to the sweep file, or an inline [scene] table)")
+    sc = data["scene"]
+    files = (source,) if source != "<sweep>" else ()
+    if isinstance(sc, str):
+        where = _scene_path(source, folder, sc)
+        files, raw = files + (where,), read_toml(where)
+    elif isinstance(sc, Mapping):
+        where, raw = source, copy.deepcopy(dict(sc))
+    else:
+        _fail(source, "scene", f"must be a path or a table, got {sc!r}")
+    base = read(raw, where)
+    if "title" in data and "title" not in raw and isinstance(data["title"], str):
+        raw["title"] = data["title"]
+    return raw, base, files
 
 
 def _points(source, data, raw, base):
@@ -235,7 +235,11 @@ def grid_or_random(source, data, check_key, n_max: int = 10**9):
     return tuple(cols), None, cols, distinct
 
 
-def _check_key(source, where, key, variable, raw):
+def _check_key(source, where, key, variable, raw,
+               what="a scene key that takes a number (e.g. initial.beta, body.I3, gravity.l, initial.omega.0)"):
+    """Refuse a key ``where`` that no point may vary: not in ``variable`` (the keys registry:
+    :func:`derive.sweeps.keys.variable_keys` or ``contact_keys``), a table the scene ``raw``
+    lacks, a user term's param it lacks, the rates of a scene given ``omega`` or the reverse."""
     if key.startswith("simulate.") or key == "title":
         _fail(source, where, "cannot be varied (the integration settings are shared by every point)")
     term = term_key(key)
@@ -251,8 +255,7 @@ def _check_key(source, where, key, variable, raw):
                                  f"the scene gives a value)")
         return
     if key not in variable:
-        _fail(source, where, "not a scene key that takes a number (e.g. initial.beta, body.I3, "
-                             "gravity.l, initial.omega.0)")
+        _fail(source, where, f"not {what}")
     table, name, index, _ = variable[key]
     if table not in ("body", "initial") and table not in raw:
         _fail(source, where, f"the scene has no [{table}] table")
@@ -307,23 +310,15 @@ def _measures(source, data, contact: bool = False):
     """The measures' names and options; ``contact``: a sweep over a ``[contact]`` scene, which
     takes the measures with a ``contact`` function only (and the others never take those)."""
     default = ms.CONTACT_DEFAULT if contact else ms.DEFAULT
-    names, options = list(default), {}
+    options = {}
     if "measure" in data and "measures" in data:
         _fail(source, "measure", "give [measure] or measures, not both")
-    if "measures" in data:
-        names = data["measures"]
-        where = "measures"
-        extra = {}
-    elif "measure" in data:
-        table = data["measure"]
-        if not isinstance(table, Mapping):
-            _fail(source, "measure", "must be a table with names = [...]")
-        names = table.get("names", list(default))
-        where = "measure.names"
-        extra = {k: v for k, v in table.items() if k != "names"}
-    else:
-        extra = {}
-        where = "measure.names"
+    table = data.get("measure", {})
+    if not isinstance(table, Mapping):
+        _fail(source, "measure", "must be a table with names = [...]")
+    names = data["measures"] if "measures" in data else table.get("names", list(default))
+    where = "measures" if "measures" in data else "measure.names"
+    extra = {k: v for k, v in table.items() if k != "names"}
     if isinstance(names, str):
         names = [names]
     if not isinstance(names, (list, tuple)) or not names or not all(isinstance(n, str) for n in names):

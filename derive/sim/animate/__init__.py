@@ -87,16 +87,11 @@ def write(res, path, fps=None, speed=None):
     motion.check_settings(fps, speed)
     if on_table(res):  # a top on a table: the body at its place on the plane, the track on it
         fr, writer = table.writer(res, fmt, fps, speed, _title(res))
-        write_all({path: writer}, inputs=inputs)
-        return fr
-    fr, mesh = prepare(res, fps, speed)
-    if fmt == "html":
-        text = page.page_html(fr, mesh).encode("utf-8")
-        writer = lambda fh: fh.write(text)  # noqa: E731
-    elif fmt == "gif":
-        writer = lambda fh: draw.write_gif(fh, fr, mesh)  # noqa: E731
     else:
-        writer = lambda fh: draw.write_mp4(fh, fr, mesh)  # noqa: E731
+        fr, mesh = prepare(res, fps, speed)
+        text = page.page_html(fr, mesh).encode("utf-8") if fmt == "html" else None
+        writer = {"html": lambda fh: fh.write(text), "gif": lambda fh: draw.write_gif(fh, fr, mesh),
+                  "mp4": lambda fh: draw.write_mp4(fh, fr, mesh)}[fmt]
     write_all({path: writer}, inputs=inputs)
     return fr
 

@@ -14,7 +14,6 @@ GIF: Pillow, each frame reduced to a palette of :data:`GIF_COLORS` colours witho
 """
 from __future__ import annotations
 
-import io
 import math
 import os
 import shutil
@@ -82,25 +81,36 @@ def _split(points: np.ndarray, V: np.ndarray):
     return (far_x, far_y), (near_x, near_y)
 
 
+def canvas(pixels, xlim, ylim):
+    """(figure, its Agg canvas, axes filling it without frame, equal aspect, these limits): the
+    Agg canvas itself, not pyplot, so that a Jupyter user's backend is left alone."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(pixels[0] / 100, pixels[1] / 100), dpi=100, facecolor="white")
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    return fig, FigureCanvasAgg(fig), ax
+
+
+def short(title: str) -> str:
+    """A title cut to :data:`TITLE_CHARS` (the HTML page shows it whole)."""
+    return title if len(title) <= TITLE_CHARS else title[:TITLE_CHARS - 1] + "…"
+
+
 class Painter:
     """One matplotlib figure redrawn per frame (artists updated in place)."""
 
     def __init__(self, frames: Frames, mesh: Mesh, pixels: int = PIXELS):
-        # (the Agg canvas itself, not pyplot: a Jupyter user's backend is left alone)
         from matplotlib.collections import PolyCollection
-        from matplotlib.figure import Figure
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
 
         self.fr, self.mesh, self.V = frames, mesh, view_matrix()
         self.normals = mesh.normals()
-        dpi = 100
-        self.fig = Figure(figsize=(pixels[0] / dpi, pixels[1] / dpi), dpi=dpi, facecolor="white")
-        self.canvas = FigureCanvasAgg(self.fig)
-        ax = self.ax = self.fig.add_axes((0, 0, 1, 1))
-        ax.set_xlim(-1.3, 1.3)
-        ax.set_ylim(-1.3 - 2.6 * (pixels[1] / pixels[0] - 1) - 0.1, 1.4)
-        ax.set_aspect("equal")
-        ax.axis("off")
+        self.fig, self.canvas, ax = canvas(pixels, (-1.3, 1.3), (-1.3 - 2.6 * (pixels[1] / pixels[0] - 1) - 0.1, 1.4))
+        self.ax = ax
         s = np.linspace(0, 2 * np.pi, 121)
         for circle in (np.stack([np.cos(s), np.sin(s), 0 * s], 1), np.stack([np.cos(s), 0 * s, np.sin(s)], 1),
                        np.stack([0 * s, np.cos(s), np.sin(s)], 1)):
@@ -126,9 +136,7 @@ class Painter:
         self.background = None
         ax.text(-1.27, -1.17, "\n".join(_wrap(n, 70) for n in frames.notes), fontsize=5.2, va="top",
                 color="#333333", linespacing=1.25)
-        if frames.title:
-            title = frames.title if len(frames.title) <= TITLE_CHARS else frames.title[:TITLE_CHARS - 1] + "…"
-            ax.text(-1.27, 1.37, title, fontsize=7, va="top", color="#222222", weight="bold")
+        ax.text(-1.27, 1.37, short(frames.title), fontsize=7, va="top", color="#222222", weight="bold")
 
     def draw(self, k: int) -> np.ndarray:
         """Frame k as an RGB array (height, width, 3)."""
@@ -240,12 +248,3 @@ def encode_mp4(fh, pictures_, fps: int) -> None:
 def write_mp4(fh, frames: Frames, mesh: Mesh) -> None:
     """The animation as H.264 MP4 into the binary file ``fh`` (:func:`encode_mp4`)."""
     encode_mp4(fh, pictures(frames, mesh), frames.fps)
-
-
-def png_bytes(frames: Frames, mesh: Mesh, k: int) -> bytes:
-    """Frame k as PNG bytes (a still for a summary or a test)."""
-    from PIL import Image
-
-    buf = io.BytesIO()
-    Image.fromarray(Painter(frames, mesh).draw(k)).save(buf, format="PNG")
-    return buf.getvalue()

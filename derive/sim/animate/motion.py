@@ -95,12 +95,10 @@ class Mesh:
 
     def normals(self) -> np.ndarray:
         """Outward unit normals (f, 3), from each face's first three vertices."""
-        out = []
-        for f in self.faces:
-            a, b, c = self.verts[f[0]], self.verts[f[1]], self.verts[f[2]]
-            n = np.cross(b - a, c - a)
-            out.append(n / (np.linalg.norm(n) or 1.0))
-        return np.array(out)
+        a, b, c = self.verts[np.array([f[:3] for f in self.faces])].transpose(1, 0, 2)
+        n = np.cross(b - a, c - a)
+        norm = np.linalg.norm(n, axis=1, keepdims=True)
+        return n / np.where(norm > 0, norm, 1.0)
 
 
 def _gravity(scene):
@@ -275,18 +273,11 @@ def default_speed(res) -> float:
     return float(min(max(speed, span / hi), span / lo))
 
 
-def _hat(w: np.ndarray) -> np.ndarray:
-    z = np.zeros(w.shape[:-1])
-    return np.stack([np.stack([z, -w[..., 2], w[..., 1]], -1), np.stack([w[..., 2], z, -w[..., 0]], -1),
-                     np.stack([-w[..., 1], w[..., 0], z], -1)], -2)
-
-
 def _exp(w: np.ndarray) -> np.ndarray:
-    """exp([w]ₓ) for rotation vectors w (..., 3): I + sin θ K + (1 − cos θ) K², K = [w/θ]ₓ."""
-    th = np.linalg.norm(w, axis=-1)[..., None, None]
-    safe = np.where(th > 0, th, 1.0)
-    K = _hat(w) / safe
-    return np.eye(3) + np.sin(th) * K + (1 - np.cos(th)) * (K @ K)
+    """exp([w]ₓ) for rotation vectors w (k, 3): the rotation by |w| about w."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_rotvec(w).as_matrix()
 
 
 def _orthogonal(M: np.ndarray) -> np.ndarray:
@@ -323,6 +314,20 @@ def _interp(ts, values, t):
     return np.stack([np.interp(t, ts, values[:, j]) for j in range(values.shape[1])], axis=1)
 
 
+def frame_times(res, fps, speed) -> tuple[int, float, np.ndarray, np.ndarray]:
+    """(fps, speed, the result's times, the frame times t₀ + k·speed/fps up to its end), the
+    defaults filled in; SceneError for settings no animation can have or too many frames."""
+    check_settings(fps, speed)
+    fps = int(fps or DEFAULT_FPS)
+    speed = float(speed or default_speed(res))
+    ts = np.asarray(res.t, dtype=float)
+    count = int(math.floor((ts[-1] - ts[0]) * fps / speed * (1 + 1e-12))) + 1
+    if count > MAX_FRAMES:
+        raise SceneError(f"animate: speed: {count} frames at {fps} frames per second and {speed:g} simulated "
+                         f"seconds per second; at most {MAX_FRAMES} (raise the speed, --speed, or lower fps, --fps)")
+    return fps, speed, ts, ts[0] + np.arange(count) * (speed / fps)
+
+
 def frames(res, fps: int | None = None, speed: float | None = None, title: str = "") -> Frames:
     """The motion of ``res`` at the frames of an animation.
 
@@ -343,15 +348,7 @@ def frames(res, fps: int | None = None, speed: float | None = None, title: str =
         Frame k at simulated time t₀ + k·speed/fps, up to the end of the run: ⌊(t_end − t₀)·
         fps/speed⌋ + 1 frames.
     """
-    check_settings(fps, speed)
-    fps = int(fps or DEFAULT_FPS)
-    speed = float(speed or default_speed(res))
-    ts = np.asarray(res.t, dtype=float)
-    count = int(math.floor((ts[-1] - ts[0]) * fps / speed * (1 + 1e-12))) + 1
-    if count > MAX_FRAMES:
-        raise SceneError(f"animate: speed: {count} frames at {fps} frames per second and {speed:g} simulated "
-                         f"seconds per second; at most {MAX_FRAMES} (raise the speed, --speed, or lower fps, --fps)")
-    t = ts[0] + np.arange(count) * (speed / fps)
+    fps, speed, ts, t = frame_times(res, fps, speed)
     R = rotation_at(res, t)
     a, b, g = euler_angles(R, unwrap=False)
     Lb = _interp(ts, np.asarray(res.L, dtype=float), t)

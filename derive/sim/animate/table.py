@@ -30,7 +30,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from derive.errors import SceneError
 from derive.sim.animate import draw, motion
 from derive.sim.animate.motion import BODY, SPINDLE, STRIPE, Mesh
 
@@ -140,19 +139,9 @@ def body_mesh(scene) -> Mesh:
 
 def frames(res, fps=None, speed=None, title: str = "") -> TableFrames:
     """The motion of a contact result at the frames (spacing speed/fps, up to t_end)."""
-    motion.check_settings(fps, speed)
-    fps = int(fps or motion.DEFAULT_FPS)
-    speed = float(speed or motion.default_speed(res))
-    ts = np.asarray(res.t, dtype=float)
-    count = int(math.floor((ts[-1] - ts[0]) * fps / speed * (1 + 1e-12))) + 1
-    if count > motion.MAX_FRAMES:
-        raise SceneError(f"animate: speed: {count} frames at {fps} frames per second and {speed:g} simulated "
-                         f"seconds per second; at most {motion.MAX_FRAMES} (raise the speed, --speed, or "
-                         f"lower fps, --fps)")
-    t = ts[0] + np.arange(count) * (speed / fps)
+    fps, speed, ts, t = motion.frame_times(res, fps, speed)
     R = motion.rotation_at(res, t)
-    com, contact = (np.stack([np.interp(t, ts, a[:, j]) for j in range(3)], axis=1)
-                    for a in (np.asarray(res.com), np.asarray(res.contact)))
+    com, contact = (motion._interp(ts, np.asarray(a, dtype=float), t) for a in (res.com, res.contact))
     at = np.clip(np.searchsorted(ts, t, side="right") - 1, 0, len(ts) - 1)
     phase = np.asarray(res.phase).astype(str)
     rate = float(np.max(np.abs(res.omega[:, 2])))
@@ -169,22 +158,15 @@ class TablePainter:
     """One matplotlib figure redrawn per frame (the Agg canvas, headless)."""
 
     def __init__(self, fr: TableFrames, mesh: Mesh, pixels=draw.PIXELS):
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.collections import LineCollection, PolyCollection
-        from matplotlib.figure import Figure
+        from matplotlib.lines import Line2D
 
         self.fr, self.mesh, self.V = fr, mesh, draw.view_matrix()
         self.normals = mesh.normals()
         self.half = WINDOW * float(np.max(np.linalg.norm(mesh.verts, axis=1)))
-        dpi = 100
-        self.fig = Figure(figsize=(pixels[0] / dpi, pixels[1] / dpi), dpi=dpi, facecolor="white")
-        self.canvas = FigureCanvasAgg(self.fig)
-        ax = self.ax = self.fig.add_axes((0, 0, 1, 1))
         aspect = pixels[1] / pixels[0]
-        ax.set_xlim(-1.0, 1.0)
-        ax.set_ylim(-1.0 * aspect + 0.25, 1.0 * aspect - 0.25 + 0.25)
-        ax.set_aspect("equal")
-        ax.axis("off")
+        self.fig, self.canvas, ax = draw.canvas(pixels, (-1.0, 1.0), (0.25 - aspect, aspect))
+        self.ax = ax
         self.grid = LineCollection([], colors=GRID, linewidths=0.6, zorder=1)
         ax.add_collection(self.grid)
         self.com_track, = ax.plot([], [], color="0.55", lw=0.7, zorder=2)
@@ -193,8 +175,6 @@ class TablePainter:
         ax.add_collection(self.body)
         self.point, = ax.plot([], [], "o", ms=3, color="black", zorder=5)
         # the legend (it also puts the phases' colours into every frame's palette)
-        from matplotlib.lines import Line2D
-
         handles = [Line2D([], [], color=c, lw=2, label=f"contact, {p}") for p, c in PHASE_COLORS.items()
                    if p != "flight"] + [Line2D([], [], color="0.55", lw=1, label="centre of mass")]
         ax.legend(handles=handles, loc="upper right", fontsize=5.5, frameon=False,
@@ -202,9 +182,7 @@ class TablePainter:
         self.clock = ax.text(-0.97, ax.get_ylim()[1] - 0.12, "", fontsize=7, va="top")
         ax.text(-0.97, ax.get_ylim()[0] + 0.02, "\n".join(draw._wrap(n, 70) for n in fr.notes),
                 fontsize=5.2, va="bottom", color="#333333", linespacing=1.25)
-        if fr.title:
-            title = fr.title if len(fr.title) <= draw.TITLE_CHARS else fr.title[:draw.TITLE_CHARS - 1] + "…"
-            ax.text(-0.97, ax.get_ylim()[1] - 0.02, title, fontsize=7, va="top", weight="bold")
+        ax.text(-0.97, ax.get_ylim()[1] - 0.02, draw.short(fr.title), fontsize=7, va="top", weight="bold")
 
     def _screen(self, X: np.ndarray, centre: np.ndarray) -> np.ndarray:
         return ((X - centre) @ self.V.T)[..., :2] / self.half
@@ -232,16 +210,9 @@ class TablePainter:
             pts = self._screen(np.vstack([fr.track[upto], fr.contact[k][None]]), centre)
             mask = np.append(fr.track_phase[upto] == p, fr.phase[k] == p) & (p != "flight")
             line.set_data(np.where(mask, pts[:, 0], np.nan), np.where(mask, pts[:, 1], np.nan))
-        world = fr.com[k] + self.mesh.verts @ fr.R[k].T
-        P = (world - centre) @ self.V.T / self.half
-        N = self.normals @ (self.V @ fr.R[k]).T
-        depth = np.array([P[f, 2].mean() for f in self.mesh.faces])
-        polys, colors = [], []
-        for i in np.argsort(depth):
-            if N[i, 2] > 1e-9:
-                polys.append(P[self.mesh.faces[i], :2])
-                colors.append(draw.shade(self.mesh.colors[i], N[i]))
-        self.body.set_verts(polys)
+        polys, colors = draw.faces_at(self.mesh, self.normals, fr.R[k], self.V)
+        shift = self._screen(fr.com[k][None], centre)[0]
+        self.body.set_verts([poly / self.half + shift for poly in polys])
         self.body.set_facecolor(colors)
         self.body.set_edgecolor(colors)
         p = self._screen(fr.contact[k][None], centre)[0]
@@ -257,16 +228,11 @@ def _keep() -> list:
     return [tuple(int(c[i:i + 2], 16) for i in (1, 3, 5)) for c in PHASE_COLORS.values()]
 
 
-def gif_bytes(fr: TableFrames, mesh: Mesh) -> bytes:
-    """The animation as GIF bytes (:func:`derive.sim.animate.draw.encode_gif`)."""
-    buf = io.BytesIO()
-    draw.encode_gif(buf, TablePainter(fr, mesh).draw, len(fr.t), fr.fps, _keep())
-    return buf.getvalue()
-
-
 def page_html(fr: TableFrames, mesh: Mesh) -> str:
     """A self-contained page: the animation (an embedded GIF), its title and caption."""
-    data = base64.b64encode(gif_bytes(fr, mesh)).decode("ascii")
+    buf = io.BytesIO()
+    draw.encode_gif(buf, TablePainter(fr, mesh).draw, len(fr.t), fr.fps, _keep())
+    data = base64.b64encode(buf.getvalue()).decode("ascii")
     notes = "".join(f"<p>{html.escape(n)}</p>" for n in fr.notes + [f"The body: {mesh.shape}."])
     title = html.escape(fr.title or "derive animate")
     return (f'<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n<title>{title}</title>\n'
