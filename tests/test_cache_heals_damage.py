@@ -7,9 +7,7 @@ Every run goes through the command line in a fresh process with a fresh ``DERIVE
 the cache lists and clears is asked of ``derive cache`` in this process); the damaged caches are
 copies of one undamaged cache built once per session, and each healed run is compared with the
 undamaged run's results."""
-import contextlib
 import hashlib
-import io
 import os
 import re
 import shlex
@@ -21,8 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from derive import cli
+from cli_in_process import derive_main
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "free_symmetric.toml"  # no gravity: the cheapest model to compile
@@ -66,17 +63,7 @@ def snapshot(*paths: Path) -> dict:
 
 def cache_command(cache: Path, *argv: str) -> subprocess.CompletedProcess:
     """``derive cache ...`` with ``DERIVE_CACHE=cache``, run by ``derive.cli.main`` in this process."""
-    out, err, before = io.StringIO(), io.StringIO(), os.environ.get("DERIVE_CACHE")
-    os.environ["DERIVE_CACHE"] = str(cache)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            rc = cli.main(["cache", *argv])
-    finally:
-        if before is None:
-            del os.environ["DERIVE_CACHE"]
-        else:
-            os.environ["DERIVE_CACHE"] = before
-    return subprocess.CompletedProcess(["derive", "cache", *argv], rc, out.getvalue(), err.getvalue())
+    return derive_main("cache", *argv, env={"DERIVE_CACHE": str(cache)})
 
 
 def listed(cache: Path) -> list[str]:

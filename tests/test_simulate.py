@@ -1,13 +1,9 @@
 """Scenes through the whole pipeline: outputs of the contract, effects, formulations, errors."""
-import contextlib
-import io
-import subprocess
-
 import numpy as np
 import pytest
 
 import derive
-from derive import cli
+from cli_in_process import derive_main
 from derive.bench.internals import kernel_for, model_for
 from derive.sim import result, simulation
 from derive.symbolic.formulations import REGISTRY
@@ -29,12 +25,7 @@ def top(**over):
     return {k: v for k, v in scene.items() if v is not None}
 
 
-def run_cli(*args):
-    """``derive ARGS`` in this process (``derive.cli.main``): its exit status and streams."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        rc = cli.main(list(args))
-    return subprocess.CompletedProcess(["derive", *args], rc, out.getvalue(), err.getvalue())
+run_cli = derive_main
 
 
 def test_cli_writes_every_output_array(tmp_path):
