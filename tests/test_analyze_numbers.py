@@ -18,14 +18,13 @@ from __future__ import annotations
 import json
 import math
 import re
-import subprocess
-import sys
 import tomllib
 from pathlib import Path
 
 import mpmath as mp
 import numpy as np
 import pytest
+from cli_in_process import derive_main
 import sympy as sp
 from scipy.spatial.transform import Rotation
 
@@ -263,8 +262,7 @@ def named_runs(analysed, tmp_path_factory) -> dict:
         res = derive.simulate(d)
         out[name] = (analysis.analyze(d).to_json(), set(res.arrays()), res)
     npz = tmp_path_factory.mktemp("npz") / "kov.npz"
-    p = subprocess.run([sys.executable, "-m", "derive", "simulate", str(SCENES / "kovalevskaya_top.toml"),
-                        "-o", str(npz)], capture_output=True, text=True, timeout=120)
+    p = derive_main("simulate", SCENES / "kovalevskaya_top.toml", "-o", npz)
     assert p.returncode == 0, p.stderr
     with np.load(npz) as f:
         js, _, res = out["kovalevskaya_top"]

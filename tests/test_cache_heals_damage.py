@@ -3,9 +3,10 @@ the marks it wrote, never by a name pattern, and never reaches through a symboli
 heals every damage to a cached library, checksum, derived-model description or C source once,
 after which the next run is warm.
 
-Every run goes through the command line in a fresh process with a fresh ``DERIVE_CACHE``; the
-damaged caches are copies of one undamaged cache built once per session, and each healed run is
-compared with the undamaged run's results."""
+Every run goes through the command line in a fresh process with a fresh ``DERIVE_CACHE`` (what
+the cache lists and clears is asked of ``derive cache`` in this process); the damaged caches are
+copies of one undamaged cache built once per session, and each healed run is compared with the
+undamaged run's results."""
 import hashlib
 import os
 import re
@@ -18,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_in_process import derive_main
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "free_symmetric.toml"  # no gravity: the cheapest model to compile
@@ -59,9 +61,14 @@ def snapshot(*paths: Path) -> dict:
     return out
 
 
+def cache_command(cache: Path, *argv: str) -> subprocess.CompletedProcess:
+    """``derive cache ...`` with ``DERIVE_CACHE=cache``, run by ``derive.cli.main`` in this process."""
+    return derive_main("cache", *argv, env={"DERIVE_CACHE": str(cache)})
+
+
 def listed(cache: Path) -> list[str]:
     """The names `derive cache` lists."""
-    r = derive_cli(cache, "cache")
+    r = cache_command(cache)
     assert r.returncode == 0 and r.stderr == "", r.stderr
     return [ln.split()[0] for ln in r.stdout.splitlines()[1:-1]]
 
@@ -146,7 +153,7 @@ def test_foreign_hidden_names_survive_a_cold_compile_and_clear(cache, tmp_path):
     assert snapshot(*mine) == before
     names = listed(cache)
     assert library(cache).name in names and not set(FOREIGN) & set(names)
-    r = derive_cli(cache, "cache", "--clear")
+    r = cache_command(cache, "--clear")
     assert r.returncode == 0 and r.stdout.startswith("removed 2 entries"), r.stdout  # .so, .sha256
     assert snapshot(*mine) == before
     assert sorted(p.name for p in cache.iterdir()) == sorted(FOREIGN)  # the folder stays too
@@ -154,7 +161,7 @@ def test_foreign_hidden_names_survive_a_cold_compile_and_clear(cache, tmp_path):
 
 def test_clear_removes_the_cache_folder_it_leaves_empty(cache, pristine):
     copy_of(pristine[0], cache)
-    r = derive_cli(cache, "cache", "--clear")
+    r = cache_command(cache, "--clear")
     assert r.returncode == 0 and r.stdout.startswith("removed 4 entries"), r.stdout
     assert not cache.exists()
 
@@ -184,7 +191,7 @@ def test_a_models_symlink_is_never_followed_by_a_compile_or_clear(cache, tmp_pat
     assert r.returncode == 0 and r.stderr == "", r.stderr  # nothing derived: nothing to say
     assert snapshot(outside) == before
     assert "models" not in listed(cache)
-    r = derive_cli(cache, "cache", "--clear")
+    r = cache_command(cache, "--clear")
     assert r.returncode == 0 and r.stdout.startswith("removed 2 entries"), r.stdout
     assert snapshot(outside) == before and (cache / "models").is_symlink()
 

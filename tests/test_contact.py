@@ -243,34 +243,26 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
 
 
-def _compiles_clean(pairs):
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import source
+def _compiles_clean(names):
+    """Each evaluator as the libraries compile it (``generated/contact``, which test_codegen
+    holds equal to its derivation), with the phase loop and the runtime, under the strict flags."""
+    from derive.contact import kernel as ck
     from derive.runtime.cbuild import check_compiles
 
-    for shape, law in pairs:
-        check_compiles({"c.c": source(shape, law), LOOP: loop_source(), **runtime_sources()}, "c.c")
+    for name in names:
+        check_compiles({"c.c": ck.text(name), ck.LOOP: ck.text(ck.LOOP), **ck.runtime_sources()}, "c.c")
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import reduced_source
-    from derive.runtime.cbuild import check_compiles
-
-    _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
-    check_compiles({"c.c": reduced_source("point"), LOOP: loop_source(), **runtime_sources()}, "c.c")  # the others: slow
+    # a representative of each kind (no contact force, sliding, rolling, reduced): the others are slow
+    _compiles_clean(["contact_point_none.c", "contact_sphere_coulomb.c", "contact_sphere_rolling.c",
+                     "contact_point_reduced.c"])
 
 
 @pytest.mark.slow
 def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import reduced_source
-    from derive.runtime.cbuild import check_compiles
-
-    _compiles_clean([(s, law) for s in ("point", "sphere", "disc")
-                     for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling")])
-    for shape in ("point", "sphere", "disc"):
-        check_compiles({"c.c": reduced_source(shape), LOOP: loop_source(), **runtime_sources()}, "c.c")
+    _compiles_clean([f"contact_{s}_{law}.c" for s in ("point", "sphere", "disc")
+                     for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling", "reduced")])
 
 
 def test_exact_coulomb_moves_less_than_a_thousandth_when_the_tolerance_is_tightened_tenfold():

@@ -80,8 +80,13 @@ def _cycles(graph: dict[str, set[str]]) -> list[list[str]]:
     return out
 
 
-def test_no_import_cycle_counting_imports_inside_functions():
-    graph = _imports(_modules())
+@pytest.fixture(scope="module")
+def graph() -> dict[str, set[str]]:
+    """derive's import graph (every module parsed once for the tests that read it)."""
+    return _imports(_modules())
+
+
+def test_no_import_cycle_counting_imports_inside_functions(graph):
     assert len(graph) > 40
     assert _cycles(graph) == []
 
@@ -113,8 +118,7 @@ def test_each_stage_says_what_it_may_import():
         assert "May import" in doc, init
 
 
-def test_nothing_outside_the_bench_imports_it_but_the_command_line():
-    graph = _imports(_modules())
+def test_nothing_outside_the_bench_imports_it_but_the_command_line(graph):
     users = sorted(m for m, deps in graph.items() if not m.startswith("derive.bench")
                    and any(d.startswith("derive.bench") for d in deps))
     assert users == ["derive.cli"]

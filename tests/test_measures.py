@@ -5,12 +5,11 @@ from __future__ import annotations
 import copy
 import functools
 import platform
-import subprocess
-import sys
 import tomllib
 
 import numpy as np
 import pytest
+from cli_in_process import derive_main
 
 import derive
 from derive.codegen import sources
@@ -289,8 +288,7 @@ def test_cli_bad_integral_name_exits_2(tmp_path):
                      '[vary]\ninitial.beta = { values = [0.5] }\n'
                      '[measure]\nnames = ["integral_drift"]\nintegral_drift = { integral = "K" }\n')
     out = tmp_path / "r.parquet"
-    p = subprocess.run([sys.executable, "-m", "derive", "sweep", str(sweep), "-o", str(out)],
-                       capture_output=True, text=True, timeout=120)
+    p = derive_main("sweep", sweep, "-o", out)
     assert p.returncode == 2 and not out.exists()
     assert p.stderr.strip().splitlines() == [
         f"error: {sweep}: measure.integral_drift.integral: must be one of case, L_squared, L_3, "

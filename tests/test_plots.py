@@ -41,14 +41,17 @@ def damped():
 
 
 _FIGURES: dict[int, object] = {}
+_DRAWN: set[int] = set()
 
 
-def _fig(res):
-    """The drawn figure of ``res``, built once per module (the tests only read it)."""
+def _fig(res, drawn=True):
+    """The figure of ``res``, built once per module (the tests only read it); drawn (tick
+    labels and layout placed) once a test asks for it drawn."""
     if id(res) not in _FIGURES:
-        fig = plots.figure(res)
-        fig.canvas.draw()
-        _FIGURES[id(res)] = fig
+        _FIGURES[id(res)] = plots.figure(res)
+    if drawn and id(res) not in _DRAWN:
+        _FIGURES[id(res)].canvas.draw()
+        _DRAWN.add(id(res))
     return _FIGURES[id(res)]
 
 
@@ -60,6 +63,7 @@ def _close_figures():
     for fig in _FIGURES.values():
         plt.close(fig)
     _FIGURES.clear()
+    _DRAWN.clear()
 
 
 def _axes(fig, name):
@@ -85,7 +89,7 @@ def test_panels_of_each_kind_of_scene(symmetric, asymmetric, damped, heavy):
     assert plots.panels(damped) == ["beta", "omega", "energy", "balance", "top", "sphere"]
     assert plots.panels(heavy) == ["beta", "omega", "energy", "momenta", "top", "sphere"]
     for res in (symmetric, asymmetric, damped, heavy):
-        fig = _fig(res)
+        fig = _fig(res, drawn=False)
         try:
             names = [ax.get_label() for ax in fig.axes if not ax.get_label().endswith(":twin")]
             assert names == plots.panels(res)
@@ -291,7 +295,7 @@ def test_deviation_from_zero_is_absolute_and_labelled_so():
 
 def test_the_grid_has_no_empty_cell(symmetric, asymmetric, damped, heavy):
     for res in (symmetric, asymmetric, damped, heavy):
-        fig = _fig(res)
+        fig = _fig(res, drawn=False)
         panels = [ax for ax in fig.axes if not ax.get_label().endswith(":twin")]
         rows, columns = panels[0].get_subplotspec().get_gridspec().get_geometry()
         assert rows * columns == len(panels), plots.panels(res)
@@ -299,7 +303,7 @@ def test_the_grid_has_no_empty_cell(symmetric, asymmetric, damped, heavy):
 
 def test_exactly_conserved_momenta_are_said_in_words_not_drawn(heavy):
     assert np.all(heavy.p_alpha == heavy.p_alpha[0]) and np.all(heavy.p_gamma == heavy.p_gamma[0])
-    ax = _axes(_fig(heavy), "momenta")
+    ax = _axes(_fig(heavy, drawn=False), "momenta")
     assert not ax.axison and ax.get_lines() == []
     words = " ".join(t.get_text() for t in ax.texts)
     assert "conserved exactly" in words and f"{heavy.t.size} samples" in words

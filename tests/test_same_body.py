@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from cli_in_process import derive_main
 
 import derive
 
@@ -372,9 +373,7 @@ def test_cli_json_names_the_model_that_ran(tmp_path):
     for name, scene in (("plain", TOP), ("template", spelt(damping={"c": 0.0}))):
         path = tmp_path / f"{name}.toml"
         path.write_text(toml(scene))
-        proc = subprocess.run([sys.executable, "-m", "derive", "simulate", str(path), "--json"],
-                              capture_output=True, text=True, timeout=60, cwd=tmp_path,
-                              env={**os.environ, "PYTHONPATH": str(ROOT)})
+        proc = derive_main("simulate", path, "--json", cwd=tmp_path)
         assert proc.returncode == 0, proc.stderr
         summaries.append(json.loads(proc.stdout))
     plain, template = summaries

@@ -1,11 +1,9 @@
 """Scenes through the whole pipeline: outputs of the contract, effects, formulations, errors."""
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
 import derive
+from cli_in_process import derive_main
 from derive.bench.internals import kernel_for, model_for
 from derive.sim import result, simulation
 from derive.symbolic.formulations import REGISTRY
@@ -27,8 +25,7 @@ def top(**over):
     return {k: v for k, v in scene.items() if v is not None}
 
 
-def run_cli(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "derive", *args], capture_output=True, text=True, cwd=cwd or ROOT)
+run_cli = derive_main
 
 
 def test_cli_writes_every_output_array(tmp_path):

@@ -4,7 +4,6 @@ from __future__ import annotations
 import math
 import shutil
 import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -190,7 +189,9 @@ def test_bad_sweeps_name_the_key(change, key):
     assert "\n" not in msg
 
 
-def test_cli_writes_parquet_and_map_and_refuses_bad_files(tmp_path):
+def test_cli_writes_parquet_and_map_and_refuses_bad_files(tmp_path, capsys):
+    from derive.cli import main
+
     pd = pytest.importorskip("pandas")
     scene = tmp_path / "top.toml"
     scene.write_text('[body]\nI1 = 1.0\nI3 = 0.5\n[gravity]\nM = 1.0\ng = 1.0\nl = 1.0\n'
@@ -200,20 +201,20 @@ def test_cli_writes_parquet_and_map_and_refuses_bad_files(tmp_path):
     sweep.write_text('scene = "top.toml"\n[vary]\ninitial.beta = { from = 0.1, to = 0.5, num = 3 }\n'
                      'initial.gamma_dot = { values = [3.0, 6.0] }\n[measure]\nnames = ["beta_max", "nfev"]\n')
     out, png = tmp_path / "r.parquet", tmp_path / "m.png"
-    run = [sys.executable, "-m", "derive", "sweep", str(sweep), "-o", str(out), "--plot", str(png)]
-    p = subprocess.run(run, capture_output=True, text=True, timeout=120)
-    assert p.returncode == 0, p.stderr
+    rc = main(["sweep", str(sweep), "-o", str(out), "--plot", str(png)])
+    assert rc == 0, capsys.readouterr().err
     df = pd.read_parquet(out)
     assert list(df.columns) == ["initial.beta", "initial.gamma_dot", "beta_max", "nfev", "status"]
     assert len(df) == 6 and (df.status == "ok").all() and png.stat().st_size > 10_000
     bad = tmp_path / "bad.toml"
     bad.write_text('scene = "top.toml"\n[vary]\ninitial.beta = { from = 0.1, to = 0.5 }\n')
     out2 = tmp_path / "r2.parquet"
-    p = subprocess.run([sys.executable, "-m", "derive", "sweep", str(bad), "-o", str(out2)],
-                       capture_output=True, text=True, timeout=120)
-    assert p.returncode == 2 and not out2.exists()
-    assert p.stderr.strip().splitlines() == [p.stderr.strip()]
-    assert p.stderr.startswith(f"error: {bad}: vary.initial.beta: ")
+    capsys.readouterr()
+    rc = main(["sweep", str(bad), "-o", str(out2)])
+    err = capsys.readouterr().err
+    assert rc == 2 and not out2.exists()
+    assert err.strip().splitlines() == [err.strip()]
+    assert err.startswith(f"error: {bad}: vary.initial.beta: ")
 
 
 def test_measure_registry_and_strict_c(tmp_path):

@@ -7,10 +7,10 @@ import copy
 import math
 import shutil
 import subprocess
-import sys
 
 import numpy as np
 import pytest
+from cli_in_process import derive_main
 
 import derive
 from derive.bench.reference import reference_data
@@ -235,8 +235,7 @@ def test_cli_refuses_a_fixed_step_method_with_exit_2(tmp_path):
     sweep = tmp_path / "s.toml"
     sweep.write_text('scene = "top.toml"\n[vary]\ninitial.beta = { values = [0.5] }\n')
     out = tmp_path / "r.csv"
-    p = subprocess.run([sys.executable, "-m", "derive", "sweep", str(sweep), "-o", str(out)],
-                       capture_output=True, text=True, timeout=120)
+    p = derive_main("sweep", sweep, "-o", out)
     assert p.returncode == 2 and not out.exists()
     assert p.stderr.strip().splitlines() == [p.stderr.strip()]
     assert p.stderr.startswith(f"error: {sweep}: scene.simulate.method: ")

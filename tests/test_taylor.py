@@ -394,6 +394,8 @@ import test_hard_cases_exact as _hard_exact  # noqa: E402
 NOT_APPLICABLE = {
     "test_gauss_legendre_energy_bounded_over_a_million_steps":
         "about the Gauss-Legendre and RK4 fixed-step methods by name",
+    "test_gauss_legendre_energy_bounded_while_rk4_drifts_over_two_hundred_thousand_steps":
+        "about the Gauss-Legendre and RK4 fixed-step methods by name",
     "test_fast_top_mean_precession_over_a_million_nutations":
         "checks the exact solution alone (no integration)",
     # Its premise is an error that follows the tolerance from rtol 1e-11 to 1e-12; Taylor's is

@@ -61,6 +61,12 @@ def _harness(tmp_path, flags, name):
     return compile_harness(tmp_path, flags, name, "#define ACOS derive_acos_poly\n" + HARNESS)
 
 
+@pytest.fixture(scope="module")
+def plain(tmp_path_factory):
+    """The harness built with the libraries' flags, once for the tests that run it."""
+    return _harness(tmp_path_factory.mktemp("acos"), [*DEFAULT_FLAGS], "acos")
+
+
 
 
 def _libm(x: np.ndarray) -> np.ndarray:
@@ -87,36 +93,33 @@ def arguments():
     return np.concatenate(parts)
 
 
-def test_acos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_path, arguments):
-    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
+def test_acos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(plain, arguments):
+    r = run_bits(plain, arguments)
     ref = _libm(arguments)
     assert ulps(r[:, 0], ref).max() <= 1
     assert (r[:, 0] == ref).mean() > 0.9  # (94 %): a 1-ulp bound that is not a loose one
     np.testing.assert_array_equal(r[:, 0].view(np.uint64), r[:, 1].view(np.uint64))
 
 
-def test_acos_at_the_edges_is_libm():
+def test_acos_at_the_edges_is_libm(plain):
     """±1, ±0.5 and their neighbours, ±0, tiny and subnormal arguments: libm's numbers (acos 1
     = 0 exactly, acos -1 = pi, acos of a tiny x = pi/2)."""
-    import tempfile
-    from pathlib import Path
-    with tempfile.TemporaryDirectory() as tmp:
-        r = run_bits(_harness(Path(tmp), [*DEFAULT_FLAGS], "acos"), EDGES)
+    r = run_bits(plain, EDGES)
     np.testing.assert_array_equal(r[:, 0], _libm(EDGES))
     np.testing.assert_array_equal(r[:, 1], _libm(EDGES))
 
 
-def test_acos_outside_its_domain_is_nan(tmp_path):
+def test_acos_outside_its_domain_is_nan(plain):
     x = np.array([np.nextafter(1.0, 2.0), np.nextafter(-1.0, -2.0), 1.5, -3.0, 1e300, -1e300,
                   np.inf, -np.inf, np.nan, -np.nan])
-    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), x)
+    r = run_bits(plain, x)
     assert np.isnan(r).all()
 
 
 @pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
-def test_acos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
+def test_acos_has_the_same_bits_in_the_lanes_build(tmp_path, plain, arguments):
     """The lanes driver's library is built with -march=native; its last samples must be the
     scalar driver's to the bit."""
-    plain = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "acos"), arguments)
+    scalar = run_bits(plain, arguments)
     native = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "acos_native"), arguments)
-    np.testing.assert_array_equal(plain.view(np.uint64), native.view(np.uint64))
+    np.testing.assert_array_equal(scalar.view(np.uint64), native.view(np.uint64))

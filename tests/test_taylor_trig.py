@@ -65,6 +65,12 @@ def _harness(tmp_path, flags, name):
                            f"#define TRIG_BLOCK {PREFIX}trig_block\n" + HARNESS)
 
 
+@pytest.fixture(scope="module")
+def plain(tmp_path_factory):
+    """The harness built with the libraries' flags, once for the tests that run it."""
+    return _harness(tmp_path_factory.mktemp("trig"), [*DEFAULT_FLAGS], "trig")
+
+
 
 
 def _libm(x: np.ndarray):
@@ -88,9 +94,8 @@ def arguments():
     return np.concatenate(parts)
 
 
-def test_sincos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_path, arguments):
-    exe = _harness(tmp_path, [*DEFAULT_FLAGS], "trig")
-    r = run_bits(exe, arguments)
+def test_sincos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(plain, arguments):
+    r = run_bits(plain, arguments)
     s, c = _libm(arguments)
     assert ulps(r[:, 0], s).max() <= 1 and ulps(r[:, 1], c).max() <= 1
     # equal to libm on all but a few per cent, so a 1-ulp bound is not a loose one
@@ -99,18 +104,18 @@ def test_sincos_is_within_one_ulp_of_libm_and_the_same_alone_or_in_a_block(tmp_p
     np.testing.assert_array_equal(r[:, 1].view(np.uint64), r[:, 3].view(np.uint64))
 
 
-def test_sincos_beyond_its_range_is_libm(tmp_path):
+def test_sincos_beyond_its_range_is_libm(plain):
     x = np.array([1e6, -1e6, 3e7, 1e300, -1e300, np.inf, -np.inf, np.nan])
-    r = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), x)
+    r = run_bits(plain, x)
     s, c = _libm(x)
     np.testing.assert_array_equal(r[:, 0], s)
     np.testing.assert_array_equal(r[:, 1], c)
 
 
 @pytest.mark.slow  # (the lanes' runs are the scalar runs bit for bit: test_taylor_lanes*.py)
-def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, arguments):
+def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, plain, arguments):
     """The lanes driver's library is built with -march=native: its last samples must be the
     scalar driver's to the bit, so the same arithmetic vectorised wider gives the same bits."""
-    plain = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS], "trig"), arguments)
+    scalar = run_bits(plain, arguments)
     native = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "trig_native"), arguments)
-    np.testing.assert_array_equal(plain.view(np.uint64), native.view(np.uint64))
+    np.testing.assert_array_equal(scalar.view(np.uint64), native.view(np.uint64))

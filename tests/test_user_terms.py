@@ -292,7 +292,8 @@ def test_a_batch_of_one_user_body_equals_its_single_runs():
 
 def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
     """A sweep over potential.magnet.mu: each point's largest tilt (the sweep's dense output)
-    is that of derive.simulate with the same mu, sampled finely, and differs between points."""
+    is that of derive.simulate with the same mu, sampled finely (by DOP853, the sweep's method,
+    whose library the single runs of this body share), and differs between points."""
     from derive.sweeps.spec import load
     from derive.sweeps.engine import sweep
 
@@ -307,7 +308,7 @@ def test_a_sweep_varies_a_potential_param_as_a_single_run_does():
     for i, mu in enumerate((0.1, 2.0)):
         assert table.params["potential.magnet.mu"][i] == mu
         single = derive.simulate(scene(potential=[magnet("-mu*B*R13", mu=mu, B=1.5)],
-                                       simulate={"t_end": 2.0, "samples": 4001}))
+                                       simulate={"t_end": 2.0, "samples": 4001}), method="dop853")
         assert got[i] == pytest.approx(single.beta.max(), abs=1e-6)
     with pytest.raises(SceneError, match=r"vary\.potential\.magnet\.nu: .*no param 'nu'"):
         load({**spec, "vary": {"potential.magnet.nu": {"values": [0.1]}}})

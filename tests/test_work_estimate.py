@@ -4,10 +4,9 @@ estimate is a floor, below the steps every example scene really takes, so no run
 finish is refused."""
 from __future__ import annotations
 
-import subprocess
-import sys
 
 import pytest
+from cli_in_process import derive_main
 
 import derive
 import derive.sim.simulation as simulation
@@ -43,8 +42,7 @@ def test_a_top_spun_at_1e9_is_refused_before_any_step(method, fast_top, monkeypa
 
 
 def test_the_command_line_refuses_it_with_exit_3_and_one_line(fast_top):
-    proc = subprocess.run([sys.executable, "-m", "derive", "simulate", str(fast_top), "--method",
-                           "scipy-rk45", "--json"], capture_output=True, text=True, timeout=120)
+    proc = derive_main("simulate", fast_top, "--method", "scipy-rk45", "--json")
     assert proc.returncode == 3
     assert proc.stdout == ""
     lines = proc.stderr.splitlines()
