@@ -411,15 +411,15 @@ def _refused(scheduler, timeout, **kwargs) -> tuple[str, float]:
 
 def test_a_closed_port_is_refused_at_once(reference):
     port = _closed_port()
-    msg, took = _refused(f"127.0.0.1:{port}", 5)
+    msg, took = _refused(f"127.0.0.1:{port}", 60)
     assert msg == f"<sweep>: scheduler tcp://127.0.0.1:{port}: connection refused (nothing listens there)"
-    assert took < 3  # refused, not retried for the timeout (Dask's own: 30 s)
+    assert took < 30  # refused, not retried for the timeout (a loaded machine may take seconds to import Dask)
 
 
 def test_an_unknown_host_is_named_at_once(reference):
-    msg, took = _refused("tcp://no-such-host.invalid:8786", 5)
+    msg, took = _refused("tcp://no-such-host.invalid:8786", 60)
     assert msg.startswith("<sweep>: scheduler tcp://no-such-host.invalid:8786: unknown host (")
-    assert took < 3  # not retried for the timeout
+    assert took < 30  # not retried for the timeout
 
 
 def test_a_silent_listener_times_out(listener, reference):
@@ -427,22 +427,22 @@ def test_a_silent_listener_times_out(listener, reference):
     msg, took = _refused(f"tcp://127.0.0.1:{port}", 0.5)
     assert msg.startswith(f"<sweep>: scheduler tcp://127.0.0.1:{port}: accepted the connection "
                           "but sent no Dask handshake within 0.5 s")
-    assert 0.5 <= took < 3
+    assert 0.5 <= took < 30  # the timeout given, not Dask's own (30 s)
 
 
 def test_an_http_server_is_not_taken_for_a_scheduler(listener, reference):
     port = listener(b"HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n")
-    msg, took = _refused(f"127.0.0.1:{port}", 5)  # not: "out of memory" (10^18 bytes asked)
+    msg, took = _refused(f"127.0.0.1:{port}", 60)  # not: "out of memory" (10^18 bytes asked)
     assert msg == f"<sweep>: scheduler tcp://127.0.0.1:{port}: answered, but not as a Dask scheduler (is it one?)"
-    assert took < 3
+    assert took < 30
 
 
 def test_a_listener_that_hangs_up_is_refused(listener, reference):
     port = listener(b"")
-    msg, took = _refused(f"127.0.0.1:{port}", 5)
+    msg, took = _refused(f"127.0.0.1:{port}", 60)
     assert msg == (f"<sweep>: scheduler tcp://127.0.0.1:{port}: closed the connection without "
                    "a Dask handshake")
-    assert took < 3
+    assert took < 30
 
 
 def test_cli_unreachable_scheduler_is_exit_3_one_line(tmp_path):
