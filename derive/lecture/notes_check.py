@@ -184,7 +184,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             self._add(item.line, latex, "text", "unchecked", "not a formula")
             return
         seen = []
-        self._open_display(inline=item.kind == "inline")
+        self._open_display(inline=item.kind == "inline", line=item.line)
         if self._coordinate_turn(item.line, pieces):
             self._close_display()
             return
@@ -403,6 +403,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         for f in targets:
             ok, why = self._compare(val, self._resolve(f), seed, small, order)
             if ok:
+                self._confirm(value, parsed)
                 self._add(line, piece, kind, "holds", why)
                 if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
                     self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
@@ -410,6 +411,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         oriented = None if small is not None else self._oriented(line, val, targets, seed) or \
             self._on_the_motion(val, targets, seed)
         if oriented:
+            self._confirm(value, parsed)
             self._add(line, piece, kind, "holds", oriented)
             return
         if " against a " in why:
@@ -419,6 +421,9 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
                        and x not in self._constants())
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
+        if undecided and undecided.startswith("an equation for the angles") and len(targets) == 1 and \
+                self._at_stated_angles(line, piece, kind, value, val, self._resolve(targets[0]), parsed, k, keep):
+            return
         if undecided:
             self._add(line, piece, kind, "unchecked", undecided)
             return
