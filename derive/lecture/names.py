@@ -34,12 +34,15 @@ lagrangian, eff. potential
 transverse moment           symbol   I₁ (= I₂)
 axial moment                symbol   I₃
 principal moments           list     I₁, I₂, I₃ in the order written
+identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
 ==========================  =======  ===================================================
 """
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+
+import sympy as sp
 
 from derive.errors import SceneError
 from derive.lecture import latex as lx
@@ -63,6 +66,7 @@ MEANINGS = {
     "energy": ("symbol", r"\benergy"),
     "gravitational acceleration": ("symbol", r"(?:acceleration of|acceleration due to) gravity|gravitational acceleration"),
     "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
+    "identity column": ("letter", r"the\s+\S+\s+columns? of the\s+(?:\S+\s+)?identity(?: matrix)?"),
     "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
     "potential energy": ("symbol", r"potential(?: energy)?"),
 }
@@ -75,6 +79,7 @@ LETTERS = {
     "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
     "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
+    "identity column": ("I", "e", "E", "u", "1"),
 }
 """The letters a reader takes for each meaning: a phrase next to any other letter is about
 something else (a point C, a matrix S), so it binds nothing."""
@@ -138,6 +143,8 @@ class Names:
             if k is not None and plain:
                 return lx.TAU[k]
             return None
+        if meaning == "identity column":      # 𝐈ᵢ, "the i-th column of the identity matrix": the unit column
+            return sp.ImmutableMatrix(sp.eye(3)[:, k]) if a.bold and k is not None and plain else None
         if not plain or a.bold:
             return None
         if meaning == "potential energy":
@@ -299,7 +306,7 @@ def _nearest(marked: str) -> str | None:
     Nothing past another symbol (¤), nothing farther than a few words."""
     at = marked.index("§")
     lead = marked[at + 1:].lstrip()
-    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the )", lead)
+    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the |the )", lead)
     best, told = None, None     # told: the nearest phrase that "§ is the …" goes on to say
     for name, (_, phrase) in MEANINGS.items():
         for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):

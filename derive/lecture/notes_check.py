@@ -57,7 +57,7 @@ from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion
-from derive.lecture.textnames import TextNames
+from derive.lecture.textnames import TextNames, matrices_put
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
@@ -331,7 +331,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             rep.update(self._dotted_definitions(v))
             if not rep:
                 break
-            v = v.xreplace(rep)
+            v = matrices_put(v, rep) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) else v.xreplace(rep)
         return self._calculus(v)
 
     def _unify(self, values: list) -> list:

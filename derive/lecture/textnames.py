@@ -59,6 +59,31 @@ def _is_value(v, defined) -> bool:
                for s in _free(v))
 
 
+def matrices_put(e, rep):
+    """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
+    up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
+    Mul would take a matrix among its factors for a scalar."""
+    if e in rep:
+        return rep[e]
+    if isinstance(e, sp.MatrixBase):
+        return e.applyfunc(lambda x: matrices_put(x, rep))
+    if not getattr(e, "args", ()):
+        return e
+    args = [matrices_put(a, rep) for a in e.args]
+    if not any(isinstance(a, sp.MatrixBase) for a in args):
+        return e.func(*args) if args != list(e.args) else e
+    if isinstance(e, (sp.Mul, sp.Add)):
+        out = args[0]
+        for a in args[1:]:
+            out = out * a if isinstance(e, sp.Mul) else out + a
+        return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out
+    if isinstance(e, lx.Transposed):
+        return sp.ImmutableMatrix(args[0].T)
+    if isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
+        return _matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
+    return e.func(*args)
+
+
 def _matrix_power(e):
     """M^n of a matrix the text wrote; M⁻¹ by the adjugate over the determinant, both in their
     canonical trigonometric form (a rotation's determinant reduces to 1)."""

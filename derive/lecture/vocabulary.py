@@ -451,7 +451,11 @@ class Vocabulary:
                 return sym
         name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + (f"_{a.sub}" if a.sub else "") \
             + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
-        sym = Generic(name, real=True)
+        undotted = next((s for s, atom in self.generic.items() if atom == key.with_(dots=0)), None) if a.dots else None
+        if undotted is not None and undotted.is_commutative is False:
+            sym = Generic(name, commutative=False)      # Ẋ of a matrix: a matrix, kept in its place in a product
+        else:
+            sym = Generic(name, real=True)
         self.generic[sym] = key
         return sym
 
