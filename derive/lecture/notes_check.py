@@ -57,7 +57,8 @@ from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion
-from derive.lecture.textnames import TextNames, matrices_put
+from derive.lecture.text_matrices import TextMatrices, matrices_put
+from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
@@ -94,7 +95,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
+class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
               SmallMoments, Judging):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -226,6 +227,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._algebra_first(text) and self._algebra(line, piece, text):
             return

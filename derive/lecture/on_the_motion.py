@@ -33,6 +33,7 @@ from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduc
 
 _RATE_FIRST = re.compile(r"\s*&?\s*\\dot\s*\{?\s*\\?[A-Za-z]+[^=]*=")
 _INVERSE = {sp.tan: sp.atan, sp.sin: sp.asin, sp.cos: sp.acos, sp.cot: sp.acot}
+_TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 
 def _free(obj) -> set:
@@ -46,8 +47,11 @@ class OnTheMotion:
     def _note_motion(self, line, piece):
         """``\\dot\\phi = M_z/I_1``, a rate given by constants and the angles: the rate of the
         motion the text studies, kept as written (read with the names in force where it is used)."""
+        head = _TRIG_FIRST.sub("", piece)
+        angle_first = any(re.match(r"\\?" + re.escape(a.partition("_")[0]) + r"(?![A-Za-z])", head)
+                          for a in self.notes.angles)
         try:
-            parsed = lx.parse(piece, self.vocab) if _RATE_FIRST.match(piece) or "=" in piece else None
+            parsed = lx.parse(piece, self.vocab) if _RATE_FIRST.match(piece) or angle_first else None
         except (lx.NotRead, lx.Words):
             return
         members = [m.value for m in parsed.members] if parsed is not None else []

@@ -33,8 +33,9 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
+from derive.lecture.text_matrices import matrix_power
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
-from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
+from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
 PARAMETERS = (I1, I2, I3, Mass, g, l)
 VARIABLES = ANGLES + RATES + ACCELS + tuple(lx.W) + tuple(lx.WD)
@@ -57,43 +58,6 @@ def _is_value(v, defined) -> bool:
         return False
     return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
                for s in _free(v))
-
-
-def matrices_put(e, rep):
-    """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
-    up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
-    Mul would take a matrix among its factors for a scalar."""
-    if e in rep:
-        return rep[e]
-    if isinstance(e, sp.MatrixBase):
-        return e.applyfunc(lambda x: matrices_put(x, rep))
-    if not getattr(e, "args", ()):
-        return e
-    args = [matrices_put(a, rep) for a in e.args]
-    if not any(isinstance(a, sp.MatrixBase) for a in args):
-        return e.func(*args) if args != list(e.args) else e
-    if isinstance(e, (sp.Mul, sp.Add)):
-        out = args[0]
-        for a in args[1:]:
-            out = out * a if isinstance(e, sp.Mul) else out + a
-        return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out
-    if isinstance(e, lx.Transposed):
-        return sp.ImmutableMatrix(args[0].T)
-    if isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
-        return _matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
-    return e.func(*args)
-
-
-def _matrix_power(e):
-    """M^n of a matrix the text wrote; M⁻¹ by the adjugate over the determinant, both in their
-    canonical trigonometric form (a rotation's determinant reduces to 1)."""
-    m, n = sp.ImmutableMatrix(e.args[0]), int(e.args[1])
-    if n >= 0:
-        return m ** n
-    det = trig_reduce(m.det())
-    if det == 0:
-        return e
-    return sp.ImmutableMatrix((m.adjugate() / det).applyfunc(trig_reduce)) ** (-n)
 
 
 class TextNames:
@@ -136,6 +100,13 @@ class TextNames:
         loose = [k for k, m in enumerate(members) if self._new_name(m) or k and unread(m)]
         if not loose and unread(members[0]) and not self._new_name(members[0]) and not unread(members[1]):
             loose = [0]     # tan β = tan(α − θ) = …, β named only in words: the steps after it are claims
+        def matrices_unread(m):     # in bold names the text has not defined yet (its matrices, given further on)
+            names = {x for x in _free(self._resolve(m)) if self._new_name(x) and x not in known}
+            return bool(names) and all(getattr(self.vocab.generic.get(x), "bold", False) for x in names)
+
+        if loose and loose[0] == 0 and len(loose) > 1 and self._new_name(members[0]) and \
+                len(members) - len(loose) >= 1 and all(matrices_unread(members[k]) for k in loose[1:]):
+            loose = loose[1:]   # X = (matrices given further on) = (names it has): X is the member it can read
         if not loose or len(members) - len(loose) < 2 or 0 in loose and loose != [0]:
             return parsed
         return self._members_kept(parsed, [k for k in range(len(members)) if k not in loose])
@@ -507,7 +478,7 @@ class TextNames:
                           lambda e: e.args[0].T)
         if v.has(sp.MatPow):
             v = v.replace(lambda e: isinstance(e, sp.MatPow) and isinstance(e.args[0], sp.MatrixBase)
-                          and e.args[1].is_integer, _matrix_power)
+                          and e.args[1].is_integer, matrix_power)
         if not (v.has(lx.DT) or v.has(sp.Derivative)):
             return v
         v = v.replace(lambda e: isinstance(e, sp.Derivative), lambda e: self._partial(e))
