@@ -28,13 +28,11 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
-    ("free-rigid-body-euler-case-zh-notes-zxz", "found"): "a trigonometric identity in the text's own angles",
     ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
-    ("murundb-euler-angles-321-rates", "checked"): "products of frame-labelled matrices defined after their use; the identity's columns 𝐈ᵢ",
     ("rigid-body-formula-notebook-landau-zxz", "checked"): "inertia tensors and stability exponents",
 }
 
-FLOOR = {"checked": 198, "slips_flagged": 25, "holds_flagged": 0}
+FLOOR = {"checked": 206, "slips_flagged": 26, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

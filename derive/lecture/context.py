@@ -40,16 +40,18 @@ class Context:
     orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
     eoms2: list = field(default_factory=list)         # (second-order residual, its ω̃̈ symbols, settings of ω̃)
     running: dict = field(default_factory=dict)       # the text's names defined in running text → line
+    confirmed: set = field(default_factory=set)       # those of them a claim that holds was read with
     motion: dict = field(default_factory=dict)        # a rate the text states for its motion → (value, line)
     given: dict = field(default_factory=dict)         # a left side as written → (the value the text set it to, where): kept across sections
     own_motion: dict = field(default_factory=dict)    # a variable of the text's → (power n, F, line) of its u̇ⁿ = F(u)
     changes: dict = field(default_factory=dict)       # a new variable v → (u, S(v), line) of the text's u = S(v)
+    angles_stated: dict = field(default_factory=dict)  # an angle the text gives in constants (tan θ = …) → (value, line)
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
-        self.motion, self.own_motion, self.changes = {}, {}, {}
+        self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
 
 
 class Reading:

@@ -47,6 +47,7 @@ from derive.lecture.vocabulary import (  # noqa: F401  (the reader's names, used
     Quantity,
     DT,
     Transposed,
+    MatProduct,
     Generic,
     quantity,
     T_,

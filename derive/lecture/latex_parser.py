@@ -11,7 +11,7 @@ import sympy as sp
 
 from derive.lecture.vocabulary import (
     DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
-    Atom, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
+    Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
@@ -91,6 +91,7 @@ class _Parser:
             if op == "pm":
                 self.fail("± is not a single formula")
             rhs = self.term(env)
+            total, rhs = _summands(total, rhs)
             total = total + rhs if op == "+" else total - rhs
         return total
 
@@ -206,7 +207,9 @@ class _Parser:
             trig = self._abbreviated_trig(tok, env) if isinstance(value, Generic) else None
             if trig is not None:
                 return trig
-            if self.at("op", "(") and isinstance(value, Generic) and tok.value.bold:
+            inner = self.peek(1)
+            if self.at("op", "(") and isinstance(value, Generic) and tok.value.bold and \
+                    not (inner is not None and inner.kind == "atom" and inner.value.bold):   # 𝐀(𝐁) is a product
                 kept = self.args
                 if self._argument_list():       # 𝐒(φ, θ): a matrix of the text's, with what it depends on
                     self.args = kept
@@ -287,6 +290,8 @@ class _Parser:
             return None
         if inner.kind == "num":
             label = inner.value
+        elif inner.kind == "atom" and inner.value.bold:
+            return None                # 𝐀(𝐁): a product of the text's matrices, not a time
         elif inner.kind == "atom" and inner.value.base != "t" or (inner.kind == "atom" and inner.value.sub):
             label = inner.value.text
         else:
@@ -465,6 +470,18 @@ def _dot(a, b):
     return None
 
 
+def _summands(a, b):
+    """A written matrix beside a term in the text's matrix names (``[\\mathbf{R}_1 \\mathbf{I}_2]_\\times +
+    [\\mathbf{I}_1]_\\times``) waits as a one-factor `MatProduct`, to be added once the names are put in."""
+    pending = lambda x: not isinstance(x, sp.MatrixBase) and (  # noqa: E731
+        getattr(x, "is_commutative", True) is False or bool(getattr(x, "has", lambda *_: False)(CrossMatrix)))
+    if isinstance(a, sp.MatrixBase) and pending(b):
+        a = MatProduct(a)
+    elif isinstance(b, sp.MatrixBase) and pending(a):
+        b = MatProduct(b)
+    return a, b
+
+
 def _mul(a, b):
     """a·b or a b of scalars (and of a matrix with scalars); a product that involves a vector
     quantity twice, or a matrix and a vector quantity, is the vector reader's
@@ -473,6 +490,9 @@ def _mul(a, b):
     mat = lambda x: isinstance(x, sp.MatrixBase)  # noqa: E731
     if (vec(a) and vec(b)) or (mat(a) and vec(b)) or (vec(a) and mat(b)):
         raise NotRead("a product of vectors: read as vectors")
+    named = lambda x: getattr(x, "is_commutative", True) is False  # noqa: E731  (the text's matrix names)
+    if (mat(a) or isinstance(a, MatProduct)) and named(b) or named(a) and (mat(b) or isinstance(b, MatProduct)):
+        return MatProduct(*[f for x in (a, b) for f in (x.args if isinstance(x, MatProduct) else (x,))])
     return a * b
 
 

@@ -24,6 +24,7 @@ angular momentum            letter   𝐋 (bold), Iᵢω̃ᵢ (index 1–3), p o
 vertical angular momentum   symbol   p of the first angle (L·ẑ)
 axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃₃)
 angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
+body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
@@ -34,12 +35,15 @@ lagrangian, eff. potential
 transverse moment           symbol   I₁ (= I₂)
 axial moment                symbol   I₃
 principal moments           list     I₁, I₂, I₃ in the order written
+identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
 ==========================  =======  ===================================================
 """
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+
+import sympy as sp
 
 from derive.errors import SceneError
 from derive.lecture import latex as lx
@@ -51,6 +55,7 @@ MEANINGS = {
     "vertical angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:fixed |space |spatial |inertial )?(?:vertical|z|Z|\$z\$|\$Z\$)"),
     "axial angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:body'?s? )?(?:symmetry|figure|body|top'?s?|spin)\s*(?:axis|x_3)"),
     "angular momentum": ("letter", r"angular momentum"),
+    "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
     "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
     "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces"),
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
@@ -63,6 +68,7 @@ MEANINGS = {
     "energy": ("symbol", r"\benergy"),
     "gravitational acceleration": ("symbol", r"(?:acceleration of|acceleration due to) gravity|gravitational acceleration"),
     "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
+    "identity column": ("letter", r"the\s+\S+\s+columns? of the\s+(?:\S+\s+)?identity(?: matrix)?"),
     "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
     "potential energy": ("symbol", r"potential(?: energy)?"),
 }
@@ -75,6 +81,7 @@ LETTERS = {
     "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
     "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
+    "identity column": ("I", "e", "E", "u", "1"), "body angular velocity": ("omega", "Omega", "w"),
 }
 """The letters a reader takes for each meaning: a phrase next to any other letter is about
 something else (a point C, a matrix S), so it binds nothing."""
@@ -96,6 +103,7 @@ class Names:
     symbols: dict = field(default_factory=dict)
     letters: dict = field(default_factory=dict)
     where: dict = field(default_factory=dict)
+    frames: dict = field(default_factory=dict)     # (base, sub) → the frame label over a symbol bound with one
 
     def meaning(self, atom) -> str | None:
         """The meaning of an atom of `latex.scan`, or None. A letter learned as a vector (bold) or
@@ -138,6 +146,12 @@ class Names:
             if k is not None and plain:
                 return lx.TAU[k]
             return None
+        if meaning == "body angular velocity":    # 𝛚ᵅ_{βα}: bound with its frame labels, the body components
+            if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
+                return lx.OMEGA_VEC
+            return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
+        if meaning == "identity column":      # 𝐈ᵢ, "the i-th column of the identity matrix": the unit column
+            return sp.ImmutableMatrix(sp.eye(3)[:, k]) if a.bold and k is not None and plain else None
         if not plain or a.bold:
             return None
         if meaning == "potential energy":
@@ -306,7 +320,7 @@ def _nearest(marked: str) -> str | None:
     Nothing past another symbol (¤), nothing farther than a few words."""
     at = marked.index("§")
     lead = marked[at + 1:].lstrip()
-    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the )", lead)
+    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the |the )", lead)
     best, told = None, None     # told: the nearest phrase that "§ is the …" goes on to say
     for name, (_, phrase) in MEANINGS.items():
         for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):
@@ -343,6 +357,7 @@ def _bind(names: Names, atoms, meaning, where, override=False):
                 _put(names.letters, (atom.base, kind), meaning, override)
         else:
             _put(names.symbols, (atom.base, atom.sub), meaning, override)
+            names.frames.setdefault((atom.base, atom.sub), atom.sup)
         names.where[(atom.base, atom.sub)] = where
 
 

@@ -59,6 +59,7 @@ from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion
+from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
 from derive.symbolic.lagrangian import ACCELS
@@ -102,8 +103,8 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion, AlgebraStatements,
-              SmallMoments, Judging, OperatorStatements, CoordinateStatements):
+class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -207,7 +208,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             self._add(item.line, latex, "text", "unchecked", "not a formula")
             return
         seen = []
-        self._open_display(inline=item.kind == "inline")
+        self._open_display(inline=item.kind == "inline", line=item.line)
         if self._coordinate_turn(item.line, pieces):
             self._close_display()
             return
@@ -249,6 +250,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
@@ -356,7 +358,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             rep.update(self._dotted_definitions(v))
             if not rep:
                 break
-            v = v.xreplace(rep)
+            v = matrices_put(v, rep) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) else v.xreplace(rep)
         return self._calculus(v)
 
     def _unify(self, values: list) -> list:
@@ -428,6 +430,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         for f in targets:
             ok, why = self._compare(val, self._resolve(f), seed, small, order)
             if ok:
+                self._confirm(value, parsed)
                 self._add(line, piece, kind, "holds", why)
                 if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
                     self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
@@ -435,6 +438,7 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         oriented = None if small is not None else self._oriented(line, val, targets, seed) or \
             self._on_the_motion(val, targets, seed)
         if oriented:
+            self._confirm(value, parsed)
             self._add(line, piece, kind, "holds", oriented)
             return
         if " against a " in why:
@@ -448,6 +452,9 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
             loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
+        if undecided and undecided.startswith("an equation for the angles") and len(targets) == 1 and \
+                self._at_stated_angles(line, piece, kind, value, val, self._resolve(targets[0]), parsed, k, keep):
+            return
         if undecided:
             self._add(line, piece, kind, "unchecked", undecided)
             return

@@ -11,7 +11,13 @@ calling such a claim wrong —
 2. **Lagrange's equation**: claim − derived is ±(d/dt ∂L/∂q̇ − ∂L/∂q) for one coordinate q, with
    the Lagrangian the text uses (``∂L/∂θ = d/dt(∂L/∂θ̇)``): the law of motion, true on every motion.
 
-Either only makes a claim hold; it never flags one. May import: :mod:`derive.lecture.latex`,
+Either only makes a claim hold; it never flags one. And a third, which judges:
+
+3. **at the angle the text gives**: ``\\tan\\theta = \\frac{I_1\\omega_0}{I_3\\Omega}``, an angle (or its
+   tangent, sine or cosine) equal to constants of the text's, is the orientation of its motion
+   (kept in ``ctx.angles_stated``); a later relation of the angles alone, with no rates, which is
+   no identity, is judged with those angles put in (``\\tan\\alpha = \\frac{I_3}{I_1}\\tan\\theta``
+   holds, a step of a chain that breaks it is a slip), the why naming the line it stands on. May import: :mod:`derive.lecture.latex`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -26,6 +32,8 @@ from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduc
 
 
 _RATE_FIRST = re.compile(r"\s*&?\s*\\dot\s*\{?\s*\\?[A-Za-z]+[^=]*=")
+_INVERSE = {sp.tan: sp.atan, sp.sin: sp.asin, sp.cos: sp.acos, sp.cot: sp.acot}
+_TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 
 def _free(obj) -> set:
@@ -39,13 +47,17 @@ class OnTheMotion:
     def _note_motion(self, line, piece):
         """``\\dot\\phi = M_z/I_1``, a rate given by constants and the angles: the rate of the
         motion the text studies, kept as written (read with the names in force where it is used)."""
-        if not _RATE_FIRST.match(piece):
-            return
+        head = _TRIG_FIRST.sub("", piece)
+        angle_first = any(re.match(r"\\?" + re.escape(a.partition("_")[0]) + r"(?![A-Za-z])", head)
+                          for a in self.notes.angles)
         try:
-            parsed = lx.parse(piece, self.vocab)
+            parsed = lx.parse(piece, self.vocab) if _RATE_FIRST.match(piece) or angle_first else None
         except (lx.NotRead, lx.Words):
             return
-        members = [m.value for m in parsed.members]
+        members = [m.value for m in parsed.members] if parsed is not None else []
+        if not _RATE_FIRST.match(piece):
+            self._note_angle(line, members, parsed)
+            return
         if len(members) < 2 or members[0] not in RATES or set(parsed.relations) - {"="}:
             return
         value = members[-1]
@@ -57,6 +69,51 @@ class OnTheMotion:
             return                  # "= const" says it is constant, not what it is
         if not _free(resolved) & (set(RATES) | set(ACCELS) | set(lx.W)) and not isinstance(resolved, sp.MatrixBase):
             self.ctx.motion[members[0]] = (value, line)
+
+    def _note_angle(self, line, members, parsed):
+        """``\\tan\\theta = \\frac{I_1\\omega_0}{I_3\\Omega}``: an angle of the motion given by constants."""
+        if len(members) < 2 or set(parsed.relations) - {"="}:
+            return
+        head = members[0]
+        inverse = _INVERSE.get(type(head)) if isinstance(head, sp.Function) else (lambda x: x)
+        angle = head.args[0] if isinstance(head, sp.Function) else head
+        if inverse is None or angle not in ANGLES or isinstance(members[-1], sp.MatrixBase):
+            return
+        try:
+            value = self._resolve(members[-1])
+        except (TypeError, ValueError, AttributeError):
+            return
+        if isinstance(value, sp.MatrixBase) or not _free(value) or \
+                _free(value) & (set(ANGLES) | set(RATES) | set(ACCELS) | set(lx.W) | {lx.t}):
+            return
+        self.ctx.angles_stated[angle] = (inverse(value), line)
+
+    def _at_stated_angles(self, line, piece, kind, value, val, target, parsed, k, keep) -> bool:
+        """A relation of the angles alone, no identity, judged at the angles the text gave (item 3 of
+        the module docstring); False when it involves an angle the text has not given."""
+        used = (_free(val) | _free(target)) & set(ANGLES)
+        stated = self.ctx.angles_stated
+        if not used or not used <= set(stated) or isinstance(val, sp.MatrixBase):
+            return False
+        where = ", ".join(f"{self.tex(a)} = {self.tex(stated[a][0])} (line {stated[a][1]})"
+                          for a in sorted(used, key=ANGLES.index))
+        saved = self.ctx.subs
+        self.ctx.subs = {**saved, **{a: stated[a][0] for a in used}}
+        try:
+            ok, why = self._compare(val, target, f"{piece}/{k}/angles")
+            if ok:
+                self._confirm(value, parsed)
+                self._add(line, piece, kind, "holds", f"{why}, at the angle the text gives ({where})")
+                return True
+            fix = None if self.judging_only else self._search(value, [target], None, parsed, k, None, None, keep)
+        finally:
+            self.ctx.subs = saved
+        if fix:
+            self._add(line, piece, kind, "typo", f"as written, at the angle the text gives ({where}): {why}; "
+                      f"one edit ({fix[1]}) makes it hold", fix[0])
+        else:
+            self._add(line, piece, kind, "fails", f"as written, at the angle the text gives ({where}): {why}")
+        return True
 
     def _on_the_motion(self, val, targets, seed) -> str | None:
         """Why the claim holds on the text's motion (its stated rates, or Lagrange's equation), or None."""

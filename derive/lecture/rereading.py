@@ -131,12 +131,21 @@ class Rereading:
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
 
+    def _confirm(self, value, parsed):
+        """A claim held with names the running text defined: their definitions are the text's
+        meaning (were one a slip, this claim would not hold)."""
+        written = set(getattr(value, "free_symbols", ())) | set(getattr(parsed.members[0].value, "free_symbols", ()))
+        self.ctx.confirmed |= {s for s in self.ctx.running if s in written}
+
     def _running_names_off(self, saved, line, piece, dup, pieces, first) -> bool:
         """A statement flagged only through names the running text defined (a table's
         ``$\\dot\\psi_3 = \\psi$``): the slip, if any, is in that sentence, not in the display, so
-        the display's flagged members are unchecked, saying which definition they rest on."""
+        the display's flagged members are unchecked, saying which definition they rest on. Not so
+        once a claim that holds has been read with every one of them (`_confirm`)."""
         used = {s: n for s, n in saved.running.items() if s in saved.defs and any(
             s in _free_of(c) for c in [self._parsed_or_none(piece)])}
+        if used and set(used) <= self.ctx.confirmed:
+            return False
         if not used:
             return False
         bare = _copied(saved)

@@ -20,6 +20,8 @@ _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*",
          "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
 
 def _strip_envs(s: str) -> str:
+    # alignat's argument is its number of column pairs, not math
+    s = re.sub(r"\\begin\{(alignat\*?|alignedat)\}\s*\{\s*\d+\s*\}", " ", s)
     for env in _ENVS:
         s = s.replace(f"\\begin{{{env}}}", " ").replace(f"\\end{{{env}}}", " ")
     return s

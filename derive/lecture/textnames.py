@@ -33,8 +33,9 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
+from derive.lecture.text_matrices import matrix_power
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
-from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
+from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
 PARAMETERS = (I1, I2, I3, Mass, g, l)
 VARIABLES = ANGLES + RATES + ACCELS + tuple(lx.W) + tuple(lx.WD)
@@ -57,18 +58,6 @@ def _is_value(v, defined) -> bool:
         return False
     return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
                for s in _free(v))
-
-
-def _matrix_power(e):
-    """M^n of a matrix the text wrote; M⁻¹ by the adjugate over the determinant, both in their
-    canonical trigonometric form (a rotation's determinant reduces to 1)."""
-    m, n = sp.ImmutableMatrix(e.args[0]), int(e.args[1])
-    if n >= 0:
-        return m ** n
-    det = trig_reduce(m.det())
-    if det == 0:
-        return e
-    return sp.ImmutableMatrix((m.adjugate() / det).applyfunc(trig_reduce)) ** (-n)
 
 
 class TextNames:
@@ -109,7 +98,16 @@ class TextNames:
                 return True
 
         loose = [k for k, m in enumerate(members) if self._new_name(m) or k and unread(m)]
-        if not loose or len(members) - len(loose) < 2 or 0 in loose:
+        if not loose and unread(members[0]) and not self._new_name(members[0]) and not unread(members[1]):
+            loose = [0]     # tan β = tan(α − θ) = …, β named only in words: the steps after it are claims
+        def matrices_unread(m):     # in bold names the text has not defined yet (its matrices, given further on)
+            names = {x for x in _free(self._resolve(m)) if self._new_name(x) and x not in known}
+            return bool(names) and all(getattr(self.vocab.generic.get(x), "bold", False) for x in names)
+
+        if loose and loose[0] == 0 and len(loose) > 1 and self._new_name(members[0]) and \
+                len(members) - len(loose) >= 1 and all(matrices_unread(members[k]) for k in loose[1:]):
+            loose = loose[1:]   # X = (matrices given further on) = (names it has): X is the member it can read
+        if not loose or len(members) - len(loose) < 2 or 0 in loose and loose != [0]:
             return parsed
         return self._members_kept(parsed, [k for k in range(len(members)) if k not in loose])
 
@@ -175,6 +173,7 @@ class TextNames:
                 self.ctx.stated[m0] = f"line {line}"
                 self.ctx.given[written_name(piece)] = (members[1], f"line {line}")
                 self.display_settings.append(m0)
+            self.display_relations.append((m0, "=", members[1]))
             if m0 in self.d.rot.ANGLES:
                 self.last_angle_set = (m0, members[1])     # the turn a numeric matrix then shows
             self._spin_set(m0, members[1])
@@ -201,6 +200,7 @@ class TextNames:
             self.ctx.orderings.append(list(members))        # I₁ < I₂ < I₃: an ordering of the moments
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
+            self.display_relations.append((a, rel, b))
             if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \
                     sp.sympify(a).xreplace(self.ctx.subs) != b.xreplace(self.ctx.subs):
                 self.ctx.subs[b] = a
@@ -413,11 +413,15 @@ class TextNames:
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
 
     # -- display scope of settings ----------------------------------------------------------------
-    def _open_display(self, inline=False):
+    def _open_display(self, inline=False, line=None):
         self.display_settings = []
+        self.display_relations = []    # what its settings state, (a, relation, b)
         self.settings_only = not inline
         self._inline = inline      # the body's parameters set in running text stay (I₁ = I₂)
         self._subs_before = dict(self.ctx.subs)
+        self._display_line = line
+        if not inline:
+            self._running_settings = None      # a display ends the sentences that listed cases
 
     def _close_display(self):
         """Settings made inside a display with claims, or in running text ("the case $\\theta = 0$"),
@@ -427,6 +431,42 @@ class TextNames:
         if self.display_settings and not self.settings_only:
             keep = {k: v for k, v in self.ctx.subs.items() if k in PARAMETERS and k in self.display_settings}
             self.ctx.subs = {**self._subs_before, **(keep if self._inline else {})}
+        if self._inline and self.display_relations:
+            self._cases_listed()
+
+    def _cases_listed(self):
+        """Settings in running text that contradict one another in one sentence ("the cases $I_1=I_2>I_3$,
+        $I_1=I_2=I_3$ and $I_1=I_2<I_3$") are cases the text lists, not assumptions: none of them holds
+        after it. Adjacent lines with no display between them count as one sentence."""
+        line, prev = self._display_line, getattr(self, "_running_settings", None)
+        if prev is None or line is None or prev["line"] is None or line - prev["line"] > 1:
+            prev = {"before": dict(self._subs_before), "relations": [], "cases": False, "lines": set()}
+        prev["line"] = line
+        prev["lines"].add(line)
+        prev["relations"] += self.display_relations
+        ops = {"=": sp.Eq, ">": sp.Gt, "<": sp.Lt, "≥": sp.Ge, "≤": sp.Le}
+        subs = self.ctx.subs
+
+        def put(v):          # the settings in one another too (I₃ → I₂ → I₁)
+            for _ in range(4):
+                v = sp.sympify(v).xreplace(subs)
+            return v
+
+        def false(a, rel, b):
+            if rel not in ops:
+                return False
+            try:
+                return ops[rel](put(a), put(b)) is sp.false
+            except (TypeError, ValueError):
+                return False
+
+        if prev["cases"] or any(false(*r) for r in prev["relations"]):
+            prev["cases"] = True
+            self.ctx.subs = dict(prev["before"])
+            for c in self.claims:
+                if c.kind == "setting" and c.line in prev["lines"]:
+                    c.why = "one of the cases the text lists in this sentence (not assumed after it)"
+        self._running_settings = prev
 
     # -- 4: calculus ------------------------------------------------------------------------------
     def _calculus(self, v):
@@ -438,7 +478,7 @@ class TextNames:
                           lambda e: e.args[0].T)
         if v.has(sp.MatPow):
             v = v.replace(lambda e: isinstance(e, sp.MatPow) and isinstance(e.args[0], sp.MatrixBase)
-                          and e.args[1].is_integer, _matrix_power)
+                          and e.args[1].is_integer, matrix_power)
         if not (v.has(lx.DT) or v.has(sp.Derivative)):
             return v
         v = v.replace(lambda e: isinstance(e, sp.Derivative), lambda e: self._partial(e))

@@ -43,6 +43,14 @@ class Transposed(sp.Function):
     """Xᵀ of a matrix the text has named (``\\lambda^T``): the transpose once X is substituted."""
 
 
+class MatProduct(sp.Function):
+    """A product of the text's matrix names with a written matrix (``\\mathbf{R}_1 \\mathbf{I}_2``), kept
+    in its order until the names are substituted: SymPy would take a name for a scalar and put it
+    into every entry."""
+
+    is_commutative = False
+
+
 class Generic(sp.Symbol):
     """A symbol of the text's own (``u``, ``N_1``, ``T_{rot}``, ``m_1``): what it stands for is
     what the text says, in a definition the checker records, or nothing."""
@@ -106,10 +114,18 @@ class CrossMatrix(sp.Function):
     def eval(cls, v):
         if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
             return sp.ImmutableMatrix([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+        if any(getattr(a, "is_commutative", True) is False for a in getattr(v, "args", ())):
+            return None          # the text's matrices in it: evaluated once they are substituted
         if isinstance(v, sp.MatMul) or (isinstance(v, sp.Mul) and any(isinstance(a, sp.MatrixBase) for a in v.args)):
             done = v.doit() if hasattr(v, "doit") else v
             if isinstance(done, sp.MatrixBase) and done.shape == (3, 1):
                 return cls.eval(done)
+        if isinstance(v, sp.Expr) and v.free_symbols & set(BASIS):     # a vector in the body basis ê₁ ê₂ ê₃
+            ex = sp.expand(v)
+            coeffs = [ex.coeff(e) for e in BASIS]
+            if sp.expand(ex - sum(c * e for c, e in zip(coeffs, BASIS))) == 0 and \
+                    not any(c.free_symbols & set(BASIS) for c in coeffs):
+                return cls.eval(sp.ImmutableMatrix(coeffs))
         return None
 
 
@@ -451,7 +467,11 @@ class Vocabulary:
                 return sym
         name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + (f"_{a.sub}" if a.sub else "") \
             + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
-        sym = Generic(name, real=True)
+        undotted = next((s for s, atom in self.generic.items() if atom == key.with_(dots=0)), None) if a.dots else None
+        if undotted is not None and undotted.is_commutative is False:
+            sym = Generic(name, commutative=False)      # Ẋ of a matrix: a matrix, kept in its place in a product
+        else:
+            sym = Generic(name, real=True)
         self.generic[sym] = key
         return sym
 

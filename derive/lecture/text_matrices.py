@@ -1,0 +1,107 @@
+"""The text's own matrices in products: its names for matrices put in as matrices, and matrices
+it names by an axis and an angle.
+
+Takes: values read by `derive.lecture.latex` in which some of the text's names
+(non-commuting `latex.Generic` symbols) stand for matrices. Gives:
+
+* `matrices_put` — the value with those names substituted, products multiplied as matrices in
+  their written order (``-\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3``), transposes taken, blocks joined
+  (``[\\mathbf{I}_1 \\; \\mathbf{R}_1 \\mathbf{I}_2 \\; …]``);
+* `matrix_power` — Mⁿ, M⁻¹ by the adjugate over the determinant;
+* the mixin `TextMatrices` of `derive.lecture.notes_check.Checker`, whose `_single_axis_turns`
+  reads ``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)`` as the single-axis turns of the
+  text's sequence.
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.symbolic.rotations import trig_reduce
+
+
+def matrices_put(e, rep):
+    """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
+    up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
+    Mul would take a matrix among its factors for a scalar."""
+    if e in rep:
+        return rep[e]
+    if isinstance(e, sp.MatrixBase):
+        blocks = [[matrices_put(e[i, j], rep) for j in range(e.cols)] for i in range(e.rows)]
+        if all(isinstance(b, sp.MatrixBase) for row in blocks for b in row):     # [𝐈₁  R₁𝐈₂  R₁R₂𝐈₃]: a block matrix
+            return sp.ImmutableMatrix(sp.Matrix.vstack(*[sp.Matrix.hstack(*row) for row in blocks]))
+        return sp.ImmutableMatrix(blocks)
+    if not getattr(e, "args", ()):
+        return e
+    args = [matrices_put(a, rep) for a in e.args]
+    if not any(isinstance(a, sp.MatrixBase) for a in args):
+        return e.func(*args) if args != list(e.args) else e
+    if isinstance(e, (sp.Mul, sp.Add, lx.MatProduct)):
+        out = args[0]
+        for a in args[1:]:
+            out = out + a if isinstance(e, sp.Add) else out * a
+    elif isinstance(e, lx.Transposed):
+        out = args[0].T
+    elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
+        out = matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
+    else:
+        out = e.func(*args)
+    return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out
+
+
+def matrix_power(e):
+    """M^n of a matrix the text wrote; M⁻¹ by the adjugate over the determinant, both in their
+    canonical trigonometric form (a rotation's determinant reduces to 1)."""
+    m, n = sp.ImmutableMatrix(e.args[0]), int(e.args[1])
+    if n >= 0:
+        return m ** n
+    det = trig_reduce(m.det())
+    if det == 0:
+        return e
+    return sp.ImmutableMatrix((m.adjugate() / det).applyfunc(trig_reduce)) ** (-n)
+
+
+class TextMatrices:
+    """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab``, ``self.ctx`` and
+    ``self._matrix_name``."""
+
+    def _single_axis_turns(self, text: str) -> str:
+        """``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)``: matrices named by an axis (1, 2, 3
+        or x, y, z) and applied to one angle each are the single-axis turns; the sense, passive or
+        active for all of them, is the one whose product is the sequence's R or its transpose. Each
+        name is bound to its turn (used bare from then on), and the text is read without the
+        arguments. The text unchanged when the factors are no such product."""
+        try:
+            toks = lx.scan(text)
+        except lx.NotRead:
+            return text
+        rot, found = self.d.rot, []
+        for k in range(len(toks) - 3):
+            a, o, g, c = toks[k:k + 4]
+            if a.kind != "atom" or a.value.sub not in ("1", "2", "3", "x", "y", "z") or a.value.sup or \
+                    a.value.dots or (o.kind, o.value) != ("op", "(") or g.kind != "atom" or (c.kind, c.value) != ("op", ")"):
+                continue
+            try:
+                angle = self.vocab.resolve(g.value)
+            except lx.NotRead:
+                continue
+            if angle in rot.ANGLES:
+                found.append((a.value, "xyz"["123xyz".index(a.value.sub) % 3], angle, o.pos, c.pos + 1))
+        if len(found) != 3 or len({f[2] for f in found}) != 3:
+            return text
+        R = self.d.conv.matrix()
+        for sense in (rot.passive, rot.active):
+            turns = [sp.Matrix(sense(axis, angle)) for _, axis, angle, _, _ in found]
+            product = turns[0] * turns[1] * turns[2]
+            if any(all(rot.trig_reduce(x - y) == 0 for x, y in zip(product, target)) for target in (R, R.T)):
+                break
+        else:
+            return text
+        for (atom, _, _, start, end), turn in zip(reversed(found), reversed(turns)):
+            sym = self.vocab.resolve(atom)
+            if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
+                self._matrix_name(sym, turn)
+            text = text[:start] + text[end:]
+        return text

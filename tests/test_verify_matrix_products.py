@@ -1,0 +1,82 @@
+"""The notes reader on products of the text's own matrices: a dotted matrix name and a transpose
+keep their places in a product, and 𝐈ᵢ named as the identity's columns is that unit column."""
+from derive.lecture import notes_check as nc
+
+ZYX = "---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Notes\n\n"
+R3 = ("$$\\mathbf{R}_3 = \\left[ \\begin{array}{ccc} \\cos \\psi & \\sin \\psi & 0 \\\\ "
+      "-\\sin \\psi & \\cos \\psi & 0 \\\\ 0 & 0 & 1 \\end{array} \\right]$$\n\n")
+
+
+def verdicts(text):
+    out = {}
+    for c in nc.check_text(text):
+        out.setdefault(c.line, set()).add(c.verdict)
+    return out
+
+
+def test_a_product_with_a_dotted_matrix_and_a_transpose_is_multiplied_in_its_written_order():
+    text = ZYX + R3 + ("$$-\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3 = \\left[ \\begin{pmatrix} 0 \\\\ 0 \\\\ 1 \\end{pmatrix} "
+                       "\\right]_\\times \\dot{\\psi}$$\n\n"
+                       "$$-\\mathbf{R}^T_3 \\dot{\\mathbf{R}}_3 = \\left[ \\begin{pmatrix} 0 \\\\ 0 \\\\ 1 \\end{pmatrix} "
+                       "\\right]_\\times \\dot{\\psi}$$\n\n"
+                       "$$\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3 = \\left[ \\begin{pmatrix} 0 \\\\ 0 \\\\ 1 \\end{pmatrix} "
+                       "\\right]_\\times \\dot{\\psi}$$\n")
+    got = verdicts(text)
+    assert got[9] == {"holds"} and got[11] == {"holds"}      # about z the two orders agree
+    assert "holds" not in got[13]                              # the sign is wrong
+
+
+def test_bold_i_named_as_the_identitys_columns_is_the_unit_column():
+    text = ZYX + ("With $\\mathbf{I}_i$ the $i$-th column of the $3\\times 3$ identity matrix:\n\n" + R3 +
+                  "$$-\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3 = \\left[ \\mathbf{I}_3 \\right]_\\times \\dot{\\psi}$$\n\n"
+                  "$$-\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3 = \\left[ \\mathbf{I}_2 \\right]_\\times \\dot{\\psi}$$\n")
+    got = verdicts(text)
+    assert got[11] == {"holds"}
+    assert "holds" not in got[13]
+
+
+def test_bold_i_without_such_words_stays_the_texts_own_symbol():
+    text = ZYX + R3 + "$$-\\dot{\\mathbf{R}}_3 \\mathbf{R}^T_3 = \\left[ \\mathbf{I}_3 \\right]_\\times \\dot{\\psi}$$\n"
+    assert verdicts(text)[9] == {"unchecked"}
+
+
+TURNS = ("The rotation factors as $\\mathbf{C} = \\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)$, "
+         "and $\\boldsymbol{\\omega}^b_{ab}$ is the body angular velocity.\n\n")
+
+
+def test_axis_named_matrices_applied_to_the_angles_are_the_single_axis_turns_of_the_sequence():
+    text = ZYX + TURNS + ("$$-\\dot{\\mathbf{R}}_2 \\mathbf{R}^T_2 = \\left[ \\begin{pmatrix} 0 \\\\ 1 \\\\ 0 \\end{pmatrix} "
+                          "\\right]_\\times \\dot{\\theta}$$\n\n"
+                          "$$\\dot{\\mathbf{R}}_2 \\mathbf{R}^T_2 = \\left[ \\begin{pmatrix} 0 \\\\ 1 \\\\ 0 \\end{pmatrix} "
+                          "\\right]_\\times \\dot{\\theta}$$\n")
+    got = verdicts(text)
+    assert "holds" in got[7]                     # C = R₁R₂R₃ is the passive matrix Rᵀ: the sense found
+    assert got[9] == {"holds"} and "holds" not in got[11]
+
+
+def test_the_body_angular_velocity_with_frame_labels_is_read_through_the_texts_turns():
+    right = ("\\left[ \\boldsymbol{\\omega}^b_{ab} \\right]_\\times = \\left[ \\mathbf{R}_1 \\mathbf{R}_2 "
+             "\\begin{pmatrix} 0 \\\\ 0 \\\\ 1 \\end{pmatrix} \\dot{\\psi} \\right]_\\times + \\left[ \\mathbf{R}_1 "
+             "\\begin{pmatrix} 0 \\\\ 1 \\\\ 0 \\end{pmatrix} \\dot{\\theta} \\right]_\\times + \\left[ "
+             "\\begin{pmatrix} 1 \\\\ 0 \\\\ 0 \\end{pmatrix} \\dot{\\phi} \\right]_\\times")
+    wrong = right.replace("\\mathbf{R}_1 \\begin{pmatrix} 0 \\\\ 1", "\\mathbf{R}_2 \\begin{pmatrix} 0 \\\\ 1")
+    chain = "\\left[ \\boldsymbol{\\omega}^b_{ab} \\right]_\\times = -\\dot{\\mathbf{C}} \\left( \\mathbf{C} \\right)^{T}"
+    text = ZYX + TURNS + "$$" + right + "$$\n\n$$" + wrong + "$$\n\n$$" + chain + "$$\n"
+    got = verdicts(text)
+    assert got[9] == {"holds"} and "holds" not in got[11] and got[13] == {"holds"}
+
+
+def test_a_bold_name_before_a_bracketed_bold_name_is_a_product_not_an_argument():
+    text = ZYX + R3 + "$$\\mathbf{R}_3 \\left( \\mathbf{R}_3 \\right)^{T} = \\begin{pmatrix} 1 & 0 & 0 \\\\ 0 & 1 & 0 \\\\ " \
+        "0 & 0 & 1 \\end{pmatrix}$$\n"
+    assert verdicts(text)[9] == {"holds"}
+
+
+def test_a_name_defined_by_a_chain_is_the_member_in_names_the_text_has_given():
+    text = ZYX + ("Here $\\mathbf{C} = \\mathbf{A}^{x}_{y} \\mathbf{A}^{y}_{z} \\mathbf{A}^{z}_{w} = "
+                  "\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)$, with $\\boldsymbol{\\omega}^b_{ab}$ "
+                  "the body angular velocity.\n\n"
+                  "$$\\left[ \\boldsymbol{\\omega}^b_{ab} \\right]_\\times = -\\dot{\\mathbf{C}} \\mathbf{C}^{T}$$\n\n"
+                  "$$\\left[ \\boldsymbol{\\omega}^b_{ab} \\right]_\\times = \\dot{\\mathbf{C}} \\mathbf{C}^{T}$$\n")
+    got = verdicts(text)
+    assert got[9] == {"holds"} and "holds" not in got[11]
