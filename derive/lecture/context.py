@@ -20,6 +20,15 @@ from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
 
 
+def is_ordering(values) -> bool:
+    """Whether a chain the text writes (``I_1 < I_2 < I_3``, ``-1 < u_1 < u_2 < 1 < u_3``) orders
+    symbols: every member a principal moment, a symbol of the text's or a number, one symbol at least."""
+    values = [sp.sympify(v) for v in values]
+    return len(values) > 1 and all(v.is_number and v.is_real or isinstance(v, sp.Symbol) and
+                                   (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values) \
+        and any(isinstance(v, sp.Symbol) for v in values)
+
+
 @dataclass
 class Context:
     """What the text has said so far: assumptions of the section, definitions, equations."""
@@ -102,8 +111,7 @@ class Reading:
                       "an assumption of the text: applies to the displays that follow, up to the next heading")
         self.ctx.assumptions.append(item.latex)
         values = [m.value for m in parsed.members]
-        if len(values) > 1 and set(parsed.relations) <= {"<", ">", "≤", "≥"} and \
-                all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+        if set(parsed.relations) <= {"<", ">", "≤", "≥"} and is_ordering(values):
             self.ctx.orderings.append(values if parsed.relations[0] in ("<", "≤") else values[::-1])
             return
         if len(parsed.members) != 2:

@@ -23,6 +23,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
+from derive.lecture.context import is_ordering
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -250,7 +251,7 @@ class Motion:
         values = [sp.sympify(v) for v in written]
         if not set(rels) <= {"<", ">", "≤", "≥"} or any(isinstance(v, sp.MatrixBase) for v in values):
             return False
-        if all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+        if is_ordering(values):
             chain = values if rels[0] in ("<", "≤") else values[::-1]
             self.ctx.orderings.append(chain)
             self._add(line, piece, "assumption", "unchecked", "an ordering the text states (used for the inequalities that follow)")
@@ -280,15 +281,32 @@ class Motion:
     def _sign_under_orderings(self, d, syms) -> str:
         """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
         Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
-        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not."""
+        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not. A chain
+        with numbers in it starts from its first number c (the symbols before it c − gaps, after it
+        c + gaps), and one that meets a symbol an earlier chain placed goes on from there; the bounds
+        this drops only widen the values tried, so a sign found holds for the text's values too."""
         rep, k = {}, 0
+
+        def gap():
+            nonlocal k
+            k += 1
+            return sp.Symbol(f"gap{k}", positive=True)
+
         for chain in self.ctx.orderings:
-            total = sp.S.Zero
-            for x in chain:
+            numbers = [j for j, x in enumerate(chain) if sp.sympify(x).is_number]
+            start = numbers[0] if numbers else 0
+            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+            for x in reversed(chain[:start]):
+                total = total - gap()
+                rep.setdefault(x, total)
+            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+            for x in chain[start + 1 if numbers else 0:]:
+                if sp.sympify(x).is_number:
+                    continue              # a bound met again: dropped (it would tie the gaps)
                 if x in rep:
+                    total = rep[x]
                     continue
-                k += 1
-                total = total + sp.Symbol(f"gap{k}", positive=True)
+                total = total + gap()
                 rep[x] = total
         for x in syms:
             rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))
