@@ -29,16 +29,14 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("free-rigid-body-euler-case-zh-notes-zxz", "found"): "a trigonometric identity in the text's own angles",
-    ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
     ("murundb-euler-angles-321-rates", "checked"): "products of frame-labelled matrices defined after their use; the identity's columns 𝐈ᵢ",
-    ("rigid-body-formula-notebook-landau-zxz", "checked"): "inertia tensors and stability exponents",
     ("sicm-workbook-euler-equations-forced", "checked"): "SICM's operator notation (D, ∂₁)",
     ("sicm-workbook-euler-equations-forced", "found"): "signs in SICM's operator notation",
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "checked"): "a rolling half hoop's geometry",
     ("wsu-phys521-phantom-torque-rolling-half-hoop", "found"): "a rolling half hoop's geometry",
 }
 
-FLOOR = {"checked": 174, "slips_flagged": 20, "holds_flagged": 0}
+FLOOR = {"checked": 182, "slips_flagged": 20, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -30,6 +30,11 @@ class _Jacobi(sp.Function):
             value = mpmath.ellipfun(self.kind_name, x._to_mpmath(prec), m=m._to_mpmath(prec))
         return sp.Expr._from_mpmath(value, prec)
 
+    def _mpmathcode(self, printer):
+        """For lambdify with mpmath (the reader's numeric zero test)."""
+        x, m = (printer._print(a) for a in self.args)
+        return f"{printer._module_format('mpmath.ellipfun')}({self.kind_name!r}, {x}, m={m})"
+
 
 class JacobiSN(_Jacobi):
     kind_name = "sn"

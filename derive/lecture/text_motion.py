@@ -102,6 +102,8 @@ class TextMotion:
         left, right = members
         if self._function_of_the_text(line, piece, members):
             return True
+        if lx.t in _free(right) and lx.t not in _free(left) and self._own_solution(line, piece, left, right):
+            return True
         self._later_definition(left, right)
         rate = self._rate_power(left)
         if rate is not None:
@@ -130,6 +132,42 @@ class TextMotion:
                           f"the text's equation for {self.tex(left)} (line {self.ctx.own_motion[left][2]}) is carried to it")
                 self.settings_only = False
                 return True
+        return False
+
+    def _own_solution(self, line, piece, left, right) -> bool:
+        """``u = u_1 + (u_2-u_1)\\sn^2(c t)``, ``\\theta = \\arccos[…]``, ``\\sin v = \\sn(c t)``: a closed
+        form the text gives for its own equation ``\\dot u^n = F(u)``, written for u, for a name it
+        defined u by (u = cos θ) or for a variable of its change (u = S(v)). Solved for that name,
+        carried to u(t), and put into the equation: holds when u̇(t)ⁿ = F(u(t)) at random values of
+        the names (with those the text defines further on). Only a solution that holds is taken."""
+        for var, (n, eq, eq_line) in self.ctx.own_motion.items():
+            ways = [(var, var)]
+            ways += [(x, d) for x, d in [(x, self.ctx.defs.get(var)) for x in _free(self.ctx.defs.get(var, 0))]
+                     if x in self.d.rot.ANGLES]
+            ways += [(v, change) for v, (old, change, _) in self.ctx.changes.items() if old == var]
+            for name, carried in ways:
+                if _free(left) != {name}:
+                    continue
+                try:
+                    roots = [left] if left == name else sp.solve(sp.Eq(left, sp.Symbol("_r")), name)
+                except (NotImplementedError, TypeError, ValueError):
+                    continue
+                for root in roots:
+                    value = root.xreplace({sp.Symbol("_r"): right}) if left != name else right
+                    u_t = carried.xreplace({name: value}) if name != var else value
+                    known = _free(eq) | {lx.t}
+                    u_t = self._later_names(u_t, known | _free(u_t) - set(self.later_defs) - set(self.ctx.defs))
+                    if u_t is None:
+                        continue
+                    lhs = sp.diff(u_t, lx.t) ** n
+                    rhs = self._later_names(eq.xreplace({var: u_t}), known)
+                    if rhs is not None and _equal(lhs, rhs):
+                        how = f" through {self.tex(name)}" if name != var else ""
+                        self._add(line, piece, "solution", "holds",
+                                  f"put into the text's equation for {self.tex(var)} (line "
+                                  f"{eq_line}){how}: it solves it (equal at random values of its names)")
+                        self.settings_only = False
+                        return True
         return False
 
     def _function_then_bound(self, line, piece, parsed) -> bool:
