@@ -257,16 +257,24 @@ class Motion:
             self._add(line, piece, "assumption", "unchecked", "an ordering the text states (used for the inequalities that follow)")
             return True
         ordered = set().union(*map(set, self.ctx.orderings)) if self.ctx.orderings else set()
+        # three moments ordered: an asymmetric body, whose energy here is the free body's ½ Σ Iᵢω̃ᵢ²
+        free_body = {I1, I2, I3} <= ordered and any(free(v) & {lx.ENERGY} for v in values)
+        if free_body:
+            values = [v.xreplace({lx.ENERGY: self.d.forms(lx.T_)[0]}) for v in values]
         values = [self._own_defs(self._resolve(v)).xreplace(self.ctx.subs) for v in values]
         syms = set().union(*(free(v) for v in values))
         if not ordered or not syms & ordered or not syms <= ordered | set(lx.W) | {s for s in syms if isinstance(s, lx.Generic)}:
             return False
-        verdicts = []
+        verdicts, names = [], sorted(syms, key=lambda x: x.name)
         for k, rel in enumerate(rels):
-            d = values[k + 1] - values[k] if rel in ("<", "≤") else values[k] - values[k + 1]
-            verdicts.append(self._sign_under_orderings(d, sorted(syms, key=lambda x: x.name)))
+            a, b = (values[k], values[k + 1]) if rel in ("<", "≤") else (values[k + 1], values[k])
+            verdict = self._sign_under_orderings(b - a, names)
+            if verdict == "mixed" and all(self._sign_under_orderings(x, names) == "positive" for x in (a, b)):
+                verdict = self._sign_under_orderings(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
+            verdicts.append(verdict)
         if all(v == "positive" for v in verdicts):
-            self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}")
+            energy = " (E the free body's ½ Σ Iᵢω̃ᵢ²)" if free_body else ""
+            self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}{energy}")
         elif all(v == "negative" for v in verdicts) and len(rels) == 1:
             flip = {"<": ">", ">": "<", "≤": r"\ge", "≥": r"\le"}[rels[0]]
             self._add(line, piece, "inequality", "typo", f"the relation is reversed: its opposite follows from "

@@ -143,6 +143,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         k = 0
         while k < len(items):
             item = items[k]
+            if self.notes.names is not None:
+                self.notes.names.here = item.line
             if item.kind == "heading":
                 self._flush()
                 self._place_flushed(len(self.claims))
@@ -221,6 +223,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
 
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
+        if self.notes.names is not None:
+            self.notes.names.here = line        # the names the prose gives in this section hold
         text = piece
         if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
             text = self.ctx.head + " " + piece
