@@ -44,6 +44,7 @@ class Context:
     vec_model: str | None = None                      # "particle" after a sum over particles
     stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
     orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
+    orientation_prose: bool = False                   # … said in the section's prose (it ends with the section)
     first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
     forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
     orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
@@ -59,6 +60,8 @@ class Context:
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
         self.motion, self.own_motion, self.changes = {}, {}, {}
+        if self.orientation_prose:
+            self.orientation, self.orientation_prose = None, False
 
 
 class Reading:

@@ -151,6 +151,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
+            elif item.kind == "context" and item.text == "along momentum":
+                self.ctx.orientation, self.ctx.orientation_prose = item.line, True
             elif item.kind == "context":
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
@@ -438,6 +440,8 @@ class Checker(TextNames, TextMotion, Rereading, Motion, Reading, VectorStatement
         None. Tried for a relation of the angles without rates (the text stating its orientation,
         I₁ω₁ = L sin θ sin ψ) and, once one held so, for the relations that follow."""
         rot = self.d.rot
+        if self.ctx.orientation is not None and not isinstance(val, sp.MatrixBase):
+            val = val.xreplace({lx.p_alpha_sym(): lx.LMAG})       # 𝐋 along the fixed first axis: p = L·ẑ = |𝐋|
         every = free(val).union(*(free(self._resolve(f)) for f in targets))
         if isinstance(val, sp.MatrixBase) or rot.ANGLES[0] in every or not every & set(lx.W) | {lx.LMAG}:
             return None
