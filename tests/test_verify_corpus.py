@@ -28,11 +28,9 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
-    ("heavy-symmetric-top-lagrange-case-zh-notes-zxz", "checked"): "elliptic functions and the text's constants",
-    ("rigid-body-formula-notebook-landau-zxz", "checked"): "inertia tensors and stability exponents",
 }
 
-FLOOR = {"checked": 206, "slips_flagged": 26, "holds_flagged": 0}
+FLOOR = {"checked": 216, "slips_flagged": 26, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -20,6 +20,15 @@ from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
 
 
+def is_ordering(values) -> bool:
+    """Whether a chain the text writes (``I_1 < I_2 < I_3``, ``-1 < u_1 < u_2 < 1 < u_3``) orders
+    symbols: every member a principal moment, a symbol of the text's or a number, one symbol at least."""
+    values = [sp.sympify(v) for v in values]
+    return len(values) > 1 and all(v.is_number and v.is_real or isinstance(v, sp.Symbol) and
+                                   (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values) \
+        and any(isinstance(v, sp.Symbol) for v in values)
+
+
 @dataclass
 class Context:
     """What the text has said so far: assumptions of the section, definitions, equations."""
@@ -35,6 +44,7 @@ class Context:
     vec_model: str | None = None                      # "particle" after a sum over particles
     stated: dict = field(default_factory=dict)        # I₂ → where the text said I₁ = I₂
     orientation: int | None = None                    # the line that put the fixed first axis along 𝐋
+    orientation_prose: bool = False                   # … said in the section's prose (it ends with the section)
     first_order: set = field(default_factory=set)     # ω̃ᵢ the prose calls small: equations to first order
     forms_held: dict = field(default_factory=dict)    # a quantity → the derived form the text's definition held with
     orderings: list = field(default_factory=list)     # chains the text states, smallest first (I₁ < I₂ < I₃)
@@ -52,6 +62,8 @@ class Context:
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
+        if self.orientation_prose:
+            self.orientation, self.orientation_prose = None, False
 
 
 class Reading:
@@ -104,8 +116,7 @@ class Reading:
                       "an assumption of the text: applies to the displays that follow, up to the next heading")
         self.ctx.assumptions.append(item.latex)
         values = [m.value for m in parsed.members]
-        if len(values) > 1 and set(parsed.relations) <= {"<", ">", "≤", "≥"} and \
-                all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+        if set(parsed.relations) <= {"<", ">", "≤", "≥"} and is_ordering(values):
             self.ctx.orderings.append(values if parsed.relations[0] in ("<", "≤") else values[::-1])
             return
         if len(parsed.members) != 2:

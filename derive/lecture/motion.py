@@ -23,6 +23,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
+from derive.lecture.context import is_ordering
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -250,22 +251,30 @@ class Motion:
         values = [sp.sympify(v) for v in written]
         if not set(rels) <= {"<", ">", "≤", "≥"} or any(isinstance(v, sp.MatrixBase) for v in values):
             return False
-        if all(isinstance(v, sp.Symbol) and (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values):
+        if is_ordering(values):
             chain = values if rels[0] in ("<", "≤") else values[::-1]
             self.ctx.orderings.append(chain)
             self._add(line, piece, "assumption", "unchecked", "an ordering the text states (used for the inequalities that follow)")
             return True
         ordered = set().union(*map(set, self.ctx.orderings)) if self.ctx.orderings else set()
+        # three moments ordered: an asymmetric body, whose energy here is the free body's ½ Σ Iᵢω̃ᵢ²
+        free_body = {I1, I2, I3} <= ordered and any(free(v) & {lx.ENERGY} for v in values)
+        if free_body:
+            values = [v.xreplace({lx.ENERGY: self.d.forms(lx.T_)[0]}) for v in values]
         values = [self._own_defs(self._resolve(v)).xreplace(self.ctx.subs) for v in values]
         syms = set().union(*(free(v) for v in values))
         if not ordered or not syms & ordered or not syms <= ordered | set(lx.W) | {s for s in syms if isinstance(s, lx.Generic)}:
             return False
-        verdicts = []
+        verdicts, names = [], sorted(syms, key=lambda x: x.name)
         for k, rel in enumerate(rels):
-            d = values[k + 1] - values[k] if rel in ("<", "≤") else values[k] - values[k + 1]
-            verdicts.append(self._sign_under_orderings(d, sorted(syms, key=lambda x: x.name)))
+            a, b = (values[k], values[k + 1]) if rel in ("<", "≤") else (values[k + 1], values[k])
+            verdict = self._sign_under_orderings(b - a, names)
+            if verdict == "mixed" and all(self._sign_under_orderings(x, names) == "positive" for x in (a, b)):
+                verdict = self._sign_under_orderings(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
+            verdicts.append(verdict)
         if all(v == "positive" for v in verdicts):
-            self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}")
+            energy = " (E the free body's ½ Σ Iᵢω̃ᵢ²)" if free_body else ""
+            self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}{energy}")
         elif all(v == "negative" for v in verdicts) and len(rels) == 1:
             flip = {"<": ">", ">": "<", "≤": r"\ge", "≥": r"\le"}[rels[0]]
             self._add(line, piece, "inequality", "typo", f"the relation is reversed: its opposite follows from "
@@ -280,15 +289,32 @@ class Motion:
     def _sign_under_orderings(self, d, syms) -> str:
         """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
         Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
-        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not."""
+        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not. A chain
+        with numbers in it starts from its first number c (the symbols before it c − gaps, after it
+        c + gaps), and one that meets a symbol an earlier chain placed goes on from there; the bounds
+        this drops only widen the values tried, so a sign found holds for the text's values too."""
         rep, k = {}, 0
+
+        def gap():
+            nonlocal k
+            k += 1
+            return sp.Symbol(f"gap{k}", positive=True)
+
         for chain in self.ctx.orderings:
-            total = sp.S.Zero
-            for x in chain:
+            numbers = [j for j, x in enumerate(chain) if sp.sympify(x).is_number]
+            start = numbers[0] if numbers else 0
+            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+            for x in reversed(chain[:start]):
+                total = total - gap()
+                rep.setdefault(x, total)
+            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+            for x in chain[start + 1 if numbers else 0:]:
+                if sp.sympify(x).is_number:
+                    continue              # a bound met again: dropped (it would tie the gaps)
                 if x in rep:
+                    total = rep[x]
                     continue
-                k += 1
-                total = total + sp.Symbol(f"gap{k}", positive=True)
+                total = total + gap()
                 rep[x] = total
         for x in syms:
             rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))

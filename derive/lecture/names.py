@@ -13,6 +13,9 @@ vertical)", "the body-frame components $\\Omega_1, \\Omega_2, \\Omega_3$ of the 
 velocity", "a distance $h$ from the pivot to the centre of mass", "the principal moments $A$,
 $B$, $C$". The phrase nearest the symbol within its clause wins. A meaning binds either the
 exact symbol (``J_z``) or its letter with any index (``M``: 𝐌, M_i, M_z, |𝐌|).
+A binding holds in the section whose prose makes it (the reader sets `Names.here` as it goes):
+Landau's M is the mass in one section and the angular momentum's magnitude in the next. Where a
+section's prose says nothing of a name, its first binding in the text holds.
 
 The meanings (`MEANINGS`, a registry: adding one adds a row):
 
@@ -104,14 +107,36 @@ class Names:
     letters: dict = field(default_factory=dict)
     where: dict = field(default_factory=dict)
     frames: dict = field(default_factory=dict)     # (base, sub) → the frame label over a symbol bound with one
+    sections: list = field(default_factory=list)
+    """The lines of the text's headings: a name the prose gives in a section holds there."""
+    scoped: dict = field(default_factory=dict)
+    """("symbols" or "letters", key) → [(line, meaning)]: every binding the prose makes, in order."""
+    declared: set = field(default_factory=set)
+    """("symbols" or "letters", key) the front matter names: said outright, for the whole text."""
+    here: int | None = None
+    """The line the reader is at (set as it goes), or None: then the first binding of a name holds."""
+
+    def _section(self, line: int) -> int:
+        return sum(1 for h in self.sections if h <= line)
 
     def meaning(self, atom) -> str | None:
         """The meaning of an atom of `latex.scan`, or None. A letter learned as a vector (bold) or
-        its components (indexed) names both; the plain letter only if the text used it plain."""
+        its components (indexed) names both; the plain letter only if the text used it plain. A
+        name the prose gives in the section the reader is in wins (Landau's M, the top's mass in
+        one section and the angular momentum's magnitude in another); else its first binding."""
         key = (atom.base, atom.sub)
+        letter = (atom.base, "plain" if not (atom.bold or atom.sub) else "vector")
+        if self.here is not None and self.sections:
+            at = self._section(self.here)
+            for table, k in (("symbols", key), ("letters", letter)):
+                if (table, k) in self.declared:
+                    break
+                for line, meaning in self.scoped.get((table, k), ()):
+                    if self._section(line) == at:
+                        return meaning
         if key in self.symbols:
             return self.symbols[key]
-        return self.letters.get((atom.base, "plain" if not (atom.bold or atom.sub) else "vector"))
+        return self.letters.get(letter)
 
     def value(self, a, env: dict, vocab):
         """What an atom stands for by the meaning the text gave it (`MEANINGS`); None where it
@@ -165,6 +190,7 @@ class Names:
 _INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
 _DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|numcases|subnumcases)\*?\}.+?\\end\{\1\*?\}", re.S)
 _CLAUSE = re.compile(r"[.;:!?]\s|\n\s*\n")
+_HEADING = re.compile(r"^ {0,3}#{1,6}\s|^\s*\\(?:sub)*section\*?\{", re.M)
 
 
 def _atoms(latex: str) -> list:
@@ -211,8 +237,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
     """
     names = Names()
     body = _INLINE.sub(lambda m: "$" + source.normalize(m.group(1), macros).replace("$", "") + "$", body)
-    prose = _DISPLAY.sub("\n\n", body)
-    starts = [0] + [m.end() for m in re.finditer("\n", body)]
+    # a display ends a clause and keeps its lines, so that a position in the prose is on the text's line
+    prose = _DISPLAY.sub(lambda m: " . " + "\n" * max(m.group(0).count("\n"), 0), body)
+    starts = [0] + [m.end() for m in re.finditer("\n", prose)]
     for clause in _clauses(prose):
         text, offset = clause
         found = list(_INLINE.finditer(text))
@@ -241,6 +268,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             if meaning is None or meaning == "principal moments" or not _fits(meaning, atoms):
                 continue
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
+    names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():
         meaning = _resolve_meaning(what)
@@ -350,14 +378,23 @@ def _bind(names: Names, atoms, meaning, where, override=False):
             _put(names.symbols, (atom.base, atom.sub), m, override)
             names.where[(atom.base, atom.sub)] = where
         return
+    line = int(where[5:]) if where.startswith("line ") and not override else None
     for atom in atoms:
         if how == "letter":
             kinds = ("plain", "vector") if override else ("plain" if not (atom.bold or atom.sub) else "vector",)
             for kind in kinds:        # the front matter names the letter in every spelling
                 _put(names.letters, (atom.base, kind), meaning, override)
+                if override:
+                    names.declared.add(("letters", (atom.base, kind)))
+                if line is not None:
+                    names.scoped.setdefault(("letters", (atom.base, kind)), []).append((line, meaning))
         else:
             _put(names.symbols, (atom.base, atom.sub), meaning, override)
             names.frames.setdefault((atom.base, atom.sub), atom.sup)
+            if override:
+                names.declared.add(("symbols", (atom.base, atom.sub)))
+            if line is not None:
+                names.scoped.setdefault(("symbols", (atom.base, atom.sub)), []).append((line, meaning))
         names.where[(atom.base, atom.sub)] = where
 
 

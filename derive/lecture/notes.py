@@ -48,6 +48,10 @@ _DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displa
 _MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
                    r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
                    r"|(?<![\\$])\$(?P<i>(?:[^$\n]|\n(?![ \t]*\n))+?)(?<!\\)\$", re.S)
+ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?:[zZ]\s*)?[- ]?axis\s+(?:is\s+)?"
+                            r"(?:taken|chosen|put|placed|laid|set)?\s*along\s+(?:the\s+)?(?:conserved\s+|constant\s+)?"
+                            r"angular momentum", re.I)
+"""The prose choosing the fixed first axis along the angular momentum (a free body's usual frame)."""
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
@@ -61,7 +65,7 @@ class Item:
     """One thing of the notes, in order.
 
     ``kind``: ``"heading"`` (``text`` is the title), ``"context"`` (``text``: ``"symmetric"``, the
-    prose says the body is symmetric), ``"display"`` (``latex``), ``"inline"`` (a
+    prose says the body is symmetric; ``"along momentum"``, it takes the fixed axis along 𝐋), ``"display"`` (``latex``), ``"inline"`` (a
     relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
     here to the next heading), ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
     ``"same"`` or ``"opposite"``) or ``"small"`` (``symbols``: the LaTeX of quantities the prose
@@ -302,6 +306,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
+    for m in ALONG_MOMENTUM.finditer(prose):
+        events.append((m.start(), Item("context", line_of(m.start()), text="along momentum", lead=m.group(0))))
     for m in _SMALL.finditer(prose):
         start = max([0] + [e.end() for e in _SENTENCE_END.finditer(prose, 0, m.start())])
         maths = [x.group("i") for x in _MATH.finditer(body, start, m.start()) if x.group("i")]

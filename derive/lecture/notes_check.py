@@ -152,12 +152,16 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
         k = 0
         while k < len(items):
             item = items[k]
+            if self.notes.names is not None:
+                self.notes.names.here = item.line
             if item.kind == "heading":
                 self._flush()
                 self._place_flushed(len(self.claims))
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
+            elif item.kind == "context" and item.text == "along momentum":
+                self.ctx.orientation, self.ctx.orientation_prose = item.line, True
             elif item.kind == "context":
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
@@ -245,6 +249,8 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
 
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
+        if self.notes.names is not None:
+            self.notes.names.here = line        # the names the prose gives in this section hold
         text = piece
         if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
             text = self.ctx.head + " " + piece
@@ -470,6 +476,8 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
         None. Tried for a relation of the angles without rates (the text stating its orientation,
         I₁ω₁ = L sin θ sin ψ) and, once one held so, for the relations that follow."""
         rot = self.d.rot
+        if self.ctx.orientation is not None and not isinstance(val, sp.MatrixBase):
+            val = val.xreplace({lx.p_alpha_sym(): lx.LMAG})       # 𝐋 along the fixed first axis: p = L·ẑ = |𝐋|
         every = free(val).union(*(free(self._resolve(f)) for f in targets))
         if isinstance(val, sp.MatrixBase) or rot.ANGLES[0] in every or not every & set(lx.W) | {lx.LMAG}:
             return None

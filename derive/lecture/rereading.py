@@ -4,8 +4,8 @@ Takes: a statement the notes checker (`derive.lecture.notes_check.Checker`) has 
 the context it was judged in. Gives: the mixin `Rereading` of the checker, which reads a flagged
 statement again —
 
-1. with a name's second meaning (a plain L as the angular momentum's magnitude), kept when it
-   makes the statement hold;
+1. with a name's second meaning (a plain L as the angular momentum's magnitude; I₁ as the moment
+   about the centre of mass where the text writes I₁ + M a²), kept when it makes the statement hold;
 2. for a symmetric body, when the formula is written for one (I₁, no I₂) and the text never said
    so: ``holds if I₁ = I₂``, never ``fails``; and a statement that holds only because the text
    made the body symmetric says where it did;
@@ -25,7 +25,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import vectors as vc
-from derive.symbolic.lagrangian import I1, I2
+from derive.symbolic.lagrangian import I1, I2, Mass, l
 
 
 def _copied(ctx):
@@ -84,10 +84,16 @@ def _free_of(parsed) -> set:
     return out
 
 
+_PARALLEL_AXES = re.compile(r"I_\{?1\}?\s*\+\s*M\s*\\?[A-Za-z]+\s*\^\s*\{?\s*2")
+"""``I_1 + Ma^2``: a text that adds M a² to I₁ gives its moments about the centre of mass."""
+
+
 def _second_readings(piece: str):
     """(name, value, description) of the names in a statement that have a second reading."""
     if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
         yield "L", lx.LMAG, "L as the magnitude of the angular momentum"
+    if _PARALLEL_AXES.search(piece):
+        yield "I1", I1 - Mass * l ** 2, "I₁ as the moment about the centre of mass (I₁ + M l² about the fixed point)"
 
 
 class Rereading:

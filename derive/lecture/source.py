@@ -313,6 +313,9 @@ _BARE_TRIG = re.compile(r"(?<![A-Za-z])(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh)(
 _WORD_TRIG = re.compile(r"\\(text|mathrm|mathit|operatorname)\{\s*\\(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh) \}")
 
 
+_ELLIPTIC = re.compile(r"\\(?:mathrm|operatorname)\{\s*(sn|cn|dn)\s*\}(?:\\,)?")
+
+
 _CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
 
 
@@ -383,6 +386,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
     text = _cross_matrices(text)
     text = _ROW_STOP.sub(" ", text)                  # "1." before a row's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
+    text = _ELLIPTIC.sub(r"\\\1 ", text)              # \\mathrm{sn}: Jacobi's elliptic sine
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
     text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default

@@ -9,7 +9,8 @@ next; a row into pieces at ``\\qquad``, ``\\quad``, ``\\Rightarrow``, ``\\implie
 top-level ``;`` and at commas between relations (never inside brackets). A label before a colon
 (``\\theta:``, ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are
 dropped; a case before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
-``\\text{const}`` is kept as the constant it names.
+``\\text{const}`` is kept as the constant it names; a ``\\pm`` on a statement's left side makes it
+two statements, one for each sign.
 """
 from __future__ import annotations
 
@@ -153,8 +154,23 @@ def statements(latex: str) -> list[str]:
                 for one in _lists(part):
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
-                        out.append(_trimmed(one))
+                        out.extend(_sign_cases(_trimmed(one)))
     return out
+
+
+_PM = re.compile(r"\\(pm|mp)(?![A-Za-z])")
+_FIRST_RELATION = re.compile(r"(?<![<>!\\])=|[<>]|\\(le|ge|leq|geq|lt|gt|leqslant|geqslant|equiv|approx)(?![A-Za-z])")
+
+
+def _sign_cases(piece: str) -> list[str]:
+    """``G(\\pm 1) = -(\\beta \\mp b)^2``: a ± on the left side states the formula for each sign,
+    the upper signs (± → +, ∓ → −) and the lower; each is a statement. A ± only on the right side
+    (``x = \\pm\\sqrt{y}``, two roots) is left as written."""
+    rel = _FIRST_RELATION.search(piece)
+    if rel is None or not _PM.search(piece[:rel.start()]):
+        return [piece]
+    return [_PM.sub(lambda m: sign if m.group(1) == "pm" else other, piece)
+            for sign, other in (("+", "-"), ("-", "+"))]
 
 def _trimmed(s: str) -> str:
     """Without spacing commands and punctuation at its ends."""
@@ -185,10 +201,11 @@ _MARKS = re.compile(r"\\(label|tag|eqref)\*?\s*\{[^{}]*\}|\\(notag|nonumber)\b")
 def continues(before: str, after: str) -> bool:
     """A display that starts with + or − continues the previous one's right side — unless the
     previous one ended its sentence (a full stop) or the new one states a relation of its own
-    in its first row (``-\\dot{R} R^T = …``)."""
+    in its first row (``-\\dot{R} R^T = …``, ``-1 < u_1 < u_2``)."""
     head = _strip_envs(after)
     if not re.match(r"\s*(&\s*)?[+\-]", head):
         return False
     if _MARKS.sub(" ", _strip_envs(before)).rstrip().endswith("."):
         return False
-    return not re.search(r"(?<![<>!\\])=|\\(le|ge|leq|geq|approx|equiv)\b", head.split("\\\\")[0])
+    return not re.search(r"(?<![<>!\\])=|(?<!\\left)(?<!\\right)[<>]|\\(le|ge|leq|geq|lt|gt|approx|equiv)\b",
+                         head.split("\\\\")[0])

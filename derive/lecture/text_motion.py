@@ -25,10 +25,32 @@ May import: :mod:`derive.lecture.latex`, SymPy.
 from __future__ import annotations
 
 import random
+import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+
+_BOUNDS = ("<", ">", "≤", "≥")
+
+
+def _top_relations(piece: str) -> list:
+    """(start, end) of each relation outside brackets in a statement's LaTeX."""
+    out, depth = [], 0
+    try:
+        toks = lx.scan(piece)
+    except lx.NotRead:
+        return out
+    for tok in toks:
+        if tok.kind == "op" and tok.value in "({":
+            depth += 1
+        elif tok.kind == "op" and tok.value in ")}":
+            depth -= 1
+        elif tok.kind == "rel" and depth == 0:
+            cmd = re.match(r"\\[A-Za-z]+", piece[tok.pos:])
+            out.append((tok.pos, tok.pos + (cmd.end() if cmd else 1)))
+    return out
+
 
 _POINTS = 4
 """Random points at which the two sides are compared (an identity holds at all of them)."""
@@ -72,10 +94,15 @@ class TextMotion:
         if not hasattr(self, "change_checks"):
             self.change_checks, self.later_defs = [], {}
         members = [m.value for m in parsed.members]
+        if len(members) > 2 and parsed.relations[0] == "=" and set(parsed.relations[1:]) <= set(_BOUNDS) \
+                and not any(isinstance(m, sp.MatrixBase) for m in members):
+            return self._function_then_bound(line, piece, parsed)
         if len(members) != 2 or parsed.relations != ["="] or any(isinstance(m, sp.MatrixBase) for m in members):
             return False
         left, right = members
         if self._function_of_the_text(line, piece, members):
+            return True
+        if lx.t in _free(right) and lx.t not in _free(left) and self._own_solution(line, piece, left, right):
             return True
         self._later_definition(left, right)
         rate = self._rate_power(left)
@@ -107,6 +134,58 @@ class TextMotion:
                 return True
         return False
 
+    def _own_solution(self, line, piece, left, right) -> bool:
+        """``u = u_1 + (u_2-u_1)\\sn^2(c t)``, ``\\theta = \\arccos[…]``, ``\\sin v = \\sn(c t)``: a closed
+        form the text gives for its own equation ``\\dot u^n = F(u)``, written for u, for a name it
+        defined u by (u = cos θ) or for a variable of its change (u = S(v)). Solved for that name,
+        carried to u(t), and put into the equation: holds when u̇(t)ⁿ = F(u(t)) at random values of
+        the names (with those the text defines further on). Only a solution that holds is taken."""
+        for var, (n, eq, eq_line) in self.ctx.own_motion.items():
+            ways = [(var, var)]
+            ways += [(x, d) for x, d in [(x, self.ctx.defs.get(var)) for x in _free(self.ctx.defs.get(var, 0))]
+                     if x in self.d.rot.ANGLES]
+            ways += [(v, change) for v, (old, change, _) in self.ctx.changes.items() if old == var]
+            for name, carried in ways:
+                if _free(left) != {name}:
+                    continue
+                try:
+                    roots = [left] if left == name else sp.solve(sp.Eq(left, sp.Symbol("_r")), name)
+                except (NotImplementedError, TypeError, ValueError):
+                    continue
+                for root in roots:
+                    value = root.xreplace({sp.Symbol("_r"): right}) if left != name else right
+                    u_t = carried.xreplace({name: value}) if name != var else value
+                    known = _free(eq) | {lx.t}
+                    u_t = self._later_names(u_t, known | _free(u_t) - set(self.later_defs) - set(self.ctx.defs))
+                    if u_t is None:
+                        continue
+                    lhs = sp.diff(u_t, lx.t) ** n
+                    rhs = self._later_names(eq.xreplace({var: u_t}), known)
+                    if rhs is not None and _equal(lhs, rhs):
+                        how = f" through {self.tex(name)}" if name != var else ""
+                        self._add(line, piece, "solution", "holds",
+                                  f"put into the text's equation for {self.tex(var)} (line "
+                                  f"{eq_line}){how}: it solves it (equal at random values of its names)")
+                        self.settings_only = False
+                        return True
+        return False
+
+    def _function_then_bound(self, line, piece, parsed) -> bool:
+        """``G(-1) = -(\\beta + b\\Omega)^2 < 0``: the text's function at an argument, then a bound on
+        the value. Two claims: the equality (as `_function_of_the_text` takes it) and the bound,
+        decided by the orderings the text states or left ``unchecked``. False (nothing said) when
+        the equality is not the text's function put in."""
+        cuts = _top_relations(piece)
+        if len(cuts) != len(parsed.relations):
+            return False
+        equality, bound = piece[:cuts[1][0]].strip(), piece[cuts[0][1]:].strip()
+        members = [m.value for m in parsed.members]
+        if not self._function_of_the_text(line, equality, members[:2]):
+            return False
+        if not self._ordered(line, bound, members[1:], parsed.relations[1:]):
+            self._add(line, bound, "inequality", "unchecked", "a bound the derivation does not decide")
+        return True
+
     def _function_of_the_text(self, line, piece, members) -> bool:
         """``G\\left(\\frac{\\beta}{b\\Omega}\\right) = …`` after the text defined ``G(u) = …``: G at
         that argument, its definition with u put in. Only a statement that then holds in the
@@ -115,8 +194,7 @@ class TextMotion:
         for k, m in enumerate(members):
             for f in _free(m):
                 atom = self.vocab.generic.get(f) if isinstance(f, lx.Generic) else None
-                if atom is None or atom.sup or f in self.ctx.defs or not isinstance(m, sp.Mul) \
-                        or f not in m.args:
+                if atom is None or atom.sup or f in self.ctx.defs or not (m == f or isinstance(m, sp.Mul) and f in m.args):
                     continue
                 defined = [(s, a) for s, a in self.vocab.generic.items() if s in self.ctx.defs
                            and a == atom.with_(sup=a.sup) and a.sup.startswith("(") and a.sup.endswith(")")]
@@ -126,6 +204,9 @@ class TextMotion:
                 body = self.ctx.defs[sym]
                 var = [x for x in _free(body) if str(x) == a.sup[1:-1]]
                 arg = m / f
+                if arg == 1 and not re.search(rf"(?<![A-Za-z\\]){re.escape(atom.base)}\s*(\\left)?\(\s*\+?\s*1\s*(\\right)?\)",
+                                              piece):
+                    continue                # G alone, not G(1): the product reading drops a factor 1
                 if len(var) != 1 or f in _free(arg):
                     continue
                 applied.append(k)

@@ -130,9 +130,9 @@ class TextNames:
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
         base = m0.base if isinstance(m0, sp.Pow) and m0.exp == 2 else None
-        if self._new_name(base) and base not in getattr(self, "generics_before", ()) and rels[0] in ("=", "≡") \
-                and not (_free(members[1]) & {base}):
-            # "names it k₄² = …": k₄ is the positive root (a rate or a frequency)
+        if self._new_name(base) and (base not in getattr(self, "generics_before", ()) or base not in self._constants()) \
+                and rels[0] in ("=", "≡") and not (_free(members[1]) & {base}):
+            # "names it k₄² = …" (or "where k² = …" after using k): k is the positive root
             self.ctx.defs[base] = sp.sqrt(members[1])
             self._add(line, piece, "new symbol", "unchecked",
                       f"defines the text's symbol {self.tex(base)} by its square (recorded, then used)")

@@ -52,6 +52,10 @@ class VectorStatements:
             if ok:
                 self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
                 continue
+            if not reading.free and self._vector_eom(reading.members[0][0].value, reading.members[0][k].value):
+                self._add(line, piece, "equation of motion", "holds", "in components, each row is Euler's equation "
+                          "for that component (Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ, the torque's components as the text names them)")
+                continue
             if "not a vector" in how or " against a " in how:
                 self._add(line, piece, kind, "unchecked", f"cannot compare its sides as read: {how}")
                 continue
@@ -66,6 +70,24 @@ class VectorStatements:
                           f"({vc.WHY[reading.model]})", fix[0])
             else:
                 self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
+        return True
+
+    def _vector_eom(self, a, b) -> bool:
+        """``I\\dot{\\boldsymbol\\omega} + \\boldsymbol\\omega \\times (I\\boldsymbol\\omega) = \\boldsymbol\\tau`` as
+        columns: component i of a − b a non-zero constant multiple of Euler's equation i (with the
+        torque's component τᵢ when the text writes one)."""
+        if not all(isinstance(v, sp.MatrixBase) and v.shape == (3, 1) for v in (a, b)):
+            return False
+        r = [sp.expand(self._resolve(e).xreplace(self.ctx.subs)) for e in (a - b)]
+        if not any(free(e) & set(lx.WD) for e in r):
+            return False
+        euler = self.d.euler(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD) | set(lx.TAU)
+        for i in range(3):
+            target = euler[i] - lx.TAU[i] if free(r[i]) & set(lx.TAU) else euler[i]
+            q = sp.cancel(sp.together(r[i] / target)) if target != 0 else None
+            if q is None or q == 0 or free(q) & dyn:
+                return False
         return True
 
     def _vector_fix(self, reading, k, piece):

@@ -143,8 +143,30 @@ def vectorish(toks) -> bool:
     return _has_time_derivative(toks)
 
 
+_INDEX = r"(\\[A-Za-z]+|[A-Za-z])"
+_SUMMED = re.compile(r"\\sum\s*_\s*(?:\{\s*" + _INDEX + r"\s*\}|" + _INDEX + r")")
+
+
+def _particle_index(text: str) -> str | None:
+    """The letter a text sums its particles over (Landau's α of ``\\sum_\\alpha m_\\alpha``): summed,
+    and the index of a mass m. None when it is p already or a body axis (i, j, k)."""
+    for m in _SUMMED.finditer(text):
+        x = m.group(1) or m.group(2)
+        if x in ("i", "j", "k", "p"):
+            continue
+        if re.search(r"(?<![A-Za-z\\])m\s*_\s*(\{\s*" + re.escape(x) + r"\s*\}|" + re.escape(x) + r"(?![A-Za-z]))", text):
+            return x
+    return None
+
+
 def prepare(text: str) -> str:
     """𝟙 (``\\mathbf{1}``, ``\\mathbb{1}``) as a symbol the scanner reads; ``\\overleftrightarrow``
-    (the dyadic arrow) as bold."""
+    (the dyadic arrow) as bold; the text's particle index (``m_{\\alpha}``, ``r_{\\alpha ,i}``,
+    ``\\sum_{\\alpha}``) as p."""
     text = _UNIT.sub(r"\\mathbf{\\Xi}", text)
+    x = _particle_index(text)
+    if x is not None:
+        x = re.escape(x) + (r"(?![A-Za-z])" if x.startswith("\\") else "")
+        text = re.sub(r"_\s*\{\s*" + x + r"\s*,?\s*([ijkxyz123])?\s*\}", lambda m: "_{p" + (m.group(1) or "") + "}", text)
+        text = re.sub(r"_\s*" + x, "_{p}", text)
     return text.replace("\\overleftrightarrow", "\\mathbf")

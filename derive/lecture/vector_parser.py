@@ -247,6 +247,15 @@ class _VParser(_Parser):
             raise _FreeIndex(a.sub)
         return super().atom(tok, env)
 
+    def _angular_velocity(self, a) -> bool:
+        """The text's letter for the angular velocity (Landau's 𝛀), bold or plain (Ω² = 𝛀·𝛀)."""
+        return self._text_letter(a, "angular velocity")
+
+    def _text_letter(self, a, meaning) -> bool:
+        """Whether the text names a's letter, as a vector, by this meaning (`derive.lecture.names`)."""
+        names = getattr(self.vocab, "names", None)
+        return names is not None and not self.vocab.names_off and names.letters.get((a.base, "vector")) == meaning
+
     def _index(self, ch, env, tok):
         if ch in AXES:
             return AXES[ch]
@@ -264,7 +273,7 @@ class _VParser(_Parser):
     def vector_atom(self, a, env, tok):
         m = self.model
         plain = not a.hat and not a.tilde and not a.primes and not a.dots
-        if a.base == "omega" and not a.sub and not a.dots and not a.tilde:
+        if (a.base == "omega" or self._angular_velocity(a)) and not a.sub and not a.dots and not a.tilde:
             return m.omega
         if a.base == "e" and (a.hat or a.bold) and not a.primes and not a.sup and len(a.sub) == 1:
             return sp.eye(3)[:, self._index(a.sub, env, tok)]
@@ -293,6 +302,9 @@ class _VParser(_Parser):
             return R_B
         if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
             return m.momentum
+        if self._text_letter(a, "angular momentum") and plain and (a.bold and not a.sub or len(a.sub) == 1 and
+                                                                   m.name == "particle" and not a.bold):
+            return m.momentum if not a.sub else m.momentum[self._index(a.sub, env, tok)]   # Landau's 𝐌, M_i
         if a.base == "T" and plain and not a.sub and not a.bold:
             return m.kinetic
         if a.base == "tau" and not a.sub:

@@ -3,7 +3,7 @@ into atoms and tokens, and `Vocabulary`, which looks each atom up among the deri
 quantities and their usual spellings (or, open to the text's own names, makes it a `Generic`
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
-May import: :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, SymPy.
 """
 from __future__ import annotations
 
@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive.lecture import elliptic
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
 from derive.symbolic.lagrangian import ACCELS
@@ -131,7 +132,8 @@ class CrossMatrix(sp.Function):
 
 FUNCTIONS = {"crossmatrix": CrossMatrix, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
-             "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh}
+             "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
+             **elliptic.functions(Generic)}
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
              "ll": "≪", "gg": "≫",
              "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
@@ -414,6 +416,8 @@ class Vocabulary:
                     return PRIMED[i]
                 if a.primes == 0:
                     return BASIS[i]
+        if not a.bold and not a.dots and not a.primes and (b + sub) in self.readings:
+            return self.readings[b + sub]              # a second reading the checker is trying
         if b == "I" and not a.bold and not a.dots and not a.primes:
             if len(sub) == 2 and sub[0] == sub[1] and sub[0] in env:
                 sub = str(env[sub[0]])            # Σ_i I_ii ω_i²: the principal moments
@@ -429,8 +433,6 @@ class Vocabulary:
                 return p_alpha
             if k == 2:
                 return p_gamma
-        if not a.bold and not a.dots and not a.primes and (b + sub) in self.readings:
-            return self.readings[b + sub]
         if b == "Omega" and not a.dots and not a.bold and self.omega_names:
             if sub == "":
                 return Omega
