@@ -244,12 +244,13 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
 
 
 def _compiles_clean(pairs):
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import source
+    from derive.contact.kernel import LOOP, MODEL, loop_source, runtime_sources, shape_file
+    from derive.contact.sources import model_source, shape_source, source
     from derive.runtime.cbuild import check_compiles
 
     for shape, law in pairs:
-        check_compiles({"c.c": source(shape, law), LOOP: loop_source(), **runtime_sources()}, "c.c")
+        check_compiles({"c.c": source(shape, law), MODEL: model_source(), shape_file(shape): shape_source(shape),
+                        LOOP: loop_source(), **runtime_sources()}, "c.c")
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():

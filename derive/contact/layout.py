@@ -33,6 +33,17 @@ def _dop853() -> dict:
             "D": [lit(row, 16) for row in t.dense.D]}
 
 
+#: The part of every shape and law's evaluator they share (the state, its kinematics, the
+#: phases' forces put together, the outputs): one text each ``contact_<shape>_<law>.c`` includes
+#: with its shape's formulas, ``contact_<shape>.inc``.
+MODEL = "contact_model.inc"
+
+
+def shape_file(shape: str) -> str:
+    """The name of the file of a shape's formulas, shared by its laws' evaluators."""
+    return f"contact_{shape}.inc"
+
+
 #: The phase loop's file name: one text that every shape and law's source includes.
 LOOP = "contact_phase_loop.inc"
 

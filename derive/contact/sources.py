@@ -4,7 +4,10 @@ The derivation (:mod:`derive.contact.equations`, :mod:`derive.contact.integrals`
 Lagrangian of :mod:`derive.contact.reduced`) is printed block by block with common
 subexpressions shared inside each block (``sympy.cse``): the contact point a(n), the sliding
 normal force and contact force, the rolling system (A, b) whose 3×3 solve is in the template,
-Euler's equations for a given force, and the monitored integrals. ``make derive`` writes every
+Euler's equations for a given force, and the monitored integrals. Each is written once: a
+shape's formulas in ``contact_<shape>.inc``, its law's sliding force in
+``contact_<shape>_<law>.c``, what every model shares in ``contact_model.inc``, each block a C
+function reading the names it needs from ``struct contact_vars``. ``make derive`` writes every
 file into ``generated/contact/`` (:func:`generated_sources`); a run reads them there
 (:func:`derive.contact.kernel.text`) and reaches this module, and SymPy, only for a file that
 is missing.
@@ -20,7 +23,7 @@ from derive.contact.equations import FORCE, GRAV, I1, I2, I3, MASS, contact, ome
 from derive.contact.friction import EPS, MU, NORMAL
 from derive.contact.geometry import OFFSET, RADIUS, SHAPES, height_in_angles
 from derive.contact.integrals import expressions
-from derive.contact.layout import LOOP, OUTPUTS, PARAM_NAMES, RUN, STATE, loop_source, run_source
+from derive.contact.layout import LOOP, MODEL, OUTPUTS, PARAM_NAMES, RUN, STATE, loop_source, run_source
 from derive.contact.laws import LAWS
 from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
 from derive.symbolic.rotations import alpha_d, beta, beta_d, gamma_d
@@ -33,6 +36,14 @@ REDUCED_PARAMS = (I1, I3, MASS, GRAV, RADIUS, OFFSET, p_alpha, p_gamma)
 BETA_DD = sp.Symbol("beta_dd", real=True)
 
 
+#: The fields of ``struct contact_vars`` (``contact_model.inc``) in order: what a shape's or a
+#: law's formulas read through ``v``.
+VARS = PARAM_NAMES + ("n1", "n2", "n3", "w1", "w2", "w3", "vb1", "vb2", "vb3", "z",
+                      "a1", "a2", "a3", "ut1", "ut2", "ut3", "d1", "d2", "d3")
+#: The contact force's components, read from the array ``f``.
+_FORCE_READ = {f"f{i + 1}": f"f[{i}]" for i in range(3)}
+
+
 def c_block(assign: list[tuple[str, sp.Expr]]) -> str:
     """C statements assigning each expression to its (already declared) name, subexpressions
     shared through ``sympy.cse``."""
@@ -42,29 +53,61 @@ def c_block(assign: list[tuple[str, sp.Expr]]) -> str:
     return "\n".join(lines)
 
 
+def c_body(assign: list[tuple[str, sp.Expr]], local: tuple[str, ...] = ()) -> str:
+    """A C function's body: the symbols the expressions read, taken from ``v`` (the fields of
+    :data:`VARS`) and ``f`` (the force), then :func:`c_block`; ``local`` names are the
+    function's own."""
+    used = {str(x) for _, e in assign for x in e.free_symbols} - set(local)
+    names = [n for n in VARS if n in used] + [n for n in _FORCE_READ if n in used]
+    unknown = used - set(names)
+    if unknown:
+        raise ValueError(f"the formulas read {sorted(unknown)}, which no contact model has")
+    lines, line = [], "const double"
+    for k, n in enumerate(names):
+        item = f" {n} = {_FORCE_READ.get(n, 'v->' + n)}" + (";" if k == len(names) - 1 else ",")
+        if len(line) + len(item) > 96:
+            lines.append(line)
+            line = "   "
+        line += item
+    return "\n".join(lines + [line, c_block(assign)]) if names else c_block(assign)
+
+
+def model_source() -> str:
+    """``contact_model.inc``: the state, its kinematics and the phases' forces put together, the
+    part every shape and law shares."""
+    return render("contact/model.c.j2", ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS),
+                  params=PARAM_NAMES, outputs=OUTPUTS)
+
+
+@functools.lru_cache(maxsize=None)
+def shape_source(shape: str) -> str:
+    """``contact_<shape>.inc``: the shape's contact point a(n), the rolling system (A, b), Euler's
+    equations for a given force and the monitored integrals, once for all its laws."""
+    c = contact(shape)
+    A, b = c.rolling
+    ints = expressions(c)
+    return render("contact/shape.c.j2", shape=shape,
+                  point=c_body([(f"a[{i}]", c.a[i]) for i in range(3)]),
+                  omega_dot=c_body([(f"wd[{i}]", e) for i, e in enumerate(omega_dot(c.a, FORCE))]),
+                  integrals=c_body([(f"out[{i}]", e) for i, e in enumerate(ints.values())]),
+                  rolling=c_body([(f"A[{3 * i + j}]", A[i, j]) for i in range(3) for j in range(3)]
+                                 + [(f"b[{i}]", b[i]) for i in range(3)]))
+
+
 @functools.lru_cache(maxsize=None)
 def source(shape: str, law: str) -> str:
-    """The C source of the evaluator for ``shape`` under the contact law ``law``."""
+    """``contact_<shape>_<law>.c``: the evaluator of ``shape`` under the contact law ``law``, its
+    law's sliding force with the shape's formulas and the shared model included."""
     c = contact(shape)
     lw = LAWS[law]
-    geometry = c_block([(f"a{i + 1}", c.a[i]) for i in range(3)])
-    slide = ""
+    sliding = ""
     if lw.slides:
         N, f = c.sliding(lw)
-        slide = c_block([("N", N)] + [(f"f{i + 1}", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)])
-    roll = ""
-    if lw.rolls:
-        A, b = c.rolling
-        roll = c_block([(f"A[{3 * i + j}]", A[i, j]) for i in range(3) for j in range(3)]
-                       + [(f"b[{i}]", b[i]) for i in range(3)])
-    accel = c_block([(f"wd{i + 1}", e) for i, e in enumerate(omega_dot(c.a, FORCE))])
-    ints = expressions(c)
-    monitors = c_block([(f"out[{13 + i}]", e) for i, e in enumerate(ints.values())])
-
+        sliding = c_body([("N", N)] + [(f"f[{i}]", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)],
+                         local=("N",))
     return render("contact/contact.c.j2", prefix=f"contact_{shape}_{law}", shape=shape, law=law,
-                  ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS), params=PARAM_NAMES,
-                  outputs=OUTPUTS, geometry=geometry, slide=slide, roll=roll, accel=accel,
-                  monitors=monitors)
+                  phases=lw.phases,
+                  slides=int(lw.slides), rolls=int(lw.rolls), sliding=sliding)
 
 
 @functools.lru_cache(maxsize=None)
@@ -98,6 +141,8 @@ def reduced_source(shape: str) -> str:
 def derivations() -> dict[str, functools.partial]:
     """Each file of ``generated/contact/`` by name, with the call that derives its text."""
     out = {f"contact_{shape}_{law}.c": functools.partial(source, shape, law) for shape in SHAPES for law in LAWS}
+    out.update({f"contact_{shape}.inc": functools.partial(shape_source, shape) for shape in SHAPES})
+    out[MODEL] = model_source
     out.update({f"contact_{shape}_reduced.c": functools.partial(reduced_source, shape) for shape in SHAPES})
     out[LOOP], out[RUN] = loop_source, run_source
     return out

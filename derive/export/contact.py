@@ -53,7 +53,7 @@ def model_name(sc: ContactScene) -> str:
 def model_files(sc: ContactScene) -> dict[str, str]:
     """The model's C: its evaluator, the phase loop, the shared runtime (the loop's interrupt
     hook) and the driver, by file name."""
-    return {**ck.loop_sources(model_name(sc)), ck.RUN: ck.text(ck.RUN)}
+    return {**ck.model_sources(sc.shape, sc.law), ck.RUN: ck.text(ck.RUN)}
 
 
 def lib_source(sc: ContactScene) -> str:
@@ -93,7 +93,8 @@ def files(sc: ContactScene) -> dict[str, str]:
     out["README.md"] = render(
         "contact/README.md.j2", law=law, shape=sc.shape, states=ck.STATE, outputs=ck.OUTPUTS,
         parameters=[(n, PARAM_KEYS[n], c_double(v), PARAM_UNITS[n]) for n, v in zip(param_names(sc), p)],
-        integrals=[n for n, _ in integral_outputs(sc)], run=ck.RUN, loop=ck.LOOP, **common)
+        integrals=[n for n, _ in integral_outputs(sc)], run=ck.RUN, loop=ck.LOOP, model=ck.MODEL,
+        shape_file=ck.shape_file(sc.shape), **common)
     out["NOTICE.md"] = render("contact/NOTICE.md.j2", loop=ck.LOOP, fmi=False)
     return out
 
