@@ -48,7 +48,7 @@ def _slip_rate(k, phase, y, p, d, h=1e-6):
     return (u(y + h * dy) - u(y - h * dy)) / (2 * h)
 
 
-P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0])
+P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0, 0.0, 0.0])
 
 
 def test_a_body_at_rest_upright_presses_with_its_weight():
@@ -94,14 +94,14 @@ def test_the_normal_force_equals_an_independent_lagrangian_derivation():
     state = {a_: 0.2, b: 0.6, g_: 0.4, ad: 2.0, bd: 1.5, gd: 90.0}
     bdd = float(sol[qdd[1]].subs(state))
     zdd = float((sp.diff(z, b, 2) * bd**2).subs(state)) + float(sp.diff(z, b).subs(state)) * bdd
-    p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0])
+    p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0, 0.0, 0.0])
     w = np.array([float(e.subs(state)) for e in (w1, w2, w3)])
     k, y = _state("point", "none", p, (0.2, 0.6, 0.4), w)
     assert k.outputs(0, y, p, np.zeros(3))[O["N"]] == pytest.approx(M * (g + zdd), rel=1e-12)
 
 
 def test_jellett_and_routh_are_constant_along_the_rolling_equations():
-    p = np.array([1e-3, 1e-3, 0.9e-3, 1.0, 9.81, 0.05, 0.01, 0.0, 0.0])
+    p = np.array([1e-3, 1e-3, 0.9e-3, 1.0, 9.81, 0.05, 0.01, 0.0, 0.0, 0.0, 0.0])
     k, y = _state("sphere", "rolling", p, (0.3, 1.0, 2.0), np.array([2.0, -1.0, 5.0]), rolling=True)
     dy = k.rhs(1, y, p, np.zeros(3))
     h = 1e-6
@@ -254,24 +254,26 @@ def _compiles_clean(pairs):
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import reduced_source
+    from derive.contact.kernel import LOOP, REDUCED, loop_source, runtime_sources
+    from derive.contact.sources import reduced_model_source, reduced_source
     from derive.runtime.cbuild import check_compiles
 
     _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling")])
-    check_compiles({"c.c": reduced_source("point"), LOOP: loop_source(), **runtime_sources()}, "c.c")  # the others: slow
+    check_compiles({"c.c": reduced_source("point"), REDUCED: reduced_model_source(), LOOP: loop_source(),
+                    **runtime_sources()}, "c.c")  # the others: slow
 
 
 @pytest.mark.slow
 def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
-    from derive.contact.kernel import LOOP, loop_source, runtime_sources
-    from derive.contact.sources import reduced_source
+    from derive.contact.kernel import LOOP, REDUCED, loop_source, runtime_sources
+    from derive.contact.sources import reduced_model_source, reduced_source
     from derive.runtime.cbuild import check_compiles
 
     _compiles_clean([(s, law) for s in ("point", "sphere", "disc")
                      for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling")])
     for shape in ("point", "sphere", "disc"):
-        check_compiles({"c.c": reduced_source(shape), LOOP: loop_source(), **runtime_sources()}, "c.c")
+        check_compiles({"c.c": reduced_source(shape), REDUCED: reduced_model_source(), LOOP: loop_source(),
+                        **runtime_sources()}, "c.c")
 
 
 def test_exact_coulomb_moves_less_than_a_thousandth_when_the_tolerance_is_tightened_tenfold():

@@ -13,7 +13,7 @@ import functools
 
 import numpy as np
 
-from derive.contact.kernel import RUN, STATE, model_sources, text
+from derive.contact.kernel import PARAM_NAMES, RUN, STATE, model_sources, text
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Run, Switch
 from derive.errors import IntegrationError
@@ -114,6 +114,8 @@ def run(shape: str, law: str, p: np.ndarray, stem, y0: np.ndarray, t_out: np.nda
         than ``max_switches`` switches, with the time.
     """
     fn, lib = library(shape, law, stem is not None)
+    if len(p) != len(PARAM_NAMES):
+        raise ValueError(f"a contact model takes {len(PARAM_NAMES)} parameters, not {len(p)}")
     pr = np.ascontiguousarray(np.concatenate([p, stem]) if stem is not None else p, dtype=float)
     y0 = np.ascontiguousarray(y0, dtype=float)
     ts = np.ascontiguousarray(t_out, dtype=float)

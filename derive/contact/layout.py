@@ -10,10 +10,12 @@ from __future__ import annotations
 import functools
 
 from derive.codegen.render import c_double, render
+from derive.contact.laws import EXTENSIONS
 from derive.methods.registry import DEFAULT_METHOD, METHODS
 
-#: The parameter vector's layout (:data:`derive.contact.sources.PARAMS`: the symbols' names).
-PARAM_NAMES = ("I1", "I2", "I3", "M", "g", "r", "s", "mu", "epsilon")
+#: The parameter vector's layout (:data:`derive.contact.sources.PARAMS`: the symbols' names): the
+#: body, gravity, the shape, the law, then the law's extensions' lengths (0: off).
+PARAM_NAMES = ("I1", "I2", "I3", "M", "g", "r", "s", "mu", "epsilon") + tuple(e.param for e in EXTENSIONS.values())
 
 #: The evaluator's ``out`` array, in order.
 OUTPUTS = ("N", "ft_x", "ft_y", "ft_z", "slip_x", "slip_y", "slip_z", "gap", "power",
@@ -37,6 +39,10 @@ def _dop853() -> dict:
 #: phases' forces put together, the outputs): one text each ``contact_<shape>_<law>.c`` includes
 #: with its shape's formulas, ``contact_<shape>.inc``.
 MODEL = "contact_model.inc"
+
+
+#: What every shape's reduced evaluator (``contact_<shape>_reduced.c``) shares and includes.
+REDUCED = "contact_reduced.inc"
 
 
 def shape_file(shape: str) -> str:

@@ -16,7 +16,7 @@ import numpy as np
 
 from derive.codegen.render import c_double, render
 from derive.contact import driver, kernel as ck
-from derive.contact.laws import LAWS
+from derive.contact.laws import EXTENSIONS, LAWS
 from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
 from derive.contact.simulate import body_omega, params, simulate
 from derive.errors import SceneError
@@ -25,12 +25,13 @@ from derive.errors import SceneError
 MAX_SWITCHES = driver.MAX_SWITCHES
 #: The units of the parameters, by name.
 PARAM_UNITS = {"I1": "kg m^2", "I2": "kg m^2", "I3": "kg m^2", "M": "kg", "g": "m/s^2",
-               "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m"}
+               "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m",
+               **{e.param: "m" for e in EXTENSIONS.values()}}
 #: The scene key each parameter comes from.
 PARAM_KEYS = {"I1": "body.I1", "I2": "body.I2", "I3": "body.I3", "M": "gravity.M",
               "g": "gravity.g", "r": "contact.radius", "s": "contact.offset", "mu": "contact.mu",
               "epsilon": "contact.regularization", "r2": "contact.stem.radius",
-              "s2": "contact.stem.offset"}
+              "s2": "contact.stem.offset", **{e.param: f"contact.{e.key}" for e in EXTENSIONS.values()}}
 #: The names of the stem's parameters, after the model's in a run's parameters.
 STEM_NAMES = ("r2", "s2")
 
@@ -70,7 +71,7 @@ def start_omega(sc: ContactScene) -> np.ndarray:
 
 def integral_outputs(sc: ContactScene) -> list[tuple[str, int]]:
     """The integrals the case has and their index in the evaluator's outputs."""
-    names = integrals_held(sc.shape, sc.law, sc.symmetric)
+    names = integrals_held(sc.shape, sc.law, sc.symmetric, sc.moments)
     return [(n, ck.OUTPUTS.index(n)) for n in names]
 
 

@@ -7,115 +7,133 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 1
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_disc_coulomb_eval
 #define CONTACT_OUTPUTS contact_disc_coulomb_outputs
 #define CONTACT_ADVANCE contact_disc_coulomb_advance
 #include "contact_model.inc"
 #include "contact_disc.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
-        mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
-        d1 = v->d1, d2 = v->d2, d3 = v->d3;
-    const double x0 = 1.0/M;
-    const double x1 = d1*mu;
-    const double x2 = n1*x1;
-    const double x3 = d2*mu;
-    const double x4 = n2*x3;
-    const double x5 = d3*mu;
-    const double x6 = n3*x5;
-    const double x7 = pow(n1, 2);
-    const double x8 = pow(n2, 2);
-    const double x9 = pow(n3, 2);
-    const double x10 = pow(s, 2);
-    const double x11 = 1.0/I1;
-    const double x12 = x10*x11;
-    const double x13 = 1.0/I2;
-    const double x14 = x10*x13;
-    const double x15 = pow(n2, 4);
-    const double x16 = x11*x15;
-    const double x17 = n3*s;
-    const double x18 = x7 + x8;
-    const double x19 = r/pow(x18, 3.0/2.0);
-    const double x20 = x17*x19;
-    const double x21 = pow(n1, 4);
-    const double x22 = x13*x21;
-    const double x23 = r/sqrt(x18);
-    const double x24 = x17*x23;
-    const double x25 = 3*x24;
-    const double x26 = x11*x8;
-    const double x27 = x13*x7;
-    const double x28 = s*x23*x5;
-    const double x29 = 2*x24;
-    const double x30 = x7*x8;
-    const double x31 = x20*x30;
-    const double x32 = pow(n2, 3);
-    const double x33 = x11*x20;
-    const double x34 = pow(n1, 3);
-    const double x35 = x13*x20;
-    const double x36 = 1.0/x18;
-    const double x37 = pow(r, 2);
-    const double x38 = x37*x9;
-    const double x39 = x36*x38;
-    const double x40 = 2*x8;
-    const double x41 = x11*x40;
-    const double x42 = 2*x7;
-    const double x43 = x13*x42;
-    const double x44 = x37*x6;
-    const double x45 = x36*x44;
-    const double x46 = 1.0/(x15 + x21 + x42*x8);
-    const double x47 = x38*x46;
-    const double x48 = x44*x46;
-    const double x49 = x30*x47;
-    const double x50 = x30*x48;
-    const double x51 = pow(w1, 2);
-    const double x52 = pow(w2, 2);
-    const double x53 = s*w3;
-    const double x54 = n1*w1;
-    const double x55 = x53*x54;
-    const double x56 = n2*w2;
-    const double x57 = x53*x56;
-    const double x58 = x11*x57;
-    const double x59 = x13*x55;
-    const double x60 = x54*x56;
-    const double x61 = 2*x54;
-    const double x62 = n3*w3;
-    const double x63 = x23*x62;
-    const double x64 = x61*x63;
-    const double x65 = 2*x56;
-    const double x66 = x63*x65;
-    const double x67 = x19*x52;
-    const double x68 = x19*x51;
-    const double x69 = w1*x34;
-    const double x70 = x19*x62;
-    const double x71 = x69*x70;
-    const double x72 = w2*x32;
-    const double x73 = x70*x72;
-    const double x74 = x23*x52;
-    const double x75 = x23*x51;
-    const double x76 = 2*x9;
-    const double x77 = x54*x70*x8;
-    const double x78 = x56*x7*x70;
-    const double x79 = x11*x66;
-    const double x80 = x13*x64;
-    const double x81 = x7*x9;
-    const double x82 = x8*x9;
-    const double x83 = x11*x73;
-    const double x84 = x13*x71;
-    const double x85 = x11*x78;
-    const double x86 = x13*x77;
-    const double x87 = x46*x9;
-    const double x88 = 3*x87;
-    const double x89 = x74*x88;
-    const double x90 = x75*x88;
-    const double x91 = 6*x23*x87;
-    N = -(I1*x59 + I1*x80 - I1*x84 - I1*x86 + I2*x58 + I2*x79 - I2*x83 - I2*x85 - I3*x58 - I3*x59 - I3*x79 - I3*x80 + I3*x83 + I3*x84 + I3*x85 + I3*x86 + g*x7 + g*x8 + g*x9 + x15*x68 + x15*x90 + x17*x51 + x17*x52 + 8*x19*x60*x9 - x19*x61*x72 - x19*x65*x69 + x21*x67 + x21*x89 + 4*x23*x60 + x30*x67 + x30*x68 + x30*x89 + x30*x90 - x40*x75 - x42*x74 - x54*x72*x91 - x55 - x56*x69*x91 - x57 - x64 - x66 - 5*x67*x81 - x67*x82 - x68*x81 - 5*x68*x82 + x71 + x73 + x74*x76 + x75*x76 + x77 + x78)/(x0*x2 + x0*x4 + x0*x6 - x0*x7 - x0*x8 - x0*x9 - x1*x34*x35 + x11*x29*x4 + x11*x31 + x11*x49 - x11*x50 + x12*x4 - x12*x8 + x13*x2*x29 + x13*x31 + x13*x49 - x13*x50 + x14*x2 - x14*x7 + x16*x20 + x16*x47 - x16*x48 - x2*x35*x8 + x20*x22 + x22*x47 - x22*x48 - x25*x26 - x25*x27 + x26*x28 + x27*x28 - x3*x32*x33 - x33*x4*x7 - x39*x41 - x39*x43 + x41*x45 + x43*x45);
-    f[0] = N*(n1 - x1);
-    f[1] = N*(n2 - x3);
-    f[2] = N*(n3 - x5);
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
+            mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
+            d1 = v->d1, d2 = v->d2, d3 = v->d3, m1 = v->m1, m2 = v->m2;
+        const double x0 = 1.0/M;
+        const double x1 = mu*x0;
+        const double x2 = d1*n1;
+        const double x3 = d2*n2;
+        const double x4 = d3*n3;
+        const double x5 = pow(n1, 2);
+        const double x6 = pow(n2, 2);
+        const double x7 = pow(n3, 2);
+        const double x8 = pow(s, 2);
+        const double x9 = 1.0/I1;
+        const double x10 = x8*x9;
+        const double x11 = mu*x3;
+        const double x12 = 1.0/I2;
+        const double x13 = x12*x8;
+        const double x14 = mu*x2;
+        const double x15 = pow(n2, 4);
+        const double x16 = x15*x9;
+        const double x17 = n3*s;
+        const double x18 = x5 + x6;
+        const double x19 = pow(x18, -3.0/2.0);
+        const double x20 = r*x19;
+        const double x21 = x17*x20;
+        const double x22 = pow(n1, 4);
+        const double x23 = x12*x22;
+        const double x24 = pow(x18, -1.0/2.0);
+        const double x25 = r*x24;
+        const double x26 = x17*x25;
+        const double x27 = 3*x26;
+        const double x28 = x6*x9;
+        const double x29 = x12*x5;
+        const double x30 = d3*mu*s*x25;
+        const double x31 = 2*x26;
+        const double x32 = x11*x9;
+        const double x33 = x12*x14;
+        const double x34 = x5*x6;
+        const double x35 = x21*x34;
+        const double x36 = pow(n2, 3);
+        const double x37 = mu*x21;
+        const double x38 = pow(n1, 3);
+        const double x39 = 1.0/x18;
+        const double x40 = pow(r, 2);
+        const double x41 = x40*x7;
+        const double x42 = x39*x41;
+        const double x43 = 2*x6;
+        const double x44 = x43*x9;
+        const double x45 = 2*x5;
+        const double x46 = x12*x45;
+        const double x47 = mu*x4*x40;
+        const double x48 = x39*x47;
+        const double x49 = 1.0/(x15 + x22 + x45*x6);
+        const double x50 = x41*x49;
+        const double x51 = x47*x49;
+        const double x52 = x34*x50;
+        const double x53 = x34*x51;
+        const double x54 = -d1*x12*x37*x38 - d2*x36*x37*x9 - x0*x5 - x0*x6 - x0*x7 + x1*x2 + x1*x3 + x1*x4 + x10*x11 - x10*x6 + x12*x35 + x12*x52 - x12*x53 + x13*x14 - x13*x5 + x16*x21 + x16*x50 - x16*x51 + x21*x23 - x21*x32*x5 - x21*x33*x6 + x23*x50 - x23*x51 - x27*x28 - x27*x29 + x28*x30 + x29*x30 + x31*x32 + x31*x33 + x35*x9 - x42*x44 - x42*x46 + x44*x48 + x46*x48 + x52*x9 - x53*x9;
+        const double x55 = pow(w1, 2);
+        const double x56 = pow(w2, 2);
+        const double x57 = s*w3;
+        const double x58 = n1*w1;
+        const double x59 = x57*x58;
+        const double x60 = n2*w2;
+        const double x61 = x57*x60;
+        const double x62 = x61*x9;
+        const double x63 = x12*x59;
+        const double x64 = x58*x60;
+        const double x65 = 2*x58;
+        const double x66 = n3*x25;
+        const double x67 = w3*x66;
+        const double x68 = x65*x67;
+        const double x69 = 2*x60;
+        const double x70 = x67*x69;
+        const double x71 = x20*x56;
+        const double x72 = x20*x55;
+        const double x73 = w1*x38;
+        const double x74 = n3*x20;
+        const double x75 = w3*x74;
+        const double x76 = x73*x75;
+        const double x77 = w2*x36;
+        const double x78 = x75*x77;
+        const double x79 = x25*x56;
+        const double x80 = x25*x55;
+        const double x81 = 2*x7;
+        const double x82 = x58*x6*x75;
+        const double x83 = x5*x60*x75;
+        const double x84 = x70*x9;
+        const double x85 = x12*x68;
+        const double x86 = x5*x7;
+        const double x87 = x6*x7;
+        const double x88 = x78*x9;
+        const double x89 = x12*x76;
+        const double x90 = x83*x9;
+        const double x91 = x12*x82;
+        const double x92 = x49*x7;
+        const double x93 = 3*x92;
+        const double x94 = x79*x93;
+        const double x95 = x80*x93;
+        const double x96 = 6*x25*x92;
+        const double x97 = m1*n2*x9;
+        const double x98 = m2*x12;
+        N = -(I1*x63 + I1*x85 - I1*x89 - I1*x91 + I2*x62 + I2*x84 - I2*x88 - I2*x90 - I3*x62 - I3*x63 - I3*x84 - I3*x85 + I3*x88 + I3*x89 + I3*x90 + I3*x91 + g*x5 + g*x6 + g*x7 + x15*x72 + x15*x95 + x17*x55 + x17*x56 + 8*x20*x64*x7 - x20*x65*x77 - x20*x69*x73 + x22*x71 + x22*x94 + 4*x25*x64 + x34*x71 + x34*x72 + x34*x94 + x34*x95 - x43*x80 - x45*x79 - x58*x77*x96 - x59 - x60*x73*x96 - x61 - x68 - x70 - 5*x71*x86 - x71*x87 - x72*x86 - 5*x72*x87 + x76 + x78 + x79*x81 + x80*x81 + x82 + x83)/x54;
+        c1 = -x54;
+        km = m1*n2*n3*r*x19*x5*x9 + m1*n3*r*x19*x36*x9 + 2*m2*n1*n3*r*x12*x24 + m2*n1*s*x12 - n1*x6*x74*x98 - s*x97 - x38*x74*x98 - 2*x66*x97;
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, d1 = v->d1, d2 = v->d2, d3 = v->d3;
+        f[0] = N*(-d1*mu + n1);
+        f[1] = N*(-d2*mu + n2);
+        f[2] = N*(-d3*mu + n3);
+    }
     return N;
 }
 

@@ -7,111 +7,132 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 0
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_disc_coulomb_regularized_eval
 #define CONTACT_OUTPUTS contact_disc_coulomb_regularized_outputs
 #define CONTACT_ADVANCE contact_disc_coulomb_regularized_advance
 #include "contact_model.inc"
 #include "contact_disc.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
-        mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1,
-        w2 = v->w2, w3 = v->w3, ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3;
-    const double x0 = pow(n1, 2);
-    const double x1 = pow(n2, 2);
-    const double x2 = pow(n3, 2);
-    const double x3 = pow(w1, 2);
-    const double x4 = n3*s;
-    const double x5 = pow(w2, 2);
-    const double x6 = s*w3;
-    const double x7 = n1*w1;
-    const double x8 = x6*x7;
-    const double x9 = n2*w2;
-    const double x10 = x6*x9;
-    const double x11 = 1.0/I1;
-    const double x12 = x10*x11;
-    const double x13 = 1.0/I2;
-    const double x14 = x13*x8;
-    const double x15 = x0 + x1;
-    const double x16 = r/sqrt(x15);
-    const double x17 = x7*x9;
-    const double x18 = 2*x16;
-    const double x19 = n3*w3;
-    const double x20 = x18*x19;
-    const double x21 = x20*x7;
-    const double x22 = x20*x9;
-    const double x23 = pow(n1, 4);
-    const double x24 = r/pow(x15, 3.0/2.0);
-    const double x25 = x24*x5;
-    const double x26 = pow(n2, 4);
-    const double x27 = x24*x3;
-    const double x28 = pow(n1, 3);
-    const double x29 = w1*x28;
-    const double x30 = x19*x24;
-    const double x31 = x29*x30;
-    const double x32 = pow(n2, 3);
-    const double x33 = w2*x32;
-    const double x34 = x30*x33;
-    const double x35 = 2*x0;
-    const double x36 = x16*x5;
-    const double x37 = x18*x3;
-    const double x38 = x2*x36;
-    const double x39 = 2*x24;
-    const double x40 = x33*x7;
-    const double x41 = x29*x9;
-    const double x42 = x1*x30*x7;
-    const double x43 = x0*x30*x9;
-    const double x44 = x0*x1;
-    const double x45 = x11*x22;
-    const double x46 = x13*x21;
-    const double x47 = x0*x2;
-    const double x48 = x1*x2;
-    const double x49 = x11*x34;
-    const double x50 = x13*x31;
-    const double x51 = x11*x43;
-    const double x52 = x13*x42;
-    const double x53 = 1.0/(x1*x35 + x23 + x26);
-    const double x54 = 3*x38*x53;
-    const double x55 = 3*x16;
-    const double x56 = x2*x53;
-    const double x57 = x3*x55*x56;
-    const double x58 = 6*x16*x56;
-    const double x59 = 1.0/M;
-    const double x60 = pow(s, 2);
-    const double x61 = x1*x11;
-    const double x62 = x0*x13;
-    const double x63 = x11*x26;
-    const double x64 = x24*x4;
-    const double x65 = x13*x23;
-    const double x66 = x4*x55;
-    const double x67 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
-    const double x68 = ut1*x67;
-    const double x69 = n1*x68;
-    const double x70 = ut2*x67;
-    const double x71 = n2*x70;
-    const double x72 = ut3*x67;
-    const double x73 = n3*x72;
-    const double x74 = x0*x61;
-    const double x75 = x1*x62;
-    const double x76 = pow(r, 2);
-    const double x77 = x2*x76;
-    const double x78 = 2/x15;
-    const double x79 = x77*x78;
-    const double x80 = x11*x71;
-    const double x81 = x13*x69;
-    const double x82 = x53*x77;
-    const double x83 = s*x16*x72;
-    const double x84 = x18*x4;
-    const double x85 = x73*x76;
-    const double x86 = x78*x85;
-    const double x87 = x53*x85;
-    N = -(I1*x14 + I1*x46 - I1*x50 - I1*x52 + I2*x12 + I2*x45 - I2*x49 - I2*x51 - I3*x12 - I3*x14 - I3*x45 - I3*x46 + I3*x49 + I3*x50 + I3*x51 + I3*x52 + g*x0 + g*x1 + g*x2 - x1*x37 - x10 + 4*x16*x17 + 8*x17*x2*x24 + x2*x37 - x21 - x22 + x23*x25 + x23*x54 + x25*x44 - 5*x25*x47 - x25*x48 + x26*x27 + x26*x57 + x27*x44 - x27*x47 - 5*x27*x48 + x3*x4 + x31 + x34 - x35*x36 + 2*x38 - x39*x40 - x39*x41 + x4*x5 - x40*x58 - x41*x58 + x42 + x43 + x44*x54 + x44*x57 - x8)/(-x0*x59 - x0*x64*x80 - x1*x59 - x1*x64*x81 - x11*x32*x64*x70 - x13*x28*x64*x68 - x2*x59 + x59*x69 + x59*x71 + x59*x73 - x60*x61 - x60*x62 + x60*x80 + x60*x81 - x61*x66 - x61*x79 + x61*x83 + x61*x86 - x62*x66 - x62*x79 + x62*x83 + x62*x86 + x63*x64 + x63*x82 - x63*x87 + x64*x65 + x64*x74 + x64*x75 + x65*x82 - x65*x87 + x74*x82 - x74*x87 + x75*x82 - x75*x87 + x80*x84 + x81*x84);
-    f[0] = N*(n1 - x68);
-    f[1] = N*(n2 - x70);
-    f[2] = N*(n3 - x72);
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
+            mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1,
+            w2 = v->w2, w3 = v->w3, ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3, m1 = v->m1, m2 = v->m2;
+        const double x0 = pow(n1, 2);
+        const double x1 = pow(n2, 2);
+        const double x2 = pow(n3, 2);
+        const double x3 = pow(w1, 2);
+        const double x4 = n3*s;
+        const double x5 = pow(w2, 2);
+        const double x6 = s*w3;
+        const double x7 = n1*w1;
+        const double x8 = x6*x7;
+        const double x9 = n2*w2;
+        const double x10 = x6*x9;
+        const double x11 = 1.0/I1;
+        const double x12 = x10*x11;
+        const double x13 = 1.0/I2;
+        const double x14 = x13*x8;
+        const double x15 = x0 + x1;
+        const double x16 = pow(x15, -1.0/2.0);
+        const double x17 = r*x16;
+        const double x18 = x7*x9;
+        const double x19 = 2*x17;
+        const double x20 = n3*x19;
+        const double x21 = w3*x20;
+        const double x22 = x21*x7;
+        const double x23 = x21*x9;
+        const double x24 = pow(n1, 4);
+        const double x25 = pow(x15, -3.0/2.0);
+        const double x26 = r*x25;
+        const double x27 = x26*x5;
+        const double x28 = pow(n2, 4);
+        const double x29 = x26*x3;
+        const double x30 = pow(n1, 3);
+        const double x31 = w1*x30;
+        const double x32 = n3*x26;
+        const double x33 = w3*x32;
+        const double x34 = x31*x33;
+        const double x35 = pow(n2, 3);
+        const double x36 = w2*x35;
+        const double x37 = x33*x36;
+        const double x38 = 2*x0;
+        const double x39 = x17*x5;
+        const double x40 = x19*x3;
+        const double x41 = x2*x39;
+        const double x42 = 2*x26;
+        const double x43 = x36*x7;
+        const double x44 = x31*x9;
+        const double x45 = x1*x33*x7;
+        const double x46 = x0*x33*x9;
+        const double x47 = x0*x1;
+        const double x48 = x11*x23;
+        const double x49 = x13*x22;
+        const double x50 = x0*x2;
+        const double x51 = x1*x2;
+        const double x52 = x11*x37;
+        const double x53 = x13*x34;
+        const double x54 = x11*x46;
+        const double x55 = x13*x45;
+        const double x56 = 1.0/(x1*x38 + x24 + x28);
+        const double x57 = 3*x41*x56;
+        const double x58 = 3*x17;
+        const double x59 = x2*x56;
+        const double x60 = x3*x58*x59;
+        const double x61 = 6*x17*x59;
+        const double x62 = 1.0/M;
+        const double x63 = pow(s, 2);
+        const double x64 = x1*x11;
+        const double x65 = x0*x13;
+        const double x66 = x11*x28;
+        const double x67 = x26*x4;
+        const double x68 = x13*x24;
+        const double x69 = x4*x58;
+        const double x70 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
+        const double x71 = x62*x70;
+        const double x72 = n3*ut3;
+        const double x73 = x0*x64;
+        const double x74 = x1*x65;
+        const double x75 = pow(r, 2);
+        const double x76 = x2*x75;
+        const double x77 = 2/x15;
+        const double x78 = x76*x77;
+        const double x79 = x63*x70;
+        const double x80 = n2*x11;
+        const double x81 = ut2*x80;
+        const double x82 = n1*x13;
+        const double x83 = ut1*x82;
+        const double x84 = x56*x76;
+        const double x85 = s*ut3*x17;
+        const double x86 = x64*x70;
+        const double x87 = x65*x70;
+        const double x88 = x19*x4*x70;
+        const double x89 = x67*x70;
+        const double x90 = x13*x30;
+        const double x91 = x72*x75;
+        const double x92 = x77*x91;
+        const double x93 = x56*x70*x91;
+        const double x94 = n1*ut1*x71 + n2*ut2*x71 - ut1*x89*x90 - ut2*x11*x35*x89 - x0*x62 - x0*x81*x89 - x1*x62 - x1*x83*x89 - x2*x62 - x63*x64 - x63*x65 - x64*x69 - x64*x78 - x65*x69 - x65*x78 + x66*x67 + x66*x84 - x66*x93 + x67*x68 + x67*x73 + x67*x74 + x68*x84 - x68*x93 + x71*x72 + x73*x84 - x73*x93 + x74*x84 - x74*x93 + x79*x81 + x79*x83 + x81*x88 + x83*x88 + x85*x86 + x85*x87 + x86*x92 + x87*x92;
+        const double x95 = m1*x80;
+        N = -(I1*x14 + I1*x49 - I1*x53 - I1*x55 + I2*x12 + I2*x48 - I2*x52 - I2*x54 - I3*x12 - I3*x14 - I3*x48 - I3*x49 + I3*x52 + I3*x53 + I3*x54 + I3*x55 + g*x0 + g*x1 + g*x2 - x1*x40 - x10 + 4*x17*x18 + 8*x18*x2*x26 + x2*x40 - x22 - x23 + x24*x27 + x24*x57 + x27*x47 - 5*x27*x50 - x27*x51 + x28*x29 + x28*x60 + x29*x47 - x29*x50 - 5*x29*x51 + x3*x4 + x34 + x37 - x38*x39 + x4*x5 + 2*x41 - x42*x43 - x42*x44 - x43*x61 - x44*x61 + x45 + x46 + x47*x57 + x47*x60 - x8)/x94;
+        c1 = -x94;
+        km = m1*n2*n3*r*x0*x11*x25 + m1*n3*r*x11*x25*x35 + 2*m2*n1*n3*r*x13*x16 + m2*n1*s*x13 - m2*x1*x32*x82 - m2*x32*x90 - s*x95 - x20*x95;
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, ut1 = v->ut1,
+            ut2 = v->ut2, ut3 = v->ut3;
+        const double x0 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
+        f[0] = N*(n1 - ut1*x0);
+        f[1] = N*(n2 - ut2*x0);
+        f[2] = N*(n3 - ut3*x0);
+    }
     return N;
 }
 

@@ -7,6 +7,7 @@
  */
 #define CONTACT_SLIDES 0
 #define CONTACT_ROLLS 1
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_disc_rolling_eval
 #define CONTACT_OUTPUTS contact_disc_rolling_outputs
 #define CONTACT_ADVANCE contact_disc_rolling_advance

@@ -7,115 +7,133 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 0
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_disc_viscous_eval
 #define CONTACT_OUTPUTS contact_disc_viscous_outputs
 #define CONTACT_ADVANCE contact_disc_viscous_advance
 #include "contact_model.inc"
 #include "contact_disc.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
-        mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
-        ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3;
-    const double x0 = 1.0/M;
-    const double x1 = pow(n1, 2);
-    const double x2 = pow(n2, 2);
-    const double x3 = pow(n3, 2);
-    const double x4 = pow(s, 2);
-    const double x5 = 1.0/I1;
-    const double x6 = x4*x5;
-    const double x7 = 1.0/I2;
-    const double x8 = x4*x7;
-    const double x9 = n3*s;
-    const double x10 = 3*x9;
-    const double x11 = x1 + x2;
-    const double x12 = r/sqrt(x11);
-    const double x13 = x12*x5;
-    const double x14 = x13*x2;
-    const double x15 = pow(n2, 4);
-    const double x16 = x15*x5;
-    const double x17 = r/pow(x11, 3.0/2.0);
-    const double x18 = x17*x9;
-    const double x19 = x12*x7;
-    const double x20 = x1*x19;
-    const double x21 = pow(n1, 4);
-    const double x22 = x21*x7;
-    const double x23 = 1.0/x11;
-    const double x24 = pow(r, 2);
-    const double x25 = x24*x3;
-    const double x26 = x23*x25;
-    const double x27 = 2*x2;
-    const double x28 = x27*x5;
-    const double x29 = 2*x1;
-    const double x30 = x29*x7;
-    const double x31 = x1*x2;
-    const double x32 = x18*x31;
-    const double x33 = 1.0/(x15 + x2*x29 + x21);
-    const double x34 = x25*x33;
-    const double x35 = x31*x34;
-    const double x36 = pow(w1, 2);
-    const double x37 = pow(w2, 2);
-    const double x38 = s*w3;
-    const double x39 = n1*w1;
-    const double x40 = x38*x39;
-    const double x41 = n2*w2;
-    const double x42 = x38*x41;
-    const double x43 = mu*ut1;
-    const double x44 = n1*x43;
-    const double x45 = mu*ut2;
-    const double x46 = n2*x45;
-    const double x47 = mu*ut3;
-    const double x48 = n3*x47;
-    const double x49 = x42*x5;
-    const double x50 = x40*x7;
-    const double x51 = x39*x41;
-    const double x52 = 2*x39;
-    const double x53 = n3*w3;
-    const double x54 = x12*x53;
-    const double x55 = 2*x41;
-    const double x56 = x17*x37;
-    const double x57 = x17*x36;
-    const double x58 = pow(n1, 3);
-    const double x59 = w1*x58;
-    const double x60 = x17*x53;
-    const double x61 = x59*x60;
-    const double x62 = pow(n2, 3);
-    const double x63 = w2*x62;
-    const double x64 = x60*x63;
-    const double x65 = x12*x37;
-    const double x66 = x12*x36;
-    const double x67 = 2*x3;
-    const double x68 = x2*x39*x60;
-    const double x69 = x1*x41*x60;
-    const double x70 = s*x47;
-    const double x71 = x13*x55;
-    const double x72 = I3*x53;
-    const double x73 = 2*x9;
-    const double x74 = x19*x52;
-    const double x75 = x1*x3;
-    const double x76 = x2*x3;
-    const double x77 = x5*x64;
-    const double x78 = x61*x7;
-    const double x79 = x18*x5;
-    const double x80 = x18*x7;
-    const double x81 = x5*x69;
-    const double x82 = x68*x7;
-    const double x83 = x24*x48;
-    const double x84 = x23*x83;
-    const double x85 = x33*x83;
-    const double x86 = x31*x85;
-    const double x87 = x3*x33;
-    const double x88 = 3*x87;
-    const double x89 = x65*x88;
-    const double x90 = x66*x88;
-    const double x91 = 6*x12*x87;
-    N = (I1*x50 + I1*x53*x74 - I1*x78 - I1*x82 + I2*x49 + I2*x53*x71 - I2*x77 - I2*x81 - I3*x49 - I3*x50 + I3*x77 + I3*x78 + I3*x81 + I3*x82 + g*x1 + g*x2 + g*x3 + x0*x44 + x0*x46 + x0*x48 - x1*x46*x79 + 4*x12*x51 + x13*x46*x73 + x14*x70 + x15*x57 + x15*x90 - x16*x85 + 8*x17*x3*x51 - x17*x52*x63 - x17*x55*x59 + x19*x44*x73 - x2*x44*x80 + x20*x70 + x21*x56 + x21*x89 - x22*x85 - x27*x66 + x28*x84 - x29*x65 + x30*x84 + x31*x56 + x31*x57 + x31*x89 + x31*x90 + x36*x9 + x37*x9 - x39*x63*x91 - x40 - x41*x59*x91 - x42 - x43*x58*x80 + x44*x8 - x45*x62*x79 + x46*x6 - x5*x86 - x52*x54 - x54*x55 - 5*x56*x75 - x56*x76 - x57*x75 - 5*x57*x76 + x61 + x64 + x65*x67 + x66*x67 + x68 + x69 - x7*x86 - x71*x72 - x72*x74)/(x0*x1 + x0*x2 + x0*x3 + x1*x8 + x10*x14 + x10*x20 - x16*x18 - x16*x34 - x18*x22 + x2*x6 - x22*x34 + x26*x28 + x26*x30 - x32*x5 - x32*x7 - x35*x5 - x35*x7);
-    f[0] = N*n1 - x43;
-    f[1] = N*n2 - x45;
-    f[2] = N*n3 - x47;
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
+            mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
+            ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3, m1 = v->m1, m2 = v->m2;
+        const double x0 = 1.0/M;
+        const double x1 = pow(n1, 2);
+        const double x2 = pow(n2, 2);
+        const double x3 = pow(n3, 2);
+        const double x4 = pow(s, 2);
+        const double x5 = 1.0/I1;
+        const double x6 = x4*x5;
+        const double x7 = 1.0/I2;
+        const double x8 = x4*x7;
+        const double x9 = n3*s;
+        const double x10 = 3*x9;
+        const double x11 = x1 + x2;
+        const double x12 = pow(x11, -1.0/2.0);
+        const double x13 = r*x12;
+        const double x14 = x13*x5;
+        const double x15 = x14*x2;
+        const double x16 = pow(n2, 4);
+        const double x17 = x16*x5;
+        const double x18 = pow(x11, -3.0/2.0);
+        const double x19 = r*x18;
+        const double x20 = x19*x9;
+        const double x21 = x13*x7;
+        const double x22 = x1*x21;
+        const double x23 = pow(n1, 4);
+        const double x24 = x23*x7;
+        const double x25 = 1.0/x11;
+        const double x26 = pow(r, 2);
+        const double x27 = x26*x3;
+        const double x28 = x25*x27;
+        const double x29 = 2*x2;
+        const double x30 = x29*x5;
+        const double x31 = 2*x1;
+        const double x32 = x31*x7;
+        const double x33 = x1*x2;
+        const double x34 = x20*x33;
+        const double x35 = 1.0/(x16 + x2*x31 + x23);
+        const double x36 = x27*x35;
+        const double x37 = x33*x36;
+        const double x38 = x0*x1 + x0*x2 + x0*x3 + x1*x8 + x10*x15 + x10*x22 - x17*x20 - x17*x36 + x2*x6 - x20*x24 - x24*x36 + x28*x30 + x28*x32 - x34*x5 - x34*x7 - x37*x5 - x37*x7;
+        const double x39 = pow(w1, 2);
+        const double x40 = pow(w2, 2);
+        const double x41 = s*w3;
+        const double x42 = n1*w1;
+        const double x43 = x41*x42;
+        const double x44 = n2*w2;
+        const double x45 = x41*x44;
+        const double x46 = mu*x0;
+        const double x47 = n1*ut1;
+        const double x48 = n2*ut2;
+        const double x49 = n3*ut3;
+        const double x50 = x45*x5;
+        const double x51 = x43*x7;
+        const double x52 = mu*x48;
+        const double x53 = mu*x47;
+        const double x54 = x42*x44;
+        const double x55 = 2*x42;
+        const double x56 = n3*x13;
+        const double x57 = w3*x56;
+        const double x58 = 2*x44;
+        const double x59 = x19*x40;
+        const double x60 = x19*x39;
+        const double x61 = pow(n1, 3);
+        const double x62 = w1*x61;
+        const double x63 = n3*x19;
+        const double x64 = w3*x63;
+        const double x65 = x62*x64;
+        const double x66 = pow(n2, 3);
+        const double x67 = w2*x66;
+        const double x68 = x64*x67;
+        const double x69 = x13*x40;
+        const double x70 = x13*x39;
+        const double x71 = 2*x3;
+        const double x72 = x2*x42*x64;
+        const double x73 = x1*x44*x64;
+        const double x74 = mu*s*ut3;
+        const double x75 = n3*w3;
+        const double x76 = x14*x58;
+        const double x77 = I3*x75;
+        const double x78 = 2*x9;
+        const double x79 = x21*x55;
+        const double x80 = x1*x3;
+        const double x81 = x2*x3;
+        const double x82 = x5*x68;
+        const double x83 = x65*x7;
+        const double x84 = mu*x20;
+        const double x85 = x5*x73;
+        const double x86 = x7*x72;
+        const double x87 = mu*x26*x49;
+        const double x88 = x25*x87;
+        const double x89 = x35*x87;
+        const double x90 = x33*x89;
+        const double x91 = x3*x35;
+        const double x92 = 3*x91;
+        const double x93 = x69*x92;
+        const double x94 = x70*x92;
+        const double x95 = 6*x13*x91;
+        const double x96 = m1*n2*x5;
+        const double x97 = m2*x7;
+        N = (I1*x51 + I1*x75*x79 - I1*x83 - I1*x86 + I2*x50 + I2*x75*x76 - I2*x82 - I2*x85 - I3*x50 - I3*x51 + I3*x82 + I3*x83 + I3*x85 + I3*x86 + g*x1 + g*x2 + g*x3 - ut1*x61*x7*x84 - ut2*x5*x66*x84 - x1*x20*x5*x52 + 4*x13*x54 + x14*x52*x78 + x15*x74 + x16*x60 + x16*x94 - x17*x89 + 8*x19*x3*x54 - x19*x55*x67 - x19*x58*x62 - x2*x20*x53*x7 + x21*x53*x78 + x22*x74 + x23*x59 + x23*x93 - x24*x89 - x29*x70 + x30*x88 - x31*x69 + x32*x88 + x33*x59 + x33*x60 + x33*x93 + x33*x94 + x39*x9 + x40*x9 - x42*x67*x95 - x43 - x44*x62*x95 - x45 + x46*x47 + x46*x48 + x46*x49 - x5*x90 + x52*x6 + x53*x8 - x55*x57 - x57*x58 - 5*x59*x80 - x59*x81 - x60*x80 - 5*x60*x81 + x65 + x68 + x69*x71 - x7*x90 + x70*x71 + x72 + x73 - x76*x77 - x77*x79)/x38;
+        c1 = x38;
+        km = m1*n2*n3*r*x1*x18*x5 + m1*n3*r*x18*x5*x66 + 2*m2*n1*n3*r*x12*x7 + m2*n1*s*x7 - n1*x2*x63*x97 - s*x96 - 2*x56*x96 - x61*x63*x97;
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, ut1 = v->ut1, ut2 = v->ut2,
+            ut3 = v->ut3;
+        f[0] = N*n1 - mu*ut1;
+        f[1] = N*n2 - mu*ut2;
+        f[2] = N*n3 - mu*ut3;
+    }
     return N;
 }
 

@@ -7,13 +7,14 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 0
+#define CONTACT_MOMENTS 0
 #define CONTACT_EVAL contact_point_none_eval
 #define CONTACT_OUTPUTS contact_point_none_outputs
 #define CONTACT_ADVANCE contact_point_none_advance
 #include "contact_model.inc"
 #include "contact_point.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;

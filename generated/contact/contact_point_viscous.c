@@ -7,43 +7,56 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 0
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_point_viscous_eval
 #define CONTACT_OUTPUTS contact_point_viscous_outputs
 #define CONTACT_ADVANCE contact_point_viscous_advance
 #include "contact_model.inc"
 #include "contact_point.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, s = v->s, mu = v->mu,
-        n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3, ut1 = v->ut1,
-        ut2 = v->ut2, ut3 = v->ut3;
-    const double x0 = 1.0/M;
-    const double x1 = pow(n1, 2);
-    const double x2 = pow(n2, 2);
-    const double x3 = pow(n3, 2);
-    const double x4 = pow(s, 2);
-    const double x5 = 1.0/I1;
-    const double x6 = x4*x5;
-    const double x7 = 1.0/I2;
-    const double x8 = x4*x7;
-    const double x9 = n3*s;
-    const double x10 = s*w3;
-    const double x11 = n1*w1*x10;
-    const double x12 = n2*w2*x10;
-    const double x13 = mu*ut1;
-    const double x14 = n1*x13;
-    const double x15 = mu*ut2;
-    const double x16 = n2*x15;
-    const double x17 = mu*ut3;
-    const double x18 = x12*x5;
-    const double x19 = x11*x7;
-    N = (I1*x19 + I2*x18 - I3*x18 - I3*x19 + g*x1 + g*x2 + g*x3 + n3*x0*x17 + pow(w1, 2)*x9 + pow(w2, 2)*x9 + x0*x14 + x0*x16 - x11 - x12 + x14*x8 + x16*x6)/(x0*x1 + x0*x2 + x0*x3 + x1*x8 + x2*x6);
-    f[0] = N*n1 - x13;
-    f[1] = N*n2 - x15;
-    f[2] = N*n3 - x17;
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, s = v->s, mu = v->mu,
+            n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3, ut1 = v->ut1,
+            ut2 = v->ut2, ut3 = v->ut3, m1 = v->m1, m2 = v->m2;
+        const double x0 = 1.0/M;
+        const double x1 = pow(n1, 2);
+        const double x2 = pow(n2, 2);
+        const double x3 = pow(n3, 2);
+        const double x4 = pow(s, 2);
+        const double x5 = 1.0/I1;
+        const double x6 = x4*x5;
+        const double x7 = 1.0/I2;
+        const double x8 = x4*x7;
+        const double x9 = x0*x1 + x0*x2 + x0*x3 + x1*x8 + x2*x6;
+        const double x10 = n3*s;
+        const double x11 = s*w3;
+        const double x12 = w1*x11;
+        const double x13 = w2*x11;
+        const double x14 = mu*x0;
+        const double x15 = n1*ut1;
+        const double x16 = n2*ut2;
+        const double x17 = n2*x5;
+        const double x18 = x13*x17;
+        const double x19 = n1*x7;
+        const double x20 = x12*x19;
+        N = (I1*x20 + I2*x18 - I3*x18 - I3*x20 + g*x1 + g*x2 + g*x3 + mu*x15*x8 + mu*x16*x6 - n1*x12 - n2*x13 + n3*ut3*x14 + pow(w1, 2)*x10 + pow(w2, 2)*x10 + x14*x15 + x14*x16)/x9;
+        c1 = x9;
+        km = s*(-m1*x17 + m2*x19);
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, ut1 = v->ut1, ut2 = v->ut2,
+            ut3 = v->ut3;
+        f[0] = N*n1 - mu*ut1;
+        f[1] = N*n2 - mu*ut2;
+        f[2] = N*n3 - mu*ut3;
+    }
     return N;
 }
 

@@ -7,46 +7,58 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 1
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_sphere_coulomb_eval
 #define CONTACT_OUTPUTS contact_sphere_coulomb_outputs
 #define CONTACT_ADVANCE contact_sphere_coulomb_advance
 #include "contact_model.inc"
 #include "contact_sphere.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
-        mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
-        d1 = v->d1, d2 = v->d2, d3 = v->d3;
-    const double x0 = pow(n1, 2);
-    const double x1 = pow(n2, 2);
-    const double x2 = pow(n3, 2);
-    const double x3 = n3*s;
-    const double x4 = s*w3;
-    const double x5 = n1*w1*x4;
-    const double x6 = n2*w2*x4;
-    const double x7 = 1.0/I1;
-    const double x8 = x6*x7;
-    const double x9 = 1.0/I2;
-    const double x10 = x5*x9;
-    const double x11 = 1.0/M;
-    const double x12 = d1*mu;
-    const double x13 = n1*x12;
-    const double x14 = d2*mu;
-    const double x15 = n2*x14;
-    const double x16 = d3*mu;
-    const double x17 = pow(s, 2);
-    const double x18 = x17*x7;
-    const double x19 = x17*x9;
-    const double x20 = s*x16;
-    const double x21 = r*x7;
-    const double x22 = r*x9;
-    N = -(I1*x10 + I2*x8 - I3*x10 - I3*x8 + g*x0 + g*x1 + g*x2 + pow(w1, 2)*x3 + pow(w2, 2)*x3 - x5 - x6)/(n3*x11*x16 - x0*x11 - x0*x19 + x0*x20*x22 - x1*x11 - x1*x18 + x1*x20*x21 + x11*x13 + x11*x15 - x11*x2 + x13*x19 - x13*x22*x3 + x15*x18 - x15*x21*x3);
-    f[0] = N*(n1 - x12);
-    f[1] = N*(n2 - x14);
-    f[2] = N*(n3 - x16);
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
+            mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1, w2 = v->w2, w3 = v->w3,
+            d1 = v->d1, d2 = v->d2, d3 = v->d3, m1 = v->m1, m2 = v->m2;
+        const double x0 = pow(n1, 2);
+        const double x1 = pow(n2, 2);
+        const double x2 = pow(n3, 2);
+        const double x3 = n3*s;
+        const double x4 = s*w3;
+        const double x5 = w1*x4;
+        const double x6 = w2*x4;
+        const double x7 = 1.0/I1;
+        const double x8 = n2*x7;
+        const double x9 = x6*x8;
+        const double x10 = 1.0/I2;
+        const double x11 = n1*x10;
+        const double x12 = x11*x5;
+        const double x13 = 1.0/M;
+        const double x14 = mu*x13;
+        const double x15 = d1*n1;
+        const double x16 = d2*n2;
+        const double x17 = pow(s, 2);
+        const double x18 = x17*x7;
+        const double x19 = x10*x17;
+        const double x20 = mu*r;
+        const double x21 = d3*s*x20;
+        const double x22 = x20*x3;
+        const double x23 = -d1*x11*x22 - d2*x22*x8 + d3*n3*x14 + mu*x15*x19 + mu*x16*x18 + x0*x10*x21 - x0*x13 - x0*x19 - x1*x13 - x1*x18 + x1*x21*x7 - x13*x2 + x14*x15 + x14*x16;
+        N = -(I1*x12 + I2*x9 - I3*x12 - I3*x9 + g*x0 + g*x1 + g*x2 - n1*x5 - n2*x6 + pow(w1, 2)*x3 + pow(w2, 2)*x3)/x23;
+        c1 = -x23;
+        km = s*(-m1*x8 + m2*x11);
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, n1 = v->n1, n2 = v->n2, n3 = v->n3, d1 = v->d1, d2 = v->d2, d3 = v->d3;
+        f[0] = N*(-d1*mu + n1);
+        f[1] = N*(-d2*mu + n2);
+        f[2] = N*(-d3*mu + n3);
+    }
     return N;
 }
 

@@ -7,47 +7,61 @@
  */
 #define CONTACT_SLIDES 1
 #define CONTACT_ROLLS 0
+#define CONTACT_MOMENTS 1
 #define CONTACT_EVAL contact_sphere_coulomb_regularized_eval
 #define CONTACT_OUTPUTS contact_sphere_coulomb_regularized_outputs
 #define CONTACT_ADVANCE contact_sphere_coulomb_regularized_advance
 #include "contact_model.inc"
 #include "contact_sphere.inc"
 
-/* sliding: N from the gap's acceleration held at zero, then f = N n + F_t */
+/* sliding: N from the gap's acceleration held at zero, phi'' = c1 N + c0, then f = N n + F_t */
 static double contact_sliding(const struct contact_vars *v, double *f)
 {
     double N;
-    const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
-        mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1,
-        w2 = v->w2, w3 = v->w3, ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3;
-    const double x0 = pow(n1, 2);
-    const double x1 = pow(n2, 2);
-    const double x2 = pow(n3, 2);
-    const double x3 = n3*s;
-    const double x4 = s*w3;
-    const double x5 = n1*w1*x4;
-    const double x6 = n2*w2*x4;
-    const double x7 = 1.0/I1;
-    const double x8 = x6*x7;
-    const double x9 = 1.0/I2;
-    const double x10 = x5*x9;
-    const double x11 = 1.0/M;
-    const double x12 = pow(s, 2);
-    const double x13 = x12*x7;
-    const double x14 = x12*x9;
-    const double x15 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
-    const double x16 = ut1*x15;
-    const double x17 = n1*x16;
-    const double x18 = ut2*x15;
-    const double x19 = n2*x18;
-    const double x20 = ut3*x15;
-    const double x21 = s*x20;
-    const double x22 = r*x7;
-    const double x23 = r*x9;
-    N = -(I1*x10 + I2*x8 - I3*x10 - I3*x8 + g*x0 + g*x1 + g*x2 + pow(w1, 2)*x3 + pow(w2, 2)*x3 - x5 - x6)/(n3*x11*x20 - x0*x11 - x0*x14 + x0*x21*x23 - x1*x11 - x1*x13 + x1*x21*x22 + x11*x17 + x11*x19 - x11*x2 + x13*x19 + x14*x17 - x17*x23*x3 - x19*x22*x3);
-    f[0] = N*(n1 - x16);
-    f[1] = N*(n2 - x18);
-    f[2] = N*(n3 - x20);
+    {
+        double c1, km;
+        const double I1 = v->I1, I2 = v->I2, I3 = v->I3, M = v->M, g = v->g, r = v->r, s = v->s,
+            mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, w1 = v->w1,
+            w2 = v->w2, w3 = v->w3, ut1 = v->ut1, ut2 = v->ut2, ut3 = v->ut3, m1 = v->m1, m2 = v->m2;
+        const double x0 = pow(n1, 2);
+        const double x1 = pow(n2, 2);
+        const double x2 = pow(n3, 2);
+        const double x3 = n3*s;
+        const double x4 = s*w3;
+        const double x5 = w1*x4;
+        const double x6 = w2*x4;
+        const double x7 = 1.0/I1;
+        const double x8 = n2*x7;
+        const double x9 = x6*x8;
+        const double x10 = 1.0/I2;
+        const double x11 = n1*x10;
+        const double x12 = x11*x5;
+        const double x13 = 1.0/M;
+        const double x14 = pow(s, 2);
+        const double x15 = x14*x7;
+        const double x16 = x10*x14;
+        const double x17 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
+        const double x18 = x13*x17;
+        const double x19 = n1*ut1;
+        const double x20 = n2*ut2;
+        const double x21 = r*x17;
+        const double x22 = s*ut3*x21;
+        const double x23 = x21*x3;
+        const double x24 = n3*ut3*x18 - ut1*x11*x23 - ut2*x23*x8 + x0*x10*x22 - x0*x13 - x0*x16 - x1*x13 - x1*x15 + x1*x22*x7 - x13*x2 + x15*x17*x20 + x16*x17*x19 + x18*x19 + x18*x20;
+        N = -(I1*x12 + I2*x9 - I3*x12 - I3*x9 + g*x0 + g*x1 + g*x2 - n1*x5 - n2*x6 + pow(w1, 2)*x3 + pow(w2, 2)*x3)/x24;
+        c1 = -x24;
+        km = s*(-m1*x8 + m2*x11);
+        /* the extensions' moment tau = N m adds k.m = km to c1: N = -c0/(c1 + km) */
+        if (km != 0.0) N *= c1 / (c1 + km);
+    }
+    {
+        const double mu = v->mu, epsilon = v->epsilon, n1 = v->n1, n2 = v->n2, n3 = v->n3, ut1 = v->ut1,
+            ut2 = v->ut2, ut3 = v->ut3;
+        const double x0 = mu/sqrt(pow(epsilon, 2) + pow(ut1, 2) + pow(ut2, 2) + pow(ut3, 2));
+        f[0] = N*(n1 - ut1*x0);
+        f[1] = N*(n2 - ut2*x0);
+        f[2] = N*(n3 - ut3*x0);
+    }
     return N;
 }
 
