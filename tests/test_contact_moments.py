@@ -178,3 +178,21 @@ def test_the_command_line_refuses_spin_friction_without_friction_with_exit_2(tmp
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "contact.spin_friction" in err[0]
     assert not (tmp_path / "out.npz").exists()
+
+
+def test_an_export_of_a_top_with_both_extensions_takes_their_lengths_as_parameters():
+    from derive.export import contact as ce
+    from derive.export.contact_fmu import variables
+
+    b = ce.bundle((_with(TIPPE, rolling_resistance=2e-4, spin_friction=1e-3), "top.toml"))
+    params = {v.name: float(v.start) for v in variables(b) if v.causality == "parameter"}
+    assert params["contact.rolling_resistance"] == 2e-4 and params["contact.spin_friction"] == 1e-3
+    files = ce.files(b.scene)
+    assert "`contact.spin_friction`" in files["README.md"]
+    assert {"contact_model.inc", "contact_sphere.inc"} <= set(files)
+    assert [n for n, _ in ce.integral_outputs(b.scene)] == []  # no integral once a moment acts
+    viscous = _with(TIPPE, friction="viscous")
+    del viscous["contact"]["regularization"]
+    plain = ce.bundle((viscous, "top.toml"))
+    names = {v.name for v in variables(plain)}
+    assert "contact.rolling_resistance" in names and "contact.spin_friction" not in names
