@@ -9,6 +9,7 @@ from derive.cli import main
 from derive.contact.scene import read
 from derive.contact.simulate import run_scene
 from derive.errors import SceneError
+from test_contact import newton_euler_inertial
 
 TIPPE = {"body": {"I1": 8e-7, "I3": 7e-7}, "gravity": {"M": 0.006, "g": 9.81},
          "contact": {"shape": "sphere", "radius": 0.015, "offset": 0.003, "friction": "coulomb", "mu": 0.3,
@@ -94,57 +95,13 @@ def test_extensions_set_to_zero_run_bit_for_bit_as_the_plain_law(base):
         assert np.array_equal(got[k], v), k
 
 
-def _newton_euler_inertial(delta, rs, t_end, eps=1e-2, rtol=1e-12):
-    """The tippe top sliding under regularised Coulomb friction with rolling resistance and spin
-    friction, written independently: inertial frame, rotation matrix and inertial ω as states,
-    the ball's centre held at height r, N from M z̈ = N − M g by its linearity, the moments
-    −δN ω_t/|ω_t| and −μ N r_s σ ẑ about the centre of mass. Returns (R, ω) at t_end."""
-    from scipy.integrate import solve_ivp
-
-    I = np.diag([8e-7, 8e-7, 7e-7])
-    M, g, r, s, mu = 0.006, 9.81, 0.015, 0.003, 0.3
-    zhat = np.array([0.0, 0.0, 1.0])
-
-    def forces(R, w, v):
-        e3 = R[:, 2]
-        Iin = R @ I @ R.T
-        a = s * e3 - r * zhat
-        vel = np.array([v[0], v[1], -s * np.cross(w, e3)[2]])
-        u = vel + np.cross(w, a)
-        ut = np.array([u[0], u[1], 0.0])
-        phi = -mu * ut / np.sqrt(ut @ ut + eps**2)
-        wt = np.array([w[0], w[1], 0.0])
-        x = rs * w[2]
-        m = -delta * wt / np.linalg.norm(wt) - mu * rs * x / np.sqrt(x * x + eps**2) * zhat
-
-        def wdot(N):
-            return np.linalg.solve(Iin, np.cross(a, N * (zhat + phi)) + N * m - np.cross(w, Iin @ w))
-
-        def residual(N):  # M z̈ − (N − M g), z = r − s e3_z
-            e3dd = np.cross(wdot(N), e3) + np.cross(w, np.cross(w, e3))
-            return -M * s * e3dd[2] - (N - M * g)
-        c0, c1 = residual(0.0), residual(1.0)
-        N = -c0 / (c1 - c0)
-        return N * (zhat + phi), wdot(N)
-
-    def rhs(t, y):
-        R, w, v = y[:9].reshape(3, 3), y[9:12], y[12:14]
-        F, wd = forces(R, w, v)
-        W = np.array([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
-        return np.concatenate([(W @ R).ravel(), wd, F[:2] / M])
-
-    R0 = np.array([[np.cos(0.1), 0, np.sin(0.1)], [0, 1, 0], [-np.sin(0.1), 0, np.cos(0.1)]])
-    w0 = R0 @ np.array([0.0, 0.0, 180.0])
-    sol = solve_ivp(rhs, (0, t_end), np.concatenate([R0.ravel(), w0, [0.0, 0.0]]), method="DOP853",
-                    rtol=rtol, atol=rtol * 1e-3)
-    return sol.y[:9, -1].reshape(3, 3), sol.y[9:12, -1]
-
-
 def test_the_moments_move_the_sliding_tippe_top_as_an_independent_integration_does():
     delta, rs, t_end = 2e-4, 1e-3, 0.1
     r = run_scene(_with(TIPPE, rolling_resistance=delta, spin_friction=rs),
                   t_end=t_end, samples=2, rtol=1e-12, atol=1e-14)
-    R, w = _newton_euler_inertial(delta, rs, t_end)
+    sol = newton_euler_inertial(1e-2, t_end, delta=delta, rs=rs)
+    R, w = sol.y[:9, -1].reshape(3, 3), sol.y[9:12, -1]
+    assert sol.t[-1] == t_end
     assert r.axis[-1] == pytest.approx(R[:, 2], abs=1e-9)
     assert r.omega[-1] == pytest.approx(R.T @ w, rel=1e-8, abs=1e-7)
     plain = run_scene(TIPPE, t_end=t_end, samples=2, rtol=1e-12, atol=1e-14)
