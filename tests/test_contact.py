@@ -48,7 +48,7 @@ def _slip_rate(k, phase, y, p, d, h=1e-6):
     return (u(y + h * dy) - u(y - h * dy)) / (2 * h)
 
 
-P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0])
+P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0, 0.0, 0.0])
 
 
 def test_a_body_at_rest_upright_presses_with_its_weight():
@@ -94,14 +94,14 @@ def test_the_normal_force_equals_an_independent_lagrangian_derivation():
     state = {a_: 0.2, b: 0.6, g_: 0.4, ad: 2.0, bd: 1.5, gd: 90.0}
     bdd = float(sol[qdd[1]].subs(state))
     zdd = float((sp.diff(z, b, 2) * bd**2).subs(state)) + float(sp.diff(z, b).subs(state)) * bdd
-    p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0])
+    p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0, 0.0, 0.0])
     w = np.array([float(e.subs(state)) for e in (w1, w2, w3)])
     k, y = _state("point", "none", p, (0.2, 0.6, 0.4), w)
     assert k.outputs(0, y, p, np.zeros(3))[O["N"]] == pytest.approx(M * (g + zdd), rel=1e-12)
 
 
 def test_jellett_and_routh_are_constant_along_the_rolling_equations():
-    p = np.array([1e-3, 1e-3, 0.9e-3, 1.0, 9.81, 0.05, 0.01, 0.0, 0.0])
+    p = np.array([1e-3, 1e-3, 0.9e-3, 1.0, 9.81, 0.05, 0.01, 0.0, 0.0, 0.0, 0.0])
     k, y = _state("sphere", "rolling", p, (0.3, 1.0, 2.0), np.array([2.0, -1.0, 5.0]), rolling=True)
     dy = k.rhs(1, y, p, np.zeros(3))
     h = 1e-6
@@ -243,25 +243,25 @@ def test_the_tippe_top_with_viscous_friction_inverts_to_jelletts_spin():
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])
 
 
-def _compiles_clean(names):
+def _compiles_clean(pairs):
     """Each evaluator as the libraries compile it (``generated/contact``, which test_codegen
-    holds equal to its derivation), with the phase loop and the runtime, under the strict flags."""
+    holds equal to its derivation), with what it includes, under the strict flags."""
     from derive.contact import kernel as ck
     from derive.runtime.cbuild import check_compiles
 
-    for name in names:
-        check_compiles({"c.c": ck.text(name), ck.LOOP: ck.text(ck.LOOP), **ck.runtime_sources()}, "c.c")
+    for shape, law in pairs:
+        files = ck.reduced_sources(shape) if law == "reduced" else ck.model_sources(shape, law)
+        check_compiles(files, f"contact_{shape}_{law}.c")
 
 
 def test_the_contact_kernels_compile_clean_under_the_strict_flags():
     # a representative of each kind (no contact force, sliding, rolling, reduced): the others are slow
-    _compiles_clean(["contact_point_none.c", "contact_sphere_coulomb.c", "contact_sphere_rolling.c",
-                     "contact_point_reduced.c"])
+    _compiles_clean([("point", "none"), ("sphere", "coulomb"), ("sphere", "rolling"), ("point", "reduced")])
 
 
 @pytest.mark.slow
 def test_every_contact_kernel_compiles_clean_under_the_strict_flags():
-    _compiles_clean([f"contact_{s}_{law}.c" for s in ("point", "sphere", "disc")
+    _compiles_clean([(s, law) for s in ("point", "sphere", "disc")
                      for law in ("none", "coulomb", "coulomb_regularized", "viscous", "rolling", "reduced")])
 
 
@@ -274,10 +274,12 @@ def test_exact_coulomb_moves_less_than_a_thousandth_when_the_tolerance_is_tighte
     assert abs(a.beta[-1] - b.beta[-1]) <= 1e-3 * b.beta[-1]
 
 
-def _newton_euler_inertial(eps, t_end, rtol=1e-12):
-    """The tippe top under regularised Coulomb friction, written independently: inertial frame,
-    rotation matrix and inertial ω as states, the ball's centre held at height r, N solved from
-    M z̈ = N − M g by its linearity (two evaluations). Returns the time β first reaches π/2."""
+def newton_euler_inertial(eps, t_end, rtol=1e-12, delta=0.0, rs=0.0):
+    """The sliding tippe top under regularised Coulomb friction, written independently: inertial
+    frame, rotation matrix and inertial ω as states, the ball's centre held at height r, N solved
+    from M z̈ = N − M g by its linearity (two evaluations), with the moments of rolling resistance
+    −δN ω_t/|ω_t| and spin friction −μN r_s σ ẑ when δ, r_s are given. Returns SciPy's solution
+    (stopped where β first reaches π/2: its ``t_events[0]``)."""
     from scipy.integrate import solve_ivp
 
     I = np.diag([8e-7, 8e-7, 7e-7])
@@ -293,9 +295,11 @@ def _newton_euler_inertial(eps, t_end, rtol=1e-12):
         u = vel + np.cross(w, a)
         ut = np.array([u[0], u[1], 0.0])
         phi = -mu * ut / np.sqrt(ut @ ut + eps**2)
+        wt, x = np.array([w[0], w[1], 0.0]), rs * w[2]
+        m = (-delta * wt / np.linalg.norm(wt) if delta else 0.0) - mu * rs * x / np.sqrt(x * x + eps**2) * zhat
 
         def wdot(N):
-            return np.linalg.solve(Iin, np.cross(a, N * (zhat + phi)) - np.cross(w, Iin @ w))
+            return np.linalg.solve(Iin, np.cross(a, N * (zhat + phi)) + N * m - np.cross(w, Iin @ w))
 
         def residual(N):  # M z̈ − (N − M g), z = r − s e3_z
             e3dd = np.cross(wdot(N), e3) + np.cross(w, np.cross(w, e3))
@@ -314,9 +318,8 @@ def _newton_euler_inertial(eps, t_end, rtol=1e-12):
     w0 = R0 @ np.array([0.0, 0.0, 180.0])
     ev = lambda t, y: y[8]  # R33 = cos β
     ev.terminal, ev.direction = True, -1
-    sol = solve_ivp(rhs, (0, t_end), np.concatenate([R0.ravel(), w0, [0.0, 0.0]]), method="DOP853",
-                    rtol=rtol, atol=rtol * 1e-3, events=ev)
-    return float(sol.t_events[0][0])
+    return solve_ivp(rhs, (0, t_end), np.concatenate([R0.ravel(), w0, [0.0, 0.0]]), method="DOP853",
+                     rtol=rtol, atol=rtol * 1e-3, events=ev)
 
 
 @pytest.mark.slow
@@ -329,7 +332,7 @@ def test_regularised_coulomb_tippe_top_passes_ninety_degrees_when_an_independent
     i = int(np.argmax(r.beta > np.pi / 2))
     sl = slice(i - 4, i + 4)
     t90 = float(CubicSpline(r.t[sl], np.cos(r.beta[sl])).solve(0.0, extrapolate=False)[0])
-    reference = _newton_euler_inertial(eps, 1.2)
+    reference = float(newton_euler_inertial(eps, 1.2).t_events[0][0])
     assert abs(t90 - reference) <= 1e-4 * reference
     J = r.integrals["jellett"]
     assert np.max(np.abs(J - J[0])) <= 1e-10 * abs(J[0])

@@ -13,7 +13,7 @@ import functools
 
 import numpy as np
 
-from derive.contact.kernel import RUN, STATE, loop_sources, text
+from derive.contact.kernel import PARAM_NAMES, RUN, STATE, model_sources, text
 from derive.contact.laws import LAWS
 from derive.contact.phases import PHASE_NAMES, Run, Switch
 from derive.errors import IntegrationError
@@ -53,14 +53,13 @@ SWITCH = np.dtype([("t", "f8"), ("before", "i4"), ("after", "i4"), ("event", "i4
 
 
 def lib_source(shape: str, law: str, stem: bool) -> str:
-    """``<model>_lib.c``: the evaluator, then the driver, with the law's phases and the stem
-    defined (``CONTACT_SLIDES``, ``CONTACT_ROLLS``, ``CONTACT_STEM``)."""
+    """``<model>_lib.c``: the evaluator (which defines its law's phases, ``CONTACT_SLIDES`` and
+    ``CONTACT_ROLLS``), then the driver, with the stem defined (``CONTACT_STEM``)."""
     spec = LAWS[law]
     name = f"contact_{shape}_{law}"
     return (f"/* {name}_lib.c: the contact model {name} and the phase driver as one translation\n"
             f" * unit; the law's phases ({', '.join(spec.phases)}) select the driver's switch rules.\n"
             f" * Written by `derive export`. */\n"
-            f"#define CONTACT_SLIDES {int(spec.slides)}\n#define CONTACT_ROLLS {int(spec.rolls)}\n"
             f"#define CONTACT_STEM {int(stem)}\n"
             f'#include "{name}.c"\n#include "{RUN}"\n')
 
@@ -71,7 +70,7 @@ def library(shape: str, law: str, stem: bool):
     the library (its Ctrl-C guard: :func:`derive.runtime.records.sigint_guard`)."""
     name = f"contact_{shape}_{law}"
     lib_name = f"{name}_stem_run" if stem else f"{name}_run"
-    sources = {**loop_sources(name), RUN: text(RUN), f"{name}_lib.c": lib_source(shape, law, stem)}
+    sources = {**model_sources(shape, law), RUN: text(RUN), f"{name}_lib.c": lib_source(shape, law, stem)}
     lib = compile_library(lib_name, sources, f"{name}_lib.c")
     fn = lib.contact_simulate
     fn.restype = ctypes.c_int
@@ -115,6 +114,8 @@ def run(shape: str, law: str, p: np.ndarray, stem, y0: np.ndarray, t_out: np.nda
         than ``max_switches`` switches, with the time.
     """
     fn, lib = library(shape, law, stem is not None)
+    if len(p) != len(PARAM_NAMES):
+        raise ValueError(f"a contact model takes {len(PARAM_NAMES)} parameters, not {len(p)}")
     pr = np.ascontiguousarray(np.concatenate([p, stem]) if stem is not None else p, dtype=float)
     y0 = np.ascontiguousarray(y0, dtype=float)
     ts = np.ascontiguousarray(t_out, dtype=float)

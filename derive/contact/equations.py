@@ -19,6 +19,11 @@ u̇ = v̇_b + ω̇ × a + ω × (∂a/∂n) ṅ. This is linear in f: u̇ = A f 
 f = −A⁻¹ (b + ω × u); A = 1/M − [a]ₓ I⁻¹ [a]ₓ is the contact's inverse mass matrix.
 
 Flight: f = 0.
+
+A law's extensions (rolling resistance, spin friction) add a moment τ = N m about the centre of
+mass, m = τ/N the moment per unit normal force (:func:`derive.contact.friction.moment_per_normal`),
+to Euler's equations: I ω̇ = (I ω) × ω + a × f + τ. Sliding, φ̈ = 0 stays linear in N with τ in
+it, φ̈ = (c₁ + k·m) N + c₀; rolling, τ = (f·n) m adds ((I⁻¹ m) × a) nᵀ to A.
 """
 from __future__ import annotations
 
@@ -36,6 +41,8 @@ MASS, GRAV = sp.symbols("M g", positive=True)
 OMEGA = sp.Matrix(sp.symbols("w1 w2 w3", real=True))
 VEL = sp.Matrix(sp.symbols("vb1 vb2 vb3", real=True))
 FORCE = sp.Matrix(sp.symbols("f1 f2 f3", real=True))
+#: The contact moment per unit normal force, m = τ/N (body components), as the C code supplies it.
+MOMENT = sp.Matrix(sp.symbols("m1 m2 m3", real=True))
 SLIP = sp.Matrix(sp.symbols("ut1 ut2 ut3", real=True))
 INERTIA = sp.diag(I1, I2, I3)
 
@@ -48,9 +55,11 @@ def dot(a, b):
     return (a.T * b)[0]
 
 
-def omega_dot(a: sp.Matrix, f: sp.Matrix = FORCE, w: sp.Matrix = OMEGA) -> sp.Matrix:
-    """ω̇ = I⁻¹ ((I ω) × ω + a × f): Euler's equations about the centre of mass."""
-    return INERTIA.inv() * (cross(INERTIA * w, w) + cross(a, f))
+def omega_dot(a: sp.Matrix, f: sp.Matrix = FORCE, w: sp.Matrix = OMEGA, tau: sp.Matrix | None = None) -> sp.Matrix:
+    """ω̇ = I⁻¹ ((I ω) × ω + a × f + τ): Euler's equations about the centre of mass, τ the
+    contact's moment (none when not given)."""
+    moment = cross(a, f) if tau is None else cross(a, f) + tau
+    return INERTIA.inv() * (cross(INERTIA * w, w) + moment)
 
 
 def velocity_dot(f: sp.Matrix = FORCE, n: sp.Matrix = N_VEC, w=OMEGA, v=VEL) -> sp.Matrix:
@@ -77,24 +86,38 @@ class Contact:
         """u = v_b + ω × a: the contact point's material velocity."""
         return VEL + cross(OMEGA, self.a)
 
-    def gap_acceleration(self, f: sp.Matrix) -> sp.Expr:
-        """φ̈ for the gap φ = z + a(n)·n, the accelerations eliminated for the force f."""
+    def gap_acceleration(self, f: sp.Matrix, tau: sp.Matrix | None = None) -> sp.Expr:
+        """φ̈ for the gap φ = z + a(n)·n, the accelerations eliminated for the force f (and the
+        moment τ)."""
         h = dot(self.a, N_VEC)
         grad = sp.Matrix([sp.diff(h, x) for x in N_VEC])
         rate = dot(grad, self.n_dot)  # φ̇ − n·v_b
-        wd, vd = omega_dot(self.a, f), velocity_dot(f)
+        wd, vd = omega_dot(self.a, f, tau=tau), velocity_dot(f)
         return (dot(self.n_dot, VEL) + dot(N_VEC, vd)
                 + sum(sp.diff(rate, x) * xd for x, xd in zip(N_VEC, self.n_dot))
                 + sum(sp.diff(rate, x) * xd for x, xd in zip(OMEGA, wd)))
 
-    def sliding(self, law: Law) -> tuple[sp.Expr, sp.Matrix]:
-        """(N, f) while sliding under ``law``: N solved from φ̈ = 0, f = N n + F_t(N, u_t)."""
+    def gap_coefficients(self, law: Law, moments: bool = False) -> tuple[sp.Expr, sp.Expr, sp.Matrix]:
+        """(c₁, c₀, f) with φ̈ = c₁ N + c₀ while sliding under ``law``, f = N n + F_t(N, u_t);
+        with ``moments`` the extensions' moment τ = N m acts too (it adds to c₁ only)."""
         f = NORMAL * N_VEC + force(law, NORMAL, SLIP)
-        acc = sp.expand(self.gap_acceleration(f))
+        acc = sp.expand(self.gap_acceleration(f, NORMAL * MOMENT if moments else None))
         c1, c0 = acc.coeff(NORMAL, 1), acc.coeff(NORMAL, 0)
         if sp.expand(acc - c1 * NORMAL - c0) != 0:
             raise ValueError(f"the gap's acceleration is not linear in N under {law.name}")
+        return c1, c0, f
+
+    def sliding(self, law: Law) -> tuple[sp.Expr, sp.Matrix]:
+        """(N, f) while sliding under ``law``: N = −c₀/c₁ solved from φ̈ = 0, f = N n + F_t."""
+        c1, c0, f = self.gap_coefficients(law)
         return -c0 / c1, f
+
+    def moment_coefficient(self, law: Law) -> sp.Expr:
+        """k·m, what the moment τ = N m adds to c₁ (linear in m): sliding with the extensions,
+        N = −c₀/(c₁ + k·m)."""
+        c1, _, _ = self.gap_coefficients(law)
+        c1m, _, _ = self.gap_coefficients(law, moments=True)
+        return sp.expand(c1m - c1)
 
     @functools.cached_property
     def rolling(self) -> tuple[sp.Matrix, sp.Matrix]:
@@ -104,6 +127,11 @@ class Contact:
         A = ud.jacobian(FORCE)
         b = ud.subs({x: 0 for x in FORCE})
         return A, b
+
+    @functools.cached_property
+    def rolling_moment(self) -> sp.Matrix:
+        """What the moment τ = (f·n) m adds to A: u̇ gains (I⁻¹ τ) × a, linear in f."""
+        return cross(INERTIA.inv() * MOMENT * dot(FORCE, N_VEC), self.a).jacobian(FORCE)
 
 
 @functools.lru_cache(maxsize=None)

@@ -40,3 +40,22 @@ def force(law, N, ut) -> sp.Matrix:
 def power(law, N, ut) -> sp.Expr:
     """F_t·u_t, the contact force's power while sliding under ``law``."""
     return FORCES[law.name][1](N, ut)
+
+
+#: The extensions' lengths: rolling resistance δ and the spin friction's radius r_s (m).
+DELTA, R_SPIN = sp.symbols("delta r_spin", nonnegative=True)
+#: The rolling direction ω_t/|ω_t| (0 at ω_t = 0) and the spin's sign σ = r_s ω_n/√((r_s ω_n)² + ε²)
+#: (sgn ω_n under exact Coulomb, ε = 0), which the C code supplies as it supplies d.
+ROLL_DIR = sp.Matrix(sp.symbols("e1 e2 e3", real=True))
+SPIN_SIGN = sp.Symbol("sigma", real=True)
+
+#: Extension key → its moment per unit normal force, τ/N, in body components, given n.
+MOMENTS: dict[str, Callable] = {
+    "rolling_resistance": lambda n: -DELTA * ROLL_DIR,
+    "spin_friction": lambda n: -MU * R_SPIN * SPIN_SIGN * n,
+}
+
+
+def moment_per_normal(n) -> sp.Matrix:
+    """m = τ/N, the sum of the extensions' moments per unit normal force (body components)."""
+    return sum((m(n) for m in MOMENTS.values()), sp.zeros(3, 1))

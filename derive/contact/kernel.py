@@ -2,9 +2,11 @@
 
 The C text of each model is :mod:`derive.contact.sources`'s derivation as ``make derive`` wrote
 it into ``generated/contact/``; :func:`text` reads it there and derives it (SymPy) only when the
-file is missing, so a run derives nothing. The template ``templates/contact/contact.c.j2`` holds
-the state layout, the quaternion kinematics and the phase switch; :func:`kernel` compiles it
-through the package's compile cache.
+file is missing, so a run derives nothing. A shape and law's evaluator ``contact_<shape>_<law>.c``
+(``templates/contact/contact.c.j2``: the law's sliding force) includes what every model shares,
+``contact_model.inc`` (``model.c.j2``: the state layout, the quaternion kinematics, the phases'
+forces put together), and its shape's formulas, ``contact_<shape>.inc`` (``shape.c.j2``), each
+written once; :func:`kernel` compiles it through the package's compile cache.
 """
 from __future__ import annotations
 
@@ -14,11 +16,12 @@ import functools
 import numpy as np
 
 from derive.codegen.render import GENERATED
-from derive.contact.layout import LOOP, OUTPUTS, PARAM_NAMES, PHASES, RUN, STATE, loop_source, run_source
+from derive.contact.layout import (LOOP, MODEL, OUTPUTS, REDUCED, PARAM_NAMES, PHASES, RUN, STATE, loop_source, run_source,
+                                   shape_file)
 from derive.runtime.cbuild import compile_library
 
-__all__ = ["LOOP", "OUTPUTS", "PARAM_NAMES", "PHASES", "RUN", "RUNTIME", "STATE", "Kernel", "kernel",
-           "loop_source", "run_source", "runtime_sources", "text"]
+__all__ = ["LOOP", "MODEL", "OUTPUTS", "REDUCED", "PARAM_NAMES", "PHASES", "RUN", "RUNTIME", "STATE", "Kernel", "kernel",
+           "loop_source", "loop_sources", "model_sources", "reduced_sources", "run_source", "runtime_sources", "shape_file", "text"]
 
 #: The shared runtime the phase loop asks for an interrupt (``generated/c/``): compiled with the
 #: contact libraries as with the pivoted models' (:mod:`derive.runtime.cbuild` adds the host's
@@ -46,12 +49,31 @@ def loop_sources(name: str) -> dict[str, str]:
     return {f"{name}.c": text(f"{name}.c"), LOOP: text(LOOP), **runtime_sources()}
 
 
+def model_sources(shape: str, law: str) -> dict[str, str]:
+    """The evaluator ``contact_<shape>_<law>.c`` with what it includes: the shared model, the
+    shape's formulas, the phase loop and the runtime."""
+    return {**loop_sources(f"contact_{shape}_{law}"), MODEL: text(MODEL), shape_file(shape): text(shape_file(shape))}
+
+
+def reduced_sources(shape: str) -> dict[str, str]:
+    """The reduced evaluator ``contact_<shape>_reduced.c`` with what it includes: the evaluator
+    every shape shares, the phase loop and the runtime."""
+    return {**loop_sources(f"contact_{shape}_reduced"), REDUCED: text(REDUCED)}
+
+
+def _check(p: np.ndarray) -> None:
+    """The C code reads every parameter of :data:`PARAM_NAMES`: a shorter vector is refused."""
+    if len(p) < len(PARAM_NAMES):
+        raise ValueError(f"a contact model takes {len(PARAM_NAMES)} parameters ({', '.join(PARAM_NAMES)}), "
+                         f"not {len(p)}")
+
+
 class Kernel:
     """A loaded evaluator: ``eval(phase, y, p, dir)`` → (dy/dt, outputs), NumPy arrays."""
 
     def __init__(self, shape: str, law: str):
         name = f"contact_{shape}_{law}"
-        lib = compile_library(name, loop_sources(name), f"{name}.c")
+        lib = compile_library(name, model_sources(shape, law), f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
@@ -67,6 +89,7 @@ class Kernel:
         """dy/dt in ``phase``; a fresh array. Raises FloatingPointError outside the domain."""
         y = np.ascontiguousarray(y, dtype=float)
         self.nfev += 1
+        _check(p)
         if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, None):
             raise FloatingPointError("the contact is singular here")
         return self.dy.copy()
@@ -74,6 +97,7 @@ class Kernel:
     def outputs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:
         """The monitored outputs (``OUTPUTS``) at the state ``y`` in ``phase``; a fresh array."""
         y = np.ascontiguousarray(y, dtype=float)
+        _check(p)
         if self.fn(phase, y.ctypes.data, p.ctypes.data, d.ctypes.data, self._dy, self._out):
             raise FloatingPointError("the contact is singular here")
         return self.out.copy()
@@ -83,6 +107,7 @@ class Kernel:
         phase = np.ascontiguousarray(phase, dtype=np.intc)
         y, d = (np.ascontiguousarray(a, dtype=float) for a in (y, d))
         out = np.empty((len(y), len(OUTPUTS)))
+        _check(p)
         bad = self.many(len(y), phase.ctypes.data, y.ctypes.data, p.ctypes.data, d.ctypes.data,
                         out.ctypes.data)
         if bad:

@@ -15,6 +15,15 @@ and while rolling (``coulomb`` in its stick phase, and ``rolling`` always) F_t i
 u = 0, bounded by |F_t| ≤ μ N for Coulomb. The power of the contact force is F·u = F_t·u_t, so
 Ė = −μ N |u_t| ≤ 0 (exact Coulomb), −μ N |u_t|²/√(|u_t|² + ε²), −μ |u_t|² while sliding, and
 Ė = 0 rolling or frictionless.
+
+Two extensions add a moment about the contact point, proportional to N, in every touching phase
+(:data:`EXTENSIONS`; the moment per unit N in SymPy is :mod:`derive.contact.friction`'s):
+
+* ``rolling_resistance = δ`` (m)   τ = −δ N ω_t/|ω_t|,  ω_t = ω − (ω·n) n   (0 when ω_t = 0)
+* ``spin_friction = r_s`` (m)      τ = −μ N r_s σ n,  σ = r_s ω_n/√((r_s ω_n)² + ε²)
+                                  (ε the scene's regularisation; exact Coulomb: σ = sgn ω_n)
+
+Their power is τ·ω = −δ N |ω_t| − μ N r_s σ ω_n ≤ 0.
 """
 from __future__ import annotations
 
@@ -23,11 +32,17 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Law:
-    """A contact law: its registry name, the phases it has and what it models."""
+    """A contact law: its registry name, the phases it has, what it models and the scene's
+    ``friction`` that selects it (its name when not given)."""
 
     name: str
     phases: tuple[str, ...]
     description: str
+    friction: str = ""
+
+    @property
+    def selected_by(self) -> str:
+        return self.friction or self.name
 
     @property
     def slides(self) -> bool:
@@ -47,10 +62,35 @@ class Law:
 LAWS: dict[str, Law] = {law.name: law for law in (
     Law("none", ("slide", "flight"), "frictionless plane"),
     Law("coulomb", ("slide", "roll", "flight"), "Coulomb friction, sliding and rolling joined by events"),
-    Law("coulomb_regularized", ("slide", "flight"), "Coulomb friction regularised with ε"),
+    Law("coulomb_regularized", ("slide", "flight"), "Coulomb friction regularised with ε", "coulomb"),
     Law("viscous", ("slide", "flight"), "viscous friction, force per slip speed μ"),
     Law("rolling", ("roll", "flight"), "rolling without slipping"),
 )}
+
+
+@dataclass(frozen=True)
+class Extension:
+    """A contact moment a scene may add to its law: its ``[contact]`` key, the name of its length
+    in the parameter vector, the frictions it goes with and what it models."""
+
+    key: str
+    param: str
+    frictions: tuple[str, ...]
+    description: str
+
+
+#: The law extensions by their ``[contact]`` key (each a length ≥ 0; 0 or absent: off).
+EXTENSIONS: dict[str, Extension] = {e.key: e for e in (
+    Extension("rolling_resistance", "delta", ("coulomb", "viscous", "rolling"),
+              "rolling resistance: a moment δN opposing the rolling rate ω_t"),
+    Extension("spin_friction", "r_spin", ("coulomb",),
+              "spin (Contensou) friction: a moment μ N r_s about the normal opposing the spin ω·n"),
+)}
+
+
+def takes_moments(law: Law) -> bool:
+    """Whether some extension goes with ``law`` (its evaluator then carries the moments)."""
+    return any(law.selected_by in e.frictions for e in EXTENSIONS.values())
 
 
 def law_for(friction: str, regularization: float | None) -> Law:

@@ -10,10 +10,12 @@ from __future__ import annotations
 import functools
 
 from derive.codegen.render import c_double, render
+from derive.contact.laws import EXTENSIONS
 from derive.methods.registry import DEFAULT_METHOD, METHODS
 
-#: The parameter vector's layout (:data:`derive.contact.sources.PARAMS`: the symbols' names).
-PARAM_NAMES = ("I1", "I2", "I3", "M", "g", "r", "s", "mu", "epsilon")
+#: The parameter vector's layout (:data:`derive.contact.sources.PARAMS`: the symbols' names): the
+#: body, gravity, the shape, the law, then the law's extensions' lengths (0: off).
+PARAM_NAMES = ("I1", "I2", "I3", "M", "g", "r", "s", "mu", "epsilon") + tuple(e.param for e in EXTENSIONS.values())
 
 #: The evaluator's ``out`` array, in order.
 OUTPUTS = ("N", "ft_x", "ft_y", "ft_z", "slip_x", "slip_y", "slip_z", "gap", "power",
@@ -31,6 +33,21 @@ def _dop853() -> dict:
     A = [lit(row, 16) for row in t.A] + [lit(t.b, 16)] + [lit(row, 16) for row in t.dense.A_extra]
     return {"A": A, "B": lit(t.b, 12), "E3": lit(t.b_err2, 13), "E5": lit(t.b_err, 13),
             "D": [lit(row, 16) for row in t.dense.D]}
+
+
+#: The part of every shape and law's evaluator they share (the state, its kinematics, the
+#: phases' forces put together, the outputs): one text each ``contact_<shape>_<law>.c`` includes
+#: with its shape's formulas, ``contact_<shape>.inc``.
+MODEL = "contact_model.inc"
+
+
+#: What every shape's reduced evaluator (``contact_<shape>_reduced.c``) shares and includes.
+REDUCED = "contact_reduced.inc"
+
+
+def shape_file(shape: str) -> str:
+    """The name of the file of a shape's formulas, shared by its laws' evaluators."""
+    return f"contact_{shape}.inc"
 
 
 #: The phase loop's file name: one text that every shape and law's source includes.

@@ -47,7 +47,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from derive.contact.kernel import OUTPUTS, PHASES, Kernel
+from derive.contact.kernel import OUTPUTS, PARAM_NAMES, PHASES, Kernel
 from derive.contact.laws import Law
 from derive.errors import IntegrationError
 
@@ -102,9 +102,10 @@ class Phases:
                  max_switches: int = 10_000, stem=None):
         self.k, self.law = k, law
         #: (radius, offset) of each sphere the body may touch with; the kernel's p[5:7] is the
-        #: touching one's, p[9:11] the other's (read by the ``touch`` event)
+        #: touching one's, the two after the model's parameters the other's (read by the
+        #: ``touch`` event)
         self.spheres = [(float(p[5]), float(p[6]))] + ([tuple(map(float, stem))] if stem else [])
-        self.base = np.array(p[:9], dtype=float)
+        self.base = np.array(p[:len(PARAM_NAMES)], dtype=float)
         self.active = 0
         self.p = self.params(0)
         self.e, self.rtol, self.atol = restitution, rtol, atol

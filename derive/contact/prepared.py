@@ -12,6 +12,7 @@ import copy
 import numpy as np
 
 from derive.contact.kernel import kernel
+from derive.contact.laws import EXTENSIONS
 from derive.contact.scene import GRAVITY, ContactScene, read
 from derive.contact.simulate import ContactResult, simulate
 from derive.errors import SceneError
@@ -19,7 +20,7 @@ from derive.errors import SceneError
 #: The numbers ``params`` may replace, by their scene key's last part → its table.
 PARAMS = {"I1": "body", "I2": "body", "I3": "body", "M": GRAVITY, "g": GRAVITY,
           "radius": "contact", "offset": "contact", "mu": "contact", "regularization": "contact",
-          "restitution": "contact"}
+          "restitution": "contact", **{key: "contact" for key in EXTENSIONS}}
 _ANGLES = ("alpha", "beta", "gamma")
 _RATES = ("alpha_dot", "beta_dot", "gamma_dot")
 
@@ -50,7 +51,8 @@ class ContactPrepared:
         params : dict, optional
             New numbers by their scene key's last part: ``I1``, ``I2``, ``I3`` (kg m², about
             the centre of mass), ``M`` (kg), ``g`` (m/s²), ``radius``, ``offset`` (m), ``mu``,
-            ``regularization`` (m/s, a regularised scene only), ``restitution``.
+            ``regularization`` (m/s, a regularised scene only), ``restitution``,
+            ``rolling_resistance``, ``spin_friction`` (m, where the law takes them).
         saveat : None
             Accepted for the signature :class:`derive.sim.prepared.Prepared` has; a contact
             run keeps every output at every sample.

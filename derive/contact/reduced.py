@@ -30,7 +30,7 @@ import functools
 
 import numpy as np
 
-from derive.contact.kernel import OUTPUTS, loop_sources
+from derive.contact.kernel import OUTPUTS, reduced_sources
 from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import METHOD
 from derive.errors import IntegrationError
@@ -52,7 +52,7 @@ class ReducedKernel:
 
     def __init__(self, shape: str):
         name = f"contact_{shape}_reduced"
-        lib = compile_library(name, loop_sources(name), f"{name}.c")
+        lib = compile_library(name, reduced_sources(shape), f"{name}.c")
         self.fn = getattr(lib, f"{name}_eval")
         self.fn.restype = ctypes.c_int
         self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5

@@ -2,8 +2,9 @@
 
 The format (see ``docs/contact.md``): ``[body]`` I1, I2 (default I1), I3 about the centre of
 mass; ``[gravity]`` M, g (no ``l``/``com``: the contact places the centre of mass);
-``[contact]`` shape, radius, offset, friction, mu, regularization, restitution, and ``stem``
-(a second sphere on axis 3, ``{radius, offset}``, with a sphere: the tippe top's stem);
+``[contact]`` shape, radius, offset, friction, mu, regularization, restitution, the law's
+extensions ``rolling_resistance`` and ``spin_friction`` (lengths, :data:`derive.contact.laws.EXTENSIONS`),
+and ``stem`` (a second sphere on axis 3, ``{radius, offset}``, with a sphere: the tippe top's stem);
 ``[initial]`` the z-y-z angles, their rates or ``omega``, and ``vx``, ``vy`` (not with
 ``rolling``); ``[simulate]`` t_end, samples, method, rtol, atol, max_steps. Every problem is a
 :class:`~derive.errors.SceneError` ``<file>: <key>: <what>``.
@@ -13,6 +14,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from derive.contact.laws import EXTENSIONS
 from derive.errors import SceneError
 from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.symbolic.effects import TABLES
@@ -33,7 +35,8 @@ METHODS = ("auto", COMPILED, METHOD)
 _KEYS = {
     "body": ("I1", "I2", "I3"),
     GRAVITY: ("M", "g"),
-    "contact": ("shape", "radius", "offset", "friction", "mu", "regularization", "restitution", "stem"),
+    "contact": ("shape", "radius", "offset", "friction", "mu", "regularization", "restitution", "stem",
+                *EXTENSIONS),
     "initial": ("alpha", "beta", "gamma", "alpha_dot", "beta_dot", "gamma_dot", "omega", "vx", "vy"),
     "simulate": ("t_end", "samples", "method", "rtol", "atol", "max_steps"),
 }
@@ -78,6 +81,17 @@ class ContactScene:
     max_steps: int
     #: The second sphere (radius, offset along ê₃ from the centre of mass), or None.
     stem: tuple[float, float] | None = None
+    #: The law's extensions' lengths by their key (:data:`~derive.contact.laws.EXTENSIONS`; 0: off).
+    extensions: tuple[tuple[str, float], ...] = ()
+
+    def extension(self, key: str) -> float:
+        """The length of the extension ``key`` (0 when the scene does not set it)."""
+        return dict(self.extensions).get(key, 0.0)
+
+    @property
+    def moments(self) -> bool:
+        """Whether an extension's moment acts (some length is positive)."""
+        return any(v > 0 for _, v in self.extensions)
 
     @property
     def law(self) -> str:
@@ -187,6 +201,13 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     if reg is not None and friction != "coulomb":
         raise _fail(source, "contact.regularization", "only with friction = 'coulomb'")
     stem = _stem(source, c, shape)
+    extensions = []
+    for key, ext in EXTENSIONS.items():
+        length = _number(source, c, "contact", key, None, lambda x: x >= 0, "a length >= 0 (m)")
+        if length is not None and friction not in ext.frictions:
+            raise _fail(source, f"contact.{key}", f"not with friction = {friction!r} "
+                                                  f"(only with {' or '.join(map(repr, ext.frictions))})")
+        extensions.append((key, 0.0 if length is None else length))
     e = _number(source, c, "contact", "restitution", 0.0, lambda x: 0 <= x <= 1, "a number in [0, 1]")
     angles = tuple(_number(source, ini, "initial", k, 0.0) for k in ("alpha", "beta", "gamma"))
     has_rates = any(k in ini for k in ("alpha_dot", "beta_dot", "gamma_dot"))
@@ -225,7 +246,7 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
         raise _fail(source, "title", "must be a string")
     return ContactScene(source, title, I1, I2, I3, M, g, shape, radius, offset, friction,
                         0.0 if mu is None else mu, reg, e, angles, rates, omega, vx, vy,
-                        t_end, samples, method, rtol, atol, max_steps, stem=stem)
+                        t_end, samples, method, rtol, atol, max_steps, stem=stem, extensions=tuple(extensions))
 
 
 def _stem(source, c, shape):
@@ -241,10 +262,14 @@ def _stem(source, c, shape):
     return r, _number(source, st, "contact.stem", "offset", 0.0)
 
 
-def integrals_held(shape: str, law: str, symmetric: bool) -> tuple[str, ...]:
+def integrals_held(shape: str, law: str, symmetric: bool, moments: bool = False) -> tuple[str, ...]:
     """The integrals a case has, by what the law, the shape and the body's symmetry allow:
     E frictionless or rolling; p_α frictionless, and p_γ with I₁ = I₂; Jellett's J = (I ω)·a
-    for an axisymmetric body on a spherical surface, and Routh's for a ball rolling."""
+    for an axisymmetric body on a spherical surface, and Routh's for a ball rolling. An
+    extension's moment (``moments``: rolling resistance, spin friction) dissipates E and has a
+    part along a, so none of them holds then."""
+    if moments:
+        return ()
     out = []
     if law in ("none", "rolling"):
         out.append("energy")

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from derive.contact.kernel import OUTPUTS, kernel
-from derive.contact.laws import LAWS
+from derive.contact.laws import EXTENSIONS, LAWS
 from derive.contact import driver, reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
 from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, integrals_held, read
@@ -44,9 +44,10 @@ def body_omega(beta, gamma, rates) -> np.ndarray:
 
 
 def params(sc: ContactScene) -> np.ndarray:
-    """The parameter vector in the kernel's order (I1, I2, I3, M, g, r, s, μ, ε)."""
+    """The parameter vector in the kernel's order (I1, I2, I3, M, g, r, s, μ, ε, then the law's
+    extensions' lengths δ, r_s: :data:`~derive.contact.layout.PARAM_NAMES`)."""
     return np.array([sc.I1, sc.I2, sc.I3, sc.M, sc.g, sc.radius, sc.offset, sc.mu,
-                     sc.regularization or 0.0])
+                     sc.regularization or 0.0] + [sc.extension(k) for k in EXTENSIONS])
 
 
 def initial_state(sc: ContactScene) -> np.ndarray:
@@ -130,7 +131,7 @@ def result(sc: ContactScene, run: Run, k, p, params_of=None) -> ContactResult:
     alpha = np.unwrap(np.arctan2(R[:, 1, 2], R[:, 0, 2]))
     gamma = np.unwrap(np.arctan2(R[:, 2, 1], -R[:, 2, 0]))
     com = run.y[:, 7:10]
-    names = integrals_held(sc.shape, sc.law, sc.symmetric)
+    names = integrals_held(sc.shape, sc.law, sc.symmetric, sc.moments)
     return ContactResult(
         scene=sc, t=run.t, alpha=alpha, beta=beta, gamma=gamma, omega=run.y[:, 4:7].copy(),
         axis=R[:, :, 2].copy(), energy=outs[:, _O["energy"]], com=com.copy(),

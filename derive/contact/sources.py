@@ -4,7 +4,10 @@ The derivation (:mod:`derive.contact.equations`, :mod:`derive.contact.integrals`
 Lagrangian of :mod:`derive.contact.reduced`) is printed block by block with common
 subexpressions shared inside each block (``sympy.cse``): the contact point a(n), the sliding
 normal force and contact force, the rolling system (A, b) whose 3×3 solve is in the template,
-Euler's equations for a given force, and the monitored integrals. ``make derive`` writes every
+Euler's equations for a given force, and the monitored integrals. Each is written once: a
+shape's formulas in ``contact_<shape>.inc``, its law's sliding force in
+``contact_<shape>_<law>.c``, what every model shares in ``contact_model.inc``, each block a C
+function reading the names it needs from ``struct contact_vars``. ``make derive`` writes every
 file into ``generated/contact/`` (:func:`generated_sources`); a run reads them there
 (:func:`derive.contact.kernel.text`) and reaches this module, and SymPy, only for a file that
 is missing.
@@ -17,54 +20,106 @@ import sympy as sp
 
 from derive.codegen.render import render
 from derive.contact.equations import FORCE, GRAV, I1, I2, I3, MASS, contact, omega_dot
-from derive.contact.friction import EPS, MU, NORMAL
-from derive.contact.geometry import OFFSET, RADIUS, SHAPES, height_in_angles
+from derive.contact.friction import DELTA, EPS, MU, NORMAL, R_SPIN, moment_per_normal
+from derive.contact.geometry import N_VEC, OFFSET, RADIUS, SHAPES, height_in_angles
 from derive.contact.integrals import expressions
-from derive.contact.layout import LOOP, OUTPUTS, PARAM_NAMES, RUN, STATE, loop_source, run_source
-from derive.contact.laws import LAWS
+from derive.contact.layout import LOOP, MODEL, OUTPUTS, REDUCED, PARAM_NAMES, RUN, STATE, loop_source, run_source
+from derive.contact.laws import LAWS, takes_moments
 from derive.symbolic.lagrangian import kinetic_energy_symmetric, p_alpha, p_gamma
 from derive.symbolic.rotations import alpha_d, beta, beta_d, gamma_d
 
 #: The full evaluator's parameter vector (the C names, :data:`~derive.contact.layout.PARAM_NAMES`,
 #: are the symbols' names).
-PARAMS = (I1, I2, I3, MASS, GRAV, RADIUS, OFFSET, MU, EPS)
+PARAMS = (I1, I2, I3, MASS, GRAV, RADIUS, OFFSET, MU, EPS, DELTA, R_SPIN)
 #: The reduced evaluator's parameters, in order (:data:`~derive.contact.reduced.PARAM_NAMES`).
 REDUCED_PARAMS = (I1, I3, MASS, GRAV, RADIUS, OFFSET, p_alpha, p_gamma)
 BETA_DD = sp.Symbol("beta_dd", real=True)
 
 
+#: The fields of ``struct contact_vars`` (``contact_model.inc``) in order: what a shape's or a
+#: law's formulas read through ``v``.
+VARS = PARAM_NAMES + ("n1", "n2", "n3", "w1", "w2", "w3", "vb1", "vb2", "vb3", "z",
+                      "a1", "a2", "a3", "ut1", "ut2", "ut3", "d1", "d2", "d3",
+                      "e1", "e2", "e3", "sigma", "m1", "m2", "m3")
+#: The contact force's components, read from the array ``f``.
+_FORCE_READ = {f"f{i + 1}": f"f[{i}]" for i in range(3)}
+
+
 def c_block(assign: list[tuple[str, sp.Expr]]) -> str:
-    """C statements assigning each expression to its (already declared) name, subexpressions
-    shared through ``sympy.cse``."""
+    """C statements assigning each expression to its (already declared) name (or adding it, for
+    a name written ``x +=``), subexpressions shared through ``sympy.cse``."""
     subs, reduced = sp.cse([e for _, e in assign], symbols=sp.numbered_symbols("x"), optimizations="basic")
     lines = [f"const double {s} = {sp.ccode(e)};" for s, e in subs]
-    lines += [f"{name} = {sp.ccode(e)};" for (name, _), e in zip(assign, reduced)]
+    lines += [f"{name}{'' if name.endswith('=') else ' ='} {sp.ccode(e)};" for (name, _), e in zip(assign, reduced)]
     return "\n".join(lines)
+
+
+def c_body(assign: list[tuple[str, sp.Expr]], local: tuple[str, ...] = (), reads: dict[str, str] | None = None) -> str:
+    """A C function's body: the symbols the expressions read, each from where ``reads`` says
+    (by default ``v``, the fields of :data:`VARS`, and ``f``, the force), then :func:`c_block`;
+    ``local`` names are the function's own."""
+    reads = reads if reads is not None else {**{n: f"v->{n}" for n in VARS}, **_FORCE_READ}
+    used = {str(x) for _, e in assign for x in e.free_symbols} - set(local)
+    names = [n for n in reads if n in used]
+    unknown = used - set(names)
+    if unknown:
+        raise ValueError(f"the formulas read {sorted(unknown)}, which no contact model has")
+    lines, line = [], "const double"
+    for k, n in enumerate(names):
+        item = f" {n} = {reads[n]}" + (";" if k == len(names) - 1 else ",")
+        if len(line) + len(item) > 96:
+            lines.append(line)
+            line = "   "
+        line += item
+    return "\n".join(lines + [line, c_block(assign)]) if names else c_block(assign)
+
+
+def model_source() -> str:
+    """``contact_model.inc``: the state, its kinematics and the phases' forces put together, the
+    part every shape and law shares."""
+    m = moment_per_normal(N_VEC)
+    return render("contact/model.c.j2", ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS),
+                  params=PARAM_NAMES, outputs=OUTPUTS,
+                  moment=c_body([(f"v->m{i + 1}", m[i]) for i in range(3)]))
+
+
+@functools.lru_cache(maxsize=None)
+def shape_source(shape: str) -> str:
+    """``contact_<shape>.inc``: the shape's contact point a(n), the rolling system (A, b), Euler's
+    equations for a given force and the monitored integrals, once for all its laws."""
+    c = contact(shape)
+    A, b = c.rolling
+    ints = expressions(c)
+    return render("contact/shape.c.j2", shape=shape,
+                  point=c_body([(f"a[{i}]", c.a[i]) for i in range(3)]),
+                  omega_dot=c_body([(f"wd[{i}]", e) for i, e in enumerate(omega_dot(c.a, FORCE))]),
+                  integrals=c_body([(f"out[{i}]", e) for i, e in enumerate(ints.values())]),
+                  rolling=c_body([(f"A[{3 * i + j}]", A[i, j]) for i in range(3) for j in range(3)]
+                                 + [(f"b[{i}]", b[i]) for i in range(3)]),
+                  rolling_moment=c_body([(f"A[{3 * i + j}] +=", c.rolling_moment[i, j])
+                                         for i in range(3) for j in range(3) if c.rolling_moment[i, j] != 0]))
 
 
 @functools.lru_cache(maxsize=None)
 def source(shape: str, law: str) -> str:
-    """The C source of the evaluator for ``shape`` under the contact law ``law``."""
+    """``contact_<shape>_<law>.c``: the evaluator of ``shape`` under the contact law ``law``, its
+    law's sliding force with the shape's formulas and the shared model included."""
     c = contact(shape)
     lw = LAWS[law]
-    geometry = c_block([(f"a{i + 1}", c.a[i]) for i in range(3)])
-    slide = ""
+    sliding = moment = ""
     if lw.slides:
         N, f = c.sliding(lw)
-        slide = c_block([("N", N)] + [(f"f{i + 1}", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)])
-    roll = ""
-    if lw.rolls:
-        A, b = c.rolling
-        roll = c_block([(f"A[{3 * i + j}]", A[i, j]) for i in range(3) for j in range(3)]
-                       + [(f"b[{i}]", b[i]) for i in range(3)])
-    accel = c_block([(f"wd{i + 1}", e) for i, e in enumerate(omega_dot(c.a, FORCE))])
-    ints = expressions(c)
-    monitors = c_block([(f"out[{13 + i}]", e) for i, e in enumerate(ints.values())])
-
+        force = [(f"f[{i}]", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)]
+        if takes_moments(lw):  # N first, with c1 and k.m to correct it; then f from N
+            c1, _, _ = c.gap_coefficients(lw)
+            moment = c_body([("N", N), ("c1", c1), ("km", c.moment_coefficient(lw))])
+            sliding = c_body(force, local=("N",))
+        else:
+            sliding = c_body([("N", N)] + force, local=("N",))
     return render("contact/contact.c.j2", prefix=f"contact_{shape}_{law}", shape=shape, law=law,
-                  ny=len(STATE), np=len(PARAMS), nout=len(OUTPUTS), params=PARAM_NAMES,
-                  outputs=OUTPUTS, geometry=geometry, slide=slide, roll=roll, accel=accel,
-                  monitors=monitors)
+                  phases=lw.phases,
+                  slides=int(lw.slides), rolls=int(lw.rolls), moments=int(takes_moments(lw)),
+                  sliding=sliding, moment=moment)
 
 
 @functools.lru_cache(maxsize=None)
@@ -93,19 +148,29 @@ def equations(shape: str) -> dict[str, sp.Expr]:
 
 @functools.lru_cache(maxsize=None)
 def reduced_source(shape: str) -> str:
-    """The C source of the reduced evaluator for ``shape`` (it includes the shared phase loop)."""
+    """``contact_<shape>_reduced.c``: the shape's reduced formulas (α̇, γ̇, β̈, N, z, ż), with the
+    evaluator every shape shares included (``contact_reduced.inc``)."""
     eq = equations(shape)
-    block = c_block([("alpha_d", eq["alpha_d"]), ("gamma_d", eq["gamma_d"]), ("beta_dd", eq["beta_dd"]),
-                     ("N", eq["N"].subs(BETA_DD, sp.Symbol("beta_dd"))), ("z", eq["z"]), ("z_d", eq["z_d"])])
-    return render("contact/reduced.c.j2", prefix=f"contact_{shape}_reduced", shape=shape, np=len(REDUCED_PARAMS),
-                  params=[str(p) for p in REDUCED_PARAMS], nout=len(OUTPUTS), block=block,
-                  o_N=OUTPUTS.index("N"), o_z=OUTPUTS.index("z"), o_vz=OUTPUTS.index("vz"))
+    block = c_body([("alpha_d", eq["alpha_d"]), ("gamma_d", eq["gamma_d"]), ("beta_dd", eq["beta_dd"]),
+                    ("N", eq["N"].subs(BETA_DD, sp.Symbol("beta_dd"))), ("z", eq["z"]), ("z_d", eq["z_d"])],
+                   local=("beta", "beta_d", "beta_dd"), reads={str(q): f"p[{i}]" for i, q in enumerate(REDUCED_PARAMS)})
+    return render("contact/reduced.c.j2", prefix=f"contact_{shape}_reduced", shape=shape, block=block)
+
+
+def reduced_model_source() -> str:
+    """``contact_reduced.inc``: the reduced evaluator every shape shares (the state on the unit
+    circles, the outputs), around the shape's ``reduced_formulas``."""
+    return render("contact/reduced_model.c.j2", np=len(REDUCED_PARAMS), params=[str(p) for p in REDUCED_PARAMS],
+                  nout=len(OUTPUTS), o_N=OUTPUTS.index("N"), o_z=OUTPUTS.index("z"), o_vz=OUTPUTS.index("vz"))
 
 
 def derivations() -> dict[str, functools.partial]:
     """Each file of ``generated/contact/`` by name, with the call that derives its text."""
     out = {f"contact_{shape}_{law}.c": functools.partial(source, shape, law) for shape in SHAPES for law in LAWS}
+    out.update({f"contact_{shape}.inc": functools.partial(shape_source, shape) for shape in SHAPES})
+    out[MODEL] = model_source
     out.update({f"contact_{shape}_reduced.c": functools.partial(reduced_source, shape) for shape in SHAPES})
+    out[REDUCED] = reduced_model_source
     out[LOOP], out[RUN] = loop_source, run_source
     return out
 

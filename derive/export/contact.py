@@ -16,7 +16,7 @@ import numpy as np
 
 from derive.codegen.render import c_double, render
 from derive.contact import driver, kernel as ck
-from derive.contact.laws import LAWS
+from derive.contact.laws import EXTENSIONS, LAWS
 from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
 from derive.contact.simulate import body_omega, params, simulate
 from derive.errors import SceneError
@@ -25,12 +25,13 @@ from derive.errors import SceneError
 MAX_SWITCHES = driver.MAX_SWITCHES
 #: The units of the parameters, by name.
 PARAM_UNITS = {"I1": "kg m^2", "I2": "kg m^2", "I3": "kg m^2", "M": "kg", "g": "m/s^2",
-               "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m"}
+               "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m",
+               **{e.param: "m" for e in EXTENSIONS.values()}}
 #: The scene key each parameter comes from.
 PARAM_KEYS = {"I1": "body.I1", "I2": "body.I2", "I3": "body.I3", "M": "gravity.M",
               "g": "gravity.g", "r": "contact.radius", "s": "contact.offset", "mu": "contact.mu",
               "epsilon": "contact.regularization", "r2": "contact.stem.radius",
-              "s2": "contact.stem.offset"}
+              "s2": "contact.stem.offset", **{e.param: f"contact.{e.key}" for e in EXTENSIONS.values()}}
 #: The names of the stem's parameters, after the model's in a run's parameters.
 STEM_NAMES = ("r2", "s2")
 
@@ -53,7 +54,7 @@ def model_name(sc: ContactScene) -> str:
 def model_files(sc: ContactScene) -> dict[str, str]:
     """The model's C: its evaluator, the phase loop, the shared runtime (the loop's interrupt
     hook) and the driver, by file name."""
-    return {**ck.loop_sources(model_name(sc)), ck.RUN: ck.text(ck.RUN)}
+    return {**ck.model_sources(sc.shape, sc.law), ck.RUN: ck.text(ck.RUN)}
 
 
 def lib_source(sc: ContactScene) -> str:
@@ -70,7 +71,7 @@ def start_omega(sc: ContactScene) -> np.ndarray:
 
 def integral_outputs(sc: ContactScene) -> list[tuple[str, int]]:
     """The integrals the case has and their index in the evaluator's outputs."""
-    names = integrals_held(sc.shape, sc.law, sc.symmetric)
+    names = integrals_held(sc.shape, sc.law, sc.symmetric, sc.moments)
     return [(n, ck.OUTPUTS.index(n)) for n in names]
 
 
@@ -93,7 +94,8 @@ def files(sc: ContactScene) -> dict[str, str]:
     out["README.md"] = render(
         "contact/README.md.j2", law=law, shape=sc.shape, states=ck.STATE, outputs=ck.OUTPUTS,
         parameters=[(n, PARAM_KEYS[n], c_double(v), PARAM_UNITS[n]) for n, v in zip(param_names(sc), p)],
-        integrals=[n for n, _ in integral_outputs(sc)], run=ck.RUN, loop=ck.LOOP, **common)
+        integrals=[n for n, _ in integral_outputs(sc)], run=ck.RUN, loop=ck.LOOP, model=ck.MODEL,
+        shape_file=ck.shape_file(sc.shape), **common)
     out["NOTICE.md"] = render("contact/NOTICE.md.j2", loop=ck.LOOP, fmi=False)
     return out
 

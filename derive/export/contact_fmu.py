@@ -23,7 +23,7 @@ import hashlib
 from xml.sax.saxutils import escape
 
 from derive.codegen.render import TEMPLATES, c_double, render
-from derive.contact.laws import LAWS
+from derive.contact.laws import EXTENSIONS, LAWS
 from derive.export import contact as ce
 from derive.export.fmi import HEADERS, UNITS, Var, version
 
@@ -73,6 +73,7 @@ def _used(b: ce.ContactBundle) -> list[int]:
         skip.add("epsilon")
     if b.scene.shape == "point":
         skip.add("r")
+    skip.update(e.param for e in EXTENSIONS.values() if b.scene.friction not in e.frictions)
     return [k for k, n in enumerate(ce.param_names(b.scene)) if n not in skip]
 
 
