@@ -12,7 +12,7 @@ calling such a claim wrong —
    the Lagrangian the text uses (``∂L/∂θ = d/dt(∂L/∂θ̇)``): the law of motion, true on every motion.
 
 Either only makes a claim hold; it never flags one. May import: :mod:`derive.lecture.latex`,
-:mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.verify` (its exact screen), :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.verify import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
@@ -96,6 +97,7 @@ class OnTheMotion:
             el = time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q)
             el = el.xreplace(self.ctx.subs)
             for sign in (1, -1):
-                if trig_reduce(sp.expand(diff - sign * el)) == 0:
+                d = sp.expand(diff - sign * el)
+                if not surely_nonzero(d) and trig_reduce(d) == 0:
                     return q
         return None
