@@ -5,7 +5,9 @@ core (`targets.DERIVED`, names as in `Claim.target`): the claim's ``given`` defi
 frame unit vectors (ê′ᵢ, ê⁰₃) are written in the body basis, each of the slide's ``cases`` is
 substituted into both sides, and the difference claim − derived must vanish. The zero test is
 
-1. symbolic, cheapest first and bounded in expression size (never an unbounded `simplify`):
+1. symbolic, cheapest first and bounded in expression size (never an unbounded `simplify`),
+   unless `surely_nonzero` has proved the difference non-zero at one point (then these steps
+   cannot succeed and are skipped):
    the difference is zero as built, or after `expand`; if it has no trig functions, after
    `cancel` (canonical for rational functions) or, for small ones with radicals, `simplify`;
    if it has, after `rotations.trig_reduce` (canonical for polynomials in sin/cos) — skipped
