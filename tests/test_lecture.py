@@ -15,6 +15,7 @@ from derive.lecture import claims as lecture
 from derive.lecture import report
 from derive.lecture import verify
 from derive.lecture.slides import Correction
+from derive.symbolic import rotations
 
 # The course's notes file is not part of the repository: the quotes are checked against it when
 # it is at hand ($DERIVE_NOTES, else the course folder next to the checkout, as on the
@@ -122,6 +123,30 @@ def test_a_wrong_trig_function_fails_by_trig_reduce_then_numbers():
     wrong = _with("omega-tilde-1", expr=lecture.alpha_d * (-sp.sin(b) * sp.sin(g)) + lecture.beta_d * sp.sin(g))
     r = verify.check(wrong)
     assert r.verdict == "fails" and "at a sample point" in r.method
+
+
+def test_the_exact_screen_proves_differences_non_zero_and_never_an_identity():
+    a, b = sp.symbols("a b", positive=True)
+    x, t, n = sp.Symbol("x"), sp.Symbol("t"), sp.Symbol("n", integer=True)
+    be, ga = lecture.beta, lecture.gamma
+    conv = rotations.convention("z-y-z")
+    identities = [
+        sp.sin(be) ** 2 + sp.cos(be) ** 2 - 1,                               # exact, modulo the prime
+        sp.tan(ga) - sp.sin(ga) / sp.cos(ga),
+        (a + x) ** 3 - sp.expand((a + x) ** 3),
+        sp.sin(a * t + b) ** 2 + sp.cos(a * t + b) ** 2 - 1,                 # in interval arithmetic
+        sp.sqrt(a * b) - sp.sqrt(a) * sp.sqrt(b),
+        be * sp.sin(be) - be * sp.sin(be) + sp.sin(2 * be) - 2 * sp.sin(be) * sp.cos(be),
+        *(sp.Matrix(conv.omega_body_skew()) - sp.Matrix(conv.omega_body_sum())),  # two routes to ω̃
+    ]
+    assert not any(verify.surely_nonzero(d) for d in identities)
+    slips = [sp.sin(be) ** 2 - sp.cos(be) ** 2, (a + x) ** 2 - a**2 - x**2, sp.sin(a * t) - sp.cos(a * t),
+             sp.sqrt(a) - a, sp.Integer(3)]
+    assert all(verify.surely_nonzero(d) for d in slips)
+    # no verdict where the point is outside the domain, or the expression outside the class
+    assert not verify.surely_nonzero(sp.sin(sp.pi * n) + n)
+    assert not verify.surely_nonzero(sp.Abs(x) - x + 1)
+    assert not verify.surely_nonzero(sp.sqrt(a - b) + 1)
 
 
 def test_a_correction_that_does_not_hold_gives_fails_not_typo():

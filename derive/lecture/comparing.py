@@ -54,7 +54,10 @@ class Mismatch(Exception):
 def zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
     if lhs.shape != rhs.shape:
         return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
-    steps = [_symbolic_zero(d) for d in lhs - rhs]
+    diffs = lhs - rhs
+    # a difference shown non-zero at an exact point goes straight to the numeric test, whose
+    # counterexample is the reason given (the symbolic steps could not show it zero)
+    steps = [None] if any(map(vf.surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
     if all(steps):
         return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
     if any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow)):
@@ -117,6 +120,8 @@ def quick_equal(a, b) -> bool:
     except Mismatch:
         return False
     if A.shape != B.shape:
+        return False
+    if any(vf.surely_nonzero(x - y) for x, y in zip(A, B)):
         return False
     syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
     rng = random.Random(7)

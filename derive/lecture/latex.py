@@ -28,6 +28,7 @@ can be compared with a derived one directly.
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -123,10 +124,6 @@ def _lark(latex: str, toks: list[Tok], vocab: Vocabulary) -> Parsed | None:
     """Hand the formula to ``sympy.parsing.latex.parse_latex(…, backend="lark")`` with each atom
     replaced by a placeholder ``Z_{k}`` (the vocabulary has already resolved them), and map the
     placeholders back. None when it cannot read it either, or returns an ambiguous reading."""
-    try:
-        from sympy.parsing.latex import parse_latex
-    except ImportError:  # pragma: no cover - lark is a dependency
-        return None
     pieces, table, last = [], {}, 0
     for k, tok in enumerate(toks):
         if tok.kind == "atom":
@@ -142,13 +139,24 @@ def _lark(latex: str, toks: list[Tok], vocab: Vocabulary) -> Parsed | None:
     for rel in ("\\equiv", "\\approx"):
         text = text.replace(rel, "=")
     text = text.replace("\\left", "").replace("\\right", "")
-    try:
-        result = parse_latex(text, backend="lark")
-    except Exception:  # noqa: BLE001 - any failure of the slow path means "not read"
-        return None
+    result = _lark_reading(text)
     if not isinstance(result, (sp.Basic, sp.MatrixBase)):
         return None                                   # an ambiguous reading (a Lark tree)
     if isinstance(result, sp.core.relational.Relational):
         members = [Member(result.lhs.xreplace(table)), Member(result.rhs.xreplace(table))]
         return Parsed(members, ["="])
     return Parsed([Member(result.xreplace(table))], [])
+
+
+@functools.lru_cache(maxsize=1024)
+def _lark_reading(text: str):
+    """SymPy's Lark reading of a formula with placeholders, or None: cached, since the second
+    readings of a statement hand the same text over again."""
+    try:
+        from sympy.parsing.latex import parse_latex
+    except ImportError:  # pragma: no cover - lark is a dependency
+        return None
+    try:
+        return parse_latex(text, backend="lark")
+    except Exception:  # noqa: BLE001 - any failure of the slow path means "not read"
+        return None

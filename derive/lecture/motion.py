@@ -15,15 +15,19 @@ settings, the text's definitions, the equations it has written). Gives: the mixi
   latest equations the text wrote for those components under the same settings, or Euler's
   under them; the text's undefined symbols in a solution are its integration constants.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.verify`,
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
+
+import functools
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
+from derive.lecture.verify import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -507,13 +511,16 @@ class Motion:
             return
         subs = {k: v for k, v in self.ctx.subs.items() if k not in sol}
 
-        def holds(sol_):
-            rates_ = {lx.WD[lx.W.index(w)]: sp.diff(f, t) for w, f in sol_.items()}
+        def holds(sol_, screen=False):
+            """(holds, why); with ``screen``, a residual shown non-zero at a point ends it (no why)."""
+            rates_ = {lx.WD[lx.W.index(w)]: _dt(f) for w, f in sol_.items()}
             for k, case in enumerate(self.ctx.cases):
                 for raw in chosen:
-                    r = raw.xreplace({sp.Derivative(w, t, 2): sp.diff(f, t, 2) for w, f in sol_.items()})
+                    r = raw.xreplace({sp.Derivative(w, t, 2): _dt(f, 2) for w, f in sol_.items()})
                     r = r.xreplace({**sol_, **rates_}).xreplace(subs)
                     r = r.xreplace(case) if case else r
+                    if screen and surely_nonzero(r):
+                        return False, ""
                     ok, how = zero(sp.Matrix([r]), sp.Matrix([0]), f"solution/{k}")
                     if not ok:
                         where = f" in case {k + 1} of {len(self.ctx.cases)} ({self._case_text(case)})" if len(self.ctx.cases) > 1 else ""
@@ -536,7 +543,7 @@ class Motion:
         fixes = {}
         for j, (line, piece, w, f, scale) in enumerate(group):
             for cand, what in edits(f):
-                if holds({**sol, w: self._own_defs(cand)})[0]:
+                if holds({**sol, w: self._own_defs(cand)}, screen=True)[0]:
                     fixes[j] = (cand, what)
                     break
         if not fixes:
@@ -564,3 +571,10 @@ class Motion:
                     out |= {s for s in free(sp.diff(arg, lx.t)) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                             and s not in set(free(sp.Matrix(list(self.ctx.subs.values()))))}
         return ", ".join(sorted(self.tex(s) for s in out))
+
+
+@functools.lru_cache(maxsize=4096)
+def _dt(f, n=1):
+    """dⁿf/dtⁿ, memoised: the search for a correction of one solution differentiates the
+    unchanged members of its group again with every candidate."""
+    return sp.diff(f, lx.t, n)

@@ -119,7 +119,7 @@ class Rereading:
         if any(c.verdict == "typo" for c in first) and not dup:
             self._in_their_notation(saved, line, piece, pieces, first)
         for name, value, what in _second_readings(piece):
-            second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value})
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value}, judging_only=True)
             if second and all(c.verdict == "holds" for c in second):
                 for c in second:
                     c.why += f" (reading {what})"
@@ -129,7 +129,7 @@ class Rereading:
             return
         learned = self._learned(piece)
         if learned:
-            second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True)
+            second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True, judging_only=True)
             if not any(c.verdict in ("typo", "fails") for c in second):
                 for c in first:
                     if c.verdict in ("typo", "fails"):
@@ -157,7 +157,7 @@ class Rereading:
         bare = _copied(saved)
         for s in used:
             del bare.defs[s]
-        second, _ = self._sandbox(bare, line, piece, dup, pieces)
+        second, _ = self._sandbox(bare, line, piece, dup, pieces, judging_only=True)
         if any(c.verdict in ("typo", "fails") for c in second):
             return False
         names = ", ".join(f"{self.tex(s)} = {self.tex(saved.defs[s])} (line {n})" for s, n in used.items())
@@ -205,7 +205,7 @@ class Rereading:
         bare = _copied(saved)
         for k in keys:
             del bare.subs[k]
-        second, _ = self._sandbox(bare, line, piece, False, pieces)
+        second, _ = self._sandbox(bare, line, piece, False, pieces, judging_only=True)
         if any(c.verdict in ("typo", "fails") for c in second):
             where = self.ctx.stated.get(keys[0], "stated in the text")
             for c in claims:
@@ -223,7 +223,7 @@ class Rereading:
             return False
         sym = _copied(saved)
         sym.subs[I2] = I1
-        second, _ = self._sandbox(sym, line, piece, dup, pieces)
+        second, _ = self._sandbox(sym, line, piece, dup, pieces, judging_only=True)
         if not second or not all(c.verdict == "holds" for c in second):
             return False
         for c in second:
@@ -235,7 +235,8 @@ class Rereading:
 
     def _sandbox(self, saved, line, piece, dup, pieces, readings=None, names_off=False, judging_only=False):
         """The statement read again from the context ``saved`` with other readings: its claims and
-        the context it leaves; the checker's own state is left as it was."""
+        the context it leaves; the checker's own state is left as it was. ``judging_only`` where
+        only whether it holds or is flagged counts (typo or fails alike): no correction is sought."""
         keep_claims, keep_ctx = len(self.claims), self.ctx
         self.ctx = _copied(saved)
         self.vocab.readings.update(readings or {})

@@ -104,7 +104,7 @@ def _zero(a, b, seed) -> tuple[bool, str]:
         where = f" (component {k + 1})" if len(diffs) == 3 else (f" (entry {k // 3 + 1},{k % 3 + 1})" if len(diffs) == 9 else "")
         return False, f"exact (expand): claim − derived ≠ 0{where}"
     try:
-        steps = [vf._symbolic_zero(d) for d in diffs]
+        steps = [None] if any(map(vf.surely_nonzero, diffs)) else [vf._symbolic_zero(d) for d in diffs]
     except (sp.PolynomialError, TypeError, ValueError):
         steps = [None]
     if all(steps):

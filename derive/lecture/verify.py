@@ -5,7 +5,9 @@ core (`targets.DERIVED`, names as in `Claim.target`): the claim's ``given`` defi
 frame unit vectors (ê′ᵢ, ê⁰₃) are written in the body basis, each of the slide's ``cases`` is
 substituted into both sides, and the difference claim − derived must vanish. The zero test is
 
-1. symbolic, cheapest first and bounded in expression size (never an unbounded `simplify`):
+1. symbolic, cheapest first and bounded in expression size (never an unbounded `simplify`),
+   unless `surely_nonzero` has proved the difference non-zero at one point (then these steps
+   cannot succeed and are skipped):
    the difference is zero as built, or after `expand`; if it has no trig functions, after
    `cancel` (canonical for rational functions) or, for small ones with radicals, `simplify`;
    if it has, after `rotations.trig_reduce` (canonical for polynomials in sin/cos) — skipped
@@ -31,6 +33,7 @@ from dataclasses import dataclass
 
 import mpmath
 import sympy as sp
+from mpmath import iv
 
 from derive.lecture import claims as lec
 from derive.lecture import slides as sl
@@ -165,6 +168,125 @@ def _symbolic_zero(d) -> str | None:
     return None
 
 
+_PRIMES = (11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107)
+# Rational points of the unit circle (sin, cos) = (a/c, b/c), a² + b² = c²: one per angle.
+_CIRCLE = ((3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25), (20, 21, 29), (12, 35, 37), (9, 40, 41), (28, 45, 53))
+_MODULUS = 2**61 - 1
+_INTERVAL_BITS = 120
+_IV_FUNCTIONS = {sp.sin: iv.sin, sp.cos: iv.cos, sp.tan: iv.tan, sp.exp: iv.exp}
+
+
+class _Outside(Exception):
+    """An expression the evaluation at a point does not cover."""
+
+
+def surely_nonzero(d) -> bool:
+    """Whether d ≢ 0 is proved by one evaluation at a point of its domain, where the i-th symbol
+    by name is the positive rational pᵢ/7 (pᵢ the i-th prime from 11).
+
+    * A rational function of symbols and of sin, cos, tan of angles that occur only there is
+      evaluated exactly, each angle at a point of the unit circle with rational sine and cosine,
+      modulo the prime 2⁶¹ − 1: a non-zero residue is a non-zero numerator.
+    * Otherwise (sums, products, powers, sin, cos, tan, exp, π of anything) in interval arithmetic
+      (mpmath ``iv``, 120 bits): an enclosure that excludes 0 is a proof.
+
+    False for anything else, a symbol declared integer or non-positive, a pole, a root of a
+    negative number, a zero residue or an enclosure containing 0. Before the symbolic steps, it
+    spares them a difference they cannot show zero (a slip, or a candidate of the search for a
+    correction) at the cost of one evaluation.
+    """
+    if not isinstance(d, sp.Expr):
+        return False
+    if d.is_Number:
+        return d != 0 and d.is_finite is True
+    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
+        return False
+    try:
+        return _residue(d, _exact_point(d, symbols), {}) != 0
+    except (_Outside, ValueError, ZeroDivisionError):
+        pass
+    point = {s: iv.mpf(p) / 7 for s, p in zip(symbols, _PRIMES)}
+    prec = iv.prec
+    iv.prec = _INTERVAL_BITS
+    try:
+        return bool(0 not in _enclosure(d, point, {}))
+    except (_Outside, ValueError, ZeroDivisionError, TypeError, OverflowError):
+        return False
+    finally:
+        iv.prec = prec
+
+
+def _exact_point(d, symbols) -> dict:
+    """Residues of the point: pᵢ/7 for each symbol; sin, cos, tan of each angle from `_CIRCLE`."""
+    inv = lambda n: pow(n, -1, _MODULUS)  # noqa: E731
+    angles = sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    if len(angles) > len(_CIRCLE):
+        raise _Outside(d)
+    point = {s: p * inv(7) % _MODULUS for s, p in zip(symbols, _PRIMES) if s not in angles}
+    for x, (a, b, c) in zip(angles, _CIRCLE):
+        point[sp.sin(x)], point[sp.cos(x)], point[sp.tan(x)] = a * inv(c), b * inv(c), a * inv(b)
+    return point
+
+
+def _residue(e, point: dict, memo: dict) -> int:
+    """e at the exact point, modulo `_MODULUS` (an angle outside sin/cos/tan is `_Outside`)."""
+    if e in memo:
+        return memo[e]
+    if e in point:
+        value = point[e]
+    elif e.is_Rational:
+        value = int(e.p) * pow(int(e.q), -1, _MODULUS) % _MODULUS
+    elif e.is_Add:
+        value = sum(_residue(a, point, memo) for a in e.args) % _MODULUS
+    elif e.is_Mul:
+        value = 1
+        for a in e.args:
+            value = value * _residue(a, point, memo) % _MODULUS
+    elif e.is_Pow and e.exp.is_Integer:
+        value = pow(_residue(e.base, point, memo), int(e.exp), _MODULUS)
+    else:
+        raise _Outside(e)
+    memo[e] = value
+    return value
+
+
+def _enclosure(e, point: dict, memo: dict):
+    """An interval holding e's value at ``point`` (common subexpressions evaluated once)."""
+    if e in memo:
+        return memo[e]
+    if e.is_Symbol:
+        value = point[e]
+    elif e.is_Rational:
+        value = iv.mpf(int(e.p)) / int(e.q)
+    elif e is sp.pi:
+        value = iv.pi
+    elif e.is_Add:
+        value = iv.mpf(0)
+        for a in e.args:
+            value = value + _enclosure(a, point, memo)
+    elif e.is_Mul:
+        value = iv.mpf(1)
+        for a in e.args:
+            value = value * _enclosure(a, point, memo)
+    elif e.is_Pow:
+        base = _enclosure(e.base, point, memo)
+        if e.exp.is_Integer:
+            value = base ** int(e.exp)
+        elif e.exp == sp.S.Half and base.a > 0:
+            value = iv.sqrt(base)
+        elif e.exp.is_Rational and base.a > 0:
+            value = iv.exp(iv.log(base) * _enclosure(e.exp, point, memo))
+        else:
+            raise _Outside(e)
+    elif type(e) in _IV_FUNCTIONS:
+        value = _IV_FUNCTIONS[type(e)](_enclosure(e.args[0], point, memo))
+    else:
+        raise _Outside(e)
+    memo[e] = value
+    return value
+
+
 def _radicals(e) -> bool:
     """Whether e has non-integer powers or functions, where `cancel` is not a canonical form."""
     return bool(e.atoms(sp.Function)) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
@@ -229,7 +351,8 @@ def _compare(claim: Claim, expr, target: str) -> _Outcome:
     methods = []
     for k, case in enumerate(claim.cases):
         lhs, rhs = lhs0.xreplace(case), rhs0.xreplace(case)
-        steps = [_symbolic_zero(d) for d in lhs - rhs]
+        diffs = lhs - rhs
+        steps = [None] if any(map(surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
         if all(steps):
             methods.append(max(steps, key=_SYMBOLIC_STEPS.index))
             continue

@@ -94,7 +94,8 @@ def trig_reduce(expr, angles=ANGLES):
     pairs = []
     for x in angles:
         s_, c_ = sp.Dummy("s"), sp.Dummy("c")
-        expr = expr.subs({sp.sin(x): s_, sp.cos(x): c_, sp.tan(x): s_ / c_})
+        # exact replacement of these atoms (`subs` does the same here, with far more work)
+        expr = expr.xreplace({sp.sin(x): s_, sp.cos(x): c_, sp.tan(x): s_ / c_})
         pairs.append((x, s_, c_))
     num, den = sp.fraction(sp.together(expr))
 
@@ -106,10 +107,10 @@ def trig_reduce(expr, angles=ANGLES):
         return sp.expand(poly)
 
     back = {v: f(x) for x, s_, c_ in pairs for v, f in ((s_, sp.sin), (c_, sp.cos))}
-    num = reduce(num).subs(back)
+    num = reduce(num).xreplace(back)
     if den == 1:
         return num
-    return num / sp.factor(reduce(den).subs(back))
+    return num / sp.factor(reduce(den).xreplace(back))
 
 
 def time_derivative(expr, coords=ANGLES, rates=RATES, accels=None):
