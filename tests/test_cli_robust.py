@@ -361,7 +361,17 @@ def test_real_process_failures_are_one_line(argv, code):
     assert "Traceback" not in r.stderr
 
 
-def test_a_ctrl_c_that_a_library_turns_into_another_error_is_still_exit_130(monkeypatch, capsys):
+@pytest.fixture
+def python_ctrl_c():
+    """SIGINT handled as in a terminal's foreground process (a test runner started in the
+    background inherits it ignored), restored afterwards."""
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
+
+
+def test_a_ctrl_c_that_a_library_turns_into_another_error_is_still_exit_130(monkeypatch, capsys,
+                                                                              python_ctrl_c):
     """A Ctrl-C that lands in an import NumPy rewraps (ImportError) is still an interrupt: the
     CLI's handler recorded it, so the error line is ``interrupted``, not an internal error."""
     def command(argv):
