@@ -34,9 +34,9 @@ FLOOR = {"checked": 216, "slips_flagged": 26, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
-@pytest.fixture(scope="module")
-def figures():
-    return {slug: measure.measure(slug, notes_check.check_notes(REAL / f"{slug}.md")) for slug in TEXTS}
+def _figures(once, slug):
+    """The reader's figures on one text, read once per test run (every test process shares it)."""
+    return once(f"corpus-{slug}", lambda: measure.measure(slug, notes_check.check_notes(REAL / f"{slug}.md")))
 
 
 def test_the_corpus_has_a_dozen_texts_of_the_kinds_the_reader_must_meet():
@@ -94,21 +94,20 @@ def _share(f, target):
     return {"checked": f.checked_share, "found": f.found_share, "false": f.false_share}[target]
 
 
-@pytest.mark.slow  # (every text of the corpus read and checked: minutes)
 @pytest.mark.parametrize("target", ["checked", "found", "false"])
 @pytest.mark.parametrize("slug", TEXTS)
-def test_the_reader_meets_its_targets_on_a_text(figures, slug, target, request):
+def test_the_reader_meets_its_targets_on_a_text(once, slug, target, request):
     if (slug, target) in SHORT:
         request.applymarker(pytest.mark.xfail(reason=SHORT[(slug, target)], strict=True))
-    f = figures[slug]
+    f = _figures(once, slug)
     if target == "false":
         assert f.false_share <= FALSE_ALARMS, (f.holds_flagged, f.holds, f.false_alarms)
     else:
         assert _share(f, target) >= TARGETS[target], (f.checked, f.checkable, f.slips_flagged, f.slips, f.missed)
 
 
-@pytest.mark.slow  # (every text of the corpus read and checked: minutes)
-def test_the_corpus_totals_do_not_fall(figures):
+def test_the_corpus_totals_do_not_fall(once):
+    figures = {slug: _figures(once, slug) for slug in TEXTS}
     total = {k: sum(getattr(f, k) for f in figures.values()) for k in FLOOR}
     print("\n" + measure.table(list(figures.values())))
     assert total["checked"] >= FLOOR["checked"]
