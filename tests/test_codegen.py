@@ -256,7 +256,7 @@ O2_SAMPLE = ("heavy_top.c", "heavy_top_solvers.c", "heavy_top_taylor.c", "reduce
              "euler_poisson_asym_splitting.c", "euler_free.c")
 
 
-def _compile_strictly(tmp_path, files, flags):
+def _compile_strictly(files, flags):
     """Each of ``files`` compiled strictly with ``flags`` (two at a time); the outcome is kept for
     these exact sources, flags and compiler (tests/compile_once.py)."""
     from concurrent.futures import ThreadPoolExecutor
@@ -282,19 +282,19 @@ def _compile_strictly(tmp_path, files, flags):
                       build, cc)
 
 
-def test_generated_c_compiles_cleanly_with_strict_warnings(tmp_path):
+def test_generated_c_compiles_cleanly_with_strict_warnings():
     """Every generated C file, strict C99 with every warning an error (the front end's
     warnings: -fsyntax-only), and one file of each template at -O2, where the optimiser's
     warnings (maybe-uninitialized, array bounds) come in."""
     files = sorted((GENERATED / "c").glob("*.c"))
     assert len(files) >= 8
-    _compile_strictly(tmp_path, files, ["-fsyntax-only"])
+    _compile_strictly(files, ["-fsyntax-only"])
     sample = [GENERATED / "c" / name for name in O2_SAMPLE]
     assert all(f.is_file() for f in sample)
-    _compile_strictly(tmp_path, sample, ["-O2"])
+    _compile_strictly(sample, ["-O2"])
 
 
-def test_the_lanes_drivers_compile_cleanly_with_strict_warnings(tmp_path):
+def test_the_lanes_drivers_compile_cleanly_with_strict_warnings():
     """The Taylor lanes drivers, compiled only in the lanes' build (-DDERIVE_LANES, GNU C's
     vector types), strict at that build's flags (-O3 -march=native ...: the optimiser's
     warnings), in a unity file as derive builds them: the heavy top reduced (every rule of
@@ -329,9 +329,9 @@ def test_the_lanes_drivers_compile_cleanly_with_strict_warnings(tmp_path):
 
 
 @pytest.mark.slow
-def test_every_generated_c_file_compiles_cleanly_at_O2(tmp_path):
+def test_every_generated_c_file_compiles_cleanly_at_O2():
     """Every generated C file, strict, at -O2 (~25 s of compiling)."""
-    _compile_strictly(tmp_path, sorted((GENERATED / "c").glob("*.c")), ["-O2"])
+    _compile_strictly(sorted((GENERATED / "c").glob("*.c")), ["-O2"])
 
 
 def test_generated_dir_is_what_generate_writes(generated_files):
