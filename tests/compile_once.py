@@ -74,6 +74,7 @@ def make_once(folder: Path, *argv: str) -> subprocess.CompletedProcess:
     when the same folder is built again. The CompletedProcess of the build, or of a kept one
     (return code 0, no output)."""
     folder = Path(folder)
+    assert all(p.is_file() for p in folder.iterdir()), "a flat folder: every input is in the key"
     before = files_in(folder)
     result: list[subprocess.CompletedProcess] = []
 
