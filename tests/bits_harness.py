@@ -11,6 +11,7 @@ import subprocess
 import numpy as np
 
 from derive.codegen.render import ROOT
+from tests.compile_once import files_in, once
 
 GEN = ROOT / "generated" / "c"
 PREFIX = "derive_reduced_u_sym_gravity_taylor_"
@@ -18,14 +19,18 @@ PREFIX = "derive_reduced_u_sym_gravity_taylor_"
 
 def compile_harness(tmp_path, flags, name: str, text: str):
     """The executable of the C program ``text`` (it includes the generated solver from GEN),
-    built with ``flags`` and the Taylor method selected."""
-    src = tmp_path / f"{name}.c"
-    src.write_text(text)
-    exe = tmp_path / name
+    built with ``flags`` and the Taylor method selected; kept for these exact sources, flags and
+    compiler (tests/compile_once.py), so ``tmp_path`` is not written."""
     cc = os.environ.get("CC", "cc")
-    subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
-                    "-o", str(exe), "-lm"], check=True, capture_output=True, text=True)
-    return exe
+    cmd = [*flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", "-lm"]
+
+    def build(work):
+        src = work / f"{name}.c"
+        src.write_text(text)
+        subprocess.run([cc, *flags, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR", f"-I{GEN}", str(src),
+                        "-o", str(work / name), "-lm"], check=True, capture_output=True, text=True)
+
+    return once(["harness", name, *cmd], {**files_in(GEN), "harness": text}, build, cc) / name
 
 
 def taylor_sizes(model: str) -> dict[str, int]:

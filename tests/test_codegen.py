@@ -16,6 +16,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
+import compile_once
 import handwritten as hw
 from derive import generate
 from derive.runtime.cbuild import compile_library
@@ -255,36 +256,45 @@ O2_SAMPLE = ("heavy_top.c", "heavy_top_solvers.c", "heavy_top_taylor.c", "reduce
              "euler_poisson_asym_splitting.c", "euler_free.c")
 
 
-def _compile_strictly(tmp_path, files, flags):
+def _compile_strictly(files, flags):
+    """Each of ``files`` compiled strictly with ``flags`` (two at a time); the outcome is kept for
+    these exact sources, flags and compiler (tests/compile_once.py)."""
     from concurrent.futures import ThreadPoolExecutor
 
     cc = os.environ.get("CC", "cc")
+    for c_file in files:
+        assert "Python.h" not in c_file.read_text()
 
-    def compile_one(c_file):
-        out = ["-o", str(tmp_path / f"{c_file.stem}.o")] if "-fsyntax-only" not in flags else []
-        return c_file, subprocess.run(
-            [cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", *flags, "-c", str(c_file),
-             "-I", str(GENERATED / "c"), *out], capture_output=True, text=True)
+    def build(work):
+        def compile_one(c_file):
+            out = ["-o", str(work / f"{c_file.stem}.o")] if "-fsyntax-only" not in flags else []
+            return c_file, subprocess.run(
+                [cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", *flags, "-c",
+                 str(c_file), "-I", str(GENERATED / "c"), *out], capture_output=True, text=True)
 
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        for c_file, r in pool.map(compile_one, files):
-            assert r.returncode == 0, f"{c_file.name}:\n{r.stderr}"
-            assert "Python.h" not in c_file.read_text()
+        with ThreadPoolExecutor(max_workers=2) as pool:
+            for c_file, r in pool.map(compile_one, files):
+                assert r.returncode == 0, f"{c_file.name}:\n{r.stderr}"
+        for o in work.glob("*.o"):  # (only the outcome is kept)
+            o.unlink()
+
+    compile_once.once(["strict", *flags, *(f.name for f in files)], compile_once.files_in(GENERATED / "c"),
+                      build, cc)
 
 
-def test_generated_c_compiles_cleanly_with_strict_warnings(tmp_path):
+def test_generated_c_compiles_cleanly_with_strict_warnings():
     """Every generated C file, strict C99 with every warning an error (the front end's
     warnings: -fsyntax-only), and one file of each template at -O2, where the optimiser's
     warnings (maybe-uninitialized, array bounds) come in."""
     files = sorted((GENERATED / "c").glob("*.c"))
     assert len(files) >= 8
-    _compile_strictly(tmp_path, files, ["-fsyntax-only"])
+    _compile_strictly(files, ["-fsyntax-only"])
     sample = [GENERATED / "c" / name for name in O2_SAMPLE]
     assert all(f.is_file() for f in sample)
-    _compile_strictly(tmp_path, sample, ["-O2"])
+    _compile_strictly(sample, ["-O2"])
 
 
-def test_the_lanes_drivers_compile_cleanly_with_strict_warnings(tmp_path):
+def test_the_lanes_drivers_compile_cleanly_with_strict_warnings():
     """The Taylor lanes drivers, compiled only in the lanes' build (-DDERIVE_LANES, GNU C's
     vector types), strict at that build's flags (-O3 -march=native ...: the optimiser's
     warnings), in a unity file as derive builds them: the heavy top reduced (every rule of
@@ -294,27 +304,34 @@ def test_the_lanes_drivers_compile_cleanly_with_strict_warnings(tmp_path):
     from derive.runtime.cbuild import DEFAULT_FLAGS, NATIVE_FLAGS, STRICT_FLAGS
 
     cc = os.environ.get("CC", "cc")
+    names = ["heavy_top_reduced", "rigid_body"]
+    flags = [*STRICT_FLAGS, *DEFAULT_FLAGS, *NATIVE_FLAGS, "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
 
-    def compile_one(name):
-        unity = tmp_path / f"{name}_unit.c"
-        unity.write_text("".join(f'#include "{name}{part}.c"\n' for part in ("", "_solvers", "_taylor")))
-        obj = tmp_path / f"{name}.o"
-        r = subprocess.run([cc, *STRICT_FLAGS, *DEFAULT_FLAGS, *NATIVE_FLAGS, "-DDERIVE_SELECT",
-                            "-DDERIVE_WITH_TAYLOR", "-I", str(GENERATED / "c"), "-c", str(unity),
-                            "-o", str(obj)], capture_output=True, text=True)
-        return name, r, obj
+    def build(work):
+        def compile_one(name):
+            unity = work / f"{name}_unit.c"
+            unity.write_text("".join(f'#include "{name}{part}.c"\n' for part in ("", "_solvers", "_taylor")))
+            obj = work / f"{name}.o"
+            r = subprocess.run([cc, *flags, "-I", str(GENERATED / "c"), "-c", str(unity), "-o", str(obj)],
+                               capture_output=True, text=True)
+            return name, r, obj
 
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        for name, r, obj in pool.map(compile_one, ["heavy_top_reduced", "rigid_body"]):
-            assert r.returncode == 0, f"{name}:\n{r.stderr}"
-            symbols = subprocess.run(["nm", str(obj)], capture_output=True, text=True).stdout
-            assert f"{name}_taylor_lanes" in symbols  # (the lanes were compiled)
+        with ThreadPoolExecutor(max_workers=2) as pool:
+            for name, r, obj in pool.map(compile_one, names):
+                assert r.returncode == 0, f"{name}:\n{r.stderr}"
+                symbols = subprocess.run(["nm", str(obj)], capture_output=True, text=True).stdout
+                (work / f"{name}.symbols").write_text(symbols)
+                obj.unlink()
+
+    done = compile_once.once(["lanes", *flags, *names], compile_once.files_in(GENERATED / "c"), build, cc)
+    for name in names:
+        assert f"{name}_taylor_lanes" in (done / f"{name}.symbols").read_text()  # (the lanes were compiled)
 
 
 @pytest.mark.slow
-def test_every_generated_c_file_compiles_cleanly_at_O2(tmp_path):
+def test_every_generated_c_file_compiles_cleanly_at_O2():
     """Every generated C file, strict, at -O2 (~25 s of compiling)."""
-    _compile_strictly(tmp_path, sorted((GENERATED / "c").glob("*.c")), ["-O2"])
+    _compile_strictly(sorted((GENERATED / "c").glob("*.c")), ["-O2"])
 
 
 def test_generated_dir_is_what_generate_writes(generated_files):

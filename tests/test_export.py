@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from derive.cli import main
+from tests.compile_once import make_once, once
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ROOT / "scenes"
@@ -43,7 +44,7 @@ def _scene(tmp_path: Path, name: str) -> Path:
 
 
 def _build_and_run(folder: Path) -> dict:
-    build = subprocess.run(["make", "-s", "-C", str(folder), STRICT], capture_output=True, text=True)
+    build = make_once(folder, STRICT)
     assert build.returncode == 0, build.stderr
     for made in ("example", f"lib{json.loads(_only(folder, '.json').read_text())['name']}.a"):
         assert (folder / made).is_file()
@@ -309,10 +310,15 @@ def test_fmu_sources_compile_under_strict_warnings(top_fmu, tmp_path):
         zf.extractall(tmp_path)
     src = tmp_path / "sources"
     cc = os.environ.get("CC", "cc").split()
-    proc = subprocess.run([*cc, "-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic",
-                           "-fPIC", "-shared", "-o", str(tmp_path / "strict.so"), "fmu.c", "-lm"],
-                          cwd=src, capture_output=True, text=True)
-    assert proc.returncode == 0, proc.stderr
+    flags = ["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror", "-pedantic", "-fPIC", "-shared"]
+
+    def build(work):
+        proc = subprocess.run([*cc, *flags, "-o", str(work / "strict.so"), "fmu.c", "-lm"],
+                              cwd=src, capture_output=True, text=True)
+        assert proc.returncode == 0, proc.stderr
+
+    sources = {str(p.relative_to(src)): p.read_bytes() for p in sorted(src.rglob("*")) if p.is_file()}
+    assert (once(["fmu", *cc, *flags], sources, build, cc[0]) / "strict.so").is_file()
 
 
 @pytest.mark.slow

@@ -24,6 +24,7 @@ from derive.methods.registry import METHODS
 from derive.codegen.solvers import render_solvers
 from derive.methods.status import Status
 from derive.methods.tableaux import DOP853, RK4
+from tests.compile_once import once
 
 C_DIR = Path(__file__).parent / "c"
 MODELS = {"osc": 2, "free3": 3, "blowup": 1, "tank": 2}
@@ -66,6 +67,11 @@ def all_sources() -> dict[str, str]:
     return files
 
 
+def _compiles(files, main, flags):
+    """check_compiles, kept for these exact sources, flags and compiler (tests/compile_once.py)."""
+    once(["check", main, *flags], files, lambda work: check_compiles(files, main, flags))
+
+
 # --- the C itself ---------------------------------------------------------------------------
 
 def test_kernel_reads_dimensions_and_names_from_the_library(kernels):
@@ -81,7 +87,7 @@ def test_generated_solvers_compile_with_all_warnings_as_errors(opt):
     files = all_sources()
     # Two models in one translation unit: the shared derive_stats block must be guarded.
     files["both.c"] = "".join(f'#include "{n}.c"\n#include "{n}_solvers.c"\n' for n in MODELS)
-    check_compiles(files, "both.c", [*STRICT_FLAGS, opt])
+    _compiles(files, "both.c", [*STRICT_FLAGS, opt])
 
 
 @pytest.mark.parametrize("method", list(METHODS))
@@ -89,7 +95,7 @@ def test_each_method_alone_compiles_with_all_warnings_as_errors(method):
     files = model_sources("free3")
     files.update(render_solvers("free3", 3, [method]))
     files["one.c"] = '#include "free3.c"\n#include "free3_solvers.c"\n'
-    check_compiles(files, "one.c", [*STRICT_FLAGS, "-O1"])
+    _compiles(files, "one.c", [*STRICT_FLAGS, "-O1"])
 
 
 @pytest.mark.parametrize("method", list(METHODS))
@@ -99,8 +105,7 @@ def test_each_method_selected_from_the_full_file_compiles_with_all_warnings_as_e
     files = model_sources("free3")
     files.update(render_solvers("free3", 3))
     files["one.c"] = '#include "free3.c"\n#include "free3_solvers.c"\n'
-    check_compiles(files, "one.c", [*STRICT_FLAGS, "-O1", "-DDERIVE_SELECT",
-                                    f"-DDERIVE_WITH_{method.upper()}"])
+    _compiles(files, "one.c", [*STRICT_FLAGS, "-O1", "-DDERIVE_SELECT", f"-DDERIVE_WITH_{method.upper()}"])
 
 
 def test_rendered_header_declares_one_run_driver_per_method():
@@ -123,7 +128,9 @@ def test_sanitizer_run_of_every_solver_exits_cleanly(tmp_path):
     files = all_sources()
     files["solver_main.c"] = (C_DIR / "solver_main.c").read_text()
     try:
-        exe = check_compiles(files, "solver_main.c", SANITIZE_FLAGS, executable=tmp_path / "run")
+        exe = once(["sanitized", *SANITIZE_FLAGS], files,
+                   lambda work: check_compiles(files, "solver_main.c", SANITIZE_FLAGS,
+                                               executable=work / "run")) / "run"
     except CompilerError as exc:
         if "asan" in str(exc).lower() or "sanitize" in str(exc).lower():
             pytest.skip(f"no sanitizer runtime: {exc}")

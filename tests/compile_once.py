@@ -1,0 +1,99 @@
+"""Compiles the suite repeats with the same inputs, kept in the suite's compile cache.
+
+A compile is a function of its inputs: the bytes of every file it can read, its command line and
+the compiler (``<cc> --version``, and the machine for ``-march=native``). A compile that
+succeeded once for a key succeeds again for it, so a test that needs "these sources compile
+cleanly under these flags" (or the executable they make) runs the compiler the first time and
+reads the outcome from ``$DERIVE_CACHE/test-builds/<key>`` afterwards; any change to a source, a
+flag or the compiler is another key, compiled afresh. A failure is never kept. The folder lives
+in the suite's own cache (``.cache/derive-tests``), so a fresh checkout compiles everything.
+"""
+from __future__ import annotations
+
+import functools
+import hashlib
+import os
+import platform
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+from typing import Callable, Iterable
+
+from derive.runtime.cache import cache_dir
+
+CC = os.environ.get("CC", "cc")
+
+
+@functools.lru_cache(maxsize=None)
+def _identity(cc: str) -> str:
+    out = subprocess.run([cc, "--version"], capture_output=True, text=True, check=True).stdout
+    return out + "\n" + " ".join(platform.uname())
+
+
+def files_in(*folders: Path) -> dict[str, bytes]:
+    """Every file of ``folders`` (not recursive), by path: what an ``-I`` can reach."""
+    return {str(p): p.read_bytes() for folder in folders for p in sorted(Path(folder).iterdir())
+            if p.is_file()}
+
+
+def once(what: Iterable[str], inputs: dict[str, str | bytes], build: Callable[[Path], None],
+         cc: str = CC) -> Path:
+    """The folder holding what ``build(folder)`` made for this key (``what``: the command line
+    or anything else the outcome depends on; ``inputs``: name -> contents of every file the
+    compile reads); ``build`` runs only when no earlier success is kept, and must raise (or
+    fail an assertion) when the compile fails."""
+    h = hashlib.sha256(_identity(cc).encode())
+    for part in what:
+        h.update(b"\0a" + part.encode())
+    for name in sorted(inputs):
+        data = inputs[name]
+        h.update(b"\0n" + name.encode() + b"\0d" + (data.encode() if isinstance(data, str) else data))
+    root = cache_dir() / "test-builds"
+    done = root / h.hexdigest()[:32]
+    if (done / ".ok").is_file():
+        return done
+    root.mkdir(parents=True, exist_ok=True)
+    work = Path(tempfile.mkdtemp(prefix=".building-", dir=root))
+    try:
+        build(work)
+        (work / ".ok").write_text("compiled cleanly\n")
+        try:
+            os.rename(work, done)
+        except OSError:  # another worker kept the same outcome first
+            if not (done / ".ok").is_file():
+                raise
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    return done
+
+
+def make_once(folder: Path, *argv: str) -> subprocess.CompletedProcess:
+    """``make -s -C folder *argv`` for an exported folder, kept for its exact files, arguments and
+    compiler: the files the build adds to ``folder`` are kept, and copied back in (mode and all)
+    when the same folder is built again. The CompletedProcess of the build, or of a kept one
+    (return code 0, no output)."""
+    folder = Path(folder)
+    assert all(p.is_file() for p in folder.iterdir()), "a flat folder: every input is in the key"
+    before = files_in(folder)
+    result: list[subprocess.CompletedProcess] = []
+
+    def build(work):
+        proc = subprocess.run(["make", "-s", "-C", str(folder), *argv], capture_output=True, text=True)
+        result.append(proc)
+        if proc.returncode != 0:
+            raise subprocess.CalledProcessError(proc.returncode, proc.args, proc.stdout, proc.stderr)
+        for made in sorted(set(files_in(folder)) - set(before)):
+            shutil.copy2(made, work / Path(made).name)
+
+    try:
+        done = once(["make", *argv, os.environ.get("CFLAGS", "")],
+                    {Path(k).name: v for k, v in before.items()}, build)
+    except subprocess.CalledProcessError:
+        return result[0]
+    if result:
+        return result[0]
+    for made in done.iterdir():
+        if made.name != ".ok":
+            shutil.copy2(made, folder / made.name)
+    return subprocess.CompletedProcess(["make", "-s", "-C", str(folder), *argv], 0, "", "")
