@@ -13,7 +13,7 @@ on a planted error, with the correction where the single-edit search finds one:
 The planted-error set of tests/notes/rigid-body-vectors.md is made of the new kinds of edit: a
 sign (in a cross product: its operands swapped; or a + / − flipped), an index (r_pj → r_pi,
 i ↔ j), a missing ½ and a power. The lecture's notes (read through the repository's parent) are
-skipped with a reason when absent.
+skipped with a reason when absent (the ``lecture_claims`` fixture).
 """
 import re
 from pathlib import Path
@@ -25,8 +25,6 @@ from derive.lecture import vectors as vc
 
 HERE = Path(__file__).parent
 VECTORS = HERE / "notes" / "rigid-body-vectors.md"
-LECTURE = Path(__file__).resolve().parents[2] / "shared" / "notes" / "lecture26-rigid-body.md"
-needs_lecture = pytest.mark.skipif(not LECTURE.exists(), reason="the lecture's notes file is not next to the repository")
 FLAGGED = ("typo", "fails")
 
 
@@ -211,7 +209,6 @@ def test_every_vector_planted_error_caught():
 NOT_CLAIMS = {"text", "assumption", "expression", "law"}
 
 
-@needs_lecture
 def test_lecture_vector_displays_are_checked(lecture_claims):
     by_line = {}
     for c in lecture_claims:
@@ -222,7 +219,6 @@ def test_lecture_vector_displays_are_checked(lecture_claims):
     assert [c.verdict for c in torque_free] == ["holds"]
 
 
-@needs_lecture
 def test_lecture_unchecked_only_where_not_a_claim(lecture_claims):
     left = [(c.line, c.kind, c.why) for c in lecture_claims if c.verdict == "unchecked" and c.kind not in NOT_CLAIMS
             and not c.why.startswith("repeats")]

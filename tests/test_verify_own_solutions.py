@@ -16,7 +16,11 @@ NUTATION = (
 
 
 def verdict_at(text: str, start: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text) if c.latex.startswith(start)]
+    return verdicts_at(notes_check.check_text(text), start)
+
+
+def verdicts_at(claims, start: str) -> list:
+    return [c.verdict for c in claims if c.latex.startswith(start)]
 
 
 def test_jacobis_functions_have_their_derivatives_and_values():
@@ -36,8 +40,9 @@ def test_an_elliptic_solution_of_the_texts_own_equation_holds():
 def test_the_solution_written_for_the_angle_or_the_new_variable_holds():
     text = NUTATION + ("$$\\theta = \\arccos \\left[u_1+(u_2-u_1)\\mathrm{sn}\\,^2 \\left(\\frac{\\sqrt{a(u_3-u_1)}}{2}t"
                        "\\right)\\right]$$\n\n$$\\sin v = \\mathrm{sn}\\, \\left(\\frac{\\sqrt{a(u_3-u_1)}}{2}t\\right)$$\n")
-    assert verdict_at(text, "\\theta = \\arccos") == ["holds"]
-    assert verdict_at(text, "\\sin v") == ["holds"]
+    claims = notes_check.check_text(text)  # one reading of the text for both displays
+    assert verdicts_at(claims, "\\theta = \\arccos") == ["holds"]
+    assert verdicts_at(claims, "\\sin v") == ["holds"]
 
 
 def test_a_solution_with_the_wrong_rate_is_not_taken_as_holding():

@@ -8,6 +8,8 @@ May import: SymPy, mpmath (the caller passes the class of the text's symbols).
 """
 from __future__ import annotations
 
+import functools
+
 import mpmath
 import sympy as sp
 from sympy.core.function import ArgumentIndexError
@@ -23,12 +25,7 @@ class _Jacobi(sp.Function):
     kind_name = ""
 
     def _eval_evalf(self, prec):
-        x, m = (sp.sympify(a).evalf(prec) for a in self.args)
-        if not (x.is_number and m.is_number):
-            return None
-        with mpmath.workprec(prec):
-            value = mpmath.ellipfun(self.kind_name, x._to_mpmath(prec), m=m._to_mpmath(prec))
-        return sp.Expr._from_mpmath(value, prec)
+        return _value(self.kind_name, self.args, prec)
 
     def _mpmathcode(self, printer):
         """For lambdify with mpmath (the reader's numeric zero test)."""
@@ -64,6 +61,18 @@ class JacobiDN(_Jacobi):
             raise ArgumentIndexError(self, argindex)
         x, m = self.args
         return -m * JacobiSN(x, m) * JacobiCN(x, m)
+
+
+@functools.lru_cache(maxsize=4096)
+def _value(kind_name: str, args: tuple, prec: int):
+    """sn, cn or dn at numeric arguments to ``prec`` bits (None when an argument is not a number):
+    kept, since SymPy's evalf asks again for the same value as it raises its working precision."""
+    x, m = (sp.sympify(a).evalf(prec) for a in args)
+    if not (x.is_number and m.is_number):
+        return None
+    with mpmath.workprec(prec):
+        value = mpmath.ellipfun(kind_name, x._to_mpmath(prec), m=m._to_mpmath(prec))
+    return sp.Expr._from_mpmath(value, prec)
 
 
 def _with_modulus(cls, generic):
