@@ -266,11 +266,25 @@ def check_contract(content: bytes, runner=run_in_process, flags=()) -> tuple[int
         shutil.rmtree(folder, ignore_errors=True)
 
 
-@settings(max_examples=250, deadline=None,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
-@given(malformed_scenes())
-def test_fuzzed_scenes_keep_the_contract(content):
+#: ``make test`` draws a sample of each fuzz; its ``slow`` twin (``make test-slow``) the long run.
+QUICK, LONG = 0.25, 1.0
+
+
+def _fuzz(max_examples: int, share: float, *strategies, health=(HealthCheck.too_slow,)):
+    """``given(*strategies)`` with ``share`` of ``max_examples`` drawn and no deadline."""
+    return lambda f: settings(max_examples=max(1, round(max_examples * share)), deadline=None,
+                              suppress_health_check=list(health))(given(*strategies)(f))
+
+
+def _fuzzed_scenes_keep_the_contract(content):
     check_contract(content)
+
+
+SCENE_HEALTH = (HealthCheck.too_slow, HealthCheck.data_too_large)
+test_fuzzed_scenes_keep_the_contract = _fuzz(
+    250, QUICK, malformed_scenes(), health=SCENE_HEALTH)(_fuzzed_scenes_keep_the_contract)
+test_fuzzed_scenes_keep_the_contract_at_length = pytest.mark.slow(_fuzz(
+    250, LONG, malformed_scenes(), health=SCENE_HEALTH)(_fuzzed_scenes_keep_the_contract))
 
 
 number_texts = st.one_of(
@@ -297,13 +311,17 @@ def flag_lists(draw):
     return out
 
 
-@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.sampled_from(BASES), flag_lists())
-def test_fuzzed_flags_keep_the_contract(base, flags):
+def _fuzzed_flags_keep_the_contract(base, flags):
     """Command-line overrides go through the same checks, named `simulate.<key>`."""
     rc, err = check_contract(to_toml(base).encode(), flags=flags)
     if rc == 2 and "argument" not in err:
         assert "simulate." in err or "file:" in err, err
+
+
+test_fuzzed_flags_keep_the_contract = _fuzz(
+    100, QUICK, st.sampled_from(BASES), flag_lists())(_fuzzed_flags_keep_the_contract)
+test_fuzzed_flags_keep_the_contract_at_length = pytest.mark.slow(_fuzz(
+    100, LONG, st.sampled_from(BASES), flag_lists())(_fuzzed_flags_keep_the_contract))
 
 
 # Values only a Python caller can pass (a dict shaped like the TOML, not a file).
@@ -324,9 +342,7 @@ def python_mutation(draw):
     return op
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(st.sampled_from(BASES), st.lists(python_mutation(), min_size=1, max_size=3))
-def test_fuzzed_dicts_through_the_api(base, ops):
+def _fuzzed_dicts_through_the_api(base, ops):
     """The Python API on a dict: a result with finite arrays, or SceneError / IntegrationError
     with a one-line message; nothing else escapes, and no warning."""
     import warnings
@@ -347,6 +363,12 @@ def test_fuzzed_dicts_through_the_api(base, ops):
                 if isinstance(a, np.ndarray) and a.dtype.kind in "fc":
                     assert np.all(np.isfinite(a)), name
     assert [str(w.message) for w in seen if issubclass(w.category, RuntimeWarning)] == []
+
+
+DICT_FUZZ = (st.sampled_from(BASES), st.lists(python_mutation(), min_size=1, max_size=3))
+test_fuzzed_dicts_through_the_api = _fuzz(150, QUICK, *DICT_FUZZ)(_fuzzed_dicts_through_the_api)
+test_fuzzed_dicts_through_the_api_at_length = pytest.mark.slow(
+    _fuzz(150, LONG, *DICT_FUZZ)(_fuzzed_dicts_through_the_api))
 
 
 def test_the_bases_are_valid_and_cheap():

@@ -32,6 +32,7 @@ import derive
 import derive.cli
 from derive.sweeps import cluster as sweeps
 from derive.sweeps import local
+from cli_in_process import derive_main
 
 psutil = pytest.importorskip("psutil")
 linux = pytest.mark.skipif(sys.platform != "linux", reason="fork and PR_SET_PDEATHSIG")
@@ -448,9 +449,7 @@ def test_a_listener_that_hangs_up_is_refused(listener, reference):
 def test_cli_unreachable_scheduler_is_exit_3_one_line(tmp_path):
     sweep, out = _files(tmp_path, n=4), tmp_path / "r.parquet"
     port = _closed_port()
-    p = subprocess.run([sys.executable, "-m", "derive", "sweep", str(sweep), "-o", str(out),
-                        "--scheduler", f"127.0.0.1:{port}", "--scheduler-timeout", "2"],
-                       capture_output=True, text=True, timeout=60)
+    p = derive_main("sweep", sweep, "-o", out, "--scheduler", f"127.0.0.1:{port}", "--scheduler-timeout", "2")
     assert p.returncode == 3, p.stderr
     assert _one_line(p.stderr) == (f"error: {sweep}: scheduler tcp://127.0.0.1:{port}: "
                                    "connection refused (nothing listens there)")

@@ -16,6 +16,7 @@
 """
 from __future__ import annotations
 
+import functools
 import json
 import math
 
@@ -35,6 +36,9 @@ SPIN, N0, THETA0, RATIO = sp.symbols("omega3 n0 theta0 alpha", real=True)
 STEM_RADIUS, STEM_OFFSET = sp.symbols("r2 s2", real=True)
 
 
+# The Routhian's simplification is the costly step and its result depends on the shape alone:
+# each shape's is derived once per process (every contact scene of that shape asks for it).
+@functools.lru_cache(maxsize=None)
 def reduced_potential(shape: str) -> sp.Expr:
     """V_eff(β) of the body on a frictionless plane with its centre of mass on a vertical line:
     Routh's reduction of L = ½ M ż² + T_rot − M g z(β), z(β) the height constraint, with
@@ -47,6 +51,7 @@ def reduced_potential(shape: str) -> sp.Expr:
     return sp.simplify(-routhian)
 
 
+@functools.lru_cache(maxsize=None)
 def sleeping_condition(shape: str) -> sp.Expr:
     """The upright spin's stability on a frictionless plane, as ``expr > 0`` (ω₃ the spin):
     8 I₁ times the β² coefficient of V_eff at p_α = p_γ = I₃ ω₃."""
