@@ -127,7 +127,7 @@ def _routh():
     d2V_rate = sp.factor(trig_reduce(sp.together(d2V.subs(p_alpha, pa))))
     args = (I1, Mass, g, l, p_gamma, beta)
     # Two backends of the same expressions: doubles, and mpmath (an unbounded exponent) for the
-    # scenes whose products of doubles overflow (I₁ = 1e300, p_γ = 1e200: tests of issue 22).
+    # scenes whose products of doubles overflow (I₁ = 1e300, p_γ = 1e200, which the tests run).
     numeric = {backend: {
         "coefficients": sp.lambdify(args, sp.Poly(quad, alpha_d).all_coeffs(), backend),
         "discriminant": sp.lambdify(args, disc, backend),
