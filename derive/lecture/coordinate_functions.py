@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from derive.lecture.operator_notation import NotHandled
+from derive.lecture.operator_notation import NotHandled, group
 
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "vartheta", "iota", "kappa",
           "lambda", "mu", "nu", "xi", "rho", "sigma", "tau", "phi", "varphi", "chi", "psi", "omega", "Gamma",
@@ -65,25 +65,6 @@ class Atom:
     dots: int = 0
 
 
-def _group(s: str, i: int) -> tuple[str, int]:
-    while i < len(s) and s[i] == " ":
-        i += 1
-    if i >= len(s):
-        raise NotHandled("a group is missing")
-    if s[i] == "{":
-        depth = 0
-        for j in range(i, len(s)):
-            if s[j] == "{" and s[j - 1] != "\\":
-                depth += 1
-            elif s[j] == "}" and s[j - 1] != "\\":
-                depth -= 1
-                if depth == 0:
-                    return s[i + 1:j], j + 1
-        raise NotHandled("unbalanced braces")
-    m = re.match(r"\\[A-Za-z]+|.", s[i:])
-    return m.group(0), i + m.end()
-
-
 def _sub(s: str) -> str:
     s = re.sub(r"\\(mathrm|text|rm)\s*", "", s)
     s = re.sub(r"\\([A-Za-z]+)", r"\1", s).replace("{", "").replace("}", "").replace(" ", "")
@@ -95,7 +76,7 @@ def _sub(s: str) -> str:
 def _atom(s: str, i: int) -> tuple[Atom, int]:
     m = re.match(r"\\(dot|ddot)\s*", s[i:])
     if m:
-        inner, j = _group(s, i + m.end())
+        inner, j = group(s, i + m.end())
         atom, k = _atom(inner.strip(), 0)
         if inner.strip()[k:].strip():
             raise NotHandled("a dot over more than a symbol")
@@ -107,7 +88,7 @@ def _atom(s: str, i: int) -> tuple[Atom, int]:
         elif i < len(s) and s[i].isascii() and s[i].isalpha():
             atom, j = Atom(s[i]), i + 1
         elif i < len(s) and s[i] == "{":
-            inner, j = _group(s, i)
+            inner, j = group(s, i)
             atom, k = _atom(inner.strip(), 0)
             if inner.strip()[k:].strip():
                 raise NotHandled("a group that is not one symbol")
@@ -121,7 +102,7 @@ def _atom(s: str, i: int) -> tuple[Atom, int]:
         if k < len(s) and s[k] == "'":
             atom.primes, j = atom.primes + 1, k + 1
         elif k < len(s) and s[k] == "_" and not subbed:
-            sub, j = _group(s, k + 1)
+            sub, j = group(s, k + 1)
             atom.name, subbed = atom.name + "_" + _sub(sub), True
         else:
             break
@@ -157,7 +138,7 @@ def tokens(s: str) -> list:
                 if not bar:
                     i += m.end()
                     continue
-                sub, j = _group(s, i + bar.end())
+                sub, j = group(s, i + bar.end())
                 out.append(("at", sub))
                 i = j
                 continue

@@ -58,7 +58,7 @@ from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
-from derive.lecture.text_motion import TextMotion
+from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
@@ -546,10 +546,8 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
 
 
 def _first_relation(text: str) -> int | None:
-    try:
-        toks = lx.scan(text)
-    except lx.NotRead:
-        return None
+    spans = top_relations(text)
+    return spans[0][0] if spans else None
     depth = 0
     for tok in toks:
         if tok.kind == "op" and tok.value in "({":

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from derive.lecture import motion_jets as mj
+from derive.lecture import vocabulary
 
 
 class NotHandled(Exception):
@@ -59,25 +60,12 @@ class Tok:
     roman: bool = False
 
 
-def _group(s: str, i: int) -> tuple[str, int]:
-    while i < len(s) and s[i] == " ":
-        i += 1
-    if i >= len(s):
-        raise NotHandled("a group is missing")
-    if s[i] == "{":
-        depth = 0
-        for j in range(i, len(s)):
-            if s[j] == "\\":
-                continue
-            if s[j] == "{" and (j == 0 or s[j - 1] != "\\"):
-                depth += 1
-            elif s[j] == "}" and s[j - 1] != "\\":
-                depth -= 1
-                if depth == 0:
-                    return s[i + 1:j], j + 1
-        raise NotHandled("unbalanced braces")
-    m = re.match(r"\\[A-Za-z]+|\\.|.", s[i:])
-    return m.group(0), i + m.end()
+def group(s: str, i: int) -> tuple[str, int]:
+    """The vocabulary's braced group or single token at s[i], unread as :class:`NotHandled`."""
+    try:
+        return vocabulary.group(s, i)
+    except vocabulary.NotRead as exc:
+        raise NotHandled(str(exc)) from None
 
 
 def _plain(s: str) -> str:
@@ -89,9 +77,9 @@ def _atom(s: str, i: int) -> tuple[Tok, int]:
     """One symbol at s[i] with its decorations, scripts and primes."""
     m = re.match(r"\\([A-Za-z]+)", s[i:])
     if m and m.group(1) in _BOLD + ("mathrm", "dot", "ddot"):
-        inner, j = _group(s, i + m.end())
+        inner, j = group(s, i + m.end())
         inner = inner.strip()
-        while inner.startswith("{") and inner.endswith("}") and _group(inner, 0)[1] == len(inner):
+        while inner.startswith("{") and inner.endswith("}") and group(inner, 0)[1] == len(inner):
             inner = inner[1:-1].strip()
         tok, k = _atom(inner, 0)
         if inner[k:].strip():
@@ -107,7 +95,7 @@ def _atom(s: str, i: int) -> tuple[Tok, int]:
     elif i < len(s) and s[i].isascii() and s[i].isalpha():
         tok, j = Tok("atom", s[i]), i + 1
     elif i < len(s) and s[i] == "{":
-        inner, j = _group(s, i)
+        inner, j = group(s, i)
         tok, k = _atom(inner.strip(), 0)
         if inner.strip()[k:].strip():
             raise NotHandled("a group that is not one symbol")
@@ -120,10 +108,10 @@ def _atom(s: str, i: int) -> tuple[Tok, int]:
         if k < len(s) and s[k] == "'":
             tok.primes, j = tok.primes + 1, k + 1
         elif k < len(s) and s[k] == "_" and not tok.sub:
-            sub, j = _group(s, k + 1)
+            sub, j = group(s, k + 1)
             tok.sub = _plain(sub)
         elif k < len(s) and s[k] == "^" and not tok.sup:
-            sup, after = _group(s, k + 1)
+            sup, after = group(s, k + 1)
             plain = _plain(sup)
             if re.fullmatch(r"[a-c]", plain):
                 tok.sup, j = plain, after            # a component's axis label (ω^a)
@@ -169,7 +157,7 @@ def tokens(s: str) -> list[Tok]:
                 i += m.end()
                 continue
             if name in ("begin", "end"):
-                env, j = _group(s, i + m.end())
+                env, j = group(s, i + m.end())
                 if env.strip() not in ("pmatrix", "bmatrix", "matrix"):
                     raise NotHandled(f"environment {env}")
                 out.append(Tok("env", name))

@@ -34,7 +34,7 @@ from derive.lecture import latex as lx
 _BOUNDS = ("<", ">", "≤", "≥")
 
 
-def _top_relations(piece: str) -> list:
+def top_relations(piece: str) -> list:
     """(start, end) of each relation outside brackets in a statement's LaTeX."""
     out, depth = [], 0
     try:
@@ -175,7 +175,7 @@ class TextMotion:
         the value. Two claims: the equality (as `_function_of_the_text` takes it) and the bound,
         decided by the orderings the text states or left ``unchecked``. False (nothing said) when
         the equality is not the text's function put in."""
-        cuts = _top_relations(piece)
+        cuts = top_relations(piece)
         if len(cuts) != len(parsed.relations):
             return False
         equality, bound = piece[:cuts[1][0]].strip(), piece[cuts[0][1]:].strip()

@@ -168,7 +168,7 @@ class Tok:
 _CMD = re.compile(r"\\([A-Za-z]+|.)")
 
 
-def _group(s: str, i: int) -> tuple[str, int]:
+def group(s: str, i: int) -> tuple[str, int]:
     """The braced group starting at s[i] == '{' (content, index after it); a single token otherwise."""
     while i < len(s) and s[i] == " ":
         i += 1
@@ -206,7 +206,7 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
     m = _CMD.match(s, i)
     if m and m.group(1) in DECORATIONS:
         kind = DECORATIONS[m.group(1)]
-        inner, j = _group(s, m.end())
+        inner, j = group(s, m.end())
         if kind == "roman" and re.fullmatch(r"[A-Za-z]+", inner.strip()) and len(inner.strip()) > 1:
             atom = Atom(inner.strip())
         else:
@@ -237,12 +237,12 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
         while k < len(s) and s[k] == " ":
             k += 1
         if k < len(s) and s[k] == "_":
-            sub, j = _group(s, k + 1)
+            sub, j = group(s, k + 1)
             atom = atom.with_(sub=atom.sub + _plain(sub))
         elif k < len(s) and s[k] == "'":
             atom, j = atom.with_(primes=atom.primes + 1), k + 1
         elif k < len(s) and s[k] == "^":
-            sup, after = _group(s, k + 1)
+            sup, after = group(s, k + 1)
             plain = _plain(sup)
             if plain and set(plain) == {"'"}:
                 atom, j = atom.with_(primes=atom.primes + len(plain)), after
@@ -313,7 +313,7 @@ def scan(s: str) -> list[Tok]:
             if name in ("text", "mbox", "textrm", "textbf", "textit", "hbox"):
                 raise Words("words, not a formula", i + 1)
             if name in ("begin", "end"):
-                env, j = _group(s, m.end())
+                env, j = group(s, m.end())
                 toks.append(Tok(name, env.strip(), i))
                 if name == "begin" and env.strip() in ("array", "alignat", "alignat*"):
                     spec = re.match(r"\s*\{[^{}]*\}", s[j:])      # its column layout {ccc} or {2}
