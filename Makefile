@@ -22,9 +22,10 @@ verify: $(STAMP)
 
 # One test process per core (pytest-xdist): the suite is many independent compiles and runs;
 # an idle process takes tests queued for the other (worksteal), so the last few long tests do
-# not leave a core waiting.
+# not leave a core waiting. Bytecode caches are kept even where the environment turns them off:
+# the suite starts many Python processes, and each would compile the package and its tests again.
 test: $(STAMP)
-	@$(PY) -m pytest -q -n auto --dist worksteal
+	@PYTHONDONTWRITEBYTECODE= $(PY) -m pytest -q -n auto --dist worksteal
 
 test-slow: $(STAMP)
 	@$(PY) -m pytest -q -m slow
