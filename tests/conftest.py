@@ -16,7 +16,6 @@
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
 import fcntl
-import functools
 import hashlib
 import json
 import os
@@ -32,8 +31,7 @@ from hypothesis import settings
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
-from derive.lecture import notes_check as nc  # noqa: E402
-from derive.runtime.cache import derivation_fingerprint  # noqa: E402
+import kept_readings  # noqa: E402
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
@@ -60,61 +58,15 @@ def once_per_run(tmp_path_factory, name: str, compute):
         return value
 
 
-#: Readings of whole notes files kept between runs: ``<DERIVE_CACHE>/notes-readings/<source key>/``,
-#: the ``KEEP_READINGS`` most recently used source keys.
-READINGS, KEEP_READINGS = "notes-readings", 3
-
-
-@functools.cache
-def _source_key() -> str:
-    """What a reading depends on besides its file: derive's source, the interpreter, the installed
-    libraries and SymPy's settings (:func:`derive.runtime.cache.derivation_fingerprint`)."""
-    return derivation_fingerprint([Path(__file__).resolve().parents[1] / "derive"])[:32]
-
-
-def _prune_readings(root: Path) -> None:
-    """Remove all but the :data:`KEEP_READINGS` most recently used folders of readings."""
-    folders = sorted(((f.stat().st_mtime, f) for f in root.iterdir() if f.is_dir()), reverse=True)
-    for _, old in folders[KEEP_READINGS:]:
-        for kept in old.iterdir():
-            kept.unlink(missing_ok=True)
-        old.rmdir()
-
-
-def _kept_reading(path: Path, convention) -> list:
-    """``check_notes(path, convention)`` from the suite's cache, else read and kept there; the
-    cache's name for it holds everything the claims depend on (the path, the file's bytes, the
-    convention asked for, :func:`_source_key`), so a change to any of them reads the file again."""
-    name = hashlib.sha256(repr((str(path), path.read_bytes(), convention)).encode()).hexdigest()[:32]
-    folder = Path(os.environ["DERIVE_CACHE"]) / READINGS / _source_key()
-    kept = folder / f"{name}.pickle"
-    try:
-        claims = pickle.loads(kept.read_bytes())
-        os.utime(folder)
-        return claims
-    except (OSError, EOFError, pickle.UnpicklingError):
-        pass  # not kept yet (or damaged): read
-    claims = nc.check_notes(path, convention)
-    try:  # keeping it is a saving for the next run, never a reason for this one to fail
-        folder.mkdir(parents=True, exist_ok=True)
-        part = kept.with_suffix(f".{os.getpid()}.part")
-        part.write_bytes(pickle.dumps(claims))
-        part.replace(kept)
-        _prune_readings(folder.parent)
-    except OSError:
-        pass
-    return claims
-
-
 @pytest.fixture(scope="session")
 def notes_reading(tmp_path_factory):
     """``notes_reading(path, convention=None)``: the claims of ``check_notes`` on a whole notes
-    file, read once per test run (:func:`once_per_run`) and kept between runs (:func:`_kept_reading`),
-    for the texts several tests, or every run, read unchanged (the corpus, the lecture)."""
+    file, read once per test run (:func:`once_per_run`) and kept between runs (tests/kept_readings.py),
+    for the texts several tests read (the corpus, the lecture)."""
     def reading(path, convention=None):
         path = Path(path)
         key = hashlib.sha256(repr((str(path), convention)).encode()).hexdigest()[:16]
-        return once_per_run(tmp_path_factory, f"reading-{key}", lambda: _kept_reading(path, convention))
+        return once_per_run(tmp_path_factory, f"reading-{key}", lambda: kept_readings.check_notes(path, convention))
     return reading
 
 
