@@ -31,8 +31,6 @@ from hypothesis import settings
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
-import kept_readings  # noqa: E402
-
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
@@ -63,6 +61,8 @@ def notes_reading(tmp_path_factory):
     """``notes_reading(path, convention=None)``: the claims of ``check_notes`` on a whole notes
     file, read once per test run (:func:`once_per_run`) and kept between runs (tests/kept_readings.py),
     for the texts several tests read (the corpus, the lecture)."""
+    import kept_readings  # the reader (and SymPy) load in the processes that read, never in xdist's controller
+
     def reading(path, convention=None):
         path = Path(path)
         key = hashlib.sha256(repr((str(path), convention)).encode()).hexdigest()[:16]
