@@ -16,6 +16,7 @@
   A bug found this way is fixed in the code and pinned by a plain test (not by a stored seed).
 """
 import fcntl
+import hashlib
 import json
 import os
 import pickle
@@ -29,8 +30,6 @@ from hypothesis import settings
 # The suite compiles into a cache of its own inside the checkout (kept between runs, ignored by
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
-
-from derive.lecture import notes_check as nc  # noqa: E402
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
@@ -58,6 +57,20 @@ def once_per_run(tmp_path_factory, name: str, compute):
 
 
 @pytest.fixture(scope="session")
+def notes_reading(tmp_path_factory):
+    """``notes_reading(path, convention=None)``: the claims of ``check_notes`` on a whole notes
+    file, read once per test run (:func:`once_per_run`) and kept between runs (tests/kept_readings.py),
+    for the texts several tests read (the corpus, the lecture)."""
+    import kept_readings  # the reader (and SymPy) load in the processes that read, never in xdist's controller
+
+    def reading(path, convention=None):
+        path = Path(path)
+        key = hashlib.sha256(repr((str(path), convention)).encode()).hexdigest()[:16]
+        return once_per_run(tmp_path_factory, f"reading-{key}", lambda: kept_readings.check_notes(path, convention))
+    return reading
+
+
+@pytest.fixture(scope="session")
 def once(tmp_path_factory):
     """``once(name, compute)``: :func:`once_per_run` for a test's own costly result (a path into
     the run's temporary folder is shared as well as a value)."""
@@ -71,12 +84,12 @@ LECTURE_NOTES = Path(os.environ.get("DERIVE_NOTES")
 
 
 @pytest.fixture(scope="session")
-def lecture_claims(tmp_path_factory):
-    """The lecture's notes read and checked once per test run (``check_notes``), shared by the
-    files that test the reader on them."""
+def lecture_claims(notes_reading):
+    """The lecture's notes read and checked once per test run (``check_notes``, kept between runs
+    by :func:`notes_reading`), shared by the files that test the reader on them."""
     if not LECTURE_NOTES.is_file():
         pytest.skip(f"the lecture's notes file is not at {LECTURE_NOTES} (set DERIVE_NOTES)")
-    return once_per_run(tmp_path_factory, "lecture-claims", lambda: nc.check_notes(LECTURE_NOTES))
+    return notes_reading(LECTURE_NOTES)
 
 
 def _generate_in_a_fresh_process() -> dict[str, str]:

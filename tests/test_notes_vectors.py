@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 from derive.lecture import vectors as vc
 
 HERE = Path(__file__).parent
@@ -29,11 +29,11 @@ FLAGGED = ("typo", "fails")
 
 
 def verdicts(text):
-    return [(c.kind, c.verdict) for c in nc.check_text(text)]
+    return [(c.kind, c.verdict) for c in kept.check_text(text)]
 
 
 def one(text):
-    claims = nc.check_text(text)
+    claims = kept.check_text(text)
     assert len(claims) == 1, [(c.latex, c.verdict, c.why) for c in claims]
     return claims[0]
 
@@ -109,7 +109,7 @@ def test_transport_theorem():
     wrong = one(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} - \boldsymbol{\omega} \times \mathbf{L}")
     assert wrong.verdict == "typo" and r"\left(\frac{d\mathbf{L}}{dt}\right)_{body}" in wrong.correction
     assert one(FRAME % wrong.correction).verdict == "holds"
-    law = nc.check_text(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} + \boldsymbol{\omega} \times \mathbf{L} = \boldsymbol{\tau}")
+    law = kept.check_text(FRAME % r"\frac{d\mathbf{L}}{dt} = \left(\frac{d\mathbf{L}}{dt}\right)_{body} + \boldsymbol{\omega} \times \mathbf{L} = \boldsymbol{\tau}")
     assert [(c.kind, c.verdict) for c in law] == [("kinematics", "holds"), ("law", "unchecked")]
 
 
@@ -120,12 +120,12 @@ EULER = ("# Torque-free\n\nFor $\\tau = 0$ we solve\n\n$$\\frac{d\\mathbf{L}}{dt
 
 
 def test_torque_free_vector_equation_component_wise():
-    right = nc.check_text(EULER % "I_2 - I_1")
+    right = kept.check_text(EULER % "I_2 - I_1")
     assert right[0].kind == "equation of motion" and right[0].verdict == "holds" and "Euler's equation" in right[0].why
     assert all(c.verdict == "holds" for c in right)
-    wrong = nc.check_text(EULER % "I_1 - I_2")
+    wrong = kept.check_text(EULER % "I_1 - I_2")
     assert wrong[0].verdict == "fails" and "component 3" in wrong[0].why
-    unstated = nc.check_text((EULER % "I_2 - I_1").replace("For $\\tau = 0$ we solve", "We solve"))
+    unstated = kept.check_text((EULER % "I_2 - I_1").replace("For $\\tau = 0$ we solve", "We solve"))
     assert unstated[0].verdict == "unchecked" and "τ = 0" in unstated[0].why
 
 
@@ -133,7 +133,7 @@ def test_continuation_lines_take_the_left_side():
     text = ("# T\n\n$$T = \\sum_{p} \\frac{1}{2} m_p \\mathbf{v}_p \\cdot \\mathbf{v}_p$$\n\n"
             "$$= \\frac{1}{2} \\boldsymbol{\\omega} \\cdot \\ddot{\\mathbf{I}} \\cdot \\boldsymbol{\\omega}$$\n\n"
             "$$= \\boldsymbol{\\omega} \\cdot \\ddot{\\mathbf{I}} \\cdot \\boldsymbol{\\omega}$$\n")
-    claims = nc.check_text(text)
+    claims = kept.check_text(text)
     assert [(c.line, c.verdict) for c in claims] == [(3, "holds"), (5, "holds"), (7, "typo")]
     assert claims[2].correction.startswith(r"T = \frac{1}{2}")
 
@@ -146,7 +146,7 @@ def test_user_text_is_never_evaluated():
 
 # ---- our own notes in vectors: all hold, planted errors caught ------------------------------------
 def test_vector_notes_every_display_holds():
-    claims = nc.check_notes(VECTORS)
+    claims = kept.check_notes(VECTORS)
     lines = VECTORS.read_text(encoding="utf-8").split("\n")
     displays = {k + 1 for k, line in enumerate(lines) if line.startswith("$$")}
     assert [c for c in claims if c.verdict != "holds"] == []
@@ -181,7 +181,7 @@ def vector_plants():
 def _caught(plants):
     caught, spilled = 0, []
     for line, kind, text in plants:
-        claims = nc.check_text(text, path="planted.md")
+        claims = kept.check_text(text, path="planted.md")
         caught += any(c.verdict in FLAGGED for c in claims if c.line == line)
         spilled += [(line, kind, c.line) for c in claims if c.verdict in FLAGGED and c.line != line]
     return caught / len(plants), spilled

@@ -1,6 +1,6 @@
 """The prose choosing the fixed z axis along the angular momentum (derive/lecture/notes.py, the
 checker's orientation): a free symmetric top's rates in M_z hold in that frame, for that section."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 FREE_TOP = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n"
             "## Free symmetric top\n\nFree symmetric top ($I_1 = I_2$, no torque); $\\mathbf{M}$ is the angular momentum. "
@@ -8,7 +8,7 @@ FREE_TOP = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n"
 
 
 def verdicts(text: str, start: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text) if c.latex.startswith(start)]
+    return [c.verdict for c in kept.check_text(text) if c.latex.startswith(start)]
 
 
 def test_a_rate_in_the_frame_the_prose_chooses_holds():

@@ -5,7 +5,7 @@ motion the text describes."""
 import pytest
 import sympy as sp
 
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 from derive.lecture import source
 from derive.symbolic import rotations as rot
 
@@ -15,7 +15,7 @@ ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n
 
 def by_line(text):
     out = {}
-    for c in nc.check_text(text):
+    for c in kept.check_text(text):
         out.setdefault(c.line, []).append(c)
     return out
 

@@ -1,14 +1,14 @@
 """A one-coordinate system in the text's own names — its Lagrangian L(θ, θ̇), functions of θ it
 defines (``f(\\theta)``, ``x_C = …``), primes for their derivatives, unknown functions, values at
 θ₀ — read by `derive.lecture.coordinate_functions` (checks in `coordinate_statements`)."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 HEAD = "---\ntitle: a rolling body\n---\n# A body rolling through an angle\n\nA body of mass $m$ and radius $R$ rolls; its centre of mass is at distance $a$ from the centre.\n\n"
 
 
 def _verdicts(*displays):
     text = HEAD + "".join(f"\n$$\n{d}\n$$\n" for d in displays)
-    return [(c.line, c.verdict, c.why) for c in notes_check.check_text(text)]
+    return [(c.line, c.verdict, c.why) for c in kept.check_text(text)]
 
 
 def _last(*displays):
@@ -66,17 +66,17 @@ def test_the_coordinate_set_to_a_value_is_no_claim_of_this_reading():
 
 
 def test_a_text_without_its_own_lagrangian_is_read_as_before():
-    claims = notes_check.check_text(HEAD + "\n$$\nx_{C} = a\\sin\\theta - \\theta R\n$$\n\n$$\nx_{C}'(\\theta) = 0\n$$\n")
+    claims = kept.check_text(HEAD + "\n$$\nx_{C} = a\\sin\\theta - \\theta R\n$$\n\n$$\nx_{C}'(\\theta) = 0\n$$\n")
     assert all(c.verdict == "unchecked" for c in claims)
 
 
 def test_an_inline_formula_broken_across_a_line_is_read():
     text = HEAD + "The moment about the contact point is $I_{P}(\\theta) =\n2mR(R-a\\cos\\theta)$ here.\n\n" + \
         f"$$\n{LAGRANGIAN}\n$$\n\n$$\nI_{{P}}'(\\theta) = 2maR\\sin\\theta\n$$\n"
-    assert notes_check.check_text(text)[-1].verdict == "holds"
+    assert kept.check_text(text)[-1].verdict == "holds"
 
 
 def test_a_text_in_euler_angles_is_left_to_the_general_reader():
     head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Heavy top\n\n"
-    claims = notes_check.check_text(head + f"$$\n{LAGRANGIAN}\n$$\n")
+    claims = kept.check_text(head + f"$$\n{LAGRANGIAN}\n$$\n")
     assert not [c for c in claims if c.why.startswith("defines L (recorded")]

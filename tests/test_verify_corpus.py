@@ -16,8 +16,6 @@ from pathlib import Path
 
 import pytest
 
-from derive.lecture import notes_check
-
 REAL = Path(__file__).resolve().parent / "notes" / "real"
 sys.path.insert(0, str(REAL))
 import measure  # noqa: E402  (the corpus's own measuring code, beside its texts)
@@ -34,9 +32,10 @@ FLOOR = {"checked": 216, "slips_flagged": 26, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
-def _figures(once, slug):
-    """The reader's figures on one text, read once per test run (every test process shares it)."""
-    return once(f"corpus-{slug}", lambda: measure.measure(slug, notes_check.check_notes(REAL / f"{slug}.md")))
+def _figures(notes_reading, slug):
+    """The reader's figures on one text, read once per test run (every test process shares it) and
+    kept between runs while the text and derive's source stay the same (``notes_reading``)."""
+    return measure.measure(slug, notes_reading(REAL / f"{slug}.md"))
 
 
 def test_the_corpus_has_a_dozen_texts_of_the_kinds_the_reader_must_meet():
@@ -96,18 +95,18 @@ def _share(f, target):
 
 @pytest.mark.parametrize("target", ["checked", "found", "false"])
 @pytest.mark.parametrize("slug", TEXTS)
-def test_the_reader_meets_its_targets_on_a_text(once, slug, target, request):
+def test_the_reader_meets_its_targets_on_a_text(notes_reading, slug, target, request):
     if (slug, target) in SHORT:
         request.applymarker(pytest.mark.xfail(reason=SHORT[(slug, target)], strict=True))
-    f = _figures(once, slug)
+    f = _figures(notes_reading, slug)
     if target == "false":
         assert f.false_share <= FALSE_ALARMS, (f.holds_flagged, f.holds, f.false_alarms)
     else:
         assert _share(f, target) >= TARGETS[target], (f.checked, f.checkable, f.slips_flagged, f.slips, f.missed)
 
 
-def test_the_corpus_totals_do_not_fall(once):
-    figures = {slug: _figures(once, slug) for slug in TEXTS}
+def test_the_corpus_totals_do_not_fall(notes_reading):
+    figures = {slug: _figures(notes_reading, slug) for slug in TEXTS}
     total = {k: sum(getattr(f, k) for f in figures.values()) for k in FLOOR}
     print("\n" + measure.table(list(figures.values())))
     assert total["checked"] >= FLOOR["checked"]

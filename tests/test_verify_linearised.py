@@ -2,7 +2,7 @@
 the text's own earlier equations (`derive.lecture.motion`)."""
 import pytest
 
-from derive.lecture import notes_check
+import kept_readings as kept
 
 HEAD = "---\nconvention: z-x-z\n---\n# Stability of rotation about an axis\n\n"
 
@@ -51,7 +51,7 @@ $$\ddot{\omega}_1 - \frac{(I_2-I_1)(I_3-I_2)}{I_1I_3}\Omega^2\omega_1 = 0$$
 
 
 def _verdicts(text):
-    claims = notes_check.check_text(text)
+    claims = kept.check_text(text)
     out = {}
     for c in claims:
         out.setdefault(c.line, []).append(c.verdict)
@@ -215,7 +215,7 @@ def _numbered(text):
 
 def test_a_second_order_equation_that_drops_a_power_is_flagged():
     text = _numbered(OSCILLATOR).replace(r"$$\ddot{\omega}_2 = - k^2 \omega_2", r"$$\ddot{\omega}_2 = - k \omega_2")
-    assert not [c for c in notes_check.check_text(_numbered(OSCILLATOR)) if c.verdict in ("typo", "fails")]
+    assert not [c for c in kept.check_text(_numbered(OSCILLATOR)) if c.verdict in ("typo", "fails")]
     claims, by_line = _verdicts(text)
     assert set(by_line[_line(text, r"$$\ddot{\omega}_2 = - k")]) & {"typo", "fails"}
 
@@ -227,10 +227,10 @@ $$
 I_{x} = \frac{1}{12}M(b^2 + c^2), \quad I_{x} = \frac{1}{12}M(c^2 + a^2), \quad I_{z} = \frac{1}{12}M(a^2 + b^2)
 $$
 """
-    claims = notes_check.check_text(text)
+    claims = kept.check_text(text)
     typos = [c for c in claims if c.verdict == "typo"]
     assert len(typos) == 1 and typos[0].correction.startswith("I_{y} =")
-    assert not [c for c in notes_check.check_text(text.replace("I_{x} = \\frac{1}{12}M(c", "I_{y} = \\frac{1}{12}M(c"))
+    assert not [c for c in kept.check_text(text.replace("I_{x} = \\frac{1}{12}M(c", "I_{y} = \\frac{1}{12}M(c"))
                 if c.verdict in ("typo", "fails")]
 
 

@@ -1,7 +1,7 @@
 """A text's own macros, read and expanded as TeX expands them."""
 import pytest
 
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 from derive.lecture import source, texmacros
 
 DEFS = (r"\newcommand{\vect}[1]{\vec{\boldsymbol{#1}}}"
@@ -84,7 +84,7 @@ def test_a_macro_that_expands_into_itself_raises_naming_it(defs, name):
 def test_a_self_referencing_macro_leaves_its_display_unchecked_naming_it():
     text = ("# Energy\n\n$$\\newcommand{\\loopy}{\\loopy}$$\n\n"
             "$$T = \\frac{1}{2} I_1 \\omega_1^2 + \\loopy$$\n")
-    [check] = nc.check_text(text)
+    [check] = kept.check_text(text)
     assert check.verdict == "unchecked"
     assert "\\loopy" in check.why
 
@@ -92,10 +92,10 @@ def test_a_self_referencing_macro_leaves_its_display_unchecked_naming_it():
 def test_a_display_written_with_the_files_macros_is_checked():
     text = ("# Energy\n\n$$\\newcommand{\\half}{\\frac{1}{2}}\\newcommand{\\w}[2][1]{\\omega_{#1}^{#2}}$$\n\n"
             "$$T = \\half I_1 \\w{2} + \\half I_2 \\w[2]{2} + \\half I_3 \\w[3]{2}$$\n")
-    assert [c.verdict for c in nc.check_text(text)] == ["holds"]
+    assert [c.verdict for c in kept.check_text(text)] == ["holds"]
 
 
 def test_a_differential_with_a_braced_variable_is_the_derivative():
     # \d{#3} in a macro body gives \mathrm{d}{t}: the braces only group, d{t} is dt
     text = "# Rates\n\n$$\\frac{\\mathrm{d} \\gamma}{\\mathrm{d}{t}} = \\dot{\\gamma}$$\n"
-    assert [c.verdict for c in nc.check_text(text)] == ["holds"]
+    assert [c.verdict for c in kept.check_text(text)] == ["holds"]

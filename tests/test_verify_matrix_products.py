@@ -1,6 +1,6 @@
 """The notes reader on products of the text's own matrices: a dotted matrix name and a transpose
 keep their places in a product, and 𝐈ᵢ named as the identity's columns is that unit column."""
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 
 ZYX = "---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Notes\n\n"
 R3 = ("$$\\mathbf{R}_3 = \\left[ \\begin{array}{ccc} \\cos \\psi & \\sin \\psi & 0 \\\\ "
@@ -9,7 +9,7 @@ R3 = ("$$\\mathbf{R}_3 = \\left[ \\begin{array}{ccc} \\cos \\psi & \\sin \\psi &
 
 def verdicts(text):
     out = {}
-    for c in nc.check_text(text):
+    for c in kept.check_text(text):
         out.setdefault(c.line, set()).add(c.verdict)
     return out
 

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+import kept_readings
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture import notes_check as nc
@@ -147,3 +148,28 @@ def test_lecture_json_contract(capsys, monkeypatch, lecture_claims):
         assert ("$$" in lines[c["line"] - 1]) or ("$" in lines[c["line"] - 1]) or ("\\[" in lines[c["line"] - 1])
         assert (c["correction"] is not None) == (c["verdict"] == "typo")
     assert data["summary"]["typo"] + data["summary"]["fails"] >= 5
+
+
+def test_a_kept_reading_is_read_again_when_its_text_or_derives_source_changes(tmp_path, monkeypatch):
+    # the suite keeps the reader's claims between runs: they are reused only while nothing they
+    # depend on has changed
+    monkeypatch.setenv("DERIVE_CACHE", str(tmp_path / "cache"))
+    notes = tmp_path / "top.md"
+    notes.write_text("# Particles\n\n$$T = \\frac{1}{2} \\sum_{ij} I_{ij} \\omega_i \\omega_j$$\n", encoding="utf-8")
+    read = []
+    real = nc.check_notes
+    monkeypatch.setattr(nc, "check_notes", lambda path, convention=None: read.append(convention) or real(path, convention))
+    first = kept_readings.check_notes(notes)
+    assert read == [None] and [c.verdict for c in first] == ["holds"]
+    assert kept_readings.check_notes(notes) == first and read == [None]
+    assert kept_readings.check_notes(notes, "z-x-z") and read == [None, "z-x-z"]
+    notes.write_text(notes.read_text(encoding="utf-8").replace("\\frac{1}{2} ", ""), encoding="utf-8")
+    assert [c.verdict for c in kept_readings.check_notes(notes)] == ["typo"] and len(read) == 3
+    monkeypatch.setattr(kept_readings, "source_key", lambda: "another-source")
+    assert [c.verdict for c in kept_readings.check_notes(notes)] == ["typo"] and len(read) == 4
+    text = notes.read_text(encoding="utf-8")
+    real_text = nc.check_text
+    monkeypatch.setattr(nc, "check_text", lambda text, convention=None, path="<notes>": read.append(path) or
+                        real_text(text, convention, path))
+    assert kept_readings.check_text(text) == kept_readings.check_text(text) and read[4:] == ["<notes>"]
+    assert kept_readings.check_text(text, path="top.md") and read[4:] == ["<notes>", "top.md"]

@@ -5,7 +5,7 @@ import mpmath
 import pytest
 
 from derive.lecture import motion_jets as mj
-from derive.lecture import notes_check
+import kept_readings as kept
 from derive.lecture.statements import statements
 
 HEAD = r"""---
@@ -23,7 +23,7 @@ $\mathscr{A}$ turns a vector into the antisymmetric matrix of the cross product.
 
 
 def _verdicts(body, head=HEAD):
-    return [(c.verdict, c.why) for c in notes_check.check_text(head + body)]
+    return [(c.verdict, c.why) for c in kept.check_text(head + body)]
 
 
 def _display(latex, before=""):
@@ -32,7 +32,7 @@ def _display(latex, before=""):
 
 def test_the_orientation_matrix_rate_holds_and_its_sign_slip_is_a_typo_corrected_in_the_texts_notation():
     assert _verdicts(_display(r"D\mathbf{M} = \mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0][0] == "holds"
-    claim = notes_check.check_text(HEAD + _display(r"D\mathbf{M} = -\mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0]
+    claim = kept.check_text(HEAD + _display(r"D\mathbf{M} = -\mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))[0]
     assert claim.verdict == "typo" and "-" not in claim.correction
     assert _verdicts(_display(claim.correction))[0][0] == "holds"
 
@@ -61,7 +61,7 @@ def test_the_potentials_slot_derivative_is_minus_the_generalised_force():
     v = r"\partial_{1,1} V(t; \theta(t), \phi(t), \psi(t))"
     assert _verdicts(_display(rf"D p_\phi = -{v}"))[0][0] == "holds"
     assert _verdicts(_display(rf"D p_\phi = {v}"))[0][0] == "typo"
-    claim = notes_check.check_text(HEAD + _display(rf"D \partial_{{\dot\phi}} L = -D p_\phi = {v}"))[0]
+    claim = kept.check_text(HEAD + _display(rf"D \partial_{{\dot\phi}} L = -D p_\phi = {v}"))[0]
     assert claim.verdict == "typo" and claim.correction == rf"-D \partial_{{\dot\phi}} L = -D p_\phi = {v}"
 
 
@@ -91,7 +91,7 @@ def test_the_rates_matrix_of_the_angles_holds():
 
 def test_a_text_that_declares_no_operator_notation_is_read_as_before():
     head = "---\nconvention: z-x-z\n---\n# Top\n\n"
-    claims = notes_check.check_text(head + _display(r"D\mathbf{M} = \mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))
+    claims = kept.check_text(head + _display(r"D\mathbf{M} = \mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))
     assert all(c.kind != "operator identity" for c in claims)
 
 
@@ -137,7 +137,7 @@ def test_every_planted_sign_slip_in_the_sicm_notes_is_flagged_on_its_display_onl
         seg = "\n".join(lines[ln - 1:end])
         for m in list(re.finditer(r"(?<=[ =(])- ?", seg))[:3]:
             text = "\n".join(lines[:ln - 1] + [seg[:m.start()] + "+ " + seg[m.end():]] + lines[end:])
-            flagged = {c.line for c in notes_check.check_text(text) if c.verdict in ("typo", "fails")}
+            flagged = {c.line for c in kept.check_text(text) if c.verdict in ("typo", "fails")}
             planted += 1
             if ln not in flagged:
                 missed.append(ln)

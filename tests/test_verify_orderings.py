@@ -1,6 +1,6 @@
 """Orderings a text states (``I_1 < I_2 < I_3``, ``-1 < u_1 < u_2 < 1 < u_3``) and the inequalities
 they decide, with the text's own names (derive/lecture/motion.py, derive/lecture/context.py)."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 ROOTS = (
     "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# A cubic's roots\n\n"
@@ -13,7 +13,7 @@ ROOTS = (
 
 
 def verdicts_at(text: str, latex: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text) if c.latex.strip() == latex]
+    return [c.verdict for c in kept.check_text(text) if c.latex.strip() == latex]
 
 
 def test_a_chain_with_numbers_is_an_ordering_of_its_symbols():
@@ -23,7 +23,7 @@ def test_a_chain_with_numbers_is_an_ordering_of_its_symbols():
 
 
 def test_an_inequality_the_ordering_reverses_is_a_typo():
-    claims = [c for c in notes_check.check_text(ROOTS + "$$k^2 > 1$$\n") if c.latex.strip() == "k^2 > 1"]
+    claims = [c for c in kept.check_text(ROOTS + "$$k^2 > 1$$\n") if c.latex.strip() == "k^2 > 1"]
     assert [c.verdict for c in claims] == ["typo"]
     assert claims[0].correction.replace(" ", "") == "k^{2}<1"
 
@@ -34,7 +34,7 @@ def test_an_inequality_the_ordering_does_not_decide_stays_unchecked():
 
 def test_a_display_that_opens_with_a_minus_and_its_own_inequality_is_no_continuation():
     text = ("# Roots\n\n$$G(u) = (1 - u^2) - u$$\n\nso the roots lie in\n\n$$-1 < u_1<u_2<1<u_3$$\n")
-    assert [c.line for c in notes_check.check_text(text) if "u_1" in c.latex] == [7]
+    assert [c.line for c in kept.check_text(text) if "u_1" in c.latex] == [7]
 
 
 FUNCTION = ("# A cubic\n\nThe function is\n\n$$G(u) = (\\alpha-au)(1-u^2)-(\\beta-b u)^2$$\n\n"
@@ -42,17 +42,17 @@ FUNCTION = ("# A cubic\n\nThe function is\n\n$$G(u) = (\\alpha-au)(1-u^2)-(\\bet
 
 
 def test_a_plus_minus_on_the_left_states_the_formula_for_each_sign():
-    claims = notes_check.check_text(FUNCTION + "$$G(\\pm 1) = -(\\beta \\mp b)^2$$\n")
+    claims = kept.check_text(FUNCTION + "$$G(\\pm 1) = -(\\beta \\mp b)^2$$\n")
     assert [(c.latex, c.verdict) for c in claims[1:]] == [
         ("G(+ 1) = -(\\beta - b)^2", "holds"), ("G(- 1) = -(\\beta + b)^2", "holds")]
 
 
 def test_the_text_function_then_a_bound_is_two_claims_the_bound_undecided_without_an_ordering():
-    claims = notes_check.check_text(FUNCTION + "$$G(-1) = -(\\beta + b)^2 < 0$$\n")
+    claims = kept.check_text(FUNCTION + "$$G(-1) = -(\\beta + b)^2 < 0$$\n")
     assert [(c.latex, c.verdict) for c in claims[1:]] == [
         ("G(-1) = -(\\beta + b)^2", "holds"), ("-(\\beta + b)^2 < 0", "unchecked")]
 
 
 def test_the_text_function_with_a_wrong_value_is_not_taken_as_holding():
-    claims = notes_check.check_text(FUNCTION + "$$G(-1) = -(\\beta - b)^2$$\n")
+    claims = kept.check_text(FUNCTION + "$$G(-1) = -(\\beta - b)^2$$\n")
     assert "holds" not in [c.verdict for c in claims]

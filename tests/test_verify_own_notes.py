@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+import kept_readings as kept
 from derive.lecture import notes_check as nc
 
 NOTES = Path(__file__).parent / "notes"
@@ -20,7 +21,7 @@ FLAGGED = ("typo", "fails")
 
 
 def test_own_notes_every_display_holds():
-    claims = nc.check_notes(ZYZ)
+    claims = kept.check_notes(ZYZ)
     checked = [c for c in claims if c.verdict != "unchecked"]
     assert len(checked) >= 20, len(checked)
     assert [c for c in claims if c.verdict in FLAGGED] == []
@@ -44,16 +45,16 @@ def test_reader_assumption_at_the_opening_of_a_sentence():
 
 def test_steady_precession_and_squared_stability_condition():
     base = "# Steady precession\n\nFor a steady precession, $\\dot{\\beta} = 0$, so\n\n$$M g l = %s$$\n"
-    right = nc.check_text(base % "\\dot{\\alpha} \\left(p_{\\gamma} - I_1 \\dot{\\alpha} \\cos\\beta\\right)")
-    wrong = nc.check_text(base % "\\dot{\\alpha} \\left(p_{\\gamma} + I_1 \\dot{\\alpha} \\cos\\beta\\right)")
+    right = kept.check_text(base % "\\dot{\\alpha} \\left(p_{\\gamma} - I_1 \\dot{\\alpha} \\cos\\beta\\right)")
+    wrong = kept.check_text(base % "\\dot{\\alpha} \\left(p_{\\gamma} + I_1 \\dot{\\alpha} \\cos\\beta\\right)")
     assert [(c.kind, c.verdict) for c in right] == [("steady precession", "holds")]
     assert [(c.kind, c.verdict) for c in wrong] == [("steady precession", "typo")]
     stab = "# Sleeping\n\n$$p_{\\gamma}^2 %s 4 M g l %s$$\n"
-    assert [c.verdict for c in nc.check_text(stab % ("\\ge", "I_1"))] == ["holds"]
-    wrong_moment = nc.check_text(stab % ("\\ge", "I_3"))
+    assert [c.verdict for c in kept.check_text(stab % ("\\ge", "I_1"))] == ["holds"]
+    wrong_moment = kept.check_text(stab % ("\\ge", "I_3"))
     assert [c.verdict for c in wrong_moment] == ["typo"]
     assert wrong_moment[0].correction == "p_{\\gamma}^2 \\ge 4 M g l I_1"      # in the text's own notation
-    assert [c.verdict for c in nc.check_text(stab % ("\\le", "I_1"))] == ["typo"]
+    assert [c.verdict for c in kept.check_text(stab % ("\\le", "I_1"))] == ["typo"]
 
 
 # ---- planted errors ---------------------------------------------------------------------------
@@ -140,7 +141,7 @@ def all_plants(path=ZYZ):
 
 def run_plant(line, text):
     """(caught, other lines flagged) for one edited notes text."""
-    claims = nc.check_text(text, path="planted.md")
+    claims = kept.check_text(text, path="planted.md")
     caught = any(c.verdict in FLAGGED for c in claims if c.line == line)
     others = sorted({c.line for c in claims if c.verdict in FLAGGED and c.line != line})
     return caught, others
@@ -214,7 +215,7 @@ def test_goldstein_notes_hold_under_their_front_matter():
     from derive.lecture import notes as nt
     notes = nt.read_notes(ZXZ)
     assert (notes.convention, notes.angles) == ("z-x-z", ("phi", "theta", "psi"))
-    claims = nc.check_notes(ZXZ)
+    claims = kept.check_notes(ZXZ)
     assert len([c for c in claims if c.verdict != "unchecked"]) >= 20
     assert [c for c in claims if c.verdict in FLAGGED] == []
     displays = {i + 1 for i, line in enumerate(ZXZ.read_text(encoding="utf-8").split("\n")) if line.startswith("$$")}
@@ -225,14 +226,12 @@ def _flagged_omegas(claims):
     return {c.latex.split("=")[0].strip() for c in claims if c.verdict in FLAGGED}
 
 
-def test_goldstein_notes_fail_in_the_lecture_convention(tmp_path):
+def test_goldstein_notes_fail_in_the_lecture_convention():
     # z-y-z turns about the new y axis, z-x-z about the line of nodes (the new x): the body
     # components ω₁, ω₂ and the frame vectors differ; T, the momenta and Euler's equations do not
-    overridden = nc.check_notes(ZXZ, convention="z-y-z")
+    overridden = kept.check_notes(ZXZ, convention="z-y-z")
     text = ZXZ.read_text(encoding="utf-8")
-    bare = tmp_path / "no-front-matter.md"
-    bare.write_text(text[text.index("---", 3) + 3:].lstrip("\n"), encoding="utf-8")
-    stripped = nc.check_notes(bare)
+    stripped = kept.check_text(text[text.index("---", 3) + 3:].lstrip("\n"), path="no-front-matter.md")
     for claims in (overridden, stripped):
         assert nc.exit_status(claims) == 1
         flagged = _flagged_omegas(claims)
@@ -258,7 +257,7 @@ def test_docs_example_is_what_verify_says():
     blocks = re.findall(r"```\n(.*?)```", doc, re.S)
     notes = next(b for b in blocks if b.startswith("---\nconvention: z-y-z"))
     output = next(b for b in blocks if b.startswith("top.md:"))
-    claims = nc.check_text(notes, path="top.md")
+    claims = kept.check_text(notes, path="top.md")
     shown = [(int(m.group(1)), m.group(2)) for m in re.finditer(r"^top\.md:(\d+): (\w+)", output, re.M)]
     assert shown == [(c.line, c.verdict) for c in claims]
     assert nc.render(claims, "text", path="top.md").split("\n")[-2] == output.strip().split("\n")[-1]

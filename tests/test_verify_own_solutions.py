@@ -3,7 +3,7 @@ Jacobi's elliptic functions (derive/lecture/elliptic.py): put into the equation,
 for the angle it was defined by, or for the variable of a change."""
 import sympy as sp
 
-from derive.lecture import notes_check
+import kept_readings as kept
 from derive.lecture.elliptic import JacobiCN, JacobiDN, JacobiSN
 
 NUTATION = (
@@ -16,7 +16,7 @@ NUTATION = (
 
 
 def verdict_at(text: str, start: str) -> list:
-    return verdicts_at(notes_check.check_text(text), start)
+    return verdicts_at(kept.check_text(text), start)
 
 
 def verdicts_at(claims, start: str) -> list:
@@ -40,7 +40,7 @@ def test_an_elliptic_solution_of_the_texts_own_equation_holds():
 def test_the_solution_written_for_the_angle_or_the_new_variable_holds():
     text = NUTATION + ("$$\\theta = \\arccos \\left[u_1+(u_2-u_1)\\mathrm{sn}\\,^2 \\left(\\frac{\\sqrt{a(u_3-u_1)}}{2}t"
                        "\\right)\\right]$$\n\n$$\\sin v = \\mathrm{sn}\\, \\left(\\frac{\\sqrt{a(u_3-u_1)}}{2}t\\right)$$\n")
-    claims = notes_check.check_text(text)  # one reading of the text for both displays
+    claims = kept.check_text(text)  # one reading of the text for both displays
     assert verdicts_at(claims, "\\theta = \\arccos") == ["holds"]
     assert verdicts_at(claims, "\\sin v") == ["holds"]
 

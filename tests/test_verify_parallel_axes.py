@@ -1,6 +1,6 @@
 """A text that writes I₁ + M a² gives its moments about the centre of mass: the second reading
 (derive/lecture/rereading.py) that makes its heavy-top formulas hold, and only those."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 TOP = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n## Heavy symmetric top\n\n"
        "Here $M$ is the top's mass, $a$ is the distance from the fixed point to the centre of mass and "
@@ -8,13 +8,13 @@ TOP = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n## Heavy s
 
 
 def verdicts(text: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text)]
+    return [c.verdict for c in kept.check_text(text)]
 
 
 def test_a_lagrangian_with_moments_about_the_centre_of_mass_holds_by_the_parallel_axes():
     text = TOP + ("$$L = \\frac{1}{2} (I_1 + Ma^2) (\\dot{\\phi}^2 \\sin^2 \\theta + \\dot{\\theta}^2) + "
                   "\\frac{1}{2} I_3 (\\dot{\\phi} \\cos \\theta + \\dot{\\psi})^2 - Mga \\cos \\theta$$\n")
-    claims = notes_check.check_text(text)
+    claims = kept.check_text(text)
     assert [c.verdict for c in claims] == ["holds"]
     assert "centre of mass" in claims[0].why
 

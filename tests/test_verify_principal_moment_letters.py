@@ -1,6 +1,6 @@
 """The principal moments under the text's own letters (A, B, C): bound when the prose names them,
 and never a failing claim when it does not."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 HEAD = "---\nconvention: z-x-z\n---\n# Principal axes\n\n"
 DIAG = r"""
@@ -16,7 +16,7 @@ $$
 
 
 def _verdicts(prose):
-    return [c.verdict for c in notes_check.check_text(HEAD + prose + DIAG)]
+    return [c.verdict for c in kept.check_text(HEAD + prose + DIAG)]
 
 
 def test_letters_listed_before_the_phrase_are_the_principal_moments():

@@ -1,12 +1,12 @@
 """A sentence that states a special case and then relations for it ("$\\cos\\theta = 0$, where
 $\\omega_z = \\dot\\phi$ and $\\omega_3 = \\dot\\psi$") gets no flag from relations the case decides."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 HEAD = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Angular velocity\n\n"
 
 
 def _verdicts(sentence):
-    return [c.verdict for c in notes_check.check_text(HEAD + sentence + "\n")]
+    return [c.verdict for c in kept.check_text(HEAD + sentence + "\n")]
 
 
 def test_relations_after_a_case_in_the_same_sentence_are_not_flagged():

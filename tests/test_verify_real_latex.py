@@ -4,12 +4,12 @@ import pytest
 
 from derive.errors import SceneError
 from derive.lecture import notes as nt
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 from derive.lecture import source
 
 
 def verdicts(text, **kw):
-    return [(c.line, c.verdict) for c in nc.check_text(text, **kw)]
+    return [(c.line, c.verdict) for c in kept.check_text(text, **kw)]
 
 
 @pytest.mark.parametrize("written, read", [
@@ -60,7 +60,7 @@ def test_a_symbols_map_says_a_texts_names_outright():
             "# Top\n\n$$M_3 = I_3 \\left(\\dot\\phi\\cos\\theta + \\dot\\psi\\right)$$\n\n"
             "$$M_3 = I_3 \\left(\\dot\\phi\\cos\\theta - \\dot\\psi\\right)$$\n\n"
             "$$V = M g a \\cos\\theta$$\n")
-    claims = nc.check_text(text)
+    claims = kept.check_text(text)
     assert [(c.line, c.verdict) for c in claims][:2] == [(8, "holds"), (10, "typo")]
     assert claims[1].correction == r"M_3 = I_3 \left(\dot\phi\cos\theta + \dot\psi\right)"
 
@@ -99,7 +99,7 @@ def test_settings_and_numeric_values_are_cases_not_claims():
 
 def test_a_correction_is_written_in_the_texts_own_notation():
     text = "# Euler\n\nWith no torque,\n\n$$I_3 \\dot{\\omega}_3 = (I_2 - I_1)\\,\\omega_1\\omega_2$$\n"
-    [claim] = nc.check_text(text)
+    [claim] = kept.check_text(text)
     assert claim.verdict == "typo"
     assert claim.correction == r"I_3 \dot{\omega}_3 = (I_1 - I_2)\,\omega_1\omega_2"
 
@@ -108,13 +108,13 @@ def test_a_symmetric_body_named_in_the_prose_makes_i1_equal_i2():
     t = ("\\frac{1}{2} I_1 \\left(\\dot\\phi^2\\sin^2\\theta + \\dot\\theta^2\\right) + "
          "\\frac{1}{2} I_3 \\left(\\dot\\phi\\cos\\theta + \\dot\\psi\\right)^2")
     head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Top\n\n"
-    [stated] = nc.check_text(head + f"For a symmetric top:\n\n$$T = {t}$$\n")
+    [stated] = kept.check_text(head + f"For a symmetric top:\n\n$$T = {t}$$\n")
     assert stated.verdict == "holds" and stated.assumes == ["I_1 = I_2 (line 7)"]
-    [unstated] = nc.check_text(head + f"For a body:\n\n$$T = {t}$$\n")
+    [unstated] = kept.check_text(head + f"For a body:\n\n$$T = {t}$$\n")
     assert unstated.verdict == "holds" and unstated.assumes == ["I_1 = I_2 (not stated)"]
     assert "holds if I₁ = I₂" in unstated.why
     # where the text writes I_2 as well, the moments differ: no symmetric reading rescues a slip
-    [slip] = nc.check_text(head + "$$T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 "
+    [slip] = kept.check_text(head + "$$T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 "
                                   "+ \\frac{1}{2} I_1 \\omega_3^2$$\n")
     assert slip.verdict == "typo"
 

@@ -2,7 +2,7 @@
 top's mass in one section and the angular momentum's magnitude in the next; with the moments
 ordered, the bounds on it at a given energy follow (derive/lecture/motion.py)."""
 from derive.lecture import names as nm
-from derive.lecture import notes_check
+import kept_readings as kept
 from derive.lecture.vocabulary import scan
 
 TWO_SECTIONS = (
@@ -33,10 +33,10 @@ def test_the_front_matter_wins_over_a_sections_prose():
 
 
 def test_bounds_on_the_angular_momentum_at_given_energy_follow_from_the_ordered_moments():
-    claims = notes_check.check_text(TWO_SECTIONS + "$$\\sqrt{2EI_1} \\leq M \\leq \\sqrt{2EI_3}$$\n")
+    claims = kept.check_text(TWO_SECTIONS + "$$\\sqrt{2EI_1} \\leq M \\leq \\sqrt{2EI_3}$$\n")
     assert [c.verdict for c in claims if c.latex.startswith("\\sqrt")] == ["holds"]
 
 
 def test_bounds_with_the_moments_swapped_are_not_taken_as_holding():
-    claims = notes_check.check_text(TWO_SECTIONS + "$$\\sqrt{2EI_3} \\leq M \\leq \\sqrt{2EI_1}$$\n")
+    claims = kept.check_text(TWO_SECTIONS + "$$\\sqrt{2EI_3} \\leq M \\leq \\sqrt{2EI_1}$$\n")
     assert [c.verdict for c in claims if c.latex.startswith("\\sqrt")] != ["holds"]

@@ -1,6 +1,6 @@
 """A body's constant written ≈ 0 (derive/lecture/moments_small.py): judged by the value the text
 gave it and the small quantities it states, never by a guess."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 FREE_BODY = (
     "A free rigid body with principal moments $I_1$, $I_2$, $I_3$ and no torque.\n\n"
@@ -11,7 +11,7 @@ FREE_BODY = (
 
 
 def verdicts_at(text: str, latex: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text) if c.latex.strip() == latex]
+    return [c.verdict for c in kept.check_text(text) if c.latex.strip() == latex]
 
 
 def test_a_moment_the_text_gave_a_finite_value_is_not_approx_zero():
@@ -33,6 +33,6 @@ def test_a_mislabelled_setting_gives_its_corrected_value():
 
 def test_a_moment_above_the_smallest_of_a_stated_ordering_is_not_approx_zero():
     text = ("A free rigid body.\n\n$$I_1 < I_2 < I_3$$\n\n$$I_2 \\approx 0$$\n\n$$I_1 \\approx 0$$\n")
-    claims = notes_check.check_text(text)
+    claims = kept.check_text(text)
     assert [c.verdict for c in claims if c.latex.strip() == "I_2 \\approx 0"] == ["fails"]
     assert [c.verdict for c in claims if c.latex.strip() == "I_1 \\approx 0"] == ["unchecked"]   # a thin rod

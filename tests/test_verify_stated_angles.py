@@ -1,7 +1,7 @@
 """The notes reader on what a text states in its running prose and its chains: cases it lists
 in one sentence, a chain whose first member it names only in words, and an angle it gives in
 its constants, at which later relations of the angles are judged."""
-from derive.lecture import notes_check as nc
+import kept_readings as kept
 from derive.lecture.statements import statements
 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
@@ -9,7 +9,7 @@ ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n
 
 def by_line(text):
     out = {}
-    for c in nc.check_text(text):
+    for c in kept.check_text(text):
         out.setdefault(c.line, []).append(c)
     return out
 

@@ -1,14 +1,14 @@
 """A text's own letters in vector statements (derive/lecture/vector_parser.py, vector_models.py,
 vector_claims.py): Landau's 𝛀 and 𝐌 for the angular velocity and momentum, a particle index of
 its own (m_α, 𝐫_α under Σ_α), Euler's equations written as columns."""
-from derive.lecture import notes_check
+import kept_readings as kept
 
 LANDAU = ("## Inertia\n\nThe body-frame components $\\Omega_1, \\Omega_2, \\Omega_3$ of the angular velocity "
           "$\\boldsymbol{\\Omega}$, and the angular momentum $\\mathbf{M}$, of point masses $m_\\alpha$.\n\n")
 
 
 def verdicts(text: str) -> list:
-    return [c.verdict for c in notes_check.check_text(text)]
+    return [c.verdict for c in kept.check_text(text)]
 
 
 def test_a_sum_over_the_texts_own_particle_index_is_a_sum_over_particles():

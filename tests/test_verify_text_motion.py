@@ -2,7 +2,7 @@
 variable (`derive.lecture.text_motion`)."""
 import pytest
 
-from derive.lecture import notes_check
+import kept_readings as kept
 
 HEAD = "---\nconvention: z-x-z\n---\n# Nutation of the heavy top\n\n"
 
@@ -28,7 +28,7 @@ RIGHT = r"\frac{a(u_3-u_1)}{4}\left(1-k^2\sin^2v\right)"
 
 def _claims(left, right=RIGHT):
     text = REDUCTION.replace("LEFT", left).replace("RIGHT", right)
-    return {c.line: c for c in notes_check.check_text(text)}
+    return {c.line: c for c in kept.check_text(text)}
 
 
 def _equation(claims):
@@ -64,7 +64,7 @@ def test_wrong_factor_after_the_change_fails(right):
 
 def test_name_never_defined_leaves_the_equation_unchecked():
     text = REDUCTION.replace("LEFT", r"\dot{v}^2").replace("RIGHT", RIGHT.replace("k^2", "q^2"))
-    (c,) = [c for c in notes_check.check_text(text) if c.latex.startswith(r"\dot{v}")]
+    (c,) = [c for c in kept.check_text(text) if c.latex.startswith(r"\dot{v}")]
     assert c.verdict == "unchecked"
     assert "never defines" in c.why
 
@@ -80,7 +80,7 @@ $$\dot{u}^2 = FACTORED$$
 
 
 def _factored(factored):
-    (c,) = [c for c in notes_check.check_text(CUBIC.replace("FACTORED", factored))
+    (c,) = [c for c in kept.check_text(CUBIC.replace("FACTORED", factored))
             if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
     return c
 
@@ -98,7 +98,7 @@ def test_equation_by_its_named_roots_fails_with_another_degree_or_leading_coeffi
 def test_equation_of_a_variable_is_kept_for_its_section_only():
     text = CUBIC.replace("FACTORED", "2a(u-u_1)(u-u_2)(u-u_3)").replace(
         "and, with the roots", "# Another body\n\nWith $u = \\cos\\theta$ and, with the roots")
-    (c,) = [c for c in notes_check.check_text(text) if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
+    (c,) = [c for c in kept.check_text(text) if c.latex.startswith(r"\dot{u}^2 = ") and "u_1" in c.latex]
     assert c.verdict == "unchecked"
 
 
@@ -113,7 +113,7 @@ $$G\left(\frac{\beta}{b}\right) = VALUE$$
 
 
 def _at(value):
-    (c,) = [c for c in notes_check.check_text(FUNCTION.replace("VALUE", value)) if c.latex.startswith("G\\left")]
+    (c,) = [c for c in kept.check_text(FUNCTION.replace("VALUE", value)) if c.latex.startswith("G\\left")]
     return c
 
 

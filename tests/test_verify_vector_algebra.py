@@ -3,7 +3,7 @@ determinants, sums over particles, integrals over the mass and the torque, check
 rotation derived from first principles."""
 import pytest
 
-from derive.lecture import notes_check
+import kept_readings as kept
 from derive.lecture import vector_algebra as va
 
 HEAD = "A point mass $m$ at $\\mathbf{r}$ turns with $\\boldsymbol{\\omega}$.\n\n"
@@ -11,7 +11,7 @@ HEAD = "A point mass $m$ at $\\mathbf{r}$ turns with $\\boldsymbol{\\omega}$.\n\
 
 def verdicts(body: str) -> dict:
     out = {}
-    for c in notes_check.check_text(HEAD + body):
+    for c in kept.check_text(HEAD + body):
         out.setdefault(c.line, []).append(c.verdict)
     return out
 
@@ -79,7 +79,7 @@ def test_a_letter_set_equal_to_r_cross_f_is_the_texts_torque():
 def test_a_diagonal_tensor_holds_if_the_axes_are_principal():
     body = ("$$I_{xx} = \\int (y^2 + z^2) \\, dm$$\n\n"
             "$$\\mathbf{I} = \\begin{bmatrix} I_{xx} & 0 & 0 \\\\ 0 & I_{yy} & 0 \\\\ 0 & 0 & I_{zz} \\end{bmatrix}$$\n")
-    claims = [c for c in notes_check.check_text(HEAD + body) if "bmatrix" in c.latex]
+    claims = [c for c in kept.check_text(HEAD + body) if "bmatrix" in c.latex]
     assert [c.verdict for c in claims] == ["holds"] and "principal" in claims[0].why
 
 
@@ -141,7 +141,7 @@ def _planted_sign_slips(slug):
 def test_a_sign_planted_in_an_inertia_tensor_text_is_flagged_on_its_display_only(slug):
     planted = 0
     for line, holds, text in _planted_sign_slips(slug):
-        flagged = {c.line for c in notes_check.check_text(text) if c.verdict in ("typo", "fails")}
+        flagged = {c.line for c in kept.check_text(text) if c.verdict in ("typo", "fails")}
         assert line in flagged, line
         assert not flagged & (set(holds) - {line}), (line, flagged)
         planted += 1
@@ -149,7 +149,7 @@ def test_a_sign_planted_in_an_inertia_tensor_text_is_flagged_on_its_display_only
 
 
 def test_a_cross_product_in_the_wrong_order_is_a_typo_corrected_in_the_texts_notation():
-    claims = notes_check.check_text(HEAD + "$$\\mathbf{L} = m \\mathbf{r} \\times (\\mathbf{r} \\times \\boldsymbol{\\omega})$$\n")
+    claims = kept.check_text(HEAD + "$$\\mathbf{L} = m \\mathbf{r} \\times (\\mathbf{r} \\times \\boldsymbol{\\omega})$$\n")
     assert [c.verdict for c in claims if "bmatrix" not in c.latex and "L" in c.latex] == ["typo"]
     fixed = [c.correction for c in claims if c.verdict == "typo"][0]
     assert "\\times (\\boldsymbol{\\omega} \\times \\mathbf{r})" in fixed
