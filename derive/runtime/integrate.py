@@ -153,13 +153,7 @@ class ModelKernel:
                     or y.dtype != np.float64 or not (out.flags.c_contiguous and y.flags.c_contiguous)):
                 raise ValueError("simulate_batch: buffers must be C-contiguous float64 arrays of shapes "
                                  f"(>= {nb}, {self.nout}, {n}) and (>= {nb}, {n}, {self.ny})")
-        ps = np.array(ps, dtype=np.float64, order="C")
-        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
-        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-        t = np.ascontiguousarray(t, dtype=np.float64)
-        save = saveat(t, pole_check=pole_check, lanes=lanes)
-        self._run(save, nb, inputs, ps, args, y, out, st)
-        return out, y, ps, st[:nb]
+        return self._call(False, lanes, inputs, ps, t, args, pole_check, y, out)
 
     def full_lanes(self, n: int) -> "ModelKernel | None":
         """The kernel whose full-grid lanes driver runs this kernel's full batch of ``n``
@@ -221,13 +215,17 @@ class ModelKernel:
 
     def _final_call(self, lanes, inputs, ps, t, args, pole_check):
         nb = inputs.shape[0]
-        out = np.empty((nb, self.nout))
-        y = np.empty((nb, self.ny))
+        return self._call(True, lanes, inputs, ps, t, args, pole_check, np.empty((nb, self.ny)),
+                          np.empty((nb, self.nout)))
+
+    def _call(self, final, lanes, inputs, ps, t, args, pole_check, y, out):
+        """The run driver over a batch, writing into ``y`` and ``out``: (out, y, ps, stats)."""
+        nb = inputs.shape[0]
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         t = np.ascontiguousarray(t, dtype=np.float64)
-        save = saveat(t, final=True, pole_check=pole_check, lanes=lanes)
+        save = saveat(t, final=final, pole_check=pole_check, lanes=lanes)
         self._run(save, nb, inputs, ps, args, y, out, st)
         return out, y, ps, st[:nb]
 
