@@ -96,13 +96,9 @@ def model_identifier(b: Bundle) -> str:
 def sources(b: Bundle) -> tuple[dict[str, str], str]:
     """(the FMU's ``sources/`` files, modelDescription.xml)."""
     P, ID = b.name, model_identifier(b)
-    files = dict(b.desc.c_sources())
-    wanted = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
-    if b.family:
-        wanted += [f"{P}_{b.family}.h", f"{P}_{b.family}.c"]
-    text = "".join(files[n] for n in wanted)
-    wanted += [n for n in sorted(files) if n not in wanted and f'"{n}"' in text]
-    out = {n: files[n] for n in wanted}
+    files = b.desc.c_sources()
+    model, extra = b.model_files()
+    out = {n: files[n] for n in model + extra}
     for name in HEADERS:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
     out["NOTICE.md"] = notice(out)
