@@ -19,9 +19,8 @@ import numpy as np
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, DEFAULT_NEWTON_MAXITER,
-                                    DEFAULT_NEWTON_TOL, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
-                                    saveat)
+from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
+                                    driver_args, saveat)
 
 
 class ModelKernel:
@@ -94,11 +93,9 @@ class ModelKernel:
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
-    def driver_args(self, rtol, atol, h, max_steps, newton_tol=DEFAULT_NEWTON_TOL,
-                    newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
-        values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
-                  "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
-        return [values[name] for name in self._run.params]
+    def driver_args(self, rtol, atol, h, max_steps) -> list:
+        """The run driver's arguments (:func:`derive.runtime.records.driver_args`)."""
+        return driver_args(self.method, rtol, atol, h, max_steps)
 
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""
