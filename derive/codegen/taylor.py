@@ -268,7 +268,6 @@ def _pointwise(model, d: Decomposition) -> dict | None:
     block = Block.of([e for _, e in d.pointwise], "x")
     uses_t = block.uses_time()
     pr = _BlockPrinter(model.params)
-    temps = []
     for name, e in block.temps:
         text = pr.doprint(e)
         if e.free_symbols <= pr.fixed:

@@ -153,9 +153,15 @@ class Bundle:
         return [Variable(f"initial.{n}", k, float(self.inputs[k]), _INPUT_UNITS[n], _INPUT_DOCS[n])
                 for k, n in enumerate(INPUT_NAMES)]
 
-    def derived(self) -> list[str]:
-        """Names of the parameters the init map writes."""
-        return [self.desc.params[k] for k in sorted(self.desc.derived_params)]
+    def model_files(self) -> tuple[list[str], list[str]]:
+        """(the model's C files with its solvers and its method family's, the other generated
+        files they include by name, such as ``derive_elliptic.h``)."""
+        P, sources = self.name, self.desc.c_sources()
+        model = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
+        if self.family:
+            model += [f"{P}_{self.family}.h", f"{P}_{self.family}.c"]
+        text = "".join(sources[n] for n in model)
+        return model, sorted(n for n in sources if n not in model and f'"{n}"' in text)
 
     @property
     def t_end(self) -> float:

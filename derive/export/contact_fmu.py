@@ -25,7 +25,7 @@ from xml.sax.saxutils import escape
 from derive.codegen.render import TEMPLATES, c_double, render
 from derive.contact.laws import EXTENSIONS, LAWS
 from derive.export import contact as ce
-from derive.export.fmi import HEADERS, UNITS, Var, version
+from derive.export.fmi import HEADERS, UNITS, Var, model_identifier, version
 
 #: The outputs before the integrals, with their units and meaning.
 OUTPUTS = (
@@ -56,10 +56,6 @@ INTEGRAL_UNITS = {"energy": "J", "p_alpha": "kg m^2/s", "p_gamma": "kg m^2/s",
                   "jellett": "kg m^3/s", "routh": "kg m^2/s"}
 _START = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3", "vx", "vy")
 _START_UNITS = ("rad", "rad", "rad", "rad/s", "rad/s", "rad/s", "m/s", "m/s")
-
-
-def model_identifier(b: ce.ContactBundle) -> str:
-    return f"{b.name}_{b.method}"
 
 
 def _used(b: ce.ContactBundle) -> list[int]:

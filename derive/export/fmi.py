@@ -68,6 +68,11 @@ def platform_folder() -> tuple[str, str]:
                      f"(Linux or macOS)")
 
 
+def model_identifier(b) -> str:
+    """An FMU's model identifier (a C identifier, the binary's name): model and method."""
+    return f"{b.name}_{b.method}"
+
+
 def version() -> str:
     """derive's version for generationTool (the distribution's; the package root is a layer
     above this stage)."""

@@ -31,7 +31,7 @@ from derive.errors import SceneError
 from derive.export import bundle as bundles
 from derive.export import contact as contact_export, contact_fmu
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
-from derive.export.fmi import HEADERS, UNITS, Var, archive, version, zip_files
+from derive.export.fmi import HEADERS, UNITS, Var, archive, model_identifier, version, zip_files
 from derive.sim.outputs import check_paths, write_all
 from derive.sim.scene import contact_data
 
@@ -88,21 +88,12 @@ def variables(b: Bundle) -> list[Var]:
     return out
 
 
-def model_identifier(b: Bundle) -> str:
-    """The FMU's model identifier (a C identifier, the binary's name): model and method."""
-    return f"{b.name}_{b.method}"
-
-
 def sources(b: Bundle) -> tuple[dict[str, str], str]:
     """(the FMU's ``sources/`` files, modelDescription.xml)."""
     P, ID = b.name, model_identifier(b)
-    files = dict(b.desc.c_sources())
-    wanted = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
-    if b.family:
-        wanted += [f"{P}_{b.family}.h", f"{P}_{b.family}.c"]
-    text = "".join(files[n] for n in wanted)
-    wanted += [n for n in sorted(files) if n not in wanted and f'"{n}"' in text]
-    out = {n: files[n] for n in wanted}
+    files = b.desc.c_sources()
+    model, extra = b.model_files()
+    out = {n: files[n] for n in model + extra}
     for name in HEADERS:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
     out["NOTICE.md"] = notice(out)
@@ -176,7 +167,7 @@ def export_fmu(scene, out, method: str | None = None) -> Bundle:
     found = contact_data(scene) if not isinstance(scene, bundles.Scene) else None
     if found is not None:  # a top on a table: co-simulation of the phases and their events
         b = contact_export.bundle(found, method)
-        files = archive(*contact_fmu.sources(b), contact_fmu.model_identifier(b))
+        files = archive(*contact_fmu.sources(b), model_identifier(b))
     else:
         b = bundles.make(scene, method)
         files = build(b)

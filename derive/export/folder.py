@@ -59,11 +59,7 @@ def files(b: Bundle) -> dict[str, str]:
     """Every file of the exported folder: ``{name: text}``."""
     P = b.name
     sources = b.desc.c_sources()
-    model = [f"{P}.h", f"{P}.c", f"{P}_solvers.h", f"{P}_solvers.c"]
-    if b.family:
-        model += [f"{P}_{b.family}.h", f"{P}_{b.family}.c"]
-    text = "".join(sources[n] for n in model)
-    extra = sorted(n for n in sources if n not in model and f'"{n}"' in text)  # derive_elliptic.h
+    model, extra = b.model_files()
     out = {n: sources[n] for n in model + extra}
     includes = [f"{P}.c", f"{P}_solvers.c"] + ([f"{P}_{b.family}.c"] if b.family else [])
     out[f"{P}_lib.c"] = render("export/lib.c.j2", P=P, includes=includes, family=b.family)

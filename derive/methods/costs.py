@@ -42,25 +42,16 @@ import functools
 import math
 from typing import NamedTuple
 
-from derive.methods.registry import DEFAULT_METHOD, METHODS as RUNGE_KUTTA, STEP_CALIBRATION, STEP_LAWS, StepLaw
+from derive.methods.registry import DEFAULT_METHOD, METHODS as RUNGE_KUTTA, STEP_LAWS
 from derive.methods.taylor import METHODS as TAYLOR
 
 #: Steps per radian of the fastest motion: DOP853 at ε = 1 (scaled by ε^(−1/8)), the Taylor
 #: method's (scaled by 1 + A/p); the time of a jet's operation unit against the right-hand
-#: side's, a Taylor step's fixed work, and the share of a sample's Horner scheme that costs
-#: (the samples of a step are evaluated four at a time), and the share of the output map's cost
-#: a Taylor sample pays (the map runs over a block in one vectorised loop). K_D, K_T, A fitted
-#: to step counts:
-#: the modelled ratio of the two step counts is within 17 % (rms of its logarithm: 0.155) of
-#: the measured one over 7 scenes × 4 tolerances; TAYLOR_UNIT, TAYLOR_STEP, TAYLOR_SAMPLE (and TAYLOR_OUTPUT)
-#: to the times of ``derive.bench.autochoice`` (5 scene shapes × 4 tolerances), refitted after
-#: the Taylor samples were made blockwise and the step size libm-free (TAYLOR_STEP was 1750,
-#: TAYLOR_SAMPLE 1): the modelled ratio of the two times within 17 % rms (was 32 %), its side
-#: of 1 right on 18 of the 20 and within 10 % of the faster on all 20 — an in-sample fit,
-#: which the bench re-measures on every run. Refitted again after the block output map (a
-#: Taylor sample ~25 % cheaper; the 1001-sample reference top at 1e-6 went to DOP853 while the
-#: Taylor run was 20 % faster): TAYLOR_UNIT 2.75 → 3.0, TAYLOR_OUTPUT 1 → 0.7, the modelled
-#: ratio within 16 % rms (18 % before), the faster method on all 20.
+#: side's, a Taylor step's fixed work, the share of a sample's Horner scheme that costs (the
+#: samples of a step are evaluated four at a time), and the share of the output map's cost a
+#: Taylor sample pays (the map runs over a block in one vectorised loop). K_D, K_T, A are fitted
+#: to step counts, the Taylor constants to the times of ``derive.bench.autochoice``
+#: (:data:`CALIBRATION`), which the bench re-measures on every run (docs/bench/).
 K_D = 0.062
 K_T = 0.32
 A = 12.5

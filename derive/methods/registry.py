@@ -29,7 +29,6 @@ from types import MappingProxyType
 from dataclasses import dataclass
 from typing import NamedTuple
 
-from derive.symbolic.effects import VERSION as _EFFECTS_VERSION  # a list bumped in place
 from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, Tableau
 from derive.methods import splitting
 from derive.methods.taylor import METHODS as TAYLOR
@@ -160,13 +159,6 @@ def build(name: str | None) -> str:
 def method_reason(name: str, formulation: str, effects) -> str | None:
     """None if the compiled method ``name`` can run that formulation with those effects, else
     why not ("auto" as the formulation: can any formulation)."""
-    return _method_reason(name, formulation, tuple(effects), _EFFECTS_VERSION[0])
-
-
-@functools.lru_cache(maxsize=512)
-def _method_reason(name: str, formulation: str, effects: tuple, version: int) -> str | None:
-    """``method_reason``, cached per effects-registry version (the answer depends on the
-    effects' declarations)."""
     if name not in splitting.METHODS:
         return None
     from types import SimpleNamespace

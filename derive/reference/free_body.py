@@ -107,7 +107,7 @@ def free_asymmetric(I1, I2, I3, omega0, t, R0=None):
 
 def _free_asymmetric_core(I, w0, t, R0):
     ia, ib, ic = np.argsort(I)
-    wa, wb, wc = w0[ia], w0[ib], w0[ic]
+    wa, wc = w0[ia], w0[ic]
     # L^2 - 2E Ib without forming L^2 and 2E (the intermediate term drops out exactly).
     delta = _quad_form((I[ia], I[ia], I[ib], wa), (I[ic], I[ic], I[ib], wc))[1]
     perm = (ia, ib, ic) if delta >= 0 else (ic, ib, ia)

@@ -19,9 +19,8 @@ import numpy as np
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, DEFAULT_NEWTON_MAXITER,
-                                    DEFAULT_NEWTON_TOL, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
-                                    saveat)
+from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
+                                    driver_args, saveat)
 
 
 class ModelKernel:
@@ -94,11 +93,9 @@ class ModelKernel:
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
-    def driver_args(self, rtol, atol, h, max_steps, newton_tol=DEFAULT_NEWTON_TOL,
-                    newton_maxiter=DEFAULT_NEWTON_MAXITER) -> list:
-        values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
-                  "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
-        return [values[name] for name in self._run.params]
+    def driver_args(self, rtol, atol, h, max_steps) -> list:
+        """The run driver's arguments (:func:`derive.runtime.records.driver_args`)."""
+        return driver_args(self.method, rtol, atol, h, max_steps)
 
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""
@@ -153,13 +150,7 @@ class ModelKernel:
                     or y.dtype != np.float64 or not (out.flags.c_contiguous and y.flags.c_contiguous)):
                 raise ValueError("simulate_batch: buffers must be C-contiguous float64 arrays of shapes "
                                  f"(>= {nb}, {self.nout}, {n}) and (>= {nb}, {n}, {self.ny})")
-        ps = np.array(ps, dtype=np.float64, order="C")
-        st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
-        inputs = np.ascontiguousarray(inputs, dtype=np.float64)
-        t = np.ascontiguousarray(t, dtype=np.float64)
-        save = saveat(t, pole_check=pole_check, lanes=lanes)
-        self._run(save, nb, inputs, ps, args, y, out, st)
-        return out, y, ps, st[:nb]
+        return self._call(False, lanes, inputs, ps, t, args, pole_check, y, out)
 
     def full_lanes(self, n: int) -> "ModelKernel | None":
         """The kernel whose full-grid lanes driver runs this kernel's full batch of ``n``
@@ -221,13 +212,17 @@ class ModelKernel:
 
     def _final_call(self, lanes, inputs, ps, t, args, pole_check):
         nb = inputs.shape[0]
-        out = np.empty((nb, self.nout))
-        y = np.empty((nb, self.ny))
+        return self._call(True, lanes, inputs, ps, t, args, pole_check, np.empty((nb, self.ny)),
+                          np.empty((nb, self.nout)))
+
+    def _call(self, final, lanes, inputs, ps, t, args, pole_check, y, out):
+        """The run driver over a batch, writing into ``y`` and ``out``: (out, y, ps, stats)."""
+        nb = inputs.shape[0]
         ps = np.array(ps, dtype=np.float64, order="C")
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         inputs = np.ascontiguousarray(inputs, dtype=np.float64)
         t = np.ascontiguousarray(t, dtype=np.float64)
-        save = saveat(t, final=True, pole_check=pole_check, lanes=lanes)
+        save = saveat(t, final=final, pole_check=pole_check, lanes=lanes)
         self._run(save, nb, inputs, ps, args, y, out, st)
         return out, y, ps, st[:nb]
 

@@ -175,12 +175,6 @@ class Kernel:
             raise ValueError(f"{what} must have shape ({n},), got {a.shape}")
         return a
 
-    def _params(self, p) -> np.ndarray:
-        a = self._vector(p, self.np, "p")
-        if not np.all(np.isfinite(a)):
-            raise ValueError("p must be finite")
-        return a
-
     # ---------------------------------------------------------------------------------------
     def rhs(self, t: float, y, p) -> np.ndarray:
         """f(t, y; p) as an array; raises IntegrationError if the model rejects the state."""
@@ -253,22 +247,12 @@ class Kernel:
         With ``check`` (default) a failure raises :class:`IntegrationError`; otherwise it is
         reported in ``Solution.status``/``message``.
         """
-        t, extra = self._settings(method, t_out, rtol, atol, h, max_steps, newton_tol,
-                                  newton_maxiter)
-        y0 = self._vector(y0, self.ny, "y0")
-        if not np.all(np.isfinite(y0)):
-            raise ValueError("y0 must be finite")
-        p = self._params(p)
-        y = np.full((t.size, self.ny), np.nan)
-        st = np.zeros(1, dtype=STATS_DTYPE)
-        self.driver(method)(saveat(t, outputs=False), 1, y0, p, extra, y, None, st)
-        st = st[0]
-        message = "success"
-        if st["status"]:
-            message = failure_message(st, self.state_names, max_steps)
-            if check:
-                raise IntegrationError(message)
-        return _solution(t, y, method, st, message)
+        y0, p = self._vector(y0, self.ny, "y0"), self._vector(p, self.np, "p")
+        sol = self.solve_batch(method, y0[None], p, t_out,
+                               rtol, atol, h, max_steps, newton_tol, newton_maxiter, check=False)[0]
+        if check and sol.status:
+            raise IntegrationError(sol.message)
+        return sol
 
     def solve_batch(self, method: str, y0s, ps, t_out, rtol: float = 1e-10,
                     atol: float = 1e-12, h: float | None = None,

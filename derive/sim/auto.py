@@ -77,18 +77,9 @@ def structural(symmetric: bool, effects: tuple, method: str) -> tuple:
     tuple of (str, int)
         (formulation, pole mode) pairs; see :func:`pole_mode`.
     """
-    return _structural(symmetric, tuple(effects), method, fx.VERSION[0])
-
-
-@functools.lru_cache(maxsize=256)
-def _structural(symmetric, effects, method, version) -> tuple:
-    """What of ``plan`` depends on the scene's structure alone (cached; ``version`` is the
-    effects registry's, so registering an effect invalidates it): the formulations by cost
-    that the method can run, each with its pole mode; a singular one only with a Routh
-    reduction."""
-    out = []
+    out, effects = [], tuple(effects)
     routh = has_routh(symmetric, effects)
-    for name in _by_cost(symmetric, effects, version):
+    for name in _by_cost(symmetric, effects):
         if method_reason(method, name, effects):
             continue
         mode = pole_mode(name)
@@ -111,14 +102,14 @@ def candidates(scene, effects: tuple | None = None) -> list[str]:
     """The applicable formulations, cheapest first (see the module docstring); ``effects`` as
     in :func:`plan`."""
     effects = scene.effects if effects is None else effects
-    return [name for name in _by_cost(scene.symmetric, effects, fx.VERSION[0])
+    return [name for name in _by_cost(scene.symmetric, effects)
             if REGISTRY[name].applicable(scene) is None]
 
 
 @functools.lru_cache(maxsize=256)
-def _by_cost(symmetric, effects, version) -> tuple:
+def _by_cost(symmetric, effects) -> tuple:
     """Every registered formulation for this body symmetry and these effects, cheapest first
-    (cached: the costs are fixed once the models are generated)."""
+    (cached: the shipped models and their costs are fixed, and looking them up reads the disk)."""
     known = {name: _known_cost((name, symmetric, effects)) for name in REGISTRY}
     rank = {name: i for i, name in enumerate(REGISTRY)}
     return tuple(sorted(REGISTRY, key=lambda n: (known[n] is None, known[n] or 0, rank[n])))

@@ -52,6 +52,7 @@ from derive.sim.saveat import SaveAt
 from derive.sim.scene import load_scene
 from derive.sim.validator import _Validator, same_model_part
 from derive.symbolic import effects as fx
+from derive.symbolic import integrable
 from derive.symbolic.formulations import OUTPUTS, REGISTRY
 
 #: Bytes of work arrays per chunk: large enough that the Python per chunk is noise (one call
@@ -249,8 +250,8 @@ def batch_results(bp: "BatchPlan") -> list[Result]:
     """A batch plan run, one Result per trajectory (what :func:`simulate_batch` returns):
     its candidate formulations in turn until no start is refused, by the full batch driver
     (a Taylor method's lanes for a batch of at least LANES_MIN). The integrals of the
-    integrable cases are classified once per body and effect values
-    (:func:`derive.sim.plan.integrals_key`)."""
+    integrable cases are classified once for the scenes read with the first one's model part
+    (:func:`_validated`)."""
     scs, t, method = bp.scenes, bp.t, bp.method
     for formulation, pole_check in bp.candidates:
         desc, kernel, args = bp.kernel(formulation)
@@ -266,14 +267,12 @@ def batch_results(bp: "BatchPlan") -> list[Result]:
     for b in np.flatnonzero(suspect).tolist():
         _check_pole(desc, t, out[b, 1], scs[b].simulate.rtol)
     nfev = st["nfev"].tolist()
-    rows: dict = {}
-    results = []
-    for b, sc in enumerate(scs):
-        key = plan.integrals_key(sc)
-        if key not in rows:
-            rows[key] = plan.integral_rows_of(sc)
-        results.append(_result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True, integrals=rows[key]))
-    return results
+    first = plan.integral_rows_of(scs[0])
+    # (a Goryachev–Chaplygin body's case depends on the state, each scene's own)
+    by_state = integrable.needs_area_level(*scs[0].body.moments)
+    return [_result(desc, out[b], y[b], t, sc, method, nfev[b], finite=True,
+                    integrals=first if not by_state and _model_part_of(sc, scs[0]) else plan.integral_rows_of(sc))
+            for b, sc in enumerate(scs)]
 
 
 @dataclass

@@ -110,15 +110,6 @@ class Plan:
         return integral_rows_of(self.scene)
 
 
-def integrals_key(scene: Scene) -> tuple:
-    """What the scene's integrable case depends on: the body, each effect's values and, for a
-    Goryachev–Chaplygin body (the case holds on L·n = 0 only), whether the state is on that
-    level. Scenes with one key share :func:`integral_rows_of` (a batch classifies each key once)."""
-    level = integrable.on_area_level(scene) if integrable.needs_area_level(*scene.body.moments) else None
-    return (scene.body, tuple((k, v.effect, repr(tuple(v._values.values()))) for k, v in scene.tables.items()),
-            repr(scene.terms), level)
-
-
 def integral_rows_of(scene: Scene) -> list:
     """``[(name, formula, values, component)]``: the extra integral of the scene's integrable
     case (empty for a general body) as its formula, ``formula(L, n, values)`` with L and n rows

@@ -83,6 +83,7 @@ from derive.codegen.solvers import _method_context
 from derive.methods.registry import METHODS, measure_window, method as compiled
 from derive.methods.status import Status
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
+from derive.runtime import records
 from derive.runtime.records import STATS_DTYPE
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, classify_values, relabel_params
 
@@ -311,26 +312,9 @@ def source(desc, method: str) -> str:
 
 
 def driver_args(method: str, rtol: float, atol: float, max_steps: int) -> tuple:
-    """The measured driver's arguments for a tolerance-driven ``method``, in its C order
-    (:data:`derive.methods.registry.DRIVER_PARAMS`: DOP853's ``rtol, atol, h0, max_steps``, the
-    Taylor method's ``rtol, atol, max_steps``; ``h0`` = 0, the driver's own first step).
-
-    Parameters
-    ----------
-    method : str
-        A compiled method with a measure window (:func:`derive.methods.registry.measure_window`).
-    rtol, atol : float
-        The tolerances.
-    max_steps : int
-        The step budget.
-
-    Returns
-    -------
-    tuple
-        The values, in the order of the method's C parameters after ``n_out``.
-    """
-    values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps}
-    return tuple(values[name] for _, name in compiled(method).params)
+    """The measured driver's arguments for a tolerance-driven ``method``
+    (:func:`derive.runtime.records.driver_args`)."""
+    return tuple(records.driver_args(method, rtol, atol, None, max_steps))
 
 
 def c_sources(desc, method: str) -> dict[str, str]:

@@ -32,7 +32,6 @@ and only deriving a model calls ``potential``/``torque``.
 """
 from __future__ import annotations
 
-import functools
 import math
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -250,7 +249,6 @@ def register(effect: Effect, table: Table | None = None) -> None:
     if effect.table not in TABLES and effect.table not in USER_TABLES:
         raise ValueError(f"effect {effect.name!r}: unknown table {effect.table!r}")
     REGISTRY[effect.name] = effect
-    _changed()
 
 
 def unregister(name: str) -> None:
@@ -258,15 +256,6 @@ def unregister(name: str) -> None:
     effect = REGISTRY.pop(name)
     if not any(e.table == effect.table for e in REGISTRY.values()):
         TABLES.pop(effect.table, None)
-    _changed()
-
-
-#: Bumped whenever the registry changes, so that what is computed from it can be cached.
-VERSION = [0]
-
-
-def _changed() -> None:
-    VERSION[0] += 1
 
 
 def for_table(table: str, values: dict) -> Effect:
@@ -282,13 +271,7 @@ def ordered(names) -> tuple[str, ...]:
     the order they were registered, then the user's terms by kind (``USER_TABLES``) and name
     (a digest of their content). So a model's effects, its name and its parameter layout depend
     neither on the order a scene lists them in nor on which user terms this process registered
-    first (a second process, registering the scene's terms afresh, finds the same model).
-    Cached per registry version (every plan asks it for each candidate formulation)."""
-    return _ordered(tuple(names), VERSION[0])
-
-
-@functools.lru_cache(maxsize=512)
-def _ordered(names: tuple, version: int) -> tuple[str, ...]:
+    first (a second process, registering the scene's terms afresh, finds the same model)."""
     unknown = [n for n in names if n not in REGISTRY]
     if unknown:
         raise KeyError(f"unknown effect {unknown[0]!r} (known: {', '.join(REGISTRY)})")

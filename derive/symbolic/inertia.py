@@ -108,7 +108,7 @@ SOLIDS = {
         "sphere", parameters=(M, R),
         position=(_r * sp.sin(_theta) * sp.cos(_phi), _r * sp.sin(_theta) * sp.sin(_phi), _r * sp.cos(_theta)),
         jacobian=_r**2 * sp.sin(_theta),
-        # φ innermost: the trigonometric integrals in φ vanish first, which is ~3× faster.
+        # φ innermost: the trigonometric integrals in φ vanish first, so the later ones are simpler.
         limits=((_phi, 0, 2 * sp.pi), (_r, 0, R), (_theta, 0, sp.pi)),
     ),
     # Solid cone, apex at the origin, axis +z, height H, base radius R: radius r ≤ R z / H.

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from derive.symbolic.lagrangian import I1, I2, I3, Mass, Reduction, g, heavy_symmetric_top, l, p_alpha, p_gamma
+from derive.symbolic.lagrangian import I1, I2, I3, Reduction, heavy_symmetric_top, p_alpha, p_gamma
 from derive.symbolic.rotations import beta, beta_d
 
 omega0 = sp.Symbol("omega_0", real=True)

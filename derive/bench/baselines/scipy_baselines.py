@@ -36,7 +36,7 @@ import math
 import operator
 
 #: SciPy hands the rhs a NumPy array; its elements as Python floats (one ``tolist``) make the
-#: scalar arithmetic 2–3× faster than on NumPy scalars. Symbolic callers pass ``values=list``.
+#: scalar arithmetic cheaper than on NumPy scalars. Symbolic callers pass ``values=list``.
 AS_FLOATS = operator.methodcaller("tolist")
 
 
