@@ -1,10 +1,10 @@
-"""The reader of textbook vector algebra (derive/lecture/vector_algebra.py): components, matrices,
+"""Textbook vector algebra (the vector grammar under derive/lecture/vector_algebra_model.py): components, matrices,
 determinants, sums over particles, integrals over the mass and the torque, checked against rigid
 rotation derived from first principles."""
 import pytest
 
 from derive.lecture import notes_check
-from derive.lecture import vector_algebra as va
+from derive.lecture import vector_algebra_model as va
 
 HEAD = "A point mass $m$ at $\\mathbf{r}$ turns with $\\boldsymbol{\\omega}$.\n\n"
 

@@ -1,11 +1,12 @@
-"""Statements in textbook vector algebra for the notes checker (read by `derive.lecture.vector_algebra`):
-each member against the first readable one, in the model of rigid rotation that module derives.
+"""Statements in textbook vector algebra for the notes checker (read by the vector grammar under
+`derive.lecture.vector_algebra_model`): each member against the first readable one, in the model
+of rigid rotation that module derives.
 
 Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_algebra_first`
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra`, the single edits
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, SymPy.
 """
 from __future__ import annotations
@@ -16,7 +17,7 @@ import itertools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture import vector_algebra as va
+from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
@@ -56,7 +57,7 @@ class AlgebraStatements:
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
-        state.system = reading.system
+        state.system = reading.model
         first = reading.members[0]
         state.head = reading.source[:first[0].end].strip()
         self.ctx.head = state.head

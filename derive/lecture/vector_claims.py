@@ -5,7 +5,7 @@ correction), and the torque-free d𝐋/dt = 0 written out in components.
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
-:mod:`~derive.lecture.vector_models`),
+:mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
 :mod:`derive.lecture.comparing`, SymPy.
 """
 from __future__ import annotations
@@ -17,7 +17,8 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
-from derive.lecture.vector_models import LAW
+from derive.lecture.vector_models import is_quantity
+from derive.lecture.vector_parser import LAW
 
 
 class VectorStatements:
@@ -41,7 +42,8 @@ class VectorStatements:
         self.ctx.head = reading.source[:first[0].end].strip()
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
-        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
+        quantity = first[0].atom is not None and is_quantity(first[0].atom)
+        kind = "kinematics" if reading.model == "frame" else ("definition" if quantity else "identity")
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         for k in range(1, len(first)):
             if first[k].value is LAW or first[0].value is LAW:

@@ -43,50 +43,28 @@ from __future__ import annotations
 
 import itertools
 import re
-from dataclasses import dataclass
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import verify as vf
-from derive.lecture.vector_models import Model, _FreeIndex, _is_tensor, _is_vector, model_of, prepare, vectorish
-from derive.lecture.vector_parser import _VParser
+from derive.lecture import vector_parser as vp
+from derive.lecture.vector_models import Model, model_of, prepare, vectorish
+from derive.lecture.vector_parser import Reading, _is_tensor, _is_vector
+
 
 # ---- reading and checking one statement ----------------------------------------------------------
-@dataclass
-class Reading:
-    members: list       # one list of VMember per value of the free indices
-    relations: list
-    model: str
-    free: str           # the free indices ("", "i", "ij")
-    source: str
-
-
 def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
-    """Read a statement with this module's grammar (`lx.NotRead` when it cannot)."""
+    """Read a statement with the vector grammar in the model `model_of` picks (`lx.NotRead` when it
+    cannot); ``reading.model`` is that model's name."""
     text = prepare(text)
     toks = lx.scan_cells(text)
     if not vectorish(toks):
         raise lx.NotRead("not a vector formula")
     name = model_of(toks, sticky)
-    model = Model(name, derivation)
     plain_l = any(t.kind == "atom" and t.value.base == "I" and (t.value.bold or t.value.dots == 2) for t in toks) \
         or any(t.kind == "cmd" and t.value == "times" for t in toks)
-    free = ""
-    while True:
-        try:
-            readings = []
-            for values in itertools.product((1, 2, 3), repeat=len(free)):
-                p = _VParser(toks, vocab, text, model, plain_l)
-                readings.append(p.vchain(dict(zip(free, values))))
-            break
-        except _FreeIndex as err:
-            if err.letter in free or len(free) >= 2:
-                raise lx.NotRead(f"the index {err.letter} is neither summed nor free") from None
-            free += err.letter
-        except (sp.ShapeError, TypeError, ValueError, AttributeError) as err:
-            raise lx.NotRead(f"cannot combine its parts ({type(err).__name__})") from None
-    return Reading([r[0] for r in readings], readings[0][1], name, free, text)
+    return vp.read(toks, text, vocab, Model(name, derivation, plain_l), name)
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
