@@ -131,14 +131,19 @@ class _Parser:
         while self.at("op", "^"):
             self.i += 1
             if self._transpose_mark():
-                base = base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+                base = self.transposed(base)
                 continue
-            exp = self.group_or_token(env)
-            if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
-                    and not (isinstance(exp, sp.Integer)):
-                self.fail("a power of a matrix other than a whole number")
-            base = base ** exp
+            base = self.power(base, self.group_or_token(env))
         return base
+
+    def transposed(self, base):
+        return base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+
+    def power(self, base, exp):
+        if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
+                and not (isinstance(exp, sp.Integer)):
+            self.fail("a power of a matrix other than a whole number")
+        return base ** exp
 
     def _transpose_mark(self) -> bool:
         """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""
@@ -348,25 +353,10 @@ class _Parser:
     def _derivative(self):
         """\\frac{d X}{dt} or \\frac{\\partial L}{\\partial \\dot q}: the quantity, or None."""
         toks = self.toks
-        i = self.i
-
-        def braced_tokens(k):
-            if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
-                return None, k
-            depth = 0
-            for j in range(k, len(toks)):
-                if toks[j].kind == "op" and toks[j].value == "{":
-                    depth += 1
-                elif toks[j].kind == "op" and toks[j].value == "}":
-                    depth -= 1
-                    if depth == 0:
-                        return toks[k + 1:j], j + 1
-            return None, k
-
-        num, k = braced_tokens(i)
+        num, k = braced_tokens(toks, self.i)
         if num is None:
             return None
-        den, k2 = braced_tokens(k)
+        den, k2 = braced_tokens(toks, k)
         if den is None:
             return None
         is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
@@ -461,6 +451,22 @@ class _Parser:
 VECTORS = (LVEC, OMEGA_VEC, DLDT, DLDT_BODY)
 
 
+def braced_tokens(toks, k):
+    """The tokens inside the braced group at toks[k] == '{' and the index after it; (None, k)
+    when there is none or it does not close."""
+    if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
+        return None, k
+    depth = 0
+    for j in range(k, len(toks)):
+        if toks[j].kind == "op" and toks[j].value == "{":
+            depth += 1
+        elif toks[j].kind == "op" and toks[j].value == "}":
+            depth -= 1
+            if depth == 0:
+                return toks[k + 1:j], j + 1
+    return None, k
+
+
 def _dot(a, b):
     """𝛚·𝛚, 𝐋·𝐋, 𝛚·𝐋 of the body's vectors written as such: their dot product in body
     components (𝛚 = ω̃, 𝐋 = (Iᵢ ω̃ᵢ)); None for anything else."""
@@ -513,6 +519,11 @@ def _matrix(self, env):
                     self.i += 1
                     break
             self.i += 1
+    return sp.Matrix(self.rows(env, tok))
+
+
+def _rows(self, env, tok):
+    """A matrix's rows up to its \\end, each entry read by ``self.entry`` (all rows one length)."""
     rows, row = [], []
     while True:
         if self.at("end"):
@@ -520,7 +531,7 @@ def _matrix(self, env):
             break
         if self.peek() is None:
             self.fail("a matrix without its end", tok)
-        row.append(self.expr(env))
+        row.append(self.entry(env))
         if self.at("op", "&"):
             self.i += 1
         elif self.at("op", "\\\\"):
@@ -533,7 +544,13 @@ def _matrix(self, env):
         rows.append(row)
     if len({len(r) for r in rows}) != 1:
         self.fail("rows of different lengths", tok)
-    return sp.Matrix(rows)
+    return rows
+
+
+def _entry(self, env):
+    return self.expr(env)
 
 
 _Parser.matrix = _matrix
+_Parser.rows = _rows
+_Parser.entry = _entry

@@ -4,9 +4,10 @@
 that derive the inertia tensor write the same physics another way: a point mass m at 𝐫 = x x̂ + y ŷ
 + z ẑ, 𝐋 = 𝐫 × 𝐩 with 𝐯 = 𝛚 × 𝐫, ω_x ω_y ω_z, a ``bmatrix`` acting on a column, a determinant with
 unit vectors in its first row, Σᵢ mᵢ over particles, ∫ … dm over the body, I_xx = ∫(y² + z²) dm,
-𝐓 = d𝐋/dt. This module is that model, derived from first principles; the grammar of
-`derive.lecture.vector_parser` reads a statement into SymPy under it (scalars, 3-vectors as 3×1
-matrices, tensors as 3×3 matrices) through the scanner's whitelist:
+𝐓 = d𝐋/dt. This module is the model such a statement is read in, derived from first principles
+(`Algebra`: its symbols, rigid rotation, 𝐋, 𝐈, 𝐩, the torque; the text rewrites; `read`); the
+grammar of `derive.lecture.vector_parser` reads the statement into SymPy under it (scalars,
+3-vectors as 3×1 matrices, tensors as 3×3 matrices) through the scanner's whitelist:
 
 * **the system.** A statement with a sum over particles or an integral over the mass speaks of a
   body: three generic mass points μ_k at 𝐫_k = (x_k, y_k, z_k) (Σᵢ and ∫ dm are both linear in
@@ -24,7 +25,7 @@ matrices, tensors as 3×3 matrices) through the scanner's whitelist:
 * **generic vectors.** Any other bold letter 𝐚 is a generic vector (a_x, a_y, a_z); a relation
   is an identity for all of them only if both sides involve the same ones.
 
-The grammar (products, matrices, determinants, transposes) is `derive.lecture.vector_parser`'s.
+Products, matrices, determinants and transposes are the grammar's (`derive.lecture.vector_parser`).
 """
 from __future__ import annotations
 

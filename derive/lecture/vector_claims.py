@@ -94,18 +94,10 @@ class VectorStatements:
 
     def _vector_fix(self, reading, k, piece):
         """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
-        src, m = reading.source, reading.members[0][k]
         rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
-        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
-        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
-            if n >= 80:
-                break
-            try:
-                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
-            except lx.NotRead:
-                continue
-            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
-                continue
+        left = reading.source[reading.members[0][0].start:reading.members[0][0].end].strip()
+        reread = lambda text: vc.read(text, self.vocab, self.d, self.ctx.vec_model)  # noqa: E731
+        for n, edited, what, _, again in vc.edited_readings(reading, k, reread, 80):
             if vc.holds(again, k, f"{piece}/edit{n}")[0]:
                 return vc.restore(f"{left} {rel} {edited.strip()}"), what
         return None

@@ -17,10 +17,10 @@ principles (`derive.lecture.vector_algebra_model`). The grammar is the same for 
 
 A model gives: ``atom(parser, atom, env, tok)`` (the value of a symbol, or None), ``summed``
 (the environments a sum runs over), ``points`` (an integral's mass points), ``rate(value,
-frame)`` (a time derivative), ``frames`` (the frame names a derivative may carry), ``free`` (the
-letters that may be free indices), ``matrix_products``, ``rates`` (whether the grammar reads
-time derivatives) and ``vocabulary`` (whether an unknown symbol falls back to the scalar
-reader's vocabulary).
+frame)`` (a time derivative; None: not one it reads, the fraction is a quotient), ``frames``
+(the frame names a derivative may carry), ``free`` (the letters that may be free indices),
+``matrix_products``, ``rates`` (whether the grammar reads time derivatives) and ``vocabulary``
+(whether an unknown symbol falls back to the scalar reader's vocabulary).
 """
 from __future__ import annotations
 
@@ -30,7 +30,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.latex_parser import _Parser
+from derive.lecture.latex_parser import _Parser, braced_tokens
 
 AXES = {"x": 0, "y": 1, "z": 2, "1": 0, "2": 1, "3": 2}
 INTEGRAL = "Lambda"                  # the marker ∫ is read as (a bold Λ, which no text here writes)
@@ -187,26 +187,18 @@ class VectorParser(_Parser):
             value = value.cross(right)
         return value
 
-    def factor(self, env):
-        if self.at("op", "-"):
-            self.i += 1
-            return -self.factor(env)
-        base = self.primary(env)
-        while self.at("op", "^"):
-            self.i += 1
-            if self._transpose_mark():
-                if not isinstance(base, sp.MatrixBase):
-                    self.fail("a transpose of a scalar")
-                base = base.T
-                continue
-            exp = self.group_or_token(env)
-            if _is_vector(base) and exp == 2:
-                base = base.dot(base)
-            elif isinstance(base, sp.MatrixBase):
-                self.fail("a power of a vector or matrix")
-            else:
-                base = base ** exp
-        return base
+    def transposed(self, base):
+        if not isinstance(base, sp.MatrixBase):
+            self.fail("a transpose of a scalar")
+        return base.T
+
+    def power(self, base, exp):
+        """v² = v·v; no other power of a vector or a matrix."""
+        if _is_vector(base) and exp == 2:
+            return base.dot(base)
+        if isinstance(base, sp.MatrixBase):
+            self.fail("a power of a vector or matrix")
+        return base ** exp
 
     def primary(self, env):
         tok = self.peek()
@@ -232,37 +224,31 @@ class VectorParser(_Parser):
             self.i += 1
             return self.vsum(env, tok)
         if tok is not None and tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac") and self.model.rates:
+            start = self.i
             X = self._rate(env)
-            if X is not None:
-                return self.model.rate(X, "inertial")
+            value = None if X is None else self.model.rate(X, "inertial")
+            if value is not None:
+                return value
+            self.i = start                              # not a derivative the model reads: a quotient
         return super().primary(env)
 
     # time derivatives
     def _rate(self, env):
         """At \\frac: \\frac{d}{dt} X (X the following product) or \\frac{d X}{dt}: X, or None."""
         t, i = self.toks, self.i + 1
-        if not (i < len(t) and t[i].kind == "op" and t[i].value == "{"):
+        num, j = braced_tokens(t, i)
+        if num is None:
             return None
-        depth, j = 0, i
-        while j < len(t):
-            if t[j].kind == "op" and t[j].value == "{":
-                depth += 1
-            elif t[j].kind == "op" and t[j].value == "}":
-                depth -= 1
-                if depth == 0:
-                    break
-            j += 1
-        den = t[j + 1:j + 5]
+        den = t[j:j + 4]
         if not (len(den) == 4 and den[0].kind == "op" and den[0].value == "{" and den[1].kind == "atom"
                 and den[1].value.base == "d" and not den[1].value.sub and den[2].kind == "atom"
                 and den[2].value.base == "t" and not den[2].value.sub and den[3].kind == "op" and den[3].value == "}"):
             return None
-        num = t[i + 1:j]
         if not num or num[0].kind != "atom" or num[0].value.base != "d" or num[0].value.sub or num[0].value.bold:
             return None
         self.rated = True
         if len(num) == 1:
-            self.i = j + 5
+            self.i = j + 4
             return self.term(env)
         self.i = i + 2                                  # past the d: the numerator is what is differentiated
         value = self.expr(env)
@@ -273,7 +259,8 @@ class VectorParser(_Parser):
     def _framed_rate(self, env):
         """(d𝐗/dt)_{body|inertial|space…} at '(' (no subscript: inertial), or None."""
         start = self.i
-        if not (self.peek(1) is not None and self.peek(1).kind == "cmd" and self.peek(1).value in ("frac", "dfrac", "tfrac")):
+        nxt = self.peek(1)
+        if not (nxt is not None and nxt.kind == "cmd" and nxt.value in ("frac", "dfrac", "tfrac")):
             return None
         self.i += 1
         X = self._rate(env)
@@ -296,7 +283,10 @@ class VectorParser(_Parser):
             if name not in self.model.frames:
                 self.fail(f"a derivative in the frame {name!r}")
             frame = self.model.frames[name]
-        return self.model.rate(X, frame)
+        value = self.model.rate(X, frame)
+        if value is None:
+            self.i = start
+        return value
 
     # matrices and determinants
     def matrix(self, env, det=False):
@@ -305,33 +295,18 @@ class VectorParser(_Parser):
             while not self.at("op", "}"):
                 self.i += 1
             self.i += 1
-        rows, row = [], []
-        while True:
-            if self.at("end"):
-                self.i += 1
-                break
-            if self.peek() is None:
-                self.fail("a matrix without its end", tok)
-            if self.at("cmd") and self.peek().value in ("cdots", "ldots", "dots"):
-                self.fail("a matrix of any size")
-            row.append(_as_value(self.expr(env)))
-            if self.at("op", "&"):
-                self.i += 1
-            elif self.at("op", "\\\\"):
-                self.i += 1
-                rows.append(row)
-                row = []
-            elif not self.at("end"):
-                self.fail("expected '&', '\\\\' or the end of the matrix")
-        if row:
-            rows.append(row)
-        if len({len(r) for r in rows}) != 1:
-            self.fail("rows of different lengths", tok)
+        rows = self.rows(env, tok)
         if det:
             return _determinant(rows)
         if any(isinstance(x, sp.MatrixBase) for r in rows for x in r):
             self.fail("a matrix of vectors")
         return sp.Matrix(rows)
+
+    def entry(self, env):
+        """A matrix entry: one value (a 1×1 product a scalar), never a matrix of any size."""
+        if self.at("cmd") and self.peek().value in ("cdots", "ldots", "dots"):
+            self.fail("a matrix of any size")
+        return _as_value(self.expr(env))
 
     # sums and integrals
     def vsum(self, env, tok):

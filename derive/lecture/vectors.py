@@ -4,6 +4,9 @@ The scalar reader (`derive.lecture.latex`) reads formulas in the derivation's sc
 first pages of a rigid-body lecture are written in vectors instead — T = Σ_p ½ m_p (ω × r_p)·(ω × r_p),
 𝐋 = Ï·ω, (d𝐫/dt)_inertial = ω × 𝐫 — and this module reads and checks those, through the same
 whitelist (the tokens of `derive.lecture.latex.scan`: never ``eval``, never ``sympify``).
+The grammar is `derive.lecture.vector_parser`'s (the one textbook vector algebra is read with,
+under `derive.lecture.vector_algebra_model`); the three models below are
+`derive.lecture.vector_models`'.
 
 Values are SymPy objects of three shapes: a scalar, a 3-vector (a 3×1 matrix of body components)
 and a tensor (a 3×3 matrix). The operations are the usual ones:
@@ -149,6 +152,23 @@ def member_edits(src: str):
             seen.add(e)
             unique.append((e, what))
     return unique
+
+
+def edited_readings(reading, k: int, reread, most: int):
+    """Member k of a reading under each of its first ``most`` single edits (`member_edits`), read
+    again by ``reread`` (the statement's text to a reading): (n, edited member, what, edited
+    statement, its reading), for the readings of the same shape (free indices, members)."""
+    src, m = reading.source, reading.members[0][k]
+    for n, (edited, what) in enumerate(member_edits(src[m.start:m.end])):
+        if n >= most:
+            return
+        again_src = src[:m.start] + edited + " " + src[m.end:]
+        try:
+            again = reread(again_src)
+        except lx.NotRead:
+            continue
+        if again.free == reading.free and len(again.members[0]) == len(reading.members[0]):
+            yield n, edited, what, again_src, again
 
 
 def _operand(src: str, at: int, forward: bool) -> tuple[int, int] | None:
