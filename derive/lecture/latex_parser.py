@@ -85,15 +85,21 @@ class _Parser:
         elif self.at("op", "-"):
             self.i += 1
             sign = -1
-        total = sign * self.term(env)
+        total = self.signed(sign, self.term(env))
         while self.at("op", "+") or self.at("op", "-") or self.at("cmd", "pm"):
             op = self.take(self.peek().kind).value
             if op == "pm":
                 self.fail("± is not a single formula")
-            rhs = self.term(env)
-            total, rhs = _summands(total, rhs)
+            total, rhs = self.summands(total, self.term(env))
             total = total + rhs if op == "+" else total - rhs
         return total
+
+    def signed(self, sign, value):
+        return sign * value
+
+    def summands(self, a, b):
+        """Two terms made ready to add (see `_summands`)."""
+        return _summands(a, b)
 
     def _starts_factor(self):
         tok = self.peek()
@@ -106,22 +112,31 @@ class _Parser:
         return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial") | FUNCTIONS.keys()
 
     def term(self, env):
-        value = self.factor(env)
+        value = self.operand(env)
         while True:
             if self.at("cmd", "cdot") or self.at("op", "*"):
                 self.i += 1
-                right = self.factor(env)
-                dot = _dot(value, right)
-                value = dot if dot is not None else _mul(value, right)
+                value = self.dotted(value, self.operand(env))
             elif self.at("cmd", "times"):
                 self.fail("vector products (×) are not read")
             elif self.at("op", "/"):
                 self.i += 1
-                value = value / self.factor(env)
+                value = value / self.operand(env)
             elif self._starts_factor():
-                value = _mul(value, self.factor(env))
+                value = self.juxtaposed(value, self.operand(env))
             else:
                 return value
+
+    def operand(self, env):
+        """An operand of a product (·, /, juxtaposition)."""
+        return self.factor(env)
+
+    def dotted(self, a, b):
+        dot = _dot(a, b)
+        return dot if dot is not None else _mul(a, b)
+
+    def juxtaposed(self, a, b):
+        return _mul(a, b)
 
     def factor(self, env):
         if self.at("op", "-"):
@@ -402,26 +417,7 @@ class _Parser:
 
     def sum(self, env, tok):
         """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""
-        if not self.at("op", "_"):
-            self.fail("a sum without its index", tok)
-        self.i += 1
-        sub_tok = self.peek()
-        if self.at("op", "{"):
-            self.i += 1
-            names = []
-            while not self.at("op", "}"):
-                t_ = self.peek()
-                if t_ is None:
-                    self.fail("unbalanced '{'", tok)
-                if t_.kind == "atom":
-                    names.append(t_.value.base + t_.value.sub)
-                elif t_.kind in ("rel", "num"):
-                    pass
-                self.i += 1
-            self.i += 1
-        else:
-            t_ = self.take("atom")
-            names = [t_.value.base]
+        names, sub_tok = self.sum_index(tok)
         index = "".join(names)
         if self.at("op", "^"):
             self.i += 1
@@ -438,6 +434,26 @@ class _Parser:
             inner = {**env, **dict(zip(letters, values))}
             total = total + self.sum_term(inner)
         return total
+
+    def sum_index(self, tok):
+        """The symbols under a Σ (``_{ij}``, ``_{i=1}``: its letters; numbers and = skipped) and the
+        subscript's first token."""
+        if not self.at("op", "_"):
+            self.fail("a sum without its index", tok)
+        self.i += 1
+        sub_tok = self.peek()
+        if not self.at("op", "{"):
+            return [self.take("atom").value.base], sub_tok
+        self.i += 1
+        names = []
+        while not self.at("op", "}"):
+            if self.peek() is None:
+                self.fail("unbalanced '{'", tok)
+            if self.peek().kind == "atom":
+                names.append(self.peek().value.base + self.peek().value.sub)
+            self.i += 1
+        self.i += 1
+        return names, sub_tok
 
     def sum_term(self, env):
         value = self.factor(env)

@@ -142,38 +142,24 @@ class VectorParser(_Parser):
         return super()._starts_factor()
 
     # sums and products: × binds tighter than · and juxtaposition
-    def expr(self, env):
-        sign = 1
-        if self.at("op", "+"):
-            self.i += 1
-        elif self.at("op", "-"):
-            self.i += 1
-            sign = -1
-        total = self.term(env)
-        if sign == -1:
-            total = -_not_law(total)
-        while self.at("op", "+") or self.at("op", "-"):
-            op = self.take("op").value
-            total = _not_law(total)
-            rhs = _not_law(self.term(env))
-            if isinstance(total, sp.MatrixBase) != isinstance(rhs, sp.MatrixBase) and not (total == 0 or rhs == 0):
-                self.fail("a scalar added to a vector or tensor")
-            total = total + rhs if op == "+" else total - rhs
-        return total
+    def signed(self, sign, value):
+        return value if sign == 1 else -_not_law(value)
 
-    def term(self, env):
-        value = self.xterm(env)
-        while True:
-            if self.at("cmd", "cdot") or self.at("op", "*"):
-                self.i += 1
-                value = _dot(value, self.xterm(env), self.model.matrix_products)
-            elif self.at("op", "/"):
-                self.i += 1
-                value = value / self.xterm(env)
-            elif self._starts_factor():
-                value = _juxt(value, self.xterm(env), self.model.matrix_products)
-            else:
-                return value
+    def summands(self, a, b):
+        """Two terms to add: of one kind (a scalar and a vector or tensor only when one is 0)."""
+        a, b = _not_law(a), _not_law(b)
+        if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) and not (a == 0 or b == 0):
+            self.fail("a scalar added to a vector or tensor")
+        return a, b
+
+    def operand(self, env):
+        return self.xterm(env)
+
+    def dotted(self, a, b):
+        return _dot(a, b, self.model.matrix_products)
+
+    def juxtaposed(self, a, b):
+        return _juxt(a, b, self.model.matrix_products)
 
     def xterm(self, env):
         value = self.factor(env)
@@ -181,7 +167,7 @@ class VectorParser(_Parser):
             self.i += 1
             right = self.factor(env)
             while not isinstance(right, sp.MatrixBase) and self._starts_factor():
-                right = _juxt(right, self.factor(env), self.model.matrix_products)   # r × m v
+                right = self.juxtaposed(right, self.factor(env))     # r × m v
             if not (_is_vector(value) and _is_vector(right)):
                 self.fail("× of something that is not a vector")
             value = value.cross(right)
@@ -312,32 +298,14 @@ class VectorParser(_Parser):
     def vsum(self, env, tok):
         """Σ under a subscript index (and an upper limit): the summand (one product) read once for
         each environment the model's ``summed`` gives."""
-        if not self.at("op", "_"):
-            self.fail("a sum without its index", tok)
-        self.i += 1
-        if self.at("op", "{"):
-            self.i += 1
-            names = []
-            while not self.at("op", "}"):
-                if self.peek() is None:
-                    self.fail("unbalanced '{'", tok)
-                if self.peek().kind == "atom":
-                    names.append(self.peek().value.base + self.peek().value.sub)
-                self.i += 1
-            self.i += 1
-        else:
-            names = [self.take("atom").value.base]
+        names, _ = self.sum_index(tok)
         upper = []
         if self.at("op", "^"):
             self.i += 1
-            if self.at("op", "{"):
-                while not self.at("op", "}"):
-                    self.i += 1
-                    upper.append(self.peek(-1))
-                upper = upper[1:]
-            else:
-                upper = [self.peek()]
-            self.i += 1
+            upper, after = braced_tokens(self.toks, self.i)
+            if upper is None:
+                upper, after = [self.peek()], self.i + 1
+            self.i = after
         start, total = self.i, None
         for inner in self.model.summed(self, names, upper, env, tok):
             self.i = start
@@ -359,7 +327,7 @@ class VectorParser(_Parser):
             if not (self.at("atom") and self.peek().value.base == "d"):
                 self.fail("an integral without its dm")
             self.i += 2
-            term = _juxt(mass, term, self.model.matrix_products)
+            term = self.juxtaposed(mass, term)
             total = term if total is None else total + term
         return total
 
