@@ -1,10 +1,12 @@
-"""The reader of textbook vector algebra (derive/lecture/vector_algebra.py): components, matrices,
+"""Textbook vector algebra (the vector grammar under derive/lecture/vector_algebra_model.py): components, matrices,
 determinants, sums over particles, integrals over the mass and the torque, checked against rigid
 rotation derived from first principles."""
 import pytest
 
 import kept_readings as kept
-from derive.lecture import vector_algebra as va
+from derive.lecture import latex as lx
+from derive.lecture import vector_algebra_model as va
+from derive.lecture import vectors as vc
 
 HEAD = "A point mass $m$ at $\\mathbf{r}$ turns with $\\boldsymbol{\\omega}$.\n\n"
 
@@ -153,3 +155,15 @@ def test_a_cross_product_in_the_wrong_order_is_a_typo_corrected_in_the_texts_not
     assert [c.verdict for c in claims if "bmatrix" not in c.latex and "L" in c.latex] == ["typo"]
     fixed = [c.correction for c in claims if c.verdict == "typo"][0]
     assert "\\times (\\boldsymbol{\\omega} \\times \\mathbf{r})" in fixed
+
+
+def test_one_grammar_reads_both_notations_and_the_model_decides_what_juxtaposed_matrices_mean():
+    # textbook matrices act on a column by juxtaposition: 𝐈𝛚 is 𝐋
+    reading = va.read("\\mathbf{L} = \\mathbf{I} \\boldsymbol{\\omega}", va.State())
+    (left, right), = reading.members
+    assert left.value.shape == (3, 1) and all(x == 0 for x in va.difference(left.value, right.value))
+    # the lecture writes a tensor on a vector with ·, and the same grammar refuses Ï ω without it
+    principal = vc.read("\\mathbf{L} = \\ddot{I} \\cdot \\boldsymbol{\\omega}", lx.Vocabulary(), None)
+    assert principal.model == "principal" and vc.holds(principal, 1, "s")[0]
+    with pytest.raises(lx.NotRead):
+        vc.read("\\mathbf{L} = \\ddot{I} \\boldsymbol{\\omega}", lx.Vocabulary(), None)

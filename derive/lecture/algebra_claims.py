@@ -1,11 +1,12 @@
-"""Statements in textbook vector algebra for the notes checker (read by `derive.lecture.vector_algebra`):
-each member against the first readable one, in the model of rigid rotation that module derives.
+"""Statements in textbook vector algebra for the notes checker (read by the vector grammar under
+`derive.lecture.vector_algebra_model`): each member against the first readable one, in the model
+of rigid rotation that module derives.
 
 Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_algebra_first`
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra`, the single edits
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, SymPy.
 """
 from __future__ import annotations
@@ -16,7 +17,7 @@ import itertools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture import vector_algebra as va
+from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
@@ -56,7 +57,7 @@ class AlgebraStatements:
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
-        state.system = reading.system
+        state.system = reading.model
         first = reading.members[0]
         state.head = reading.source[:first[0].end].strip()
         self.ctx.head = state.head
@@ -78,17 +79,8 @@ class AlgebraStatements:
     def _algebra_fix(self, reading, ref, k):
         """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
         power) after which it equals the reference member: (the statement corrected, what), or None."""
-        src, m = reading.source, reading.members[0][k]
-        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
-            if n >= 60:
-                return None
-            again_src = src[:m.start] + edited + " " + src[m.end:]
-            try:
-                again = va.read(again_src, copy.deepcopy(self._alg))
-            except lx.NotRead:
-                continue
-            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
-                continue
+        reread = lambda text: va.read(text, copy.deepcopy(self._alg))  # noqa: E731
+        for _, _, what, again_src, again in vc.edited_readings(reading, k, reread, 60):
             if self._algebra_pair(again, ref, k, record=False)[0] == "holds":
                 return again_src.strip(), what
         return None
@@ -146,20 +138,22 @@ def _where(d) -> str:
     return f"claim − derived ≠ 0 (entry {k // d.shape[1] + 1},{k % d.shape[1] + 1})"
 
 
-def _named(text) -> bool:
+def _tokens(text) -> list:
+    """The scanner's tokens of a text, none when it cannot scan it."""
     try:
-        toks = lx.scan(va.prepare(text))
+        return lx.scan(text)
     except lx.NotRead:
-        return False
+        return []
+
+
+def _named(text) -> bool:
+    toks = _tokens(va.prepare(text))
     return len(toks) > 1 and toks[0].kind == "atom" and toks[1].kind == "rel"
 
 
 def _entry_name(source, member):
     """('I', 'xy') when the member is one off-diagonal entry of the inertia tensor, else None."""
-    try:
-        toks = lx.scan(source[member.start:member.end])
-    except lx.NotRead:
-        return None
+    toks = _tokens(source[member.start:member.end])
     if len(toks) == 1 and toks[0].kind == "atom" and toks[0].value.base == "I" and len(toks[0].value.sub) == 2 \
             and toks[0].value.sub[0] != toks[0].value.sub[1] and not toks[0].value.bold:
         return ("I", toks[0].value.sub)
@@ -168,11 +162,7 @@ def _entry_name(source, member):
 
 def _mentions(text, state) -> bool:
     """A torque letter of the text, or an entry of the inertia tensor (I_xy), in the statement."""
-    try:
-        toks = lx.scan(va.prepare(text))
-    except lx.NotRead:
-        return False
-    for t in toks:
+    for t in _tokens(va.prepare(text)):
         if t.kind != "atom":
             continue
         a = t.value

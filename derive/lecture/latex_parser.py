@@ -85,15 +85,21 @@ class _Parser:
         elif self.at("op", "-"):
             self.i += 1
             sign = -1
-        total = sign * self.term(env)
+        total = self.signed(sign, self.term(env))
         while self.at("op", "+") or self.at("op", "-") or self.at("cmd", "pm"):
             op = self.take(self.peek().kind).value
             if op == "pm":
                 self.fail("± is not a single formula")
-            rhs = self.term(env)
-            total, rhs = _summands(total, rhs)
+            total, rhs = self.summands(total, self.term(env))
             total = total + rhs if op == "+" else total - rhs
         return total
+
+    def signed(self, sign, value):
+        return sign * value
+
+    def summands(self, a, b):
+        """Two terms made ready to add (see `_summands`)."""
+        return _summands(a, b)
 
     def _starts_factor(self):
         tok = self.peek()
@@ -106,22 +112,31 @@ class _Parser:
         return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial") | FUNCTIONS.keys()
 
     def term(self, env):
-        value = self.factor(env)
+        value = self.operand(env)
         while True:
             if self.at("cmd", "cdot") or self.at("op", "*"):
                 self.i += 1
-                right = self.factor(env)
-                dot = _dot(value, right)
-                value = dot if dot is not None else _mul(value, right)
+                value = self.dotted(value, self.operand(env))
             elif self.at("cmd", "times"):
                 self.fail("vector products (×) are not read")
             elif self.at("op", "/"):
                 self.i += 1
-                value = value / self.factor(env)
+                value = value / self.operand(env)
             elif self._starts_factor():
-                value = _mul(value, self.factor(env))
+                value = self.juxtaposed(value, self.operand(env))
             else:
                 return value
+
+    def operand(self, env):
+        """An operand of a product (·, /, juxtaposition)."""
+        return self.factor(env)
+
+    def dotted(self, a, b):
+        dot = _dot(a, b)
+        return dot if dot is not None else _mul(a, b)
+
+    def juxtaposed(self, a, b):
+        return _mul(a, b)
 
     def factor(self, env):
         if self.at("op", "-"):
@@ -131,14 +146,19 @@ class _Parser:
         while self.at("op", "^"):
             self.i += 1
             if self._transpose_mark():
-                base = base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+                base = self.transposed(base)
                 continue
-            exp = self.group_or_token(env)
-            if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
-                    and not (isinstance(exp, sp.Integer)):
-                self.fail("a power of a matrix other than a whole number")
-            base = base ** exp
+            base = self.power(base, self.group_or_token(env))
         return base
+
+    def transposed(self, base):
+        return base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
+
+    def power(self, base, exp):
+        if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
+                and not (isinstance(exp, sp.Integer)):
+            self.fail("a power of a matrix other than a whole number")
+        return base ** exp
 
     def _transpose_mark(self) -> bool:
         """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""
@@ -348,25 +368,10 @@ class _Parser:
     def _derivative(self):
         """\\frac{d X}{dt} or \\frac{\\partial L}{\\partial \\dot q}: the quantity, or None."""
         toks = self.toks
-        i = self.i
-
-        def braced_tokens(k):
-            if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
-                return None, k
-            depth = 0
-            for j in range(k, len(toks)):
-                if toks[j].kind == "op" and toks[j].value == "{":
-                    depth += 1
-                elif toks[j].kind == "op" and toks[j].value == "}":
-                    depth -= 1
-                    if depth == 0:
-                        return toks[k + 1:j], j + 1
-            return None, k
-
-        num, k = braced_tokens(i)
+        num, k = braced_tokens(toks, self.i)
         if num is None:
             return None
-        den, k2 = braced_tokens(k)
+        den, k2 = braced_tokens(toks, k)
         if den is None:
             return None
         is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
@@ -412,26 +417,7 @@ class _Parser:
 
     def sum(self, env, tok):
         """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""
-        if not self.at("op", "_"):
-            self.fail("a sum without its index", tok)
-        self.i += 1
-        sub_tok = self.peek()
-        if self.at("op", "{"):
-            self.i += 1
-            names = []
-            while not self.at("op", "}"):
-                t_ = self.peek()
-                if t_ is None:
-                    self.fail("unbalanced '{'", tok)
-                if t_.kind == "atom":
-                    names.append(t_.value.base + t_.value.sub)
-                elif t_.kind in ("rel", "num"):
-                    pass
-                self.i += 1
-            self.i += 1
-        else:
-            t_ = self.take("atom")
-            names = [t_.value.base]
+        names, sub_tok = self.sum_index(tok)
         index = "".join(names)
         if self.at("op", "^"):
             self.i += 1
@@ -449,6 +435,26 @@ class _Parser:
             total = total + self.sum_term(inner)
         return total
 
+    def sum_index(self, tok):
+        """The symbols under a Σ (``_{ij}``, ``_{i=1}``: its letters; numbers and = skipped) and the
+        subscript's first token."""
+        if not self.at("op", "_"):
+            self.fail("a sum without its index", tok)
+        self.i += 1
+        sub_tok = self.peek()
+        if not self.at("op", "{"):
+            return [self.take("atom").value.base], sub_tok
+        self.i += 1
+        names = []
+        while not self.at("op", "}"):
+            if self.peek() is None:
+                self.fail("unbalanced '{'", tok)
+            if self.peek().kind == "atom":
+                names.append(self.peek().value.base + self.peek().value.sub)
+            self.i += 1
+        self.i += 1
+        return names, sub_tok
+
     def sum_term(self, env):
         value = self.factor(env)
         while (self.at("cmd", "cdot") or self._starts_factor()) and not self.at("cmd", "sum"):
@@ -459,6 +465,22 @@ class _Parser:
 
 
 VECTORS = (LVEC, OMEGA_VEC, DLDT, DLDT_BODY)
+
+
+def braced_tokens(toks, k):
+    """The tokens inside the braced group at toks[k] == '{' and the index after it; (None, k)
+    when there is none or it does not close."""
+    if k >= len(toks) or toks[k].kind != "op" or toks[k].value != "{":
+        return None, k
+    depth = 0
+    for j in range(k, len(toks)):
+        if toks[j].kind == "op" and toks[j].value == "{":
+            depth += 1
+        elif toks[j].kind == "op" and toks[j].value == "}":
+            depth -= 1
+            if depth == 0:
+                return toks[k + 1:j], j + 1
+    return None, k
 
 
 def _dot(a, b):
@@ -513,6 +535,11 @@ def _matrix(self, env):
                     self.i += 1
                     break
             self.i += 1
+    return sp.Matrix(self.rows(env, tok))
+
+
+def _rows(self, env, tok):
+    """A matrix's rows up to its \\end, each entry read by ``self.entry`` (all rows one length)."""
     rows, row = [], []
     while True:
         if self.at("end"):
@@ -520,7 +547,7 @@ def _matrix(self, env):
             break
         if self.peek() is None:
             self.fail("a matrix without its end", tok)
-        row.append(self.expr(env))
+        row.append(self.entry(env))
         if self.at("op", "&"):
             self.i += 1
         elif self.at("op", "\\\\"):
@@ -533,7 +560,13 @@ def _matrix(self, env):
         rows.append(row)
     if len({len(r) for r in rows}) != 1:
         self.fail("rows of different lengths", tok)
-    return sp.Matrix(rows)
+    return rows
+
+
+def _entry(self, env):
+    return self.expr(env)
 
 
 _Parser.matrix = _matrix
+_Parser.rows = _rows
+_Parser.entry = _entry

@@ -1,6 +1,31 @@
-"""The model of `derive.lecture.vector_algebra`: its symbols (𝛚, 𝛚̇, one point mass, the body's
-three mass points), rigid rotation (d/dt with ṙ = 𝛚 × 𝐫), the system's 𝐋, 𝐈, 𝐩 and torque, the
-text rewrites the scanner needs, the products of its values and the zero test.
+"""Vector algebra as textbooks write it: components, matrices, sums over particles and integrals over the mass.
+
+`derive.lecture.vectors` reads the lecture's own vector notation (m_p, 𝐫_p, Σ_p, Ï, ê_i). Texts
+that derive the inertia tensor write the same physics another way: a point mass m at 𝐫 = x x̂ + y ŷ
++ z ẑ, 𝐋 = 𝐫 × 𝐩 with 𝐯 = 𝛚 × 𝐫, ω_x ω_y ω_z, a ``bmatrix`` acting on a column, a determinant with
+unit vectors in its first row, Σᵢ mᵢ over particles, ∫ … dm over the body, I_xx = ∫(y² + z²) dm,
+𝐓 = d𝐋/dt. This module is the model such a statement is read in, derived from first principles
+(`Algebra`: its symbols, rigid rotation, 𝐋, 𝐈, 𝐩, the torque; the text rewrites; `read`); the
+grammar of `derive.lecture.vector_parser` reads the statement into SymPy under it (scalars,
+3-vectors as 3×1 matrices, tensors as 3×3 matrices) through the scanner's whitelist:
+
+* **the system.** A statement with a sum over particles or an integral over the mass speaks of a
+  body: three generic mass points μ_k at 𝐫_k = (x_k, y_k, z_k) (Σᵢ and ∫ dm are both linear in
+  the summand, so an identity for generic points is the identity, and three points keep a formula
+  that is not linear in the sum from passing). Inside the sum or integral x, y, z, 𝐫 and r are
+  the current point's (xᵢ, 𝐫ᵢ, mᵢ with the sum's index too). A statement with a plain m and no
+  sum speaks of one point mass m at 𝐫 = (x, y, z) (𝐫ᵢ, mᵢ outside a sum: "the particle in
+  question"). Otherwise the system of the previous statement.
+* **rigid rotation.** Every point moves with 𝐯 = 𝛚 × 𝐫; 𝐩 = m𝐯; 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫); the
+  inertia tensor is 𝐈 = ∂𝐋/∂𝛚 (so 𝐋 = 𝐈𝛚 however a text writes 𝐈); I_xx, I_xy, I_ij are its
+  entries, I_𝛚 = 𝛚̂ᵀ𝐈𝛚̂ the moment about the axis of 𝛚, L_x a component of 𝐋, L_𝛚 = 𝐋·𝛚̂.
+* **time derivatives.** d/dt moves each point by ṙ = 𝛚 × 𝐫 and 𝛚 by 𝛚̇ = 𝛂 (generic): the
+  torque (τ, Γ, or a letter the text sets equal to 𝐫 × 𝐅) is d𝐋/dt and the force 𝐅 is d𝐩/dt —
+  the laws of motion, the starting point — so 𝐓 = 𝐈𝛂 is compared with d(𝐈𝛚)/dt = 𝐈𝛂 + 𝛚 × 𝐈𝛚.
+* **generic vectors.** Any other bold letter 𝐚 is a generic vector (a_x, a_y, a_z); a relation
+  is an identity for all of them only if both sides involve the same ones.
+
+Products, matrices, determinants and transposes are the grammar's (`derive.lecture.vector_parser`).
 """
 from __future__ import annotations
 
@@ -11,7 +36,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.vector_models import _is_tensor, _is_vector
+from derive.lecture import vector_parser as vp
+from derive.lecture.vector_parser import AXES, INTEGRAL, _as_value
 
 POINTS = 3
 W = sp.Matrix(sp.symbols("omega_x omega_y omega_z", real=True))
@@ -21,13 +47,11 @@ R0 = sp.Matrix(sp.symbols("x y z", real=True))
 MU = sp.symbols(f"mu_1:{POINTS + 1}", positive=True)
 RK = [sp.Matrix(sp.symbols(f"x_{k} y_{k} z_{k}", real=True)) for k in range(1, POINTS + 1)]
 E = sp.eye(3)
-AXIS = {"x": 0, "y": 1, "z": 2, "1": 0, "2": 1, "3": 2}
 UNIT = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 TORQUES = ("tau", "Gamma")
 _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
-INTEGRAL = "Lambda"                  # the marker ∫ is read as (a bold Λ, which no text here writes)
 # a macro's bold letter in braces, {\boldsymbol L}_i: the letter with its subscript
 _BOLD_GROUP = re.compile(r"\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
@@ -65,27 +89,6 @@ class State:
     torques: set = field(default_factory=lambda: set(TORQUES))
     defs: dict = field(default_factory=dict)        # (base, sub) → the text's value of an entry
     head: str | None = None                         # the left side this reader last set
-
-
-@dataclass
-class Member:
-    value: object
-    start: int
-    end: int
-    skip: str = ""                                  # why it is not compared (a force inside a product)
-    generics: frozenset = frozenset()
-    literal: object = None                          # the matrix as written, when the member is one
-    law: bool = False                               # a torque or a force in it
-    rated: bool = False                             # a time derivative in it (d/dt, a dot, 𝛂)
-
-
-@dataclass
-class Reading:
-    members: list                                   # one list of Member per value of the free indices
-    relations: list
-    free: str
-    source: str
-    system: str
 
 
 def rate(e):
@@ -137,54 +140,6 @@ def linear(system: str) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix(sum((MU[k] * W.cross(RK[k]) for k in range(POINTS)), sp.zeros(3, 1)))
 
 
-def _as_value(v):
-    if isinstance(v, sp.MatrixBase) and v.shape == (1, 1):
-        return v[0, 0]
-    return v
-
-
-def _juxt(a, b):
-    a, b = _as_value(a), _as_value(b)
-    ma, mb = isinstance(a, sp.MatrixBase), isinstance(b, sp.MatrixBase)
-    if ma and mb:
-        if _is_vector(a) and _is_vector(b):
-            return a * b.T                          # the dyadic 𝐚𝐛
-        if a.shape[1] != b.shape[0]:
-            raise lx.NotRead("a product of shapes that do not conform")
-        return _as_value(a * b)
-    return a * b
-
-
-def _dot(a, b):
-    a, b = _as_value(a), _as_value(b)
-    if _is_vector(a) and _is_vector(b):
-        return a.dot(b)
-    if _is_tensor(a) and _is_vector(b):
-        return a * b
-    if _is_vector(a) and _is_tensor(b):
-        return b.T * a
-    return _juxt(a, b)
-
-
-def _determinant(rows):
-    """A 3×3 determinant, expanded along a row of vectors when it has one (the cross product's form)."""
-    if len(rows) != 3 or any(len(r) != 3 for r in rows):
-        raise lx.NotRead("a determinant that is not 3×3")
-    vec = [n for n, r in enumerate(rows) if any(isinstance(x, sp.MatrixBase) for x in r)]
-    if not vec:
-        return sp.Matrix(rows).det()
-    if len(vec) != 1:
-        raise lx.NotRead("a determinant with vectors in two rows")
-    n = vec[0]
-    total = sp.zeros(3, 1)
-    for j in range(3):
-        minor = sp.Matrix([[rows[a][b] for b in range(3) if b != j] for a in range(3) if a != n])
-        if any(isinstance(x, sp.MatrixBase) for x in minor):
-            raise lx.NotRead("a determinant of vectors")
-        total += (-1) ** (n + j) * minor.det() * rows[n][j]
-    return total
-
-
 def difference(a, b):
     """a − b expanded, entry by entry; None when the shapes differ."""
     a, b = _as_value(a), _as_value(b)
@@ -202,3 +157,172 @@ def _zeroed(d):
     if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)):
         d = sp.simplify(d)          # |𝛚| and 𝛚̂: a polynomial's expansion is already canonical
     return d
+
+
+class Algebra:
+    """The values of one statement's symbols under rigid rotation (the grammar's model, see
+    `derive.lecture.vector_parser`), in a system of one point mass or the body's points."""
+
+    vocabulary = False                  # every symbol is this model's (else the statement is not read)
+    free = "ijkl"
+    matrix_products = True              # the texts' matrices act on columns by juxtaposition
+    rates = True
+    frames: dict = {}                   # no frame subscripts: d/dt is the inertial one
+
+    def __init__(self, state: State, system: str):
+        self.state, self.system = state, system
+
+    def rate(self, X, frame):
+        return rate(X)
+
+    def points(self):
+        return [({"point": k, "index": None}, MU[k]) for k in range(POINTS)]
+
+    def summed(self, p, names, upper, env, tok):
+        """Σᵢ over the body's points (the index's upper limit a letter, or mᵢ in the statement)."""
+        if len(names) != 1 or len(names[0]) != 1:
+            p.fail("a sum over more than one index", tok)
+        if any(t is not None and t.kind == "num" for t in upper):
+            p.fail("a sum over the body's axes", tok)    # Σ_{i=1}^{3}: not over particles
+        return [{**env, "point": k, "index": names[0]} for k in range(POINTS)]
+
+    def _point(self, env):
+        k = env.get("point")
+        return (M0, R0) if k is None else (MU[k], RK[k])
+
+    @staticmethod
+    def _own(sub, env) -> bool:
+        """Whether a subscript names the current point (none, or the sum's index; 𝐫ᵢ outside a sum
+        is the particle in question)."""
+        return sub == "" or sub == env.get("index") or (env.get("point") is None and sub == "i")
+
+    def atom(self, p, a, env, tok):
+        """The value of a symbol (None: not this model's); records on the parser the generic
+        vectors, torques, forces and rates the member involves."""
+        base, sub, bold = a.base, a.sub, a.bold or a.text.startswith("\\vec")
+        if a.dots > 1 or a.primes or a.tilde:
+            return None
+        if a.dots == 1:
+            p.rated = True
+            inner = self.atom(p, a.with_(dots=0), env, tok)
+            if inner is None:
+                return None
+            if base == "omega":
+                return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
+            return rate(inner)
+        mass, r = self._point(env)
+        if a.hat and base in UNIT and (not sub or base == "x"):
+            return E[:, p.axis(sub, env, tok) if sub else UNIT[base]]
+        if base == "omega":
+            n = sp.sqrt(W.dot(W))
+            if a.hat:
+                return W / n
+            if bold:
+                return W
+            return n if not sub else (W[AXES[sub]] if sub in AXES else None)
+        if base == "alpha":
+            p.rated = True
+            return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
+        if a.hat:
+            return None
+        if base == "r" and self._own(sub, env):
+            return r if bold else sp.sqrt(r.dot(r))
+        if base in "xyz" and len(base) == 1 and not bold:
+            if self._own(sub, env):
+                return r[AXES[base]]
+            if base == "x" and len(sub) == 1:
+                return r[p.axis(sub, env, tok)]
+            return None
+        if base == "m" and not bold and self._own(sub, env):
+            return mass
+        if base == "v" and self._own(sub, env):
+            v = W.cross(r)
+            return v if bold else sp.sqrt(v.dot(v))
+        if base == "v" and not bold and sub in ("x", "y", "z"):
+            return W.cross(r)[AXES[sub]]
+        if base == "p" and bold and self._own(sub, env):
+            return mass * W.cross(r)
+        if base == "delta" and len(sub) == 2:
+            return sp.Integer(int(p.axis(sub[0], env, tok) == p.axis(sub[1], env, tok)))
+        return self._system_atom(p, a, env, tok, mass, r, bold)
+
+    def _system_atom(self, p, a, env, tok, mass, r, bold):
+        """𝐋, 𝐈 and their entries, the torque, the force, a generic vector."""
+        base, sub = a.base, a.sub
+        system = "body" if sub in ("system", "textsystem", "G", "mathcalG", "mathrmG") else self.system
+        point = env.get("point") is not None and sub == env.get("index")
+        if base == "L":
+            if bold:
+                if point:
+                    return mass * r.cross(W.cross(r))
+                return momentum(system) if sub in ("", "system", "textsystem") else None
+            if len(sub) == 1 and sub in AXES:
+                return momentum(self.system)[AXES[sub]]
+            if "omega" in sub:
+                return momentum(self.system).dot(W / sp.sqrt(W.dot(W)))
+            return None
+        if base == "I":
+            if a.text.startswith(("\\mathrm", "\\mathbb")) and not sub:
+                return sp.eye(3)
+            if point:
+                return (mass * r.cross(W.cross(r))).jacobian(W)
+            if sub in ("", "system", "textsystem", "G", "mathcalG", "mathrmG"):
+                return tensor(system)
+            if "omega" in sub:
+                n = W / sp.sqrt(W.dot(W))
+                return (n.T * tensor(self.system) * n)[0, 0]
+            if len(sub) == 2 and not bold:
+                if (base, sub) in self.state.defs:
+                    return self.state.defs[(base, sub)]
+                return tensor(self.system)[p.axis(sub[0], env, tok), p.axis(sub[1], env, tok)]
+            return None
+        if base in self.state.torques or (base == "F" and bold and not sub):
+            p.law = True
+        if base in self.state.torques:
+            if bold and not sub:
+                return torque(self.system)
+            if not bold and sub in AXES and len(sub) == 1:
+                return torque(self.system)[AXES[sub]]
+            return None
+        if base == "F" and bold and not sub:
+            p.force_at.append(p.i)
+            return rate(linear(self.system))
+        if len(base) == 1 and base.isalpha() and base not in "dmt":
+            comps = sp.Matrix(sp.symbols(f"{base}_x {base}_y {base}_z", real=True))
+            if bold and not sub:
+                p.generics.add(base)
+                return comps
+            if not bold and sub in ("x", "y", "z"):
+                p.generics.add(base)
+                return comps[AXES[sub]]
+        return None
+
+
+def system_of(toks, state: State) -> str:
+    """body (a sum or an integral), single (a plain m), else the previous statement's system."""
+    if any(t.kind == "cmd" and t.value == "sum" for t in toks) or \
+            any(t.kind == "atom" and t.value.base == INTEGRAL for t in toks):
+        return "body"
+    if any(t.kind == "atom" and t.value.base == "m" and t.value.sub in ("", "i") and not t.value.bold for t in toks):
+        return "single"
+    if any(t.kind == "atom" and t.value.sub in ("system", "textsystem") for t in toks):
+        return "body"
+    return state.system
+
+
+def learn_torque(toks, state: State) -> None:
+    """A bold letter set equal to 𝐫 × 𝐅 is the text's torque."""
+    if len(toks) >= 5 and toks[0].kind == "atom" and toks[0].value.bold and toks[1].kind == "rel" \
+            and toks[2].kind == "atom" and toks[2].value.base == "r" and toks[3].kind == "cmd" \
+            and toks[3].value == "times" and toks[4].kind == "atom" and toks[4].value.base == "F":
+        state.torques.add(toks[0].value.base)
+
+
+def read(text: str, state: State) -> vp.Reading:
+    """Read a statement with the vector grammar under this model (`lx.NotRead` when it cannot);
+    ``reading.model`` is the system it speaks of ("body" or "single")."""
+    text = prepare(text)
+    toks = lx.scan_cells(text)
+    learn_torque(toks, state)
+    system = system_of(toks, state)
+    return vp.read(toks, text, lx.Vocabulary(), Algebra(state, system), system)

@@ -5,7 +5,7 @@ correction), and the torque-free d𝐋/dt = 0 written out in components.
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
-:mod:`~derive.lecture.vector_models`),
+:mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
 :mod:`derive.lecture.comparing`, SymPy.
 """
 from __future__ import annotations
@@ -17,7 +17,8 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
-from derive.lecture.vector_models import LAW
+from derive.lecture.vector_models import is_quantity
+from derive.lecture.vector_parser import LAW
 
 
 class VectorStatements:
@@ -41,7 +42,8 @@ class VectorStatements:
         self.ctx.head = reading.source[:first[0].end].strip()
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
-        kind = "kinematics" if reading.model == "frame" else ("definition" if first[0].quantity else "identity")
+        quantity = first[0].atom is not None and is_quantity(first[0].atom)
+        kind = "kinematics" if reading.model == "frame" else ("definition" if quantity else "identity")
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         for k in range(1, len(first)):
             if first[k].value is LAW or first[0].value is LAW:
@@ -92,18 +94,10 @@ class VectorStatements:
 
     def _vector_fix(self, reading, k, piece):
         """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
-        src, m = reading.source, reading.members[0][k]
         rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
-        left = src[reading.members[0][0].start:reading.members[0][0].end].strip()
-        for n, (edited, what) in enumerate(vc.member_edits(src[m.start:m.end])):
-            if n >= 80:
-                break
-            try:
-                again = vc.read(src[:m.start] + edited + " " + src[m.end:], self.vocab, self.d, self.ctx.vec_model)
-            except lx.NotRead:
-                continue
-            if again.free != reading.free or len(again.members[0]) != len(reading.members[0]):
-                continue
+        left = reading.source[reading.members[0][0].start:reading.members[0][0].end].strip()
+        reread = lambda text: vc.read(text, self.vocab, self.d, self.ctx.vec_model)  # noqa: E731
+        for n, edited, what, _, again in vc.edited_readings(reading, k, reread, 80):
             if vc.holds(again, k, f"{piece}/edit{n}")[0]:
                 return vc.restore(f"{left} {rel} {edited.strip()}"), what
         return None

@@ -1,16 +1,19 @@
 """The three models of the vector reader (`derive.lecture.vectors`): what 𝐫, 𝐯, 𝐋, Ï, T and ω
 stand for in a statement about particles, about body principal axes or about a rotating frame
-(`Model`), which model a statement is read in (`model_of`), whether a display is one for the
-vector reader (`vectorish`) and the text rewrites it needs first (`prepare`).
+(`Model`, the values the grammar of `derive.lecture.vector_parser` asks for), which model a
+statement is read in (`model_of`), whether a display is one for the vector reader (`vectorish`)
+and the text rewrites it needs first (`prepare`).
 """
 from __future__ import annotations
 
 import functools
+import itertools
 import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.vector_parser import LAW, _FreeIndex
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -21,39 +24,29 @@ R_B = sp.Matrix(sp.symbols("x_b y_b z_b", real=True))          # a body-fixed po
 L_B = sp.Matrix(sp.symbols("L_b1:4", real=True))               # 𝐋's body components (time-dependent)
 LD_B = sp.Matrix(sp.symbols("Ld_b1:4", real=True))             # their rates
 W = sp.Matrix(lx.W)
-AXES = {"x": 0, "y": 1, "z": 2, "1": 0, "2": 1, "3": 2}
 FRAMES = {"body": "body", "b": "body", "rot": "body", "rotating": "body", "inertial": "inertial",
           "space": "inertial", "fixed": "inertial", "lab": "inertial", "s": "inertial"}
 _UNIT = re.compile(r"\\(?:mathbf|mathbb|boldsymbol|bm)\s*\{\s*(?:\\(?:mathbb|mathbf)\s*\{\s*)?1\s*\}(?:\s*\})?")
 
 
-class _Law:
-    """τ as a whole side: the law of motion d𝐋/dt = τ."""
-
-
-LAW = _Law()
-
-
-class _FreeIndex(Exception):
-    def __init__(self, letter):
-        super().__init__(letter)
-        self.letter = letter
-
-
-def _is_tensor(v) -> bool:
-    return isinstance(v, sp.MatrixBase) and v.shape == (3, 3)
-
-
-def _is_vector(v) -> bool:
-    return isinstance(v, sp.MatrixBase) and v.shape == (3, 1)
+def is_quantity(a) -> bool:
+    """Whether a symbol is one known quantity (T, 𝐋, Ï, I_ij): a member that is its definition."""
+    return a.base in ("T", "L") or (a.base == "I" and (a.bold or a.dots == 2 or len(a.sub) == 2))
 
 
 # ---- the models -----------------------------------------------------------------------------------
 class Model:
     """What the symbols of one statement stand for (see the module docstring)."""
 
-    def __init__(self, name: str, derivation=None):
+    vocabulary = True                   # a scalar the model does not know is the scalar reader's
+    free = "ij"                         # the letters a free body index may be
+    matrix_products = False             # a tensor acts on a vector with ·, never by juxtaposition
+    frames = FRAMES
+
+    def __init__(self, name: str, derivation=None, plain_l_vector: bool = False):
         self.name, self.d = name, derivation
+        self.plain_l_vector = plain_l_vector
+        self.rates = name == "frame"    # the grammar reads d𝐗/dt only in a rotating frame
 
     # particle references
     def velocity(self, k):
@@ -102,6 +95,89 @@ class Model:
             return Xd
         R = self.d.conv.matrix()
         return R.T * (R.applyfunc(self.dt) * X) + Xd
+
+    # the grammar's hooks (`derive.lecture.vector_parser`)
+    def rate(self, X, frame):
+        """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
+        if X is R_B or X is L_B:
+            return self.derivative(X, frame)
+        if isinstance(X, sp.MatrixBase):
+            raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
+        return None
+
+    def points(self):
+        return []
+
+    def summed(self, p, names, upper, env, tok):
+        """Σ_p over particles (two generic ones) or Σ_i, Σ_ij over body axes (1, 2, 3)."""
+        index = "".join(names)
+        if index == "p":
+            ranges = [("p", range(PARTICLES))]
+        elif index and all(ch in "ijk" for ch in index):
+            ranges = [(ch, (1, 2, 3)) for ch in index]
+        else:
+            p.fail(f"a sum over {index!r}", tok)
+        return [{**env, **{n: v for (n, _), v in zip(ranges, values)}}
+                for values in itertools.product(*(r for _, r in ranges))]
+
+    def atom(self, p, a, env, tok):
+        """The value of a symbol in this model, or None (then the scalar reader's vocabulary)."""
+        v = self._vector(p, a, env, tok)
+        if v is None and a.sub in ("i", "j") and a.sub not in env:
+            raise _FreeIndex(a.sub)
+        return v
+
+    def _vector(self, p, a, env, tok):
+        plain = not a.hat and not a.tilde and not a.primes and not a.dots
+        if (a.base == "omega" or _text_letter(p, a, "angular velocity")) and not a.sub and not a.dots and not a.tilde:
+            return self.omega         # the text's letter for the angular velocity (Landau's 𝛀) too
+        if a.base == "e" and (a.hat or a.bold) and not a.primes and not a.sup and len(a.sub) == 1:
+            return sp.eye(3)[:, p.axis(a.sub, env, tok)]
+        if a.base == "I" and not a.sub and (a.bold or a.dots == 2):
+            return self.tensor
+        if a.base == "I" and len(a.sub) == 2 and not a.bold:
+            return self.tensor[p.axis(a.sub[0], env, tok), p.axis(a.sub[1], env, tok)]
+        if a.base == "I" and a.sub in ("i", "j") and not a.bold:
+            return self.moments[p.axis(a.sub, env, tok)]
+        if a.base == "Xi" and a.bold:
+            return sp.eye(3)
+        if a.base == "delta" and len(a.sub) == 2:
+            return sp.Integer(int(p.axis(a.sub[0], env, tok) == p.axis(a.sub[1], env, tok)))
+        if a.base == "m" and a.sub == "p" and plain:
+            return M_P[_particle(p, env, tok)]
+        if a.base == "r" and plain and a.sub[:1] == "p":
+            r = R_P[_particle(p, env, tok)]
+            if len(a.sub) == 2 and not a.bold:
+                return r[p.axis(a.sub[1], env, tok)]
+            if a.sub == "p":
+                return r if a.bold else sp.sqrt(r.dot(r))
+        if a.base == "v" and plain and a.sub == "p":
+            v = self.velocity(_particle(p, env, tok))
+            return v if a.bold else sp.sqrt(v.dot(v))
+        if a.base == "r" and plain and a.bold and not a.sub:
+            return R_B
+        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
+            return self.momentum
+        if _text_letter(p, a, "angular momentum") and plain and (a.bold and not a.sub or len(a.sub) == 1 and
+                                                                 self.name == "particle" and not a.bold):
+            return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
+        if a.base == "T" and plain and not a.sub and not a.bold:
+            return self.kinetic
+        if a.base == "tau" and not a.sub:
+            return LAW
+        return None
+
+
+def _text_letter(p, a, meaning) -> bool:
+    """Whether the text names a's letter, as a vector, by this meaning (`derive.lecture.names`)."""
+    names = getattr(p.vocab, "names", None)
+    return names is not None and not p.vocab.names_off and names.letters.get((a.base, "vector")) == meaning
+
+
+def _particle(p, env, tok):
+    if "p" not in env:
+        p.fail("a particle quantity outside a sum over particles", tok)
+    return env["p"]
 
 
 def model_of(toks, sticky: str | None) -> str:

@@ -1,6 +1,26 @@
-"""The parser of the vector reader (`derive.lecture.vectors`): a statement's tokens (those of
-`derive.lecture.latex.scan`) to SymPy scalars, 3-vectors and 3×3 tensors, with ×, ·, dyadic
-products, sums over particles and frame derivatives, under one `Model`.
+"""The one grammar of vector notation: a statement's tokens (those of `derive.lecture.latex.scan`)
+to SymPy scalars, 3-vectors (3×1 matrices) and 3×3 tensors under a model that gives the symbols
+their values.
+
+Both vector readers parse with it: the lecture's own notation (`derive.lecture.vectors`, its
+models in `derive.lecture.vector_models`) and textbook vector algebra derived from first
+principles (`derive.lecture.vector_algebra_model`). The grammar is the same for both:
+
+* ``a \\times b`` binds tightest (a·b×c = a·(b×c)); ``r \\times m v`` takes the scalar with the vector;
+* ``a \\cdot b`` — the dot product, a tensor on a vector (Ï·ω = Ïω, ω·Ï = Ïᵀω);
+* juxtaposition — a scalar factor, the dyadic 𝐚𝐛ᵀ of two vectors, and (where the model's
+  notation writes matrices, ``matrix_products``) the product of conforming matrices;
+* ``^T`` a transpose, ``v^2`` = v·v, ``|v|`` = √(v·v), matrices, determinants (``vmatrix``,
+  ``|array|``, expanded along a row of unit vectors);
+* sums ``\\sum_i`` (the model says over what), integrals ``∫ … dm`` over the body's mass, and
+  time derivatives ``\\frac{d}{dt} X``, ``\\frac{dX}{dt}``, ``(\\frac{dX}{dt})_{body}``.
+
+A model gives: ``atom(parser, atom, env, tok)`` (the value of a symbol, or None), ``summed``
+(the environments a sum runs over), ``points`` (an integral's mass points), ``rate(value,
+frame)`` (a time derivative; None: not one it reads, the fraction is a quotient), ``frames``
+(the frame names a derivative may carry), ``free`` (the letters that may be free indices),
+``matrix_products``, ``rates`` (whether the grammar reads time derivatives) and ``vocabulary``
+(whether an unknown symbol falls back to the scalar reader's vocabulary).
 """
 from __future__ import annotations
 
@@ -10,179 +30,230 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.latex_parser import _Parser
-from derive.lecture.vector_models import (
-    AXES, FRAMES, LAW, L_B, M_P, PARTICLES, R_B, R_P, Model, _FreeIndex, _is_tensor, _is_vector,
-)
+from derive.lecture.latex_parser import _Parser, braced_tokens
+
+AXES = {"x": 0, "y": 1, "z": 2, "1": 0, "2": 1, "3": 2}
+INTEGRAL = "Lambda"                  # the marker ∫ is read as (a bold Λ, which no text here writes)
+
+
+class _Law:
+    """τ as a whole side: the law of motion d𝐋/dt = τ."""
+
+
+LAW = _Law()
+
+
+class _FreeIndex(Exception):
+    def __init__(self, letter):
+        super().__init__(letter)
+        self.letter = letter
+
+
+def _is_tensor(v) -> bool:
+    return isinstance(v, sp.MatrixBase) and v.shape == (3, 3)
+
+
+def _is_vector(v) -> bool:
+    return isinstance(v, sp.MatrixBase) and v.shape == (3, 1)
+
 
 @dataclass
-class VMember:
+class Member:
     value: object
-    start: int          # source span of the member
+    start: int                                      # source span of the member
     end: int
-    quantity: bool      # a single known quantity (T, 𝐋, Ï, I_ij): member 0 is its definition
+    atom: object = None                             # the member's Atom when it is a single symbol
+    skip: str = ""                                  # why it is not compared (a force inside a product)
+    generics: frozenset = frozenset()
+    literal: object = None                          # the matrix as written, when the member is one
+    law: bool = False                               # a torque or a force in it
+    rated: bool = False                             # a time derivative in it (d/dt, a dot, 𝛂)
 
 
-class _VParser(_Parser):
-    """The grammar of `derive.lecture.latex_parser._Parser` with vector values (see the module docstring)."""
+@dataclass
+class Reading:
+    members: list       # one list of Member per value of the free indices
+    relations: list
+    free: str           # the free indices ("", "i", "ij")
+    source: str
+    model: str          # the model's name
 
-    def __init__(self, toks, vocab, source, model: Model, plain_l_vector: bool):
+
+def read(toks, source, vocab, model, name: str) -> Reading:
+    """Parse a statement under a model, once per value (1, 2, 3) of each free index it turns out
+    to have (`lx.NotRead` when it cannot)."""
+    free = ""
+    while True:
+        try:
+            readings = []
+            for values in itertools.product((1, 2, 3), repeat=len(free)):
+                p = VectorParser(list(toks), vocab, source, model)
+                readings.append(p.members(dict(zip(free, values))))
+            break
+        except _FreeIndex as err:
+            if err.letter in free or len(free) >= 2:
+                raise lx.NotRead(f"the index {err.letter} is neither summed nor free") from None
+            free += err.letter
+        except (sp.ShapeError, TypeError, ValueError, AttributeError, IndexError) as err:
+            raise lx.NotRead(f"cannot combine its parts ({type(err).__name__})") from None
+    return Reading([r[0] for r in readings], readings[0][1], free, source, name)
+
+
+class VectorParser(_Parser):
+    """`derive.lecture.latex_parser._Parser` with vector values (see the module docstring)."""
+
+    def __init__(self, toks, vocab, source, model):
         super().__init__(toks, vocab, source)
         self.model = model
-        self.plain_l_vector = plain_l_vector
+        self.generics: set = set()
+        self.force_at: list = []                    # token indices of 𝐅
+        self.law = self.rated = False
+        self.stop_dm = False
 
-    def vchain(self, env):
-        members, rels = [], []
+    # a chain of members
+    def members(self, env):
+        out, rels = [], []
         while True:
-            start = self.peek().pos if self.peek() else len(self.source)
+            if self.peek() is None or self.at("rel"):
+                self.fail("a side of a relation is empty")
+            start, first = self.peek().pos, self.i
             before = self.source[:start].rstrip()
             if before.endswith("\\left"):          # the member's span takes its \left along
                 start = len(before) - len("\\left")
-            if self.peek() is None or self.at("rel"):
-                self.fail("a side of a relation is empty")
-            first = self.i
-            value = self.expr(env)
-            single = self.i == first + 1 and self.toks[first].kind == "atom"
+            self.generics, self.force_at, self.law, self.rated = set(), [], False, False
+            value = _as_value(self.expr(env))
             end = self.peek().pos if self.peek() else len(self.source)
-            members.append(VMember(value, start, end, single and self._is_quantity(self.toks[first].value)))
+            atom = self.toks[first].value if self.i == first + 1 and self.toks[first].kind == "atom" else None
+            literal = value if self.toks[first].kind == "begin" and self.i > first else None
+            skip = "a force inside a product (only its law is known)" if self.force_at and self.i - first > 1 else ""
+            out.append(Member(value, start, end, atom, skip, frozenset(self.generics), literal, self.law, self.rated))
             if not self.at("rel"):
                 break
             rels.append(self.take("rel").value)
         if self.peek() is not None:
             self.fail(f"unexpected {self.peek().value!r}")
-        return members, rels
+        return out, rels
 
-    @staticmethod
-    def _is_quantity(a) -> bool:
-        return a.base in ("T", "L") or (a.base == "I" and (a.bold or a.dots == 2 or len(a.sub) == 2))
+    def _starts_factor(self):
+        if self.stop_dm and self.at("atom") and self.peek().value.base == "d" and not self.peek().value.sub:
+            nxt = self.peek(1)
+            if nxt is not None and nxt.kind == "atom" and nxt.value.base == "m" and not nxt.value.sub:
+                return False
+        return super()._starts_factor()
 
-    # products: × binds tighter than · and juxtaposition
-    def term(self, env):
-        value = self.xterm(env)
-        while True:
-            if self.at("cmd", "cdot") or self.at("op", "*"):
-                self.i += 1
-                value = _dot(value, self.xterm(env))
-            elif self.at("op", "/"):
-                self.i += 1
-                value = value / self.xterm(env)
-            elif self._starts_factor() and not self.at("cmd", "sum"):
-                value = _juxtapose(value, self.xterm(env))
-            elif self.at("cmd", "sum"):
-                value = _juxtapose(value, self.xterm(env))
-            else:
-                return value
+    # sums and products: × binds tighter than · and juxtaposition
+    def signed(self, sign, value):
+        return value if sign == 1 else -_not_law(value)
+
+    def summands(self, a, b):
+        """Two terms to add: of one kind (a scalar and a vector or tensor only when one is 0)."""
+        a, b = _not_law(a), _not_law(b)
+        if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) and not (a == 0 or b == 0):
+            self.fail("a scalar added to a vector or tensor")
+        return a, b
+
+    def operand(self, env):
+        return self.xterm(env)
+
+    def dotted(self, a, b):
+        return _dot(a, b, self.model.matrix_products)
+
+    def juxtaposed(self, a, b):
+        return _juxt(a, b, self.model.matrix_products)
 
     def xterm(self, env):
         value = self.factor(env)
         while self.at("cmd", "times"):
             self.i += 1
             right = self.factor(env)
+            while not isinstance(right, sp.MatrixBase) and self._starts_factor():
+                right = self.juxtaposed(right, self.factor(env))     # r × m v
             if not (_is_vector(value) and _is_vector(right)):
                 self.fail("× of something that is not a vector")
             value = value.cross(right)
         return value
 
-    def factor(self, env):
-        if self.at("op", "-"):
-            self.i += 1
-            return -self.factor(env)
-        base = self.primary(env)
-        while self.at("op", "^"):
-            self.i += 1
-            exp = self.group_or_token(env)
-            if _is_vector(base):
-                if exp != 2:
-                    self.fail("a power of a vector other than 2")
-                base = base.dot(base)
-            elif isinstance(base, sp.MatrixBase):
-                self.fail("a power of a tensor")
-            else:
-                base = base ** exp
-        return base
+    def transposed(self, base):
+        if not isinstance(base, sp.MatrixBase):
+            self.fail("a transpose of a scalar")
+        return base.T
+
+    def power(self, base, exp):
+        """v² = v·v; no other power of a vector or a matrix."""
+        if _is_vector(base) and exp == 2:
+            return base.dot(base)
+        if isinstance(base, sp.MatrixBase):
+            self.fail("a power of a vector or matrix")
+        return base ** exp
 
     def primary(self, env):
         tok = self.peek()
-        if tok is not None and tok.kind == "op" and tok.value == "(":
-            framed = self._framed_derivative(env)
+        if tok is not None and tok.kind == "op" and tok.value == "(" and self.model.rates:
+            framed = self._framed_rate(env)
             if framed is not None:
                 return framed
         if tok is not None and tok.kind == "op" and tok.value == "|":
             self.i += 1
-            value = self.expr(env)
+            if self.at("begin"):
+                value = self.matrix(env, det=True)
+            else:
+                inner = _as_value(self.expr(env))
+                value = sp.sqrt(inner.dot(inner)) if _is_vector(inner) else sp.Abs(inner)
             self.take("op", "|")
-            return sp.sqrt(value.dot(value)) if _is_vector(value) else sp.Abs(value)
-        if tok is not None and tok.kind == "cmd" and tok.value == "frac":
-            found = self._derivand(self.i + 1)
-            if found is not None:
-                self.i = found[1]
-                return self.model.derivative(found[0], "inertial")
+            return value
+        if tok is not None and tok.kind == "begin":
+            return self.matrix(env, det=tok.value == "vmatrix")
+        if tok is not None and tok.kind == "atom" and tok.value.base == INTEGRAL and tok.value.bold:
+            self.i += 1
+            return self.integral(env)
         if tok is not None and tok.kind == "cmd" and tok.value == "sum":
             self.i += 1
             return self.vsum(env, tok)
+        if tok is not None and tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac") and self.model.rates:
+            start = self.i
+            X = self._rate(env)
+            value = None if X is None else self.model.rate(X, "inertial")
+            if value is not None:
+                return value
+            self.i = start                              # not a derivative the model reads: a quotient
         return super().primary(env)
 
-    def expr(self, env):
-        sign = 1
-        if self.at("op", "+"):
-            self.i += 1
-        elif self.at("op", "-"):
-            self.i += 1
-            sign = -1
-        total = self.term(env)
-        if sign == -1:
-            total = -_scalar_or_tensor(total)
-        while self.at("op", "+") or self.at("op", "-"):
-            op = self.take("op").value
-            total = _scalar_or_tensor(total)
-            rhs = _scalar_or_tensor(self.term(env))
-            if isinstance(total, sp.MatrixBase) != isinstance(rhs, sp.MatrixBase) and not (total == 0 or rhs == 0):
-                self.fail("a scalar added to a vector or tensor")
-            total = total + rhs if op == "+" else total - rhs
-        return total
-
-    def paren(self, env):
-        open_ = self.take("op").value
-        close = ")" if open_ == "(" else "}"
+    # time derivatives
+    def _rate(self, env):
+        """At \\frac: \\frac{d}{dt} X (X the following product) or \\frac{d X}{dt}: X, or None."""
+        t, i = self.toks, self.i + 1
+        num, j = braced_tokens(t, i)
+        if num is None:
+            return None
+        den = t[j:j + 4]
+        if not (len(den) == 4 and den[0].kind == "op" and den[0].value == "{" and den[1].kind == "atom"
+                and den[1].value.base == "d" and not den[1].value.sub and den[2].kind == "atom"
+                and den[2].value.base == "t" and not den[2].value.sub and den[3].kind == "op" and den[3].value == "}"):
+            return None
+        if not num or num[0].kind != "atom" or num[0].value.base != "d" or num[0].value.sub or num[0].value.bold:
+            return None
+        self.rated = True
+        if len(num) == 1:
+            self.i = j + 4
+            return self.term(env)
+        self.i = i + 2                                  # past the d: the numerator is what is differentiated
         value = self.expr(env)
-        if not self.at("op", close):
-            self.fail("expected a closing bracket")
-        self.i += 1
+        self.take("op", "}")
+        self.i += 4
         return value
 
-    # time derivatives
-    def _derivand(self, k):
-        """At toks[k] == '{' of \\frac{d𝐗}{dt} (frame model): (𝐗's body components, index after), or None."""
-        t = self.toks
-        if self.model.name != "frame" or k + 8 > len(t):
+    def _framed_rate(self, env):
+        """(d𝐗/dt)_{body|inertial|space…} at '(' (no subscript: inertial), or None."""
+        start = self.i
+        nxt = self.peek(1)
+        if not (nxt is not None and nxt.kind == "cmd" and nxt.value in ("frac", "dfrac", "tfrac")):
             return None
-        o1, d1, x, c1, o2, d2, tt, c2 = t[k:k + 8]
-        pattern = (o1.kind == "op" and o1.value == "{" and d1.kind == "atom" and d1.value.base == "d"
-                   and not d1.value.sub and x.kind == "atom" and x.value.bold and c1.kind == "op"
-                   and c1.value == "}" and o2.kind == "op" and o2.value == "{" and d2.kind == "atom"
-                   and d2.value.base == "d" and tt.kind == "atom" and tt.value.base == "t"
-                   and c2.kind == "op" and c2.value == "}")
-        if not pattern:
+        self.i += 1
+        X = self._rate(env)
+        if X is None or not self.at("op", ")"):
+            self.i = start
             return None
-        a = x.value
-        if a.base == "r" and not a.sub:
-            return R_B, k + 8
-        if a.base == "L" and not a.sub:
-            return L_B, k + 8
-        self.fail(f"the time derivative of {a.text}", x)
-
-    def _framed_derivative(self, env):
-        """(d𝐗/dt)_{body|inertial|space…} at '(' (no subscript: inertial)."""
-        t, i = self.toks, self.i
-        if not (i + 1 < len(t) and t[i + 1].kind == "cmd" and t[i + 1].value == "frac"):
-            return None
-        found = self._derivand(i + 2)
-        if found is None:
-            return None
-        X, k = found
-        if not (k < len(t) and t[k].kind == "op" and t[k].value == ")"):
-            return None
-        self.i = k + 1
+        self.i += 1
         frame = "inertial"
         if self.at("op", "_"):
             self.i += 1
@@ -195,152 +266,146 @@ class _VParser(_Parser):
             else:
                 word.append(self.take("atom").value.base)
             name = "".join(word)
-            if name not in FRAMES:
+            if name not in self.model.frames:
                 self.fail(f"a derivative in the frame {name!r}")
-            frame = FRAMES[name]
-        return self.model.derivative(X, frame)
+            frame = self.model.frames[name]
+        value = self.model.rate(X, frame)
+        if value is None:
+            self.i = start
+        return value
 
-    # sums
-    def vsum(self, env, tok):
-        """Σ_p over particles (two generic ones) or Σ_i, Σ_ij over body axes (1, 2, 3)."""
-        if not self.at("op", "_"):
-            self.fail("a sum without its index", tok)
-        self.i += 1
-        names = []
-        if self.at("op", "{"):
-            self.i += 1
+    # matrices and determinants
+    def matrix(self, env, det=False):
+        tok = self.take("begin")
+        if tok.value == "array" and self.at("op", "{"):
             while not self.at("op", "}"):
-                t_ = self.peek()
-                if t_ is None:
-                    self.fail("unbalanced '{'", tok)
-                if t_.kind == "atom":
-                    names.append(t_.value.base + t_.value.sub)
                 self.i += 1
             self.i += 1
-        else:
-            names = [self.take("atom").value.base]
-        index = "".join(names)
+        rows = self.rows(env, tok)
+        if det:
+            return _determinant(rows)
+        if any(isinstance(x, sp.MatrixBase) for r in rows for x in r):
+            self.fail("a matrix of vectors")
+        return sp.Matrix(rows)
+
+    def entry(self, env):
+        """A matrix entry: one value (a 1×1 product a scalar), never a matrix of any size."""
+        if self.at("cmd") and self.peek().value in ("cdots", "ldots", "dots"):
+            self.fail("a matrix of any size")
+        return _as_value(self.expr(env))
+
+    # sums and integrals
+    def vsum(self, env, tok):
+        """Σ under a subscript index (and an upper limit): the summand (one product) read once for
+        each environment the model's ``summed`` gives."""
+        names, _ = self.sum_index(tok)
+        upper = []
         if self.at("op", "^"):
             self.i += 1
-            self.group_or_token(env)
-        if index == "p":
-            ranges = [("p", range(PARTICLES))]
-        elif index and all(ch in "ijk" for ch in index):
-            ranges = [(ch, (1, 2, 3)) for ch in index]
-        else:
-            self.fail(f"a sum over {index!r}", tok)
+            upper, after = braced_tokens(self.toks, self.i)
+            if upper is None:
+                upper, after = [self.peek()], self.i + 1
+            self.i = after
         start, total = self.i, None
-        for values in itertools.product(*(r for _, r in ranges)):
+        for inner in self.model.summed(self, names, upper, env, tok):
             self.i = start
-            inner = {**env, **{n: v for (n, _), v in zip(ranges, values)}}
             term = self.term(inner)
+            total = term if total is None else total + term
+        return total
+
+    def integral(self, env):
+        """∫ … dm over the body: Σ_k μ_k (…) at the model's mass points."""
+        start, total, stop = self.i, None, self.stop_dm
+        points = self.model.points()
+        if not points:
+            self.fail("an integral over the mass")
+        for where, mass in points:
+            self.i = start
+            self.stop_dm = True
+            term = self.term({**env, **where})
+            self.stop_dm = stop
+            if not (self.at("atom") and self.peek().value.base == "d"):
+                self.fail("an integral without its dm")
+            self.i += 2
+            term = self.juxtaposed(mass, term)
             total = term if total is None else total + term
         return total
 
     # atoms
     def atom(self, tok, env):
-        a = tok.value
-        v = self.vector_atom(a, env, tok)
-        if v is not None:
-            return v
-        if a.sub in ("i", "j") and a.sub not in env:
-            raise _FreeIndex(a.sub)
+        value = self.model.atom(self, tok.value, env, tok)
+        if value is not None:
+            return value
+        if not self.model.vocabulary:
+            raise lx.Unknown(f"unknown symbol {tok.value.text}", tok.pos + 1)
         return super().atom(tok, env)
 
-    def _angular_velocity(self, a) -> bool:
-        """The text's letter for the angular velocity (Landau's 𝛀), bold or plain (Ω² = 𝛀·𝛀)."""
-        return self._text_letter(a, "angular velocity")
-
-    def _text_letter(self, a, meaning) -> bool:
-        """Whether the text names a's letter, as a vector, by this meaning (`derive.lecture.names`)."""
-        names = getattr(self.vocab, "names", None)
-        return names is not None and not self.vocab.names_off and names.letters.get((a.base, "vector")) == meaning
-
-    def _index(self, ch, env, tok):
+    def axis(self, ch, env, tok) -> int:
+        """The body axis (0, 1, 2) an index names: x, y, z, 1, 2, 3 or a summed or free index."""
         if ch in AXES:
             return AXES[ch]
-        if ch in env and ch != "p":
+        if ch in env and isinstance(env[ch], int) and ch != "p":
             return env[ch] - 1
-        if ch in "ij":
+        if ch in self.model.free:
             raise _FreeIndex(ch)
         self.fail(f"the index {ch!r}", tok)
 
-    def _particle(self, env, tok):
-        if "p" not in env:
-            self.fail("a particle quantity outside a sum over particles", tok)
-        return env["p"]
 
-    def vector_atom(self, a, env, tok):
-        m = self.model
-        plain = not a.hat and not a.tilde and not a.primes and not a.dots
-        if (a.base == "omega" or self._angular_velocity(a)) and not a.sub and not a.dots and not a.tilde:
-            return m.omega
-        if a.base == "e" and (a.hat or a.bold) and not a.primes and not a.sup and len(a.sub) == 1:
-            return sp.eye(3)[:, self._index(a.sub, env, tok)]
-        if a.base == "I" and not a.sub and (a.bold or a.dots == 2):
-            return m.tensor
-        if a.base == "I" and len(a.sub) == 2 and not a.bold:
-            return m.tensor[self._index(a.sub[0], env, tok), self._index(a.sub[1], env, tok)]
-        if a.base == "I" and a.sub in ("i", "j") and not a.bold:
-            return m.moments[self._index(a.sub, env, tok)]
-        if a.base == "Xi" and a.bold:
-            return sp.eye(3)
-        if a.base == "delta" and len(a.sub) == 2:
-            return sp.Integer(int(self._index(a.sub[0], env, tok) == self._index(a.sub[1], env, tok)))
-        if a.base == "m" and a.sub == "p" and plain:
-            return M_P[self._particle(env, tok)]
-        if a.base == "r" and plain and a.sub[:1] == "p":
-            r = R_P[self._particle(env, tok)]
-            if len(a.sub) == 2 and not a.bold:
-                return r[self._index(a.sub[1], env, tok)]
-            if a.sub == "p":
-                return r if a.bold else sp.sqrt(r.dot(r))
-        if a.base == "v" and plain and a.sub == "p":
-            v = m.velocity(self._particle(env, tok))
-            return v if a.bold else sp.sqrt(v.dot(v))
-        if a.base == "r" and plain and a.bold and not a.sub:
-            return R_B
-        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
-            return m.momentum
-        if self._text_letter(a, "angular momentum") and plain and (a.bold and not a.sub or len(a.sub) == 1 and
-                                                                   m.name == "particle" and not a.bold):
-            return m.momentum if not a.sub else m.momentum[self._index(a.sub, env, tok)]   # Landau's 𝐌, M_i
-        if a.base == "T" and plain and not a.sub and not a.bold:
-            return m.kinetic
-        if a.base == "tau" and not a.sub:
-            return LAW
-        return None
-
-
-def _scalar_or_tensor(v):
+def _not_law(v):
     if v is LAW:
         raise lx.NotRead("the torque inside a formula")
     return v
 
 
-def _dot(a, b):
-    if a is LAW or b is LAW:
-        raise lx.NotRead("the torque inside a formula")
-    va, vb = _is_vector(a), _is_vector(b)
-    ta, tb = _is_tensor(a), _is_tensor(b)
-    if va and vb:
-        return a.dot(b)
-    if ta and vb:
-        return a * b
-    if va and tb:
-        return b.T * a
-    if ta and tb:
-        return a * b
+def _as_value(v):
+    if isinstance(v, sp.MatrixBase) and v.shape == (1, 1):
+        return v[0, 0]
+    return v
+
+
+def _juxt(a, b, matrix_products=True):
+    """a b: a scalar factor, the dyadic 𝐚𝐛ᵀ of two vectors, the product of conforming matrices
+    (refused where the notation writes a tensor on a vector with ·)."""
+    a, b = _as_value(_not_law(a)), _as_value(_not_law(b))
     if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase):
-        raise lx.NotRead("· of these shapes")
+        if _is_vector(a) and _is_vector(b):
+            return a * b.T                          # the dyadic 𝐚𝐛
+        if not matrix_products:
+            raise lx.NotRead("a product of a tensor and a vector without ·")
+        if a.shape[1] != b.shape[0]:
+            raise lx.NotRead("a product of shapes that do not conform")
+        return _as_value(a * b)
     return a * b
 
 
-def _juxtapose(a, b):
-    if a is LAW or b is LAW:
-        raise lx.NotRead("the torque inside a formula")
+def _dot(a, b, matrix_products=True):
+    """a·b: the dot product of vectors, a tensor on a vector (𝐯·𝐓 = 𝐓ᵀ𝐯), else a product."""
+    a, b = _as_value(_not_law(a)), _as_value(_not_law(b))
     if _is_vector(a) and _is_vector(b):
-        return a * b.T                          # the dyadic a b
-    if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase):
-        raise lx.NotRead("a product of a tensor and a vector without ·")
-    return a * b
+        return a.dot(b)
+    if _is_tensor(a) and (_is_vector(b) or _is_tensor(b)):
+        return a * b
+    if _is_vector(a) and _is_tensor(b):
+        return b.T * a
+    if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and not matrix_products:
+        raise lx.NotRead("· of these shapes")
+    return _juxt(a, b, matrix_products)
+
+
+def _determinant(rows):
+    """A 3×3 determinant, expanded along a row of vectors when it has one (the cross product's form)."""
+    if len(rows) != 3 or any(len(r) != 3 for r in rows):
+        raise lx.NotRead("a determinant that is not 3×3")
+    vec = [n for n, r in enumerate(rows) if any(isinstance(x, sp.MatrixBase) for x in r)]
+    if not vec:
+        return sp.Matrix(rows).det()
+    if len(vec) != 1:
+        raise lx.NotRead("a determinant with vectors in two rows")
+    n = vec[0]
+    total = sp.zeros(3, 1)
+    for j in range(3):
+        minor = sp.Matrix([[rows[a][b] for b in range(3) if b != j] for a in range(3) if a != n])
+        if any(isinstance(x, sp.MatrixBase) for x in minor):
+            raise lx.NotRead("a determinant of vectors")
+        total += (-1) ** (n + j) * minor.det() * rows[n][j]
+    return total

@@ -4,6 +4,9 @@ The scalar reader (`derive.lecture.latex`) reads formulas in the derivation's sc
 first pages of a rigid-body lecture are written in vectors instead — T = Σ_p ½ m_p (ω × r_p)·(ω × r_p),
 𝐋 = Ï·ω, (d𝐫/dt)_inertial = ω × 𝐫 — and this module reads and checks those, through the same
 whitelist (the tokens of `derive.lecture.latex.scan`: never ``eval``, never ``sympify``).
+The grammar is `derive.lecture.vector_parser`'s (the one textbook vector algebra is read with,
+under `derive.lecture.vector_algebra_model`); the three models below are
+`derive.lecture.vector_models`'.
 
 Values are SymPy objects of three shapes: a scalar, a 3-vector (a 3×1 matrix of body components)
 and a tensor (a 3×3 matrix). The operations are the usual ones:
@@ -43,50 +46,28 @@ from __future__ import annotations
 
 import itertools
 import re
-from dataclasses import dataclass
 
 import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import verify as vf
-from derive.lecture.vector_models import Model, _FreeIndex, _is_tensor, _is_vector, model_of, prepare, vectorish
-from derive.lecture.vector_parser import _VParser
+from derive.lecture import vector_parser as vp
+from derive.lecture.vector_models import Model, model_of, prepare, vectorish
+from derive.lecture.vector_parser import Reading, _is_tensor, _is_vector
+
 
 # ---- reading and checking one statement ----------------------------------------------------------
-@dataclass
-class Reading:
-    members: list       # one list of VMember per value of the free indices
-    relations: list
-    model: str
-    free: str           # the free indices ("", "i", "ij")
-    source: str
-
-
 def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
-    """Read a statement with this module's grammar (`lx.NotRead` when it cannot)."""
+    """Read a statement with the vector grammar in the model `model_of` picks (`lx.NotRead` when it
+    cannot); ``reading.model`` is that model's name."""
     text = prepare(text)
     toks = lx.scan_cells(text)
     if not vectorish(toks):
         raise lx.NotRead("not a vector formula")
     name = model_of(toks, sticky)
-    model = Model(name, derivation)
     plain_l = any(t.kind == "atom" and t.value.base == "I" and (t.value.bold or t.value.dots == 2) for t in toks) \
         or any(t.kind == "cmd" and t.value == "times" for t in toks)
-    free = ""
-    while True:
-        try:
-            readings = []
-            for values in itertools.product((1, 2, 3), repeat=len(free)):
-                p = _VParser(toks, vocab, text, model, plain_l)
-                readings.append(p.vchain(dict(zip(free, values))))
-            break
-        except _FreeIndex as err:
-            if err.letter in free or len(free) >= 2:
-                raise lx.NotRead(f"the index {err.letter} is neither summed nor free") from None
-            free += err.letter
-        except (sp.ShapeError, TypeError, ValueError, AttributeError) as err:
-            raise lx.NotRead(f"cannot combine its parts ({type(err).__name__})") from None
-    return Reading([r[0] for r in readings], readings[0][1], name, free, text)
+    return vp.read(toks, text, vocab, Model(name, derivation, plain_l), name)
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
@@ -171,6 +152,23 @@ def member_edits(src: str):
             seen.add(e)
             unique.append((e, what))
     return unique
+
+
+def edited_readings(reading, k: int, reread, most: int):
+    """Member k of a reading under each of its first ``most`` single edits (`member_edits`), read
+    again by ``reread`` (the statement's text to a reading): (n, edited member, what, edited
+    statement, its reading), for the readings of the same shape (free indices, members)."""
+    src, m = reading.source, reading.members[0][k]
+    for n, (edited, what) in enumerate(member_edits(src[m.start:m.end])):
+        if n >= most:
+            return
+        again_src = src[:m.start] + edited + " " + src[m.end:]
+        try:
+            again = reread(again_src)
+        except lx.NotRead:
+            continue
+        if again.free == reading.free and len(again.members[0]) == len(reading.members[0]):
+            yield n, edited, what, again_src, again
 
 
 def _operand(src: str, at: int, forward: bool) -> tuple[int, int] | None:
