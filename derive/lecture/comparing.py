@@ -75,8 +75,8 @@ def _real_zero(lhs, rhs, seed):
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
-    f = sp.lambdify(symbols, exprs, modules="mpmath")
-    radicands = sp.lambdify(symbols, bases, modules="mpmath")
+    f = sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0)
+    radicands = sp.lambdify(symbols, bases, modules="mpmath", docstring_limit=0)
     rng = random.Random(seed)
     n, used = len(lhs), 0
     for _ in range(300):

@@ -311,7 +311,7 @@ def _numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> _Outcome:
                          for e in (*lhs, *rhs))
     rng = random.Random(seed)
     if transcendental:
-        f = sp.lambdify(symbols, [*lhs, *rhs], modules="mpmath", cse=True)
+        f = sp.lambdify(symbols, [*lhs, *rhs], modules="mpmath", cse=True, docstring_limit=0)
     n, used = len(lhs), 0
     for _ in range(3 * _POINTS):
         if used == _POINTS:
