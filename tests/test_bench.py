@@ -246,3 +246,22 @@ def test_pydy_equations_are_the_baselines(formulation):
     rhs = bc.baselines().euler_top_rhs(*consts) if formulation == "euler-angles" else bc.baselines().quaternion_rhs(*consts)
     for y in _peer_states(formulation):
         assert np.allclose(f(y, 0.0, np.array(consts)), rhs(0.0, y), rtol=1e-13, atol=1e-13)
+
+
+def test_verify_speed_is_a_target_reported_per_corpus_text():
+    """The reader's speed target: one row per corpus text, seconds per 100 displays against ≤ 10
+    (timed here by a fake clock: the real figures are `derive bench`'s)."""
+    from derive.bench import targets as T
+    from derive.bench import verify_speed as vs
+
+    texts = vs.corpus_texts()
+    assert len(texts) >= 12 and all(p.exists() for p in texts)
+    seconds = {texts[0]: 30.0, texts[1]: 0.01}
+    res = vs.bench_verify_speed(texts[:2], timer=seconds.__getitem__)
+    rows = [r for r in T.summary({"verify_speed": res}) if r[0].startswith("`derive verify`")]
+    assert [goal for _, goal, _, _ in rows] == ["≤ 10", "≤ 10"]
+    n = [vs.displays(p) for p in texts[:2]]
+    assert [value for _, _, value, _ in rows] == [100 * 30.0 / n[0], 100 * 0.01 / n[1]]
+    assert [ok for *_, ok in rows] == [False, True]
+    assert res["worst"] == 100 * 30.0 / n[0]
+    assert "skipped" in vs.bench_verify_speed([]) and vs.rows(vs.bench_verify_speed([])) == []

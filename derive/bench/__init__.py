@@ -4,7 +4,8 @@ Takes: the reference scene (the shipped example ``reference_top``, :mod:`~derive
 and the example scenes. Gives: ``derive bench``'s report (:mod:`~derive.bench.suite`): the
 kernel speed and work–precision races against SciPy, CasADi, PyDy, heyoka and numbalsoda at equal error
 (:mod:`~derive.bench.runner`, :mod:`~derive.bench.contenders`, :mod:`~derive.bench.peers`, whose baselines ship in
-``derive/bench/baselines``), the targets (:mod:`~derive.bench.targets`), the sweep's
+``derive/bench/baselines``), the targets (:mod:`~derive.bench.targets`; the notes reader's speed on
+the corpus in :mod:`~derive.bench.verify_speed`), the sweep's
 throughput (:mod:`~derive.bench.throughput`), the splittings (:mod:`~derive.bench.splitting`)
 and the write-up (:mod:`~derive.bench.report`).
 

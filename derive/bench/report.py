@@ -100,9 +100,11 @@ def targets_section(results: dict) -> list[str]:
     L = ["## Targets, measured side by side in this run", "", *_targets_table(t)]
     L += ["", "(stronger baseline): no goal was set against it; reported because `odeint` — LSODA whose "
           "stepping loop is Fortran, not Python — is the cheapest way SciPy offers to integrate a Python rhs.", ""]
-    for key in ("reference", "fixed_cost", "batch", "processes", "lambdify", "sweeps"):
+    for key in ("reference", "fixed_cost", "batch", "processes", "lambdify", "sweeps", "verify_speed"):
         if isinstance(t.get(key), dict) and "error" in t[key]:
             L += [f"- {key}: not measured ({t[key]['error']})"]
+    if isinstance(t.get("verify_speed"), dict) and "skipped" in t["verify_speed"]:
+        L += [f"- verify_speed: not measured ({t['verify_speed']['skipped']})"]
     L.append("")
 
     ref = t.get("reference") or {}

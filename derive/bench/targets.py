@@ -22,6 +22,8 @@
 * **Processes**: warm ``python -m derive simulate scenes/looping_top.toml -o out.npz`` over
   ``python -c "import numpy"`` (goal ≤ 3×); a cold one (fresh ``DERIVE_CACHE``) minus a warm
   one (goal ≤ 1 s).
+* **Verify speed** (`derive.bench.verify_speed`): `derive verify` on each corpus text, user CPU
+  seconds per 100 displays (goal ≤ 10), from a checkout.
 * **NumPy batch rhs** at N = 10⁵: the generated ``heavy_top.rhs`` over ``sympy.lambdify(...,
   cse=True)`` of the same expressions, its rows stacked into one (6, N) array as ``rhs`` returns
   (goal ≤ 1×); the raw list of rows lambdify returns is timed too, and, as context, lambdify
@@ -55,6 +57,7 @@ from derive.bench import internals as bi
 from derive.bench.autochoice import LEVELS, SCENES, bench_auto_choice
 from derive.bench.own_body import bench_own_body
 from derive.bench.throughput import bench_throughput
+from derive.bench import verify_speed
 
 
 GOALS = {
@@ -73,6 +76,8 @@ GOALS = {
     "own_warm_vs_shipped": ("≤", 1.2),
     # derive.bench.tippe_race: the tippe top against MuJoCo
     tippe_race.JELLETT_GOAL: ("≥", 1000.0), tippe_race.SPIN_GOAL: ("≤", 1.0),
+    # derive.bench.verify_speed: user CPU seconds per 100 displays of each corpus text
+    verify_speed.GOAL_KEY: ("≤", 10.0),
 }
 
 
@@ -400,7 +405,9 @@ def run(cfg, fams) -> dict:
              ("peers", "peers", lambda: bench_peers.run(cfg, fams, batch_scenes)),
              ("own_body", "own body", bench_own_body),
              ("auto_choice", "auto choice", lambda: auto_choice(cfg)),
-             ("tippe_top", "tippe top vs MuJoCo", lambda: tippe_race.run(cfg))]
+             ("tippe_top", "tippe top vs MuJoCo", lambda: tippe_race.run(cfg)),
+             ("verify_speed", "verify speed", lambda: {"skipped": "not in a smoke run"} if cfg.name == "smoke"
+              else verify_speed.bench_verify_speed())]
     with tqdm(total=len(parts), desc="targets", unit="part", file=sys.stderr) as bar:
         for key, name, part in parts:
             out[key] = _guard(name, part)
@@ -443,8 +450,8 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
         if key not in GOALS:
             return "(stronger baseline)"
         op, goal = GOALS[key]
-        return f"{op} {goal:g}" + ("" if key in ("cold_minus_warm", "dask_scaling", "own_first_run")
-                                   else "×")
+        return f"{op} {goal:g}" + ("" if key in ("cold_minus_warm", "dask_scaling", "own_first_run",
+                                                 verify_speed.GOAL_KEY) else "×")
 
     rows = [
         ("reference scene: `derive.simulate` vs `solve_ivp` DOP853 plain-Python rhs, equal or smaller error",
@@ -483,6 +490,7 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
     ]
     rows += peer_rows(t.get("peers") or {})
     rows += tippe_race.rows(t.get("tippe_top") or {})
+    rows += verify_speed.rows(t.get("verify_speed") or {})
     return [(what, g(key), value, met(key, value)) for what, key, value in rows]
 
 

@@ -4,7 +4,7 @@ Takes: the derivation (:mod:`derive.symbolic`). Gives: the claims of the lecture
 motion (:mod:`~derive.lecture.claims`, each with where it stands in the notes and its meaning,
 written with the symbols of :mod:`~derive.lecture.slides`), their verdicts
 (:mod:`~derive.lecture.verify`: holds, typo with the corrected form, fails; against the derived
-quantities of :mod:`~derive.lecture.targets`) and
+quantities of :mod:`~derive.lecture.targets`, by the zero test of :mod:`~derive.lecture.zero_test`) and
 the reports ``generated/lecture-verification.md`` and ``generated/derivation.md``
 (:mod:`~derive.lecture.report`). The lecture's formulas are the thing checked, never used.
 ``derive analyze`` (:mod:`~derive.lecture.analysis`) does the lecture's analysis — energies,

@@ -2,12 +2,12 @@
 of a formula would make it so.
 
 Takes: SymPy expressions and matrices in the derivation's symbols (`derive.lecture.latex`).
-Gives: `zero` (the zero test of `derive.lecture.verify`: bounded symbolic steps, then seeded
+Gives: `zero` (the zero test of `derive.lecture.zero_test`: bounded symbolic steps, then seeded
 exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `column` (a vector
 as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
 power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.verify`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture import verify as vf
+from derive.lecture import zero_test as zt
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -57,14 +57,14 @@ def zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
     diffs = lhs - rhs
     # a difference shown non-zero at an exact point goes straight to the numeric test, whose
     # counterexample is the reason given (the symbolic steps could not show it zero)
-    steps = [None] if any(map(vf.surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
+    steps = [None] if any(map(zt.surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
     if all(steps):
-        return True, max(steps, key=vf._SYMBOLIC_STEPS.index)
+        return True, max(steps, key=zt.SYMBOLIC_STEPS.index)
     if any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow)):
         real = _real_zero(lhs, rhs, seed)
         if real is not None:
             return real
-    out = vf._numeric_zero(lhs, rhs, seed)
+    out = zt.numeric_zero(lhs, rhs, seed)
     return out.ok, out.method
 
 
@@ -75,13 +75,13 @@ def _real_zero(lhs, rhs, seed):
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
-    f = sp.lambdify(symbols, exprs, modules="mpmath")
-    radicands = sp.lambdify(symbols, bases, modules="mpmath")
+    f = sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0)
+    radicands = sp.lambdify(symbols, bases, modules="mpmath", docstring_limit=0)
     rng = random.Random(seed)
     n, used = len(lhs), 0
     for _ in range(300):
-        point = [mpmath.mpf(p.p) / p.q for p in vf._sample(symbols, rng)]
-        with mpmath.workdps(vf._DIGITS):
+        point = [mpmath.mpf(p.p) / p.q for p in zt.sample(symbols, rng)]
+        with mpmath.workdps(zt.DIGITS):
             try:
                 if not all(mpmath.im(b) == 0 and mpmath.re(b) > 0 for b in map(mpmath.mpmathify, radicands(*point))):
                     continue
@@ -92,19 +92,19 @@ def _real_zero(lhs, rhs, seed):
                 continue
             used += 1
             for a, b in zip(vals[:n], vals[n:]):
-                if abs(a - b) > max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - vf._DIGITS):
-                    return False, (f"mpmath {vf._DIGITS} digits where its roots are real: |claim − derived| = "
+                if abs(a - b) > max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - zt.DIGITS):
+                    return False, (f"mpmath {zt.DIGITS} digits where its roots are real: |claim − derived| = "
                                    f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
-        if used == vf._POINTS:
+        if used == zt.POINTS:
             break
-    return (True, f"mpmath {vf._DIGITS} digits at {used} points where its roots are real") if used else None
+    return (True, f"mpmath {zt.DIGITS} digits at {used} points where its roots are real") if used else None
 
 
 def _symbolic_zero(d):
-    """`verify`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
+    """`zero_test`'s bounded symbolic steps; None (the numeric test decides) where they cannot apply
     (trig_reduce refuses a sine nested in a sine's argument)."""
     try:
-        return vf._symbolic_zero(d)
+        return zt.symbolic_zero(d)
     except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
         return None
 
@@ -121,7 +121,7 @@ def quick_equal(a, b) -> bool:
         return False
     if A.shape != B.shape:
         return False
-    if any(vf.surely_nonzero(x - y) for x, y in zip(A, B)):
+    if any(zt.surely_nonzero(x - y) for x, y in zip(A, B)):
         return False
     syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
     rng = random.Random(7)

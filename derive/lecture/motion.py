@@ -15,7 +15,7 @@ settings, the text's definitions, the equations it has written). Gives: the mixi
   latest equations the text wrote for those components under the same settings, or Euler's
   under them; the text's undefined symbols in a solution are its integration constants.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.verify`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.zero_test`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.verify import surely_nonzero
+from derive.lecture.zero_test import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 

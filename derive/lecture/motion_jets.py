@@ -35,6 +35,14 @@ class Jet:
         a = [mpmath.mpf(x) for x in coefficients][:ORDER]
         self.a = a + [mpmath.mpf(0)] * (ORDER - len(a))
 
+    @classmethod
+    def _of(cls, a: list) -> "Jet":
+        """The jet of ``ORDER`` coefficients that are already mpf (what arithmetic on jets gives):
+        no conversion, which is most of the cost of a product."""
+        out = cls.__new__(cls)
+        out.a = a
+        return out
+
     @staticmethod
     def lift(x) -> "Jet":
         return x if isinstance(x, Jet) else Jet([x])
@@ -43,12 +51,12 @@ class Jet:
         if isinstance(other, np.ndarray):
             return NotImplemented
         o = Jet.lift(other)
-        return Jet([x + y for x, y in zip(self.a, o.a)])
+        return Jet._of([x + y for x, y in zip(self.a, o.a)])
 
     __radd__ = __add__
 
     def __neg__(self):
-        return Jet([-x for x in self.a])
+        return Jet._of([-x for x in self.a])
 
     def __sub__(self, other):
         if isinstance(other, np.ndarray):
@@ -61,8 +69,14 @@ class Jet:
     def __mul__(self, other):
         if isinstance(other, np.ndarray):
             return NotImplemented
-        o = Jet.lift(other)
-        return Jet([sum(self.a[k] * o.a[n - k] for k in range(n + 1)) for n in range(ORDER)])
+        a, b = self.a, Jet.lift(other).a
+        out = []
+        for n in range(ORDER):
+            term = a[0] * b[n]
+            for k in range(1, n + 1):
+                term = term + a[k] * b[n - k]
+            out.append(term)
+        return Jet._of(out)
 
     __rmul__ = __mul__
 

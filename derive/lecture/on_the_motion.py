@@ -18,7 +18,7 @@ Either only makes a claim hold; it never flags one. And a third, which judges:
    (kept in ``ctx.angles_stated``); a later relation of the angles alone, with no rates, which is
    no identity, is judged with those angles put in (``\\tan\\alpha = \\frac{I_3}{I_1}\\tan\\theta``
    holds, a step of a chain that breaks it is a slip), the why naming the line it stands on. May import: :mod:`derive.lecture.latex`,
-:mod:`derive.lecture.verify` (its exact screen), :mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.zero_test` (its exact screen), :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -27,7 +27,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.verify import surely_nonzero
+from derive.lecture.zero_test import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 

@@ -109,22 +109,34 @@ class Rereading:
         and the statement without the names learned from the prose (when only that reading
         flags it, the verdict rests on an uncertain reading of the text: unchecked, saying so)."""
         before, saved = len(self.claims), self._snapshot()
-        self._statement(line, piece, duplicate=dup, pieces=pieces)
+        readings = list(_second_readings(piece))
+        # with a second reading in view, the statement is judged before its correction is sought:
+        # where the second reading holds, the correction would be thrown away
+        self.judging_only = bool(readings)
+        try:
+            self._statement(line, piece, duplicate=dup, pieces=pieces)
+        finally:
+            self.judging_only = False
         first = self.claims[before:]
         if not any(c.verdict in ("typo", "fails") for c in first):
             self._under_symmetry(saved, line, piece, pieces, first)
             return
         if self._if_symmetric(saved, line, piece, dup, pieces, before):
             return
-        if any(c.verdict == "typo" for c in first) and not dup:
-            self._in_their_notation(saved, line, piece, pieces, first)
-        for name, value, what in _second_readings(piece):
+        for name, value, what in readings:
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value}, judging_only=True)
             if second and all(c.verdict == "holds" for c in second):
                 for c in second:
                     c.why += f" (reading {what})"
                 self._keep(before, second, ctx)
                 return
+        if readings:                # read as written after all: now with its correction
+            del self.claims[before:]
+            self.ctx = _copied(saved)
+            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            first = self.claims[before:]
+        if any(c.verdict == "typo" for c in first) and not dup:
+            self._in_their_notation(saved, line, piece, pieces, first)
         if self._running_names_off(saved, line, piece, dup, pieces, first):
             return
         learned = self._learned(piece)

@@ -50,8 +50,8 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture import verify as vf
 from derive.lecture import vector_parser as vp
+from derive.lecture import zero_test as zt
 from derive.lecture.vector_models import Model, model_of, prepare, vectorish
 from derive.lecture.vector_parser import Reading, _is_tensor, _is_vector
 
@@ -71,7 +71,7 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
-    """a = b? Exact for polynomials (the particle and principal models), else `verify`'s test."""
+    """a = b? Exact for polynomials (the particle and principal models), else `zero_test`'s test."""
     if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) or \
             (isinstance(a, sp.MatrixBase) and a.shape != b.shape):
         return False, f"a {_shape(a)} against a {_shape(b)}"
@@ -85,12 +85,12 @@ def _zero(a, b, seed) -> tuple[bool, str]:
         where = f" (component {k + 1})" if len(diffs) == 3 else (f" (entry {k // 3 + 1},{k % 3 + 1})" if len(diffs) == 9 else "")
         return False, f"exact (expand): claim − derived ≠ 0{where}"
     try:
-        steps = [None] if any(map(vf.surely_nonzero, diffs)) else [vf._symbolic_zero(d) for d in diffs]
+        steps = [None] if any(map(zt.surely_nonzero, diffs)) else [zt.symbolic_zero(d) for d in diffs]
     except (sp.PolynomialError, TypeError, ValueError):
         steps = [None]
     if all(steps):
         return True, steps[0]
-    out = vf._numeric_zero(A, B, seed)
+    out = zt.numeric_zero(A, B, seed)
     return out.ok, out.method
 
 

@@ -1,0 +1,253 @@
+"""The zero test of the checkers: is claim − derived identically zero?
+
+Takes: SymPy expressions and matrices. Gives: `symbolic_zero` (bounded symbolic steps, cheapest
+first, never an unbounded `simplify`), `surely_nonzero` (an exact one-point screen that proves a
+difference non-zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
+`DIGITS` digits) and `sample` (the seeded points). Used by the lecture's table
+(`derive.lecture.verify`) and by the notes checker (`derive.lecture.comparing`); it knows neither.
+
+1. symbolic: the difference is zero as built, or after `expand`; if it has no trig functions,
+   after `cancel` (canonical for rational functions) or, for small ones with radicals,
+   `simplify`; if it has, after `rotations.trig_reduce` (canonical for polynomials in sin/cos),
+   skipped above a few hundred nodes;
+2. numeric at `POINTS` seeded random points: exactly, in rationals, when the difference contains
+   no function or radical; else with mpmath at `DIGITS` digits (`lambdify`), zero meaning below
+   10⁻⁴⁰ of the sides' size.
+
+May import: :mod:`derive.symbolic`, SymPy, mpmath.
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass
+
+import mpmath
+import sympy as sp
+from mpmath import iv
+
+from derive.symbolic import rotations
+
+SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
+"""The symbolic steps, cheapest first (a method's rank)."""
+POINTS = 6
+DIGITS = 50
+
+
+@dataclass(frozen=True)
+class Outcome:
+    ok: bool
+    method: str
+
+
+
+def _trig_angles(expr) -> tuple:
+    return tuple(sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}, key=sp.default_sort_key))
+
+
+# Size bounds (in expression-tree nodes) of the symbolic steps; larger remainders go to the
+# numeric test, which costs milliseconds where a 3-angle `trig_reduce` costs a second.
+_EXPAND_MAX_NODES = 400
+_TRIG_REDUCE_MAX_NODES = 250
+_SIMPLIFY_MAX_NODES = 80        # `simplify` only on small trig-free remainders: unbounded otherwise
+
+
+def _size(e) -> int:
+    return sum(1 for _ in sp.preorder_traversal(e))
+
+
+def symbolic_zero(d) -> str | None:
+    """The first symbolic step showing d = 0, or None (not shown: the numeric test decides)."""
+    if d == 0:
+        return "identical"
+    if _size(d) > _EXPAND_MAX_NODES:
+        return None
+    d = sp.expand(d)
+    if d == 0:
+        return "expand"
+    if not d.has(sp.sin, sp.cos, sp.tan):
+        if sp.cancel(sp.together(d)) == 0:        # canonical for rational functions
+            return "cancel"
+        if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES:
+            return None
+        return "simplify" if sp.simplify(d) == 0 else None
+    if _size(d) > _TRIG_REDUCE_MAX_NODES:
+        return None
+    reduced = rotations.trig_reduce(d, _trig_angles(d))
+    if reduced == 0:
+        return "trig_reduce"
+    return None
+
+
+_PRIMES = (11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107)
+# Rational points of the unit circle (sin, cos) = (a/c, b/c), a² + b² = c²: one per angle.
+_CIRCLE = ((3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25), (20, 21, 29), (12, 35, 37), (9, 40, 41), (28, 45, 53))
+_MODULUS = 2**61 - 1
+_INTERVAL_BITS = 120
+_IV_FUNCTIONS = {sp.sin: iv.sin, sp.cos: iv.cos, sp.tan: iv.tan, sp.exp: iv.exp}
+
+
+class _Outside(Exception):
+    """An expression the evaluation at a point does not cover."""
+
+
+def surely_nonzero(d) -> bool:
+    """Whether d ≢ 0 is proved by one evaluation at a point of its domain, where the i-th symbol
+    by name is the positive rational pᵢ/7 (pᵢ the i-th prime from 11).
+
+    * A rational function of symbols and of sin, cos, tan of angles that occur only there is
+      evaluated exactly, each angle at a point of the unit circle with rational sine and cosine,
+      modulo the prime 2⁶¹ − 1: a non-zero residue is a non-zero numerator.
+    * Otherwise (sums, products, powers, sin, cos, tan, exp, π of anything) in interval arithmetic
+      (mpmath ``iv``, 120 bits): an enclosure that excludes 0 is a proof.
+
+    False for anything else, a symbol declared integer or non-positive, a pole, a root of a
+    negative number, a zero residue or an enclosure containing 0. Before the symbolic steps, it
+    spares them a difference they cannot show zero (a slip, or a candidate of the search for a
+    correction) at the cost of one evaluation.
+    """
+    if not isinstance(d, sp.Expr):
+        return False
+    if d.is_Number:
+        return d != 0 and d.is_finite is True
+    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
+        return False
+    try:
+        return _residue(d, _exact_point(d, symbols), {}) != 0
+    except (_Outside, ValueError, ZeroDivisionError):
+        pass
+    point = {s: iv.mpf(p) / 7 for s, p in zip(symbols, _PRIMES)}
+    prec = iv.prec
+    iv.prec = _INTERVAL_BITS
+    try:
+        return bool(0 not in _enclosure(d, point, {}))
+    except (_Outside, ValueError, ZeroDivisionError, TypeError, OverflowError):
+        return False
+    finally:
+        iv.prec = prec
+
+
+def _exact_point(d, symbols) -> dict:
+    """Residues of the point: pᵢ/7 for each symbol; sin, cos, tan of each angle from `_CIRCLE`."""
+    inv = lambda n: pow(n, -1, _MODULUS)  # noqa: E731
+    angles = sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    if len(angles) > len(_CIRCLE):
+        raise _Outside(d)
+    point = {s: p * inv(7) % _MODULUS for s, p in zip(symbols, _PRIMES) if s not in angles}
+    for x, (a, b, c) in zip(angles, _CIRCLE):
+        point[sp.sin(x)], point[sp.cos(x)], point[sp.tan(x)] = a * inv(c), b * inv(c), a * inv(b)
+    return point
+
+
+def _residue(e, point: dict, memo: dict) -> int:
+    """e at the exact point, modulo `_MODULUS` (an angle outside sin/cos/tan is `_Outside`)."""
+    if e in memo:
+        return memo[e]
+    if e in point:
+        value = point[e]
+    elif e.is_Rational:
+        value = int(e.p) * pow(int(e.q), -1, _MODULUS) % _MODULUS
+    elif e.is_Add:
+        value = sum(_residue(a, point, memo) for a in e.args) % _MODULUS
+    elif e.is_Mul:
+        value = 1
+        for a in e.args:
+            value = value * _residue(a, point, memo) % _MODULUS
+    elif e.is_Pow and e.exp.is_Integer:
+        value = pow(_residue(e.base, point, memo), int(e.exp), _MODULUS)
+    else:
+        raise _Outside(e)
+    memo[e] = value
+    return value
+
+
+def _enclosure(e, point: dict, memo: dict):
+    """An interval holding e's value at ``point`` (common subexpressions evaluated once)."""
+    if e in memo:
+        return memo[e]
+    if e.is_Symbol:
+        value = point[e]
+    elif e.is_Rational:
+        value = iv.mpf(int(e.p)) / int(e.q)
+    elif e is sp.pi:
+        value = iv.pi
+    elif e.is_Add:
+        value = iv.mpf(0)
+        for a in e.args:
+            value = value + _enclosure(a, point, memo)
+    elif e.is_Mul:
+        value = iv.mpf(1)
+        for a in e.args:
+            value = value * _enclosure(a, point, memo)
+    elif e.is_Pow:
+        base = _enclosure(e.base, point, memo)
+        if e.exp.is_Integer:
+            value = base ** int(e.exp)
+        elif e.exp == sp.S.Half and base.a > 0:
+            value = iv.sqrt(base)
+        elif e.exp.is_Rational and base.a > 0:
+            value = iv.exp(iv.log(base) * _enclosure(e.exp, point, memo))
+        else:
+            raise _Outside(e)
+    elif type(e) in _IV_FUNCTIONS:
+        value = _IV_FUNCTIONS[type(e)](_enclosure(e.args[0], point, memo))
+    else:
+        raise _Outside(e)
+    memo[e] = value
+    return value
+
+
+def _radicals(e) -> bool:
+    """Whether e has non-integer powers or functions, where `cancel` is not a canonical form."""
+    return bool(e.atoms(sp.Function)) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+
+
+def sample(symbols, rng: random.Random) -> list:
+    """Rationals away from 0: positive symbols in [1/2, 3], others ±[1/5, 2]."""
+    point = []
+    for x in symbols:
+        if x.is_positive:
+            point.append(sp.Rational(rng.randint(50, 300), 100))
+        else:
+            point.append(sp.Rational(rng.choice((-1, 1)) * rng.randint(20, 200), 100))
+    return point
+
+
+def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
+    """claim − derived at `POINTS` seeded random points: exact when the difference is rational
+    there, else by mpmath at `DIGITS` digits (relative to the size of the two sides)."""
+    symbols = sorted(lhs.free_symbols | rhs.free_symbols, key=lambda x: x.name)
+    transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+                         for e in (*lhs, *rhs))
+    rng = random.Random(seed)
+    if transcendental:
+        f = sp.lambdify(symbols, [*lhs, *rhs], modules="mpmath", cse=True, docstring_limit=0)
+    n, used = len(lhs), 0
+    for _ in range(3 * POINTS):
+        if used == POINTS:
+            break
+        point = sample(symbols, rng)
+        if not transcendental:
+            vals = [e.xreplace(dict(zip(symbols, point))) for e in (*lhs, *rhs)]
+            if any(not v.is_Rational for v in vals):
+                continue                               # a pole of the formula: draw again
+            used += 1
+            bad = [a - b for a, b in zip(vals[:n], vals[n:]) if a != b]
+            if bad:
+                return Outcome(False, f"exact rational: claim − derived = {bad[0]} at a sample point")
+            continue
+        with mpmath.workdps(DIGITS):
+            try:
+                vals = [mpmath.mpmathify(v) for v in f(*(mpmath.mpf(p.p) / p.q for p in point))]
+            except (ZeroDivisionError, ValueError):
+                continue
+            if not all(mpmath.isfinite(v) for v in vals):
+                continue
+            used += 1
+            for a, b in zip(vals[:n], vals[n:]):
+                size = max(1, abs(a), abs(b))
+                if abs(a - b) > size * mpmath.mpf(10) ** (10 - DIGITS):
+                    return Outcome(False, f"mpmath {DIGITS} digits: |claim − derived| = "
+                                           f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
+    how = f"mpmath {DIGITS} digits" if transcendental else "exact rational"
+    return Outcome(used > 0, f"{how} at {used} points")
