@@ -67,6 +67,29 @@ class TextMatrices:
     """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab``, ``self.ctx`` and
     ``self._matrix_name``."""
 
+    def _turn_label(self, text: str):
+        """``\\mathbf{R}_{x'}(\\theta) = …``: the axis (x, y, z; a primed axis is the same one in its
+        own frame, and 1, 2, 3 stand for x, y, z) and the angle a matrix's written name gives its
+        turn, or None when the left side is no such name."""
+        try:
+            toks = lx.scan(text)
+        except lx.NotRead:
+            return None
+        if len(toks) < 5 or [t.kind for t in toks[:5]] != ["atom", "op", "atom", "op", "rel"] or \
+                (toks[1].value, toks[3].value) != ("(", ")"):
+            return None
+        name, arg = toks[0].value, toks[2].value
+        axis = name.sub.replace("'", "").strip("{} ")
+        if axis not in ("1", "2", "3", "x", "y", "z") or name.sup or name.dots:
+            return None
+        try:
+            angle = self.vocab.resolve(arg)
+        except lx.NotRead:
+            return None
+        if angle not in self.d.rot.ANGLES:
+            return None
+        return "xyz"["123xyz".index(axis) % 3], angle
+
     def _single_axis_turns(self, text: str) -> str:
         """``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)``: matrices named by an axis (1, 2, 3
         or x, y, z) and applied to one angle each are the single-axis turns; the sense, passive or
