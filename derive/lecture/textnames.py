@@ -65,16 +65,6 @@ def _right_side(text) -> str:
     return text.split("=", 1)[1] if "=" in text else ""
 
 
-def _angle_swapped(piece, old, new) -> str | None:
-    """The statement as written with the angle ``old`` of its right side put as ``new`` (the
-    correction in the text's own layout), or None when the right side does not spell it so."""
-    at = piece.find("=")
-    spelled = re.compile(re.escape(old) + r"(?![A-Za-z])")
-    if at < 0 or not spelled.search(piece, at):
-        return None
-    return piece[:at] + spelled.sub(lambda _: new, piece[at:])
-
-
 def _free(obj) -> set:
     return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
 
@@ -406,27 +396,6 @@ class TextNames:
                           self.tex(target))
                 return True
         return False
-
-    def _turn_by_another_angle(self, line, piece, m, axis, angle) -> bool:
-        """The matrix of a turn named ``R_x(θ)`` written in another angle: the named turn with the
-        angle of the entries swapped is a typo of it (the name and the entries disagree on one
-        angle); any other matrix is left unchecked, since the name alone decides nothing."""
-        rot = self.d.rot
-        (other,) = _free(m)
-        swapped = m.xreplace({other: angle})
-        for kind, f in (("passive", rot.passive), ("active", rot.active)):
-            target = sp.Matrix(f(axis, angle))
-            if all(rot.trig_reduce(x - y) == 0 for x, y in zip(swapped, target)):
-                self._turn_meant = target
-                self._add(line, piece, "rotation", "typo",
-                          f"the {kind} turn about {axis} by {self.tex(other)}, but its name says the turn "
-                          f"by {self.tex(angle)}: the entries must be in {self.tex(angle)}",
-                          _angle_swapped(piece, self.tex(other), self.tex(angle)) or self.tex(target))
-                return True
-        self._add(line, piece, "rotation", "unchecked",
-                  f"named the turn about {axis} by {self.tex(angle)}, but written in {self.tex(other)} only, "
-                  f"and no turn by {self.tex(angle)} with that angle swapped")
-        return True
 
     def _rate_matrix(self, line, piece, m) -> bool:
         """A 3×3 matrix of two angles: the matrix of the rates, ω̃ = B q̇ (body) or ω⁰ = B⁰ q̇ (space),
