@@ -80,3 +80,21 @@ def test_a_name_defined_by_a_chain_is_the_member_in_names_the_text_has_given():
                   "$$\\left[ \\boldsymbol{\\omega}^b_{ab} \\right]_\\times = \\dot{\\mathbf{C}} \\mathbf{C}^{T}$$\n")
     got = verdicts(text)
     assert got[9] == {"holds"} and "holds" not in got[11]
+
+
+_TURNS = ("---\nconvention: z-x-z\n---\n\n"
+          "$$R_{z}(\\phi) = \\begin{bmatrix} \\cos\\phi & \\sin\\phi & 0 \\\\ -\\sin\\phi & \\cos\\phi & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}$$\n\n"
+          "$$R_{x'}(\\theta) = \\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & \\cos{ANGLE} & \\sin{ANGLE} \\\\ 0 & -\\sin{ANGLE} & \\cos{ANGLE} \\end{bmatrix}$$\n\n"
+          "$$R_{z''}(\\psi) = \\begin{bmatrix} \\cos\\psi & \\sin\\psi & 0 \\\\ -\\sin\\psi & \\cos\\psi & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}$$\n\n"
+          "$$R = R_{z''}(\\psi) R_{x'}(\\theta) R_{z}(\\phi)$$\n")
+
+
+def test_a_turn_whose_entries_are_in_another_angle_than_its_name_says_is_a_typo():
+    claims = kept.check_text(_TURNS.replace("ANGLE", "\\phi"))
+    assert [c.verdict for c in claims] == ["holds", "typo", "holds", "holds"]
+    assert "\\cos{\\theta}" in claims[1].correction and "\\phi" not in claims[1].correction.split("=", 1)[1]
+
+
+def test_a_turn_written_in_the_angle_its_name_says_holds():
+    claims = kept.check_text(_TURNS.replace("ANGLE", "\\theta"))
+    assert [c.verdict for c in claims] == ["holds", "holds", "holds", "holds"]

@@ -16,3 +16,21 @@ def test_relations_after_a_case_in_the_same_sentence_are_not_flagged():
 
 def test_a_relation_in_prose_with_no_case_before_it_is_still_judged():
     assert _verdicts("The spin component is $\\omega_3 = \\dot{\\phi}$ in general.")[-1] == "fails"
+
+
+def test_a_coefficient_the_text_names_after_the_equation_is_read_with_that_definition():
+    text = ("---\nconvention: z-x-z\n---\n\n# Symmetric top\n\nWith $I_1 = I_2$ and no torque,\n\n"
+            "$$\\dot{\\omega}_{1} + \\Omega\\omega_{2} = 0$$\n\n"
+            "where $\\Omega = \\left(\\frac{I_{3} - I_{1}}{I_{1}}\\right)\\omega_{3}$.\n")
+    claims = kept.check_text(text)
+    assert [(c.line, c.verdict) for c in claims if c.line == 9] == [(9, "holds")]
+    flipped = kept.check_text(text.replace("I_{3} - I_{1}", "I_{1} - I_{3}"))
+    assert [c.verdict for c in flipped if c.line == 9] == ["unchecked"]      # never a flag on a reading it had not
+
+
+def test_a_rate_set_to_zero_that_eulers_equations_give_under_the_stated_moments_holds():
+    text = ("---\nconvention: z-x-z\n---\n\n# Spherical top\n\nAll three moments equal, $I_1=I_2=I_3$, so that\n\n"
+            "$$\\dot{\\omega}_{1} = 0$$\n")
+    assert [(c.line, c.verdict) for c in kept.check_text(text) if c.line == 9] == [(9, "holds")]
+    asymmetric = text.replace("All three moments equal, $I_1=I_2=I_3$, so that", "A body, and")
+    assert [(c.kind, c.verdict) for c in kept.check_text(asymmetric)] == [("setting", "unchecked")]

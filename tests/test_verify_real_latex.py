@@ -24,6 +24,7 @@ def verdicts(text, **kw):
     (r"\dv{\theta}{t}", r"\frac{d \theta}{d t}"),
     (r"\varOmega", r"\Omega"),
     ("\u03b8\u0307", r"\dot{\theta}"),
+    (r"\dot x + \vec N", r"\dot x + \vec N"),
 ])
 def test_a_formula_is_read_as_the_text_writes_it(written, read):
     assert source.normalize(written) == read
@@ -135,3 +136,24 @@ def test_a_consequence_of_eulers_equations_holds():
 
 def test_a_condition_between_free_variables_is_not_judged():
     assert verdicts("# Steady\n\n$$(I_2 - I_3)\\,\\omega_2 \\omega_3 = 0$$\n") == [(3, "unchecked")]
+
+
+_HEAD = "---\nconvention: z-x-z\n---\n\n"
+
+
+def test_a_quad_that_only_spaces_a_chain_keeps_it_one_statement():
+    text = _HEAD + ("Newton's law for rotation, where $\\vec N$ is the external torque:\n\n"
+                    "$$\n\\left(\\frac{d\\vec{L}}{dt}\\right)_\\mathrm{fixed} = \\quad\\left(\\frac{d\\vec{L}}{dt}"
+                    "\\right)_\\mathrm{body} + \\quad \\vec{\\omega}\\times\\vec{L} \\quad = \\quad \\vec{N}\n$$\n")
+    claims = kept.check_text(text)
+    assert [c.verdict for c in claims] == ["holds", "unchecked"]
+    assert claims[1].kind == "law"
+
+
+def test_a_function_the_text_names_with_its_variables_is_checked_through_what_it_names():
+    text = _HEAD + ("$$\\frac{d\\omega_{1}}{dt} = f_{1}(\\omega_{1}, \\omega_{2}, \\omega_{3})$$\n\nwhere\n\n"
+                    "$$f_{1} = \\frac{(I_{2} - I_{3})}{I_{1}}\\omega_{2}\\omega_{3}$$\n\nand\n\n"
+                    "$$f_{1} = \\frac{(I_{3} - I_{2})}{I_{1}}\\omega_{2}\\omega_{3}$$\n")
+    claims = kept.check_text(text)
+    assert [(c.kind, c.verdict) for c in claims] == [("new symbol", "unchecked"), ("equation of motion", "holds"),
+                                                     ("equation of motion", "typo")]

@@ -234,6 +234,8 @@ class _Parser:
                 if self._argument_list():       # 𝐒(φ, θ): a matrix of the text's, with what it depends on
                     self.args = kept
                     return value
+            if self.at("op", "(") and isinstance(value, Generic) and self._listed_arguments():
+                return value                    # f₁(ω₁, ω₂, ω₃): a name of the text's, with what it depends on
             if self.at("op", "(") and (value in W or value in WD or isinstance(value, Generic)):
                 at = self._at_a_time(tok, value)
                 if at is not None:
@@ -324,6 +326,18 @@ class _Parser:
     def factor_no_implicit(self, env):
         """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ))."""
         return self.primary(env)
+
+    def _listed_arguments(self) -> bool:
+        """At '(': two or more bare symbols separated by commas, read as arguments (a product is
+        never written so)."""
+        j = self.i + 2
+        if not (j < len(self.toks) and self.toks[j].kind == "op" and self.toks[j].value == ","):
+            return False
+        kept = self.args
+        if self._argument_list():
+            self.args = kept
+            return True
+        return False
 
     def _argument_list(self) -> bool:
         """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""

@@ -233,11 +233,11 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name in _RENAME:
         new = _RENAME[name]
         args = node.nodeargd.argnlist if node.nodeargd is not None else []
-        printed = "".join(a.latex_verbatim() if not isinstance(a, LatexGroupNode) else "{" + _print(a.nodelist, user) + "}"
-                          for a in args if a is not None)
+        printed = [a.latex_verbatim() if not isinstance(a, LatexGroupNode) else "{" + _print(a.nodelist, user) + "}"
+                   for a in args if a is not None]
         if new in ("{", "}"):
             return "\\" + new, 0
-        return "\\" + new + (" " if not printed else "") + printed, 0
+        return _spaced("\\" + new, printed) if printed else "\\" + new + " ", 0
     # any other macro: its own name, with its arguments normalised
     args = node.nodeargd.argnlist if node.nodeargd is not None else []
     printed = []
@@ -249,7 +249,17 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
             printed.append(left + _print(a.nodelist, user) + right)
         else:
             printed.append(a.latex_verbatim())
-    return "\\" + name + ("".join(printed) if printed else post), 0
+    return _spaced("\\" + name, printed) if printed else "\\" + name + post, 0
+
+
+def _spaced(head: str, args) -> str:
+    """A command and its arguments given without braces (``\\dot x``, ``\\vec N``), joined with the
+    space that ended the command's name wherever two letters would meet (``\\dotx`` would be
+    another command)."""
+    out = head
+    for a in args:
+        out += " " + a if out[-1:].isalpha() and a[:1].isalpha() else a
+    return out
 
 
 def _braced_label(name, node, nodes, k, user) -> tuple[str, int]:

@@ -150,11 +150,28 @@ def statements(latex: str) -> list[str]:
     out = []
     for row in joined:
         for piece in _colon_parts(row):
-            for part in _top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies")):
+            for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies"))):
                 for one in _lists(part):
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))
+    return out
+
+
+_OPEN_END = re.compile(r"(?:(?<![<>!\\])=|\+|-|\\times|\\cdot)$")
+
+
+def _spacing_joined(parts: list[str]) -> list[str]:
+    """Parts split at a ``\\quad`` that only spaced one statement (``a = \\quad b + \\quad c``): a
+    part that ends with a relation or an operator, or a part that starts with ``=``, is joined to
+    its neighbour."""
+    out: list[str] = []
+    for part in parts:
+        t = _trimmed(part)
+        if out and (_OPEN_END.search(_trimmed(out[-1])) or t.startswith("=")):
+            out[-1] = out[-1] + " " + part
+        else:
+            out.append(part)
     return out
 
 

@@ -10,11 +10,14 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
 * `matrix_power` — Mⁿ, M⁻¹ by the adjugate over the determinant;
 * the mixin `TextMatrices` of `derive.lecture.notes_check.Checker`, whose `_single_axis_turns`
   reads ``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)`` as the single-axis turns of the
-  text's sequence.
+  text's sequence, and whose `_turn_label` reads the axis and angle a matrix's name gives its
+  turn (``\\mathbf{R}_{x'}(\\theta)``), which the matrix written is then held to.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
+
+import re
 
 import sympy as sp
 
@@ -63,9 +66,42 @@ def matrix_power(e):
     return sp.ImmutableMatrix((m.adjugate() / det).applyfunc(trig_reduce)) ** (-n)
 
 
+def _angle_swapped(piece, old, new) -> str | None:
+    """The statement as written with the angle ``old`` of its right side put as ``new`` (the
+    correction in the text's own layout), or None when the right side does not spell it so."""
+    at = piece.find("=")
+    spelled = re.compile(re.escape(old) + r"(?![A-Za-z])")
+    if at < 0 or not spelled.search(piece, at):
+        return None
+    return piece[:at] + spelled.sub(lambda _: new, piece[at:])
+
+
 class TextMatrices:
-    """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab``, ``self.ctx`` and
-    ``self._matrix_name``."""
+    """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab``, ``self.ctx``,
+    ``self._matrix_name``, ``self._add`` and ``self.tex``."""
+
+    def _turn_label(self, text: str):
+        """``\\mathbf{R}_{x'}(\\theta) = …``: the axis (x, y, z; a primed axis is the same one in its
+        own frame, and 1, 2, 3 stand for x, y, z) and the angle a matrix's written name gives its
+        turn, or None when the left side is no such name."""
+        try:
+            toks = lx.scan(text)
+        except lx.NotRead:
+            return None
+        if len(toks) < 5 or [t.kind for t in toks[:5]] != ["atom", "op", "atom", "op", "rel"] or \
+                (toks[1].value, toks[3].value) != ("(", ")"):
+            return None
+        name, arg = toks[0].value, toks[2].value
+        axis = name.sub.replace("'", "").strip("{} ")
+        if axis not in ("1", "2", "3", "x", "y", "z") or name.sup or name.dots:
+            return None
+        try:
+            angle = self.vocab.resolve(arg)
+        except lx.NotRead:
+            return None
+        if angle not in self.d.rot.ANGLES:
+            return None
+        return "xyz"["123xyz".index(axis) % 3], angle
 
     def _single_axis_turns(self, text: str) -> str:
         """``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)``: matrices named by an axis (1, 2, 3
@@ -105,3 +141,24 @@ class TextMatrices:
                 self._matrix_name(sym, turn)
             text = text[:start] + text[end:]
         return text
+
+    def _turn_by_another_angle(self, line, piece, m, axis, angle) -> bool:
+        """The matrix of a turn named ``R_x(θ)`` written in another angle: the named turn with the
+        angle of the entries swapped is a typo of it (the name and the entries disagree on one
+        angle); any other matrix is left unchecked, since the name alone decides nothing."""
+        rot = self.d.rot
+        (other,) = m.free_symbols
+        swapped = m.xreplace({other: angle})
+        for kind, f in (("passive", rot.passive), ("active", rot.active)):
+            target = sp.Matrix(f(axis, angle))
+            if all(trig_reduce(x - y) == 0 for x, y in zip(swapped, target)):
+                self._turn_meant = target
+                self._add(line, piece, "rotation", "typo",
+                          f"the {kind} turn about {axis} by {self.tex(other)}, but its name says the turn "
+                          f"by {self.tex(angle)}: the entries must be in {self.tex(angle)}",
+                          _angle_swapped(piece, self.tex(other), self.tex(angle)) or self.tex(target))
+                return True
+        self._add(line, piece, "rotation", "unchecked",
+                  f"named the turn about {axis} by {self.tex(angle)}, but written in {self.tex(other)} only, "
+                  f"and no turn by {self.tex(angle)} with that angle swapped")
+        return True

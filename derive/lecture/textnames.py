@@ -47,6 +47,24 @@ _COORDINATE_USE = re.compile(r"(?<![A-Za-z\\])([xyz])" + _FRAME)
 """A coordinate labelled by its frame (x^{\\psi}), the rows of a change of frame."""
 
 
+def _a_torque(residual, name) -> bool:
+    """``name`` enters the equation as a torque would: a term of its own, not a coefficient of ω̃ᵢ
+    (Ω of ω̃̇₁ + Ωω̃₂ = 0 is a frequency the text has not yet said, not a torque)."""
+    try:
+        slope = sp.diff(residual, name)
+    except (TypeError, ValueError):
+        return False
+    return sp.diff(slope, name) == 0 and not _free(slope) & set(lx.W)
+
+
+_FUNCTION_OF = re.compile(r"\s*[^=()]+?\(\s*[^()]+,[^()]+\)\s*$")
+"""A side that is one name with the variables it depends on listed: ``f_{1}(\\omega_1, \\omega_2, \\omega_3)``."""
+
+
+def _right_side(text) -> str:
+    return text.split("=", 1)[1] if "=" in text else ""
+
+
 def _free(obj) -> set:
     return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
 
@@ -119,13 +137,26 @@ class TextNames:
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
                 if self.vocab.generic[members[0]].bold and self._vectors(line, piece, getattr(self, "_text", piece)):
                     return True          # a tensor the vector reader knows (Ï, 𝐈 as a matrix)
-                self._matrix_name(members[0], members[1])
+                mat = self._matrix_name(members[0], members[1])
                 self.settings_only = False
-                if not self._rotation(line, piece, sp.Matrix(members[1])):
+                self._turn_meant = None
+                if not self._rotation(line, piece, sp.Matrix(members[1]),
+                                      self._turn_label(getattr(self, "_text", piece))):
                     self._add(line, piece, "new symbol", "unchecked",
                               f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
+                if self._turn_meant is not None:      # the turn its name says: what the products after it use
+                    self.ctx.defs[mat] = sp.ImmutableMatrix(self._turn_meant)
                 return True
             return False
+        if len(members) == 2 and rels == ["="] and self._new_name(members[1]) and not self._new_name(members[0]) \
+                and not _free(members[0]) & {members[1]} and _FUNCTION_OF.match(_right_side(getattr(self, "_text", piece))):
+            # ω̃̇₁ = f₁(ω̃₁, ω̃₂, ω̃₃): the text names the left side as a function of what it lists
+            self.ctx.defs[members[1]] = members[0]
+            self._mark_defined(members[1])
+            self.settings_only = False
+            self._add(line, piece, "new symbol", "unchecked",
+                      f"defines the text's function {self.tex(members[1])} as the left side (recorded, then used)")
+            return True
         if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
@@ -168,6 +199,8 @@ class TextNames:
             return True
         if len(members) == 2 and rels[0] == "=" and self._settable(m0) \
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
+            # ω̃̇ᵢ = 0 that Euler's equations give under the settings before it (I₁ = I₂ = I₃): a claim
+            follows = self._eom_check(m0 - members[1]) if m0 in lx.WD else (False, "", None)
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
                 self.ctx.stated[m0] = f"line {line}"
@@ -177,6 +210,9 @@ class TextNames:
             if m0 in self.d.rot.ANGLES:
                 self.last_angle_set = (m0, members[1])     # the turn a numeric matrix then shows
             self._spin_set(m0, members[1])
+            if follows[0]:
+                self._add(line, piece, "equation of motion", "holds", f"{follows[1]}, under the settings stated before it")
+                return True
             self._add(line, piece, "setting", "unchecked",
                       f"sets {self.tex(m0)} = {self.tex(members[1])}: a case or an assumption of the text, not a claim")
             return True
@@ -221,7 +257,8 @@ class TextNames:
         loose -= self._constants()
         if not loose:
             return False
-        if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members):
+        if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members) and \
+                _a_torque(self._resolve(members[0] - members[-1]), next(iter(loose))):
             return False          # an equation of motion with a torque of the text's own (N₃)
         self.settings_only = False
         if self._vectors(line, piece, getattr(self, "_text", piece)):
@@ -311,15 +348,18 @@ class TextNames:
                   f"(R ω̃)_{atom.sub} = {self.tex(target)}: trig_reduce")
         return True
 
-    def _rotation(self, line, piece, m) -> bool:
+    def _rotation(self, line, piece, m, label=None) -> bool:
         """A 3×3 matrix of the angles the text names as a matrix of its own: a rotation, checked as
         one. Of one angle: the active or the passive (coordinate) turn about x, y or z by it; of
         all three: the convention's R (body → space) or its transpose, the passive matrix that
-        takes space components to body ones. False (nothing said) for any other matrix."""
+        takes space components to body ones. A name that says its turn (``label``: the axis and
+        angle of ``R_{x'}(\\theta)``) is held to it. False (nothing said) for any other matrix."""
         rot = self.d.rot
         angles = set(rot.ANGLES)
         if m.shape != (3, 3) or not _free(m) <= angles:
             return False
+        if label is not None and len(_free(m)) == 1 and _free(m) != {label[1]}:
+            return self._turn_by_another_angle(line, piece, m, *label)
         if not _free(m):       # numbers: the turn at the angle the text has just set (φ = 30°)
             # (an angle set in running text holds for its sentence only, so the value is kept here)
             last, value = getattr(self, "last_angle_set", (None, None))
@@ -411,6 +451,7 @@ class TextNames:
         mat = lx.Generic(sym.name, commutative=False)
         self.vocab.generic[mat] = atom
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
+        return mat
 
     # -- display scope of settings ----------------------------------------------------------------
     def _open_display(self, inline=False, line=None):

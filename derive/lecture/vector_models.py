@@ -163,8 +163,8 @@ class Model:
             return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
         if a.base == "T" and plain and not a.sub and not a.bold:
             return self.kinetic
-        if a.base == "tau" and not a.sub:
-            return LAW
+        if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and not a.sub:
+            return LAW                  # τ, or the letter the text calls the torque (Goldstein's 𝐍)
         return None
 
 
