@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from derive.runtime.cache import cache_dir
+from derive.runtime.cbuild import STRICT_FLAGS, check_compiles
 
 CC = os.environ.get("CC", "cc")
 
@@ -102,6 +103,14 @@ def kept_in_place(what: Iterable[str], inputs: dict[str, str | bytes],
         build(done)
         (done / ".ok").write_text("built cleanly\n")
     return done
+
+
+def compiles_once(sources: dict[str, str], main: str | list[str], flags=None) -> None:
+    """``derive.runtime.cbuild.check_compiles(sources, main, flags)`` (a clean compile of rendered
+    sources, strict flags by default), kept for these exact sources, flags and compiler."""
+    flags = list(STRICT_FLAGS if flags is None else flags)
+    mains = [main] if isinstance(main, str) else list(main)
+    once(["check", *mains, *flags], sources, lambda work: check_compiles(sources, mains, flags))
 
 
 def make_once(folder: Path, *argv: str) -> subprocess.CompletedProcess:
