@@ -7,9 +7,14 @@ cleanly under these flags" (or the executable they make) runs the compiler the f
 reads the outcome from ``$DERIVE_CACHE/test-builds/<key>`` afterwards; any change to a source, a
 flag or the compiler is another key, compiled afresh. A failure is never kept. The folder lives
 in the suite's own cache (``.cache/derive-tests``), so a fresh checkout compiles everything.
+
+Other builds that are functions of their inputs are kept the same way: a wheel and the virtual
+environment it is installed in (:func:`kept_in_place`, as a venv only works where it was made),
+an undamaged compile cache that the cache's healing tests copy and damage.
 """
 from __future__ import annotations
 
+import fcntl
 import functools
 import hashlib
 import os
@@ -21,6 +26,7 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from derive.runtime.cache import cache_dir
+from derive.runtime.cbuild import STRICT_FLAGS, check_compiles
 
 CC = os.environ.get("CC", "cc")
 
@@ -37,20 +43,31 @@ def files_in(*folders: Path) -> dict[str, bytes]:
             if p.is_file()}
 
 
-def once(what: Iterable[str], inputs: dict[str, str | bytes], build: Callable[[Path], None],
-         cc: str = CC) -> Path:
-    """The folder holding what ``build(folder)`` made for this key (``what``: the command line
-    or anything else the outcome depends on; ``inputs``: name -> contents of every file the
-    compile reads); ``build`` runs only when no earlier success is kept, and must raise (or
-    fail an assertion) when the compile fails."""
+def files_under(*folders: Path) -> dict[str, bytes]:
+    """Every file under ``folders`` (recursive; bytecode caches left out), by path: what a run
+    of the package can read from its sources, templates and generated code."""
+    return {str(p): p.read_bytes() for folder in folders for p in sorted(Path(folder).rglob("*"))
+            if p.is_file() and "__pycache__" not in p.parts}
+
+
+def _key(what: Iterable[str], inputs: dict[str, str | bytes], cc: str) -> str:
     h = hashlib.sha256(_identity(cc).encode())
     for part in what:
         h.update(b"\0a" + part.encode())
     for name in sorted(inputs):
         data = inputs[name]
         h.update(b"\0n" + name.encode() + b"\0d" + (data.encode() if isinstance(data, str) else data))
+    return h.hexdigest()[:32]
+
+
+def once(what: Iterable[str], inputs: dict[str, str | bytes], build: Callable[[Path], None],
+         cc: str = CC) -> Path:
+    """The folder holding what ``build(folder)`` made for this key (``what``: the command line
+    or anything else the outcome depends on; ``inputs``: name -> contents of every file the
+    compile reads); ``build`` runs only when no earlier success is kept, and must raise (or
+    fail an assertion) when the compile fails."""
     root = cache_dir() / "test-builds"
-    done = root / h.hexdigest()[:32]
+    done = root / _key(what, inputs, cc)
     if (done / ".ok").is_file():
         return done
     root.mkdir(parents=True, exist_ok=True)
@@ -66,6 +83,34 @@ def once(what: Iterable[str], inputs: dict[str, str | bytes], build: Callable[[P
     finally:
         shutil.rmtree(work, ignore_errors=True)
     return done
+
+
+def kept_in_place(what: Iterable[str], inputs: dict[str, str | bytes],
+                  build: Callable[[Path], None], cc: str = CC) -> Path:
+    """:func:`once` for an outcome that works only where it was made (a virtual environment: its
+    scripts name their interpreter by absolute path): ``build(folder)`` runs in the kept folder
+    itself, under a lock the test processes share; a folder left unfinished (no ``.ok``) is
+    emptied and built again."""
+    root = cache_dir() / "test-builds"
+    root.mkdir(parents=True, exist_ok=True)
+    done = root / f"{_key(what, inputs, cc)}-in-place"
+    with open(root / f"{done.name}.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if (done / ".ok").is_file():
+            return done
+        shutil.rmtree(done, ignore_errors=True)
+        done.mkdir()
+        build(done)
+        (done / ".ok").write_text("built cleanly\n")
+    return done
+
+
+def compiles_once(sources: dict[str, str], main: str | list[str], flags=None) -> None:
+    """``derive.runtime.cbuild.check_compiles(sources, main, flags)`` (a clean compile of rendered
+    sources, strict flags by default), kept for these exact sources, flags and compiler."""
+    flags = list(STRICT_FLAGS if flags is None else flags)
+    mains = [main] if isinstance(main, str) else list(main)
+    once(["check", *mains, *flags], sources, lambda work: check_compiles(sources, mains, flags))
 
 
 def make_once(folder: Path, *argv: str) -> subprocess.CompletedProcess:

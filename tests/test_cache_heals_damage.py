@@ -5,8 +5,8 @@ after which the next run is warm.
 
 Every run goes through the command line in a fresh process with a fresh ``DERIVE_CACHE`` (what
 the cache lists and clears is asked of ``derive cache`` in this process); the damaged caches are
-copies of one undamaged cache built once per session, and each healed run is compared with the
-undamaged run's results."""
+copies of one undamaged cache (built by the same commands, and kept between runs for the exact
+sources it is built from), and each healed run is compared with the undamaged run's results."""
 import hashlib
 import os
 import re
@@ -15,10 +15,13 @@ import shutil
 import subprocess
 import sys
 import time
+from importlib import metadata
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+import compile_once
 from cli_in_process import derive_main
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -73,26 +76,40 @@ def listed(cache: Path) -> list[str]:
     return [ln.split()[0] for ln in r.stdout.splitlines()[1:-1]]
 
 
+def kept(name: str, build) -> tuple[Path, Path]:
+    """The cache and the results ``build(folder)`` leaves in ``folder`` (``cache``, ``ref.npz``),
+    kept between runs for the exact package, templates, generated code, scene and libraries they
+    come from (``compile_once.once``, keyed by the compiler too): a run is a function of these, and
+    any change to one builds them afresh. The tests only copy them."""
+    inputs = compile_once.files_under(ROOT / "derive", ROOT / "templates", ROOT / "generated")
+    inputs[str(SCENE)] = SCENE.read_bytes()
+    what = [name, sys.version, *(f"{dist} {metadata.version(dist)}" for dist in ("numpy", "sympy", "jinja2")),
+            repr(sorted((k, v) for k, v in os.environ.items() if k.startswith("SYMPY_")))]
+    done = compile_once.once(what, inputs, build)
+    return done / "cache", done / "ref.npz"
+
+
 @pytest.fixture(scope="session")
-def pristine(tmp_path_factory):
+def pristine():
     """An undamaged cache with two libraries of the free body (dop853 and rk4), and the dop853
     run's results."""
-    top = tmp_path_factory.mktemp("pristine")
-    cache, out = top / "cache", top / "ref.npz"
-    for r in (simulate(cache, out), simulate(cache, top / "rk4.npz", "--method", "rk4")):
-        assert r.returncode == 0 and r.stderr == "", r.stderr
-    return cache, out
+    def build(top: Path) -> None:
+        cache, out = top / "cache", top / "ref.npz"
+        for r in (simulate(cache, out), simulate(cache, top / "rk4.npz", "--method", "rk4")):
+            assert r.returncode == 0 and r.stderr == "", r.stderr
+
+    return kept("pristine", build)
 
 
 @pytest.fixture(scope="session")
-def pristine_derived(tmp_path_factory):
+def pristine_derived():
     """An undamaged cache holding a model derived on demand (the free body in quaternions) and
     its library, and the run's results."""
-    top = tmp_path_factory.mktemp("pristine-derived")
-    cache, out = top / "cache", top / "ref.npz"
-    r = simulate(cache, out, *DERIVED)
-    assert r.returncode == 0 and r.stderr == "", r.stderr
-    return cache, out
+    def build(top: Path) -> None:
+        r = simulate(top / "cache", top / "ref.npz", *DERIVED)
+        assert r.returncode == 0 and r.stderr == "", r.stderr
+
+    return kept("pristine-derived", build)
 
 
 @pytest.fixture

@@ -11,6 +11,7 @@ import os
 import shutil
 import subprocess
 import sys
+from importlib import metadata
 
 import mpmath as mp
 import numpy as np
@@ -342,13 +343,25 @@ def test_generated_dir_is_what_generate_writes(generated_files):
 
 def test_generation_is_independent_of_hash_seed(generated_files):
     """A fresh process with a fixed hash seed renders the same sources as the run's own
-    generate_all (whose processes' seeds pytest left random, or set otherwise)."""
+    generate_all (whose processes' seeds pytest left random, or set otherwise). With the seed
+    fixed, that process's output is a function of the package, its libraries and the seed, as
+    ``generated_files`` is of the sources: it is kept for exactly these (``compile_once.once``)
+    and derived again after any change to one, when ``generated_files`` is too."""
     seed = "12345" if os.environ.get("PYTHONHASHSEED") != "12345" else "0"
     env = dict(os.environ, PYTHONHASHSEED=seed)
     code = ("from derive.codegen import sources; from derive.symbolic import models; import sys, json;"
             "sys.stdout.write(json.dumps(sources.model_sources(models.CATALOGUE['heavy_top_reduced']())))")
-    r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, cwd=ROOT, check=True)
-    theirs = json.loads(r.stdout)
+
+    def derive_with_the_seed(work):
+        r = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, cwd=ROOT,
+                           check=True)
+        (work / "sources.json").write_text(r.stdout)
+
+    inputs = compile_once.files_under(ROOT / "derive", ROOT / "templates")
+    what = [code, f"PYTHONHASHSEED={seed}", sys.version,
+            *(f"{dist} {metadata.version(dist)}" for dist in ("numpy", "sympy", "jinja2")),
+            repr(sorted((k, v) for k, v in os.environ.items() if k.startswith("SYMPY_")))]
+    theirs = json.loads((compile_once.once(what, inputs, derive_with_the_seed) / "sources.json").read_text())
     assert "c/heavy_top_reduced.c" in theirs
     assert theirs == {name: generated_files.get(name) for name in theirs}
 

@@ -221,10 +221,10 @@ def test_cli_animates_a_top_on_a_table_as_gif_and_html(tmp_path, capsys):
     scene.write_text(text.split("[simulate]")[0] + "[simulate]\nt_end = 0.3\nsamples = 31\n",
                      encoding="utf-8")
     gif, page = tmp_path / "peg.gif", tmp_path / "peg.html"
-    assert main(["animate", str(scene), "-o", str(gif), "--fps", "5", "--speed", "0.1"]) == 0
-    assert "16 frames at 5 frames/s" in capsys.readouterr().out
+    assert main(["animate", str(scene), "-o", str(gif), "--fps", "5", "--speed", "0.25"]) == 0
+    assert "7 frames at 5 frames/s" in capsys.readouterr().out  # 0.3 s at 0.25 s per second, 5 a second
     im = Image.open(gif)
-    assert im.format == "GIF" and im.n_frames == 16 and im.size == draw.PIXELS
+    assert im.format == "GIF" and im.n_frames == 7 and im.size == draw.PIXELS
     assert main(["animate", str(scene), "-o", str(page), "--fps", "5", "--speed", "0.3"]) == 0
     text = page.read_text(encoding="utf-8")
     assert "data:image/gif;base64," in text and "http" not in text.lower().replace("http-equiv", "")

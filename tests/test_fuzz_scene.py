@@ -379,11 +379,11 @@ def test_the_bases_are_valid_and_cheap():
 
 def test_the_generator_reaches_every_outcome():
     """Not a vacuous fuzz: a fixed sample of its scenes ends in success and in bad input."""
-    from hypothesis import find
+    from hypothesis import Phase, find
 
-    for status in (0, 2):
+    for status in (0, 2):  # the first scene found is enough: no shrinking it to a minimal one
         find(malformed_scenes(), lambda c: check_contract(c)[0] == status,
-             settings=settings(max_examples=500, database=None, deadline=None))
+             settings=settings(max_examples=500, database=None, deadline=None, phases=[Phase.generate]))
 
 
 # --- the hand-written corpus ------------------------------------------------------------------

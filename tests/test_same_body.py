@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+
+import compile_once
 from cli_in_process import derive_main
 
 import derive
@@ -55,12 +57,18 @@ def _compiler() -> list[str]:
 
 
 def _compile(c_files: list[Path], include: Path, out: Path) -> ctypes.CDLL:
-    """A shared library of model files, compiled as strictly as the ABI promises."""
-    cmd = _compiler() + ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-fPIC",
-                         "-shared", "-I", str(include), *map(str, c_files), "-o", str(out), "-lm"]
-    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
-    assert proc.returncode == 0, proc.stderr[-2000:]
-    return ctypes.CDLL(str(out))
+    """A shared library of model files, compiled as strictly as the ABI promises (kept for the
+    exact files of ``include``, flags and compiler: ``compile_once.once``)."""
+    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O1", "-fPIC", "-shared"]
+
+    def build(work: Path) -> None:
+        cmd = _compiler() + flags + ["-I", str(include), *map(str, c_files), "-o", str(work / out.name), "-lm"]
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
+        assert proc.returncode == 0, proc.stderr[-2000:]
+
+    done = compile_once.once(["same-body", *flags, *(f.name for f in c_files), out.name],
+                             compile_once.files_in(include), build)
+    return ctypes.CDLL(str(done / out.name))
 
 
 class CModel:

@@ -8,6 +8,7 @@ import subprocess
 import numpy as np
 import pytest
 
+import compile_once
 import derive
 from derive.runtime import catalogue
 from derive.errors import SceneError
@@ -217,7 +218,7 @@ def test_cli_writes_parquet_and_map_and_refuses_bad_files(tmp_path, capsys):
     assert err.startswith(f"error: {bad}: vary.initial.beta: ")
 
 
-def test_measure_registry_and_strict_c(tmp_path):
+def test_measure_registry_and_strict_c():
     """The registry holds the documented measures; the measures unit compiles cleanly under the
     project's strict flags."""
     assert set(REGISTRY) >= {"beta_max", "beta_min", "energy_drift", "nfev", "final_state", "flips",
@@ -226,16 +227,19 @@ def test_measure_registry_and_strict_c(tmp_path):
     if gcc is None:
         pytest.skip("no gcc")
     desc = catalogue.describe(("euler-poisson", True, ("gravity",)))
-    files = c_sources(desc, "dop853")
-    for name, text in files.items():
-        (tmp_path / name).write_text(text)
-    unit = tmp_path / "unit.c"
-    unit.write_text("".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
-                                                          f"{desc.name}_measures.c")))
-    p = subprocess.run([gcc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c",
-                        "-o", str(tmp_path / "unit.o"), "-DDERIVE_MEASURES", str(unit)],
-                       capture_output=True, text=True, cwd=tmp_path, timeout=120)
-    assert p.returncode == 0, p.stderr
+    files = dict(c_sources(desc, "dop853"))
+    files["unit.c"] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
+                                                            f"{desc.name}_measures.c"))
+    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c", "-DDERIVE_MEASURES"]
+
+    def build(work):
+        for name, text in files.items():
+            (work / name).write_text(text)
+        p = subprocess.run([gcc, *flags, "-o", "unit.o", "unit.c"], capture_output=True, text=True,
+                           cwd=work, timeout=120)
+        assert p.returncode == 0, p.stderr
+
+    compile_once.once(["measures unit", *flags], files, build, cc=gcc)  # kept for these exact sources
     assert MeasureKernel.load(desc, "dop853") is MeasureKernel.load(desc, "dop853")
 
 

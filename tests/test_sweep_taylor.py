@@ -10,6 +10,8 @@ import subprocess
 
 import numpy as np
 import pytest
+
+import compile_once
 from cli_in_process import derive_main
 
 import derive
@@ -241,23 +243,27 @@ def test_cli_refuses_a_fixed_step_method_with_exit_2(tmp_path):
     assert p.stderr.startswith(f"error: {sweep}: scene.simulate.method: ")
 
 
-def test_the_series_window_compiles_under_the_strict_flags(tmp_path):
+def test_the_series_window_compiles_under_the_strict_flags():
     """The measures unit of the Taylor method (model, solvers, Taylor solver, measures) compiles
     cleanly under the project's strict flags, and runs from the cache's library."""
     gcc = shutil.which("gcc")
     if gcc is None:
         pytest.skip("no gcc")
     desc = catalogue.describe(("euler-poisson", True, ("gravity",)))
-    for name, text in ms.c_sources(desc, "taylor").items():
-        (tmp_path / name).write_text(text)
-    unit = tmp_path / "unit.c"
-    unit.write_text("".join(f'#include "{n}"\n' for n in (
-        f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_taylor.c", f"{desc.name}_measures.c")))
+    files = dict(ms.c_sources(desc, "taylor"))
+    files["unit.c"] = "".join(f'#include "{n}"\n' for n in (
+        f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_taylor.c", f"{desc.name}_measures.c"))
     # as derive.sweeps.measures builds it: one method per library
-    p = subprocess.run([gcc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c",
-                        "-o", str(tmp_path / "unit.o"), "-DDERIVE_MEASURES", "-DDERIVE_SELECT",
-                        "-DDERIVE_WITH_TAYLOR", str(unit)],
-                       capture_output=True, text=True, cwd=tmp_path, timeout=120)
-    assert p.returncode == 0, p.stderr
-    assert "_measure_series" in (tmp_path / f"{desc.name}_measures.c").read_text()
+    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c", "-DDERIVE_MEASURES",
+             "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
+
+    def build(work):
+        for name, text in files.items():
+            (work / name).write_text(text)
+        p = subprocess.run([gcc, *flags, "-o", "unit.o", "unit.c"], capture_output=True, text=True,
+                           cwd=work, timeout=120)
+        assert p.returncode == 0, p.stderr
+
+    compile_once.once(["measures unit", *flags], files, build, cc=gcc)  # kept for these exact sources
+    assert "_measure_series" in files[f"{desc.name}_measures.c"]
     assert ms.MeasureKernel.load(desc, "taylor") is ms.MeasureKernel.load(desc, "taylor")

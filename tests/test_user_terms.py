@@ -7,11 +7,15 @@ never derive against itself. Expressions from a stranger are refused by a whitel
 import contextlib
 import io
 import math
+import shutil
 import time
+from importlib import metadata
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+import compile_once
 import derive
 from derive import SceneError, cli
 from derive.sim.scene import load_scene
@@ -423,24 +427,37 @@ def test_a_warm_run_of_a_user_body_imports_no_sympy(tmp_path):
     """Validation reads the expressions with ast alone; the model comes from the compile
     cache: a second process runs the body without SymPy. Both processes use a cache of this
     test's own, so that nothing another test does to the shared cache can change the second
-    run's path."""
+    run's path. The first process's cache is a function of the package, its libraries and the
+    body: it is kept for exactly these (``compile_once.once``, which runs the first process
+    again after any change to one), and the second process runs on a copy of it."""
     import json
     import os
     import subprocess
     import sys
 
+    root = Path(__file__).resolve().parents[1]
     sc = scene(potential=[magnet()], torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
                                               "params": {"A": 0.01, "w": 3.0}}])
     code = ("import json, sys, derive; "
             "derive.simulate(json.loads(sys.argv[1]), formulation='quaternion'); "
             "print([m for m in ('sympy', 'jinja2') if m in sys.modules])")
-    env = dict(os.environ, DERIVE_CACHE=str(tmp_path / "cache"))
-    runs = [subprocess.run([sys.executable, "-c", code, json.dumps(sc)], capture_output=True, text=True,
-                           env=env, timeout=300) for _ in range(2)]
-    for out in runs:
+
+    def run(cache: Path) -> subprocess.CompletedProcess:
+        out = subprocess.run([sys.executable, "-c", code, json.dumps(sc)], capture_output=True, text=True,
+                             env=dict(os.environ, DERIVE_CACHE=str(cache)), timeout=300)
         assert out.returncode == 0, out.stderr
-    assert "sympy" in runs[0].stdout  # the first derived it (with SymPy) ...
-    assert runs[1].stdout.strip() == "[]", runs[1].stderr  # ... the second did not
+        return out
+
+    def first(work: Path) -> None:
+        assert "sympy" in run(work / "cache").stdout  # the first derived it (with SymPy) ...
+
+    inputs = compile_once.files_under(root / "derive", root / "templates", root / "generated")
+    what = ["a user body derived", json.dumps(sc), sys.version,
+            *(f"{dist} {metadata.version(dist)}" for dist in ("numpy", "sympy", "jinja2")),
+            repr(sorted((k, v) for k, v in os.environ.items() if k.startswith("SYMPY_")))]
+    shutil.copytree(compile_once.once(what, inputs, first) / "cache", tmp_path / "cache", symlinks=True)
+    second = run(tmp_path / "cache")
+    assert second.stdout.strip() == "[]", second.stderr  # ... the second did not
 
 
 def test_a_sweep_task_registers_the_terms_a_fresh_worker_does_not_know():

@@ -6,7 +6,8 @@ virtual environment (no pip of its own: this interpreter's pip installs into it 
 borrowed from this environment through a ``.pth`` file. Everything then runs from an empty
 directory with ``python -I`` (or the ``derive`` console script) and no ``PYTHONPATH``, so the
 checkout is not on ``sys.path``: the templates and the committed generated code must come from
-the wheel itself.
+the wheel itself. The wheel and its environment are kept between runs for the exact inputs
+they are built from (the ``installed`` fixture): a change to any of them builds both again.
 """
 from __future__ import annotations
 
@@ -17,10 +18,12 @@ import subprocess
 import sys
 import sysconfig
 import zipfile
+from importlib import metadata
 from pathlib import Path
 
 import pytest
 
+import compile_once
 import derive
 
 CHECKOUT = Path(__file__).resolve().parent.parent
@@ -57,12 +60,38 @@ def _run(cmd, cwd, **kw):
 
 
 @pytest.fixture(scope="module")
-def wheel(once, tmp_path_factory) -> Path:
-    """The wheel, built once per test run (the test processes share it)."""
-    return once("wheel", lambda: _build_wheel(tmp_path_factory))
+def installed(tmp_path_factory) -> Path:
+    """The folder holding ``wheel/`` (the wheel built from the packaging inputs) and ``venv/`` (a
+    virtual environment with it installed; the tests only run its Python).
+
+    Both are a function of the packaging inputs' bytes, this interpreter and its pip and
+    setuptools: the folder is kept for exactly these (``compile_once.kept_in_place``), so any
+    change to them builds both afresh, and the test processes of a run share it."""
+    inputs = compile_once.files_under(*(CHECKOUT / name for name in PACKAGING_INPUTS
+                                        if (CHECKOUT / name).is_dir()))
+    inputs.update({name: (CHECKOUT / name).read_bytes() for name in PACKAGING_INPUTS
+                   if (CHECKOUT / name).is_file()})
+    what = ["wheel and venv", sys.version, sys.executable,
+            *(f"{dist} {metadata.version(dist)}" for dist in ("pip", "setuptools"))]
+
+    def build(folder: Path) -> None:
+        _install(_build_wheel(tmp_path_factory, folder / "wheel"), folder / "venv")
+
+    return compile_once.kept_in_place(what, inputs, build)
 
 
-def _build_wheel(tmp_path_factory) -> Path:
+@pytest.fixture(scope="module")
+def wheel(installed) -> Path:
+    (whl,) = (installed / "wheel").glob("derive_rigid_body-*.whl")  # the distribution's name, derive.DISTRIBUTION
+    return whl
+
+
+@pytest.fixture(scope="module")
+def venv(installed) -> Path:
+    return installed / "venv"
+
+
+def _build_wheel(tmp_path_factory, out: Path) -> Path:
     src = tmp_path_factory.mktemp("src")
     for name in PACKAGING_INPUTS:
         path = CHECKOUT / name
@@ -70,24 +99,15 @@ def _build_wheel(tmp_path_factory) -> Path:
             shutil.copytree(path, src / name, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
         else:
             shutil.copy2(path, src / name)
-    out = tmp_path_factory.mktemp("wheel")
     r = _run([sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-index", "--no-build-isolation",
               "--disable-pip-version-check", "-w", str(out), str(src)], cwd=src)
     assert r.returncode == 0, r.stderr
-    (whl,) = out.glob("derive_rigid_body-*.whl")    # the distribution's name, derive.DISTRIBUTION
+    (whl,) = out.glob("derive_rigid_body-*.whl")
     return whl
 
 
-@pytest.fixture(scope="module")
-def venv(once, wheel, tmp_path_factory) -> Path:
-    """A virtual environment with the wheel installed, made once per test run (the tests only
-    run its Python)."""
-    return once("wheel-venv", lambda: _install(wheel, tmp_path_factory))
-
-
-def _install(wheel: Path, tmp_path_factory) -> Path:
-    env_dir = tmp_path_factory.mktemp("venv")
-    r = _run([sys.executable, "-m", "venv", "--without-pip", "--clear", str(env_dir)], cwd=env_dir)
+def _install(wheel: Path, env_dir: Path) -> Path:
+    r = _run([sys.executable, "-m", "venv", "--without-pip", "--clear", str(env_dir)], cwd=env_dir.parent)
     assert r.returncode == 0, r.stderr
     python = env_dir / "bin" / "python"
     purelib = _run([str(python), "-I", "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
