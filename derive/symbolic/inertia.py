@@ -86,7 +86,7 @@ class Solid:
         for i in range(3):
             for j in range(i, 3):
                 f = (r2 if i == j else 0) - r[i] * r[j]
-                I[i, j] = I[j, i] = sp.simplify(M * self._integrate(sp.expand(sp.trigsimp(f))) / self.volume)
+                I[i, j] = I[j, i] = sp.simplify(M * self._integrate(sp.expand(f)) / self.volume)
         return I
 
     @functools.cached_property
