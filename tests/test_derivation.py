@@ -93,6 +93,20 @@ def test_parallel_axis_shift_equals_direct_integration_about_apex():
     assert (shifted - cone.tensor_about_origin).applyfunc(sp.simplify) == sp.zeros(3, 3)
 
 
+@pytest.mark.parametrize("hi", [sp.pi, 2 * sp.pi])
+def test_exact_integration_rules_are_sympy_integrate(hi):
+    """The solids' integrals term by term (powers; cos^m sin^n over [0, π] and a whole period;
+    harmonics of a whole period; anything else by sympy.integrate) equal sympy.integrate."""
+    v, u, k = sp.symbols("v u k", positive=True)
+    terms = [k * v**3 * u, sp.cos(v)**4 * sp.sin(v)**2, sp.cos(v)**3 * sp.sin(v)**2, sp.sin(v)**5,
+             sp.cos(v)**2 * sp.sin(v)**3 * u**2, sp.sin(2 * v + u), sp.cos(3 * v), sp.exp(v) * sp.cos(v)]
+    for f in terms:
+        got = inertia.integrate_terms(f, v, 0, hi)
+        assert sp.simplify(got - sp.integrate(f, (v, 0, hi))) == 0, f
+    assert sp.expand(inertia.integrate_terms(k * v**2 + v, v, -u, u * k) - (k * (u**3 * k**3 + u**3) / 3
+                                                                           + (u**2 * k**2 - u**2) / 2)) == 0
+
+
 def test_principal_axes_diagonalise_and_are_right_handed():
     I = inertia.point_masses_numeric(RNG.uniform(1, 2, 10), RNG.normal(size=(10, 3)))
     moments, axes = inertia.principal_axes(I)

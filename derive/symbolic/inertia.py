@@ -4,7 +4,9 @@
     I_ij = ∫ ρ (δ_ij r² − r_i r_j) dV                (a solid of uniform density ρ = M / V)
 
 Solids are integrated here, not looked up: each is a region in its natural coordinates with
-the Jacobian of the volume element, and the tensor comes out of `sympy.integrate`. Axis 3 is the
+the Jacobian of the volume element, integrated variable by variable with the exact rules for
+powers and for whole periods of sines and cosines (`integrate_terms`; `sympy.integrate` for any
+other term). Axis 3 is the
 symmetry axis. "About the centre of mass" and "about a pivot on the symmetry axis at distance d
 from the centre of mass" are related by the parallel-axis theorem, I_pivot = I_cm + M (d² 1 − d dᵀ),
 which `shift` applies (and tests check against direct integration about the pivot).
@@ -61,7 +63,11 @@ class Solid:
     parameters: tuple
 
     def _integrate(self, f):
-        return sp.integrate(f * self.jacobian, *self.limits)
+        """∫ f J over the region, variable by variable (innermost first) with :func:`integrate_terms`."""
+        f = f * self.jacobian
+        for v, lo, hi in self.limits:
+            f = integrate_terms(f, v, lo, hi)
+        return f
 
     @functools.cached_property
     def volume(self):
@@ -80,7 +86,7 @@ class Solid:
         for i in range(3):
             for j in range(i, 3):
                 f = (r2 if i == j else 0) - r[i] * r[j]
-                I[i, j] = I[j, i] = sp.simplify(M * self._integrate(sp.expand(sp.trigsimp(f))) / self.volume)
+                I[i, j] = I[j, i] = sp.simplify(M * self._integrate(sp.expand(f)) / self.volume)
         return I
 
     @functools.cached_property
@@ -93,6 +99,59 @@ class Solid:
     def about_pivot(self, distance=d) -> sp.Matrix:
         """About a pivot on the symmetry axis at ``distance`` from the centre of mass."""
         return shift(self.about_centre_of_mass, M, (0, 0, distance)).applyfunc(sp.simplify)
+
+
+def _power_integral(k, lo, hi):
+    """∫ v^k dv from lo to hi = (hi^(k+1) − lo^(k+1)) / (k + 1), k ≥ 0."""
+    return (hi ** (k + 1) - lo ** (k + 1)) / (k + 1)
+
+
+def _trig_integral(m, n, lo, hi):
+    """∫ cos^m v sin^n v dv (m, n ≥ 0) over a whole period [0, 2π] or over [0, π], by the Wallis
+    and Beta-function rules (None for other limits):
+
+        ∫₀^2π cos^m sin^n = 2π (m−1)!! (n−1)!! / (m+n)!!   (m, n even; else 0)
+        ∫₀^π  cos^m sin^n = Γ((m+1)/2) Γ((n+1)/2) / Γ((m+n)/2 + 1)   (m even; else 0)
+    """
+    if lo != 0 or hi not in (sp.pi, 2 * sp.pi):
+        return None
+    if m % 2 or (hi == 2 * sp.pi and n % 2):
+        return sp.S.Zero
+    if hi == 2 * sp.pi:
+        return 2 * sp.pi * sp.factorial2(m - 1) * sp.factorial2(n - 1) / sp.factorial2(m + n)
+    return sp.gamma(sp.Rational(m + 1, 2)) * sp.gamma(sp.Rational(n + 1, 2)) / sp.gamma(sp.Rational(m + n, 2) + 1)
+
+
+def _whole_harmonic(g, v) -> bool:
+    """Whether g is sin(k v + c) or cos(k v + c), k a nonzero integer (its integral over a whole
+    period [0, 2π] is 0)."""
+    if not isinstance(g, (sp.sin, sp.cos)):
+        return False
+    k = sp.diff(g.args[0], v)
+    return k.is_Integer and k != 0 and sp.diff(g.args[0], v, 2) == 0
+
+
+def integrate_terms(f, v, lo, hi):
+    """∫ f dv from ``lo`` to ``hi``, term by term of the expanded integrand: a term's factor in v
+    that is v^k (k ≥ 0) or cos^m v sin^n v over [0, 2π] or [0, π] by the exact rules
+    (:func:`_power_integral`, :func:`_trig_integral`), any other by ``sympy.integrate``."""
+    total = sp.S.Zero
+    for term in sp.Add.make_args(sp.expand(f)):
+        if term == 0:
+            continue
+        outer, inner = term.as_independent(v, as_Add=False)
+        powers = inner.as_powers_dict()
+        exps = {base: e for base, e in powers.items() if base != 1}
+        ok = all(e.is_Integer and e >= 0 for e in exps.values())
+        value = None
+        if ok and set(exps) <= {v}:
+            value = _power_integral(int(exps.get(v, 0)), lo, hi)
+        elif ok and set(exps) <= {sp.cos(v), sp.sin(v)}:
+            value = _trig_integral(int(exps.get(sp.cos(v), 0)), int(exps.get(sp.sin(v), 0)), lo, hi)
+        elif _whole_harmonic(inner, v) and lo == 0 and hi == 2 * sp.pi:
+            value = sp.S.Zero
+        total += outer * (value if value is not None else sp.integrate(inner, (v, lo, hi)))
+    return total
 
 
 def _cyl(radius, height_from, height_to):
