@@ -98,3 +98,48 @@ def test_a_turn_whose_entries_are_in_another_angle_than_its_name_says_is_a_typo(
 def test_a_turn_written_in_the_angle_its_name_says_holds():
     claims = kept.check_text(_TURNS.replace("ANGLE", "\\theta"))
     assert [c.verdict for c in claims] == ["holds", "holds", "holds", "holds"]
+
+
+
+def _z_turn(angle):
+    return (f"\\begin{{bmatrix}} \\cos{angle} & \\sin{angle} & 0 \\\\ -\\sin{angle} & \\cos{angle} & 0 \\\\ "
+            f"0 & 0 & 1 \\end{{bmatrix}}")
+
+
+_BOUND = ("---\nconvention: z-x-z\n---\n\n"
+          "$$\\mathbf{R}_{z}(\\phi) = " + _z_turn("\\phi") + "$$\n\n"
+          "$$\\mathbf{R}_{x}(\\theta) = \\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & \\cos\\theta & \\sin\\theta \\\\ "
+          "0 & -\\sin\\theta & \\cos\\theta \\end{bmatrix}$$\n\n")
+_PLAIN = _BOUND.replace("\\mathbf{R}", "R")
+
+
+def _last(text):
+    return kept.check_text(text)[-1]
+
+
+def test_a_plain_turn_name_at_another_angle_is_the_turn_by_that_angle_in_the_sense_learned():
+    claim = _last(_PLAIN + "$$R = R_{z}(\\psi) R_{x}(\\theta) R_{z}(\\phi)$$\n")
+    assert claim.verdict == "holds" and "passive" in claim.why
+
+
+def test_a_bold_turn_name_bound_at_one_angle_and_used_at_another_is_left_unchecked():
+    for statement in ("\\mathbf{R} = \\mathbf{R}_{z}(\\psi) \\mathbf{R}_{x}(\\theta) \\mathbf{R}_{z}(\\phi)",
+                      "\\mathbf{R}_{z}(\\psi) = " + _z_turn("\\psi")):
+        claim = _last(_BOUND + "$$" + statement + "$$\n")
+        assert claim.verdict == "unchecked" and "turn by \\psi is not read" in claim.why
+
+
+def test_a_slip_with_a_turn_name_at_another_angle_is_never_held():
+    # the factors in the wrong order: R_z(φ) R_x(θ) R_z(ψ) is no rotation of the z-x-z sequence
+    assert _last(_PLAIN + "$$R = R_{z}(\\phi) R_{x}(\\theta) R_{z}(\\psi)$$\n").verdict != "holds"
+    # R_z(ψ) written out in φ, and a product with φ for ψ: the bound R_z(φ) would make them identities
+    assert _last(_BOUND + "$$\\mathbf{R}_{z}(\\psi) = " + _z_turn("\\phi") + "$$\n").verdict != "holds"
+    assert _last(_BOUND + "$$\\mathbf{R}_{z}(\\psi) \\mathbf{R}_{z}(\\phi) = \\mathbf{R}_{z}(\\phi) "
+                 "\\mathbf{R}_{z}(\\phi)$$\n").verdict != "holds"
+
+
+def test_a_bound_turn_used_at_its_own_angle_is_read_as_bound():
+    eye = "\\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & 1 & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}"
+    right = _last(_BOUND + "$$\\mathbf{R}_{z}(\\phi) \\mathbf{R}_{z}(\\phi)^{T} = " + eye + "$$\n")
+    wrong = _last(_BOUND + "$$\\mathbf{R}_{z}(\\phi) \\mathbf{R}_{z}(\\phi) = " + eye + "$$\n")
+    assert right.verdict == "holds" and wrong.verdict != "holds"

@@ -256,6 +256,10 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        other = self._turn_at_another_argument(text)
+        if other is not None:
+            self._add(line, piece, "rotation", "unchecked", other)
+            return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._operator(line, piece, text) or self._coordinate(line, piece, text):

@@ -11,7 +11,10 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
 * the mixin `TextMatrices` of `derive.lecture.notes_check.Checker`, whose `_single_axis_turns`
   reads ``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)`` as the single-axis turns of the
   text's sequence, and whose `_turn_label` reads the axis and angle a matrix's name gives its
-  turn (``\\mathbf{R}_{x'}(\\theta)``), which the matrix written is then held to.
+  turn (``\\mathbf{R}_{x'}(\\theta)``), which the matrix written is then held to. A plain name
+  applied to two angles in one product (``R_z(\\psi) R_x(\\theta) R_z(\\phi)``) is a turn per angle,
+  in the sense the text's own turns have; a name bound to the turn by one angle and applied to
+  another is never read as the bound turn (`_turn_at_another_argument` says why it is unchecked).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
@@ -103,6 +106,42 @@ class TextMatrices:
             return None
         return "xyz"["123xyz".index(axis) % 3], angle
 
+    def _turn_at_another_argument(self, text: str) -> str | None:
+        """``R_z(\\psi)`` where ``R_z`` is bound to the turn by φ: why the statement is not read (the
+        bound matrix would stand in for a turn by another angle), or None when every bound turn's
+        name is applied to the angle it is bound at, or to none."""
+        try:
+            toks = lx.scan(text)
+        except lx.NotRead:
+            return None
+        angles = set(self.d.rot.ANGLES)
+        for k in range(len(toks) - 2):
+            a, o, g = toks[k:k + 3]
+            if a.kind != "atom" or (o.kind, o.value) != ("op", "(") or (g.kind == "atom" and g.value.bold):
+                continue            # 𝐀(𝐁) is a product of the text's matrices
+            try:
+                sym = self.vocab.resolve(a.value)
+            except lx.NotRead:
+                continue
+            bound = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
+            if not isinstance(bound, sp.MatrixBase) or bound.shape != (3, 3):
+                continue
+            free = set(bound.free_symbols)
+            if len(free) != 1 or not free <= angles:
+                continue
+            (at,) = free
+            close = next((j for j in range(k + 2, len(toks)) if (toks[j].kind, toks[j].value) == ("op", ")")), None)
+            if close == k + 3 and g.kind == "atom":
+                try:
+                    if self.vocab.resolve(g.value) == at:
+                        continue
+                except lx.NotRead:
+                    pass
+            arg = text[o.pos + 1:toks[close].pos].strip() if close is not None else text[o.pos + 1:].strip()
+            return (f"{self.tex(sym)} is the turn by {self.tex(at)}; its turn by {arg} is not read "
+                    f"(the turn by {self.tex(at)} would stand in for it)")
+        return None
+
     def _single_axis_turns(self, text: str) -> str:
         """``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)``: matrices named by an axis (1, 2, 3
         or x, y, z) and applied to one angle each are the single-axis turns; the sense, passive or
@@ -124,23 +163,53 @@ class TextMatrices:
             except lx.NotRead:
                 continue
             if angle in rot.ANGLES:
-                found.append((a.value, "xyz"["123xyz".index(a.value.sub) % 3], angle, o.pos, c.pos + 1))
+                found.append((a.value, "xyz"["123xyz".index(a.value.sub) % 3], angle, o.pos, c.pos + 1, g.value))
         if len(found) != 3 or len({f[2] for f in found}) != 3:
+            return text
+        # one name at two angles (R_z(ψ) R_x(θ) R_z(φ)): each name-and-argument is its own turn, which
+        # the reader keeps for a plain name (R_z(ψ) is read as that); a bold name drops its argument
+        at_arguments = len({f[0].text for f in found}) != 3
+        if at_arguments and any(f[0].bold for f in found):
             return text
         R = self.d.conv.matrix()
         for sense in (rot.passive, rot.active):
-            turns = [sp.Matrix(sense(axis, angle)) for _, axis, angle, _, _ in found]
+            turns = [sp.Matrix(sense(axis, angle)) for _, axis, angle, _, _, _ in found]
             product = turns[0] * turns[1] * turns[2]
             if any(all(rot.trig_reduce(x - y) == 0 for x, y in zip(product, target)) for target in (R, R.T)):
                 break
         else:
             return text
-        for (atom, _, _, start, end), turn in zip(reversed(found), reversed(turns)):
+        if at_arguments:
+            self._turns_at_arguments(found, sense)
+            return text
+        for (atom, _, _, start, end, _), turn in zip(reversed(found), reversed(turns)):
             sym = self.vocab.resolve(atom)
             if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
                 self._matrix_name(sym, turn)
             text = text[:start] + text[end:]
         return text
+
+    def _turns_at_arguments(self, found, sense):
+        """Bind each plain name-at-argument of ``found`` (``R_z(\\psi)``, read as its own name) the text
+        has not defined to its turn, in the sense of those it has defined (all passive or all
+        active), else in ``sense``, the one whose product is the sequence's R; nothing when the
+        defined ones disagree on the sense."""
+        rot = self.d.rot
+        syms = [self.vocab._generic(atom.with_(sup=f"({arg.text})")) for atom, *_, arg in found]
+        learned = []
+        for sym, (_, axis, angle, *_) in zip(syms, found):
+            if sym in self.ctx.defs:
+                bound = sp.Matrix(self.ctx.defs[sym])
+                learned.append({f for f in (rot.passive, rot.active) if bound.shape == (3, 3) and
+                                all(trig_reduce(x - y) == 0 for x, y in zip(bound, f(axis, angle)))})
+        if learned:
+            agreed = set.intersection(*learned)
+            if len(agreed) != 1:
+                return        # a bound matrix that is no turn of its axis, or senses that disagree
+            (sense,) = agreed
+        for sym, (_, axis, angle, *_) in zip(syms, found):
+            if sym not in self.ctx.defs and sym.is_commutative:
+                self._matrix_name(sym, sp.Matrix(sense(axis, angle)))
 
     def _turn_by_another_angle(self, line, piece, m, axis, angle) -> bool:
         """The matrix of a turn named ``R_x(θ)`` written in another angle: the named turn with the
