@@ -259,3 +259,77 @@ def test_a_reversed_inequality_under_a_stated_ordering_is_a_typo_and_an_undecide
     assert "typo" in _verdicts(text)[1][_line(text, "$$- \\frac")]
     text = ORDERED.replace(r"(I_2-I_1)(I_3-I_2)", r"(I_2-I_1)(I_3-\Omega)")
     assert _verdicts(text)[1][_line(text, "$$- \\frac")] == ["unchecked"]
+
+
+# ω_x, ω_z are the angular velocity only by the prose's principal axes x, y, z: a second-order
+# form that fails is judged only where a row of its display, read with the same names, holds
+SLAB = r"""---
+title: Spin about the intermediate axis
+---
+
+# Unstable rotation
+
+Rotations about the $x$, $y$ and $z$ axes are called $\boldsymbol{\omega}_{x}$, $\boldsymbol{\omega}_{y}$, $\boldsymbol{\omega}_{z}$.
+$I_{x}$, $I_{y}$, $I_{z}$ denote the moments of inertia about the $x$, $y$, $z$ axes, which are principal axes. Euler's equations in components:
+
+$$
+\begin{align}
+    &\tau_x = I_{x} \dot{\omega}_{x} + (I_{z} - I_{y}) \omega_{y} \omega_{z} \\
+    &\tau_y = I_{y} \dot{\omega}_{y} + (I_{x} - I_{z}) \omega_{z} \omega_{x} \\
+    &\tau_z = I_{z} \dot{\omega}_{z} + (I_{y} - I_{x}) \omega_{x} \omega_{y}
+\end{align}
+$$
+
+With zero torque and $k_{1} \equiv I_{z} - I_{y}$, $k_{3} \equiv I_{y} - I_{x}$ the equations are
+
+$$
+\begin{align}
+    &I_{x} \dot{\omega}_{x} = -k_{1} \omega_{y} \omega_{z} \\
+    &I_{z} \dot{\omega}_{z} = -k_{3} \omega_{x} \omega_{y}
+\end{align}
+$$
+
+Rotation mostly about $y$: $0 \approx \omega_x, \omega_z \ll \omega_y$, so $\omega_{y}$ is constant. Differentiating and substituting:
+
+$$
+\begin{align}
+    &\ddot{\omega}_{x} = \left ( \frac{ k_{1} k_{3} \omega_{y}^2 }{I_x I_z} \right ) \omega_{x} \\
+    &\ddot{\omega}_{z} = \left ( \frac{ k_{1} k_{3} \omega_{y}^2 }{I_x I_z} \right ) \omega_{z}
+\end{align}
+$$
+
+The bracket is named $k_5^2 = \frac{ k_{1} k_{3} \omega_{y}^2 }{I_x I_z} > 0$. Then
+
+$$
+"""
+
+
+def _last_display(rows):
+    claims = kept.check_text(SLAB + "\n\\\\\n".join(rows) + "\n$$\n")
+    last = max(c.line for c in claims)
+    return {c.latex.strip(): c for c in claims if c.line == last}
+
+
+@pytest.mark.parametrize("rows", [
+    [r"\ddot{\omega}_x = k_5^2 \omega_x", r"\ddot{\omega}_z = k_5 \omega_z"],
+    [r"\ddot{\omega}_z = k_5 \omega_z", r"\ddot{\omega}_x = k_5^2 \omega_x"],
+])
+def test_a_row_that_fails_only_by_the_prose_names_is_a_typo_where_a_row_read_with_them_holds(rows):
+    got = _last_display(rows)
+    sibling, slip = got[r"\ddot{\omega}_x = k_5^2 \omega_x"], got[r"\ddot{\omega}_z = k_5 \omega_z"]
+    assert sibling.verdict == "holds"
+    assert (slip.verdict, slip.correction) == ("typo", r"\ddot{\omega}_z = k_5^2 \omega_z")
+    assert r"confirmed by \ddot{\omega}_x = k_5^2 \omega_x" in slip.why
+
+
+def test_a_row_that_fails_only_by_the_prose_names_stays_unchecked_alone_in_its_display():
+    slip = _last_display([r"\ddot{\omega}_z = k_5 \omega_z"])[r"\ddot{\omega}_z = k_5 \omega_z"]
+    assert (slip.verdict, slip.correction) == ("unchecked", None)
+    assert "the text may mean something else" in slip.why
+
+
+def test_a_row_that_holds_with_another_learned_name_does_not_confirm_the_reading():
+    # I_z is bound by the prose as its own symbol; the holding row reads I_x, not I_z
+    got = _last_display([r"I_x \ddot{\omega}_x = I_x k_5^2 \omega_x", r"I_z \ddot{\omega}_z = I_z k_5 \omega_z"])
+    assert got[r"I_x \ddot{\omega}_x = I_x k_5^2 \omega_x"].verdict == "holds"
+    assert got[r"I_z \ddot{\omega}_z = I_z k_5 \omega_z"].verdict == "unchecked"

@@ -212,6 +212,7 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
             self._add(item.line, latex, "text", "unchecked", "not a formula")
             return
         seen = []
+        start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
         if self._coordinate_turn(item.line, pieces):
             self._close_display()
@@ -238,6 +239,7 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
             self._place_flushed(before)
             self._note_motion(item.line, piece)
+        self._confirmed_by_siblings(self.claims[start:])
         self._close_display()
 
     def _place_flushed(self, at):

@@ -10,7 +10,8 @@ statement again —
    so: ``holds if I₁ = I₂``, never ``fails``; and a statement that holds only because the text
    made the body symmetric says where it did;
 3. without the names learned from the prose: when only those make it fail, the verdict rests on
-   an uncertain reading, so it is ``unchecked``, saying which reading it tried;
+   an uncertain reading, so it is ``unchecked``, saying which reading it tried — unless another
+   statement of its display, read with the same bindings, holds by the same kind of check;
 4. edited, one edit of its own LaTeX at a time, to find the correction in the text's notation.
 
 Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
@@ -20,6 +21,7 @@ left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture
 from __future__ import annotations
 
 import re
+from types import SimpleNamespace
 
 import sympy as sp
 
@@ -84,6 +86,21 @@ def _free_of(parsed) -> set:
     return out
 
 
+_SQUARED = re.compile(r"(\\?[A-Za-z]+(?:_\{?\s*[A-Za-z0-9]+\s*\}?)?)\s*\^\s*\{?\s*2\s*\}?")
+
+
+def _powers_as_in(piece: str, others: str):
+    """``piece`` with one symbol squared that the display's other statements write squared (k₅ →
+    k₅² where a sibling has k₅²): the edit a display's own rows suggest."""
+    squared = {re.sub(r"[{}\s]", "", m.group(1)) for m in _SQUARED.finditer(others)}
+    for name in sorted(squared):
+        base, _, sub = name.partition("_")
+        pattern = re.escape(base) + (r"_(?:\{\s*" + re.escape(sub) + r"\s*\}|" + re.escape(sub) + ")"
+                                     if sub else r"(?![A-Za-z_])")
+        for m in re.finditer(pattern + r"(?!\s*\^)", piece):
+            yield piece[:m.end()] + "^2" + piece[m.end():]
+
+
 _PARALLEL_AXES = re.compile(r"I_\{?1\}?\s*\+\s*M\s*\\?[A-Za-z]+\s*\^\s*\{?\s*2")
 """``I_1 + Ma^2``: a text that adds M a² to I₁ gives its moments about the centre of mass."""
 
@@ -143,11 +160,37 @@ class Rereading:
         if learned:
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True, judging_only=True)
             if not any(c.verdict in ("typo", "fails") for c in second):
+                bindings = self._learned_bindings(piece)
+                # the edit is sought now, in the reading's own state, and only where a sibling may confirm
+                edit = self._one_edit(saved, line, piece, pieces) if bindings and any(
+                    c.verdict == "fails" and c.correction is None for c in first) and any(
+                    p != piece and bindings <= self._learned_bindings(p) for p in pieces) else None
                 for c in first:
                     if c.verdict in ("typo", "fails"):
+                        self.unconfirmed = [*self.unconfirmed,
+                                            (c, c.verdict, c.correction, c.why, learned, bindings, edit)]
                         c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
+
+    def _confirmed_by_siblings(self, claims):
+        """A statement left unchecked because only the prose's names flag it is judged after all
+        where another statement of the same display, read with those very bindings (every learned
+        name it uses, bound by the same words of the prose), holds by the same kind of check: the
+        reading is then the text's own (were it not, that sibling would not hold either)."""
+        pending, self.unconfirmed = self.unconfirmed, []
+        for c, verdict, correction, why, learned, bindings, edit in pending:
+            if not bindings or not any(x is c for x in claims):
+                continue
+            sibling = next((s for s in claims if s is not c and s.verdict == "holds" and s.kind == c.kind
+                            and s.latex != c.latex and bindings <= self._learned_bindings(s.latex)), None)
+            if sibling is None:
+                continue
+            c.verdict, c.correction = verdict, correction
+            c.why = (f"reading {learned} (as the prose names it) it does not hold: {why}; the reading is "
+                     f"confirmed by {sibling.latex.strip()} in the same display, which holds read with those names")
+            if verdict == "fails" and edit is not None:
+                c.verdict, c.correction = "typo", edit
 
     def _confirm(self, value, parsed):
         """A claim held with names the running text defined: their definitions are the text's
@@ -179,6 +222,22 @@ class Rereading:
                          "unchecked, since the slip may be in that sentence rather than in this display")
                 c.verdict, c.correction = "unchecked", None
         return True
+
+    def _one_edit(self, saved, line, piece, pieces) -> str | None:
+        """The one edit of a statement's LaTeX after which it holds: those `_in_their_notation`
+        tries, then a symbol squared that another statement of the display writes squared."""
+        probe = SimpleNamespace(verdict="typo", why="", correction=None)
+        try:
+            self._in_their_notation(saved, line, piece, pieces, [probe])
+            if probe.correction is not None:
+                return probe.correction
+            for edited in _powers_as_in(piece, " ".join(p for p in pieces if p != piece)):
+                second, _ = self._sandbox(saved, line, edited, False, pieces, judging_only=True)
+                if second and all(c.verdict == "holds" for c in second):
+                    return edited.strip()
+        except NameError:         # an edited reading SymPy cannot evaluate: no edit found by it
+            pass
+        return None
 
     def _parsed_or_none(self, piece):
         try:
@@ -273,6 +332,32 @@ class Rereading:
         del self.claims[before:]
         self.claims.extend(claims)
         self.ctx = ctx
+
+    unconfirmed: list | tuple = ()
+    """(claim, verdict, correction, why, learned, bindings, the one edit that makes it hold) of the
+    statements of the display being read that only the prose's names flag, as judged before."""
+
+    def _learned_bindings(self, piece) -> frozenset:
+        """The bindings of the learned names in a statement: (table, key, meaning, where) of each,
+        the symbol's own binding where the prose named that symbol, else its letter's."""
+        try:
+            toks = lx.scan(piece)
+        except lx.NotRead:
+            return frozenset()
+        names = self.notes.names
+        out = set()
+        for t in toks:
+            a = t.value
+            if t.kind != "atom" or names.meaning(a) is None:
+                continue
+            key = (a.base, a.sub)
+            where = names.where.get(key) or next((w for k, w in names.where.items() if k[0] == key[0]), "")
+            if where == "the front matter":
+                continue
+            table = ("symbols", key) if key in names.symbols else \
+                ("letters", (a.base, "plain" if not (a.bold or a.sub) else "vector"))
+            out.add((table, names.meaning(a), where))
+        return frozenset(out)
 
     def _learned(self, piece) -> str:
         """The names in a statement whose meaning came from the prose (not the front matter)."""
