@@ -118,6 +118,15 @@ def test_cyclic_coordinates_are_alpha_and_gamma():
     assert lg.heavy_symmetric_top().cyclic == (rot.alpha, rot.gamma)
 
 
+@pytest.mark.parametrize("sequence", ["z-y-z", "z-x-z", "x-y-z", "z-y-x"])
+def test_rates_from_momenta_give_back_the_momenta(sequence):
+    top = lg.heavy_symmetric_top(rot.convention(sequence))
+    rates = lg.Reduction(top).rates_from_momenta
+    assert set(rates) == {rot.alpha_d, rot.gamma_d}
+    for q, p in ((rot.alpha, lg.p_alpha), (rot.gamma, lg.p_gamma)):
+        assert sp.simplify(top.momentum(q).xreplace(rates) - p) == 0
+
+
 def test_energy_function_is_T_plus_V():
     el = lg.heavy_symmetric_top()
     T = lg.kinetic_energy_symmetric()
