@@ -118,6 +118,36 @@ def test_cyclic_coordinates_are_alpha_and_gamma():
     assert lg.heavy_symmetric_top().cyclic == (rot.alpha, rot.gamma)
 
 
+def _divided_by_each_pythagorean_identity(expr):
+    """The reference remainder: divide by c² + s² − 1 for one angle at a time."""
+    pairs = [(x, sp.Dummy("s"), sp.Dummy("c")) for x in rot.ANGLES]
+    for x, s_, c_ in pairs:
+        expr = expr.xreplace({sp.sin(x): s_, sp.cos(x): c_})
+    poly = sp.expand(expr)
+    for _, s_, c_ in pairs:
+        poly = sp.rem(sp.Poly(poly, c_), sp.Poly(c_**2 + s_**2 - 1, c_)).as_expr()
+    back = {v: f(x) for x, s_, c_ in pairs for v, f in ((s_, sp.sin), (c_, sp.cos))}
+    return sp.expand(poly).xreplace(back)
+
+
+@pytest.mark.parametrize("expr", [
+    sp.cos(rot.alpha)**5 * sp.cos(rot.beta)**4 * lg.I1 + sp.sin(rot.gamma)**2 * sp.cos(rot.gamma)**3 - lg.I3,
+    (sp.cos(rot.beta) + sp.sin(rot.beta) * rot.alpha_d)**4 * sp.cos(rot.gamma)**2 + sp.sqrt(2) * sp.cos(rot.alpha)**2,
+    sp.cos(rot.alpha)**2 + sp.sin(rot.alpha)**2 - 1,
+])
+def test_trig_reduce_is_the_remainder_of_each_pythagorean_identity(expr):
+    assert rot.trig_reduce(expr) == _divided_by_each_pythagorean_identity(expr)
+
+
+@pytest.mark.parametrize("sequence", ["z-y-z", "z-x-z", "x-y-z", "z-y-x"])
+def test_rates_from_momenta_give_back_the_momenta(sequence):
+    top = lg.heavy_symmetric_top(rot.convention(sequence))
+    rates = lg.Reduction(top).rates_from_momenta
+    assert set(rates) == {rot.alpha_d, rot.gamma_d}
+    for q, p in ((rot.alpha, lg.p_alpha), (rot.gamma, lg.p_gamma)):
+        assert sp.simplify(top.momentum(q).xreplace(rates) - p) == 0
+
+
 def test_energy_function_is_T_plus_V():
     el = lg.heavy_symmetric_top()
     T = lg.kinetic_energy_symmetric()

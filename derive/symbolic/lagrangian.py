@@ -132,9 +132,18 @@ class Reduction:
 
     @functools.cached_property
     def rates_from_momenta(self) -> dict:
-        """{α̇: …, γ̇: …} in terms of p_α, p_γ and β."""
-        eqs = [sp.Eq(p_alpha, self.system.momentum(ANGLES[0])), sp.Eq(p_gamma, self.system.momentum(ANGLES[2]))]
-        sol = sp.solve(eqs, [alpha_d, gamma_d], dict=True)[0]
+        """{α̇: …, γ̇: …} in terms of p_α, p_γ and β.
+
+        The momenta are linear in the rates, p = A (α̇, γ̇)ᵀ + r with A = ∂(p_α, p_γ)/∂(α̇, γ̇)
+        and r the rest (β̇ terms of a Tait–Bryan sequence), so Cramer's rule solves them:
+        α̇ = (b₁ A₂₂ − A₁₂ b₂)/det A, γ̇ = (A₁₁ b₂ − A₂₁ b₁)/det A with b = (p_α, p_γ) − r.
+        """
+        rates = sp.Matrix([alpha_d, gamma_d])
+        p = sp.Matrix([self.system.momentum(ANGLES[0]), self.system.momentum(ANGLES[2])])
+        A = p.jacobian(rates)
+        b = sp.Matrix([p_alpha, p_gamma]) - sp.expand(p - A * rates)
+        det = A.det()
+        sol = {alpha_d: (b[0] * A[1, 1] - A[0, 1] * b[1]) / det, gamma_d: (A[0, 0] * b[1] - A[1, 0] * b[0]) / det}
         return {k: sp.factor(trig_reduce(sp.together(v))) for k, v in sol.items()}
 
     def _substituted(self, expr):

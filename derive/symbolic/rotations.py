@@ -33,8 +33,10 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
+from math import comb
 
 import sympy as sp
+from sympy.polys.polyerrors import BasePolynomialError
 
 _AXIS_INDEX = {"x": 0, "y": 1, "z": 2}
 
@@ -101,16 +103,51 @@ def trig_reduce(expr, angles=ANGLES):
 
     def reduce(poly):
         poly = sp.expand(poly)
-        for _, s_, c_ in pairs:
-            if poly.has(c_):
+        present = [(s_, c_) for _, s_, c_ in pairs if poly.has(c_)]
+        if not present:
+            return poly
+        try:
+            return _rem_cos_squares(poly, present)
+        except BasePolynomialError:     # c or s inside a non-polynomial term: divide as a polynomial in c alone
+            for s_, c_ in present:
                 poly = sp.rem(sp.Poly(poly, c_), sp.Poly(c_**2 + s_**2 - 1, c_)).as_expr()
-        return sp.expand(poly)
+            return sp.expand(poly)
 
     back = {v: f(x) for x, s_, c_ in pairs for v, f in ((s_, sp.sin), (c_, sp.cos))}
     num = reduce(num).xreplace(back)
     if den == 1:
         return num
     return num / sp.factor(reduce(den).xreplace(back))
+
+
+def _rem_cos_squares(poly, pairs) -> sp.Expr:
+    """The remainder of ``poly`` modulo cₖ² + sₖ² − 1 for each (sₖ, cₖ) of ``pairs`` (expanded).
+
+    The divisors have leading terms cₖ² in distinct variables, so the remainder is each monomial's
+    cₖ^(2m+e) replaced by cₖ^e (1 − sₖ²)^m = cₖ^e Σⱼ C(m, j) (−1)^j sₖ^(2j): one pass over the terms
+    of a polynomial in all the sₖ, cₖ gives what dividing by each cₖ² + sₖ² − 1 in turn gives.
+    """
+    gens = [g for pair in pairs for g in pair]
+    P = sp.Poly(poly, *gens)
+    dom, out = P.domain, {}
+    for monom, coeff in P.as_dict(native=True).items():
+        terms = [(list(monom), coeff)]
+        for k in range(len(pairs)):
+            m, e = divmod(monom[2 * k + 1], 2)
+            if not m:
+                continue
+            grown = []
+            for exps, cf in terms:
+                for j in range(m + 1):
+                    new = list(exps)
+                    new[2 * k] += 2 * j
+                    new[2 * k + 1] = e
+                    grown.append((new, cf * dom.convert(comb(m, j) * (-1) ** j)))
+            terms = grown
+        for exps, cf in terms:
+            key = tuple(exps)
+            out[key] = out.get(key, dom.zero) + cf
+    return sp.expand(sp.Poly.from_dict({k: v for k, v in out.items() if v}, *gens, domain=dom).as_expr())
 
 
 def time_derivative(expr, coords=ANGLES, rates=RATES, accels=None):
