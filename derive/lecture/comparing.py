@@ -11,6 +11,7 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`
 """
 from __future__ import annotations
 
+import functools
 import random
 
 import mpmath
@@ -52,6 +53,13 @@ class Mismatch(Exception):
 
 
 def zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> tuple[bool, str]:
+    """(whether lhs − rhs ≡ 0, how it was shown or the counterexample), memoised: the searches for
+    a correction test the same claim again with each candidate of another member."""
+    return _zero(sp.ImmutableMatrix(lhs), sp.ImmutableMatrix(rhs), seed)
+
+
+@functools.lru_cache(maxsize=4096)
+def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[bool, str]:
     if lhs.shape != rhs.shape:
         return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
     diffs = lhs - rhs
@@ -114,7 +122,18 @@ def _shape(m) -> str:
 
 
 def quick_equal(a, b) -> bool:
-    """A fast float test (two random points) used to screen the single-edit candidates."""
+    """A fast float test (two random points) used to screen the single-edit candidates, memoised
+    (the same candidate recurs across the cases and searches of one text)."""
+    a, b = (sp.ImmutableMatrix(x) if isinstance(x, sp.MatrixBase) else x for x in (a, b))
+    try:
+        hash((a, b))
+    except TypeError:
+        return _quick_equal.__wrapped__(a, b)
+    return _quick_equal(a, b)
+
+
+@functools.lru_cache(maxsize=4096)
+def _quick_equal(a, b) -> bool:
     try:
         A, B = column(a), column(b)
     except Mismatch:

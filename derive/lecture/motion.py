@@ -513,10 +513,13 @@ class Motion:
 
         def holds(sol_, screen=False):
             """(holds, why); with ``screen``, a residual shown non-zero at a point ends it (no why)."""
-            rates_ = {lx.WD[lx.W.index(w)]: _dt(f) for w, f in sol_.items()}
             for k, case in enumerate(self.ctx.cases):
                 for raw in chosen:
-                    r = raw.xreplace({sp.Derivative(w, t, 2): _dt(f, 2) for w, f in sol_.items()})
+                    # only the derivatives the equation holds are taken (a candidate's second
+                    # derivative is of no use to a first-order equation)
+                    r = raw.xreplace({sp.Derivative(w, t, 2): _dt(f, 2) for w, f in sol_.items()
+                                      if raw.has(sp.Derivative(w, t, 2))})
+                    rates_ = {lx.WD[lx.W.index(w)]: _dt(f) for w, f in sol_.items() if r.has(lx.WD[lx.W.index(w)])}
                     r = r.xreplace({**sol_, **rates_}).xreplace(subs)
                     r = r.xreplace(case) if case else r
                     if screen and surely_nonzero(r):

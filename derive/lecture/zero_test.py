@@ -18,6 +18,7 @@ May import: :mod:`derive.symbolic`, SymPy, mpmath.
 """
 from __future__ import annotations
 
+import functools
 import random
 from dataclasses import dataclass
 
@@ -107,6 +108,12 @@ def surely_nonzero(d) -> bool:
     """
     if not isinstance(d, sp.Expr):
         return False
+    return _surely_nonzero(d)
+
+
+@functools.lru_cache(maxsize=8192)
+def _surely_nonzero(d: sp.Expr) -> bool:
+    """`surely_nonzero` of an expression, memoised: a candidate recurs across the cases of a text."""
     if d.is_Number:
         return d != 0 and d.is_finite is True
     symbols = sorted(d.free_symbols, key=lambda s: s.name)
