@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import math
 import shutil
-import subprocess
 
 import numpy as np
 import pytest
@@ -230,16 +229,8 @@ def test_measure_registry_and_strict_c():
     files = dict(c_sources(desc, "dop853"))
     files["unit.c"] = "".join(f'#include "{n}"\n' for n in (f"{desc.name}.c", f"{desc.name}_solvers.c",
                                                             f"{desc.name}_measures.c"))
-    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c", "-DDERIVE_MEASURES"]
-
-    def build(work):
-        for name, text in files.items():
-            (work / name).write_text(text)
-        p = subprocess.run([gcc, *flags, "-o", "unit.o", "unit.c"], capture_output=True, text=True,
-                           cwd=work, timeout=120)
-        assert p.returncode == 0, p.stderr
-
-    compile_once.once(["measures unit", *flags], files, build, cc=gcc)  # kept for these exact sources
+    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-DDERIVE_MEASURES"]
+    compile_once.compiles_once(files, "unit.c", flags)  # kept for these exact sources and flags
     assert MeasureKernel.load(desc, "dop853") is MeasureKernel.load(desc, "dop853")
 
 

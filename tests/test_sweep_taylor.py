@@ -6,7 +6,6 @@ from __future__ import annotations
 import copy
 import math
 import shutil
-import subprocess
 
 import numpy as np
 import pytest
@@ -254,16 +253,8 @@ def test_the_series_window_compiles_under_the_strict_flags():
     files["unit.c"] = "".join(f'#include "{n}"\n' for n in (
         f"{desc.name}.c", f"{desc.name}_solvers.c", f"{desc.name}_taylor.c", f"{desc.name}_measures.c"))
     # as derive.sweeps.measures builds it: one method per library
-    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-c", "-DDERIVE_MEASURES",
+    flags = ["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-O0", "-DDERIVE_MEASURES",
              "-DDERIVE_SELECT", "-DDERIVE_WITH_TAYLOR"]
-
-    def build(work):
-        for name, text in files.items():
-            (work / name).write_text(text)
-        p = subprocess.run([gcc, *flags, "-o", "unit.o", "unit.c"], capture_output=True, text=True,
-                           cwd=work, timeout=120)
-        assert p.returncode == 0, p.stderr
-
-    compile_once.once(["measures unit", *flags], files, build, cc=gcc)  # kept for these exact sources
+    compile_once.compiles_once(files, "unit.c", flags)  # kept for these exact sources and flags
     assert "_measure_series" in files[f"{desc.name}_measures.c"]
     assert ms.MeasureKernel.load(desc, "taylor") is ms.MeasureKernel.load(desc, "taylor")
