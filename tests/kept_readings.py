@@ -75,3 +75,11 @@ def check_notes(path, convention: str | None = None) -> list:
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list:
     """`derive.lecture.notes_check.check_text`, kept between runs."""
     return _kept(("text", text, convention, path), lambda: nc.check_text(text, convention, path))
+
+
+def by_line(text: str, convention: str | None = None) -> dict[int, list]:
+    """:func:`check_text`'s claims grouped by the line of the notes they come from."""
+    out: dict[int, list] = {}
+    for claim in check_text(text, convention):
+        out.setdefault(claim.line, []).append(claim)
+    return out

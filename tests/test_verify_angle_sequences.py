@@ -5,19 +5,12 @@ motion the text describes."""
 import pytest
 import sympy as sp
 
-import kept_readings as kept
+from kept_readings import by_line
 from derive.lecture import source
 from derive.symbolic import rotations as rot
 
 ZYX = "---\nconvention: z-y-x\nangles: [\\psi_{\\beta \\alpha}, \\theta_{\\beta \\alpha}, \\phi_{\\beta \\alpha}]\n---\n# Notes\n\n"
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
-
-
-def by_line(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, []).append(c)
-    return out
 
 
 def verdicts(text):

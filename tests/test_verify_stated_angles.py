@@ -1,17 +1,10 @@
 """The notes reader on what a text states in its running prose and its chains: cases it lists
 in one sentence, a chain whose first member it names only in words, and an angle it gives in
 its constants, at which later relations of the angles are judged."""
-import kept_readings as kept
+from kept_readings import by_line
 from derive.lecture.statements import statements
 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
-
-
-def by_line(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, []).append(c)
-    return out
 
 
 def test_contradictory_settings_listed_in_one_sentence_are_cases_not_assumptions():
