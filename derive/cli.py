@@ -265,29 +265,9 @@ def _cmd_examples(args) -> int:
 
 
 def _output_dir(path: Path, flag: str, create: bool = True) -> Path:
-    """A directory the command may write into, made unless ``create`` is false; the directory
-    that holds it must exist (:func:`derive.sim.outputs.check_parent`).
-
-    Parameters
-    ----------
-    path : Path
-        The directory the user named.
-    flag : str
-        Its flag, for the message (``-o``, ``--out``).
-    create : bool
-        Make it when missing (a command that writes nothing only checks it).
-
-    Returns
-    -------
-    Path
-        ``path``.
-
-    Raises
-    ------
-    SceneError
-        ``<path>: <flag>: <what>`` (exit 2): a file or other non-directory of that name, a
-        missing parent or one that is a file, or a directory that cannot be made or written.
-    """
+    """``path`` as a directory the command may write into (made unless ``create`` is false);
+    SceneError ``<path>: <flag>: <what>`` (exit 2) for a non-directory, a bad parent
+    (:func:`derive.sim.outputs.check_parent`) or a directory that cannot be made or written."""
     from derive.sim.outputs import check_parent
 
     if "\0" in str(path):
@@ -362,7 +342,6 @@ def _bytes(n: int) -> str:
         if n < 1000 or unit == "MB":
             return f"{n:.0f} {unit}" if unit == "B" else f"{n:.1f} {unit}"
         n /= 1000
-    return f"{n:.1f} GB"
 
 
 def parser() -> argparse.ArgumentParser:

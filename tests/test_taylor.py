@@ -27,11 +27,12 @@ from scipy.integrate import solve_ivp
 import derive
 from derive.codegen import jet
 from derive.codegen import taylor as taylor_codegen
+from derive.codegen.jet import NoTaylorRule, controlled_states, decompose
+from derive.codegen.kernelspec import KernelSpec
 from derive.codegen.render import ROOT, environment
 from derive.codegen.solvers import render_solvers
 from derive.codegen.sources import shipped_keys
-from derive.codegen.taylor import NoTaylorRule, controlled_states, decompose, render_taylor
-from derive.codegen.kernelspec import KernelSpec
+from derive.codegen.taylor import render_taylor
 from derive.methods.registry import compiled_methods, fixed_step_methods, tolerance_driven
 from derive.methods.taylor import METHODS as TAYLOR
 from derive.reference import exact

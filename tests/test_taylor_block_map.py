@@ -24,9 +24,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from derive.codegen.jet import decompose
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec
 from derive.codegen.sources import shipped_keys
-from derive.codegen.taylor import _pointwise, decompose
+from derive.codegen.taylor import _pointwise
 from derive.runtime.cbuild import DEFAULT_FLAGS, VECTOR_FLAGS
 from derive.symbolic.models import build
 from tests.bits_harness import GEN, compile_harness, run_bits

@@ -16,10 +16,10 @@ import pytest
 import sympy as sp
 
 import derive
+from derive.codegen.jet import decompose, series_safe
 from derive.codegen.kernelspec import KernelSpec
 from derive.codegen.render import ROOT
 from derive.codegen.sources import shipped_keys
-from derive.codegen.taylor import decompose, series_safe
 from derive.methods.status import Status
 from derive.symbolic.models import build
 

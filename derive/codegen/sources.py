@@ -11,15 +11,16 @@ from __future__ import annotations
 import functools
 import json
 
+from derive.codegen.jet import NoTaylorRule, jet_weight
 from derive.codegen.kernelspec import STEP_COST_PER_STATE, KernelSpec, operation_cost
-from derive.codegen.splitting import render_splitting
-from derive.codegen.taylor import NoTaylorRule, jet_weight, render_taylor
-from derive.methods.splitting import applicable as splitting_applicable
-from derive.symbolic.models import CATALOGUE_KEYS, Model
 from derive.codegen.render import render
 from derive.codegen.solvers import render_solvers
+from derive.codegen.splitting import render_splitting
+from derive.codegen.taylor import render_taylor
+from derive.methods.splitting import applicable as splitting_applicable
 from derive.symbolic.formulations import INPUT_NAMES, POLE_CLEARANCE, REGISTRY as FORMULATIONS, model_name
 from derive.symbolic.integrable import C_INTEGRALS, C_PARAMS, c_code
+from derive.symbolic.models import CATALOGUE_KEYS, Model
 
 
 #: (formulation, symmetric, effects) of the models written to generated/ besides the contract's

@@ -18,8 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.codegen import jet
-from derive.codegen.jet import (Const, Decomposition, NoTaylorRule, applicable,  # noqa: F401
-                                controlled_states, decompose, jet_weight, rule_of, series_safe)
+from derive.codegen.jet import Const, Decomposition, controlled_states, decompose, rule_of
 from derive.codegen.kernelspec import Block, CPrinter, KernelSpec, c_expr
 from derive.codegen.render import TAYLOR_INCS, environment, render
 from derive.methods.taylor import METHODS, TaylorMethod
