@@ -19,8 +19,8 @@ import numpy as np
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (_INTERRUPTED, _OFF, _ON, STATS_DOUBLES, STATS_DTYPE, Driver, _ptr,
-                                    driver_args, saveat)
+from derive.runtime.records import (STATS_DOUBLES, STATS_DTYPE, Driver, _ptr, bind, driver_args, guarded,
+                                    saveat)
 
 
 class ModelKernel:
@@ -41,8 +41,8 @@ class ModelKernel:
         self.ny, self.np, self.nout, self.nin = (len(desc.states), len(desc.params),
                                                  len(desc.outputs), desc.nin)
         vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
-        self._init = self._fn(f"{p}_init", [vp, vp, vp])
-        self._checks = self._fn(f"{p}_checks", [vp, vp, vp]) if desc.checks else None
+        self._init = bind(lib, f"{p}_init", [vp, vp, vp])
+        self._checks = bind(lib, f"{p}_checks", [vp, vp, vp]) if desc.checks else None
         self.lanes = 0
         self.has_lanes = self.has_final = False
         if method is not None:
@@ -51,19 +51,13 @@ class ModelKernel:
             # samples set its steps)
             self.has_final = self.adaptive
             self._run = Driver(lib, p, method)
-            self._pole_clear = self._fn(f"{p}_pole_clear", [vp, vp, ci])
-            self._outputs_at = self._fn(f"{p}_outputs_at", [cl, vp, vp, vp, vp])
+            self._pole_clear = bind(lib, f"{p}_pole_clear", [vp, vp, ci])
+            self._outputs_at = bind(lib, f"{p}_outputs_at", [cl, vp, vp, vp, vp])
             # a Taylor method has lanes (its lanes library built for this CPU, where the
             # compiler has GNU C's vectors, holds them: taylor_lanes, the lanes' width)
             self.has_lanes = hasattr(lib, f"{p}_taylor_has_lanes")
             self.lanes = (int(ctypes.c_int.in_dll(lib, f"{p}_taylor_lanes").value)
                           if hasattr(lib, f"{p}_taylor_lanes") else 0)
-
-    def _fn(self, symbol, argtypes):
-        fn = getattr(self.lib, symbol)
-        fn.argtypes = argtypes
-        fn.restype = ctypes.c_int
-        return fn
 
     @classmethod
     def load(cls, desc, method: str | None, build: str | None = None) -> "ModelKernel":
@@ -315,17 +309,7 @@ class BoundRun:
         args = (*head, ctypes.c_void_p(base + 8 * k_p), *self._settings,
                 ctypes.c_void_p(base + 8 * self._k_y), ctypes.c_void_p(base),
                 ctypes.c_void_p(base + 8 * k_st))
-        guard = self._guard  # Ctrl-C stops the C loop on every call from the main thread
-        if guard is None:
-            rc = self._fn(*args)
-        else:
-            guard(_ON)
-            try:
-                rc = self._fn(*args)
-            finally:
-                interrupted = guard(_OFF)
-            if interrupted or rc == _INTERRUPTED:
-                raise KeyboardInterrupt
+        rc = guarded(self._guard, self._fn, *args)  # Ctrl-C stops the C loop from the main thread
         # a driver returns its record's status; read the record only when it is not OK
         status = ctypes.c_int.from_buffer(buf, self._status).value if rc else 0
         nfev = ctypes.c_long.from_buffer(buf, self._nfev).value

@@ -27,7 +27,7 @@ from derive.methods.registry import METHODS, compiled_methods
 from derive.methods.status import message as _status_message
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.runtime.records import (DEFAULT_MAX_STEPS, DEFAULT_NEWTON_MAXITER,
-                                    DEFAULT_NEWTON_TOL, STATS_DTYPE, Driver, saveat)
+                                    DEFAULT_NEWTON_TOL, STATS_DTYPE, Driver, bind, saveat)
 
 _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
 
@@ -116,8 +116,8 @@ class Kernel:
         self.ny, self.np = int(dims[0]), int(dims[1])
         self.state_names = self._names("state_names", self.ny)
         self.param_names = self._names("param_names", self.np)
-        self._rhs = self._bind(f"{prefix}_rhs", [ctypes.c_double, _F64, _F64, _F64])
-        self._jac = self._bind(f"{prefix}_jac", [ctypes.c_double, _F64, _F64, _F64])
+        self._rhs = bind(self.lib, f"{prefix}_rhs", [ctypes.c_double, _F64, _F64, _F64])
+        self._jac = bind(self.lib, f"{prefix}_jac", [ctypes.c_double, _F64, _F64, _F64])
         self.methods = tuple(m for m in METHODS if hasattr(lib, f"{prefix}_run_{m}"))
         self._drivers: dict[str, Driver] = {}
 
@@ -150,12 +150,6 @@ class Kernel:
             return ()
         arr = (ctypes.c_char_p * n).in_dll(self.lib, f"{self.prefix}_{what}")
         return tuple(x.decode() for x in arr)
-
-    def _bind(self, symbol: str, argtypes):
-        fn = getattr(self.lib, symbol)
-        fn.argtypes = argtypes
-        fn.restype = ctypes.c_int
-        return fn
 
     def driver(self, method: str) -> Driver:
         """The run driver of ``method`` in this library, bound once: its arguments unchecked,

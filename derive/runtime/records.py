@@ -70,9 +70,7 @@ def sigint_guard(lib: ctypes.CDLL):
     off the main thread, where its SIGINT handler cannot be installed."""
     if threading.current_thread() is not threading.main_thread():
         return None
-    guard = lib.derive_sigint_guard
-    guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
-    return guard
+    return bind(lib, "derive_sigint_guard", [ctypes.c_int])
 
 
 def guarded(guard, fn, *args) -> int:
@@ -128,10 +126,8 @@ class Driver:
         self.lib, self.method = lib, method
         self.params = tuple(name for _, name in spec.params)
         vp = ctypes.c_void_p
-        self.fn = getattr(lib, f"{prefix}_run_{method}")
-        self.fn.argtypes = [vp, ctypes.c_long, vp, vp, *(C_TYPES[ty] for ty, _ in spec.params),
-                            vp, vp, vp]
-        self.fn.restype = ctypes.c_int
+        self.fn = bind(lib, f"{prefix}_run_{method}",
+                       [vp, ctypes.c_long, vp, vp, *(C_TYPES[ty] for ty, _ in spec.params), vp, vp, vp])
         self.guard = sigint_guard(lib) if interruptible else None
         self._unchecked: dict = {}
 
@@ -153,6 +149,13 @@ class Driver:
             guard = None if self.guard is None else _bare(self.lib, self.guard.__name__)
             parts = self._unchecked[key] = (_bare(self.lib, self.fn.__name__), guard, conv)
         return parts
+
+
+def bind(lib: ctypes.CDLL, symbol: str, argtypes: list):
+    """The function ``symbol`` of ``lib`` with these argument types and an ``int`` result."""
+    fn = getattr(lib, symbol)
+    fn.argtypes, fn.restype = argtypes, ctypes.c_int
+    return fn
 
 
 def _ptr(a) -> int | None:

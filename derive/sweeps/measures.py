@@ -335,16 +335,11 @@ class MeasureKernel:
         self.desc, self.method, self.lib = desc, method, lib
         self.ny, self.nout = len(desc.states), len(desc.outputs)
 
-        vp, cl, cd, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_double, ctypes.c_int
-        ctype = {"double": cd, "long": cl, "int": ci}
-        fn = getattr(lib, f"{desc.name}_measure_batch_{method}")
-        fn.argtypes = [cl, vp, vp, vp, cl, *(ctype[ty] for ty, _ in compiled(method).params),
-                       ci, vp, vp, vp, vp, vp, vp]
-        fn.restype = ctypes.c_int
-        self._fn = fn
-        guard = lib.derive_sigint_guard
-        guard.argtypes, guard.restype = [ctypes.c_int], ctypes.c_int
-        self._guard = guard
+        vp, cl, ci = ctypes.c_void_p, ctypes.c_long, ctypes.c_int
+        self._fn = records.bind(lib, f"{desc.name}_measure_batch_{method}",
+                                [cl, vp, vp, vp, cl, *(records.C_TYPES[ty] for ty, _ in compiled(method).params),
+                                 ci, vp, vp, vp, vp, vp, vp])
+        self._guard = records.bind(lib, "derive_sigint_guard", [ci])
         # The measures' accumulators are static in the library: one run at a time (a Dask
         # worker with several threads would otherwise mix trajectories).
         self._lock = threading.Lock()
@@ -391,15 +386,10 @@ class MeasureKernel:
         st = np.zeros(max(nb, 1), dtype=STATS_DTYPE)
         res = np.empty((max(nb, 1), len(SLOTS)))
         ptr = lambda a: a.ctypes.data  # noqa: E731
-        main = threading.current_thread() is threading.main_thread()
+        guard = self._guard if threading.current_thread() is threading.main_thread() else None
         with self._lock:
-            if main:
-                self._guard(1)
-            try:
-                rc = self._fn(nb, ptr(inputs), ptr(ps), ptr(t), n, *args, int(pole_check), ptr(config),
-                              ptr(integral), ptr(y), ptr(out), ptr(st), ptr(res))
-            finally:
-                interrupted = self._guard(0) if main else 0
-        if interrupted or rc == Status.INTERRUPTED:
+            rc = records.guarded(guard, self._fn, nb, ptr(inputs), ptr(ps), ptr(t), n, *args, int(pole_check),
+                                 ptr(config), ptr(integral), ptr(y), ptr(out), ptr(st), ptr(res))
+        if rc == Status.INTERRUPTED:  # off the main thread: a request, as the status says
             raise KeyboardInterrupt
         return res[:nb], out, st[:nb]
