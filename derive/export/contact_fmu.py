@@ -19,13 +19,12 @@ Outputs: the output file's names with component suffixes (``alpha``, ``beta``, `
 """
 from __future__ import annotations
 
-import hashlib
 from xml.sax.saxutils import escape
 
 from derive.codegen.render import TEMPLATES, c_double, render
 from derive.contact.laws import EXTENSIONS, LAWS
 from derive.export import contact as ce
-from derive.export.fmi import HEADERS, UNITS, Var, model_identifier, version
+from derive.export.fmi import HEADERS, UNITS, Var, guid, model_identifier, version
 
 #: The outputs before the integrals, with their units and meaning.
 OUTPUTS = (
@@ -121,12 +120,11 @@ def sources(b: ce.ContactBundle) -> tuple[dict[str, str], str]:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
     out["NOTICE.md"] = render("contact/NOTICE.md.j2", loop=ce.ck.LOOP, fmi=True)
     vs = variables(b)
-    digest = hashlib.sha256(repr((sorted(out.items()), [(v.name, v.start) for v in vs])).encode()).hexdigest()
-    guid = "{%s-%s-%s-%s-%s}" % (digest[:8], digest[8:12], digest[12:16], digest[16:20], digest[20:32])
+    fmu_guid = guid(sorted(out.items()), [(v.name, v.start) for v in vs])
     start = [*sc.angles, *ce.start_omega(sc), sc.vx, sc.vy]
     integrals = ce.integral_outputs(sc)
     out["fmu.c"] = render(
-        "contact/fmu.c.j2", P=P, ID=ID, guid=guid, variables=vs,
+        "contact/fmu.c.j2", P=P, ID=ID, guid=fmu_guid, variables=vs,
         p_start=[c_double(x) for x in ce.run_params(sc)], in_start=[c_double(x) for x in start],
         set_start=[c_double(x) for x in (sc.restitution, sc.rtol, sc.atol, sc.max_steps)],
         n_out=len(OUTPUTS) + len(integrals), integrals=integrals, max_switches=ce.MAX_SWITCHES)
@@ -134,7 +132,7 @@ def sources(b: ce.ContactBundle) -> tuple[dict[str, str], str]:
     units = sorted({v.unit for v in vs if v.unit})
     xml = render(
         "contact/modelDescription.xml.j2", x=lambda text: escape(str(text), {'"': "&quot;"}),
-        model_name=" ".join((sc.title or "").split()) or P, ID=ID, guid=guid, version=version(),
+        model_name=" ".join((sc.title or "").split()) or P, ID=ID, guid=fmu_guid, version=version(),
         description=f"{P} (a top on a table: {sc.shape}, {LAWS[sc.law].description}) with the "
                     f"phase driver, exported by derive",
         units=[(u, UNITS[u]) for u in units], t_end=c_double(sc.t_end),

@@ -4,6 +4,7 @@ compiler alone, and the byte-stable archive.
 """
 from __future__ import annotations
 
+import hashlib
 import platform
 import subprocess
 import sys
@@ -54,6 +55,12 @@ class Var:
     unit: str
     doc: str
     derivative: int | None = None
+
+
+def guid(*parts) -> str:
+    """An FMU's GUID: the SHA-256 of what it is built from (``repr(parts)``), as 8-4-4-4-12 hex."""
+    d = hashlib.sha256(repr(parts).encode()).hexdigest()
+    return "{%s-%s-%s-%s-%s}" % (d[:8], d[8:12], d[12:16], d[16:20], d[20:32])
 
 
 def platform_folder() -> tuple[str, str]:

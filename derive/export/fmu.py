@@ -22,7 +22,6 @@ written all or nothing; an existing file of that name is replaced, never an inpu
 """
 from __future__ import annotations
 
-import hashlib
 import os
 from xml.sax.saxutils import escape
 
@@ -31,7 +30,7 @@ from derive.errors import SceneError
 from derive.export import bundle as bundles
 from derive.export import contact as contact_export, contact_fmu
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
-from derive.export.fmi import HEADERS, UNITS, Var, archive, model_identifier, version, zip_files
+from derive.export.fmi import HEADERS, UNITS, Var, archive, guid, model_identifier, version, zip_files
 from derive.sim.outputs import check_paths, write_all
 from derive.sim.scene import contact_data
 
@@ -98,14 +97,12 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
     out["NOTICE.md"] = notice(out)
     vs = variables(b)
-    digest = hashlib.sha256(repr((sorted(out.items()), [(v.name, v.start) for v in vs],
-                                  b.method, b.pole_check)).encode()).hexdigest()
-    guid = "{%s-%s-%s-%s-%s}" % (digest[:8], digest[8:12], digest[12:16], digest[16:20], digest[20:32])
+    fmu_guid = guid(sorted(out.items()), [(v.name, v.start) for v in vs], b.method, b.pole_check)
     derived = sorted(b.desc.derived_params)
     p_start = [0.0 if k in derived else float(x) for k, x in enumerate(b.params)]
     env = environment()
     out["fmu.c"] = env.get_template("fmi2/fmu.c.j2").render(
-        P=P, ID=ID, method=b.method, family=b.family, guid=guid, variables=vs,
+        P=P, ID=ID, method=b.method, family=b.family, guid=fmu_guid, variables=vs,
         p_start=p_start, in_start=[float(x) for x in b.inputs], driver=b.driver,
         derived=derived, has_angles=b.desc.has_angles, pole_check=b.pole_check,
         formulation=b.desc.formulation)
@@ -114,7 +111,7 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     title = " ".join((b.scene.title or "").split())
     adaptive = any(name == "rtol" for _, name, _ in b.driver)
     xml = env.get_template("fmi2/modelDescription.xml.j2").render(
-        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=guid, version=version(),
+        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=fmu_guid, version=version(),
         description=(f"{P} ({b.desc.formulation}; effects: {', '.join(b.desc.effects) or 'none'}) "
                      f"with {b.method}, exported by derive"),
         units=[(u, UNITS[u]) for u in units], t_end=c_double(b.t_end),
