@@ -24,7 +24,6 @@ is, for each method ``m`` and model prefix ``M``::
 """
 from __future__ import annotations
 
-import functools
 from types import MappingProxyType
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -105,17 +104,15 @@ REFERENCE_METHODS: dict[str, tuple[str, str]] = {
 INTERNAL_METHODS = ("dop853_fixed",)
 
 
+_COMPILED = MappingProxyType({**METHODS, **splitting.METHODS, **TAYLOR})
+
+
 def compiled_methods() -> dict:
     """Every compiled method: the Runge–Kutta family rendered from tableaux (:data:`METHODS`),
     the Lie–Poisson splittings of :mod:`derive.methods.splitting` and the Taylor methods of
     :mod:`derive.methods.taylor` (each their own template). Each entry has ``name``,
     ``summary``, ``driver`` and ``params`` (the C parameters after ``n_out``)."""
-    return _compiled()
-
-
-@functools.lru_cache(maxsize=1)
-def _compiled():
-    return MappingProxyType({**METHODS, **splitting.METHODS, **TAYLOR})  # fixed at import: merged once
+    return _COMPILED
 
 
 def method(name: str):
