@@ -36,8 +36,8 @@ Contract of an entry (:class:`Measure`):
    alone: the output map inlined and cut down by the compiler, the same bits), so that a sweep
    of beta's extrema and the energy drift computes no omega, no axis and none of their sines
    and cosines per step. A sweep asking only for ``nfev`` and ``final_state`` runs the plain
-   loop's work. ``dense_always`` (no measure sets it) forms the dense output on every step, as
-   before the lazy choice: the tests check that no value moves.
+   loop's work. ``dense_always`` (no measure sets it) forms the dense output on every step, so
+   that the tests can check that the lazy choice moves no value.
 
 The accumulators (``SLOTS``) of the outputs read are updated whenever the hook runs (a compare
 or two per step; the extrema search runs only at the turning points); the others are NaN in
