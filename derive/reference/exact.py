@@ -37,8 +37,8 @@ from scipy import optimize
 
 from derive.reference.elliptic import elliptic_f_from_jacobi, reduce_argument, sn2_rational_integral
 from derive.reference.free_body import _clip_m1, free_asymmetric, free_symmetric
-from derive.reference.trajectory import (_EPS, _POLE_SNAP, Trajectory, _finite, _positive, _times, _trajectory,
-                                        euler_angles, euler_matrix)
+from derive.reference.rotation import euler_angles, euler_matrix
+from derive.reference.trajectory import _EPS, _POLE_SNAP, Trajectory, _finite, _positive, _times, _trajectory
 
 __all__ = [
     "Trajectory",

@@ -10,8 +10,8 @@ from fractions import Fraction
 import numpy as np
 
 from derive.reference.elliptic import elliptic_f_from_jacobi, reduce_argument, sn2_rational_integral
-from derive.reference.trajectory import (_axis_angle, _positive, _rotation_matrix, _rz, _times, _trajectory,
-                                        _vector)
+from derive.reference.rotation import _rz
+from derive.reference.trajectory import _axis_angle, _positive, _rotation_matrix, _times, _trajectory, _vector
 
 
 def free_symmetric(I1, I3, omega0, t, R0=None):

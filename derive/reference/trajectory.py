@@ -10,7 +10,7 @@ from typing import Mapping
 
 import numpy as np
 
-from derive.reference.rotation import _ry, _rz, euler_angles, euler_matrix  # noqa: F401 - shared
+from derive.reference.rotation import euler_angles
 
 
 _EPS = float(np.finfo(float).eps)
