@@ -35,6 +35,7 @@ from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import METHOD
 from derive.errors import IntegrationError
 from derive.methods.status import Status
+from derive.reference.rotation import body_omega
 from derive.runtime.cbuild import compile_library
 from derive.runtime.records import guarded, sigint_guard
 
@@ -94,13 +95,6 @@ def quaternions(alpha, beta, gamma) -> np.ndarray:
                             s_ * np.cos((alpha - gamma) / 2), c * np.sin((alpha + gamma) / 2)])
 
 
-def body_rates(beta, gamma, alpha_d, beta_d, gamma_d) -> np.ndarray:
-    """(n, 3) body ω = α̇ Rᵀẑ + β̇ ê′₂ + γ̇ ê₃ (z-y-z)."""
-    return np.column_stack([-alpha_d * np.sin(beta) * np.cos(gamma) + beta_d * np.sin(gamma),
-                            alpha_d * np.sin(beta) * np.sin(gamma) + beta_d * np.cos(gamma),
-                            alpha_d * np.cos(beta) + gamma_d])
-
-
 def eligible(sc) -> bool:
     """Whether a scene is the reduced problem's: frictionless, axisymmetric, one contact surface,
     the compiled loop."""
@@ -154,7 +148,7 @@ def run(sc, y0: np.ndarray, t_out: np.ndarray, p_full: np.ndarray, full):
         return None
     r = k.rates(ys, p)
     a, b, g = np.arctan2(ys[:, 1], ys[:, 0]), ys[:, 2], np.arctan2(ys[:, 4], ys[:, 3])
-    om = body_rates(b, g, r[:, 0], r[:, 1], r[:, 2])
+    om = np.column_stack(body_omega(b, g, r[:, 0], r[:, 1], r[:, 2]))
     n = len(ts)
     com = np.column_stack([y0[7] + y0[10] * ts, y0[8] + y0[11] * ts, r[:, 5]])
     vel = np.column_stack([np.full(n, y0[10]), np.full(n, y0[11]), r[:, 6]])

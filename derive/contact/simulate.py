@@ -15,6 +15,7 @@ from derive.contact.kernel import OUTPUTS, kernel
 from derive.contact.laws import EXTENSIONS, LAWS
 from derive.contact import driver, reduced
 from derive.contact.phases import PHASE_NAMES, Phases, Run, Switch, quaternion_matrix
+from derive.reference.rotation import body_omega
 from derive.contact.scene import COMPILED, GRAVITY, METHOD, ContactScene, integrals_held, read
 
 _O = {name: i for i, name in enumerate(OUTPUTS)}
@@ -35,14 +36,6 @@ def quaternion(alpha: float, beta: float, gamma: float) -> np.ndarray:
     return _qmul(_qmul(_qaxis(2, alpha), _qaxis(1, beta)), _qaxis(2, gamma))
 
 
-def body_omega(beta, gamma, rates) -> np.ndarray:
-    """ω̃ = α̇ Rᵀẑ + β̇ ê′₂ + γ̇ ê₃ (z-y-z) in body components."""
-    ad, bd, gd = rates
-    return np.array([-ad * np.sin(beta) * np.cos(gamma) + bd * np.sin(gamma),
-                     ad * np.sin(beta) * np.sin(gamma) + bd * np.cos(gamma),
-                     ad * np.cos(beta) + gd])
-
-
 def params(sc: ContactScene) -> np.ndarray:
     """The parameter vector in the kernel's order (I1, I2, I3, M, g, r, s, μ, ε, then the law's
     extensions' lengths δ, r_s: :data:`~derive.contact.layout.PARAM_NAMES`)."""
@@ -52,7 +45,7 @@ def params(sc: ContactScene) -> np.ndarray:
 
 def initial_state(sc: ContactScene) -> np.ndarray:
     q = quaternion(*sc.angles)
-    w = np.array(sc.omega) if sc.omega is not None else body_omega(sc.angles[1], sc.angles[2], sc.rates)
+    w = np.array(sc.omega if sc.omega is not None else body_omega(sc.angles[1], sc.angles[2], *sc.rates))
     y = np.concatenate([q, w, np.zeros(6)])
     k = kernel(sc.shape, sc.law)
     p = params(sc)

@@ -18,7 +18,8 @@ from derive.codegen.render import c_double, render
 from derive.contact import driver, kernel as ck
 from derive.contact.laws import EXTENSIONS, LAWS
 from derive.contact.scene import COMPILED, METHOD, ContactScene, integrals_held, read
-from derive.contact.simulate import body_omega, params, simulate
+from derive.contact.simulate import params, simulate
+from derive.reference.rotation import body_omega
 from derive.errors import SceneError
 
 #: How many phase switches a run may make.
@@ -66,7 +67,7 @@ def start_omega(sc: ContactScene) -> np.ndarray:
     """ω̃ at the start (body axes): the scene's ``omega``, or its z-y-z rates turned into it."""
     if sc.omega is not None:
         return np.array(sc.omega)
-    return body_omega(sc.angles[1], sc.angles[2], sc.rates)
+    return np.array(body_omega(sc.angles[1], sc.angles[2], *sc.rates))
 
 
 def integral_outputs(sc: ContactScene) -> list[tuple[str, int]]:

@@ -7,9 +7,11 @@ references (:mod:`derive.reference.exact`) and the drawing of a motion
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-__all__ = ["euler_matrix", "euler_angles"]
+__all__ = ["euler_matrix", "euler_angles", "body_omega"]
 
 
 def _rz(a):
@@ -47,3 +49,32 @@ def euler_angles(R, unwrap=True):
     if unwrap and R.ndim == 3:
         alpha, gamma = np.unwrap(alpha), np.unwrap(gamma)
     return alpha, beta, gamma
+
+
+def body_omega(beta, gamma, alpha_dot, beta_dot, gamma_dot):
+    """Body-frame angular velocity (rad/s) from z-y-z Euler-angle rates (the notes' formula):
+
+        w1 = -alpha_dot sin(beta) cos(gamma) + beta_dot sin(gamma)
+        w2 =  alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma)
+        w3 =  alpha_dot cos(beta) + gamma_dot
+
+    The one place it is written: the validator calls it on floats, a sweep on its columns
+    (NumPy arrays of N points). Either way the sines and cosines are the math module's (libm),
+    element by element, so a point of a sweep gets the bits a scene of its own gets. Returns a
+    tuple (w1, w2, w3) of floats or of arrays.
+    """
+    sin, cos = (math.sin, math.cos) if isinstance(beta, float) and isinstance(gamma, float) \
+        else (_libm(math.sin), _libm(math.cos))
+    sb, sg, cg = sin(beta), sin(gamma), cos(gamma)
+    return (-alpha_dot * sb * cg + beta_dot * sg,
+            alpha_dot * sb * sg + beta_dot * cg,
+            alpha_dot * cos(beta) + gamma_dot)
+
+
+def _libm(fn):
+    """``fn`` (a function of the math module) of every element of an array (NumPy's own
+    vectorised sin and cos may differ from libm in the last bit)."""
+    def each(x):
+        x = np.asarray(x, dtype=float)
+        return np.fromiter(map(fn, x.reshape(-1).tolist()), dtype=float, count=x.size).reshape(x.shape)
+    return each

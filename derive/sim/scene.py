@@ -55,9 +55,10 @@ from collections.abc import Mapping
 from derive.errors import SceneError
 from derive.sim import examples
 from derive.sim.reader import MAX_SCENE_BYTES, MAX_SCENE_DEPTH, _line, read_toml
+from derive.reference.rotation import body_omega
 from derive.sim.scene_types import (FIXED_STEP_METHODS, FORMULATIONS, MAX_SAMPLES, MAX_STEPS_LIMIT, METHODS,
                                     MIN_RTOL, POLE_TOLERANCE, SIMULATE_DEFAULTS, TRIANGLE_SLACK, Body,
-                                    Initial, Scene, Simulate, TableValues, body_omega)
+                                    Initial, Scene, Simulate, TableValues)
 from derive.sim.validator import _Validator
 
 __all__ = [

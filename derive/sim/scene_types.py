@@ -1,7 +1,6 @@
 """The scene's types: a validated scene (:class:`Scene`, its :class:`Body`, effect tables
 (:class:`TableValues`), :class:`Initial` state and :class:`Simulate` settings), the limits the
-validator holds it to, and the one map from Euler-angle rates to the body's ω̃
-(:func:`body_omega`).
+validator holds it to.
 
 Takes: the registries (effects, formulations, methods). Gives: the types :mod:`derive.sim.scene`
 loads a scene into.
@@ -251,32 +250,3 @@ class Scene:
         if self.title is not None:
             data["title"] = self.title
         return data
-
-
-def body_omega(beta, gamma, alpha_dot, beta_dot, gamma_dot):
-    """Body-frame angular velocity (rad/s) from z-y-z Euler-angle rates (the notes' formula):
-
-        w1 = -alpha_dot sin(beta) cos(gamma) + beta_dot sin(gamma)
-        w2 =  alpha_dot sin(beta) sin(gamma) + beta_dot cos(gamma)
-        w3 =  alpha_dot cos(beta) + gamma_dot
-
-    The one place it is written: the validator calls it on floats, a sweep on its columns
-    (NumPy arrays of N points). Either way the sines and cosines are the math module's (libm),
-    element by element, so a point of a sweep gets the bits a scene of its own gets. Returns a
-    tuple (w1, w2, w3) of floats or of arrays.
-    """
-    sin, cos = (math.sin, math.cos) if isinstance(beta, float) and isinstance(gamma, float) \
-        else (_libm(math.sin), _libm(math.cos))
-    sb, sg, cg = sin(beta), sin(gamma), cos(gamma)
-    return (-alpha_dot * sb * cg + beta_dot * sg,
-            alpha_dot * sb * sg + beta_dot * cg,
-            alpha_dot * cos(beta) + gamma_dot)
-
-
-def _libm(fn):
-    """``fn`` (a function of the math module) of every element of an array (NumPy's own
-    vectorised sin and cos may differ from libm in the last bit)."""
-    def each(x):
-        x = np.asarray(x, dtype=float)
-        return np.fromiter(map(fn, x.reshape(-1).tolist()), dtype=float, count=x.size).reshape(x.shape)
-    return each

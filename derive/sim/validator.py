@@ -17,9 +17,10 @@ import numpy as np
 from derive.errors import SceneError
 from derive.methods import registry as solvers
 from derive.sim.reader import _line
+from derive.reference.rotation import body_omega
 from derive.sim.scene_types import (FIXED_STEP_METHODS, FORMULATIONS, MAX_SAMPLES, MAX_STEPS_LIMIT, METHODS,
                                     MIN_RTOL, SIMULATE_DEFAULTS, TRIANGLE_SLACK, Body, Initial, Scene,
-                                    Simulate, TableValues, body_omega)
+                                    Simulate, TableValues)
 from derive.symbolic import effects
 from derive.symbolic import formulations
 from derive.symbolic import terms as user_terms
