@@ -19,7 +19,7 @@ from derive.contact.phases import PHASE_NAMES, Run, Switch
 from derive.errors import IntegrationError
 from derive.methods.status import Status
 from derive.runtime.cbuild import compile_library
-from derive.runtime.records import guarded, sigint_guard
+from derive.runtime.records import bind, guarded, sigint_guard
 
 #: How many phase switches a run may make.
 MAX_SWITCHES = 10_000
@@ -72,10 +72,8 @@ def library(shape: str, law: str, stem: bool):
     lib_name = f"{name}_stem_run" if stem else f"{name}_run"
     sources = {**model_sources(shape, law), RUN: text(RUN), f"{name}_lib.c": lib_source(shape, law, stem)}
     lib = compile_library(lib_name, sources, f"{name}_lib.c")
-    fn = lib.contact_simulate
-    fn.restype = ctypes.c_int
-    fn.argtypes = ([ctypes.POINTER(_RunState)] + [ctypes.c_void_p] * 3 + [ctypes.POINTER(_Settings),
-                   ctypes.c_long] + [ctypes.c_void_p] * 6 + [ctypes.c_long])
+    fn = bind(lib, "contact_simulate", [ctypes.POINTER(_RunState)] + [ctypes.c_void_p] * 3
+              + [ctypes.POINTER(_Settings), ctypes.c_long] + [ctypes.c_void_p] * 6 + [ctypes.c_long])
     return fn, lib
 
 

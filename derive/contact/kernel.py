@@ -19,6 +19,7 @@ from derive.codegen.render import GENERATED
 from derive.contact.layout import (LOOP, MODEL, OUTPUTS, REDUCED, PARAM_NAMES, PHASES, RUN, STATE, loop_source, run_source,
                                    shape_file)
 from derive.runtime.cbuild import compile_library
+from derive.runtime.records import bind
 
 __all__ = ["LOOP", "MODEL", "OUTPUTS", "REDUCED", "PARAM_NAMES", "PHASES", "RUN", "RUNTIME", "STATE", "Kernel", "kernel",
            "loop_source", "loop_sources", "model_sources", "reduced_sources", "run_source", "runtime_sources", "shape_file", "text"]
@@ -74,15 +75,11 @@ class Kernel:
     def __init__(self, shape: str, law: str):
         name = f"contact_{shape}_{law}"
         lib = compile_library(name, model_sources(shape, law), f"{name}.c")
-        self.fn = getattr(lib, f"{name}_eval")
-        self.fn.restype = ctypes.c_int
-        self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
+        self.fn = bind(lib, f"{name}_eval", [ctypes.c_int] + [ctypes.c_void_p] * 5)
         self.dy = np.zeros(len(STATE))
         self.out = np.zeros(len(OUTPUTS))
         self._dy, self._out = self.dy.ctypes.data, self.out.ctypes.data
-        self.many = getattr(lib, f"{name}_outputs")
-        self.many.restype = ctypes.c_long
-        self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 5
+        self.many = bind(lib, f"{name}_outputs", [ctypes.c_long] + [ctypes.c_void_p] * 5, ctypes.c_long)
         self.nfev = 0
 
     def rhs(self, phase: int, y: np.ndarray, p: np.ndarray, d: np.ndarray) -> np.ndarray:

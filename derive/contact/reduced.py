@@ -37,7 +37,7 @@ from derive.errors import IntegrationError
 from derive.methods.status import Status
 from derive.reference.rotation import body_omega
 from derive.runtime.cbuild import compile_library
-from derive.runtime.records import guarded, sigint_guard
+from derive.runtime.records import bind, guarded, sigint_guard
 
 #: The parameters, in order (:data:`derive.contact.sources.REDUCED_PARAMS`, the symbols' names).
 PARAM_NAMES = ("I1", "I3", "M", "g", "r", "s", "p_alpha", "p_gamma")
@@ -54,18 +54,11 @@ class ReducedKernel:
     def __init__(self, shape: str):
         name = f"contact_{shape}_reduced"
         lib = compile_library(name, reduced_sources(shape), f"{name}.c")
-        self.fn = getattr(lib, f"{name}_eval")
-        self.fn.restype = ctypes.c_int
-        self.fn.argtypes = [ctypes.c_int] + [ctypes.c_void_p] * 5
-        self.many = getattr(lib, f"{name}_many")
-        self.many.restype = ctypes.c_long
-        self.many.argtypes = [ctypes.c_long] + [ctypes.c_void_p] * 4
-        self.step = getattr(lib, f"{name}_advance")
-        self.step.restype = ctypes.c_int
-        self.step.argtypes = ([ctypes.c_int, ctypes.c_void_p, ctypes.c_void_p, ctypes.c_double]
-                              + [ctypes.c_void_p] * 2 + [ctypes.c_double, ctypes.c_double, ctypes.c_void_p,
-                                                         ctypes.c_long, ctypes.c_int]
-                              + [ctypes.c_void_p] * 2 + [ctypes.c_long] + [ctypes.c_void_p] * 5)
+        self.fn = bind(lib, f"{name}_eval", [ctypes.c_int] + [ctypes.c_void_p] * 5)
+        self.many = bind(lib, f"{name}_many", [ctypes.c_long] + [ctypes.c_void_p] * 4, ctypes.c_long)
+        vp, cd = ctypes.c_void_p, ctypes.c_double
+        self.step = bind(lib, f"{name}_advance", [ctypes.c_int, vp, vp, cd, vp, vp, cd, cd, vp, ctypes.c_long,
+                                                  ctypes.c_int, vp, vp, ctypes.c_long] + [vp] * 5)
         self.lib = lib
 
     def rates(self, y: np.ndarray, p: np.ndarray) -> np.ndarray:

@@ -151,10 +151,10 @@ class Driver:
         return parts
 
 
-def bind(lib: ctypes.CDLL, symbol: str, argtypes: list):
-    """The function ``symbol`` of ``lib`` with these argument types and an ``int`` result."""
+def bind(lib: ctypes.CDLL, symbol: str, argtypes: list, restype=ctypes.c_int):
+    """The function ``symbol`` of ``lib`` with these argument types and result type."""
     fn = getattr(lib, symbol)
-    fn.argtypes, fn.restype = argtypes, ctypes.c_int
+    fn.argtypes, fn.restype = argtypes, restype
     return fn
 
 
