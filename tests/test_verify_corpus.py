@@ -26,6 +26,14 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("byuflowlab-sixdof-aircraft-321-theory", "checked"):
+        "vector equations with frame-marked derivatives (dV/dt_b, d/dt|_i) and products such as "
+        "omega_b x V_b are not read; p, q, r as the body rates are not learned",
+    ("byuflowlab-sixdof-aircraft-321-theory", "found"):
+        "its one slip (the transport theorem with '+' for '=') is a derivative seen from two frames",
+    ("heavy-rigid-body-euler-poisson-gyroscope-zh-notes-zxz", "checked"):
+        "the Euler-Poisson variables gamma_i, x_C and the integrals in them (L_Z, E, Kovalevskaya's) "
+        "are not tied to the derivation; vector products of the gyroscope formula are not read",
 }
 
 FLOOR = {"checked": 230, "slips_flagged": 28, "holds_flagged": 0}
@@ -53,9 +61,9 @@ def test_a_text_names_its_source_commit_and_licence(slug):
     assert "symbols:" not in head          # the reader learns the text's names itself
 
 
-_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)(\*?)\}.+?"
-                      r"\\end\{\1\2\}", re.S)
-_OPENING = re.compile(r"^\s*(\$\$|\\\[|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)\*?\})")
+_DISPLAY = re.compile(r"^```math\n.+?^```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)(\*?)\}.+?"
+                      r"\\end\{\1\2\}", re.S | re.M)
+_OPENING = re.compile(r"^\s*(```math|\$\$|\\\[|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)\*?\})")
 
 
 @pytest.mark.parametrize("slug", TEXTS)

@@ -65,6 +65,12 @@ def _right_side(text) -> str:
     return text.split("=", 1)[1] if "=" in text else ""
 
 
+def _moment_multiple(m) -> bool:
+    """A parameter, or a positive number times a principal moment (the 2I₃ of I₁ = I₂ = 2I₃)."""
+    k, rest = sp.sympify(m).as_coeff_Mul()
+    return m in PARAMETERS or (k.is_Rational and k > 0 and rest in (I1, I2, I3))
+
+
 def _free(obj) -> set:
     return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
 
@@ -157,7 +163,7 @@ class TextNames:
             self._add(line, piece, "new symbol", "unchecked",
                       f"defines the text's function {self.tex(members[1])} as the left side (recorded, then used)")
             return True
-        if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
+        if "≠" in rels and "=" in rels or (len(members) > 2 and all(_moment_multiple(m) for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
         base = m0.base if isinstance(m0, sp.Pow) and m0.exp == 2 else None
@@ -237,6 +243,9 @@ class TextNames:
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
             self.display_relations.append((a, rel, b))
+            if rel == "=" and _moment_multiple(b) and not isinstance(b, sp.Symbol):
+                k, b = b.as_coeff_Mul()             # I₂ = 2I₃: I₃ is I₂/2 from here on
+                a = a / k
             if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \
                     sp.sympify(a).xreplace(self.ctx.subs) != b.xreplace(self.ctx.subs):
                 self.ctx.subs[b] = a

@@ -1,0 +1,42 @@
+"""Conventions of writing that real texts use: a fenced ``math`` block is a display, an inertia matrix
+with −I_xy off its diagonal names the products of inertia +∫xy dm, and a chain of principal moments
+with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃."""
+import kept_readings as kept
+
+
+def verdicts(text):
+    return [(c.line, c.verdict) for c in kept.check_text(text)]
+
+
+T = "T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + \\frac{1}{2} I_3 \\omega_3^2"
+
+
+def test_a_fenced_math_block_is_a_display_and_other_fences_are_not():
+    text = f"# Notes\n\n```math\n{T}\n```\n\n```python\n$${T} + 1$$\n```\n"
+    assert verdicts(text) == [(3, "holds")]
+
+
+def test_a_slip_in_a_fenced_math_block_is_flagged():
+    text = "# Notes\n\n```math\nT = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + I_3 \\omega_3^2\n```\n"
+    assert {v for _, v in verdicts(text)} <= {"typo", "fails"} and verdicts(text)
+
+
+_TENSOR = ("\\begin{{bmatrix}} I_{{xx}} & {s}I_{{xy}} & {s}I_{{xz}} \\\\ {s}I_{{xy}} & I_{{yy}} & {s}I_{{yz}} \\\\ "
+           "{s}I_{{xz}} & {s}I_{{yz}} & I_{{zz}} \\end{{bmatrix}}")
+_HEAD = "A body of point masses turns with $\\boldsymbol{\\omega}$; its inertia tensor:\n\n"
+
+
+def test_an_inertia_matrix_with_minus_products_names_the_products_of_inertia():
+    text = _HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n"
+    assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_an_inertia_matrix_with_plus_entries_keeps_the_tensors_own_entries():
+    text = _HEAD + "$$\nI = " + _TENSOR.format(s="") + "\n$$\n"
+    assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_moments_in_a_ratio_are_an_assumption_for_the_equations_after_them():
+    text = ("# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n"
+            "$$\n2\\dot{\\omega}_1 - \\omega_2 \\omega_3 = 0\n$$\n")
+    assert (5, "holds") in verdicts(text) and not [v for _, v in verdicts(text) if v in ("typo", "fails")]
