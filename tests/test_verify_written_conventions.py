@@ -40,3 +40,24 @@ def test_moments_in_a_ratio_are_an_assumption_for_the_equations_after_them():
     text = ("# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n"
             "$$\n2\\dot{\\omega}_1 - \\omega_2 \\omega_3 = 0\n$$\n")
     assert (5, "holds") in verdicts(text) and not [v for _, v in verdicts(text) if v in ("typo", "fails")]
+
+
+_PRECESSION = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Top\n\n"
+               "The top precesses regularly: the nutation angle stays $\\theta = \\theta_0$, and the precession "
+               "rate $\\dot\\phi = \\omega_p$ and the spin rate $\\dot\\psi = \\omega_s$ are constant. Then\n\n$$\n{}\n$$\n")
+
+
+def test_what_the_angles_and_rates_the_text_set_give_holds():
+    for claim in ("\\omega_1=\\omega_p\\sin\\theta_0\\sin\\psi", "\\omega_3=\\omega_p\\cos\\theta_0+\\omega_s"):
+        assert verdicts(_PRECESSION.format(claim))[-1] == (9, "holds")
+
+
+def test_a_component_the_settings_do_not_give_is_never_judged_from_them():
+    out = verdicts(_PRECESSION.format("\\omega_1=\\omega_p\\sin\\theta_0\\cos\\psi"))
+    assert out[-1][0] == 9 and out[-1][1] == "unchecked"
+
+
+def test_a_torque_term_of_the_texts_own_symbol_with_a_coefficient_is_the_torque():
+    head = "# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n$$\n{}\n$$\n"
+    assert verdicts(head.format("2\\dot{\\omega}_2 + \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1] == (5, "holds")
+    assert verdicts(head.format("2\\dot{\\omega}_2 - \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1][1] in ("typo", "fails")

@@ -33,6 +33,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
+from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
@@ -207,6 +208,10 @@ class TextNames:
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
             # ω̃̇ᵢ = 0 that Euler's equations give under the settings before it (I₁ = I₂ = I₃): a claim
             follows = self._eom_check(m0 - members[1]) if m0 in lx.WD else (False, "", None)
+            implied = None if follows[0] else under_settings(self, m0, members[1])
+            if implied:                               # ω̃₃ = ω_p cos θ₀ + ω_s after θ = θ₀, …: a consequence
+                self._add(line, piece, "identity", "holds", implied)
+                return True
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
                 self.ctx.stated[m0] = f"line {line}"
@@ -258,6 +263,10 @@ class TextNames:
         """A relation with symbols of the text's that nothing ties: decided only if it is an
         identity whatever they are."""
         self._flush()                   # a claim: the solutions before it are a complete group
+        implied = under_settings(self, members[0], members[1]) if rels == ["="] else None
+        if implied:
+            self._add(line, piece, "identity", "holds", implied)
+            return True
         if set(rels) <= {"<", ">", "≤", "≥"} and self._ordered(line, piece, members, rels):
             return True
         loose = set()
