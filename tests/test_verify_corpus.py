@@ -27,8 +27,9 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("byuflowlab-sixdof-aircraft-321-theory", "checked"):
-        "vector equations with frame-marked derivatives (dV/dt_b, d/dt|_i) and products such as "
-        "omega_b x V_b are not read; p, q, r as the body rates are not learned",
+        "the inertia tensor written I_b beside frame derivatives, displays with no relation that write out "
+        "the previous one (a bare vector, a bare matrix), the position's kinematics and the airspeed's "
+        "definitions in vectors are not read",
     ("byuflowlab-sixdof-aircraft-321-theory", "found"):
         "its one slip (the transport theorem with '+' for '=') is a derivative seen from two frames",
     ("heavy-rigid-body-euler-poisson-gyroscope-zh-notes-zxz", "checked"):
@@ -36,7 +37,7 @@ SHORT = {
         "are not tied to the derivation; vector products of the gyroscope formula are not read",
 }
 
-FLOOR = {"checked": 230, "slips_flagged": 28, "holds_flagged": 0}
+FLOOR = {"checked": 247, "slips_flagged": 28, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

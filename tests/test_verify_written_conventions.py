@@ -61,3 +61,45 @@ def test_a_torque_term_of_the_texts_own_symbol_with_a_coefficient_is_the_torque(
     head = "# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n$$\n{}\n$$\n"
     assert verdicts(head.format("2\\dot{\\omega}_2 + \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1] == (5, "holds")
     assert verdicts(head.format("2\\dot{\\omega}_2 - \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1][1] in ("typo", "fails")
+
+
+_AIRCRAFT = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Rates\n\n"
+             "The velocities are body-frame; $p, q, r$ are the roll, pitch and yaw rates. The result:\n\n$$\n"
+             "\\begin{{bmatrix}} \\dot{{\\phi}} \\\\ \\dot{{\\theta}} \\\\ \\dot{{\\psi}} \\end{{bmatrix}} = "
+             "\\begin{{bmatrix}} 1 & \\sin\\phi\\tan\\theta & \\cos\\phi\\tan\\theta \\\\ 0 & \\cos\\phi & {s}\\sin\\phi \\\\ "
+             "0 & \\sin\\phi/\\cos\\theta & \\cos\\phi/\\cos\\theta \\end{{bmatrix}} "
+             "\\begin{{bmatrix}} p \\\\ q \\\\ r \\end{{bmatrix}}\n$$\n")
+
+
+def test_the_roll_pitch_and_yaw_rates_p_q_r_are_the_body_angular_velocity():
+    assert verdicts(_AIRCRAFT.format(s="-")) == [(9, "holds")]
+
+
+def test_a_slip_read_only_through_the_rates_names_is_never_called_correct():
+    assert verdicts(_AIRCRAFT.format(s=""))[-1][1] != "holds"
+
+
+_FRAMES = "---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Frames\n\nFor any vector:\n\n$$\nBODY\n$$\n"
+_TRANSPORT = ("\\left.\\frac{d \\vec{v}}{dt}\\right|_i = \\left.\\frac{d \\vec{v}}{dt}\\right|_b "
+              "SIGN \\vec{\\omega}_{b/i} \\times \\vec{v}")
+
+
+def test_the_transport_theorem_for_a_vector_of_the_texts_holds_in_its_frame_notation():
+    assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "+"))) == [(9, "holds")]
+
+
+def test_the_transport_theorem_with_a_wrong_sign_is_flagged():
+    assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_a_vector_the_text_defines_is_read_with_its_definition_later():
+    law = "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}"
+    body = "\\vec{F_b} = m \\left( \\frac{d\\vec{V_b}}{dt_b} SIGN \\vec{\\omega_b} \\times \\vec{V_b} \\right)"
+    text = _FRAMES.replace("BODY", law) + "\nand in the body frame\n\n$$\nLATER\n$$\n"
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "unchecked"), (15, "holds")]
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_vectors_of_the_text_that_nothing_ties_are_never_judged():
+    text = _FRAMES.replace("BODY", "\\vec{M} = \\frac{d\\vec{H}}{dt_b} + \\vec{\\omega} \\times \\vec{G}")
+    assert [v for _, v in verdicts(text)] == ["unchecked"]

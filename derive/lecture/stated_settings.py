@@ -5,7 +5,8 @@ A text that sets the angles or their rates (``θ = θ₀``, ``\\dot\\phi = \\ome
 \\sin ψ``, ``ω₃ = ω_p \\cos θ₀ + ω_s``) states a consequence, not another setting. With the
 settings put into the derivation's ω̃(q, q̇) — an angle set to a constant has no rate, a rate set to
 a constant no acceleration — such a statement holds when its two sides then agree. Nothing is ever
-judged wrong here: a statement that does not agree is left to the rest of the reader.
+judged wrong here: a statement that does not agree is left to the rest of the reader, and so is one
+that writes a set angle or rate itself (a rate is never checked against the rate the text stated).
 
 Takes: the checker (its ``ctx.subs``, ``ctx.stated``, ``d.omega``, ``_resolve``, ``tex``). Gives:
 `under_settings`.
@@ -63,8 +64,8 @@ def under_settings(checker, a, b) -> str | None:
         e = checker._resolve(sp.sympify(a) - sp.sympify(b))
     except (TypeError, ValueError, AttributeError, lx.NotRead):
         return None
-    if isinstance(e, sp.MatrixBase) or set(e.free_symbols) & set(lx.WD):
-        return None
+    if isinstance(e, sp.MatrixBase) or set(e.free_symbols) & (set(lx.WD) | set(stated)):
+        return None                      # a stated rate or angle is never checked against itself
     e = e.xreplace({w: checker.d.omega[i] for i, w in enumerate(lx.W)})
     full = settled({**checker.ctx.subs, **{s: v for s, (v, _) in stated.items()}})
     put = e

@@ -39,7 +39,21 @@ class VectorStatements:
         if set(reading.relations) - {"=", "≡"}:
             return False
         first = reading.members[0]
-        self.ctx.head = reading.source[:first[0].end].strip()
+        before = getattr(self, "_vec_last", (None, None))
+        previous = before[1] if before[0] == line else None     # the row before, in this display only
+        self._vec_last = (line, reading.source[first[-1].start:first[-1].end].strip())
+        continued = re.match(r"\s*&?\s*(=|\\equiv)", piece) is not None
+        if previous and continued and vc.reference(reading, len(first) - 1) is None:
+            try:    # a row "&= …" of a chain that opened with a vector of the text's: against the row before
+                reading = vc.read(previous + " " + piece, self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                pass
+            first = reading.members[0]
+        self.ctx.head = reading.source[:first[0].end].strip() if not continued else self.ctx.head
+        put = {s: v for comps, value in self.ctx.vectors.values() for s, v in zip(comps, value)}
+        for row in reading.members if put and reading.model == "frame" else ():
+            for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
+                m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
         quantity = first[0].atom is not None and is_quantity(first[0].atom)
@@ -50,7 +64,17 @@ class VectorStatements:
                 self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
                           "starts (Euler's equations are it in body axes), not a consequence of it")
                 continue
-            ok, how = vc.holds(reading, k, f"{piece}/{k}")
+            ref = vc.reference(reading, k)
+            if ref is None and k == 1 and self._defines_vector(reading):
+                self._add(line, piece, "definition", "unchecked", f"defines the text's vector "
+                          f"{next(iter(vc.generics(first[0].value)))} (recorded, then used)")
+                continue
+            if ref is None:
+                self._add(line, piece, kind, "unchecked", "relates the text's own vector "
+                          f"{', '.join(sorted(vc.generics(first[k].value) ^ vc.generics(first[0].value)))} "
+                          "to others: nothing ties it to the derivation")
+                continue
+            ok, how = vc.holds(reading, k, f"{piece}/{k}", ref)
             if ok:
                 self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
                 continue
@@ -90,6 +114,21 @@ class VectorStatements:
             q = sp.cancel(sp.together(r[i] / target)) if target != 0 else None
             if q is None or q == 0 or free(q) & dyn:
                 return False
+        return True
+
+    def _defines_vector(self, reading) -> bool:
+        """``\\vec{F} = m \\frac{d\\vec{V}}{dt_i}``: a vector of the text's alone on the left, new in
+        the section, equal to others: recorded as that (its later uses are read with it)."""
+        first = reading.members[0]
+        mine, other = vc.generics(first[0].value), vc.generics(first[1].value)
+        if reading.model != "frame" or reading.free or len(first) < 2 or len(mine) != 1 or mine & other:
+            return False
+        name = next(iter(mine))
+        value = first[0].value
+        if name in self.ctx.vectors or not isinstance(value, sp.MatrixBase) or \
+                not all(isinstance(c, sp.Symbol) for c in value) or not isinstance(first[1].value, sp.MatrixBase):
+            return False
+        self.ctx.vectors[name] = (tuple(value), tuple(first[1].value))
         return True
 
     def _vector_fix(self, reading, k, piece):
