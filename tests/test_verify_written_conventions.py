@@ -103,3 +103,36 @@ def test_a_vector_the_text_defines_is_read_with_its_definition_later():
 def test_vectors_of_the_text_that_nothing_ties_are_never_judged():
     text = _FRAMES.replace("BODY", "\\vec{M} = \\frac{d\\vec{H}}{dt_b} + \\vec{\\omega} \\times \\vec{G}")
     assert [v for _, v in verdicts(text)] == ["unchecked"]
+
+
+_POISSON = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Heavy body\n\n"
+            "Let $\\gamma_1, \\gamma_2, \\gamma_3$ be the body-frame components of the unit vector $\\mathbf{n}$ "
+            "of the vertical. Then\n\n$$\n\\gamma_1=\\sin\\theta\\sin\\psi,\\quad \\gamma_2=\\sin\\theta\\cos\\psi,"
+            "\\quad \\gamma_3=\\cos\\theta\n$$\n")
+
+
+def test_the_components_of_the_vertical_unit_vector_are_poissons_gamma():
+    assert verdicts(_POISSON) == [(9, "holds")] * 3
+
+
+def test_a_wrong_component_of_the_vertical_is_never_called_correct():
+    assert verdicts(_POISSON.replace("\\gamma_2=\\sin\\theta\\cos\\psi", "\\gamma_2=\\sin\\theta\\sin\\psi"))[1][1] != "holds"
+
+
+def test_poissons_equation_with_the_relative_derivative_holds_and_a_wrong_sign_is_flagged():
+    poisson = ("\\frac{\\tilde{\\mathrm{d}} \\mathbf{n}}{\\mathrm{d} t} SIGN \\boldsymbol{\\omega}\\times \\mathbf{n}"
+               "=\\mathbf{0}")
+    text = _POISSON.split("Then")[0] + "Then\n\n$$\nBODY\n$$\n"
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "+"))) == [(9, "holds")]
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_a_relation_typed_as_a_plus_sign_is_a_typo_corrected_in_the_texts_latex():
+    out = kept.check_text(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "+").replace(" = ", " + ", 1)))
+    assert [(c.line, c.verdict) for c in out] == [(9, "typo")]
+    assert out[0].correction.startswith("\\left.\\frac{d \\vec{v}}{dt}\\right|_i = \\left.\\frac")
+
+
+def test_a_sum_of_vectors_that_no_single_relation_makes_hold_is_no_claim():
+    text = _FRAMES.replace("BODY", "\\left.\\frac{d \\vec{v}}{dt}\\right|_i + \\vec{\\omega} \\times \\vec{v}")
+    assert verdicts(text) == [(9, "unchecked")]

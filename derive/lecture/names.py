@@ -40,6 +40,7 @@ axial moment                symbol   I₃
 principal moments           list     I₁, I₂, I₃ in the order written
 identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
 roll, pitch and yaw rates   list     ω̃₁, ω̃₂, ω̃₃ in the order written (the aircraft's p, q, r)
+vertical                    letter   the upward vertical's body components Rᵀẑ (Poisson's γᵢ, 𝐧)
 ==========================  =======  ===================================================
 """
 from __future__ import annotations
@@ -65,6 +66,8 @@ MEANINGS = {
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
     "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia about the (?:symmetry|figure) axis"),
     "principal moments": ("list", r"principal moments(?: of inertia)?"),
+    "vertical": ("letter", r"(?:unit vector|direction cosines?)\W{0,4}(?:[¤§]\W{0,4})?(?:of|along) the (?:upward |fixed |space "
+                           r"|inertial )?vertical|(?:upward |fixed )?vertical unit vector"),
     "body rates": ("rates", r"roll,?\s+pitch,?\s+and\s+yaw\s+rates?"),
     "roll rate": ("symbol", r"\broll(?:ing)?[- ]rate"),
     "pitch rate": ("symbol", r"\bpitch(?:ing)?[- ]rate"),
@@ -90,7 +93,7 @@ LETTERS = {
     "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
     "identity column": ("I", "e", "E", "u", "1"), "body angular velocity": ("omega", "Omega", "w"),
-    "roll rate": ("p", "P"), "pitch rate": ("q", "Q"), "yaw rate": ("r", "R"),
+    "roll rate": ("p", "P"), "pitch rate": ("q", "Q"), "yaw rate": ("r", "R"), "vertical": ("gamma", "n", "nu"),
 }
 """The letters a reader takes for each meaning: a phrase next to any other letter is about
 something else (a point C, a matrix S), so it binds nothing."""
@@ -181,6 +184,12 @@ class Names:
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
                 return lx.OMEGA_VEC
             return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
+        if meaning == "vertical":             # Poisson's γᵢ: the upward vertical in body axes, Rᵀẑ
+            if not vocab.vertical or a.dots or a.hat or a.primes:
+                return None
+            if a.bold and not sub:
+                return sp.ImmutableMatrix(vocab.vertical)
+            return vocab.vertical[k] if k is not None and not a.bold else None
         if meaning in _RATE_AXES:             # p, q, r: the aircraft's roll, pitch and yaw rates, ω̃ in body axes
             w = _RATE_AXES[meaning]
             return (lx.W if a.dots == 0 else lx.WD)[w] if not a.bold and not sub and a.dots <= 1 else None
@@ -278,6 +287,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             if meaning is None or meaning in ("principal moments", "body rates") or not _fits(meaning, atoms):
                 continue
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
+        _components_of(names, text, starts, offset)
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():
@@ -291,6 +301,21 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
 
 
 _RATE_AXES = {"roll rate": 0, "pitch rate": 1, "yaw rate": 2}
+_LISTED = r"((?:\$[^$]+\$[\s,]*(?:and\s+)?){1,3})"
+_COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:be|are|denote)\s+the\s+(?:[\w-]+\s+){0,2}"
+                         r"components\s+)of the (?:unit )?vector\s+\$([^$]+)\$")
+
+
+def _components_of(names: Names, text: str, starts, offset):
+    """"the components $\\gamma_1, \\gamma_2, \\gamma_3$ of the unit vector $\\mathbf{n}$ of the
+    vertical": indexed symbols named as a vector's components mean what the vector means."""
+    for m in _COMPONENTS.finditer(text):
+        whole = _atoms(m.group(3))
+        meaning = names.letters.get((whole[0].base, "vector")) if len(whole) == 1 and whole[0].bold else None
+        parts = [a for s in re.findall(r"\$([^$]+)\$", m.group(1) or m.group(2)) for a in _atoms(s)]
+        if meaning and MEANINGS[meaning][0] == "letter" and parts and all(a.sub and not a.bold for a in parts) \
+                and _fits(meaning, parts):
+            _bind(names, parts, meaning, f"line {_line(starts, offset + m.start())}")
 
 
 def _rates_listed(names: Names, text: str, found: list, starts, offset):

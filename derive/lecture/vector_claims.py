@@ -56,6 +56,9 @@ class VectorStatements:
                 m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
+        if len(first) == 1:
+            self._missing_relation(line, piece, reading)
+            return True
         quantity = first[0].atom is not None and is_quantity(first[0].atom)
         kind = "kinematics" if reading.model == "frame" else ("definition" if quantity else "identity")
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
@@ -116,6 +119,27 @@ class VectorStatements:
                 return False
         return True
 
+    def _missing_relation(self, line, piece, reading):
+        """A display of vectors with no relation: when exactly one of its top-level signs + written
+        as = makes it hold (``d𝐯/dt|ᵢ + d𝐯/dt|_b + 𝛚 × 𝐯``), the relation was typed as a sign: a typo,
+        corrected in the text's own LaTeX."""
+        src = reading.source
+        found = []
+        for n, k in enumerate(_top_level_plus(src)):
+            try:
+                again = vc.read(src[:k] + "=" + src[k + 1:], self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                continue
+            if len(again.members[0]) == 2 and vc.reference(again, 1) == 0 and vc.holds(again, 1, f"{piece}/rel{k}")[0]:
+                found.append(n)
+        mine = _top_level_plus(piece)
+        if len(found) == 1 and len(mine) == len(_top_level_plus(src)):
+            k = mine[found[0]]
+            self._add(line, piece, "kinematics", "typo", "no relation as written; with one '+' read as '=' it holds "
+                      f"({vc.WHY[reading.model]})", correction=_evaluated_at((piece[:k] + "=" + piece[k + 1:]).strip()))
+        else:
+            self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
+
     def _defines_vector(self, reading) -> bool:
         """``\\vec{F} = m \\frac{d\\vec{V}}{dt_i}``: a vector of the text's alone on the left, new in
         the section, equal to others: recorded as that (its later uses are read with it)."""
@@ -171,3 +195,18 @@ class VectorStatements:
         self._add(line, piece, "equation of motion", "holds",
                   "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
+
+
+def _top_level_plus(src: str) -> list:
+    """The positions of the signs + outside brackets and braces."""
+    out, depth = [], 0
+    for k, ch in enumerate(src):
+        depth += 1 if ch in "({[" else (-1 if ch in ")}]" else 0)
+        if ch == "+" and depth == 0:
+            out.append(k)
+    return out
+
+
+def _evaluated_at(latex: str) -> str:
+    """``\\frac{d v}{dt}\\right|_i`` with the ``\\left.`` the reading dropped put back, so a correction pastes."""
+    return re.sub(r"(\\frac\s*\{(?:[^{}]|\{[^{}]*\})*\}\s*\{[^{}]*\})\s*\\right\s*\|", r"\\left.\1\\right|", latex)

@@ -114,8 +114,9 @@ class Model:
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
         """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
-        if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()):
-            return self.derivative(X, frame)
+        if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()) or \
+                isinstance(X, sp.MatrixBase) and X.free_symbols and X.free_symbols <= set(ANGLES):
+            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ)
         if isinstance(X, sp.MatrixBase):
             raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
         return None
@@ -178,6 +179,8 @@ class Model:
             return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
         if a.base == "T" and plain and not a.sub and not a.bold:
             return self.kinetic
+        if a.bold and plain and not a.sub and _text_letter(p, a, "vertical") and p.vocab.vertical:
+            return sp.Matrix(p.vocab.vertical)    # the text's unit vector of the vertical, Rᵀẑ
         if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and not a.sub:
             return LAW                  # τ, or the letter the text calls the torque (Goldstein's 𝐍)
         if self.name == "frame" and a.bold and plain and not a.sub and not a.sup and a.base not in _KNOWN_VECTORS:
@@ -254,6 +257,9 @@ def _particle_index(text: str) -> str | None:
 
 _VEC = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{(?:[^{}]|\{[^{}]*\})*\}"
 _LABEL = r"(\{[^{}]*\}|[A-Za-z])"
+_D = r"(?:\\mathrm\s*\{\s*d\s*\}|d)"
+_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + _D + r"\s*\}\s*(" + _VEC + r")\s*\}\s*\{\s*" + _D + r"\s*t\s*\}")
+_ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
 _RATE_BAR = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*dt\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
 _RATE_DT = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*d\s*t\s*_\s*" + _LABEL + r"\s*\}")
 _BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
@@ -268,6 +274,8 @@ def frame_rates(text: str) -> str:
     def framed(m):
         return r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{" + m.group(2).strip("{}").strip() + "}"
     new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
+    # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
+    new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))
     if new == text:
         return text
     return _RELATIVE.sub(r"\1", _BODY_LABEL.sub(r"\1}", new))

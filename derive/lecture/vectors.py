@@ -72,7 +72,12 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
-    """a = b? Exact for polynomials (the particle and principal models), else `zero_test`'s test."""
+    """a = b? Exact for polynomials (the particle and principal models), else `zero_test`'s test. A
+    vector equal to 0 is equal to the zero vector."""
+    if isinstance(a, sp.MatrixBase) and b == 0 and not isinstance(b, sp.MatrixBase):
+        b = sp.zeros(*a.shape)
+    elif isinstance(b, sp.MatrixBase) and a == 0 and not isinstance(a, sp.MatrixBase):
+        a = sp.zeros(*b.shape)
     if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) or \
             (isinstance(a, sp.MatrixBase) and a.shape != b.shape):
         return False, f"a {_shape(a)} against a {_shape(b)}"
