@@ -26,9 +26,16 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("byuflowlab-sixdof-aircraft-321-theory", "checked"):
+        "the inertia tensor written I_b beside frame derivatives, displays with no relation that write out "
+        "the previous one (a bare vector, a bare matrix), the position's kinematics and the airspeed's "
+        "definitions in vectors are not read",
+    ("heavy-rigid-body-euler-poisson-gyroscope-zh-notes-zxz", "checked"):
+        "the general heavy body (centre of mass x_C, y_C, z_C off the axis) is not derived: its moment of "
+        "gravity, its integrals (L_Z, E, Kovalevskaya's) and the gyroscope's vector formula are not checked",
 }
 
-FLOOR = {"checked": 230, "slips_flagged": 28, "holds_flagged": 0}
+FLOOR = {"checked": 250, "slips_flagged": 29, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
@@ -53,9 +60,9 @@ def test_a_text_names_its_source_commit_and_licence(slug):
     assert "symbols:" not in head          # the reader learns the text's names itself
 
 
-_DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)(\*?)\}.+?"
-                      r"\\end\{\1\2\}", re.S)
-_OPENING = re.compile(r"^\s*(\$\$|\\\[|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)\*?\})")
+_DISPLAY = re.compile(r"^```math\n.+?^```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)(\*?)\}.+?"
+                      r"\\end\{\1\2\}", re.S | re.M)
+_OPENING = re.compile(r"^\s*(```math|\$\$|\\\[|\\begin\{(equation|align|eqnarray|gather|multline|subnumcases|numcases)\*?\})")
 
 
 @pytest.mark.parametrize("slug", TEXTS)

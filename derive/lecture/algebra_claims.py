@@ -30,7 +30,7 @@ class AlgebraStatements:
     @property
     def _alg(self) -> va.State:
         if "_alg_state" not in self.__dict__:
-            self._alg_state = va.State()
+            self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""))
             self._alg_read = False
         return self._alg_state
 

@@ -391,6 +391,9 @@ class _Parser:
         is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
         dt = len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" \
             and not den[1].value.sub
+        if len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" and den[1].value.sub \
+                and num and is_d(num[0]):
+            raise NotRead("a derivative in a frame (d/dt with the frame's label on t)")   # dH/dt_b, never H/t_b
         if dt and len(num) == 1 and is_d(num[0]):
             self.i = k2                                   # d/dt of what follows
             return self._evaluated(DT(self.term({})))

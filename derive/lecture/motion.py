@@ -133,10 +133,14 @@ class Motion:
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
         if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not free(sp.diff(r, loose[0])) & set(lx.W):
-            # one symbol of the text's, entering linearly: the torque's component (N₃, τ_z)
+            # one symbol of the text's, entering linearly: its term is the torque's component (N₃,
+            # τ_z, αγ₃), scaled as the rest of the equation is (q, from the coefficients of ω̃̇ᵢ)
             for i in range(3):
                 if free(r) & {lx.WD[i]}:
-                    r = r.xreplace({loose[0]: lx.TAU[i]})
+                    slope, scale = sp.diff(r, loose[0]), sp.diff(euler[i], lx.WD[i])
+                    q = sp.cancel(sp.diff(r, lx.WD[i]) / scale) if scale != 0 else 0
+                    r = sp.expand(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
+                        r.xreplace({loose[0]: lx.TAU[i]})
                     break
         if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]

@@ -39,6 +39,8 @@ transverse moment           symbol   I₁ (= I₂)
 axial moment                symbol   I₃
 principal moments           list     I₁, I₂, I₃ in the order written
 identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
+roll, pitch and yaw rates   list     ω̃₁, ω̃₂, ω̃₃ in the order written (the aircraft's p, q, r)
+vertical                    letter   the upward vertical's body components Rᵀẑ (Poisson's γᵢ, 𝐧)
 ==========================  =======  ===================================================
 """
 from __future__ import annotations
@@ -64,6 +66,12 @@ MEANINGS = {
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
     "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia about the (?:symmetry|figure) axis"),
     "principal moments": ("list", r"principal moments(?: of inertia)?"),
+    "vertical": ("letter", r"(?:unit vector|direction cosines?)\W{0,4}(?:[¤§]\W{0,4})?(?:of|along) the (?:upward |fixed |space "
+                           r"|inertial )?vertical|(?:upward |fixed )?vertical unit vector"),
+    "body rates": ("rates", r"roll,?\s+pitch,?\s+and\s+yaw\s+rates?"),
+    "roll rate": ("symbol", r"\broll(?:ing)?[- ]rate"),
+    "pitch rate": ("symbol", r"\bpitch(?:ing)?[- ]rate"),
+    "yaw rate": ("symbol", r"\byaw(?:ing)?[- ]rate"),
     "centre-of-mass distance": ("symbol", r"(?:distance|length|height)\b[^.;$]{0,60}(?:centre|center) of (?:mass|gravity)|(?:centre|center) of (?:mass|gravity)[^.;$]{0,40}(?:distance|from the (?:pivot|support|fixed point|origin|tip))"),
     "kinetic energy": ("symbol", r"kinetic energy"),
     "effective potential": ("symbol", r"effective potential"),
@@ -85,6 +93,7 @@ LETTERS = {
     "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
     "identity column": ("I", "e", "E", "u", "1"), "body angular velocity": ("omega", "Omega", "w"),
+    "roll rate": ("p", "P"), "pitch rate": ("q", "Q"), "yaw rate": ("r", "R"), "vertical": ("gamma", "n", "nu"),
 }
 """The letters a reader takes for each meaning: a phrase next to any other letter is about
 something else (a point C, a matrix S), so it binds nothing."""
@@ -175,6 +184,15 @@ class Names:
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
                 return lx.OMEGA_VEC
             return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
+        if meaning == "vertical":             # Poisson's γᵢ: the upward vertical in body axes, Rᵀẑ
+            if not vocab.vertical or a.dots or a.hat or a.primes:
+                return None
+            if a.bold and not sub:
+                return sp.ImmutableMatrix(vocab.vertical)
+            return vocab.vertical[k] if k is not None and not a.bold else None
+        if meaning in _RATE_AXES:             # p, q, r: the aircraft's roll, pitch and yaw rates, ω̃ in body axes
+            w = _RATE_AXES[meaning]
+            return (lx.W if a.dots == 0 else lx.WD)[w] if not a.bold and not sub and a.dots <= 1 else None
         if meaning == "identity column":      # 𝐈ᵢ, "the i-th column of the identity matrix": the unit column
             return sp.ImmutableMatrix(sp.eye(3)[:, k]) if a.bold and k is not None and plain else None
         if not plain or a.bold:
@@ -257,6 +275,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             after = [a for m in run for a in _atoms(m.group(1))]
             if len(after) == 3 and all(re.fullmatch(r"\s*(,|and|,\s*and)?\s*", g) for g in gaps):
                 _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
+        _rates_listed(names, text, found, starts, offset)
         for k, m in enumerate(found):
             atoms = _atoms(m.group(1))
             if not atoms:
@@ -265,9 +284,10 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             marked = "".join(("§" if j == k else "¤") if isinstance(piece, int) else piece
                              for j, piece in _pieces(text, found))
             meaning = _nearest(marked)
-            if meaning is None or meaning == "principal moments" or not _fits(meaning, atoms):
+            if meaning is None or meaning in ("principal moments", "body rates") or not _fits(meaning, atoms):
                 continue
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
+        _components_of(names, text, starts, offset)
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():
@@ -278,6 +298,39 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
                              f"(one of: {', '.join(m for m in MEANINGS if m != 'second moment')})")
         _bind(names, atoms, meaning, "the front matter", override=True)
     return names
+
+
+_RATE_AXES = {"roll rate": 0, "pitch rate": 1, "yaw rate": 2}
+_LISTED = r"((?:\$[^$]+\$[\s,]*(?:and\s+)?){1,3})"
+_COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:be|are|denote)\s+the\s+(?:[\w-]+\s+){0,2}"
+                         r"components\s+)of the (?:unit )?vector\s+\$([^$]+)\$")
+
+
+def _components_of(names: Names, text: str, starts, offset):
+    """"the components $\\gamma_1, \\gamma_2, \\gamma_3$ of the unit vector $\\mathbf{n}$ of the
+    vertical": indexed symbols named as a vector's components mean what the vector means."""
+    for m in _COMPONENTS.finditer(text):
+        whole = _atoms(m.group(3))
+        meaning = names.letters.get((whole[0].base, "vector")) if len(whole) == 1 and whole[0].bold else None
+        parts = [a for s in re.findall(r"\$([^$]+)\$", m.group(1) or m.group(2)) for a in _atoms(s)]
+        if meaning and MEANINGS[meaning][0] == "letter" and parts and all(a.sub and not a.bold for a in parts) \
+                and _fits(meaning, parts):
+            _bind(names, parts, meaning, f"line {_line(starts, offset + m.start())}")
+
+
+def _rates_listed(names: Names, text: str, found: list, starts, offset):
+    """"$p, q, r$ are the roll, pitch and yaw rates" (or the phrase first): the three symbols
+    nearest the phrase in its clause, in order, are ω̃₁, ω̃₂, ω̃₃ (the aircraft's body axes)."""
+    phrase = re.search(MEANINGS["body rates"][1], text, flags=re.I)
+    if not phrase:
+        return
+    before = [a for m in found if m.end() <= phrase.start() for a in _atoms(m.group(1))][-3:]
+    after = [a for m in found if m.start() >= phrase.end() for a in _atoms(m.group(1))][:3]
+    for atoms in (before, after):
+        if len(atoms) == 3 and all(not a.bold and not a.sub for a in atoms):
+            for atom, meaning in zip(atoms, _RATE_AXES):
+                _bind(names, [atom], meaning, f"line {_line(starts, offset + phrase.start())}")
+            return
 
 
 def _principal_axes(names: Names, body: str, prose: str):

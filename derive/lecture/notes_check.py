@@ -113,6 +113,8 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
+        if notes.names is not None and "vertical" in notes.names.letters.values():
+            self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])   # the upward vertical in body axes
         self.ctx = Context()
         self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()

@@ -110,14 +110,22 @@ def _blank(m: re.Match) -> str:
 
 
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
+_MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*math[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
 _FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
 
 
+def _math_display(m: re.Match) -> str:
+    """A fenced ``math`` block as the display it renders as: ``$$`` on its fence lines."""
+    return "$$\n" + m.group(2) + "$$"
+
+
 def rendered(text: str) -> str:
     """The text with what a reader never sees blanked out: HTML comments, fenced code blocks and
-    inline code spans (the line structure is kept)."""
+    inline code spans (the line structure is kept). A fenced block in the language ``math``
+    (GitHub, GitLab and Documenter render it as a display) is a display, read as ``$$ … $$``."""
     text = _COMMENT.sub(_blank, text)
+    text = _MATH_FENCE.sub(_math_display, text)
     text = _FENCE.sub(_blank, text)
     return _CODE.sub(_blank, text)
 

@@ -33,6 +33,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
+from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
@@ -63,6 +64,12 @@ _FUNCTION_OF = re.compile(r"\s*[^=()]+?\(\s*[^()]+,[^()]+\)\s*$")
 
 def _right_side(text) -> str:
     return text.split("=", 1)[1] if "=" in text else ""
+
+
+def _moment_multiple(m) -> bool:
+    """A parameter, or a positive number times a principal moment (the 2I₃ of I₁ = I₂ = 2I₃)."""
+    k, rest = sp.sympify(m).as_coeff_Mul()
+    return m in PARAMETERS or (k.is_Rational and k > 0 and rest in (I1, I2, I3))
 
 
 def _free(obj) -> set:
@@ -157,7 +164,7 @@ class TextNames:
             self._add(line, piece, "new symbol", "unchecked",
                       f"defines the text's function {self.tex(members[1])} as the left side (recorded, then used)")
             return True
-        if "≠" in rels and "=" in rels or (len(members) > 2 and all(m in PARAMETERS for m in members)):
+        if "≠" in rels and "=" in rels or (len(members) > 2 and all(_moment_multiple(m) for m in members)):
             return self._settings_before_neq(line, piece, members, rels)      # I₁ = I₂ ≠ I₃, I₁ = I₂ = I₃
         m0 = members[0]
         base = m0.base if isinstance(m0, sp.Pow) and m0.exp == 2 else None
@@ -201,6 +208,10 @@ class TextNames:
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
             # ω̃̇ᵢ = 0 that Euler's equations give under the settings before it (I₁ = I₂ = I₃): a claim
             follows = self._eom_check(m0 - members[1]) if m0 in lx.WD else (False, "", None)
+            implied = None if follows[0] else under_settings(self, m0, members[1])
+            if implied:                               # ω̃₃ = ω_p cos θ₀ + ω_s after θ = θ₀, …: a consequence
+                self._add(line, piece, "identity", "holds", implied)
+                return True
             if sp.sympify(m0).xreplace(self.ctx.subs) != sp.sympify(members[1]).xreplace(self.ctx.subs):
                 self.ctx.subs[m0] = members[1]        # (not again what the text already said)
                 self.ctx.stated[m0] = f"line {line}"
@@ -237,6 +248,9 @@ class TextNames:
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
             self.display_relations.append((a, rel, b))
+            if rel == "=" and _moment_multiple(b) and not isinstance(b, sp.Symbol):
+                k, b = b.as_coeff_Mul()             # I₂ = 2I₃: I₃ is I₂/2 from here on
+                a = a / k
             if rel == "=" and isinstance(b, sp.Symbol) and self._settable(b) and \
                     sp.sympify(a).xreplace(self.ctx.subs) != b.xreplace(self.ctx.subs):
                 self.ctx.subs[b] = a
@@ -249,6 +263,10 @@ class TextNames:
         """A relation with symbols of the text's that nothing ties: decided only if it is an
         identity whatever they are."""
         self._flush()                   # a claim: the solutions before it are a complete group
+        implied = under_settings(self, members[0], members[1]) if rels == ["="] else None
+        if implied:
+            self._add(line, piece, "identity", "holds", implied)
+            return True
         if set(rels) <= {"<", ">", "≤", "≥"} and self._ordered(line, piece, members, rels):
             return True
         loose = set()

@@ -89,6 +89,17 @@ class State:
     torques: set = field(default_factory=lambda: set(TORQUES))
     defs: dict = field(default_factory=dict)        # (base, sub) → the text's value of an entry
     head: str | None = None                         # the left side this reader last set
+    products: bool = False                          # I_xy names the product of inertia +∫xy dm
+
+
+_MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
+
+
+def products_of_inertia(body: str) -> bool:
+    """Whether a text writes its inertia matrix with −I_xy off the diagonal: then its I_xy, I_xz,
+    I_yz are the products of inertia +∫ x y dm (the engineering convention), the tensor's entry
+    being −I_xy; otherwise I_xy is the tensor's entry −∫ x y dm (the physicists' convention)."""
+    return any(a != b for a, b in _MINUS_PRODUCT.findall(body))
 
 
 def rate(e):
@@ -274,7 +285,9 @@ class Algebra:
             if len(sub) == 2 and not bold:
                 if (base, sub) in self.state.defs:
                     return self.state.defs[(base, sub)]
-                return tensor(self.system)[p.axis(sub[0], env, tok), p.axis(sub[1], env, tok)]
+                i, j = p.axis(sub[0], env, tok), p.axis(sub[1], env, tok)
+                entry = tensor(self.system)[i, j]
+                return -entry if self.state.products and i != j else entry
             return None
         if base in self.state.torques or (base == "F" and bold and not sub):
             p.law = True

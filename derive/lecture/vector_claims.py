@@ -39,9 +39,26 @@ class VectorStatements:
         if set(reading.relations) - {"=", "≡"}:
             return False
         first = reading.members[0]
-        self.ctx.head = reading.source[:first[0].end].strip()
+        before = getattr(self, "_vec_last", (None, None))
+        previous = before[1] if before[0] == line else None     # the row before, in this display only
+        self._vec_last = (line, reading.source[first[-1].start:first[-1].end].strip())
+        continued = re.match(r"\s*&?\s*(=|\\equiv)", piece) is not None
+        if previous and continued and vc.reference(reading, len(first) - 1) is None:
+            try:    # a row "&= …" of a chain that opened with a vector of the text's: against the row before
+                reading = vc.read(previous + " " + piece, self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                pass
+            first = reading.members[0]
+        self.ctx.head = reading.source[:first[0].end].strip() if not continued else self.ctx.head
+        put = {s: v for comps, value in self.ctx.vectors.values() for s, v in zip(comps, value)}
+        for row in reading.members if put and reading.model == "frame" else ():
+            for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
+                m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
+        if len(first) == 1:
+            self._missing_relation(line, piece, reading)
+            return True
         quantity = first[0].atom is not None and is_quantity(first[0].atom)
         kind = "kinematics" if reading.model == "frame" else ("definition" if quantity else "identity")
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
@@ -50,7 +67,17 @@ class VectorStatements:
                 self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
                           "starts (Euler's equations are it in body axes), not a consequence of it")
                 continue
-            ok, how = vc.holds(reading, k, f"{piece}/{k}")
+            ref = vc.reference(reading, k)
+            if ref is None and k == 1 and self._defines_vector(reading):
+                self._add(line, piece, "definition", "unchecked", f"defines the text's vector "
+                          f"{next(iter(vc.generics(first[0].value)))} (recorded, then used)")
+                continue
+            if ref is None:
+                self._add(line, piece, kind, "unchecked", "relates the text's own vector "
+                          f"{', '.join(sorted(vc.generics(first[k].value) ^ vc.generics(first[0].value)))} "
+                          "to others: nothing ties it to the derivation")
+                continue
+            ok, how = vc.holds(reading, k, f"{piece}/{k}", ref)
             if ok:
                 self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}{where}: {how}")
                 continue
@@ -90,6 +117,42 @@ class VectorStatements:
             q = sp.cancel(sp.together(r[i] / target)) if target != 0 else None
             if q is None or q == 0 or free(q) & dyn:
                 return False
+        return True
+
+    def _missing_relation(self, line, piece, reading):
+        """A display of vectors with no relation: when exactly one of its top-level signs + written
+        as = makes it hold (``d𝐯/dt|ᵢ + d𝐯/dt|_b + 𝛚 × 𝐯``), the relation was typed as a sign: a typo,
+        corrected in the text's own LaTeX."""
+        src = reading.source
+        found = []
+        for n, k in enumerate(_top_level_plus(src)):
+            try:
+                again = vc.read(src[:k] + "=" + src[k + 1:], self.vocab, self.d, self.ctx.vec_model)
+            except lx.NotRead:
+                continue
+            if len(again.members[0]) == 2 and vc.reference(again, 1) == 0 and vc.holds(again, 1, f"{piece}/rel{k}")[0]:
+                found.append(n)
+        mine = _top_level_plus(piece)
+        if len(found) == 1 and len(mine) == len(_top_level_plus(src)):
+            k = mine[found[0]]
+            self._add(line, piece, "kinematics", "typo", "no relation as written; with one '+' read as '=' it holds "
+                      f"({vc.WHY[reading.model]})", correction=_evaluated_at((piece[:k] + "=" + piece[k + 1:]).strip()))
+        else:
+            self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
+
+    def _defines_vector(self, reading) -> bool:
+        """``\\vec{F} = m \\frac{d\\vec{V}}{dt_i}``: a vector of the text's alone on the left, new in
+        the section, equal to others: recorded as that (its later uses are read with it)."""
+        first = reading.members[0]
+        mine, other = vc.generics(first[0].value), vc.generics(first[1].value)
+        if reading.model != "frame" or reading.free or len(first) < 2 or len(mine) != 1 or mine & other:
+            return False
+        name = next(iter(mine))
+        value = first[0].value
+        if name in self.ctx.vectors or not isinstance(value, sp.MatrixBase) or \
+                not all(isinstance(c, sp.Symbol) for c in value) or not isinstance(first[1].value, sp.MatrixBase):
+            return False
+        self.ctx.vectors[name] = (tuple(value), tuple(first[1].value))
         return True
 
     def _vector_fix(self, reading, k, piece):
@@ -132,3 +195,18 @@ class VectorStatements:
         self._add(line, piece, "equation of motion", "holds",
                   "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
+
+
+def _top_level_plus(src: str) -> list:
+    """The positions of the signs + outside brackets and braces."""
+    out, depth = [], 0
+    for k, ch in enumerate(src):
+        depth += 1 if ch in "({[" else (-1 if ch in ")}]" else 0)
+        if ch == "+" and depth == 0:
+            out.append(k)
+    return out
+
+
+def _evaluated_at(latex: str) -> str:
+    """``\\frac{d v}{dt}\\right|_i`` with the ``\\left.`` the reading dropped put back, so a correction pastes."""
+    return re.sub(r"(\\frac\s*\{(?:[^{}]|\{[^{}]*\})*\}\s*\{[^{}]*\})\s*\\right\s*\|", r"\\left.\1\\right|", latex)

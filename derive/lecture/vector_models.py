@@ -24,8 +24,13 @@ R_B = sp.Matrix(sp.symbols("x_b y_b z_b", real=True))          # a body-fixed po
 L_B = sp.Matrix(sp.symbols("L_b1:4", real=True))               # 𝐋's body components (time-dependent)
 LD_B = sp.Matrix(sp.symbols("Ld_b1:4", real=True))             # their rates
 W = sp.Matrix(lx.W)
-FRAMES = {"body": "body", "b": "body", "rot": "body", "rotating": "body", "inertial": "inertial",
-          "space": "inertial", "fixed": "inertial", "lab": "inertial", "s": "inertial"}
+FRAMES = {"body": "body", "b": "body", "B": "body", "rot": "body", "rotating": "body", "inertial": "inertial",
+          "space": "inertial", "fixed": "inertial", "lab": "inertial", "s": "inertial", "i": "inertial",
+          "I": "inertial", "N": "inertial"}
+GENERIC = "_vec"
+"""The mark of a generic vector's body components (``V_vec1``): a vector of the text's in a frame
+derivative, with time-dependent components of its own."""
+_KNOWN_VECTORS = {"r", "L", "omega", "Omega", "e", "I", "Xi", "tau"}
 _UNIT = re.compile(r"\\(?:mathbf|mathbb|boldsymbol|bm)\s*\{\s*(?:\\(?:mathbb|mathbf)\s*\{\s*)?1\s*\}(?:\s*\})?")
 
 
@@ -47,6 +52,14 @@ class Model:
         self.name, self.d = name, derivation
         self.plain_l_vector = plain_l_vector
         self.rates = name == "frame"    # the grammar reads d𝐗/dt only in a rotating frame
+        self.generic = {}               # a letter → (its body components, their rates)
+
+    def generic_vector(self, base: str) -> sp.Matrix:
+        """𝐕 of the text's in a rotating frame: body components V₁ V₂ V₃ of their own, time-dependent."""
+        if base not in self.generic:
+            self.generic[base] = (sp.Matrix(sp.symbols(f"{base}{GENERIC}1:4", real=True)),
+                                  sp.Matrix(sp.symbols(f"{base}{GENERIC}d1:4", real=True)))
+        return self.generic[base][0]
 
     # particle references
     def velocity(self, k):
@@ -86,7 +99,9 @@ class Model:
     def dt(self, e):
         """d/dt of an expression in the angles, rates and 𝐋's body components (the
         derivation's chain rule, with 𝐋's components as three more coordinates)."""
-        return time_derivative(e, coords=(*ANGLES, *L_B), rates=(*RATES, *LD_B), accels=ACCELS)
+        comps = [c for X, _ in self.generic.values() for c in X]
+        rates = [c for _, Xd in self.generic.values() for c in Xd]
+        return time_derivative(e, coords=(*ANGLES, *L_B, *comps), rates=(*RATES, *LD_B, *rates), accels=ACCELS)
 
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:
         """Body components of (dX/dt) in the inertial frame (Rᵀ d(R X)/dt) or the body frame (Ẋ)."""
@@ -99,8 +114,9 @@ class Model:
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
         """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
-        if X is R_B or X is L_B:
-            return self.derivative(X, frame)
+        if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()) or \
+                isinstance(X, sp.MatrixBase) and X.free_symbols and X.free_symbols <= set(ANGLES):
+            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ)
         if isinstance(X, sp.MatrixBase):
             raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
         return None
@@ -163,8 +179,12 @@ class Model:
             return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
         if a.base == "T" and plain and not a.sub and not a.bold:
             return self.kinetic
+        if a.bold and plain and not a.sub and _text_letter(p, a, "vertical") and p.vocab.vertical:
+            return sp.Matrix(p.vocab.vertical)    # the text's unit vector of the vertical, Rᵀẑ
         if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and not a.sub:
             return LAW                  # τ, or the letter the text calls the torque (Goldstein's 𝐍)
+        if self.name == "frame" and a.bold and plain and not a.sub and not a.sup and a.base not in _KNOWN_VECTORS:
+            return self.generic_vector(a.base)
         return None
 
 
@@ -201,7 +221,7 @@ def _has_time_derivative(toks) -> bool:
     for k in range(len(toks) - 6):
         w = toks[k:k + 7]
         if w[0].kind == "cmd" and w[0].value == "frac" and w[2].kind == "atom" and w[2].value.base == "d" \
-                and w[3].kind == "atom" and w[3].value.bold:
+                and w[3].kind == "atom" and (w[3].value.bold or w[3].value.text.startswith("\\vec")):
             return True
     return False
 
@@ -235,11 +255,37 @@ def _particle_index(text: str) -> str | None:
     return None
 
 
+_VEC = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{(?:[^{}]|\{[^{}]*\})*\}"
+_LABEL = r"(\{[^{}]*\}|[A-Za-z])"
+_D = r"(?:\\mathrm\s*\{\s*d\s*\}|d)"
+_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + _D + r"\s*\}\s*(" + _VEC + r")\s*\}\s*\{\s*" + _D + r"\s*t\s*\}")
+_ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
+_RATE_BAR = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*dt\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
+_RATE_DT = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*d\s*t\s*_\s*" + _LABEL + r"\s*\}")
+_BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
+_RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
+
+
+def frame_rates(text: str) -> str:
+    """A derivative in a frame as the texts write it — ``\\left.\\frac{d\\vec v}{dt}\\right|_i``,
+    ``\\frac{d\\vec V}{dt_b}`` — as ``\\left(\\frac{d\\vec v}{dt}\\right)_{i}``; in such a statement a
+    vector's body-frame label (``\\vec{V_b}``, ``\\vec{\\omega}_{b/i}``) names the same vector, read in
+    body components as every vector is."""
+    def framed(m):
+        return r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{" + m.group(2).strip("{}").strip() + "}"
+    new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
+    # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
+    new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))
+    if new == text:
+        return text
+    return _RELATIVE.sub(r"\1", _BODY_LABEL.sub(r"\1}", new))
+
+
 def prepare(text: str) -> str:
     """𝟙 (``\\mathbf{1}``, ``\\mathbb{1}``) as a symbol the scanner reads; ``\\overleftrightarrow``
     (the dyadic arrow) as bold; the text's particle index (``m_{\\alpha}``, ``r_{\\alpha ,i}``,
-    ``\\sum_{\\alpha}``) as p."""
-    text = _UNIT.sub(r"\\mathbf{\\Xi}", text)
+    ``\\sum_{\\alpha}``) as p; derivatives in a frame (`frame_rates`)."""
+    text = frame_rates(_UNIT.sub(r"\\mathbf{\\Xi}", text))
     x = _particle_index(text)
     if x is not None:
         x = re.escape(x) + (r"(?![A-Za-z])" if x.startswith("\\") else "")

@@ -338,7 +338,14 @@ class VectorParser(_Parser):
             return value
         if not self.model.vocabulary:
             raise lx.Unknown(f"unknown symbol {tok.value.text}", tok.pos + 1)
-        return super().atom(tok, env)
+        try:
+            return super().atom(tok, env)
+        except lx.Unknown:
+            a = tok.value           # a text's scalar letter beside its vectors in a frame (m of m dV/dt): a constant
+            if getattr(self.model, "rates", False) and len(a.base) == 1 and a.base.islower() and \
+                    not (a.bold or a.sub or a.sup or a.dots or a.hat or a.primes or a.tilde):
+                return sp.Symbol(f"{a.base}_const", positive=True)
+            raise
 
     def axis(self, ch, env, tok) -> int:
         """The body axis (0, 1, 2) an index names: x, y, z, 1, 2, 3 or a summed or free index."""

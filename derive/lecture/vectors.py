@@ -50,6 +50,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import vector_models as vm
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
 from derive.lecture.vector_models import Model, model_of, prepare, vectorish
@@ -71,7 +72,12 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
-    """a = b? Exact for polynomials (the particle and principal models), else `zero_test`'s test."""
+    """a = b? Exact for polynomials (the particle and principal models), else `zero_test`'s test. A
+    vector equal to 0 is equal to the zero vector."""
+    if isinstance(a, sp.MatrixBase) and b == 0 and not isinstance(b, sp.MatrixBase):
+        b = sp.zeros(*a.shape)
+    elif isinstance(b, sp.MatrixBase) and a == 0 and not isinstance(a, sp.MatrixBase):
+        a = sp.zeros(*b.shape)
     if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) or \
             (isinstance(a, sp.MatrixBase) and a.shape != b.shape):
         return False, f"a {_shape(a)} against a {_shape(b)}"
@@ -112,10 +118,24 @@ WHY = {
 }
 
 
-def holds(reading: Reading, k: int, seed: str) -> tuple[bool, str]:
-    """Member k against member 0, for each value of the free indices."""
+def generics(value) -> set:
+    """The text's own vectors a value involves (`vector_models.GENERIC`), by letter."""
+    return {s.name.split(vm.GENERIC)[0] for s in getattr(value, "free_symbols", ()) if vm.GENERIC in s.name}
+
+
+def reference(reading: Reading, k: int) -> int | None:
+    """The member member k is checked against: the first one before it that involves the same
+    vectors of the text's (``M = dH/dt|_i = dH/dt|_b + ω × H``: the last two with each other; a
+    vector the derivation does not tie, M, equals nothing it can check); None if there is none."""
+    first = reading.members[0]
+    mine = generics(first[k].value)
+    return next((j for j in range(k) if generics(first[j].value) == mine), None)
+
+
+def holds(reading: Reading, k: int, seed: str, ref: int = 0) -> tuple[bool, str]:
+    """Member k against member ``ref`` (the first, unless said), for each value of the free indices."""
     for n, members in enumerate(reading.members):
-        ok, how = _zero(members[k].value, members[0].value, f"{seed}/{n}")
+        ok, how = _zero(members[k].value, members[ref].value, f"{seed}/{n}")
         if not ok:
             where = ""
             if reading.free:

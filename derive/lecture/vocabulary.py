@@ -365,6 +365,8 @@ class Vocabulary:
     axial: int = 2
     """The body axis of the third turn (2 for z-y-z and z-x-z): the angular momentum's component
     on it is the third angle's momentum, I₃ω̃₃ = p_γ."""
+    vertical: tuple = ()
+    """The upward vertical's body components in the angles (Rᵀẑ), when the text names them (Poisson's γᵢ)."""
     names_off: bool = False
     """Read as if the text had named nothing (a second opinion on a learned name)."""
     readings: dict = field(default_factory=dict)

@@ -1,0 +1,138 @@
+"""Conventions of writing that real texts use: a fenced ``math`` block is a display, an inertia matrix
+with −I_xy off its diagonal names the products of inertia +∫xy dm, and a chain of principal moments
+with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃."""
+import kept_readings as kept
+
+
+def verdicts(text):
+    return [(c.line, c.verdict) for c in kept.check_text(text)]
+
+
+T = "T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + \\frac{1}{2} I_3 \\omega_3^2"
+
+
+def test_a_fenced_math_block_is_a_display_and_other_fences_are_not():
+    text = f"# Notes\n\n```math\n{T}\n```\n\n```python\n$${T} + 1$$\n```\n"
+    assert verdicts(text) == [(3, "holds")]
+
+
+def test_a_slip_in_a_fenced_math_block_is_flagged():
+    text = "# Notes\n\n```math\nT = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + I_3 \\omega_3^2\n```\n"
+    assert {v for _, v in verdicts(text)} <= {"typo", "fails"} and verdicts(text)
+
+
+_TENSOR = ("\\begin{{bmatrix}} I_{{xx}} & {s}I_{{xy}} & {s}I_{{xz}} \\\\ {s}I_{{xy}} & I_{{yy}} & {s}I_{{yz}} \\\\ "
+           "{s}I_{{xz}} & {s}I_{{yz}} & I_{{zz}} \\end{{bmatrix}}")
+_HEAD = "A body of point masses turns with $\\boldsymbol{\\omega}$; its inertia tensor:\n\n"
+
+
+def test_an_inertia_matrix_with_minus_products_names_the_products_of_inertia():
+    text = _HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n"
+    assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_an_inertia_matrix_with_plus_entries_keeps_the_tensors_own_entries():
+    text = _HEAD + "$$\nI = " + _TENSOR.format(s="") + "\n$$\n"
+    assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_moments_in_a_ratio_are_an_assumption_for_the_equations_after_them():
+    text = ("# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n"
+            "$$\n2\\dot{\\omega}_1 - \\omega_2 \\omega_3 = 0\n$$\n")
+    assert (5, "holds") in verdicts(text) and not [v for _, v in verdicts(text) if v in ("typo", "fails")]
+
+
+_PRECESSION = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Top\n\n"
+               "The top precesses regularly: the nutation angle stays $\\theta = \\theta_0$, and the precession "
+               "rate $\\dot\\phi = \\omega_p$ and the spin rate $\\dot\\psi = \\omega_s$ are constant. Then\n\n$$\n{}\n$$\n")
+
+
+def test_what_the_angles_and_rates_the_text_set_give_holds():
+    for claim in ("\\omega_1=\\omega_p\\sin\\theta_0\\sin\\psi", "\\omega_3=\\omega_p\\cos\\theta_0+\\omega_s"):
+        assert verdicts(_PRECESSION.format(claim))[-1] == (9, "holds")
+
+
+def test_a_component_the_settings_do_not_give_is_never_judged_from_them():
+    out = verdicts(_PRECESSION.format("\\omega_1=\\omega_p\\sin\\theta_0\\cos\\psi"))
+    assert out[-1][0] == 9 and out[-1][1] == "unchecked"
+
+
+def test_a_torque_term_of_the_texts_own_symbol_with_a_coefficient_is_the_torque():
+    head = "# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n$$\n{}\n$$\n"
+    assert verdicts(head.format("2\\dot{\\omega}_2 + \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1] == (5, "holds")
+    assert verdicts(head.format("2\\dot{\\omega}_2 - \\omega_3 \\omega_1 = \\kappa\\cos\\beta"))[-1][1] in ("typo", "fails")
+
+
+_AIRCRAFT = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Rates\n\n"
+             "The velocities are body-frame; $p, q, r$ are the roll, pitch and yaw rates. The result:\n\n$$\n"
+             "\\begin{{bmatrix}} \\dot{{\\phi}} \\\\ \\dot{{\\theta}} \\\\ \\dot{{\\psi}} \\end{{bmatrix}} = "
+             "\\begin{{bmatrix}} 1 & \\sin\\phi\\tan\\theta & \\cos\\phi\\tan\\theta \\\\ 0 & \\cos\\phi & {s}\\sin\\phi \\\\ "
+             "0 & \\sin\\phi/\\cos\\theta & \\cos\\phi/\\cos\\theta \\end{{bmatrix}} "
+             "\\begin{{bmatrix}} p \\\\ q \\\\ r \\end{{bmatrix}}\n$$\n")
+
+
+def test_the_roll_pitch_and_yaw_rates_p_q_r_are_the_body_angular_velocity():
+    assert verdicts(_AIRCRAFT.format(s="-")) == [(9, "holds")]
+
+
+def test_a_slip_read_only_through_the_rates_names_is_never_called_correct():
+    assert verdicts(_AIRCRAFT.format(s=""))[-1][1] != "holds"
+
+
+_FRAMES = "---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Frames\n\nFor any vector:\n\n$$\nBODY\n$$\n"
+_TRANSPORT = ("\\left.\\frac{d \\vec{v}}{dt}\\right|_i = \\left.\\frac{d \\vec{v}}{dt}\\right|_b "
+              "SIGN \\vec{\\omega}_{b/i} \\times \\vec{v}")
+
+
+def test_the_transport_theorem_for_a_vector_of_the_texts_holds_in_its_frame_notation():
+    assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "+"))) == [(9, "holds")]
+
+
+def test_the_transport_theorem_with_a_wrong_sign_is_flagged():
+    assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_a_vector_the_text_defines_is_read_with_its_definition_later():
+    law = "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}"
+    body = "\\vec{F_b} = m \\left( \\frac{d\\vec{V_b}}{dt_b} SIGN \\vec{\\omega_b} \\times \\vec{V_b} \\right)"
+    text = _FRAMES.replace("BODY", law) + "\nand in the body frame\n\n$$\nLATER\n$$\n"
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "unchecked"), (15, "holds")]
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_vectors_of_the_text_that_nothing_ties_are_never_judged():
+    text = _FRAMES.replace("BODY", "\\vec{M} = \\frac{d\\vec{H}}{dt_b} + \\vec{\\omega} \\times \\vec{G}")
+    assert [v for _, v in verdicts(text)] == ["unchecked"]
+
+
+_POISSON = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Heavy body\n\n"
+            "Let $\\gamma_1, \\gamma_2, \\gamma_3$ be the body-frame components of the unit vector $\\mathbf{n}$ "
+            "of the vertical. Then\n\n$$\n\\gamma_1=\\sin\\theta\\sin\\psi,\\quad \\gamma_2=\\sin\\theta\\cos\\psi,"
+            "\\quad \\gamma_3=\\cos\\theta\n$$\n")
+
+
+def test_the_components_of_the_vertical_unit_vector_are_poissons_gamma():
+    assert verdicts(_POISSON) == [(9, "holds")] * 3
+
+
+def test_a_wrong_component_of_the_vertical_is_never_called_correct():
+    assert verdicts(_POISSON.replace("\\gamma_2=\\sin\\theta\\cos\\psi", "\\gamma_2=\\sin\\theta\\sin\\psi"))[1][1] != "holds"
+
+
+def test_poissons_equation_with_the_relative_derivative_holds_and_a_wrong_sign_is_flagged():
+    poisson = ("\\frac{\\tilde{\\mathrm{d}} \\mathbf{n}}{\\mathrm{d} t} SIGN \\boldsymbol{\\omega}\\times \\mathbf{n}"
+               "=\\mathbf{0}")
+    text = _POISSON.split("Then")[0] + "Then\n\n$$\nBODY\n$$\n"
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "+"))) == [(9, "holds")]
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_a_relation_typed_as_a_plus_sign_is_a_typo_corrected_in_the_texts_latex():
+    out = kept.check_text(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "+").replace(" = ", " + ", 1)))
+    assert [(c.line, c.verdict) for c in out] == [(9, "typo")]
+    assert out[0].correction.startswith("\\left.\\frac{d \\vec{v}}{dt}\\right|_i = \\left.\\frac")
+
+
+def test_a_sum_of_vectors_that_no_single_relation_makes_hold_is_no_claim():
+    text = _FRAMES.replace("BODY", "\\left.\\frac{d \\vec{v}}{dt}\\right|_i + \\vec{\\omega} \\times \\vec{v}")
+    assert verdicts(text) == [(9, "unchecked")]
