@@ -36,6 +36,14 @@ def test_an_inertia_matrix_with_plus_entries_keeps_the_tensors_own_entries():
     assert [v for _, v in verdicts(text)] == ["holds"]
 
 
+def test_products_of_inertia_set_to_zero_are_an_assumption_never_a_failed_claim():
+    text = (_HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n\nand the products of inertia, for example\n\n"
+            "$$\nI_{xy} = \\int xy dm\n$$\n\nThe body is symmetric, so usually $I_{xy} = I_{yz} = 0$.\n")
+    claims = kept.check_text(text)
+    assert [(c.kind, c.verdict) for c in claims if c.line == 13] == [("assumption", "unchecked")]
+    assert [c.verdict for c in claims if c.line != 13] == ["holds", "holds"]
+
+
 def test_moments_in_a_ratio_are_an_assumption_for_the_equations_after_them():
     text = ("# Case\n\nThe principal moments satisfy $I_1 = I_2 = 2I_3$. Then\n\n"
             "$$\n2\\dot{\\omega}_1 - \\omega_2 \\omega_3 = 0\n$$\n")

@@ -61,6 +61,11 @@ class AlgebraStatements:
         first = reading.members[0]
         state.head = reading.source[:first[0].end].strip()
         self.ctx.head = state.head
+        if _products_set_to_zero(reading):
+            self._add(line, piece, "assumption", "unchecked",
+                      "products of inertia set to zero: an assumption about the body (principal axes, "
+                      "e.g. by symmetry), not a consequence the derivation can check")
+            return True
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         ref = next((k for k, m in enumerate(first) if not m.skip), None)
         for k in range(1, len(first)):
@@ -149,6 +154,16 @@ def _tokens(text) -> list:
 def _named(text) -> bool:
     toks = _tokens(va.prepare(text))
     return len(toks) > 1 and toks[0].kind == "atom" and toks[1].kind == "rel"
+
+
+def _products_set_to_zero(reading) -> bool:
+    """I_xy = I_yz = 0: every member an off-diagonal entry of the inertia tensor but one literal 0."""
+    for members in reading.members:
+        names = [_entry_name(reading.source, m) for m in members]
+        zeros = [m for m, n in zip(members, names) if n is None]
+        if len(zeros) != 1 or len(members) < 2 or reading.source[zeros[0].start:zeros[0].end].strip() != "0":
+            return False
+    return True
 
 
 def _entry_name(source, member):

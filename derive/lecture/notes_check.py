@@ -556,15 +556,6 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
 def _first_relation(text: str) -> int | None:
     spans = top_relations(text)
     return spans[0][0] if spans else None
-    depth = 0
-    for tok in toks:
-        if tok.kind == "op" and tok.value in "({":
-            depth += 1
-        elif tok.kind == "op" and tok.value in ")}":
-            depth -= 1
-        elif tok.kind == "rel" and depth == 0:
-            return tok.pos
-    return None
 
 
 # ---- running and reporting ----------------------------------------------------------------------
