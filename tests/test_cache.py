@@ -167,6 +167,13 @@ def test_stale_build_folders_are_removed(cache):
     foreign = cache / ".not-ours"
     foreign.mkdir()
     os.utime(foreign, (old, old))
+    stale_lock, fresh_lock, foreign_lock = (cache / ".tiny-abcd.so.lock", cache / ".tiny-ef01.so.lock",
+                                            cache / ".mine.lock")
+    for f in (stale_lock, fresh_lock):
+        f.write_text(cache_folder.LOCK_TEXT)  # what a process killed while it held a lock leaves
+    foreign_lock.write_text("the user's own lock\n")
+    for f in (stale_lock, foreign_lock):
+        os.utime(f, (old, old))
     models = cache / "models"
     model = models / "quaternion_sym-0123abcd-4567ef"
     stale_model = models / ".quaternion_sym-0123abcd-4567ef-k2j4h5g6"  # a killed derivation
@@ -177,6 +184,36 @@ def test_stale_build_folders_are_removed(cache):
     cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert not stale.exists() and not legacy.exists() and not stale_model.exists()
     assert fresh.exists() and foreign.exists() and model.exists()
+    assert not stale_lock.exists() and fresh_lock.exists() and foreign_lock.exists()
+
+
+#: A compiler that logs each compile (not the ``--version`` the cache keys on) and is slow
+#: enough that a second process asks for the same library while the first compiles it.
+LOGGING_CC = """#!/bin/sh
+case "$*" in *--version*) ;; *) echo compile >> "$0.log"; sleep 1 ;; esac
+exec cc "$@"
+"""
+
+
+def test_two_processes_needing_one_library_build_it_once_and_both_load_it(cache, tmp_path):
+    cc = tmp_path / "logging-cc"
+    cc.write_text(LOGGING_CC)
+    cc.chmod(0o755)
+    barrier = tmp_path / "barrier"
+    barrier.mkdir()
+    code = ("import os, sys, time; from derive.runtime import cbuild; "
+            f"open(os.path.join({str(barrier)!r}, str(os.getpid())), 'w').close(); "
+            f"[time.sleep(0.01) for _ in range(3000) if len(os.listdir({str(barrier)!r})) < 2]; "
+            f"lib = cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c'); "
+            "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
+    env = dict(os.environ, DERIVE_CACHE=str(cache), CC=str(cc))
+    procs = [subprocess.Popen([sys.executable, "-c", code], env=env, cwd=ROOT, stderr=subprocess.PIPE,
+                              text=True) for _ in range(2)]
+    outcomes = [(p.wait(timeout=120), p.stderr.read()) for p in procs]
+    assert outcomes == [(0, ""), (0, "")]
+    assert (tmp_path / "logging-cc.log").read_text() == "compile\n"  # one compile, two loads
+    assert len(libraries(cache)) == 1
+    assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no lock nor build folder left
 
 
 def run(*argv):
