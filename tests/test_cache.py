@@ -195,15 +195,15 @@ exec cc "$@"
 """
 
 
-def _two_at_once(tmp_path, code: str, env: dict) -> list[tuple[int, str]]:
-    """Run ``code`` in two fresh processes that start it together (each waits for the other at a
-    barrier first); their (return code, stderr)."""
+def _two_at_once(tmp_path, setup: str, code: str, env: dict) -> list[tuple[int, str]]:
+    """Run ``setup`` then ``code`` in two fresh processes that start ``code`` together (each
+    waits for the other at a barrier in between); their (return code, stderr)."""
     barrier = tmp_path / "barrier"
     barrier.mkdir()
-    wait = (f"import os, time; open(os.path.join({str(barrier)!r}, str(os.getpid())), 'w').close(); "
-            f"[time.sleep(0.01) for _ in range(3000) if len(os.listdir({str(barrier)!r})) < 2]\n")
-    procs = [subprocess.Popen([sys.executable, "-c", wait + code], env=dict(os.environ, **env), cwd=ROOT,
-                              stderr=subprocess.PIPE, text=True) for _ in range(2)]
+    wait = (f"\nimport os, time\nopen(os.path.join({str(barrier)!r}, str(os.getpid())), 'w').close()\n"
+            f"while len(os.listdir({str(barrier)!r})) < 2:\n    time.sleep(0.01)\n")
+    procs = [subprocess.Popen([sys.executable, "-c", setup + wait + code], env=dict(os.environ, **env),
+                              cwd=ROOT, stderr=subprocess.PIPE, text=True) for _ in range(2)]
     return [(p.wait(timeout=120), p.stderr.read()) for p in procs]
 
 
@@ -211,10 +211,11 @@ def test_two_processes_needing_one_library_build_it_once_and_both_load_it(cache,
     cc = tmp_path / "logging-cc"
     cc.write_text(LOGGING_CC)
     cc.chmod(0o755)
-    code = ("import sys; from derive.runtime import cbuild\n"
-            f"lib = cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c')\n"
+    setup = "import sys; from derive.runtime import cbuild"
+    code = (f"lib = cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c')\n"
             "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
-    assert _two_at_once(tmp_path, code, {"DERIVE_CACHE": str(cache), "CC": str(cc)}) == [(0, ""), (0, "")]
+    env = {"DERIVE_CACHE": str(cache), "CC": str(cc)}
+    assert _two_at_once(tmp_path, setup, code, env) == [(0, ""), (0, "")]
     assert (tmp_path / "logging-cc.log").read_text() == "compile\n"  # one compile, two loads
     assert len(libraries(cache)) == 1
     assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no lock nor build folder left
@@ -224,16 +225,16 @@ def test_two_processes_needing_one_model_derive_it_once_and_both_read_it(cache, 
     """The derivation (SymPy) stood in for by one that logs, takes a second and writes a shipped
     model's description under the asked model's name."""
     log = tmp_path / "derivations.log"
-    code = ("import json, sys, time; from derive.runtime import cache, catalogue\n"
-            "shipped = catalogue.describe(('euler-poisson', False, ()))\n"
-            "def derive_model(key, folder):\n"
-            f"    open({str(log)!r}, 'a').write('derive\\n'); time.sleep(1)\n"
-            "    d = json.loads(shipped.source('models/euler_poisson_asym.json')); d['name'] = 'quaternion_asym_gravity'\n"
-            "    cache.write_folder(folder, {'models/quaternion_asym_gravity.json': json.dumps(d)},\n"
-            "                       'models/quaternion_asym_gravity.json')\n"
-            "catalogue.derive_model = derive_model\n"
-            "sys.exit(0 if catalogue.describe(('quaternion', False, ('gravity',))).name == 'quaternion_asym_gravity' else 5)")
-    assert _two_at_once(tmp_path, code, {"DERIVE_CACHE": str(cache)}) == [(0, ""), (0, "")]
+    setup = ("import json, sys, time; from derive.runtime import cache, catalogue\n"
+             "shipped = catalogue.describe(('euler-poisson', False, ()))\n"
+             "def derive_model(key, folder):\n"
+             f"    open({str(log)!r}, 'a').write('derive\\n'); time.sleep(1)\n"
+             "    d = json.loads(shipped.source('models/euler_poisson_asym.json')); d['name'] = 'quaternion_asym_gravity'\n"
+             "    cache.write_folder(folder, {'models/quaternion_asym_gravity.json': json.dumps(d)},\n"
+             "                       'models/quaternion_asym_gravity.json')\n"
+             "catalogue.derive_model = derive_model")
+    code = "sys.exit(0 if catalogue.describe(('quaternion', False, ('gravity',))).name == 'quaternion_asym_gravity' else 5)"
+    assert _two_at_once(tmp_path, setup, code, {"DERIVE_CACHE": str(cache)}) == [(0, ""), (0, "")]
     assert log.read_text() == "derive\n"  # one derivation, two readers
     (variant,) = (cache / "models").iterdir()  # no lock left beside it
     assert variant.name.startswith("quaternion_asym_gravity-")
