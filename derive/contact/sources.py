@@ -126,8 +126,8 @@ def source(shape: str, law: str) -> str:
 def _root(equation: sp.Expr, unknown: sp.Symbol) -> sp.Expr:
     """The solution :math:`x = -c_0 / c_1` of ``equation`` :math:`= c_0 + c_1 x = 0` for ``unknown``
     (linear in it), with :math:`c_0` and :math:`c_1` simplified apart: each is far smaller than
-    the quotient ``sp.solve`` simplifies whole, and the result is as short. Once per equation:
-    shapes whose heights differ by a constant (the point and the sphere) share it."""
+    their quotient, which SymPy simplifies many times slower to no shorter a result. Once per
+    equation: shapes whose heights differ by a constant (the point and the sphere) share it."""
     c1 = sp.diff(equation, unknown)
     if c1.has(unknown) or c1 == 0:
         raise ValueError(f"the equation is not linear in {unknown}")
