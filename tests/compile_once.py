@@ -25,7 +25,7 @@ import tempfile
 from pathlib import Path
 from typing import Callable, Iterable
 
-from derive.runtime.cache import cache_dir
+from derive.runtime.cache import cache_dir, entry_lock
 from derive.runtime.cbuild import STRICT_FLAGS, check_compiles
 
 CC = os.environ.get("CC", "cc")
@@ -71,17 +71,20 @@ def once(what: Iterable[str], inputs: dict[str, str | bytes], build: Callable[[P
     if (done / ".ok").is_file():
         return done
     root.mkdir(parents=True, exist_ok=True)
-    work = Path(tempfile.mkdtemp(prefix=".building-", dir=root))
-    try:
-        build(work)
-        (work / ".ok").write_text("compiled cleanly\n")
+    with entry_lock(root, done.name):  # two workers that need it at once: one builds, one waits
+        if (done / ".ok").is_file():
+            return done
+        work = Path(tempfile.mkdtemp(prefix=".building-", dir=root))
         try:
-            os.rename(work, done)
-        except OSError:  # another worker kept the same outcome first
-            if not (done / ".ok").is_file():
-                raise
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+            build(work)
+            (work / ".ok").write_text("compiled cleanly\n")
+            try:
+                os.rename(work, done)
+            except OSError:  # another worker kept the same outcome first
+                if not (done / ".ok").is_file():
+                    raise
+        finally:
+            shutil.rmtree(work, ignore_errors=True)
     return done
 
 

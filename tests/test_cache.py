@@ -167,6 +167,13 @@ def test_stale_build_folders_are_removed(cache):
     foreign = cache / ".not-ours"
     foreign.mkdir()
     os.utime(foreign, (old, old))
+    stale_lock, fresh_lock, foreign_lock = (cache / ".tiny-abcd.so.lock", cache / ".tiny-ef01.so.lock",
+                                            cache / ".mine.lock")
+    for f in (stale_lock, fresh_lock):
+        f.write_text(cache_folder.LOCK_TEXT)  # what a process killed while it held a lock leaves
+    foreign_lock.write_text("the user's own lock\n")
+    for f in (stale_lock, foreign_lock):
+        os.utime(f, (old, old))
     models = cache / "models"
     model = models / "quaternion_sym-0123abcd-4567ef"
     stale_model = models / ".quaternion_sym-0123abcd-4567ef-k2j4h5g6"  # a killed derivation
@@ -177,6 +184,60 @@ def test_stale_build_folders_are_removed(cache):
     cbuild.compile_library("tiny", tiny(uuid.uuid4().hex), "tiny.c")
     assert not stale.exists() and not legacy.exists() and not stale_model.exists()
     assert fresh.exists() and foreign.exists() and model.exists()
+    assert not stale_lock.exists() and fresh_lock.exists() and foreign_lock.exists()
+
+
+#: A compiler that logs each compile (not the ``--version`` the cache keys on) and is slow
+#: enough that a second process asks for the same library while the first compiles it.
+LOGGING_CC = """#!/bin/sh
+case "$*" in *--version*) ;; *) echo compile >> "$0.log"; sleep 1 ;; esac
+exec cc "$@"
+"""
+
+
+def _two_at_once(tmp_path, setup: str, code: str, env: dict) -> list[tuple[int, str]]:
+    """Run ``setup`` then ``code`` in two fresh processes that start ``code`` together (each
+    waits for the other at a barrier in between); their (return code, stderr)."""
+    barrier = tmp_path / "barrier"
+    barrier.mkdir()
+    wait = (f"\nimport os, time\nopen(os.path.join({str(barrier)!r}, str(os.getpid())), 'w').close()\n"
+            f"while len(os.listdir({str(barrier)!r})) < 2:\n    time.sleep(0.01)\n")
+    procs = [subprocess.Popen([sys.executable, "-c", setup + wait + code], env=dict(os.environ, **env),
+                              cwd=ROOT, stderr=subprocess.PIPE, text=True) for _ in range(2)]
+    return [(p.wait(timeout=120), p.stderr.read()) for p in procs]
+
+
+def test_two_processes_needing_one_library_build_it_once_and_both_load_it(cache, tmp_path):
+    cc = tmp_path / "logging-cc"
+    cc.write_text(LOGGING_CC)
+    cc.chmod(0o755)
+    setup = "import sys; from derive.runtime import cbuild"
+    code = (f"lib = cbuild.compile_library('tiny', {tiny(uuid.uuid4().hex)!r}, 'tiny.c')\n"
+            "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
+    env = {"DERIVE_CACHE": str(cache), "CC": str(cc)}
+    assert _two_at_once(tmp_path, setup, code, env) == [(0, ""), (0, "")]
+    assert (tmp_path / "logging-cc.log").read_text() == "compile\n"  # one compile, two loads
+    assert len(libraries(cache)) == 1
+    assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no lock nor build folder left
+
+
+def test_two_processes_needing_one_model_derive_it_once_and_both_read_it(cache, tmp_path):
+    """The derivation (SymPy) stood in for by one that logs, takes a second and writes a shipped
+    model's description under the asked model's name."""
+    log = tmp_path / "derivations.log"
+    setup = ("import json, sys, time; from derive.runtime import cache, catalogue\n"
+             "shipped = catalogue.describe(('euler-poisson', False, ()))\n"
+             "def derive_model(key, folder):\n"
+             f"    open({str(log)!r}, 'a').write('derive\\n'); time.sleep(1)\n"
+             "    d = json.loads(shipped.source('models/euler_poisson_asym.json')); d['name'] = 'quaternion_asym_gravity'\n"
+             "    cache.write_folder(folder, {'models/quaternion_asym_gravity.json': json.dumps(d)},\n"
+             "                       'models/quaternion_asym_gravity.json')\n"
+             "catalogue.derive_model = derive_model")
+    code = "sys.exit(0 if catalogue.describe(('quaternion', False, ('gravity',))).name == 'quaternion_asym_gravity' else 5)"
+    assert _two_at_once(tmp_path, setup, code, {"DERIVE_CACHE": str(cache)}) == [(0, ""), (0, "")]
+    assert log.read_text() == "derive\n"  # one derivation, two readers
+    (variant,) = (cache / "models").iterdir()  # no lock left beside it
+    assert variant.name.startswith("quaternion_asym_gravity-")
 
 
 def run(*argv):

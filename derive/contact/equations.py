@@ -97,6 +97,7 @@ class Contact:
                 + sum(sp.diff(rate, x) * xd for x, xd in zip(N_VEC, self.n_dot))
                 + sum(sp.diff(rate, x) * xd for x, xd in zip(OMEGA, wd)))
 
+    @functools.lru_cache(maxsize=None)  # a kernel's sliding force and its moment both read them
     def gap_coefficients(self, law: Law, moments: bool = False) -> tuple[sp.Expr, sp.Expr, sp.Matrix]:
         """(c₁, c₀, f) with φ̈ = c₁ N + c₀ while sliding under ``law``, f = N n + F_t(N, u_t);
         with ``moments`` the extensions' moment τ = N m acts too (it adds to c₁ only)."""

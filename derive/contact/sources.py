@@ -124,9 +124,14 @@ def source(shape: str, law: str) -> str:
 
 @functools.lru_cache(maxsize=None)
 def _root(equation: sp.Expr, unknown: sp.Symbol) -> sp.Expr:
-    """The solution of ``equation = 0`` for ``unknown`` (linear in it), simplified; once per
+    """The solution :math:`x = -c_0 / c_1` of ``equation`` :math:`= c_0 + c_1 x = 0` for ``unknown``
+    (linear in it), with :math:`c_0` and :math:`c_1` simplified apart: each is far smaller than
+    their quotient, which SymPy simplifies many times slower to no shorter a result. Once per
     equation: shapes whose heights differ by a constant (the point and the sphere) share it."""
-    return sp.solve(equation, unknown)[0]
+    c1 = sp.diff(equation, unknown)
+    if c1.has(unknown) or c1 == 0:
+        raise ValueError(f"the equation is not linear in {unknown}")
+    return -sp.simplify(equation.subs(unknown, 0)) / sp.simplify(c1)
 
 
 @functools.lru_cache(maxsize=None)

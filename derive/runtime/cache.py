@@ -14,12 +14,17 @@ pattern (``$DERIVE_CACHE`` may name a folder that holds the user's own files):
 
 A cache that cannot be written is replaced for the rest of the process by a private temporary
 folder (:func:`writable_cache_dir`); build folders left by a killed compile are removed once
-older than :data:`STALE_BUILD_SECONDS` (:func:`remove_stale_builds`). ``derive cache`` lists the
+older than :data:`STALE_BUILD_SECONDS` (:func:`remove_stale_builds`). Processes that need the
+same entry at once (parallel test workers) make it once: the first holds its lock
+(:func:`entry_lock`, a file holding :data:`LOCK_TEXT`, removed when the entry is made), the others
+wait and then find it made. ``derive cache`` lists the
 cache (:func:`cache_entries`); ``derive cache --clear`` empties it (:func:`clear_cache`).
 """
 from __future__ import annotations
 
 import atexit
+import contextlib
+import fcntl
 import hashlib
 import os
 import re
@@ -53,6 +58,9 @@ _KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.so")  # which stamp a library sho
 MODELS = "models"
 MANIFEST = "SHA256SUMS"  # in a derived folder: `sha256sum -c SHA256SUMS` checks it
 ABSENT = "is absent"
+# The mark of a lock file (:func:`entry_lock`): a file holding exactly this text is the cache's.
+LOCK_TEXT = "A lock of derive's compile cache: one process makes an entry, the others wait.\n"
+LOCK_SUFFIX = ".lock"
 
 
 _fallback: Path | None = None  # the private cache of this process, once the real one failed
@@ -213,6 +221,47 @@ def make_room(path: Path, folder: bool = False) -> None:
           f"{'folder' if folder else 'file'} there)")
 
 
+@contextlib.contextmanager
+def entry_lock(folder: Path, name: str):
+    """Hold the lock of making the entry ``name`` of ``folder`` (a library, a derived model):
+    a process that enters while another holds it waits until that one is done, and should then
+    look for the entry again before making it. The lock file (``.<name>.lock``, holding
+    :data:`LOCK_TEXT`) is removed on release; one left by a killed process is removed with the
+    stale build folders. Without a lock file (a folder that takes
+    none) the entry is made unlocked: at worst twice, each write being atomic."""
+    path = Path(folder) / f".{name}{LOCK_SUFFIX}"
+    try:
+        fd = os.open(path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o644)
+    except OSError:
+        yield
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        if os.fstat(fd).st_size == 0:
+            os.write(fd, LOCK_TEXT.encode())
+        yield
+    finally:
+        try:  # only the file this process locked: another may have made a new one meanwhile
+            if os.stat(path, follow_symlinks=False).st_ino == os.fstat(fd).st_ino:
+                os.unlink(path)
+        except OSError:
+            pass
+        os.close(fd)  # releases the lock
+
+
+def is_lock(path: str | os.PathLike) -> bool:
+    """Whether ``path`` is a lock file the cache wrote (:func:`entry_lock`): a regular file (not
+    a symbolic link) holding exactly :data:`LOCK_TEXT`."""
+    try:
+        st = os.lstat(path)
+        if not stat.S_ISREG(st.st_mode) or st.st_size != len(LOCK_TEXT.encode()):
+            return False
+        with open(path, "rb") as f:
+            return f.read() == LOCK_TEXT.encode()
+    except OSError:
+        return False
+
+
 def stamp_symbol(key: str) -> str:
     """The symbol that marks a library as built for ``key``."""
     return STAMP_PREFIX + key
@@ -274,9 +323,10 @@ def _name_stamp(fname: str) -> str | None:
 
 def remove_stale_builds(root: Path, age: float = STALE_BUILD_SECONDS) -> int:
     """Remove the build folders in ``root`` (and half-written model folders in its ``models``)
-    older than ``age`` seconds, left by killed compiles; returns how many were removed. Only
-    folders that carry the cache's :data:`MARKER` are touched, and a ``models`` that is not a
-    real folder is not looked into."""
+    and the lock files (:func:`is_lock`) older than ``age`` seconds, left by killed compiles;
+    returns how many were removed. Only folders that carry the cache's :data:`MARKER` and files
+    that hold :data:`LOCK_TEXT` are touched, and a ``models`` that is not a real folder is not
+    looked into."""
     removed = 0
     now = time.time()
     folders = [root]
@@ -293,7 +343,12 @@ def remove_stale_builds(root: Path, age: float = STALE_BUILD_SECONDS) -> int:
             if folder != root and not e.name.startswith("."):
                 continue
             try:
-                if now - e.stat(follow_symlinks=False).st_mtime > age and remove_marked(e.path):
+                if now - e.stat(follow_symlinks=False).st_mtime <= age:
+                    continue
+                if is_lock(e.path):
+                    os.unlink(e.path)
+                    removed += 1
+                elif remove_marked(e.path):
                     removed += 1
             except OSError:
                 pass
@@ -371,6 +426,8 @@ def cache_entries(root: Path | None = None) -> list[CacheEntry]:
             out.append(CacheEntry(name, size, f"derived models ({done} variants)"))
         elif _own_checksum(path):
             out.append(CacheEntry(name, os.lstat(path).st_size, "checksum"))
+        elif is_lock(path):
+            out.append(CacheEntry(name, os.lstat(path).st_size, "lock"))
         elif _own_library(path):
             out.append(CacheEntry(name, os.lstat(path).st_size, library_problem(path) or "ok"))
         elif is_marked(path):

@@ -5,7 +5,8 @@ A model is identified by its key (formulation, symmetric body, effects). Its gen
 * in ``generated/`` (committed, written by ``derive generate``) for the models the package ships
   (``models.CATALOGUE_KEYS`` and every model an example scene runs: ``codegen.sources.SHIPPED``), or
 * in the compile cache (``cache.cache_dir() / "models"``), derived once with SymPy the first time
-  a scene needs it, in a folder keyed by a content hash of the package's derivation sources and
+  a scene needs it (once, whatever the number of processes asking: under the folder's
+  lock), in a folder keyed by a content hash of the package's derivation sources and
   templates, so a change to the derivation invalidates it. The folder carries the cache's marker
   (``cache.MARKER``) and a ``SHA256SUMS`` of every file in it; one that does not verify (a
   file missing, truncated or changed) is derived again, once, with a one-line note.
@@ -25,7 +26,8 @@ from pathlib import Path
 
 from derive.codegen.render import GENERATED, RUNTIME_FILES, TAYLOR_INCS, TEMPLATES
 from derive.errors import note
-from derive.runtime.cache import ABSENT, models_dir, read_folder, writable_cache_dir, write_folder
+from derive.runtime.cache import (ABSENT, entry_lock, models_dir, read_folder, writable_cache_dir,
+                                  write_folder)
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import model_name
 
@@ -127,10 +129,15 @@ def _load(key) -> Description:
     if problem != ABSENT:
         print(f"note: derived model {folder} {problem}; deriving it again", file=sys.stderr,
               flush=True)
-    else:
-        note(f"deriving model {name} with SymPy (first run of this model: a few seconds; "
-             f"kept in the compile cache afterwards)")
-    derive_model(key, folder)
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    with entry_lock(folder.parent, folder.name):  # processes that need it at once derive it once
+        desc, _ = _cached(folder, name)
+        if desc is not None:  # derived by the process this one waited for
+            return desc
+        if problem == ABSENT:
+            note(f"deriving model {name} with SymPy (first run of this model: a few seconds; "
+                 f"kept in the compile cache afterwards)")
+        derive_model(key, folder)
     desc, problem = _cached(folder, name)
     if desc is None:
         raise RuntimeError(f"the model just derived into {folder} {problem}")

@@ -4,9 +4,10 @@ Builds live in a cache outside the source tree (``$DERIVE_CACHE``, default ``~/.
 keyed by the SHA-256 of the sources, the compiler (its command and ``--version``) and the flags
 (and, for a build for this CPU's vector width, :data:`BUILDS`, the CPU), so an unchanged model is
 compiled once per machine. Each build happens in a private hidden
-folder (``.build-<name>-XXXXXXXX``) and is moved into place with ``os.replace``: concurrent
-processes (parallel pytest workers) may both compile, but neither ever loads a half-written
-library.
+folder (``.build-<name>-XXXXXXXX``) and is moved into place with ``os.replace``, so no process
+ever loads a half-written library; concurrent processes (parallel pytest workers) that need the
+same library compile it once: one builds under the library's lock
+(:func:`derive.runtime.cache.entry_lock`), the others wait for it and load what it built.
 
 What in the cache is its own (a mark on every folder, a stamp and a checksum on every library),
 where it is, and how it is listed and cleared live in :mod:`derive.runtime.cache`. The cache
@@ -39,9 +40,9 @@ from pathlib import Path
 
 from derive.codegen.render import TEMPLATES
 from derive.errors import CompilerError, note
-from derive.runtime.cache import (BUILD_PREFIX, CHECKSUM, MARKER, library_problem, library_roots,
-                                  make_room, mark, remove_stale_builds, stamp_symbol, warn, why,
-                                  writable_cache_dir)
+from derive.runtime.cache import (BUILD_PREFIX, CHECKSUM, MARKER, entry_lock, library_problem,
+                                  library_roots, make_room, mark, remove_stale_builds, stamp_symbol,
+                                  warn, why, writable_cache_dir)
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
@@ -263,7 +264,8 @@ def _load(target: Path, key: str) -> tuple[ctypes.CDLL | None, str | None]:
 
 def _load_or_build(fname: str, key: str, name: str, sources: dict[str, str], mains: list[str],
                    cmd: list[str], flags: list[str]) -> ctypes.CDLL:
-    """Load the cached library ``fname`` if it verifies, else build it (once) and load that."""
+    """Load the cached library ``fname`` if it verifies, else build it (once, whatever the number
+    of processes asking: under its lock) and load that."""
     for root in library_roots():
         target = root / fname
         if os.path.lexists(target):
@@ -271,7 +273,13 @@ def _load_or_build(fname: str, key: str, name: str, sources: dict[str, str], mai
             if lib is not None:
                 return lib
             warn(f"note: cached library {target} {problem}; rebuilding it")
-    target = _build(fname, key, name, sources, mains, cmd, flags)
+    with entry_lock(writable_cache_dir(), fname):
+        target = writable_cache_dir() / fname
+        if os.path.lexists(target):  # built by the process this one waited for
+            lib, _ = _load(target, key)
+            if lib is not None:
+                return lib
+        target = _build(fname, key, name, sources, mains, cmd, flags)
     lib, problem = _load(target, key)
     if lib is None:
         raise CompilerError(f"the library just built for {name} ({target}) {problem}")
