@@ -12,6 +12,7 @@ import derive
 from derive.runtime import catalogue
 from derive.symbolic import effects
 from derive.symbolic import formulations
+from derive.symbolic.models import CATALOGUE_KEYS
 from derive.bench.internals import kernel_for
 from derive.methods import registry as solvers
 from derive.runtime.integrate import ModelKernel
@@ -287,6 +288,12 @@ def test_every_field_of_a_batch_result_is_the_single_runs(make):
 def _run(code: str, **env) -> subprocess.CompletedProcess:
     return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           cwd=ROOT, env={**os.environ, **env}, timeout=120)
+
+
+def test_every_shipped_model_is_described_by_its_key_from_generated():
+    for name, key in CATALOGUE_KEYS.items():
+        assert formulations.model_name(*key) == name
+        assert catalogue.describe(key).name == name
 
 
 def test_import_derive_imports_neither_sympy_nor_matplotlib():

@@ -172,6 +172,7 @@ CHOICES = {"auto": "let derive choose from the body, the effects and the initial
 
 #: Names of the models committed to generated/ whose name the C contract fixes.
 SPECIAL_NAMES = {
+    ("euler", False, ()): "euler_free",
     ("euler-angles", True, ("gravity",)): "heavy_top",
     ("reduced", True, ("gravity",)): "heavy_top_reduced",
     ("quaternion", False, ("gravity_general", "damping")): "rigid_body",

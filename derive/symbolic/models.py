@@ -43,7 +43,7 @@ import sympy as sp
 
 from derive.symbolic import effect_sums as sums
 from derive.symbolic import effects as fx
-from derive.symbolic.formulations import POLE_CLEARANCE, REGISTRY as FORMULATIONS, model_name
+from derive.symbolic.formulations import POLE_CLEARANCE, REGISTRY as FORMULATIONS, SPECIAL_NAMES, model_name
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
 from derive.symbolic.stability import euler_rhs
@@ -563,10 +563,5 @@ def _check_init(model: Model) -> None:
 
 #: The models committed to generated/ (the contract names euler_free and heavy_top), by name:
 #: (formulation, symmetric body, effects).
-CATALOGUE_KEYS = {
-    "euler_free": ("euler", False, ()),
-    "heavy_top": ("euler-angles", True, ("gravity",)),
-    "heavy_top_reduced": ("reduced", True, ("gravity",)),
-    "rigid_body": ("quaternion", False, ("gravity_general", "damping")),
-}
+CATALOGUE_KEYS = {name: key for key, name in SPECIAL_NAMES.items()}
 CATALOGUE = {name: (lambda key=key: build(*key)) for name, key in CATALOGUE_KEYS.items()}
