@@ -41,6 +41,19 @@ def test_what_is_not_rendered_is_not_read():
     assert verdicts(text) == [(11, "holds")]
 
 
+_T = "T = \\frac{1}{2} I_1 \\omega_1^2 + \\frac{1}{2} I_2 \\omega_2^2 + \\frac{1}{2} I_3 \\omega_3^2"
+
+
+def test_a_latex_source_comments_out_the_rest_of_a_line_after_percent():
+    text = ("\\documentclass{article}\n\\begin{document}\n% $$T = 5$$\n"
+            f"A 50\\% share: $${_T}$$ % $$T = 6$$\n\\end{{document}}\n")
+    assert verdicts(text) == [(4, "holds")]
+
+
+def test_percent_in_markdown_prose_is_text():
+    assert verdicts(f"# Notes\n\n50 % of it:\n\n$${_T}$$\n") == [(5, "holds")]
+
+
 def test_latex_environments_are_displays():
     text = ("# Euler\n\n\\begin{align}\n I_1 \\dot{\\omega}_1 &= (I_2 - I_3)\\omega_2\\omega_3 \\label{a} \\\\\n"
             " I_2 \\dot{\\omega}_2 &= (I_3 - I_1)\\omega_3\\omega_1 \\nonumber\n\\end{align}\n\n"

@@ -229,7 +229,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
     angles = declared.get("angles") or DEFAULT_ANGLES[conv]
     notes = Notes(path, conv, tuple(angles), declared)
-    body = source.rendered("\n".join([""] * skip + lines[skip:]))
+    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     notes.body = body

@@ -113,6 +113,14 @@ _COMMENT = re.compile(r"<!--.*?-->", re.S)
 _MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*math[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
 _FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
+_TEX_COMMENT = re.compile(r"((?:^|[^\\])(?:\\\\)*)(%[^\n]*)", re.M)  # an even run of \ before %
+_TEX_SOURCE = re.compile(r"\\documentclass|\\begin\{document\}")
+
+
+def latex_source(text: str, path: str = "") -> bool:
+    """Whether a notes file is a LaTeX source (``.tex``, or a document with ``\\documentclass``)
+    rather than Markdown: there ``%`` starts a comment."""
+    return str(path).endswith(".tex") or _TEX_SOURCE.search(text) is not None
 
 
 def _math_display(m: re.Match) -> str:
@@ -120,10 +128,14 @@ def _math_display(m: re.Match) -> str:
     return "$$\n" + m.group(2) + "$$"
 
 
-def rendered(text: str) -> str:
+def rendered(text: str, latex_source: bool = False) -> str:
     """The text with what a reader never sees blanked out: HTML comments, fenced code blocks and
     inline code spans (the line structure is kept). A fenced block in the language ``math``
-    (GitHub, GitLab and Documenter render it as a display) is a display, read as ``$$ … $$``."""
+    (GitHub, GitLab and Documenter render it as a display) is a display, read as ``$$ … $$``.
+    In a LaTeX source (``latex_source``), a ``%`` not escaped as ``\\%`` comments out the rest
+    of its line, as TeX reads it."""
+    if latex_source:
+        text = _TEX_COMMENT.sub(lambda m: m.group(1) + " " * len(m.group(2)), text)
     text = _COMMENT.sub(_blank, text)
     text = _MATH_FENCE.sub(_math_display, text)
     text = _FENCE.sub(_blank, text)
