@@ -48,7 +48,7 @@ from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.context import Context, Reading
-from derive.lecture.derivation import derivation
+from derive.lecture.derivation import derivation, keep
 from derive.lecture.judging import Judging
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
@@ -568,9 +568,15 @@ def _first_relation(text: str) -> int | None:
 # ---- running and reporting ----------------------------------------------------------------------
 def check_notes(path, convention: str | None = None) -> list[Claim]:
     """Read the notes file and check every formula (see the module docstring)."""
-    return Checker(nt.read_notes(path, convention)).run()
+    return _checked(Checker(nt.read_notes(path, convention)))
 
 
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
-    return Checker(nt.parse_notes(text, path, convention)).run()
+    return _checked(Checker(nt.parse_notes(text, path, convention)))
+
+
+def _checked(checker: Checker) -> list[Claim]:
+    claims = checker.run()
+    keep(checker.d)  # what the text's convention needed, for the next command
+    return claims
