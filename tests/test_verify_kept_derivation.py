@@ -4,6 +4,8 @@ command that derived everything, and a damaged, foreign or stale entry is ignore
 again. The kept values are rebuilt by a whitelist of SymPy classes, equal argument for argument
 to the derived ones."""
 import json
+import subprocess
+import sys
 
 import pytest
 import sympy as sp
@@ -132,3 +134,14 @@ def test_the_kept_derivation_grows_and_the_cache_clears_it(tmp_path, monkeypatch
     assert kept.decode(kept.encode(x)) is x
     cache_folder.clear_cache(tmp_path)
     assert not tmp_path.exists() or not list(tmp_path.rglob(kept.FILE))
+
+
+def test_derive_verify_starts_without_the_registries_only_other_commands_list():
+    code = ("import sys, contextlib, io\nfrom derive import cli\n"
+            "with contextlib.redirect_stdout(io.StringIO()) as out:\n    cli.main(['verify', '--help'])\n"
+            "assert '--convention' in out.getvalue()\n"
+            "print(sorted({'derive.sim.scene', 'derive.sweeps.measures', 'derive.methods.registry'} & set(sys.modules)))\n"
+            "with contextlib.redirect_stdout(io.StringIO()) as out:\n    cli.main(['simulate', '--help'])\n"
+            "print('rk4' in out.getvalue())\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert done.stdout.splitlines() == ["[]", "True"]
