@@ -91,12 +91,12 @@ def test_a_kept_derivation_of_another_convention_key_or_form_is_not_read(tmp_pat
     monkeypatch.setenv("DERIVE_CACHE", str(tmp_path))
     d = dv.Derivation("z-x-z")
     kept.write("zxz", {"top.lagrangian": d.top.lagrangian})
-    assert kept.read("zxz") == {"top.lagrangian": d.top.lagrangian}
+    assert kept.read("zxz") == ({"top.lagrangian": d.top.lagrangian}, {"top.lagrangian"})
     folder = _folder(tmp_path / cache_folder.MODELS)
     data = json.loads((folder / kept.FILE).read_text())
     change(data)
     cache_folder.write_folder(folder, {kept.FILE: json.dumps(data)}, kept.FILE, replace=True)
-    assert kept.read("zxz") == {}
+    assert kept.read("zxz") == ({}, set())
 
 
 def test_every_derived_quantity_is_kept_as_derived():
@@ -104,9 +104,12 @@ def test_every_derived_quantity_is_kept_as_derived():
     computed = (d.omega, d.frames, d.top.energy, d.top.accelerations, d.reduction.rates_from_momenta,
                 d.reduction.effective_potential, d.reduction.beta_acceleration, d.sleeping.condition,
                 d.kinetic, d.spin_frequencies)
+    assert d.along.ok
     values = d.derived()
     assert all(any(v is c for v in values.values()) for c in computed)
-    assert {"d.omega", "top.lagrangian", "reduction.beta_acceleration", "sleeping.condition"} <= set(values)
+    assert values["along.substitutions"] == d.along.substitutions
+    assert {"d.omega", "top.lagrangian", "reduction.beta_acceleration", "sleeping.condition",
+            "along.substitutions"} <= set(values)
     for path, value in values.items():
         back = kept.decode(json.loads(json.dumps(kept.encode(value))))
         assert type(back) is type(value) and back == value and sp.srepr(back) == sp.srepr(value), path
@@ -114,6 +117,11 @@ def test_every_derived_quantity_is_kept_as_derived():
     again.seed({path: kept.decode(kept.encode(v)) for path, v in values.items()})
     assert again.derived().keys() == values.keys()
     assert again.top.accelerations == d.top.accelerations and again.sleeping.condition == d.sleeping.condition
+    assert again.along.ok and again.along.substitutions == d.along.substitutions
+    assert not dv.Derivation("z-y-x").along.ok  # a Tait–Bryan sequence: kept as not applying
+    tait_bryan = dv.Derivation("z-y-x")
+    tait_bryan.seed({"along.substitutions": kept.decode(kept.encode(None))})
+    assert "along" in vars(tait_bryan) and not tait_bryan.along.ok
 
 
 def test_a_value_outside_the_whitelist_is_left_out(tmp_path, monkeypatch):
@@ -122,7 +130,8 @@ def test_a_value_outside_the_whitelist_is_left_out(tmp_path, monkeypatch):
     with pytest.raises(kept.NotKept):
         kept.encode(sp.Function("f")(t))
     kept.write("zyz", {"d.omega": sp.Matrix([t, 1, sp.Rational(1, 2)]), "d.kinetic": sp.Function("f")(t)})
-    assert kept.read("zyz") == {"d.omega": sp.Matrix([t, 1, sp.Rational(1, 2)])}
+    # Known as left out: a later command does not write it again.
+    assert kept.read("zyz") == ({"d.omega": sp.Matrix([t, 1, sp.Rational(1, 2)])}, {"d.omega", "d.kinetic"})
 
 
 def test_the_kept_derivation_grows_and_the_cache_clears_it(tmp_path, monkeypatch):
@@ -130,7 +139,7 @@ def test_the_kept_derivation_grows_and_the_cache_clears_it(tmp_path, monkeypatch
     x = sp.Symbol("x", positive=True)
     kept.write("zxz", {"d.omega": sp.Matrix([x])})
     kept.write("zxz", {"d.omega": sp.Matrix([x]), "d.kinetic": x**2 / 2})
-    assert kept.read("zxz") == {"d.omega": sp.Matrix([x]), "d.kinetic": x**2 / 2}
+    assert kept.read("zxz")[0] == {"d.omega": sp.Matrix([x]), "d.kinetic": x**2 / 2}
     assert kept.decode(kept.encode(x)) is x
     cache_folder.clear_cache(tmp_path)
     assert not tmp_path.exists() or not list(tmp_path.rglob(kept.FILE))

@@ -8,7 +8,7 @@ keeps what this one added, in the compile cache, `derive.lecture.derivation_kept
 column as a linear form in ê₁ ê₂ ê₃) and `families` (the quantities one slip of a label may swap).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.derivation_kept`,
-:mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.orientation`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import sympy as sp
 
 from derive.lecture import derivation_kept as kept
 from derive.lecture import latex as lx
+from derive.lecture.orientation import AlongMomentum
 from derive.symbolic import rotations as rot
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, heavy_symmetric_top, kinetic_energy
 from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
@@ -44,6 +45,11 @@ class Derivation:
             out[lx.PRIMED[k]] = linear(rot.passive(self.conv.axes[2], rot.gamma) * rot.unit(axis))
             out[lx.INERTIAL[k]] = linear(R.T * rot.unit(axis))
         return out
+
+    @functools.cached_property
+    def along(self) -> AlongMomentum:
+        """The orientation with 𝐋 along the fixed first axis (`derive.lecture.orientation`)."""
+        return AlongMomentum(self.conv, self.omega)
 
     @functools.cached_property
     def top(self):
@@ -143,10 +149,12 @@ class Derivation:
         out = {}
         for holder, obj in self._holders().items():
             for name in _cached_names(type(obj)):
-                if name in vars(obj) and name not in ("top", "reduction", "sleeping"):
+                if name in vars(obj) and name not in _PARTS:
                     out[f"{holder}.{name}"] = vars(obj)[name]
         if "top" in vars(self):
             out["top.lagrangian"] = self.top.lagrangian
+        if "along" in vars(self):
+            out["along.substitutions"] = self.along.substitutions
         return out
 
     def seed(self, values: dict) -> None:
@@ -155,12 +163,19 @@ class Derivation:
             top = EulerLagrange(values["top.lagrangian"])
             reduction = Reduction(top)
             vars(self).update(top=top, reduction=reduction, sleeping=SleepingTop(reduction))
+        along = values.get("along.substitutions", ())
+        if along is None or (isinstance(along, tuple) and len(along) == 2
+                             and all(isinstance(part, dict) for part in along)):
+            vars(self)["along"] = AlongMomentum.of(along)
         holders = self._holders()
         for path, value in values.items():
             holder, _, name = path.partition(".")
             obj = holders.get(holder)
-            if obj is not None and name in _cached_names(type(obj)) and name not in ("top", "reduction", "sleeping"):
+            if obj is not None and name in _cached_names(type(obj)) and name not in _PARTS:
                 vars(obj)[name] = value
+
+
+_PARTS = ("top", "reduction", "sleeping", "along")  # objects, kept by their own quantities
 
 
 @functools.cache
@@ -172,9 +187,9 @@ def _cached_names(cls) -> tuple:
 @functools.cache
 def derivation(convention: str) -> Derivation:
     d = Derivation(convention)
-    loaded = kept.read(d.conv.name)
-    d.seed(loaded)
-    _loaded[d.conv.name] = set(loaded)
+    values, known = kept.read(d.conv.name)
+    d.seed(values)
+    _loaded[d.conv.name] = known
     return d
 
 

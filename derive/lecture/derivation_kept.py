@@ -60,6 +60,8 @@ def encode(obj):
     """A JSON-ready tree of ``obj``: an expression of whitelisted classes, a matrix, or a tuple,
     list or dict of those; raises `NotKept` for anything else."""
     kind = type(obj)
+    if obj is None:
+        return ["none"]
     if kind is sp.Symbol:
         # The assumptions the symbol was made with, so that decoding returns SymPy's own (cached)
         # symbol object, the very one derive's modules hold.
@@ -86,6 +88,8 @@ def decode(tree):
     if not isinstance(tree, list) or not tree or not isinstance(tree[0], str):
         raise ValueError("not a kept value")
     tag, rest = tree[0], tree[1:]
+    if tag == "none" and not rest:
+        return None
     if tag == "symbol":
         name, assumptions = rest
         if not isinstance(name, str) or not isinstance(assumptions, dict) or \
@@ -152,22 +156,27 @@ def _folder(sequence: str) -> Path:
     return models_dir() / f"{PREFIX}{sequence}-{source_key()[:24]}"
 
 
-def read(sequence: str) -> dict:
-    """{"holder.name": value} kept for the convention ``sequence`` (``"zxz"``) under this
-    :func:`source_key`; {} when nothing whole is kept."""
+def read(sequence: str) -> tuple[dict, set]:
+    """({"holder.name": value} kept for the convention ``sequence`` (``"zxz"``) under this
+    :func:`source_key`, the names of those and of the values left out as outside the whitelist);
+    ({}, set()) when nothing whole is kept."""
     try:
         folder = _folder(sequence)
         files, _ = read_folder(folder, FILE)
         if files is None:
-            return {}
+            return {}, set()
         data = json.loads(files[FILE].decode("utf-8"))
         if data.get("format") != FORMAT or data.get("convention") != sequence or data.get("key") != source_key():
-            return {}
+            return {}, set()
         values = {path: decode(tree) for path, tree in data["values"].items() if isinstance(path, str)}
-        os.utime(folder)  # just used: pruning keeps the most recently used
+        left_out = {path for path in data["left_out"] if isinstance(path, str)}
     except (OSError, ValueError, TypeError, KeyError, AttributeError, RecursionError):
-        return {}
-    return values
+        return {}, set()
+    try:
+        os.utime(folder)  # just used: pruning keeps the most recently used
+    except OSError:
+        pass
+    return values, set(values) | left_out
 
 
 def write(sequence: str, values: dict) -> None:
@@ -177,9 +186,10 @@ def write(sequence: str, values: dict) -> None:
     for path, value in values.items():
         try:
             kept[path] = encode(value)
-        except NotKept:
+        except (NotKept, RecursionError):
             pass
-    text = json.dumps({"format": FORMAT, "convention": sequence, "key": source_key(), "values": kept},
+    text = json.dumps({"format": FORMAT, "convention": sequence, "key": source_key(), "values": kept,
+                       "left_out": sorted(set(values) - set(kept))},
                       separators=(",", ":"), sort_keys=True)
     try:
         folder = _folder(sequence)

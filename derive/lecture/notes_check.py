@@ -55,7 +55,6 @@ from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, su
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.coordinate_statements import CoordinateStatements
-from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
@@ -490,7 +489,7 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
         stating = every & set(rot.ANGLES[1:]) and not every & (set(rot.RATES) | set(ACCELS))
         if self.ctx.orientation is None and not stating:
             return None
-        along = along_momentum(self.notes.convention, sp.ImmutableMatrix(self.d.omega))
+        along = self.d.along
         if not along.ok:
             return None
         for f in targets:
