@@ -72,13 +72,16 @@ def test_a_second_command_reads_the_kept_derivation_and_gives_the_same_verdicts(
     assert command() == first and derived == ["zxz"]  # the top was read, not derived
 
 
-def test_a_damaged_kept_derivation_is_derived_again_and_healed(fresh):
+def test_a_damaged_kept_derivation_is_derived_again_and_healed(fresh, capsys):
     command, derived, models = fresh
     first = command()
     data = _folder(models) / kept.FILE
     data.write_text(data.read_text().replace("beta", "betb"))  # no longer matches its manifest
     assert command() == first and len(derived) == 2
+    assert capsys.readouterr().err == (f"note: kept derivation {data.parent} has a damaged {kept.FILE} "
+                                       "(it does not match its checksum); deriving it again\n")
     assert command() == first and len(derived) == 2  # healed: written again and read back
+    assert capsys.readouterr().err == ""
 
 
 @pytest.mark.parametrize("change", [
@@ -87,7 +90,7 @@ def test_a_damaged_kept_derivation_is_derived_again_and_healed(fresh):
     lambda d: d["values"].update({"top.lagrangian": ["__import__", [["symbol", "os", {}]]]}),
     lambda d: d["values"].update({"top.lagrangian": ["rational", 1, "2"]}),
 ])
-def test_a_kept_derivation_of_another_convention_key_or_form_is_not_read(tmp_path, monkeypatch, change):
+def test_a_kept_derivation_of_another_convention_key_or_form_is_not_read(tmp_path, monkeypatch, capsys, change):
     monkeypatch.setenv("DERIVE_CACHE", str(tmp_path))
     d = dv.Derivation("z-x-z")
     kept.write("zxz", {"top.lagrangian": d.top.lagrangian})
@@ -97,6 +100,7 @@ def test_a_kept_derivation_of_another_convention_key_or_form_is_not_read(tmp_pat
     change(data)
     cache_folder.write_folder(folder, {kept.FILE: json.dumps(data)}, kept.FILE, replace=True)
     assert kept.read("zxz") == ({}, set())
+    assert capsys.readouterr().err.startswith(f"note: kept derivation {folder} ")
 
 
 def test_every_derived_quantity_is_kept_as_derived():

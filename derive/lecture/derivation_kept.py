@@ -1,7 +1,8 @@
 """A convention's derived quantities kept in the compile cache between commands.
 
 `derive verify NOTES.md` derives its text's convention on first use (`derive.lecture.derivation`:
-ω̃, the frames, the heavy top's Lagrangian and energy, Routh's reduction, the sleeping top). What
+ω̃, the frames, the heavy top's Lagrangian and energy, Routh's reduction, the sleeping top, the
+orientation along 𝐋). What
 one command derived is kept in ``<cache>/models/derivation-<sequence>-<key>/derivation.json``
 (:func:`derive.runtime.cache.models_dir`, a marked folder with a SHA-256 manifest, written
 atomically by :func:`derive.runtime.cache.write_folder`) and given to the next command of the same
@@ -10,8 +11,8 @@ convention, which then derives only what is not there yet and keeps the union.
 The key (:func:`source_key`) is the SHA-256 of derive's own source files, Python's version, the
 SymPy and mpmath versions and SymPy's ground types and settings: any change to what a
 derivation runs names another folder. A folder that is damaged (its manifest does not match),
-unreadable or not of this key and convention is ignored and written again; keeping is a saving
-and never a reason for a command to fail or to print anything.
+unreadable or not of this key and convention is ignored, with a one-line note on stderr, and
+written again; keeping is a saving and never a reason for a command to fail.
 
 The format is JSON with each expression written as a tree of a whitelist of SymPy's classes
 (:func:`encode`, :func:`decode`), rebuilt unevaluated in the order written, so that the rebuilt
@@ -36,7 +37,7 @@ import mpmath
 import sympy as sp
 from sympy.external.gmpy import GROUND_TYPES
 
-from derive.runtime.cache import is_marked, models_dir, read_folder, remove_marked, write_folder
+from derive.runtime.cache import ABSENT, is_marked, models_dir, read_folder, remove_marked, write_folder
 
 #: The kept folders are named ``<PREFIX><sequence>-<key>``; the ``KEEP`` most recently used stay
 #: (enough for the twelve sequences of two checkouts sharing one cache).
@@ -160,23 +161,30 @@ def read(sequence: str) -> tuple[dict, set]:
     """({"holder.name": value} kept for the convention ``sequence`` (``"zxz"``) under this
     :func:`source_key`, the names of those and of the values left out as outside the whitelist);
     ({}, set()) when nothing whole is kept."""
+    folder = _folder(sequence)
     try:
-        folder = _folder(sequence)
-        files, _ = read_folder(folder, FILE)
+        files, problem = read_folder(folder, FILE)
         if files is None:
-            return {}, set()
+            return _again(folder, problem)
         data = json.loads(files[FILE].decode("utf-8"))
         if data.get("format") != FORMAT or data.get("convention") != sequence or data.get("key") != source_key():
-            return {}, set()
+            return _again(folder, "is of another convention or key")
         values = {path: decode(tree) for path, tree in data["values"].items() if isinstance(path, str)}
         left_out = {path for path in data["left_out"] if isinstance(path, str)}
     except (OSError, ValueError, TypeError, KeyError, AttributeError, RecursionError):
-        return {}, set()
+        return _again(folder, f"has an unreadable {FILE}")
     try:
         os.utime(folder)  # just used: pruning keeps the most recently used
     except OSError:
         pass
     return values, set(values) | left_out
+
+
+def _again(folder: Path, problem: str) -> tuple[dict, set]:
+    """Nothing kept; a note on stderr when something damaged stands there (absent: silence)."""
+    if problem != ABSENT:
+        print(f"note: kept derivation {folder} {problem}; deriving it again", file=sys.stderr, flush=True)
+    return {}, set()
 
 
 def write(sequence: str, values: dict) -> None:
