@@ -344,10 +344,21 @@ def _bytes(n: int) -> str:
         n /= 1000
 
 
-def parser() -> argparse.ArgumentParser:
-    from derive.methods.registry import REFERENCE_METHODS
-    from derive.sim.scene import FORMULATIONS, METHODS
-    from derive.sweeps.measures import REGISTRY as MEASURES
+#: The commands whose help lists the methods, formulations or measures (their registries load
+#: NumPy, the scene reader and the C toolchain's modules: the other commands' parsers skip them).
+LISTING_COMMANDS = ("simulate", "export", "sweep")
+
+
+def parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The command line's parser. With ``command`` (the first word of the command line) other
+    than one of :data:`LISTING_COMMANDS`, the registries only those commands' help lists are not
+    loaded (``derive verify`` starts without them); their parsers are not the one that runs."""
+    if command is None or command in LISTING_COMMANDS:
+        from derive.methods.registry import REFERENCE_METHODS
+        from derive.sim.scene import FORMULATIONS, METHODS
+        from derive.sweeps.measures import REGISTRY as MEASURES
+    else:
+        REFERENCE_METHODS, FORMULATIONS, METHODS, MEASURES = (), {}, {}, {}
 
     p = _Parser(prog="derive", description=__doc__.splitlines()[0])
     p.add_argument("--version", action=_Version, nargs=0, help="print the version and exit")
@@ -545,7 +556,8 @@ def _fail(message: str, code: int) -> int:
 
 
 def _main(argv) -> int:
-    p = parser()
+    words = sys.argv[1:] if argv is None else list(argv)
+    p = parser(words[0] if words and not words[0].startswith("-") else None)
     try:
         args = p.parse_args(argv)
     except SystemExit as exc:  # argparse exits 2 on bad flags already; keep its code

@@ -3,10 +3,12 @@ heavy symmetric top (its Lagrangian, momenta, Routh's reduction, the sleeping to
 equations and the named quantities in the forms a text may write them.
 
 Takes: an angle sequence (`derive.symbolic.rotations.convention`). Gives: `derivation(conv)`
-(cached `Derivation`), `linear` (a column as a linear form in ê₁ ê₂ ê₃) and `families` (the
-quantities one slip of a label may swap).
+(cached `Derivation`, starting from what earlier commands derived for the convention: `keep`
+keeps what this one added, in the compile cache, `derive.lecture.derivation_kept`), `linear` (a
+column as a linear form in ê₁ ê₂ ê₃) and `families` (the quantities one slip of a label may swap).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.derivation_kept`,
+:mod:`derive.lecture.orientation`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -14,9 +16,11 @@ import functools
 
 import sympy as sp
 
+from derive.lecture import derivation_kept as kept
 from derive.lecture import latex as lx
+from derive.lecture.orientation import AlongMomentum
 from derive.symbolic import rotations as rot
-from derive.symbolic.lagrangian import I1, I2, I3, Reduction, heavy_symmetric_top, kinetic_energy
+from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, heavy_symmetric_top, kinetic_energy
 from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
 
 
@@ -43,6 +47,11 @@ class Derivation:
         return out
 
     @functools.cached_property
+    def along(self) -> AlongMomentum:
+        """The orientation with 𝐋 along the fixed first axis (`derive.lecture.orientation`)."""
+        return AlongMomentum(self.conv, self.omega)
+
+    @functools.cached_property
     def top(self):
         return heavy_symmetric_top(self.conv)
 
@@ -67,6 +76,11 @@ class Derivation:
         return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
 
     def frequencies(self):
+        return self.spin_frequencies
+
+    @functools.cached_property
+    def spin_frequencies(self) -> tuple:
+        """(Ω₁, Ω₂) of Euler's equations linearised about a steady spin ω̃₃ about axis 3."""
         o1, o2 = SteadySpin(2).frequencies
         return o1.subs(omega0, lx.W[2]), o2.subs(omega0, lx.W[2])
 
@@ -117,14 +131,77 @@ class Derivation:
             return [self.frequencies()[1]]
         return []
 
-    @functools.lru_cache(maxsize=None)
     def top_kinetic(self):
+        return self.kinetic
+
+    @functools.cached_property
+    def kinetic(self):
+        """T = ½ Σ Iᵢ ω̃ᵢ² in the angles and rates (three distinct moments)."""
         return kinetic_energy(convention=self.conv)
+
+    # -- kept between commands (derive.lecture.derivation_kept)
+    def _holders(self) -> dict:
+        """{name: object} of this derivation and the parts of it built so far."""
+        return {"d": self, **{name: vars(self)[name] for name in ("top", "reduction", "sleeping") if name in vars(self)}}
+
+    def derived(self) -> dict:
+        """{"holder.name": value} of every quantity computed so far (computing none)."""
+        out = {}
+        for holder, obj in self._holders().items():
+            for name in _cached_names(type(obj)):
+                if name in vars(obj) and name not in _PARTS:
+                    out[f"{holder}.{name}"] = vars(obj)[name]
+        if "top" in vars(self):
+            out["top.lagrangian"] = self.top.lagrangian
+        if "along" in vars(self):
+            out["along.substitutions"] = self.along.substitutions
+        return out
+
+    def seed(self, values: dict) -> None:
+        """Take ``values`` (as `derived` gives them) as computed; unknown names are ignored."""
+        if isinstance(values.get("top.lagrangian"), sp.Expr):
+            top = EulerLagrange(values["top.lagrangian"])
+            reduction = Reduction(top)
+            vars(self).update(top=top, reduction=reduction, sleeping=SleepingTop(reduction))
+        along = values.get("along.substitutions", ())
+        if along is None or (isinstance(along, tuple) and len(along) == 2
+                             and all(isinstance(part, dict) for part in along)):
+            vars(self)["along"] = AlongMomentum.of(along)
+        holders = self._holders()
+        for path, value in values.items():
+            holder, _, name = path.partition(".")
+            obj = holders.get(holder)
+            if obj is not None and name in _cached_names(type(obj)) and name not in _PARTS:
+                vars(obj)[name] = value
+
+
+_PARTS = ("top", "reduction", "sleeping", "along")  # objects, kept by their own quantities
+
+
+@functools.cache
+def _cached_names(cls) -> tuple:
+    return tuple(name for klass in cls.__mro__ for name, attr in vars(klass).items()
+                 if isinstance(attr, functools.cached_property))
 
 
 @functools.cache
 def derivation(convention: str) -> Derivation:
-    return Derivation(convention)
+    d = Derivation(convention)
+    values, known = kept.read(d.conv.name)
+    d.seed(values)
+    _loaded[d.conv.name] = known
+    return d
+
+
+_loaded: dict = {}  # {sequence: the names the cache holds, or that it cannot hold}
+
+
+def keep(d: Derivation) -> None:
+    """Keep what ``d`` derived in the compile cache, when it derived anything not read from there."""
+    values = d.derived()
+    if not set(values) <= _loaded.get(d.conv.name, set()):
+        kept.write(d.conv.name, values)
+        _loaded[d.conv.name] = set(values)  # what was not kept is not tried again in this process
 
 
 def linear(col) -> sp.Expr:

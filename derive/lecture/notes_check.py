@@ -48,14 +48,13 @@ from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.context import Context, Reading
-from derive.lecture.derivation import derivation
+from derive.lecture.derivation import derivation, keep
 from derive.lecture.judging import Judging
 from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.coordinate_statements import CoordinateStatements
-from derive.lecture.orientation import along_momentum
 from derive.lecture.rereading import Rereading
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
@@ -492,7 +491,7 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
         stating = every & set(rot.ANGLES[1:]) and not every & (set(rot.RATES) | set(ACCELS))
         if self.ctx.orientation is None and not stating:
             return None
-        along = along_momentum(self.notes.convention, sp.ImmutableMatrix(self.d.omega))
+        along = self.d.along
         if not along.ok:
             return None
         for f in targets:
@@ -561,9 +560,15 @@ def _first_relation(text: str) -> int | None:
 # ---- running and reporting ----------------------------------------------------------------------
 def check_notes(path, convention: str | None = None) -> list[Claim]:
     """Read the notes file and check every formula (see the module docstring)."""
-    return Checker(nt.read_notes(path, convention)).run()
+    return _checked(Checker(nt.read_notes(path, convention)))
 
 
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
-    return Checker(nt.parse_notes(text, path, convention)).run()
+    return _checked(Checker(nt.parse_notes(text, path, convention)))
+
+
+def _checked(checker: Checker) -> list[Claim]:
+    claims = checker.run()
+    keep(checker.d)  # what the text's convention needed, for the next command
+    return claims

@@ -13,8 +13,6 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
-import functools
-
 import sympy as sp
 
 from derive.lecture import latex as lx
@@ -52,6 +50,21 @@ class AlongMomentum:
         rates = M.LUsolve(sp.Matrix(lx.W))
         self.rates = {r: sp.simplify(v) for r, v in zip(rot.RATES, rates)}
 
+    @classmethod
+    def of(cls, substitutions: tuple | None) -> AlongMomentum:
+        """The orientation from its `substitutions` (``(trig, rates)``, None where it does not
+        apply), as computed for the convention before."""
+        self = cls.__new__(cls)
+        self.ok = substitutions is not None
+        if self.ok:
+            self.trig, self.rates = substitutions
+        return self
+
+    @property
+    def substitutions(self) -> tuple | None:
+        """(trig, rates): what `apply` substitutes; None where the orientation does not apply."""
+        return (self.trig, self.rates) if self.ok else None
+
     def apply(self, v):
         """v with the rates and the second and third angles written in ω̃ (the first angle stays)."""
         v = sp.sympify(v).xreplace(self.rates)
@@ -61,8 +74,3 @@ class AlongMomentum:
     def angles_left(self, v) -> bool:
         """Does v still hold the second or third angle outside sin and cos (θ alone, sin 2θ)?"""
         return bool(sp.sympify(v).free_symbols & {rot.ANGLES[1], rot.ANGLES[2]})
-
-
-@functools.cache
-def along_momentum(convention: str, omega: sp.ImmutableMatrix) -> AlongMomentum:
-    return AlongMomentum(rot.convention(convention), sp.Matrix(omega))

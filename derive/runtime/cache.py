@@ -516,12 +516,13 @@ def read_folder(folder: Path, required: str) -> tuple[dict[str, bytes] | None, s
     return files, ""
 
 
-def write_folder(folder: Path, files: dict[str, str], required: str) -> None:
+def write_folder(folder: Path, files: dict[str, str], required: str, replace: bool = False) -> None:
     """Write ``files`` ({relative path: text}, UTF-8) with the cache's marker and a
     :data:`MANIFEST` of them into ``folder``, atomically: a reader sees no folder or the whole
     one. A damaged folder already there is replaced: removed if the cache made it (marked),
     else moved aside (:func:`make_room`); a whole one (another process got there first, with
-    the same content, the name being a hash of it) is kept."""
+    the same content, the name being a hash of it) is kept, unless ``replace`` (a folder whose
+    content grows under one name): then a whole one the cache made is replaced too."""
     folder.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
     try:
@@ -539,7 +540,8 @@ def write_folder(folder: Path, files: dict[str, str], required: str) -> None:
                 os.replace(tmp, folder)
                 return
             except OSError:
-                if read_folder(folder, required)[0] is not None or attempt:
+                if attempt or (read_folder(folder, required)[0] is not None
+                               and not (replace and is_marked(folder))):
                     return
                 # A damaged folder in the way: the cache's own goes (into a marked trash
                 # first, so the name is free at once), anything else is moved aside.
