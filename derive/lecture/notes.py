@@ -29,6 +29,7 @@ from pathlib import Path
 
 from derive.errors import SceneError
 from derive.lecture import names as nm
+from derive.lecture import notebook
 from derive.lecture import source
 
 
@@ -327,7 +328,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
 
 
 def read_notes(path, convention: str | None = None) -> Notes:
-    """Read a notes file (UTF-8 Markdown). Unreadable → `SceneError` naming the file."""
+    """Read a notes file (UTF-8 Markdown, a LaTeX source, or a Jupyter notebook's Markdown cells:
+    `derive.lecture.notebook`). Unreadable → `SceneError` naming the file."""
     p = Path(path)
     try:
         text = p.read_text(encoding="utf-8")
@@ -341,6 +343,8 @@ def read_notes(path, convention: str | None = None) -> Notes:
         raise ValidationError(str(path), "file", err.strerror or "cannot be read") from None
     if "\x00" in text:
         raise ValidationError(str(path), "file", "binary, not Markdown text")
+    if p.suffix.lower() == ".ipynb":
+        text = notebook.markdown(text, str(path))
     return parse_notes(text, str(path), convention)
 
 
