@@ -7,7 +7,7 @@ exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `co
 as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
 power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import mp_values
 from derive.lecture import zero_test as zt
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES
@@ -83,8 +84,8 @@ def _real_zero(lhs, rhs, seed):
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
-    f = sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0)
-    radicands = sp.lambdify(symbols, bases, modules="mpmath", docstring_limit=0)
+    f = mp_values.evaluator(symbols, exprs)
+    radicands = mp_values.evaluator(symbols, bases)
     rng = random.Random(seed)
     n, used = len(lhs), 0
     for _ in range(300):
