@@ -56,3 +56,13 @@ def test_the_screen_never_calls_an_identity_non_zero_and_the_symbolic_steps_stil
     assert not any(zt._nonzero_somewhere(d) for d in identities)
     assert not zt._nonzero_somewhere(sp.sqrt(x + 2 * sp.sqrt(x) + 1) - sp.sqrt(x) - 1)
     assert [zt.symbolic_zero(d) for d in identities] == ["simplify", "trig_reduce", "simplify"]
+
+
+def test_the_quick_screen_of_candidates_tells_equal_sides_from_a_slip_with_or_without_the_walk():
+    from derive.lecture.comparing import quick_equal
+    f = sp.Function("f")
+    assert quick_equal(sp.sqrt(x) * sp.cos(a) ** 2, sp.sqrt(x) - sp.sqrt(x) * sp.sin(a) ** 2)
+    assert not quick_equal(sp.sqrt(x) * sp.cos(a) ** 2, sp.sqrt(x) - sp.sqrt(x) * sp.sin(a) ** 2 + x / 10**6)
+    assert not quick_equal(JacobiSN(x, y) ** 2, 1 - JacobiSN(x, y) ** 2)
+    # a function with no values is not walked, and evalf gives no number: not screened in
+    assert not quick_equal(f(x) * 2, 3 * f(x) - f(x))

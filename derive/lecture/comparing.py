@@ -124,7 +124,9 @@ def _shape(m) -> str:
 
 def quick_equal(a, b) -> bool:
     """A fast float test (two random points) used to screen the single-edit candidates, memoised
-    (the same candidate recurs across the cases and searches of one text)."""
+    (the same candidate recurs across the cases and searches of one text); the sides evaluated by
+    mpmath's walk of `derive.lecture.mp_values` at 30 digits, or by SymPy's evalf to 20 where the
+    walk does not read them."""
     a, b = (sp.ImmutableMatrix(x) if isinstance(x, sp.MatrixBase) else x for x in (a, b))
     try:
         hash((a, b))
@@ -144,17 +146,27 @@ def _quick_equal(a, b) -> bool:
     if any(zt.surely_nonzero(x - y) for x, y in zip(A, B)):
         return False
     syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
+    walk = mp_values.walker(syms, [*A, *B])
     rng = random.Random(7)
     for _ in range(2):
         point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
         try:
-            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
-            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+            if walk is None:
+                d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
+                size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+            else:
+                with mpmath.workdps(_QUICK_DIGITS):
+                    values = walk(*(mpmath.mpf(float(v)) for v in point.values()))
+                    d = [complex(x - y) for x, y in zip(values[:len(A)], values[len(A):])]
+                    size = [abs(complex(x)) + 1 for x in values[:len(A)]]
         except (TypeError, ValueError, ZeroDivisionError):
             return False
         if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
             return False
     return True
+
+
+_QUICK_DIGITS = 30
 
 
 # ---- single edits ------------------------------------------------------------------------------
