@@ -75,7 +75,12 @@ class Jet:
     def __mul__(self, other):
         if isinstance(other, np.ndarray):
             return NotImplemented
-        a, b = self.a, Jet.lift(other).a
+        a, b = self.a, other.a if isinstance(other, Jet) else Jet.lift(other).a
+        if ORDER == 4:            # the Cauchy product below, written out (same terms, same order)
+            a0, a1, a2, a3 = a
+            b0, b1, b2, b3 = b
+            return Jet._of([a0 * b0, a0 * b1 + a1 * b0, a0 * b2 + a1 * b1 + a2 * b0,
+                            a0 * b3 + a1 * b2 + a2 * b1 + a3 * b0])
         out = []
         for n in range(ORDER):
             term = a[0] * b[n]
