@@ -141,20 +141,21 @@ _SCREEN_FUNCTIONS = {**_IV_FUNCTIONS, sp.Abs: abs}
 
 @functools.lru_cache(maxsize=8192)
 def _nonzero_somewhere(d: sp.Expr) -> bool:
-    """Whether interval arithmetic (as in `surely_nonzero`) proves d ≠ 0 at one of `_SCREEN_POINTS`
-    seeded rational points of its domain, each symbol drawn with the sign its assumptions give
-    (positive ones in [1/2, 3], others ±[1/5, 2]; |x| read too): then neither `simplify` nor `trig_reduce`
-    (both identities) can turn d into 0, and the steps are skipped. Where a radicand is not
-    positive at a point, the next point is tried; a symbol declared integer or non-real, or an
-    enclosure holding 0 at every point, proves nothing."""
+    """Whether interval arithmetic (as in `surely_nonzero`, |x| read too) proves d ≠ 0 at one of a
+    few seeded rational points of its domain, each symbol drawn with the sign its assumptions give
+    (positive ones in [1/2, 3], others ±[1/5, 2]): then neither `simplify` nor `trig_reduce` (both
+    identities) can turn d into 0, and those steps are skipped. `_SCREEN_POINTS` points when d has
+    roots (a radicand may be negative at a point: the next one is tried), else two; a symbol
+    declared integer or non-real, or an enclosure holding 0 at every point, proves nothing."""
     symbols = sorted(d.free_symbols, key=lambda s: s.name)
     if any(s.is_integer or s.is_rational is False or s.is_real is False for s in symbols):
         return False
     rng = random.Random(len(symbols))
+    roots = any(not p.exp.is_Integer for p in d.atoms(sp.Pow))
     prec = iv.prec
     iv.prec = _INTERVAL_BITS
     try:
-        for _ in range(_SCREEN_POINTS):
+        for _ in range(_SCREEN_POINTS if roots else 2):
             point = {}
             for s in symbols:
                 sign = 1 if s.is_nonnegative else -1 if s.is_nonpositive else rng.choice((-1, 1))
