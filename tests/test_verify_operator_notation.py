@@ -107,6 +107,18 @@ def test_a_jets_sine_has_the_derivatives_of_the_sine():
     assert all(abs(a - b) < 1e-12 for a, b in zip(s.a, want))
 
 
+def test_jet_products_and_quotients_are_mpmaths_53_bit_values_bit_for_bit():
+    a, b = mj.Jet([0.7, -1.3, 0.25, 2.1]), mj.Jet([1.9, 0.35, -0.6, 0.05])
+    A, B = ([mpmath.mpf(x) for x in j.a] for j in (a, b))
+    with mpmath.workprec(53):
+        product = [sum((A[k] * B[n - k] for k in range(1, n + 1)), A[0] * B[n]) for n in range(mj.ORDER)]
+        inverse = [1 / B[0]]
+        for n in range(1, mj.ORDER):
+            inverse.append(-sum(B[k] * inverse[n - k] for k in range(1, n + 1)) / B[0])
+    assert (a * b).a == [float(x) for x in product]
+    assert b.reciprocal().a == [float(x) for x in inverse]
+
+
 @pytest.mark.parametrize("free", [True, False])
 def test_a_free_instant_has_no_torque_and_a_forced_one_has_one(free):
     instant = mj.Instant(("z", "x", "z"), [1.0, 2.0, 3.5], "seed", free)

@@ -7,7 +7,7 @@ exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `co
 as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
 power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import mp_values
 from derive.lecture import zero_test as zt
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES
@@ -83,8 +84,8 @@ def _real_zero(lhs, rhs, seed):
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
-    f = sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0)
-    radicands = sp.lambdify(symbols, bases, modules="mpmath", docstring_limit=0)
+    f = mp_values.evaluator(symbols, exprs)
+    radicands = mp_values.evaluator(symbols, bases)
     rng = random.Random(seed)
     n, used = len(lhs), 0
     for _ in range(300):
@@ -123,7 +124,9 @@ def _shape(m) -> str:
 
 def quick_equal(a, b) -> bool:
     """A fast float test (two random points) used to screen the single-edit candidates, memoised
-    (the same candidate recurs across the cases and searches of one text)."""
+    (the same candidate recurs across the cases and searches of one text); the sides evaluated by
+    mpmath's walk of `derive.lecture.mp_values` at 30 digits, or by SymPy's evalf to 20 where the
+    walk does not read them."""
     a, b = (sp.ImmutableMatrix(x) if isinstance(x, sp.MatrixBase) else x for x in (a, b))
     try:
         hash((a, b))
@@ -143,17 +146,27 @@ def _quick_equal(a, b) -> bool:
     if any(zt.surely_nonzero(x - y) for x, y in zip(A, B)):
         return False
     syms = sorted((A.free_symbols | B.free_symbols), key=lambda s: s.name)
+    walk = mp_values.walker(syms, [*A, *B])
     rng = random.Random(7)
     for _ in range(2):
         point = {s: sp.Float(rng.uniform(0.5, 2.5) if s.is_positive else rng.uniform(0.3, 1.7), 20) for s in syms}
         try:
-            d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
-            size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+            if walk is None:
+                d = [complex(sp.N(x.xreplace(point) - y.xreplace(point), 20)) for x, y in zip(A, B)]
+                size = [abs(complex(sp.N(x.xreplace(point), 20))) + 1 for x in A]
+            else:
+                with mpmath.workdps(_QUICK_DIGITS):
+                    values = walk(*(mpmath.mpf(float(v)) for v in point.values()))
+                    d = [complex(x - y) for x, y in zip(values[:len(A)], values[len(A):])]
+                    size = [abs(complex(x)) + 1 for x in values[:len(A)]]
         except (TypeError, ValueError, ZeroDivisionError):
             return False
         if any(abs(x) > 1e-9 * s for x, s in zip(d, size)):
             return False
     return True
+
+
+_QUICK_DIGITS = 30
 
 
 # ---- single edits ------------------------------------------------------------------------------

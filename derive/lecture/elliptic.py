@@ -27,6 +27,11 @@ class _Jacobi(sp.Function):
     def _eval_evalf(self, prec):
         return _value(self.kind_name, self.args, prec)
 
+    @classmethod
+    def mpmath_value(cls, x, m):
+        """The value at mpmath arguments (the reader's numeric zero test, `derive.lecture.mp_values`)."""
+        return mpmath.ellipfun(cls.kind_name, x, m=m)
+
     def _mpmathcode(self, printer):
         """For lambdify with mpmath (the reader's numeric zero test)."""
         x, m = (printer._print(a) for a in self.args)

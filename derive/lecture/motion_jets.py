@@ -23,22 +23,28 @@ import numpy as np
 ORDER = 4
 """Taylor coefficients kept: enough for D applied three times."""
 
-_NAN = mpmath.mpf("nan")
+_NAN = float("nan")
 
 
 class Jet:
-    """f(t₀ + h) = Σ aₖ hᵏ, k < ORDER (aₖ = f⁽ᵏ⁾(t₀)/k!)."""
+    """f(t₀ + h) = Σ aₖ hᵏ, k < ORDER (aₖ = f⁽ᵏ⁾(t₀)/k!).
+
+    The coefficients are binary64 floats: a sum, product or quotient of two of them is the value
+    mpmath gives at its default 53-bit precision (both round to nearest, ties to even), so the jets
+    compute what mpf jets would, bit for bit, without mpmath's per-operation overhead; sin and cos
+    of a coefficient still come from mpmath.
+    """
 
     __slots__ = ("a",)
 
     def __init__(self, coefficients):
-        a = [mpmath.mpf(x) for x in coefficients][:ORDER]
-        self.a = a + [mpmath.mpf(0)] * (ORDER - len(a))
+        a = [float(x) for x in coefficients][:ORDER]
+        self.a = a + [0.0] * (ORDER - len(a))
 
     @classmethod
     def _of(cls, a: list) -> "Jet":
-        """The jet of ``ORDER`` coefficients that are already mpf (what arithmetic on jets gives):
-        no conversion, which is most of the cost of a product."""
+        """The jet of ``ORDER`` coefficients that are already floats (what arithmetic on jets
+        gives): no conversion."""
         out = cls.__new__(cls)
         out.a = a
         return out
@@ -69,7 +75,12 @@ class Jet:
     def __mul__(self, other):
         if isinstance(other, np.ndarray):
             return NotImplemented
-        a, b = self.a, Jet.lift(other).a
+        a, b = self.a, other.a if isinstance(other, Jet) else Jet.lift(other).a
+        if ORDER == 4:            # the Cauchy product below, written out (same terms, same order)
+            a0, a1, a2, a3 = a
+            b0, b1, b2, b3 = b
+            return Jet._of([a0 * b0, a0 * b1 + a1 * b0, a0 * b2 + a1 * b1 + a2 * b0,
+                            a0 * b3 + a1 * b2 + a2 * b1 + a3 * b0])
         out = []
         for n in range(ORDER):
             term = a[0] * b[n]
@@ -115,7 +126,7 @@ class Jet:
 def sin_cos(x: Jet) -> tuple[Jet, Jet]:
     """sin and cos of a jet: with x = x₀ + h, sin x = sin x₀ cos h + cos x₀ sin h (h has no constant)."""
     h = Jet([0] + x.a[1:])
-    s0, c0 = mpmath.sin(x.a[0]), mpmath.cos(x.a[0])
+    s0, c0 = float(mpmath.sin(x.a[0])), float(mpmath.cos(x.a[0]))
     sin_h, cos_h, power = Jet([0]), Jet([1]), Jet([1])
     for k in range(1, ORDER):
         power = power * h / k                     # hᵏ/k!
@@ -175,11 +186,11 @@ class Instant:
     def __init__(self, axes, moments, seed, free: bool):
         rng = random.Random(seed)
         self.axes = axes
-        self.moments = [mpmath.mpf(m) for m in moments]
-        q0 = [mpmath.mpf(rng.uniform(0.3, 1.2)) for _ in range(3)]
-        q1 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
-        q3 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
-        q2 = [mpmath.mpf(rng.uniform(-1, 1)) for _ in range(3)]
+        self.moments = [float(m) for m in moments]
+        q0 = [rng.uniform(0.3, 1.2) for _ in range(3)]
+        q1 = [rng.uniform(-1, 1) for _ in range(3)]
+        q3 = [rng.uniform(-1, 1) for _ in range(3)]
+        q2 = [rng.uniform(-1, 1) for _ in range(3)]
         if free:
             q2 = self._free_acceleration(q0, q1, q3)
         self.angles = [Jet([q0[k], q1[k], q2[k] / 2, q3[k] / 6]) for k in range(3)]
@@ -197,12 +208,12 @@ class Instant:
 
     def _free_acceleration(self, q0, q1, q3):
         """q̈ with I′ D𝛚′ = −𝛚′ × I′𝛚′ (D𝛚′ is affine in q̈: solved from four evaluations)."""
-        zero = [mpmath.mpf(0)] * 3
+        zero = [0.0] * 3
         base, w = self._omega_rate(q0, q1, zero, q3)
         cols = []
         for k in range(3):
             e = list(zero)
-            e[k] = mpmath.mpf(1)
+            e[k] = 1.0
             rate, _ = self._omega_rate(q0, q1, e, q3)
             cols.append([rate[i] - base[i] for i in range(3)])
         Iw = [self.moments[i] * w[i] for i in range(3)]
@@ -210,7 +221,7 @@ class Instant:
                 for i in range(3)]
         A = mpmath.matrix([[cols[k][i] for k in range(3)] for i in range(3)])
         rhs = mpmath.matrix([want[i] - base[i] for i in range(3)])
-        return list(mpmath.lu_solve(A, rhs))
+        return [float(x) for x in mpmath.lu_solve(A, rhs)]
 
     def rates_matrix(self) -> np.ndarray:
         """B⁰: the inertial angular velocity 𝛚 = B⁰ q̇ (column k: the axis of the k-th turn)."""

@@ -46,9 +46,15 @@ class AlongMomentum:
             self.ok = False
             return
         self.trig = {sp.cos(theta): u[k3], sp.sin(theta): sin_t, sp.sin(psi): found[0][S], sp.cos(psi): found[0][C]}
-        M = omega.jacobian(sp.Matrix(rot.RATES))
+        self._omega = omega
+
+    @functools.cached_property
+    def rates(self) -> dict:
+        """q̇ in ω̃ (ω̃ = M(angles) q̇ solved): derived on the first relation with rates, since most
+        relations a text states for its orientation have none."""
+        M = self._omega.jacobian(sp.Matrix(rot.RATES))
         rates = M.LUsolve(sp.Matrix(lx.W))
-        self.rates = {r: sp.simplify(v) for r, v in zip(rot.RATES, rates)}
+        return {r: sp.simplify(v) for r, v in zip(rot.RATES, rates)}
 
     @classmethod
     def of(cls, substitutions: tuple | None) -> AlongMomentum:
@@ -67,7 +73,9 @@ class AlongMomentum:
 
     def apply(self, v):
         """v with the rates and the second and third angles written in ω̃ (the first angle stays)."""
-        v = sp.sympify(v).xreplace(self.rates)
+        v = sp.sympify(v)
+        if v.free_symbols & set(rot.RATES):
+            v = v.xreplace(self.rates)
         v = v.replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a)).replace(sp.cot, lambda a: sp.cos(a) / sp.sin(a))
         return v.xreplace(self.trig)
 

@@ -17,19 +17,21 @@ Gives: the mixin `TextMotion` of `derive.lecture.notes_check.Checker`, which
    power on the left (``\\dot v = …`` for ``\\dot v^2 = …``) is a typo of the power.
 
 The check compares the two sides at random values of the text's names (an identity in them
-holds at every point; a difference shows at almost every one), exact in rational arithmetic
-where the expressions allow it.
+holds at every point; a difference shows at almost every one), with mpmath at 50 digits
+(SymPy's evalf where the formulas hold a function mpmath's walk does not read).
 
-May import: :mod:`derive.lecture.latex`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.mp_values`, SymPy, mpmath.
 """
 from __future__ import annotations
 
 import random
 import re
 
+import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import mp_values
 
 _BOUNDS = ("<", ">", "≤", "≥")
 
@@ -54,6 +56,7 @@ def top_relations(piece: str) -> list:
 
 _POINTS = 4
 """Random points at which the two sides are compared (an identity holds at all of them)."""
+_DIGITS = 50
 
 
 def _free(obj) -> set:
@@ -61,15 +64,28 @@ def _free(obj) -> set:
 
 
 def _equal(a, b) -> bool:
-    """a ≡ b as functions of their free symbols, compared at random points away from 0 and 1."""
-    diff = sp.sympify(a) - sp.sympify(b)
+    """a ≡ b as functions of their free symbols, compared at random points away from 0 and 1:
+    with mpmath at `_DIGITS` digits (`derive.lecture.mp_values`) where it reads the formulas, else
+    SymPy's evalf to 30 digits; a pole or a value that is not finite is a difference."""
+    a = sp.sympify(a)
+    diff = a - sp.sympify(b)
     names = sorted(_free(diff), key=str)
+    walk = mp_values.walker(names, [diff, a]) if _free(a) <= set(names) else None
     rng = random.Random(20240601)
     for _ in range(_POINTS):
         point = {s: sp.Rational(rng.randint(11, 97), rng.randint(3, 10)) for s in names}
-        value = sp.N(diff.xreplace(point), 30)
-        if not value.is_number or abs(value) > 1e-20 * (1 + abs(sp.N(sp.sympify(a).xreplace(point), 30))):
-            return False
+        if walk is None:
+            value = sp.N(diff.xreplace(point), 30)
+            if not value.is_number or abs(value) > 1e-20 * (1 + abs(sp.N(a.xreplace(point), 30))):
+                return False
+            continue
+        with mpmath.workdps(_DIGITS):
+            try:
+                value, size = walk(*(mpmath.mpf(p.p) / p.q for p in point.values()))
+            except ZeroDivisionError:
+                return False
+            if not mpmath.isfinite(value) or abs(value) > 1e-20 * (1 + abs(size)):
+                return False
     return True
 
 

@@ -11,10 +11,10 @@ difference non-zero), `numeric_zero` (seeded random points: exact rationals, or 
    `simplify`; if it has, after `rotations.trig_reduce` (canonical for polynomials in sin/cos),
    skipped above a few hundred nodes;
 2. numeric at `POINTS` seeded random points: exactly, in rationals, when the difference contains
-   no function or radical; else with mpmath at `DIGITS` digits (`lambdify`), zero meaning below
-   10⁻⁴⁰ of the sides' size.
+   no function or radical; else with mpmath at `DIGITS` digits (`derive.lecture.mp_values`, the
+   values `lambdify` would give), zero meaning below 10⁻⁴⁰ of the sides' size.
 
-May import: :mod:`derive.symbolic`, SymPy, mpmath.
+May import: :mod:`derive.lecture.mp_values`, :mod:`derive.symbolic`, SymPy, mpmath.
 """
 from __future__ import annotations
 
@@ -24,8 +24,9 @@ from dataclasses import dataclass
 
 import mpmath
 import sympy as sp
-from mpmath import iv
+from mpmath import iv, libmp
 
+from derive.lecture import mp_values
 from derive.symbolic import rotations
 
 SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
@@ -68,10 +69,10 @@ def symbolic_zero(d) -> str | None:
     if not d.has(sp.sin, sp.cos, sp.tan):
         if sp.cancel(sp.together(d)) == 0:        # canonical for rational functions
             return "cancel"
-        if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES:
+        if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES or _nonzero_somewhere(d):
             return None
         return "simplify" if sp.simplify(d) == 0 else None
-    if _size(d) > _TRIG_REDUCE_MAX_NODES:
+    if _size(d) > _TRIG_REDUCE_MAX_NODES or _nonzero_somewhere(d):
         return None
     reduced = rotations.trig_reduce(d, _trig_angles(d))
     if reduced == 0:
@@ -134,6 +135,43 @@ def _surely_nonzero(d: sp.Expr) -> bool:
         iv.prec = prec
 
 
+_SCREEN_POINTS = 8
+_SCREEN_FUNCTIONS = {**_IV_FUNCTIONS, sp.Abs: abs}
+
+
+@functools.lru_cache(maxsize=8192)
+def _nonzero_somewhere(d: sp.Expr) -> bool:
+    """Whether interval arithmetic (as in `surely_nonzero`, |x| read too) proves d ≠ 0 at one of a
+    few seeded rational points of its domain, each symbol drawn with the sign its assumptions give
+    (positive ones in [1/2, 3], others ±[1/5, 2]): then neither `simplify` nor `trig_reduce` (both
+    identities) can turn d into 0, and those steps are skipped. `_SCREEN_POINTS` points when d has
+    roots (a radicand may be negative at a point: the next one is tried), else two; a symbol
+    declared integer or non-real, or an enclosure holding 0 at every point, proves nothing."""
+    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    if any(s.is_integer or s.is_rational is False or s.is_real is False for s in symbols):
+        return False
+    rng = random.Random(len(symbols))
+    roots = any(not p.exp.is_Integer for p in d.atoms(sp.Pow))
+    prec = iv.prec
+    iv.prec = _INTERVAL_BITS
+    try:
+        for _ in range(_SCREEN_POINTS if roots else 2):
+            point = {}
+            for s in symbols:
+                sign = 1 if s.is_nonnegative else -1 if s.is_nonpositive else rng.choice((-1, 1))
+                low = 50 if s.is_nonnegative or s.is_nonpositive else 20
+                point[s] = iv.mpf(sign * rng.randint(low, 300 if low == 50 else 200)) / 100
+            try:
+                value = _enclosure(d, point, {}, _SCREEN_FUNCTIONS)
+                if 0 not in value and libmp.fnan not in value._mpi_:
+                    return True
+            except (_Outside, ValueError, ZeroDivisionError, TypeError, OverflowError):
+                continue
+        return False
+    finally:
+        iv.prec = prec
+
+
 def _exact_point(d, symbols) -> dict:
     """Residues of the point: pᵢ/7 for each symbol; sin, cos, tan of each angle from `_CIRCLE`."""
     inv = lambda n: pow(n, -1, _MODULUS)  # noqa: E731
@@ -168,8 +206,9 @@ def _residue(e, point: dict, memo: dict) -> int:
     return value
 
 
-def _enclosure(e, point: dict, memo: dict):
-    """An interval holding e's value at ``point`` (common subexpressions evaluated once)."""
+def _enclosure(e, point: dict, memo: dict, functions=_IV_FUNCTIONS):
+    """An interval holding e's value at ``point`` (common subexpressions evaluated once), with the
+    functions of one argument in ``functions``."""
     if e in memo:
         return memo[e]
     if e.is_Symbol:
@@ -181,23 +220,23 @@ def _enclosure(e, point: dict, memo: dict):
     elif e.is_Add:
         value = iv.mpf(0)
         for a in e.args:
-            value = value + _enclosure(a, point, memo)
+            value = value + _enclosure(a, point, memo, functions)
     elif e.is_Mul:
         value = iv.mpf(1)
         for a in e.args:
-            value = value * _enclosure(a, point, memo)
+            value = value * _enclosure(a, point, memo, functions)
     elif e.is_Pow:
-        base = _enclosure(e.base, point, memo)
+        base = _enclosure(e.base, point, memo, functions)
         if e.exp.is_Integer:
             value = base ** int(e.exp)
         elif e.exp == sp.S.Half and base.a > 0:
             value = iv.sqrt(base)
         elif e.exp.is_Rational and base.a > 0:
-            value = iv.exp(iv.log(base) * _enclosure(e.exp, point, memo))
+            value = iv.exp(iv.log(base) * _enclosure(e.exp, point, memo, functions))
         else:
             raise _Outside(e)
-    elif type(e) in _IV_FUNCTIONS:
-        value = _IV_FUNCTIONS[type(e)](_enclosure(e.args[0], point, memo))
+    elif type(e) in functions:
+        value = functions[type(e)](_enclosure(e.args[0], point, memo, functions))
     else:
         raise _Outside(e)
     memo[e] = value
@@ -228,7 +267,7 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
                          for e in (*lhs, *rhs))
     rng = random.Random(seed)
     if transcendental:
-        f = sp.lambdify(symbols, [*lhs, *rhs], modules="mpmath", cse=True, docstring_limit=0)
+        f = mp_values.evaluator(symbols, [*lhs, *rhs])
     n, used = len(lhs), 0
     for _ in range(3 * POINTS):
         if used == POINTS:

@@ -1,0 +1,68 @@
+"""The numeric parts of the notes checker's zero test: formulas evaluated with mpmath by walking
+their trees (`derive.lecture.mp_values`) and the interval screen that spares the costly symbolic
+steps a difference it proves non-zero (`derive.lecture.zero_test`)."""
+import mpmath
+import pytest
+import sympy as sp
+
+from derive.lecture import mp_values
+from derive.lecture import zero_test as zt
+from derive.lecture.elliptic import JacobiSN
+
+x, y = sp.symbols("x y", positive=True)
+a = sp.Symbol("a", real=True)
+I1, I2, I3 = sp.symbols("I1 I2 I3", positive=True)
+
+FORMULAS = [
+    sp.sqrt(x) * sp.sin(a) - 3 * y / (x + 2) ** 3 + sp.Rational(2, 7) * sp.cos(x * a) ** 2,
+    1 / sp.sqrt(x + y) + x ** sp.Rational(1, 3) - sp.Float("0.125") * sp.pi * sp.exp(-a),
+    sp.Abs(a) * sp.atan2(y, a) + sp.tan(x) / sp.log(y + 1) - sp.E ** x,
+    x ** a + sp.sqrt(a - 2) * sp.acos(1 / (1 + x)),              # a root of a negative number: complex
+    JacobiSN(x * a, y / (1 + y)) ** 2,
+]
+
+
+@pytest.mark.parametrize("point", [(1.5, 0.7, -1.3), (2.25, 1.75, 0.4)])
+def test_walked_values_are_lambdifys_to_the_working_precision(point):
+    syms = [a, x, y]
+    walked = mp_values.evaluator(syms, FORMULAS)
+    printed = sp.lambdify(syms, FORMULAS, modules="mpmath")
+    order = {s.name: v for s, v in zip([x, y, a], point)}
+    with mpmath.workdps(50):
+        args = [mpmath.mpf(order[s.name]) for s in syms]
+        for u, v in zip(walked(*args), printed(*args)):
+            assert abs(u - v) <= mpmath.mpf(10) ** -45 * max(1, abs(v))
+
+
+def test_a_pole_raises_as_lambdify_does_and_an_unknown_function_is_left_to_lambdify():
+    walked = mp_values.evaluator([x], [1 / (x - 1)])
+    with pytest.raises(ZeroDivisionError):
+        walked(mpmath.mpf(1))
+    gamma = mp_values.evaluator([x], [sp.gamma(x) + x])
+    assert gamma(mpmath.mpf(5)) == [29]
+
+
+def test_the_screen_proves_a_slip_with_a_root_non_zero_where_its_radicand_is_positive_for_one_ordering():
+    # the radicand (I₂ − I₁)(I₃ − I₂) is positive only where I₂ lies between the others
+    root = sp.sqrt(I1 * I2 - I1 * I3 - I2**2 + I2 * I3)
+    assert not zt.surely_nonzero(root * sp.Abs(a) - 2 * a)
+    assert zt._nonzero_somewhere(root * sp.Abs(a) - 2 * a)
+    assert zt.symbolic_zero(root * sp.Abs(a) - 2 * a) is None
+
+
+def test_the_screen_never_calls_an_identity_non_zero_and_the_symbolic_steps_still_show_it():
+    identities = [sp.sqrt(3 + 2 * sp.sqrt(2)) - 1 - sp.sqrt(2), sp.sin(a) ** 2 + sp.cos(a * y / y) ** 2 - 1,
+                  sp.cosh(x) ** 2 - sp.sinh(x) ** 2 - 1]
+    assert not any(zt._nonzero_somewhere(d) for d in identities)
+    assert not zt._nonzero_somewhere(sp.sqrt(x + 2 * sp.sqrt(x) + 1) - sp.sqrt(x) - 1)
+    assert [zt.symbolic_zero(d) for d in identities] == ["simplify", "trig_reduce", "simplify"]
+
+
+def test_the_quick_screen_of_candidates_tells_equal_sides_from_a_slip_with_or_without_the_walk():
+    from derive.lecture.comparing import quick_equal
+    f = sp.Function("f")
+    assert quick_equal(sp.sqrt(x) * sp.cos(a) ** 2, sp.sqrt(x) - sp.sqrt(x) * sp.sin(a) ** 2)
+    assert not quick_equal(sp.sqrt(x) * sp.cos(a) ** 2, sp.sqrt(x) - sp.sqrt(x) * sp.sin(a) ** 2 + x / 10**6)
+    assert not quick_equal(JacobiSN(x, y) ** 2, 1 - JacobiSN(x, y) ** 2)
+    # a function with no values is not walked, and evalf gives no number: not screened in
+    assert not quick_equal(f(x) * 2, 3 * f(x) - f(x))
