@@ -154,7 +154,9 @@ class Derivation:
         if "top" in vars(self):
             out["top.lagrangian"] = self.top.lagrangian
         if "along" in vars(self):
-            out["along.substitutions"] = self.along.substitutions
+            out["along.trig"] = self.along.trig if self.along.ok else None
+            if "rates" in vars(self.along):          # derived only on a relation with rates
+                out["along.rates"] = self.along.rates
         return out
 
     def seed(self, values: dict) -> None:
@@ -163,16 +165,17 @@ class Derivation:
             top = EulerLagrange(values["top.lagrangian"])
             reduction = Reduction(top)
             vars(self).update(top=top, reduction=reduction, sleeping=SleepingTop(reduction))
-        along = values.get("along.substitutions", ())
-        if along is None or (isinstance(along, tuple) and len(along) == 2
-                             and all(isinstance(part, dict) for part in along)):
-            vars(self)["along"] = AlongMomentum.of(along)
         holders = self._holders()
         for path, value in values.items():
             holder, _, name = path.partition(".")
             obj = holders.get(holder)
             if obj is not None and name in _cached_names(type(obj)) and name not in _PARTS:
                 vars(obj)[name] = value
+        trig, rates = values.get("along.trig", ()), values.get("along.rates")
+        if trig is None or isinstance(trig, dict):
+            along = vars(self)["along"] = AlongMomentum.of(trig, self.omega)
+            if along.ok and isinstance(rates, dict):
+                vars(along)["rates"] = rates
 
 
 _PARTS = ("top", "reduction", "sleeping", "along")  # objects, kept by their own quantities

@@ -13,6 +13,8 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from derive.lecture import latex as lx
@@ -57,19 +59,14 @@ class AlongMomentum:
         return {r: sp.simplify(v) for r, v in zip(rot.RATES, rates)}
 
     @classmethod
-    def of(cls, substitutions: tuple | None) -> AlongMomentum:
-        """The orientation from its `substitutions` (``(trig, rates)``, None where it does not
-        apply), as computed for the convention before."""
+    def of(cls, trig: dict | None, omega: sp.Matrix) -> AlongMomentum:
+        """The orientation from its angles' substitutions ``trig`` (None where it does not apply),
+        as computed for the convention before; its rates are derived from ``omega`` when asked."""
         self = cls.__new__(cls)
-        self.ok = substitutions is not None
+        self.ok = trig is not None
         if self.ok:
-            self.trig, self.rates = substitutions
+            self.trig, self._omega = trig, omega
         return self
-
-    @property
-    def substitutions(self) -> tuple | None:
-        """(trig, rates): what `apply` substitutes; None where the orientation does not apply."""
-        return (self.trig, self.rates) if self.ok else None
 
     def apply(self, v):
         """v with the rates and the second and third angles written in ω̃ (the first angle stays)."""
