@@ -128,7 +128,8 @@ def _surely_nonzero(d: sp.Expr) -> bool:
     prec = iv.prec
     iv.prec = _INTERVAL_BITS
     try:
-        return bool(0 not in _enclosure(d, point, {}))
+        value = _enclosure(d, point, {})
+        return 0 not in value and libmp.fnan not in value._mpi_   # a NaN end proves nothing
     except (_Outside, ValueError, ZeroDivisionError, TypeError, OverflowError):
         return False
     finally:
