@@ -32,7 +32,7 @@ SHORT = {
         "definitions in vectors are not read",
 }
 
-FLOOR = {"checked": 257, "slips_flagged": 29, "holds_flagged": 0}
+FLOOR = {"checked": 258, "slips_flagged": 29, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

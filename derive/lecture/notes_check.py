@@ -46,6 +46,7 @@ from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.context import Context, Reading
@@ -104,7 +105,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(EulerPoisson, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -285,7 +286,8 @@ class Checker(EulerPoisson, TextNames, TextMatrices, TextMotion, Rereading, Moti
             self._add(line, piece, "unknown", "unchecked", why)
             return
         if len(parsed.members) < 2:
-            self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
+            if not self._written_out(line, piece, parsed):      # or it writes out the name defined before it
+                self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
             return
         head_end = _first_relation(text)
         if head_end is not None:
