@@ -6,7 +6,7 @@ from kept_readings import by_line
 
 from derive.lecture import latex as lx
 from derive.lecture.derivation import derivation
-from derive.lecture.euler_poisson import rate_on_motion
+from derive.lecture.euler_poisson import body_spin, rate_on_motion
 from derive.lecture.statements import statements
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g
 
@@ -103,3 +103,10 @@ def test_a_conserved_scalar_product_of_named_vectors_holds_and_a_wrong_one_never
         == ["holds"]
     assert "holds" not in [c.verdict for c in by_line(
         text.replace("BODY", r"\boldsymbol{\omega}\cdot \mathbf{n}=K\quad \text{(const)}"))[AT]]
+
+
+def test_the_body_spin_of_the_conventions_rotation_is_the_cross_product_of_omega():
+    d = derivation("z-x-z")
+    W = lx.W
+    assert sp.Matrix(body_spin(sp.ImmutableMatrix(d.conv.matrix()), sp.ImmutableMatrix(d.omega))) == \
+        sp.Matrix([[0, -W[2], W[1]], [W[2], 0, -W[0]], [-W[1], W[0], 0]])

@@ -11,8 +11,10 @@ quoted:
   by the chain rule, it is never written in);
 * the weight −Mgẑ acts at the centre of mass 𝐫_C (its body coordinates, `derive.lecture.names`
   "centre-of-mass coordinates"), so its moment about the fixed point is τ = 𝐫_C × (−Mgγ);
-* the law of angular momentum about the fixed point, d𝐋/dt = τ with 𝐋 = R I W, in body axes is
-  I Ẇ = τ − W × I W (Euler's equations), with I = diag(I₁, I₂, I₃) under the text's settings.
+* the law of angular momentum about the fixed point, d𝐋/dt = τ with 𝐋 = R I W, is carried into
+  body axes with the derivation's own R: Rᵀ d(R I W)/dt = I Ẇ + (RᵀṘ) I W, RᵀṘ computed from R(q)
+  and q̇(W, q) (`body_spin`; it is the cross-product matrix of W, which Euler's equations
+  I Ẇ + W × I W = τ assume), with I = diag(I₁, I₂, I₃) under the text's settings.
 
 Then dF/dt = Σᵢ ∂F/∂Wᵢ Ẇᵢ + Σⱼ ∂F/∂qⱼ q̇ⱼ(W, q), and the statement holds when it vanishes. A
 quantity written with rates, accelerations or names the text has not tied is left unchecked; one
@@ -42,7 +44,24 @@ from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 def _angle_rates(omega: sp.ImmutableMatrix) -> tuple:
     """q̇(W, q): the derivation's ω̃(q, q̇) = W solved for the rates (linear in them)."""
     sol = sp.solve([omega[i] - lx.W[i] for i in range(3)], RATES, dict=True)
-    return tuple(sp.simplify(sol[0][r]) for r in RATES)
+    return tuple(sp.cancel(sol[0][r]) for r in RATES)
+
+
+@functools.lru_cache(maxsize=None)
+def body_spin(rotation: sp.ImmutableMatrix, omega: sp.ImmutableMatrix) -> sp.ImmutableMatrix:
+    """RᵀṘ in the body angular velocity W, Ṙ = Σⱼ ∂R/∂qⱼ q̇ⱼ with q̇(W, q). Where it agrees with the
+    cross-product matrix of W at sample points (RᵀṘ v = W × v: the derivation's ω̃ is the body
+    angular velocity of R), that matrix; otherwise RᵀṘ as computed."""
+    qdot = _angle_rates(omega)
+    Rdot = sum((sp.diff(rotation, q) * v for q, v in zip(ANGLES, qdot)), sp.zeros(3, 3))
+    spin = rotation.T * Rdot
+    w = lx.W
+    cross = sp.Matrix([[0, -w[2], w[1]], [w[2], 0, -w[0]], [-w[1], w[0], 0]])
+    residual = sp.lambdify((*ANGLES, *w), list(spin - cross), modules="math")
+    points = ((0.43 + k, 0.56 + k / 3, 0.18 - k, 0.33 - k, 1.4, k + 0.5) for k in range(3))
+    if all(abs(x) < 1e-9 for p in points for x in residual(*p)):
+        return sp.ImmutableMatrix(cross)
+    return sp.ImmutableMatrix(spin)
 
 
 def gravity_moment(rotation, r_c, down: bool = False) -> sp.Matrix:
@@ -52,11 +71,12 @@ def gravity_moment(rotation, r_c, down: bool = False) -> sp.Matrix:
     return sp.Matrix(r_c).cross(-Mass * g * gamma)
 
 
-def euler_residuals(rotation, r_c, moments, down: bool = False) -> list:
-    """Euler's equations of the heavy body, Iᵢω̃̇ᵢ + (W × I W)ᵢ − τᵢ (zero on the motion)."""
+def euler_residuals(rotation, r_c, moments, omega, down: bool = False) -> list:
+    """Euler's equations of the heavy body, Iᵢω̃̇ᵢ + (RᵀṘ I W)ᵢ − τᵢ (zero on the motion)."""
     W, inertia = sp.Matrix(lx.W), sp.diag(*moments)
     tau = gravity_moment(rotation, r_c, down)
-    lhs = inertia * sp.Matrix(lx.WD) + W.cross(inertia * W)
+    spin = body_spin(sp.ImmutableMatrix(rotation), sp.ImmutableMatrix(omega))
+    lhs = inertia * sp.Matrix(lx.WD) + spin * inertia * W
     return [lhs[i] - tau[i] for i in range(3)]
 
 
@@ -79,12 +99,13 @@ def rate_on_motion(F, omega, rotation, r_c, moments=(I1, I2, I3)):
     Returns
     -------
     sympy expression
-        Σᵢ ∂F/∂Wᵢ Ẇᵢ + Σⱼ ∂F/∂qⱼ q̇ⱼ with I Ẇ = 𝐫_C × (−Mgγ) − W × I W.
+        Σᵢ ∂F/∂Wᵢ Ẇᵢ + Σⱼ ∂F/∂qⱼ q̇ⱼ with I Ẇ = 𝐫_C × (−Mgγ) − (RᵀṘ) I W.
     """
     W = sp.Matrix(lx.W)
     torque = gravity_moment(rotation, r_c)
     inertia = sp.diag(*moments)
-    wdot = inertia.inv() * (torque - W.cross(inertia * W))
+    spin = body_spin(sp.ImmutableMatrix(rotation), sp.ImmutableMatrix(omega))
+    wdot = inertia.inv() * (torque - spin * inertia * W)
     qdot = _angle_rates(sp.ImmutableMatrix(omega))
     return sum(sp.diff(F, W[i]) * wdot[i] for i in range(3)) + sum(sp.diff(F, q) * v for q, v in zip(ANGLES, qdot))
 
@@ -224,7 +245,7 @@ class EulerPoisson:
             coeffs = [sp.diff(value, wd) for wd in lx.WD]
             if any(set(c.free_symbols) - {I1, I2, I3} for c in coeffs):
                 return False
-            targets = [(sum(c / m * e for c, m, e in zip(coeffs, self._moments(), euler_residuals(rot, r_c, self._moments(), down))
+            targets = [(sum(c / m * e for c, m, e in zip(coeffs, self._moments(), euler_residuals(rot, r_c, self._moments(), self.d.omega, down))
                             if c != 0), down) for down in (False, True)]
             value = value.xreplace(self.ctx.subs)
             what = "a multiple of Euler's equations with the weight's moment 𝐫_C × (−Mg𝐧) about the fixed point"
