@@ -110,3 +110,9 @@ def test_the_body_spin_of_the_conventions_rotation_is_the_cross_product_of_omega
     W = lx.W
     assert sp.Matrix(body_spin(sp.ImmutableMatrix(d.conv.matrix()), sp.ImmutableMatrix(d.omega))) == \
         sp.Matrix([[0, -W[2], W[1]], [W[2], 0, -W[0]], [-W[1], W[0], 0]])
+
+
+def test_a_vector_between_two_named_points_is_read_as_one_vector_of_the_texts():
+    atoms = [t.value for t in lx.scan(r"\vec{OC}") if t.kind == "atom"]
+    assert [(a.base, a.bold) for a in atoms] == [("OC", True)]
+    assert [(a.base, a.bold) for a in (t.value for t in lx.scan(r"\vec{V}") if t.kind == "atom")] == [("V", True)]
