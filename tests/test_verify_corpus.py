@@ -27,15 +27,12 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("byuflowlab-sixdof-aircraft-321-theory", "checked"):
-        "the inertia tensor written I_b beside frame derivatives, displays with no relation that write out "
-        "the previous one (a bare vector, a bare matrix), the position's kinematics and the airspeed's "
-        "definitions in vectors are not read",
-    ("heavy-rigid-body-euler-poisson-gyroscope-zh-notes-zxz", "checked"):
-        "the general heavy body (centre of mass x_C, y_C, z_C off the axis) is not derived: its moment of "
-        "gravity, its integrals (L_Z, E, Kovalevskaya's) and the gyroscope's vector formula are not checked",
+        "the inertia tensor written I_b beside frame derivatives (H = I omega, Euler's equation), a bare "
+        "matrix the prose names (wind to body), the position's kinematics, gravity's definition, and the "
+        "airspeed's definitions in vectors with the angles defined from them are not read",
 }
 
-FLOOR = {"checked": 250, "slips_flagged": 29, "holds_flagged": 0}
+FLOOR = {"checked": 258, "slips_flagged": 29, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -57,6 +57,7 @@ class Context:
     changes: dict = field(default_factory=dict)       # a new variable v → (u, S(v), line) of the text's u = S(v)
     angles_stated: dict = field(default_factory=dict)  # an angle the text gives in constants (tan θ = …) → (value, line)
     vectors: dict = field(default_factory=dict)        # a vector of the text's → (its components, what it defined it as)
+    centre_line: int | None = None                    # the line whose settings of the centre of mass hold
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}

@@ -41,6 +41,9 @@ principal moments           list     I₁, I₂, I₃ in the order written
 identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
 roll, pitch and yaw rates   list     ω̃₁, ω̃₂, ω̃₃ in the order written (the aircraft's p, q, r)
 vertical                    letter   the upward vertical's body components Rᵀẑ (Poisson's γᵢ, 𝐧)
+centre-of-mass coordinates  coords   the centre of mass's body coordinates, in the order written
+                                     (the text's own symbols: `euler_poisson` puts them in the
+                                     moment of gravity)
 ==========================  =======  ===================================================
 """
 from __future__ import annotations
@@ -62,7 +65,7 @@ MEANINGS = {
     "angular momentum": ("letter", r"angular momentum"),
     "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
     "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
-    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces"),
+    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)"),
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
     "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia about the (?:symmetry|figure) axis"),
     "principal moments": ("list", r"principal moments(?: of inertia)?"),
@@ -81,6 +84,10 @@ MEANINGS = {
     "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
     "identity column": ("letter", r"the\s+\S+\s+columns? of the\s+(?:\S+\s+)?identity(?: matrix)?"),
     "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
+    "centre-of-mass coordinates": ("coords", r"(?:centre|center) of (?:mass|gravity)\b[^.;]{0,60}?coordinates"),
+    "centre-of-mass coordinate 1": ("symbol", r"(?!x)x"),    # bound only through the coordinates' list
+    "centre-of-mass coordinate 2": ("symbol", r"(?!x)x"),
+    "centre-of-mass coordinate 3": ("symbol", r"(?!x)x"),
     "potential energy": ("symbol", r"potential(?: energy)?"),
 }
 """The meanings a text may give its symbols: how each binds and the phrase that gives it."""
@@ -197,7 +204,7 @@ class Names:
             return sp.ImmutableMatrix(sp.eye(3)[:, k]) if a.bold and k is not None and plain else None
         if not plain or a.bold:
             return None
-        if meaning == "potential energy":
+        if meaning == "potential energy" or meaning.startswith("centre-of-mass coordinate "):
             return vocab._generic(a)            # the text's own potential: its definition says what
         return {"vertical angular momentum": lx.p_alpha, "axial angular momentum": lx.p_gamma, "mass": Mass,
                 "centre-of-mass distance": l, "gravitational acceleration": g, "kinetic energy": lx.T_, "energy": lx.ENERGY,
@@ -276,6 +283,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             if len(after) == 3 and all(re.fullmatch(r"\s*(,|and|,\s*and)?\s*", g) for g in gaps):
                 _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
         _rates_listed(names, text, found, starts, offset)
+        _centre_listed(names, text, found, starts, offset)
         for k, m in enumerate(found):
             atoms = _atoms(m.group(1))
             if not atoms:
@@ -284,7 +292,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             marked = "".join(("§" if j == k else "¤") if isinstance(piece, int) else piece
                              for j, piece in _pieces(text, found))
             meaning = _nearest(marked)
-            if meaning is None or meaning in ("principal moments", "body rates") or not _fits(meaning, atoms):
+            if meaning is None or MEANINGS[meaning][0] in ("list", "rates", "coords") or not _fits(meaning, atoms):
                 continue
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
@@ -316,6 +324,19 @@ def _components_of(names: Names, text: str, starts, offset):
         if meaning and MEANINGS[meaning][0] == "letter" and parts and all(a.sub and not a.bold for a in parts) \
                 and _fits(meaning, parts):
             _bind(names, parts, meaning, f"line {_line(starts, offset + m.start())}")
+
+
+def _centre_listed(names: Names, text: str, found: list, starts, offset):
+    """"the centre of mass $C$ has body coordinates $x_C, y_C, z_C$": the three symbols right after
+    the phrase, in order, are the centre of mass's coordinates along the body axes."""
+    phrase = re.search(MEANINGS["centre-of-mass coordinates"][1], text, flags=re.I)
+    if not phrase:
+        return
+    after = [a for m in found if m.start() >= phrase.end() for a in _atoms(m.group(1))][:3]
+    if len(after) == 3 and all(not a.bold and not a.dots for a in after):
+        for k, atom in enumerate(after):
+            _put(names.symbols, (atom.base, atom.sub), f"centre-of-mass coordinate {k + 1}", False)
+            names.where[(atom.base, atom.sub)] = f"line {_line(starts, offset + phrase.start())}"
 
 
 def _rates_listed(names: Names, text: str, found: list, starts, offset):

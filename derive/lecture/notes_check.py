@@ -45,6 +45,8 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.context import Context, Reading
@@ -102,7 +104,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -276,19 +278,22 @@ class Checker(TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, V
             return
         except lx.NotRead as err:
             why = err.why
-            if self._vectors(line, piece, text) or self._algebra(line, piece, text):
+            if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return
             self._add(line, piece, "unknown", "unchecked", why)
             return
         if len(parsed.members) < 2:
-            self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
+            if not self._written_out(line, piece, parsed):      # or it writes out the name defined before it
+                self._add(line, piece, "expression", "unchecked", "not a claim: no relation")
             return
         head_end = _first_relation(text)
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
         self._text = text                   # the statement with the left side it continues
+        if not duplicate and self._heavy_first(line, piece, parsed):
+            return
         parsed = self._constant_dropped(line, piece, parsed)
         parsed = parsed if parsed is None else self._loose_ends_dropped(parsed)
         if parsed is not None and not duplicate and self._second_order(line, piece, parsed):

@@ -9,7 +9,7 @@ judged wrong here: a statement that does not agree is left to the rest of the re
 that writes a set angle or rate itself (a rate is never checked against the rate the text stated).
 
 Takes: the checker (its ``ctx.subs``, ``ctx.stated``, ``d.omega``, ``_resolve``, ``tex``). Gives:
-`under_settings`.
+`under_settings` and `stated_angles`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
@@ -40,7 +40,7 @@ def settled(subs: dict) -> dict:
     return out
 
 
-def _stated(checker) -> dict:
+def stated_angles(checker) -> dict:
     """The angles and rates the text has set: its settings (``ctx.subs``), the rates of the motion
     it describes (``ctx.motion``) and the angles it gives (``ctx.angles_stated``), with where."""
     out = {s: (v, checker.ctx.stated.get(s, "stated")) for s, v in checker.ctx.subs.items()
@@ -57,7 +57,7 @@ def _stated(checker) -> dict:
 def under_settings(checker, a, b) -> str | None:
     """The ``why`` of ``a = b`` holding once the angles and rates the text has set are put into
     ω̃(q, q̇); None when no such setting is used or the sides do not agree."""
-    stated = _stated(checker)
+    stated = stated_angles(checker)
     if not stated:
         return None
     try:

@@ -9,8 +9,11 @@ next; a row into pieces at ``\\qquad``, ``\\quad``, ``\\Rightarrow``, ``\\implie
 top-level ``;`` and at commas between relations (never inside brackets). A label before a colon
 (``\\theta:``, ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are
 dropped; a case before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
-``\\text{const}`` is kept as the constant it names; a ``\\pm`` on a statement's left side makes it
-two statements, one for each sign.
+``\\text{const}`` is kept as the constant it names, and so are words after a statement that say
+it is a constant (``= E \\quad \\text{(const.)}``: E names a conserved quantity); a relation in
+brackets after a statement (``\\dot\\omega_3 = -\\alpha\\gamma_2 \\left(\\alpha = \\frac{Mgx_C}{I_3}\\right)``)
+defines a name it uses and is a statement of its own, read first; a ``\\pm`` on a statement's left
+side makes it two statements, one for each sign.
 """
 from __future__ import annotations
 
@@ -80,6 +83,16 @@ _CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?\s*\}
 
 _TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
 
+_CONSTANT_WORDS = re.compile(r"\\(?:text|mbox|textrm|hbox)\s*\{\s*[(（]?\s*(?:const|constant|cst|常数|常量|Konstante|constante)\.?\s*[)）]?\s*\}")
+"""Words after a statement that say it is a constant, in the languages texts are written in."""
+
+_NAMED_END = re.compile(r"(?<![<>!\\])=\s*\\?[A-Za-z]+(?:_\{?\w+\}?)?\s*$")
+"""A statement that ends by naming its value with one symbol (``… = L_Z``): the name of a constant."""
+
+_WHERE = re.compile(r"^(?P<claim>.*?(?<![<>!\\])=.*?)\s*(?:\\left\s*)?\(\s*(?P<name>\\?[A-Za-z]+(?:_\{?\w+\}?)?)\s*="
+                    r"(?P<value>[^=]+?)(?:\\right\s*)?\)\s*$", re.S)
+"""A statement followed by a bracketed definition of a name: ``… = -\\alpha\\gamma_2 \\left(\\alpha = …\\right)``."""
+
 _RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 def _unwrapped(piece: str) -> str:
@@ -121,6 +134,13 @@ def _lists(row: str) -> list[str]:
             pieces.append(part)
     return [p.replace("\\\x00", "\\;") for p in pieces]
 
+def _where_first(piece: str) -> list[str]:
+    """A statement and the bracketed definition after it (`_WHERE`): the definition, then the statement."""
+    m = _WHERE.match(piece.strip())
+    if m is None or m.group("name") not in m.group("claim"):
+        return [piece]
+    return [f"{m.group('name')} = {m.group('value')}", m.group("claim")]
+
 def _bracket_free_split(s: str) -> list[str]:
     out, depth, start = [], 0, 0
     for i, ch in enumerate(s):
@@ -149,9 +169,12 @@ def statements(latex: str) -> list[str]:
             joined.append(row)
     out = []
     for row in joined:
+        words = _TRAILING_WORDS.search(row)
+        if words and _CONSTANT_WORDS.search(words.group(0)) and _NAMED_END.search(row[:words.start()]):
+            row = row[:words.start()] + r" = \mathrm{const}"
         for piece in _colon_parts(row):
             for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies"))):
-                for one in _lists(part):
+                for one in [w for p in _lists(part) for w in _where_first(p)]:
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))

@@ -97,6 +97,13 @@ class TextNames:
         const = [k for k, m in enumerate(members) if isinstance(m, lx.Generic) and m.name == "const"]
         if not const:
             return parsed
+        rest = [k for k in range(len(members)) if k not in const]
+        named = len(rest) == 2 and (self._new_name(members[rest[1]]) or isinstance(members[rest[1]], lx.Quantity))
+        if len(rest) == 1 or named:
+            if self._conserved(line, piece, members[rest[0]]):     # an integral of the heavy body's motion
+                if named and self._new_name(members[rest[1]]):
+                    self.ctx.defs[members[rest[1]]] = members[rest[0]]
+                return None
         if len(members) == 2:
             self._add(line, piece, "assumption", "unchecked",
                       "states that a quantity is constant (an assumption or a conservation law)")

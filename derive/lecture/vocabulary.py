@@ -209,6 +209,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
         inner, j = group(s, m.end())
         if kind == "roman" and re.fullmatch(r"[A-Za-z]+", inner.strip()) and len(inner.strip()) > 1:
             atom = Atom(inner.strip())
+        elif kind == "vec" and re.fullmatch(r"[A-Z]{2}", inner.strip()):
+            atom = Atom(inner.strip(), bold=True)        # \vec{OC}: the vector from point O to point C
         else:
             atom, k = _atom_at(inner.strip(), 0)
             if k < len(inner.strip()):
