@@ -258,7 +258,7 @@ class EulerPoisson:
         if ok:
             self._add(line, piece, "moment" if a in lx.TAU else "equation of motion", "holds", f"{what}: {how}")
         elif self._compare(value, down, f"{piece}/gravity-down")[0]:
-            self._add(line, piece, "moment", "unchecked", f"holds with the vertical 𝐧 pointing down, "
+            self._add(line, piece, "moment", "unchecked", "holds with the vertical 𝐧 pointing down, "
                       "while the text's 𝐧 was read as the upward vertical: the reader cannot tell which it means")
         else:
             self._add(line, piece, "moment" if a in lx.TAU else "equation of motion", "fails", f"as written, not {what}: {how}")
