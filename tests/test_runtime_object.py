@@ -1,0 +1,135 @@
+"""The runtime's translation unit is compiled once per flag set into an object the compile cache
+keeps (checksum and stamp, like a library), and linked into every library built with those flags;
+`derive cache` lists it and `--clear` removes it."""
+import hashlib
+import os
+import subprocess
+import sys
+import uuid
+
+import pytest
+
+from derive.codegen.render import ROOT
+from derive.runtime import cache as cache_folder
+from derive.runtime import cbuild
+
+GENERATED_C = ROOT / "generated" / "c"
+
+
+def with_runtime(tag: str, runtime_tail: str = "") -> dict:
+    """A one-function library holding the runtime (its header among the sources), unique per
+    ``tag``; ``runtime_tail`` is appended to derive_runtime.c (another runtime source)."""
+    return {"derive_runtime.h": (GENERATED_C / "derive_runtime.h").read_text(),
+            "derive_runtime.c": (GENERATED_C / "derive_runtime.c").read_text() + runtime_tail,
+            "tiny.c": f'/* {tag} */\n#include "derive_runtime.h"\n'
+                      "int tiny_answer(void) { derive_stats st; derive_stats_init(&st);"
+                      " return 42 + st.status; }\n"}
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    root = tmp_path / "cache"
+    monkeypatch.setenv("DERIVE_CACHE", str(root))
+    monkeypatch.setattr(cache_folder, "_fallback", None)
+    return root
+
+
+def objects(root):
+    return sorted(root.glob("derive_runtime-*.o"))
+
+
+def test_libraries_of_one_flag_set_link_one_kept_runtime_object(cache):
+    libs = [cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c") for _ in range(2)]
+    for lib in libs:  # the model's unit calls the runtime; the host's Ctrl-C guard is exported
+        assert lib.tiny_answer() == 42
+        assert lib.derive_sigint_guard(1) == 0 and lib.derive_sigint_guard(0) == 0
+    assert len(list(cache.glob("tiny-*.so"))) == 2
+    (obj,) = objects(cache)
+    digest, name = obj.with_name(obj.name + ".sha256").read_text().split()
+    assert name == obj.name and digest == hashlib.sha256(obj.read_bytes()).hexdigest()
+    assert cache_folder.library_problem(obj) is None
+    assert [e.status for e in cache_folder.cache_entries(cache) if e.name == obj.name] == ["ok"]
+    assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no build folder left
+
+
+def test_other_flags_or_another_runtime_source_is_another_object(cache):
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
+    (first,) = objects(cache)
+    lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c",
+                                 [*cbuild.DEFAULT_FLAGS, "-O2"])
+    assert lib.tiny_answer() == 42 and len(objects(cache)) == 2
+    lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, "/* another runtime */\n"),
+                                 "tiny.c")
+    assert lib.tiny_answer() == 42 and len(objects(cache)) == 3 and first in objects(cache)
+
+
+def test_a_model_change_reuses_the_object(cache):
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
+    (obj,) = objects(cache)
+    before = (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns)
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
+    assert objects(cache) == [obj] and (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns) == before
+
+
+def build_in_subprocess(root, tag):
+    """Build-or-load a runtime library in a fresh process; (return code, stderr)."""
+    code = ("import sys; from derive.runtime import cbuild; "
+            f"lib = cbuild.compile_library('tiny', {with_runtime(tag)!r}, 'tiny.c'); "
+            "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       env=dict(os.environ, DERIVE_CACHE=str(root)), cwd=ROOT, timeout=120)
+    return r.returncode, r.stderr
+
+
+@pytest.mark.parametrize("damage", ["truncated", "foreign"])
+def test_a_damaged_runtime_object_is_rebuilt_with_a_note(cache, damage):
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
+    (obj,) = objects(cache)
+    whole = obj.read_bytes()
+    if damage == "truncated":
+        obj.write_bytes(whole[: len(whole) // 2])
+    else:  # whole bytes of another object under its checksum: the stamp gives it away
+        other = whole.replace(b"derive_build_", b"derive_built_")
+        obj.write_bytes(other)
+        obj.with_name(obj.name + ".sha256").write_text(f"{hashlib.sha256(other).hexdigest()}  {obj.name}\n")
+    rc, err = build_in_subprocess(cache, uuid.uuid4().hex)
+    assert rc == 0
+    (line,) = err.splitlines()[-1:]
+    assert line.startswith(f"note: cached object {obj}") and line.endswith("; rebuilding it")
+    assert [ln for ln in err.splitlines() if ln.startswith("note: cached")] == [line]
+    assert obj.read_bytes() == whole and cache_folder.library_problem(obj) is None
+    rc, err = build_in_subprocess(cache, uuid.uuid4().hex)
+    assert rc == 0 and "note: cached" not in err  # healed: the next run finds it whole
+
+
+def test_clear_removes_the_object_and_its_checksum(cache):
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
+    (cache / "notes.txt").write_text("the user's own file\n")
+    count, _ = cache_folder.clear_cache(cache)
+    assert count == 4  # the library, the object and their checksums
+    assert sorted(p.name for p in cache.iterdir()) == ["notes.txt"]
+
+
+def test_the_object_s_unit_is_what_the_runtime_source_includes():
+    sources = with_runtime("t")
+    sources[cbuild.HOST_SOURCE] = '#include "derive_runtime.c"\n'
+    assert set(cbuild._included(sources, cbuild.HOST_SOURCE)) == {
+        cbuild.HOST_SOURCE, "derive_runtime.c", "derive_runtime.h"}
+    computed = dict(sources, **{"derive_runtime.c": "#include RUNTIME_PART\n"})
+    assert cbuild._included(computed, cbuild.HOST_SOURCE) == computed  # not followed: everything
+
+
+def test_a_method_s_selection_macro_leaves_the_object_alone(cache):
+    """A -DDERIVE_* macro the runtime's sources never name (a model's method selection) cannot
+    change its compile: the libraries share the object; one the runtime names is another object."""
+    for flag in ("-DDERIVE_WITH_DOP853", "-DDERIVE_WITH_RK4"):
+        lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c",
+                                     [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
+        assert lib.tiny_answer() == 42
+    assert len(objects(cache)) == 1
+    reads = "#ifdef DERIVE_WITH_RK4\nint derive_tiny_rk4;\n#endif\n"
+    for flag in ("-DDERIVE_WITH_DOP853", "-DDERIVE_WITH_RK4"):
+        lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, reads), "tiny.c",
+                                     [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
+        assert lib.tiny_answer() == 42
+    assert len(objects(cache)) == 3
