@@ -4,7 +4,8 @@ import pytest
 
 import derive
 from cli_in_process import derive_main
-from derive.bench.internals import kernel_for, model_for
+from compiled_models import compiled_model
+from derive.runtime.catalogue import describe
 from derive.sim import result, simulation
 from derive.symbolic.formulations import REGISTRY
 from derive.codegen.render import ROOT
@@ -113,9 +114,9 @@ def test_euler_angles_at_the_pole_refuse_or_stay_right():
 
 def test_no_gravity_scene_gets_kernel_without_gravity_parameters():
     res = derive.simulate(top(gravity=None))
-    model = model_for(res.formulation, True, res.scene.effects)
-    assert not {"M", "g", "l"} & set(model.param_names)
-    assert "g" not in (kernel_for(res.formulation, True, ()).param_names)
+    model = describe((res.formulation, True, res.scene.effects))
+    assert not {"M", "g", "l"} & set(model.params)
+    assert "g" not in (compiled_model(res.formulation, True, (), res.method).param_names)
 
 
 @pytest.mark.parametrize("formulation", ["reduced", "quaternion", "euler-angles"])
