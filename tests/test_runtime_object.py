@@ -3,8 +3,6 @@ keeps (checksum and stamp, like a library), and linked into every library built 
 `derive cache` lists it and `--clear` removes it."""
 import hashlib
 import os
-import subprocess
-import sys
 import uuid
 
 import pytest
@@ -39,17 +37,24 @@ def objects(root):
 
 
 def test_libraries_of_one_flag_set_link_one_kept_runtime_object(cache):
-    libs = [cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c") for _ in range(2)]
+    libs = [cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")]
+    (obj,) = objects(cache)
+    made = (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns)
+    libs.append(cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c"))
     for lib in libs:  # the model's unit calls the runtime; the host's Ctrl-C guard is exported
         assert lib.tiny_answer() == 42
         assert lib.derive_sigint_guard(1) == 0 and lib.derive_sigint_guard(0) == 0
     assert len(list(cache.glob("tiny-*.so"))) == 2
-    (obj,) = objects(cache)
+    assert objects(cache) == [obj] and (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns) == made
     digest, name = obj.with_name(obj.name + ".sha256").read_text().split()
     assert name == obj.name and digest == hashlib.sha256(obj.read_bytes()).hexdigest()
     assert cache_folder.library_problem(obj) is None
     assert [e.status for e in cache_folder.cache_entries(cache) if e.name == obj.name] == ["ok"]
     assert not [p for p in cache.iterdir() if p.name.startswith(".")]  # no build folder left
+    (cache / "notes.txt").write_text("the user's own file\n")
+    count, _ = cache_folder.clear_cache(cache)
+    assert count == 6  # the libraries, the object and their checksums
+    assert sorted(p.name for p in cache.iterdir()) == ["notes.txt"]
 
 
 def test_other_flags_or_another_runtime_source_is_another_object(cache):
@@ -63,26 +68,8 @@ def test_other_flags_or_another_runtime_source_is_another_object(cache):
     assert lib.tiny_answer() == 42 and len(objects(cache)) == 3 and first in objects(cache)
 
 
-def test_a_model_change_reuses_the_object(cache):
-    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
-    (obj,) = objects(cache)
-    before = (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns)
-    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
-    assert objects(cache) == [obj] and (os.lstat(obj).st_ino, os.lstat(obj).st_mtime_ns) == before
-
-
-def build_in_subprocess(root, tag):
-    """Build-or-load a runtime library in a fresh process; (return code, stderr)."""
-    code = ("import sys; from derive.runtime import cbuild; "
-            f"lib = cbuild.compile_library('tiny', {with_runtime(tag)!r}, 'tiny.c'); "
-            "sys.exit(0 if lib.tiny_answer() == 42 else 5)")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                       env=dict(os.environ, DERIVE_CACHE=str(root)), cwd=ROOT, timeout=120)
-    return r.returncode, r.stderr
-
-
 @pytest.mark.parametrize("damage", ["truncated", "foreign"])
-def test_a_damaged_runtime_object_is_rebuilt_with_a_note(cache, damage):
+def test_a_damaged_runtime_object_is_rebuilt_with_a_note(cache, damage, capsys):
     cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
     (obj,) = objects(cache)
     whole = obj.read_bytes()
@@ -92,22 +79,14 @@ def test_a_damaged_runtime_object_is_rebuilt_with_a_note(cache, damage):
         other = whole.replace(b"derive_build_", b"derive_built_")
         obj.write_bytes(other)
         obj.with_name(obj.name + ".sha256").write_text(f"{hashlib.sha256(other).hexdigest()}  {obj.name}\n")
-    rc, err = build_in_subprocess(cache, uuid.uuid4().hex)
-    assert rc == 0
-    (line,) = err.splitlines()[-1:]
-    assert line.startswith(f"note: cached object {obj}") and line.endswith("; rebuilding it")
-    assert [ln for ln in err.splitlines() if ln.startswith("note: cached")] == [line]
+    capsys.readouterr()
+    assert cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c").tiny_answer() == 42
+    notes = [ln for ln in capsys.readouterr().err.splitlines() if ln.startswith("note: cached")]
+    assert len(notes) == 1 and notes[0].startswith(f"note: cached object {obj}")
+    assert notes[0].endswith("; rebuilding it")
     assert obj.read_bytes() == whole and cache_folder.library_problem(obj) is None
-    rc, err = build_in_subprocess(cache, uuid.uuid4().hex)
-    assert rc == 0 and "note: cached" not in err  # healed: the next run finds it whole
-
-
-def test_clear_removes_the_object_and_its_checksum(cache):
-    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c")
-    (cache / "notes.txt").write_text("the user's own file\n")
-    count, _ = cache_folder.clear_cache(cache)
-    assert count == 4  # the library, the object and their checksums
-    assert sorted(p.name for p in cache.iterdir()) == ["notes.txt"]
+    assert cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c").tiny_answer() == 42
+    assert "note: cached" not in capsys.readouterr().err  # healed: the next build finds it whole
 
 
 def test_the_object_s_unit_is_what_the_runtime_source_includes():
