@@ -63,7 +63,7 @@ def test_other_flags_or_another_runtime_source_is_another_object(cache):
     lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c",
                                  [*cbuild.DEFAULT_FLAGS, "-O2"])
     assert lib.tiny_answer() == 42 and len(objects(cache)) == 2
-    lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, "/* another runtime */\n"),
+    lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, "int derive_tiny_extra;\n"),
                                  "tiny.c")
     assert lib.tiny_answer() == 42 and len(objects(cache)) == 3 and first in objects(cache)
 
@@ -99,8 +99,9 @@ def test_the_object_s_unit_is_what_the_runtime_source_includes():
 
 
 def test_a_method_s_selection_macro_leaves_the_object_alone(cache):
-    """A -DDERIVE_* macro the runtime's sources never name (a model's method selection) cannot
-    change its compile: the libraries share the object; one the runtime names is another object."""
+    """The object is keyed by the runtime as the preprocessor gives it: a macro the runtime never
+    reads (a model's method selection) leaves it alone, the libraries share it; one it reads, by
+    name or pasted, makes another object where it changes the text."""
     for flag in ("-DDERIVE_WITH_DOP853", "-DDERIVE_WITH_RK4"):
         lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c",
                                      [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
@@ -111,4 +112,11 @@ def test_a_method_s_selection_macro_leaves_the_object_alone(cache):
         lib = cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, reads), "tiny.c",
                                      [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
         assert lib.tiny_answer() == 42
+    # the unit that reads it compiles to the plain one's object without it, to another with it
+    assert len(objects(cache)) == 2
+    pastes = ("#define DERIVE_TINY_READ(m) DERIVE_CAT(DERIVE_WITH_, m)\n"  # a name it pastes
+              "#if DERIVE_TINY_READ(RK4) + 0\nint derive_tiny_pasted_rk4;\n#endif\n")
+    for flag in ("-DDERIVE_WITH_DOP853", "-DDERIVE_WITH_RK4"):
+        cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, pastes), "tiny.c",
+                               [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
     assert len(objects(cache)) == 3

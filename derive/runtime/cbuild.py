@@ -84,9 +84,9 @@ STAMP_SOURCE = "derive-build-stamp.c"
 HOST_SOURCE = "derive_host.c"
 RUNTIME_HEADER = "derive_runtime.h"
 RUNTIME_LINKED = "-DDERIVE_RUNTIME_LINKED"
-# That unit is the same in every library built with the same flags: it is compiled once per
-# flag set into an object kept in the cache (``derive_runtime-<key>.o``, with a checksum and a
-# stamp like a library's, :func:`_runtime_object`) and linked into each library from there.
+# That unit is the same in most libraries: it is compiled once per preprocessed text and
+# compiler flags into an object kept in the cache (``derive_runtime-<key>.o``, with a checksum
+# and a stamp like a library's, :func:`_runtime_object`) and linked into each library from there.
 RUNTIME_OBJECT = "derive_runtime"
 _QUOTED_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)
 _loaded: dict[str, ctypes.CDLL] = {}
@@ -313,7 +313,7 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
         units = list(mains)
         if HOST_SOURCE in units:  # the runtime's unit: its kept object, built once per flag set
             obj = f"{RUNTIME_OBJECT}.o"
-            (work / obj).write_bytes(_runtime_object(sources, cmd, flags))
+            (work / obj).write_bytes(_runtime_object(work, sources, cmd, flags))
             units[units.index(HOST_SOURCE)] = obj
         out = work / fname
         _run([*cmd, *flags, "-shared", "-o", str(out), *units, STAMP_SOURCE, "-lm"], work,
@@ -348,23 +348,26 @@ def _included(sources: dict[str, str], main: str) -> dict[str, str]:
     return unit
 
 
-def _read_by(unit: dict[str, str], flags: list[str]) -> list[str]:
-    """``flags`` without the ``-DDERIVE_*`` macros (derive's own, which no system header reads)
-    that no source of ``unit`` names: they cannot change its compile (a model's method selection
-    leaves the runtime's object alone)."""
-    text = "\n".join(unit.values())
-    return [f for f in flags if not (f.startswith("-DDERIVE_")
-                                     and f[2:].partition("=")[0] not in text)]
+def _preprocessed(work: Path, cmd: list[str], flags: list[str]) -> str:
+    """:data:`HOST_SOURCE` of the sources written in ``work`` as the preprocessor gives it with
+    ``flags`` (``-E -P``): every file it includes and every macro it reads, by name or pasted,
+    and nothing else."""
+    _run([*cmd, *flags, "-E", "-P", "-o", "derive-runtime-unit.i", HOST_SOURCE], work,
+         "preprocessing the runtime")
+    return (work / "derive-runtime-unit.i").read_text(errors="replace")
 
 
-def _runtime_object(sources: dict[str, str], cmd: list[str], flags: list[str]) -> bytes:
-    """The bytes of :data:`HOST_SOURCE` compiled (``-c``) with ``flags``: kept in the cache as
-    ``derive_runtime-<key>.o`` (key: the unit's sources, :func:`_included`, the compiler and the
-    flags it reads, :func:`_read_by`), verified (checksum and stamp) before use, built under its lock when missing or
-    damaged (a damaged one with a one-line note), like a library."""
+def _runtime_object(work: Path, sources: dict[str, str], cmd: list[str], flags: list[str]) -> bytes:
+    """The bytes of :data:`HOST_SOURCE` (of ``sources``, written in ``work``) compiled (``-c``)
+    with ``flags``: kept in the cache as ``derive_runtime-<key>.o``, verified (checksum and
+    stamp) before use, built under its lock when missing or damaged (a damaged one with a
+    one-line note), like a library. The key: the compiler, the unit as the preprocessor gives it
+    (:func:`_preprocessed`) and the flags other than ``-D``/``-U`` (whose effect is all in that
+    text), so that a macro the runtime never reads (a model's method selection) shares it."""
     unit = _included(sources, HOST_SOURCE)
-    flags = _read_by(unit, flags)
-    key = _key(unit, [HOST_SOURCE, "-c"], cmd, flags)
+    text = _preprocessed(work, cmd, flags)
+    key = _key({HOST_SOURCE: text}, [HOST_SOURCE, "-c"], cmd,
+               [f for f in flags if not f.startswith(("-D", "-U"))])
     fname = f"{RUNTIME_OBJECT}-{key[:24]}.o"
     for root in library_roots():
         target = root / fname
