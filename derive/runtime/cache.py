@@ -8,7 +8,7 @@ pattern (``$DERIVE_CACHE`` may name a folder that holds the user's own files):
   :data:`MARKER` file (a cache directory tag naming derive, :data:`MARKER_TEXT`);
 * every library is linked with a stamp, the symbol ``derive_build_<key>``, and has a sidecar
   ``<name>-<key>.so.sha256`` (``sha256sum`` format) naming it; so has the runtime's object
-  (``derive_runtime-<key>.o``, compiled once per flag set and linked into each library);
+  (``derive_runtime-<key>.o``, compiled once and linked into each library);
 * it removes a folder only if it is a real folder (never through a symbolic link) holding that
   marker, a file only if it is a library or checksum carrying those marks, and it neither reads
   nor writes through a ``models`` entry that is not a real folder.

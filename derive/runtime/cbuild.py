@@ -311,7 +311,7 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
             "/* Written by derive's compile cache: the library's key, checked at load. */\n"
             f"const int {stamp_symbol(key)} = 1;\n")
         units = list(mains)
-        if HOST_SOURCE in units:  # the runtime's unit: its kept object, built once per flag set
+        if HOST_SOURCE in units:  # the runtime's unit: its object, compiled once and kept
             obj = f"{RUNTIME_OBJECT}.o"
             (work / obj).write_bytes(_runtime_object(work, sources, cmd, flags))
             units[units.index(HOST_SOURCE)] = obj
