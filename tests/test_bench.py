@@ -9,6 +9,7 @@ import math
 import numpy as np
 import pytest
 
+from compiled_models import compiled_model
 from derive.bench import runner as bench
 from derive.bench import workprecision as work_precision
 from derive.bench import suite
@@ -99,9 +100,7 @@ def _states(formulation, n, rng):
 
 @pytest.mark.parametrize("key,formulation", KERNELS, ids=lambda k: "-".join(map(str, k)) if isinstance(k, tuple) else k)
 def test_baseline_rhs_agrees_with_the_generated_kernel(key, formulation):
-    from derive.bench.internals import kernel_for
-
-    kernel = kernel_for(*key)
+    kernel = compiled_model(*key)
     p = np.array([MOMENTS[n] for n in kernel.param_names])
     rhs, _ = _baseline(formulation, key[1], key[2])
     rng = np.random.default_rng(RNG_SEED)
@@ -125,9 +124,7 @@ def test_baseline_jacobian_is_the_derivative_of_its_rhs(key, formulation):
         J = np.array(jac_real(0.0, y))
         assert np.allclose(J, fd, rtol=1e-12, atol=1e-12 * np.max(np.abs(fd)))
     if formulation == "euler-angles" or "gravity" not in key[2]:
-        from derive.bench.internals import kernel_for
-
-        kernel = kernel_for(*key)
+        kernel = compiled_model(*key)
         p = np.array([MOMENTS[n] for n in kernel.param_names])
         for y in _states(formulation, 10, rng):
             ours = kernel.jac(0.0, y, p)

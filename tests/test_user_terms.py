@@ -18,6 +18,7 @@ import pytest
 import compile_once
 import derive
 from derive import SceneError, cli
+from derive.codegen.render import ROOT
 from derive.sim.scene import load_scene
 from derive.symbolic import expressions as ex
 
@@ -410,9 +411,8 @@ def test_the_figure_of_a_driven_body_does_not_call_its_energy_change_an_error():
     pytest.importorskip("matplotlib")
     from derive.sim import plots
 
-    res = derive.simulate(scene(torque=[{"name": "drive", "tau": ["0", "0", "A*cos(w*t)"],
-                                         "params": {"A": 0.01, "w": 3.0}}],
-                                potential=[magnet("-mu*B*R13")]))
+    # the documented driven body (its model is the one the energy summary and plot tests run)
+    res = derive.simulate(str(ROOT / "docs" / "own-body" / "magnetic_top.toml"), t_end=0.5, samples=101)
     fig = plots.figure(res)
     titles = {ax.get_label(): ax.get_title() for ax in fig.axes}
     assert "not conserved: torque 'drive' does work" in titles["energy"]

@@ -7,7 +7,8 @@ pattern (``$DERIVE_CACHE`` may name a folder that holds the user's own files):
 * every folder it creates (a build folder, a derived model's folder under ``models/``) holds a
   :data:`MARKER` file (a cache directory tag naming derive, :data:`MARKER_TEXT`);
 * every library is linked with a stamp, the symbol ``derive_build_<key>``, and has a sidecar
-  ``<name>-<key>.so.sha256`` (``sha256sum`` format) naming it;
+  ``<name>-<key>.so.sha256`` (``sha256sum`` format) naming it; so has the runtime's object
+  (``derive_runtime-<key>.o``, compiled once and linked into each library);
 * it removes a folder only if it is a real folder (never through a symbolic link) holding that
   marker, a file only if it is a library or checksum carrying those marks, and it neither reads
   nor writes through a ``models`` entry that is not a real folder.
@@ -51,7 +52,7 @@ MARKER_TEXT = ("Signature: 8a477f597d28d172789f06886806bc55\n"
                "# removes it. See https://bford.info/cachedir/ for cache directory tags.\n")
 STAMP_PREFIX = "derive_build_"
 _CHECKSUM_LINE = re.compile(r"([0-9a-f]{64})  (.+)\n")
-_KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.so")  # which stamp a library should carry
+_KEY_IN_NAME = re.compile(r".+-([0-9a-f]{24})\.s?o")  # which stamp a library (object) should carry
 # Models derived on demand (derive.runtime.catalogue) live in MODELS: each variant in a marked folder,
 # written as a hidden marked temporary (".<variant>-XXXXXXXX") and renamed into place
 # (write_folder), with a MANIFEST of its files' SHA-256 that read_folder checks.
@@ -385,9 +386,10 @@ def _own_checksum(path: Path) -> bool:
 
 
 def _own_library(path: Path) -> bool:
-    """A library the cache built: a file named ``*.so`` that a sidecar of the cache names, or
-    (its checksum lost) whose bytes carry the stamp its name gives."""
-    if not (path.name.endswith(".so") and stat.S_ISREG(_lmode(path))):
+    """A library (or the runtime's object) the cache built: a file named ``*.so`` (``*.o``) that a
+    sidecar of the cache names, or (its checksum lost) whose bytes carry the stamp its name
+    gives."""
+    if not (path.name.endswith((".so", ".o")) and stat.S_ISREG(_lmode(path))):
         return False
     if _own_checksum(path.with_name(path.name + CHECKSUM)):
         return True

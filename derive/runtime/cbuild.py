@@ -30,6 +30,7 @@ import ctypes
 import functools
 import hashlib
 import os
+import re
 import shlex
 import shutil
 import signal
@@ -41,8 +42,8 @@ from pathlib import Path
 from derive.codegen.render import TEMPLATES
 from derive.errors import CompilerError, note
 from derive.runtime.cache import (BUILD_PREFIX, CHECKSUM, MARKER, entry_lock, library_problem,
-                                  library_roots, make_room, mark, remove_stale_builds, stamp_symbol,
-                                  warn, why, writable_cache_dir)
+                                  library_roots, make_room, mark, read_plain, remove_stale_builds,
+                                  stamp_symbol, warn, why, writable_cache_dir)
 
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
@@ -83,6 +84,11 @@ STAMP_SOURCE = "derive-build-stamp.c"
 HOST_SOURCE = "derive_host.c"
 RUNTIME_HEADER = "derive_runtime.h"
 RUNTIME_LINKED = "-DDERIVE_RUNTIME_LINKED"
+# That unit is the same in most libraries: it is compiled once per preprocessed text and
+# compiler flags into an object kept in the cache (``derive_runtime-<key>.o``, with a checksum
+# and a stamp like a library's, :func:`_runtime_object`) and linked into each library from there.
+RUNTIME_OBJECT = "derive_runtime"
+_QUOTED_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)
 _loaded: dict[str, ctypes.CDLL] = {}
 _lock = threading.Lock()
 def compiler() -> list[str]:
@@ -304,8 +310,13 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
         (work / STAMP_SOURCE).write_text(
             "/* Written by derive's compile cache: the library's key, checked at load. */\n"
             f"const int {stamp_symbol(key)} = 1;\n")
+        units = list(mains)
+        if HOST_SOURCE in units:  # the runtime's unit: its object, compiled once and kept
+            obj = f"{RUNTIME_OBJECT}.o"
+            (work / obj).write_bytes(_runtime_object(work, sources, cmd, flags))
+            units[units.index(HOST_SOURCE)] = obj
         out = work / fname
-        _run([*cmd, *flags, "-shared", "-o", str(out), *mains, STAMP_SOURCE, "-lm"], work,
+        _run([*cmd, *flags, "-shared", "-o", str(out), *units, STAMP_SOURCE, "-lm"], work,
              f"compiling {name}")
         side = work / (fname + CHECKSUM)
         side.write_text(f"{_sha256(out)}  {fname}\n")
@@ -314,6 +325,95 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
             make_room(dest)
         os.replace(side, target.with_name(fname + CHECKSUM))
         os.replace(out, target)  # atomic: a reader sees no library or the whole one
+        return target
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def _included(sources: dict[str, str], main: str) -> dict[str, str]:
+    """``main`` and every source it includes by a quoted ``#include``, transitively: what its
+    compile can read of ``sources``. All of ``sources`` when an include is not a plain
+    ``#include "name"`` of one of them (a computed one cannot be followed)."""
+    todo, unit = [main], {}
+    while todo:
+        name = todo.pop()
+        if name in unit:
+            continue
+        if name not in sources:
+            return dict(sources)
+        unit[name] = sources[name]
+        if re.search(r"^[ \t]*#[ \t]*include[ \t]*[^\s<\"]", sources[name], re.MULTILINE):
+            return dict(sources)
+        todo += _QUOTED_INCLUDE.findall(sources[name])
+    return unit
+
+
+def _preprocessed(work: Path, cmd: list[str], flags: list[str]) -> str:
+    """:data:`HOST_SOURCE` of the sources written in ``work`` as the preprocessor gives it with
+    ``flags`` (``-E -P``): every file it includes and every macro it reads, by name or pasted,
+    and nothing else."""
+    _run([*cmd, *flags, "-E", "-P", "-o", "derive-runtime-unit.i", HOST_SOURCE], work,
+         "preprocessing the runtime")
+    return (work / "derive-runtime-unit.i").read_text(errors="replace")
+
+
+def _runtime_object(work: Path, sources: dict[str, str], cmd: list[str], flags: list[str]) -> bytes:
+    """The bytes of :data:`HOST_SOURCE` (of ``sources``, written in ``work``) compiled (``-c``)
+    with ``flags``: kept in the cache as ``derive_runtime-<key>.o``, verified (checksum and
+    stamp) before use, built under its lock when missing or damaged (a damaged one with a
+    one-line note), like a library. The key: the compiler, the unit as the preprocessor gives it
+    (:func:`_preprocessed`) and the flags other than ``-D``/``-U`` (whose effect is all in that
+    text), so that a macro the runtime never reads (a model's method selection) shares it."""
+    unit = _included(sources, HOST_SOURCE)
+    text = _preprocessed(work, cmd, flags)
+    key = _key({HOST_SOURCE: text}, [HOST_SOURCE, "-c"], cmd,
+               [f for f in flags if not f.startswith(("-D", "-U"))])
+    fname = f"{RUNTIME_OBJECT}-{key[:24]}.o"
+    for root in library_roots():
+        target = root / fname
+        if os.path.lexists(target):
+            problem = library_problem(target, key)
+            if problem is None:
+                return read_plain(target)
+            warn(f"note: cached object {target} {problem}; rebuilding it")
+    root = writable_cache_dir()
+    with entry_lock(root, fname):
+        target = root / fname
+        if library_problem(target, key) is not None:  # else built by the process waited for
+            target = _build_object(fname, key, unit, cmd, flags)
+        problem = library_problem(target, key)
+        if problem is not None:
+            raise CompilerError(f"the runtime object just built ({target}) {problem}")
+        return read_plain(target)
+
+
+def _build_object(fname: str, key: str, unit: dict[str, str], cmd: list[str],
+                  flags: list[str]) -> Path:
+    """Compile the runtime's unit with the stamp of ``key`` into a marked build folder and move
+    its checksum, then the object, into place (as :func:`_build` does a library)."""
+    root = writable_cache_dir()
+    remove_stale_builds(root)
+    try:
+        work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{RUNTIME_OBJECT}-", dir=root))
+    except OSError as exc:
+        raise CompilerError(f"cannot create a build folder in {root} ({why(exc)})") from None
+    try:
+        mark(work)
+        _write_sources(work, unit)
+        (work / STAMP_SOURCE).write_text(
+            "/* Written by derive's compile cache: the runtime's unit with the object's key,\n"
+            " * checked before the object is linked. */\n"
+            f'#include "{HOST_SOURCE}"\n'
+            f"const int {stamp_symbol(key)} = 1;\n")
+        out = work / fname
+        _run([*cmd, *flags, "-c", "-o", str(out), STAMP_SOURCE], work, "compiling the runtime")
+        side = work / (fname + CHECKSUM)
+        side.write_text(f"{_sha256(out)}  {fname}\n")
+        target = root / fname
+        for dest in (target.with_name(fname + CHECKSUM), target):
+            make_room(dest)
+        os.replace(side, target.with_name(fname + CHECKSUM))
+        os.replace(out, target)
         return target
     finally:
         shutil.rmtree(work, ignore_errors=True)
