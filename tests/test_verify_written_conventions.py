@@ -104,8 +104,17 @@ def test_a_vector_the_text_defines_is_read_with_its_definition_later():
     law = "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}"
     body = "\\vec{F_b} = m \\left( \\frac{d\\vec{V_b}}{dt_b} SIGN \\vec{\\omega_b} \\times \\vec{V_b} \\right)"
     text = _FRAMES.replace("BODY", law) + "\nand in the body frame\n\n$$\nLATER\n$$\n"
-    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "unchecked"), (15, "holds")]
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "holds"), (15, "holds")]
     assert verdicts(text.replace("LATER", body.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_newtons_law_with_the_inertial_derivative_is_a_law_the_reader_recognises():
+    assert verdicts(_FRAMES.replace("BODY", "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}")) == [(9, "holds")]
+
+
+def test_newtons_law_with_a_body_frame_derivative_or_another_factor_is_flagged():
+    for slip in ("\\vec{F} = m \\frac{d \\vec{V}}{dt_b}", "\\vec{F} = 2 m \\frac{d \\vec{V}}{dt_i}"):
+        assert verdicts(_FRAMES.replace("BODY", slip)) == [(9, "fails")]
 
 
 def test_vectors_of_the_text_that_nothing_ties_are_never_judged():

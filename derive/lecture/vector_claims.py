@@ -69,6 +69,10 @@ class VectorStatements:
                 continue
             ref = vc.reference(reading, k)
             if ref is None and k == 1 and self._defines_vector(reading):
+                law = vc.newton(reading, self.d)
+                if law is not None:
+                    self._add(line, piece, "law", *law)
+                    continue
                 self._add(line, piece, "definition", "unchecked", f"defines the text's vector "
                           f"{next(iter(vc.generics(first[0].value)))} (recorded, then used)")
                 continue
