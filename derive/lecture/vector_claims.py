@@ -15,6 +15,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import vector_models as vm
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
 from derive.lecture.vector_models import is_quantity
@@ -54,6 +55,11 @@ class VectorStatements:
         for row in reading.members if put and reading.model == "frame" else ():
             for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
                 m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
+        if reading.model == "frame" and any(m.value.has(*vm.RIGID) for m in first if hasattr(m.value, "has")):
+            rigid = vm.Model("frame", self.d).rigid()     # the text's tensor written: 𝐋 = I𝛚 of the rigid body
+            for row in reading.members:
+                for m in row:
+                    m.value = m.value.xreplace(rigid) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
         if len(first) == 1:
