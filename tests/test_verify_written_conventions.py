@@ -198,3 +198,30 @@ def test_a_display_the_prose_calls_the_angular_momentum_names_its_letter_so_h_eq
 def test_h_equal_to_a_wrong_product_is_flagged():
     for slip in ("2 I \\vec{\\omega}", "\\vec{\\omega} \\times I \\vec{\\omega}"):
         assert verdicts(_NAMED.replace("RIGHT", slip))[-1][1] in ("typo", "fails")
+
+
+_R_TO_BODY = ("\\begin{bmatrix} \\cos\\theta\\cos\\psi & \\cos\\theta\\sin\\psi & -\\sin\\theta \\\\ \\sin\\phi\\sin\\theta"
+              "\\cos\\psi - \\cos\\phi\\sin\\psi & \\sin\\phi\\sin\\theta\\sin\\psi + \\cos\\phi\\cos\\psi & \\sin\\phi\\cos\\theta"
+              " \\\\ \\cos\\phi\\sin\\theta\\cos\\psi + \\sin\\phi\\sin\\psi & \\cos\\phi\\sin\\theta\\sin\\psi - \\sin\\phi"
+              "\\cos\\psi & \\cos\\phi\\cos\\theta \\end{bmatrix}")
+_GRAVITY = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Gravity\n\nThe inertial frame is FRAME. "
+            "From inertial to body coordinates:\n\n$$\nR_{i \\rightarrow b} = " + _R_TO_BODY + "\n$$\n\nand back, "
+            "$R_{b \\rightarrow i} = R_{i \\rightarrow b}^T$. Gravity in body components:\n\n$$\nF_g = WEIGHT\n$$\n")
+
+
+def test_the_weight_rotated_into_body_axes_holds_with_the_down_axis_the_prose_gives():
+    ned = _GRAVITY.replace("FRAME", "north-east-down")
+    assert verdicts(ned.replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, mg]^T"))[-1] == (15, "holds")
+    up = _GRAVITY.replace("FRAME", "fixed to the ground with $z$ up")
+    assert verdicts(up.replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, -mg]^T"))[-1] == (15, "holds")
+
+
+def test_the_weight_with_the_wrong_sign_or_rotated_the_wrong_way_fails():
+    ned = _GRAVITY.replace("FRAME", "north-east-down")
+    for slip in ("R_{i \\rightarrow b} [0, 0, -mg]^T", "R_{b \\rightarrow i} [0, 0, mg]^T"):
+        assert verdicts(ned.replace("WEIGHT", slip))[-1] == (15, "fails")
+
+
+def test_the_weight_in_a_frame_whose_vertical_the_text_never_gives_is_not_judged():
+    text = _GRAVITY.replace("FRAME", "fixed to the ground").replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, mg]^T")
+    assert verdicts(text)[-1] == (15, "unchecked")

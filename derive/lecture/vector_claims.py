@@ -1,6 +1,7 @@
 """Statements in vectors for the notes checker: sums over particles, the inertia tensor, frame
 derivatives (read by `derive.lecture.vectors`, with a single-edit search of the LaTeX for a
-correction), and the torque-free d𝐋/dt = 0 written out in components.
+correction), the torque-free d𝐋/dt = 0 written out in components, Newton's law with the inertial
+derivative (`vectors.newton`) and a weight rotated into body axes (``F_g = R_{i→b} [0, 0, mg]^T``).
 
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
@@ -20,6 +21,7 @@ from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
 from derive.lecture.vector_models import is_quantity
 from derive.lecture.vector_parser import LAW
+from derive.symbolic.rotations import ANGLES
 
 
 class VectorStatements:
@@ -165,6 +167,36 @@ class VectorStatements:
         self.ctx.vectors[name] = (tuple(value), tuple(first[1].value))
         return True
 
+    def _weight(self, line, piece, sym, value) -> bool:
+        """``F_g = R_{i \\rightarrow b} [0, 0, mg]^T``: the weight named F_g, in body components, is m g
+        Rᵀ𝐝 with 𝐝 the inertial frame's downward unit vector the prose gives (north-east-down, "z
+        down": +ẑ; "z up": −ẑ). Holds or fails against that; False (not this rule's) when the symbol
+        is not a weight or its value not a column in the angles, a mass and g."""
+        atom = self.vocab.generic.get(sym)
+        claim = self._resolve(value)
+        if atom is None or atom.base not in ("F", "W") or atom.sub not in _WEIGHT or atom.dots or atom.hat \
+                or not isinstance(claim, sp.MatrixBase) or claim.shape != (3, 1):
+            return False
+        g = next((s for s in free(claim) if s.name == "g"), None)
+        rest = free(claim) - set(ANGLES) - {g}
+        if g is None or len(rest) != 1 or next(iter(rest)).name.split("_")[0] not in ("m", "M", "Mass"):
+            return False
+        prose = self.notes.body or ""
+        down = 1 if _DOWN.search(prose) else (-1 if _UP.search(prose) else 0)
+        if not down:
+            self._add(line, piece, "weight", "unchecked", f"{self.tex(sym)} as the weight needs the direction "
+                      "of gravity in the inertial frame, which the text does not say (z up or down)")
+            return True
+        weight = next(iter(rest)) * g * self.d.conv.matrix().T * sp.Matrix([0, 0, down])
+        diff = (claim - weight).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e)))
+        where = f"{self.tex(sym)} as the weight m g Rᵀ𝐝, 𝐝 = {'+' if down > 0 else '−'}ẑ downward (as the text's frame is)"
+        if diff == sp.zeros(3, 1):
+            self._add(line, piece, "weight", "holds", f"{where}, in body components: trig_reduce")
+        else:
+            k = next(n for n in range(3) if diff[n] != 0)
+            self._add(line, piece, "weight", "fails", f"{where}: component {k + 1} differs")
+        return True
+
     def _vector_fix(self, reading, k, piece):
         """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
         rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
@@ -205,6 +237,11 @@ class VectorStatements:
         self._add(line, piece, "equation of motion", "holds",
                   "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
+
+
+_WEIGHT = ("g", "grav", "gravity", "")
+_DOWN = re.compile(r"north[- ]east[- ]down|\bNED\b|\$?\+?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?down", re.I)
+_UP = re.compile(r"east[- ]north[- ]up|\bENU\b|\$?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?up(?:ward)?\b", re.I)
 
 
 def _top_level_plus(src: str) -> list:
