@@ -7,7 +7,7 @@ Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 :mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
-:mod:`derive.lecture.comparing`, SymPy.
+:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles), SymPy.
 """
 from __future__ import annotations
 
