@@ -28,7 +28,7 @@ SHORT = {
     # (text, target): why the reader is short of it today
 }
 
-FLOOR = {"checked": 263, "slips_flagged": 29, "holds_flagged": 0}
+FLOOR = {"checked": 264, "slips_flagged": 29, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -225,3 +225,17 @@ def test_the_weight_with_the_wrong_sign_or_rotated_the_wrong_way_fails():
 def test_the_weight_in_a_frame_whose_vertical_the_text_never_gives_is_not_judged():
     text = _GRAVITY.replace("FRAME", "fixed to the ground").replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, mg]^T")
     assert verdicts(text)[-1] == (15, "unchecked")
+
+
+_POSITION = _GRAVITY.replace("FRAME", "north-east-down").replace(
+    "Gravity in body components:\n\n$$\nF_g = WEIGHT\n$$\n",
+    "The position changes with the velocity $\\vec{V_b}$, given in the body frame:\n\n$$\n"
+    "\\frac{d \\vec{r_i}}{dt} = MATRIX \\vec{V_b}\n$$\n")
+
+
+def test_the_position_rate_is_the_body_velocity_turned_into_inertial_components():
+    assert verdicts(_POSITION.replace("MATRIX", "R_{b \\rightarrow i}"))[-1] == (15, "holds")
+
+
+def test_the_position_rate_with_the_velocity_turned_the_wrong_way_fails():
+    assert verdicts(_POSITION.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")

@@ -1,7 +1,8 @@
 """Statements in vectors for the notes checker: sums over particles, the inertia tensor, frame
 derivatives (read by `derive.lecture.vectors`, with a single-edit search of the LaTeX for a
 correction), the torque-free d𝐋/dt = 0 written out in components, Newton's law with the inertial
-derivative (`vectors.newton`) and a weight rotated into body axes (``F_g = R_{i→b} [0, 0, mg]^T``).
+derivative (`vectors.newton`), a weight rotated into body axes (``F_g = R_{i→b} [0, 0, mg]^T``) and
+a position's inertial rate as the body velocity turned (ṙᵢ = R𝐕_b).
 
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
@@ -32,6 +33,8 @@ class VectorStatements:
         """A statement in vectors, tensors, sums over particles or frame derivatives
         (`derive.lecture.vectors`): each member against the first, a single-edit search of the
         LaTeX for a correction. False when that reader cannot read it either."""
+        if self._position_rate(line, piece, text):
+            return True
         self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
         try:
             reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
@@ -167,6 +170,31 @@ class VectorStatements:
         self.ctx.vectors[name] = (tuple(value), tuple(first[1].value))
         return True
 
+    def _position_rate(self, line, piece, text) -> bool:
+        """``\\frac{d \\vec{r_i}}{dt} = R_{b \\rightarrow i} \\vec{V_b}``: the rate of a position's
+        inertial components is its velocity's body components turned into inertial ones, ṙᵢ = R 𝐕_b
+        (𝐕_b = Rᵀṙᵢ by what body components are, R body → inertial). Holds when the written matrix
+        is R (the text's own, resolved), fails for another; False when the statement is not one."""
+        m = _POSITION_RATE.match(text.strip())
+        if m is None or m.group(1) not in "rpxs" or m.group(3) not in "Vv" or "velocity" not in (self.notes.body or ""):
+            return False
+        try:
+            matrix = self._resolve(lx.parse(m.group(2), self.vocab).members[0].value)
+        except (lx.NotRead, TypeError, ValueError, AttributeError):
+            return False
+        if not isinstance(matrix, sp.MatrixBase) or matrix.shape != (3, 3) or not free(matrix) <= set(ANGLES):
+            return False
+        R = self.d.conv.matrix()
+        diff = (matrix - R).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e)))
+        what = "the position's inertial rate is its velocity's body components turned by R (body → inertial)"
+        if diff == sp.zeros(3, 3):
+            self._add(line, piece, "kinematics", "holds", f"{what}: ṙᵢ = R 𝐕_b, 𝐕_b = Rᵀṙᵢ: trig_reduce")
+        else:
+            turned = (matrix - R.T).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e))) == sp.zeros(3, 3)
+            self._add(line, piece, "kinematics", "fails", f"{what}; the matrix written is "
+                      + ("Rᵀ, which turns inertial components into body ones" if turned else "not R"))
+        return True
+
     def _weight(self, line, piece, sym, value) -> bool:
         """``F_g = R_{i \\rightarrow b} [0, 0, mg]^T``: the weight named F_g, in body components, is m g
         Rᵀ𝐝 with 𝐝 the inertial frame's downward unit vector the prose gives (north-east-down, "z
@@ -239,6 +267,9 @@ class VectorStatements:
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
 
 
+_LABELLED = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
+_POSITION_RATE = re.compile(r"\\frac\s*\{\s*d\s*" + _LABELLED % r"(?:i|I|N|e)" + r"\s*\}\s*\{\s*dt\s*\}\s*=\s*"
+                            r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)\s*" + _LABELLED % r"(?:b|B)" + r"\s*$")
 _WEIGHT = ("g", "grav", "gravity", "")
 _DOWN = re.compile(r"north[- ]east[- ]down|\bNED\b|\$?\+?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?down", re.I)
 _UP = re.compile(r"east[- ]north[- ]up|\bENU\b|\$?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?up(?:ward)?\b", re.I)
