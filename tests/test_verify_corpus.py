@@ -26,13 +26,9 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
-    ("byuflowlab-sixdof-aircraft-321-theory", "checked"):
-        "the inertia tensor written I_b beside frame derivatives (H = I omega, Euler's equation), a bare "
-        "matrix the prose names (wind to body), the position's kinematics, gravity's definition, and the "
-        "airspeed's definitions in vectors with the angles defined from them are not read",
 }
 
-FLOOR = {"checked": 258, "slips_flagged": 29, "holds_flagged": 0}
+FLOOR = {"checked": 264, "slips_flagged": 29, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -170,3 +170,30 @@ def test_a_function_the_text_names_with_its_variables_is_checked_through_what_it
     claims = kept.check_text(text)
     assert [(c.kind, c.verdict) for c in claims] == [("new symbol", "unchecked"), ("equation of motion", "holds"),
                                                      ("equation of motion", "typo")]
+
+
+@pytest.mark.parametrize("written, read", [
+    (r"\vec{r_i} = [x, y, z]^T", r"\vec{r_i} = \begin{bmatrix} x \\ y \\ z \end{bmatrix}"),
+    (r"\vec{w} = \left[p, q, r\right]^{\top}", r"\vec{w} = \begin{bmatrix} p \\ q \\ r \end{bmatrix}"),
+    (r"R (a, f(x, y), c)^T", r"R \begin{bmatrix} a \\ f(x, y) \\ c \end{bmatrix}"),
+])
+def test_a_row_of_entries_transposed_is_the_column_vector_it_means(written, read):
+    assert source.normalize(written) == read
+
+
+@pytest.mark.parametrize("written", [r"f(x, y)^T", r"(a + b)^T", r"A^T = [a]^T"])
+def test_a_call_or_a_single_entry_transposed_is_left_as_written(written):
+    assert source.normalize(written) == written
+
+
+_TO_BODY = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Frames\n\nFrom inertial to body axes:\n\n"
+            "$$\nR_{i \\rightarrow b} = \\begin{bmatrix} \\cos\\theta\\cos\\psi & \\cos\\theta\\sin\\psi & -\\sin\\theta \\\\ "
+            "\\sin\\phi\\sin\\theta\\cos\\psi - \\cos\\phi\\sin\\psi & \\sin\\phi\\sin\\theta\\sin\\psi + \\cos\\phi\\cos\\psi "
+            "& \\sin\\phi\\cos\\theta \\\\ \\cos\\phi\\sin\\theta\\cos\\psi + \\sin\\phi\\sin\\psi & \\cos\\phi\\sin\\theta"
+            "\\sin\\psi - \\sin\\phi\\cos\\psi & \\cos\\phi\\cos\\theta \\end{bmatrix}\n$$\n\nThe inertial z axis in body "
+            "axes:\n\n$$\nR_{i \\rightarrow b} [0, 0, 1]^T = [SIGN\\sin\\theta, \\sin\\phi\\cos\\theta, \\cos\\phi\\cos\\theta]^T\n$$\n")
+
+
+def test_a_rotation_of_a_column_written_as_transposed_rows_holds_and_a_slip_never_does():
+    assert [c.verdict for c in kept.check_text(_TO_BODY.replace("SIGN", "-"))] == ["holds", "holds"]
+    assert kept.check_text(_TO_BODY.replace("SIGN", ""))[-1].verdict != "holds"

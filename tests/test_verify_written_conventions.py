@@ -1,6 +1,9 @@
 """Conventions of writing that real texts use: a fenced ``math`` block is a display, an inertia matrix
 with −I_xy off its diagonal names the products of inertia +∫xy dm, and a chain of principal moments
-with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃."""
+with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃; Newton's law and Euler's equation written with frame
+derivatives (d𝐕/dt_i, I_b d𝛚_b/dt_b) and a vector the prose calls the angular momentum (𝐇 = I𝛚)."""
+import pytest
+
 import kept_readings as kept
 
 
@@ -104,8 +107,17 @@ def test_a_vector_the_text_defines_is_read_with_its_definition_later():
     law = "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}"
     body = "\\vec{F_b} = m \\left( \\frac{d\\vec{V_b}}{dt_b} SIGN \\vec{\\omega_b} \\times \\vec{V_b} \\right)"
     text = _FRAMES.replace("BODY", law) + "\nand in the body frame\n\n$$\nLATER\n$$\n"
-    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "unchecked"), (15, "holds")]
+    assert verdicts(text.replace("LATER", body.replace("SIGN", "+"))) == [(9, "holds"), (15, "holds")]
     assert verdicts(text.replace("LATER", body.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_newtons_law_with_the_inertial_derivative_is_a_law_the_reader_recognises():
+    assert verdicts(_FRAMES.replace("BODY", "\\vec{F} = m \\frac{d \\vec{V}}{dt_i}")) == [(9, "holds")]
+
+
+def test_newtons_law_with_a_body_frame_derivative_or_another_factor_is_flagged():
+    for slip in ("\\vec{F} = m \\frac{d \\vec{V}}{dt_b}", "\\vec{F} = 2 m \\frac{d \\vec{V}}{dt_i}"):
+        assert verdicts(_FRAMES.replace("BODY", slip)) == [(9, "fails")]
 
 
 def test_vectors_of_the_text_that_nothing_ties_are_never_judged():
@@ -144,3 +156,86 @@ def test_a_relation_typed_as_a_plus_sign_is_a_typo_corrected_in_the_texts_latex(
 def test_a_sum_of_vectors_that_no_single_relation_makes_hold_is_no_claim():
     text = _FRAMES.replace("BODY", "\\left.\\frac{d \\vec{v}}{dt}\\right|_i + \\vec{\\omega} \\times \\vec{v}")
     assert verdicts(text) == [(9, "unchecked")]
+
+
+_MOMENT = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Rotation\n\nThe moment is the inertial "
+           "rate of change of the angular momentum:\n\n$$\n\\vec{M} = \\frac{d\\vec{H}}{dt_i}\n$$\n\nThe angular momentum is "
+           "the inertia tensor times the angular velocity, in body components:\n\n$$\n\\vec{H_b} = I_b \\vec{\\omega_b}\n$$\n"
+           "\nwith the inertia tensor constant in the body frame, so\n\n$$\nLATER\n$$\n")
+_EULER = "\\vec{M_b} = I_b \\frac{d\\vec{\\omega_b}}{dt_b} SIGN \\vec{\\omega_b} \\times I_b \\vec{\\omega_b}"
+_SOLVED = "\\frac{d\\vec{\\omega_b}}{dt_b} = I_b^{-1} \\left(\\vec{M_b} SIGN \\vec{\\omega_b} \\times I_b \\vec{\\omega_b} \\right)"
+
+
+def test_eulers_equation_with_the_inertia_tensor_and_frame_derivatives_holds():
+    assert verdicts(_MOMENT.replace("LATER", _EULER.replace("SIGN", "+")))[-1] == (21, "holds")
+
+
+def test_eulers_equation_in_tensor_form_with_a_slip_is_flagged():
+    for slip in (_EULER.replace("SIGN", "-"), "\\vec{M_b} = I_b \\frac{d\\vec{\\omega_b}}{dt_b}"):
+        assert verdicts(_MOMENT.replace("LATER", slip))[-1][1] in ("typo", "fails")
+
+
+@pytest.mark.slow
+def test_eulers_equation_solved_with_the_inverse_tensor_holds_and_a_slip_is_flagged():
+    assert verdicts(_MOMENT.replace("LATER", _SOLVED.replace("SIGN", "-")))[-1] == (21, "holds")
+    assert verdicts(_MOMENT.replace("LATER", _SOLVED.replace("SIGN", "+")))[-1][1] in ("typo", "fails")
+
+
+def test_eulers_equation_for_a_vector_the_text_never_names_the_angular_momentum_is_not_judged():
+    text = _MOMENT.replace("The angular momentum is the inertia tensor times", "Also, take")
+    assert verdicts(text.replace("LATER", _EULER.replace("SIGN", "+")))[-1][1] == "unchecked"
+
+
+_NAMED = (_HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n\nThe angular momentum is the inertia tensor times the "
+          "angular velocity:\n\n$$\n\\vec{H} = RIGHT\n$$\n")
+
+
+def test_a_display_the_prose_calls_the_angular_momentum_names_its_letter_so_h_equals_i_omega_holds():
+    assert verdicts(_NAMED.replace("RIGHT", "I \\vec{\\omega}")) == [(3, "holds"), (9, "holds")]
+    assert verdicts(_NAMED.replace("RIGHT", "I_b \\vec{\\omega_b}").replace("\\vec{H}", "\\vec{H_b}"))[-1] == (9, "holds")
+
+
+def test_h_equal_to_a_wrong_product_is_flagged():
+    for slip in ("2 I \\vec{\\omega}", "\\vec{\\omega} \\times I \\vec{\\omega}"):
+        assert verdicts(_NAMED.replace("RIGHT", slip))[-1][1] in ("typo", "fails")
+
+
+_R_TO_BODY = ("\\begin{bmatrix} \\cos\\theta\\cos\\psi & \\cos\\theta\\sin\\psi & -\\sin\\theta \\\\ \\sin\\phi\\sin\\theta"
+              "\\cos\\psi - \\cos\\phi\\sin\\psi & \\sin\\phi\\sin\\theta\\sin\\psi + \\cos\\phi\\cos\\psi & \\sin\\phi\\cos\\theta"
+              " \\\\ \\cos\\phi\\sin\\theta\\cos\\psi + \\sin\\phi\\sin\\psi & \\cos\\phi\\sin\\theta\\sin\\psi - \\sin\\phi"
+              "\\cos\\psi & \\cos\\phi\\cos\\theta \\end{bmatrix}")
+_GRAVITY = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Gravity\n\nThe inertial frame is FRAME. "
+            "From inertial to body coordinates:\n\n$$\nR_{i \\rightarrow b} = " + _R_TO_BODY + "\n$$\n\nand back, "
+            "$R_{b \\rightarrow i} = R_{i \\rightarrow b}^T$. Gravity in body components:\n\n$$\nF_g = WEIGHT\n$$\n")
+
+
+def test_the_weight_rotated_into_body_axes_holds_with_the_down_axis_the_prose_gives():
+    ned = _GRAVITY.replace("FRAME", "north-east-down")
+    assert verdicts(ned.replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, mg]^T"))[-1] == (15, "holds")
+    up = _GRAVITY.replace("FRAME", "fixed to the ground with $z$ up")
+    assert verdicts(up.replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, -mg]^T"))[-1] == (15, "holds")
+
+
+def test_the_weight_with_the_wrong_sign_or_rotated_the_wrong_way_fails():
+    ned = _GRAVITY.replace("FRAME", "north-east-down")
+    for slip in ("R_{i \\rightarrow b} [0, 0, -mg]^T", "R_{b \\rightarrow i} [0, 0, mg]^T"):
+        assert verdicts(ned.replace("WEIGHT", slip))[-1] == (15, "fails")
+
+
+def test_the_weight_in_a_frame_whose_vertical_the_text_never_gives_is_not_judged():
+    text = _GRAVITY.replace("FRAME", "fixed to the ground").replace("WEIGHT", "R_{i \\rightarrow b} [0, 0, mg]^T")
+    assert verdicts(text)[-1] == (15, "unchecked")
+
+
+_POSITION = _GRAVITY.replace("FRAME", "north-east-down").replace(
+    "Gravity in body components:\n\n$$\nF_g = WEIGHT\n$$\n",
+    "The position changes with the velocity $\\vec{V_b}$, given in the body frame:\n\n$$\n"
+    "\\frac{d \\vec{r_i}}{dt} = MATRIX \\vec{V_b}\n$$\n")
+
+
+def test_the_position_rate_is_the_body_velocity_turned_into_inertial_components():
+    assert verdicts(_POSITION.replace("MATRIX", "R_{b \\rightarrow i}"))[-1] == (15, "holds")
+
+
+def test_the_position_rate_with_the_velocity_turned_the_wrong_way_fails():
+    assert verdicts(_POSITION.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")

@@ -30,7 +30,10 @@ class AlgebraStatements:
     @property
     def _alg(self) -> va.State:
         if "_alg_state" not in self.__dict__:
-            self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""))
+            names = getattr(self.notes, "names", None)
+            momenta = frozenset(b for (b, kind), m in (names.letters.items() if names else ()) if
+                                kind == "vector" and m == "angular momentum")
+            self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""), momenta=momenta)
             self._alg_read = False
         return self._alg_state
 

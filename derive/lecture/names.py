@@ -93,7 +93,7 @@ MEANINGS = {
 """The meanings a text may give its symbols: how each binds and the phrase that gives it."""
 
 LETTERS = {
-    "angular momentum": ("L", "M", "J"), "angular velocity": ("omega", "Omega", "w", "W"),
+    "angular momentum": ("L", "M", "J", "H", "h"), "angular velocity": ("omega", "Omega", "w", "W"),
     "torque": ("tau", "N", "T", "M", "G", "Gamma", "K"), "mass": ("m", "M", "mu"),
     "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravitational acceleration": ("g",),
     "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
@@ -296,6 +296,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
                 continue
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
+    _said_of_display(names, body)
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():
@@ -312,6 +313,27 @@ _RATE_AXES = {"roll rate": 0, "pitch rate": 1, "yaw rate": 2}
 _LISTED = r"((?:\$[^$]+\$[\s,]*(?:and\s+)?){1,3})"
 _COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:be|are|denote)\s+the\s+(?:[\w-]+\s+){0,2}"
                          r"components\s+)of the (?:unit )?vector\s+\$([^$]+)\$")
+
+
+_SAID = re.compile(r"(?:^|\s)(?:the|its)\s+(?:[\w-]+\s+)?(PHRASE)\s+(?:is|equals|reads|becomes)\b[^$]*$", re.I)
+_ROW_SIDE = re.compile(r"^\s*(?:\\begin\{\w+\*?\}(?:\{[^{}]*\})?)?\s*([^=&]+?)\s*&?\s*=", re.M)
+
+
+def _said_of_display(names: Names, body: str):
+    """"The angular momentum is the inertia tensor times the angular velocity:" followed by a
+    display whose rows open with one symbol (𝐇 = I𝛚, 𝐇_b = I_b𝛚_b): the sentence says what that
+    symbol is, as it would next to the symbol inline."""
+    for m in _DISPLAY.finditer(body):
+        sentence = re.split(r"[.;!?]\s|\n\s*\n|\$\$", body[:m.start()].rstrip())[-1]
+        meaning = next((name for name, (how, phrase) in MEANINGS.items() if how == "letter" and
+                        re.search(_SAID.pattern.replace("PHRASE", phrase), sentence, flags=re.I)), None)
+        if meaning is None:
+            continue
+        inner = re.sub(r"^\$\$|\$\$$", "", m.group(0))
+        sides = [_atoms(source.normalize(side)) for side in _ROW_SIDE.findall(inner.replace("\\\\", "\n"))]
+        atoms = [a[0] for a in sides if len(a) == 1]
+        if atoms and len(atoms) == len(sides) and len({a.base for a in atoms}) == 1 and _fits(meaning, atoms):
+            _bind(names, atoms, meaning, f"line {body.count(chr(10), 0, m.start()) + 1}")
 
 
 def _components_of(names: Names, text: str, starts, offset):

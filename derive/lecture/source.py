@@ -375,6 +375,58 @@ def _cross_matrices(text: str) -> str:
         text = text[:left] + r"\crossmatrix\left(" + inner + r"\right)" + text[m.end():]
 
 
+_TRANSPOSE = re.compile(r"\s*\^\s*(?:\{\s*(?:T|\\top|\\intercal|\\mathsf\{T\}|\\mathrm\{T\})\s*\}|T(?![A-Za-z])|\\top\b|\\intercal\b)")
+_PAIRS = {"]": "[", ")": "("}
+
+
+def _transposed_rows(text: str) -> str:
+    """``[x, y, z]^T`` (also ``(x, y, z)^T``, ``\\left[ … \\right]^{\\top}``): a row of entries
+    transposed, the column vector the text means, written as a ``bmatrix`` column."""
+    at = 0
+    while True:
+        m = next((m for m in _TRANSPOSE.finditer(text, at) if text[:m.start()].rstrip()[-1:] in _PAIRS), None)
+        if m is None:
+            return text
+        close = text[:m.start()].rstrip()
+        right = close.endswith("\\right" + close[-1])
+        end, depth, k, commas = len(close) - 1, 0, len(close) - 1, []
+        while k >= 0:
+            ch = text[k]
+            if ch in ")]}":
+                depth += 1
+            elif ch in "([{":
+                depth -= 1
+                if depth == 0:
+                    break
+            elif ch == "," and depth == 1:
+                commas.append(k)
+            k -= 1
+        called = text[k] == "(" and k > 0 and (text[k - 1].isalnum() or text[k - 1] in "}_'")   # f(x, y)
+        if k < 0 or text[k] != _PAIRS[close[-1]] or not commas or called:
+            at = m.end()
+            continue
+        left = k - 5 if text[max(k - 5, 0):k] == "\\left" else k
+        inner = text[k + 1:end - (6 if right else 0)]
+        entries = [e.strip() for e in _split_top(inner)]
+        column = r"\begin{bmatrix} " + r" \\ ".join(entries) + r" \end{bmatrix}"
+        text = text[:left] + column + text[m.end():]
+        at = left + len(column)
+
+
+def _split_top(inner: str) -> list[str]:
+    """The comma-separated entries of a row, commas inside groups left alone."""
+    out, depth, start = [], 0, 0
+    for k, ch in enumerate(inner):
+        if ch in "([{":
+            depth += 1
+        elif ch in ")]}":
+            depth -= 1
+        elif ch == "," and depth == 0:
+            out.append(inner[start:k])
+            start = k + 1
+    return out + [inner[start:]]
+
+
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
@@ -413,7 +465,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
         text = _print(nodes, user)
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
-    text = _cross_matrices(text)
+    text = _transposed_rows(_cross_matrices(text))
     text = _ROW_STOP.sub(" ", text)                  # "1." before a row's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
     text = _ELLIPTIC.sub(r"\\\1 ", text)              # \\mathrm{sn}: Jacobi's elliptic sine

@@ -203,7 +203,7 @@ class TextNames:
                         self._rotation(line, piece, sp.Matrix(value)):
                     self._matrix_name(m0, value)     # a product of the text's matrices: a rotation
                     return True
-                if not self._space_component(line, piece, m0, members[1]):
+                if not self._space_component(line, piece, m0, members[1]) and not self._weight(line, piece, m0, members[1]):
                     self._add(line, piece, "new symbol", "unchecked",
                               f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
                 return True

@@ -90,6 +90,7 @@ class State:
     defs: dict = field(default_factory=dict)        # (base, sub) → the text's value of an entry
     head: str | None = None                         # the left side this reader last set
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
+    momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
 
 
 _MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
@@ -262,7 +263,7 @@ class Algebra:
         base, sub = a.base, a.sub
         system = "body" if sub in ("system", "textsystem", "G", "mathcalG", "mathrmG") else self.system
         point = env.get("point") is not None and sub == env.get("index")
-        if base == "L":
+        if base == "L" or base in self.state.momenta:
             if bold:
                 if point:
                     return mass * r.cross(W.cross(r))
@@ -331,10 +332,24 @@ def learn_torque(toks, state: State) -> None:
         state.torques.add(toks[0].value.base)
 
 
+_BODY_VECTOR = re.compile(r"(\\vec\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
+_BODY_TENSOR = re.compile(r"(?<![\\A-Za-z])I\s*_\s*(?:\{\s*b\s*\}|b)(?![A-Za-z])")
+_OTHER_LABEL = re.compile(r"_\s*\{?\s*(?:i|I|w|s|b\s*/)|\\frac\s*\{\s*d|\\dot")
+
+
+def one_frame(text: str) -> str:
+    """``\\vec{H_b} = I_b \\vec{\\omega_b}``: every vector and the tensor in body components (the
+    label b on each, no other frame and no rate): an algebraic relation, the same in any one
+    frame's components, read without the label."""
+    if _OTHER_LABEL.search(text) or not (_BODY_VECTOR.search(text) or _BODY_TENSOR.search(text)):
+        return text
+    return _BODY_TENSOR.sub("I", _BODY_VECTOR.sub(r"\1}", text))
+
+
 def read(text: str, state: State) -> vp.Reading:
     """Read a statement with the vector grammar under this model (`lx.NotRead` when it cannot);
     ``reading.model`` is the system it speaks of ("body" or "single")."""
-    text = prepare(text)
+    text = prepare(one_frame(text))
     toks = lx.scan_cells(text)
     learn_torque(toks, state)
     system = system_of(toks, state)

@@ -1,12 +1,14 @@
 """Statements in vectors for the notes checker: sums over particles, the inertia tensor, frame
 derivatives (read by `derive.lecture.vectors`, with a single-edit search of the LaTeX for a
-correction), and the torque-free d𝐋/dt = 0 written out in components.
+correction), the torque-free d𝐋/dt = 0 written out in components, Newton's law with the inertial
+derivative (`vectors.newton`), a weight rotated into body axes (``F_g = R_{i→b} [0, 0, mg]^T``) and
+a position's inertial rate as the body velocity turned (ṙᵢ = R𝐕_b).
 
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 :mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
-:mod:`derive.lecture.comparing`, SymPy.
+:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles), SymPy.
 """
 from __future__ import annotations
 
@@ -15,10 +17,12 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import vector_models as vm
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
 from derive.lecture.vector_models import is_quantity
 from derive.lecture.vector_parser import LAW
+from derive.symbolic.rotations import ANGLES
 
 
 class VectorStatements:
@@ -29,6 +33,8 @@ class VectorStatements:
         """A statement in vectors, tensors, sums over particles or frame derivatives
         (`derive.lecture.vectors`): each member against the first, a single-edit search of the
         LaTeX for a correction. False when that reader cannot read it either."""
+        if self._position_rate(line, piece, text):
+            return True
         self.vocab.open = False          # the vector reader knows its own symbols (m_p, I_ij, r_p)
         try:
             reading = vc.read(text, self.vocab, self.d, self.ctx.vec_model)
@@ -54,6 +60,11 @@ class VectorStatements:
         for row in reading.members if put and reading.model == "frame" else ():
             for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
                 m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
+        if reading.model == "frame" and any(m.value.has(*vm.RIGID) for m in first if hasattr(m.value, "has")):
+            rigid = vm.Model("frame", self.d).rigid()     # the text's tensor written: 𝐋 = I𝛚 of the rigid body
+            for row in reading.members:
+                for m in row:
+                    m.value = m.value.xreplace(rigid) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
         if len(first) == 1:
@@ -69,6 +80,10 @@ class VectorStatements:
                 continue
             ref = vc.reference(reading, k)
             if ref is None and k == 1 and self._defines_vector(reading):
+                law = vc.newton(reading, self.d)
+                if law is not None:
+                    self._add(line, piece, "law", *law)
+                    continue
                 self._add(line, piece, "definition", "unchecked", f"defines the text's vector "
                           f"{next(iter(vc.generics(first[0].value)))} (recorded, then used)")
                 continue
@@ -155,6 +170,61 @@ class VectorStatements:
         self.ctx.vectors[name] = (tuple(value), tuple(first[1].value))
         return True
 
+    def _position_rate(self, line, piece, text) -> bool:
+        """``\\frac{d \\vec{r_i}}{dt} = R_{b \\rightarrow i} \\vec{V_b}``: the rate of a position's
+        inertial components is its velocity's body components turned into inertial ones, ṙᵢ = R 𝐕_b
+        (𝐕_b = Rᵀṙᵢ by what body components are, R body → inertial). Holds when the written matrix
+        is R (the text's own, resolved), fails for another; False when the statement is not one."""
+        m = _POSITION_RATE.match(text.strip())
+        if m is None or m.group(1) not in "rpxs" or m.group(3) not in "Vv" or "velocity" not in (self.notes.body or ""):
+            return False
+        try:
+            matrix = self._resolve(lx.parse(m.group(2), self.vocab).members[0].value)
+        except (lx.NotRead, TypeError, ValueError, AttributeError):
+            return False
+        if not isinstance(matrix, sp.MatrixBase) or matrix.shape != (3, 3) or not free(matrix) <= set(ANGLES):
+            return False
+        R = self.d.conv.matrix()
+        diff = (matrix - R).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e)))
+        what = "the position's inertial rate is its velocity's body components turned by R (body → inertial)"
+        if diff == sp.zeros(3, 3):
+            self._add(line, piece, "kinematics", "holds", f"{what}: ṙᵢ = R 𝐕_b, 𝐕_b = Rᵀṙᵢ: trig_reduce")
+        else:
+            turned = (matrix - R.T).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e))) == sp.zeros(3, 3)
+            self._add(line, piece, "kinematics", "fails", f"{what}; the matrix written is "
+                      + ("Rᵀ, which turns inertial components into body ones" if turned else "not R"))
+        return True
+
+    def _weight(self, line, piece, sym, value) -> bool:
+        """``F_g = R_{i \\rightarrow b} [0, 0, mg]^T``: the weight named F_g, in body components, is m g
+        Rᵀ𝐝 with 𝐝 the inertial frame's downward unit vector the prose gives (north-east-down, "z
+        down": +ẑ; "z up": −ẑ). Holds or fails against that; False (not this rule's) when the symbol
+        is not a weight or its value not a column in the angles, a mass and g."""
+        atom = self.vocab.generic.get(sym)
+        claim = self._resolve(value)
+        if atom is None or atom.base not in ("F", "W") or atom.sub not in _WEIGHT or atom.dots or atom.hat \
+                or not isinstance(claim, sp.MatrixBase) or claim.shape != (3, 1):
+            return False
+        g = next((s for s in free(claim) if s.name == "g"), None)
+        rest = free(claim) - set(ANGLES) - {g}
+        if g is None or len(rest) != 1 or next(iter(rest)).name.split("_")[0] not in ("m", "M", "Mass"):
+            return False
+        prose = self.notes.body or ""
+        down = 1 if _DOWN.search(prose) else (-1 if _UP.search(prose) else 0)
+        if not down:
+            self._add(line, piece, "weight", "unchecked", f"{self.tex(sym)} as the weight needs the direction "
+                      "of gravity in the inertial frame, which the text does not say (z up or down)")
+            return True
+        weight = next(iter(rest)) * g * self.d.conv.matrix().T * sp.Matrix([0, 0, down])
+        diff = (claim - weight).applyfunc(lambda e: self.d.rot.trig_reduce(sp.expand(e)))
+        where = f"{self.tex(sym)} as the weight m g Rᵀ𝐝, 𝐝 = {'+' if down > 0 else '−'}ẑ downward (as the text's frame is)"
+        if diff == sp.zeros(3, 1):
+            self._add(line, piece, "weight", "holds", f"{where}, in body components: trig_reduce")
+        else:
+            k = next(n for n in range(3) if diff[n] != 0)
+            self._add(line, piece, "weight", "fails", f"{where}: component {k + 1} differs")
+        return True
+
     def _vector_fix(self, reading, k, piece):
         """One edit of member k's LaTeX that makes it equal member 0: (corrected LaTeX, what)."""
         rel = {"=": "=", "≡": r"\equiv"}[reading.relations[k - 1]]
@@ -195,6 +265,14 @@ class VectorStatements:
         self._add(line, piece, "equation of motion", "holds",
                   "d𝐋/dt = 0 with τ = 0 (stated in the text): each component of the written d𝐋/dt, set to 0, "
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
+
+
+_LABELLED = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
+_POSITION_RATE = re.compile(r"\\frac\s*\{\s*d\s*" + _LABELLED % r"(?:i|I|N|e)" + r"\s*\}\s*\{\s*dt\s*\}\s*=\s*"
+                            r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)\s*" + _LABELLED % r"(?:b|B)" + r"\s*$")
+_WEIGHT = ("g", "grav", "gravity", "")
+_DOWN = re.compile(r"north[- ]east[- ]down|\bNED\b|\$?\+?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?down", re.I)
+_UP = re.compile(r"east[- ]north[- ]up|\bENU\b|\$?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?up(?:ward)?\b", re.I)
 
 
 def _top_level_plus(src: str) -> list:

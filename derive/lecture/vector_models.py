@@ -24,6 +24,9 @@ R_B = sp.Matrix(sp.symbols("x_b y_b z_b", real=True))          # a body-fixed po
 L_B = sp.Matrix(sp.symbols("L_b1:4", real=True))               # 𝐋's body components (time-dependent)
 LD_B = sp.Matrix(sp.symbols("Ld_b1:4", real=True))             # their rates
 W = sp.Matrix(lx.W)
+_J = sp.symbols("J_11 J_12 J_13 J_22 J_23 J_33", real=True)
+RIGID = sp.ImmutableMatrix([[_J[0], _J[1], _J[2]], [_J[1], _J[3], _J[4]], [_J[2], _J[4], _J[5]]])
+"""The text's inertia tensor I (I_b) in a rotating frame: any symmetric matrix, constant in body axes."""
 FRAMES = {"body": "body", "b": "body", "B": "body", "rot": "body", "rotating": "body", "inertial": "inertial",
           "space": "inertial", "fixed": "inertial", "lab": "inertial", "s": "inertial", "i": "inertial",
           "I": "inertial", "N": "inertial"}
@@ -52,6 +55,7 @@ class Model:
         self.name, self.d = name, derivation
         self.plain_l_vector = plain_l_vector
         self.rates = name == "frame"    # the grammar reads d𝐗/dt only in a rotating frame
+        self.matrix_products = name == "frame"    # I_b 𝛚_b: the text's tensor on a column
         self.generic = {}               # a letter → (its body components, their rates)
 
     def generic_vector(self, base: str) -> sp.Matrix:
@@ -95,6 +99,12 @@ class Model:
             return sp.Matrix(self.d.omega)
         return W
 
+    def rigid(self) -> dict:
+        """𝐋 of a rigid body where the statement writes its tensor: 𝐋 = I𝛚 with I constant in body
+        axes (`RIGID`), so (d𝐋/dt)_body = I𝛚̇; as the substitution of 𝐋's body components and rates."""
+        L = RIGID * self.omega
+        return {**dict(zip(L_B, L)), **dict(zip(LD_B, RIGID * self.omega.applyfunc(self.dt)))}
+
     # frame derivatives
     def dt(self, e):
         """d/dt of an expression in the angles, rates and 𝐋's body components (the
@@ -115,8 +125,8 @@ class Model:
     def rate(self, X, frame):
         """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
         if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()) or \
-                isinstance(X, sp.MatrixBase) and X.free_symbols and X.free_symbols <= set(ANGLES):
-            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ)
+                isinstance(X, sp.MatrixBase) and X.free_symbols and X.free_symbols <= set(ANGLES) | set(RATES):
+            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ) and rates (𝛚)
         if isinstance(X, sp.MatrixBase):
             raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
         return None
@@ -151,6 +161,8 @@ class Model:
             return sp.eye(3)[:, p.axis(a.sub, env, tok)]
         if a.base == "I" and not a.sub and (a.bold or a.dots == 2):
             return self.tensor
+        if self.name == "frame" and a.base == "I" and a.sub in ("", "b", "B") and plain and not a.bold and not a.sup:
+            return RIGID                # I, I_b beside frame derivatives: the body's tensor, constant in body axes
         if a.base == "I" and len(a.sub) == 2 and not a.bold:
             return self.tensor[p.axis(a.sub[0], env, tok), p.axis(a.sub[1], env, tok)]
         if a.base == "I" and a.sub in ("i", "j") and not a.bold:

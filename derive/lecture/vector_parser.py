@@ -166,8 +166,8 @@ class VectorParser(_Parser):
         while self.at("cmd", "times"):
             self.i += 1
             right = self.factor(env)
-            while not isinstance(right, sp.MatrixBase) and self._starts_factor():
-                right = self.juxtaposed(right, self.factor(env))     # r × m v
+            while (not isinstance(right, sp.MatrixBase) or _is_tensor(right)) and self._starts_factor():
+                right = self.juxtaposed(right, self.factor(env))     # r × m v, 𝛚 × I 𝛚 (the tensor on 𝛚)
             if not (_is_vector(value) and _is_vector(right)):
                 self.fail("× of something that is not a vector")
             value = value.cross(right)
@@ -182,6 +182,8 @@ class VectorParser(_Parser):
         """v² = v·v; no other power of a vector or a matrix."""
         if _is_vector(base) and exp == 2:
             return base.dot(base)
+        if _is_tensor(base) and exp == -1:
+            return base.inv()                           # I_b^{-1}: the inverse tensor
         if isinstance(base, sp.MatrixBase):
             self.fail("a power of a vector or matrix")
         return base ** exp

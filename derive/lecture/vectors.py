@@ -236,3 +236,33 @@ def _cross_swaps(src: str):
 def restore(latex: str) -> str:
     """The LaTeX a reader wrote back from `prepare`'s: 𝟙 as ``\\mathbf{1}``."""
     return latex.replace("\\mathbf{\\Xi}", "\\mathbf{1}")
+
+
+
+_FORCE, _VELOCITY, GEN = {"F", "f"}, {"V", "v"}, vm.GENERIC
+
+
+def newton(reading: Reading, derivation) -> tuple[str, str] | None:
+    """``\\vec{F} = m \\frac{d\\vec{V}}{dt_i}``: Newton's second law for the centre of mass, a law
+    (stated, not derived) recognised in its form 𝐅 = m (d𝐕/dt)_inertial, whose body components are
+    m (Rᵀ Ṙ 𝐕 + 𝐕̇). As (verdict, why), or None when the statement is not a force set equal to a
+    multiple of a velocity's rate. A body-frame derivative, or a factor other than the mass, fails."""
+    first = reading.members[0]
+    force, other = generics(first[0].value), generics(first[1].value)
+    if reading.model != "frame" or len(first) != 2 or force - _FORCE or len(force) != 1 \
+            or len(other) != 1 or other - _VELOCITY:
+        return None
+    rhs = first[1].value
+    mass = [s for s in getattr(rhs, "free_symbols", ()) if s.name.split("_")[0] in ("m", "M") and GEN not in s.name]
+    if len(mass) != 1 or not _is_vector(rhs):
+        return None
+    model = Model("frame", derivation)
+    law = mass[0] * model.derivative(model.generic_vector(next(iter(other))), "inertial")
+    ok, how = _zero(rhs, law, "newton")
+    if ok:
+        return "holds", ("Newton's second law, 𝐅 = m (d𝐕/dt) with the derivative in an inertial frame: a law, "
+                         "recognised in its form (recorded, then used)")
+    V = model.generic_vector(next(iter(other)))
+    body = _zero(rhs, mass[0] * model.derivative(V, "body"), "newton/body")[0]
+    return "fails", ("Newton's second law is 𝐅 = m (d𝐕/dt) in an inertial frame; as written: "
+                     + ("the body-frame derivative, which lacks 𝛚 × 𝐕" if body else how))

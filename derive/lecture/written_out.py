@@ -29,7 +29,7 @@ class WrittenOut:
             return False
         last = self.claims[-1]
         name = next(reversed(self.ctx.defs))
-        if last.kind != "new symbol" or last.line >= line or not isinstance(name, lx.Generic) or \
+        if last.kind not in ("new symbol", "weight") or last.line >= line or not isinstance(name, lx.Generic) or \
                 self.tex(name) not in last.why:
             return False
         try:
