@@ -236,8 +236,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
                     KeyError, NotImplementedError, RecursionError, sp.PolynomialError) as err:
                 # a formula the checker cannot follow is reported as such, never given a verdict
-                self._add(item.line, piece, "unknown", "unchecked",
-                          f"cannot check it ({type(err).__name__}: {str(err)[:80]})")
+                why = (str(err) if isinstance(err, lx.NotRead) else
+                       f"a step of the reader failed on it ({type(err).__name__}): it is left unjudged")
+                self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {why}")
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
             self._place_flushed(before)
