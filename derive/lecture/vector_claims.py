@@ -202,7 +202,7 @@ class VectorStatements:
         is not a weight or its value not a column in the angles, a mass and g."""
         atom = self.vocab.generic.get(sym)
         claim = self._resolve(value)
-        if atom is None or atom.base not in ("F", "W") or atom.sub not in _WEIGHT or atom.dots or atom.hat \
+        if atom is None or atom.base not in ("F", "W") or not _WEIGHT.fullmatch(atom.sub) or atom.dots or atom.hat \
                 or not isinstance(claim, sp.MatrixBase) or claim.shape != (3, 1):
             return False
         g = next((s for s in free(claim) if s.name == "g"), None)
@@ -270,7 +270,7 @@ class VectorStatements:
 _LABELLED = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
 _POSITION_RATE = re.compile(r"\\frac\s*\{\s*d\s*" + _LABELLED % r"(?:i|I|N|e)" + r"\s*\}\s*\{\s*dt\s*\}\s*=\s*"
                             r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)\s*" + _LABELLED % r"(?:b|B)" + r"\s*$")
-_WEIGHT = ("g", "grav", "gravity", "")
+_WEIGHT = re.compile(r"(?:g|grav(?:ity)?)?")  # the subscripts a text gives its weight: F, F_g, W_grav
 _DOWN = re.compile(r"north[- ]east[- ]down|\bNED\b|\$?\+?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?down", re.I)
 _UP = re.compile(r"east[- ]north[- ]up|\bENU\b|\$?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?up(?:ward)?\b", re.I)
 
