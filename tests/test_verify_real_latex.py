@@ -170,3 +170,11 @@ def test_a_function_the_text_names_with_its_variables_is_checked_through_what_it
     claims = kept.check_text(text)
     assert [(c.kind, c.verdict) for c in claims] == [("new symbol", "unchecked"), ("equation of motion", "holds"),
                                                      ("equation of motion", "typo")]
+
+
+def test_a_symbol_in_braces_before_its_index_is_that_symbol_indexed():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Rates\n\n"
+            "$$\n{\\omega}_3 = \\dot{\\phi}\\cos{\\theta}+\\dot{\\psi}\n$$\n")
+    assert [c.verdict for c in kept.check_text(text)] == ["holds"]
+    slipped = [c.verdict for c in kept.check_text(text.replace("+\\dot{\\psi}", "-\\dot{\\psi}"))]
+    assert slipped and set(slipped) <= {"typo", "fails"}
