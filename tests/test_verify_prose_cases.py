@@ -34,3 +34,11 @@ def test_a_rate_set_to_zero_that_eulers_equations_give_under_the_stated_moments_
     assert [(c.line, c.verdict) for c in kept.check_text(text) if c.line == 9] == [(9, "holds")]
     asymmetric = text.replace("All three moments equal, $I_1=I_2=I_3$, so that", "A body, and")
     assert [(c.kind, c.verdict) for c in kept.check_text(asymmetric)] == [("setting", "unchecked")]
+
+
+def test_a_symbol_set_to_zero_where_the_prose_says_it_is_absent_is_the_setting_not_a_claim():
+    text = ("## Free body\n\nThe body turns freely: no external moment acts, $T=0$.\n\n"
+            "$$T = \\frac{1}{2}(I_1\\omega_1^2 + I_2\\omega_2^2 + I_3\\omega_3^2)$$\n")
+    claims = kept.check_text(text)
+    assert not [c for c in claims if c.line == 3 and c.verdict in ("typo", "fails")]
+    assert [c.verdict for c in claims if c.line == 5] == ["holds"]      # the kinetic energy T is not zeroed

@@ -197,3 +197,11 @@ _TO_BODY = ("---\nconvention: z-y-x\nangles: [\\psi, \\theta, \\phi]\n---\n# Fra
 def test_a_rotation_of_a_column_written_as_transposed_rows_holds_and_a_slip_never_does():
     assert [c.verdict for c in kept.check_text(_TO_BODY.replace("SIGN", "-"))] == ["holds", "holds"]
     assert kept.check_text(_TO_BODY.replace("SIGN", ""))[-1].verdict != "holds"
+
+
+def test_a_symbol_in_braces_before_its_index_is_that_symbol_indexed():
+    text = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Rates\n\n"
+            "$$\n{\\omega}_3 = \\dot{\\phi}\\cos{\\theta}+\\dot{\\psi}\n$$\n")
+    assert [c.verdict for c in kept.check_text(text)] == ["holds"]
+    slipped = [c.verdict for c in kept.check_text(text.replace("+\\dot{\\psi}", "-\\dot{\\psi}"))]
+    assert slipped and set(slipped) <= {"typo", "fails"}

@@ -50,3 +50,35 @@ def test_eulers_equations_as_columns_with_the_cross_product_reversed_do_not_hold
     assert COLUMNS.count(left) == 1 and COLUMNS.count(right) == 1
     reversed_ = COLUMNS.replace(right, "@").replace(left, right).replace("@", left)
     assert "holds" not in verdicts(reversed_)
+
+
+BODY_RATE = ("## Free body\n\nHere $\\Omega$ is the body angular velocity; no moment acts.\n\n"
+             "$$\\begin{{align}}\n"
+             "I_1 \\dot{{\\Omega}}_1 &= (I_2 - I_3) \\Omega_2 \\Omega_3, \\\\\n"
+             "I_2 \\dot{{\\Omega}}_2 &= (I_3 - I_1) \\Omega_3 \\Omega_1, \\\\\n"
+             "I_3 \\dot{{\\Omega}}_3 &= ({first} - {second}) \\Omega_1 \\Omega_2\n"
+             "\\end{{align}}$$\n")
+
+
+def test_a_bare_letter_named_the_body_angular_velocity_names_its_components():
+    assert verdicts(BODY_RATE.format(first="I_1", second="I_2")) == ["holds"] * 3
+    slipped = verdicts(BODY_RATE.format(first="I_2", second="I_1"))
+    assert slipped[:2] == ["holds", "holds"] and slipped[2] in ("typo", "fails")
+
+
+PI_EQUATIONS = ("## Free body\n\nThe free equations are written in the body angular momentum $\\Pi$.\n\n"
+                "$$\\begin{{align}}\n"
+                "\\dot{{\\Pi}}_1 & = \\frac{{(I_2-I_3)}}{{I_2 I_3}}\\Pi_2 \\Pi_3, \\\\\n"
+                "\\dot{{\\Pi}}_2 & = \\frac{{(I_3-I_1)}}{{I_3 I_1}}\\Pi_3 \\Pi_1, \\\\\n"
+                "\\dot{{\\Pi}}_3 & = \\frac{{({first}-{second})}}{{I_1 I_2}}\\Pi_1 \\Pi_2.\n"
+                "\\end{{align}}$$\n")
+
+
+def test_the_body_angular_momentum_pi_and_its_rates_are_read_in_eulers_equations():
+    assert verdicts(PI_EQUATIONS.format(first="I_1", second="I_2")) == ["holds"] * 3
+
+
+def test_a_slip_in_eulers_equations_written_in_pi_is_flagged_in_the_texts_letters():
+    claims = kept.check_text(PI_EQUATIONS.format(first="I_2", second="I_1"))
+    assert [c.verdict for c in claims][:2] == ["holds", "holds"] and claims[2].verdict in ("typo", "fails")
+    assert claims[2].verdict != "typo" or "\\Pi" in claims[2].correction

@@ -126,7 +126,9 @@ class Motion:
         return self.tex(residual) + " = 0"
 
     def _eom_check(self, raw):
-        r = sp.expand(self._resolve(raw).xreplace(self.ctx.subs))
+        # in Euler's equations the axial momentum p_γ is the body component I₃ω̃₃ it equals
+        axial = {lx.p_gamma: (I1, I2, I3)[self.vocab.axial] * lx.W[self.vocab.axial]}
+        r = sp.expand(self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs))
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too

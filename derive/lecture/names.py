@@ -22,12 +22,14 @@ The meanings (`MEANINGS`, a registry: adding one adds a row):
 ==========================  =======  ===================================================
 meaning                     binds    the text's symbol stands for
 ==========================  =======  ===================================================
-angular momentum            letter   𝐋 (bold), Iᵢω̃ᵢ (index 1–3), p of the first angle
-                                     (index z: about the vertical), |𝐋| (plain)
+angular momentum            letter   𝐋 (bold), Iᵢω̃ᵢ (index 1–3; with a dot Iᵢω̃̇ᵢ), p of the
+                                     first angle (index z: about the vertical), |𝐋| (plain);
+                                     Π named plain also gives Πᵢ (geometric mechanics)
 vertical angular momentum   symbol   p of the first angle (L·ẑ)
 axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃₃)
 angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
-body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ
+body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
+                                     a bare letter (Ω) also gives its components Ωᵢ
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
@@ -93,7 +95,7 @@ MEANINGS = {
 """The meanings a text may give its symbols: how each binds and the phrase that gives it."""
 
 LETTERS = {
-    "angular momentum": ("L", "M", "J", "H", "h"), "angular velocity": ("omega", "Omega", "w", "W"),
+    "angular momentum": ("L", "M", "J", "H", "h", "Pi"), "angular velocity": ("omega", "Omega", "w", "W"),
     "torque": ("tau", "N", "T", "M", "G", "Gamma", "K"), "mass": ("m", "M", "mu"),
     "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravitational acceleration": ("g",),
     "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
@@ -172,6 +174,8 @@ class Names:
                 return lx.LVEC
             if k is not None and plain and not a.bold:
                 return lx.p_gamma if k == vocab.axial else moments[k] * lx.W[k]
+            if k is not None and a.dots == 1 and not (a.bold or a.primes or a.hat or a.tilde):
+                return moments[k] * lx.WD[k]     # a body component's rate: d(Iᵢω̃ᵢ)/dt = Iᵢ dω̃ᵢ/dt
             if sub in ("z", "Z") and plain:
                 return lx.p_alpha
             if not sub and plain:
@@ -478,6 +482,8 @@ def _bind(names: Names, atoms, meaning, where, override=False):
     for atom in atoms:
         if how == "letter":
             kinds = ("plain", "vector") if override else ("plain" if not (atom.bold or atom.sub) else "vector",)
+            if meaning == "angular momentum" and kinds == ("plain",) and atom.base == "Pi":
+                kinds = ("plain", "vector")   # geometric mechanics' Π: the plain letter is the vector, Πᵢ its components
             for kind in kinds:        # the front matter names the letter in every spelling
                 _put(names.letters, (atom.base, kind), meaning, override)
                 if override:
@@ -487,6 +493,11 @@ def _bind(names: Names, atoms, meaning, where, override=False):
         else:
             _put(names.symbols, (atom.base, atom.sub), meaning, override)
             names.frames.setdefault((atom.base, atom.sub), atom.sup)
+            if meaning == "body angular velocity" and not (atom.bold or atom.sub or atom.sup):
+                # "$\Omega$ is the body angular velocity": its components Ω₁, Ω₂, Ω₃ are the body ones
+                _put(names.letters, (atom.base, "vector"), meaning, override)
+                if line is not None:
+                    names.scoped.setdefault(("letters", (atom.base, "vector")), []).append((line, meaning))
             if override:
                 names.declared.add(("symbols", (atom.base, atom.sub)))
             if line is not None:

@@ -211,6 +211,21 @@ def _opens_with_trigger(body: str, pos: int) -> bool:
     return bool(words) and words[0].lower() in TRIGGERS
 
 
+_ABSENT = re.compile(r"\b(?:no|without|absent|vanish(?:es|ing)?)\b", re.I)
+_BARE_ZERO = re.compile(r"^\s*\\?[A-Za-z]+(?:_\{?\w+\}?)?\s*=\s*0\s*$")
+
+
+def _absence_stated(body: str, pos: int, latex: str) -> bool:
+    """Is the math at ``pos`` a bare symbol set to zero right after prose saying something is
+    absent? "no external moment acts, $T=0$" (or "…are present. That is $T=0$") states the
+    setting in symbols: an assumption, not a claim about the text's T."""
+    if not _BARE_ZERO.match(latex):
+        return False
+    prefix = body[max(0, pos - 160):pos]
+    prefix = prefix[prefix.rfind("\n\n") + 1:]
+    return bool(_ABSENT.search(_MATH.sub(" ", prefix)))
+
+
 def _signs(prose: str) -> str | None:
     p = prose.lower()
     if "opposite sign" in p:
@@ -299,7 +314,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
-        if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()):
+        if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
+                or _absence_stated(body, m.start(), latex):
             events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
         else:
             events.append((m.start(), Item("inline", line, latex=latex, lead=near)))

@@ -433,6 +433,8 @@ _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
+_GROUPED_SYMBOL = re.compile(r"(?<![\\\w^_}])\{\s*(\\[A-Za-z]+|[A-Za-z])\s*\}(?=\s*[_^])")
+"""A brace group holding one symbol before its index, ``{\\Omega}_1``: the braces only group."""
 _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*("
                         + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
@@ -473,5 +475,6 @@ def normalize(latex: str, user: dict | None = None) -> str:
     text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
+    text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     return re.sub(r"[ \t]{2,}", " ", text).strip()

@@ -1,8 +1,11 @@
 """The reader measured on the corpus of public texts: each text's displays against its truth table.
 
-Every text ``<slug>.md`` here is a public text on rigid-body rotation that nobody on the project
-wrote: its displays exactly as the source writes them, the prose between them in our own words,
-the source, commit and licence in its front matter. ``<slug>.truth.toml`` is its truth table, one
+Every text here is a public text on rigid-body rotation that nobody on the project wrote, kept in
+its native format: ``<slug>.md`` (Markdown), ``<slug>.tex`` (a LaTeX source) or ``<slug>.ipynb`` (a
+Jupyter notebook, read through its Markdown cells): its displays exactly as the source writes them,
+the prose between them in our own words, the source, commit and licence at its top (front matter,
+a ``%`` comment block, or the notebook's first cell and metadata). A truth table's line numbers are
+the text file's own lines. ``<slug>.truth.toml`` is its truth table, one
 verdict per display (``holds``, ``typo``, ``fails``, ``not a claim``) with the reason, derived by
 ``<slug>_truth.py``: a SymPy derivation in the text's own convention and names that never goes
 through the reader. Every ``typo``/``fails`` row carries two hand checks.
@@ -24,6 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+FORMATS = (".md", ".tex", ".ipynb")
 CHECKED = {"holds", "typo", "fails"}
 SLIPS = {"typo", "fails"}
 
@@ -31,6 +35,14 @@ SLIPS = {"typo", "fails"}
 def texts() -> list[str]:
     """The slugs of the corpus, sorted."""
     return sorted(p.name[:-len(".truth.toml")] for p in HERE.glob("*.truth.toml"))
+
+
+def source(slug: str) -> Path:
+    """The text of ``slug``, in whichever of the formats it is kept."""
+    found = [HERE / f"{slug}{ext}" for ext in FORMATS if (HERE / f"{slug}{ext}").exists()]
+    if len(found) != 1:
+        raise FileNotFoundError(f"{slug}: expected one text in {FORMATS}, found {len(found)}")
+    return found[0]
 
 
 def truth(slug: str) -> list[dict]:
@@ -100,7 +112,7 @@ if __name__ == "__main__":
     sys.path.insert(0, str(HERE.parents[2]))
     from derive.lecture import notes_check
 
-    out = [measure(s, notes_check.check_notes(HERE / f"{s}.md")) for s in texts()]
+    out = [measure(s, notes_check.check_notes(source(s))) for s in texts()]
     print(table(out))
     for f in out:
         if f.missed or f.false_alarms:
