@@ -253,6 +253,7 @@ def test_verify_speed_is_a_target_reported_per_corpus_text():
 
     texts = vs.corpus_texts()
     assert len(texts) >= 12 and all(p.exists() for p in texts)
+    assert {p.suffix for p in texts} == set(vs.FORMATS)  # a LaTeX source and a notebook among them
     seconds = {texts[0]: 30.0, texts[1]: 0.01}
     res = vs.bench_verify_speed(texts[:2], timer=seconds.__getitem__)
     rows = [r for r in T.summary({"verify_speed": res}) if r[0].startswith("`derive verify`")]

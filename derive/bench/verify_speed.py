@@ -1,7 +1,7 @@
 """The notes reader's speed target: ``derive verify`` on the corpus of public texts, in seconds of
 user CPU per 100 displays (goal: ≤ 10 for every text).
 
-Takes: the corpus, ``tests/notes/real/*.md`` of a checkout (test data, not part of the installed
+Takes: the corpus, ``tests/notes/real/`` of a checkout (Markdown, LaTeX and notebook texts) (test data, not part of the installed
 package: an installed package reports this part as not measured, saying why). Gives:
 `bench_verify_speed` (each text verified by a fresh ``python -m derive verify TEXT``, as a user
 runs it, the whole command counted: start-up, imports, reading, judging) and `rows` (the
@@ -25,11 +25,17 @@ from derive.lecture import notes as nt
 CORPUS = Path(__file__).resolve().parents[2] / "tests" / "notes" / "real"
 """Where a checkout keeps the corpus (next to the package's directory)."""
 GOAL_KEY = "verify_per_100"
+FORMATS = (".md", ".tex", ".ipynb")
+"""The formats a corpus text is kept in (the notes reader reads each)."""
 
 
 def corpus_texts(root: Path = CORPUS) -> list[Path]:
     """The corpus's texts (those with a truth table), sorted by name; none without a checkout."""
-    return sorted(p.with_name(p.name[:-len(".truth.toml")] + ".md") for p in root.glob("*.truth.toml"))
+    found = []
+    for table in root.glob("*.truth.toml"):
+        slug = table.name[:-len(".truth.toml")]
+        found += [p for p in (table.with_name(slug + ext) for ext in FORMATS) if p.is_file()][:1]
+    return sorted(found)
 
 
 def displays(path: Path) -> int:
