@@ -26,8 +26,8 @@ from derive.codegen.render import TEMPLATES, render
 from derive.codegen.sources import model_sources, shipped_keys
 from derive.contact.sources import generated_sources as contact_sources  # contact hook
 from derive.lecture import report
-from derive.runtime.cache import (ABSENT, derivation_fingerprint, is_marked, models_dir, read_folder,
-                                  remove_marked, writable_cache_dir, write_folder)
+from derive.runtime.cache import (ABSENT, derivation_fingerprint, keep_newest, models_dir, read_folder,
+                                  writable_cache_dir, write_folder)
 from derive.sim import scene_doc
 from derive.sim.outputs import write_all
 from derive.symbolic.models import build
@@ -86,7 +86,7 @@ def _cached_everything() -> tuple:
     folder = models_dir(writable_cache_dir(), writing=True) / name
     try:  # keeping it is a saving for the next run, never a reason for this one to fail
         write_folder(folder, dict(everything), REQUIRED)
-        _prune(folder.parent)
+        keep_newest(folder.parent, PREFIX, KEEP)
     except OSError as exc:
         print(f"note: cannot keep the generation in {folder} ({exc.strerror or exc})", file=sys.stderr,
               flush=True)
@@ -94,25 +94,11 @@ def _cached_everything() -> tuple:
 
 
 def _touch(folder: Path) -> None:
-    """Mark a kept generation as just used (:func:`_prune` keeps the most recently used)."""
+    """Mark a kept generation as just used (:func:`~derive.runtime.cache.keep_newest` keeps the most recently used)."""
     try:
         os.utime(folder)
     except OSError:
         pass
-
-
-def _prune(models: Path) -> None:
-    """Remove all but the :data:`KEEP` most recently used generations the cache made (marked
-    folders named ``<PREFIX><key>``); nothing else in ``models`` is touched."""
-    kept = []
-    for entry in os.scandir(models):
-        if entry.name.startswith(PREFIX) and is_marked(entry.path):
-            try:
-                kept.append((entry.stat(follow_symlinks=False).st_mtime, entry.name))
-            except OSError:
-                pass
-    for _, old in sorted(kept, reverse=True)[KEEP:]:
-        remove_marked(models / old)
 
 
 @functools.lru_cache(maxsize=1)

@@ -37,7 +37,7 @@ import mpmath
 import sympy as sp
 from sympy.external.gmpy import GROUND_TYPES
 
-from derive.runtime.cache import ABSENT, is_marked, models_dir, read_folder, remove_marked, write_folder
+from derive.runtime.cache import ABSENT, keep_newest, models_dir, read_folder, write_folder
 
 #: The kept folders are named ``<PREFIX><sequence>-<key>``; the ``KEEP`` most recently used stay
 #: (enough for the twelve sequences of two checkouts sharing one cache).
@@ -202,21 +202,7 @@ def write(sequence: str, values: dict) -> None:
     try:
         folder = _folder(sequence)
         write_folder(folder, {FILE: text}, FILE, replace=True)
-        _prune(folder.parent)
+        keep_newest(folder.parent, PREFIX, KEEP)
     except (OSError, RecursionError):
         pass
-
-
-def _prune(models: Path) -> None:
-    """Remove all but the :data:`KEEP` most recently used kept derivations (marked folders named
-    ``<PREFIX>…``); nothing else in ``models`` is touched."""
-    kept = []
-    for entry in os.scandir(models):
-        if entry.name.startswith(PREFIX) and is_marked(entry.path):
-            try:
-                kept.append((entry.stat(follow_symlinks=False).st_mtime, entry.name))
-            except OSError:
-                pass
-    for _, old in sorted(kept, reverse=True)[KEEP:]:
-        remove_marked(models / old)
 

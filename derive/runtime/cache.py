@@ -18,8 +18,8 @@ folder (:func:`writable_cache_dir`); build folders left by a killed compile are 
 older than :data:`STALE_BUILD_SECONDS` (:func:`remove_stale_builds`). Processes that need the
 same entry at once (parallel test workers) make it once: the first holds its lock
 (:func:`entry_lock`, a file holding :data:`LOCK_TEXT`, removed when the entry is made), the others
-wait and then find it made. ``derive cache`` lists the
-cache (:func:`cache_entries`); ``derive cache --clear`` empties it (:func:`clear_cache`).
+wait and then find it made. ``derive cache`` lists the cache (:func:`cache_entries`); ``derive
+cache --clear`` empties it (:func:`clear_cache`); old kept folders go by :func:`keep_newest`.
 """
 from __future__ import annotations
 
@@ -153,6 +153,18 @@ def remove_marked(path: str | os.PathLike) -> bool:
     return not os.path.lexists(path)
 
 
+def keep_newest(folder: Path, prefix: str, keep: int) -> None:
+    """Remove all but the ``keep`` most recently used folders the cache made (:func:`is_marked`)
+    named ``<prefix>…`` in ``folder``; nothing else there is touched."""
+    made = []
+    for entry in os.scandir(folder):
+        if entry.name.startswith(prefix) and is_marked(entry.path):
+            with contextlib.suppress(OSError):
+                made.append((entry.stat(follow_symlinks=False).st_mtime, entry.name))
+    for _, old in sorted(made, reverse=True)[keep:]:
+        remove_marked(folder / old)
+
+
 _private_models: Path | None = None  # models derived this run, when <cache>/models is unusable
 _private_models_told = False
 
@@ -228,8 +240,8 @@ def entry_lock(folder: Path, name: str):
     a process that enters while another holds it waits until that one is done, and should then
     look for the entry again before making it. The lock file (``.<name>.lock``, holding
     :data:`LOCK_TEXT`) is removed on release; one left by a killed process is removed with the
-    stale build folders. Without a lock file (a folder that takes
-    none) the entry is made unlocked: at worst twice, each write being atomic."""
+    stale build folders. Without a lock file (a folder that takes none) the entry is made
+    unlocked: at worst twice, each write being atomic."""
     path = Path(folder) / f".{name}{LOCK_SUFFIX}"
     try:
         fd = os.open(path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o644)
@@ -242,11 +254,9 @@ def entry_lock(folder: Path, name: str):
             os.write(fd, LOCK_TEXT.encode())
         yield
     finally:
-        try:  # only the file this process locked: another may have made a new one meanwhile
+        with contextlib.suppress(OSError):  # only the file locked here: another may have made a new one
             if os.stat(path, follow_symlinks=False).st_ino == os.fstat(fd).st_ino:
                 os.unlink(path)
-        except OSError:
-            pass
         os.close(fd)  # releases the lock
 
 
@@ -550,10 +560,8 @@ def write_folder(folder: Path, files: dict[str, str], required: str, replace: bo
                 if is_marked(folder):
                     trash = Path(tempfile.mkdtemp(prefix=f".{folder.name}-", dir=folder.parent))
                     mark(trash)
-                    try:
+                    with contextlib.suppress(OSError):
                         os.replace(folder, trash / "old")
-                    except OSError:
-                        pass
                     remove_marked(trash)
                 else:
                     make_room(folder, folder=True)

@@ -294,12 +294,30 @@ def _load_or_build(fname: str, key: str, name: str, sources: dict[str, str], mai
 
 def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list[str],
            cmd: list[str], flags: list[str]) -> Path:
-    """Compile into a marked build folder of the cache (with the stamp of ``key``) and move the
-    checksum, then the library, into place; an unwritable cache moves the build to the
+    """Compile the library ``fname`` into the cache (:func:`_compile_into_cache`), linking the
+    runtime's object in place of its unit (:func:`_runtime_object`)."""
+    note(f"compiling {name} (once: kept in the compile cache {writable_cache_dir()})")
+
+    def command(work: Path, out: Path) -> list[str]:
+        units = list(mains)
+        if HOST_SOURCE in units:  # the runtime's unit: its object, compiled once and kept
+            (work / f"{RUNTIME_OBJECT}.o").write_bytes(_runtime_object(work, sources, cmd, flags))
+            units[units.index(HOST_SOURCE)] = f"{RUNTIME_OBJECT}.o"
+        return [*cmd, *flags, "-shared", "-o", str(out), *units, STAMP_SOURCE, "-lm"]
+
+    stamp = ("/* Written by derive's compile cache: the library's key, checked at load. */\n"
+             f"const int {stamp_symbol(key)} = 1;\n")
+    return _compile_into_cache(fname, name, sources, stamp, command, f"compiling {name}")
+
+
+def _compile_into_cache(fname: str, name: str, sources: dict[str, str], stamp: str, command,
+                        what: str) -> Path:
+    """Write ``sources`` and the ``stamp`` unit into a marked build folder of the cache, run
+    ``command(work, out)`` there, and move the checksum, then ``out``, into place as ``fname``
+    (atomic: a reader sees nothing or the whole file); an unwritable cache moves the build to the
     process's private cache."""
     root = writable_cache_dir()
     remove_stale_builds(root)
-    note(f"compiling {name} (once: kept in the compile cache {root})")
     try:
         work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{name}-", dir=root))
     except OSError as exc:
@@ -307,24 +325,16 @@ def _build(fname: str, key: str, name: str, sources: dict[str, str], mains: list
     try:
         mark(work)
         _write_sources(work, sources)
-        (work / STAMP_SOURCE).write_text(
-            "/* Written by derive's compile cache: the library's key, checked at load. */\n"
-            f"const int {stamp_symbol(key)} = 1;\n")
-        units = list(mains)
-        if HOST_SOURCE in units:  # the runtime's unit: its object, compiled once and kept
-            obj = f"{RUNTIME_OBJECT}.o"
-            (work / obj).write_bytes(_runtime_object(work, sources, cmd, flags))
-            units[units.index(HOST_SOURCE)] = obj
+        (work / STAMP_SOURCE).write_text(stamp)
         out = work / fname
-        _run([*cmd, *flags, "-shared", "-o", str(out), *units, STAMP_SOURCE, "-lm"], work,
-             f"compiling {name}")
+        _run(command(work, out), work, what)
         side = work / (fname + CHECKSUM)
         side.write_text(f"{_sha256(out)}  {fname}\n")
         target = root / fname
         for dest in (target.with_name(fname + CHECKSUM), target):
             make_room(dest)
         os.replace(side, target.with_name(fname + CHECKSUM))
-        os.replace(out, target)  # atomic: a reader sees no library or the whole one
+        os.replace(out, target)
         return target
     finally:
         shutil.rmtree(work, ignore_errors=True)
@@ -389,34 +399,14 @@ def _runtime_object(work: Path, sources: dict[str, str], cmd: list[str], flags: 
 
 def _build_object(fname: str, key: str, unit: dict[str, str], cmd: list[str],
                   flags: list[str]) -> Path:
-    """Compile the runtime's unit with the stamp of ``key`` into a marked build folder and move
-    its checksum, then the object, into place (as :func:`_build` does a library)."""
-    root = writable_cache_dir()
-    remove_stale_builds(root)
-    try:
-        work = Path(tempfile.mkdtemp(prefix=f"{BUILD_PREFIX}{RUNTIME_OBJECT}-", dir=root))
-    except OSError as exc:
-        raise CompilerError(f"cannot create a build folder in {root} ({why(exc)})") from None
-    try:
-        mark(work)
-        _write_sources(work, unit)
-        (work / STAMP_SOURCE).write_text(
-            "/* Written by derive's compile cache: the runtime's unit with the object's key,\n"
-            " * checked before the object is linked. */\n"
-            f'#include "{HOST_SOURCE}"\n'
-            f"const int {stamp_symbol(key)} = 1;\n")
-        out = work / fname
-        _run([*cmd, *flags, "-c", "-o", str(out), STAMP_SOURCE], work, "compiling the runtime")
-        side = work / (fname + CHECKSUM)
-        side.write_text(f"{_sha256(out)}  {fname}\n")
-        target = root / fname
-        for dest in (target.with_name(fname + CHECKSUM), target):
-            make_room(dest)
-        os.replace(side, target.with_name(fname + CHECKSUM))
-        os.replace(out, target)
-        return target
-    finally:
-        shutil.rmtree(work, ignore_errors=True)
+    """Compile the runtime's unit with the stamp of ``key`` into the cache as ``fname``."""
+    stamp = ("/* Written by derive's compile cache: the runtime's unit with the object's key,\n"
+             " * checked before the object is linked. */\n"
+             f'#include "{HOST_SOURCE}"\n'
+             f"const int {stamp_symbol(key)} = 1;\n")
+    return _compile_into_cache(fname, RUNTIME_OBJECT, unit, stamp,
+                               lambda work, out: [*cmd, *flags, "-c", "-o", str(out), STAMP_SOURCE],
+                               "compiling the runtime")
 
 
 def check_compiles(sources: dict[str, str], main: str | list[str],
