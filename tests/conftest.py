@@ -31,9 +31,20 @@ from hypothesis import settings
 # git), never into the user's ~/.cache/derive; a test that needs another cache sets its own.
 os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" / "derive-tests")
 
+from derive.runtime import cache as cache_folder  # noqa: E402  (after DERIVE_CACHE is set)
+
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch):
+    """An empty compile cache of the test's own (and no private fallback left by another test)."""
+    root = tmp_path / "cache"
+    monkeypatch.setenv("DERIVE_CACHE", str(root))
+    monkeypatch.setattr(cache_folder, "_fallback", None)
+    return root
 
 
 def once_per_run(tmp_path_factory, name: str, compute):

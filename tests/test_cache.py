@@ -24,14 +24,6 @@ def tiny(tag: str) -> dict:
     return {"tiny.c": f"/* {tag} */\nint tiny_answer(void) {{ return 42; }}\n"}
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    root = tmp_path / "cache"
-    monkeypatch.setenv("DERIVE_CACHE", str(root))
-    monkeypatch.setattr(cache_folder, "_fallback", None)
-    return root
-
-
 def libraries(root):
     return sorted(p.name for p in root.glob("*.so"))
 

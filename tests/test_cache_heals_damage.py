@@ -112,13 +112,6 @@ def pristine_derived():
     return kept("pristine-derived", build)
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    root = tmp_path / "cache"
-    monkeypatch.setenv("DERIVE_CACHE", str(root))
-    return root
-
-
 def copy_of(source: Path, cache: Path) -> Path:
     shutil.copytree(source, cache, symlinks=True)
     return cache

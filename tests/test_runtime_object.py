@@ -24,14 +24,6 @@ def with_runtime(tag: str, runtime_tail: str = "") -> dict:
                       " return 42 + st.status; }\n"}
 
 
-@pytest.fixture
-def cache(tmp_path, monkeypatch):
-    root = tmp_path / "cache"
-    monkeypatch.setenv("DERIVE_CACHE", str(root))
-    monkeypatch.setattr(cache_folder, "_fallback", None)
-    return root
-
-
 def objects(root):
     return sorted(root.glob("derive_runtime-*.o"))
 
