@@ -3,7 +3,8 @@
 Takes: the text of a notes file, or one formula of it. Gives: the text with what is not rendered
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
-May import: the standard library, ``pylatexenc`` and `derive.lecture.texmacros`.
+May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros` and
+`derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -43,6 +44,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
 from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import texmacros
+from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
 _UNICODE = {
@@ -407,24 +409,10 @@ def _transposed_rows(text: str) -> str:
             continue
         left = k - 5 if text[max(k - 5, 0):k] == "\\left" else k
         inner = text[k + 1:end - (6 if right else 0)]
-        entries = [e.strip() for e in _split_top(inner)]
+        entries = [e.strip() for e in split_top(inner)]
         column = r"\begin{bmatrix} " + r" \\ ".join(entries) + r" \end{bmatrix}"
         text = text[:left] + column + text[m.end():]
         at = left + len(column)
-
-
-def _split_top(inner: str) -> list[str]:
-    """The comma-separated entries of a row, commas inside groups left alone."""
-    out, depth, start = [], 0, 0
-    for k, ch in enumerate(inner):
-        if ch in "([{":
-            depth += 1
-        elif ch in ")]}":
-            depth -= 1
-        elif ch == "," and depth == 0:
-            out.append(inner[start:k])
-            start = k + 1
-    return out + [inner[start:]]
 
 
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")

@@ -127,7 +127,7 @@ def _lists(row: str) -> list[str]:
         if part.rstrip().endswith("\\"):
             pieces.append(part)
             continue
-        commas = _bracket_free_split(part)
+        commas = split_top(part)
         if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
             pieces.extend(commas)
         else:
@@ -141,7 +141,9 @@ def _where_first(piece: str) -> list[str]:
         return [piece]
     return [f"{m.group('name')} = {m.group('value')}", m.group("claim")]
 
-def _bracket_free_split(s: str) -> list[str]:
+def split_top(s: str) -> list[str]:
+    """``s`` cut at its commas outside brackets and braces (an escaped ``\\,``, a thin space, is
+    no cut)."""
     out, depth, start = [], 0, 0
     for i, ch in enumerate(s):
         if ch in "({[":
