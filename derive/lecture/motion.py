@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import surely_nonzero
+from derive.lecture.zero_test import numerically_nonzero, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -148,6 +148,15 @@ class Motion:
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
+        # ω̇ from Euler's equations (the flow): a multiple of one of them, or a combination, is 0 there
+        flow = {}
+        for i, R in enumerate(euler):
+            coef = sp.diff(R, lx.WD[i])
+            if coef != 0:
+                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+        along = r.xreplace(flow)
+        if numerically_nonzero(along):
+            return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
         dyn = set(lx.W) | set(lx.WD)
         for i, R in enumerate(euler):
             if R == 0:
@@ -156,12 +165,7 @@ class Motion:
             if not (free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        flow = {}
-        for i, R in enumerate(euler):
-            coef = sp.diff(R, lx.WD[i])
-            if coef != 0:
-                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
+        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(along))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
 

@@ -2,7 +2,8 @@
 
 Takes: SymPy expressions and matrices. Gives: `symbolic_zero` (bounded symbolic steps, cheapest
 first, never an unbounded `simplify`), `surely_nonzero` (an exact one-point screen that proves a
-difference non-zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
+difference non-zero), `numerically_nonzero` (a seeded point where a difference is clearly not
+zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
 `DIGITS` digits) and `sample` (the seeded points). Used by the lecture's table
 (`derive.lecture.verify`) and by the notes checker (`derive.lecture.comparing`); it knows neither.
 
@@ -298,3 +299,35 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
                                            f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
     how = f"mpmath {DIGITS} digits" if transcendental else "exact rational"
     return Outcome(used > 0, f"{how} at {used} points")
+
+
+def numerically_nonzero(d, seed: str = "screen") -> bool:
+    """Whether d is clearly non-zero at the first seeded point of `numeric_zero` where it is finite:
+    exactly when d is rational there, else by mpmath at `DIGITS` digits (complex values allowed, so
+    a radicand negative at the point proves as much), |d| above 10⁻⁴⁰ of its terms' size.
+
+    A screen before the symbolic steps that could only confirm d ≡ 0: a candidate of the search for
+    a correction that fails at a point is not given to `cancel`. False when no point is finite."""
+    if not isinstance(d, sp.Expr) or d.is_Number:
+        return isinstance(d, sp.Expr) and d != 0
+    symbols = sorted(d.free_symbols, key=lambda x: x.name)
+    terms = list(sp.Add.make_args(d))
+    rng = random.Random(seed)
+    f = mp_values.evaluator(symbols, terms) if _radicals(d) else None
+    for _ in range(POINTS):
+        point = sample(symbols, rng)
+        if f is None:
+            value = d.xreplace(dict(zip(symbols, point)))
+            if value.is_Rational:
+                return value != 0
+            continue
+        with mpmath.workdps(DIGITS):
+            try:
+                vals = [mpmath.mpmathify(v) for v in f(*(mpmath.mpf(p.p) / p.q for p in point))]
+            except (ZeroDivisionError, ValueError, TypeError):
+                continue
+            if not all(mpmath.isfinite(v) for v in vals):
+                continue
+            size = max([mpmath.mpf(1)] + [abs(v) for v in vals])
+            return abs(mpmath.fsum(vals)) > size * mpmath.mpf(10) ** (10 - DIGITS)
+    return False
