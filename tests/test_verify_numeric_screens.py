@@ -66,3 +66,19 @@ def test_the_quick_screen_of_candidates_tells_equal_sides_from_a_slip_with_or_wi
     assert not quick_equal(JacobiSN(x, y) ** 2, 1 - JacobiSN(x, y) ** 2)
     # a function with no values is not walked, and evalf gives no number: not screened in
     assert not quick_equal(f(x) * 2, 3 * f(x) - f(x))
+
+
+def test_the_point_screen_calls_a_difference_non_zero_even_where_its_radicand_is_negative():
+    w, b = sp.symbols("omega2 beta21", real=True)
+    radical = sp.sqrt((x - b * w ** 2) * (y - 2 * b * w ** 2))     # negative at some points: complex
+    assert zt.numerically_nonzero(w - radical)
+    assert zt.numerically_nonzero(x * w - y)                       # rational: decided exactly
+
+
+def test_the_point_screen_never_calls_an_identity_non_zero():
+    w = sp.Symbol("omega2", real=True)
+    for identity in (sp.sqrt(x + w ** 2) ** 2 - x - w ** 2,
+                     (x + w) ** 3 - sp.expand((x + w) ** 3),
+                     sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1,
+                     sp.sqrt(w - 3) * sp.sqrt(w - 3) - w + 3):
+        assert not zt.numerically_nonzero(identity)
