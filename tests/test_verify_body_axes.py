@@ -3,6 +3,7 @@ integrals in i, j, k, the body's unit vectors ê_i and their time derivatives, t
 beside a frame derivative, a period as a dot product, "and" between two statements, and a sum whose
 summand does not run with its index."""
 import kept_readings as kept
+from derive.lecture import rearranged
 from derive.lecture import statements as st
 from derive.lecture import summation_index as si
 
@@ -77,3 +78,12 @@ def test_a_moment_component_set_to_euler_s_left_side_is_euler_s_equation():
     assert verdicts("M_{cm_1} = I_1\\dot{\\omega_1} + \\omega_2\\omega_3(I_3-I_2)") == ["holds"]
     assert verdicts("M_{cm_1} = I_1\\dot{\\omega_1} + \\omega_2\\omega_3(I_2-I_3)") == ["fails"]
     assert verdicts("M_{cm_1} = I_1\\dot{\\omega_1}") == ["unchecked"]
+
+
+def test_an_equation_solved_for_a_term_after_an_arrow_is_the_same_equation():
+    assert rearranged.check("F_{O_z} - mg = ma_{cm_z} \\rightarrow F_{O_z} = ma_{cm_z} + mg")[0] == "holds"
+    verdict, why = rearranged.check("F_{O_z} - mg = ma_{cm_z} \\rightarrow F_{O_z} = ma_{cm_z} - mg")
+    assert verdict == "fails" and "without changing its sign" in why
+    assert rearranged.check("\\dot\\omega_3 = 0 \\rightarrow \\omega_3 = c") is None     # a consequence, not judged
+    assert rearranged.check("x^2 = 4 \\rightarrow x = 2") is None
+    assert rearranged.check("R_{i \\rightarrow b} = R_{b \\rightarrow i}^T") is None

@@ -44,6 +44,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.euler_poisson import EulerPoisson
@@ -270,6 +271,10 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._operator(line, piece, text) or self._coordinate(line, piece, text):
+            return
+        step = rearranged.check(text)
+        if step is not None:
+            self._add(line, piece, "rearrangement", *step)
             return
         summed = summation_index.slip(text)
         if summed is not None:
