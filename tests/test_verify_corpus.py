@@ -28,12 +28,6 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
-    ("bmc-watanabe-3d-rigid-body-kinetics", "checked"):
-        "a notebook in vector notation (H about the centre of mass, versors e_i and their time derivatives, "
-        "integrals over the body in i, j, k) whose displays sit in HTML spans",
-    ("bmc-watanabe-3d-rigid-body-kinetics", "found"):
-        "its slips (a sum whose summand F_n ignores the index i, I_yz for I_xz in the angular momentum's k "
-        "component) sit in displays the reader does not check",
     ("maithripala-free-body-heavy-top-313", "checked"):
         "a LaTeX source written in the body angular momentum Pi (\\mathbb{I}_i, h = ||Pi||, E), with Jacobi "
         "elliptic functions, hat maps and 3-1-3 angles theta_1, theta_2, theta_3 it does not declare",
@@ -48,7 +42,7 @@ SHORT = {
         "with the angles negated) sit in displays the reader does not check",
 }
 
-FLOOR = {"checked": 266, "slips_flagged": 29, "holds_flagged": 0}
+FLOOR = {"checked": 292, "slips_flagged": 31, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
