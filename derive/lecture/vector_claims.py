@@ -8,7 +8,8 @@ Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 :mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
-:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles), SymPy.
+:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles),
+:mod:`derive.symbolic.lagrangian` (the principal moments), SymPy.
 """
 from __future__ import annotations
 

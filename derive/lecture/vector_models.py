@@ -63,7 +63,7 @@ class Model:
         self.name, self.d = name, derivation
         self.plain_l_vector = plain_l_vector
         self.rates = name == "frame"    # the grammar reads d𝐗/dt only in a rotating frame
-        self.matrix_products = name in ("frame", "principal")    # I_b 𝛚_b, I𝛚: the text's tensor on a column
+        self.matrix_products = name == "frame"    # I_b 𝛚_b: the text's tensor on a column
         self.generic = {}               # a letter → (its body components, their rates)
 
     def generic_vector(self, base: str) -> sp.Matrix:
