@@ -44,6 +44,8 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
+from derive.lecture import rearranged
+from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.written_out import WrittenOut
@@ -270,7 +272,17 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
+        step = rearranged.check(text)
+        if step is not None:
+            self._add(line, piece, "rearrangement", *step)
+            return
+        summed = summation_index.slip(text)
+        if summed is not None:
+            self._add(line, piece, "sum", "typo", summed[1], None if self.judging_only else summed[0])
+            return
         if self._algebra_first(text) and self._algebra(line, piece, text):
+            return
+        if self._body_axes_first(line, piece, text):
             return
         try:
             parsed = lx.parse(text, self.vocab)

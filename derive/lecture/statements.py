@@ -5,10 +5,11 @@ the list of its statements, each a LaTeX string. May import: the standard librar
 
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
 other display environments, which are dropped), a row ending in ``+``/``-`` continuing on the
-next; a row into pieces at ``\\qquad``, ``\\quad``, ``\\Rightarrow``, ``\\implies``; a piece at
-top-level ``;`` and at commas between relations (never inside brackets). A label before a colon
-(``\\theta:``, ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are
-dropped; a case before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
+next (and one ending in ``=`` on a next that opens with ``=``); a row into pieces at ``\\qquad``,
+``\\quad``, ``\\Rightarrow``, ``\\implies`` and a spaced ``\\text{and}``; a piece at top-level ``;``
+and at commas between relations (never inside brackets). A label before a colon (``\\theta:``,
+``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are dropped; a case
+before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
 ``\\text{const}`` is kept as the constant it names, and so are words after a statement that say
 it is a constant (``= E \\quad \\text{(const.)}``: E names a conserved quantity); a relation in
 brackets after a statement (``\\dot\\omega_3 = -\\alpha\\gamma_2 \\left(\\alpha = \\frac{Mgx_C}{I_3}\\right)``)
@@ -158,7 +159,7 @@ def split_top(s: str) -> list[str]:
 
 def statements(latex: str) -> list[str]:
     """The statements of one display (see the module docstring), each a LaTeX string."""
-    body = _strip_envs(latex).replace("\\;", "\\\x00")
+    body = _AND.sub(r" \\quad ", _strip_envs(latex)).replace("\\;", "\\\x00")
     rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
@@ -167,6 +168,8 @@ def statements(latex: str) -> list[str]:
             continue
         if joined and re.search(r"[+\-]\s*$", joined[-1]):
             joined[-1] = joined[-1] + " " + row
+        elif joined and re.search(r"(?<![<>!\\])=\s*$", joined[-1]) and row.startswith("="):
+            joined[-1] = joined[-1] + " " + row[1:]      # "A = B =" then "= C": one chain, the = said twice
         else:
             joined.append(row)
     out = []
@@ -181,6 +184,10 @@ def statements(latex: str) -> list[str]:
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))
     return out
+
+
+# "and" between two statements, spaced with ~ or \quad (``a = b ~~~\text{and}~~~ c = d``): a cut
+_AND = re.compile(r"(?:~|\\[,;:!]|\\q?quad|\s)*\\(?:text|mbox|textrm|mathrm)\s*\{\s*and\s*\}(?:~|\\[,;:!]|\\q?quad|\s)*")
 
 
 _OPEN_END = re.compile(r"(?:(?<![<>!\\])=|\+|-|\\times|\\cdot)$")

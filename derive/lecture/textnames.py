@@ -30,6 +30,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import euler_moments
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
@@ -203,7 +204,13 @@ class TextNames:
                         self._rotation(line, piece, sp.Matrix(value)):
                     self._matrix_name(m0, value)     # a product of the text's matrices: a rotation
                     return True
-                if not self._space_component(line, piece, m0, members[1]) and not self._weight(line, piece, m0, members[1]):
+                euler = euler_moments.row(value, self.d.euler(self.ctx.subs))
+                if euler is not None:            # the moment's body component i set to Euler's left side
+                    self._add(line, piece, "equation of motion", "holds" if euler[1] == 0 else "fails",
+                              f"Euler's equation {euler[0] + 1} about the centre of mass, the text's "
+                              f"{self.tex(m0)} the moment's component" + ("" if euler[1] == 0 else
+                                                                        f": off by {sp.sstr(euler[1])}"))
+                elif not self._space_component(line, piece, m0, members[1]) and not self._weight(line, piece, m0, members[1]):
                     self._add(line, piece, "new symbol", "unchecked",
                               f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
                 return True

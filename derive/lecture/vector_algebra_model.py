@@ -54,12 +54,21 @@ _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*\\?(?:mathbf|
                       r"\\widetilde|\\hat\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
 # a macro's bold letter in braces, {\boldsymbol L}_i: the letter with its subscript
 _BOLD_GROUP = re.compile(r"\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
+# a period between a vector and the next operand, (\vec{a}.\vec{c}): the dot product, not a sentence's end
+_DOT_AS_PERIOD = re.compile(r"(?<=[}\)])\s*\.\s*(?=\\(?:vec|hat|boldsymbol|mathbf|bm|left)\b|\()")
+POINT_LABELS = ("cm", "CM", "com", "G", "O", "C")
+"""Subscripts that name the point moments are taken about (𝐇_cm, 𝐇_G, 𝐫_{/cm}): the point the
+positions are measured from, the origin of this model."""
+_POINT_SUPERSCRIPT = re.compile(r"\^\s*\{\s*(?:" + "|".join(POINT_LABELS) + r")\s*\}")
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
 def prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
-    (the dyadic), ı and ȷ as i and j."""
+    (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
+    ((𝐚.𝐜)𝐛), and a point's label written as a superscript (I_xx^{cm}) dropped."""
+    text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
+    text = _POINT_SUPERSCRIPT.sub("", text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
@@ -237,8 +246,12 @@ class Algebra:
             return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
         if a.hat:
             return None
+        if base == "r" and sub.startswith("/") and sub[1:] in POINT_LABELS:
+            sub = ""                         # 𝐫_{/cm}: the position relative to the point, this model's 𝐫
         if base == "r" and self._own(sub, env):
             return r if bold else sp.sqrt(r.dot(r))
+        if base == "r" and not bold and sub in ("x", "y", "z"):
+            return r[AXES[sub]]              # r_x, r_y, r_z: the current point's coordinates
         if base in "xyz" and len(base) == 1 and not bold:
             if self._own(sub, env):
                 return r[AXES[base]]
@@ -263,11 +276,11 @@ class Algebra:
         base, sub = a.base, a.sub
         system = "body" if sub in ("system", "textsystem", "G", "mathcalG", "mathrmG") else self.system
         point = env.get("point") is not None and sub == env.get("index")
-        if base == "L" or base in self.state.momenta:
-            if bold:
+        if base == "L" or base in self.state.momenta or (base == "H" and bold):
+            if bold:                        # 𝐇, engineering dynamics' angular momentum (Beer & Johnston, Kane)
                 if point:
                     return mass * r.cross(W.cross(r))
-                return momentum(system) if sub in ("", "system", "textsystem") else None
+                return momentum(system) if sub in ("", "system", "textsystem", *POINT_LABELS) else None
             if len(sub) == 1 and sub in AXES:
                 return momentum(self.system)[AXES[sub]]
             if "omega" in sub:

@@ -8,7 +8,8 @@ Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 :mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
-:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles), SymPy.
+:mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles),
+:mod:`derive.symbolic.lagrangian` (the principal moments), SymPy.
 """
 from __future__ import annotations
 
@@ -22,12 +23,25 @@ from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
 from derive.lecture.vector_models import is_quantity
 from derive.lecture.vector_parser import LAW
+from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
+
+
+_VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?\\(?:vec|boldsymbol|mathbf|bm)\s*\{")
+_BODY_AXIS = re.compile(r"\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*\{\s*e\s*_\s*\{?\s*[123]")
 
 
 class VectorStatements:
     """Mixin of the checker. Uses ``self.vocab``, ``self.d``, ``self.ctx``, ``self._add``,
     ``self._resolve`` and ``self.judging_only``."""
+
+    def _body_axes_first(self, line, piece, text) -> bool:
+        """``\\vec{H} = I_1\\omega_1\\hat{\\boldsymbol{e_1}} + …``: a vector on the left written out
+        along the body axes ê_i is the vector reader's, before the scalar one reads its letters as
+        scalars (False when it is not such a statement, or that reader cannot read it)."""
+        if not (_VECTOR_LEFT.match(text) and _BODY_AXIS.search(text)):
+            return False
+        return self._vectors(line, piece, text)
 
     def _vectors(self, line, piece, text) -> bool:
         """A statement in vectors, tensors, sums over particles or frame derivatives
@@ -60,6 +74,13 @@ class VectorStatements:
         for row in reading.members if put and reading.model == "frame" else ():
             for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
                 m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
+        written = [m.value for m in first if hasattr(m.value, "has")]
+        if reading.model == "frame" and {I1, I2, I3} <= set().union(*(free(v) for v in written)):
+            principal = vm.Model("frame", self.d).principal_rigid()     # 𝐋 beside I₁, I₂, I₃: principal axes,
+            principal.update(vm.principal_tensor())                     # and the plain I their diagonal tensor
+            for row in reading.members:
+                for m in row:
+                    m.value = m.value.xreplace(principal) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "frame" and any(m.value.has(*vm.RIGID) for m in first if hasattr(m.value, "has")):
             rigid = vm.Model("frame", self.d).rigid()     # the text's tensor written: 𝐋 = I𝛚 of the rigid body
             for row in reading.members:

@@ -34,7 +34,15 @@ GENERIC = "_vec"
 """The mark of a generic vector's body components (``V_vec1``): a vector of the text's in a frame
 derivative, with time-dependent components of its own."""
 _KNOWN_VECTORS = {"r", "L", "omega", "Omega", "e", "I", "Xi", "tau"}
+POINT_LABELS = ("cm", "CM", "com", "G", "O", "C")
+"""Subscripts naming the point a momentum is taken about (𝐇_cm, 𝐋_G): the centre of mass, or the
+point the body turns about."""
 _UNIT = re.compile(r"\\(?:mathbf|mathbb|boldsymbol|bm)\s*\{\s*(?:\\(?:mathbb|mathbf)\s*\{\s*)?1\s*\}(?:\s*\})?")
+
+
+def principal_tensor() -> dict:
+    """`RIGID`'s entries in principal axes: the diagonal I₁, I₂, I₃, no products of inertia."""
+    return {_J[0]: I1, _J[3]: I2, _J[5]: I3, _J[1]: 0, _J[2]: 0, _J[4]: 0}
 
 
 def is_quantity(a) -> bool:
@@ -99,6 +107,12 @@ class Model:
             return sp.Matrix(self.d.omega)
         return W
 
+    def principal_rigid(self) -> dict:
+        """𝐋 of a rigid body where the statement writes the principal moments I₁, I₂, I₃ beside its
+        frame derivative: (I₁ω₁, I₂ω₂, I₃ω₃) in body axes, its rate (I₁ω̇₁, I₂ω̇₂, I₃ω̇₃)."""
+        L = sp.diag(I1, I2, I3) * self.omega
+        return {**dict(zip(L_B, L)), **dict(zip(LD_B, sp.diag(I1, I2, I3) * self.omega.applyfunc(self.dt)))}
+
     def rigid(self) -> dict:
         """𝐋 of a rigid body where the statement writes its tensor: 𝐋 = I𝛚 with I constant in body
         axes (`RIGID`), so (d𝐋/dt)_body = I𝛚̇; as the substitution of 𝐋's body components and rates."""
@@ -125,8 +139,9 @@ class Model:
     def rate(self, X, frame):
         """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
         if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()) or \
-                isinstance(X, sp.MatrixBase) and X.free_symbols and X.free_symbols <= set(ANGLES) | set(RATES):
-            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ) and rates (𝛚)
+                isinstance(X, sp.MatrixBase) and X.free_symbols <= set(ANGLES) | set(RATES):
+            return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ) and rates
+            #    (𝛚), or constant body components (a body axis ê_i, whose inertial rate is 𝛚 × ê_i)
         if isinstance(X, sp.MatrixBase):
             raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
         return None
@@ -155,6 +170,12 @@ class Model:
 
     def _vector(self, p, a, env, tok):
         plain = not a.hat and not a.tilde and not a.primes and not a.dots
+        if self.name == "frame" and a.base == "omega" and not a.bold and a.sub in ("1", "2", "3") and a.dots <= 1 \
+                and not (a.hat or a.tilde or a.primes or a.sup):
+            w = self.omega[int(a.sub) - 1]          # ω_i, ω̇_i beside frame derivatives: 𝛚's body components
+            return self.dt(w) if a.dots else w
+        if self.name == "frame" and a.base == "omega" and a.bold and not a.sub and a.dots == 1 and not a.tilde:
+            return self.omega.applyfunc(self.dt)      # 𝛚̇ beside frame derivatives: the rates of its body components
         if (a.base == "omega" or _text_letter(p, a, "angular velocity")) and not a.sub and not a.dots and not a.tilde:
             return self.omega         # the text's letter for the angular velocity (Landau's 𝛀) too
         if a.base == "e" and (a.hat or a.bold) and not a.primes and not a.sup and len(a.sub) == 1:
@@ -186,6 +207,10 @@ class Model:
             return R_B
         if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
             return self.momentum
+        if a.base in ("L", "H") and plain and a.bold and a.sub in POINT_LABELS and not _text_letter(p, a, "torque"):
+            return self.momentum        # 𝐋_cm, 𝐇_G: about the centre of mass, the point the body turns about here
+        if self.name == "principal" and a.base == "I" and plain and not a.sub and not a.sup and not a.bold:
+            return self.tensor          # a plain I beside the body axes ê_i: the diagonal tensor of principal axes
         if _text_letter(p, a, "angular momentum") and plain and (a.bold and not a.sub or len(a.sub) == 1 and
                                                                  self.name == "particle" and not a.bold):
             return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
@@ -240,7 +265,11 @@ def _has_time_derivative(toks) -> bool:
 
 def vectorish(toks) -> bool:
     """Whether a statement is for this reader: a cross product, a tensor, a sum over particles,
-    a particle quantity or a time derivative of a vector."""
+    a particle quantity, a time derivative of a vector, or a vector written along the body axes ê_i."""
+    atoms = [t.value for t in toks if t.kind == "atom"]
+    if any(a.base == "e" and a.hat and a.sub in ("1", "2", "3") for a in atoms) and \
+            any((a.bold or a.text.startswith("\\vec")) and a.base not in ("e", "omega") for a in atoms[:1]):
+        return True
     for t in toks:
         if t.kind == "cmd" and t.value == "times":
             return True

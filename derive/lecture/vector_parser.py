@@ -325,6 +325,11 @@ class VectorParser(_Parser):
             self.i = start
             self.stop_dm = True
             term = self.term({**env, **where})
+            while self.at("op", "+") or self.at("op", "-"):     # ∫ a − b dm: the integrand runs to its dm
+                minus = self.take("op").value == "-"
+                rest = self.term({**env, **where})
+                term, rest = self.summands(term, rest)
+                term = term - rest if minus else term + rest
             self.stop_dm = stop
             if not (self.at("atom") and self.peek().value.base == "d"):
                 self.fail("an integral without its dm")

@@ -68,7 +68,11 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
     name = model_of(toks, sticky)
     plain_l = any(t.kind == "atom" and t.value.base == "I" and (t.value.bold or t.value.dots == 2) for t in toks) \
         or any(t.kind == "cmd" and t.value == "times" for t in toks)
-    return vp.read(toks, text, vocab, Model(name, derivation, plain_l), name)
+    model = Model(name, derivation, plain_l)
+    if name == "principal" and any(t.kind == "atom" and t.value.base == "I" and not (t.value.sub or t.value.bold or
+                                   t.value.dots or t.value.sup) for t in toks):
+        model.matrix_products = True     # a plain I (a text's matrix, not the lecture's Ï·) acts on 𝛚 by juxtaposition
+    return vp.read(toks, text, vocab, model, name)
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
