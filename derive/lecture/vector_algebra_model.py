@@ -57,9 +57,33 @@ _BOLD_GROUP = re.compile(r"\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
+_VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*V\b")
+_DENSITY = re.compile(r"\\rho(?![A-Za-z])")
+
+
+def _mass_element(text: str) -> str:
+    """An integral over the volume with a uniform density, ``\\rho \\int … \\mathrm dV`` (ρ before the
+    integral or inside it), is the integral over the mass, ``\\int … dm``: one ρ with each dV."""
+    volumes = _VOLUME.findall(text)
+    if not volumes or len(_DENSITY.findall(text)) != len(volumes):
+        return text
+    return _VOLUME.sub(" dm", _DENSITY.sub(" ", text))
+
+
+_MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*\\(?:boldsymbol|mathbf|bm)\s*\{?\s*p\s*\}?(?![A-Za-z_])")
+
+
+_UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
+
+
 def prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
-    (the dyadic), ı and ȷ as i and j."""
+    (the dyadic), ı and ȷ as i and j, ρ … dV as dm, the momentum element d𝐩 as 𝐯 dm, and beside a
+    dyadic 𝐞 as the unit tensor."""
+    text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
+    if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
+        text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
+    text = _mass_element(text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
@@ -90,6 +114,7 @@ class State:
     defs: dict = field(default_factory=dict)        # (base, sub) → the text's value of an entry
     head: str | None = None                         # the left side this reader last set
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
+    entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
 
 
@@ -179,13 +204,18 @@ class Algebra:
     free = "ijkl"
     matrix_products = True              # the texts' matrices act on columns by juxtaposition
     rates = True
-    frames: dict = {}                   # no frame subscripts: d/dt is the inertial one
+    frames = {"r": "body", "rel": "body", "rot": "body", "b": "body", "body": "body"}
+    """A derivative's subscript naming the turning frame, (d𝐗/dt)_r: the rate seen from the body;
+    none: the inertial one."""
 
     def __init__(self, state: State, system: str):
         self.state, self.system = state, system
 
     def rate(self, X, frame):
-        return rate(X)
+        """d𝐗/dt, or seen from the body (d𝐗/dt)_r = d𝐗/dt − 𝛚 × 𝐗 (the transport theorem)."""
+        if frame == "body" and isinstance(X, sp.MatrixBase) and X.shape == (3, 1):
+            return rate(X) - W.cross(X)
+        return rate(X) if frame != "body" or not isinstance(X, sp.MatrixBase) else None
 
     def points(self):
         return [({"point": k, "index": None}, MU[k]) for k in range(POINTS)]
@@ -237,7 +267,8 @@ class Algebra:
             return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
         if a.hat:
             return None
-        if base == "r" and self._own(sub, env):
+        element = env.get("point") is not None and env.get("index") is None and sub == "i" and "i" not in env
+        if base == "r" and (self._own(sub, env) or element):     # 𝐫ᵢ in an integral (no index): its element
             return r if bold else sp.sqrt(r.dot(r))
         if base in "xyz" and len(base) == 1 and not bold:
             if self._own(sub, env):
