@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import copy
 import itertools
+import re
 
 import sympy as sp
 
@@ -33,7 +34,10 @@ class AlgebraStatements:
             names = getattr(self.notes, "names", None)
             momenta = frozenset(b for (b, kind), m in (names.letters.items() if names else ()) if
                                 kind == "vector" and m == "angular momentum")
-            self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""), momenta=momenta)
+            torques = {b for (b, kind), m in (names.letters.items() if names else ()) if
+                       kind == "vector" and m == "torque"} - momenta     # 𝐌 "being the external torque"
+            self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""), momenta=momenta,
+                                       torques=set(va.TORQUES) | torques)
             self._alg_read = False
         return self._alg_state
 
@@ -44,7 +48,7 @@ class AlgebraStatements:
         if va.lecture_notation(text):
             return False
         state = self._alg
-        if va.markers(text, bold=self._alg_read):
+        if va.markers(text, bold=self._alg_read) or _torque_law(text, state):
             return True
         return self._alg_read and (state.head is not None and text.startswith(state.head) or _mentions(text, state))
 
@@ -77,6 +81,8 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
+                state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
             fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
             if fix:
                 verdict, why = "typo", f"{why}; one edit ({fix[1]}) makes it hold"
@@ -90,7 +96,7 @@ class AlgebraStatements:
         reread = lambda text: va.read(text, copy.deepcopy(self._alg))  # noqa: E731
         for _, _, what, again_src, again in vc.edited_readings(reading, k, reread, 60):
             if self._algebra_pair(again, ref, k, record=False)[0] == "holds":
-                return again_src.strip(), what
+                return re.sub(r"\s+", " ", again_src.replace("\\mathbf{\\" + va.INTEGRAL + "}", "\\int")).strip(), what
         return None
 
     def _algebra_pair(self, reading, ref, k, record=True) -> tuple[str, str]:
@@ -111,8 +117,12 @@ class AlgebraStatements:
             if _zero(d):
                 continue
             if ref == 0 and _entry_name(reading.source, members[0]) and not isinstance(d, sp.MatrixBase) \
+                    and (self._alg.products or not self._alg.entries) \
                     and _zero(va.difference(members[k].value, -members[ref].value)):
                 convention = True          # a product of inertia defined with the other sign
+                continue
+            if _principal_only(reading.source) and _zero(_in_principal_axes(d)):
+                principal = True           # written in the principal moments I_11, I_22, I_33 only
                 continue
             lit = members[k].literal if members[k].literal is not None else members[ref].literal
             if isinstance(d, sp.MatrixBase) and d.shape == (3, 3) and lit is not None and \
@@ -129,6 +139,28 @@ class AlgebraStatements:
         if principal:
             return "holds", f"{WHY}: holds if the axes are principal axes (the products of inertia vanish)"
         return "holds", f"{WHY}: exact (expand)"
+
+
+_MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
+_PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
+"""The body's three mass points each on its own axis: every product of inertia vanishes, the
+three principal moments stay generic."""
+
+
+def _principal_only(source: str) -> bool:
+    """A statement that writes the tensor's diagonal entries (I_11, I_yy) and none off it."""
+    subs = _MOMENT.findall(source)
+    return bool(subs) and all(s[0] == s[1] for s in subs)
+
+
+def _in_principal_axes(d):
+    """A difference on the body whose axes are principal (`_PRINCIPAL_POINTS`)."""
+    return va.difference(d.subs(_PRINCIPAL_POINTS) if isinstance(d, sp.Basic) or isinstance(d, sp.MatrixBase)
+                         else d, sp.zeros(*d.shape) if isinstance(d, sp.MatrixBase) else 0)
+
+
+_INDEX_ENTRY = re.compile(r"^\s*I_\s*\{?\s*[a-z]\s*,?\s*[a-z]\s*\}?\s*$")
+"""``I_{ij}``: the left side of the tensor's entries written in index form."""
 
 
 def _zero(d) -> bool:
@@ -176,6 +208,15 @@ def _entry_name(source, member):
             and toks[0].value.sub[0] != toks[0].value.sub[1] and not toks[0].value.bold:
         return ("I", toks[0].value.sub)
     return None
+
+
+def _torque_law(text, state) -> bool:
+    """d𝐋/dt set equal to a bold letter the prose names the torque (``\\boldsymbol M`` "being the
+    external torque"): the law of motion, this reader's."""
+    if not re.search(r"\\frac\s*\{\s*(?:\\mathrm\s*\{?\s*d\s*\}?|d)\s*\\(?:boldsymbol|mathbf|bm)", text):
+        return False
+    return any(t.kind == "atom" and t.value.bold and not t.value.sub and t.value.base in state.torques
+               and t.value.base not in va.TORQUES for t in _tokens(va.prepare(text)))
 
 
 def _mentions(text, state) -> bool:

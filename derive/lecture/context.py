@@ -107,9 +107,13 @@ class Reading:
                 self._add(item.line, item.latex, "assumption", "unchecked", f"an assumption ({err.why})")
             return
         m0 = parsed.members[0].value if parsed.members else None
-        if len(parsed.members) == 2 and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
-                and free(parsed.members[1].value) and not free(parsed.members[1].value) & {m0}:
-            self.ctx.defs[m0] = parsed.members[1].value   # "with the substitution u = cos θ": a new name
+        m1 = parsed.members[1].value if len(parsed.members) == 2 else None
+        if m1 is not None and parsed.relations[0] in ("=", "≡") and not isinstance(m0, sp.Symbol) \
+                and self._new_name(m1) and free(m0) and not free(m0) & {m1}:
+            m0, m1 = m1, m0                      # "let (expression) = α₂": the new name written on the right
+        if m1 is not None and parsed.relations[0] in ("=", "≡") and self._new_name(m0) \
+                and free(m1) and not free(m1) & {m0}:
+            self.ctx.defs[m0] = m1                # "with the substitution u = cos θ": a new name
             if item.display:
                 self._add(item.line, item.latex, "new symbol", "unchecked",
                           f"defines the text's symbol {self.tex(m0)} (recorded, then used)")

@@ -398,11 +398,14 @@ class _Parser:
             self.i = k2                                   # d/dt of what follows
             return self._evaluated(DT(self.term({})))
         if dt and len(num) == 2 and is_d(num[0]) and num[1].kind == "atom":
-            what = self.vocab.resolve(num[1].value)
+            atom = num[1].value
+            if atom.bold and atom.sub in ("1", "2", "3"):
+                atom = atom.with_(bold=False)           # d(𝛚₁)/dt: a bold component is the component
+            what = self.vocab.resolve(atom)
             if what is LVEC:
                 self.i = k2
                 return DLDT
-            if what is None or num[1].value.bold:
+            if what is None or atom.bold:
                 raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
                               num[1].pos + 1)
             self.i = k2

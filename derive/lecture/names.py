@@ -444,11 +444,12 @@ def _pieces(text, found):
 def _nearest(marked: str) -> str | None:
     """The meaning whose phrase stands nearest § (the symbol): a phrase around it ("a distance §
     from the pivot to the centre of mass"), right before it ("mass §") or right after it when the
-    text goes on to say what it is ("§ (angular momentum about …)", "§ is the …", "§ of the …").
+    text goes on to say what it is ("§ (angular momentum about …)", "§ is the …", "§ being the …",
+    "§ of the …").
     Nothing past another symbol (¤), nothing farther than a few words."""
     at = marked.index("§")
     lead = marked[at + 1:].lstrip()
-    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the |the )", lead)
+    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the |being the |being |the )", lead)
     best, told = None, None     # told: the nearest phrase that "§ is the …" goes on to say
     for name, (_, phrase) in MEANINGS.items():
         for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):

@@ -3,8 +3,8 @@
 Takes: the text of a notes file, or one formula of it. Gives: the text with what is not rendered
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
-May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros` and
-`derive.lecture.statements` (its top-level comma split).
+May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`,
+`derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -43,7 +43,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import texmacros
+from derive.lecture import tex_structure, texmacros
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -135,9 +135,11 @@ def rendered(text: str, latex_source: bool = False) -> str:
     inline code spans (the line structure is kept). A fenced block in the language ``math``
     (GitHub, GitLab and Documenter render it as a display) is a display, read as ``$$ … $$``.
     In a LaTeX source (``latex_source``), a ``%`` not escaped as ``\\%`` comments out the rest
-    of its line, as TeX reads it."""
+    of its line, as TeX reads it, and its inline ``\\( … \\)`` and sectioning commands are read
+    as Markdown's (`derive.lecture.tex_structure`)."""
     if latex_source:
         text = _TEX_COMMENT.sub(lambda m: m.group(1) + " " * len(m.group(2)), text)
+        text = tex_structure.as_notes(text)
     text = _COMMENT.sub(_blank, text)
     text = _MATH_FENCE.sub(_math_display, text)
     text = _FENCE.sub(_blank, text)

@@ -24,7 +24,25 @@ _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*",
          "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
          "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
 
+_SYSTEM_OPEN = re.compile(r"\\left\s*(?:\\\{|\\lbrace)\s*(?P<array>\\begin\{array\}\s*\{[^{}]*\})?")
+_SYSTEM_ARRAY_END = re.compile(r"\\end\{array\}(?=\s*(?:\\right\s*\.|\\quad|\\qquad|$))")
+_SET_CLOSE = re.compile(r"\\right\s*(?:\\\}|\\rbrace)")
+
+
+def _system_rows(s: str) -> str:
+    """A system brace, ``\\left\\{`` with no closing brace (its ``\\right.`` already dropped), round
+    aligned rows or a one-column array: the rows, each ended so that it is cut as one."""
+    if _SET_CLOSE.search(s) or not _SYSTEM_OPEN.search(s):
+        return s
+    arrays = any(m.group("array") for m in _SYSTEM_OPEN.finditer(s))
+    s = _SYSTEM_OPEN.sub(" ", s)
+    if arrays:
+        s = _SYSTEM_ARRAY_END.sub(lambda m: r" \\ ", s)
+    return re.sub(r"\\right\s*\.", lambda m: r" \\ ", s)
+
+
 def _strip_envs(s: str) -> str:
+    s = _system_rows(s)
     # alignat's argument is its number of column pairs, not math
     s = re.sub(r"\\begin\{(alignat\*?|alignedat)\}\s*\{\s*\d+\s*\}", " ", s)
     for env in _ENVS:

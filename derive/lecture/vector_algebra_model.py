@@ -63,12 +63,36 @@ _POINT_SUPERSCRIPT = re.compile(r"\^\s*\{\s*(?:" + "|".join(POINT_LABELS) + r")\
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
+_VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*V\b")
+_DENSITY = re.compile(r"\\rho(?![A-Za-z])")
+
+
+def _mass_element(text: str) -> str:
+    """An integral over the volume with a uniform density, ``\\rho \\int … \\mathrm dV`` (ρ before the
+    integral or inside it), is the integral over the mass, ``\\int … dm``: one ρ with each dV."""
+    volumes = _VOLUME.findall(text)
+    if not volumes or len(_DENSITY.findall(text)) != len(volumes):
+        return text
+    return _VOLUME.sub(" dm", _DENSITY.sub(" ", text))
+
+
+_MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*\\(?:boldsymbol|mathbf|bm)\s*\{?\s*p\s*\}?(?![A-Za-z_])")
+
+
+_UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
+
+
 def prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
-    ((𝐚.𝐜)𝐛), and a point's label written as a superscript (I_xx^{cm}) dropped."""
+    ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, ρ … dV as dm, the
+    momentum element d𝐩 as 𝐯 dm, and beside a dyadic 𝐞 as the unit tensor."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
+    text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
+    if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
+        text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
+    text = _mass_element(text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
@@ -99,6 +123,7 @@ class State:
     defs: dict = field(default_factory=dict)        # (base, sub) → the text's value of an entry
     head: str | None = None                         # the left side this reader last set
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
+    entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
 
 
@@ -188,13 +213,18 @@ class Algebra:
     free = "ijkl"
     matrix_products = True              # the texts' matrices act on columns by juxtaposition
     rates = True
-    frames: dict = {}                   # no frame subscripts: d/dt is the inertial one
+    frames = {"r": "body", "rel": "body", "rot": "body", "b": "body", "body": "body"}
+    """A derivative's subscript naming the turning frame, (d𝐗/dt)_r: the rate seen from the body;
+    none: the inertial one."""
 
     def __init__(self, state: State, system: str):
         self.state, self.system = state, system
 
     def rate(self, X, frame):
-        return rate(X)
+        """d𝐗/dt, or seen from the body (d𝐗/dt)_r = d𝐗/dt − 𝛚 × 𝐗 (the transport theorem)."""
+        if frame == "body" and isinstance(X, sp.MatrixBase) and X.shape == (3, 1):
+            return rate(X) - W.cross(X)
+        return rate(X) if frame != "body" or not isinstance(X, sp.MatrixBase) else None
 
     def points(self):
         return [({"point": k, "index": None}, MU[k]) for k in range(POINTS)]
@@ -248,7 +278,8 @@ class Algebra:
             return None
         if base == "r" and sub.startswith("/") and sub[1:] in POINT_LABELS:
             sub = ""                         # 𝐫_{/cm}: the position relative to the point, this model's 𝐫
-        if base == "r" and self._own(sub, env):
+        element = env.get("point") is not None and env.get("index") is None and sub == "i" and "i" not in env
+        if base == "r" and (self._own(sub, env) or element):     # 𝐫ᵢ in an integral (no index): its element
             return r if bold else sp.sqrt(r.dot(r))
         if base == "r" and not bold and sub in ("x", "y", "z"):
             return r[AXES[sub]]              # r_x, r_y, r_z: the current point's coordinates

@@ -190,7 +190,7 @@ class VectorParser(_Parser):
 
     def primary(self, env):
         tok = self.peek()
-        if tok is not None and tok.kind == "op" and tok.value == "(" and self.model.rates:
+        if tok is not None and tok.kind == "op" and tok.value in ("(", "[") and self.model.rates:
             framed = self._framed_rate(env)
             if framed is not None:
                 return framed
@@ -245,14 +245,15 @@ class VectorParser(_Parser):
         return value
 
     def _framed_rate(self, env):
-        """(d𝐗/dt)_{body|inertial|space…} at '(' (no subscript: inertial), or None."""
+        """(d𝐗/dt)_{body|inertial|space…} at '(' or '[' (no subscript: inertial), or None."""
         start = self.i
+        close = ")" if self.peek().value == "(" else "]"
         nxt = self.peek(1)
         if not (nxt is not None and nxt.kind == "cmd" and nxt.value in ("frac", "dfrac", "tfrac")):
             return None
         self.i += 1
         X = self._rate(env)
-        if X is None or not self.at("op", ")"):
+        if X is None or not self.at("op", close):
             self.i = start
             return None
         self.i += 1
