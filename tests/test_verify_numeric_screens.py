@@ -66,3 +66,37 @@ def test_the_quick_screen_of_candidates_tells_equal_sides_from_a_slip_with_or_wi
     assert not quick_equal(JacobiSN(x, y) ** 2, 1 - JacobiSN(x, y) ** 2)
     # a function with no values is not walked, and evalf gives no number: not screened in
     assert not quick_equal(f(x) * 2, 3 * f(x) - f(x))
+
+
+def test_a_large_trig_difference_is_left_unexpanded_and_a_polynomial_is_always_expanded():
+    big = sum((sp.sin(k * a) + x) ** 2 * (sp.cos(a) + k * y) ** 3 / (x + k) for k in range(1, 30))
+    assert zt._size(big) > zt._EXPAND_MAX_NODES
+    assert zt.bounded_expand(big) is big
+    poly = sum((x + k * y + a) ** 3 * (x - k) for k in range(1, 40))
+    assert zt._size(poly) > zt._EXPAND_MAX_NODES
+    assert zt.bounded_expand(poly) == sp.expand(poly)
+    assert zt.bounded_expand(sp.sin(a) * (x + 1) - sp.sin(a) * x - sp.sin(a)) == 0
+
+
+def test_the_first_point_counterexample_is_the_full_numeric_tests_outcome_and_none_for_an_identity():
+    slip = sp.Matrix([sp.sin(a) ** 2 + sp.cos(a) ** 2 + x / 10 ** 6])
+    one = sp.Matrix([1])
+    found = zt.counterexample(slip, one, "seed")
+    assert found is not None and found == zt.numeric_zero(slip, one, "seed")
+    assert not found.ok
+    identity = sp.Matrix([sp.sin(a) ** 2 + sp.cos(a) ** 2])
+    assert zt.counterexample(identity, one, "seed") is None
+    assert zt.counterexample(sp.Matrix([x + y]), sp.Matrix([y + x + 1]), "s") == \
+        zt.numeric_zero(sp.Matrix([x + y]), sp.Matrix([y + x + 1]), "s")
+
+
+def test_the_exact_screen_with_roots_takes_a_square_root_as_its_square_and_proves_a_slip():
+    r = sp.sqrt(a * y + x)
+    # zero once (√X)² = X is used, as expand and cancel use it: never called non-zero
+    assert not zt.surely_nonzero_with_roots(r * (y + r) - y * r - a * y - x)
+    assert not zt.surely_nonzero_with_roots(sp.sqrt(x / y) * sp.sqrt(y) - sp.sqrt(x))
+    # a slip under the root, or beside it, is proved non-zero
+    assert zt.surely_nonzero_with_roots(r * (y + r) - y * r - a * y)
+    assert zt.surely_nonzero_with_roots(sp.sqrt(a * y + x) - sp.sqrt(a * y + 2 * x))
+    # a root of a number is left to the symbolic steps
+    assert not zt.surely_nonzero_with_roots(sp.sqrt(2) * x - x)

@@ -64,12 +64,20 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     if lhs.shape != rhs.shape:
         return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
     diffs = lhs - rhs
+    roots = any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow))
     # a difference shown non-zero at an exact point goes straight to the numeric test, whose
-    # counterexample is the reason given (the symbolic steps could not show it zero)
-    steps = [None] if any(map(zt.surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
+    # counterexample is the reason given (the symbolic steps could not show it zero); so does one
+    # the numeric test's first point shows non-zero, with that point's outcome
+    if any(map(zt.surely_nonzero, diffs)):
+        steps = [None]
+    else:
+        found = _counterexample(lhs, rhs, seed, roots)
+        if found is not None:
+            return found
+        steps = [_symbolic_zero(d) for d in diffs]
     if all(steps):
         return True, max(steps, key=zt.SYMBOLIC_STEPS.index)
-    if any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow)):
+    if roots:
         real = _real_zero(lhs, rhs, seed)
         if real is not None:
             return real
@@ -77,10 +85,21 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     return out.ok, out.method
 
 
-def _real_zero(lhs, rhs, seed):
-    """The numeric test of a formula with roots where they are real: seeded points at which every
-    radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where its roots exist, not
-    on another branch of them); None when no such point turns up."""
+def _counterexample(lhs, rhs, seed, roots):
+    """The outcome of the numeric test that decides below (`_real_zero` where roots are, else
+    `zero_test.numeric_zero`) when its first point shows the difference non-zero, else None."""
+    if roots:
+        real = _real_zero(lhs, rhs, seed, points=1)
+        if real is not None:
+            return real if not real[0] else None
+    out = zt.counterexample(lhs, rhs, seed)
+    return None if out is None else (out.ok, out.method)
+
+
+def _real_zero(lhs, rhs, seed, points=zt.POINTS):
+    """The numeric test of a formula with roots where they are real: seeded points (``points`` of
+    them) at which every radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where
+    its roots exist, not on another branch of them); None when no such point turns up."""
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
@@ -104,7 +123,7 @@ def _real_zero(lhs, rhs, seed):
                 if abs(a - b) > max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - zt.DIGITS):
                     return False, (f"mpmath {zt.DIGITS} digits where its roots are real: |claim − derived| = "
                                    f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
-        if used == zt.POINTS:
+        if used == points:
             break
     return (True, f"mpmath {zt.DIGITS} digits at {used} points where its roots are real") if used else None
 

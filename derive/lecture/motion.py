@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import surely_nonzero
+from derive.lecture.zero_test import surely_nonzero, surely_nonzero_with_roots
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -149,6 +149,17 @@ class Motion:
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
         dyn = set(lx.W) | set(lx.WD)
+        failed = False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+        # both ways of holding below leave r = 0 once ω̃̇ is taken from the equations (a multiple
+        # q Rᵢ of one, Rᵢ linear in ω̃̇ᵢ, too): an exact point where it is not spares the search
+        # for a correction its symbolic steps on every candidate
+        try:
+            flow = _flow(tuple(euler))
+        except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
+            flow = None
+        if flow is not None and all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) \
+                and surely_nonzero_with_roots(r.xreplace(flow)):
+            return failed
         for i, R in enumerate(euler):
             if R == 0:
                 continue
@@ -156,14 +167,10 @@ class Motion:
             if not (free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        flow = {}
-        for i, R in enumerate(euler):
-            coef = sp.diff(R, lx.WD[i])
-            if coef != 0:
-                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+        flow = _flow(tuple(euler))
         if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
-        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+        return failed
 
     def _duplicate(self, line, piece, parsed, pieces):
         """A row repeated within one block: a transcription slip; the missing equation is named."""
@@ -580,6 +587,18 @@ class Motion:
                     out |= {s for s in free(sp.diff(arg, lx.t)) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                             and s not in set(free(sp.Matrix(list(self.ctx.subs.values()))))}
         return ", ".join(sorted(self.tex(s) for s in out))
+
+
+@functools.lru_cache(maxsize=256)
+def _flow(euler: tuple) -> dict:
+    """ω̃̇ᵢ as Euler's equation i gives it (Rᵢ = 0, Rᵢ linear in ω̃̇ᵢ), for each Rᵢ that has it,
+    memoised: every candidate correction of an equation of motion is checked against the same."""
+    flow = {}
+    for i, R in enumerate(euler):
+        coef = sp.diff(R, lx.WD[i])
+        if coef != 0:
+            flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+    return flow
 
 
 @functools.lru_cache(maxsize=4096)
