@@ -53,7 +53,7 @@ class Motion:
             self._add(line, piece, "equation of motion", "holds", why)
             return
         for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._eom_check(cand)[0]:
+            if self._eom_check(cand, candidate=True)[0]:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
@@ -125,14 +125,20 @@ class Motion:
     def _render_eq(self, residual, parsed):
         return self.tex(residual) + " = 0"
 
-    def _eom_check(self, raw):
+    def _eom_check(self, raw, candidate=False):
+        """(holds, why, the residual) of an equation of motion; a ``candidate`` correction that
+        cannot hold is refused before its residual is expanded (only whether it holds counts)."""
         # in Euler's equations the axial momentum p_γ is the body component I₃ω̃₃ it equals
         axial = {lx.p_gamma: (I1, I2, I3)[self.vocab.axial] * lx.W[self.vocab.axial]}
-        r = sp.expand(self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs))
-        if r == 0:
-            return False, "the equation is empty (0 = 0)", r
+        r = self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs)
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
+        if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
+                isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and _not_euler(r, euler):
+            return False, "", None        # the residual below is this one expanded: the same screen
+        r = sp.expand(r)
+        if r == 0:
+            return False, "the equation is empty (0 = 0)", r
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
         if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not free(sp.diff(r, loose[0])) & set(lx.W):
             # one symbol of the text's, entering linearly: its term is the torque's component (N₃,
@@ -153,12 +159,7 @@ class Motion:
         # both ways of holding below leave r = 0 once ω̃̇ is taken from the equations (a multiple
         # q Rᵢ of one, Rᵢ linear in ω̃̇ᵢ, too): an exact point where it is not spares the search
         # for a correction its symbolic steps on every candidate
-        try:
-            flow = _flow(tuple(euler))
-        except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
-            flow = None
-        if flow is not None and all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) \
-                and surely_nonzero_with_roots(r.xreplace(flow)):
+        if _not_euler(r, euler):
             return failed
         for i, R in enumerate(euler):
             if R == 0:
@@ -587,6 +588,17 @@ class Motion:
                     out |= {s for s in free(sp.diff(arg, lx.t)) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                             and s not in set(free(sp.Matrix(list(self.ctx.subs.values()))))}
         return ", ".join(sorted(self.tex(s) for s in out))
+
+
+def _not_euler(r, euler) -> bool:
+    """Whether r is proved to be neither a multiple of one of Euler's equations nor zero once ω̃̇
+    is taken from them: both leave r = 0 after that substitution, and an exact point
+    (`surely_nonzero_with_roots`) shows it is not."""
+    try:
+        flow = _flow(tuple(euler))
+    except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
+        return False
+    return all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) and surely_nonzero_with_roots(r.xreplace(flow))
 
 
 @functools.lru_cache(maxsize=256)

@@ -196,9 +196,10 @@ def surely_nonzero_with_roots(d) -> bool:
     symbols = sorted(d.free_symbols, key=lambda s: s.name)
     if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
+    angles = _angles(d)
     for shift in range(_ROOT_POINTS):
         try:
-            point = _exact_point(d, symbols, shift)
+            point = _exact_point(d, symbols, shift, angles)
             # positive symbols at squares: a positive factor SymPy splits off a radicand has a root
             point.update({s: point[s] ** 2 % _MODULUS for s in symbols if s in point and s.is_positive})
             return _residue(d, {**point, _ROOTS: True}, {}) != 0
@@ -217,11 +218,11 @@ _ROOT_POINTS = 12
 """The points `surely_nonzero_with_roots` tries: the primes of `_exact_point` turned by one each."""
 
 
-def _exact_point(d, symbols, shift=0) -> dict:
+def _exact_point(d, symbols, shift=0, angles=None) -> dict:
     """Residues of the point: pᵢ₊ₛ/7 for each symbol (s the shift, the primes in a ring); sin,
-    cos, tan of each angle from `_CIRCLE`."""
+    cos, tan of each angle (`_angles`, unless given) from `_CIRCLE`."""
     inv = lambda n: pow(n, -1, _MODULUS)  # noqa: E731
-    angles = sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    angles = _angles(d) if angles is None else angles
     if len(angles) > len(_CIRCLE):
         raise _Outside(d)
     primes = _PRIMES[shift:] + _PRIMES[:shift]
@@ -229,6 +230,11 @@ def _exact_point(d, symbols, shift=0) -> dict:
     for x, (a, b, c) in zip(angles, _CIRCLE):
         point[sp.sin(x)], point[sp.cos(x)], point[sp.tan(x)] = a * inv(c), b * inv(c), a * inv(b)
     return point
+
+
+def _angles(d) -> list:
+    """The symbols d takes the sine, cosine or tangent of, by name."""
+    return sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
 
 
 def _residue(e, point: dict, memo: dict) -> int:
