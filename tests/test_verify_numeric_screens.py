@@ -104,14 +104,14 @@ def test_the_exact_screen_with_roots_takes_a_square_root_as_its_square_and_prove
 
 def test_an_equation_of_motion_is_refused_by_the_exact_screen_only_when_no_euler_reading_can_hold():
     from derive.lecture import latex as lx
-    from derive.lecture import motion
+    from derive.lecture import comparing
     from derive.symbolic.lagrangian import I1 as J1, I2 as J2, I3 as J3
     w, wd = lx.W, lx.WD
     euler = [J1 * wd[0] - (J2 - J3) * w[1] * w[2], J2 * wd[1] - (J3 - J1) * w[2] * w[0],
              J3 * wd[2] - (J1 - J2) * w[0] * w[1]]
     # a multiple of one equation, and a combination of them, are never refused
-    assert not motion._not_euler(sp.expand(-3 * euler[0] / J2), euler)
-    assert not motion._not_euler(sp.expand(J1 * w[0] * euler[0] + J2 * w[1] * euler[1]), euler)
+    assert not comparing.not_a_consequence(sp.expand(-3 * euler[0] / J2), euler)
+    assert not comparing.not_a_consequence(sp.expand(J1 * w[0] * euler[0] + J2 * w[1] * euler[1]), euler)
     # a wrong sign, and a root the equations do not have, are
-    assert motion._not_euler(J1 * wd[0] + (J2 - J3) * w[1] * w[2], euler)
-    assert motion._not_euler(J2 * wd[1] - sp.sqrt((J3 - J1) ** 2 * w[2] ** 2 * w[0] ** 2 + J1), euler)
+    assert comparing.not_a_consequence(J1 * wd[0] + (J2 - J3) * w[1] * w[2], euler)
+    assert comparing.not_a_consequence(J2 * wd[1] - sp.sqrt((J3 - J1) ** 2 * w[2] ** 2 * w[0] ** 2 + J1), euler)

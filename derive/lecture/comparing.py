@@ -5,7 +5,8 @@ Takes: SymPy expressions and matrices in the derivation's symbols (`derive.lectu
 Gives: `zero` (the zero test of `derive.lecture.zero_test`: bounded symbolic steps, then seeded
 exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `column` (a vector
 as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
-power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
+power ±1, an index), `positive_multiple`, `series_order` (the series order of an approximation),
+and `not_a_consequence` with `flow_of` (the exact screen of an equation of motion's candidates).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
@@ -135,6 +136,31 @@ def _symbolic_zero(d):
         return zt.symbolic_zero(d)
     except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
         return None
+
+
+def not_a_consequence(r, euler) -> bool:
+    """Whether an equation of motion's residual r is proved to be neither a multiple of one of
+    Euler's equations ``euler`` nor zero once ω̃̇ is taken from them (`flow_of`): both leave r = 0
+    after that substitution, and an exact point (`zero_test.surely_nonzero_with_roots`) shows it
+    is not. r = q Rᵢ with q free of ω̃, ω̃̇ gives r(flow) = q Rᵢ(flow) = 0, Rᵢ being linear in ω̃̇ᵢ."""
+    try:
+        flow = flow_of(tuple(euler))
+    except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
+        return False
+    return all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) and \
+        zt.surely_nonzero_with_roots(r.xreplace(flow))
+
+
+@functools.lru_cache(maxsize=256)
+def flow_of(euler: tuple) -> dict:
+    """ω̃̇ᵢ as Euler's equation i gives it (Rᵢ = 0, Rᵢ linear in ω̃̇ᵢ), for each Rᵢ that has it,
+    memoised: every candidate correction of an equation of motion is checked against the same."""
+    flow = {}
+    for i, R in enumerate(euler):
+        coef = sp.diff(R, lx.WD[i])
+        if coef != 0:
+            flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+    return flow
 
 
 def _shape(m) -> str:

@@ -25,9 +25,9 @@ import functools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
+from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import surely_nonzero, surely_nonzero_with_roots
+from derive.lecture.zero_test import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -134,7 +134,7 @@ class Motion:
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
-                isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and _not_euler(r, euler):
+                isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and not_a_consequence(r, euler):
             return False, "", None        # the residual below is this one expanded: the same screen
         r = sp.expand(r)
         if r == 0:
@@ -159,7 +159,7 @@ class Motion:
         # both ways of holding below leave r = 0 once ω̃̇ is taken from the equations (a multiple
         # q Rᵢ of one, Rᵢ linear in ω̃̇ᵢ, too): an exact point where it is not spares the search
         # for a correction its symbolic steps on every candidate
-        if _not_euler(r, euler):
+        if not_a_consequence(r, euler):
             return failed
         for i, R in enumerate(euler):
             if R == 0:
@@ -168,7 +168,7 @@ class Motion:
             if not (free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        flow = _flow(tuple(euler))
+        flow = flow_of(tuple(euler))
         if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return failed
@@ -588,29 +588,6 @@ class Motion:
                     out |= {s for s in free(sp.diff(arg, lx.t)) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                             and s not in set(free(sp.Matrix(list(self.ctx.subs.values()))))}
         return ", ".join(sorted(self.tex(s) for s in out))
-
-
-def _not_euler(r, euler) -> bool:
-    """Whether r is proved to be neither a multiple of one of Euler's equations nor zero once ω̃̇
-    is taken from them: both leave r = 0 after that substitution, and an exact point
-    (`surely_nonzero_with_roots`) shows it is not."""
-    try:
-        flow = _flow(tuple(euler))
-    except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
-        return False
-    return all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) and surely_nonzero_with_roots(r.xreplace(flow))
-
-
-@functools.lru_cache(maxsize=256)
-def _flow(euler: tuple) -> dict:
-    """ω̃̇ᵢ as Euler's equation i gives it (Rᵢ = 0, Rᵢ linear in ω̃̇ᵢ), for each Rᵢ that has it,
-    memoised: every candidate correction of an equation of motion is checked against the same."""
-    flow = {}
-    for i, R in enumerate(euler):
-        coef = sp.diff(R, lx.WD[i])
-        if coef != 0:
-            flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
-    return flow
 
 
 @functools.lru_cache(maxsize=4096)
