@@ -68,17 +68,50 @@ def test_the_quick_screen_of_candidates_tells_equal_sides_from_a_slip_with_or_wi
     assert not quick_equal(f(x) * 2, 3 * f(x) - f(x))
 
 
-def test_the_point_screen_calls_a_difference_non_zero_even_where_its_radicand_is_negative():
-    w, b = sp.symbols("omega2 beta21", real=True)
-    radical = sp.sqrt((x - b * w ** 2) * (y - 2 * b * w ** 2))     # negative at some points: complex
-    assert zt.numerically_nonzero(w - radical)
-    assert zt.numerically_nonzero(x * w - y)                       # rational: decided exactly
+def test_a_large_trig_difference_is_left_unexpanded_and_a_polynomial_is_always_expanded():
+    big = sum((sp.sin(k * a) + x) ** 2 * (sp.cos(a) + k * y) ** 3 / (x + k) for k in range(1, 30))
+    assert zt._size(big) > zt._EXPAND_MAX_NODES
+    assert zt.bounded_expand(big) is big
+    poly = sum((x + k * y + a) ** 3 * (x - k) for k in range(1, 40))
+    assert zt._size(poly) > zt._EXPAND_MAX_NODES
+    assert zt.bounded_expand(poly) == sp.expand(poly)
+    assert zt.bounded_expand(sp.sin(a) * (x + 1) - sp.sin(a) * x - sp.sin(a)) == 0
 
 
-def test_the_point_screen_never_calls_an_identity_non_zero():
-    w = sp.Symbol("omega2", real=True)
-    for identity in (sp.sqrt(x + w ** 2) ** 2 - x - w ** 2,
-                     (x + w) ** 3 - sp.expand((x + w) ** 3),
-                     sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1,
-                     sp.sqrt(w - 3) * sp.sqrt(w - 3) - w + 3):
-        assert not zt.numerically_nonzero(identity)
+def test_the_first_point_counterexample_is_the_full_numeric_tests_outcome_and_none_for_an_identity():
+    slip = sp.Matrix([sp.sin(a) ** 2 + sp.cos(a) ** 2 + x / 10 ** 6])
+    one = sp.Matrix([1])
+    found = zt.counterexample(slip, one, "seed")
+    assert found is not None and found == zt.numeric_zero(slip, one, "seed")
+    assert not found.ok
+    identity = sp.Matrix([sp.sin(a) ** 2 + sp.cos(a) ** 2])
+    assert zt.counterexample(identity, one, "seed") is None
+    assert zt.counterexample(sp.Matrix([x + y]), sp.Matrix([y + x + 1]), "s") == \
+        zt.numeric_zero(sp.Matrix([x + y]), sp.Matrix([y + x + 1]), "s")
+
+
+def test_the_exact_screen_with_roots_takes_a_square_root_as_its_square_and_proves_a_slip():
+    r = sp.sqrt(a * y + x)
+    # zero once (√X)² = X is used, as expand and cancel use it: never called non-zero
+    assert not zt.surely_nonzero_with_roots(r * (y + r) - y * r - a * y - x)
+    assert not zt.surely_nonzero_with_roots(sp.sqrt(x / y) * sp.sqrt(y) - sp.sqrt(x))
+    # a slip under the root, or beside it, is proved non-zero
+    assert zt.surely_nonzero_with_roots(r * (y + r) - y * r - a * y)
+    assert zt.surely_nonzero_with_roots(sp.sqrt(a * y + x) - sp.sqrt(a * y + 2 * x))
+    # a root of a number is left to the symbolic steps
+    assert not zt.surely_nonzero_with_roots(sp.sqrt(2) * x - x)
+
+
+def test_an_equation_of_motion_is_refused_by_the_exact_screen_only_when_no_euler_reading_can_hold():
+    from derive.lecture import latex as lx
+    from derive.lecture import comparing
+    from derive.symbolic.lagrangian import I1 as J1, I2 as J2, I3 as J3
+    w, wd = lx.W, lx.WD
+    euler = [J1 * wd[0] - (J2 - J3) * w[1] * w[2], J2 * wd[1] - (J3 - J1) * w[2] * w[0],
+             J3 * wd[2] - (J1 - J2) * w[0] * w[1]]
+    # a multiple of one equation, and a combination of them, are never refused
+    assert not comparing.not_a_consequence(sp.expand(-3 * euler[0] / J2), euler)
+    assert not comparing.not_a_consequence(sp.expand(J1 * w[0] * euler[0] + J2 * w[1] * euler[1]), euler)
+    # a wrong sign, and a root the equations do not have, are
+    assert comparing.not_a_consequence(J1 * wd[0] + (J2 - J3) * w[1] * w[2], euler)
+    assert comparing.not_a_consequence(J2 * wd[1] - sp.sqrt((J3 - J1) ** 2 * w[2] ** 2 * w[0] ** 2 + J1), euler)

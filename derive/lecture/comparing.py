@@ -5,7 +5,8 @@ Takes: SymPy expressions and matrices in the derivation's symbols (`derive.lectu
 Gives: `zero` (the zero test of `derive.lecture.zero_test`: bounded symbolic steps, then seeded
 exact or 50-digit numeric points), `quick_equal` (a two-point float screen), `column` (a vector
 as a 3-column), `edits` (the single edits a slip may be: a sign, a factor 2 or ½, sin ↔ cos, a
-power ±1, an index), `positive_multiple` and `series_order` (the series order of an approximation).
+power ±1, an index), `positive_multiple`, `series_order` (the series order of an approximation),
+and `not_a_consequence` with `flow_of` (the exact screen of an equation of motion's candidates).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
@@ -64,12 +65,20 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     if lhs.shape != rhs.shape:
         return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
     diffs = lhs - rhs
+    roots = any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow))
     # a difference shown non-zero at an exact point goes straight to the numeric test, whose
-    # counterexample is the reason given (the symbolic steps could not show it zero)
-    steps = [None] if any(map(zt.surely_nonzero, diffs)) else [_symbolic_zero(d) for d in diffs]
+    # counterexample is the reason given (the symbolic steps could not show it zero); so does one
+    # the numeric test's first point shows non-zero, with that point's outcome
+    if any(map(zt.surely_nonzero, diffs)):
+        steps = [None]
+    else:
+        found = _counterexample(lhs, rhs, seed, roots)
+        if found is not None:
+            return found
+        steps = [_symbolic_zero(d) for d in diffs]
     if all(steps):
         return True, max(steps, key=zt.SYMBOLIC_STEPS.index)
-    if any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow)):
+    if roots:
         real = _real_zero(lhs, rhs, seed)
         if real is not None:
             return real
@@ -77,10 +86,21 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     return out.ok, out.method
 
 
-def _real_zero(lhs, rhs, seed):
-    """The numeric test of a formula with roots where they are real: seeded points at which every
-    radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where its roots exist, not
-    on another branch of them); None when no such point turns up."""
+def _counterexample(lhs, rhs, seed, roots):
+    """The outcome of the numeric test that decides below (`_real_zero` where roots are, else
+    `zero_test.numeric_zero`) when its first point shows the difference non-zero, else None."""
+    if roots:
+        real = _real_zero(lhs, rhs, seed, points=1)
+        if real is not None:
+            return real if not real[0] else None
+    out = zt.counterexample(lhs, rhs, seed)
+    return None if out is None else (out.ok, out.method)
+
+
+def _real_zero(lhs, rhs, seed, points=zt.POINTS):
+    """The numeric test of a formula with roots where they are real: seeded points (``points`` of
+    them) at which every radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where
+    its roots exist, not on another branch of them); None when no such point turns up."""
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
     symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
@@ -104,7 +124,7 @@ def _real_zero(lhs, rhs, seed):
                 if abs(a - b) > max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - zt.DIGITS):
                     return False, (f"mpmath {zt.DIGITS} digits where its roots are real: |claim − derived| = "
                                    f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
-        if used == zt.POINTS:
+        if used == points:
             break
     return (True, f"mpmath {zt.DIGITS} digits at {used} points where its roots are real") if used else None
 
@@ -116,6 +136,31 @@ def _symbolic_zero(d):
         return zt.symbolic_zero(d)
     except (sp.PolynomialError, sp.polys.polyerrors.GeneratorsError, TypeError, ValueError):
         return None
+
+
+def not_a_consequence(r, euler) -> bool:
+    """Whether an equation of motion's residual r is proved to be neither a multiple of one of
+    Euler's equations ``euler`` nor zero once ω̃̇ is taken from them (`flow_of`): both leave r = 0
+    after that substitution, and an exact point (`zero_test.surely_nonzero_with_roots`) shows it
+    is not. r = q Rᵢ with q free of ω̃, ω̃̇ gives r(flow) = q Rᵢ(flow) = 0, Rᵢ being linear in ω̃̇ᵢ."""
+    try:
+        flow = flow_of(tuple(euler))
+    except (sp.PolynomialError, TypeError, ValueError, ZeroDivisionError):
+        return False
+    return all(lx.WD[i] in flow for i, R in enumerate(euler) if R != 0) and \
+        zt.surely_nonzero_with_roots(r.xreplace(flow))
+
+
+@functools.lru_cache(maxsize=256)
+def flow_of(euler: tuple) -> dict:
+    """ω̃̇ᵢ as Euler's equation i gives it (Rᵢ = 0, Rᵢ linear in ω̃̇ᵢ), for each Rᵢ that has it,
+    memoised: every candidate correction of an equation of motion is checked against the same."""
+    flow = {}
+    for i, R in enumerate(euler):
+        coef = sp.diff(R, lx.WD[i])
+        if coef != 0:
+            flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
+    return flow
 
 
 def _shape(m) -> str:

@@ -25,9 +25,9 @@ import functools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.comparing import edits, free, positive_multiple, quick_equal, zero
+from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import numerically_nonzero, surely_nonzero
+from derive.lecture.zero_test import surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -53,7 +53,7 @@ class Motion:
             self._add(line, piece, "equation of motion", "holds", why)
             return
         for cand, what in ([] if self.judging_only else edits(raw)):
-            if self._eom_check(cand)[0]:
+            if self._eom_check(cand, candidate=True)[0]:
                 fixed = sp.Eq(cand, 0) if members[1] == 0 else None
                 corr = self.tex(cand) + " = 0" if fixed is not None else self._render_eq(cand, parsed)
                 self._add(line, piece, "equation of motion", "typo", f"as written: {why}; one edit ({what}) makes it hold", corr)
@@ -125,14 +125,20 @@ class Motion:
     def _render_eq(self, residual, parsed):
         return self.tex(residual) + " = 0"
 
-    def _eom_check(self, raw):
+    def _eom_check(self, raw, candidate=False):
+        """(holds, why, the residual) of an equation of motion; a ``candidate`` correction that
+        cannot hold is refused before its residual is expanded (only whether it holds counts)."""
         # in Euler's equations the axial momentum p_γ is the body component I₃ω̃₃ it equals
         axial = {lx.p_gamma: (I1, I2, I3)[self.vocab.axial] * lx.W[self.vocab.axial]}
-        r = sp.expand(self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs))
-        if r == 0:
-            return False, "the equation is empty (0 = 0)", r
+        r = self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs)
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
+        if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
+                isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and not_a_consequence(r, euler):
+            return False, "", None        # the residual below is this one expanded: the same screen
+        r = sp.expand(r)
+        if r == 0:
+            return False, "the equation is empty (0 = 0)", r
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
         if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not free(sp.diff(r, loose[0])) & set(lx.W):
             # one symbol of the text's, entering linearly: its term is the torque's component (N₃,
@@ -148,16 +154,13 @@ class Motion:
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
-        # ω̇ from Euler's equations (the flow): a multiple of one of them, or a combination, is 0 there
-        flow = {}
-        for i, R in enumerate(euler):
-            coef = sp.diff(R, lx.WD[i])
-            if coef != 0:
-                flow[lx.WD[i]] = sp.cancel(lx.WD[i] - R / coef)
-        along = r.xreplace(flow)
-        if numerically_nonzero(along):
-            return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
         dyn = set(lx.W) | set(lx.WD)
+        failed = False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+        # both ways of holding below leave r = 0 once ω̃̇ is taken from the equations (a multiple
+        # q Rᵢ of one, Rᵢ linear in ω̃̇ᵢ, too): an exact point where it is not spares the search
+        # for a correction its symbolic steps on every candidate
+        if not_a_consequence(r, euler):
+            return failed
         for i, R in enumerate(euler):
             if R == 0:
                 continue
@@ -165,9 +168,10 @@ class Motion:
             if not (free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(along))) == 0:
+        flow = flow_of(tuple(euler))
+        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
-        return False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
+        return failed
 
     def _duplicate(self, line, piece, parsed, pieces):
         """A row repeated within one block: a transcription slip; the missing equation is named."""

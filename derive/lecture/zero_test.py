@@ -1,9 +1,9 @@
 """The zero test of the checkers: is claim − derived identically zero?
 
 Takes: SymPy expressions and matrices. Gives: `symbolic_zero` (bounded symbolic steps, cheapest
-first, never an unbounded `simplify`), `surely_nonzero` (an exact one-point screen that proves a
-difference non-zero), `numerically_nonzero` (a seeded point where a difference is clearly not
-zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
+first, never an unbounded `simplify`), `bounded_expand` (`expand` within the same bound for
+differences with trig functions), `surely_nonzero` (an exact one-point screen that proves a
+difference non-zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
 `DIGITS` digits) and `sample` (the seeded points). Used by the lecture's table
 (`derive.lecture.verify`) and by the notes checker (`derive.lecture.comparing`); it knows neither.
 
@@ -56,6 +56,16 @@ _SIMPLIFY_MAX_NODES = 80        # `simplify` only on small trig-free remainders:
 
 def _size(e) -> int:
     return sum(1 for _ in sp.preorder_traversal(e))
+
+
+def bounded_expand(d):
+    """d expanded, except a difference with sin, cos or tan above `_EXPAND_MAX_NODES` nodes: there
+    `expand` is no canonical form (an identity in sin² + cos² stays non-zero) and costs seconds on a
+    tensor's inverse written out, and `symbolic_zero` would not take the result either, so it is
+    left as it is for the screens and the numeric test. Polynomials are always expanded (exact)."""
+    if _size(d) > _EXPAND_MAX_NODES and d.has(sp.sin, sp.cos, sp.tan):
+        return d
+    return sp.expand(d)
 
 
 def symbolic_zero(d) -> str | None:
@@ -174,16 +184,57 @@ def _nonzero_somewhere(d: sp.Expr) -> bool:
         iv.prec = prec
 
 
-def _exact_point(d, symbols) -> dict:
-    """Residues of the point: pᵢ/7 for each symbol; sin, cos, tan of each angle from `_CIRCLE`."""
+def surely_nonzero_with_roots(d) -> bool:
+    """`surely_nonzero`'s exact evaluation, square roots of symbolic radicands included: √X is
+    taken as a square root of X's residue modulo 2⁶¹ − 1, so the residue map stays a ring
+    homomorphism on the ring `expand`, `together` and `cancel` work in (√X a generator with
+    (√X)² = X). A non-zero residue then proves that those steps cannot turn d into 0, at one of a
+    few points (a radicand without a square root there moves to the next). False as
+    `surely_nonzero` is, and for a root of a number, another root or a zero residue."""
+    if not isinstance(d, sp.Expr):
+        return False
+    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
+        return False
+    angles = _angles(d)
+    for shift in range(_ROOT_POINTS):
+        try:
+            point = _exact_point(d, symbols, shift, angles)
+            # positive symbols at squares: a positive factor SymPy splits off a radicand has a root
+            point.update({s: point[s] ** 2 % _MODULUS for s in symbols if s in point and s.is_positive})
+            return _residue(d, {**point, _ROOTS: True}, {}) != 0
+        except _NoRoot:
+            continue
+        except (_Outside, ValueError, ZeroDivisionError):
+            return False
+    return False
+
+
+class _NoRoot(_Outside):
+    """A radicand whose residue has no square root modulo the prime (another point may)."""
+
+
+_ROOT_POINTS = 12
+"""The points `surely_nonzero_with_roots` tries: the primes of `_exact_point` turned by one each."""
+
+
+def _exact_point(d, symbols, shift=0, angles=None) -> dict:
+    """Residues of the point: pᵢ₊ₛ/7 for each symbol (s the shift, the primes in a ring); sin,
+    cos, tan of each angle (`_angles`, unless given) from `_CIRCLE`."""
     inv = lambda n: pow(n, -1, _MODULUS)  # noqa: E731
-    angles = sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    angles = _angles(d) if angles is None else angles
     if len(angles) > len(_CIRCLE):
         raise _Outside(d)
-    point = {s: p * inv(7) % _MODULUS for s, p in zip(symbols, _PRIMES) if s not in angles}
+    primes = _PRIMES[shift:] + _PRIMES[:shift]
+    point = {s: p * inv(7) % _MODULUS for s, p in zip(symbols, primes) if s not in angles}
     for x, (a, b, c) in zip(angles, _CIRCLE):
         point[sp.sin(x)], point[sp.cos(x)], point[sp.tan(x)] = a * inv(c), b * inv(c), a * inv(b)
     return point
+
+
+def _angles(d) -> list:
+    """The symbols d takes the sine, cosine or tangent of, by name."""
+    return sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
 
 
 def _residue(e, point: dict, memo: dict) -> int:
@@ -202,10 +253,26 @@ def _residue(e, point: dict, memo: dict) -> int:
             value = value * _residue(a, point, memo) % _MODULUS
     elif e.is_Pow and e.exp.is_Integer:
         value = pow(_residue(e.base, point, memo), int(e.exp), _MODULUS)
+    elif e.is_Pow and e.exp.is_Rational and e.exp.q == 2 and not e.base.is_number and _ROOTS in point:
+        value = pow(_root(_residue(e.base, point, memo)), int(e.exp.p), _MODULUS)
     else:
         raise _Outside(e)
     memo[e] = value
     return value
+
+
+_ROOTS = object()
+"""The key of a point at which `_residue` takes square roots of symbolic radicands."""
+
+
+def _root(x: int) -> int:
+    """The square root of x modulo `_MODULUS` that is itself a square, x^((p+1)/4) (p ≡ 3 mod 4):
+    multiplicative, so √(ab) = √a √b as SymPy splits a radicand's positive factors (whose values
+    `surely_nonzero_with_roots` makes squares); `_NoRoot` if x has none."""
+    r = pow(x, (_MODULUS + 1) // 4, _MODULUS)
+    if r * r % _MODULUS != x or x == 0:
+        raise _NoRoot(x)
+    return r
 
 
 def _enclosure(e, point: dict, memo: dict, functions=_IV_FUNCTIONS):
@@ -261,9 +328,25 @@ def sample(symbols, rng: random.Random) -> list:
     return point
 
 
+def counterexample(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome | None:
+    """`numeric_zero`'s outcome when the first of its points shows claim − derived ≠ 0, else None.
+
+    The same seeded draws, stopped after one point: where it finds a counterexample, the full test
+    (and so the zero test, whose symbolic steps cannot show a non-zero difference zero) ends with
+    this very outcome, so a checker may run it before the symbolic steps and skip them for a slip
+    or a candidate correction that the one-point screens of `surely_nonzero` cannot read."""
+    out, found = _numeric(lhs, rhs, seed, 1)
+    return out if found else None
+
+
 def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
     """claim − derived at `POINTS` seeded random points: exact when the difference is rational
     there, else by mpmath at `DIGITS` digits (relative to the size of the two sides)."""
+    return _numeric(lhs, rhs, seed, POINTS)[0]
+
+
+def _numeric(lhs, rhs, seed, points) -> tuple[Outcome, bool]:
+    """`numeric_zero` at its first ``points`` points, and whether it found a counterexample."""
     symbols = sorted(lhs.free_symbols | rhs.free_symbols, key=lambda x: x.name)
     transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
                          for e in (*lhs, *rhs))
@@ -271,8 +354,8 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
     if transcendental:
         f = mp_values.evaluator(symbols, [*lhs, *rhs])
     n, used = len(lhs), 0
-    for _ in range(3 * POINTS):
-        if used == POINTS:
+    for _ in range(3 * POINTS):                        # the draws do not depend on ``points``
+        if used == points:
             break
         point = sample(symbols, rng)
         if not transcendental:
@@ -282,7 +365,7 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
             used += 1
             bad = [a - b for a, b in zip(vals[:n], vals[n:]) if a != b]
             if bad:
-                return Outcome(False, f"exact rational: claim − derived = {bad[0]} at a sample point")
+                return Outcome(False, f"exact rational: claim − derived = {bad[0]} at a sample point"), True
             continue
         with mpmath.workdps(DIGITS):
             try:
@@ -296,38 +379,6 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
                 size = max(1, abs(a), abs(b))
                 if abs(a - b) > size * mpmath.mpf(10) ** (10 - DIGITS):
                     return Outcome(False, f"mpmath {DIGITS} digits: |claim − derived| = "
-                                           f"{mpmath.nstr(abs(a - b), 3)} at a sample point")
+                                           f"{mpmath.nstr(abs(a - b), 3)} at a sample point"), True
     how = f"mpmath {DIGITS} digits" if transcendental else "exact rational"
-    return Outcome(used > 0, f"{how} at {used} points")
-
-
-def numerically_nonzero(d, seed: str = "screen") -> bool:
-    """Whether d is clearly non-zero at the first seeded point of `numeric_zero` where it is finite:
-    exactly when d is rational there, else by mpmath at `DIGITS` digits (complex values allowed, so
-    a radicand negative at the point proves as much), |d| above 10⁻⁴⁰ of its terms' size.
-
-    A screen before the symbolic steps that could only confirm d ≡ 0: a candidate of the search for
-    a correction that fails at a point is not given to `cancel`. False when no point is finite."""
-    if not isinstance(d, sp.Expr) or d.is_Number:
-        return isinstance(d, sp.Expr) and d != 0
-    symbols = sorted(d.free_symbols, key=lambda x: x.name)
-    terms = list(sp.Add.make_args(d))
-    rng = random.Random(seed)
-    f = mp_values.evaluator(symbols, terms) if _radicals(d) else None
-    for _ in range(POINTS):
-        point = sample(symbols, rng)
-        if f is None:
-            value = d.xreplace(dict(zip(symbols, point)))
-            if value.is_Rational:
-                return value != 0
-            continue
-        with mpmath.workdps(DIGITS):
-            try:
-                vals = [mpmath.mpmathify(v) for v in f(*(mpmath.mpf(p.p) / p.q for p in point))]
-            except (ZeroDivisionError, ValueError, TypeError):
-                continue
-            if not all(mpmath.isfinite(v) for v in vals):
-                continue
-            size = max([mpmath.mpf(1)] + [abs(v) for v in vals])
-            return abs(mpmath.fsum(vals)) > size * mpmath.mpf(10) ** (10 - DIGITS)
-    return False
+    return Outcome(used > 0, f"{how} at {used} points"), False
