@@ -5,7 +5,9 @@ What is read:
 * **Front matter** (optional, first lines between ``---`` fences), ``key: value`` lines parsed by
   hand through a whitelist — ``convention`` (``z-y-z`` or ``z-x-z``) and ``angles`` (a bracketed
   list of three LaTeX names, e.g. ``[\\phi, \\theta, \\psi]``); anything else is an error. No YAML
-  library, nothing evaluated.
+  library, nothing evaluated. Without a ``convention`` there, the text's own statement of it
+  holds (`derive.lecture.stated_convention`: ``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3)``,
+  "3-1-2 Euler angles"), section by section (a ``"convention"`` item where a section changes it).
 * **Displays**: ``$$…$$`` and ``\\[…\\]`` (over any number of lines), with the 1-based line on
   which each starts; ``aligned``/``split``/``array`` environments inside them are left for the
   checker to cut into rows. Inline ``$…$`` math is read too: a relation there is a claim (kind
@@ -31,6 +33,7 @@ from derive.errors import SceneError
 from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import source
+from derive.lecture import stated_convention
 
 
 def ValidationError(path, key, what) -> SceneError:
@@ -65,7 +68,8 @@ _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\s
 class Item:
     """One thing of the notes, in order.
 
-    ``kind``: ``"heading"`` (``text`` is the title), ``"context"`` (``text``: ``"symmetric"``, the
+    ``kind``: ``"heading"`` (``text`` is the title), ``"convention"`` (``text``: the sequence a
+    section states, ``symbols``: its angles' names, from here on), ``"context"`` (``text``: ``"symmetric"``, the
     prose says the body is symmetric; ``"along momentum"``, it takes the fixed axis along 𝐋), ``"display"`` (``latex``), ``"inline"`` (a
     relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
     here to the next heading), ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
@@ -93,6 +97,8 @@ class Notes:
     declared: dict = field(default_factory=dict)
     items: list = field(default_factory=list)
     names: nm.Names = field(default_factory=nm.Names)
+    angles_stated: bool = False
+    """The angles' names are the text's own, read from its displays or prose (no front matter)."""
     body: str = ""
     """The rendered text (prose and math), for readings that need what the prose says."""
 
@@ -240,12 +246,15 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     front matter's."""
     lines = text.split("\n")
     declared, skip = _front_matter(lines, path)
-    conv = convention or declared.get("convention", "z-y-z")
+    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
+    # the front matter (or the command line) wins; else the convention the text states itself
+    stated = [] if convention or "convention" in declared else stated_convention.stated(body)
+    conv = convention or declared.get("convention") or (stated[0].convention if stated else "z-y-z")
     if conv not in CONVENTIONS:
         raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
-    angles = declared.get("angles") or DEFAULT_ANGLES[conv]
-    notes = Notes(path, conv, tuple(angles), declared)
-    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
+    own = None if "angles" in declared or not stated else stated[0].angles
+    angles = declared.get("angles") or own or DEFAULT_ANGLES[conv]
+    notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None)
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     notes.body = body
@@ -319,6 +328,13 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
         else:
             events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
+    # a section that states another convention (or other names) than the one before it
+    current = (conv, tuple(angles))
+    for st in stated[1:]:
+        here = (st.convention, tuple(declared.get("angles") or st.angles or DEFAULT_ANGLES[st.convention]))
+        if here != current:
+            events.append((starts[st.line - 1], Item("convention", st.line, text=st.convention, symbols=here[1])))
+            current = here
     # what the prose says of the body: "a symmetric top" holds to the next heading
     prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
@@ -368,7 +384,7 @@ def angle_aliases(notes) -> tuple:
     """Other names of the angles: the usual φ, θ, ψ when the text declares none; when it declares
     them with a subscript (``\\psi_{\\beta\\alpha}``), their bare letters, which texts write once
     the frames are clear (none if two angles share a letter)."""
-    if "angles" not in notes.declared:
+    if "angles" not in notes.declared and not notes.angles_stated:
         return DEFAULT_ANGLES["z-x-z"]
     bases = tuple(a.split("_")[0] for a in notes.angles)
     if all("_" in a for a in notes.angles) and len(set(bases)) == 3:

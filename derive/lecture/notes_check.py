@@ -113,6 +113,7 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
+        self.derivations = [self.d]      # every convention the text used, kept for the next command
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
         if notes.names is not None and "vertical" in notes.names.letters.values():
             self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])   # the upward vertical in body axes
@@ -163,6 +164,8 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
+            elif item.kind == "convention":
+                self._stated_convention(item)
             elif item.kind == "context" and item.text == "along momentum":
                 self.ctx.orientation, self.ctx.orientation_prose = item.line, True
             elif item.kind == "context":
@@ -189,6 +192,20 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self._read_later_definitions()
         self._check_changes()
         return self.claims
+
+    def _stated_convention(self, item):
+        """A section states another convention or other angle names (``item.text``, ``item.symbols``):
+        the derivation, the vocabulary's angles and the names for output follow it from here on."""
+        self._flush()
+        self._place_flushed(len(self.claims))
+        self.notes.convention, self.notes.angles = item.text, tuple(item.symbols)
+        self.vocab.angles, self.vocab.aliases = tuple(item.symbols), nt.angle_aliases(self.notes)
+        self.d = derivation(item.text)
+        self.derivations.append(self.d)
+        self.vocab.axial = "xyz".index(self.d.conv.axes[2])
+        if self.vocab.vertical:
+            self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])
+        self.__dict__.pop("names", None)        # the LaTeX names of the angles, built again
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
@@ -576,5 +593,6 @@ def check_text(text: str, convention: str | None = None, path: str = "<notes>") 
 
 def _checked(checker: Checker) -> list[Claim]:
     claims = checker.run()
-    keep(checker.d)  # what the text's convention needed, for the next command
+    for d in {id(d): d for d in checker.derivations}.values():
+        keep(d)  # what the text's conventions needed, for the next command
     return claims
