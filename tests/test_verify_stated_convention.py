@@ -51,3 +51,61 @@ def test_the_front_matter_wins_over_what_the_text_states():
 def test_a_text_that_states_no_convention_keeps_the_default():
     notes = nt.parse_notes("# Notes\n\n$$\nT = \\frac{1}{2} I_1 \\omega_1^2\n$$\n")
     assert (notes.convention, notes.angles) == ("z-y-z", nt.DEFAULT_ANGLES["z-y-z"])
+
+
+# ---- what a text in its stated angles then gets checked ------------------------------------------
+import kept_readings as kept  # noqa: E402
+from derive.lecture import hat_maps  # noqa: E402
+
+_HEAD = ("# Gimbal\n\nThe rotation is parameterized by 3-1-3 Euler angles, with $c_i\\triangleq \\cos{\\theta_i}$ "
+         "and $s_i\\triangleq \\sin{\\theta_i}$:\n\n$$\nR=R_3(\\theta_1)R_1(\\theta_2)R_3(\\theta_3)=\\begin{bmatrix}\n")
+_ACTIVE = ("c_1c_3-c_2s_1s_3 & -c_1s_3-c_2c_3s_1 & s_1s_2 \\\\\nc_3s_1+c_1c_2s_3 & c_1c_2c_3-s_1s_3 & -c_1s_2 \\\\\n"
+           "s_2s_3 & c_3s_2 & c_2\n")
+
+
+def _verdicts(text):
+    return [(c.line, c.verdict) for c in kept.check_text(text)]
+
+
+def test_a_definition_with_a_free_index_stands_for_its_three_components():
+    assert nt.components(r"c_i \equiv \cos{\theta_i}") == [r"c_{1} \equiv \cos{\theta_{1}}", r"c_{2} \equiv \cos{\theta_{2}}",
+                                                          r"c_{3} \equiv \cos{\theta_{3}}"]
+    assert nt.components(r"L_i \equiv \sum_j I_{ij}\omega_j") == [r"L_i \equiv \sum_j I_{ij}\omega_j"]
+    assert nt.components(r"I_i = m r_i^2") == [r"I_i = m r_i^2"]       # an equation, not a definition
+
+
+def test_triangleq_and_colon_equals_define_like_equiv():
+    notes = nt.parse_notes("# A\n\nwith $u \\triangleq \\cos\\theta$ and $$\nk := 2\n$$\n")
+    assert [i.latex.replace(" ", "") for i in notes.items if i.kind in ("assumption", "display")] == \
+        ["u\\equiv\\cos\\theta", "k\\equiv2"]
+
+
+def test_the_stated_product_of_turns_equals_the_matrix_written_in_its_abbreviations():
+    assert _verdicts(_HEAD + _ACTIVE + "\\end{bmatrix}\n$$\n") == [(5, "holds")]
+
+
+def test_a_matrix_that_is_not_the_stated_product_of_turns_is_flagged():
+    transposed = _ACTIVE.replace("-c_1s_3-c_2c_3s_1", "X").replace("c_3s_1+c_1c_2s_3", "-c_1s_3-c_2c_3s_1").replace(
+        "X", "c_3s_1+c_1c_2s_3")
+    assert [v for _, v in _verdicts(_HEAD + transposed + "\\end{bmatrix}\n$$\n")] in (["fails"], ["typo"])
+
+
+def test_a_hat_map_of_the_rotation_binds_the_body_angular_velocity():
+    assert hat_maps.body_velocities("so $R^T\\dot{R}=\\widehat{\\Omega}$ and\n$$\n\\dot R = R [\\omega]_\\times\n$$\n") == \
+        [(1, "\\Omega"), (2, "\\omega")]
+    # the space angular velocity's hat map, and a hat over no single symbol, bind nothing
+    assert hat_maps.body_velocities("$\\dot R R^T = \\hat\\omega$, $\\dot{R} = R\\,\\widehat{\\mathbb{I}^{-1}\\Pi}$") == []
+
+
+_OMEGA = ("For frames with $R^T\\dot{R}=\\widehat{\\Omega}$, in the 3-1-3 angles:\n\n$$\nR=R_3(\\theta_1)R_1(\\theta_2)R_3(\\theta_3)\n$$\n\n"
+          "$$\n\\Omega = \\begin{bmatrix} \\dot{\\theta}_1\\sin{\\theta_2}\\sin{\\theta_3}+\\dot{\\theta}_2\\cos{\\theta_3}\\\\ "
+          "\\dot{\\theta}_1\\sin{\\theta_2}\\cos{\\theta_3}-\\dot{\\theta}_2\\sin{\\theta_3}\\\\ \\dot{\\theta}_1\\cos{\\theta_2}+\\dot{\\theta}_3 "
+          "\\end{bmatrix}\n$$\n")
+
+
+def test_the_hatted_plain_letter_is_the_column_of_body_angular_velocity_components_and_a_slip_is_not_held():
+    assert _verdicts("# Angles\n\n" + _OMEGA)[-1] == (9, "holds")
+    slipped = _OMEGA.replace("\\dot{\\theta}_1\\cos{\\theta_2}+", "\\dot{\\theta}_1\\sin{\\theta_2}+")
+    last = kept.check_text("# Angles\n\n" + slipped)[-1]
+    # a name learned from the text is not trusted to flag alone: the slip is named, not judged
+    assert last.verdict != "holds" and "sin ↔ cos" in last.why

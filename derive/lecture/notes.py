@@ -194,6 +194,23 @@ def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
     raise ValidationError(path, "front matter", "no closing '---'")
 
 
+_INDEXED = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(?:\{\s*([ijk])\s*\}|([ijk]))\s*\\equiv\s*(.+?)\s*[,.;]?\s*", re.S)
+
+
+def components(latex: str) -> list[str]:
+    """A definition with a free index, ``c_i \\equiv \\cos\\theta_i``, as its three components
+    (``c_{1} \\equiv \\cos\\theta_{1}``, …); any other formula as itself. The index must appear
+    on the right side too, and no sum or product may bind it."""
+    m = _INDEXED.fullmatch(latex)
+    if not m or re.search(r"\\(?:sum|prod)(?![A-Za-z])", m.group(4)):
+        return [latex]
+    index = m.group(2) or m.group(3)
+    used = re.compile(r"_\s*(?:\{\s*" + index + r"\s*\}|" + index + r"(?![A-Za-z]))")
+    if not used.search(m.group(4)):
+        return [latex]
+    return [f"{m.group(1)}_{{{n}}} \\equiv " + used.sub("_{" + n + "}", m.group(4)) for n in "123"]
+
+
 def _last_word(text: str) -> str:
     words = re.findall(r"[A-Za-z]+", text)
     return words[-1].lower() if words else ""
@@ -305,10 +322,10 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             inequality = re.search(r"\\ge|\\le|(?<!\\)[<>]", latex)
             # X ≡ … introduces a symbol (a definition, checked), never an assumption
             defines = "\\equiv" in latex
-            if word in TRIGGERS and _RELATION.search(latex) and not inequality and not defines:
-                events.append((m.start(), Item("assumption", line, latex=latex, lead=near, display=True)))
-            else:
-                events.append((m.start(), Item("display", line, latex=latex, lead=near, display=True)))
+            kind = "assumption" if word in TRIGGERS and _RELATION.search(latex) and not inequality \
+                and not defines else "display"
+            for one in components(latex):
+                events.append((m.start(), Item(kind, line, latex=one, lead=near, display=True)))
             continue
         latex = source.normalize(m.group("i"), user_macros)
         line_text = body[starts[line - 1]:body.find("\n", m.start()) if body.find("\n", m.start()) >= 0 else len(body)]
@@ -323,11 +340,10 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
-        if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
-                or _absence_stated(body, m.start(), latex):
-            events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
-        else:
-            events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
+        assumed = word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
+            or _absence_stated(body, m.start(), latex)
+        for one in components(latex.strip("()") if assumed and wrapped else latex):
+            events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near)))
     # a section that states another convention (or other names) than the one before it
     current = (conv, tuple(angles))
     for st in stated[1:]:

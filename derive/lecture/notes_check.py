@@ -551,7 +551,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
                        and x not in self._constants())
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
-        if not every & rates and every & set(rot.ANGLES):
+        turns = isinstance(val, sp.MatrixBase) and val.shape == (3, 3)
+        if not every & rates and every & set(rot.ANGLES) and not turns:
+            # (a 3×3 matrix of the angles equated to another is an identity of rotations, decided)
             return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
                     "of them there): a condition, such as a turning point or the orientation the text chose")
         return None

@@ -41,7 +41,7 @@ _ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s
                     r"inertial|intermediate)\s+)?(first|second|third|1st|2nd|3rd|[xyzXYZ][- ]?)(?:\s*[- ]?axis)?",
                     re.I)
 _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
-_MATH = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(\w+\*?)\}.*?\\end\{\1\}|\$[^$]+\$", re.S)
+_MATH = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{((?:equation|align|alignat|eqnarray|gather|multline|flalign|displaymath)\*?)\}.*?\\end\{\1\}|\$[^$]+\$", re.S)
 
 
 @dataclass(frozen=True)
