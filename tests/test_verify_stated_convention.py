@@ -81,13 +81,14 @@ def test_triangleq_and_colon_equals_define_like_equiv():
 
 
 def test_the_stated_product_of_turns_equals_the_matrix_written_in_its_abbreviations():
-    assert _verdicts(_HEAD + _ACTIVE + "\\end{bmatrix}\n$$\n") == [(5, "holds")]
+    # R = (the turns) = (the matrix): each step of the chain holds
+    assert set(_verdicts(_HEAD + _ACTIVE + "\\end{bmatrix}\n$$\n")) == {(5, "holds")}
 
 
 def test_a_matrix_that_is_not_the_stated_product_of_turns_is_flagged():
     transposed = _ACTIVE.replace("-c_1s_3-c_2c_3s_1", "X").replace("c_3s_1+c_1c_2s_3", "-c_1s_3-c_2c_3s_1").replace(
         "X", "c_3s_1+c_1c_2s_3")
-    assert [v for _, v in _verdicts(_HEAD + transposed + "\\end{bmatrix}\n$$\n")] in (["fails"], ["typo"])
+    assert {v for _, v in _verdicts(_HEAD + transposed + "\\end{bmatrix}\n$$\n")} & {"fails", "typo"}
 
 
 def test_a_hat_map_of_the_rotation_binds_the_body_angular_velocity():
@@ -109,3 +110,11 @@ def test_the_hatted_plain_letter_is_the_column_of_body_angular_velocity_componen
     last = kept.check_text("# Angles\n\n" + slipped)[-1]
     # a name learned from the text is not trusted to flag alone: the slip is named, not judged
     assert last.verdict != "holds" and "sin ↔ cos" in last.why
+
+
+def test_the_general_form_of_a_sequence_of_turns_is_no_claim():
+    from derive.lecture.stated_convention import general_form
+    assert general_form("R=R_i(\\theta_1)R_j(\\theta_2)R_k(\\theta_3)")
+    assert not general_form("R=R_3(\\theta_1)R_1(\\theta_2)R_3(\\theta_3)")
+    claims = kept.check_text("# A\n\n$$\nR=R_i(\\theta_1)R_j(\\theta_2)R_k(\\theta_3)\n$$\n")
+    assert [(c.verdict, c.why.startswith("not a claim")) for c in claims] == [("unchecked", True)]

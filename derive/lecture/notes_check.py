@@ -58,6 +58,7 @@ from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
+from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
@@ -279,6 +280,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        if general_form(text):
+            self._add(line, piece, "rotation", "unchecked", "not a claim: the general form of a sequence of three turns")
+            return
         other = self._turn_at_another_argument(text)
         if other is not None:
             self._add(line, piece, "rotation", "unchecked", other)

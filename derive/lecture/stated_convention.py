@@ -18,6 +18,8 @@ commands):
   about the second" (three names whose axes are the sequence's), else none (the sequence's usual
   names).
 
+A product about axes named by letters (``R_i(\\theta_1) R_j(\\theta_2) R_k(\\theta_3)``) is the general
+form of every sequence: it states none, and the reader takes it for no claim (`general_form`).
 Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
 it declares a convention, wins over everything read here (`derive.lecture.notes.parse_notes`).
 
@@ -42,6 +44,16 @@ _ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s
                     re.I)
 _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
 _MATH = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{((?:equation|align|alignat|eqnarray|gather|multline|flalign|displaymath)\*?)\}.*?\\end\{\1\}|\$[^$]+\$", re.S)
+
+
+_GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+_GENERIC = re.compile(_GENERIC_TURN + _SPACE + _GENERIC_TURN + _SPACE + _GENERIC_TURN)
+
+
+def general_form(latex: str) -> bool:
+    """Is ``latex`` a product of three turns about axes named by letters, ``R_i(\\theta_1) R_j(\\theta_2)
+    R_k(\\theta_3)``: the form every sequence takes, which states none and defines nothing?"""
+    return _GENERIC.search(latex) is not None
 
 
 @dataclass(frozen=True)

@@ -179,6 +179,7 @@ class TextMatrices:
                 break
         else:
             return text
+        self._product_named(toks, found[0][3], product)
         if at_arguments:
             self._turns_at_arguments(found, sense)
             return text
@@ -188,6 +189,27 @@ class TextMatrices:
                 self._matrix_name(sym, turn)
             text = text[:start] + text[end:]
         return text
+
+    def _product_named(self, toks, at, product):
+        """``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3) = …``: the plain name the text sets equal to
+        the product of the turns (a name it has not defined) is that product from here on. Only in a
+        chain: ``R = (the turns)`` alone is read as a rotation R and checked as one."""
+        if sum(1 for t in toks if t.kind == "rel") < 2:
+            return
+        before = [t for t in toks if t.pos < at]
+        if before[-2:-1] and before[-1].kind == "atom":       # "R = R_3(…)": the first turn's letter is before[-1]
+            before = before[:-1]
+        if len(before) < 2 or before[0].kind != "atom" or before[-1].kind != "rel" or before[-1].value != "=":
+            return
+        inner = before[1:-1]
+        if inner and [(t.kind, t.value) for t in inner] not in ([("op", "("), ("atom", inner[1].value), ("op", ")")],):
+            return                        # R(t) = …: a name with its argument, else nothing
+        try:
+            sym = self.vocab.resolve(before[0].value)
+        except lx.NotRead:
+            return
+        if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
+            self._matrix_name(sym, product)
 
     def _turns_at_arguments(self, found, sense):
         """Bind each plain name-at-argument of ``found`` (``R_z(\\psi)``, read as its own name) the text
