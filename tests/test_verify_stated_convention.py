@@ -118,3 +118,15 @@ def test_the_general_form_of_a_sequence_of_turns_is_no_claim():
     assert not general_form("R=R_3(\\theta_1)R_1(\\theta_2)R_3(\\theta_3)")
     claims = kept.check_text("# A\n\n$$\nR=R_i(\\theta_1)R_j(\\theta_2)R_k(\\theta_3)\n$$\n")
     assert [(c.verdict, c.why.startswith("not a claim")) for c in claims] == [("unchecked", True)]
+
+
+def test_the_rate_of_the_hatted_letter_is_the_column_of_its_components_rates():
+    rate = ("$$\n\\dot{\\Omega} = \\begin{bmatrix} \\ddot{\\theta}_1\\sin{\\theta_2}\\sin{\\theta_3}+\\dot{\\theta}_1\\dot{\\theta}_2"
+            "\\cos{\\theta_2}\\sin{\\theta_3}+\\dot{\\theta}_1\\dot{\\theta}_3\\sin{\\theta_2}\\cos{\\theta_3}+\\ddot{\\theta}_2\\cos{\\theta_3}"
+            "-\\dot{\\theta}_2\\dot{\\theta}_3\\sin{\\theta_3}\\\\ \\ddot{\\theta}_1\\sin{\\theta_2}\\cos{\\theta_3}+\\dot{\\theta}_1\\dot{\\theta}_2"
+            "\\cos{\\theta_2}\\cos{\\theta_3}-\\dot{\\theta}_1\\dot{\\theta}_3\\sin{\\theta_2}\\sin{\\theta_3}-\\ddot{\\theta}_2\\sin{\\theta_3}"
+            "-\\dot{\\theta}_2\\dot{\\theta}_3\\cos{\\theta_3}\\\\ \\ddot{\\theta}_1\\cos{\\theta_2}-\\dot{\\theta}_1\\dot{\\theta}_2\\sin{\\theta_2}"
+            "+\\ddot{\\theta}_3 \\end{bmatrix}\n$$\n")
+    assert _verdicts("# Angles\n\n" + _OMEGA + "\n" + rate)[-1] == (13, "holds")
+    slipped = rate.replace("+\\ddot{\\theta}_3", "-\\ddot{\\theta}_3")
+    assert kept.check_text("# Angles\n\n" + _OMEGA + "\n" + slipped)[-1].verdict != "holds"

@@ -199,7 +199,9 @@ class Names:
                 return lx.OMEGA_VEC
             if not (a.bold or sub or a.sup or a.primes or a.hat or a.tilde) and a.dots <= 1:
                 # geometric mechanics' plain Ω, like its Π: the column of the body components
-                return lx.OMEGA_VEC if a.dots == 0 else sp.ImmutableMatrix(lx.WD)
+                if a.dots == 0:
+                    return lx.OMEGA_VEC
+                return sp.ImmutableMatrix(vocab.body_rate()) if vocab.body_rate is not None else None
             return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
         if meaning == "vertical":             # Poisson's γᵢ: the upward vertical in body axes, Rᵀẑ
             if not vocab.vertical or a.dots or a.hat or a.primes:

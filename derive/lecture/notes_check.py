@@ -116,6 +116,7 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self.d = derivation(notes.convention)
         self.derivations = [self.d]      # every convention the text used, kept for the next command
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
+        self.vocab.body_rate = self._body_rate
         if notes.names is not None and "vertical" in notes.names.letters.values():
             self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])   # the upward vertical in body axes
         self.ctx = Context()
@@ -193,6 +194,11 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self._read_later_definitions()
         self._check_changes()
         return self.claims
+
+    def _body_rate(self):
+        """dω̃/dt in the angles, their rates and accelerations (the chain rule through q and q̇)."""
+        w = self.d.omega
+        return w.jacobian(sp.Matrix(ANGLES)) * sp.Matrix(RATES) + w.jacobian(sp.Matrix(RATES)) * sp.Matrix(ACCELS)
 
     def _stated_convention(self, item):
         """A section states another convention or other angle names (``item.text``, ``item.symbols``):
@@ -353,7 +359,8 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
             self._definition(line, piece, parsed)
         elif any(free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
-        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members):
+        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members) \
+                and not isinstance(m0.value, sp.MatrixBase):       # a column of rates' rates is an identity
             self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")

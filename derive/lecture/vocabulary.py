@@ -368,6 +368,9 @@ class Vocabulary:
     """The body axis of the third turn (2 for z-y-z and z-x-z): the angular momentum's component
     on it is the third angle's momentum, I₃ω̃₃ = p_γ."""
     vertical: tuple = ()
+    body_rate: object = None
+    """() → the body components of the angular velocity's rate in the angles, their rates and
+    accelerations (a callable, so that only a text that writes Ω̇ as a column pays for it)."""
     """The upward vertical's body components in the angles (Rᵀẑ), when the text names them (Poisson's γᵢ)."""
     names_off: bool = False
     """Read as if the text had named nothing (a second opinion on a learned name)."""
