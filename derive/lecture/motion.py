@@ -128,7 +128,13 @@ class Motion:
     def _eom_check(self, raw):
         # in Euler's equations the axial momentum p_γ is the body component I₃ω̃₃ it equals
         axial = {lx.p_gamma: (I1, I2, I3)[self.vocab.axial] * lx.W[self.vocab.axial]}
-        r = sp.expand(self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs))
+        r = self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD)
+        if any(not p.exp.is_integer and free(p.base) & dyn for p in r.atoms(sp.Pow)):
+            # √ of the ω̃ᵢ (a text's own substitution, u ∝ Π₂, under a root): no equation of motion
+            # of Euler's form, and its expansion is unbounded
+            raise lx.NotRead("roots of the angular velocity's components: not an equation of motion the reader checks")
+        r = sp.expand(r)
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
@@ -148,7 +154,6 @@ class Motion:
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
-        dyn = set(lx.W) | set(lx.WD)
         for i, R in enumerate(euler):
             if R == 0:
                 continue

@@ -31,7 +31,8 @@ axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃�
 angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
 body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
                                      a bare letter (Ω) is the column 𝛚 and gives its components
-                                     Ωᵢ; also bound by the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`)
+                                     Ωᵢ; the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`), binds the
+                                     symbol alone
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
@@ -312,7 +313,12 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
     for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
         atoms = _atoms(tex)
         if len(atoms) == 1 and _fits("body angular velocity", atoms):
-            _bind(names, atoms, "body angular velocity", f"line {line}")
+            # the symbol only: the hat map says nothing of what Ω₁, Ω₂, Ω₃ are in other sections
+            key = (atoms[0].base, atoms[0].sub)
+            _put(names.symbols, key, "body angular velocity", False)
+            names.frames.setdefault(key, atoms[0].sup)
+            names.scoped.setdefault(("symbols", key), []).append((line, "body angular velocity"))
+            names.where.setdefault(key, f"line {line}")
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():

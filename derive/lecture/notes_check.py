@@ -505,12 +505,24 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         if undecided:
             self._add(line, piece, kind, "unchecked", undecided)
             return
+        if len(targets) == 1 and self._root_branch(val, self._resolve(targets[0]), seed):
+            self._add(line, piece, kind, "unchecked", f"as written: {why}; its square holds: the two sides differ "
+                      "by the sign of a square root, which the values the text allows decide")
+            return
         self._last_fix = None
         fix = None if self.judging_only else self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
         else:
             self._add(line, piece, kind, "fails", f"as written: {why}")
+
+    def _root_branch(self, val, target, seed) -> bool:
+        """Do scalar sides with a square root in them differ only by its sign (equal squares)?"""
+        if isinstance(val, sp.MatrixBase) or isinstance(target, sp.MatrixBase):
+            return False
+        if not any(p.exp.is_Rational and p.exp.q == 2 for e in (val, target) for p in sp.sympify(e).atoms(sp.Pow)):
+            return False
+        return self._compare(val ** 2, target ** 2, seed + "/squared")[0]
 
     def _oriented(self, line, val, targets, seed) -> str | None:
         """Why the claim holds with the fixed first axis along 𝐋 (`derive.lecture.orientation`), or
