@@ -58,6 +58,7 @@ from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
+from derive.lecture.section_convention import SectionConvention
 from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
@@ -105,7 +106,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -194,25 +195,6 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self._read_later_definitions()
         self._check_changes()
         return self.claims
-
-    def _body_rate(self):
-        """dω̃/dt in the angles, their rates and accelerations (the chain rule through q and q̇)."""
-        w = self.d.omega
-        return w.jacobian(sp.Matrix(ANGLES)) * sp.Matrix(RATES) + w.jacobian(sp.Matrix(RATES)) * sp.Matrix(ACCELS)
-
-    def _stated_convention(self, item):
-        """A section states another convention or other angle names (``item.text``, ``item.symbols``):
-        the derivation, the vocabulary's angles and the names for output follow it from here on."""
-        self._flush()
-        self._place_flushed(len(self.claims))
-        self.notes.convention, self.notes.angles = item.text, tuple(item.symbols)
-        self.vocab.angles, self.vocab.aliases = tuple(item.symbols), nt.angle_aliases(self.notes)
-        self.d = derivation(item.text)
-        self.derivations.append(self.d)
-        self.vocab.axial = "xyz".index(self.d.conv.axes[2])
-        if self.vocab.vertical:
-            self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])
-        self.__dict__.pop("names", None)        # the LaTeX names of the angles, built again
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
