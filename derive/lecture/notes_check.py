@@ -45,6 +45,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
@@ -106,7 +107,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(SectionConvention, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, EulerInAngles, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -343,7 +344,8 @@ class Checker(SectionConvention, EulerPoisson, WrittenOut, TextNames, TextMatric
             self._eom(line, piece, parsed)
         elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members) \
                 and not isinstance(m0.value, sp.MatrixBase):       # a column of rates' rates is an identity
-            self._angle_eom(line, piece, parsed)
+            if not self._euler_in_angles(line, piece, [m.value for m in parsed.members]):
+                self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
