@@ -130,3 +130,8 @@ def test_the_rate_of_the_hatted_letter_is_the_column_of_its_components_rates():
     assert _verdicts("# Angles\n\n" + _OMEGA + "\n" + rate)[-1] == (13, "holds")
     slipped = rate.replace("+\\ddot{\\theta}_3", "-\\ddot{\\theta}_3")
     assert kept.check_text("# Angles\n\n" + _OMEGA + "\n" + slipped)[-1].verdict != "holds"
+
+
+def test_a_rotation_named_at_the_time_is_the_stated_product_of_turns():
+    text = "# Top\n\nThe 3-1-3 Euler angles are introduced by\n\n$$\nR(t)=R_3(\\phi)R_1(\\theta)R_3(\\psi)\n$$\n"
+    assert _verdicts(text) == [(5, "holds")]

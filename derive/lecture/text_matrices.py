@@ -28,6 +28,10 @@ from derive.lecture import latex as lx
 from derive.symbolic.rotations import trig_reduce
 
 
+_AT_TIME = re.compile(r"^(\s*\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|\w))?)\s*\(\s*t\s*\)\s*=")
+# a name at the time before the product of turns, ``R(t) =``: its argument is no factor
+
+
 def matrices_put(e, rep):
     """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
     up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
@@ -182,13 +186,13 @@ class TextMatrices:
         self._product_named(toks, found[0][3], product)
         if at_arguments:
             self._turns_at_arguments(found, sense)
-            return text
+            return _AT_TIME.sub(r"\1 =", text, count=1)
         for (atom, _, _, start, end, _), turn in zip(reversed(found), reversed(turns)):
             sym = self.vocab.resolve(atom)
             if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
                 self._matrix_name(sym, turn)
             text = text[:start] + text[end:]
-        return text
+        return _AT_TIME.sub(r"\1 =", text, count=1)
 
     def _product_named(self, toks, at, product):
         """``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3) = …``: the plain name the text sets equal to
