@@ -201,7 +201,7 @@ class Names:
             if not (a.bold or sub or a.sup or a.primes or a.hat or a.tilde) and a.dots <= 1:
                 # geometric mechanics' plain Ω, like its Π: the column of the body components
                 if a.dots == 0:
-                    return lx.OMEGA_VEC
+                    return sp.ImmutableMatrix(lx.W)
                 return sp.ImmutableMatrix(vocab.body_rate()) if vocab.body_rate is not None else None
             return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
         if meaning == "vertical":             # Poisson's γᵢ: the upward vertical in body axes, Rᵀẑ
