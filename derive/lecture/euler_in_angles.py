@@ -41,9 +41,7 @@ class EulerInAngles:
             if sp.diff(raw, t, 2) != 0 or free(sp.diff(raw, t)) & (set(ANGLES) | set(RATES) | set(ACCELS)):
                 return False
             raw, torque = sp.expand(raw - t * sp.diff(raw, t)), f", with {self.tex(t)} the torque's component"
-        in_angles = {**dict(zip(lx.W, self.d.omega)), **dict(zip(lx.WD, self._body_rate()))}
-        for i, residual in enumerate(self.d.euler(self.ctx.subs)):
-            target = sp.expand(residual.xreplace(in_angles))
+        for i, target in enumerate(self._euler_targets()):
             lead = next((a for a in ACCELS if sp.diff(target, a) != 0 and sp.diff(raw, a) != 0), None)
             if lead is None:
                 continue
@@ -56,3 +54,12 @@ class EulerInAngles:
                           f"a multiple ({self.tex(k)}) of Euler's equation {i + 1} in the angles{torque}: {how}")
                 return True
         return False
+
+    def _euler_targets(self) -> list:
+        """Euler's residuals in the angles under the section's settings, kept per derivation and settings."""
+        kept = self.__dict__.setdefault("_euler_in_angles_kept", {})
+        key = (id(self.d), tuple(sorted(self.ctx.subs.items(), key=str)))
+        if key not in kept:
+            in_angles = {**dict(zip(lx.W, self.d.omega)), **dict(zip(lx.WD, self._body_rate()))}
+            kept[key] = [sp.expand(r.xreplace(in_angles)) for r in self.d.euler(self.ctx.subs)]
+        return kept[key]

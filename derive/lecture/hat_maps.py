@@ -48,6 +48,8 @@ def body_velocities(body: str) -> list[tuple[int, str]]:
     out = []
     for m in _MATH.finditer(body):
         raw = next(g for g in (m.group(1), m.group(2), m.group(4), m.group(5)) if g is not None)
+        if "dot" not in raw or not ("hat" in raw or "times" in raw or "×" in raw):
+            continue                # no rate of a matrix and no hat: nothing to normalise
         math = _SPACING.sub("", source.normalize(raw))
         line = body.count("\n", 0, m.start()) + 1
         for form in _FORMS:
