@@ -131,6 +131,11 @@ class Motion:
         # in Euler's equations the axial momentum p_γ is the body component I₃ω̃₃ it equals
         axial = {lx.p_gamma: (I1, I2, I3)[self.vocab.axial] * lx.W[self.vocab.axial]}
         r = self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs)
+        dyn = set(lx.W) | set(lx.WD)
+        if any(not p.exp.is_integer and free(p.base) & dyn for p in r.atoms(sp.Pow)):
+            # √ of the ω̃ᵢ (a text's own substitution, u ∝ Π₂, under a root): no equation of motion
+            # of Euler's form, and its expansion is unbounded
+            raise lx.NotRead("roots of the angular velocity's components: not an equation of motion the reader checks")
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
@@ -154,7 +159,6 @@ class Motion:
             euler = [R - tau for R, tau in zip(euler, lx.TAU)]
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
-        dyn = set(lx.W) | set(lx.WD)
         failed = False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
         # both ways of holding below leave r = 0 once ω̃̇ is taken from the equations (a multiple
         # q Rᵢ of one, Rᵢ linear in ω̃̇ᵢ, too): an exact point where it is not spares the search

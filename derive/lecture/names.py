@@ -4,7 +4,8 @@ Takes: the rendered text of a notes file (prose with inline ``$…$`` math, disp
 front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's spellings to
 *meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
 own spellings, so that the text's names win over the lecture's.
-May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source` and
+May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`,
+:mod:`derive.lecture.hat_maps` and
 :mod:`derive.symbolic` (the quantities a meaning stands for).
 
 A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
@@ -29,7 +30,9 @@ vertical angular momentum   symbol   p of the first angle (L·ẑ)
 axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃₃)
 angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
 body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
-                                     a bare letter (Ω) also gives its components Ωᵢ
+                                     a bare letter (Ω) is the column 𝛚 and gives its components
+                                     Ωᵢ; the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`), binds the
+                                     symbol alone
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
@@ -56,6 +59,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.errors import SceneError
+from derive.lecture import hat_maps
 from derive.lecture import latex as lx
 from derive.lecture import source
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
@@ -194,6 +198,11 @@ class Names:
         if meaning == "body angular velocity":    # 𝛚ᵅ_{βα}: bound with its frame labels, the body components
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
                 return lx.OMEGA_VEC
+            if not (a.bold or sub or a.sup or a.primes or a.hat or a.tilde) and a.dots <= 1:
+                # geometric mechanics' plain Ω, like its Π: the column of the body components
+                if a.dots == 0:
+                    return sp.ImmutableMatrix(lx.W)
+                return sp.ImmutableMatrix(vocab.body_rate()) if vocab.body_rate is not None else None
             return (lx.W if a.dots == 0 else lx.WD)[k] if k is not None and not a.bold and a.dots <= 1 else None
         if meaning == "vertical":             # Poisson's γᵢ: the upward vertical in body axes, Rᵀẑ
             if not vocab.vertical or a.dots or a.hat or a.primes:
@@ -301,6 +310,15 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
     _said_of_display(names, body)
+    for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
+        atoms = _atoms(tex)
+        if len(atoms) == 1 and _fits("body angular velocity", atoms):
+            # the symbol only: the hat map says nothing of what Ω₁, Ω₂, Ω₃ are in other sections
+            key = (atoms[0].base, atoms[0].sub)
+            _put(names.symbols, key, "body angular velocity", False)
+            names.frames.setdefault(key, atoms[0].sup)
+            names.scoped.setdefault(("symbols", key), []).append((line, "body angular velocity"))
+            names.where.setdefault(key, f"line {line}")
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():

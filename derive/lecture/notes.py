@@ -5,7 +5,9 @@ What is read:
 * **Front matter** (optional, first lines between ``---`` fences), ``key: value`` lines parsed by
   hand through a whitelist — ``convention`` (``z-y-z`` or ``z-x-z``) and ``angles`` (a bracketed
   list of three LaTeX names, e.g. ``[\\phi, \\theta, \\psi]``); anything else is an error. No YAML
-  library, nothing evaluated.
+  library, nothing evaluated. Without a ``convention`` there, the text's own statement of it
+  holds (`derive.lecture.stated_convention`: ``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3)``,
+  "3-1-2 Euler angles"), section by section (a ``"convention"`` item where a section changes it).
 * **Displays**: ``$$…$$`` and ``\\[…\\]`` (over any number of lines), with the 1-based line on
   which each starts; ``aligned``/``split``/``array`` environments inside them are left for the
   checker to cut into rows. Inline ``$…$`` math is read too: a relation there is a claim (kind
@@ -31,6 +33,7 @@ from derive.errors import SceneError
 from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import source
+from derive.lecture import stated_convention
 
 
 def ValidationError(path, key, what) -> SceneError:
@@ -65,7 +68,8 @@ _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\s
 class Item:
     """One thing of the notes, in order.
 
-    ``kind``: ``"heading"`` (``text`` is the title), ``"context"`` (``text``: ``"symmetric"``, the
+    ``kind``: ``"heading"`` (``text`` is the title), ``"convention"`` (``text``: the sequence a
+    section states, ``symbols``: its angles' names, from here on), ``"context"`` (``text``: ``"symmetric"``, the
     prose says the body is symmetric; ``"along momentum"``, it takes the fixed axis along 𝐋), ``"display"`` (``latex``), ``"inline"`` (a
     relation in running text: a claim), ``"assumption"`` (``latex``: a relation assumed from
     here to the next heading), ``"signs"`` (``symbols``: the LaTeX of the symbols, ``text``:
@@ -93,6 +97,8 @@ class Notes:
     declared: dict = field(default_factory=dict)
     items: list = field(default_factory=list)
     names: nm.Names = field(default_factory=nm.Names)
+    angles_stated: bool = False
+    """The angles' names are the text's own, read from its displays or prose (no front matter)."""
     body: str = ""
     """The rendered text (prose and math), for readings that need what the prose says."""
 
@@ -188,6 +194,23 @@ def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
     raise ValidationError(path, "front matter", "no closing '---'")
 
 
+_INDEXED = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(?:\{\s*([ijk])\s*\}|([ijk]))\s*\\equiv\s*(.+?)\s*[,.;]?\s*", re.S)
+
+
+def components(latex: str) -> list[str]:
+    """A definition with a free index, ``c_i \\equiv \\cos\\theta_i``, as its three components
+    (``c_{1} \\equiv \\cos\\theta_{1}``, …); any other formula as itself. The index must appear
+    on the right side too, and no sum or product may bind it."""
+    m = _INDEXED.fullmatch(latex)
+    if not m or re.search(r"\\(?:sum|prod)(?![A-Za-z])", m.group(4)):
+        return [latex]
+    index = m.group(2) or m.group(3)
+    used = re.compile(r"_\s*(?:\{\s*" + index + r"\s*\}|" + index + r"(?![A-Za-z]))")
+    if not used.search(m.group(4)):
+        return [latex]
+    return [f"{m.group(1)}_{{{n}}} \\equiv " + used.sub("_{" + n + "}", m.group(4)) for n in "123"]
+
+
 def _last_word(text: str) -> str:
     words = re.findall(r"[A-Za-z]+", text)
     return words[-1].lower() if words else ""
@@ -240,12 +263,15 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     front matter's."""
     lines = text.split("\n")
     declared, skip = _front_matter(lines, path)
-    conv = convention or declared.get("convention", "z-y-z")
+    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
+    # the front matter (or the command line) wins; else the convention the text states itself
+    stated = [] if convention or "convention" in declared else stated_convention.stated(body)
+    conv = convention or declared.get("convention") or (stated[0].convention if stated else "z-y-z")
     if conv not in CONVENTIONS:
         raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
-    angles = declared.get("angles") or DEFAULT_ANGLES[conv]
-    notes = Notes(path, conv, tuple(angles), declared)
-    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
+    own = None if "angles" in declared or not stated else stated[0].angles
+    angles = declared.get("angles") or own or DEFAULT_ANGLES[conv]
+    notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None)
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     notes.body = body
@@ -296,10 +322,10 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             inequality = re.search(r"\\ge|\\le|(?<!\\)[<>]", latex)
             # X ≡ … introduces a symbol (a definition, checked), never an assumption
             defines = "\\equiv" in latex
-            if word in TRIGGERS and _RELATION.search(latex) and not inequality and not defines:
-                events.append((m.start(), Item("assumption", line, latex=latex, lead=near, display=True)))
-            else:
-                events.append((m.start(), Item("display", line, latex=latex, lead=near, display=True)))
+            kind = "assumption" if word in TRIGGERS and _RELATION.search(latex) and not inequality \
+                and not defines else "display"
+            for one in components(latex):
+                events.append((m.start(), Item(kind, line, latex=one, lead=near, display=True)))
             continue
         latex = source.normalize(m.group("i"), user_macros)
         line_text = body[starts[line - 1]:body.find("\n", m.start()) if body.find("\n", m.start()) >= 0 else len(body)]
@@ -314,11 +340,17 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \
             and line - events[-1][1].line <= 1
-        if word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
-                or _absence_stated(body, m.start(), latex):
-            events.append((m.start(), Item("assumption", line, latex=latex.strip("()") if wrapped else latex, lead=near)))
-        else:
-            events.append((m.start(), Item("inline", line, latex=latex, lead=near)))
+        assumed = word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
+            or _absence_stated(body, m.start(), latex)
+        for one in components(latex.strip("()") if assumed and wrapped else latex):
+            events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near)))
+    # a section that states another convention (or other names) than the one before it
+    current = (conv, tuple(angles))
+    for st in stated[1:]:
+        here = (st.convention, tuple(declared.get("angles") or st.angles or DEFAULT_ANGLES[st.convention]))
+        if here != current:
+            events.append((starts[st.line - 1], Item("convention", st.line, text=st.convention, symbols=here[1])))
+            current = here
     # what the prose says of the body: "a symmetric top" holds to the next heading
     prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
@@ -368,7 +400,7 @@ def angle_aliases(notes) -> tuple:
     """Other names of the angles: the usual φ, θ, ψ when the text declares none; when it declares
     them with a subscript (``\\psi_{\\beta\\alpha}``), their bare letters, which texts write once
     the frames are clear (none if two angles share a letter)."""
-    if "angles" not in notes.declared:
+    if "angles" not in notes.declared and not notes.angles_stated:
         return DEFAULT_ANGLES["z-x-z"]
     bases = tuple(a.split("_")[0] for a in notes.angles)
     if all("_" in a for a in notes.angles) and len(set(bases)) == 3:

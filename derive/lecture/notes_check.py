@@ -47,6 +47,7 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
@@ -60,6 +61,8 @@ from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
+from derive.lecture.section_convention import SectionConvention
+from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
@@ -106,7 +109,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, EulerInAngles, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -115,7 +118,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
+        self.derivations = [self.d]      # every convention the text used, kept for the next command
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
+        self.vocab.body_rate = self._body_rate
         if notes.names is not None and "vertical" in notes.names.letters.values():
             self.vocab.vertical = tuple(self.d.conv.matrix().T[:, 2])   # the upward vertical in body axes
         self.ctx = Context()
@@ -165,6 +170,8 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
                 self._enter_section(item.level)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
+            elif item.kind == "convention":
+                self._stated_convention(item)
             elif item.kind == "context" and item.text == "along momentum":
                 self.ctx.orientation, self.ctx.orientation_prose = item.line, True
             elif item.kind == "context":
@@ -264,6 +271,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
             text = self.ctx.head + " " + piece
         if re.match(r"\s*\\Omega\s*(_\s*\{?\s*[12]\s*\}?)?\s*\\equiv", text):
             self.vocab.omega_names = True          # the lecture's frequencies, defined by the text
+        if general_form(text):
+            self._add(line, piece, "rotation", "unchecked", "not a claim: the general form of a sequence of three turns")
+            return
         other = self._turn_at_another_argument(text)
         if other is not None:
             self._add(line, piece, "rotation", "unchecked", other)
@@ -344,8 +354,10 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
             self._definition(line, piece, parsed)
         elif any(free(self._resolve(m.value)) & set(lx.WD) for m in parsed.members):
             self._eom(line, piece, parsed)
-        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members):
-            self._angle_eom(line, piece, parsed)
+        elif len(parsed.members) == 2 and any(free(m.value) & set(ACCELS) for m in parsed.members) \
+                and not isinstance(m0.value, sp.MatrixBase):       # a column of rates' rates is an identity
+            if not self._euler_in_angles(line, piece, [m.value for m in parsed.members]):
+                self._angle_eom(line, piece, parsed)
         elif "≈" in rels and not self.ctx.small:
             self._add(line, piece, "approximation", "unchecked", "an approximation with no small quantity stated in the text")
         else:
@@ -489,12 +501,24 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
         if undecided:
             self._add(line, piece, kind, "unchecked", undecided)
             return
+        if len(targets) == 1 and self._root_branch(val, self._resolve(targets[0]), seed):
+            self._add(line, piece, kind, "unchecked", f"as written: {why}; its square holds: the two sides differ "
+                      "by the sign of a square root, which the values the text allows decide")
+            return
         self._last_fix = None
         fix = None if self.judging_only else self._search(value, targets, label, parsed, k, small, order, keep)
         if fix:
             self._add(line, piece, kind, "typo", f"as written: {why}; one edit ({fix[1]}) makes it hold", fix[0])
         else:
             self._add(line, piece, kind, "fails", f"as written: {why}")
+
+    def _root_branch(self, val, target, seed) -> bool:
+        """Do scalar sides with a square root in them differ only by its sign (equal squares)?"""
+        if isinstance(val, sp.MatrixBase) or isinstance(target, sp.MatrixBase):
+            return False
+        if not any(p.exp.is_Rational and p.exp.q == 2 for e in (val, target) for p in sp.sympify(e).atoms(sp.Pow)):
+            return False
+        return self._compare(val ** 2, target ** 2, seed + "/squared")[0]
 
     def _oriented(self, line, val, targets, seed) -> str | None:
         """Why the claim holds with the fixed first axis along 𝐋 (`derive.lecture.orientation`), or
@@ -546,7 +570,9 @@ class Checker(EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rer
                        and x not in self._constants())
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
-        if not every & rates and every & set(rot.ANGLES):
+        turns = isinstance(val, sp.MatrixBase) and val.shape == (3, 3)
+        if not every & rates and every & set(rot.ANGLES) and not turns:
+            # (a 3×3 matrix of the angles equated to another is an identity of rotations, decided)
             return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
                     "of them there): a condition, such as a turning point or the orientation the text chose")
         return None
@@ -588,5 +614,6 @@ def check_text(text: str, convention: str | None = None, path: str = "<notes>") 
 
 def _checked(checker: Checker) -> list[Claim]:
     claims = checker.run()
-    keep(checker.d)  # what the text's convention needed, for the next command
+    for d in {id(d): d for d in checker.derivations}.values():
+        keep(d)  # what the text's conventions needed, for the next command
     return claims

@@ -429,6 +429,10 @@ _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[
                         + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
 
+_DEFINED_AS = re.compile(r"\\(?:triangleq|coloneqq|eqqcolon|defeq|eqdef)(?![A-Za-z])|:=")
+"""The signs of "is defined as" (≜, :=): read as ≡, a definition."""
+
+
 def normalize(latex: str, user: dict | None = None) -> str:
     """One formula in the reader's dialect (see the module docstring).
 
@@ -445,7 +449,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
         The same formula, normalised; a formula the walker cannot follow is returned with only
         its characters normalised.
     """
-    latex = definitions_removed(characters(latex))
+    latex = _DEFINED_AS.sub(r"\\equiv ", definitions_removed(characters(latex)))
     user = user or {}
     try:
         latex = texmacros.expand(latex, user)

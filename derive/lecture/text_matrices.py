@@ -28,6 +28,10 @@ from derive.lecture import latex as lx
 from derive.symbolic.rotations import trig_reduce
 
 
+_AT_TIME = re.compile(r"^(\s*\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|\w))?)\s*\(\s*t\s*\)\s*=")
+# a name at the time before the product of turns, ``R(t) =``: its argument is no factor
+
+
 def matrices_put(e, rep):
     """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
     up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
@@ -179,15 +183,37 @@ class TextMatrices:
                 break
         else:
             return text
+        self._product_named(toks, found[0][3], product)
         if at_arguments:
             self._turns_at_arguments(found, sense)
-            return text
+            return _AT_TIME.sub(r"\1 =", text, count=1)
         for (atom, _, _, start, end, _), turn in zip(reversed(found), reversed(turns)):
             sym = self.vocab.resolve(atom)
             if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
                 self._matrix_name(sym, turn)
             text = text[:start] + text[end:]
-        return text
+        return _AT_TIME.sub(r"\1 =", text, count=1)
+
+    def _product_named(self, toks, at, product):
+        """``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3) = …``: the plain name the text sets equal to
+        the product of the turns (a name it has not defined) is that product from here on. Only in a
+        chain: ``R = (the turns)`` alone is read as a rotation R and checked as one."""
+        if sum(1 for t in toks if t.kind == "rel") < 2:
+            return
+        before = [t for t in toks if t.pos < at]
+        if before[-2:-1] and before[-1].kind == "atom":       # "R = R_3(…)": the first turn's letter is before[-1]
+            before = before[:-1]
+        if len(before) < 2 or before[0].kind != "atom" or before[-1].kind != "rel" or before[-1].value != "=":
+            return
+        inner = before[1:-1]
+        if inner and [(t.kind, t.value) for t in inner] not in ([("op", "("), ("atom", inner[1].value), ("op", ")")],):
+            return                        # R(t) = …: a name with its argument, else nothing
+        try:
+            sym = self.vocab.resolve(before[0].value)
+        except lx.NotRead:
+            return
+        if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
+            self._matrix_name(sym, product)
 
     def _turns_at_arguments(self, found, sense):
         """Bind each plain name-at-argument of ``found`` (``R_z(\\psi)``, read as its own name) the text

@@ -292,6 +292,8 @@ class TextNames:
         if len(loose) == 1 and any(_free(self._resolve(m)) & set(lx.WD) for m in members) and \
                 _a_torque(self._resolve(members[0] - members[-1]), next(iter(loose))):
             return False          # an equation of motion with a torque of the text's own (N₃)
+        if len(loose) == 1 and rels == ["="] and self._euler_in_angles(line, piece, members):
+            return True           # Euler's equation in the angles, with a torque of the text's own (T₁ᵉ)
         self.settings_only = False
         if self._vectors(line, piece, getattr(self, "_text", piece)):
             return True

@@ -232,7 +232,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
     else:
         raise NotRead(f"cannot read {s[i:i + 12]!r}", i + 1)
     # sub- and superscripts that belong to the symbol: subscripts always; primes; a superscript
-    # that is 0 or a prime (ê⁰₃, E′), or a letter on a bold symbol (a frame: 𝐑^α_β, 𝛚^α); numeric
+    # that is 0 or a prime (ê⁰₃, E′), or a letter on a bold symbol (a frame: 𝐑^α_β, 𝛚^α), or the
+    # letter e on any other symbol (T^e, the external moment: a power e would be Euler's number); numeric
     # superscripts otherwise are powers (left to the parser).
     while j < len(s):
         k = j
@@ -253,6 +254,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
             elif atom.bold and not atom.sup and plain not in ("T", "top", "intercal", "t") and \
                     (plain in GREEK or re.fullmatch(r"[A-Za-z]", plain)):
                 atom, j = atom.with_(sup=plain), after     # a frame's label on a vector or a matrix (𝐑^α_β)
+            elif plain == "e" and atom.base != "e" and not atom.bold:
+                atom, j = atom.with_(sup=plain), after     # T^e, f^e: the external (or earth-frame) label, never a power e
             else:
                 break
         else:
@@ -368,6 +371,9 @@ class Vocabulary:
     """The body axis of the third turn (2 for z-y-z and z-x-z): the angular momentum's component
     on it is the third angle's momentum, I₃ω̃₃ = p_γ."""
     vertical: tuple = ()
+    body_rate: object = None
+    """() → the body components of the angular velocity's rate in the angles, their rates and
+    accelerations (a callable, so that only a text that writes Ω̇ as a column pays for it)."""
     """The upward vertical's body components in the angles (Rᵀẑ), when the text names them (Poisson's γᵢ)."""
     names_off: bool = False
     """Read as if the text had named nothing (a second opinion on a learned name)."""

@@ -1,0 +1,132 @@
+"""The angle convention a text states without front matter: read from its own displays and prose.
+
+Takes: the rendered text of the notes (prose and math, `derive.lecture.source.rendered`). Gives:
+`stated(body)`, the conventions the text states, one per section that states one (`Stated`: the
+line the section starts on, the sequence, the angles' names when the text gives them).
+
+What states a convention, in a section (cut at Markdown headings and LaTeX ``\\section``-like
+commands):
+
+* a product of three single-axis turns named by their axis and applied to one angle each,
+  ``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3)`` (axes ``1 2 3`` or ``x y z``, any matrix
+  letter, bold or roman): the sequence of the axes in the written order (3-1-3 → z-x-z) and the
+  angles' names in that order. A product whose consecutive axes repeat, or whose arguments are
+  not three different plain symbols, states nothing;
+* prose naming the sequence, "3-1-3 Euler angles", "a z-x-z sequence", "the 3-2-1 convention":
+  the sequence; the names come from a product in the same section, else from the prose right
+  after it, "a turn $\\theta$ about the third axis, then $\\alpha$ about the first, then $\\phi$
+  about the second" (three names whose axes are the sequence's), else none (the sequence's usual
+  names).
+
+A product about axes named by letters (``R_i(\\theta_1) R_j(\\theta_2) R_k(\\theta_3)``) is the general
+form of every sequence: it states none, and the reader takes it for no claim (`general_form`).
+Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
+it declares a convention, wins over everything read here (`derive.lecture.notes.parse_notes`).
+
+May import: the standard library only (`re`, `dataclasses`).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+_AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z"}
+_ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
+_SYMBOL = r"\\?[A-Za-z]+(?:\s*_\s*(?:\{\s*\\?[A-Za-z0-9]+\s*\}|\\?[A-Za-z0-9]))?"
+_MATRIX = r"(?:\\(?:mathbf|mathrm|boldsymbol|bm|mathsf)\s*\{\s*[A-Z]\s*\}|[A-Z])"
+_SPACE = r"(?:\s|\\[,;:!]|\\q?quad)*"
+_TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyz])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+_PRODUCT = re.compile(_TURN + _SPACE + _TURN + _SPACE + _TURN)
+_SEQUENCE = re.compile(r"(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])(?![\w-])"
+                       r"(?=[^.$]{0,40}?\b(?:Euler|Tait|Bryan|angles?|sequence|convention|rotations?)\b)")
+_ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s+)?(?:(?:new|body|fixed|"
+                    r"inertial|intermediate)\s+)?(first|second|third|1st|2nd|3rd|[xyzXYZ][- ]?)(?:\s*[- ]?axis)?",
+                    re.I)
+_SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
+_MATH = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{((?:equation|align|alignat|eqnarray|gather|multline|flalign|displaymath)\*?)\}.*?\\end\{\1\}|\$[^$]+\$", re.S)
+
+
+_GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+_GENERIC = re.compile(_GENERIC_TURN + _SPACE + _GENERIC_TURN + _SPACE + _GENERIC_TURN)
+
+
+def general_form(latex: str) -> bool:
+    """Is ``latex`` a product of three turns about axes named by letters, ``R_i(\\theta_1) R_j(\\theta_2)
+    R_k(\\theta_3)``: the form every sequence takes, which states none and defines nothing?"""
+    return _GENERIC.search(latex) is not None
+
+
+@dataclass(frozen=True)
+class Stated:
+    """A convention a section of the text states: from ``line`` (the section's first line) on."""
+
+    line: int
+    convention: str
+    angles: tuple | None
+    """The angles' names in the order of the turns (``("theta_1", "theta_2", "theta_3")``, the
+    spelling of the front matter's ``angles``), or None when the text names them nowhere near."""
+
+
+def _name(tex: str) -> str:
+    """A LaTeX angle (``\\theta_{1}``) as the front matter's ``angles`` spell it (``theta_1``)."""
+    base, _, sub = re.sub(r"\s", "", tex).partition("_")
+    sub = re.sub(r"[\\{}]", "", sub)
+    return base.lstrip("\\") + ("_" + sub if sub else "")
+
+
+def _sequence(axes) -> str | None:
+    """Three axes as a sequence (``z-x-z``), when consecutive turns are about different axes."""
+    if axes[0] == axes[1] or axes[1] == axes[2]:
+        return None
+    return "-".join(axes)
+
+
+def _from_product(text: str):
+    """(sequence, names) of the first product of three single-axis turns in ``text``, or None."""
+    for m in _PRODUCT.finditer(text):
+        seq = _sequence([_AXIS[m.group(k)] for k in (1, 3, 5)])
+        names = tuple(_name(m.group(k)) for k in (2, 4, 6))
+        if seq and len(set(names)) == 3:
+            return seq, names
+    return None
+
+
+def _from_prose(prose: str, math_free: str):
+    """(sequence, names or None, where) of the first sequence the prose names, or None."""
+    for m in _SEQUENCE.finditer(math_free):
+        seq = _sequence([_AXIS[g.lower()] for g in m.groups()])
+        if seq is None:
+            continue
+        # "a turn $\theta$ about the third axis, then $\alpha$ about the first, …": the names
+        after = prose[m.end():m.end() + 400]
+        after = after[:after.find("\n\n")] if "\n\n" in after else after
+        turns = [(_name(t.group(1)), _ORDINAL.get(t.group(2).lower(), t.group(2)[:1].lower()))
+                 for t in _ABOUT.finditer(after)][:3]
+        names = None
+        if len(turns) == 3 and "-".join(a for _, a in turns) == seq and len({n for n, _ in turns}) == 3:
+            names = tuple(n for n, _ in turns)
+        return seq, names, m.start()
+    return None
+
+
+def stated(body: str) -> list[Stated]:
+    """The conventions the text states, in order: one per section that states one (see the
+    module docstring). ``body`` is the rendered text; lines are 1-based."""
+    cuts = [0] + [m.start() for m in _SECTION.finditer(body)] + [len(body)]
+    out: list[Stated] = []
+    for a, b in zip(cuts, cuts[1:]):
+        section = body[a:b]
+        if not section.strip():
+            continue
+        maths = [m.group(0) for m in _MATH.finditer(section)]
+        product = next((p for p in map(_from_product, maths) if p), None)
+        math_free = _MATH.sub(lambda m: " " * len(m.group(0)), section)
+        prose = _from_prose(section, math_free)
+        if product and (prose is None or prose[0] == product[0]):
+            seq, names = product
+        elif prose:
+            seq, names = prose[0], prose[1]
+        else:
+            continue
+        out.append(Stated(body.count("\n", 0, a) + 1, seq, names))
+    return out
