@@ -130,8 +130,8 @@ class AlgebraStatements:
                 principal = True           # the written tensor is diagonal where the derived one is not
                 continue
             if _set_perpendicular(reading, k):
-                return "unchecked", ("a scalar product set to zero: the two vectors perpendicular, a fact of the "
-                                     "text's set-up (as it states), not a consequence the derivation decides")
+                return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
+                                     "condition of the text's set-up, not a consequence the derivation decides")
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
