@@ -129,6 +129,9 @@ class AlgebraStatements:
                     all(_zero(d[i, j]) or (i != j and lit[i, j] == 0) for i, j in itertools.product(range(3), repeat=2)):
                 principal = True           # the written tensor is diagonal where the derived one is not
                 continue
+            if _set_perpendicular(reading, k):
+                return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
+                                     "condition of the text's set-up, not a consequence the derivation decides")
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
@@ -161,6 +164,12 @@ def _in_principal_axes(d):
 
 _INDEX_ENTRY = re.compile(r"^\s*I_\s*\{?\s*[a-z]\s*,?\s*[a-z]\s*\}?\s*$")
 """``I_{ij}``: the left side of the tensor's entries written in index form."""
+
+
+def _set_perpendicular(reading, k) -> bool:
+    """``… = 2 𝐋 · 𝛕 = 0``: member k is zero and the member before it a scalar product."""
+    first = reading.members[0]
+    return k > 0 and first[k].value == 0 and "\\cdot" in reading.source[first[k - 1].start:first[k - 1].end]
 
 
 def _zero(d) -> bool:
@@ -212,11 +221,13 @@ def _entry_name(source, member):
 
 def _torque_law(text, state) -> bool:
     """d𝐋/dt set equal to a bold letter the prose names the torque (``\\boldsymbol M`` "being the
-    external torque"): the law of motion, this reader's."""
-    if not re.search(r"\\frac\s*\{\s*(?:\\mathrm\s*\{?\s*d\s*\}?|d)\s*\\(?:boldsymbol|mathbf|bm)", text):
+    external torque") or to a torque labelled by its source (``\\vec{\\tau}_g``): the law of motion,
+    this reader's."""
+    if not re.search(r"\\frac\s*\{\s*(?:\\mathrm\s*\{?\s*d\s*\}?|d)\s*\\(?:boldsymbol|mathbf|bm|vec)", text):
         return False
-    return any(t.kind == "atom" and t.value.bold and not t.value.sub and t.value.base in state.torques
-               and t.value.base not in va.TORQUES for t in _tokens(va.prepare(text)))
+    return any(t.kind == "atom" and t.value.bold and t.value.base in state.torques
+               and ((not t.value.sub and t.value.base not in va.TORQUES) or va.labelled_torque(t.value.sub))
+               for t in _tokens(va.prepare(text)))
 
 
 def _mentions(text, state) -> bool:

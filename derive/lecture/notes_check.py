@@ -47,6 +47,7 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.written_out import WrittenOut
@@ -59,6 +60,7 @@ from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
+from derive.lecture.own_rates import OwnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.section_convention import SectionConvention
@@ -294,6 +296,10 @@ class Checker(SectionConvention, EulerInAngles, EulerPoisson, WrittenOut, TextNa
             return
         if self._body_axes_first(line, piece, text):
             return
+        self._rates = getattr(self, "_rates", None) or OwnRates()   # a worked example's numbers, ḟ(t) of its f(t)
+        for kind, (verdict, why) in [*(("arithmetic", a) for a in arithmetic(text, self.vocab)),
+                                     *(("rate", r) for r in self._rates.check(line, text, self.vocab))]:
+            self._add(line, piece, kind, verdict, why)
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.Words:

@@ -43,7 +43,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import tex_structure, texmacros
+from derive.lecture import tex_structure, texmacros, units
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -449,7 +449,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
         The same formula, normalised; a formula the walker cannot follow is returned with only
         its characters normalised.
     """
-    latex = _DEFINED_AS.sub(r"\\equiv ", definitions_removed(characters(latex)))
+    latex = _DEFINED_AS.sub(r"\\equiv ", units.plain_numbers(definitions_removed(characters(latex))))
     user = user or {}
     try:
         latex = texmacros.expand(latex, user)

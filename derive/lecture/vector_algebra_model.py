@@ -49,6 +49,13 @@ RK = [sp.Matrix(sp.symbols(f"x_{k} y_{k} z_{k}", real=True)) for k in range(1, P
 E = sp.eye(3)
 UNIT = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 TORQUES = ("tau", "Gamma")
+TORQUE_LABELS = ("g", "grav", "gravity", "weight", "W", "ext", "e", "net", "tot", "total")
+"""Subscripts that name where a torque comes from, not a component: 𝛕_g (the weight's), 𝛕_ext."""
+
+
+def labelled_torque(sub: str) -> bool:
+    """Whether a torque letter's subscript labels it (``g``, ``\\text{ext}``) rather than indexing it."""
+    return re.sub(r"^(?:text|mathrm|rm)", "", sub) in TORQUE_LABELS
 _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
@@ -341,6 +348,8 @@ class Algebra:
                 return torque(self.system)
             if not bold and sub in AXES and len(sub) == 1:
                 return torque(self.system)[AXES[sub]]
+            if bold and labelled_torque(sub):
+                return torque(self.system)
             return None
         if base == "F" and bold and not sub:
             p.force_at.append(p.i)

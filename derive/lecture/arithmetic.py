@@ -1,0 +1,99 @@
+"""The arithmetic between the numbers of a chain of equalities in a worked example.
+
+A worked example writes ``I_z = \\frac{1}{2} m R^2 = \\frac{1}{2}(2.50)(0.18)^2 = 0.04050`` (its units
+already dropped by `units.plain_numbers`). `arithmetic` judges each link between two neighbouring
+members of a chain that are plain numbers: ``=`` and ``≈`` hold when the two agree to the digits
+the text writes (one unit in the last place it prints, so a rounded or truncated value holds), fail
+when they differ by more than a few per cent, and are left unchecked in between. The symbols'
+values are not used: a text's later "effective" value of a symbol (``L_{\\text{eff}}``) cannot
+turn a correct line into a false alarm.
+
+Takes a formula in the reader's dialect (`source.normalize`) and the reader's parser; gives the
+verdicts of the numeric links. Imports nothing of derive but the lecture's LaTeX reader.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+
+_LINK = re.compile(r"(?<![<>!])=|\\approx(?![A-Za-z])|\\simeq(?![A-Za-z])")
+_LITERAL = re.compile(r"\s*-?\d*\.?\d+\s*")
+
+
+def _members(text: str):
+    """The top-level members of a chain and the relations between them (None where the chain
+    holds anything the split does not follow)."""
+    depth, cuts = 0, []
+    for i, ch in enumerate(text):
+        depth += (ch in "({[") - (ch in ")}]")
+        if depth == 0:
+            m = _LINK.match(text, i)
+            if m:
+                cuts.append((m.start(), m.end(), "=" if m.group(0) == "=" else "≈"))
+    if not cuts:
+        return None
+    pieces, rels, at = [], [], 0
+    for a, b, rel in cuts:
+        pieces.append(text[at:a])
+        rels.append(rel)
+        at = b
+    pieces.append(text[at:])
+    return pieces, rels
+
+
+def _value(piece: str, vocab):
+    """A member's value when it is a plain number (no symbol in it), else None."""
+    if not re.search(r"\d", piece) or re.search(r"\\(?:implies|Rightarrow|quad|text)|[,;]", piece):
+        return None
+    try:
+        parsed = lx.parse(piece, vocab)
+    except (lx.NotRead, lx.Words, ValueError, TypeError):
+        return None
+    if len(parsed.members) != 1:
+        return None
+    value = parsed.members[0].value
+    if not isinstance(value, sp.Expr) or value.free_symbols:
+        return None
+    number = complex(sp.N(value, 30))
+    return number.real if abs(number.imag) < 1e-12 else None
+
+
+def _last_place(piece: str) -> float:
+    """One unit in the last place a written number prints (0 for an expression: it is exact)."""
+    if not _LITERAL.fullmatch(piece):
+        return 0.0
+    digits = piece.strip().lstrip("-")
+    return 10.0 ** -(len(digits.split(".")[1]) if "." in digits else 0)
+
+
+def arithmetic(text: str, vocab=None) -> list[tuple[str, str]]:
+    """The verdicts (verdict, why) of the links between neighbouring numeric members of a chain.
+
+    ``a = b`` and ``a ≈ b`` hold when ``|a - b|`` is at most one unit in the last place printed on
+    either side (plus a relative 1e-9); they fail when the two differ by more than 3 % and by more
+    than three such units; in between the link is left unchecked.
+    """
+    split = _members(text)
+    if split is None:
+        return []
+    pieces, rels = split
+    values = [_value(p, vocab) for p in pieces]
+    out = []
+    for k, rel in enumerate(rels):
+        a, b = values[k], values[k + 1]
+        if a is None or b is None:
+            continue
+        ulp = _last_place(pieces[k]) + _last_place(pieces[k + 1])
+        gap = abs(a - b)
+        shown = f"{pieces[k].strip()} {rel} {pieces[k + 1].strip()}"
+        if gap <= ulp + 1e-9 * max(abs(a), abs(b), 1.0):
+            out.append(("holds", f"the arithmetic {shown}: {a:.10g} against {b:.10g}, to the digits written"))
+        elif gap > 3 * ulp and gap > 0.03 * max(abs(a), abs(b)):
+            out.append(("fails", f"the arithmetic {shown}: the left side is {a:.10g}, not {b:.10g}"))
+        else:
+            out.append(("unchecked", f"the arithmetic {shown}: {a:.10g} against {b:.10g}, closer than a slip "
+                                     "but not to the digits written"))
+    return out

@@ -1,0 +1,27 @@
+"""Numbers as worked examples write them: a unit after a number, a thousands separator, ``\\times``
+between two numbers.
+
+``0.04050\\text{ kg}\\cdot\\text{m}^2`` is the number 0.04050: a unit is a whitelisted name in
+``\\text{…}``/``\\mathrm{…}`` (with ``/``, powers, ``\\cdot`` or spaces between names) right after a
+digit, so ``r_{\\text{cm}}`` and words such as ``\\text{constante}`` stay as they are. ``10{,}000`` is
+10000 and ``10{,}000 \\times 2\\pi`` a product of numbers. Takes and gives LaTeX; imports nothing.
+"""
+from __future__ import annotations
+
+import re
+
+_UNIT = r"(?:kg|m|cm|mm|km|s|ms|min|N|J|kJ|Pa|rad|RPM|rpm|rev|Hz|deg)"
+_UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|\\,|\s)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
+_UNIT_TOKEN = (r"\\(?:text|mathrm|mbox|textrm)\s*\{\s*" + _UNIT_EXPR + r"\s*\}(?:\s*\^\s*(?:\{\s*-?\d+\s*\}|-?\d))?")
+_UNITS = re.compile(r"(?<=\d)(?:\s|\\,|\\;|~)*" + _UNIT_TOKEN + r"(?:\s*(?:\\cdot|\\,|\s)\s*" + _UNIT_TOKEN + r")*")
+"""A unit, or a product of units, right after a number: ``2.50\\text{ kg}``, ``0.04\\text{ kg}\\cdot\\text{m}^2``."""
+_THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
+_NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
+
+
+def plain_numbers(latex: str) -> str:
+    """The formula with the units after its numbers dropped, ``10{,}000`` joined and ``\\times``
+    between two numbers read as a product."""
+    latex = _THOUSANDS.sub("", latex)
+    latex = _UNITS.sub(" ", latex)
+    return _NUMBER_TIMES.sub(r" \\cdot ", latex)

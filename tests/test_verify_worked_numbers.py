@@ -1,0 +1,72 @@
+"""A worked example's numbers: units after a number, a thousands separator, and the arithmetic
+between the plain numbers of a chain (derive/lecture/units.py, derive/lecture/arithmetic.py)."""
+import kept_readings as kept
+
+from derive.lecture.arithmetic import arithmetic
+from derive.lecture.units import plain_numbers
+
+
+def test_a_unit_after_a_number_is_dropped_and_a_subscript_word_stays():
+    text = plain_numbers(r"I_z = \frac{1}{2}(2.50\text{ kg})(0.18\text{ m})^2 = 0.04050\text{ kg}\cdot\text{m}^2")
+    assert r"\text" not in text and "0.04050" in text
+    assert plain_numbers(r"r_{\text{cm}} m g = 9.81\text{ m/s}^2") == r"r_{\text{cm}} m g = 9.81 "
+    assert plain_numbers(r"|\vec{L}| = \text{constante}") == r"|\vec{L}| = \text{constante}"
+
+
+def test_a_thousands_separator_and_a_product_of_two_numbers_are_read_as_numbers():
+    assert plain_numbers(r"\frac{10{,}000 \times 2\pi}{60}") == r"\frac{10000 \cdot 2\pi}{60}"
+    assert r"\times" in plain_numbers(r"\vec{r} \times \vec{F}")
+
+
+def test_the_arithmetic_of_a_chain_holds_to_the_digits_it_writes():
+    assert [v for v, _ in arithmetic(r"\tau = (0.25)(2.50)(9.81) = 6.13125 \approx 6.13")] == ["holds", "holds"]
+    assert [v for v, _ in arithmetic(r"\omega_n = \frac{L}{I_x} = \frac{1.01}{0.17650} \approx 5.72")] == ["holds"]
+
+
+def test_an_arithmetic_slip_fails_and_a_value_off_in_its_last_digits_is_left_unchecked():
+    assert [v for v, _ in arithmetic(r"\omega_n = \frac{1.01}{0.17650} \approx 5.27")] == ["fails"]
+    assert [v for v, _ in arithmetic(r"\omega_n = \frac{1.01}{0.17650} \approx 5.75")] == ["unchecked"]
+
+
+def test_links_with_symbols_are_not_judged_by_the_numbers():
+    # the symbols' values are not substituted: L may be a later "effective" value
+    assert arithmetic(r"\omega_n = \frac{L}{I_x} = 5.72") == []
+
+
+def test_a_worked_example_with_units_is_checked_in_notes_and_a_wrong_product_is_flagged():
+    good = "$$L = I_z \\omega_s = (0.04050\\text{ kg}\\cdot\\text{m}^2)(1047.19755\\text{ rad/s}) \\approx 42.4115\\text{ N}\\cdot\\text{m}\\cdot\\text{s}$$\n"
+    claims = kept.check_text(good)
+    assert any(c.kind == "arithmetic" and c.verdict == "holds" for c in claims)
+    assert not any(c.verdict in ("typo", "fails") for c in claims)
+    bad = good.replace("42.4115", "24.4115")
+    assert any(c.kind == "arithmetic" and c.verdict == "fails" for c in kept.check_text(bad))
+
+
+def test_a_rate_written_after_its_function_of_time_holds_as_its_derivative_and_is_never_flagged():
+    head = ("Here $\\Omega_p$ and $\\omega_n$ are constants.\n\n"
+            "$$\\phi(t) = \\Omega_p t - \\frac{\\Omega_p}{\\omega_n} \\sin(\\omega_n t)$$\n\n")
+    good = kept.check_text(head + "$$\\dot{\\phi}(t) = \\Omega_p \\left[1 - \\cos(\\omega_n t)\\right]$$\n")
+    assert any(c.kind == "rate" and c.verdict == "holds" for c in good)
+    off = kept.check_text(head + "$$\\dot{\\phi}(t) = \\Omega_p \\left[1 + \\cos(\\omega_n t)\\right]$$\n")
+    assert any(c.kind == "rate" and c.verdict == "unchecked" for c in off)
+    assert not any(c.verdict in ("typo", "fails") for c in off)
+
+
+def test_the_torque_law_with_a_torque_labelled_by_its_source_holds_and_a_factor_on_it_does_not():
+    text = "The weight's torque about the pivot is $\\vec{\\tau}_g$.\n\n$$\\frac{d\\vec{L}}{dt} = \\vec{\\tau}_g$$\n"
+    assert [c.verdict for c in kept.check_text(text)] == ["holds"]
+    assert "holds" not in [c.verdict for c in kept.check_text(text.replace("= \\vec{\\tau}_g$$", "= 2\\vec{\\tau}_g$$"))]
+
+
+def test_a_scalar_product_set_to_zero_is_the_texts_perpendicularity_not_a_slip():
+    text = ("The weight's torque $\\vec{\\tau}_g$ is perpendicular to $\\vec{L}$.\n\n"
+            "$$\\frac{d\\vec{L}}{dt} = \\vec{\\tau}_g$$\n\n"
+            "$$\\frac{d}{dt}|\\vec{L}|^2 = 2 \\vec{L} \\cdot \\frac{d\\vec{L}}{dt} = 2 \\vec{L} \\cdot \\vec{\\tau}_g = 0$$\n")
+    claims = kept.check_text(text)
+    assert not any(c.verdict in ("typo", "fails") for c in claims)
+    assert any(c.line == 5 and c.verdict == "holds" for c in claims)
+
+
+def test_the_rate_of_a_squared_length_written_alone_is_left_unchecked_not_an_error():
+    claims = kept.check_text("$$\\frac{d}{dt}|\\vec{L}|^2 = 2 \\vec{L} \\cdot \\frac{d\\vec{L}}{dt}$$\n")
+    assert [c.verdict for c in claims] == ["unchecked"]
