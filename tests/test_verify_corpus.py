@@ -40,6 +40,13 @@ SHORT = {
     ("maithripala-rolling-disk-gimbal-312-313", "found"):
         "its slips (the sign in Omega_2 and the kinetic energy of the 3-1-2 rolling disk, the 3-1-3 matrix "
         "with the angles negated) sit in displays the reader does not check",
+    ("principia-celledoni-free-body-elliptic-solution", "checked"):
+        "a LaTeX note written in its project's own semtex macros (\\vm, \\gD_j, \\gl, \\gs, \\TimeDerivative, "
+        "\\DefineAs, \\pa, \\of, \\JacobiSN), which the file does not define, about the body angular momentum m "
+        "with G = ||m|| and Jacobi elliptic solutions in B_jh, k, lambda",
+    ("principia-celledoni-free-body-elliptic-solution", "found"):
+        "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
+        "in displays written in those macros",
 }
 
 FLOOR = {"checked": 314, "slips_flagged": 34, "holds_flagged": 0}
