@@ -1,4 +1,5 @@
-"""The notes reader on the signs texts write a definition with, and on mathtools' cases."""
+"""The notes reader on the signs texts write a definition with, mathtools' cases, aligned rows of
+column pairs, and a file's macro used as a command's unbraced argument."""
 import pytest
 
 import kept_readings as kept
@@ -50,3 +51,10 @@ def test_words_in_an_aligned_rows_other_column_stay_with_its_statement():
 def test_a_column_that_goes_on_with_the_statement_before_it_is_not_a_new_statement():
     rows = [r"F_x &= m a_x &\rightarrow F_x &= m a_x", r"\Omega_1 &= a, \quad \Omega_2 &&= -a"]
     assert [len(statements(r"\begin{alignat}{2}" + row + r"\end{alignat}")) for row in rows] == [1, 2]
+
+
+def test_a_files_macro_as_the_unbraced_argument_of_a_command_is_its_whole_expansion():
+    macros = source.macros(r"\newcommand{\vw}{\boldsymbol{\omega}} \newcommand{\vm}{\mathbf{m}}")
+    assert source.normalize(r"\dot\vw = 0", macros) == r"\dot{\boldsymbol{\omega}} = 0"
+    assert source.normalize(r"\norm\vm = G", macros) == r"\left|\mathbf{m}\right| = G"
+    assert source.normalize(r"\vw_1", macros) == r"\boldsymbol{\omega}_1"
