@@ -167,6 +167,8 @@ _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "c
            "iff": "Leftrightarrow", "Longrightarrow": "Rightarrow", "longrightarrow": "to",
            "mathbb": "mathrm", "rm": "mathrm", "degree": "circ", "lbrace": "{", "rbrace": "}",
            "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad",
+           # a definition written with its own sign (mathtools' :=, "equal by definition")
+           "coloneqq": "equiv", "triangleq": "equiv", "eqdef": "equiv", "defeq": "equiv",
            **{"var" + g: g for g in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi",
                                      "Psi", "Omega")}}
 _FUNCTION_NAMES = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
@@ -347,6 +349,8 @@ _BARE_TRIG = re.compile(r"(?<![A-Za-z])(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh)(
 _WORD_TRIG = re.compile(r"\\(text|mathrm|mathit|operatorname)\{\s*\\(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh) \}")
 
 
+# ":=" typed as two characters (never the label colon before a row, "\\theta:", nor "=:")
+_COLON_EQUALS = re.compile(r"(?<![=:\\])\s*:\s*=(?!:)")
 _ELLIPTIC = re.compile(r"\\(?:mathrm|operatorname)\{\s*(sn|cn|dn)\s*\}(?:\\,)?")
 
 
@@ -429,10 +433,6 @@ _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[
                         + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
 
-_DEFINED_AS = re.compile(r"\\(?:triangleq|coloneqq|eqqcolon|defeq|eqdef)(?![A-Za-z])|:=")
-"""The signs of "is defined as" (≜, :=): read as ≡, a definition."""
-
-
 def normalize(latex: str, user: dict | None = None) -> str:
     """One formula in the reader's dialect (see the module docstring).
 
@@ -449,7 +449,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
         The same formula, normalised; a formula the walker cannot follow is returned with only
         its characters normalised.
     """
-    latex = _DEFINED_AS.sub(r"\\equiv ", units.plain_numbers(definitions_removed(characters(latex))))
+    latex = units.plain_numbers(definitions_removed(characters(latex)))
     user = user or {}
     try:
         latex = texmacros.expand(latex, user)
@@ -470,5 +470,6 @@ def normalize(latex: str, user: dict | None = None) -> str:
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1
+    text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     return re.sub(r"[ \t]{2,}", " ", text).strip()

@@ -4,7 +4,8 @@ Takes: the LaTeX of one display (normalised by `derive.lecture.source`). Gives: 
 the list of its statements, each a LaTeX string. May import: the standard library.
 
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
-other display environments, which are dropped), a row ending in ``+``/``-`` continuing on the
+other display environments, which are dropped; an aligned row of column pairs side by side,
+``a &= b & c &\\equiv d``, is one row per pair), a row ending in ``+``/``-`` continuing on the
 next (and one ending in ``=`` on a next that opens with ``=``); a row into pieces at ``\\qquad``,
 ``\\quad``, ``\\Rightarrow``, ``\\implies`` and a spaced ``\\text{and}``; a piece at top-level ``;``
 and at commas between relations (never inside brackets). A label before a colon (``\\theta:``,
@@ -22,7 +23,9 @@ import re
 
 _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
          "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
-         "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases")
+         "alignedat", "subequations", "displaymath", "math", "numcases", "subnumcases",
+         # mathtools' cases: display-style, and with the brace on the right
+         "dcases", "dcases*", "rcases", "rcases*", "drcases", "drcases*")
 
 _SYSTEM_OPEN = re.compile(r"\\left\s*(?:\\\{|\\lbrace)\s*(?P<array>\\begin\{array\}\s*\{[^{}]*\})?")
 _SYSTEM_ARRAY_END = re.compile(r"\\end\{array\}(?=\s*(?:\\right\s*\.|\\quad|\\qquad|$))")
@@ -93,6 +96,37 @@ def _alignment_free(s: str) -> str:
             out.append(s[i])
         i += 1
     return "".join(out)
+
+def _column_pairs(row: str) -> list[str]:
+    """An aligned row of several column pairs, ``a &= b & c &= d``: each pair that states a relation
+    is a statement of its own (cut at the second, fourth, ... top-level '&'); a row whose other
+    columns hold words (``a &= b &&\\text{stable}``) stays one row."""
+    cuts, depth, env = [], 0, 0
+    for i, ch in enumerate(row):
+        if row.startswith("\\begin{", i):
+            env += 1
+        elif row.startswith("\\end{", i):
+            env -= 1
+        elif ch == "{" and (i == 0 or row[i - 1] != "\\"):
+            depth += 1
+        elif ch == "}" and (i == 0 or row[i - 1] != "\\"):
+            depth -= 1
+        elif ch == "&" and depth == 0 and env == 0 and (i == 0 or row[i - 1] != "\\"):
+            cuts.append(i)
+    if len(cuts) < 3:
+        return [row]
+    bounds = [0] + [c + 1 for c in cuts[1::2]]
+    ends = [c for c in cuts[1::2]] + [len(row)]
+    pairs = [row[a:b] for a, b in zip(bounds, ends)]
+    if all(_RELATION_IN.search(p) for p in pairs) and not any(_CONTINUED.match(p) for p in pairs[1:]):
+        return pairs
+    return [row]
+
+
+# a column that goes on with the statement before it (``&&= …``, ``&\rightarrow …``, ``&+ …``)
+_CONTINUED = re.compile(r"\s*&*\s*(?:[=<>+\-]|\\(?:rightarrow|Rightarrow|to|implies|iff|Longrightarrow|"
+                        r"longrightarrow|Leftrightarrow|leftrightarrow|equiv|approx|simeq|le|ge|leq|geq|neq|"
+                        r"cdot|times)(?![A-Za-z]))")
 
 def _text_only(piece: str) -> bool:
     rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
@@ -178,7 +212,7 @@ def split_top(s: str) -> list[str]:
 def statements(latex: str) -> list[str]:
     """The statements of one display (see the module docstring), each a LaTeX string."""
     body = _AND.sub(r" \\quad ", _strip_envs(latex)).replace("\\;", "\\\x00")
-    rows = [_alignment_free(r).strip() for r in _top_level_split(body, ("\\\\",))]
+    rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
     for row in rows:

@@ -183,6 +183,14 @@ def _substitute(body: str, args: list[str]) -> str:
     return _join(out, body[i:])
 
 
+# a command that takes an argument, or a script, just before a use: in TeX its argument is the
+# macro's whole expansion
+_TAKES_IT = re.compile(r"(?:\\(?:dot|ddot|dddot|hat|widehat|bar|overline|underline|tilde|widetilde|vec|check|breve|"
+                       r"mathbf|mathrm|mathit|mathcal|mathbb|boldsymbol|bm|pmb|vb|vu|norm|abs|sqrt|frac|dfrac|tfrac|"
+                       r"operatorname|text|textbf)|[_^])\s*$")
+_ONE_TOKEN = re.compile(r"\s*(?:\\[A-Za-z]+|\\.|[^\\\s{}])\s*$|\s*\{.*\}\s*$", re.S)
+
+
 def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) -> str:
     """The formula with each use of the file's macros replaced by its body, arguments
     substituted, and macros in the result expanded in turn.
@@ -242,6 +250,9 @@ def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) 
         args = [expand(a, user, active) for a in args]
         body = expand(macro.body, user, active | {name})
         body = _substitute(body, args)
-        out = _join(_join(out, latex[i:m.start()]), body)
+        before = out + latex[i:m.start()]
+        if _TAKES_IT.search(before) and not _ONE_TOKEN.match(body):
+            body = "{" + body + "}"      # \dot\vw: the command's argument is the whole expansion
+        out = _join(before, body)
         i = k
     return _join(out, latex[i:])

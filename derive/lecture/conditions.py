@@ -1,0 +1,79 @@
+"""Relations that do not hold as identities and are no slip either: the orientation a text
+chooses (the fixed first axis along 𝐋) and the conditions it imposes.
+
+A mixin of the notes checker (`derive.lecture.notes_check.Checker`): uses ``self.d`` (the
+derivation), ``self.ctx`` (the text's context), ``self._resolve``, ``self._compare``,
+``self._constants`` and ``self.tex``. Gives `Conditions._oriented` (why a relation holds with
+the fixed first axis along 𝐋, or None) and `Conditions._undecidable` (why a relation is a
+condition of the text rather than a slip, or None).
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.comparing import free
+from derive.symbolic.lagrangian import ACCELS
+
+
+class Conditions:
+    """Mixin of the checker: see the module docstring."""
+
+    def _oriented(self, line, val, targets, seed) -> str | None:
+        """Why the claim holds with the fixed first axis along 𝐋 (`derive.lecture.orientation`), or
+        None. Tried for a relation of the angles without rates (the text stating its orientation,
+        I₁ω₁ = L sin θ sin ψ) and, once one held so, for the relations that follow."""
+        rot = self.d.rot
+        if self.ctx.orientation is not None and not isinstance(val, sp.MatrixBase):
+            val = val.xreplace({lx.p_alpha_sym(): lx.LMAG})       # 𝐋 along the fixed first axis: p = L·ẑ = |𝐋|
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        if isinstance(val, sp.MatrixBase) or rot.ANGLES[0] in every or not every & set(lx.W) | {lx.LMAG}:
+            return None
+        stating = every & set(rot.ANGLES[1:]) and not every & (set(rot.RATES) | set(ACCELS))
+        if self.ctx.orientation is None and not stating:
+            return None
+        along = self.d.along
+        if not along.ok:
+            return None
+        for f in targets:
+            a, b = along.apply(val), along.apply(self._resolve(f))
+            if along.angles_left(a) or along.angles_left(b):
+                continue
+            ok, how = self._compare(a, b, seed + "/along-L")
+            if ok:
+                where = f", line {self.ctx.orientation}" if self.ctx.orientation is not None else ""
+                self.ctx.orientation = self.ctx.orientation if self.ctx.orientation is not None else line
+                return f"{how}, with the fixed first axis along 𝐋 (the orientation the text chooses{where})"
+        return None
+
+    def _undecidable(self, written, val, targets) -> str | None:
+        """Why a relation that does not hold as an identity is no slip the derivation can name:
+        it ties only the text's free variables (ω̃ᵢ, the moments, its own undefined symbols) and so
+        is a condition the text imposes; or it ties the angles to ω̃ᵢ without their rates, which
+        only the rates connect. None when the derivation decides it."""
+        rot = self.d.rot
+        rates = set(rot.RATES) | set(ACCELS)
+        frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
+        variables = rates | set(rot.ANGLES) | set(lx.W)
+        if written and isinstance(written[0], sp.Symbol) and written[0] in variables and \
+                all(not free(self._resolve(m)) & variables for m in written[1:]):
+            return (f"states the value of {self.tex(written[0])} in this motion: a result the derivation does "
+                    "not give without solving the motion")
+        derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
+                      for m in written for x in free(m)) or \
+            any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
+        if not derived:
+            return "an equation between the text's variables: a condition it imposes, not an identity"
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs
+                       and x not in self._constants())
+        if loose:
+            return f"involves {', '.join(loose)}, which the text has not defined"
+        turns = isinstance(val, sp.MatrixBase) and val.shape == (3, 3)
+        if not every & rates and every & set(rot.ANGLES) and not turns:
+            # (a 3×3 matrix of the angles equated to another is an identity of rotations, decided)
+            return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
+                    "of them there): a condition, such as a turning point or the orientation the text chose")
+        return None
