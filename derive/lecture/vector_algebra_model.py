@@ -49,13 +49,13 @@ RK = [sp.Matrix(sp.symbols(f"x_{k} y_{k} z_{k}", real=True)) for k in range(1, P
 E = sp.eye(3)
 UNIT = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 TORQUES = ("tau", "Gamma")
-TORQUE_LABELS = ("g", "grav", "gravity", "weight", "W", "ext", "e", "net", "tot", "total")
+TORQUE_LABELS = re.compile(r"g|grav(?:ity)?|weight|W|ext|e|net|tot(?:al)?")
 """Subscripts that name where a torque comes from, not a component: 𝛕_g (the weight's), 𝛕_ext."""
 
 
 def labelled_torque(sub: str) -> bool:
     """Whether a torque letter's subscript labels it (``g``, ``\\text{ext}``) rather than indexing it."""
-    return re.sub(r"^(?:text|mathrm|rm)", "", sub) in TORQUE_LABELS
+    return TORQUE_LABELS.fullmatch(re.sub(r"^(?:text|mathrm|rm)", "", sub)) is not None
 _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
