@@ -163,3 +163,14 @@ def test_the_corpus_totals_do_not_fall(notes_reading):
     assert total["checked"] >= FLOOR["checked"]
     assert total["slips_flagged"] >= FLOOR["slips_flagged"]
     assert total["holds_flagged"] <= FLOOR["holds_flagged"]
+
+
+_INTERNAL = re.compile(r"\\operatorname\{(?:DT|Transposed|MatProduct|CrossMatrix)\}")
+
+
+@pytest.mark.parametrize("slug", TEXTS)
+def test_a_correction_is_written_without_the_readers_own_function_names(notes_reading, slug):
+    """A correction is pasted back into the text: the reader's stand-ins for a rate, a transpose or
+    a product it keeps unevaluated are written as LaTeX, never as their Python names."""
+    claims = notes_reading(measure.source(slug))
+    assert [c.line for c in claims if c.correction and _INTERNAL.search(c.correction)] == []

@@ -39,6 +39,10 @@ class DT(sp.Function):
     """d/dt of its argument as written (``\\frac{d}{dt}``, ``\\frac{dX}{dt}``): the checker
     differentiates once it knows what the argument stands for."""
 
+    def _latex(self, printer):
+        # a correction written back into the text keeps the rate as the text writes one
+        return r"\frac{\mathrm{d}}{\mathrm{d}t}\left(" + printer._print(self.args[0]) + r"\right)"
+
 
 class Transposed(sp.Function):
     """Xᵀ of a matrix the text has named (``\\lambda^T``): the transpose once X is substituted."""
