@@ -133,8 +133,7 @@ class Motion:
         r = self._resolve(raw).xreplace(axial).xreplace(self.ctx.subs)
         dyn = set(lx.W) | set(lx.WD)
         if any(not p.exp.is_integer and free(p.base) & dyn for p in r.atoms(sp.Pow)):
-            # √ of the ω̃ᵢ (a text's own substitution, u ∝ Π₂, under a root): no equation of motion
-            # of Euler's form, and its expansion is unbounded
+            # √ of the ω̃ᵢ (a text's u ∝ Π₂ under a root): not Euler's form, and its expansion is unbounded
             raise lx.NotRead("roots of the angular velocity's components: not an equation of motion the reader checks")
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
         euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
