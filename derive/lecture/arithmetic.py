@@ -9,7 +9,7 @@ values are not used: a text's later "effective" value of a symbol (``L_{\\text{e
 turn a correct line into a false alarm.
 
 Takes a formula in the reader's dialect (`source.normalize`) and the reader's parser; gives the
-verdicts of the numeric links. Imports nothing of derive but the lecture's LaTeX reader.
+verdicts of the numeric links. Imports nothing of derive but the lecture's LaTeX reader and its statement splitter.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.statements import top_level
 
 _LINK = re.compile(r"(?<![<>!])=|\\approx(?![A-Za-z])|\\simeq(?![A-Za-z])")
 _LITERAL = re.compile(r"\s*-?\d*\.?\d+\s*")
@@ -26,13 +27,7 @@ _LITERAL = re.compile(r"\s*-?\d*\.?\d+\s*")
 def _members(text: str):
     """The top-level members of a chain and the relations between them (None where the chain
     holds anything the split does not follow)."""
-    depth, cuts = 0, []
-    for i, ch in enumerate(text):
-        depth += (ch in "({[") - (ch in ")}]")
-        if depth == 0:
-            m = _LINK.match(text, i)
-            if m:
-                cuts.append((m.start(), m.end(), "=" if m.group(0) == "=" else "≈"))
+    cuts = [(m.start(), m.end(), "=" if m.group(0) == "=" else "≈") for m in top_level(text, _LINK)]
     if not cuts:
         return None
     pieces, rels, at = [], [], 0

@@ -8,7 +8,7 @@ same, whatever the symbols stand for: (L₁ − R₁) = c (L₂ − R₂) for a 
 equation in the same symbols that differs from the first by one term moved across the = with its
 sign kept fails; any other second equation is a consequence the reader does not judge here.
 
-May import: :mod:`derive.lecture.latex`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`, SymPy.
 """
 from __future__ import annotations
 
@@ -17,20 +17,9 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.statements import top_level
 
 _ARROW = re.compile(r"\\(?:rightarrow|longrightarrow|Longrightarrow|to)(?![A-Za-z])")
-
-
-def _top_level_arrow(text: str) -> int | None:
-    depth = 0
-    for k, ch in enumerate(text):
-        if ch in "{([":
-            depth += 1
-        elif ch in "})]":
-            depth -= 1
-        elif depth == 0 and ch == "\\" and _ARROW.match(text, k):
-            return k
-    return None
 
 
 def _equation(part: str):
@@ -44,11 +33,10 @@ def _equation(part: str):
 
 def check(text: str) -> tuple[str, str] | None:
     """("holds" | "fails", why) for ``A = B \\rightarrow C = D``, else None."""
-    at = _top_level_arrow(text)
-    if at is None:
+    arrows = top_level(text, _ARROW)
+    if not arrows:
         return None
-    m = _ARROW.match(text, at)
-    first, second = text[:at], text[m.end():]
+    first, second = text[:arrows[0].start()], text[arrows[0].end():]
     try:
         d1, d2 = _equation(first), _equation(second)
     except (lx.NotRead, TypeError, ValueError, AttributeError):

@@ -194,6 +194,18 @@ def _where_first(piece: str) -> list[str]:
         return [piece]
     return [f"{m.group('name')} = {m.group('value')}", m.group("claim")]
 
+def top_level(s: str, pattern: re.Pattern) -> list[re.Match]:
+    """The matches of ``pattern`` that start outside every bracket and brace of ``s``, in order."""
+    depth, found = 0, []
+    for i, ch in enumerate(s):
+        depth += (ch in "({[") - (ch in ")}]")
+        if depth == 0:
+            m = pattern.match(s, i)
+            if m:
+                found.append(m)
+    return found
+
+
 def split_top(s: str) -> list[str]:
     """``s`` cut at its commas outside brackets and braces (an escaped ``\\,``, a thin space, is
     no cut)."""
