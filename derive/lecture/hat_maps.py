@@ -28,7 +28,6 @@ _HAT = (r"(?:\\(?:wide)?hat\{" + _SYMBOL + r"\}|\\(?:wide)?hat" + _SYMBOL + r"(?
         r"|\\crossmatrix\(" + _SYMBOL + r"\)|" + _SYMBOL + r"\^\{?\\times\}?)")
 _TRANSPOSE = r"\^\{?(?:T|\\top|\\intercal|-1)\}?"
 _DOT = r"\\dot\{?" + _MATRIX + r"\}?"
-_MATH = re.compile(r"\$\$(.+?)\$\$|\\\[(.+?)\\\]|\\begin\{((?:equation|align|alignat|eqnarray|gather|multline|flalign|displaymath)\*?)\}(.*?)\\end\{\3\}|\$([^$]+)\$", re.S)
 _SPACING = re.compile(r"\s+|\\[,;:!](?![A-Za-z])|\\q?quad(?![A-Za-z])|\\left(?=\()|\\right(?=\))")
 
 
@@ -46,8 +45,8 @@ def body_velocities(body: str) -> list[tuple[int, str]]:
     """(line, LaTeX) of the symbols the text's hat maps make body angular velocities (see the
     module docstring), in the order of the text."""
     out = []
-    for m in _MATH.finditer(body):
-        raw = next(g for g in (m.group(1), m.group(2), m.group(4), m.group(5)) if g is not None)
+    for m in source.MATH.finditer(body):
+        raw = next(g for g in (m.group("d"), m.group("b"), m.group("eb"), m.group("i")) if g is not None)
         if "dot" not in raw or not ("hat" in raw or "times" in raw or "×" in raw):
             continue                # no rate of a matrix and no hat: nothing to normalise
         math = _SPACING.sub("", source.normalize(raw))

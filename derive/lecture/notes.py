@@ -48,10 +48,6 @@ DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": 
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided", "set",
             "setting", "put", "putting", "taking", "substitution", "substituting", "since", "because"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
-_DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
-_MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
-                   r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}.*?\\end\{(?P=env)\*?\})"
-                   r"|(?<![\\$])\$(?P<i>(?:[^$\n]|\n(?![ \t]*\n))+?)(?<!\\)\$", re.S)
 ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?:[zZ]\s*)?[- ]?axis\s+(?:is\s+)?"
                             r"(?:taken|chosen|put|placed|laid|set)?\s*along\s+(?:the\s+)?(?:conserved\s+|constant\s+)?"
                             r"angular momentum", re.I)
@@ -246,7 +242,7 @@ def _absence_stated(body: str, pos: int, latex: str) -> bool:
         return False
     prefix = body[max(0, pos - 160):pos]
     prefix = prefix[prefix.rfind("\n\n") + 1:]
-    return bool(_ABSENT.search(_MATH.sub(" ", prefix)))
+    return bool(_ABSENT.search(source.MATH.sub(" ", prefix)))
 
 
 def _signs(prose: str) -> str | None:
@@ -298,12 +294,12 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     for k, title in heading_lines.items():
         level = len(body.split("\n")[k - 1].lstrip()) - len(body.split("\n")[k - 1].lstrip().lstrip("#"))
         events.append((starts[k - 1], Item("heading", k, text=title, level=level)))
-        for m in _MATH.finditer(title):
+        for m in source.MATH.finditer(title):
             inner = source.normalize(m.group("i") or m.group("d") or "").lstrip("-").strip()
             if _RELATION.search(inner) and "\\neq" not in inner and "\\equiv" not in inner:
                 events.append((starts[k - 1] + 1, Item("assumption", k, latex=inner, lead=title)))
     prev_end = 0
-    for m in _MATH.finditer(body):
+    for m in source.MATH.finditer(body):
         line = line_of(m.start())
         if line in heading_lines:
             continue
@@ -352,14 +348,14 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             events.append((starts[st.line - 1], Item("convention", st.line, text=st.convention, symbols=here[1])))
             current = here
     # what the prose says of the body: "a symmetric top" holds to the next heading
-    prose = _MATH.sub(lambda m: " " * (m.end() - m.start()), body)
+    prose = source.MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
     for m in ALONG_MOMENTUM.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="along momentum", lead=m.group(0))))
     for m in _SMALL.finditer(prose):
         start = max([0] + [e.end() for e in _SENTENCE_END.finditer(prose, 0, m.start())])
-        maths = [x.group("i") for x in _MATH.finditer(body, start, m.start()) if x.group("i")]
+        maths = [x.group("i") for x in source.MATH.finditer(body, start, m.start()) if x.group("i")]
         if maths:
             events.append((m.start(), Item("small", line_of(m.start()), symbols=tuple(
                 source.normalize(x, user_macros) for x in maths), lead=m.group(0))))

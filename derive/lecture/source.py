@@ -112,6 +112,13 @@ def _blank(m: re.Match) -> str:
 
 
 _COMMENT = re.compile(r"<!--.*?-->", re.S)
+_DISPLAY_ENVS = r"equation|align|alignat|eqnarray|gather|multline|flalign|displaymath|math|numcases|subnumcases"
+MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
+                   r"|(?P<e>\\begin\{(?P<env>" + _DISPLAY_ENVS + r")\*?\}(?P<eb>.*?)\\end\{(?P=env)\*?\})"
+                   r"|(?<![\\$])\$(?P<i>(?:[^$\n]|\n(?![ \t]*\n))+?)(?<!\\)\$", re.S)
+"""Math in a rendered text: a display ``$$…$$`` (group d), ``\\[…\\]`` (b), a display environment (e,
+its name env and its body eb) or inline ``$…$`` (i), the one pattern every reader of the text uses."""
+
 _MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*math[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
 _FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")

@@ -23,12 +23,14 @@ form of every sequence: it states none, and the reader takes it for no claim (`g
 Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
 it declares a convention, wins over everything read here (`derive.lecture.notes.parse_notes`).
 
-May import: the standard library only (`re`, `dataclasses`).
+May import: the standard library (`re`, `dataclasses`) and :mod:`derive.lecture.source` (where math stands in a text).
 """
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+
+from derive.lecture import source
 
 _AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z"}
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
@@ -43,7 +45,6 @@ _ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s
                     r"inertial|intermediate)\s+)?(first|second|third|1st|2nd|3rd|[xyzXYZ][- ]?)(?:\s*[- ]?axis)?",
                     re.I)
 _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
-_MATH = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{((?:equation|align|alignat|eqnarray|gather|multline|flalign|displaymath)\*?)\}.*?\\end\{\1\}|\$[^$]+\$", re.S)
 
 
 _GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
@@ -118,9 +119,9 @@ def stated(body: str) -> list[Stated]:
         section = body[a:b]
         if not section.strip():
             continue
-        maths = [m.group(0) for m in _MATH.finditer(section)]
+        maths = [m.group(0) for m in source.MATH.finditer(section)]
         product = next((p for p in map(_from_product, maths) if p), None)
-        math_free = _MATH.sub(lambda m: " " * len(m.group(0)), section)
+        math_free = source.MATH.sub(lambda m: " " * len(m.group(0)), section)
         prose = _from_prose(section, math_free)
         if product and (prose is None or prose[0] == product[0]):
             seq, names = product
