@@ -366,12 +366,16 @@ class Algebra:
 
 
 def system_of(toks, state: State) -> str:
-    """body (a sum or an integral), single (a plain m), else the previous statement's system."""
+    """body (a sum or an integral), single (a plain m, or a particle's momentum 𝐩 with no index),
+    else the previous statement's system."""
     if any(t.kind == "cmd" and t.value == "sum" for t in toks) or \
             any(t.kind == "atom" and t.value.base == INTEGRAL for t in toks):
         return "body"
     if any(t.kind == "atom" and t.value.base == "m" and t.value.sub in ("", "i") and not t.value.bold for t in toks):
         return "single"
+    if any(t.kind == "atom" and t.value.base == "p" and (t.value.bold or t.value.text.startswith("\\vec"))
+           and not t.value.sub for t in toks):
+        return "single"         # 𝐋 = 𝐫 × 𝐩 with no sum: one particle's momentum, so one particle's 𝐋
     if any(t.kind == "atom" and t.value.sub in ("system", "textsystem") for t in toks):
         return "body"
     return state.system
