@@ -51,14 +51,9 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
-    ("crowell-lm-angular-momentum-three-dimensions", "checked"):
-        "first read: the book's macros (\\der as \\operatorname{d\\!}, \\zu units), cross products by components "
-        "and sums of cross products are not read",
-    ("crowell-lm-angular-momentum-three-dimensions", "false"):
-        "first read: L = r x p beside v = omega x r is taken for the rigid body's angular momentum of one point",
 }
 
-FLOOR = {"checked": 332, "slips_flagged": 37, "holds_flagged": 0}
+FLOOR = {"checked": 345, "slips_flagged": 37, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -63,3 +63,32 @@ def test_the_free_bodys_integrals_in_the_texts_components_hold():
 def test_a_quantity_the_free_body_does_not_conserve_is_never_judged():
     body = "$$L_x^2 + 2 L_y^2 + L_z^2 = \\text{constant}$$\n"
     assert at(body, 3, FREE) == {"unchecked"}
+
+
+def test_the_torque_on_a_system_is_the_sum_of_the_moments_of_the_forces_on_its_particles():
+    assert at("$$\\boldsymbol{\\tau} = \\sum_i \\mathbf{r}_i\\times\\mathbf{F}_i$$\n", 3) == {"holds"}
+    assert at("$$\\boldsymbol{\\tau} = \\sum_i \\mathbf{F}_i\\times\\mathbf{r}_i$$\n", 3) & {"typo", "fails"}
+
+
+KINETIC = ("$$\\begin{aligned} K &= \\sum_i \\frac{1}{2} m_i v_i^2 \\\\ "
+           "&= \\frac{1}{2} \\sum_i m_i (\\boldsymbol{\\omega} \\times \\mathbf{r}_i) \\cdot (\\boldsymbol{\\omega} \\times "
+           "\\mathbf{r}_i) \\end{aligned}$$\n\n")
+
+
+def test_a_letter_the_text_sets_to_a_sum_stands_for_it_in_the_rows_and_statements_that_follow():
+    body = KINETIC + ("$$\\begin{aligned} K &= \\frac{1}{2} \\sum_i m_i \\left[ \\mathbf{r}_i \\times (\\boldsymbol{\\omega} "
+                      "\\times \\mathbf{r}_i) \\right] \\cdot \\boldsymbol{\\omega} \\\\ &= \\frac{1}{2} \\mathbf{L} \\cdot "
+                      "\\boldsymbol{\\omega} \\end{aligned}$$\n")
+    assert "holds" in at(body, 3) and at(body, 5) == {"holds"}
+    slip = KINETIC + "$$K = \\mathbf{L} \\cdot \\boldsymbol{\\omega}$$\n"
+    assert at(slip, 5) & {"typo", "fails"}
+
+
+def test_a_letter_set_again_to_a_number_is_not_compared_with_its_earlier_expression():
+    assert not at(KINETIC + "$$K = 2$$\n", 5) & {"typo", "fails"}
+
+
+def test_one_component_set_to_a_constant_stays_a_setting_and_a_named_integral_is_compared_with_its_name():
+    assert at("$$\\omega_3 = \\Omega = \\text{const}$$\n", 3, FREE) == {"unchecked"}
+    slip = "$$\\sum_{i=1}^3 I_i \\omega_i^2 = T = \\text{const}$$\n"
+    assert at(slip, 3, FREE) & {"typo", "fails"}

@@ -60,7 +60,9 @@ class AlgebraStatements:
         try:
             reading = va.read(text, state)
         except lx.NotRead:
-            return False
+            reading = self._named_reading(text)
+            if reading is None:
+                return False
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
@@ -89,6 +91,26 @@ class AlgebraStatements:
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
                       why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
+
+    def _named_reading(self, text):
+        """``K = X …`` with K a plain letter this reader does not know: the text's own name. Set to
+        one expression it reads (``K = \\sum_i \\frac12 m_i v_i^2``), K stands for that expression
+        in the statements that follow (kept, None returned); a chain after it, or K named before,
+        is read with K's expression in its place. None when that does not read either."""
+        m = _NAME_FIRST.match(text)
+        if m is None:
+            return None
+        state, name, rest = self._alg, m.group(1), text[m.end():]
+        try:
+            if name in state.named:         # K named before: its expression in its place
+                return va.read(state.named[name] + " = " + rest, state) if va.markers(rest, bold=True) else None
+            reading = va.read(rest, copy.deepcopy(state))
+        except lx.NotRead:
+            return None
+        first = reading.members[0]
+        state.named[name] = reading.source[first[0].start:first[0].end].strip()
+        self._alg_read = True
+        return va.read(rest, state) if len(first) > 1 else None
 
     def _algebra_fix(self, reading, ref, k):
         """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
@@ -144,6 +166,8 @@ class AlgebraStatements:
         return "holds", f"{WHY}: exact (expand)"
 
 
+_NAME_FIRST = re.compile(r"\s*([A-Za-z])\s*=(?!=)")
+"""A statement opening with a lone plain letter set equal to what follows (``K = …``)."""
 _MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
 _PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
 """The body's three mass points each on its own axis: every product of inertia vanishes, the

@@ -67,8 +67,9 @@ class FreeIntegrals:
     ``self._resolve``, ``self._compare`` and ``self._add``."""
 
     def _conserved_free(self, line, piece, value) -> bool:
-        """``F = const`` with F in the body's ω̃ᵢ and principal moments: holds when F is an integral
-        of the free body's Euler equations. True when a claim was added."""
+        """``F = const`` with F in the body's ω̃ᵢ and principal moments (not one ω̃ᵢ alone, which is a
+        setting): holds when F is an integral of the free body's Euler equations. True when a claim
+        was added."""
         F = self._resolve(value)
         if isinstance(F, sp.MatrixBase) or not hasattr(F, "free_symbols"):
             return False
@@ -77,7 +78,7 @@ class FreeIntegrals:
             return False
         moments = [sp.sympify(m).xreplace(self.ctx.subs) for m in (I1, I2, I3)]
         allowed = set(lx.W) | {I1, I2, I3}
-        if not F.free_symbols & set(lx.W) or not F.free_symbols <= allowed:
+        if F in set(lx.W) or not F.free_symbols & set(lx.W) or not F.free_symbols <= allowed:
             return False
         ok, how = self._compare(free_rate(F, moments), sp.S.Zero, f"{piece}/free integral")
         if not ok:

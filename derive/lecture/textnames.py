@@ -102,7 +102,7 @@ class TextNames:
         named = len(rest) == 2 and (self._new_name(members[rest[1]]) or isinstance(members[rest[1]], lx.Quantity))
         if len(rest) == 1 or named:
             if self._conserved(line, piece, members[rest[0]]) or \
-                    self._conserved_free(line, piece, members[rest[0]]):     # an integral of the motion
+                    len(rest) == 1 and self._conserved_free(line, piece, members[rest[0]]):   # an integral
                 if named and self._new_name(members[rest[1]]):
                     self.ctx.defs[members[rest[1]]] = members[rest[0]]
                 return None

@@ -132,6 +132,7 @@ class State:
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
     entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
+    named: dict = field(default_factory=dict)       # a letter the text set to an expression here (K = Σ ½ m v²)
 
 
 _MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
@@ -305,6 +306,9 @@ class Algebra:
             return W.cross(r)[AXES[sub]]
         if base == "p" and bold and self._own(sub, env):
             return mass * W.cross(r)
+        if base == "F" and bold and sub and sub == env.get("index"):
+            p.rated = True                   # 𝐅ᵢ summed over the points: the rate of the point's momentum
+            return mass * rate(W.cross(r))
         if base == "delta" and len(sub) == 2:
             return sp.Integer(int(p.axis(sub[0], env, tok) == p.axis(sub[1], env, tok)))
         return self._system_atom(p, a, env, tok, mass, r, bold)
