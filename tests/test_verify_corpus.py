@@ -51,6 +51,9 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
+    ("moore-learn-multibody-dynamics-mass-distribution", "checked"):
+        "first read: Kane's notation (a bar for vectors, a hat for unit vectors, a breve for dyadics, positions "
+        "labelled r^{P_i/O}) is not read",
 }
 
 FLOOR = {"checked": 345, "slips_flagged": 37, "holds_flagged": 0}
