@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, SymPy.
 """
 from __future__ import annotations
@@ -17,6 +17,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
@@ -83,6 +84,9 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
+                verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
+                                             "the text sets it to, not what the reader took it for")
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
                 state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
             fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
@@ -97,18 +101,23 @@ class AlgebraStatements:
         one expression it reads (``K = \\sum_i \\frac12 m_i v_i^2``), K stands for that expression
         in the statements that follow (kept, None returned); a chain after it, or K named before,
         is read with K's expression in its place. None when that does not read either."""
+        self._alg_kane = getattr(self, "_alg_kane", False) or kane_notation.kane(text)
+        text = kane_notation.rewrite(text, self._alg_kane)      # 𝐈̄_a after the text wrote 𝐫̄^{P_i/O}
         m = _NAME_FIRST.match(text)
         if m is None:
             return None
-        state, name, rest = self._alg, m.group(1), text[m.end():]
+        state, name, rest = self._alg, m.group(1).replace(" ", ""), _expanded(text[m.end():], self._alg.named)
         try:
             if name in state.named:         # K named before: its expression in its place
+                if state.named_by[name] == text:
+                    return None             # the statement that named it, met again: not a claim about it
                 return va.read(state.named[name] + " = " + rest, state) if va.markers(rest, bold=True) else None
             reading = va.read(rest, copy.deepcopy(state))
         except lx.NotRead:
             return None
         first = reading.members[0]
         state.named[name] = reading.source[first[0].start:first[0].end].strip()
+        state.named_by[name] = text
         self._alg_read = True
         return va.read(rest, state) if len(first) > 1 else None
 
@@ -166,8 +175,18 @@ class AlgebraStatements:
         return "holds", f"{WHY}: exact (expand)"
 
 
-_NAME_FIRST = re.compile(r"\s*([A-Za-z])\s*=(?!=)")
-"""A statement opening with a lone plain letter set equal to what follows (``K = …``)."""
+_NAME_FIRST = re.compile(r"\s*((?:\\mathbf\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z])?)"
+                         r"\s*(?:=(?!=)|\\equiv)")
+"""A statement opening with a lone symbol set equal to what follows (``K = …``, ``\\mathbf{I}_{a} \\equiv …``,
+``I_{ab} \\equiv …``)."""
+
+
+def _expanded(text: str, named: dict) -> str:
+    """The text with the names a text set before put back as their expressions, longest first."""
+    for name in sorted(named, key=len, reverse=True):
+        pattern = re.escape(name).replace(r"\{", r"\s*\{\s*").replace(r"\}", r"\s*\}").replace("_", r"\s*_\s*")
+        text = re.sub(pattern + r"(?![A-Za-z_{])", lambda _: r"\left(" + named[name] + r"\right)", text)
+    return text
 _MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
 _PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
 """The body's three mass points each on its own axis: every product of inertia vanishes, the

@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture.vector_parser import AXES, INTEGRAL, _as_value
@@ -90,6 +91,11 @@ _UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z
 
 
 def prepare(text: str) -> str:
+    text = kane_notation.rewrite(text)
+    return _prepare(text)
+
+
+def _prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, ρ … dV as dm, the
@@ -116,7 +122,7 @@ def lecture_notation(text: str) -> bool:
 def markers(text: str, bold: bool = False) -> bool:
     """Whether a statement is written in this module's notation: ∫ dm, ⊗, a determinant, a matrix,
     a cross product, a sum over particles, unit vectors x̂ ı̂ (and, with ``bold``, any bold vector)."""
-    if bold and re.search(r"\\(?:boldsymbol|mathbf|pmb|bm|vec)\b", text):
+    if bold and re.search(r"\\(?:boldsymbol|mathbf|pmb|bm|vec)\b", text) or kane_notation.kane(text):
         return True
     return bool(re.search(r"\\int|\\otimes|vmatrix|bmatrix|\\times|\\imath|\\jmath|\\sum", text))
 
@@ -133,6 +139,7 @@ class State:
     entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
     named: dict = field(default_factory=dict)       # a letter the text set to an expression here (K = Σ ½ m v²)
+    named_by: dict = field(default_factory=dict)    # the statement that set it
 
 
 _MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
@@ -363,6 +370,10 @@ class Algebra:
             if bold and not sub:
                 p.generics.add(base)
                 return comps
+            if bold and len(sub) == 1 and sub.isalpha() and sub not in AXES and sub != env.get("index") \
+                    and base not in "rvp":      # 𝐧_a, a vector of the text's named by a letter (Kane's n̂_a)
+                p.generics.add(base + sub)
+                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
             if not bold and sub in ("x", "y", "z"):
                 p.generics.add(base)
                 return comps[AXES[sub]]
