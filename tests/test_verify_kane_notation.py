@@ -43,3 +43,23 @@ def test_an_inertia_scalar_defined_from_the_inertia_vector_is_read_through_it():
 
 def test_a_definition_of_a_known_name_that_disagrees_with_the_readers_meaning_is_left_unchecked():
     assert at("$$m := \\sum_{i=1}^\\nu m_i$$\n", 3) == {"unchecked"}
+
+
+SCALAR = INERTIA_VECTOR + "$$I_{ab} := \\bar{I}_{a} \\cdot \\hat{n}_b$$\n\n"
+
+
+def test_a_name_defined_over_letter_indices_is_read_at_other_letters():
+    assert at(SCALAR + "$$I_{ab} = I_{ba}$$\n", 7) == {"holds"}
+    moment = ("$$I_{aa} = \\sum_{i=1}^\\nu m_i \\left( \\bar{r}^{P_i/O} \\times \\hat{n}_a \\right) \\cdot "
+              "\\left( \\bar{r}^{P_i/O} \\times \\hat{n}_a \\right)$$\n")
+    assert at(SCALAR + moment, 7) == {"holds"}
+    assert at(SCALAR + moment.replace("I_{aa} = ", "I_{aa} = -"), 7) & {"typo", "fails"}
+
+
+def test_the_angular_momentum_seen_in_a_frame_is_the_inertia_dyadic_on_the_bodys_angular_velocity():
+    holds = "$${}^A \\bar{H}^{B/B_o} = \\breve{I}^{B/B_o} \\cdot {}^A\\bar{\\omega}^B$$\n"
+    assert at(holds, 3) == {"holds"}
+    halved = "$${}^A \\bar{H}^{B/B_o} = \\frac{1}{2} \\breve{I}^{B/B_o} \\cdot {}^A\\bar{\\omega}^B$$\n"
+    assert at(halved, 3) & {"typo", "fails"}
+    two_frames = "$${}^A \\bar{H}^{B/B_o} = \\breve{I}^{B/B_o} \\cdot {}^N\\bar{\\omega}^B$$\n"
+    assert not at(two_frames, 3) & {"typo", "fails", "holds"}

@@ -108,6 +108,9 @@ class AlgebraStatements:
             return None
         state, name, rest = self._alg, m.group(1).replace(" ", ""), _expanded(text[m.end():], self._alg.named)
         try:
+            instance = _instance(name, state.named)
+            if instance is not None:        # I_{ba} after I_{ab} ≔ …: the definition at these indices
+                return va.read(instance + " = " + rest, state) if va.markers(rest, bold=True) else None
             if name in state.named:         # K named before: its expression in its place
                 if state.named_by[name] == text:
                     return None             # the statement that named it, met again: not a claim about it
@@ -182,11 +185,35 @@ _NAME_FIRST = re.compile(r"\s*((?:\\mathbf\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_
 
 
 def _expanded(text: str, named: dict) -> str:
-    """The text with the names a text set before put back as their expressions, longest first."""
+    """The text with the names a text set before put back as their expressions, longest first; a
+    name with letter indices (``I_{ab}``) also at other letters (``I_{ba}``, ``I_{aa}``: `_instance`)."""
     for name in sorted(named, key=len, reverse=True):
         pattern = re.escape(name).replace(r"\{", r"\s*\{\s*").replace(r"\}", r"\s*\}").replace("_", r"\s*_\s*")
         text = re.sub(pattern + r"(?![A-Za-z_{])", lambda _: r"\left(" + named[name] + r"\right)", text)
+    for m in reversed(list(_INDEXED.finditer(text))):
+        value = _instance(m.group(0), named)
+        if value is not None:
+            text = text[:m.start()] + r"\left(" + value + r"\right)" + text[m.end():]
     return text
+
+
+_INDEXED = re.compile(r"(?<![\\A-Za-z])([A-Za-z])\s*_\s*\{\s*([a-h])\s*([a-h])\s*\}")
+"""A scalar with two letter indices, ``I_{ab}``: an inertia scalar over generic unit vectors."""
+
+
+def _instance(symbol: str, named: dict) -> str | None:
+    """The expression of ``I_{ba}`` or ``I_{aa}`` when the text defined ``I_{ab}`` over its indices'
+    letters (its unit vectors 𝐧_a, 𝐧_b): the definition with the letters renamed, or None."""
+    m = _INDEXED.fullmatch(symbol.strip())
+    if m is None or symbol.replace(" ", "") in named:
+        return None
+    for name, value in named.items():
+        d = _INDEXED.fullmatch(name)
+        if d is None or d.group(1) != m.group(1) or d.group(2) == d.group(3):
+            continue
+        rename = {d.group(2): m.group(2), d.group(3): m.group(3)}
+        return re.sub(r"_\{\s*([a-h])\s*\}", lambda x: "_{" + rename.get(x.group(1), x.group(1)) + "}", value)
+    return None
 _MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
 _PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
 """The body's three mass points each on its own axis: every product of inertia vanishes, the
@@ -274,7 +301,11 @@ def _torque_law(text, state) -> bool:
 
 
 def _mentions(text, state) -> bool:
-    """A torque letter of the text, or an entry of the inertia tensor (I_xy), in the statement."""
+    """A torque letter of the text, an entry of the inertia tensor (I_xy), or a name the text set
+    here (or one at other indices, `_instance`), in the statement."""
+    m = _NAME_FIRST.match(text)
+    if m is not None and (m.group(1).replace(" ", "") in state.named or _instance(m.group(1), state.named)):
+        return True
     for t in _tokens(va.prepare(text)):
         if t.kind != "atom":
             continue

@@ -11,6 +11,8 @@ dyadic. `rewrite` brings such a statement to the bold notation the reader knows:
 * ``\\bar{X}``, ``\\bar{X}_a`` (no label) → ``\\mathbf{X}``, ``\\mathbf{X}_{a}``;
 * ``\\hat{n}_a`` (a unit vector named by a letter other than x, y, z, i, j, k) → ``\\mathbf{n}_{a}``,
   a vector of the text's;
+* ``{}^A\\bar{\\omega}^B`` (B's angular velocity in A) → ``\\boldsymbol{\\omega}``; a frame's left
+  superscript ``{}^A`` on a vector is dropped (one frame per statement);
 * ``\\breve{U}`` → the unit tensor; ``\\breve{I}^{S/O}`` about the point the positions are taken from
   → the inertia tensor ``\\mathbf{I}``.
 
@@ -22,12 +24,15 @@ from __future__ import annotations
 
 import re
 
-_LABEL = r"\^\s*\{\s*([A-Za-z])\s*(?:_\s*\{?\s*([A-Za-z])\s*\}?|\(\s*\\tau\s*\))?\s*/\s*([A-Za-z])\s*\}"
+_LABEL = (r"\^\s*\{\s*([A-Za-z])\s*(?:_\s*\{?\s*([A-Za-z])\s*\}?|\(\s*\\tau\s*\))?\s*/\s*"
+          r"([A-Za-z](?:\s*_\s*\{?\s*[a-z0-9]\s*\}?)?)\s*\}")
 _POSITION = re.compile(r"\\bar\s*\{\s*([A-Za-z])\s*\}\s*" + _LABEL)
 _DYADIC = re.compile(r"\\breve\s*\{\s*([A-Za-z])\s*\}\s*" + _LABEL)
 _BAR = re.compile(r"\\bar\s*\{\s*([A-Za-z])\s*\}(?!\s*\^)(?:\s*_\s*\{?\s*([A-Za-z])\s*\}?)?")
 _UNIT = re.compile(r"\\hat\s*\{\s*([a-hl-wA-Z])\s*\}\s*_\s*\{?\s*([A-Za-z])\s*\}?")
 _UNIT_DYADIC = re.compile(r"\\breve\s*\{\s*U\s*\}")
+_FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?\s*(?=\\bar\s*\{)")
+_ANGULAR_VELOCITY = re.compile(r"\\bar\s*\{\s*\\omega\s*\}\s*\^\s*\{?\s*[A-Z]\s*\}?")
 _KANE = re.compile(r"\\bar\s*\{\s*[A-Za-z]\s*\}\s*\^\s*\{[^{}]*/|\\breve\s*\{")
 
 
@@ -43,7 +48,8 @@ def rewrite(text: str, known: bool = False) -> str:
         return text
     origins = {m.group(4) for m in _POSITION.finditer(text)}
     labels = {m.group(0).split("^", 1)[1].replace(" ", "") for m in _DYADIC.finditer(text)}
-    if len(origins) > 1 or len(labels) > 1:
+    frames = set(re.findall(r"\^\s*\{?\s*([A-Z])\s*\}?\s*\\bar", text))
+    if len(origins) > 1 or len(labels) > 1 or len(frames) > 1:
         return text          # positions or dyadics about two points: the reader takes all from one
 
     def position(m):
@@ -54,6 +60,8 @@ def rewrite(text: str, known: bool = False) -> str:
         letter, _, _, origin = m.groups()
         return r"\mathbf{" + letter + "}" if not origins or origin in origins else m.group(0)
 
+    text = _FRAME.sub("", text)             # {}^A: the frame a vector is seen in (one frame per statement)
+    text = _ANGULAR_VELOCITY.sub(r"\\boldsymbol{\\omega}", text)    # {}^A\bar{\omega}^B: the body's, in A
     text = _POSITION.sub(position, text)
     text = _UNIT_DYADIC.sub(r"\\mathrm{I}", text)
     text = _DYADIC.sub(dyadic, text)
