@@ -82,7 +82,7 @@ def test_a_damaged_library_is_rebuilt_once_with_a_note(cache, damage):
 def test_damaged_in_process_before_the_first_load(cache, capsys):
     """The same inside one process: a corrupt file where the library should be is replaced."""
     sources = tiny(uuid.uuid4().hex)
-    key = cbuild._key(sources, ["tiny.c"], cbuild.compiler(), list(cbuild.DEFAULT_FLAGS))
+    key = cbuild._key(sources, ["tiny.c"], cbuild.compiler(), [*cbuild.DEFAULT_FLAGS, *cbuild.extra_flags()])
     cache.mkdir()
     so = cache / f"tiny-{key[:24]}.so"
     so.write_bytes(b"\x7fELF truncated")
