@@ -174,3 +174,14 @@ def test_a_correction_is_written_without_the_readers_own_function_names(notes_re
     a product it keeps unevaluated are written as LaTeX, never as their Python names."""
     claims = notes_reading(measure.source(slug))
     assert [c.line for c in claims if c.correction and _INTERNAL.search(c.correction)] == []
+
+
+@pytest.mark.parametrize("slug", TEXTS)
+def test_a_correction_writes_the_angular_velocity_as_the_text_does(notes_reading, slug):
+    """The derivation's ω̃ᵢ (``\\tilde{\\omega}_i``) appears in a correction only in a text that
+    writes a tilde on ω itself: otherwise the text's own spelling (ωᵢ, Ωᵢ, ω_x) stands there."""
+    source = measure.source(slug).read_text(encoding="utf-8")
+    if re.search(r"\\tilde\s*\{?\s*\\omega", source):
+        pytest.skip("the text writes ω̃ itself")
+    claims = notes_reading(measure.source(slug))
+    assert [c.line for c in claims if c.correction and re.search(r"\\tilde\{\\omega\}", c.correction)] == []

@@ -65,13 +65,14 @@ from derive.lecture.own_rates import OwnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.section_convention import SectionConvention
+from derive.lecture.spellings import spellings
 from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, statements
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
-from derive.symbolic.lagrangian import ACCELS
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -134,6 +135,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
         self.pending_subs = None    # the settings of the display that wrote them
         self.flushed: list = []     # the verdicts of the group, until placed
         self._last_fix = None       # the corrected value the last single-edit search found
+        self.spelled = {}           # derivation symbol → how the text last wrote it (spellings)
         self.deferred: list = []    # (claim, line, statement, context) read again with later definitions
 
     # -- names for LaTeX output
@@ -157,7 +159,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
         return names
 
     def tex(self, obj) -> str:
-        return sp.latex(obj, symbol_names=self.names)
+        return sp.latex(obj, symbol_names={**self.names, **self.spelled})
 
     # -- the walk
     def run(self) -> list[Claim]:
@@ -243,6 +245,8 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
                 self._given(item.line, relabelled[piece])
                 continue
             before = len(self.claims)
+            # what is written back uses the text's latest spelling of each symbol it has written
+            self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
