@@ -7,7 +7,11 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
-of :mod:`derive.lecture.vectors`, SymPy.
+of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, SymPy.
+
+A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
+statement that fails with a plain distance r measured from the origin is read again with r measured
+from the axis, and holds if that reading holds (`derive.lecture.fixed_axis`).
 """
 from __future__ import annotations
 
@@ -17,6 +21,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import fixed_axis
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
@@ -57,6 +62,21 @@ class AlgebraStatements:
         if va.lecture_notation(text):
             return False
         state = self._alg
+        axis = fixed_axis.setting(text)
+        if axis is not None:
+            state.axis = axis
+            self._alg_read = True
+            self._add(line, piece, "assumption", "unchecked", fixed_axis.WHY)
+            return True
+        kept_axis = state.axis
+        if state.axis is None:
+            state.axis = fixed_axis.implied(text)       # L_z beside a plain ω: a rotation about z
+        try:
+            return self._algebra_read(line, piece, text, state)
+        finally:
+            state.axis = kept_axis
+
+    def _algebra_read(self, line, piece, text, state) -> bool:
         try:
             reading = va.read(text, state)
         except lx.NotRead:
@@ -81,6 +101,8 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
+                verdict, why = self._from_the_axis(text, ref, k, verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
                 state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
             fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
@@ -89,6 +111,19 @@ class AlgebraStatements:
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
                       why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
+
+    def _from_the_axis(self, text, ref, k, verdict, why):
+        """The other reading of a plain distance r about a fixed axis: measured from the axis."""
+        state = copy.deepcopy(self._alg)
+        state.radial = "axis"
+        try:
+            again = va.read(text, state)
+        except lx.NotRead:
+            return verdict, why
+        v2, why2 = self._algebra_pair(again, ref, k, record=False)
+        if v2 == "holds":
+            return "holds", why2 + "; with r the distance from the fixed axis (a plain r is that distance as well)"
+        return verdict, why
 
     def _algebra_fix(self, reading, ref, k):
         """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
@@ -114,6 +149,8 @@ class AlgebraStatements:
             d = va.difference(members[k].value, members[ref].value)
             if d is None:
                 return "unchecked", "cannot compare its sides: their shapes differ"
+            if self._alg.axis is not None:
+                d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
             if _zero(d):
                 continue
             if ref == 0 and _entry_name(reading.source, members[0]) and not isinstance(d, sp.MatrixBase) \

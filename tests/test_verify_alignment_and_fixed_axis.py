@@ -1,0 +1,44 @@
+"""The notes reader on an ``array`` used to align a chain (the display's body, as MathJax texts
+write it), and on a body turning about a fixed axis (𝛚 = ω k̂, L_z = ω Σ mᵢ rᵢ²)."""
+import kept_readings as kept
+from derive.lecture import alignment_arrays
+from derive.lecture.statements import statements
+
+
+def verdicts(text):
+    return [(c.line, c.verdict) for c in kept.check_text(text)]
+
+
+_CHAIN = (r"\begin{equation}" "\n" r"\begin{array}{ll}" "\n"
+          r"T & = \frac{1}{2} I_1 \omega_1^2 + \frac{1}{2} I_2 \omega_2^2 + \frac{1}{2} I_3 \omega_3^2 \\" "\n"
+          r"\\" "\n"
+          r"& = \frac{1}{2} (I_1 \omega_1^2 + I_2 \omega_2^2 + I_3 \omega_3^2)" "\n"
+          r"\end{array}" "\n" r"\end{equation}")
+
+
+def test_an_array_that_is_the_body_of_a_display_and_states_a_relation_is_cut_into_rows():
+    rows = statements(_CHAIN)
+    assert [r.split()[0] for r in rows] == ["T", "="]          # the rows, the chain's second going on with "="
+    assert "&" not in "".join(rows) and "array" not in "".join(rows)
+    assert set(verdicts(f"# Energy\n\n{_CHAIN}\n")) == {(3, "holds")}
+
+
+def test_an_array_in_brackets_or_without_a_relation_stays_as_written():
+    matrix = r"A = \left[\begin{array}{cc} 1 & 0 \\ 0 & 1 \end{array}\right]"
+    names = r"\begin{array}{ll} xyz \quad xzy \\ zxz \quad zyz \end{array}"
+    assert alignment_arrays.unwrapped(matrix) == matrix
+    assert alignment_arrays.unwrapped(names) == names
+
+
+_SETUP = "# Fixed axis\n\nThe body turns about the fixed $z$ axis.\n\n$$\\vec \\omega = \\omega \\hat k$$\n"
+
+
+def test_an_angular_velocity_set_along_a_unit_vector_is_the_texts_set_up_not_a_claim():
+    claims = kept.check_text(_SETUP)
+    assert [(c.line, c.verdict) for c in claims] == [(5, "unchecked")]
+    assert "fixed axis" in claims[0].why
+
+
+def test_a_component_beside_a_plain_omega_reads_the_rotation_about_that_axis_and_r_from_it():
+    text = "# Fixed axis\n\n$$L_z = \\omega \\sum_i m_i r_i^2$$\n\n$$L_z = \\omega \\sum_i m_i r_i^3$$\n"
+    assert verdicts(text) == [(3, "holds"), (5, "fails")]
