@@ -42,3 +42,20 @@ def test_an_angular_velocity_set_along_a_unit_vector_is_the_texts_set_up_not_a_c
 def test_a_component_beside_a_plain_omega_reads_the_rotation_about_that_axis_and_r_from_it():
     text = "# Fixed axis\n\n$$L_z = \\omega \\sum_i m_i r_i^2$$\n\n$$L_z = \\omega \\sum_i m_i r_i^3$$\n"
     assert verdicts(text) == [(3, "holds"), (5, "fails")]
+
+
+_TURNING = "# Fixed axis\n\n$$\\vec \\omega = \\omega \\hat k, \\; \\vec \\alpha = \\alpha \\hat k$$\n\n"
+
+
+def test_a_chain_headed_by_the_texts_own_vector_checks_the_members_after_it():
+    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\vec a_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
+    got = verdicts(text)
+    assert (5, "holds") in got and (5, "unchecked") in got      # the head is the text's name, left unchecked
+    assert (7, "fails") in got or (7, "typo") in got             # the normal acceleration points to the axis
+
+
+def test_a_row_that_goes_on_with_equals_continues_its_own_display_not_an_earlier_statement():
+    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\begin{aligned}\\vec Q_i &= \\vec r_i \\times \\vec P_i \\\\ &= \\alpha x_i \\hat k\\end{aligned}$$\n")
+    assert [v for line, v in verdicts(text) if line == 7] == ["unchecked", "unchecked"]

@@ -7,7 +7,8 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
-of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, SymPy.
+of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
+SymPy.
 
 A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
 statement that fails with a plain distance r measured from the origin is read again with r measured
@@ -22,6 +23,7 @@ import re
 import sympy as sp
 
 from derive.lecture import fixed_axis
+from derive.lecture import headless_chains
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
@@ -80,7 +82,7 @@ class AlgebraStatements:
         try:
             reading = va.read(text, state)
         except lx.NotRead:
-            return False
+            return self._headless(line, piece, text, state)
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
@@ -111,6 +113,20 @@ class AlgebraStatements:
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
                       why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
+
+    def _headless(self, line, piece, text, state) -> bool:
+        """A chain headed by the text's own vector (`derive.lecture.headless_chains`): the head
+        unchecked, the members after it read and judged as a chain of their own."""
+        parts = headless_chains.split(text)
+        if parts is None:
+            return False
+        head, rest = parts
+        try:
+            va.read(rest, copy.deepcopy(state))
+        except lx.NotRead:
+            return False
+        self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
+        return self._algebra_read(line, piece, rest, state)
 
     def _from_the_axis(self, text, ref, k, verdict, why):
         """The other reading of a plain distance r about a fixed axis: measured from the axis."""

@@ -66,7 +66,7 @@ from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.section_convention import SectionConvention
 from derive.lecture.stated_convention import general_form
-from derive.lecture.statements import continues, statements
+from derive.lecture.statements import continues, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
@@ -242,6 +242,10 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
                           relabelled[piece])
                 self._given(item.line, relabelled[piece])
                 continue
+            first_eq = top_level(piece, _EQUALS)
+            if not re.match(r"\s*(=|\\approx|\\equiv)", piece) and first_eq:
+                # a row that goes on with "=" continues this statement, read or not — never an older one
+                self.ctx.head = piece[:first_eq[0].start()].strip()
             before = len(self.claims)
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
@@ -544,6 +548,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
             self._add(line, piece, "lagrangian", "fails",
                       f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
                       f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
+
+
+_EQUALS = re.compile(r"(?<![<>!\\])=")
 
 
 def _first_relation(text: str) -> int | None:
