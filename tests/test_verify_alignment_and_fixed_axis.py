@@ -59,3 +59,28 @@ def test_a_row_that_goes_on_with_equals_continues_its_own_display_not_an_earlier
     text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
                        "$$\\begin{aligned}\\vec Q_i &= \\vec r_i \\times \\vec P_i \\\\ &= \\alpha x_i \\hat k\\end{aligned}$$\n")
     assert [v for line, v in verdicts(text) if line == 7] == ["unchecked", "unchecked"]
+
+
+_RX = r"\begin{bmatrix} 1 & 0 & 0 \\ 0 & \cos\alpha & -\sin\alpha \\ 0 & \sin\alpha & \cos\alpha \end{bmatrix}"
+_RZ = r"\begin{bmatrix} \cos\gamma & -\sin\gamma & 0 \\ \sin\gamma & \cos\gamma & 0 \\ 0 & 0 & 1 \end{bmatrix}"
+_PRODUCT = (r"\begin{bmatrix} \cos\gamma & -\sin\gamma\,\cos\alpha & \sin\gamma\,\sin\alpha \\ \sin\gamma & \cos\gamma\,\cos\alpha & "
+            r"-\cos\gamma\,\sin\alpha \\ 0 & \sin\alpha & \cos\alpha \end{bmatrix}")
+
+
+def _chain(product):
+    return (f"# Turns\n\n$$\n\\begin{{aligned}}\n\\mathbf{{Q}} &= \\mathbf{{A}} \\mathbf{{B}} \\\\\n"
+            f"&= {_RZ} {_RX} \\\\\n&= {product}\n\\end{{aligned}}\n$$\n")
+
+
+def test_a_chain_row_the_reader_cannot_compare_with_its_new_name_is_checked_against_the_member_before_it():
+    assert (3, "holds") in verdicts(_chain(_PRODUCT))
+    slipped = _PRODUCT.replace(r"\sin\gamma\,\sin\alpha \\", r"-\sin\gamma\,\sin\alpha \\", 1)
+    assert slipped != _PRODUCT
+    assert any(v in ("typo", "fails") for line, v in verdicts(_chain(slipped)))
+
+
+def test_a_link_between_vectors_that_would_flag_stays_unchecked():
+    text = ("# Sums\n\n$$\n\\begin{aligned}\n\\vec L_z &= \\sum_i \\vec r_i \\times m_i \\vec v_i \\\\\n"
+            "&= \\sum_i m_i \\vec\\omega (\\vec r_i \\cdot \\vec r_i) - \\sum_i m_i \\vec r_i (\\vec r_i \\cdot \\vec\\omega) \\\\\n"
+            "&= \\vec\\omega \\sum_i m_i r_i^2\n\\end{aligned}\n$$\n")
+    assert not any(v in ("typo", "fails") for line, v in verdicts(text))

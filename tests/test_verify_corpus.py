@@ -56,9 +56,6 @@ SHORT = {
         "a notebook on rotation matrices: the products of its elemental matrices are written in short names "
         "(R_Z for R_{Gl,Z}, R_z for R_{lG,z}), in function notation at other angles (R_{lG,z}(-gamma)) and with "
         "the inverse and transpose of named matrices; the elemental matrices and the alignment arrays are read",
-    ("bmc-duarte-rotation-matrices-euler-angles-3d", "found"):
-        "its slip, a sign in the written-out R_lG,xyz, is in the last member of a chain whose product is in "
-        "short names the reader does not tie to the elemental matrices",
     ("principia-celledoni-free-body-elliptic-solution", "checked"):
         "a LaTeX note written in its project's own semtex macros (\\vm, \\gD_j, \\gl, \\gs, \\TimeDerivative, "
         "\\DefineAs, \\pa, \\of, \\JacobiSN), which the file does not define, about the body angular momentum m "
@@ -68,7 +65,7 @@ SHORT = {
         "in displays written in those macros",
 }
 
-FLOOR = {"checked": 344, "slips_flagged": 38, "holds_flagged": 0}
+FLOOR = {"checked": 346, "slips_flagged": 39, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

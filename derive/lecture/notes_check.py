@@ -47,6 +47,7 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.chain_links import ChainLinks
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
@@ -113,7 +114,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -233,6 +234,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
             self._close_display()
             return
         relabelled = _repeated_labels(pieces)
+        previous = None
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
@@ -257,6 +259,8 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
                 self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {why}")
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
+            self._linked(item.line, piece, before, previous, dup, pieces)
+            previous = piece
             self._place_flushed(before)
             self._note_motion(item.line, piece)
         self._confirmed_by_siblings(self.claims[start:])
