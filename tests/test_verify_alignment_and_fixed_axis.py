@@ -84,3 +84,19 @@ def test_a_link_between_vectors_that_would_flag_stays_unchecked():
             "&= \\sum_i m_i \\vec\\omega (\\vec r_i \\cdot \\vec r_i) - \\sum_i m_i \\vec r_i (\\vec r_i \\cdot \\vec\\omega) \\\\\n"
             "&= \\vec\\omega \\sum_i m_i r_i^2\n\\end{aligned}\n$$\n")
     assert not any(v in ("typo", "fails") for line, v in verdicts(text))
+
+
+_TANGENTIAL = "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+_NORMAL = "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
+
+
+def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_compared_with_that_value():
+    got = verdicts(_TURNING + _TANGENTIAL + _NORMAL)
+    assert (7, "fails") in got and (7, "holds") in got        # the label slipped; the chain itself holds
+    assert [v for line, v in verdicts(_TURNING + _TANGENTIAL + _TANGENTIAL.replace("t =", "t = 1 \\cdot", 1))
+            if line == 7 and v in ("typo", "fails")] == []
+
+
+def test_a_name_heading_a_chain_in_another_section_is_not_compared_with_an_earlier_sections_value():
+    text = _TURNING + _TANGENTIAL + "## Another example\n\n" + _NORMAL
+    assert not any(v in ("typo", "fails") for line, v in verdicts(text))

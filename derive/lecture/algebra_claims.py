@@ -122,11 +122,40 @@ class AlgebraStatements:
             return False
         head, rest = parts
         try:
-            va.read(rest, copy.deepcopy(state))
+            first = va.read(rest, copy.deepcopy(state))
         except lx.NotRead:
             return False
-        self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
-        return self._algebra_read(line, piece, rest, state)
+        section = self._section_of(line)
+        named = self.__dict__.setdefault("_named_heads", {})
+        value = first.members[0][0].value if not first.free else None
+        if (head, section) in named and value is not None:
+            self._named_again(line, piece, head, named[(head, section)], value)
+        else:
+            self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
+        before = len(self.claims)
+        read = self._algebra_read(line, piece, rest, state)
+        mine = [c.verdict for c in self.claims[before:]]
+        if read and value is not None and mine and all(v == "holds" for v in mine) and (head, section) not in named:
+            named[(head, section)] = (line, value)     # the chain holds: the name is its value from here on
+        return read
+
+    def _section_of(self, line) -> int:
+        names = getattr(self.notes, "names", None)
+        return names._section(line) if names is not None and names.sections else 0
+
+    def _named_again(self, line, piece, head, earlier, value):
+        """The text's vector named again in its section: the value the chain gives it against the
+        value of the chain that named it."""
+        at, old = earlier
+        d = va.difference(value, old)
+        if d is not None and self._alg.axis is not None:
+            d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
+        if d is None:
+            self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
+        elif _zero(d):
+            self._add(line, piece, "identity", "holds", headless_chains.AGAIN.format(name=head, line=at))
+        else:
+            self._add(line, piece, "identity", "fails", headless_chains.OTHER.format(name=head, line=at))
 
     def _from_the_axis(self, text, ref, k, verdict, why):
         """The other reading of a plain distance r about a fixed axis: measured from the axis."""

@@ -8,7 +8,9 @@ first ``=``, when the rest is itself a chain. May import: the standard library,
 Texts name an intermediate vector and then work it out: the name says what the chain is about,
 and the members after it are claims about each other (each equal to the next) that can be checked
 without knowing the name. The head itself stays unchecked, said so; the rest is read as a chain
-of its own.
+of its own. Once such a chain holds, the name is its value in that section of the text: the same
+name heading a later chain there is compared with it (a label slipped onto the wrong quantity,
+a_i^t for the normal acceleration, is flagged).
 """
 from __future__ import annotations
 
@@ -17,6 +19,9 @@ from derive.lecture import vector_algebra_model as va
 
 WHY = ("the text's own vector {name}, not tied to the body (a name the text gives the chain): "
        "the members after it are checked against each other")
+AGAIN = "{name} as the chain that named it at line {line} (its value there): the same"
+OTHER = ("{name} was named at line {line} for another value (a chain that held there); this chain "
+         "gives it a different one: the name on its left is not the quantity its members work out")
 
 
 def split(text: str) -> tuple[str, str] | None:
