@@ -47,6 +47,7 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.chain_links import ChainLinks
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
@@ -67,7 +68,7 @@ from derive.lecture.rereading import Rereading
 from derive.lecture.section_convention import SectionConvention
 from derive.lecture.spellings import spellings
 from derive.lecture.stated_convention import general_form
-from derive.lecture.statements import continues, statements
+from derive.lecture.statements import continues, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
@@ -114,7 +115,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -235,6 +236,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
             self._close_display()
             return
         relabelled = _repeated_labels(pieces)
+        previous = None
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
@@ -244,6 +246,10 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
                           relabelled[piece])
                 self._given(item.line, relabelled[piece])
                 continue
+            first_eq = top_level(piece, _EQUALS)
+            if not re.match(r"\s*(=|\\approx|\\equiv)", piece) and first_eq:
+                # a row that goes on with "=" continues this statement, read or not — never an older one
+                self.ctx.head = piece[:first_eq[0].start()].strip()
             before = len(self.claims)
             # what is written back uses the text's latest spelling of each symbol it has written
             self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
@@ -257,6 +263,8 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
                 self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {why}")
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
+            self._linked(item.line, piece, before, previous, dup, pieces)
+            previous = piece
             self._place_flushed(before)
             self._note_motion(item.line, piece)
         self._confirmed_by_siblings(self.claims[start:])
@@ -548,6 +556,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, Writte
             self._add(line, piece, "lagrangian", "fails",
                       f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
                       f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
+
+
+_EQUALS = re.compile(r"(?<![<>!\\])=")
 
 
 def _first_relation(text: str) -> int | None:
