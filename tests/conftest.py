@@ -33,9 +33,27 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 
 from derive.runtime import cache as cache_folder  # noqa: E402  (after DERIVE_CACHE is set)
 
+# The suite's kernels are compiled at -O1 (DERIVE_CFLAGS, after derive's -O3): the same IEEE
+# arithmetic (ISO C, no contraction) at a third of the compile time. Tests of what the optimiser
+# could break (the vector and lanes builds, bit for bit) carry the mark ``optimised`` and
+# compile with derive's own flags.
+os.environ.setdefault("DERIVE_CFLAGS", "-O1")
+
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _optimised_builds(request):
+    """A test module marked ``optimised`` (``pytestmark``) compiles with derive's own flags only,
+    its module-scoped fixtures too: ``DERIVE_CFLAGS`` is unset while it runs."""
+    if request.node.get_closest_marker("optimised") is None:
+        yield
+        return
+    with pytest.MonkeyPatch.context() as patch:
+        patch.delenv("DERIVE_CFLAGS", raising=False)
+        yield
 
 
 @pytest.fixture

@@ -82,7 +82,7 @@ def test_a_damaged_library_is_rebuilt_once_with_a_note(cache, damage):
 def test_damaged_in_process_before_the_first_load(cache, capsys):
     """The same inside one process: a corrupt file where the library should be is replaced."""
     sources = tiny(uuid.uuid4().hex)
-    key = cbuild._key(sources, ["tiny.c"], cbuild.compiler(), list(cbuild.DEFAULT_FLAGS))
+    key = cbuild._key(sources, ["tiny.c"], cbuild.compiler(), [*cbuild.DEFAULT_FLAGS, *cbuild.extra_flags()])
     cache.mkdir()
     so = cache / f"tiny-{key[:24]}.so"
     so.write_bytes(b"\x7fELF truncated")
@@ -361,3 +361,13 @@ def test_a_compiler_without_march_native_gets_the_baseline_build(cache, tmp_path
     assert lib2.tiny_answer() == 42
     builds = [line for line in log.read_text().splitlines() if "tiny.c" in line]
     assert sum("-march=native" in line for line in builds) == 1  # not asked again
+
+
+def test_the_users_cflags_reach_the_compiler_after_derives_and_key_the_library(cache, monkeypatch):
+    source = {"answer.c": "int answer(void) { return ANSWER; }\n"}
+    monkeypatch.setenv("DERIVE_CFLAGS", "-DANSWER=7 -O0")
+    seven = cbuild.compile_library("answer", source, "answer.c")
+    monkeypatch.setenv("DERIVE_CFLAGS", "-DANSWER=8")
+    eight = cbuild.compile_library("answer", source, "answer.c")
+    assert (seven.answer(), eight.answer()) == (7, 8)
+    assert len(list(cache.glob("answer-*.so"))) == 2  # two keys, two libraries

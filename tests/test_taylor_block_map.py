@@ -32,6 +32,9 @@ from derive.runtime.cbuild import DEFAULT_FLAGS, VECTOR_FLAGS
 from derive.symbolic.models import build
 from tests.bits_harness import GEN, compile_harness, run_bits
 
+# the vector and lanes builds are only what they are at derive's own optimisation level
+pytestmark = pytest.mark.optimised
+
 
 class _RefPrinter(CPrinter):
     """The model's own printing (Piecewise as C conditionals), acos as the block's."""

@@ -15,6 +15,9 @@ from derive.runtime.integrate import ModelKernel
 from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 
+# the vector and lanes builds are only what they are at derive's own optimisation level
+pytestmark = pytest.mark.optimised
+
 BASE = {"body": {"I1": 1.0, "I3": 0.5}, "gravity": {"M": 1.0, "g": 1.0, "l": 1.0},
         "simulate": {"t_end": 3.0, "samples": 5, "rtol": 1e-10, "atol": 1e-12, "method": "taylor"}}
 

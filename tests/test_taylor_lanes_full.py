@@ -18,6 +18,9 @@ from derive.sim import batch
 from derive.symbolic.formulations import OUTPUTS
 from tests.test_taylor_lanes import RULES, _lanes_library, kernels, same, scenes, spread
 
+# the vector and lanes builds are only what they are at derive's own optimisation level
+pytestmark = pytest.mark.optimised
+
 FORMULATIONS = ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"]
 
 

@@ -7,7 +7,12 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
-of :mod:`derive.lecture.vectors`, SymPy.
+of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
+SymPy.
+
+A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
+statement that fails with a plain distance r measured from the origin is read again with r measured
+from the axis, and holds if that reading holds (`derive.lecture.fixed_axis`).
 """
 from __future__ import annotations
 
@@ -17,6 +22,8 @@ import re
 
 import sympy as sp
 
+from derive.lecture import fixed_axis
+from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as va
@@ -58,12 +65,27 @@ class AlgebraStatements:
         if va.lecture_notation(text):
             return False
         state = self._alg
+        axis = fixed_axis.setting(text)
+        if axis is not None:
+            state.axis = axis
+            self._alg_read = True
+            self._add(line, piece, "assumption", "unchecked", fixed_axis.WHY)
+            return True
+        kept_axis = state.axis
+        if state.axis is None:
+            state.axis = fixed_axis.implied(text)       # L_z beside a plain ω: a rotation about z
+        try:
+            return self._algebra_read(line, piece, text, state)
+        finally:
+            state.axis = kept_axis
+
+    def _algebra_read(self, line, piece, text, state) -> bool:
         try:
             reading = va.read(text, state)
         except lx.NotRead:
             reading = self._named_reading(text)
             if reading is None:
-                return False
+                return self._headless(line, piece, text, state)
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
@@ -87,6 +109,8 @@ class AlgebraStatements:
             if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
                 verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
                                              "the text sets it to, not what the reader took it for")
+            if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
+                verdict, why = self._from_the_axis(text, ref, k, verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
                 state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
             fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
@@ -124,6 +148,62 @@ class AlgebraStatements:
         self._alg_read = True
         return va.read(rest, state) if len(first) > 1 else None
 
+    def _headless(self, line, piece, text, state) -> bool:
+        """A chain headed by the text's own vector (`derive.lecture.headless_chains`): the head
+        unchecked, the members after it read and judged as a chain of their own."""
+        parts = headless_chains.split(text)
+        if parts is None:
+            return False
+        head, rest = parts
+        try:
+            first = va.read(rest, copy.deepcopy(state))
+        except lx.NotRead:
+            return False
+        section = self._section_of(line)
+        named = self.__dict__.setdefault("_named_heads", {})
+        value = first.members[0][0].value if not first.free else None
+        if (head, section) in named and value is not None:
+            self._named_again(line, piece, head, named[(head, section)], value)
+        else:
+            self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
+        before = len(self.claims)
+        read = self._algebra_read(line, piece, rest, state)
+        mine = [c.verdict for c in self.claims[before:]]
+        if read and value is not None and mine and all(v == "holds" for v in mine) and (head, section) not in named:
+            named[(head, section)] = (line, value)     # the chain holds: the name is its value from here on
+        return read
+
+    def _section_of(self, line) -> int:
+        names = getattr(self.notes, "names", None)
+        return names._section(line) if names is not None and names.sections else 0
+
+    def _named_again(self, line, piece, head, earlier, value):
+        """The text's vector named again in its section: the value the chain gives it against the
+        value of the chain that named it."""
+        at, old = earlier
+        d = va.difference(value, old)
+        if d is not None and self._alg.axis is not None:
+            d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
+        if d is None:
+            self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
+        elif _zero(d):
+            self._add(line, piece, "identity", "holds", headless_chains.AGAIN.format(name=head, line=at))
+        else:
+            self._add(line, piece, "identity", "fails", headless_chains.OTHER.format(name=head, line=at))
+
+    def _from_the_axis(self, text, ref, k, verdict, why):
+        """The other reading of a plain distance r about a fixed axis: measured from the axis."""
+        state = copy.deepcopy(self._alg)
+        state.radial = "axis"
+        try:
+            again = va.read(text, state)
+        except lx.NotRead:
+            return verdict, why
+        v2, why2 = self._algebra_pair(again, ref, k, record=False)
+        if v2 == "holds":
+            return "holds", why2 + "; with r the distance from the fixed axis (a plain r is that distance as well)"
+        return verdict, why
+
     def _algebra_fix(self, reading, ref, k):
         """One edit of member k's LaTeX (a sign, a factor, an index, a cross product's order, a
         power) after which it equals the reference member: (the statement corrected, what), or None."""
@@ -148,6 +228,8 @@ class AlgebraStatements:
             d = va.difference(members[k].value, members[ref].value)
             if d is None:
                 return "unchecked", "cannot compare its sides: their shapes differ"
+            if self._alg.axis is not None:
+                d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
             if _zero(d):
                 continue
             if ref == 0 and _entry_name(reading.source, members[0]) and not isinstance(d, sp.MatrixBase) \

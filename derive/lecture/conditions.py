@@ -7,13 +7,15 @@ derivation), ``self.ctx`` (the text's context), ``self._resolve``, ``self._compa
 the fixed first axis along 𝐋, or None) and `Conditions._undecidable` (why a relation is a
 condition of the text rather than a slip, or None).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.rotation_identities`,
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import rotation_identities
 from derive.lecture.comparing import free
 from derive.symbolic.lagrangian import ACCELS
 
@@ -64,7 +66,7 @@ class Conditions:
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
                       for m in written for x in free(m)) or \
             any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
-        if not derived:
+        if not derived and not rotation_identities.trig_matrices(val, [self._resolve(f) for f in targets]):
             return "an equation between the text's variables: a condition it imposes, not an identity"
         every = free(val).union(*(free(self._resolve(f)) for f in targets))
         loose = sorted(self.tex(x) for x in every if isinstance(x, lx.Generic) and x not in self.ctx.defs

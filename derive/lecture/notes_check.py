@@ -47,6 +47,7 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.chain_links import ChainLinks
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
@@ -66,13 +67,14 @@ from derive.lecture.own_rates import OwnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.section_convention import SectionConvention
+from derive.lecture.spellings import spellings
 from derive.lecture.stated_convention import general_form
-from derive.lecture.statements import continues, statements
+from derive.lecture.statements import continues, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
-from derive.symbolic.lagrangian import ACCELS
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -114,7 +116,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -135,6 +137,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
         self.pending_subs = None    # the settings of the display that wrote them
         self.flushed: list = []     # the verdicts of the group, until placed
         self._last_fix = None       # the corrected value the last single-edit search found
+        self.spelled = {}           # derivation symbol → how the text last wrote it (spellings)
         self.deferred: list = []    # (claim, line, statement, context) read again with later definitions
 
     # -- names for LaTeX output
@@ -158,7 +161,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
         return names
 
     def tex(self, obj) -> str:
-        return sp.latex(obj, symbol_names=self.names)
+        return sp.latex(obj, symbol_names={**self.names, **self.spelled})
 
     # -- the walk
     def run(self) -> list[Claim]:
@@ -234,6 +237,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
             self._close_display()
             return
         relabelled = _repeated_labels(pieces)
+        previous = None
         for piece in pieces:
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
@@ -243,7 +247,13 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
                           relabelled[piece])
                 self._given(item.line, relabelled[piece])
                 continue
+            first_eq = top_level(piece, _EQUALS)
+            if not re.match(r"\s*(=|\\approx|\\equiv)", piece) and first_eq:
+                # a row that goes on with "=" continues this statement, read or not — never an older one
+                self.ctx.head = piece[:first_eq[0].start()].strip()
             before = len(self.claims)
+            # what is written back uses the text's latest spelling of each symbol it has written
+            self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
             try:
                 self._read_once_or_twice(item.line, piece, dup, pieces)
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
@@ -254,6 +264,8 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
                 self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {why}")
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
+            self._linked(item.line, piece, before, previous, dup, pieces)
+            previous = piece
             self._place_flushed(before)
             self._note_motion(item.line, piece)
         self._confirmed_by_siblings(self.claims[start:])
@@ -545,6 +557,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
             self._add(line, piece, "lagrangian", "fails",
                       f"as a Lagrangian in β its Euler–Lagrange equation gives the wrong β̈ ({why}): the β motion "
                       f"follows from Routh's L_β = ½I₁β̇² − V_eff − p_γ²/(2I₃), the centrifugal term with the opposite sign")
+
+
+_EQUALS = re.compile(r"(?<![<>!\\])=")
 
 
 def _first_relation(text: str) -> int | None:

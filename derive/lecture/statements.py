@@ -1,7 +1,8 @@
 """A display cut into the statements it makes, as a reader cuts it.
 
 Takes: the LaTeX of one display (normalised by `derive.lecture.source`). Gives: `statements`,
-the list of its statements, each a LaTeX string. May import: the standard library.
+the list of its statements, each a LaTeX string. May import: the standard library,
+:mod:`derive.lecture.alignment_arrays`.
 
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
 other display environments, which are dropped; an aligned row of column pairs side by side,
@@ -15,11 +16,14 @@ before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its ow
 it is a constant (``= E \\quad \\text{(const.)}``: E names a conserved quantity); a relation in
 brackets after a statement (``\\dot\\omega_3 = -\\alpha\\gamma_2 \\left(\\alpha = \\frac{Mgx_C}{I_3}\\right)``)
 defines a name it uses and is a statement of its own, read first; a ``\\pm`` on a statement's left
-side makes it two statements, one for each sign.
+side makes it two statements, one for each sign. An ``array`` that is the display's body and states
+a relation in its first row is an alignment (`derive.lecture.alignment_arrays`), cut like ``aligned``.
 """
 from __future__ import annotations
 
 import re
+
+from derive.lecture import alignment_arrays
 
 _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
          "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
@@ -45,7 +49,7 @@ def _system_rows(s: str) -> str:
 
 
 def _strip_envs(s: str) -> str:
-    s = _system_rows(s)
+    s = alignment_arrays.unwrapped(_system_rows(s))
     # alignat's argument is its number of column pairs, not math
     s = re.sub(r"\\begin\{(alignat\*?|alignedat)\}\s*\{\s*\d+\s*\}", " ", s)
     for env in _ENVS:

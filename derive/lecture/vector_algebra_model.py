@@ -140,6 +140,8 @@ class State:
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
     named: dict = field(default_factory=dict)       # a letter the text set to an expression here (K = Σ ½ m v²)
     named_by: dict = field(default_factory=dict)    # the statement that set it
+    axis: int | None = None                         # the fixed axis of rotation a text set (𝛚 = ω k̂)
+    radial: str = "origin"                          # a plain r: the distance from the origin, or from the axis
 
 
 _MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
@@ -279,15 +281,20 @@ class Algebra:
         mass, r = self._point(env)
         if a.hat and base in UNIT and (not sub or base == "x"):
             return E[:, p.axis(sub, env, tok) if sub else UNIT[base]]
+        axis = self.state.axis
         if base == "omega":
             n = sp.sqrt(W.dot(W))
             if a.hat:
                 return W / n
             if bold:
                 return W
+            if not sub and axis is not None:
+                return W[axis]               # about a fixed axis: ω is the signed rate about it
             return n if not sub else (W[AXES[sub]] if sub in AXES else None)
         if base == "alpha":
             p.rated = True
+            if not bold and not sub and axis is not None:
+                return WD[axis]
             return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
         if a.hat:
             return None
@@ -295,6 +302,8 @@ class Algebra:
             sub = ""                         # 𝐫_{/cm}: the position relative to the point, this model's 𝐫
         element = env.get("point") is not None and env.get("index") is None and sub == "i" and "i" not in env
         if base == "r" and (self._own(sub, env) or element):     # 𝐫ᵢ in an integral (no index): its element
+            if not bold and self.state.radial == "axis" and axis is not None:
+                return sp.sqrt(sum(r[i]**2 for i in range(3) if i != axis))   # the distance from the axis
             return r if bold else sp.sqrt(r.dot(r))
         if base == "r" and not bold and sub in ("x", "y", "z"):
             return r[AXES[sub]]              # r_x, r_y, r_z: the current point's coordinates

@@ -96,6 +96,12 @@ def compiler() -> list[str]:
     return shlex.split(os.environ.get("CC", "cc")) or ["cc"]
 
 
+def extra_flags() -> list[str]:
+    """The user's own compiler flags, ``$DERIVE_CFLAGS``, put after derive's (the last ``-O``
+    wins): ``-O1`` for quicker compiles of short runs, ``-g`` for a debugger. They enter the key."""
+    return shlex.split(os.environ.get("DERIVE_CFLAGS", ""))
+
+
 @functools.lru_cache(maxsize=None)
 def _compiler_identity(cmd: tuple[str, ...]) -> str:
     """``<command> --version`` output: part of the cache key, and the check that it works."""
@@ -196,7 +202,8 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
     (see :func:`cache_dir`) and in-process: a second call with the same inputs returns the same
     :class:`ctypes.CDLL` without running the compiler. Raises :class:`CompilerError` if there is
     no working compiler or the code does not compile (with the first lines of its stderr).
-    ``flags`` with ``-march=native`` (:data:`BUILDS`) that the compiler fails are retried
+    ``$DERIVE_CFLAGS`` (:func:`extra_flags`) follows ``flags``. Those
+    with ``-march=native`` (:data:`BUILDS`) that the compiler fails are retried
     without it, and the flag is left out of this compiler's builds for the rest of the process.
     """
     if not name.isidentifier():
@@ -205,7 +212,7 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
         if reserved in sources:
             raise ValueError(f"{reserved!r} is the cache's own file name, not a source name")
     mains = _mains(main, sources)
-    flags = list(flags)
+    requested, flags = flags, [*flags, *extra_flags()]
     if RUNTIME_HEADER in sources and HOST_SOURCE not in mains:
         sources = {**sources, HOST_SOURCE: _host_source()}
         mains.append(HOST_SOURCE)
@@ -228,7 +235,7 @@ def compile_library(name: str, sources: dict[str, str], main: str | list[str],
             # a compiler that knows no -march=native (older clang on Arm): the same build for
             # the architecture's baseline, the same numbers (see VECTOR_FLAGS)
             _native_refused.add(tuple(cmd))
-    return compile_library(name, sources, main, flags)
+    return compile_library(name, sources, main, requested)
 
 
 @functools.lru_cache(maxsize=1)

@@ -1,0 +1,67 @@
+"""The links of an aligned chain: a row ``= C`` after ``= B`` is also the claim B = C.
+
+Gives the mixin `ChainLinks` of `derive.lecture.notes_check.Checker`: `_linked`, which reads a row
+that goes on with ``=`` against the member just before it when the row could not be compared with
+the chain's left side. May import: the standard library, :mod:`derive.lecture.statements`.
+
+A text writes ``R_{XYZ} = R_Z R_Y R_X`` (a name it gives, and a product of names it has not tied
+to anything), then ``= [the three matrices written out]``, then ``= [their product]``. Each row
+after the first is compared with the left side R_{XYZ}; when the reader cannot compare them (the
+left side is the text's new name, its shape unknown), the chain still states that each member
+equals the next, and that link — the written-out product against the product of the matrices
+written before it — can be checked. The row's verdict is then that link's, said so. A link between
+vectors is kept only when it holds: it may rest on the text's set-up said in words (𝐫ᵢ ⊥ 𝛚).
+"""
+from __future__ import annotations
+
+import re
+
+from derive.lecture.statements import top_level
+
+_EQUALS = re.compile(r"(?<![<>!\\])=")
+_UNCOMPARED = ("cannot compare its sides", "which the text has not defined", "which the text has not tied")
+
+_VECTOR = re.compile(r"\\(?:vec|boldsymbol|bm)\b|\\mathbf\s*\{?\s*[a-z]|\\times|\\hat")
+
+WHY = "the link to the member before it (the chain's left side cannot be compared): "
+
+
+class ChainLinks:
+    """Mixin of the checker. Uses ``self.ctx``, ``self.claims`` and ``_read_once_or_twice``."""
+
+    def _linked(self, line, piece, before, previous, dup, pieces) -> None:
+        """Re-read a continuation row against the previous member when its own claims are all
+        uncompared (see the module docstring); ``previous`` is the row before it."""
+        if previous is None or not re.match(r"\s*=", piece):
+            return
+        mine = self.claims[before:]
+        if not mine or any(c.verdict != "unchecked" for c in mine) or \
+                not all(any(u in c.why for u in _UNCOMPARED) for c in mine):
+            return
+        member = last_member(previous)
+        if member is None or not member.strip():
+            return
+        head, kept = self.ctx.head, self.claims[before:]
+        del self.claims[before:]
+        self.ctx.head = member
+        try:
+            self._read_once_or_twice(line, piece, dup, pieces)
+        except Exception:  # noqa: BLE001 - the link is a second reading: when it fails, the first stands
+            del self.claims[before:]
+        finally:
+            self.ctx.head = head
+        linked = self.claims[before:]
+        flagged = any(c.verdict in ("typo", "fails") for c in linked)
+        if not any(c.verdict in ("holds", "typo", "fails") for c in linked) or (flagged and _VECTOR.search(member + piece)):
+            # a link between vectors may rest on the text's set-up (r ⊥ 𝛚, a fixed axis) said in
+            # words: it is kept when it holds, never to flag
+            self.claims[before:] = kept
+            return
+        for c in linked:
+            c.why = WHY + c.why
+
+
+def last_member(row: str) -> str | None:
+    """The member after a row's last top-level ``=``, or None."""
+    eqs = top_level(row, _EQUALS)
+    return row[eqs[-1].end():].strip() if eqs else None

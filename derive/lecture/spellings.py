@@ -1,0 +1,54 @@
+"""How a text spells the derivation's symbols, so that what the reader writes back (a correction,
+a why) is in the text's notation: a z-x-z text's ``\\Omega_1`` for the body angular velocity's
+first component, not the lecture's ``\\tilde{\\omega}_1``.
+
+Takes a display's LaTeX and the text's vocabulary; gives derivation symbol → the atom as the
+text wrote it. May import: :mod:`derive.lecture.vocabulary`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import vocabulary as vc
+
+
+def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
+    """``{symbol: the text's LaTeX for it}`` for every atom of ``latex`` that stands for one of
+    ``symbols`` (a collection of derivation symbols); atoms the vocabulary cannot read are skipped.
+    Where the formula spells one symbol two ways, the first spelling is kept."""
+    try:
+        toks = vc.scan(latex)
+    except vc.NotRead:
+        return {}
+    out: dict = {}
+    for tok in toks:
+        if tok.kind != "atom" or not tok.value.text:
+            continue
+        try:
+            value = vocab.resolve(tok.value)
+        except vc.NotRead:
+            continue
+        if isinstance(value, sp.Symbol) and value in symbols:
+            out.setdefault(value, tok.value.text)
+        if tok.value.dots:          # ω̇ written: ω is spelled the same way without the dots
+            _undotted(tok.value, vocab, symbols, out)
+    return out
+
+
+_DOTTED = re.compile(r"\\d?dot\s*(?:\{(?P<braced>[^{}]*)\}|(?P<bare>\\[A-Za-z]+|[A-Za-z]))")
+
+
+def _undotted(atom: vc.Atom, vocab: vc.Vocabulary, symbols, out: dict) -> None:
+    """Record the spelling of the atom without its dots, when taking the dot commands away gives a
+    formula that reads as exactly that atom."""
+    text = _DOTTED.sub(lambda m: m.group("braced") or m.group("bare"), atom.text, count=1)
+    try:
+        toks = vc.scan(text)
+        value = vocab.resolve(toks[0].value) if len(toks) == 1 and toks[0].kind == "atom" else None
+    except vc.NotRead:
+        return
+    if value is not None and toks[0].value.with_(text="") == atom.with_(dots=0, text="") \
+            and isinstance(value, sp.Symbol) and value in symbols:
+        out.setdefault(value, text)

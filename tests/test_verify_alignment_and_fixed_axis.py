@@ -1,0 +1,102 @@
+"""The notes reader on an ``array`` used to align a chain (the display's body, as MathJax texts
+write it), and on a body turning about a fixed axis (𝛚 = ω k̂, L_z = ω Σ mᵢ rᵢ²)."""
+import kept_readings as kept
+from derive.lecture import alignment_arrays
+from derive.lecture.statements import statements
+
+
+def verdicts(text):
+    return [(c.line, c.verdict) for c in kept.check_text(text)]
+
+
+_CHAIN = (r"\begin{equation}" "\n" r"\begin{array}{ll}" "\n"
+          r"T & = \frac{1}{2} I_1 \omega_1^2 + \frac{1}{2} I_2 \omega_2^2 + \frac{1}{2} I_3 \omega_3^2 \\" "\n"
+          r"\\" "\n"
+          r"& = \frac{1}{2} (I_1 \omega_1^2 + I_2 \omega_2^2 + I_3 \omega_3^2)" "\n"
+          r"\end{array}" "\n" r"\end{equation}")
+
+
+def test_an_array_that_is_the_body_of_a_display_and_states_a_relation_is_cut_into_rows():
+    rows = statements(_CHAIN)
+    assert [r.split()[0] for r in rows] == ["T", "="]          # the rows, the chain's second going on with "="
+    assert "&" not in "".join(rows) and "array" not in "".join(rows)
+    assert set(verdicts(f"# Energy\n\n{_CHAIN}\n")) == {(3, "holds")}
+
+
+def test_an_array_in_brackets_or_without_a_relation_stays_as_written():
+    matrix = r"A = \left[\begin{array}{cc} 1 & 0 \\ 0 & 1 \end{array}\right]"
+    names = r"\begin{array}{ll} xyz \quad xzy \\ zxz \quad zyz \end{array}"
+    assert alignment_arrays.unwrapped(matrix) == matrix
+    assert alignment_arrays.unwrapped(names) == names
+
+
+_SETUP = "# Fixed axis\n\nThe body turns about the fixed $z$ axis.\n\n$$\\vec \\omega = \\omega \\hat k$$\n"
+
+
+def test_an_angular_velocity_set_along_a_unit_vector_is_the_texts_set_up_not_a_claim():
+    claims = kept.check_text(_SETUP)
+    assert [(c.line, c.verdict) for c in claims] == [(5, "unchecked")]
+    assert "fixed axis" in claims[0].why
+
+
+def test_a_component_beside_a_plain_omega_reads_the_rotation_about_that_axis_and_r_from_it():
+    text = "# Fixed axis\n\n$$L_z = \\omega \\sum_i m_i r_i^2$$\n\n$$L_z = \\omega \\sum_i m_i r_i^3$$\n"
+    assert verdicts(text) == [(3, "holds"), (5, "fails")]
+
+
+_TURNING = "# Fixed axis\n\n$$\\vec \\omega = \\omega \\hat k, \\; \\vec \\alpha = \\alpha \\hat k$$\n\n"
+
+
+def test_a_chain_headed_by_the_texts_own_vector_checks_the_members_after_it():
+    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\vec a_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
+    got = verdicts(text)
+    assert (5, "holds") in got and (5, "unchecked") in got      # the head is the text's name, left unchecked
+    assert (7, "fails") in got or (7, "typo") in got             # the normal acceleration points to the axis
+
+
+def test_a_row_that_goes_on_with_equals_continues_its_own_display_not_an_earlier_statement():
+    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\begin{aligned}\\vec Q_i &= \\vec r_i \\times \\vec P_i \\\\ &= \\alpha x_i \\hat k\\end{aligned}$$\n")
+    assert [v for line, v in verdicts(text) if line == 7] == ["unchecked", "unchecked"]
+
+
+_RX = r"\begin{bmatrix} 1 & 0 & 0 \\ 0 & \cos\alpha & -\sin\alpha \\ 0 & \sin\alpha & \cos\alpha \end{bmatrix}"
+_RZ = r"\begin{bmatrix} \cos\gamma & -\sin\gamma & 0 \\ \sin\gamma & \cos\gamma & 0 \\ 0 & 0 & 1 \end{bmatrix}"
+_PRODUCT = (r"\begin{bmatrix} \cos\gamma & -\sin\gamma\,\cos\alpha & \sin\gamma\,\sin\alpha \\ \sin\gamma & \cos\gamma\,\cos\alpha & "
+            r"-\cos\gamma\,\sin\alpha \\ 0 & \sin\alpha & \cos\alpha \end{bmatrix}")
+
+
+def _chain(product):
+    return (f"# Turns\n\n$$\n\\begin{{aligned}}\n\\mathbf{{Q}} &= \\mathbf{{A}} \\mathbf{{B}} \\\\\n"
+            f"&= {_RZ} {_RX} \\\\\n&= {product}\n\\end{{aligned}}\n$$\n")
+
+
+def test_a_chain_row_the_reader_cannot_compare_with_its_new_name_is_checked_against_the_member_before_it():
+    assert (3, "holds") in verdicts(_chain(_PRODUCT))
+    slipped = _PRODUCT.replace(r"\sin\gamma\,\sin\alpha \\", r"-\sin\gamma\,\sin\alpha \\", 1)
+    assert slipped != _PRODUCT
+    assert any(v in ("typo", "fails") for line, v in verdicts(_chain(slipped)))
+
+
+def test_a_link_between_vectors_that_would_flag_stays_unchecked():
+    text = ("# Sums\n\n$$\n\\begin{aligned}\n\\vec L_z &= \\sum_i \\vec r_i \\times m_i \\vec v_i \\\\\n"
+            "&= \\sum_i m_i \\vec\\omega (\\vec r_i \\cdot \\vec r_i) - \\sum_i m_i \\vec r_i (\\vec r_i \\cdot \\vec\\omega) \\\\\n"
+            "&= \\vec\\omega \\sum_i m_i r_i^2\n\\end{aligned}\n$$\n")
+    assert not any(v in ("typo", "fails") for line, v in verdicts(text))
+
+
+_TANGENTIAL = "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+_NORMAL = "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
+
+
+def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_compared_with_that_value():
+    got = verdicts(_TURNING + _TANGENTIAL + _NORMAL)
+    assert (7, "fails") in got and (7, "holds") in got        # the label slipped; the chain itself holds
+    assert [v for line, v in verdicts(_TURNING + _TANGENTIAL + _TANGENTIAL.replace("t =", "t = 1 \\cdot", 1))
+            if line == 7 and v in ("typo", "fails")] == []
+
+
+def test_a_name_heading_a_chain_in_another_section_is_not_compared_with_an_earlier_sections_value():
+    text = _TURNING + _TANGENTIAL + "## Another example\n\n" + _NORMAL
+    assert not any(v in ("typo", "fails") for line, v in verdicts(text))
