@@ -165,7 +165,7 @@ class CoordinateStatements:
                 raise NotHandled("an equation of motion with no Lagrangian of the text's")
             lag = d.functions[d.lagrangian][1]
             el = sp.diff(sp.diff(lag, d.qd), d.q) * d.qd + sp.diff(lag, d.qd, 2) * d.qdd - sp.diff(lag, d.q)
-            mine, theirs = sp.solve(diff, d.qdd), sp.solve(el, d.qdd)
+            mine, theirs = _accelerations(diff, d.qdd), _accelerations(el, d.qdd)
             if len(mine) != 1 or len(theirs) != 1:
                 raise NotHandled("an equation not linear in the acceleration")
             diff = mine[0] - theirs[0]
@@ -180,6 +180,16 @@ class CoordinateStatements:
         if zero and unknown:
             why += f", whatever {', '.join(unknown)} stand for"
         return ("holds" if zero else "fails"), why, kind
+
+
+def _accelerations(e, qdd) -> list:
+    """The q̈ that make e = 0: −c₀/c₁ where e = c₁ q̈ + c₀ with c₁ ≠ 0 free of q̈ (how an equation of
+    motion and the Euler–Lagrange equation are written), else `sp.solve`'s. Only whether two of
+    them are equal counts, so the quotient is left as it stands (`solve` would `simplify` it)."""
+    c1 = sp.diff(e, qdd)
+    if c1 == 0 or c1.has(qdd):
+        return sp.solve(e, qdd)
+    return [-e.xreplace({qdd: sp.S.Zero}) / c1]
 
 
 def _skipping_bare(checked):
