@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import surely_nonzero
+from derive.lecture.zero_test import surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -165,7 +165,7 @@ class Motion:
         if not_a_consequence(r, euler):
             return failed
         for i, R in enumerate(euler):
-            if R == 0:
+            if R == 0 or surely_depends(r, R, dyn):
                 continue
             q = sp.cancel(sp.together(r / R))
             if not (free(q) & dyn) and q != 0:
