@@ -26,7 +26,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
-from derive.lecture.context import is_ordering
+from derive.lecture.context import is_ordering, sign_under_orderings
 from derive.lecture.zero_test import surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
@@ -289,9 +289,9 @@ class Motion:
         verdicts, names = [], sorted(syms, key=lambda x: x.name)
         for k, rel in enumerate(rels):
             a, b = (values[k], values[k + 1]) if rel in ("<", "≤") else (values[k + 1], values[k])
-            verdict = self._sign_under_orderings(b - a, names)
-            if verdict == "mixed" and all(self._sign_under_orderings(x, names) == "positive" for x in (a, b)):
-                verdict = self._sign_under_orderings(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
+            verdict = self._sign(b - a, names)
+            if verdict == "mixed" and all(self._sign(x, names) == "positive" for x in (a, b)):
+                verdict = self._sign(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
             verdicts.append(verdict)
         if all(v == "positive" for v in verdicts):
             energy = " (E the free body's ½ Σ Iᵢω̃ᵢ²)" if free_body else ""
@@ -307,44 +307,8 @@ class Motion:
     def _orderings_text(self) -> str:
         return "; ".join(" < ".join(self.tex(x) for x in chain) for chain in self.ctx.orderings)
 
-    def _sign_under_orderings(self, d, syms) -> str:
-        """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
-        Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
-        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not. A chain
-        with numbers in it starts from its first number c (the symbols before it c − gaps, after it
-        c + gaps), and one that meets a symbol an earlier chain placed goes on from there; the bounds
-        this drops only widen the values tried, so a sign found holds for the text's values too."""
-        rep, k = {}, 0
-
-        def gap():
-            nonlocal k
-            k += 1
-            return sp.Symbol(f"gap{k}", positive=True)
-
-        for chain in self.ctx.orderings:
-            numbers = [j for j, x in enumerate(chain) if sp.sympify(x).is_number]
-            start = numbers[0] if numbers else 0
-            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
-            for x in reversed(chain[:start]):
-                total = total - gap()
-                rep.setdefault(x, total)
-            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
-            for x in chain[start + 1 if numbers else 0:]:
-                if sp.sympify(x).is_number:
-                    continue              # a bound met again: dropped (it would tie the gaps)
-                if x in rep:
-                    total = rep[x]
-                    continue
-                total = total + gap()
-                rep[x] = total
-        for x in syms:
-            rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))
-        e = sp.factor(sp.together(sp.expand(d.xreplace(rep))))
-        if e.is_positive:
-            return "positive"
-        if e.is_negative:
-            return "negative"
-        return "mixed"
+    def _sign(self, d, syms) -> str:
+        return sign_under_orderings(d, tuple(syms), tuple(map(tuple, self.ctx.orderings)))
 
     # -- second-order equations ω̃̈ᵢ = …
     def _second_order(self, line, piece, parsed) -> bool:
