@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering, sign_under_orderings
-from derive.lecture.zero_test import surely_depends, surely_nonzero
+from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -43,7 +43,7 @@ class Motion:
             return
         raw = members[0] - members[1]
         used = [x for x in free(raw) if x in self.ctx.defs]
-        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
+        if used and not surely_nonzero(e := self._resolve(raw).xreplace(self.ctx.subs)) and expanded(e) == 0:
             names = ", ".join(sorted(self.tex(x) for x in used))
             self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
             return
@@ -113,7 +113,7 @@ class Motion:
     def _steady_check(self, raw):
         rot = self.d.rot
         (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
-        r = sp.expand(r)
+        r = expanded(r)
         if r == 0:
             return False, "the condition is empty (0 = 0)"
         force = self.d.steady_force
@@ -136,11 +136,11 @@ class Motion:
             # √ of the ω̃ᵢ (a text's u ∝ Π₂ under a root): not Euler's form, and its expansion is unbounded
             raise lx.NotRead("roots of the angular velocity's components: not an equation of motion the reader checks")
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
-        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
+        euler = [expanded(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
                 isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and not_a_consequence(r, euler):
             return False, "", None        # the residual below is this one expanded: the same screen
-        r = sp.expand(r)
+        r = expanded(r)
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
@@ -151,7 +151,7 @@ class Motion:
                 if free(r) & {lx.WD[i]}:
                     slope, scale = sp.diff(r, loose[0]), sp.diff(euler[i], lx.WD[i])
                     q = sp.cancel(sp.diff(r, lx.WD[i]) / scale) if scale != 0 else 0
-                    r = sp.expand(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
+                    r = expanded(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
                         r.xreplace({loose[0]: lx.TAU[i]})
                     break
         if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
@@ -172,7 +172,7 @@ class Motion:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = flow_of(tuple(euler))
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
+        if free(r) & set(lx.WD) and sp.cancel(sp.together(expanded(r.xreplace(flow)))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return failed
 
@@ -337,7 +337,7 @@ class Motion:
 
         def residual(r):
             r = self._own_defs(self._resolve(r)).xreplace(accel).xreplace(self.ctx.subs).xreplace(flows)
-            r = sp.expand(r.xreplace(self.ctx.subs))
+            r = expanded(r.xreplace(self.ctx.subs))
             return self._to_first_order(r) if self.ctx.first_order else r
 
         r = residual(raw)
@@ -384,7 +384,7 @@ class Motion:
             eq = self._eom_for(j, self.ctx.subs, set(lx.W))
             if eq is None:
                 continue
-            eq = sp.expand(self._own_defs(eq).xreplace(self.ctx.subs))
+            eq = expanded(self._own_defs(eq).xreplace(self.ctx.subs))
             eq = self._to_first_order(eq) if self.ctx.first_order else eq
             c = sp.diff(eq, lx.WD[j])
             if c == 0 or free(c) & set(lx.WD) or (free(eq) & set(lx.WD)) - {lx.WD[j]}:
@@ -438,7 +438,7 @@ class Motion:
                 return raw
         if lx.W[i] in wset:
             return None
-        R = sp.expand(self.d.euler(subs)[i].xreplace(subs))
+        R = expanded(self.d.euler(subs)[i].xreplace(subs))
         if R == 0 or (free(R) & set(lx.W)) - set(allowed):
             return None
         return R

@@ -36,7 +36,7 @@ from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
-from derive.lecture.zero_test import expanded
+from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -314,7 +314,8 @@ class TextNames:
         """Every member the same expression whatever the text's undefined names stand for."""
         try:
             first = self._calculus(self._resolve(members[0]))
-            return all(expanded(self._calculus(self._resolve(m)) - first) == 0 for m in members[1:])
+            return all(not surely_nonzero(d) and expanded(d) == 0
+                       for d in (self._calculus(self._resolve(m)) - first for m in members[1:]))
         except TypeError:           # a matrix of the text's beside names it has not defined
             return False
 
