@@ -176,7 +176,7 @@ def momentum(system: str) -> sp.ImmutableMatrix:
 @functools.lru_cache(maxsize=None)
 def torque(system: str) -> sp.ImmutableMatrix:
     """d𝐋/dt under rigid rotation."""
-    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(zt.expanded))
 
 
 def _momentum(system: str) -> sp.Matrix:
@@ -188,7 +188,7 @@ def _momentum(system: str) -> sp.Matrix:
 @functools.lru_cache(maxsize=None)
 def tensor(system: str) -> sp.ImmutableMatrix:
     """𝐈 = ∂𝐋/∂𝛚 of the system."""
-    return sp.ImmutableMatrix(momentum(system).jacobian(W).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(momentum(system).applyfunc(zt.expanded).jacobian(W).applyfunc(zt.expanded))
 
 
 @functools.lru_cache(maxsize=None)

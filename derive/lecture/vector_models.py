@@ -14,6 +14,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vector_parser import LAW, _FreeIndex
+from derive.lecture.zero_test import expanded
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -229,7 +230,7 @@ def _tensor(name: str) -> sp.ImmutableMatrix:
     model = Model(name)
     if name == "principal":
         return sp.ImmutableMatrix(sp.diag(*model.moments))
-    return sp.ImmutableMatrix(sp.hessian(model.kinetic, list(lx.W)).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(sp.hessian(expanded(model.kinetic), list(lx.W)).applyfunc(expanded))
 
 
 @functools.lru_cache(maxsize=None)
