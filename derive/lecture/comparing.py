@@ -30,7 +30,17 @@ def has_rates(objs, rot) -> bool:
 
 
 def free(obj) -> set:
+    """The free symbols of an expression or matrix (a new set)."""
+    if isinstance(obj, sp.Basic):
+        return set(_free_symbols(obj))
     return set(getattr(obj, "free_symbols", set()))
+
+
+@functools.lru_cache(maxsize=8192)
+def _free_symbols(e: sp.Basic) -> frozenset:
+    """``e.free_symbols``, memoised: SymPy walks the tree on each call, and the checker asks again
+    for the symbols of the same values as it resolves, unifies and compares them."""
+    return frozenset(e.free_symbols)
 
 
 def column(v):

@@ -3,12 +3,15 @@ small quantities, sign cases, definitions, equations) and how headings, assumpti
 ("for a symmetric top", "$\\omega_2, \\omega_3$ are first-order small", "$0 \\approx \\omega_y
 \\ll \\omega_x$") and sign statements change it.
 
-Gives `Context` and the mixin `Reading` of `derive.lecture.notes_check.Checker`.
+Gives `Context`, the mixin `Reading` of `derive.lecture.notes_check.Checker` and
+`sign_under_orderings` (the sign of a difference for every value the text's orderings allow).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.zero_test`,
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
@@ -16,6 +19,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
+from derive.lecture.zero_test import expanded
 from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
 
@@ -27,6 +31,48 @@ def is_ordering(values) -> bool:
     return len(values) > 1 and all(v.is_number and v.is_real or isinstance(v, sp.Symbol) and
                                    (v in (I1, I2, I3) or isinstance(v, lx.Generic)) for v in values) \
         and any(isinstance(v, sp.Symbol) for v in values)
+
+
+@functools.lru_cache(maxsize=1024)
+def sign_under_orderings(d, syms: tuple, orderings: tuple) -> str:
+    """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
+    Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
+    positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not. A chain
+    with numbers in it starts from its first number c (the symbols before it c − gaps, after it
+    c + gaps), and one that meets a symbol an earlier chain placed goes on from there; the bounds
+    this drops only widen the values tried, so a sign found holds for the text's values too.
+    Memoised: a chain of inequalities asks again for the sign of a difference it has met."""
+    rep, k = {}, 0
+
+    def gap():
+        nonlocal k
+        k += 1
+        return sp.Symbol(f"gap{k}", positive=True)
+
+    for chain in orderings:
+        numbers = [j for j, x in enumerate(chain) if sp.sympify(x).is_number]
+        start = numbers[0] if numbers else 0
+        total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+        for x in reversed(chain[:start]):
+            total = total - gap()
+            rep.setdefault(x, total)
+        total = sp.sympify(chain[start]) if numbers else sp.S.Zero
+        for x in chain[start + 1 if numbers else 0:]:
+            if sp.sympify(x).is_number:
+                continue              # a bound met again: dropped (it would tie the gaps)
+            if x in rep:
+                total = rep[x]
+                continue
+            total = total + gap()
+            rep[x] = total
+    for x in syms:
+        rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))
+    e = sp.factor(sp.together(expanded(d.xreplace(rep))))
+    if e.is_positive:
+        return "positive"
+    if e.is_negative:
+        return "negative"
+    return "mixed"
 
 
 @dataclass

@@ -32,6 +32,7 @@ import random
 import re
 
 import sympy as sp
+from sympy.core.assumptions import check_assumptions
 from sympy.core.function import AppliedUndef
 
 from derive.lecture import coordinate_functions as cf
@@ -136,7 +137,7 @@ class CoordinateStatements:
             fresh = sorted(n for n in names - before - {defined} if sp.Symbol(n, positive=True) in (a - b).free_symbols)
             if fresh:
                 sym = sp.Symbol(fresh[0], positive=True)
-                solved = sp.solve(a - b, sym) if len(fresh) == 1 else []
+                solved = _solutions(a - b, sym) if len(fresh) == 1 else []
                 if len(solved) != 1 or (a - b).has(d.qdd):
                     return False
                 d.functions[fresh[0]] = ([], solved[0])
@@ -165,7 +166,7 @@ class CoordinateStatements:
                 raise NotHandled("an equation of motion with no Lagrangian of the text's")
             lag = d.functions[d.lagrangian][1]
             el = sp.diff(sp.diff(lag, d.qd), d.q) * d.qd + sp.diff(lag, d.qd, 2) * d.qdd - sp.diff(lag, d.q)
-            mine, theirs = sp.solve(diff, d.qdd), sp.solve(el, d.qdd)
+            mine, theirs = _solutions(diff, d.qdd), _solutions(el, d.qdd)
             if len(mine) != 1 or len(theirs) != 1:
                 raise NotHandled("an equation not linear in the acceleration")
             diff = mine[0] - theirs[0]
@@ -180,6 +181,18 @@ class CoordinateStatements:
         if zero and unknown:
             why += f", whatever {', '.join(unknown)} stand for"
         return ("holds" if zero else "fails"), why, kind
+
+
+def _solutions(e, x) -> list:
+    """The x that make e = 0, as `sp.solve` gives them: where e = c₁ x + c₀ with c₁ ≠ 0 free of x (an
+    equation of motion in q̈, a relation that defines a new symbol), −c₀/c₁ unless x's assumptions
+    rule it out. The quotient is left as it stands (`solve` would `simplify` it): it is compared
+    and substituted at numeric points only."""
+    c1 = sp.diff(e, x)
+    if c1 == 0 or c1.has(x):
+        return sp.solve(e, x)
+    root = -e.xreplace({x: sp.S.Zero}) / c1
+    return [] if check_assumptions(root, **x.assumptions0) is False else [root]
 
 
 def _skipping_bare(checked):

@@ -26,8 +26,8 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
-from derive.lecture.context import is_ordering
-from derive.lecture.zero_test import surely_nonzero
+from derive.lecture.context import is_ordering, sign_under_orderings
+from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -43,7 +43,7 @@ class Motion:
             return
         raw = members[0] - members[1]
         used = [x for x in free(raw) if x in self.ctx.defs]
-        if used and sp.expand(self._resolve(raw).xreplace(self.ctx.subs)) == 0:
+        if used and not surely_nonzero(e := self._resolve(raw).xreplace(self.ctx.subs)) and expanded(e) == 0:
             names = ", ".join(sorted(self.tex(x) for x in used))
             self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
             return
@@ -113,7 +113,7 @@ class Motion:
     def _steady_check(self, raw):
         rot = self.d.rot
         (r,) = self._unify([self._resolve(raw).xreplace(self.ctx.subs)])
-        r = sp.expand(r)
+        r = expanded(r)
         if r == 0:
             return False, "the condition is empty (0 = 0)"
         force = self.d.steady_force
@@ -136,11 +136,11 @@ class Motion:
             # √ of the ω̃ᵢ (a text's u ∝ Π₂ under a root): not Euler's form, and its expansion is unbounded
             raise lx.NotRead("roots of the angular velocity's components: not an equation of motion the reader checks")
         # the section's settings (ω̃₃ = Ω, a constant spin) hold in Euler's equations too
-        euler = [sp.expand(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
+        euler = [expanded(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)]
         if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
                 isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and not_a_consequence(r, euler):
             return False, "", None        # the residual below is this one expanded: the same screen
-        r = sp.expand(r)
+        r = expanded(r)
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
@@ -151,7 +151,7 @@ class Motion:
                 if free(r) & {lx.WD[i]}:
                     slope, scale = sp.diff(r, loose[0]), sp.diff(euler[i], lx.WD[i])
                     q = sp.cancel(sp.diff(r, lx.WD[i]) / scale) if scale != 0 else 0
-                    r = sp.expand(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
+                    r = expanded(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
                         r.xreplace({loose[0]: lx.TAU[i]})
                     break
         if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
@@ -165,14 +165,14 @@ class Motion:
         if not_a_consequence(r, euler):
             return failed
         for i, R in enumerate(euler):
-            if R == 0:
+            if R == 0 or surely_depends(r, R, dyn):
                 continue
             q = sp.cancel(sp.together(r / R))
             if not (free(q) & dyn) and q != 0:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = flow_of(tuple(euler))
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(sp.expand(r.xreplace(flow)))) == 0:
+        if free(r) & set(lx.WD) and sp.cancel(sp.together(expanded(r.xreplace(flow)))) == 0:
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return failed
 
@@ -289,9 +289,9 @@ class Motion:
         verdicts, names = [], sorted(syms, key=lambda x: x.name)
         for k, rel in enumerate(rels):
             a, b = (values[k], values[k + 1]) if rel in ("<", "≤") else (values[k + 1], values[k])
-            verdict = self._sign_under_orderings(b - a, names)
-            if verdict == "mixed" and all(self._sign_under_orderings(x, names) == "positive" for x in (a, b)):
-                verdict = self._sign_under_orderings(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
+            verdict = self._sign(b - a, names)
+            if verdict == "mixed" and all(self._sign(x, names) == "positive" for x in (a, b)):
+                verdict = self._sign(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
             verdicts.append(verdict)
         if all(v == "positive" for v in verdicts):
             energy = " (E the free body's ½ Σ Iᵢω̃ᵢ²)" if free_body else ""
@@ -307,44 +307,8 @@ class Motion:
     def _orderings_text(self) -> str:
         return "; ".join(" < ".join(self.tex(x) for x in chain) for chain in self.ctx.orderings)
 
-    def _sign_under_orderings(self, d, syms) -> str:
-        """'positive', 'negative' or 'mixed': the sign of d for every value the orderings allow.
-        Each chain x₁ < x₂ < … becomes positive gaps (x₁ = g₁, x₂ = g₁ + g₂, …: sizes and moments are
-        positive), every other symbol a non-zero real; SymPy's sign rules then decide, or not. A chain
-        with numbers in it starts from its first number c (the symbols before it c − gaps, after it
-        c + gaps), and one that meets a symbol an earlier chain placed goes on from there; the bounds
-        this drops only widen the values tried, so a sign found holds for the text's values too."""
-        rep, k = {}, 0
-
-        def gap():
-            nonlocal k
-            k += 1
-            return sp.Symbol(f"gap{k}", positive=True)
-
-        for chain in self.ctx.orderings:
-            numbers = [j for j, x in enumerate(chain) if sp.sympify(x).is_number]
-            start = numbers[0] if numbers else 0
-            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
-            for x in reversed(chain[:start]):
-                total = total - gap()
-                rep.setdefault(x, total)
-            total = sp.sympify(chain[start]) if numbers else sp.S.Zero
-            for x in chain[start + 1 if numbers else 0:]:
-                if sp.sympify(x).is_number:
-                    continue              # a bound met again: dropped (it would tie the gaps)
-                if x in rep:
-                    total = rep[x]
-                    continue
-                total = total + gap()
-                rep[x] = total
-        for x in syms:
-            rep.setdefault(x, sp.Symbol(f"{x.name}_r", real=True, nonzero=True))
-        e = sp.factor(sp.together(sp.expand(d.xreplace(rep))))
-        if e.is_positive:
-            return "positive"
-        if e.is_negative:
-            return "negative"
-        return "mixed"
+    def _sign(self, d, syms) -> str:
+        return sign_under_orderings(d, tuple(syms), tuple(map(tuple, self.ctx.orderings)))
 
     # -- second-order equations ω̃̈ᵢ = …
     def _second_order(self, line, piece, parsed) -> bool:
@@ -373,7 +337,7 @@ class Motion:
 
         def residual(r):
             r = self._own_defs(self._resolve(r)).xreplace(accel).xreplace(self.ctx.subs).xreplace(flows)
-            r = sp.expand(r.xreplace(self.ctx.subs))
+            r = expanded(r.xreplace(self.ctx.subs))
             return self._to_first_order(r) if self.ctx.first_order else r
 
         r = residual(raw)
@@ -420,7 +384,7 @@ class Motion:
             eq = self._eom_for(j, self.ctx.subs, set(lx.W))
             if eq is None:
                 continue
-            eq = sp.expand(self._own_defs(eq).xreplace(self.ctx.subs))
+            eq = expanded(self._own_defs(eq).xreplace(self.ctx.subs))
             eq = self._to_first_order(eq) if self.ctx.first_order else eq
             c = sp.diff(eq, lx.WD[j])
             if c == 0 or free(c) & set(lx.WD) or (free(eq) & set(lx.WD)) - {lx.WD[j]}:
@@ -474,7 +438,7 @@ class Motion:
                 return raw
         if lx.W[i] in wset:
             return None
-        R = sp.expand(self.d.euler(subs)[i].xreplace(subs))
+        R = expanded(self.d.euler(subs)[i].xreplace(subs))
         if R == 0 or (free(R) & set(lx.W)) - set(allowed):
             return None
         return R

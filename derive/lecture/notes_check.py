@@ -406,8 +406,8 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
     def _resolve(self, v, keep=()):
         """Quantities → derived values, the notes' definitions → their right sides (not ``keep``)."""
         for _ in range(4):
-            rep = {}
-            for s in free(v):
+            rep, syms = {}, free(v)
+            for s in syms:
                 if s in keep:
                     continue
                 if isinstance(s, lx.Quantity):
@@ -418,7 +418,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
                     rep[s] = self.ctx.subs[s]      # a case the text sets for its own symbol wins
                 elif s in self.ctx.defs:
                     rep[s] = self.ctx.defs[s]
-            rep.update(self._dotted_definitions(v))
+            rep.update(self._dotted_definitions(v, syms))
             if not rep:
                 break
             v = matrices_put(v, rep) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) else v.xreplace(rep)

@@ -27,7 +27,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.zero_test import surely_nonzero
+from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
@@ -133,7 +133,7 @@ class OnTheMotion:
             if not motion or not (_free(val) | _free(target)) & (set(motion) | set(lx.W)):
                 continue
             a, b = (x.xreplace(self.ctx.subs) for x in self._unify([val, target]))
-            a, b = sp.expand(a.xreplace(motion)), sp.expand(b.xreplace(motion))
+            a, b = expanded(a.xreplace(motion)), expanded(b.xreplace(motion))
             if _free(a - b) & set(RATES) - set(motion):
                 continue
             ok, how = self._compare(a, b, seed + "/motion")
@@ -149,12 +149,12 @@ class OnTheMotion:
         lag = self.ctx.forms_held.get(lx.LAGRANGIAN)
         lag = self._resolve(lag) if lag is not None else self.d.top.lagrangian
         a, b = (x.xreplace(self.ctx.subs) for x in self._unify([val, target]))
-        diff = sp.expand(a - b)
+        diff = expanded(a - b)
         for q, qd in zip(ANGLES, RATES):
             el = time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q)
             el = el.xreplace(self.ctx.subs)
             for sign in (1, -1):
-                d = sp.expand(diff - sign * el)
+                d = expanded(diff - sign * el)
                 if not surely_nonzero(d) and trig_reduce(d) == 0:
                     return q
         return None

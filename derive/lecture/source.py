@@ -458,8 +458,15 @@ def normalize(latex: str, user: dict | None = None) -> str:
         The same formula, normalised; a formula the walker cannot follow is returned with only
         its characters normalised.
     """
+    return _normalized(latex, tuple(sorted((user or {}).items())))
+
+
+@functools.lru_cache(maxsize=4096)
+def _normalized(latex: str, user: tuple) -> str:
+    """`normalize`, memoised: the notes, the names the prose gives and the hat maps each normalise
+    the text's formulas."""
     latex = units.plain_numbers(definitions_removed(characters(latex)))
-    user = user or {}
+    user = dict(user)
     try:
         latex = texmacros.expand(latex, user)
     except texmacros.MacroLoop as loop:

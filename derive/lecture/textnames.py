@@ -21,7 +21,7 @@ of `derive.lecture.notes_check.Checker`, which
    definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -36,6 +36,7 @@ from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
+from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -314,7 +315,8 @@ class TextNames:
         """Every member the same expression whatever the text's undefined names stand for."""
         try:
             first = self._calculus(self._resolve(members[0]))
-            return all(sp.expand(self._calculus(self._resolve(m)) - first) == 0 for m in members[1:])
+            return all(not surely_nonzero(d) and expanded(d) == 0
+                       for d in (self._calculus(self._resolve(m)) - first for m in members[1:]))
         except TypeError:           # a matrix of the text's beside names it has not defined
             return False
 
@@ -580,10 +582,11 @@ class TextNames:
                 out += sp.diff(e, s) * self.vocab._generic(atom.with_(dots=atom.dots + 1))
         return out + sp.diff(e, lx.t)
 
-    def _dotted_definitions(self, v) -> dict:
-        """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined."""
+    def _dotted_definitions(self, v, syms=None) -> dict:
+        """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined
+        (``syms``: v's free symbols, where the caller has them)."""
         rep = {}
-        for s in _free(v):
+        for s in _free(v) if syms is None else syms:
             if isinstance(s, lx.Generic) and s not in self.ctx.defs:
                 base = self.vocab.undotted(s)
                 if base is not None and base[0] in self.ctx.defs:

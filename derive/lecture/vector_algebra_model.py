@@ -38,6 +38,7 @@ import sympy as sp
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
+from derive.lecture import zero_test as zt
 from derive.lecture.vector_parser import AXES, INTEGRAL, _as_value
 
 POINTS = 3
@@ -158,7 +159,12 @@ def rate(e):
     """d/dt under rigid rotation: ṙ = 𝛚 × 𝐫 for every point, 𝛚̇ = 𝛂; the masses are constant."""
     if isinstance(e, sp.MatrixBase):
         return e.applyfunc(rate)
-    e = sp.sympify(e)
+    return _rate(sp.sympify(e))
+
+
+@functools.lru_cache(maxsize=1024)
+def _rate(e):
+    """`rate` of a scalar, memoised: a statement is read again under its second readings."""
     if e.free_symbols & set(WD):
         raise lx.NotRead("a second time derivative of 𝛚")
     if any(s.name.endswith(("_x", "_y", "_z")) and s not in set(W) for s in e.free_symbols):
@@ -180,7 +186,7 @@ def momentum(system: str) -> sp.ImmutableMatrix:
 @functools.lru_cache(maxsize=None)
 def torque(system: str) -> sp.ImmutableMatrix:
     """d𝐋/dt under rigid rotation."""
-    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(zt.expanded))
 
 
 def _momentum(system: str) -> sp.Matrix:
@@ -192,7 +198,7 @@ def _momentum(system: str) -> sp.Matrix:
 @functools.lru_cache(maxsize=None)
 def tensor(system: str) -> sp.ImmutableMatrix:
     """𝐈 = ∂𝐋/∂𝛚 of the system."""
-    return sp.ImmutableMatrix(momentum(system).jacobian(W).applyfunc(sp.expand))
+    return sp.ImmutableMatrix(momentum(system).applyfunc(zt.expanded).jacobian(W).applyfunc(zt.expanded))
 
 
 @functools.lru_cache(maxsize=None)
@@ -216,7 +222,7 @@ def difference(a, b):
 
 
 def _zeroed(d):
-    d = sp.expand(d)
+    d = zt.expanded(d)
     if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)):
         d = sp.simplify(d)          # |𝛚| and 𝛚̂: a polynomial's expansion is already canonical
     return d

@@ -14,6 +14,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vector_parser import LAW, _FreeIndex
+from derive.lecture.zero_test import expanded
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -89,9 +90,7 @@ class Model:
 
     @functools.cached_property
     def tensor(self) -> sp.Matrix:
-        if self.name == "principal":
-            return sp.diag(*self.moments)
-        return sp.hessian(self.kinetic, list(lx.W)).applyfunc(sp.expand)
+        return sp.Matrix(_tensor(self.name))
 
     @functools.cached_property
     def momentum(self) -> sp.Matrix:
@@ -132,8 +131,8 @@ class Model:
         Xd = X.applyfunc(self.dt)
         if frame == "body":
             return Xd
-        R = self.d.conv.matrix()
-        return R.T * (R.applyfunc(self.dt) * X) + Xd
+        R, Rd = _turning(self.d.conv)
+        return R.T * (Rd * X) + Xd
 
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
@@ -223,6 +222,23 @@ class Model:
         if self.name == "frame" and a.bold and plain and not a.sub and not a.sup and a.base not in _KNOWN_VECTORS:
             return self.generic_vector(a.base)
         return None
+
+
+@functools.lru_cache(maxsize=None)
+def _tensor(name: str) -> sp.ImmutableMatrix:
+    """`Model.tensor`, which the model's name alone decides: derived once, not for each statement."""
+    model = Model(name)
+    if name == "principal":
+        return sp.ImmutableMatrix(sp.diag(*model.moments))
+    return sp.ImmutableMatrix(sp.hessian(expanded(model.kinetic), list(lx.W)).applyfunc(expanded))
+
+
+@functools.lru_cache(maxsize=None)
+def _turning(conv) -> tuple:
+    """R and dR/dt of a convention (`Model.dt`'s chain rule, in which only the angles enter R),
+    derived once, not for each frame derivative."""
+    R = conv.matrix()
+    return R, R.applyfunc(lambda e: time_derivative(e, coords=ANGLES, rates=RATES, accels=ACCELS))
 
 
 def _text_letter(p, a, meaning) -> bool:

@@ -2,13 +2,16 @@
 
 Takes: SymPy expressions and matrices. Gives: `symbolic_zero` (bounded symbolic steps, cheapest
 first, never an unbounded `simplify`), `bounded_expand` (`expand` within the same bound for
-differences with trig functions), `surely_nonzero` (an exact one-point screen that proves a
-difference non-zero), `numeric_zero` (seeded random points: exact rationals, or mpmath at
-`DIGITS` digits) and `sample` (the seeded points). Used by the lecture's table
+differences with trig functions), `expanded` (`expand`'s result, multiplied out in a polynomial
+ring where it can be), `surely_nonzero` (an exact one-point screen that proves a difference
+non-zero), `surely_depends` (the same screen for a quotient's dependence on some symbols),
+`numeric_zero` (seeded random points: exact rationals, or mpmath at `DIGITS` digits) and `sample`
+(the seeded points). Used by the lecture's table
 (`derive.lecture.verify`) and by the notes checker (`derive.lecture.comparing`); it knows neither.
 
 1. symbolic: the difference is zero as built, or after `expand`; if it has no trig functions,
-   after `cancel` (canonical for rational functions) or, for small ones with radicals,
+   and is no polynomial in its symbols and their reciprocals (whose expansion is already
+   canonical), after `cancel` (canonical for rational functions) or, for small ones with radicals,
    `simplify`; if it has, after `rotations.trig_reduce` (canonical for polynomials in sin/cos),
    skipped above a few hundred nodes;
 2. numeric at `POINTS` seeded random points: exactly, in rationals, when the difference contains
@@ -26,6 +29,7 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 from mpmath import iv, libmp
+from sympy.polys.rings import ring
 
 from derive.lecture import mp_values
 from derive.symbolic import rotations
@@ -65,7 +69,65 @@ def bounded_expand(d):
     left as it is for the screens and the numeric test. Polynomials are always expanded (exact)."""
     if _size(d) > _EXPAND_MAX_NODES and d.has(sp.sin, sp.cos, sp.tan):
         return d
-    return sp.expand(d)
+    return expanded(d)
+
+
+def expanded(d):
+    """``sp.expand(d)``; a polynomial with rational coefficients in symbols, their reciprocals and
+    sin, cos, tan of symbols (`_generators`) multiplied out in SymPy's sparse polynomial ring
+    instead (sums and products of dicts of monomials), each of those taken as one generator. The
+    result, the sum of its monomials as SymPy builds it (x·x⁻¹ = 1, sin θ² kept), is the canonical
+    sum `expand` reaches by rewriting the expression tree term by term."""
+    gens = _generators(d)
+    if not gens:
+        return sp.expand(d)
+    R = ring(gens, sp.QQ)[0]
+    return _in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
+
+
+def _generators(d) -> list | None:
+    """The generators of d as `expanded` reads it, by name; None when d is anything else (a
+    function of a sum, a root, a float, a quotient by a sum)."""
+    if not isinstance(d, sp.Expr) or d.is_Atom:
+        return None
+    gens = set()
+    for node in sp.preorder_traversal(d):
+        if node.is_Symbol and node.is_commutative:
+            gens.add(node)
+        elif node.is_Add or node.is_Mul or node.is_Rational:
+            continue
+        elif node.is_Pow and node.exp.is_Integer and (node.exp > 0 or node.base.is_Symbol):
+            if node.exp < 0:
+                gens.add(1 / node.base)
+        elif isinstance(node, (sp.sin, sp.cos, sp.tan)) and node.args[0].is_Symbol:
+            gens.add(node)
+        else:
+            return None
+    return sorted(gens, key=sp.default_sort_key)
+
+
+def _in_ring(e, gens: dict, R, memo: dict):
+    """e (read by `_generators`) as an element of the ring R over those generators."""
+    if e in gens:
+        return gens[e]
+    if e in memo:
+        return memo[e]
+    if e.is_Rational:
+        value = R.ground_new(sp.QQ(int(e.p), int(e.q)))
+    elif e.is_Add:
+        value = R.zero
+        for a in e.args:
+            value += _in_ring(a, gens, R, memo)
+    elif e.is_Mul:
+        value = R.one
+        for a in e.args:
+            value *= _in_ring(a, gens, R, memo)
+    elif e.exp > 0:
+        value = _in_ring(e.base, gens, R, memo) ** int(e.exp)
+    else:
+        value = gens[1 / e.base] ** int(-e.exp)
+    memo[e] = value
+    return value
 
 
 def symbolic_zero(d) -> str | None:
@@ -74,10 +136,12 @@ def symbolic_zero(d) -> str | None:
         return "identical"
     if _size(d) > _EXPAND_MAX_NODES:
         return None
-    d = sp.expand(d)
+    d = expanded(d)
     if d == 0:
         return "expand"
     if not d.has(sp.sin, sp.cos, sp.tan):
+        if _generators(d) is not None:            # a polynomial in symbols and their reciprocals,
+            return None                           # expanded: canonical, so not 0 as a rational function
         if sp.cancel(sp.together(d)) == 0:        # canonical for rational functions
             return "cancel"
         if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES or _nonzero_somewhere(d):
@@ -208,6 +272,29 @@ def surely_nonzero_with_roots(d) -> bool:
         except (_Outside, ValueError, ZeroDivisionError):
             return False
     return False
+
+
+def surely_depends(a, b, variables) -> bool:
+    """Whether a/b provably depends on one of ``variables``: a(P) b(P′) ≠ a(P′) b(P) modulo 2⁶¹ − 1
+    at `surely_nonzero`'s exact point P and P′, the same point with those variables alone moved.
+    Were a/b = q with q free of them, both sides would be q(P) b(P) b(P′); so a non-zero
+    difference proves that no q free of them (`cancel`'s included) has a = q b. False for what
+    `surely_nonzero` cannot evaluate exactly, and where the two products agree."""
+    if not isinstance(a, sp.Expr) or not isinstance(b, sp.Expr):
+        return False
+    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
+    moved = [s for s in symbols if s in set(variables)]
+    if not moved or len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
+        return False
+    angles = _angles(a + b)
+    try:
+        here = _exact_point(a + b, symbols, 0, angles)
+        there = {**here, **{s: (here[s] * 3 + 1) % _MODULUS for s in moved if s in here}}
+        left = _residue(a, here, {}) * _residue(b, there, {})
+        right = _residue(a, there, {}) * _residue(b, here, {})
+    except (_Outside, ValueError, ZeroDivisionError):
+        return False
+    return (left - right) % _MODULUS != 0
 
 
 class _NoRoot(_Outside):

@@ -99,7 +99,11 @@ def trig_reduce(expr, angles=ANGLES):
         # exact replacement of these atoms (`subs` does the same here, with far more work)
         expr = expr.xreplace({sp.sin(x): s_, sp.cos(x): c_, sp.tan(x): s_ / c_})
         pairs.append((x, s_, c_))
-    num, den = sp.fraction(sp.together(expr))
+    # an expression with no denominator (positive powers only, no exp, no float) is its own
+    # numerator: `together` would only take out its rational content, put back by the quotient
+    polynomial = not any(p.is_Float or isinstance(p, sp.exp) or
+                         (p.is_Pow and not (p.exp.is_number and p.exp.is_positive)) for p in sp.preorder_traversal(expr))
+    num, den = (expr, sp.S.One) if polynomial else sp.fraction(sp.together(expr))
 
     def reduce(poly):
         poly = sp.expand(poly)

@@ -1,0 +1,69 @@
+"""The cheaper exact steps of the notes checker: `expand` in a polynomial ring
+(`zero_test.expanded`), the exact screen of a quotient's dependence (`zero_test.surely_depends`),
+`trig_reduce` of an expression with no denominator, the one-coordinate reader's linear solve and
+the sign of a difference under the text's orderings. Each gives what the costlier step it stands
+in for gives."""
+import pytest
+import sympy as sp
+
+from derive.lecture import zero_test as zt
+from derive.lecture.context import sign_under_orderings
+from derive.lecture.coordinate_statements import _solutions
+from derive.symbolic.rotations import trig_reduce
+
+x, y = sp.symbols("x y", real=True)
+m, R, I = sp.symbols("m R I_C", positive=True)
+b, g = sp.symbols("beta gamma", real=True)
+w1, w2, wd1 = sp.symbols("w1 w2 wd1", real=True)
+
+EXPRESSIONS = [
+    (x + y) ** 3 / m - x ** 3 / m,                                 # reciprocals of symbols
+    x * (y + 1 / x),                                               # x·x⁻¹ = 1 once multiplied out
+    (sp.sin(b) + x / m) ** 2 * m - m * sp.cos(b) ** 2,             # sin and cos of a symbol
+    sp.Rational(1, 2) * (x + y) ** 2 - x * y,
+    (x * y) ** -2 * (x + y) ** 2,
+    (w1 * sp.tan(g) - wd1) ** 3,
+    # not polynomials in the ring's generators: left to `expand`
+    (x + 1) ** -1 * (x + y), sp.sqrt(x + 1) * (x + y) ** 2, sp.Float("2.5") * x * (x + 1),
+    sp.sin(x + y) * (x + 1) ** 2, sp.exp(x) * (x + sp.exp(-x)), (x + sp.pi) ** 2,
+]
+
+
+@pytest.mark.parametrize("e", EXPRESSIONS)
+def test_expanded_is_sympys_expand(e):
+    assert zt.expanded(e) == sp.expand(e)
+
+
+def test_a_polynomial_not_zero_once_expanded_goes_to_the_numeric_test_and_a_zero_one_holds_by_expand():
+    assert zt.symbolic_zero(x * (x + 1) - x ** 2 - x) == "expand"
+    assert zt.symbolic_zero(x / m + y) is None
+    assert zt.symbolic_zero(x / (x + 1) + 1 / (x + 1) - 1) == "cancel"     # no polynomial: cancel still decides
+
+
+def test_a_quotient_that_moves_with_the_variables_is_proved_to_and_a_true_multiple_never_is():
+    euler = I * wd1 - (m - R) * w1 * w2
+    assert not zt.surely_depends((m + sp.cos(b)) * euler, euler, {w1, w2, wd1})
+    assert zt.surely_depends(w1 * euler, euler, {w1, w2, wd1})
+    assert zt.surely_depends(euler + w2, euler, {w1, w2, wd1})
+    assert not zt.surely_depends(sp.sqrt(w1) * euler, euler, {w1, w2, wd1})   # a root: not evaluated, not proved
+
+
+def test_trig_reduce_of_an_expression_without_denominator_keeps_its_content_in_each_term():
+    assert trig_reduce(2 * x * sp.sin(b) ** 2 + 2 * x * sp.cos(b) ** 2, (b,)) == 2 * x
+    assert trig_reduce(x * sp.cos(b) ** 2 / 2 + y / 2, (b,)) == x / 2 + y / 2 - x * sp.sin(b) ** 2 / 2
+    assert trig_reduce(sp.tan(b) * sp.cos(b) - sp.sin(b), (b,)) == 0     # a denominator: together as before
+
+
+def test_a_relation_linear_in_its_unknown_is_solved_as_solve_solves_it():
+    (value,) = _solutions(m * R ** 2 - I - 4 * m * R ** 2 / sp.pi ** 2, I)
+    assert sp.simplify(value - sp.solve(m * R ** 2 - I - 4 * m * R ** 2 / sp.pi ** 2, I)[0]) == 0
+    assert _solutions(I + m, I) == [] == sp.solve(I + m, I)              # I_C > 0 rules out −m
+    assert sorted(_solutions(x ** 2 - 1, x)) == [-1, 1]                  # not linear: solve's roots
+
+
+def test_the_sign_under_the_orderings_follows_the_chain_and_repeats_its_answer():
+    chain = ((m, R, I),)
+    assert sign_under_orderings(I - m, (I, m), chain) == "positive"
+    assert sign_under_orderings(m - R, (R, m), chain) == "negative"
+    assert sign_under_orderings(x - m, (m, x), chain) == "mixed"
+    assert sign_under_orderings(I - m, (I, m), chain) == "positive"
