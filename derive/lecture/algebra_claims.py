@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_algebra_model`, the single edits
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
 SymPy.
 
@@ -24,6 +24,7 @@ import sympy as sp
 
 from derive.lecture import fixed_axis
 from derive.lecture import headless_chains
+from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
@@ -82,7 +83,9 @@ class AlgebraStatements:
         try:
             reading = va.read(text, state)
         except lx.NotRead:
-            return self._headless(line, piece, text, state)
+            reading = self._named_reading(text)
+            if reading is None:
+                return self._headless(line, piece, text, state)
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
@@ -103,6 +106,9 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
+                verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
+                                             "the text sets it to, not what the reader took it for")
             if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
@@ -113,6 +119,34 @@ class AlgebraStatements:
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
                       why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
+
+    def _named_reading(self, text):
+        """``K = X …`` with K a plain letter this reader does not know: the text's own name. Set to
+        one expression it reads (``K = \\sum_i \\frac12 m_i v_i^2``), K stands for that expression
+        in the statements that follow (kept, None returned); a chain after it, or K named before,
+        is read with K's expression in its place. None when that does not read either."""
+        self._alg_kane = getattr(self, "_alg_kane", False) or kane_notation.kane(text)
+        text = kane_notation.rewrite(text, self._alg_kane)      # 𝐈̄_a after the text wrote 𝐫̄^{P_i/O}
+        m = _NAME_FIRST.match(text)
+        if m is None:
+            return None
+        state, name, rest = self._alg, m.group(1).replace(" ", ""), _expanded(text[m.end():], self._alg.named)
+        try:
+            instance = _instance(name, state.named)
+            if instance is not None:        # I_{ba} after I_{ab} ≔ …: the definition at these indices
+                return va.read(instance + " = " + rest, state) if va.markers(rest, bold=True) else None
+            if name in state.named:         # K named before: its expression in its place
+                if state.named_by[name] == text:
+                    return None             # the statement that named it, met again: not a claim about it
+                return va.read(state.named[name] + " = " + rest, state) if va.markers(rest, bold=True) else None
+            reading = va.read(rest, copy.deepcopy(state))
+        except lx.NotRead:
+            return None
+        first = reading.members[0]
+        state.named[name] = reading.source[first[0].start:first[0].end].strip()
+        state.named_by[name] = text
+        self._alg_read = True
+        return va.read(rest, state) if len(first) > 1 else None
 
     def _headless(self, line, piece, text, state) -> bool:
         """A chain headed by the text's own vector (`derive.lecture.headless_chains`): the head
@@ -226,6 +260,42 @@ class AlgebraStatements:
         return "holds", f"{WHY}: exact (expand)"
 
 
+_NAME_FIRST = re.compile(r"\s*((?:\\mathbf\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z])?)"
+                         r"\s*(?:=(?!=)|\\equiv)")
+"""A statement opening with a lone symbol set equal to what follows (``K = …``, ``\\mathbf{I}_{a} \\equiv …``,
+``I_{ab} \\equiv …``)."""
+
+
+def _expanded(text: str, named: dict) -> str:
+    """The text with the names a text set before put back as their expressions, longest first; a
+    name with letter indices (``I_{ab}``) also at other letters (``I_{ba}``, ``I_{aa}``: `_instance`)."""
+    for name in sorted(named, key=len, reverse=True):
+        pattern = re.escape(name).replace(r"\{", r"\s*\{\s*").replace(r"\}", r"\s*\}").replace("_", r"\s*_\s*")
+        text = re.sub(pattern + r"(?![A-Za-z_{])", lambda _: r"\left(" + named[name] + r"\right)", text)
+    for m in reversed(list(_INDEXED.finditer(text))):
+        value = _instance(m.group(0), named)
+        if value is not None:
+            text = text[:m.start()] + r"\left(" + value + r"\right)" + text[m.end():]
+    return text
+
+
+_INDEXED = re.compile(r"(?<![\\A-Za-z])([A-Za-z])\s*_\s*\{\s*([a-h])\s*([a-h])\s*\}")
+"""A scalar with two letter indices, ``I_{ab}``: an inertia scalar over generic unit vectors."""
+
+
+def _instance(symbol: str, named: dict) -> str | None:
+    """The expression of ``I_{ba}`` or ``I_{aa}`` when the text defined ``I_{ab}`` over its indices'
+    letters (its unit vectors 𝐧_a, 𝐧_b): the definition with the letters renamed, or None."""
+    m = _INDEXED.fullmatch(symbol.strip())
+    if m is None or symbol.replace(" ", "") in named:
+        return None
+    for name, value in named.items():
+        d = _INDEXED.fullmatch(name)
+        if d is None or d.group(1) != m.group(1) or d.group(2) == d.group(3):
+            continue
+        rename = {d.group(2): m.group(2), d.group(3): m.group(3)}
+        return re.sub(r"_\{\s*([a-h])\s*\}", lambda x: "_{" + rename.get(x.group(1), x.group(1)) + "}", value)
+    return None
 _MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
 _PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
 """The body's three mass points each on its own axis: every product of inertia vanishes, the
@@ -313,7 +383,11 @@ def _torque_law(text, state) -> bool:
 
 
 def _mentions(text, state) -> bool:
-    """A torque letter of the text, or an entry of the inertia tensor (I_xy), in the statement."""
+    """A torque letter of the text, an entry of the inertia tensor (I_xy), or a name the text set
+    here (or one at other indices, `_instance`), in the statement."""
+    m = _NAME_FIRST.match(text)
+    if m is not None and (m.group(1).replace(" ", "") in state.named or _instance(m.group(1), state.named)):
+        return True
     for t in _tokens(va.prepare(text)):
         if t.kind != "atom":
             continue

@@ -51,6 +51,7 @@ from derive.lecture.chain_links import ChainLinks
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
@@ -114,7 +115,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 

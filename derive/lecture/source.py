@@ -174,6 +174,7 @@ _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "c
            "iff": "Leftrightarrow", "Longrightarrow": "Rightarrow", "longrightarrow": "to",
            "mathbb": "mathrm", "rm": "mathrm", "degree": "circ", "lbrace": "{", "rbrace": "}",
            "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad",
+           "textup": "text", "textnormal": "text",     # upright words, as \\text sets them
            # a definition written with its own sign (mathtools' :=, "equal by definition")
            "coloneqq": "equiv", "triangleq": "equiv", "eqdef": "equiv", "defeq": "equiv",
            **{"var" + g: g for g in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi",
@@ -249,7 +250,8 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name == "qty":
         return r"\left(" + (_last_arg(node, user) or "") + r"\right)", 0
     if name == "operatorname":
-        inner = (_last_arg(node, user) or "").strip().lstrip("\\")
+        # \operatorname{d\!}: a book's differential, its kerning inside the name
+        inner = re.sub(r"\\[!,;:]|\s", "", _last_arg(node, user) or "").lstrip("\\")
         return ("\\" + inner + " ") if inner in _FUNCTION_NAMES else r"\mathrm{" + inner + "}", 0
     if name in ("dv", "pdv"):
         order, f, x = _arg(node, 0, user), _arg(node, 1, user) or "", _arg(node, 2, user) or ""

@@ -136,7 +136,8 @@ def _text_only(piece: str) -> bool:
     rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
     return not rest.strip(" &,.;:") and "\\text" in piece
 
-_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?\s*\}")
+_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?(?:\s*(?:\\?\#|no\.)?\s*\d+)?\s*\}")
+"""``\\text{const}``; a text numbering its constants writes ``\\text{constant \\#2}``."""
 
 _TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
 

@@ -102,7 +102,8 @@ class TextNames:
         rest = [k for k in range(len(members)) if k not in const]
         named = len(rest) == 2 and (self._new_name(members[rest[1]]) or isinstance(members[rest[1]], lx.Quantity))
         if len(rest) == 1 or named:
-            if self._conserved(line, piece, members[rest[0]]):     # an integral of the heavy body's motion
+            if self._conserved(line, piece, members[rest[0]]) or \
+                    len(rest) == 1 and self._conserved_free(line, piece, members[rest[0]]):   # an integral
                 if named and self._new_name(members[rest[1]]):
                     self.ctx.defs[members[rest[1]]] = members[rest[0]]
                 return None

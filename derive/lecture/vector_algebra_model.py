@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
@@ -91,6 +92,11 @@ _UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z
 
 
 def prepare(text: str) -> str:
+    text = kane_notation.rewrite(text)
+    return _prepare(text)
+
+
+def _prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, ρ … dV as dm, the
@@ -117,7 +123,7 @@ def lecture_notation(text: str) -> bool:
 def markers(text: str, bold: bool = False) -> bool:
     """Whether a statement is written in this module's notation: ∫ dm, ⊗, a determinant, a matrix,
     a cross product, a sum over particles, unit vectors x̂ ı̂ (and, with ``bold``, any bold vector)."""
-    if bold and re.search(r"\\(?:boldsymbol|mathbf|pmb|bm|vec)\b", text):
+    if bold and re.search(r"\\(?:boldsymbol|mathbf|pmb|bm|vec)\b", text) or kane_notation.kane(text):
         return True
     return bool(re.search(r"\\int|\\otimes|vmatrix|bmatrix|\\times|\\imath|\\jmath|\\sum", text))
 
@@ -133,6 +139,8 @@ class State:
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
     entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
+    named: dict = field(default_factory=dict)       # a letter the text set to an expression here (K = Σ ½ m v²)
+    named_by: dict = field(default_factory=dict)    # the statement that set it
     axis: int | None = None                         # the fixed axis of rotation a text set (𝛚 = ω k̂)
     radial: str = "origin"                          # a plain r: the distance from the origin, or from the axis
 
@@ -320,6 +328,9 @@ class Algebra:
             return W.cross(r)[AXES[sub]]
         if base == "p" and bold and self._own(sub, env):
             return mass * W.cross(r)
+        if base == "F" and bold and sub and sub == env.get("index"):
+            p.rated = True                   # 𝐅ᵢ summed over the points: the rate of the point's momentum
+            return mass * rate(W.cross(r))
         if base == "delta" and len(sub) == 2:
             return sp.Integer(int(p.axis(sub[0], env, tok) == p.axis(sub[1], env, tok)))
         return self._system_atom(p, a, env, tok, mass, r, bold)
@@ -374,6 +385,10 @@ class Algebra:
             if bold and not sub:
                 p.generics.add(base)
                 return comps
+            if bold and len(sub) == 1 and sub in "abcdefgh" and not a.sup and sub != env.get("index") \
+                    and base not in "rvp":      # 𝐧_a, a vector of the text's named by a letter (Kane's n̂_a)
+                p.generics.add(base + sub)
+                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
             if not bold and sub in ("x", "y", "z"):
                 p.generics.add(base)
                 return comps[AXES[sub]]
@@ -381,12 +396,16 @@ class Algebra:
 
 
 def system_of(toks, state: State) -> str:
-    """body (a sum or an integral), single (a plain m), else the previous statement's system."""
+    """body (a sum or an integral), single (a plain m, or a particle's momentum 𝐩 with no index),
+    else the previous statement's system."""
     if any(t.kind == "cmd" and t.value == "sum" for t in toks) or \
             any(t.kind == "atom" and t.value.base == INTEGRAL for t in toks):
         return "body"
     if any(t.kind == "atom" and t.value.base == "m" and t.value.sub in ("", "i") and not t.value.bold for t in toks):
         return "single"
+    if any(t.kind == "atom" and t.value.base == "p" and (t.value.bold or t.value.text.startswith("\\vec"))
+           and not t.value.sub for t in toks):
+        return "single"         # 𝐋 = 𝐫 × 𝐩 with no sum: one particle's momentum, so one particle's 𝐋
     if any(t.kind == "atom" and t.value.sub in ("system", "textsystem") for t in toks):
         return "body"
     return state.system

@@ -194,6 +194,12 @@ class VectorParser(_Parser):
             framed = self._framed_rate(env)
             if framed is not None:
                 return framed
+        if tok is not None and tok.kind == "op" and tok.value == "(" and self._component_follows():
+            value = _as_value(self.paren(env))
+            axis = self._component_index()
+            if not _is_vector(value):
+                self.fail("a component of something that is not a vector")
+            return value[axis]               # (𝐀 × 𝐁)_x: a component of the bracketed vector
         if tok is not None and tok.kind == "op" and tok.value == "|":
             self.i += 1
             if self.at("begin"):
@@ -219,6 +225,41 @@ class VectorParser(_Parser):
                 return value
             self.i = start                              # not a derivative the model reads: a quotient
         return super().primary(env)
+
+    def _component_follows(self) -> bool:
+        """Whether the bracket opening here closes with an axis subscript, ``( … )_x``, ``( … )_{2}``."""
+        depth = 0
+        for k in range(self.i, len(self.toks)):
+            t = self.toks[k]
+            if t.kind == "op" and t.value in "([{":
+                depth += 1
+            elif t.kind == "op" and t.value in ")]}":
+                depth -= 1
+                if depth == 0:
+                    save, self.i = self.i, k + 1
+                    try:
+                        return self._component_index(peek=True) is not None
+                    finally:
+                        self.i = save
+        return False
+
+    def _component_index(self, peek: bool = False) -> int | None:
+        """The axis of a subscript ``_x`` or ``_{x}`` at this position (consumed unless ``peek``)."""
+        toks, k = self.toks, self.i
+        if not (k < len(toks) and toks[k].kind == "op" and toks[k].value == "_"):
+            return None
+        braced = k + 3 < len(toks) and toks[k + 1].kind == "op" and toks[k + 1].value == "{" \
+            and toks[k + 3].kind == "op" and toks[k + 3].value == "}"
+        t = toks[k + 2] if braced else (toks[k + 1] if k + 1 < len(toks) else None)
+        if t is None or t.kind not in ("atom", "num"):
+            return None
+        name = t.value if t.kind == "num" else (t.value.base if not (t.value.sub or t.value.bold or t.value.sup
+                                                                      or t.value.hat or t.value.dots) else "")
+        if name not in AXES:
+            return None
+        if not peek:
+            self.i = k + (4 if braced else 2)
+        return AXES[name]
 
     # time derivatives
     def _rate(self, env):

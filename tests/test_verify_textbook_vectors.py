@@ -1,0 +1,94 @@
+"""Vector statements as introductory textbooks write them: one particle's 𝐋 = 𝐫 × 𝐩 among sums over
+a body's particles, the book's own differential macro, a cross product by components, and the
+integrals of the free body stated as constants."""
+import kept_readings as kept
+
+HEAD = "A rigid body of particles $m_i$ at $\\mathbf{r}_i$ turns with $\\boldsymbol{\\omega}$.\n\n"
+BODY = "$$\\mathbf{L} = \\sum_i m_i \\mathbf{r}_i \\times (\\boldsymbol{\\omega} \\times \\mathbf{r}_i)$$\n\n"
+
+
+def verdicts(body: str, head: str = HEAD) -> dict:
+    out = {}
+    for c in kept.check_text(head + body):
+        out.setdefault(c.line, []).append(c.verdict)
+    return out
+
+
+def at(body: str, line: int, head: str = HEAD) -> set:
+    return set(verdicts(body, head).get(line, ()))
+
+
+def test_one_particles_momentum_without_an_index_speaks_of_that_particle_after_a_sum_over_the_body():
+    holds = BODY + "For one particle:\n\n$$\\mathbf{L} = \\mathbf{r} \\times \\mathbf{p}$$\n"
+    assert at(holds, 3) == {"holds"}
+    assert at(holds, 7) == {"holds"}
+    swapped = BODY + "For one particle:\n\n$$\\mathbf{L} = \\mathbf{p} \\times \\mathbf{r}$$\n"
+    assert at(swapped, 7) & {"typo", "fails"}
+
+
+def test_a_cross_product_by_components_holds_and_a_swapped_pair_fails():
+    rows = ("$$\\begin{aligned} (\\mathbf{A}\\times\\mathbf{B})_x &= A_yB_z - B_yA_z \\\\ "
+            "(\\mathbf{A}\\times\\mathbf{B})_{y} &= A_zB_x - B_zA_x \\end{aligned}$$\n")
+    assert at(rows, 3) == {"holds"}
+    assert at("$$(\\mathbf{A}\\times\\mathbf{B})_z = A_yB_x - B_yA_x$$\n", 3) == {"fails"}
+
+
+def test_a_component_of_a_scalar_in_brackets_is_not_read():
+    assert at("$$(\\mathbf{A}\\cdot\\mathbf{B})_x = A_x B_x$$\n", 3) <= {"unchecked"}
+
+
+def test_a_books_differential_macro_with_its_kerning_is_the_derivative():
+    head = HEAD + "\\newcommand{\\der}{\\operatorname{d\\!}}\n\n"
+    body = BODY + "$$\\frac{\\der\\mathbf{L}}{\\der t} = \\sum_i \\frac{\\der}{\\der t}(\\mathbf{r}_i\\times\\mathbf{p}_i)$$\n"
+    assert at(body, 7, head) == {"holds"}
+
+
+def test_upright_text_is_read_as_text_and_a_numbered_constant_as_a_constant():
+    from derive.lecture import source, statements
+    assert "\\text{N}" in source.normalize("15 \\textup{N}")
+    assert statements._CONST.search("\\text{constant \\#2}") and statements._CONST.search("\\text{const}")
+    assert not statements._CONST.search("\\text{constant torque}")
+
+
+FREE = "A free body, no torque, in its principal axes $x$, $y$, $z$.\n\n"
+
+
+def test_the_free_bodys_integrals_in_the_texts_components_hold():
+    body = ("$$L_x^2 + L_y^2 + L_z^2 = \\text{constant}$$\n\n"
+            "$$\\frac{1}{I_{xx}}L_x^2 + \\frac{1}{I_{yy}}L_y^2 + \\frac{1}{I_{zz}}L_z^2 = \\text{constant \\#2}$$\n")
+    assert at(body, 3, FREE) == {"holds"}
+    assert at(body, 5, FREE) == {"holds"}
+
+
+def test_a_quantity_the_free_body_does_not_conserve_is_never_judged():
+    body = "$$L_x^2 + 2 L_y^2 + L_z^2 = \\text{constant}$$\n"
+    assert at(body, 3, FREE) == {"unchecked"}
+
+
+def test_the_torque_on_a_system_is_the_sum_of_the_moments_of_the_forces_on_its_particles():
+    assert at("$$\\boldsymbol{\\tau} = \\sum_i \\mathbf{r}_i\\times\\mathbf{F}_i$$\n", 3) == {"holds"}
+    assert at("$$\\boldsymbol{\\tau} = \\sum_i \\mathbf{F}_i\\times\\mathbf{r}_i$$\n", 3) & {"typo", "fails"}
+
+
+KINETIC = ("$$\\begin{aligned} K &= \\sum_i \\frac{1}{2} m_i v_i^2 \\\\ "
+           "&= \\frac{1}{2} \\sum_i m_i (\\boldsymbol{\\omega} \\times \\mathbf{r}_i) \\cdot (\\boldsymbol{\\omega} \\times "
+           "\\mathbf{r}_i) \\end{aligned}$$\n\n")
+
+
+def test_a_letter_the_text_sets_to_a_sum_stands_for_it_in_the_rows_and_statements_that_follow():
+    body = KINETIC + ("$$\\begin{aligned} K &= \\frac{1}{2} \\sum_i m_i \\left[ \\mathbf{r}_i \\times (\\boldsymbol{\\omega} "
+                      "\\times \\mathbf{r}_i) \\right] \\cdot \\boldsymbol{\\omega} \\\\ &= \\frac{1}{2} \\mathbf{L} \\cdot "
+                      "\\boldsymbol{\\omega} \\end{aligned}$$\n")
+    assert "holds" in at(body, 3) and at(body, 5) == {"holds"}
+    slip = KINETIC + "$$K = \\mathbf{L} \\cdot \\boldsymbol{\\omega}$$\n"
+    assert at(slip, 5) & {"typo", "fails"}
+
+
+def test_a_letter_set_again_to_a_number_is_not_compared_with_its_earlier_expression():
+    assert not at(KINETIC + "$$K = 2$$\n", 5) & {"typo", "fails"}
+
+
+def test_one_component_set_to_a_constant_stays_a_setting_and_a_named_integral_is_compared_with_its_name():
+    assert at("$$\\omega_3 = \\Omega = \\text{const}$$\n", 3, FREE) == {"unchecked"}
+    slip = "$$\\sum_{i=1}^3 I_i \\omega_i^2 = T = \\text{const}$$\n"
+    assert at(slip, 3, FREE) & {"typo", "fails"}
