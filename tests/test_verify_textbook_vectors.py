@@ -92,3 +92,13 @@ def test_one_component_set_to_a_constant_stays_a_setting_and_a_named_integral_is
     assert at("$$\\omega_3 = \\Omega = \\text{const}$$\n", 3, FREE) == {"unchecked"}
     slip = "$$\\sum_{i=1}^3 I_i \\omega_i^2 = T = \\text{const}$$\n"
     assert at(slip, 3, FREE) & {"typo", "fails"}
+
+
+def test_a_link_left_unchecked_for_a_symbol_of_the_texts_names_that_symbol():
+    """A link the reader leaves unchecked because one side holds a symbol the text never tied to
+    the body says which symbol (and nothing else)."""
+    text = ("A body turns about the fixed $z$ axis, $\\vec\\omega = \\omega \\hat k$; particle $i$ has "
+            "mass $m_i$ at distance $r_i$ from the axis.\n\n"
+            "$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n")
+    loose = [c.why for c in kept.check_text(text) if "has not tied to the body" in c.why]
+    assert loose == ["involves J, which the text has not tied to the body"]

@@ -217,7 +217,7 @@ class AlgebraStatements:
         first = reading.members[0]
         if first[ref].generics != first[k].generics:
             loose = sorted(first[ref].generics ^ first[k].generics)
-            return "unchecked", f"involves 𝐚 = {', '.join(loose)}, which the text has not tied to the body"
+            return "unchecked", f"involves {', '.join(loose)}, which the text has not tied to the body"
         a, b = first[ref], first[k]
         if (a.law and not b.law and not b.rated) or (b.law and not a.law and not a.rated):
             return "unchecked", ("a torque or a force set equal to an expression without a rate: a law or an "
