@@ -102,3 +102,13 @@ def test_a_link_left_unchecked_for_a_symbol_of_the_texts_names_that_symbol():
             "$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n")
     loose = [c.why for c in kept.check_text(text) if "has not tied to the body" in c.why]
     assert loose == ["involves J, which the text has not tied to the body"]
+
+
+def test_a_bold_alpha_with_a_particles_index_is_not_the_bodys_angular_acceleration():
+    """𝛂ᵢ is particle i's (an acceleration a text names so), not the body's 𝛂: a display that
+    equates −mᵢ𝛂ᵢ with the in-plane inertial force is left unread, never judged against −mᵢ𝛂."""
+    text = ("A body turns about the fixed $z$ axis, $\\vec\\omega = \\omega \\hat k$, with angular "
+            "acceleration $\\alpha$; particle $i$ has mass $m_i$ at $(x_i, y_i)$.\n\n"
+            "$$\\vec F_i = - m_i \\vec\\alpha_i = m_i (\\alpha y_i + \\omega^2 x_i) \\hat i "
+            "+ m_i (\\omega^2 y_i - \\alpha x_i) \\hat j$$\n")
+    assert {c.verdict for c in kept.check_text(text) if "alpha_i" in c.latex} <= {"unchecked"}

@@ -301,6 +301,8 @@ class Algebra:
             p.rated = True
             if not bold and not sub and axis is not None:
                 return WD[axis]
+            if bold and (sub.isdigit() or sub in ("i", "j", "k", "n")):
+                return None                  # 𝛂ᵢ, 𝛂₁: a particle's or another body's, not this body's rate
             return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
         if a.hat:
             return None
