@@ -10,10 +10,11 @@ matrix R_lG,xyz = R_lG,z R_lG,y R_lG,x; the zxz sequence is R_lG,z(gamma) R_lG,x
 Every check is built from these definitions (matrix exponentials of the axes' cross-product
 matrices), never from the notebook's later displays.
 """
-import pathlib
 import sys
 
 import sympy as sp
+
+import truth_table
 
 CHECKS = {}
 
@@ -112,16 +113,4 @@ assert not zero(GZ * GY * GX - GX * GY * GZ)
 LINES = [31, 39, 51, 99, 131, 142, 153, 176, 187, 198, 219, 264, 311, 331, 353, 374, 398, 425]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        "bmc-duarte-rotation-matrices-euler-angles-3d.truth.toml").read_text())["display"]
-    assert [r["line"] for r in table] == LINES
-    bad = 0
-    for row in table:
-        key = row["line"]
-        comp = "not a claim" if key not in CHECKS else ("holds" if CHECKS[key] else "slip")
-        want = row["verdict"]
-        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

@@ -7,10 +7,11 @@ inertia matrix I_jk of L_j = sum_k I_jk omega_k; K = sum m_i v_i^2 / 2. The shoe
 torque-free. Small rotations compose to first order as vectors (the text's 10-degree example).
 Every check is built here from these definitions, never from the text's later displays.
 """
-import pathlib
 import sys
 
 import sympy as sp
+
+import truth_table
 
 CHECKS = {}
 
@@ -117,16 +118,4 @@ assert sp.simplify((Lb[0] ** 2 * I1 + Lb[1] ** 2 * I2 + Lb[2] ** 2 * I3).diff(t)
 LINES = [45, 57, 61, 70, 82, 93, 99, 107, 115, 121, 128, 137, 143, 154, 158]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        "crowell-lm-angular-momentum-three-dimensions.truth.toml").read_text())["display"]
-    assert [r["line"] for r in table] == LINES
-    bad = 0
-    for row in table:
-        key = row["line"]
-        comp = "not a claim" if key not in CHECKS else ("holds" if CHECKS[key] else "slip")
-        want = row["verdict"]
-        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

@@ -9,10 +9,11 @@ of inertia J_xz = sum m_i x_i z_i, J_yz = sum m_i y_i z_i; the inertial (d'Alemb
 equations put them so), l_AB = l_OA + l_OB. Every check is built from these definitions with a
 concrete set of particles or generic symbols, never from the post's later displays.
 """
-import pathlib
 import sys
 
 import sympy as sp
+
+import truth_table
 
 CHECKS = {}
 
@@ -158,16 +159,4 @@ LINES = [24, 28, 32, 40, 44, 48, 52, 62, 73, 77, 81, 87, 91, 97, 101, 107, 111, 
          154, 161, 169, 177, 181, 185, 200, 208, 222]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        "mmmhj2-blog-rigid-body-fixed-axis-inertia-products-zh.truth.toml").read_text())["display"]
-    assert [r["line"] for r in table] == LINES
-    bad = 0
-    for row in table:
-        key = row["line"]
-        comp = "not a claim" if key not in CHECKS else ("holds" if CHECKS[key] else "slip")
-        want = row["verdict"]
-        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

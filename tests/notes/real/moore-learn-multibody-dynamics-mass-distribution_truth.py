@@ -10,11 +10,12 @@ same with the sums read as integrals of rho dV (the checks use particles: a sum 
 particles stands for the integral's integrand). Every check is built here from these definitions,
 never from the text's later displays.
 """
-import pathlib
 import sys
 
 import numpy as np
 import sympy as sp
+
+import truth_table
 
 CHECKS = {}
 
@@ -120,16 +121,4 @@ LINES = [21, 27, 34, 42, 48, 54, 60, 69, 76, 85, 92, 98, 104, 114, 121, 131, 144
          221, 231, 242, 252, 258, 269, 281, 288, 302, 317, 324]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        "moore-learn-multibody-dynamics-mass-distribution.truth.toml").read_text())["display"]
-    assert [r_["line"] for r_ in table] == LINES
-    bad = 0
-    for row in table:
-        key = row["line"]
-        comp = "not a claim" if key not in CHECKS else ("holds" if CHECKS[key] else "slip")
-        want = row["verdict"]
-        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

@@ -16,9 +16,10 @@ taken as complex principal roots so that a radicand of the wrong sign shows. Sym
 only.
 """
 import sys
-import pathlib
 import mpmath as mp
 import sympy as sp
+
+import truth_table
 
 mp.mp.dps = 30
 CHECKS = {}
@@ -246,16 +247,4 @@ LINES = [19, 26, 35, 46, 59, 64, 71, 80, 89, 100, 109, 118, 129, 138, 147, 153, 
          194, 199, 208, 212, 217, 226, 234, 241, 246, 256, 260, 267]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        'principia-celledoni-free-body-elliptic-solution.truth.toml').read_text())['display']
-    assert [r['line'] for r in table] == LINES
-    bad = 0
-    for row in table:
-        key = row['line']
-        comp = 'not a claim' if key not in CHECKS else ('holds' if CHECKS[key] else 'slip')
-        want = row['verdict']
-        agree = comp == want or (comp == 'slip' and want in ('typo', 'fails'))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

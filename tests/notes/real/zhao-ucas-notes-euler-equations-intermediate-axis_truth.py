@@ -8,10 +8,11 @@ upright, \\mathrm I_{11}) and external torque M. The intermediate-axis section i
 I_11 > I_22 > I_33 and a spin Omega about one principal axis, the other components small (first
 order). Every check is built here from these definitions, never from the text's later displays.
 """
-import pathlib
 import sys
 
 import sympy as sp
+
+import truth_table
 
 CHECKS = {}
 
@@ -184,16 +185,4 @@ LINES = [21, 26, 29, 36, 44, 51, 54, 63, 66, 69, 72, 81, 90, 97, 104, 107, 110, 
          176, 179, 184, 187]
 
 if __name__ == "__main__":
-    import tomllib
-    table = tomllib.loads(pathlib.Path(__file__).with_name(
-        "zhao-ucas-notes-euler-equations-intermediate-axis.truth.toml").read_text())["display"]
-    assert [r["line"] for r in table] == LINES
-    bad = 0
-    for row in table:
-        key = row["line"]
-        comp = "not a claim" if key not in CHECKS else ("holds" if CHECKS[key] else "slip")
-        want = row["verdict"]
-        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
-        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
-        bad += not agree
-    sys.exit(1 if bad else 0)
+    sys.exit(truth_table.compare(__file__, CHECKS, LINES))

@@ -1,0 +1,29 @@
+"""The check every truth script ends with: its own derivation's verdicts against its table.
+
+A truth script fills ``CHECKS`` (display line → the claim holds) from its own SymPy derivation and
+lists ``LINES``, the lines of its displays; run as a program, it compares them with
+``<slug>.truth.toml`` beside it and exits 1 on any disagreement. Shared by the scripts so that each
+holds only its derivation; it reads no part of the reader (nothing from ``derive``).
+"""
+from __future__ import annotations
+
+import pathlib
+import tomllib
+
+
+def compare(script: str, checks: dict, lines: list) -> int:
+    """Print one line per display (computed verdict, the table's, OK or MISMATCH); the exit status:
+    0 when every row agrees (a computed slip agrees with ``typo`` and ``fails``), else 1."""
+    path = pathlib.Path(script)
+    table = tomllib.loads(path.with_name(path.name.removesuffix("_truth.py") + ".truth.toml")
+                          .read_text())["display"]
+    assert [r["line"] for r in table] == lines
+    bad = 0
+    for row in table:
+        key = row["line"]
+        comp = "not a claim" if key not in checks else ("holds" if checks[key] else "slip")
+        want = row["verdict"]
+        agree = comp == want or (comp == "slip" and want in ("typo", "fails"))
+        print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
+        bad += not agree
+    return 1 if bad else 0
