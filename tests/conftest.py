@@ -34,7 +34,7 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 from derive.runtime import cache as cache_folder  # noqa: E402  (after DERIVE_CACHE is set)
 
 # The suite's kernels are compiled at -O1 (DERIVE_CFLAGS, after derive's -O3): the same IEEE
-# arithmetic (ISO C, no contraction) at a third of the compile time. Tests of what the optimiser
+# arithmetic (ISO C, no contraction) for much less compiling. Tests of what the optimiser
 # could break (the vector and lanes builds, bit for bit) carry the mark ``optimised`` and
 # compile with derive's own flags.
 os.environ.setdefault("DERIVE_CFLAGS", "-O1")
