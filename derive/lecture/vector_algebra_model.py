@@ -387,6 +387,9 @@ class Algebra:
             if bold and not sub:
                 p.generics.add(base)
                 return comps
+            if bold and sub in POINT_LABELS and base not in "rvpIL":   # 𝐌_cm, 𝐍_O: about a point, a vector of the text's
+                p.generics.add(base + sub)
+                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
             if bold and len(sub) == 1 and sub in "abcdefgh" and not a.sup and sub != env.get("index") \
                     and base not in "rvp":      # 𝐧_a, a vector of the text's named by a letter (Kane's n̂_a)
                 p.generics.add(base + sub)
