@@ -161,3 +161,19 @@ def test_a_product_with_a_matrix_of_the_text_beside_another_term_is_unchecked_no
             "$$T^1 = R\\, T^u + Q$$\n")
     assert verdicts(text)[5] == {"unchecked"}
     assert "failed" not in whys(text)[5] and "no matrix" in whys(text)[5]
+
+
+COLUMNS = ("$$\\begin{bmatrix} v_1 \\\\ v_2 \\\\ v_3 \\end{bmatrix}_A \\otimes \\begin{bmatrix} w_1 \\\\ w_2 \\\\ w_3 "
+           "\\end{bmatrix}_A = \\begin{bmatrix} v_1w_1 & v_1w_2 & v_1w_3 \\\\ v_2w_1 & v_2w_2 & v_2w_3 \\\\ "
+           "v_3w_1 & v_3w_2 & v_3w_3 \\end{bmatrix}_A$$\n")
+
+
+def test_the_outer_product_of_two_written_columns_in_one_frame_is_their_matrix():
+    assert verdicts("# Notes\n\n" + COLUMNS)[3] == {"holds"}
+    assert "holds" not in verdicts("# Notes\n\n" + COLUMNS.replace("v_3w_1 &", "v_1w_3 &"))[3]
+
+
+def test_written_matrices_labelled_with_two_frames_are_not_compared():
+    text = "# Notes\n\n" + COLUMNS.replace("v_3w_3 \\end{bmatrix}_A", "v_3w_3 \\end{bmatrix}_B")
+    assert verdicts(text)[3] == {"unchecked"}
+    assert "two frames (A, B)" in whys(text)[3]

@@ -13,6 +13,7 @@ from derive.lecture.vocabulary import (
     DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
+from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -119,6 +120,9 @@ class _Parser:
                 value = self.dotted(value, self.operand(env))
             elif self.at("cmd", "times"):
                 self.fail("vector products (×) are not read")
+            elif self.at("cmd", "otimes"):
+                self.i += 1
+                value = outer(value, self.operand(env), self.peek())
             elif self.at("op", "/"):
                 self.i += 1
                 value = value / self.operand(env)
@@ -256,7 +260,9 @@ class _Parser:
                 return sp.sqrt(_dot(OMEGA_VEC, OMEGA_VEC))     # |𝛚|, |ω|: the angular velocity's magnitude
             return sp.Abs(value)
         if tok.kind == "begin":
-            return self.matrix(env)
+            value = self.matrix(env)
+            self.i += frame_label(self.toks, self.i, self.__dict__.setdefault("frames", set()))
+            return value
         if tok.kind == "cmd":
             name = tok.value
             self.i += 1

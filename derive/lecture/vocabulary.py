@@ -338,7 +338,7 @@ def scan(s: str) -> list[Tok]:
                 i = j
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
-                                             "times", "pm", "mp", "infty", "ldots", "cdots", "dots"):
+                                             "times", "otimes", "pm", "mp", "infty", "ldots", "cdots", "dots"):
                 toks.append(Tok("cmd", name, i))
                 i = m.end()
                 continue
