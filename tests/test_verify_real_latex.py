@@ -222,3 +222,9 @@ def test_an_accented_letter_is_never_the_letter_without_its_accent(accent):
             "+ \\frac{1}{2} I_3 \\omega_3^2 + 1$$\n")
     claims = kept.check_text(text)
     assert [c.verdict for c in claims] == ["unchecked"] and "defines the text's symbol" in claims[0].why
+
+
+def test_a_dot_product_of_the_bodys_vectors_with_scalar_factors_is_read():
+    holds = "# Notes\n\n$$\\boldsymbol{\\omega} \\cdot \\frac{\\mathbf{L}}{L} = \\frac{2T}{L}$$\n"
+    assert dict(verdicts(holds))[3] == "holds"
+    assert dict(verdicts(holds.replace("\\frac{2T}{L}", "\\frac{T}{L}")))[3] in ("typo", "fails")
