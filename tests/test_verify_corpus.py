@@ -66,7 +66,7 @@ SHORT = {
         "in displays written in those macros",
 }
 
-FLOOR = {"checked": 372, "slips_flagged": 39, "holds_flagged": 0}
+FLOOR = {"checked": 373, "slips_flagged": 39, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
