@@ -69,3 +69,25 @@ def test_a_wrong_moment_or_factor_in_the_fast_tops_rate_is_never_called_right():
                   "\\frac{I_z\\dot{\\psi}}{mgd}"):
         got = verdicts(f"$$\\dot{{\\phi}} = {wrong}$$")
         assert "holds" not in [v for v, _ in got], (wrong, got)
+
+
+def test_a_moment_shifted_by_m_d_squared_is_the_transverse_moment_about_the_pivot():
+    names = nm.Names()
+    names.symbols[("d", "")] = "centre-of-mass distance"
+    formula_names.learn(names, "$V = mgd\\cos\\theta$, and the pivot's moment $I_O = I_x +md^2$")
+    assert names.symbols[("I", "O")] == "transverse moment"
+    assert ("I", "x") not in names.symbols          # the moment about the centre of mass stays the text's
+    valued = nm.Names()
+    valued.symbols[("d", "")] = "centre-of-mass distance"
+    formula_names.learn(valued, "$V = mgd$, $I_O = I_x + md^2$ and $I_O = 0.1765$")
+    assert ("I", "O") not in valued.symbols         # a moment worked out in numbers is the text's own
+
+
+def test_the_tilt_equation_in_the_pivots_moment_holds_and_a_slip_in_it_is_never_called_right():
+    text = HEAD.replace("For a fast spin", "The moment about the pivot is $I_O = I_x +md^2$.\n\nFor a fast spin")
+    eq = ("$$I_O\\ddot{\\theta} - \\dot{\\phi}^2\\sin\\theta\\cos\\theta(I_O-I_z)"
+          "+\\dot{\\phi}\\dot{\\psi}I_z\\sin\\theta-mgd\\sin\\theta = 0$$")
+    good = [c.verdict for c in kept.check_text(text + eq + "\n") if c.line >= 13]
+    assert good == ["holds"], good
+    bad = [c.verdict for c in kept.check_text(text + eq.replace("-mgd", "+mgd") + "\n") if c.line >= 13]
+    assert "holds" not in bad, bad

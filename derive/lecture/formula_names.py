@@ -29,6 +29,12 @@ _WEIGHT = re.compile(r"(?<![\\A-Za-z_^])(?<!_\{)(?<!\^\{)([mM])\s*(?:\\,|\\;|\\c
 _PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?![\w{^])")
 
 
+_SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
+_SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
+                    r"\s*(?=$|[,;.]|\\\\)")
+_NUMBER = re.compile(r"=\s*-?\d+(?:\.\d+)?\s*(?:$|[,;]|\\\\)")
+
+
 def _formulas(body: str):
     """(line, LaTeX) of every formula of the text, inline or displayed."""
     for m in _MATH.finditer(body):
@@ -49,6 +55,12 @@ def learn(names: nm.Names, body: str) -> None:
             if _unnamed(names, key):
                 nm._put(names.symbols, key, "mass", False)
                 names.where[key] = f"line {line}"
+    _axial_moment(names, formulas)
+    _pivot_moments(names, formulas)
+
+
+def _axial_moment(names: nm.Names, formulas) -> None:
+    """``I_x=I_y`` beside ``I_z``: the axial moment (see the module docstring)."""
     pairs = {(m.group(1), frozenset((m.group(2), m.group(3))), line)
              for line, tex in formulas for m in _PAIR.finditer(tex) if m.group(2) != m.group(3)}
     if len({(letter, pair) for letter, pair, _ in pairs}) != 1:
@@ -62,3 +74,19 @@ def learn(names: nm.Names, body: str) -> None:
     if written and not own and _unnamed(names, key):
         nm._put(names.symbols, key, "axial moment", False)
         names.where[key] = f"line {line}"
+
+
+def _pivot_moments(names: nm.Names, formulas) -> None:
+    """``I_O = I_x + md^2``: the moment about the pivot (see the module docstring)."""
+    for line, tex in formulas:
+        for m in _SHIFT.finditer(tex):
+            moment, mass, arm = nm._atoms(m.group(1)), m.group(3), m.group(4)
+            if len(moment) != 1 or names.symbols.get((mass, "")) != "mass" or \
+                    names.symbols.get((arm, "")) != "centre-of-mass distance":
+                continue
+            key = (moment[0].base, moment[0].sub)
+            head = rf"(?:^|\\\\|[,;&])\s*{re.escape(m.group(1))}\s*&?\s*="
+            valued = any(re.search(head, t) and _NUMBER.search(t) for _, t in formulas)
+            if not valued and _unnamed(names, key):
+                nm._put(names.symbols, key, "transverse moment", False)
+                names.where[key] = f"line {line}"
