@@ -312,7 +312,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
         if self._body_axes_first(line, piece, text):
             return
         self._rates = getattr(self, "_rates", None) or OwnRates()   # a worked example's numbers, ḟ(t) of its f(t)
-        for kind, (verdict, why) in [*(("arithmetic", a) for a in arithmetic(text, self.vocab)),
+        given = {k: v for table in (self.ctx.subs, self.ctx.defs) for k, v in table.items()
+                 if isinstance(k, sp.Symbol) and isinstance(v, sp.Expr) and v.is_number}   # r = 0.1 given
+        for kind, (verdict, why) in [*(("arithmetic", a) for a in arithmetic(text, self.vocab, given)),
                                      *(("rate", r) for r in self._rates.check(line, text, self.vocab))]:
             self._add(line, piece, kind, verdict, why)
         try:
