@@ -70,3 +70,12 @@ def test_a_scalar_product_set_to_zero_is_the_texts_perpendicularity_not_a_slip()
 def test_the_rate_of_a_squared_length_written_alone_is_left_unchecked_not_an_error():
     claims = kept.check_text("$$\\frac{d}{dt}|\\vec{L}|^2 = 2 \\vec{L} \\cdot \\frac{d\\vec{L}}{dt}$$\n")
     assert [c.verdict for c in claims] == ["unchecked"]
+
+
+def test_a_member_in_symbols_the_text_gave_numbers_is_worked_out_and_only_ever_confirmed():
+    head = "A disk on a support:\n\n- $r=0.1~m$\n"
+    good = kept.check_text(head + "- $d = 2r = 0.2~m$\n")
+    assert any(c.kind == "arithmetic" and c.verdict == "holds" and "values the text gave" in c.why for c in good)
+    off = kept.check_text(head + "- $d = 2r = 0.5~m$\n")        # r may mean something else there
+    assert not any(c.kind == "arithmetic" for c in off)
+    assert not any(c.verdict in ("typo", "fails") for c in off)

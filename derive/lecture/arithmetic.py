@@ -6,7 +6,10 @@ members of a chain that are plain numbers: ``=`` and ``≈`` hold when the two a
 the text writes (one unit in the last place it prints, so a rounded or truncated value holds), fail
 when they differ by more than a few per cent, and are left unchecked in between. The symbols'
 values are not used: a text's later "effective" value of a symbol (``L_{\\text{eff}}``) cannot
-turn a correct line into a false alarm.
+turn a correct line into a false alarm. A member in symbols the text has set to numbers
+(``r = 0.1`` given, then ``d = 2r = 0.2``) is worked out with those values only to confirm its link
+to a plain number: the link holds when they agree to the digits written and gets no verdict
+otherwise, so a value the text meant differently there can never make it fail.
 
 Takes a formula in the reader's dialect (`source.normalize`) and the reader's parser; gives the
 verdicts of the numeric links. Imports nothing of derive but the lecture's LaTeX reader and its statement splitter.
@@ -64,12 +67,31 @@ def _last_place(piece: str) -> float:
     return 10.0 ** -(len(digits.split(".")[1]) if "." in digits else 0)
 
 
-def arithmetic(text: str, vocab=None) -> list[tuple[str, str]]:
+def _given(piece: str, vocab, given: dict):
+    """A member's value with the numbers the text gave its symbols put in, or None."""
+    if not given or not re.search(r"[A-Za-z]", piece):
+        return None
+    try:
+        parsed = lx.parse(piece, vocab)
+    except (lx.NotRead, lx.Words, ValueError, TypeError):
+        return None
+    if len(parsed.members) != 1 or not isinstance(parsed.members[0].value, sp.Expr):
+        return None
+    value = parsed.members[0].value.xreplace(given)
+    if value.free_symbols:
+        return None
+    number = complex(sp.N(value, 30))
+    return number.real if abs(number.imag) < 1e-12 else None
+
+
+def arithmetic(text: str, vocab=None, given: dict | None = None) -> list[tuple[str, str]]:
     """The verdicts (verdict, why) of the links between neighbouring numeric members of a chain.
 
     ``a = b`` and ``a ≈ b`` hold when ``|a - b|`` is at most one unit in the last place printed on
     either side (plus a relative 1e-9); they fail when the two differ by more than 3 % and by more
-    than three such units; in between the link is left unchecked.
+    than three such units; in between the link is left unchecked. ``given`` (a symbol → the number
+    the text set it to) works out a member in those symbols next to a plain number: such a link
+    holds when the two agree to the digits written, and is not judged otherwise.
     """
     split = _members(text)
     if split is None:
@@ -79,6 +101,15 @@ def arithmetic(text: str, vocab=None) -> list[tuple[str, str]]:
     out = []
     for k, rel in enumerate(rels):
         a, b = values[k], values[k + 1]
+        if (a is None) != (b is None):
+            worked = _given(pieces[k] if a is None else pieces[k + 1], vocab, given)
+            number = b if a is None else a
+            if worked is not None and abs(worked - number) <= _last_place(pieces[k + 1 if a is None else k]) \
+                    + 1e-9 * max(abs(worked), abs(number), 1.0):
+                shown = f"{pieces[k].strip()} {rel} {pieces[k + 1].strip()}"
+                out.append(("holds", f"the arithmetic {shown}: {worked:.10g} with the values the text gave, "
+                                     f"against {number:.10g}, to the digits written"))
+            continue
         if a is None or b is None:
             continue
         ulp = _last_place(pieces[k]) + _last_place(pieces[k + 1])

@@ -30,6 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from derive.errors import SceneError
+from derive.lecture import formula_names
 from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import source
@@ -270,6 +271,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None)
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
+    formula_names.learn(notes.names, body)
     notes.body = body
     starts = [0]
     for m in re.finditer("\n", body):

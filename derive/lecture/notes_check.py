@@ -51,6 +51,7 @@ from derive.lecture.chain_links import ChainLinks
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.fast_top import FastTop
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
@@ -115,7 +116,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -311,7 +312,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
         if self._body_axes_first(line, piece, text):
             return
         self._rates = getattr(self, "_rates", None) or OwnRates()   # a worked example's numbers, ḟ(t) of its f(t)
-        for kind, (verdict, why) in [*(("arithmetic", a) for a in arithmetic(text, self.vocab)),
+        given = {k: v for table in (self.ctx.subs, self.ctx.defs) for k, v in table.items()
+                 if isinstance(k, sp.Symbol) and isinstance(v, sp.Expr) and v.is_number}   # r = 0.1 given
+        for kind, (verdict, why) in [*(("arithmetic", a) for a in arithmetic(text, self.vocab, given)),
                                      *(("rate", r) for r in self._rates.check(line, text, self.vocab))]:
             self._add(line, piece, kind, verdict, why)
         try:
@@ -499,7 +502,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FreeIn
                     self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
                 return
         oriented = None if small is not None else self._oriented(line, val, targets, seed) or \
-            self._on_the_motion(val, targets, seed)
+            self._on_the_motion(val, targets, seed) or self._fast_top(label, val)
         if oriented:
             self._confirm(value, parsed)
             self._add(line, piece, kind, "holds", oriented)

@@ -4,7 +4,10 @@ between two numbers.
 ``0.04050\\text{ kg}\\cdot\\text{m}^2`` is the number 0.04050: a unit is a whitelisted name in
 ``\\text{…}``/``\\mathrm{…}`` (with ``/``, powers, ``\\cdot`` or spaces between names) right after a
 digit, so ``r_{\\text{cm}}`` and words such as ``\\text{constante}`` stay as they are. ``10{,}000`` is
-10000 and ``10{,}000 \\times 2\\pi`` a product of numbers. Takes and gives LaTeX; imports nothing.
+10000 and ``10{,}000 \\times 2\\pi`` a product of numbers. A unit typed in plain italic letters after a tie
+``~`` after a number or a closed group, at the end of a member, ``m=0.1~kg``, ``\\frac{mgd}{I_z\\dot{\\psi}}~\\frac{rad}{s}``, ``\\frac{2\\pi}{\\dot{\\phi}}~s``
+(as notebooks write them), is dropped too: the tie sets a unit apart from the formula, which a product
+of symbols never needs. Takes and gives LaTeX; imports nothing.
 """
 from __future__ import annotations
 
@@ -15,6 +18,11 @@ _UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|\\,|\s)\s*" + _U
 _UNIT_TOKEN = (r"\\(?:text|mathrm|mbox|textrm)\s*\{\s*" + _UNIT_EXPR + r"\s*\}(?:\s*\^\s*(?:\{\s*-?\d+\s*\}|-?\d))?")
 _UNITS = re.compile(r"(?<=\d)(?:\s|\\,|\\;|~)*" + _UNIT_TOKEN + r"(?:\s*(?:\\cdot|\\,|\s)\s*" + _UNIT_TOKEN + r")*")
 """A unit, or a product of units, right after a number: ``2.50\\text{ kg}``, ``0.04\\text{ kg}\\cdot\\text{m}^2``."""
+_PLAIN_UNIT = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
+_TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\frac\s*\{\s*" + _PLAIN_UNIT + r"\s*\}\s*\{\s*" + _PLAIN_UNIT + r"\s*\})"
+                        r"\s*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text)")
+"""A unit in plain letters after a tie that follows a number or a closing brace, closing a member:
+``0.1~kg``, ``}~\\frac{rad}{s}``, ``}~s`` (``a~s`` stays a product)."""
 _THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
 _NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
 
@@ -24,4 +32,5 @@ def plain_numbers(latex: str) -> str:
     between two numbers read as a product."""
     latex = _THOUSANDS.sub("", latex)
     latex = _UNITS.sub(" ", latex)
+    latex = _TIED_UNIT.sub(" ", latex)
     return _NUMBER_TIMES.sub(r" \\cdot ", latex)

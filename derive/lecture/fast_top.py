@@ -1,0 +1,62 @@
+"""The fast top's precession rate: the gyroscopic approximation as texts state it.
+
+A heavy symmetric top precessing steadily (tilt β constant) obeys ∂L/∂β = 0 at β̇ = β̈ = 0, a
+quadratic in the precession rate α̇. For a fast spin γ̇ its slow root is, to leading order in 1/γ̇,
+
+    α̇ ≈ M g l / (I₃ γ̇)   (= M g l / p_γ, the same to that order),
+
+which texts write as an equality ("φ̇ = mgd/(I_z ψ̇)", "Ω = Mgr/(Iω)") after saying the spin is fast.
+Takes: the claim's value for the precession rate, resolved by the notes checker. Gives: the mixin
+`FastTop` of `derive.lecture.notes_check.Checker`, whose `_fast_top` says why such a claim holds
+(to leading order for a fast spin), or None; anything else — a wrong moment, a missing factor —
+is judged as before.
+
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, SymPy.
+"""
+from __future__ import annotations
+
+import functools
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.comparing import free
+from derive.symbolic.lagrangian import I3
+
+_S = sp.Symbol("fast_spin", positive=True)
+_C = sp.Symbol("fast_lead")
+
+
+@functools.lru_cache(maxsize=None)
+def slow_precession_lead(force, alpha_d, gamma_d):
+    """c in α̇ = c/γ̇ + O(1/γ̇³), the slow root of the steady-precession condition ``force`` = 0
+    (∂L/∂β at β̇ = 0) for a fast spin γ̇; None when the condition has no such root."""
+    at = sp.expand(force.xreplace({gamma_d: _S, alpha_d: _C / _S}))
+    lead = sp.limit(at, _S, sp.oo)
+    if free(lead) & {_S} or not lead.has(_C):
+        return None
+    roots = sp.solve(lead, _C)
+    return roots[0] if len(roots) == 1 and roots[0] != 0 else None
+
+
+class FastTop:
+    """Mixin of the checker; uses ``self.d`` (the derivation) and ``self.tex``."""
+
+    def _fast_top(self, label, val) -> str | None:
+        """Why ``label = val`` holds as the fast top's precession rate, or None."""
+        rot = self.d.rot
+        if label is not rot.alpha_d or isinstance(val, sp.MatrixBase):
+            return None
+        spin = {rot.gamma_d: _S, lx.p_gamma: I3 * _S, lx.W[self.vocab.axial]: _S}
+        if not free(val) & set(spin) or free(val) & {rot.alpha_d, rot.beta_d}:
+            return None
+        c = slow_precession_lead(self.d.steady_force, rot.alpha_d, rot.gamma_d)
+        if c is None:
+            return None
+        lead = sp.limit(sp.expand(val.xreplace(spin) * _S), _S, sp.oo)
+        if lead == 0 or free(lead) & {_S} or sp.simplify(lead - c) != 0:
+            return None
+        spun, tilt = self.tex(rot.gamma_d), self.tex(rot.beta)
+        return (f"the fast top's slow precession: to leading order in 1/{spun}, the steady-precession "
+                f"condition ∂L/∂{tilt} = 0 gives {self.tex(rot.alpha_d)} = {self.tex(c / rot.gamma_d)} "
+                f"(holds if the spin {spun} is fast)")

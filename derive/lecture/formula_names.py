@@ -1,0 +1,92 @@
+"""Names a text gives its symbols in its formulas rather than in words.
+
+Takes: the rendered text (`derive.lecture.source.rendered`) and the `Names` the prose gave
+(`derive.lecture.names.learn`). Gives: `learn`, which adds, for the whole text and only where
+neither the prose nor the front matter named the symbol:
+
+* the mass from a weight: a plain ``m`` or ``M`` written right before the gravitational
+  acceleration ``g`` (``mgd``, ``M g l``, ``m\\,g``) in any formula is the body's mass, as every
+  heavy-top text writes its potential m g z and its torque m g d sin θ;
+* the axial moment from the symmetric pair: a text that states its moments about the body's x and
+  y axes equal, ``I_x=I_y``, and writes the third, ``I_z``, has told which axis is the symmetry
+  axis — ``I_z`` is the axial moment, the same about the centre of mass and about a pivot on that
+  axis. The equal pair is not bound (the transverse moment depends on the point it is taken about,
+  ``I_O = I_x + md^2``), nor is a moment the text gives a formula or a value for (``I_z = \frac{1}{2}
+  m R^2``: its own quantity, checked as it defines it). Numbered moments need no rule: I₃ is the
+  axial one already.
+
+May import: :mod:`derive.lecture.names`.
+"""
+from __future__ import annotations
+
+import re
+
+from derive.lecture import names as nm
+
+_MATH = re.compile(r"\$\$(.+?)\$\$|(?<![\\$])\$([^$]+?)(?<!\\)\$|\\\[(.+?)\\\]|"
+                   r"\\begin\{(equation|align|eqnarray|gather|multline)\*?\}(.+?)\\end\{\4\*?\}", re.S)
+_WEIGHT = re.compile(r"(?<![\\A-Za-z_^])(?<!_\{)(?<!\^\{)([mM])\s*(?:\\,|\\;|\\cdot|\\ )?\s*g(?![a-z]{2})")
+_PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?![\w{^])")
+
+
+_SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
+_SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
+                    r"\s*(?=$|[,;.]|\\\\)")
+_NUMBER = re.compile(r"=\s*-?\d+(?:\.\d+)?\s*(?:$|[,;]|\\\\)")
+
+
+def _formulas(body: str):
+    """(line, LaTeX) of every formula of the text, inline or displayed."""
+    for m in _MATH.finditer(body):
+        tex = next(g for g in (m.group(1), m.group(2), m.group(3), m.group(5)) if g is not None)
+        yield body.count("\n", 0, m.start()) + 1, tex
+
+
+def _unnamed(names: nm.Names, key) -> bool:
+    return key not in names.symbols and (key[0], "plain" if not key[1] else "vector") not in names.letters
+
+
+def learn(names: nm.Names, body: str) -> None:
+    """Add to ``names`` the names the text's formulas give (see the module docstring)."""
+    formulas = list(_formulas(body))
+    for line, tex in formulas:
+        for m in _WEIGHT.finditer(tex):
+            key = (m.group(1), "")
+            if _unnamed(names, key):
+                nm._put(names.symbols, key, "mass", False)
+                names.where[key] = f"line {line}"
+    _axial_moment(names, formulas)
+    _pivot_moments(names, formulas)
+
+
+def _axial_moment(names: nm.Names, formulas) -> None:
+    """``I_x=I_y`` beside ``I_z``: the axial moment (see the module docstring)."""
+    pairs = {(m.group(1), frozenset((m.group(2), m.group(3))), line)
+             for line, tex in formulas for m in _PAIR.finditer(tex) if m.group(2) != m.group(3)}
+    if len({(letter, pair) for letter, pair, _ in pairs}) != 1:
+        return                      # no pair, or pairs that disagree: no axis is told
+    letter, _, line = next(iter(pairs))
+    third = rf"(?<![\\A-Za-z]){letter}_\{{?z\}}?(?![\w{{])"
+    written = any(re.search(third, tex) for _, tex in formulas)
+    # a moment the text gives a formula or a value for is its own quantity (I_z = ½ m R² = 0.0405)
+    own = any(re.search(r"(?:^|\\\\|[,;&])\s*" + third + r"\s*&?\s*=", tex) for _, tex in formulas)
+    key = (letter, "z")
+    if written and not own and _unnamed(names, key):
+        nm._put(names.symbols, key, "axial moment", False)
+        names.where[key] = f"line {line}"
+
+
+def _pivot_moments(names: nm.Names, formulas) -> None:
+    """``I_O = I_x + md^2``: the moment about the pivot (see the module docstring)."""
+    for line, tex in formulas:
+        for m in _SHIFT.finditer(tex):
+            moment, mass, arm = nm._atoms(m.group(1)), m.group(3), m.group(4)
+            if len(moment) != 1 or names.symbols.get((mass, "")) != "mass" or \
+                    names.symbols.get((arm, "")) != "centre-of-mass distance":
+                continue
+            key = (moment[0].base, moment[0].sub)
+            head = rf"(?:^|\\\\|[,;&])\s*{re.escape(m.group(1))}\s*&?\s*="
+            valued = any(re.search(head, t) and _NUMBER.search(t) for _, t in formulas)
+            if not valued and _unnamed(names, key):
+                nm._put(names.symbols, key, "transverse moment", False)
+                names.where[key] = f"line {line}"
