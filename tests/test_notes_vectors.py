@@ -223,3 +223,15 @@ def test_lecture_unchecked_only_where_not_a_claim(lecture_claims):
     left = [(c.line, c.kind, c.why) for c in lecture_claims if c.verdict == "unchecked" and c.kind not in NOT_CLAIMS
             and not c.why.startswith("repeats")]
     assert left == []
+
+
+LAW_CHAIN = ("# Notes\n\nThe torque $\\mathbf{N}$ on the body:\n\n"
+             "$$\\mathbf{N} = \\left( \\frac{d\\mathbf{L}}{dt}\\right)_{space} = \\left( \\frac{d\\mathbf{L}}{dt}\\right)_{body} "
+             "+ \\boldsymbol{\\omega} \\times \\mathbf{L}$$\n")
+
+
+def test_a_chain_headed_by_the_torque_is_checked_past_the_law_in_its_first_link():
+    got = [(c.kind, c.verdict) for c in kept.check_text(LAW_CHAIN) if c.line == 5]
+    assert ("law", "unchecked") in got and any(v == "holds" for _, v in got)
+    slip = LAW_CHAIN.replace("+ \\boldsymbol{\\omega}", "- \\boldsymbol{\\omega}")
+    assert "holds" not in {c.verdict for c in kept.check_text(slip) if c.line == 5}

@@ -63,11 +63,6 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
-    ("moore-learn-multibody-dynamics-mass-distribution", "checked"):
-        "a chapter in Kane's notation (bar vectors, hat unit vectors, breve dyadics, positions r^{P_i/O}): its "
-        "inertia vector and scalars, the inertia dyadic and the central angular momentum are read; the mass "
-        "centre r^{S_o/O}, dyadics about two points (the parallel axis theorem), |I_a| with the angle theta, "
-        "the outer product of columns with a frame subscript and the principal dyadic in b_1, b_2, b_3 are not",
     ("cooperrc-advanced-dynamics-spinning-top", "checked"):
         "an engineering course's spinning top in vector products written inside one bold group "
         "(\\mathbf{\\omega H_G}, \\mathbf{\\omega I_O\\omega}), the angular velocity in the line-of-nodes axes i', j', k' "
@@ -78,7 +73,7 @@ SHORT = {
         "display written in bold products the reader does not read",
 }
 
-FLOOR = {"checked": 373, "slips_flagged": 39, "holds_flagged": 0}
+FLOOR = {"checked": 379, "slips_flagged": 39, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

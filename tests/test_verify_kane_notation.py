@@ -14,7 +14,7 @@ def at(body: str, line: int) -> set:
 
 def test_a_labelled_position_is_the_particles_and_a_breve_dyadic_about_the_same_point_the_inertia_tensor():
     assert kane_notation.rewrite("\\bar{r}^{P_i/O} \\otimes \\bar{r}^{P_i/O}") == "\\mathbf{r}_{i} \\otimes \\mathbf{r}_{i}"
-    assert kane_notation.rewrite("\\breve{I}^{S/O} + \\breve{U}") == "\\mathbf{I} + \\mathrm{I}"
+    assert kane_notation.rewrite("\\breve{I}^{S/O} + \\breve{U}") == "\\mathbf{I}_{system} + \\mathrm{I}"   # the set's
     two_points = "\\breve{I}^{B/O} = \\breve{I}^{B/B_o} + \\breve{I}^{B_o/O}"
     assert kane_notation.rewrite(two_points) == two_points
 
@@ -63,3 +63,39 @@ def test_the_angular_momentum_seen_in_a_frame_is_the_inertia_dyadic_on_the_bodys
     assert at(halved, 3) & {"typo", "fails"}
     two_frames = "$${}^A \\bar{H}^{B/B_o} = \\breve{I}^{B/B_o} \\cdot {}^N\\bar{\\omega}^B$$\n"
     assert not at(two_frames, 3) & {"typo", "fails", "holds"}
+
+
+PRINCIPAL = ("$$\\breve{I}^{S/O} := \\sum_{i=1}^\\nu m_i \\left( \\left|\\bar{r}^{P_i/O}\\right|^2 \\breve{U} - "
+             "\\bar{r}^{P_i/O} \\otimes \\bar{r}^{P_i/O} \\right)$$\n\n")
+
+
+def test_a_frames_hatted_unit_vectors_one_to_three_are_the_axes_so_the_principal_dyadic_holds_on_principal_axes():
+    dyadic = ("$$\\breve{I}^{S/O} = I_{11} \\hat{b}_1 \\otimes \\hat{b}_1 + I_{22} \\hat{b}_2 \\otimes \\hat{b}_2 + "
+              "I_{33} \\hat{b}_3 \\otimes \\hat{b}_3$$\n")
+    assert at(PRINCIPAL + dyadic, 5) == {"holds"}
+    assert at(PRINCIPAL + dyadic.replace("I_{22} \\hat{b}_2 \\otimes \\hat{b}_2", "I_{22} \\hat{b}_1 \\otimes \\hat{b}_1"),
+              5) & {"typo", "fails"}
+
+
+def test_unit_vectors_of_two_frames_in_one_statement_are_not_both_the_axes():
+    mixed = ("$$\\breve{I}^{S/O} = I_{11} \\hat{b}_1 \\otimes \\hat{b}_1 + I_{22} \\hat{n}_2 \\otimes \\hat{n}_2 + "
+             "I_{33} \\hat{b}_3 \\otimes \\hat{b}_3$$\n")
+    assert at(PRINCIPAL + mixed, 5) == {"unchecked"}
+
+
+def test_a_frames_unit_vector_under_a_rate_is_not_taken_for_a_fixed_axis():
+    # the body's b̂₁ turns with it (db̂₁/dt = 𝛚 × b̂₁): a constant axis would call that wrong
+    text = ("A rigid body of particles $m_i$ at $\\mathbf{r}_i$ turns with $\\boldsymbol{\\omega}$.\n\n"
+            "$$\\frac{d\\hat{b}_1}{dt} = \\boldsymbol{\\omega} \\times \\hat{b}_1$$\n")
+    assert {c.verdict for c in kept.check_text(text) if c.line == 3} == {"unchecked"}
+
+
+def test_a_dyadic_about_a_point_whose_position_is_written_beside_it_is_that_one_particles():
+    one = ("$$\\breve{I}^{B_o/O} = m \\left( \\left|\\bar{r}^{B_o/O}\\right|^2 \\breve{U} - "
+           "\\bar{r}^{B_o/O} \\otimes \\bar{r}^{B_o/O} \\right)$$\n\n")
+    assert at(PRINCIPAL + one, 5) == {"holds"}
+    assert at(PRINCIPAL + one.replace("\\right|^2 \\breve{U} -", "\\right|^2 \\breve{U} +"), 5) & {"typo", "fails"}
+    # after it, the body's dyadic about O is the body's again, not that particle's
+    dyadic = ("$$\\breve{I}^{B/O} = I_{11} \\hat{b}_1 \\otimes \\hat{b}_1 + I_{22} \\hat{b}_2 \\otimes \\hat{b}_2 + "
+              "I_{33} \\hat{b}_3 \\otimes \\hat{b}_3$$\n")
+    assert at(PRINCIPAL + one + dyadic, 7) == {"holds"}

@@ -143,3 +143,37 @@ def test_a_bound_turn_used_at_its_own_angle_is_read_as_bound():
     right = _last(_BOUND + "$$\\mathbf{R}_{z}(\\phi) \\mathbf{R}_{z}(\\phi)^{T} = " + eye + "$$\n")
     wrong = _last(_BOUND + "$$\\mathbf{R}_{z}(\\phi) \\mathbf{R}_{z}(\\phi) = " + eye + "$$\n")
     assert right.verdict == "holds" and wrong.verdict != "holds"
+
+
+def whys(text):
+    return {c.line: c.why for c in kept.check_text(text) if c.verdict == "unchecked"}
+
+
+def test_a_matrix_of_the_text_added_to_a_name_of_no_given_shape_is_unchecked_naming_that_name():
+    text = ("# Notes\n\nThe velocity in body components is $\\vec{V_b} = [u, v, w]^T$.\n\n"
+            "$$\\vec{V_a} = \\vec{V_b} - \\vec{W}$$\n")
+    assert verdicts(text)[5] == {"unchecked"}
+    assert "adds a matrix to a term in W" in whys(text)[5]
+
+
+def test_a_product_with_a_matrix_of_the_text_beside_another_term_is_unchecked_not_a_failed_step():
+    text = ("# Notes\n\n$$R = \\begin{bmatrix} 1 & 0 \\\\ 0 & 1 \\end{bmatrix}$$\n\n"
+            "$$T^1 = R\\, T^u + Q$$\n")
+    assert verdicts(text)[5] == {"unchecked"}
+    assert "failed" not in whys(text)[5] and "no matrix" in whys(text)[5]
+
+
+COLUMNS = ("$$\\begin{bmatrix} v_1 \\\\ v_2 \\\\ v_3 \\end{bmatrix}_A \\otimes \\begin{bmatrix} w_1 \\\\ w_2 \\\\ w_3 "
+           "\\end{bmatrix}_A = \\begin{bmatrix} v_1w_1 & v_1w_2 & v_1w_3 \\\\ v_2w_1 & v_2w_2 & v_2w_3 \\\\ "
+           "v_3w_1 & v_3w_2 & v_3w_3 \\end{bmatrix}_A$$\n")
+
+
+def test_the_outer_product_of_two_written_columns_in_one_frame_is_their_matrix():
+    assert verdicts("# Notes\n\n" + COLUMNS)[3] == {"holds"}
+    assert "holds" not in verdicts("# Notes\n\n" + COLUMNS.replace("v_3w_1 &", "v_1w_3 &"))[3]
+
+
+def test_written_matrices_labelled_with_two_frames_are_not_compared():
+    text = "# Notes\n\n" + COLUMNS.replace("v_3w_3 \\end{bmatrix}_A", "v_3w_3 \\end{bmatrix}_B")
+    assert verdicts(text)[3] == {"unchecked"}
+    assert "two frames (A, B)" in whys(text)[3]

@@ -205,3 +205,26 @@ def test_a_symbol_in_braces_before_its_index_is_that_symbol_indexed():
     assert [c.verdict for c in kept.check_text(text)] == ["holds"]
     slipped = [c.verdict for c in kept.check_text(text.replace("+\\dot{\\psi}", "-\\dot{\\psi}"))]
     assert slipped and set(slipped) <= {"typo", "fails"}
+
+
+ACCENTED = "# Notes\n\n$$\\bar{\\omega} \\equiv \\omega_1 + \\omega_2$$\n\n"
+
+
+def test_a_symbol_under_an_accent_without_meaning_here_is_the_texts_own_and_read_through_its_definition():
+    got = dict(verdicts(ACCENTED + "$$\\bar{\\omega} = \\omega_2 + \\omega_1$$\n\n$$\\bar{\\omega} = \\omega_1 - \\omega_2$$\n"))
+    assert got[3] == "unchecked" and got[5] == "holds" and got[7] in ("typo", "fails")
+
+
+@pytest.mark.parametrize("accent", ["bar", "breve", "check", "acute", "mathring"])
+def test_an_accented_letter_is_never_the_letter_without_its_accent(accent):
+    # T̄ equal to one more than the kinetic energy is the text's definition of T̄, not a slip in T
+    text = (f"# Notes\n\n$$\\{accent}{{T}} = \\frac{{1}}{{2}} I_1 \\omega_1^2 + \\frac{{1}}{{2}} I_2 \\omega_2^2 "
+            "+ \\frac{1}{2} I_3 \\omega_3^2 + 1$$\n")
+    claims = kept.check_text(text)
+    assert [c.verdict for c in claims] == ["unchecked"] and "defines the text's symbol" in claims[0].why
+
+
+def test_a_dot_product_of_the_bodys_vectors_with_scalar_factors_is_read():
+    holds = "# Notes\n\n$$\\boldsymbol{\\omega} \\cdot \\frac{\\mathbf{L}}{L} = \\frac{2T}{L}$$\n"
+    assert dict(verdicts(holds))[3] == "holds"
+    assert dict(verdicts(holds.replace("\\frac{2T}{L}", "\\frac{T}{L}")))[3] in ("typo", "fails")

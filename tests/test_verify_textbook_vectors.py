@@ -112,3 +112,21 @@ def test_a_bold_alpha_with_a_particles_index_is_not_the_bodys_angular_accelerati
             "$$\\vec F_i = - m_i \\vec\\alpha_i = m_i (\\alpha y_i + \\omega^2 x_i) \\hat i "
             "+ m_i (\\omega^2 y_i - \\alpha x_i) \\hat j$$\n")
     assert {c.verdict for c in kept.check_text(text) if "alpha_i" in c.latex} <= {"unchecked"}
+
+
+EULER_VECTORS = "$$\\vec{M_{cm}} = I\\dot{\\vec{\\omega}}+\\vec{\\omega}\\times(I\\vec{\\omega})$$\n"
+
+
+def test_a_vector_of_the_texts_alone_against_eulers_equation_in_vectors_is_the_torque():
+    assert at(EULER_VECTORS, 3, head="# Notes\n\n") == {"holds"}
+    assert at("$$I\\dot{\\boldsymbol{\\omega}} + \\boldsymbol{\\omega}\\times(I\\boldsymbol{\\omega}) = \\mathbf{N}$$\n",
+              3, head="# Notes\n\n") == {"holds"}
+    slip = EULER_VECTORS.replace("+\\vec{\\omega}", "-\\vec{\\omega}")
+    assert at(slip, 3, head="# Notes\n\n") & {"typo", "fails"}
+
+
+def test_a_vector_of_the_texts_alone_beside_no_full_eulers_equation_is_not_taken_for_the_torque():
+    # the torque law without ω × Iω may be one a text sets for a fixed axis; an acceleration is no torque
+    assert at("$$\\vec{N} = I\\dot{\\vec{\\omega}}$$\n", 3, head="# Notes\n\n") == {"unchecked"}
+    assert at("$$\\vec{a} = \\dot{\\vec\\omega}\\times\\vec{r} + \\vec\\omega\\times(\\vec\\omega\\times\\vec r)$$\n",
+              3, head="# Notes\n\n") == {"unchecked"}

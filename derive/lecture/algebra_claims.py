@@ -8,6 +8,7 @@ verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
+:mod:`derive.lecture.own_torque`,
 SymPy.
 
 A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
@@ -26,6 +27,7 @@ from derive.lecture import fixed_axis
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
+from derive.lecture import own_torque
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
 
@@ -216,6 +218,10 @@ class AlgebraStatements:
     def _algebra_pair(self, reading, ref, k, record=True) -> tuple[str, str]:
         first = reading.members[0]
         if first[ref].generics != first[k].generics:
+            torque = own_torque.sides(reading, ref, k)
+            if torque is not None:
+                axis = self._alg.axis
+                return own_torque.judged(reading, *torque, WHY, _where, fixed_axis.off_axis(axis) if axis is not None else None)
             loose = sorted(first[ref].generics ^ first[k].generics)
             return "unchecked", f"involves {', '.join(loose)}, which the text has not tied to the body"
         a, b = first[ref], first[k]

@@ -14,7 +14,9 @@ dyadic. `rewrite` brings such a statement to the bold notation the reader knows:
 * ``{}^A\\bar{\\omega}^B`` (B's angular velocity in A) → ``\\boldsymbol{\\omega}``; a frame's left
   superscript ``{}^A`` on a vector is dropped (one frame per statement);
 * ``\\breve{U}`` → the unit tensor; ``\\breve{I}^{S/O}`` about the point the positions are taken from
-  → the inertia tensor ``\\mathbf{I}``.
+  → the inertia tensor of the body (or set), ``\\mathbf{I}_{system}``; ``\\breve{I}^{B_o/O}`` beside the
+  position ``\\bar{r}^{B_o/O}`` of the same point (its index no sum's) → ``\\mathbf{I}`` and ``\\mathbf{r}``,
+  the one particle at that point.
 
 A statement with positions from two points, or dyadics with two labels (the parallel axis
 theorem's ``\\breve{I}^{B/O} = \\breve{I}^{B/B_o} + \\breve{I}^{B_o/O}``), is left as written, so it is
@@ -52,13 +54,24 @@ def rewrite(text: str, known: bool = False) -> str:
     if len(origins) > 1 or len(labels) > 1 or len(frames) > 1:
         return text          # positions or dyadics about two points: the reader takes all from one
 
+    dyadic_points = {m.group(2, 3) for m in _DYADIC.finditer(text)}
+    summed = set(re.findall(r"\\sum_\s*\{?\s*([a-z])", text))
+
     def position(m):
-        letter, _, index, origin = m.groups()
+        letter, point, index, origin = m.groups()
+        if index and index not in summed and (point, index) in dyadic_points:
+            index = None     # 𝐫^{B_o/O} beside the dyadic 𝐈^{B_o/O}: the one particle at B_o, not a sum's point
         return r"\mathbf{" + letter + "}" + ("_{" + index + "}" if index else "")
 
+    position_points = {m.group(2, 3) for m in _POSITION.finditer(text)}
+
     def dyadic(m):
-        letter, _, _, origin = m.groups()
-        return r"\mathbf{" + letter + "}" if not origins or origin in origins else m.group(0)
+        letter, point, index, origin = m.groups()
+        if origins and origin not in origins:
+            return m.group(0)
+        if (point, index) in position_points:
+            return r"\mathbf{" + letter + "}"      # about a point whose position is written: that particle's
+        return r"\mathbf{" + letter + "}_{system}"  # 𝐈^{B/O}, 𝐈^{S/O}: the body's, or the set's
 
     text = _FRAME.sub("", text)             # {}^A: the frame a vector is seen in (one frame per statement)
     text = _ANGULAR_VELOCITY.sub(r"\\boldsymbol{\\omega}", text)    # {}^A\bar{\omega}^B: the body's, in A

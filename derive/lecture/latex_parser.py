@@ -13,7 +13,8 @@ from derive.lecture.vocabulary import (
     DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
-from derive.symbolic.lagrangian import I1, I2, I3
+from derive.lecture import body_dot
+from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -119,6 +120,9 @@ class _Parser:
                 value = self.dotted(value, self.operand(env))
             elif self.at("cmd", "times"):
                 self.fail("vector products (×) are not read")
+            elif self.at("cmd", "otimes"):
+                self.i += 1
+                value = outer(value, self.operand(env), self.peek())
             elif self.at("op", "/"):
                 self.i += 1
                 value = value / self.operand(env)
@@ -132,7 +136,7 @@ class _Parser:
         return self.factor(env)
 
     def dotted(self, a, b):
-        dot = _dot(a, b)
+        dot = body_dot.dot(a, b)
         return dot if dot is not None else _mul(a, b)
 
     def juxtaposed(self, a, b):
@@ -253,10 +257,12 @@ class _Parser:
             plain_omega = isinstance(value, Generic) and (self.vocab.generic.get(value) or Atom("")).base == "omega" \
                 and not self.vocab.generic[value].sub and not self.vocab.generic[value].dots
             if value is OMEGA_VEC or plain_omega:
-                return sp.sqrt(_dot(OMEGA_VEC, OMEGA_VEC))     # |𝛚|, |ω|: the angular velocity's magnitude
+                return sp.sqrt(body_dot.dot(OMEGA_VEC, OMEGA_VEC))     # |𝛚|, |ω|: the angular velocity's magnitude
             return sp.Abs(value)
         if tok.kind == "begin":
-            return self.matrix(env)
+            value = self.matrix(env)
+            self.i += frame_label(self.toks, self.i, self.__dict__.setdefault("frames", set()))
+            return value
         if tok.kind == "cmd":
             name = tok.value
             self.i += 1
@@ -501,15 +507,6 @@ def braced_tokens(toks, k):
             if depth == 0:
                 return toks[k + 1:j], j + 1
     return None, k
-
-
-def _dot(a, b):
-    """𝛚·𝛚, 𝐋·𝐋, 𝛚·𝐋 of the body's vectors written as such: their dot product in body
-    components (𝛚 = ω̃, 𝐋 = (Iᵢ ω̃ᵢ)); None for anything else."""
-    comps = {OMEGA_VEC: W, LVEC: [m * w for m, w in zip((I1, I2, I3), W)]}
-    if isinstance(a, Quantity) and isinstance(b, Quantity) and a in comps and b in comps:
-        return sum((x * y for x, y in zip(comps[a], comps[b])), sp.S.Zero)
-    return None
 
 
 def _summands(a, b):

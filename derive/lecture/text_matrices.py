@@ -32,10 +32,30 @@ _AT_TIME = re.compile(r"^(\s*\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|\w))?)\s*\(\s*t
 # a name at the time before the product of turns, ``R(t) =``: its argument is no factor
 
 
+class ShapesApart(lx.NotRead, TypeError):
+    """A sum of a matrix and a term that is none (``\\vec{V_b} - R\\,\\vec{V_w}`` with 𝐕_b a
+    column the text wrote out and 𝐕_w a name it did not): the reader does not know the term's
+    shape, so the statement cannot be read. A `TypeError` too, as SymPy's own sum would raise."""
+
+
+def _added(out, a, written):
+    """``out + a`` where one side may be a matrix: a zero beside a matrix is dropped; a term the
+    reader holds as no matrix beside one raises `ShapesApart`, naming the symbols of ``written``
+    (the terms as the text wrote them, before its names were put in)."""
+    if isinstance(out, sp.MatrixBase) == isinstance(a, sp.MatrixBase):
+        return out + a
+    if (out if isinstance(a, sp.MatrixBase) else a) == 0:
+        return a if isinstance(a, sp.MatrixBase) else out
+    names = ", ".join(sorted({sp.latex(s) for w in written for s in w.free_symbols}))
+    raise ShapesApart(f"adds a matrix to a term in {names}, which the reader holds as no matrix "
+                      "(the text has not given its shape)")
+
+
 def matrices_put(e, rep):
     """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
     up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
-    Mul would take a matrix among its factors for a scalar."""
+    Mul would take a matrix among its factors for a scalar. A matrix added to a term of no matrix
+    shape raises `ShapesApart`."""
     if e in rep:
         return rep[e]
     if isinstance(e, sp.MatrixBase):
@@ -50,8 +70,11 @@ def matrices_put(e, rep):
         return e.func(*args) if args != list(e.args) else e
     if isinstance(e, (sp.Mul, sp.Add, lx.MatProduct)):
         out = args[0]
-        for a in args[1:]:
-            out = out + a if isinstance(e, sp.Add) else out * a
+        for k, a in enumerate(args[1:], 1):
+            if isinstance(e, sp.Add):
+                out = _added(out, a, [w for w, v in zip(e.args[:k + 1], args) if not isinstance(v, sp.MatrixBase)])
+            else:
+                out = out * a
     elif isinstance(e, lx.Transposed):
         out = args[0].T
     elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:

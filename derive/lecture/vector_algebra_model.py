@@ -51,6 +51,15 @@ RK = [sp.Matrix(sp.symbols(f"x_{k} y_{k} z_{k}", real=True)) for k in range(1, P
 E = sp.eye(3)
 UNIT = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 TORQUES = ("tau", "Gamma")
+FRAME_LETTERS = frozenset("abcdghkmnost")
+"""Letters whose hatted 1, 2, 3 (b̂₁, n̂₂) are a frame's unit vectors, in a statement with no rate;
+r̂ᵢ, v̂ᵢ, ûᵢ name directions of their own, and the body's ê_i turn with it (`derive.lecture.vectors`)."""
+
+
+def _has_rate(toks) -> bool:
+    """A dot or a d/dt among a statement's tokens."""
+    return any(t.kind == "atom" and (t.value.dots or t.value.base == "d") or t.kind == "cmd" and t.value == "partial"
+               for t in toks)
 TORQUE_LABELS = re.compile(r"g|grav(?:ity)?|weight|W|ext|e|net|tot(?:al)?")
 """Subscripts that name where a torque comes from, not a component: 𝛕_g (the weight's), 𝛕_ext."""
 
@@ -287,6 +296,11 @@ class Algebra:
         mass, r = self._point(env)
         if a.hat and base in UNIT and (not sub or base == "x"):
             return E[:, p.axis(sub, env, tok) if sub else UNIT[base]]
+        if a.hat and not a.bold and base in FRAME_LETTERS and sub in ("1", "2", "3") and not a.sup:
+            seen = p.__dict__.setdefault("frame_letters", {base})
+            if seen != {base} or _has_rate(p.toks):
+                return None                  # b̂ᵢ beside n̂ᵢ (two frames), or under a rate (which frame turns?)
+            return E[:, int(sub) - 1]        # b̂₁, b̂₂, b̂₃: a frame's unit vectors, the axes of this model
         axis = self.state.axis
         if base == "omega":
             n = sp.sqrt(W.dot(W))
@@ -387,6 +401,9 @@ class Algebra:
             if bold and not sub:
                 p.generics.add(base)
                 return comps
+            if bold and sub in POINT_LABELS and base not in "rvpIL":   # 𝐌_cm, 𝐍_O: about a point, a vector of the text's
+                p.generics.add(base + sub)
+                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
             if bold and len(sub) == 1 and sub in "abcdefgh" and not a.sup and sub != env.get("index") \
                     and base not in "rvp":      # 𝐧_a, a vector of the text's named by a letter (Kane's n̂_a)
                 p.generics.add(base + sub)

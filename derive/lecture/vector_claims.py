@@ -96,8 +96,9 @@ class VectorStatements:
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         for k in range(1, len(first)):
             if first[k].value is LAW or first[0].value is LAW:
-                self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
-                          "starts (Euler's equations are it in body axes), not a consequence of it")
+                if not self._past_the_law(line, piece, reading, k, kind):
+                    self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
+                              "starts (Euler's equations are it in body axes), not a consequence of it")
                 continue
             ref = vc.reference(reading, k)
             if ref is None and k == 1 and self._defines_vector(reading):
@@ -136,6 +137,19 @@ class VectorStatements:
             else:
                 self._add(line, piece, kind, "fails", f"as written: {how} ({vc.WHY[reading.model]}{where})")
         return True
+
+    def _past_the_law(self, line, piece, reading, k, kind) -> bool:
+        """``𝐍 = (d𝐋/dt)_space = (d𝐋/dt)_body + 𝛚 × 𝐋``: a chain headed by the torque states the law in
+        its first link; each member after the next is checked against the one before it, and the
+        link is kept when it holds (False otherwise: the law's verdict stands for it)."""
+        first = reading.members[0]
+        if k < 2 or reading.free or first[0].value is not LAW or LAW in (first[k].value, first[k - 1].value):
+            return False
+        ok, how = vc.holds(reading, k, f"{piece}/law{k}", k - 1)
+        if ok:
+            self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}: against the member before it "
+                      f"(the chain's head is the torque, its first link the law of motion): {how}")
+        return ok
 
     def _vector_eom(self, a, b) -> bool:
         """``I\\dot{\\boldsymbol\\omega} + \\boldsymbol\\omega \\times (I\\boldsymbol\\omega) = \\boldsymbol\\tau`` as

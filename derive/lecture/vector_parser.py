@@ -382,6 +382,8 @@ class VectorParser(_Parser):
 
     # atoms
     def atom(self, tok, env):
+        if tok.value.mark:          # x̄: the text's own symbol, which no vector model knows
+            raise lx.Unknown(f"unknown symbol {tok.value.text}", tok.pos + 1)
         value = self.model.atom(self, tok.value, env, tok)
         if value is not None:
             return value

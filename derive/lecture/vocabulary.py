@@ -108,7 +108,10 @@ GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "et
          "Phi", "Psi", "Omega", "top", "intercal"}
 DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
                "widehat": "hat", "mathbf": "bold", "boldsymbol": "bold", "bm": "bold", "vec": "vec",
-               "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec"}
+               "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec",
+               **{m: "mark" for m in ("bar", "breve", "check", "acute", "grave", "mathring")}}
+"""An accent the derivation gives no meaning (``\\bar``, ``\\breve``, …) marks a symbol of the text's
+own, apart from the letter without it (`Atom.mark`)."""
 SPACES = {",", ";", ":", "!", " ", "quad", "qquad",  "left", "right", "big", "Big", "bigg", "Bigg",
           "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
 class CrossMatrix(sp.Function):
@@ -157,6 +160,9 @@ class Atom:
     sup: str = ""
     primes: int = 0
     text: str = ""
+    mark: str = ""
+    """The accents the derivation gives no meaning, as written (``bar``, ``breve``): x̄ is the
+    text's own symbol, never x."""
 
     def with_(self, **kw) -> "Atom":
         return Atom(**{**self.__dict__, **kw})
@@ -229,6 +235,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
             atom = atom.with_(hat=True)
         elif kind in ("bold", "vec"):
             atom = atom.with_(bold=True)
+        elif kind == "mark":
+            atom = atom.with_(mark=m.group(1) + atom.mark)
     elif m and m.group(1) in GREEK:
         atom, j = Atom(m.group(1)), m.end()
     elif i < len(s) and s[i].isalpha() and s[i].isascii():
@@ -330,7 +338,7 @@ def scan(s: str) -> list[Tok]:
                 i = j
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
-                                             "times", "pm", "mp", "infty", "ldots", "cdots", "dots"):
+                                             "times", "otimes", "pm", "mp", "infty", "ldots", "cdots", "dots"):
                 toks.append(Tok("cmd", name, i))
                 i = m.end()
                 continue
@@ -397,6 +405,8 @@ class Vocabulary:
         mine = self.defined.get(a.with_(text=""))
         if mine is not None:
             return mine
+        if a.mark:              # x̄, Ĭ: the text's own symbol, whatever its letter means without the accent
+            return self._generic(a) if self.open else None
         if self.names is not None and not self.names_off:
             value = self.names.value(a, env, self)      # the text's own names win
             if value is not None:
@@ -481,7 +491,7 @@ class Vocabulary:
         for sym, atom in self.generic.items():
             if atom == key:
                 return sym
-        name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + (f"_{a.sub}" if a.sub else "") \
+        name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + a.mark + (f"_{a.sub}" if a.sub else "") \
             + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
         undotted = next((s for s, atom in self.generic.items() if atom == key.with_(dots=0)), None) if a.dots else None
         if undotted is not None and undotted.is_commutative is False:
