@@ -14,7 +14,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vector_parser import LAW, _FreeIndex
-from derive.lecture.zero_test import expanded
+from derive.lecture.zero_test import expanded, expanded_derivative
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -230,7 +230,8 @@ def _tensor(name: str) -> sp.ImmutableMatrix:
     model = Model(name)
     if name == "principal":
         return sp.ImmutableMatrix(sp.diag(*model.moments))
-    return sp.ImmutableMatrix(sp.hessian(expanded(model.kinetic), list(lx.W)).applyfunc(expanded))
+    kinetic = expanded(model.kinetic)
+    return sp.ImmutableMatrix(3, 3, lambda i, j: expanded_derivative(kinetic, lx.W[i], lx.W[j]))
 
 
 @functools.lru_cache(maxsize=None)
