@@ -22,6 +22,7 @@ Either only makes a claim hold; it never flags one. And a third, which judges:
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -39,6 +40,12 @@ _TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 def _free(obj) -> set:
     return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+
+
+@functools.lru_cache(maxsize=64)
+def _euler_lagrange(lag) -> tuple:
+    """d/dt ∂L/∂q̇ − ∂L/∂q of each angle q: derived once per Lagrangian, not per statement."""
+    return tuple(time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q) for q, qd in zip(ANGLES, RATES))
 
 
 class OnTheMotion:
@@ -150,8 +157,7 @@ class OnTheMotion:
         lag = self._resolve(lag) if lag is not None else self.d.top.lagrangian
         a, b = (x.xreplace(self.ctx.subs) for x in self._unify([val, target]))
         diff = expanded(a - b)
-        for q, qd in zip(ANGLES, RATES):
-            el = time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q)
+        for q, el in zip(ANGLES, _euler_lagrange(lag)):
             el = el.xreplace(self.ctx.subs)
             for sign in (1, -1):
                 d = expanded(diff - sign * el)

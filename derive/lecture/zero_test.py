@@ -118,7 +118,7 @@ def expanded_derivative(e, *xs, field=None):
             if field:
                 p = sum((p.diff(at[x]) * _in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
             return p.as_expr()
-    d = sp.diff(e, *xs)
+    d = sp.diff(e, *xs) if xs else e
     if field:
         d = sum((sp.diff(d, x) * v for x, v in field.items()), sp.S.Zero)
     return expanded(d)
