@@ -191,11 +191,10 @@ def momentum(system: str) -> sp.ImmutableMatrix:
 def torque(system: str) -> sp.ImmutableMatrix:
     """d𝐋/dt under rigid rotation."""
     L = momentum(system)
-    return sp.ImmutableMatrix([zt.expanded_derivative(zt.expanded(L[i]), field=_MOTION) for i in range(3)])
-
-
-_MOTION = {**{r[i]: W.cross(r)[i] for r in [R0, *RK] for i in range(3)}, **dict(zip(W, WD))}
-"""The field d/dt moves along (`rate`): ṙ = 𝛚 × 𝐫 for every point, 𝛚̇ = 𝛂."""
+    motion = dict(zip(W, WD))             # the field d/dt moves along (`rate`): 𝛚̇ = 𝛂, ṙ = 𝛚 × 𝐫
+    for r in [R0, *RK]:
+        motion.update(zip(r, W.cross(r)))
+    return sp.ImmutableMatrix([zt.expanded_derivative(zt.expanded(L[i]), field=motion) for i in range(3)])
 
 
 def _momentum(system: str) -> sp.Matrix:
