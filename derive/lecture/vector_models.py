@@ -9,6 +9,7 @@ from __future__ import annotations
 import functools
 import itertools
 import re
+from types import SimpleNamespace
 
 import sympy as sp
 
@@ -128,11 +129,9 @@ class Model:
 
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:
         """Body components of (dX/dt) in the inertial frame (Rᵀ d(R X)/dt) or the body frame (Ẋ)."""
-        Xd = X.applyfunc(self.dt)
-        if frame == "body":
-            return Xd
-        R, Rd = _turning(self.d.conv)
-        return R.T * (Rd * X) + Xd
+        generic = tuple((tuple(X), tuple(Xd)) for X, Xd in self.generic.values())
+        out = _derivative(self.d.conv, generic, sp.ImmutableMatrix(X), frame, type(X))
+        return out.copy() if isinstance(out, sp.MutableDenseMatrix) else out
 
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
@@ -232,6 +231,21 @@ def _tensor(name: str) -> sp.ImmutableMatrix:
         return sp.ImmutableMatrix(sp.diag(*model.moments))
     kinetic = expanded(model.kinetic)
     return sp.ImmutableMatrix(3, 3, lambda i, j: expanded_derivative(kinetic, lx.W[i], lx.W[j]))
+
+
+@functools.lru_cache(maxsize=256)
+def _derivative(conv, generic: tuple, X: sp.ImmutableMatrix, frame: str, kind: type) -> sp.MatrixBase:
+    """`Model.derivative` of X (of the matrix class ``kind``), with the text's generic vectors
+    ``generic`` as (components, rates): derived once, a statement being read again under its
+    second readings."""
+    model = Model("frame", SimpleNamespace(conv=conv))
+    model.generic = {k: (sp.Matrix(c), sp.Matrix(r)) for k, (c, r) in enumerate(generic)}
+    X = kind(X)
+    Xd = X.applyfunc(model.dt)
+    if frame == "body":
+        return Xd
+    R, Rd = _turning(conv)
+    return R.T * (Rd * X) + Xd
 
 
 @functools.lru_cache(maxsize=None)
