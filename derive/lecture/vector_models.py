@@ -9,7 +9,6 @@ from __future__ import annotations
 import functools
 import itertools
 import re
-from types import SimpleNamespace
 
 import sympy as sp
 
@@ -130,7 +129,7 @@ class Model:
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:
         """Body components of (dX/dt) in the inertial frame (Rᵀ d(R X)/dt) or the body frame (Ẋ)."""
         generic = tuple((tuple(X), tuple(Xd)) for X, Xd in self.generic.values())
-        out = _derivative(self.d.conv, generic, sp.ImmutableMatrix(X), frame, type(X))
+        out = _derivative(self.d, generic, sp.ImmutableMatrix(X), frame, type(X))
         return out.copy() if isinstance(out, sp.MutableDenseMatrix) else out
 
     # the grammar's hooks (`derive.lecture.vector_parser`)
@@ -234,26 +233,18 @@ def _tensor(name: str) -> sp.ImmutableMatrix:
 
 
 @functools.lru_cache(maxsize=256)
-def _derivative(conv, generic: tuple, X: sp.ImmutableMatrix, frame: str, kind: type) -> sp.MatrixBase:
-    """`Model.derivative` of X (of the matrix class ``kind``), with the text's generic vectors
-    ``generic`` as (components, rates): derived once, a statement being read again under its
-    second readings."""
-    model = Model("frame", SimpleNamespace(conv=conv))
+def _derivative(d, generic: tuple, X: sp.ImmutableMatrix, frame: str, kind: type) -> sp.MatrixBase:
+    """`Model.derivative` of X (of the matrix class ``kind``) in the convention of the derivation
+    ``d``, with the text's generic vectors ``generic`` as (components, rates): derived once, a
+    statement being read again under its second readings."""
+    model = Model("frame", d)
     model.generic = {k: (sp.Matrix(c), sp.Matrix(r)) for k, (c, r) in enumerate(generic)}
     X = kind(X)
     Xd = X.applyfunc(model.dt)
     if frame == "body":
         return Xd
-    R, Rd = _turning(conv)
+    R, Rd = d.turning            # R and dR/dt of the convention, kept between commands
     return R.T * (Rd * X) + Xd
-
-
-@functools.lru_cache(maxsize=None)
-def _turning(conv) -> tuple:
-    """R and dR/dt of a convention (`Model.dt`'s chain rule, in which only the angles enter R),
-    derived once, not for each frame derivative."""
-    R = conv.matrix()
-    return R, R.applyfunc(lambda e: time_derivative(e, coords=ANGLES, rates=RATES, accels=ACCELS))
 
 
 def _text_letter(p, a, meaning) -> bool:
