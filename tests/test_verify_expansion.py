@@ -1,11 +1,14 @@
-"""The cheaper exact steps of the notes checker: `expand` in a polynomial ring
-(`zero_test.expanded`), the exact screen of a quotient's dependence (`zero_test.surely_depends`),
+"""The cheaper exact steps of the notes checker: `expand` and derivatives in a polynomial ring
+(`zero_test.expanded`, `zero_test.expanded_derivative`), the exact screen of a quotient's dependence (`zero_test.surely_depends`),
 `trig_reduce` of an expression with no denominator, the one-coordinate reader's linear solve and
 the sign of a difference under the text's orderings. Each gives what the costlier step it stands
 in for gives."""
 import pytest
 import sympy as sp
 
+from derive.lecture import latex as lx
+from derive.lecture import vector_algebra_model as vam
+from derive.lecture import vector_models as vm
 from derive.lecture import zero_test as zt
 from derive.lecture.context import sign_under_orderings
 from derive.lecture.coordinate_statements import _solutions
@@ -67,3 +70,22 @@ def test_the_sign_under_the_orderings_follows_the_chain_and_repeats_its_answer()
     assert sign_under_orderings(m - R, (R, m), chain) == "negative"
     assert sign_under_orderings(x - m, (m, x), chain) == "mixed"
     assert sign_under_orderings(I - m, (I, m), chain) == "positive"
+
+
+@pytest.mark.parametrize("e", EXPRESSIONS)
+def test_a_derivative_in_the_ring_is_the_expanded_derivative(e):
+    for v in (x, y, b, g):
+        assert zt.expanded_derivative(e, v) == zt.expanded(sp.diff(e, v))
+    assert zt.expanded_derivative(e, x, y) == zt.expanded(sp.diff(e, x, y))
+    field = {x: w1 * y, b: wd1, y: sp.Integer(2)}
+    assert zt.expanded_derivative(e, field=field) == zt.expanded(sum(sp.diff(e, s) * v for s, v in field.items()))
+
+
+def test_the_vector_models_tensors_and_torque_are_the_derivatives_of_their_l():
+    for system in ("single", "body"):
+        L = vam.momentum(system)
+        assert vam.tensor(system) == L.applyfunc(zt.expanded).jacobian(vam.W).applyfunc(zt.expanded)
+        assert vam.torque(system) == L.applyfunc(lambda e: vam._rate(e)).applyfunc(zt.expanded)
+        assert vam.rate(L) == vam.torque(system)
+    kinetic = zt.expanded(vm.Model("particle").kinetic)
+    assert vm._tensor("particle") == sp.hessian(kinetic, list(lx.W)).applyfunc(zt.expanded)

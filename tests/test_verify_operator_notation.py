@@ -1,6 +1,8 @@
 """Texts in operator notation (D the time derivative, 𝒜 the cross-product matrix, the orientation
 matrix, components on principal axes labelled after the moments A, B, C), read by
 `derive.lecture.operator_notation` on the motions of `derive.lecture.motion_jets`."""
+import random
+
 import mpmath
 import pytest
 
@@ -155,3 +157,20 @@ def test_every_planted_sign_slip_in_the_sicm_notes_is_flagged_on_its_display_onl
                 missed.append(ln)
             alarms += [x for x in flagged if rows.get(x) == "holds" and x != ln]
     assert planted >= 20 and not missed and not alarms, (planted, missed, alarms)
+
+
+def test_a_matrix_of_jets_multiplies_row_by_column_left_to_right():
+    rng = random.Random(7)
+    A = mj.Array.of([[mj.Jet([rng.uniform(-1, 1) for _ in range(4)]) for _ in range(3)] for _ in range(3)])
+    v = mj.Array.of([mj.Jet([rng.uniform(-1, 1) for _ in range(4)]) for _ in range(3)])
+    by_hand = [A[i, 0] * v[0] + A[i, 1] * v[1] + A[i, 2] * v[2] for i in range(3)]
+    assert [e.a for e in (A @ v).ravel()] == [e.a for e in by_hand]
+    AT = A.T
+    assert all(AT[i, j] is A[j, i] for i in range(3) for j in range(3))
+    assert [e.a for e in (AT @ A)[:, 1].ravel()] == [(A[0, i] * A[0, 1] + A[1, i] * A[1, 1] + A[2, i] * A[2, 1]).a
+                                                   for i in range(3)]
+    assert [e.a for e in (v @ A).ravel()] == [(v[0] * A[0, j] + v[1] * A[1, j] + v[2] * A[2, j]).a for j in range(3)]
+    s = mj.Jet([0.5, 1.0])
+    assert [e.a for e in (s * v - v).ravel()] == [(s * v[i] - v[i]).a for i in range(3)]
+    with pytest.raises(ValueError):
+        v + mj.Array.of([s, s])

@@ -20,7 +20,7 @@ from derive.lecture import derivation_kept as kept
 from derive.lecture import latex as lx
 from derive.lecture.orientation import AlongMomentum
 from derive.symbolic import rotations as rot
-from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, heavy_symmetric_top, kinetic_energy
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, EulerLagrange, Reduction, heavy_symmetric_top, kinetic_energy
 from derive.symbolic.stability import SleepingTop, SteadySpin, euler_rhs, omega0
 
 
@@ -133,6 +133,13 @@ class Derivation:
 
     def top_kinetic(self):
         return self.kinetic
+
+    @functools.cached_property
+    def turning(self) -> tuple:
+        """R and dR/dt = Σ ∂R/∂qᵢ q̇ᵢ (only the angles enter R): the frame derivatives of the
+        vector models (`derive.lecture.vector_models`)."""
+        R = self.conv.matrix()
+        return R, R.applyfunc(lambda e: rot.time_derivative(e, coords=rot.ANGLES, rates=rot.RATES, accels=ACCELS))
 
     @functools.cached_property
     def kinetic(self):

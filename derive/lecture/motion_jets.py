@@ -7,7 +7,7 @@ convention (body → inertial components), the principal-axis angular velocity �
 **M**ᵀ D**M** = 𝒜(𝛚′), the torque **T**′ = **I**′ D𝛚′ + 𝛚′ × **I**′𝛚′ it implies (Euler's
 equations with a torque, in principal axes) and the generalised forces Q_k = **T**·∂𝛚/∂q̇_k of
 the angles. A free body's instant has q̈ chosen so that **T**′ = 0.
-May import: the standard library, mpmath, numpy.
+May import: the standard library, mpmath.
 
 The time derivative D of a jet is exact up to the order it keeps; a coefficient it cannot know is
 NaN, so a formula that differentiates more often than the jet allows evaluates to NaN (and is
@@ -18,7 +18,6 @@ from __future__ import annotations
 import random
 
 import mpmath
-import numpy as np
 
 ORDER = 4
 """Taylor coefficients kept: enough for D applied three times."""
@@ -54,7 +53,7 @@ class Jet:
         return x if isinstance(x, Jet) else Jet([x])
 
     def __add__(self, other):
-        if isinstance(other, np.ndarray):
+        if isinstance(other, Array):
             return NotImplemented
         o = Jet.lift(other)
         return Jet._of([x + y for x, y in zip(self.a, o.a)])
@@ -65,7 +64,7 @@ class Jet:
         return Jet._of([-x for x in self.a])
 
     def __sub__(self, other):
-        if isinstance(other, np.ndarray):
+        if isinstance(other, Array):
             return NotImplemented
         return self + (-Jet.lift(other))
 
@@ -73,7 +72,7 @@ class Jet:
         return Jet.lift(other) - self
 
     def __mul__(self, other):
-        if isinstance(other, np.ndarray):
+        if isinstance(other, Array):
             return NotImplemented
         a, b = self.a, other.a if isinstance(other, Jet) else Jet.lift(other).a
         if ORDER == 4:            # the Cauchy product below, written out (same terms, same order)
@@ -137,43 +136,170 @@ def sin_cos(x: Jet) -> tuple[Jet, Jet]:
     return s0 * cos_h + c0 * sin_h, c0 * cos_h - s0 * sin_h
 
 
-def jet_array(values) -> np.ndarray:
-    return np.array([Jet.lift(v) for v in np.ravel(values)], dtype=object).reshape(np.shape(values))
+class Array:
+    """A vector (shape (n,)) or matrix (shape (n, m)) of jets, row-major: what the operator
+    notation's vectors and matrices evaluate to. ``@`` sums a row's products left to right,
+    a[i, 0]·b[0, j] first (a product of jets is not commutative to the last bit, so the order is
+    fixed); +, −, · with a jet or a number act entry by entry, and a vector against a matrix
+    acts on each of its rows; shapes that do not fit raise ValueError."""
+
+    __slots__ = ("e", "shape")
+
+    def __init__(self, e: list, shape: tuple):
+        self.e, self.shape = e, shape
+
+    @classmethod
+    def of(cls, values) -> "Array":
+        """A vector from a list, a matrix from a list of equal rows (their entries as they are)."""
+        if values and isinstance(values[0], (list, tuple)):
+            if len({len(r) for r in values}) != 1:
+                raise ValueError("a ragged matrix")
+            return cls([x for r in values for x in r], (len(values), len(values[0])))
+        return cls(list(values), (len(values),))
+
+    @property
+    def ndim(self) -> int:
+        return len(self.shape)
+
+    def ravel(self) -> list:
+        return list(self.e)
+
+    def map(self, f) -> "Array":
+        return Array([f(x) for x in self.e], self.shape)
+
+    def _at(self, key):
+        i, j = key
+        n, m = self.shape
+        if not (-n <= i < n and -m <= j < m):
+            raise IndexError("index out of range")
+        return (i % n) * m + j % m
+
+    def __getitem__(self, key):
+        if self.ndim == 1:
+            return self.e[key]
+        n, m = self.shape
+        if isinstance(key, tuple) and key[0] == slice(None):
+            return Array([self[i, key[1]] for i in range(n)], (n,))
+        if isinstance(key, tuple):
+            return self.e[self._at(key)]
+        if not -n <= key < n:
+            raise IndexError("index out of range")
+        return Array(self.e[(key % n) * m:(key % n + 1) * m], (m,))
+
+    def __setitem__(self, key, value):
+        self.e[self._at(key)] = value
+
+    @property
+    def T(self) -> "Array":
+        if self.ndim == 1:
+            return self
+        n, m = self.shape
+        return Array([self.e[i * m + j] for j in range(m) for i in range(n)], (m, n))
+
+    def __matmul__(self, other):
+        if not isinstance(other, Array):
+            return NotImplemented
+        a = self if self.ndim == 2 else Array(self.e, (1, self.shape[0]))
+        b = other if other.ndim == 2 else Array(other.e, (other.shape[0], 1))
+        (n, k), (k2, m) = a.shape, b.shape
+        if k != k2 or k == 0:
+            raise ValueError("shapes that do not fit a product")
+        out = []
+        for i in range(n):
+            for j in range(m):
+                total = a.e[i * k] * b.e[j]
+                for r in range(1, k):
+                    total = total + a.e[i * k + r] * b.e[r * m + j]
+                out.append(total)
+        if self.ndim == 1 and other.ndim == 1:
+            return out[0]
+        if self.ndim == 1 or other.ndim == 1:
+            return Array(out, (n * m,))
+        return Array(out, (n, m))
+
+    def _paired(self, other, op):
+        """``op`` entry by entry (a scalar against each entry; a vector against each row)."""
+        if not isinstance(other, Array):
+            return Array([op(x, other) for x in self.e], self.shape)
+        if self.shape == other.shape:
+            return Array([op(x, y) for x, y in zip(self.e, other.e)], self.shape)
+        if self.ndim == 2 and other.ndim == 1 and other.shape[0] == self.shape[1]:
+            m = self.shape[1]
+            return Array([op(x, other.e[n % m]) for n, x in enumerate(self.e)], self.shape)
+        if self.ndim == 1 and other.ndim == 2 and self.shape[0] == other.shape[1]:
+            m = other.shape[1]
+            return Array([op(self.e[n % m], y) for n, y in enumerate(other.e)], other.shape)
+        raise ValueError("shapes that do not fit entry by entry")
+
+    def __add__(self, other):
+        return self._paired(other, lambda x, y: x + y)
+
+    def __radd__(self, other):
+        return self._paired(other, lambda x, y: y + x)
+
+    def __sub__(self, other):
+        return self._paired(other, lambda x, y: x - y)
+
+    def __rsub__(self, other):
+        return self._paired(other, lambda x, y: y - x)
+
+    def __mul__(self, other):
+        return self._paired(other, lambda x, y: x * y)
+
+    def __rmul__(self, other):
+        return self._paired(other, lambda x, y: y * x)
+
+    def __truediv__(self, other):
+        return self._paired(other, lambda x, y: x / y)
+
+    def __neg__(self):
+        return self.map(lambda x: -x)
+
+
+def jet_array(values) -> Array:
+    """The vector or matrix of jets of a list or a list of rows of numbers (or jets)."""
+    if values and isinstance(values[0], (list, tuple)):
+        return Array.of([[Jet.lift(v) for v in r] for r in values])
+    return Array.of([Jet.lift(v) for v in values])
+
+
+def eye() -> list:
+    return [[1.0 if i == j else 0.0 for j in range(3)] for i in range(3)]
 
 
 def derivative(x):
     """D of a jet, a vector or a matrix of jets."""
-    if isinstance(x, np.ndarray):
-        return np.vectorize(lambda e: Jet.lift(e).derivative(), otypes=[object])(x)
+    if isinstance(x, Array):
+        return x.map(lambda e: Jet.lift(e).derivative())
     return Jet.lift(x).derivative()
 
 
-def hat(v) -> np.ndarray:
+def hat(v) -> Array:
     """𝒜(v): the antisymmetric matrix with 𝒜(v) w = v × w."""
     zero = Jet([0])
-    return np.array([[zero, -v[2], v[1]], [v[2], zero, -v[0]], [-v[1], v[0], zero]], dtype=object)
+    return Array.of([[zero, -v[2], v[1]], [v[2], zero, -v[0]], [-v[1], v[0], zero]])
 
 
-def vee(m) -> np.ndarray:
+def vee(m) -> Array:
     """𝒜⁻¹: the vector of an antisymmetric matrix (its antisymmetric part)."""
-    return np.array([(m[2, 1] - m[1, 2]) / 2, (m[0, 2] - m[2, 0]) / 2, (m[1, 0] - m[0, 1]) / 2], dtype=object)
+    return Array.of([(m[2, 1] - m[1, 2]) / 2, (m[0, 2] - m[2, 0]) / 2, (m[1, 0] - m[0, 1]) / 2])
 
 
-def cross(u, v) -> np.ndarray:
-    return np.array([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]], dtype=object)
+def cross(u, v) -> Array:
+    return Array.of([u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]])
 
 
-def active(axis: str, angle: Jet) -> np.ndarray:
+def active(axis: str, angle: Jet) -> Array:
     """The active right-handed turn about x, y or z by the angle (as `derive.symbolic.rotations.active`)."""
     s, c = sin_cos(angle)
     i = "xyz".index(axis)
     j, k = (i + 1) % 3, (i + 2) % 3
-    m = jet_array(np.eye(3))
+    m = jet_array(eye())
     m[j, j], m[j, k], m[k, j], m[k, k] = c, -s, s, c
     return m
 
 
-def rotation(axes, angles) -> np.ndarray:
+def rotation(axes, angles) -> Array:
     """R = active(a₁, q₁) active(a₂, q₂) active(a₃, q₃): body → inertial components."""
     return active(axes[0], angles[0]) @ active(axes[1], angles[1]) @ active(axes[2], angles[2])
 
@@ -195,7 +321,7 @@ class Instant:
             q2 = self._free_acceleration(q0, q1, q3)
         self.angles = [Jet([q0[k], q1[k], q2[k] / 2, q3[k] / 6]) for k in range(3)]
         self.M = rotation(axes, self.angles)
-        self.inertia = jet_array(np.diag(self.moments))
+        self.inertia = jet_array([[m if i == j else 0.0 for j, _ in enumerate(self.moments)] for i, m in enumerate(self.moments)])
         self.omega = vee(self.M.T @ derivative(self.M))              # 𝛚′, principal axes
         self.torque = self.inertia @ derivative(self.omega) + cross(self.omega, self.inertia @ self.omega)
         self.q1 = q1
@@ -223,17 +349,17 @@ class Instant:
         rhs = mpmath.matrix([want[i] - base[i] for i in range(3)])
         return [float(x) for x in mpmath.lu_solve(A, rhs)]
 
-    def rates_matrix(self) -> np.ndarray:
+    def rates_matrix(self) -> Array:
         """B⁰: the inertial angular velocity 𝛚 = B⁰ q̇ (column k: the axis of the k-th turn)."""
         s = [active(self.axes[0], self.angles[0]), active(self.axes[1], self.angles[1])]
-        e = [jet_array(np.eye(3)[:, "xyz".index(a)]) for a in self.axes]
+        e = [jet_array([row["xyz".index(a)] for row in eye()]) for a in self.axes]
         cols = [e[0], s[0] @ e[1], s[0] @ s[1] @ e[2]]
-        return np.array([[cols[k][i] for k in range(3)] for i in range(3)], dtype=object)
+        return Array.of([[cols[k][i] for k in range(3)] for i in range(3)])
 
-    def generalised_forces(self) -> np.ndarray:
+    def generalised_forces(self) -> Array:
         """Q_k = 𝐓·(axis of the k-th turn): the torque's power per unit rate of each angle."""
         return self.rates_matrix().T @ (self.M @ self.torque)
 
-    def momenta(self) -> np.ndarray:
+    def momenta(self) -> Array:
         """p_k = ∂T/∂q̇_k = 𝐋·(axis of the k-th turn)."""
         return self.rates_matrix().T @ (self.M @ (self.inertia @ self.omega))

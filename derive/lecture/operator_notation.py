@@ -3,7 +3,7 @@
 Takes: one statement's LaTeX and what the text says its operators are
 (`derive.lecture.operator_prose.Declarations`). Gives: `evaluate`, the statement's members as
 numbers on one instant of one motion (`derive.lecture.motion_jets`).
-May import: the standard library, numpy, :mod:`derive.lecture.motion_jets`.
+May import: the standard library, :mod:`derive.lecture.motion_jets`.
 
 What such a text writes, and what it is read as (a quantity with a prime is on the principal
 axes, one without on the inertial axes, when the text says primes mark principal-axis
@@ -31,7 +31,6 @@ import random
 import re
 from dataclasses import dataclass
 
-import numpy as np
 
 from derive.lecture import motion_jets as mj
 from derive.lecture import vocabulary
@@ -304,7 +303,7 @@ class Parser:
                 value = _transpose(value)
             elif re.fullmatch(r"-?\d", sup):
                 n = int(sup)
-                value = _inverse(value) if n == -1 and isinstance(value, np.ndarray) else _power(value, n)
+                value = _inverse(value) if n == -1 and isinstance(value, mj.Array) else _power(value, n)
             else:
                 raise NotHandled(f"superscript {sup}")
         return value
@@ -461,7 +460,7 @@ class Parser:
         values = [[_scalar(Parser(c, self.v).whole()) for c in r] for r in rows if any(r)]
         if len({len(r) for r in values}) != 1:
             raise NotHandled("a ragged matrix")
-        out = np.array(values, dtype=object)
+        out = mj.Array.of(values)
         if out.shape[1] == 1:
             return out[:, 0]
         if out.shape != (3, 3):
@@ -476,19 +475,19 @@ class Parser:
 
 
 def _scalar(x):
-    if isinstance(x, np.ndarray):
+    if isinstance(x, mj.Array):
         raise NotHandled("a matrix where a number is meant")
     return mj.Jet.lift(x)
 
 
 def _vector(x):
-    if not isinstance(x, np.ndarray) or x.shape != (3,):
+    if not isinstance(x, mj.Array) or x.shape != (3,):
         raise NotHandled("a vector is meant")
     return x
 
 
 def _mul(a, b):
-    if isinstance(a, np.ndarray) and isinstance(b, np.ndarray):
+    if isinstance(a, mj.Array) and isinstance(b, mj.Array):
         if a.ndim == 1 and b.ndim == 1:
             raise NotHandled("a product of two vectors")
         return a @ b
@@ -500,13 +499,13 @@ def _reciprocal(x):
 
 
 def _power(x, n):
-    if isinstance(x, np.ndarray):
+    if isinstance(x, mj.Array):
         raise NotHandled("a power of a matrix")
     return mj.Jet.lift(x) ** n
 
 
 def _transpose(x):
-    if not isinstance(x, np.ndarray) or x.ndim != 2:
+    if not isinstance(x, mj.Array) or x.ndim != 2:
         raise NotHandled("a transpose of something that is not a matrix")
     return x.T
 
@@ -514,16 +513,16 @@ def _transpose(x):
 def _inverse(m):
     if m.ndim != 2:
         raise NotHandled("an inverse of a vector")
-    cof = np.array([[m[(i + 1) % 3, (j + 1) % 3] * m[(i + 2) % 3, (j + 2) % 3]
-                     - m[(i + 1) % 3, (j + 2) % 3] * m[(i + 2) % 3, (j + 1) % 3] for j in range(3)]
-                    for i in range(3)], dtype=object)
+    cof = mj.Array.of([[m[(i + 1) % 3, (j + 1) % 3] * m[(i + 2) % 3, (j + 2) % 3]
+                        - m[(i + 1) % 3, (j + 2) % 3] * m[(i + 2) % 3, (j + 1) % 3] for j in range(3)]
+                       for i in range(3)])
     det = sum(m[0, j] * cof[0, j] for j in range(3))
     return cof.T * mj.Jet.lift(det).reciprocal()
 
 
 def flat(value) -> list:
     """A member's value now (t = t₀), as a list of numbers."""
-    if isinstance(value, np.ndarray):
+    if isinstance(value, mj.Array):
         return [mj.Jet.lift(e).value for e in value.ravel()]
     return [mj.Jet.lift(value).value]
 

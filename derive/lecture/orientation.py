@@ -73,7 +73,8 @@ class AlongMomentum:
         v = sp.sympify(v)
         if v.free_symbols & set(rot.RATES):
             v = v.xreplace(self.rates)
-        v = v.replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a)).replace(sp.cot, lambda a: sp.cos(a) / sp.sin(a))
+        if v.has(sp.tan, sp.cot):
+            v = v.replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a)).replace(sp.cot, lambda a: sp.cos(a) / sp.sin(a))
         return v.xreplace(self.trig)
 
     def angles_left(self, v) -> bool:

@@ -271,7 +271,9 @@ class Rereading:
         """A statement that holds only because the text made the body symmetric says so:
         'under I₁ = I₂' with where the text said it."""
         keys = [k for k in self._symmetry_keys() if k in saved.subs]
-        if not keys or not claims or not re.search(r"I_\{?[12]|T\b|L\b|E\b|p_", piece):
+        # only a claim that holds is told so: with none, the reading without I₁ = I₂ has no use
+        if not keys or not any(c.verdict == "holds" for c in claims) or \
+                not re.search(r"I_\{?[12]|T\b|L\b|E\b|p_", piece):
             return
         bare = _copied(saved)
         for k in keys:

@@ -165,9 +165,11 @@ def products_of_inertia(body: str) -> bool:
 
 
 def rate(e):
-    """d/dt under rigid rotation: ṙ = 𝛚 × 𝐫 for every point, 𝛚̇ = 𝛂; the masses are constant."""
+    """d/dt under rigid rotation: ṙ = 𝛚 × 𝐫 for every point, 𝛚̇ = 𝛂; the masses are constant.
+    The system's 𝐋 gives its `torque` (derived once)."""
     if isinstance(e, sp.MatrixBase):
-        return e.applyfunc(rate)
+        system = next((s for s in ("single", "body") if e == momentum(s)), None)
+        return torque(system) if system else e.applyfunc(rate)
     return _rate(sp.sympify(e))
 
 
@@ -178,11 +180,13 @@ def _rate(e):
         raise lx.NotRead("a second time derivative of 𝛚")
     if any(s.name.endswith(("_x", "_y", "_z")) and s not in set(W) for s in e.free_symbols):
         raise lx.NotRead("the rate of a vector the text has not tied to the body")
-    out = sp.S.Zero
+    out, free = sp.S.Zero, e.free_symbols
     for r in [R0, *RK]:
+        if free.isdisjoint(r):
+            continue            # a point the expression does not hold: its rate adds 0
         v = W.cross(r)
         out += sum(sp.diff(e, r[i]) * v[i] for i in range(3))
-    out += sum(sp.diff(e, W[i]) * WD[i] for i in range(3))
+    out += sum(sp.diff(e, W[i]) * WD[i] for i in range(3) if W[i] in free)
     return out
 
 
@@ -195,7 +199,11 @@ def momentum(system: str) -> sp.ImmutableMatrix:
 @functools.lru_cache(maxsize=None)
 def torque(system: str) -> sp.ImmutableMatrix:
     """d𝐋/dt under rigid rotation."""
-    return sp.ImmutableMatrix(rate(momentum(system)).applyfunc(zt.expanded))
+    L = momentum(system)
+    motion = dict(zip(W, WD))             # the field d/dt moves along (`rate`): 𝛚̇ = 𝛂, ṙ = 𝛚 × 𝐫
+    for r in [R0, *RK]:
+        motion.update(zip(r, W.cross(r)))
+    return sp.ImmutableMatrix([zt.expanded_derivative(zt.expanded(L[i]), field=motion) for i in range(3)])
 
 
 def _momentum(system: str) -> sp.Matrix:
@@ -207,7 +215,8 @@ def _momentum(system: str) -> sp.Matrix:
 @functools.lru_cache(maxsize=None)
 def tensor(system: str) -> sp.ImmutableMatrix:
     """𝐈 = ∂𝐋/∂𝛚 of the system."""
-    return sp.ImmutableMatrix(momentum(system).applyfunc(zt.expanded).jacobian(W).applyfunc(zt.expanded))
+    L = momentum(system).applyfunc(zt.expanded)
+    return sp.ImmutableMatrix(3, 3, lambda i, j: zt.expanded_derivative(L[i], W[j]))
 
 
 @functools.lru_cache(maxsize=None)

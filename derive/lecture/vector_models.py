@@ -14,7 +14,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vector_parser import LAW, _FreeIndex
-from derive.lecture.zero_test import expanded
+from derive.lecture.zero_test import expanded, expanded_derivative
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -128,11 +128,9 @@ class Model:
 
     def derivative(self, X: sp.Matrix, frame: str) -> sp.Matrix:
         """Body components of (dX/dt) in the inertial frame (Rᵀ d(R X)/dt) or the body frame (Ẋ)."""
-        Xd = X.applyfunc(self.dt)
-        if frame == "body":
-            return Xd
-        R, Rd = _turning(self.d.conv)
-        return R.T * (Rd * X) + Xd
+        generic = tuple((tuple(X), tuple(Xd)) for X, Xd in self.generic.values())
+        out = _derivative(self.d, generic, sp.ImmutableMatrix(X), frame, type(X))
+        return out.copy() if isinstance(out, sp.MutableDenseMatrix) else out
 
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
@@ -230,15 +228,23 @@ def _tensor(name: str) -> sp.ImmutableMatrix:
     model = Model(name)
     if name == "principal":
         return sp.ImmutableMatrix(sp.diag(*model.moments))
-    return sp.ImmutableMatrix(sp.hessian(expanded(model.kinetic), list(lx.W)).applyfunc(expanded))
+    kinetic = expanded(model.kinetic)
+    return sp.ImmutableMatrix(3, 3, lambda i, j: expanded_derivative(kinetic, lx.W[i], lx.W[j]))
 
 
-@functools.lru_cache(maxsize=None)
-def _turning(conv) -> tuple:
-    """R and dR/dt of a convention (`Model.dt`'s chain rule, in which only the angles enter R),
-    derived once, not for each frame derivative."""
-    R = conv.matrix()
-    return R, R.applyfunc(lambda e: time_derivative(e, coords=ANGLES, rates=RATES, accels=ACCELS))
+@functools.lru_cache(maxsize=256)
+def _derivative(d, generic: tuple, X: sp.ImmutableMatrix, frame: str, kind: type) -> sp.MatrixBase:
+    """`Model.derivative` of X (of the matrix class ``kind``) in the convention of the derivation
+    ``d``, with the text's generic vectors ``generic`` as (components, rates): derived once, a
+    statement being read again under its second readings."""
+    model = Model("frame", d)
+    model.generic = {k: (sp.Matrix(c), sp.Matrix(r)) for k, (c, r) in enumerate(generic)}
+    X = kind(X)
+    Xd = X.applyfunc(model.dt)
+    if frame == "body":
+        return Xd
+    R, Rd = d.turning            # R and dR/dt of the convention, kept between commands
+    return R.T * (Rd * X) + Xd
 
 
 def _text_letter(p, a, meaning) -> bool:

@@ -77,12 +77,59 @@ def expanded(d):
     sin, cos, tan of symbols (`_generators`) multiplied out in SymPy's sparse polynomial ring
     instead (sums and products of dicts of monomials), each of those taken as one generator. The
     result, the sum of its monomials as SymPy builds it (x·x⁻¹ = 1, sin θ² kept), is the canonical
-    sum `expand` reaches by rewriting the expression tree term by term."""
+    sum `expand` reaches by rewriting the expression tree term by term. Kept per expression: a
+    statement read again under its second readings expands the same differences."""
+    try:
+        return _expanded_kept(d)
+    except TypeError:           # a mutable matrix: not hashable, expanded as it stands
+        return _expanded(d)
+
+
+@functools.lru_cache(maxsize=4096)
+def _expanded_kept(d):
+    return _expanded(d)
+
+
+def _expanded(d):
     gens = _generators(d)
     if not gens:
         return sp.expand(d)
     R = ring(gens, sp.QQ)[0]
     return _in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
+
+
+def expanded_derivative(e, *xs, field=None):
+    """``expanded(∂ⁿe/∂x₁…∂xₙ)``; with ``field``, a dict of polynomials by symbol, the same of
+    Σ ∂e/∂x · field[x] (d/dt along ẋ = field[x]). A polynomial (as `expanded` reads it) in which
+    each x is a generator that no other generator depends on is differentiated in the sparse
+    polynomial ring, c·k·x^(k−1)… monomial by monomial; anything else through ``sp.diff``. Either
+    way the result is the canonical expanded sum."""
+    field = field or {}
+    parts = [_ring_generators(t) for t in (e, *field.values())]
+    if all(g is not None for g in parts):
+        gens = sorted(set().union(*parts, xs, field), key=sp.default_sort_key)
+        wrt = (*xs, *field)
+        if all(x.is_Symbol for x in wrt) and not any(x in g.free_symbols for x in wrt for g in gens if g != x):
+            R = ring(gens, sp.QQ)[0]
+            at = dict(zip(gens, R.gens))
+            p = _in_ring(e, at, R, {})
+            for x in xs:
+                p = p.diff(at[x])
+            if field:
+                p = sum((p.diff(at[x]) * _in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
+            return p.as_expr()
+    d = sp.diff(e, *xs) if xs else e
+    if field:
+        d = sum((sp.diff(d, x) * v for x, v in field.items()), sp.S.Zero)
+    return expanded(d)
+
+
+def _ring_generators(t) -> list | None:
+    """`_generators` of t, an atom included (a symbol is its own, a rational has none)."""
+    t = sp.sympify(t)
+    if t.is_Symbol:
+        return [t]
+    return [] if t.is_Rational else _generators(t)
 
 
 def _generators(d) -> list | None:

@@ -156,9 +156,11 @@ def _rem_cos_squares(poly, pairs) -> sp.Expr:
 
 def time_derivative(expr, coords=ANGLES, rates=RATES, accels=None):
     """d/dt of an expression in (q, q̇) by the chain rule: Σ ∂/∂q_i q̇_i (+ Σ ∂/∂q̇_i q̈_i)."""
-    d = sum((sp.diff(expr, q) * qd for q, qd in zip(coords, rates)), sp.S.Zero)
+    # a coordinate the expression does not hold adds 0 to the sum: it is not differentiated
+    free = getattr(sp.sympify(expr), "free_symbols", ())
+    d = sum((sp.diff(expr, q) * qd for q, qd in zip(coords, rates) if q in free), sp.S.Zero)
     if accels is not None:
-        d += sum((sp.diff(expr, qd) * qdd for qd, qdd in zip(rates, accels)), sp.S.Zero)
+        d += sum((sp.diff(expr, qd) * qdd for qd, qdd in zip(rates, accels) if qd in free), sp.S.Zero)
     return d
 
 
