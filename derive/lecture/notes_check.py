@@ -49,6 +49,7 @@ from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.chain_links import ChainLinks
+from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
@@ -119,7 +120,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -240,6 +241,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
                 self._at_setting(item.line, pieces):
             self._close_display()
             return
+        self._named_at_chain_end(latex)
         relabelled = _repeated_labels(pieces)
         previous = None
         for piece in pieces:
