@@ -47,7 +47,9 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.axis_products import AxisProducts
 from derive.lecture.chain_links import ChainLinks
+from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
@@ -67,6 +69,7 @@ from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_rates import OwnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
+from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
 from derive.lecture.spellings import spellings
 from derive.lecture.stated_convention import general_form
@@ -117,7 +120,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -234,9 +237,11 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
         seen = []
         start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
-        if self._coordinate_turn(item.line, pieces):
+        if self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
+                self._at_setting(item.line, pieces):
             self._close_display()
             return
+        self._named_at_chain_end(latex)
         relabelled = _repeated_labels(pieces)
         previous = None
         for piece in pieces:

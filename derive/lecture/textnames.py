@@ -299,6 +299,8 @@ class TextNames:
         self.settings_only = False
         if self._vectors(line, piece, getattr(self, "_text", piece)):
             return True
+        if self._restated(line, piece, members, rels):
+            return True
         names = ", ".join(sorted(self.tex(s) for s in loose))
         if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
             self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")

@@ -1,0 +1,36 @@
+"""A relation of the text's own names that it writes again with a name it has since defined put in.
+
+Takes: the members of a relation the checker could not tie to the derivation
+(`derive.lecture.textnames.TextNames._undefined`), resolved through the text's definitions.
+Gives the mixin `Restated` of `derive.lecture.notes_check.Checker`, whose `_restated` keeps each
+such equation ``A = B`` of a first reading and reads a later ``A = B'`` with the same left side as
+the same claim restated: it holds when ``B' − B`` expands to zero with the text's definitions put
+in (König's ``T = ½ m v_c² + ½ J_C ω²`` written again as ``T = ½ m v_c² + ½ (J_{z'} − m d²) ω²``
+after ``J_{z'} = J_C + m d²``). That says only that the text agrees with itself; a restatement that
+differs says nothing (either of the two may be the one the text meant), so it is never flagged.
+
+May import: :mod:`derive.lecture.latex`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+
+class Restated:
+    """Mixin of the checker. Uses ``self._resolve``, ``self._add`` and ``self.tex``."""
+
+    def _restated(self, line, piece, members, rels) -> bool:
+        """True (and a verdict given) when ``members`` restate an earlier equation of the text's
+        with the same left side; else the equation is kept for the later ones and False."""
+        if rels != ["="] or len(members) != 2 or getattr(self, "_rereading_later", False):
+            return False
+        kept = self.__dict__.setdefault("restatable", [])
+        left = sp.sympify(members[0])
+        right = sp.sympify(self._resolve(members[1]))
+        for at, was_left, was_right in kept:
+            if at < line and was_left == left and sp.expand(right - was_right) == 0:
+                self._add(line, piece, "identity", "holds",
+                          f"restates the text's {self.tex(left)} of line {at} with its own definitions put in (expand)")
+                return True
+        kept.append((line, left, right))
+        return False

@@ -1,0 +1,34 @@
+"""The notes reader on a name the text defines at the end of a chain (``L_z = \\omega \\sum_i m_i r_i^2
+= J_z \\omega``): the new name times a factor of the member before it is that member over the
+factor, and the displays after it use the name so defined."""
+import kept_readings as kept
+
+CHAIN = "# Notes\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n\n"
+RADIUS = "The radius of gyration, $\\rho_z^2 = \\sum_i m_i r_i^2 / m$:\n\n"
+
+
+def verdicts(text):
+    out = {}
+    for c in kept.check_text(text):
+        out.setdefault(c.line, set()).add(c.verdict)
+    return out
+
+
+def line_of(text, marker):
+    return text[:text.index(marker)].count("\n") + 1
+
+
+def test_a_name_met_at_a_chains_end_is_defined_by_the_member_before_it():
+    text = CHAIN + RADIUS + "$$\\rho_z = \\sqrt{\\frac{J_z}{m}}$$\n"
+    assert verdicts(text)[line_of(text, "$$\\rho_z =")] == {"holds"}
+
+
+def test_the_name_so_defined_does_not_make_a_wrong_relation_hold():
+    text = CHAIN + RADIUS + "$$\\rho_z = \\sqrt{\\frac{m}{J_z}}$$\n"
+    assert "holds" not in verdicts(text)[line_of(text, "$$\\rho_z =")]
+
+
+def test_a_name_at_a_chains_end_without_a_shared_factor_is_not_defined():
+    text = ("# Notes\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z$$\n\n" + RADIUS +
+            "$$\\rho_z = \\sqrt{\\frac{J_z \\omega}{m}}$$\n")
+    assert "holds" not in verdicts(text)[line_of(text, "$$\\rho_z =")]

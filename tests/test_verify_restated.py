@@ -1,0 +1,39 @@
+"""The notes reader on a relation of the text's own names written again: once the text has defined
+a name it puts into a later form of the same relation, the later form holds when it expands to
+the earlier one; one that differs is not judged, and the first statement is never judged by it."""
+import kept_readings as kept
+
+HEAD = "# Notes\n\n"
+PARALLEL = "With $J_C$ the moment about the centre of mass,\n\n$$ J_{z^\\prime} = J_C + m d^2$$\n\n"
+KOENIG = "$$T = \\frac{1}{2} m v_c^2 + \\frac{1}{2} J_C \\omega^2$$\n\n"
+
+
+def verdicts(text):
+    out = {}
+    for c in kept.check_text(text):
+        out.setdefault(c.line, set()).add(c.verdict)
+    return out
+
+
+def line_of(text, marker):
+    return text[:text.index(marker)].count("\n") + 1
+
+
+def test_a_relation_written_again_with_a_defined_name_put_in_holds():
+    again = "and so\n\n$$T = \\frac{1}{2} m v_c^2 + \\frac{1}{2} (J_{z^\\prime} - m d^2) \\omega^2$$\n"
+    text = HEAD + PARALLEL + KOENIG + again
+    got = verdicts(text)
+    assert got[line_of(text, "(J_{z^\\prime} - m d^2)")] == {"holds"}
+    assert "holds" not in got[line_of(text, "J_C \\omega^2$$")]        # the first statement stays unjudged
+
+
+def test_a_relation_written_again_differently_is_not_judged():
+    again = "and so\n\n$$T = \\frac{1}{2} m v_c^2 + \\frac{1}{2} (J_{z^\\prime} + m d^2) \\omega^2$$\n"
+    text = HEAD + PARALLEL + KOENIG + again
+    assert not verdicts(text)[line_of(text, "(J_{z^\\prime} + m d^2)")] & {"holds", "fails", "typo"}
+
+
+def test_a_relation_with_another_left_side_is_not_a_restatement():
+    again = "and so\n\n$$U = \\frac{1}{2} m v_c^2 + \\frac{1}{2} (J_{z^\\prime} - m d^2) \\omega^2$$\n"
+    text = HEAD + PARALLEL + KOENIG + again
+    assert "holds" not in verdicts(text)[line_of(text, "$$U =")]
