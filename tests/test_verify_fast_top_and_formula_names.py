@@ -91,3 +91,19 @@ def test_the_tilt_equation_in_the_pivots_moment_holds_and_a_slip_in_it_is_never_
     assert good == ["holds"], good
     bad = [c.verdict for c in kept.check_text(text + eq.replace("-mgd", "+mgd") + "\n") if c.line >= 13]
     assert "holds" not in bad, bad
+
+
+def test_the_fast_tops_lead_is_the_root_solve_gives_in_every_euler_sequence():
+    import sympy as sp
+
+    from derive.lecture.derivation import Derivation
+    from derive.lecture.fast_top import _C, _S, slow_precession_lead
+    from derive.symbolic import rotations as rot
+
+    for seq in ("z-x-z", "z-y-z", "x-y-x", "x-z-x", "y-x-y", "y-z-y", "z-y-x", "x-y-z", "y-z-x"):
+        force = Derivation(seq).steady_force
+        at = sp.expand(force.xreplace({rot.gamma_d: _S, rot.alpha_d: _C / _S}))
+        roots = sp.solve(sp.limit(at, _S, sp.oo), _C)
+        lead = slow_precession_lead(force, rot.alpha_d, rot.gamma_d)
+        assert len(roots) == 1 and lead is not None, seq
+        assert lead == roots[0], (seq, lead, roots)     # the same tree, so the same message

@@ -11,7 +11,8 @@ Takes: the claim's value for the precession rate, resolved by the notes checker.
 (to leading order for a fast spin), or None; anything else — a wrong moment, a missing factor —
 is judged as before.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`,
+:mod:`derive.lecture.zero_test`, SymPy.
 """
 from __future__ import annotations
 
@@ -21,10 +22,12 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
+from derive.lecture.zero_test import surely_nonzero
 from derive.symbolic.lagrangian import I3
 
 _S = sp.Symbol("fast_spin", positive=True)
 _C = sp.Symbol("fast_lead")
+_UNBOUNDED = (sp.oo, -sp.oo, sp.zoo, sp.nan)
 
 
 @functools.lru_cache(maxsize=None)
@@ -35,8 +38,26 @@ def slow_precession_lead(force, alpha_d, gamma_d):
     lead = sp.limit(at, _S, sp.oo)
     if free(lead) & {_S} or not lead.has(_C):
         return None
+    line = lead.as_poly(_C)
+    if line is not None and line.degree() == 1:
+        # A root that is a monomial in the parameters (M g l / I₃ in the proper Euler sequences) is
+        # what `solve` would give: its `simplify`, which loads SymPy's units, has nothing to do.
+        a, b = line.all_coeffs()
+        root = sp.cancel(-b / a)
+        if root != 0 and all(f.is_Number or f.is_Symbol or f.is_Pow and f.base.is_Symbol and f.exp.is_Integer
+                             for f in sp.Mul.make_args(root)):
+            return root
     roots = sp.solve(lead, _C)
     return roots[0] if len(roots) == 1 and roots[0] != 0 else None
+
+
+def _lead(e):
+    """lim e for a fast spin, or None where it has no finite value (e grows with the spin)."""
+    spun = e.as_poly(_S)
+    if spun is not None and spun.degree() > 0 and surely_nonzero(spun.coeff_monomial(_S**spun.degree())):
+        return None     # a polynomial in the spin whose leading coefficient is not zero: no limit to take
+    lead = sp.limit(e, _S, sp.oo)
+    return None if lead.has(*_UNBOUNDED) else lead
 
 
 class FastTop:
@@ -53,8 +74,8 @@ class FastTop:
         c = slow_precession_lead(self.d.steady_force, rot.alpha_d, rot.gamma_d)
         if c is None:
             return None
-        lead = sp.limit(sp.expand(val.xreplace(spin) * _S), _S, sp.oo)
-        if lead == 0 or free(lead) & {_S} or sp.simplify(lead - c) != 0:
+        lead = _lead(sp.expand(val.xreplace(spin) * _S))
+        if lead is None or lead == 0 or free(lead) & {_S} or sp.simplify(lead - c) != 0:
             return None
         spun, tilt = self.tex(rot.gamma_d), self.tex(rot.beta)
         return (f"the fast top's slow precession: to leading order in 1/{spun}, the steady-precession "
