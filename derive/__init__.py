@@ -13,14 +13,11 @@ The public API is this module: :func:`simulate`, :func:`prepare`, :func:`simulat
 
 Each entry point here imports its stage when first called, not at ``import derive``: a stage
 brings NumPy, compiled libraries or SymPy, which ``derive --help`` and a program that only
-imports the package do not pay for. So does :class:`SaveAt` (``derive.SaveAt``, ``from derive
-import SaveAt``): the module's ``__getattr__`` loads ``derive.sim.saveat`` on first use, which
-``derive verify`` and the other commands that keep no run's outputs never make. The functions here are the documented face (signatures,
+imports the package do not pay for. The functions here are the documented face (signatures,
 docstrings, examples); the stages' own functions take the normalised arguments.
 """
-import importlib
-
 from derive.errors import CompilerError, IntegrationError, SceneError
+from derive.sim.saveat import SaveAt, choose as _choose
 
 #: The one place the version is written (pyproject.toml reads it; `derive --version` prints it).
 __version__ = "0.1.0"
@@ -30,19 +27,6 @@ unrelated project. The import and the command stay ``derive``."""
 
 __all__ = ["SceneError", "IntegrationError", "CompilerError", "SaveAt", "simulate", "simulate_batch",
            "sweep", "analyze", "prepare"]
-
-#: The public names loaded on first use (PEP 562), by the module that defines each.
-_LAZY = {"SaveAt": "derive.sim.saveat"}
-
-
-def __getattr__(name):
-    if name in _LAZY:
-        return getattr(importlib.import_module(_LAZY[name]), name)
-    raise AttributeError(f"module 'derive' has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(set(globals()) | set(_LAZY))
 
 
 def simulate(scene, *, saveat=None, **overrides):
@@ -100,10 +84,9 @@ def simulate(scene, *, saveat=None, **overrides):
 
     A second call with the same model reuses the compiled kernel (no derivation, no compile).
     """
-    from derive.sim.saveat import choose
     from derive.sim.simulation import simulate as _simulate
 
-    return _simulate(scene, choose(saveat), **overrides)
+    return _simulate(scene, _choose(saveat), **overrides)
 
 
 def prepare(scene, **overrides):
@@ -203,9 +186,8 @@ def simulate_batch(scenes, outputs=None, *, saveat=None, **overrides):
     ((2,), (2, 3), True)
     """
     from derive.sim.batch import simulate_batch as _batch
-    from derive.sim.saveat import choose
 
-    return _batch(scenes, choose(saveat, outputs), **overrides)
+    return _batch(scenes, _choose(saveat, outputs), **overrides)
 
 
 def sweep(spec, *, workers=None, scheduler=None, progress=None, saveat=None, **kwargs):
@@ -260,11 +242,10 @@ def sweep(spec, *, workers=None, scheduler=None, progress=None, saveat=None, **k
     >>> res.measures["beta_max"].shape
     (4,)
     """
-    from derive.sim.saveat import choose
     from derive.sweeps.engine import sweep as _sweep
 
     return _sweep(spec, workers=workers, scheduler=scheduler, progress=progress,
-                  saveat=None if saveat is None else choose(saveat), **kwargs)
+                  saveat=None if saveat is None else _choose(saveat), **kwargs)
 
 
 def analyze(scene):
