@@ -100,3 +100,52 @@ def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_com
 def test_a_name_heading_a_chain_in_another_section_is_not_compared_with_an_earlier_sections_value():
     text = _TURNING + _TANGENTIAL + "## Another example\n\n" + _NORMAL
     assert not any(v in ("typo", "fails") for line, v in verdicts(text))
+
+
+_FORCE_ROW = r"m_i (\alpha y_i + \omega^2 x_i) & m_i (-\alpha x_i + \omega^2 y_i) & 0"
+_DET = r"\det \begin{bmatrix} \hat i & \hat j & \hat k \\ x_i & y_i & z_i \\ " + _FORCE_ROW + r" \end{bmatrix}"
+_MOMENT = (r"m_i [(\alpha x_i z_i - \omega^2 y_i z_i) \hat i + (\alpha y_i z_i + \omega^2 x_i z_i) \hat j "
+           r"- \alpha (x_i^2 + y_i^2) \hat k ]")
+
+
+def test_det_before_a_bracketed_matrix_is_its_determinant_along_the_row_of_unit_vectors():
+    text = _TURNING + f"$$\\vec M_i = {_DET} = {_MOMENT}$$\n"
+    assert (5, "holds") in verdicts(text)
+    slipped = _MOMENT.replace(r"- \omega^2 y_i z_i", r"+ \omega^2 y_i z_i", 1)
+    assert any(v in ("typo", "fails") for line, v in verdicts(_TURNING + f"$$\\vec M_i = {_DET} = {slipped}$$\n"))
+
+
+def test_a_member_in_the_texts_own_vectors_stays_with_the_head_and_the_members_after_it_are_checked():
+    text = _TURNING + f"$$\\vec M_i = \\vec r_i \\times \\vec F_i = {_DET} = {_MOMENT}$$\n"
+    got = verdicts(text)
+    assert (5, "holds") in got and (5, "unchecked") in got
+    slipped = _MOMENT.replace(r"- \alpha (x_i^2", r"+ \alpha (x_i^2", 1)
+    got = verdicts(_TURNING + f"$$\\vec M_i = \\vec r_i \\times \\vec F_i = {_DET} = {slipped}$$\n")
+    assert any(v in ("typo", "fails") for line, v in got)
+
+
+def test_a_row_after_a_chain_headed_by_the_texts_own_name_is_checked_against_the_row_before_it():
+    text = _TURNING + ("$$\\begin{aligned}\\vec M_{O,i} &= \\vec r_i \\times \\vec F_i = " + _DET +
+                       " \\\\\n&= " + _MOMENT + "\\end{aligned}$$\n")
+    assert (5, "holds") in verdicts(text)
+    slipped = text.replace(r"- \alpha (x_i^2", r"+ \alpha (x_i^2", 1)
+    assert not any(v in ("typo", "fails") for line, v in verdicts(slipped))    # a link between vectors never flags
+
+
+_NAMED_AT_END = "# Fixed axis\n\nA body turns about the fixed $z$ axis.\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n\n"
+_RATE = r"\frac{\mathrm d \omega}{\mathrm d t}"
+
+
+def test_a_name_defined_at_a_chains_end_is_read_as_that_definition_in_a_later_statement_in_sums():
+    holds = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = J_z {_RATE}$$\n"
+    assert (7, "holds") in verdicts(holds)
+    doubled = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = 2 J_z {_RATE}$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    same_line = verdicts(_NAMED_AT_END)
+    assert not any(v in ("typo", "fails") for line, v in same_line)        # its own display is its definition
+
+
+def test_the_rate_of_a_plain_omega_implies_the_fixed_axis_as_a_plain_omega_does():
+    text = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = \\sum_i m_i r_i^2 {_RATE}$$\n"
+    assert (7, "holds") in verdicts(text)
+    assert any(v in ("typo", "fails") for line, v in verdicts(text.replace("r_i^2 \\frac", "r_i^3 \\frac")) if line == 7)

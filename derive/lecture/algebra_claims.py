@@ -23,6 +23,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
@@ -57,6 +58,7 @@ class AlgebraStatements:
         statement has its markers; never the lecture's own vector notation."""
         if va.lecture_notation(text):
             return False
+        text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), None)   # J_z = Σ mᵢ rᵢ²: a sum
         state = self._alg
         if va.markers(text, bold=self._alg_read) or _torque_law(text, state):
             return True
@@ -66,6 +68,7 @@ class AlgebraStatements:
         """Read and judge a statement (False when this reader cannot read it)."""
         if va.lecture_notation(text):
             return False
+        text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), line)   # J_z as the text defined it
         state = self._alg
         axis = fixed_axis.setting(text)
         if axis is not None:
@@ -157,9 +160,13 @@ class AlgebraStatements:
         if parts is None:
             return False
         head, rest = parts
-        try:
-            first = va.read(rest, copy.deepcopy(state))
-        except lx.NotRead:
+        first = None
+        while first is None and rest is not None:
+            try:
+                first = va.read(rest, copy.deepcopy(state))
+            except lx.NotRead:
+                rest = headless_chains.next_members(rest)     # a member in the text's own vectors: left with the head
+        if first is None:
             return False
         section = self._section_of(line)
         named = self.__dict__.setdefault("_named_heads", {})

@@ -38,6 +38,8 @@ def setting(text: str) -> int | None:
 
 
 _PLAIN_OMEGA = re.compile(r"(?<!\\vec)(?<!\\mathbf\{)(?<!\\boldsymbol\{)(?<!\\bm\{)(?<!\\hat\{)\\omega(?![A-Za-z])(?!\s*_)(?!\s*\})")
+_OMEGA_RATE = re.compile(r"\\frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s*d|d)\s*\\omega\s*\}|\\dot\s*\{?\s*\\omega(?![A-Za-z])(?!\s*\}?\s*_)")
+"""The rate of a plain ω, dω/dt or ω̇ (a rate, not a component): it implies the axis as ω does."""
 _COMPONENT = re.compile(r"(?<![\\A-Za-z])(?:L|J|I|H)\s*_\s*\{?\s*(?P<axis>[xyz])\s*\}?(?![A-Za-z_{])")
 
 
@@ -46,7 +48,7 @@ def implied(text: str) -> int | None:
     angular momentum or a moment of inertia about one axis (L_z, J_z) beside a plain ω (a rate, not
     a component) — the only reading in which they are related is a rotation about that axis. None
     when the statement names no such component or no plain ω, or more than one axis."""
-    if not _PLAIN_OMEGA.search(text):
+    if not (_PLAIN_OMEGA.search(text) or _OMEGA_RATE.search(text)):
         return None
     axes = {m.group("axis") for m in _COMPONENT.finditer(text)}
     return AXIS[axes.pop()] if len(axes) == 1 else None
