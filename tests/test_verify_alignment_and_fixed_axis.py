@@ -48,8 +48,8 @@ _TURNING = "# Fixed axis\n\n$$\\vec \\omega = \\omega \\hat k, \\; \\vec \\alpha
 
 
 def test_a_chain_headed_by_the_texts_own_vector_checks_the_members_after_it():
-    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
-                       "$$\\vec a_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
+    text = _TURNING + ("$$\\vec u_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\vec u_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
     got = verdicts(text)
     assert (5, "holds") in got and (5, "unchecked") in got      # the head is the text's name, left unchecked
     assert (7, "fails") in got or (7, "typo") in got             # the normal acceleration points to the axis
@@ -86,8 +86,8 @@ def test_a_link_between_vectors_that_would_flag_stays_unchecked():
     assert not any(v in ("typo", "fails") for line, v in verdicts(text))
 
 
-_TANGENTIAL = "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
-_NORMAL = "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
+_TANGENTIAL = "$$\\vec u_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+_NORMAL = "$$\\vec u_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
 
 
 def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_compared_with_that_value():
@@ -149,3 +149,13 @@ def test_the_rate_of_a_plain_omega_implies_the_fixed_axis_as_a_plain_omega_does(
     text = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = \\sum_i m_i r_i^2 {_RATE}$$\n"
     assert (7, "holds") in verdicts(text)
     assert any(v in ("typo", "fails") for line, v in verdicts(text.replace("r_i^2 \\frac", "r_i^3 \\frac")) if line == 7)
+
+
+def test_a_points_acceleration_and_its_tangential_and_normal_parts_are_read_by_their_labels():
+    sum_of_parts = _TURNING + "$$\\vec a_i = \\vec a_i^t + \\vec a_i^n$$\n"
+    assert (5, "holds") in verdicts(sum_of_parts)
+    tangential = _TURNING + "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n"
+    assert [v for line, v in verdicts(tangential) if line == 5] == ["holds", "holds"]
+    normal_for_tangential = _TURNING + "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i)$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(normal_for_tangential) if line == 5)
+    assert (5, "holds") in verdicts(normal_for_tangential.replace("a_i^t", "a_i^n"))
