@@ -159,3 +159,18 @@ def test_a_points_acceleration_and_its_tangential_and_normal_parts_are_read_by_t
     normal_for_tangential = _TURNING + "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i)$$\n"
     assert any(v in ("typo", "fails") for line, v in verdicts(normal_for_tangential) if line == 5)
     assert (5, "holds") in verdicts(normal_for_tangential.replace("a_i^t", "a_i^n"))
+
+
+_PRODUCTS = ("$$\\begin{aligned} J_{yz} = J_{zy} &= \\sum_i m_i y_i z_i \\\\ J_{zx} = J_{xz} &= \\sum_i m_i z_i x_i "
+             "\\end{aligned}$$\n\n")
+_SUMMED = ("$$\\vec M_{I} = \\sum_i m_i[(\\alpha x_i z_i - \\omega^2 y_i z_i) \\hat i + "
+           "(\\alpha y_i z_i + \\omega^2 x_i z_i) \\hat j]$$\n\n")
+_IN_PRODUCTS = "$$\\vec M_{I} = (J_{xz} \\alpha - J_{yz} \\omega^2) \\hat i + (J_{yz} \\alpha + J_{xz} \\omega^2) \\hat j$$\n"
+
+
+def test_the_texts_vector_set_again_holds_when_both_expressions_agree_with_its_names_put_in():
+    got = verdicts(_TURNING + _PRODUCTS + _SUMMED + _IN_PRODUCTS)
+    assert (7, "unchecked") in got and (9, "holds") in got       # J_zx = J_xz named together; M_O recorded, then met
+    slipped = _IN_PRODUCTS.replace("J_{yz} \\alpha + J_{xz}", "J_{yz} \\alpha - J_{xz}", 1)
+    got = verdicts(_TURNING + _PRODUCTS + _SUMMED + slipped)
+    assert [v for line, v in got if line == 9] == ["unchecked"]    # either expression may be the one meant

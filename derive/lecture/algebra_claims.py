@@ -144,12 +144,13 @@ class AlgebraStatements:
                 if state.named_by[name] == text:
                     return None             # the statement that named it, met again: not a claim about it
                 return va.read(state.named[name] + " = " + rest, state) if va.markers(rest, bold=True) else None
-            reading = va.read(rest, copy.deepcopy(state))
+            reading, aliases = _aliased(rest, state)
         except lx.NotRead:
             return None
         first = reading.members[0]
-        state.named[name] = reading.source[first[0].start:first[0].end].strip()
-        state.named_by[name] = text
+        for each in (name, *aliases):
+            state.named[each] = reading.source[first[0].start:first[0].end].strip()
+            state.named_by[each] = text
         self._alg_read = True
         return va.read(rest, state) if len(first) > 1 else None
 
@@ -158,7 +159,7 @@ class AlgebraStatements:
         unchecked, the members after it read and judged as a chain of their own."""
         parts = headless_chains.split(text)
         if parts is None:
-            return False
+            return self._own_vector_set(line, piece, text, state)
         head, rest = parts
         first = None
         while first is None and rest is not None:
@@ -181,6 +182,39 @@ class AlgebraStatements:
         if read and value is not None and mine and all(v == "holds" for v in mine) and (head, section) not in named:
             named[(head, section)] = (line, value)     # the chain holds: the name is its value from here on
         return read
+
+    def _own_vector_set(self, line, piece, text, state) -> bool:
+        """``\\vec M_{O} = …``, the text's own vector set equal to one expression: recorded the
+        first time (`headless_chains.definition`); set again, ``holds`` when the two expressions agree
+        with the text's names put in, else unjudged (either may be the one the text meant)."""
+        parts = headless_chains.definition(text)
+        if parts is None:
+            return False
+        head, rest = parts
+        key, rest = re.sub(r"\s+", "", head), _expanded(rest, state.named)
+        if key not in state.named:
+            try:
+                va.read(rest, copy.deepcopy(state))
+            except lx.NotRead:
+                return False
+            state.named[key], state.named_by[key] = rest, text
+            self._add(line, piece, "definition", "unchecked", f"defines the text's vector {head} (recorded, then used)")
+            return True
+        again = r"\left(" + state.named[key] + r"\right) = " + rest
+        try:
+            reading = va.read(again, state)
+        except lx.NotRead:
+            return False
+        verdict, why = self._algebra_pair(reading, 0, 1)
+        if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(again):
+            verdict, why = self._from_the_axis(again, 0, 1, verdict, why)
+        if verdict != "holds":
+            verdict, why = "unchecked", (f"sets the text's vector {head} equal to another expression than where it "
+                                         "was set; either may be the one the text meant")
+        else:
+            why = f"the text's vector {head} as it was set, with its names put in: {why}"
+        self._add(line, piece, "identity", verdict, why)
+        return True
 
     def _section_of(self, line) -> int:
         names = getattr(self.notes, "names", None)
@@ -393,6 +427,21 @@ def _torque_law(text, state) -> bool:
     return any(t.kind == "atom" and t.value.bold and t.value.base in state.torques
                and ((not t.value.sub and t.value.base not in va.TORQUES) or va.labelled_torque(t.value.sub))
                for t in _tokens(va.prepare(text)))
+
+
+def _aliased(rest, state):
+    """The reading of a name's expression, and the other names set to it first (``J_{xy} = J_{yx} =
+    \\sum_i m_i x_i y_i``: J_{yx} is one); `lx.NotRead` when neither reads."""
+    try:
+        return va.read(rest, copy.deepcopy(state)), ()
+    except lx.NotRead:
+        alias = _NAME_FIRST.match(rest)
+        if alias is None:
+            raise
+        reading = va.read(rest[alias.end():], copy.deepcopy(state))
+        if len(reading.members[0]) > 1:
+            raise
+        return reading, (alias.group(1).replace(" ", ""),)
 
 
 def _mentions(text, state) -> bool:

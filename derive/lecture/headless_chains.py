@@ -11,7 +11,10 @@ without knowing the name. The head itself stays unchecked, said so; the rest is 
 of its own; when its first member is itself written in the text's own vectors (𝐫ᵢ × 𝐅ᵢ with 𝐅ᵢ a
 label of the text), that member is left with the head and the members after it are the chain
 (`next_members`), and a row after it that goes on with ``=`` is checked against the row before it
-(`own_head`, `derive.lecture.chain_links`). Once such a chain holds, the name is its value in that section of the text: the same
+(`own_head`, `derive.lecture.chain_links`). Such a vector set equal to one expression it reads
+(`definition`) stands for that expression afterwards: a later statement setting it equal to another
+holds when the two agree with the text's definitions put in, and is left unjudged when they do not
+(either may be the one the text meant). Once such a chain holds, the name is its value in that section of the text: the same
 name heading a later chain there is compared with it (a label slipped onto the wrong quantity,
 a_i^t for the normal acceleration, is flagged).
 """
@@ -80,3 +83,18 @@ def next_members(rest: str) -> str | None:
     if len(rels) < 2 or rels[0].value != "=":
         return None
     return rest[rels[0].pos + 1:].strip()
+
+
+def definition(text: str) -> tuple[str, str] | None:
+    """(the head's LaTeX, the one member after it) for ``\\vec M_{O} = …`` — the text's own vector
+    set equal to one expression, no chain — else None. The head's key is its LaTeX without spaces."""
+    prepared = va.prepare(text)
+    try:
+        toks = lx.scan(prepared)
+    except lx.NotRead:
+        return None
+    rels = [k for k, t in enumerate(toks) if t.kind == "rel"]
+    if len(rels) != 1 or toks[rels[0]].value != "=" or not _own_vector(toks[:rels[0]]):
+        return None
+    at = toks[rels[0]].pos
+    return prepared[:at].strip(), prepared[at + 1:].strip()
