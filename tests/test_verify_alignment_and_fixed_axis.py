@@ -174,3 +174,20 @@ def test_the_texts_vector_set_again_holds_when_both_expressions_agree_with_its_n
     slipped = _IN_PRODUCTS.replace("J_{yz} \\alpha + J_{xz}", "J_{yz} \\alpha - J_{xz}", 1)
     got = verdicts(_TURNING + _PRODUCTS + _SUMMED + slipped)
     assert [v for line, v in got if line == 9] == ["unchecked"]    # either expression may be the one meant
+
+
+def test_an_equivalence_between_two_statements_is_cut_into_each_statement():
+    assert [r.strip() for r in statements(r"a = b \iff c = d")] == ["a = b", "c = d"]
+    assert [r.strip() for r in statements(r"a = b \Leftrightarrow c = d")] == ["a = b", "c = d"]
+
+
+_TORQUES = r"\sum_{i=1}^n M_z (\vec F_i)"
+
+
+def test_the_moment_of_a_force_about_an_axis_is_the_component_of_r_cross_f_and_a_plain_alpha_implies_the_axis():
+    holds = _NAMED_AT_END + f"$$J_z \\alpha = {_TORQUES}$$\n"
+    assert (7, "holds") in verdicts(holds)
+    doubled = _NAMED_AT_END + f"$$2 J_z \\alpha = {_TORQUES}$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    rate = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = {_TORQUES}$$\n"
+    assert (7, "holds") in verdicts(rate)

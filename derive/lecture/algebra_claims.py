@@ -68,7 +68,7 @@ class AlgebraStatements:
         """Read and judge a statement (False when this reader cannot read it)."""
         if va.lecture_notation(text):
             return False
-        text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), line)   # J_z as the text defined it
+        written, text = text, chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), line)   # J_z as defined
         state = self._alg
         axis = fixed_axis.setting(text)
         if axis is not None:
@@ -78,7 +78,7 @@ class AlgebraStatements:
             return True
         kept_axis = state.axis
         if state.axis is None:
-            state.axis = fixed_axis.implied(text)       # L_z beside a plain ω: a rotation about z
+            state.axis = fixed_axis.implied(written)    # L_z beside a plain ω: a rotation about z
         try:
             return self._algebra_read(line, piece, text, state)
         finally:

@@ -106,6 +106,10 @@ of its tangential or normal part, never a power or a transpose (t is written τ 
 takes a bold symbol's ^t for a transpose)."""
 
 
+_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?\s*\(\s*(\\vec\s*\{?\s*F\s*\}?\s*(?:_\s*(\{[^{}]*\}|[A-Za-z0-9]))?)\s*\)")
+"""M_z(𝐅ᵢ), the moment of a force about an axis: (𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
+
+
 def prepare(text: str) -> str:
     text = kane_notation.rewrite(text)
     return _prepare(text)
@@ -115,10 +119,11 @@ def _prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, an acceleration's
-label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), ρ … dV as dm, the
+label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm, the
     momentum element d𝐩 as 𝐯 dm, and beside a dyadic 𝐞 as the unit tensor."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
+    text = _MOMENT_OF.sub(lambda m: f"(\\vec r{'_' + m.group(3) if m.group(3) else ''} \\times {m.group(2)})_{m.group(1)}", text)
     text = _PART_LABEL.sub(lambda m: m.group(1) + ("^{\\tau}" if m.group(2) == "t" else "^{n}"), text)
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
     if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
