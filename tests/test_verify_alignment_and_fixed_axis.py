@@ -191,3 +191,24 @@ def test_the_moment_of_a_force_about_an_axis_is_the_component_of_r_cross_f_and_a
     assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
     rate = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = {_TORQUES}$$\n"
     assert (7, "holds") in verdicts(rate)
+
+
+_PLANE = "# Plane motion\n\n"
+
+
+def test_points_named_by_letters_move_with_the_body_and_a_relation_for_every_motion_of_them_holds():
+    velocities = _PLANE + "$$\\vec v_B = \\vec v_A + \\vec v_{BA} = \\vec v_A + \\vec \\omega \\times \\vec r_{AB}$$\n"
+    assert [v for line, v in verdicts(velocities) if line == 3] == ["holds", "holds"]
+    parts = _PLANE + ("$$\\vec a_{BA}^t = \\vec \\alpha \\times \\vec r_{AB}, \\; "
+                      "\\vec a_{BA}^n = \\vec \\omega \\times (\\vec \\omega \\times \\vec r_{AB})$$\n")
+    assert [v for line, v in verdicts(parts) if line == 3] == ["holds", "holds"]
+    swapped = velocities.replace("\\vec \\omega \\times \\vec r_{AB}", "\\vec r_{AB} \\times \\vec \\omega")
+    assert [v for line, v in verdicts(swapped) if line == 3] == ["holds", "unchecked"]
+
+
+def test_a_relation_of_lettered_points_that_rests_on_the_texts_choice_of_them_is_never_flagged():
+    centre = _PLANE + "$$\\vec v_B = \\vec \\omega \\times \\vec r_{AB}$$\n"       # A an instantaneous centre
+    at_rest = _PLANE + "$$\\vec v_P = 0$$\n"                                     # a rolling contact
+    same = _PLANE + "$$\\vec v_A = \\vec v_B$$\n"                                # a translation
+    for text in (centre, at_rest, same):
+        assert not any(v in ("typo", "fails") for line, v in verdicts(text)), text

@@ -8,7 +8,7 @@ verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
-:mod:`derive.lecture.own_torque`,
+:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
 SymPy.
 
 A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
@@ -29,6 +29,7 @@ from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import own_torque
+from derive.lecture import point_labels
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
 
@@ -111,6 +112,8 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and point_labels.involved(first[ref].value, first[k].value):
+                verdict, why = "unchecked", point_labels.WHY
             if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
                 verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
                                              "the text sets it to, not what the reader took it for")
@@ -227,7 +230,7 @@ class AlgebraStatements:
         d = va.difference(value, old)
         if d is not None and self._alg.axis is not None:
             d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
-        if d is None:
+        if d is None or point_labels.involved(value, old):
             self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
         elif _zero(d):
             self._add(line, piece, "identity", "holds", headless_chains.AGAIN.format(name=head, line=at))

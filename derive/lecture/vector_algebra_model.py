@@ -37,6 +37,7 @@ import sympy as sp
 
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
+from derive.lecture import point_labels
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
 from derive.lecture.vector_parser import AXES, INTEGRAL, _as_value
@@ -364,6 +365,10 @@ class Algebra:
             return v if bold else sp.sqrt(v.dot(v))
         if base == "v" and not bold and sub in ("x", "y", "z"):
             return W.cross(r)[AXES[sub]]
+        if bold and point_labels.labels(sub) is not None:
+            value = point_labels.value(base, sub, a.sup, W, WD)
+            if value is not None:
+                return value                 # 𝐯_B, 𝐫_{AB}, 𝐚_{BA}^t: points of the body named by letters
         if base == "a" and bold and sub and self._own(sub, env) and a.sup in ("", "t", "n", "tau"):
             p.rated = True                   # 𝐚ᵢ: the point's acceleration; ᵗ, ⁿ its tangential and normal parts
             parts = {"t": WD.cross(r), "tau": WD.cross(r), "n": W.cross(W.cross(r))}
