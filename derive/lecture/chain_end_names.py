@@ -85,7 +85,7 @@ class ChainEndNames:
             return
 
 
-def put_in(text: str, names: dict, line: int) -> str:
+def put_in(text: str, names: dict, line: int | None) -> str:
     """The statement with each name defined at a chain's end on an earlier line written as its
     definition, bracketed (the statement unchanged when it has none of them); ``line`` None: every
     name, wherever it was defined."""
