@@ -48,8 +48,8 @@ _TURNING = "# Fixed axis\n\n$$\\vec \\omega = \\omega \\hat k, \\; \\vec \\alpha
 
 
 def test_a_chain_headed_by_the_texts_own_vector_checks_the_members_after_it():
-    text = _TURNING + ("$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
-                       "$$\\vec a_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
+    text = _TURNING + ("$$\\vec u_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+                       "$$\\vec u_i^n = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = \\omega^2 (x_i \\hat i + y_i \\hat j)$$\n")
     got = verdicts(text)
     assert (5, "holds") in got and (5, "unchecked") in got      # the head is the text's name, left unchecked
     assert (7, "fails") in got or (7, "typo") in got             # the normal acceleration points to the axis
@@ -86,8 +86,8 @@ def test_a_link_between_vectors_that_would_flag_stays_unchecked():
     assert not any(v in ("typo", "fails") for line, v in verdicts(text))
 
 
-_TANGENTIAL = "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
-_NORMAL = "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
+_TANGENTIAL = "$$\\vec u_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n\n"
+_NORMAL = "$$\\vec u_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i) = -\\omega^2 (x_i \\hat i + y_i \\hat j)$$\n"
 
 
 def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_compared_with_that_value():
@@ -100,3 +100,115 @@ def test_a_name_a_holding_chain_gave_heading_another_chain_in_its_section_is_com
 def test_a_name_heading_a_chain_in_another_section_is_not_compared_with_an_earlier_sections_value():
     text = _TURNING + _TANGENTIAL + "## Another example\n\n" + _NORMAL
     assert not any(v in ("typo", "fails") for line, v in verdicts(text))
+
+
+_FORCE_ROW = r"m_i (\alpha y_i + \omega^2 x_i) & m_i (-\alpha x_i + \omega^2 y_i) & 0"
+_DET = r"\det \begin{bmatrix} \hat i & \hat j & \hat k \\ x_i & y_i & z_i \\ " + _FORCE_ROW + r" \end{bmatrix}"
+_MOMENT = (r"m_i [(\alpha x_i z_i - \omega^2 y_i z_i) \hat i + (\alpha y_i z_i + \omega^2 x_i z_i) \hat j "
+           r"- \alpha (x_i^2 + y_i^2) \hat k ]")
+
+
+def test_det_before_a_bracketed_matrix_is_its_determinant_along_the_row_of_unit_vectors():
+    text = _TURNING + f"$$\\vec M_i = {_DET} = {_MOMENT}$$\n"
+    assert (5, "holds") in verdicts(text)
+    slipped = _MOMENT.replace(r"- \omega^2 y_i z_i", r"+ \omega^2 y_i z_i", 1)
+    assert any(v in ("typo", "fails") for line, v in verdicts(_TURNING + f"$$\\vec M_i = {_DET} = {slipped}$$\n"))
+
+
+def test_a_member_in_the_texts_own_vectors_stays_with_the_head_and_the_members_after_it_are_checked():
+    text = _TURNING + f"$$\\vec M_i = \\vec r_i \\times \\vec F_i = {_DET} = {_MOMENT}$$\n"
+    got = verdicts(text)
+    assert (5, "holds") in got and (5, "unchecked") in got
+    slipped = _MOMENT.replace(r"- \alpha (x_i^2", r"+ \alpha (x_i^2", 1)
+    got = verdicts(_TURNING + f"$$\\vec M_i = \\vec r_i \\times \\vec F_i = {_DET} = {slipped}$$\n")
+    assert any(v in ("typo", "fails") for line, v in got)
+
+
+def test_a_row_after_a_chain_headed_by_the_texts_own_name_is_checked_against_the_row_before_it():
+    text = _TURNING + ("$$\\begin{aligned}\\vec M_{O,i} &= \\vec r_i \\times \\vec F_i = " + _DET +
+                       " \\\\\n&= " + _MOMENT + "\\end{aligned}$$\n")
+    assert (5, "holds") in verdicts(text)
+    slipped = text.replace(r"- \alpha (x_i^2", r"+ \alpha (x_i^2", 1)
+    assert not any(v in ("typo", "fails") for line, v in verdicts(slipped))    # a link between vectors never flags
+
+
+_NAMED_AT_END = "# Fixed axis\n\nA body turns about the fixed $z$ axis.\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n\n"
+_RATE = r"\frac{\mathrm d \omega}{\mathrm d t}"
+
+
+def test_a_name_defined_at_a_chains_end_is_read_as_that_definition_in_a_later_statement_in_sums():
+    holds = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = J_z {_RATE}$$\n"
+    assert (7, "holds") in verdicts(holds)
+    doubled = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = 2 J_z {_RATE}$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    same_line = verdicts(_NAMED_AT_END)
+    assert not any(v in ("typo", "fails") for line, v in same_line)        # its own display is its definition
+
+
+def test_the_rate_of_a_plain_omega_implies_the_fixed_axis_as_a_plain_omega_does():
+    text = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = \\sum_i m_i r_i^2 {_RATE}$$\n"
+    assert (7, "holds") in verdicts(text)
+    assert any(v in ("typo", "fails") for line, v in verdicts(text.replace("r_i^2 \\frac", "r_i^3 \\frac")) if line == 7)
+
+
+def test_a_points_acceleration_and_its_tangential_and_normal_parts_are_read_by_their_labels():
+    sum_of_parts = _TURNING + "$$\\vec a_i = \\vec a_i^t + \\vec a_i^n$$\n"
+    assert (5, "holds") in verdicts(sum_of_parts)
+    tangential = _TURNING + "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n"
+    assert [v for line, v in verdicts(tangential) if line == 5] == ["holds", "holds"]
+    normal_for_tangential = _TURNING + "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i)$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(normal_for_tangential) if line == 5)
+    assert (5, "holds") in verdicts(normal_for_tangential.replace("a_i^t", "a_i^n"))
+
+
+_PRODUCTS = ("$$\\begin{aligned} J_{yz} = J_{zy} &= \\sum_i m_i y_i z_i \\\\ J_{zx} = J_{xz} &= \\sum_i m_i z_i x_i "
+             "\\end{aligned}$$\n\n")
+_SUMMED = ("$$\\vec M_{I} = \\sum_i m_i[(\\alpha x_i z_i - \\omega^2 y_i z_i) \\hat i + "
+           "(\\alpha y_i z_i + \\omega^2 x_i z_i) \\hat j]$$\n\n")
+_IN_PRODUCTS = "$$\\vec M_{I} = (J_{xz} \\alpha - J_{yz} \\omega^2) \\hat i + (J_{yz} \\alpha + J_{xz} \\omega^2) \\hat j$$\n"
+
+
+def test_the_texts_vector_set_again_holds_when_both_expressions_agree_with_its_names_put_in():
+    got = verdicts(_TURNING + _PRODUCTS + _SUMMED + _IN_PRODUCTS)
+    assert (7, "unchecked") in got and (9, "holds") in got       # J_zx = J_xz named together; M_O recorded, then met
+    slipped = _IN_PRODUCTS.replace("J_{yz} \\alpha + J_{xz}", "J_{yz} \\alpha - J_{xz}", 1)
+    got = verdicts(_TURNING + _PRODUCTS + _SUMMED + slipped)
+    assert [v for line, v in got if line == 9] == ["unchecked"]    # either expression may be the one meant
+
+
+def test_an_equivalence_between_two_statements_is_cut_into_each_statement():
+    assert [r.strip() for r in statements(r"a = b \iff c = d")] == ["a = b", "c = d"]
+    assert [r.strip() for r in statements(r"a = b \Leftrightarrow c = d")] == ["a = b", "c = d"]
+
+
+_TORQUES = r"\sum_{i=1}^n M_z (\vec F_i)"
+
+
+def test_the_moment_of_a_force_about_an_axis_is_the_component_of_r_cross_f_and_a_plain_alpha_implies_the_axis():
+    holds = _NAMED_AT_END + f"$$J_z \\alpha = {_TORQUES}$$\n"
+    assert (7, "holds") in verdicts(holds)
+    doubled = _NAMED_AT_END + f"$$2 J_z \\alpha = {_TORQUES}$$\n"
+    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    rate = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = {_TORQUES}$$\n"
+    assert (7, "holds") in verdicts(rate)
+
+
+_PLANE = "# Plane motion\n\n"
+
+
+def test_points_named_by_letters_move_with_the_body_and_a_relation_for_every_motion_of_them_holds():
+    velocities = _PLANE + "$$\\vec v_B = \\vec v_A + \\vec v_{BA} = \\vec v_A + \\vec \\omega \\times \\vec r_{AB}$$\n"
+    assert [v for line, v in verdicts(velocities) if line == 3] == ["holds", "holds"]
+    parts = _PLANE + ("$$\\vec a_{BA}^t = \\vec \\alpha \\times \\vec r_{AB}, \\; "
+                      "\\vec a_{BA}^n = \\vec \\omega \\times (\\vec \\omega \\times \\vec r_{AB})$$\n")
+    assert [v for line, v in verdicts(parts) if line == 3] == ["holds", "holds"]
+    swapped = velocities.replace("\\vec \\omega \\times \\vec r_{AB}", "\\vec r_{AB} \\times \\vec \\omega")
+    assert [v for line, v in verdicts(swapped) if line == 3] == ["holds", "unchecked"]
+
+
+def test_a_relation_of_lettered_points_that_rests_on_the_texts_choice_of_them_is_never_flagged():
+    centre = _PLANE + "$$\\vec v_B = \\vec \\omega \\times \\vec r_{AB}$$\n"       # A an instantaneous centre
+    at_rest = _PLANE + "$$\\vec v_P = 0$$\n"                                     # a rolling contact
+    same = _PLANE + "$$\\vec v_A = \\vec v_B$$\n"                                # a translation
+    for text in (centre, at_rest, same):
+        assert not any(v in ("typo", "fails") for line, v in verdicts(text)), text

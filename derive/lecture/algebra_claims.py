@@ -8,7 +8,7 @@ verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
-:mod:`derive.lecture.own_torque`,
+:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
 SymPy.
 
 A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
@@ -23,11 +23,13 @@ import re
 
 import sympy as sp
 
+from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import own_torque
+from derive.lecture import point_labels
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vectors as vc
 
@@ -57,6 +59,7 @@ class AlgebraStatements:
         statement has its markers; never the lecture's own vector notation."""
         if va.lecture_notation(text):
             return False
+        text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), None)   # J_z = Σ mᵢ rᵢ²: a sum
         state = self._alg
         if va.markers(text, bold=self._alg_read) or _torque_law(text, state):
             return True
@@ -66,6 +69,7 @@ class AlgebraStatements:
         """Read and judge a statement (False when this reader cannot read it)."""
         if va.lecture_notation(text):
             return False
+        written, text = text, chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), line)   # J_z as defined
         state = self._alg
         axis = fixed_axis.setting(text)
         if axis is not None:
@@ -75,7 +79,7 @@ class AlgebraStatements:
             return True
         kept_axis = state.axis
         if state.axis is None:
-            state.axis = fixed_axis.implied(text)       # L_z beside a plain ω: a rotation about z
+            state.axis = fixed_axis.implied(written)    # L_z beside a plain ω: a rotation about z
         try:
             return self._algebra_read(line, piece, text, state)
         finally:
@@ -108,6 +112,8 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and point_labels.involved(first[ref].value, first[k].value):
+                verdict, why = "unchecked", point_labels.WHY
             if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
                 verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
                                              "the text sets it to, not what the reader took it for")
@@ -141,12 +147,13 @@ class AlgebraStatements:
                 if state.named_by[name] == text:
                     return None             # the statement that named it, met again: not a claim about it
                 return va.read(state.named[name] + " = " + rest, state) if va.markers(rest, bold=True) else None
-            reading = va.read(rest, copy.deepcopy(state))
+            reading, aliases = _aliased(rest, state)
         except lx.NotRead:
             return None
         first = reading.members[0]
-        state.named[name] = reading.source[first[0].start:first[0].end].strip()
-        state.named_by[name] = text
+        for each in (name, *aliases):
+            state.named[each] = reading.source[first[0].start:first[0].end].strip()
+            state.named_by[each] = text
         self._alg_read = True
         return va.read(rest, state) if len(first) > 1 else None
 
@@ -155,11 +162,15 @@ class AlgebraStatements:
         unchecked, the members after it read and judged as a chain of their own."""
         parts = headless_chains.split(text)
         if parts is None:
-            return False
+            return self._own_vector_set(line, piece, text, state)
         head, rest = parts
-        try:
-            first = va.read(rest, copy.deepcopy(state))
-        except lx.NotRead:
+        first = None
+        while first is None and rest is not None:
+            try:
+                first = va.read(rest, copy.deepcopy(state))
+            except lx.NotRead:
+                rest = headless_chains.next_members(rest)     # a member in the text's own vectors: left with the head
+        if first is None:
             return False
         section = self._section_of(line)
         named = self.__dict__.setdefault("_named_heads", {})
@@ -175,6 +186,39 @@ class AlgebraStatements:
             named[(head, section)] = (line, value)     # the chain holds: the name is its value from here on
         return read
 
+    def _own_vector_set(self, line, piece, text, state) -> bool:
+        """``\\vec M_{O} = …``, the text's own vector set equal to one expression: recorded the
+        first time (`headless_chains.definition`); set again, ``holds`` when the two expressions agree
+        with the text's names put in, else unjudged (either may be the one the text meant)."""
+        parts = headless_chains.definition(text)
+        if parts is None:
+            return False
+        head, rest = parts
+        key, rest = re.sub(r"\s+", "", head), _expanded(rest, state.named)
+        if key not in state.named:
+            try:
+                va.read(rest, copy.deepcopy(state))
+            except lx.NotRead:
+                return False
+            state.named[key], state.named_by[key] = rest, text
+            self._add(line, piece, "definition", "unchecked", f"defines the text's vector {head} (recorded, then used)")
+            return True
+        again = r"\left(" + state.named[key] + r"\right) = " + rest
+        try:
+            reading = va.read(again, state)
+        except lx.NotRead:
+            return False
+        verdict, why = self._algebra_pair(reading, 0, 1)
+        if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(again):
+            verdict, why = self._from_the_axis(again, 0, 1, verdict, why)
+        if verdict != "holds":
+            verdict, why = "unchecked", (f"sets the text's vector {head} equal to another expression than where it "
+                                         "was set; either may be the one the text meant")
+        else:
+            why = f"the text's vector {head} as it was set, with its names put in: {why}"
+        self._add(line, piece, "identity", verdict, why)
+        return True
+
     def _section_of(self, line) -> int:
         names = getattr(self.notes, "names", None)
         return names._section(line) if names is not None and names.sections else 0
@@ -186,7 +230,7 @@ class AlgebraStatements:
         d = va.difference(value, old)
         if d is not None and self._alg.axis is not None:
             d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
-        if d is None:
+        if d is None or point_labels.involved(value, old):
             self._add(line, piece, "identity", "unchecked", headless_chains.WHY.format(name=head))
         elif _zero(d):
             self._add(line, piece, "identity", "holds", headless_chains.AGAIN.format(name=head, line=at))
@@ -386,6 +430,21 @@ def _torque_law(text, state) -> bool:
     return any(t.kind == "atom" and t.value.bold and t.value.base in state.torques
                and ((not t.value.sub and t.value.base not in va.TORQUES) or va.labelled_torque(t.value.sub))
                for t in _tokens(va.prepare(text)))
+
+
+def _aliased(rest, state):
+    """The reading of a name's expression, and the other names set to it first (``J_{xy} = J_{yx} =
+    \\sum_i m_i x_i y_i``: J_{yx} is one); `lx.NotRead` when neither reads."""
+    try:
+        return va.read(rest, copy.deepcopy(state)), ()
+    except lx.NotRead:
+        alias = _NAME_FIRST.match(rest)
+        if alias is None:
+            raise
+        reading = va.read(rest[alias.end():], copy.deepcopy(state))
+        if len(reading.members[0]) > 1:
+            raise
+        return reading, (alias.group(1).replace(" ", ""),)
 
 
 def _mentions(text, state) -> bool:

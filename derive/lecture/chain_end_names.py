@@ -5,21 +5,30 @@ Takes: a display's LaTeX read by `derive.lecture.latex`. Gives the mixin `ChainE
 ``L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega`` — a chain whose last member is a name of the text's
 met there for the first time times a factor of the member before it — as the definition
 J_z = Σᵢ mᵢ rᵢ² (the member before divided by that factor), recorded for the displays after it.
-Nothing is judged here: the chain's own claims are read as before.
+Nothing is judged here: the chain's own claims are read as before. The definition is kept in the
+text's LaTeX as well (``\\frac{B}{c}``, c the last member with the name put to 1), which
+`put_in` writes in place of the name in a later statement, so that the readers of vectors and
+sums over particles read J_z as the text defined it, not as the z component of a vector 𝐉.
 
-May import: :mod:`derive.lecture.latex`, SymPy.
+May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
+SymPy.
 """
 from __future__ import annotations
+
+import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.statements import top_level
+
+_EQUALS = re.compile(r"(?<![<>!\\])=")
 
 
 class ChainEndNames:
     """Mixin of the checker. Uses ``self.vocab`` and ``self.ctx``."""
 
-    def _named_at_chain_end(self, latex: str) -> None:
+    def _named_at_chain_end(self, latex: str, line: int = 0) -> None:
         """Record ``N = B / c`` for a chain ``… = B = N c`` (N a new name of the text's, c ≠ 1 a
         factor whose symbols B has, B free of N); nothing for any other display."""
         try:
@@ -47,3 +56,42 @@ class ChainEndNames:
                 not value.free_symbols.isdisjoint(factor.free_symbols):
             return
         self.ctx.defs[name] = value
+        self._latex_of(latex, members, name, line)
+
+    def _latex_of(self, latex, members, name, line) -> None:
+        """Keep ``name ↦ (line, \\frac{B}{c})`` in the text's LaTeX, when the chain's members and the
+        name's spelling in its last member can be told."""
+        cuts = top_level(latex, _EQUALS)
+        if len(cuts) != len(members) - 1:
+            return
+        before = latex[cuts[-2].end():cuts[-1].start()].strip()
+        last = latex[cuts[-1].end():].strip()
+        try:
+            toks = lx.scan(last)
+        except lx.NotRead:
+            return
+        for k, tok in enumerate(toks):
+            if tok.kind != "atom":
+                continue
+            end = toks[k + 1].pos if k + 1 < len(toks) else len(last)
+            spelled = last[tok.pos:end].strip()
+            try:
+                if sp.sympify(lx.parse(spelled, self.vocab).members[0].value) != name:
+                    continue
+            except lx.NotRead:
+                continue
+            factor = last[:tok.pos] + " 1 " + last[tok.pos + len(spelled):]
+            self.__dict__.setdefault("chain_end_latex", {})[spelled] = (line, f"\\frac{{{before}}}{{{factor}}}")
+            return
+
+
+def put_in(text: str, names: dict, line: int | None) -> str:
+    """The statement with each name defined at a chain's end on an earlier line written as its
+    definition, bracketed (the statement unchanged when it has none of them); ``line`` None: every
+    name, wherever it was defined."""
+    for spelled, (at, value) in names.items():
+        if line is not None and at >= line:
+            continue
+        pattern = r"(?<![A-Za-z\\])" + re.escape(spelled).replace("_", r"\s*_\s*") + r"(?![A-Za-z0-9_{'])"
+        text = re.sub(pattern, lambda _: r"\left(" + value + r"\right)", text)
+    return text

@@ -2,7 +2,8 @@
 
 Gives the mixin `ChainLinks` of `derive.lecture.notes_check.Checker`: `_linked`, which reads a row
 that goes on with ``=`` against the member just before it when the row could not be compared with
-the chain's left side. May import: the standard library, :mod:`derive.lecture.statements`.
+the chain's left side. May import: the standard library, :mod:`derive.lecture.statements`,
+:mod:`derive.lecture.headless_chains`.
 
 A text writes ``R_{XYZ} = R_Z R_Y R_X`` (a name it gives, and a product of names it has not tied
 to anything), then ``= [the three matrices written out]``, then ``= [their product]``. Each row
@@ -10,12 +11,15 @@ after the first is compared with the left side R_{XYZ}; when the reader cannot c
 left side is the text's new name, its shape unknown), the chain still states that each member
 equals the next, and that link — the written-out product against the product of the matrices
 written before it — can be checked. The row's verdict is then that link's, said so. A link between
-vectors is kept only when it holds: it may rest on the text's set-up said in words (𝐫ᵢ ⊥ 𝛚).
+vectors is kept only when it holds: it may rest on the text's set-up said in words (𝐫ᵢ ⊥ 𝛚). A row
+whose left side is only a vector the text names (𝐌_{O,i} = 𝐫ᵢ × 𝐅ᵢ = det[…] then ``= mᵢ[…]``) is
+read as that link as well, whatever kept it from being read against its left side.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture import headless_chains
 from derive.lecture.statements import top_level
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
@@ -35,9 +39,10 @@ class ChainLinks:
         if previous is None or not re.match(r"\s*=", piece):
             return
         mine = self.claims[before:]
-        if not mine or any(c.verdict != "unchecked" for c in mine) or \
-                not all(any(u in c.why for u in _UNCOMPARED) for c in mine):
+        if not mine or any(c.verdict != "unchecked" for c in mine):
             return
+        if not all(any(u in c.why for u in _UNCOMPARED) for c in mine) and not headless_chains.own_head(self.ctx.head or ""):
+            return              # a row it could not read, unless its left side is only the text's own name
         member = last_member(previous)
         if member is None or not member.strip():
             return

@@ -38,15 +38,20 @@ def setting(text: str) -> int | None:
 
 
 _PLAIN_OMEGA = re.compile(r"(?<!\\vec)(?<!\\mathbf\{)(?<!\\boldsymbol\{)(?<!\\bm\{)(?<!\\hat\{)\\omega(?![A-Za-z])(?!\s*_)(?!\s*\})")
+_OMEGA_RATE = re.compile(r"\\frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s*d|d)\s*\\omega\s*\}|\\dot\s*\{?\s*\\omega(?![A-Za-z])(?!\s*\}?\s*_)")
+"""The rate of a plain ω, dω/dt or ω̇ (a rate, not a component): it implies the axis as ω does."""
+_PLAIN_ALPHA = re.compile(r"(?<!\\vec)(?<!\\mathbf\{)(?<!\\boldsymbol\{)(?<!\\bm\{)(?<!\\hat\{)\\alpha(?![A-Za-z])(?!\s*_)(?!\s*\})")
+"""A plain α, the angular acceleration as a rate about one axis (J_z α)."""
 _COMPONENT = re.compile(r"(?<![\\A-Za-z])(?:L|J|I|H)\s*_\s*\{?\s*(?P<axis>[xyz])\s*\}?(?![A-Za-z_{])")
 
 
 def implied(text: str) -> int | None:
     """The axis a statement's own words imply, ``L_z = \\omega \\sum_i m_i r_i^2``: a component of the
     angular momentum or a moment of inertia about one axis (L_z, J_z) beside a plain ω (a rate, not
-    a component) — the only reading in which they are related is a rotation about that axis. None
+    a component; or its rate, dω/dt, ω̇ or a plain α) — the only reading in which they are related is
+    a rotation about that axis. None
     when the statement names no such component or no plain ω, or more than one axis."""
-    if not _PLAIN_OMEGA.search(text):
+    if not (_PLAIN_OMEGA.search(text) or _OMEGA_RATE.search(text) or _PLAIN_ALPHA.search(text)):
         return None
     axes = {m.group("axis") for m in _COMPONENT.finditer(text)}
     return AXIS[axes.pop()] if len(axes) == 1 else None

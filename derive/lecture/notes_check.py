@@ -241,7 +241,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
                 self._at_setting(item.line, pieces):
             self._close_display()
             return
-        self._named_at_chain_end(latex)
+        self._named_at_chain_end(latex, item.line)
         relabelled = _repeated_labels(pieces)
         previous = None
         for piece in pieces:

@@ -8,7 +8,7 @@ A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``
 other display environments, which are dropped; an aligned row of column pairs side by side,
 ``a &= b & c &\\equiv d``, is one row per pair), a row ending in ``+``/``-`` continuing on the
 next (and one ending in ``=`` on a next that opens with ``=``); a row into pieces at ``\\qquad``,
-``\\quad``, ``\\Rightarrow``, ``\\implies`` and a spaced ``\\text{and}``; a piece at top-level ``;``
+``\\quad``, ``\\Rightarrow``, ``\\implies``, ``\\Leftrightarrow``, ``\\iff`` and a spaced ``\\text{and}``; a piece at top-level ``;``
 and at commas between relations (never inside brackets). A label before a colon (``\\theta:``,
 ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are dropped; a case
 before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
@@ -247,7 +247,8 @@ def statements(latex: str) -> list[str]:
         if words and _CONSTANT_WORDS.search(words.group(0)) and _NAMED_END.search(row[:words.start()]):
             row = row[:words.start()] + r" = \mathrm{const}"
         for piece in _colon_parts(row):
-            for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies"))):
+            for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies",
+                                                                              "\\Leftrightarrow", "\\iff"))):
                 for one in [w for p in _lists(part) for w in _where_first(p)]:
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):

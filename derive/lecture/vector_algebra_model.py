@@ -37,6 +37,7 @@ import sympy as sp
 
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
+from derive.lecture import point_labels
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
 from derive.lecture.vector_parser import AXES, INTEGRAL, _as_value
@@ -100,6 +101,16 @@ _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*\\(?:boldsym
 _UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
 
 
+_PART_LABEL = re.compile(r"(\\vec\s*\{?\s*a\s*\}?\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))\s*\^\s*\{?\s*([tn])\s*\}?(?![A-Za-z{])")
+"""An acceleration's t or n written as a superscript after its subscript (𝐚ᵢᵗ, ``\\vec a_i^t``): the label
+of its tangential or normal part, never a power or a transpose (t is written τ for the scanner, which
+takes a bold symbol's ^t for a transpose)."""
+
+
+_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?\s*\(\s*(\\vec\s*\{?\s*F\s*\}?\s*(?:_\s*(\{[^{}]*\}|[A-Za-z0-9]))?)\s*\)")
+"""M_z(𝐅ᵢ), the moment of a force about an axis: (𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
+
+
 def prepare(text: str) -> str:
     text = kane_notation.rewrite(text)
     return _prepare(text)
@@ -108,10 +119,13 @@ def prepare(text: str) -> str:
 def _prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
-    ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, ρ … dV as dm, the
+    ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, an acceleration's
+label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm, the
     momentum element d𝐩 as 𝐯 dm, and beside a dyadic 𝐞 as the unit tensor."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
+    text = _MOMENT_OF.sub(lambda m: f"(\\vec r{'_' + m.group(3) if m.group(3) else ''} \\times {m.group(2)})_{m.group(1)}", text)
+    text = _PART_LABEL.sub(lambda m: m.group(1) + ("^{\\tau}" if m.group(2) == "t" else "^{n}"), text)
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
     if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
         text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
@@ -351,6 +365,14 @@ class Algebra:
             return v if bold else sp.sqrt(v.dot(v))
         if base == "v" and not bold and sub in ("x", "y", "z"):
             return W.cross(r)[AXES[sub]]
+        if bold and point_labels.labels(sub) is not None:
+            value = point_labels.value(base, sub, a.sup, W, WD)
+            if value is not None:
+                return value                 # 𝐯_B, 𝐫_{AB}, 𝐚_{BA}^t: points of the body named by letters
+        if base == "a" and bold and sub and self._own(sub, env) and a.sup in ("", "t", "n", "tau"):
+            p.rated = True                   # 𝐚ᵢ: the point's acceleration; ᵗ, ⁿ its tangential and normal parts
+            parts = {"t": WD.cross(r), "tau": WD.cross(r), "n": W.cross(W.cross(r))}
+            return parts.get(a.sup, WD.cross(r) + W.cross(W.cross(r)))
         if base == "p" and bold and self._own(sub, env):
             return mass * W.cross(r)
         if base == "F" and bold and sub and sub == env.get("index"):

@@ -211,6 +211,10 @@ class VectorParser(_Parser):
             return value
         if tok is not None and tok.kind == "begin":
             return self.matrix(env, det=tok.value == "vmatrix")
+        if tok is not None and tok.kind == "cmd" and tok.value == "det" and self.i + 1 < len(self.toks) \
+                and self.toks[self.i + 1].kind == "begin":
+            self.i += 1
+            return self.matrix(env, det=True)       # \det written before a bracketed matrix
         if tok is not None and tok.kind == "atom" and tok.value.base == INTEGRAL and tok.value.bold:
             self.i += 1
             return self.integral(env)

@@ -338,7 +338,7 @@ def scan(s: str) -> list[Tok]:
                 i = j
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
-                                             "times", "otimes", "pm", "mp", "infty", "ldots", "cdots", "dots"):
+                                             "times", "otimes", "pm", "mp", "infty", "ldots", "cdots", "dots", "det"):
                 toks.append(Tok("cmd", name, i))
                 i = m.end()
                 continue
