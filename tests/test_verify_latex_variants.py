@@ -46,6 +46,18 @@ _FUNCTION_ARG = r"(\\(?:sin|cos)(?:\^\{?2\}?)?)\s*(\\[A-Za-z]+)(?![A-Za-z])"
 _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 
 
+_RATE = re.compile(r"\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}(_\{?\d\}?)?(\^)?")
+
+
+def _rates(d: str):
+    """``\\dot{x}_1`` written ``\\frac{d x_1}{dt}`` (bracketed before a power), with ``d`` the
+    differential as given."""
+    def one(m: re.Match) -> str:
+        rate = rf"\frac{{{d} {m[1]}{m[2] or ''}}}{{{d} t}}"
+        return rf"\left({rate}\right)^" if m[3] else rate
+    return lambda latex: _RATE.sub(one, latex)
+
+
 def _momentum_constant(latex: str) -> str:
     """A cyclic momentum said to be constant: ``p_\\gamma = … = \\mathrm{const}``."""
     return latex + " = \\mathrm{const}" if re.match(r"p_\{?\\(?:alpha|gamma|phi|psi)\}? =", latex) else latex
@@ -55,6 +67,9 @@ VARIANTS = {
     # fractions and differentials
     "dfrac": (ALL_NOTES, _sub(r"\\frac(?![a-z])", r"\\dfrac")),
     "tfrac": (ALL_NOTES, _sub(r"\\frac(?![a-z])", r"\\tfrac")),
+    "rates as d-dt": (SCALAR_NOTES, _rates("d")),
+    "rates as upright d-dt": (SCALAR_NOTES, _rates("\\mathrm{d}")),
+    "frac12 unbraced": (ALL_NOTES, _sub(r"\\frac\{(\d)\}\{(\d)\}", r"\\frac\1\2")),
     "upright d": (ALL_NOTES, _sub(r"\{d(?=\\|t\}| )", r"{\\mathrm{d}")),
     "upright d with a space": (ALL_NOTES, _sub(r"\{d(?=\\|t\}| )", r"{\\mathrm{d}\\,")),
     # brackets
@@ -76,6 +91,14 @@ VARIANTS = {
     "sin(theta)": (SCALAR_NOTES, _sub(_FUNCTION_ARG, r"\1(\2)")),
     "sin{theta}": (SCALAR_NOTES, _sub(_FUNCTION_ARG, r"\1{\2}")),
     "operatorname sin": (SCALAR_NOTES, _sub(r"\\(sin|cos)(?![a-z])", r"\\operatorname{\1}")),
+    "squared function bracketed": (SCALAR_NOTES, _sub(r"\\(sin|cos)\^2\s*(\\[A-Za-z]+)", r"(\\\1\2)^2")),
+    # relations and primes
+    "geq for ge": (SCALAR_NOTES, _sub(r"\\ge(?![a-z])", r"\\geq")),
+    "geqslant for ge": (SCALAR_NOTES, _sub(r"\\ge(?![a-z])", r"\\geqslant")),
+    "coloneqq for equiv": (ALL_NOTES, _sub(r"\\equiv(?![a-z])", r"\\coloneqq")),
+    "colon-equals for equiv": (ALL_NOTES, _sub(r"\\equiv(?![a-z])", ":=")),
+    "prime as superscript": (SCALAR_NOTES, _sub(r"([A-Z])'", r"\1^{\\prime}")),
+    "superscript before subscript": (SCALAR_NOTES, _sub(r"_(\{[^{}]*\}|\d)\^(\{[^{}]*\}|\d)", r"^\2_\1")),
     # what ends a display
     "trailing full stop": (ALL_NOTES, lambda latex: latex + "."),
     "trailing comma": (ALL_NOTES, lambda latex: latex + ","),
@@ -95,7 +118,10 @@ VARIANTS = {
 }
 
 # Kinds the reader does not follow yet: what it misses.
-MISSES: dict[str, str] = {}
+_RATES_MISSED = ("rates written as d/dt: a name's argument list holding them, L(α, β, γ, dα/dt, …), is not "
+                 "parsed, and a solution ω̃₁(t) = A cos(Ωt + φ) after equations of motion in d/dt finds no "
+                 "earlier equation of motion to substitute into")
+MISSES: dict[str, str] = {"rates as d-dt": _RATES_MISSED, "rates as upright d-dt": _RATES_MISSED}
 
 
 def _rewrite(text: str, change) -> str:

@@ -14,6 +14,7 @@ from derive.lecture.vocabulary import (
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
+from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -414,8 +415,8 @@ class _Parser:
             if what is None or atom.bold:
                 raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
                               num[1].pos + 1)
-            self.i = k2
-            return self._evaluated(DT(what))
+            self.i = k2                                   # dα/dt of an angle is its rate α̇
+            return self._evaluated(RATES[ANGLES.index(what)] if what in ANGLES else DT(what))
         is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
         if len(den) == 2 and is_partial(den[0]) and den[1].kind == "atom":
             var = self.vocab.resolve(den[1].value)
@@ -436,8 +437,9 @@ class _Parser:
         return None
 
     def _evaluated(self, value):
-        """A derivative followed by '(': evaluated at a point (φ̇(t + T)), which is not read."""
-        if self.at("op", "("):
+        """A derivative followed by a bracket holding a time: evaluated at a point (φ̇(t + T)), which
+        is not read; a bracket of other quantities after it multiplies it."""
+        if self.at("op", "(") and holds_a_point(self.toks, self.i):
             self.fail("a derivative evaluated at a point")
         return value
 

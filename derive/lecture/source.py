@@ -268,8 +268,8 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name in _RENAME:
         new = _RENAME[name]
         args = node.nodeargd.argnlist if node.nodeargd is not None else []
-        printed = [a.latex_verbatim() if not isinstance(a, LatexGroupNode) else "{" + _print(a.nodelist, user) + "}"
-                   for a in args if a is not None]
+        printed = [_token_argument(name, a.latex_verbatim()) if not isinstance(a, LatexGroupNode)
+                   else "{" + _print(a.nodelist, user) + "}" for a in args if a is not None]
         if new in ("{", "}"):
             return "\\" + new, 0
         return _spaced("\\" + new, printed) if printed else "\\" + new + " ", 0
@@ -283,8 +283,14 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
             left, right = getattr(a, "delimiters", ("{", "}")) or ("{", "}")
             printed.append(left + _print(a.nodelist, user) + right)
         else:
-            printed.append(a.latex_verbatim())
+            printed.append(_token_argument(name, a.latex_verbatim()))
     return _spaced("\\" + name, printed) if printed else "\\" + name + post, 0
+
+
+def _token_argument(name: str, arg: str) -> str:
+    """A fraction's argument given as one token, ``\\frac12``, in braces (``\\frac{1}{2}``, as TeX
+    reads it), so the reader meets one spelling of a fraction."""
+    return "{" + arg.strip() + "}" if name in ("frac", "dfrac", "tfrac", "cfrac") else arg
 
 
 def _spaced(head: str, args) -> str:
