@@ -14,7 +14,7 @@ from derive.lecture.vocabulary import (
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
-from derive.lecture.evaluation_points import holds_a_point
+from derive.lecture.evaluation_points import holds_a_point, rate_argument
 from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -350,15 +350,18 @@ class _Parser:
         """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""
         j, args = self.i + 1, []
         while j < len(self.toks):
-            tok = self.toks[j]
+            tok, rate = self.toks[j], rate_argument(self.toks, j)
+            if rate is not None:
+                tok, j = self.toks[rate[0]], rate[1] - 1      # dα/dt among the arguments: the rate of α
             if tok.kind != "atom":
                 return False
             try:
                 args.append(self.vocab.resolve(tok.value))
             except NotRead:
                 return False
-            if args[-1] is None:
+            if args[-1] is None or (rate is not None and args[-1] not in ANGLES):
                 return False
+            args[-1] = RATES[ANGLES.index(args[-1])] if rate is not None else args[-1]
             nxt = self.toks[j + 1] if j + 1 < len(self.toks) else None
             if nxt is not None and nxt.kind == "op" and nxt.value == ",":
                 j += 2
