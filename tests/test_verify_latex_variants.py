@@ -165,9 +165,16 @@ def _compare(kind: str):
     return flagged, lost, changed
 
 
-def _kind_cases():
+#: The kinds `make test` reads (each re-reads whole notes, about a quarter CPU-second a note on a
+#: fresh checkout): those whose misses the reader was fixed for; every kind runs in `make test-slow`.
+IN_MAKE_TEST = ("quad between factors", "frac12 unbraced", "unbraced text subscript", "braced text subscript")
+
+
+def _kind_cases(xfails: bool):
     for kind in VARIANTS:
-        marks = [pytest.mark.xfail(strict=True, reason=MISSES[kind])] if kind in MISSES else []
+        marks = [pytest.mark.xfail(strict=True, reason=MISSES[kind])] if xfails and kind in MISSES else []
+        if kind not in IN_MAKE_TEST:
+            marks.append(pytest.mark.slow)
         yield pytest.param(kind, marks=marks, id=kind.replace(" ", "-"))
 
 
@@ -177,14 +184,14 @@ def test_own_notes_hold_as_written():
         assert verdicts and all(set(v) == {"holds"} for v in verdicts.values()), (name, verdicts)
 
 
-@pytest.mark.parametrize("kind", [k for k in VARIANTS], ids=[k.replace(" ", "-") for k in VARIANTS])
+@pytest.mark.parametrize("kind", list(_kind_cases(xfails=False)))
 def test_variant_raises_no_false_alarm(kind):
     flagged, _, changed = _compare(kind)
     assert changed, f"the variant {kind!r} rewrote no display"
     assert flagged == [], flagged
 
 
-@pytest.mark.parametrize("kind", list(_kind_cases()))
+@pytest.mark.parametrize("kind", list(_kind_cases(xfails=True)))
 def test_variant_keeps_every_display_checked(kind):
     _, lost, _ = _compare(kind)
     assert lost == [], f"{len(lost)} displays no longer hold: {lost}"
