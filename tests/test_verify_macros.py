@@ -46,7 +46,7 @@ def test_macros_inside_other_macros_bodies_are_expanded():
     r"\newcommand\half{\frac12} \newcommand*{\w}[2]{\omega_{#1#2}}",
 ])
 def test_def_and_newcommand_with_and_without_arguments(defs):
-    assert expanded(r"\half \w{1}{2}", defs) == r"\frac12 \omega_{12}"
+    assert expanded(r"\half \w{1}{2}", defs) == r"\frac{1}{2} \omega_{12}"
 
 
 def test_renewcommand_replaces_and_providecommand_does_not():

@@ -32,7 +32,7 @@ def test_a_formula_is_read_as_the_text_writes_it(written, read):
 
 def test_the_files_own_macros_are_expanded_with_their_arguments():
     macros = source.macros(r"\newcommand{\vw}[1]{\boldsymbol{\omega}_{#1}} \def\half{\frac12}")
-    assert source.normalize(r"\half I \vw{3}", macros) == r"\frac12 I \boldsymbol{\omega}_{3}"
+    assert source.normalize(r"\half I \vw{3}", macros) == r"\frac{1}{2} I \boldsymbol{\omega}_{3}"
 
 
 def test_what_is_not_rendered_is_not_read():

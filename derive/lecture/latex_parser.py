@@ -14,6 +14,7 @@ from derive.lecture.vocabulary import (
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
+from derive.lecture.evaluation_points import holds_a_point, rate_argument
 from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -349,15 +350,18 @@ class _Parser:
         """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""
         j, args = self.i + 1, []
         while j < len(self.toks):
-            tok = self.toks[j]
+            tok, rate = self.toks[j], rate_argument(self.toks, j)
+            if rate is not None:
+                tok, j = self.toks[rate[0]], rate[1] - 1      # dα/dt among the arguments: the rate of α
             if tok.kind != "atom":
                 return False
             try:
                 args.append(self.vocab.resolve(tok.value))
             except NotRead:
                 return False
-            if args[-1] is None:
+            if args[-1] is None or (rate is not None and args[-1] not in ANGLES):
                 return False
+            args[-1] = RATES[ANGLES.index(args[-1])] if rate is not None else args[-1]
             nxt = self.toks[j + 1] if j + 1 < len(self.toks) else None
             if nxt is not None and nxt.kind == "op" and nxt.value == ",":
                 j += 2
@@ -414,8 +418,8 @@ class _Parser:
             if what is None or atom.bold:
                 raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
                               num[1].pos + 1)
-            self.i = k2
-            return self._evaluated(DT(what))
+            self.i = k2                                   # dα/dt of an angle is its rate α̇
+            return self._evaluated(RATES[ANGLES.index(what)] if what in ANGLES else DT(what))
         is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
         if len(den) == 2 and is_partial(den[0]) and den[1].kind == "atom":
             var = self.vocab.resolve(den[1].value)
@@ -436,8 +440,9 @@ class _Parser:
         return None
 
     def _evaluated(self, value):
-        """A derivative followed by '(': evaluated at a point (φ̇(t + T)), which is not read."""
-        if self.at("op", "("):
+        """A derivative followed by a bracket holding a time: evaluated at a point (φ̇(t + T)), which
+        is not read; a bracket of other quantities after it multiplies it."""
+        if self.at("op", "(") and holds_a_point(self.toks, self.i):
             self.fail("a derivative evaluated at a point")
         return value
 

@@ -268,8 +268,8 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name in _RENAME:
         new = _RENAME[name]
         args = node.nodeargd.argnlist if node.nodeargd is not None else []
-        printed = [a.latex_verbatim() if not isinstance(a, LatexGroupNode) else "{" + _print(a.nodelist, user) + "}"
-                   for a in args if a is not None]
+        printed = [_token_argument(name, a.latex_verbatim()) if not isinstance(a, LatexGroupNode)
+                   else "{" + _print(a.nodelist, user) + "}" for a in args if a is not None]
         if new in ("{", "}"):
             return "\\" + new, 0
         return _spaced("\\" + new, printed) if printed else "\\" + new + " ", 0
@@ -283,8 +283,14 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
             left, right = getattr(a, "delimiters", ("{", "}")) or ("{", "}")
             printed.append(left + _print(a.nodelist, user) + right)
         else:
-            printed.append(a.latex_verbatim())
+            printed.append(_token_argument(name, a.latex_verbatim()))
     return _spaced("\\" + name, printed) if printed else "\\" + name + post, 0
+
+
+def _token_argument(name: str, arg: str) -> str:
+    """A fraction's argument given as one token, ``\\frac12``, in braces (``\\frac{1}{2}``, as TeX
+    reads it), so the reader meets one spelling of a fraction."""
+    return "{" + arg.strip() + "}" if name in ("frac", "dfrac", "tfrac", "cfrac") else arg
 
 
 def _spaced(head: str, args) -> str:
@@ -324,6 +330,12 @@ def _braced_label(name, node, nodes, k, user) -> tuple[str, int]:
     return " " + inner + " ", used
 
 
+def _takes_arguments(node) -> bool:
+    """Whether a macro node carries arguments (``\\text{eff}``), so that as an unbraced script it is
+    the whole command with them, as TeX reads ``_\\text{eff}``."""
+    return node.nodeargd is not None and any(a is not None for a in (node.nodeargd.argnlist or []))
+
+
 def _print(nodes, user: dict) -> str:
     nodes = list(nodes or [])
     out, k = [], 0
@@ -333,6 +345,8 @@ def _print(nodes, user: dict) -> str:
             out.append(" ")
         elif isinstance(node, LatexMacroNode):
             text, used = _macro(node, nodes, k, user)
+            if _takes_arguments(node) and next((o.rstrip()[-1] for o in reversed(out) if o.strip()), " ") in "_^":
+                text = "{" + text.strip() + "}"   # `V_\text{eff}`: the script is the command with its argument
             out.append(text)
             k += used
         elif isinstance(node, LatexGroupNode):
@@ -433,6 +447,8 @@ def _transposed_rows(text: str) -> str:
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
+_WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
+"""A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
 _EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
@@ -483,6 +499,7 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _ELLIPTIC.sub(r"\\\1 ", text)              # \\mathrm{sn}: Jacobi's elliptic sine
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
     text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
+    text = _WORD_SCRIPT.sub(r"\1{\2}", text)         # _{\\text{body}}: the label body
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1

@@ -270,11 +270,25 @@ def _spacing_joined(parts: list[str]) -> list[str]:
     out: list[str] = []
     for part in parts:
         t = _trimmed(part)
-        if out and (_OPEN_END.search(_trimmed(out[-1])) or t.startswith("=")):
+        if out and (_OPEN_END.search(_trimmed(out[-1])) or t.startswith("=") or _factors_only(t, out[-1])):
             out[-1] = out[-1] + " " + part
+        elif out and _factors_only(_trimmed(out[-1]), part) and all(_factors_only(_trimmed(p), part) for p in out):
+            out = [" ".join(out + [part])]        # `M \quad g \quad l = …`: factors before the relation
         else:
             out.append(part)
     return out
+
+
+def _factors_only(part: str, before: str) -> bool:
+    """A part with no relation, no words and no bracketed aside after a part with one
+    (``\\dot\\alpha \\quad \\sin\\beta``): the factors of the statement the ``\\quad`` only spaced."""
+    return bool(part) and _FIRST_RELATION.search(part) is None and _FIRST_RELATION.search(before) is not None \
+        and _ASIDE.match(part) is None and _WORDS.search(part) is None
+
+
+# what a relation-free part after a \quad may be other than factors: words, a quantifier, a label
+_ASIDE = re.compile(r"\\(?:mathrm|forall|exists|in|label|tag|dots|ldots|cdots)\b|[,;.:]")
+_WORDS = re.compile(r"\\(?:text|mbox|textrm|hbox|textit|textbf)\b")
 
 
 _PM = re.compile(r"\\(pm|mp)(?![A-Za-z])")
