@@ -83,3 +83,13 @@ def by_line(text: str, convention: str | None = None) -> dict[int, list]:
     for claim in check_text(text, convention):
         out.setdefault(claim.line, []).append(claim)
     return out
+
+
+def verdicts_by_line(text: str, convention: str | None = None) -> dict[int, set]:
+    """The set of verdicts :func:`check_text` gives each line of the notes."""
+    return {line: {c.verdict for c in claims} for line, claims in by_line(text, convention).items()}
+
+
+def line_of(text: str, marker: str) -> int:
+    """The line of ``text`` on which ``marker`` first stands."""
+    return text[:text.index(marker)].count("\n") + 1

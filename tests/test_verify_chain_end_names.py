@@ -7,15 +7,7 @@ CHAIN = "# Notes\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n\n"
 RADIUS = "The radius of gyration, $\\rho_z^2 = \\sum_i m_i r_i^2 / m$:\n\n"
 
 
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
-
-
-def line_of(text, marker):
-    return text[:text.index(marker)].count("\n") + 1
+verdicts, line_of = kept.verdicts_by_line, kept.line_of
 
 
 def test_a_name_met_at_a_chains_end_is_defined_by_the_member_before_it():

@@ -8,15 +8,7 @@ PARALLEL = "With $J_C$ the moment about the centre of mass,\n\n$$ J_{z^\\prime} 
 KOENIG = "$$T = \\frac{1}{2} m v_c^2 + \\frac{1}{2} J_C \\omega^2$$\n\n"
 
 
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
-
-
-def line_of(text, marker):
-    return text[:text.index(marker)].count("\n") + 1
+verdicts, line_of = kept.verdicts_by_line, kept.line_of
 
 
 def test_a_relation_written_again_with_a_defined_name_put_in_holds():
