@@ -10,6 +10,8 @@ from __future__ import annotations
 import pathlib
 import tomllib
 
+import sympy as sp
+
 
 def compare(script: str, checks: dict, lines: list) -> int:
     """Print one line per display (computed verdict, the table's, OK or MISMATCH); the exit status:
@@ -27,3 +29,9 @@ def compare(script: str, checks: dict, lines: list) -> int:
         print(f"line {key:4d} computed={comp:11s} toml={want:11s} {'OK' if agree else 'MISMATCH'}")
         bad += not agree
     return 1 if bad else 0
+
+
+def zero(expr) -> bool:
+    """``expr`` (a scalar or a matrix) simplifies to zero."""
+    m = expr if hasattr(expr, "shape") else sp.Matrix([expr])
+    return sp.simplify(m) == sp.zeros(*m.shape)
