@@ -132,6 +132,11 @@ def test_a_row_after_a_chain_headed_by_the_texts_own_name_is_checked_against_the
     assert not any(v in ("typo", "fails") for line, v in verdicts(slipped))    # a link between vectors never flags
 
 
+def flagged(text, at):
+    """Whether the reader flags (typo or fails) a statement on line ``at`` of ``text``."""
+    return any(v in ("typo", "fails") for line, v in verdicts(text) if line == at)
+
+
 _NAMED_AT_END = "# Fixed axis\n\nA body turns about the fixed $z$ axis.\n\n$$L_z = \\omega \\sum_i m_i r_i^2 = J_z \\omega$$\n\n"
 _RATE = r"\frac{\mathrm d \omega}{\mathrm d t}"
 
@@ -140,7 +145,7 @@ def test_a_name_defined_at_a_chains_end_is_read_as_that_definition_in_a_later_st
     holds = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = J_z {_RATE}$$\n"
     assert (7, "holds") in verdicts(holds)
     doubled = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = 2 J_z {_RATE}$$\n"
-    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    assert flagged(doubled, 7)
     same_line = verdicts(_NAMED_AT_END)
     assert not any(v in ("typo", "fails") for line, v in same_line)        # its own display is its definition
 
@@ -148,7 +153,7 @@ def test_a_name_defined_at_a_chains_end_is_read_as_that_definition_in_a_later_st
 def test_the_rate_of_a_plain_omega_implies_the_fixed_axis_as_a_plain_omega_does():
     text = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = \\sum_i m_i r_i^2 {_RATE}$$\n"
     assert (7, "holds") in verdicts(text)
-    assert any(v in ("typo", "fails") for line, v in verdicts(text.replace("r_i^2 \\frac", "r_i^3 \\frac")) if line == 7)
+    assert flagged(text.replace("r_i^2 \\frac", "r_i^3 \\frac"), 7)
 
 
 def test_a_points_acceleration_and_its_tangential_and_normal_parts_are_read_by_their_labels():
@@ -157,7 +162,7 @@ def test_a_points_acceleration_and_its_tangential_and_normal_parts_are_read_by_t
     tangential = _TURNING + "$$\\vec a_i^t = \\alpha \\hat k \\times \\vec r_i = \\alpha(x_i \\hat j - y_i \\hat i)$$\n"
     assert [v for line, v in verdicts(tangential) if line == 5] == ["holds", "holds"]
     normal_for_tangential = _TURNING + "$$\\vec a_i^t = \\omega \\hat k \\times (\\omega \\hat k \\times \\vec r_i)$$\n"
-    assert any(v in ("typo", "fails") for line, v in verdicts(normal_for_tangential) if line == 5)
+    assert flagged(normal_for_tangential, 5)
     assert (5, "holds") in verdicts(normal_for_tangential.replace("a_i^t", "a_i^n"))
 
 
@@ -188,7 +193,7 @@ def test_the_moment_of_a_force_about_an_axis_is_the_component_of_r_cross_f_and_a
     holds = _NAMED_AT_END + f"$$J_z \\alpha = {_TORQUES}$$\n"
     assert (7, "holds") in verdicts(holds)
     doubled = _NAMED_AT_END + f"$$2 J_z \\alpha = {_TORQUES}$$\n"
-    assert any(v in ("typo", "fails") for line, v in verdicts(doubled) if line == 7)
+    assert flagged(doubled, 7)
     rate = _NAMED_AT_END + f"$$\\frac{{\\mathrm d L_z}}{{\\mathrm d t}} = {_TORQUES}$$\n"
     assert (7, "holds") in verdicts(rate)
 
