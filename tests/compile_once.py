@@ -51,7 +51,7 @@ def files_under(*folders: Path) -> dict[str, bytes]:
 
 
 def _key(what: Iterable[str], inputs: dict[str, str | bytes], cc: str) -> str:
-    h = hashlib.sha256(_identity(cc).encode())
+    h = hashlib.sha256(cc.encode() + b"\0" + _identity(cc).encode())  # a wrapper may report cc's version
     for part in what:
         h.update(b"\0a" + part.encode())
     for name in sorted(inputs):
