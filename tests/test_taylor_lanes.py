@@ -96,7 +96,9 @@ RULES = {"body": {"I1": 1.0, "I3": 0.5},
          "simulate": {**BASE["simulate"], "t_end": 2.0}}
 
 
-@pytest.mark.parametrize("width", ["native", "baseline"])  # two builds: one per test process
+# the baseline width of every rule (a second -O3 build of the body) in `make test-slow`; the
+# baseline width of the shipped rules is checked in make test by the driver test above
+@pytest.mark.parametrize("width", ["native", pytest.param("baseline", marks=pytest.mark.slow)])
 def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit(width):
     """The lanes' helpers of every rule (written on GNU C's vector types) against the scalar
     driver's, on a user body whose jet has them all, in this CPU's width and the baseline's;

@@ -142,6 +142,8 @@ def equations(shape: str) -> dict[str, sp.Expr]:
     zdot = sp.diff(z, beta) * beta_d
     L = MASS * zdot**2 / 2 + kinetic_energy_symmetric() - MASS * GRAV * z
     rates = sp.solve([sp.diff(L, alpha_d) - p_alpha, sp.diff(L, gamma_d) - p_gamma], [alpha_d, gamma_d], dict=True)[0]
+    # sin²β + cos²β = 1 in the rates first: the Routhian and β̈'s coefficients simplify faster and shorter
+    rates = {rate: sp.factor(sp.trigsimp(sp.together(value))) for rate, value in rates.items()}
     R = (L - p_alpha * alpha_d - p_gamma * gamma_d).subs(rates)
     pb = sp.diff(R, beta_d)
     acc = sp.diff(pb, beta) * beta_d + sp.diff(pb, beta_d) * BETA_DD - sp.diff(R, beta)
