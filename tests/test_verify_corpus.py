@@ -78,7 +78,7 @@ SHORT = {
         "display written in bold products the reader does not read",
 }
 
-FLOOR = {"checked": 395, "slips_flagged": 39, "holds_flagged": 0}
+FLOOR = {"checked": 399, "slips_flagged": 39, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
