@@ -8,9 +8,10 @@ after the first two turns (ê′ᵢ: the line of nodes and the body's symmetry a
 write ω = θ̇ î′ + φ̇ sin θ ĵ′ + (φ̇ cos θ + ψ̇) k̂′), the body frame (êᵢ), the space frame (ê⁰ᵢ).
 
 Texts prime either of them, and say which in words the reader does not parse, so the statement is
-kept under the first frame in which it holds, its why naming that frame. Under none it stays
-`unchecked`, naming the axes: a slip and a frame the reader did not try (the one after the first
-turn only) look alike, so no reading of them flags it. May import: the standard library.
+kept under the first frame in which it holds, its why naming that frame. Under none it is read as
+written, the primed letters the text's own (a slip and a frame the reader did not try, such as
+the one after the first turn only, look alike, so no reading of them as a frame flags it). May
+import: the standard library.
 """
 from __future__ import annotations
 
@@ -50,8 +51,8 @@ class PrimedAxes:
     ``_add`` and ``self.claims``."""
 
     def _read_axes_or_plain(self, line, piece, dup, pieces):
-        """The statement as read, or, where it writes primed unit vectors, under the first frame
-        in which it holds (see the module docstring)."""
+        """The statement under the first frame in which it holds where it writes primed unit
+        vectors, else as read (see the module docstring)."""
         written = primed_axes(piece)
         if not written:
             self._read_once_or_twice(line, piece, dup, pieces)
@@ -65,8 +66,4 @@ class PrimedAxes:
                     c.why += f" (reading {', '.join(dict.fromkeys(written))} as the unit vectors of {frame})"
                 self._keep(before, claims, ctx)
                 return
-        names = ", ".join(dict.fromkeys(written))
-        self._add(line, piece, "unknown", "unchecked",
-                  f"writes the primed unit vectors {names}, and holds with them as the unit vectors of none of "
-                  "the frames of the angle sequence the reader tries (after the first two turns, the body's, "
-                  "space's): the text's primed frame may be another")
+        self._read_once_or_twice(line, piece, dup, pieces)     # as written: the letters the text's own
