@@ -53,8 +53,9 @@ SHORT = {
         "determinant (\\det), the angular momentum's rows and a_i = a_i^t + a_i^n (a point's acceleration and its "
         "tangential and normal parts) and the moment in the products of inertia J_xz, J_yz against its sum over "
         "the particles, J_z alpha = sum M_z(F_i) (the moment about the axis) and the plane motion's points named by "
-        "letters (v_B = v_A + omega x r_AB, a_BA^t, a_BA^n); still unread: phi of the prose (J_z phi''), the "
-        "instantaneous centres (v_B = omega x r_AB with A at rest, left unjudged), the projection theorem, Koenig's T, the inertial forces (alpha_i for a_i, "
+        "letters (v_B = v_A + omega x r_AB, a_BA^t, a_BA^n) and at an instantaneous centre (v_B = omega x r_AB, "
+        "a_B = a_BA^t + a_BA^n: holds if A is at rest, or without acceleration); still unread: phi of the prose (J_z phi''), "
+        "the projection theorem, alpha |AB| T (a unit tangent of the prose's), Koenig's T, the inertial forces (alpha_i for a_i, "
         "F_惯 with \\text{惯} unbraced), sums without their index over the reactions, and the balance conditions' "
         "implications",
     ("mmmhj2-blog-rigid-body-fixed-axis-inertia-products-zh", "found"):
@@ -71,8 +72,9 @@ SHORT = {
     ("cooperrc-advanced-dynamics-spinning-top", "checked"):
         "an engineering course's spinning top in vector products written inside one bold group "
         "(\\mathbf{\\omega H_G}, \\mathbf{\\omega I_O\\omega}), the angular velocity in the line-of-nodes axes i', j', k' "
-        "and the inertia about the pivot as I_O = I_x + m d^2; its momenta p_phi, p_psi and the fast top's "
-        "precession rate m g d/(I_z psidot) are checked",
+        "and the inertia about the pivot as I_O = I_x + m d^2 (its matrix, diag(I_x + m d^2, I_y + m d^2, I_z), is "
+        "recorded, not checked); its momenta p_phi, p_psi, the fast top's precession rate m g d/(I_z psidot) and the "
+        "angular velocity along the primed axes i', j', k' (read as the frame after the first two turns) are checked",
     ("cooperrc-advanced-dynamics-spinning-top", "found"):
         "its slip (v_G for the velocity of G relative to B in the kinetic energy about a moving point) sits in a "
         "display written in bold products the reader does not read",
