@@ -54,21 +54,13 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
-    ("cooperrc-advanced-dynamics-spinning-top", "checked"):
-        "an engineering course's spinning top in vector products written inside one bold group "
-        "(\\mathbf{\\omega H_G}, \\mathbf{\\omega I_O\\omega}), the angular velocity in the line-of-nodes axes i', j', k' "
-        "and the inertia about the pivot as I_O = I_x + m d^2 (its matrix, diag(I_x + m d^2, I_y + m d^2, I_z), is "
-        "recorded, not checked); its momenta p_phi, p_psi, the fast top's precession rate m g d/(I_z psidot) and the "
-        "angular velocity along the primed axes i', j', k' (read as the frame after the first two turns) and Koenig's T about "
-        "G as stated are checked; the two forms of T about a point B (one holds only with B at rest, the other is the slip) "
-        "and L = T - V in bold products are not",
     ("cooperrc-advanced-dynamics-spinning-top", "found"):
         "its slip (v_G for the velocity of G relative to B in the kinetic energy about a moving point) sits in a "
-        "display written in bold products the reader does not read, and one that holds when B is at rest (only the "
-        "page's moving B makes it a slip)",
+        "display in bold products that the reader does not read, and that holds when B is at rest, as the form "
+        "before it does (T = 1/2 omega H_B, held if B is at rest): only the page's moving B makes it a slip",
 }
 
-FLOOR = {"checked": 403, "slips_flagged": 39, "holds_flagged": 0}
+FLOOR = {"checked": 404, "slips_flagged": 39, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -14,7 +14,8 @@ G, cm, CM, com), as every mechanics course writes them:
   distance between the parallel axes;
 * **König**: the kinetic energy T as that of the mass moving with the centre of mass, ½ m v_G²,
   plus that of the turning about it, ½ I_G ω² (a plane motion, a fixed axis) or ½ 𝛚·𝐇_G (written
-  ``\\boldsymbol\\omega\\cdot\\mathbf{H}_G`` or in one bold group, ``\\mathbf{\\omega H_G}``);
+  ``\\boldsymbol\\omega\\cdot\\mathbf{H}_G`` or in one bold group, ``\\mathbf{\\omega H_G}``); and T = ½ 𝛚·𝐇_P alone,
+  about a point P named by a capital, `holds if P is at rest` (a body turning about a fixed point);
 * **projection**: two points' speeds times the cosines of the angles (one letter, θ, φ, α or β) their
   velocities make with the line joining them, equal: v_B cos θ_B = v_A cos θ_A (points named by
   capitals, one of a point's two letters allowed in lower case, v_a beside θ_A), as
@@ -44,6 +45,9 @@ _TURNING = (rf"{_HALF}(?:[IJ]\s*_\s*{_SUB}\s*(?:\\[,;]\s*)?\\omega{_SQUARE}"
 _ANGLE = r"\\(?:theta|varphi|phi|alpha|beta)"
 _PROJECTION = re.compile(rf"\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?"
                          rf"\s*=\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?\s*[.,;]?\s*")
+_ABOUT = re.compile(rf"\s*T\s*=\s*{_HALF}(?:\\mathbf\s*\{{\s*\\omega\s*H\s*_\s*\{{?\s*([A-Z])\s*\}}?\s*\}}"
+                    rf"|\\(?:mathbf|boldsymbol)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|vec)\s*\{{?\s*H\s*\}}?\s*_\s*\{{?\s*([A-Z])\s*\}}?)"
+                    r"\s*[.,;]?\s*")
 _KOENIG = [re.compile(rf"\s*T\s*=\s*{a}\s*\+\s*{b}\s*[.,;]?\s*") for a, b in
            ((_MOVING, _TURNING), (_TURNING, _MOVING))]
 
@@ -54,6 +58,9 @@ KOENIG = ("König's theorem: the kinetic energy is that of the mass moving with 
 
 PROJECTION = ("the projection theorem of rigid motion: two points' velocities have equal projections on the line "
               "joining them, since the velocity of one relative to the other, 𝛚 × 𝐫_AB, is perpendicular to it")
+
+ABOUT = ("holds if {point} is at rest: the kinetic energy of a body turning about a fixed point {point} is "
+         "½ 𝛚·𝐇_{point} (about a moving point it takes the terms of that point's motion as well)")
 
 
 def _centre(sub: str | None) -> bool:
@@ -76,6 +83,10 @@ def theorem(piece: str) -> str | None:
                 and (other + other_at).lower() != other + other_at:
             return PROJECTION        # v_B cos θ_B = v_A cos θ_A (points by capitals, v_a beside θ_A)
         return None
+    m = _ABOUT.fullmatch(piece)
+    if m is not None:
+        point = m.group(1) or m.group(2)
+        return ABOUT.format(point=point)
     for form in _KOENIG:
         m = form.fullmatch(piece)
         if m is not None and all(_centre(g) for g in m.groups() if g is not None):
@@ -93,6 +104,6 @@ class StatedTheorems:
         mine = self.claims[before:]
         if why is None or not mine or any(c.verdict != "unchecked" for c in mine):
             return
-        kind = {PARALLEL: "parallel axes", KOENIG: "König", PROJECTION: "projection"}[why]
+        kind = {PARALLEL: "parallel axes", KOENIG: "König", PROJECTION: "projection"}.get(why, "fixed point")
         mine[0].kind, mine[0].verdict, mine[0].why, mine[0].correction = kind, "holds", why, None
         del self.claims[before + 1:]
