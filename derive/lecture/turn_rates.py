@@ -64,6 +64,12 @@ def _members(text: str) -> list[str] | None:
     return out
 
 
+def _zero(e) -> bool:
+    """Whether an entry vanishes: expanded, then with the angles' sines and cosines reduced."""
+    e = sp.expand(e)
+    return e == 0 or rot.trig_reduce(e) == 0 or sp.simplify(e) == 0
+
+
 class TurnRates:
     """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab`` and ``_add``."""
 
@@ -146,7 +152,7 @@ class TurnRates:
         if vectors and len(vectors) != sum(r[1] != "column" for r in kept):
             return False             # a vector beside components: the reader compares like with like
         base = components[kept.index(ref)]
-        holds = all(all(sp.simplify(e) == 0 for e in c - base) for c in components)
+        holds = all(all(_zero(e) for e in c - base) for c in components)
         primed = any(isinstance(r[1], tuple) and not r[1][1] for r in kept)
         if holds:
             why = ("the angular velocity of each turn, about its axis in the frame the turns before it reached"
