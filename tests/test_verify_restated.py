@@ -16,7 +16,8 @@ def test_a_relation_written_again_with_a_defined_name_put_in_holds():
     text = HEAD + PARALLEL + KOENIG + again
     got = verdicts(text)
     assert got[line_of(text, "(J_{z^\\prime} - m d^2)")] == {"holds"}
-    assert "holds" not in got[line_of(text, "J_C \\omega^2$$")]        # the first statement stays unjudged
+    first = kept.by_line(text)[line_of(text, "J_C \\omega^2$$")]
+    assert {c.kind for c in first} == {"König"}      # the first statement is judged as the theorem, not by the restatement
 
 
 def test_a_relation_written_again_differently_is_not_judged():

@@ -113,7 +113,9 @@ class AlgebraStatements:
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
             if verdict == "fails" and point_labels.involved(first[ref].value, first[k].value):
-                verdict, why = "unchecked", point_labels.WHY
+                rest = point_labels.at_rest(first[k].value, first[ref].value)
+                verdict, why = ("holds", point_labels.AT_REST.format(point=rest[0], what=rest[1])) if rest \
+                    else ("unchecked", point_labels.WHY)
             if verdict == "fails" and ref == 0 and k == 1 and reading.relations[0] == "≡":
                 verdict, why = "unchecked", ("a definition (≡, :=) of the text's own: its name means here what "
                                              "the text sets it to, not what the reader took it for")

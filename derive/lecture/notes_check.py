@@ -67,6 +67,9 @@ from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, su
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_rates import OwnRates
+from derive.lecture.stated_theorems import StatedTheorems
+from derive.lecture.primed_axes import PrimedAxes
+from derive.lecture.turn_rates import TurnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
@@ -120,7 +123,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -261,7 +264,9 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
             # what is written back uses the text's latest spelling of each symbol it has written
             self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
             try:
-                self._read_once_or_twice(item.line, piece, dup, pieces)
+                if not self._turn_rates(item.line, piece):
+                    self._read_axes_or_plain(item.line, piece, dup, pieces)
+                self._stated_theorem(item.line, piece, before)
             except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
                     KeyError, NotImplementedError, RecursionError, sp.PolynomialError) as err:
                 # a formula the checker cannot follow is reported as such, never given a verdict

@@ -15,7 +15,10 @@ with 𝛚 (rate 𝛂). A point X is at 𝛒_X from the reference point, free as 
 
 A relation of these that holds for every 𝐕, 𝐀 and 𝛒 holds for every rigid motion. One that does
 not may be the text's choice of its points (an instantaneous centre of velocity taken as A, so
-𝐯_B = 𝛚 × 𝐫_AB; a rolling contact at rest): it is never judged wrong here (`involved`).
+𝐯_B = 𝛚 × 𝐫_AB; a rolling contact at rest): it is never judged wrong here (`involved`). It holds
+if one of its points is at rest, or has no acceleration, when it holds with that point as the
+reference point and 𝐕 = 𝟎 (or 𝐀 = 𝟎), for every 𝛚, 𝛂 and the other points (`at_rest`): the
+instantaneous centre of velocity (of acceleration) as texts take it, `holds if` that, never `fails`.
 """
 from __future__ import annotations
 
@@ -29,6 +32,10 @@ RESERVED = frozenset("GOCI")
 WHY = ("relates points of the body named by letters, and does not hold for every motion of them: it may "
        "rest on the text's choice of its points (a point at rest, an instantaneous centre), which the reader "
        "does not know")
+
+
+AT_REST = ("holds if the {what} of {point} is zero at that instant ({point} an instantaneous centre of {what}, "
+           "as texts take a point of the body to write this; the relation does not hold for every point)")
 
 
 def _rho(label):
@@ -75,3 +82,25 @@ def involved(*values) -> bool:
         if any(str(s).startswith(("rho_", "ref_")) for s in free):
             return True
     return False
+
+
+def _points(value) -> set:
+    free = set().union(*(x.free_symbols for x in value)) if isinstance(value, sp.MatrixBase) \
+        else getattr(value, "free_symbols", set())
+    return {str(s).split("_")[1] for s in free if str(s).startswith("rho_")}
+
+
+def at_rest(claim, derived) -> tuple[str, str] | None:
+    """(the point, "velocity" or "acceleration") such that claim − derived vanishes when that point
+    is the reference point and its velocity (acceleration) is zero; None when no point does. The
+    relation must name another point besides it, so that 𝐯_B = 𝟎 does not hold "if B is at rest"."""
+    points = sorted(_points(claim) | _points(derived))
+    if len(points) < 2 or not isinstance(claim, sp.MatrixBase) or not isinstance(derived, sp.MatrixBase) \
+            or claim.shape != derived.shape:
+        return None
+    for point in points:
+        for what, ref in (("velocity", V), ("acceleration", A)):
+            subs = {**{c: 0 for c in _rho(point)}, **{c: 0 for c in ref}}
+            if all(sp.expand(x.subs(subs)) == 0 for x in claim - derived):
+                return point, what
+    return None

@@ -1,0 +1,169 @@
+"""The angular velocity of each turn, 𝛚_φ, 𝛚_θ, 𝛚_ψ, and its components in the frames between the turns.
+
+Takes: a statement of the notes checker (`derive.lecture.notes_check.Checker`) whose members are
+the angular velocities of single turns — a bold ω with one of the text's angles as its subscript
+(``\\vec{\\omega}_{\\phi}``), the angular velocity of the turn by that angle — their sum, the body's
+𝛚, or such a vector's components in a frame (``(\\vec{\\omega}_{\\phi})_{\\{x',y',z'\\}}``,
+``(\\vec{\\omega}_\\psi)_\\mathrm{body}``), or a written column. Gives: the mixin `TurnRates`,
+whose ``_turn_rates`` judges such a statement, link by link.
+
+The turn by the k-th angle q_k is about the axis a_k of the frame the first k − 1 turns reached,
+so 𝛚_{q_k} = q̇_k F_{k−1} e_{a_k} in space components, F_0 = 𝟙, F_1 = R_{a₁}(q₁),
+F_2 = R_{a₁}(q₁) R_{a₂}(q₂), F_3 = R (active turns). A frame named by its axes with n primes,
+{x⁽ⁿ⁾, y⁽ⁿ⁾, z⁽ⁿ⁾}, is F_n, the frame after n turns ({x, y, z} space, {x‴, y‴, z‴} the body's), as
+texts that name the frames so write them; ``space``, ``fixed``, ``inertial`` name F_0 and
+``body`` F_3. A vector's components in F_n are F_nᵀ v. A member in a frame of another name
+(``intermediate``) is the chain's own name for the next member and is left out. A statement that
+does not hold is `fails` only when every frame it names is space or body; with a frame named by
+primes it stays `unchecked`, saying how the primes were read (a text may count its primes
+otherwise). May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.symbolic import rotations as rot
+
+_BOLD = r"\\(?:vec|mathbf|boldsymbol|bm|vect)\s*"
+_OMEGA = rf"{_BOLD}\{{?\s*(?:{_BOLD}\{{\s*)?\\omega\s*\}}?\s*\}}?"
+_TURN = re.compile(rf"\s*{_OMEGA}\s*(?:_\s*\{{?\s*(\\[A-Za-z]+)\s*\}}?)?\s*")
+_FRAMED = re.compile(rf"\s*\(\s*({_OMEGA}\s*(?:_\s*\{{?\s*\\[A-Za-z]+\s*\}}?)?)\s*\)\s*_\s*"
+                     r"(\{\s*\\\{[^{}]*\\\}\s*\}|\\\{[^{}]*\\\}|\{\s*\\?(?:mathrm|text)?\s*\{?\s*[a-z]+\s*\}?\s*\}|\\(?:mathrm|text)\s*\{\s*[a-z]+\s*\})\s*")
+_COLUMN = re.compile(r"\s*(?:\\left\s*[\[(]\s*)?\\begin\{(array|bmatrix|pmatrix)\}(?:\{[a-z]*\})?(.*?)\\end\{\1\}"
+                     r"(?:\s*\\right\s*[\])])?\s*", re.S)
+_AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
+_NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
+
+
+def _frame(label: str):
+    """(n, named): the frame after n turns a subscript names and whether by a name (space, body);
+    None for a name the reader does not know."""
+    m = _AXES.search(label)
+    if m:
+        primes = {len(g) for g in m.groups()}
+        return (primes.pop(), False) if len(primes) == 1 and max(primes | {0}) <= 3 else None
+    word = re.sub(r"\\(?:mathrm|text)|[{}\s\\]", "", label)
+    return (_NAMED[word], True) if word in _NAMED else None
+
+
+def _members(text: str) -> list[str] | None:
+    """The members of a chain of ``=`` at brace depth 0, or None when it has another relation."""
+    out, depth, start = [], 0, 0
+    for k, ch in enumerate(text):
+        depth += ch in "{[(" and 1 or 0
+        depth -= ch in "}])" and 1 or 0
+        if ch == "=" and depth == 0:
+            out.append(text[start:k])
+            start = k + 1
+    out.append(text[start:])
+    if len(out) < 2 or any(re.search(r"\\(?:approx|equiv|le|ge|neq)\b|[<>]", m) for m in out):
+        return None
+    return out
+
+
+def _zero(e) -> bool:
+    """Whether an entry vanishes: expanded, then with the angles' sines and cosines reduced."""
+    e = sp.expand(e)
+    return e == 0 or rot.trig_reduce(e) == 0 or sp.simplify(e) == 0
+
+
+class TurnRates:
+    """Mixin of the checker. Uses ``self.d`` (the derivation), ``self.vocab`` and ``_add``."""
+
+    def _turn_frames(self) -> list:
+        a1, a2, _ = self.d.conv.axes
+        q = rot.ANGLES
+        first = rot.active(a1, q[0])
+        return [sp.eye(3), first, first * rot.active(a2, q[1]), self.d.conv.matrix()]
+
+    def _turn_vector(self, angle: str | None):
+        """The space components of 𝛚 (angle None) or of the turn by the text's angle, or None."""
+        if angle is None:
+            return sp.Matrix(self.d.conv.omega_space())
+        try:
+            value = lx.parse(angle, self.vocab).members[0].value
+        except (lx.NotRead, IndexError, AttributeError):
+            return None
+        if value not in rot.ANGLES:
+            return None
+        k = rot.ANGLES.index(value)
+        return rot.RATES[k] * self._turn_frames()[k] * rot.unit(self.d.conv.axes[k])
+
+    def _turn_member(self, text: str):
+        """(space components, frame) of one member; frame None for a vector, (n, named) for its
+        components in a frame; "skip" for a frame the reader does not know; None when not read."""
+        m = _FRAMED.fullmatch(text)
+        if m:
+            inner = _TURN.fullmatch(m.group(1))
+            frame = _frame(m.group(2))
+            if inner is None:
+                return None
+            if frame is None:
+                return "skip"
+            v = self._turn_vector(inner.group(1))
+            return None if v is None else (v, frame)
+        m = _COLUMN.fullmatch(text)
+        if m:
+            rows = [r for r in m.group(2).split("\\\\") if r.strip()]
+            if len(rows) != 3 or any("&" in r for r in rows):
+                return None
+            try:
+                entries = [lx.parse(r.strip().rstrip(",."), self.vocab).members[0].value for r in rows]
+            except (lx.NotRead, IndexError, AttributeError):
+                return None
+            if not all(isinstance(e, sp.Expr) for e in entries):
+                return None
+            return sp.Matrix(entries), "column"
+        matches = [_TURN.fullmatch(t) for t in text.split("+")]
+        if not all(matches):
+            return None
+        total = sp.zeros(3, 1)
+        for m in matches:            # 𝛚 alone, or a sum of the turns' 𝛚_q
+            part = self._turn_vector(m.group(1))
+            if part is None:
+                return None
+            total += part
+        return total, None
+
+    def _turn_rates(self, line, piece) -> bool:
+        """Judge a statement of turns' angular velocities (see the module docstring); False when
+        it is not one."""
+        if not re.search(rf"{_OMEGA}\s*_\s*\{{?\s*\\[A-Za-z]+", piece):
+            return False
+        members = _members(piece)
+        if members is None:
+            return False
+        read = [self._turn_member(m) for m in members]
+        if any(r is None for r in read):
+            return False
+        kept = [r for r in read if r != "skip"]
+        if len(kept) < 2 or all(r[1] == "column" for r in kept):
+            return False
+        if any(r[1] == "column" for r in kept) and all(r[1] is None for r in kept if r[1] != "column"):
+            return False             # a column against a vector with no frame: which frame is not said
+        frames = self._turn_frames()
+        ref = next(r for r in kept if r[1] != "column")
+        components = [r[0] if r[1] == "column" else
+                      (r[0] if r[1] is None else frames[r[1][0]].T * r[0]) for r in kept]
+        vectors = [r[0] for r in kept if r[1] is None]
+        if vectors and len(vectors) != sum(r[1] != "column" for r in kept):
+            return False             # a vector beside components: the reader compares like with like
+        base = components[kept.index(ref)]
+        holds = all(all(_zero(e) for e in c - base) for c in components)
+        primed = any(isinstance(r[1], tuple) and not r[1][1] for r in kept)
+        if holds:
+            why = ("the angular velocity of each turn, about its axis in the frame the turns before it reached"
+                   + (", the frame {x⁽ⁿ⁾, y⁽ⁿ⁾, z⁽ⁿ⁾} read as the frame after n turns" if primed else ""))
+            self._add(line, piece, "identity", "holds", why)
+        elif primed:
+            self._add(line, piece, "identity", "unchecked",
+                      "does not hold reading a frame {x⁽ⁿ⁾, y⁽ⁿ⁾, z⁽ⁿ⁾} as the frame after n turns of the "
+                      "angle sequence: the text may count its primes otherwise")
+        else:
+            self._add(line, piece, "identity", "fails",
+                      "the angular velocity of each turn is its rate about its own axis, in the frame the turns "
+                      "before it reached: the members differ")
+        return True

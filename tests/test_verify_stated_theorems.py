@@ -1,0 +1,54 @@
+"""The notes reader on three theorems of a rigid body as a text states them: the parallel-axis
+theorem (I_P = I_G + m d²) and König's theorem (T = ½ m v_G² + ½ I_G ω², or ½ 𝛚·𝐇_G), the centre of
+mass named by a subscript (and T = ½ 𝛚·𝐇_P, holding if P is at rest), and the projection theorem
+(v_B cos θ_B = v_A cos θ_A). Each holds as written, a name it sets is still the text's own, and
+another form is not judged by the rule (never flagged by it)."""
+import kept_readings as kept
+
+HEAD = "# Moments\n\nThe moment about a parallel axis at a distance $d$ from the centre of mass:\n\n"
+
+
+def _claims(display, after=""):
+    text = HEAD + "$$" + display + "$$\n\n" + after
+    return kept.by_line(text)
+
+
+def _kinds(display):
+    return [(c.verdict, c.kind) for cs in _claims(display).values() for c in cs]
+
+
+def test_the_parallel_axis_theorem_holds_as_written():
+    for display in ("J_{z^\\prime} = J_C + m d^2", "I_O = I_G + M a^2", "I_{cm} = I_P - m h^2"):
+        assert _kinds(display) == [("holds", "parallel axes")], display
+
+
+def test_the_name_the_parallel_axis_theorem_sets_is_used_after_it():
+    claims = _claims("J_{z^\\prime} = J_C + m d^2", "$$J_C = J_{z^\\prime} - m d^2$$\n")
+    assert [c.verdict for c in claims[max(claims)]] == ["holds"]
+
+
+def test_koenigs_theorem_holds_as_written_in_scalars_and_in_vectors():
+    for display in ("T = \\frac{1}{2} m v_c^2 + \\frac{1}{2} J_C \\omega^2",
+                    "T=\\frac{1}{2}m\\mathbf{v}_G^2+\\frac{1}{2}\\mathbf{\\omega H_G}",
+                    "T = \\frac12 \\boldsymbol\\omega \\cdot \\mathbf{H}_G + \\frac12 M \\mathbf{v}_G^2"):
+        assert _kinds(display) == [("holds", "König")], display
+
+
+def test_the_energy_about_a_point_holds_if_the_point_is_at_rest():
+    for display in ("T=\\frac{1}{2}\\mathbf{\\omega H_B}", "T = \\frac{1}{2} \\boldsymbol{\\omega} \\cdot \\mathbf{H}_O"):
+        [claim] = [c for cs in _claims(display).values() for c in cs]
+        assert (claim.verdict, claim.kind) == ("holds", "fixed point"), display
+        assert claim.why.startswith("holds if")
+
+
+def test_the_projection_theorem_holds_as_written():
+    for display in ("v_B \\cos \\theta_B = v_a \\cos \\theta_A", "v_B \\cos(\\alpha_B) = v_A \\cos(\\alpha_A)"):
+        assert _kinds(display) == [("holds", "projection")], display
+
+
+def test_other_forms_are_not_taken_for_the_theorems():
+    for display in ("I_O = I_G - M a^2", "I_O = I_G + M a", "I_G = I_O + M a^2", "I_O = J_G + M a^2",
+                    "T = \\frac{1}{2} m v_c^2 + J_C \\omega^2", "T=\\frac{1}{2}m\\mathbf{v}_B^2+\\frac{1}{2}\\mathbf{\\omega H_B}", "T = \\boldsymbol{\\omega} \\cdot \\mathbf{H}_O",
+                    "T = \\frac{1}{2} m v_c + \\frac{1}{2} J_C \\omega^2", "v_B \\cos\\theta_B = v_A \\sin\\theta_A",
+                    "v_B \\cos\\theta_B = v_A \\cos\\theta_B", "v_x \\cos\\alpha_x = v_y \\cos\\alpha_y"):
+        assert "holds" not in {v for v, _ in _kinds(display)}, display
