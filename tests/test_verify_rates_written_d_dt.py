@@ -89,10 +89,17 @@ def test_a_rate_written_d_dt_in_a_product_and_a_partial_derivative():
     assert _value(r"\frac{\partial L}{\partial (d\gamma/dt)} = 0") == _value(r"\frac{\partial L}{\partial \dot\gamma} = 0")
 
 
-def test_the_rate_of_a_quantity_stays_a_derivative_to_take():
-    assert _value(r"\frac{dT}{dt} = 0") == lx.DT(lx.T_)
+def test_a_quantitys_rate_is_read_as_its_dot_and_a_constants_as_a_derivative():
+    opened = lx.Vocabulary(open=True)
+    assert lx.parse(r"\frac{dE}{dt} = 0", opened).members[0].value == lx.parse(r"\dot E = 0", opened).members[0].value
+    assert _value(r"\frac{d p_\gamma}{dt} = 0") == lx.DT(lx.p_gamma_sym())
     with pytest.raises(lx.NotRead):     # the orders of d and dt differ: no rate
         _value(r"\frac{d^2 \alpha}{dt} = 0")
+
+
+def test_a_conserved_momentum_in_d_dt_holds_and_the_energys_rate_is_not_called_wrong():
+    claims = kept_readings.check_text("# Heavy top\n\n$$\\frac{d p_\\alpha}{dt} = 0$$\n\n$$\\frac{dE}{dt} = 0$$\n")
+    assert [c.verdict for c in claims] == ["holds", "unchecked"]
 
 
 def test_a_statement_opening_with_a_rate_written_d_dt_is_a_rate_first():

@@ -430,16 +430,18 @@ class _Parser:
         return None
 
     def _rate_written(self, x, n, end):
-        """dⁿx/dtⁿ written d/dt (`derive.lecture.written_rates`): the rate the dotted symbol reads as,
-        d𝐋/dt, or d/dt of what it differentiates (the operator d/dt: of what follows it)."""
+        """dⁿx/dtⁿ written d/dt (`derive.lecture.written_rates`), read as ẋ, ẍ are (ẋ(0) too)."""
         self.i = end
-        if x is None:
+        if x is None:                               # the operator d/dt: of what follows it
             start, value = end, self.term({})
             inner = [t for t in self.toks[start:self.i] if not (t.kind == "op" and t.value in "()")]
             rate = rate_of(reading(self), inner[0].value, n) if len(inner) == 1 and inner[0].kind == "atom" else None
             return self._evaluated(rate if rate is not None else derivative(value, n))
-        vocab = self.vocab if self.components_in_rates else None
-        return self._evaluated(symbol_rate(reading(self), self.toks[x], n, vocab))
+        tok = self.toks[x]
+        value = symbol_rate(reading(self), tok, n, self.vocab if self.components_in_rates else None)
+        at = self._at_a_time(Tok("atom", tok.value.with_(dots=tok.value.dots + n), tok.pos), value) \
+            if self.at("op", "(") and (value in WD or isinstance(value, Generic)) else None
+        return at if at is not None else self._evaluated(value)
 
     def _evaluated(self, value):
         """A derivative followed by a bracket holding a time: evaluated at a point (φ̇(t + T)), which

@@ -4,11 +4,11 @@ A text writes the rate of a symbol x as ``\\dot x`` or as ``\\frac{d x}{dt}``, `
 ``\\frac{\\mathrm{d} x}{\\mathrm{d} t}``, ``dx/dt``, ``\\frac{d}{dt} x``, ``\\frac{d}{dt}\\left(x\\right)``,
 and its second rate as ``\\ddot x`` or ``\\frac{d^2 x}{dt^2}`` (``d^2x/dt^2``, ``\\frac{d^2}{dt^2} x``).
 Such a rate of one symbol is looked up as the dotted atom itself, ``\\dot x`` with as many dots as
-the order: the same SymPy symbol (α̇ of an angle, ω̃̇ᵢ, a name the text gives, the text's own ẋ),
-so the equations of motion the checker keeps, the rates a text sets, the second-order equations
-and the chains see one rate however it is written. The rate of anything else (a quantity such as
-T or E, a constant, a product) stays d/dt of it (`derive.lecture.vocabulary.DT`), which the
-checker differentiates.
+the order: the same SymPy symbol (α̇ of an angle, ω̃̇ᵢ, a name the text gives, the text's own ẋ, Ė
+for a quantity E), so the equations of motion the checker keeps, the rates a text sets, the
+second-order equations and the chains see one rate however it is written. The rate of a constant
+of the derivation (p_α, I₁) and of anything else (a product) stays d/dt of it
+(`derive.lecture.vocabulary.DT`), which the checker differentiates.
 
 Takes the formula reader's tokens (`derive.lecture.vocabulary.scan`) and its reading of an atom
 (`derive.lecture.vocabulary.Vocabulary.resolve`, or a parser's own); gives
@@ -128,20 +128,20 @@ def rate_of(read, atom, n: int):
     sympy object or None
         What the same atom with n more dots reads as (``\\dot x``, ``\\ddot x``): α̇ for an Euler
         angle α, ω̃̇ᵢ for ω̃ᵢ (ω̃̈ᵢ, the text's own symbol, as ``\\ddot\\omega_i`` is), the rate a
-        name the text gives stands for, the text's ẋ for a symbol x of its own. None when x is a
-        quantity (T, E), unknown, or a symbol whose dotted name the derivation does not give (a
-        constant I₁, p_α): its rate is d/dt of its value.
+        name the text gives stands for, the text's ẋ for a symbol x of its own or a quantity's (Ė).
+        None when x is unknown or a constant whose dotted name the derivation does not give (I₁,
+        p_α): its rate is d/dt of it.
     """
     try:
         plain = read(atom)
-        if plain is None or isinstance(plain, Quantity):
-            return None
-        value = read(atom.with_(dots=atom.dots + n))
+        value = None if plain is None else read(atom.with_(dots=atom.dots + n))
     except NotRead:
         return None
-    # a dotted name the derivation does not give (ṗ_α, İ₁) would be a new symbol: d/dt of the value
-    # instead; ω̃̈ᵢ is the text's own symbol as \ddot\omega_i is (the second-order equations read it)
-    if value is None or (isinstance(value, Generic) and not isinstance(plain, Generic) and plain not in W):
+    # a constant's dotted name (ṗ_α, İ₁) would be a new symbol: d/dt of the constant instead, zero; a
+    # quantity's (Ė, L̇) is the text's own symbol, as the dot reads it (d/dt of the derivation's E holds
+    # only on the motion); ω̃̈ᵢ is the text's own symbol as \ddot\omega_i is (the second-order equations
+    # read it)
+    if value is None or (isinstance(value, Generic) and not isinstance(plain, (Generic, Quantity)) and plain not in W):
         return None
     return value
 
@@ -175,14 +175,18 @@ NOT_PARTIAL = object()
 
 
 def partial_variable(read, den: list):
-    """The variable of a partial derivative's denominator ``\\partial x``: x read as an atom, or a
-    rate written d/dt, ``\\partial \\frac{d\\phi}{dt}``, ``\\partial (d\\phi/dt)``, as the rate φ̇ (None when
-    that rate is not one of the text's symbols); :data:`NOT_PARTIAL` for any other denominator."""
+    """The variable of a partial derivative's denominator ``\\partial x`` (``\\partial{x}``): x read
+    as an atom, or a rate written d/dt, ``\\partial \\frac{d\\phi}{dt}``, ``\\partial (d\\phi/dt)``, as
+    the rate φ̇ (None when that rate is not one of the text's symbols); :data:`NOT_PARTIAL` for any
+    other denominator."""
     if not den or den[0].kind != "cmd" or den[0].value != "partial":
         return NOT_PARTIAL
-    if len(den) == 2 and den[1].kind == "atom":
-        return read(den[1].value)
-    inner = den[2:-1] if len(den) > 3 and _is(den, 1, "op", "(") and _is(den, len(den) - 1, "op", ")") else den[1:]
+    inner = den[1:]
+    if len(inner) > 2 and (_is(inner, 0, "op", "(") and _is(inner, len(inner) - 1, "op", ")")
+                           or _is(inner, 0, "op", "{") and _is(inner, len(inner) - 1, "op", "}")):
+        inner = inner[1:-1]                     # ∂(dφ/dt), ∂{θ}
+    if len(inner) == 1 and inner[0].kind == "atom":
+        return read(inner[0].value)
     rate = written_rate(inner, 0)
     if rate is None or rate[0] is None or rate[2] != len(inner):
         return NOT_PARTIAL
