@@ -85,8 +85,10 @@ def test_a_rate_written_d_dt_is_the_dotted_symbol(written, dotted):
 
 def test_a_rate_written_d_dt_in_a_product_and_a_partial_derivative():
     assert _value(r"I_1 d\tilde\omega_1/dt \sin\beta = 0") == _value(r"I_1 \dot{\tilde\omega}_1 \sin\beta = 0")
-    assert _value(r"\frac{\partial L}{\partial \frac{d\alpha}{dt}} = 0") == _value(r"\frac{\partial L}{\partial \dot\alpha} = 0")
-    assert _value(r"\frac{\partial L}{\partial (d\gamma/dt)} = 0") == _value(r"\frac{\partial L}{\partial \dot\gamma} = 0")
+    momentum = _value(r"\frac{\partial L}{\partial \dot\alpha} = 0")
+    assert _value(r"\frac{\partial L}{\partial \frac{d\alpha}{dt}} = 0") == momentum
+    gamma = _value(r"\frac{\partial L}{\partial \dot\gamma} = 0")
+    assert _value(r"\frac{\partial L}{\partial (d\gamma/dt)} = 0") == gamma
 
 
 def test_a_quantitys_rate_is_read_as_its_dot_and_a_constants_as_a_derivative():
@@ -100,6 +102,34 @@ def test_a_quantitys_rate_is_read_as_its_dot_and_a_constants_as_a_derivative():
 def test_a_conserved_momentum_in_d_dt_holds_and_the_energys_rate_is_not_called_wrong():
     claims = kept_readings.check_text("# Heavy top\n\n$$\\frac{d p_\\alpha}{dt} = 0$$\n\n$$\\frac{dE}{dt} = 0$$\n")
     assert [c.verdict for c in claims] == ["holds", "unchecked"]
+
+
+PENDULUM = r"""# A pendulum
+
+A bob on a light rod of length $l$ swings in a plane; $\theta$ is its angle from the vertical.
+
+$$L(\theta, RATE) = \frac{m l^2}{2} \left(RATE\right)^2 + m g l \cos\theta$$
+
+$$\frac{d}{dt}\frac{\partial L}{\partial (RATE)} = \frac{\partial L}{\partial\theta}$$
+
+$$m l^2 SECOND = - m g l \sin\theta$$
+
+$$m l^2 SECOND = m g l \sin\theta$$
+"""
+
+
+@pytest.mark.parametrize("rate, second", [(r"\frac{d\theta}{dt}", r"\frac{d^2\theta}{dt^2}"),
+                                          (r"d\theta/dt", r"d^2\theta/dt^2")])
+def test_a_one_coordinate_text_in_d_dt_reads_as_with_dots(rate, second):
+    def verdicts(r, s):
+        return [c.verdict for c in kept_readings.check_text(PENDULUM.replace("RATE", r).replace("SECOND", s))]
+    assert verdicts(rate, second) == verdicts(r"\dot\theta", r"\ddot\theta") == ["unchecked", "holds", "holds", "fails"]
+
+
+def test_a_rate_written_d_dt_at_a_time_is_the_texts_value_as_with_a_dot():
+    opened = lx.Vocabulary(open=True)
+    at = lambda latex: lx.parse(latex, opened).members[1].value  # noqa: E731
+    assert at(r"x = \frac{d\omega_y}{dt}(0)") == at(r"x = \dot\omega_y(0)")
 
 
 def test_a_statement_opening_with_a_rate_written_d_dt_is_a_rate_first():

@@ -167,7 +167,8 @@ def _rates_folded(toks: list) -> list:
         for n, shape in ((1, [("cmd", "frac"), opened, d, None, closed, opened, d, t, closed]),
                          (2, [("cmd", "frac"), opened, d, ("op", "^"), ("num", "2"), None, closed, opened, d, t,
                               ("op", "^"), ("num", "2"), closed]),
-                         (1, [d, None, ("op", "/"), d, t])):
+                         (1, [d, None, ("op", "/"), d, t]),
+                         (2, [d, ("op", "^"), ("num", "2"), None, ("op", "/"), d, t, ("op", "^"), ("num", "2")])):
             part = toks[k:k + len(shape)]
             x = shape.index(None)
             if len(part) == len(shape) and part[x][0] == "atom" and \
