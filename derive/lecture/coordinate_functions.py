@@ -154,6 +154,32 @@ def tokens(s: str) -> list:
         atom, j = _atom(s, i)
         out.append(("atom", atom))
         i = j
+    return _rates_folded(out)
+
+
+def _rates_folded(toks: list) -> list:
+    """The tokens with a rate of one symbol written d/dt (``\\frac{d\\theta}{dt}``, ``d\\theta/dt``,
+    ``\\frac{d^2\\theta}{dt^2}``) as the dotted symbol, θ̇, θ̈: as the formula reader reads them
+    (`derive.lecture.written_rates`)."""
+    d, t, opened, closed = ("atom", Atom("d")), ("atom", Atom("t")), ("op", "("), ("op", ")")
+    out, k = [], 0
+    while k < len(toks):
+        for n, shape in ((1, [("cmd", "frac"), opened, d, None, closed, opened, d, t, closed]),
+                         (2, [("cmd", "frac"), opened, d, ("op", "^"), ("num", "2"), None, closed, opened, d, t,
+                              ("op", "^"), ("num", "2"), closed]),
+                         (1, [d, None, ("op", "/"), d, t]),
+                         (2, [d, ("op", "^"), ("num", "2"), None, ("op", "/"), d, t, ("op", "^"), ("num", "2")])):
+            part = toks[k:k + len(shape)]
+            x = shape.index(None)
+            if len(part) == len(shape) and part[x][0] == "atom" and \
+                    all(want is None or got == want for got, want in zip(part, shape)):
+                a = part[x][1]
+                out.append(("atom", Atom(a.name, a.primes, a.dots + n)))
+                k += len(shape)
+                break
+        else:
+            out.append(toks[k])
+            k += 1
     return out
 
 

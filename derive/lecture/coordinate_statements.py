@@ -39,7 +39,10 @@ from derive.lecture import coordinate_functions as cf
 from derive.lecture.operator_notation import NotHandled
 from derive.lecture.operator_statements import _left_side
 
-_LAGRANGIAN = re.compile(r"(?<![A-Za-z\\])L\s*\(\s*(\\[A-Za-z]+|[A-Za-z])\s*,\s*\\dot\s*\{?\s*\1\s*\}?\s*\)\s*=")
+_D = r"(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s*d|d)\s*"
+# L(q, \dot q) =, or with the rate written d/dt as the formula reader reads it (`derive.lecture.written_rates`)
+_LAGRANGIAN = re.compile(r"(?<![A-Za-z\\])L\s*\(\s*(\\[A-Za-z]+|[A-Za-z])\s*,\s*(?:\\dot\s*\{?\s*\1\s*\}?|\\[dt]?frac\s*\{\s*"
+                         + _D + r"\1\s*\}\s*\{\s*" + _D + r"t\s*\}|" + _D + r"\1\s*/\s*" + _D + r"t)\s*\)\s*=")
 _SINGLE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
 _POINTS = 4
 _ERRORS = (NotHandled, TypeError, ValueError, ZeroDivisionError, AttributeError, IndexError, KeyError,

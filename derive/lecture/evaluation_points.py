@@ -1,11 +1,10 @@
-"""Rates written as fractions d/dt among the formula reader's tokens: whether a bracket after one is
-the point it is evaluated at, and a rate in a name's list of arguments.
+"""Rates among the formula reader's tokens: whether a bracket after one is the point it is evaluated
+at.
 
 ``\\dot\\phi(t + T)``, ``\\frac{d\\omega_1}{dt}(0)``: a derivative followed by a bracket holding the
 time (or only numbers) is evaluated at that point. ``\\frac{d\\alpha}{dt} \\left(p_\\gamma - I_1
 \\frac{d\\alpha}{dt} \\cos\\beta\\right)``: a bracket holding other quantities multiplies it, as a
-reader reads it. ``L(\\alpha, \\frac{d\\alpha}{dt})``: the rate of α among the arguments. Takes the
-formula reader's tokens (`derive.lecture.vocabulary.Tok`); imports
+reader reads it. Takes the formula reader's tokens (`derive.lecture.vocabulary.Tok`); imports
 nothing of derive's.
 """
 from __future__ import annotations
@@ -45,31 +44,3 @@ def holds_a_point(toks: list, i: int) -> bool:
     if any(base(t) == "t" and (k == 0 or base(inside[k - 1]) != "d") for k, t in enumerate(inside)):
         return True
     return all(t.kind in ("num", "op") for t in inside)
-
-
-def rate_argument(toks: list, j: int) -> tuple[int, int] | None:
-    """A rate written as a fraction in a list of arguments, ``L(\\alpha, \\frac{d\\alpha}{dt})``.
-
-    Parameters
-    ----------
-    toks : list of Tok
-        The formula's tokens.
-    j : int
-        Where the argument starts.
-
-    Returns
-    -------
-    tuple of int, or None
-        (the index of the differentiated symbol's token, the index of the token after the
-        fraction) when ``toks[j:]`` is ``\\frac{d X}{d t}`` with one symbol X; None otherwise.
-    """
-    part = toks[j:j + 9]
-    if len(part) < 9 or part[0].kind != "cmd" or part[0].value not in ("frac", "dfrac", "tfrac"):
-        return None
-    shape = [(t.kind, t.value if t.kind == "op" else getattr(t.value, "base", None)) for t in part[1:]]
-    want = [("op", "{"), ("atom", "d"), ("atom", None), ("op", "}"), ("op", "{"), ("atom", "d"), ("atom", "t"),
-            ("op", "}")]
-    if all(k == wk and (wv is None or v == wv) for (k, v), (wk, wv) in zip(shape, want)) \
-            and not part[2].value.sub and not part[6].value.sub:
-        return j + 3, j + 9
-    return None

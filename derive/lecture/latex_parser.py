@@ -10,11 +10,13 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture.vocabulary import (
-    DLDT, DLDT_BODY, DT, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
+    DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
-from derive.lecture.evaluation_points import holds_a_point, rate_argument
+from derive.lecture.evaluation_points import holds_a_point
+from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_argument, rate_of,
+                                         reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -37,6 +39,8 @@ class Parsed:
 
 
 class _Parser:
+    components_in_rates = True      # d𝛚₁/dt is the scalar ω̇₁ (a grammar of vectors reads 𝛚₁ its own way)
+
     def __init__(self, toks: list[Tok], vocab: Vocabulary, source: str):
         self.toks, self.vocab, self.source, self.i = toks, vocab, source, 0
         self.args = None
@@ -223,6 +227,8 @@ class _Parser:
         if tok.kind == "num":
             self.i += 1
             return sp.Rational(tok.value)
+        if tok.kind == "atom" and (rate := written_rate(self.toks, self.i)) is not None:      # dx/dt
+            return self._rate_written(*rate)
         if tok.kind == "atom":
             self.i += 1
             value = self.atom(tok, env)
@@ -399,30 +405,14 @@ class _Parser:
         if den is None:
             return None
         is_d = lambda tk: tk.kind == "atom" and tk.value.base == "d" and not tk.value.sub and not tk.value.bold
-        dt = len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" \
-            and not den[1].value.sub
         if len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" and den[1].value.sub \
                 and num and is_d(num[0]):
             raise NotRead("a derivative in a frame (d/dt with the frame's label on t)")   # dH/dt_b, never H/t_b
-        if dt and len(num) == 1 and is_d(num[0]):
-            self.i = k2                                   # d/dt of what follows
-            return self._evaluated(DT(self.term({})))
-        if dt and len(num) == 2 and is_d(num[0]) and num[1].kind == "atom":
-            atom = num[1].value
-            if atom.bold and atom.sub in ("1", "2", "3"):
-                atom = atom.with_(bold=False)           # d(𝛚₁)/dt: a bold component is the component
-            what = self.vocab.resolve(atom)
-            if what is LVEC:
-                self.i = k2
-                return DLDT
-            if what is None or atom.bold:
-                raise NotRead(f"cannot parse at column {num[1].pos + 1}: the time derivative of {num[1].value.text}",
-                              num[1].pos + 1)
-            self.i = k2                                   # dα/dt of an angle is its rate α̇
-            return self._evaluated(RATES[ANGLES.index(what)] if what in ANGLES else DT(what))
+        if (rate := written_rate(toks, self.i - 1)) is not None:
+            return self._rate_written(*rate)
         is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
-        if len(den) == 2 and is_partial(den[0]) and den[1].kind == "atom":
-            var = self.vocab.resolve(den[1].value)
+        var = partial_variable(self.vocab.resolve, den)
+        if var is not NOT_PARTIAL:
             if len(num) == 1 and is_partial(num[0]) and isinstance(var, sp.Symbol):
                 self.i = k2                               # ∂/∂v of what follows
                 return sp.Derivative(self.term({}), var, evaluate=False)
@@ -438,6 +428,20 @@ class _Parser:
                 raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative of this form",
                               num[0].pos + 1)
         return None
+
+    def _rate_written(self, x, n, end):
+        """dⁿx/dtⁿ written d/dt (`derive.lecture.written_rates`), read as ẋ, ẍ are (ẋ(0) too)."""
+        self.i = end
+        if x is None:                               # the operator d/dt: of what follows it
+            start, value = end, self.term({})
+            inner = [t for t in self.toks[start:self.i] if not (t.kind == "op" and t.value in "()")]
+            rate = rate_of(reading(self), inner[0].value, n) if len(inner) == 1 and inner[0].kind == "atom" else None
+            return self._evaluated(rate if rate is not None else derivative(value, n))
+        tok = self.toks[x]
+        value = symbol_rate(reading(self), tok, n, self.vocab if self.components_in_rates else None)
+        at = self._at_a_time(Tok("atom", tok.value.with_(dots=tok.value.dots + n), tok.pos), value) \
+            if self.at("op", "(") and (value in WD or isinstance(value, Generic)) else None
+        return at if at is not None else self._evaluated(value)
 
     def _evaluated(self, value):
         """A derivative followed by a bracket holding a time: evaluated at a point (φ̇(t + T)), which

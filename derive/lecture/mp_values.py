@@ -9,7 +9,8 @@ reading each node as SymPy's mpmath printer writes it (an integer as a Python in
 as ``1/sqrt(x)``, other powers as ``**``, ``Abs`` as ``fabs``, a function with a ``mpmath_value``
 of its own through it); an expression holding anything else is left to ``lambdify``. The values
 agree with ``lambdify``'s to the working precision (sums and products may round in another
-order), and the same points raise the same errors (a division by zero, a pole).
+order), and the same points raise the same errors (a division by zero, a pole); a function
+``lambdify`` cannot write raises NotImplementedError.
 
 May import: SymPy, mpmath.
 """
@@ -35,7 +36,19 @@ def evaluator(symbols, exprs):
     """f(*point) → [each expression at symbols = point] in mpmath (see the module docstring)."""
     exprs = [sp.sympify(e) for e in exprs]
     f = walker(symbols, exprs)
-    return f if f is not None else sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0)
+    return f if f is not None else _lambdified(sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0))
+
+
+def _lambdified(g):
+    """``g`` (a lambdified function), whose call on a function with no numeric meaning (the reader's
+    stand-in for a transpose of a name whose shape the text never gave) raises NotImplementedError:
+    there is no value to compare, so the formula is left unjudged."""
+    def f(*point):
+        try:
+            return g(*point)
+        except NameError as err:
+            raise NotImplementedError(f"no numeric value for {err.name}") from None
+    return f
 
 
 def walker(symbols, exprs):

@@ -74,7 +74,7 @@ from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
-from derive.lecture.spellings import spellings
+from derive.lecture.spellings import spellings, written_back
 from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
@@ -168,7 +168,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
         return names
 
     def tex(self, obj) -> str:
-        return sp.latex(obj, symbol_names={**self.names, **self.spelled})
+        return written_back(sp.latex(obj, symbol_names={**self.names, **self.spelled}), self.spelled)
 
     # -- the walk
     def run(self) -> list[Claim]:

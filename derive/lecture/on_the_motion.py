@@ -18,7 +18,8 @@ Either only makes a claim hold; it never flags one. And a third, which judges:
    (kept in ``ctx.angles_stated``); a later relation of the angles alone, with no rates, which is
    no identity, is judged with those angles put in (``\\tan\\alpha = \\frac{I_3}{I_1}\\tan\\theta``
    holds, a step of a chain that breaks it is a slip), the why naming the line it stands on. May import: :mod:`derive.lecture.latex`,
-:mod:`derive.lecture.zero_test` (its exact screen), :mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.written_rates`, :mod:`derive.lecture.zero_test` (its exact screen),
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -28,12 +29,12 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.written_rates import opens_with_rate
 from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
 
-_RATE_FIRST = re.compile(r"\s*&?\s*\\dot\s*\{?\s*\\?[A-Za-z]+[^=]*=")
 _INVERSE = {sp.tan: sp.atan, sp.sin: sp.asin, sp.cos: sp.acos, sp.cot: sp.acot}
 _TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
@@ -53,17 +54,19 @@ class OnTheMotion:
     ``self.d``, ``self._resolve``, ``self._unify``, ``self._compare`` and ``self.tex``."""
 
     def _note_motion(self, line, piece):
-        """``\\dot\\phi = M_z/I_1``, a rate given by constants and the angles: the rate of the
-        motion the text studies, kept as written (read with the names in force where it is used)."""
+        """``\\dot\\phi = M_z/I_1`` (or ``\\frac{d\\phi}{dt} = …``), a rate given by constants and the
+        angles: the rate of the motion the text studies, kept as written (read with the names in
+        force where it is used)."""
         head = _TRIG_FIRST.sub("", piece)
         angle_first = any(re.match(r"\\?" + re.escape(a.partition("_")[0]) + r"(?![A-Za-z])", head)
                           for a in self.notes.angles)
+        rate_first = opens_with_rate(piece)
         try:
-            parsed = lx.parse(piece, self.vocab) if _RATE_FIRST.match(piece) or angle_first else None
+            parsed = lx.parse(piece, self.vocab) if rate_first or angle_first else None
         except (lx.NotRead, lx.Words):
             return
         members = [m.value for m in parsed.members] if parsed is not None else []
-        if not _RATE_FIRST.match(piece):
+        if not rate_first:
             self._note_angle(line, members, parsed)
             return
         if len(members) < 2 or members[0] not in RATES or set(parsed.relations) - {"="}:

@@ -1,5 +1,6 @@
 """A function of time the text writes, ``\\phi(t) = …``, and its rate written after it,
-``\\dot{\\phi}(t) = …``: the rate is checked as the time derivative of the text's own function.
+``\\dot{\\phi}(t) = …`` (or ``\\frac{d\\phi}{dt}(t) = …``): the rate is checked as the time
+derivative of the text's own function.
 
 A text that solves for an angle often gives the angle and its rate one after the other (the fast
 top's ``\\phi(t) = \\Omega_p t - \\frac{\\Omega_p}{\\omega_n}\\sin(\\omega_n t)`` and
@@ -19,7 +20,10 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 
-_WRITTEN = re.compile(r"^\s*(?P<dot>\\dot\s*\{\s*)?(?P<name>\\[A-Za-z]+|[A-Za-z])(?(dot)\s*\})\s*"
+_D = r"(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s*d|d)\s*"
+# f(t), its rate \dot{f}(t) or \frac{d f}{dt}(t) (as the formula reader reads d/dt: `derive.lecture.written_rates`)
+_WRITTEN = re.compile(r"^\s*(?:(?P<dot>\\dot\s*\{\s*)|(?P<frac>\\[dt]?frac\s*\{\s*" + _D + r"))?"
+                      r"(?P<name>\\[A-Za-z]+|[A-Za-z])(?(dot)\s*\})(?(frac)\s*\}\s*\{\s*" + _D + r"t\s*\})\s*"
                       r"(?:\\left\s*)?\(\s*t\s*(?:\\right\s*)?\)\s*=(?P<rhs>[^=<>]+)$")
 
 
@@ -42,7 +46,7 @@ class OwnRates:
         if len(parsed.members) != 1 or not isinstance(parsed.members[0].value, sp.Expr):
             return []
         value, name = parsed.members[0].value, m.group("name")
-        if not m.group("dot"):
+        if not (m.group("dot") or m.group("frac")):
             if lx.t in value.free_symbols:
                 self.functions[name] = (line, value)
             return []

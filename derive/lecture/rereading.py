@@ -54,6 +54,14 @@ def _latex_edits(piece: str):
             seen.add(edited)
             yield edited, what
 
+def _atoms(latex: str) -> set:
+    """The symbols a formula writes (decorations included, spelling aside)."""
+    try:
+        return {t.value.with_(text="") for t in lx.scan(latex) if t.kind == "atom"}
+    except lx.NotRead:
+        return set()
+
+
 _MATRIX = re.compile(r"\\begin\{([pbBvV]?matrix|array)\}(\{[^{}]*\})?(.*?)\\end\{\1\}", re.S)
 
 
@@ -235,7 +243,7 @@ class Rereading:
                 second, _ = self._sandbox(saved, line, edited, False, pieces, judging_only=True)
                 if second and all(c.verdict == "holds" for c in second):
                     return edited.strip()
-        except NameError:         # an edited reading SymPy cannot evaluate: no edit found by it
+        except (NameError, NotImplementedError):   # an edited reading with no value: no edit found by it
             pass
         return None
 
@@ -254,15 +262,34 @@ class Rereading:
         entry = "(entry" in found         # a matrix's entry: its entries' signs first
         ordered = sorted(_latex_edits(piece), key=lambda e: e[1] not in found and not (
             entry and e[1].startswith("the sign of the entry")))              # the kind found first
+        written = _atoms(" ".join(pieces) if pieces else piece)
         for n, (edited, what) in enumerate(ordered):
             if n >= 60:
                 return
+            if self._unmet(_atoms(edited) - written):
+                continue
             second, _ = self._sandbox(saved, line, edited, False, pieces, judging_only=True)
             if second and all(c.verdict == "holds" for c in second):
                 for c in claims:
                     if c.verdict == "typo":
                         c.correction = edited.strip()
                 return
+
+    def _unmet(self, atoms) -> bool:
+        """Whether an edit writes a symbol neither the derivation nor the text has (I₁₃ for I₃₃): the
+        reading would drop the member it stands in, not judge it, so the edit corrects nothing."""
+        met = set(self.vocab.generic.values())
+        opened, self.vocab.open = self.vocab.open, False
+        try:
+            for atom in atoms - met:
+                try:
+                    if self.vocab.resolve(atom) is None:
+                        return True
+                except lx.NotRead:
+                    return True
+        finally:
+            self.vocab.open = opened
+        return False
 
     def _symmetry_keys(self):
         return [k for k in (I1, I2) if k in self.ctx.subs and {k, self.ctx.subs[k]} == {I1, I2}]

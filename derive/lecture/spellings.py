@@ -3,7 +3,8 @@ a why) is in the text's notation: a z-x-z text's ``\\Omega_1`` for the body angu
 first component, not the lecture's ``\\tilde{\\omega}_1``.
 
 Takes a display's LaTeX and the text's vocabulary; gives derivation symbol → the atom as the
-text wrote it. May import: :mod:`derive.lecture.vocabulary`, SymPy.
+text wrote it (a rate written d/dt, ``\\frac{d\\omega_1}{dt}``, as written). May import:
+:mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.written_rates`, SymPy.
 """
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import re
 import sympy as sp
 
 from derive.lecture import vocabulary as vc
+from derive.lecture.written_rates import symbol_rate, written_rate
 
 
 def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
@@ -34,7 +36,29 @@ def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
             out.setdefault(value, tok.value.text)
         if tok.value.dots:          # ω̇ written: ω is spelled the same way without the dots
             _undotted(tok.value, vocab, symbols, out)
+    for k in range(len(toks)):      # a rate written d/dt (dω/dt, d²ω/dt²): the rate as written
+        rate = written_rate(toks, k)
+        if rate is not None and rate[0] is not None:
+            try:
+                value = symbol_rate(vocab.resolve, toks[rate[0]], rate[1], vocab)
+            except vc.NotRead:
+                continue
+            if isinstance(value, sp.Symbol) and value in symbols:
+                out.setdefault(value, latex[toks[k].pos:_end(toks[rate[2] - 1])])
     return out
+
+
+def _end(tok) -> int:
+    """Where a token ends in its formula."""
+    return tok.pos + len(tok.value.text if tok.kind == "atom" else str(tok.value))
+
+
+def written_back(latex: str, spelled: dict) -> str:
+    """LaTeX the reader writes back, with a rate it spells as the text's fraction (``\\frac{d
+    \\omega_1}{dt}``) bracketed where a power follows it: ``\\left(\\frac{d \\omega_1}{dt}\\right)^{2}``."""
+    for text in {v for v in spelled.values() if v.startswith(("\\frac", "\\dfrac", "\\tfrac")) or "/" in v}:
+        latex = latex.replace(text + "^", "\\left(" + text + "\\right)^")
+    return latex
 
 
 _DOTTED = re.compile(r"\\d?dot\s*(?:\{(?P<braced>[^{}]*)\}|(?P<bare>\\[A-Za-z]+|[A-Za-z]))")

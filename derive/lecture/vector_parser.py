@@ -102,6 +102,8 @@ def read(toks, source, vocab, model, name: str) -> Reading:
 class VectorParser(_Parser):
     """`derive.lecture.latex_parser._Parser` with vector values (see the module docstring)."""
 
+    components_in_rates = False     # d𝛚₁/dt is read as 𝛚₁ is here, as \dot{\boldsymbol\omega}_1 would be
+
     def __init__(self, toks, vocab, source, model):
         super().__init__(toks, vocab, source)
         self.model = model
