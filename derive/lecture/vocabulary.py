@@ -7,6 +7,7 @@ May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, SymPy.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
@@ -276,7 +277,14 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
 
 
 def scan(s: str) -> list[Tok]:
-    """The tokens of one formula (see the module docstring)."""
+    """The tokens of one formula (see the module docstring), as a list of the caller's own."""
+    return list(_scanned(s))
+
+
+@functools.lru_cache(maxsize=4096)
+def _scanned(s: str) -> tuple[Tok, ...]:
+    """`scan`, memoised (its tokens and atoms are frozen): the checker's readers, and each second
+    reading of a statement, scan the same formula again. A formula it cannot read raises each time."""
     toks: list[Tok] = []
     i, n = 0, len(s)
     while i < n:
@@ -354,7 +362,7 @@ def scan(s: str) -> list[Tok]:
             i = j
             continue
         raise NotRead(f"cannot read {ch!r}", i + 1)
-    return toks
+    return tuple(toks)
 
 
 # --- the vocabulary ----------------------------------------------------------------------------
