@@ -166,7 +166,17 @@ class Atom:
     text's own symbol, never x."""
 
     def with_(self, **kw) -> "Atom":
-        return Atom(**{**self.__dict__, **kw})
+        """The atom with the fields ``kw`` changed (the frozen dataclass's own ``__init__`` sets
+        each of its ten fields through ``object.__setattr__``; its fields are plain values)."""
+        if not kw.keys() <= _ATOM_FIELDS:
+            raise TypeError(f"Atom has no field {sorted(kw.keys() - _ATOM_FIELDS)[0]}")
+        new = object.__new__(Atom)
+        new.__dict__.update(self.__dict__)
+        new.__dict__.update(kw)
+        return new
+
+
+_ATOM_FIELDS = frozenset(Atom.__dataclass_fields__)
 
 
 @dataclass(frozen=True)
