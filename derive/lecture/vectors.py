@@ -156,6 +156,21 @@ def holds(reading: Reading, k: int, seed: str, ref: int = 0) -> tuple[bool, str]
     return True, how
 
 
+def surely_differs(reading: Reading, k: int, ref: int = 0) -> bool:
+    """Whether member k is proved unequal to member ``ref`` for some value of the free indices: a
+    component of their difference non-zero at an exact point (`zero_test.surely_nonzero`), where
+    `holds` would find them unequal too. A screen for the candidates of a correction, whose
+    reasons are not given."""
+    for members in reading.members:
+        a, b = members[k].value, members[ref].value
+        if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a.shape == b.shape:
+            if any(zt.surely_nonzero(x - y) for x, y in zip(a, b)):
+                return True
+        elif not isinstance(a, sp.MatrixBase) and not isinstance(b, sp.MatrixBase) and zt.surely_nonzero(a - b):
+            return True
+    return False
+
+
 def member_edits(src: str):
     """Single edits of one member's LaTeX, as (edited, what): a sign, a factor ½ or 2, an index,
     the order of a cross product, a power."""
