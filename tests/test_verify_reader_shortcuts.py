@@ -8,6 +8,7 @@ import sympy as sp
 
 from derive.lecture import source
 from derive.lecture import vectors as vc
+from derive.lecture import zero_test as zt
 from derive.lecture.latex import Generic
 from derive.lecture.vocabulary import Atom, Vocabulary, scan
 
@@ -60,3 +61,10 @@ def test_a_candidate_the_screen_proves_unequal_is_one_the_zero_test_finds_unequa
     ok, _ = vc.holds(reading, 1, "screen", ref=0)
     assert ok is equal
     assert vc.surely_differs(reading, 1) is (not equal)
+
+
+def test_a_difference_with_a_root_or_an_absolute_value_is_left_to_the_zero_test():
+    # non-zero at the screen's point, but such a difference may vanish where the zero test samples
+    assert zt.surely_nonzero(sp.sqrt(x**2 + 1) - x)
+    for a, b in [(sp.Abs(x) + 1, x), (sp.sqrt(x**2 + 1), x), (sp.Function("f")(x), x)]:
+        assert not vc.surely_differs(_reading((a, b)), 1)
