@@ -201,7 +201,28 @@ def _context():
 
 @functools.lru_cache(maxsize=1)
 def _ctx():
-    return _context()
+    db = _context()
+    db.test_for_specials = _specials_test(db)
+    return db
+
+
+def _specials_test(db):
+    """``db.test_for_specials`` with the specials looked up by their first character: what
+    pylatexenc's own gives (the longest match across the categories, the first found of that
+    length), without trying every specials of every category at each character of a formula."""
+    by_first: dict = {}
+    for cat in db.category_list:
+        for chars, spec in db.d[cat]["specials"].items():
+            if chars:
+                by_first.setdefault(chars[0], []).append((chars, spec))
+
+    def test_for_specials(s, pos, parsing_state=None):
+        best, length = None, 0
+        for chars, spec in by_first.get(s[pos:pos + 1], ()):
+            if len(chars) > length and s.startswith(chars, pos):
+                best, length = spec, len(chars)
+        return best
+    return test_for_specials
 
 
 def _arg(node, k: int, user: dict) -> str | None:

@@ -324,8 +324,8 @@ class TextNames:
 
     def _read_later_definitions(self):
         """A statement in names the text defines only further on (a product of matrices given one
-        by one below it) is read again at the end with those definitions; kept only when it
-        then holds — a reading the text had not yet given is no ground for a flag."""
+        by one below it) is read again at the end with those definitions, judging only (a flagged
+        reading is thrown away); kept when it then holds: a reading not yet given is no ground for a flag."""
         final = self.ctx.defs
         self._rereading_later = True
         try:
@@ -336,7 +336,7 @@ class TextNames:
                 ctx = self._snapshot()
                 ctx.__dict__.update(saved.__dict__)
                 ctx.defs = {**saved.defs, **later}
-                second, _ = self._sandbox(ctx, line, piece, False, ())
+                second, _ = self._sandbox(ctx, line, piece, False, (), judging_only=True)
                 if second and all(c.verdict == "holds" for c in second):
                     for c in second:
                         c.why += " (with names the text defines further on)"

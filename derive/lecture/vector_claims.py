@@ -266,7 +266,7 @@ class VectorStatements:
         left = reading.source[reading.members[0][0].start:reading.members[0][0].end].strip()
         reread = lambda text: vc.read(text, self.vocab, self.d, self.ctx.vec_model)  # noqa: E731
         for n, edited, what, _, again in vc.edited_readings(reading, k, reread, 80):
-            if vc.holds(again, k, f"{piece}/edit{n}")[0]:
+            if not vc.surely_differs(again, k) and vc.holds(again, k, f"{piece}/edit{n}")[0]:
                 return vc.restore(f"{left} {rel} {edited.strip()}"), what
         return None
 

@@ -156,6 +156,38 @@ def holds(reading: Reading, k: int, seed: str, ref: int = 0) -> tuple[bool, str]
     return True, how
 
 
+def surely_differs(reading: Reading, k: int, ref: int = 0) -> bool:
+    """Whether member k is proved unequal to member ``ref`` for some value of the free indices: a
+    component of their difference, built from symbols by sums, products, integer powers, sin, cos,
+    tan and exp, non-zero at an exact point (`zero_test.surely_nonzero`). Such a difference is zero
+    on no open set, so `holds` finds the members unequal too. A screen for the candidates of a
+    correction, whose reasons are not given."""
+    for members in reading.members:
+        a, b = members[k].value, members[ref].value
+        if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a.shape == b.shape:
+            diffs = [x - y for x, y in zip(a, b)]
+        elif not isinstance(a, sp.MatrixBase) and not isinstance(b, sp.MatrixBase):
+            diffs = [a - b]
+        else:
+            continue
+        if any(_analytic(d) and zt.surely_nonzero(d) for d in diffs):
+            return True
+    return False
+
+
+def _analytic(d) -> bool:
+    """Whether d is built from symbols and numbers by sums, products, integer powers, sin, cos, tan
+    and exp (no roots, |·| or functions of the text's)."""
+    for node in sp.preorder_traversal(d):
+        if node.is_Pow and not node.exp.is_Integer:
+            return False
+        if isinstance(node, sp.Function) and not isinstance(node, (sp.sin, sp.cos, sp.tan, sp.exp)):
+            return False
+        if not isinstance(node, (sp.Expr, sp.Function)) or node.is_Atom and not (node.is_Symbol or node.is_Number):
+            return False
+    return True
+
+
 def member_edits(src: str):
     """Single edits of one member's LaTeX, as (edited, what): a sign, a factor ½ or 2, an index,
     the order of a cross product, a power."""

@@ -7,6 +7,7 @@ May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, SymPy.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass, field
 
@@ -165,7 +166,17 @@ class Atom:
     text's own symbol, never x."""
 
     def with_(self, **kw) -> "Atom":
-        return Atom(**{**self.__dict__, **kw})
+        """The atom with the fields ``kw`` changed (the frozen dataclass's own ``__init__`` sets
+        each of its ten fields through ``object.__setattr__``; its fields are plain values)."""
+        if not kw.keys() <= _ATOM_FIELDS:
+            raise TypeError(f"Atom has no field {sorted(kw.keys() - _ATOM_FIELDS)[0]}")
+        new = object.__new__(Atom)
+        new.__dict__.update(self.__dict__)
+        new.__dict__.update(kw)
+        return new
+
+
+_ATOM_FIELDS = frozenset(Atom.__dataclass_fields__)
 
 
 @dataclass(frozen=True)
@@ -276,7 +287,14 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
 
 
 def scan(s: str) -> list[Tok]:
-    """The tokens of one formula (see the module docstring)."""
+    """The tokens of one formula (see the module docstring), as a list of the caller's own."""
+    return list(_scanned(s))
+
+
+@functools.lru_cache(maxsize=4096)
+def _scanned(s: str) -> tuple[Tok, ...]:
+    """`scan`, memoised (its tokens and atoms are frozen): the checker's readers, and each second
+    reading of a statement, scan the same formula again. A formula it cannot read raises each time."""
     toks: list[Tok] = []
     i, n = 0, len(s)
     while i < n:
@@ -354,7 +372,7 @@ def scan(s: str) -> list[Tok]:
             i = j
             continue
         raise NotRead(f"cannot read {ch!r}", i + 1)
-    return toks
+    return tuple(toks)
 
 
 # --- the vocabulary ----------------------------------------------------------------------------
@@ -392,6 +410,8 @@ class Vocabulary:
     readings: dict = field(default_factory=dict)
     """A second reading of an ambiguous name, tried when the first makes a formula fail:
     ``{"L": LMAG}`` reads a plain L as the angular momentum's magnitude."""
+    _atoms_met: dict = field(default_factory=dict, repr=False, compare=False)
+    """Atom → the symbol `_generic` found for it last (see `_symbol_of`)."""
 
     def angle_index(self, base: str) -> int | None:
         for names in (self.angles, self.aliases):
@@ -488,17 +508,30 @@ class Vocabulary:
     def _generic(self, a: Atom):
         """The text's own symbol for an atom: one per spelling of base, decorations and scripts."""
         key = a.with_(text="")
-        for sym, atom in self.generic.items():
-            if atom == key:
-                return sym
+        sym = self._symbol_of(key)
+        if sym is not None:
+            return sym
         name = ("d" * a.dots) + ("~" if a.tilde else "") + a.base + a.mark + (f"_{a.sub}" if a.sub else "") \
             + ("'" * a.primes) + (f"^{a.sup}" if a.sup else "")
-        undotted = next((s for s, atom in self.generic.items() if atom == key.with_(dots=0)), None) if a.dots else None
+        undotted = self._symbol_of(key.with_(dots=0)) if a.dots else None
         if undotted is not None and undotted.is_commutative is False:
             sym = Generic(name, commutative=False)      # Ẋ of a matrix: a matrix, kept in its place in a product
         else:
             sym = Generic(name, real=True)
-        self.generic[sym] = key
+        self.generic[sym], self._atoms_met[key] = key, sym
+        return sym
+
+    def _symbol_of(self, key: Atom):
+        """The first of `generic`'s symbols whose atom is ``key``, or None: from an index of the atoms
+        met where `generic` still gives that symbol this atom (it holds one symbol per atom: `_generic`
+        adds an atom only when it finds none, and the checker's one edit of it, a name becoming a
+        matrix, moves an atom to a new symbol), else by a walk through `generic`."""
+        sym = self._atoms_met.get(key)
+        if sym is not None and self.generic.get(sym) == key:
+            return sym
+        sym = next((s for s, atom in self.generic.items() if atom == key), None)
+        if sym is not None:
+            self._atoms_met[key] = sym
         return sym
 
     def undotted(self, sym):
