@@ -48,7 +48,7 @@ from derive.runtime.cache import (BUILD_PREFIX, CHECKSUM, MARKER, entry_lock, li
 DEFAULT_FLAGS: tuple[str, ...] = ("-std=c99", "-O3", "-fPIC", "-fno-math-errno")
 # What the generated code must survive: every warning an error, strict ISO C99.
 STRICT_FLAGS: tuple[str, ...] = ("-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic")
-# -O0: with the sanitizers, -O1 compiles the unrolled DOP853 stages ~7x slower.
+# -O0: with the sanitizers, -O1 compiles the unrolled DOP853 stages many times slower.
 SANITIZE_FLAGS: tuple[str, ...] = ("-std=c99", "-g", "-O0", "-fno-omit-frame-pointer",
                                    "-fsanitize=address,undefined",
                                    "-fno-sanitize-recover=undefined")
