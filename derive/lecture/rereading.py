@@ -139,7 +139,7 @@ class Rereading:
         # where the second reading holds, the correction would be thrown away
         self.judging_only = bool(readings)
         try:
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
         finally:
             self.judging_only = False
         first = self.claims[before:]
@@ -158,7 +158,7 @@ class Rereading:
         if readings:                # read as written after all: now with its correction
             del self.claims[before:]
             self.ctx = _copied(saved)
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
             first = self.claims[before:]
         if any(c.verdict == "typo" for c in first) and not dup:
             self._in_their_notation(saved, line, piece, pieces, first)
@@ -343,7 +343,7 @@ class Rereading:
         self.vocab.names_off = names_off
         self.judging_only = judging_only
         try:
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
         except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
                 KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
             pass
