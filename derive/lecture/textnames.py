@@ -550,11 +550,20 @@ class TextNames(UnreadMembers):
             return e.applyfunc(self._dt)         # a matrix of the text's: entry by entry
         out = time_derivative(e, accels=ACCELS)
         out += sum((sp.diff(e, w) * wd for w, wd in zip(lx.W, lx.WD)), sp.S.Zero)
+        out += sum((sp.diff(e, wd) * self._second_rate_symbol(i) for i, wd in enumerate(lx.WD) if e.has(wd)), sp.S.Zero)
         for s in _free(e):
             if isinstance(s, lx.Generic):
                 atom = self.vocab.generic[s]
                 out += sp.diff(e, s) * self.vocab._generic(atom.with_(dots=atom.dots + 1))
         return out + sp.diff(e, lx.t)
+
+    def _second_rate_symbol(self, i):
+        """ω̃̈ᵢ, the rate of ω̃̇ᵢ: the text's own symbol for it if it has written one, else
+        ``\\ddot{\\tilde\\omega}_i`` (a symbol of the text's, as the reader takes one written)."""
+        for s in list(self.vocab.generic):
+            if self._second_rate(s) == i:
+                return s
+        return self.vocab._generic(Atom(base="omega", dots=2, tilde=True, sub=str(i + 1)))
 
     def _dotted_definitions(self, v, syms=None) -> dict:
         """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined
