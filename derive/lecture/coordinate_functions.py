@@ -17,6 +17,7 @@ written                                       read as
 ``f'(\\theta)``, ``I'_{p}(\\theta)``          its derivative with respect to its argument
 ``y_C^2(\\theta)``                            (y_C(θ))²
 ``V(\\theta)``, never defined                  an unknown function of θ (any function: the statement must hold for all)
+``m R^2 (\\dot\\theta)^2``                      a product: a lone rate in brackets after a symbol no function of the text's
 ``\\frac{\\partial X}{\\partial \\theta}``, ``\\partial X/\\partial\\dot\\theta``   partial derivatives, q̇ independent of q
 ``\\frac{d}{dt} X``, ``\\frac{dX}{dt}``         d/dt: ∂X/∂q q̇ + ∂X/∂q̇ q̈
 ``X \\right|_{\\theta = \\theta_0}``            X at θ = θ₀
