@@ -80,3 +80,9 @@ def test_a_text_in_euler_angles_is_left_to_the_general_reader():
     head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Heavy top\n\n"
     claims = kept.check_text(head + f"$$\n{LAGRANGIAN}\n$$\n")
     assert not [c for c in claims if c.why.startswith("defines L (recorded")]
+
+
+def test_a_bracketed_rate_after_a_symbol_is_a_product_not_a_call():
+    lagrangian = r"L(\theta, \dot{\theta}) = \frac{1}{2} m R^2 \left(\dot\theta\right)^2 + mgR\cos\theta"
+    assert _last(lagrangian, r"m R^2\ddot\theta = -mgR\sin\theta") == "holds"
+    assert _last(lagrangian, r"m R^2\ddot\theta = mgR\sin\theta") == "fails"

@@ -78,3 +78,17 @@ def test_a_name_defined_value_first_is_used_by_the_solution_that_follows():
     assert [c.verdict for c in good[11]] == ["holds"]
     assert [c.verdict for c in bad[11]] in (["fails"], ["typo"])
     assert [c.verdict for c in good[5]] == ["holds"]
+
+
+ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# The angular velocity in the body frame\n\n"
+
+
+def _column(first_row):
+    rows = [first_row, r"\dot\phi\sin\theta\cos\psi - \dot\theta\sin\psi", r"\dot\phi\cos\theta + \dot\psi"]
+    return ZXZ + "$$\n\\boldsymbol\\omega = \\left[\\begin{array}{c} " + r" \\ ".join(rows) + \
+        " \\end{array}\\right]\n$$\n"
+
+
+def test_a_bracketed_factor_opening_an_array_row_is_kept_in_the_row():
+    assert [c.verdict for c in by_line(_column(r"(\dot\phi)\sin\theta\sin\psi + \dot\theta\cos\psi"))[7]] == ["holds"]
+    assert [c.verdict for c in by_line(_column(r"(\dot\phi)\sin\theta\cos\psi + \dot\theta\cos\psi"))[7]] == ["typo"]

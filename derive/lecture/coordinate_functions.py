@@ -17,6 +17,7 @@ written                                       read as
 ``f'(\\theta)``, ``I'_{p}(\\theta)``          its derivative with respect to its argument
 ``y_C^2(\\theta)``                            (y_C(θ))²
 ``V(\\theta)``, never defined                  an unknown function of θ (any function: the statement must hold for all)
+``m R^2 (\\dot\\theta)^2``                      a product: a lone rate in brackets after a symbol no function of the text's
 ``\\frac{\\partial X}{\\partial \\theta}``, ``\\partial X/\\partial\\dot\\theta``   partial derivatives, q̇ independent of q
 ``\\frac{d}{dt} X``, ``\\frac{dX}{dt}``         d/dt: ∂X/∂q q̇ + ∂X/∂q̇ q̈
 ``X \\right|_{\\theta = \\theta_0}``            X at θ = θ₀
@@ -397,12 +398,25 @@ class Reader:
                 self.k + 2 < len(self.t) and self.t[self.k + 2] == ("op", "("):
             self.k += 1
             power = sp.Integer(self.take("num")[1])      # y_C^2(θ): the power of the function's value
+        before = self.k
         args = self.arguments()
+        if args is not None and not self.called(a, args):
+            self.k, args = before, None                  # m R^2 (θ̇)^2: a product, R is no function
         if power is not None and args is None:
             self.k -= 2
         self.names.add(a.name)
         value = self.applied(a, args)
         return value ** power if power is not None and args is not None else value
+
+    def called(self, a: Atom, args) -> bool:
+        """Whether ``a(args)`` is a call: of a function the text defined, of an expression in q at a
+        point, of an unknown function (``V(\\theta)``, ``L(\\theta, \\dot\\theta) =``); a bracket
+        holding a lone rate after any other symbol is a factor (``m R^2 (\\dot\\theta)^2``)."""
+        d = self.d
+        if a.name in d.functions:
+            params, body = d.functions[a.name]
+            return bool(params) or body.has(d.q)
+        return len(args) > 1 or self.t[0] == ("atom", a) or not args[0].has(d.qd, d.qdd)
 
     def applied(self, a: Atom, args):
         d = self.d

@@ -550,17 +550,6 @@ def _matrix(self, env):
     env_name = tok.value
     if env_name not in ("pmatrix", "bmatrix", "matrix", "Bmatrix", "array"):
         self.fail(f"the environment {env_name!r} inside a formula", tok)
-    if env_name == "array" and self.at("op", "("):
-        depth = 0
-        while True:
-            if self.at("op", "("):
-                depth += 1
-            elif self.at("op", ")"):
-                depth -= 1
-                if depth == 0:
-                    self.i += 1
-                    break
-            self.i += 1
     return sp.Matrix(self.rows(env, tok))
 
 

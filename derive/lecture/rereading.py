@@ -139,7 +139,7 @@ class Rereading:
         # where the second reading holds, the correction would be thrown away
         self.judging_only = bool(readings)
         try:
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
         finally:
             self.judging_only = False
         first = self.claims[before:]
@@ -158,7 +158,7 @@ class Rereading:
         if readings:                # read as written after all: now with its correction
             del self.claims[before:]
             self.ctx = _copied(saved)
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
             first = self.claims[before:]
         if any(c.verdict == "typo" for c in first) and not dup:
             self._in_their_notation(saved, line, piece, pieces, first)
@@ -338,12 +338,13 @@ class Rereading:
         the context it leaves; the checker's own state is left as it was. ``judging_only`` where
         only whether it holds or is flagged counts (typo or fails alike): no correction is sought."""
         keep_claims, keep_ctx = len(self.claims), self.ctx
+        kept_state = self._trial_state()
         self.ctx = _copied(saved)
         self.vocab.readings.update(readings or {})
         self.vocab.names_off = names_off
         self.judging_only = judging_only
         try:
-            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            self._statement_read(line, piece, dup, pieces)
         except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
                 KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
             pass
@@ -355,12 +356,27 @@ class Rereading:
         out, ctx = self.claims[keep_claims:], self.ctx
         del self.claims[keep_claims:]
         self.ctx = keep_ctx
+        # what the trial left (solutions waiting, statements to read again) goes with its context
+        self._trial_left = (ctx, self._trial_state())
+        self._trial_restored(kept_state)
         return out, ctx
 
+    def _trial_state(self):
+        return list(self.pending), list(self.deferred), list(self.flushed), getattr(self, "settings_only", None)
+
+    def _trial_restored(self, state):
+        self.pending, self.deferred, self.flushed = (list(x) for x in state[:3])
+        if state[3] is not None:
+            self.settings_only = state[3]
+
     def _keep(self, before, claims, ctx):
+        """Keep a trial reading: its claims, its context and what it left to read later."""
         del self.claims[before:]
         self.claims.extend(claims)
         self.ctx = ctx
+        left = getattr(self, "_trial_left", None)
+        if left is not None and left[0] is ctx:
+            self._trial_restored(left[1])
 
     unconfirmed: list | tuple = ()
     """(claim, verdict, correction, why, learned, bindings, the one edit that makes it hold) of the

@@ -36,6 +36,7 @@ from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
+from derive.lecture.unread_members import UnreadMembers
 from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
@@ -87,7 +88,7 @@ def _is_value(v, defined) -> bool:
                for s in _free(v))
 
 
-class TextNames:
+class TextNames(UnreadMembers):
     """Mixin of the checker: see the module docstring. Uses ``self.ctx`` (defs, subs),
     ``self.vocab``, ``self.d`` (the derivation) and ``self._add``."""
 
@@ -116,35 +117,6 @@ class TextNames:
     def _members_kept(self, parsed, keep):
         """The statement with only the members ``keep`` (and the relations between them)."""
         return type(parsed)([parsed.members[k] for k in keep], [parsed.relations[k - 1] for k in keep[1:]])
-
-    def _loose_ends_dropped(self, parsed):
-        """A chain ``a = b = G(u)`` whose end is a lone symbol the text has not defined yet (it
-        names the expression, as G(u) is defined on the next line), or with a member written in
-        names the text has not defined: checked without it."""
-        members = [m.value for m in parsed.members]
-        if len(members) < 3 or not set(parsed.relations) <= {"=", "≡"}:
-            return parsed
-        known = self._constants()
-
-        def unread(m):      # a member in names the text has not defined (or cannot combine yet)
-            try:
-                return any(self._new_name(x) and x not in known for x in _free(self._resolve(m)))
-            except (TypeError, ValueError, AttributeError):
-                return True
-
-        loose = [k for k, m in enumerate(members) if self._new_name(m) or k and unread(m)]
-        if not loose and unread(members[0]) and not self._new_name(members[0]) and not unread(members[1]):
-            loose = [0]     # tan β = tan(α − θ) = …, β named only in words: the steps after it are claims
-        def matrices_unread(m):     # in bold names the text has not defined yet (its matrices, given further on)
-            names = {x for x in _free(self._resolve(m)) if self._new_name(x) and x not in known}
-            return bool(names) and all(getattr(self.vocab.generic.get(x), "bold", False) for x in names)
-
-        if loose and loose[0] == 0 and len(loose) > 1 and self._new_name(members[0]) and \
-                len(members) - len(loose) >= 1 and all(matrices_unread(members[k]) for k in loose[1:]):
-            loose = loose[1:]   # X = (matrices given further on) = (names it has): X is the member it can read
-        if not loose or len(members) - len(loose) < 2 or 0 in loose and loose != [0]:
-            return parsed
-        return self._members_kept(parsed, [k for k in range(len(members)) if k not in loose])
 
     def _text_statement(self, line, piece, parsed) -> bool:
         """Handle a statement about the text's own names or a setting; True when it is done."""
@@ -578,11 +550,20 @@ class TextNames:
             return e.applyfunc(self._dt)         # a matrix of the text's: entry by entry
         out = time_derivative(e, accels=ACCELS)
         out += sum((sp.diff(e, w) * wd for w, wd in zip(lx.W, lx.WD)), sp.S.Zero)
+        out += sum((sp.diff(e, wd) * self._second_rate_symbol(i) for i, wd in enumerate(lx.WD) if e.has(wd)), sp.S.Zero)
         for s in _free(e):
             if isinstance(s, lx.Generic):
                 atom = self.vocab.generic[s]
                 out += sp.diff(e, s) * self.vocab._generic(atom.with_(dots=atom.dots + 1))
         return out + sp.diff(e, lx.t)
+
+    def _second_rate_symbol(self, i):
+        """ω̃̈ᵢ, the rate of ω̃̇ᵢ: the text's own symbol for it if it has written one, else
+        ``\\ddot{\\tilde\\omega}_i`` (a symbol of the text's, as the reader takes one written)."""
+        for s in list(self.vocab.generic):
+            if self._second_rate(s) == i:
+                return s
+        return self.vocab._generic(Atom(base="omega", dots=2, tilde=True, sub=str(i + 1)))
 
     def _dotted_definitions(self, v, syms=None) -> dict:
         """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined

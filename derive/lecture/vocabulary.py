@@ -351,8 +351,8 @@ def _scanned(s: str) -> tuple[Tok, ...]:
                 env, j = group(s, m.end())
                 toks.append(Tok(name, env.strip(), i))
                 if name == "begin" and env.strip() in ("array", "alignat", "alignat*"):
-                    spec = re.match(r"\s*\{[^{}]*\}", s[j:])      # its column layout {ccc} or {2}
-                    j += spec.end() if spec else 0
+                    spec = re.compile(r"\s*(?=\{)").match(s, j)
+                    j = group(s, spec.end())[1] if spec else j      # its column layout {ccc}, {2}, {@{}c@{}}
                 i = j
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",

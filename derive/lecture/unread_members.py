@@ -1,0 +1,96 @@
+"""A chain's members the reader cannot read: checked without them, never as if they were not there.
+
+Takes: a chain ``a = b = c`` parsed with an open vocabulary, some of whose members are written in
+names the text has not defined (or cannot combine yet). Gives: the mixin `UnreadMembers` of
+`derive.lecture.notes_check.Checker`: `_loose_ends_dropped`, the chain without those members, and
+`_statement_read`, a statement read with its verdicts marked for the members left out.
+May import: :mod:`derive.lecture.comparing`, SymPy.
+
+A chain states that each member equals the next. With a member left out, the links through it are
+not checked: the members on either side of it are not a link the text writes. Each verdict of such
+a chain names the members not read. Where no two members left are neighbours in the chain, no link
+of it was read: agreement of the members around a gap does not check the chain (``I_1\\dot\\omega_1
+= \\zeta_1 = (I_2 - I_3)\\omega_2\\omega_3`` with ζ₁ undefined), and ``holds`` becomes ``unchecked``
+naming them; disagreement still shows the chain wrong (it implies every member equals the others).
+"""
+from __future__ import annotations
+
+import re
+
+from derive.lecture.comparing import free
+
+_RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\left\s*)?$")
+
+
+class UnreadMembers:
+    """Mixin of the checker. Uses ``self.claims``, ``self._statement``, ``self._constants``,
+    ``self._new_name``, ``self._resolve``, ``self._members_kept``, ``self.vocab``, ``self._text``."""
+
+    unread: tuple | None = None
+    """(the members kept, the written form of each member left out) of the statement being read."""
+
+    def _loose_ends_dropped(self, parsed):
+        """A chain ``a = b = G(u)`` whose end is a lone symbol the text has not defined yet (it
+        names the expression, as G(u) is defined on the next line), or with a member written in
+        names the text has not defined: checked without it (the members left out recorded)."""
+        members = [m.value for m in parsed.members]
+        if len(members) < 3 or not set(parsed.relations) <= {"=", "≡"}:
+            return parsed
+        known = self._constants()
+
+        def unread(m):      # a member in names the text has not defined (or cannot combine yet)
+            try:
+                return any(self._new_name(x) and x not in known for x in free(self._resolve(m)))
+            except (TypeError, ValueError, AttributeError):
+                return True
+
+        loose = [k for k, m in enumerate(members) if self._new_name(m) or k and unread(m)]
+        if not loose and unread(members[0]) and not self._new_name(members[0]) and not unread(members[1]):
+            loose = [0]     # tan β = tan(α − θ) = …, β named only in words: the steps after it are claims
+
+        def matrices_unread(m):     # in bold names the text has not defined yet (its matrices, given further on)
+            names = {x for x in free(self._resolve(m)) if self._new_name(x) and x not in known}
+            return bool(names) and all(getattr(self.vocab.generic.get(x), "bold", False) for x in names)
+
+        if loose and loose[0] == 0 and len(loose) > 1 and self._new_name(members[0]) and \
+                len(members) - len(loose) >= 1 and all(matrices_unread(members[k]) for k in loose[1:]):
+            loose = loose[1:]   # X = (matrices given further on) = (names it has): X is the member it can read
+        if not loose or len(members) - len(loose) < 2 or 0 in loose and loose != [0]:
+            return parsed
+        kept = [k for k in range(len(members)) if k not in loose]
+        self.unread = (kept, [self._written_member(parsed, k) for k in loose])
+        return self._members_kept(parsed, kept)
+
+    def _written_member(self, parsed, k) -> str:
+        """The member ``k`` of a chain as the text writes it (from its position in the statement)."""
+        text = getattr(self, "_text", "")
+        start = parsed.members[k].pos
+        end = parsed.members[k + 1].pos if k + 1 < len(parsed.members) else len(text)
+        written = _RELATION_END.sub("", text[start:end]).strip() if isinstance(start, int) and \
+            isinstance(end, int) and 0 <= start < end <= len(text) else ""
+        short = written and "\n" not in written and len(written) <= 80 and written.count("{") == written.count("}")
+        return written if short else f"member {k + 1} of the chain"
+
+    def _statement_read(self, line, piece, dup, pieces):
+        """`_statement`, its verdicts then marked for the chain's members it could not read."""
+        outer, self.unread = self.unread, None
+        start = len(self.claims)
+        try:
+            self._statement(line, piece, duplicate=dup, pieces=pieces)
+            if self.unread is not None:
+                self._unread_marked(start, *self.unread, line, piece)
+        finally:
+            self.unread = outer
+
+    def _unread_marked(self, start, kept, written, line, piece):
+        names = ", ".join(written)
+        linked = any(b - a == 1 for a, b in zip(kept, kept[1:]))
+        for c in self.claims[start:]:
+            if c.verdict == "holds" and not linked:
+                c.verdict, c.correction = "unchecked", None
+                c.why = (f"{names} not read, and every link of the chain passes through it: "
+                         f"the members around it agree ({c.why}), which does not check the links")
+                if not getattr(self, "_rereading_later", False):     # its names may be defined further on
+                    self.deferred.append((c, line, piece, self._snapshot()))
+            elif c.verdict in ("holds", "typo", "fails"):
+                c.why += f" (checked without {names}, not read: its links are unchecked)"
