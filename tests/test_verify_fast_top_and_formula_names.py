@@ -44,6 +44,7 @@ def test_a_tied_unit_written_as_a_display_fraction_or_before_a_tag_is_dropped():
     assert plain_numbers(r"\omega = \frac{a}{b}~\tfrac{rad}{s}").strip() == r"\omega = \frac{a}{b}"
     assert plain_numbers(r"d = 2r = 0.2~m \tag{13.89}") == r"d = 2r = 0.2 \tag{13.89}"
     assert plain_numbers(r"x = 2~m \label{eq:x}") == r"x = 2 \label{eq:x}"
+    assert plain_numbers(r"d = 0.2~m \, .") == r"d = 0.2 ."
 
 
 def test_the_weight_names_the_mass_and_the_equal_pair_names_the_axial_moment():

@@ -2,6 +2,8 @@
 with −I_xy off its diagonal names the products of inertia +∫xy dm, and a chain of principal moments
 with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃; Newton's law and Euler's equation written with frame
 derivatives (d𝐕/dt_i, I_b d𝛚_b/dt_b) and a vector the prose calls the angular momentum (𝐇 = I𝛚)."""
+import re
+
 import pytest
 
 import kept_readings as kept
@@ -32,6 +34,13 @@ _HEAD = "A body of point masses turns with $\\boldsymbol{\\omega}$; its inertia 
 def test_an_inertia_matrix_with_minus_products_names_the_products_of_inertia():
     text = _HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n"
     assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_an_inertia_matrix_with_minus_products_indexed_upright_names_the_products_of_inertia():
+    for upright in ("I_\\text{{{0}}}", "I_{{\\mathrm{{{0}}}}}"):
+        tensor = re.sub(r"I_\{\{(\w\w)\}\}", lambda m: upright.format(m[1]).replace("{", "{{").replace("}", "}}"), _TENSOR)
+        assert tensor != _TENSOR
+        assert [v for _, v in verdicts(_HEAD + "$$\nI = " + tensor.format(s="-") + "\n$$\n")] == ["holds"]
 
 
 def test_an_inertia_matrix_with_plus_entries_keeps_the_tensors_own_entries():
@@ -263,3 +272,10 @@ def test_the_position_rate_with_an_upright_d_reads_as_with_an_italic_one():
     assert upright != _POSITION
     assert verdicts(upright.replace("MATRIX", "R_{b \\rightarrow i}"))[-1] == (15, "holds")
     assert verdicts(upright.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")
+
+
+def test_the_position_rate_with_spacing_between_the_matrix_and_the_velocity_reads_the_same():
+    spaced = _POSITION.replace("MATRIX \\vec{V_b}", "MATRIX \\, \\vec{V_b}")
+    assert spaced != _POSITION
+    assert verdicts(spaced.replace("MATRIX", "R_{b \\rightarrow \\, i}"))[-1] == (15, "holds")
+    assert verdicts(spaced.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")

@@ -20,7 +20,7 @@ _UNITS = re.compile(r"(?<=\d)(?:\s|\\,|\\;|~)*" + _UNIT_TOKEN + r"(?:\s*(?:\\cdo
 """A unit, or a product of units, right after a number: ``2.50\\text{ kg}``, ``0.04\\text{ kg}\\cdot\\text{m}^2``."""
 _PLAIN_UNIT = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
 _TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s*\{\s*" + _PLAIN_UNIT + r"\s*\}\s*\{\s*" + _PLAIN_UNIT + r"\s*\})"
-                        r"\s*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text|\\tag|\\label|\\notag|\\nonumber)")
+                        r"(?:\s|\\[,;!])*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text|\\tag|\\label|\\notag|\\nonumber)")
 """A unit in plain letters after a tie that follows a number or a closing brace, closing a member
 (a tag or a label after it closes it too): ``0.1~kg``, ``}~\\frac{rad}{s}`` (or ``\\dfrac``), ``}~s``
 (``a~s`` stays a product)."""
