@@ -38,6 +38,15 @@ def test_a_unit_typed_after_a_tie_is_dropped_and_a_tied_product_of_symbols_stays
     assert plain_numbers("x = 2~m_1") == "x = 2~m_1"        # an indexed symbol is no unit
 
 
+def test_a_tied_unit_written_as_a_display_fraction_or_before_a_tag_is_dropped():
+    assert plain_numbers(r"\dot{\phi} = \dfrac{mgd}{I_z\dot{\psi}}~\dfrac{rad}{s}").strip() == \
+        r"\dot{\phi} = \dfrac{mgd}{I_z\dot{\psi}}"
+    assert plain_numbers(r"\omega = \frac{a}{b}~\tfrac{rad}{s}").strip() == r"\omega = \frac{a}{b}"
+    assert plain_numbers(r"d = 2r = 0.2~m \tag{13.89}") == r"d = 2r = 0.2 \tag{13.89}"
+    assert plain_numbers(r"x = 2~m \label{eq:x}") == r"x = 2 \label{eq:x}"
+    assert plain_numbers(r"d = 0.2~m \, .") == r"d = 0.2 ."
+
+
 def test_the_weight_names_the_mass_and_the_equal_pair_names_the_axial_moment():
     names = nm.Names()
     formula_names.learn(names, "$V = mgd\\cos\\theta$ and $I_x=I_y$, with $T = \\frac12 I_z \\omega_3^2$")

@@ -40,7 +40,13 @@ def _sub(pattern: str, repl):
 # A space between two factors: after a closed token, before a command or a letter (never next to
 # an operator, a relation, a comma or inside a command's name).
 _RELATION_BEFORE = "".join(rf"(?<!\\{r})" for r in ("equiv", "approx", "ge", "le", "times", "cdot", "quad"))
-_BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE
+# Nor after a command that takes what follows as its argument (``\\vec v``, ``\\mathrm d``, ``\\sin^2
+# \\theta``, ``\\int (…)``) or a lone differential d: a factor there would change what the formula says.
+_ARGUMENT_BEFORE = "".join(rf"(?<!\\{c})" for c in (
+    "vec", "hat", "dot", "ddot", "tilde", "bar", "mathrm", "mathbf", "boldsymbol", "bm", "text", "sqrt", "operatorname",
+    "frac", "sin", "cos", "tan", "cot", "sec", "csc", "int", "sum", "partial", "sin^2", "cos^2", "sin^{2}", "cos^{2}"))
+_ARGUMENT_BEFORE = _ARGUMENT_BEFORE.replace("^", "\\^").replace("{", "\\{").replace("}", "\\}") + r"(?<![^A-Za-z\\]d)"
+_BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE + _ARGUMENT_BEFORE
                     + r" (?=\\(?!right|cdot|times|quad|equiv|approx|ge\b|le\b)[A-Za-z]|[A-Za-z(])")
 _FUNCTION_ARG = r"(\\(?:sin|cos)(?:\^\{?2\}?)?)\s*(\\[A-Za-z]+)(?![A-Za-z])"
 _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"

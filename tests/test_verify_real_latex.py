@@ -228,3 +228,10 @@ def test_a_dot_product_of_the_bodys_vectors_with_scalar_factors_is_read():
     holds = "# Notes\n\n$$\\boldsymbol{\\omega} \\cdot \\frac{\\mathbf{L}}{L} = \\frac{2T}{L}$$\n"
     assert dict(verdicts(holds))[3] == "holds"
     assert dict(verdicts(holds.replace("\\frac{2T}{L}", "\\frac{T}{L}")))[3] in ("typo", "fails")
+
+
+def test_spacing_inside_a_script_sets_no_part_of_its_label_apart():
+    assert source.normalize(r"\phi_{\beta \, \alpha} + \omega_{b\;i}^{2\!}") == r"\phi_{\beta \alpha} + \omega_{b i}^{2 }"
+    head = "---\nconvention: z-x-z\n---\n# Rates\n\nThe body turns.\n\n$$\n"
+    omega = r"\dot\phi \sin\theta \sin\psi + \dot\theta \cos\psi" + "\n$$\n"
+    assert verdicts(head + r"\omega_{1 \, } = " + omega) == verdicts(head + r"\omega_{1} = " + omega) == [(8, "holds")]

@@ -2,6 +2,8 @@
 with −I_xy off its diagonal names the products of inertia +∫xy dm, and a chain of principal moments
 with a numeric factor (I₁ = I₂ = 2I₃) is an assumption like I₁ = I₂ = I₃; Newton's law and Euler's equation written with frame
 derivatives (d𝐕/dt_i, I_b d𝛚_b/dt_b) and a vector the prose calls the angular momentum (𝐇 = I𝛚)."""
+import re
+
 import pytest
 
 import kept_readings as kept
@@ -32,6 +34,13 @@ _HEAD = "A body of point masses turns with $\\boldsymbol{\\omega}$; its inertia 
 def test_an_inertia_matrix_with_minus_products_names_the_products_of_inertia():
     text = _HEAD + "$$\nI = " + _TENSOR.format(s="-") + "\n$$\n"
     assert [v for _, v in verdicts(text)] == ["holds"]
+
+
+def test_an_inertia_matrix_with_minus_products_indexed_upright_names_the_products_of_inertia():
+    for upright in ("I_\\text{{{0}}}", "I_{{\\mathrm{{{0}}}}}"):
+        tensor = re.sub(r"I_\{\{(\w\w)\}\}", lambda m: upright.format(m[1]).replace("{", "{{").replace("}", "}}"), _TENSOR)
+        assert tensor != _TENSOR
+        assert [v for _, v in verdicts(_HEAD + "$$\nI = " + tensor.format(s="-") + "\n$$\n")] == ["holds"]
 
 
 def test_an_inertia_matrix_with_plus_entries_keeps_the_tensors_own_entries():
@@ -99,6 +108,15 @@ def test_the_transport_theorem_for_a_vector_of_the_texts_holds_in_its_frame_nota
     assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "+"))) == [(9, "holds")]
 
 
+def test_frame_derivatives_with_an_upright_d_read_as_with_an_italic_one():
+    upright = _TRANSPORT.replace("{d \\vec{v}}{dt}", "{\\mathrm{d}\\, \\vec{v}}{\\mathrm{d}t}")
+    assert upright != _TRANSPORT
+    assert verdicts(_FRAMES.replace("BODY", upright.replace("SIGN", "+"))) == [(9, "holds")]
+    assert verdicts(_FRAMES.replace("BODY", upright.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+    law = "\\vec{F} = m \\frac{\\mathrm{d} \\vec{V}}{\\mathrm{d}t_i}"
+    assert verdicts(_FRAMES.replace("BODY", law)) == [(9, "holds")]
+
+
 def test_the_transport_theorem_with_a_wrong_sign_is_flagged():
     assert verdicts(_FRAMES.replace("BODY", _TRANSPORT.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
 
@@ -141,6 +159,14 @@ def test_a_wrong_component_of_the_vertical_is_never_called_correct():
 
 def test_poissons_equation_with_the_relative_derivative_holds_and_a_wrong_sign_is_flagged():
     poisson = ("\\frac{\\tilde{\\mathrm{d}} \\mathbf{n}}{\\mathrm{d} t} SIGN \\boldsymbol{\\omega}\\times \\mathbf{n}"
+               "=\\mathbf{0}")
+    text = _POISSON.split("Then")[0] + "Then\n\n$$\nBODY\n$$\n"
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "+"))) == [(9, "holds")]
+    assert verdicts(text.replace("BODY", poisson.replace("SIGN", "-")))[-1][1] in ("typo", "fails")
+
+
+def test_poissons_equation_with_a_thin_space_after_its_differentials_holds_and_a_wrong_sign_is_flagged():
+    poisson = ("\\frac{\\tilde{\\mathrm{d}} \\, \\mathbf{n}}{\\mathrm{d} \\, t} SIGN \\boldsymbol{\\omega}\\times \\mathbf{n}"
                "=\\mathbf{0}")
     text = _POISSON.split("Then")[0] + "Then\n\n$$\nBODY\n$$\n"
     assert verdicts(text.replace("BODY", poisson.replace("SIGN", "+"))) == [(9, "holds")]
@@ -239,3 +265,17 @@ def test_the_position_rate_is_the_body_velocity_turned_into_inertial_components(
 
 def test_the_position_rate_with_the_velocity_turned_the_wrong_way_fails():
     assert verdicts(_POSITION.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")
+
+
+def test_the_position_rate_with_an_upright_d_reads_as_with_an_italic_one():
+    upright = _POSITION.replace("\\frac{d \\vec{r_i}}{dt}", "\\frac{\\mathrm{d} \\vec{r_i}}{\\mathrm{d}t}")
+    assert upright != _POSITION
+    assert verdicts(upright.replace("MATRIX", "R_{b \\rightarrow i}"))[-1] == (15, "holds")
+    assert verdicts(upright.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")
+
+
+def test_the_position_rate_with_spacing_between_the_matrix_and_the_velocity_reads_the_same():
+    spaced = _POSITION.replace("MATRIX \\vec{V_b}", "MATRIX \\, \\vec{V_b}")
+    assert spaced != _POSITION
+    assert verdicts(spaced.replace("MATRIX", "R_{b \\rightarrow \\, i}"))[-1] == (15, "holds")
+    assert verdicts(spaced.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")

@@ -470,6 +470,8 @@ _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
 """A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
+_SCRIPT_SPACING = re.compile(r"(?<=[\^_])\{[^{}]*\\[,;!][^{}]*\}")
+"""A script holding spacing, ``_{\\beta \\, \\alpha}``: spacing sets no part of a label apart."""
 _EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
@@ -521,6 +523,7 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
     text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
     text = _WORD_SCRIPT.sub(r"\1{\2}", text)         # _{\\text{body}}: the label body
+    text = _SCRIPT_SPACING.sub(lambda m: re.sub(r"\s*\\[,;!]\s*", " ", m.group(0)), text)
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1

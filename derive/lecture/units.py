@@ -19,10 +19,11 @@ _UNIT_TOKEN = (r"\\(?:text|mathrm|mbox|textrm)\s*\{\s*" + _UNIT_EXPR + r"\s*\}(?
 _UNITS = re.compile(r"(?<=\d)(?:\s|\\,|\\;|~)*" + _UNIT_TOKEN + r"(?:\s*(?:\\cdot|\\,|\s)\s*" + _UNIT_TOKEN + r")*")
 """A unit, or a product of units, right after a number: ``2.50\\text{ kg}``, ``0.04\\text{ kg}\\cdot\\text{m}^2``."""
 _PLAIN_UNIT = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
-_TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\frac\s*\{\s*" + _PLAIN_UNIT + r"\s*\}\s*\{\s*" + _PLAIN_UNIT + r"\s*\})"
-                        r"\s*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text)")
-"""A unit in plain letters after a tie that follows a number or a closing brace, closing a member:
-``0.1~kg``, ``}~\\frac{rad}{s}``, ``}~s`` (``a~s`` stays a product)."""
+_TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s*\{\s*" + _PLAIN_UNIT + r"\s*\}\s*\{\s*" + _PLAIN_UNIT + r"\s*\})"
+                        r"(?:\s|\\[,;!])*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text|\\tag|\\label|\\notag|\\nonumber)")
+"""A unit in plain letters after a tie that follows a number or a closing brace, closing a member
+(a tag or a label after it closes it too): ``0.1~kg``, ``}~\\frac{rad}{s}`` (or ``\\dfrac``), ``}~s``
+(``a~s`` stays a product)."""
 _THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
 _NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
 

@@ -168,7 +168,9 @@ class State:
     radial: str = "origin"                          # a plain r: the distance from the origin, or from the axis
 
 
-_MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*([xyz])\s*,?\s*([xyz])")
+_MINUS_PRODUCT = re.compile(r"(?:&|\\\\|matrix\}|\{ccc\})\s*-\s*I_\s*\{?\s*(?:\\(?:text|mathrm|textrm|rm)\s*\{\s*)?"
+                            r"([xyz])\s*,?\s*([xyz])")
+"""−I_xy off an inertia matrix's diagonal, its index also set upright (``-I_\\text{xy}``, ``-I_{\\mathrm{xy}}``)."""
 
 
 def products_of_inertia(body: str) -> bool:

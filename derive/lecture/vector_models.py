@@ -320,11 +320,13 @@ def _particle_index(text: str) -> str | None:
 
 _VEC = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{(?:[^{}]|\{[^{}]*\})*\}"
 _LABEL = r"(\{[^{}]*\}|[A-Za-z])"
-_D = r"(?:\\mathrm\s*\{\s*d\s*\}|d)"
-_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + _D + r"\s*\}\s*(" + _VEC + r")\s*\}\s*\{\s*" + _D + r"\s*t\s*\}")
+_GAP = r"(?:\s*\\[,;!])*"
+DIFFERENTIAL = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + _GAP
+"""The differential d, upright or italic, with the spacing a text may set after it (``\\mathrm{d}\\,``)."""
+_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + DIFFERENTIAL + r"\s*\}" + _GAP + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
 _ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
-_RATE_BAR = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*dt\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
-_RATE_DT = re.compile(r"\\frac\s*\{\s*d\s*(" + _VEC + r")\s*\}\s*\{\s*d\s*t\s*_\s*" + _LABEL + r"\s*\}")
+_RATE_BAR = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
+_RATE_DT = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*_\s*" + _LABEL + r"\s*\}")
 _BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 
