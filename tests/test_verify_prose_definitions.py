@@ -44,3 +44,9 @@ def test_a_name_inside_a_code_span_or_an_html_comment_names_nothing():
     comments = "The rates are <!-- $\\dot\\phi = \\omega_\\phi$, $\\dot\\psi = \\omega_\\psi$ --> left unnamed."
     assert _at_display(spans) == ["unchecked"]
     assert _at_display(comments) == ["unchecked"]
+
+
+def test_a_name_given_before_the_first_heading_holds_after_it():
+    text = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n" + NAMED + LATER
+    claims = kept.check_text(text)
+    assert [c.verdict for c in claims if c.latex.startswith("\\omega_3")] == ["holds"]

@@ -14,6 +14,8 @@ What is read:
   decided later) or, after a word such as *if*, *for*, *suppose*, *assume*, *with*, *when* or in
   a heading, or as the first math of a sentence that opens with such a word ("For a symmetric
   top, $I_1 = I_2$, …"), an **assumption**. A display with ``\\equiv`` defines, never assumes.
+  A value set equal to a new symbol in running prose ("$\\dot\\phi = \\omega_\\phi$") is also the
+  text's name for it after its section (`derive.lecture.prose_definitions`).
 * **Context**: headings (Markdown ``#`` lines) cut the notes into sections; an assumption ("If
   $I_1 = I_2$", "For $\\tau = 0$", "Suppose $p_\\alpha = p_\\gamma$ and $\\beta \\approx 0$", a
   display right after "If"/"Suppose") applies to the displays that follow it until the next

@@ -108,12 +108,10 @@ def carried(names: list, headings: list) -> list:
     section it was set in (a heading of its section's level or above), as ``(position, item)``.
 
     ``names``: ``(position, item)`` in text order; ``headings``: ``(position, level)`` in order.
-    A name set before any heading is a setting to the end of the text and is never carried."""
+    Before the first heading, any heading closes the text's opening section."""
     out = []
     for pos, item in names:
-        before = [level for at, level in headings if at < pos]
-        if not before:
-            continue
+        before = [level for at, level in headings if at < pos] or [99]
         end = next((at for at, level in headings if at > pos and level <= before[-1]), None)
         if end is not None:
             out.append((end, item))
