@@ -50,3 +50,9 @@ def test_a_name_given_before_the_first_heading_holds_after_it():
     text = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n" + NAMED + LATER
     claims = kept.check_text(text)
     assert [c.verdict for c in claims if c.latex.startswith("\\omega_3")] == ["holds"]
+
+
+def test_an_angle_held_at_a_value_in_prose_is_a_case_and_names_nothing_after_its_section():
+    text = HEAD + "The nutation angle stays $\\theta = \\theta_0$ here." + \
+        "\n\n# Nutation\n\nThe nutation is\n\n$$\\theta = \\theta_0 + \\epsilon$$\n"
+    assert not [c for c in kept.check_text(text) if c.kind == "new symbol"]

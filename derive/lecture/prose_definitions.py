@@ -11,7 +11,8 @@ place, not on the words around it (it reads a Chinese or Spanish sentence as an 
 * it is one relation, a plain ``=``, and nothing else (``\\equiv`` and ``:=`` define their left side);
 * its right side is a single symbol (with its sub/superscripts, primes and accents) met nowhere in
   the text's math before, not a quantity the reader knows and not one the front matter names;
-* its left side is written only in symbols the text has already used or the reader knows.
+* its left side is written only in symbols the text has already used or the reader knows, and
+  is not an angle itself (``\\theta = \\theta_0`` holds an angle at a value: a case, not a name).
 
 Such a name is a setting in its section, as before, and from the heading that closes that
 section on it is the definition ``X \\equiv value``, recorded as a display's definition is; it is
@@ -26,6 +27,7 @@ import re
 from derive.lecture import latex as lx
 from derive.lecture.source import MATH
 from derive.lecture.statements import top_level
+from derive.symbolic.rotations import ANGLES
 
 _DEFINES = re.compile(r"\\coloneqq(?![A-Za-z])|:=|\\equiv(?![A-Za-z])|(?<![<>!:\\])=")
 _OTHER_RELATION = re.compile(r"\\(?:approx|simeq|sim|neq|ne|geq?|leq?|geqslant|leqslant|ll|gg|propto|to|rightarrow|"
@@ -97,6 +99,8 @@ class ProseDefinitions:
         if key in self.met or _reads(name, self.vocab):
             return None
         others = _atoms(value)
+        if _angle(value, self.vocab):
+            return None         # "$\\theta = \\theta_0$": an angle held at a value is a case, never a name
         if not others or key in {o for o, _ in others} or \
                 not all(o in self.met or _reads(text, self.vocab) for o, text in others):
             return None
@@ -116,6 +120,15 @@ def carried(names: list, headings: list) -> list:
         if end is not None:
             out.append((end, item))
     return out
+
+
+def _angle(value: str, vocab) -> bool:
+    """Is ``value`` one of the angles themselves (not a rate)?"""
+    try:
+        parsed = lx.parse(value, vocab)
+    except (lx.NotRead, ValueError, IndexError, KeyError, TypeError):
+        return False
+    return len(parsed.members) == 1 and parsed.members[0].value in ANGLES
 
 
 def _reads(name: str, vocab) -> bool:
