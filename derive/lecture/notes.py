@@ -14,6 +14,8 @@ What is read:
   decided later) or, after a word such as *if*, *for*, *suppose*, *assume*, *with*, *when* or in
   a heading, or as the first math of a sentence that opens with such a word ("For a symmetric
   top, $I_1 = I_2$, …"), an **assumption**. A display with ``\\equiv`` defines, never assumes.
+  A value set equal to a new symbol in running prose ("$\\dot\\phi = \\omega_\\phi$") is also the
+  text's name for it after its section (`derive.lecture.prose_definitions`).
 * **Context**: headings (Markdown ``#`` lines) cut the notes into sections; an assumption ("If
   $I_1 = I_2$", "For $\\tau = 0$", "Suppose $p_\\alpha = p_\\gamma$ and $\\beta \\approx 0$", a
   display right after "If"/"Suppose") applies to the displays that follow it until the next
@@ -33,6 +35,7 @@ from derive.errors import SceneError
 from derive.lecture import formula_names
 from derive.lecture import names as nm
 from derive.lecture import notebook
+from derive.lecture import prose_definitions
 from derive.lecture import source
 from derive.lecture import stated_convention
 
@@ -301,6 +304,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             if _RELATION.search(inner) and "\\neq" not in inner and "\\equiv" not in inner:
                 events.append((starts[k - 1] + 1, Item("assumption", k, latex=inner, lead=title)))
     prev_end = 0
+    in_prose = prose_definitions.ProseDefinitions(body, tuple(angles), dict(declared.get("symbols") or {}))
+    named: list = []
     for m in source.MATH.finditer(body):
         line = line_of(m.start())
         if line in heading_lines:
@@ -340,6 +345,10 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             and line - events[-1][1].line <= 1
         assumed = word in TRIGGERS or wrapped or after_assumption or _opens_with_trigger(body, m.start()) \
             or _absence_stated(body, m.start(), latex)
+        # "… named $\dot\phi = \omega_\phi$ …": a setting in its section, the text's name after it
+        defined = None if assumed else in_prose.definition(m.start(), latex, line_text)
+        if defined:
+            named.append((m.start(), Item("inline", line, latex=defined, lead=near)))
         for one in components(latex.strip("()") if assumed and wrapped else latex):
             events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near)))
     # a section that states another convention (or other names) than the one before it
@@ -361,6 +370,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         if maths:
             events.append((m.start(), Item("small", line_of(m.start()), symbols=tuple(
                 source.normalize(x, user_macros) for x in maths), lead=m.group(0))))
+    events += prose_definitions.carried(named, [(at, it.level) for at, it in events if it.kind == "heading"])
     events.sort(key=lambda e: e[0])
     # merge consecutive sign items of one line ("$\Omega_1$ and $\Omega_2$ are both …")
     items: list[Item] = []
