@@ -69,8 +69,6 @@ MISSES: dict[str, str] = {
     "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
     "operatorname sin": "\\operatorname{sin}(\\alpha) inside \\arctan\\left(…\\right), an angle read back from a "
                         "matrix (not traced yet)",
-    "trailing comma": "a comma after a display's closing \\right. or a \\label on its own row, or after statements cut "
-                      "at \\; , leaves the last statement unchecked",
     "boldsymbol for bold": "a position in written unit vectors, \\mathbf{r}_{G} = x\\hat{i} + …, in another bold",
     "bm for bold": "a position in written unit vectors, \\mathbf{r}_{G} = x\\hat{i} + …, in another bold",
 }

@@ -23,6 +23,8 @@ from derive.lecture import latex as lx
 from derive.lecture.statements import top_level
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
+_END_PUNCTUATION = re.compile(r"(?:\s|(?<!\\)[,.;])+$")
+"""The punctuation that ends a display's sentence (``… = J_z \\omega,``): no part of its last member."""
 
 
 class ChainEndNames:
@@ -31,6 +33,7 @@ class ChainEndNames:
     def _named_at_chain_end(self, latex: str, line: int = 0) -> None:
         """Record ``N = B / c`` for a chain ``… = B = N c`` (N a new name of the text's, c ≠ 1 a
         factor whose symbols B has, B free of N); nothing for any other display."""
+        latex = _END_PUNCTUATION.sub("", latex)
         try:
             parsed = lx.parse(latex, self.vocab)
         except lx.NotRead:

@@ -186,6 +186,8 @@ def _lists(row: str) -> list[str]:
             pieces.append(part)
             continue
         commas = split_top(part)
+        if len(commas) > 1 and not commas[-1].strip():
+            commas.pop()                  # a comma that ends the row ends a sentence, it cuts nothing
         if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
             pieces.extend(commas)
         else:
@@ -249,7 +251,7 @@ def statements(latex: str) -> list[str]:
         for piece in _colon_parts(row):
             for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies",
                                                                               "\\Leftrightarrow", "\\iff"))):
-                for one in [w for p in _lists(part) for w in _where_first(p)]:
+                for one in [w for p in _lists(part) for w in _where_first(_trimmed(p))]:
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))
