@@ -198,6 +198,13 @@ def test_the_moment_of_a_force_about_an_axis_is_the_component_of_r_cross_f_and_a
     assert (7, "holds") in verdicts(rate)
 
 
+def test_the_moment_of_a_force_in_sized_brackets_is_the_moment_applied_to_the_force_not_a_product():
+    for opened, closed in (("\\left(", "\\right)"), ("\\bigl(", "\\bigr)")):
+        torques = _TORQUES.replace("(", opened).replace(")", closed)
+        assert (7, "holds") in verdicts(_NAMED_AT_END + f"$$J_z \\alpha = {torques}$$\n")
+        assert flagged(_NAMED_AT_END + f"$$2 J_z \\alpha = {torques}$$\n", 7)
+
+
 _PLANE = "# Plane motion\n\n"
 
 

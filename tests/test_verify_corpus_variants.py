@@ -60,8 +60,6 @@ MISSES: dict[str, str] = {
     "thin space between factors": _SPACING_MISSED, "medium space between factors": _SPACING_MISSED,
     "negative thin space between factors": _SPACING_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
-    "left-right for plain brackets": "a name applied to its arguments in \\left( \\right), M_z \\left(\\vec F_i\\right), "
-                                     "is read as a product",
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
     "accent argument unbraced": "\\pmb{\\hat\\imath} (a bold hat over a dotless i, unbraced) is not the unit vector î "
                                 "(and one display of a precession text, not traced yet)",
