@@ -61,8 +61,6 @@ MISSES: dict[str, str] = {
     "negative thin space between factors": _SPACING_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
-    "accent argument unbraced": "\\pmb{\\hat\\imath} (a bold hat over a dotless i, unbraced) is not the unit vector î "
-                                "(and one display of a precession text, not traced yet)",
     "sin(theta)": "one statement of an intermediate-axis derivation (not traced yet)",
     "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
     "operatorname sin": "\\operatorname{sin}(\\alpha) inside \\arctan\\left(…\\right), an angle read back from a "

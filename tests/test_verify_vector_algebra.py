@@ -29,6 +29,14 @@ def test_a_cross_product_in_components_and_as_a_determinant_holds():
     assert only(body) == {"holds"}
 
 
+@pytest.mark.parametrize("bold", ["\\boldsymbol", "\\pmb"])
+def test_a_bold_hat_over_an_unbraced_dotless_i_is_the_unit_vector_in_a_determinant(bold):
+    det = (f"\\begin{{vmatrix}} {bold}{{\\hat\\imath}} & {bold}{{\\hat\\jmath}} & \\mathbf{{\\hat{{k}}}} \\\\ "
+           "\\omega_x & \\omega_y & \\omega_z \\\\ x & y & z \\end{vmatrix}")
+    assert only(f"$$\\boldsymbol{{\\omega}} \\times \\mathbf{{r}} = {det}$$\n") == {"holds"}
+    assert only(f"$$\\mathbf{{r}} \\times \\boldsymbol{{\\omega}} = {det}$$\n") & {"typo", "fails"}
+
+
 def test_a_sign_slip_in_a_component_fails():
     body = ("$$\\boldsymbol{\\omega} \\times \\mathbf{r} = \\begin{bmatrix} \\omega_y z - \\omega_z y \\\\ "
             "\\omega_x z - \\omega_z x \\\\ \\omega_x y - \\omega_y x \\end{bmatrix}$$\n")

@@ -52,6 +52,15 @@ def test_a_rate_written_after_its_function_of_time_holds_as_its_derivative_and_i
     assert not any(c.verdict in ("typo", "fails") for c in off)
 
 
+def test_a_rate_with_its_dot_over_an_unbraced_symbol_is_checked_as_the_derivative_of_the_function():
+    head = ("Here $\\Omega_p$ and $\\omega_n$ are constants.\n\n"
+            "$$\\phi(t) = \\Omega_p t - \\frac{\\Omega_p}{\\omega_n} \\sin(\\omega_n t)$$\n\n")
+    good = kept.check_text(head + "$$\\dot\\phi(t) = \\Omega_p \\left[1 - \\cos(\\omega_n t)\\right]$$\n")
+    assert any(c.kind == "rate" and c.verdict == "holds" for c in good)
+    off = kept.check_text(head + "$$\\dot\\phi(t) = \\Omega_p \\left[1 + \\cos(\\omega_n t)\\right]$$\n")
+    assert not any(c.verdict in ("holds", "typo", "fails") for c in off)
+
+
 def test_the_torque_law_with_a_torque_labelled_by_its_source_holds_and_a_factor_on_it_does_not():
     text = "The weight's torque about the pivot is $\\vec{\\tau}_g$.\n\n$$\\frac{d\\vec{L}}{dt} = \\vec{\\tau}_g$$\n"
     assert [c.verdict for c in kept.check_text(text)] == ["holds"]

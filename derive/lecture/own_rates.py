@@ -1,5 +1,5 @@
 """A function of time the text writes, ``\\phi(t) = …``, and its rate written after it,
-``\\dot{\\phi}(t) = …`` (or ``\\frac{d\\phi}{dt}(t) = …``): the rate is checked as the time
+``\\dot{\\phi}(t) = …`` (or ``\\dot\\phi(t)``, ``\\frac{d\\phi}{dt}(t)``): the rate is checked as the time
 derivative of the text's own function.
 
 A text that solves for an angle often gives the angle and its rate one after the other (the fast
@@ -22,8 +22,8 @@ from derive.lecture import latex as lx
 
 _D = r"(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s*d|d)\s*"
 # f(t), its rate \dot{f}(t) or \frac{d f}{dt}(t) (as the formula reader reads d/dt: `derive.lecture.written_rates`)
-_WRITTEN = re.compile(r"^\s*(?:(?P<dot>\\dot\s*\{\s*)|(?P<frac>\\[dt]?frac\s*\{\s*" + _D + r"))?"
-                      r"(?P<name>\\[A-Za-z]+|[A-Za-z])(?(dot)\s*\})(?(frac)\s*\}\s*\{\s*" + _D + r"t\s*\})\s*"
+_WRITTEN = re.compile(r"^\s*(?:(?P<dot>\\dot(?![A-Za-z])\s*(?P<brace>\{\s*)?)|(?P<frac>\\[dt]?frac\s*\{\s*" + _D + r"))?"
+                      r"(?P<name>\\[A-Za-z]+|[A-Za-z])(?(brace)\s*\})(?(frac)\s*\}\s*\{\s*" + _D + r"t\s*\})\s*"
                       r"(?:\\left\s*)?\(\s*t\s*(?:\\right\s*)?\)\s*=(?P<rhs>[^=<>]+)$")
 
 

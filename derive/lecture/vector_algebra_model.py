@@ -79,6 +79,8 @@ POINT_LABELS = ("cm", "CM", "com", "G", "O", "C")
 """Subscripts that name the point moments are taken about (𝐇_cm, 𝐇_G, 𝐫_{/cm}): the point the
 positions are measured from, the origin of this model."""
 _POINT_SUPERSCRIPT = re.compile(r"\^\s*\{\s*(?:" + "|".join(POINT_LABELS) + r")\s*\}")
+_DOTLESS = re.compile(r"([A-Za-z])?\\([ij])math(?![A-Za-z])")
+"""ı, ȷ: i and j, set apart from a command written before them unbraced (``\\hat\\imath`` is î)."""
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
@@ -136,7 +138,7 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
-    text = text.replace("\\otimes", " ").replace("\\imath", "i").replace("\\jmath", "j")
+    text = _DOTLESS.sub(lambda m: (m[1] + " " if m[1] else "") + m[2], text.replace("\\otimes", " "))
     return text
 
 
