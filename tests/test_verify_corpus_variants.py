@@ -65,8 +65,6 @@ MISSES: dict[str, str] = {
     "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
     "operatorname sin": "\\operatorname{sin}(\\alpha) inside \\arctan\\left(…\\right), an angle read back from a "
                         "matrix (not traced yet)",
-    "boldsymbol for bold": "a position in written unit vectors, \\mathbf{r}_{G} = x\\hat{i} + …, in another bold",
-    "bm for bold": "a position in written unit vectors, \\mathbf{r}_{G} = x\\hat{i} + …, in another bold",
 }
 """Kinds that still leave some displays of the corpus unchecked (or, for the two that change what a
 display says, flag some): what the reader misses."""

@@ -34,6 +34,13 @@ def test_koenigs_theorem_holds_as_written_in_scalars_and_in_vectors():
         assert _kinds(display) == [("holds", "König")], display
 
 
+def test_koenigs_theorem_holds_in_every_bold_and_another_form_in_it_is_not_taken_for_it():
+    written = "T=\\frac{1}{2}m\\mathbf{v}_G^2+\\frac{1}{2}\\mathbf{\\omega H_G}"
+    for bold in ("\\bm", "\\pmb", "\\boldsymbol"):
+        assert _kinds(written.replace("\\mathbf", bold)) == [("holds", "König")], bold
+        assert "holds" not in {v for v, _ in _kinds(written.replace("\\mathbf", bold).replace("_G^2", "_B^2"))}, bold
+
+
 def test_the_energy_about_a_point_holds_if_the_point_is_at_rest():
     for display in ("T=\\frac{1}{2}\\mathbf{\\omega H_B}", "T = \\frac{1}{2} \\boldsymbol{\\omega} \\cdot \\mathbf{H}_O"):
         [claim] = [c for cs in _claims(display).values() for c in cs]

@@ -37,6 +37,14 @@ def test_a_bold_hat_over_an_unbraced_dotless_i_is_the_unit_vector_in_a_determina
     assert only(f"$$\\mathbf{{r}} \\times \\boldsymbol{{\\omega}} = {det}$$\n") & {"typo", "fails"}
 
 
+@pytest.mark.parametrize("bold", ["\\boldsymbol", "\\bm", "\\pmb"])
+def test_a_position_set_in_unit_vectors_reads_the_same_in_every_bold(bold):
+    body = "$$\\mathbf{r}_{G} = x\\hat{i} + y\\hat{j} +z \\hat{k}$$\n"
+    assert verdicts(body.replace("\\mathbf", bold)) == verdicts(body) == {3: ["holds"]}
+    again = body + "\n" + body.replace("z \\hat{k}", "2 z \\hat{k}")
+    assert verdicts(again.replace("\\mathbf", bold))[5] == ["unchecked"]        # set again otherwise: either may be meant
+
+
 def test_a_sign_slip_in_a_component_fails():
     body = ("$$\\boldsymbol{\\omega} \\times \\mathbf{r} = \\begin{bmatrix} \\omega_y z - \\omega_z y \\\\ "
             "\\omega_x z - \\omega_z x \\\\ \\omega_x y - \\omega_y x \\end{bmatrix}$$\n")

@@ -14,7 +14,7 @@ G, cm, CM, com), as every mechanics course writes them:
   distance between the parallel axes;
 * **König**: the kinetic energy T as that of the mass moving with the centre of mass, ½ m v_G²,
   plus that of the turning about it, ½ I_G ω² (a plane motion, a fixed axis) or ½ 𝛚·𝐇_G (written
-  ``\\boldsymbol\\omega\\cdot\\mathbf{H}_G`` or in one bold group, ``\\mathbf{\\omega H_G}``); and T = ½ 𝛚·𝐇_P alone,
+  ``\\boldsymbol\\omega\\cdot\\mathbf{H}_G`` or in one bold group, ``\\mathbf{\\omega H_G}``; ``\\bm``, ``\\pmb`` as well); and T = ½ 𝛚·𝐇_P alone,
   about a point P named by a capital, `holds if P is at rest` (a body turning about a fixed point);
 * **projection**: two points' speeds times the cosines of the angles (one letter, θ, φ, α or β) their
   velocities make with the line joining them, equal: v_B cos θ_B = v_A cos θ_A (points named by
@@ -38,15 +38,15 @@ _PARALLEL = re.compile(rf"\s*{_MOMENT}\s*=\s*{_MOMENT}\s*([+-])\s*{_TERM}\s*[.,;
 
 _HALF = r"\\frac\s*\{\s*1\s*\}\s*\{\s*2\s*\}\s*"
 _SQUARE = r"\s*\^\s*\{?\s*2\s*\}?"
-_MOVING = (rf"{_HALF}[mM]\s*(?:\\[,;]\s*)?(?:\\(?:mathbf|boldsymbol|vec)\s*\{{?\s*[vV]\s*\}}?|[vV])\s*_\s*{_SUB}{_SQUARE}")
+_MOVING = (rf"{_HALF}[mM]\s*(?:\\[,;]\s*)?(?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*[vV]\s*\}}?|[vV])\s*_\s*{_SUB}{_SQUARE}")
 _TURNING = (rf"{_HALF}(?:[IJ]\s*_\s*{_SUB}\s*(?:\\[,;]\s*)?\\omega{_SQUARE}"
-            rf"|\\mathbf\s*\{{\s*\\omega\s*H\s*_\s*{_SUB}\s*\}}"
-            rf"|\\(?:mathbf|boldsymbol)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|vec)\s*\{{?\s*H\s*\}}?\s*_\s*{_SUB})")
+            rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{\s*\\omega\s*H\s*_\s*{_SUB}\s*\}}"
+            rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*H\s*\}}?\s*_\s*{_SUB})")
 _ANGLE = r"\\(?:theta|varphi|phi|alpha|beta)"
 _PROJECTION = re.compile(rf"\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?"
                          rf"\s*=\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?\s*[.,;]?\s*")
-_ABOUT = re.compile(rf"\s*T\s*=\s*{_HALF}(?:\\mathbf\s*\{{\s*\\omega\s*H\s*_\s*\{{?\s*([A-Z])\s*\}}?\s*\}}"
-                    rf"|\\(?:mathbf|boldsymbol)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|vec)\s*\{{?\s*H\s*\}}?\s*_\s*\{{?\s*([A-Z])\s*\}}?)"
+_ABOUT = re.compile(rf"\s*T\s*=\s*{_HALF}(?:\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{\s*\\omega\s*H\s*_\s*\{{?\s*([A-Z])\s*\}}?\s*\}}"
+                    rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*H\s*\}}?\s*_\s*\{{?\s*([A-Z])\s*\}}?)"
                     r"\s*[.,;]?\s*")
 _KOENIG = [re.compile(rf"\s*T\s*=\s*{a}\s*\+\s*{b}\s*[.,;]?\s*") for a, b in
            ((_MOVING, _TURNING), (_TURNING, _MOVING))]
