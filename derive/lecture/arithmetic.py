@@ -44,7 +44,7 @@ def _members(text: str):
 
 def _value(piece: str, vocab):
     """A member's value when it is a plain number (no symbol in it), else None."""
-    if not re.search(r"\d", piece) or re.search(r"\\(?:implies|Rightarrow|quad|text)|[,;]", piece):
+    if not re.search(r"\d", piece) or re.search(r"\\(?:implies|Rightarrow|quad|text)|(?<!\\)[,;]", piece):
         return None
     try:
         parsed = lx.parse(piece, vocab)

@@ -33,7 +33,7 @@ _DYADIC = re.compile(r"\\breve\s*\{\s*([A-Za-z])\s*\}\s*" + _LABEL)
 _BAR = re.compile(r"\\bar\s*\{\s*([A-Za-z])\s*\}(?!\s*\^)(?:\s*_\s*\{?\s*([A-Za-z])\s*\}?)?")
 _UNIT = re.compile(r"\\hat\s*\{\s*([a-hl-wA-Z])\s*\}\s*_\s*\{?\s*([A-Za-z])\s*\}?")
 _UNIT_DYADIC = re.compile(r"\\breve\s*\{\s*U\s*\}")
-_FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?\s*(?=\\bar\s*\{)")
+_FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?(?:\s|\\[,;:!])*(?=\\bar\s*\{)")
 _ANGULAR_VELOCITY = re.compile(r"\\bar\s*\{\s*\\omega\s*\}\s*\^\s*\{?\s*[A-Z]\s*\}?")
 _KANE = re.compile(r"\\bar\s*\{\s*[A-Za-z]\s*\}\s*\^\s*\{[^{}]*/|\\breve\s*\{")
 

@@ -63,12 +63,17 @@ ABOUT = ("holds if {point} is at rest: the kinetic energy of a body turning abou
          "½ 𝛚·𝐇_{point} (about a moving point it takes the terms of that point's motion as well)")
 
 
+_SPACING = re.compile(r"(?<!\\)\\[,;:!]")
+"""A thin, medium or negative space between factors (``m \\; v_c^2``, ``\\mathbf{\\omega \\, H_G}``): a space."""
+
+
 def _centre(sub: str | None) -> bool:
     return sub is not None and re.fullmatch(rf"\{{?\s*{_CENTRE}\s*\}}?", sub) is not None
 
 
 def theorem(piece: str) -> str | None:
     """Why a statement is one of the theorems as written, or None when it is not."""
+    piece = _SPACING.sub(" ", piece)
     m = _PARALLEL.fullmatch(piece)
     if m is not None:
         letter, sub, _, other_letter, other_sub, _, sign, _, _ = m.groups()

@@ -109,11 +109,11 @@ of its tangential or normal part, never a power or a transpose (t is written τ 
 takes a bold symbol's ^t for a transpose)."""
 
 
-_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?\s*(?:\\(?:left|bigl|Bigl|big|Big)\s*)?\(\s*"
+_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?(?:\s|\\[,;:!])*(?:\\(?:left|bigl|Bigl|big|Big)\s*)?\(\s*"
                         r"(\\vec\s*\{?\s*F\s*\}?\s*(?:_\s*(\{[^{}]*\}|[A-Za-z0-9]))?)\s*"
                         r"(?:\\(?:right|bigr|Bigr|big|Big)\s*)?\)")
-"""M_z(𝐅ᵢ), the moment of a force about an axis, its argument in plain or sized brackets
-(``M_z \\left(\\vec F_i\\right)``): (𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
+"""M_z(𝐅ᵢ), the moment of a force about an axis, its argument in plain or sized brackets, spaced
+or not (``M_z \\left(\\vec F_i\\right)``, ``M_z \\; (\\vec F_i)``): (𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
 
 
 def prepare(text: str) -> str:
