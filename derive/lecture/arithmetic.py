@@ -21,6 +21,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import QUAD
 from derive.lecture.statements import top_level
 
 _LINK = re.compile(r"(?<![<>!])=|\\approx(?![A-Za-z])|\\simeq(?![A-Za-z])")
@@ -44,7 +45,7 @@ def _members(text: str):
 
 def _value(piece: str, vocab):
     """A member's value when it is a plain number (no symbol in it), else None."""
-    if not re.search(r"\d", piece) or re.search(r"\\(?:implies|Rightarrow|quad|text)|(?<!\\)[,;]", piece):
+    if not re.search(r"\d", piece) or re.search(r"\\(?:implies|Rightarrow|text)|" + QUAD + r"|(?<!\\)[,;]", piece):
         return None
     try:
         parsed = lx.parse(piece, vocab)

@@ -18,7 +18,7 @@ its axis is left unchecked rather than judged.
 A matrix so bound, written again at its arguments with one of them set (``R_{zxz}(\alpha,
 \beta=0, \gamma) = …``), is that matrix with the setting put in (`_at_setting`).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.statements`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -28,12 +28,14 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import ONE_SPACE
 from derive.lecture.statements import top_level
 from derive.symbolic.rotations import trig_reduce
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
 _WRITTEN = re.compile(r"\\begin\{([bpBvV]?matrix)\}(.*?)\\end\{\1\}", re.S)
-_SPACING = re.compile(r"(?:\s|\\[,;:! ]|\\quad|\\qquad|&)*")
+# between two written factors: spaces and alignment tabs (a quad has cut the statement before this reads it)
+_SPACING = re.compile(rf"(?:{ONE_SPACE}|&)*")
 _AXES = "123xyz"
 _AT = re.compile(r"\s*(?P<name>.+?)\s*\((?P<args>[^()]*)\)\s*=(?P<rest>.*)\Z", re.S)
 

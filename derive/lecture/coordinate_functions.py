@@ -3,7 +3,7 @@
 Takes: one statement's LaTeX and what the text has defined so far (`Defined`). Gives: the
 statement's members as SymPy expressions in q, q̇, q̈ and the text's parameters (`read`).
 May import: the standard library, sympy, :mod:`derive.lecture.operator_notation` (`NotHandled`:
-a statement this reading leaves to the general reader).
+a statement this reading leaves to the general reader), :mod:`derive.lecture.latex_spaces`.
 
 A body with one coordinate (a hoop rolling on the floor through an angle θ, a pendulum) is
 described by functions the text names: ``I_P(\\theta) = 2mR(R - a\\cos\\theta)``, ``x_C =
@@ -31,13 +31,14 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.lecture.operator_notation import NotHandled, group
 
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "vartheta", "iota", "kappa",
           "lambda", "mu", "nu", "xi", "rho", "sigma", "tau", "phi", "varphi", "chi", "psi", "omega", "Gamma",
           "Delta", "Theta", "Lambda", "Phi", "Psi", "Omega"}
-_SKIP = {",", ";", ":", "!", " ", "quad", "qquad", "left", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl",
-         "Bigr", "biggl", "biggr", "displaystyle", "cdot"}
+_SKIP = SPACE_NAMES | QUAD_NAMES | {"left", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "biggl",
+                                   "biggr", "displaystyle", "cdot"}
 
 
 @dataclass

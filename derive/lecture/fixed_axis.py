@@ -3,7 +3,7 @@
 Takes: one statement's LaTeX. Gives: `setting`, the axis (0, 1, 2) a statement sets the angular
 velocity (and the angular acceleration) along, and `off_axis`, the substitution that puts the
 model's 𝛚 and 𝛂 on that axis. May import: the standard library, SymPy, :mod:`derive.lecture.
-vector_algebra_model` (its symbols).
+vector_algebra_model` (its symbols), :mod:`derive.lecture.latex_spaces`.
 
 A text on a body turning about a fixed axis writes 𝛚 = ω k̂ (𝛂 = α k̂): a bold angular velocity set
 equal to a plain scalar times a unit vector. That is the text's set-up, not a claim the derivation
@@ -18,10 +18,11 @@ from __future__ import annotations
 import re
 
 from derive.lecture import vector_algebra_model as va
+from derive.lecture.latex_spaces import SPACE
 
 _UNIT = r"\\hat\s*\{?\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{?\s*)?(?P<axis>[ijkxyz])\s*\}?\s*\}?"
 _BOLD = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\(?P<vec>omega|alpha)\s*\}?"
-_ONE = re.compile(r"^\s*" + _BOLD + r"\s*=\s*\\(?P<scalar>omega|alpha)\s*(?:\\[,;: ]\s*)*" + _UNIT + r"\s*$")
+_ONE = re.compile(r"^\s*" + _BOLD + r"\s*=\s*\\(?P<scalar>omega|alpha)" + SPACE + _UNIT + r"\s*$")
 AXIS = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 
 WHY = ("the text's set-up: the body turns about a fixed axis, 𝛚 (and 𝛂) along it — an assumption, "

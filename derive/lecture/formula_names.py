@@ -15,17 +15,18 @@ neither the prose nor the front matter named the symbol:
   m R^2``: its own quantity, checked as it defines it). Numbered moments need no rule: I₃ is the
   axial one already.
 
-May import: :mod:`derive.lecture.names`.
+May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex_spaces`.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture import names as nm
+from derive.lecture.latex_spaces import SPACE
 
 _MATH = re.compile(r"\$\$(.+?)\$\$|(?<![\\$])\$([^$]+?)(?<!\\)\$|\\\[(.+?)\\\]|"
                    r"\\begin\{(equation|align|eqnarray|gather|multline)\*?\}(.+?)\\end\{\4\*?\}", re.S)
-_WEIGHT = re.compile(r"(?<![\\A-Za-z_^])(?<!_\{)(?<!\^\{)([mM])\s*(?:\\,|\\;|\\cdot|\\ )?\s*g(?![a-z]{2})")
+_WEIGHT = re.compile(r"(?<![\\A-Za-z_^])(?<!_\{)(?<!\^\{)([mM])" + SPACE + r"(?:\\cdot" + SPACE + r")?g(?![a-z]{2})")
 _PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?![\w{^])")
 
 

@@ -14,13 +14,14 @@ for one matrix letter R, plain or bold. The space angular velocity, ``\\dot R R^
 ``\\dot R = \\hat{x} R``, is not read here. X must be one symbol (``\\widehat{\\mathbb{I}^{-1}\\Pi}`` names
 none).
 
-May import: the standard library and :mod:`derive.lecture.source`.
+May import: the standard library, :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.source`.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture import source
+from derive.lecture.latex_spaces import ONE_SPACING
 
 _MATRIX = r"(?:\\(?:mathbf|boldsymbol|mathrm|bm)\{([A-Z])\}|([A-Z]))"
 _SYMBOL = r"(\\?[A-Za-z]+|\\(?:mathbf|boldsymbol|bm)\{\\?[A-Za-z]+\})"
@@ -28,7 +29,9 @@ _HAT = (r"(?:\\(?:wide)?hat\{" + _SYMBOL + r"\}|\\(?:wide)?hat" + _SYMBOL + r"(?
         r"|\\crossmatrix\(" + _SYMBOL + r"\)|" + _SYMBOL + r"\^\{?\\times\}?)")
 _TRANSPOSE = r"\^\{?(?:T|\\top|\\intercal|-1)\}?"
 _DOT = r"\\dot\{?" + _MATRIX + r"\}?"
-_SPACING = re.compile(r"\s+|\\[,;:!](?![A-Za-z])|\\q?quad(?![A-Za-z])|\\left(?=\()|\\right(?=\))")
+# spacing, quads too, and the sizing of a bracket, dropped: a display is read whole here, before it is cut
+# into statements, so a quad may space one statement (R^T \dot R = \quad \hat\Omega); the forms anchor at = and a hat
+_SPACING = re.compile(ONE_SPACING + r"+|\\left(?=\()|\\right(?=\))")
 
 
 def _forms() -> list[re.Pattern]:

@@ -26,6 +26,8 @@ from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spaces import SPACE
+
 _LABEL = (r"\^\s*\{\s*([A-Za-z])\s*(?:_\s*\{?\s*([A-Za-z])\s*\}?|\(\s*\\tau\s*\))?\s*/\s*"
           r"([A-Za-z](?:\s*_\s*\{?\s*[a-z0-9]\s*\}?)?)\s*\}")
 _POSITION = re.compile(r"\\bar\s*\{\s*([A-Za-z])\s*\}\s*" + _LABEL)
@@ -33,7 +35,8 @@ _DYADIC = re.compile(r"\\breve\s*\{\s*([A-Za-z])\s*\}\s*" + _LABEL)
 _BAR = re.compile(r"\\bar\s*\{\s*([A-Za-z])\s*\}(?!\s*\^)(?:\s*_\s*\{?\s*([A-Za-z])\s*\}?)?")
 _UNIT = re.compile(r"\\hat\s*\{\s*([a-hl-wA-Z])\s*\}\s*_\s*\{?\s*([A-Za-z])\s*\}?")
 _UNIT_DYADIC = re.compile(r"\\breve\s*\{\s*U\s*\}")
-_FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?(?:\s|\\[,;:!])*(?=\\bar\s*\{)")
+# a frame's prescript spaced off its vector ({}^A \, \bar H); never across a quad, which ends its statement
+_FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?" + SPACE + r"(?=\\bar\s*\{)")
 _ANGULAR_VELOCITY = re.compile(r"\\bar\s*\{\s*\\omega\s*\}\s*\^\s*\{?\s*[A-Z]\s*\}?")
 _KANE = re.compile(r"\\bar\s*\{\s*[A-Za-z]\s*\}\s*\^\s*\{[^{}]*/|\\breve\s*\{")
 

@@ -3,7 +3,8 @@
 Takes: one statement's LaTeX and what the text says its operators are
 (`derive.lecture.operator_prose.Declarations`). Gives: `evaluate`, the statement's members as
 numbers on one instant of one motion (`derive.lecture.motion_jets`).
-May import: the standard library, :mod:`derive.lecture.motion_jets`.
+May import: the standard library, :mod:`derive.lecture.motion_jets`, :mod:`derive.lecture.vocabulary`,
+:mod:`derive.lecture.latex_spaces`.
 
 What such a text writes, and what it is read as (a quantity with a prime is on the principal
 axes, one without on the inertial axes, when the text says primes mark principal-axis
@@ -34,6 +35,7 @@ from dataclasses import dataclass
 
 from derive.lecture import motion_jets as mj
 from derive.lecture import vocabulary
+from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 
 
 class NotHandled(Exception):
@@ -42,8 +44,8 @@ class NotHandled(Exception):
 
 _GREEK = {"omega", "theta", "phi", "psi", "varphi", "vartheta", "alpha", "beta", "gamma", "tau", "Gamma"}
 _BOLD = ("mathbf", "boldsymbol", "vec", "bm", "pmb")
-_SKIP = {",", ";", ":", "!", " ", "quad", "qquad", "left", "right", "big", "Big", "bigg", "Bigg",
-         "bigl", "bigr", "Bigl", "Bigr", "displaystyle"}
+_SKIP = SPACE_NAMES | QUAD_NAMES | {"left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr",
+                                   "displaystyle"}
 
 
 # ---- reading a statement -------------------------------------------------------------------------

@@ -3,7 +3,7 @@
 Takes: the text of a notes file, or one formula of it. Gives: the text with what is not rendered
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
-May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`,
+May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
 `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
@@ -44,6 +44,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
 from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import tex_structure, texmacros, units
+from derive.lecture.latex_spaces import ONE_SPACE, SPACE, SPACE_SYMBOL
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -272,7 +273,7 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
         return r"\left(" + (_last_arg(node, user) or "") + r"\right)", 0
     if name == "operatorname":
         # \operatorname{d\!}: a book's differential, its kerning inside the name
-        inner = re.sub(r"\\[!,;:]|\s", "", _last_arg(node, user) or "").lstrip("\\")
+        inner = re.sub(ONE_SPACE, "", _last_arg(node, user) or "").lstrip("\\")
         return ("\\" + inner + " ") if inner in _FUNCTION_NAMES else r"\mathrm{" + inner + "}", 0
     if name in ("dv", "pdv"):
         order, f, x = _arg(node, 0, user), _arg(node, 1, user) or "", _arg(node, 2, user) or ""
@@ -395,7 +396,7 @@ _WORD_TRIG = re.compile(r"\\(text|mathrm|mathit|operatorname)\{\s*\\(sin|cos|tan
 
 # ":=" typed as two characters (never the label colon before a row, "\\theta:", nor "=:")
 _COLON_EQUALS = re.compile(r"(?<![=:\\])\s*:\s*=(?!:)")
-_ELLIPTIC = re.compile(r"\\(?:mathrm|operatorname)\{\s*(sn|cn|dn)\s*\}(?:\\,)?")
+_ELLIPTIC = re.compile(r"\\(?:mathrm|operatorname)\{\s*(sn|cn|dn)\s*\}" + SPACE)
 
 
 _CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
@@ -470,7 +471,7 @@ _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
 """A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
-_SCRIPT_SPACING = re.compile(r"(?<=[\^_])\{[^{}]*\\[,;!][^{}]*\}")
+_SCRIPT_SPACING = re.compile(r"(?<=[\^_])\{[^{}]*" + SPACE_SYMBOL + r"[^{}]*\}")
 """A script holding spacing, ``_{\\beta \\, \\alpha}``: spacing sets no part of a label apart."""
 _EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
@@ -523,7 +524,7 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
     text = _DIFFERENTIAL.sub(r"\1 \2", text)          # \\mathrm{d}{t}: braces only group
     text = _WORD_SCRIPT.sub(r"\1{\2}", text)         # _{\\text{body}}: the label body
-    text = _SCRIPT_SPACING.sub(lambda m: re.sub(r"\s*\\[,;!]\s*", " ", m.group(0)), text)
+    text = _SCRIPT_SPACING.sub(lambda m: re.sub(r"\s*" + SPACE_SYMBOL + r"\s*", " ", m.group(0)), text)
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1

@@ -23,7 +23,8 @@ form of every sequence: it states none, and the reader takes it for no claim (`g
 Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
 it declares a convention, wins over everything read here (`derive.lecture.notes.parse_notes`).
 
-May import: the standard library (`re`, `dataclasses`) and :mod:`derive.lecture.source` (where math stands in a text).
+May import: the standard library (`re`, `dataclasses`), :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.source`
+(where math stands in a text).
 """
 from __future__ import annotations
 
@@ -31,14 +32,15 @@ import re
 from dataclasses import dataclass
 
 from derive.lecture import source
+from derive.lecture.latex_spaces import SPACING
 
 _AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z"}
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
 _SYMBOL = r"\\?[A-Za-z]+(?:\s*_\s*(?:\{\s*\\?[A-Za-z0-9]+\s*\}|\\?[A-Za-z0-9]))?"
 _MATRIX = r"(?:\\(?:mathbf|mathrm|boldsymbol|bm|mathsf)\s*\{\s*[A-Z]\s*\}|[A-Z])"
-_SPACE = r"(?:\s|\\[,;:!]|\\q?quad)*"
 _TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyz])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
-_PRODUCT = re.compile(_TURN + _SPACE + _TURN + _SPACE + _TURN)
+# a display read whole, before it is cut into statements: three turns set side by side with quads keep their order
+_PRODUCT = re.compile(_TURN + SPACING + _TURN + SPACING + _TURN)
 _SEQUENCE = re.compile(r"(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])(?![\w-])"
                        r"(?=[^.$]{0,40}?\b(?:Euler|Tait|Bryan|angles?|sequence|convention|rotations?)\b)")
 _ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s+)?(?:(?:new|body|fixed|"
@@ -48,7 +50,7 @@ _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapt
 
 
 _GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
-_GENERIC = re.compile(_GENERIC_TURN + _SPACE + _GENERIC_TURN + _SPACE + _GENERIC_TURN)
+_GENERIC = re.compile(_GENERIC_TURN + SPACING + _GENERIC_TURN + SPACING + _GENERIC_TURN)
 
 
 def general_form(latex: str) -> bool:

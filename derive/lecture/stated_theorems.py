@@ -24,22 +24,24 @@ G, cm, CM, com), as every mechanics course writes them:
 Such a statement `holds`, its why naming the theorem, where the checker left it `unchecked` (a
 name it records, then uses; symbols it does not tie). Any other form — another sign, power or
 factor, a point that is not the centre of mass, a distance written as a sum of squares — is left
-to the checker, never flagged here. May import: the standard library.
+to the checker, never flagged here. May import: the standard library, :mod:`derive.lecture.latex_spaces`.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spaces import SPACE_SYMBOL, TIE
+
 _CENTRE = r"(?:C|c|G|cm|CM|com|\\text\{cm\}|\\mathrm\{cm\})"
 _SUB = r"(\{[^{}]*(?:\{[^{}]*\}[^{}]*)*\}|[A-Za-z0-9])"
 _MOMENT = rf"([IJ])\s*_\s*{_SUB}(\s*\^\s*\{{?\s*\\prime\s*\}}?|')?"
-_TERM = r"([mM])\s*(?:\\[,;!]\s*|\\cdot\s*)?([a-zA-Z])\s*\^\s*\{?\s*2\s*\}?"
+_TERM = r"([mM])\s*(?:\\cdot\s*)?([a-zA-Z])\s*\^\s*\{?\s*2\s*\}?"
 _PARALLEL = re.compile(rf"\s*{_MOMENT}\s*=\s*{_MOMENT}\s*([+-])\s*{_TERM}\s*[.,;]?\s*")
 
 _HALF = r"\\frac\s*\{\s*1\s*\}\s*\{\s*2\s*\}\s*"
 _SQUARE = r"\s*\^\s*\{?\s*2\s*\}?"
-_MOVING = (rf"{_HALF}[mM]\s*(?:\\[,;]\s*)?(?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*[vV]\s*\}}?|[vV])\s*_\s*{_SUB}{_SQUARE}")
-_TURNING = (rf"{_HALF}(?:[IJ]\s*_\s*{_SUB}\s*(?:\\[,;]\s*)?\\omega{_SQUARE}"
+_MOVING = (rf"{_HALF}[mM]\s*(?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*[vV]\s*\}}?|[vV])\s*_\s*{_SUB}{_SQUARE}")
+_TURNING = (rf"{_HALF}(?:[IJ]\s*_\s*{_SUB}\s*\\omega{_SQUARE}"
             rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{\s*\\omega\s*H\s*_\s*{_SUB}\s*\}}"
             rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*H\s*\}}?\s*_\s*{_SUB})")
 _ANGLE = r"\\(?:theta|varphi|phi|alpha|beta)"
@@ -63,8 +65,9 @@ ABOUT = ("holds if {point} is at rest: the kinetic energy of a body turning abou
          "½ 𝛚·𝐇_{point} (about a moving point it takes the terms of that point's motion as well)")
 
 
-_SPACING = re.compile(r"(?<!\\)\\[,;:!]")
-"""A thin, medium or negative space between factors (``m \\; v_c^2``, ``\\mathbf{\\omega \\, H_G}``): a space."""
+_SPACING = re.compile(rf"(?<!\\)(?:{SPACE_SYMBOL}|{TIE})")
+"""A small space, a control space or a tie between factors (``m \\; v_c^2``, ``\\mathbf{\\omega \\, H_G}``): a space
+(the forms above are matched after it, so they take whitespace alone)."""
 
 
 def _centre(sub: str | None) -> bool:

@@ -2,7 +2,7 @@
 
 Takes: the LaTeX of one display (normalised by `derive.lecture.source`). Gives: `statements`,
 the list of its statements, each a LaTeX string. May import: the standard library,
-:mod:`derive.lecture.alignment_arrays`.
+:mod:`derive.lecture.alignment_arrays`, :mod:`derive.lecture.latex_spaces`.
 
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
 other display environments, which are dropped; an aligned row of column pairs side by side,
@@ -24,6 +24,7 @@ from __future__ import annotations
 import re
 
 from derive.lecture import alignment_arrays
+from derive.lecture.latex_spaces import ONE_SPACING, QUAD, SPACING
 
 _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
          "multline", "multline*", "eqnarray", "eqnarray*", "cases", "flalign", "flalign*", "alignat", "alignat*",
@@ -32,7 +33,7 @@ _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*",
          "dcases", "dcases*", "rcases", "rcases*", "drcases", "drcases*")
 
 _SYSTEM_OPEN = re.compile(r"\\left\s*(?:\\\{|\\lbrace)\s*(?P<array>\\begin\{array\}\s*\{[^{}]*\})?")
-_SYSTEM_ARRAY_END = re.compile(r"\\end\{array\}(?=\s*(?:\\right\s*\.|\\quad|\\qquad|$))")
+_SYSTEM_ARRAY_END = re.compile(r"\\end\{array\}(?=\s*(?:\\right\s*\.|" + QUAD + "|$))")
 _SET_CLOSE = re.compile(r"\\right\s*(?:\\\}|\\rbrace)")
 
 
@@ -139,7 +140,7 @@ def _text_only(piece: str) -> bool:
 _CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?(?:\s*(?:\\?\#|no\.)?\s*\d+)?\s*\}")
 """``\\text{const}``; a text numbering its constants writes ``\\text{constant \\#2}``."""
 
-_TRAILING_WORDS = re.compile(r"(?:[,;&\s]|\\quad|\\qquad|\\[,;:!]|&)*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
+_TRAILING_WORDS = re.compile(r"(?:[,;&]|" + ONE_SPACING + r")*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
 
 _CONSTANT_WORDS = re.compile(r"\\(?:text|mbox|textrm|hbox)\s*\{\s*[(（]?\s*(?:const|constant|cst|常数|常量|Konstante|constante)\.?\s*[)）]?\s*\}")
 """Words after a statement that say it is a constant, in the languages texts are written in."""
@@ -259,7 +260,7 @@ def statements(latex: str) -> list[str]:
 
 
 # "and" between two statements, spaced with ~ or \quad (``a = b ~~~\text{and}~~~ c = d``): a cut
-_AND = re.compile(r"(?:~|\\[,;:!]|\\q?quad|\s)*\\(?:text|mbox|textrm|mathrm)\s*\{\s*and\s*\}(?:~|\\[,;:!]|\\q?quad|\s)*")
+_AND = re.compile(SPACING + r"\\(?:text|mbox|textrm|mathrm)\s*\{\s*and\s*\}" + SPACING)
 
 
 _OPEN_END = re.compile(r"(?:(?<![<>!\\])=|\+|-|\\times|\\cdot)$")
@@ -307,13 +308,17 @@ def _sign_cases(piece: str) -> list[str]:
     return [_PM.sub(lambda m: sign if m.group(1) == "pm" else other, piece)
             for sign, other in (("+", "-"), ("-", "+"))]
 
+_LEADING = re.compile(r"^(?:[,.;:]|" + ONE_SPACING + ")+")
+_TRAILING = re.compile(r"(?:(?<!\\)[,.;:]|" + ONE_SPACING + ")+$")
+
+
 def _trimmed(s: str) -> str:
-    """Without spacing commands and punctuation at its ends."""
+    """Without spacing (quads too) and punctuation at its ends."""
     prev = None
     while prev != s:
         prev = s
-        s = re.sub(r"^(?:\s|[,.;:]|\\[,;:! ]|\\q?quad)+", "", s)
-        s = re.sub(r"(?:\s|(?<!\\)[,.;:]|\\[,;:! ]|\\q?quad)+$", "", s)
+        s = _LEADING.sub("", s)
+        s = _TRAILING.sub("", s)
     return s
 
 def _colon_parts(row: str) -> list[str]:

@@ -6,17 +6,18 @@ not the sum of the F_i the text means), else None. The reader judges it a typo w
 rest of the statement: whatever the sum stands for, a summand that does not change with the
 summation index is not what a sum of n terms writes.
 
-May import: the standard library and :mod:`derive.lecture.latex`.
+May import: the standard library, :mod:`derive.lecture.latex` and :mod:`derive.lecture.latex_spaces`.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import QUAD
 
 _SUM = re.compile(r"\\sum(?:\\limits)?\s*_\s*(?:\{\s*([A-Za-z])\s*(?:=\s*[0-9A-Za-z]+\s*)?\}|([A-Za-z]))"
                   r"\s*\^\s*(?:\{\s*([A-Za-z])\s*\}|([A-Za-z]))")
-_ENDS = re.compile(r"(?<![<>!\\])=|[+\-]|\\(?:sum|quad|qquad|approx|equiv|le|ge|neq)(?![A-Za-z])|[<>]|\\right")
+_ENDS = re.compile(r"(?<![<>!\\])=|[+\-]|\\(?:sum|approx|equiv|le|ge|neq)(?![A-Za-z])|" + QUAD + r"|[<>]|\\right")
 
 
 def _summand_end(text: str, start: int) -> int:

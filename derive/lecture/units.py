@@ -7,20 +7,22 @@ digit, so ``r_{\\text{cm}}`` and words such as ``\\text{constante}`` stay as the
 10000 and ``10{,}000 \\times 2\\pi`` a product of numbers. A unit typed in plain italic letters after a tie
 ``~`` after a number or a closed group, at the end of a member, ``m=0.1~kg``, ``\\frac{mgd}{I_z\\dot{\\psi}}~\\frac{rad}{s}``, ``\\frac{2\\pi}{\\dot{\\phi}}~s``
 (as notebooks write them), is dropped too: the tie sets a unit apart from the formula, which a product
-of symbols never needs. Takes and gives LaTeX; imports nothing.
+of symbols never needs. Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` only.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spaces import ONE_SPACE, QUAD, SPACE
+
 _UNIT = r"(?:kg|m|cm|mm|km|s|ms|min|N|J|kJ|Pa|rad|RPM|rpm|rev|Hz|deg)"
-_UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|\\,|\s)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
+_UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|" + ONE_SPACE + r")\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
 _UNIT_TOKEN = (r"\\(?:text|mathrm|mbox|textrm)\s*\{\s*" + _UNIT_EXPR + r"\s*\}(?:\s*\^\s*(?:\{\s*-?\d+\s*\}|-?\d))?")
-_UNITS = re.compile(r"(?<=\d)(?:\s|\\,|\\;|~)*" + _UNIT_TOKEN + r"(?:\s*(?:\\cdot|\\,|\s)\s*" + _UNIT_TOKEN + r")*")
+_UNITS = re.compile(r"(?<=\d)" + SPACE + _UNIT_TOKEN + r"(?:\s*(?:\\cdot|" + ONE_SPACE + r")\s*" + _UNIT_TOKEN + r")*")
 """A unit, or a product of units, right after a number: ``2.50\\text{ kg}``, ``0.04\\text{ kg}\\cdot\\text{m}^2``."""
 _PLAIN_UNIT = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot)\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
 _TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s*\{\s*" + _PLAIN_UNIT + r"\s*\}\s*\{\s*" + _PLAIN_UNIT + r"\s*\})"
-                        r"(?:\s|\\[,;!])*(?=$|[,;.=)&]|\\\\|\\quad|\\qquad|\\text|\\tag|\\label|\\notag|\\nonumber)")
+                        + SPACE + r"(?=$|[,;.=)&]|\\\\|" + QUAD + r"|\\text|\\tag|\\label|\\notag|\\nonumber)")
 """A unit in plain letters after a tie that follows a number or a closing brace, closing a member
 (a tag or a label after it closes it too): ``0.1~kg``, ``}~\\frac{rad}{s}`` (or ``\\dfrac``), ``}~s``
 (``a~s`` stays a product)."""

@@ -37,6 +37,7 @@ import sympy as sp
 
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import SPACE
 from derive.lecture import point_labels
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
@@ -109,11 +110,12 @@ of its tangential or normal part, never a power or a transpose (t is written τ 
 takes a bold symbol's ^t for a transpose)."""
 
 
-_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?(?:\s|\\[,;:!])*(?:\\(?:left|bigl|Bigl|big|Big)\s*)?\(\s*"
+_MOMENT_OF = re.compile(r"M\s*_\s*\{?\s*([xyz])\s*\}?" + SPACE + r"(?:\\(?:left|bigl|Bigl|big|Big)\s*)?\(\s*"
                         r"(\\vec\s*\{?\s*F\s*\}?\s*(?:_\s*(\{[^{}]*\}|[A-Za-z0-9]))?)\s*"
                         r"(?:\\(?:right|bigr|Bigr|big|Big)\s*)?\)")
 """M_z(𝐅ᵢ), the moment of a force about an axis, its argument in plain or sized brackets, spaced
-or not (``M_z \\left(\\vec F_i\\right)``, ``M_z \\; (\\vec F_i)``): (𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
+or not (``M_z \\left(\\vec F_i\\right)``, ``M_z \\; (\\vec F_i)``; never across a quad, which ends a statement):
+(𝐫ᵢ × 𝐅ᵢ)_z, 𝐫ᵢ the point the force acts at."""
 
 
 def prepare(text: str) -> str:

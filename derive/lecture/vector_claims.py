@@ -18,6 +18,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import SPACE
 from derive.lecture import vector_models as vm
 from derive.lecture import vectors as vc
 from derive.lecture.comparing import Mismatch, column, free
@@ -305,7 +306,7 @@ class VectorStatements:
 _LABELLED = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
 _POSITION_RATE = re.compile(r"\\frac\s*\{\s*" + vm.DIFFERENTIAL + r"\s*" + _LABELLED % r"(?:i|I|N|e)" + r"\s*\}\s*\{\s*"
                             + vm.DIFFERENTIAL + r"\s*t\s*\}\s*=\s*"
-                            r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)(?:\s|\\[,;!])*" + _LABELLED % r"(?:b|B)" + r"\s*$")
+                            r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)" + SPACE + _LABELLED % r"(?:b|B)" + r"\s*$")
 _WEIGHT = re.compile(r"(?:g|grav(?:ity)?)?")  # the subscripts a text gives its weight: F, F_g, W_grav
 _DOWN = re.compile(r"north[- ]east[- ]down|\bNED\b|\$?\+?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?down", re.I)
 _UP = re.compile(r"east[- ]north[- ]up|\bENU\b|\$?z\$?\s*\(?(?:axis\s+)?(?:points?\s+)?\(?up(?:ward)?\b", re.I)

@@ -13,6 +13,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import SPACE
 from derive.lecture.vector_parser import LAW, _FreeIndex
 from derive.lecture.zero_test import expanded, expanded_derivative
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
@@ -320,10 +321,9 @@ def _particle_index(text: str) -> str | None:
 
 _VEC = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{(?:[^{}]|\{[^{}]*\})*\}"
 _LABEL = r"(\{[^{}]*\}|[A-Za-z])"
-_GAP = r"(?:\s*\\[,;!])*"
-DIFFERENTIAL = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + _GAP
+DIFFERENTIAL = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + SPACE
 """The differential d, upright or italic, with the spacing a text may set after it (``\\mathrm{d}\\,``)."""
-_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + DIFFERENTIAL + r"\s*\}" + _GAP + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
+_RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + DIFFERENTIAL + r"\s*\}" + SPACE + r"(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
 _ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
 _RATE_BAR = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
 _RATE_DT = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*_\s*" + _LABEL + r"\s*\}")

@@ -3,7 +3,7 @@ into atoms and tokens, and `Vocabulary`, which looks each atom up among the deri
 quantities and their usual spellings (or, open to the text's own names, makes it a `Generic`
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
-May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, SymPy.
+May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`, SymPy.
 """
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.lecture import elliptic
+from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
 from derive.symbolic.lagrangian import ACCELS
@@ -113,8 +114,11 @@ DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "til
                **{m: "mark" for m in ("bar", "breve", "check", "acute", "grave", "mathring")}}
 """An accent the derivation gives no meaning (``\\bar``, ``\\breve``, …) marks a symbol of the text's
 own, apart from the letter without it (`Atom.mark`)."""
-SPACES = {",", ";", ":", "!", " ", "quad", "qquad",  "left", "right", "big", "Big", "bigg", "Bigg",
-          "displaystyle", "nonumber", "limits", "bigl", "bigr", "Bigl", "Bigr"}
+SPACES = SPACE_NAMES | QUAD_NAMES | {"left", "right", "big", "Big", "bigg", "Bigg", "displaystyle", "nonumber",
+                                     "limits", "bigl", "bigr", "Bigl", "Bigr"}
+"""The commands the scanner skips: the spacing, and the sizing and style that set nothing apart."""
+
+
 class CrossMatrix(sp.Function):
     """[v]ₓ, the cross-product (skew) matrix of a column v: [v]ₓ w = v × w. Evaluated once v is a
     3-column (a text's symbols are substituted first); a product's factor v·s moves out."""

@@ -1,0 +1,120 @@
+"""The notes reader on LaTeX's spaces (derive/lecture/latex_spaces.py, the one place that says what a
+space is): every reader that recognises a form reads it the same whatever space sets its factors
+apart — whitespace, thin ``\\,``, medium ``\\:``, thick ``\\;``, negative thin ``\\!``, the control
+space ``\\ `` or a tie ``~`` — and a quad, the space a text sets between two statements, is not taken
+for a space between factors where a reader reads factors across it."""
+import pytest
+
+from derive.lecture import fixed_axis, formula_names, hat_maps, kane_notation, source, stated_convention
+from derive.lecture import names as nm
+from derive.lecture import stated_theorems, vector_models
+from derive.lecture import vector_algebra_model as va
+from derive.lecture import vocabulary as vc
+from derive.lecture.arithmetic import arithmetic
+from derive.lecture.statements import statements
+from derive.lecture.units import plain_numbers
+
+SPACES = (" ", "\\,", "\\:", "\\;", "\\!", "\\ ", "~")
+SYMBOLS = ("\\,", "\\:", "\\;", "\\!", "\\ ")
+QUADS = (" \\quad ", " \\qquad ")
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_an_angular_velocity_spaced_off_its_unit_vector_sets_the_axis(space):
+    assert fixed_axis.setting(f"\\vec\\omega = \\omega{space}\\hat k") == 2
+
+
+@pytest.mark.parametrize("quad", QUADS)
+def test_a_unit_vector_after_a_quad_sets_no_axis(quad):
+    assert fixed_axis.setting(f"\\vec\\omega = \\omega{quad}\\hat k") is None
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_the_weight_spaced_between_mass_and_gravity_names_the_mass(space):
+    names = nm.Names()
+    formula_names.learn(names, f"$V = m{space}g d \\cos\\theta$")
+    assert names.symbols[("m", "")] == "mass"
+
+
+@pytest.mark.parametrize("quad", QUADS)
+def test_a_mass_and_a_gravity_in_two_statements_name_nothing(quad):
+    names = nm.Names()
+    formula_names.learn(names, f"$x = m{quad}g = 9.81$")
+    assert ("m", "") not in names.symbols
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_the_moment_of_a_force_spaced_off_its_bracket_is_read(space):
+    assert va.prepare(f"M_z{space}(\\vec F_i)") == "(\\vec r_i \\times \\vec F_i)_z"
+
+
+@pytest.mark.parametrize("quad", QUADS)
+def test_a_bracket_after_a_quad_is_no_moments_argument(quad):
+    assert "M_z" in va.prepare(f"M_z{quad}(\\vec F_i)")
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_frames_prescript_spaced_off_its_vector_is_dropped(space):
+    assert "^A" not in kane_notation.rewrite(f"{{}}^A{space}\\bar{{H}}^{{B/B_o}} = 0", known=True)
+
+
+@pytest.mark.parametrize("quad", QUADS)
+def test_a_superscript_before_a_quad_is_no_frame_of_the_next_statements_vector(quad):
+    assert "^A" in kane_notation.rewrite(f"x^A{quad}\\bar{{H}}^{{B/B_o}} = 0", known=True)
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_koenigs_theorem_with_any_space_between_its_factors_is_recognised(space):
+    s = space
+    stated = f"T = \\frac{{1}}{{2}}{s}m{s}v_c^2 + \\frac{{1}}{{2}}{s}J_C{s}\\omega^2"
+    assert stated_theorems.theorem(stated) == stated_theorems.KOENIG
+    assert stated_theorems.theorem(stated.replace("v_c^2", "v_c")) is None
+
+
+@pytest.mark.parametrize("space", SPACES + QUADS)
+def test_a_hat_map_read_across_any_spacing_of_its_display(space):
+    # a display is read whole there, before it is cut into statements: a quad may space one statement
+    body = f"$$R^T{space}\\dot R ={space}\\widehat{{\\Omega}}$$"
+    assert hat_maps.body_velocities(body) == [(1, "\\Omega")]
+
+
+@pytest.mark.parametrize("space", SPACES + QUADS)
+def test_three_turns_set_side_by_side_state_their_sequence(space):
+    body = f"$$R = R_3(\\phi){space}R_1(\\theta){space}R_3(\\psi)$$"
+    assert [(s.convention, s.angles) for s in stated_convention.stated(body)] == [("z-x-z", ("phi", "theta", "psi"))]
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_unit_spaced_off_its_number_is_dropped(space):
+    assert plain_numbers(f"m = 2{space}\\text{{kg}}").strip() == "m = 2"
+    assert plain_numbers(f"m = 0.1~kg{space}").strip() == "m = 0.1"
+
+
+@pytest.mark.parametrize("space", SYMBOLS)
+def test_a_space_inside_a_script_or_an_operator_name_sets_nothing_apart(space):
+    assert source.normalize(f"x_{{\\beta{space}\\alpha}} = \\operatorname{{d{space}}}t") == \
+        "x_{\\beta \\alpha} = \\mathrm{d}t"
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_relative_rate_spaced_after_its_differentials_is_the_rate_in_the_body(space):
+    s = space
+    assert vector_models.frame_rates(f"\\frac{{\\tilde{{d}}{s}\\vec{{n}}}}{{d{s}t}} = 0") == \
+        "\\left(\\frac{d \\vec{n}}{dt}\\right)_{b} = 0"
+
+
+@pytest.mark.parametrize("space", SPACES + QUADS)
+def test_words_after_a_statement_go_with_the_spacing_before_them(space):
+    assert statements(f"\\omega_x {space}\\text{{is constant}}") == ["\\omega_x"]
+    assert statements(f"a = b {space}\\text{{and}}{space} c = d") == ["a = b", "c = d"]
+
+
+@pytest.mark.parametrize("quad", QUADS)
+def test_numbers_on_either_side_of_a_quad_are_not_a_product(quad):
+    assert arithmetic(f"x = 2{quad}3 = 6") == []
+    assert [v for v, _ in arithmetic("x = 2 \\, 3 = 6")] == ["holds"]
+
+
+@pytest.mark.parametrize("space", SYMBOLS + QUADS)
+def test_the_scanner_skips_every_spacing_command(space):
+    assert [t.kind for t in vc.scan(f"a{space} b")] == ["atom", "atom"]
