@@ -28,6 +28,12 @@ def test_an_arithmetic_slip_fails_and_a_value_off_in_its_last_digits_is_left_unc
     assert [v for v, _ in arithmetic(r"\omega_n = \frac{1.01}{0.17650} \approx 5.75")] == ["unchecked"]
 
 
+def test_a_space_before_a_decimal_point_is_not_a_product():
+    # math mode sets no space there: 0 .8976 is 0.8976, never 0 times .8976
+    assert "0.8976" in plain_numbers(r"\Omega_1= i0 .8976\omega_1")
+    assert plain_numbers(r"x = 2 y") == r"x = 2 y"
+
+
 def test_links_with_symbols_are_not_judged_by_the_numbers():
     # the symbols' values are not substituted: L may be a later "effective" value
     assert arithmetic(r"\omega_n = \frac{L}{I_x} = 5.72") == []
