@@ -94,3 +94,21 @@ def test_a_member_in_symbols_the_text_gave_numbers_is_worked_out_and_only_ever_c
     off = kept.check_text(head + "- $d = 2r = 0.5~m$\n")        # r may mean something else there
     assert not any(c.kind == "arithmetic" for c in off)
     assert not any(c.verdict in ("typo", "fails") for c in off)
+
+
+_FREQUENCY = ("A body with principal moments $I_1$, $I_2$, $I_3$ spins about a principal axis; a small "
+              "disturbance oscillates with\n\n"
+              "$$\n\\Omega_1 = \\omega_1 \\sqrt{\\frac{ (I_1 - I_3) (I_1 - I_2)}{ I_2I_3}}\n$$\n\n"
+              "For a racquet, whose moments a table gives, the frequency is\n\n")
+
+
+def test_a_worked_value_beside_a_formula_in_moments_the_text_gives_no_value_is_not_flagged():
+    claims = kept.check_text(_FREQUENCY + "$$\n\\Omega_1= 0 .8976\\omega_1\n$$\n")
+    worked = [c for c in claims if c.line == 9]
+    assert worked and all(c.verdict == "unchecked" and "a worked value" in c.why for c in worked)
+    assert "I_1" in worked[0].why or "I_{1}" in worked[0].why
+
+
+def test_the_same_statement_without_a_decimal_number_is_still_compared():
+    claims = kept.check_text(_FREQUENCY + "$$\n\\Omega_1= 2\\omega_1\n$$\n")
+    assert any(c.line == 9 and c.verdict in ("typo", "fails") for c in claims)
