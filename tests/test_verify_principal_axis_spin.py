@@ -1,0 +1,34 @@
+"""A spin about a principal axis and its small disturbance, as stability sections write them: the
+angular velocity along the body's principal axes names its components, prose that calls them "very
+small" linearises, and the rate of a body component of the angular momentum is Iᵢω̃̇ᵢ
+(derive/lecture/vector_claims.py, derive/lecture/notes.py, derive/lecture/vocabulary.py)."""
+import kept_readings as kept
+
+_HEAD = ("A rigid body with principal moments $I_1$, $I_2$, $I_3$ turns freely. Let it spin about the first "
+         "principal axis:\n\n"
+         "$$\n\\boldsymbol{\\omega} = \\omega_1 \\widehat{\\mathbf{e}}_1\n$$\n\n"
+         "A disturbance gives it components along the other two axes:\n\n"
+         "$$\n\\boldsymbol{\\omega} = \\omega_1 \\widehat{\\mathbf{e}}_1 + \\lambda \\widehat{\\mathbf{e}}_2 + "
+         "\\mu \\widehat{\\mathbf{e}}_3\n$$\n\n")
+
+
+def _at(claims, line):
+    return [c for c in claims if c.line == line]
+
+
+def test_the_angular_velocity_along_the_principal_axes_sets_its_components_and_is_no_claim():
+    claims = kept.check_text(_HEAD + "Then\n\n$$\n\\dot{\\lambda} = \\frac{I_3 - I_1}{I_2} \\omega_1 \\mu\n$$\n")
+    spin, disturbed = _at(claims, 3), _at(claims, 9)
+    assert [c.verdict for c in spin] == ["unchecked"] and "_{2} = 0" in spin[0].why
+    assert [c.verdict for c in disturbed] == ["unchecked"] and "_{2} = \\lambda" in disturbed[0].why
+    assert [c.verdict for c in _at(claims, 15)] == ["holds"]          # Euler's second equation in λ, μ
+
+
+def test_a_slip_in_the_named_components_is_flagged():
+    claims = kept.check_text(_HEAD + "Then\n\n$$\n\\dot{\\lambda} = \\frac{I_1 - I_3}{I_2} \\omega_1 \\mu\n$$\n")
+    assert any(c.verdict in ("typo", "fails") for c in _at(claims, 15))
+
+
+def test_a_vector_with_an_expression_along_an_axis_is_not_read_as_its_components():
+    text = "$$\n\\boldsymbol{\\omega} = \\omega \\cos\\theta \\widehat{\\mathbf{e}}_1\n$$\n"
+    assert not any("principal axes" in c.why for c in kept.check_text(text))
