@@ -32,3 +32,12 @@ def test_a_slip_in_the_named_components_is_flagged():
 def test_a_vector_with_an_expression_along_an_axis_is_not_read_as_its_components():
     text = "$$\n\\boldsymbol{\\omega} = \\omega \\cos\\theta \\widehat{\\mathbf{e}}_1\n$$\n"
     assert not any("principal axes" in c.why for c in kept.check_text(text))
+
+
+def test_prose_that_calls_components_very_small_linearises_the_equations_after_it():
+    head = "A body spins about its first principal axis, $\\omega_1 = \\Omega$.\n\n"
+    eq = "$$\nI_1\\dot{\\omega}_1 = 0\n$$\n"
+    small = kept.check_text(head + "Here $\\omega_2$ and $\\omega_3$ are very small, so\n\n" + eq)
+    assert [c.verdict for c in _at(small, 5)] == ["holds"] and "first order" in _at(small, 5)[0].why
+    exact = kept.check_text(head + "Here $\\omega_2$ and $\\omega_3$ are the other components, so\n\n" + eq)
+    assert [c.verdict for c in _at(exact, 5)] != ["holds"]
