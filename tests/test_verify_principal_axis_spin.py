@@ -41,3 +41,11 @@ def test_prose_that_calls_components_very_small_linearises_the_equations_after_i
     assert [c.verdict for c in _at(small, 5)] == ["holds"] and "first order" in _at(small, 5)[0].why
     exact = kept.check_text(head + "Here $\\omega_2$ and $\\omega_3$ are the other components, so\n\n" + eq)
     assert [c.verdict for c in _at(exact, 5)] != ["holds"]
+
+
+def test_the_rate_of_a_body_component_of_the_angular_momentum_is_its_moment_times_the_rate():
+    text = "With $L_i = I_i\\omega_i$ in principal axes, the free body's equations read\n\n"
+    good = kept.check_text(text + "$$\nI_2I_3\\dot{L}_1 = (I_2 - I_3)L_2L_3\n$$\n")
+    assert [c.verdict for c in _at(good, 3)] == ["holds"]
+    bad = kept.check_text(text + "$$\nI_2I_3\\dot{L}_1 = (I_3 - I_2)L_2L_3\n$$\n")
+    assert any(c.verdict in ("typo", "fails") for c in _at(bad, 3))
