@@ -3,6 +3,7 @@ between the plain numbers of a chain (derive/lecture/units.py, derive/lecture/ar
 import kept_readings as kept
 
 from derive.lecture.arithmetic import arithmetic
+from derive.lecture.statements import statements
 from derive.lecture.units import plain_numbers
 
 
@@ -112,3 +113,11 @@ def test_a_worked_value_beside_a_formula_in_moments_the_text_gives_no_value_is_n
 def test_the_same_statement_without_a_decimal_number_is_still_compared():
     claims = kept.check_text(_FREQUENCY + "$$\n\\Omega_1= 2\\omega_1\n$$\n")
     assert any(c.line == 9 and c.verdict in ("typo", "fails") for c in claims)
+
+
+def test_a_proportion_is_one_statement_never_a_label_before_a_setting_of_its_last_name():
+    assert statements(r"I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333") == \
+        [r"I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333"]
+    assert statements(r"\theta: \omega_z = \omega_3") == [r"\omega_z = \omega_3"]      # a label stays one
+    claims = kept.check_text("The moments are in the ratio $I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333$.\n")
+    assert not any(c.kind == "setting" for c in claims)
