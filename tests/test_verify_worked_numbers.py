@@ -121,3 +121,9 @@ def test_a_proportion_is_one_statement_never_a_label_before_a_setting_of_its_las
     assert statements(r"\theta: \omega_z = \omega_3") == [r"\omega_z = \omega_3"]      # a label stays one
     claims = kept.check_text("The moments are in the ratio $I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333$.\n")
     assert not any(c.kind == "setting" for c in claims)
+
+
+def test_i_in_an_exponent_of_e_is_the_imaginary_unit_and_an_index_i_stays_a_letter():
+    assert plain_numbers(r"\lambda (t) = Ae^{i\Omega t} + Be^{-i\Omega t}") == \
+        r"\lambda (t) = Ae^{\sqrt{-1}\Omega t} + Be^{-\sqrt{-1}\Omega t}"
+    assert plain_numbers(r"\sum_i m_i x_i + \angle^{i}") == r"\sum_i m_i x_i + \angle^{i}"

@@ -28,6 +28,8 @@ _TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s
 _THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
 _NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
 _SPACED_POINT = re.compile(r"(?<=\d)\s+(?=\.\d)")
+_EXP_I = re.compile(r"(?<!\\)((?:\\mathrm\s*\{\s*e\s*\}|(?<![A-Za-z]{2})e)\s*\^\s*\{\s*-?\s*)i")
+"""The imaginary unit in an exponent of e, ``e^{i\\Omega t}``, ``e^{-i\\omega t}``: i there is √−1."""
 """A space before a decimal point, ``0 .8976``: math mode sets no space there, so it is the number 0.8976."""
 
 
@@ -35,6 +37,7 @@ def plain_numbers(latex: str) -> str:
     """The formula with the units after its numbers dropped, ``10{,}000`` and ``0 .8976`` joined and
     ``\\times`` between two numbers read as a product."""
     latex = _SPACED_POINT.sub("", _THOUSANDS.sub("", latex))
+    latex = _EXP_I.sub(r"\1\\sqrt{-1}", latex)
     latex = _UNITS.sub(" ", latex)
     latex = _TIED_UNIT.sub(" ", latex)
     return _NUMBER_TIMES.sub(r" \\cdot ", latex)
