@@ -49,3 +49,15 @@ def test_the_rate_of_a_body_component_of_the_angular_momentum_is_its_moment_time
     assert [c.verdict for c in _at(good, 3)] == ["holds"]
     bad = kept.check_text(text + "$$\nI_2I_3\\dot{L}_1 = (I_3 - I_2)L_2L_3\n$$\n")
     assert any(c.verdict in ("typo", "fails") for c in _at(bad, 3))
+
+
+_OSCILLATOR = (_HEAD + "where $\\lambda$ and $\\mu$ are very small. Eliminating $\\mu$:\n\n"
+               "$$\n\\ddot{\\lambda} + \\left(\\frac{(I_1 - I_3) (I_1 - I_2)}{ I_2I_3} \\omega^2_1 \\right) \\lambda = 0\n$$\n\n"
+               "Its solution is\n\n$$\n\\lambda (t) = Ae^{i\\Omega t} + Be^{-i\\Omega t}\n$$\n\nwith\n\n")
+
+
+def test_a_disturbance_in_complex_exponentials_solves_the_oscillator_about_a_steady_spin():
+    good = kept.check_text(_OSCILLATOR + "$$\n\\Omega = \\omega_1 \\sqrt{\\frac{(I_1 - I_3) (I_1 - I_2)}{I_2I_3}}\n$$\n")
+    assert [c.verdict for c in _at(good, 21)] == ["holds"]
+    wrong = kept.check_text(_OSCILLATOR + "$$\n\\Omega = \\omega_1 \\sqrt{\\frac{(I_1 - I_3) (I_1 - I_2)}{I_1I_3}}\n$$\n")
+    assert any(c.verdict in ("typo", "fails") for c in _at(wrong, 21))
