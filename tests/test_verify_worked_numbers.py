@@ -3,6 +3,7 @@ between the plain numbers of a chain (derive/lecture/units.py, derive/lecture/ar
 import kept_readings as kept
 
 from derive.lecture.arithmetic import arithmetic
+from derive.lecture.statements import statements
 from derive.lecture.units import plain_numbers
 
 
@@ -26,6 +27,12 @@ def test_the_arithmetic_of_a_chain_holds_to_the_digits_it_writes():
 def test_an_arithmetic_slip_fails_and_a_value_off_in_its_last_digits_is_left_unchecked():
     assert [v for v, _ in arithmetic(r"\omega_n = \frac{1.01}{0.17650} \approx 5.27")] == ["fails"]
     assert [v for v, _ in arithmetic(r"\omega_n = \frac{1.01}{0.17650} \approx 5.75")] == ["unchecked"]
+
+
+def test_a_space_before_a_decimal_point_is_not_a_product():
+    # math mode sets no space there: 0 .8976 is 0.8976, never 0 times .8976
+    assert "0.8976" in plain_numbers(r"\Omega_1= i0 .8976\omega_1")
+    assert plain_numbers(r"x = 2 y") == r"x = 2 y"
 
 
 def test_links_with_symbols_are_not_judged_by_the_numbers():
@@ -88,3 +95,35 @@ def test_a_member_in_symbols_the_text_gave_numbers_is_worked_out_and_only_ever_c
     off = kept.check_text(head + "- $d = 2r = 0.5~m$\n")        # r may mean something else there
     assert not any(c.kind == "arithmetic" for c in off)
     assert not any(c.verdict in ("typo", "fails") for c in off)
+
+
+_FREQUENCY = ("A body with principal moments $I_1$, $I_2$, $I_3$ spins about a principal axis; a small "
+              "disturbance oscillates with\n\n"
+              "$$\n\\Omega_1 = \\omega_1 \\sqrt{\\frac{ (I_1 - I_3) (I_1 - I_2)}{ I_2I_3}}\n$$\n\n"
+              "For a racquet, whose moments a table gives, the frequency is\n\n")
+
+
+def test_a_worked_value_beside_a_formula_in_moments_the_text_gives_no_value_is_not_flagged():
+    claims = kept.check_text(_FREQUENCY + "$$\n\\Omega_1= 0 .8976\\omega_1\n$$\n")
+    worked = [c for c in claims if c.line == 9]
+    assert worked and all(c.verdict == "unchecked" and "a worked value" in c.why for c in worked)
+    assert "I_1" in worked[0].why or "I_{1}" in worked[0].why
+
+
+def test_the_same_statement_without_a_decimal_number_is_still_compared():
+    claims = kept.check_text(_FREQUENCY + "$$\n\\Omega_1= 2\\omega_1\n$$\n")
+    assert any(c.line == 9 and c.verdict in ("typo", "fails") for c in claims)
+
+
+def test_a_proportion_is_one_statement_never_a_label_before_a_setting_of_its_last_name():
+    assert statements(r"I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333") == \
+        [r"I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333"]
+    assert statements(r"\theta: \omega_z = \omega_3") == [r"\omega_z = \omega_3"]      # a label stays one
+    claims = kept.check_text("The moments are in the ratio $I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333$.\n")
+    assert not any(c.kind == "setting" for c in claims)
+
+
+def test_i_in_an_exponent_of_e_is_the_imaginary_unit_and_an_index_i_stays_a_letter():
+    assert plain_numbers(r"\lambda (t) = Ae^{i\Omega t} + Be^{-i\Omega t}") == \
+        r"\lambda (t) = Ae^{\sqrt{-1}\Omega t} + Be^{-\sqrt{-1}\Omega t}"
+    assert plain_numbers(r"\sum_i m_i x_i + \angle^{i}") == r"\sum_i m_i x_i + \angle^{i}"

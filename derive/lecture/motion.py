@@ -475,11 +475,13 @@ class Motion:
         t = lx.t
         chosen = []
         regime = self._regime()
+        # a spin whose two other components the text calls small is constant to first order
+        steady = {w for w in lx.W if set(lx.W) - {w} <= self.ctx.first_order}
         for w in sol:
             second = next((r.xreplace({d: sp.Derivative(lx.W[i], lx.t, 2) for d, i in dd.items()})
                            for r, dd, settings in reversed(self.ctx.eoms2)
                            if settings == regime and lx.W.index(w) in dd.values()
-                           and free(r) & set(lx.W) <= set(sol) | {lx.W[lx.W.index(w)]}), None)
+                           and free(r) & set(lx.W) <= set(sol) | {lx.W[lx.W.index(w)]} | steady), None)
             raw = second if second is not None else self._eom_for(lx.W.index(w), self.ctx.subs, sol)
             raw = raw if raw is None else self._own_defs(raw)
             if raw is not None and raw not in chosen:

@@ -59,8 +59,9 @@ ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
-_SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:(?:first|1st)[- ]order\s+)?small\b|\bsmall of (?:the )?first order\b", re.I)
-"""Prose that calls the quantities before it in its sentence small (to first order)."""
+_SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:very\s+)?(?:(?:first|1st)[- ]order\s+)?small\b|\bsmall of (?:the )?first order\b", re.I)
+"""Prose that calls the quantities before it in its sentence small (to first order): "are small", "are
+very small", "is first-order small"."""
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 

@@ -46,6 +46,7 @@ from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture import rearranged
 from derive.lecture import summation_index
+from derive.lecture import worked_values
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.chain_links import ChainLinks
@@ -528,6 +529,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
             loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
+        undecided = undecided or worked_values.unchecked(piece, val, [self._resolve(f) for f in targets], self.tex)
         if undecided and undecided.startswith("an equation for the angles") and len(targets) == 1 and \
                 self._at_stated_angles(line, piece, kind, value, val, self._resolve(targets[0]), parsed, k, keep):
             return

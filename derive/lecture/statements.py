@@ -321,12 +321,16 @@ def _trimmed(s: str) -> str:
         s = _TRAILING.sub("", s)
     return s
 
+_PROPORTION = re.compile(r"[^=:]*(?<![\\:<>!]):(?![:=])[^=]*(?<![<>!\\])=(?!=)[^=]*(?<![\\:<>!]):(?![:=])[^=]*$")
+"""A proportion, colons on both sides of its one ``=``: ``I_{11} : I_{22} : I_{33} = 2.5833 : 0.2550 : 2.8333``."""
+
+
 def _colon_parts(row: str) -> list[str]:
     """``label: statement`` → the statement; ``case: statement`` (θ = 0: ω_z = ω₃) → both, the case
-    first (a statement of a value, read as the case it is)."""
+    first (a statement of a value, read as the case it is); a proportion as written (no label in it)."""
     parts = [p for p in re.split(r"(?<!\\)(?<![:<>!])\s*:(?!=)\s*", row)]
-    if len(parts) == 1:
-        return parts
+    if len(parts) == 1 or _PROPORTION.match(row):
+        return [row]                      # a : b : c = x : y : z is one statement, a proportion
     out = []
     for k, part in enumerate(parts):
         if k < len(parts) - 1 and not _RELATION_IN.search(part):

@@ -4,7 +4,8 @@ between two numbers.
 ``0.04050\\text{ kg}\\cdot\\text{m}^2`` is the number 0.04050: a unit is a whitelisted name in
 ``\\text{…}``/``\\mathrm{…}`` (with ``/``, powers, ``\\cdot`` or spaces between names) right after a
 digit, so ``r_{\\text{cm}}`` and words such as ``\\text{constante}`` stay as they are. ``10{,}000`` is
-10000 and ``10{,}000 \\times 2\\pi`` a product of numbers. A unit typed in plain italic letters after a tie
+10000 and ``10{,}000 \\times 2\\pi`` a product of numbers; ``0 .8976`` (a space before the decimal
+point, which math mode does not set) is 0.8976. A unit typed in plain italic letters after a tie
 ``~`` after a number or a closed group, at the end of a member, ``m=0.1~kg``, ``\\frac{mgd}{I_z\\dot{\\psi}}~\\frac{rad}{s}``, ``\\frac{2\\pi}{\\dot{\\phi}}~s``
 (as notebooks write them), is dropped too: the tie sets a unit apart from the formula, which a product
 of symbols never needs. Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` only.
@@ -28,12 +29,17 @@ _TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s
 (``a~s`` stays a product)."""
 _THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
 _NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
+_SPACED_POINT = re.compile(r"(?<=\d)\s+(?=\.\d)")
+_EXP_I = re.compile(r"(?<!\\)((?:\\mathrm\s*\{\s*e\s*\}|(?<![A-Za-z]{2})e)\s*\^\s*\{\s*-?\s*)i")
+"""The imaginary unit in an exponent of e, ``e^{i\\Omega t}``, ``e^{-i\\omega t}``: i there is √−1."""
+"""A space before a decimal point, ``0 .8976``: math mode sets no space there, so it is the number 0.8976."""
 
 
 def plain_numbers(latex: str) -> str:
-    """The formula with the units after its numbers dropped, ``10{,}000`` joined and ``\\times``
-    between two numbers read as a product."""
-    latex = _THOUSANDS.sub("", latex)
+    """The formula with the units after its numbers dropped, ``10{,}000`` and ``0 .8976`` joined and
+    ``\\times`` between two numbers read as a product."""
+    latex = _SPACED_POINT.sub("", _THOUSANDS.sub("", latex))
+    latex = _EXP_I.sub(r"\1\\sqrt{-1}", latex)
     latex = _UNITS.sub(" ", latex)
     latex = _TIED_UNIT.sub(" ", latex)
     return _NUMBER_TIMES.sub(r" \\cdot ", latex)

@@ -30,6 +30,11 @@ from derive.symbolic.rotations import ANGLES
 
 _VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?\\(?:vec|boldsymbol|mathbf|bm)\s*\{")
 _BODY_AXIS = re.compile(r"\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*\{\s*e\s*_\s*\{?\s*[123]")
+_OMEGA_LEFT = re.compile(r"\s*\\(?:boldsymbol|mathbf|vec|bm)\s*(?:\{\s*\\omega\s*\}|\\omega(?![A-Za-z]))\s*=(?!=)")
+_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
+           r"(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
+_ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*" + _UNIT_E)
+"""A term ``\\omega_1 \\widehat{\\mathbf{e}}_1``, ``\\lambda \\hat{\\mathbf{e}}_2``: one symbol along a body axis."""
 
 
 class VectorStatements:
@@ -40,9 +45,63 @@ class VectorStatements:
         """``\\vec{H} = I_1\\omega_1\\hat{\\boldsymbol{e_1}} + …``: a vector on the left written out
         along the body axes ê_i is the vector reader's, before the scalar one reads its letters as
         scalars (False when it is not such a statement, or that reader cannot read it)."""
+        if self._angular_velocity_along_axes(line, piece, text):
+            return True
         if not (_VECTOR_LEFT.match(text) and _BODY_AXIS.search(text)):
             return False
         return self._vectors(line, piece, text)
+
+    def _angular_velocity_along_axes(self, line, piece, text) -> bool:
+        """``\\boldsymbol{\\omega} = \\omega_1 \\widehat{\\mathbf{e}}_1 + \\lambda \\widehat{\\mathbf{e}}_2 + \\mu
+        \\widehat{\\mathbf{e}}_3``: the angular velocity written along the body's principal axes, one
+        symbol per axis, states its components. An axis left out has ω̃ᵢ = 0 (a spin about ê₁, a
+        case of the text); a symbol of the text's that it has not defined names ω̃ᵢ, its dot ω̃̇ᵢ, from
+        here on (a disturbance's λ, μ), as ω̃ᵢ itself does. Not a claim: `unchecked`, saying what it sets."""
+        head = _OMEGA_LEFT.match(text)
+        if head is None:
+            return False
+        rest, coefs = text[head.end():].strip().rstrip(".,;").strip(), {}
+        while rest:
+            m = _ALONG_AXIS.match(rest)
+            if m is None or m.group("sign") == "-" or (not m.group("sign") and coefs):
+                return False
+            k = int(m.group("a") or m.group("b") or 0) - 1
+            if k < 0 or k in coefs:
+                return False
+            coefs[k], rest = m.group("coef"), rest[m.end():].strip()
+        named, said = {}, []
+        for k, coef in coefs.items():
+            try:
+                tok = lx.scan(coef)
+                value = lx.parse(coef, self.vocab).members[0].value
+            except lx.NotRead:
+                return False
+            if value == lx.W[k]:
+                continue
+            if len(tok) != 1 or tok[0].kind != "atom" or not isinstance(value, lx.Generic) or \
+                    value in self.ctx.defs or value in self.ctx.subs:
+                return False            # a known symbol, one the text defined, or an expression: not a name
+            named[k] = tok[0].value
+        for k in range(3):
+            if k in named:
+                atom = named[k]
+                self.vocab.defined[atom.with_(text="")] = lx.W[k]
+                self.vocab.defined[atom.with_(text="", dots=1)] = lx.WD[k]
+                said.append(f"{self.tex(lx.W[k])} = {coefs[k]}")
+            if k not in coefs:
+                self.ctx.subs[lx.W[k]] = sp.S.Zero
+                self.ctx.subs[lx.WD[k]] = sp.S.Zero
+                self.ctx.stated[lx.W[k]] = f"line {line}"
+                said.append(f"{self.tex(lx.W[k])} = 0")
+            elif any(self.ctx.subs.get(x) == 0 for x in (lx.W[k], lx.WD[k])):
+                self.ctx.subs.pop(lx.W[k], None)        # a component a spin about another axis had set to zero
+                self.ctx.subs.pop(lx.WD[k], None)
+        if not said:
+            return False
+        self._add(line, piece, "setting", "unchecked",
+                  f"the angular velocity along the body's principal axes: {', '.join(said)} (a case of the text, "
+                  "its names for the components from here on), not a claim")
+        return True
 
     def _vectors(self, line, piece, text) -> bool:
         """A statement in vectors, tensors, sums over particles or frame derivatives

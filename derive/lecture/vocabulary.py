@@ -492,6 +492,8 @@ class Vocabulary:
             return LVEC if a.bold else LAGRANGIAN
         if b == "L" and sub in ("1", "2", "3") and self.open and not self.names_off and not (a.bold or a.dots or a.primes or a.hat or a.tilde):
             return (I1, I2, I3)[int(sub) - 1] * W[int(sub) - 1]      # Lᵢ: the components of 𝐋 = Iᵢω̃ᵢ
+        if b == "L" and sub in ("1", "2", "3") and self.open and not self.names_off and a.dots == 1 and not (a.bold or a.primes or a.hat or a.tilde):
+            return (I1, I2, I3)[int(sub) - 1] * WD[int(sub) - 1]     # L̇ᵢ, the rate of the component Lᵢ = Iᵢω̃ᵢ: Iᵢω̃̇ᵢ
         if b == "E" and not sub and not a.dots:
             return {0: ENERGY, 1: EPRIME}.get(a.primes)
         if b == "V" and sub == "eff":
