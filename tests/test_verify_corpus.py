@@ -58,6 +58,17 @@ SHORT = {
         "its slip (v_G for the velocity of G relative to B in the kinetic energy about a moving point) sits in a "
         "display in bold products that the reader does not read, and that holds when B is at rest, as the form "
         "before it does (T = 1/2 omega H_B, held if B is at rest): only the page's moving B makes it a slip",
+    ("euler-angles-kinematic-equations-gimbal-lock-zh-notes-zxz", "checked"):
+        "first read of a text added unseen: the elementary matrices U_1, U_2, U_3 and their products and rates "
+        "(U^T dU/dt by the product rule), the disk's body vectors r_P, r_C, r_Q and the angular velocity "
+        "written as omega_1 (sin psi e_x + cos psi e_y) + ... are not read",
+    ("euler-angles-kinematic-equations-gimbal-lock-zh-notes-zxz", "found"):
+        "first read of a text added unseen: five of its six slips sit in the matrix products and the disk's "
+        "vectors that are not read; the coefficient matrix of the kinematic equations is flagged",
+    ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
+        "first read of a text added unseen: integrals over the body of vector integrands (int_V rho r x (omega x "
+        "r) dV), the element I_ij as an integral with a Kronecker delta and a sum, n^T I n and the centre-of-mass "
+        "splitting are not read",
 }
 
 FLOOR = {"checked": 404, "slips_flagged": 39, "holds_flagged": 0}
