@@ -75,7 +75,7 @@ SHORT = {
         "(L = R x M V + L') are not read",
 }
 
-FLOOR = {"checked": 423, "slips_flagged": 42, "holds_flagged": 0}
+FLOOR = {"checked": 424, "slips_flagged": 42, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
