@@ -30,3 +30,21 @@ def test_a_relation_with_another_left_side_is_not_a_restatement():
     again = "and so\n\n$$U = \\frac{1}{2} m v_c^2 + \\frac{1}{2} (J_{z^\\prime} - m d^2) \\omega^2$$\n"
     text = HEAD + PARALLEL + KOENIG + again
     assert "holds" not in verdicts(text)[line_of(text, "$$U =")]
+
+
+RATIO = "$$\n\\frac{\\omega_1}{\\omega_2} = \\frac{a}{b}\n$$\n\nthat is\n\n"
+
+
+def _solved(text, start):
+    return [c for c in kept.check_text(text) if c.latex.startswith(start)]
+
+
+def test_an_earlier_relation_solved_for_one_of_its_names_holds():
+    text = HEAD + RATIO + "$$\n\\omega_2 = \\frac{b}{a} \\omega_1\n$$\n"
+    got = _solved(text, "\\omega_2 =")
+    assert [c.verdict for c in got] == ["holds"] and "solved for" in got[0].why
+
+
+def test_an_earlier_relation_solved_wrongly_is_not_judged():
+    text = HEAD + RATIO + "$$\n\\omega_2 = \\frac{a}{b} \\omega_1\n$$\n"
+    assert not {c.verdict for c in _solved(text, "\\omega_2 =")} & {"holds", "fails", "typo"}

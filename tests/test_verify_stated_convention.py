@@ -26,6 +26,45 @@ def test_turns_about_unnamed_or_repeated_axes_and_sequences_in_math_state_nothin
     assert stated("the $i-j-k$ Euler angles of a $3 \\times 1$ matrix\n") == []
 
 
+_TURNS = ("$$\n\\mathbf{{A}} = \\begin{{pmatrix}} \\cos\\phi & {a} & 0 \\\\ {b} & \\cos\\phi & 0 \\\\ 0 & 0 & 1 "
+          "\\end{{pmatrix}},\\quad \\mathbf{{B}} = \\begin{{pmatrix}} 1 & 0 & 0 \\\\ 0 & \\cos\\theta & {c} \\\\ "
+          "0 & {d} & \\cos\\theta \\end{{pmatrix}},\\quad \\mathbf{{C}} = \\begin{{pmatrix}} \\cos\\psi & {e} & 0 "
+          "\\\\ {f} & \\cos\\psi & 0 \\\\ 0 & 0 & 1 \\end{{pmatrix}}\n$$\n\n")
+_ACTIVE_TURNS = _TURNS.format(a="-\\sin\\phi", b="\\sin\\phi", c="-\\sin\\theta", d="\\sin\\theta",
+                              e="-\\sin\\psi", f="\\sin\\psi")
+_PASSIVE_TURNS = _TURNS.format(a="\\sin\\phi", b="-\\sin\\phi", c="\\sin\\theta", d="-\\sin\\theta",
+                               e="\\sin\\psi", f="-\\sin\\psi")
+
+
+def test_a_product_of_matrices_written_out_as_single_axis_turns_states_the_sequence():
+    active = "# Angles\n\n" + _ACTIVE_TURNS + "$$\n\\mathbf{U} = \\mathbf{A} \\mathbf{B} \\mathbf{C}\n$$\n"
+    assert stated(active) == [Stated(1, "z-x-z", ("phi", "theta", "psi"))]
+    # written as transposes (a passive A = BCD): the rightmost turn is the first
+    passive = "# Angles\n\n" + _PASSIVE_TURNS + "$$\n\\mathbf{R} = \\mathbf{C} \\mathbf{B} \\mathbf{A}\n$$\n"
+    assert stated(passive) == [Stated(1, "z-x-z", ("phi", "theta", "psi"))]
+    # a text's own macro for bold is read as bold; an aligned product (`& =`) is a product
+    macro = ("\\newcommand{\\mbf}{\\boldsymbol}\n\\section{A}\n" + _ACTIVE_TURNS.replace("\\mathbf", "\\mbf")
+             + "\\begin{align}\n\\mbf{U} & = \\mbf{A} \\mbf{B} \\mbf{C} \\nonumber \\\\\n& = X\n\\end{align}\n")
+    assert [s.convention for s in stated(macro)] == ["z-x-z"]
+
+
+def test_matrices_that_are_not_single_axis_turns_or_mix_senses_state_nothing():
+    mixed = _ACTIVE_TURNS.replace("\\cos\\psi & -\\sin\\psi", "\\cos\\psi & \\sin\\psi").replace(
+        "\\\\ \\sin\\psi & \\cos\\psi", "\\\\ -\\sin\\psi & \\cos\\psi")
+    assert stated("# A\n\n" + mixed + "$$\n\\mathbf{U} = \\mathbf{A} \\mathbf{B} \\mathbf{C}\n$$\n") == []
+    scaled = _ACTIVE_TURNS.replace("0 & 0 & 1", "0 & 0 & 2")
+    assert stated("# A\n\n" + scaled + "$$\n\\mathbf{U} = \\mathbf{A} \\mathbf{B} \\mathbf{C}\n$$\n") == []
+    assert stated("# A\n\n" + _ACTIVE_TURNS + "$$\n\\mathbf{U} = \\mathbf{A} \\mathbf{A} \\mathbf{C}\n$$\n") == []
+
+
+def test_the_stated_turns_decide_how_the_body_rates_are_read():
+    text = ("\\section{Angles}\n" + _ACTIVE_TURNS + "$$\n\\mathbf{U} = \\mathbf{A} \\mathbf{B} \\mathbf{C}\n$$\n\n"
+            "$$\n\\omega_1 = \\dot{\\phi} \\sin \\theta \\sin \\psi + \\dot{\\theta} \\cos \\psi\n$$\n")
+    assert [v for _, v in _verdicts(text)][-1] == "holds"
+    wrong = text.replace("\\dot{\\theta} \\cos \\psi", "\\dot{\\theta} \\sin \\psi")
+    assert [v for _, v in _verdicts(wrong)][-1] in ("typo", "fails")
+
+
 def test_each_section_states_its_own_convention_and_the_first_holds_from_the_start():
     text = ("# Disk\n\nThe notes use 3-1-2 Euler angles, a turn $\\theta$ about the third axis, then "
             "$\\alpha$ about the first, then $\\phi$ about the second.\n\n# Gimbal\n\n" + PRODUCT)

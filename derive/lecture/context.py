@@ -102,6 +102,7 @@ class Context:
     own_motion: dict = field(default_factory=dict)    # a variable of the text's → (power n, F, line) of its u̇ⁿ = F(u)
     changes: dict = field(default_factory=dict)       # a new variable v → (u, S(v), line) of the text's u = S(v)
     angles_stated: dict = field(default_factory=dict)  # an angle the text gives in constants (tan θ = …) → (value, line)
+    held: dict = field(default_factory=dict)          # an angle running text holds at a number (θ = π/2) → (value, line); None if two
     vectors: dict = field(default_factory=dict)        # a vector of the text's → (its components, what it defined it as)
     centre_line: int | None = None                    # the line whose settings of the centre of mass hold
 
@@ -110,7 +111,7 @@ class Context:
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
-        self.vectors = {}
+        self.vectors, self.held = {}, {}
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False
 

@@ -548,6 +548,13 @@ def _mul(a, b):
 def _matrix(self, env):
     tok = self.take("begin")
     env_name = tok.value
+    if env_name == "vmatrix":
+        # a square array between bars is its determinant (entries the scalar reader reads; a row of
+        # unit vectors, a cross product's determinant, is the vector reader's)
+        rows = self.rows(env, tok)
+        if len(rows) != len(rows[0]) or any(isinstance(x, sp.MatrixBase) for row in rows for x in row):
+            self.fail("a determinant that is not square, or holds matrices", tok)
+        return sp.Matrix(rows).det()
     if env_name not in ("pmatrix", "bmatrix", "matrix", "Bmatrix", "array"):
         self.fail(f"the environment {env_name!r} inside a formula", tok)
     return sp.Matrix(self.rows(env, tok))

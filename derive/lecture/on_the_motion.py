@@ -11,6 +11,11 @@ calling such a claim wrong —
 2. **Lagrange's equation**: claim − derived is ±(d/dt ∂L/∂q̇ − ∂L/∂q) for one coordinate q, with
    the Lagrangian the text uses (``∂L/∂θ = d/dt(∂L/∂θ̇)``): the law of motion, true on every motion.
 
+An angle the text's running text holds at a number (``the nutation angle stays $\\theta =
+\\frac{\\pi}{2}$``, kept in ``ctx.held``) is part of that motion too, with no rate: in reading 1 it is put
+in with its rate and acceleration zero (``\\omega_1 = \\dot\\phi\\sin\\psi`` of an upright disk). An
+angle held at two numbers in one section (``$\\theta = 0$`` or ``$\\pi$``) names cases, and neither is put in.
+
 Either only makes a claim hold; it never flags one. And a third, which judges:
 
 3. **at the angle the text gives**: ``\\tan\\theta = \\frac{I_1\\omega_0}{I_3\\Omega}``, an angle (or its
@@ -94,6 +99,12 @@ class OnTheMotion:
             value = self._resolve(members[-1])
         except (TypeError, ValueError, AttributeError):
             return
+        if head is angle and not isinstance(value, sp.MatrixBase) and not _free(value) and len(members) == 2 \
+                and getattr(self, "_inline", False):
+            # running text holding an angle at a number: the motion's, unless a second number makes cases
+            held = self.ctx.held.get(angle, (value, line))
+            self.ctx.held[angle] = (value, line) if held is not None and sp.simplify(held[0] - value) == 0 else None
+            return
         if isinstance(value, sp.MatrixBase) or not _free(value) or \
                 _free(value) & (set(ANGLES) | set(RATES) | set(ACCELS) | set(lx.W) | {lx.t}):
             return
@@ -137,9 +148,12 @@ class OnTheMotion:
             q = self._lagrange_equation(val, target)
             if q is not None:
                 return f"Lagrange's equation for {self.tex(q)}: d/dt ∂L/∂{self.tex(q)}̇ = ∂L/∂{self.tex(q)} (true on every motion)"
-            if target in RATES or val in RATES:
+            held = self._held_motion()
+            bare = {x for x in (val, target) if x in RATES}
+            if bare and (not held or bare & set(self.ctx.motion)):
                 continue            # a rate against the motion's rates would check the text against itself
             motion = {r: self._resolve(v) for r, (v, _) in self.ctx.motion.items()}
+            motion.update(held)
             if not motion or not (_free(val) | _free(target)) & (set(motion) | set(lx.W)):
                 continue
             a, b = (x.xreplace(self.ctx.subs).xreplace(motion) for x in self._unify([val, target]))
@@ -150,9 +164,19 @@ class OnTheMotion:
                 continue
             ok, how = self._compare(a, b, seed + "/motion")
             if ok:
-                where = ", ".join(f"{self.tex(r)} = {self.tex(v)} (line {n})" for r, (v, n) in self.ctx.motion.items())
+                stated = {**self.ctx.motion, **{q: h for q, h in self.ctx.held.items() if h is not None}}
+                where = ", ".join(f"{self.tex(r)} = {self.tex(v)} (line {n})" for r, (v, n) in stated.items())
                 return f"{how}, in the motion the text describes ({where})"
         return None
+
+    def _held_motion(self) -> dict:
+        """The angles running text holds at a number, with their rates and accelerations zero."""
+        out = {}
+        for q, held in self.ctx.held.items():
+            if held is not None and q in ANGLES:
+                k = ANGLES.index(q)
+                out.update({q: held[0], RATES[k]: sp.S.Zero, ACCELS[k]: sp.S.Zero})
+        return out
 
     def _differs(self, a, b) -> bool:
         """Whether `_compare` of scalars a and b free of the unit vectors would not hold: their

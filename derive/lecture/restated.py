@@ -6,8 +6,11 @@ Gives the mixin `Restated` of `derive.lecture.notes_check.Checker`, whose `_rest
 such equation ``A = B`` of a first reading and reads a later ``A = B'`` with the same left side as
 the same claim restated: it holds when ``B' − B`` expands to zero with the text's definitions put
 in (König's ``T = ½ m v_c² + ½ J_C ω²`` written again as ``T = ½ m v_c² + ½ (J_{z'} − m d²) ω²``
-after ``J_{z'} = J_C + m d²``). That says only that the text agrees with itself; a restatement that
-differs says nothing (either of the two may be the one the text meant), so it is never flagged.
+after ``J_{z'} = J_C + m d²``); and a later ``X = B'`` that solves an earlier equation of its names for
+one of them, X entering it linearly, as the same equation (``\\omega_2 = \\frac{R}{a}\\omega_1`` after
+``\\frac{\\omega_1}{\\omega_2} = \\frac{a}{R}``). That says only that the text agrees with itself; a
+restatement that differs says nothing (either of the two may be the one the text meant), so it is
+never flagged.
 
 May import: :mod:`derive.lecture.latex`, SymPy.
 """
@@ -32,5 +35,21 @@ class Restated:
                 self._add(line, piece, "identity", "holds",
                           f"restates the text's {self.tex(left)} of line {at} with its own definitions put in (expand)")
                 return True
+        for at, was_left, was_right in reversed(kept):
+            if at < line and was_left != left and _solved_for(left, was_left - was_right, right):
+                self._add(line, piece, "identity", "holds",
+                          f"the text's equation of line {at} solved for {self.tex(left)}")
+                return True
         kept.append((line, left, right))
         return False
+
+
+def _solved_for(x, equation, value) -> bool:
+    """Is ``x = value`` the equation ``equation = 0`` solved for the symbol x, which enters it linearly?"""
+    if not isinstance(x, sp.Symbol) or x not in getattr(equation, "free_symbols", ()) or x in value.free_symbols:
+        return False
+    num = sp.numer(sp.together(equation))
+    if not num.is_polynomial(x) or sp.degree(num, x) != 1:
+        return False
+    a, b = sp.Poly(num, x).all_coeffs()
+    return a != 0 and sp.simplify(-b / a - value) == 0

@@ -18,6 +18,14 @@ commands):
   about the second" (three names whose axes are the sequence's), else none (the sequence's usual
   names).
 
+* a product of three matrices the section has written out each as one elementary turn,
+  ``U_1 = \\begin{pmatrix} \\cos\\phi & -\\sin\\phi & 0 \\\\ … \\end{pmatrix}, …`` then
+  ``U = U_1 U_2 U_3``: a turn about the axis its row and column of ``1`` and ``0`` name, by the angle
+  in its cosines and sines; written as the active turn (``-\\sin`` above the diagonal of the
+  turning block) the product's order is the sequence's, written as its transpose (a passive turn,
+  ``A = BCD``) the order is reversed. Only entries that are a plain ``0``, ``1``, ``\\cos q`` or
+  ``\\sin q`` of one plain angle ``q`` make such a matrix (`_elementary`).
+
 A product about axes named by letters (``R_i(\\theta_1) R_j(\\theta_2) R_k(\\theta_3)``) is the general
 form of every sequence: it states none, and the reader takes it for no claim (`general_form`).
 Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
@@ -94,6 +102,69 @@ def _from_product(text: str):
     return None
 
 
+_PMATRIX_DEF = re.compile(r"(" + _MATRIX + r"(?:\s*_\s*(?:\{[^{}]*\}|[0-9A-Za-z]))?)\s*=\s*\\begin\{[pb]matrix\}(.*?)"
+                          r"\\end\{[pb]matrix\}", re.S)
+_TRIG = re.compile(r"^(-?)\\(cos|sin)\s*\(?\s*(" + _SYMBOL + r")\s*\)?$")
+
+
+def _key(tex: str) -> str:
+    """A matrix's name without fonts and spaces: ``\\mbf{U}_1`` and ``U_{1}`` are one name."""
+    t = re.sub(r"\\(?:mathbf|mathrm|boldsymbol|bm|mathsf|mbf)\s*", "", tex)
+    return re.sub(r"[\s{}]", "", t)
+
+
+def _elementary(body: str):
+    """(axis, angle, active) of a 3×3 matrix body (its ``&``/``\\\\`` entries) that is one turn about
+    a coordinate axis, or None (see the module docstring)."""
+    rows = [r for r in (re.split(r"\\\\", body)) if r.strip()]
+    cells = [[re.sub(r"\s+", " ", c).strip() for c in r.split("&")] for r in rows]
+    if len(cells) != 3 or any(len(r) != 3 for r in cells):
+        return None
+    for k, axis in enumerate("xyz"):
+        if cells[k][k] != "1" or any(cells[k][j] != "0" or cells[j][k] != "0" for j in range(3) if j != k):
+            continue
+        i, j = [m for m in range(3) if m != k]
+        trig = [[_TRIG.match(cells[a][b]) for b in (i, j)] for a in (i, j)]
+        if not all(all(row) for row in trig):
+            return None
+        angles = {_name(m.group(3)) for row in trig for m in row}
+        kinds = [[(m.group(1), m.group(2)) for m in row] for row in trig]
+        if len(angles) != 1 or kinds[0][0] != ("", "cos") or kinds[1][1] != ("", "cos"):
+            return None
+        # the cyclic order (y, z after x; z, x after y; x, y after z) decides which sign is the active turn's
+        sign_up = kinds[0][1] if (i, j) != (0, 2) else kinds[1][0]
+        if {kinds[0][1], kinds[1][0]} != {("-", "sin"), ("", "sin")}:
+            return None
+        return axis, angles.pop(), sign_up == ("-", "sin")
+    return None
+
+
+def _from_written_turns(maths) -> tuple | None:
+    """(sequence, names) of a product of three matrices the section writes out as elementary turns."""
+    turns = {}
+    for math in maths:
+        for m in _PMATRIX_DEF.finditer(math):
+            turn = _elementary(m.group(2))
+            if turn:
+                turns[_key(m.group(1))] = turn
+    if len(turns) < 3:
+        return None
+    name = r"(" + _MATRIX + r"(?:\s*_\s*(?:\{[^{}]*\}|[0-9A-Za-z]))?)"
+    product = re.compile(_MATRIX + r"\s*&?\s*=" + SPACING + name + SPACING + name + SPACING + name + r"(?=\s*(?:\\nonumber|=|$|\\\\|&))")
+    for math in maths:
+        for m in product.finditer(math):
+            factors = [turns.get(_key(m.group(k))) for k in (1, 2, 3)]
+            if not all(factors) or len({f[2] for f in factors}) != 1:
+                continue
+            if not factors[0][2]:                # passive turns: the first turn is the rightmost
+                factors = factors[::-1]
+            seq = _sequence([f[0] for f in factors])
+            names = tuple(f[1] for f in factors)
+            if seq and len(set(names)) == 3:
+                return seq, names
+    return None
+
+
 def _from_prose(prose: str, math_free: str):
     """(sequence, names or None, where) of the first sequence the prose names, or None."""
     for m in _SEQUENCE.finditer(math_free):
@@ -116,13 +187,15 @@ def stated(body: str) -> list[Stated]:
     """The conventions the text states, in order: one per section that states one (see the
     module docstring). ``body`` is the rendered text; lines are 1-based."""
     cuts = [0] + [m.start() for m in _SECTION.finditer(body)] + [len(body)]
+    user = source.macros(body)
     out: list[Stated] = []
     for a, b in zip(cuts, cuts[1:]):
         section = body[a:b]
         if not section.strip():
             continue
         maths = [m.group(0) for m in source.MATH.finditer(section)]
-        product = next((p for p in map(_from_product, maths) if p), None)
+        product = (next((p for p in map(_from_product, maths) if p), None)
+                   or _from_written_turns([source.normalize(m, user) for m in maths]))
         math_free = source.MATH.sub(lambda m: " " * len(m.group(0)), section)
         prose = _from_prose(section, math_free)
         if product and (prose is None or prose[0] == product[0]):

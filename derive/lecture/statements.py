@@ -249,7 +249,7 @@ def statements(latex: str) -> list[str]:
         words = _TRAILING_WORDS.search(row)
         if words and _CONSTANT_WORDS.search(words.group(0)) and _NAMED_END.search(row[:words.start()]):
             row = row[:words.start()] + r" = \mathrm{const}"
-        for piece in _colon_parts(row):
+        for piece in (p for r in _index_range(row) for p in _colon_parts(r)):
             for part in _spacing_joined(_top_level_split(piece, ("\\qquad", "\\quad", "\\Rightarrow", "\\implies",
                                                                               "\\Leftrightarrow", "\\iff"))):
                 for one in [w for p in _lists(part) for w in _where_first(_trimmed(p))]:
@@ -296,6 +296,29 @@ _WORDS = re.compile(r"\\(?:text|mbox|textrm|hbox|textit|textbf)\b")
 
 _PM = re.compile(r"\\(pm|mp)(?![A-Za-z])")
 _FIRST_RELATION = re.compile(r"(?<![<>!\\])=|[<>]|\\(le|ge|leq|geq|lt|gt|leqslant|geqslant|equiv|approx)(?![A-Za-z])")
+
+
+_RANGE = re.compile(r"(?:[,;]|\\[,;:!]|\\q?quad|~|\s)*\(?\s*([ijk])\s*=\s*1\s*,\s*2\s*,\s*3\s*\)?\s*[.,;]?\s*$")
+
+
+def _index_range(row: str) -> list[str]:
+    """``L_i = I_i \\omega_i,\\quad i = 1,2,3``: a statement with a free index and the index's range
+    written after it is its three statements (the index put in each subscript ``_i``, ``_{i}``). Left
+    as written when the index also sits in a longer subscript (``I_{ij}``), a sum binds it, or it
+    subscripts one side only."""
+    m = _RANGE.search(row)
+    if not m or m.start() == 0:
+        return [row]
+    body, index = row[:m.start()], m.group(1)
+    used = re.compile(r"_\s*(?:\{\s*" + index + r"\s*\}|" + index + r"(?![A-Za-z]))")
+    sides = _FIRST_RELATION.split(body, maxsplit=1)
+    if len(sides) < 2 or re.search(r"\\(?:sum|prod)(?![A-Za-z])", body) or \
+            not all(used.search(side or "") for side in (sides[0], sides[-1])):
+        return [row]
+    out = [used.sub("_{" + n + "}", body) for n in "123"]
+    if any(re.search(r"_\s*\{[^{}]*" + index + r"[^{}]*\}", o) for o in out):
+        return [row]                      # the index in a longer subscript (I_{ij}): not this rule's
+    return out
 
 
 def _sign_cases(piece: str) -> list[str]:

@@ -98,6 +98,23 @@ def _mass_element(text: str) -> str:
     return _VOLUME.sub(" dm", _DENSITY.sub(" ", text))
 
 
+_SUB = r"(\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))"
+_PIECE_MASS = re.compile(r"\\Delta\s*m" + _SUB)
+_PIECE_DENSITY = re.compile(r"\\rho" + _SUB)
+_PIECE_VOLUME = re.compile(r"\\Delta\s*V" + _SUB)
+
+
+def _pieces(text: str) -> str:
+    """A body cut into pieces (a sum over them): the mass of piece i, ``\\Delta m_i``, and its density
+    times its volume, ``\\rho_i … \\Delta V_i`` (one ρᵢ with each ΔVᵢ), are the particle's mass mᵢ."""
+    text = _PIECE_MASS.sub(r"m\1", text)
+    volumes = _PIECE_VOLUME.findall(text)
+    if volumes and sorted(re.sub(r"\s", "", v) for v in _PIECE_DENSITY.findall(text)) == \
+            sorted(re.sub(r"\s", "", v) for v in volumes):
+        text = _PIECE_VOLUME.sub(r"m\1", _PIECE_DENSITY.sub(" ", text))
+    return text
+
+
 _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*\\(?:boldsymbol|mathbf|bm)\s*\{?\s*p\s*\}?(?![A-Za-z_])")
 
 
@@ -127,7 +144,8 @@ def _prepare(text: str) -> str:
     """The rewrites the scanner needs: ∫ (with its limits) as a marker symbol, ⊗ as a juxtaposition
     (the dyadic), ı and ȷ as i and j, a period between two vectors as their dot product
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, an acceleration's
-label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm, the
+label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm (and
+    under a sum a piece's Δmᵢ and ρᵢ … ΔVᵢ as mᵢ), the
     momentum element d𝐩 as 𝐯 dm, and beside a dyadic 𝐞 as the unit tensor."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
@@ -136,7 +154,7 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
     if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
         text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
-    text = _mass_element(text)
+    text = _mass_element(_pieces(text) if "\\sum" in text else text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)

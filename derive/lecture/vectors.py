@@ -58,6 +58,11 @@ from derive.lecture.vector_models import Model, model_of, prepare, vectorish
 from derive.lecture.vector_parser import Reading, _is_tensor, _is_vector
 
 
+_ROW_VECTOR = re.compile(r"\\(?:boldsymbol|mathbf|bm|vec)\s*\{[^{}]*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?\s*\^\s*"
+                         r"(?:T\b|\{\s*(?:T|\\top|\\mathrm\{T\}|\\mathsf\{T\})\s*\}|\\top\b)")
+"""A bold vector transposed, ``\\boldsymbol{\\omega}^{T}``: a row, so the statement is in matrix notation."""
+
+
 # ---- reading and checking one statement ----------------------------------------------------------
 def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
     """Read a statement with the vector grammar in the model `model_of` picks (`lx.NotRead` when it
@@ -73,6 +78,8 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
     if name == "principal" and any(t.kind == "atom" and t.value.base == "I" and not (t.value.sub or t.value.bold or
                                    t.value.dots or t.value.sup) for t in toks):
         model.matrix_products = True     # a plain I (a text's matrix, not the lecture's Ï·) acts on 𝛚 by juxtaposition
+    if _ROW_VECTOR.search(text):
+        model.matrix_products = True     # 𝛚ᵀ 𝐈 𝛚: a vector written as a row is matrix notation, 𝐈 acting by juxtaposition
     return vp.read(toks, text, vocab, model, name)
 
 
