@@ -1,7 +1,10 @@
 """The notes reader on a relation of the text's own names written again: once the text has defined
 a name it puts into a later form of the same relation, the later form holds when it expands to
 the earlier one; one that differs is not judged, and the first statement is never judged by it."""
+import sympy as sp
+
 import kept_readings as kept
+from derive.lecture import restated
 
 HEAD = "# Notes\n\n"
 PARALLEL = "With $J_C$ the moment about the centre of mass,\n\n$$ J_{z^\\prime} = J_C + m d^2$$\n\n"
@@ -48,3 +51,33 @@ def test_an_earlier_relation_solved_for_one_of_its_names_holds():
 def test_an_earlier_relation_solved_wrongly_is_not_judged():
     text = HEAD + RATIO + "$$\n\\omega_2 = \\frac{a}{b} \\omega_1\n$$\n"
     assert not {c.verdict for c in _solved(text, "\\omega_2 =")} & {"holds", "fails", "typo"}
+
+
+class _Stub(restated.Restated):
+    """The checker's three hooks the mixin uses, with the text's definitions already put in."""
+
+    def __init__(self):
+        self.claims = []
+
+    def _resolve(self, x):
+        return x
+
+    def _add(self, *claim):
+        self.claims.append(claim)
+
+    def tex(self, x):
+        return str(x)
+
+
+def test_a_matrix_relation_after_a_scalar_one_is_kept_not_a_failure():
+    """A text's scalar equation of its own names, then a matrix equated to another name: no
+    restatement is sought across the two kinds, and nothing raises (a reader step that raises leaves
+    the display 'unchecked' with a failure, where the relation's own reason belongs)."""
+    p, q, a, b, x = sp.symbols("p q a b x")
+    checker = _Stub()
+    assert not checker._restated(3, "p/q = a/b", [p / q, a / b], ["="])
+    rotation = sp.ImmutableMatrix([[1, 0], [0, x]])
+    assert not checker._restated(9, "R = ...", [sp.Symbol("R"), rotation], ["="])
+    assert not checker._restated(12, "p = R", [p, rotation], ["="])
+    assert not checker._restated(15, "S = R", [sp.Symbol("S"), sp.ImmutableMatrix([[1, 0], [0, 1]])], ["="])
+    assert checker.claims == []

@@ -31,17 +31,27 @@ class Restated:
         left = sp.sympify(members[0])
         right = sp.sympify(self._resolve(members[1]))
         for at, was_left, was_right in kept:
-            if at < line and was_left == left and sp.expand(right - was_right) == 0:
+            if at < line and was_left == left and _alike(right, was_right) and sp.expand(right - was_right) == 0:
                 self._add(line, piece, "identity", "holds",
                           f"restates the text's {self.tex(left)} of line {at} with its own definitions put in (expand)")
                 return True
         for at, was_left, was_right in reversed(kept):
-            if at < line and was_left != left and _solved_for(left, was_left - was_right, right):
+            if (at < line and was_left != left and _alike(was_left, was_right, right)
+                    and not isinstance(right, sp.MatrixBase)
+                    and _solved_for(left, was_left - was_right, right)):
                 self._add(line, piece, "identity", "holds",
                           f"the text's equation of line {at} solved for {self.tex(left)}")
                 return True
         kept.append((line, left, right))
         return False
+
+
+def _alike(*values) -> bool:
+    """Are ``values`` all scalars, or all matrices of one shape (what can be subtracted)?"""
+    if all(isinstance(v, sp.Expr) and not isinstance(v, sp.MatrixBase) for v in values):
+        return True   # (an immutable matrix is an Expr too)
+    return (all(isinstance(v, sp.MatrixBase) for v in values)
+            and len({v.shape for v in values}) == 1)
 
 
 def _solved_for(x, equation, value) -> bool:
