@@ -303,6 +303,13 @@ class _Parser:
         if a.sub:
             k = self.vocab.angle_index(a.sub)
             return f(ANGLES[k]) if k is not None else None
+        nxt = self.peek(0)
+        if getattr(self.vocab.names, "trig_letters", False) and nxt is not None and nxt.kind == "atom" \
+                and not nxt.value.sub and not nxt.value.dots and not nxt.value.bold:
+            k = self.vocab.angle_index(nxt.value.base)         # cθ, sψ: the text's own shorthand
+            if k is not None:
+                self.i += 1
+                return f(ANGLES[k])
         if not self.at("op", "("):
             return None
         start = self.i

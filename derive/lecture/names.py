@@ -77,7 +77,7 @@ MEANINGS = {
     "principal moments": ("list", r"principal moments(?: of inertia)?"),
     "vertical": ("letter", r"(?:unit vector|direction cosines?)\W{0,4}(?:[¤§]\W{0,4})?(?:of|along) the (?:upward |fixed |space "
                            r"|inertial )?vertical|(?:upward |fixed )?vertical unit vector"),
-    "body rates": ("rates", r"roll,?\s+pitch,?\s+and\s+yaw\s+rates?"),
+    "body rates": ("rates", r"roll,?\s+pitch,?\s+and\s+yaw\s+rates?|roll\s+rate,\s+pitch\s+rate,?\s+and\s+yaw\s+rate"),
     "roll rate": ("symbol", r"\broll(?:ing)?[- ]rate"),
     "pitch rate": ("symbol", r"\bpitch(?:ing)?[- ]rate"),
     "yaw rate": ("symbol", r"\byaw(?:ing)?[- ]rate"),
@@ -137,6 +137,8 @@ class Names:
     """("symbols" or "letters", key) the front matter names: said outright, for the whole text."""
     here: int | None = None
     """The line the reader is at (set as it goes), or None: then the first binding of a name holds."""
+    trig_letters: bool = False
+    """The text defines c and s before an angle as its cosine and sine (``c\\theta \\equiv \\cos(\\theta)``)."""
 
     def _section(self, line: int) -> int:
         return sum(1 for h in self.sections if h <= line)
@@ -239,6 +241,9 @@ def _atoms(latex: str) -> list:
         return []
     atoms = [t.value for t in toks if t.kind == "atom"]
     rest = [t for t in toks if t.kind != "atom" and not (t.kind == "op" and t.value == ",")]
+    commas = sum(t.kind == "op" and t.value == "," for t in toks)
+    if commas and len(atoms) != commas + 1:
+        return []           # "dp, dq, dr": a list whose items are not single symbols
     return atoms if atoms and not rest else []
 
 
@@ -253,6 +258,10 @@ def _resolve_meaning(text: str) -> str | None:
         if re.search(phrase, text, flags=re.I):
             return name
     return None
+
+
+# "c\\theta \\equiv \\cos (\\theta)", "s\\psi = \\sin\\psi": the text's own shorthand for the cosine and sine
+_TRIG_LETTERS = re.compile(r"(?<![A-Za-z\\])([cs])\s*(\\[A-Za-z]+)\s*(?:\\equiv|=)\s*\\(cos|sin)\s*\(?\s*\2(?![A-Za-z])")
 
 
 def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros: dict | None = None) -> Names:
@@ -275,6 +284,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
     """
     names = Names()
     body = _INLINE.sub(lambda m: "$" + source.normalize(m.group(1), macros).replace("$", "") + "$", body)
+    names.trig_letters = bool(_TRIG_LETTERS.search(body))
     # a display ends a clause and keeps its lines, so that a position in the prose is on the text's line
     prose = _DISPLAY.sub(lambda m: " . " + "\n" * max(m.group(0).count("\n"), 0), body)
     starts = [0] + [m.end() for m in re.finditer("\n", prose)]
@@ -385,17 +395,29 @@ def _centre_listed(names: Names, text: str, found: list, starts, offset):
 
 def _rates_listed(names: Names, text: str, found: list, starts, offset):
     """"$p, q, r$ are the roll, pitch and yaw rates" (or the phrase first): the three symbols
-    nearest the phrase in its clause, in order, are ω̃₁, ω̃₂, ω̃₃ (the aircraft's body axes)."""
-    phrase = re.search(MEANINGS["body rates"][1], text, flags=re.I)
-    if not phrase:
-        return
-    before = [a for m in found if m.end() <= phrase.start() for a in _atoms(m.group(1))][-3:]
-    after = [a for m in found if m.start() >= phrase.end() for a in _atoms(m.group(1))][:3]
-    for atoms in (before, after):
-        if len(atoms) == 3 and all(not a.bold and not a.sub for a in atoms):
-            for atom, meaning in zip(atoms, _RATE_AXES):
-                _bind(names, [atom], meaning, f"line {_line(starts, offset + phrase.start())}")
-            return
+    nearest the phrase in its clause, in order, are ω̃₁, ω̃₂, ω̃₃ (the aircraft's body axes). Each
+    time the clause gives the phrase is tried; a run of formulas is taken only when it stands next
+    to the phrase (a few words, no comma between), so a list of other things before it binds nothing."""
+    for phrase in re.finditer(MEANINGS["body rates"][1], text, flags=re.I):
+        before = [m for m in found if m.end() <= phrase.start()][::-1]
+        after = [m for m in found if m.start() >= phrase.end()]
+        for run, gap, between in ((before, text[before[0].end():phrase.start()] if before else "", "b"),
+                                  (after, text[phrase.end():after[0].start()] if after else "", "a")):
+            if not run or not re.fullmatch(r"[^,.;:$]{0,40}" if between == "b" else r"[\s:(]{0,4}", gap):
+                continue
+            kept = [run[0]]
+            for a, b in zip(run, run[1:]):
+                sep = text[b.end():a.start()] if between == "b" else text[a.end():b.start()]
+                if not re.fullmatch(r"\s*(,|and|,\s*and)?\s*", sep):
+                    break
+                kept.append(b)
+            kept = kept[::-1] if between == "b" else kept
+            atoms = [a for m in kept for a in _atoms(m.group(1))]
+            atoms = atoms[-3:] if between == "b" else atoms[:3]
+            if len(atoms) == 3 and all(not a.bold and not a.sub for a in atoms):
+                for atom, meaning in zip(atoms, _RATE_AXES):
+                    _bind(names, [atom], meaning, f"line {_line(starts, offset + phrase.start())}")
+                return
 
 
 def _principal_axes(names: Names, body: str, prose: str):

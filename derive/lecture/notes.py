@@ -48,7 +48,10 @@ PROPER = ("z-y-z", "z-x-z", "x-y-x", "x-z-x", "y-x-y", "y-z-y")
 TAIT_BRYAN = ("z-y-x", "z-x-y", "x-y-z", "x-z-y", "y-x-z", "y-z-x")
 CONVENTIONS = PROPER + TAIT_BRYAN
 """The twelve sequences, turning about the new (intrinsic) axes: six proper Euler, six Tait–Bryan."""
-DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma")}
+DEFAULT_ANGLES = {**{c: ("phi", "theta", "psi") for c in CONVENTIONS}, "z-y-z": ("alpha", "beta", "gamma"),
+                  "z-y-x": ("psi", "theta", "phi")}
+"""The angles' usual names, in the order of the turns: the 3-2-1 (yaw, pitch, roll) sequence turns
+through ψ about z, θ about y, φ about x, as aircraft and spacecraft texts name them."""
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided", "set",
             "setting", "put", "putting", "taking", "substitution", "substituting", "since", "because"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")

@@ -372,7 +372,7 @@ def _print(nodes, user: dict) -> str:
             out.append(text)
             k += used
         elif isinstance(node, LatexGroupNode):
-            out.append("{" + _print(node.nodelist, user) + "}")
+            out.append("{" + _over(node.nodelist, user) + "}")
         elif isinstance(node, LatexEnvironmentNode):
             name = node.environmentname
             args = "".join(a.latex_verbatim() for a in (node.nodeargd.argnlist if node.nodeargd else []) if a)
@@ -387,6 +387,32 @@ def _print(nodes, user: dict) -> str:
             out.append(node.latex_verbatim())
         k += 1
     return "".join(out)
+
+
+def _over(nodes, user: dict) -> str:
+    """A group's contents; ``{a \\over b}`` is plain TeX's fraction of the whole group, ``\\frac{a}{b}``."""
+    nodes = list(nodes or [])
+    at = [k for k, n in enumerate(nodes) if isinstance(n, LatexMacroNode) and n.macroname == "over"]
+    if len(at) != 1:
+        return _print(nodes, user)
+    k = at[0]
+    return r"\frac{" + _print(nodes[:k], user) + "}{" + _print(nodes[k + 1:], user) + "}"
+
+
+_CODE_RATE = re.compile(r"^\s*d\s*(\\[A-Za-z]+|[A-Za-z])((?:_(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*=(?!=)(.*)$", re.S)
+_DIFFERENTIAL_LETTER = re.compile(r"(?<![A-Za-z\\])d(?![A-Za-z]{2})")
+
+
+_BRACKET_RATE = re.compile(r"\\frac\s*\{\s*d\s*\(((?:[^(){}]|\([^(){}]*\))*)\)\s*\}\s*\{\s*d\s*t\s*\}")
+
+
+def _code_rate(text: str) -> str:
+    """``dx = v_x``, ``d\\varphi = p + …``: a simulation's derivative, written as code names it (the
+    rate of the one symbol after d), when no differential stands anywhere else in the formula."""
+    m = _CODE_RATE.match(text)
+    if not m or _DIFFERENTIAL_LETTER.search(m.group(3)):
+        return text
+    return r"\dot{" + m.group(1) + "}" + m.group(2) + " =" + m.group(3)
 
 
 # `cos \theta` (or `\ cos`) typed without its backslash renders as the word cos: a reader reads cosine
@@ -530,4 +556,6 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
+    text = _code_rate(text)                           # dx = v_x with no differential beside it: ẋ
+    text = _BRACKET_RATE.sub(r"\\frac{d}{dt}(\1)", text)  # d(m v)/dt: the rate of the bracket
     return re.sub(r"[ \t]{2,}", " ", text).strip()

@@ -54,6 +54,12 @@ _SEQUENCE = re.compile(r"(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])\s*[
 _ABOUT = re.compile(r"\$\s*(" + _SYMBOL + r")\s*\$[^$.]{0,40}?\babout\s+(?:the\s+)?(?:(?:new|body|fixed|"
                     r"inertial|intermediate)\s+)?(first|second|third|1st|2nd|3rd|[xyzXYZ][- ]?)(?:\s*[- ]?axis)?",
                     re.I)
+# "the order here is 3-2-1", "in the order 3-2-1": the word that makes it a sequence stands before it
+_SEQUENCE_NAMED = re.compile(r"\b(?:order|sequence|convention)\b[^.$]{0,30}?(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*"
+                             r"([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])(?![\w-])", re.I)
+# "about the $z_b$ axis through the heading angle $\psi$": the axis first, then the angle
+_THROUGH = re.compile(r"\babout\s+(?:the\s+)?\$\s*([xyzXYZ])(?:\s*_\s*(?:\{[^{}$]*\}|\w))?\s*\$(?:\s*[- ]?axis)?"
+                      r"[^$.]{0,30}?\bthrough\s+(?:the\s+|an?\s+)?(?:[A-Za-z]+\s+){0,2}\$\s*(" + _SYMBOL + r")\s*\$")
 _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
 
 
@@ -167,7 +173,8 @@ def _from_written_turns(maths) -> tuple | None:
 
 def _from_prose(prose: str, math_free: str):
     """(sequence, names or None, where) of the first sequence the prose names, or None."""
-    for m in _SEQUENCE.finditer(math_free):
+    found = sorted([*_SEQUENCE.finditer(math_free), *_SEQUENCE_NAMED.finditer(math_free)], key=lambda m: m.end())
+    for m in found:
         seq = _sequence([_AXIS[g.lower()] for g in m.groups()])
         if seq is None:
             continue
@@ -176,6 +183,9 @@ def _from_prose(prose: str, math_free: str):
         after = after[:after.find("\n\n")] if "\n\n" in after else after
         turns = [(_name(t.group(1)), _ORDINAL.get(t.group(2).lower(), t.group(2)[:1].lower()))
                  for t in _ABOUT.finditer(after)][:3]
+        through = [(t.start(), _name(t.group(2)), t.group(1).lower()) for t in _THROUGH.finditer(after)][:3]
+        if len(turns) < 3 and len(through) == 3:
+            turns = [(n, a) for _, n, a in through]
         names = None
         if len(turns) == 3 and "-".join(a for _, a in turns) == seq and len({n for n, _ in turns}) == 3:
             names = tuple(n for n, _ in turns)

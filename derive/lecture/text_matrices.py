@@ -280,3 +280,26 @@ class TextMatrices:
                   f"named the turn about {axis} by {self.tex(angle)}, but written in {self.tex(other)} only, "
                   f"and no turn by {self.tex(angle)} with that angle swapped")
         return True
+
+    def _matrix_again(self, line, piece, sym, written) -> bool:
+        """``R = [a matrix]`` for a name the text has bound to a 3×3 matrix already: a text that
+        writes each rotation in turn as R names a new matrix, not the old one again. Re-bound (and
+        checked as the rotation it is) when it is one of the rotations of the text's angles, or when
+        it is in other angles than the bound one (a matrix of θ after one of φ is no claim about
+        that one); True when so handled. The same angles and no rotation: False, it is compared."""
+        old = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
+        if not isinstance(old, sp.MatrixBase) or old.shape != (3, 3):
+            return False
+        value = self._resolve(written)
+        if not isinstance(value, sp.MatrixBase) or value.shape != (3, 3):
+            return False
+        if self._rotation(line, piece, sp.Matrix(value), self._turn_label(getattr(self, "_text", piece))):
+            self.ctx.defs[sym] = sp.ImmutableMatrix(value)
+            return True
+        if value.free_symbols == old.free_symbols:
+            return False
+        self.ctx.defs[sym] = sp.ImmutableMatrix(value)
+        self._add(line, piece, "new symbol", "unchecked",
+                  f"defines the text's matrix {self.tex(sym)} anew, in other angles (recorded, then used)")
+        return True
+

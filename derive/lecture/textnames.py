@@ -136,6 +136,8 @@ class TextNames(UnreadMembers):
                 if self._turn_meant is not None:      # the turn its name says: what the products after it use
                     self.ctx.defs[mat] = sp.ImmutableMatrix(self._turn_meant)
                 return True
+            if len(members) == 2 and isinstance(members[1], sp.MatrixBase):
+                return self._matrix_again(line, piece, members[0], members[1])
             return False
         if len(members) == 2 and rels == ["="] and self._new_name(members[1]) and not self._new_name(members[0]) \
                 and not _free(members[0]) & {members[1]} and _FUNCTION_OF.match(_right_side(getattr(self, "_text", piece))):

@@ -418,9 +418,14 @@ class Vocabulary:
     """Atom → the symbol `_generic` found for it last (see `_symbol_of`)."""
 
     def angle_index(self, base: str) -> int | None:
-        for names in (self.angles, self.aliases):
-            if base in names:
-                return names.index(base)
+        if base in self.angles:
+            return self.angles.index(base)
+        head, sep, sub = base.partition("_")
+        twin = {"phi": "varphi", "varphi": "phi"}.get(head)
+        if twin and twin + sep + sub in self.angles:
+            return self.angles.index(twin + sep + sub)      # ϕ and φ: two glyphs of one letter
+        if base in self.aliases:
+            return self.aliases.index(base)
         return None
 
     def resolve(self, a: Atom, env: dict | None = None):
