@@ -54,11 +54,18 @@ class Conditions:
         """Why a relation that does not hold as an identity is no slip the derivation can name:
         it ties only the text's free variables (ω̃ᵢ, the moments, its own undefined symbols) and so
         is a condition the text imposes; or it ties the angles to ω̃ᵢ without their rates, which
-        only the rates connect. None when the derivation decides it."""
+        only the rates connect; or it ties the rates to symbols of a case the text set for ω̃ᵢ
+        (ω̃₂ = ω sin α at one instant), a case not imposed on the angles. None when the derivation
+        decides it."""
         rot = self.d.rot
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
         variables = rates | set(rot.ANGLES) | set(lx.W)
+        case = set().union(*(free(v) for w, v in self.ctx.subs.items() if w in lx.W)) - variables
+        every = free(val).union(*(free(self._resolve(f)) for f in targets))
+        if every & rates and every & case:
+            return ("ties the angles' rates to the values the text set for ω̃ᵢ in a case (an instant, a choice of "
+                    "axes): the reader does not put that case into the angles, so it does not decide it")
         if written and isinstance(written[0], sp.Symbol) and written[0] in variables and \
                 all(not free(self._resolve(m)) & variables for m in written[1:]):
             return (f"states the value of {self.tex(written[0])} in this motion: a result the derivation does "

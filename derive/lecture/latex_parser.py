@@ -344,8 +344,13 @@ class _Parser:
         return self.vocab._generic(tok.value.with_(sup=f"({label})"))
 
     def factor_no_implicit(self, env):
-        """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ))."""
-        return self.primary(env)
+        """The argument of sin/cos written without brackets: one factor (sin β cos γ = sin(β)·cos(γ)),
+        with the time after it (cos Ωt = cos(Ω t): a rate times the time, as texts write it)."""
+        arg, tok = self.primary(env), self.peek()
+        if tok is not None and tok.kind == "atom" and tok.value.text.strip() == "t":
+            self.i += 1
+            arg = arg * self.vocab.resolve(tok.value, env)
+        return arg
 
     def _listed_arguments(self) -> bool:
         """At '(': two or more bare symbols separated by commas, read as arguments (a product is

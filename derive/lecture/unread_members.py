@@ -17,6 +17,8 @@ from __future__ import annotations
 
 import re
 
+from sympy import Symbol
+
 from derive.lecture.comparing import free
 
 _RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\left\s*)?$")
@@ -28,6 +30,8 @@ class UnreadMembers:
 
     unread: tuple | None = None
     """(the members kept, the written form of each member left out) of the statement being read."""
+    chain_names: tuple = ()
+    """(a lone new symbol ending the chain, the chain's first member): the text naming that quantity."""
 
     def _loose_ends_dropped(self, parsed):
         """A chain ``a = b = G(u)`` whose end is a lone symbol the text has not defined yet (it
@@ -59,6 +63,12 @@ class UnreadMembers:
             return parsed
         kept = [k for k in range(len(members)) if k not in loose]
         self.unread = (kept, [self._written_member(parsed, k) for k in loose])
+        # ``p_φ = ∂L/∂φ̇ = … = S_z = const``: a lone new symbol before "= constant" names the first member
+        ends = {k: self._written_member(parsed, k) for k in loose if k >= len(members) - 2}
+        tail = [k for k, w in ends.items() if "(" not in w and "const" in (w if k == len(members) - 1 else
+                                                                          str(members[-1]))]
+        self.chain_names = [(members[k], members[0]) for k in tail if isinstance(members[k], Symbol)
+                            and self._new_name(members[k]) and loose == tail]
         return self._members_kept(parsed, kept)
 
     def _written_member(self, parsed, k) -> str:
@@ -73,14 +83,17 @@ class UnreadMembers:
 
     def _statement_read(self, line, piece, dup, pieces):
         """`_statement`, its verdicts then marked for the chain's members it could not read."""
-        outer, self.unread = self.unread, None
+        outer, self.unread, self.chain_names = self.unread, None, []
         start = len(self.claims)
         try:
             self._statement(line, piece, duplicate=dup, pieces=pieces)
             if self.unread is not None:
                 self._unread_marked(start, *self.unread, line, piece)
+            read = any(c.verdict in ("holds", "typo", "fails") for c in self.claims[start:])
+            for name, first in self.chain_names if read else ():
+                self.ctx.defs.setdefault(name, first)     # the text's name for the quantity, from here on
         finally:
-            self.unread = outer
+            self.unread, self.chain_names = outer, []
 
     def _unread_marked(self, start, kept, written, line, piece):
         names = ", ".join(written)

@@ -135,7 +135,10 @@ class VectorStatements:
             for m in row:                 # the text's vectors it has defined (𝐅 = m d𝐕/dt): what it defined them as
                 m.value = m.value.xreplace(put) if hasattr(m.value, "xreplace") else m.value
         written = [m.value for m in first if hasattr(m.value, "has")]
-        if reading.model == "frame" and {I1, I2, I3} <= set().union(*(free(v) for v in written)):
+        equal = {k: v for k, v in self.ctx.subs.items() if k in (I1, I2, I3)}
+        # 𝐋 beside I₁, I₂, I₃, or in a text that has set its principal moments equal (I₁ = I₂)
+        if reading.model == "frame" and ({I1, I2, I3} <= set().union(*(free(v) for v in written)) or
+                                         equal and any(v.has(*vm.L_B) for v in written)):
             principal = vm.Model("frame", self.d).principal_rigid()     # 𝐋 beside I₁, I₂, I₃: principal axes,
             principal.update(vm.principal_tensor())                     # and the plain I their diagonal tensor
             for row in reading.members:
@@ -146,6 +149,9 @@ class VectorStatements:
             for row in reading.members:
                 for m in row:
                     m.value = m.value.xreplace(rigid) if hasattr(m.value, "xreplace") else m.value
+        for row in reading.members if equal else ():
+            for m in row:                 # the text's I₁ = I₂: its vectors' moments are equal as its scalars' are
+                m.value = m.value.xreplace(equal) if hasattr(m.value, "xreplace") else m.value
         if reading.model == "particle":
             self.ctx.vec_model = "particle"
         if len(first) == 1:

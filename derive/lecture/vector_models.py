@@ -205,6 +205,8 @@ class Model:
             return R_B
         if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
             return self.momentum
+        if self.name == "frame" and a.base == "L" and plain and not a.bold and not a.sup and a.sub in ("1", "2", "3"):
+            return self.momentum[int(a.sub) - 1]    # L₃ beside frame derivatives: 𝐋's body component
         if a.base in ("L", "H") and plain and a.bold and a.sub in POINT_LABELS and not _text_letter(p, a, "torque"):
             return self.momentum        # 𝐋_cm, 𝐇_G: about the centre of mass, the point the body turns about here
         if self.name == "principal" and a.base == "I" and plain and not a.sub and not a.sup and not a.bold:

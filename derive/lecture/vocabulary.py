@@ -452,8 +452,8 @@ class Vocabulary:
         if b == "omega":
             if a.bold and not sub:
                 return OMEGA_VEC if a.dots == 0 else None
-            if sub in ("1", "2", "3") and not a.bold:
-                i = int(sub) - 1
+            if sub in ("1", "2", "3") and (not a.bold or not a.dots):
+                i = int(sub) - 1          # 𝛚₃ in a scalar formula: the component, the bold a typeface
                 if a.dots == 0:
                     return W[i]
                 if a.dots == 1:
