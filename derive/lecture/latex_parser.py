@@ -14,6 +14,7 @@ from derive.lecture.vocabulary import (
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
+from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_argument, rate_of,
                                          reading, symbol_rate, written_rate)
@@ -293,35 +294,7 @@ class _Parser:
             self.fail(f"'\\{name}' here")
         self.fail(f"unexpected {tok.value!r}")
 
-    def _abbreviated_trig(self, tok, env):
-        """``c(\\psi)``, ``s(\\theta)``, ``c_{\\psi}``, ``s_\\theta``: the cosine and sine of an angle
-        as engineering texts abbreviate them (only with one of the text's angles as argument)."""
-        a = tok.value
-        if a.base not in ("c", "s") or a.dots or a.bold or a.hat or a.tilde or a.primes or a.sup:
-            return None
-        f = sp.cos if a.base == "c" else sp.sin
-        if a.sub:
-            k = self.vocab.angle_index(a.sub)
-            return f(ANGLES[k]) if k is not None else None
-        nxt = self.peek(0)
-        if getattr(self.vocab.names, "trig_letters", False) and nxt is not None and nxt.kind == "atom" \
-                and not nxt.value.sub and not nxt.value.dots and not nxt.value.bold:
-            k = self.vocab.angle_index(nxt.value.base)         # cθ, sψ: the text's own shorthand
-            if k is not None:
-                self.i += 1
-                return f(ANGLES[k])
-        if not self.at("op", "("):
-            return None
-        start = self.i
-        try:
-            arg = self.paren(env)
-        except NotRead:
-            self.i = start
-            return None
-        if arg in ANGLES:
-            return f(arg)
-        self.i = start
-        return None
+    _abbreviated_trig = abbreviated_trig
 
     def _at_a_time(self, tok, value):
         """ω_y(0), u(t_1): a function of time at a time given by a number or a symbol other than
