@@ -27,7 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering, sign_under_orderings
-from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
+from derive.lecture.zero_test import expanded, rational_zero, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -172,7 +172,7 @@ class Motion:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = flow_of(tuple(euler))
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(expanded(r.xreplace(flow)))) == 0:
+        if free(r) & set(lx.WD) and rational_zero(expanded(r.xreplace(flow))):
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return failed
 

@@ -30,7 +30,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.written_rates import opens_with_rate
-from derive.lecture.zero_test import expanded, surely_nonzero
+from derive.lecture.zero_test import expanded, free_symbols, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
 
@@ -40,7 +40,7 @@ _TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 
 def _free(obj) -> set:
-    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+    return set(free_symbols(obj)) if hasattr(obj, "free_symbols") else set()
 
 
 @functools.lru_cache(maxsize=64)

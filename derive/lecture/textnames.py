@@ -37,7 +37,7 @@ from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.lecture.unread_members import UnreadMembers
-from derive.lecture.zero_test import expanded, surely_nonzero
+from derive.lecture.zero_test import expanded, free_symbols, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -76,7 +76,7 @@ def _moment_multiple(m) -> bool:
 
 
 def _free(obj) -> set:
-    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+    return set(free_symbols(obj)) if hasattr(obj, "free_symbols") else set()
 
 
 def _is_value(v, defined) -> bool:

@@ -29,6 +29,7 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 from mpmath import iv, libmp
+from sympy.polys.fields import field
 from sympy.polys.rings import ring
 
 from derive.lecture import mp_values
@@ -47,8 +48,36 @@ class Outcome:
 
 
 
+def free_symbols(e) -> frozenset:
+    """``e.free_symbols``, memoised per expression (a mutable matrix is walked each time): the
+    checkers ask again for the symbols of the same sides as they unify, screen and compare them,
+    and SymPy walks the whole tree on each call."""
+    try:
+        return _free_symbols_kept(e)
+    except TypeError:
+        return frozenset(e.free_symbols)
+
+
+@functools.lru_cache(maxsize=8192)
+def _free_symbols_kept(e) -> frozenset:
+    return frozenset(e.free_symbols)
+
+
+def atoms(e, *types) -> frozenset:
+    """``e.atoms(*types)``, memoised per expression and types as `free_symbols` is."""
+    try:
+        return _atoms_kept(e, types)
+    except TypeError:
+        return frozenset(e.atoms(*types))
+
+
+@functools.lru_cache(maxsize=8192)
+def _atoms_kept(e, types) -> frozenset:
+    return frozenset(e.atoms(*types))
+
+
 def _trig_angles(expr) -> tuple:
-    return tuple(sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}, key=sp.default_sort_key))
+    return tuple(sorted({f.args[0] for f in atoms(expr, sp.sin, sp.cos, sp.tan)}, key=sp.default_sort_key))
 
 
 # Size bounds (in expression-tree nodes) of the symbolic steps; larger remainders go to the
@@ -177,6 +206,57 @@ def _in_ring(e, gens: dict, R, memo: dict):
     return value
 
 
+def rational_zero(d) -> bool:
+    """``cancel(together(d)) == 0``: whether d is the zero rational function. Where d is a rational
+    function of its symbols with rational coefficients (sums, products and integer powers of them),
+    decided in SymPy's sparse field of rational functions over QQ, each operation of d's tree one
+    operation there, reduced to lowest terms as `cancel` reduces: both are exact, so both give 0
+    for the same d. Anything else (a root, a function, a float, a denominator that vanishes
+    identically) goes to `cancel` itself."""
+    gens = _rational_generators(d)
+    if gens:
+        try:
+            K = field(gens, sp.QQ)[0]
+            return not _in_field(d, dict(zip(gens, K.gens)), K, {})
+        except ZeroDivisionError:
+            pass
+    return sp.cancel(sp.together(d)) == 0
+
+
+def _rational_generators(d) -> list | None:
+    """The symbols of d, by name, when d is built from them and rationals by sums, products and
+    integer powers; None otherwise (and for a number)."""
+    gens = set()
+    for node in sp.preorder_traversal(d):
+        if node.is_Symbol and node.is_commutative:
+            gens.add(node)
+        elif not (node.is_Add or node.is_Mul or node.is_Rational or node.is_Pow and node.exp.is_Integer):
+            return None
+    return sorted(gens, key=sp.default_sort_key) or None
+
+
+def _in_field(e, gens: dict, K, memo: dict):
+    """e (read by `_rational_generators`) as an element of the field K over those generators."""
+    if e in gens:
+        return gens[e]
+    if e in memo:
+        return memo[e]
+    if e.is_Rational:
+        value = K(sp.QQ(int(e.p), int(e.q)))
+    elif e.is_Add:
+        value = K.zero
+        for a in e.args:
+            value += _in_field(a, gens, K, memo)
+    elif e.is_Mul:
+        value = K.one
+        for a in e.args:
+            value *= _in_field(a, gens, K, memo)
+    else:
+        value = _in_field(e.base, gens, K, memo) ** int(e.exp)
+    memo[e] = value
+    return value
+
+
 def symbolic_zero(d) -> str | None:
     """The first symbolic step showing d = 0, or None (not shown: the numeric test decides)."""
     if d == 0:
@@ -189,7 +269,7 @@ def symbolic_zero(d) -> str | None:
     if not d.has(sp.sin, sp.cos, sp.tan):
         if _generators(d) is not None:            # a polynomial in symbols and their reciprocals,
             return None                           # expanded: canonical, so not 0 as a rational function
-        if sp.cancel(sp.together(d)) == 0:        # canonical for rational functions
+        if rational_zero(d):                      # canonical for rational functions
             return "cancel"
         if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES or _nonzero_somewhere(d):
             return None
@@ -239,7 +319,7 @@ def _surely_nonzero(d: sp.Expr) -> bool:
     """`surely_nonzero` of an expression, memoised: a candidate recurs across the cases of a text."""
     if d.is_Number:
         return d != 0 and d.is_finite is True
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
     try:
@@ -270,11 +350,11 @@ def _nonzero_somewhere(d: sp.Expr) -> bool:
     identities) can turn d into 0, and those steps are skipped. `_SCREEN_POINTS` points when d has
     roots (a radicand may be negative at a point: the next one is tried), else two; a symbol
     declared integer or non-real, or an enclosure holding 0 at every point, proves nothing."""
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if any(s.is_integer or s.is_rational is False or s.is_real is False for s in symbols):
         return False
     rng = random.Random(len(symbols))
-    roots = any(not p.exp.is_Integer for p in d.atoms(sp.Pow))
+    roots = any(not p.exp.is_Integer for p in atoms(d, sp.Pow))
     prec = iv.prec
     iv.prec = _INTERVAL_BITS
     try:
@@ -304,7 +384,7 @@ def surely_nonzero_with_roots(d) -> bool:
     `surely_nonzero` is, and for a root of a number, another root or a zero residue."""
     if not isinstance(d, sp.Expr):
         return False
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
     angles = _angles(d)
@@ -329,7 +409,7 @@ def surely_depends(a, b, variables) -> bool:
     `surely_nonzero` cannot evaluate exactly, and where the two products agree."""
     if not isinstance(a, sp.Expr) or not isinstance(b, sp.Expr):
         return False
-    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(a) | free_symbols(b), key=lambda s: s.name)
     moved = [s for s in symbols if s in set(variables)]
     if not moved or len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
@@ -368,7 +448,7 @@ def _exact_point(d, symbols, shift=0, angles=None) -> dict:
 
 def _angles(d) -> list:
     """The symbols d takes the sine, cosine or tangent of, by name."""
-    return sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    return sorted({f.args[0] for f in atoms(d, sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
 
 
 def _residue(e, point: dict, memo: dict) -> int:
@@ -448,7 +528,7 @@ def _enclosure(e, point: dict, memo: dict, functions=_IV_FUNCTIONS):
 
 def _radicals(e) -> bool:
     """Whether e has non-integer powers or functions, where `cancel` is not a canonical form."""
-    return bool(e.atoms(sp.Function)) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+    return bool(atoms(e, sp.Function)) or any(not p.exp.is_Integer for p in atoms(e, sp.Pow))
 
 
 def sample(symbols, rng: random.Random) -> list:
@@ -481,8 +561,8 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
 
 def _numeric(lhs, rhs, seed, points) -> tuple[Outcome, bool]:
     """`numeric_zero` at its first ``points`` points, and whether it found a counterexample."""
-    symbols = sorted(lhs.free_symbols | rhs.free_symbols, key=lambda x: x.name)
-    transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+    symbols = sorted(free_symbols(lhs) | free_symbols(rhs), key=lambda x: x.name)
+    transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in atoms(e, sp.Pow))
                          for e in (*lhs, *rhs))
     rng = random.Random(seed)
     if transcendental:
