@@ -1,6 +1,7 @@
 """The cheaper exact steps of the notes checker: `expand` and derivatives in a polynomial ring
 (`zero_test.expanded`, `zero_test.expanded_derivative`), `cancel` in the field of rational
-functions (`zero_test.rational_zero`), the memoised symbols and atoms of an expression, the exact screen of a quotient's dependence (`zero_test.surely_depends`),
+functions (`sparse_forms.rational_zero`), `trig_reduce`'s zero test in the ring
+(`sparse_forms.trig_zero`), the memoised symbols and atoms of an expression, the exact screen of a quotient's dependence (`zero_test.surely_depends`),
 `trig_reduce` of an expression with no denominator, the one-coordinate reader's linear solve and
 the sign of a difference under the text's orderings. Each gives what the costlier step it stands
 in for gives."""
@@ -10,6 +11,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import vector_algebra_model as vam
 from derive.lecture import vector_models as vm
+from derive.lecture import sparse_forms as sf
 from derive.lecture import zero_test as zt
 from derive.lecture.context import sign_under_orderings
 from derive.lecture.coordinate_statements import _solutions
@@ -60,26 +62,50 @@ RATIONAL = [
 
 @pytest.mark.parametrize("e", RATIONAL)
 def test_a_rational_function_is_zero_in_the_field_exactly_where_cancel_finds_it_zero(e):
-    assert zt.rational_zero(e) == (sp.cancel(sp.together(e)) == 0)
+    assert sf.rational_zero(e) == (sp.cancel(sp.together(e)) == 0)
 
 
 def test_the_field_decides_a_rational_function_and_leaves_the_rest_to_cancel():
-    assert zt._rational_generators(x / (x + 1) - y) == [x, y]
-    assert zt._rational_generators(sp.sqrt(x) / (x + 1)) is None
-    assert zt._rational_generators(sp.Integer(3)) is None
+    assert sf._rational_generators(x / (x + 1) - y) == [x, y]
+    assert sf._rational_generators(sp.sqrt(x) / (x + 1)) is None
+    assert sf._rational_generators(sp.Integer(3)) is None
     assert zt.symbolic_zero((x ** 2 - y ** 2) / (x - y) - x - y) == "cancel"
+
+
+TRIGONOMETRIC = [
+    (sp.sin(b) ** 2 + sp.cos(b) ** 2 - 1, (b,)),                                  # zero
+    (x * sp.cos(b) ** 4 - x * (1 - sp.sin(b) ** 2) ** 2, (b,)),                   # zero: cos⁴ = (1 − sin²)²
+    (sp.cos(b) ** 3 / x + sp.cos(b) * sp.sin(b) ** 2 / x - sp.cos(b) / x, (b,)),  # zero over a monomial
+    (sp.cos(b) ** 2 * sp.cos(g) ** 2 - (1 - sp.sin(b) ** 2) * (1 - sp.sin(g) ** 2), (b, g)),
+    (x * (y + 1 / x) - 1 - x * y, (b,)),                                          # x·x⁻¹ = 1
+    (sp.cos(b) ** 2 - 1, (b,)),                                                   # not zero
+    (sp.cos(b) ** 2 + sp.sin(b) ** 2 - 1, ()),                                    # b not an angle: not reduced
+    (sp.cos(b) * sp.sin(g) - sp.sin(g) * sp.cos(b) + x * sp.sin(b), (b, g)),      # not zero
+]
+
+
+@pytest.mark.parametrize("e, angles", TRIGONOMETRIC)
+def test_a_polynomial_in_sines_and_cosines_is_zero_in_the_ring_exactly_where_trig_reduce_gives_0(e, angles):
+    assert sf.trig_zero(e, angles) == (trig_reduce(e, angles) == 0)
+
+
+def test_what_the_ring_does_not_read_is_left_to_trig_reduce():
+    assert sf.trig_zero(sp.tan(b) * sp.cos(b) - sp.sin(b), (b,)) is None          # tan: a denominator cos
+    assert sf.trig_zero(sp.cos(b) ** 2 / (x + 1), (b,)) is None                   # a quotient by a sum
+    assert sf.trig_zero(sp.sin(2 * b) - 2 * sp.sin(b) * sp.cos(b), (b,)) is None  # sin of no symbol
+    assert zt.symbolic_zero(sp.sin(b) ** 2 * x + sp.cos(b) ** 2 * x - x + sp.tan(b) - sp.tan(b)) == "trig_reduce"
 
 
 def test_the_memoised_symbols_and_atoms_are_sympys_and_a_mutable_matrix_is_walked_each_time():
     e = sp.sin(b) * x + sp.sqrt(y + 1) / m
-    assert zt.free_symbols(e) == frozenset(e.free_symbols)
-    assert zt.free_symbols(e) is zt.free_symbols(sp.sin(b) * x + sp.sqrt(1 + y) / m)   # kept per expression
-    assert zt.atoms(e, sp.Pow) == frozenset(e.atoms(sp.Pow))
-    assert zt.atoms(e, sp.sin, sp.cos) == {sp.sin(b)}
+    assert sf.free_symbols(e) == frozenset(e.free_symbols)
+    assert sf.free_symbols(e) is sf.free_symbols(sp.sin(b) * x + sp.sqrt(1 + y) / m)   # kept per expression
+    assert sf.atoms(e, sp.Pow) == frozenset(e.atoms(sp.Pow))
+    assert sf.atoms(e, sp.sin, sp.cos) == {sp.sin(b)}
     M = sp.Matrix([[x, y]])
-    assert zt.free_symbols(M) == {x, y}
+    assert sf.free_symbols(M) == {x, y}
     M[0, 1] = m
-    assert zt.free_symbols(M) == {x, m}
+    assert sf.free_symbols(M) == {x, m}
 
 
 def test_a_quotient_that_moves_with_the_variables_is_proved_to_and_a_true_multiple_never_is():

@@ -9,7 +9,7 @@ sin θ ≠ 0). `AlongMomentum.apply` writes an expression in ω̃ alone that way
 text derives for its chosen orientation (φ̇ = L (I₁ω₁² + I₂ω₂²)/(L² − I₃²ω₃²), tan θ = …) can
 be checked. Only for the proper Euler sequences (first and third axes equal).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ import functools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.zero_test import free_symbols
+from derive.lecture.sparse_forms import free_symbols
 from derive.symbolic import rotations as rot
 from derive.symbolic.lagrangian import I1, I2, I3
 

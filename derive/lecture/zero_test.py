@@ -18,7 +18,7 @@ non-zero), `surely_depends` (the same screen for a quotient's dependence on some
    no function or radical; else with mpmath at `DIGITS` digits (`derive.lecture.mp_values`, the
    values `lambdify` would give), zero meaning below 10⁻⁴⁰ of the sides' size.
 
-May import: :mod:`derive.lecture.mp_values`, :mod:`derive.symbolic`, SymPy, mpmath.
+May import: :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.symbolic`, SymPy, mpmath.
 """
 from __future__ import annotations
 
@@ -29,10 +29,10 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 from mpmath import iv, libmp
-from sympy.polys.fields import field
 from sympy.polys.rings import ring
 
 from derive.lecture import mp_values
+from derive.lecture.sparse_forms import atoms, free_symbols, generators, in_ring, rational_zero, ring_generators, trig_zero
 from derive.symbolic import rotations
 
 SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
@@ -46,34 +46,6 @@ class Outcome:
     ok: bool
     method: str
 
-
-
-def free_symbols(e) -> frozenset:
-    """``e.free_symbols``, memoised per expression (a mutable matrix is walked each time): the
-    checkers ask again for the symbols of the same sides as they unify, screen and compare them,
-    and SymPy walks the whole tree on each call."""
-    try:
-        return _free_symbols_kept(e)
-    except TypeError:
-        return frozenset(e.free_symbols)
-
-
-@functools.lru_cache(maxsize=8192)
-def _free_symbols_kept(e) -> frozenset:
-    return frozenset(e.free_symbols)
-
-
-def atoms(e, *types) -> frozenset:
-    """``e.atoms(*types)``, memoised per expression and types as `free_symbols` is."""
-    try:
-        return _atoms_kept(e, types)
-    except TypeError:
-        return frozenset(e.atoms(*types))
-
-
-@functools.lru_cache(maxsize=8192)
-def _atoms_kept(e, types) -> frozenset:
-    return frozenset(e.atoms(*types))
 
 
 def _trig_angles(expr) -> tuple:
@@ -103,7 +75,7 @@ def bounded_expand(d):
 
 def expanded(d):
     """``sp.expand(d)``; a polynomial with rational coefficients in symbols, their reciprocals and
-    sin, cos, tan of symbols (`_generators`) multiplied out in SymPy's sparse polynomial ring
+    sin, cos, tan of symbols (`sparse_forms.generators`) multiplied out in SymPy's sparse polynomial ring
     instead (sums and products of dicts of monomials), each of those taken as one generator. The
     result, the sum of its monomials as SymPy builds it (x·x⁻¹ = 1, sin θ² kept), is the canonical
     sum `expand` reaches by rewriting the expression tree term by term. Kept per expression: a
@@ -120,11 +92,11 @@ def _expanded_kept(d):
 
 
 def _expanded(d):
-    gens = _generators(d)
+    gens = generators(d)
     if not gens:
         return sp.expand(d)
     R = ring(gens, sp.QQ)[0]
-    return _in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
+    return in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
 
 
 def expanded_derivative(e, *xs, field=None):
@@ -134,127 +106,23 @@ def expanded_derivative(e, *xs, field=None):
     polynomial ring, c·k·x^(k−1)… monomial by monomial; anything else through ``sp.diff``. Either
     way the result is the canonical expanded sum."""
     field = field or {}
-    parts = [_ring_generators(t) for t in (e, *field.values())]
+    parts = [ring_generators(t) for t in (e, *field.values())]
     if all(g is not None for g in parts):
         gens = sorted(set().union(*parts, xs, field), key=sp.default_sort_key)
         wrt = (*xs, *field)
         if all(x.is_Symbol for x in wrt) and not any(x in g.free_symbols for x in wrt for g in gens if g != x):
             R = ring(gens, sp.QQ)[0]
             at = dict(zip(gens, R.gens))
-            p = _in_ring(e, at, R, {})
+            p = in_ring(e, at, R, {})
             for x in xs:
                 p = p.diff(at[x])
             if field:
-                p = sum((p.diff(at[x]) * _in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
+                p = sum((p.diff(at[x]) * in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
             return p.as_expr()
     d = sp.diff(e, *xs) if xs else e
     if field:
         d = sum((sp.diff(d, x) * v for x, v in field.items()), sp.S.Zero)
     return expanded(d)
-
-
-def _ring_generators(t) -> list | None:
-    """`_generators` of t, an atom included (a symbol is its own, a rational has none)."""
-    t = sp.sympify(t)
-    if t.is_Symbol:
-        return [t]
-    return [] if t.is_Rational else _generators(t)
-
-
-def _generators(d) -> list | None:
-    """The generators of d as `expanded` reads it, by name; None when d is anything else (a
-    function of a sum, a root, a float, a quotient by a sum)."""
-    if not isinstance(d, sp.Expr) or d.is_Atom:
-        return None
-    gens = set()
-    for node in sp.preorder_traversal(d):
-        if node.is_Symbol and node.is_commutative:
-            gens.add(node)
-        elif node.is_Add or node.is_Mul or node.is_Rational:
-            continue
-        elif node.is_Pow and node.exp.is_Integer and (node.exp > 0 or node.base.is_Symbol):
-            if node.exp < 0:
-                gens.add(1 / node.base)
-        elif isinstance(node, (sp.sin, sp.cos, sp.tan)) and node.args[0].is_Symbol:
-            gens.add(node)
-        else:
-            return None
-    return sorted(gens, key=sp.default_sort_key)
-
-
-def _in_ring(e, gens: dict, R, memo: dict):
-    """e (read by `_generators`) as an element of the ring R over those generators."""
-    if e in gens:
-        return gens[e]
-    if e in memo:
-        return memo[e]
-    if e.is_Rational:
-        value = R.ground_new(sp.QQ(int(e.p), int(e.q)))
-    elif e.is_Add:
-        value = R.zero
-        for a in e.args:
-            value += _in_ring(a, gens, R, memo)
-    elif e.is_Mul:
-        value = R.one
-        for a in e.args:
-            value *= _in_ring(a, gens, R, memo)
-    elif e.exp > 0:
-        value = _in_ring(e.base, gens, R, memo) ** int(e.exp)
-    else:
-        value = gens[1 / e.base] ** int(-e.exp)
-    memo[e] = value
-    return value
-
-
-def rational_zero(d) -> bool:
-    """``cancel(together(d)) == 0``: whether d is the zero rational function. Where d is a rational
-    function of its symbols with rational coefficients (sums, products and integer powers of them),
-    decided in SymPy's sparse field of rational functions over QQ, each operation of d's tree one
-    operation there, reduced to lowest terms as `cancel` reduces: both are exact, so both give 0
-    for the same d. Anything else (a root, a function, a float, a denominator that vanishes
-    identically) goes to `cancel` itself."""
-    gens = _rational_generators(d)
-    if gens:
-        try:
-            K = field(gens, sp.QQ)[0]
-            return not _in_field(d, dict(zip(gens, K.gens)), K, {})
-        except ZeroDivisionError:
-            pass
-    return sp.cancel(sp.together(d)) == 0
-
-
-def _rational_generators(d) -> list | None:
-    """The symbols of d, by name, when d is built from them and rationals by sums, products and
-    integer powers; None otherwise (and for a number)."""
-    gens = set()
-    for node in sp.preorder_traversal(d):
-        if node.is_Symbol and node.is_commutative:
-            gens.add(node)
-        elif not (node.is_Add or node.is_Mul or node.is_Rational or node.is_Pow and node.exp.is_Integer):
-            return None
-    return sorted(gens, key=sp.default_sort_key) or None
-
-
-def _in_field(e, gens: dict, K, memo: dict):
-    """e (read by `_rational_generators`) as an element of the field K over those generators."""
-    if e in gens:
-        return gens[e]
-    if e in memo:
-        return memo[e]
-    if e.is_Rational:
-        value = K(sp.QQ(int(e.p), int(e.q)))
-    elif e.is_Add:
-        value = K.zero
-        for a in e.args:
-            value += _in_field(a, gens, K, memo)
-    elif e.is_Mul:
-        value = K.one
-        for a in e.args:
-            value *= _in_field(a, gens, K, memo)
-    else:
-        value = _in_field(e.base, gens, K, memo) ** int(e.exp)
-    memo[e] = value
-    return value
 
 
 def symbolic_zero(d) -> str | None:
@@ -267,7 +135,7 @@ def symbolic_zero(d) -> str | None:
     if d == 0:
         return "expand"
     if not d.has(sp.sin, sp.cos, sp.tan):
-        if _generators(d) is not None:            # a polynomial in symbols and their reciprocals,
+        if generators(d) is not None:            # a polynomial in symbols and their reciprocals,
             return None                           # expanded: canonical, so not 0 as a rational function
         if rational_zero(d):                      # canonical for rational functions
             return "cancel"
@@ -276,10 +144,11 @@ def symbolic_zero(d) -> str | None:
         return "simplify" if sp.simplify(d) == 0 else None
     if _size(d) > _TRIG_REDUCE_MAX_NODES or _nonzero_somewhere(d):
         return None
-    reduced = rotations.trig_reduce(d, _trig_angles(d))
-    if reduced == 0:
-        return "trig_reduce"
-    return None
+    angles = _trig_angles(d)
+    zero = trig_zero(d, angles)
+    if zero is None:
+        zero = rotations.trig_reduce(d, angles) == 0
+    return "trig_reduce" if zero else None
 
 
 _PRIMES = (11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107)
