@@ -23,17 +23,16 @@ Either only makes a claim hold; it never flags one. And a third, which judges:
 """
 from __future__ import annotations
 
-import functools
 import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.written_rates import opens_with_rate
 from derive.lecture.sparse_forms import free_symbols, trig_zero
+from derive.lecture.written_rates import opens_with_rate
 from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
-from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
+from derive.symbolic.rotations import ANGLES, RATES, trig_reduce
 
 
 _INVERSE = {sp.tan: sp.atan, sp.sin: sp.asin, sp.cos: sp.acos, sp.cot: sp.acot}
@@ -42,12 +41,6 @@ _TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 def _free(obj) -> set:
     return set(free_symbols(obj)) if hasattr(obj, "free_symbols") else set()
-
-
-@functools.lru_cache(maxsize=64)
-def _euler_lagrange(lag) -> tuple:
-    """d/dt ∂L/∂q̇ − ∂L/∂q of each angle q: derived once per Lagrangian, not per statement."""
-    return tuple(time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q) for q, qd in zip(ANGLES, RATES))
 
 
 def _trig_zero(d) -> bool:
@@ -178,7 +171,7 @@ class OnTheMotion:
         lag = self._resolve(lag) if lag is not None else self.d.top.lagrangian
         a, b = (x.xreplace(self.ctx.subs) for x in self._unify([val, target]))
         diff = expanded(a - b)
-        for q, el in zip(ANGLES, _euler_lagrange(lag)):
+        for q, el in zip(ANGLES, self.d.residuals(lag)):
             el = el.xreplace(self.ctx.subs)
             for sign in (1, -1):
                 d = expanded(diff - sign * el)
