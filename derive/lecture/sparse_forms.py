@@ -48,6 +48,18 @@ def _atoms_kept(e, types) -> frozenset:
     return frozenset(e.atoms(*types))
 
 
+@functools.lru_cache(maxsize=1024)
+def polynomial_ring(gens: tuple):
+    """SymPy's sparse ring over QQ in ``gens``, per tuple of generators: the one ``ring`` returns
+    (SymPy keeps one ring per key) without parsing its options again on each call."""
+    return ring(gens, sp.QQ)[0]
+
+
+@functools.lru_cache(maxsize=1024)
+def _rational_field(gens: tuple):
+    return field(gens, sp.QQ)[0]
+
+
 def ring_generators(t) -> list | None:
     """`generators` of t, an atom included (a symbol is its own, a rational has none)."""
     t = sp.sympify(t)
@@ -111,7 +123,7 @@ def rational_zero(d) -> bool:
     gens = _rational_generators(d)
     if gens:
         try:
-            K = field(gens, sp.QQ)[0]
+            K = _rational_field(tuple(gens))
             return not _in_field(d, dict(zip(gens, K.gens)), K, {})
         except ZeroDivisionError:
             pass
@@ -164,7 +176,7 @@ def trig_zero(d, angles) -> bool | None:
     gens = set(gens)
     gens |= {sp.sin(g.args[0]) for g in gens if isinstance(g, sp.cos) and g.args[0] in angles}
     gens = sorted(gens, key=sp.default_sort_key)
-    R = ring(gens, sp.QQ)[0]
+    R = polynomial_ring(tuple(gens))
     p = in_ring(d, dict(zip(gens, R.gens)), R, {})
     where = {g: k for k, g in enumerate(gens)}
     pairs = [(where[sp.sin(g.args[0])], k) for k, g in enumerate(gens) if isinstance(g, sp.cos) and g.args[0] in angles]

@@ -29,10 +29,10 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 from mpmath import iv, libmp
-from sympy.polys.rings import ring
 
 from derive.lecture import mp_values
-from derive.lecture.sparse_forms import atoms, free_symbols, generators, in_ring, rational_zero, ring_generators, trig_zero
+from derive.lecture.sparse_forms import (atoms, free_symbols, generators, in_ring, polynomial_ring, rational_zero,
+                                         ring_generators, trig_zero)
 from derive.symbolic import rotations
 
 SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
@@ -95,7 +95,7 @@ def _expanded(d):
     gens = generators(d)
     if not gens:
         return sp.expand(d)
-    R = ring(gens, sp.QQ)[0]
+    R = polynomial_ring(tuple(gens))
     return in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
 
 
@@ -111,7 +111,7 @@ def expanded_derivative(e, *xs, field=None):
         gens = sorted(set().union(*parts, xs, field), key=sp.default_sort_key)
         wrt = (*xs, *field)
         if all(x.is_Symbol for x in wrt) and not any(x in g.free_symbols for x in wrt for g in gens if g != x):
-            R = ring(gens, sp.QQ)[0]
+            R = polynomial_ring(tuple(gens))
             at = dict(zip(gens, R.gens))
             p = in_ring(e, at, R, {})
             for x in xs:
