@@ -524,8 +524,8 @@ class TextNames(UnreadMembers):
     # -- 4: calculus ------------------------------------------------------------------------------
     def _calculus(self, v):
         """``DT(e)`` and ``Derivative(e, x)`` evaluated (the module docstring, item 4)."""
-        if not hasattr(v, "has"):
-            return v
+        if not hasattr(v, "has") or not v.has(lx.Transposed, sp.MatPow, lx.DT, sp.Derivative):
+            return v            # (one walk of v for the four kinds, most values holding none)
         if v.has(lx.Transposed):
             v = v.replace(lambda e: isinstance(e, lx.Transposed) and isinstance(e.args[0], sp.MatrixBase),
                           lambda e: e.args[0].T)
