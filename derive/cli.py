@@ -16,6 +16,7 @@ nothing but the one ``error:`` line of a failure, and stdout only the result.
 from __future__ import annotations
 
 import argparse
+import gc
 import os
 import signal
 import sys
@@ -86,6 +87,9 @@ def _cmd_verify_notes(args) -> int:
     """``derive verify NOTES.md``: every formula of the notes against the derivation."""
     from derive.lecture import notes_check
 
+    # The imported modules (SymPy's most of all) live as long as the command: kept out of the
+    # collector's generations, they are not walked again by every full collection and at exit.
+    gc.freeze()
     note("reading the notes and deriving their formulas with SymPy (a few seconds)")
     claims = notes_check.check_notes(args.notes, args.convention)
     sys.stdout.write(notes_check.render(claims, args.format, path=str(args.notes)))

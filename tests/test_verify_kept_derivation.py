@@ -133,6 +133,26 @@ def test_every_derived_quantity_is_kept_as_derived():
     assert "along" in vars(tait_bryan) and not tait_bryan.along.ok
 
 
+def test_the_momenta_the_fast_tops_precession_and_lagranges_residuals_are_kept_as_derived():
+    from derive.lecture.fast_top import slow_precession_lead
+
+    d = dv.Derivation("z-x-z")
+    assert d.momenta == {q: d.top.momentum(q) for q in dv.rot.ANGLES}
+    assert d.fast_precession is not None
+    assert d.fast_precession == slow_precession_lead(d.steady_force, dv.rot.alpha_d, dv.rot.gamma_d)
+    assert d.residuals(d.top.lagrangian) == dv.lagrange_residuals(d.top.lagrangian) == d.top_residuals
+    assert d.residuals(d.kinetic) is d.kinetic_residuals
+    other = d.kinetic.xreplace({dv.I2: dv.I1})                      # any other Lagrangian: derived
+    assert d.residuals(other) == dv.lagrange_residuals(other) != d.kinetic_residuals
+    values = d.derived()
+    assert {"d.momenta", "d.fast_precession", "d.top_residuals", "d.kinetic_residuals"} <= set(values)
+    again = dv.Derivation("z-x-z")
+    again.seed({path: kept.decode(json.loads(json.dumps(kept.encode(v)))) for path, v in values.items()})
+    for name in ("momenta", "fast_precession", "top_residuals", "kinetic_residuals"):
+        assert name in vars(again) and sp.srepr(getattr(again, name)) == sp.srepr(getattr(d, name)), name
+    assert again.residuals(again.top.lagrangian) is again.top_residuals
+
+
 def test_a_value_outside_the_whitelist_is_left_out(tmp_path, monkeypatch):
     monkeypatch.setenv("DERIVE_CACHE", str(tmp_path))
     t = sp.Symbol("t")

@@ -36,11 +36,7 @@ def free(obj) -> set:
     return set(getattr(obj, "free_symbols", set()))
 
 
-@functools.lru_cache(maxsize=8192)
-def _free_symbols(e: sp.Basic) -> frozenset:
-    """``e.free_symbols``, memoised: SymPy walks the tree on each call, and the checker asks again
-    for the symbols of the same values as it resolves, unifies and compares them."""
-    return frozenset(e.free_symbols)
+_free_symbols = zt.free_symbols
 
 
 def column(v):
@@ -50,7 +46,7 @@ def column(v):
             return sp.Matrix(v).T
         return sp.Matrix(v).reshape(len(v), 1)
     v = sp.sympify(v)
-    if v.free_symbols & set(lx.BASIS):
+    if _free_symbols(v) & set(lx.BASIS):
         ex = sp.expand(v)
         coeffs = [ex.coeff(e) for e in lx.BASIS]
         rest = sp.expand(ex - sum(c * e for c, e in zip(coeffs, lx.BASIS)))
@@ -75,7 +71,7 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     if lhs.shape != rhs.shape:
         return False, f"a {_shape(lhs)} against a {_shape(rhs)}"
     diffs = lhs - rhs
-    roots = any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in sp.sympify(e).atoms(sp.Pow))
+    roots = any(not p.exp.is_Integer for e in (*lhs, *rhs) for p in zt.atoms(sp.sympify(e), sp.Pow))
     # a difference shown non-zero at an exact point goes straight to the numeric test, whose
     # counterexample is the reason given (the symbolic steps could not show it zero); so does one
     # the numeric test's first point shows non-zero, with that point's outcome
@@ -112,8 +108,8 @@ def _real_zero(lhs, rhs, seed, points=zt.POINTS):
     them) at which every radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where
     its roots exist, not on another branch of them); None when no such point turns up."""
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
-    symbols = sorted(set().union(*(e.free_symbols for e in exprs)), key=lambda x: x.name)
-    bases = sorted({p.base for e in exprs for p in e.atoms(sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
+    symbols = sorted(set().union(*(_free_symbols(e) for e in exprs)), key=lambda x: x.name)
+    bases = sorted({p.base for e in exprs for p in zt.atoms(e, sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
     f = mp_values.evaluator(symbols, exprs)
     radicands = mp_values.evaluator(symbols, bases)
     rng = random.Random(seed)

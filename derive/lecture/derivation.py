@@ -8,7 +8,7 @@ keeps what this one added, in the compile cache, `derive.lecture.derivation_kept
 column as a linear form in ê₁ ê₂ ê₃) and `families` (the quantities one slip of a label may swap).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.derivation_kept`,
-:mod:`derive.lecture.orientation`, :mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.fast_top`, :mod:`derive.lecture.orientation`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import sympy as sp
 
 from derive.lecture import derivation_kept as kept
 from derive.lecture import latex as lx
+from derive.lecture.fast_top import slow_precession_lead
 from derive.lecture.orientation import AlongMomentum
 from derive.symbolic import rotations as rot
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, EulerLagrange, Reduction, heavy_symmetric_top, kinetic_energy
@@ -69,6 +70,34 @@ class Derivation:
         rot = self.rot
         return sp.expand(sp.diff(self.top.lagrangian, rot.beta).xreplace({rot.beta_d: 0}))
 
+    @functools.cached_property
+    def momenta(self) -> dict:
+        """p_q = ∂L/∂q̇ of the heavy top, for each angle q."""
+        return {q: self.top.momentum(q) for q in rot.ANGLES}
+
+    @functools.cached_property
+    def fast_precession(self):
+        """c in α̇ = c/γ̇ + O(1/γ̇³), the fast top's slow precession (`fast_top.slow_precession_lead`
+        of the steady-precession condition), or None."""
+        return slow_precession_lead(self.steady_force, self.rot.alpha_d, self.rot.gamma_d)
+
+    @functools.cached_property
+    def top_residuals(self) -> tuple:
+        return lagrange_residuals(self.top.lagrangian)
+
+    @functools.cached_property
+    def kinetic_residuals(self) -> tuple:
+        return lagrange_residuals(self.kinetic)
+
+    def residuals(self, lag) -> tuple:
+        """d/dt ∂L/∂q̇ − ∂L/∂q of each angle q for the Lagrangian ``lag``: those of the heavy top's L
+        and of the free body's T are quantities of the derivation (kept between commands)."""
+        if lag == self.top.lagrangian:
+            return self.top_residuals
+        if lag == self.kinetic:
+            return self.kinetic_residuals
+        return lagrange_residuals(lag)
+
     def euler(self, subs: dict) -> list:
         """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
         moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
@@ -111,11 +140,11 @@ class Derivation:
         if key is lx.DLDT:
             return [linear(sp.Matrix(self.euler({})))]
         if key in (lx.MOMENTUM[0], lx.p_alpha_sym()):
-            return [self.top.momentum(self.rot.alpha)]
+            return [self.momenta[self.rot.alpha]]
         if key in (lx.MOMENTUM[2], lx.p_gamma_sym()):
-            return [self.top.momentum(self.rot.gamma)]
+            return [self.momenta[self.rot.gamma]]
         if key is lx.MOMENTUM[1]:
-            return [self.top.momentum(self.rot.beta)]
+            return [self.momenta[self.rot.beta]]
         if key in lx.W:
             return [self.omega[lx.W.index(key)]]
         if key in lx.PRIMED or key in lx.INERTIAL:
@@ -186,6 +215,13 @@ class Derivation:
 
 
 _PARTS = ("top", "reduction", "sleeping", "along")  # objects, kept by their own quantities
+
+
+@functools.lru_cache(maxsize=64)
+def lagrange_residuals(lag) -> tuple:
+    """d/dt ∂L/∂q̇ − ∂L/∂q of each angle q: derived once per Lagrangian, not per statement."""
+    return tuple(rot.time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q)
+                 for q, qd in zip(rot.ANGLES, rot.RATES))
 
 
 @functools.cache

@@ -1,8 +1,9 @@
 """A convention's derived quantities kept in the compile cache between commands.
 
 `derive verify NOTES.md` derives its text's convention on first use (`derive.lecture.derivation`:
-ω̃, the frames, the heavy top's Lagrangian and energy, Routh's reduction, the sleeping top, the
-orientation along 𝐋). What
+ω̃, the frames, the heavy top's Lagrangian, energy and momenta, Routh's reduction, the sleeping top,
+the orientation along 𝐋, the fast top's slow precession, Lagrange's residuals of the top's L and
+the free body's T). What
 one command derived is kept in ``<cache>/models/derivation-<sequence>-<key>/derivation.json``
 (:func:`derive.runtime.cache.models_dir`, a marked folder with a SHA-256 manifest, written
 atomically by :func:`derive.runtime.cache.write_folder`) and given to the next command of the same

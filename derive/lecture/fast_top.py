@@ -71,7 +71,7 @@ class FastTop:
         spin = {rot.gamma_d: _S, lx.p_gamma: I3 * _S, lx.W[self.vocab.axial]: _S}
         if not free(val) & set(spin) or free(val) & {rot.alpha_d, rot.beta_d}:
             return None
-        c = slow_precession_lead(self.d.steady_force, rot.alpha_d, rot.gamma_d)
+        c = self.d.fast_precession
         if c is None:
             return None
         lead = _lead(sp.expand(val.xreplace(spin) * _S))

@@ -15,7 +15,7 @@ settings, the text's definitions, the equations it has written). Gives: the mixi
   latest equations the text wrote for those components under the same settings, or Euler's
   under them; the text's undefined symbols in a solution are its integration constants.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.zero_test`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -27,6 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering, sign_under_orderings
+from derive.lecture.sparse_forms import rational_zero
 from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
@@ -172,7 +173,7 @@ class Motion:
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = flow_of(tuple(euler))
-        if free(r) & set(lx.WD) and sp.cancel(sp.together(expanded(r.xreplace(flow)))) == 0:
+        if free(r) & set(lx.WD) and rational_zero(expanded(r.xreplace(flow))):
             return True, "a consequence of Euler's equations (zero once ω̃̇ is taken from them)", r
         return failed
 

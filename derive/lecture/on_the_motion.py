@@ -23,21 +23,21 @@ Either only makes a claim hold; it never flags one. And a third, which judges:
    (kept in ``ctx.angles_stated``); a later relation of the angles alone, with no rates, which is
    no identity, is judged with those angles put in (``\\tan\\alpha = \\frac{I_3}{I_1}\\tan\\theta``
    holds, a step of a chain that breaks it is a slip), the why naming the line it stands on. May import: :mod:`derive.lecture.latex`,
-:mod:`derive.lecture.written_rates`, :mod:`derive.lecture.zero_test` (its exact screen),
+:mod:`derive.lecture.written_rates`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test` (its exact screen),
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
-import functools
 import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.sparse_forms import free_symbols, trig_zero
 from derive.lecture.written_rates import opens_with_rate
 from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS
-from derive.symbolic.rotations import ANGLES, RATES, time_derivative, trig_reduce
+from derive.symbolic.rotations import ANGLES, RATES, trig_reduce
 
 
 _INVERSE = {sp.tan: sp.atan, sp.sin: sp.asin, sp.cos: sp.acos, sp.cot: sp.acot}
@@ -45,13 +45,13 @@ _TRIG_FIRST = re.compile(r"^\s*&?\s*(\\(?:tan|sin|cos|cot)(?![A-Za-z])\s*)?")
 
 
 def _free(obj) -> set:
-    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+    return set(free_symbols(obj)) if hasattr(obj, "free_symbols") else set()
 
 
-@functools.lru_cache(maxsize=64)
-def _euler_lagrange(lag) -> tuple:
-    """d/dt ∂L/∂q̇ − ∂L/∂q of each angle q: derived once per Lagrangian, not per statement."""
-    return tuple(time_derivative(sp.diff(lag, qd), accels=ACCELS) - sp.diff(lag, q) for q, qd in zip(ANGLES, RATES))
+def _trig_zero(d) -> bool:
+    """``trig_reduce(d) == 0``, in the sparse ring where d is a polynomial it reads."""
+    zero = trig_zero(d, ANGLES)
+    return trig_reduce(d) == 0 if zero is None else zero
 
 
 class OnTheMotion:
@@ -195,10 +195,10 @@ class OnTheMotion:
         lag = self._resolve(lag) if lag is not None else self.d.top.lagrangian
         a, b = (x.xreplace(self.ctx.subs) for x in self._unify([val, target]))
         diff = expanded(a - b)
-        for q, el in zip(ANGLES, _euler_lagrange(lag)):
+        for q, el in zip(ANGLES, self.d.residuals(lag)):
             el = el.xreplace(self.ctx.subs)
             for sign in (1, -1):
                 d = expanded(diff - sign * el)
-                if not surely_nonzero(d) and trig_reduce(d) == 0:
+                if not surely_nonzero(d) and _trig_zero(d):
                     return q
         return None

@@ -9,7 +9,7 @@ sin θ ≠ 0). `AlongMomentum.apply` writes an expression in ω̃ alone that way
 text derives for its chosen orientation (φ̇ = L (I₁ω₁² + I₂ω₂²)/(L² − I₃²ω₃²), tan θ = …) can
 be checked. Only for the proper Euler sequences (first and third axes equal).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import functools
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.sparse_forms import free_symbols
 from derive.symbolic import rotations as rot
 from derive.symbolic.lagrangian import I1, I2, I3
 
@@ -71,7 +72,7 @@ class AlongMomentum:
     def apply(self, v):
         """v with the rates and the second and third angles written in ω̃ (the first angle stays)."""
         v = sp.sympify(v)
-        if v.free_symbols & set(rot.RATES):
+        if free_symbols(v) & set(rot.RATES):
             v = v.xreplace(self.rates)
         if v.has(sp.tan, sp.cot):
             v = v.replace(sp.tan, lambda a: sp.sin(a) / sp.cos(a)).replace(sp.cot, lambda a: sp.cos(a) / sp.sin(a))
@@ -79,4 +80,4 @@ class AlongMomentum:
 
     def angles_left(self, v) -> bool:
         """Does v still hold the second or third angle outside sin and cos (θ alone, sin 2θ)?"""
-        return bool(sp.sympify(v).free_symbols & {rot.ANGLES[1], rot.ANGLES[2]})
+        return bool(free_symbols(sp.sympify(v)) & {rot.ANGLES[1], rot.ANGLES[2]})

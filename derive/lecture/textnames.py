@@ -21,7 +21,7 @@ of `derive.lecture.notes_check.Checker`, which
    definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -37,6 +37,7 @@ from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.lecture.unread_members import UnreadMembers
+from derive.lecture.sparse_forms import free_symbols
 from derive.lecture.zero_test import expanded, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
@@ -76,7 +77,7 @@ def _moment_multiple(m) -> bool:
 
 
 def _free(obj) -> set:
-    return set(obj.free_symbols) if hasattr(obj, "free_symbols") else set()
+    return set(free_symbols(obj)) if hasattr(obj, "free_symbols") else set()
 
 
 def _is_value(v, defined) -> bool:
@@ -525,8 +526,8 @@ class TextNames(UnreadMembers):
     # -- 4: calculus ------------------------------------------------------------------------------
     def _calculus(self, v):
         """``DT(e)`` and ``Derivative(e, x)`` evaluated (the module docstring, item 4)."""
-        if not hasattr(v, "has"):
-            return v
+        if not hasattr(v, "has") or not v.has(lx.Transposed, sp.MatPow, lx.DT, sp.Derivative):
+            return v            # (one walk of v for the four kinds, most values holding none)
         if v.has(lx.Transposed):
             v = v.replace(lambda e: isinstance(e, lx.Transposed) and isinstance(e.args[0], sp.MatrixBase),
                           lambda e: e.args[0].T)

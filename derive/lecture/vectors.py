@@ -95,7 +95,7 @@ def _zero(a, b, seed) -> tuple[bool, str]:
         return False, f"a {_shape(a)} against a {_shape(b)}"
     A = sp.Matrix(a) if isinstance(a, sp.MatrixBase) else sp.Matrix([a])
     B = sp.Matrix(b) if isinstance(b, sp.MatrixBase) else sp.Matrix([b])
-    if any(e.atoms(lx.DT, AppliedUndef) for e in (*A, *B)):
+    if any(zt.atoms(e, lx.DT, AppliedUndef) for e in (*A, *B)):
         # d/dt of |𝐋|² left as written cannot be evaluated at a point: undecided, never a slip
         return False, "a rate the reader leaves unevaluated (d/dt of a product) against a side it evaluates"
     diffs = [zt.bounded_expand(x - y) for x, y in zip(A, B)]

@@ -18,7 +18,7 @@ non-zero), `surely_depends` (the same screen for a quotient's dependence on some
    no function or radical; else with mpmath at `DIGITS` digits (`derive.lecture.mp_values`, the
    values `lambdify` would give), zero meaning below 10⁻⁴⁰ of the sides' size.
 
-May import: :mod:`derive.lecture.mp_values`, :mod:`derive.symbolic`, SymPy, mpmath.
+May import: :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.symbolic`, SymPy, mpmath.
 """
 from __future__ import annotations
 
@@ -29,9 +29,10 @@ from dataclasses import dataclass
 import mpmath
 import sympy as sp
 from mpmath import iv, libmp
-from sympy.polys.rings import ring
 
 from derive.lecture import mp_values
+from derive.lecture.sparse_forms import (atoms, free_symbols, generators, in_ring, polynomial_ring, rational_zero,
+                                         ring_generators, trig_zero)
 from derive.symbolic import rotations
 
 SYMBOLIC_STEPS = ("identical", "expand", "cancel", "trig_reduce", "simplify")
@@ -48,7 +49,7 @@ class Outcome:
 
 
 def _trig_angles(expr) -> tuple:
-    return tuple(sorted({f.args[0] for f in expr.atoms(sp.sin, sp.cos, sp.tan)}, key=sp.default_sort_key))
+    return tuple(sorted({f.args[0] for f in atoms(expr, sp.sin, sp.cos, sp.tan)}, key=sp.default_sort_key))
 
 
 # Size bounds (in expression-tree nodes) of the symbolic steps; larger remainders go to the
@@ -74,7 +75,7 @@ def bounded_expand(d):
 
 def expanded(d):
     """``sp.expand(d)``; a polynomial with rational coefficients in symbols, their reciprocals and
-    sin, cos, tan of symbols (`_generators`) multiplied out in SymPy's sparse polynomial ring
+    sin, cos, tan of symbols (`sparse_forms.generators`) multiplied out in SymPy's sparse polynomial ring
     instead (sums and products of dicts of monomials), each of those taken as one generator. The
     result, the sum of its monomials as SymPy builds it (x·x⁻¹ = 1, sin θ² kept), is the canonical
     sum `expand` reaches by rewriting the expression tree term by term. Kept per expression: a
@@ -91,11 +92,11 @@ def _expanded_kept(d):
 
 
 def _expanded(d):
-    gens = _generators(d)
+    gens = generators(d)
     if not gens:
         return sp.expand(d)
-    R = ring(gens, sp.QQ)[0]
-    return _in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
+    R = polynomial_ring(tuple(gens))
+    return in_ring(d, dict(zip(gens, R.gens)), R, {}).as_expr()
 
 
 def expanded_derivative(e, *xs, field=None):
@@ -105,76 +106,23 @@ def expanded_derivative(e, *xs, field=None):
     polynomial ring, c·k·x^(k−1)… monomial by monomial; anything else through ``sp.diff``. Either
     way the result is the canonical expanded sum."""
     field = field or {}
-    parts = [_ring_generators(t) for t in (e, *field.values())]
+    parts = [ring_generators(t) for t in (e, *field.values())]
     if all(g is not None for g in parts):
         gens = sorted(set().union(*parts, xs, field), key=sp.default_sort_key)
         wrt = (*xs, *field)
         if all(x.is_Symbol for x in wrt) and not any(x in g.free_symbols for x in wrt for g in gens if g != x):
-            R = ring(gens, sp.QQ)[0]
+            R = polynomial_ring(tuple(gens))
             at = dict(zip(gens, R.gens))
-            p = _in_ring(e, at, R, {})
+            p = in_ring(e, at, R, {})
             for x in xs:
                 p = p.diff(at[x])
             if field:
-                p = sum((p.diff(at[x]) * _in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
+                p = sum((p.diff(at[x]) * in_ring(v, at, R, {}) for x, v in field.items()), R.zero)
             return p.as_expr()
     d = sp.diff(e, *xs) if xs else e
     if field:
         d = sum((sp.diff(d, x) * v for x, v in field.items()), sp.S.Zero)
     return expanded(d)
-
-
-def _ring_generators(t) -> list | None:
-    """`_generators` of t, an atom included (a symbol is its own, a rational has none)."""
-    t = sp.sympify(t)
-    if t.is_Symbol:
-        return [t]
-    return [] if t.is_Rational else _generators(t)
-
-
-def _generators(d) -> list | None:
-    """The generators of d as `expanded` reads it, by name; None when d is anything else (a
-    function of a sum, a root, a float, a quotient by a sum)."""
-    if not isinstance(d, sp.Expr) or d.is_Atom:
-        return None
-    gens = set()
-    for node in sp.preorder_traversal(d):
-        if node.is_Symbol and node.is_commutative:
-            gens.add(node)
-        elif node.is_Add or node.is_Mul or node.is_Rational:
-            continue
-        elif node.is_Pow and node.exp.is_Integer and (node.exp > 0 or node.base.is_Symbol):
-            if node.exp < 0:
-                gens.add(1 / node.base)
-        elif isinstance(node, (sp.sin, sp.cos, sp.tan)) and node.args[0].is_Symbol:
-            gens.add(node)
-        else:
-            return None
-    return sorted(gens, key=sp.default_sort_key)
-
-
-def _in_ring(e, gens: dict, R, memo: dict):
-    """e (read by `_generators`) as an element of the ring R over those generators."""
-    if e in gens:
-        return gens[e]
-    if e in memo:
-        return memo[e]
-    if e.is_Rational:
-        value = R.ground_new(sp.QQ(int(e.p), int(e.q)))
-    elif e.is_Add:
-        value = R.zero
-        for a in e.args:
-            value += _in_ring(a, gens, R, memo)
-    elif e.is_Mul:
-        value = R.one
-        for a in e.args:
-            value *= _in_ring(a, gens, R, memo)
-    elif e.exp > 0:
-        value = _in_ring(e.base, gens, R, memo) ** int(e.exp)
-    else:
-        value = gens[1 / e.base] ** int(-e.exp)
-    memo[e] = value
-    return value
 
 
 def symbolic_zero(d) -> str | None:
@@ -187,19 +135,20 @@ def symbolic_zero(d) -> str | None:
     if d == 0:
         return "expand"
     if not d.has(sp.sin, sp.cos, sp.tan):
-        if _generators(d) is not None:            # a polynomial in symbols and their reciprocals,
+        if generators(d) is not None:            # a polynomial in symbols and their reciprocals,
             return None                           # expanded: canonical, so not 0 as a rational function
-        if sp.cancel(sp.together(d)) == 0:        # canonical for rational functions
+        if rational_zero(d):                      # canonical for rational functions
             return "cancel"
         if not _radicals(d) or _size(d) > _SIMPLIFY_MAX_NODES or _nonzero_somewhere(d):
             return None
         return "simplify" if sp.simplify(d) == 0 else None
     if _size(d) > _TRIG_REDUCE_MAX_NODES or _nonzero_somewhere(d):
         return None
-    reduced = rotations.trig_reduce(d, _trig_angles(d))
-    if reduced == 0:
-        return "trig_reduce"
-    return None
+    angles = _trig_angles(d)
+    zero = trig_zero(d, angles)
+    if zero is None:
+        zero = rotations.trig_reduce(d, angles) == 0
+    return "trig_reduce" if zero else None
 
 
 _PRIMES = (11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107)
@@ -239,7 +188,7 @@ def _surely_nonzero(d: sp.Expr) -> bool:
     """`surely_nonzero` of an expression, memoised: a candidate recurs across the cases of a text."""
     if d.is_Number:
         return d != 0 and d.is_finite is True
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
     try:
@@ -270,11 +219,11 @@ def _nonzero_somewhere(d: sp.Expr) -> bool:
     identities) can turn d into 0, and those steps are skipped. `_SCREEN_POINTS` points when d has
     roots (a radicand may be negative at a point: the next one is tried), else two; a symbol
     declared integer or non-real, or an enclosure holding 0 at every point, proves nothing."""
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if any(s.is_integer or s.is_rational is False or s.is_real is False for s in symbols):
         return False
     rng = random.Random(len(symbols))
-    roots = any(not p.exp.is_Integer for p in d.atoms(sp.Pow))
+    roots = any(not p.exp.is_Integer for p in atoms(d, sp.Pow))
     prec = iv.prec
     iv.prec = _INTERVAL_BITS
     try:
@@ -304,7 +253,7 @@ def surely_nonzero_with_roots(d) -> bool:
     `surely_nonzero` is, and for a root of a number, another root or a zero residue."""
     if not isinstance(d, sp.Expr):
         return False
-    symbols = sorted(d.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(d), key=lambda s: s.name)
     if len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
     angles = _angles(d)
@@ -329,7 +278,7 @@ def surely_depends(a, b, variables) -> bool:
     `surely_nonzero` cannot evaluate exactly, and where the two products agree."""
     if not isinstance(a, sp.Expr) or not isinstance(b, sp.Expr):
         return False
-    symbols = sorted(a.free_symbols | b.free_symbols, key=lambda s: s.name)
+    symbols = sorted(free_symbols(a) | free_symbols(b), key=lambda s: s.name)
     moved = [s for s in symbols if s in set(variables)]
     if not moved or len(symbols) > len(_PRIMES) or any(s.is_nonpositive or s.is_integer for s in symbols):
         return False
@@ -368,7 +317,7 @@ def _exact_point(d, symbols, shift=0, angles=None) -> dict:
 
 def _angles(d) -> list:
     """The symbols d takes the sine, cosine or tangent of, by name."""
-    return sorted({f.args[0] for f in d.atoms(sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
+    return sorted({f.args[0] for f in atoms(d, sp.sin, sp.cos, sp.tan) if f.args[0].is_Symbol}, key=lambda s: s.name)
 
 
 def _residue(e, point: dict, memo: dict) -> int:
@@ -448,7 +397,7 @@ def _enclosure(e, point: dict, memo: dict, functions=_IV_FUNCTIONS):
 
 def _radicals(e) -> bool:
     """Whether e has non-integer powers or functions, where `cancel` is not a canonical form."""
-    return bool(e.atoms(sp.Function)) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+    return bool(atoms(e, sp.Function)) or any(not p.exp.is_Integer for p in atoms(e, sp.Pow))
 
 
 def sample(symbols, rng: random.Random) -> list:
@@ -481,8 +430,8 @@ def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
 
 def _numeric(lhs, rhs, seed, points) -> tuple[Outcome, bool]:
     """`numeric_zero` at its first ``points`` points, and whether it found a counterexample."""
-    symbols = sorted(lhs.free_symbols | rhs.free_symbols, key=lambda x: x.name)
-    transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in e.atoms(sp.Pow))
+    symbols = sorted(free_symbols(lhs) | free_symbols(rhs), key=lambda x: x.name)
+    transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in atoms(e, sp.Pow))
                          for e in (*lhs, *rhs))
     rng = random.Random(seed)
     if transcendental:
