@@ -230,6 +230,16 @@ def test_a_dot_product_of_the_bodys_vectors_with_scalar_factors_is_read():
     assert dict(verdicts(holds.replace("\\frac{2T}{L}", "\\frac{T}{L}")))[3] in ("typo", "fails")
 
 
+def test_a_body_axis_dotted_with_a_body_vector_is_its_component():
+    # ê₃ · 𝐋 is a scalar, L's third body component; read as a plain product it was "a product of
+    # unit vectors" and a correct display was flagged
+    holds = "# Notes\n\n$$\\hat{\\mathbf{e}}_3 \\cdot \\mathbf{L} = I_3 \\omega_3$$\n"
+    assert dict(verdicts(holds))[3] == "holds"
+    omega = "# Notes\n\n$$\\boldsymbol{\\omega} \\cdot \\hat{\\mathbf{e}}_1 = \\omega_1$$\n"
+    assert dict(verdicts(omega))[3] == "holds"
+    assert dict(verdicts(holds.replace("I_3 \\omega_3", "I_1 \\omega_3")))[3] != "holds"
+
+
 def test_spacing_inside_a_script_sets_no_part_of_its_label_apart():
     assert source.normalize(r"\phi_{\beta \, \alpha} + \omega_{b\;i}^{2\!}") == r"\phi_{\beta \alpha} + \omega_{b i}^{2 }"
     head = "---\nconvention: z-x-z\n---\n# Rates\n\nThe body turns.\n\n$$\n"

@@ -1,10 +1,11 @@
 """Dot products of the body's own vectors as the formula reader meets them: 𝛚·𝛚, 𝐋·𝐋, 𝛚·𝐋,
 and the same with scalar factors, ``\\boldsymbol{\\omega} \\cdot \\frac{\\mathbf{L}}{L}`` (a unit
-vector along 𝐋 written as 𝐋 over its length).
+vector along 𝐋 written as 𝐋 over its length); and a body axis ê₁, ê₂, ê₃ (or a vector written in
+them) dotted with any of these, ``\\hat{\\mathbf{e}}_3 \\cdot \\mathbf{L} = I_3 \\omega_3``.
 
 Takes: the values `derive.lecture.latex_parser` has read on either side of a ``\\cdot``.
 Gives: `dot`, their dot product in body components (𝛚 = ω̃, 𝐋 = (Iᵢ ω̃ᵢ)), or None when a side
-is not one of those vectors times scalars.
+is not one of those vectors times scalars nor a form in ê₁ ê₂ ê₃.
 
 May import: :mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic.lagrangian`, SymPy.
 """
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.lecture.vocabulary import LVEC, OMEGA_VEC, Quantity, W
+from derive.lecture.vocabulary import BASIS, LVEC, OMEGA_VEC, Quantity, W
 from derive.symbolic.lagrangian import I1, I2, I3
 
 _COMPONENTS = {OMEGA_VEC: W, LVEC: [m * w for m, w in zip((I1, I2, I3), W)]}
@@ -32,9 +33,38 @@ def _scaled(x):
     return sp.Mul(*rest), vectors[0]
 
 
-def dot(a, b):
-    """a · b in body components when each side is 𝛚 or 𝐋 times scalars; None for anything else."""
-    sa, sb = _scaled(a), _scaled(b)
-    if sa is None or sb is None:
+def _in_basis(x):
+    """The body components of a linear form in ê₁ ê₂ ê₃ whose coefficients hold no unit vector,
+    no matrix and none of the body's vectors; None otherwise."""
+    if not isinstance(x, sp.Expr) or isinstance(x, sp.MatrixBase) or not (x.free_symbols & set(BASIS)):
         return None
-    return sa[0] * sb[0] * sum((x * y for x, y in zip(_COMPONENTS[sa[1]], _COMPONENTS[sb[1]])), sp.S.Zero)
+    ex = sp.expand(x)
+    coeffs = [ex.coeff(e) for e in BASIS]
+    if sp.expand(ex - sum(c * e for c, e in zip(coeffs, BASIS))) != 0:
+        return None
+    if any(c.free_symbols & (set(BASIS) | set(_COMPONENTS)) or c.is_commutative is False for c in coeffs):
+        return None
+    return coeffs
+
+
+def _components(x):
+    """A side of a dot product in body components: 𝛚 or 𝐋 times scalars, or a form in ê₁ ê₂ ê₃."""
+    scaled = _scaled(x)
+    if scaled is not None:
+        return [scaled[0] * c for c in _COMPONENTS[scaled[1]]]
+    return _in_basis(x)
+
+
+def dot(a, b):
+    """a · b in body components when each side is 𝛚 or 𝐋 times scalars, or a vector written in the
+    body axes ê₁ ê₂ ê₃ (not both: a dot of two written forms is the reader's own arithmetic); None
+    for anything else."""
+    sa, sb = _scaled(a), _scaled(b)
+    if sa is not None and sb is not None:
+        return sa[0] * sb[0] * sum((x * y for x, y in zip(_COMPONENTS[sa[1]], _COMPONENTS[sb[1]])), sp.S.Zero)
+    if sa is None and sb is None:
+        return None
+    ca, cb = _components(a), _components(b)
+    if ca is None or cb is None:
+        return None
+    return sum((x * y for x, y in zip(ca, cb)), sp.S.Zero)
