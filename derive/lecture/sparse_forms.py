@@ -8,16 +8,17 @@ symbols as an element of a ring over them: `derive.lecture.zero_test.expanded`),
 (``trig_reduce(d, angles) == 0`` in the ring). Each gives what the step it stands in for gives;
 what it cannot read goes to that step.
 
-May import: SymPy.
+May import: SymPy, :mod:`derive.symbolic.rotations` (the cos² replacement `trig_reduce` uses).
 """
 from __future__ import annotations
 
 import functools
-from math import comb
 
 import sympy as sp
 from sympy.polys.fields import field
 from sympy.polys.rings import ring
+
+from derive.symbolic.rotations import cos_squares_replaced
 
 
 def free_symbols(e) -> frozenset:
@@ -90,7 +91,9 @@ def generators(d) -> list | None:
 
 
 def in_ring(e, gens: dict, R, memo: dict):
-    """e (read by `generators`) as an element of the ring R over those generators."""
+    """e as an element of R, a sparse ring or field over the generators ``gens`` (a SymPy
+    generator → R's): e read by `generators` (a reciprocal 1/x one of the ring's generators) or by
+    `_rational_generators` (the field divides itself)."""
     if e in gens:
         return gens[e]
     if e in memo:
@@ -105,10 +108,10 @@ def in_ring(e, gens: dict, R, memo: dict):
         value = R.one
         for a in e.args:
             value *= in_ring(a, gens, R, memo)
-    elif e.exp > 0:
-        value = in_ring(e.base, gens, R, memo) ** int(e.exp)
-    else:
+    elif e.exp < 0 and 1 / e.base in gens:
         value = gens[1 / e.base] ** int(-e.exp)
+    else:
+        value = in_ring(e.base, gens, R, memo) ** int(e.exp)
     memo[e] = value
     return value
 
@@ -124,7 +127,7 @@ def rational_zero(d) -> bool:
     if gens:
         try:
             K = _rational_field(tuple(gens))
-            return not _in_field(d, dict(zip(gens, K.gens)), K, {})
+            return not in_ring(d, dict(zip(gens, K.gens)), K, {})
         except ZeroDivisionError:
             pass
     return sp.cancel(sp.together(d)) == 0
@@ -140,28 +143,6 @@ def _rational_generators(d) -> list | None:
         elif not (node.is_Add or node.is_Mul or node.is_Rational or node.is_Pow and node.exp.is_Integer):
             return None
     return sorted(gens, key=sp.default_sort_key) or None
-
-
-def _in_field(e, gens: dict, K, memo: dict):
-    """e (read by `_rational_generators`) as an element of the field K over those generators."""
-    if e in gens:
-        return gens[e]
-    if e in memo:
-        return memo[e]
-    if e.is_Rational:
-        value = K(sp.QQ(int(e.p), int(e.q)))
-    elif e.is_Add:
-        value = K.zero
-        for a in e.args:
-            value += _in_field(a, gens, K, memo)
-    elif e.is_Mul:
-        value = K.one
-        for a in e.args:
-            value *= _in_field(a, gens, K, memo)
-    else:
-        value = _in_field(e.base, gens, K, memo) ** int(e.exp)
-    memo[e] = value
-    return value
 
 
 def trig_zero(d, angles) -> bool | None:
@@ -188,19 +169,7 @@ def trig_zero(d, angles) -> bool | None:
             common = min(monom[i], monom[k])
             monom[i] -= common
             monom[k] -= common
-        terms = [(monom, coeff)]
-        for s, c in pairs:
-            m, e = divmod(monom[c], 2)
-            if not m:
-                continue
-            grown = []
-            for exps, cf in terms:
-                for j in range(m + 1):
-                    new = list(exps)
-                    new[s] += 2 * j
-                    new[c] = e
-                    grown.append((new, cf * comb(m, j) * (-1) ** j))
-            terms = grown
+        terms = cos_squares_replaced(monom, coeff, pairs)
         for exps, cf in terms:
             key = tuple(exps)
             out[key] = out.get(key, 0) + cf

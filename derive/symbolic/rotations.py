@@ -124,6 +124,26 @@ def trig_reduce(expr, angles=ANGLES):
     return num / sp.factor(reduce(den).xreplace(back))
 
 
+def cos_squares_replaced(monom: list, coeff, pairs, convert=lambda n: n) -> list:
+    """The terms of one monomial (exponents ``monom``, coefficient ``coeff``) with each cₖ^(2m+e)
+    replaced by cₖ^e (1 − sₖ²)^m = cₖ^e Σⱼ C(m, j) (−1)^j sₖ^(2j), for each (index of sₖ, index of
+    cₖ) of ``pairs``; ``convert`` takes the integer C(m, j) (−1)^j into the coefficients' domain."""
+    terms = [(monom, coeff)]
+    for s, c in pairs:
+        m, e = divmod(monom[c], 2)
+        if not m:
+            continue
+        grown = []
+        for exps, cf in terms:
+            for j in range(m + 1):
+                new = list(exps)
+                new[s] += 2 * j
+                new[c] = e
+                grown.append((new, cf * convert(comb(m, j) * (-1) ** j)))
+        terms = grown
+    return terms
+
+
 def _rem_cos_squares(poly, pairs) -> sp.Expr:
     """The remainder of ``poly`` modulo cₖ² + sₖ² − 1 for each (sₖ, cₖ) of ``pairs`` (expanded).
 
@@ -135,19 +155,8 @@ def _rem_cos_squares(poly, pairs) -> sp.Expr:
     P = sp.Poly(poly, *gens)
     dom, out = P.domain, {}
     for monom, coeff in P.as_dict(native=True).items():
-        terms = [(list(monom), coeff)]
-        for k in range(len(pairs)):
-            m, e = divmod(monom[2 * k + 1], 2)
-            if not m:
-                continue
-            grown = []
-            for exps, cf in terms:
-                for j in range(m + 1):
-                    new = list(exps)
-                    new[2 * k] += 2 * j
-                    new[2 * k + 1] = e
-                    grown.append((new, cf * dom.convert(comb(m, j) * (-1) ** j)))
-            terms = grown
+        terms = cos_squares_replaced(list(monom), coeff, [(2 * k, 2 * k + 1) for k in range(len(pairs))],
+                                     dom.convert)
         for exps, cf in terms:
             key = tuple(exps)
             out[key] = out.get(key, dom.zero) + cf
