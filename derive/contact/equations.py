@@ -34,7 +34,7 @@ import sympy as sp
 
 from derive.contact.geometry import N_VEC, SHAPES, Shape
 from derive.contact.friction import NORMAL, force
-from derive.contact.laws import LAWS, Law
+from derive.contact.laws import Law
 
 I1, I2, I3 = sp.symbols("I1 I2 I3", positive=True)
 MASS, GRAV = sp.symbols("M g", positive=True)
@@ -80,11 +80,6 @@ class Contact:
     @functools.cached_property
     def n_dot(self) -> sp.Matrix:
         return cross(N_VEC, OMEGA)
-
-    @functools.cached_property
-    def slip_velocity(self) -> sp.Matrix:
-        """u = v_b + ω × a: the contact point's material velocity."""
-        return VEL + cross(OMEGA, self.a)
 
     def gap_acceleration(self, f: sp.Matrix, tau: sp.Matrix | None = None) -> sp.Expr:
         """φ̈ for the gap φ = z + a(n)·n, the accelerations eliminated for the force f (and the
@@ -139,7 +134,3 @@ class Contact:
 def contact(shape: str) -> Contact:
     """The derivation for a registered shape (cached: one per process)."""
     return Contact(SHAPES[shape])
-
-
-def laws_of(name: str) -> Law:
-    return LAWS[name]

@@ -48,10 +48,6 @@ class Shape:
         """a(n), body components: the lowest point of the surface for the vertical n."""
         return self.point(n)
 
-    def height(self, n: sp.Matrix = N_VEC):
-        """z_com = −a(n)·n: the centre of mass's height while the body touches the plane."""
-        return -(self.point(n).T * n)[0]
-
 
 def _disc(n):
     perp = sp.sqrt(n[0] ** 2 + n[1] ** 2)

@@ -91,10 +91,3 @@ EXTENSIONS: dict[str, Extension] = {e.key: e for e in (
 def takes_moments(law: Law) -> bool:
     """Whether some extension goes with ``law`` (its evaluator then carries the moments)."""
     return any(law.selected_by in e.frictions for e in EXTENSIONS.values())
-
-
-def law_for(friction: str, regularization: float | None) -> Law:
-    """The registry entry a scene's ``friction`` and ``regularization`` select."""
-    if friction == "coulomb" and regularization is not None:
-        return LAWS["coulomb_regularized"]
-    return LAWS[friction]

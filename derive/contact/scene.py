@@ -107,11 +107,6 @@ class ContactScene:
         return self  # rtol, atol as the [simulate] table of other scenes
 
 
-def is_contact(data) -> bool:
-    """Whether a scene dict describes a body on a table (it has a ``[contact]`` table)."""
-    return isinstance(data, dict) and "contact" in data
-
-
 def _fail(source, key, what):
     return SceneError(" ".join(f"{source}: {key}: {what}".splitlines()))
 
