@@ -149,8 +149,8 @@ def _real_zero(lhs, rhs, seed, points=zt.POINTS):
                        f"{mpmath.nstr(first_miss, 3)} at a sample point") if used >= points else None
     sides = (lhs[0], rhs[0]) if flipped else ()
     rooted = [k for k, side in enumerate(sides) if _has_root(side) and len(signs[k]) == 1]
-    # the other side's sign must be the motion's direction (odd in the rates: θ̇ against
-    # −√(2(E − U)/I₁)), not one the constants fix, which is the text's to get right
+    # the other side's sign must follow the motion (odd in one of its rates: θ̇ against
+    # −√(2(E − U)/I₁), ω̃₁ω̃₃ against √(…)), not one the constants fix, which is the text's to get right
     if flipped and not any(len(signs[1 - k]) > 1 and _odd_in_rates(sides[1 - k], symbols, seed) for k in rooted):
         return False, (f"mpmath {zt.DIGITS} digits where its roots are real: |claim − derived| = "
                        f"{mpmath.nstr(first_miss, 3)} at a sample point")
@@ -161,27 +161,29 @@ def _real_zero(lhs, rhs, seed, points=zt.POINTS):
 
 
 _RATES = frozenset((*RATES, *lx.W))
-"""The rates of the motion: the angles' rates and ω̃ᵢ, whose signs time reversal flips."""
+"""The rates of the motion: the angles' rates and ω̃ᵢ."""
 
 
 def _odd_in_rates(e, symbols, seed) -> bool:
-    """``e`` changes sign with every rate of the motion (at a seeded point where it is not zero)."""
+    """``e`` changes sign with the motion: turning one rate of it (θ̇, or ω̃₁ of ω̃₁ω̃₃) the other way
+    turns its sign, at a seeded point where it is not zero — a sign that energies and other even
+    functions of the rates, and the constants, never have."""
     e = sp.sympify(e)
-    if not _free_symbols(e) & _RATES:
+    rates = sorted(_free_symbols(e) & _RATES, key=lambda x: x.name)
+    if not rates:
         return False
-    flipped = e.xreplace({r: -r for r in _RATES})
-    f = mp_values.evaluator(symbols, [e, flipped])
+    f = mp_values.evaluator(symbols, [e, *(e.xreplace({r: -r}) for r in rates)])
     rng = random.Random(seed + "odd")
     for _ in range(50):
         point = [mpmath.mpf(p.p) / p.q for p in zt.sample(symbols, rng)]
         with mpmath.workdps(zt.DIGITS):
             try:
-                a, b = (mpmath.mpmathify(v) for v in f(*point))
+                a, *turned = (mpmath.mpmathify(v) for v in f(*point))
             except (ZeroDivisionError, ValueError, TypeError):
                 continue
-            if not (mpmath.isfinite(a) and mpmath.isfinite(b)) or abs(a) < mpmath.mpf(10) ** -20:
+            if not (mpmath.isfinite(a) and all(map(mpmath.isfinite, turned))) or abs(a) < mpmath.mpf(10) ** -20:
                 continue
-            return abs(a + b) <= abs(a) * mpmath.mpf(10) ** (10 - zt.DIGITS)
+            return any(abs(a + b) <= abs(a) * mpmath.mpf(10) ** (10 - zt.DIGITS) for b in turned)
     return False
 
 

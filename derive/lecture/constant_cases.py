@@ -11,8 +11,9 @@ no variable of the motion in it, is no identity: it picks the motions that have 
 "case 1, 2I₂T < L² ≤ 2I₃T"). The reader does not
 impose such a case (it would have to restrict the motion itself), so the relation is a setting of
 the text, never flagged, and a statement after it that the reader would flag is left unchecked,
-saying the case it may hold in — up to the section's end, another case, or a statement that holds
-as read without it (the text has gone back to the general motion). Nothing that holds changes.
+saying the case it may hold in — up to the section's end, another case, or a statement of the motion
+that holds as read without it (the text has gone back to the general motion; a closed form that
+solves the text's own equation does not count). Nothing that holds changes.
 
 Gives the mixin `ConstantCases` of the checker (`derive.lecture.notes_check.Checker`).
 May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
@@ -93,8 +94,10 @@ class ConstantCases:
         case = self.ctx.constant_case
         if case is None:
             return
-        if any(c.verdict == "holds" for c in claims):
-            self.ctx.constant_case = None          # a statement that holds without it: the case is left
+        if any(c.verdict == "holds" and c.kind != "solution" for c in claims):
+            # a statement of the motion that holds without it: the case is left (a closed form
+            # solving the text's own equation says nothing of the general motion)
+            self.ctx.constant_case = None
             return
         for c in claims:
             if c.verdict in FLAGGED:

@@ -131,6 +131,7 @@ class Reading:
         while stack and stack[-1][0] >= level:
             stack.pop()
         self.ctx.new_section()
+        self.vocab.readings.pop("L", None)           # L read as |𝐋| holds to the end of its section
         if stack and stack[-1][1] is not None:
             parent = stack[-1][1]
             self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)
