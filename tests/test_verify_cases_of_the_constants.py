@@ -1,4 +1,4 @@
-"""Two readings a careful reader gives a text's constants of the motion: a square root is the branch
+"""Readings a careful reader gives a text's constants of the motion: a square root is the branch
 the text takes (`derive.lecture.comparing`: θ̇ = −√(2(E − U)/I₁) holds where the derived θ̇ takes
 either sign with the motion and the squares agree), and a relation of the constants alone written in
 the prose (``In the limit $L^2=2I_3T$,``) is a case of the motion the reader does not impose, under
@@ -44,7 +44,9 @@ def test_a_relation_of_the_constants_alone_in_the_prose_is_a_case_not_a_claim():
     claims = _free("In the limit $L^2=2I_3T$,\n\n$$\n" + PERMANENT + "\n$$\n")
     case = [c for c in claims if c[0] == 12]
     assert [c[1:3] for c in case] == [("setting", "unchecked")]
-    assert all(c[2] == "unchecked" and "in the case L^2=2I_3T" in c[3] for c in claims if c[0] == 14)
+    under = [c for c in claims if c[0] == 14]
+    assert all(c[2] == "unchecked" for c in under)
+    assert [c[1] for c in under if "in the case L^2=2I_3T" in c[3]] == ["definition"]      # ω₃ = √(2T/I₃)
 
 
 def test_a_statement_that_holds_ends_the_case_and_what_follows_is_judged_again():
@@ -59,3 +61,8 @@ def test_a_statement_that_holds_ends_the_case_and_what_follows_is_judged_again()
 def test_without_the_case_the_same_display_is_flagged():
     claims = _free("$$\n" + PERMANENT + "\n$$\n")
     assert any(c[2] in ("typo", "fails") for c in claims if c[0] == 12)
+
+
+def test_a_chain_of_components_equal_to_a_value_sets_each_of_them():
+    claims = _free("$$\n\\omega_1 = \\omega_2 = 0\n$$\n")
+    assert [(c[1], c[2]) for c in claims if c[0] == 12] == [("setting", "unchecked"), ("setting", "unchecked")]
