@@ -105,13 +105,14 @@ class Context:
     held: dict = field(default_factory=dict)          # an angle running text holds at a number (θ = π/2) → (value, line); None if two
     vectors: dict = field(default_factory=dict)        # a vector of the text's → (its components, what it defined it as)
     centre_line: int | None = None                    # the line whose settings of the centre of mass hold
+    constant_case: tuple | None = None                # (line, LaTeX) of a case the prose sets by constants alone
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
         self.head, self.assumptions, self.vec_model, self.stated = None, [], None, {}
         self.first_order = set()
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
-        self.vectors, self.held = {}, {}
+        self.vectors, self.held, self.constant_case = {}, {}, None
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False
 
@@ -130,6 +131,7 @@ class Reading:
         while stack and stack[-1][0] >= level:
             stack.pop()
         self.ctx.new_section()
+        self.vocab.readings.pop("L", None)           # L read as |𝐋| holds to the end of its section
         if stack and stack[-1][1] is not None:
             parent = stack[-1][1]
             self.ctx.subs, self.ctx.small = dict(parent.subs), list(parent.small)

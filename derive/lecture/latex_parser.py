@@ -16,8 +16,8 @@ from derive.lecture.vocabulary import (
 from derive.lecture import body_dot
 from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.evaluation_points import holds_a_point
-from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_argument, rate_of,
-                                         reading, symbol_rate, written_rate)
+from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
+                                         rate_of, reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -395,6 +395,9 @@ class _Parser:
             raise NotRead("a derivative in a frame (d/dt with the frame's label on t)")   # dH/dt_b, never H/t_b
         if (rate := written_rate(toks, self.i - 1)) is not None:
             return self._rate_written(*rate)
+        if (along := rate_along(self.vocab.resolve, num, den)) is not None:
+            self.i = k2                               # dx/dy of the text's own x and y: ẋ/ẏ
+            return along
         is_partial = lambda tk: tk.kind == "cmd" and tk.value == "partial"  # noqa: E731
         var = partial_variable(self.vocab.resolve, den)
         if var is not NOT_PARTIAL:

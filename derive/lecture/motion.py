@@ -48,6 +48,10 @@ class Motion:
             names = ", ".join(sorted(self.tex(x) for x in used))
             self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
             return
+        branch = None if self.ctx.first_order else self._on_a_branch(members)
+        if branch:
+            self._add(line, piece, "equation of motion", "holds", branch)
+            return
         ok, why, residual = self._eom_check(raw)
         if ok:
             self._eom_noted(raw, line)
@@ -125,6 +129,23 @@ class Motion:
 
     def _render_eq(self, residual, parsed):
         return self.tex(residual) + " = 0"
+
+    def _on_a_branch(self, members):
+        """An equation of motion with a square root of the ω̃ᵢ (``ds/dτ = √((1 − s²)(1 − k²s²))`` of a
+        text's s ∝ ω̃₂): its sides compared once ω̃̇ is taken from Euler's equations, a root being the
+        branch the text takes (`derive.lecture.comparing.zero`); the why when that holds, else None
+        (it is then read as any other, and left unjudged for its roots)."""
+        sides = [self._resolve(m).xreplace(self.ctx.subs) for m in members]
+        dyn = set(lx.W) | set(lx.WD)
+        if not any(not p.exp.is_integer and free(p.base) & dyn for e in sides for p in e.atoms(sp.Pow)) \
+                or any(free(e) & set(lx.TAU) for e in sides):
+            return None
+        flow = flow_of(tuple(expanded(R.xreplace(self.ctx.subs)) for R in self.d.euler(self.ctx.subs)))
+        a, b = (e.xreplace(flow) for e in sides)
+        if (free(a) | free(b)) & set(lx.WD):
+            return None
+        ok, why = zero(sp.Matrix([a]), sp.Matrix([b]), "branch")
+        return f"once ω̃̇ is taken from Euler's equations, {why}" if ok else None
 
     def _eom_check(self, raw, candidate=False):
         """(holds, why, the residual) of an equation of motion; a ``candidate`` correction that

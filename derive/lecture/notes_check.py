@@ -60,6 +60,7 @@ from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
 from derive.lecture.conditions import Conditions
+from derive.lecture.constant_cases import ConstantCases
 from derive.lecture.context import Context, Reading
 from derive.lecture.derivation import derivation, keep
 from derive.lecture.judging import Judging
@@ -110,8 +111,6 @@ def _repeated_labels(pieces) -> dict:
     return out
 
 
-_CASE_LEAD = re.compile(r"\s*,?\s*(?:where|when|whenever|if|in which case)\s*", re.I)
-"""The prose between an inline case and the inline relation it governs."""
 _UNTIED = ("A", "B", "C")
 """Letters the reader knows only as free symbols (`derive.lecture.vocabulary.FREE_NAMES`)."""
 
@@ -123,7 +122,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -221,17 +220,7 @@ class Checker(SectionConvention, Conditions, EulerInAngles, EulerPoisson, FastTo
     def _display(self, item, latex):
         start = len(self.claims)
         self._display_statements(item, latex)
-        lead = item.lead or ""
-        self._in_case = item.kind == "inline" and (_CASE_LEAD.fullmatch(lead) is not None or (
-            getattr(self, "_in_case", False) and re.fullmatch(r"\s*(?:,|and|,\s*and)\s*", lead) is not None))
-        if self._in_case:
-            # "… $\cos\theta = 0$, where $\omega_z = \dot\phi$": the sentence's own special case,
-            # which the reader does not apply; a flag there would rest on the case left out
-            for c in self.claims[start:]:
-                if c.verdict in ("typo", "fails"):
-                    c.verdict, c.correction = "unchecked", None
-                    c.why = ("stated in a sentence for the case it names just before (\"…, where\"), "
-                             f"which the reader does not apply: as read without it, {c.why}")
+        self._cases_not_applied(item, start)
 
     def _display_statements(self, item, latex):
         pieces = statements(latex)

@@ -5,7 +5,8 @@ the context it was judged in. Gives: the mixin `Rereading` of the checker, which
 statement again —
 
 1. with a name's second meaning (a plain L as the angular momentum's magnitude; I₁ as the moment
-   about the centre of mass where the text writes I₁ + M a²), kept when it makes the statement hold;
+   about the centre of mass where the text writes I₁ + M a²), kept when it makes the statement hold
+   (L so read stays |𝐋| to the end of the section, in the definitions that follow as in claims);
 2. for a symmetric body, when the formula is written for one (I₁, no I₂) and the text never said
    so: ``holds if I₁ = I₂``, never ``fails``; and a statement that holds only because the text
    made the body symmetric says where it did;
@@ -154,6 +155,8 @@ class Rereading:
                 for c in second:
                     c.why += f" (reading {what})"
                 self._keep(before, second, ctx)
+                if name == "L":          # the text's L is |𝐋| for the rest of its section (its definitions too)
+                    self.vocab.readings[name] = value
                 return
         if readings:                # read as written after all: now with its correction
             del self.claims[before:]
@@ -340,6 +343,7 @@ class Rereading:
         keep_claims, keep_ctx = len(self.claims), self.ctx
         kept_state = self._trial_state()
         self.ctx = _copied(saved)
+        kept_readings = dict(self.vocab.readings)
         self.vocab.readings.update(readings or {})
         self.vocab.names_off = names_off
         self.judging_only = judging_only
@@ -349,8 +353,8 @@ class Rereading:
                 KeyError, NotImplementedError, RecursionError, sp.PolynomialError):
             pass
         finally:
-            for name in readings or {}:
-                del self.vocab.readings[name]
+            self.vocab.readings.clear()
+            self.vocab.readings.update(kept_readings)
             self.vocab.names_off = False
             self.judging_only = False
         out, ctx = self.claims[keep_claims:], self.ctx

@@ -10,6 +10,8 @@ Gives: the mixin `TextMotion` of `derive.lecture.notes_check.Checker`, which
    section, whatever the rest of the checker makes of it;
 2. **follows a change of variable**: ``u = S(v)`` with v a name the text has not used yet
    introduces v (not a claim);
+   ``\\frac{dx}{d\\tau} = g(x)`` with the text's τ = c·t is kept as ẋ = c·g(x), and a closed form in τ
+   (``s = \\sn \\tau``) is put into it as one in c·t;
 3. **checks the equation the change gives**: ``\\dot v^n = R(v)`` is the kept equation with
    ``u = S(v)`` and ``\\dot u = S'(v)\\,\\dot v`` put in, ``\\dot v^m = F(S(v)) / S'(v)^m``. A name
    of R the text defines only further on (``where k^2 = …``) is read with that definition, so
@@ -118,9 +120,14 @@ class TextMotion:
         left, right = members
         if self._function_of_the_text(line, piece, members):
             return True
-        if lx.t in _free(right) and lx.t not in _free(left) and self._own_solution(line, piece, left, right):
+        timed = self._in_time(right)
+        if lx.t in _free(timed) and lx.t not in _free(left) and self._own_solution(line, piece, left, timed):
             return True
         self._later_definition(left, right)
+        along = self._rate_along(left)
+        if along is not None and not _free(right) & {lx.t}:
+            self.ctx.own_motion[along[0]] = (1, along[1] * right, line)    # dx/dτ = g(x): ẋ = τ̇ g(x)
+            return False
         rate = self._rate_power(left)
         if rate is not None:
             var, dot, n = rate
@@ -150,6 +157,28 @@ class TextMotion:
                 return True
         return False
 
+    def _linear_in_time(self, y):
+        """c of the text's y defined as c·t (its τ = p t), else None."""
+        value = self.ctx.defs.get(y)
+        if value is None or lx.t not in _free(value):
+            return None
+        c = sp.cancel(value / lx.t)
+        return c if lx.t not in _free(c) and c != 0 else None
+
+    def _rate_along(self, m):
+        """``dx/dτ`` read as ẋ/τ̇ (`derive.lecture.written_rates.rate_along`) with τ = c·t: (x, c)."""
+        num, den = m.as_numer_denom() if isinstance(m, sp.Mul) else (m, sp.S.One)
+        if not (isinstance(num, lx.DT) and isinstance(den, lx.DT)):
+            return None
+        x, y = num.args[0], den.args[0]
+        c = self._linear_in_time(y) if isinstance(x, lx.Generic) else None
+        return None if c is None else (x, c)
+
+    def _in_time(self, value):
+        """``value`` with the text's names defined as c·t put in (sn τ with τ = p t is sn(p t))."""
+        rep = {y: self.ctx.defs[y] for y in _free(value) if isinstance(y, lx.Generic) and self._linear_in_time(y) is not None}
+        return value.xreplace(rep) if rep and hasattr(value, "xreplace") else value
+
     def _own_solution(self, line, piece, left, right) -> bool:
         """``u = u_1 + (u_2-u_1)\\sn^2(c t)``, ``\\theta = \\arccos[…]``, ``\\sin v = \\sn(c t)``: a closed
         form the text gives for its own equation ``\\dot u^n = F(u)``, written for u, for a name it
@@ -177,11 +206,15 @@ class TextMotion:
                         continue
                     lhs = sp.diff(u_t, lx.t) ** n
                     rhs = self._later_names(eq.xreplace({var: u_t}), known)
-                    if rhs is not None and _equal(lhs, rhs):
+                    # u̇ = √F(u) is solved on the branch of the root the text takes: its square is
+                    branch = rhs is not None and n % 2 == 1 and any(
+                        p.exp == sp.Rational(1, 2) for p in sp.sympify(rhs).atoms(sp.Pow)) and _equal(lhs ** 2, rhs ** 2)
+                    if rhs is not None and (_equal(lhs, rhs) or branch):
                         how = f" through {self.tex(name)}" if name != var else ""
                         self._add(line, piece, "solution", "holds",
                                   f"put into the text's equation for {self.tex(var)} (line "
-                                  f"{eq_line}){how}: it solves it (equal at random values of its names)")
+                                  f"{eq_line}){how}: it solves it (equal at random values of its names"
+                                  + (", squared: the root's branch is the text's)" if branch and not _equal(lhs, rhs) else ")"))
                         self.settings_only = False
                         return True
         return False

@@ -195,6 +195,11 @@ class TextNames(UnreadMembers):
             for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked
                 self._one(line, piece, "identity", members[1], members[k], parsed, k, approx=rels[k - 1] == "≈")
             return True
+        if len(members) > 2 and set(rels) == {"="} and _is_value(members[-1], self.ctx.defs) and len(set(members[:-1])) \
+                == len(members) - 1 and all(self._settable(m) and not isinstance(m, lx.Quantity) for m in members[:-1]):
+            for k in range(len(members) - 1):     # ω̃₁ = ω̃₂ = 0: each set to the value, as ω̃₁ = 0, ω̃₂ = 0 are
+                self._text_statement(line, piece, type(parsed)([parsed.members[k], parsed.members[-1]], ["="]))
+            return True
         if len(members) == 2 and rels[0] == "=" and self._settable(m0) \
                 and _is_value(members[1], self.ctx.defs) and not isinstance(m0, lx.Quantity):
             # ω̃̇ᵢ = 0 that Euler's equations give under the settings before it (I₁ = I₂ = I₃): a claim

@@ -14,8 +14,8 @@ Takes the formula reader's tokens (`derive.lecture.vocabulary.scan`) and its rea
 (`derive.lecture.vocabulary.Vocabulary.resolve`, or a parser's own); gives
 :func:`written_rate` (where a rate written d/dt is, among the tokens), :func:`rate_of` and
 :func:`symbol_rate` (what it reads as), :func:`partial_variable` (a rate as the variable of ∂),
-:func:`rate_argument` (a rate in a name's list of arguments) and :func:`opens_with_rate` (a
-statement that gives a rate).
+:func:`rate_argument` (a rate in a name's list of arguments), :func:`rate_along` (dx/dy of two of
+the text's own symbols, y not the time) and :func:`opens_with_rate` (a statement that gives a rate).
 
 May import: :mod:`derive.lecture.vocabulary`.
 """
@@ -168,6 +168,28 @@ def symbol_rate(read, tok, n: int, vocab=None):
         raise NotRead(f"cannot parse at column {tok.pos + 1}: the time derivative of {tok.value.text}", tok.pos + 1)
     rate = rate_of(read, atom, n)
     return rate if rate is not None else derivative(value, n)
+
+
+def rate_along(read, num: list, den: list):
+    """``\\frac{dx}{dy}`` of two of the text's own symbols, y not the time (a variable the text
+    substituted, its τ = p t): the rate of x per unit of y along the motion, ẋ/ẏ (`DT` of each),
+    never the quotient x/y the letters d would make; None for any other fraction.
+
+    Parameters
+    ----------
+    read : callable
+        The reading of an atom (`derive.lecture.vocabulary.Vocabulary.resolve`).
+    num, den : list of Tok
+        The tokens of the fraction's numerator and denominator.
+    """
+    if len(num) != 2 or len(den) != 2 or not (_plain(num[0], "d") and _plain(den[0], "d")):
+        return None
+    if num[1].kind != "atom" or den[1].kind != "atom" or _plain(den[1], "t"):
+        return None
+    x, y = read(num[1].value), read(den[1].value)
+    if not isinstance(x, Generic) or not isinstance(y, Generic) or x == y:
+        return None
+    return DT(x) / DT(y)
 
 
 NOT_PARTIAL = object()
