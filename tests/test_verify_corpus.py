@@ -92,12 +92,16 @@ SHORT = {
         "its one slip (cos alpha for cos theta in omega = (L/I_1) z + L cos(theta) (I_1 - I_3)/(I_1 I_3) e_3) sits in "
         "a chain in the space axis z-hat and e_3 x (z-hat x e_3), which the reader does not read",
     ("wikipedia-euler-rotation-equations-encyclopaedia", "checked"):
-        "first read, before any rule was written for it",
+        "4 of 6: L_in = I_in omega writes the frame as a subscript label (\\text{in}), which the reader takes for "
+        "a new name, and (dL/dt)_rot + omega x L = M is read as the law of motion, a premise, not judged",
     ("wikipedia-precession-torque-free-and-gyroscopic-encyclopaedia", "checked"):
-        "first read, before any rule was written for it",
+        "its rates omega_p = I_s omega_s/(I_p cos alpha) and omega_p = mgr/(I_s omega_s) and the period T_p are in "
+        "names its prose gives in words (precession rate, spin rate, moment about the symmetry axis), not tied to "
+        "the reader's model of a free body or of the fast top; omega(R), I_0 and E(R) of its simulation are "
+        "functions of the orientation R, which the reader does not model",
 }
 
-FLOOR = {"checked": 487, "slips_flagged": 47, "holds_flagged": 0}
+FLOOR = {"checked": 491, "slips_flagged": 47, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
