@@ -502,10 +502,33 @@ _SCRIPT_SPACING = re.compile(r"(?<=[\^_])\{[^{}]*" + SPACE_SYMBOL + r"[^{}]*\}")
 _EMPTY_SCRIPT = re.compile(r"(?<!\\)[\^_]\s*\{\s*\}(?=([A-Za-z])?)")
 _EMPTY_GROUP = re.compile(r"(?<![\^_\\])\{\s*\}")
 _SCRIPT = r"(?:\{[^{}]*\}|\\[A-Za-z]+|[^\s{}\\])"
-_GROUPED_SYMBOL = re.compile(r"(?<![\\\w^_}])\{\s*(\\[A-Za-z]+|[A-Za-z])\s*\}(?=\s*[_^])")
-"""A brace group holding one symbol before its index, ``{\\Omega}_1``: the braces only group."""
+_ONE_SYMBOL = r"(?:\\[A-Za-z]+|[A-Za-z])"
+_DRESSED = (r"\\(?:dot|ddot|hat|widehat|vec|bar|overline|tilde|check|breve|boldsymbol|mathbf|bm|pmb|mathit)\s*\{\s*"
+            r"(?:" + _ONE_SYMBOL + r"|\\[A-Za-z]+\s*\{\s*" + _ONE_SYMBOL + r"\s*\})\s*\}")
+_GROUPED_SYMBOL = re.compile(r"(?<![\\\w^_])\{\s*(" + _DRESSED + r"|" + _ONE_SYMBOL + r")\s*\}(?=\s*[_^])")
+_AFTER_SCRIPT = re.compile(r"[_^]\s*\{[^{}]*\}$")
+"""A brace group holding one symbol, bare or under an accent or a bold face, before its index,
+``{\\Omega}_1``, ``{\\dot {\\omega }}_{1}``, ``{\\boldsymbol {I}}_{0}^{-1}`` (how an encyclopaedia
+renders its formulas): the braces only group."""
 _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*("
                         + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
+
+
+def _ungrouped(m: re.Match) -> str:
+    """The symbol of a brace group before its index, unless the group is a command's argument: it
+    follows a group that itself follows a command or a group (``\\frac{1}{x}^2``)."""
+    before = m.string[:m.start()]
+    if not before.endswith("}") or _AFTER_SCRIPT.search(before):
+        return m.group(1)
+    depth, k = 0, len(before) - 1
+    while k >= 0:
+        depth += {"}": 1, "{": -1}.get(before[k], 0) if before[k - 1:k] != "\\" else 0
+        if depth == 0:
+            break
+        k -= 1
+    head = before[:k].rstrip()
+    argument = re.search(r"(\\[A-Za-z]+|\})$", head) and not head.endswith("\\begin")
+    return m.group(0) if argument else m.group(1)
 
 
 def normalize(latex: str, user: dict | None = None) -> str:
@@ -553,7 +576,7 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _SCRIPT_SPACING.sub(lambda m: re.sub(r"\s*" + SPACE_SYMBOL + r"\s*", " ", m.group(0)), text)
     text = _EMPTY_SCRIPT.sub(lambda m: " " if m.group(1) else "", text)  # ^{}: an empty default
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
-    text = _GROUPED_SYMBOL.sub(r"\1", text)          # {\\Omega}_1 is \\Omega_1
+    text = _GROUPED_SYMBOL.sub(_ungrouped, text)     # {\\Omega}_1 is \\Omega_1
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     text = _code_rate(text)                           # dx = v_x with no differential beside it: ẋ

@@ -49,7 +49,14 @@ def _system_rows(s: str) -> str:
     return re.sub(r"\\right\s*\.", lambda m: r" \\ ", s)
 
 
+_GROUPED_ENV = re.compile(r"\{\s*(\\begin\{(" + "|".join(re.escape(e) for e in _ENVS) + r")\}.*?\\end\{\2\})\s*\}", re.S)
+"""A display environment inside a brace group, ``{\\begin{aligned} … \\end{aligned}}`` (as an
+encyclopaedia renders its displays): the braces only group, and the rows are cut as the bare
+environment's."""
+
+
 def _strip_envs(s: str) -> str:
+    s = _GROUPED_ENV.sub(r"\1", s)
     s = alignment_arrays.unwrapped(_system_rows(s))
     # alignat's argument is its number of column pairs, not math
     s = re.sub(r"\\begin\{(alignat\*?|alignedat)\}\s*\{\s*\d+\s*\}", " ", s)
