@@ -271,6 +271,12 @@ class _Parser:
             value = self.matrix(env)
             self.i += frame_label(self.toks, self.i, self.__dict__.setdefault("frames", set()))
             return value
+        if tok.kind == "cmd" and tok.value == "det" and (after := self.peek(1)) is not None and after.kind == "begin":
+            self.i += 1                          # \det before a written square matrix: its determinant
+            value = self.matrix(env)
+            if not isinstance(value, sp.MatrixBase) or not value.is_square:
+                self.fail("a determinant of what is not a square matrix", tok)
+            return value.det()
         if tok.kind == "cmd":
             name = tok.value
             self.i += 1

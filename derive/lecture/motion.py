@@ -15,7 +15,7 @@ settings, the text's definitions, the equations it has written). Gives: the mixi
   latest equations the text wrote for those components under the same settings, or Euler's
   under them; the text's undefined symbols in a solution are its integration constants.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.matrix_rows`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -27,6 +27,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering, sign_under_orderings
+from derive.lecture.matrix_rows import rows_verdict
 from derive.lecture.sparse_forms import rational_zero
 from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
@@ -40,7 +41,8 @@ class Motion:
     def _eom(self, line, piece, parsed):
         members = [m.value for m in parsed.members]
         if len(members) != 2 or isinstance(members[0], sp.MatrixBase):
-            self._add(line, piece, "equation of motion", "unchecked", "not a single scalar equation")
+            rows = rows_verdict(members, self._eom_check)
+            self._add(line, piece, "equation of motion", *(rows or ("unchecked", "not a single scalar equation")))
             return
         raw = members[0] - members[1]
         used = [x for x in free(raw) if x in self.ctx.defs]

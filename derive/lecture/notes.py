@@ -62,9 +62,10 @@ ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
-_SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:very\s+)?(?:(?:first|1st)[- ]order\s+)?small\b|\bsmall of (?:the )?first order\b", re.I)
+_SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:an?\s+)?(?:very\s+)?(?:(?:first|1st)[- ]order\s+)?small\b"
+                    r"|\bsmall of (?:the )?first order\b|\b(?:as|to\s+be)\s+(?:very\s+)?small\b(?!\s+as\b)", re.I)
 """Prose that calls the quantities before it in its sentence small (to first order): "are small", "are
-very small", "is first-order small"."""
+very small", "is first-order small", "are small perturbations", "takes … as small", "assumed to be small"."""
 _RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
 
 

@@ -236,8 +236,10 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
             return
         self._named_at_chain_end(latex, item.line)
         relabelled = _repeated_labels(pieces)
-        previous = None
-        for piece in pieces:
+        previous, mark = None, None
+        for k, piece in enumerate(pieces):
+            if k == len(pieces) - 1 > 0 and statements(latex.rsplit("\\Rightarrow", 1)[-1]) == [piece]:
+                mark = len(self.display_settings)     # what is set from here is the display's conclusion
             dup = piece in seen and len(pieces) > 2
             seen.append(piece)
             if piece in relabelled:
@@ -270,7 +272,7 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
             self._place_flushed(before)
             self._note_motion(item.line, piece)
         self._confirmed_by_siblings(self.claims[start:])
-        self._close_display()
+        self._close_display(self.display_settings[mark:] if mark is not None else ())
 
     def _place_flushed(self, at):
         """The verdicts of a group of solutions that a later statement closed, placed before that

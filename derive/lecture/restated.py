@@ -8,7 +8,8 @@ the same claim restated: it holds when ``B' − B`` expands to zero with the tex
 in (König's ``T = ½ m v_c² + ½ J_C ω²`` written again as ``T = ½ m v_c² + ½ (J_{z'} − m d²) ω²``
 after ``J_{z'} = J_C + m d²``); and a later ``X = B'`` that solves an earlier equation of its names for
 one of them, X entering it linearly, as the same equation (``\\omega_2 = \\frac{R}{a}\\omega_1`` after
-``\\frac{\\omega_1}{\\omega_2} = \\frac{a}{R}``). That says only that the text agrees with itself; a
+``\\frac{\\omega_1}{\\omega_2} = \\frac{a}{R}``); and a later equation whose two sides' difference is an
+earlier one's expanded, up to a non-zero number (a determinant ``= 0`` then written out). That says only that the text agrees with itself; a
 restatement that differs says nothing (either of the two may be the one the text meant), so it is
 never flagged.
 
@@ -42,8 +43,29 @@ class Restated:
                 self._add(line, piece, "identity", "holds",
                           f"the text's equation of line {at} solved for {self.tex(left)}")
                 return True
+        for at, was_left, was_right in reversed(kept):
+            if at < line and was_left != left and _multiple((left, right), (was_left, was_right)):
+                self._add(line, piece, "identity", "holds",
+                          f"the text's equation of line {at} written out (expand), up to a constant factor")
+                return True
         kept.append((line, left, right))
         return False
+
+
+def _multiple(new, old) -> bool:
+    """Is the equation ``new`` (its two sides) the equation ``old`` expanded, up to a non-zero
+    number (a determinant written out: ``\\det[…] = 0`` then ``\\lambda^2 - c = 0``)?"""
+    sides = [*new, *old]
+    if not all(isinstance(v, sp.Expr) and not isinstance(v, sp.MatrixBase) and v.is_commutative for v in sides):
+        return False                      # scalars only: the text's matrices do not commute
+    new, old = new[0] - new[1], old[0] - old[1]
+    if not new.free_symbols:
+        return False
+    old = sp.expand(old)
+    if old == 0:
+        return False
+    ratio = sp.cancel(sp.expand(new) / old)
+    return ratio.is_number and ratio != 0 and ratio.is_finite is True
 
 
 def _alike(*values) -> bool:

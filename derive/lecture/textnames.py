@@ -483,14 +483,17 @@ class TextNames(UnreadMembers):
         if not inline:
             self._running_settings = None      # a display ends the sentences that listed cases
 
-    def _close_display(self):
+    def _close_display(self, concluded=()):
         """Settings made inside a display with claims, or in running text ("the case $\\theta = 0$"),
-        hold there only; a display of settings alone sets them for the section."""
+        hold there only; a display of settings alone sets them for the section, and so does a
+        display's conclusion after ⇒ (``I_3 \\dot{\\omega}_3 = 0 \\Rightarrow \\omega_3 = \\Omega``): ``concluded``."""
         if getattr(self, "pending", None):
             self.pending_subs = dict(self.ctx.subs)      # the settings the pending solutions were written under
         if self.display_settings and not self.settings_only:
             keep = {k: v for k, v in self.ctx.subs.items() if k in PARAMETERS and k in self.display_settings}
-            self.ctx.subs = {**self._subs_before, **(keep if self._inline else {})}
+            rates = [lx.WD[lx.W.index(k)] for k in concluded if k in lx.W]   # a constant spin's rate, 0
+            kept = {k: self.ctx.subs[k] for k in [*concluded, *rates] if k in self.ctx.subs}
+            self.ctx.subs = {**self._subs_before, **(keep if self._inline else {}), **kept}
         if self._inline and self.display_relations:
             self._cases_listed()
 
