@@ -118,3 +118,21 @@ def test_an_equation_written_out_from_an_earlier_one_holds():
 def test_an_equation_that_is_not_the_earlier_one_written_out_is_not_judged_by_it():
     text = CHARACTERISTIC.replace("\\lambda^2 - a b = 0", "\\lambda^2 + a b = 0")
     assert "holds" not in _verdicts(text, _line(text, "\\lambda^2 + a b") - 1)
+
+
+ROOTS = CHARACTERISTIC + r"""
+so
+
+$$
+\lambda = \pm \sqrt{a b}.
+$$
+"""
+
+
+def test_two_roots_written_with_plus_minus_solve_the_earlier_equation():
+    assert _verdicts(ROOTS, _line(ROOTS, "\\lambda = \\pm") - 1) == ["holds"]
+
+
+def test_roots_that_do_not_solve_the_earlier_equation_are_not_judged_by_it():
+    text = ROOTS.replace("\\pm \\sqrt{a b}", "\\pm \\sqrt{2 a b}")
+    assert "holds" not in _verdicts(text, _line(text, "\\lambda = \\pm") - 1)

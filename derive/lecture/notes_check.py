@@ -326,7 +326,8 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
             return
         except lx.NotRead as err:
             why = err.why
-            if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra(line, piece, text):
+            if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra(line, piece, text) \
+                    or self._roots_restated(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return

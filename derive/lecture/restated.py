@@ -17,7 +17,14 @@ May import: :mod:`derive.lecture.latex`, SymPy.
 """
 from __future__ import annotations
 
+import re
+
 import sympy as sp
+
+from derive.lecture import latex as lx
+
+
+_ROOTS = re.compile(r"(?P<x>[^=]+?)=\s*\\pm(?![A-Za-z])(?P<v>[^=]+)")
 
 
 class Restated:
@@ -52,11 +59,37 @@ class Restated:
         return False
 
 
+    def _roots_restated(self, line, piece, text) -> bool:
+        """``x = \\pm v`` (two roots on the right, which the scalar reader leaves as written): holds when
+        both ``x = v`` and ``x = -v`` solve the text's latest earlier equation in x; else False (not judged)."""
+        m = _ROOTS.fullmatch(text.strip())
+        if m is None or re.search(r"\\[mp]m(?![A-Za-z])", m["v"]):
+            return False
+        try:
+            both = [lx.parse(f"{m['x']} = {sign}\\left({m['v']}\\right)", self.vocab) for sign in "+-"]
+        except lx.NotRead:
+            return False
+        x = both[0].members[0].value
+        roots = [self._resolve(p.members[1].value) for p in both]
+        for at, was_left, was_right in reversed(self.__dict__.get("restatable", [])):
+            equation = was_left - was_right if _scalars(was_left, was_right, x) else None
+            if at < line and isinstance(x, sp.Symbol) and equation is not None and x in equation.free_symbols:
+                if all(sp.simplify(equation.xreplace({x: r})) == 0 for r in roots):
+                    self._add(line, piece, "identity", "holds", f"the two roots of the text's equation of line {at}")
+                    return True
+                return False
+        return False
+
+
+def _scalars(*values) -> bool:
+    """Are ``values`` all commuting scalar expressions (no matrix, none of the text's matrix names)?"""
+    return all(isinstance(v, sp.Expr) and not isinstance(v, sp.MatrixBase) and v.is_commutative for v in values)
+
+
 def _multiple(new, old) -> bool:
     """Is the equation ``new`` (its two sides) the equation ``old`` expanded, up to a non-zero
     number (a determinant written out: ``\\det[…] = 0`` then ``\\lambda^2 - c = 0``)?"""
-    sides = [*new, *old]
-    if not all(isinstance(v, sp.Expr) and not isinstance(v, sp.MatrixBase) and v.is_commutative for v in sides):
+    if not _scalars(*new, *old):
         return False                      # scalars only: the text's matrices do not commute
     new, old = new[0] - new[1], old[0] - old[1]
     if not new.free_symbols:
