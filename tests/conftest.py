@@ -155,3 +155,27 @@ def pytest_configure(config):
     seed = config.getoption("hypothesis_seed", None)
     if seed is not None and config.getoption("hypothesis_profile", None) is None:
         settings.load_profile("explore")
+
+
+def pytest_collection(session):
+    """In a fresh checkout each test process would rewrite every test module's asserts and keep
+    the bytecode (``__pycache__``); run side by side, the processes would all do all of it. Each
+    pytest-xdist worker first rewrites its share of the modules (every n-th), so that collecting
+    finds the rest kept by the others; a module another has not kept yet is rewritten as before.
+    Nothing is done where bytecode is not written or pytest's rewriter is not the one expected."""
+    worker, count = os.environ.get("PYTEST_XDIST_WORKER", ""), os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1")
+    if not worker[2:].isdigit() or not count.isdigit() or int(count) < 2 or sys.dont_write_bytecode:
+        return
+    try:
+        from _pytest.assertion import rewrite
+        state = session.config.stash[rewrite.assertstate_key]
+    except (ImportError, AttributeError, KeyError):
+        return
+    for source in sorted(Path(__file__).parent.glob("test_*.py"))[int(worker[2:])::int(count)]:
+        try:
+            pyc = rewrite.get_cache_dir(source) / (source.name[:-3] + rewrite.PYC_TAIL)
+            if rewrite._read_pyc(source, pyc) is None and rewrite.try_makedirs(pyc.parent):
+                source_hash, code = rewrite._rewrite_test(source, session.config)
+                rewrite._write_pyc(state, code, source_hash, pyc)
+        except Exception:  # (a module that does not compile, another pytest): collection says why
+            continue
