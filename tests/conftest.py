@@ -33,11 +33,13 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 
 from derive.runtime import cache as cache_folder  # noqa: E402  (after DERIVE_CACHE is set)
 
-# The suite's kernels are compiled at -O0 (DERIVE_CFLAGS, after derive's -O3): the same IEEE
-# arithmetic (ISO C, no contraction), and most of the suite's compiles are of kernels run for
-# well under a second, where compiling costs more than the unoptimised code does. Tests of
-# what the optimiser could break (the vector and lanes builds, bit for bit) carry the mark
-# ``optimised`` and compile with derive's own flags.
+# The suite's kernels are compiled at -O0 (DERIVE_CFLAGS, after derive's -O3): most of them run
+# for well under a second, where compiling costs more than the unoptimised code does. ISO C
+# contracts nothing at any level, but at -O0 a square written pow(x, 2) is libm's pow where an
+# optimised build multiplies, so last bits may differ from a user's build. Tests of what the
+# optimiser could break (the vector and lanes builds, bit for bit) and tests that hold the
+# suite's kernels to a user's build (the exported examples) carry the mark ``optimised`` and
+# compile with derive's own flags.
 os.environ.setdefault("DERIVE_CFLAGS", "-O0")
 
 settings.register_profile("derive", database=None, derandomize=True)
