@@ -47,16 +47,29 @@ settings.register_profile("explore", database=None, derandomize=False, print_blo
 settings.load_profile("derive")
 
 
+def _forget_loaded_libraries() -> None:
+    """Empty the per-process tables of loaded libraries that are not keyed by the flags (a
+    model's (method, build) kernels, the contact driver's per shape and law)."""
+    from derive.contact import driver  # (SymPy with it: never in xdist's controller)
+    from derive.runtime.integrate import ModelKernel
+
+    ModelKernel._cache.clear()
+    driver.library.cache_clear()
+
+
 @pytest.fixture(scope="module", autouse=True)
 def _optimised_builds(request):
     """A test module marked ``optimised`` (``pytestmark``) compiles with derive's own flags only,
-    its module-scoped fixtures too: ``DERIVE_CFLAGS`` is unset while it runs."""
+    its module-scoped fixtures too: ``DERIVE_CFLAGS`` is unset while it runs, and it loads its
+    own libraries (none another module loaded at -O0 in this process) and leaves none behind."""
     if request.node.get_closest_marker("optimised") is None:
         yield
         return
+    _forget_loaded_libraries()
     with pytest.MonkeyPatch.context() as patch:
         patch.delenv("DERIVE_CFLAGS", raising=False)
         yield
+    _forget_loaded_libraries()
 
 
 @pytest.fixture

@@ -16,7 +16,6 @@ import numpy as np
 import pytest
 
 from derive.cli import main
-from derive.contact import driver
 from tests.compile_once import make_once
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -27,15 +26,6 @@ STRICT = "CFLAGS=-std=c99 -O2 -Wall -Wextra -Werror -pedantic"
 # it: the suite's -O0 kernels differ in last bits (libm's pow for a square, not x*x), which a
 # run through several touch events carries past 1e-12.
 pytestmark = [pytest.mark.skipif(shutil.which("make") is None, reason="needs make"), pytest.mark.optimised]
-
-
-@pytest.fixture(scope="module", autouse=True)
-def _own_libraries():
-    """The contact driver keeps one library per shape and law in the process, whatever the flags
-    it was built with: this module loads its own, and leaves none of them to the others."""
-    driver.library.cache_clear()
-    yield
-    driver.library.cache_clear()
 
 
 def _cli(capsys, *argv) -> tuple[int, str, str]:
