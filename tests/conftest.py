@@ -33,27 +33,43 @@ os.environ["DERIVE_CACHE"] = str(Path(__file__).resolve().parents[1] / ".cache" 
 
 from derive.runtime import cache as cache_folder  # noqa: E402  (after DERIVE_CACHE is set)
 
-# The suite's kernels are compiled at -O1 (DERIVE_CFLAGS, after derive's -O3): the same IEEE
-# arithmetic (ISO C, no contraction) for much less compiling. Tests of what the optimiser
-# could break (the vector and lanes builds, bit for bit) carry the mark ``optimised`` and
+# The suite's kernels are compiled at -O0 (DERIVE_CFLAGS, after derive's -O3): most of them run
+# for well under a second, where compiling costs more than the unoptimised code does. ISO C
+# contracts nothing at any level, but at -O0 a square written pow(x, 2) is libm's pow where an
+# optimised build multiplies, so last bits may differ from a user's build. Tests of what the
+# optimiser could break (the vector and lanes builds, bit for bit) and tests that hold the
+# suite's kernels to a user's build (the exported examples) carry the mark ``optimised`` and
 # compile with derive's own flags.
-os.environ.setdefault("DERIVE_CFLAGS", "-O1")
+os.environ.setdefault("DERIVE_CFLAGS", "-O0")
 
 settings.register_profile("derive", database=None, derandomize=True)
 settings.register_profile("explore", database=None, derandomize=False, print_blob=True)
 settings.load_profile("derive")
 
 
+def _forget_loaded_libraries() -> None:
+    """Empty the per-process tables of loaded libraries that are not keyed by the flags (a
+    model's (method, build) kernels, the contact driver's per shape and law)."""
+    from derive.contact import driver  # (SymPy with it: never in xdist's controller)
+    from derive.runtime.integrate import ModelKernel
+
+    ModelKernel._cache.clear()
+    driver.library.cache_clear()
+
+
 @pytest.fixture(scope="module", autouse=True)
 def _optimised_builds(request):
     """A test module marked ``optimised`` (``pytestmark``) compiles with derive's own flags only,
-    its module-scoped fixtures too: ``DERIVE_CFLAGS`` is unset while it runs."""
+    its module-scoped fixtures too: ``DERIVE_CFLAGS`` is unset while it runs, and it loads its
+    own libraries (none another module loaded at -O0 in this process) and leaves none behind."""
     if request.node.get_closest_marker("optimised") is None:
         yield
         return
+    _forget_loaded_libraries()
     with pytest.MonkeyPatch.context() as patch:
         patch.delenv("DERIVE_CFLAGS", raising=False)
         yield
+    _forget_loaded_libraries()
 
 
 @pytest.fixture
@@ -154,3 +170,27 @@ def pytest_configure(config):
     seed = config.getoption("hypothesis_seed", None)
     if seed is not None and config.getoption("hypothesis_profile", None) is None:
         settings.load_profile("explore")
+
+
+def pytest_collection(session):
+    """In a fresh checkout each test process would rewrite every test module's asserts and keep
+    the bytecode (``__pycache__``); run side by side, the processes would all do all of it. Each
+    pytest-xdist worker first rewrites its share of the modules (every n-th), so that collecting
+    finds the rest kept by the others; a module another has not kept yet is rewritten as before.
+    Nothing is done where bytecode is not written or pytest's rewriter is not the one expected."""
+    worker, count = os.environ.get("PYTEST_XDIST_WORKER", ""), os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1")
+    if not worker[2:].isdigit() or not count.isdigit() or int(count) < 2 or sys.dont_write_bytecode:
+        return
+    try:
+        from _pytest.assertion import rewrite
+        state = session.config.stash[rewrite.assertstate_key]
+    except (ImportError, AttributeError, KeyError):
+        return
+    for source in sorted(Path(__file__).parent.glob("test_*.py"))[int(worker[2:])::int(count)]:
+        try:
+            pyc = rewrite.get_cache_dir(source) / (source.name[:-3] + rewrite.PYC_TAIL)
+            if rewrite._read_pyc(source, pyc) is None and rewrite.try_makedirs(pyc.parent):
+                source_hash, code = rewrite._rewrite_test(source, session.config)
+                rewrite._write_pyc(state, code, source_hash, pyc)
+        except Exception:  # (a module that does not compile, another pytest): collection says why
+            continue

@@ -28,8 +28,11 @@ def full(kernel, inputs, ps, t, args, pole, lanes):
     return kernel.simulate_batch(inputs, ps, t, args, pole, lanes=lanes)
 
 
+# the reduced top (u = cos beta) and the quaternion body in make test; the trigonometric series
+# of the full lanes in make test by test_the_reference_tops_outputs_series_in_the_full_lanes
+# (Euler angles); the other formulations, each three -O3 builds of its own, in make test-slow
 @pytest.mark.parametrize("samples", [21, pytest.param(401, marks=pytest.mark.slow)])
-@pytest.mark.parametrize("formulation", [f if f in ("quaternion", "reduced-u", "reduced") else
+@pytest.mark.parametrize("formulation", [f if f in ("quaternion", "reduced-u") else
                                          pytest.param(f, marks=pytest.mark.slow) for f in FORMULATIONS])
 def test_the_full_lanes_are_the_scalar_full_driver_bit_for_bit(formulation, samples):
     """Over 3 s, 21 samples (steps without one) or 401 (a dozen and more in a step), a ragged
