@@ -20,14 +20,18 @@ the text names them. A display is tried only once the text has named an angle (i
 the display's line: φ, θ, ψ, χ or the angles it names itself): before that no formula of it ties
 the angles to anything.
 
-May import: the standard library (`copy`, `re`), :mod:`derive.lecture.notes`.
+May import: the standard library (`copy`, `re`), SymPy, :mod:`derive.lecture.notes`, :mod:`derive.symbolic`.
 """
 from __future__ import annotations
 
 import copy
 import re
 
+import sympy as sp
+
 from derive.lecture import notes as nt
+from derive.symbolic.lagrangian import ACCELS
+from derive.symbolic.rotations import ANGLES, RATES
 
 FLAGGED = ("typo", "fails")
 
@@ -75,6 +79,30 @@ def _ruled_out(read_lines: dict, other: dict) -> bool:
     return any(read_lines[line][1] and other.get(line, (False, False))[0] for line in read_lines)
 
 
+def _first_and_third_swapped(checker) -> None:
+    """The checker's state read with the first and third angles (and their rates) swapped: its
+    context and vocabulary, as a text naming its yaw ψ gives them."""
+    swap = {}
+    for q in (ANGLES, RATES, ACCELS):
+        swap.update({q[0]: q[2], q[2]: q[0]})
+
+    def swapped(x, depth=0):
+        if isinstance(x, sp.Basic):
+            return x.xreplace(swap)
+        if depth > 4:
+            return x
+        if isinstance(x, dict):
+            return {swapped(k, depth + 1): swapped(v, depth + 1) for k, v in x.items()}
+        if isinstance(x, (list, tuple, set)):
+            return type(x)(swapped(v, depth + 1) for v in x) if not hasattr(x, "_fields") else x
+        return x
+
+    for holder in (checker.ctx, checker.vocab):
+        for key, value in vars(holder).items():
+            setattr(holder, key, swapped(value))
+    checker.notes.angles_stated = True
+
+
 class ConventionProbe:
     """Mixin of the checker: a display flagged in z-y-z, in a text that states no convention, is
     read again in each other sequence from the checker's state just before it (`probes`: its line
@@ -94,6 +122,8 @@ class ConventionProbe:
         holding = set()
         for seq, names in _candidates(self.notes):
             trial = copy.deepcopy(saved, {id(d): d for d in saved.derivations})
+            if names and not ("angles" in self.notes.declared or self.notes.angles_stated):
+                _first_and_third_swapped(trial)     # what was read with φ first, read with ψ first
             trial._stated_convention(nt.Item("convention", item.line, text=seq,
                                              symbols=names or nt.DEFAULT_ANGLES[seq]))
             at = len(trial.claims)
