@@ -2,23 +2,26 @@
 
 Takes: the `Notes` of a text, a way to read it again in a given sequence, and the checker. Gives:
 `inferred`, the claims a careful reader gives: with no convention stated anywhere (no front matter
-key, no ``--convention``, nothing `derive.lecture.stated_convention` reads), a display flagged in
-z-y-z is read again in the other eleven sequences, from the checker's state just before it
-(`ConventionProbe`):
+key, no ``--convention``, nothing `derive.lecture.stated_convention` reads), the text is read in
+z-y-z and a display is read again in the sequences not yet ruled out, from the checker's state
+just before it (`ConventionProbe`), until the text has shown its convention:
 
-* the first such formula (in the text's order) that holds in exactly one of them sets the text's
-  convention: the text is read in that sequence, and the formula's reason says so ("reads the
-  text's convention as z-x-z from line N");
-* a formula flagged in the sequence read that holds in another is not judged (``unchecked``,
-  naming the sequences it holds in): a reader cannot tell a slip from another convention.
+* a display of the angles that holds in z-y-z rules out the sequences it is flagged in; once all
+  are ruled out the text has shown z-y-z, and nothing more is read again (its slips stay flagged);
+* a display flagged in z-y-z (one of the angles, or any once the text has named an angle: ṙ = R 𝐕_b
+  after R in the angles) records the sequences it holds in; the first that holds in exactly one
+  stops the probing. The text is then read whole in that sequence, unless a display that holds in
+  z-y-z is flagged there: the formula's reason says so ("reads the text's convention as z-x-z from
+  line N", the first display that holds in it and not in z-y-z);
+* a formula flagged in the sequence read that holds in another not ruled out is not judged
+  (``unchecked``, naming the sequences it holds in): a reader cannot tell a slip from another
+  convention.
 
-A sequence is ruled out when a formula that holds in the sequence read is flagged in it: a text
-that writes one formula of z-y-z keeps z-y-z, and its slips stay flagged even when one of them
-happens to be another sequence's formula. For a Tait–Bryan sequence (yaw, pitch,
-roll) the angles are tried as φ, θ, ψ and as ψ, θ, φ (aerospace texts name the yaw ψ), unless
-the text names them. A display is tried only once the text has named an angle (in its math, up to
-the display's line: φ, θ, ψ, χ or the angles it names itself): before that no formula of it ties
-the angles to anything.
+A formula without the angles that holds (Euler's equations in ω) reads alike in every sequence and
+rules out none. For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as
+ψ, θ, φ (aerospace texts name the yaw ψ), unless the text names them. A display is tried only once
+the text has named an angle (in its math, up to the display's line: φ, θ, ψ, χ or the angles it
+names itself): before that no formula of it ties the angles to anything.
 
 May import: the standard library (`copy`, `re`), SymPy, :mod:`derive.lecture.notes`, :mod:`derive.symbolic`.
 """
@@ -65,13 +68,18 @@ def _candidates(notes) -> list:
 _USUAL = r"\\(?:var)?(?:phi|theta|psi)|\\chi"
 
 
-def _angles_named(notes, line: int, latex: str) -> bool:
-    """Does the text name an angle (`_USUAL`, or its own names) before ``line``, or in ``latex``?"""
+def _angle(notes) -> re.Pattern:
+    """An angle's name: `_USUAL`, or the text's own."""
     own = [re.escape("\\" + a.split("_")[0]) for a in notes.angles] if (
         "angles" in notes.declared or notes.angles_stated) else []
-    angle = re.compile(r"(?:" + "|".join([_USUAL, *own]) + r")(?![A-Za-z])")
-    m = angle.search(notes.body)
-    return m is not None and notes.body.count("\n", 0, m.start()) < line or angle.search(latex) is not None
+    return re.compile(r"(?:" + "|".join([_USUAL, *own]) + r")(?![A-Za-z])")
+
+
+def _named_before(notes, line: int) -> bool:
+    """Has the text named an angle before ``line``? Before that no formula of it ties the angles to
+    anything."""
+    m = _angle(notes).search(notes.body)
+    return m is not None and notes.body.count("\n", 0, m.start()) < line
 
 
 def _ruled_out(read_lines: dict, other: dict) -> bool:
@@ -103,67 +111,109 @@ def _first_and_third_swapped(checker) -> None:
     checker.notes.angles_stated = True
 
 
+class _Reading:
+    """What the probing knows while the text is read: the candidates not yet ruled out (`open`), the
+    lines probed (`probes`: line → candidate → (flagged, holds) there), each sequence's derivation
+    once made (`derived`), and `done` once the text has shown its convention."""
+
+    def __init__(self, notes):
+        self.open, self.probes, self.derived, self.done = _candidates(notes), {}, {}, False
+
+
+def _snapshot(checker):
+    """A copy of the checker to read a display again from; SymPy's expressions are immutable, so
+    the copy shares them (and the derivations) instead of building them again."""
+    memo = {id(d): d for d in checker.derivations}
+    sp.Basic.__deepcopy__ = lambda expr, memo: expr
+    try:
+        return copy.deepcopy(checker, memo)
+    finally:
+        del sp.Basic.__deepcopy__
+
+
 class ConventionProbe:
-    """Mixin of the checker: a display flagged in z-y-z, in a text that states no convention, is
-    read again in each other sequence from the checker's state just before it (`probes`: its line
-    → the (sequence, angles) it holds in)."""
+    """Mixin of the checker: a display of the angles, in a text that states no convention, is read
+    again in each sequence not yet ruled out, from the checker's state just before it. One that holds
+    as read rules out the sequences it is flagged in; one flagged as read records the sequences it
+    holds in (`probes`). Probing stops once the text has shown its convention: every other sequence
+    ruled out, or a flagged display that holds in exactly one."""
 
     def _display_probed(self, item, latex):
-        if self.notes.convention_stated or not _angles_named(self.notes, item.line, latex):
+        reading = self.__dict__.get("reading") or self.__dict__.setdefault("reading", _Reading(self.notes))
+        named = _angle(self.notes).search(latex) is not None
+        if self.notes.convention_stated or reading.done or not (named or _named_before(self.notes, item.line)):
             return self._display(item, latex)
-        probes = self.__dict__.setdefault("probes", {})
-        self.__dict__.pop("probes")
-        saved = copy.deepcopy(self, {id(d): d for d in self.derivations})
-        self.probes = probes
+        del self.reading
+        saved = _snapshot(self)
+        self.reading = reading
         start = len(self.claims)
         self._display(item, latex)
-        if not any(c.line == item.line and c.verdict in FLAGGED for c in self.claims[start:]):
-            return
-        holding = set()
-        for seq, names in _candidates(self.notes):
-            trial = copy.deepcopy(saved, {id(d): d for d in saved.derivations})
-            if names and not ("angles" in self.notes.declared or self.notes.angles_stated):
-                _first_and_third_swapped(trial)     # what was read with φ first, read with ψ first
-            trial._stated_convention(nt.Item("convention", item.line, text=seq,
-                                             symbols=names or nt.DEFAULT_ANGLES[seq]))
-            at = len(trial.claims)
-            trial._display(item, latex)
-            said = [c for c in trial.claims[at:] if c.line == item.line]
-            if _lines(said).get(item.line, (True, False))[1]:
-                holding.add((seq, names))
-            if all(trial.d is not d for d in self.derivations):
-                self.derivations.append(trial.d)        # what it derived is kept for the next reading
-        probes[item.line] = holding
+        flagged, holds = _lines(self.claims[start:]).get(item.line, (False, False))
+        if not (flagged or named and holds):
+            return      # a formula without the angles that holds (Euler's equations in ω) reads alike in all
+        verdicts = {cand: self._probed(saved, cand, item, latex) for cand in reading.open}
+        reading.probes[item.line] = verdicts
+        if holds:
+            reading.open = [cand for cand in reading.open if not verdicts[cand][0]]
+            reading.done = not reading.open         # the text has shown its sequence: z-y-z
+        else:
+            reading.done = len({seq for (seq, _), (_, h) in verdicts.items() if h}) == 1
+
+    def _probed(self, saved, cand, item, latex) -> tuple:
+        """(flagged, holds) of the display read in ``cand`` from the state ``saved``."""
+        seq, names = cand
+        reading = self.reading
+        trial = _snapshot(saved)
+        if names and not ("angles" in self.notes.declared or self.notes.angles_stated):
+            _first_and_third_swapped(trial)     # what was read with φ first, read with ψ first
+        trial._stated_convention(nt.Item("convention", item.line, text=seq,
+                                         symbols=names or nt.DEFAULT_ANGLES[seq]), reading.derived.get(seq))
+        if seq not in reading.derived:
+            reading.derived[seq] = trial.d
+            self.derivations.append(trial.d)        # what it derived is kept for the next reading
+        at = len(trial.claims)
+        trial._display(item, latex)
+        return _lines([c for c in trial.claims[at:] if c.line == item.line]).get(item.line, (False, False))
 
 
 def inferred(notes, parse, check) -> list:
     """The claims of the text (see the module docstring): ``notes`` as read, ``parse(convention)``
     the text read again in a sequence, ``check(notes)`` the checker's claims and its probes."""
     claims, probes = check(notes)
-    if notes.convention_stated or not any(probes.values()):
+    if notes.convention_stated or not probes:
         return claims
     base = _lines(claims)
-    readings, lines = {}, {}
-    for cand in sorted({cand for found in probes.values() for cand in found}, key=str):
-        again = parse(cand[0])
-        if cand[1]:
-            again.angles, again.angles_stated = tuple(cand[1]), True
-        readings[cand] = check(again)[0]
-        lines[cand] = _lines(readings[cand])
-    flagged = [line for line in sorted(probes) if base.get(line, (False, False))[0]]
-    for line in flagged:
-        holding = [cand for cand in probes[line] if lines[cand].get(line, (False, False))[1]
-                   and not _ruled_out(base, lines[cand])]
-        if len({seq for seq, _ in holding}) == 1:
-            chosen = holding[0]
-            for c in readings[chosen]:
-                if c.line == line and c.verdict == "holds":
-                    c.why = (f"reads the text's convention as {chosen[0]} from line {line} (the text states "
-                             f"none; this formula holds in {chosen[0]}, not in the lecture's z-y-z)"
-                             + (f"; {c.why}" if c.why else ""))
-            lines[(None, None)] = base
-            return _not_judged(readings[chosen], chosen[0], {k: v for k, v in lines.items() if k != chosen})
-    return _not_judged(claims, "z-y-z", lines)
+    tried: dict = {}        # candidate → line → (flagged, holds), at the lines it was probed
+    for line, verdicts in probes.items():
+        for cand, said in verdicts.items():
+            tried.setdefault(cand, {})[line] = said
+    for line in sorted(probes):
+        if not base.get(line, (False, False))[0]:
+            continue
+        holding = [cand for cand, (_, holds) in probes[line].items()
+                   if holds and not _ruled_out(base, tried[cand])]
+        if len({seq for seq, _ in holding}) != 1:
+            continue
+        chosen = holding[0]
+        again = parse(chosen[0])
+        if chosen[1]:
+            again.angles, again.angles_stated = tuple(chosen[1]), True
+        reading = check(again)[0]
+        mine = _lines(reading)
+        if _ruled_out(base, mine):
+            continue        # a display that holds in z-y-z later in the text is flagged in it
+        # the reason goes to the first display that holds in the sequence read and not in z-y-z
+        line = min((n for n in probes if base.get(n, (False, False))[0] and mine.get(n, (False, False))[1]),
+                   default=line)
+        for c in reading:
+            if c.line == line and c.verdict == "holds":
+                c.why = (f"reads the text's convention as {chosen[0]} from line {line} (the text states "
+                         f"none; this formula holds in {chosen[0]}, not in the lecture's z-y-z)"
+                         + (f"; {c.why}" if c.why else ""))
+        tried.pop(chosen)
+        tried[(None, None)] = base
+        return _not_judged(reading, chosen[0], tried)
+    return _not_judged(claims, "z-y-z", tried)
 
 
 def _not_judged(claims, seq: str, others: dict) -> list:

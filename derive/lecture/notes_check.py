@@ -597,4 +597,4 @@ def _checked(notes: nt.Notes) -> list[Claim]:
     claims = checker.run()
     for d in {id(d): d for d in checker.derivations}.values():
         keep(d)  # what the text's conventions needed, for the next command
-    return claims, getattr(checker, "probes", {})
+    return claims, checker.reading.probes if "reading" in vars(checker) else {}
