@@ -2,6 +2,7 @@
 formula of the angles that is flagged in z-y-z and holds in exactly one other sequence sets the
 text's convention (its reason says so); a text that writes a formula of z-y-z keeps z-y-z, its
 slips flagged."""
+from derive.lecture import notes as nt
 from derive.lecture import notes_check as nc
 
 _RATES = ("# Body rates\n\nThe body components of the angular velocity:\n\n"
@@ -40,3 +41,22 @@ def test_a_formula_that_holds_in_several_other_sequences_is_not_judged_and_names
     out = _verdicts("# Body rates\n\n$$\n\\omega_1 = \\dot\\phi \\cos\\theta + \\dot\\psi\n$$\n")
     assert out[3][0] == "unchecked"
     assert "holds in x-y-x, x-z-x, not in z-y-z" in out[3][1]
+
+
+ZYZ_THEN_SLIP = _RATES.format(w1="-\\dot\\phi \\sin\\theta \\cos\\psi + \\dot\\theta \\sin\\psi",
+                              w2="\\dot\\phi \\sin\\theta \\sin\\psi + \\dot\\theta \\cos\\psi") + (
+    "\nThe kinetic energy of the symmetric top:\n\n"
+    "$$\nT = \\frac{1}{2} I_1 (\\dot\\theta^2 + \\dot\\phi^2 \\sin^2\\theta) + \\frac{1}{2} I_3 (\\dot\\psi + \\dot\\phi \\cos\\theta)^3\n$$\n")
+
+
+def test_a_text_that_has_shown_z_y_z_is_not_read_again_and_its_slip_is_flagged():
+    # ω₁, ω₂, ω₃ of z-y-z hold in it and in no other sequence: the slip in T (a cube for a square)
+    # after them is judged in z-y-z only
+    checker = nc.Checker(nt.parse_notes(ZYZ_THEN_SLIP))
+    claims = checker.run()
+    slip = max(c.line for c in claims)
+    assert checker.reading.done and checker.reading.open == []
+    assert slip not in checker.reading.probes
+    out = _verdicts(ZYZ_THEN_SLIP)
+    assert out[slip][0] in ("typo", "fails") and "convention" not in out[slip][1]
+    assert out[5][0] == out[9][0] == out[13][0] == "holds"
