@@ -49,14 +49,25 @@ ZYZ_THEN_SLIP = _RATES.format(w1="-\\dot\\phi \\sin\\theta \\cos\\psi + \\dot\\t
     "$$\nT = \\frac{1}{2} I_1 (\\dot\\theta^2 + \\dot\\phi^2 \\sin^2\\theta) + \\frac{1}{2} I_3 (\\dot\\psi + \\dot\\phi \\cos\\theta)^3\n$$\n")
 
 
-def test_a_text_that_has_shown_z_y_z_is_not_read_again_and_its_slip_is_flagged():
-    # ω₁, ω₂, ω₃ of z-y-z hold in it and in no other sequence: the slip in T (a cube for a square)
-    # after them is judged in z-y-z only
+def test_a_slip_after_displays_that_show_z_y_z_is_flagged_and_not_read_again():
+    # ω₁, ω₂, ω₃ of z-y-z hold as read and are flagged in every other sequence: before the slip in
+    # T (a cube for a square) is read again anywhere, they rule every other sequence out
     checker = nc.Checker(nt.parse_notes(ZYZ_THEN_SLIP))
     claims = checker.run()
     slip = max(c.line for c in claims)
-    assert checker.reading.done and checker.reading.open == []
-    assert slip not in checker.reading.probes
+    assert checker.reading.probes[slip] == {} and checker.reading.open == [] and checker.reading.done
     out = _verdicts(ZYZ_THEN_SLIP)
     assert out[slip][0] in ("typo", "fails") and "convention" not in out[slip][1]
     assert out[5][0] == out[9][0] == out[13][0] == "holds"
+
+
+def test_a_slip_that_holds_in_another_sequence_reads_again_the_displays_that_held_before_it():
+    # ω₂ of z-y-z right, then ω₁ written as z-x-z's ω₁: z-x-z is ruled out by the ω₂ read again in it
+    text = ("# Body rates\n\n$$\n\\omega_2 = \\dot\\phi \\sin\\theta \\sin\\psi + \\dot\\theta \\cos\\psi\n$$\n\n"
+            "$$\n\\omega_1 = \\dot\\phi \\sin\\theta \\sin\\psi + \\dot\\theta \\cos\\psi\n$$\n")
+    checker = nc.Checker(nt.parse_notes(text))
+    checker.run()
+    assert checker.reading.probes[3][("z-x-z", None)] == (True, False)
+    assert ("z-x-z", None) not in checker.reading.open
+    out = _verdicts(text)
+    assert out[3][0] == "holds" and out[7][0] == "typo" and "convention" not in out[7][1]

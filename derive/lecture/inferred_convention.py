@@ -6,13 +6,14 @@ key, no ``--convention``, nothing `derive.lecture.stated_convention` reads), the
 z-y-z and a display is read again in the sequences not yet ruled out, from the checker's state
 just before it (`ConventionProbe`), until the text has shown its convention:
 
-* a display of the angles that holds in z-y-z rules out the sequences it is flagged in; once all
-  are ruled out the text has shown z-y-z, and nothing more is read again (its slips stay flagged);
 * a display flagged in z-y-z (one of the angles, or any once the text has named an angle: ṙ = R 𝐕_b
-  after R in the angles) records the sequences it holds in; the first that holds in exactly one
-  stops the probing. The text is then read whole in that sequence, unless a display that holds in
-  z-y-z is flagged there: the formula's reason says so ("reads the text's convention as z-x-z from
-  line N", the first display that holds in it and not in z-y-z);
+  after R in the angles) is read again in each sequence not ruled out, after the displays of the
+  angles that held as read before it, each from its own state: the first of them flagged there rules
+  the sequence out (all ruled out: the text has shown z-y-z, nothing more is read again and its
+  slips stay flagged). The first that holds in exactly one sequence stops the probing; the text is
+  then read whole in that sequence, unless a display that holds in z-y-z is flagged there, and the
+  formula's reason says so ("reads the text's convention as z-x-z from line N", the first display
+  that holds in it and not in z-y-z);
 * a formula flagged in the sequence read that holds in another not ruled out is not judged
   (``unchecked``, naming the sequences it holds in): a reader cannot tell a slip from another
   convention.
@@ -113,11 +114,13 @@ def _first_and_third_swapped(checker) -> None:
 
 class _Reading:
     """What the probing knows while the text is read: the candidates not yet ruled out (`open`), the
-    lines probed (`probes`: line → candidate → (flagged, holds) there), each sequence's derivation
-    once made (`derived`), and `done` once the text has shown its convention."""
+    lines probed (`probes`: line → candidate → (flagged, holds) there), the displays of the angles
+    that hold as read (`shown`: the state before each, to read it again when a candidate needs it),
+    each sequence's derivation once made (`derived`), and `done` once the text has shown its
+    convention."""
 
     def __init__(self, notes):
-        self.open, self.probes, self.derived, self.done = _candidates(notes), {}, {}, False
+        self.open, self.probes, self.shown, self.derived, self.done = _candidates(notes), {}, [], {}, False
 
 
 def _snapshot(checker):
@@ -132,10 +135,10 @@ def _snapshot(checker):
 
 
 class ConventionProbe:
-    """Mixin of the checker: a display of the angles, in a text that states no convention, is read
-    again in each sequence not yet ruled out, from the checker's state just before it. One that holds
-    as read rules out the sequences it is flagged in; one flagged as read records the sequences it
-    holds in (`probes`). Probing stops once the text has shown its convention: every other sequence
+    """Mixin of the checker, for a text that states no convention: a display flagged as read is read
+    again in each sequence not yet ruled out, from the checker's state just before it (`probes`),
+    after the displays of the angles that held as read before it (`shown`) rule out the sequences
+    they are flagged in. Probing stops once the text has shown its convention: every other sequence
     ruled out, or a flagged display that holds in exactly one."""
 
     def _display_probed(self, item, latex):
@@ -151,13 +154,41 @@ class ConventionProbe:
         flagged, holds = _lines(self.claims[start:]).get(item.line, (False, False))
         if not (flagged or named and holds):
             return      # a formula without the angles that holds (Euler's equations in ω) reads alike in all
-        verdicts = {cand: self._probed(saved, cand, item, latex) for cand in reading.open}
-        reading.probes[item.line] = verdicts
         if holds:
-            reading.open = [cand for cand in reading.open if not verdicts[cand][0]]
-            reading.done = not reading.open         # the text has shown its sequence: z-y-z
-        else:
-            reading.done = len({seq for (seq, _), (_, h) in verdicts.items() if h}) == 1
+            reading.shown.append((saved, item, latex))      # read again only for a candidate that needs it
+            return
+        verdicts = reading.probes[item.line] = {}
+        for cand in list(reading.open):
+            # the displays that held (ω in the rates, most often) before this one, a slip perhaps in
+            # the equations of motion: read again first, they rule most sequences out
+            if self._ruled_out_by_shown(cand):
+                reading.open.remove(cand)
+            else:
+                verdicts[cand] = self._probed(saved, cand, item, latex)
+        reading.done = not reading.open or len({cand[0] for cand in reading.open if verdicts[cand][1]}) == 1
+
+    def _ruled_out_by_shown(self, cand) -> bool:
+        """Is ``cand`` ruled out by a display of the angles that held as read before (read again in
+        it, in order, until one is flagged)?"""
+        for saved, item, latex in self.reading.shown:
+            said = self.reading.probes.setdefault(item.line, {})
+            if cand not in said:
+                said[cand] = self._probed(saved, cand, item, latex)
+            if said[cand][0]:
+                return True
+        return False
+
+    def probes_read(self) -> dict:
+        """The lines probed, once the text is read: a candidate a flagged display holds in is read
+        again in the displays of the angles that held as read after it too."""
+        reading = self.__dict__.get("reading")
+        if reading is None:
+            return {}
+        for cand in list(reading.open):
+            if any(said.get(cand, (False, False))[1] for said in reading.probes.values()) \
+                    and self._ruled_out_by_shown(cand):
+                reading.open.remove(cand)
+        return reading.probes
 
     def _probed(self, saved, cand, item, latex) -> tuple:
         """(flagged, holds) of the display read in ``cand`` from the state ``saved``."""
@@ -201,6 +232,7 @@ def inferred(notes, parse, check) -> list:
         reading = check(again)[0]
         mine = _lines(reading)
         if _ruled_out(base, mine):
+            tried[chosen] = mine
             continue        # a display that holds in z-y-z later in the text is flagged in it
         # the reason goes to the first display that holds in the sequence read and not in z-y-z
         line = min((n for n in probes if base.get(n, (False, False))[0] and mine.get(n, (False, False))[1]),

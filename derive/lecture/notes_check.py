@@ -594,7 +594,7 @@ def check_text(text: str, convention: str | None = None, path: str = "<notes>") 
 
 def _checked(notes: nt.Notes) -> list[Claim]:
     checker = Checker(notes)
-    claims = checker.run()
+    claims, probes = checker.run(), checker.probes_read()
     for d in {id(d): d for d in checker.derivations}.values():
         keep(d)  # what the text's conventions needed, for the next command
-    return claims, checker.reading.probes if "reading" in vars(checker) else {}
+    return claims, probes
