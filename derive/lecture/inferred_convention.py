@@ -125,8 +125,9 @@ class _Reading:
 
 def _snapshot(checker):
     """A copy of the checker to read a display again from; SymPy's expressions are immutable, so
-    the copy shares them (and the derivations) instead of building them again."""
-    memo = {id(d): d for d in checker.derivations}
+    the copy shares them (and the derivations, and the claims already made, which a display read
+    again only adds to) instead of building them again."""
+    memo = {id(x): x for x in [*checker.derivations, *checker.claims]}
     sp.Basic.__deepcopy__ = lambda expr, memo: expr
     try:
         return copy.deepcopy(checker, memo)
