@@ -229,14 +229,20 @@ def _flagged_omegas(claims):
 def test_goldstein_notes_fail_in_the_lecture_convention():
     # z-y-z turns about the new y axis, z-x-z about the line of nodes (the new x): the body
     # components ω₁, ω₂ and the frame vectors differ; T, the momenta and Euler's equations do not
-    overridden = kept.check_notes(ZXZ, convention="z-y-z")
+    claims = kept.check_notes(ZXZ, convention="z-y-z")
+    assert nc.exit_status(claims) == 1
+    flagged = _flagged_omegas(claims)
+    assert {r"\omega_1", r"\omega_2", r"\boldsymbol{\omega}"} <= flagged, flagged
+    assert not any(c.verdict in FLAGGED for c in claims if c.kind in ("equation of motion", "solution")), flagged
+
+
+def test_goldstein_notes_without_front_matter_are_read_in_the_convention_their_body_rates_hold_in():
+    # no convention stated anywhere: ω₁ holds in z-x-z alone, so the text is read in z-x-z
     text = ZXZ.read_text(encoding="utf-8")
-    stripped = kept.check_text(text[text.index("---", 3) + 3:].lstrip("\n"), path="no-front-matter.md")
-    for claims in (overridden, stripped):
-        assert nc.exit_status(claims) == 1
-        flagged = _flagged_omegas(claims)
-        assert {r"\omega_1", r"\omega_2", r"\boldsymbol{\omega}"} <= flagged, flagged
-        assert not any(c.verdict in FLAGGED for c in claims if c.kind in ("equation of motion", "solution")), flagged
+    claims = kept.check_text(text[text.index("---", 3) + 3:].lstrip("\n"), path="no-front-matter.md")
+    assert [c for c in claims if c.verdict in FLAGGED] == []
+    first = next(c for c in claims if c.latex.startswith(r"\omega_1"))
+    assert first.verdict == "holds" and f"reads the text's convention as z-x-z from line {first.line}" in first.why
 
 
 def test_goldstein_planted_errors_sample_caught():

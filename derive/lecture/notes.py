@@ -104,6 +104,8 @@ class Notes:
     names: nm.Names = field(default_factory=nm.Names)
     angles_stated: bool = False
     """The angles' names are the text's own, read from its displays or prose (no front matter)."""
+    convention_stated: bool = False
+    """The convention is given (``--convention``, the front matter) or stated by the text itself."""
     body: str = ""
     """The rendered text (prose and math), for readings that need what the prose says."""
 
@@ -276,7 +278,8 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         raise ValidationError(path, "--convention", f"{conv!r} is not one of {', '.join(CONVENTIONS)}")
     own = None if "angles" in declared or not stated else stated[0].angles
     angles = declared.get("angles") or own or DEFAULT_ANGLES[conv]
-    notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None)
+    notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None,
+                  convention_stated=bool(convention or declared.get("convention") or stated))
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     formula_names.learn(notes.names, body)

@@ -83,9 +83,9 @@ from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
 from derive.lecture.vector_claims import VectorStatements
+from derive.lecture.inferred_convention import ConventionProbe, inferred
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
-
 
 
 
@@ -122,7 +122,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -131,7 +131,7 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
                                    open=True, names=notes.names)
         self.d = derivation(notes.convention)
-        self.derivations = [self.d]      # every convention the text used, kept for the next command
+        self.derivations = [self.d]      # every convention the text used or was tried in, kept for the next command
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
         self.vocab.body_rate = self._body_rate
         if notes.names is not None and "vertical" in notes.names.letters.values():
@@ -205,7 +205,7 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
                         and continues(latex, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
-                self._display(item, latex)
+                self._display_probed(item, latex)
             k += 1
         self._flush()
         self._place_flushed(len(self.claims))
@@ -280,7 +280,6 @@ class Checker(SectionConvention, ConstantCases, Conditions, EulerInAngles, Euler
         if self.flushed:
             self.claims[at:at] = self.flushed
             self.flushed = []
-
 
     def _statement(self, line, piece, duplicate=False, pieces=()):
         if self.notes.names is not None:
@@ -577,16 +576,17 @@ def _first_relation(text: str) -> int | None:
 # ---- running and reporting ----------------------------------------------------------------------
 def check_notes(path, convention: str | None = None) -> list[Claim]:
     """Read the notes file and check every formula (see the module docstring)."""
-    return _checked(Checker(nt.read_notes(path, convention)))
+    return inferred(nt.read_notes(path, convention), lambda seq: nt.read_notes(path, seq), _checked)
 
 
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
-    return _checked(Checker(nt.parse_notes(text, path, convention)))
+    return inferred(nt.parse_notes(text, path, convention), lambda seq: nt.parse_notes(text, path, seq), _checked)
 
 
-def _checked(checker: Checker) -> list[Claim]:
-    claims = checker.run()
+def _checked(notes: nt.Notes) -> list[Claim]:
+    checker = Checker(notes)
+    claims, probes = checker.run(), checker.probes_read()
     for d in {id(d): d for d in checker.derivations}.values():
         keep(d)  # what the text's conventions needed, for the next command
-    return claims
+    return claims, probes

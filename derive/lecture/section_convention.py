@@ -26,14 +26,15 @@ class SectionConvention:
         w = self.d.omega
         return w.jacobian(sp.Matrix(ANGLES)) * sp.Matrix(RATES) + w.jacobian(sp.Matrix(RATES)) * sp.Matrix(ACCELS)
 
-    def _stated_convention(self, item):
+    def _stated_convention(self, item, d=None):
         """A section states another convention or other angle names (``item.text``, ``item.symbols``):
-        the derivation, the vocabulary's angles and the names for output follow it from here on."""
+        the derivation (``d``, when one of that sequence is at hand), the vocabulary's angles and the
+        names for output follow it from here on."""
         self._flush()
         self._place_flushed(len(self.claims))
         self.notes.convention, self.notes.angles = item.text, tuple(item.symbols)
         self.vocab.angles, self.vocab.aliases = tuple(item.symbols), nt.angle_aliases(self.notes)
-        self.d = derivation(item.text)
+        self.d = d or derivation(item.text)
         self.derivations.append(self.d)
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])
         if self.vocab.vertical:
