@@ -17,6 +17,8 @@ May import: :mod:`derive.lecture.latex`, SymPy.
 """
 from __future__ import annotations
 
+import cmath
+import functools
 import re
 
 import sympy as sp
@@ -91,14 +93,34 @@ def _multiple(new, old) -> bool:
     number (a determinant written out: ``\\det[…] = 0`` then ``\\lambda^2 - c = 0``)?"""
     if not _scalars(*new, *old):
         return False                      # scalars only: the text's matrices do not commute
-    new, old = new[0] - new[1], old[0] - old[1]
-    if not new.free_symbols:
+    new, old = _difference(*new), _difference(*old)
+    if not new.free_symbols or old == 0 or new.free_symbols != old.free_symbols:
+        return False                      # a number times old has old's symbols, no others
+    if not _same_ratio_at_two_points(new, old):
         return False
-    old = sp.expand(old)
-    if old == 0:
-        return False
-    ratio = sp.cancel(sp.expand(new) / old)
+    ratio = sp.cancel(new / old)
     return ratio.is_number and ratio != 0 and ratio.is_finite is True
+
+
+@functools.lru_cache(maxsize=512)
+def _difference(left, right):
+    """``left − right`` expanded, once per equation however many later ones it is held against."""
+    return sp.expand(left - right)
+
+
+def _same_ratio_at_two_points(new, old) -> bool:
+    """A cheap screen before ``cancel``: is new/old one number at two points of its symbols? False
+    only when two clearly different ratios are found; a point where either side is not a finite
+    number says nothing (True)."""
+    symbols = sorted(new.free_symbols, key=str)
+    ratios = []
+    for k in (0, 1):
+        point = {x: sp.Rational(13 + 7 * i + 5 * k, 11 + 3 * k) for i, x in enumerate(symbols)}
+        a, b = complex(new.xreplace(point).evalf(15)), complex(old.xreplace(point).evalf(15))
+        if not (cmath.isfinite(a) and cmath.isfinite(b)) or b == 0:
+            return True
+        ratios.append(a / b)
+    return abs(ratios[0] - ratios[1]) <= 1e-9 * max(abs(ratios[0]), abs(ratios[1]))
 
 
 def _alike(*values) -> bool:
