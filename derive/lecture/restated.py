@@ -13,17 +13,17 @@ earlier one's expanded, up to a non-zero number (a determinant ``= 0`` then writ
 restatement that differs says nothing (either of the two may be the one the text meant), so it is
 never flagged.
 
-May import: :mod:`derive.lecture.latex`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, SymPy.
 """
 from __future__ import annotations
 
-import cmath
 import functools
 import re
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import zero_test as zt
 
 
 _ROOTS = re.compile(r"(?P<x>[^=]+?)=\s*\\pm(?![A-Za-z])(?P<v>[^=]+)")
@@ -96,8 +96,8 @@ def _multiple(new, old) -> bool:
     new, old = _difference(*new), _difference(*old)
     if not new.free_symbols or old == 0 or new.free_symbols != old.free_symbols:
         return False                      # a number times old has old's symbols, no others
-    if not _same_ratio_at_two_points(new, old):
-        return False
+    if zt.surely_depends(new, old, new.free_symbols):
+        return False                      # new/old proved not a number, at an exact point
     ratio = sp.cancel(new / old)
     return ratio.is_number and ratio != 0 and ratio.is_finite is True
 
@@ -106,21 +106,6 @@ def _multiple(new, old) -> bool:
 def _difference(left, right):
     """``left − right`` expanded, once per equation however many later ones it is held against."""
     return sp.expand(left - right)
-
-
-def _same_ratio_at_two_points(new, old) -> bool:
-    """A cheap screen before ``cancel``: is new/old one number at two points of its symbols? False
-    only when two clearly different ratios are found; a point where either side is not a finite
-    number says nothing (True)."""
-    symbols = sorted(new.free_symbols, key=str)
-    ratios = []
-    for k in (0, 1):
-        point = {x: sp.Rational(13 + 7 * i + 5 * k, 11 + 3 * k) for i, x in enumerate(symbols)}
-        a, b = complex(new.xreplace(point).evalf(15)), complex(old.xreplace(point).evalf(15))
-        if not (cmath.isfinite(a) and cmath.isfinite(b)) or b == 0:
-            return True
-        ratios.append(a / b)
-    return abs(ratios[0] - ratios[1]) <= 1e-9 * max(abs(ratios[0]), abs(ratios[1]))
 
 
 def _alike(*values) -> bool:
