@@ -35,10 +35,9 @@ def kernels(sc, formulation):
     """(plan, description, scalar kernel (the portable build), lanes kernel, driver arguments,
     pole check) of a batch of scenes."""
     bp = batch.batch_plan(sc)
-    desc, _, args = bp.kernel(formulation)
+    desc, scalar, args = bp.kernel(formulation, "portable")  # (the plan's own build is not compiled)
     pole = dict(bp.candidates).get(formulation, 0)
-    return (bp, desc, ModelKernel.load(desc, bp.method, "portable"), ModelKernel.load(desc, bp.method, "lanes"),
-            args, pole)
+    return bp, desc, scalar, ModelKernel.load(desc, bp.method, "lanes"), args, pole
 
 
 def same(a, b):
@@ -52,7 +51,7 @@ def same(a, b):
         assert np.array_equal(x[ok], y[ok])
 
 
-# a reduced top and the quaternion body in make test (each builds three libraries); the others
+# a reduced top and the quaternion body in make test (each builds two libraries); the others
 # in make test-slow
 @pytest.mark.parametrize("formulation", ["reduced-u", "quaternion",
                                          *(pytest.param(f, marks=pytest.mark.slow)
@@ -67,10 +66,28 @@ def test_lanes_are_the_scalar_driver_bit_for_bit(formulation):
     assert len(set(want[3]["nstep"])) > 3  # the lanes of a group take different steps
     assert (want[3]["status"] == 0).all()
     same(want, got)
-    # the lanes driver built with the default flags (the baseline's narrower width) too
-    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
-    assert baseline.lanes == 2
-    same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+
+
+# The baseline width (a third -O3 build of the model) of the reduced top in make test, of the
+# quaternion body and the others in make test-slow: the lanes' code is the same for every model,
+# the widths differ in the vector types it is compiled for.
+@pytest.mark.parametrize("formulation", ["reduced-u", *(pytest.param(f, marks=pytest.mark.slow) for f in
+                                                        ("quaternion", "reduced", "euler-angles", "euler-poisson"))])
+def test_the_baseline_width_is_the_scalar_driver_bit_for_bit(formulation):
+    """The final-only lanes driver built with the default flags (the baseline's narrower width,
+    2), on a ragged group and on lanes refilled mid-batch (both ways round): the scalar
+    driver's bit for bit."""
+    baseline = None
+    for sc in (scenes(13, formulation=formulation), spread(37, formulation=formulation, t_end=6.0)):
+        bp, desc, scalar, _, args, pole = kernels(sc, formulation)
+        baseline = baseline or _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
+        assert baseline.lanes == 2
+        ps = bp.params(desc)
+        want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
+        assert (want[3]["status"] == 0).all() and len(set(want[3]["nstep"])) > 3
+        same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+        rev = bp.inputs[::-1].copy(), ps[::-1].copy()
+        same(scalar.simulate_final_batch(*rev, bp.t, args, pole), baseline.simulate_lanes_batch(*rev, bp.t, args, pole))
 
 
 def _lanes_library(desc, tag: str, flags: list) -> ModelKernel:
@@ -97,7 +114,8 @@ RULES = {"body": {"I1": 1.0, "I3": 0.5},
 
 
 # the baseline width of every rule (a second -O3 build of the body) in `make test-slow`; the
-# baseline width of the shipped rules is checked in make test by the driver test above
+# baseline width of the shipped rules is checked in make test by
+# test_the_baseline_width_is_the_scalar_driver_bit_for_bit
 @pytest.mark.parametrize("width", ["native", pytest.param("baseline", marks=pytest.mark.slow)])
 def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit(width):
     """The lanes' helpers of every rule (written on GNU C's vector types) against the scalar
@@ -107,13 +125,12 @@ def test_every_rule_of_the_lanes_is_the_scalar_rule_bit_for_bit(width):
     sc = [{**RULES, "initial": d["initial"]} for d in scenes(11)]
     bp = batch.batch_plan(sc)
     formulation, pole = bp.candidates[0]
-    desc, _, args = bp.kernel(formulation)
+    desc, scalar, args = bp.kernel(formulation, "portable")  # (the plan's own build is not compiled)
     source = desc.c_sources()[f"{desc.name}_taylor.c"]
     fused = re.findall(r"s\d+_ ([-+])= ", source)
     assert "+" in fused and "-" in fused  # a product and a quotient among the fused sums
     for rule in ("mul", "sqr", "div", "sqrt", "pow", "exp", "log", "atan2"):
         assert f"tcl_{rule}(n" in source or rule in ("mul", "div"), rule
-    scalar = ModelKernel.load(desc, bp.method, "portable")
     ps = bp.params(desc)
     want = scalar.simulate_final_batch(bp.inputs, ps, bp.t, args, pole)
     assert (want[3]["status"] == 0).all() and len(set(want[3]["nstep"])) > 3
@@ -163,8 +180,7 @@ def test_lanes_refilled_mid_batch_are_the_scalar_driver_bit_for_bit(formulation)
     assert (want[3]["status"] == 0).all()
     assert steps.max() > 4 * steps.min()  # a lane takes several trajectories while another runs one
     same(want, native.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
-    baseline = _lanes_library(desc, "baseline", ["-DDERIVE_LANES"])
-    same(want, baseline.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
+    # (the baseline width: test_the_baseline_width_is_the_scalar_driver_bit_for_bit)
     # the batch the other way round: each trajectory in another lane, beside other neighbours
     rev = bp.inputs[::-1].copy(), ps[::-1].copy()
     same(scalar.simulate_final_batch(*rev, bp.t, args, pole), native.simulate_lanes_batch(*rev, bp.t, args, pole))
@@ -327,7 +343,11 @@ def test_the_avx2_width_is_bit_for_bit_too(formulation):
          avx2.simulate_lanes_batch(bp.inputs, ps, bp.t, args, pole))
 
 
-@pytest.mark.parametrize("formulation", ["reduced-u", "reduced", "euler-angles", "quaternion", "euler-poisson"])
+# the reduced top, the Euler-angle top and the quaternion body in make test (their portable builds
+# are the lanes tests'); heavy_top_reduced and Euler-Poisson, two -O3 builds each of their own,
+# in make test-slow
+@pytest.mark.parametrize("formulation", ["reduced-u", "euler-angles", "quaternion",
+                                         *(pytest.param(f, marks=pytest.mark.slow) for f in ("reduced", "euler-poisson"))])
 def test_the_vector_build_is_the_portable_one_bit_for_bit(formulation):
     """A Taylor method's single runs use the vector build (this CPU's width for the output map
     over a step's block of samples); every sample's outputs, the states, the parameters and the

@@ -289,11 +289,13 @@ class BatchPlan:
     h: float | None
     candidates: tuple
 
-    def kernel(self, formulation: str):
-        """(model description, compiled kernel, driver arguments) of one candidate."""
+    def kernel(self, formulation: str, build: str | None = None):
+        """(model description, compiled kernel, driver arguments) of one candidate; ``build``
+        (:data:`derive.runtime.cbuild.BUILDS`) the kernel's, by default the method's own (the
+        arguments are the same in every build)."""
         first = self.scenes[0]
         desc = catalogue.describe((formulation, first.symmetric, self.effects))
-        kernel = ModelKernel.load(desc, self.method)
+        kernel = ModelKernel.load(desc, self.method, build)
         if self.h is not None:
             args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
         else:
