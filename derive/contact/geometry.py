@@ -75,4 +75,6 @@ def contact_inertial(shape: Shape, angles=ANGLES) -> sp.Matrix:
 
 def height_in_angles(shape: Shape, angles=ANGLES):
     """z_com(α, β, γ) = −a⁰·ẑ (independent of α for every shape, of γ for axisymmetric ones)."""
-    return sp.simplify(-contact_inertial(shape, angles)[2])
+    # a⁰'s third component alone, simplified as contact_inertial simplifies each one
+    a0_z = (ZYZ.matrix(*angles)[2, :] * shape.contact(vertical_in_body(angles)))[0]
+    return sp.simplify(-sp.simplify(a0_z))
