@@ -122,9 +122,24 @@ SHORT = {
     ("moore-learn-multibody-dynamics-angular-kinematics", "checked"):
         "0 of 8 on its first read: its theorems are vector identities between derivatives taken in named frames "
         "(^A d b_x/dt, ^A omega^B) and cross products, which the reader does not model",
+    ("verga-polytech-spinning-cone-euler-equations-fr", "checked"):
+        "1 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
+        "angular velocity (a code cell names Omega), whose Euler's equations carry Ldot on the left, and whose "
+        "moments are triple integrals over the cone, which the reader does not evaluate",
+    ("verga-polytech-spinning-cone-euler-equations-fr", "found"):
+        "0 of 4: three triple integrals without the density and the Jacobian r, and the psi = 0 equations in "
+        "thetadot and phidot sin(theta) with omega's sign reversed, in the Omega_i the text does not tie",
+    ("verga-polytech-euler-angles-body-angular-velocity-fr-zxz", "checked"):
+        "2 of 23: a French course notebook on matrices of change of coordinates C = R^T in bases written as "
+        "rows (e_X e_Y e_Z) and its macro \\bm; C(phi, theta, psi) and R(phi, theta, psi) written out are a name "
+        "applied to the three angles, which the reader does not parse, and e_Z, Omega are written in frame bars "
+        "|_{(xyz)}; its C_X, C_Z and body angular velocity are checked",
+    ("verga-polytech-euler-angles-body-angular-velocity-fr-zxz", "found"):
+        "1 of 4: C_Y with a 1 for a 0 is flagged; C and R written out with phi and psi exchanged and e_Z's body "
+        "components with cos(phi) for cos(psi) sit in C(phi, theta, psi), which the reader does not parse",
 }
 
-FLOOR = {"checked": 517, "slips_flagged": 47, "holds_flagged": 0}
+FLOOR = {"checked": 520, "slips_flagged": 48, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

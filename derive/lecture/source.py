@@ -492,6 +492,16 @@ def _transposed_rows(text: str) -> str:
         at = left + len(column)
 
 
+_MATHOP = re.compile(r"\\mathop\s*\{((?:[^{}]|\{[^{}]*\})*)\}(\s*\\!)?")
+"""``\\mathop{…}``, an operator set for its spacing, with the negative thin space ``\\!`` a text may set
+after it: ``\\mathop{}\\!\\mathrm{d}`` is how a text's macro writes an upright differential d."""
+
+
+def _operator_body(m: re.Match) -> str:
+    """What ``\\mathop{…}`` sets: its body, read as the text's own symbols (none for ``\\mathop{}``)."""
+    return f" {m.group(1).strip()} " if m.group(1).strip() else " "
+
+
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
@@ -561,6 +571,7 @@ def _normalized(latex: str, user: tuple) -> str:
     except texmacros.MacroLoop as loop:
         # a macro that expands into itself stays as written: the reader names it as unreadable
         latex = texmacros.expand(latex, {k: v for k, v in user.items() if k != loop.name})
+    latex = _MATHOP.sub(_operator_body, latex)       # \\mathop{}\\!\\mathrm{d}: the upright differential d
     try:
         nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()
         text = _print(nodes, user)

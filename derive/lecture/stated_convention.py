@@ -10,8 +10,11 @@ commands):
 * a product of three single-axis turns named by their axis and applied to one angle each,
   ``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3)`` (axes ``1 2 3`` or ``x y z``, any matrix
   letter, bold or roman): the sequence of the axes in the written order (3-1-3 → z-x-z) and the
-  angles' names in that order. A product whose consecutive axes repeat, or whose arguments are
-  not three different plain symbols, states nothing;
+  angles' names in that order; an axis may be a capital (``R_Z(\\phi)``). When the text writes the
+  product's letter out only as passive single-axis turns with their axis and angle
+  (``C_X(\\phi) = \\begin{pmatrix} 1 & 0 & 0 \\\\ 0 & \\cos\\phi & \\sin\\phi \\\\ …``, a change of
+  coordinates), its rightmost turn is the first and the order is reversed. A product whose
+  consecutive axes repeat, or whose arguments are not three different plain symbols, states nothing;
 * prose naming the sequence, "3-1-3 Euler angles", "a z-x-z sequence", "the 3-2-1 convention":
   the sequence; the names come from a product in the same section, else from the prose right
   after it, "a turn $\\theta$ about the third axis, then $\\alpha$ about the first, then $\\phi$
@@ -42,11 +45,11 @@ from dataclasses import dataclass
 from derive.lecture import source
 from derive.lecture.latex_spaces import SPACING
 
-_AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z"}
+_AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z", "X": "x", "Y": "y", "Z": "z"}
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
 _SYMBOL = r"\\?[A-Za-z]+(?:\s*_\s*(?:\{\s*\\?[A-Za-z0-9]+\s*\}|\\?[A-Za-z0-9]))?"
 _MATRIX = r"(?:\\(?:mathbf|mathrm|boldsymbol|bm|mathsf)\s*\{\s*[A-Z]\s*\}|[A-Z])"
-_TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyz])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+_TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyzXYZ])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
 # a display read whole, before it is cut into statements: three turns set side by side with quads keep their order
 _PRODUCT = re.compile(_TURN + SPACING + _TURN + SPACING + _TURN)
 _SEQUENCE = re.compile(r"(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])(?![\w-])"
@@ -98,14 +101,35 @@ def _sequence(axes) -> str | None:
     return "-".join(axes)
 
 
-def _from_product(text: str):
-    """(sequence, names) of the first product of three single-axis turns in ``text``, or None."""
+def _from_product(text: str, passive: frozenset = frozenset()):
+    """(sequence, names) of the first product of three single-axis turns in ``text``, or None. A
+    product of turns whose letter the text writes out as passive turns (``passive``, `_passive_letters`)
+    turns first by its rightmost factor: its order is reversed."""
     for m in _PRODUCT.finditer(text):
-        seq = _sequence([_AXIS[m.group(k)] for k in (1, 3, 5)])
-        names = tuple(_name(m.group(k)) for k in (2, 4, 6))
+        turns = [(_AXIS[m.group(k)], _name(m.group(k + 1))) for k in (1, 3, 5)]
+        if _key(re.match(_MATRIX, m.group(0)).group(0)) in passive:
+            turns = turns[::-1]
+        seq = _sequence([a for a, _ in turns])
+        names = tuple(n for _, n in turns)
         if seq and len(set(names)) == 3:
             return seq, names
     return None
+
+
+_NAMED_TURN_DEF = re.compile(r"(" + _MATRIX + r")\s*_\s*\{?\s*[123xyzXYZ]\s*\}?\s*\(\s*" + _SYMBOL
+                             + r"\s*\)\s*&?\s*=\s*\\begin\{[pb]matrix\}(.*?)\\end\{[pb]matrix\}", re.S)
+
+
+def _passive_letters(maths) -> frozenset:
+    """The letters of single-axis turns the text writes out with their axis and angle, ``C_X(\\phi) =
+    \\begin{pmatrix}…``, every one of them as the passive turn (the transpose of the active one)."""
+    kinds: dict[str, set] = {}
+    for math in maths:
+        for m in _NAMED_TURN_DEF.finditer(math):
+            turn = _elementary(m.group(2))
+            if turn:
+                kinds.setdefault(_key(m.group(1)), set()).add(turn[2])
+    return frozenset(k for k, v in kinds.items() if v == {False})
 
 
 _PMATRIX_DEF = re.compile(r"(" + _MATRIX + r"(?:\s*_\s*(?:\{[^{}]*\}|[0-9A-Za-z]))?)\s*=\s*\\begin\{[pb]matrix\}(.*?)"
@@ -198,13 +222,14 @@ def stated(body: str) -> list[Stated]:
     module docstring). ``body`` is the rendered text; lines are 1-based."""
     cuts = [0] + [m.start() for m in _SECTION.finditer(body)] + [len(body)]
     user = source.macros(body)
+    passive = _passive_letters([source.normalize(m.group(0), user) for m in source.MATH.finditer(body)])
     out: list[Stated] = []
     for a, b in zip(cuts, cuts[1:]):
         section = body[a:b]
         if not section.strip():
             continue
         maths = [m.group(0) for m in source.MATH.finditer(section)]
-        product = (next((p for p in map(_from_product, maths) if p), None)
+        product = (next((p for p in (_from_product(m, passive) for m in maths) if p), None)
                    or _from_written_turns([source.normalize(m, user) for m in maths]))
         math_free = source.MATH.sub(lambda m: " " * len(m.group(0)), section)
         prose = _from_prose(section, math_free)

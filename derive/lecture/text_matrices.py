@@ -123,6 +123,7 @@ class TextMatrices:
             return None
         name, arg = toks[0].value, toks[2].value
         axis = name.sub.replace("'", "").strip("{} ")
+        axis = axis.lower() if axis in ("X", "Y", "Z") else axis        # C_Y(φ): the axis Y of the fixed frame is y
         if axis not in ("1", "2", "3", "x", "y", "z") or name.sup or name.dots:
             return None
         try:

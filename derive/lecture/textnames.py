@@ -414,6 +414,14 @@ class TextNames(UnreadMembers):
                           f"{what} but for the sign of the entry in row {row + 1}, column {col + 1}",
                           self.tex(target))
                 return True
+        for what, target in named.items():         # a name that says its turn: any one entry off is a typo
+            off = [k for k in range(9) if not zero(m[k] - target[k])]
+            if label is not None and f"about {label[0]} " in what and len(off) == 1:
+                row, col = divmod(off[0], 3)
+                self._add(line, piece, "rotation", "typo",
+                          f"named {what}, which it is but for the entry in row {row + 1}, column {col + 1}",
+                          self.tex(target))
+                return True
         return False
 
     def _rate_matrix(self, line, piece, m) -> bool:
