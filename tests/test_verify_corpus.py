@@ -114,7 +114,7 @@ SHORT = {
         "eta_1-ddot is taken for a new symbol; Euler's equations and the answer's L^2 and T are checked",
 }
 
-FLOOR = {"checked": 537, "slips_flagged": 48, "holds_flagged": 0}
+FLOOR = {"checked": 539, "slips_flagged": 48, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

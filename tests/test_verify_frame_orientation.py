@@ -104,9 +104,16 @@ def test_a_matrix_alone_is_held_to_the_sense_of_the_texts_simple_orientations():
     assert verdicts(alone)[3] == {"unchecked"}                     # no orientation stated: no sense to hold it to
 
 
+def test_direction_cosines_named_by_the_row_and_column_indices_hold():
+    rows = [f"\\hat{{d}}_{i} = " + " + ".join(f"\\cos\\beta_{{{i}{j}}} \\hat{{e}}_{j}" for j in "xyz") for i in "xyz"]
+    assert verdicts(TURN + display(*rows))[9] == {"holds"}
+    swapped = [rows[0].replace("\\beta_{xy}", "\\beta_{yx}")] + rows[1:]
+    assert verdicts(TURN + display(*swapped))[9] == {"unchecked"}
+
+
 def test_entries_the_text_names_are_no_claim_and_leave_the_stated_orientation():
-    named = display(*[f"\\hat{{d}}_{i} = \\cos\\gamma_{{{i}1}} \\hat{{e}}_1 + \\cos\\gamma_{{{i}2}} \\hat{{e}}_2 + "
-                      f"\\cos\\gamma_{{{i}3}} \\hat{{e}}_3" for i in "123"])
+    named = display(*[f"\\hat{{d}}_{i} = c_{{{i}1}} \\hat{{e}}_1 + c_{{{i}2}} \\hat{{e}}_2 + c_{{{i}3}} \\hat{{e}}_3"
+                      for i in "123"])
     assert verdicts(TURN + named)[9] == {"unchecked"}
     assert verdicts(TURN + named + "$$\\hat{d}_2 \\cdot \\hat{e}_3 = \\sin{\\phi}$$\n")[15] == {"holds"}
 
@@ -160,3 +167,10 @@ def test_a_relation_in_names_whose_rates_the_text_never_writes_is_not_judged():
     claim = "$$\\frac{{}^E d\\bar{v}}{dt} = v {}^E\\bar{\\omega}^D \\times \\hat{d}_1$$\n"
     assert verdicts(v + claim)[5] == {"holds"}
     assert verdicts(v + claim.replace("= v", "= 2 v"))[5] == {"unchecked"}
+
+
+def test_a_vector_the_prose_sets_is_read_in_the_displays_after_it():
+    prose = "For $\\bar{v} = v\\hat{d}_1$ with $v$ constant, it follows that\n\n"
+    claim = "$$\\frac{{}^E d\\bar{v}}{dt} = {}^E\\bar{\\omega}^D \\times v\\hat{d}_1 = {}^E\\bar{\\omega}^D \\times \\bar{v}$$\n"
+    assert verdicts(prose + claim)[5] == {"holds"}
+    assert verdicts(claim)[3] <= {"unchecked"}          # v̄ never set: not read

@@ -183,13 +183,19 @@ class Frames:
         return total
 
     def _product(self):
+        """Dot and cross products of juxtaposed factors: ``a \\times v \\hat{b}`` is a × (v b̂)."""
+        value = self._juxtaposed()
+        while self._peek() in (("op", "\\cdot"), ("op", "\\times")):
+            val = self._peek()[1]
+            self._at += 1
+            value = (dot if val == "\\cdot" else cross)(value, self._juxtaposed())
+        return value
+
+    def _juxtaposed(self):
         value = self._factor()
         while True:
             kind, val = self._peek()
-            if kind == "op" and val in ("\\cdot", "\\times"):
-                self._at += 1
-                value = (dot if val == "\\cdot" else cross)(value, self._factor())
-            elif kind == "op" and val == "\\ldots":
+            if kind == "op" and val == "\\ldots":
                 value = self._ellipsis(value)
             elif kind in ("unit", "dcm", "env", "func", "greek", "num", "name", "ang", "rate", "vecname", "dot") \
                     or (kind, val) == ("op", "(") or ((kind, val) == ("op", "|") and not self._bars):

@@ -7,8 +7,9 @@ whose `_frame_display` reads a display every statement of which the frame algebr
 * a frame stated by its unit vectors in another's (the three rows ``\hat{a}_i = …``, or the matrix
   form ``[\hat{a}] = [c_{ij}] [\hat{n}]``): a simple orientation (one shared axis, one angle) holds in
   the right-hand sense and fails in the other, or when its rows are no orthonormal set; it then
-  orients the frame. Entries the text names (``\cos\alpha_{xx}``) are no claim and leave the frame
-  as it was. Written again in the angles of the orientation already stated, it is checked against it;
+  orients the frame. Entries the text names (``c_{xy}``) are no claim and leave the frame as it
+  was; ``\cos\alpha_{xy}`` for every entry, one name indexed by the row's and the column's axis
+  labels, are the direction cosines, which hold (the frame left as it was). Written again in the angles of the orientation already stated, it is checked against it;
 * any other relation is checked entry by entry (vectors by their components, matrices entry by
   entry); a row of a block of unit-vector rows that fails, and holds with its left index made the
   one the block leaves out, is a typo for that index. A relation that fails is flagged only when it
@@ -16,8 +17,8 @@ whose `_frame_display` reads a display every statement of which the frame algebr
   the text has stated and those they are stated in, and only in angles a stated orientation
   carries; else it may be about an orientation the text gives in words, and is left unchecked;
 * a display in the notation of motion (`derive.lecture.frame_motion`) is read on `Motion`: a
-  statement ``\bar{u} = …`` sets the text's vector, any other relation is checked at the motion's
-  exact points.
+  statement ``\bar{u} = …`` sets the text's vector (as one its prose sets does, `_frame_setting`),
+  any other relation is checked at the motion's exact points.
 
 A 3×3 matrix written alone, with no relation, in a text that has stated a simple orientation in the
 right-hand sense: a simple orientation about the axis it leaves fixed holds in that sense and fails
@@ -122,12 +123,31 @@ class FrameDisplays:
             self._frame_relation(line, piece, values, ["="] * (len(values) - 1), missing)
         return True
 
+    def _frames_moving(self) -> Motion:
+        if getattr(self, "_frame_motion", None) is None:
+            self._frame_motion = Motion()
+        return self._frame_motion
+
+    def _frame_setting(self, latex):
+        """A vector of the text's set in its prose (``For $\\bar{v} = v\\hat{b}_x$ …``): recorded as a
+        display's ``\\bar{u} = …`` is, with no claim made."""
+        if not uses_frames(latex):
+            return
+        try:
+            toks = tokens(latex)
+            if len(toks) > 2 and toks[0][0] == "vecname" and toks[1][:2] == ("op", "=") and \
+                    toks[0][1] not in self._frames_moving().vectors:
+                rhs = latex.split("=", 1)[1]
+                value = self._frames_moving().read(rhs)
+                if len(value) == 1 and isinstance(value[0], Vec):
+                    self._frames_moving().vectors[toks[0][1]] = rhs
+        except (NotRead, ArithmeticError, TypeError, ValueError):
+            return
+
     def _motion_display(self, line, pieces, toks) -> bool:
         """A display in the notation of motion, read on `frame_motion.Motion`; a statement setting
         one of the text's vectors (``\\bar{u} = …``) records it."""
-        if getattr(self, "_frame_motion", None) is None:
-            self._frame_motion = Motion()
-        motion = self._frame_motion
+        motion = self._frames_moving()
         read = []
         motion.rates |= {tok[1] for ts in toks for tok in ts if tok[0] == "dot"}
         for piece, ts in zip(pieces, toks):
@@ -155,6 +175,11 @@ class FrameDisplays:
         turn = simple_turn(c)
         name = f"{{}}^{f}\\mathbf{{C}}^{g}"
         if turn is None and c.free_symbols:
+            if _direction_cosines(c, piece):
+                self._add(line, piece, "frame", "holds", f"the direction cosines: each entry the cosine of the angle "
+                          f"between the unit vector of {f} on its row and that of {g} on its column, named by their "
+                          f"two indices in that order (a unit vector's components are those cosines)")
+                return
             self._add(line, piece, "frame", "unchecked", f"not a claim: writes the unit vectors of {f} in those "
                       f"of {g} by entries the text names (a general orientation, {name})")
             return
@@ -259,6 +284,19 @@ class FrameDisplays:
             self._add(line, pieces[0], "frame", "fails", f"a matrix alone that fixes the {axis} axis, in sines and "
                       f"cosines of {self.tex(q)}: its rows are no orthonormal set, so it is no orientation")
         return True
+
+
+def _direction_cosines(c, piece) -> bool:
+    """Whether every entry (i, j) is cos α_{ij} of one name α, its indices the row's and the column's
+    axis labels as the statement writes them (x, y, z or 1, 2, 3)."""
+    family = "xyz" if re.search(r"\\hat\s*\{\s*[a-z]\s*\}\s*_\s*\{?\s*[xyz]", piece) else "123"
+    first = c[0, 0]
+    if not (isinstance(first, sp.cos) and isinstance(first.args[0], sp.Symbol)):
+        return False
+    base, _, index = first.args[0].name.rpartition("_")
+    if index != family[0] * 2:
+        return False
+    return all(c[i, j] == sp.cos(sp.Symbol(f"{base}_{family[i]}{family[j]}", real=True)) for i in range(3) for j in range(3))
 
 
 def _symbols(values) -> set:

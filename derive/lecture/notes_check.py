@@ -193,6 +193,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
                 self._small_before_ll(item.latex)
+                self._frame_setting(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
