@@ -1,7 +1,10 @@
 """Frames in Kane's notation (derive/lecture/frame_algebra.py, frame_displays.py): hatted unit
 vectors of lettered frames, direction cosine matrices {}^F C^G, simple orientations the text states,
 products, transposes and inverses of DCMs, checked entry by entry in the text's own frames."""
+import sympy as sp
+
 import kept_readings as kept
+from derive.symbolic.rotations import passive
 
 HEAD = "Frames $E$ and $D$ with right-handed unit vectors.\n\n"
 
@@ -29,10 +32,12 @@ def test_a_frames_unit_vectors_form_a_right_handed_set():
     assert verdicts(display("\\hat{e}_2 \\cdot \\hat{e}_2 = 1"))[3] == {"holds"}
 
 
-def test_a_simple_orientation_written_row_by_row_holds_in_the_right_hand_sense_only():
+def test_a_simple_orientation_written_row_by_row_holds_in_the_right_hand_sense_and_then_orients_the_frame():
     assert verdicts(TURN)[3] == {"holds"}
     left_handed = TURN.replace("-\\sin", "+\\sin").replace("\\cos{\\phi} \\hat{e}_2 + \\sin", "\\cos{\\phi} \\hat{e}_2 - \\sin")
-    assert verdicts(left_handed)[3] == {"fails"}
+    assert verdicts(left_handed)[3] == {"unchecked"}          # the text's angle may be measured that way
+    again = display("\\hat{d}_2 = \\cos{\\phi} \\hat{e}_2 + \\sin{\\phi} \\hat{e}_3")
+    assert verdicts(left_handed + again)[9] == {"fails"}       # but it is the frame the text stated
     no_rotation = TURN.replace("-\\sin{\\phi} \\hat{e}_2", "\\sin{\\phi} \\hat{e}_2")
     assert verdicts(no_rotation)[3] == {"fails"}
 
@@ -174,3 +179,22 @@ def test_a_vector_the_prose_sets_is_read_in_the_displays_after_it():
     claim = "$$\\frac{{}^E d\\bar{v}}{dt} = {}^E\\bar{\\omega}^D \\times v\\hat{d}_1 = {}^E\\bar{\\omega}^D \\times \\bar{v}$$\n"
     assert verdicts(prose + claim)[5] == {"holds"}
     assert verdicts(claim)[3] <= {"unchecked"}          # v̄ never set: not read
+
+
+def _written(m) -> str:
+    return "\\begin{bmatrix} " + " \\\\ ".join(" & ".join(sp.latex(e) for e in m.row(i)) for i in range(3)) + " \\end{bmatrix}"
+
+
+def test_euler_angles_are_the_product_of_the_simple_orientations_the_text_states():
+    psi, theta, phi = sp.symbols("psi theta phi", real=True)
+    turns = [("B", "A", "z", psi), ("C", "B", "x", theta), ("D", "C", "z", phi)]
+    body = "".join(f"$${{}}^{f}\\mathbf{{C}}^{g} = {_written(passive(axis, q))}$$\n\n" for f, g, axis, q in turns)
+    product = passive("z", phi) * passive("x", theta) * passive("z", psi)
+    chain = f"$${{}}^D\\mathbf{{C}}^A = {{}}^D\\mathbf{{C}}^C {{}}^C\\mathbf{{C}}^B {{}}^B\\mathbf{{C}}^A = {_written(product)}$$\n"
+    found = verdicts(body + chain)
+    assert [found[k] for k in (3, 5, 7, 9)] == [{"holds"}] * 4
+    slip = product.copy()
+    slip[0, 2] = -slip[0, 2]
+    assert verdicts(body + f"$${{}}^D\\mathbf{{C}}^A = {_written(slip)}$$\n")[9] == {"fails"}
+    reversed_order = f"$${{}}^D\\mathbf{{C}}^A = {_written(passive('z', psi) * passive('x', theta) * passive('z', phi))}$$\n"
+    assert verdicts(body + reversed_order)[9] == {"fails"}

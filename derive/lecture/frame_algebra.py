@@ -80,6 +80,16 @@ def generic(letter: str) -> sp.Matrix:
     return (sp.eye(3) - K).inv() * (sp.eye(3) + K)
 
 
+def reduced(e):
+    """An entry in its canonical form in the sines and cosines of its angles (cos²θ + sin²θ is 1):
+    the coefficients a frame's unit vectors have in a stated frame's come back as written."""
+    e = sp.expand(e)
+    angles = sorted({a for f in e.atoms(sp.sin, sp.cos) for a in f.args[0].free_symbols}, key=str)
+    if not angles or any(f.args[0] not in angles for f in e.atoms(sp.sin, sp.cos)):
+        return e
+    return trig_reduce(e, angles)
+
+
 def is_zero(d) -> bool | None:
     """True when d is 0 as a polynomial in sines and cosines, False when it is not, None unknown."""
     d = sp.expand(d)

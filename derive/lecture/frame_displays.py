@@ -6,8 +6,8 @@ whose `_frame_display` reads a display every statement of which the frame algebr
 
 * a frame stated by its unit vectors in another's (the three rows ``\hat{a}_i = …``, or the matrix
   form ``[\hat{a}] = [c_{ij}] [\hat{n}]``): a simple orientation (one shared axis, one angle) holds in
-  the right-hand sense and fails in the other, or when its rows are no orthonormal set; it then
-  orients the frame. Entries the text names (``c_{xy}``) are no claim and leave the frame as it
+  the right-hand sense, is left unchecked in the other (the text may measure its angle that way) and
+  fails when its rows are no orthonormal set; unless it fails it then orients the frame. Entries the text names (``c_{xy}``) are no claim and leave the frame as it
   was; ``\cos\alpha_{xy}`` for every entry, one name indexed by the row's and the column's axis
   labels, are the direction cosines, which hold (the frame left as it was). Written again in the angles of the orientation already stated, it is checked against it;
 * any other relation is checked entry by entry (vectors by their components, matrices entry by
@@ -34,7 +34,8 @@ import re
 
 import sympy as sp
 
-from derive.lecture.frame_algebra import AXES, Frames, Vec, Vecs, equal, kind_of, matrix_of, simple_turn, tokens, uses_frames
+from derive.lecture.frame_algebra import (AXES, Frames, Vec, Vecs, equal, kind_of, matrix_of, reduced, simple_turn,
+                                          tokens, uses_frames)
 from derive.lecture.frame_motion import MOVING, Motion, equal_in_motion
 from derive.lecture.vocabulary import NotRead
 
@@ -114,7 +115,7 @@ class FrameDisplays:
             f, g = toks[0][0][2]
             c = members[0][1] * frames.frame(g)
         if c is not None:
-            c = (sp.Matrix(c) * frames.frame(g).T).applyfunc(sp.expand)   # the coefficients the text wrote: ^F C^G
+            c = (sp.Matrix(c) * frames.frame(g).T).applyfunc(reduced)     # the coefficients the text wrote: ^F C^G
             if f not in frames.stated or not c.free_symbols <= frames.angles():
                 self._frame_stated(line, " \\\\ ".join(pieces), f, g, c)
                 return True
@@ -191,12 +192,12 @@ class FrameDisplays:
             axis, q, sense = turn
             about = f"{f} turned from {g} about the shared {axis} axis through {self.tex(q)}"
             verdict, why = {True: ("holds", f"a simple orientation, {about} in the right-hand sense: {name}"),
-                            False: ("fails", f"{about} in the left-hand sense: the sines' signs are those of "
-                                             f"a turn through {self.tex(-q)}"),
+                            False: ("unchecked", f"not checked: {about} in the left-hand sense (a turn through "
+                                                 f"{self.tex(-q)}); the text may measure its angle that way"),
                             None: ("fails", f"{about}: its rows are no orthonormal set")}[sense]
             frames.simple += sense is True
         self._add(line, piece, "frame", verdict, why)
-        if verdict == "holds":
+        if verdict != "fails":                  # the text's own statement of the frame, in whichever sense
             frames.of[f] = c * frames.frame(g)
             frames.stated.add(f)
             frames.stated_in[f] = g
