@@ -198,3 +198,13 @@ def test_euler_angles_are_the_product_of_the_simple_orientations_the_text_states
     assert verdicts(body + f"$${{}}^D\\mathbf{{C}}^A = {_written(slip)}$$\n")[9] == {"fails"}
     reversed_order = f"$${{}}^D\\mathbf{{C}}^A = {_written(passive('z', psi) * passive('x', theta) * passive('z', phi))}$$\n"
     assert verdicts(body + reversed_order)[9] == {"fails"}
+
+
+def test_the_rate_of_a_dcm_times_its_transpose_is_skew_and_gives_the_angular_velocitys_measure_numbers():
+    rate = "\\frac{d{}^D\\mathbf{C}^E}{dt}"
+    skew = f"{rate} \\left({{}}^D\\mathbf{{C}}^E\\right)^T + {{}}^D\\mathbf{{C}}^E \\left({rate}\\right)^T = 0"
+    assert verdicts(display(skew))[3] == {"holds"}
+    assert verdicts(display(skew.replace("^T + {}", "^T - {}")))[3] == {"fails"}
+    measure = "{}^E\\bar{\\omega}^D \\cdot \\hat{d}_1 = \\frac{{}^E d\\hat{d}_2}{dt} \\cdot \\hat{d}_3"
+    assert verdicts(display(measure))[3] == {"holds"}
+    assert verdicts(display(measure.replace("\\cdot \\hat{d}_3", "\\cdot \\hat{d}_1")))[3] == {"fails"}

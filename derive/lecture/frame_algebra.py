@@ -37,6 +37,7 @@ _KINDS = [
     ("dcm", re.compile(_DCM)),
     ("ang", re.compile(_FRAME + r"\s*\\(bar|hat)\s*\{\s*\\(omega|alpha)\s*\}\s*" + _FRAME)),
     ("rate", re.compile(r"\\frac\s*\{\s*" + _FRAME + r"\s*d(?![a-z])((?:[^{}]|\{[^{}]*\})*)\}\s*\{\s*dt\s*\}")),
+    ("ddt", re.compile(r"\\frac\s*\{\s*d(?![a-z])((?:[^{}]|\{[^{}]*\})*)\}\s*\{\s*dt\s*\}")),
     ("env", re.compile(r"\\begin\s*\{\s*[bp]matrix\s*\}")),
     ("func", re.compile(r"\\(?:cos|sin)(?![A-Za-z])")),
     ("greek", re.compile(r"\\(" + "|".join(_GREEK) + r")(?![A-Za-z])")),
@@ -118,6 +119,19 @@ def kind_of(v) -> str:
         "matrix" if isinstance(v, sp.MatrixBase) else "scalar"
 
 
+def one_kind(values) -> bool:
+    """Whether the members are of one kind, a written 0 standing for the zero of any."""
+    return len({kind_of(v) for v in values if not (kind_of(v) == "scalar" and v == 0)}) <= 1
+
+
+def zero_as(v, like):
+    """A written 0 as the zero of ``like``'s kind and shape; any other value as it is."""
+    if kind_of(v) != "scalar" or v != 0 or kind_of(like) == "scalar":
+        return v
+    zeros = sp.zeros(*matrix_of(like).shape)
+    return Vec(zeros) if isinstance(like, Vec) else Vecs(zeros) if isinstance(like, Vecs) else zeros
+
+
 def settled(m: sp.Matrix) -> sp.Matrix:
     """Functions of time and their derivatives as plain symbols (the zero test takes symbols)."""
     rates = {d: sp.Symbol(f"{d.expr.func.__name__}_d{d.derivative_count}", real=True)
@@ -128,6 +142,7 @@ def settled(m: sp.Matrix) -> sp.Matrix:
 
 def equal(a, b) -> bool | None:
     """Whether two values are equal entry by entry (None: not of one kind, or undecided)."""
+    a, b = zero_as(a, b), zero_as(b, a)
     if kind_of(a) != kind_of(b):
         return None
     ma, mb = settled(matrix_of(a)), settled(matrix_of(b))
@@ -207,7 +222,7 @@ class Frames:
             kind, val = self._peek()
             if kind == "op" and val == "\\ldots":
                 value = self._ellipsis(value)
-            elif kind in ("unit", "dcm", "env", "func", "greek", "num", "name", "ang", "rate", "vecname", "dot") \
+            elif kind in ("unit", "dcm", "env", "func", "greek", "num", "name", "ang", "rate", "ddt", "vecname", "dot") \
                     or (kind, val) == ("op", "(") or ((kind, val) == ("op", "|") and not self._bars):
                 value = times(value, self._factor())
             else:

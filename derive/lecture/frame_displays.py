@@ -34,7 +34,7 @@ import re
 
 import sympy as sp
 
-from derive.lecture.frame_algebra import (AXES, Frames, Vec, Vecs, equal, kind_of, matrix_of, reduced, simple_turn,
+from derive.lecture.frame_algebra import (AXES, Frames, Vec, Vecs, equal, matrix_of, one_kind, reduced, simple_turn,
                                           tokens, uses_frames)
 from derive.lecture.frame_motion import MOVING, Motion, equal_in_motion
 from derive.lecture.vocabulary import NotRead
@@ -100,7 +100,7 @@ class FrameDisplays:
         except (NotRead, ArithmeticError, TypeError, ValueError):
             return False
         if any(len(m) < 2 for m in members) or any(not uses_frames(p) for p in pieces) or \
-                any(len({kind_of(v) for v in m}) > 1 for m in members):
+                any(not one_kind(m) for m in members):
             return False             # a hatted letter that is no frame's unit vector (a component n̂₁ = …): read as before
         rows = [s for s in stated if s is not None and len(s[1]) == 1]
         whole = [s for s in stated if s is not None and len(s[1]) == 3]
@@ -159,7 +159,7 @@ class FrameDisplays:
                 read.append((piece, ts[0][1], piece.split("=", 1)[1]))
                 continue
             members = motion.read(piece)
-            if len(members) < 2 or len({kind_of(v) for v in members}) > 1:
+            if len(members) < 2 or not one_kind(members):
                 return False
             read.append((piece, members, list(motion.relations)))
         for piece, members, relations in read:

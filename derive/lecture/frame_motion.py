@@ -3,6 +3,7 @@ r"""Frames in motion in Kane's notation: derivatives seen from a frame, angular 
 Takes: a statement written with ``\frac{{}^A d\hat{b}_x}{dt}`` (the derivative of a vector seen from
 A), ``\frac{{}^A d}{dt} X`` (the same as an operator), ``{}^A\bar{\omega}^B`` and ``{}^A\hat{\omega}^B``
 (B's angular velocity in A and its direction), ``{}^A\bar{\alpha}^B``, ``\left| … \right|``,
+``\frac{d{}^B\mathbf{C}^A}{dt}`` (the rate of a DCM, or of a scalar, entry by entry),
 ``\dot{u}_1`` and the text's own vectors ``\bar{u}`` set equal to a sum of unit vectors (a name is a
 function of time once the text writes its rate, in this display or one before, else a constant). Gives
 `Motion`, the frame algebra of `derive.lecture.frame_algebra` with every frame turning: each frame
@@ -30,12 +31,12 @@ import random
 
 import sympy as sp
 
-from derive.lecture.frame_algebra import Frames, Vec, Vecs, kind_of, matrix_of, settled, tokens
+from derive.lecture.frame_algebra import Frames, Vec, Vecs, kind_of, matrix_of, settled, tokens, zero_as
 from derive.lecture.vocabulary import NotRead
 from derive.symbolic.rotations import passive
 
 t = sp.Symbol("t", real=True)
-MOVING = ("ang", "rate", "vecname", "dot")
+MOVING = ("ang", "rate", "ddt", "vecname", "dot")
 
 
 def moving(text: str) -> bool:
@@ -99,6 +100,12 @@ class Motion(Frames):
             f, inner = extra
             value = self._entry(inner) if inner.strip() else self._factor()
             return self.seen_from(f, value)
+        if kind == "ddt":
+            inner = extra[0]
+            value = self._entry(inner) if inner.strip() else self._factor()
+            if isinstance(value, (Vec, Vecs)):
+                raise NotRead("the rate of a vector with no frame to see it from")
+            return value.diff(t) if isinstance(value, sp.MatrixBase) else sp.diff(value, t)
         if kind == "vecname":
             if val not in self.vectors:
                 raise NotRead(f"the text's vector {val} before it is set")
@@ -139,6 +146,7 @@ def equal_in_motion(a, b) -> bool | None:
     """Whether two values agree at three exact points of the motion: each angle, rate and name put
     at rationals, each angle's sine and cosine at a rational point of the unit circle (exact, so
     a difference that is not 0 there is no rounding); None when they are not of one kind."""
+    a, b = zero_as(a, b), zero_as(b, a)
     if kind_of(a) != kind_of(b):
         return None
     ma, mb = settled(matrix_of(a)), settled(matrix_of(b))
