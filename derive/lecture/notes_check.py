@@ -55,6 +55,7 @@ from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
+from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
@@ -123,7 +124,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -192,6 +193,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
                 self._symmetric(item.line, item.lead)
             elif item.kind == "assumption":
                 self._small_before_ll(item.latex)
+                self._frame_setting(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
@@ -230,7 +232,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
         seen = []
         start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
-        if self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
+        if self._frame_display(item.line, pieces) or self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
                 self._at_setting(item.line, pieces):
             self._close_display()
             return
