@@ -6,6 +6,7 @@ import pytest
 import sympy as sp
 
 from derive.lecture import mp_values
+from derive.lecture import vector_algebra_model as va
 from derive.lecture import zero_test as zt
 from derive.lecture.elliptic import JacobiSN
 
@@ -48,6 +49,17 @@ def test_the_screen_proves_a_slip_with_a_root_non_zero_where_its_radicand_is_pos
     assert not zt.surely_nonzero(root * sp.Abs(a) - 2 * a)
     assert zt._nonzero_somewhere(root * sp.Abs(a) - 2 * a)
     assert zt.symbolic_zero(root * sp.Abs(a) - 2 * a) is None
+
+
+def test_a_vector_difference_with_a_root_shown_non_zero_is_left_expanded_and_an_identity_still_reaches_zero():
+    # the vector reader's difference (a distance |r| = sqrt(x² + y²) in it): simplify only where the
+    # screen cannot show the difference non-zero
+    slip = x * sp.sqrt(x**2 + y**2) - x**2
+    assert zt.nonzero_somewhere(slip)
+    assert va.difference(slip, 0) == zt.expanded(slip)
+    identity = sp.sqrt(x**2 * y**2 + x**2) - x * sp.sqrt(y**2 + 1)
+    assert not zt.nonzero_somewhere(identity) and va.difference(identity, 0) == 0
+    assert not zt.nonzero_somewhere(sp.Matrix([x]))
 
 
 def test_the_screen_never_calls_an_identity_non_zero_and_the_symbolic_steps_still_show_it():

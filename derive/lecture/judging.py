@@ -15,6 +15,8 @@ May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.derivation`, S
 """
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from derive.lecture.comparing import Mismatch, column, edits, quick_equal, zero
@@ -63,8 +65,7 @@ class Judging:
         taylor = {sp.sin(x): sum((-1) ** k * x ** (2 * k + 1) / sp.factorial(2 * k + 1) for k in range(n // 2 + 1)),
                   sp.cos(x): sum((-1) ** k * x ** (2 * k) / sp.factorial(2 * k) for k in range(n // 2 + 1))}
         for a, b in zip(A, B):
-            d = sp.cancel(sp.together((a - b).xreplace(taylor)))
-            d = sp.series(d, x, 0, order).removeO()
+            d = _series_difference(a - b, x, order, tuple(taylor.items()))
             if sp.simplify(d) != 0:
                 return False, f"series in {self.tex(x)} to order {order - 1}: claim − derived = {self.tex(sp.factor(d))}"
         return True, f"series in ${self.tex(x)}$ to order {order - 1}"
@@ -106,3 +107,13 @@ class Judging:
         if parsed.members[0].args and label is None:
             lhs += r"\left(" + ", ".join(self.tex(a) for a in parsed.members[0].args) + r"\right)"
         return f"{lhs} {rel} {self.tex(value)}"
+
+
+@functools.lru_cache(maxsize=256)
+def _series_difference(d, x, order, taylor):
+    """d with sin x, cos x put as their Taylor polynomials ``taylor``, over one denominator, and its
+    series in x to ``order``; kept per difference, which each reading of a text in another sequence
+    of angles (or of a section's cases) expands again."""
+    d = sp.cancel(sp.together(d.xreplace(dict(taylor))))
+    return sp.series(d, x, 0, order).removeO()
+

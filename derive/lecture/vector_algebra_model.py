@@ -247,6 +247,21 @@ def torque(system: str) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix([zt.expanded_derivative(zt.expanded(L[i]), field=motion) for i in range(3)])
 
 
+@functools.lru_cache(maxsize=None)
+def _point_motion(point) -> dict:
+    """The velocity 𝛚 × 𝐫 of the model's point (None: the single point, else the body's point k)
+    and its acceleration 𝛂 × 𝐫 + 𝛚 × (𝛚 × 𝐫), with the tangential and normal parts, derived
+    once: every occurrence of 𝐯ᵢ or 𝐚ᵢ in a statement, and every reading of it, asks again."""
+    r = R0 if point is None else RK[point]
+    tangential, normal = WD.cross(r), W.cross(W.cross(r))
+    return {"v": W.cross(r), "at": tangential, "an": normal, "a": tangential + normal}
+
+
+def _moved(env, kind) -> sp.Matrix:
+    """A copy of `_point_motion`'s ``kind`` for the point ``env`` is at (a reading may change it)."""
+    return _point_motion(env.get("point"))[kind].copy()
+
+
 def _momentum(system: str) -> sp.Matrix:
     if system == "single":
         return M0 * R0.cross(W.cross(R0))
@@ -280,9 +295,13 @@ def difference(a, b):
     return _zeroed(a - b)
 
 
+@functools.lru_cache(maxsize=4096)
 def _zeroed(d):
+    """d expanded, and simplified where it holds a root or another power that is no integer,
+    unless it is shown non-zero at a point (no identity makes it 0 then). Kept per expression: a statement read again (under another reading of its names, or edited
+    to find the correction) compares the same differences."""
     d = zt.expanded(d)
-    if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)):
+    if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)) and not zt.nonzero_somewhere(d):
         d = sp.simplify(d)          # |𝛚| and 𝛚̂: a polynomial's expansion is already canonical
     return d
 
@@ -388,23 +407,22 @@ class Algebra:
         if base == "m" and not bold and self._own(sub, env):
             return mass
         if base == "v" and self._own(sub, env):
-            v = W.cross(r)
+            v = _moved(env, "v")
             return v if bold else sp.sqrt(v.dot(v))
         if base == "v" and not bold and sub in ("x", "y", "z"):
-            return W.cross(r)[AXES[sub]]
+            return _moved(env, "v")[AXES[sub]]
         if bold and point_labels.labels(sub) is not None:
             value = point_labels.value(base, sub, a.sup, W, WD)
             if value is not None:
                 return value                 # 𝐯_B, 𝐫_{AB}, 𝐚_{BA}^t: points of the body named by letters
         if base == "a" and bold and sub and self._own(sub, env) and a.sup in ("", "t", "n", "tau"):
             p.rated = True                   # 𝐚ᵢ: the point's acceleration; ᵗ, ⁿ its tangential and normal parts
-            parts = {"t": WD.cross(r), "tau": WD.cross(r), "n": W.cross(W.cross(r))}
-            return parts.get(a.sup, WD.cross(r) + W.cross(W.cross(r)))
+            return _moved(env, {"t": "at", "tau": "at", "n": "an"}.get(a.sup, "a"))
         if base == "p" and bold and self._own(sub, env):
-            return mass * W.cross(r)
+            return mass * _moved(env, "v")
         if base == "F" and bold and sub and sub == env.get("index"):
             p.rated = True                   # 𝐅ᵢ summed over the points: the rate of the point's momentum
-            return mass * rate(W.cross(r))
+            return mass * rate(_moved(env, "v"))
         if base == "delta" and len(sub) == 2:
             return sp.Integer(int(p.axis(sub[0], env, tok) == p.axis(sub[1], env, tok)))
         return self._system_atom(p, a, env, tok, mass, r, bold)

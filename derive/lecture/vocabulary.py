@@ -3,7 +3,8 @@ into atoms and tokens, and `Vocabulary`, which looks each atom up among the deri
 quantities and their usual spellings (or, open to the text's own names, makes it a `Generic`
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
-May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`, SymPy.
+May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`,
+:mod:`derive.lecture.matrix_exp`, SymPy.
 """
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ import sympy as sp
 
 from derive.lecture import elliptic
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
+from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
 from derive.symbolic.lagrangian import ACCELS
@@ -123,6 +125,8 @@ class CrossMatrix(sp.Function):
     """[v]ₓ, the cross-product (skew) matrix of a column v: [v]ₓ w = v × w. Evaluated once v is a
     3-column (a text's symbols are substituted first); a product's factor v·s moves out."""
 
+    becomes_matrix = True
+
     @classmethod
     def eval(cls, v):
         if isinstance(v, sp.MatrixBase) and v.shape == (3, 1):
@@ -142,9 +146,15 @@ class CrossMatrix(sp.Function):
         return None
 
 
+def _exp(arg):
+    """The text's exp: of an argument that may become a matrix (a cross-product matrix or a name of
+    the text's that does not commute), `MatrixExp`, which takes a skew matrix's by Rodrigues' formula."""
+    return MatrixExp(arg) if may_be_matrix(arg) else sp.exp(arg)
+
+
 FUNCTIONS = {"crossmatrix": CrossMatrix, "sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "cot": sp.cot, "sec": sp.sec, "csc": sp.csc,
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
-             "exp": sp.exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
+             "exp": _exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
              **elliptic.functions(Generic)}
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
              "ll": "≪", "gg": "≫",

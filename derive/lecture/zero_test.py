@@ -211,6 +211,12 @@ _SCREEN_POINTS = 8
 _SCREEN_FUNCTIONS = {**_IV_FUNCTIONS, sp.Abs: abs}
 
 
+def nonzero_somewhere(d) -> bool:
+    """Whether d ≢ 0 is proved at one of a few seeded points (`_nonzero_somewhere`): then no
+    identity (``simplify``, ``trig_reduce``) can turn d into 0, and a caller may leave it as it is."""
+    return isinstance(d, sp.Expr) and _nonzero_somewhere(d)
+
+
 @functools.lru_cache(maxsize=8192)
 def _nonzero_somewhere(d: sp.Expr) -> bool:
     """Whether interval arithmetic (as in `surely_nonzero`, |x| read too) proves d ≠ 0 at one of a
