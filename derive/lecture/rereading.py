@@ -176,7 +176,7 @@ class Rereading:
             if not any(c.verdict in ("typo", "fails") for c in second):
                 bindings = self._learned_bindings(piece)
                 # the edit is sought now, in the reading's own state, and only where a sibling may confirm
-                edit = self._one_edit(saved, line, piece, pieces) if bindings and any(
+                edit = self._one_edit(saved, line, piece, pieces) if self.corrections and bindings and any(
                     c.verdict == "fails" and c.correction is None for c in first) and any(
                     p != piece and bindings <= self._learned_bindings(p) for p in pieces) else None
                 for c in first:
