@@ -71,3 +71,39 @@ def test_a_slip_that_holds_in_another_sequence_reads_again_the_displays_that_hel
     assert ("z-x-z", None) not in checker.reading.open
     out = _verdicts(text)
     assert out[3][0] == "holds" and out[7][0] == "typo" and "convention" not in out[7][1]
+
+
+# z-y-z's body rates in α, β, γ, the names the z-y-z reading takes for a text that names none, after
+# a phase φ (no Euler angle), then a slip in T (a cube for a square)
+ZYZ_ALPHA_THEN_SLIP = (
+    "# Body rates\n\nA free spin turns with a phase $\\varphi$, no Euler angle.\n\n"
+    "$$\n\\omega_1 = -\\dot\\alpha \\sin\\beta \\cos\\gamma + \\dot\\beta \\sin\\gamma\n$$\n\n"
+    "$$\n\\omega_2 = \\dot\\alpha \\sin\\beta \\sin\\gamma + \\dot\\beta \\cos\\gamma\n$$\n\n"
+    "$$\n\\omega_3 = \\dot\\alpha \\cos\\beta + \\dot\\gamma\n$$\n\n"
+    "The kinetic energy of the symmetric top:\n\n"
+    "$$\nT = \\frac{1}{2} I_1 (\\dot\\beta^2 + \\dot\\alpha^2 \\sin^2\\beta) + \\frac{1}{2} I_3 (\\dot\\gamma + \\dot\\alpha \\cos\\beta)^3\n$$\n")
+
+
+def test_body_rates_in_alpha_beta_gamma_show_z_y_z_and_a_later_slip_is_not_read_again():
+    # the other sequences read α, β, γ as z-y-z reads them (first, second, third turn): ω₁, ω₂ of
+    # z-y-z are flagged in each, which rules it out before the slip in T is read again anywhere
+    checker = nc.Checker(nt.parse_notes(ZYZ_ALPHA_THEN_SLIP))
+    claims = checker.run()
+    slip = max(c.line for c in claims)
+    assert checker.reading.probes.get(slip) == {} and checker.reading.open == [] and checker.reading.done
+    out = _verdicts(ZYZ_ALPHA_THEN_SLIP)
+    assert out[slip][0] in ("typo", "fails") and "convention" not in out[slip][1]
+    assert out[5][0] == out[9][0] == out[13][0] == "holds"
+
+
+ZXZ_ALPHA_RATES = ("# Body rates\n\n"
+                   "$$\n\\omega_1 = \\dot\\alpha \\sin\\beta \\sin\\gamma + \\dot\\beta \\cos\\gamma\n$$\n\n"
+                   "$$\n\\omega_2 = \\dot\\alpha \\sin\\beta \\cos\\gamma - \\dot\\beta \\sin\\gamma\n$$\n\n"
+                   "$$\n\\omega_3 = \\dot\\alpha \\cos\\beta + \\dot\\gamma\n$$\n")
+
+
+def test_z_x_z_body_rates_in_alpha_beta_gamma_hold_and_name_the_sequence_read():
+    # read again in z-x-z, α, β, γ are its first, second and third turns, as in the probe
+    out = _verdicts(ZXZ_ALPHA_RATES)
+    assert [v for v, _ in out.values()] == ["holds"] * 3
+    assert "reads the text's convention as z-x-z from line 3" in out[3][1]

@@ -20,9 +20,14 @@ just before it (`ConventionProbe`), until the text has shown its convention:
 
 A formula without the angles that holds (Euler's equations in ω) reads alike in every sequence and
 rules out none. For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as
-ψ, θ, φ (aerospace texts name the yaw ψ), unless the text names them. A display is tried only once
-the text has named an angle (in its math, up to the display's line: φ, θ, ψ, χ or the angles it
-names itself): before that no formula of it ties the angles to anything.
+ψ, θ, φ (aerospace texts name the yaw ψ), unless the text names them. A text that names none is read
+in z-y-z with α, β, γ (and φ, θ, ψ) as its angles; one that writes its angles so (the rates of α,
+β, γ and of none of φ, θ, ψ) is read so in every other sequence too, α, β, γ its first, second and
+third angles: a display differs between two readings by the sequence only, and z-y-z's body rates
+in α, β, γ rule the others out. A display is tried only once the text has named an angle (in its
+math, up to the display's line: φ, θ, ψ, χ or the angles it names itself, α, β, γ when it writes
+them so): before that no formula of it ties the angles to anything. A display read again seeks no
+correction (typo and fails alike are flagged there).
 
 May import: the standard library (`copy`, `re`), SymPy, :mod:`derive.lecture.notes`, :mod:`derive.symbolic`.
 """
@@ -67,12 +72,22 @@ def _candidates(notes) -> list:
 
 
 _USUAL = r"\\(?:var)?(?:phi|theta|psi)|\\chi"
+_RATE = r"\\d?dot\s*\{?\s*\\(?:%s)(?![A-Za-z])"
+_ZYZ_RATES, _USUAL_RATES = re.compile(_RATE % "alpha|beta|gamma"), re.compile(_RATE % "(?:var)?(?:phi|theta|psi)")
+
+
+def _z_y_z_names(notes) -> bool:
+    """Does a text that names no angles write them as the z-y-z reading names them, α, β, γ: the
+    rate of one of them and of none of φ, θ, ψ (a text differentiates its angles; α is often an
+    angular acceleration, a φ a phase)?"""
+    return not ("angles" in notes.declared or notes.angles_stated) and \
+        _ZYZ_RATES.search(notes.body) is not None and _USUAL_RATES.search(notes.body) is None
 
 
 def _angle(notes) -> re.Pattern:
-    """An angle's name: `_USUAL`, or the text's own."""
+    """An angle's name: `_USUAL`, or the reading's: the text's own, or α, β, γ (`_z_y_z_names`)."""
     own = [re.escape("\\" + a.split("_")[0]) for a in notes.angles] if (
-        "angles" in notes.declared or notes.angles_stated) else []
+        "angles" in notes.declared or notes.angles_stated or _z_y_z_names(notes)) else []
     return re.compile(r"(?:" + "|".join([_USUAL, *own]) + r")(?![A-Za-z])")
 
 
@@ -125,9 +140,10 @@ class _Reading:
 
 def _snapshot(checker):
     """A copy of the checker to read a display again from; SymPy's expressions are immutable, so
-    the copy shares them (and the derivations, and the claims already made, which a display read
-    again only adds to) instead of building them again."""
-    memo = {id(x): x for x in [*checker.derivations, *checker.claims]}
+    the copy shares them (and the derivations, the claims already made, which a display read again
+    only adds to, and the text's items, frozen, in a list the reader never changes) instead of
+    building them again."""
+    memo = {id(x): x for x in [*checker.derivations, *checker.claims, checker.notes.items]}
     sp.Basic.__deepcopy__ = lambda expr, memo: expr
     try:
         return copy.deepcopy(checker, memo)
@@ -181,12 +197,14 @@ class ConventionProbe:
 
     def probes_read(self) -> dict:
         """The lines probed, once the text is read: a candidate a flagged display holds in is read
-        again in the displays of the angles that held as read after it too."""
+        again in the displays of the angles that held as read after it too (one that holds only
+        where the text holds as read can neither set the convention nor leave a slip unjudged)."""
         reading = self.__dict__.get("reading")
         if reading is None:
             return {}
+        held = {line for line, (_, holds) in _lines(self.claims).items() if holds}
         for cand in list(reading.open):
-            if any(said.get(cand, (False, False))[1] for said in reading.probes.values()) \
+            if any(said.get(cand, (False, False))[1] for line, said in reading.probes.items() if line not in held) \
                     and self._ruled_out_by_shown(cand):
                 reading.open.remove(cand)
         return reading.probes
@@ -196,8 +214,11 @@ class ConventionProbe:
         seq, names = cand
         reading = self.reading
         trial = _snapshot(saved)
+        trial.corrections, trial.judging_only = False, True     # flagged or not is all a probe asks
         if names and not ("angles" in self.notes.declared or self.notes.angles_stated):
             _first_and_third_swapped(trial)     # what was read with φ first, read with ψ first
+        if _z_y_z_names(self.notes):
+            trial.notes.aliases = tuple(self.notes.angles)      # α, β, γ read as z-y-z reads them
         trial._stated_convention(nt.Item("convention", item.line, text=seq,
                                          symbols=names or nt.DEFAULT_ANGLES[seq]), reading.derived.get(seq))
         if seq not in reading.derived:
@@ -228,6 +249,8 @@ def inferred(notes, parse, check) -> list:
             continue
         chosen = holding[0]
         again = parse(chosen[0])
+        if _z_y_z_names(notes):
+            again.aliases = tuple(notes.angles)
         if chosen[1]:
             again.angles, again.angles_stated = tuple(chosen[1]), True
         reading = check(again)[0]

@@ -108,6 +108,9 @@ class Notes:
     """The convention is given (``--convention``, the front matter) or stated by the text itself."""
     body: str = ""
     """The rendered text (prose and math), for readings that need what the prose says."""
+    aliases: tuple | None = None
+    """Other names of the angles, when the text is read again in a sequence it states nothing of:
+    the names the z-y-z reading took (`angle_aliases` otherwise)."""
 
 
 def _symbols(value: str, path: str) -> dict:
@@ -415,7 +418,9 @@ def read_notes(path, convention: str | None = None) -> Notes:
 def angle_aliases(notes) -> tuple:
     """Other names of the angles: the usual φ, θ, ψ when the text declares none; when it declares
     them with a subscript (``\\psi_{\\beta\\alpha}``), their bare letters, which texts write once
-    the frames are clear (none if two angles share a letter)."""
+    the frames are clear (none if two angles share a letter); those set in ``notes.aliases``."""
+    if notes.aliases is not None:
+        return notes.aliases
     if "angles" not in notes.declared and not notes.angles_stated:
         return DEFAULT_ANGLES["z-x-z"]
     bases = tuple(a.split("_")[0] for a in notes.angles)

@@ -439,12 +439,13 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
         rates = has_rates(values, rot)
         cyc = any(free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
         for v in values:
-            rep = dict(self.d.frames) if free(v) & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
-            if rates:
+            syms = free(v)      # only what v holds is derived: a sequence read again derives no heavy top for ω̃
+            rep = dict(self.d.frames) if syms & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
+            if rates and syms & set(lx.W):
                 rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
-            if cyc:
-                rep[lx.p_alpha_sym()] = self.d.forms(lx.p_alpha_sym())[0]
-                rep[lx.p_gamma_sym()] = self.d.forms(lx.p_gamma_sym())[0]
+            for p in (lx.p_alpha_sym(), lx.p_gamma_sym()) if cyc else ():
+                if p in syms:
+                    rep[p] = self.d.forms(p)[0]
             out.append(v.xreplace(rep) if rep else v)
         return out
 
