@@ -546,7 +546,7 @@ def test_the_reduced_potential_on_a_frictionless_plane_is_the_pivoted_tops_form_
 def test_a_round_peg_with_little_friction_sticks_and_slips_each_nutation_keeping_jellett():
     d = read_example("round_peg_top")
     d["contact"]["mu"] = 0.1
-    r = run_scene(d, t_end=0.8, samples=801)
+    r = run_scene(d, t_end=0.62, samples=621)  # three nutations: sticks from 0.38 s, one each 0.07 s
     events = [s.event for s in r.switches]
     assert events.count("slip") >= 3 and events.count("stick") >= 4
     assert len(r.switches) < 60  # the cycles, not a cascade

@@ -190,13 +190,16 @@ def encode_gif(fh, picture, n: int, fps: int, keep=()) -> None:
     from PIL import Image
 
     picks = np.unique(np.linspace(0, n - 1, min(6, n)).round().astype(int))
-    strip = np.vstack([picture(int(k)) for k in picks])
+    # the picked frames are kept for the encoding below: each frame is drawn once
+    drawn = {int(k): picture(int(k)) for k in picks}
+    strip = np.vstack(list(drawn.values()))
     if len(keep):
         width = strip.shape[1]
         swatches = np.repeat(np.asarray(keep, dtype=strip.dtype)[:, None, :], width, axis=1)
         strip = np.vstack([strip, np.repeat(swatches, strip.shape[0] // (4 * len(keep)) + 1, axis=0)])
     pal = Image.fromarray(strip).quantize(GIF_COLORS, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-    images = (Image.fromarray(picture(k)).quantize(palette=pal, dither=Image.Dither.NONE) for k in range(n))
+    images = (Image.fromarray(drawn.pop(k) if k in drawn else picture(k)).quantize(palette=pal, dither=Image.Dither.NONE)
+              for k in range(n))
     first = next(images)
     first.save(fh, format="GIF", save_all=True, append_images=images, loop=0,
                duration=1000 / fps, disposal=1)
