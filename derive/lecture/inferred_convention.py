@@ -19,7 +19,8 @@ just before it (`ConventionProbe`), until the text has shown its convention:
   convention.
 
 A formula without the angles that holds (Euler's equations in ω) reads alike in every sequence and
-rules out none. For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as
+rules out none; so does a display read in the text's own frames (Kane's hatted unit vectors and
+direction cosine matrices, `derive.lecture.frame_displays`), which is neither probed nor evidence. For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as
 ψ, θ, φ (aerospace texts name the yaw ψ), unless the text names them. A text that names none is read
 in z-y-z with α, β, γ (and φ, θ, ψ) as its angles; one that writes its angles so (the rates of α,
 β, γ and of none of φ, θ, ψ) is read so in every other sequence too, α, β, γ its first, second and
@@ -151,6 +152,10 @@ def _snapshot(checker):
         del sp.Basic.__deepcopy__
 
 
+SEQUENCE_FREE = frozenset({"frame"})
+"""Kinds of claim read without the Euler angles' sequence (the text's own frames and their turns)."""
+
+
 class ConventionProbe:
     """Mixin of the checker, for a text that states no convention: a display flagged as read is read
     again in each sequence not yet ruled out, from the checker's state just before it (`probes`),
@@ -169,6 +174,8 @@ class ConventionProbe:
         start = len(self.claims)
         self._display(item, latex)
         flagged, holds = _lines(self.claims[start:]).get(item.line, (False, False))
+        if self.claims[start:] and all(c.kind in SEQUENCE_FREE for c in self.claims[start:]):
+            return      # read in the text's own frames (Kane's notation): alike in every sequence
         if not (flagged or named and holds):
             return      # a formula without the angles that holds (Euler's equations in ω) reads alike in all
         if holds:

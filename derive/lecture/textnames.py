@@ -38,7 +38,7 @@ from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.lecture.unread_members import UnreadMembers
 from derive.lecture.sparse_forms import free_symbols
-from derive.lecture.zero_test import expanded, surely_nonzero
+from derive.lecture.zero_test import expanded, surely_nonzero, entry_zero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -397,30 +397,24 @@ class TextNames(UnreadMembers):
         else:
             return self._rate_matrix(line, piece, m)
         named = {what: target.xreplace(at) for what, target in named.items()}
-
-        def zero(d):      # polynomials in sin and cos: their canonical form (never simplify's search)
-            d = sp.sympify(d)
-            return abs(sp.N(d, 30)) < 1e-25 if d.is_number else rot.trig_reduce(d) == 0
-
-        for what, target in named.items():
-            if all(zero(x - y) for x, y in zip(m, target)):
+        offs = {what: [k for k in range(9) if not entry_zero(m[k] - target[k])] for what, target in named.items()}
+        for what, off in offs.items():
+            if not off:
                 self._add(line, piece, "rotation", "holds", f"{what}")
                 return True
-        for what, target in named.items():         # one entry off: a typo of that matrix
-            off = [k for k in range(9) if not zero(m[k] - target[k])]
-            if len(off) == 1 and zero(m[off[0]] + target[off[0]]):
+        for what, off in offs.items():         # one entry off: a typo of that matrix
+            if len(off) == 1 and entry_zero(m[off[0]] + named[what][off[0]]):
                 row, col = divmod(off[0], 3)
                 self._add(line, piece, "rotation", "typo",
                           f"{what} but for the sign of the entry in row {row + 1}, column {col + 1}",
-                          self.tex(target))
+                          self.tex(named[what]))
                 return True
-        for what, target in named.items():         # a name that says its turn: any one entry off is a typo
-            off = [k for k in range(9) if not zero(m[k] - target[k])]
+        for what, off in offs.items():         # a name that says its turn: any one entry off is a typo
             if label is not None and f"about {label[0]} " in what and len(off) == 1:
                 row, col = divmod(off[0], 3)
                 self._add(line, piece, "rotation", "typo",
                           f"named {what}, which it is but for the entry in row {row + 1}, column {col + 1}",
-                          self.tex(target))
+                          self.tex(named[what]))
                 return True
         return False
 

@@ -471,3 +471,14 @@ def _numeric(lhs, rhs, seed, points) -> tuple[Outcome, bool]:
                                            f"{mpmath.nstr(abs(a - b), 3)} at a sample point"), True
     how = f"mpmath {DIGITS} digits" if transcendental else "exact rational"
     return Outcome(used > 0, f"{how} at {used} points"), False
+
+
+@functools.lru_cache(maxsize=4096)
+def entry_zero(d) -> bool:
+    """Whether a difference of turn matrices' entries is zero (a number to 30 digits, else by its
+    normal form in sin and cos); kept, as the same entries recur in every sequence a text is read in."""
+    d = sp.sympify(d)
+    if d.is_number:
+        return abs(sp.N(d, 30)) < 1e-25
+    ring = trig_zero(d, rotations.ANGLES)
+    return rotations.trig_reduce(d) == 0 if ring is None else ring
