@@ -140,15 +140,22 @@ def settled(m: sp.Matrix) -> sp.Matrix:
     return m.xreplace({f: sp.Symbol(f.func.__name__, real=True) for f in m.atoms(sp.core.function.AppliedUndef)})
 
 
-def equal(a, b) -> bool | None:
-    """Whether two values are equal entry by entry (None: not of one kind, or undecided)."""
+def matrices(a, b):
+    """Two values of one kind as matrices of one shape (a written 0 taken as the other's zero), or
+    None when they are not of one kind."""
     a, b = zero_as(a, b), zero_as(b, a)
     if kind_of(a) != kind_of(b):
         return None
     ma, mb = settled(matrix_of(a)), settled(matrix_of(b))
-    if ma.shape != mb.shape:
+    return None if ma.shape != mb.shape else (ma, mb)
+
+
+def equal(a, b) -> bool | None:
+    """Whether two values are equal entry by entry (None: not of one kind, or undecided)."""
+    both = matrices(a, b)
+    if both is None:
         return None
-    found = [is_zero(x - y) for x, y in zip(ma, mb)]
+    found = [is_zero(x - y) for x, y in zip(*both)]
     return None if None in found else all(found)
 
 

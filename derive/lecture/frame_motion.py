@@ -31,7 +31,7 @@ import random
 
 import sympy as sp
 
-from derive.lecture.frame_algebra import Frames, Vec, Vecs, kind_of, matrix_of, settled, tokens, zero_as
+from derive.lecture.frame_algebra import Frames, Vec, Vecs, matrices, tokens
 from derive.lecture.vocabulary import NotRead
 from derive.symbolic.rotations import passive
 
@@ -146,13 +146,10 @@ def equal_in_motion(a, b) -> bool | None:
     """Whether two values agree at three exact points of the motion: each angle, rate and name put
     at rationals, each angle's sine and cosine at a rational point of the unit circle (exact, so
     a difference that is not 0 there is no rounding); None when they are not of one kind."""
-    a, b = zero_as(a, b), zero_as(b, a)
-    if kind_of(a) != kind_of(b):
+    both = matrices(a, b)
+    if both is None:
         return None
-    ma, mb = settled(matrix_of(a)), settled(matrix_of(b))
-    if ma.shape != mb.shape:
-        return None
-    d = ma - mb
+    d = both[0] - both[1]
     symbols = sorted(d.free_symbols, key=str)
     angles = {f.args[0] for f in d.atoms(sp.sin, sp.cos)}
     if any(not isinstance(x, sp.Symbol) for x in angles):

@@ -7,6 +7,7 @@ holds only its derivation; it reads no part of the reader (nothing from ``derive
 """
 from __future__ import annotations
 
+import json
 import pathlib
 import tomllib
 
@@ -35,3 +36,22 @@ def zero(expr) -> bool:
     """``expr`` (a scalar or a matrix) simplifies to zero."""
     m = expr if hasattr(expr, "shape") else sp.Matrix([expr])
     return sp.simplify(m) == sp.zeros(*m.shape)
+
+
+def notebook_display_lines(path) -> list:
+    """The notebook file's line of each display's first row: a piece of a cell's source opening
+    ``$$``, ``align`` or ``gather`` (its cells in order)."""
+    text = pathlib.Path(path).read_text()
+    lines, offset, inside = [], 0, None
+    for cell in json.loads(text)['cells']:
+        for piece in cell['source']:
+            at = text.find(json.dumps(piece, ensure_ascii=False), offset)
+            offset = at + 1
+            st = piece.strip()
+            if inside is None and (st.startswith('$$') or st.startswith('\\begin{align') or st.startswith('\\begin{gather')):
+                lines.append(text.count('\n', 0, at) + 1)
+                closed = st.startswith('$$') and st.count('$$') >= 2
+                inside = None if closed else ('$$' if st.startswith('$$') else '\\end{')
+            elif inside is not None and inside in st:
+                inside = None
+    return lines

@@ -10,7 +10,6 @@ Omega = phidot e_Z + thetadot e_N + psidot e_z. Every check is built here from t
 A display's line is the notebook file's line of its first row.
 """
 import sys
-import json
 import pathlib
 import sympy as sp
 
@@ -167,25 +166,7 @@ KEYS = [49, 55, 60, 64, 70, 76, 80, 84, 90, 107, 113, 117, 121, 126, 140, 146, 1
         207, 211, 225, 229, 231, 233, 237, 239, 243, 245, 247]
 
 
-def display_lines(path):
-    """The notebook file's line of each display's first row (its Markdown cells, in order)."""
-    text = pathlib.Path(path).read_text()
-    lines, offset, inside = [], 0, None
-    for cell in json.loads(text)['cells']:
-        for piece in cell['source']:
-            at = text.find(json.dumps(piece, ensure_ascii=False), offset)
-            offset = at + 1
-            st = piece.strip()
-            if inside is None and (st.startswith('$$') or st.startswith('\\begin{align') or st.startswith('\\begin{gather')):
-                lines.append(text.count('\n', 0, at) + 1)
-                closed = st.startswith('$$') and st.count('$$') >= 2
-                inside = None if closed else ('$$' if st.startswith('$$') else '\\end{')
-            elif inside is not None and inside in st:
-                inside = None
-    return lines
-
-
 if __name__ == "__main__":
     here = pathlib.Path(__file__)
-    assert display_lines(here.with_name('verga-polytech-euler-angles-body-angular-velocity-fr-zxz.ipynb')) == KEYS
+    assert truth_table.notebook_display_lines(here.with_name('verga-polytech-euler-angles-body-angular-velocity-fr-zxz.ipynb')) == KEYS
     sys.exit(truth_table.compare(__file__, CHECKS, KEYS))

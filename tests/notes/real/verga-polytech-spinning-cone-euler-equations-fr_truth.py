@@ -11,7 +11,6 @@ Every check is built here from these definitions. A display's line is the notebo
 its first row.
 """
 import sys
-import json
 import pathlib
 import random
 import sympy as sp
@@ -149,25 +148,7 @@ check(164, z0(sl[q[2].diff(t)] + w))
 KEYS = [47, 49, 53, 55, 58, 61, 67, 80, 82, 103, 107, 120, 122, 125, 128, 131, 133, 137, 158, 160, 162, 164]
 
 
-def display_lines(path):
-    """The notebook file's line of each display's first row (its Markdown cells, in order)."""
-    text = pathlib.Path(path).read_text()
-    lines, offset, inside = [], 0, None
-    for cell in json.loads(text)['cells']:
-        for piece in cell['source']:
-            at = text.find(json.dumps(piece, ensure_ascii=False), offset)
-            offset = at + 1
-            s = piece.strip()
-            if inside is None and (s.startswith('$$') or s.startswith('\\begin{align') or s.startswith('\\begin{gather')):
-                lines.append(text.count('\n', 0, at) + 1)
-                closed = s.startswith('$$') and s.count('$$') >= 2
-                inside = None if closed else ('$$' if s.startswith('$$') else '\\end{')
-            elif inside is not None and inside in s:
-                inside = None
-    return lines
-
-
 if __name__ == "__main__":
     here = pathlib.Path(__file__)
-    assert display_lines(here.with_name('verga-polytech-spinning-cone-euler-equations-fr.ipynb')) == KEYS
+    assert truth_table.notebook_display_lines(here.with_name('verga-polytech-spinning-cone-euler-equations-fr.ipynb')) == KEYS
     sys.exit(truth_table.compare(__file__, CHECKS, KEYS))
