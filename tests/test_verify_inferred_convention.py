@@ -107,3 +107,17 @@ def test_z_x_z_body_rates_in_alpha_beta_gamma_hold_and_name_the_sequence_read():
     out = _verdicts(ZXZ_ALPHA_RATES)
     assert [v for v, _ in out.values()] == ["holds"] * 3
     assert "reads the text's convention as z-x-z from line 3" in out[3][1]
+
+
+def test_a_display_read_in_the_texts_own_frames_is_neither_probed_nor_evidence():
+    # Kane's unit vectors turned by φ, then a frame relation that fails: both read alike in every
+    # sequence (the frames are the text's own), so neither is read again in another one
+    text = ("Frames $E$ and $D$ with right-handed unit vectors.\n\n$$\n\\hat{d}_1 = \\hat{e}_1 \\\\\n"
+            "\\hat{d}_2 = \\cos{\\phi} \\hat{e}_2 + \\sin{\\phi} \\hat{e}_3 \\\\\n"
+            "\\hat{d}_3 = -\\sin{\\phi} \\hat{e}_2 + \\cos{\\phi} \\hat{e}_3\n$$\n\n"
+            "$$\n\\hat{d}_2 = \\cos{\\phi} \\hat{e}_2 - \\sin{\\phi} \\hat{e}_3\n$$\n")
+    checker = nc.Checker(nt.parse_notes(text))
+    claims = checker.run()
+    assert {c.kind for c in claims} == {"frame"}
+    assert [(c.line, c.verdict) for c in claims] == [(3, "holds"), (9, "fails")]
+    assert checker.reading.probes == {} and checker.reading.shown == []
