@@ -20,8 +20,9 @@ just before it (`ConventionProbe`), until the text has shown its convention:
 
 A formula without the angles that holds (Euler's equations in ω) reads alike in every sequence and
 rules out none; so does a display read in the text's own frames (Kane's hatted unit vectors and
-direction cosine matrices, `derive.lecture.frame_displays`), which is neither probed nor evidence. For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as
-ψ, θ, φ (aerospace texts name the yaw ψ), unless the text names them. A text that names none is read
+direction cosine matrices, `derive.lecture.frame_displays`), which is neither probed nor evidence.
+For a Tait–Bryan sequence (yaw, pitch, roll) the angles are tried as φ, θ, ψ and as ψ, θ, φ
+(aerospace texts name the yaw ψ), unless the text names them. A text that names none is read
 in z-y-z with α, β, γ (and φ, θ, ψ) as its angles; one that writes its angles so (the rates of α,
 β, γ and of none of φ, θ, ψ) is read so in every other sequence too, α, β, γ its first, second and
 third angles: a display differs between two readings by the sequence only, and z-y-z's body rates
@@ -221,7 +222,7 @@ class ConventionProbe:
         seq, names = cand
         reading = self.reading
         trial = _snapshot(saved)
-        trial.corrections, trial.judging_only = False, True     # flagged or not is all a probe asks
+        trial.judging_only = True       # flagged or not is all a probe asks: no correction is sought
         if names and not ("angles" in self.notes.declared or self.notes.angles_stated):
             _first_and_third_swapped(trial)     # what was read with φ first, read with ψ first
         if _z_y_z_names(self.notes):

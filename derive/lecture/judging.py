@@ -116,4 +116,3 @@ def _series_difference(d, x, order, taylor):
     of angles (or of a section's cases) expands again."""
     d = sp.cancel(sp.together(d.xreplace(dict(taylor))))
     return sp.series(d, x, 0, order).removeO()
-

@@ -127,10 +127,9 @@ class Rereading:
     ``self.vocab``, ``self.notes`` and ``self._statement``."""
 
     judging_only = False
-    """Verdicts without the search for a correction (while a correction's candidates are read)."""
-    corrections = True
-    """A flagged statement's correction is sought: off in a reader whose verdicts count only as
-    flagged or not (a display read again in another sequence), `judging_only` throughout."""
+    """Verdicts without the search for a correction (while a correction's candidates are read, and
+    throughout a reader whose verdicts count only as flagged or not: a display read again in another
+    sequence); a reading that sets it puts back the value it found."""
 
     def _read_once_or_twice(self, line, piece, dup, pieces):
         """The statement as read; if that flags it, the second readings of its names are tried:
@@ -141,11 +140,12 @@ class Rereading:
         readings = list(_second_readings(piece))
         # with a second reading in view, the statement is judged before its correction is sought:
         # where the second reading holds, the correction would be thrown away
-        self.judging_only = bool(readings) or not self.corrections
+        judging = self.judging_only
+        self.judging_only = judging or bool(readings)
         try:
             self._statement_read(line, piece, dup, pieces)
         finally:
-            self.judging_only = not self.corrections
+            self.judging_only = judging
         first = self.claims[before:]
         if not any(c.verdict in ("typo", "fails") for c in first):
             self._under_symmetry(saved, line, piece, pieces, first)
@@ -176,7 +176,7 @@ class Rereading:
             if not any(c.verdict in ("typo", "fails") for c in second):
                 bindings = self._learned_bindings(piece)
                 # the edit is sought now, in the reading's own state, and only where a sibling may confirm
-                edit = self._one_edit(saved, line, piece, pieces) if self.corrections and bindings and any(
+                edit = self._one_edit(saved, line, piece, pieces) if not self.judging_only and bindings and any(
                     c.verdict == "fails" and c.correction is None for c in first) and any(
                     p != piece and bindings <= self._learned_bindings(p) for p in pieces) else None
                 for c in first:
@@ -349,7 +349,8 @@ class Rereading:
         kept_readings = dict(self.vocab.readings)
         self.vocab.readings.update(readings or {})
         self.vocab.names_off = names_off
-        self.judging_only = judging_only or not self.corrections
+        judging = self.judging_only
+        self.judging_only = judging or judging_only
         try:
             self._statement_read(line, piece, dup, pieces)
         except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
@@ -359,7 +360,7 @@ class Rereading:
             self.vocab.readings.clear()
             self.vocab.readings.update(kept_readings)
             self.vocab.names_off = False
-            self.judging_only = not self.corrections
+            self.judging_only = judging
         out, ctx = self.claims[keep_claims:], self.ctx
         del self.claims[keep_claims:]
         self.ctx = keep_ctx

@@ -298,8 +298,9 @@ def difference(a, b):
 @functools.lru_cache(maxsize=4096)
 def _zeroed(d):
     """d expanded, and simplified where it holds a root or another power that is no integer,
-    unless it is shown non-zero at a point (no identity makes it 0 then). Kept per expression: a statement read again (under another reading of its names, or edited
-    to find the correction) compares the same differences."""
+    unless it is shown non-zero at a point (no identity makes it 0 then). Kept per expression: a
+    statement read again (under another reading of its names, or edited to find the correction)
+    compares the same differences."""
     d = zt.expanded(d)
     if d != 0 and any(not p.exp.is_Integer for p in d.atoms(sp.Pow)) and not zt.nonzero_somewhere(d):
         d = sp.simplify(d)          # |𝛚| and 𝛚̂: a polynomial's expansion is already canonical
