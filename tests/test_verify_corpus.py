@@ -127,15 +127,12 @@ SHORT = {
     ("verga-polytech-euler-angles-body-angular-velocity-fr-zxz", "found"):
         "1 of 4: C_Y with a 1 for a 0 is flagged; C and R written out with phi and psi exchanged and e_Z's body "
         "components with cos(phi) for cos(psi) sit in C(phi, theta, psi), which the reader does not parse",
-    ("wikipedia-poinsot-ellipsoid-construction-encyclopaedia", "false"):
-        "its first read: the gradient dT/d omega = I . omega = L is called not a vector (dT/d omega of a "
-        "scalar by a vector not read as a gradient)",
     ("wikipedia-moment-of-inertia-matrix-parallel-axis-encyclopaedia", "checked"):
         "1 of 7: the angular momentum of particles as a sum over i and the parallel axis theorem in the bracket "
         "notation [r_i - S] of a skew-symmetric matrix; only the skew matrix of b is read",
 }
 
-FLOOR = {"checked": 542, "slips_flagged": 49, "holds_flagged": 0}
+FLOOR = {"checked": 547, "slips_flagged": 49, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

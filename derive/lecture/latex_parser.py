@@ -14,6 +14,7 @@ from derive.lecture.vocabulary import (
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot
+from derive.lecture import gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
@@ -399,6 +400,9 @@ class _Parser:
         if len(den) == 2 and is_d(den[0]) and den[1].kind == "atom" and den[1].value.base == "t" and den[1].value.sub \
                 and num and is_d(num[0]):
             raise NotRead("a derivative in a frame (d/dt with the frame's label on t)")   # dH/dt_b, never H/t_b
+        if (gradient := gradients.of_energy(self.vocab.resolve, num, den)) is not None:
+            self.i = k2                               # dT/d𝛚: the kinetic energy's gradient, 𝐋
+            return gradient
         if (rate := written_rate(toks, self.i - 1)) is not None:
             return self._rate_written(*rate)
         if (along := rate_along(self.vocab.resolve, num, den)) is not None:

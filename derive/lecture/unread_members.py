@@ -56,6 +56,8 @@ class UnreadMembers:
             names = {x for x in free(self._resolve(m)) if self._new_name(x) and x not in known}
             return bool(names) and all(getattr(self.vocab.generic.get(x), "bold", False) for x in names)
 
+        if loose and any(k and matrices_unread(members[k]) for k in loose) and self._read_in_vectors():
+            return None         # ½ 𝛚·𝐈·𝛚 beside scalars: a member in the text's bold names is the vector reader's
         if loose and loose[0] == 0 and len(loose) > 1 and self._new_name(members[0]) and \
                 len(members) - len(loose) >= 1 and all(matrices_unread(members[k]) for k in loose[1:]):
             loose = loose[1:]   # X = (matrices given further on) = (names it has): X is the member it can read
@@ -71,6 +73,11 @@ class UnreadMembers:
                             and self._new_name(members[k]) and loose == tail]
         return self._members_kept(parsed, kept)
 
+    def _read_in_vectors(self) -> bool:
+        """The statement being read, read whole by the vector reader (`_vectors`); False when it cannot."""
+        at = getattr(self, "_reading_at", None)
+        return at is not None and self._vectors(at[0], at[1], getattr(self, "_text", at[1]))
+
     def _written_member(self, parsed, k) -> str:
         """The member ``k`` of a chain as the text writes it (from its position in the statement)."""
         text = getattr(self, "_text", "")
@@ -84,6 +91,7 @@ class UnreadMembers:
     def _statement_read(self, line, piece, dup, pieces):
         """`_statement`, its verdicts then marked for the chain's members it could not read."""
         outer, self.unread, self.chain_names = self.unread, None, []
+        outer_at, self._reading_at = getattr(self, "_reading_at", None), (line, piece)
         start = len(self.claims)
         try:
             self._statement(line, piece, duplicate=dup, pieces=pieces)
@@ -93,7 +101,7 @@ class UnreadMembers:
             for name, first in self.chain_names if read else ():
                 self.ctx.defs.setdefault(name, first)     # the text's name for the quantity, from here on
         finally:
-            self.unread, self.chain_names = outer, []
+            self.unread, self.chain_names, self._reading_at = outer, [], outer_at
 
     def _unread_marked(self, start, kept, written, line, piece):
         names = ", ".join(written)

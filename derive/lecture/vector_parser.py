@@ -29,6 +29,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from derive.lecture import gradients
 from derive.lecture import latex as lx
 from derive.lecture.latex_parser import _Parser, braced_tokens
 
@@ -223,6 +224,10 @@ class VectorParser(_Parser):
         if tok is not None and tok.kind == "cmd" and tok.value == "sum":
             self.i += 1
             return self.vsum(env, tok)
+        if tok is not None and tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac"):
+            gradient = self._gradient(env)
+            if gradient is not None:
+                return gradient
         if tok is not None and tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac") and self.model.rates:
             start = self.i
             X = self._rate(env)
@@ -268,6 +273,21 @@ class VectorParser(_Parser):
         return AXES[name]
 
     # time derivatives
+    def _gradient(self, env):
+        """At \\frac: ``dT/d𝛚``, ``∂T/∂𝛚``, the gradient of a scalar by a vector of the model
+        (`derive.lecture.gradients.of_vector`), or None."""
+        num, j = braced_tokens(self.toks, self.i + 1)
+        den, k = braced_tokens(self.toks, j) if num is not None else (None, j)
+        if den is None or not gradients.written(num, den):
+            return None
+        try:
+            value = gradients.of_vector(_as_value(self.atom(num[1], env)), _as_value(self.atom(den[1], env)))
+        except (lx.NotRead, TypeError, ValueError):
+            return None
+        if value is not None:
+            self.i = k
+        return value
+
     def _rate(self, env):
         """At \\frac: \\frac{d}{dt} X (X the following product) or \\frac{d X}{dt}: X, or None."""
         t, i = self.toks, self.i + 1
