@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from derive.errors import SceneError
+from derive.lecture import bracket_cross
 from derive.lecture import formula_names
 from derive.lecture import names as nm
 from derive.lecture import notebook
@@ -273,7 +274,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     front matter's."""
     lines = text.split("\n")
     declared, skip = _front_matter(lines, path)
-    body = source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path))
+    body = bracket_cross.marked(source.rendered("\n".join([""] * skip + lines[skip:]), source.latex_source(text, path)))
     # the front matter (or the command line) wins; else the convention the text states itself
     stated = [] if convention or "convention" in declared else stated_convention.stated(body)
     conv = convention or declared.get("convention") or (stated[0].convention if stated else "z-y-z")

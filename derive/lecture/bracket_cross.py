@@ -1,0 +1,54 @@
+"""A text's own bracket for the cross-product matrix: after ``\\mathbf{b} \\times \\mathbf{y} \\equiv
+\\left[\\mathbf{b}\\right] \\mathbf{y}``, ``[\\mathbf{b}]`` is the skew-symmetric matrix of 𝐛.
+
+Some texts (an encyclopaedia's inertia matrix among them) write the matrix that takes the cross
+product with a vector as the vector in square brackets, and say so in a display: b × y ≡ [b] y.
+From that display on, a bracket the text writes acting on a vector (``[r_i - S]\\mathbf{y}``), or
+set equal to a written matrix (``[b] \\equiv \\begin{bmatrix}…``), is that matrix, written
+``[…]_\\times`` for the formula reader (`derive.lecture.source`); a plain letter inside it that the
+text writes bold elsewhere (r_i of 𝐫_i, S of 𝐒) is that vector. Any other bracket is left as it is:
+a bracket of a product of brackets may be the text's name for a matrix (``[I_S]``), and grouping.
+
+Takes: the rendered text of the notes (`derive.lecture.source.rendered`). Gives: `marked`, the text
+with those brackets marked (on their own lines, so every line keeps its number).
+
+May import: the standard library.
+"""
+from __future__ import annotations
+
+import re
+
+_BOLD = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?[A-Za-z]+\s*\}?"
+_DEFINED = re.compile(r"(?P<a>" + _BOLD + r")\s*\\times\s*(?P<y>" + _BOLD + r")\s*&?\s*(?:\\equiv|=)\s*&?\s*"
+                      r"(?:\\left\s*)?\[\s*(?P=a)\s*(?:\\right\s*)?\]\s*(?P=y)")
+_BOLD_LETTER = re.compile(r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{\s*([A-Za-z])\s*\}")
+_BRACKET = re.compile(r"(?:\\left\s*)?\[(?P<inner>[^\[\]&\\\n]*(?:\\(?:mathbf|boldsymbol|bm|vec)\s*\{[^{}\n]*\}"
+                      r"[^\[\]&\\\n]*)*)(?:\\right\s*)?\]")
+# what makes a bracket the text's matrix: a vector after it, or a written matrix it is set equal to
+_ACTS = re.compile(r"\s*(?:" + _BOLD + r"|&?\s*(?:\\equiv|=)\s*&?\s*\\begin\{[bpBvV]?matrix\})")
+# a symbol inside the bracket: a bold letter or a plain one, with its subscript
+_SYMBOL = re.compile(r"(?P<bold>\\(?:mathbf|boldsymbol|bm|vec)\s*\{[^{}]*\})|(?<![\\A-Za-z])(?P<plain>[A-Za-z])(?![A-Za-z])"
+                     r"(?P<sub>\s*_\s*(?:\{[^{}]*\}|\w))?")
+
+
+def marked(body: str) -> str:
+    """The text with its brackets for the cross-product matrix written ``[…]_\\times`` after the
+    display that defines them (see the module docstring); unchanged when it defines none."""
+    found = _DEFINED.search(body)
+    if found is None:
+        return body
+    bold = set(_BOLD_LETTER.findall(body))
+    start = body.rfind("\n", 0, found.start()) + 1
+    return body[:start] + _BRACKET.sub(lambda m: _marked(m, bold), body[start:])
+
+
+def _marked(m: re.Match, bold: set) -> str:
+    inner = m.group("inner")
+    if not _ACTS.match(m.string, m.end()) or not inner.strip():
+        return m.group(0)
+    plain = [x.group("plain") for x in _SYMBOL.finditer(inner) if x.group("plain")]
+    if not all(letter in bold for letter in plain):
+        return m.group(0)            # a letter the text never writes bold: not the vector the bracket takes
+    vector = _SYMBOL.sub(lambda x: x.group(0) if x.group("bold") else
+                         r"\mathbf{" + x.group("plain") + "}" + (x.group("sub") or ""), inner)
+    return r"\left[" + vector + r"\right]_\times"
