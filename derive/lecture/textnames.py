@@ -281,6 +281,8 @@ class TextNames(UnreadMembers):
             return True
         if self._restated(line, piece, members, rels):
             return True
+        if set(rels) <= {"=", "≡"} and self._identity_then_named(line, piece, members, loose):
+            return True
         names = ", ".join(sorted(self.tex(s) for s in loose))
         if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
             self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")

@@ -2,9 +2,10 @@
 
 Takes: a chain ``a = b = c`` parsed with an open vocabulary, some of whose members are written in
 names the text has not defined (or cannot combine yet). Gives: the mixin `UnreadMembers` of
-`derive.lecture.notes_check.Checker`: `_loose_ends_dropped`, the chain without those members, and
-`_statement_read`, a statement read with its verdicts marked for the members left out.
-May import: :mod:`derive.lecture.comparing`, SymPy.
+`derive.lecture.notes_check.Checker`: `_loose_ends_dropped`, the chain without those members,
+`_statement_read`, a statement read with its verdicts marked for the members left out, and
+`_identity_then_named`, a chain in untied names whose last member names it with a name of its own.
+May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.latex`, SymPy.
 
 A chain states that each member equals the next. With a member left out, the links through it are
 not checked: the members on either side of it are not a link the text writes. Each verdict of such
@@ -19,6 +20,7 @@ import re
 
 from sympy import Symbol
 
+from derive.lecture import latex as lx
 from derive.lecture.comparing import free
 
 _RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\left\s*)?$")
@@ -72,6 +74,24 @@ class UnreadMembers:
         self.chain_names = [(members[k], members[0]) for k in tail if isinstance(members[k], Symbol)
                             and self._new_name(members[k]) and loose == tail]
         return self._members_kept(parsed, kept)
+
+    def _identity_then_named(self, line, piece, members, loose) -> bool:
+        """``R = (R − S) + S = d + S`` in names the text has not tied: its last member brings in a name
+        of its own (d, which the text goes on to define) and names the chain, the links before it an
+        identity whatever the names stand for; True when such a chain was recorded so."""
+        if len(members) < 3:
+            return False
+        toks = lx.scan(getattr(self, "_text", ""))
+        last = max((k for k, t in enumerate(toks) if t.kind == "rel"), default=0)
+        written = {t.value.base + (f"_{t.value.sub}" if t.value.sub else "") for t in toks[:last] if t.kind == "atom"}
+        own = {x for x in free(self._resolve(members[-1])) & loose if str(x) not in written}   # not written before it
+        if len(own) != 1 or not self._identity_whatever(members[:-1]):
+            return False
+        names = ", ".join(sorted(self.tex(x) for x in loose - own))
+        self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand); the last "
+                  f"member names the chain with {self.tex(next(iter(own)))}, the text's own (a definition)")
+        self.settings_only = False
+        return True
 
     def _read_in_vectors(self) -> bool:
         """The statement being read, read whole by the vector reader (`_vectors`); False when it cannot."""
