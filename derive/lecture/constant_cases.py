@@ -5,8 +5,10 @@ relation after "where", "when", "if" is read without it, and a flag it gets is l
 
 A case the text sets by its constants of the motion alone, as ``L^2 = 2I_3T`` in running text: a
 relation written in the prose between the quantities the reader knows as constants of the motion
-(T the kinetic energy, E, |𝐋|, the text's L) and the body's parameters (I₁, I₂, I₃, M, g, l), with
-no variable of the motion in it, is no identity: it picks the motions that have those constants —
+(T the kinetic energy, E, |𝐋|, the text's L, and a name the text defined by the rates, its L_z or
+its spin n) and the body's parameters (I₁, I₂, I₃, M, g, l, and a letter the text tied to nothing,
+its A or C), with no variable of the motion in it, is no identity (``L_z = Cn``, a top started
+upright): it picks the motions that have those constants —
 "in the limit L² = 2I₃T", "at the other end, L² = 2I₁T", "case 3, L² = 2I₂T" (or a range of them,
 "case 1, 2I₂T < L² ≤ 2I₃T"). The reader does not
 impose such a case (it would have to restrict the motion itself), so the relation is a setting of
@@ -25,7 +27,8 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
+from derive.symbolic.rotations import ANGLES, RATES
 
 _PARAMETERS = frozenset((I1, I2, I3, Mass, g, l))
 CASE_LEAD = re.compile(r"\s*,?\s*(?:where|when|whenever|if|in which case)\s*", re.I)
@@ -36,10 +39,12 @@ FLAGGED = ("typo", "fails")
 _ORDER = {"<", ">", "≤", "≥"}
 
 
-def of_constants_only(parsed) -> bool:
+def of_constants_only(parsed, own=frozenset(), letters=frozenset()) -> bool:
     """A relation ``=`` of two members, or a chain of inequalities (a range, ``2I_2T < L^2 \\le
     2I_3T``), built from named quantities (at least one) and the body's parameters and numbers only:
-    no variable of the motion, no name of the text's own."""
+    no variable of the motion. A name of the text's counts as a named quantity when it is in ``own``
+    (the text defined it by the rates: its L_z, its spin n) and as a parameter when it is in
+    ``letters`` (a letter it never tied to anything, its A or C)."""
     if parsed is None or not (len(parsed.members) == 2 and parsed.relations == ["="]
                               or len(parsed.members) >= 2 and set(parsed.relations) <= _ORDER):
         return False
@@ -49,8 +54,8 @@ def of_constants_only(parsed) -> bool:
         if not isinstance(value, sp.Basic) or isinstance(value, sp.MatrixBase) or m.args:
             return False
         syms |= value.free_symbols
-    quantities = {s for s in syms if isinstance(s, lx.Quantity)}
-    return bool(quantities) and syms <= quantities | _PARAMETERS
+    quantities = {s for s in syms if isinstance(s, lx.Quantity) or s in own}
+    return bool(quantities) and syms <= quantities | _PARAMETERS | letters
 
 
 class ConstantCases:
@@ -84,7 +89,7 @@ class ConstantCases:
                 parsed = lx.parse(item.latex, self.vocab)
             except lx.NotRead:
                 parsed = None
-            if of_constants_only(parsed):
+            if of_constants_only(parsed, *self._named_constants(parsed)):
                 for c in claims:
                     c.kind, c.verdict, c.correction = "setting", "unchecked", None
                     c.why = ("a case of the text's constants of the motion (the motions that have them), "
@@ -104,3 +109,19 @@ class ConstantCases:
                 c.verdict, c.correction = "unchecked", None
                 c.why = (f"stated in the case {case[1]} the text sets at line {case[0]}, which the reader "
                          f"does not impose: as read without it, {c.why}")
+
+    def _named_constants(self, parsed) -> tuple:
+        """The text's names in ``parsed`` that stand for quantities of the motion (defined by an
+        expression in the rates, as L_z = A\\dot\\varphi\\sin^2\\vartheta + Cn\\cos\\vartheta) and its
+        letters tied to nothing (A, C): the quantities and parameters of `of_constants_only`."""
+        if parsed is None:
+            return frozenset(), frozenset()
+        syms = set().union(*(m.value.free_symbols for m in parsed.members if isinstance(m.value, sp.Basic)))
+        mine = {s for s in syms if isinstance(s, lx.Generic)}
+        rates = set(RATES) | set(lx.W)
+        own = {s for s in mine if s in self.ctx.defs and isinstance(self.ctx.defs[s], sp.Basic)
+               and self._resolve(self.ctx.defs[s]).free_symbols & rates}
+        motion = rates | set(ANGLES) | set(ACCELS) | set(lx.WD) | {lx.t}
+        plain = {s for s in syms if not isinstance(s, (lx.Quantity, lx.Generic)) and s not in motion}
+        return frozenset(own), frozenset({s for s in mine - own if s not in self.ctx.defs} | plain)
+

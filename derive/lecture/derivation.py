@@ -147,6 +147,9 @@ class Derivation:
             return [self.momenta[self.rot.beta]]
         if key in lx.W:
             return [self.omega[lx.W.index(key)]]
+        if key in lx.W_PRIMED:          # ê′ᵢ·𝛚 with ê′ᵢ in the body basis
+            e = self.frames[lx.PRIMED[lx.W_PRIMED.index(key)]]
+            return [sum((e.coeff(b) * w for b, w in zip(lx.BASIS, lx.W)), sp.S.Zero)]
         if key in lx.PRIMED or key in lx.INERTIAL:
             return [self.frames[key]]
         if key in lx.BASIS:

@@ -58,6 +58,7 @@ from derive.lecture.vocabulary import (  # noqa: F401  (the reader's names, used
     EPRIME,
     VEFF,
     OMEGA_VEC,
+    W_PRIMED,
     LMAG,
     DLDT,
     DLDT_BODY,

@@ -423,8 +423,23 @@ def angle_aliases(notes) -> tuple:
     if notes.aliases is not None:
         return notes.aliases
     if "angles" not in notes.declared and not notes.angles_stated:
-        return DEFAULT_ANGLES["z-x-z"]
+        return _variant_glyphs(DEFAULT_ANGLES["z-x-z"], notes.body)
     bases = tuple(a.split("_")[0] for a in notes.angles)
     if all("_" in a for a in notes.angles) and len(set(bases)) == 3:
         return bases
     return ()
+
+
+def _written(letter: str, body: str) -> bool:
+    return re.search(r"\\" + letter + r"(?![A-Za-z])", body) is not None
+
+
+def _variant_glyphs(names: tuple, body: str) -> tuple:
+    """The usual φ, θ, ψ in the glyphs the text writes them in: a text whose tilt is ϑ
+    (``\\vartheta``, never ``\\theta``) writes its angles in the variant letters, ϑ and φ
+    (``\\varphi`` unless it also writes ``\\phi``); a text that writes θ keeps the usual names."""
+    if not _written("vartheta", body) or _written("theta", body):
+        return names
+    swap = {"theta": "vartheta", "phi": "phi" if _written("phi", body) else "varphi"}
+    return tuple(swap.get(n, n) for n in names)
+

@@ -70,6 +70,7 @@ from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, su
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_rates import OwnRates
+from derive.lecture.own_sign import OwnSign
 from derive.lecture.stated_theorems import StatedTheorems
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.turn_rates import TurnRates
@@ -124,7 +125,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -455,6 +456,8 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
         key = m0.value
         forms = self.d.forms(key, m0.args) if isinstance(key, sp.Symbol) else []
         if any(r == "≡" for r in parsed.relations) and key in (lx.Omega, lx.Omega1, lx.Omega2):
+            if self._own_sign(line, piece, parsed, forms):
+                return
             self.ctx.defs[key] = parsed.members[1].value
         approx = "≈" in parsed.relations
         if not forms:

@@ -7,7 +7,8 @@ the list of its statements, each a LaTeX string. May import: the standard librar
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
 other display environments, which are dropped; an aligned row of column pairs side by side,
 ``a &= b & c &\\equiv d``, is one row per pair), a row ending in ``+``/``-`` continuing on the
-next (and one ending in ``=`` on a next that opens with ``=``); a row into pieces at ``\\qquad``,
+next, a row opening with ``+``/``-`` and stating no relation of its own continuing the row before
+it (``&+ \\frac{1}{2}I_2 …``), and one ending in ``=`` on a next that opens with ``=``; a row into pieces at ``\\qquad``,
 ``\\quad``, ``\\Rightarrow``, ``\\implies``, ``\\Leftrightarrow``, ``\\iff`` and a spaced ``\\text{and}``; a piece at top-level ``;``
 and at commas between relations (never inside brackets). A label before a colon (``\\theta:``,
 ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are dropped; a case
@@ -247,6 +248,8 @@ def statements(latex: str) -> list[str]:
             continue
         if joined and re.search(r"[+\-]\s*$", joined[-1]):
             joined[-1] = joined[-1] + " " + row
+        elif joined and re.match(r"[+\-]", row) and not _RELATION_IN.search(row) and not joined[-1].rstrip().endswith("."):
+            joined[-1] = joined[-1] + " " + row      # "&+ \frac{1}{2}I_2 …": a long right side carried over a row
         elif joined and re.search(r"(?<![<>!\\])=\s*$", joined[-1]) and row.startswith("="):
             joined[-1] = joined[-1] + " " + row[1:]      # "A = B =" then "= C": one chain, the = said twice
         else:

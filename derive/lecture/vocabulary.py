@@ -76,6 +76,7 @@ ENERGY = quantity("E")
 EPRIME = quantity("E'")
 VEFF = quantity("V_eff")
 OMEGA_VEC = quantity("omega_vec")        # 𝛚 (= ω̃ in body components)
+W_PRIMED = tuple(quantity(f"omega{k}'") for k in (1, 2, 3))     # ω′ᵢ = ê′ᵢ·𝛚, beside the primed axes
 LMAG = quantity("|L|")                   # the magnitude of the angular momentum
 DLDT = quantity("dL/dt")
 DLDT_BODY = quantity("(dL/dt)_body")
@@ -462,6 +463,8 @@ class Vocabulary:
         if b == "omega":
             if a.bold and not sub:
                 return OMEGA_VEC if a.dots == 0 else None
+            if sub in ("1", "2", "3") and a.primes == 1 and not a.dots and not a.bold:
+                return W_PRIMED[int(sub) - 1]       # ω′ᵢ: a component on the primed axes ê′ᵢ
             if sub in ("1", "2", "3") and (not a.bold or not a.dots):
                 i = int(sub) - 1          # 𝛚₃ in a scalar formula: the component, the bold a typeface
                 if a.dots == 0:
