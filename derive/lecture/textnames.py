@@ -124,6 +124,7 @@ class TextNames(UnreadMembers):
         members = [m.value for m in parsed.members]
         rels = parsed.relations
         if any(isinstance(m, sp.MatrixBase) for m in members):
+            members[0] = self._free_letter_named(members[0], members[1])
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
                 if self.vocab.generic[members[0]].bold and self._vectors(line, piece, getattr(self, "_text", piece)):
                     return True          # a tensor the vector reader knows (Ï, 𝐈 as a matrix)
@@ -416,7 +417,7 @@ class TextNames(UnreadMembers):
                           f"named {what}, which it is but for the entry in row {row + 1}, column {col + 1}",
                           self.tex(named[what]))
                 return True
-        return False
+        return len(used) == 3 and self._angles_exchanged(line, piece, m, named)
 
     def _rate_matrix(self, line, piece, m) -> bool:
         """A 3×3 matrix of two angles: the matrix of the rates, ω̃ = B q̇ (body) or ω⁰ = B⁰ q̇ (space),
@@ -471,6 +472,8 @@ class TextNames(UnreadMembers):
         atom = self.vocab.generic.pop(sym)
         mat = lx.Generic(sym.name, commutative=False)
         self.vocab.generic[mat] = atom
+        if self.vocab.defined.get(atom) == sym:      # a free letter named so (`_free_letter_named`)
+            self.vocab.defined[atom] = mat
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
         return mat
 
