@@ -137,6 +137,8 @@ class TextNames(UnreadMembers):
                               f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
                 if self._turn_meant is not None:      # the turn its name says: what the products after it use
                     self.ctx.defs[mat] = sp.ImmutableMatrix(self._turn_meant)
+                for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked, as for a symbol
+                    self._one(line, piece, "identity", members[1], members[k], parsed, k)
                 return True
             if len(members) == 2 and isinstance(members[1], sp.MatrixBase):
                 return self._matrix_again(line, piece, members[0], members[1])
