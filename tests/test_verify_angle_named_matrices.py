@@ -67,3 +67,12 @@ def test_the_products_after_an_exchanged_matrix_use_the_rotation_it_meant():
              "\\cos\\theta \\end{pmatrix}$$\n")
     got = verdicts(display("C(\\phi, \\theta, \\psi)", SWAPPED) + after)
     assert got[9] == {"typo"} and got[11] == {"holds"}
+
+
+
+def test_a_name_defined_before_as_the_free_letter_transposed_follows_it_to_the_matrix():
+    before = "where $R = C^T$ is the transfer matrix.\n\n"
+    column = "\n$$R \\boldsymbol{e}_z = \\begin{pmatrix} \\sin\\theta\\sin\\phi \\\\ -\\sin\\theta\\cos\\phi \\\\ " \
+        "\\cos\\theta \\end{pmatrix}$$\n"
+    got = verdicts(display("C", "\\left(" + R + "\\right)^T", before=before) + column)
+    assert got[11] == {"holds"} and got[13] == {"holds"}

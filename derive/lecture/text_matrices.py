@@ -394,6 +394,18 @@ class TextMatrices:
         self.vocab.defined[atom] = self.vocab._generic(atom)
         return self.vocab.defined[atom]
 
+    def _free_letter_moved(self, sym, mat, atom):
+        """A free letter named as a matrix (`_free_letter_named`) and now bound to ``mat``: the letter
+        stands for the matrix from here on, and the text's names it defined before as the letter or
+        its transpose (``R = C^T``, read while C was a free constant) are defined by the matrix."""
+        if self.vocab.defined.get(atom) != sym:
+            return
+        self.vocab.defined[atom] = mat
+        free = sp.Symbol(atom.base, real=True)
+        for name, v in list(self.ctx.defs.items()):
+            if v in (free, lx.Transposed(free)):
+                self.ctx.defs[name] = v.xreplace({free: mat})
+
     def _matrix_again(self, line, piece, sym, written) -> bool:
         """``R = [a matrix]`` for a name the text has bound to a 3×3 matrix already: a text that
         writes each rotation in turn as R names a new matrix, not the old one again. Re-bound (and

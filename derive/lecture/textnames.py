@@ -474,8 +474,7 @@ class TextNames(UnreadMembers):
         atom = self.vocab.generic.pop(sym)
         mat = lx.Generic(sym.name, commutative=False)
         self.vocab.generic[mat] = atom
-        if self.vocab.defined.get(atom) == sym:      # a free letter named so (`_free_letter_named`)
-            self.vocab.defined[atom] = mat
+        self._free_letter_moved(sym, mat, atom)
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
         return mat
 
