@@ -413,18 +413,19 @@ class TextMatrices:
         it is in other angles than the bound one (a matrix of θ after one of φ is no claim about
         that one); True when so handled. The same angles and no rotation: False, it is compared."""
         old = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
+        # R(φ, θ, ψ) = [a matrix] where R was defined before as no matrix: the angles' matrix, named anew
+        anew = old is not None and not isinstance(old, sp.MatrixBase) and \
+            self._angles_listed(getattr(self, "_text", piece)) == tuple(self.d.rot.ANGLES)
+        if not anew and (not isinstance(old, sp.MatrixBase) or old.shape != (3, 3)):
+            return False
         value = self._resolve(written)
         if not isinstance(value, sp.MatrixBase) or value.shape != (3, 3):
             return False
-        if old is not None and not isinstance(old, sp.MatrixBase) and \
-                self._angles_listed(getattr(self, "_text", piece)) == tuple(self.d.rot.ANGLES):
-            # R(φ, θ, ψ) = [a matrix] after R = Cᵀ in a letter then no matrix: the name of the angles' matrix
+        if anew:
             self._turn_meant = None
             if self._rotation(line, piece, sp.Matrix(value)):
                 self._matrix_name(sym, value if self._turn_meant is None else self._turn_meant)
                 return True
-            return False
-        if not isinstance(old, sp.MatrixBase) or old.shape != (3, 3):
             return False
         if self._rotation(line, piece, sp.Matrix(value), self._turn_label(getattr(self, "_text", piece))):
             self.ctx.defs[sym] = sp.ImmutableMatrix(value)
