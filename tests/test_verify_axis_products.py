@@ -1,6 +1,8 @@
 """The notes reader on a product of matrices named only by their axes (R_z R_x R_z) written out
 factor by factor: each factor is held to the turn about its name's axis, all in one sense, and the
 name set equal to the product is that matrix, also when written again at a setting of an angle."""
+import sympy as sp
+
 import kept_readings as kept
 
 HEAD = "---\nangles: [\\alpha, \\beta, \\gamma]\n---\n# Notes\n\n"
@@ -73,3 +75,19 @@ def test_a_setting_in_the_arguments_of_a_name_the_text_has_not_bound_is_not_read
     text = HEAD + ("$$\n\\mathbf{Q}(\\alpha, \\beta=0, \\gamma) = " + z("gamma") + "\n" + IDENTITY + "\n"
                    + z("alpha") + "\n$$\n")
     assert not verdicts(text)[6] & {"holds", "fails", "typo"}
+
+
+def test_a_chain_that_also_writes_the_product_out_binds_the_name_to_its_written_factors():
+    a, b, g = sp.symbols("alpha beta gamma")
+    turn_z = lambda q: sp.Matrix([[sp.cos(q), sp.sin(q), 0], [-sp.sin(q), sp.cos(q), 0], [0, 0, 1]])  # noqa: E731
+    turn_x = lambda q: sp.Matrix([[1, 0, 0], [0, sp.cos(q), sp.sin(q)], [0, -sp.sin(q), sp.cos(q)]])  # noqa: E731
+    product = turn_z(g) * turn_x(b) * turn_z(a)
+    out = " \\\\ ".join(" & ".join(sp.latex(e) for e in product.row(i)) for i in range(3))
+    four = chain(z("gamma"), x("beta"), z("alpha")).replace(
+        "\n\\end{array}", " \\\\\n& = \\begin{bmatrix} " + out + " \\end{bmatrix}\n\\end{array}")
+    at = ("$$\n\\mathbf{R}_{zxz}(\\alpha, \\beta=0, \\gamma) = " + z("gamma") + "\n" + IDENTITY + "\n"
+          + z("alpha") + "\n$$\n")
+    text = HEAD + four + at
+    got = verdicts(text)
+    assert got[6] & {"holds"} and not got[6] & {"fails", "typo"}
+    assert got[line_of(text, "(\\alpha, \\beta=0")] == {"holds"}

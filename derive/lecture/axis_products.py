@@ -11,7 +11,8 @@ matrix written under it gives the angle. Each written factor is held to the elem
 its name's axis by the one angle its entries are in, every factor in one sense, all passive
 (``passive(axis, q)``, the coordinate turn) or all active (``active(axis, q) = passive(axis, q)ᵀ``),
 since one letter with two senses would be two matrices. When every factor is that turn, the
-chain holds and a name the text sets equal to the product (``R_{zxz}``) is bound to it. When
+chain holds and a name the text sets equal to the product (``R_{zxz}``) is bound to it (also when
+the chain goes on to the product multiplied out, a member then left to the rest of the reader). When
 they are not, nothing is said: the names alone give no angle, so a factor that is no turn about
 its axis is left unchecked rather than judged.
 
@@ -77,15 +78,17 @@ class AxisProducts:
         any other display, or when the written factors are not turns about the named axes."""
         chain = " ".join(p.strip() for p in pieces)
         cuts = top_level(chain, _EQUALS)
-        if not cuts or len(cuts) > 2:
+        if not cuts or len(cuts) > 3:
             return False
         members, at = [], 0
         for m in cuts:
             members.append(chain[at:m.start()].strip())
             at = m.end()
         members.append(chain[at:].strip())
-        written = _written_factors(members[-1])
-        names = _axis_names(members[-2])
+        # X = A_z A_y A_x = [..][..][..] = [..]: X is bound to the product, the rest read as before
+        bound_only = len(members) == 4
+        written = _written_factors(members[-2 if bound_only else -1])
+        names = _axis_names(members[-3 if bound_only else -2])
         if written is None or names is None or len(written) != len(names):
             return False
         try:
@@ -106,8 +109,10 @@ class AxisProducts:
         product = mats[0]
         for m in mats[1:]:
             product = product * m
-        if len(members) == 3:
+        if len(members) >= 3:
             self._product_bound(members[0], product)
+        if bound_only:
+            return False
         said = "; ".join(f"{a.text}: about {axis} by {self.tex(q)}" for a, axis, q in zip(names, axes, angles))
         self._add(line, " \\\\ ".join(pieces), "rotation", "holds",
                   f"each written factor the {sense} turn about the axis its name gives ({said})")

@@ -80,9 +80,20 @@ class Conditions:
                        and x not in self._constants())
         if loose:
             return f"involves {', '.join(loose)}, which the text has not defined"
-        turns = isinstance(val, sp.MatrixBase) and val.shape == (3, 3)
+        turns = isinstance(val, sp.MatrixBase) and (val.shape == (3, 3) or self._turned_column(written, val, targets))
         if not every & rates and every & set(rot.ANGLES) and not turns:
             # (a 3×3 matrix of the angles equated to another is an identity of rotations, decided)
             return ("an equation for the angles with no rates in it (ω̃ᵢ, the momenta and E are independent "
                     "of them there): a condition, such as a turning point or the orientation the text chose")
         return None
+
+    def _turned_column(self, written, val, targets) -> bool:
+        """A column that one side writes as a product of the text's own matrices (``C_Z(\\psi)
+        C_X(\\theta) \\boldsymbol{e}_z``), equated to columns that all vary with the angles: the
+        text multiplies its matrices out, an identity, not a condition. A side constant in the
+        angles (``R e_3 = (0, 0, 1)``) may be the orientation the text picks, so it is none."""
+        product = any(isinstance(self.ctx.defs.get(x), sp.MatrixBase) and not x.is_commutative
+                      for m in written for x in free(m))
+        sides = [val, *(self._resolve(f) for f in targets)]
+        return product and all(isinstance(v, sp.MatrixBase) and v.shape == (3, 1) and
+                               free(v) & set(self.d.rot.ANGLES) for v in sides)

@@ -247,8 +247,9 @@ class _Parser:
                 if self._argument_list():       # 𝐒(φ, θ): a matrix of the text's, with what it depends on
                     self.args = kept
                     return value
-            if self.at("op", "(") and isinstance(value, Generic) and self._listed_arguments():
-                return value                    # f₁(ω₁, ω₂, ω₃): a name of the text's, with what it depends on
+            own = isinstance(value, Generic) or type(value) is sp.Symbol and value.name in ("A", "B", "C")
+            if self.at("op", "(") and own and (self._listed_arguments() or self._of_time()):
+                return value                    # f₁(ω₁, ω₂, ω₃), C(φ, θ, ψ), R(t): a name with what it depends on
             if self.at("op", "(") and (value in W or value in WD or isinstance(value, Generic)):
                 at = self._at_a_time(tok, value)
                 if at is not None:
@@ -343,6 +344,15 @@ class _Parser:
             self.args = kept
             return True
         return False
+
+    def _of_time(self) -> bool:
+        """At '(': the time alone, ``(t)``, read as the argument of the name before it."""
+        inner, close = self.peek(1), self.peek(2)
+        if inner is None or inner.kind != "atom" or inner.value.with_(text="") != Atom("t") or \
+                close is None or (close.kind, close.value) != ("op", ")"):
+            return False
+        self.i += 3
+        return True
 
     def _argument_list(self) -> bool:
         """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""

@@ -429,7 +429,8 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
             rep.update(self._dotted_definitions(v, syms))
             if not rep:
                 break
-            v = matrices_put(v, rep) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) else v.xreplace(rep)
+            v = matrices_put(v, rep, self._basis_columns(v)) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) \
+                else v.xreplace(rep)
         return self._calculus(v)
 
     def _unify(self, values: list) -> list:

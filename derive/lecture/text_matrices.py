@@ -14,9 +14,15 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
   turn (``\\mathbf{R}_{x'}(\\theta)``), which the matrix written is then held to. A plain name
   applied to two angles in one product (``R_z(\\psi) R_x(\\theta) R_z(\\phi)``) is a turn per angle,
   in the sense the text's own turns have; a name bound to the turn by one angle and applied to
-  another is never read as the bound turn (`_turn_at_another_argument` says why it is unchecked).
+  another is never read as the bound turn (`_turn_at_another_argument` says why it is unchecked),
+  unless the text defined it with its argument written, ``C_Z(\\phi) = …``, a function of its angle
+  (`_functions_at`). A basis vector right of such matrices is its unit column (`_basis_columns`);
+  a matrix named by the three angles that is the sequence's rotation with the first and third
+  exchanged is a typo of it (`_angles_exchanged`); a free letter A, B, C set equal to a 3×3 matrix
+  names it (`_free_letter_named`).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.zero_test`,
+:mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -25,11 +31,15 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.vocabulary import Atom
+from derive.lecture.zero_test import entry_zero
 from derive.symbolic.rotations import trig_reduce
 
 
 _AT_TIME = re.compile(r"^(\s*\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|\w))?)\s*\(\s*t\s*\)\s*=")
 # a name at the time before the product of turns, ``R(t) =``: its argument is no factor
+_NAME_OF = re.compile(r"^\s*[^=(){}]+(?:\{[^{}]*\}[^=(){}]*)*\(([^()=]*)\)\s*=")
+# a left side that is one name with its arguments listed, ``C(\phi, \theta, \psi) =``
 
 
 class ShapesApart(lx.NotRead, TypeError):
@@ -51,23 +61,27 @@ def _added(out, a, written):
                       "(the text has not given its shape)")
 
 
-def matrices_put(e, rep):
+def matrices_put(e, rep, columns=None):
     """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
     up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
     Mul would take a matrix among its factors for a scalar. A matrix added to a term of no matrix
-    shape raises `ShapesApart`."""
+    shape raises `ShapesApart`. ``columns``: basis vectors that, in a product with matrices, are
+    their unit columns, last in the product (`TextMatrices._basis_columns`)."""
     if e in rep:
         return rep[e]
     if isinstance(e, sp.MatrixBase):
-        blocks = [[matrices_put(e[i, j], rep) for j in range(e.cols)] for i in range(e.rows)]
+        blocks = [[matrices_put(e[i, j], rep, columns) for j in range(e.cols)] for i in range(e.rows)]
         if all(isinstance(b, sp.MatrixBase) for row in blocks for b in row):     # [𝐈₁  R₁𝐈₂  R₁R₂𝐈₃]: a block matrix
             return sp.ImmutableMatrix(sp.Matrix.vstack(*[sp.Matrix.hstack(*row) for row in blocks]))
         return sp.ImmutableMatrix(blocks)
     if not getattr(e, "args", ()):
         return e
-    args = [matrices_put(a, rep) for a in e.args]
+    args = [matrices_put(a, rep, columns) for a in e.args]
     if not any(isinstance(a, sp.MatrixBase) for a in args):
         return e.func(*args) if args != list(e.args) else e
+    basis = [k for k, a in enumerate(e.args) if a in (columns or {})] if isinstance(e, sp.Mul) else []
+    if len(basis) == 1:             # C e_z: the column stands right of the matrices (SymPy put the symbol first)
+        args = [a for k, a in enumerate(args) if k != basis[0]] + [columns[e.args[basis[0]]]]
     if isinstance(e, (sp.Mul, sp.Add, lx.MatProduct)):
         out = args[0]
         for k, a in enumerate(args[1:], 1):
@@ -132,6 +146,7 @@ class TextMatrices:
             return None
         if angle not in self.d.rot.ANGLES:
             return None
+        self.__dict__.setdefault("functions_of", {})[name.with_(text="")] = (angle, arg.text)   # the turn as its angle's function
         return "xyz"["123xyz".index(axis) % 3], angle
 
     def _turn_at_another_argument(self, text: str) -> str | None:
@@ -142,6 +157,7 @@ class TextMatrices:
             toks = lx.scan(text)
         except lx.NotRead:
             return None
+        self._functions_at(toks)
         angles = set(self.d.rot.ANGLES)
         for k in range(len(toks) - 2):
             a, o, g = toks[k:k + 3]
@@ -169,6 +185,35 @@ class TextMatrices:
             return (f"{self.tex(sym)} is the turn by {self.tex(at)}; its turn by {arg} is not read "
                     f"(the turn by {self.tex(at)} would stand in for it)")
         return None
+
+    def _functions_at(self, toks):
+        """``C_Z(\\psi)`` where the text defined ``C_Z(\\phi) = …`` with its argument written: a
+        function of its angle, so at another angle of the sequence it is the matrix with φ put as
+        ψ, and the name at that argument is bound so. A name bound without its argument
+        (``R_z = …`` in φ) is that matrix at φ only: ``R_z(\\phi)`` is bound to it, ``R_z(\\psi)``
+        left as it is."""
+        known = self.__dict__.get("functions_of", {})
+        for k in range(len(toks) - 3):
+            a, o, g, c = toks[k:k + 4]
+            if a.kind != "atom" or g.kind != "atom" or (o.kind, o.value, c.kind, c.value) != ("op", "(", "op", ")"):
+                continue
+            try:
+                arg = self.vocab.resolve(g.value)
+                at, spelled = known.get(a.value.with_(text=""), (None, None))
+                bound = self.ctx.defs.get(self.vocab._generic(a.value.with_(sup=f"({spelled})")) if spelled
+                                          else self.vocab.resolve(a.value))
+            except lx.NotRead:
+                continue
+            if spelled is None and isinstance(bound, sp.MatrixBase) and set(bound.free_symbols) == {arg}:
+                at = arg                  # R_z(φ) after R_z = (the turn by φ): that turn
+            elif arg == at:
+                continue
+            if arg not in self.d.rot.ANGLES or not isinstance(bound, sp.MatrixBase) or bound.shape != (3, 3) \
+                    or set(bound.free_symbols) != {at}:
+                continue
+            sym = self.vocab._generic(a.value.with_(sup=f"({g.value.text})"))
+            if sym not in self.ctx.defs and sym.is_commutative:
+                self._matrix_name(sym, sp.Matrix(bound).xreplace({at: arg}))
 
     def _single_axis_turns(self, text: str) -> str:
         """``\\mathbf{R}_1(\\phi) \\mathbf{R}_2(\\theta) \\mathbf{R}_3(\\psi)``: matrices named by an axis (1, 2, 3
@@ -282,6 +327,85 @@ class TextMatrices:
                   f"and no turn by {self.tex(angle)} with that angle swapped")
         return True
 
+    def _angles_exchanged(self, line, piece, m, named) -> bool:
+        """``C(\\phi, \\theta, \\psi) = [a matrix]`` that is one of the rotations ``named`` (R, Rᵀ)
+        with the first and third angles exchanged, or that but for one entry: a typo of that
+        rotation, when the text states its sequence and the angles' names and the matrix's name lists
+        the three angles in the sequence's order, so that the text itself says which angle turns
+        first. False (nothing said) for any other matrix or name."""
+        notes = self.notes
+        angles = tuple(self.d.rot.ANGLES)
+        if not notes.convention_stated or not ("angles" in notes.declared or notes.angles_stated) or \
+                self._angles_listed(getattr(self, "_text", piece)) != angles:
+            return False
+        first, third = angles[0], angles[2]
+        for what, right in named.items():
+            target = sp.Matrix(right).xreplace({first: third, third: first})
+            off = [k for k in range(9) if not entry_zero(m[k] - target[k])]
+            if len(off) > 1:
+                continue
+            sign = f", and the entry in row {off[0] // 3 + 1}, column {off[0] % 3 + 1} written otherwise" if off else ""
+            self._turn_meant = sp.Matrix(right)        # the products after it use the matrix meant
+            self._add(line, piece, "rotation", "typo",
+                      f"{what} with {self.tex(first)} and {self.tex(third)} exchanged{sign}: the text's "
+                      f"sequence turns by {self.tex(first)} first, and its name lists the angles so",
+                      self.tex(sp.Matrix(right)))
+            return True
+        return False
+
+    def _angles_listed(self, text: str):
+        """The symbols a left side ``N(a, b, c) =`` lists as its name's arguments, or None."""
+        m = _NAME_OF.match(text)
+        if m is None:
+            return None
+        try:
+            toks = [lx.scan(a) for a in m.group(1).split(",")]
+            return tuple(self.vocab.resolve(t[0].value) if len(t) == 1 and t[0].kind == "atom" else None
+                         for t in toks)
+        except lx.NotRead:
+            return None
+
+    def _basis_columns(self, value) -> dict:
+        """The basis vectors of ``value`` the text has not defined, each as its unit column: a bold
+        𝐞 with the subscript x, y, z (either case) or 1, 2, 3. In a product with a matrix such a
+        vector can only be the column of its components in its own frame, (1, 0, 0) for 𝐞_x."""
+        out = {}
+        for s in value.free_symbols if hasattr(value, "free_symbols") else ():
+            atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
+            if s in lx.BASIS:
+                k = lx.BASIS.index(s)
+            elif atom is not None and atom.base == "e" and atom.bold and atom.sub in tuple("xyzXYZ") and \
+                    not (atom.sup or atom.dots or atom.primes or atom.hat or atom.tilde or atom.mark):
+                k = "xyz".index(atom.sub.lower())
+            else:
+                continue
+            if s not in self.ctx.defs and s not in self.ctx.subs:
+                out[s] = sp.ImmutableMatrix([int(j == k) for j in range(3)])
+        return out
+
+    def _free_letter_named(self, sym, value):
+        """``C = [a 3×3 matrix]``, ``C(\\phi, \\theta, \\psi) = …``: a letter the reader holds only as a
+        free constant (A, B, C) set equal to a square matrix is the text's name for that matrix, as
+        ``R = …`` is; the letter is that name from here on. Any other side is returned as it is."""
+        if type(sym) is not sp.Symbol or sym.name not in ("A", "B", "C") or \
+                not isinstance(value, sp.MatrixBase) or value.shape != (3, 3):
+            return sym
+        atom = Atom(sym.name)
+        self.vocab.defined[atom] = self.vocab._generic(atom)
+        return self.vocab.defined[atom]
+
+    def _free_letter_moved(self, sym, mat, atom):
+        """A free letter named as a matrix (`_free_letter_named`) and now bound to ``mat``: the letter
+        stands for the matrix from here on, and the text's names it defined before as the letter or
+        its transpose (``R = C^T``, read while C was a free constant) are defined by the matrix."""
+        if self.vocab.defined.get(atom) != sym:
+            return
+        self.vocab.defined[atom] = mat
+        free = sp.Symbol(atom.base, real=True)
+        for name, v in list(self.ctx.defs.items()):
+            if v in (free, lx.Transposed(free)):
+                self.ctx.defs[name] = v.xreplace({free: mat})
+
     def _matrix_again(self, line, piece, sym, written) -> bool:
         """``R = [a matrix]`` for a name the text has bound to a 3×3 matrix already: a text that
         writes each rotation in turn as R names a new matrix, not the old one again. Re-bound (and
@@ -289,10 +413,19 @@ class TextMatrices:
         it is in other angles than the bound one (a matrix of θ after one of φ is no claim about
         that one); True when so handled. The same angles and no rotation: False, it is compared."""
         old = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
-        if not isinstance(old, sp.MatrixBase) or old.shape != (3, 3):
+        # R(φ, θ, ψ) = [a matrix] where R was defined before as no matrix: the angles' matrix, named anew
+        anew = old is not None and not isinstance(old, sp.MatrixBase) and \
+            self._angles_listed(getattr(self, "_text", piece)) == tuple(self.d.rot.ANGLES)
+        if not anew and (not isinstance(old, sp.MatrixBase) or old.shape != (3, 3)):
             return False
         value = self._resolve(written)
         if not isinstance(value, sp.MatrixBase) or value.shape != (3, 3):
+            return False
+        if anew:
+            self._turn_meant = None
+            if self._rotation(line, piece, sp.Matrix(value)):
+                self._matrix_name(sym, value if self._turn_meant is None else self._turn_meant)
+                return True
             return False
         if self._rotation(line, piece, sp.Matrix(value), self._turn_label(getattr(self, "_text", piece))):
             self.ctx.defs[sym] = sp.ImmutableMatrix(value)

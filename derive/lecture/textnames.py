@@ -124,6 +124,7 @@ class TextNames(UnreadMembers):
         members = [m.value for m in parsed.members]
         rels = parsed.relations
         if any(isinstance(m, sp.MatrixBase) for m in members):
+            members[0] = self._free_letter_named(members[0], members[1])
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
                 if self.vocab.generic[members[0]].bold and self._vectors(line, piece, getattr(self, "_text", piece)):
                     return True          # a tensor the vector reader knows (Ï, 𝐈 as a matrix)
@@ -136,6 +137,8 @@ class TextNames(UnreadMembers):
                               f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
                 if self._turn_meant is not None:      # the turn its name says: what the products after it use
                     self.ctx.defs[mat] = sp.ImmutableMatrix(self._turn_meant)
+                for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked, as for a symbol
+                    self._one(line, piece, "identity", members[1], members[k], parsed, k)
                 return True
             if len(members) == 2 and isinstance(members[1], sp.MatrixBase):
                 return self._matrix_again(line, piece, members[0], members[1])
@@ -418,7 +421,7 @@ class TextNames(UnreadMembers):
                           f"named {what}, which it is but for the entry in row {row + 1}, column {col + 1}",
                           self.tex(named[what]))
                 return True
-        return False
+        return len(used) == 3 and self._angles_exchanged(line, piece, m, named)
 
     def _rate_matrix(self, line, piece, m) -> bool:
         """A 3×3 matrix of two angles: the matrix of the rates, ω̃ = B q̇ (body) or ω⁰ = B⁰ q̇ (space),
@@ -473,6 +476,7 @@ class TextNames(UnreadMembers):
         atom = self.vocab.generic.pop(sym)
         mat = lx.Generic(sym.name, commutative=False)
         self.vocab.generic[mat] = atom
+        self._free_letter_moved(sym, mat, atom)
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
         return mat
 
