@@ -57,6 +57,7 @@ from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.free_integrals import FreeIntegrals
+from derive.lecture.integral_claims import IntegralClaims
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
@@ -123,7 +124,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(IntegralClaims, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -300,7 +301,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
             return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
-        if self._operator(line, piece, text) or self._coordinate(line, piece, text):
+        if self._definite_integral(line, piece, text) or self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:
