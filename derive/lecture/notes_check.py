@@ -58,6 +58,7 @@ from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.integral_claims import IntegralClaims
+from derive.lecture.perturbations import Perturbations
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
@@ -124,7 +125,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(IntegralClaims, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -177,7 +178,7 @@ class Checker(IntegralClaims, ConventionProbe, SectionConvention, ConstantCases,
         items = self.notes.items
         k = 0
         while k < len(items):
-            item = items[k]
+            item, met = items[k], set(self.vocab.generic)
             if self.notes.names is not None:
                 self.notes.names.here = item.line
             if item.kind == "heading":
@@ -209,6 +210,7 @@ class Checker(IntegralClaims, ConventionProbe, SectionConvention, ConstantCases,
                     k += 1
                     latex = latex + " " + items[k].latex
                 self._display_probed(item, latex)
+            self._perturbation_named(item, met)
             k += 1
         self._flush()
         self._place_flushed(len(self.claims))
@@ -301,7 +303,8 @@ class Checker(IntegralClaims, ConventionProbe, SectionConvention, ConstantCases,
             return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
-        if self._definite_integral(line, piece, text) or self._operator(line, piece, text) or self._coordinate(line, piece, text):
+        if self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) or self._operator(line, piece, text) \
+                or self._coordinate(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:
