@@ -47,3 +47,8 @@ def test_a_name_set_to_an_integral_is_no_setting_and_a_condition_is_not_judged()
     alone = kept.check_text(HEAD + "\n\n\n\n" + body.rsplit("\n\n", 1)[1])
     assert [(c.kind, c.verdict, c.why) for c in claims if "\\int" not in c.latex] == \
         [(c.kind, c.verdict, c.why) for c in alone]
+
+
+def test_an_integral_over_the_time_is_not_read():
+    body = r"$$\int_0^T \dot\theta \, \mathrm{d}t = 0$$"
+    assert [c.verdict for c in _claims(body)] == ["unchecked"]

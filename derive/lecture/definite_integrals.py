@@ -5,8 +5,10 @@ An integral is read only where both its bounds are written and its differential 
 after the bounds (the physicist's order, the integrand the rest of the product, 1 where nothing
 follows), as a fraction's numerator ``\\frac{d x}{…}``, or after the integrand. The variable is
 bound: it is replaced by a fresh symbol inside the integrand, so the text's φ elsewhere (an Euler
-angle) is never the φ integrated over. SymPy works the integral out where it can; otherwise it
-stays an integral, evaluated numerically where it is compared. ``\\int`` without both bounds (over
+angle) is never the φ integrated over; an integral over the time is not read (the motion's
+quantities depend on it without the integrand saying so). SymPy works the integral out where the
+integrand is a polynomial in the variable and its sine and cosine; otherwise it stays an integral,
+evaluated numerically where it is compared. ``\\int`` without both bounds (over
 the body, ``\\int_V``, ``\\int dm``) is not read here: the scanner refuses it, as before.
 """
 from __future__ import annotations
@@ -91,8 +93,17 @@ def definite_integral(parser, env, tok):
     var = parser.atom(var_tok, env)
     if not isinstance(var, sp.Symbol) or not var.is_commutative:
         parser.fail("an integral over what is not a scalar", var_tok)
+    if var.name == "t":     # the motion's quantities depend on the time without saying so
+        parser.fail("an integral over the time", var_tok)
     x = sp.Dummy(var.name, real=True)
-    value = sp.Integral(sp.sympify(integrand).xreplace({var: x}), (x, bounds["_"], bounds["^"]))
-    done = value.doit()
-    return done if not done.has(sp.Integral) else value
+    integrand = sp.sympify(integrand).xreplace({var: x})
+    value = sp.Integral(integrand, (x, bounds["_"], bounds["^"]))
+    return value.doit() if _elementary(integrand, x) else value
+
+
+def _elementary(integrand, x) -> bool:
+    """A polynomial in x, sin x and cos x: SymPy works its integral out in a bounded time (any other
+    integrand is kept as an integral, compared numerically)."""
+    s, c = sp.Dummy(), sp.Dummy()
+    return integrand.xreplace({sp.sin(x): s, sp.cos(x): c}).is_polynomial(x, s, c)
 
