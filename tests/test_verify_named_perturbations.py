@@ -37,3 +37,9 @@ def test_without_a_remainder_in_the_section_an_equation_is_held_exactly():
 def test_a_name_the_perturbation_does_not_tie_leaves_the_equation_to_the_rest_of_the_reader():
     body = "$$I_1\\dot\\eta_1 = (I_2 - I_3)\\Omega\\eta_3 + N_1 + O(\\eta^2)$$"
     assert all("perturbation" not in c.why for c in kept.check_text(HEAD + body))
+
+
+def test_a_symbol_added_to_a_moving_value_is_no_perturbation_of_a_steady_spin():
+    head = HEAD.replace("$\\omega_2 = \\Omega + \\eta_2$", "$\\omega_2 = A\\cos(\\Omega t) + \\eta_2$")
+    body = "$$I_1\\dot\\eta_1 = (I_2 - I_3)A\\eta_3 + O(\\eta^2)$$"
+    assert all("perturbation" not in c.why for c in kept.check_text(head + body))

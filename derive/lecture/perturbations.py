@@ -5,7 +5,8 @@ I_3)\\eta_3 + O(\\eta^2)``, ``\\ddot\\eta_1 = \\frac{(I_2 - I_3)(I_1 - I_2)}{I_3
 
 Takes: the checker's items and statements (`derive.lecture.notes_check.Checker`). Gives: the mixin
 `Perturbations`. ``_perturbation_named`` records, for the rest of the section, each ηᵢ with its
-component i and its constant cᵢ (ω̃ᵢ = cᵢ + ηᵢ; a number, or in symbols the text already has). ``_perturbed`` judges a statement in the ηᵢ
+component i and its constant cᵢ (ω̃ᵢ = cᵢ + ηᵢ; a number or the text's constants, never the time,
+an angle or a rate). ``_perturbed`` judges a statement in the ηᵢ
 that writes a rate η̇ᵢ or η̈ᵢ and no name the perturbation does not tie (the moments and cᵢ
 aside): with ηᵢ = ε eᵢ, η̇ᵢ the body's rate ω̃̇ᵢ = fᵢ(c + ε e) from Euler's equations, η̈ᵢ its
 derivative along them, the difference of the two sides must vanish to the order the statement
@@ -13,7 +14,8 @@ keeps, a written remainder ``O(\\eta^n)`` keeping order n − 1. A statement wit
 is held to first order once the section has written one (the text works to first order from
 there); otherwise exactly. It `holds` when every kept order vanishes, and `fails` when one does
 not (its why naming the order). Everything else is left to the rest of the reader.
-May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic.lagrangian`.
+May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic.lagrangian`,
+:mod:`derive.symbolic.rotations`.
 """
 from __future__ import annotations
 
@@ -23,7 +25,8 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
-from derive.symbolic.lagrangian import I1, I2, I3
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
+from derive.symbolic.rotations import ANGLES, RATES
 
 # a remainder O(η^n) (or O(|η|^n)): its letter and n
 _REMAINDER = re.compile(r"O\s*\(\s*\|?\s*(\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*\)")
@@ -61,8 +64,9 @@ class Perturbations:
         if len(new) != 1:
             return
         base = sp.expand(right - new[0])
-        if free(base) & (set(lx.W) | set(lx.WD) | set(new)) or any(isinstance(s, lx.Quantity) for s in free(base)):
-            return
+        moving = set(lx.W) | set(lx.WD) | set(ANGLES) | set(RATES) | set(ACCELS) | {lx.t} | set(new)
+        if free(base) & moving or any(isinstance(s, lx.Quantity) for s in free(base)):
+            return                  # a base that moves (ω̃₁ = A cos Ωt + ε) is no steady motion to perturb
         atom = self.vocab.generic[new[0]]
         self.ctx.perturbation[(atom.base, atom.sub, atom.bold)] = (i, base)
 
