@@ -106,6 +106,8 @@ class Context:
     vectors: dict = field(default_factory=dict)        # a vector of the text's → (its components, what it defined it as)
     centre_line: int | None = None                    # the line whose settings of the centre of mass hold
     constant_case: tuple | None = None                # (line, LaTeX) of a case the prose sets by constants alone
+    perturbation: dict = field(default_factory=dict)  # a symbol η the text names (base, index, bold) → (i, cᵢ) of ω̃ᵢ = cᵢ + ηᵢ
+    perturbation_order: int | None = None             # the order its equations keep once a remainder O(ηⁿ) was written
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
@@ -113,6 +115,7 @@ class Context:
         self.first_order = set()
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
         self.vectors, self.held, self.constant_case = {}, {}, None
+        self.perturbation, self.perturbation_order = {}, None
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False
 

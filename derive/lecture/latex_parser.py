@@ -16,6 +16,7 @@ from derive.lecture.vocabulary import (
 from derive.lecture import body_dot
 from derive.lecture import gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
+from derive.lecture.definite_integrals import definite_integral
 from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
                                          rate_of, reading, symbol_rate, written_rate)
@@ -117,7 +118,7 @@ class _Parser:
             return True
         if tok.kind == "op" and tok.value in "({":
             return True
-        return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial") | FUNCTIONS.keys()
+        return tok.kind == "cmd" and tok.value in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "int") | FUNCTIONS.keys()
 
     def term(self, env):
         value = self.operand(env)
@@ -299,6 +300,8 @@ class _Parser:
                 return value ** power if power is not None else value
             if name == "sum":
                 return self.sum(env, tok)
+            if name == "int":
+                return definite_integral(self, env, tok)
             self.fail(f"'\\{name}' here")
         self.fail(f"unexpected {tok.value!r}")
 

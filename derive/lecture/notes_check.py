@@ -57,6 +57,8 @@ from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.free_integrals import FreeIntegrals
+from derive.lecture.integral_claims import IntegralClaims
+from derive.lecture.perturbations import Perturbations
 from derive.lecture.written_out import WrittenOut
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
@@ -80,7 +82,7 @@ from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
 from derive.lecture.spellings import spellings, written_back
 from derive.lecture.stated_convention import general_form
-from derive.lecture.statements import continues, statements, top_level
+from derive.lecture.statements import continues, repeated_labels, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
@@ -88,29 +90,6 @@ from derive.lecture.vector_claims import VectorStatements
 from derive.lecture.inferred_convention import ConventionProbe, inferred
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
-
-
-
-_LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
-
-
-def _repeated_labels(pieces) -> dict:
-    """Rows of one block that set one label twice (``I_{x} = …``, ``I_{x} = …``, ``I_{z} = …``): the
-    second is a typo for the index the block leaves out. Row → its correction."""
-    rows = [(p, _LABEL.match(p)) for p in pieces]
-    out = {}
-    for base in {m.group(1) for _, m in rows if m}:
-        mine = [(p, m) for p, m in rows if m and m.group(1) == base]
-        subs = [m.group(3) or m.group(4) for _, m in mine]
-        for family in ("123", "xyz"):
-            if len(mine) < 3 or not set(subs) <= set(family):
-                continue
-            left = [x for x in family if x not in subs]
-            twice = [k for k in range(len(subs)) if subs[k] in subs[:k]]
-            if len(left) == 1 and len(twice) == 1 and mine[twice[0]][0] != mine[subs.index(subs[twice[0]])][0]:
-                p, m = mine[twice[0]]
-                out[p] = (p[:m.start(2)] + "{" + left[0] + "}" + p[m.end(2):]).strip()
-    return out
 
 
 _UNTIED = ("A", "B", "C")
@@ -124,7 +103,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
               AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
@@ -177,7 +156,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
         items = self.notes.items
         k = 0
         while k < len(items):
-            item = items[k]
+            item, met = items[k], set(self.vocab.generic)
             if self.notes.names is not None:
                 self.notes.names.here = item.line
             if item.kind == "heading":
@@ -209,6 +188,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
                     k += 1
                     latex = latex + " " + items[k].latex
                 self._display_probed(item, latex)
+            self._perturbation_named(item, met)
             k += 1
         self._flush()
         self._place_flushed(len(self.claims))
@@ -238,7 +218,7 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
             self._close_display()
             return
         self._named_at_chain_end(latex, item.line)
-        relabelled = _repeated_labels(pieces)
+        relabelled = repeated_labels(pieces)
         previous, mark = None, None
         for k, piece in enumerate(pieces):
             if k == len(pieces) - 1 > 0 and statements(latex.rsplit("\\Rightarrow", 1)[-1]) == [piece]:
@@ -301,7 +281,8 @@ class Checker(ConventionProbe, SectionConvention, ConstantCases, Conditions, Eul
             return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
-        if self._operator(line, piece, text) or self._coordinate(line, piece, text):
+        if self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) or self._operator(line, piece, text) \
+                or self._coordinate(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:

@@ -386,3 +386,25 @@ def continues(before: str, after: str) -> bool:
         return False
     return not re.search(r"(?<![<>!\\])=|(?<!\\left)(?<!\\right)[<>]|\\(le|ge|leq|geq|lt|gt|approx|equiv)\b",
                          head.split("\\\\")[0])
+
+
+_LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
+
+
+def repeated_labels(pieces) -> dict:
+    """Rows of one block that set one label twice (``I_{x} = …``, ``I_{x} = …``, ``I_{z} = …``): the
+    second is a typo for the index the block leaves out. Row → its correction."""
+    rows = [(p, _LABEL.match(p)) for p in pieces]
+    out = {}
+    for base in {m.group(1) for _, m in rows if m}:
+        mine = [(p, m) for p, m in rows if m and m.group(1) == base]
+        subs = [m.group(3) or m.group(4) for _, m in mine]
+        for family in ("123", "xyz"):
+            if len(mine) < 3 or not set(subs) <= set(family):
+                continue
+            left = [x for x in family if x not in subs]
+            twice = [k for k in range(len(subs)) if subs[k] in subs[:k]]
+            if len(left) == 1 and len(twice) == 1 and mine[twice[0]][0] != mine[subs.index(subs[twice[0]])][0]:
+                p, m = mine[twice[0]]
+                out[p] = (p[:m.start(2)] + "{" + left[0] + "}" + p[m.end(2):]).strip()
+    return out

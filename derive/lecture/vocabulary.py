@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.lecture import elliptic
+from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
@@ -372,6 +373,10 @@ def _scanned(s: str) -> tuple[Tok, ...]:
                 continue
             if name in FUNCTIONS or name in ("frac", "dfrac", "tfrac", "sqrt", "sum", "partial", "cdot",
                                              "times", "otimes", "pm", "mp", "infty", "ldots", "cdots", "dots", "det"):
+                toks.append(Tok("cmd", name, i))
+                i = m.end()
+                continue
+            if name == "int" and written_with_bounds(s, i):     # a definite integral (its bounds written)
                 toks.append(Tok("cmd", name, i))
                 i = m.end()
                 continue

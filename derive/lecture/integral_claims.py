@@ -1,0 +1,110 @@
+"""A statement with a definite integral written out (``\\int_0^h \\mathrm{d} z \\int_0^{dz/h}
+\\mathrm{d} r \\int_0^{2\\pi} \\mathrm{d}\\phi = \\frac{\\pi d^2 h}{3}``, ``R = \\int_0^h … \\, z =
+\\frac{3h}{4}``, ``K(k) = \\int_0^1 \\frac{\\mathrm{d}s}{\\sqrt{…}} = \\int_0^{\\pi/2} \\frac{\\mathrm{d}\\phi}{\\sqrt{…}}``).
+
+Takes: a statement of the notes checker (`derive.lecture.notes_check.Checker`) whose text holds an
+integral with both bounds written (`derive.lecture.definite_integrals`). Gives: the mixin
+`IntegralClaims`, whose ``_definite_integral`` judges the links of the statement's chain that put
+an integral beside a value it works out to: a closed form in no name the integral does not have
+(its value, not a condition such as ∫ρ dV = M that sets a name), or a second integral in the same
+names. Such a link `holds` when SymPy finds the two equal, or where an integral stays unevaluated,
+when they agree to 30 digits at three points; it `fails` when both sides are closed forms that
+differ at a point of positive values (the text's settings put in first), its why giving the
+integral's value as written. A numeric disagreement is never a flag (a point may leave the
+integral's domain). Nothing else of the statement is read: a name set to an integral (``I_1 =
+\\int …``) is neither a setting nor a definition, since a text's integral may leave out a density
+or a Jacobian its name means; the statement stays `unchecked`, saying so.
+May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_integrals`.
+"""
+from __future__ import annotations
+
+import random
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.definite_integrals import DEFINITE
+
+_DIGITS = 30
+
+
+def _spans(text, parsed):
+    """Each member's source text, from its position to the next member's."""
+    starts = [m.pos for m in parsed.members] + [len(text)]
+    return [text[starts[k]:starts[k + 1]] for k in range(len(parsed.members))]
+
+
+def _points(names, count=3):
+    """``count`` points of positive values below 1 (an elliptic modulus stays in its domain), the
+    same for every run (a verdict never depends on a draw)."""
+    rng = random.Random(20261130)
+    return [{s: sp.Rational(rng.randint(11, 89), 97) for s in names} for _ in range(count)]
+
+
+def _agree(a, b, names) -> bool | None:
+    """True when a and b agree at every point, False when they differ at one, None where a point gives
+    no real value."""
+    for point in _points(names):
+        x, y = (sp.N(v.xreplace(point), _DIGITS) for v in (a, b))
+        if not (x.is_number and y.is_number) or x.has(sp.I, sp.nan, sp.zoo) or y.has(sp.I, sp.nan, sp.zoo):
+            return None
+        if abs(x - y) > sp.Float(10) ** (5 - _DIGITS) * (1 + abs(x)):
+            return False
+    return True
+
+
+def _equal(a, b) -> bool:
+    d = sp.simplify(a - b)
+    return d == 0 or sp.simplify(sp.expand_trig(d)) == 0
+
+
+class IntegralClaims:
+    """The mixin's judging of a statement that writes a definite integral out."""
+
+    def _definite_integral(self, line, piece, text) -> bool:
+        """Judge the statement when it holds a definite integral (True: it is the integral rule's)."""
+        if DEFINITE.search(text) is None:
+            return False
+        try:
+            parsed = lx.parse(text, self.vocab)
+        except lx.NotRead as err:
+            self._add(line, piece, "unknown", "unchecked", err.why)
+            return True
+        spans, done = _spans(text, parsed), False
+        for k, rel in enumerate(parsed.relations):
+            if rel != "=" or not (DEFINITE.search(spans[k]) or DEFINITE.search(spans[k + 1])):
+                continue
+            a, b = parsed.members[k].value, parsed.members[k + 1].value
+            if not DEFINITE.search(spans[k]):
+                a, b = b, a                     # a: an integral
+            verdict = self._integral_link(sp.sympify(a), sp.sympify(b), bool(DEFINITE.search(spans[k + 1]))
+                                          and bool(DEFINITE.search(spans[k])))
+            if verdict is not None:
+                self._add(line, piece, "identity", *verdict)
+                done = True
+        if not done:
+            self._add(line, piece, "unknown", "unchecked",
+                      "a definite integral beside no value it works out to (a name set to it keeps the text's meaning, "
+                      "which may hold a density or a Jacobian the integral leaves out): not compared")
+        return True
+
+    def _integral_link(self, a, b, both):
+        """(verdict, why) of a = b, a an integral as SymPy read it, or None where it is not compared."""
+        names_a, names_b = a.free_symbols, b.free_symbols
+        if any(isinstance(s, lx.Quantity) for s in names_a | names_b) or not names_b <= names_a \
+                or (both and names_a != names_b):
+            return None
+        given = {s: v for s, v in self.ctx.subs.items() if s in names_a}
+        a, b = a.xreplace(given), b.xreplace(given)
+        names = a.free_symbols | b.free_symbols
+        worked = "SymPy works the integral out"
+        if not a.has(sp.Integral) and not b.has(sp.Integral):
+            if _equal(a, b):
+                return "holds", f"a definite integral written out: {worked} (simplify)"
+            if _agree(a, b, names) is False:
+                return "fails", (f"a definite integral written out: {worked} to {sp.latex(a)} as written, "
+                                 f"not {sp.latex(b)}")
+            return None
+        if _agree(a, b, names):
+            return "holds", f"a definite integral written out, evaluated numerically ({_DIGITS} digits at 3 points)"
+        return None

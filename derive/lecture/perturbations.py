@@ -1,0 +1,141 @@
+"""A perturbation the text names: ``\\omega_1 = \\eta_1``, ``\\omega_2 = 1 + \\eta_2``, ``\\omega_3 =
+\\eta_3`` (a body component of the angular velocity set to a constant plus a symbol the text has not
+used before), and the equations it then writes in those symbols, ``I_1\\dot\\eta_1 = (I_2 -
+I_3)\\eta_3 + O(\\eta^2)``, ``\\ddot\\eta_1 = \\frac{(I_2 - I_3)(I_1 - I_2)}{I_3I_1}\\eta_1``.
+
+Takes: the checker's items and statements (`derive.lecture.notes_check.Checker`). Gives: the mixin
+`Perturbations`. ``_perturbation_named`` records, for the rest of the section, each ηᵢ with its
+component i and its constant cᵢ (ω̃ᵢ = cᵢ + ηᵢ; a number or the text's constants, never the time,
+an angle or a rate). ``_perturbed`` judges a statement in the ηᵢ
+that writes a rate η̇ᵢ or η̈ᵢ and no name the perturbation does not tie (the moments and cᵢ
+aside): with ηᵢ = ε eᵢ, η̇ᵢ the body's rate ω̃̇ᵢ = fᵢ(c + ε e) from Euler's equations, η̈ᵢ its
+derivative along them, the difference of the two sides must vanish to the order the statement
+keeps, a written remainder ``O(\\eta^n)`` keeping order n − 1. A statement with no remainder
+is held to first order once the section has written one (the text works to first order from
+there); otherwise exactly. It `holds` when every kept order vanishes, and `fails` when one does
+not (its why naming the order). Everything else is left to the rest of the reader.
+May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic.lagrangian`,
+:mod:`derive.symbolic.rotations`.
+"""
+from __future__ import annotations
+
+import re
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.lecture.comparing import free
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
+from derive.symbolic.rotations import ANGLES, RATES
+
+# a remainder O(η^n) (or O(|η|^n)): its letter and n
+_REMAINDER = re.compile(r"O\s*\(\s*\|?\s*(\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*\)")
+_TERM = re.compile(r"\s*[+-]\s*" + _REMAINDER.pattern)
+
+
+def _without_remainders(text):
+    """(text without its O(·) terms, a member that is one alone read as 0; their letters and least n)."""
+    found = [(m.group(1).lstrip("\\"), int(m.group(2))) for m in _REMAINDER.finditer(text)]
+    out = _TERM.sub("", text)
+    out = _REMAINDER.sub("0", out)
+    return out, found
+
+
+class Perturbations:
+    """The mixin's recording of a named perturbation and its judging of the equations in it."""
+
+    def _perturbation_named(self, item, before):
+        """``\\omega_i = c + \\eta`` in the prose or a display, η new (not among ``before``, the text's
+        symbols met before the item was read): recorded for the section."""
+        latex = getattr(item, "latex", None)
+        if item.kind not in ("assumption", "inline", "display") or not latex or "\\omega" not in latex:
+            return
+        try:
+            parsed = lx.parse(latex, self.vocab)
+        except lx.NotRead:
+            return
+        if parsed.relations != ["="] or parsed.members[0].value not in lx.W:
+            return
+        i = lx.W.index(parsed.members[0].value)
+        right = sp.sympify(parsed.members[1].value)
+        new = [s for s in free(right) if isinstance(s, lx.Generic) and s not in before and sp.diff(right, s) == 1]
+        if len(new) > 1:        # ω₂ = Ω + η₂, both new: the perturbation is the one indexed as the component
+            new = [s for s in new if self.vocab.generic[s].sub == str(i + 1)]
+        if len(new) != 1:
+            return
+        base = sp.expand(right - new[0])
+        moving = set(lx.W) | set(lx.WD) | set(ANGLES) | set(RATES) | set(ACCELS) | {lx.t} | set(new)
+        if free(base) & moving or any(isinstance(s, lx.Quantity) for s in free(base)):
+            return                  # a base that moves (ω̃₁ = A cos Ωt + ε) is no steady motion to perturb
+        atom = self.vocab.generic[new[0]]
+        self.ctx.perturbation[(atom.base, atom.sub, atom.bold)] = (i, base)
+
+    def _perturbed(self, line, piece, text) -> bool:
+        """Judge a statement in the section's perturbation (True: judged here)."""
+        named = self.ctx.perturbation
+        if not named or "=" not in text:
+            return False
+        plain, remainders = _without_remainders(text)
+        letters = {key[0] for key in named}
+        if any(letter not in letters for letter, _ in remainders):
+            return False
+        try:
+            parsed = lx.parse(plain, self.vocab)
+        except lx.NotRead:
+            return False
+        if set(parsed.relations) != {"="}:
+            return False
+        eps = sp.Dummy("epsilon")
+        e = [sp.Dummy(f"e{k + 1}") for k in range(3)]
+        model, rates = self._perturbed_model(eps, e)
+        put, has_rate = {}, False
+        constants = {I1, I2, I3}.union(*(free(base) for _, base in named.values()))
+        for s in set().union(*(free(sp.sympify(m.value)) for m in parsed.members)):
+            atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
+            if atom is None or (atom.base, atom.sub, atom.bold) not in named:
+                if s not in constants:
+                    return False            # a name the perturbation does not tie
+                continue
+            i, _ = named[(atom.base, atom.sub, atom.bold)]
+            if atom.dots > 2 or atom.tilde or atom.hat or atom.primes or atom.sup:
+                return False
+            put[s] = (eps * e[i], model[i], rates[i])[atom.dots]
+            has_rate |= atom.dots > 0
+        if not has_rate:
+            return False
+        order = min((n for _, n in remainders), default=None)
+        if order is not None:
+            self.ctx.perturbation_order = order - 1
+        keep = order - 1 if order is not None else self.ctx.perturbation_order
+        for k in range(len(parsed.members) - 1):
+            r = sp.sympify(parsed.members[k].value - parsed.members[k + 1].value).xreplace(put)
+            self._add(line, piece, "equation of motion", *self._perturbed_verdict(r, eps, keep))
+        return True
+
+    def _perturbed_model(self, eps, e):
+        """ω̃̇ᵢ and ω̃̈ᵢ from Euler's equations (the section's settings of the moments in), at ω̃ = c + ε e."""
+        moments = {k: v for k, v in self.ctx.subs.items() if k not in lx.W and k not in lx.WD}
+        residuals = self.d.euler(moments)
+        rate = [sp.solve(residuals[i], lx.WD[i])[0] for i in range(3)]
+        second = [sum(sp.diff(rate[i], lx.W[j]) * rate[j] for j in range(3)) for i in range(3)]
+        at = {lx.W[i]: base + eps * e[i] for i, base in self.ctx.perturbation.values()}
+        return [sp.expand(x.xreplace(at)) for x in rate], [sp.expand(x.xreplace(at)) for x in second]
+
+    def _perturbed_verdict(self, r, eps, keep):
+        """(verdict, why) of a difference r(ε) that must vanish to order ``keep`` (None: exactly)."""
+        names = ", ".join(sorted({"\\" + key[0] if len(key[0]) > 1 else key[0] for key in self.ctx.perturbation}))
+        put = f"the text's perturbation \\omega_i = c_i + {names}_i put in"
+        r = sp.expand(r)
+        if free(r) & (set(lx.W) | set(lx.WD)):
+            return "unchecked", "a component the text's perturbation leaves untied"
+        if keep is None:
+            if r == 0:
+                return "holds", f"Euler's equations with {put}: exact (expand)"
+            return "unchecked", ("not exact in the text's perturbation, and no remainder O(·) written in its section "
+                                 "says to which order it is meant")
+        for n in range(keep + 1):
+            coefficient = sp.expand(r.coeff(eps, n))
+            if coefficient != 0:
+                return "fails", (f"Euler's equations with {put}: the terms of order {n} in {names} "
+                                 f"differ by {sp.latex(coefficient)}")
+        return "holds", f"Euler's equations with {put}, to order {keep} in {names} (expand)"

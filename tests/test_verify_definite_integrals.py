@@ -1,0 +1,54 @@
+"""A definite integral written out, its bounds and its differential given: worked out by SymPy and
+compared with the value the text gives it; a name set to an integral is never a setting."""
+import kept_readings as kept
+
+HEAD = "---\nconvention: z-x-z\n---\n# A solid of revolution\n\nA cylinder of radius $a$ and height $b$.\n\n"
+
+
+def _claims(body):
+    return [c for c in kept.check_text(HEAD + body) if "\\int" in c.latex]
+
+
+def test_a_volume_integral_written_with_its_jacobian_holds():
+    body = r"$$\int_0^b \mathrm{d} z \int_0^{a} \mathrm{d} r \int_0^{2\pi} \mathrm{d} \phi \, r = \pi a^2 b$$"
+    assert [c.verdict for c in _claims(body)] == ["holds"]
+
+
+def test_a_volume_integral_without_its_jacobian_fails_with_its_value():
+    body = r"$$\int_0^b \mathrm{d} z \int_0^{a} \mathrm{d} r \int_0^{2\pi} \mathrm{d} \phi = \pi a^2 b$$"
+    (claim,) = _claims(body)
+    assert claim.verdict == "fails" and "2 a b \\pi as written" in claim.why
+
+
+def test_an_inner_bound_in_the_outer_variable_and_the_differential_last():
+    body = (r"$$\int_0^b \mathrm{d} z \int_0^{az/b} \mathrm{d} r \, r = \frac{a^2 b}{6}$$" "\n\n"
+            r"$$\int_0^1 (1 - s^2) \, \mathrm{d}s = \frac{2}{3}$$" "\n\n"
+            r"$$\int_0^1 (1 - s^2) \, \mathrm{d}s = \frac{1}{3}$$")
+    assert [c.verdict for c in _claims(body)] == ["holds", "holds", "fails"]
+
+
+def test_two_integrals_equal_only_numerically_hold():
+    body = (r"$$\int_0^1 \frac{\mathrm{d}s}{\sqrt{(1-s^2)(1-k^2s^2)}} = "
+            r"\int_0^{\frac{\pi}{2}} \frac{\mathrm{d}\phi}{\sqrt{1-k^2\sin^2\phi}}$$")
+    assert [c.verdict for c in _claims(body)] == ["holds"]
+
+
+def test_the_variable_is_bound_an_euler_angle_of_the_same_letter_untouched():
+    body = r"$$\int_0^{2\pi} \cos^2\phi \, \mathrm{d}\phi = \pi$$"
+    assert [c.verdict for c in _claims(body)] == ["holds"]
+
+
+def test_a_name_set_to_an_integral_is_no_setting_and_a_condition_is_not_judged():
+    body = (r"$$I_3 = \int_0^b \mathrm{d} z \int_0^{a} \mathrm{d} r \int_0^{2\pi} \mathrm{d} \phi \, r^3$$" "\n\n"
+            r"$$\int_0^b \mathrm{d} z \int_0^{a} \mathrm{d} r \int_0^{2\pi} \mathrm{d} \phi \, \rho r = M$$" "\n\n"
+            r"$$I_3 = \frac{1}{2} M a^2$$")
+    claims = kept.check_text(HEAD + body)
+    assert [(c.kind, c.verdict) for c in claims if "\\int" in c.latex] == [("unknown", "unchecked")] * 2
+    alone = kept.check_text(HEAD + "\n\n\n\n" + body.rsplit("\n\n", 1)[1])
+    assert [(c.kind, c.verdict, c.why) for c in claims if "\\int" not in c.latex] == \
+        [(c.kind, c.verdict, c.why) for c in alone]
+
+
+def test_an_integral_over_the_time_is_not_read():
+    body = r"$$\int_0^T \dot\theta \, \mathrm{d}t = 0$$"
+    assert [c.verdict for c in _claims(body)] == ["unchecked"]
