@@ -31,14 +31,15 @@ EXIT_INTERNAL, EXIT_INTERRUPTED, EXIT_TERMINATED = 1, 130, 143
 
 
 def _cmd_generate(args) -> int:
-    from derive import generate
     from derive.codegen.render import CHECKOUT, GENERATED
 
     if not args.out and CHECKOUT is None and not args.check:
-        # Installed package: its generated/ copy lives in site-packages and is not ours to rewrite.
+        # Installed package: its generated/ copy lives in site-packages and is not ours to rewrite
+        # (refused before the generation's modules, SymPy among them, are imported).
         print("error: derive generate: --out: required when derive runs from an installed package "
               "(no source checkout to write generated/ into)", file=sys.stderr)
         return EXIT_INPUT
+    from derive import generate
     out = Path(args.out) if args.out else GENERATED
     if args.out:
         _output_dir(out, "--out", create=not args.check)  # before the (slow) generation

@@ -10,7 +10,8 @@ in the suite's own cache (``.cache/derive-tests``), so a fresh checkout compiles
 
 Other builds that are functions of their inputs are kept the same way: a wheel and the virtual
 environment it is installed in (:func:`kept_in_place`, as a venv only works where it was made),
-an undamaged compile cache that the cache's healing tests copy and damage.
+an undamaged compile cache that the cache's healing tests copy and damage, an exported FMU
+(:func:`kept_fmu`).
 """
 from __future__ import annotations
 
@@ -21,7 +22,9 @@ import os
 import platform
 import shutil
 import subprocess
+import sys
 import tempfile
+from importlib import metadata
 from pathlib import Path
 from typing import Callable, Iterable
 
@@ -145,3 +148,22 @@ def make_once(folder: Path, *argv: str) -> subprocess.CompletedProcess:
         if made.name != ".ok":
             shutil.copy2(made, folder / made.name)
     return subprocess.CompletedProcess(["make", "-s", "-C", str(folder), *argv], 0, "", "")
+
+
+def kept_fmu(name: str, scene_text: str, export: Callable[[Path, Path], None], how: Iterable[str] = ()) -> Path:
+    """The FMU ``export(scene, fmu)`` writes for a scene file of ``scene_text`` (``how``: anything
+    else ``export`` does that the outcome depends on), kept for the exact package, templates,
+    generated code, scene, libraries and compiler it is built from (:func:`once`): any change to
+    one builds it again, and a failed build (``export`` raises) is not kept."""
+    root = Path(__file__).resolve().parents[1]
+    inputs = files_under(root / "derive", root / "templates", root / "generated")
+    what = ["fmu", name, scene_text, *how, sys.version,
+            *(f"{dist} {metadata.version(dist)}" for dist in ("numpy", "sympy", "jinja2")),
+            repr(sorted((k, v) for k, v in os.environ.items() if k.startswith("SYMPY_") or k == "DERIVE_CFLAGS"))]
+
+    def build(work: Path) -> None:
+        scene = work / "scene.toml"
+        scene.write_text(scene_text, encoding="utf-8")
+        export(scene, work / f"{name}.fmu")
+
+    return once(what, inputs, build) / f"{name}.fmu"

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from derive.cli import main
-from tests.compile_once import make_once
+from tests.compile_once import kept_fmu, make_once
 
 ROOT = Path(__file__).resolve().parent.parent
 CONTACT = ROOT / "scenes" / "contact"
@@ -140,13 +140,16 @@ def test_contact_export_of_bad_input_is_exit_2_naming_the_key(tmp_path, capsys):
 
 @pytest.fixture(scope="module")
 def peg_fmu(tmp_path_factory):
-    """The round-peg top's FMU on a short run (exact Coulomb: it slides, sticks and rolls)."""
+    """The round-peg top's FMU on a short run (exact Coulomb: it slides, sticks and rolls), kept
+    between runs for its exact inputs (``compile_once.kept_fmu``), and its scene."""
     pytest.importorskip("fmpy")
     tmp = tmp_path_factory.mktemp("cfmu")
     scene = _short(tmp, "round_peg_top", 0.5, 51)
-    path = tmp / "peg.fmu"
-    assert main(["export", str(scene), "--fmu", str(path)]) == 0
-    return path, scene
+
+    def export(kept_scene: Path, path: Path) -> None:
+        assert main(["export", str(kept_scene), "--fmu", str(path)]) == 0
+
+    return kept_fmu("peg", scene.read_text(encoding="utf-8"), export), scene
 
 
 _COLUMNS = ("alpha", "beta", "gamma", "omega1", "omega2", "omega3", "axis_x", "axis_z", "energy",
@@ -225,8 +228,11 @@ def test_contact_fmu_of_the_tippe_top_with_its_stem_changes_spheres_as_simulate_
     import fmpy
 
     scene = _short(tmp_path, "tippe_top_stem", 0.7, 71)
-    path = tmp_path / "stem.fmu"
-    assert main(["export", str(scene), "--fmu", str(path)]) == 0
+
+    def export(kept_scene: Path, fmu: Path) -> None:
+        assert main(["export", str(kept_scene), "--fmu", str(fmu)]) == 0
+
+    path = kept_fmu("stem", scene.read_text(encoding="utf-8"), export)  # (kept for its exact inputs)
     md = fmpy.read_model_description(str(path))
     params = {v.name: float(v.start) for v in md.modelVariables if v.causality == "parameter"}
     assert params["contact.stem.radius"] == 0.005 and params["contact.stem.offset"] == 0.016

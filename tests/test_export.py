@@ -19,7 +19,7 @@ import pytest
 
 from derive.cli import main
 from derive.export import fmi
-from tests.compile_once import make_once
+from tests.compile_once import kept_fmu, make_once
 
 ROOT = Path(__file__).resolve().parent.parent
 SCENES = ROOT / "scenes"
@@ -205,30 +205,41 @@ except ImportError:  # pragma: no cover - the folder tests above still run
 STRICT_WARNINGS = ("-Wall", "-Wextra", "-Werror", "-pedantic")
 
 
+class _StrictBuildFailed(Exception):
+    """The FMU's binary did not compile under :data:`STRICT_WARNINGS` (the message: why)."""
+
+
 @pytest.fixture(scope="module")
 def top_fmu_build(tmp_path_factory):
     """(path, why the strict build failed or None): the reference top's FMU (dop853,
-    heavy_top), built once for the tests below, its binary compiled from its sources under
-    :data:`STRICT_WARNINGS` (which change no code); should that fail, built as derive builds it
-    for the other tests. The scene names the Euler-angle formulation and DOP853: auto would now
-    take the cheaper reduced-u model and the Taylor method, and these tests are about the
-    heavy_top's FMU (its states beta, beta_dot, ...) with DOP853."""
+    heavy_top), built for the tests below (:func:`kept_fmu`), its binary compiled from its
+    sources under :data:`STRICT_WARNINGS` (which change no code); should that fail, built as
+    derive builds it for the other tests. The scene names the Euler-angle formulation and
+    DOP853: auto would now take the cheaper reduced-u model and the Taylor method, and these
+    tests are about the heavy_top's FMU (its states beta, beta_dot, ...) with DOP853."""
     pytest.importorskip("fmpy")
-    tmp = tmp_path_factory.mktemp("fmu")
-    path = tmp / "top.fmu"
     text = (SCENES / "reference_top.toml").read_text(encoding="utf-8")
-    scene = tmp / "reference_top.toml"
     pinned = '[simulate]\nformulation = "euler-angles"\nmethod = "dop853"'
-    scene.write_text(text.replace("[simulate]", pinned, 1), encoding="utf-8")
-    assert "euler-angles" in scene.read_text(encoding="utf-8")
+    text = text.replace("[simulate]", pinned, 1)
+    assert "euler-angles" in text
     strict = [*fmi.compiler(), *STRICT_WARNINGS]
-    err = io.StringIO()
-    with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stderr(err):
-        patch.setattr(fmi, "compiler", lambda: strict)
-        rc = main(["export", str(scene), "--fmu", str(path)])
-    if rc != 0:
+
+    def export_strictly(scene: Path, path: Path) -> None:
+        err = io.StringIO()
+        with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stderr(err):
+            patch.setattr(fmi, "compiler", lambda: strict)
+            rc = main(["export", str(scene), "--fmu", str(path)])
+        if rc != 0:
+            raise _StrictBuildFailed(err.getvalue() or f"exit {rc}")
+
+    try:
+        return kept_fmu("top", text, export_strictly, strict), None
+    except _StrictBuildFailed as exc:
+        tmp = tmp_path_factory.mktemp("fmu")
+        scene, path = tmp / "reference_top.toml", tmp / "top.fmu"
+        scene.write_text(text, encoding="utf-8")
         assert main(["export", str(scene), "--fmu", str(path)]) == 0
-    return path, None if rc == 0 else err.getvalue() or f"exit {rc}"
+        return path, str(exc)
 
 
 @pytest.fixture(scope="module")

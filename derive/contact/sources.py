@@ -112,7 +112,7 @@ def source(shape: str, law: str) -> str:
         force = [(f"f[{i}]", f[i].subs(NORMAL, sp.Symbol("N"))) for i in range(3)]
         if takes_moments(lw):  # N first, with c1 and k.m to correct it; then f from N
             c1, _, _ = c.gap_coefficients(lw)
-            moment = c_body([("N", N), ("c1", c1), ("km", c.moment_coefficient(lw))])
+            moment = c_body([("N", N), ("c1", c1), ("km", c.moment_coefficient)])
             sliding = c_body(force, local=("N",))
         else:
             sliding = c_body([("N", N)] + force, local=("N",))
