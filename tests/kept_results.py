@@ -2,13 +2,13 @@
 between test runs in the suite's cache, as tests/kept_readings.py keeps the reader's claims.
 
 A result is kept under ``$DERIVE_CACHE/kept-results/<name>/<source key>/``, named by everything
-it depends on: the arguments it is computed from (``what``, by their ``repr``), the bytes of the
-files whose code computes it (``sources``: the test module holding the reference, say) and the
-environment (:func:`derive.runtime.cache.derivation_fingerprint` without folders: the interpreter,
-every installed library's version, SymPy's settings). A run computes again whatever any of them
-changed; a run after one that changed nothing compares the code under test with the same
-reference without computing it. A computation that raises is never kept. The :data:`KEEP` most
-recently used source keys of each name stay.
+it depends on: the arguments it is computed from (``what``, by their ``repr``), the paths and
+bytes of the files whose code computes it (``sources``: the test module holding the reference,
+say) and the environment (:func:`derive.runtime.cache.derivation_fingerprint` without folders:
+the interpreter, every installed library's version, SymPy's settings). A run computes again
+whatever any of them changed; a run after one that changed nothing compares the code under test
+with the same reference without computing it. A computation that raises is never kept. The
+:data:`KEEP` most recently used source keys of each name stay.
 """
 from __future__ import annotations
 
@@ -30,11 +30,11 @@ def _environment() -> str:
 
 
 def source_key(sources) -> str:
-    """The key of ``sources``' bytes (with their names) and of the environment."""
+    """The key of ``sources``' bytes (with their paths) and of the environment."""
     h = hashlib.sha256(_environment().encode())
     for path in sources:
-        path = Path(path)
-        h.update(path.name.encode() + b"\0" + hashlib.sha256(path.read_bytes()).digest())
+        path = Path(path).resolve()
+        h.update(str(path).encode() + b"\0" + hashlib.sha256(path.read_bytes()).digest())
     return h.hexdigest()[:32]
 
 
