@@ -2,6 +2,8 @@
 and their events, the integrals each case keeps, the analysis, and bad scenes."""
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 import sympy as sp
@@ -13,6 +15,7 @@ from derive.contact.phases import quaternion_matrix
 from derive.contact.scene import read
 from derive.contact.simulate import initial_state, params, quaternion, run_scene
 from derive.errors import IntegrationError, SceneError
+from kept_results import kept
 
 O = {name: i for i, name in enumerate(OUTPUTS)}
 TIPPE = {"body": {"I1": 8e-7, "I3": 7e-7}, "gravity": {"M": 0.006, "g": 9.81},
@@ -49,6 +52,14 @@ def _slip_rate(k, phase, y, p, d, h=1e-6):
     return (u(y + h * dy) - u(y - h * dy)) / (2 * h)
 
 
+def reference(name, args, compute):
+    """``compute()``, an independent derivation's numbers, kept between test runs
+    (tests/kept_results.py) under ``name``, its arguments and this file's bytes: the contact
+    equations are held to it on every run, it is derived again when this file or the
+    environment changes."""
+    return kept("contact-reference", (name, args), compute, [Path(__file__)])
+
+
 P_TIPPE = np.array([8e-7, 8e-7, 7e-7, 0.006, 9.81, 0.015, 0.003, 0.3, 0.0, 0.0, 0.0])
 
 
@@ -75,12 +86,12 @@ def test_the_rolling_force_keeps_the_contact_point_at_rest(shape):
     assert np.max(np.abs(_slip_rate(k, 1, y, p, np.zeros(3)))) < 1e-7
 
 
-def test_the_normal_force_equals_an_independent_lagrangian_derivation():
-    """A pointed top on a frictionless plane from L = ½ M ż² + T_rot − M g z(β), z = l cos β, with
-    the Euler–Lagrange equations written out here: N = M (g + z̈)."""
+def _pointed_top_on_a_frictionless_plane(I1, I3, M, g, l, state):
+    """z̈ and ω̃ of a pointed top on a frictionless plane at ``state`` (α, β, γ and their rates)
+    from L = ½ M ż² + T_rot − M g z(β), z = l cos β, with the Euler–Lagrange equations written
+    out here."""
     b, a_, g_ = sp.symbols("b a c", real=True)
     bd, ad, gd = sp.symbols("bd ad gd", real=True)
-    I1, I3, M, g, l = 1e-4, 5e-5, 0.1, 9.81, 0.04
     w1 = -ad * sp.sin(b) * sp.cos(g_) + bd * sp.sin(g_)
     w2 = ad * sp.sin(b) * sp.sin(g_) + bd * sp.cos(g_)
     w3 = ad * sp.cos(b) + gd
@@ -92,11 +103,19 @@ def test_the_normal_force_equals_an_independent_lagrangian_derivation():
     eqs = [sum(sp.diff(L, v, w) * x for w, x in zip(qd, qdd)) + sum(sp.diff(L, v, w) * x for w, x in zip(q, qd))
            - sp.diff(L, c) for v, c in zip(qd, q)]
     sol = sp.solve(eqs, qdd, dict=True)[0]
-    state = {a_: 0.2, b: 0.6, g_: 0.4, ad: 2.0, bd: 1.5, gd: 90.0}
+    state = dict(zip((a_, b, g_, ad, bd, gd), state))
     bdd = float(sol[qdd[1]].subs(state))
     zdd = float((sp.diff(z, b, 2) * bd**2).subs(state)) + float(sp.diff(z, b).subs(state)) * bdd
+    return zdd, np.array([float(e.subs(state)) for e in (w1, w2, w3)])
+
+
+def test_the_normal_force_equals_an_independent_lagrangian_derivation():
+    """A pointed top on a frictionless plane from L = ½ M ż² + T_rot − M g z(β), z = l cos β, with
+    the Euler–Lagrange equations written out here: N = M (g + z̈)."""
+    I1, I3, M, g, l = 1e-4, 5e-5, 0.1, 9.81, 0.04
+    args = (I1, I3, M, g, l, (0.2, 0.6, 0.4, 2.0, 1.5, 90.0))
+    zdd, w = reference("pointed-top-lagrangian", args, lambda: _pointed_top_on_a_frictionless_plane(*args))
     p = np.array([I1, I1, I3, M, g, 0.0, -l, 0.0, 0.0, 0.0, 0.0])
-    w = np.array([float(e.subs(state)) for e in (w1, w2, w3)])
     k, y = _state("point", "none", p, (0.2, 0.6, 0.4), w)
     assert k.outputs(0, y, p, np.zeros(3))[O["N"]] == pytest.approx(M * (g + zdd), rel=1e-12)
 
@@ -430,7 +449,8 @@ def _routh_sphere_reference(t):
 
 def test_rouths_sphere_tilt_range_equals_an_independent_derivation():
     r = run_scene(read_example("rolling_sphere"), t_end=1.0, samples=10001)
-    ours, ref = _extrema(r.t, r.beta), _extrema(r.t, _routh_sphere_reference(r.t))
+    ours = _extrema(r.t, r.beta)
+    ref = _extrema(r.t, reference("routh-sphere", r.t.tobytes(), lambda: _routh_sphere_reference(r.t)))
     assert len(ref) >= 3
     for pick in (lambda e: e[e > 0.5], lambda e: e[e < 0.5]):
         assert np.max(np.abs(pick(ours)[:, None] - pick(ref)[None, :]).min(axis=0)) <= 1e-9
@@ -528,7 +548,8 @@ def _euler_disk_reference(t):
 
 def test_eulers_disk_rolls_as_an_independent_derivation_says():
     r = run_scene(read_example("euler_disk"), t_end=0.5, samples=501, rtol=1e-13, atol=1e-15)
-    assert np.max(np.abs(r.beta - _euler_disk_reference(r.t))) <= 1e-9
+    ref = reference("euler-disk", r.t.tobytes(), lambda: _euler_disk_reference(r.t))
+    assert np.max(np.abs(r.beta - ref)) <= 1e-9
     assert np.ptp(r.energy) <= 1e-11 * abs(r.energy[0])
 
 

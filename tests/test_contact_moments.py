@@ -9,7 +9,7 @@ from derive.cli import main
 from derive.contact.scene import read
 from derive.contact.simulate import run_scene
 from derive.errors import SceneError
-from test_contact import newton_euler_inertial
+from test_contact import newton_euler_inertial, reference
 
 TIPPE = {"body": {"I1": 8e-7, "I3": 7e-7}, "gravity": {"M": 0.006, "g": 9.81},
          "contact": {"shape": "sphere", "radius": 0.015, "offset": 0.003, "friction": "coulomb", "mu": 0.3,
@@ -99,9 +99,13 @@ def test_the_moments_move_the_sliding_tippe_top_as_an_independent_integration_do
     delta, rs, t_end = 2e-4, 1e-3, 0.1
     r = run_scene(_with(TIPPE, rolling_resistance=delta, spin_friction=rs),
                   t_end=t_end, samples=2, rtol=1e-12, atol=1e-14)
-    sol = newton_euler_inertial(1e-2, t_end, delta=delta, rs=rs)
-    R, w = sol.y[:9, -1].reshape(3, 3), sol.y[9:12, -1]
-    assert sol.t[-1] == t_end
+    def integrate():
+        sol = newton_euler_inertial(1e-2, t_end, delta=delta, rs=rs)
+        return sol.t[-1], sol.y[:, -1]
+
+    t_last, y = reference("newton-euler-with-moments", (1e-2, t_end, delta, rs), integrate)
+    R, w = y[:9].reshape(3, 3), y[9:12]
+    assert t_last == t_end
     assert r.axis[-1] == pytest.approx(R[:, 2], abs=1e-9)
     assert r.omega[-1] == pytest.approx(R.T @ w, rel=1e-8, abs=1e-7)
     plain = run_scene(TIPPE, t_end=t_end, samples=2, rtol=1e-12, atol=1e-14)

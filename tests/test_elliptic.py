@@ -1,5 +1,6 @@
 """Jacobi elliptic functions and integrals against mpmath at 50 digits, up to and at m = 1."""
 import math
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
@@ -9,6 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from derive.reference.elliptic import (ellipj_accurate, ellipk_m1, elliptic_f_from_jacobi, reduce_argument, sn2_rational_integral,)
+from kept_results import kept
 
 EPS = np.finfo(float).eps
 # Complementary parameters m1 = 1 - m: the brief's list plus one beyond double precision of m.
@@ -30,6 +32,21 @@ def mp_jacobi(u, m1, dps=50):
         return sn, cn, dn, mp.atan2(sn, cn) + 2 * mp.pi * n
 
 
+def reference(name, args, compute):
+    """``compute()``, an mpmath reference as doubles, kept between test runs (tests/kept_results.py)
+    under ``name``, its arguments (doubles) and this file's bytes: the functions under test are
+    held to it on every run, mpmath computes it again when this file or the environment changes."""
+    return kept("elliptic-reference", (name, args), compute, [Path(__file__)])
+
+
+def mp_jacobi_table(u, m1, columns=4):
+    """The first ``columns`` of :func:`mp_jacobi` (sn, cn, dn, am) at each double of ``u``, as
+    doubles (kept: :func:`reference`)."""
+    u = [float(x) for x in u]
+    return reference("jacobi", (tuple(u), float(m1), columns),
+                     lambda: np.array([[float(v) for v in mp_jacobi(x, m1)[:columns]] for x in u]))
+
+
 def sample_points(K, rng):
     if math.isinf(K):
         K = 20.0
@@ -44,7 +61,7 @@ def test_ellipj_matches_mpmath_up_to_a_thousand_periods(m1):
     K = ellipk_m1(m1)
     u = sample_points(K, rng)
     sn, cn, dn, am = ellipj_accurate(u, None, m1=m1)
-    ref = np.array([[float(v) for v in mp_jacobi(x, m1)] for x in u])
+    ref = mp_jacobi_table(u, m1)
     # sn, cn, dn are O(1): absolute error. am grows like u: error relative to its size.
     assert np.max(np.abs(sn - ref[:, 0])) < 1e-14
     assert np.max(np.abs(cn - ref[:, 1])) < 1e-14
@@ -67,7 +84,7 @@ def test_ellipj_where_scipy_fails_near_m_equal_one():
     u = np.array([50.0, 1234.5])
     assert not np.all(np.abs(sc.ellipj(u, 1 - m1)[1]) <= 1)
     sn, cn, dn, _ = ellipj_accurate(u, None, m1=m1)
-    ref = np.array([[float(v) for v in mp_jacobi(x, m1)[:3]] for x in u])
+    ref = mp_jacobi_table(u, m1, 3)
     assert np.max(np.abs(np.stack([sn, cn, dn], 1) - ref)) < 1e-14
 
 
@@ -77,7 +94,7 @@ def test_small_values_near_the_quarter_period_have_relative_accuracy(m1):
     K = ellipk_m1(m1)
     u = K * (1 - np.array([1e-3, 1e-6, 1e-9, 1e-12, 0.0]))
     _, cn, dn, _ = ellipj_accurate(u, None, m1=m1)
-    ref = np.array([[float(v) for v in mp_jacobi(x, m1)[:3]] for x in u])
+    ref = mp_jacobi_table(u, m1, 3)
     nz = ref[:, 1] != 0
     assert np.max(np.abs(cn[nz] / ref[nz, 1] - 1)) < 1e-10
     assert np.max(np.abs(dn / ref[:, 2] - 1)) < 1e-13
@@ -195,12 +212,14 @@ def test_rational_integral_of_sn_squared_matches_quadrature(m1, coef):
                                 lam, t, A, B, C, D, C + D)
     # The integrands are of one sign, so |integral| = integral of |integrand|: relative error.
     for x, g in zip(t, got):
-        ref = mp_rational_integral(A, B, C, D, m1, mp.mpf(w0), mp.mpf(lam), mp.mpf(x))
-        assert abs(g - float(ref)) < 2e-14 * abs(float(ref)), (x, g, ref)
+        ref = reference("rational-integral", (coef, m1, w0, lam, float(x)), lambda: float(
+            mp_rational_integral(A, B, C, D, m1, mp.mpf(w0), mp.mpf(lam), mp.mpf(x))))
+        assert abs(g - ref) < 2e-14 * abs(ref), (x, g, ref)
     # and, independently of any elliptic-integral code, by quadrature over a short span
     if C > 1e-5:  # (the sharp peak defeats a plain quadrature)
-        ref = mp_rational_quadrature(A, B, C, D, m1, w0, lam, t[1])
-        assert abs(got[1] - float(ref)) < 1e-13 * abs(float(ref))
+        ref = reference("rational-quadrature", (coef, m1, w0, lam, float(t[1])), lambda: float(
+            mp_rational_quadrature(A, B, C, D, m1, w0, lam, t[1])))
+        assert abs(got[1] - ref) < 1e-13 * abs(ref)
 
 
 def test_parameter_validation():

@@ -6,6 +6,7 @@ Euler-Lagrange equations in Euler angles) by a Taylor method whose coefficients 
 automatic differentiation in mpmath arithmetic (mp.dps = 30, local error ~1e-25).
 """
 import math
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
@@ -14,6 +15,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from derive.reference.exact import (euler_angles, euler_matrix, free_asymmetric, free_symmetric, heavy_top,)
+from kept_results import kept
 
 EPS = np.finfo(float).eps
 
@@ -191,9 +193,32 @@ def mp_euler_state(alpha, beta, gamma, ad, bd, gd):
         return w + [R[i, j] for i in range(3) for j in range(3)]
 
 
+def _exactly(v):
+    """``v`` (a number, or a list or tuple of them) as a key naming its exact value: an mpf by
+    its binary digits (its ``repr`` rounds to the working precision), a double by its float."""
+    if isinstance(v, (list, tuple)):
+        return tuple(_exactly(x) for x in v)
+    return ("mpf", v._mpf_) if isinstance(v, mp.mpf) else float(v)
+
+
+#: The right-hand sides a reference integrates, by name (the key of a kept reference).
+RHS = {"rigid": rigid_body_rhs, "euler-lagrange": euler_lagrange_rhs}
+
+
+def reference(rhs, args, y0, t):
+    """``taylor_solve(RHS[rhs](*args), y0, t)`` at 30 digits, kept between test runs
+    (tests/kept_results.py) under its arguments and this file's bytes: the closed forms are held
+    to it on every run, the integration runs again when this file or the environment changes.
+    The integrator itself is checked against known solutions afresh on every run."""
+    def compute():
+        with mp.workdps(30):
+            return taylor_solve(RHS[rhs](*args), y0, t)
+    return kept("exact-reference", (rhs, _exactly(args), _exactly(y0), _exactly(list(t))), compute,
+                [Path(__file__)])
+
+
 def mp_rigid(I, mgl, state0, t):
-    with mp.workdps(30):
-        ref = taylor_solve(rigid_body_rhs(I, mgl), state0, t)
+    ref = reference("rigid", (tuple(I), mgl), list(state0), t)
     return ref[:, :3], ref[:, 3:].reshape(-1, 3, 3)
 
 
@@ -454,9 +479,7 @@ def test_heavy_top_angles_match_the_euler_lagrange_equations(name):
     top = {**TOP, **over}
     t = np.linspace(0, 1.0, 5)
     tr = heavy_top(*top_args(top, *init), t)
-    with mp.workdps(30):
-        ref = taylor_solve(euler_lagrange_rhs(top["I1"], top["I3"], top["M"] * top["g"] * top["l"]),
-                           list(init), t)
+    ref = reference("euler-lagrange", (top["I1"], top["I3"], top["M"] * top["g"] * top["l"]), list(init), t)
     for k, angle in enumerate((tr.alpha, tr.beta, tr.gamma)):
         assert np.max(np.abs(angle - ref[:, k])) < 1e-12, (k, np.max(np.abs(angle - ref[:, k])))
 

@@ -1,6 +1,8 @@
 """The off-axis heavy asymmetric top (no integrable case) against an independent 30-digit
 Taylor integration of Newton–Euler with a centre of mass anywhere (mpmath, tests/test_exact.py's
 integrator): the simulated ω̃ and axis, in every formulation without a singular set."""
+from pathlib import Path
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -9,6 +11,8 @@ import derive
 from derive.codegen.render import ROOT
 from derive.sim.scene import load_scene
 
+import test_exact
+from kept_results import kept
 from test_exact import taylor_solve
 
 SCENE = ROOT / "scenes" / "off_axis_top.toml"
@@ -38,18 +42,27 @@ def heavy_body_rhs(I, Mg, com):
 
 @pytest.fixture(scope="module")
 def reference():
+    """The 30-digit integration from the scene's numbers, kept between test runs
+    (tests/kept_results.py) under those numbers and the bytes of this file and of test_exact.py
+    (the integrator's): the simulations are held to it on every run."""
     sc = load_scene(SCENE)
     t = np.linspace(0.0, 0.6, 7)
     a, b, g = sc.initial.alpha, sc.initial.beta, sc.initial.gamma
-    with mp.workdps(30):
-        ca, sa, cb, sb, cg, sg = (f(mp.mpf(x)) for x, f in
-                                  ((a, mp.cos), (a, mp.sin), (b, mp.cos), (b, mp.sin),
-                                   (g, mp.cos), (g, mp.sin)))
-        Rz = lambda c, s: mp.matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])  # noqa: E731
-        R = Rz(ca, sa) * mp.matrix([[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]) * Rz(cg, sg)
-        state0 = [mp.mpf(w) for w in sc.initial.omega] + [R[i, j] for i in range(3) for j in range(3)]
-        gr = sc.gravity
-        ref = taylor_solve(heavy_body_rhs(sc.body.moments, gr.M * gr.g, gr.com), state0, t)
+    gr = sc.gravity
+    numbers = (tuple(map(float, sc.body.moments)), float(gr.M * gr.g), tuple(map(float, gr.com)),
+               tuple(map(float, sc.initial.omega)), (float(a), float(b), float(g)), tuple(t.tolist()))
+
+    def integrate():
+        with mp.workdps(30):
+            ca, sa, cb, sb, cg, sg = (f(mp.mpf(x)) for x, f in
+                                      ((a, mp.cos), (a, mp.sin), (b, mp.cos), (b, mp.sin),
+                                       (g, mp.cos), (g, mp.sin)))
+            Rz = lambda c, s: mp.matrix([[c, -s, 0], [s, c, 0], [0, 0, 1]])  # noqa: E731
+            R = Rz(ca, sa) * mp.matrix([[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]) * Rz(cg, sg)
+            state0 = [mp.mpf(w) for w in sc.initial.omega] + [R[i, j] for i in range(3) for j in range(3)]
+            return taylor_solve(heavy_body_rhs(sc.body.moments, gr.M * gr.g, gr.com), state0, t)
+
+    ref = kept("off-axis-reference", numbers, integrate, [Path(__file__), Path(test_exact.__file__)])
     return t, ref[:, :3], ref[:, 3:].reshape(-1, 3, 3)[:, :, 2]
 
 

@@ -9,6 +9,7 @@ be accurate.
 from __future__ import annotations
 
 from fractions import Fraction as F
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -21,6 +22,7 @@ from derive.methods import splitting
 from derive.runtime import splitter
 from derive.runtime.cbuild import STRICT_FLAGS
 from compile_once import compiles_once
+from kept_results import kept
 
 VARIANTS = [(True, ("gravity",)), (False, ("gravity_general",)), (True, ("gravity_general",)),
             (False, ()), (True, ())]
@@ -109,11 +111,17 @@ def test_schemes_meet_their_order_conditions_on_a_linear_system(name):
     # slope between h = 0.2 and 0.1, at 40 digits.
     import mpmath
 
+    # (the slopes depend on the step's sub-flows alone: kept between test runs under them and this
+    # file's bytes, tests/kept_results.py)
     scheme = splitting.SCHEMES[name]
-    with mpmath.workdps(40):
-        A, B = _rkn_pair(mpmath)
-        e1, e2 = (_local_errors_by_power_of_eps(mpmath, scheme, A, B, mpmath.mpf(h)) for h in ("0.2", "0.1"))
-        slopes = [float(mpmath.log(a / b, 2)) for a, b in zip(e1, e2)]
+
+    def slopes_at_40_digits():
+        with mpmath.workdps(40):
+            A, B = _rkn_pair(mpmath)
+            e1, e2 = (_local_errors_by_power_of_eps(mpmath, scheme, A, B, mpmath.mpf(h)) for h in ("0.2", "0.1"))
+            return [float(mpmath.log(a / b, 2)) for a, b in zip(e1, e2)]
+
+    slopes = kept("splitting-order-slopes", tuple(scheme.ops()), slopes_at_40_digits, [Path(__file__)])
     claimed = list(scheme.eps_orders) + [scheme.order] * (3 - len(scheme.eps_orders))
     for j, (s, p) in enumerate(zip(slopes, claimed), start=1):
         assert s > p + 1 - 0.3, (name, j, slopes)

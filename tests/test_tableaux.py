@@ -8,11 +8,13 @@ from __future__ import annotations
 
 import functools
 from fractions import Fraction as F
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 from derive.methods.tableaux import DOP853, GAUSS4, GAUSS6, RK4, TABLEAUX, Tableau
+from kept_results import kept
 
 ALL = list(TABLEAUX.values())
 
@@ -165,9 +167,17 @@ def test_dop853_order_8_conditions(order):
     assert worst < 1e-25, f"order {order}: residual {worst:.3g}"
 
 
+def _kept(what, compute):
+    """``compute()``, residuals in exact arithmetic over rooted trees, kept between test runs
+    (tests/kept_results.py) under ``what`` (every coefficient it is computed from, exact) and this
+    file's bytes: the orders are checked against them on every run."""
+    return kept("tableau-residuals", what, compute, [Path(__file__)])
+
+
 def test_dop853_is_not_order_9():
-    w = Weights(DOP853.A)
-    assert max(abs(float(w.residual(DOP853.b, t))) for t in trees(9)) > 1e-8
+    worst = _kept(("order 9", DOP853.A, DOP853.b),
+                  lambda: max(abs(float(Weights(DOP853.A).residual(DOP853.b, t))) for t in trees(9)))
+    assert worst > 1e-8
 
 
 def test_dop853_error_estimators_have_their_orders():
@@ -219,12 +229,16 @@ def _dop853_dense_weights(theta: F):
 def test_dop853_dense_output_has_order_7(theta):
     """sum_j b_j(theta) Phi_j(t) = theta^|t| / gamma(t) for all trees up to order 7."""
     A, bt = _dop853_dense_weights(theta)
-    w = Weights(A)
-    for n in range(1, DOP853.dense.order + 1):
-        for t in trees(n):
-            r = w.residual(bt, t, theta ** n / gamma(t))
-            assert abs(float(r)) < 1e-24, (n, t, float(r))
-    worst8 = max(abs(float(w.residual(bt, t, theta ** 8 / gamma(t)))) for t in trees(8))
+
+    def residuals():
+        w = Weights(A)
+        up_to_order = [(n, t, float(w.residual(bt, t, theta ** n / gamma(t))))
+                       for n in range(1, DOP853.dense.order + 1) for t in trees(n)]
+        return up_to_order, max(abs(float(w.residual(bt, t, theta ** 8 / gamma(t)))) for t in trees(8))
+
+    up_to_order, worst8 = _kept(("dense", A, bt, theta, DOP853.dense.order), residuals)
+    for n, t, r in up_to_order:
+        assert abs(r) < 1e-24, (n, t, r)
     assert worst8 > 1e-10
 
 
