@@ -85,7 +85,7 @@ def _is_value(v, defined) -> bool:
     parameters and the text's own symbols not yet defined (an example's ω sin α)."""
     if isinstance(v, sp.MatrixBase):
         return False
-    return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
+    return all(s in PARAMETERS or s == lx.t or (isinstance(s, lx.Generic) and s not in defined)
                for s in _free(v))
 
 
@@ -342,7 +342,7 @@ class TextNames(UnreadMembers):
         return base is None or base[0] not in self.ctx.defs
 
     def _settable(self, sym) -> bool:
-        return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym is lx.t or
+        return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym == lx.t or
                                                sym in (lx.p_alpha_sym(), lx.p_gamma_sym()))
 
     def _mark_defined(self, sym):
