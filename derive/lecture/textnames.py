@@ -552,7 +552,8 @@ class TextNames(UnreadMembers):
     def _partial(self, e):
         expr, pairs = self._resolve(e.expr), e.variable_count
         for var, n in pairs:
-            if var in ANGLES or var in RATES:
+            # ω̃ in the angles only where expr holds it: deriving ω̃ for a sequence costs more than the rest
+            if (var in ANGLES or var in RATES) and (not hasattr(expr, "has") or expr.has(*lx.W)):
                 expr = expr.xreplace({w: self.d.omega[i] for i, w in enumerate(lx.W)})
             expr = sp.diff(expr, var, n)
         return expr
