@@ -204,8 +204,11 @@ def _skipping_bare(checked):
     return list(zip(kept, kept[1:]))
 
 
+@functools.lru_cache(maxsize=1024)
 def _vanishes(e, seed) -> bool:
-    """Zero at random points, with a random smooth function for each unknown one."""
+    """Zero at random points, with a random smooth function for each unknown one (its points and
+    functions drawn from ``seed``: memoised, for each reading of the text in another sequence of
+    angles compares the same sides again)."""
     rng = random.Random(seed)
     x = sp.Dummy("x")
     for _ in range(_POINTS):

@@ -75,14 +75,21 @@ class Judging:
         tried = 0
         for f in targets:
             target = self._resolve(f)
+            seen = {}      # the target in the first case, once per form `_unify` gives it (a few at most)
             for cand, what in edits(value):
                 tried += 1
                 if tried > 400:
                     return None
                 val = self._resolve(cand, keep=keep)
                 a, b = self._unify([val, target])
-                if small is None and not quick_equal(self._case_subs(a, self.ctx.cases[0]), self._case_subs(b, self.ctx.cases[0])):
-                    continue
+                if small is None:
+                    ac = self._case_subs(a, self.ctx.cases[0])
+                    try:
+                        bc = seen[b] if b in seen else seen.setdefault(b, self._case_subs(b, self.ctx.cases[0]))
+                    except TypeError:       # a mutable matrix: not hashable, substituted as it stands
+                        bc = self._case_subs(b, self.ctx.cases[0])
+                    if not quick_equal(ac, bc):
+                        continue
                 ok, _ = self._compare(val, target, f"edit/{tried}", small, order)
                 if ok:
                     self._last_fix = cand

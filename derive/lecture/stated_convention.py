@@ -169,10 +169,12 @@ def _elementary(body: str):
     return None
 
 
-def _from_written_turns(maths) -> tuple | None:
-    """(sequence, names) of a product of three matrices the section writes out as elementary turns."""
+def _from_written_turns(with_cells, every) -> tuple | None:
+    """(sequence, names) of a product of three matrices the section writes out as elementary turns:
+    ``with_cells`` its normalised formulas that write cells (a turn written out is among them),
+    ``every()`` all its formulas normalised, read for the product once three turns are found."""
     turns = {}
-    for math in maths:
+    for math in with_cells:
         for m in _PMATRIX_DEF.finditer(math):
             turn = _elementary(m.group(2))
             if turn:
@@ -181,7 +183,7 @@ def _from_written_turns(maths) -> tuple | None:
         return None
     name = r"(" + _MATRIX + r"(?:\s*_\s*(?:\{[^{}]*\}|[0-9A-Za-z]))?)"
     product = re.compile(_MATRIX + r"\s*&?\s*=" + SPACING + name + SPACING + name + SPACING + name + r"(?=\s*(?:\\nonumber|=|$|\\\\|&))")
-    for math in maths:
+    for math in every():
         for m in product.finditer(math):
             factors = [turns.get(_key(m.group(k))) for k in (1, 2, 3)]
             if not all(factors) or len({f[2] for f in factors}) != 1:
@@ -217,12 +219,23 @@ def _from_prose(prose: str, math_free: str):
     return None
 
 
+def _writes_cells(latex: str, user: dict) -> bool:
+    """Whether `source.normalize` of the formula can hold an ``&`` (the cells of a matrix or an
+    alignment): only where the formula or one of the file's macros (``user``) writes one, for the
+    walk prints back the characters it is given and the steps around it write none (an HTML entity,
+    which `source.characters` decodes, starts with ``&`` itself)."""
+    return "&" in latex or any("&" in m.body or "&" in (m.default or "") for m in user.values())
+
+
 def stated(body: str) -> list[Stated]:
     """The conventions the text states, in order: one per section that states one (see the
     module docstring). ``body`` is the rendered text; lines are 1-based."""
     cuts = [0] + [m.start() for m in _SECTION.finditer(body)] + [len(body)]
     user = source.macros(body)
-    passive = _passive_letters([source.normalize(m.group(0), user) for m in source.MATH.finditer(body)])
+    # a turn written out is a matrix, its entries in cells (&): only formulas that write cells are
+    # normalised to look for one (the walk of each formula is most of the cost of this reading)
+    cells = lambda maths: [source.normalize(m, user) for m in maths if _writes_cells(m, user)]  # noqa: E731
+    passive = _passive_letters(cells(m.group(0) for m in source.MATH.finditer(body)))
     out: list[Stated] = []
     for a, b in zip(cuts, cuts[1:]):
         section = body[a:b]
@@ -230,7 +243,7 @@ def stated(body: str) -> list[Stated]:
             continue
         maths = [m.group(0) for m in source.MATH.finditer(section)]
         product = (next((p for p in (_from_product(m, passive) for m in maths) if p), None)
-                   or _from_written_turns([source.normalize(m, user) for m in maths]))
+                   or _from_written_turns(cells(maths), lambda: [source.normalize(m, user) for m in maths]))
         math_free = source.MATH.sub(lambda m: " " * len(m.group(0)), section)
         prose = _from_prose(section, math_free)
         if product and (prose is None or prose[0] == product[0]):

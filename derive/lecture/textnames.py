@@ -85,7 +85,7 @@ def _is_value(v, defined) -> bool:
     parameters and the text's own symbols not yet defined (an example's ω sin α)."""
     if isinstance(v, sp.MatrixBase):
         return False
-    return all(s in PARAMETERS or s is lx.t or (isinstance(s, lx.Generic) and s not in defined)
+    return all(s in PARAMETERS or s == lx.t or (isinstance(s, lx.Generic) and s not in defined)
                for s in _free(v))
 
 
@@ -347,7 +347,7 @@ class TextNames(UnreadMembers):
         return base is None or base[0] not in self.ctx.defs
 
     def _settable(self, sym) -> bool:
-        return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym is lx.t or
+        return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym == lx.t or
                                                sym in (lx.p_alpha_sym(), lx.p_gamma_sym()))
 
     def _mark_defined(self, sym):
@@ -558,7 +558,8 @@ class TextNames(UnreadMembers):
     def _partial(self, e):
         expr, pairs = self._resolve(e.expr), e.variable_count
         for var, n in pairs:
-            if var in ANGLES or var in RATES:
+            # ω̃ in the angles only where expr holds it: deriving ω̃ for a sequence costs more than the rest
+            if (var in ANGLES or var in RATES) and (not hasattr(expr, "has") or expr.has(*lx.W)):
                 expr = expr.xreplace({w: self.d.omega[i] for i, w in enumerate(lx.W)})
             expr = sp.diff(expr, var, n)
         return expr
