@@ -28,7 +28,6 @@ can be compared with a derived one directly.
 """
 from __future__ import annotations
 
-import functools
 import re
 
 import sympy as sp
@@ -75,7 +74,7 @@ from derive.lecture.vocabulary import (  # noqa: F401  (the reader's names, used
     p_gamma_sym,
     latex_atoms,
 )
-from derive.lecture.latex_parser import Member, Parsed, _Parser
+from derive.lecture.latex_parser import Parsed, _Parser
 
 
 def parse(latex: str, vocab: Vocabulary | None = None) -> Parsed:

@@ -13,8 +13,7 @@ from derive.lecture.vocabulary import (
     DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
-from derive.lecture import body_dot
-from derive.lecture import gradients
+from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.definite_integrals import definite_integral
 from derive.lecture.evaluation_points import holds_a_point
@@ -342,20 +341,17 @@ class _Parser:
         j = self.i + 2
         if not (j < len(self.toks) and self.toks[j].kind == "op" and self.toks[j].value == ","):
             return False
-        kept = self.args
-        if self._argument_list():
-            self.args = kept
-            return True
-        return False
+        kept, listed = self.args, self._argument_list()
+        self.args = kept
+        return listed
 
     def _of_time(self) -> bool:
         """At '(': the time alone, ``(t)``, read as the argument of the name before it."""
         inner, close = self.peek(1), self.peek(2)
-        if inner is None or inner.kind != "atom" or inner.value.with_(text="") != Atom("t") or \
-                close is None or (close.kind, close.value) != ("op", ")"):
-            return False
-        self.i += 3
-        return True
+        timed = inner is not None and inner.kind == "atom" and inner.value.with_(text="") == Atom("t") \
+            and close is not None and (close.kind, close.value) == ("op", ")")
+        self.i += 3 if timed else 0
+        return timed
 
     def _argument_list(self) -> bool:
         """At '(': if what follows is a list of bare symbols, read it as arguments and say so."""
@@ -378,8 +374,7 @@ class _Parser:
                 j += 2
                 continue
             if nxt is not None and nxt.kind == "op" and nxt.value == ")":
-                self.i = j + 2
-                self.args = tuple(args)
+                self.i, self.args = j + 2, tuple(args)
                 return True
             return False
         return False

@@ -522,8 +522,7 @@ class Vocabulary:
         if b == "V" and sub == "eff":
             return VEFF
         if not a.dots and not a.sub and not a.bold and not a.hat and not a.tilde and b in FREE_NAMES:
-            # the time is this module's t itself: a Symbol made again is another object once SymPy's
-            # cache has dropped it, and the checker knows t by identity
+            # this module's own t: a Symbol made again is another object once SymPy's cache drops it
             return t if b == "t" else sp.Symbol(FREE_NAMES[b], real=True)
         plain = not a.dots and not a.bold and not a.hat and not a.tilde and not a.primes
         if plain and not a.sub and b == "pi":
