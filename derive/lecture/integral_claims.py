@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import random
 
+import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
@@ -41,11 +42,36 @@ def _points(names, count=3):
     return [{s: sp.Rational(rng.randint(11, 89), 97) for s in names} for _ in range(count)]
 
 
+def _quadrature(e):
+    """An integral in one variable between numbers, by mpmath's tanh-sinh quadrature of its integrand
+    (SymPy's evalf would walk the integrand's tree at every node); None where it is not one."""
+    if len(e.limits) != 1 or len(e.limits[0]) != 3 or e.function.free_symbols - {e.limits[0][0]}:
+        return None
+    x, lo, hi = e.limits[0]
+    try:
+        f = sp.lambdify(x, e.function, "mpmath", dummify=True)
+        with mpmath.workdps(2 * _DIGITS):     # twice the digits: 1 - s² near s = 1 cancels half of them
+            return sp.sympify(mpmath.quad(f, [mpmath.mpmathify(sp.N(lo, 2 * _DIGITS)),
+                                              mpmath.mpmathify(sp.N(hi, 2 * _DIGITS))]))
+    except Exception:  # a bound or an integrand mpmath cannot take: evalf's own quadrature then
+        return None
+
+
+def _value(v, point):
+    """v at a point, to ``_DIGITS`` digits, its integrals in one variable by :func:`_quadrature`."""
+    found = {}
+
+    def numeric(e):
+        found[e] = _quadrature(e) if isinstance(e, sp.Integral) else None
+        return found[e] is not None
+    return sp.N(v.xreplace(point).replace(numeric, lambda e: found[e]), _DIGITS)
+
+
 def _agree(a, b, names) -> bool | None:
     """True when a and b agree at every point, False when they differ at one, None where a point gives
     no real value."""
     for point in _points(names):
-        x, y = (sp.N(v.xreplace(point), _DIGITS) for v in (a, b))
+        x, y = (_value(v, point) for v in (a, b))
         if not (x.is_number and y.is_number) or x.has(sp.I, sp.nan, sp.zoo) or y.has(sp.I, sp.nan, sp.zoo):
             return None
         if abs(x - y) > sp.Float(10) ** (5 - _DIGITS) * (1 + abs(x)):
