@@ -13,6 +13,7 @@ the body, ``\\int_V``, ``\\int dm``) is not read here: the scanner refuses it, a
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -97,8 +98,19 @@ def definite_integral(parser, env, tok):
         parser.fail("an integral over the time", var_tok)
     x = sp.Dummy(var.name, real=True)
     integrand = sp.sympify(integrand).xreplace({var: x})
-    value = sp.Integral(integrand, (x, bounds["_"], bounds["^"]))
-    return value.doit() if _elementary(integrand, x) else value
+    if _elementary(integrand, x):
+        return _worked(integrand.xreplace({x: _X}), bounds["_"], bounds["^"])
+    return sp.Integral(integrand, (x, bounds["_"], bounds["^"]))
+
+
+_X = sp.Dummy("x", real=True)
+"""The variable of every integral worked out, so that a display read again finds its value kept."""
+
+
+@functools.lru_cache(maxsize=1024)
+def _worked(integrand, lower, upper):
+    """∫ integrand d`_X` from lower to upper, worked out by SymPy (the value has no `_X` in it)."""
+    return sp.Integral(integrand, (_X, lower, upper)).doit()
 
 
 def _elementary(integrand, x) -> bool:

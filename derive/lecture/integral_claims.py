@@ -18,6 +18,7 @@ May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_in
 """
 from __future__ import annotations
 
+import functools
 import random
 
 import mpmath
@@ -79,7 +80,9 @@ def _agree(a, b, names) -> bool | None:
     return True
 
 
+@functools.lru_cache(maxsize=1024)
 def _equal(a, b) -> bool:
+    """a = b by simplify, then with the trigonometric functions expanded (kept: a probe reads a display again)."""
     d = sp.simplify(a - b)
     return d == 0 or sp.simplify(sp.expand_trig(d)) == 0
 
