@@ -6,21 +6,21 @@ its claims depend on: the text (a file's path and bytes, or the text and the pat
 the convention asked for, and :func:`source_key` (derive's source, the interpreter, the installed
 libraries and SymPy's settings). A run reads again what any of them changed; a run after one that
 changed nothing asserts on the same claims without reading. A reading the reader refuses (an
-exception) is never kept. The :data:`KEEP` most recently used source keys stay.
+exception) is never kept. The most recently used source keys stay (tests/kept_results.py's
+:data:`KEEP`).
 """
 from __future__ import annotations
 
 import functools
-import hashlib
 import os
-import pickle
 from pathlib import Path
 
 from derive.lecture import notes_check as nc
+from kept_results import kept_in
 from derive.runtime.cache import derivation_fingerprint
 
 PACKAGE = Path(__file__).resolve().parents[1] / "derive"
-FOLDER, KEEP = "notes-readings", 3
+FOLDER = "notes-readings"
 
 
 @functools.cache
@@ -30,36 +30,10 @@ def source_key() -> str:
     return derivation_fingerprint([PACKAGE])[:32]
 
 
-def _prune(root: Path) -> None:
-    """Remove all but the :data:`KEEP` most recently used folders of readings."""
-    folders = sorted(((f.stat().st_mtime, f) for f in root.iterdir() if f.is_dir()), reverse=True)
-    for _, old in folders[KEEP:]:
-        for kept in old.iterdir():
-            kept.unlink(missing_ok=True)
-        old.rmdir()
-
-
 def _kept(what: tuple, read) -> list:
     """``read()`` from the cache under the name of ``what`` and :func:`source_key`, else read and
     kept there."""
-    folder = Path(os.environ["DERIVE_CACHE"]) / FOLDER / source_key()
-    kept = folder / (hashlib.sha256(repr(what).encode()).hexdigest()[:32] + ".pickle")
-    try:
-        claims = pickle.loads(kept.read_bytes())
-        os.utime(folder)
-        return claims
-    except (OSError, EOFError, pickle.UnpicklingError):
-        pass  # not kept yet (or damaged): read
-    claims = read()
-    try:  # keeping it is a saving for the next run, never a reason for this one to fail
-        folder.mkdir(parents=True, exist_ok=True)
-        part = kept.with_suffix(f".{os.getpid()}.part")
-        part.write_bytes(pickle.dumps(claims))
-        part.replace(kept)
-        _prune(folder.parent)
-    except OSError:
-        pass
-    return claims
+    return kept_in(Path(os.environ["DERIVE_CACHE"]) / FOLDER / source_key(), what, read)
 
 
 def check_notes(path, convention: str | None = None) -> list:

@@ -62,7 +62,13 @@ def kept(name: str, what, compute, sources):
     sources : iterable of path
         The files whose code computes it.
     """
-    folder = Path(os.environ["DERIVE_CACHE"]) / FOLDER / name / source_key(sources)
+    return kept_in(Path(os.environ["DERIVE_CACHE"]) / FOLDER / name / source_key(sources), what, compute)
+
+
+def kept_in(folder: Path, what, compute):
+    """``compute()`` read from ``folder`` under the name of ``what``'s ``repr``; computed and kept
+    there when it is not (or is damaged), and all but the :data:`KEEP` most recently used folders
+    beside ``folder`` removed (tests/kept_readings.py keeps its readings so too)."""
     path = folder / (hashlib.sha256(repr(what).encode()).hexdigest()[:32] + ".pickle")
     try:
         value = pickle.loads(path.read_bytes())
