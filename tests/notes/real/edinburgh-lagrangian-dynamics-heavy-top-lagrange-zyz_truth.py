@@ -9,8 +9,6 @@ A = I_1 = I_2, C = I_3, potential M g l cos(vartheta). Every check is built here
 definitions (the Lagrangian is derived here), never from the text's later displays. Run with
 --write to regenerate the table.
 """
-import json
-import pathlib
 import sys
 
 import sympy as sp
@@ -268,27 +266,7 @@ ROWS = {
 }
 
 
-def toml_rows():
-    text = pathlib.Path(__file__).with_name(pathlib.Path(__file__).name.removesuffix("_truth.py") + ".tex").read_text()
-    lines = text.split("\n")
-    out = []
-    for ln in LINES:
-        row = ROWS[ln]
-        start = "\n".join(lines[ln - 1:ln + 1]).strip()[:22]
-        s = f"[[display]]\nline = {ln}\nstart = {json.dumps(start)}\nverdict = {json.dumps(row[0])}\nwhy = {json.dumps(row[1])}\n"
-        if row[0] in ("typo", "fails"):
-            if row[0] == "typo":
-                s += f"correction = {json.dumps(row[2])}\n"
-            s += f"hand_check_1 = {json.dumps(row[3])}\nhand_check_2 = {json.dumps(row[4])}\n"
-        out.append(s)
-    return "\n".join(out)
-
-
 if __name__ == "__main__":
     if "--write" in sys.argv:
-        for ln in LINES:
-            want = ROWS[ln][0]
-            got = "not a claim" if ln not in CHECKS else ("holds" if CHECKS[ln] else "slip")
-            assert got == want or (got == "slip" and want in ("typo", "fails")), (ln, got, want)
-        pathlib.Path(__file__).with_name(pathlib.Path(__file__).name.removesuffix("_truth.py") + ".truth.toml").write_text(toml_rows())
+        truth_table.write_table(__file__, ROWS, CHECKS, LINES)
     sys.exit(truth_table.compare(__file__, CHECKS, LINES))

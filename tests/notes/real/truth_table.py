@@ -32,6 +32,26 @@ def compare(script: str, checks: dict, lines: list) -> int:
     return 1 if bad else 0
 
 
+def write_table(script: str, rows: dict, checks: dict, lines: list) -> None:
+    """Write ``<slug>.truth.toml`` from ``rows`` (display line → (verdict, why[, correction], hand
+    check 1, hand check 2)), once each row agrees with the script's own derivation (``checks``)."""
+    path = pathlib.Path(script)
+    text = path.with_name(path.name.removesuffix("_truth.py") + ".tex").read_text().split("\n")
+    out = []
+    for ln in lines:
+        row = rows[ln]
+        got = "not a claim" if ln not in checks else ("holds" if checks[ln] else "slip")
+        assert got == row[0] or (got == "slip" and row[0] in ("typo", "fails")), (ln, got, row[0])
+        start = "\n".join(text[ln - 1:ln + 1]).strip()[:22]
+        s = f"[[display]]\nline = {ln}\nstart = {json.dumps(start)}\nverdict = {json.dumps(row[0])}\nwhy = {json.dumps(row[1])}\n"
+        if row[0] in ("typo", "fails"):
+            if row[0] == "typo":
+                s += f"correction = {json.dumps(row[2])}\n"
+            s += f"hand_check_1 = {json.dumps(row[3])}\nhand_check_2 = {json.dumps(row[4])}\n"
+        out.append(s)
+    path.with_name(path.name.removesuffix("_truth.py") + ".truth.toml").write_text("\n".join(out))
+
+
 def zero(expr) -> bool:
     """``expr`` (a scalar or a matrix) simplifies to zero."""
     m = expr if hasattr(expr, "shape") else sp.Matrix([expr])
