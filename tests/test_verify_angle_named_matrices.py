@@ -3,6 +3,7 @@
 matrix, and a matrix whose name lists the three angles in the sequence's order but which is the
 sequence's rotation with its first and third angles exchanged is a typo of it."""
 import kept_readings as kept
+from kept_readings import verdicts_by_line as verdicts
 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
 # the z-x-z rotation R = R_z(φ) R_x(θ) R_z(ψ) (body → space), written out
@@ -14,13 +15,6 @@ R = ("\\begin{pmatrix} \\cos\\phi\\cos\\psi - \\cos\\theta\\sin\\phi\\sin\\psi &
 SWAPPED = R.replace("\\phi", "@").replace("\\psi", "\\phi").replace("@", "\\psi")
 # the same with one entry written otherwise (a sign inside the (1, 1) entry)
 SWAPPED_OFF = SWAPPED.replace("\\cos\\psi\\cos\\phi - \\cos", "\\cos\\psi\\cos\\phi + \\cos", 1)
-
-
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
 
 
 def display(head, matrix, front=ZXZ, before=""):

@@ -1,18 +1,11 @@
 """The notes reader on a chain that names a matrix, ``\\boldsymbol{r} = (\\boldsymbol{e}_X \\; \\boldsymbol{e}_Y
 \\; \\boldsymbol{e}_Z) (X, Y, Z)^T = X \\boldsymbol{e}_X + …``: the name is recorded as the first member and
 the chain's other links are checked against it, as for a symbol."""
-import kept_readings as kept
+from kept_readings import verdicts_by_line as verdicts
 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
 ROW = "\\begin{pmatrix} \\boldsymbol{e}_X & \\boldsymbol{e}_Y & \\boldsymbol{e}_Z \\end{pmatrix} " \
     "\\begin{pmatrix} X \\\\ Y \\\\ Z \\end{pmatrix}"
-
-
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
 
 
 def test_a_basis_written_as_a_row_times_a_column_is_the_sum_its_chain_writes():

@@ -3,7 +3,7 @@ turn the text defines as a function of its angle (``C_Z(\\phi) = …``) is that 
 of its sequence (``C_Z(\\psi)``), a basis vector right of such matrices (``C_Z(\\psi) \\boldsymbol{e}_x``)
 is its unit column, and a column so multiplied out and equated to another that varies with the
 angles is an identity, not a condition."""
-import kept_readings as kept
+from kept_readings import verdicts_by_line as verdicts
 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
 CX = ("$$C_X(\\phi) = \\begin{pmatrix} 1 & 0 & 0 \\\\ 0 & \\cos \\phi & \\sin \\phi \\\\ 0 & -\\sin \\phi & "
@@ -12,13 +12,6 @@ CZ = ("$$C_Z(\\phi) = \\begin{pmatrix} \\cos \\phi & \\sin \\phi & 0 \\\\ -\\sin
       "0 & 0 & 1 \\end{pmatrix}$$\n\n")
 PRODUCT = ("\\begin{pmatrix} \\cos \\psi & \\sin \\psi\\cos\\theta & \\sin\\psi\\sin\\theta \\\\ -\\sin \\psi & "
            "\\cos \\psi\\cos\\theta & \\cos\\psi\\sin\\theta \\\\ 0 & -\\sin\\theta & \\cos\\theta \\end{pmatrix}")
-
-
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
 
 
 def test_a_turn_defined_as_a_function_of_its_angle_is_that_turn_at_another_angle():
