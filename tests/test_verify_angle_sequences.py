@@ -5,7 +5,7 @@ motion the text describes."""
 import pytest
 import sympy as sp
 
-from kept_readings import by_line
+from kept_readings import by_line, verdicts_by_line
 from derive.lecture import source
 from derive.symbolic import rotations as rot
 
@@ -13,8 +13,7 @@ ZYX = "---\nconvention: z-y-x\nangles: [\\psi_{\\beta \\alpha}, \\theta_{\\beta 
 ZXZ = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Notes\n\n"
 
 
-def verdicts(text):
-    return {line: {c.verdict for c in cs} for line, cs in by_line(text).items()}
+verdicts = verdicts_by_line
 
 
 def line_of(text, start):

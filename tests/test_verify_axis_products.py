@@ -31,11 +31,7 @@ def line_of(text, marker):
     return text[:text.rindex("$$", 0, text.index(marker))].count("\n") + 1
 
 
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
+verdicts = kept.verdicts_by_line
 
 
 def test_written_factors_that_are_the_turns_about_their_names_axes_hold():

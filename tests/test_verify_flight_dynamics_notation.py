@@ -3,14 +3,13 @@ written as a simulation names them (``d\\varphi = …``), the 3-2-1 sequence nam
 its turns written axis first, the aircraft's body rates listed rate by rate, the two glyphs of φ,
 the usual yaw-pitch-roll names, the shorthand cθ the text defines, and one name R used for each
 rotation matrix in turn."""
-from kept_readings import by_line
+from kept_readings import verdicts_by_line
 from derive.lecture import source
 
 PLAIN = "# Notes\n\n"
 
 
-def verdicts(text):
-    return {line: {c.verdict for c in cs} for line, cs in by_line(text).items()}
+verdicts = verdicts_by_line
 
 
 def test_a_plain_tex_fraction_is_a_fraction_and_a_word_starting_with_over_is_untouched():

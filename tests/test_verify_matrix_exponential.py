@@ -48,11 +48,7 @@ def test_an_exponential_that_may_become_a_matrix_is_not_merged_and_a_scalar_one_
     assert sp.sstr(MatrixExp(CrossMatrix(u))) == "exp(CrossMatrix(u))"
 
 
-def _verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
+_verdicts = kept.verdicts_by_line
 
 
 def test_the_exponential_of_the_cross_product_matrix_of_an_angle_about_an_axis_is_that_turn():

@@ -7,11 +7,7 @@ R3 = ("$$\\mathbf{R}_3 = \\left[ \\begin{array}{ccc} \\cos \\psi & \\sin \\psi &
       "-\\sin \\psi & \\cos \\psi & 0 \\\\ 0 & 0 & 1 \\end{array} \\right]$$\n\n")
 
 
-def verdicts(text):
-    out = {}
-    for c in kept.check_text(text):
-        out.setdefault(c.line, set()).add(c.verdict)
-    return out
+verdicts = kept.verdicts_by_line
 
 
 def test_a_product_with_a_dotted_matrix_and_a_transpose_is_multiplied_in_its_written_order():
