@@ -51,8 +51,7 @@ def test_compare_divides_the_contenders_best_by_ours_and_flags_an_unreached_leve
 
 
 def test_match_finds_the_loosest_tolerance_at_least_as_accurate_as_ours():
-    from derive.bench.targets import _match
-
+    _match = bench.match_tolerance
     solve = lambda r: (3.0 * r, 1)  # noqa: E731 - error proportional to rtol
     m = _match(solve, 1e-9)  # 1e-10 is already good enough: loosen while it stays so
     assert m["reached"] and m["rtol"] == 2e-10

@@ -11,10 +11,10 @@ wrong choice otherwise.
 """
 from __future__ import annotations
 
-import tomllib
 import warnings
 
 from derive.bench import timing
+from derive.bench.contenders import scene_data
 from derive.sim import examples
 import derive
 
@@ -42,8 +42,7 @@ def bench_auto_choice(levels=LEVELS, scenes=SCENES, blocks: int = 5) -> dict:
     10 % of it (a tie)."""
     rows = []
     for label, name, extra in scenes:
-        with open(examples.path(name), "rb") as fh:
-            data = tomllib.load(fh)
+        data = scene_data(examples.path(name))
         for rtol in levels:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")

@@ -40,7 +40,7 @@ import operator
 import time
 import tomllib
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -60,9 +60,6 @@ CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
                                              "nonlinear_solver_iteration": "functional"}),
           "casadi-cvodes-bdf": ("cvodes", {}),
           "casadi-idas": ("idas", {})}
-PYDY = ("pydy-odeint",)
-HEYOKA = ("heyoka-taylor",)
-NUMBALSODA = ("numbalsoda-dop853",)
 
 
 @functools.cache
@@ -109,19 +106,14 @@ class Problem:
     consts: dict
     y0: list
     t: np.ndarray
-    _cache: dict = field(default_factory=dict, repr=False)
-
-    @property
-    def const_names(self) -> tuple[str, ...]:
-        return CONST_NAMES[self.formulation]
 
     @property
     def const_values(self) -> list[float]:
-        return [self.consts[k] for k in self.const_names]
+        return [self.consts[k] for k in CONST_NAMES[self.formulation]]
 
     def functions(self, sin=math.sin, cos=math.cos, values=operator.methodcaller("tolist")):
         """(rhs, jac) of scipy_baselines for this formulation, over the constants given as
-        positional values in ``const_names`` order (numbers, or symbols for the peers)."""
+        positional values in ``CONST_NAMES`` order (numbers, or symbols for the peers)."""
         b = baselines()
         if self.formulation == "euler-angles":
             return (b.euler_top_rhs(*self.const_values, sin=sin, cos=cos, values=values),
@@ -188,19 +180,26 @@ def scipy_setup(prob: Problem, method: str):
     return {"fun": rhs, **({"jac": jac} if SCIPY[method] in ("Radau", "LSODA", "odeint") else {})}
 
 
+def _odeint(who: str, f, prob: Problem, rtol: float, atol: float, **kw):
+    """(Y, nfev) of ``scipy.integrate.odeint`` of ``f`` over the output times; its failure an
+    IntegrationError naming ``who``."""
+    from scipy.integrate import odeint
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        Y, info = odeint(f, prob.y0, prob.t, rtol=rtol, atol=atol, mxstep=1_000_000, full_output=True, **kw)
+    if info["message"] != "Integration successful.":
+        raise IntegrationError(f"{who}: {info['message']}")
+    return Y, int(info["nfe"][-1])
+
+
 def solve_scipy(prob: Problem, method: str, rtol: float, atol: float, setup=None):
-    from scipy.integrate import odeint, solve_ivp
+    from scipy.integrate import solve_ivp
 
     kw = setup or scipy_setup(prob, method)
     t = prob.t
     if SCIPY[method] == "odeint":
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            Y, info = odeint(kw["fun"], prob.y0, t, Dfun=kw["jac"], tfirst=True, rtol=rtol, atol=atol,
-                             mxstep=1_000_000, full_output=True)
-        if info["message"] != "Integration successful.":
-            raise IntegrationError(f"scipy odeint: {info['message']}")
-        return Y, int(info["nfe"][-1])
+        return _odeint("scipy odeint", kw["fun"], prob, rtol, atol, Dfun=kw["jac"], tfirst=True)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sol = solve_ivp(kw["fun"], (t[0], t[-1]), prob.y0, method=SCIPY[method], t_eval=t,
@@ -278,21 +277,9 @@ def _pydy_rhs(formulation: str):
     return f
 
 
-def pydy_setup(prob: Problem, method: str = "pydy-odeint"):
-    return _pydy_rhs(prob.formulation)
-
-
 def solve_pydy(prob: Problem, method: str, rtol: float, atol: float, setup=None):
-    from scipy.integrate import odeint
-
-    f = setup or pydy_setup(prob, method)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        Y, info = odeint(f, prob.y0, prob.t, args=(np.array(prob.const_values),), rtol=rtol, atol=atol,
-                         mxstep=1_000_000, full_output=True)
-    if info["message"] != "Integration successful.":
-        raise IntegrationError(f"pydy odeint: {info['message']}")
-    return Y, int(info["nfe"][-1])
+    f = setup or _pydy_rhs(prob.formulation)
+    return _odeint("pydy odeint", f, prob, rtol, atol, args=(np.array(prob.const_values),))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -421,9 +408,9 @@ class Contender:
 CONTENDERS = {
     "scipy": Contender("scipy", tuple(SCIPY), lambda p, m, r, a: scipy_setup(p, m), solve_scipy),
     "casadi": Contender("casadi", tuple(CASADI), casadi_setup, solve_casadi, per_tolerance_setup=True),
-    "pydy": Contender("pydy", PYDY, lambda p, m, r, a: pydy_setup(p, m), solve_pydy),
-    "heyoka": Contender("heyoka", HEYOKA, heyoka_setup, solve_heyoka, per_tolerance_setup=True),
-    "numbalsoda": Contender("numbalsoda", NUMBALSODA, numbalsoda_setup, solve_numbalsoda),
+    "pydy": Contender("pydy", ("pydy-odeint",), lambda p, m, r, a: _pydy_rhs(p.formulation), solve_pydy),
+    "heyoka": Contender("heyoka", ("heyoka-taylor",), heyoka_setup, solve_heyoka, per_tolerance_setup=True),
+    "numbalsoda": Contender("numbalsoda", ("numbalsoda-dop853",), numbalsoda_setup, solve_numbalsoda),
 }
 
 

@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import json
 import os
-import subprocess
-import sys
 import tempfile
 import timeit
 
 import numpy as np
 import derive
+from derive.bench import timing
 
 #: The body of the measurements: a symmetric top at 1 rad, spinning, for 20 s.
 BASE = {
@@ -28,15 +27,6 @@ BASE = {
     "simulate": {"t_end": 20.0, "samples": 1001},
 }
 GRAVITY = {"M": 1.0, "g": 9.81, "l": 0.1}
-
-FIRST_RUN_SCRIPT = r"""
-import json, sys, time
-import derive
-scene = json.loads(sys.argv[1])
-t0 = time.perf_counter()
-derive.simulate(scene)
-print(json.dumps({"first_run": time.perf_counter() - t0}))
-"""
 
 
 def scenes() -> tuple[dict, dict, dict]:
@@ -57,26 +47,24 @@ def bench_own_body(repeats: int = 5, number: int = 20) -> dict:
     gravity, restated, new = scenes()
     out = {}
     with tempfile.TemporaryDirectory(prefix="derive-bench-own-") as tmp:
-        run = subprocess.run([sys.executable, "-c", FIRST_RUN_SCRIPT, json.dumps(new)],
-                             capture_output=True, text=True, cwd=tmp,
-                             env=dict(os.environ, DERIVE_CACHE=tmp))
-        if run.returncode == 0:
-            out["first_run"] = json.loads(run.stdout.strip().splitlines()[-1])["first_run"]
+        run = timing.fresh(timing.FIRST_CALL_SCRIPT, json.dumps(new), dict(os.environ, DERIVE_CACHE=tmp), tmp)
+        if "error" in run:
+            out["first_run_error"] = run["error"]
         else:
-            out["first_run_error"] = (run.stderr.strip().splitlines() or ["?"])[-1][:200]
+            out["first_run"] = run["first_simulate"]
     pg, pr = derive.prepare(gravity), derive.prepare(restated)
     a, b = pg.run(), pr.run()
     out["formulation"] = a.formulation
     out["same_formulation"] = a.formulation == b.formulation
     out["max_axis_difference"] = float(np.max(np.abs(a.axis - b.axis)))
-    t_g = min(timeit.repeat(pg.run, number=number, repeat=repeats)) / number
-    t_r = min(timeit.repeat(pr.run, number=number, repeat=repeats)) / number
+
+    def per_call(fn):  # the best of ``repeats`` means over ``number`` calls
+        return min(timeit.repeat(fn, number=number, repeat=repeats)) / number
+
+    t_g, t_r = per_call(pg.run), per_call(pr.run)
     out["prepared_gravity_s"], out["prepared_restated_s"] = t_g, t_r
     out["gravity_ratio"] = t_r / t_g
-    s_g = min(timeit.repeat(lambda: derive.simulate(gravity), number=number,
-                            repeat=repeats)) / number
-    s_r = min(timeit.repeat(lambda: derive.simulate(restated), number=number,
-                            repeat=repeats)) / number
+    s_g, s_r = per_call(lambda: derive.simulate(gravity)), per_call(lambda: derive.simulate(restated))
     out["simulate_shipped_s"], out["simulate_restated_s"] = s_g, s_r
     out["warm_ratio"] = s_r / s_g
     return out

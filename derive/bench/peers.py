@@ -51,13 +51,6 @@ def _derive_error(data: dict, ref: np.ndarray, rtol: float):
     return B.axis_error(axis, ref), nfev
 
 
-def _peer_error(fam: str, prob: bc.Problem, ref: np.ndarray, rtol: float):
-    c = bc.CONTENDERS[fam]
-    method = PEERS[fam]
-    Y, nfev = c.solve(prob, method, rtol, B.ATOL_RATIO * rtol, c.setup(prob, method, rtol, B.ATOL_RATIO * rtol))
-    return B.axis_error(prob.axis(Y), ref), nfev
-
-
 def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
     """derive against each installed peer at equal error on the reference scene over
     [0, ``t_end``] (1001 samples), at each error level of ``levels``."""
@@ -83,13 +76,11 @@ def equal_error(cfg, fams: list[str], t_end: float, levels) -> dict:
             sim = lambda: derive.simulate(tuned)  # noqa: E731
             run = prepared.run
             for fam in peers:
-                m = B.match_tolerance(lambda x, fam=fam: _peer_error(fam, prob, ref, x), level, level)
+                m = B.match_tolerance(lambda x, fam=fam: B.contender_error(fam, PEERS[fam], prob, ref, x),
+                                      level, level)
                 entry = dict(m)
                 if m["reached"]:
-                    c, method = bc.CONTENDERS[fam], PEERS[fam]
-                    setup = c.setup(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"])
-                    theirs = lambda c=c, method=method, setup=setup, x=m["rtol"]: c.solve(  # noqa: E731
-                        prob, method, x, B.ATOL_RATIO * x, setup)
+                    theirs = B.contender_call(fam, PEERS[fam], prob, m["rtol"])
                     # the peer's call and then the axis from its states (NumPy): what its user
                     # computes to get the quantity both sides are judged on (derive's call
                     # returns the axis among its outputs)
@@ -171,7 +162,7 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     rtol = float(data["simulate"]["rtol"])
     target, _ = _derive_error(data, ref, rtol)
     prob = bc.problem(data, "euler-angles", "batch")
-    m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
+    m = B.match_tolerance(lambda x: B.contender_error("heyoka", PEERS["heyoka"], prob, ref, x), target, rtol)
     probs = [bc.problem(d, "euler-angles") for d in scenes]
     grid_run, final_run, width = heyoka_batch(prob, probs, m["rtol"])
     prepared, initial = _prepared_batch(scenes)
@@ -214,7 +205,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     tighter one than the scenes' own method's: heyoka is matched to it anew), timed in turns."""
     taylor = [dict(d, simulate=dict(d["simulate"], method="taylor")) for d in scenes]
     target, _ = _derive_error(taylor[0], ref, rtol)
-    m = B.match_tolerance(lambda x: _peer_error("heyoka", prob, ref, x), target, rtol)
+    m = B.match_tolerance(lambda x: B.contender_error("heyoka", PEERS["heyoka"], prob, ref, x), target, rtol)
     _, final_run, _ = heyoka_batch(prob, probs, m["rtol"])
     ran = derive.simulate_batch(taylor, outputs="final")  # warm: compile, load
     prepared, initial = _prepared_batch(taylor)
@@ -259,10 +250,8 @@ def fixed_cost(cfg, fams: list[str]) -> dict:
     fns = [prepared.run, lambda: derive.simulate(data), lambda: derive.simulate(next(fresh))]
     for fam in PEERS:
         if fam in fams:
-            c, method = bc.CONTENDERS[fam], PEERS[fam]
-            setup = c.setup(prob, method, rtol, B.ATOL_RATIO * rtol)
             names.append(fam)
-            fns.append(lambda c=c, method=method, setup=setup: c.solve(prob, method, rtol, B.ATOL_RATIO * rtol, setup))
+            fns.append(B.contender_call(fam, PEERS[fam], prob, rtol))
     times = dict(zip(names, timing.interleaved(fns, max(cfg.fixed_cost_calls, 15))))
     out = {"rtol": rtol, **times}
     for fam in PEERS:

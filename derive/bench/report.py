@@ -370,13 +370,13 @@ def wp_section(results: dict) -> list[str]:
               "the reading, checking and planning out. derive's one-off costs "
               "(derivation, code generation, compilation) are in the targets section; the contenders' one-off "
               "costs are excluded alike.", ""]
-    levels = " | ".join(f"{lv:.0e}" for lv in ERROR_LEVELS)
+    levels = " | ".join(f"{lv:.0e}" for lv in B.ERROR_LEVELS)
     tables = [("ratios", "scipy", "SciPy's best / derive's best (any formulation, any method):"),
               ("ratios_auto", "scipy", "SciPy's best / derive in the formulation `auto` picks (what "
                                        "`derive simulate` runs by default):")]
     tables += [("ratios", f, f"{FAMILY_NAMES[f]}'s best / derive's best:") for f in fams if f != "scipy"]
     for key, fam, what in tables:
-        L += [what, "", f"| scene | auto formulation | {levels} |", "|" + "---|" * (2 + len(ERROR_LEVELS))]
+        L += [what, "", f"| scene | auto formulation | {levels} |", "|" + "---|" * (2 + len(B.ERROR_LEVELS))]
         for wp in results["work_precision"]:
             L.append(f"| {wp['scene']} | {wp['auto']} | " + " | ".join(_ratio_cell(r) for r in wp[key][fam]) + " |")
         L.append("")
@@ -393,7 +393,7 @@ def wp_section(results: dict) -> list[str]:
               f"reference: {wp['reference']}.", "", f"![work-precision {wp['scene']}](wp_{wp['scene']}.png)", "",
               "| error ≤ | derive best | time | " + " | ".join(f"{FAMILY_NAMES[f]} best | time | ratio" for f in fams) + " |",
               "|---|---|---|" + "---|---|---|" * len(fams)]
-        for i, lv in enumerate(ERROR_LEVELS):
+        for i, lv in enumerate(B.ERROR_LEVELS):
             first = wp["ratios"][fams[0]][i]
             cells = [f"{lv:.0e}", first["ours"] or "—", ("≤ " if first["ours_bound"] else "") + _t(first["ours_time"])]
             for f in fams:
@@ -402,9 +402,6 @@ def wp_section(results: dict) -> list[str]:
             L.append("| " + " | ".join(cells) + " |")
         L.append("")
     return L
-
-
-ERROR_LEVELS = B.ERROR_LEVELS
 
 
 def drift_section(results: dict) -> list[str]:
@@ -446,8 +443,8 @@ def summary(results: dict) -> str:
              if len(results["families"]) > 1 else "")
           + " \\* = one side's cheapest run was already below the level (time is an upper bound); > = the "
           "contender never reached it; ours n/a = derive did not reach it.", ""]
-    levels = " | ".join(f"{lv:.0e}" for lv in ERROR_LEVELS)
-    L += [f"| scene | contender | {levels} |", "|" + "---|" * (2 + len(ERROR_LEVELS))]
+    levels = " | ".join(f"{lv:.0e}" for lv in B.ERROR_LEVELS)
+    L += [f"| scene | contender | {levels} |", "|" + "---|" * (2 + len(B.ERROR_LEVELS))]
     for wp in results["work_precision"]:
         for f in results["families"]:
             L.append(f"| {wp['scene']} | {FAMILY_NAMES[f]} | " + " | ".join(_ratio_cell(r) for r in wp["ratios"][f]) + " |")

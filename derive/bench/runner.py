@@ -134,7 +134,7 @@ class Settings:
     batch_scipy_n: int = 5
     process_repeats: int = 5
     cold_runs: int = 2
-    # Lie-Poisson splitting against DOP853 and Gauss-Legendre (derive.methods.splitting.bench_energy):
+    # Lie-Poisson splitting against DOP853 and Gauss-Legendre (derive.bench.splitting.bench_energy):
     # (case, measure) pairs, the periods each run spans, the error target, a time budget per scan
     splitting_cases: tuple[tuple[str, str], ...] = (("fast-top", "energy"), ("fast-top", "axis"),
                                                     ("lagrange", "axis"), ("asymmetric", "energy"))
@@ -227,12 +227,26 @@ def match_tolerance(solve, target: float, rtol0: float = 1e-10) -> dict:
             "tried": tried}
 
 
+def contender_call(family: str, method: str, prob, rtol: float):
+    """A contender's solve of ``prob`` at ``rtol`` (atol = ATOL_RATIO rtol) as a callable, its
+    setup (the integrator built, the rhs compiled) done now, outside whatever times the call."""
+    c = bc.CONTENDERS[family]
+    setup = c.setup(prob, method, rtol, ATOL_RATIO * rtol)
+    return lambda: c.solve(prob, method, rtol, ATOL_RATIO * rtol, setup)
+
+
+def contender_error(family: str, method: str, prob, ref: np.ndarray, rtol: float):
+    """(axis error against ``ref``, nfev) of a contender's solve of ``prob`` at ``rtol``."""
+    Y, nfev = contender_call(family, method, prob, rtol)()
+    return axis_error(prob.axis(Y), ref), nfev
+
+
 # ---------------------------------------------------------------------------------------------
 # reference solutions
 
 
 def exact_axis(data: dict, t: np.ndarray) -> np.ndarray | None:
-    """ê₃(t) from `derive.reference.exact` for scene data (`bench_contenders.scene_data`), or None when
+    """ê₃(t) from `derive.reference.exact` for scene data (`derive.bench.contenders.scene_data`), or None when
     the scene has no closed form (damping, or an asymmetric heavy body)."""
     if data.get("damping"):
         return None

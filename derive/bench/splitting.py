@@ -13,10 +13,6 @@ from derive.runtime.splitter import Splitter, angular_momentum, body, energy, in
 from derive.reference.exact import euler_matrix, heavy_top
 from derive.symbolic import models
 
-# --------------------------------------------------------------------------------------------
-# measurement (reported by the bench, never asserted on time)
-
-
 #: (α, β, γ) at which the fast and slow Lagrange tops of :func:`bench_case` start (from rest
 #: but for their spin); :func:`_reference` starts the exact solution there too.
 _TOP_START = (0.0, 0.5, 0.0)

@@ -101,10 +101,6 @@ def _guard(name: str, fn, *args):
 # reference scene
 
 
-#: The loosest-tolerance search (in :mod:`derive.bench.runner`, shared with :mod:`derive.bench.peers`).
-_match = B.match_tolerance
-
-
 def reference_scene(cfg, fams) -> dict:
     data = reference_data(cfg.ref_t_end)
     rtol = data["simulate"]["rtol"]
@@ -140,24 +136,17 @@ def reference_scene(cfg, fams) -> dict:
     if "pydy" in fams:
         contenders.append(("pydy", "pydy-odeint", "PyDy Cython rhs + `odeint`, same equations"))
     for fam, method, label in contenders:
-        c = bc.CONTENDERS[fam]
-
-        def solve(r, c=c, method=method):
-            Y, nfev = c.solve(prob, method, r, B.ATOL_RATIO * r, c.setup(prob, method, r, B.ATOL_RATIO * r))
-            return B.axis_error(prob.axis(Y), ref), nfev
-
         t0 = time.perf_counter()  # one-off: build the integrator / generate and compile the rhs
-        c.setup(prob, method, rtol, B.ATOL_RATIO * rtol)
+        bc.CONTENDERS[fam].setup(prob, method, rtol, B.ATOL_RATIO * rtol)
         first_setup = time.perf_counter() - t0
-        m = _match(solve, ours["error"], rtol)
+        m = B.match_tolerance(lambda r: B.contender_error(fam, method, prob, ref, r), ours["error"], rtol)
         m["setup"] = bc.PYDY_BUILD_TIME.get(prob.formulation, first_setup) if fam == "pydy" else first_setup
         if not m["reached"]:  # no tolerance of it reaches derive's error (odeint fails below ~1e-13)
             rows.append({"family": fam, "method": method, "label": label, **m, "time": None, "ratio": None})
             continue
-        setup = c.setup(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"])
         # Timed in turns with ours (one contender call, then as many of ours as take about as
         # long), so that a change of machine load hits both sides of the ratio alike.
-        theirs = lambda: c.solve(prob, method, m["rtol"], B.ATOL_RATIO * m["rtol"], setup)  # noqa: E731
+        theirs = B.contender_call(fam, method, prob, m["rtol"])
         t0 = time.perf_counter()
         theirs()
         k = max(1, min(1000, int((time.perf_counter() - t0) / t_ours)))
@@ -187,41 +176,18 @@ def reference_scene(cfg, fams) -> dict:
                               None)}
 
 
-#: A fresh process's first and second ``derive.simulate`` (``import derive`` timed apart).
-FIRST_CALL_SCRIPT = r"""
-import json, sys, time
-t0 = time.perf_counter()
-import derive
-t1 = time.perf_counter()
-arg = sys.argv[1]
-scene = json.loads(arg) if arg.startswith("{") else arg
-derive.simulate(scene)
-t2 = time.perf_counter()
-derive.simulate(scene)
-t3 = time.perf_counter()
-print(json.dumps({"import": t1 - t0, "first_simulate": t2 - t1, "second_simulate": t3 - t2}))
-"""
-
-
-def _fresh(script: str, arg: str, env: dict, cwd: str) -> dict:
-    out = subprocess.run([sys.executable, "-c", script, arg], capture_output=True, text=True, env=env, cwd=cwd)
-    if out.returncode != 0:
-        return {"error": (out.stderr.strip().splitlines() or ["?"])[-1][:200]}
-    return json.loads(out.stdout.strip().splitlines()[-1])
-
-
 def phases(cfg) -> dict:
     """Where a first call's time goes, in fresh processes (reference scene): the first and
     second ``simulate`` with an empty ``DERIVE_CACHE`` (cold) and with a filled one (warm);
     compilation = cold first call − warm first call; and, apart, the SymPy derivation and code
-    generation of the model (`bench_internals.DERIVE_SCRIPT`)."""
+    generation of the model (`derive.bench.internals.DERIVE_SCRIPT`)."""
     arg = json.dumps(reference_data(cfg.ref_t_end))
     out = {}
     with tempfile.TemporaryDirectory(prefix="derive-bench-cache-") as tmp:
         cold_env = dict(os.environ, DERIVE_CACHE=tmp)
-        out["cold"] = _fresh(FIRST_CALL_SCRIPT, arg, cold_env, tmp)
-        out["warm"] = _fresh(FIRST_CALL_SCRIPT, arg, cold_env, tmp)  # the same cache, now filled
-        out["derive"] = _fresh(bi.DERIVE_SCRIPT, arg, dict(os.environ, DERIVE_CACHE=tmp), tmp)
+        out["cold"] = timing.fresh(timing.FIRST_CALL_SCRIPT, arg, cold_env, tmp)
+        out["warm"] = timing.fresh(timing.FIRST_CALL_SCRIPT, arg, cold_env, tmp)  # the same cache, now filled
+        out["derive"] = timing.fresh(bi.DERIVE_SCRIPT, arg, dict(os.environ, DERIVE_CACHE=tmp), tmp)
     c, w = out["cold"], out["warm"]
     if "error" not in c and "error" not in w:
         out["compilation"] = c["first_simulate"] - w["first_simulate"]
@@ -236,15 +202,11 @@ def fixed_cost(cfg) -> dict:
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
-    setup = bc.scipy_setup(prob, "scipy-dop853")
     rtol = data["simulate"]["rtol"]
     derive.simulate(data)
-    setup_o = bc.scipy_setup(prob, "scipy-odeint")
     t_ours, t_scipy, t_odeint = timing.interleaved(
-        [lambda: derive.simulate(data),
-         lambda: bc.solve_scipy(prob, "scipy-dop853", rtol, B.ATOL_RATIO * rtol, setup),
-         lambda: bc.solve_scipy(prob, "scipy-odeint", rtol, B.ATOL_RATIO * rtol, setup_o)],
-        cfg.fixed_cost_calls)
+        [lambda: derive.simulate(data), B.contender_call("scipy", "scipy-dop853", prob, rtol),
+         B.contender_call("scipy", "scipy-odeint", prob, rtol)], cfg.fixed_cost_calls)
     return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy, "odeint": t_odeint,
             "ratio_odeint": t_ours / t_odeint}
 
@@ -298,9 +260,7 @@ def batch(cfg, rtols: dict) -> dict:
         r = rtols.get(peer) or scenes[0]["simulate"]["rtol"]
         times = []
         for d in scenes[:cfg.batch_scipy_n]:
-            prob = bc.problem(d, "euler-angles")
-            setup = bc.scipy_setup(prob, peer)
-            run = lambda: bc.solve_scipy(prob, peer, r, B.ATOL_RATIO * r, setup)  # noqa: E731
+            run = B.contender_call("scipy", peer, bc.problem(d, "euler-angles"), r)
             times.append(min(timing.timed(run, 1)[0] for _ in range(2)))  # the better of two: load spikes
         per = statistics.median(times)
         out.update({f"{key}_rtol": r, f"{key}_n": len(times), f"{key}_per_trajectory": per,

@@ -1,12 +1,16 @@
 """Timing primitives of the bench: the median of repeats, the cost per call, and calls of
-several functions interleaved in blocks (so that a machine's drifting load falls on all alike).
+several functions interleaved in blocks (so that a machine's drifting load falls on all alike), and
+a script timed in a fresh process.
 
-Takes: callables. Gives: seconds.
+Takes: callables, or a script. Gives: seconds.
 """
 from __future__ import annotations
 
+import json
 import math
 import statistics
+import subprocess
+import sys
 import time
 
 
@@ -68,3 +72,28 @@ def block_counts(fns, budget: float = 0.02, most: int = 10_000) -> list[int]:
         fn()
         out.append(max(1, min(most, int(budget / max(time.perf_counter() - t0, 1e-7)))))
     return out
+
+
+#: A fresh process's first and second ``derive.simulate`` (``import derive`` timed apart).
+FIRST_CALL_SCRIPT = r"""
+import json, sys, time
+t0 = time.perf_counter()
+import derive
+t1 = time.perf_counter()
+arg = sys.argv[1]
+scene = json.loads(arg) if arg.startswith("{") else arg
+derive.simulate(scene)
+t2 = time.perf_counter()
+derive.simulate(scene)
+t3 = time.perf_counter()
+print(json.dumps({"import": t1 - t0, "first_simulate": t2 - t1, "second_simulate": t3 - t2}))
+"""
+
+
+def fresh(script: str, arg: str, env: dict, cwd: str) -> dict:
+    """The JSON line ``python -c script arg`` prints last (in ``cwd`` with ``env``), or
+    ``{"error": its last line of stderr}``."""
+    out = subprocess.run([sys.executable, "-c", script, arg], capture_output=True, text=True, env=env, cwd=cwd)
+    if out.returncode != 0:
+        return {"error": (out.stderr.strip().splitlines() or ["?"])[-1][:200]}
+    return json.loads(out.stdout.strip().splitlines()[-1])

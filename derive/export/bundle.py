@@ -31,22 +31,20 @@ from derive.sim.scene import Scene, load_scene
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import INPUT_NAMES
 
-#: Units of the scene keys that are not an effect's (an effect's keys carry their own).
+#: The unit of the body's moments (an effect's keys carry their own units).
 _BODY_UNIT = "kg m^2"
-_INPUT_UNITS = {"alpha": "rad", "beta": "rad", "gamma": "rad", "omega1": "rad/s",
-                "omega2": "rad/s", "omega3": "rad/s", "alpha_dot": "rad/s", "beta_dot": "rad/s",
-                "gamma_dot": "rad/s", "rates_given": ""}
-_INPUT_DOCS = {
-    "alpha": "z-y-z Euler angle about the inertial z axis at t = 0",
-    "beta": "z-y-z Euler angle about the intermediate y' axis at t = 0 (tilt of body axis 3)",
-    "gamma": "z-y-z Euler angle about body axis 3 at t = 0",
-    "omega1": "body angular velocity, component 1, at t = 0 (read when rates_given = 0)",
-    "omega2": "body angular velocity, component 2, at t = 0 (read when rates_given = 0)",
-    "omega3": "body angular velocity, component 3, at t = 0 (read when rates_given = 0)",
-    "alpha_dot": "Euler-angle rate at t = 0 (read when rates_given = 1)",
-    "beta_dot": "Euler-angle rate at t = 0 (read when rates_given = 1)",
-    "gamma_dot": "Euler-angle rate at t = 0 (read when rates_given = 1)",
-    "rates_given": "1: start from the angles and their rates; 0: from the angles and omega",
+#: The init map's inputs: (unit, meaning) by name.
+_INPUTS = {
+    "alpha": ("rad", "z-y-z Euler angle about the inertial z axis at t = 0"),
+    "beta": ("rad", "z-y-z Euler angle about the intermediate y' axis at t = 0 (tilt of body axis 3)"),
+    "gamma": ("rad", "z-y-z Euler angle about body axis 3 at t = 0"),
+    "omega1": ("rad/s", "body angular velocity, component 1, at t = 0 (read when rates_given = 0)"),
+    "omega2": ("rad/s", "body angular velocity, component 2, at t = 0 (read when rates_given = 0)"),
+    "omega3": ("rad/s", "body angular velocity, component 3, at t = 0 (read when rates_given = 0)"),
+    "alpha_dot": ("rad/s", "Euler-angle rate at t = 0 (read when rates_given = 1)"),
+    "beta_dot": ("rad/s", "Euler-angle rate at t = 0 (read when rates_given = 1)"),
+    "gamma_dot": ("rad/s", "Euler-angle rate at t = 0 (read when rates_given = 1)"),
+    "rates_given": ("", "1: start from the angles and their rates; 0: from the angles and omega"),
 }
 
 #: Units and meanings of the outputs (observables) by the output file's array name.
@@ -150,8 +148,7 @@ class Bundle:
 
     def initial(self) -> list[Variable]:
         """The init map's inputs, as ``initial.<name>``."""
-        return [Variable(f"initial.{n}", k, float(self.inputs[k]), _INPUT_UNITS[n], _INPUT_DOCS[n])
-                for k, n in enumerate(INPUT_NAMES)]
+        return [Variable(f"initial.{n}", k, float(self.inputs[k]), *_INPUTS[n]) for k, n in enumerate(INPUT_NAMES)]
 
     def model_files(self) -> tuple[list[str], list[str]]:
         """(the model's C files with its solvers and its method family's, the other generated

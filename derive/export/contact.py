@@ -22,8 +22,6 @@ from derive.contact.simulate import params, simulate
 from derive.reference.rotation import body_omega
 from derive.errors import SceneError
 
-#: How many phase switches a run may make.
-MAX_SWITCHES = driver.MAX_SWITCHES
 #: The units of the parameters, by name.
 PARAM_UNITS = {"I1": "kg m^2", "I2": "kg m^2", "I3": "kg m^2", "M": "kg", "g": "m/s^2",
                "r": "m", "s": "m", "mu": "", "epsilon": "m/s", "r2": "m", "s2": "m",
@@ -58,11 +56,6 @@ def model_files(sc: ContactScene) -> dict[str, str]:
     return {**ck.model_sources(sc.shape, sc.law), ck.RUN: ck.text(ck.RUN)}
 
 
-def lib_source(sc: ContactScene) -> str:
-    """``<model>_lib.c``: the evaluator, then the driver (the unit ``derive simulate`` runs)."""
-    return driver.lib_source(sc.shape, sc.law, sc.stem is not None)
-
-
 def start_omega(sc: ContactScene) -> np.ndarray:
     """ω̃ at the start (body axes): the scene's ``omega``, or its z-y-z rates turned into it."""
     if sc.omega is not None:
@@ -80,7 +73,7 @@ def files(sc: ContactScene) -> dict[str, str]:
     """Every file of the exported folder of a contact scene: ``{name: text}``."""
     P = model_name(sc)
     out = model_files(sc)
-    out[f"{P}_lib.c"] = lib_source(sc)
+    out[f"{P}_lib.c"] = driver.lib_source(sc.shape, sc.law, sc.stem is not None)
     scene_file = sc.source.rsplit("/", 1)[-1] if sc.source != "<dict>" else "the scene"
     p = run_params(sc)
     common = dict(P=P, scene_file=scene_file, title=" ".join((sc.title or "").split()))
@@ -89,7 +82,7 @@ def files(sc: ContactScene) -> dict[str, str]:
         angles=[c_double(x) for x in sc.angles], omega=[c_double(x) for x in start_omega(sc)],
         vx=c_double(sc.vx), vy=c_double(sc.vy), samples=sc.samples, t_end=c_double(sc.t_end),
         rtol=c_double(sc.rtol), atol=c_double(sc.atol), restitution=c_double(sc.restitution),
-        max_steps=sc.max_steps, max_switches=MAX_SWITCHES, integrals=integral_outputs(sc), **common)
+        max_steps=sc.max_steps, max_switches=driver.MAX_SWITCHES, integrals=integral_outputs(sc), **common)
     out["Makefile"] = render("contact/Makefile.j2", sources=list(model_files(sc)), **common)
     law = LAWS[sc.law]
     out["README.md"] = render(

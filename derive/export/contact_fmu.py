@@ -19,12 +19,11 @@ Outputs: the output file's names with component suffixes (``alpha``, ``beta``, `
 """
 from __future__ import annotations
 
-from xml.sax.saxutils import escape
-
 from derive.codegen.render import TEMPLATES, c_double, render
+from derive.contact import driver
 from derive.contact.laws import EXTENSIONS, LAWS
 from derive.export import contact as ce
-from derive.export.fmi import HEADERS, UNITS, Var, guid, model_identifier, version
+from derive.export.fmi import HEADERS, UNITS, Var, guid, model_description, model_identifier
 
 #: The outputs before the integrals, with their units and meaning.
 OUTPUTS = (
@@ -115,7 +114,7 @@ def sources(b: ce.ContactBundle) -> tuple[dict[str, str], str]:
     """(the FMU's ``sources/`` files, modelDescription.xml)."""
     sc, P, ID = b.scene, b.name, model_identifier(b)
     out = ce.model_files(sc)
-    out[f"{P}_lib.c"] = ce.lib_source(sc)
+    out[f"{P}_lib.c"] = driver.lib_source(sc.shape, sc.law, sc.stem is not None)
     for name in HEADERS:
         out[name] = (TEMPLATES / "fmi2" / name).read_text(encoding="utf-8")
     out["NOTICE.md"] = render("contact/NOTICE.md.j2", loop=ce.ck.LOOP, fmi=True)
@@ -127,16 +126,11 @@ def sources(b: ce.ContactBundle) -> tuple[dict[str, str], str]:
         "contact/fmu.c.j2", P=P, ID=ID, guid=fmu_guid, variables=vs,
         p_start=[c_double(x) for x in ce.run_params(sc)], in_start=[c_double(x) for x in start],
         set_start=[c_double(x) for x in (sc.restitution, sc.rtol, sc.atol, sc.max_steps)],
-        n_out=len(OUTPUTS) + len(integrals), integrals=integrals, max_switches=ce.MAX_SWITCHES)
-    index = {v.vr: v.vr + 1 for v in vs}  # ModelStructure counts variables from 1
-    units = sorted({v.unit for v in vs if v.unit})
-    xml = render(
-        "contact/modelDescription.xml.j2", x=lambda text: escape(str(text), {'"': "&quot;"}),
-        model_name=" ".join((sc.title or "").split()) or P, ID=ID, guid=fmu_guid, version=version(),
+        n_out=len(OUTPUTS) + len(integrals), integrals=integrals, max_switches=driver.MAX_SWITCHES)
+    xml = model_description(
+        "contact/modelDescription.xml.j2", vs, model_name=" ".join((sc.title or "").split()) or P,
+        ID=ID, guid=fmu_guid,
         description=f"{P} (a top on a table: {sc.shape}, {LAWS[sc.law].description}) with the "
                     f"phase driver, exported by derive",
-        units=[(u, UNITS[u]) for u in units], t_end=c_double(sc.t_end),
-        step=c_double(sc.t_end / (sc.samples - 1)), tolerance=c_double(sc.rtol), variables=vs,
-        outputs=[index[v.vr] for v in vs if v.causality == "output"],
-        initial_unknowns=[index[v.vr] for v in vs if v.initial == "calculated"])
+        t_end=c_double(sc.t_end), step=c_double(sc.t_end / (sc.samples - 1)), tolerance=c_double(sc.rtol))
     return out, xml

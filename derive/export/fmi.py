@@ -12,7 +12,9 @@ import tempfile
 import zipfile
 from dataclasses import dataclass
 from pathlib import Path
+from xml.sax.saxutils import escape
 
+from derive.codegen.render import render
 from derive.errors import CompilerError, SceneError
 from derive.runtime.cbuild import compiler
 
@@ -89,6 +91,17 @@ def version() -> str:
         return version(packages_distributions().get("derive", ["derive-rigid-body"])[0])
     except PackageNotFoundError:
         return "(source checkout)"
+
+
+def model_description(template: str, vs: list[Var], **context) -> str:
+    """``modelDescription.xml`` from ``templates/<template>`` with the variables ``vs`` (in
+    value-reference order): the units they carry and the ModelStructure's outputs, derivatives
+    and initial unknowns, which count the variables from 1."""
+    return render(template, x=lambda text: escape(str(text), {'"': "&quot;"}), version=version(),
+                  variables=vs, units=[(u, UNITS[u]) for u in sorted({v.unit for v in vs if v.unit})],
+                  outputs=[v.vr + 1 for v in vs if v.causality == "output"],
+                  derivatives=[v.vr + 1 for v in vs if v.kind == "V_DERIV"],
+                  initial_unknowns=[v.vr + 1 for v in vs if v.initial == "calculated"], **context)
 
 
 def archive(src: dict[str, str], xml: str, ID: str) -> dict[str, bytes]:

@@ -23,14 +23,12 @@ written all or nothing; an existing file of that name is replaced, never an inpu
 from __future__ import annotations
 
 import os
-from xml.sax.saxutils import escape
-
-from derive.codegen.render import TEMPLATES, c_double, environment
+from derive.codegen.render import TEMPLATES, c_double, render
 from derive.errors import SceneError
 from derive.export import bundle as bundles
 from derive.export import contact as contact_export, contact_fmu
 from derive.export.bundle import OUTPUT_DOCS, OUTPUT_UNITS, Bundle, notice, output_groups, state_unit
-from derive.export.fmi import HEADERS, UNITS, Var, archive, guid, model_identifier, version, zip_files
+from derive.export.fmi import HEADERS, UNITS, Var, archive, guid, model_description, model_identifier, zip_files
 from derive.sim.outputs import check_paths, write_all
 from derive.sim.scene import contact_data
 
@@ -100,33 +98,20 @@ def sources(b: Bundle) -> tuple[dict[str, str], str]:
     fmu_guid = guid(sorted(out.items()), [(v.name, v.start) for v in vs], b.method, b.pole_check)
     derived = sorted(b.desc.derived_params)
     p_start = [0.0 if k in derived else float(x) for k, x in enumerate(b.params)]
-    env = environment()
-    out["fmu.c"] = env.get_template("fmi2/fmu.c.j2").render(
+    out["fmu.c"] = render("fmi2/fmu.c.j2",
         P=P, ID=ID, method=b.method, family=b.family, guid=fmu_guid, variables=vs,
         p_start=p_start, in_start=[float(x) for x in b.inputs], driver=b.driver,
         derived=derived, has_angles=b.desc.has_angles, pole_check=b.pole_check,
         formulation=b.desc.formulation)
-    index = {v.vr: v.vr + 1 for v in vs}  # ModelStructure counts variables from 1
-    units = sorted({v.unit for v in vs if v.unit})
     title = " ".join((b.scene.title or "").split())
     adaptive = any(name == "rtol" for _, name, _ in b.driver)
-    xml = env.get_template("fmi2/modelDescription.xml.j2").render(
-        x=lambda text: escape(str(text), {'"': "&quot;"}), model_name=title or P, ID=ID, guid=fmu_guid, version=version(),
+    xml = model_description(
+        "fmi2/modelDescription.xml.j2", vs, model_name=title or P, ID=ID, guid=fmu_guid,
         description=(f"{P} ({b.desc.formulation}; effects: {', '.join(b.desc.effects) or 'none'}) "
                      f"with {b.method}, exported by derive"),
-        units=[(u, UNITS[u]) for u in units], t_end=c_double(b.t_end),
-        step=c_double(b.t_end / (b.samples - 1)),
-        tolerance=c_double(b.scene.simulate.rtol) if adaptive else None, variables=vs,
-        outputs=[index[v.vr] for v in vs if v.kind == "V_OUTPUT"],
-        derivatives=[index[v.vr] for v in vs if v.kind == "V_DERIV"],
-        initial_unknowns=[index[v.vr] for v in vs if v.initial == "calculated"])
+        t_end=c_double(b.t_end), step=c_double(b.t_end / (b.samples - 1)),
+        tolerance=c_double(b.scene.simulate.rtol) if adaptive else None)
     return out, xml
-
-
-def build(b: Bundle) -> dict[str, bytes]:
-    """Every file of the FMU: ``{path in the archive: bytes}``; compiles the binary."""
-    src, xml = sources(b)
-    return archive(src, xml, model_identifier(b))
 
 
 def export_fmu(scene, out, method: str | None = None) -> Bundle:
@@ -167,6 +152,6 @@ def export_fmu(scene, out, method: str | None = None) -> Bundle:
         files = archive(*contact_fmu.sources(b), model_identifier(b))
     else:
         b = bundles.make(scene, method)
-        files = build(b)
+        files = archive(*sources(b), model_identifier(b))
     write_all({name: lambda fh: zip_files(files, fh)}, inputs=[b.scene.source] if source else [])
     return b

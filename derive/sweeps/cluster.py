@@ -7,8 +7,13 @@ Takes: the runnable points and their arguments. Gives: (chunks, {chunk: result})
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import gc
+import importlib.util
+import logging
+import signal
 import socket
+import sys
 
 from derive.errors import EngineError, SceneError
 from derive.sim.validator import _real
@@ -34,10 +39,6 @@ def _dask(run, submit_args, progress, workers, scheduler, *, source="<sweep>", t
     """The chunks through a Dask cluster (a closed LocalCluster of ``workers`` processes, see
     :func:`local_cluster`, or the one at ``scheduler``, probed first and joined within
     ``timeout`` seconds), cut for its worker count. Returns (tasks, results)."""
-    import contextlib
-    import logging
-    import signal
-
     from dask.distributed import Client, as_completed
     from distributed.scheduler import KilledWorker
 
@@ -59,8 +60,6 @@ def _dask(run, submit_args, progress, workers, scheduler, *, source="<sweep>", t
             with _held(signal.SIGINT):
                 cluster = local_cluster(workers, dashboard=dashboard)
             if dashboard:
-                import sys
-
                 print(f"note: dashboard at {cluster.dashboard_link}", file=sys.stderr, flush=True)
             client = Client(cluster, timeout=timeout)
         else:
@@ -102,8 +101,6 @@ def _dask(run, submit_args, progress, workers, scheduler, *, source="<sweep>", t
 
 def _stop_workers(cluster) -> None:
     """Terminate the worker processes of a LocalCluster at once (SIGTERM), mid-chunk."""
-    import contextlib
-
     with contextlib.suppress(Exception):
         for w in list(cluster.workers.values()):
             proc = getattr(getattr(w, "process", None), "process", None)
@@ -130,8 +127,6 @@ def local_cluster(workers: int, dashboard: bool = False):
         client without them (another local user) is refused; everything it starts (scheduler,
         nannies, workers, HTTP servers) listens on 127.0.0.1 only. The caller closes it.
     """
-    import logging
-
     import dask
     from dask.distributed import LocalCluster
     from distributed.security import Security
@@ -220,12 +215,9 @@ def check_engine(source, workers=None, scheduler=None, scheduler_timeout=None, d
     if dashboard and workers is None:
         bad("dashboard", f"only with {name('workers')} (the cluster derive starts; a scheduler "
                          f"serves its own)")
-    if dashboard:
-        import importlib.util
-
-        if importlib.util.find_spec("bokeh") is None:
-            bad("dashboard", "Dask's dashboard needs bokeh, which is not installed "
-                             "(pip install 'bokeh>=3.1')")
+    if dashboard and importlib.util.find_spec("bokeh") is None:
+        bad("dashboard", "Dask's dashboard needs bokeh, which is not installed "
+                         "(pip install 'bokeh>=3.1')")
     if scheduler_timeout is not None:
         t = _real(scheduler_timeout)
         if t is None or not 0 < t <= 3600:

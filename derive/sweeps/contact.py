@@ -18,6 +18,7 @@ for these sweeps.
 """
 from __future__ import annotations
 
+import functools
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -59,10 +60,10 @@ def _points(source: str, data: dict, raw: dict):
     return keys, shape, cols
 
 
-def _run_point(raw: dict, values: dict, names: tuple) -> tuple[str, list]:
-    """(status, [value per measure column]) of one point."""
+def _run_point(raw: dict, keys: tuple, names: tuple, row: list) -> tuple[str, list]:
+    """(status, [value per measure column]) of one point: the values ``row`` of the ``keys``."""
     data = raw
-    for key, v in values.items():
+    for key, v in zip(keys, row):
         data = _set(data, key, v)
     try:
         res = simulate(read_scene(data))
@@ -71,10 +72,6 @@ def _run_point(raw: dict, values: dict, names: tuple) -> tuple[str, list]:
     except IntegrationError as exc:
         return str(exc), [np.nan] * len(names)
     return "ok", [float(ms.REGISTRY[n].contact(res)) for n in names]
-
-
-def _run_chunk(raw: dict, keys: tuple, rows: list, names: tuple) -> list:
-    return [_run_point(raw, dict(zip(keys, row)), names) for row in rows]
 
 
 def sweep(found: tuple[dict, str, Path], workers: int | None = None,
@@ -125,14 +122,12 @@ def sweep(found: tuple[dict, str, Path], workers: int | None = None,
         names = tuple(dict.fromkeys((*names, add_measure)))
     n = len(cols[keys[0]])
     rows = np.column_stack([cols[k] for k in keys]).tolist()
+    run = functools.partial(_run_point, raw, keys, names)
     if workers is None or workers <= 1 or n == 1:
-        out = _run_chunk(raw, keys, rows, names)
-    else:
-        size = -(-n // workers)
-        parts = [rows[i:i + size] for i in range(0, n, size)]
+        out = [run(row) for row in rows]
+    else:  # a chunk of about n / workers points per task, as each worker takes one
         with ProcessPoolExecutor(max_workers=workers) as pool:
-            out = [r for part in pool.map(_run_chunk, [raw] * len(parts), [keys] * len(parts),
-                                          parts, [names] * len(parts)) for r in part]
+            out = list(pool.map(run, rows, chunksize=-(-n // workers)))
     values = np.array([v for _, v in out], dtype=float).reshape(n, len(names))
     measures = {}
     for j, name in enumerate(names):

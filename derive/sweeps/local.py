@@ -5,7 +5,11 @@ Takes: the chunks and their arguments. Gives: {chunk: result}.
 """
 from __future__ import annotations
 
+import ctypes
+import multiprocessing as mp
 import os
+import signal
+from multiprocessing.connection import wait
 
 from derive.errors import EngineError
 from derive.sweeps.tasks import _held, _progress_bar, _signal_name, run_chunk
@@ -24,9 +28,6 @@ def _die_with_parent(parent: int) -> None:
     """Ask the kernel to kill this process when its parent dies (Linux ``PR_SET_PDEATHSIG``), so
     that a parent killed outright (SIGKILL, the OOM killer) leaves no worker computing for no
     one and printing BrokenPipeError; elsewhere a worker ends when its pipe closes."""
-    import ctypes
-    import signal
-
     try:
         libc = ctypes.CDLL(None, use_errno=True)
         libc.prctl(1, int(signal.SIGKILL), 0, 0, 0)  # 1: PR_SET_PDEATHSIG
@@ -44,8 +45,6 @@ def _worker_init(parent: int) -> None:
     already stopping the workers; the compiled loop's interrupt guard installs its own SIGINT
     handler, which a blocked signal never reaches. SIGTERM gets its default action (the end),
     not the parent's handlers the fork copied, and the worker dies with its parent."""
-    import signal
-
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
     signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM})
@@ -102,10 +101,6 @@ def _local(tasks, submit_args, progress, processes, source="<sweep>"):
     is lost, a dead result thread stops every reply, and its terminate can wait on a lock a
     killed worker held). Ctrl-C and SIGTERM (:class:`Terminated`) stop the workers; they ignore
     both themselves and die with this process (:func:`_worker_init`)."""
-    import multiprocessing as mp
-    import signal
-    from multiprocessing.connection import wait
-
     results = {}
     with _progress_bar(sum(len(i) for i in tasks), progress) as bar:
         if len(tasks) == 1 or _in_process(sum(len(i) for i in tasks), processes):

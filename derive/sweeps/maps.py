@@ -92,7 +92,7 @@ def _title(res, measure: str, n: int, failed: int) -> str:
     scene's title, labelled as such (it describes one scene, not the map)."""
     over = " × ".join(symbol(k) for k in res.keys)
     head = f"{measure} over {over}: {n} points ({failed} failed)"
-    # one line, cut for display (a huge title once made a plot take 90 s)
+    # one line, cut for display (a huge title would take the figure long to lay out)
     base = display_title(res.title) if res.title else ""
     return f"{head}\nbase scene: {base}" if base else head
 

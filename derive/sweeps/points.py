@@ -182,7 +182,6 @@ def build(spec) -> None:
         if any(k in cols for k in ("initial.beta", "initial.gamma", "initial.alpha_dot",
                                    "initial.beta_dot", "initial.gamma_dot")):
             # the scene validator's map, elementwise (the same libm calls, the same numbers)
-            ad, bd, gd = (np.broadcast_to(np.asarray(v, dtype=float), (n,)) for v in (ad, bd, gd))
             inputs[:, 3:6] = np.column_stack(body_omega(beta, gamma, ad, bd, gd))
     else:
         for i in range(3):

@@ -146,7 +146,10 @@ def load(spec) -> Spec:
             raise _scene_error(where, exc, "" if where != source else "scene.") from None
 
     raw, base, files = base_scene(data, source, folder, read)
-    keys, shape, columns = _points(source, data, raw, base)
+    variable = _variable_keys()
+    keys, shape, columns, distinct = grid_or_random(
+        source, data, lambda where, key: _check_key(source, where, key, variable, raw))
+    _check_values(source, "vary" if shape is not None else "random", raw, distinct)
     names, options = _measures(source, data)
     out = Spec(source, base, raw, keys, shape, columns, names, options, files=files)
     build(out)
@@ -176,14 +179,6 @@ def base_scene(data, source: str, folder: Path, read):
     if "title" in data and "title" not in raw and isinstance(data["title"], str):
         raw["title"] = data["title"]
     return raw, base, files
-
-
-def _points(source, data, raw, base):
-    variable = _variable_keys()
-    keys, shape, cols, distinct = grid_or_random(
-        source, data, lambda where, key: _check_key(source, where, key, variable, raw))
-    _check_values(source, "vary" if shape is not None else "random", raw, distinct)
-    return keys, shape, cols
 
 
 def grid_or_random(source, data, check_key, n_max: int = 10**9):

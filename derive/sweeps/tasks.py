@@ -8,6 +8,9 @@ from __future__ import annotations
 
 import math
 import os
+import signal
+import sys
+import threading
 
 import numpy as np
 
@@ -84,8 +87,6 @@ def _chunks(idx: np.ndarray, parallel: int) -> list:
 
 
 def _progress_bar(total, progress):
-    import sys
-
     from tqdm import tqdm
 
     if progress is None:
@@ -107,9 +108,6 @@ class _held:
         self.masked = set(masked)
 
     def __enter__(self):
-        import signal
-        import threading
-
         self.pending, self.old, self.mask = [], {}, None
         if threading.current_thread() is threading.main_thread():
             for sig in (signal.SIGINT, signal.SIGTERM):
@@ -122,8 +120,6 @@ class _held:
         self.pending.append(signum)
 
     def __exit__(self, *exc):
-        import signal
-
         if self.mask is not None:  # a signal blocked meanwhile is noted now, before the restore
             signal.pthread_sigmask(signal.SIG_SETMASK, self.mask)
         for sig, old in self.old.items():
@@ -133,8 +129,6 @@ class _held:
 
 
 def _signal_name(number: int) -> str:
-    import signal
-
     try:
         return signal.Signals(number).name
     except ValueError:

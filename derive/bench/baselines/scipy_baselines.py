@@ -24,7 +24,7 @@ Each ``*_rhs`` factory returns ``rhs(t, y)`` with the parameters bound in a clos
 fastest call SciPy can make: no ``args`` tuple) and the state unpacked to Python floats
 (``values``, default ``y.tolist()``); ``sin``/``cos`` and ``values`` are arguments of the factory
 so the same equations can be built as CasADi or SymPy expressions for the peers of the bench
-(`derive.bench_peers`) — written once, used by every contender. ``*_jac`` factories return the
+(`derive.bench.peers`) — written once, used by every contender. ``*_jac`` factories return the
 analytic Jacobian ∂f/∂y (a list of rows) for Radau and LSODA, written out by the chain rule.
 
 ``tests/test_bench.py`` checks every function here against the generated kernels at random
