@@ -44,11 +44,17 @@ def taylor_sizes(model: str) -> dict[str, int]:
 
 
 def run_bits(exe, x: np.ndarray) -> np.ndarray:
-    """The harness's rows of doubles for the arguments ``x``, bits in and bits out."""
+    """The harness's rows of doubles for the arguments ``x``, bits in and bits out (each written
+    as 16 hex digits, ``%016llx``, the same number on every line)."""
     text = "\n".join(f"{b:x}" for b in x.view(np.uint64))
     out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
-                    dtype=np.uint64).view(np.float64)
+    lines = out.splitlines()
+    width = len(lines[0].split()) if lines else 0
+    digits = "".join(out.split())
+    assert len(digits) == 16 * width * len(lines), "a value not written as 16 hex digits, or a short line"
+    # (read in one call: the rows are long, and a Python int per value costs more than the run)
+    bits = np.frombuffer(bytes.fromhex(digits), dtype=">u8").astype(np.uint64)
+    return bits.reshape(len(lines), width).view(np.float64)
 
 
 def ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:

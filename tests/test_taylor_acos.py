@@ -45,7 +45,7 @@ int main(void)
                 s = ACOS(one);
                 memcpy(&a, &r[k], 8);
                 memcpy(&b, &s, 8);
-                printf("%llx %llx\n", a, b);
+                printf("%016llx %016llx\n", a, b);
             }
             n = 0;
         }

@@ -78,7 +78,7 @@ static void wr(double x)
 {
     unsigned long long b;
     memcpy(&b, &x, sizeof b);
-    printf("%llx ", b);
+    printf("%016llx ", b);
 }
 
 /* stdin: NP parameters, the number of samples n, then n samples of NV values and a time.

@@ -45,7 +45,7 @@ int main(void)
                 memcpy(&b, &vb[P_NW + 3][k], 8);
                 memcpy(&c, &v1[P_NW + 2][0], 8);
                 memcpy(&d, &v1[P_NW + 3][0], 8);
-                printf("%llx %llx %llx %llx\n", a, b, c, d);
+                printf("%016llx %016llx %016llx %016llx\n", a, b, c, d);
             }
             n = 0;
         }
