@@ -1,6 +1,6 @@
 """What the tests of the Taylor solver's own arithmetic share (tests/test_taylor_trig.py,
-tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver, its
-doubles passed both ways as their bits in hex (no decimal rounding), and the distance of two
+tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver (or
+the header it takes its sin, cos and acos from), its doubles passed both ways as their bits in hex (no decimal rounding), and the distance of two
 results in units in the last place."""
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ PREFIX = "derive_reduced_u_sym_gravity_taylor_"
 
 
 def compile_harness(tmp_path, flags, name: str, text: str):
-    """The executable of the C program ``text`` (it includes the generated solver from GEN),
+    """The executable of the C program ``text`` (it includes generated files from GEN),
     built with ``flags`` and the Taylor method selected; kept for these exact sources, flags and
     compiler (tests/compile_once.py), so ``tmp_path`` is not written."""
     cc = os.environ.get("CC", "cc")
