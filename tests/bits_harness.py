@@ -1,7 +1,7 @@
 """What the tests of the Taylor solver's own arithmetic share (tests/test_taylor_trig.py,
 tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver (or
-the header it takes its sin, cos and acos from), its doubles passed both ways as their bits in hex (no decimal rounding), and the distance of two
-results in units in the last place."""
+the header it takes its sin, cos and acos from), its doubles passed both ways as their bits in
+hex (no decimal rounding), and the distance of two results in units in the last place."""
 from __future__ import annotations
 
 import os
