@@ -1,7 +1,7 @@
 """What the tests of the Taylor solver's own arithmetic share (tests/test_taylor_trig.py,
-tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver, its
-doubles passed both ways as their bits in hex (no decimal rounding), and the distance of two
-results in units in the last place."""
+tests/test_taylor_acos.py): a C harness compiled against the generated reduced-u solver (or
+the header it takes its sin, cos and acos from), its doubles passed both ways as their bits in
+hex (no decimal rounding), and the distance of two results in units in the last place."""
 from __future__ import annotations
 
 import os
@@ -18,7 +18,7 @@ PREFIX = "derive_reduced_u_sym_gravity_taylor_"
 
 
 def compile_harness(tmp_path, flags, name: str, text: str):
-    """The executable of the C program ``text`` (it includes the generated solver from GEN),
+    """The executable of the C program ``text`` (it includes generated files from GEN),
     built with ``flags`` and the Taylor method selected; kept for these exact sources, flags and
     compiler (tests/compile_once.py), so ``tmp_path`` is not written."""
     cc = os.environ.get("CC", "cc")
@@ -44,11 +44,17 @@ def taylor_sizes(model: str) -> dict[str, int]:
 
 
 def run_bits(exe, x: np.ndarray) -> np.ndarray:
-    """The harness's rows of doubles for the arguments ``x``, bits in and bits out."""
+    """The harness's rows of doubles for the arguments ``x``, bits in and bits out (each written
+    as 16 hex digits, ``%016llx``, the same number on every line)."""
     text = "\n".join(f"{b:x}" for b in x.view(np.uint64))
     out = subprocess.run([str(exe)], input=text, capture_output=True, text=True, check=True).stdout
-    return np.array([[int(w, 16) for w in line.split()] for line in out.splitlines()],
-                    dtype=np.uint64).view(np.float64)
+    lines = out.splitlines()
+    width = len(lines[0].split()) if lines else 0
+    digits = "".join(out.split())
+    assert len(digits) == 16 * width * len(lines), "a value not written as 16 hex digits, or a short line"
+    # (read in one call: the rows are long, and a Python int per value costs more than the run)
+    bits = np.frombuffer(bytes.fromhex(digits), dtype=">u8").astype(np.uint64)
+    return bits.reshape(len(lines), width).view(np.float64)
 
 
 def ulps(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -134,6 +134,17 @@ def _root(equation: sp.Expr, unknown: sp.Symbol) -> sp.Expr:
     return -sp.simplify(equation.subs(unknown, 0)) / sp.simplify(c1)
 
 
+@functools.lru_cache(maxsize=1)
+def _rates() -> dict[sp.Symbol, sp.Expr]:
+    """α̇ and γ̇ in the momenta p_α, p_γ (∂L/∂α̇ = p_α, ∂L/∂γ̇ = p_γ). Of the reduced Lagrangian
+    :func:`equations` builds, only the kinetic energy holds α̇ or γ̇ (the height's M ż²/2 has β̇
+    alone), so the rates are the same for every shape: solved once."""
+    T = kinetic_energy_symmetric()
+    rates = sp.solve([sp.diff(T, alpha_d) - p_alpha, sp.diff(T, gamma_d) - p_gamma], [alpha_d, gamma_d], dict=True)[0]
+    # sin²β + cos²β = 1 in the rates first: the Routhian and β̈'s coefficients simplify faster and shorter
+    return {rate: sp.factor(sp.trigsimp(sp.together(value))) for rate, value in rates.items()}
+
+
 @functools.lru_cache(maxsize=None)
 def equations(shape: str) -> dict[str, sp.Expr]:
     """α̇, γ̇, β̈ and N of the reduced problem for ``shape``, in β, β̇ and the parameters."""
@@ -141,9 +152,7 @@ def equations(shape: str) -> dict[str, sp.Expr]:
     z = height_in_angles(contact(shape).shape).replace(sp.Abs, lambda x: x)
     zdot = sp.diff(z, beta) * beta_d
     L = MASS * zdot**2 / 2 + kinetic_energy_symmetric() - MASS * GRAV * z
-    rates = sp.solve([sp.diff(L, alpha_d) - p_alpha, sp.diff(L, gamma_d) - p_gamma], [alpha_d, gamma_d], dict=True)[0]
-    # sin²β + cos²β = 1 in the rates first: the Routhian and β̈'s coefficients simplify faster and shorter
-    rates = {rate: sp.factor(sp.trigsimp(sp.together(value))) for rate, value in rates.items()}
+    rates = _rates()
     R = (L - p_alpha * alpha_d - p_gamma * gamma_d).subs(rates)
     pb = sp.diff(R, beta_d)
     acc = sp.diff(pb, beta) * beta_d + sp.diff(pb, beta_d) * BETA_DD - sp.diff(R, beta)
