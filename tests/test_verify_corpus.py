@@ -148,6 +148,18 @@ SHORT = {
         "4 of 7: the angular momentum as a chain of cross products of the particles' relative positions with "
         "velocities that include the reference point's V_R, and the parallel axis theorem's [I_S] and [I_R] with "
         "M and d of a centre of mass defined in words, are not read; its bracket for the cross-product matrix is",
+    ("continuum-lab-dzhanibekov-intermediate-axis-es", "checked"):
+        "3 of 15 (first read): Euler's equations written I_1 domega_1/dt, the disturbances delta omega_i of a spin "
+        "Omega_0 and their \\approx equations, the moments' worked factors and lambda, the conserved 2T and |L|^2 "
+        "in numbers and the quaternion's kinematics are not read",
+    ("continuum-lab-dzhanibekov-intermediate-axis-es", "found"):
+        "0 of 1 (first read): 2T given T's value, 172.80 J, a worked value the reader leaves unjudged",
+    ("verga-polytech-rolling-cone-angular-momentum-fr", "checked"):
+        "1 of 10 (first read): the rolling cone's speeds, Omega along OA and L = (I_x Omega_x, ...) in the text's "
+        "alpha, psi and R, and the z-x-z frame-2 components of Omega, L and Varignon's formula are not read",
+    ("verga-polytech-rolling-cone-angular-momentum-fr", "found"):
+        "0 of 3 (first read): L with R^2 for a^2, I psidot for I_z psidot, and Varignon's formula with the body's "
+        "Omega for the frame's rotation are not flagged",
 }
 
 FLOOR = {"checked": 584, "slips_flagged": 56, "holds_flagged": 0}
