@@ -127,3 +127,43 @@ def test_i_in_an_exponent_of_e_is_the_imaginary_unit_and_an_index_i_stays_a_lett
     assert plain_numbers(r"\lambda (t) = Ae^{i\Omega t} + Be^{-i\Omega t}") == \
         r"\lambda (t) = Ae^{\sqrt{-1}\Omega t} + Be^{-\sqrt{-1}\Omega t}"
     assert plain_numbers(r"\sum_i m_i x_i + \angle^{i}") == r"\sum_i m_i x_i + \angle^{i}"
+
+
+def test_a_worked_chain_that_ends_with_its_sign_holds_and_a_sign_the_wrong_way_round_fails():
+    assert [v for v, _ in arithmetic(r"(I_2 - I_3) = 2.4 - 4.2 = -1.8 < 0")] == ["holds", "holds"]
+    assert [v for v, _ in arithmetic(r"(I_2 - I_3)(I_1 - I_2) = (-1.8)(-1.4) = +2.52 > 0")] == ["holds", "holds"]
+    assert [v for v, _ in arithmetic(r"k = 2.4 - 4.2 = -1.8 \ge 0")] == ["holds", "fails"]
+    # equal to the digits written: no verdict on the sign; symbols never compared
+    assert [v for v, _ in arithmetic(r"x = 0.30 \le 0.3")] == ["holds"]
+    assert [v for v, _ in arithmetic(r"0.30 < 0.3")] == ["unchecked"]
+    assert arithmetic(r"0 < \theta < \pi") == [] and arithmetic(r"2I_1T \le L^2 \le 2I_3T") == []
+
+
+def test_a_sign_stated_after_a_worked_value_is_read_in_notes():
+    claims = kept.check_text("$$(I_2 - I_3) = 2.4 - 4.2 = -1.8 < 0$$\n")
+    assert [c.verdict for c in claims if c.kind == "arithmetic"] == ["holds", "holds"]
+    bad = kept.check_text("$$(I_2 - I_3) = 2.4 - 4.2 = -1.8 > 0$$\n")
+    assert [c.verdict for c in bad if c.kind == "arithmetic"] == ["holds", "fails"]
+
+
+SPHERE = "## Worked values\n\nThe sphere has mass $M$ and radius $R$; the spin is $\\Omega_0$.\n\n"
+
+
+def test_a_worked_decimal_times_the_texts_symbols_is_compared_by_the_ratio_of_the_two_sides():
+    claims = kept.check_text(SPHERE + "$$\\lambda = \\Omega_0 \\sqrt{\\frac{1.4 \\times 1.8}{1.0 \\times 4.2}} = "
+                                      "\\Omega_0 \\sqrt{0.6} \\approx 0.7746 \\Omega_0$$\n")
+    assert [c.verdict for c in claims if c.kind == "arithmetic"] == ["holds", "holds"]
+    rounded = kept.check_text(SPHERE + "$$I = \\frac{2}{5} M R^2 = 0.4 M R^2$$\n")
+    assert [c.verdict for c in rounded if c.kind == "arithmetic"] == ["holds"]
+
+
+def test_a_scaled_value_off_by_a_slip_fails_and_one_off_in_its_last_digit_is_left_unchecked():
+    wrong = kept.check_text(SPHERE + "$$\\mu = \\Omega_0 \\sqrt{0.6} \\approx 0.9746 \\Omega_0$$\n")
+    assert [c.verdict for c in wrong if c.kind == "arithmetic"] == ["fails"]
+    near = kept.check_text(SPHERE + "$$I = \\frac{2}{5} M R^2 = 0.5 M R^2$$\n")
+    assert [c.verdict for c in near if c.kind == "arithmetic"] == ["unchecked"]
+    # different symbols on the two sides, or no worked decimal: no arithmetic verdict
+    assert not [c for c in kept.check_text(SPHERE + "$$\\mu = \\Omega_0 \\sqrt{0.6} \\approx 0.7746 M$$\n")
+                if c.kind == "arithmetic"]
+    assert not [c for c in kept.check_text(SPHERE + "$$I = \\frac{2}{5} M R^2 = \\frac{4}{10} M R^2$$\n")
+                if c.kind == "arithmetic"]

@@ -7,6 +7,8 @@ claim about Euler's equations without a torque (the text's components L_x, M_2, 
 I_{xx}, I_2 and rates ω_x read as the body's principal ones), I ω̇ = (I ω) × ω: it holds when F's rate
 Σᵢ ∂F/∂ωᵢ ω̇ᵢ vanishes on them. A rate that does not vanish leaves it to the rest of the reader
 (an assumption the text makes, never a verdict), since the text may mean a body with a torque.
+A chain that names the quantity first and ends with the constant's value in an example
+(``2T = I_1\\omega_1^2 + … = \\text{cte} = 172.80``) is judged the same way, its value left aside.
 Takes the checker's context and vocabulary; gives claims; imports nothing of the checker.
 """
 from __future__ import annotations
@@ -64,7 +66,26 @@ def principal_components(F):
 
 class FreeIntegrals:
     """Mixin of the checker: see the module docstring. Uses ``self.ctx`` (its substitutions),
-    ``self._resolve``, ``self._compare`` and ``self._add``."""
+    ``self._resolve``, ``self._compare``, ``self._add``, ``self._members_kept`` and
+    ``self._centre_of_mass``."""
+
+    def _constant_dropped(self, line, piece, parsed):
+        """``A = F = \\text{const} = 172.80``: the numbers after the constant are its value in the
+        text's example (not a claim: the state they come from is not given), dropped; F, the member
+        written just before the constant after another, is judged as an integral of the free body
+        when the text has set no centre of mass for a heavy body (a claim only when it is one). The
+        rest is read on (`TextNames._constant_dropped`)."""
+        members = [m.value for m in parsed.members]
+        const = [k for k, m in enumerate(members) if isinstance(m, lx.Generic) and m.name == "const"]
+        if len(const) == 1:
+            k = const[0]
+            tail = members[k + 1:]
+            if tail and all(isinstance(v, sp.Expr) and v.is_number for v in tail):
+                parsed = self._members_kept(parsed, list(range(k + 1)))
+            # a heavy body's integrals are judged as such (`EulerPoisson`)
+            if k >= 2 and k == len(parsed.members) - 1 and self._centre_of_mass() is None:
+                self._conserved_free(line, piece, members[k - 1])
+        return super()._constant_dropped(line, piece, parsed)
 
     def _conserved_free(self, line, piece, value) -> bool:
         """``F = const`` with F in the body's ω̃ᵢ and principal moments (not one ω̃ᵢ alone, which is a

@@ -145,8 +145,10 @@ def _text_only(piece: str) -> bool:
     rest = re.sub(r"\\text\{[^{}]*\}", "", piece)
     return not rest.strip(" &,.;:") and "\\text" in piece
 
-_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst)\.?(?:\s*(?:\\?\#|no\.)?\s*\d+)?\s*\}")
-"""``\\text{const}``; a text numbering its constants writes ``\\text{constant \\#2}``."""
+_CONST = re.compile(r"\\(?:text|mathrm|rm)\s*\{\s*(?:const|constant|cst|cte|constante|costante|konst|Konstante)\.?"
+                    r"(?:\s*(?:\\?\#|no\.)?\s*\d+)?\s*\}")
+"""``\\text{const}``; a text numbering its constants writes ``\\text{constant \\#2}``; Spanish, French,
+Italian and German texts write ``cte``, ``constante``, ``costante``, ``konst.``, ``Konstante``."""
 
 _TRAILING_WORDS = re.compile(r"(?:[,;&]|" + ONE_SPACING + r")*\\(?:text|mbox|textrm|hbox)\s*\{[^{}]*\}[\s.,;]*$")
 

@@ -36,13 +36,13 @@ def write_table(script: str, rows: dict, checks: dict, lines: list) -> None:
     """Write ``<slug>.truth.toml`` from ``rows`` (display line → (verdict, why[, correction], hand
     check 1, hand check 2)), once each row agrees with the script's own derivation (``checks``)."""
     path = pathlib.Path(script)
-    text = path.with_name(path.name.removesuffix("_truth.py") + ".tex").read_text().split("\n")
+    text = _text_lines(path.with_name(path.name.removesuffix("_truth.py")))
     out = []
     for ln in lines:
         row = rows[ln]
         got = "not a claim" if ln not in checks else ("holds" if checks[ln] else "slip")
         assert got == row[0] or (got == "slip" and row[0] in ("typo", "fails")), (ln, got, row[0])
-        start = "\n".join(text[ln - 1:ln + 1]).strip()[:22]
+        start = "".join(text[ln - 1:ln + 1]).strip()[:22]
         s = f"[[display]]\nline = {ln}\nstart = {json.dumps(start)}\nverdict = {json.dumps(row[0])}\nwhy = {json.dumps(row[1])}\n"
         if row[0] in ("typo", "fails"):
             if row[0] == "typo":
@@ -50,6 +50,26 @@ def write_table(script: str, rows: dict, checks: dict, lines: list) -> None:
             s += f"hand_check_1 = {json.dumps(row[3])}\nhand_check_2 = {json.dumps(row[4])}\n"
         out.append(s)
     path.with_name(path.name.removesuffix("_truth.py") + ".truth.toml").write_text("\n".join(out))
+
+
+def _text_lines(stem: pathlib.Path) -> list:
+    """The text's lines, each with its line break; a notebook's line holding a piece of a cell's
+    source gives that piece, decoded, so that a display's opening reads as the notebook writes it
+    (its other lines, the JSON around the pieces, give nothing)."""
+    path = next(stem.with_name(stem.name + ext) for ext in (".tex", ".md", ".ipynb")
+                if stem.with_name(stem.name + ext).exists())
+    lines = [ln + "\n" for ln in path.read_text().split("\n")]
+    if path.suffix != ".ipynb":
+        return lines
+    out = []
+    for ln in lines:
+        piece = ln.strip().removesuffix(",")
+        try:
+            piece = json.loads(piece) if piece.startswith('"') else ""
+        except json.JSONDecodeError:
+            piece = ""
+        out.append(piece if isinstance(piece, str) else "")
+    return out
 
 
 def zero(expr) -> bool:
