@@ -36,7 +36,10 @@ def write_table(script: str, rows: dict, checks: dict, lines: list) -> None:
     """Write ``<slug>.truth.toml`` from ``rows`` (display line → (verdict, why[, correction], hand
     check 1, hand check 2)), once each row agrees with the script's own derivation (``checks``)."""
     path = pathlib.Path(script)
-    text = path.with_name(path.name.removesuffix("_truth.py") + ".tex").read_text().split("\n")
+    stem = path.name.removesuffix("_truth.py")
+    # the text is kept in one of the corpus formats (measure.FORMATS)
+    found = [path.with_name(stem + ext) for ext in (".tex", ".md", ".ipynb") if path.with_name(stem + ext).exists()]
+    text = found[0].read_text().split("\n")
     out = []
     for ln in lines:
         row = rows[ln]
