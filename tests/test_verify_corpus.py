@@ -157,7 +157,7 @@ SHORT = {
         "M and d of a centre of mass defined in words, are not read; its bracket for the cross-product matrix is",
 }
 
-FLOOR = {"checked": 584, "slips_flagged": 56, "holds_flagged": 0}
+FLOOR = {"checked": 591, "slips_flagged": 56, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
