@@ -82,7 +82,7 @@ from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
 from derive.lecture.spellings import spellings, written_back
 from derive.lecture.stated_convention import general_form
-from derive.lecture.statements import continues, repeated_labels, statements, top_level
+from derive.lecture.statements import continues, repeated_labels, restates_side, statements, top_level
 from derive.lecture.text_motion import TextMotion, top_relations
 from derive.lecture.text_matrices import TextMatrices, matrices_put
 from derive.lecture.textnames import TextNames
@@ -181,10 +181,10 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
                 self._small(item.symbols)
             elif item.kind in ("display", "inline"):
                 self._small_before_ll(item.latex)
-                latex = item.latex
+                latex = "= " + item.latex if item.kind == "display" and restates_side(item.lead, item.latex) else item.latex
                 # displays that start with + or − continue the previous one's right side
                 while item.kind == "display" and k + 1 < len(items) and items[k + 1].kind == "display" \
-                        and continues(latex, items[k + 1].latex):
+                        and continues(latex, items[k + 1].latex) and not restates_side(items[k + 1].lead, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
                 self._display_probed(item, latex)

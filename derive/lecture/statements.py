@@ -390,6 +390,24 @@ def continues(before: str, after: str) -> bool:
                          head.split("\\\\")[0])
 
 
+# prose that says the display after it is the value of the side just written ("this right-hand side is the
+# same as", "which equals"): a subject pointing back, then a phrase of equality ending the prose
+_RESTATED_SIDE = re.compile(
+    r"\b(this|that|it|which|(the\s+)?(right|left)([- ]hand)?\s+side|rhs|lhs)\s+(\w+\s+)?"
+    r"\b(is\s+(indeed\s+|just\s+|simply\s+|also\s+)?(the\s+same\s+as|equal\s+to|identical\s+to)|is\s+indeed|equals|coincides\s+with)"
+    r"\s*[:,]?\s*$", re.I)
+
+
+def restates_side(lead: str, after: str) -> bool:
+    """A display that states no relation, after prose saying the side just written is the same as it
+    (``this right-hand side is the same as``, ``which equals``): it goes on with ``= …`` from the
+    statement before, never as more terms of that statement's last side."""
+    if not _RESTATED_SIDE.search(lead or ""):
+        return False
+    body = _MARKS.sub(" ", _strip_envs(after))
+    return not re.search(r"(?<![<>!\\])=|(?<!\\left)(?<!\\right)[<>]|\\(le|ge|leq|geq|lt|gt|approx|equiv|propto|sim)\b", body)
+
+
 _LABEL = re.compile(r"\s*(\\?[A-Za-z]+)\s*_\s*(\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9]))\s*=(?!=)")
 
 
