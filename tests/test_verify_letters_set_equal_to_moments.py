@@ -51,3 +51,9 @@ def test_a_slip_in_letters_the_prose_named_is_never_a_hold():
 
 def test_a_letter_defined_as_the_equal_moments_with_a_sign_of_definition():
     assert _verdicts(r"Its moments are written $A \equiv I_1 = I_2$ and $C := I_3$, so") == [{"holds"}, {"holds"}]
+
+
+def test_letters_set_equal_to_moments_about_principal_axes_named_x_y_z():
+    prose = "The body axes are principal axes, with $I_x = I_y = A$ and $I_z = C$, so"
+    assert _verdicts(prose) == [{"holds"}, {"holds"}]
+    assert _verdicts(prose.replace("The body axes are principal axes, with", "With")) == [{"unchecked"}, {"unchecked"}]

@@ -10,9 +10,10 @@ as an equality of names in its inline math:
 * one of its symbols is the text's own letter: plain (no bold, accent or dot), not one of the
   numbered moments, not an angle, not named by the prose or the front matter already, and not met
   in the text's math before this sentence (a letter already in use may mean something else there);
-* the others are numbered moments the text has left to their usual meaning, of one kind: I₁, or
-  I₂, or I₃, or the equal pair I₁ = I₂ (a letter set equal to both I₁ and I₃ is a condition, never
-  a name).
+* the others are principal moments of one kind: I₁, or I₂, or I₃, or the equal pair I₁ = I₂ (a
+  letter set equal to both I₁ and I₃ is a condition, never a name) — numbered moments the text has
+  left to their usual meaning, or symbols its names make principal moments (``I_x = I_y = I`` in a
+  text that says its axes are principal, `derive.lecture.names`).
 
 The letter is then the transverse moment I₁ (``A = I_1 = I_2``, ``A = I_1``), the second moment I₂
 or the axial moment I₃ (``C = I_3``), as "the principal moments $A$, $B$, $C$" would bind it
@@ -33,6 +34,8 @@ from derive.lecture import source
 _KIND = {frozenset("1"): "transverse moment", frozenset("2"): "second moment", frozenset("3"): "axial moment",
          frozenset("12"): "transverse moment"}
 """The numbered moments a chain names (their indices) → the meaning of the letter set equal to them."""
+_INDEX = {"transverse moment": "1", "second moment": "2", "axial moment": "3"}
+"""The meanings of the text's names that are principal moments → their index."""
 _EQUALS = re.compile(r"(?<![<>!:\\])=|:=|\\(?:equiv|coloneqq|triangleq)(?![A-Za-z])")
 _OTHER = re.compile(r"\\(?:approx|simeq|sim|neq|ne|geq?|leq?|ll|gg|propto|to)(?![A-Za-z])|(?<!\\)[<>]|[,;]")
 
@@ -54,16 +57,24 @@ def _keys(latex: str) -> set:
         return set()
 
 
-def _moment(atom) -> str | None:
-    """The index of a numbered moment written plain (``I_1``, ``I_{3}``), else None."""
+def _moment(atom, names: nm.Names) -> str | None:
+    """The index (1, 2, 3) of a principal moment: a numbered moment written plain that the text left
+    to its usual meaning (``I_1``, ``I_{3}``), or a symbol the text's names make one (``I_x`` of a
+    text that says its axes are principal); "" for a numbered moment the text gave another meaning;
+    None for any other symbol."""
     plain = not (atom.bold or atom.dots or atom.primes or atom.hat or atom.tilde or atom.sup or atom.mark)
-    return atom.sub if plain and atom.base == "I" and atom.sub in ("1", "2", "3") else None
+    meaning = names.meaning(atom)
+    if meaning in _INDEX:
+        return _INDEX[meaning] if plain else ""
+    if plain and atom.base == "I" and atom.sub in ("1", "2", "3"):
+        return atom.sub if meaning is None else ""
+    return None
 
 
 def _letter(atom, names: nm.Names, angles) -> bool:
     """Can ``atom`` be the text's own letter for a moment (see the module docstring)?"""
     plain = not (atom.bold or atom.dots or atom.primes or atom.hat or atom.tilde or atom.sup or atom.mark)
-    return plain and _moment(atom) is None and atom.base not in angles and names.meaning(atom) is None \
+    return plain and _moment(atom, names) is None and atom.base not in angles and names.meaning(atom) is None \
         and (atom.base, "plain" if not atom.sub else "vector") not in names.letters
 
 
@@ -86,13 +97,14 @@ def _bind_equal(names: nm.Names, latex: str, met: set, angles, line: int) -> Non
     members = [_single(p.strip()) for p in _EQUALS.split(latex)]
     if len(members) < 2 or any(a is None for a in members):
         return
-    moments = {_moment(a) for a in members} - {None}
-    own = [a for a in members if _moment(a) is None]
-    if len(own) != 1 or frozenset(moments) not in _KIND:
+    kinds = [_moment(a, names) for a in members]
+    if "" in kinds:
+        return                  # the text's I₁ is something else of its own: its letter is no moment of ours
+    own = [a for a, k in zip(members, kinds) if k is None]
+    moments = frozenset(k for k in kinds if k is not None)
+    if len(own) != 1 or moments not in _KIND:
         return
     letter = own[0]
     if (letter.base, letter.sub) in met or not _letter(letter, names, angles):
         return
-    if any(names.meaning(a) is not None for a in members if _moment(a) is not None):
-        return                  # the text's I₁ is something else of its own: its letter is no moment of ours
-    nm._bind(names, [letter], _KIND[frozenset(moments)], f"line {line}")
+    nm._bind(names, [letter], _KIND[moments], f"line {line}")
