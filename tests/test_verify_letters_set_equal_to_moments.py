@@ -57,3 +57,12 @@ def test_letters_set_equal_to_moments_about_principal_axes_named_x_y_z():
     prose = "The body axes are principal axes, with $I_x = I_y = A$ and $I_z = C$, so"
     assert _verdicts(prose) == [{"holds"}, {"holds"}]
     assert _verdicts(prose.replace("The body axes are principal axes, with", "With")) == [{"unchecked"}, {"unchecked"}]
+
+
+def test_two_equal_moments_make_the_body_symmetric_and_no_two_equal_moments_do_not():
+    def why(prose):
+        text = HEAD + prose + " We write ($A = I_1$, $C = I_3$).\n\n$$\nT = \\frac{1}{2}[A(\\omega_1^2 + \\omega_2^2) + C\\omega_3^2]\n$$\n"
+        return [c.why for c in kept.check_text(text) if c.latex.strip().startswith("T =")]
+    symmetric, asymmetric = why("The body has two equal moments."), why("The body has no two equal moments.")
+    assert symmetric and all("under I₁ = I₂" in w for w in symmetric)
+    assert asymmetric and all("the text does not say so" in w for w in asymmetric)

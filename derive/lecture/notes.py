@@ -62,7 +62,7 @@ ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?
                             r"angular momentum", re.I)
 """The prose choosing the fixed first axis along the angular momentum (a free body's usual frame)."""
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
-                        r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b|\b(?:two\s+|the\s+)equal\s+moments\b", re.I)
+                        r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b|(?<!\bno\s)(?<!\bnot\s)\b(?:two\s+|the\s+)equal\s+moments\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
 _SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:an?\s+)?(?:very\s+)?(?:(?:first|1st)[- ]order\s+)?small\b"
                     r"|\bsmall of (?:the )?first order\b|\b(?:as|to\s+be)\s+(?:very\s+)?small\b(?!\s+as\b)", re.I)
