@@ -15,10 +15,12 @@ impose such a case (it would have to restrict the motion itself), so the relatio
 the text, never flagged, and a statement after it that the reader would flag is left unchecked,
 saying the case it may hold in — up to the section's end, another case, or a statement of the motion
 that holds as read without it (the text has gone back to the general motion; a closed form that
-solves the text's own equation does not count). Nothing that holds changes.
+solves the text's own equation does not count). Nothing that holds changes. Where the case gives one
+of the angles' rates on its motions, a flagged statement that vanishes there holds in the case
+instead (`derive.lecture.case_imposed`).
 
 Gives the mixin `ConstantCases` of the checker (`derive.lecture.notes_check.Checker`).
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.case_imposed`, :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -26,6 +28,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import case_imposed
 from derive.lecture import latex as lx
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES
@@ -104,8 +107,13 @@ class ConstantCases:
             # solving the text's own equation says nothing of the general motion)
             self.ctx.constant_case = None
             return
+        flagged = [c for c in claims if c.verdict in FLAGGED]
+        imposed = case_imposed.in_case(self, flagged[0].latex, case[1]) if flagged else None
         for c in claims:
-            if c.verdict in FLAGGED:
+            if c.verdict in FLAGGED and imposed:
+                c.verdict, c.correction = "holds", None
+                c.why = f"holds in the case {case[1]} the text sets at line {case[0]}, imposed: {imposed}"
+            elif c.verdict in FLAGGED:
                 c.verdict, c.correction = "unchecked", None
                 c.why = (f"stated in the case {case[1]} the text sets at line {case[0]}, which the reader "
                          f"does not impose: as read without it, {c.why}")

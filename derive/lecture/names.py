@@ -72,8 +72,11 @@ MEANINGS = {
     "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
     "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
     "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)"),
-    "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial) moment"),
-    "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia about the (?:symmetry|figure) axis"),
+    "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial|(?<!un)equal) moment|moment of inertia "
+                                    r"(?:about|around) (?:either|any|each) of the (?:two )?(?:other|transverse|perpendicular|equatorial)"
+                                    r"[\w ,]{0,24}?\bax[ie]s\b"),
+    "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia (?:about|around) (?:the|its) "
+                               r"(?:(?:symmetry|figure) axis|axis of (?:symmetry|the figure))"),
     "principal moments": ("list", r"principal moments(?: of inertia)?"),
     "vertical": ("letter", r"(?:unit vector|direction cosines?)\W{0,4}(?:[¤§]\W{0,4})?(?:of|along) the (?:upward |fixed |space "
                            r"|inertial )?vertical|(?:upward |fixed )?vertical unit vector"),
@@ -287,6 +290,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
     names.trig_letters = bool(_TRIG_LETTERS.search(body))
     # a display ends a clause and keeps its lines, so that a position in the prose is on the text's line
     prose = _DISPLAY.sub(lambda m: " . " + "\n" * max(m.group(0).count("\n"), 0), body)
+    prose = _GLOSSARY.sub(lambda m: m.group(1) + " is ", prose)      # "- $C$: the axial moment", "| $C$ | …": a list of symbols
     starts = [0] + [m.end() for m in re.finditer("\n", prose)]
     for clause in _clauses(prose):
         text, offset = clause
@@ -341,6 +345,8 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
     return names
 
 
+_GLOSSARY = re.compile(r"^([ \t]*(?:[-*+][ \t]+|\d+[.)][ \t]+|\|[ \t]*)?\$[^$\n]+\$)[ \t]*(?::|\|)[ \t]*(?=[^\W\d_])", re.M)
+"""A line of a list or table of symbols: the symbol first, then a colon or a cell's bar and the words that say what it is."""
 _RATE_AXES = {"roll rate": 0, "pitch rate": 1, "yaw rate": 2}
 _LISTED = r"((?:\$[^$]+\$[\s,]*(?:and\s+)?){1,3})"
 _COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:be|are|denote)\s+the\s+(?:[\w-]+\s+){0,2}"
@@ -489,7 +495,7 @@ def _nearest(marked: str) -> str | None:
     Nothing past another symbol (¤), nothing farther than a few words."""
     at = marked.index("§")
     lead = marked[at + 1:].lstrip()
-    explains = re.match(r"(\(|is the |are the |denotes |stands for |of the |— |-- |, the |being the |being |the )", lead)
+    explains = re.match(r"(\(|is the |are the |denotes |denote the |be the |represents the |stands for |of the |— |-- |, the |being the |being |the )", lead)
     best, told = None, None     # told: the nearest phrase that "§ is the …" goes on to say
     for name, (_, phrase) in MEANINGS.items():
         for m in re.finditer(phrase.replace("[^.;$]", "[^.;$¤]"), marked, flags=re.I):

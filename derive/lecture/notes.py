@@ -34,6 +34,7 @@ from pathlib import Path
 from derive.errors import SceneError
 from derive.lecture import bracket_cross
 from derive.lecture import formula_names
+from derive.lecture import moment_letters
 from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import prose_definitions
@@ -61,7 +62,7 @@ ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?
                             r"angular momentum", re.I)
 """The prose choosing the fixed first axis along the angular momentum (a free body's usual frame)."""
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
-                        r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b", re.I)
+                        r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b|(?<!\bno\s)(?<!\bnot\s)\b(?:two\s+|the\s+)equal\s+moments\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
 _SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:an?\s+)?(?:very\s+)?(?:(?:first|1st)[- ]order\s+)?small\b"
                     r"|\bsmall of (?:the )?first order\b|\b(?:as|to\s+be)\s+(?:very\s+)?small\b(?!\s+as\b)", re.I)
@@ -287,6 +288,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     user_macros = source.macros(body)
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     formula_names.learn(notes.names, body)
+    moment_letters.learn(notes.names, body, tuple(angles), user_macros)
     notes.body = body
     starts = [0]
     for m in re.finditer("\n", body):

@@ -1,0 +1,80 @@
+"""A case of the constants of the motion, imposed: "a top that starts upright has $L_z = Cn$", then
+``Cn = L_z = A\\dot\\varphi\\sin^2\\vartheta + Cn\\cos\\vartheta``.
+
+A relation of the text's constants of the motion alone that the prose sets (`derive.lecture.
+constant_cases`: ``L_z = Cn``, its L_z and n defined by the rates) picks the motions that have those
+constants. Written in the rates, it is one equation between them; where it is of the first degree in
+one of the angles' rates (q̇ with a coefficient that is not zero), it gives that rate on those
+motions, and a statement of the case can be read there: with the rate put in, every link of the
+statement must vanish identically (SymPy's simplification to zero). Such a statement holds in the
+case, its ``why`` naming the case and the rate it gave; any other is left as before (unchecked, the
+case not imposed): a statement that does not vanish may be one the text writes to an order in a small
+quantity (``\\frac{1}{2}Cn\\vartheta^2 = A\\dot\\varphi\\vartheta^2`` for a small tilt), which this
+reading never flags.
+
+Takes: the checker (its ``vocab``, ``_resolve``, ``d.omega``, ``tex``). Gives: `in_case`.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+"""
+from __future__ import annotations
+
+import sympy as sp
+
+from derive.lecture import latex as lx
+from derive.symbolic.rotations import RATES
+
+_ERRORS = (lx.NotRead, TypeError, ValueError, AttributeError, KeyError, IndexError, ZeroDivisionError)
+
+
+def _in_rates(checker, value):
+    """``value`` resolved, its body components ω̃ᵢ written in the angles and their rates."""
+    e = checker._resolve(sp.sympify(value))
+    return e.xreplace({w: checker.d.omega[i] for i, w in enumerate(lx.W)})
+
+
+def _members(checker, latex: str):
+    """The members of the relation ``latex`` (a plain ``=`` chain), resolved, or None."""
+    parsed = lx.parse(latex, checker.vocab)
+    if len(parsed.members) < 2 or set(parsed.relations) != {"="}:
+        return None
+    values = [m.value for m in parsed.members]
+    if any(not isinstance(v, sp.Basic) or isinstance(v, sp.MatrixBase) for v in values):
+        return None
+    return [_in_rates(checker, v) for v in values]
+
+
+def _rate_given(case) -> tuple | None:
+    """(rate, its value) from the case ``a - b = 0``: the first of the angles' rates it is of the
+    first degree in, with a coefficient that is not zero; None if there is none."""
+    for q in RATES:
+        if q not in case.free_symbols:
+            continue
+        poly = sp.Poly(sp.expand(case), q) if case.is_polynomial(q) else None
+        if poly is None or poly.degree() != 1:
+            continue
+        slope, rest = poly.all_coeffs()
+        if sp.simplify(slope) == 0:
+            continue
+        return q, sp.simplify(-rest / slope)
+    return None
+
+
+def in_case(checker, latex: str, case_latex: str) -> str | None:
+    """The ``why`` of the statement ``latex`` holding in the case ``case_latex`` (see the module
+    docstring), or None when the case gives no rate or a link of the statement does not vanish."""
+    try:
+        case = _members(checker, case_latex)
+        if case is None or len(case) != 2:
+            return None
+        given = _rate_given(case[0] - case[1])
+        members = _members(checker, latex) if given is not None else None
+        if members is None:
+            return None
+        rate, value = given
+        for a, b in zip(members, members[1:]):
+            if sp.simplify(sp.together((a - b).xreplace({rate: value}))) != 0:
+                return None
+    except _ERRORS:
+        return None
+    except sp.PolynomialError:
+        return None
+    return f"{checker.tex(rate)} = {checker.tex(value)} on the motions of the case"
