@@ -82,18 +82,15 @@ class BatchSolution:
         return len(self.y)
 
     def __getitem__(self, b: int) -> Solution:
-        return _solution(self.t, self.y[b], self.method, self.stats[b], self.messages[b])
-
-
-def _solution(t, y, method, st, message) -> Solution:
-    status = int(st["status"])
-    return Solution(
-        t=t, y=y, method=method, status=status,
-        nfev=int(st["nfev"]), njev=int(st["njev"]), nstep=int(st["nstep"]),
-        naccept=int(st["naccept"]), nreject=int(st["nreject"]), nlu=int(st["nlu"]),
-        message=message,
-        t_fail=float(st["t_fail"]) if status else None,
-        fail_index=int(st["fail_index"]) if status == 2 else None)
+        st = self.stats[b]
+        status = int(st["status"])
+        return Solution(
+            t=self.t, y=self.y[b], method=self.method, status=status,
+            nfev=int(st["nfev"]), njev=int(st["njev"]), nstep=int(st["nstep"]),
+            naccept=int(st["naccept"]), nreject=int(st["nreject"]), nlu=int(st["nlu"]),
+            message=self.messages[b],
+            t_fail=float(st["t_fail"]) if status else None,
+            fail_index=int(st["fail_index"]) if status == 2 else None)
 
 
 class Kernel:
