@@ -80,20 +80,15 @@ def rule_templates() -> dict:
     return {r.name: env.get_template(f"c/taylor_rules/{r.name}.j2").module for r in jet.RULE_TABLE}
 
 
-def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | None = None
-                  ) -> dict[str, str]:
+def render_taylor(model, spec: KernelSpec | None = None) -> dict[str, str]:
     """``<name>_taylor.h`` and ``<name>_taylor.c`` for ``model`` (``spec``: its kernel spec, if
     the caller has it): the coefficient recurrences and the Taylor solvers
     (:mod:`derive.methods.taylor`). The C includes ``<name>_solvers.h`` (``derive_stats``, the
     ``DERIVE_*`` codes, the model header). Raises :class:`NoTaylorRule` for a function without
     a rule."""
-    names = list(METHODS) if methods is None else list(methods)
-    for n in names:
-        if n not in METHODS:
-            raise ValueError(f"unknown Taylor method {n!r}; known: {', '.join(METHODS)}")
     spec = spec if spec is not None else KernelSpec.of(model)
     d = decompose(spec, outputs=True)
-    methods_ctx = [_method_context(METHODS[n]) for n in names]
+    methods_ctx = [_method_context(m) for m in METHODS.values()]
     rhs_steps = [s for s in d.steps if not s.obs]
     obs_steps = [s for s in d.steps if s.obs]
     jet_scope = _scope(rhs_steps, d.guards + [op.expr for op in d.outputs if isinstance(op, Const)], d)
