@@ -282,10 +282,6 @@ class KernelSpec:
         """Weighted operation count of one right-hand side (domain checks included)."""
         return operation_cost(self.rhs)
 
-    @property
-    def name(self):
-        return self.model.name
-
     def context(self, language: str) -> dict:
         """The template context: everything a template needs, already printed."""
         m = self.model
