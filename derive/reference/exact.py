@@ -167,10 +167,8 @@ def _pole_root(p, upper):
 
 
 def _near_pole(p, gap, A, root, moves, mid):
-    """(gap, root) of the motion's root next to a pole refined on that pole's centred cubic
-    ``p`` (root y1 of y = sin²(β/2) or z2 of z = cos²(β/2); ``gap`` the pole's δ or σ, ``A``
-    its A, ``moves`` whether the roots straddle an interval, ``mid`` their midpoint in this
-    variable): both snapped to 0 when the closest approach is below ``_POLE_SNAP``."""
+    """(gap, root): the root next to a pole (y1 or z2, with the pole's δ or σ and A) refined on
+    the pole-centred cubic ``p`` below ``mid``; both 0 when the approach is below ``_POLE_SNAP``."""
     if gap == 0.0:
         root = 0.0 if A > 0 else max(root, 0.0)
     elif moves and _poly(p, mid) > 0:
