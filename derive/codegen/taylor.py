@@ -261,14 +261,10 @@ def _pointwise(model, d: Decomposition) -> dict | None:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
     uses_t = block.uses_time()
-    pr = _BlockPrinter(model.params)
+    pr = _BlockPrinter(block.fixed(model.params))
     for name, e in block.temps:
         text = pr.doprint(e)
-        if e.free_symbols <= pr.fixed:
-            pr.fixed.add(name)
-            pr.once.append(("double", str(name), text))
-        else:
-            pr.each.append(("double", str(name), text))
+        (pr.once if name in pr.fixed else pr.each).append(("double", str(name), text))
     outs = [(j, pr.doprint(e)) for (j, _), e in zip(d.pointwise, block.outputs)]
     series_columns = [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
     return {"states": block.uses(model.states), "params": block.uses(model.params),
