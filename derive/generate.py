@@ -16,6 +16,7 @@ effect, a patched function), so the default, for callers inside a longer process
 from __future__ import annotations
 
 import concurrent.futures
+import contextlib
 import functools
 import multiprocessing
 import os
@@ -78,7 +79,8 @@ def _cached_everything() -> tuple:
     folder = models_dir() / name
     files, problem = read_folder(folder, REQUIRED)
     if files is not None:
-        _touch(folder)
+        with contextlib.suppress(OSError):  # just used: keep_newest keeps the most recently used
+            os.utime(folder)
         return tuple(sorted((rel, data.decode("utf-8")) for rel, data in files.items()))
     if problem != ABSENT:
         print(f"note: cached generation {folder} {problem}; deriving it again", file=sys.stderr, flush=True)
@@ -91,14 +93,6 @@ def _cached_everything() -> tuple:
         print(f"note: cannot keep the generation in {folder} ({exc.strerror or exc})", file=sys.stderr,
               flush=True)
     return everything
-
-
-def _touch(folder: Path) -> None:
-    """Mark a kept generation as just used (:func:`~derive.runtime.cache.keep_newest` keeps the most recently used)."""
-    try:
-        os.utime(folder)
-    except OSError:
-        pass
 
 
 @functools.lru_cache(maxsize=1)

@@ -502,25 +502,23 @@ def _singular_keys(e, states) -> set | None:
         if e.exp.is_Integer and e.exp >= 0:
             return inner
         return inner | {("pow", e.base)}
-    if e.func in (sp.log, sp.atan2) or isinstance(e, _ENTIRE) or e.is_Add or e.is_Mul:
-        keys = set()
-        for a in e.args:
-            k = _singular_keys(a, states)
-            if k is None:
-                return None
-            keys |= k
-        if e.func in (sp.log, sp.atan2):
-            keys.add((e.func.__name__, e.args))
-        return keys
     if isinstance(e, sp.Piecewise):
-        keys = set()
-        for value, cond in e.args:
-            k = _singular_keys(value, states)
-            if k is None or (cond.free_symbols & states):
-                return None
-            keys |= k
-        return keys
-    return None
+        if any(cond.free_symbols & states for _, cond in e.args):
+            return None
+        operands = [value for value, _ in e.args]
+    elif e.func in (sp.log, sp.atan2) or isinstance(e, _ENTIRE) or e.is_Add or e.is_Mul:
+        operands = e.args
+    else:
+        return None
+    keys = set()
+    for a in operands:
+        k = _singular_keys(a, states)
+        if k is None:
+            return None
+        keys |= k
+    if e.func in (sp.log, sp.atan2):
+        keys.add((e.func.__name__, e.args))
+    return keys
 
 
 def series_safe(model, e) -> bool:

@@ -160,19 +160,21 @@ class Block:
     def c(self):
         return [(str(n), c_expr(e)) for n, e in self.temps], [c_expr(e) for e in self.outputs]
 
-    def c_hoisted(self, params) -> tuple[list, list]:
-        """The temporaries printed for C in two lists: those made of ``params`` (and of earlier
-        such temporaries) alone, then the others, each list in the CSE's order. A loop over
-        samples computes the first list once: the same expressions, the same bits."""
+    def fixed(self, params) -> set:
+        """``params`` and the temporaries made of them alone (or of earlier such temporaries)."""
         fixed = set(params)
-        once, each = [], []
         for n, e in self.temps:
             if e.free_symbols <= fixed:
                 fixed.add(n)
-                once.append((str(n), c_expr(e)))
-            else:
-                each.append((str(n), c_expr(e)))
-        return once, each
+        return fixed
+
+    def c_hoisted(self, params) -> tuple[list, list]:
+        """The temporaries printed for C in two lists: those made of ``params`` alone
+        (:meth:`fixed`), then the others, each list in the CSE's order. A loop over samples
+        computes the first list once: the same expressions, the same bits."""
+        fixed = self.fixed(params)
+        return ([(str(n), c_expr(e)) for n, e in self.temps if n in fixed],
+                [(str(n), c_expr(e)) for n, e in self.temps if n not in fixed])
 
     def uses_time(self) -> bool:
         """Whether an expression of the block mentions the time ``t``."""
@@ -181,11 +183,7 @@ class Block:
 
     def numpy(self, params=()):
         """Printed for NumPy, the parameters (and temporaries made of them alone) scalars."""
-        scalars = set(params)
-        for n, e in self.temps:
-            if e.free_symbols <= scalars:
-                scalars.add(n)
-        scalars = frozenset(scalars)
+        scalars = frozenset(self.fixed(params))
         return ([(str(n), np_expr(e, scalars)) for n, e in self.temps],
                 [np_expr(e, scalars) for e in self.outputs])
 
@@ -281,10 +279,6 @@ class KernelSpec:
     def cost(self) -> int:
         """Weighted operation count of one right-hand side (domain checks included)."""
         return operation_cost(self.rhs)
-
-    @property
-    def name(self):
-        return self.model.name
 
     def context(self, language: str) -> dict:
         """The template context: everything a template needs, already printed."""

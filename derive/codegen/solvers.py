@@ -7,6 +7,7 @@ coefficients become correctly rounded C literals (:func:`lincomb`).
 from __future__ import annotations
 
 import functools
+import math
 from fractions import Fraction
 
 from derive.codegen.render import RUNTIME_FILES, c_double, render
@@ -86,16 +87,9 @@ def _method_context(m: Method) -> dict:
         # Lagrange basis on the nodes {0, c_1..c_s} (the collocation polynomial through y_n and
         # the stage values), for extrapolating the next step's Newton start values.
         ctx["lagrange_den"] = [
-            float(t.c[j] * _prod(t.c[j] - t.c[m_] for m_ in range(s) if m_ != j))
+            float(t.c[j] * math.prod(t.c[j] - t.c[m_] for m_ in range(s) if m_ != j))
             for j in range(s)]
     return ctx
-
-
-def _prod(it):
-    out = Fraction(1)
-    for x in it:
-        out *= x
-    return out
 
 
 def render_solvers(prefix: str, ny: int, methods: list[str] | None = None,

@@ -80,20 +80,15 @@ def rule_templates() -> dict:
     return {r.name: env.get_template(f"c/taylor_rules/{r.name}.j2").module for r in jet.RULE_TABLE}
 
 
-def render_taylor(model, methods: list[str] | None = None, spec: KernelSpec | None = None
-                  ) -> dict[str, str]:
+def render_taylor(model, spec: KernelSpec | None = None) -> dict[str, str]:
     """``<name>_taylor.h`` and ``<name>_taylor.c`` for ``model`` (``spec``: its kernel spec, if
     the caller has it): the coefficient recurrences and the Taylor solvers
     (:mod:`derive.methods.taylor`). The C includes ``<name>_solvers.h`` (``derive_stats``, the
     ``DERIVE_*`` codes, the model header). Raises :class:`NoTaylorRule` for a function without
     a rule."""
-    names = list(METHODS) if methods is None else list(methods)
-    for n in names:
-        if n not in METHODS:
-            raise ValueError(f"unknown Taylor method {n!r}; known: {', '.join(METHODS)}")
     spec = spec if spec is not None else KernelSpec.of(model)
     d = decompose(spec, outputs=True)
-    methods_ctx = [_method_context(METHODS[n]) for n in names]
+    methods_ctx = [_method_context(m) for m in METHODS.values()]
     rhs_steps = [s for s in d.steps if not s.obs]
     obs_steps = [s for s in d.steps if s.obs]
     jet_scope = _scope(rhs_steps, d.guards + [op.expr for op in d.outputs if isinstance(op, Const)], d)
@@ -266,14 +261,10 @@ def _pointwise(model, d: Decomposition) -> dict | None:
         return None
     block = Block.of([e for _, e in d.pointwise], "x")
     uses_t = block.uses_time()
-    pr = _BlockPrinter(model.params)
+    pr = _BlockPrinter(block.fixed(model.params))
     for name, e in block.temps:
         text = pr.doprint(e)
-        if e.free_symbols <= pr.fixed:
-            pr.fixed.add(name)
-            pr.once.append(("double", str(name), text))
-        else:
-            pr.each.append(("double", str(name), text))
+        (pr.once if name in pr.fixed else pr.each).append(("double", str(name), text))
     outs = [(j, pr.doprint(e)) for (j, _), e in zip(d.pointwise, block.outputs)]
     series_columns = [(len(model.states) + c, s) for c, s in block.uses(d.column_symbols)]
     return {"states": block.uses(model.states), "params": block.uses(model.params),

@@ -20,14 +20,6 @@ class Status(enum.IntEnum):
     RANGE = 8
     NONFINITE_OUTPUT = 9
 
-    @property
-    def c_name(self) -> str:
-        return f"DERIVE_{self.name}"
-
-    @property
-    def text(self) -> str:
-        return _TEXT[self]
-
 
 _TEXT = {
     Status.OK: "success",
@@ -45,7 +37,7 @@ _TEXT = {
 
 def c_table() -> dict[int, tuple[str, str]]:
     """{code: (C macro name, text)} for the C header template."""
-    return {int(s): (s.c_name, s.text) for s in Status}
+    return {int(s): (f"DERIVE_{s.name}", _TEXT[s]) for s in Status}
 
 
 def message(stats, state_names=(), max_steps: int | None = None) -> str:
@@ -67,4 +59,4 @@ def message(stats, state_names=(), max_steps: int | None = None) -> str:
     if status is Status.NEWTON:
         return (f"t = {t}: Newton iteration failed to converge "
                 f"(h = {float(stats['h_fail']):.3g}, after halving the step)")
-    return f"t = {t}: {status.text}"
+    return f"t = {t}: {_TEXT[status]}"

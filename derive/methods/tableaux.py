@@ -79,8 +79,6 @@ class Tableau:
     err_order  step-size exponent: the controlled error behaves like h^(err_order+1)
     implicit   stages coupled (A not strictly lower triangular): solved by Newton iteration
     dense      optional :class:`DenseOutput`
-    fsal       the stage after the last (index ``n_stages``) is ``f(t+h, y_{n+1})``, reused as
-               the first stage of the next step
     """
 
     name: str
@@ -93,7 +91,6 @@ class Tableau:
     implicit: bool = False
     dense: DenseOutput | None = None
     b_err2: Row | None = None
-    fsal: bool = False
     reference: str = field(default="", compare=False)
 
     def __post_init__(self):
@@ -314,6 +311,14 @@ _DOP_D = [
 ]
 
 
+def _sparse_row(entries: dict, length: int) -> list:
+    """A row of ``length`` exact coefficients, zero but at the ``{index: decimal string}`` entries."""
+    row = [F(0)] * length
+    for j, v in entries.items():
+        row[j] = F(v)
+    return row
+
+
 def _dop853() -> Tableau:
     n, n_ext = 12, 16
     A = [[F(0)] * n_ext for _ in range(n_ext)]
@@ -324,13 +329,8 @@ def _dop853() -> Tableau:
     e3 = list(b)
     for j, v in _DOP_BHH.items():
         e3[j] -= F(v)
-    e5 = [F(0)] * n
-    for j, v in _DOP_E5.items():
-        e5[j] = F(v)
-    D = [[F(0)] * n_ext for _ in range(4)]
-    for r, row in enumerate(_DOP_D):
-        for j, v in row.items():
-            D[r][j] = F(v)
+    e5 = _sparse_row(_DOP_E5, n)
+    D = [_sparse_row(row, n_ext) for row in _DOP_D]
     dense = DenseOutput(
         kind="dop853",
         order=7,
@@ -348,7 +348,6 @@ def _dop853() -> Tableau:
         b_err2=tuple(e3),
         err_order=7,
         dense=dense,
-        fsal=True,
         reference="Hairer, Nørsett, Wanner, Solving ODEs I (1993) II.10; dop853.f; SciPy",
     )
 

@@ -166,6 +166,17 @@ def _pole_root(p, upper):
                            maxiter=1000)
 
 
+def _near_pole(p, gap, A, root, moves, mid):
+    """(gap, root): the root next to a pole (y1 or z2, with the pole's δ or σ and A) refined on
+    the pole-centred cubic ``p`` below ``mid``; both 0 when the approach is below ``_POLE_SNAP``."""
+    if gap == 0.0:
+        root = 0.0 if A > 0 else max(root, 0.0)
+    elif moves and _poly(p, mid) > 0:
+        root = _pole_root(p, mid)
+    root = max(root, 0.0)
+    return (0.0, 0.0) if 2.0 * math.sqrt(root) < _POLE_SNAP else (gap, root)
+
+
 def _heavy_top_core(I1, I3, mgl, b0, ad0, bd0, gd0, t):
     """The heavy top for 0 <= b0 <= pi/2, any sign of mgl, in y = sin^2(b/2), z = 1 - y;
     alpha and gamma are returned relative to their initial values.
@@ -231,26 +242,14 @@ def _heavy_top_core(I1, I3, mgl, b0, ad0, bd0, gd0, t):
     y1_refined = z2_refined = False
     if y1 < 0.5 * y0:
         p = (-0.25 * delta * delta, A - bb * delta, 2 * kap - A - bb * bb, -2 * kap)
-        if delta == 0.0:
-            y1 = 0.0 if A > 0 else max(y1, 0.0)
-        elif dy > 0 and _poly(p, y0 + 0.5 * (x1 + x2)) > 0:
-            y1 = _pole_root(p, y0 + 0.5 * (x1 + x2))
-        y1 = max(y1, 0.0)
-        if 2.0 * math.sqrt(y1) < _POLE_SNAP:
-            delta, y1 = 0.0, 0.0
+        delta, y1 = _near_pole(p, delta, A, y1, dy > 0, y0 + 0.5 * (x1 + x2))
         y1_refined = True
         ym, z1 = y0 - y1, 1.0 - y1
         dy = y2 - y1
     if z2 < 0.5 * z0:
         Az = A + 2 * kap
         p = (-0.25 * sigma * sigma, Az + bb * sigma, -Az - 2 * kap - bb * bb, 2 * kap)
-        if sigma == 0.0:
-            z2 = 0.0 if Az > 0 else max(z2, 0.0)
-        elif dy > 0 and _poly(p, z0 - 0.5 * (x1 + x2)) > 0:
-            z2 = _pole_root(p, z0 - 0.5 * (x1 + x2))
-        z2 = max(z2, 0.0)
-        if 2.0 * math.sqrt(z2) < _POLE_SNAP:
-            sigma, z2 = 0.0, 0.0
+        sigma, z2 = _near_pole(p, sigma, Az, z2, dy > 0, z0 - 0.5 * (x1 + x2))
         z2_refined = True
         yp, y2 = z0 - z2, 1.0 - z2
         dy = z1 - z2

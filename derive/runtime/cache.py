@@ -130,15 +130,18 @@ def mark(folder: Path) -> None:
 def is_marked(path: str | os.PathLike) -> bool:
     """Whether ``path`` is a real folder (not a symbolic link) holding the cache's marker: a
     folder the cache made, and so may remove."""
+    return stat.S_ISDIR(_lmode(path)) and _holds_exactly(os.path.join(path, MARKER), MARKER_TEXT)
+
+
+def _holds_exactly(path: str | os.PathLike, text: str) -> bool:
+    """Whether ``path`` is a regular file (not a symbolic link) holding exactly ``text``."""
+    data = text.encode()
     try:
-        if not stat.S_ISDIR(os.lstat(path).st_mode):
+        st = os.lstat(path)
+        if not stat.S_ISREG(st.st_mode) or st.st_size != len(data):
             return False
-        tag = os.path.join(path, MARKER)
-        st = os.lstat(tag)
-        if not stat.S_ISREG(st.st_mode) or st.st_size != len(MARKER_TEXT.encode()):
-            return False
-        with open(tag, encoding="utf-8", errors="replace") as f:
-            return f.read() == MARKER_TEXT
+        with open(path, "rb") as f:
+            return f.read() == data
     except OSError:
         return False
 
@@ -263,14 +266,7 @@ def entry_lock(folder: Path, name: str):
 def is_lock(path: str | os.PathLike) -> bool:
     """Whether ``path`` is a lock file the cache wrote (:func:`entry_lock`): a regular file (not
     a symbolic link) holding exactly :data:`LOCK_TEXT`."""
-    try:
-        st = os.lstat(path)
-        if not stat.S_ISREG(st.st_mode) or st.st_size != len(LOCK_TEXT.encode()):
-            return False
-        with open(path, "rb") as f:
-            return f.read() == LOCK_TEXT.encode()
-    except OSError:
-        return False
+    return _holds_exactly(path, LOCK_TEXT)
 
 
 def stamp_symbol(key: str) -> str:

@@ -81,10 +81,6 @@ class Description:
                    jet_weight=d.get("jet_weight", 0.0), output_cost=d.get("output_cost", 0))
 
 
-def _generated() -> Path:
-    return GENERATED
-
-
 def _norm(key) -> tuple:
     formulation, symmetric, effects = key
     return (formulation, bool(symmetric), tuple(e.name for e in fx.lookup(effects)))
@@ -112,9 +108,9 @@ def _load(key) -> Description:
     """The description of the model with this key: from generated/, from the cache, or derived
     now (SymPy) and cached; a cached one that does not verify is derived again."""
     name = model_name(*key)
-    shipped = _generated() / "models" / f"{name}.json"
+    shipped = GENERATED / "models" / f"{name}.json"
     if shipped.is_file():
-        return Description.from_json(shipped.read_text(encoding="utf-8"), _generated())
+        return Description.from_json(shipped.read_text(encoding="utf-8"), GENERATED)
     folder = _cache_folder(name, key)
     desc, problem = _cached(folder, name)
     if desc is not None:
@@ -162,7 +158,7 @@ def shipped(key) -> Description | None:
     """The description of a model the package ships in generated/ (the same on every machine
     and in every process, whatever the cache holds), else None."""
     key = _norm(key)
-    if (_generated() / "models" / f"{model_name(*key)}.json").is_file():
+    if (GENERATED / "models" / f"{model_name(*key)}.json").is_file():
         return describe(key)
     return None
 
@@ -175,7 +171,7 @@ def available(key) -> Description | None:
     if key in _absent:
         return None
     name = model_name(*key)
-    for folder in (_generated(), _cache_folder(name, key)):
+    for folder in (GENERATED, _cache_folder(name, key)):
         # A damaged cached model is healed by describe (derived again, once).
         if (folder / "models" / f"{name}.json").is_file():
             _known.add(key)

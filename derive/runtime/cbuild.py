@@ -243,10 +243,6 @@ def _host_source() -> str:
     return (TEMPLATES / "c" / "host_sigint.c").read_text(encoding="utf-8")
 
 
-def _sha256(path: Path) -> str:
-    return hashlib.sha256(path.read_bytes()).hexdigest()
-
-
 def _unload(lib: ctypes.CDLL) -> None:
     """dlclose a library that must not stay loaded: the loader reuses an open library of the same
     path, so the one rebuilt there would otherwise never be loaded."""
@@ -336,7 +332,7 @@ def _compile_into_cache(fname: str, name: str, sources: dict[str, str], stamp: s
         out = work / fname
         _run(command(work, out), work, what)
         side = work / (fname + CHECKSUM)
-        side.write_text(f"{_sha256(out)}  {fname}\n")
+        side.write_text(f"{hashlib.sha256(out.read_bytes()).hexdigest()}  {fname}\n")
         target = root / fname
         for dest in (target.with_name(fname + CHECKSUM), target):
             make_room(dest)

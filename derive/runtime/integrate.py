@@ -19,7 +19,7 @@ import numpy as np
 from derive.methods.registry import METHODS, TOLERANCE_DRIVERS
 from derive.methods.registry import build as method_build, method as compiled_method
 from derive.runtime.cbuild import BUILDS, DEFAULT_FLAGS, compile_library
-from derive.runtime.records import (STATS_DOUBLES, STATS_DTYPE, Driver, _ptr, bind, driver_args, guarded,
+from derive.runtime.records import (STATS_DOUBLES, STATS_DTYPE, Driver, _ptr, bind, guarded,
                                     saveat)
 
 
@@ -87,10 +87,6 @@ class ModelKernel:
             kernel = cls._cache[key] = cls(desc, method, lib)
         return kernel
 
-    def driver_args(self, rtol, atol, h, max_steps) -> list:
-        """The run driver's arguments (:func:`derive.runtime.records.driver_args`)."""
-        return driver_args(self.method, rtol, atol, h, max_steps)
-
     def init(self, inputs: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """(y0, p with the derived parameters written, return code) from the init map."""
         y = np.empty(self.ny)
@@ -111,9 +107,9 @@ class ModelKernel:
 
     def simulate(self, inputs, p, t, args, pole_check: int = 0):
         """One trajectory: returns (out (NOBS, n), y (n, NY), p (derived parameters written),
-        stats record). ``args``: the driver's arguments (``driver_args``); ``pole_check`` 1 or 2
-        refuses (status RANGE, nothing integrated) a start that fails ``pole_clear``. A
-        one-off :class:`BoundRun` (its one buffer layout and guarded call)."""
+        stats record). ``args``: the driver's arguments
+        (:func:`derive.runtime.records.driver_args`); ``pole_check`` 1 or 2 refuses (status
+        RANGE, nothing integrated) a start that fails ``pole_clear``. A one-off :class:`BoundRun` (its one buffer layout and guarded call)."""
         bound = self.bind(t, inputs, args, pole_check)
         out, y, pp, _, _, buf = bound(np.asarray(p, dtype=np.float64))
         return out, y, pp, bound.stats(buf)
@@ -191,7 +187,7 @@ class ModelKernel:
         t : ndarray
             The output times of the full grid (its first and last are used, the rest checked).
         args : list
-            The driver's arguments (:meth:`driver_args`).
+            The driver's arguments (:func:`derive.runtime.records.driver_args`).
         pole_check : int
             0, 1 or 2, as for :meth:`simulate_batch` (the first refusal stops the batch).
 
@@ -253,7 +249,7 @@ class BoundRun:
     inputs : ndarray
         The init map's inputs (as ``t``).
     args : list
-        The driver's arguments (:meth:`ModelKernel.driver_args`).
+        The driver's arguments (:func:`derive.runtime.records.driver_args`).
     pole_check : int
         0, 1 or 2, as for :meth:`ModelKernel.simulate`.
     """

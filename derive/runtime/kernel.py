@@ -11,7 +11,7 @@ Methods are the registry :data:`derive.methods.registry.METHODS` (``dop853``, ``
 (:data:`derive.methods.registry.DRIVER_PARAMS`), so a new method needs no code here.
 
 Failures come back from C as a status code (:data:`derive.codegen.solvers.STATUS`) plus where they
-happened; :func:`failure_message` turns them into the one line that
+happened; :func:`derive.methods.status.message` turns them into the one line that
 :class:`~derive.errors.IntegrationError` carries, naming the state by its model name.
 """
 from __future__ import annotations
@@ -24,7 +24,7 @@ import numpy as np
 from derive.codegen.solvers import render_solvers
 from derive.errors import IntegrationError
 from derive.methods.registry import METHODS, compiled_methods
-from derive.methods.status import message as _status_message
+from derive.methods.status import message as failure_message
 from derive.runtime.cbuild import DEFAULT_FLAGS, compile_library
 from derive.runtime.records import (DEFAULT_MAX_STEPS, DEFAULT_NEWTON_MAXITER,
                                     DEFAULT_NEWTON_TOL, STATS_DTYPE, Driver, bind, saveat)
@@ -34,11 +34,6 @@ _F64 = np.ctypeslib.ndpointer(dtype=np.float64, flags="C_CONTIGUOUS")
 
 def _fmt(x: float) -> str:
     return f"{x:.8g}"
-
-
-def failure_message(stats, state_names=(), max_steps: int | None = None) -> str:
-    """The one-line description of a failed solve (``stats``: a STATS_DTYPE record)."""
-    return _status_message(stats, state_names, max_steps)
 
 
 @dataclass(frozen=True)
@@ -87,18 +82,15 @@ class BatchSolution:
         return len(self.y)
 
     def __getitem__(self, b: int) -> Solution:
-        return _solution(self.t, self.y[b], self.method, self.stats[b], self.messages[b])
-
-
-def _solution(t, y, method, st, message) -> Solution:
-    status = int(st["status"])
-    return Solution(
-        t=t, y=y, method=method, status=status,
-        nfev=int(st["nfev"]), njev=int(st["njev"]), nstep=int(st["nstep"]),
-        naccept=int(st["naccept"]), nreject=int(st["nreject"]), nlu=int(st["nlu"]),
-        message=message,
-        t_fail=float(st["t_fail"]) if status else None,
-        fail_index=int(st["fail_index"]) if status == 2 else None)
+        st = self.stats[b]
+        status = int(st["status"])
+        return Solution(
+            t=self.t, y=self.y[b], method=self.method, status=status,
+            nfev=int(st["nfev"]), njev=int(st["njev"]), nstep=int(st["nstep"]),
+            naccept=int(st["naccept"]), nreject=int(st["nreject"]), nlu=int(st["nlu"]),
+            message=self.messages[b],
+            t_fail=float(st["t_fail"]) if status else None,
+            fail_index=int(st["fail_index"]) if status == 2 else None)
 
 
 class Kernel:

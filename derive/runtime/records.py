@@ -30,13 +30,12 @@ STATS_DTYPE = np.dtype([
 STATS_DOUBLES = STATS_DTYPE.itemsize // 8
 
 
-def driver_args(method: str, rtol: float, atol: float, h: float | None, max_steps: int,
-                newton_tol: float = DEFAULT_NEWTON_TOL, newton_maxiter: int = DEFAULT_NEWTON_MAXITER) -> list:
+def driver_args(method: str, rtol: float, atol: float, h: float | None, max_steps: int) -> list:
     """The run driver's arguments after ``n_out`` for the compiled ``method``, in its C order
     (its registry entry's ``params``: DOP853's ``rtol, atol, h0, max_steps``, a fixed-step
-    method's ``h``, …; ``h0`` = 0, the driver's own first step)."""
+    method's ``h``, …; ``h0`` = 0, the driver's own first step; Newton's settings the defaults)."""
     values = {"rtol": rtol, "atol": atol, "h0": 0.0, "max_steps": max_steps, "h": h,
-              "newton_tol": newton_tol, "newton_maxiter": newton_maxiter}
+              "newton_tol": DEFAULT_NEWTON_TOL, "newton_maxiter": DEFAULT_NEWTON_MAXITER}
     return [values[name] for _, name in compiled_method(method).params]
 assert STATS_DTYPE.itemsize % 8 == 0 and STATS_DTYPE.alignment <= 8  # a record fits a double slice
 

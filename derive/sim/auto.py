@@ -98,14 +98,6 @@ def _clear(scene, name: str, method: str) -> bool:
     return rc == 0 and kernel.pole_clear(y, p, pole_mode(name))
 
 
-def candidates(scene, effects: tuple | None = None) -> list[str]:
-    """The applicable formulations, cheapest first (see the module docstring); ``effects`` as
-    in :func:`plan`."""
-    effects = scene.effects if effects is None else effects
-    return [name for name in _by_cost(scene.symmetric, effects)
-            if REGISTRY[name].applicable(scene) is None]
-
-
 @functools.lru_cache(maxsize=256)
 def _by_cost(symmetric, effects) -> tuple:
     """Every registered formulation for this body symmetry and these effects, cheapest first

@@ -45,6 +45,7 @@ from derive.methods.registry import tolerance_driven
 from derive.methods.status import Status
 from derive.runtime import catalogue
 from derive.runtime.integrate import ModelKernel
+from derive.runtime.records import driver_args
 from derive.sim import auto, plan
 from derive.sim.inputs import AUTO, _check_budget, _settings, choose_method, default_step, inputs_of, params_of
 from derive.sim.result import Result, _check_pole, _explain, _pole_suspects, _quiet, _result, selection
@@ -297,7 +298,7 @@ class BatchPlan:
         desc = catalogue.describe((formulation, first.symmetric, self.effects))
         kernel = ModelKernel.load(desc, self.method, build)
         if self.h is not None:
-            args = kernel.driver_args(first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
+            args = driver_args(self.method, first.simulate.rtol, first.simulate.atol, self.h, first.simulate.max_steps)
         else:
             args = _settings(first, self.method, kernel)
         return desc, kernel, args

@@ -13,6 +13,7 @@ import numpy as np
 from derive.errors import SceneError
 from derive.methods.registry import DEFAULT_METHOD
 from derive.runtime.integrate import ModelKernel
+from derive.runtime.records import driver_args
 from derive.sim.scene import Scene
 from derive.symbolic import effects
 
@@ -92,4 +93,4 @@ def _settings(scene: Scene, method: str, kernel: ModelKernel) -> list:
     if not kernel.adaptive:
         h = default_step(scene) if h is None else h
         _check_budget(scene, method, h)
-    return kernel.driver_args(s.rtol, s.atol, h, s.max_steps)
+    return driver_args(kernel.method, s.rtol, s.atol, h, s.max_steps)

@@ -52,7 +52,7 @@ def _solve_scipy(desc, method, inputs, p, t, sc):
     y0, p, rc = kernel.init(inputs, p)  # p: a copy with the derived parameters written
     if rc:
         raise IntegrationError(f"t = {t[0]:.6g}: the initial state is not finite")
-    mod = numpy_module(desc)
+    mod = _numpy_module(desc.folder, desc.name)
     s = sc.simulate
     spent: list = []
     sol = solve_ivp(mod.rhs, (t[0], t[-1]), y0, method=_budgeted(method, s.max_steps, spent),
@@ -69,13 +69,9 @@ def _solve_scipy(desc, method, inputs, p, t, sc):
 
 @functools.lru_cache(maxsize=None)
 def _numpy_module(folder: str, name: str):
+    """The generated NumPy module of the model ``name`` in ``folder`` (imported from its file)."""
     spec = importlib.util.spec_from_file_location(f"derive_generated_{name}",
                                                   Path(folder) / "numpy" / f"{name}.py")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
-
-
-def numpy_module(desc):
-    """The generated NumPy module of a model (imported from its file)."""
-    return _numpy_module(desc.folder, desc.name)

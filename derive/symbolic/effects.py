@@ -73,9 +73,6 @@ class Table:
     #: Fills derived keys from the validated values (gravity: com from l and l from com).
     complete: Callable[[dict], dict] = lambda values: values
 
-    def key(self, name: str) -> Key:
-        return next(k for k in self.keys if k.name == name)
-
 
 @dataclass(frozen=True)
 class Effect:

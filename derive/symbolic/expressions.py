@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import ast
 import math
+import operator
 from dataclasses import dataclass
 
 #: Longest expression accepted, in characters.
@@ -44,7 +45,9 @@ FUNCTIONS = {
 #: Names every expression may use besides the caller's.
 CONSTANTS = ("pi",)
 
-_BINARY = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.Pow: "**"}
+#: The binary operators allowed, each with what it computes (on floats and on SymPy alike).
+_BINARY = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
+           ast.Pow: operator.pow}
 _UNARY = {ast.UAdd: "+", ast.USub: "-"}
 
 #: What a refused node is called in a message.
@@ -118,10 +121,7 @@ def parse(text, names) -> Parsed:
     return Parsed(text, tree, frozenset(used))
 
 
-_MATH = {"sin": math.sin, "cos": math.cos, "tan": math.tan, "asin": math.asin,
-         "acos": math.acos, "atan": math.atan, "atan2": math.atan2, "sinh": math.sinh,
-         "cosh": math.cosh, "tanh": math.tanh, "exp": math.exp, "log": math.log,
-         "sqrt": math.sqrt, "abs": abs}
+_MATH = {**{name: getattr(math, name) for name in FUNCTIONS if name != "abs"}, "abs": abs}
 
 
 def _fold(node) -> float | None:
@@ -146,17 +146,11 @@ def _fold(node) -> float | None:
         if a is None or b is None:
             return None
         try:
-            if op is ast.Add:
-                x = a + b
-            elif op is ast.Sub:
-                x = a - b
-            elif op is ast.Mult:
-                x = a * b
-            elif op is ast.Div:
-                x = a / b
+            if op is not ast.Pow:
+                x = _BINARY[op](a, b)
+            elif a == 0 and b < 0:
+                raise ZeroDivisionError
             else:
-                if a == 0 and b < 0:
-                    raise ZeroDivisionError
                 x = math.pow(a, b)
         except ZeroDivisionError:
             raise ExpressionError("divides by zero (a constant part of it)") from None
@@ -295,9 +289,7 @@ def _constant(node) -> float | None:
                     raise ExpressionError(f"has a constant power of degree above {MAX_DEGREE}")
                 value = math.pow(abs(a), b) if a != 0 or b > 0 else math.inf
             else:
-                value = {ast.Add: a + b, ast.Sub: a - b, ast.Mult: a * b}.get(type(node.op))
-                if value is None:
-                    value = a / b if b != 0 else math.inf
+                value = math.inf if type(node.op) is ast.Div and b == 0 else _BINARY[type(node.op)](a, b)
         except OverflowError:
             value = math.inf
         if not math.isfinite(value):
@@ -344,9 +336,7 @@ def to_sympy(parsed: Parsed, symbols):
     """
     import sympy as sp
 
-    funcs = {"sin": sp.sin, "cos": sp.cos, "tan": sp.tan, "asin": sp.asin, "acos": sp.acos,
-             "atan": sp.atan, "atan2": sp.atan2, "sinh": sp.sinh, "cosh": sp.cosh,
-             "tanh": sp.tanh, "exp": sp.exp, "log": sp.log, "sqrt": sp.sqrt, "abs": sp.Abs}
+    funcs = {**{name: getattr(sp, name) for name in FUNCTIONS if name != "abs"}, "abs": sp.Abs}
     env = {"pi": sp.pi, **symbols}
 
     def build(node):  # depth bounded by MAX_DEPTH: recursion is safe
@@ -359,17 +349,7 @@ def to_sympy(parsed: Parsed, symbols):
             x = build(node.operand)
             return -x if type(node.op) is ast.USub else x
         if kind is ast.BinOp:
-            a, b = build(node.left), build(node.right)
-            op = type(node.op)
-            if op is ast.Add:
-                return a + b
-            if op is ast.Sub:
-                return a - b
-            if op is ast.Mult:
-                return a * b
-            if op is ast.Div:
-                return a / b
-            return a ** b
+            return _BINARY[type(node.op)](build(node.left), build(node.right))
         if kind is ast.Call:
             return funcs[node.func.id](*(build(arg) for arg in node.args))
         raise ExpressionError(f"{type(node).__name__} is not allowed")  # unreachable after parse

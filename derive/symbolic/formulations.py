@@ -3,7 +3,7 @@
 Numbered contract of an entry (in the manner of ``scipy.integrate._ivp.base.OdeSolver``):
 
 1. ``name``: how scenes and the command line name it (``simulate.formulation``).
-2. ``builder``: the name of the function in :mod:`derive.symbolic.models` that derives its
+2. its builder, under ``name`` in :data:`derive.symbolic.models.BUILDERS`: derives its
    :class:`~derive.symbolic.models.Model` (state, parameters, right-hand side, the init map from the
    scene's ``INPUT_NAMES`` to the state, the output map from the state to the output arrays).
    The builder is called only when a model has not been generated yet; the warm path loads the
@@ -120,7 +120,6 @@ class Formulation:
 
     name: str
     description: str
-    builder: str
     applicable: Callable
     singular: bool = False
     needs_routh: bool = False
@@ -140,19 +139,18 @@ class Formulation:
 REGISTRY: dict[str, Formulation] = {f.name: f for f in (
     Formulation("reduced-u", "u = cos beta and its rate with conserved p_alpha, p_gamma, E': "
                 "u'' = f'(u)/2 from the Routh polynomial, alpha and gamma as quadratures; "
-                "symmetric body, axisymmetric conservative effects", "reduced_u", _reduced_u,
+                "symmetric body, axisymmetric conservative effects", _reduced_u,
                 singular=True, needs_routh=True, pole_check=1, clearance=REDUCED_U_CLEARANCE,
                 angle_states=True, start_clearance=(REDUCED_U_CLEARANCE, REDUCED_U_CLEARANCE)),
     Formulation("euler-angles", "(alpha, beta, gamma) and their rates; singular at sin(beta) = 0",
-                "euler_angles", _euler_angles, singular=True, pole_loss=True, angle_states=True,
+                _euler_angles, singular=True, pole_loss=True, angle_states=True,
                 start_clearance=EULER_START),
     Formulation("reduced", "beta alone with conserved p_alpha, p_gamma; symmetric body, "
-                "axisymmetric conservative effects", "reduced", _reduced, singular=True,
+                "axisymmetric conservative effects", _reduced, singular=True,
                 needs_routh=True, angle_states=True, start_clearance=EULER_START),
-    Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity",
-                "quaternion", _always),
+    Formulation("quaternion", "unit quaternion and body omega; no coordinate singularity", _always),
     Formulation("euler-poisson", "angular momentum L, vertical n and x-axis e in body axes; no "
-                "coordinate singularity", "euler_poisson", _always),
+                "coordinate singularity", _always),
 )}
 
 def starts_accepted(name: str, sin_beta0, rates_given: bool):

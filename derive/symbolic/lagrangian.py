@@ -48,11 +48,6 @@ def gravity_potential(M=Mass, g_=g, l_=l, convention: Convention = ZYZ):
     return trig_reduce(M * g_ * l_ * R[2, 2])
 
 
-def mass_matrix(L, rates=RATES) -> sp.Matrix:
-    """𝕄_ij = ∂²L/∂q̇_i∂q̇_j."""
-    return sp.hessian(L, rates)
-
-
 @dataclass(frozen=True)
 class EulerLagrange:
     """The equations 𝕄(q) q̈ = F(q, q̇) of a Lagrangian, and their solution for q̈."""
@@ -63,7 +58,8 @@ class EulerLagrange:
 
     @functools.cached_property
     def mass_matrix(self) -> sp.Matrix:
-        return mass_matrix(self.lagrangian, self.rates).applyfunc(trig_reduce)
+        """𝕄_ij = ∂²L/∂q̇_i∂q̇_j."""
+        return sp.hessian(self.lagrangian, self.rates).applyfunc(trig_reduce)
 
     @functools.cached_property
     def forcing(self) -> sp.Matrix:
@@ -75,10 +71,6 @@ class EulerLagrange:
             F.append(-sum((sp.diff(dL, q) * qd for q, qd in zip(self.coords, self.rates)), sp.S.Zero))
         F = sp.Matrix(F) + sp.Matrix([sp.diff(L, q) for q in self.coords])
         return F.applyfunc(trig_reduce)
-
-    def equations(self, accels=ACCELS) -> sp.Matrix:
-        """The residuals 𝕄 q̈ − F (each zero along a motion)."""
-        return self.mass_matrix * sp.Matrix(accels) - self.forcing
 
     @functools.cached_property
     def accelerations(self) -> sp.Matrix:

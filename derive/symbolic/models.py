@@ -45,7 +45,7 @@ from derive.symbolic import effect_sums as sums
 from derive.symbolic import effects as fx
 from derive.symbolic.formulations import POLE_CLEARANCE, REGISTRY as FORMULATIONS, SPECIAL_NAMES, model_name
 from derive.symbolic.lagrangian import I1, I2, I3, EulerLagrange, Reduction, kinetic_energy, p_alpha, p_gamma
-from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce
+from derive.symbolic.rotations import ANGLES, RATES, ZYZ, alpha, beta, beta_d, gamma, trig_reduce, zyz_angles
 from derive.symbolic.stability import euler_rhs
 
 #: The inputs of every model's init map, in order (`formulations.INPUT_NAMES` spells them).
@@ -129,14 +129,6 @@ def _outputs(R: sp.Matrix, w: sp.Matrix, moments, effects, sym, angles) -> dict:
         "n": tuple(R[2, :]),
         "L": tuple(Iw),
     }
-
-
-def _angles_of(R: sp.Matrix):
-    """z-y-z angles of R = Rz(α) Ry(β) Rz(γ) (any positive multiple of R): β ∈ [0, π] from
-    atan2(√(R₃₁² + R₃₂²), R₃₃) (accurate near the poles), α = atan2(R₂₃, R₁₃),
-    γ = atan2(R₃₂, −R₃₁)."""
-    return (sp.atan2(R[1, 2], R[0, 2]), sp.atan2(sp.sqrt(R[2, 0] ** 2 + R[2, 1] ** 2), R[2, 2]),
-            sp.atan2(R[2, 1], -R[2, 0]))
 
 
 def _given(value, otherwise):
@@ -523,7 +515,7 @@ def euler_poisson(symmetric: bool, effects=()) -> Model:
                  "Euler-Poisson: body angular velocity omega, the vertical n and the inertial x axis e "
                  "in body axes (L = I omega about the pivot)",
                  tuple(w) + tuple(n) + tuple(e), _moment_params(symmetric) + sym.params(), rhs,
-                 _outputs(R, w, moments, effects, sym, _angles_of(R)), init=init,
+                 _outputs(R, w, moments, effects, sym, zyz_angles(R)), init=init,
                  effects=tuple(e_.name for e_ in effects), symmetric=symmetric)
 
 

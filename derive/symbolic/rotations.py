@@ -83,6 +83,14 @@ def unskew(W: sp.Matrix) -> sp.Matrix:
     return sp.Matrix([(W[2, 1] - W[1, 2]) / 2, (W[0, 2] - W[2, 0]) / 2, (W[1, 0] - W[0, 1]) / 2])
 
 
+def zyz_angles(R: sp.Matrix):
+    """z-y-z angles of R = Rz(α) Ry(β) Rz(γ) (any positive multiple of R): β ∈ [0, π] from
+    atan2(√(R₃₁² + R₃₂²), R₃₃) (accurate near the poles), α = atan2(R₂₃, R₁₃),
+    γ = atan2(R₃₂, −R₃₁)."""
+    return (sp.atan2(R[1, 2], R[0, 2]), sp.atan2(sp.sqrt(R[2, 0] ** 2 + R[2, 1] ** 2), R[2, 2]),
+            sp.atan2(R[2, 1], -R[2, 0]))
+
+
 def trig_reduce(expr, angles=ANGLES):
     """Canonical form of a polynomial in sin and cos of ``angles`` (rational functions: of the
     numerator and the denominator separately).

@@ -113,7 +113,3 @@ class SteadySpin:
         """λ² = −Ω_i Ω_j: negative (oscillation) is stable, positive (growth) is not."""
         Oi, Oj = self.frequencies
         return sp.factor(-Oi * Oj)
-
-    def growth_rate(self):
-        """√(λ²) where λ² > 0: the e-folding rate of the intermediate-axis instability."""
-        return sp.sqrt(self.eigenvalue_squared)

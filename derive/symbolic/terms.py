@@ -166,15 +166,10 @@ def _rational_in_R33(parsed: ex.Parsed, params) -> bool:
 
 def _angles(R):
     """(α, β, γ) of R: the symbols themselves when R is the z-y-z matrix of the Euler-angle
-    formulation, else the atan2 forms (β ∈ [0, π], accurate near the poles)."""
-    import sympy as sp
+    formulation, else the atan2 forms (:func:`derive.symbolic.rotations.zyz_angles`)."""
+    from derive.symbolic.rotations import ANGLES, ZYZ, zyz_angles
 
-    from derive.symbolic.rotations import ANGLES, ZYZ
-
-    if R == ZYZ.matrix():
-        return ANGLES
-    return (sp.atan2(R[1, 2], R[0, 2]), sp.atan2(sp.sqrt(R[2, 0] ** 2 + R[2, 1] ** 2), R[2, 2]),
-            sp.atan2(R[2, 1], -R[2, 0]))
+    return ANGLES if R == ZYZ.matrix() else zyz_angles(R)
 
 
 def _env(parsed_list, term: Term, R, sym, omega=None) -> dict:
