@@ -37,7 +37,9 @@ why (not a claim, unknown symbol, cannot parse).
 """
 from __future__ import annotations
 
+import contextlib
 import functools
+import gc
 import re
 
 import sympy as sp
@@ -564,12 +566,28 @@ def _first_relation(text: str) -> int | None:
 # ---- running and reporting ----------------------------------------------------------------------
 def check_notes(path, convention: str | None = None) -> list[Claim]:
     """Read the notes file and check every formula (see the module docstring)."""
-    return inferred(nt.read_notes(path, convention), lambda seq: nt.read_notes(path, seq), _checked)
+    with _collector_paused():
+        return inferred(nt.read_notes(path, convention), lambda seq: nt.read_notes(path, seq), _checked)
 
 
 def check_text(text: str, convention: str | None = None, path: str = "<notes>") -> list[Claim]:
     """Like `check_notes`, for Markdown text already in memory."""
-    return inferred(nt.parse_notes(text, path, convention), lambda seq: nt.parse_notes(text, path, seq), _checked)
+    with _collector_paused():
+        return inferred(nt.parse_notes(text, path, convention), lambda seq: nt.parse_notes(text, path, seq), _checked)
+
+
+@contextlib.contextmanager
+def _collector_paused():
+    """A reading with Python's cycle collector paused: SymPy's expressions are freed by their
+    reference counts, while each collection walks every object alive; what a reading leaves in
+    cycles goes at the first collection after it."""
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was:
+            gc.enable()
 
 
 def _checked(notes: nt.Notes) -> list[Claim]:

@@ -22,6 +22,7 @@ a relation in its first row is an alignment (`derive.lecture.alignment_arrays`),
 """
 from __future__ import annotations
 
+import functools
 import re
 
 from derive.lecture import alignment_arrays
@@ -241,6 +242,13 @@ def split_top(s: str) -> list[str]:
 
 def statements(latex: str) -> list[str]:
     """The statements of one display (see the module docstring), each a LaTeX string."""
+    return list(_statements(latex))
+
+
+@functools.lru_cache(maxsize=4096)
+def _statements(latex: str) -> tuple[str, ...]:
+    """`statements`, once per display: a display read again (a second reading, a probe in another
+    sequence) is cut as before."""
     body = _AND.sub(r" \\quad ", _strip_envs(latex)).replace("\\;", "\\\x00")
     rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
     # a row that ends with a binary operator continues on the next
@@ -268,7 +276,7 @@ def statements(latex: str) -> list[str]:
                     one = _unwrapped(_cleaned(_trimmed(one)))
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))
-    return out
+    return tuple(out)
 
 
 # "and" between two statements, spaced with ~ or \quad (``a = b ~~~\text{and}~~~ c = d``): a cut
