@@ -488,12 +488,7 @@ def machine() -> dict:
     versions = {"python": platform.python_version(), "numpy": np.__version__, "scipy": scipy.__version__,
                 "sympy": sympy.__version__}
     versions.update(bc.peers_available())
-    try:
-        from importlib.metadata import version
-
-        versions["derive"] = version("derive")
-    except Exception:  # noqa: BLE001
-        versions["derive"] = "?"
+    versions["derive"] = derive.__version__
     try:
         commit = "?" if CHECKOUT is None else subprocess.run(  # the source checkout, else installed
             ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True, cwd=CHECKOUT).stdout.strip() or "?"
