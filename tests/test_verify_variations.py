@@ -48,3 +48,37 @@ def test_a_text_that_writes_delta_alone_keeps_delta_times_the_symbol():
     phase = ("# A phase\n\nThe solution is $\\omega_1 = A\\cos(\\Omega t + \\delta)$, with $\\delta$ the phase.\n\n"
              "$$\\dot\\omega_1 = \\delta\\dot\\omega_1$$\n")
     assert [c.verdict for c in kept.check_text(phase)] == ["unchecked", "fails"]   # δ = 1 does not follow
+
+
+SPIN = ("# Intermediate axis\n\nA steady spin about axis 2, disturbed slightly:\n\n"
+        "$$\\vec{\\omega}(t) = \\begin{pmatrix} \\delta\\omega_1(t) \\\\ \\Omega_0 + \\delta\\omega_2(t) \\\\ "
+        "\\delta\\omega_3(t) \\end{pmatrix}, \\qquad |\\delta\\omega_1|, |\\delta\\omega_3| \\ll \\Omega_0$$\n\n"
+        "To first order in the disturbances:\n\n"
+        "$$\\frac{d(\\delta\\omega_1)}{dt} \\approx \\frac{I_2 - I_3}{I_1} \\Omega_0 \\delta\\omega_3$$\n\n"
+        "$$\\frac{d(\\delta\\omega_3)}{dt} \\approx \\frac{I_1 - I_2}{I_3} \\Omega_0 \\delta\\omega_1$$\n\n"
+        "$$\\frac{d^2(\\delta\\omega_1)}{dt^2} = \\frac{(I_2 - I_3)(I_1 - I_2)}{I_1 I_3} \\Omega_0^2 \\delta\\omega_1$$\n")
+
+
+def test_a_perturbation_written_as_variations_has_its_linearised_equations_checked():
+    by_line = kept.verdicts_by_line(SPIN)
+    lines = [kept.line_of(SPIN, marker) for marker in ("d(\\delta\\omega_1)}{dt} \\approx", "d(\\delta\\omega_3)}{dt}",
+                                                        "d^2(\\delta\\omega_1)")]
+    assert [by_line[n] for n in lines] == [{"holds"}] * 3
+
+
+def test_a_wrong_linearised_equation_in_variations_fails():
+    wrong = SPIN.replace("\\frac{I_2 - I_3}{I_1} \\Omega_0 \\delta\\omega_3", "\\frac{I_3 - I_2}{I_1} \\Omega_0 \\delta\\omega_3")
+    assert wrong != SPIN
+    claims = [c for c in kept.check_text(wrong) if "I_3 - I_2" in c.latex]
+    assert [c.verdict for c in claims] == ["fails"] and "order 0" not in claims[0].why
+
+
+def test_a_list_of_components_set_to_variations_names_a_perturbation():
+    # the variation keeps its δ apart from the component: δω̇₁ is the rate of δω₁, not ω̃̇₁
+    text = ("# Spin\n\n$$\\omega_1 = \\delta\\omega_1, \\quad \\omega_2 = \\Omega + \\delta\\omega_2, \\quad "
+            "\\omega_3 = \\delta\\omega_3$$\n\n"
+            "$$I_1 \\delta\\dot\\omega_1 = (I_2 - I_3)(\\Omega + \\delta\\omega_2)\\,\\delta\\omega_3$$\n\n"
+            "$$I_3 \\delta\\dot\\omega_3 \\approx (I_1 - I_2)\\,\\Omega\\,\\delta\\omega_1$$\n\n"
+            "$$I_1 \\delta\\dot\\omega_1 = (I_3 - I_2)\\,\\Omega\\,\\delta\\omega_3$$\n")
+    # exact; to first order after the ≈; the sign of the first-order term turned
+    assert [c.verdict for c in kept.check_text(text) if "dot" in c.latex] == ["holds", "holds", "fails"]
