@@ -5,6 +5,7 @@ import sympy as sp
 
 import kept_readings as kept
 from derive.lecture import latex as lx
+from derive.lecture.source import normalize
 
 DISTURBED = ("# Small disturbances\n\nA body spins steadily about its axis 3; small disturbances of the "
              "spin are written with a delta.\n\n"
@@ -82,3 +83,20 @@ def test_a_list_of_components_set_to_variations_names_a_perturbation():
             "$$I_1 \\delta\\dot\\omega_1 = (I_3 - I_2)\\,\\Omega\\,\\delta\\omega_3$$\n")
     # exact; to first order after the ≈; the sign of the first-order term turned
     assert [c.verdict for c in kept.check_text(text) if "dot" in c.latex] == ["holds", "holds", "fails"]
+
+
+def test_the_second_rate_of_a_bracket_is_read_as_the_second_derivative_of_what_it_holds():
+    assert normalize("\\frac{d^2(\\delta\\omega_1)}{dt^2} = x") == "\\frac{d^2}{dt^2}(\\delta\\omega_1) = x"
+    assert normalize("\\frac{d^{2}(m v)}{dt^{2}}") == "\\frac{d^2}{dt^2}(m v)"
+    assert normalize("\\frac{d^2(x)}{dt}") == "\\frac{d^2(x)}{dt}"        # the powers disagree: left as written
+
+
+def test_the_rate_of_a_component_perturbed_about_a_steady_spin_is_the_rate_of_its_variation():
+    # ωᵢ = cᵢ + δωᵢ with cᵢ constant: ω̇₁ = δω̇₁ holds; as δ times ω̇₁ it would fail
+    text = ("# Perturbed spin\n\nA body spins about its axis 3 with a small disturbance.\n\n"
+            "$$\\omega_1 = \\delta\\omega_1, \\quad \\omega_2 = \\delta\\omega_2, \\quad \\omega_3 = \\Omega + \\delta\\omega_3$$\n\n"
+            "$$\\dot\\omega_1 = \\delta\\dot\\omega_1$$\n\n"
+            "$$\\dot\\omega_1 \\approx 2\\,\\delta\\dot\\omega_1$$\n")
+    by_line = kept.verdicts_by_line(text)
+    assert by_line[kept.line_of(text, "= \\delta\\dot")] == {"holds"}
+    assert by_line[kept.line_of(text, "\\approx 2")] == {"fails"}      # off by ω̇₁ itself, first order in δω₂

@@ -20,7 +20,8 @@ May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`,
 The perturbation may be written as variations (`derive.lecture.variations`): ``\\omega_1 = \\Omega +
 \\delta\\omega_1``, or the column ``\\vec\\omega = (\\delta\\omega_1, \\Omega_0 + \\delta\\omega_2,
 \\delta\\omega_3)``; δωᵢ is then ηᵢ, kept apart from ωᵢ by its mark. A statement written with ≈ and no
-remainder keeps first order, as one with ``O(\\eta^2)`` does.
+remainder keeps first order, as one with ``O(\\eta^2)`` does. A perturbed component may stand beside
+the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``).
 """
 from __future__ import annotations
 
@@ -122,7 +123,13 @@ class Perturbations:
         model, rates = self._perturbed_model(eps, e)
         put, has_rate = {}, False
         constants = {I1, I2, I3}.union(*(free(base) for _, base in named.values()))
+        # the perturbed components themselves, ω̃ᵢ = cᵢ + ηᵢ and ω̃̇ᵢ = η̇ᵢ (ω̇₁ = δω̇₁ about a steady spin)
+        whole = {w: v for i, base in named.values() for w, v in ((lx.W[i], base + eps * e[i]), (lx.WD[i], model[i]))}
         for s in set().union(*(free(sp.sympify(m.value)) for m in parsed.members)):
+            if s in whole:
+                put[s] = whole[s]
+                has_rate |= s in lx.WD
+                continue
             atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
             if atom is None or _key(atom) not in named:
                 if s not in constants:
@@ -133,8 +140,8 @@ class Perturbations:
                 return False
             put[s] = (eps * e[i], model[i], rates[i])[atom.dots]
             has_rate |= atom.dots > 0
-        if not has_rate:
-            return False
+        if not has_rate or not put.keys() - whole.keys():
+            return False                    # no rate, or none of the ηᵢ themselves: left to the rest of the reader
         # a remainder O(ηⁿ) keeps order n − 1; an ≈ without one, first order (the text linearises from there)
         order = min((n for _, n in remainders), default=2 if "≈" in parsed.relations else None)
         if order is not None:
