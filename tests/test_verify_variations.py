@@ -42,6 +42,8 @@ def test_kronecker_delta_and_a_phase_are_unchanged():
 def test_a_text_that_writes_delta_alone_keeps_delta_times_the_symbol():
     assert lx.delta_quantity("$\\omega_1 = A\\cos(\\Omega t + \\delta)$, with $\\delta$ the phase")
     assert lx.delta_quantity("$$\\delta = \\pi/2$$")
+    assert lx.delta_quantity("The solution has a phase δ, the phase of the oscillation.")
+    assert not lx.delta_quantity("The variation δω₁ stays small.")
     assert not lx.delta_quantity("$$I_{ij} = \\delta_{ij} r^2, \\quad \\omega_1 = \\Omega + \\delta\\omega_1$$")
     delta, w1 = sp.Symbol("delta", real=True), lx.W[0]
     value = lx.parse("\\delta\\omega_1", lx.Vocabulary(open=True, delta_quantity=True)).members[0].value

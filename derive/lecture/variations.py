@@ -35,11 +35,16 @@ _DELTA = re.compile(r"\\delta(?![A-Za-z])")
 
 
 def delta_a_quantity(body: str, names) -> bool:
-    """Whether the text writes δ alone anywhere in its math: no index, no symbol and no bracket
-    after it (δ(x) is an operator's or a distribution's, no quantity's)."""
+    """Whether the text writes δ alone anywhere, as ``\\delta`` in its math or as the character δ:
+    no index, no symbol and no bracket after it (δ(x) is an operator's or a distribution's, no
+    quantity's; the character is read without a space, prose putting a word after it)."""
     for m in _DELTA.finditer(body):
         after = _GAP.match(body, m.end()).end()
         if body[after:after + 1] in ("_", "(") or variation_at(body, m.end(), names) is not None:
             continue
         return True
-    return False
+    return _ALONE.search(body) is not None
+
+
+# δ in the text's own characters, standing alone ("a phase δ, …"): no letter, index or bracket right after it
+_ALONE = re.compile(r"δ(?![\w(\u0300-\u036f])")
