@@ -30,7 +30,7 @@ SHORT = {
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "checked"):
         "a determinant proof (det(R - I), det(-A)), particle sums over a with x_ai components, the inertia "
         "tensor about another origin (I', [L]_S, [A-dot]_{S_0}), the angles tau and zeta in A (the radius of "
-        "omega's circle) and the asymmetric top's linearisation in eps_i are not read; Euler's equations, the "
+        "omega's circle) are not read; Euler's equations, the asymmetric top's linearisation in eps_i, the "
         "symmetric top's rates in the text's own Omega and the kinetic energy are checked",
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
         "its five slips sit in displays the reader does not check: J_i with the index x_ai summed, the matrix's "
@@ -156,12 +156,6 @@ SHORT = {
         "4 of 7: the angular momentum as a chain of cross products of the particles' relative positions with "
         "velocities that include the reference point's V_R, and the parallel axis theorem's [I_S] and [I_R] with "
         "M and d of a centre of mass defined in words, are not read; its bracket for the cross-product matrix is",
-    ("continuum-lab-dzhanibekov-intermediate-axis-es", "checked"):
-        "9 of 15: the disturbance of the spin Omega_0 is set as a column of delta omega_i (delta a prefix the "
-        "reader does not model) with its smallness after a \\qquad, so the \\approx equations in it, their second "
-        "derivative and its exponential solution stay unread, as do the quaternion's kinematics and L_s = R(q) I_b "
-        "omega_b = L_s(0); Euler's equations, the worked factors and their signs, lambda and the conserved 2T and "
-        "|L|^2 are checked",
     ("continuum-lab-dzhanibekov-intermediate-axis-es", "found"):
         "0 of 1: 2T given T's value, 172.80 J, the constant's value in an example whose state the text does not "
         "give (the conservation of 2T is checked, the value left aside)",
@@ -175,7 +169,7 @@ SHORT = {
         "frame's rotation sit in the displays above that are not read",
 }
 
-FLOOR = {"checked": 612, "slips_flagged": 56, "holds_flagged": 0}
+FLOOR = {"checked": 618, "slips_flagged": 56, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

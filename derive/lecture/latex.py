@@ -72,9 +72,10 @@ from derive.lecture.vocabulary import (  # noqa: F401  (the reader's names, used
     Vocabulary,
     p_alpha_sym,
     p_gamma_sym,
-    latex_atoms,
 )
 from derive.lecture.latex_parser import Parsed, _Parser
+from derive.lecture.variations import delta_a_quantity
+from derive.lecture.vocabulary import DECORATIONS, GREEK
 
 
 def parse(latex: str, vocab: Vocabulary | None = None) -> Parsed:
@@ -112,3 +113,26 @@ def scan_cells(latex: str) -> list[Tok]:
             depth -= 1
         out.append(tok)
     return out
+
+
+def latex_atoms(latex: str, vocab: Vocabulary) -> set:
+    """The derivation symbols the atoms of a formula stand for (unknown atoms left out)."""
+    out = set()
+    try:
+        toks = scan(latex)
+    except NotRead:
+        return out
+    for tok in toks:
+        if tok.kind == "atom":
+            try:
+                v = vocab.resolve(tok.value)
+            except NotRead:
+                continue
+            if isinstance(v, sp.Symbol):
+                out.add(v)
+    return out
+
+
+def delta_quantity(body: str) -> bool:
+    """Whether a text writes δ alone, as its own quantity, so that δx is δ times x (`derive.lecture.variations`)."""
+    return delta_a_quantity(body, GREEK | DECORATIONS.keys())

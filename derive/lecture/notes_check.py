@@ -112,7 +112,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
     def __init__(self, notes: nt.Notes):
         self.notes = notes
         self.vocab = lx.Vocabulary(angles=tuple(notes.angles), aliases=nt.angle_aliases(notes),
-                                   open=True, names=notes.names)
+                                   open=True, names=notes.names, delta_quantity=lx.delta_quantity(notes.body))
         self.d = derivation(notes.convention)
         self.derivations = [self.d]      # every convention the text used or was tried in, kept for the next command
         self.vocab.axial = "xyz".index(self.d.conv.axes[2])

@@ -15,7 +15,13 @@ is held to first order once the section has written one (the text works to first
 there); otherwise exactly. It `holds` when every kept order vanishes, and `fails` when one does
 not (its why naming the order). Everything else is left to the rest of the reader.
 May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic.lagrangian`,
-:mod:`derive.symbolic.rotations`.
+:mod:`derive.symbolic.rotations`, :mod:`derive.lecture.statements`.
+
+The perturbation may be written as variations (`derive.lecture.variations`): ``\\omega_1 = \\Omega +
+\\delta\\omega_1``, or the column ``\\vec\\omega = (\\delta\\omega_1, \\Omega_0 + \\delta\\omega_2,
+\\delta\\omega_3)``; δωᵢ is then ηᵢ, kept apart from ωᵢ by its mark. A statement written with ≈ and no
+remainder keeps first order, as one with ``O(\\eta^2)`` does. A perturbed component may stand beside
+the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``).
 """
 from __future__ import annotations
 
@@ -25,6 +31,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
+from derive.lecture.statements import split_top, statements
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -41,23 +48,50 @@ def _without_remainders(text):
     return out, found
 
 
+def _key(atom):
+    """A perturbation's symbol as the section records it: its letter, index, bold face and mark (δ)."""
+    return atom.base, atom.sub, atom.bold, atom.mark
+
+
+def _written(key) -> str:
+    """The letter of a recorded perturbation as LaTeX: ``\\eta``, ``\\delta\\omega``."""
+    letter = "\\" + key[0] if len(key[0]) > 1 else key[0]
+    return "\\delta " + letter if key[3] == "delta" else letter
+
+
 class Perturbations:
     """The mixin's recording of a named perturbation and its judging of the equations in it."""
 
     def _perturbation_named(self, item, before):
         """``\\omega_i = c + \\eta`` in the prose or a display, η new (not among ``before``, the text's
-        symbols met before the item was read): recorded for the section."""
+        symbols met before the item was read), or the column ``\\vec\\omega = (\\delta\\omega_1, \\Omega_0 +
+        \\delta\\omega_2, \\delta\\omega_3)`` of them: recorded for the section."""
         latex = getattr(item, "latex", None)
         if item.kind not in ("assumption", "inline", "display") or not latex or "\\omega" not in latex:
             return
         try:
-            parsed = lx.parse(latex, self.vocab)
+            read = [lx.parse(latex, self.vocab)]
+        except lx.NotRead:          # a list of settings, or a setting and a condition: each statement
+            read = [r for whole in statements(latex) for p in split_top(whole) if (r := self._read(p)) is not None]
+        for parsed in read:
+            if parsed.relations != ["="]:
+                continue
+            left, right = parsed.members[0].value, parsed.members[1].value
+            if left in lx.W:
+                self._component_perturbed(lx.W.index(left), sp.sympify(right), before)
+            elif left is lx.OMEGA_VEC and isinstance(right, sp.MatrixBase) and right.shape == (3, 1):
+                for i in range(3):      # the column of the body components, each one perturbed
+                    self._component_perturbed(i, sp.sympify(right[i]), before)
+
+    def _read(self, piece):
+        """A statement read, or None."""
+        try:
+            return lx.parse(piece, self.vocab)
         except lx.NotRead:
-            return
-        if parsed.relations != ["="] or parsed.members[0].value not in lx.W:
-            return
-        i = lx.W.index(parsed.members[0].value)
-        right = sp.sympify(parsed.members[1].value)
+            return None
+
+    def _component_perturbed(self, i, right, before):
+        """Record ω̃ᵢ = right when right is a steady cᵢ plus one new symbol of the text's."""
         new = [s for s in free(right) if isinstance(s, lx.Generic) and s not in before and sp.diff(right, s) == 1]
         if len(new) > 1:        # ω₂ = Ω + η₂, both new: the perturbation is the one indexed as the component
             new = [s for s in new if self.vocab.generic[s].sub == str(i + 1)]
@@ -67,13 +101,12 @@ class Perturbations:
         moving = set(lx.W) | set(lx.WD) | set(ANGLES) | set(RATES) | set(ACCELS) | {lx.t} | set(new)
         if free(base) & moving or any(isinstance(s, lx.Quantity) for s in free(base)):
             return                  # a base that moves (ω̃₁ = A cos Ωt + ε) is no steady motion to perturb
-        atom = self.vocab.generic[new[0]]
-        self.ctx.perturbation[(atom.base, atom.sub, atom.bold)] = (i, base)
+        self.ctx.perturbation[_key(self.vocab.generic[new[0]])] = (i, base)
 
     def _perturbed(self, line, piece, text) -> bool:
         """Judge a statement in the section's perturbation (True: judged here)."""
         named = self.ctx.perturbation
-        if not named or "=" not in text:
+        if not named or ("=" not in text and "\\approx" not in text):
             return False
         plain, remainders = _without_remainders(text)
         letters = {key[0] for key in named}
@@ -83,27 +116,34 @@ class Perturbations:
             parsed = lx.parse(plain, self.vocab)
         except lx.NotRead:
             return False
-        if set(parsed.relations) != {"="}:
+        if not set(parsed.relations) <= {"=", "≈"} or not parsed.relations:
             return False
         eps = sp.Dummy("epsilon")
         e = [sp.Dummy(f"e{k + 1}") for k in range(3)]
         model, rates = self._perturbed_model(eps, e)
         put, has_rate = {}, False
         constants = {I1, I2, I3}.union(*(free(base) for _, base in named.values()))
+        # the perturbed components themselves, ω̃ᵢ = cᵢ + ηᵢ and ω̃̇ᵢ = η̇ᵢ (ω̇₁ = δω̇₁ about a steady spin)
+        whole = {w: v for i, base in named.values() for w, v in ((lx.W[i], base + eps * e[i]), (lx.WD[i], model[i]))}
         for s in set().union(*(free(sp.sympify(m.value)) for m in parsed.members)):
+            if s in whole:
+                put[s] = whole[s]
+                has_rate |= s in lx.WD
+                continue
             atom = self.vocab.generic.get(s) if isinstance(s, lx.Generic) else None
-            if atom is None or (atom.base, atom.sub, atom.bold) not in named:
+            if atom is None or _key(atom) not in named:
                 if s not in constants:
                     return False            # a name the perturbation does not tie
                 continue
-            i, _ = named[(atom.base, atom.sub, atom.bold)]
+            i, _ = named[_key(atom)]
             if atom.dots > 2 or atom.tilde or atom.hat or atom.primes or atom.sup:
                 return False
             put[s] = (eps * e[i], model[i], rates[i])[atom.dots]
             has_rate |= atom.dots > 0
-        if not has_rate:
-            return False
-        order = min((n for _, n in remainders), default=None)
+        if not has_rate or not put.keys() - whole.keys():
+            return False                    # no rate, or none of the ηᵢ themselves: left to the rest of the reader
+        # a remainder O(ηⁿ) keeps order n − 1; an ≈ without one, first order (the text linearises from there)
+        order = min((n for _, n in remainders), default=2 if "≈" in parsed.relations else None)
         if order is not None:
             self.ctx.perturbation_order = order - 1
         keep = order - 1 if order is not None else self.ctx.perturbation_order
@@ -123,7 +163,7 @@ class Perturbations:
 
     def _perturbed_verdict(self, r, eps, keep):
         """(verdict, why) of a difference r(ε) that must vanish to order ``keep`` (None: exactly)."""
-        names = ", ".join(sorted({"\\" + key[0] if len(key[0]) > 1 else key[0] for key in self.ctx.perturbation}))
+        names = ", ".join(sorted({_written(key) for key in self.ctx.perturbation}))
         put = f"the text's perturbation \\omega_i = c_i + {names}_i put in"
         r = sp.expand(r)
         if free(r) & (set(lx.W) | set(lx.WD)):

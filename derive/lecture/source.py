@@ -403,7 +403,8 @@ _CODE_RATE = re.compile(r"^\s*d\s*(\\[A-Za-z]+|[A-Za-z])((?:_(?:\{[^{}]*\}|[A-Za
 _DIFFERENTIAL_LETTER = re.compile(r"(?<![A-Za-z\\])d(?![A-Za-z]{2})")
 
 
-_BRACKET_RATE = re.compile(r"\\frac\s*\{\s*d\s*\(((?:[^(){}]|\([^(){}]*\))*)\)\s*\}\s*\{\s*d\s*t\s*\}")
+_BRACKET_RATE = re.compile(r"\\frac\s*\{\s*d\s*(\^\s*\{?\s*2\s*\}?\s*)?\(((?:[^(){}]|\([^(){}]*\))*)\)\s*\}"
+                           r"\s*\{\s*d\s*t\s*(?(1)\^\s*\{?\s*2\s*\}?\s*|)\}")
 
 
 def _code_rate(text: str) -> str:
@@ -591,5 +592,6 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     text = _code_rate(text)                           # dx = v_x with no differential beside it: ẋ
-    text = _BRACKET_RATE.sub(r"\\frac{d}{dt}(\1)", text)  # d(m v)/dt: the rate of the bracket
+    text = _BRACKET_RATE.sub(lambda m: (r"\frac{d^2}{dt^2}(" if m.group(1) else r"\frac{d}{dt}(") + m.group(2) + ")",
+                             text)            # d(m v)/dt, d²(x)/dt²: the rate of the bracket, the second rate
     return re.sub(r"[ \t]{2,}", " ", text).strip()

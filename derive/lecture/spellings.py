@@ -25,6 +25,7 @@ def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
     except vc.NotRead:
         return {}
     out: dict = {}
+    rates: dict = {}                # the rates of a variation δx the formula writes, where it writes none itself
     for tok in toks:
         if tok.kind != "atom" or not tok.value.text:
             continue
@@ -32,8 +33,9 @@ def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
             value = vocab.resolve(tok.value)
         except vc.NotRead:
             continue
-        if isinstance(value, sp.Symbol) and value in symbols:
+        if isinstance(value, sp.Symbol) and (value in symbols or _varied(value, vocab)):
             out.setdefault(value, tok.value.text)
+            rates.update(_varied_rates(tok.value, vocab) if value not in symbols else {})
         if tok.value.dots:          # ω̇ written: ω is spelled the same way without the dots
             _undotted(tok.value, vocab, symbols, out)
     for k in range(len(toks)):      # a rate written d/dt (dω/dt, d²ω/dt²): the rate as written
@@ -43,9 +45,15 @@ def spellings(latex: str, vocab: vc.Vocabulary, symbols) -> dict:
                 value = symbol_rate(vocab.resolve, toks[rate[0]], rate[1], vocab)
             except vc.NotRead:
                 continue
-            if isinstance(value, sp.Symbol) and value in symbols:
+            if isinstance(value, sp.Symbol) and (value in symbols or _varied(value, vocab)):
                 out.setdefault(value, latex[toks[k].pos:_end(toks[rate[2] - 1])])
-    return out
+    return {**rates, **out}
+
+
+def _varied(value, vocab: vc.Vocabulary) -> bool:
+    """Whether a symbol is the text's variation δx (`derive.lecture.variations`), which SymPy cannot
+    spell: it is written back as the text writes it."""
+    return isinstance(value, vc.Generic) and getattr(vocab.generic.get(value), "mark", "")[:5] == "delta"
 
 
 def _end(tok) -> int:
@@ -76,3 +84,16 @@ def _undotted(atom: vc.Atom, vocab: vc.Vocabulary, symbols, out: dict) -> None:
     if value is not None and toks[0].value.with_(text="") == atom.with_(dots=0, text="") \
             and isinstance(value, sp.Symbol) and value in symbols:
         out.setdefault(value, text)
+
+
+def _varied_rates(atom: vc.Atom, vocab: vc.Vocabulary) -> dict:
+    """The text's rates of a variation δx it writes undotted, spelled d(δx)/dt and d²(δx)/dt²."""
+    if atom.dots:
+        return {}
+    out = {}
+    for n, power in ((1, ""), (2, "^2")):
+        key = atom.with_(dots=n, text="")
+        sym = next((s for s, met in vocab.generic.items() if met == key), None)
+        if sym is not None:
+            out[sym] = f"\\frac{{d{power}({atom.text})}}{{dt{power}}}"
+    return out

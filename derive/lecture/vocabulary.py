@@ -4,7 +4,7 @@ quantities and their usual spellings (or, open to the text's own names, makes it
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
 May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`,
-:mod:`derive.lecture.matrix_exp`, SymPy.
+:mod:`derive.lecture.matrix_exp`, :mod:`derive.lecture.variations`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ from derive.lecture import elliptic
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
+from derive.lecture.variations import variation_at
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
 from derive.symbolic.lagrangian import ACCELS
@@ -264,6 +265,9 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
             atom = atom.with_(bold=True)
         elif kind == "mark":
             atom = atom.with_(mark=m.group(1) + atom.mark)
+    elif m and m.group(1) == "delta" and (k := variation_at(s, m.end(), GREEK | DECORATIONS.keys())) is not None:
+        inner, j = _atom_at(s, k)           # δx: a variation of x, the text's own symbol (`variations`)
+        atom = inner.with_(mark="delta" + inner.mark)
     elif m and m.group(1) in GREEK:
         atom, j = Atom(m.group(1)), m.end()
     elif i < len(s) and s[i].isalpha() and s[i].isascii():
@@ -427,6 +431,8 @@ class Vocabulary:
     """The upward vertical's body components in the angles (Rᵀẑ), when the text names them (Poisson's γᵢ)."""
     names_off: bool = False
     """Read as if the text had named nothing (a second opinion on a learned name)."""
+    delta_quantity: bool = False
+    """The text writes δ alone (`derive.lecture.variations.delta_a_quantity`): δx is δ times x."""
     readings: dict = field(default_factory=dict)
     """A second reading of an ambiguous name, tried when the first makes a formula fail:
     ``{"L": LMAG}`` reads a plain L as the angular momentum's magnitude."""
@@ -450,6 +456,9 @@ class Vocabulary:
         mine = self.defined.get(a.with_(text=""))
         if mine is not None:
             return mine
+        if a.mark.startswith("delta") and self.delta_quantity:    # δ the text's quantity: δx is δ times x
+            x = self.resolve(a.with_(mark=a.mark[5:]), env)
+            return None if x is None else self.resolve(Atom("delta"), env) * x
         if a.mark:              # x̄, Ĭ: the text's own symbol, whatever its letter means without the accent
             return self._generic(a) if self.open else None
         if self.names is not None and not self.names_off:
@@ -581,20 +590,3 @@ def p_gamma_sym():
     """p for the third angle (the derivation's ``p_gamma``)."""
     return p_gamma
 
-
-def latex_atoms(latex: str, vocab: Vocabulary) -> set:
-    """The derivation symbols the atoms of a formula stand for (unknown atoms left out)."""
-    out = set()
-    try:
-        toks = scan(latex)
-    except NotRead:
-        return out
-    for tok in toks:
-        if tok.kind == "atom":
-            try:
-                v = vocab.resolve(tok.value)
-            except NotRead:
-                continue
-            if isinstance(v, sp.Symbol):
-                out.add(v)
-    return out
