@@ -57,12 +57,17 @@ def _keys(latex: str) -> set:
         return set()
 
 
+def _plain(atom) -> bool:
+    """A symbol written bare: no bold, dot, prime, hat, tilde, superscript or mark."""
+    return not (atom.bold or atom.dots or atom.primes or atom.hat or atom.tilde or atom.sup or atom.mark)
+
+
 def _moment(atom, names: nm.Names) -> str | None:
     """The index (1, 2, 3) of a principal moment: a numbered moment written plain that the text left
     to its usual meaning (``I_1``, ``I_{3}``), or a symbol the text's names make one (``I_x`` of a
     text that says its axes are principal); "" for a numbered moment the text gave another meaning;
     None for any other symbol."""
-    plain = not (atom.bold or atom.dots or atom.primes or atom.hat or atom.tilde or atom.sup or atom.mark)
+    plain = _plain(atom)
     meaning = names.meaning(atom)
     if meaning in _INDEX:
         return _INDEX[meaning] if plain else ""
@@ -73,8 +78,7 @@ def _moment(atom, names: nm.Names) -> str | None:
 
 def _letter(atom, names: nm.Names, angles) -> bool:
     """Can ``atom`` be the text's own letter for a moment (see the module docstring)?"""
-    plain = not (atom.bold or atom.dots or atom.primes or atom.hat or atom.tilde or atom.sup or atom.mark)
-    return plain and _moment(atom, names) is None and atom.base not in angles and names.meaning(atom) is None \
+    return _plain(atom) and _moment(atom, names) is None and atom.base not in angles and names.meaning(atom) is None \
         and (atom.base, "plain" if not atom.sub else "vector") not in names.letters
 
 
@@ -107,4 +111,4 @@ def _bind_equal(names: nm.Names, latex: str, met: set, angles, line: int) -> Non
     letter = own[0]
     if (letter.base, letter.sub) in met or not _letter(letter, names, angles):
         return
-    nm._bind(names, [letter], _KIND[moments], f"line {line}")
+    nm.bind(names, [letter], _KIND[moments], f"line {line}")

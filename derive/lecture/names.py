@@ -302,13 +302,13 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             run = [m for m in found if named.start() <= m.start() < named.end()][:3]
             after = [a for m in run for a in _atoms(m.group(1))]
             if len(after) == 3:
-                _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
+                bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
         if listed:      # "the principal moments $A$, $B$, $C$": the three symbols right after it
             run = [m for m in found if m.start() >= listed.end() - 1][:3]
             gaps = [text[a.end():b.start()] for a, b in zip(run, run[1:])]
             after = [a for m in run for a in _atoms(m.group(1))]
             if len(after) == 3 and all(re.fullmatch(r"\s*(,|and|,\s*and)?\s*", g) for g in gaps):
-                _bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
+                bind(names, after, "principal moments", f"line {_line(starts, offset + run[0].start())}")
         _rates_listed(names, text, found, starts, offset)
         _centre_listed(names, text, found, starts, offset)
         for k, m in enumerate(found):
@@ -321,7 +321,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             meaning = _nearest(marked)
             if meaning is None or MEANINGS[meaning][0] in ("list", "rates", "coords") or not _fits(meaning, atoms):
                 continue
-            _bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
+            bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
     _said_of_display(names, body)
     for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
@@ -341,7 +341,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
         if meaning is None or not atoms:
             raise SceneError(f"{path}: symbols: {latex}: {what!r} is no meaning derive knows "
                              f"(one of: {', '.join(m for m in MEANINGS if m != 'second moment')})")
-        _bind(names, atoms, meaning, "the front matter", override=True)
+        bind(names, atoms, meaning, "the front matter", override=True)
     return names
 
 
@@ -371,7 +371,7 @@ def _said_of_display(names: Names, body: str):
         sides = [_atoms(source.normalize(side)) for side in _ROW_SIDE.findall(inner.replace("\\\\", "\n"))]
         atoms = [a[0] for a in sides if len(a) == 1]
         if atoms and len(atoms) == len(sides) and len({a.base for a in atoms}) == 1 and _fits(meaning, atoms):
-            _bind(names, atoms, meaning, f"line {body.count(chr(10), 0, m.start()) + 1}")
+            bind(names, atoms, meaning, f"line {body.count(chr(10), 0, m.start()) + 1}")
 
 
 def _components_of(names: Names, text: str, starts, offset):
@@ -383,7 +383,7 @@ def _components_of(names: Names, text: str, starts, offset):
         parts = [a for s in re.findall(r"\$([^$]+)\$", m.group(1) or m.group(2)) for a in _atoms(s)]
         if meaning and MEANINGS[meaning][0] == "letter" and parts and all(a.sub and not a.bold for a in parts) \
                 and _fits(meaning, parts):
-            _bind(names, parts, meaning, f"line {_line(starts, offset + m.start())}")
+            bind(names, parts, meaning, f"line {_line(starts, offset + m.start())}")
 
 
 def _centre_listed(names: Names, text: str, found: list, starts, offset):
@@ -422,7 +422,7 @@ def _rates_listed(names: Names, text: str, found: list, starts, offset):
             atoms = atoms[-3:] if between == "b" else atoms[:3]
             if len(atoms) == 3 and all(not a.bold and not a.sub for a in atoms):
                 for atom, meaning in zip(atoms, _RATE_AXES):
-                    _bind(names, [atom], meaning, f"line {_line(starts, offset + phrase.start())}")
+                    bind(names, [atom], meaning, f"line {_line(starts, offset + phrase.start())}")
                 return
 
 
@@ -518,7 +518,9 @@ def _nearest(marked: str) -> str | None:
     return best[1] if best is not None and best[0] <= 25 else None
 
 
-def _bind(names: Names, atoms, meaning, where, override=False):
+def bind(names: Names, atoms, meaning, where, override=False):
+    """Bind ``atoms`` to ``meaning`` (a key of :data:`MEANINGS`), said at ``where`` (``"line N"`` or
+    the front matter, which ``override`` lets win over what the prose said)."""
     how = MEANINGS[meaning][0]
     if how == "list":
         for atom, m in zip(atoms, ("transverse moment", "second moment", "axial moment")):
