@@ -189,6 +189,8 @@ def test_smoke_run_writes_report_plots_and_finite_numbers(tmp_path):
         assert "error" not in tg[key], (key, tg[key])
     assert tg["sweeps"]["speedup"] > 0 and "dask_2w" not in tg["sweeps"]  # smoke: no cluster
     assert tg["fixed_cost"]["ratio"] > 0 and tg["batch"]["vs_scipy"] > 0
+    # the prepared call is the goal's side; simulate(dict) is timed beside it as context
+    assert tg["fixed_cost"]["ratio_dict"] > 0 and tg["batch"]["prepared_vs_own"] > 0
     # The ceilings: derive's C call alone, timed in turns with the whole call (whose Python it
     # leaves out) and with SciPy; the report states them. Which of two timings is smaller is
     # not asserted: with one repeat on a loaded machine that is noise (a part once measured

