@@ -181,17 +181,13 @@ SHORT = {
         "displays the reader does not check",
     ("cline-cube-angular-momentum-rotational-kinetic-energy-worked-examples", "checked"):
         "the cube's angular momenta are written as omega times a written matrix on a column, in omega and b, "
-        "which nothing in the text ties (a link that holds is kept, one that differs is left unjudged); the "
+        "which nothing in the text ties (a link that holds is kept, one off by a number is flagged); the "
         "velocity V + v'' + omega x r' of a moving point, the kinetic energy's expansion with V, T_trans and "
         "the sums in r' with \\prime, and the row-matrix-column form of T_rot are not read; Euler's T_rot in "
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
-    ("cline-cube-angular-momentum-rotational-kinetic-energy-worked-examples", "found"):
-        "its one slip is the last link of the corner's L, (11/12) M b^2 omega (-1, 1, 0) without the 1/sqrt 2 "
-        "of the member before it: a link in omega and b, which nothing ties, that does not hold is left "
-        "unjudged, never flagged",
 }
 
-FLOOR = {"checked": 636, "slips_flagged": 57, "holds_flagged": 0}
+FLOOR = {"checked": 636, "slips_flagged": 58, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
