@@ -235,3 +235,34 @@ def test_a_chain_headed_by_the_torque_is_checked_past_the_law_in_its_first_link(
     assert ("law", "unchecked") in got and any(v == "holds" for _, v in got)
     slip = LAW_CHAIN.replace("+ \\boldsymbol{\\omega}", "- \\boldsymbol{\\omega}")
     assert "holds" not in {c.verdict for c in kept.check_text(slip) if c.line == 5}
+
+
+def test_the_rotational_kinetic_energy_named_t_rot_is_the_kinetic_energy_of_the_turning_body():
+    # T_rot, T_{\text{rot}}: the kinetic energy's rotational part, all of it for a body turning about a point
+    for name in ("T_{rot}", r"T_{\text{rot}}", r"T_{\mathrm{rot}}"):
+        right = one(PARTICLES % (name + r" = \frac{1}{2} \sum_{i,j} I_{ij} \omega_i \omega_j"))
+        assert (right.kind, right.verdict) == ("definition", "holds"), (name, right.why)
+    wrong = one(PARTICLES % r"T_{rot} = \sum_{i,j} I_{ij} \omega_i \omega_j")
+    assert wrong.verdict == "typo" and one(PARTICLES % wrong.correction).verdict == "holds"
+    # a subscript that names some other part is not read as the whole
+    other = one(PARTICLES % r"T_{trans} = \frac{1}{2} \sum_{i,j} I_{ij} \omega_i \omega_j")
+    assert other.verdict not in FLAGGED
+
+
+def test_particle_coordinates_written_x_with_the_particle_and_an_axis_are_read_in_the_texts_own_index():
+    # Σ_α m_α with x_{α,k}, the α-th particle's k-th coordinate: the inertia tensor and T in components
+    tensor = r"I_{ij} = \sum_{\alpha}^{N} m_{\alpha}\left[\delta_{i j}\left(\sum_{k}^{3} x_{\alpha, k}^2 \right) - x_{\alpha, i}x_{\alpha, j} \right]"
+    right = one(PARTICLES % tensor)
+    assert (right.kind, right.verdict) == ("definition", "holds") and "two generic particles" in right.why
+    wrong = one(PARTICLES % tensor.replace(r"x_{\alpha, i}x_{\alpha, j}", r"x_{\alpha, i}x_{\alpha, i}"))
+    assert wrong.verdict in FLAGGED
+    energy = (r"T = \frac{1}{2} \sum_{\alpha}^{N} m_{\alpha}\left[\left(\sum_{i} \omega_{i}^{2}\right) \left(\sum_{k} "
+              r"x_{\alpha, k}^{2}\right)-\left(\sum_{i} \omega_{i} x_{\alpha, i}\right)\left(\sum_{j} \omega_{j} x_{\alpha, j}\right)\right]")
+    assert one(PARTICLES % energy).verdict == "holds"
+    assert one(PARTICLES % energy.replace(r"\frac{1}{2} ", "")).verdict in FLAGGED
+
+
+def test_a_bold_t_set_to_a_scalar_is_the_kinetic_energy_as_the_scalar_reader_reads_it():
+    right = one(PARTICLES % r"\mathbf{T} = \frac{1}{2} \boldsymbol{\omega} \cdot \{\mathbf{I}\} \cdot \boldsymbol{\omega}")
+    assert right.verdict == "holds", right.why
+    assert one(PARTICLES % r"\mathbf{T} = \boldsymbol{\omega} \cdot \{\mathbf{I}\} \cdot \boldsymbol{\omega}").verdict in FLAGGED

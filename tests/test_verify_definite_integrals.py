@@ -52,3 +52,16 @@ def test_a_name_set_to_an_integral_is_no_setting_and_a_condition_is_not_judged()
 def test_an_integral_over_the_time_is_not_read():
     body = r"$$\int_0^T \dot\theta \, \mathrm{d}t = 0$$"
     assert [c.verdict for c in _claims(body)] == ["unchecked"]
+
+
+def test_a_row_going_on_with_equals_after_an_integral_gives_the_value_it_works_out_to():
+    # the integral ends one row of an aligned block, its value opens the next: that link is judged
+    row = (r"$$\begin{align*} I_{11} & = \rho \int^{b/2}_{-b/2} \int^{b/2}_{-b/2} (x^2 + y^2) dy dx \\[4pt] "
+           r"& = %s \end{align*}$$")
+    claims = kept.check_text(HEAD + row % r"\frac{1}{6} \rho b^4")
+    assert [c.verdict for c in claims if c.latex.lstrip().startswith("=")] == ["holds"]
+    claims = kept.check_text(HEAD + row % r"\frac{1}{3} \rho b^4")
+    assert [c.verdict for c in claims if c.latex.lstrip().startswith("=")] == ["fails"]
+    # the same value in a display of its own after the integral is not that row's continuation
+    apart = row.split(r"\\[4pt]")[0] + r"\end{align*}$$" + "\n\nso that\n\n$$I_{11} = \\frac{1}{3} \\rho b^4$$"
+    assert all(c.verdict not in ("holds", "fails") for c in kept.check_text(HEAD + apart) if "frac{1}{3}" in c.latex)

@@ -245,3 +245,17 @@ def test_spacing_inside_a_script_sets_no_part_of_its_label_apart():
     head = "---\nconvention: z-x-z\n---\n# Rates\n\nThe body turns.\n\n$$\n"
     omega = r"\dot\phi \sin\theta \sin\psi + \dot\theta \cos\psi" + "\n$$\n"
     assert verdicts(head + r"\omega_{1 \, } = " + omega) == verdicts(head + r"\omega_{1} = " + omega) == [(8, "holds")]
+
+
+def test_a_chain_of_new_names_ending_in_a_value_defines_each_of_them_as_that_value():
+    # a₁ = a₂ = a₃ = b/2 sets the three as a₁ = b/2 alone sets one; a later step in them is then read
+    text = ("# A corner\n\nThe vector from a corner of a cube of side $b$ to its centre.\n\n"
+            "$$a_1 = a_2 = a_3 = \\frac{b}{2}$$\n\n$$M (a_2^2 + a_3^2) = \\frac{1}{2} M b^2$$\n\n"
+            "$$M (a_1^2 + a_3^2) = M b^2$$\n")
+    claims = kept.check_text(text)
+    assert claims[0].verdict == "unchecked" and "defines the text's symbols a_{1}, a_{2}, a_{3}" in claims[0].why
+    assert claims[1].verdict == "holds"
+    assert claims[2].verdict != "holds"      # ½ M b² is not M b²: never read as holding (b, M untied, never a flag)
+    # a chain that does not end in a value in other names is no such definition
+    loop = kept.check_text("# Names\n\n$$u = v = u + 1$$\n")
+    assert all("defines the text's symbols" not in c.why for c in loop)

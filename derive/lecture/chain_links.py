@@ -2,8 +2,8 @@
 
 Gives the mixin `ChainLinks` of `derive.lecture.notes_check.Checker`: `_linked`, which reads a row
 that goes on with ``=`` against the member just before it when the row could not be compared with
-the chain's left side. May import: the standard library, :mod:`derive.lecture.statements`,
-:mod:`derive.lecture.headless_chains`.
+the chain's left side. May import: the standard library, SymPy, :mod:`derive.lecture.latex`,
+:mod:`derive.lecture.statements`, :mod:`derive.lecture.headless_chains`.
 
 A text writes ``R_{XYZ} = R_Z R_Y R_X`` (a name it gives, and a product of names it has not tied
 to anything), then ``= [the three matrices written out]``, then ``= [their product]``. Each row
@@ -13,13 +13,20 @@ equals the next, and that link — the written-out product against the product o
 written before it — can be checked. The row's verdict is then that link's, said so. A link between
 vectors is kept only when it holds: it may rest on the text's set-up said in words (𝐫ᵢ ⊥ 𝛚). A row
 whose left side is only a vector the text names (𝐌_{O,i} = 𝐫ᵢ × 𝐅ᵢ = det[…] then ``= mᵢ[…]``) is
-read as that link as well, whatever kept it from being read against its left side.
+read as that link as well, whatever kept it from being read against its left side. A link in names
+the text has not tied (the reader cannot say what they stand for) is still a slip where its two
+members differ by a number, every component by the same (``\\frac{1}{12}Mb^2\\omega\\frac{1}{\\sqrt{2}}
+(-11, 11, 0)`` then ``= \\frac{11}{12}Mb^2\\omega (-1, 1, 0)``, off by √2): no value of those names
+makes them equal, short of making both zero.
 """
 from __future__ import annotations
 
 import re
 
+import sympy as sp
+
 from derive.lecture import headless_chains
+from derive.lecture import latex as lx
 from derive.lecture.statements import top_level
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
@@ -56,6 +63,13 @@ class ChainLinks:
         finally:
             self.ctx.head = head
         linked = self.claims[before:]
+        factor = None if any(c.verdict != "unchecked" for c in linked) or _VECTOR.search(member + piece) \
+            else self._constant_factor(member, piece)
+        if factor is not None:          # a link that is off by a number whatever the untied names stand for
+            c, names = factor
+            self.claims[before:] = [type(kept[0])(line, piece, "identity", "fails", None, WHY + (
+                f"it is {sp.latex(c)} times the member before it, whatever {', '.join(names)} stand for"))]
+            return
         flagged = any(c.verdict in ("typo", "fails") for c in linked)
         if not any(c.verdict in ("holds", "typo", "fails") for c in linked) or (flagged and _VECTOR.search(member + piece)):
             # a link between vectors may rest on the text's set-up (r ⊥ 𝛚, a fixed axis) said in
@@ -64,6 +78,32 @@ class ChainLinks:
             return
         for c in linked:
             c.why = WHY + c.why
+
+
+    def _constant_factor(self, member, piece):
+        """(c, the names) where the row's first member is the member before it times a number c ≠ 1
+        (none of the text's names in it), every component alike, both in the same names; else None."""
+        try:
+            parsed = lx.parse(member + " " + piece, self.vocab)
+        except (lx.NotRead, ArithmeticError, TypeError, ValueError):
+            return None
+        if len(parsed.members) < 2 or parsed.relations[0] != "=":
+            return None
+        a, b = (sp.Matrix(m.value) if isinstance(m.value, sp.MatrixBase) else sp.Matrix([m.value])
+                for m in parsed.members[:2])
+        names = a.free_symbols
+        if a.shape != b.shape or not names or names != b.free_symbols or any(x.has(sp.Integral, sp.Derivative) for x in (*a, *b)):
+            return None
+        ratios = set()
+        for x, y in zip(a, b):
+            if (x == 0) != (y == 0):
+                return None
+            if x != 0:
+                ratios.add(sp.nsimplify(sp.simplify(y / x)))
+        c = ratios.pop() if len(ratios) == 1 else None
+        if c is None or not c.is_number or c == 1 or not c.is_real:
+            return None
+        return c, sorted(self.tex(x) for x in names)
 
 
 def last_member(row: str) -> str | None:

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 import random
+import re
 
 import mpmath
 import sympy as sp
@@ -28,6 +29,7 @@ from derive.lecture import latex as lx
 from derive.lecture.definite_integrals import DEFINITE
 
 _DIGITS = 30
+_GOES_ON = re.compile(r"\s*=(?!=)")
 
 
 def _spans(text, parsed):
@@ -91,7 +93,12 @@ class IntegralClaims:
     """The mixin's judging of a statement that writes a definite integral out."""
 
     def _definite_integral(self, line, piece, text) -> bool:
-        """Judge the statement when it holds a definite integral (True: it is the integral rule's)."""
+        """Judge the statement when it holds a definite integral (True: it is the integral rule's). A
+        row of the display that goes on with ``=`` after a row ending in an integral continues from that
+        integral: its first member is the value the integral works out to."""
+        tail, self._integral_tail = getattr(self, "_integral_tail", None), None
+        if tail is not None and tail[0] == line and _GOES_ON.match(piece):
+            text = tail[1] + " " + piece
         if DEFINITE.search(text) is None:
             return False
         try:
@@ -100,6 +107,8 @@ class IntegralClaims:
             self._add(line, piece, "unknown", "unchecked", err.why)
             return True
         spans, done = _spans(text, parsed), False
+        if DEFINITE.search(spans[-1]):
+            self._integral_tail = (line, spans[-1])
         for k, rel in enumerate(parsed.relations):
             if rel != "=" or not (DEFINITE.search(spans[k]) or DEFINITE.search(spans[k + 1])):
                 continue

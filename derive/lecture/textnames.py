@@ -172,6 +172,8 @@ class TextNames(UnreadMembers):
                 self.settings_only = False
                 return True
             return self._undefined(line, piece, members, rels)
+        if self._new_names_set_alike(line, piece, members, rels):
+            return True
         if self._new_name(m0) and not (_free(members[1]) & {m0}):
             self.ctx.defs[m0] = members[1]
             if getattr(self, "_inline", False):
@@ -259,8 +261,7 @@ class TextNames(UnreadMembers):
         return True
 
     def _undefined(self, line, piece, members, rels) -> bool:
-        """A relation with symbols of the text's that nothing ties: decided only if it is an
-        identity whatever they are."""
+        """A relation with symbols of the text's that nothing ties: decided only if it is an identity whatever they are."""
         self._flush()                   # a claim: the solutions before it are a complete group
         implied = under_settings(self, members[0], members[1]) if rels == ["="] else None
         if implied:
@@ -586,8 +587,7 @@ class TextNames(UnreadMembers):
         return self.vocab._generic(Atom(base="omega", dots=2, tilde=True, sub=str(i + 1)))
 
     def _dotted_definitions(self, v, syms=None) -> dict:
-        """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined
-        (``syms``: v's free symbols, where the caller has them)."""
+        """Ẋ → d/dt of X's definition, for the text's dotted symbols whose X it has defined (``syms``: v's free symbols)."""
         rep = {}
         for s in _free(v) if syms is None else syms:
             if isinstance(s, lx.Generic) and s not in self.ctx.defs:

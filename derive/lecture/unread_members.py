@@ -4,7 +4,8 @@ Takes: a chain ``a = b = c`` parsed with an open vocabulary, some of whose membe
 names the text has not defined (or cannot combine yet). Gives: the mixin `UnreadMembers` of
 `derive.lecture.notes_check.Checker`: `_loose_ends_dropped`, the chain without those members,
 `_statement_read`, a statement read with its verdicts marked for the members left out, and
-`_identity_then_named`, a chain in untied names whose last member names it with a name of its own.
+`_identity_then_named`, a chain in untied names whose last member names it with a name of its own,
+and `_new_names_set_alike`, a chain of new names ending in a value, each of them defined as it.
 May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.latex`, SymPy.
 
 A chain states that each member equals the next. With a member left out, the links through it are
@@ -28,7 +29,8 @@ _RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\
 
 class UnreadMembers:
     """Mixin of the checker. Uses ``self.claims``, ``self._statement``, ``self._constants``,
-    ``self._new_name``, ``self._resolve``, ``self._members_kept``, ``self.vocab``, ``self._text``."""
+    ``self._new_name``, ``self._resolve``, ``self._members_kept``, ``self.vocab``, ``self._text``,
+    ``self.ctx``, ``self._mark_defined``, ``self._add`` and ``self.tex``."""
 
     unread: tuple | None = None
     """(the members kept, the written form of each member left out) of the statement being read."""
@@ -135,3 +137,19 @@ class UnreadMembers:
                     self.deferred.append((c, line, piece, self._snapshot()))
             elif c.verdict in ("holds", "typo", "fails"):
                 c.why += f" (checked without {names}, not read: its links are unchecked)"
+
+    def _new_names_set_alike(self, line, piece, members, rels) -> bool:
+        """``a_1 = a_2 = a_3 = b/2``: a chain of names the text has not defined, ending in a value in
+        other names, defines each of them as that value (as ``a_1 = b/2`` defines one)."""
+        names, value = members[:-1], members[-1]
+        if len(members) < 3 or set(rels) - {"=", "≡"} or len(set(names)) < len(names) \
+                or not all(self._new_name(m) for m in names) or free(value) & set(names):
+            return False
+        for m in names:
+            self.ctx.defs[m] = value
+            self._mark_defined(m)
+        self.settings_only = False
+        self._add(line, piece, "new symbol", "unchecked", f"defines the text's symbols "
+                  f"{', '.join(self.tex(m) for m in names)} as {self.tex(value)} (recorded, then used)")
+        return True
+

@@ -36,6 +36,9 @@ GENERIC = "_vec"
 """The mark of a generic vector's body components (``V_vec1``): a vector of the text's in a frame
 derivative, with time-dependent components of its own."""
 _KNOWN_VECTORS = {"r", "L", "omega", "Omega", "e", "I", "Xi", "tau"}
+ROTATIONAL = ("rot", "rotation", "rotational")
+"""Subscripts that name a kinetic energy's rotational part (T_rot, T_{\\text{rot}}), the whole of it in
+the models here, where the body only turns."""
 POINT_LABELS = ("cm", "CM", "com", "G", "O", "C")
 """Subscripts naming the point a momentum is taken about (𝐇_cm, 𝐋_G): the centre of mass, or the
 point the body turns about."""
@@ -198,6 +201,8 @@ class Model:
                 return r[p.axis(a.sub[1], env, tok)]
             if a.sub == "p":
                 return r if a.bold else sp.sqrt(r.dot(r))
+        if a.base == "x" and plain and not a.bold and len(a.sub) == 2 and a.sub[0] == "p":
+            return R_P[_particle(p, env, tok)][p.axis(a.sub[1], env, tok)]   # x_{α,k}: r_α's k-th coordinate
         if a.base == "v" and plain and a.sub == "p":
             v = self.velocity(_particle(p, env, tok))
             return v if a.bold else sp.sqrt(v.dot(v))
@@ -214,7 +219,9 @@ class Model:
         if _text_letter(p, a, "angular momentum") and plain and (a.bold and not a.sub or len(a.sub) == 1 and
                                                                  self.name == "particle" and not a.bold):
             return self.momentum if not a.sub else self.momentum[p.axis(a.sub, env, tok)]   # Landau's 𝐌, M_i
-        if a.base == "T" and plain and not a.sub and not a.bold:
+        if a.base == "T" and plain and (not a.sub or a.sub in ROTATIONAL) and not a.sup \
+                and not (a.bold and _text_letter(p, a, "torque")):
+            # T, T_rot (the body only turns here, so T is all rotation), and a bold 𝐓 as the scalar reader reads it
             return self.kinetic
         if a.bold and plain and not a.sub and _text_letter(p, a, "vertical") and p.vocab.vertical:
             return sp.Matrix(p.vocab.vertical)    # the text's unit vector of the vertical, Rᵀẑ
@@ -276,7 +283,8 @@ def model_of(toks, sticky: str | None) -> str:
 
 
 def _particle_atom(a) -> bool:
-    return (a.base in ("m", "r", "v") and a.sub[:1] == "p") or a.base == "delta" or (a.base == "Xi" and a.bold)
+    return (a.base in ("m", "r", "v") and a.sub[:1] == "p") or (a.base == "x" and len(a.sub) == 2 and a.sub[0] == "p") \
+        or a.base == "delta" or (a.base == "Xi" and a.bold)
 
 
 def _has_time_derivative(toks) -> bool:
