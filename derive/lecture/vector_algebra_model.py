@@ -559,11 +559,12 @@ def one_frame(text: str) -> str:
     return _BODY_TENSOR.sub("I", _BODY_VECTOR.sub(r"\1}", text))
 
 
-def read(text: str, state: State) -> vp.Reading:
+def read(text: str, state: State, partial: bool = False) -> vp.Reading:
     """Read a statement with the vector grammar under this model (`lx.NotRead` when it cannot);
-    ``reading.model`` is the system it speaks of ("body" or "single")."""
+    ``reading.model`` is the system it speaks of ("body" or "single"); ``partial``: a matrix entry
+    with a symbol the model does not know is set aside (`derive.lecture.vector_parser.read`)."""
     text = prepare(one_frame(text))
     toks = lx.scan_cells(text)
     learn_torque(toks, state)
     system = system_of(toks, state)
-    return vp.read(toks, text, lx.Vocabulary(), Algebra(state, system), system)
+    return vp.read(toks, text, lx.Vocabulary(), Algebra(state, system), system, partial)
