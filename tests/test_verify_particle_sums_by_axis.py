@@ -18,6 +18,7 @@ def _verdicts(statement):
 def test_a_component_at_a_free_index_with_coordinates_indexed_by_particle_and_axis():
     assert _verdicts(r"J_i = \sum_a m_a r_a^2 \omega_i - \sum_a m_a x_{ai} \sum_j x_{aj}\omega_j") == ["holds"]
     assert _verdicts(r"I_{ij} = \sum_a m_a (r_a^2 \delta_{ij} - x_{ai} x_{aj})") == ["holds"]
+    assert _verdicts(r"I_{ij} = \sum_a m_a (r_a^2 \delta_{ij} - x_{a,i} x_{a,j})") == ["holds"]
 
 
 def test_a_sum_over_the_axes_with_the_axis_index_slipped_is_flagged():
@@ -26,6 +27,7 @@ def test_a_sum_over_the_axes_with_the_axis_index_slipped_is_flagged():
     assert [c.verdict for c in slipped] == ["typo"]
     assert "x_{aj}" in slipped[0].correction
     assert _verdicts(r"I_{ij} = \sum_a m_a (r_a^2 \delta_{ij} + x_{ai} x_{aj})") in (["typo"], ["fails"])
+    assert _verdicts(r"I_{ij} = \sum_a m_a (r_a^2 \delta_{ij} - x_{a,i} x_{a,i})") in (["typo"], ["fails"])
 
 
 def test_a_sum_whose_index_writes_a_particle_is_not_read_as_over_the_axes():

@@ -408,8 +408,9 @@ class Algebra:
                 return r[AXES[base]]
             if base == "x" and len(sub) == 1:
                 return r[p.axis(sub, env, tok)]
-            if base == "x" and len(sub) == 2 and env.get("index") in sub and sub[0] != sub[1]:
-                return r[p.axis(sub.replace(env["index"], ""), env, tok)]   # x_{ai}: point a's i-th coordinate
+            pair = sub.replace(",", "")
+            if base == "x" and len(pair) == 2 and env.get("index") in pair and pair[0] != pair[1]:
+                return r[p.axis(pair.replace(env["index"], ""), env, tok)]   # x_{ai}, x_{a,i}: point a's i-th coordinate
             return None
         if base == "m" and not bold and self._own(sub, env):
             return mass
