@@ -28,14 +28,16 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "checked"):
-        "a determinant proof (det(R - I), det(-A)), particle sums over a with x_ai components, the inertia "
-        "tensor about another origin (I', [L]_S, [A-dot]_{S_0}), the angles tau and zeta in A (the radius of "
-        "omega's circle) are not read; Euler's equations, the asymmetric top's linearisation in eps_i, the "
+        "a determinant proof (det(R - I), det(-A)), the inertia tensor about another origin (I', [L]_S, "
+        "[A-dot]_{S_0}), the angles tau and zeta in A (the radius of omega's circle) are not read; the particle "
+        "sums over a with x_ai components and the tensor's matrix, Euler's equations, the asymmetric top's "
+        "linearisation in eps_i, the "
         "symmetric top's rates in the text's own Omega and the kinetic energy are checked",
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
-        "its five slips sit in displays the reader does not check: J_i with the index x_ai summed, the matrix's "
-        "(3,1) and (3,3) entries, T about O' with I_2 for I_2', cos tau with I_2^2 omega_3, and Euler's third "
-        "equation with omega_1 omega_3 written where omega_1 = omega_2 = 0 makes both sides vanish",
+        "two of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
+        "its unread y_z); T about O' with I_2 for I_2', cos tau with I_2^2 omega_3 (beside A, the radius of "
+        "omega's circle, which the text ties only in words) and Euler's third equation with omega_1 omega_3 "
+        "written where omega_1 = omega_2 = 0 makes both sides vanish are not read",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
         "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked; the inertia "
@@ -187,7 +189,7 @@ SHORT = {
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
 }
 
-FLOOR = {"checked": 636, "slips_flagged": 58, "holds_flagged": 0}
+FLOOR = {"checked": 638, "slips_flagged": 60, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

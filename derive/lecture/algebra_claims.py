@@ -6,7 +6,8 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, the single edits
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
+`UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
 SymPy.
@@ -31,6 +32,7 @@ from derive.lecture import latex as lx
 from derive.lecture import own_torque
 from derive.lecture import point_labels
 from derive.lecture import vector_algebra_model as va
+from derive.lecture import vector_parser as vp
 from derive.lecture import vectors as vc
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
@@ -85,13 +87,13 @@ class AlgebraStatements:
         finally:
             state.axis = kept_axis
 
-    def _algebra_read(self, line, piece, text, state) -> bool:
+    def _algebra_read(self, line, piece, text, state, partial=None) -> bool:
         try:
-            reading = va.read(text, state)
+            reading = partial or va.read(text, state)
         except lx.NotRead:
             reading = self._named_reading(text)
             if reading is None:
-                return self._headless(line, piece, text, state)
+                return self._headless(line, piece, text, state) or self._entry_by_entry(line, piece, text, state)
         if set(reading.relations) - {"=", "≡"} or len(reading.members[0]) < 2:
             return False
         self._alg_read = True
@@ -123,12 +125,29 @@ class AlgebraStatements:
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
                 state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
-            fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only else None
+            fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only \
+                and not reading.unread else None
             if fix:
                 verdict, why = "typo", f"{why}; one edit ({fix[1]}) makes it hold"
             self._add(line, piece, "definition" if ref == 0 and _named(text) else "identity", verdict,
                       why + (where if verdict != "unchecked" else ""), fix[0] if fix else None)
         return True
+
+    def _entry_by_entry(self, line, piece, text, state) -> bool:
+        """A tensor with a few entries in symbols the model does not know (a slip's stray letter, y_z
+        for y_a): its other entries read and judged one by one (`_masked`), and the statement taken
+        only when one of them fails (else False: the other readers read it as before, and nothing
+        of this reading is kept)."""
+        try:
+            reading = va.read(text, copy.deepcopy(state), partial=True)
+        except lx.NotRead:
+            return False
+        first = reading.members[0]
+        if not reading.unread or set(reading.relations) - {"=", "≡"} or len(first) < 2 or first[0].skip:
+            return False
+        if not any(self._algebra_pair(reading, 0, k, record=False)[0] == "fails" for k in range(1, len(first))):
+            return False
+        return self._algebra_read(line, piece, text, state, reading)
 
     def _named_reading(self, text):
         """``K = X …`` with K a plain letter this reader does not know: the text's own name. Set to
@@ -282,6 +301,11 @@ class AlgebraStatements:
                 return "unchecked", "cannot compare its sides: their shapes differ"
             if self._alg.axis is not None:
                 d = va.difference(d.subs(fixed_axis.off_axis(self._alg.axis)), 0 * d)
+            if reading.unread:
+                verdict = _masked(d, members[k].value, members[ref].value)
+                if verdict is None:
+                    continue
+                return verdict[0], verdict[1].format(why=WHY, unread="; ".join(reading.unread))
             if _zero(d):
                 continue
             if ref == 0 and _entry_name(reading.source, members[0]) and not isinstance(d, sp.MatrixBase) \
@@ -309,6 +333,9 @@ class AlgebraStatements:
                              "(some texts define I_xy = ∫xy dm and write −I_xy in the tensor)")
         if principal:
             return "holds", f"{WHY}: holds if the axes are principal axes (the products of inertia vanish)"
+        if reading.unread:
+            return "unchecked", (f"the entries it reads agree ({WHY}); an entry is not read "
+                                 f"({'; '.join(reading.unread)})")
         return "holds", f"{WHY}: exact (expand)"
 
 
@@ -375,6 +402,26 @@ def _set_perpendicular(reading, k) -> bool:
     """``… = 2 𝐋 · 𝛕 = 0``: member k is zero and the member before it a scalar product."""
     first = reading.members[0]
     return k > 0 and first[k].value == 0 and "\\cdot" in reading.source[first[k - 1].start:first[k - 1].end]
+
+
+def _masked(d, a, b):
+    """A difference of two tensors with entries set aside (`vp.UNREAD`): None when the entries read
+    agree, else (verdict, why with ``{why}`` and ``{unread}`` to fill). Only a 3×3 tensor of the body
+    (its entries free of the rates) is judged so; an entry 0 in one side ``a``, ``b`` where the
+    other's is not leaves it unchecked (principal axes the text may assume)."""
+    if not isinstance(d, sp.MatrixBase) or d.shape != (3, 3):
+        return "unchecked", "an entry of a matrix is not read ({unread})"
+    aside = [vp.UNREAD in sp.sympify(x).free_symbols for x in d]
+    if 3 * sum(aside) > len(aside):
+        return "unchecked", "too many of its matrix's entries are not read ({unread})"
+    read = sp.Matrix(d.shape[0], d.shape[1], [0 if a else x for a, x in zip(aside, d)])
+    if _zero(read):
+        return None
+    if any(x != 0 and (a[n] == 0 or b[n] == 0) for n, x in enumerate(read)):
+        return "unchecked", "an entry written 0 where the derived one is not, beside an entry not read ({unread})"
+    if any(sp.sympify(x).free_symbols & (set(va.W) | set(va.WD)) for x in read):
+        return "unchecked", "a tensor in the rates, beside an entry not read ({unread})"
+    return "fails", "as written: " + _where(read) + " ({why}); an entry left out, not read ({unread})"
 
 
 def _zero(d) -> bool:

@@ -335,6 +335,8 @@ class Algebra:
         """Σᵢ over the body's points (the index's upper limit a letter, or mᵢ in the statement)."""
         if len(names) != 1 or len(names[0]) != 1:
             p.fail("a sum over more than one index", tok)
+        if env.get("index") is not None and not upper and not _particle_letter(p.source, names[0]):
+            return [{**env, names[0]: n} for n in (1, 2, 3)]   # Σ_j x_{aj} ω_j inside Σ_a: over the axes
         if any(t is not None and t.kind == "num" for t in upper):
             p.fail("a sum over the body's axes", tok)    # Σ_{i=1}^{3}: not over particles
         return [{**env, "point": k, "index": names[0]} for k in range(POINTS)]
@@ -380,6 +382,8 @@ class Algebra:
                 return W
             if not sub and axis is not None:
                 return W[axis]               # about a fixed axis: ω is the signed rate about it
+            if _index_letter(sub, env, self.free) and _particles_apart(p.source, sub):
+                return W[p.axis(sub, env, tok)]     # ω_i beside Σ_a: a component at an index
             return n if not sub else (W[AXES[sub]] if sub in AXES else None)
         if base == "alpha":
             p.rated = True
@@ -404,6 +408,9 @@ class Algebra:
                 return r[AXES[base]]
             if base == "x" and len(sub) == 1:
                 return r[p.axis(sub, env, tok)]
+            pair = sub.replace(",", "")
+            if base == "x" and len(pair) == 2 and env.get("index") in pair and pair[0] != pair[1]:
+                return r[p.axis(pair.replace(env["index"], ""), env, tok)]   # x_{ai}, x_{a,i}: point a's i-th coordinate
             return None
         if base == "m" and not bold and self._own(sub, env):
             return mass
@@ -440,6 +447,8 @@ class Algebra:
                 return momentum(system) if sub in ("", "system", "textsystem", *POINT_LABELS) else None
             if len(sub) == 1 and sub in AXES:
                 return momentum(self.system)[AXES[sub]]
+            if _index_letter(sub, env, self.free) and _particles_apart(p.source, sub):
+                return momentum(self.system)[p.axis(sub, env, tok)]   # J_i = Σ_a …: a component at an index
             if "omega" in sub:
                 return momentum(self.system).dot(W / sp.sqrt(W.dot(W)))
             return None
@@ -491,6 +500,28 @@ class Algebra:
         return None
 
 
+_SUM_INDEX = re.compile(r"\\sum(?:\\limits)?\s*_\s*\{?\s*([A-Za-z])(?![A-Za-z])")
+_PARTICLE_SUB = r"(?:(?<![A-Za-z\\])m|\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*[rvp]\s*\}?)\s*_\s*(?:\{\s*%s\s*\}|%s(?![A-Za-z]))"
+
+
+def _particle_letter(source: str, letter: str) -> bool:
+    """Whether a statement writes a particle's mass or bold position, velocity or momentum with
+    ``letter`` as its subscript (m_j, 𝐫_j): then a sum over it runs over particles."""
+    return re.search(_PARTICLE_SUB % (re.escape(letter), re.escape(letter)), source) is not None
+
+
+def _index_letter(sub: str, env: dict, free: str) -> bool:
+    """A one-letter subscript that is an index (free, or a sum's over the axes), not an axis."""
+    return len(sub) == 1 and sub not in AXES and (sub in free or isinstance(env.get(sub), int))
+
+
+def _particles_apart(source: str, letter: str) -> bool:
+    """Whether the statement sums over particles with a letter other than ``letter`` and never writes a
+    particle with it: ``letter`` then indexes the axes, as in J_i = Σ_a m_a (…x_{ai}…)."""
+    return not _particle_letter(source, letter) and any(
+        s != letter and _particle_letter(source, s) for s in set(_SUM_INDEX.findall(source)))
+
+
 def system_of(toks, state: State) -> str:
     """body (a sum or an integral), single (a plain m, or a particle's momentum 𝐩 with no index),
     else the previous statement's system."""
@@ -529,11 +560,12 @@ def one_frame(text: str) -> str:
     return _BODY_TENSOR.sub("I", _BODY_VECTOR.sub(r"\1}", text))
 
 
-def read(text: str, state: State) -> vp.Reading:
+def read(text: str, state: State, partial: bool = False) -> vp.Reading:
     """Read a statement with the vector grammar under this model (`lx.NotRead` when it cannot);
-    ``reading.model`` is the system it speaks of ("body" or "single")."""
+    ``reading.model`` is the system it speaks of ("body" or "single"); ``partial``: a matrix entry
+    with a symbol the model does not know is set aside (`derive.lecture.vector_parser.read`)."""
     text = prepare(one_frame(text))
     toks = lx.scan_cells(text)
     learn_torque(toks, state)
     system = system_of(toks, state)
-    return vp.read(toks, text, lx.Vocabulary(), Algebra(state, system), system)
+    return vp.read(toks, text, lx.Vocabulary(), Algebra(state, system), system, partial)

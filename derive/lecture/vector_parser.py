@@ -42,6 +42,8 @@ class _Law:
 
 
 LAW = _Law()
+UNREAD = sp.Symbol("unread_entry")
+"""A matrix entry with a symbol no model knows, read in a partial reading (`read`'s ``partial``)."""
 
 
 class _FreeIndex(Exception):
@@ -78,18 +80,22 @@ class Reading:
     free: str           # the free indices ("", "i", "ij")
     source: str
     model: str          # the model's name
+    unread: tuple = ()  # why each matrix entry set aside as `UNREAD` was not read (a partial reading)
 
 
-def read(toks, source, vocab, model, name: str) -> Reading:
+def read(toks, source, vocab, model, name: str, partial: bool = False) -> Reading:
     """Parse a statement under a model, once per value (1, 2, 3) of each free index it turns out
-    to have (`lx.NotRead` when it cannot)."""
+    to have (`lx.NotRead` when it cannot); with ``partial``, a matrix entry holding a symbol the
+    model does not know is `UNREAD` instead, and ``unread`` says why."""
     free = ""
     while True:
         try:
-            readings = []
+            readings, unread = [], []
             for values in itertools.product((1, 2, 3), repeat=len(free)):
                 p = VectorParser(list(toks), vocab, source, model)
+                p.partial = partial
                 readings.append(p.members(dict(zip(free, values))))
+                unread += p.unread
             break
         except _FreeIndex as err:
             if err.letter in free or len(free) >= 2:
@@ -97,7 +103,7 @@ def read(toks, source, vocab, model, name: str) -> Reading:
             free += err.letter
         except (sp.ShapeError, TypeError, ValueError, AttributeError, IndexError) as err:
             raise lx.NotRead(f"cannot combine its parts ({type(err).__name__})") from None
-    return Reading([r[0] for r in readings], readings[0][1], free, source, name)
+    return Reading([r[0] for r in readings], readings[0][1], free, source, name, tuple(dict.fromkeys(unread)))
 
 
 class VectorParser(_Parser):
@@ -112,6 +118,7 @@ class VectorParser(_Parser):
         self.force_at: list = []                    # token indices of 𝐅
         self.law = self.rated = False
         self.stop_dm = False
+        self.partial, self.unread = False, []
 
     # a chain of members
     def members(self, env):
@@ -362,7 +369,20 @@ class VectorParser(_Parser):
         """A matrix entry: one value (a 1×1 product a scalar), never a matrix of any size."""
         if self.at("cmd") and self.peek().value in ("cdots", "ldots", "dots"):
             self.fail("a matrix of any size")
-        return _as_value(self.expr(env))
+        start = self.i
+        try:
+            return _as_value(self.expr(env))
+        except lx.Unknown as err:
+            if not self.partial:
+                raise
+            self.i, depth = start, 0        # the entry set aside: on to its '&', '\\' or the matrix's end
+            while self.peek() is not None and (depth or not (self.at("op", "&") or self.at("op", "\\")
+                                                             or self.at("end"))):
+                tok = self.take(self.peek().kind)
+                depth += (tok.kind == "begin" or tok.value in ("{", "(", "[")) - \
+                    (tok.kind == "end" or tok.value in ("}", ")", "]"))
+            self.unread.append(err.why)
+            return UNREAD
 
     # sums and integrals
     def vsum(self, env, tok):
