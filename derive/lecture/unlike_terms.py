@@ -51,6 +51,10 @@ _TIED = {**{s: _MOMENT for s in (I1, I2, I3)}, **{s: _RATE for s in (*lx.W, *RAT
 
 _RELATIONS = re.compile(r"(?<![<>!\\])=|:=|\\(?:equiv|approx|triangleq|simeq|leq?|geq?|leqslant|geqslant)(?![A-Za-z])|<|>")
 _EQUAL = re.compile(r"\s*(?:=|:=|\\equiv|\\triangleq)\s*$")
+_SIGN = re.compile(r"[+-]")
+_LONE = re.compile(r"\s*\d*\s*(?:\\[A-Za-z]+\s*\{\s*\w+\s*\}|\\[A-Za-z]+|[A-Za-z])\s*(?:_\s*(?:\{[^{}]*\}|\w))?"
+                   r"\s*(?:\^\s*(?:\{\s*\d\s*\}|\d))?\s*[.,]?\s*$")
+"""A member that may be a number times a power of one letter: ``2E``, ``h^2``, ``\\mathrm{KE}``, ``G_0``."""
 _CONFLICT = "conflict"
 _NAMES = ("M", "L", "T")
 
@@ -70,14 +74,16 @@ class UnlikeTerms:
         if not hasattr(self, "_dimensions"):
             self._dimensions = {}
         cuts = top_level(piece, _RELATIONS)
-        if not cuts and not re.search(r"[+-]", piece):
+        if not cuts and not _SIGN.search(piece):
             return None
         bounds = [0, *(p for m in cuts for p in (m.start(), m.end())), len(piece)]
         members = [piece[bounds[k]:bounds[k + 1]] for k in range(0, len(bounds), 2)]
         relations = [m.group(0) for m in cuts]
-        values = [self._member_value(m) for m in members]
+        # only what can be a sum or a lone letter to learn is read again (the cheap test first)
+        learn = bool(relations) and all(_EQUAL.match(r) for r in relations) and any(_LONE.match(m) for m in members)
+        values = [self._member_value(m) if learn or _SIGN.search(m) else None for m in members]
         for text, value in zip(members, values):
-            if value is None or not re.search(r"[+-]", text):
+            if value is None or not _SIGN.search(text):
                 continue
             found = []
             try:
@@ -88,7 +94,7 @@ class UnlikeTerms:
                 a, b = (-x if x.could_extract_minus_sign() else x for x in found[0])
                 return piece, (f"adds quantities of unlike dimensions: {self.tex(a)} ({_shown(self._dimension(a, []))}) "
                                f"and {self.tex(b)} ({_shown(self._dimension(b, []))})")
-        if relations and all(_EQUAL.match(r) for r in relations):
+        if learn:
             try:
                 self._learn(values)
             except (TypeError, AttributeError, ValueError):
