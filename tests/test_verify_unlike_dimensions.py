@@ -51,3 +51,11 @@ def test_a_name_set_to_a_number_is_not_compared():
     # a worked example in scaled units: I₃ = 1 makes h − 2E I₃ a sum the text may mean
     scaled = HEAD.replace("$I_1 > I_2 > I_3$", "$I_1 > I_2 > I_3$ and, in scaled units, $I_3 = 1$")
     assert _flagged(scaled + ENERGY + NORM + SLIP, "\\Pi_2(t)") == []
+
+
+def test_a_display_the_reader_flags_already_is_not_flagged_twice():
+    # the energy with ω₃ unsquared: its reading finds the one edit, the sum of unlike terms adds nothing
+    text = HEAD + "$$\nT = \\frac{1}{2}\\left(I_1 \\omega_1^2 + I_2 \\omega_2^2 + I_3 \\omega_3\\right)\n$$\n"
+    claims = _claims(text, "T =")
+    assert [c.verdict for c in claims if c.verdict in ("typo", "fails")] == ["typo"]
+    assert not any(c.kind == "dimensions" for c in claims)
