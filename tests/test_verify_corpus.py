@@ -51,13 +51,11 @@ SHORT = {
         "L_z = Cn, which the case imposed does not reach (only a statement that vanishes on it exactly holds)",
     ("maithripala-free-body-heavy-top-313", "checked"):
         "a LaTeX source written in the body angular momentum Pi (\\mathbb{I}_i, h = ||Pi||, E) with Jacobi "
-        "elliptic functions: its free-body solution defines alpha_21, beta_21, u, omega, k after using them and "
+        "elliptic functions: the displays of its free-body solution that write h for h^2 are flagged (sums of "
+        "unlike quantities), but what holds there is not judged: the solution defines alpha_21, beta_21, u, omega, k after using them and "
         "runs on cross products and hat maps of expressions (\\widehat{\\mathbb{I}^{-1}\\Pi}); \\mathbb{I} alone "
         "(the inertia tensor here, the identity elsewhere) is not read; its 3-1-3 section (theta_1, theta_2, "
         "theta_3 read from R = R_3(theta_1)R_1(theta_2)R_3(theta_3)) is checked",
-    ("maithripala-free-body-heavy-top-313", "found"):
-        "its slips (h for h^2 throughout the elliptic solution, KE = Pi . Omega) sit in displays the reader "
-        "does not check; the 3-1-3 matrix with the angles negated is flagged",
     ("maithripala-rolling-disk-gimbal-312-313", "checked"):
         "a notebook in matrix notation (||o_dot||^2, hat maps inside products, sums over particles) and gimbal "
         "moments written as frame-times-column products; its 3-1-2 (theta, alpha, phi) and 3-1-3 angles are "
@@ -189,7 +187,7 @@ SHORT = {
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
 }
 
-FLOOR = {"checked": 638, "slips_flagged": 60, "holds_flagged": 0}
+FLOOR = {"checked": 649, "slips_flagged": 71, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

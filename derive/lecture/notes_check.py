@@ -46,9 +46,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
-from derive.lecture import rearranged
-from derive.lecture import summation_index
-from derive.lecture import worked_values
+from derive.lecture import rearranged, summation_index, worked_values
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.chain_links import ChainLinks
@@ -78,6 +76,7 @@ from derive.lecture.own_sign import OwnSign
 from derive.lecture.stated_theorems import StatedTheorems
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.turn_rates import TurnRates
+from derive.lecture.unlike_terms import UnlikeTerms
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
@@ -106,7 +105,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -221,7 +220,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
             return
         self._named_at_chain_end(latex, item.line)
         relabelled = repeated_labels(pieces)
-        previous, mark = None, None
+        previous, mark, unlike = None, None, []
         for k, piece in enumerate(pieces):
             if k == len(pieces) - 1 > 0 and statements(latex.rsplit("\\Rightarrow", 1)[-1]) == [piece]:
                 mark = len(self.display_settings)     # what is set from here is the display's conclusion
@@ -253,11 +252,13 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
             self._linked(item.line, piece, before, previous, dup, pieces)
+            unlike.append(self._unlike_terms(item.line, piece))
             previous = piece
             self._place_flushed(before)
             self._note_motion(item.line, piece)
         self._confirmed_by_siblings(self.claims[start:])
         self._close_display(self.display_settings[mark:] if mark is not None else ())
+        self._unlike_flagged(item.line, [u for u in unlike if u], start)
 
     def _place_flushed(self, at):
         """The verdicts of a group of solutions that a later statement closed, placed before that

@@ -1,0 +1,61 @@
+"""A sum of unlike quantities is a slip wherever it stands: a free top's solution written in its
+angular momentum with h = ‖Π‖ where the derivation has h² (h − 2E I₃ adds an angular momentum to
+its square) is flagged, the same formula with h² is not, and a letter whose dimension the text has
+not tied (by an equation setting it equal to members of known dimensions) is never compared."""
+import kept_readings as kept
+
+HEAD = ("---\nconvention: z-x-z\n---\n# The free asymmetric top\n\n"
+        "The body angular momentum $\\Pi$ has components $\\Pi_1, \\Pi_2, \\Pi_3$ along the principal axes, "
+        "with principal moments $I_1 > I_2 > I_3$.\n\n")
+ENERGY = "$$\nE = \\frac{1}{2}\\left(\\frac{\\Pi_1^2}{I_1} + \\frac{\\Pi_2^2}{I_2} + \\frac{\\Pi_3^2}{I_3}\\right)\n$$\n\n"
+NORM = "$$\nh^2 = \\Pi_1^2 + \\Pi_2^2 + \\Pi_3^2\n$$\n\n"
+SLIP = "$$\n\\Pi_2(t) = \\sqrt{\\frac{I_2 (h - 2 E I_3)}{I_2 - I_3}} \\, \\mathrm{sn}(\\lambda t)\n$$\n\n"
+RIGHT = "$$\n\\Pi_2(t) = \\sqrt{\\frac{I_2 (h^2 - 2 E I_3)}{I_2 - I_3}} \\, \\mathrm{sn}(\\lambda t)\n$$\n\n"
+MODULUS = "$$\nk^2 = \\frac{(I_1 - I_2)(h^2 - 2 E I_3)}{(I_2 - I_3)(2 E I_1 - h)}\n$$\n\n"
+
+
+def _claims(text, start):
+    return [c for c in kept.check_text(text) if c.latex.startswith(start)]
+
+
+def _flagged(text, start):
+    return [c for c in _claims(text, start) if c.verdict in ("typo", "fails")]
+
+
+def test_h_for_h_squared_in_the_amplitude_is_flagged_and_h_squared_holds():
+    flagged = _flagged(HEAD + ENERGY + NORM + SLIP, "\\Pi_2(t)")
+    assert [c.verdict for c in flagged] == ["fails"]
+    assert "unlike dimensions" in flagged[0].why and "2 E I_3" in flagged[0].why and "h (M L^2 T^-1)" in flagged[0].why
+    assert _flagged(HEAD + ENERGY + NORM + RIGHT, "\\Pi_2(t)") == []
+
+
+def test_the_modulus_with_h_in_one_factor_is_flagged():
+    assert [c.verdict for c in _flagged(HEAD + ENERGY + NORM + MODULUS, "k^2")] == ["fails"]
+    right = MODULUS.replace("2 E I_1 - h)", "2 E I_1 - h^2)")
+    assert _flagged(HEAD + ENERGY + NORM + right, "k^2") == []
+
+
+def test_a_letter_the_text_has_not_tied_is_never_compared():
+    # no equation gives h its dimension: h − 2E I₃ may be anything the text means by h
+    assert _flagged(HEAD + ENERGY + SLIP, "\\Pi_2(t)") == []
+    # nor E, whose dimension only the energy's equation gives
+    assert _flagged(HEAD + NORM + SLIP, "\\Pi_2(t)") == []
+
+
+def test_a_letter_two_equations_give_unlike_dimensions_is_unknown():
+    twice = NORM + "$$\nh = I_1 \\Pi_1^2\n$$\n\n"
+    assert _flagged(HEAD + ENERGY + twice + SLIP, "\\Pi_2(t)") == []
+
+
+def test_a_name_set_to_a_number_is_not_compared():
+    # a worked example in scaled units: I₃ = 1 makes h − 2E I₃ a sum the text may mean
+    scaled = HEAD.replace("$I_1 > I_2 > I_3$", "$I_1 > I_2 > I_3$ and, in scaled units, $I_3 = 1$")
+    assert _flagged(scaled + ENERGY + NORM + SLIP, "\\Pi_2(t)") == []
+
+
+def test_a_display_the_reader_flags_already_is_not_flagged_twice():
+    # the energy with ω₃ unsquared: its reading finds the one edit, the sum of unlike terms adds nothing
+    text = HEAD + "$$\nT = \\frac{1}{2}\\left(I_1 \\omega_1^2 + I_2 \\omega_2^2 + I_3 \\omega_3\\right)\n$$\n"
+    claims = _claims(text, "T =")
+    assert [c.verdict for c in claims if c.verdict in ("typo", "fails")] == ["typo"]
+    assert not any(c.kind == "dimensions" for c in claims)
