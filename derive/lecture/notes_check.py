@@ -51,6 +51,7 @@ from derive.lecture import summation_index
 from derive.lecture import worked_values
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
+from derive.lecture.basis_vectors import BasisVectors
 from derive.lecture.chain_links import ChainLinks
 from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
@@ -106,7 +107,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, BasisVectors):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -176,6 +177,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
             elif item.kind == "assumption":
                 self._small_before_ll(item.latex)
                 self._frame_setting(item.latex)
+                self._basis_setting(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
@@ -294,7 +296,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
         if summed is not None:
             self._add(line, piece, "sum", "typo", summed[1], None if self.judging_only else summed[0])
             return
-        if self._algebra_first(text) and self._algebra(line, piece, text):
+        if self._basis_statement(line, piece, text) or self._algebra_first(text) and self._algebra(line, piece, text):
             return
         if self._body_axes_first(line, piece, text):
             return
