@@ -46,12 +46,12 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
-from derive.lecture import rearranged
-from derive.lecture import summation_index
+from derive.lecture import rearranged, summation_index
 from derive.lecture import worked_values
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.basis_vectors import BasisVectors
+from derive.lecture.two_cases import TwoCases
 from derive.lecture.chain_links import ChainLinks
 from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
@@ -107,7 +107,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, BasisVectors):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, BasisVectors, TwoCases):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -285,8 +285,8 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
             return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
-        if self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) or self._operator(line, piece, text) \
-                or self._coordinate(line, piece, text):
+        if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
+                or self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:
