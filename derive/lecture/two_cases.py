@@ -4,8 +4,8 @@ or $\\pi$ … gives" (or ``$\\theta = 0, \\pi$``, ``$\\theta = \\pm\\frac{\\pi}{
 energy where the Euler angles lock.
 
 The statement is read twice for each pairing of the signs with the cases: the upper signs (± → +,
-∓ → −) in the first case named and the lower in the second, then the other way round, each time
-with the case set as the text's settings are (from the context just before the statement; the
+∓ → −) in the first case named and the lower in the second, then (unless that held) the other way
+round, each time with the case set as the text's settings are (from the context just before the statement; the
 reader's own state is left as it was). It holds when both signs hold in one pairing (the prose's
 order first); it is flagged only when each pairing has a sign that is flagged (then the prose's
 order is reported); otherwise it is `unchecked`, saying so.
@@ -98,21 +98,14 @@ class TwoCases:
         if cases is None:
             return False
         symbol, values, said = cases
-        readings = []
+        readings, outcomes = [], []
         for order in (values, values[::-1]):
-            reading = []
-            for upper, value in zip((True, False), order):
-                bound = self._bound_at(line, signed(piece, upper), symbol, value)
-                if bound is not None:
-                    reading.append(bound)
-                    continue
-                saved = self._snapshot()
-                saved.subs[symbol] = value
-                saved.stated[symbol] = f"line {line}, the {'upper' if upper else 'lower'} signs"
-                claims, _ = self._sandbox(saved, line, signed(piece, upper), dup, pieces, judging_only=True)
-                reading.append(claims)
+            reading = [self._signs_in_case(line, piece, dup, pieces, symbol, upper, value)
+                       for upper, value in zip((True, False), order)]
             readings.append((order, reading))
-        outcomes = [[_outcome(c) for c in reading] for _, reading in readings]
+            outcomes.append([_outcome(c) for c in reading])
+            if outcomes[-1] == ["holds", "holds"]:
+                break                   # the prose's pairing holds: the other is not read
         name = self.tex(symbol)
         pairing = "the upper signs at {0} = {1}, the lower at {0} = {2}"
         chosen = next((k for k, o in enumerate(outcomes) if o == ["holds", "holds"]), None)
@@ -130,6 +123,16 @@ class TwoCases:
                     "; flagged in either pairing)" if outcomes[chosen] != ["holds", "holds"] else ")")
             self.claims.extend(claims)
         return True
+
+    def _signs_in_case(self, line, piece, dup, pieces, symbol, upper, value) -> list:
+        """The claims of the statement with its upper (lower) signs, the case set."""
+        bound = self._bound_at(line, signed(piece, upper), symbol, value)
+        if bound is not None:
+            return bound
+        saved = self._snapshot()
+        saved.subs[symbol] = value
+        saved.stated[symbol] = f"line {line}, the {'upper' if upper else 'lower'} signs"
+        return self._sandbox(saved, line, signed(piece, upper), dup, pieces, judging_only=True)[0]
 
     def _bound_at(self, line, piece, symbol, value):
         """``X = [a matrix]`` with X a matrix the text has bound: the claims of the written matrix
