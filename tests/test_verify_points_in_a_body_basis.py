@@ -55,3 +55,20 @@ def test_a_hatted_basis_is_left_to_the_body_axes_reader():
     text = ("# Notes\n\n$$\\boldsymbol{\\omega} = \\omega_1 \\hat{\\mathbf{e}}_1 + \\omega_3 \\hat{\\mathbf{e}}_3$$\n\n"
             "$$\\mathbf{v} = \\boldsymbol{\\omega} \\times \\hat{\\mathbf{e}}_3 = -\\omega_1 \\hat{\\mathbf{e}}_2$$\n")
     assert not any("basis" in c.why and "right-handed" in c.why for c in kept.check_text(text))
+
+
+WHEEL = ("# A wheel rolling on the floor\n\n"
+         "Its centre moves with $\\mathbf{v}_C = v \\mathbf{i}$ and the wheel turns with\n\n"
+         "$$\\boldsymbol{\\omega} = \\frac{v}{R} \\mathbf{j}$$\n\n"
+         "so for the top of the wheel, with $\\mathbf{r}_T = R \\mathbf{k}$,\n\n")
+
+
+def test_a_point_of_a_wheel_in_a_frame_s_bold_i_j_k_is_read_with_its_centre_s_velocity():
+    def verdicts(display):
+        text = WHEEL + "$$" + display + "$$\n"
+        return {c.verdict for c in kept.by_line(text).get(kept.line_of(text, "$$" + display), [])
+                if c.kind == "identity"}
+    assert verdicts("\\mathbf{v}_T = \\mathbf{v}_C + \\boldsymbol{\\omega} \\times \\mathbf{r}_T = 2 v \\mathbf{i}") \
+        == {"holds"}
+    assert verdicts("\\mathbf{v}_T = \\mathbf{v}_C + \\boldsymbol{\\omega} \\times \\mathbf{r}_T = v \\mathbf{i}") \
+        == {"fails"}

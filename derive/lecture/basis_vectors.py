@@ -1,4 +1,4 @@
-"""Vectors a text writes in a basis of its own, bold 𝐞_x, 𝐞_y, 𝐞_z (or 𝐞₁, 𝐞₂, 𝐞₃): the points of a
+"""Vectors a text writes in a basis of its own, bold 𝐞_x, 𝐞_y, 𝐞_z (𝐞₁, 𝐞₂, 𝐞₃, or 𝐢, 𝐣, 𝐤): the points of a
 body and their velocities in the body's basis, as texts on rolling bodies write them
 (𝐫_P = a 𝐞_x + R 𝐞_z, 𝐯_P = 𝛚 × 𝐫_P = …).
 
@@ -32,8 +32,11 @@ from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
 
-BASIS = re.compile(r"(?<!hat\{)\\(?:boldsymbol|mathbf|bm|pmb|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*[xyz123]\b")
-"""A bold e with an axis index, not under a hat (ê_i, the lecture's body axes, are read elsewhere)."""
+BASIS = re.compile(r"(?<!hat\{)\\(?:boldsymbol|mathbf|bm|pmb|vec)\s*(?:\{?\s*e\s*\}?\s*_\s*\{?\s*[xyz123]\b|"
+                   r"\{\s*[ijk]\s*\}(?!\s*_))")
+"""A bold e with an axis index, or a bold i, j, k, not under a hat (ê_i, the lecture's body axes, and
+î, ĵ, k̂ are read elsewhere)."""
+_IJK = {"i": 0, "j": 1, "k": 2}
 _NOT_ALGEBRA = re.compile(r"\\(?:int|sum|partial|frac\s*\{\s*(?:\\mathrm\s*\{\s*)?d)|\\mathrm\s*\{\s*d\s*\}")
 """Rates, sums and integrals: not the algebra of this reader."""
 _RELATION = re.compile(r"\s*\\?[A-Za-z]+(?:\{[^{}]*\})?\s*(?:_\s*\{?\s*\w+\s*\}?)?\s*=")
@@ -65,6 +68,8 @@ class _Model:
         bold = a.bold or a.text.startswith("\\vec")
         if bold and a.base == "e" and a.sub in vp.AXES and not a.dots and not a.sup:
             return sp.ImmutableMatrix(sp.eye(3)[:, vp.AXES[a.sub]])
+        if bold and a.base in _IJK and not (a.sub or a.sup or a.dots):
+            return sp.ImmutableMatrix(sp.eye(3)[:, _IJK[a.base]])
         if bold:
             key = name(a)
             if a.dots or a.sup:
