@@ -49,6 +49,8 @@ from derive.lecture import notes as nt
 from derive.lecture import rearranged, summation_index, worked_values
 from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_products import AxisProducts
+from derive.lecture.basis_vectors import BasisVectors
+from derive.lecture.two_cases import TwoCases
 from derive.lecture.chain_links import ChainLinks
 from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
@@ -105,7 +107,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -175,6 +177,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
             elif item.kind == "assumption":
                 self._small_before_ll(item.latex)
                 self._frame_setting(item.latex)
+                self._basis_setting(item.latex)
                 self._assume(item)
             elif item.kind == "signs":
                 self._signs(item)
@@ -261,8 +264,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
         self._unlike_flagged(item.line, [u for u in unlike if u], start)
 
     def _place_flushed(self, at):
-        """The verdicts of a group of solutions that a later statement closed, placed before that
-        statement's (they are not its claims, so its second readings leave them alone)."""
+        """A group of solutions a later statement closed, placed before it (not its claims to reread)."""
         if self.flushed:
             self.claims[at:at] = self.flushed
             self.flushed = []
@@ -284,8 +286,8 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
             return
         text = self._single_axis_turns(text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
-        if self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) or self._operator(line, piece, text) \
-                or self._coordinate(line, piece, text):
+        if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
+                or self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:
@@ -295,7 +297,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
         if summed is not None:
             self._add(line, piece, "sum", "typo", summed[1], None if self.judging_only else summed[0])
             return
-        if self._algebra_first(text) and self._algebra(line, piece, text):
+        if self._basis_statement(line, piece, text) or self._algebra_first(text) and self._algebra(line, piece, text):
             return
         if self._body_axes_first(line, piece, text):
             return
@@ -418,8 +420,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
         return self._calculus(v)
 
     def _unify(self, values: list) -> list:
-        """Mixed variables: with α̇ or γ̇ present, p_α, p_γ and ω̃ᵢ become functions of the angles;
-        PRIMED/INERTIAL frame vectors go to the body basis."""
+        """With α̇ or γ̇ present, p_α, p_γ, ω̃ᵢ become functions of the angles; frame vectors go to the body basis."""
         rot = self.d.rot
         out = []
         rates = has_rates(values, rot)
