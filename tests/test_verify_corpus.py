@@ -167,9 +167,25 @@ SHORT = {
     ("verga-polytech-rolling-cone-angular-momentum-fr", "found"):
         "0 of 3: L with R^2 for a^2, I psidot for I_z psidot, and Varignon's formula with the body's Omega for the "
         "frame's rotation sit in the displays above that are not read",
+    ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
+        "4 of 32: the moments of named shapes (a hoop, a cylinder, a ball, a shell, a rod: I = 2/5 M R^2 with the "
+        "shape in prose), definite integrals over rings written out (int_0^R 2 pi r_A dr_A), the axes theorems, "
+        "the inertia tensor's entries as integrals, and the pool ball's equations (an implication solved for b or "
+        "v_x(tau), a chain of integrals in time) are not read",
+    ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "found"):
+        "0 of 4: the cylinder's volume integral without its H, Delta vartheta/t for Delta vartheta/Delta t, a lost "
+        "minus sign restating the chain before, and v - V = (2/5) v => v = 5V/7 sit in displays the reader does "
+        "not check",
+    ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "checked"):
+        "0 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
+        "sum over p in B), the rate of the kinetic energy through the equations of motion, and the disk's rotation "
+        "matrix and Omega_i from hat(Omega) = R^T R-dot in its 3-1-2 angles are not read",
+    ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "found"):
+        "0 of 1: Omega_2 = phi-dot - theta-dot sin(alpha) (the sign of its second term) sits in the disk's body "
+        "angular velocity, which the reader does not derive from the text's R = R_3(theta) R_1(alpha) R_2(phi)",
 }
 
-FLOOR = {"checked": 618, "slips_flagged": 56, "holds_flagged": 0}
+FLOOR = {"checked": 622, "slips_flagged": 56, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
