@@ -79,12 +79,9 @@ SHORT = {
         "display in bold products that the reader does not read, and that holds when B is at rest, as the form "
         "before it does (T = 1/2 omega H_B, held if B is at rest): only the page's moving B makes it a slip",
     ("ahrs-attitude-from-angular-rate-quaternion", "checked"):
-        "a library docstring that reasons in quaternion algebra: Hamilton products of q with the pure quaternion "
-        "omega, the 4 x 4 omega operator with its own floor(x)_x, q = e^v, power series ending in \\cdots, "
-        "\\|omega\\| and \\dddot; the reader does not model quaternions",
-    ("ahrs-attitude-from-angular-rate-quaternion", "found"):
-        "its three slips (e^v for e^{v/2}, a chain's column 1/2 q omega after rows giving 1/2 omega q, 1/6 for "
-        "1/8 in the third derivative) sit in quaternion products the reader does not read",
+        "a library docstring that reasons in quaternion algebra: its chains, exponentials, series and successive "
+        "rates are read in the four components, but the 4 x 4 omega operator (in its own floor(x)_x, defined after "
+        "it), q' = 1/2 Omega(omega) q, and the updates q_{t+1} = exp(1/2 Omega dt) q_t in the operator are not",
     ("euler-angles-kinematic-equations-gimbal-lock-zh-notes-zxz", "checked"):
         "lecture notes in the z-x-z angles (read so from their written-out turns U = U_1 U_2 U_3) whose worked "
         "example is a disk rolling on a circle in body vectors: omega_1/omega_2 = a/R relates the disk's "
@@ -169,7 +166,7 @@ SHORT = {
         "frame's rotation sit in the displays above that are not read",
 }
 
-FLOOR = {"checked": 618, "slips_flagged": 56, "holds_flagged": 0}
+FLOOR = {"checked": 624, "slips_flagged": 59, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -77,6 +77,7 @@ from derive.lecture.own_rates import OwnRates
 from derive.lecture.own_sign import OwnSign
 from derive.lecture.stated_theorems import StatedTheorems
 from derive.lecture.primed_axes import PrimedAxes
+from derive.lecture.quaternions import Quaternions
 from derive.lecture.turn_rates import TurnRates
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.rereading import Rereading
@@ -106,7 +107,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, Quaternions):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -189,7 +190,8 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
                         and continues(latex, items[k + 1].latex) and not restates_side(items[k + 1].lead, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
-                self._display_probed(item, latex)
+                if not self._quaternions(item, latex):
+                    self._display_probed(item, latex)
             self._perturbation_named(item, met)
             k += 1
         self._flush()
