@@ -78,10 +78,6 @@ SHORT = {
         "its slip (v_G for the velocity of G relative to B in the kinetic energy about a moving point) sits in a "
         "display in bold products that the reader does not read, and that holds when B is at rest, as the form "
         "before it does (T = 1/2 omega H_B, held if B is at rest): only the page's moving B makes it a slip",
-    ("ahrs-attitude-from-angular-rate-quaternion", "checked"):
-        "a library docstring that reasons in quaternion algebra: its chains, exponentials, series and successive "
-        "rates are read in the four components, but the 4 x 4 omega operator (in its own floor(x)_x, defined after "
-        "it), q' = 1/2 Omega(omega) q, and the updates q_{t+1} = exp(1/2 Omega dt) q_t in the operator are not",
     ("euler-angles-kinematic-equations-gimbal-lock-zh-notes-zxz", "checked"):
         "lecture notes in the z-x-z angles (read so from their written-out turns U = U_1 U_2 U_3) whose worked "
         "example is a disk rolling on a circle in body vectors: omega_1/omega_2 = a/R relates the disk's "
@@ -166,7 +162,7 @@ SHORT = {
         "frame's rotation sit in the displays above that are not read",
 }
 
-FLOOR = {"checked": 624, "slips_flagged": 59, "holds_flagged": 0}
+FLOOR = {"checked": 630, "slips_flagged": 59, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

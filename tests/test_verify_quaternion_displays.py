@@ -4,7 +4,8 @@ successive rates. Each is judged in the four components at exact values of the t
 product of two quaternions by the rule the text names (Hamilton's or the JPL one); a slip planted
 in each is flagged, its correct form holds, and what the text leaves open stays unchecked."""
 import kept_readings as kept
-from derive.lecture.quaternion_reader import Names, Quat, hamilton, read
+from derive.lecture.quaternion_algebra import Names, Quat, hamilton
+from derive.lecture.quaternion_reader import read
 
 HEAD = "---\ntitle: Attitude quaternion\n---\n# Attitude\n\n"
 HAMILTON = ("The attitude is a unit quaternion $\\mathbf{q}$ with components $q_w, q_x, q_y, q_z$; "
@@ -92,7 +93,7 @@ def test_a_quaternions_successive_rates_are_each_the_rate_of_the_row_before():
     for third, verdict in (("8", "holds"), ("6", "fails")):
         text = HEAD + NO_RULE + "Differentiating again, with $\\ddot{\\boldsymbol\\omega}=0$:\n\n" + rows % third
         claims = kept.by_line(text)[_display(text, "\\begin{array}")]
-        assert [c.verdict for c in claims] == ["unchecked", "holds", verdict]
+        assert [c.verdict for c in claims] == ["holds", "holds", verdict]
 
 
 def test_a_third_rate_that_holds_only_with_a_rate_the_text_never_sets_to_zero_is_not_flagged():
@@ -102,7 +103,7 @@ def test_a_third_rate_that_holds_only_with_a_rate_the_text_never_sets_to_zero_is
             "\\boldsymbol\\omega + \\frac{1}{2}\\mathbf{q}\\boldsymbol\\omega\\dot{\\boldsymbol\\omega}\n\\end{array}\n$$\n")
     text = HEAD + NO_RULE + rows
     claims = kept.by_line(text)[_display(text, "\\begin{array}")]
-    assert [c.verdict for c in claims][:2] == ["unchecked", "holds"]
+    assert [c.verdict for c in claims][:2] == ["holds", "holds"]
     assert claims[2].verdict == "unchecked" and "rates of omega" in claims[2].why    # 1/2 q omega'' left out
 
 
@@ -113,4 +114,45 @@ def test_a_limit_set_under_its_operator_is_taken_in_its_variable():
     for half, verdict in (("2", "holds"), ("4", "fails")):
         text = HEAD + HAMILTON + chain % half
         claims = kept.by_line(text)[_display(text, "\\begin{array}")]
-        assert [c.verdict for c in claims] == ["unchecked", verdict]
+        assert [c.verdict for c in claims] == ["holds", verdict]
+
+
+OMEGA_OPERATOR = ("$$\n\\boldsymbol\\Omega(\\boldsymbol\\omega) = \\begin{bmatrix} 0 & -\\omega_x & -\\omega_y & -\\omega_z \\\\ "
+                  "\\omega_x & 0 & \\omega_z & -\\omega_y \\\\ \\omega_y & -\\omega_z & 0 & \\omega_x \\\\ "
+                  "\\omega_z & \\omega_y & %s & 0 \\end{bmatrix}\n$$\n\n")
+RATE = "$$\n\\dot{\\mathbf{q}} = \\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\mathbf{q}\n$$\n\n"
+
+
+def test_a_quaternions_rate_in_the_texts_omega_operator_is_one_of_the_four_forms_or_flagged():
+    for entry, verdict in (("-\\omega_x", "holds"), ("\\omega_x", "fails")):
+        text = HEAD + NO_RULE + "The omega operator:\n\n" + OMEGA_OPERATOR % entry + "so that\n\n" + RATE
+        (rate,) = _lines(text, "\\dot{\\mathbf{q}} = ")
+        assert rate == {verdict}
+
+
+def test_a_step_of_the_texts_rate_is_exact_in_closed_form_and_a_series_to_its_order():
+    steps = ("$$\n\\mathbf{q}_{t+1} = e^{\\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t}\\mathbf{q}_t\n$$\n\n"
+             "in closed form\n\n"
+             "$$\n\\mathbf{q}_{t+1} = \\Bigg[\\cos\\Big(\\frac{\\|\\boldsymbol\\omega\\|\\Delta t}{2}\\Big)\\mathbf{I}_4 + "
+             "\\frac{1}{\\|\\boldsymbol\\omega\\|}\\sin\\Big(\\frac{\\|\\boldsymbol\\omega\\|\\Delta t}{2}\\Big)"
+             "\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Bigg]\\mathbf{q}_t\n$$\n\n"
+             "to first order, the update the package keeps,\n\n"
+             "$$\n\\mathbf{q}_{t+1} = \\Bigg[\\mathbf{I}_4 + \\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t\\Bigg]\\mathbf{q}_t\n$$\n\n"
+             "and as a series\n\n"
+             "$$\n\\mathbf{q}_{t+1} = \\Bigg[\\mathbf{I}_4 + \\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t + "
+             "\\frac{1}{%s}\\Big(\\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t\\Big)^2 + \\cdots\\Bigg]\\mathbf{q}_t\n$$\n")
+    for factorial, verdict in (("2!", "holds"), ("3!", "fails")):
+        text = HEAD + NO_RULE + OMEGA_OPERATOR % "-\\omega_x" + RATE + \
+            "With the rate constant over the step, $\\dot{\\boldsymbol\\omega}=0$,\n\n" + steps % factorial
+        closed, trig, first, series = _lines(text, "e^{\\frac{1}{2}", "\\cos\\Big(", "\\Delta t\\Bigg]", "\\cdots\\Bigg]")
+        assert closed == {"holds"} and trig == {"holds"}
+        assert not first & {"holds", "typo", "fails"}         # an approximation the text chooses, never flagged
+        assert series == {verdict}
+
+
+def test_a_series_step_that_holds_only_with_omega_constant_is_not_flagged_where_the_text_lets_it_vary():
+    text = HEAD + NO_RULE + OMEGA_OPERATOR % "-\\omega_x" + RATE + (
+        "$$\n\\mathbf{q}_{t+1} = \\Bigg[\\mathbf{I}_4 + \\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t + "
+        "\\frac{1}{2!}\\Big(\\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t\\Big)^2 + \\cdots\\Bigg]\\mathbf{q}_t\n$$\n")
+    (series,) = _lines(text, "\\cdots\\Bigg]")
+    assert not series & {"typo", "fails"}

@@ -3,9 +3,11 @@
 Takes: one member of a display in a text about quaternions (``\\frac{1}{2}\\boldsymbol\\omega
 \\mathbf{q}``, ``e^{\\mathbf{u}\\theta}``, ``\\cos\\frac{\\theta}{2} + \\mathbf{u}\\sin\\frac{\\theta}{2}``,
 a column ``\\begin{bmatrix}\\cos\\frac{\\theta}{2} \\\\ \\mathbf{u}\\sin\\frac{\\theta}{2}\\end{bmatrix}``
-or its four rows, ``\\lim_{\\Delta t\\to 0} …``, a sum ending in ``\\cdots``) and
-the text's names (`Names`). Gives: `read`, the member's value: a SymPy scalar or a `Quat` (scalar
-part first), products taken by Hamilton's rule or by its reverse (the JPL product, ``jpl=True``).
+or its four rows, a 4 x 4 matrix and ``\\mathbf{I}_4``, ``\\lim_{\\Delta t\\to 0} …``, a sum ending in
+``\\cdots``, a name with its argument the text defined, ``\\boldsymbol\\Omega(\\boldsymbol\\omega)``, and its
+rate) and the text's names (`Names`). Gives: `read`, the member's value: a SymPy scalar, a `Quat`
+(scalar part first) or a matrix, products of quaternions taken by Hamilton's rule or by its
+reverse (the JPL product, ``jpl=True``); `applied_name`, the key of a name with its argument.
 Anything outside this grammar raises `Unread` naming what stopped it: the caller leaves it
 unjudged.
 
@@ -15,96 +17,18 @@ q_z or q_0 … q_3); a column of two rows is (scalar, vector), of four rows the 
 a pure quaternion. The exponential of a quaternion a + 𝐯 is e^a (cos‖𝐯‖ + 𝐯/‖𝐯‖ sin‖𝐯‖), its
 series' terms the powers of one quaternion, so the rule of the product does not change it.
 
-May import: SymPy.
+May import: :mod:`derive.lecture.quaternion_algebra`, SymPy.
 """
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 
 import sympy as sp
 
-QUATERNION_LETTERS = ("q", "p")
-
-
-class Unread(Exception):
-    """The member is outside the grammar: ``why`` says what stopped it."""
-
-    def __init__(self, why: str):
-        super().__init__(why)
-        self.why = why
-
-
-@dataclass(frozen=True)
-class Quat:
-    """A quaternion by its components, scalar first."""
-
-    c: tuple
-
-    def __add__(self, o):
-        o = as_quat(o)
-        return Quat(tuple(a + b for a, b in zip(self.c, o.c)))
-
-    __radd__ = __add__
-
-    def __neg__(self):
-        return Quat(tuple(-a for a in self.c))
-
-    def scaled(self, k):
-        return Quat(tuple(k * a for a in self.c))
-
-
-def as_quat(x) -> Quat:
-    """A scalar as the quaternion (x, 0, 0, 0); a quaternion unchanged."""
-    return x if isinstance(x, Quat) else Quat((x, 0, 0, 0))
-
-
-def hamilton(a: Quat, b: Quat) -> Quat:
-    """Hamilton's product a b (i j = k)."""
-    a0, a1, a2, a3 = a.c
-    b0, b1, b2, b3 = b.c
-    return Quat((a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3,
-                 a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2,
-                 a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1,
-                 a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0))
-
-
-def norm(x):
-    """‖x‖ of a scalar or a quaternion."""
-    if isinstance(x, Quat):
-        return sp.sqrt(sum(a ** 2 for a in x.c))
-    return sp.Abs(x)
-
-
-def exponential(x):
-    """e^x of a scalar or a quaternion a + 𝐯: e^a (cos n + 𝐯 sin n / n), n = ‖𝐯‖ (1 + 𝐯 at n = 0)."""
-    if not isinstance(x, Quat):
-        return sp.exp(x)
-    a, v = x.c[0], x.c[1:]
-    n2 = sum(b ** 2 for b in v)
-    if n2 == 0:
-        return Quat((sp.exp(a), 0, 0, 0))
-    n = sp.sqrt(n2)
-    s = sp.sin(n) / n
-    return Quat((sp.exp(a) * sp.cos(n), *(sp.exp(a) * s * b for b in v)))
-
-
-@dataclass
-class Names:
-    """What the text's names stand for, while a display is read.
-
-    ``style``: the subscripts of a quaternion's components, scalar first ("wxyz", "0123"; empty when
-    the text's do not say which is the scalar); ``defined``: a name (``theta``, ``bold u``) → the
-    LaTeX the text set it to (read in its place); ``rates``: (a name, the order of its rate) → its
-    components (zero where the text assumes so); ``jpl``: the product's rule."""
-
-    defined: dict = field(default_factory=dict)
-    rates: dict = field(default_factory=dict)
-    style: str = "wxyz"
-    jpl: bool = False
-    series_var: sp.Symbol | None = None
-    truncated: list = field(default_factory=list)     # the last terms before each \cdots met
-
+from derive.lecture.quaternion_algebra import (
+    QUATERNION_LETTERS, Names, Quat, Unread, applied_key, components, exponential, hamilton, norm, plus, symbol, times,
+    time_rate,
+)
 
 _BOLD = r"\\(?:mathbf|boldsymbol|bm|vec|pmb)\s*"
 _GREEK = {"alpha", "beta", "gamma", "delta", "theta", "vartheta", "phi", "varphi", "psi", "omega", "Omega",
@@ -181,7 +105,7 @@ class _Reader:
                 self.names.truncated.append(last)
             else:
                 last = self.term()
-                total = total + _times(sign, last)
+                total = plus(total, times(sign, last))
             if self.peek() == ("op", "+"):
                 self.next()
                 sign = 1
@@ -209,7 +133,17 @@ class _Reader:
     def product(self, a, b):
         if isinstance(a, Quat) and isinstance(b, Quat):
             return hamilton(b, a) if self.names.jpl else hamilton(a, b)
-        return _times(a, b)
+        if isinstance(a, sp.MatrixBase) and isinstance(b, Quat):
+            if a.shape != (4, 4):
+                raise Unread("a matrix not 4 x 4 on a quaternion")
+            return Quat(tuple(a * sp.Matrix(b.c)))
+        if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase):
+            if a.shape[1] != b.shape[0]:
+                raise Unread("a product of matrices of shapes that do not fit")
+            return sp.ImmutableMatrix(a * b)
+        if isinstance(a, Quat) and isinstance(b, sp.MatrixBase):
+            raise Unread("a quaternion times a matrix")
+        return times(a, b)
 
     def factor(self):
         base = self.primary()
@@ -227,6 +161,10 @@ class _Reader:
                 return base
 
     def power(self, base, exp):
+        if isinstance(base, sp.MatrixBase):
+            if not (isinstance(exp, sp.Integer) and exp >= 0):
+                raise Unread("a matrix to a power that is not a whole number")
+            return sp.ImmutableMatrix(base ** int(exp))
         if isinstance(base, Quat):
             if not (isinstance(exp, sp.Integer) and exp >= 0):
                 raise Unread("a quaternion to a power that is not a whole number")
@@ -290,7 +228,7 @@ class _Reader:
             num, den = self.group_value(), self.group_value()
             if isinstance(den, Quat):
                 raise Unread("a quaternion in a denominator")
-            return _times(num, 1 / den)
+            return times(num, 1 / den)
         if name in ("sin", "cos", "tan", "exp", "sqrt"):
             power = 1
             if name != "sqrt" and self.peek() == ("op", "^"):
@@ -379,9 +317,14 @@ class _Reader:
         if self.peek() == ("open", "(") and self.peek(1) == ("letter", "t") and self.peek(2) == ("close", ")"):
             self.k += 3           # q(t): the name at the current time
         elif self.peek() == ("open", "("):
-            raise Unread(f"{name} of an argument (a function of the text's, or its value at another time)")
+            key = self.applied(name, bold)
+            if key not in self.names.defined:
+                raise Unread(f"{name} of an argument (a function of the text's, or its value at another time)")
+            return self.read_defined(key, self.names.defined[key])
         if bold:
-            if sub is not None:
+            if bold and name == "I" and sub in ("4", "4\\times4", "4\\times 4"):
+                return sp.ImmutableMatrix(sp.eye(4))
+            if sub is not None and not (sub == self.names.step and name in QUATERNION_LETTERS):
                 raise Unread(f"the bold {name} with a subscript {sub}")
             return self.bold(name)
         key = name if sub is None else f"{name}_{sub}"
@@ -409,8 +352,42 @@ class _Reader:
         finally:
             self.reading.discard(key)
 
+    def applied(self, name, bold) -> str:
+        """The key of a name written with its argument, ``\\boldsymbol\\Omega(\\boldsymbol\\omega)``."""
+        depth, parts = 0, []
+        while True:
+            kind, text = self.next()
+            if kind is None:
+                raise Unread("an argument left open")
+            depth += kind == "open"
+            depth -= kind == "close"
+            parts.append(text)
+            if depth == 0:
+                return applied_key(name, bold, "".join(parts))
+
+    def at_point(self, value):
+        """A value in symbols with the point put in."""
+        if isinstance(value, Quat):
+            return Quat(tuple(self.at_point(c) for c in value.c))
+        if isinstance(value, sp.MatrixBase):
+            return sp.ImmutableMatrix(value.applyfunc(self.at_point))
+        value = sp.sympify(value)
+        return value.xreplace({s: self.point.get(s, s) for s in value.free_symbols})
+
     def rate(self, inner, order):
         name, bold = inner
+        if self.peek() == ("open", "("):
+            key = self.applied(name, bold)
+            if key not in self.names.defined:
+                raise Unread(f"the rate of {name}, a function the text has not set")
+            value = _Reader(tokens(self.names.defined[key]), self.names, {}, self.reading).whole()
+            for _ in range(order):
+                value = time_rate(value, self.names)
+            return self.at_point(value)
+        if bold and name in QUATERNION_LETTERS and (name, order) in self.names.values:
+            if self.subscript() not in (None, self.names.step):
+                raise Unread(f"the rate of {name} at another step")
+            return self.at_point(self.names.values[(name, order)])
         key = (name, order)
         if key in self.names.rates:
             comps = self.names.rates[key]
@@ -484,6 +461,8 @@ class _Reader:
                 self.next()
                 self.group_value_transpose()
             return Quat(tuple(entries))
+        if len(rows) == 4 and all(len(r) == 4 for r in rows) and not any(isinstance(e, (Quat, sp.MatrixBase)) for e in entries):
+            return sp.ImmutableMatrix(rows)
         if len(entries) == 3 and not any(isinstance(e, Quat) for e in entries):
             if self.peek() == ("op", "^"):
                 self.next()
@@ -511,29 +490,30 @@ class _Reader:
         raise Unread("a power of a column")
 
 
-def symbol(key: str) -> sp.Symbol:
-    """The text's scalar ``key``: a component (a subscript x, y, z, w or 0 to 3) is any real
-    number, any other scalar (an angle, a step) a positive one."""
-    return sp.Symbol(key, real=True) if re.search(r"_[xyzw0-3]$", key) else sp.Symbol(key, positive=True)
-
-
-def components(name: str, style) -> tuple:
-    """The components' symbols of the vector or quaternion ``name``, by the text's subscripts."""
-    return tuple(symbol(f"{name}_{a}") for a in style)
-
-
 def _is_dot_product(value) -> bool:
     return False
 
 
-def _times(a, b):
-    if isinstance(a, Quat) and isinstance(b, Quat):
-        raise Unread("a product of two quaternions whose rule is not set")
-    if isinstance(a, Quat):
-        return a.scaled(b)
-    if isinstance(b, Quat):
-        return b.scaled(a)
-    return a * b
+def applied_name(tex: str) -> str | None:
+    """The key of a member that is only a name written with its argument (``\\boldsymbol\\Omega(
+    \\boldsymbol\\omega)``), as `read` looks it up; None for any other member."""
+    try:
+        r = _Reader(tokens(tex), Names(), {})
+        kind, text = r.peek()
+        if kind == "cmd" and text[1:] in ("mathbf", "boldsymbol", "bm", "vec", "pmb"):
+            r.next()
+            name, bold = r.bold_inner(), True
+        elif kind == "letter" or kind == "cmd" and text[1:] in _GREEK:
+            r.next()
+            name, bold = text.lstrip("\\"), False
+        else:
+            return None
+        if r.peek() != ("open", "("):
+            return None
+        key = r.applied(name, bold)
+        return key if r.k == len(r.t) else None
+    except Unread:
+        return None
 
 
 def read(tex: str, names: Names, point: dict | None = None):

@@ -14,15 +14,20 @@ judges such a display when it can read a link of it, by `derive.lecture.quaterni
 * rows that give a quaternion's successive rates (``\\dot{\\mathbf{q}} = …``, ``\\ddot{\\mathbf{q}} =
   …``, ``\\dddot{\\mathbf{q}} = …``): each row after the first against the rate of the row before,
   the quaternion's rate the first row's, the other names' rates their own (zero where the text
-  assumes so).
+  assumes so);
+* a chain headed by q's rate or by a step of q (``\\mathbf{q}_{t+1}``): its first member read
+  judged by `derive.lecture.quaternion_kinematics` (one of the four forms of a unit quaternion's
+  rate; the Taylor series or the exact step of the text's rate);
+* a name written with its argument set equal to a matrix (``\\boldsymbol\\Omega(\\boldsymbol\\omega) =
+  \\begin{bmatrix} … \\end{bmatrix}``): the text's definition, read in its place from then on.
 
 A product of two quaternions is Hamilton's (i j = k) where the text names Hamilton's product, the
 JPL one (its reverse) where it names that, and otherwise both: a link is judged only when both
 rules give one verdict. A link that fails with a bold vector the text has not called a unit vector
-is held to fail only if it fails with that vector a unit one too. Nothing here is tied to the
-model's rotation: what is judged is the algebra the text writes in its own names.
+is held to fail only if it fails with that vector a unit one too.
 
-May import: :mod:`derive.lecture.quaternion_reader`, SymPy.
+May import: :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_kinematics`,
+:mod:`derive.lecture.quaternion_reader`, SymPy.
 """
 from __future__ import annotations
 
@@ -30,7 +35,9 @@ import re
 
 import sympy as sp
 
-from derive.lecture.quaternion_reader import Names, Quat, Unread, components, read, symbol
+from derive.lecture.quaternion_algebra import Names, Quat, Unread, components
+from derive.lecture.quaternion_kinematics import Point, QuaternionSteps, difference, flat, step_of
+from derive.lecture.quaternion_reader import applied_name, read
 
 _MARK = re.compile(r"\\otimes|\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\b|e\^\{?\s*\\(?:mathbf|boldsymbol|bm)")
 _BOLD_NAME = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
@@ -40,19 +47,12 @@ _UNIT = re.compile(r"\bunit\s+(?:\w+\s+){0,2}\$\s*" + _BOLD_NAME)
 _ZERO_RATE = re.compile(r"^\s*\\(dot|ddot)\s*\{?\s*" + _BOLD_NAME + r"\s*\}?\s*=\s*0\s*$")
 _SET = re.compile(r"^\s*(" + _BOLD_NAME + r"|\\[A-Za-z]+)\s*=\s*(?!.*=)(.+)$", re.S)
 _ORDER = {"dot": 1, "ddot": 2, "dddot": 3}
+_Q_RATE = re.compile(r"^\s*(?:\\dot\s*\{\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\s*\}?\s*\}|\\dot\s*\\(?:mathbf|boldsymbol|bm)"
+                     r"\s*\{\s*q\s*\}|\\frac\s*\{\s*d\s*\\(?:mathbf|boldsymbol|bm)\s*\{\s*q\s*\}\s*\}\s*\{\s*dt\s*\})\s*$")
 _RATE_WRITTEN = {n: re.compile(r"\\" + acc + r"\s*\{?\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*\\omega")
                  for acc, n in _ORDER.items()}
 
-# three exact points: rational components, a rational point of the unit sphere for a unit vector
-_VALUES = ((sp.Rational(3, 7), sp.Rational(-5, 11), sp.Rational(2, 13), sp.Rational(7, 5), sp.Rational(-4, 9)),
-           (sp.Rational(-2, 3), sp.Rational(5, 7), sp.Rational(11, 13), sp.Rational(1, 4), sp.Rational(6, 5)),
-           (sp.Rational(9, 8), sp.Rational(1, 6), sp.Rational(-7, 10), sp.Rational(3, 11), sp.Rational(-5, 3)))
-_SPHERE = ((sp.Rational(2, 7), sp.Rational(3, 7), sp.Rational(6, 7)),
-           (sp.Rational(-1, 3), sp.Rational(2, 3), sp.Rational(2, 3)),
-           (sp.Rational(6, 11), sp.Rational(-2, 11), sp.Rational(9, 11)))
-
-
-class Quaternions:
+class Quaternions(QuaternionSteps):
     """Mixin of the checker. Uses ``self.notes`` and ``self._add``."""
 
     @property
@@ -100,7 +100,8 @@ class Quaternions:
             for order in (1, 2, 3):
                 rates[(name, order)] = (0, 0, 0) if any(zero.get((name, k)) for k in range(1, order + 1)) else \
                     components(name + "d" * order, "xyz")
-        return Names(defined=defined, rates=rates, style=self._q_style, jpl=jpl)
+        return self._q_with_rates(Names(defined=defined, rates=rates, style=self._q_style, jpl=jpl,
+                                        step=getattr(self, "_q_step_now", None)))
 
     def _q_units(self) -> set:
         return self._q_unit_names.union(*(u for _, _, u, _ in self._q_scopes))
@@ -113,16 +114,35 @@ class Quaternions:
         while self._q_next < len(self.notes.items) and self.notes.items[self._q_next] is not item:
             self._quaternion_item(self.notes.items[self._q_next])     # what the text set before the display
             self._q_next += 1
+        rows = _rows(latex)
+        self._q_applied(rows)
         if not _MARK.search(latex):
             return False
-        rows = _rows(latex)
         rated = _rate_rows(rows)
         verdicts = self._q_rates(rows) if rated else self._q_chains(rows)
+        self._q_step_now = None
         if not any(v[0] in ("holds", "fails") for v in verdicts):
             return False
         for row, (verdict, why) in zip(rows, verdicts):
             self._add(item.line, row, "quaternion", verdict, why)
         return True
+
+    def _q_applied(self, rows):
+        """A name written with its argument set equal to a matrix or a quaternion the reader reads
+        (``\\boldsymbol\\Omega(\\boldsymbol\\omega) = … = \\begin{bmatrix} … \\end{bmatrix}``): the text's
+        definition of it, its last member read, from here on."""
+        members = _members(rows[0]) if len(rows) == 1 else None
+        key = applied_name(members[0]) if members and len(members) > 1 else None
+        if key is None:
+            return
+        for tex in reversed(members[1:]):
+            try:
+                value = read(tex, self._q_names(False))
+            except (Unread, ArithmeticError, TypeError, ValueError, NotImplementedError, sp.PolynomialError):
+                continue
+            if isinstance(value, (Quat, sp.MatrixBase)):
+                self._q_scopes[0][1][key] = tex      # an operator the text defines holds in all it goes on to
+                return
 
     def _q_chains(self, rows) -> list:
         """A verdict for each row: the link that ends at the row's last member."""
@@ -134,9 +154,12 @@ class Quaternions:
                 before = None
                 continue
             if not row.lstrip().startswith("="):
-                before = None
-                if _NAME_ONLY.match(members[0]) or re.match(r"\s*\\frac\s*\{\s*d", members[0]):
+                before, head = None, members[0]
+                if _NAME_ONLY.match(members[0]) or re.match(r"\s*\\frac\s*\{\s*d", members[0]) or step_of(members[0]):
                     members = members[1:]     # the name the chain sets or goes on to
+                else:
+                    head = None
+                self._q_step_now = step_of(head) if head else None
             verdict = ("unchecked", "names the quantity the chain goes on to")
             for tex in members:
                 if not tex.strip():
@@ -145,7 +168,7 @@ class Quaternions:
                     try:
                         self._q_values(tex)
                         before = tex
-                        verdict = ("unchecked", "the first member read: the links after it are checked against it")
+                        verdict = self._q_headed(head, tex)
                     except Unread as err:
                         verdict = ("unchecked", f"cannot read it in quaternions: {err.why}")
                     except (ArithmeticError, TypeError, ValueError, NotImplementedError, sp.PolynomialError):
@@ -159,6 +182,20 @@ class Quaternions:
                 before = tex
             out.append(verdict)
         return out
+
+    def _q_headed(self, head, tex):
+        """The verdict of a chain's first member read, against its head when the head is q's rate or
+        a step of q."""
+        try:
+            if head is not None and _Q_RATE.match(head):
+                return self._q_rate_claim(tex)
+            if head is not None and step_of(head):
+                return self._q_step_claim(tex, step_of(head))
+        except Unread as err:
+            return "unchecked", f"cannot judge it in quaternions: {err.why}"
+        except (ArithmeticError, TypeError, ValueError, NotImplementedError, sp.PolynomialError):
+            return "unchecked", "a step of the quaternion reader failed on it"
+        return "unchecked", "the first member read: the links after it are checked against it"
 
     def _q_values(self, tex, jpl=False, point=None):
         return read(tex, self._q_names(jpl), point)
@@ -210,13 +247,13 @@ class Quaternions:
 
     def _q_point(self, k, units, keep=()):
         """The k-th exact point: every symbol the reader makes, by its name."""
-        return _Point(k, units, keep)
+        return Point(k, units, keep)
 
     def _q_at_points(self, a, b, jpl, units):
         names = self._q_names(jpl)
         for k in range(3):
             point = self._q_point(k, units)
-            d = _difference(read(a, names, point), read(b, names, point))
+            d = difference(read(a, names, point), read(b, names, point))
             if d is None:
                 return None
             if any(abs(sp.N(c, 30)) > sp.Float("1e-20") for c in d):
@@ -229,16 +266,16 @@ class Quaternions:
         free_scalars = {s for c in cut for s in _atoms(c) if not re.search(r"_[xyzw0-3]$", s.name)}
         var = None
         for s in free_scalars:
-            if all(sp.Poly(sp.expand(x), s).degree() >= 1 for x in (c for c in _flat(cut)) if x != 0 and x.has(s)):
+            if all(sp.Poly(sp.expand(x), s).degree() >= 1 for x in (c for c in flat(cut)) if x != 0 and x.has(s)):
                 var = s if var is None else False
         if not var:
             raise Unread("a series in no single variable")
-        order = min(sp.Poly(sp.expand(x), var).degree() for x in _flat(cut) if x != 0 and x.has(var))
+        order = min(sp.Poly(sp.expand(x), var).degree() for x in flat(cut) if x != 0 and x.has(var))
         units = self._q_units()
         for k in range(3):
             point = self._q_point(k, units, keep=(var,))
             pa, pb = read(a, names, point), read(b, names, point)
-            d = _difference(pa, pb)
+            d = difference(pa, pb)
             if d is None:
                 return None
             for c in d:
@@ -250,7 +287,7 @@ class Quaternions:
     # -- rows of successive rates
     def _q_rates(self, rows) -> list:
         rated = _rate_rows(rows)
-        out = [("unchecked", "the quaternion's rate, which the rows after it differentiate")]
+        out = [self._q_headed(rows[0].split("=")[0] if rated[0][2] == "q" else None, rated[0][1])]
         for k in range(1, len(rows)):
             prev, cur = rated[k - 1], rated[k]
             if cur is None or prev is None or cur[0] != prev[0] + 1 or cur[2] != prev[2]:
@@ -300,7 +337,7 @@ class Quaternions:
         units = self._q_units()
         for k in range(3):
             point = self._q_point(k, units)
-            d = _difference(Quat(tuple(sp.sympify(c).xreplace(point.table(c)) for c in derived)), read(row, names, point))
+            d = difference(point.put(Quat(tuple(derived))), read(row, names, point))
             if d is None:
                 raise Unread("a row that is not a quaternion")
             if any(abs(sp.N(c, 30)) > sp.Float("1e-20") for c in d):
@@ -308,57 +345,8 @@ class Quaternions:
         return "holds"
 
 
-class _Point(dict):
-    """An exact point: a value for any symbol the reader makes, chosen by the symbol's name (a unit
-    vector's three components a rational point of the unit sphere), kept fixed across members."""
-
-    def __init__(self, k, units, keep=()):
-        super().__init__()
-        self.k, self.units, self.keep = k, units, set(keep)
-
-    def get(self, s, default=None):
-        if s in self.keep or not isinstance(s, sp.Symbol):
-            return default
-        if s not in self:
-            self[s] = self._value(s)
-        return self[s]
-
-    def _value(self, s):
-        base, _, axis = s.name.rpartition("_")
-        if base in self.units and axis in "xyz" and axis:
-            return _SPHERE[self.k]["xyz".index(axis)]
-        h = sum(ord(ch) * (j + 1) for j, ch in enumerate(s.name))
-        v = _VALUES[self.k][h % 5] + sp.Rational(h % 17, 19)
-        return abs(v) + sp.Rational(1, 3) if s.is_positive else v
-
-    def without(self, var):
-        """The same point with ``var`` left free (a limit's variable)."""
-        return _Point(self.k, self.units, self.keep | {var})
-
-    def table(self, expr):
-        return {s: self.get(s, s) for s in expr.free_symbols} if isinstance(expr, sp.Basic) else {}
-
-
-def _difference(a, b):
-    if isinstance(a, Quat) != isinstance(b, Quat):
-        if isinstance(a, Quat) and all(c == 0 for c in a.c[1:]):
-            a = a.c[0]
-        elif isinstance(b, Quat) and all(c == 0 for c in b.c[1:]):
-            b = b.c[0]
-        else:
-            return None
-    if isinstance(a, Quat):
-        return [sp.sympify(x - y) for x, y in zip(a.c, b.c)]
-    return [sp.sympify(a - b)]
-
-
-def _flat(values):
-    for v in values:
-        yield from (v.c if isinstance(v, Quat) else (v,))
-
-
 def _atoms(value):
-    return set().union(*(sp.sympify(c).free_symbols for c in _flat([value])))
+    return set().union(*(sp.sympify(c).free_symbols for c in flat([value])))
 
 
 def _rows(latex: str) -> list[str]:
@@ -391,7 +379,10 @@ def _rows(latex: str) -> list[str]:
                 piece = piece.replace("&", " ")
             out.append(piece)
         row = " ".join("".join(out).split())
-        if row:
+        row = re.sub(r"^(?:\\q?quad\s*|\{\}\s*)+", "", row)
+        if cleaned and re.match(r"[+-]", row):
+            cleaned[-1] += " " + row          # a long right side carried over to the next row
+        elif row:
             cleaned.append(row)
     return cleaned
 
@@ -426,4 +417,4 @@ def _rate_rows(rows):
     return out
 
 
-__all__ = ["Quaternions", "symbol"]
+__all__ = ["Quaternions"]
