@@ -156,3 +156,20 @@ def test_a_series_step_that_holds_only_with_omega_constant_is_not_flagged_where_
         "\\frac{1}{2!}\\Big(\\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t\\Big)^2 + \\cdots\\Bigg]\\mathbf{q}_t\n$$\n")
     (series,) = _lines(text, "\\cdots\\Bigg]")
     assert not series & {"typo", "fails"}
+
+
+def test_a_plain_q_with_named_components_and_a_labelled_body_rate_is_the_attitude_quaternion():
+    lead = ("The unit quaternion $q(t) = [q_w, q_x, q_y, q_z]^T$ moves with the body's angular velocity "
+            "$\\vec{\\omega}_b$:\n\n")
+    for half, verdict in (("2", "holds"), ("4", "fails")):
+        text = HEAD + lead + ("$$\\frac{dq}{dt} = \\frac{1}{%s} q \\otimes \\begin{pmatrix} 0 \\\\ \\vec{\\omega}_b "
+                              "\\end{pmatrix}$$\n" % half)
+        (rate,) = _lines(text, "\\frac{dq}{dt}")
+        assert rate == {verdict}
+
+
+def test_a_rate_in_an_operator_is_not_judged_where_the_text_never_names_which_component_is_the_scalar():
+    text = ("---\ntitle: Attitude quaternion\n---\n# Attitude\n\nThe attitude is a unit quaternion "
+            "$\\mathbf{q}$.\n\n" + OMEGA_OPERATOR % "\\omega_x" + RATE)
+    (rate,) = _lines(text, "\\dot{\\mathbf{q}} = ")
+    assert not rate & {"holds", "typo", "fails"}

@@ -105,6 +105,7 @@ class Names:
     jpl: bool = False
     values: dict = field(default_factory=dict)        # a name → its value, in symbols (a quaternion's rates)
     step: str | None = None                           # the subscript of the current step (q_t)
+    plain_q: bool = False                             # the text's quaternion is the plain letter q
     truncated: list = field(default_factory=list)     # the last terms before each \cdots met
 
 

@@ -142,18 +142,24 @@ class QuaternionSteps:
         if not self._q_style:
             raise Unread("the quaternion's components, which the text does not name")
         q = Quat(components("q", self._q_style))
-        w = Quat((0, *components("omega", "xyz")))
-        forms = [hamilton(q, w).scaled(sp.Rational(1, 2)), hamilton(w, q).scaled(sp.Rational(1, 2))]
-        forms += [f.scaled(-1) for f in forms]
         values, verdicts = {}, []
         for jpl in self._q_rules:
             value = read(tex, self._q_names(jpl))
             if not isinstance(value, Quat):
                 raise Unread("a rate that is not a quaternion")
+            # the one angular velocity the rate is written in (𝛚, or 𝛚_b labelled)
+            bases = {s.name[:-2] for c in value.c for s in sp.sympify(c).free_symbols
+                     if s not in q.c and s.name[-2:] in ("_x", "_y", "_z")}
+            if len(bases) != 1 or not next(iter(bases)).startswith("omega"):
+                raise Unread("a rate not in one angular velocity omega")
+            base = bases.pop()
+            w = Quat((0, *components(base, "xyz")))
+            forms = [hamilton(q, w).scaled(sp.Rational(1, 2)), hamilton(w, q).scaled(sp.Rational(1, 2))]
+            forms += [f.scaled(-1) for f in forms]
             values[jpl] = value
             if any(not nonzero_at_points(value, f, self._q_units()) for f in forms):
                 verdicts.append("holds")
-            elif _bilinear(value, q.c, components("omega", "xyz")):
+            elif _bilinear(value, q.c, w.c[1:]):
                 verdicts.append("fails")
             else:
                 raise Unread("a rate in other terms than q and omega")
@@ -178,6 +184,8 @@ class QuaternionSteps:
             value = read(tex, names)
             if not isinstance(value, Quat):
                 raise Unread("a step that is not a quaternion")
+            if not only_omega(value, self._q_style):
+                raise Unread("a step in vectors whose rates the text does not give")
             scalars = {s for s in flat([value]) for s in sp.sympify(s).free_symbols
                        if not re.search(r"_[xyzw0-3]$", s.name) and not re.search(r"_[xyz]$", s.name)}
             if len(scalars) != 1:
@@ -251,3 +259,11 @@ def _bilinear(value: Quat, q, w) -> bool:
             if sum(degrees[:len(q)]) != 1 or sum(degrees[len(q):]) != 1:
                 return False
     return True
+
+
+def only_omega(value, style) -> bool:
+    """Whether the only vectors in ``value`` (a quaternion in symbols) are q, 𝛚 and 𝛚's rates, the
+    ones whose rates the chain rule knows."""
+    q = set(components("q", style)) if style else set()
+    return all(s in q or not re.search(r"_[xyz]$", s.name) or re.fullmatch(r"omegad*_[xyz]", s.name)
+               for c in flat([value]) for s in sp.sympify(c).free_symbols)

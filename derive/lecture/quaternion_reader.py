@@ -325,7 +325,11 @@ class _Reader:
             if bold and name == "I" and sub in ("4", "4\\times4", "4\\times 4"):
                 return sp.ImmutableMatrix(sp.eye(4))
             if sub is not None and not (sub == self.names.step and name in QUATERNION_LETTERS):
-                raise Unread(f"the bold {name} with a subscript {sub}")
+                if name in QUATERNION_LETTERS or not re.fullmatch(r"[a-vA-Z]|body|space", sub) or sub in "xyzw":
+                    raise Unread(f"the bold {name} with a subscript {sub}")
+                return self.bold(name + sub)      # 𝛚_b: a vector of its own, labelled (never a component)
+            return self.bold(name)
+        if name == "q" and sub is None and self.names.plain_q:
             return self.bold(name)
         key = name if sub is None else f"{name}_{sub}"
         if isinstance(self.names.defined.get(key), str):

@@ -36,10 +36,10 @@ import re
 import sympy as sp
 
 from derive.lecture.quaternion_algebra import Names, Quat, Unread, components
-from derive.lecture.quaternion_kinematics import Point, QuaternionSteps, difference, flat, step_of
+from derive.lecture.quaternion_kinematics import Point, QuaternionSteps, difference, flat, only_omega, step_of
 from derive.lecture.quaternion_reader import applied_name, read
 
-_MARK = re.compile(r"\\otimes|\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\b|e\^\{?\s*\\(?:mathbf|boldsymbol|bm)")
+_MARK = re.compile(r"\\otimes|\\frac\s*\{\s*d\s*q\s*\}|\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\b|e\^\{?\s*\\(?:mathbf|boldsymbol|bm)")
 _BOLD_NAME = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
 _NAME_ONLY = re.compile(r"\s*(?:\\Delta\s*)?(?:\\(?:dot|ddot|dddot)\s*\{?\s*)?" + _BOLD_NAME + r"\s*\}?\s*(?:\(t\))?\s*$")
 _RATE_ROW = re.compile(r"\s*\\(dot|ddot|dddot)\s*\{\s*" + _BOLD_NAME + r"\s*\}\s*$")
@@ -47,6 +47,7 @@ _UNIT = re.compile(r"\bunit\s+(?:\w+\s+){0,2}\$\s*" + _BOLD_NAME)
 _ZERO_RATE = re.compile(r"^\s*\\(dot|ddot)\s*\{?\s*" + _BOLD_NAME + r"\s*\}?\s*=\s*0\s*$")
 _SET = re.compile(r"^\s*(" + _BOLD_NAME + r"|\\[A-Za-z]+)\s*=\s*(?!.*=)(.+)$", re.S)
 _ORDER = {"dot": 1, "ddot": 2, "dddot": 3}
+_PLAIN_RATE = re.compile(r"^\s*(?:\\dot\s*\{?\s*q\s*\}?|\\frac\s*\{\s*d\s*q\s*\}\s*\{\s*d\s*t\s*\})\s*$")
 _Q_RATE = re.compile(r"^\s*(?:\\dot\s*\{\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\s*\}?\s*\}|\\dot\s*\\(?:mathbf|boldsymbol|bm)"
                      r"\s*\{\s*q\s*\}|\\frac\s*\{\s*d\s*\\(?:mathbf|boldsymbol|bm)\s*\{\s*q\s*\}\s*\}\s*\{\s*dt\s*\})\s*$")
 _RATE_WRITTEN = {n: re.compile(r"\\" + acc + r"\s*\{?\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*\\omega")
@@ -67,7 +68,11 @@ class Quaternions(QuaternionSteps):
             hamilton, jpl = "hamilton" in low, re.search(r"\bjpl\b", low) is not None
             self._q_rules = (False,) if hamilton and not jpl else (True,) if jpl and not hamilton else (False, True)
             self._q_unit_names = {m.group(1) for m in _UNIT.finditer(body)}
-            self._q_style = "" if re.search(r"\bq_\{?4\b", body) else "0123" if re.search(r"\bq_\{?0\b", body) else "wxyz"
+            # the components' order only where the text names them: q_w is the scalar, or q_0 is; not with a q_4
+            self._q_style = "" if re.search(r"\bq_\{?4\b", body) else "0123" if re.search(r"\bq_\{?0\b", body) \
+                else "wxyz" if re.search(r"\bq_\{?w\b", body) else ""
+            # a text that names the components and never writes q bold calls the quaternion plain q
+            self._q_plain = bool(self._q_style) and not re.search(r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*q\b", body)
         return self._q_on
 
     def _quaternion_item(self, item) -> None:
@@ -101,7 +106,7 @@ class Quaternions(QuaternionSteps):
                 rates[(name, order)] = (0, 0, 0) if any(zero.get((name, k)) for k in range(1, order + 1)) else \
                     components(name + "d" * order, "xyz")
         return self._q_with_rates(Names(defined=defined, rates=rates, style=self._q_style, jpl=jpl,
-                                        step=getattr(self, "_q_step_now", None)))
+                                        step=getattr(self, "_q_step_now", None), plain_q=self._q_plain))
 
     def _q_units(self) -> set:
         return self._q_unit_names.union(*(u for _, _, u, _ in self._q_scopes))
@@ -187,7 +192,7 @@ class Quaternions(QuaternionSteps):
         """The verdict of a chain's first member read, against its head when the head is q's rate or
         a step of q."""
         try:
-            if head is not None and _Q_RATE.match(head):
+            if head is not None and (_Q_RATE.match(head) or self._q_plain and _PLAIN_RATE.match(head)):
                 return self._q_rate_claim(tex)
             if head is not None and step_of(head):
                 return self._q_step_claim(tex, step_of(head))
@@ -332,6 +337,8 @@ class Quaternions(QuaternionSteps):
         dq, value = read(rate, names), read(before, names)
         if not isinstance(value, Quat) or not isinstance(dq, Quat):
             raise Unread("a rate that is not a quaternion")
+        if not (only_omega(value, self._q_style) and only_omega(dq, self._q_style)):
+            raise Unread("rows in vectors whose rates the text does not give")
         rates.update(zip(comps, dq.c))
         derived = [sum(sp.diff(c, s) * r for s, r in rates.items()) for c in value.c]
         units = self._q_units()
