@@ -173,3 +173,13 @@ def test_a_rate_in_an_operator_is_not_judged_where_the_text_never_names_which_co
             "$\\mathbf{q}$.\n\n" + OMEGA_OPERATOR % "\\omega_x" + RATE)
     (rate,) = _lines(text, "\\dot{\\mathbf{q}} = ")
     assert not rate & {"holds", "typo", "fails"}
+
+
+def test_a_norm_of_one_holds_for_a_unit_quaternion_and_is_not_flagged_where_the_text_never_says_unit():
+    chain = ("$$\n\\|\\mathbf{q}\\| = \\sqrt{q_w^2 + q_x^2 + q_y^2 + q_z^2} = 1\n$$\n\n"
+             "$$\n\\|\\mathbf{q}\\| = \\sqrt{q_w^2 + q_x^2 + q_y^2 + q_z^2} = 2\n$$\n")
+    unit = HEAD + "The attitude is a unit quaternion $\\mathbf{q}$ with components $q_w, q_x, q_y, q_z$.\n\n" + chain
+    one, two = _lines(unit, "= 1\n"), _lines(unit, "= 2\n")
+    assert one == [{"holds"}] and two == [{"fails"}]
+    plain = HEAD + "The attitude is a quaternion $\\mathbf{q}$ with components $q_w, q_x, q_y, q_z$.\n\n" + chain
+    assert not _lines(plain, "= 1\n")[0] & {"typo", "fails"}

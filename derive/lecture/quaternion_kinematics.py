@@ -34,13 +34,17 @@ _VALUES = ((sp.Rational(3, 7), sp.Rational(-5, 11), sp.Rational(2, 13), sp.Ratio
 _SPHERE = ((sp.Rational(2, 7), sp.Rational(3, 7), sp.Rational(6, 7)),
            (sp.Rational(-1, 3), sp.Rational(2, 3), sp.Rational(2, 3)),
            (sp.Rational(6, 11), sp.Rational(-2, 11), sp.Rational(9, 11)))
+_S3 = ((sp.Rational(1, 5), sp.Rational(2, 5), sp.Rational(2, 5), sp.Rational(4, 5)),
+       (sp.Rational(2, 9), sp.Rational(-4, 9), sp.Rational(5, 9), sp.Rational(6, 9)),
+       (sp.Rational(1, 2), sp.Rational(1, 2), sp.Rational(-1, 2), sp.Rational(1, 2)))
 _TINY = sp.Float("1e-20")
 _STEP = re.compile(r"^\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\s*\}?\s*_\s*\{\s*([A-Za-z])\s*\+\s*1\s*\}\s*$")
 
 
 class Point(dict):
     """An exact point: a value for any symbol the reader makes, chosen by the symbol's name (a unit
-    vector's three components a rational point of the unit sphere), the same across members."""
+    vector's three components a rational point of the unit sphere, a unit quaternion's four one of
+    the unit 3-sphere), the same across members."""
 
     def __init__(self, k, units, keep=()):
         super().__init__()
@@ -55,6 +59,8 @@ class Point(dict):
 
     def _value(self, s):
         base, _, axis = s.name.rpartition("_")
+        if base == "q" and "q" in self.units and len(axis) == 1 and axis in "wxyz0123":
+            return _S3[self.k]["wxyz".find(axis) if axis in "wxyz" else int(axis)]      # a unit quaternion
         if base in self.units and axis and axis in "xyz":
             return _SPHERE[self.k]["xyz".index(axis)]
         h = sum(ord(ch) * (j + 1) for j, ch in enumerate(s.name))

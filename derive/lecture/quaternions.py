@@ -67,7 +67,8 @@ class Quaternions(QuaternionSteps):
             low = body.lower()
             hamilton, jpl = "hamilton" in low, re.search(r"\bjpl\b", low) is not None
             self._q_rules = (False,) if hamilton and not jpl else (True,) if jpl and not hamilton else (False, True)
-            self._q_unit_names = {m.group(1) for m in _UNIT.finditer(body)}
+            self._q_unit_names = {m.group(1) for m in _UNIT.finditer(body)} | \
+                ({"q"} if re.search(r"\bunit\s+quaternions?\s+\$\s*q\b", body) else set())
             # the components' order only where the text names them: q_w is the scalar, or q_0 is; not with a q_4
             self._q_style = "" if re.search(r"\bq_\{?4\b", body) else "0123" if re.search(r"\bq_\{?0\b", body) \
                 else "wxyz" if re.search(r"\bq_\{?w\b", body) else ""
@@ -244,10 +245,10 @@ class Quaternions(QuaternionSteps):
         units = self._q_units()
         verdict = self._q_at_points(a, b, jpl, units)
         if verdict == "fails":
-            loose = {n for n in re.findall(_BOLD_NAME, a + b) if n not in units and n != "omega" and n not in ("q", "p")
-                     and "bold " + n not in names.defined}
+            loose = {n for n in re.findall(_BOLD_NAME, a + b) if n not in units and n != "omega" and n != "p"
+                     and "bold " + n not in names.defined} | ({"q"} if "q" not in units and names.style else set())
             if loose and self._q_at_points(a, b, jpl, units | loose) != "fails":
-                raise Unread(f"it holds only where {', '.join(sorted(loose))} is a unit vector, which the text has not said")
+                raise Unread(f"it holds only where {', '.join(sorted(loose))} is of unit length, which the text has not said")
         return verdict
 
     def _q_point(self, k, units, keep=()):
