@@ -47,50 +47,19 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture import rearranged, summation_index, worked_values
-from derive.lecture.algebra_claims import AlgebraStatements
-from derive.lecture.axis_products import AxisProducts
-from derive.lecture.basis_vectors import BasisVectors
-from derive.lecture.two_cases import TwoCases
-from derive.lecture.chain_links import ChainLinks
-from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.arithmetic import arithmetic
-from derive.lecture.euler_in_angles import EulerInAngles
-from derive.lecture.euler_poisson import EulerPoisson
-from derive.lecture.fast_top import FastTop
-from derive.lecture.frame_displays import FrameDisplays
-from derive.lecture.free_integrals import FreeIntegrals
-from derive.lecture.integral_claims import IntegralClaims
-from derive.lecture.perturbations import Perturbations
-from derive.lecture.written_out import WrittenOut
-from derive.lecture.moments_small import SmallMoments
 from derive.lecture.comparing import free, has_rates, series_order
-from derive.lecture.conditions import Conditions
-from derive.lecture.constant_cases import ConstantCases
-from derive.lecture.context import Context, Reading
+from derive.lecture.context import Context
 from derive.lecture.derivation import derivation, keep
-from derive.lecture.judging import Judging
-from derive.lecture.motion import Motion
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
-from derive.lecture.on_the_motion import OnTheMotion
-from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_rates import OwnRates
-from derive.lecture.own_sign import OwnSign
-from derive.lecture.stated_theorems import StatedTheorems
-from derive.lecture.primed_axes import PrimedAxes
-from derive.lecture.turn_rates import TurnRates
-from derive.lecture.unlike_terms import UnlikeTerms
-from derive.lecture.coordinate_statements import CoordinateStatements
-from derive.lecture.rereading import Rereading
-from derive.lecture.restated import Restated
-from derive.lecture.section_convention import SectionConvention
+from derive.lecture.reading_rules import ReadingRules
 from derive.lecture.spellings import spellings, written_back
 from derive.lecture.stated_convention import general_form
 from derive.lecture.statements import continues, repeated_labels, restates_side, statements, top_level
-from derive.lecture.text_motion import TextMotion, top_relations
-from derive.lecture.text_matrices import TextMatrices, matrices_put
-from derive.lecture.textnames import TextNames
-from derive.lecture.vector_claims import VectorStatements
-from derive.lecture.inferred_convention import ConventionProbe, inferred
+from derive.lecture.text_motion import top_relations
+from derive.lecture.text_matrices import matrices_put
+from derive.lecture.inferred_convention import inferred
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -106,8 +75,7 @@ def _name_tex(name: str) -> str:
 
 
 # ---- the checker ------------------------------------------------------------------------------
-class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases):
+class Checker(ReadingRules):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -191,7 +159,8 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
                         and continues(latex, items[k + 1].latex) and not restates_side(items[k + 1].lead, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
-                self._display_probed(item, latex)
+                if not self._quaternions(item, latex):
+                    self._display_probed(item, latex)
             self._perturbation_named(item, met)
             k += 1
         self._flush()

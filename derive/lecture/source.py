@@ -330,6 +330,9 @@ def _braced_label(name, node, nodes, k, user) -> tuple[str, int]:
     but ``\\overbrace{X}^{\\cdot}``, a dot over a long product, is its time derivative;
     ``\\overset{a}{=}`` and ``\\stackrel{a}{=}`` are the relation."""
     inner = _last_arg(node, user) or ""
+    if name == "underset" and re.fullmatch(r"\s*(?:\\mathrm\{lim\}|\\lim|\\operatorname\{lim\})\s*", inner):
+        # a limit set under its operator keeps the variable it takes to the value
+        return r" \lim_{" + (_arg(node, 0, user) or "") + "} ", 0
     if name in ("overset", "underset", "stackrel"):
         return " " + inner + " ", 0
     used, label = 0, ""

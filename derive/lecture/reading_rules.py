@@ -1,0 +1,58 @@
+"""The reading rules a notes checker is made of: one mixin per family of shapes a text writes.
+
+`derive.lecture.notes_check.Checker` walks a text and keeps its context; each class below reads
+one family of displays (a text's own names, its matrices, perturbations, quaternions, sums of
+unlike quantities, …) and is documented in its own module. Their order is the order Python
+looks a method up in (a rule earlier in the list wins a name two of them define), so a new rule
+goes at the end unless it must override one.
+
+Takes and gives nothing of its own. May import: the rule modules of :mod:`derive.lecture`.
+"""
+from __future__ import annotations
+
+from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.axis_products import AxisProducts
+from derive.lecture.basis_vectors import BasisVectors
+from derive.lecture.chain_end_names import ChainEndNames
+from derive.lecture.chain_links import ChainLinks
+from derive.lecture.conditions import Conditions
+from derive.lecture.constant_cases import ConstantCases
+from derive.lecture.context import Reading
+from derive.lecture.coordinate_statements import CoordinateStatements
+from derive.lecture.euler_in_angles import EulerInAngles
+from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.fast_top import FastTop
+from derive.lecture.frame_displays import FrameDisplays
+from derive.lecture.free_integrals import FreeIntegrals
+from derive.lecture.inferred_convention import ConventionProbe
+from derive.lecture.integral_claims import IntegralClaims
+from derive.lecture.judging import Judging
+from derive.lecture.moments_small import SmallMoments
+from derive.lecture.motion import Motion
+from derive.lecture.on_the_motion import OnTheMotion
+from derive.lecture.operator_statements import OperatorStatements
+from derive.lecture.own_sign import OwnSign
+from derive.lecture.perturbations import Perturbations
+from derive.lecture.primed_axes import PrimedAxes
+from derive.lecture.quaternions import Quaternions
+from derive.lecture.rereading import Rereading
+from derive.lecture.restated import Restated
+from derive.lecture.section_convention import SectionConvention
+from derive.lecture.stated_theorems import StatedTheorems
+from derive.lecture.text_matrices import TextMatrices
+from derive.lecture.text_motion import TextMotion
+from derive.lecture.textnames import TextNames
+from derive.lecture.turn_rates import TurnRates
+from derive.lecture.two_cases import TwoCases
+from derive.lecture.unlike_terms import UnlikeTerms
+from derive.lecture.vector_claims import VectorStatements
+from derive.lecture.written_out import WrittenOut
+
+
+class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases,
+                   Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames,
+                   TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
+                   AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
+                   ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
+                   FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions):
+    """Every reading rule, in method-lookup order (see the module docstring)."""
