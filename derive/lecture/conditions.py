@@ -8,6 +8,7 @@ the fixed first axis along 𝐋, or None) and `Conditions._undecidable` (why a r
 condition of the text rather than a slip, or None).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.rotation_identities`,
+:mod:`derive.lecture.primed_functions`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -15,7 +16,7 @@ from __future__ import annotations
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture import rotation_identities
+from derive.lecture import primed_functions, rotation_identities
 from derive.lecture.comparing import free
 from derive.symbolic.lagrangian import ACCELS
 
@@ -58,6 +59,9 @@ class Conditions:
         (ω̃₂ = ω sin α at one instant), a case not imposed on the angles. None when the derivation
         decides it."""
         rot = self.d.rot
+        if written and val != 0 and isinstance(written[0], sp.Symbol) and \
+                primed_functions.definitions(self.vocab, self.ctx.defs, [written[0]], self.tex):
+            return None     # U'(θ) = (its derivative written out) = 0: the rewriting is an identity, only "= 0" a condition
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
         variables = rates | set(rot.ANGLES) | set(lx.W)
@@ -72,7 +76,8 @@ class Conditions:
                     "not give without solving the motion")
         derived = any(isinstance(x, lx.Quantity) or x in self.ctx.defs or x in rates or x in frames
                       for m in written for x in free(m)) or \
-            any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written)
+            any(hasattr(m, "has") and (m.has(lx.DT) or m.has(sp.Derivative)) for m in written) or \
+            any(primed_functions.definitions(self.vocab, self.ctx.defs, free(m), self.tex) for m in written)
         if not derived and not rotation_identities.trig_matrices(val, [self._resolve(f) for f in targets]):
             return "an equation between the text's variables: a condition it imposes, not an identity"
         every = free(val).union(*(free(self._resolve(f)) for f in targets))

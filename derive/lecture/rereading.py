@@ -16,7 +16,7 @@ statement again —
 4. edited, one edit of its own LaTeX at a time, to find the correction in the text's notation.
 
 Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
-left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`,
+left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`, :mod:`derive.lecture.primed_functions`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -26,7 +26,7 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from derive.lecture import latex as lx
+from derive.lecture import latex as lx, primed_functions
 from derive.lecture import vectors as vc
 from derive.symbolic.lagrangian import I1, I2, Mass, l
 
@@ -152,6 +152,13 @@ class Rereading:
             return
         if self._if_symmetric(saved, line, piece, dup, pieces, before):
             return
+        if primed_functions.operator_in_other_variable(piece) and self._primed_read(piece, every=True):
+            for c in first:
+                if c.verdict in ("typo", "fails"):
+                    c.verdict, c.correction = "unchecked", None
+                    c.why = ("a derivative of the text's function beside a derivative written as an operator in "
+                             f"another variable than t, which the reader does not read: {c.why}")
+            return
         for name, value, what in readings:
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, readings={name: value}, judging_only=True)
             if second and all(c.verdict == "holds" for c in second):
@@ -171,7 +178,7 @@ class Rereading:
         if self._running_names_off(saved, line, piece, dup, pieces, first):
             return
         learned = self._learned(piece)
-        if learned:
+        if learned and not (primed_functions.leads(piece) and self._primed_read(piece)):
             second, ctx = self._sandbox(saved, line, piece, dup, pieces, names_off=True, judging_only=True)
             if not any(c.verdict in ("typo", "fails") for c in second):
                 bindings = self._learned_bindings(piece)
@@ -186,6 +193,18 @@ class Rereading:
                         c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "
                                  "unchecked, since the text may mean something else by it here")
                         c.verdict, c.correction = "unchecked", None
+
+    def _primed_read(self, piece, every=False) -> bool:
+        """Is the statement's first member (any of its symbols: ``every``) a primed function the text
+        defined, read as its derivative?"""
+        try:
+            members = lx.parse(piece, self.vocab).members
+        except lx.NotRead:
+            return False
+        first = members[0].value if members else None
+        syms = set().union(*(m.value.free_symbols for m in members if hasattr(m.value, "free_symbols"))) if every \
+            else {first} if isinstance(first, sp.Symbol) else set()
+        return bool(primed_functions.definitions(self.vocab, self.ctx.defs, syms, self.tex))
 
     def _confirmed_by_siblings(self, claims):
         """A statement left unchecked because only the prose's names flag it is judged after all

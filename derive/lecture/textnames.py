@@ -17,11 +17,11 @@ of `derive.lecture.notes_check.Checker`, which
    definition ties to the derivation is checked only when it is an identity whatever they stand
    for (then ``holds``); otherwise it is ``unchecked`` naming the symbols;
 4. **differentiates**: ``\\frac{d}{dt}`` (`latex.DT`) by the chain rule through the angles, their
-   rates, ω̃ᵢ (→ ω̃̇ᵢ) and the text's symbols (X → Ẋ, and Ẋ of a defined X is the derivative of its
-   definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
+   rates, ω̃ᵢ (→ ω̃̇ᵢ) and the text's symbols (X → Ẋ, and Ẋ of a defined X, or X'(q) of a defined X(q), is the
+   derivative of its definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -31,7 +31,7 @@ import re
 import sympy as sp
 
 from derive.lecture import euler_moments
-from derive.lecture import latex as lx
+from derive.lecture import latex as lx, primed_functions
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
@@ -345,7 +345,7 @@ class TextNames(UnreadMembers):
         if not isinstance(sym, lx.Generic) or sym in self.ctx.defs:
             return False
         base = self.vocab.undotted(sym)
-        return base is None or base[0] not in self.ctx.defs
+        return (base is None or base[0] not in self.ctx.defs) and sym not in self._dotted_definitions(sym, [sym])
 
     def _settable(self, sym) -> bool:
         return isinstance(sym, sp.Symbol) and (sym in VARIABLES or sym in PARAMETERS or sym == lx.t or
@@ -597,4 +597,4 @@ class TextNames(UnreadMembers):
                     for _ in range(base[1]):
                         value = self._dt(value)
                     rep[s] = value
-        return rep
+        return rep | primed_functions.definitions(self.vocab, self.ctx.defs, _free(v) if syms is None else syms, self.tex)
