@@ -1,8 +1,7 @@
 """Check every formula of a notes file against the derivation: ``derive verify NOTES.md``.
 
 The notes are read by `derive.lecture.notes` (displays, assumptions, front matter) and each
-formula by `derive.lecture.latex` (SymPy objects in the derivation's own symbols). A display is
-cut into statements — rows of ``aligned``/``split`` blocks (``\\\\``), pieces separated by
+formula by `derive.lecture.latex` (SymPy objects in the derivation's own symbols). A display is cut into statements — rows of ``aligned``/``split`` blocks (``\\\\``), pieces separated by
 ``\\qquad`` or ``\\Rightarrow`` — and a display that starts with ``=`` or ``\\approx`` continues
 the previous statement's left side, one that starts with ``+``/``-`` its right side.
 
@@ -55,6 +54,7 @@ from derive.lecture.arithmetic import arithmetic
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
+from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.integral_claims import IntegralClaims
@@ -105,7 +105,7 @@ def _name_tex(name: str) -> str:
 
 # ---- the checker ------------------------------------------------------------------------------
 class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases, Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames, TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
-              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms):
+              AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements, ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems, FrameDisplays, OwnSign, UnlikeTerms, EllipticSolution):
     """Walks the items of `Notes` in order, keeping the context, and checks each statement."""
 
     def __init__(self, notes: nt.Notes):
@@ -215,7 +215,7 @@ class Checker(IntegralClaims, Perturbations, ConventionProbe, SectionConvention,
         start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
         if self._frame_display(item.line, pieces) or self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
-                self._at_setting(item.line, pieces):
+                self._at_setting(item.line, pieces) or self._elliptic_solution(item.line, pieces):
             self._close_display()
             return
         self._named_at_chain_end(latex, item.line)
