@@ -188,7 +188,7 @@ SHORT = {
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
 }
 
-FLOOR = {"checked": 649, "slips_flagged": 71, "holds_flagged": 0}
+FLOOR = {"checked": 650, "slips_flagged": 71, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
