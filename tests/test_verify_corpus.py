@@ -100,7 +100,8 @@ SHORT = {
         "names without tying it; the worked example's constants L_Z0, omega_Z0, E_0, its matrices I', I_C (in "
         "pmatrix, the parallel-axis sum a matrix against a name) and the time to stand up (an integral) are not read",
     ("free-asymmetric-body-jacobi-elliptic-solution-zh-notes-zxz", "checked"):
-        "the solutions omega_i in sn, cn, dn of (p t) (a step of the reader fails on them), the integral F in the "
+        "omega_2 alone in sn (its companions come a display later) and case 2's three rates in sn, cn, dn (its "
+        "k^2 = ... < 1 is a chain the reader does not record, so case 1's k^2 stands) are left unchecked; the integral F in the "
         "text's own K(k, s) (K(k) as two integrals is checked), "
         "k^2 < 1 and the period are not read; the limits and the separatrix are stated in cases of L^2 the reader "
         "does not impose, and the Euler angles after the relabelling 123 -> 312 are left unjudged there",

@@ -35,8 +35,15 @@ class _Unread(Exception):
 def evaluator(symbols, exprs):
     """f(*point) → [each expression at symbols = point] in mpmath (see the module docstring)."""
     exprs = [sp.sympify(e) for e in exprs]
+    if any(e.has(sp.zoo, sp.nan) for e in exprs):
+        return _pole       # SymPy's infinity, written into a formula, is a value at no point
     f = walker(symbols, exprs)
     return f if f is not None else _lambdified(sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0))
+
+
+def _pole(*point):
+    """The value of a formula holding SymPy's complex infinity or NaN: none, at any point."""
+    raise ZeroDivisionError("the formula holds an infinity")
 
 
 def _lambdified(g):

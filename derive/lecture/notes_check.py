@@ -187,7 +187,7 @@ class Checker(ReadingRules):
         start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
         if self._frame_display(item.line, pieces) or self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
-                self._at_setting(item.line, pieces):
+                self._at_setting(item.line, pieces) or self._elliptic_solution(item.line, pieces):
             self._close_display()
             return
         self._named_at_chain_end(latex, item.line)

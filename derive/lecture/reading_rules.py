@@ -20,6 +20,7 @@ from derive.lecture.constant_cases import ConstantCases
 from derive.lecture.context import Reading
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.euler_in_angles import EulerInAngles
+from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
@@ -54,5 +55,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    TextMatrices, TextMotion, Rereading, Motion, Reading, VectorStatements, OnTheMotion,
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
-                   FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions):
+                   FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
+                   EllipticSolution):
     """Every reading rule, in method-lookup order (see the module docstring)."""
