@@ -26,6 +26,7 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:
 """
 from __future__ import annotations
 
+import itertools
 import re
 
 import sympy as sp
@@ -48,6 +49,28 @@ class ShapesApart(lx.NotRead, TypeError):
     shape, so the statement cannot be read. A `TypeError` too, as SymPy's own sum would raise."""
 
 
+PUT_NODES = 50000
+# the most nodes one putting-in may build (its value, then every product it multiplies out):
+# definitions that name one another (o = R V, V = R^T o) multiply their matrices again with every
+# round, so without a bound the work grows without end
+
+
+class TooLarge(lx.NotRead):
+    """Putting in the text's definitions builds more than `PUT_NODES` nodes: the reader stops
+    there and leaves the statement unchecked, naming the definitions it was putting in."""
+
+
+def _spent(e, budget, rep):
+    """Take ``e``'s nodes from ``budget`` (a one-item list), counting no further than what is left,
+    so the count stays cheap; past the budget raise `TooLarge` naming what ``rep`` puts in."""
+    budget[0] -= sum(1 for _ in itertools.islice(sp.preorder_traversal(e), budget[0] + 1))
+    if budget[0] < 0:
+        names = ", ".join(sorted({sp.latex(k) for k in rep}))
+        raise TooLarge(f"putting in the text's definitions of {names} builds more than {PUT_NODES} terms "
+                       "(definitions that name one another grow without end): the reader stops there")
+    return e
+
+
 def _added(out, a, written):
     """``out + a`` where one side may be a matrix: a zero beside a matrix is dropped; a term the
     reader holds as no matrix beside one raises `ShapesApart`, naming the symbols of ``written``
@@ -61,22 +84,26 @@ def _added(out, a, written):
                       "(the text has not given its shape)")
 
 
-def matrices_put(e, rep, columns=None):
+def matrices_put(e, rep, columns=None, budget=None):
     """``e.xreplace(rep)`` where some of the text's names stand for matrices: rebuilt from the leaves
     up, a product multiplied as matrices in its written order and a transpose taken, since SymPy's
     Mul would take a matrix among its factors for a scalar. A matrix added to a term of no matrix
     shape raises `ShapesApart`. ``columns``: basis vectors that, in a product with matrices, are
-    their unit columns, last in the product (`TextMatrices._basis_columns`)."""
+    their unit columns, last in the product (`TextMatrices._basis_columns`). ``budget``: the nodes it may
+    still build; past `PUT_NODES` in all it raises `TooLarge`."""
+    if budget is None:
+        budget = [PUT_NODES]
+        _spent(e, budget, rep)
     if e in rep:
         return rep[e]
     if isinstance(e, sp.MatrixBase):
-        blocks = [[matrices_put(e[i, j], rep, columns) for j in range(e.cols)] for i in range(e.rows)]
+        blocks = [[matrices_put(e[i, j], rep, columns, budget) for j in range(e.cols)] for i in range(e.rows)]
         if all(isinstance(b, sp.MatrixBase) for row in blocks for b in row):     # [𝐈₁  R₁𝐈₂  R₁R₂𝐈₃]: a block matrix
             return sp.ImmutableMatrix(sp.Matrix.vstack(*[sp.Matrix.hstack(*row) for row in blocks]))
         return sp.ImmutableMatrix(blocks)
     if not getattr(e, "args", ()):
         return e
-    args = [matrices_put(a, rep, columns) for a in e.args]
+    args = [matrices_put(a, rep, columns, budget) for a in e.args]
     if not any(isinstance(a, sp.MatrixBase) for a in args):
         return e.func(*args) if args != list(e.args) else e
     basis = [k for k, a in enumerate(e.args) if a in (columns or {})] if isinstance(e, sp.Mul) else []
@@ -88,7 +115,8 @@ def matrices_put(e, rep, columns=None):
             if isinstance(e, sp.Add):
                 out = _added(out, a, [w for w, v in zip(e.args[:k + 1], args) if not isinstance(v, sp.MatrixBase)])
             else:
-                out = out * a
+                out = _spent(out * a, budget, rep) if isinstance(a, sp.MatrixBase) or isinstance(out, sp.MatrixBase) \
+                    else out * a
     elif isinstance(e, lx.Transposed):
         out = args[0].T
     elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
