@@ -14,8 +14,24 @@ def test_relations_after_a_case_in_the_same_sentence_are_not_flagged():
     assert "fails" not in verdicts and "typo" not in verdicts
 
 
-def test_a_relation_in_prose_with_no_case_before_it_is_still_judged():
-    assert _verdicts("The spin component is $\\omega_3 = \\dot{\\phi}$ in general.")[-1] == "fails"
+def test_a_relation_in_prose_that_is_no_identity_is_unchecked_and_says_how_far_it_is_from_one():
+    claims = kept.check_text(HEAD + "The spin component is $\\omega_3 = \\dot{\\phi}$ in general.\n")
+    assert claims[-1].verdict == "unchecked" and "as an identity" in claims[-1].why
+
+
+def test_a_relation_in_prose_that_holds_is_confirmed():
+    text = HEAD + "The spin component is $\\omega_3 = \\dot{\\phi}\\cos\\theta + \\dot{\\psi}$ in general.\n"
+    assert _verdicts(text.replace("The spin", "The body's spin"))[-1] == "holds"
+
+
+def test_a_condition_or_a_name_of_the_texts_own_in_a_sentence_is_never_flagged():
+    heavy = ("---\nconvention: z-y-z\n---\n# Heavy top\n\n"
+             "$$U(\\theta) = \\frac{(L_z - L_3\\cos\\theta)^2}{2I_1\\sin^2\\theta} + Mgl\\cos\\theta$$\n\n"
+             "The angles where $U(\\theta)=E$ are the turning points of the nutation.\n")
+    cube = ("# A cube\n\nThe first principal axis is the unit vector "
+            "$\\mathbf{\\hat{e}}_1= \\frac{1}{\\sqrt{3}} \\begin{pmatrix} 1 \\\\ 1 \\\\ 1 \\end{pmatrix}$ along the diagonal.\n")
+    for text in (heavy, cube):
+        assert not {"typo", "fails"} & {c.verdict for c in kept.check_text(text)}, text
 
 
 def test_a_coefficient_the_text_names_after_the_equation_is_read_with_that_definition():

@@ -92,6 +92,7 @@ class Checker(ReadingRules):
         self._sections = []          # [heading level, the context its subsections start from]
         self._open_display()
         self.claims: list[Claim] = []
+        self._inline_claims = set()     # id() of the claims read from math in a sentence
         self.pending: list = []     # solution statements waiting for their group
         self.pending_subs = None    # the settings of the display that wrote them
         self.flushed: list = []     # the verdicts of the group, until placed
@@ -159,15 +160,28 @@ class Checker(ReadingRules):
                         and continues(latex, items[k + 1].latex) and not restates_side(items[k + 1].lead, items[k + 1].latex):
                     k += 1
                     latex = latex + " " + items[k].latex
+                start = len(self.claims)
                 if not self._quaternions(item, latex):
                     self._display_probed(item, latex)
+                if item.kind == "inline":
+                    self._inline_claims.update(map(id, self.claims[start:]))
             self._perturbation_named(item, met)
             k += 1
         self._flush()
         self._place_flushed(len(self.claims))
         self._read_later_definitions()
         self._check_changes()
+        self._inline_unflagged()
         return self.claims
+
+    def _inline_unflagged(self):
+        """Math in a sentence is read for the names, cases and conditions it gives (and confirmed
+        where it holds), never flagged: prose writes a condition ("the angles where $U(\\theta)=E$")
+        or a name of its own ("the unit vector $\\hat e_1 = …$") as an equation."""
+        for c in self.claims:
+            if id(c) in self._inline_claims and c.verdict in ("typo", "fails"):
+                c.why = f"math in the prose, read as a condition or a name the text sets, not as a claim (as an identity: {c.why})"
+                c.kind, c.verdict, c.correction = "setting", "unchecked", None
 
     def _add(self, line, latex, kind, verdict, why="", correction=None):
         self.claims.append(Claim(line, latex, kind, verdict, correction, why))
