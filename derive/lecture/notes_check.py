@@ -64,6 +64,16 @@ from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
 
+_NOT_FOLLOWED = (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
+                 NotImplementedError, RecursionError, sp.polys.polyerrors.BasePolynomialError)
+"""What a step of the reader raises on a formula it cannot follow (SymPy's own errors among them)."""
+
+
+def _failed_step(err) -> str:
+    return (str(err) if isinstance(err, lx.NotRead) else
+            f"a step of the reader failed on it ({type(err).__name__}): it is left unjudged")
+
+
 _UNTIED = ("A", "B", "C")
 """Letters the reader knows only as free symbols (`derive.lecture.vocabulary.FREE_NAMES`)."""
 
@@ -189,7 +199,11 @@ class Checker(ReadingRules):
     # -- a display
     def _display(self, item, latex):
         start = len(self.claims)
-        self._display_statements(item, latex)
+        try:
+            self._display_statements(item, latex)
+        except _NOT_FOLLOWED as err:     # a step around the statements' own guards: the display is unjudged
+            self._add(item.line, latex, "unknown", "unchecked", f"cannot check it: {_failed_step(err)}")
+            self._close_display()
         self._cases_not_applied(item, start)
 
     def _display_statements(self, item, latex):
@@ -229,12 +243,9 @@ class Checker(ReadingRules):
                 if not self._turn_rates(item.line, piece):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._stated_theorem(item.line, piece, before)
-            except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError,
-                    KeyError, NotImplementedError, RecursionError, sp.PolynomialError) as err:
+            except _NOT_FOLLOWED as err:
                 # a formula the checker cannot follow is reported as such, never given a verdict
-                why = (str(err) if isinstance(err, lx.NotRead) else
-                       f"a step of the reader failed on it ({type(err).__name__}): it is left unjudged")
-                self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {why}")
+                self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {_failed_step(err)}")
                 if not isinstance(err, lx.NotRead):
                     self.deferred.append((self.claims[-1], item.line, piece, self._snapshot()))
             self._linked(item.line, piece, before, previous, dup, pieces)
