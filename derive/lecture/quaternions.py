@@ -130,7 +130,7 @@ class Quaternions(QuaternionSteps):
         if not any(v[0] in ("holds", "fails") for v in verdicts):
             return False
         for row, (verdict, why) in zip(rows, verdicts):
-            self._add(item.line, row, "quaternion", verdict, why)
+            self._add(item.line, row, "quaternion algebra", verdict, why)
         return True
 
     def _q_applied(self, rows):
