@@ -58,3 +58,12 @@ def test_a_symbol_set_to_zero_where_the_prose_says_it_is_absent_is_the_setting_n
     claims = kept.check_text(text)
     assert not [c for c in claims if c.line == 3 and c.verdict in ("typo", "fails")]
     assert [c.verdict for c in claims if c.line == 5] == ["holds"]      # the kinetic energy T is not zeroed
+
+
+def test_math_standing_alone_as_its_paragraphs_line_is_judged_as_a_display():
+    """Texts kept from rendered pages write their displays as `$…$` paragraphs of their own."""
+    text = ("# A free body\n\nEuler's equations, with no torque:\n\n"
+            "$I_1 \\dot{\\omega}_1 = (I_2 + I_3)\\omega_2\\omega_3$\n\nwhich the body obeys.\n")
+    assert {"typo", "fails"} & {c.verdict for c in kept.check_text(text) if c.line == 5}
+    in_a_sentence = text.replace("$I_1", "so that $I_1").replace("_3$\n", "_3$ holds.\n")
+    assert {c.verdict for c in kept.check_text(in_a_sentence) if c.line == 5} == {"unchecked"}

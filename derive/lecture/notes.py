@@ -92,6 +92,7 @@ class Item:
     symbols: tuple = ()
     display: bool = False
     level: int = 0                 # a heading's level (the number of #)
+    alone: bool = False            # inline math that is its paragraph's whole line: a display in all but its $…$
 
 
 @dataclass
@@ -363,8 +364,11 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         defined = None if assumed else in_prose.definition(m.start(), latex, line_text)
         if defined:
             named.append((m.start(), Item("inline", line, latex=defined, lead=near)))
+        rest = body[m.end():body.find("\n", m.end()) if body.find("\n", m.end()) >= 0 else len(body)]
+        alone = not body[starts[line - 1]:m.start()].strip() and re.fullmatch(r"\s*[.,;:]?\s*", rest) is not None
         for one in components(latex.strip("()") if assumed and wrapped else latex):
-            events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near)))
+            events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near,
+                                           alone=alone)))
     # a section that states another convention (or other names) than the one before it
     current = (conv, tuple(angles))
     for st in stated[1:]:

@@ -173,7 +173,7 @@ class Checker(ReadingRules):
                 start = len(self.claims)
                 if not self._quaternions(item, latex):
                     self._display_probed(item, latex)
-                if item.kind == "inline":
+                if item.kind == "inline" and not item.alone:
                     self._inline_claims.update(map(id, self.claims[start:]))
             self._perturbation_named(item, met)
             k += 1
