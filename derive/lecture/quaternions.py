@@ -27,7 +27,7 @@ rules give one verdict. A link that fails with a bold vector the text has not ca
 is held to fail only if it fails with that vector a unit one too.
 
 May import: :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_kinematics`,
-:mod:`derive.lecture.quaternion_reader`, SymPy.
+:mod:`derive.lecture.quaternion_reader`, :mod:`derive.lecture.statements`, SymPy.
 """
 from __future__ import annotations
 
@@ -38,7 +38,9 @@ import sympy as sp
 from derive.lecture.quaternion_algebra import Names, Quat, Unread, components
 from derive.lecture.quaternion_kinematics import Point, QuaternionSteps, difference, flat, only_omega, step_of
 from derive.lecture.quaternion_reader import applied_name, read
+from derive.lecture.statements import top_level
 
+_EQUALS = re.compile(r"(?<![<>!\\])=")
 _MARK = re.compile(r"\\otimes|\\frac\s*\{\s*d\s*q\s*\}|\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\b|e\^\{?\s*\\(?:mathbf|boldsymbol|bm)")
 _BOLD_NAME = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
 _NAME_ONLY = re.compile(r"\s*(?:\\Delta\s*)?(?:\\(?:dot|ddot|dddot)\s*\{?\s*)?" + _BOLD_NAME + r"\s*\}?\s*(?:\(t\))?\s*$")
@@ -399,17 +401,8 @@ def _members(row: str) -> list[str] | None:
     """A row's members, cut at its top-level ``=`` (None when it has another relation)."""
     if re.search(r"\\(?:gets|leq?|geq?|approx|neq|to\b|rightarrow)|[<>]", re.sub(r"\\lim_\{[^{}]*\}", "", row)):
         return None
-    members, depth, start = [], 0, 0
-    for k, ch in enumerate(row):
-        if ch == "{":
-            depth += 1
-        elif ch == "}":
-            depth -= 1
-        elif ch == "=" and depth == 0:
-            members.append(row[start:k])
-            start = k + 1
-    members.append(row[start:])
-    return [m.strip() for m in members]
+    bounds = [0, *(p for m in top_level(row, _EQUALS) for p in (m.start(), m.end())), len(row)]
+    return [row[bounds[k]:bounds[k + 1]].strip() for k in range(0, len(bounds), 2)]
 
 
 def _rate_rows(rows):
