@@ -264,3 +264,5 @@ def test_verify_speed_is_a_target_reported_per_corpus_text():
     assert [ok for *_, ok in rows] == [False, True]
     assert res["worst"] == 100 * 30.0 / n[0]
     assert "skipped" in vs.bench_verify_speed([]) and vs.rows(vs.bench_verify_speed([])) == []
+    # a text whose displays are `$…$` paragraphs of their own (a rendered page) has them counted
+    assert all(vs.displays(p) > 0 for p in texts if p.stem.startswith("wikipedia-"))

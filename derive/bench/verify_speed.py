@@ -39,8 +39,9 @@ def corpus_texts(root: Path = CORPUS) -> list[Path]:
 
 
 def displays(path: Path) -> int:
-    """The displays of a text, as the notes reader finds them."""
-    return sum(item.kind == "display" for item in nt.read_notes(path).items)
+    """The displays of a text, as the notes reader finds them (a ``$…$`` standing alone as its
+    paragraph's line, how texts kept from rendered pages write a display, counts as one)."""
+    return sum(item.kind == "display" or item.alone for item in nt.read_notes(path).items)
 
 
 def user_seconds(path: Path) -> float:
