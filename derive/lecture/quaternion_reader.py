@@ -268,13 +268,18 @@ class _Reader:
             return self.primary()
         return self.factor()
 
+    def braced(self) -> list[str]:
+        """The tokens' texts up to the closing brace (the opening one read), the brace consumed."""
+        parts = []
+        while self.peek()[0] not in ("rbrace", None):
+            parts.append(self.next()[1])
+        self.expect("rbrace")
+        return parts
+
     def bold_inner(self) -> str:
         kind, text = self.next()
         if kind == "lbrace":
-            parts = []
-            while self.peek()[0] not in ("rbrace", None):
-                parts.append(self.next()[1])
-            self.expect("rbrace")
+            parts = self.braced()
             if len(parts) != 1:
                 raise Unread(f"cannot read the bold {''.join(parts)!r}")
             text = parts[0]
@@ -305,11 +310,7 @@ class _Reader:
         self.next()
         kind, text = self.next()
         if kind == "lbrace":
-            parts = []
-            while self.peek()[0] not in ("rbrace", None):
-                parts.append(self.next()[1])
-            self.expect("rbrace")
-            return "".join(parts)
+            return "".join(self.braced())
         return text.lstrip("\\")
 
     def named(self, name, bold):
