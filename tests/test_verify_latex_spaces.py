@@ -14,6 +14,8 @@ from derive.lecture.arithmetic import arithmetic
 from derive.lecture.statements import statements
 from derive.lecture.units import plain_numbers
 
+import kept_readings as kept
+
 SPACES = (" ", "\\,", "\\:", "\\;", "\\!", "\\ ", "~")
 SYMBOLS = ("\\,", "\\:", "\\;", "\\!", "\\ ")
 QUADS = (" \\quad ", " \\qquad ")
@@ -118,3 +120,23 @@ def test_numbers_on_either_side_of_a_quad_are_not_a_product(quad):
 @pytest.mark.parametrize("space", SYMBOLS + QUADS)
 def test_the_scanner_skips_every_spacing_command(space):
     assert [t.kind for t in vc.scan(f"a{space} b")] == ["atom", "atom"]
+
+
+@pytest.mark.parametrize("space", SYMBOLS + ("~",))
+def test_an_equals_sign_set_apart_by_small_spaces_is_the_plain_one(space):
+    assert source.normalize(f"L(\\theta) {space}={space} \\frac{{1}}{{2}} I") == "L(\\theta) = \\frac{1}{2} I"
+    assert source.normalize("x \\\\ = y") == "x \\\\ = y"          # a row break before = is no control space
+
+
+@pytest.mark.parametrize("space", SYMBOLS)
+def test_a_function_defined_with_a_spaced_equals_sign_is_the_texts_definition(space):
+    text = ("# A hoop\n\nThe moment of inertia about the contact point is $I_p(\\theta)$ and the potential $V(\\theta)$.\n\n"
+            f"$$L(\\theta, \\dot\\theta) {space}={space} \\frac{{1}}{{2}} I_p(\\theta) \\dot\\theta^2 - V(\\theta)$$\n\n"
+            f"$$p_\\theta {space}={space} \\frac{{\\partial L}}{{\\partial \\dot\\theta}} {space}={space} I_p(\\theta) \\dot\\theta$$\n")
+    plain = text.replace(f" {space}={space} ", " = ")
+    assert kept.verdicts_by_line(text) == kept.verdicts_by_line(plain)
+    assert "holds" in kept.verdicts_by_line(plain)[kept.line_of(plain, "p_\\theta")]
+
+
+def test_a_unicode_letter_is_spaced_off_only_a_letter_after_it():
+    assert source.characters("I_p(θ) + θx + ω₃") == "I_p(\\theta) + \\theta x + \\omega_{3}"

@@ -13,7 +13,7 @@ def verdicts(text, **kw):
 
 
 @pytest.mark.parametrize("written, read", [
-    ("T = \u00bd I\u2081\u03c9\u2081\u00b2 \u2212 x", r"T = \frac{1}{2} I_{1}\omega _{1}^{2} - x"),
+    ("T = \u00bd I\u2081\u03c9\u2081\u00b2 \u2212 x", r"T = \frac{1}{2} I_{1}\omega_{1}^{2} - x"),
     (r"I_3 \dot{\omega}_3 = 0 \tag{13.89}\label{eq:e3}", r"I_3 \dot{\omega}_3 = 0"),
     (r"\boxed{T = 0} \notag", "T = 0"),
     (r"\pmb{\omega} \cdot \pmb{L}", r"\boldsymbol{\omega} \cdot \boldsymbol{L}"),

@@ -20,3 +20,14 @@ def test_the_carried_sum_holds_and_a_slip_in_it_is_flagged():
     assert [c.verdict for c in right] == ["holds"]
     wrong = kept.check_text("# Free body\n\n" + SUM % "" + "\n")
     assert [c.verdict for c in wrong] in (["typo"], ["fails"])
+
+
+BRACKETED = ("\\begin{align}\nT &= \\frac{1}{2}\\left(I_1\\omega_1^2 + I_2\\omega_2^2\\right)\\\\\n"
+             "&+ \\frac{1}{2}I_3\\left(\\omega_3\\right)%s.\n\\end{align}")
+
+
+def test_a_carried_row_in_left_right_brackets_is_carried_not_a_relation():
+    """``\\left(`` opens a bracket: its ``\\le`` is no ``\\leq``, so the row states no relation."""
+    assert len(statements(BRACKETED % "^2")) == 1
+    assert [c.verdict for c in kept.check_text("# Free body\n\n" + BRACKETED % "^2" + "\n")] == ["holds"]
+    assert [c.verdict for c in kept.check_text("# Free body\n\n" + BRACKETED % "" + "\n")] in (["typo"], ["fails"])

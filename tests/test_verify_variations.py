@@ -93,6 +93,17 @@ def test_the_second_rate_of_a_bracket_is_read_as_the_second_derivative_of_what_i
     assert normalize("\\frac{d^2(x)}{dt}") == "\\frac{d^2(x)}{dt}"        # the powers disagree: left as written
 
 
+def test_the_rate_of_a_sized_bracket_or_in_upright_differentials_is_the_rate_of_what_it_holds():
+    assert normalize("\\frac{d\\left(\\delta\\omega_1\\right)}{dt}") == "\\frac{d}{dt}(\\delta\\omega_1)"
+    assert normalize("\\frac{d^2\\left(m v\\right)}{dt^2}") == "\\frac{d^2}{dt^2}(m v)"
+    assert normalize("\\frac{\\mathrm{d}(\\delta\\omega_1)}{\\mathrm{d}t}") == "\\frac{d}{dt}(\\delta\\omega_1)"
+    assert normalize("\\frac{\\mathrm{d}\\phi}{\\sqrt{1 - k^2}}") == "\\frac{\\mathrm{d}\\phi}{\\sqrt{1 - k^2}}"   # no rate
+    sized = SPIN.replace("d(\\delta\\omega_1)}", "d\\left(\\delta\\omega_1\\right)}")
+    assert sized != SPIN
+    line = kept.line_of(sized, "d\\left(\\delta\\omega_1\\right)}{dt}")
+    assert kept.verdicts_by_line(sized)[line] == {"holds"}
+
+
 def test_the_rate_of_a_component_perturbed_about_a_steady_spin_is_the_rate_of_its_variation():
     # ωᵢ = cᵢ + δωᵢ with cᵢ constant: ω̇₁ = δω̇₁ holds; as δ times ω̇₁ it would fail
     text = ("# Perturbed spin\n\nA body spins about its axis 3 with a small disturbance.\n\n"

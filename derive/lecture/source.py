@@ -43,8 +43,8 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import tex_structure, texmacros, units
-from derive.lecture.latex_spaces import ONE_SPACE, SPACE, SPACE_SYMBOL
+from derive.lecture import differentials, tex_structure, texmacros, units
+from derive.lecture.latex_spaces import ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -93,6 +93,8 @@ def characters(latex: str) -> str:
         return latex
     out = []
     for ch in latex:
+        if out and out[-1][:1] == "\\" and out[-1][-1:] == " " and not (ch.isascii() and ch.isalpha()):
+            out[-1] = out[-1][:-1]          # the space only parts a command from a letter after it: θ) is \theta)
         if ch.isascii():
             out.append(ch)
         elif ch in _COMBINING and out:
@@ -151,7 +153,7 @@ def rendered(text: str, latex_source: bool = False) -> str:
     text = _COMMENT.sub(_blank, text)
     text = _MATH_FENCE.sub(_math_display, text)
     text = _FENCE.sub(_blank, text)
-    return _CODE.sub(_blank, text)
+    return _SMALL_SPACED_EQUALS.sub(" ", _CODE.sub(_blank, text))   # a \;=\; b, for every reader of the text
 
 
 # --- the file's macros (read and expanded in `derive.lecture.texmacros`) ------------------------
@@ -402,23 +404,6 @@ def _over(nodes, user: dict) -> str:
     return r"\frac{" + _print(nodes[:k], user) + "}{" + _print(nodes[k + 1:], user) + "}"
 
 
-_CODE_RATE = re.compile(r"^\s*d\s*(\\[A-Za-z]+|[A-Za-z])((?:_(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*=(?!=)(.*)$", re.S)
-_DIFFERENTIAL_LETTER = re.compile(r"(?<![A-Za-z\\])d(?![A-Za-z]{2})")
-
-
-_BRACKET_RATE = re.compile(r"\\frac\s*\{\s*d\s*(\^\s*\{?\s*2\s*\}?\s*)?\(((?:[^(){}]|\([^(){}]*\))*)\)\s*\}"
-                           r"\s*\{\s*d\s*t\s*(?(1)\^\s*\{?\s*2\s*\}?\s*|)\}")
-
-
-def _code_rate(text: str) -> str:
-    """``dx = v_x``, ``d\\varphi = p + …``: a simulation's derivative, written as code names it (the
-    rate of the one symbol after d), when no differential stands anywhere else in the formula."""
-    m = _CODE_RATE.match(text)
-    if not m or _DIFFERENTIAL_LETTER.search(m.group(3)):
-        return text
-    return r"\dot{" + m.group(1) + "}" + m.group(2) + " =" + m.group(3)
-
-
 # `cos \theta` (or `\ cos`) typed without its backslash renders as the word cos: a reader reads cosine
 _BARE_TRIG = re.compile(r"(?<![A-Za-z])(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh)(?![A-Za-z])")
 _WORD_TRIG = re.compile(r"\\(text|mathrm|mathit|operatorname)\{\s*\\(sin|cos|tan|cot|sec|csc|sinh|cosh|tanh) \}")
@@ -508,6 +493,8 @@ def _operator_body(m: re.Match) -> str:
 
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
+_SMALL_SPACED_EQUALS = re.compile(rf"(?:[ \t]*(?<!\\){SPACE_SYMBOL})+[ \t]*(?==)|(?<==)(?:[ \t]*(?<!\\){SPACE_SYMBOL})+")
+_SPACED_EQUALS = re.compile(rf"(?:\s*(?<!\\){SPACE_SYMBOL}|\s*{TIE})+\s*(?==)|(?<==)(?:\s*(?<!\\){SPACE_SYMBOL}|\s*{TIE})+")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
 """A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
@@ -594,7 +581,6 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _GROUPED_SYMBOL.sub(_ungrouped, text)     # {\\Omega}_1 is \\Omega_1
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
-    text = _code_rate(text)                           # dx = v_x with no differential beside it: ẋ
-    text = _BRACKET_RATE.sub(lambda m: (r"\frac{d^2}{dt^2}(" if m.group(1) else r"\frac{d}{dt}(") + m.group(2) + ")",
-                             text)            # d(m v)/dt, d²(x)/dt²: the rate of the bracket, the second rate
+    text = _SPACED_EQUALS.sub(" ", text)              # a \\;=\\; b: the small spaces only set the = apart
+    text = differentials.written(text)                # \\mathrm{d}, dx = v_x, d(m v)/dt: the reader's derivatives
     return re.sub(r"[ \t]{2,}", " ", text).strip()

@@ -132,7 +132,7 @@ def _column_pairs(row: str) -> list[str]:
     bounds = [0] + [c + 1 for c in cuts[1::2]]
     ends = [c for c in cuts[1::2]] + [len(row)]
     pairs = [row[a:b] for a, b in zip(bounds, ends)]
-    if all(_RELATION_IN.search(p) for p in pairs) and not any(_CONTINUED.match(p) for p in pairs[1:]):
+    if all(RELATION.search(p) for p in pairs) and not any(_CONTINUED.match(p) for p in pairs[1:]):
         return pairs
     return [row]
 
@@ -163,12 +163,14 @@ _WHERE = re.compile(r"^(?P<claim>.*?(?<![<>!\\])=.*?)\s*(?:\\left\s*)?\(\s*(?P<n
                     r"(?P<value>[^=]+?)(?:\\right\s*)?\)\s*$", re.S)
 """A statement followed by a bracketed definition of a name: ``… = -\\alpha\\gamma_2 \\left(\\alpha = …\\right)``."""
 
-_RELATION_IN = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
+# a relation sign; a command is matched whole, so that \left( is no \le
+RELATION = re.compile(r"(?<![<>\\])=|\\(?:equiv|approx|geq?|leq?|simeq)(?![A-Za-z])|(?<!\\)[<>]")
+
 
 def _unwrapped(piece: str) -> str:
     """A statement written in parentheses, ``(\\dot\\theta = \\text{const})``, without them."""
     s = piece.strip()
-    if s.startswith("(") and s.endswith(")") and _RELATION_IN.search(s):
+    if s.startswith("(") and s.endswith(")") and RELATION.search(s):
         depth = 0
         for k, ch in enumerate(s):
             depth += ch == "("
@@ -200,7 +202,7 @@ def _lists(row: str) -> list[str]:
         commas = split_top(part)
         if len(commas) > 1 and not commas[-1].strip():
             commas.pop()                  # a comma that ends the row ends a sentence, it cuts nothing
-        if len(commas) > 1 and all(_RELATION_IN.search(c) for c in commas):
+        if len(commas) > 1 and all(RELATION.search(c) for c in commas):
             pieces.extend(commas)
         else:
             pieces.append(part)
@@ -258,7 +260,7 @@ def _statements(latex: str) -> tuple[str, ...]:
             continue
         if joined and re.search(r"[+\-]\s*$", joined[-1]):
             joined[-1] = joined[-1] + " " + row
-        elif joined and re.match(r"[+\-]", row) and not _RELATION_IN.search(row) and not joined[-1].rstrip().endswith("."):
+        elif joined and re.match(r"[+\-]", row) and not RELATION.search(row) and not joined[-1].rstrip().endswith("."):
             joined[-1] = joined[-1] + " " + row      # "&+ \frac{1}{2}I_2 …": a long right side carried over a row
         elif joined and re.search(r"(?<![<>!\\])=\s*$", joined[-1]) and row.startswith("="):
             joined[-1] = joined[-1] + " " + row[1:]      # "A = B =" then "= C": one chain, the = said twice
@@ -376,7 +378,7 @@ def _colon_parts(row: str) -> list[str]:
         return [row]                      # a : b : c = x : y : z is one statement, a proportion
     out = []
     for k, part in enumerate(parts):
-        if k < len(parts) - 1 and not _RELATION_IN.search(part):
+        if k < len(parts) - 1 and not RELATION.search(part):
             continue                      # a label (\\Omega_1:, \\theta:)
         out.append(part)
     return out

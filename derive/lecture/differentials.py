@@ -1,0 +1,36 @@
+"""A derivative's differentials as texts write them, rewritten to the one form the formula reader reads.
+
+* ``dx = v_x``, ``d\\varphi = p + …``: a simulation's derivative, written as code names it, is the
+  rate ẋ when no differential stands anywhere else in the formula;
+* ``\\frac{d(m v)}{dt}``, ``\\frac{d^2(x)}{dt^2}``, ``\\frac{d\\left(\\delta\\omega_1\\right)}{dt}``,
+  ``\\frac{\\mathrm{d}(\\delta\\omega_1)}{\\mathrm{d}t}``: the rate of a bracket, in italic or upright
+  differentials, is ``\\frac{d}{dt}`` of the bracket (the second rate, ``\\frac{d^2}{dt^2}``).
+
+Takes and gives one formula's LaTeX (`derive.lecture.source.normalize` calls `written`); imports
+nothing of derive's.
+"""
+from __future__ import annotations
+
+import re
+
+_D = r"(?:d|\\(?:mathrm|operatorname|text|rm)\s*(?:\{\s*d\s*\}|d))"      # italic or upright
+_CODE_RATE = re.compile(r"^\s*d\s*(\\[A-Za-z]+|[A-Za-z])((?:_(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*=(?!=)(.*)$", re.S)
+_DIFFERENTIAL_LETTER = re.compile(r"(?<![A-Za-z\\])d(?![A-Za-z]{2})")
+_BRACKET_RATE = re.compile(r"\\frac\s*\{\s*" + _D + r"\s*(\^\s*\{?\s*2\s*\}?\s*)?(?:\\left\s*)?"
+                           r"\(((?:[^(){}]|\([^(){}]*\))*?)(?:\\right\s*)?\)\s*\}"
+                           r"\s*\{\s*" + _D + r"\s*t\s*(?(1)\^\s*\{?\s*2\s*\}?\s*|)\}")
+
+
+def _code_rate(text: str) -> str:
+    """``dx = v_x``: the rate of the one symbol after d, when no other differential stands in the formula."""
+    m = _CODE_RATE.match(text)
+    if not m or _DIFFERENTIAL_LETTER.search(m.group(3)):
+        return text
+    return r"\dot{" + m.group(1) + "}" + m.group(2) + " =" + m.group(3)
+
+
+def written(text: str) -> str:
+    """The formula with its derivatives' differentials in the reader's form (see the module docstring)."""
+    text = _code_rate(text)
+    return _BRACKET_RATE.sub(lambda m: (r"\frac{d^2}{dt^2}(" if m.group(1) else r"\frac{d}{dt}(") + m.group(2) + ")",
+                             text)
