@@ -324,6 +324,7 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
     _said_of_display(names, body)
+    _rate_law(names, body)
     for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
         atoms = _atoms(tex)
         if len(atoms) == 1 and _fits("body angular velocity", atoms):
@@ -372,6 +373,33 @@ def _said_of_display(names: Names, body: str):
         atoms = [a[0] for a in sides if len(a) == 1]
         if atoms and len(atoms) == len(sides) and len({a.base for a in atoms}) == 1 and _fits(meaning, atoms):
             bind(names, atoms, meaning, f"line {body.count(chr(10), 0, m.start()) + 1}")
+
+
+_RATE_SIDE = re.compile(r"^\s*(?:\^\s*\{?\w\}?\s*)?(?:\\dot\s*\{(?P<dot>.+)\}|\\frac\s*\{\s*(?:\\(?:text|mathrm)\s*\{d\}|d)"
+                        r"\s*(?P<frac>[^{}]*(?:\{[^{}]*(?:\{[^{}]*\}[^{}]*)*\}[^{}]*)*)\}\s*\{\s*(?:\\(?:text|mathrm)\s*\{d\}|d)\s*t\s*\})\s*$")
+"""The rate of one symbol, written ``\\dot{𝐇}`` or ``\\frac{d𝐇}{dt}`` (a frame's label before it, ``^N``, allowed)."""
+
+
+def _rate_law(names: Names, body: str):
+    """Euler's second law displayed alone, ``\\dot{\\vec{H}} = \\vec{L}``: the rate of the angular momentum
+    (a letter that may name it) equals the torque, so the letter on the other side is the text's
+    torque (Schaub's 𝐋, a torque where other texts write 𝐍 or 𝛕: a letter the prose takes for the
+    angular momentum, so only the law makes it the torque), unless the prose named it."""
+    for m in _DISPLAY.finditer(body):
+        inner = re.sub(r"^\$\$|\$\$$|^\\\[|\\\]$", "", m.group(0).strip()).strip()
+        if inner.count("=") != 1 or "\\\\" in inner or "\\begin" in inner:
+            continue
+        left, right = (side.strip().rstrip(".,") for side in inner.split("="))
+        rate = _RATE_SIDE.match(source.normalize(left))
+        whole, torque = _atoms(source.normalize((rate.group("dot") or rate.group("frac")) if rate else "")), \
+            _atoms(source.normalize(right))
+        if len(whole) != 1 or len(torque) != 1 or whole[0].base == torque[0].base or whole[0].dots or \
+                torque[0].dots or not _fits("angular momentum", whole) or \
+                not (_fits("torque", torque) or torque[0].base == "L" and (torque[0].bold or torque[0].sub)):
+            continue
+        letter = (torque[0].base, "plain" if not (torque[0].bold or torque[0].sub) else "vector")
+        if letter not in names.letters:
+            bind(names, torque, "torque", f"line {body.count(chr(10), 0, m.start()) + 1}")
 
 
 def _components_of(names: Names, text: str, starts, offset):
