@@ -185,6 +185,15 @@ SHORT = {
     ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "found"):
         "0 of 1: Omega_2 = phi-dot - theta-dot sin(alpha) (the sign of its second term) sits in the disk's body "
         "angular velocity, which the reader does not derive from the text's R = R_3(theta) R_1(alpha) R_2(phi)",
+    ("physics-se-euler-equations-inertial-body-frame-rotation-matrix", "checked"):
+        "1 of 2 on the first read: its two align* derivations run on the skew matrix of omega under an underbrace, "
+        "R^T omega-dot braced as omega_B-dot and steps joined by ',\\text{with}' and '\\Rightarrow'",
+    ("physics-se-euler-equations-inertial-body-frame-rotation-matrix", "found"):
+        "0 of 1 on the first read: its slip is the step 'I = R I_B' (the inertial inertia tensor is R I_B R^T) inside "
+        "a chain whose boxed result holds",
+    ("physics-se-inertia-tensor-rotated-object-similarity-transform", "checked"):
+        "0 of 6 on the first read: L = I omega and its chain premultiplied by the rotation matrix R write the matrix "
+        "product with \\times (R \\times I \\times R^T)",
 }
 
 FLOOR = {"checked": 675, "slips_flagged": 78, "holds_flagged": 0}
