@@ -196,6 +196,14 @@ SHORT = {
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "found"):
         "0 of 1: the slip (f-double-dot = -r for -omega^2 r, n-dot for n-double-dot) sits in the body-surface "
         "frame's trihedron, whose vectors the reader does not read",
+    ("physics-se-euler-equations-inertial-body-frame-rotation-matrix", "found"):
+        "its slip is the step 'I = R I_B' (the inertial inertia tensor is R I_B R^T) inside a chain whose boxed "
+        "result holds: the reader does not model the rotation matrix R that carries body components into inertial "
+        "ones, so I = R I_B is recorded as the text's definition of I and the step is not judged",
+    ("physics-se-inertia-tensor-rotated-object-similarity-transform", "checked"):
+        "its chain is in plain letters, L = I omega premultiplied by the rotation matrix R with the matrix product "
+        "written \\times (R \\times I \\times R^T): the reader reads \\times as the cross product, ties plain I, L "
+        "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1)",
 }
 
 FLOOR = {"checked": 679, "slips_flagged": 78, "holds_flagged": 0}

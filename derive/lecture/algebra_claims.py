@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
@@ -26,6 +26,7 @@ import sympy as sp
 
 from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
+from derive.lecture import frame_labels
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
@@ -61,6 +62,7 @@ class AlgebraStatements:
         statement has its markers; never the lecture's own vector notation."""
         if va.lecture_notation(text):
             return False
+        text = (frame_labels.dropped(text) or (text,))[0]          # 𝛚_B, 𝐈_B: one frame's components
         text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), None)   # J_z = Σ mᵢ rᵢ²: a sum
         state = self._alg
         if va.markers(text, bold=self._alg_read) or _torque_law(text, state):
@@ -68,9 +70,20 @@ class AlgebraStatements:
         return self._alg_read and (state.head is not None and text.startswith(state.head) or _mentions(text, state))
 
     def _algebra(self, line, piece, text) -> bool:
-        """Read and judge a statement (False when this reader cannot read it)."""
+        """Read and judge a statement (False when this reader cannot read it); one written in a
+        frame's components (`derive.lecture.frame_labels`) is read without the frame's label."""
         if va.lecture_notation(text):
             return False
+        framed = frame_labels.dropped(text)
+        if framed is None:
+            return self._algebra_unlabelled(line, piece, text)
+        start = len(self.claims)
+        read = self._algebra_unlabelled(line, piece, framed[0])
+        for claim in self.claims[start:]:
+            claim.why += frame_labels.WHY.format(label=framed[1]) if claim.verdict != "unchecked" else ""
+        return read
+
+    def _algebra_unlabelled(self, line, piece, text) -> bool:
         written, text = text, chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), line)   # J_z as defined
         state = self._alg
         axis = fixed_axis.setting(text)

@@ -12,7 +12,8 @@ it (``&+ \\frac{1}{2}I_2 …``), and one ending in ``=`` on a next that opens wi
 ``\\quad``, ``\\Rightarrow``, ``\\implies``, ``\\Leftrightarrow``, ``\\iff`` and a spaced ``\\text{and}``; a piece at top-level ``;``
 and at commas between relations (never inside brackets). A label before a colon (``\\theta:``,
 ``\\Omega_1 : \\quad``) and words after a statement (``&&\\text{stable}``) are dropped; a case
-before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own;
+before a colon (``\\theta = 0: \\omega_z = \\omega_3``) is a statement of its own; an
+equation's number written in letters after a quad or a tie (``\\quad~Eq. (1)``) is dropped;
 ``\\text{const}`` is kept as the constant it names, and so are words after a statement that say
 it is a constant (``= E \\quad \\text{(const.)}``: E names a conserved quantity); a relation in
 brackets after a statement (``\\dot\\omega_3 = -\\alpha\\gamma_2 \\left(\\alpha = \\frac{Mgx_C}{I_3}\\right)``)
@@ -251,7 +252,7 @@ def statements(latex: str) -> list[str]:
 def _statements(latex: str) -> tuple[str, ...]:
     """`statements`, once per display: a display read again (a second reading, a probe in another
     sequence) is cut as before."""
-    body = _AND.sub(r" \\quad ", _strip_envs(latex)).replace("\\;", "\\\x00")
+    body = _AND.sub(r" \\quad ", _EQUATION_NUMBER.sub("", _strip_envs(latex))).replace("\\;", "\\\x00")
     rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
@@ -279,6 +280,12 @@ def _statements(latex: str) -> tuple[str, ...]:
                     if _trimmed(one) and not _text_only(one):
                         out.extend(_sign_cases(_trimmed(one)))
     return tuple(out)
+
+
+# a text without \tag numbers a row in letters after a wide space (``\quad~Eq. (1)``): a name, not a factor
+_EQUATION_NUMBER = re.compile(r"(?:" + QUAD + r"|~)+\s*(?:Eqs?|Eqn|Equation)\.?\s*~?\s*\(\s*\d+[a-z]?\s*\)"
+                              r"|(?:" + QUAD + r"|~)+\s*\\(?:text|mbox|textrm)\s*\{\s*(?:Eqs?|Eqn|Equation)\.?\s*~?\s*"
+                              r"\(\s*\d+[a-z]?\s*\)\s*\}")
 
 
 # "and" between two statements, spaced with ~ or \quad (``a = b ~~~\text{and}~~~ c = d``): a cut

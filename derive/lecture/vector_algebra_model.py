@@ -82,6 +82,8 @@ positions are measured from, the origin of this model."""
 _POINT_SUPERSCRIPT = re.compile(r"\^\s*\{\s*(?:" + "|".join(POINT_LABELS) + r")\s*\}")
 _DOTLESS = re.compile(r"([A-Za-z])?\\([ij])math(?![A-Za-z])")
 """ı, ȷ: i and j, set apart from a command written before them unbraced (``\\hat\\imath`` is î)."""
+# an accent over a bold letter written without braces, \dot{\boldsymbol\omega}: the accent over the bold letter
+_ACCENTED_BOLD = re.compile(r"\\(dot|ddot)\s*\{\s*\\(boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
@@ -146,7 +148,8 @@ def _prepare(text: str) -> str:
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, an acceleration's
 label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm (and
     under a sum a piece's Δmᵢ and ρᵢ … ΔVᵢ as mᵢ), the
-    momentum element d𝐩 as 𝐯 dm, and beside a dyadic 𝐞 as the unit tensor."""
+    momentum element d𝐩 as 𝐯 dm, beside a dyadic 𝐞 as the unit tensor, and an accent over a bold
+    letter written without braces (``\\dot{\\boldsymbol\\omega}``) as over the braced letter."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
     text = _MOMENT_OF.sub(lambda m: f"(\\vec r{'_' + m.group(3) if m.group(3) else ''} \\times {m.group(2)})_{m.group(1)}", text)
@@ -156,6 +159,7 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
         text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
     text = _mass_element(_pieces(text) if "\\sum" in text else text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
+    text = _ACCENTED_BOLD.sub(r"\\\1{\\\2{\3}}", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
     text = _DOTLESS.sub(lambda m: (m[1] + " " if m[1] else "") + m[2], text.replace("\\otimes", " "))
