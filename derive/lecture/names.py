@@ -333,6 +333,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             names.frames.setdefault(key, atoms[0].sup)
             names.scoped.setdefault(("symbols", key), []).append((line, "body angular velocity"))
             names.where.setdefault(key, f"line {line}")
+            if not (atoms[0].bold or atoms[0].sub or atoms[0].sup):
+                # in the hat map's own section its components Ω₁, Ω₂, Ω₃ are the body ones, as the map defines them
+                names.scoped.setdefault(("letters", (atoms[0].base, "vector")), []).append((line, "body angular velocity"))
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():
