@@ -32,7 +32,7 @@ angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z
 body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
                                      a bare letter (Ω) is the column 𝛚 and gives its components
                                      Ωᵢ; the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`), binds the
-                                     symbol alone
+                                     symbol, and Ωᵢ in the hat map's own section
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
