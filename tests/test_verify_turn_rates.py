@@ -79,3 +79,10 @@ def test_which_frame_the_capital_axes_name_is_the_prose_s_to_say():
 def test_rates_about_axes_of_one_case_only_are_not_read_so():
     # small letters alone say nothing of which frame they are
     assert not {"holds", "fails"} & _in("\\bm\\omega = \\dot{\\phi} \\bm e_z + \\dot{\\theta} \\bm e_x")
+
+
+def test_the_rates_about_axes_lettered_i_j_k_read_as_x_y_z():
+    fixed = "The fixed axes are $\\hat I, \\hat J, \\hat K$ and the body's $\\hat i, \\hat j, \\hat k$.\n\n"
+    assert _in("\\boldsymbol\\omega = \\dot\\phi \\hat{K} + \\dot\\theta \\hat{N} + \\dot\\psi \\hat{k}", prose=fixed) == {"holds"}
+    assert _in("\\boldsymbol\\omega = \\dot\\phi \\mathbf{K} + \\dot\\theta \\mathbf{N} + \\dot\\psi \\mathbf{k}", prose=fixed) == {"holds"}
+    assert _in("\\boldsymbol\\omega = \\dot\\psi \\hat{K} + \\dot\\theta \\hat{N} + \\dot\\phi \\hat{k}", prose=fixed) == {"fails"}

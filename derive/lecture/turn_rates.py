@@ -17,8 +17,8 @@ texts that name the frames so write them; ``space``, ``fixed``, ``inertial`` nam
 does not hold is `fails` only when every frame it names is space or body; with a frame named by
 primes it stays `unchecked`, saying how the primes were read (a text may count its primes
 otherwise). A member may also be the angles' rates times unit vectors of axes named by letter
-(``\\dot\\phi \\bm e_Z + \\dot\\theta \\bm e_N + \\dot\\psi \\bm e_z``, ``\\hat{Z}``): a capital X, Y, Z
-the fixed frame's axis, a small x, y, z the body's, N the line of nodes (the second turn's axis, for a
+(``\\dot\\phi \\bm e_Z + \\dot\\theta \\bm e_N + \\dot\\psi \\bm e_z``, ``\\hat{Z}``, ``\\hat{K}``, ``\\mathbf{k}``): a
+capital X, Y, Z (I, J, K) the fixed frame's axis, a small x, y, z (i, j, k) the body's, N the line of nodes (the second turn's axis, for a
 sequence whose first and third axes agree), read only where the member writes both capitals and small
 letters; a frame bar after a vector (``\\bm\\Omega\\big|_{(Z,N,z)}``) names the axes it is written along
 and is dropped. Which frame the capitals name is the text's to say (some letter the body's axes X, Y,
@@ -48,7 +48,9 @@ _COLUMN = re.compile(r"\s*(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big)\s*[\[(]\s*
 _AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
 _NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
 _UNIT = (r"(?:\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNxyz])\s*\}?"
-         r"|\\(?:wide)?hat\s*\{?\s*(?:\\(?:boldsymbol|mathbf|bm)\s*)?\{?\s*([XYZNxyz])\s*\}?\s*\}?)(?![A-Za-z_])")
+         r"|\\(?:wide)?hat\s*\{?\s*(?:\\(?:boldsymbol|mathbf|bm)\s*)?\{?\s*([XYZNxyzIJKijk])\s*\}?\s*\}?"
+         r"|\\(?:boldsymbol|mathbf|bm)\s*\{?\s*([IJKNijk])\s*\}?)(?![A-Za-z_'])")
+_LETTER_AXIS = {"i": "x", "j": "y", "k": "z", "x": "x", "y": "y", "z": "z"}
 _AXIS_TERM = re.compile(r"(.*?)\s*" + _UNIT + r"\s*$", re.S)
 """A term that ends in a unit vector named by its axis letter: the coefficient, then the letter."""
 _BAR = re.compile(r"\s*(?:\\(?:big|Big|bigg|Bigg|right)\s*)?\|\s*_\s*\{[^{}]*\}")
@@ -79,7 +81,7 @@ def capitals_frame(body: str) -> int | None:
                 continue
             for m in _INLINE.finditer(clause):
                 letters = set(re.findall(r"[A-Za-z]", re.sub(r"\\[A-Za-z]+", " ", m.group(1))))
-                if set("XYZ") <= letters and not letters & set("xyz"):
+                if (set("XYZ") <= letters or set("IJK") <= letters) and not letters & set("xyzijk"):
                     said.add(0 if words.pop() else 3)
                     break
     return said.pop() if len(said) == 1 else None
@@ -156,14 +158,14 @@ class TurnRates:
             m = _AXIS_TERM.fullmatch(term.strip())
             if m is None:
                 return None
-            letter = m.group(2) or m.group(3)
+            letter = m.group(2) or m.group(3) or m.group(4)
             coefficient = m.group(1).strip().removeprefix("+").strip()
             if letter == "N":
                 if a1 != a3:
                     return None      # a line of nodes only in a sequence whose first and third axes agree
                 axis = frames[1] * rot.unit(a2)
             else:
-                axis = frames[capitals if letter.isupper() else 3 - capitals] * rot.unit(letter.lower())
+                axis = frames[capitals if letter.isupper() else 3 - capitals] * rot.unit(_LETTER_AXIS[letter.lower()])
             if coefficient in ("", "+", "-"):
                 value = sp.Integer(-1 if coefficient == "-" else 1)
             else:
@@ -189,7 +191,7 @@ class TurnRates:
         """Judge 𝛚 = a sum of the rates about lettered axes (see the module docstring); False when the
         statement is not one."""
         letters = {g for m in re.finditer(_UNIT, piece) for g in m.groups() if g}
-        if not (letters & set("XYZ") and letters & set("xyz")):
+        if not (letters & set("XYZIJK") and letters & set("xyzijk")):
             return False
         members = _members(_BAR.sub("", piece))
         if members is None or len(members) != 2:
