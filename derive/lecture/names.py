@@ -32,7 +32,7 @@ angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z
 body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
                                      a bare letter (Ω) is the column 𝛚 and gives its components
                                      Ωᵢ; the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`), binds the
-                                     symbol alone
+                                     symbol, and Ωᵢ in the hat map's own section
 torque                      letter   the torque's body components τᵢ (Euler's equations
                                      with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
 mass                        symbol   M
@@ -334,6 +334,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             names.frames.setdefault(key, atoms[0].sup)
             names.scoped.setdefault(("symbols", key), []).append((line, "body angular velocity"))
             names.where.setdefault(key, f"line {line}")
+            if not (atoms[0].bold or atoms[0].sub or atoms[0].sup):
+                # in the hat map's own section its components Ω₁, Ω₂, Ω₃ are the body ones, as the map defines them
+                names.scoped.setdefault(("letters", (atoms[0].base, "vector")), []).append((line, "body angular velocity"))
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():

@@ -19,7 +19,7 @@ What is normalised:
   non-breaking space) becomes its command; HTML entities (``&#8211;``, ``&minus;``, ``&lt;``)
   are decoded.
 * **Not mathematics**: ``\\tag``, ``\\notag``, ``\\nonumber``, ``\\label``, ``\\displaystyle``,
-  ``\\hspace``, ``\\phantom``, comments, ``\\left.`` and ``\\right.`` are dropped.
+  ``\\hspace``, ``\\phantom``, ``\\noalign``, comments, ``\\left.`` and ``\\right.`` are dropped.
 * **Wrappers**: ``\\boxed{X}``, ``\\ensuremath``, ``\\mathcal``/``\\mathscr`` (their letter),
   ``\\pmb``/``\\vb``/``\\bm`` (bold), ``\\vu`` (a bold hat), ``\\operatorname{sin}`` (the
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
@@ -165,7 +165,7 @@ definitions_removed = texmacros.definitions_removed
 _DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle": "", "textstyle": "",
          "scriptstyle": "", "hspace": "*{", "vspace": "*{", "phantom": "{", "hphantom": "{",
          "vphantom": "{", "mathstrut": "", "strut": "", "eqref": "{", "ref": "{", "allowbreak": "",
-         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": ""}
+         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{"}
 _WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
          "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
          "cancel": "", "bbox": None}

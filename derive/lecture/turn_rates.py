@@ -16,7 +16,17 @@ texts that name the frames so write them; ``space``, ``fixed``, ``inertial`` nam
 (``intermediate``) is the chain's own name for the next member and is left out. A statement that
 does not hold is `fails` only when every frame it names is space or body; with a frame named by
 primes it stays `unchecked`, saying how the primes were read (a text may count its primes
-otherwise). May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+otherwise). A member may also be the angles' rates times unit vectors of axes named by letter
+(``\\dot\\phi \\bm e_Z + \\dot\\theta \\bm e_N + \\dot\\psi \\bm e_z``, ``\\hat{Z}``, ``\\hat{K}``, ``\\mathbf{k}``): a
+capital X, Y, Z (I, J, K) the fixed frame's axis, a small x, y, z (i, j, k) the body's, N the line of nodes (the second turn's axis, for a
+sequence whose first and third axes agree), read only where the member writes both capitals and small
+letters; a frame bar after a vector (``\\bm\\Omega\\big|_{(Z,N,z)}``) names the axes it is written along
+and is dropped. Which frame the capitals name is the text's to say (some letter the body's axes X, Y,
+Z): its prose decides where it puts the word fixed, inertial or space, or body or moving, nearest to
+the capital axes in a sentence ("a *fixed* frame has the basis $(\\bm e_X,\\bm e_Y,\\bm e_Z)$"). A
+statement holds when it holds in the frame the prose names (the fixed one where it names none); it
+`fails` when it does not hold there, the prose having named it, or under either reading.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -37,6 +47,44 @@ _COLUMN = re.compile(r"\s*(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big)\s*[\[(]\s*
 """A written column, bare or in brackets, ``\\left``/``\\right`` or sized (``\\bigl[ … \\bigr]``)."""
 _AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
 _NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
+_UNIT = (r"(?:\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNxyz])\s*\}?"
+         r"|\\(?:wide)?hat\s*\{?\s*(?:\\(?:boldsymbol|mathbf|bm)\s*)?\{?\s*([XYZNxyzIJKijk])\s*\}?\s*\}?"
+         r"|\\(?:boldsymbol|mathbf|bm)\s*\{?\s*([IJKNijk])\s*\}?)(?![A-Za-z_'])")
+_LETTER_AXIS = {"i": "x", "j": "y", "k": "z", "x": "x", "y": "y", "z": "z"}
+_AXIS_TERM = re.compile(r"(.*?)\s*" + _UNIT + r"\s*$", re.S)
+"""A term that ends in a unit vector named by its axis letter: the coefficient, then the letter."""
+_BAR = re.compile(r"\s*(?:\\(?:big|Big|bigg|Bigg|right)\s*)?\|\s*_\s*\{[^{}]*\}")
+"""A frame bar, ``\\big|_{(xyz)}``: the axes a vector is written along."""
+_FRAME_WORDS = re.compile(r"\b(?:(fixed|inertial|space|laboratory|fixe)|(body|moving|rotating|mobile))\b", re.I)
+_INLINE = re.compile(r"\$([^$]+)\$")
+_CLAUSE = re.compile(r",|\b(?:and|to|while|whereas|but)\b")
+
+
+def capitals_frame(body: str) -> int | None:
+    """The frame the text's capital axes X, Y, Z name, by its prose (see the module docstring): 0 the
+    fixed frame, 3 the body's, None where the prose names neither or both."""
+    said = set()
+    for sentence in re.split(r"(?<=[.;])\s|\n\s*\n", body):
+        # a clause of the sentence: its math kept whole, cut at commas, "and", "to", "while" outside it
+        parts = re.split(r"(\$[^$]+\$)", sentence)
+        clauses, current = [], ""
+        for k, part in enumerate(parts):
+            pieces = [part] if k % 2 else re.split(_CLAUSE, part)
+            current += pieces[0]
+            for piece in pieces[1:]:
+                clauses.append(current)
+                current = piece
+        clauses.append(current)
+        for clause in clauses:
+            words = {bool(w.group(1)) for w in _FRAME_WORDS.finditer(clause)}
+            if len(words) != 1:
+                continue
+            for m in _INLINE.finditer(clause):
+                letters = set(re.findall(r"[A-Za-z]", re.sub(r"\\[A-Za-z]+", " ", m.group(1))))
+                if (set("XYZ") <= letters or set("IJK") <= letters) and not letters & set("xyzijk"):
+                    said.add(0 if words.pop() else 3)
+                    break
+    return said.pop() if len(said) == 1 else None
 
 
 def _frame(label: str):
@@ -93,6 +141,87 @@ class TurnRates:
         k = rot.ANGLES.index(value)
         return rot.RATES[k] * self._turn_frames()[k] * rot.unit(self.d.conv.axes[k])
 
+    def _axis_sum(self, text: str, capitals: int):
+        """The space components of a sum of coefficients times lettered unit vectors, capitals
+        naming the frame after ``capitals`` turns (0 or 3) and small letters the other; None when
+        the member is no such sum or the text's names do not read."""
+        terms, depth, start = [], 0, 0
+        for k, ch in enumerate(text):
+            depth += (ch in "{[(") - (ch in "}])")
+            if ch in "+-" and depth == 0 and k > start and text[start:k].strip():
+                terms.append(text[start:k])
+                start = k
+        terms.append(text[start:])
+        frames, (a1, a2, a3) = self._turn_frames(), self.d.conv.axes
+        total = sp.zeros(3, 1)
+        for term in terms:
+            m = _AXIS_TERM.fullmatch(term.strip())
+            if m is None:
+                return None
+            letter = m.group(2) or m.group(3) or m.group(4)
+            coefficient = m.group(1).strip().removeprefix("+").strip()
+            if letter == "N":
+                if a1 != a3:
+                    return None      # a line of nodes only in a sequence whose first and third axes agree
+                axis = frames[1] * rot.unit(a2)
+            else:
+                axis = frames[capitals if letter.isupper() else 3 - capitals] * rot.unit(_LETTER_AXIS[letter.lower()])
+            if coefficient in ("", "+", "-"):
+                value = sp.Integer(-1 if coefficient == "-" else 1)
+            else:
+                try:
+                    value = lx.parse(coefficient, self.vocab).members[0].value
+                except (lx.NotRead, IndexError, AttributeError):
+                    return None
+                if not isinstance(value, sp.Expr) or not value.free_symbols <= set(rot.ANGLES) | set(rot.RATES):
+                    return None
+            total += value * axis
+        return total
+
+    def _names_omega(self, text: str) -> bool:
+        """Whether a member is the body's 𝛚 alone, a bold letter the text names the angular velocity."""
+        if not re.fullmatch(r"\s*\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*\\(?:omega|Omega)\s*\}?\s*", text):
+            return False
+        try:
+            return lx.parse(text, self.vocab).members[0].value is lx.OMEGA_VEC
+        except (lx.NotRead, IndexError, AttributeError):
+            return False
+
+    def _axes_named(self, line, piece) -> bool:
+        """Judge 𝛚 = a sum of the rates about lettered axes (see the module docstring); False when the
+        statement is not one."""
+        letters = {g for m in re.finditer(_UNIT, piece) for g in m.groups() if g}
+        if not (letters & set("XYZIJK") and letters & set("xyzijk")):
+            return False
+        members = _members(_BAR.sub("", piece))
+        if members is None or len(members) != 2:
+            return False
+        omega = [m for m in members if self._names_omega(m)]
+        if len(omega) != 1:
+            return False
+        rest = next(m for m in members if m is not omega[0])
+        said = capitals_frame(self.notes.body)
+        readings = (3, 0) if said == 3 else (0, 3)
+        target = self._turn_vector(None)
+        held = [None if v is None else all(_zero(e) for e in v - target)
+                for v in (self._axis_sum(rest, capitals) for capitals in readings)]
+        if held[0] is None:
+            return False
+        where = ("the capitals the " + ("body's" if readings[0] == 3 else "fixed frame's") + " axes"
+                 + (" as the prose names them" if said is not None else ""))
+        if held[0]:
+            self._add(line, piece, "identity", "holds",
+                      f"the angles' rates about their turns' axes, {where}, N the line of nodes")
+        elif held[1] and said is None:
+            self._add(line, piece, "identity", "unchecked",
+                      "holds only reading the capitals as the body's axes and the small letters as the fixed "
+                      "frame's, which the text does not say")
+        else:
+            self._add(line, piece, "identity", "fails",
+                      f"each angle's rate is about its own turn's axis ({where}; the first angle's about the fixed "
+                      "frame's, the second's about the line of nodes, the third's about the body's): the sum differs")
+        return True
+
     def _turn_member(self, text: str):
         """(space components, frame) of one member; frame None for a vector, (n, named) for its
         components in a frame; "skip" for a frame the reader does not know; None when not read."""
@@ -133,7 +262,7 @@ class TurnRates:
         """Judge a statement of turns' angular velocities (see the module docstring); False when
         it is not one."""
         if not re.search(rf"{_OMEGA}\s*_\s*\{{?\s*\\[A-Za-z]+", piece):
-            return False
+            return re.search(_UNIT, piece) is not None and self._axes_named(line, piece)
         members = _members(piece)
         if members is None:
             return False
