@@ -24,6 +24,7 @@ from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
+from derive.lecture.implications import Implications
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
@@ -56,5 +57,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution):
+                   EllipticSolution, Implications):
     """Every reading rule, in method-lookup order (see the module docstring)."""
