@@ -19,6 +19,7 @@ from derive.lecture.conditions import Conditions
 from derive.lecture.constant_cases import ConstantCases
 from derive.lecture.context import Reading
 from derive.lecture.coordinate_statements import CoordinateStatements
+from derive.lecture.determinant_steps import DeterminantSteps
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
@@ -57,5 +58,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution, Implications):
+                   EllipticSolution, Implications, DeterminantSteps):
     """Every reading rule, in method-lookup order (see the module docstring)."""
