@@ -246,6 +246,7 @@ class Checker(ReadingRules):
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)
+                self._shape_moment(item.line, piece, before)
             except _NOT_FOLLOWED as err:
                 # a formula the checker cannot follow is reported as such, never given a verdict
                 self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {_failed_step(err)}")

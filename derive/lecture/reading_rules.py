@@ -41,6 +41,7 @@ from derive.lecture.quaternions import Quaternions
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
+from derive.lecture.shape_moments import ShapeMoments
 from derive.lecture.stated_theorems import StatedTheorems
 from derive.lecture.text_matrices import TextMatrices
 from derive.lecture.text_motion import TextMotion
@@ -58,5 +59,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution, Implications, DeterminantSteps):
+                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments):
     """Every reading rule, in method-lookup order (see the module docstring)."""
