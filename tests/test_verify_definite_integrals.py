@@ -65,3 +65,16 @@ def test_a_row_going_on_with_equals_after_an_integral_gives_the_value_it_works_o
     # the same value in a display of its own after the integral is not that row's continuation
     apart = row.split(r"\\[4pt]")[0] + r"\end{align*}$$" + "\n\nso that\n\n$$I_{11} = \\frac{1}{3} \\rho b^4$$"
     assert all(c.verdict not in ("holds", "fails") for c in kept.check_text(HEAD + apart) if "frac{1}{3}" in c.latex)
+
+
+def test_a_named_chain_whose_value_keeps_a_name_the_integral_dropped_fails():
+    # the cylinder's volume worked in rings: the height b, a name of the text's, left out of the integral
+    body = (r"$$V = b \int_0^a 2\pi r \, \mathrm{d} r = \pi a^2 b$$" "\n\n"
+            r"$$V = \int_0^a 2\pi r \, \mathrm{d} r = \pi a^2 b$$")
+    assert [c.verdict for c in _claims(body)] == ["holds", "fails"]
+
+
+def test_a_value_in_a_name_the_text_has_not_used_is_not_compared():
+    # ∫ … = σ π a²: σ first met here may be what the equation sets, not a value of the integral
+    body = r"$$m = \int_0^a 2\pi r \, \mathrm{d} r = \sigma \pi a^2$$"
+    assert [c.verdict for c in _claims(body)] == ["unchecked"]

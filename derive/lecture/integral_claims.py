@@ -6,9 +6,10 @@ Takes: a statement of the notes checker (`derive.lecture.notes_check.Checker`) w
 integral with both bounds written (`derive.lecture.definite_integrals`). Gives: the mixin
 `IntegralClaims`, whose ``_definite_integral`` judges the links of the statement's chain that put
 an integral beside a value it works out to: a closed form in no name the integral does not have
-(its value, not a condition such as ∫ρ dV = M that sets a name), or a second integral in the same
-names. Such a link `holds` when SymPy finds the two equal, or where an integral stays unevaluated,
-when they agree to 30 digits at three points; it `fails` when both sides are closed forms that
+(its value, not a condition such as ∫ρ dV = M that sets a name), or, in a chain whose first member
+is a name (``V = \\int_0^R 2\\pi r\\,dr = \\pi R^2 H``), in no name the text has not used before it, or a
+second integral in the same names. Such a link `holds` when SymPy finds the two equal, or where an
+integral stays unevaluated, when they agree to 30 digits at three points; it `fails` when both sides are closed forms that
 differ at a point of positive values (the text's settings put in first), its why giving the
 integral's value as written. A numeric disagreement is never a flag (a point may leave the
 integral's domain). Nothing else of the statement is read: a name set to an integral (``I_1 =
@@ -107,6 +108,9 @@ class IntegralClaims:
             self._add(line, piece, "unknown", "unchecked", err.why)
             return True
         spans, done = _spans(text, parsed), False
+        # a chain that names what it works out (V = ∫ … = value) says the value is the integral's, so
+        # the value's names the text has used before are not set by it
+        named = len(parsed.members) > 2 and isinstance(parsed.members[0].value, lx.Generic) and not DEFINITE.search(spans[0])
         if DEFINITE.search(spans[-1]):
             self._integral_tail = (line, spans[-1])
         for k, rel in enumerate(parsed.relations):
@@ -116,7 +120,8 @@ class IntegralClaims:
             if not DEFINITE.search(spans[k]):
                 a, b = b, a                     # a: an integral
             verdict = self._integral_link(sp.sympify(a), sp.sympify(b), bool(DEFINITE.search(spans[k + 1]))
-                                          and bool(DEFINITE.search(spans[k])))
+                                          and bool(DEFINITE.search(spans[k])),
+                                          self._written_before(line) if named and k else set())
             if verdict is not None:
                 self._add(line, piece, "identity", *verdict)
                 done = True
@@ -126,10 +131,23 @@ class IntegralClaims:
                       "which may hold a density or a Jacobian the integral leaves out): not compared")
         return True
 
-    def _integral_link(self, a, b, both):
-        """(verdict, why) of a = b, a an integral as SymPy read it, or None where it is not compared."""
+    def _written_before(self, line) -> set:
+        """The symbols of the text's math on lines before ``line`` (read again: a probe of this display
+        may have met its own names already)."""
+        keys = set()
+        for item in self.notes.items:
+            if item.line < line and item.latex:
+                try:
+                    keys |= {t.value.with_(text="") for t in lx.scan(item.latex) if t.kind == "atom"}
+                except lx.NotRead:
+                    continue
+        return {s for s, key in self.vocab.generic.items() if key.with_(text="") in keys}
+
+    def _integral_link(self, a, b, both, known=frozenset()):
+        """(verdict, why) of a = b, a an integral as SymPy read it, or None where it is not compared;
+        ``known``: names b may hold that a lacks (the text's earlier names, in a chain that names its value)."""
         names_a, names_b = a.free_symbols, b.free_symbols
-        if any(isinstance(s, lx.Quantity) for s in names_a | names_b) or not names_b <= names_a \
+        if any(isinstance(s, lx.Quantity) for s in names_a | names_b) or not names_b - names_a <= set(known) \
                 or (both and names_a != names_b):
             return None
         given = {s: v for s, v in self.ctx.subs.items() if s in names_a}

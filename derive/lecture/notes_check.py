@@ -239,10 +239,14 @@ class Checker(ReadingRules):
             before = len(self.claims)
             # what is written back uses the text's latest spelling of each symbol it has written
             self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
+            implied = self._implied(pieces, k, latex)       # judged before the conclusion sets its name
             try:
                 if not self._turn_rates(item.line, piece):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._stated_theorem(item.line, piece, before)
+                self._judge_implied(implied, before)
+                self._row_step(item.line, piece, before)
+                self._shape_moment(item.line, piece, before)
             except _NOT_FOLLOWED as err:
                 # a formula the checker cannot follow is reported as such, never given a verdict
                 self._add(item.line, piece, "unknown", "unchecked", f"cannot check it: {_failed_step(err)}")

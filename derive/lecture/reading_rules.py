@@ -19,11 +19,13 @@ from derive.lecture.conditions import Conditions
 from derive.lecture.constant_cases import ConstantCases
 from derive.lecture.context import Reading
 from derive.lecture.coordinate_statements import CoordinateStatements
+from derive.lecture.determinant_steps import DeterminantSteps
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
+from derive.lecture.implications import Implications
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
@@ -39,6 +41,7 @@ from derive.lecture.quaternions import Quaternions
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
+from derive.lecture.shape_moments import ShapeMoments
 from derive.lecture.stated_theorems import StatedTheorems
 from derive.lecture.text_matrices import TextMatrices
 from derive.lecture.text_motion import TextMotion
@@ -56,5 +59,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution):
+                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -466,6 +466,10 @@ class Algebra:
             if "omega" in sub:
                 n = W / sp.sqrt(W.dot(W))
                 return (n.T * tensor(self.system) * n)[0, 0]
+            if len(sub) == 1 and sub in "xyz" and not bold and re.search(r"\\sum|\\mathbf\{\\" + INTEGRAL, p.source):
+                # I_x beside the body's own integral or sum is the moment about the x axis, I_xx; a
+                # relation of moments alone (I_x + I_y = I_z) is a case of the text's body, left unread
+                return tensor(self.system)[AXES[sub], AXES[sub]]
             if len(sub) == 2 and not bold:
                 if (base, sub) in self.state.defs:
                     return self.state.defs[(base, sub)]
