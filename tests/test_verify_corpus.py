@@ -204,7 +204,7 @@ SHORT = {
         "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1)",
 }
 
-FLOOR = {"checked": 686, "slips_flagged": 81, "holds_flagged": 0}
+FLOOR = {"checked": 696, "slips_flagged": 82, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -29,7 +29,7 @@ from derive.lecture import latex as lx
 R_ = sp.Rational
 # each body: (pattern of the prose, {axis: coefficients of M x², M y² for lengths (x, y)})
 _BODIES = (
-    ("shell", r"spherical shell|hollow sphere|thin shell", {"centre": (R_(2, 3),), "plane": (R_(2, 3),)}),
+    ("shell", r"spherical shell|hollow (?:sphere|ball)|thin shell", {"centre": (R_(2, 3),), "plane": (R_(2, 3),)}),
     ("sphere", r"solid sphere|\bsphere\b|\bball\b", {"centre": (R_(2, 5),), "plane": (R_(2, 5),)}),
     ("hoop", r"\bhoop\b|\bring\b", {"symmetry": (1,), "plane": (R_(1, 2),)}),
     ("disk", r"\bdis[ck]\b", {"symmetry": (R_(1, 2),), "plane": (R_(1, 4),)}),
