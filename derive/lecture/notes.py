@@ -28,7 +28,7 @@ raises `derive.errors.SceneError` (exit 2, one line).
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from derive.errors import SceneError
@@ -397,8 +397,27 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             last = items.pop()
             item = Item("signs", item.line, text=item.text, symbols=last.symbols + item.symbols, lead=last.lead)
         items.append(item)
-    notes.items = items
+    notes.items = _chains_across(items)
     return notes
+
+
+# a display's last sign '=' with nothing after it (not part of <=, >=, != or \ne)
+_OPEN_EQUALS = re.compile(r"(?<![<>!=\\])=\s*$")
+
+
+def _chains_across(items: list) -> list:
+    """A display that ends with ``=`` before a display that begins with ``=`` (a chain of
+    equalities set over several displays, one equation to a line, as Sphinx sets a ``math``
+    directive's paragraphs): the chain goes on in the next display, so its trailing ``=`` is no
+    empty side; the next display's members are read against the chain's head, as a row of an
+    aligned chain is."""
+    out = list(items)
+    for k in range(len(out) - 1):
+        before, after = out[k], out[k + 1]
+        if before.kind == after.kind == "display" and _OPEN_EQUALS.search(before.latex) \
+                and re.match(r"\s*=(?!=)", after.latex):
+            out[k] = replace(before, latex=_OPEN_EQUALS.sub("", before.latex).rstrip())
+    return out
 
 
 def read_notes(path, convention: str | None = None) -> Notes:

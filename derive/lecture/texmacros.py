@@ -2,8 +2,8 @@
 
 Takes: the text of a notes file (its definitions) and one formula of it (the uses). Gives: the
 macros the file defines (`definitions`), the formula without those definitions
-(`definitions_removed`) and the formula with every use replaced by the macro's body
-(`expand`).
+(`definitions_removed`), the formula with every use replaced by the macro's body
+(`expand`) and with plain TeX's font switches written as LaTeX's commands (`font_switches`).
 May import: the standard library.
 
 What is read: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand`` (starred or not, the
@@ -189,6 +189,39 @@ _TAKES_IT = re.compile(r"(?:\\(?:dot|ddot|dddot|hat|widehat|bar|overline|underli
                        r"mathbf|mathrm|mathit|mathcal|mathbb|boldsymbol|bm|pmb|vb|vu|norm|abs|sqrt|frac|dfrac|tfrac|"
                        r"operatorname|text|textbf)|[_^])\s*$")
 _ONE_TOKEN = re.compile(r"\s*(?:\\[A-Za-z]+|\\.|[^\\\s{}])\s*$|\s*\{.*\}\s*$", re.S)
+
+
+# plain TeX's font switches, each for the rest of its group, and the commands LaTeX writes for them
+_SWITCH = re.compile(r"\{\s*\\(bf|rm)(?![A-Za-z])\s*")
+_SWITCHED = {"bf": "mathbf", "rm": "mathrm"}
+
+
+def font_switches(latex: str) -> str:
+    """The formula with each group that opens with a plain-TeX font switch written as LaTeX's
+    command for it: ``{\\bf r}`` as ``{\\mathbf{r}}`` (the bold r), ``{\\rm rot}`` as
+    ``{\\mathrm{rot}}``, as older texts and reference books set their vectors and labels.
+
+    Parameters
+    ----------
+    latex : str
+        One formula.
+
+    Returns
+    -------
+    str
+        The formula, its switches written as commands; an unclosed group is left as written.
+    """
+    out, i = "", 0
+    for m in _SWITCH.finditer(latex):
+        if m.start() < i or (m.start() > 0 and latex[m.start() - 1] == "\\"):
+            continue
+        group = _group(latex, m.start())
+        if group is None:
+            continue
+        rest = font_switches(latex[m.end():group[1] - 1]).strip()
+        out += latex[i:m.start()] + "{\\" + _SWITCHED[m.group(1)] + "{" + rest + "}}"
+        i = group[1]
+    return out + latex[i:]
 
 
 def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) -> str:

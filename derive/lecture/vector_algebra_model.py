@@ -91,9 +91,19 @@ _VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*V\b")
 _DENSITY = re.compile(r"\\rho(?![A-Za-z])")
 
 
+# a density at the point, rho(r), and the volume element d^3 r: their product is the mass element dm
+_DENSITY_AT = re.compile(r"\\rho\s*\(\s*\{?\s*\\(?:mathbf|boldsymbol|vec)\s*\{?\s*r\s*\}?\s*\}?\s*\)")
+_VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?\s*"
+                       r"(?:\\(?:mathbf|boldsymbol|vec)\s*\{\s*r\s*\}|\{\s*\\mathbf\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
+
+
 def _mass_element(text: str) -> str:
     """An integral over the volume with a uniform density, ``\\rho \\int … \\mathrm dV`` (ρ before the
-    integral or inside it), is the integral over the mass, ``\\int … dm``: one ρ with each dV."""
+    integral or inside it), is the integral over the mass, ``\\int … dm``: one ρ with each dV; so is
+    one with the density at the point, ``\\int \\rho(\\mathbf{r}) … \\mathrm{d}^3 r``."""
+    at = _VOLUME_3.findall(text)
+    if at and len(_DENSITY_AT.findall(text)) == len(at):
+        text = _VOLUME_3.sub(" dm", _DENSITY_AT.sub(" ", text))
     volumes = _VOLUME.findall(text)
     if not volumes or len(_DENSITY.findall(text)) != len(volumes):
         return text
