@@ -13,13 +13,14 @@ quantity (``\\frac{1}{2}Cn\\vartheta^2 = A\\dot\\varphi\\vartheta^2`` for a smal
 reading never flags.
 
 Takes: the checker (its ``vocab``, ``_resolve``, ``d.omega``, ``tex``). Gives: `in_case`.
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import zero_test as zt
 from derive.symbolic.rotations import RATES
 
 _ERRORS = (lx.NotRead, TypeError, ValueError, AttributeError, KeyError, IndexError, ZeroDivisionError)
@@ -52,7 +53,8 @@ def _rate_given(case) -> tuple | None:
         if poly is None or poly.degree() != 1:
             continue
         slope, rest = poly.all_coeffs()
-        if sp.simplify(slope) == 0:
+        # a slope proved non-zero at a point is not zero: `simplify` is spared it
+        if not zt.nonzero_somewhere(slope) and sp.simplify(slope) == 0:
             continue
         return q, sp.simplify(-rest / slope)
     return None
@@ -71,7 +73,9 @@ def in_case(checker, latex: str, case_latex: str) -> str | None:
             return None
         rate, value = given
         for a, b in zip(members, members[1:]):
-            if sp.simplify(sp.together((a - b).xreplace({rate: value}))) != 0:
+            link = sp.together((a - b).xreplace({rate: value}))
+            # a link proved non-zero at a point does not vanish: `simplify` cannot turn it to 0
+            if zt.nonzero_somewhere(link) or sp.simplify(link) != 0:
                 return None
     except _ERRORS:
         return None

@@ -108,6 +108,8 @@ def _real_zero(lhs, rhs, seed, points=zt.POINTS):
     them) at which every radicand is positive (a solution valid for I₁ < I₂, I₃ is compared where
     its roots exist, not on another branch of them); None when no such point turns up."""
     exprs = [sp.sympify(e) for e in (*lhs, *rhs)]
+    if any(e.has(sp.zoo, sp.nan) for e in exprs):
+        return None       # SymPy's infinity written in: no point is ever used (`mp_values.evaluator`)
     symbols = sorted(set().union(*(_free_symbols(e) for e in exprs)), key=lambda x: x.name)
     bases = sorted({p.base for e in exprs for p in zt.atoms(e, sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
     f = mp_values.evaluator(symbols, exprs)

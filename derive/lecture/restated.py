@@ -116,12 +116,16 @@ def _alike(*values) -> bool:
             and len({v.shape for v in values}) == 1)
 
 
+@functools.lru_cache(maxsize=512)
 def _solved_for(x, equation, value) -> bool:
-    """Is ``x = value`` the equation ``equation = 0`` solved for the symbol x, which enters it linearly?"""
+    """Is ``x = value`` the equation ``equation = 0`` solved for the symbol x, which enters it linearly?
+    Memoised: a text's convention probed reads the same pair again in each sequence it tries."""
     if not isinstance(x, sp.Symbol) or x not in getattr(equation, "free_symbols", ()) or x in value.free_symbols:
         return False
     num = sp.numer(sp.together(equation))
     if not num.is_polynomial(x) or sp.degree(num, x) != 1:
         return False
     a, b = sp.Poly(num, x).all_coeffs()
-    return a != 0 and sp.simplify(-b / a - value) == 0
+    d = -b / a - value if a != 0 else None
+    # a point where the difference is proved non-zero spares `simplify`, which no identity turns to 0
+    return d is not None and not zt.nonzero_somewhere(d) and sp.simplify(d) == 0

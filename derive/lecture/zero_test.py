@@ -440,6 +440,8 @@ def _numeric(lhs, rhs, seed, points) -> tuple[Outcome, bool]:
     transcendental = any(e.has(sp.Function) or any(not p.exp.is_Integer for p in atoms(e, sp.Pow))
                          for e in (*lhs, *rhs))
     rng = random.Random(seed)
+    if transcendental and any(e.has(sp.zoo, sp.nan) for e in (*lhs, *rhs)):
+        return Outcome(False, f"mpmath {DIGITS} digits at 0 points"), False    # a value at no point
     if transcendental:
         f = mp_values.evaluator(symbols, [*lhs, *rhs])
     n, used = len(lhs), 0
