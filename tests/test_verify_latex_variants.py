@@ -69,6 +69,17 @@ def _momentum_constant(latex: str) -> str:
     return latex + " = \\mathrm{const}" if re.match(r"p_\{?\\(?:alpha|gamma|phi|psi)\}? =", latex) else latex
 
 
+_GREEK = {"omega": "ω", "theta": "θ", "psi": "ψ", "Omega": "Ω", "varphi": "φ", "alpha": "α", "lambda": "λ"}
+
+
+def _left_right_everywhere(latex: str) -> str:
+    """Every round bracket sized with ``\\left``/``\\right``, a function's argument's too (``R_3\\left(\\theta\\right)``,
+    ``O\\left(\\eta^2\\right)``); a display whose brackets do not pair, or that sizes some already, stays."""
+    if latex.count("(") != latex.count(")") or re.search(r"\\(left|right|[Bb]igg?[lr]?)(?![A-Za-z])", latex):
+        return latex
+    return latex.replace("(", "\\left(").replace(")", "\\right)")
+
+
 VARIANTS = {
     # fractions and differentials
     "dfrac": (ALL_NOTES, _sub(r"\\frac(?![a-z])", r"\\dfrac")),
@@ -121,6 +132,11 @@ VARIANTS = {
     "unbraced text subscript": (ALL_NOTES, _sub(r"_\{([a-z]{2,})\}", r"_\\text{\1}")),
     "unbraced mathrm subscript": (ALL_NOTES, _sub(r"_\{([a-z]{2,})\}", r"_\\mathrm{\1}")),
     "braced text subscript": (ALL_NOTES, _sub(r"_\{([a-z]{2,})\}", r"_{\\text{\1}}")),
+    # (kinds added last, so that the corpus's halves the kinds above read stay as they were)
+    "spaced equals": (ALL_NOTES, _sub(r"(?<![<>\\!:&])=(?!=)", r"\\;=\\;")),
+    "unicode greek": (ALL_NOTES, _sub(r"(?<![A-Za-z])\\(omega|theta|psi|Omega|varphi|alpha|lambda)(?![A-Za-z])[ \t]?",
+                                      lambda m: _GREEK[m[1]])),
+    "left-right for every round bracket": (ALL_NOTES, _left_right_everywhere),
 }
 
 # Kinds the reader does not follow yet: what it misses.
