@@ -64,8 +64,6 @@ MISSES: dict[str, str] = {
     "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
     "operatorname sin": "\\operatorname{sin}(\\alpha) inside \\arctan\\left(…\\right), an angle read back from a "
                         "matrix (not traced yet)",
-    "unicode greek": "a Greek letter typed in Unicode where the text's names are learned from its raw displays and "
-                     "prose (C_x(θ), \\bm Ω beside C_x(\\theta) in prose): those readers do not meet the command form",
     "left-right for every round bracket": "a function's argument sized with \\left( … \\right) (R_3\\left(\\theta_1\\right) "
                                           "in a product of turns, the quaternion operator \\Omega\\left(\\omega\\right)) is "
                                           "not read as the function applied",

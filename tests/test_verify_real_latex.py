@@ -259,3 +259,9 @@ def test_a_chain_of_new_names_ending_in_a_value_defines_each_of_them_as_that_val
     # a chain that does not end in a value in other names is no such definition
     loop = kept.check_text("# Names\n\n$$u = v = u + 1$$\n")
     assert all("defines the text's symbols" not in c.why for c in loop)
+
+
+def test_unicode_letters_in_math_are_their_commands_for_every_reader_of_the_text():
+    # the readers that learn a text's names from its raw math meet C_x(θ) as the prose's C_x(\theta)
+    text = "The matrix $C_x(θ)$ turns by the angle θ.\n\n$$C_x(θ) = R_{ω₃}$$\n"
+    assert source.rendered(text) == "The matrix $C_x(\\theta)$ turns by the angle θ.\n\n$$C_x(\\theta) = R_{\\omega_{3}}$$\n"

@@ -122,6 +122,8 @@ MATH = re.compile(r"\$\$(?P<d>.+?)\$\$|\\\[(?P<b>.+?)\\\]"
 """Math in a rendered text: a display ``$$…$$`` (group d), ``\\[…\\]`` (b), a display environment (e,
 its name env and its body eb) or inline ``$…$`` (i), the one pattern every reader of the text uses."""
 
+_MATH_SPAN = re.compile(r"\$\$.+?\$\$|(?<![\\$])\$[^$\n]+?(?<!\\)\$|\\\[.+?\\\]|\\begin\{(" + _DISPLAY_ENVS + r")\*?\}.+?\\end\{\1\*?\}",
+                        re.S)
 _MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*math[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
 _FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
@@ -153,7 +155,8 @@ def rendered(text: str, latex_source: bool = False) -> str:
     text = _COMMENT.sub(_blank, text)
     text = _MATH_FENCE.sub(_math_display, text)
     text = _FENCE.sub(_blank, text)
-    return _SMALL_SPACED_EQUALS.sub(" ", _CODE.sub(_blank, text))   # a \;=\; b, for every reader of the text
+    text = _MATH_SPAN.sub(lambda m: characters(m.group(0)), _CODE.sub(_blank, text))   # θ is \theta in all its math
+    return _SMALL_SPACED_EQUALS.sub(" ", text)      # a \;=\; b, for every reader of the text
 
 
 # --- the file's macros (read and expanded in `derive.lecture.texmacros`) ------------------------
