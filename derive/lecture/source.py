@@ -496,8 +496,15 @@ def _operator_body(m: re.Match) -> str:
 
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
-_SMALL_SPACED_EQUALS = re.compile(rf"(?:[ \t]*(?<!\\){SPACE_SYMBOL})+[ \t]*(?==)|(?<==)(?:[ \t]*(?<!\\){SPACE_SYMBOL})+")
-_SPACED_EQUALS = re.compile(rf"(?:\s*(?<!\\){SPACE_SYMBOL}|\s*{TIE})+\s*(?==)|(?<==)(?:\s*(?<!\\){SPACE_SYMBOL}|\s*{TIE})+")
+
+
+def _spaced_equals(gap: str, spaces: str) -> re.Pattern:
+    """An ``=`` set apart by ``spaces`` (a control symbol's backslash not a row break's), with ``gap`` between."""
+    return re.compile(rf"(?:{gap}(?<!\\)(?:{spaces}))+{gap}(?==)|(?<==)(?:{gap}(?<!\\)(?:{spaces}))+")
+
+
+_SMALL_SPACED_EQUALS = _spaced_equals(r"[ \t]*", SPACE_SYMBOL)   # in the raw text: no newline, no tie of prose
+_SPACED_EQUALS = _spaced_equals(r"\s*", rf"{SPACE_SYMBOL}|{TIE}")
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
 """A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
