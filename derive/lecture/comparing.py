@@ -123,11 +123,8 @@ def _real_zero(lhs, rhs, seed, points=zt.POINTS):
     for _ in range(300):
         point = [mpmath.mpf(p.p) / p.q for p in zt.sample(symbols, rng)]
         with mpmath.workdps(zt.DIGITS):
-            try:
-                if not all(mpmath.im(b) == 0 and mpmath.re(b) > 0 for b in map(mpmath.mpmathify, radicands(*point))):
-                    continue
-                vals = [mpmath.mpmathify(v) for v in f(*point)]
-            except (ZeroDivisionError, ValueError, TypeError):
+            vals = mp_values.real_values(f, radicands, point)
+            if vals is None:
                 continue
             if not all(mpmath.isfinite(v) for v in vals):
                 continue

@@ -135,11 +135,8 @@ def _zero_in_region(exprs, seed, wanted=3) -> bool:
                 if isinstance(q, lx.Quantity) and q.name == "|L|":
                     at[q] = mpmath.sqrt(2 * energy * (moments[0] + (moments[2] - moments[0]) * rng.randint(5, 95) / 100))
             point = [at[x] for x in symbols]
-            try:
-                if not all(mpmath.im(b) == 0 and mpmath.re(b) > 0 for b in map(mpmath.mpmathify, radicands(*point))):
-                    continue
-                vals = [mpmath.mpmathify(v) for v in f(*point)]
-            except (ZeroDivisionError, ValueError, TypeError):
+            vals = mp_values.real_values(f, radicands, point)
+            if vals is None:
                 continue
             if not all(mpmath.isfinite(v) and abs(v) < mpmath.mpf(10) ** -40 for v in vals):
                 return False

@@ -41,6 +41,17 @@ def evaluator(symbols, exprs):
     return f if f is not None else _lambdified(sp.lambdify(symbols, exprs, modules="mpmath", docstring_limit=0))
 
 
+def real_values(f, radicands, point):
+    """``f(*point)`` in mpmath where every radicand is real and positive there (a square root of a
+    negative is no value of the text's formula), else None; a point where ``f`` has no value is None too."""
+    try:
+        if not all(mpmath.im(b) == 0 and mpmath.re(b) > 0 for b in map(mpmath.mpmathify, radicands(*point))):
+            return None
+        return [mpmath.mpmathify(v) for v in f(*point)]
+    except (ZeroDivisionError, ValueError, TypeError):
+        return None
+
+
 def _pole(*point):
     """The value of a formula holding SymPy's complex infinity or NaN: none, at any point."""
     raise ZeroDivisionError("the formula holds an infinity")

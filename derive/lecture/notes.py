@@ -39,6 +39,7 @@ from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import prose_definitions
 from derive.lecture import source
+from derive.lecture import statements
 from derive.lecture import stated_convention
 
 
@@ -68,7 +69,7 @@ _SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:an?\s+)?(?:very\s+)?(?:(?:fi
                     r"|\bsmall of (?:the )?first order\b|\b(?:as|to\s+be)\s+(?:very\s+)?small\b(?!\s+as\b)", re.I)
 """Prose that calls the quantities before it in its sentence small (to first order): "are small", "are
 very small", "is first-order small", "are small perturbations", "takes … as small", "assumed to be small"."""
-_RELATION = re.compile(r"(?<![<>\\])=|\\equiv|\\approx|\\ge|\\le|\\geq|\\leq|\\simeq|(?<!\\)[<>]")
+_RELATION = statements.RELATION
 
 
 @dataclass(frozen=True)
