@@ -64,9 +64,6 @@ MISSES: dict[str, str] = {
     "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
     "operatorname sin": "\\operatorname{sin}(\\alpha) inside \\arctan\\left(…\\right), an angle read back from a "
                         "matrix (not traced yet)",
-    "left-right for every round bracket": "a function's argument sized with \\left( … \\right) (R_3\\left(\\theta_1\\right) "
-                                          "in a product of turns, the quaternion operator \\Omega\\left(\\omega\\right)) is "
-                                          "not read as the function applied",
 }
 """Kinds that still leave some displays of the corpus unchecked (or, for the two that change what a
 display says, flag some): what the reader misses."""

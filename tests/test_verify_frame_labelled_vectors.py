@@ -40,6 +40,7 @@ def test_mixed_labels_an_unlabelled_vector_or_a_component_index_are_not_a_frame(
 def test_an_equation_number_in_letters_after_a_quad_is_dropped():
     assert statements("\\boxed{\\quad a = b\\quad~Eq. (1)}") == ["\\boxed{\\quad a = b}"]
     assert statements("a = b \\qquad \\text{Eq. (2)}") == ["a = b"]
+    assert statements("\\boxed{\\quad a = b\\quad~Eq. \\left(2\\right)}") == ["\\boxed{\\quad a = b}"]
 
 
 def test_words_that_mention_an_equation_and_a_bracket_after_a_formula_stay():

@@ -130,6 +130,16 @@ def test_a_quaternions_rate_in_the_texts_omega_operator_is_one_of_the_four_forms
         assert rate == {verdict}
 
 
+def test_the_texts_omega_operator_with_its_argument_in_sized_brackets_is_the_same_operator():
+    def sized(tex):
+        return tex.replace("\\Omega(\\boldsymbol\\omega)", "\\Omega\\left(\\boldsymbol\\omega\\right)")
+
+    for entry, verdict in (("-\\omega_x", "holds"), ("\\omega_x", "fails")):
+        text = HEAD + NO_RULE + "The omega operator:\n\n" + sized(OMEGA_OPERATOR) % entry + "so that\n\n" + sized(RATE)
+        (rate,) = _lines(text, "\\dot{\\mathbf{q}} = ")
+        assert rate == {verdict}
+
+
 def test_a_step_of_the_texts_rate_is_exact_in_closed_form_and_a_series_to_its_order():
     steps = ("$$\n\\mathbf{q}_{t+1} = e^{\\frac{1}{2}\\boldsymbol\\Omega(\\boldsymbol\\omega)\\Delta t}\\mathbf{q}_t\n$$\n\n"
              "in closed form\n\n"

@@ -13,6 +13,12 @@ def test_a_product_of_single_axis_turns_states_the_sequence_and_the_names_of_the
     assert stated(bold) == [Stated(1, "z-y-x", ("psi", "theta", "phi"))]
 
 
+def test_turns_whose_arguments_are_sized_brackets_state_the_sequence_as_plain_ones_do():
+    sized = "$$\nR = R_3\\left(\\theta_1\\right) R_1\\bigl(\\theta_2\\bigr) R_3\\left(\\theta_3\\right)\n$$\n"
+    assert stated(sized) == [Stated(1, "z-x-z", ("theta_1", "theta_2", "theta_3"))]
+    assert stated("$$\nR = R_3\\left(\\theta_1\\right) R_3(\\theta_2) R_1\\left(\\theta_3\\right)\n$$\n") == []
+
+
 def test_prose_naming_the_sequence_and_its_turns_states_both():
     text = ("R is parameterized by 3-1-2 Euler angles, a turn $\\theta$ about the third axis, then "
             "$\\alpha$ about the first, then $\\phi$ about the second.\n")

@@ -399,7 +399,7 @@ def _rows(latex: str) -> list[str]:
 
 def _members(row: str) -> list[str] | None:
     """A row's members, cut at its top-level ``=`` (None when it has another relation)."""
-    if re.search(r"\\(?:gets|leq?|geq?|approx|neq|to\b|rightarrow)|[<>]", re.sub(r"\\lim_\{[^{}]*\}", "", row)):
+    if re.search(r"\\(?:gets|leq?|geq?|approx|neq|to|rightarrow)(?![A-Za-z])|[<>]", re.sub(r"\\lim_\{[^{}]*\}", "", row)):
         return None
     bounds = [0, *(p for m in top_level(row, _EQUALS) for p in (m.start(), m.end())), len(row)]
     return [row[bounds[k]:bounds[k + 1]].strip() for k in range(0, len(bounds), 2)]

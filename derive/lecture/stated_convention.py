@@ -49,7 +49,9 @@ _AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z", "X": "x", "
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
 _SYMBOL = r"\\?[A-Za-z]+(?:\s*_\s*(?:\{\s*\\?[A-Za-z0-9]+\s*\}|\\?[A-Za-z0-9]))?"
 _MATRIX = r"(?:\\(?:mathbf|mathrm|boldsymbol|bm|mathsf)\s*\{\s*[A-Z]\s*\}|[A-Z])"
-_TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyzXYZ])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+# a turn's argument in plain or sized brackets, R_3\left(\theta_1\right) as R_3(\theta_1)
+_OPEN, _CLOSE = r"(?:\\(?:left|[Bb]igg?l?)\s*)?\(", r"(?:\\(?:right|[Bb]igg?r?)\s*)?\)"
+_TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyzXYZ])\s*\}?\s*" + _OPEN + r"\s*(" + _SYMBOL + r")\s*" + _CLOSE)
 # a display read whole, before it is cut into statements: three turns set side by side with quads keep their order
 _PRODUCT = re.compile(_TURN + SPACING + _TURN + SPACING + _TURN)
 _SEQUENCE = re.compile(r"(?<![\w$\\-])([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])\s*[-–]\s*([123xyzXYZ])(?![\w-])"
@@ -66,7 +68,7 @@ _THROUGH = re.compile(r"\babout\s+(?:the\s+)?\$\s*([xyzXYZ])(?:\s*_\s*(?:\{[^{}$
 _SECTION = re.compile(r"^(?:#{1,6}\s|\s*\\(?:sub){0,2}section\*?\s*\{|\s*\\chapter\*?\s*\{)", re.M)
 
 
-_GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*\(\s*(" + _SYMBOL + r")\s*\)")
+_GENERIC_TURN = (_MATRIX + r"\s*_\s*\{?\s*([a-wA-W])\s*\}?\s*" + _OPEN + r"\s*(" + _SYMBOL + r")\s*" + _CLOSE)
 _GENERIC = re.compile(_GENERIC_TURN + SPACING + _GENERIC_TURN + SPACING + _GENERIC_TURN)
 
 

@@ -283,9 +283,10 @@ def _statements(latex: str) -> tuple[str, ...]:
 
 
 # a text without \tag numbers a row in letters after a wide space (``\quad~Eq. (1)``): a name, not a factor
-_EQUATION_NUMBER = re.compile(r"(?:" + QUAD + r"|~)+\s*(?:Eqs?|Eqn|Equation)\.?\s*~?\s*\(\s*\d+[a-z]?\s*\)"
+_NUMBER = r"(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\d+[a-z]?\s*(?:\\(?:right|[Bb]igg?r?)\s*)?\)"     # (1), \left(1\right)
+_EQUATION_NUMBER = re.compile(r"(?:" + QUAD + r"|~)+\s*(?:Eqs?|Eqn|Equation)\.?\s*~?\s*" + _NUMBER +
                               r"|(?:" + QUAD + r"|~)+\s*\\(?:text|mbox|textrm)\s*\{\s*(?:Eqs?|Eqn|Equation)\.?\s*~?\s*"
-                              r"\(\s*\d+[a-z]?\s*\)\s*\}")
+                              + _NUMBER + r"\s*\}")
 
 
 # "and" between two statements, spaced with ~ or \quad (``a = b ~~~\text{and}~~~ c = d``): a cut
