@@ -17,6 +17,7 @@ from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.definite_integrals import definite_integral
 from derive.lecture.evaluation_points import holds_a_point
+from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
                                          rate_of, reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import frame_label, outer
@@ -477,10 +478,9 @@ class _Parser:
         return total
 
     def sum_index(self, tok):
-        """The symbols under a Σ (``_{ij}``, ``_{i=1}``: its letters; numbers and = skipped) and the
-        subscript's first token."""
+        """The letters under a Σ (``_{ij}``, ``_{i=1}``), or i over particles (`over_particles`); its first token."""
         if not self.at("op", "_"):
-            self.fail("a sum without its index", tok)
+            return over_particles(self.toks, self.i) or self.fail("a sum without its index", tok), tok
         self.i += 1
         sub_tok = self.peek()
         if not self.at("op", "{"):
