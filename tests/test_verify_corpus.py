@@ -28,16 +28,17 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "checked"):
-        "a determinant proof (det(R - I), det(-A)), the inertia tensor about another origin (I', [L]_S, "
-        "[A-dot]_{S_0}), the angles tau and zeta in A (the radius of omega's circle) are not read; the particle "
-        "sums over a with x_ai components and the tensor's matrix, Euler's equations, the asymmetric top's "
-        "linearisation in eps_i, the "
-        "symmetric top's rates in the text's own Omega and the kinetic energy are checked",
+        "a determinant proof (det(R - I), det(-A)) and the inertia tensor about another origin (I', [L]_S, "
+        "[A-dot]_{S_0}) are not read; the particle sums over a with x_ai components and the tensor's matrix, "
+        "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
+        "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
+        "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2) and the kinetic energy are checked",
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
-        "two of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
-        "its unread y_z); T about O' with I_2 for I_2', cos tau with I_2^2 omega_3 (beside A, the radius of "
-        "omega's circle, which the text ties only in words) and Euler's third equation with omega_1 omega_3 "
-        "written where omega_1 = omega_2 = 0 makes both sides vanish are not read",
+        "three of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
+        "its unread y_z, Euler's third equation with omega_1 omega_3 read as the equation before its '= 0'); "
+        "T about O' with I_2 for I_2' is not read, and cos tau with I_2^2 omega_3 fails only with J read as the "
+        "angular momentum the prose names, which no other statement of its display confirms (the chain's link "
+        "that holds is not taken as one), so it stays unchecked",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
         "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked; the inertia "

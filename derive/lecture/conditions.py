@@ -9,7 +9,7 @@ condition of the text rather than a slip, or None).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.rotation_identities`,
 :mod:`derive.lecture.primed_functions`,
-:mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -18,6 +18,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import primed_functions, rotation_identities
 from derive.lecture.comparing import free
+from derive.lecture.vocabulary import FREE_NAMES
 from derive.symbolic.lagrangian import ACCELS
 
 
@@ -62,6 +63,9 @@ class Conditions:
         if written and val != 0 and isinstance(written[0], sp.Symbol) and \
                 primed_functions.definitions(self.vocab, self.ctx.defs, [written[0]], self.tex):
             return None     # U'(θ) = (its derivative written out) = 0: the rewriting is an identity, only "= 0" a condition
+        named = self._constant_named(val, targets)
+        if named:
+            return named
         rates = set(rot.RATES) | set(ACCELS)
         frames = set(lx.BASIS) | set(lx.PRIMED) | set(lx.INERTIAL)
         variables = rates | set(rot.ANGLES) | set(lx.W)
@@ -102,3 +106,36 @@ class Conditions:
         sides = [val, *(self._resolve(f) for f in targets)]
         return product and all(isinstance(v, sp.MatrixBase) and v.shape == (3, 1) and
                                free(v) & set(self.d.rot.ANGLES) for v in sides)
+
+    def _constant_named(self, val, targets) -> str | None:
+        """A relation of the body's rates and one constant letter of the text's (A, B, C, δ, ε, φ)
+        that no setting or solution has tied (``\\mathbf{J}^2 = I_1^2A^2 + I_3^2\\omega_3^2``, A the
+        radius of 𝛚's circle): the relation says what the letter is in this motion, so it names it —
+        recorded as its solution (the positive root where only its square is written), then used —
+        and is no claim. None when the letter is not alone, or the relation is not linear in it or
+        in its square."""
+        if len(targets) != 1 or isinstance(val, sp.MatrixBase):
+            return None
+        target = self._resolve(targets[0])
+        if isinstance(target, sp.MatrixBase):
+            return None
+        every = free(val) | free(target)
+        letters = [x for x in every if type(x) is sp.Symbol and x.name in _LETTERS and x not in self.ctx.defs]
+        tied = set().union(*(free(v) for v in [*self.ctx.subs.values(), *self.ctx.solutions.values()]))
+        if len(letters) != 1 or letters[0] in tied or not every & set(lx.W):
+            return None
+        x, square = letters[0], sp.Dummy(positive=True)
+        for unknown, put in ((square, {x ** 2: square}), (x, {})):
+            eq = sp.expand(sp.expand(val - target).xreplace(put))
+            if unknown is square and x in free(eq):
+                continue            # the letter written otherwise than squared
+            poly = sp.Poly(eq, unknown) if eq.has(unknown) else None
+            if poly is None or poly.degree() != 1:
+                continue
+            value = sp.simplify(-poly.coeff_monomial(1) / poly.coeff_monomial(unknown))
+            self.ctx.defs[x] = sp.sqrt(value) if unknown is square else value
+            return f"names the text's constant {self.tex(x)} in this motion (recorded, then used)"
+        return None
+
+
+_LETTERS = {name for name in FREE_NAMES.values() if name != "t"}

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture.vocabulary import (
-    DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
+    DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
     Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot, gradients
@@ -167,10 +167,10 @@ class _Parser:
         return base.T if isinstance(base, sp.MatrixBase) else Transposed(base)
 
     def power(self, base, exp):
-        if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) \
-                and not (isinstance(exp, sp.Integer)):
+        if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) and not isinstance(exp, sp.Integer):
             self.fail("a power of a matrix other than a whole number")
-        return base ** exp
+        vector = exp == 2 and (base is LVEC or base is OMEGA_VEC)      # 𝐋², 𝛚²: the vector dotted with itself
+        return (LMAG ** 2 if base is LVEC else body_dot.dot(base, base)) if vector else base ** exp
 
     def _transpose_mark(self) -> bool:
         """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""
@@ -269,7 +269,7 @@ class _Parser:
                 and not self.vocab.generic[value].sub and not self.vocab.generic[value].dots
             if value is OMEGA_VEC or plain_omega:
                 return sp.sqrt(body_dot.dot(OMEGA_VEC, OMEGA_VEC))     # |𝛚|, |ω|: the angular velocity's magnitude
-            return sp.Abs(value)
+            return LMAG if value is LVEC else sp.Abs(value)      # |𝐋|: the angular momentum's magnitude
         if tok.kind == "begin":
             value = self.matrix(env)
             self.i += frame_label(self.toks, self.i, self.__dict__.setdefault("frames", set()))
