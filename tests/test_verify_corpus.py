@@ -214,16 +214,16 @@ SHORT = {
         "0 of 6: changes of a vector on space and body axes written as a bracket with a frame's label "
         "((dG)_space, (dG/dt)_body), the rotation matrix's components a_ji and the Levi-Civita sum are not read",
     ("physics-se-rolling-coin-euler-angles-lagrangian", "checked"):
-        "0 of 2: the text writes R for the coin's radius and bold R, R_0 for points (R_0 a pmatrix column with "
-        "R sin(theta) in it); the reader mixes the two and leaves the centre's height and the boxed Lagrangian "
-        "unchecked ('adds a matrix to a term in R_0')",
+        "0 of 2: the centre's height R sin(theta) is the third entry of a pmatrix column R_0 beside the floor "
+        "coordinates x, y, and the boxed Lagrangian adds the translation in x, y to the turning: the reader "
+        "models neither a body's position on a floor nor its translational energy, so both stay unchecked",
     ("physics-se-rolling-coin-euler-angles-lagrangian", "found"):
         "0 of 1: the slip is the boxed Lagrangian's rotational energy written as three squared Euler-angle "
-        "rates with constant moments named only in prose (I_psi, I_theta, I_varphi); the reader does not "
-        "judge the Lagrangian at all",
+        "rates with constant moments named only in prose (I_psi, I_theta, I_varphi); the Lagrangian, with its "
+        "translation in x, y, is not judged at all",
 }
 
-FLOOR = {"checked": 710, "slips_flagged": 82, "holds_flagged": 0}
+FLOOR = {"checked": 721, "slips_flagged": 83, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
