@@ -228,9 +228,17 @@ SHORT = {
     ("bmc-watanabe-duarte-newton-euler-laws-rigid-body", "found"):
         "0 of 1: the slip (the moment about O' written M_O + r_{O'/O} x F, whose sign is minus with r_{O'/O} from "
         "O to O') is in \\vec{\\bf{...}} vectors about named points, of which the reader has no model",
+    ("physics-se-rolling-coin-euler-angles-lagrangian", "checked"):
+        "0 of 2: the centre's height R sin(theta) is the third entry of a pmatrix column R_0 beside the floor "
+        "coordinates x, y, and the boxed Lagrangian adds the translation in x, y to the turning: the reader "
+        "models neither a body's position on a floor nor its translational energy, so both stay unchecked",
+    ("physics-se-rolling-coin-euler-angles-lagrangian", "found"):
+        "0 of 1: the slip is the boxed Lagrangian's rotational energy written as three squared Euler-angle "
+        "rates with constant moments named only in prose (I_psi, I_theta, I_varphi); the Lagrangian, with its "
+        "translation in x, y, is not judged at all",
 }
 
-FLOOR = {"checked": 718, "slips_flagged": 82, "holds_flagged": 0}
+FLOOR = {"checked": 721, "slips_flagged": 83, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

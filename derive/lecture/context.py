@@ -108,6 +108,8 @@ class Context:
     constant_case: tuple | None = None                # (line, LaTeX) of a case the prose sets by constants alone
     perturbation: dict = field(default_factory=dict)  # a symbol η the text names (base, index, bold) → (i, cᵢ) of ω̃ᵢ = cᵢ + ηᵢ
     perturbation_order: int | None = None             # the order its equations keep once a remainder O(ηⁿ) was written
+    torques: dict = field(default_factory=dict)       # a name of the text's → its value in τᵢ, the torque it wrote in component i's equation
+    untorqued: set = field(default_factory=set)       # components i whose equation of motion the text wrote with no torque
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
@@ -115,7 +117,7 @@ class Context:
         self.first_order = set()
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
         self.vectors, self.held, self.constant_case = {}, {}, None
-        self.perturbation, self.perturbation_order = {}, None
+        self.perturbation, self.perturbation_order, self.torques, self.untorqued = {}, None, {}, set()
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False
 

@@ -164,10 +164,12 @@ class Motion:
         if candidate and not self.ctx.first_order and not free(r) & set(lx.TAU) and not any(
                 isinstance(x, lx.Generic) and x not in self.ctx.defs for x in free(r)) and not_a_consequence(r, euler):
             return False, "", None        # the residual below is this one expanded: the same screen
-        r = expanded(r)
+        # a torque the text wrote in an earlier equation of motion is that component's torque here too
+        r = expanded(r.xreplace(self.ctx.torques))
         if r == 0:
             return False, "the equation is empty (0 = 0)", r
         loose = [x for x in free(r) if isinstance(x, lx.Generic) and x not in self.ctx.defs]
+        own_torque = None
         if len(loose) == 1 and sp.diff(r, loose[0], 2) == 0 and not free(sp.diff(r, loose[0])) & set(lx.W):
             # one symbol of the text's, entering linearly: its term is the torque's component (N₃,
             # τ_z, αγ₃), scaled as the rest of the equation is (q, from the coefficients of ω̃̇ᵢ)
@@ -175,11 +177,13 @@ class Motion:
                 if free(r) & {lx.WD[i]}:
                     slope, scale = sp.diff(r, loose[0]), sp.diff(euler[i], lx.WD[i])
                     q = sp.cancel(sp.diff(r, lx.WD[i]) / scale) if scale != 0 else 0
-                    r = expanded(r.xreplace({loose[0]: -q * lx.TAU[i] / slope})) if q != 0 else \
-                        r.xreplace({loose[0]: lx.TAU[i]})
+                    own_torque = {loose[0]: -q * lx.TAU[i] / slope if q != 0 else lx.TAU[i]}
+                    r = expanded(r.xreplace(own_torque))
                     break
         if free(r) & set(lx.TAU):          # with the text's torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ
-            euler = [R - tau for R, tau in zip(euler, lx.TAU)]
+            # (none about an axis whose equation the text wrote without one, once it wrote one elsewhere)
+            euler = [R - (0 if self.ctx.torques and i in self.ctx.untorqued else tau)
+                     for i, (R, tau) in enumerate(zip(euler, lx.TAU))]
         if self.ctx.first_order:           # the prose made some ω̃ᵢ small: to first order in them
             r, euler = self._to_first_order(r), [self._to_first_order(R) for R in euler]
         failed = False, "not a consequence of Euler's equations (derived: I ω̃̇ = (I ω̃) × ω̃)", r
@@ -193,6 +197,11 @@ class Motion:
                 continue
             q = sp.cancel(sp.together(r / R))
             if not (free(q) & dyn) and q != 0:
+                if not candidate and own_torque:
+                    self.ctx.torques.update(own_torque)
+                    self.ctx.untorqued.discard(i)
+                elif not candidate and not free(r) & set(lx.TAU):
+                    self.ctx.untorqued.add(i)
                 return True, f"a multiple ({self.tex(q)}) of Euler's equation {i + 1}{self._order_note()}", r
         # a combination of them (Σ Iᵢω̃ᵢ × equation i, …): zero once ω̃̇ is taken from them
         flow = flow_of(tuple(euler))

@@ -43,7 +43,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import differentials, tex_structure, texmacros, units
+from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
 from derive.lecture.statements import split_top
 
@@ -572,6 +572,7 @@ def _normalized(latex: str, user: tuple) -> str:
     except texmacros.MacroLoop as loop:
         # a macro that expands into itself stays as written: the reader names it as unreadable
         latex = texmacros.expand(latex, {k: v for k, v in user.items() if k != loop.name})
+    latex = imaginary_unit.read(latex)               # once the macros are expanded: a unit vector î shows
     latex = _MATHOP.sub(_operator_body, latex)       # \\mathop{}\\!\\mathrm{d}: the upright differential d
     try:
         nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()
