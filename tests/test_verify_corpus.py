@@ -156,13 +156,10 @@ SHORT = {
         "the parallel-axis derivation sums over particles in coordinates X_{alpha,k} about another point Q "
         "and the vector a to it (the text's own X_i = a_i + x_i is not put into the sums); the cube's tensors "
         "named \\mathbf{I}^{cm}, \\mathbf{I}^{corner} set equal to written matrices are not compared, nor the "
-        "steps in a_i before the text gives them values; the secular determinant in the unknown moment I and "
+        "steps in a_i before the text gives them values (J_11's sum with a_3^3 among squares is flagged by its "
+        "unlike powers); the secular determinant in the unknown moment I and "
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
-    ("cline-parallel-axis-theorem-cube-inertia-tensor-worked-examples", "found"):
-        "two of four slips are flagged (the corner's product of inertia written +rho times the integral of "
-        "x_1 x_2 with the value -rho b^5/4, and the row subtraction that drops I); a_i for a_k in the expansion "
-        "(a sum in X about Q) and a^3_3 in J_11 (a_i untied there) sit in displays the reader does not check",
     ("cline-cube-angular-momentum-rotational-kinetic-energy-worked-examples", "checked"):
         "the cube's angular momenta are written as omega times a written matrix on a column, in omega and b, "
         "which nothing in the text ties (a link that holds is kept, one off by a number is flagged); the "
@@ -170,11 +167,11 @@ SHORT = {
         "the sums in r' with \\prime, and the row-matrix-column form of T_rot are not read; Euler's T_rot in "
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
-        "13 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
+        "14 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
         "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
         "integrals in time, the friction along the unit vectors) are not read; the moments of the shapes the prose "
-        "names, the integrals over rings, the tensor's diagonal entries and the implications solved for b and "
-        "v_x(tau) are",
+        "names, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
+        "transpose set with \\mkern) and the implications solved for b and v_x(tau) are",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "found"):
         "2 of 4 (the cylinder's volume integral without its H, and v - V = (2/5) v => v = 5V/7): Delta vartheta/t "
         "for Delta vartheta/Delta t sits in a chain in names the text never ties, and the lost minus sign restates "
