@@ -24,6 +24,7 @@ May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_in
 """
 from __future__ import annotations
 
+import copy
 import functools
 import random
 import re
@@ -184,12 +185,16 @@ class IntegralClaims:
         first, member = _first_member(piece), _GOES_ON.sub("", tail[1], count=1)
         if first is None:
             return
-        try:
-            a, b = (sp.sympify(lx.parse(m, self.vocab).members[0].value) for m in (member, first))
-        except lx.NotRead:
-            return
+        # read on a copy of the vocabulary: the next display's names are met when its own reading meets them
+        vocab = copy.copy(self.vocab)
+        vocab.generic, vocab._atoms_met, vocab.defined = dict(vocab.generic), dict(vocab._atoms_met), dict(vocab.defined)
         both = bool(DEFINITE.search(first))
-        verdict = self._integral_link(a, b, both)
+        try:
+            a, b = (sp.sympify(lx.parse(m, vocab).members[0].value) for m in (member, first))
+            verdict = self._integral_link(a, b, both)
+        except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
+                NotImplementedError, RecursionError, sp.SympifyError):
+            return          # a member the parser or SymPy cannot take: the link stays unjudged
         if verdict is None or both and verdict[0] != "holds":
             return          # two integrals that differ: either display may be the one that slipped
         claim = Claim(tail[0], f"{member.strip()} = {first.strip()}", "identity", *verdict[:1], None,
