@@ -157,13 +157,10 @@ SHORT = {
         "the parallel-axis derivation sums over particles in coordinates X_{alpha,k} about another point Q "
         "and the vector a to it (the text's own X_i = a_i + x_i is not put into the sums); the cube's tensors "
         "named \\mathbf{I}^{cm}, \\mathbf{I}^{corner} set equal to written matrices are not compared, nor the "
-        "steps in a_i before the text gives them values; the secular determinant in the unknown moment I and "
+        "steps in a_i before the text gives them values (J_11's sum with a_3^3 among squares is flagged by its "
+        "unlike powers); the secular determinant in the unknown moment I and "
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
-    ("cline-parallel-axis-theorem-cube-inertia-tensor-worked-examples", "found"):
-        "two of four slips are flagged (the corner's product of inertia written +rho times the integral of "
-        "x_1 x_2 with the value -rho b^5/4, and the row subtraction that drops I); a_i for a_k in the expansion "
-        "(a sum in X about Q) and a^3_3 in J_11 (a_i untied there) sit in displays the reader does not check",
     ("cline-cube-angular-momentum-rotational-kinetic-energy-worked-examples", "checked"):
         "the cube's angular momenta are written as omega times a written matrix on a column, in omega and b, "
         "which nothing in the text ties (a link that holds is kept, one off by a number is flagged); the "
@@ -171,11 +168,11 @@ SHORT = {
         "the sums in r' with \\prime, and the row-matrix-column form of T_rot are not read; Euler's T_rot in "
         "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
-        "13 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
+        "14 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
         "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
         "integrals in time, the friction along the unit vectors) are not read; the moments of the shapes the prose "
-        "names, the integrals over rings, the tensor's diagonal entries and the implications solved for b and "
-        "v_x(tau) are",
+        "names, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
+        "transpose set with \\mkern) and the implications solved for b and v_x(tau) are",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "found"):
         "2 of 4 (the cylinder's volume integral without its H, and v - V = (2/5) v => v = 5V/7): Delta vartheta/t "
         "for Delta vartheta/Delta t sits in a chain in names the text never ties, and the lost minus sign restates "
@@ -204,13 +201,10 @@ SHORT = {
         "written \\times (R \\times I \\times R^T): the reader reads \\times as the cross product, ties plain I, L "
         "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1)",
     ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "14 of 35 (2 on its first read): the chains across displays, the vectors in {\\bf r} and the integrals "
-        "with rho(r) d^3 r are read; the tensor 1 r^2 - r r with \\one undefined, the moment about an axis "
-        "n . I . n, and the cylinder's and sphere's definite triple integrals inside the chains are not",
-    ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "found"):
-        "0 of 4: the four slips are the radial integral written over d R (the radius, also "
-        "its upper limit) instead of d rho, in chain pieces that begin with '=' and hold definite triple "
-        "integrals, which the reader does not evaluate",
+        "17 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r and the "
+        "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
+        "are read (not a link between two integrals); the tensor 1 r^2 - r r with \\one undefined, the moment about an axis n . I . n, the "
+        "components of n and r in brackets, and the values in R and h after the sphere redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "0 of 6: changes of a vector on space and body axes written as a bracket with a frame's label "
         "((dG)_space, (dG/dt)_body), the rotation matrix's components a_ji and the Levi-Civita sum are not read",

@@ -78,3 +78,37 @@ def test_a_value_in_a_name_the_text_has_not_used_is_not_compared():
     # ∫ … = σ π a²: σ first met here may be what the equation sets, not a value of the integral
     body = r"$$m = \int_0^a 2\pi r \, \mathrm{d} r = \sigma \pi a^2$$"
     assert [c.verdict for c in _claims(body)] == ["unchecked"]
+
+
+def _across(integral, value):
+    """A chain set over two displays: the first ends with ``=`` after an integral, the next goes on with ``=``."""
+    return (r"$$I = \int \rho \, r^2 \, \mathrm{d}^3 r = \frac{M}{V} %s =$$" "\n\n"
+            r"$$= %s = \frac{1}{2} M a^2 \, \frac{\pi a^2 b}{V}$$" % (integral, value))
+
+
+def test_a_chain_carried_into_the_next_display_judges_its_integral_against_the_value_there():
+    good = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} r \int_0^b \mathrm{d} z \, r^2 r"
+    slip = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} a \int_0^b \mathrm{d} z \, r^2 r"   # d a for d r
+    value = r"\frac{M}{V} 2\pi \frac{a^4}{4} b"
+    first = HEAD.count("\n") + 1            # the line of the display that writes the integral
+    held = [c for c in kept.check_text(HEAD + _across(good, value)) if c.line == first and c.verdict != "unchecked"]
+    assert [c.verdict for c in held] == ["holds"]
+    (flag,) = [c for c in kept.check_text(HEAD + _across(slip, value)) if c.verdict in ("typo", "fails")]
+    # the display that writes the integral is the one flagged, its value as written given
+    assert flag.line == first and "as written" in flag.why and "next display" in flag.why
+
+
+def test_a_display_that_does_not_go_on_with_equals_is_no_continuation():
+    slip = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} a \int_0^b \mathrm{d} z \, r^2 r"
+    apart = _across(slip, r"\frac{M}{V} 2\pi \frac{a^4}{4} b").replace("$$= ", "$$I = ")
+    assert all(c.verdict not in ("typo", "fails") for c in kept.check_text(HEAD + apart))
+
+
+def test_two_integrals_across_displays_judge_neither_display_by_their_link():
+    # unequal, either display may hold the slip; equal, both may share one (a slip written twice)
+    first = HEAD.count("\n") + 1
+    for power in ("r^4", "r^3"):
+        body = (r"$$I = \int \rho \, r^2 \, \mathrm{d}^3 r = \int_0^a \mathrm{d} r \, r^3 =$$" "\n\n"
+                r"$$= \int_0^a \mathrm{d} r \, %s = \frac{a^5}{5}$$" % power)
+        claims = kept.check_text(HEAD + body)
+        assert {c.verdict for c in claims if c.line == first} == {"unchecked"}

@@ -140,3 +140,20 @@ def test_a_function_defined_with_a_spaced_equals_sign_is_the_texts_definition(sp
 
 def test_a_unicode_letter_is_spaced_off_only_a_letter_after_it():
     assert source.characters("I_p(θ) + θx + ω₃") == "I_p(\\theta) + \\theta x + \\omega_{3}"
+
+
+@pytest.mark.parametrize("kern", ("\\mkern-1.5mu", "\\mkern -1.5 mu", "\\kern0.1em", "\\mskip 2mu"))
+def test_a_kern_by_a_length_is_dropped_before_any_reader(kern):
+    # texts set a transpose's T closer to its vector: ω^{\mkern-1.5mu T} is ωᵀ
+    assert "kern" not in source.normalize(f"\\omega^{{{kern}\\mathsf{{T}}}}") \
+        and "skip" not in source.normalize(f"\\omega^{{{kern}\\mathsf{{T}}}}")
+
+
+def test_a_kinetic_energy_written_with_a_kerned_transpose_is_read():
+    # a macro for the transpose, as a book's preamble defines it, expands to the kern too
+    head = ("---\nconvention: z-x-z\n---\n# Energy\n\n$$\n\\newcommand{\\trans}{^{\\mkern-1.5mu\\mathsf{T}}}\n$$\n\n"
+            "In the principal axes of the body:\n\n")
+    right = head + "$$\nT = \\frac{1}{2}\\boldsymbol{\\omega}\\trans\\cdot\\mathbf{I}\\cdot\\boldsymbol{\\omega}\n$$\n"
+    slip = head + "$$\nT = \\boldsymbol{\\omega}\\trans\\cdot\\mathbf{I}\\cdot\\boldsymbol{\\omega}\n$$\n"
+    assert [c.verdict for c in kept.check_text(right) if c.latex.startswith("T =")] == ["holds"]
+    assert [c.verdict for c in kept.check_text(slip) if c.latex.startswith("T =")] in (["fails"], ["typo"])

@@ -59,3 +59,21 @@ def test_a_display_the_reader_flags_already_is_not_flagged_twice():
     claims = _claims(text, "T =")
     assert [c.verdict for c in claims if c.verdict in ("typo", "fails")] == ["typo"]
     assert not any(c.kind == "dimensions" for c in claims)
+
+
+SHIFT = ("A body's centre of mass sits at $\\mathbf{a} = (a_1, a_2, a_3)$ from the point $O$.\n\n"
+         "$$\nJ_{11} = I_{11} + M((a_1^2 + a_2^2 + a_3^%s) \\delta_{11} - a_1^2)\n$$\n\n")
+
+
+def test_one_component_of_a_vector_raised_to_another_power_in_its_sum_is_flagged():
+    # the components of one vector share a dimension: a_1² + a_2² + a_3³ adds unlike quantities
+    flagged = _flagged(HEAD + SHIFT % "3", "J_{11}")
+    assert [c.verdict for c in flagged] == ["fails"] and "a_{3}^{3}" in flagged[0].why
+    assert _flagged(HEAD + SHIFT % "2", "J_{11}") == []
+
+
+def test_powers_of_two_components_or_of_several_alike_are_not_compared():
+    # two terms give no majority to call the other odd; a polynomial's powers 1, 2, 3 are all unlike
+    two = "$$\nJ_{11} = I_{11} + M(a_1^2 + a_2^3)\n$$\n\n"
+    series = "$$\nJ_{11} = I_{11} + M(a_1 + a_2^2 + a_3^3)\n$$\n\n"
+    assert _flagged(HEAD + two, "J_{11}") == [] and _flagged(HEAD + series, "J_{11}") == []

@@ -14,11 +14,17 @@ differ at a point of positive values (the text's settings put in first), its why
 integral's value as written. A numeric disagreement is never a flag (a point may leave the
 integral's domain). Nothing else of the statement is read: a name set to an integral (``I_1 =
 \\int …``) is neither a setting nor a definition, since a text's integral may leave out a density
-or a Jacobian its name means; the statement stays `unchecked`, saying so.
-May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_integrals`.
+or a Jacobian its name means; the statement stays `unchecked`, saying so. A chain the text sets over
+two displays (the second begins with ``=``, nothing read between them) links the integral closing
+the first to the second's first member: that link is judged as above and given to the display that
+writes the integral, whose value as written it is (its first members may stay unread, ``\\int … d^3 r``);
+two integrals there are not judged (unequal, either display may hold the slip; equal, they may share it).
+May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_integrals`,
+:mod:`derive.lecture.notes_claims`.
 """
 from __future__ import annotations
 
+import copy
 import functools
 import random
 import re
@@ -28,9 +34,38 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.definite_integrals import DEFINITE
+from derive.lecture.notes_claims import Claim
 
 _DIGITS = 30
 _GOES_ON = re.compile(r"\s*=(?!=)")
+_NOT_COMPARED = ("a definite integral beside no value it works out to (a name set to it keeps the text's meaning, "
+                 "which may hold a density or a Jacobian the integral leaves out): not compared")
+
+
+def _members(text):
+    """The chain's members at bracket depth 0, split at each ``=`` (a statement the parser refused)."""
+    out, depth, start = [], 0, 0
+    for k, ch in enumerate(text):
+        if ch in "{([":
+            depth += 1
+        elif ch in "})]":
+            depth -= 1
+        elif ch == "=" and depth == 0 and (k == 0 or text[k - 1] not in "<>!\\") and text[k + 1:k + 2] != "=":
+            out.append(text[start:k])
+            start = k + 1
+    return out + [text[start:]]
+
+
+def _last_member(text):
+    """The last member the chain writes, or None."""
+    found = [m for m in _members(text) if m.strip()]
+    return found[-1] if found else None
+
+
+def _first_member(text):
+    """The first member of a row that goes on with ``=``, or None."""
+    found = [m for m in _members(text) if m.strip()]
+    return found[0] if found else None
 
 
 def _spans(text, parsed):
@@ -100,19 +135,24 @@ class IntegralClaims:
         tail, self._integral_tail = getattr(self, "_integral_tail", None), None
         if tail is not None and tail[0] == line and _GOES_ON.match(piece):
             text = tail[1] + " " + piece
+        elif tail is not None and _GOES_ON.match(piece) and self._display_goes_on(tail[0], line):
+            self._across_displays(tail, piece)
         if DEFINITE.search(text) is None:
             return False
         try:
             parsed = lx.parse(text, self.vocab)
         except lx.NotRead as err:
             self._add(line, piece, "unknown", "unchecked", err.why)
+            last = _last_member(text)
+            if last is not None and DEFINITE.search(last):
+                self._integral_tail = (line, last, self.claims[-1])
             return True
         spans, done = _spans(text, parsed), False
         # a chain that names what it works out (V = ∫ … = value) says the value is the integral's, so
         # the value's names the text has used before are not set by it
         named = len(parsed.members) > 2 and isinstance(parsed.members[0].value, lx.Generic) and not DEFINITE.search(spans[0])
         if DEFINITE.search(spans[-1]):
-            self._integral_tail = (line, spans[-1])
+            self._integral_tail = (line, spans[-1], None)
         for k, rel in enumerate(parsed.relations):
             if rel != "=" or not (DEFINITE.search(spans[k]) or DEFINITE.search(spans[k + 1])):
                 continue
@@ -126,10 +166,48 @@ class IntegralClaims:
                 self._add(line, piece, "identity", *verdict)
                 done = True
         if not done:
-            self._add(line, piece, "unknown", "unchecked",
-                      "a definite integral beside no value it works out to (a name set to it keeps the text's meaning, "
-                      "which may hold a density or a Jacobian the integral leaves out): not compared")
+            self._add(line, piece, "unknown", "unchecked", _NOT_COMPARED)
+            if self._integral_tail is not None:
+                self._integral_tail = (line, spans[-1], self.claims[-1])
         return True
+
+    def _display_goes_on(self, before, line) -> bool:
+        """The display at ``line`` follows the one at ``before`` with nothing the reader takes between them
+        and begins with ``=``: one chain the text sets over two displays."""
+        items = self.notes.items
+        return any(a.line == before and b.line == line and a.kind == b.kind == "display" and _GOES_ON.match(b.latex)
+                   for a, b in zip(items, items[1:]))
+
+    def _across_displays(self, tail, piece):
+        """Judge the link between the integral closing the display before and this display's first member,
+        given to the display that writes the integral (the value its integral is claimed to work out to).
+        ``tail``: (that display's line, its integral member, its unjudged claim or None)."""
+        first, member = _first_member(piece), _GOES_ON.sub("", tail[1], count=1)
+        if first is None:
+            return
+        # read on a copy of the vocabulary: the next display's names are met when its own reading meets them
+        vocab = copy.copy(self.vocab)
+        vocab.generic, vocab._atoms_met, vocab.defined = dict(vocab.generic), dict(vocab._atoms_met), dict(vocab.defined)
+        both = bool(DEFINITE.search(first))
+        if both:
+            return          # two integrals: equal, they may share a slip; unequal, either display may hold it
+        try:
+            a, b = (sp.sympify(lx.parse(m, vocab).members[0].value) for m in (member, first))
+            verdict = self._integral_link(a, b, both)
+        except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
+                NotImplementedError, RecursionError, sp.SympifyError):
+            return          # a member the parser or SymPy cannot take: the link stays unjudged
+        if verdict is None:
+            return
+        claim = Claim(tail[0], f"{member.strip()} = {first.strip()}", "identity", *verdict[:1], None,
+                      verdict[1] + " (a chain the text carries on into the next display)")
+        at = next((k for k, c in enumerate(self.claims) if c is tail[2]), None)
+        if at is None:
+            self.claims.append(claim)
+        elif tail[2].why == _NOT_COMPARED:     # the integral's value found: no longer beside no value
+            self.claims[at] = claim
+        else:
+            self.claims.insert(at + 1, claim)
 
     def _written_before(self, line) -> set:
         """The symbols of the text's math on lines before ``line`` (read again: a probe of this display

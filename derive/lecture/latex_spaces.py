@@ -46,3 +46,8 @@ SPACE_NAMES = frozenset(_SMALL + " ")
 QUAD_NAMES = frozenset({"quad", "qquad"})
 """The names of the quads, as a scanner meets them after a backslash (it reads a statement already cut
 at its top-level quads: one left inside a group only spaces)."""
+
+KERN = r"\\(?:mkern|mskip|kern|hskip)\s*-?\s*(?:\d+\.?\d*|\.\d+)\s*(?:mu|em|ex|pt)(?![A-Za-z])"
+"""A kern or a skip by an explicit length (``\\mkern-1.5mu``, ``\\kern0.1em``): typography that only
+moves what follows (a transpose's T set closer, ``\\mathbf{M}^{\\mkern-1.5mu\\mathrm{T}}``), dropped
+before any reader sees the formula."""

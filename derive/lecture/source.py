@@ -19,7 +19,8 @@ What is normalised:
   non-breaking space) becomes its command; HTML entities (``&#8211;``, ``&minus;``, ``&lt;``)
   are decoded.
 * **Not mathematics**: ``\\tag``, ``\\notag``, ``\\nonumber``, ``\\label``, ``\\displaystyle``,
-  ``\\hspace``, ``\\phantom``, ``\\noalign``, comments, ``\\left.`` and ``\\right.`` are dropped.
+  ``\\hspace``, ``\\phantom``, ``\\noalign``, a kern by a length (``\\mkern-1.5mu``), comments,
+  ``\\left.`` and ``\\right.`` are dropped.
 * **Wrappers**: ``\\boxed{X}``, ``\\ensuremath``, ``\\mathcal``/``\\mathscr`` (their letter),
   ``\\pmb``/``\\vb``/``\\bm`` (bold), ``\\vu`` (a bold hat), ``\\operatorname{sin}`` (the
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
@@ -44,7 +45,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
 from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units
-from derive.lecture.latex_spaces import ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
+from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -572,7 +573,7 @@ def _normalized(latex: str, user: tuple) -> str:
     except texmacros.MacroLoop as loop:
         # a macro that expands into itself stays as written: the reader names it as unreadable
         latex = texmacros.expand(latex, {k: v for k, v in user.items() if k != loop.name})
-    latex = imaginary_unit.read(latex)               # once the macros are expanded: a unit vector î shows
+    latex = imaginary_unit.read(re.sub(KERN, " ", latex))   # once the macros are expanded: a unit vector î shows
     latex = _MATHOP.sub(_operator_body, latex)       # \\mathop{}\\!\\mathrm{d}: the upright differential d
     try:
         nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()

@@ -15,6 +15,9 @@ a letter two such equations give different dimensions is unknown from then on, a
 has set to a number (a worked example, in units it may have scaled) is unknown. A term with any
 unknown name is never compared, and a pure number is never compared (a text may write 1 + E in
 scaled units); a function's argument is read for sums of its own, its value taken as a pure number.
+The components of one of the text's vectors (a₁, a₂, a₃ or a_x, a_y, a_z) share a dimension whatever
+it is: a sum of three or more of them, each alone to a power times a number, with every power alike
+but one (a₁² + a₂² + a₃³) adds unlike quantities too.
 
 May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
 :mod:`derive.symbolic`.
@@ -56,6 +59,7 @@ _LONE = re.compile(r"\s*\d*\s*(?:\\[A-Za-z]+\s*\{\s*\w+\s*\}|\\[A-Za-z]+|[A-Za-z
                    r"\s*(?:\^\s*(?:\{\s*\d\s*\}|\d))?\s*[.,]?\s*$")
 """A member that may be a number times a power of one letter: ``2E``, ``h^2``, ``\\mathrm{KE}``, ``G_0``."""
 _CONFLICT = "conflict"
+_COMPONENTS = {"1", "2", "3", "x", "y", "z"}
 _NAMES = ("M", "L", "T")
 
 
@@ -94,11 +98,36 @@ class UnlikeTerms:
                 a, b = (-x if x.could_extract_minus_sign() else x for x in found[0])
                 return piece, (f"adds quantities of unlike dimensions: {self.tex(a)} ({_shown(self._dimension(a, []))}) "
                                f"and {self.tex(b)} ({_shown(self._dimension(b, []))})")
+            odd = self._unlike_components(value)
+            if odd is not None:
+                return piece, ("adds unlike powers of the components of one vector, which share a dimension: "
+                               f"{self.tex(odd[0])} and {self.tex(odd[1])}")
         if learn:
             try:
                 self._learn(values)
             except (TypeError, AttributeError, ValueError):
                 pass                # nothing is learned from a member the walk does not know
+        return None
+
+    def _unlike_components(self, value):
+        """(a term, the odd term) of a sum in ``value`` that adds powers of three or more components of
+        one of the text's vectors (a_1, a_2, a_3 or a_x, a_y, a_z, each alone times a number) with every
+        power alike but one (a_1^2 + a_2^2 + a_3^3), else None."""
+        for add in value.atoms(sp.Add):
+            powers = {}
+            for t in add.args:
+                one = _lone_letter(t)
+                atom = self.vocab.generic.get(one[0]) if one is not None else None
+                if atom is None or atom.sub not in _COMPONENTS:
+                    continue
+                powers.setdefault(atom.with_(sub="", text=""), []).append((atom.sub, one[1], t))
+            for found in powers.values():
+                exps = [e for _, e, _ in found]
+                if len(found) < 3 or len({sub for sub, _, _ in found}) != len(found) or len(set(exps)) != 2:
+                    continue
+                odd = [t for _, e, t in found if exps.count(e) == 1]
+                if len(odd) == 1:
+                    return next(t for _, e, t in found if exps.count(e) > 1), odd[0]
         return None
 
     def _unlike_flagged(self, line, unlike, start):
