@@ -10,12 +10,21 @@ write ω = θ̇ î′ + φ̇ sin θ ĵ′ + (φ̇ cos θ + ψ̇) k̂′), the bo
 Texts prime either of them, and say which in words the reader does not parse, so the statement is
 kept under the first frame in which it holds, its why naming that frame. Under none it is read as
 written, the primed letters the text's own (a slip and a frame the reader did not try, such as
-the one after the first turn only, look alike, so no reading of them as a frame flags it). May
-import: the standard library.
+the one after the first turn only, look alike, so no reading of them as a frame flags it).
+
+Unit vectors written with a hat and no prime, index or power (``\\hat{z}``, ``\\bm{\\hat{z}}``,
+``\\hat{\\mathbf{k}}``) that the text has not defined are tried the same way as the axes of the
+space frame, then of the body frame (texts write 𝛚 = θ̇ ê′₂ + φ̇ ẑ + ψ̇ ê₃ with ẑ the vertical). A
+statement that holds under neither is flagged only where it fails the same way under both as no
+vector at all (a product of two unit vectors, a scalar added to a vector): what fails whichever
+frame the hats name is not the reader's choice of frame. May import: the standard library and
+`derive.lecture.vocabulary`.
 """
 from __future__ import annotations
 
 import re
+
+from derive.lecture.vocabulary import NotRead, scan
 
 # \hat{i}', \hat i', \hat{\mathbf{i}}', \mathbf{\hat{i}}', \hat{\imath}', with ' or ^\prime / ^{\prime}
 _PRIMED = re.compile(r"(?:\\hat\s*\{\s*(?:\\mathbf\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
@@ -23,6 +32,18 @@ _PRIMED = re.compile(r"(?:\\hat\s*\{\s*(?:\\mathbf\s*\{\s*([ijkxyz])\s*\}|\\([ij
                      r"|\\mathbf\s*\{\s*\\hat\s*\{\s*([ijkxyz])\s*\}\s*\})"
                      r"\s*(?:'|\^\s*\\prime\b|\^\s*\{\s*\\prime\s*\})")
 _INDEX = {"i": 1, "j": 2, "k": 3, "x": 1, "y": 2, "z": 3}
+
+# the same letters with no prime, index or power after them: \hat{z}, \hat z, \bm{\hat{z}}, \hat{\mathbf{k}}
+_PLAIN = re.compile(r"(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*\\hat\s*\{?\s*([ijkxyz])\s*\}?\s*\}"
+                    r"|\\hat\s*\{\s*(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
+                    r"|\\hat\s+([ijkxyz])(?![A-Za-z]))"
+                    r"(?!\s*(?:'|\^|_))")
+
+PLAIN_FRAMES = (
+    ("^{0}", "the space frame"),
+    ("", "the body frame"),
+)
+"""The frames tried for hatted letters with no prime, the fixed axes first."""
 
 FRAMES = (
     ("'", "the frame after the first two turns (the line of nodes and the symmetry axis among its axes)"),
@@ -37,13 +58,19 @@ def primed_axes(text: str) -> list[str]:
     return [m.group(0) for m in _PRIMED.finditer(text)]
 
 
-def in_frame(text: str, mark: str) -> str:
-    """The statement with each primed unit vector the frame's unit vector ê with its index and
-    ``mark`` (``'`` for ê′ᵢ, ``''`` for êᵢ, ``^{0}`` for ê⁰ᵢ); î′ ĵ′ k̂′ are axes 1, 2, 3."""
+def plain_axes(text: str) -> list[str]:
+    """The hatted unit vectors with no prime, index or power a statement writes, as written."""
+    return [m.group(0) for m in _PLAIN.finditer(text)] if "hat" in text else []
+
+
+def in_frame(text: str, mark: str, pattern=_PRIMED) -> str:
+    """The statement with each primed unit vector (each of ``pattern``'s) the frame's unit vector
+    ê with its index and ``mark`` (``'`` for ê′ᵢ, ``''`` for êᵢ, ``^{0}`` for ê⁰ᵢ); î′ ĵ′ k̂′ are
+    axes 1, 2, 3."""
     def unit(m):
         letter = next(g for g in m.groups() if g)
         return rf"\hat{{\mathbf{{e}}}}_{{{_INDEX[letter]}}}{mark} "
-    return _PRIMED.sub(unit, text)
+    return pattern.sub(unit, text)
 
 
 class PrimedAxes:
@@ -55,7 +82,11 @@ class PrimedAxes:
         vectors, else as read (see the module docstring)."""
         written = primed_axes(piece)
         if not written:
-            self._read_once_or_twice(line, piece, dup, pieces)
+            plain = plain_axes(piece)
+            if plain and self._hats_unread(plain):
+                self._plain_axes(line, piece, dup, pieces, plain)
+            else:
+                self._read_once_or_twice(line, piece, dup, pieces)
             return
         before, saved = len(self.claims), self._snapshot()
         for mark, frame in FRAMES:
@@ -67,3 +98,45 @@ class PrimedAxes:
                 self._keep(before, claims, ctx)
                 return
         self._read_once_or_twice(line, piece, dup, pieces)     # as written: the letters the text's own
+
+    def _hats_unread(self, written) -> bool:
+        """Whether some hatted letter of the statement means nothing to the reader yet."""
+        for text in written:
+            try:
+                toks = scan(text)
+            except NotRead:
+                return False
+            if any(t.kind == "atom" and self.vocab.resolve(t.value) is None for t in toks):
+                return True
+        return False
+
+    def _plain_axes(self, line, piece, dup, pieces, written):
+        """The statement under the first frame in which it holds, or flagged where it fails alike
+        as no vector under each; else as read (see the module docstring)."""
+        before, saved = len(self.claims), self._snapshot()
+        names = ", ".join(dict.fromkeys(written))
+        trials = []
+        # a trial's reading may tie the text's names in the vocabulary; one not kept leaves none tied
+        kept = dict(self.vocab.defined)
+        for mark, frame in PLAIN_FRAMES:
+            self.vocab.defined.clear()
+            self.vocab.defined.update(kept)
+            claims, ctx = self._sandbox(saved, line, in_frame(piece, mark, _PLAIN), dup, pieces, judging_only=True)
+            if claims and all(c.verdict == "holds" for c in claims):
+                for c in claims:
+                    c.latex = piece
+                    c.why += f" (reading {names} as the unit vectors of {frame})"
+                self._keep(before, claims, ctx)
+                return
+            trials.append((claims, ctx))
+        self.vocab.defined.clear()
+        self.vocab.defined.update(kept)
+        whys = {tuple(c.why for c in claims) for claims, _ in trials}
+        claims, ctx = trials[0]
+        if len(whys) == 1 and claims and all(c.verdict == "fails" and "not a vector" in c.why for c in claims):
+            for c in claims:
+                c.latex = piece
+                c.why += f" (whichever frame {names} belongs to: read in the space frame and in the body frame, it fails alike)"
+            self._keep(before, claims, ctx)
+            return
+        self._read_once_or_twice(line, piece, dup, pieces)
