@@ -41,15 +41,11 @@ SHORT = {
         "that holds is not taken as one), so it stays unchecked",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
-        "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked; the inertia "
-        "tensor and T as vector products, zhat's decomposition on the primed axes, the steady precession at the "
+        "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked, and so are "
+        "omega along zhat and the primed axes (zhat the space frame's axis) and omega_2's dot over a product, and L = I omega and T = 1/2 omega . I omega with a plain I; the "
+        "steady precession at the "
         "minimum vartheta_0 the text names without tying it (its +- roots and the fast top's expansion), the "
         "nutation frequency through U'' and the sleeping top's forms to an order in a small tilt are not read",
-    ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "found"):
-        "two of five slips are flagged (the kinetic energy without its square, the slow precession named "
-        "vartheta-dot); zhat's decomposition with its '=' lost and omega_2's rate of (vartheta cos varphi) are "
-        "not read, and the sleeping top's varphi-dot named vartheta-dot is the small-tilt limit of the case "
-        "L_z = Cn, which the case imposed does not reach (only a statement that vanishes on it exactly holds)",
     ("maithripala-free-body-heavy-top-313", "checked"):
         "a LaTeX source written in the body angular momentum Pi (\\mathbb{I}_i, h = ||Pi||, E) with Jacobi "
         "elliptic functions: the displays of its free-body solution that write h for h^2 are flagged (sums of "
@@ -75,10 +71,6 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
-    ("cooperrc-advanced-dynamics-spinning-top", "found"):
-        "its slip (v_G for the velocity of G relative to B in the kinetic energy about a moving point) sits in a "
-        "display in bold products that the reader does not read, and that holds when B is at rest, as the form "
-        "before it does (T = 1/2 omega H_B, held if B is at rest): only the page's moving B makes it a slip",
     ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
         "integrals over the body of vector integrands (int_V rho r x (omega x r) dV, int_V f . rdot dV), the "
         "element I_ij with a Kronecker delta and a sum over k, the parallel-axis theorem in matrices "
@@ -199,7 +191,8 @@ SHORT = {
     ("physics-se-inertia-tensor-rotated-object-similarity-transform", "checked"):
         "its chain is in plain letters, L = I omega premultiplied by the rotation matrix R with the matrix product "
         "written \\times (R \\times I \\times R^T): the reader reads \\times as the cross product, ties plain I, L "
-        "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1)",
+        "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1); only the bold L = I omega "
+        "is read (a plain I before a bold omega is the tensor)",
     ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
         "17 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r and the "
         "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "

@@ -366,7 +366,9 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         if defined:
             named.append((m.start(), Item("inline", line, latex=defined, lead=near)))
         rest = body[m.end():body.find("\n", m.end()) if body.find("\n", m.end()) >= 0 else len(body)]
-        alone = not body[starts[line - 1]:m.start()].strip() and re.fullmatch(r"\s*[.,;:]?\s*", rest) is not None
+        # the line's whole content, or a list item's (``3. $T = …$``): set apart as a display is
+        alone = re.fullmatch(r"\s*(?:(?:[-*+]|\d+[.)])\s+)?", body[starts[line - 1]:m.start()]) is not None \
+            and re.fullmatch(r"\s*[.,;:]?\s*", rest) is not None
         for one in components(latex.strip("()") if assumed and wrapped else latex):
             events.append((m.start(), Item("assumption" if assumed else "inline", line, latex=one, lead=near,
                                            alone=alone)))

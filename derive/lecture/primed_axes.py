@@ -19,7 +19,15 @@ that writes no angle and does not hold on ê′ᵢ is tried with them read as th
 and kept there if it holds (½(I₁ω₁′² + I₂ω₂′² + I₃ω₃′²), the principal-frame energy, holds only
 there unless I₁ = I₂); else it is read as written. A statement in the angles fixes the frame
 (ω₁′ = −φ̇ sin θ is a component on ê′₁, and one written with the body's ψ terms is a slip), so
-it is read as written. May import: the standard library and :mod:`derive.lecture.vocabulary`.
+it is read as written.
+
+Unit vectors written with a hat and no prime, index or power (``\\hat{z}``, ``\\bm{\\hat{z}}``,
+``\\hat{\\mathbf{k}}``) that the text has not defined are tried the same way as the axes of the
+space frame, then of the body frame (texts write 𝛚 = θ̇ ê′₂ + φ̇ ẑ + ψ̇ ê₃ with ẑ the vertical). A
+statement that holds under neither is flagged only where it fails the same way under both as no
+vector at all (a product of two unit vectors, a scalar added to a vector): what fails whichever
+frame the hats name is not the reader's choice of frame. May import: the standard library and
+`derive.lecture.vocabulary`.
 """
 from __future__ import annotations
 
@@ -37,6 +45,18 @@ _PRIME = r"(?:'|\^\s*\\prime\b|\^\s*\{\s*\\prime\s*\})"
 _AXIS = r"_\s*(?:\{\s*([123])\s*\}|([123]))"
 # ω₁′ written \omega_1', \omega_{1}^\prime, or \omega'_1 (the prime before the index)
 _PRIMED_RATE = re.compile(r"\\omega\s*(?:" + _AXIS + r"\s*" + _PRIME + r"|" + _PRIME + r"\s*" + _AXIS + r")")
+
+# the same letters with no prime, index or power after them: \hat{z}, \hat z, \bm{\hat{z}}, \hat{\mathbf{k}}
+_PLAIN = re.compile(r"(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*\\hat\s*\{?\s*([ijkxyz])\s*\}?\s*\}"
+                    r"|\\hat\s*\{\s*(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
+                    r"|\\hat\s+([ijkxyz])(?![A-Za-z]))"
+                    r"(?!\s*(?:'|\^|_))")
+
+PLAIN_FRAMES = (
+    ("^{0}", "the space frame"),
+    ("", "the body frame"),
+)
+"""The frames tried for hatted letters with no prime, the fixed axes first."""
 
 FRAMES = (
     ("'", "the frame after the first two turns (the line of nodes and the symmetry axis among its axes)"),
@@ -61,13 +81,19 @@ def in_body(text: str) -> str:
     return _PRIMED_RATE.sub(lambda m: rf"\omega_{{{next(g for g in m.groups() if g)}}}", text)
 
 
-def in_frame(text: str, mark: str) -> str:
-    """The statement with each primed unit vector the frame's unit vector ê with its index and
-    ``mark`` (``'`` for ê′ᵢ, ``''`` for êᵢ, ``^{0}`` for ê⁰ᵢ); î′ ĵ′ k̂′ are axes 1, 2, 3."""
+def plain_axes(text: str) -> list[str]:
+    """The hatted unit vectors with no prime, index or power a statement writes, as written."""
+    return [m.group(0) for m in _PLAIN.finditer(text)] if "hat" in text else []
+
+
+def in_frame(text: str, mark: str, pattern=_PRIMED) -> str:
+    """The statement with each primed unit vector (each of ``pattern``'s) the frame's unit vector
+    ê with its index and ``mark`` (``'`` for ê′ᵢ, ``''`` for êᵢ, ``^{0}`` for ê⁰ᵢ); î′ ĵ′ k̂′ are
+    axes 1, 2, 3."""
     def unit(m):
         letter = next(g for g in m.groups() if g)
         return rf"\hat{{\mathbf{{e}}}}_{{{_INDEX[letter]}}}{mark} "
-    return _PRIMED.sub(unit, text)
+    return pattern.sub(unit, text)
 
 
 class PrimedAxes:
@@ -79,8 +105,11 @@ class PrimedAxes:
         vectors, else as read (see the module docstring)."""
         written = primed_axes(piece)
         if not written:
+            plain = plain_axes(piece)
             if primed_rates(piece) and not self._writes_angles(piece):
                 self._read_rates_or_plain(line, piece, dup, pieces)
+            elif plain and self._hats_unread(plain):
+                self._plain_axes(line, piece, dup, pieces, plain)
             else:
                 self._read_once_or_twice(line, piece, dup, pieces)
             return
@@ -118,3 +147,45 @@ class PrimedAxes:
             return True
         names = (t.value.base + ("_" + t.value.sub if t.value.sub else "") for t in toks if t.kind == "atom")
         return any(self.vocab.angle_index(n) is not None for n in names)
+
+    def _hats_unread(self, written) -> bool:
+        """Whether some hatted letter of the statement means nothing to the reader yet."""
+        for text in written:
+            try:
+                toks = scan(text)
+            except NotRead:
+                return False
+            if any(t.kind == "atom" and self.vocab.resolve(t.value) is None for t in toks):
+                return True
+        return False
+
+    def _plain_axes(self, line, piece, dup, pieces, written):
+        """The statement under the first frame in which it holds, or flagged where it fails alike
+        as no vector under each; else as read (see the module docstring)."""
+        before, saved = len(self.claims), self._snapshot()
+        names = ", ".join(dict.fromkeys(written))
+        trials = []
+        # a trial's reading may tie the text's names in the vocabulary; one not kept leaves none tied
+        kept = dict(self.vocab.defined)
+        for mark, frame in PLAIN_FRAMES:
+            self.vocab.defined.clear()
+            self.vocab.defined.update(kept)
+            claims, ctx = self._sandbox(saved, line, in_frame(piece, mark, _PLAIN), dup, pieces, judging_only=True)
+            if claims and all(c.verdict == "holds" for c in claims):
+                for c in claims:
+                    c.latex = piece
+                    c.why += f" (reading {names} as the unit vectors of {frame})"
+                self._keep(before, claims, ctx)
+                return
+            trials.append((claims, ctx))
+        self.vocab.defined.clear()
+        self.vocab.defined.update(kept)
+        whys = {tuple(c.why for c in claims) for claims, _ in trials}
+        claims, ctx = trials[0]
+        if len(whys) == 1 and claims and all(c.verdict == "fails" and "not a vector" in c.why for c in claims):
+            for c in claims:
+                c.latex = piece
+                c.why += f" (whichever frame {names} belongs to: read in the space frame and in the body frame, it fails alike)"
+            self._keep(before, claims, ctx)
+            return
+        self._read_once_or_twice(line, piece, dup, pieces)

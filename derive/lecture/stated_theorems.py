@@ -24,13 +24,16 @@ G, cm, CM, com), as every mechanics course writes them:
 Such a statement `holds`, its why naming the theorem, where the checker left it `unchecked` (a
 name it records, then uses; symbols it does not tie). Any other form — another sign, power or
 factor, a point that is not the centre of mass, a distance written as a sum of squares — is left
-to the checker, never flagged here. May import: the standard library, :mod:`derive.lecture.latex_spaces`.
+to the checker, never flagged here; T about a moving point of the body is judged by
+`derive.lecture.moving_point_energy`. May import: the standard library, :mod:`derive.lecture.latex_spaces`,
+:mod:`derive.lecture.moving_point_energy`.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture.latex_spaces import SPACE_SYMBOL, TIE
+from derive.lecture.moving_point_energy import energy_about_a_point
 
 _CENTRE = r"(?:C|c|G|cm|CM|com|\\text\{cm\}|\\mathrm\{cm\})"
 _SUB = r"(\{[^{}]*(?:\{[^{}]*\}[^{}]*)*\}|[A-Za-z0-9])"
@@ -110,7 +113,13 @@ class StatedTheorems:
         one that holds where the statement is one of the theorems (see the module docstring)."""
         why = theorem(piece)
         mine = self.claims[before:]
-        if why is None or not mine or any(c.verdict != "unchecked" for c in mine):
+        if not mine or any(c.verdict != "unchecked" for c in mine):
+            return
+        if why is None and (about := energy_about_a_point(piece)) is not None:
+            mine[0].kind, mine[0].verdict, mine[0].why, mine[0].correction = "moving point", *about, None
+            del self.claims[before + 1:]
+            return
+        if why is None:
             return
         kind = {PARALLEL: "parallel axes", KOENIG: "König", PROJECTION: "projection"}.get(why, "fixed point")
         mine[0].kind, mine[0].verdict, mine[0].why, mine[0].correction = kind, "holds", why, None

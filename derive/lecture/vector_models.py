@@ -303,14 +303,24 @@ def vectorish(toks) -> bool:
     if any(a.base == "e" and a.hat and a.sub in ("1", "2", "3") for a in atoms) and \
             any((a.bold or a.text.startswith("\\vec")) and a.base not in ("e", "omega") for a in atoms[:1]):
         return True
-    for t in toks:
+    for k, t in enumerate(toks):
         if t.kind == "cmd" and t.value == "times":
             return True
         if t.kind == "atom":
             a = t.value
             if _particle_atom(a) or (a.base == "I" and (a.bold or a.dots == 2 or len(a.sub) == 2)):
                 return True
+            if _tensor_on_omega(a, toks[k + 1] if k + 1 < len(toks) else None):
+                return True
     return _has_time_derivative(toks)
+
+
+def _tensor_on_omega(a, after) -> bool:
+    """A plain I acting on a bold 𝛚 (``I\\boldsymbol{\\omega}``, ``\\boldsymbol{\\omega}\\cdot I\\boldsymbol{\\omega}``):
+    the inertia tensor, as a text that writes the tensor without bold has it."""
+    return a.base == "I" and not (a.sub or a.sup or a.bold or a.dots or a.hat or a.tilde or a.primes) \
+        and after is not None and after.kind == "atom" and after.value.base == "omega" and after.value.bold \
+        and not after.value.sub and not after.value.dots
 
 
 _INDEX = r"(\\[A-Za-z]+|[A-Za-z])"

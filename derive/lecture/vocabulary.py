@@ -4,7 +4,7 @@ quantities and their usual spellings (or, open to the text's own names, makes it
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
 May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`,
-:mod:`derive.lecture.matrix_exp`, :mod:`derive.lecture.variations`, SymPy.
+:mod:`derive.lecture.matrix_exp`, :mod:`derive.lecture.variations`, :mod:`derive.lecture.dotted_products`, SymPy.
 """
 from __future__ import annotations
 
@@ -16,6 +16,7 @@ import sympy as sp
 
 from derive.lecture import elliptic
 from derive.lecture.definite_integrals import written_with_bounds
+from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.lecture.variations import variation_at
@@ -384,6 +385,10 @@ def _scanned(s: str) -> tuple[Tok, ...]:
                 toks.append(Tok("cmd", name, i))
                 i = m.end()
                 continue
+            if name in ("dot", "ddot") and (rate := rate_of_product(s, i, m.end(), name, _reader)) is not None:
+                toks.extend(rate[0])
+                i = rate[1]
+                continue
             if name in DECORATIONS or name in GREEK:
                 atom, j = _atom_at(s, i)
                 toks.append(Tok("atom", atom, i))
@@ -397,6 +402,9 @@ def _scanned(s: str) -> tuple[Tok, ...]:
             continue
         raise NotRead(f"cannot read {ch!r}", i + 1)
     return tuple(toks)
+
+
+_reader = (group, _atom_at, _scanned, Tok, NotRead)        # the scanner's parts `rate_of_product` reads with
 
 
 # --- the vocabulary ----------------------------------------------------------------------------
