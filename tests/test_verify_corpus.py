@@ -124,9 +124,10 @@ SHORT = {
         "moving frame, the angular velocity as phidot e_Z + thetadot e_N + psidot e_z and the body angular "
         "velocity are checked",
     ("physics-se-angular-velocity-euler-angles-rotation-matrices", "checked"):
-        "0 of 8: omega written through rotation matrices T_1, T_2 acting on unit vectors (T_1(thetadot xhat)), "
-        "a derivative chain of matrices with 'vector x matrix' products, and R(t), R^t, R-dot of a rotation "
-        "the text leaves general are not read",
+        "3 of 8: R R^t = I, the rate of it and x-dot = R-dot R^t x of the general rotation R(t) are read as "
+        "identities of a rotation; omega written through rotation matrices T_1, T_2 acting on unit vectors "
+        "(T_1(thetadot xhat)), a derivative chain of matrices with 'vector x matrix' products, and Omega x = "
+        "omega x x (omega named by the entries of the skew matrix Omega) are not read",
     ("physics-se-angular-velocity-euler-angles-rotation-matrices", "found"):
         "its two slips (psidot for the rate phidot of T_1 in the update's chain and its result) sit in the "
         "matrix-product displays the reader does not read",
@@ -184,15 +185,11 @@ SHORT = {
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "found"):
         "0 of 1: the slip (f-double-dot = -r for -omega^2 r, n-dot for n-double-dot) sits in the body-surface "
         "frame's trihedron, whose vectors the reader does not read",
-    ("physics-se-euler-equations-inertial-body-frame-rotation-matrix", "found"):
-        "its slip is the step 'I = R I_B' (the inertial inertia tensor is R I_B R^T) inside a chain whose boxed "
-        "result holds: the reader does not model the rotation matrix R that carries body components into inertial "
-        "ones, so I = R I_B is recorded as the text's definition of I and the step is not judged",
     ("physics-se-inertia-tensor-rotated-object-similarity-transform", "checked"):
-        "its chain is in plain letters, L = I omega premultiplied by the rotation matrix R with the matrix product "
-        "written \\times (R \\times I \\times R^T): the reader reads \\times as the cross product, ties plain I, L "
-        "and omega to nothing, and has no model of R as a rotation matrix (R^T R = 1); only the bold L = I omega "
-        "is read (a plain I before a bold omega is the tensor)",
+        "3 of 6: the chain from L = I omega premultiplied by the rotation R (its \\times the matrix product) is "
+        "read as identities of a rotation; L = I omega and its restatement in components set the text's L, "
+        "which no rotation enters, and "
+        "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
     ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
         "17 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r and the "
         "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "

@@ -39,6 +39,7 @@ from derive.lecture.own_sign import OwnSign
 from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.quaternions import Quaternions
+from derive.lecture.rotation_products import RotationProducts
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
@@ -60,5 +61,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments):
+                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts):
     """Every reading rule, in method-lookup order (see the module docstring)."""
