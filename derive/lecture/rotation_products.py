@@ -300,7 +300,10 @@ class RotationProducts:
                 seen |= _letters(text)
                 continue
             written = _letters(text)
-            if not {(b, u) for b, u, _ in written} & bases and (claim.verdict != "unchecked" or claim.kind not in _KINDS):
+            # a definition the reader judged (L = I omega in the model's own terms) is the text's too
+            judged_definition = claim.verdict == "holds" and claim.kind == "definition"
+            open_claim = claim.verdict == "unchecked" or judged_definition
+            if not {(b, u) for b, u, _ in written} & bases and (not open_claim or claim.kind not in _KINDS):
                 seen |= written             # no rotation in it and no definition: nothing to read (cheap test first)
                 continue
             letters = (rotations, vectors, defs, inertia)
@@ -317,7 +320,7 @@ class RotationProducts:
             turned = _turned(members, values, turns, used, inertia, claim.latex)
             if turned is not None and claim.verdict == "unchecked":
                 claim.kind, claim.verdict, claim.why = "identity", "fails", turned
-            elif claim.verdict == "unchecked" and claim.kind in _KINDS and len(values) == 2 and rels[0] in ("=", "≡") \
+            elif open_claim and claim.kind in _KINDS and len(values) == 2 and rels[0] in ("=", "≡") \
                     and key is not None and key not in seen and not first.dots and key not in turns:
                 if not rated:       # a definition is kept as a function of t (a later statement may take its rate)
                     read = [_members(text, _Model(*letters, draw)) for draw in _DRAWS]
