@@ -160,3 +160,10 @@ def test_a_difference_shown_at_a_point_is_never_an_identity_and_an_identity_is_n
     # matrices of two shapes, or a matrix beside a scalar, are left to the caller
     assert not zt.differs_somewhere(sp.Matrix([x, y]), sp.Matrix([[x, y]]), "seed")
     assert not zt.differs_somewhere(sp.Matrix([x]), x + 1, "seed")
+
+
+def test_the_numeric_screens_leave_a_formula_with_no_value_to_the_symbolic_steps():
+    f = sp.Function("f")(a)
+    # an undefined function has no value at a point: neither screen decides, nor raises
+    assert not zt.differs_somewhere(f * x, f, "seed") and not zt.ratio_varies(f * x, f, "seed")
+    assert not zt.differs_somewhere(sp.Derivative(f, a) * x, sp.Derivative(f, a), "seed")

@@ -328,7 +328,7 @@ def ratio_varies(a, b, seed: str) -> bool:
             point = [mpmath.mpf(p.p) / p.q for p in sample(symbols, rng)]
             try:
                 vals = mp_values.real_values(f, radicands, point)
-            except (NotImplementedError, ArithmeticError, mpmath.NoConvergence):
+            except (NotImplementedError, ArithmeticError, libmp.NoConvergence):
                 return False                  # no value to compare: left to `cancel`
             if vals is not None and all(mpmath.im(v) == 0 and mpmath.isfinite(v) for v in vals):
                 found.append([mpmath.re(v) for v in vals])
@@ -479,7 +479,7 @@ def differs_somewhere(a, b, seed: str) -> bool:
         return False
     try:
         return counterexample(a, b, seed) is not None
-    except (NotImplementedError, TypeError, ValueError, ArithmeticError, mpmath.NoConvergence):
+    except (NotImplementedError, TypeError, ValueError, ArithmeticError, libmp.NoConvergence):
         return False                      # no value to compare: left to `expand`
 
 
