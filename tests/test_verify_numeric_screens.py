@@ -127,3 +127,43 @@ def test_an_equation_of_motion_is_refused_by_the_exact_screen_only_when_no_euler
     # a wrong sign, and a root the equations do not have, are
     assert comparing.not_a_consequence(J1 * wd[0] + (J2 - J3) * w[1] * w[2], euler)
     assert comparing.not_a_consequence(J2 * wd[1] - sp.sqrt((J3 - J1) ** 2 * w[2] ** 2 * w[0] ** 2 + J1), euler)
+
+
+def test_the_ratio_screen_reads_jacobi_functions_and_roots_and_never_parts_a_constant_multiple():
+    from derive.lecture import restated
+    m = y / (1 + y)
+    root = sp.sqrt(I1 * x ** 2 + I2 * y ** 2)
+    old = sp.sqrt(I1 - I3 * x) * JacobiSN(x * a + 1, m) * root - I2
+    # a number times old, however it is written, is never shown to vary, and the restatement still holds
+    for k in (3, -sp.Rational(1, 2)):
+        assert not zt.ratio_varies(sp.expand(k * old), old, "seed")
+        assert restated._multiple((sp.expand(k * old), sp.S.Zero), (old, sp.S.Zero))
+    assert not zt.ratio_varies(old, old * (1 + 0 * x), "seed")
+    # a slip in an argument of sn, under the root, or in the factor is shown to vary
+    assert zt.ratio_varies(sp.sqrt(I1 - I3 * x) * JacobiSN(x * a + 2, m) * root - I2, old, "seed")
+    assert zt.ratio_varies(sp.sqrt(I1 - I3 * x) * JacobiSN(x * a + 1, m) * root - I2 * x, old, "seed")
+    assert zt.ratio_varies(sp.sqrt(I1 + I3 * x) * JacobiSN(x * a + 1, m) * root - I2, old, "seed")
+    assert not restated._multiple((sp.sqrt(I1 + I3 * x) * JacobiSN(x * a + 1, m) * root, I2), (old, sp.S.Zero))
+    # nothing to evaluate at a real point: left to `cancel`
+    assert not zt.ratio_varies(sp.sqrt(-1 - x) * y, y, "seed")
+
+
+def test_a_difference_shown_at_a_point_is_never_an_identity_and_an_identity_is_never_shown():
+    m = y / (1 + y)
+    side = JacobiSN(x * a, m) * sp.sqrt(x + y) * (x - y)
+    # the same value written out, a scalar or a matrix of one shape: no point parts them
+    assert not zt.differs_somewhere(sp.expand(side), side, "seed")
+    assert not zt.differs_somewhere(sp.Matrix([sp.expand(side), x]), sp.Matrix([side, x]), "seed")
+    # a slip in the factor or in sn's argument is shown, so `expand` of the difference is spared
+    assert zt.differs_somewhere(JacobiSN(x * a, m) * sp.sqrt(x + y) * (x + y), side, "seed")
+    assert zt.differs_somewhere(JacobiSN(2 * x * a, m) * sp.sqrt(x + y) * (x - y), side, "seed")
+    # matrices of two shapes, or a matrix beside a scalar, are left to the caller
+    assert not zt.differs_somewhere(sp.Matrix([x, y]), sp.Matrix([[x, y]]), "seed")
+    assert not zt.differs_somewhere(sp.Matrix([x]), x + 1, "seed")
+
+
+def test_the_numeric_screens_leave_a_formula_with_no_value_to_the_symbolic_steps():
+    f = sp.Function("f")(a)
+    # an undefined function has no value at a point: neither screen decides, nor raises
+    assert not zt.differs_somewhere(f * x, f, "seed") and not zt.ratio_varies(f * x, f, "seed")
+    assert not zt.differs_somewhere(sp.Derivative(f, a) * x, sp.Derivative(f, a), "seed")

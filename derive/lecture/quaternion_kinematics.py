@@ -20,6 +20,7 @@ May import: :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quate
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -112,6 +113,20 @@ def flat(values):
             yield v
 
 
+@functools.lru_cache(maxsize=64)
+def _q_rates(q: tuple, chain: tuple) -> tuple:
+    """q's rates of orders 1 to 3 by the chain rule over ``chain`` (component, its rate), kept: the
+    text's names are made again for each member of each link, and these rates only change with
+    the text's rate of q."""
+    names = Names(defined={}, rates={})
+    names.values["rates"] = dict(chain)
+    out, value = [], Quat(q)
+    for _ in (1, 2, 3):
+        value = time_rate(value, names)
+        out.append(value)
+    return tuple(out)
+
+
 def step_of(head: str) -> str | None:
     """The step's subscript of a head ``\\mathbf{q}_{t+1}`` (``t``), else None."""
     m = _STEP.match(head)
@@ -137,9 +152,7 @@ class QuaternionSteps:
             chain.update(zip(components("q", self._q_style), rule.c))
         names.values["rates"] = chain
         if rule is not None and self._q_style:
-            value = Quat(components("q", self._q_style))
-            for n in (1, 2, 3):
-                value = time_rate(value, names)
+            for n, value in enumerate(_q_rates(components("q", self._q_style), tuple(chain.items())), 1):
                 names.values[("q", n)] = value
         return names
 

@@ -94,10 +94,13 @@ def _multiple(new, old) -> bool:
     if not _scalars(*new, *old):
         return False                      # scalars only: the text's matrices do not commute
     new, old = _difference(*new), _difference(*old)
-    if not new.free_symbols or old == 0 or new.free_symbols != old.free_symbols:
+    symbols = zt.free_symbols(new)
+    if not symbols or old == 0 or symbols != zt.free_symbols(old):
         return False                      # a number times old has old's symbols, no others
-    if zt.surely_depends(new, old, new.free_symbols):
+    if zt.surely_depends(new, old, symbols):
         return False                      # new/old proved not a number, at an exact point
+    if zt.ratio_varies(new, old, "restated"):
+        return False                      # new/old takes two values at two points: not a number
     ratio = sp.cancel(new / old)
     return ratio.is_number and ratio != 0 and ratio.is_finite is True
 

@@ -38,7 +38,7 @@ from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
 from derive.lecture.unread_members import UnreadMembers
 from derive.lecture.sparse_forms import free_symbols
-from derive.lecture.zero_test import expanded, surely_nonzero, entry_zero
+from derive.lecture.zero_test import differs_somewhere, expanded, surely_nonzero, entry_zero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -303,8 +303,8 @@ class TextNames(UnreadMembers):
         """Every member the same expression whatever the text's undefined names stand for."""
         try:
             first = self._calculus(self._resolve(members[0]))
-            return all(not surely_nonzero(d) and expanded(d) == 0
-                       for d in (self._calculus(self._resolve(m)) - first for m in members[1:]))
+            return all(not surely_nonzero(other - first) and not differs_somewhere(other, first, "whatever")
+                       and expanded(other - first) == 0 for other in (self._calculus(self._resolve(m)) for m in members[1:]))
         except TypeError:           # a matrix of the text's beside names it has not defined
             return False
 

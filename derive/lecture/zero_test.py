@@ -5,6 +5,8 @@ first, never an unbounded `simplify`), `bounded_expand` (`expand` within the sam
 differences with trig functions), `expanded` (`expand`'s result, multiplied out in a polynomial
 ring where it can be), `surely_nonzero` (an exact one-point screen that proves a difference
 non-zero), `surely_depends` (the same screen for a quotient's dependence on some symbols),
+`ratio_varies` and `differs_somewhere` (the numeric test's counterexample, for a quotient that is
+no number and a difference that is not zero, where the exact screens cannot evaluate),
 `numeric_zero` (seeded random points: exact rationals, or mpmath at `DIGITS` digits) and `sample`
 (the seeded points). Used by the lecture's table
 (`derive.lecture.verify`) and by the notes checker (`derive.lecture.comparing`); it knows neither.
@@ -299,6 +301,44 @@ def surely_depends(a, b, variables) -> bool:
     return (left - right) % _MODULUS != 0
 
 
+_RATIO_DRAWS = 40
+"""Seeded draws `ratio_varies` makes to find two points where both expressions have real values."""
+
+
+def ratio_varies(a, b, seed: str) -> bool:
+    """Whether a/b takes two values: a(P) b(P′) and a(P′) b(P) differ by more than 10^(10 − `DIGITS`)
+    of their size, evaluated with mpmath at `DIGITS` digits at the first two seeded points (`sample`)
+    where every radicand is positive and both values are real and finite (the test `numeric_zero`
+    takes as a counterexample). Were a = q b for a number q (what `cancel` of a/b finds when it
+    returns one: it rewrites by identities only), both products would be q b(P) b(P′). It reads the
+    Jacobi functions and roots `surely_depends` cannot; False when no two such points turn up."""
+    if not isinstance(a, sp.Expr) or not isinstance(b, sp.Expr) or a.has(sp.zoo, sp.nan) or b.has(sp.zoo, sp.nan):
+        return False
+    symbols = sorted(free_symbols(a) | free_symbols(b), key=lambda s: s.name)
+    if any(s.is_integer or s.is_rational is False or s.is_real is False for s in symbols):
+        return False
+    bases = sorted({p.base for e in (a, b) for p in atoms(e, sp.Pow) if not p.exp.is_Integer}, key=sp.default_sort_key)
+    try:
+        f, radicands = mp_values.evaluator(symbols, [a, b]), mp_values.evaluator(symbols, bases)
+    except NotImplementedError:
+        return False
+    rng, found = random.Random(seed), []
+    with mpmath.workdps(DIGITS):
+        for _ in range(_RATIO_DRAWS):
+            point = [mpmath.mpf(p.p) / p.q for p in sample(symbols, rng)]
+            try:
+                vals = mp_values.real_values(f, radicands, point)
+            except (NotImplementedError, ArithmeticError, libmp.NoConvergence):
+                return False                  # no value to compare: left to `cancel`
+            if vals is not None and all(mpmath.im(v) == 0 and mpmath.isfinite(v) for v in vals):
+                found.append([mpmath.re(v) for v in vals])
+            if len(found) == 2:
+                (a0, b0), (a1, b1) = found
+                left, right = a0 * b1, a1 * b0
+                return abs(left - right) > max(1, abs(left), abs(right)) * mpmath.mpf(10) ** (10 - DIGITS)
+    return False
+
+
 class _NoRoot(_Outside):
     """A radicand whose residue has no square root modulo the prime (another point may)."""
 
@@ -426,6 +466,21 @@ def counterexample(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome | None:
     or a candidate correction that the one-point screens of `surely_nonzero` cannot read."""
     out, found = _numeric(lhs, rhs, seed, 1)
     return out if found else None
+
+
+def differs_somewhere(a, b, seed: str) -> bool:
+    """Whether `counterexample` finds a point where the scalars, or the matrices of one shape, ``a``
+    and ``b`` differ: then ``expand(a − b)``, an identity, is not 0 either, and a caller may skip it."""
+    if isinstance(a, sp.MatrixBase) and isinstance(b, sp.MatrixBase) and a.shape == b.shape:
+        a, b = sp.Matrix(list(a)), sp.Matrix(list(b))
+    elif all(isinstance(x, sp.Expr) and not isinstance(x, sp.MatrixBase) for x in (a, b)):
+        a, b = sp.Matrix([a]), sp.Matrix([b])
+    else:
+        return False
+    try:
+        return counterexample(a, b, seed) is not None
+    except (NotImplementedError, TypeError, ValueError, ArithmeticError, libmp.NoConvergence):
+        return False                      # no value to compare: left to `expand`
 
 
 def numeric_zero(lhs: sp.Matrix, rhs: sp.Matrix, seed: str) -> Outcome:
