@@ -5,8 +5,8 @@ i is then √−1. The i read so stands on its own (not part of a word or a comm
 subscript or a superscript (``x_i``, ``\\sum_{i=1}^3``), outside a command's argument (``\\hat{i}``,
 ``\\mathbf i``, ``\\text{if}``), and beside a factor (a letter, a command that is no relation or
 space, a bracket): ``i = 1, 2, 3`` and ``(i)`` keep their i. A formula that also writes a j or a k
-so (``x i + y j + z k``, the unit vectors in plain letters), or writes a unit vector î (``\imath``,
-``\hat{i}``, ``\mathbf{i}``), keeps its i too: there a lone i is more likely that vector's letter.
+so (``x i + y j + z k``, the unit vectors in plain letters), or writes a unit vector î (``\\imath``,
+``\\hat{i}``, ``\\mathbf{i}``), keeps its i too: there a lone i is more likely that vector's letter.
 An exponent of e is read by `derive.lecture.units`. Takes and gives LaTeX (its macros expanded);
 imports nothing of derive.
 """
