@@ -14,3 +14,9 @@ def test_the_density_at_the_point_with_the_volume_element_is_the_mass_element():
 
 def test_a_sign_slipped_in_such_an_integral_is_flagged():
     assert "typo" in verdicts(L.replace("r^2 - \\mathbf{r}", "r^2 + \\mathbf{r}"))[5]
+
+
+def test_the_density_at_the_point_in_sized_brackets_is_the_same_mass_element():
+    sized = L.replace("\\rho(\\mathbf{r})", "\\rho\\left(\\mathbf{r}\\right)")
+    assert sized != L and verdicts(sized)[5] == {"holds"}
+    assert "typo" in verdicts(sized.replace("r^2 - \\mathbf{r}", "r^2 + \\mathbf{r}"))[5]

@@ -23,3 +23,9 @@ def test_each_statement_is_checked_and_a_wrong_one_never_holds():
 def test_an_index_in_a_longer_subscript_or_under_a_sum_is_left_alone():
     assert statements(r"L_i = I_{ij} \omega_j, \quad i = 1,2,3")[0] == r"L_i = I_{ij} \omega_j"
     assert statements(r"L_i = \sum_j I_{ij} \omega_j, \quad i = 1,2,3")[0] == r"L_i = \sum_j I_{ij} \omega_j"
+
+
+def test_a_statement_in_brackets_plain_or_sized_is_read_without_them():
+    for open_, close in (("(", ")"), ("\\left(", "\\right)"), ("\\bigl(", "\\bigr)")):
+        assert statements(f"k^2 = a \\quad {open_}0 \\le k^2 \\le 1{close}")[-1].strip() == "0 \\le k^2 \\le 1"
+    assert statements("\\left(a\\right) = \\left(b\\right)") == ["\\left(a\\right) = \\left(b\\right)"]

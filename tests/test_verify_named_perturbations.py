@@ -23,6 +23,12 @@ def test_the_linearised_equations_hold_to_the_order_their_remainder_keeps():
     assert _verdicts(body) == [["holds"]] * 4
 
 
+def test_a_remainder_written_in_sized_brackets_is_the_same_remainder():
+    body = ("$$I_1\\dot\\eta_1 = (I_2 - I_3)\\Omega\\eta_3 + O\\left(\\eta^2\\right)$$\n\n"
+            "$$I_3\\dot\\eta_3 = (I_1 - I_3)\\Omega\\eta_1 + O\\bigl(\\eta^2\\bigr)$$")
+    assert _verdicts(body) == [["holds"], ["fails"]]
+
+
 def test_a_slip_in_a_linearised_equation_fails_at_its_order():
     body = ("$$I_1\\dot\\eta_1 = (I_3 - I_2)\\Omega\\eta_3 + O(\\eta^2)$$\n\n"
             "$$\\ddot\\eta_1 = \\frac{(I_2 - I_3)(I_1 - I_3)\\Omega^2}{I_3I_1}\\eta_1$$")

@@ -36,7 +36,8 @@ from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
 # a remainder O(η^n) (or O(|η|^n)): its letter and n
-_REMAINDER = re.compile(r"O\s*\(\s*\|?\s*(\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*\)")
+_REMAINDER = re.compile(r"O\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\|?\s*(\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*"
+                        r"(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # O(eta^2), O\left(\eta^2\right)
 _TERM = re.compile(r"\s*[+-]\s*" + _REMAINDER.pattern)
 
 

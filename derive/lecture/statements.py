@@ -168,9 +168,14 @@ _WHERE = re.compile(r"^(?P<claim>.*?(?<![<>!\\])=.*?)\s*(?:\\left\s*)?\(\s*(?P<n
 RELATION = re.compile(r"(?<![<>\\])=|\\(?:equiv|approx|geq?|leq?|simeq)(?![A-Za-z])|(?<!\\)[<>]")
 
 
+_SIZED_AROUND = re.compile(r"^\\(?:left|[Bb]igg?l?)\s*\((.*)\\(?:right|[Bb]igg?r?)\s*\)$", re.S)
+
+
 def _unwrapped(piece: str) -> str:
-    """A statement written in parentheses, ``(\\dot\\theta = \\text{const})``, without them."""
+    """A statement written in parentheses, ``(\\dot\\theta = \\text{const})`` or sized
+    ``\\left(0 \\le k^2 \\le 1\\right)``, without them."""
     s = piece.strip()
+    s = "(" + sized.group(1) + ")" if (sized := _SIZED_AROUND.match(s)) else s
     if s.startswith("(") and s.endswith(")") and RELATION.search(s):
         depth = 0
         for k, ch in enumerate(s):
