@@ -113,31 +113,35 @@ class PrimedAxes:
             else:
                 self._read_once_or_twice(line, piece, dup, pieces)
             return
-        before, saved = len(self.claims), self._snapshot()
-        for mark, frame in FRAMES:
-            claims, ctx = self._sandbox(saved, line, in_frame(piece, mark), dup, pieces, judging_only=True)
+        names = ", ".join(dict.fromkeys(written))
+        readings = [(in_frame(piece, mark), f" (reading {names} as the unit vectors of {frame})") for mark, frame in FRAMES]
+        if self._first_that_holds(line, piece, dup, pieces, readings) is not None:
+            self._read_once_or_twice(line, piece, dup, pieces)     # as written: the letters the text's own
+
+    def _first_that_holds(self, line, piece, dup, pieces, readings, reset=None):
+        """Keep the first of ``readings`` (the statement rewritten, what its why adds) whose claims
+        all hold, shown as written, and return None; else every reading's (claims, ctx) as tried.
+        ``reset`` runs before each trial (a trial may tie names the next must not see)."""
+        before, saved, tried = len(self.claims), self._snapshot(), []
+        for text, said in readings:
+            if reset is not None:
+                reset()
+            claims, ctx = self._sandbox(saved, line, text, dup, pieces, judging_only=True)
             if claims and all(c.verdict == "holds" for c in claims):
                 for c in claims:
-                    c.latex = piece
-                    c.why += f" (reading {', '.join(dict.fromkeys(written))} as the unit vectors of {frame})"
+                    c.latex, c.why = piece, c.why + said
                 self._keep(before, claims, ctx)
-                return
-        self._read_once_or_twice(line, piece, dup, pieces)     # as written: the letters the text's own
+                return None
+            tried.append((claims, ctx))
+        return tried
 
     def _read_rates_or_plain(self, line, piece, dup, pieces):
         """The statement as read (ω′ᵢ on ê′ᵢ) where it holds so, else with ω′ᵢ the body components
         where it holds so, else as read (see the module docstring)."""
-        before, saved = len(self.claims), self._snapshot()
-        for text, frame in ((piece, None), (in_body(piece), "the body components")):
-            claims, ctx = self._sandbox(saved, line, text, dup, pieces, judging_only=True)
-            if claims and all(c.verdict == "holds" for c in claims):
-                for c in claims:
-                    c.latex = piece
-                    if frame:
-                        c.why += f" (reading {', '.join(dict.fromkeys(primed_rates(piece)))} as {frame})"
-                self._keep(before, claims, ctx)
-                return
-        self._read_once_or_twice(line, piece, dup, pieces)
+        rates = ", ".join(dict.fromkeys(primed_rates(piece)))
+        readings = [(piece, ""), (in_body(piece), f" (reading {rates} as the body components)")]
+        if self._first_that_holds(line, piece, dup, pieces, readings) is not None:
+            self._read_once_or_twice(line, piece, dup, pieces)
 
     def _writes_angles(self, piece):
         """Whether the statement writes one of the text's angles or its rate (or cannot be scanned)."""
@@ -162,24 +166,20 @@ class PrimedAxes:
     def _plain_axes(self, line, piece, dup, pieces, written):
         """The statement under the first frame in which it holds, or flagged where it fails alike
         as no vector under each; else as read (see the module docstring)."""
-        before, saved = len(self.claims), self._snapshot()
         names = ", ".join(dict.fromkeys(written))
-        trials = []
         # a trial's reading may tie the text's names in the vocabulary; one not kept leaves none tied
         kept = dict(self.vocab.defined)
-        for mark, frame in PLAIN_FRAMES:
+
+        def reset():
             self.vocab.defined.clear()
             self.vocab.defined.update(kept)
-            claims, ctx = self._sandbox(saved, line, in_frame(piece, mark, _PLAIN), dup, pieces, judging_only=True)
-            if claims and all(c.verdict == "holds" for c in claims):
-                for c in claims:
-                    c.latex = piece
-                    c.why += f" (reading {names} as the unit vectors of {frame})"
-                self._keep(before, claims, ctx)
-                return
-            trials.append((claims, ctx))
-        self.vocab.defined.clear()
-        self.vocab.defined.update(kept)
+        readings = [(in_frame(piece, mark, _PLAIN), f" (reading {names} as the unit vectors of {frame})")
+                    for mark, frame in PLAIN_FRAMES]
+        before = len(self.claims)
+        trials = self._first_that_holds(line, piece, dup, pieces, readings, reset)
+        if trials is None:
+            return
+        reset()
         whys = {tuple(c.why for c in claims) for claims, _ in trials}
         claims, ctx = trials[0]
         if len(whys) == 1 and claims and all(c.verdict == "fails" and "not a vector" in c.why for c in claims):
