@@ -20,7 +20,7 @@ the first to the second's first member: that link is judged as above and given t
 writes the integral, whose value as written it is (its first members may stay unread, ``\\int … d^3 r``);
 two integrals there are not judged (unequal, either display may hold the slip; equal, they may share it).
 May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_integrals`,
-:mod:`derive.lecture.notes_claims`.
+:mod:`derive.lecture.notes_claims`, :mod:`derive.lecture.statements`.
 """
 from __future__ import annotations
 
@@ -35,6 +35,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture.definite_integrals import DEFINITE
 from derive.lecture.notes_claims import Claim
+from derive.lecture.statements import top_level
 
 _DIGITS = 30
 _GOES_ON = re.compile(r"\s*=(?!=)")
@@ -42,18 +43,13 @@ _NOT_COMPARED = ("a definite integral beside no value it works out to (a name se
                  "which may hold a density or a Jacobian the integral leaves out): not compared")
 
 
+_EQUALS = re.compile(r"(?<![<>!\\])=(?!=)")
+
+
 def _members(text):
-    """The chain's members at bracket depth 0, split at each ``=`` (a statement the parser refused)."""
-    out, depth, start = [], 0, 0
-    for k, ch in enumerate(text):
-        if ch in "{([":
-            depth += 1
-        elif ch in "})]":
-            depth -= 1
-        elif ch == "=" and depth == 0 and (k == 0 or text[k - 1] not in "<>!\\") and text[k + 1:k + 2] != "=":
-            out.append(text[start:k])
-            start = k + 1
-    return out + [text[start:]]
+    """The chain's members, cut at each ``=`` outside brackets and braces (a statement the parser refused)."""
+    bounds = [0, *(p for m in top_level(text, _EQUALS) for p in (m.start(), m.end())), len(text)]
+    return [text[bounds[k]:bounds[k + 1]] for k in range(0, len(bounds), 2)]
 
 
 def _last_member(text):
