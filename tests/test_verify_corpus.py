@@ -220,6 +220,12 @@ SHORT = {
         "0 of 1: the slip is the boxed Lagrangian's rotational energy written as three squared Euler-angle "
         "rates with constant moments named only in prose (I_psi, I_theta, I_varphi); the Lagrangian, with its "
         "translation in x, y, is not judged at all",
+    ("physics-se-tennis-racket-degenerate-moments-stability", "checked"):
+        "0 of 6 on its first read: Euler's equations written once for all three components with the index "
+        "modulo three (forall i in Z_3, Omega_{i+1}, Omega_{i-1}) and the steps after them are not read",
+    ("physics-se-euler-angle-rates-relative-rotating-frame", "checked"):
+        "0 of 1 on its first read: the rates of extrinsic x-y-z angles written as a named matrix M(phi, theta) "
+        "times omega_B are not read",
 }
 
 FLOOR = {"checked": 751, "slips_flagged": 92, "holds_flagged": 0}
