@@ -20,7 +20,7 @@ _COMMAND_BEFORE = re.compile(r"\\([A-Za-z]+)\s*$")
 _COMMAND_AFTER = re.compile(r"\\([A-Za-z]+)")
 _NOT_FACTORS = frozenset(
     "quad qquad le leq ge geq neq ne in to equiv approx sim simeq propto text mathrm textrm mbox "
-    "operatorname label tag notag nonumber end begin right middle cdots ldots dots".split())
+    "operatorname label tag notag nonumber end begin right middle cdots ldots dots forall exists".split())
 """Commands beside which a letter is not multiplied: relations, spaces, words, closings."""
 _ARGUMENT_TAKERS = frozenset(
     "hat widehat vec mathbf boldsymbol bm mathit mathbb mathcal mathsf mathrm text textrm mbox "

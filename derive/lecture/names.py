@@ -5,7 +5,7 @@ front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's s
 *meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
 own spellings, so that the text's names win over the lecture's.
 May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`,
-:mod:`derive.lecture.hat_maps` and
+:mod:`derive.lecture.hat_maps`, :mod:`derive.lecture.principal_momentum` and
 :mod:`derive.symbolic` (the quantities a meaning stands for).
 
 A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
@@ -59,7 +59,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.errors import SceneError
-from derive.lecture import hat_maps
+from derive.lecture import hat_maps, principal_momentum
 from derive.lecture import latex as lx
 from derive.lecture import source
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
@@ -325,6 +325,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
         _components_of(names, text, starts, offset)
     _said_of_display(names, body)
     _rate_law(names, body)
+    for line, tex in principal_momentum.velocity_letters(body):      # L̇ᵢ ≡ IᵢΩ̇ᵢ: Ω is the angular velocity
+        if _fits("angular velocity", _atoms(tex)):
+            bind(names, _atoms(tex), "angular velocity", f"line {line}")
     for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
         atoms = _atoms(tex)
         if len(atoms) == 1 and _fits("body angular velocity", atoms):

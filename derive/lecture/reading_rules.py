@@ -21,6 +21,7 @@ from derive.lecture.context import Reading
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.determinant_steps import DeterminantSteps
 from derive.lecture.eom_case_value import CaseValue
+from derive.lecture.eom_restated_member import RestatedMember
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
@@ -57,7 +58,7 @@ from derive.lecture.written_out import WrittenOut
 
 class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases,
                    Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames,
-                   TextMatrices, TextMotion, Rereading, CaseValue, Motion, Reading, VectorStatements, OnTheMotion,
+                   TextMatrices, TextMotion, Rereading, CaseValue, RestatedMember, Motion, Reading, VectorStatements, OnTheMotion,
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,

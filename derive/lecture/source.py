@@ -252,16 +252,16 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     """One macro node printed normalised; returns the text and how many following nodes it used."""
     name = node.macroname
     post = node.macro_post_space or ""
-    if name == "\\":
-        return "\\\\ ", 0                  # a row break; its spacing argument ([10pt]) is no mathematics
+    if name in ("\\", "cr"):
+        return "\\\\ ", 0                  # a row break (plain TeX's \\cr too); its spacing argument ([10pt]) is no mathematics
     if name in _DROP:
         return " ", 0
     if name in _WRAP:
         inner = _last_arg(node, user) or ""
         if name in ("mathcal", "mathscr", "mathfrak", "mathsf", "mathtt"):
             return r"\mathrm{" + inner + "}", 0
-        if name in ("boxed", "ensuremath", "color", "textcolor", "bbox"):
-            return " " + inner + " ", 0   # a frame or a colour around a statement: the statement
+        if name in ("boxed", "ensuremath", "color", "textcolor", "bbox"):   # a frame or a colour around a statement
+            return (" " if name == "color" else " " + inner + " "), 0     # (\\color{red}{+}: the argument names a colour)
         return "{" + inner + "}", 0
     if name in _BOLD:
         inner = _last_arg(node, user)

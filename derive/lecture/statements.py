@@ -2,7 +2,7 @@
 
 Takes: the LaTeX of one display (normalised by `derive.lecture.source`). Gives: `statements`,
 the list of its statements, each a LaTeX string. May import: the standard library,
-:mod:`derive.lecture.alignment_arrays`, :mod:`derive.lecture.latex_spaces`.
+:mod:`derive.lecture.alignment_arrays`, :mod:`derive.lecture.index_quantifier`, :mod:`derive.lecture.latex_spaces`.
 
 A display is cut into rows at ``\\\\`` (of ``aligned``, ``split``, ``cases``, ``align`` and the
 other display environments, which are dropped; an aligned row of column pairs side by side,
@@ -26,7 +26,7 @@ from __future__ import annotations
 import functools
 import re
 
-from derive.lecture import alignment_arrays
+from derive.lecture import alignment_arrays, index_quantifier
 from derive.lecture.latex_spaces import ONE_SPACING, QUAD, SPACING
 
 _ENVS = ("split", "aligned", "align", "align*", "gathered", "gather", "gather*", "equation", "equation*",
@@ -258,6 +258,7 @@ def _statements(latex: str) -> tuple[str, ...]:
     """`statements`, once per display: a display read again (a second reading, a probe in another
     sequence) is cut as before."""
     body = _AND.sub(r" \\quad ", _EQUATION_NUMBER.sub("", _strip_envs(latex))).replace("\\;", "\\\x00")
+    body = " \\\\ ".join(index_quantifier.instances(body))       # ∀ i ∈ ℤ₃: one statement per axis
     rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
