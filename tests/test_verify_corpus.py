@@ -32,7 +32,8 @@ SHORT = {
         "[A-dot]_{S_0}) are not read; the particle sums over a with x_ai components and the tensor's matrix, "
         "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
-        "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2) and the kinetic energy are checked",
+        "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
+        "triple and the kinetic energy are checked",
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
         "three of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
         "its unread y_z, Euler's third equation with omega_1 omega_3 read as the equation before its '= 0'); "
@@ -139,10 +140,11 @@ SHORT = {
         "0 of 1: 2T given T's value, 172.80 J, the constant's value in an example whose state the text does not "
         "give (the conservation of 2T is checked, the value left aside)",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "checked"):
-        "1 of 10: the rolling cone's kinematics in its own alpha, psi and R (no model of a body rolling on a plane), "
-        "its vectors as triples (omega sin alpha, 0, omega cos alpha), its moments in a and h, which only the "
-        "notebook's earlier cell names, and the components along the unit vectors of the intermediate Euler frames "
-        "(hat y_2, hat z_2) are not read",
+        "2 of 10: its vectors written as triples are read (Omega = (omega sin alpha, 0, omega cos alpha) named anew "
+        "after the prose's Omega = omega n, then Omega in psidot holds), but the rolling cone's kinematics in its own "
+        "alpha, psi and R (no model of a body rolling on a plane), its angular momentum through moments in a and h, "
+        "which only the notebook's earlier cell names and the reader does not tie to the body's principal moments, "
+        "and the components along the unit vectors of the intermediate Euler frames (hat y_2, hat z_2) are not read",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "found"):
         "0 of 3: L with R^2 for a^2, I psidot for I_z psidot, and Varignon's formula with the body's Omega for the "
         "frame's rotation sit in the displays above that are not read",

@@ -20,7 +20,7 @@ from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
                                          rate_of, reading, symbol_rate, written_rate)
-from derive.lecture.written_matrices import frame_label, outer
+from derive.lecture.written_matrices import components, components_follow, frame_label, outer
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -257,7 +257,7 @@ class _Parser:
                     return at
             return value
         if tok.kind == "op" and tok.value in "({":
-            value = self.paren(env)
+            value = components(self, env) if components_follow(self.toks, self.i) else self.paren(env)
             if self.at("op", "_"):
                 self.fail("a subscript on a bracket")
             return value

@@ -441,6 +441,8 @@ class TextMatrices:
         it is in other angles than the bound one (a matrix of θ after one of φ is no claim about
         that one); True when so handled. The same angles and no rotation: False, it is compared."""
         old = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
+        if self._column_anew(line, piece, sym, old, written):
+            return True
         # R(φ, θ, ψ) = [a matrix] where R was defined before as no matrix: the angles' matrix, named anew
         anew = old is not None and not isinstance(old, sp.MatrixBase) and \
             self._angles_listed(getattr(self, "_text", piece)) == tuple(self.d.rot.ANGLES)
@@ -465,3 +467,20 @@ class TextMatrices:
                   f"defines the text's matrix {self.tex(sym)} anew, in other angles (recorded, then used)")
         return True
 
+
+    def _column_anew(self, line, piece, sym, old, written) -> bool:
+        """``𝛀 = (a, b, c)``, a written column, for a name the text set before as no matrix through a
+        bold letter it never wrote out (``𝛀 = ω𝐧``, 𝐧 an axis named in words): the name is the column
+        from here on; its earlier value, in a vector of unknown components, is not compared with it."""
+        if old is None or isinstance(old, sp.MatrixBase) or sp.Matrix(written).shape != (3, 1) \
+                or sym not in self.vocab.generic:
+            return False
+        unwritten = [self.tex(s) for s in getattr(old, "free_symbols", ()) if s not in self.ctx.defs and
+                     getattr(self.vocab.generic.get(s), "bold", False)]
+        if not unwritten:
+            return False
+        self._matrix_name(sym, self._resolve(written))
+        self._add(line, piece, "new symbol", "unchecked",
+                  f"defines the text's vector {self.tex(sym)} by its components (recorded, then used); its value "
+                  f"before, through {', '.join(sorted(unwritten))}, which the text does not write out, is not compared")
+        return True
