@@ -290,8 +290,10 @@ def _particle_atom(a) -> bool:
 def _has_time_derivative(toks) -> bool:
     for k in range(len(toks) - 6):
         w = toks[k:k + 7]
+        # the vector may stand in a group of its own, d{\bf G} as plain TeX writes it
+        x = w[4] if w[3].kind == "op" and w[3].value == "{" else w[3]
         if w[0].kind == "cmd" and w[0].value == "frac" and w[2].kind == "atom" and w[2].value.base == "d" \
-                and w[3].kind == "atom" and (w[3].value.bold or w[3].value.text.startswith("\\vec")):
+                and x.kind == "atom" and (x.value.bold or x.value.text.startswith("\\vec")):
             return True
     return False
 
