@@ -33,3 +33,19 @@ def test_the_transport_theorem_in_plain_tex_fractions_with_its_sign_slipped_is_f
 def test_the_same_theorem_in_braced_fractions_reads_alike():
     text = TEXT.replace(r"{d{\bf G}\over dt}", r"{\frac{d\mathbf{G}}{dt}}").replace("SIGN", "+")
     assert [c.verdict for c in kept.check_text(text) if c.line == 5] == ["holds"]
+
+
+BAR = r"""# The rate of a vector on two sets of axes
+
+A general vector ${\bf G}$ of the body, and the angular velocity $\boldsymbol\omega$ of the body.
+
+$$
+\left.{d{\bf G}\over dt}\right|_{i} = \left.{d{\bf G}\over dt}\right|_{b} SIGN \boldsymbol\omega \times {\bf G}
+$$
+"""
+
+
+def test_the_rate_at_a_frames_bar_in_plain_tex_holds_and_its_sign_slip_is_flagged():
+    right = [c.verdict for c in kept.check_text(BAR.replace("SIGN", "+")) if c.line == 5]
+    wrong = [c.verdict for c in kept.check_text(BAR.replace("SIGN", "-")) if c.line == 5]
+    assert right == ["holds"] and wrong in (["typo"], ["fails"])
