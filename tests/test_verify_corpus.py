@@ -66,9 +66,10 @@ SHORT = {
         "inertial force's sign and missing mass sit in a display that writes alpha_i, a particle's acceleration, "
         "which is not read as the body's angular acceleration; the doubled m is in a force labelled 惯",
     ("principia-celledoni-free-body-elliptic-solution", "checked"):
-        "a LaTeX note written in its project's own semtex macros (\\vm, \\gD_j, \\gl, \\gs, \\TimeDerivative, "
-        "\\DefineAs, \\pa, \\of, \\JacobiSN), which the file does not define, about the body angular momentum m "
-        "with G = ||m|| and Jacobi elliptic solutions in B_jh, k, lambda",
+        "a LaTeX note written in its project's own semtex macros, which the file does not define, about the body "
+        "angular momentum m with G = ||m|| and Jacobi elliptic solutions in B_jh, k, lambda: \\vm, \\gD_j, \\gl, "
+        "\\gs are read as symbols of their names, but most of its claims also write \\TimeDerivative, \\pa, \\of or "
+        "\\JacobiSN (given an argument) or \\DefineAs (between terms), which stay unread",
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in displays written in those macros",
@@ -181,12 +182,14 @@ SHORT = {
         "R_C, and its transport theorem writes each derivative with the frame it is taken in before it "
         "(^N d/dt, ^B d/dt) and the inertia tensor as [I]: the reader reads neither label nor bracket",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "checked"):
-        "0 of 17: vector calculus on generic vectors in the project's own macros (\\wedge, \\scal, \\norm, "
-        "\\deriv, \\pderiv, \\Tensor): derivatives of V/|V|, a trihedron built by cross products and "
-        "Jacobians of a gravitational field are not read",
+        "4 of 17: its undefined vector macros (\\vF, \\vr, \\vb) read as symbols, the derivatives of its "
+        "definitions hold; vector calculus in the project's macros that take an argument (\\scal, \\pa, "
+        "\\deriv, \\pderiv, \\VectorSymbol) and \\wedge: derivatives of V/|V|, a trihedron built by cross "
+        "products and Jacobians of a gravitational field are not read",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "found"):
         "0 of 1: the slip (f-double-dot = -r for -omega^2 r, n-dot for n-double-dot) sits in the body-surface "
-        "frame's trihedron, whose vectors the reader does not read",
+        "frame's trihedron, whose r-double-dot = -omega^2 r is written with \\pa (a macro given an "
+        "argument) and stays unread",
     ("physics-se-inertia-tensor-rotated-object-similarity-transform", "checked"):
         "4 of 6: the bold L = I omega (a plain I before a bold omega is the tensor) and the chain from it "
         "premultiplied by the rotation R (its \\times the matrix product) as identities of a rotation are read; "
@@ -198,8 +201,9 @@ SHORT = {
         "are read (not a link between two integrals); the tensor 1 r^2 - r r with \\one undefined, the moment about an axis n . I . n, the "
         "components of n and r in brackets, and the values in R and h after the sphere redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
-        "0 of 6: changes of a vector on space and body axes written as a bracket with a frame's label "
-        "((dG)_space, (dG/dt)_body), the rotation matrix's components a_ji and the Levi-Civita sum are not read",
+        "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "
+        "{d{\\bf G}\\over dt}, hold; the changes written as differentials with a frame's label ((dG)_space, "
+        "(dG)_rot, dOmega x G), the rotation matrix's components a_ji and the Levi-Civita sum are not read",
     ("siiea-quantum-engineering-rigid-body-kinematics-inertia-tensor", "checked"):
         "5 of 8 (3 on its first read): v = omega x r, T_rot = w^T I w / 2, the moments and products of inertia "
         "summed without an index and the principal-frame energy in primed components are checked; the kinetic "

@@ -40,6 +40,7 @@ from derive.lecture import notebook
 from derive.lecture import prose_definitions
 from derive.lecture import source
 from derive.lecture import statements
+from derive.lecture import undefined_macros
 from derive.lecture import stated_convention
 
 
@@ -288,6 +289,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None,
                   convention_stated=bool(convention or declared.get("convention") or stated))
     user_macros = source.macros(body)
+    user_macros.update(undefined_macros.as_symbols(body, user_macros))
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     formula_names.learn(notes.names, body)
     moment_letters.learn(notes.names, body, tuple(angles), user_macros)

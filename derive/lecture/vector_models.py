@@ -290,8 +290,10 @@ def _particle_atom(a) -> bool:
 def _has_time_derivative(toks) -> bool:
     for k in range(len(toks) - 6):
         w = toks[k:k + 7]
+        # the vector may stand in a group of its own, d{\bf G} as plain TeX writes it
+        x = w[4] if w[3].kind == "op" and w[3].value == "{" else w[3]
         if w[0].kind == "cmd" and w[0].value == "frac" and w[2].kind == "atom" and w[2].value.base == "d" \
-                and w[3].kind == "atom" and (w[3].value.bold or w[3].value.text.startswith("\\vec")):
+                and x.kind == "atom" and (x.value.bold or x.value.text.startswith("\\vec")):
             return True
     return False
 
@@ -345,8 +347,11 @@ DIFFERENTIAL = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + SPACE
 """The differential d, upright or italic, with the spacing a text may set after it (``\\mathrm{d}\\,``)."""
 _RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + DIFFERENTIAL + r"\s*\}" + SPACE + r"(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
 _ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
-_RATE_BAR = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}\s*\\right\s*\|\s*_\s*" + _LABEL)
-_RATE_DT = re.compile(r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*_\s*" + _LABEL + r"\s*\}")
+# the fraction in a group of its own and the vector in one, as plain TeX's {d{\bf G}\over dt} writes them
+_FRAC_RATE = (r"(?P<o>\{\s*)?\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(?P<b>\{\s*)?(" + _VEC + r")\s*(?(b)\}\s*)\}\s*\{\s*"
+              + DIFFERENTIAL + r"\s*t")
+_RATE_BAR = re.compile(_FRAC_RATE + r"\s*\}\s*(?(o)\}\s*)\\right\s*\|\s*_\s*" + _LABEL)
+_RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
 _BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 
@@ -357,7 +362,7 @@ def frame_rates(text: str) -> str:
     vector's body-frame label (``\\vec{V_b}``, ``\\vec{\\omega}_{b/i}``) names the same vector, read in
     body components as every vector is."""
     def framed(m):
-        return r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{" + m.group(2).strip("{}").strip() + "}"
+        return r"\left(\frac{d " + m.group(3) + r"}{dt}\right)_{" + m.group(4).strip("{}").strip() + "}"
     new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
     # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
     new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))

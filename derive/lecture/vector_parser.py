@@ -322,11 +322,16 @@ class VectorParser(_Parser):
         """(d𝐗/dt)_{body|inertial|space…} at '(' or '[' (no subscript: inertial), or None."""
         start = self.i
         close = ")" if self.peek().value == "(" else "]"
-        nxt = self.peek(1)
+        # ({d𝐆 \over dt})_{space}: plain TeX's fraction keeps its group inside the bracket
+        grouped = self.peek(1) is not None and self.peek(1).kind == "op" and self.peek(1).value == "{"
+        nxt = self.peek(2 if grouped else 1)
         if not (nxt is not None and nxt.kind == "cmd" and nxt.value in ("frac", "dfrac", "tfrac")):
             return None
-        self.i += 1
+        self.i += 2 if grouped else 1
         X = self._rate(env)
+        if X is not None and grouped:
+            X = X if self.at("op", "}") else None
+            self.i += 1
         if X is None or not self.at("op", close):
             self.i = start
             return None
