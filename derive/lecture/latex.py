@@ -77,6 +77,10 @@ from derive.lecture.latex_parser import Parsed, _Parser
 from derive.lecture.variations import delta_a_quantity
 from derive.lecture.vocabulary import DECORATIONS, GREEK
 
+BODY_COMPONENTS = "body components"
+"""The key of `Vocabulary.readings` under which the components of the angular momentum a statement
+writes together (L₁ and L₃) are all Iᵢω̃ᵢ, the axial one too, not p of the third angle."""
+
 
 def parse(latex: str, vocab: Vocabulary | None = None) -> Parsed:
     """Read one formula (possibly a chain a = b = c, a ≈ b, a ≥ b) into SymPy members.

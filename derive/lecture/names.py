@@ -182,7 +182,8 @@ class Names:
             if a.bold and not sub and plain:
                 return lx.LVEC
             if k is not None and plain and not a.bold:
-                return lx.p_gamma if k == vocab.axial else moments[k] * lx.W[k]
+                axial = k == vocab.axial and not vocab.readings.get(lx.BODY_COMPONENTS)
+                return lx.p_gamma if axial else moments[k] * lx.W[k]
             if k is not None and a.dots == 1 and not (a.bold or a.primes or a.hat or a.tilde):
                 return moments[k] * lx.WD[k]     # a body component's rate: d(Iᵢω̃ᵢ)/dt = Iᵢ dω̃ᵢ/dt
             if sub in ("z", "Z") and plain:

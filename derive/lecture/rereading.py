@@ -114,10 +114,17 @@ _PARALLEL_AXES = re.compile(r"I_\{?1\}?\s*\+\s*M\s*\\?[A-Za-z]+\s*\^\s*\{?\s*2")
 """``I_1 + Ma^2``: a text that adds M a² to I₁ gives its moments about the centre of mass."""
 
 
+# Lᵢ, Mᵢ, Jᵢ, Hᵢ: an angular momentum's indexed components, no derivative or accent on them
+_COMPONENTS = re.compile(r"(?<![\\A-Za-z])([LMJH])\s*_\s*\{?\s*([123])\s*\}?(?!\s*')")
+
+
 def _second_readings(piece: str):
     """(name, value, description) of the names in a statement that have a second reading."""
     if re.search(r"(?<![\\A-Za-z{])L(?![A-Za-z])", piece) and not re.search(r"L\s*\(", piece):
         yield "L", lx.LMAG, "L as the magnitude of the angular momentum"
+    if len({m.group(2) for m in _COMPONENTS.finditer(piece)}) > 1 and \
+            len({m.group(1) for m in _COMPONENTS.finditer(piece)}) == 1:
+        yield lx.BODY_COMPONENTS, True, "the components of the angular momentum as the body's, Iᵢω̃ᵢ"
     if _PARALLEL_AXES.search(piece):
         yield "I1", I1 - Mass * l ** 2, "I₁ as the moment about the centre of mass (I₁ + M l² about the fixed point)"
 

@@ -352,6 +352,10 @@ _FRAC_RATE = (r"(?P<o>\{\s*)?\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(?P<b>\{\s*)?
               + DIFFERENTIAL + r"\s*t")
 _RATE_BAR = re.compile(_FRAC_RATE + r"\s*\}\s*(?(o)\}\s*)\\right\s*\|\s*_\s*" + _LABEL)
 _RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
+# Kane's and Schaub's frame written before the rate, ^N d𝐇/dt; the same frame before a vector in such a statement
+_RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC
+                             + r"(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
+_VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + _VEC + r")")
 _BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 
@@ -364,11 +368,30 @@ def frame_rates(text: str) -> str:
     def framed(m):
         return r"\left(\frac{d " + m.group(3) + r"}{dt}\right)_{" + m.group(4).strip("{}").strip() + "}"
     new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
+    if "^" in new and "frac" in new:
+        new = _prescribed(new)
     # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
     new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))
     if new == text:
         return text
     return _RELATIVE.sub(r"\1", _BODY_LABEL.sub(r"\1}", new))
+
+
+def _prescribed(text: str) -> str:
+    """``^N\\frac{d\\vec H}{dt}`` as ``\\left(\\frac{d\\vec H}{dt}\\right)_{N}`` when N names a frame the
+    reader knows; then a known frame's label before a vector (``^B\\vec H``) goes, every vector being read
+    in body components, and ω's subscript naming the body in the inertial frame (``_{B/N}``) with it."""
+    labels = {m.group(1).strip("{}").strip() for m in _RATE_PRESCRIPT.finditer(text)}
+    if not labels or not labels <= set(FRAMES):
+        return text
+    new = _RATE_PRESCRIPT.sub(lambda m: r"\left(\frac{d " + m.group(2) + r"}{dt}\right)_{" + m.group(1).strip("{}").strip()
+                              + "}", text)
+    new = _VECTOR_PRESCRIPT.sub(lambda m: "" if m.group(1).strip("{}").strip() in FRAMES else m.group(0), new)
+    return _FRAME_PAIR.sub(lambda m: m.group(1) if "\\omega" in m.group(1) and
+                           (FRAMES.get(m.group(2)), FRAMES.get(m.group(3))) == ("body", "inertial") else m.group(0), new)
+
+
+_FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
 
 
 def prepare(text: str) -> str:
