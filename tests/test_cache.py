@@ -179,22 +179,48 @@ def test_stale_build_folders_are_removed(cache):
     assert not stale_lock.exists() and fresh_lock.exists() and foreign_lock.exists()
 
 
-#: A compiler that logs each compile (not the ``--version`` the cache keys on) and is slow
-#: enough that a second process asks for the same library while the first compiles it.
+#: A compiler that logs each compile (not the ``--version`` the cache keys on) and does not
+#: compile until the other process waits at the library's lock (:func:`_two_at_once`'s
+#: ``$WAITING`` folder, given at most a minute), so that the second asks while the first compiles.
 LOGGING_CC = """#!/bin/sh
-case "$*" in *--version*) ;; *) echo compile >> "$0.log"; sleep 1 ;; esac
+case "$*" in *--version*) ;; *) echo compile >> "$0.log"
+  i=0; while [ -n "$WAITING" ] && [ -z "$(ls -A "$WAITING")" ] && [ $i -lt 6000 ]; do sleep 0.01; i=$((i+1)); done ;; esac
 exec cc "$@"
 """
+
+#: What each process of :func:`_two_at_once` runs first: a lock that another process holds is
+#: waited for only after a file named by the waiting process is left in ``$WAITING``, so the
+#: holder's stand-in (the compiler, the derivation) knows the other is waiting (no fixed sleep).
+_SAY_WHEN_WAITING = """import fcntl, os
+_flock = fcntl.flock
+def _flock_saying_when_waiting(fd, op):
+    if op != fcntl.LOCK_EX:
+        return _flock(fd, op)
+    try:
+        return _flock(fd, op | fcntl.LOCK_NB)
+    except BlockingIOError:
+        open(os.path.join(os.environ["WAITING"], str(os.getpid())), "w").close()
+        return _flock(fd, op)
+fcntl.flock = _flock_saying_when_waiting
+"""
+
+#: The holder's wait (Python) for the other process to wait at its lock, at most a minute.
+_UNTIL_THE_OTHER_WAITS = ("t0 = time.monotonic()\n"
+                          "while not os.listdir(os.environ['WAITING']) and time.monotonic() - t0 < 60:\n"
+                          "    time.sleep(0.01)\n")
 
 
 def _two_at_once(tmp_path, setup: str, code: str, env: dict) -> list[tuple[int, str]]:
     """Run ``setup`` then ``code`` in two fresh processes that start ``code`` together (each
-    waits for the other at a barrier in between); their (return code, stderr)."""
-    barrier = tmp_path / "barrier"
+    waits for the other at a barrier in between); their (return code, stderr). A process that
+    finds a cache lock taken says so in ``$WAITING`` before it waits (:data:`_SAY_WHEN_WAITING`)."""
+    barrier, waiting = tmp_path / "barrier", tmp_path / "waiting"
     barrier.mkdir()
+    waiting.mkdir()
     wait = (f"\nimport os, time\nopen(os.path.join({str(barrier)!r}, str(os.getpid())), 'w').close()\n"
             f"while len(os.listdir({str(barrier)!r})) < 2:\n    time.sleep(0.01)\n")
-    procs = [subprocess.Popen([sys.executable, "-c", setup + wait + code], env=dict(os.environ, **env),
+    procs = [subprocess.Popen([sys.executable, "-c", _SAY_WHEN_WAITING + setup + wait + code],
+                              env=dict(os.environ, **env, WAITING=str(waiting)),
                               cwd=ROOT, stderr=subprocess.PIPE, text=True) for _ in range(2)]
     return [(p.wait(timeout=120), p.stderr.read()) for p in procs]
 
@@ -214,13 +240,15 @@ def test_two_processes_needing_one_library_build_it_once_and_both_load_it(cache,
 
 
 def test_two_processes_needing_one_model_derive_it_once_and_both_read_it(cache, tmp_path):
-    """The derivation (SymPy) stood in for by one that logs, takes a second and writes a shipped
-    model's description under the asked model's name."""
+    """The derivation (SymPy) stood in for by one that logs, waits until the other process
+    waits at the model's lock and writes a shipped model's description under the asked model's
+    name."""
     log = tmp_path / "derivations.log"
     setup = ("import json, sys, time; from derive.runtime import cache, catalogue\n"
              "shipped = catalogue.describe(('euler-poisson', False, ()))\n"
              "def derive_model(key, folder):\n"
-             f"    open({str(log)!r}, 'a').write('derive\\n'); time.sleep(1)\n"
+             f"    open({str(log)!r}, 'a').write('derive\\n')\n"
+             + "".join(f"    {line}\n" for line in _UNTIL_THE_OTHER_WAITS.splitlines()) +
              "    d = json.loads(shipped.source('models/euler_poisson_asym.json')); d['name'] = 'quaternion_asym_gravity'\n"
              "    cache.write_folder(folder, {'models/quaternion_asym_gravity.json': json.dumps(d)},\n"
              "                       'models/quaternion_asym_gravity.json')\n"

@@ -118,3 +118,25 @@ def test_sincos_has_the_same_bits_in_the_lanes_build(tmp_path, plain, arguments)
     scalar = run_bits(plain, arguments)
     native = run_bits(_harness(tmp_path, [*DEFAULT_FLAGS, *NATIVE_FLAGS], "trig_native"), arguments)
     np.testing.assert_array_equal(scalar.view(np.uint64), native.view(np.uint64))
+
+
+@pytest.mark.parametrize("gamma0", [0.0, 1.0e9])
+def test_angles_beyond_the_polynomial_range_take_libm_in_a_run(gamma0):
+    """The reference top (reduced-u) with γ starting at 1e9 rad, beyond sincos_poly's range
+    (2^19 π/2): the run's blocks take trig_block's libm fallback, and the outputs made of
+    cos γ, sin γ (ω1, ω2, L1, L2) agree with the output map of the written states to
+    round-off, as they do from γ = 0 (the polynomial path)."""
+    import derive
+    from derive.bench.reference import reference_data
+    data = reference_data(10.0)
+    data["initial"] = dict(data["initial"], gamma=gamma0)
+    data["simulate"] = dict(data["simulate"], method="taylor", rtol=1e-8, atol=1e-10,
+                            samples=201)
+    plan = derive.prepare(data).plan
+    c = plan.candidates[0]
+    out, y, p, st = c.kernel.simulate(plan.inputs, c.params, plan.t, c.args, c.pole_check)
+    assert st["status"] == 0
+    ref = c.kernel.outputs_at(plan.t, y, p)
+    for j in (3, 4, 15, 16):
+        scale = max(np.max(np.abs(ref[j])), 1.0)
+        assert np.max(np.abs(out[j] - ref[j])) <= 1e-12 * scale, (j, gamma0)
