@@ -27,8 +27,22 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "checked"):
+        "lecture notes on rotations in index notation and the notes' own macros: its determinants of A are read "
+        "(det(AA^T) = det(A)det(A^T) = [det A]^2), but det A = +-1, index sums ((AA^T)_ij = A_ik A_jk), direction "
+        "cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, the rotation "
+        "formula in indices (eps_ijk, n_i) and the generators T_k with their commutators are not",
+    ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "found"):
+        "its two slips are a proof's step with an extra factor (A^-1 A A^T A (A^T)^-1 = A^-1 I (A^T)^-1, I not "
+        "tied) and y_i = R_ij(vartheta, n) = x_j in indices, neither read",
+    ("maithripala-rigid-body-equations-assignment-parallel-axis-answer", "checked"):
+        "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
+        "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
+        "equations that hold for a motion the text does not write out are not read",
     ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "checked"):
-        "a determinant proof (det(R - I), det(-A)) and the inertia tensor about another origin (I', [L]_S, "
+        "a determinant proof past its first links (the rows of det(R - I) = det((R - I)^T) = ... = -det(R - I), "
+        "det(-A) = (-1)^3 det A, det(R - I) = 0) "
+        "and the inertia tensor about another origin (I', [L]_S, "
         "[A-dot]_{S_0}) are not read; the particle sums over a with x_ai components and the tensor's matrix, "
         "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "

@@ -60,3 +60,11 @@ def test_functions_of_time_and_transposes_as_written():
 def test_a_matrix_written_as_a_function_of_an_angle_is_left_to_the_other_readers():
     text = _note("R(\\theta)^T R(\\theta) = I")
     assert verdicts(text).get(line_of(text, "$$R(\\theta)"), set()) <= {"unchecked"}
+
+
+def test_determinants_of_the_rotation_and_of_its_products_are_read():
+    text = _note("\\det(R R^T) = \\det(R)\\det(R^T) = [\\det R]^2 = 1", "\\det(R - I) = \\det((R - I)^T)")
+    assert verdicts(text)[line_of(text, "$$\\det(R R^T)")] == {"holds"}
+    assert verdicts(text)[line_of(text, "$$\\det(R - I)")] == {"holds"}
+    slip = _note("\\det(R R^T) = \\det(R)\\det(R^T) = 2")
+    assert "holds" not in verdicts(slip).get(line_of(slip, "$$\\det"), set())

@@ -11,7 +11,7 @@ principles (`derive.lecture.vector_algebra_model`). The grammar is the same for 
 * juxtaposition — a scalar factor, the dyadic 𝐚𝐛ᵀ of two vectors, and (where the model's
   notation writes matrices, ``matrix_products``) the product of conforming matrices;
 * ``^T`` a transpose, ``v^2`` = v·v, ``|v|`` = √(v·v), matrices, determinants (``vmatrix``,
-  ``|array|``, expanded along a row of unit vectors);
+  ``|array|``, expanded along a row of unit vectors; ``\\det`` before a 3×3 matrix's letter or bracket);
 * sums ``\\sum_i`` (the model says over what), integrals ``∫ … dm`` over the body's mass, and
   time derivatives ``\\frac{d}{dt} X``, ``\\frac{dX}{dt}``, ``(\\frac{dX}{dt})_{body}``.
 
@@ -149,6 +149,8 @@ class VectorParser(_Parser):
             nxt = self.peek(1)
             if nxt is not None and nxt.kind == "atom" and nxt.value.base == "m" and not nxt.value.sub:
                 return False
+        if self.at("cmd", "det"):
+            return True                 # \det(A)\det(A^T): a determinant is a factor of a product
         return super()._starts_factor()
 
     # sums and products: × binds tighter than · and juxtaposition
@@ -225,6 +227,12 @@ class VectorParser(_Parser):
                 and self.toks[self.i + 1].kind == "begin":
             self.i += 1
             return self.matrix(env, det=True)       # \det written before a bracketed matrix
+        if tok is not None and tok.kind == "cmd" and tok.value == "det":
+            self.i += 1
+            value = _as_value(self.factor(env))     # \det A, \det(R - I): the determinant of the matrix that follows
+            if not _is_tensor(value):
+                self.fail("a determinant of what is not a 3×3 matrix", tok)
+            return value.det()
         if tok is not None and tok.kind == "atom" and tok.value.base == INTEGRAL and tok.value.bold:
             self.i += 1
             return self.integral(env)
