@@ -106,10 +106,6 @@ SHORT = {
     ("planetphysics-euler-angle-velocity-123-sequence-encyclopaedia", "found"):
         "its slip (psi-dot with omega_y c_psi for omega_y s_psi) is in the rates solved for omega_x, "
         "omega_y, omega_z, which are not read",
-    ("planetphysics-euler-angle-sequences-rotation-matrices-encyclopaedia", "checked"):
-        "12 of 24 on its first read: an elementary matrix whose angle is not the one the reader's model of "
-        "the sequence gives that axis (R_1(theta) in the 2-1-3 entry) is left unchecked, and so are five of "
-        "the six products of two factors (matrix times matrix equal to a matrix)",
     ("wikipedia-euler-rotation-equations-encyclopaedia", "checked"):
         "4 of 6: L_in = I_in omega writes the frame as a subscript label (\\text{in}), which the reader takes for "
         "a new name, and (dL/dt)_rot + omega x L = M is read as the law of motion, a premise, not judged",
@@ -234,7 +230,7 @@ SHORT = {
         "translation in x, y, is not judged at all",
 }
 
-FLOOR = {"checked": 751, "slips_flagged": 92, "holds_flagged": 0}
+FLOOR = {"checked": 775, "slips_flagged": 93, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
