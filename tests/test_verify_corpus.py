@@ -114,6 +114,14 @@ SHORT = {
         "text's own K(k, s) (K(k) as two integrals is checked), "
         "k^2 < 1 and the period are not read; the limits and the separatrix are stated in cases of L^2 the reader "
         "does not impose, and the Euler angles after the relabelling 123 -> 312 are left unjudged there",
+    ("planetphysics-euler-angle-velocity-123-sequence-encyclopaedia", "checked"):
+        "1 of 7 on its first read: frame rotations R_i(a) as passive matrices in the shorthand c_a, s_a; "
+        "the product R_3(psi) R_2(theta) against its matrix is read as a vector against a scalar, and the "
+        "body rates omega_x, omega_y, omega_z of its columns and of the rates solved for are not tied to the "
+        "derivation",
+    ("planetphysics-euler-angle-velocity-123-sequence-encyclopaedia", "found"):
+        "its slip (psi-dot with omega_y c_psi for omega_y s_psi) is in the rates solved for omega_x, "
+        "omega_y, omega_z, which are not read",
     ("wikipedia-euler-rotation-equations-encyclopaedia", "checked"):
         "4 of 6: L_in = I_in omega writes the frame as a subscript label (\\text{in}), which the reader takes for "
         "a new name, and (dL/dt)_rot + omega x L = M is read as the law of motion, a premise, not judged",

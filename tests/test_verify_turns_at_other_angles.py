@@ -45,3 +45,24 @@ def test_a_multiplied_out_column_equated_to_a_constant_one_stays_a_condition():
     # true only where θ = 0: an orientation the text may be choosing, not a slip
     text = ZXZ + CX + CZ + "$$C_X(\\theta) \\boldsymbol{e}_z = \\begin{pmatrix} 0 \\\\ 0 \\\\ 1 \\end{pmatrix}$$\n"
     assert verdicts(text)[11] == {"unchecked"}
+
+
+# the sequence named with its angles, R_ijk(φ, θ, ψ), in inline math set as a paragraph of its own; the
+# text declares no convention, its product gives it
+PLAIN = "# Notes\n\nThe frame turns about one axis at a time.\n\nIts sequence:\n\n"
+SEQUENCE = "$R_{123}(\\phi, \\theta, \\psi) = R_3(\\psi) R_2(\\theta) R_1(\\phi)$\n\n"
+R1_AT_THETA = ("$$R_1(\\theta) = \\begin{pmatrix} 1 & 0 & 0 \\\\ 0 & \\cos \\theta & \\sin \\theta \\\\ 0 & "
+               "-\\sin \\theta & \\cos \\theta \\end{pmatrix}$$\n\n")
+R1R3 = ("\\begin{pmatrix} \\cos \\phi & \\sin \\phi & 0 \\\\ -\\cos\\theta\\sin \\phi & \\cos\\theta\\cos \\phi & "
+        "\\sin\\theta \\\\ \\sin\\theta\\sin\\phi & -\\sin\\theta\\cos\\phi & \\cos\\theta \\end{pmatrix}")
+
+
+def test_a_turn_written_with_its_argument_in_the_sequence_is_that_turn_at_another_angle():
+    # R_1 and R_3 enter the text at φ and ψ in the sequence's product; at θ and φ they are the same turns
+    right = "$$R_1(\\theta) R_3(\\phi) = " + R1R3 + "$$\n\n"
+    wrong = "$$R_1(\\theta) R_3(\\phi) = " + R1R3.replace("-\\sin\\theta\\cos\\phi", "\\sin\\theta\\cos\\phi") + "$$\n"
+    got = verdicts(PLAIN + SEQUENCE + R1_AT_THETA + right + wrong)
+    assert got[7] == {"holds"} and got[9] == {"holds"}
+    assert got[11] == {"holds"} and got[13] & {"typo", "fails"}
+    slipped = R1_AT_THETA.replace("0 & -\\sin \\theta", "0 & \\sin \\theta")
+    assert verdicts(PLAIN + SEQUENCE + slipped)[9] & {"typo", "fails"}

@@ -196,7 +196,7 @@ class TextMatrices:
             except lx.NotRead:
                 continue
             bound = self.ctx.defs.get(sym) if isinstance(sym, lx.Generic) else None
-            if not isinstance(bound, sp.MatrixBase) or bound.shape != (3, 3):
+            if not isinstance(bound, sp.MatrixBase) or bound.shape != (3, 3) or self._bound_at_argument(a, g):
                 continue
             free = set(bound.free_symbols)
             if len(free) != 1 or not free <= angles:
@@ -213,6 +213,13 @@ class TextMatrices:
             return (f"{self.tex(sym)} is the turn by {self.tex(at)}; its turn by {arg} is not read "
                     f"(the turn by {self.tex(at)} would stand in for it)")
         return None
+
+    def _bound_at_argument(self, a, g) -> bool:
+        """``R_1(\\theta)`` where the sequence's product wrote ``R_1`` with its argument and the name at
+        this argument is bound to its turn (by :meth:`_functions_at`)."""
+        if g.kind != "atom" or a.value.with_(text="") not in self.__dict__.get("argument_turns", {}):
+            return False
+        return self.vocab._generic(a.value.with_(sup=f"({g.value.text})")) in self.ctx.defs
 
     def _functions_at(self, toks):
         """``C_Z(\\psi)`` where the text defined ``C_Z(\\phi) = …`` with its argument written: a
@@ -232,7 +239,11 @@ class TextMatrices:
                                           else self.vocab.resolve(a.value))
             except lx.NotRead:
                 continue
-            if spelled is None and isinstance(bound, sp.MatrixBase) and set(bound.free_symbols) == {arg}:
+            if spelled is None and a.value.with_(text="") in self.__dict__.get("argument_turns", {}):
+                at = self.__dict__["argument_turns"][a.value.with_(text="")]
+                if arg == at:
+                    continue
+            elif spelled is None and isinstance(bound, sp.MatrixBase) and set(bound.free_symbols) == {arg}:
                 at = arg                  # R_z(φ) after R_z = (the turn by φ): that turn
             elif arg == at:
                 continue
@@ -284,10 +295,12 @@ class TextMatrices:
         if at_arguments:
             self._turns_at_arguments(found, sense)
             return _AT_TIME.sub(r"\1 =", text, count=1)
-        for (atom, _, _, start, end, _), turn in zip(reversed(found), reversed(turns)):
+        for (atom, _, angle, start, end, _), turn in zip(reversed(found), reversed(turns)):
             sym = self.vocab.resolve(atom)
             if isinstance(sym, lx.Generic) and sym not in self.ctx.defs and sym.is_commutative:
                 self._matrix_name(sym, turn)
+                # written with its argument, the name is its angle's function (R_1(θ) later is R_1 at θ)
+                self.__dict__.setdefault("argument_turns", {})[atom.with_(text="")] = angle
             text = text[:start] + text[end:]
         return _AT_TIME.sub(r"\1 =", text, count=1)
 
