@@ -44,7 +44,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units, vector_tuples
+from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
 from derive.lecture.statements import split_top
 
@@ -595,5 +595,4 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     text = _SPACED_EQUALS.sub(" ", text)              # a \\;=\\; b: the small spaces only set the = apart
     text = differentials.written(text)                # \\mathrm{d}, dx = v_x, d(m v)/dt: the reader's derivatives
-    text = vector_tuples.as_columns(text)             # \\mathbf{J} = (J_1, J_2, J_3): the vector's column
     return re.sub(r"[ \t]{2,}", " ", text).strip()
