@@ -11,20 +11,53 @@ settings, solutions and sign cases, its resolution of the text's names). Gives: 
   label that makes it hold, rendered as the statement with its left side;
 * ``_render``: a statement as LaTeX in the text's relation.
 
-May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.derivation`, SymPy.
+* ``_unify``: the sides put in the same variables (rates of the angles, the body basis).
+
+May import: :mod:`derive.lecture.comparing`, :mod:`derive.lecture.derivation`, :mod:`derive.lecture.latex`, SymPy.
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 
 import sympy as sp
 
-from derive.lecture.comparing import Mismatch, column, edits, quick_equal, zero
+from derive.lecture import latex as lx
+from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, zero
 from derive.lecture.derivation import families
 
 
 class Judging:
     """Mixin of the notes checker: compare with the derivation, search for a one-edit correction."""
+
+    def _unify(self, values: list, known=None) -> list:
+        """With α̇ or γ̇ present, p_α, p_γ, ω̃ᵢ become functions of the angles; frame vectors go to the
+        body basis. ``known`` keeps each value's form per the two flags its replacements depend on,
+        for a search that unifies one target with each of its candidates."""
+        rot = self.d.rot
+        out = []
+        rates = has_rates(values, rot)
+        cyc = any(free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
+        for v in values:
+            try:
+                key = (v, rates, cyc) if known is not None and (v, rates, cyc) in known else None
+            except TypeError:       # a mutable matrix: not hashable, unified as it stands
+                key = None
+            if key is not None:
+                out.append(known[key])
+                continue
+            syms = free(v)      # only what v holds is derived: a sequence read again derives no heavy top for ω̃
+            rep = dict(self.d.frames) if syms & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
+            if rates and syms & set(lx.W):
+                rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
+            for p in (lx.p_alpha_sym(), lx.p_gamma_sym()) if cyc else ():
+                if p in syms:
+                    rep[p] = self.d.forms(p)[0]
+            out.append(v.xreplace(rep) if rep else v)
+            if known is not None:
+                with contextlib.suppress(TypeError):
+                    known[(v, rates, cyc)] = out[-1]
+        return out
 
     def _case_subs(self, v, case, solutions=True):
         rep = dict(self.ctx.subs)
@@ -76,12 +109,13 @@ class Judging:
         for f in targets:
             target = self._resolve(f)
             seen = {}      # the target in the first case, once per form `_unify` gives it (a few at most)
+            unified = {}   # the target's forms by `_unify`, which does not change from candidate to candidate
             for cand, what in edits(value):
                 tried += 1
                 if tried > 400:
                     return None
                 val = self._resolve(cand, keep=keep)
-                a, b = self._unify([val, target])
+                a, b = self._unify([val, target], known=unified)
                 if small is None:
                     ac = self._case_subs(a, self.ctx.cases[0])
                     try:

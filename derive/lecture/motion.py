@@ -29,7 +29,7 @@ from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, po
 from derive.lecture.context import is_ordering, sign_under_orderings
 from derive.lecture.matrix_rows import rows_verdict
 from derive.lecture.sparse_forms import rational_zero
-from derive.lecture.zero_test import expanded, surely_depends, surely_nonzero
+from derive.lecture.zero_test import differs_somewhere, expanded, surely_depends, surely_nonzero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 
 
@@ -46,7 +46,7 @@ class Motion:
             return
         raw = members[0] - members[1]
         used = [x for x in free(raw) if x in self.ctx.defs]
-        if used and not surely_nonzero(e := self._resolve(raw).xreplace(self.ctx.subs)) and expanded(e) == 0:
+        if used and not surely_nonzero(e := self._resolve(raw).xreplace(self.ctx.subs)) and not differs_somewhere(e, sp.S.Zero, "eom") and expanded(e) == 0:
             names = ", ".join(sorted(self.tex(x) for x in used))
             self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
             return

@@ -48,7 +48,7 @@ from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture import rearranged, summation_index, worked_values
 from derive.lecture.arithmetic import arithmetic
-from derive.lecture.comparing import free, has_rates, series_order
+from derive.lecture.comparing import free, series_order
 from derive.lecture.context import Context
 from derive.lecture.derivation import derivation, keep
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
@@ -417,23 +417,6 @@ class Checker(ReadingRules):
             v = matrices_put(v, rep, self._basis_columns(v)) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) \
                 else v.xreplace(rep)
         return self._calculus(v)
-
-    def _unify(self, values: list) -> list:
-        """With α̇ or γ̇ present, p_α, p_γ, ω̃ᵢ become functions of the angles; frame vectors go to the body basis."""
-        rot = self.d.rot
-        out = []
-        rates = has_rates(values, rot)
-        cyc = any(free(v) & {rot.alpha_d, rot.gamma_d} for v in values)
-        for v in values:
-            syms = free(v)      # only what v holds is derived: a sequence read again derives no heavy top for ω̃
-            rep = dict(self.d.frames) if syms & (set(lx.PRIMED) | set(lx.INERTIAL)) else {}
-            if rates and syms & set(lx.W):
-                rep.update({w: self.d.omega[i] for i, w in enumerate(lx.W)})
-            for p in (lx.p_alpha_sym(), lx.p_gamma_sym()) if cyc else ():
-                if p in syms:
-                    rep[p] = self.d.forms(p)[0]
-            out.append(v.xreplace(rep) if rep else v)
-        return out
 
     # -- kinds
     def _definition(self, line, piece, parsed):
