@@ -260,7 +260,7 @@ SHORT = {
         "named matrix, nor the column omega_B, nor the extrinsic sequence is read",
 }
 
-FLOOR = {"checked": 754, "slips_flagged": 92, "holds_flagged": 0}
+FLOOR = {"checked": 807, "slips_flagged": 93, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
