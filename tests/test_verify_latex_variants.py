@@ -49,6 +49,12 @@ _ARGUMENT_BEFORE = _ARGUMENT_BEFORE.replace("^", "\\^").replace("{", "\\{").repl
 _BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE + _ARGUMENT_BEFORE
                     + r" (?=\\(?!right|cdot|times|quad|equiv|approx|ge\b|le\b)[A-Za-z]|[A-Za-z(])")
 _FUNCTION_ARG = r"(\\(?:sin|cos)(?:\^\{?2\}?)?)\s*(\\[A-Za-z]+)(?![A-Za-z])"
+# A product sign is no space: after a differential (\mathrm{d} θ) or between a function's argument and
+# the factor it is read with (\cos \Omega t is cos(Ωt)) it would change what the formula says.
+_BETWEEN_SCALAR_FACTORS = r"(?<!\\mathrm\{d\})(?<!\\text\{d\})(?<!\\textrm\{d\})" + _BETWEEN_FACTORS
+_ARGUMENT_AND_FACTOR = re.compile(r"\\(?:sin|cos|tan)\s*(?:\\[A-Za-z]+|[A-Za-z])\s+[A-Za-z0-9]")
+# Brackets round a function's argument only where nothing is read with it (not \cos \Omega t).
+_FUNCTION_ARG_ALONE = _FUNCTION_ARG + r"(?!\s*[A-Za-z0-9(])"
 _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 
 
@@ -99,13 +105,14 @@ VARIANTS = {
     "negative thin space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\! ")),
     "quad between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\quad ")),
     "cdot between scalar factors": (SCALAR_NOTES, lambda latex: latex if "mathbf" in latex or "boldsymbol" in latex
-                                    else re.sub(_BETWEEN_FACTORS, r" \\cdot ", latex)),
+                                    or _ARGUMENT_AND_FACTOR.search(latex)
+                                    else re.sub(_BETWEEN_SCALAR_FACTORS, r" \\cdot ", latex)),
     # braces around one token
     "one-token braces dropped": (ALL_NOTES, _sub(r"([_^])\{(\\?[A-Za-z0-9]|\\[A-Za-z]+)\}", r"\1\2")),
     "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+|[A-Za-z0-9])", r"\1{\2}")),
     "accent argument unbraced": (ALL_NOTES, _sub(r"\\(dot|ddot|tilde|hat)\{(\\[A-Za-z]+)\}", r"\\\1\2")),
     # function arguments and names
-    "sin(theta)": (SCALAR_NOTES, _sub(_FUNCTION_ARG, r"\1(\2)")),
+    "sin(theta)": (SCALAR_NOTES, _sub(_FUNCTION_ARG_ALONE, r"\1(\2)")),
     "sin{theta}": (SCALAR_NOTES, _sub(_FUNCTION_ARG, r"\1{\2}")),
     "operatorname sin": (SCALAR_NOTES, _sub(r"\\(sin|cos)(?![a-z])", r"\\operatorname{\1}")),
     "squared function bracketed": (SCALAR_NOTES, _sub(r"\\(sin|cos)\^2\s*(\\[A-Za-z]+)", r"(\\\1\2)^2")),

@@ -496,6 +496,7 @@ def _operator_body(m: re.Match) -> str:
 
 
 _ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
+_FORMULA_STOP = re.compile(r"(?:\s|\\[,;:!]|\\q?quad\b)*(?<!\\)(?<!\\right)(?<!\\left)(?<!\\[bB]igr)(?<!\\[bB]iggr)[.,]\s*$")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 
 
@@ -581,7 +582,7 @@ def _normalized(latex: str, user: tuple) -> str:
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
     text = _transposed_rows(_cross_matrices(text))
-    text = _ROW_STOP.sub(" ", text)                  # "1." before a row's end: punctuation
+    text = _FORMULA_STOP.sub("", _ROW_STOP.sub(" ", text))  # "1." before a row's or the formula's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
     text = _ELLIPTIC.sub(r"\\\1 ", text)              # \\mathrm{sn}: Jacobi's elliptic sine
     text = _DEGREES.sub(r" \\cdot \\frac{\\pi}{180}", text)
