@@ -480,7 +480,6 @@ class TextMatrices:
                   f"defines the text's matrix {self.tex(sym)} anew, in other angles (recorded, then used)")
         return True
 
-
     def _column_anew(self, line, piece, sym, old, written) -> bool:
         """``𝛀 = (a, b, c)``, a written column, for a name the text set before as no matrix through a
         bold letter it never wrote out (``𝛀 = ω𝐧``, 𝐧 an axis named in words): the name is the column

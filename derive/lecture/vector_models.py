@@ -358,6 +358,7 @@ _RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*
 _VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + _VEC + r")")
 _BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
+_FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
 
 
 def frame_rates(text: str) -> str:
@@ -390,8 +391,6 @@ def _prescribed(text: str) -> str:
     return _FRAME_PAIR.sub(lambda m: m.group(1) if "\\omega" in m.group(1) and
                            (FRAMES.get(m.group(2)), FRAMES.get(m.group(3))) == ("body", "inertial") else m.group(0), new)
 
-
-_FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
 
 
 def prepare(text: str) -> str:
