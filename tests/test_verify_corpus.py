@@ -258,6 +258,16 @@ SHORT = {
         "0 of 1: the rates of extrinsic x-y-z angles (said in prose, with no front matter) written as a matrix "
         "the text names with arguments, M(phi, theta), times omega_B, the body's rate labelled B: neither the "
         "named matrix, nor the column omega_B, nor the extrinsic sequence is read",
+    ("physics-se-yzy-euler-angles-angular-velocity-successive-spins", "checked"):
+        "0 of 8: spins about successive axes carried by R_y(theta), R_z(theta) and rot(j, theta), rot(k, theta) "
+        "(omega = thetadot y + R_y(theta)(thetadot z + ...)), the orientation built as E_y, E_p, E beside each "
+        "omega in one aligned row, and the Jacobian times a pmatrix of the rates are not read",
+    ("physics-se-yzy-euler-angles-angular-velocity-successive-spins", "found"):
+        "0 of 1: the slip is the question's spins formula with its rotation matrices one place off, which is "
+        "not read (nor is any spins formula of the thread)",
+    ("physics-se-angular-velocity-skew-matrix-rdot-rt", "checked"):
+        "1 of 6 (R-dot = S R): the answer's R(t), R^T(t) written with their argument, S(t) = R-dot R^T(t), "
+        "p = R(t) p' with p' fixed and S(omega) the cross-product matrix are not read",
 }
 
 FLOOR = {"checked": 807, "slips_flagged": 93, "holds_flagged": 0}
