@@ -68,3 +68,20 @@ def test_determinants_of_the_rotation_and_of_its_products_are_read():
     assert verdicts(text)[line_of(text, "$$\\det(R - I)")] == {"holds"}
     slip = _note("\\det(R R^T) = \\det(R)\\det(R^T) = 2")
     assert "holds" not in verdicts(slip).get(line_of(slip, "$$\\det"), set())
+
+
+def test_a_lone_zero_beside_matrices_is_the_zero_matrix():
+    text = _note("0 = \\frac{d[R(t)R^T(t)]}{dt} = \\dot{R}R^T(t)+(\\dot{R}R^T(t))^T",
+                 "\\dot R R^T + R \\dot R^T = 0")
+    assert verdicts(text)[line_of(text, "$$0 =")] == {"holds"}
+    assert verdicts(text)[line_of(text, "$$\\dot R R^T +")] == {"holds"}
+    slip = _note("0 = \\dot{R}R^T(t)-(\\dot{R}R^T(t))^T")
+    assert "holds" not in verdicts(slip).get(line_of(slip, "$$0 ="), set())
+
+
+def test_the_identity_written_first_and_set_to_products_of_rotations():
+    text = _note("I = R(t)R^T(t).", "I = R^T R")
+    assert verdicts(text)[line_of(text, "$$I = R(t)")] == {"holds"}
+    assert verdicts(text)[line_of(text, "$$I = R^T")] == {"holds"}
+    slip = _note("I = R R")
+    assert "holds" not in verdicts(slip).get(line_of(slip, "$$I = R R"), set())

@@ -17,7 +17,9 @@ mixin `RotationProducts` of `derive.lecture.notes_check.Checker`, whose `_rotati
   quaternions, R(0) the identity; where the statement takes a rate, their Taylor polynomials about
   the instant) and on generic rational matrices and vectors, in two draws each at its own instant,
   and holds only when every relation of it does. ``I`` written alone in a statement of rotation
-  matrices is the identity (``R R^T = I``). A statement without a rotation in it is left alone (it
+  matrices is the identity (``R R^T = I``), and so is ``I`` alone set equal to products of rotations
+  (``I = R R^T``: no new letter); a member written as a lone ``0`` beside matrices is their zero
+  (``0 = \dot R R^T + (\dot R R^T)^T``). A statement without a rotation in it is left alone (it
   restates what the text set, or relates letters the reader has not tied); one that does not hold
   for every value is left as it was (its letters may stand for particular matrices).
 * **an inertia tensor turned.** ``\mathbf I = \mathbf R \mathbf I_B`` (an inertia tensor set equal to
@@ -266,7 +268,13 @@ def _members(text, model):
         members, rels = p.members({})
     except _UNREAD:
         return None
-    return [m.value for m in members], rels, members
+    values = [m.value for m in members]
+    shapes = [v.shape for v in values if isinstance(v, sp.MatrixBase)]
+    if len(set(shapes)) == 1:
+        # a member written as a lone 0 beside matrices is their zero (texts write = 0 for a zero matrix)
+        values = [sp.zeros(*shapes[0]) if text[m.start:m.end].strip() == "0" and v == 0 and
+                  not isinstance(v, sp.MatrixBase) else v for m, v in zip(members, values)]
+    return values, rels, members
 
 
 def _equal(a, b, t0) -> bool:
@@ -318,6 +326,13 @@ class RotationProducts:
             first = members[0].atom
             key = None if first is None else (first.base, first.sub, first.primes)
             turned = _turned(members, values, turns, used, inertia, claim.latex)
+            if key == ("I", "", 0) and turns and used - {key} <= turns and claim.verdict == "unchecked" \
+                    and claim.kind in _KINDS and set(rels) <= {"=", "≡"}:
+                # I set equal to products of rotations alone (I = R R^T) is the identity, not a new letter
+                self._identity(claim, text, read, (letters, rated), used, turns, named)
+                if claim.verdict == "holds":
+                    seen |= used
+                    continue
             if turned is not None and claim.verdict == "unchecked":
                 claim.kind, claim.verdict, claim.why = "identity", "fails", turned
             elif open_claim and claim.kind in _KINDS and len(values) == 2 and rels[0] in ("=", "≡") \
