@@ -33,8 +33,9 @@ SHORT = {
         "cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, the rotation "
         "formula in indices (eps_ijk, n_i) and the generators T_k with their commutators are not",
     ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "found"):
-        "its two slips are a proof's step with an extra factor (A^-1 A A^T A (A^T)^-1 = A^-1 I (A^T)^-1, I not "
-        "tied) and y_i = R_ij(vartheta, n) = x_j in indices, neither read",
+        "one of its two slips is flagged (a proof's step with an extra factor, A^-1 A A^T A (A^T)^-1 = "
+        "A^-1 I (A^T)^-1, a relation of the rotation alone that no rotation satisfies); y_i = R_ij(vartheta, n) "
+        "= x_j in indices is not read",
     ("maithripala-rigid-body-equations-assignment-parallel-axis-answer", "checked"):
         "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
         "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
@@ -114,14 +115,6 @@ SHORT = {
         "text's own K(k, s) (K(k) as two integrals is checked), "
         "k^2 < 1 and the period are not read; the limits and the separatrix are stated in cases of L^2 the reader "
         "does not impose, and the Euler angles after the relabelling 123 -> 312 are left unjudged there",
-    ("planetphysics-euler-angle-velocity-123-sequence-encyclopaedia", "checked"):
-        "1 of 7 on its first read: frame rotations R_i(a) as passive matrices in the shorthand c_a, s_a; "
-        "the product R_3(psi) R_2(theta) against its matrix is read as a vector against a scalar, and the "
-        "body rates omega_x, omega_y, omega_z of its columns and of the rates solved for are not tied to the "
-        "derivation",
-    ("planetphysics-euler-angle-velocity-123-sequence-encyclopaedia", "found"):
-        "its slip (psi-dot with omega_y c_psi for omega_y s_psi) is in the rates solved for omega_x, "
-        "omega_y, omega_z, which are not read",
     ("wikipedia-euler-rotation-equations-encyclopaedia", "checked"):
         "4 of 6: L_in = I_in omega writes the frame as a subscript label (\\text{in}), which the reader takes for "
         "a new name, and (dL/dt)_rot + omega x L = M is read as the law of motion, a premise, not judged",
@@ -218,9 +211,9 @@ SHORT = {
         "its restatement in plain letters L = I omega sets the text's L, which no rotation enters, and "
         "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
     ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "17 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r and the "
+        "18 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r and the "
         "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
-        "are read (not a link between two integrals); the tensor 1 r^2 - r r with \\one undefined, the moment about an axis n . I . n, the "
+        "are read (not a link between two integrals, but each against the value the chain reaches); the tensor 1 r^2 - r r with \\one undefined, the moment about an axis n . I . n, the "
         "components of n and r in brackets, and the values in R and h after the sphere redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "

@@ -98,6 +98,35 @@ def test_a_chain_carried_into_the_next_display_judges_its_integral_against_the_v
     assert flag.line == first and "as written" in flag.why and "next display" in flag.why
 
 
+def _through(integral, again, value):
+    """A chain set over three displays: an integral, the same integral rewritten, then its value."""
+    return (r"$$I = \int \rho \, r^2 \, \mathrm{d}^3 r = \frac{M}{V} %s =$$" "\n\n"
+            r"$$= \frac{M}{V} %s =$$" "\n\n"
+            r"$$= %s = \frac{1}{2} M a^2 \, \frac{\pi a^2 b}{V}$$" % (integral, again, value))
+
+
+def test_an_integral_carried_through_a_second_integral_is_judged_against_the_value_the_chain_reaches():
+    good = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} r \int_0^b \mathrm{d} z \, r^2 r"
+    again = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^b \mathrm{d} z \int_0^a \mathrm{d} r \, r^3"
+    slip = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} a \int_0^b \mathrm{d} z \, r^2 r"   # d a for d r
+    value = r"\frac{M}{V} 2\pi \frac{a^4}{4} b"
+    first = HEAD.count("\n") + 1
+    second = first + 2
+
+    def judged(body):
+        return {c.line: c for c in kept.check_text(HEAD + body) if c.line in (first, second)
+                and c.verdict != "unchecked"}
+    held = judged(_through(good, again, value))
+    assert {line: c.verdict for line, c in held.items()} == {first: "holds", second: "holds"}
+    # the slip written in the first display only: that display is flagged, through the second's integral
+    flagged = judged(_through(slip, again, value))
+    assert flagged[first].verdict == "fails" and f"through the integral of line {second}" in flagged[first].why
+    assert flagged[second].verdict == "holds"
+    # the slip written in both: both flagged, each with its value as written
+    both = judged(_through(slip, slip.replace(r"\mathrm{d} a", r"\mathrm{d} a \,"), value))
+    assert {c.verdict for c in both.values()} == {"fails"} and len(both) == 2
+
+
 def test_a_display_that_does_not_go_on_with_equals_is_no_continuation():
     slip = r"\int_0^{2\pi} \mathrm{d}\phi \int_0^a \mathrm{d} a \int_0^b \mathrm{d} z \, r^2 r"
     apart = _across(slip, r"\frac{M}{V} 2\pi \frac{a^4}{4} b").replace("$$= ", "$$I = ")

@@ -85,3 +85,18 @@ def test_the_identity_written_first_and_set_to_products_of_rotations():
     assert verdicts(text)[line_of(text, "$$I = R^T")] == {"holds"}
     slip = _note("I = R R")
     assert "holds" not in verdicts(slip).get(line_of(slip, "$$I = R R"), set())
+
+
+def test_a_relation_of_the_rotation_alone_that_no_rotation_satisfies_fails():
+    # multiplied by A^-1 on the left and (A^T)^-1 on the right, with an A too many on the left: A = I
+    text = _note("R^{-1}RR^{T} (R^{T})^{-1} = R^{-1}I(R^{T})^{-1}", "R^{-1}RR^{T} R(R^{T})^{-1} = R^{-1}I(R^{T})^{-1}")
+    assert verdicts(text)[line_of(text, "$$R^{-1}RR^{T} (")] == {"holds"}
+    (flag,) = [c for c in kept.check_text(text) if c.line == line_of(text, "$$R^{-1}RR^{T} R(")]
+    assert flag.verdict == "fails" and "not an identity of the rotation R" in flag.why
+
+
+def test_a_relation_with_the_rotation_on_one_side_only_or_a_rotation_the_text_sets_is_left_alone():
+    one_side = _note("R^{T} R R = I")                 # a particular turn (a half-turn's square) may be meant
+    assert "fails" not in verdicts(one_side).get(line_of(one_side, "$$R^{T}"), set())
+    set_before = _note("R = R_0", "R^{T} R R = R^{T}")   # the text fixed R: a particular matrix
+    assert "fails" not in verdicts(set_before).get(line_of(set_before, "$$R^{T} R R"), set())

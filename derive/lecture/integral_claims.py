@@ -18,7 +18,9 @@ or a Jacobian its name means; the statement stays `unchecked`, saying so. A chai
 two displays (the second begins with ``=``, nothing read between them) links the integral closing
 the first to the second's first member: that link is judged as above and given to the display that
 writes the integral, whose value as written it is (its first members may stay unread, ``\\int … d^3 r``);
-two integrals there are not judged (unequal, either display may hold the slip; equal, they may share it).
+two integrals there are not judged (unequal, either display may hold the slip; equal, they may share it),
+but the first is carried on: each integral of a chain ``∫ … = ∫ … = value`` set over three displays is
+judged against the value, the verdict given to the display that writes it.
 May import: sympy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.definite_integrals`,
 :mod:`derive.lecture.notes_claims`, :mod:`derive.lecture.statements`.
 """
@@ -132,7 +134,7 @@ class IntegralClaims:
         if tail is not None and tail[0] == line and _GOES_ON.match(piece):
             text = tail[1] + " " + piece
         elif tail is not None and _GOES_ON.match(piece) and self._display_goes_on(tail[0], line):
-            self._across_displays(tail, piece)
+            self._across_displays(tail, piece, line)
         if DEFINITE.search(text) is None:
             return False
         try:
@@ -174,32 +176,51 @@ class IntegralClaims:
         return any(a.line == before and b.line == line and a.kind == b.kind == "display" and _GOES_ON.match(b.latex)
                    for a, b in zip(items, items[1:]))
 
-    def _across_displays(self, tail, piece):
+    def _across_displays(self, tail, piece, line):
         """Judge the link between the integral closing the display before and this display's first member,
         given to the display that writes the integral (the value its integral is claimed to work out to).
-        ``tail``: (that display's line, its integral member, its unjudged claim or None)."""
-        first, member = _first_member(piece), _GOES_ON.sub("", tail[1], count=1)
+        ``tail``: (that display's line, its integral member, its unjudged claim or None). When this display
+        opens with an integral too, the earlier integral is carried on to the value the chain reaches
+        (``∫ … = ∫ … = value`` over three displays claims each integral works out to the value)."""
+        first = _first_member(piece)
         if first is None:
             return
+        carried = getattr(self, "_integral_carried", None)
+        earlier = carried[1] if carried is not None and carried[0] == tail[0] else []
+        if DEFINITE.search(first):
+            # the integral-to-integral link itself is not judged (equal, they may share a slip; unequal,
+            # either display may hold it): each is judged against the value the chain reaches
+            self._integral_carried = (line, [*earlier, tail])
+            return
+        self._integral_carried = None
+        self._value_link(tail, first, None)
+        for each in earlier:
+            self._value_link(each, first, tail[0])
+
+    def _value_link(self, tail, first, through):
+        """Judge the integral of ``tail`` against ``first``, a member in no integral, and give the verdict
+        to the integral's display (``through``: the line of the last integral the chain went through,
+        None when the value follows the integral's own display, whose claim is then added when it left
+        none to replace)."""
+        member = _GOES_ON.sub("", tail[1], count=1)
         # read on a copy of the vocabulary: the next display's names are met when its own reading meets them
         vocab = copy.copy(self.vocab)
         vocab.generic, vocab._atoms_met, vocab.defined = dict(vocab.generic), dict(vocab._atoms_met), dict(vocab.defined)
-        both = bool(DEFINITE.search(first))
-        if both:
-            return          # two integrals: equal, they may share a slip; unequal, either display may hold it
         try:
             a, b = (sp.sympify(lx.parse(m, vocab).members[0].value) for m in (member, first))
-            verdict = self._integral_link(a, b, both)
+            verdict = self._integral_link(a, b, False)
         except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
                 NotImplementedError, RecursionError, sp.SympifyError):
             return          # a member the parser or SymPy cannot take: the link stays unjudged
         if verdict is None:
             return
+        way = "into the next display" if through is None else f"through the integral of line {through} to its value"
         claim = Claim(tail[0], f"{member.strip()} = {first.strip()}", "identity", *verdict[:1], None,
-                      verdict[1] + " (a chain the text carries on into the next display)")
+                      verdict[1] + f" (a chain the text carries on {way})")
         at = next((k for k, c in enumerate(self.claims) if c is tail[2]), None)
         if at is None:
-            self.claims.append(claim)
+            if through is None:
+                self.claims.append(claim)
         elif tail[2].why == _NOT_COMPARED:     # the integral's value found: no longer beside no value
             self.claims[at] = claim
         else:

@@ -5,8 +5,8 @@ front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's s
 *meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
 own spellings, so that the text's names win over the lecture's.
 May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`,
-:mod:`derive.lecture.hat_maps`, :mod:`derive.lecture.principal_momentum` and
-:mod:`derive.symbolic` (the quantities a meaning stands for).
+:mod:`derive.lecture.hat_maps`, :mod:`derive.lecture.principal_momentum`, :mod:`derive.lecture.said_columns`
+and :mod:`derive.symbolic` (the quantities a meaning stands for).
 
 A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
 it is — "$\\mathbf{M}$ is the angular momentum", "mass $m$", "$J_z$ (angular momentum about the
@@ -59,7 +59,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.errors import SceneError
-from derive.lecture import hat_maps, principal_momentum
+from derive.lecture import hat_maps, principal_momentum, said_columns
 from derive.lecture import latex as lx
 from derive.lecture import source
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
@@ -325,6 +325,10 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
         _components_of(names, text, starts, offset)
     _said_of_display(names, body)
+    for line, rows, meaning in said_columns.columns(body, {k: p for k, (how, p) in MEANINGS.items() if how == "letter"}):
+        atoms = [a for row in rows for a in _atoms(source.normalize(row))]
+        if len(atoms) == 3 and len({a.base for a in atoms}) == 1 and _fits(meaning, atoms):
+            bind(names, atoms, meaning, f"line {line}")
     _rate_law(names, body)
     for line, tex in principal_momentum.velocity_letters(body):      # L̇ᵢ ≡ IᵢΩ̇ᵢ: Ω is the angular velocity
         if _fits("angular velocity", _atoms(tex)):

@@ -12,11 +12,13 @@ statement again —
    made the body symmetric says where it did;
 3. without the names learned from the prose: when only those make it fail, the verdict rests on
    an uncertain reading, so it is ``unchecked``, saying which reading it tried — unless another
-   statement of its display, read with the same bindings, holds by the same kind of check;
+   statement of its display, read with the same bindings, holds by the same kind of check, or the
+   display that gave them, a column of the components its sentence names, holds read with them;
 4. edited, one edit of its own LaTeX at a time, to find the correction in the text's notation.
 
 Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
 left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`, :mod:`derive.lecture.primed_functions`,
+:mod:`derive.lecture.said_columns`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -26,7 +28,7 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from derive.lecture import latex as lx, primed_functions
+from derive.lecture import latex as lx, primed_functions, said_columns
 from derive.lecture import vectors as vc
 from derive.symbolic.lagrangian import I1, I2, Mass, l
 
@@ -191,8 +193,9 @@ class Rereading:
                 bindings = self._learned_bindings(piece)
                 # the edit is sought now, in the reading's own state, and only where a sibling may confirm
                 edit = self._one_edit(saved, line, piece, pieces) if not self.judging_only and bindings and any(
-                    c.verdict == "fails" and c.correction is None for c in first) and any(
-                    p != piece and bindings <= self._learned_bindings(p) for p in pieces) else None
+                    c.verdict == "fails" and c.correction is None for c in first) and (any(
+                    p != piece and bindings <= self._learned_bindings(p) for p in pieces)
+                    or self._said_and_held(bindings) is not None) else None
                 for c in first:
                     if c.verdict in ("typo", "fails"):
                         self.unconfirmed = [*self.unconfirmed,
@@ -224,13 +227,28 @@ class Rereading:
                 continue
             sibling = next((s for s in claims if s is not c and s.verdict == "holds" and s.kind == c.kind
                             and s.latex != c.latex and bindings <= self._learned_bindings(s.latex)), None)
-            if sibling is None:
+            said = self._said_and_held(bindings) if sibling is None else None
+            if sibling is None and said is None:
                 continue
             c.verdict, c.correction = verdict, correction
             c.why = (f"reading {learned} (as the prose names it) it does not hold: {why}; the reading is "
-                     f"confirmed by {sibling.latex.strip()} in the same display, which holds read with those names")
+                     f"confirmed by {sibling.latex.strip()} in the same display, which holds read with those names"
+                     if sibling is not None else
+                     f"reading {learned} (as the text names it at line {said.line}) it does not hold: {why}; the "
+                     f"reading is confirmed by {said.latex.strip()}, the display that names them, which holds read so")
             if verdict == "fails" and edit is not None:
                 c.verdict, c.correction = "typo", edit
+
+    def _said_and_held(self, bindings):
+        """The claim that holds, read with every binding, at the one line of a display that said them all
+        (a column of components after a sentence naming the quantity), or None: the text's own formula
+        confirms the reading it gave."""
+        lines = {where for _, _, where in bindings}
+        if len(lines) != 1 or not next(iter(lines)).startswith("line "):
+            return None
+        at = int(next(iter(lines))[5:])
+        return next((s for s in self.claims if s.line == at and s.verdict == "holds" and said_columns.is_column(s.latex)
+                     and bindings <= self._learned_bindings(s.latex)), None)
 
     def _confirm(self, value, parsed):
         """A claim held with names the running text defined: their definitions are the text's

@@ -21,7 +21,10 @@ mixin `RotationProducts` of `derive.lecture.notes_check.Checker`, whose `_rotati
   (``I = R R^T``: no new letter); a member written as a lone ``0`` beside matrices is their zero
   (``0 = \dot R R^T + (\dot R R^T)^T``). A statement without a rotation in it is left alone (it
   restates what the text set, or relates letters the reader has not tied); one that does not hold
-  for every value is left as it was (its letters may stand for particular matrices).
+  for every value is left as it was (its letters may stand for particular matrices), unless its
+  only letters are one rotation and ``I``, written on both of its two sides, and the text never sets
+  that rotation equal to anything (``A = …``): such a statement claims an identity of every
+  rotation (``A^{-1} A A^T A (A^T)^{-1} = A^{-1} I (A^T)^{-1}``, which is A = I), and `fails`.
 * **an inertia tensor turned.** ``\mathbf I = \mathbf R \mathbf I_B`` (an inertia tensor set equal to
   a product of rotation matrices and the tensor in other axes) fails when the product is not
   symmetric for a symmetric tensor: the inertia tensor is symmetric in any axes, and the tensor in
@@ -73,6 +76,8 @@ _ORDER = 4
 """The order of the rotations' Taylor polynomials: above any rate a statement writes (ẍ, d/dt of Ṙ)."""
 WHY = ("an identity for every rotation matrix {rot}(t) and every matrix and vector the other letters "
        "name{defs}: exact rational rotations and generic matrices and vectors, two draws")
+WHY_NOT = ("not an identity of the rotation {rot}: read with I the identity, its two sides, each in {rot}, differ "
+           "at exact rational rotations (and the text sets {rot} equal to no particular matrix)")
 WHY_TURNED = ("an inertia tensor is symmetric in any axes, and {right} is not for a rotation {rot}: "
               "the tensor in turned axes is Q I Qᵀ (Q the rotation, Qᵀ on the other side)")
 
@@ -355,6 +360,25 @@ class RotationProducts:
             put = [n for n, k in zip(named, letters[2]) if k in used]
             claim.kind, claim.verdict = "identity", "holds"
             claim.why = WHY.format(rot=_names(turns), defs=f", with the text's {', '.join(put)} put in" if put else "")
+        elif _of_the_rotation_alone(text, read, used, turns, self.claims):
+            claim.kind, claim.verdict, claim.why = "identity", "fails", WHY_NOT.format(rot=_names(turns))
+
+
+def _of_the_rotation_alone(text, read, used, turns, claims) -> bool:
+    """Whether a statement read with ``I`` the identity, in one rotation and ``I`` alone, relates two
+    sides that each write the rotation, of a rotation the text never sets equal to anything: it then
+    claims an identity of every rotation, which its sides, unequal at a rational rotation, are not."""
+    sides = text.split("=")
+    if len(turns) != 1 or len(sides) != 2 or used - {("I", "", 0)} != turns or any(r is None or len(r[0]) != 2 for r in read):
+        return False
+    (base, sub, _), = turns
+    a, b = read[0][0]
+    if not all(next(iter(turns)) in _letters(side) for side in sides) or isinstance(a, sp.MatrixBase) != \
+            isinstance(b, sp.MatrixBase) or isinstance(a, sp.MatrixBase) and a.shape != b.shape:
+        return False
+    head = re.compile(r"\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{\s*)?" + base + r"\s*\}?\s*"
+                      + (r"_\s*\{?\s*" + re.escape(sub) + r"\s*\}?\s*" if sub else "") + r"(?:\(\s*t\s*\)\s*)?(?:=|\\equiv)")
+    return not any(head.match(c.latex) for c in claims)
 
 
 def _letters(text) -> set:
