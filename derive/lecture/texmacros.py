@@ -224,6 +224,30 @@ def font_switches(latex: str) -> str:
     return out + latex[i:]
 
 
+_DOTLESS = re.compile(r"\\([ij])math(?![A-Za-z])")
+_STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
+
+
+def synonyms(latex: str) -> str:
+    """The formula with two spellings of what the reader reads written the usual way: the dotless
+    letters ``\\imath`` and ``\\jmath`` as i and j (the letters themselves, set dotless under a hat:
+    ``\\hat{\\imath}``, the unit vector î), and mathtools' starred matrices (``bmatrix*``, with or
+    without its column alignment ``[r]``) as the plain ones (``bmatrix``), which they only align.
+
+    Parameters
+    ----------
+    latex : str
+        One formula.
+
+    Returns
+    -------
+    str
+        The formula with those spellings replaced.
+    """
+    latex = _DOTLESS.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + m.group(1), latex)
+    return _STARRED.sub(lambda m: f"\\{m.group(1)}{{{m.group(2)}}}", latex)
+
+
 def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) -> str:
     """The formula with each use of the file's macros replaced by its body, arguments
     substituted, and macros in the result expanded in turn.
