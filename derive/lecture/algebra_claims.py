@@ -8,7 +8,7 @@ verdicts).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
-of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.headless_chains`,
+of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
 SymPy.
 
@@ -24,6 +24,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import body_plane
 from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
 from derive.lecture import frame_labels
@@ -136,6 +137,8 @@ class AlgebraStatements:
                                              "the text sets it to, not what the reader took it for")
             if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
+            if verdict == "fails" and self._plane_at(line) is not None:
+                verdict, why = self._in_the_plane(reading, ref, k, self._plane_at(line), verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
                 state.entries = True       # I_ij = … in index form: the text's I_xy is the tensor's entry
             fix = self._algebra_fix(reading, ref, k) if verdict == "fails" and not self.judging_only \
@@ -252,6 +255,26 @@ class AlgebraStatements:
             why = f"the text's vector {head} as it was set, with its names put in: {why}"
         self._add(line, piece, "identity", verdict, why)
         return True
+
+    def _note_plane(self, line, piece):
+        """A bare ``z = 0`` (`body_plane.setting`): the body's plane for the rest of its section."""
+        axis = body_plane.setting(piece)
+        if axis is not None:
+            self._plane = (axis, line, self._section_of(line))
+
+    def _plane_at(self, line) -> int | None:
+        """The axis of the plane the text set before ``line`` in its section, or None."""
+        plane = getattr(self, "_plane", None)
+        return plane[0] if plane and line > plane[1] and self._section_of(line) == plane[2] else None
+
+    def _in_the_plane(self, reading, ref, k, axis, verdict, why):
+        """Member k against member ``ref`` again with the mass points in the plane: holds if it holds there."""
+        sub = body_plane.in_plane(axis)
+        for members in reading.members:
+            d = va.difference(members[k].value, members[ref].value)
+            if d is None or not _zero(d.subs(sub)):
+                return verdict, why
+        return "holds", f"{WHY}, {body_plane.WHY.format(axis='xyz'[axis])}"
 
     def _section_of(self, line) -> int:
         names = getattr(self.notes, "names", None)

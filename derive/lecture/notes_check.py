@@ -271,6 +271,7 @@ class Checker(ReadingRules):
     def _statement(self, line, piece, duplicate=False, pieces=()):
         if self.notes.names is not None:
             self.notes.names.here = line        # the names the prose gives in this section hold
+        self._note_plane(line, piece)
         text = piece
         if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
             text = self.ctx.head + " " + piece

@@ -567,7 +567,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
 def _normalized(latex: str, user: tuple) -> str:
     """`normalize`, memoised: the notes, the names the prose gives and the hat maps each normalise
     the text's formulas."""
-    latex = units.plain_numbers(texmacros.font_switches(definitions_removed(characters(latex))))
+    latex = units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(characters(latex)))))
     user = dict(user)
     try:
         latex = texmacros.expand(latex, user)

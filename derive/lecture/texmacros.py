@@ -224,6 +224,34 @@ def font_switches(latex: str) -> str:
     return out + latex[i:]
 
 
+_DOTLESS = re.compile(r"\\([ij])math(?![A-Za-z])")
+_HALF_OPEN = re.compile(r"\\left\s*\.((?:(?!\\left|\\right).)*)\\right\s*\)(?=\s*_)", re.S)
+_STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
+
+
+def synonyms(latex: str) -> str:
+    """The formula with two spellings of what the reader reads written the usual way: the dotless
+    letters ``\\imath`` and ``\\jmath`` as i and j (the letters themselves, set dotless under a hat:
+    ``\\hat{\\imath}``, the unit vector î), and mathtools' starred matrices (``bmatrix*``, with or
+    without its column alignment ``[r]``) as the plain ones (``bmatrix``), which they only align; and a
+    bracket closed with a subscript but opened invisibly, ``\\left. X \\right)_{rel}``, as the bracket
+    ``\\left( X \\right)_{rel}`` it draws half of (a derivative relative to a frame).
+
+    Parameters
+    ----------
+    latex : str
+        One formula.
+
+    Returns
+    -------
+    str
+        The formula with those spellings replaced.
+    """
+    latex = _DOTLESS.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + m.group(1), latex)
+    latex = _HALF_OPEN.sub(lambda m: "\\left(" + m.group(1) + "\\right)", latex)
+    return _STARRED.sub(lambda m: f"\\{m.group(1)}{{{m.group(2)}}}", latex)
+
+
 def expand(latex: str, user: dict[str, Macro], active: frozenset = frozenset()) -> str:
     """The formula with each use of the file's macros replaced by its body, arguments
     substituted, and macros in the result expanded in turn.

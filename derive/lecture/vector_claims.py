@@ -14,6 +14,7 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 import sympy as sp
 
@@ -195,6 +196,12 @@ class VectorStatements:
             if untied:          # diag(A, B, C) for the inertia tensor: the text naming its moments
                 self._add(line, piece, kind, "unchecked", f"involves {', '.join(untied)}, which the text has not "
                           "tied to the derivation (a definition of them?)")
+                continue
+            carried = _carried_by_the_body(reading, k, ref, piece)
+            if carried:
+                self._add(line, piece, kind, "unchecked", f"holds if the text's vector {carried} is fixed in the body "
+                          "(its body components constant), which the derivation does not know of it: the text's "
+                          "set-up of that vector, not a claim")
                 continue
             fix = None if self.judging_only else self._vector_fix(reading, k, piece)
             if fix:
@@ -390,3 +397,19 @@ def _top_level_plus(src: str) -> list:
 def _evaluated_at(latex: str) -> str:
     """``\\frac{d v}{dt}\\right|_i`` with the ``\\left.`` the reading dropped put back, so a correction pastes."""
     return re.sub(r"(\\frac\s*\{(?:[^{}]|\{[^{}]*\})*\}\s*\{[^{}]*\})\s*\\right\s*\|", r"\\left.\1\\right|", latex)
+
+
+def _carried_by_the_body(reading, k, ref, seed) -> str:
+    """The text's own vectors (``vector_models.GENERIC``: components of their own) whose body rates
+    the frame model leaves free, when member k holds against member ``ref`` once those rates are
+    zero (d𝐀/dt = 𝛚 × 𝐀 for the text's 𝐀: it says 𝐀 turns with the body); "" otherwise."""
+    if reading.model != "frame":
+        return ""
+    rates = {x for members in reading.members for m in (members[k], members[ref])
+             for x in getattr(m.value, "free_symbols", ()) if f"{vm.GENERIC}d" in x.name}
+    if not rates:
+        return ""
+    fixed = [[replace(m, value=m.value.xreplace(dict.fromkeys(rates, 0)) if hasattr(m.value, "xreplace") else m.value)
+              for m in members] for members in reading.members]
+    ok, _ = vc.holds(replace(reading, members=fixed), k, f"{seed}/fixed{k}", ref)
+    return ", ".join(sorted({x.name.split(vm.GENERIC)[0] for x in rates})) if ok else ""

@@ -25,7 +25,8 @@ frame)`` (a time derivative; None: not one it reads, the fraction is a quotient)
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
+import re
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -103,7 +104,45 @@ def read(toks, source, vocab, model, name: str, partial: bool = False) -> Readin
             free += err.letter
         except (sp.ShapeError, TypeError, ValueError, AttributeError, IndexError) as err:
             raise lx.NotRead(f"cannot combine its parts ({type(err).__name__})") from None
-    return Reading([r[0] for r in readings], readings[0][1], free, source, name, tuple(dict.fromkeys(unread)))
+    reading = Reading([r[0] for r in readings], readings[0][1], free, source, name, tuple(dict.fromkeys(unread)))
+    return _summation_convention(reading)
+
+
+_SUBSCRIPT = re.compile(r"_\s*(?:\{([^{}\\]*)\}|([A-Za-z0-9]))")
+
+
+def _written(letter: str, src: str) -> int:
+    """How many times ``letter`` stands as an index in the subscripts of ``src`` (a sum's range,
+    ``k=1``, is not one)."""
+    subs = (m.group(1) if m.group(1) is not None else m.group(2) for m in _SUBSCRIPT.finditer(src))
+    return sum(sub.split("=")[0].replace(" ", "").replace(",", "").count(letter) for sub in subs)
+
+
+def _summation_convention(reading: Reading) -> Reading:
+    """The summation convention: a free index the first member does not write, written twice in
+    each other member that writes it (``\\omega^2 = \\omega_j\\omega_j``), is summed over 1, 2, 3 in
+    those members, not a free index the statement holds for at each value."""
+    first = reading.members[0]
+    spans = [reading.source[m.start:m.end] for m in first]
+    dummy = [f for f in reading.free if _written(f, spans[0]) == 0
+             and {_written(f, s) for s in spans[1:]} <= {0, 2} and any(_written(f, s) == 2 for s in spans[1:])]
+    if not dummy:
+        return reading
+    kept = "".join(f for f in reading.free if f not in dummy)
+    combos = list(itertools.product((1, 2, 3), repeat=len(reading.free)))
+    at = {values: members for values, members in zip(combos, reading.members)}
+    out = []
+    for values in itertools.product((1, 2, 3), repeat=len(kept)):
+        env = dict(zip(kept, values))
+        rows = [at[tuple(env[f] if f in env else d[dummy.index(f)] for f in reading.free)]
+                for d in itertools.product((1, 2, 3), repeat=len(dummy))]
+        members = []
+        for k, m in enumerate(rows[0]):
+            if any(_written(f, spans[k]) for f in dummy):
+                m = replace(m, value=sum((row[k].value for row in rows[1:]), rows[0][k].value))
+            members.append(m)
+        out.append(members)
+    return replace(reading, members=out, free=kept)
 
 
 class VectorParser(_Parser):
