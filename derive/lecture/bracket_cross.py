@@ -12,22 +12,26 @@ a bracket of a product of brackets may be the text's name for a matrix (``[I_S]`
 Takes: the rendered text of the notes (`derive.lecture.source.rendered`). Gives: `marked`, the text
 with those brackets marked (on their own lines, so every line keeps its number).
 
-May import: the standard library.
+May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
 import re
 
-_BOLD = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?[A-Za-z]+\s*\}?"
-_DEFINED = re.compile(r"(?P<a>" + _BOLD + r")\s*\\times\s*(?P<y>" + _BOLD + r")\s*&?\s*(?:\\equiv|=)\s*&?\s*"
+from derive.lecture.latex_spellings import BOLD, DEFINES
+
+# a vector: a letter in a bold face or under an arrow
+_VECTOR = r"(?:" + BOLD + r"|\\vec(?![A-Za-z]))"
+_BOLD = _VECTOR + r"\s*\{?\s*\\?[A-Za-z]+\s*\}?"
+_DEFINED = re.compile(r"(?P<a>" + _BOLD + r")\s*\\times\s*(?P<y>" + _BOLD + r")\s*&?\s*(?:" + DEFINES + r"|=)\s*&?\s*"
                       r"(?:\\left\s*)?\[\s*(?P=a)\s*(?:\\right\s*)?\]\s*(?P=y)")
-_BOLD_LETTER = re.compile(r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{\s*([A-Za-z])\s*\}")
-_BRACKET = re.compile(r"(?:\\left\s*)?\[(?P<inner>[^\[\]&\\\n]*(?:\\(?:mathbf|boldsymbol|bm|vec)\s*\{[^{}\n]*\}"
+_BOLD_LETTER = re.compile(_VECTOR + r"\s*\{\s*([A-Za-z])\s*\}")
+_BRACKET = re.compile(r"(?:\\left\s*)?\[(?P<inner>[^\[\]&\\\n]*(?:" + _VECTOR + r"\s*\{[^{}\n]*\}"
                       r"[^\[\]&\\\n]*)*)(?:\\right\s*)?\]")
 # what makes a bracket the text's matrix: a vector after it, or a written matrix it is set equal to
-_ACTS = re.compile(r"\s*(?:" + _BOLD + r"|&?\s*(?:\\equiv|=)\s*&?\s*\\begin\{[bpBvV]?matrix\})")
+_ACTS = re.compile(r"\s*(?:" + _BOLD + r"|&?\s*(?:" + DEFINES + r"|=)\s*&?\s*\\begin\{[bpBvV]?matrix\})")
 # a symbol inside the bracket: a bold letter or a plain one, with its subscript
-_SYMBOL = re.compile(r"(?P<bold>\\(?:mathbf|boldsymbol|bm|vec)\s*\{[^{}]*\})|(?<![\\A-Za-z])(?P<plain>[A-Za-z])(?![A-Za-z])"
+_SYMBOL = re.compile(r"(?P<bold>" + _VECTOR + r"\s*\{[^{}]*\})|(?<![\\A-Za-z])(?P<plain>[A-Za-z])(?![A-Za-z])"
                      r"(?P<sub>\s*_\s*(?:\{[^{}]*\}|\w))?")
 
 

@@ -15,7 +15,7 @@ the sines and cosines of one angle (``\hat{a}_x = \cos\theta \hat{n}_x + \sin\th
 the matrix form), states that frame's orientation: a simple orientation about the axis the two
 frames share, held to the right-hand sense (``passive(axis, θ)``), which then orients the frame.
 
-May import: :mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -23,11 +23,13 @@ import re
 
 import sympy as sp
 
+from derive.lecture.latex_spellings import BOLD
 from derive.lecture.vocabulary import NotRead
 from derive.symbolic.rotations import passive, skew, trig_reduce
 
 _UNIT = r"\\hat\s*\{\s*([a-z])\s*\}\s*_\s*\{?\s*([xyz123])\s*\}?"
-_DCM = r"\^\s*\{?\s*([A-Z])\s*\}?\s*\\mathbf\s*\{\s*C\s*\}\s*\^\s*\{?\s*([A-Z])\s*\}?"
+# the matrix's C in any bold face (\mathbf{C}, \boldsymbol{C}, \bm C): the same symbol
+_DCM = r"\^\s*\{?\s*([A-Z])\s*\}?\s*" + BOLD + r"\s*(?:\{\s*C\s*\}|C(?![A-Za-z]))\s*\^\s*\{?\s*([A-Z])\s*\}?"
 _GREEK = ("alpha beta gamma delta epsilon zeta eta theta vartheta iota kappa lambda mu nu xi pi rho sigma "
           "tau upsilon phi varphi chi psi omega").split()
 _FRAME = r"\^\s*\{?\s*([A-Z])\s*\}?"

@@ -21,7 +21,8 @@ or the axial moment I₃ (``C = I_3``), as "the principal moments $A$, $B$, $C$"
 left unchecked). Whether the sentence states the equality as a case ("with $I_3 = C$") or in
 passing changes nothing: the symbols on the two sides are the same quantity either way.
 
-May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`.
+May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`,
+:mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
@@ -30,13 +31,14 @@ import re
 from derive.lecture import latex as lx
 from derive.lecture import names as nm
 from derive.lecture import source
+from derive.lecture.latex_spellings import DEFINES
 
 _KIND = {frozenset("1"): "transverse moment", frozenset("2"): "second moment", frozenset("3"): "axial moment",
          frozenset("12"): "transverse moment"}
 """The numbered moments a chain names (their indices) → the meaning of the letter set equal to them."""
 _INDEX = {"transverse moment": "1", "second moment": "2", "axial moment": "3"}
 """The meanings of the text's names that are principal moments → their index."""
-_EQUALS = re.compile(r"(?<![<>!:\\])=|:=|\\(?:equiv|coloneqq|triangleq)(?![A-Za-z])")
+_EQUALS = re.compile(r"(?<![<>!:\\])=|" + DEFINES)
 _OTHER = re.compile(r"\\(?:approx|simeq|sim|neq|ne|geq?|leq?|ll|gg|propto|to)(?![A-Za-z])|(?<!\\)[<>]|[,;]")
 
 

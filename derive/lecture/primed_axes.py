@@ -26,19 +26,20 @@ Unit vectors written with a hat and no prime, index or power (``\\hat{z}``, ``\\
 space frame, then of the body frame (texts write 𝛚 = θ̇ ê′₂ + φ̇ ẑ + ψ̇ ê₃ with ẑ the vertical). A
 statement that holds under neither is flagged only where it fails the same way under both as no
 vector at all (a product of two unit vectors, a scalar added to a vector): what fails whichever
-frame the hats name is not the reader's choice of frame. May import: the standard library and
-`derive.lecture.vocabulary`.
+frame the hats name is not the reader's choice of frame. May import: the standard library,
+`derive.lecture.latex_spellings` and `derive.lecture.vocabulary`.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spellings import BOLD
 from derive.lecture.vocabulary import NotRead, scan
 
-# \hat{i}', \hat i', \hat{\mathbf{i}}', \mathbf{\hat{i}}', \hat{\imath}', with ' or ^\prime / ^{\prime}
-_PRIMED = re.compile(r"(?:\\hat\s*\{\s*(?:\\mathbf\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
+# \hat{i}', \hat i', \hat{\mathbf{i}}', \mathbf{\hat{i}}' (any bold face), \hat{\imath}', with ' or ^\prime / ^{\prime}
+_PRIMED = re.compile(r"(?:\\hat\s*\{\s*(?:" + BOLD + r"\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
                      r"|\\hat\s+([ijkxyz])(?![A-Za-z])"
-                     r"|\\mathbf\s*\{\s*\\hat\s*\{\s*([ijkxyz])\s*\}\s*\})"
+                     r"|" + BOLD + r"\s*\{\s*\\hat\s*\{\s*([ijkxyz])\s*\}\s*\})"
                      r"\s*(?:'|\^\s*\\prime\b|\^\s*\{\s*\\prime\s*\})")
 _INDEX = {"i": 1, "j": 2, "k": 3, "x": 1, "y": 2, "z": 3}
 _PRIME = r"(?:'|\^\s*\\prime\b|\^\s*\{\s*\\prime\s*\})"

@@ -25,11 +25,12 @@ from __future__ import annotations
 import re
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spellings import DEFINES
 from derive.lecture.source import MATH
 from derive.lecture.statements import top_level
 from derive.symbolic.rotations import ANGLES
 
-_DEFINES = re.compile(r"\\coloneqq(?![A-Za-z])|:=|\\equiv(?![A-Za-z])|(?<![<>!:\\])=")
+_DEFINES = re.compile(DEFINES + r"|(?<![<>!:\\])=")
 _OTHER_RELATION = re.compile(r"\\(?:approx|simeq|sim|neq|ne|geq?|leq?|geqslant|leqslant|ll|gg|propto|to|rightarrow|"
                              r"Rightarrow|implies|iff|Leftrightarrow)(?![A-Za-z])|(?<!\\)[<>]")
 _WORD = re.compile(r"[^\W\d_]{2,}")

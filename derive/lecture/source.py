@@ -4,7 +4,7 @@ Takes: the text of a notes file, or one formula of it. Gives: the text with what
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
 May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
-`derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
+`derive.lecture.latex_spellings`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -46,6 +46,7 @@ from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
+from derive.lecture.latex_spellings import DEFINITION_NAMES, REWRITTEN_BOLD_NAMES
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -173,7 +174,6 @@ _DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle":
 _WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
          "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
          "cancel": "", "bbox": None}
-_BOLD = {"pmb", "vb", "bold", "mathbfit"}
 _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "cross": "times",
            "cp": "times", "lvert": "vert", "rvert": "vert", "lVert": "vert", "rVert": "vert",
            "Vert": "vert", "cdotp": "cdot", "leqslant": "le", "geqslant": "ge", "dotsb": "cdots",
@@ -183,7 +183,7 @@ _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "c
            "thinspace": ",", "medspace": ":", "thickspace": ";", "enspace": "quad",
            "textup": "text", "textnormal": "text",     # upright words, as \\text sets them
            # a definition written with its own sign (mathtools' :=, "equal by definition")
-           "coloneqq": "equiv", "triangleq": "equiv", "eqdef": "equiv", "defeq": "equiv",
+           **{name: "equiv" for name in DEFINITION_NAMES},
            **{"var" + g: g for g in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi",
                                      "Psi", "Omega")}}
 _FUNCTION_NAMES = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
@@ -195,9 +195,9 @@ def _context():
     specs = [MacroSpec(name, args) for name, args in _DROP.items()]
     specs += [MacroSpec(name, "{") for name, a in _WRAP.items() if a is not None]
     specs += [MacroSpec("color", "{"), MacroSpec("textcolor", "{{"), MacroSpec("bbox", "[{")]
-    specs += [MacroSpec(name, "{") for name in _BOLD | {"vu", "abs", "norm", "operatorname", "qty",
-                                                          "mathrm", "text", "mathit", "hat", "dot", "ddot",
-                                                          "tilde", "widetilde", "widehat", "bar"}]
+    specs += [MacroSpec(name, "{") for name in REWRITTEN_BOLD_NAMES | {"vu", "abs", "norm", "operatorname", "qty",
+                                                                       "mathrm", "text", "mathit", "hat", "dot",
+                                                                       "ddot", "tilde", "widetilde", "widehat", "bar"}]
     specs += [MacroSpec("overbrace", "{"), MacroSpec("underbrace", "{"), MacroSpec("overset", "{{"),
               MacroSpec("underset", "{{"), MacroSpec("stackrel", "{{")]
     specs += [MacroSpec("dv", "[{{"), MacroSpec("pdv", "[{{"), MacroSpec("frac", "{{"),
@@ -263,7 +263,7 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
         if name in ("boxed", "ensuremath", "color", "textcolor", "bbox"):   # a frame or a colour around a statement
             return (" " if name == "color" else " " + inner + " "), 0     # (\\color{red}{+}: the argument names a colour)
         return "{" + inner + "}", 0
-    if name in _BOLD:
+    if name in REWRITTEN_BOLD_NAMES:          # \pmb, \vb, …: written as a bold every reader knows
         inner = _last_arg(node, user)
         if inner is None:
             return "\\" + name + post, 0

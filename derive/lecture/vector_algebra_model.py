@@ -38,6 +38,7 @@ import sympy as sp
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture.latex_spaces import SPACE
+from derive.lecture.latex_spellings import BOLD
 from derive.lecture import point_labels
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
@@ -70,8 +71,8 @@ def labelled_torque(sub: str) -> bool:
     """Whether a torque letter's subscript labels it (``g``, ``\\text{ext}``) rather than indexing it."""
     return TORQUE_LABELS.fullmatch(re.sub(r"^(?:text|mathrm|rm)", "", sub)) is not None
 _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
-_LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*I|\\tilde|"
-                      r"\\widetilde|\\hat\s*\{?\s*\\?(?:mathbf|boldsymbol)?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
+_LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*I|\\tilde|"
+                      r"\\widetilde|\\hat\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
 # a macro's bold letter in braces, {\boldsymbol L}_i: the letter with its subscript
 _BOLD_GROUP = re.compile(r"\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
 # a period between a vector and the next operand, (\vec{a}.\vec{c}): the dot product, not a sentence's end
@@ -92,10 +93,10 @@ _DENSITY = re.compile(r"\\rho(?![A-Za-z])")
 
 
 # a density at the point, rho(r), and the volume element d^3 r: their product is the mass element dm
-_DENSITY_AT = re.compile(r"\\rho\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\{?\s*\\(?:mathbf|boldsymbol|vec)\s*\{?\s*r\s*\}?\s*\}?"
+_DENSITY_AT = re.compile(r"\\rho\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\{?\s*(?:" + BOLD + r"|\\vec)\s*\{?\s*r\s*\}?\s*\}?"
                          r"\s*(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # rho(r), rho\left(r\right)
 _VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?\s*"
-                       r"(?:\\(?:mathbf|boldsymbol|vec)\s*\{\s*r\s*\}|\{\s*\\mathbf\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
+                       r"(?:(?:" + BOLD + r"|\\vec)\s*\{\s*r\s*\}|\{\s*" + BOLD + r"\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
 
 
 def _mass_element(text: str) -> str:

@@ -3,8 +3,8 @@ into atoms and tokens, and `Vocabulary`, which looks each atom up among the deri
 quantities and their usual spellings (or, open to the text's own names, makes it a `Generic`
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
-May import: :mod:`derive.symbolic`, :mod:`derive.lecture.elliptic`, :mod:`derive.lecture.latex_spaces`,
-:mod:`derive.lecture.matrix_exp`, :mod:`derive.lecture.variations`, :mod:`derive.lecture.dotted_products`, SymPy.
+May import: :mod:`derive.symbolic`, SymPy and, of :mod:`derive.lecture`, ``elliptic``, ``latex_spaces``, ``latex_spellings``,
+``matrix_exp``, ``variations``, ``dotted_products``.
 """
 from __future__ import annotations
 
@@ -18,11 +18,11 @@ from derive.lecture import elliptic
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
+from derive.lecture.latex_spellings import BOLD_NAMES
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.lecture.variations import variation_at
-from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l, p_alpha, p_gamma
+from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
-from derive.symbolic.lagrangian import ACCELS
 
 # --- the symbols of the notes ------------------------------------------------------------------
 W = sp.symbols("omega1:4", real=True)              # ω̃ᵢ (the symbols of derive.symbolic.stability)
@@ -115,7 +115,7 @@ GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "et
          "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma",
          "Phi", "Psi", "Omega", "top", "intercal"}
 DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
-               "widehat": "hat", "mathbf": "bold", "boldsymbol": "bold", "bm": "bold", "vec": "vec",
+               "widehat": "hat", **{name: "bold" for name in BOLD_NAMES}, "vec": "vec",
                "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec",
                **{m: "mark" for m in ("bar", "breve", "check", "acute", "grave", "mathring")}}
 """An accent the derivation gives no meaning (``\\bar``, ``\\breve``, …) marks a symbol of the text's
