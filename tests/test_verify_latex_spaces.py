@@ -5,9 +5,9 @@ space ``\\ `` or a tie ``~`` — and a quad, the space a text sets between two s
 for a space between factors where a reader reads factors across it."""
 import pytest
 
-from derive.lecture import fixed_axis, formula_names, hat_maps, kane_notation, source, stated_convention
+from derive.lecture import fixed_axis, formula_names, hat_maps, imaginary_unit, kane_notation, source, stated_convention
 from derive.lecture import names as nm
-from derive.lecture import stated_theorems, vector_models
+from derive.lecture import stated_theorems, texmacros, vector_models
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vocabulary as vc
 from derive.lecture.arithmetic import arithmetic
@@ -157,3 +157,60 @@ def test_a_kinetic_energy_written_with_a_kerned_transpose_is_read():
     slip = head + "$$\nT = \\boldsymbol{\\omega}\\trans\\cdot\\mathbf{I}\\cdot\\boldsymbol{\\omega}\n$$\n"
     assert [c.verdict for c in kept.check_text(right) if c.latex.startswith("T =")] == ["holds"]
     assert [c.verdict for c in kept.check_text(slip) if c.latex.startswith("T =")] in (["fails"], ["typo"])
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_turn_written_out_with_a_space_in_its_cells_is_still_that_turn(space):
+    # C_X(φ) written out is the passive turn whatever sets its first and last cells apart, so the
+    # product of the passive turns turns first by its rightmost factor: φ first
+    cells = f"{space}1 & 0 & 0 \\\\ 0 & \\cos \\phi & \\sin \\phi \\\\ 0 & -\\sin \\phi & \\cos \\phi{space}"
+    body = (f"$$C_X(\\phi) = \\begin{{pmatrix}}{cells}\\end{{pmatrix}}$$\n\n"
+            "$$\\begin{pmatrix} x \\\\ y \\\\ z \\end{pmatrix} = C_z(\\psi) C_x(\\theta) C_z(\\phi) "
+            "\\begin{pmatrix} X \\\\ Y \\\\ Z \\end{pmatrix}$$\n")
+    assert [(s.convention, s.angles) for s in stated_convention.stated(body)] == [("z-x-z", ("phi", "theta", "psi"))]
+
+
+def test_a_thin_space_in_a_transposed_bracket_is_no_comma_between_entries():
+    # [C_z(ψ) \, C_x(θ)]^T is the transpose of a product, not a column of entries cut at the \, 's comma
+    assert source.normalize("R = [C_z(\\psi) \\, C_x(\\theta)]^T") == "R = [C_z(\\psi) \\, C_x(\\theta)]^T"
+    assert source.normalize("v = [a \\, b, c]^T") == "v = \\begin{bmatrix} a \\, b \\\\ c \\end{bmatrix}"
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_an_angular_velocity_spaced_off_its_body_axis_states_its_components(space):
+    # ω = ω₁ ê₁ is a spin about the first axis (ω₂ = ω₃ = 0), a case of the text, whatever the space
+    text = ("# A free body\n\nFor a body with $I_3 > I_2 > I_1$ let it spin about the axis of the smallest moment:\n\n"
+            f"$$\n\\boldsymbol{{\\omega}} = \\omega_1{space}\\widehat{{\\mathbf{{e}}}}_1\n$$\n")
+    assert [(c.verdict, "a case of the text" in c.why) for c in kept.check_text(text)] == [("unchecked", True)]
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_frame_bar_spaced_off_its_vector_is_dropped(space):
+    # Ω|_(Z,N,z) = φ̇ e_Z + θ̇ e_N + ψ̇ e_z: the bar names the axes, whatever space stands before it
+    s = space
+    text = ("# Euler angles\n\nThe fixed frame has the basis $(\\bm e_X,\\bm e_Y,\\bm e_Z)$ and the body frame "
+            "$(\\bm e_x,\\bm e_y,\\bm e_z)$.\n\n"
+            "$$R = R_Z(\\phi) R_X(\\theta) R_Z(\\psi)$$\n\n"
+            "The angular velocity $\\bm \\Omega$ is written along the three axes of the turns:\n\n"
+            f"$$\\bm \\Omega{s}\\big|_{{(Z,N,z)}} = \\dot{{\\phi}}{s}\\bm e_Z + \\dot{{\\theta}}{s}\\bm e_N + "
+            f"\\dot{{\\psi}}{s}\\bm e_z{s}\\big|_{{(Z,N,z)}}$$\n")
+    line = kept.line_of(text, "\\bm \\Omega" + s + "\\big|")
+    assert kept.verdicts_by_line(text)[line] == {"holds"}
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_the_imaginary_unit_spaced_off_its_factors_is_still_the_imaginary_unit(space):
+    s = space
+    assert imaginary_unit.read(f"\\dot{{u}} - \\Omega{s}i{s}u = \\alpha") == f"\\dot{{u}} - \\Omega{s}\\sqrt{{-1}}{s}u = \\alpha"
+    assert imaginary_unit.read(f"x_i{s}= 2") == f"x_i{s}= 2"
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_volume_element_spaced_off_its_upright_d_with_the_density_is_the_mass_element(space):
+    prepared = va.prepare(f"I_x = \\int(y^2 + z^2)\\rho\\,\\mathrm{{d}}{space}V")
+    assert "dm" in prepared and "\\rho" not in prepared and "V" not in prepared
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_font_switch_spaced_off_its_letter_sets_that_letter(space):
+    assert texmacros.font_switches(f"{{\\bf{space}G}} + {{\\rm{space}body}}") == "{\\mathbf{G}} + {\\mathrm{body}}"

@@ -75,6 +75,21 @@ def _momentum_constant(latex: str) -> str:
     return latex + " = \\mathrm{const}" if re.match(r"p_\{?\\(?:alpha|gamma|phi|psi)\}? =", latex) else latex
 
 
+_BOLD_LETTER = r"(?<!\\hat\{)(?<!\\ddot\{)\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
+# A bold letter indexed by row and column (\mathbf{R}_{21}), or a capital transposed or inverted
+# (\mathbf{R}^T, \mathbf{I}^{-1}), is a matrix; a small letter transposed is a row (\boldsymbol{\omega}^T).
+_INDEXED = re.compile(_BOLD_LETTER + r"\s*_\s*\{\s*(?:\d\d|[a-z][a-z])\s*\}")
+_TRANSPOSED = re.compile(r"(?<!\\hat\{)(?<!\\ddot\{)\\(?:mathbf|boldsymbol)\{([A-Z])\}"
+                         r"\s*\^\s*\{?\s*(?:T(?![A-Za-z])|\\top(?![A-Za-z])|-1)")
+
+
+def _arrows_for_bold(latex: str) -> str:
+    """``\\vec`` for a bold letter: an arrow marks a vector, so a letter the display shows to be a matrix
+    (`_INDEXED`, `_TRANSPOSED`) keeps its bold everywhere in the display (an arrow would make it a vector)."""
+    matrices = {m[1] for rx in (_INDEXED, _TRANSPOSED) for m in rx.finditer(latex)}
+    return re.sub(_BOLD_LETTER, lambda m: m[0] if m[1] in matrices else rf"\vec{{{m[1]}}}", latex)
+
+
 _GREEK = {"omega": "ω", "theta": "θ", "psi": "ψ", "Omega": "Ω", "varphi": "φ", "alpha": "α", "lambda": "λ"}
 
 
@@ -134,7 +149,7 @@ VARIANTS = {
     "boldsymbol for bold": (ALL_NOTES, _sub(_BOLD, r"\\boldsymbol{\1}")),
     "mathbf for bold": (ALL_NOTES, _sub(_BOLD, r"\\mathbf{\1}")),
     "bm for bold": (ALL_NOTES, _sub(_BOLD, r"\\bm{\1}")),
-    "vec for bold letters": (ALL_NOTES, _sub(r"(?<!\\hat\{)(?<!\\ddot\{)\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}", r"\\vec{\1}")),
+    "vec for bold letters": (ALL_NOTES, _arrows_for_bold),
     # words in a subscript
     "unbraced text subscript": (ALL_NOTES, _sub(r"_\{([a-z]{2,})\}", r"_\\text{\1}")),
     "unbraced mathrm subscript": (ALL_NOTES, _sub(r"_\{([a-z]{2,})\}", r"_\\mathrm{\1}")),

@@ -24,6 +24,16 @@ def test_the_angular_velocity_along_the_principal_axes_sets_its_components_and_i
     assert [c.verdict for c in _at(claims, 15)] == ["holds"]          # Euler's second equation in λ, μ
 
 
+def test_a_hatted_unit_vector_written_with_an_arrow_is_a_principal_axis_too():
+    # \widehat{\vec{e}}_1 is the unit vector ê₁ as \widehat{\mathbf{e}}_1 is: the spin and its disturbance set
+    # the components as before, and Euler's second equation in λ, μ holds
+    text = _HEAD.replace("\\mathbf{e}", "\\vec{e}") + "Then\n\n$$\n\\dot{\\lambda} = \\frac{I_3 - I_1}{I_2} \\omega_1 \\mu\n$$\n"
+    claims = kept.check_text(text)
+    assert [c.verdict for c in _at(claims, 3)] == ["unchecked"] and "_{2} = 0" in _at(claims, 3)[0].why
+    assert [c.verdict for c in _at(claims, 9)] == ["unchecked"] and "_{2} = \\lambda" in _at(claims, 9)[0].why
+    assert [c.verdict for c in _at(claims, 15)] == ["holds"]
+
+
 def test_a_slip_in_the_named_components_is_flagged():
     claims = kept.check_text(_HEAD + "Then\n\n$$\n\\dot{\\lambda} = \\frac{I_1 - I_3}{I_2} \\omega_1 \\mu\n$$\n")
     assert any(c.verdict in ("typo", "fails") for c in _at(claims, 15))

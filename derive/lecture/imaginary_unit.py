@@ -7,17 +7,21 @@ subscript or a superscript (``x_i``, ``\\sum_{i=1}^3``), outside a command's arg
 space, a bracket): ``i = 1, 2, 3`` and ``(i)`` keep their i. A formula that also writes a j or a k
 so (``x i + y j + z k``, the unit vectors in plain letters), or writes a unit vector î (``\\imath``,
 ``\\hat{i}``, ``\\mathbf{i}``), keeps its i too: there a lone i is more likely that vector's letter.
+A space of any width but a quad between i and its factor sets them apart only (``\\Omega \\, i \\, u``).
 An exponent of e is read by `derive.lecture.units`. Takes and gives LaTeX (its macros expanded);
-imports nothing of derive.
+imports nothing of derive but :mod:`derive.lecture.latex_spaces`.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spaces import SPACE
+
 _UNIT_VECTOR_I = re.compile(r"\\imath|\\(?:hat|widehat|vec|mathbf|boldsymbol|bm)\s*\{?\s*i(?![A-Za-z])")
 _LONE = re.compile(r"(?<![A-Za-z\\])[ijk](?![A-Za-z])")
 _COMMAND_BEFORE = re.compile(r"\\([A-Za-z]+)\s*$")
 _COMMAND_AFTER = re.compile(r"\\([A-Za-z]+)")
+_SPACE_BEFORE, _SPACE_AFTER = re.compile(SPACE + r"\Z"), re.compile("^" + SPACE)
 _NOT_FACTORS = frozenset(
     "quad qquad le leq ge geq neq ne in to equiv approx sim simeq propto text mathrm textrm mbox "
     "operatorname label tag notag nonumber end begin right middle cdots ldots dots forall exists".split())
@@ -55,7 +59,7 @@ def read(latex: str) -> str:
 
 def _a_factor(latex: str, p: int) -> bool:
     """The letter at ``p`` is a factor of a product at the top of the formula's math."""
-    before, after = latex[:p].rstrip(), latex[p + 1:].lstrip()
+    before, after = _SPACE_BEFORE.sub("", latex[:p]), _SPACE_AFTER.sub("", latex[p + 1:])
     if before.endswith(("_", "^")) or not _in_math_groups(latex, p):
         return False
     command = _COMMAND_BEFORE.search(before)

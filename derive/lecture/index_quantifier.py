@@ -7,16 +7,18 @@ and 2 for i = 3) or ``\\forall i \\in \\{1, 2, 3\\}``. The display states its th
 index put in its subscripts (``_i``, ``_{i}``, ``_{i+1}``, ``_{i-1}``). Left as written when the
 index stands anywhere but in a subscript (a coefficient, a sum's bound), or when the set is
 ``\\{1, 2, 3\\}`` and a subscript shifts it (i+1 = 4 is no axis there). Takes and gives LaTeX
-normalised by `derive.lecture.source` (``\\mathbb`` written ``\\mathrm``); imports nothing of derive.
+normalised by `derive.lecture.source` (``\\mathbb`` written ``\\mathrm``), spaced by any of
+`derive.lecture.latex_spaces`'s spaces; imports nothing of derive but that module.
 """
 from __future__ import annotations
 
 import re
 
-_GAP = r"(?:~|\\[,;:!]|\s)*"
-_QUANTIFIER = re.compile(r"^\s*\\forall\s*(?P<i>[ijk])" + _GAP + r"\\in" + _GAP +
+from derive.lecture.latex_spaces import ONE_SPACING, SPACE
+
+_QUANTIFIER = re.compile(r"^\s*\\forall" + SPACE + r"(?P<i>[ijk])" + SPACE + r"\\in" + SPACE +
                          r"(?P<set>\\mathrm\s*\{\s*Z\s*\}\s*_\s*\{?\s*3\s*\}?|\\\{\s*1\s*,\s*2\s*,\s*3\s*\\\})"
-                         + _GAP + r":(?:&|~|\\[,;:!]|\s|\\q?quad\b|\\\\)*")
+                         + SPACE + r":(?:&|" + ONE_SPACING + r"|\\\\)*")
 
 
 def instances(body: str) -> list[str]:

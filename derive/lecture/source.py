@@ -470,7 +470,7 @@ def _transposed_rows(text: str) -> str:
                 depth -= 1
                 if depth == 0:
                     break
-            elif ch == "," and depth == 1:
+            elif ch == "," and depth == 1 and text[k - 1] != "\\":      # a thin space \, is no comma
                 commas.append(k)
             k -= 1
         called = text[k] == "(" and k > 0 and (text[k - 1].isalnum() or text[k - 1] in "}_'")   # f(x, y)

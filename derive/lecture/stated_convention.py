@@ -43,7 +43,7 @@ import re
 from dataclasses import dataclass
 
 from derive.lecture import source
-from derive.lecture.latex_spaces import SPACING
+from derive.lecture.latex_spaces import ONE_SPACE, SPACING
 
 _AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z", "X": "x", "Y": "y", "Z": "z"}
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
@@ -149,7 +149,8 @@ def _elementary(body: str):
     """(axis, angle, active) of a 3×3 matrix body (its ``&``/``\\\\`` entries) that is one turn about
     a coordinate axis, or None (see the module docstring)."""
     rows = [r for r in (re.split(r"\\\\", body)) if r.strip()]
-    cells = [[re.sub(r"\s+", " ", c).strip() for c in r.split("&")] for r in rows]
+    # a small space in a cell only sets it apart (``\\cos\\phi \\, \\end{pmatrix}``)
+    cells = [[re.sub(ONE_SPACE + "+", " ", c).strip() for c in r.split("&")] for r in rows]
     if len(cells) != 3 or any(len(r) != 3 for r in cells):
         return None
     for k, axis in enumerate("xyz"):

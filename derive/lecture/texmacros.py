@@ -4,7 +4,7 @@ Takes: the text of a notes file (its definitions) and one formula of it (the use
 macros the file defines (`definitions`), the formula without those definitions
 (`definitions_removed`), the formula with every use replaced by the macro's body
 (`expand`) and with plain TeX's font switches written as LaTeX's commands (`font_switches`).
-May import: the standard library.
+May import: the standard library, :mod:`derive.lecture.latex_spaces`.
 
 What is read: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand`` (starred or not, the
 name braced or not), with ``[n]`` arguments and an optional first argument with its default
@@ -25,6 +25,8 @@ from __future__ import annotations
 
 import re
 from typing import NamedTuple
+
+from derive.lecture.latex_spaces import SPACE
 
 _HEAD = re.compile(r"\\(newcommand|renewcommand|providecommand|DeclareMathOperator|def)(?![A-Za-z])")
 _WORD = re.compile(r"\\([A-Za-z]+)")
@@ -192,7 +194,7 @@ _ONE_TOKEN = re.compile(r"\s*(?:\\[A-Za-z]+|\\.|[^\\\s{}])\s*$|\s*\{.*\}\s*$", r
 
 
 # plain TeX's font switches, each for the rest of its group, and the commands LaTeX writes for them
-_SWITCH = re.compile(r"\{\s*\\(bf|rm)(?![A-Za-z])\s*")
+_SWITCH = re.compile(r"\{\s*\\(bf|rm)(?![A-Za-z])" + SPACE)      # a space after it sets nothing apart
 _SWITCHED = {"bf": "mathbf", "rm": "mathrm"}
 
 

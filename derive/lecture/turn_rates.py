@@ -26,7 +26,7 @@ Z): its prose decides where it puts the word fixed, inertial or space, or body o
 the capital axes in a sentence ("a *fixed* frame has the basis $(\\bm e_X,\\bm e_Y,\\bm e_Z)$"). A
 statement holds when it holds in the frame the prose names (the fixed one where it names none); it
 `fails` when it does not hold there, the prose having named it, or under either reading.
-May import: :mod:`derive.lecture.latex`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spaces`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -35,6 +35,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import SPACE
 from derive.symbolic import rotations as rot
 
 _BOLD = r"\\(?:vec|mathbf|boldsymbol|bm|vect)\s*"
@@ -51,9 +52,9 @@ _UNIT = (r"(?:\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNx
          r"|\\(?:wide)?hat\s*\{?\s*(?:\\(?:boldsymbol|mathbf|bm)\s*)?\{?\s*([XYZNxyzIJKijk])\s*\}?\s*\}?"
          r"|\\(?:boldsymbol|mathbf|bm)\s*\{?\s*([IJKNijk])\s*\}?)(?![A-Za-z_'])")
 _LETTER_AXIS = {"i": "x", "j": "y", "k": "z", "x": "x", "y": "y", "z": "z"}
-_AXIS_TERM = re.compile(r"(.*?)\s*" + _UNIT + r"\s*$", re.S)
+_AXIS_TERM = re.compile(r"(.*?)" + SPACE + _UNIT + SPACE + "$", re.S)
 """A term that ends in a unit vector named by its axis letter: the coefficient, then the letter."""
-_BAR = re.compile(r"\s*(?:\\(?:big|Big|bigg|Bigg|right)\s*)?\|\s*_\s*\{[^{}]*\}")
+_BAR = re.compile(SPACE + r"(?:\\(?:big|Big|bigg|Bigg|right)\s*)?\|\s*_\s*\{[^{}]*\}")
 """A frame bar, ``\\big|_{(xyz)}``: the axes a vector is written along."""
 _FRAME_WORDS = re.compile(r"\b(?:(fixed|inertial|space|laboratory|fixe)|(body|moving|rotating|mobile))\b", re.I)
 _INLINE = re.compile(r"\$([^$]+)\$")

@@ -88,14 +88,14 @@ _ACCENTED_BOLD = re.compile(r"\\(dot|ddot)\s*\{\s*\\(boldsymbol|mathbf|bm)\s*(\\
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
-_VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*V\b")
+_VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)" + SPACE + r"V\b")
 _DENSITY = re.compile(r"\\rho(?![A-Za-z])")
 
 
 # a density at the point, rho(r), and the volume element d^3 r: their product is the mass element dm
 _DENSITY_AT = re.compile(r"\\rho\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\{?\s*(?:" + BOLD + r"|\\vec)\s*\{?\s*r\s*\}?\s*\}?"
                          r"\s*(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # rho(r), rho\left(r\right)
-_VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?\s*"
+_VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?" + SPACE +
                        r"(?:(?:" + BOLD + r"|\\vec)\s*\{\s*r\s*\}|\{\s*" + BOLD + r"\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
 
 

@@ -32,9 +32,9 @@ from derive.symbolic.rotations import ANGLES
 _VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?\\(?:vec|boldsymbol|mathbf|bm)\s*\{")
 _BODY_AXIS = re.compile(r"\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*\{\s*e\s*_\s*\{?\s*[123]")
 _OMEGA_LEFT = re.compile(r"\s*\\(?:boldsymbol|mathbf|vec|bm)\s*(?:\{\s*\\omega\s*\}|\\omega(?![A-Za-z]))\s*=(?!=)")
-_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
+_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:\\(?:mathbf|boldsymbol|bm|vec)\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
            r"(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
-_ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*" + _UNIT_E)
+_ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)" + SPACE + _UNIT_E)
 """A term ``\\omega_1 \\widehat{\\mathbf{e}}_1``, ``\\lambda \\hat{\\mathbf{e}}_2``: one symbol along a body axis."""
 
 
