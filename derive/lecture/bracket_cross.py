@@ -10,7 +10,8 @@ text writes bold elsewhere (r_i of 𝐫_i, S of 𝐒) is that vector. Any other 
 a bracket of a product of brackets may be the text's name for a matrix (``[I_S]``), and grouping.
 
 Takes: the rendered text of the notes (`derive.lecture.source.rendered`). Gives: `marked`, the text
-with those brackets marked (on their own lines, so every line keeps its number).
+with those brackets marked (on their own lines, so every line keeps its number); and for one formula,
+`cross_matrices`, each marked bracket (``[…]_\\times``) in the formula reader's spelling.
 
 May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
@@ -23,11 +24,14 @@ from derive.lecture.latex_spellings import BOLD, DEFINES
 # a vector: a letter in a bold face or under an arrow
 _VECTOR = r"(?:" + BOLD + r"|\\vec(?![A-Za-z]))"
 _BOLD = _VECTOR + r"\s*\{?\s*\\?[A-Za-z]+\s*\}?"
+# a bracket sized with \\left … \\right or by hand (\\bigl[ … \\bigr]), as plain brackets
+_OPEN = r"(?:\\(?:left|[Bb]igg?l?)(?![A-Za-z])\s*)?\["
+_CLOSE = r"(?:\\(?:right|[Bb]igg?r?)(?![A-Za-z])\s*)?\]"
 _DEFINED = re.compile(r"(?P<a>" + _BOLD + r")\s*\\times\s*(?P<y>" + _BOLD + r")\s*&?\s*(?:" + DEFINES + r"|=)\s*&?\s*"
-                      r"(?:\\left\s*)?\[\s*(?P=a)\s*(?:\\right\s*)?\]\s*(?P=y)")
+                      + _OPEN + r"\s*(?P=a)\s*" + _CLOSE + r"\s*(?P=y)")
 _BOLD_LETTER = re.compile(_VECTOR + r"\s*\{\s*([A-Za-z])\s*\}")
-_BRACKET = re.compile(r"(?:\\left\s*)?\[(?P<inner>[^\[\]&\\\n]*(?:" + _VECTOR + r"\s*\{[^{}\n]*\}"
-                      r"[^\[\]&\\\n]*)*)(?:\\right\s*)?\]")
+_BRACKET = re.compile(_OPEN + r"(?P<inner>[^\[\]&\\\n]*(?:" + _VECTOR + r"\s*\{[^{}\n]*\}"
+                      r"[^\[\]&\\\n]*)*)" + _CLOSE)
 # what makes a bracket the text's matrix: a vector after it, or a written matrix it is set equal to
 _ACTS = re.compile(r"\s*(?:" + _BOLD + r"|&?\s*(?:" + DEFINES + r"|=)\s*&?\s*\\begin\{[bpBvV]?matrix\})")
 # a symbol inside the bracket: a bold letter or a plain one, with its subscript
@@ -56,3 +60,43 @@ def _marked(m: re.Match, bold: set) -> str:
     vector = _SYMBOL.sub(lambda x: x.group(0) if x.group("bold") else
                          r"\mathbf{" + x.group("plain") + "}" + (x.group("sub") or ""), inner)
     return r"\left[" + vector + r"\right]_\times"
+
+
+_CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
+
+
+def cross_matrices(text: str) -> str:
+    """``[\\mathbf{r}]_\\times`` (also ``\\left[ … \\right]_{\\times}``, ``^\\times``): the cross-product
+    matrix of r, written ``\\crossmatrix\\left( … \\right)`` for the formula reader.
+
+    Parameters
+    ----------
+    text : str
+        One formula, normalised (`derive.lecture.source.normalize` calls this).
+
+    Returns
+    -------
+    str
+        The formula, each bracket marked with ``_\\times`` or ``^\\times`` written as ``\\crossmatrix``.
+    """
+    while True:
+        m = next((m for m in _CROSS.finditer(text) if text[:m.start()].rstrip().endswith("]")), None)
+        if m is None:
+            return text
+        close = text[:m.start()].rstrip()
+        end = len(close) - 1
+        right = close.endswith("\\right]")
+        depth, k = 0, end
+        while k >= 0:
+            if text[k] == "]":
+                depth += 1
+            elif text[k] == "[":
+                depth -= 1
+                if depth == 0:
+                    break
+            k -= 1
+        if k < 0:
+            return text
+        left = k - 5 if text[max(k - 5, 0):k] == "\\left" else k
+        inner = text[k + 1:end - (6 if right else 0)]
+        text = text[:left] + r"\crossmatrix\left(" + inner + r"\right)" + text[m.end():]

@@ -5,20 +5,30 @@
 * ``\\frac{d(m v)}{dt}``, ``\\frac{d^2(x)}{dt^2}``, ``\\frac{d\\left(\\delta\\omega_1\\right)}{dt}``,
   ``\\frac{\\mathrm{d}(\\delta\\omega_1)}{\\mathrm{d}t}``: the rate of a bracket, in italic or upright
   differentials, is ``\\frac{d}{dt}`` of the bracket (the second rate, ``\\frac{d^2}{dt^2}``);
-* ``\\frac{\\text{d}\\vec{H}}{\\text{d}t}``: the differential set as text is the upright d, ``\\mathrm{d}``.
+* ``\\frac{\\text{d}\\vec{H}}{\\text{d}t}``: the differential set as text is the upright d, ``\\mathrm{d}``;
+* ``\\frac{\\mathrm{d}\\,\\omega}{\\mathrm{d}\\,t}``: a small space after the upright d sets nothing apart
+  (it is the differential of what follows), ``\\mathrm{d} t``;
+* ``\\frac{dq}{\\mathrm{d}t}``, ``\\frac{{}^A d\\hat{b}_x}{\\mathrm{d}\\,t}``: one derivative whose numerator sets
+  the italic d and whose denominator the upright one is read in one spelling, the italic ``dt``.
 
 Takes and gives one formula's LaTeX (`derive.lecture.source.normalize` calls `written`); imports
-nothing of derive's.
+`derive.lecture.latex_spaces` only (what a space is).
 """
 from __future__ import annotations
 
 import re
+
+from derive.lecture.latex_spaces import ONE_SPACE
 
 _D = r"(?:d|\\(?:mathrm|operatorname|text|rm)\s*(?:\{\s*d\s*\}|d))"      # italic or upright
 _CODE_RATE = re.compile(r"^\s*d\s*(\\[A-Za-z]+|[A-Za-z])((?:_(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*=(?!=)(.*)$", re.S)
 _DIFFERENTIAL_LETTER = re.compile(r"(?<![A-Za-z\\])d(?![A-Za-z]{2})")
 # d in text before what it differentiates, or closing a fraction's numerator (d/dt written as an operator)
 _TEXT_D = re.compile(r"\\text(?:rm)?\s*\{\s*d\s*\}(?=\s*[A-Za-z\\{(}])")
+_SPACED_D = re.compile(r"\\mathrm\s*\{\s*d\s*\}" + ONE_SPACE + "+")
+# a fraction whose numerator opens with the italic d (after a frame's prescript, ^A d) over an upright dt
+_MIXED_D = re.compile(r"(\\frac\s*\{\s*(?:\^\s*(?:\{[^{}]*\}|[A-Za-z])\s*)?d(?![A-Za-z]{2})(?:[^{}]|\{[^{}]*\})*\}\s*\{\s*)"
+                      r"\\mathrm\{d\}\s*(t\s*(?:\^\s*\{?\s*2\s*\}?\s*)?\})")
 _BRACKET_RATE = re.compile(r"\\frac\s*\{\s*" + _D + r"\s*(\^\s*\{?\s*2\s*\}?\s*)?(?:\\left\s*)?"
                            r"\(((?:[^(){}]|\([^(){}]*\))*?)(?:\\right\s*)?\)\s*\}"
                            r"\s*\{\s*" + _D + r"\s*t\s*(?(1)\^\s*\{?\s*2\s*\}?\s*|)\}")
@@ -35,5 +45,6 @@ def _code_rate(text: str) -> str:
 def written(text: str) -> str:
     """The formula with its derivatives' differentials in the reader's form (see the module docstring)."""
     text = _code_rate(_TEXT_D.sub(r"\\mathrm{d}", text) if "text" in text else text)
+    text = _MIXED_D.sub(r"\1d\2", _SPACED_D.sub(r"\\mathrm{d} ", text))
     return _BRACKET_RATE.sub(lambda m: (r"\frac{d^2}{dt^2}(" if m.group(1) else r"\frac{d}{dt}(") + m.group(2) + ")",
                              text)

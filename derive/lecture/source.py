@@ -4,7 +4,7 @@ Takes: the text of a notes file, or one formula of it. Gives: the text with what
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
 May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
-`derive.lecture.latex_spellings`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
+`derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -44,8 +44,8 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import differentials, imaginary_unit, tex_structure, texmacros, units
-from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, TIE
+from derive.lecture import bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
+from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
 from derive.lecture.latex_spellings import DEFINITION_NAMES, REWRITTEN_BOLD_NAMES
 from derive.lecture.statements import split_top
 
@@ -186,6 +186,9 @@ _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "c
            **{name: "equiv" for name in DEFINITION_NAMES},
            **{"var" + g: g for g in ("Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma", "Upsilon", "Phi",
                                      "Psi", "Omega")}}
+_SIZED = {f"{size}{side}": ("left" if side == "l" else "right")
+          for size in ("big", "Big", "bigg", "Bigg") for side in "lr"}
+"""A bracket sized by hand, opening (``\\bigl(``) or closing (``\\bigr)``): the pair ``\\left( … \\right)`` sets."""
 _FUNCTION_NAMES = {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
                    "arcsin", "arccos", "arctan"}
 
@@ -286,13 +289,13 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
         d = "d" if name == "dv" else r"\partial "
         n = f"^{{{order}}}" if order else ""
         return rf"\frac{{{d}{n} {f}}}{{{d} {x}{n}}}", 0
-    if name == "left" or name == "right":
+    if name in ("left", "right") or name in _SIZED:
         # \left. and \right. are invisible delimiters
         if k + 1 < len(nodes) and isinstance(nodes[k + 1], LatexCharsNode) and nodes[k + 1].chars.startswith("."):
             nodes[k + 1] = LatexCharsNode(parsing_state=nodes[k + 1].parsing_state,
                                           chars=nodes[k + 1].chars[1:], pos=nodes[k + 1].pos, len=nodes[k + 1].len)
             return " ", 0
-        return "\\" + name + post, 0
+        return "\\" + _SIZED.get(name, name) + post, 0
     if name in _RENAME:
         new = _RENAME[name]
         args = node.nodeargd.argnlist if node.nodeargd is not None else []
@@ -418,35 +421,6 @@ _COLON_EQUALS = re.compile(r"(?<![=:\\])\s*:\s*=(?!:)")
 _ELLIPTIC = re.compile(r"\\(?:mathrm|operatorname)\{\s*(sn|cn|dn)\s*\}" + SPACE)
 
 
-_CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
-
-
-def _cross_matrices(text: str) -> str:
-    """``[\\mathbf{r}]_\\times`` (also ``\\left[ … \\right]_{\\times}``, ``^\\times``): the cross-product
-    matrix of r, written ``\\crossmatrix\\left( … \\right)`` for the formula reader."""
-    while True:
-        m = next((m for m in _CROSS.finditer(text) if text[:m.start()].rstrip().endswith("]")), None)
-        if m is None:
-            return text
-        close = text[:m.start()].rstrip()
-        end = len(close) - 1
-        right = close.endswith("\\right]")
-        depth, k = 0, end
-        while k >= 0:
-            if text[k] == "]":
-                depth += 1
-            elif text[k] == "[":
-                depth -= 1
-                if depth == 0:
-                    break
-            k -= 1
-        if k < 0:
-            return text
-        left = k - 5 if text[max(k - 5, 0):k] == "\\left" else k
-        inner = text[k + 1:end - (6 if right else 0)]
-        text = text[:left] + r"\crossmatrix\left(" + inner + r"\right)" + text[m.end():]
-
-
 _TRANSPOSE = re.compile(r"\s*\^\s*(?:\{\s*(?:T|\\top|\\intercal|\\mathsf\{T\}|\\mathrm\{T\})\s*\}|T(?![A-Za-z])|\\top\b|\\intercal\b)")
 _PAIRS = {"]": "[", ")": "("}
 
@@ -495,8 +469,10 @@ def _operator_body(m: re.Match) -> str:
     return f" {m.group(1).strip()} " if m.group(1).strip() else " "
 
 
-_ROW_STOP = re.compile(r"(?<=[\w}])\s*[.,](?=\s*(?:\\\\|\\end\{|\\right))")
-_FORMULA_STOP = re.compile(r"(?:\s|\\[,;:!]|\\q?quad\b)*(?<!\\)(?<!\\right)(?<!\\left)(?<!\\[bB]igr)(?<!\\[bB]iggr)[.,]\s*$")
+# a full stop or a comma, spaced or not (``… = T \\, .``), never a command's (``\\,``, a row break's ``\\\\``) nor an invisible delimiter's
+_STOP = r"(?<!\\)" + SPACING + r"(?<!\\)(?<!\\right)(?<!\\left)(?<!\\[bB]igr)(?<!\\[bB]iggr)[.,]"
+_ROW_STOP = re.compile(r"(?<=[\w}])" + _STOP + r"(?=\s*(?:\\\\|\\end\{|\\right))")
+_FORMULA_STOP = re.compile(_STOP + r"\s*$")
 _DEGREES = re.compile(r"\^\s*(?:\{\s*\\circ\s*\}|\\circ\b)")
 
 
@@ -581,7 +557,7 @@ def _normalized(latex: str, user: tuple) -> str:
         text = _print(nodes, user)
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
-    text = _transposed_rows(_cross_matrices(text))
+    text = _transposed_rows(bracket_cross.cross_matrices(text))
     text = _FORMULA_STOP.sub("", _ROW_STOP.sub(" ", text))  # "1." before a row's or the formula's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
     text = _ELLIPTIC.sub(r"\\\1 ", text)              # \\mathrm{sn}: Jacobi's elliptic sine
