@@ -281,7 +281,7 @@ SHORT = {
         "with an argument, are not read",
 }
 
-FLOOR = {"checked": 814, "slips_flagged": 93, "holds_flagged": 0}
+FLOOR = {"checked": 822, "slips_flagged": 96, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
