@@ -56,8 +56,20 @@ def _lead(e):
     spun = e.as_poly(_S)
     if spun is not None and spun.degree() > 0 and surely_nonzero(spun.coeff_monomial(_S**spun.degree())):
         return None     # a polynomial in the spin whose leading coefficient is not zero: no limit to take
+    if _spun_only_by_its_phase(e):
+        return None
     lead = sp.limit(e, _S, sp.oo)
     return None if lead.has(*_UNBOUNDED) else lead
+
+
+def _spun_only_by_its_phase(e) -> bool:
+    """Does e depend on the spin only through sines and cosines of a phase growing with it (a·γ̇ + b,
+    a ≠ 0)? Such a function of γ̇ has a limit only where it does not vary with γ̇ at all, an identity
+    the fast top's reading does not seek (SymPy's `limit` is costly there and finds none)."""
+    phases = [f for f in e.atoms(sp.sin, sp.cos) if _S in f.free_symbols]
+    if not phases or _S in e.xreplace({f: sp.Dummy() for f in phases}).free_symbols:
+        return False
+    return all(sp.diff(f.args[0], _S, 2) == 0 and surely_nonzero(sp.diff(f.args[0], _S)) for f in phases)
 
 
 class FastTop:

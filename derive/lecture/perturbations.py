@@ -25,6 +25,7 @@ the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -58,6 +59,19 @@ def _written(key) -> str:
     """The letter of a recorded perturbation as LaTeX: ``\\eta``, ``\\delta\\omega``."""
     letter = "\\" + key[0] if len(key[0]) > 1 else key[0]
     return "\\delta " + letter if key[3] == "delta" else letter
+
+
+@functools.lru_cache(maxsize=64)
+def _perturbed_model(d, moments, perturbation):
+    """`Perturbations._perturbed_model` for the section's settings: every statement of a section
+    in its perturbation asks for the same model, so it is solved once."""
+    eps = sp.Dummy("epsilon")
+    e = [sp.Dummy(f"e{k + 1}") for k in range(3)]
+    residuals = d.euler(dict(moments))
+    rate = [sp.solve(residuals[i], lx.WD[i])[0] for i in range(3)]
+    second = [sum(sp.diff(rate[i], lx.W[j]) * rate[j] for j in range(3)) for i in range(3)]
+    at = {lx.W[i]: base + eps * e[i] for i, base in perturbation}
+    return eps, e, [sp.expand(x.xreplace(at)) for x in rate], [sp.expand(x.xreplace(at)) for x in second]
 
 
 class Perturbations:
@@ -119,9 +133,7 @@ class Perturbations:
             return False
         if not set(parsed.relations) <= {"=", "≈"} or not parsed.relations:
             return False
-        eps = sp.Dummy("epsilon")
-        e = [sp.Dummy(f"e{k + 1}") for k in range(3)]
-        model, rates = self._perturbed_model(eps, e)
+        eps, e, model, rates = self._perturbed_model()
         put, has_rate = {}, False
         constants = {I1, I2, I3}.union(*(free(base) for _, base in named.values()))
         # the perturbed components themselves, ω̃ᵢ = cᵢ + ηᵢ and ω̃̇ᵢ = η̇ᵢ (ω̇₁ = δω̇₁ about a steady spin)
@@ -153,14 +165,11 @@ class Perturbations:
             self._add(line, piece, "equation of motion", *self._perturbed_verdict(r, eps, keep))
         return True
 
-    def _perturbed_model(self, eps, e):
-        """ω̃̇ᵢ and ω̃̈ᵢ from Euler's equations (the section's settings of the moments in), at ω̃ = c + ε e."""
-        moments = {k: v for k, v in self.ctx.subs.items() if k not in lx.W and k not in lx.WD}
-        residuals = self.d.euler(moments)
-        rate = [sp.solve(residuals[i], lx.WD[i])[0] for i in range(3)]
-        second = [sum(sp.diff(rate[i], lx.W[j]) * rate[j] for j in range(3)) for i in range(3)]
-        at = {lx.W[i]: base + eps * e[i] for i, base in self.ctx.perturbation.values()}
-        return [sp.expand(x.xreplace(at)) for x in rate], [sp.expand(x.xreplace(at)) for x in second]
+    def _perturbed_model(self):
+        """(ε, e, ω̃̇ᵢ, ω̃̈ᵢ): the body's rates from Euler's equations (the section's settings of the
+        moments in), at ω̃ = c + ε e."""
+        moments = tuple((k, v) for k, v in self.ctx.subs.items() if k not in lx.W and k not in lx.WD)
+        return _perturbed_model(self.d, moments, tuple(self.ctx.perturbation.values()))
 
     def _perturbed_verdict(self, r, eps, keep):
         """(verdict, why) of a difference r(ε) that must vanish to order ``keep`` (None: exactly)."""

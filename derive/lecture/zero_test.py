@@ -128,7 +128,21 @@ def expanded_derivative(e, *xs, field=None):
 
 
 def symbolic_zero(d) -> str | None:
-    """The first symbolic step showing d = 0, or None (not shown: the numeric test decides)."""
+    """The first symbolic step showing d = 0, or None (not shown: the numeric test decides). Kept
+    per expression: a statement read again (its second readings, the probes of other sequences)
+    asks the same differences again."""
+    try:
+        return _symbolic_zero_kept(d)
+    except TypeError:           # a mutable matrix: not hashable, tested as it stands
+        return _symbolic_zero(d)
+
+
+@functools.lru_cache(maxsize=4096)
+def _symbolic_zero_kept(d) -> str | None:
+    return _symbolic_zero(d)
+
+
+def _symbolic_zero(d) -> str | None:
     if d == 0:
         return "identical"
     if _size(d) > _EXPAND_MAX_NODES:
