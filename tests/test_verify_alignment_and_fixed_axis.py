@@ -39,6 +39,16 @@ def test_an_angular_velocity_set_along_a_unit_vector_is_the_texts_set_up_not_a_c
     assert "fixed axis" in claims[0].why
 
 
+def test_an_angular_velocity_set_along_a_unit_vector_with_a_centred_dot_is_the_same_set_up():
+    # a scalar rate times a unit vector written with a product sign, as texts that write every product so do
+    text = _SETUP.replace("\\omega \\hat k", "\\omega \\cdot \\hat k")
+    claims = kept.check_text(text)
+    assert [(c.line, c.verdict) for c in claims] == [(5, "unchecked")]
+    assert "fixed axis" in claims[0].why
+    both = "# Fixed axis\n\n$$\\vec \\omega = \\omega \\cdot \\hat k, \\; \\vec \\alpha = \\alpha \\cdot \\hat k$$\n"
+    assert {c.verdict for c in kept.check_text(both)} == {"unchecked"}
+
+
 def test_a_component_beside_a_plain_omega_reads_the_rotation_about_that_axis_and_r_from_it():
     text = "# Fixed axis\n\n$$L_z = \\omega \\sum_i m_i r_i^2$$\n\n$$L_z = \\omega \\sum_i m_i r_i^3$$\n"
     assert verdicts(text) == [(3, "holds"), (5, "fails")]

@@ -101,6 +101,16 @@ def test_a_diagonal_tensor_holds_if_the_axes_are_principal():
     assert [c.verdict for c in claims] == ["holds"] and "principal" in claims[0].why
 
 
+def test_principal_moments_after_a_point_mass_are_left_unjudged_never_flagged():
+    # the point mass is an earlier statement's; the text may speak of a body in its principal axes here
+    text = ("# Principal axes\n\nOne particle of mass $m$ at $\\vec r$ has\n\n$$\\vec L = m \\vec r \\times \\vec v$$\n\n"
+            "For a body, in its principal axes,\n\n$$L_x = I_{xx}\\omega_x$$\n")
+    claims = {c.line: c for c in kept.check_text(text)}
+    assert claims[5].verdict == "holds" and claims[9].verdict == "unchecked", claims[9].why
+    body = text.replace("$$L_x = I_{xx}\\omega_x$$", "$$L_x = I_{xx}\\omega_x + I_{xy}\\omega_y + I_{xz}\\omega_z$$")
+    assert {c.line: c.verdict for c in kept.check_text(body)}[9] == "holds"   # every entry written: judged
+
+
 def test_a_product_of_inertia_with_the_other_sign_convention_is_the_texts_own():
     assert only("$$I_{xy} = \\int x y \\, dm$$\n") == {"holds"}
 

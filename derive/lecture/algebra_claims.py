@@ -357,6 +357,10 @@ class AlgebraStatements:
                     all(_zero(d[i, j]) or (i != j and lit[i, j] == 0) for i, j in itertools.product(range(3), repeat=2)):
                 principal = True           # the written tensor is diagonal where the derived one is not
                 continue
+            if _principal_only(reading.source) and reading.model == "single" and not _PLAIN_MASS.search(reading.source):
+                # the point mass is an earlier statement's: the text may speak of a body here
+                return "unchecked", ("written in the principal moments only, while the system read last is "
+                                     "one point mass, which has no three principal moments of its own")
             if _set_perpendicular(reading, k):
                 return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
                                      "condition of the text's set-up, not a consequence the derivation decides")
@@ -413,6 +417,8 @@ def _instance(symbol: str, named: dict) -> str | None:
         return re.sub(r"_\{\s*([a-h])\s*\}", lambda x: "_{" + rename.get(x.group(1), x.group(1)) + "}", value)
     return None
 _MOMENT = re.compile(r"I_\s*\{?\s*(11|22|33|xx|yy|zz|12|21|13|31|23|32|xy|yx|xz|zx|yz|zy)\b")
+_PLAIN_MASS = re.compile(r"(?<![A-Za-z\\])m(?![A-Za-z])")
+"""A plain m in a statement: it speaks of one point mass itself."""
 _PRINCIPAL_POINTS = {c: 0 for k, point in enumerate(va.RK) for i, c in enumerate(point) if i != k}
 """The body's three mass points each on its own axis: every product of inertia vanishes, the
 three principal moments stay generic."""

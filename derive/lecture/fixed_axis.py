@@ -22,7 +22,9 @@ from derive.lecture.latex_spaces import SPACE
 
 _UNIT = r"\\hat\s*\{?\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{?\s*)?(?P<axis>[ijkxyz])\s*\}?\s*\}?"
 _BOLD = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\(?P<vec>omega|alpha)\s*\}?"
-_ONE = re.compile(r"^\s*" + _BOLD + r"\s*=\s*\\(?P<scalar>omega|alpha)" + SPACE + _UNIT + r"\s*$")
+# the scalar rate and the unit vector side by side, or with a centred dot (a product with a scalar)
+_ONE = re.compile(r"^\s*" + _BOLD + r"\s*=\s*\\(?P<scalar>omega|alpha)" + SPACE + r"(?:\\cdot(?![A-Za-z])" + SPACE + r")?"
+                  + _UNIT + r"\s*$")
 AXIS = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 
 WHY = ("the text's set-up: the body turns about a fixed axis, 𝛚 (and 𝛂) along it — an assumption, "
