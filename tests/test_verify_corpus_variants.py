@@ -152,6 +152,13 @@ def test_a_rewrite_sets_no_space_between_a_texts_own_command_and_its_argument():
     assert out == text.replace("r \\times m \\vv", "r \\times m \\, \\vv")
 
 
+def test_an_arrow_rewrite_leaves_a_matrix_between_two_frames_bold():
+    # an arrow would make Kane's direction cosine matrix a vector; the vector beside it takes the arrow
+    arrows = VARIANTS["vec for bold letters"][1]
+    assert arrows("\\left({}^A\\mathbf{C}^N\\right)^{-1} \\mathbf{a}") == "\\left({}^A\\mathbf{C}^N\\right)^{-1} \\vec{a}"
+    assert arrows("{}^N\\mathbf{H}^{B/O} = \\mathbf{r}") == "{}^N\\vec{H}^{B/O} = \\vec{r}"   # a point's label: a vector
+
+
 def test_a_rewrite_keeps_a_texts_lines_and_leaves_what_ends_a_fence_alone():
     text = "# T\n\n```math\na = b\n```\n\n$$\nc = d\n$$\n\n- $e = f$.\n"
     out = rewrite(text, lambda latex: latex + " \\tag{1}")

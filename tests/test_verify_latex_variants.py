@@ -81,12 +81,17 @@ _BOLD_LETTER = r"(?<!\\hat\{)(?<!\\ddot\{)\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+
 _INDEXED = re.compile(_BOLD_LETTER + r"\s*_\s*\{\s*(?:\d\d|[a-z][a-z])\s*\}")
 _TRANSPOSED = re.compile(r"(?<!\\hat\{)(?<!\\ddot\{)\\(?:mathbf|boldsymbol)\{([A-Z])\}"
                          r"\s*\^\s*\{?\s*(?:T(?![A-Za-z])|\\top(?![A-Za-z])|-1)")
+# A capital between two frames' letters, {}^A\mathbf{C}^N (Kane's direction cosine matrix from N to A),
+# is a matrix too.
+_BETWEEN_FRAMES = re.compile(r"\{\}\s*\^\s*\{?\s*[A-Za-z]\s*\}?\s*\\(?:mathbf|boldsymbol)\{([A-Z])\}"
+                             r"\s*\^\s*\{?\s*[A-Za-z]\s*\}?(?![/A-Za-z])")
 
 
 def _arrows_for_bold(latex: str) -> str:
     """``\\vec`` for a bold letter: an arrow marks a vector, so a letter the display shows to be a matrix
-    (`_INDEXED`, `_TRANSPOSED`) keeps its bold everywhere in the display (an arrow would make it a vector)."""
-    matrices = {m[1] for rx in (_INDEXED, _TRANSPOSED) for m in rx.finditer(latex)}
+    (`_INDEXED`, `_TRANSPOSED`, `_BETWEEN_FRAMES`) keeps its bold everywhere in the display (an arrow
+    would make it a vector)."""
+    matrices = {m[1] for rx in (_INDEXED, _TRANSPOSED, _BETWEEN_FRAMES) for m in rx.finditer(latex)}
     return re.sub(_BOLD_LETTER, lambda m: m[0] if m[1] in matrices else rf"\vec{{{m[1]}}}", latex)
 
 
