@@ -279,6 +279,18 @@ SHORT = {
         "3 of 6 (1 on its first read: I = R R^T, its rate set to a lone 0 and R-dot = S R are read): p = R(t) p' "
         "with p' fixed said in words only, p-dot = omega x p = S(omega(t)) p and S(omega) = R-dot R^T, a name "
         "with an argument, are not read",
+    ("stampfly-quadcopter-6dof-euler-quaternion-ja", "checked"):
+        "a quadcopter's design document: p, q, r named only as the body angular velocity, so the Euler rates and "
+        "the quaternion's rate (q_0 ... q_3 beside the pitch rate q) are not read, and the accelerations solved "
+        "from the component equations are taken as definitions",
+    ("stampfly-quadcopter-6dof-euler-quaternion-ja", "found"):
+        "its two slips are in the 3-2-1 rotation matrix, R = R_x R_y R_z and the composed matrix, both the "
+        "passive R^T, which the reader accepts as the sequence's matrix; the text's own turns (active, displayed "
+        "after the product) and its R said to be body to inertial are what make them wrong",
+    ("reference-frame-rotations-jl-attitude-kinematics-dcm-quaternion-crp-mrp", "checked"):
+        "a library's manual: the DCM's rate -[omega x] D is taken for a definition, \\texttt{vect} is not read, "
+        "the quaternion's rate is written with the frames' subscript (q_ba), and the CRP's and MRP's rates hold "
+        "cross and dot products inside a fraction",
 }
 
 FLOOR = {"checked": 822, "slips_flagged": 96, "holds_flagged": 0}
