@@ -280,9 +280,10 @@ SHORT = {
         "with p' fixed said in words only, p-dot = omega x p = S(omega(t)) p and S(omega) = R-dot R^T, a name "
         "with an argument, are not read",
     ("stampfly-quadcopter-6dof-euler-quaternion-ja", "checked"):
-        "a quadcopter's design document: p, q, r named only as the body angular velocity, so the Euler rates and "
-        "the quaternion's rate (q_0 ... q_3 beside the pitch rate q) are not read, and the accelerations solved "
-        "from the component equations are taken as definitions",
+        "a quadcopter's design document: its Euler rates hold (p, q, r named as the body angular velocity), but "
+        "the quaternion's rate (q_0 ... q_3 taken from the axis-angle example, in n and the pitch theta), Newton's "
+        "law with dV_B/dt and the accelerations solved from the component equations (taken as definitions, or "
+        "rows in the text's own I_xx and L, M, N) are not read",
     ("stampfly-quadcopter-6dof-euler-quaternion-ja", "found"):
         "its two slips are in the 3-2-1 rotation matrix, R = R_x R_y R_z and the composed matrix, both the "
         "passive R^T, which the reader accepts as the sequence's matrix; the text's own turns (active, displayed "

@@ -439,12 +439,14 @@ def _centre_listed(names: Names, text: str, found: list, starts, offset):
 
 
 def _rates_listed(names: Names, text: str, found: list, starts, offset):
-    """"$p, q, r$ are the roll, pitch and yaw rates" (or the phrase first): the three symbols
-    nearest the phrase in its clause, in order, are ω̃₁, ω̃₂, ω̃₃ (the aircraft's body axes). Each
-    time the clause gives the phrase is tried; a run of formulas is taken only when it stands next
-    to the phrase (a few words, no comma between), so a list of other things before it binds nothing."""
-    for phrase in re.finditer(MEANINGS["body rates"][1], text, flags=re.I):
-        before = [m for m in found if m.end() <= phrase.start()][::-1]
+    """"$p, q, r$ are the roll, pitch and yaw rates" (or the phrase first), or "the body angular velocity
+    $[p, q, r]^\\top$" (one formula right after it): the three symbols nearest the phrase in its clause, in
+    order, are ω̃₁, ω̃₂, ω̃₃ (the aircraft's body axes). Each time the clause gives the phrase is tried; a run
+    of formulas is taken only when it stands next to the phrase (a few words, no comma between), so a list
+    of other things before it binds nothing."""
+    said = [(m, k == "body rates") for k in ("body rates", "body angular velocity") for m in re.finditer(MEANINGS[k][1], text, re.I)]
+    for phrase, either_side in said:
+        before = [m for m in found if m.end() <= phrase.start()][::-1] if either_side else []
         after = [m for m in found if m.start() >= phrase.end()]
         for run, gap, between in ((before, text[before[0].end():phrase.start()] if before else "", "b"),
                                   (after, text[phrase.end():after[0].start()] if after else "", "a")):
@@ -456,8 +458,8 @@ def _rates_listed(names: Names, text: str, found: list, starts, offset):
                 if not re.fullmatch(r"\s*(,|and|,\s*and)?\s*", sep):
                     break
                 kept.append(b)
-            kept = kept[::-1] if between == "b" else kept
-            atoms = [a for m in kept for a in _atoms(m.group(1))]
+            kept = kept[::-1] if between == "b" else kept[:None if either_side else 1]
+            atoms = [a for m in kept for a in _atoms(said_columns.listed(m.group(1)))]
             atoms = atoms[-3:] if between == "b" else atoms[:3]
             if len(atoms) == 3 and all(not a.bold and not a.sub for a in atoms):
                 for atom, meaning in zip(atoms, _RATE_AXES):

@@ -11,7 +11,8 @@ one of them, X entering it linearly, as the same equation (``\\omega_2 = \\frac{
 ``\\frac{\\omega_1}{\\omega_2} = \\frac{a}{R}``); and a later equation whose two sides' difference is an
 earlier one's expanded, up to a non-zero number (a determinant ``= 0`` then written out). That says only that the text agrees with itself; a
 restatement that differs says nothing (either of the two may be the one the text meant), so it is
-never flagged.
+never flagged. `holds_whatever_the_names` tells such a verdict by its reason: it confirms no reading
+of the prose's names.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, SymPy.
 """
@@ -27,6 +28,12 @@ from derive.lecture import zero_test as zt
 
 
 _ROOTS = re.compile(r"(?P<x>[^=]+?)=\s*\\pm(?![A-Za-z])(?P<v>[^=]+)")
+_OPENINGS = ("restates the text's ", "the text's equation of line ")
+
+
+def holds_whatever_the_names(why: str) -> bool:
+    """A verdict of `Restated`: it holds by the text's own earlier equation, whatever the names in it mean."""
+    return why.startswith(_OPENINGS)
 
 
 class Restated:

@@ -8,7 +8,8 @@ paragraph between ``$…$`` is such a display (encyclopaedia pages set their dis
 
 Takes: the rendered text (`derive.lecture.source.rendered`) and the phrases of the meanings a
 letter may carry. Gives: `columns`, each such column with its line, its rows and the one meaning
-the sentence names (`derive.lecture.names` binds the letter when the rows fit it), and `is_column`
+the sentence names (`derive.lecture.names` binds the letter when the rows fit it), `listed` (a
+bracketed list of components as the bare list), and `is_column`
 (`derive.lecture.rereading` takes a reading so given as the text's own once its column holds).
 
 May import: the standard library (`re`).
@@ -23,6 +24,19 @@ _COLUMN = re.compile(r"\s*(?:\\left\s*[\[(]\s*)?\{?\s*\\begin\{([bpBvV]?matrix)\
                      r"(?:\\right\s*[\])])?\s*=")
 _COMPONENTS = r"\bcomponents?\s+of\s+(?:the|its)\s+(?:[\w-]+\s+)?(?:PHRASE)\b"
 _SENTENCE_END = re.compile(r"[.;!?]\s|\n\s*\n|\$\$")
+_LISTED = re.compile(r"^\s*(?:\\left\s*)?[\[(]\s*(.*?)\s*(?:\\right\s*)?[\])]\s*(?:\^\s*\{?\s*(?:\\top|T|\\intercal)\s*\}?)?\s*$")
+
+
+_MATRIX = re.compile(r"^\s*\\begin\{([bpBvV]?matrix)\}([^&]*?)\\end\{\1\}\s*$", re.S)
+
+
+def listed(latex: str) -> str:
+    """Components listed in brackets, a row or the column it transposes (``[p, q, r]^\\top``, ``(p, q, r)``,
+    a one-column matrix), as the bare list ``p, q, r``; any other formula as it is."""
+    column = _MATRIX.match(latex)
+    if column:
+        return ", ".join(row.strip() for row in column.group(2).split("\\\\"))
+    return _LISTED.sub(r"\1", latex)
 
 
 def is_column(latex: str) -> bool:
