@@ -40,3 +40,10 @@ def test_a_matrix_the_prose_names_a_turn_is_that_turn_beside_its_spin():
     assert _verdicts("\\vec{\\omega} = \\dot{\\phi} \\hat{z} + T_1 \\left( \\dot{\\theta} \\hat{x} + T_2 \\left( \\dot{\\psi} \\hat{z} \\right) \\right)", head) == {"holds"}
     assert _verdicts("\\vec{\\omega} = \\dot{\\psi} \\hat{z} + T_1 (\\dot{\\theta} \\hat{x})", head) == {"fails"}
     assert _verdicts("\\vec{\\omega} = \\dot{\\psi} \\hat{z} + T_3 (\\dot{\\theta} \\hat{x})", head) == {"unchecked"}
+
+
+def test_spins_each_carried_by_the_products_of_the_turns_before_it_hold():
+    display = ("\\begin{aligned} \\mathrm{E}_a & = \\mathrm{rot}(\\hat{j}, a) & \\vec{\\omega}_b & = \\dot{a} \\left( \\hat{j} \\right) "
+               "+ \\dot{b} \\left( \\mathrm{E}_a \\hat{k} \\right) \\end{aligned}")
+    assert "holds" in _verdicts(display)
+    assert _verdicts("\\vec{\\omega} = \\dot{a} \\hat{z} + \\dot{b} R_z(a) \\hat{x} + \\dot{c} R_z(a) R_x(b) \\hat{z}") == {"holds"}

@@ -19,6 +19,10 @@ matrices name, unless the text writes that product of its turns in another order
 unchecked). A display whose parentheses open more often than they close is read closing them at its
 end (the site's typesetting drops a closing bracket; nothing else reads). Any other shape (two spins
 beside one rotation, a rotation with no spin beside it, an angle that is not one letter) is not read.
+The spins written out, ȧ u + ḃ R_u(a) v + ċ R_u(a) R_v(b) w (the carrying products may be matrices
+the text set equal to products of turns in a display before, ``\\mathrm{E}_y = \\mathrm{rot}(\\hat{j},
+\\theta_y)``), hold when the first spin is carried by no turn and each next one by exactly the turns
+of the spins before it; any other sum is left to the other rules.
 May import: the standard library.
 """
 from __future__ import annotations
@@ -34,6 +38,10 @@ _ROT = re.compile(r"\\(?:mathrm|operatorname|text)\s*\{\s*rot\s*\}\s*\(\s*" + _U
 _NAMED = re.compile(r"([A-Z])\s*(?:_\s*(?:\{\s*([0-9])\s*\}|([0-9])))?(?![A-Za-z0-9{_])")
 """A matrix the text names in its prose (``T_1``): a capital with a digit as its subscript, or alone."""
 _OMEGA = re.compile(r"\s*\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\omega\s*\}?\s*")
+_PARTIAL = re.compile(r"\s*\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\omega\s*\}?\s*_\s*\{?\s*[A-Za-z0-9]\s*\}?\s*")
+"""The angular velocity after some of the turns, ``\\vec{\\omega}_p``: a bold ω with a one-letter subscript."""
+_PRODUCT_NAME = re.compile(r"(?:\\mathrm\s*\{\s*([A-Z])\s*\}|([A-Z]))\s*(?:_\s*(?:\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9])))?(?![A-Za-z0-9{(])")
+"""A matrix the text sets equal to a product of turns in its displays, ``\\mathrm{E}_p = \\mathrm{E}_y \\mathrm{rot}(\\hat{k}, \\theta_p)``."""
 _SIZES = re.compile(r"\\(?:left|right|bigl|bigr|Bigl|Bigr|biggl|biggr|big|Big|bigg|Bigg)\s*(?=[()])")
 _SPACE = re.compile(r"\\[,;:!]|\\quad|\\qquad|~")
 _AXIS = {"i": "x", "j": "y", "k": "z"}
@@ -229,6 +237,20 @@ class NestedSpins:
     def _nested_spins(self, line, piece) -> bool:
         """Judge 𝛚 = nested spins (see the module docstring); False when the statement is not one."""
         parts = piece.split("=")
+        products = vars(self).setdefault("spin_products", {})
+        if len(parts) == 2 and _PRODUCT_NAME.fullmatch(parts[0].strip()):
+            turns = _turns_of(parts[1], products)
+            if turns:               # a product of turns the text names, read where a later spin uses it
+                products[_product_name(_PRODUCT_NAME.fullmatch(parts[0].strip()))] = turns
+            return False
+        if len(parts) == 2 and (_OMEGA.fullmatch(parts[0]) or _PARTIAL.fullmatch(parts[0])):
+            terms = expanded(parts[1], products)
+            order = chained(terms) if terms else None
+            if order:
+                self._add(line, piece, "identity", "holds",
+                          f"the angular velocity of {' '.join(_spell(a, q) for a, q in order)}: each spin about its own "
+                          "turn's axis, carried by the turns before it")
+                return True
         if len(parts) != 2 or not _OMEGA.fullmatch(parts[0]):
             return False
         named = named_turns(self.notes.body, line) if _NAMED.search(parts[1]) else {}
@@ -260,3 +282,84 @@ class NestedSpins:
                   f"the angular velocity of {product}, the product its matrices name: each spin about its own turn's "
                   "axis, carried by the turns before it" + closing)
         return True
+
+
+def _product_name(m) -> str:
+    return (m.group(1) or m.group(2)) + (m.group(3) or m.group(4) or "")
+
+
+def _turns_of(text: str, products: dict) -> list | None:
+    """The turns a product of elementary turns and of the text's named products writes, in order;
+    None when it is anything else."""
+    k, out = 0, []
+    text = _SPACE.sub(" ", text).strip()
+    while k < len(text):
+        if text[k].isspace():
+            k += 1
+            continue
+        m = _TURN.match(text, k)
+        if m:
+            out.append((m.group(1), m.group(2) + _angle(m, 3)))
+        else:
+            m = _ROT.match(text, k)
+            if m:
+                axis = m.group(1) or m.group(2)
+                out.append((_AXIS.get(axis, axis), m.group(3) + _angle(m, 4)))
+            else:
+                m = _PRODUCT_NAME.match(text, k)
+                if not m or _product_name(m) not in products:
+                    return None
+                out += products[_product_name(m)]
+        k = m.end()
+    return out
+
+
+def expanded(rhs: str, products: dict) -> list | None:
+    """The terms (angle, turns carrying it, axis) of a sum of spins each carried by a product of
+    turns (``\\dot{\\theta}_p ( \\mathrm{E}_y \\hat{k} )``); None when the member is not one."""
+    text = _SPACE.sub(" ", _SIZES.sub("", rhs)).strip().rstrip(".,;")
+    terms, depth, start = [], 0, 0
+    for k, ch in enumerate(text):
+        depth += (ch == "(") - (ch == ")")
+        if ch == "+" and depth == 0:
+            terms.append(text[start:k])
+            start = k + 1
+        if ch == "-" or depth < 0:
+            return None
+    terms.append(text[start:])
+    out = []
+    for term in terms:
+        rate = _RATE.search(term)
+        unit = list(_UNIT.finditer(term))
+        if rate is None or len(unit) != 1:
+            return None
+        angle = _angle(rate, 1) if rate.group(1) else _angle(rate, 4)
+        sub = rate.group(7) or rate.group(8)
+        angle += "_" + sub if sub and "_" not in angle else ""
+        rest = (term[:rate.start()] + " " + term[rate.end():]).replace(unit[0].group(0), " ", 1)
+        rest = rest.strip()
+        while rest.startswith("(") and rest.endswith(")"):
+            rest = rest[1:-1].strip()       # the bracket around a carried unit vector, ( E_y k̂ )
+        rest = re.sub(r"^\(\s*\)$", "", rest)
+        turns = _turns_of(rest, products) if rest else []
+        if turns is None or "(" in re.sub(r"R\s*_\s*\{?[xyz]\}?\s*\([^()]*\)|\\\w+\s*\{\s*rot\s*\}\s*\([^()]*\)", "", rest):
+            return None
+        axis = unit[0].group(1) or unit[0].group(2)
+        out.append((angle, turns, _AXIS.get(axis, axis)))
+    return out
+
+
+def chained(terms: list) -> list | None:
+    """The turns in order when each term's spin is carried by exactly the turns of the terms before
+    it (the first by none); None otherwise."""
+    order, carried, left = [], [], list(terms)
+    while left:
+        found = [t for t in left if t[1] == carried]
+        if len(found) != 1:
+            return None
+        angle, _, axis = found[0]
+        left.remove(found[0])
+        order.append((axis, angle))
+        carried = carried + [(axis, angle)]
+    angles = [a for _, a in order]
+    return order if len(order) >= 2 and len(set(angles)) == len(angles) else None
