@@ -141,13 +141,13 @@ SHORT = {
         "moving frame, the angular velocity as phidot e_Z + thetadot e_N + psidot e_z and the body angular "
         "velocity are checked",
     ("physics-se-angular-velocity-euler-angles-rotation-matrices", "checked"):
-        "3 of 8: R R^t = I, the rate of it and x-dot = R-dot R^t x of the general rotation R(t) are read as "
-        "identities of a rotation; omega written through rotation matrices T_1, T_2 acting on unit vectors "
-        "(T_1(thetadot xhat)), a derivative chain of matrices with 'vector x matrix' products, and Omega x = "
-        "omega x x (omega named by the entries of the skew matrix Omega) are not read",
+        "5 of 8: R R^t = I, the rate of it and x-dot = R-dot R^t x of the general rotation R(t) are read as "
+        "identities of a rotation, and the spins carried by T_1, T_2 (named turns in the prose) are read; a "
+        "derivative chain of matrices with 'vector x matrix' products and Omega x = omega x x (omega named by "
+        "the entries of the skew matrix Omega) are not read",
     ("physics-se-angular-velocity-euler-angles-rotation-matrices", "found"):
-        "its two slips (psidot for the rate phidot of T_1 in the update's chain and its result) sit in the "
-        "matrix-product displays the reader does not read",
+        "1 of 2: the result omega = psidot z + T_1 (thetadot x) is flagged; the same slip in the update's chain "
+        "sits in 'vector x matrix' products, which are not read",
     ("wikipedia-moment-of-inertia-matrix-parallel-axis-encyclopaedia", "checked"):
         "4 of 7: the angular momentum as a chain of cross products of the particles' relative positions with "
         "velocities that include the reference point's V_R, and the parallel axis theorem's [I_S] and [I_R] with "
@@ -268,13 +268,6 @@ SHORT = {
         "0 of 1: the rates of extrinsic x-y-z angles (said in prose, with no front matter) written as a matrix "
         "the text names with arguments, M(phi, theta), times omega_B, the body's rate labelled B: neither the "
         "named matrix, nor the column omega_B, nor the extrinsic sequence is read",
-    ("physics-se-yzy-euler-angles-angular-velocity-successive-spins", "checked"):
-        "0 of 8: spins about successive axes carried by R_y(theta), R_z(theta) and rot(j, theta), rot(k, theta) "
-        "(omega = thetadot y + R_y(theta)(thetadot z + ...)), the orientation built as E_y, E_p, E beside each "
-        "omega in one aligned row, and the Jacobian times a pmatrix of the rates are not read",
-    ("physics-se-yzy-euler-angles-angular-velocity-successive-spins", "found"):
-        "0 of 1: the slip is the question's spins formula with its rotation matrices one place off, which is "
-        "not read (nor is any spins formula of the thread)",
     ("physics-se-angular-velocity-skew-matrix-rdot-rt", "checked"):
         "3 of 6 (1 on its first read: I = R R^T, its rate set to a lone 0 and R-dot = S R are read): p = R(t) p' "
         "with p' fixed said in words only, p-dot = omega x p = S(omega(t)) p and S(omega) = R-dot R^T, a name "

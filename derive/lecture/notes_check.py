@@ -242,7 +242,7 @@ class Checker(ReadingRules):
             self.spelled.update(spellings(piece, self.vocab, {*self.names, I1, I2, I3}))
             implied = self._implied(pieces, k, latex)       # judged before the conclusion sets its name
             try:
-                if not self._turn_rates(item.line, piece):
+                if not (self._nested_spins(item.line, piece) or self._turn_rates(item.line, piece)):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)

@@ -33,6 +33,7 @@ from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
 from derive.lecture.judging import Judging
 from derive.lecture.moments_small import SmallMoments
+from derive.lecture.nested_spins import NestedSpins
 from derive.lecture.motion import Motion
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
@@ -62,5 +63,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
-                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts):
+                   EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
+                   NestedSpins):
     """Every reading rule, in method-lookup order (see the module docstring)."""
