@@ -342,9 +342,9 @@ def test_a_text_names_its_source_commit_and_licence(slug):
 # A formula in inline math set as a paragraph of its own or as a list item (`- $x = d\sin\theta$`)
 # is displayed by its author as much as a `$$` block is (texts that set their equations so).
 _OWN_LINE = (r"(?:(?<=\n\n)|^[ \t]*(?:[-*+]|\d+\.)[ \t]+)\$(?!\$)(?:[^$\n]|\n[ \t]+)+\$[ \t]*[.,;:]?[ \t]*$")
-_DISPLAY = re.compile(r"^```math\n.+?^```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases)(\*?)\}.+?"
+_DISPLAY = re.compile(r"^```math\n.+?^```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)(\*?)\}.+?"
                       r"\\end\{\1\2\}|" + _OWN_LINE, re.S | re.M)
-_OPENING = re.compile(r"^\s*(```math|\$\$|\\\[|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases)\*?\}"
+_OPENING = re.compile(r"^\s*(```math|\$\$|\\\[|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)\*?\}"
                       r"|(?:[-*+]|\d+\.)?\s*\$(?!\$))")
 
 

@@ -227,6 +227,7 @@ def font_switches(latex: str) -> str:
 
 
 _DOTLESS = re.compile(r"\\([ij])math(?![A-Za-z])")
+_SCRIPT_L = re.compile(r"\\ell(?![A-Za-z])")
 _HALF_OPEN = re.compile(r"\\left\s*\.((?:(?!\\left|\\right).)*)\\right\s*\)(?=\s*_)", re.S)
 _STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
 
@@ -237,7 +238,8 @@ def synonyms(latex: str) -> str:
     ``\\hat{\\imath}``, the unit vector î), and mathtools' starred matrices (``bmatrix*``, with or
     without its column alignment ``[r]``) as the plain ones (``bmatrix``), which they only align; and a
     bracket closed with a subscript but opened invisibly, ``\\left. X \\right)_{rel}``, as the bracket
-    ``\\left( X \\right)_{rel}`` it draws half of (a derivative relative to a frame).
+    ``\\left( X \\right)_{rel}`` it draws half of (a derivative relative to a frame); and the script
+    letter ``\\ell`` as l (a length, set in script to keep it apart from the digit 1).
 
     Parameters
     ----------
@@ -250,6 +252,7 @@ def synonyms(latex: str) -> str:
         The formula with those spellings replaced.
     """
     latex = _DOTLESS.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + m.group(1), latex)
+    latex = _SCRIPT_L.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + "l", latex)
     latex = _HALF_OPEN.sub(lambda m: "\\left(" + m.group(1) + "\\right)", latex)
     return _STARRED.sub(lambda m: f"\\{m.group(1)}{{{m.group(2)}}}", latex)
 

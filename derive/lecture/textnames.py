@@ -13,15 +13,15 @@ of `derive.lecture.notes_check.Checker`, which
    ``I_1 = I_2 \\neq I_3``, ``\\phi = 30^\\circ`` set a variable or a parameter to a value (a case,
    a special body, a numeric example): they hold for the rest of their display, or, when the
    display says nothing else, for the rest of the section; never a claim;
-3. **declines to judge names it cannot tie**: a relation between symbols of the text's that no
-   definition ties to the derivation is checked only when it is an identity whatever they stand
-   for (then ``holds``); otherwise it is ``unchecked`` naming the symbols;
+3. **declines to judge names it cannot tie**: a relation between symbols of the text's that no definition ties to
+   the derivation is checked only when it is an identity whatever they stand for (then ``holds``), or read as
+   the definition of its one new symbol after a definition sign (`right_named`); else ``unchecked``, naming them;
 4. **differentiates**: ``\\frac{d}{dt}`` (`latex.DT`) by the chain rule through the angles, their
    rates, ω̃ᵢ (→ ω̃̇ᵢ) and the text's symbols (X → Ẋ, and Ẋ of a defined X, or X'(q) of a defined X(q), is the
    derivative of its definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.right_named`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -31,7 +31,7 @@ import re
 import sympy as sp
 
 from derive.lecture import euler_moments
-from derive.lecture import latex as lx, primed_functions
+from derive.lecture import latex as lx, primed_functions, right_named
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
@@ -285,12 +285,12 @@ class TextNames(UnreadMembers):
             return True
         if self._restated(line, piece, members, rels):
             return True
-        if set(rels) <= {"=", "≡"} and self._identity_then_named(line, piece, members, loose):
+        if set(rels) <= {"=", "≡"} and self._identity_then_named(line, piece, members, loose) or \
+                right_named.defines(self, line, piece, members, rels, loose):
             return True
         names = ", ".join(sorted(self.tex(s) for s in loose))
         if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
             self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
-            self.settings_only = False
             return True
         self._add(line, piece, "unknown", "unchecked",
                   f"relates {names}, which the text has not tied to the derivation")

@@ -517,10 +517,8 @@ class Vocabulary:
             return {"g": g, "l": l}[b]
         if b == "p" and not a.dots and not a.bold:
             k = self.angle_index(sub)
-            if k == 0:
-                return p_alpha
-            if k == 2:
-                return p_gamma
+            if k in (0, 1, 2):          # the momentum conjugate to each angle: p_β = ∂L/∂β̇ is no constant
+                return (p_alpha, MOMENTUM[1], p_gamma)[k]
         if b == "Omega" and not a.dots and not a.bold and self.omega_names:
             if sub == "":
                 return Omega
