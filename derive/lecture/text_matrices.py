@@ -503,13 +503,15 @@ class TextMatrices:
         return True
 
     def _column_again(self, line, piece, sym, old, written) -> bool:
-        """``{\\bf n} = (1, 0, 0)`` after ``{\\bf n} = (0, 0, 1)``, or a written column set again in a later
-        section (``{\\bf r}`` in spherical after cylindrical coordinates): a new case or a new body, the
-        name that column from here on, not compared with the old one. A column of symbols set again
+        """``{\\bf n} = (1, 0, 0)`` after ``{\\bf n} = (0, 0, 1)`` (another axis), a column of numbers then
+        written out in angles (the fixed axis in a moving basis), or a written column set again in a later
+        section (``{\\bf r}`` in spherical after cylindrical coordinates, another body): the name that
+        column from here on, not compared with the old one. A column of symbols set again to symbols
         in its own section is compared as before (False)."""
         value = self._resolve(written)
+        numbers = lambda col: all(sp.sympify(x).is_number for x in col)  # noqa: E731
         if old.shape != (3, 1) or not isinstance(value, sp.MatrixBase) or sp.Matrix(value) == sp.Matrix(old) or \
-                sym in self.ctx.columns and not all(sp.sympify(x).is_number for x in value):
+                sym in self.ctx.columns and not numbers(value) and not numbers(old):
             return False
         self.ctx.defs[sym] = sp.ImmutableMatrix(value)
         self.ctx.columns.add(sym)
