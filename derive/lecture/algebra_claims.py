@@ -10,6 +10,7 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :m
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
+:mod:`derive.lecture.written_matrices` (`numbers_set`, `columns_only`),
 SymPy.
 
 A text's set-up of a rotation about a fixed axis (𝛚 = ω k̂) is recorded, not judged; after it, a
@@ -36,6 +37,7 @@ from derive.lecture import point_labels
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vector_parser as vp
 from derive.lecture import vectors as vc
+from derive.lecture.written_matrices import columns_only, numbers_set
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
        "torque d𝐋/dt; sums and ∫ dm read for three generic mass points")
@@ -61,8 +63,8 @@ class AlgebraStatements:
         """Whether a statement goes to this reader before the scalar one: written in its notation
         (or continuing a side it read), once it has read a display of the text or when the
         statement has its markers; never the lecture's own vector notation."""
-        if va.lecture_notation(text):
-            return False
+        if va.lecture_notation(text) or numbers_set(text) or columns_only(text, self.vocab, self.ctx.defs):
+            return False            # {\bf n} = (0, 0, 1) and what the text writes of such columns: the scalar reader's
         text = (frame_labels.dropped(text) or (text,))[0]          # 𝛚_B, 𝐈_B: one frame's components
         text = chain_end_names.put_in(text, getattr(self, "chain_end_latex", {}), None)   # J_z = Σ mᵢ rᵢ²: a sum
         state = self._alg

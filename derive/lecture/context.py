@@ -110,6 +110,7 @@ class Context:
     perturbation_order: int | None = None             # the order its equations keep once a remainder O(ηⁿ) was written
     torques: dict = field(default_factory=dict)       # a name of the text's → its value in τᵢ, the torque it wrote in component i's equation
     untorqued: set = field(default_factory=set)       # components i whose equation of motion the text wrote with no torque
+    columns: set = field(default_factory=set)         # the text's names it set to a written matrix in this section
 
     def new_section(self):
         self.subs, self.small, self.cases, self.solutions = {}, [], [{}], {}
@@ -118,6 +119,7 @@ class Context:
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
         self.vectors, self.held, self.constant_case = {}, {}, None
         self.perturbation, self.perturbation_order, self.torques, self.untorqued = {}, None, {}, set()
+        self.columns = set()
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False
 

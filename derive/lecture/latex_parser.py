@@ -20,7 +20,7 @@ from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
                                          rate_of, reading, symbol_rate, written_rate)
-from derive.lecture.written_matrices import components, components_follow, frame_label, outer
+from derive.lecture.written_matrices import components, components_follow, frame_label, named_dot, outer, squared_column
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -145,7 +145,7 @@ class _Parser:
 
     def dotted(self, a, b):
         dot = body_dot.dot(a, b)
-        return dot if dot is not None else _mul(a, b)
+        return dot if dot is not None else named_dot(a, b, self.vocab, _mul)
 
     def juxtaposed(self, a, b):
         return _mul(a, b)
@@ -170,7 +170,7 @@ class _Parser:
         if (isinstance(base, sp.MatrixBase) or not getattr(base, "is_commutative", True)) and not isinstance(exp, sp.Integer):
             self.fail("a power of a matrix other than a whole number")
         vector = exp == 2 and (base is LVEC or base is OMEGA_VEC)      # 𝐋², 𝛚²: the vector dotted with itself
-        return (LMAG ** 2 if base is LVEC else body_dot.dot(base, base)) if vector else base ** exp
+        return (LMAG ** 2 if base is LVEC else body_dot.dot(base, base)) if vector else squared_column(base, exp, self.vocab)
 
     def _transpose_mark(self) -> bool:
         """^T, ^{T}, ^\\top, ^\\intercal after a matrix: its transpose (never a power T)."""

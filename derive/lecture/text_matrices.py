@@ -21,7 +21,8 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
   exchanged is a typo of it (`_angles_exchanged`); a free letter A, B, C set equal to a 3×3 matrix
   names it (`_free_letter_named`).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.zero_test`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.written_matrices`,
+:mod:`derive.lecture.zero_test`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -33,6 +34,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.vocabulary import Atom
+from derive.lecture.written_matrices import Dot, NormSquared, taken
 from derive.lecture.zero_test import entry_zero
 from derive.symbolic.rotations import trig_reduce
 
@@ -119,6 +121,8 @@ def matrices_put(e, rep, columns=None, budget=None):
                     else out * a
     elif isinstance(e, lx.Transposed):
         out = args[0].T
+    elif isinstance(e, (Dot, NormSquared)):
+        out = taken(e, args)
     elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
         out = matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
     else:
@@ -484,9 +488,10 @@ class TextMatrices:
         """``𝛀 = (a, b, c)``, a written column, for a name the text set before as no matrix through a
         bold letter it never wrote out (``𝛀 = ω𝐧``, 𝐧 an axis named in words): the name is the column
         from here on; its earlier value, in a vector of unknown components, is not compared with it."""
-        if old is None or isinstance(old, sp.MatrixBase) or sp.Matrix(written).shape != (3, 1) \
-                or sym not in self.vocab.generic:
+        if old is None or sp.Matrix(written).shape != (3, 1) or sym not in self.vocab.generic:
             return False
+        if isinstance(old, sp.MatrixBase):
+            return self._column_again(line, piece, sym, old, written)
         unwritten = [self.tex(s) for s in getattr(old, "free_symbols", ()) if s not in self.ctx.defs and
                      getattr(self.vocab.generic.get(s), "bold", False)]
         if not unwritten:
@@ -495,4 +500,21 @@ class TextMatrices:
         self._add(line, piece, "new symbol", "unchecked",
                   f"defines the text's vector {self.tex(sym)} by its components (recorded, then used); its value "
                   f"before, through {', '.join(sorted(unwritten))}, which the text does not write out, is not compared")
+        return True
+
+    def _column_again(self, line, piece, sym, old, written) -> bool:
+        """``{\\bf n} = (1, 0, 0)`` after ``{\\bf n} = (0, 0, 1)`` (another axis), a column of numbers then
+        written out in angles (the fixed axis in a moving basis), or a written column set again in a later
+        section (``{\\bf r}`` in spherical after cylindrical coordinates, another body): the name that
+        column from here on, not compared with the old one. A column of symbols set again to symbols
+        in its own section is compared as before (False)."""
+        value = self._resolve(written)
+        numbers = lambda col: all(sp.sympify(x).is_number for x in col)  # noqa: E731
+        if old.shape != (3, 1) or not isinstance(value, sp.MatrixBase) or sp.Matrix(value) == sp.Matrix(old) or \
+                sym in self.ctx.columns and not numbers(value) and not numbers(old):
+            return False
+        self.ctx.defs[sym] = sp.ImmutableMatrix(value)
+        self.ctx.columns.add(sym)
+        self._add(line, piece, "new symbol", "unchecked",
+                  f"defines the text's vector {self.tex(sym)} anew by its components (a new case or body; recorded, then used)")
         return True

@@ -472,13 +472,13 @@ class TextNames(UnreadMembers):
         return self._rotation(line, " \\\\ ".join(pieces), m)
 
     def _matrix_name(self, sym, value):
-        """X = (a matrix): X is from here on a non-commuting symbol, so that a product of the
-        text's matrices keeps its order when they are substituted."""
+        """X = (a matrix): X is from here on a non-commuting symbol (a product keeps its order)."""
         atom = self.vocab.generic.pop(sym)
         mat = lx.Generic(sym.name, commutative=False)
         self.vocab.generic[mat] = atom
         self._free_letter_moved(sym, mat, atom)
         self.ctx.defs[mat] = sp.ImmutableMatrix(value)
+        self.ctx.columns.add(mat)
         return mat
 
     # -- display scope of settings ----------------------------------------------------------------
