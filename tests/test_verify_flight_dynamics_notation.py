@@ -13,10 +13,10 @@ verdicts = verdicts_by_line
 
 
 def test_a_plain_tex_fraction_is_a_fraction_and_a_word_starting_with_over_is_untouched():
-    assert source.normalize(r"F = {d \over dt}") == r"F = {\frac{d }{dt}}"
+    assert source.normalize(r"F = {d \over dt}") == r"F = {\frac{d}{dt}}"
     # and the rate of a bracket is d/dt of what it holds
     assert source.normalize(r"F = {d(m \cdot v) \over dt}") == r"F = {\frac{d}{dt}(m \cdot v)}"
-    assert source.normalize(r"\theta = 30 \cdot {\pi \over 180}") == r"\theta = 30 \cdot {\frac{\pi }{180}}"
+    assert source.normalize(r"\theta = 30 \cdot {\pi \over 180}") == r"\theta = 30 \cdot {\frac{\pi}{180}}"
     assert r"\frac" not in source.normalize(r"\overline{x} = {a}")
 
 

@@ -24,3 +24,12 @@ def test_the_transport_theorem_with_its_sign_wrong_is_flagged():
     text = PROSE + ("$$\\frac{d\\boldsymbol{B}}{dt} = \\left.\\frac{d\\boldsymbol{B}}{dt}\\right)_{\\text{rel}} - "
                     "\\boldsymbol{\\omega}\\times\\boldsymbol{B}$$\n")
     assert verdicts(text)[line_of(text, "$$")] & {"fails", "typo"}
+
+
+def test_a_half_drawn_bracket_sized_by_hand_is_the_whole_bracket():
+    for size in ("big", "Big", "bigg", "Bigg"):
+        assert texmacros.synonyms(f"\\{size}l.\\frac{{dB}}{{dt}}\\{size}r)_{{\\text{{rel}}}}") == \
+            "\\left(\\frac{dB}{dt}\\right)_{\\text{rel}}"
+    text = PROSE + ("$$\\frac{d\\boldsymbol{B}}{dt} = \\bigl.\\frac{d\\boldsymbol{B}}{dt}\\bigr)_{\\text{rel}} + "
+                    "\\boldsymbol{\\omega}\\times\\boldsymbol{B}$$\n")
+    assert verdicts(text)[line_of(text, "$$")] == {"holds"}

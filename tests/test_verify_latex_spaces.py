@@ -3,9 +3,13 @@ space is): every reader that recognises a form reads it the same whatever space 
 apart — whitespace, thin ``\\,``, medium ``\\:``, thick ``\\;``, negative thin ``\\!``, the control
 space ``\\ `` or a tie ``~`` — and a quad, the space a text sets between two statements, is not taken
 for a space between factors where a reader reads factors across it."""
+from types import SimpleNamespace
+
 import pytest
 
 from derive.lecture import fixed_axis, formula_names, hat_maps, imaginary_unit, kane_notation, source, stated_convention
+from derive.lecture import chain_end_names
+from derive.lecture import latex as lx
 from derive.lecture import names as nm
 from derive.lecture import stated_theorems, texmacros, vector_models
 from derive.lecture import vector_algebra_model as va
@@ -214,3 +218,40 @@ def test_a_volume_element_spaced_off_its_upright_d_with_the_density_is_the_mass_
 @pytest.mark.parametrize("space", SPACES)
 def test_a_font_switch_spaced_off_its_letter_sets_that_letter(space):
     assert texmacros.font_switches(f"{{\\bf{space}G}} + {{\\rm{space}body}}") == "{\\mathbf{G}} + {\\mathrm{body}}"
+
+
+@pytest.mark.parametrize("space", SYMBOLS + ("~",))
+def test_small_spaces_setting_a_relation_apart_are_the_plain_sign(space):
+    s = space
+    assert source.normalize(f"\\Omega {s}\\coloneqq{s} \\frac{{I_1 - I_3}}{{I_1}}\\omega_3") == \
+        "\\Omega \\equiv \\frac{I_1 - I_3}{I_1}\\omega_3"
+    assert source.normalize(f"a {s}\\le{s} b {s}<{s} c") == "a \\le b < c"
+    assert source.normalize("\\left( a \\right) \\leq \\, b") == "\\left( a \\right) \\leq b"
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_space_set_around_plain_tex_s_over_sets_nothing_apart(space):
+    s = space
+    assert source.normalize(f"F = {{d(m \\cdot v) {s}\\over{s} dt}}") == source.normalize("F = {d(m \\cdot v) \\over dt}")
+    assert source.normalize(f"{{dh{s}\\over{s}dt}}") == "{\\frac{dh}{dt}}"
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_the_mass_of_a_piece_spaced_off_its_delta_is_the_particles_mass(space):
+    prepared = va.prepare(f"\\mathbf{{L}} = \\sum_i \\mathbf{{r}}_i \\times \\Delta{space}m_i \\dot{{\\mathbf{{r}}}}_i")
+    assert "\\Delta" not in prepared and "m_i" in prepared
+
+
+class _ChainReader(chain_end_names.ChainEndNames):
+    """The mixin with what it uses of the checker: an open vocabulary and the context's definitions."""
+
+    def __init__(self):
+        self.vocab, self.ctx = lx.Vocabulary(open=True), SimpleNamespace(defs={})
+
+
+@pytest.mark.parametrize("space", SPACES)
+def test_a_name_defined_at_a_chains_end_spaced_off_its_factor_is_put_in_later(space):
+    reader = _ChainReader()
+    reader._named_at_chain_end(f"L_z = \\omega \\sum_i m_i r_i^2 = J_z{space}\\omega", 3)
+    later = chain_end_names.put_in("\\sum_i m_i(x_i^2 + y_i^2) = J_z", reader.chain_end_latex, 9)
+    assert later.startswith("\\sum_i m_i(x_i^2 + y_i^2) = \\left(\\frac{\\omega \\sum_i m_i r_i^2}{")

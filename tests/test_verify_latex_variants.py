@@ -106,6 +106,37 @@ def _left_right_everywhere(latex: str) -> str:
     return latex.replace("(", "\\left(").replace(")", "\\right)")
 
 
+_SIZING = re.compile(r"\\(left|right)(?![A-Za-z])")
+
+
+def _resized(opening: str, closing: str):
+    """Each ``\\left … \\right`` pair whose delimiters are both round or square brackets or the invisible
+    ``.`` (not both ``.``) sized with ``opening``/``closing`` instead, the pair rewritten whole: TeX pairs a
+    ``\\left`` with its ``\\right``, so ``\\left. X \\right)_{rel}`` becomes ``\\bigl. X \\bigr)_{rel}`` (a
+    ``\\left.`` kept before a ``\\bigr)`` would be a ``\\left`` without its ``\\right``, no formula at all). A
+    display whose ``\\left`` and ``\\right`` do not pair stays."""
+    def change(latex: str) -> str:
+        pairs, opened = [], []
+        for m in _SIZING.finditer(latex):
+            if m[1] == "left":
+                opened.append(m)
+            elif not opened:
+                return latex
+            else:
+                pairs.append((opened.pop(), m))
+        if opened:
+            return latex
+        edits = []
+        for left, right in pairs:
+            ends = latex[left.end():left.end() + 1], latex[right.end():right.end() + 1]
+            if all(e and e in "()[]." for e in ends) and ends != (".", "."):
+                edits += [(left, opening), (right, closing)]
+        for m, sized in sorted(edits, key=lambda e: -e[0].start()):
+            latex = latex[:m.start()] + sized + latex[m.end():]
+        return latex
+    return change
+
+
 VARIANTS = {
     # fractions and differentials
     "dfrac": (ALL_NOTES, _sub(r"\\frac(?![a-z])", r"\\dfrac")),
@@ -117,7 +148,7 @@ VARIANTS = {
     "upright d with a space": (ALL_NOTES, _sub(r"\{d(?=\\|t\}| )", r"{\\mathrm{d}\\,")),
     # brackets
     "plain brackets for left-right": (ALL_NOTES, _sub(r"\\(?:left|right)(?=[()\[\]])", "")),
-    "bigl-bigr for left-right": (ALL_NOTES, _sub(r"\\(left|right)(?=[()\[\]])", lambda m: "\\bigl" if m[1] == "left" else "\\bigr")),
+    "bigl-bigr for left-right": (ALL_NOTES, _resized("\\bigl", "\\bigr")),
     "left-right for plain brackets": (ALL_NOTES, _sub(r"(?<![A-Za-z\\}_0-9'])\((.*?)\)", r"\\left(\1\\right)")),
     # spacing and products
     "thin space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\, ")),
@@ -130,7 +161,9 @@ VARIANTS = {
     # braces around one token
     "one-token braces dropped": (ALL_NOTES, _sub(r"([_^])\{(\\?[A-Za-z0-9]|\\[A-Za-z]+)\}", r"\1\2")),
     "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+|[A-Za-z0-9])", r"\1{\2}")),
-    "accent argument unbraced": (ALL_NOTES, _sub(r"\\(dot|ddot|tilde|hat)\{(\\[A-Za-z]+)\}", r"\\\1\2")),
+    # a letter after the braces is spaced off: \dot{\psi}I_z unbraced is \dot\psi I_z (\dot\psiI_z names another command)
+    "accent argument unbraced": (ALL_NOTES, _sub(r"\\(dot|ddot|tilde|hat)\{(\\[A-Za-z]+)\}(?=([A-Za-z])?)",
+                                                 lambda m: f"\\{m[1]}{m[2]}" + (" " if m[3] else ""))),
     # function arguments and names
     "sin(theta)": (SCALAR_NOTES, _sub(_FUNCTION_ARG_ALONE, r"\1(\2)")),
     "sin{theta}": (SCALAR_NOTES, _sub(_FUNCTION_ARG, r"\1{\2}")),
@@ -242,3 +275,15 @@ def test_variant_raises_no_false_alarm(kind):
 def test_variant_keeps_every_display_checked(kind):
     _, lost, _ = _compare(kind)
     assert lost == [], f"{len(lost)} displays no longer hold: {lost}"
+
+
+def test_the_sized_brackets_rewrite_sizes_a_left_and_its_right_together():
+    change = VARIANTS["bigl-bigr for left-right"][1]
+    assert change("\\left.\\frac{dB}{dt}\\right)_{rel} + \\left(a\\right)") == \
+        "\\bigl.\\frac{dB}{dt}\\bigr)_{rel} + \\bigl(a\\bigr)"
+    assert change("\\left.\\frac{dv}{dt}\\right|_i") == "\\left.\\frac{dv}{dt}\\right|_i"    # a bar is no bracket: the pair stays
+
+
+def test_the_unbraced_accent_rewrite_spaces_its_letter_off_a_letter_after_it():
+    change = VARIANTS["accent argument unbraced"][1]
+    assert change("\\dot{\\phi}\\dot{\\psi}I_z + \\hat{\\omega}^B") == "\\dot\\phi\\dot\\psi I_z + \\hat\\omega^B"

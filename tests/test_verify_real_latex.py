@@ -207,6 +207,12 @@ def test_a_symbol_in_braces_before_its_index_is_that_symbol_indexed():
     assert slipped and set(slipped) <= {"typo", "fails"}
 
 
+def test_a_hat_or_a_bar_over_an_unbraced_greek_letter_is_that_accented_letter():
+    assert source.normalize("{}^A\\hat\\omega^B \\times \\hat{b}_x") == "^A\\hat{\\omega}^B \\times \\hat{b}_x"
+    assert source.normalize("\\bar \\omega^B + \\check\\Omega") == "\\bar{\\omega}^B + \\check{\\Omega}"
+    assert source.normalize("\\hat\\omegaa") == "\\hat\\omegaa"         # another command: no letter of its own
+
+
 ACCENTED = "# Notes\n\n$$\\bar{\\omega} \\equiv \\omega_1 + \\omega_2$$\n\n"
 
 

@@ -36,9 +36,9 @@ def test_a_slip_in_a_frame_named_by_primes_is_left_unchecked():
     assert _verdicts("(\\vec{\\omega}_{\\phi})_{\\{x'',y'',z''\\}} = " + _col("0", "0", "\\dot{\\phi}")) == {"unchecked"}
 
 
-def test_a_turns_angular_velocity_as_a_column_in_sized_brackets_reads_as_in_left_right_ones():
+def test_a_turns_angular_velocity_as_a_column_in_sized_or_plain_brackets_reads_as_in_left_right_ones():
     body = _col("\\dot\\phi \\sin\\theta \\sin\\psi", "\\dot\\phi \\sin\\theta \\cos\\psi", "\\dot\\phi \\cos\\theta")
-    for opened, closed in (("\\bigl[", "\\bigr]"), ("\\Bigl[", "\\Bigr]")):
+    for opened, closed in (("\\bigl[", "\\bigr]"), ("\\Bigl[", "\\Bigr]"), ("[", "]")):
         sized = body.replace("\\left[", opened).replace("\\right]", closed)
         assert _verdicts("(\\vec{\\omega}_{\\phi})_\\mathrm{body} = " + sized) == {"holds"}
         slipped = _col("0", "0", "\\dot{\\phi}").replace("\\left[", opened).replace("\\right]", closed)

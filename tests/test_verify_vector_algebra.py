@@ -45,6 +45,13 @@ def test_a_position_set_in_unit_vectors_reads_the_same_in_every_bold(bold):
     assert verdicts(again.replace("\\mathbf", bold))[5] == ["unchecked"]        # set again otherwise: either may be meant
 
 
+def test_a_position_set_in_unit_vectors_reads_the_same_under_an_arrow():
+    body = "$$\\mathbf{r}_{G} = x\\hat{i} + y\\hat{j} +z \\hat{k}$$\n"
+    assert verdicts(body.replace("\\mathbf", "\\vec")) == verdicts(body)
+    again = body + "\n" + body.replace("z \\hat{k}", "2 z \\hat{k}")
+    assert verdicts(again.replace("\\mathbf", "\\vec")) == verdicts(again)
+
+
 def test_a_sign_slip_in_a_component_fails():
     body = ("$$\\boldsymbol{\\omega} \\times \\mathbf{r} = \\begin{bmatrix} \\omega_y z - \\omega_z y \\\\ "
             "\\omega_x z - \\omega_z x \\\\ \\omega_x y - \\omega_y x \\end{bmatrix}$$\n")

@@ -381,10 +381,10 @@ class AlgebraStatements:
         return "holds", f"{WHY}: exact (expand)"
 
 
-_NAME_FIRST = re.compile(r"\s*((?:\\(?:mathbf|boldsymbol|bm|pmb)\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z])?)"
+_NAME_FIRST = re.compile(r"\s*((?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z])?)"
                          r"\s*(?:=(?!=)|\\equiv)")
 """A statement opening with a lone symbol set equal to what follows (``K = …``, ``\\mathbf{I}_{a} \\equiv …``
-in any bold, ``\\boldsymbol{r}_{G} = …``,
+in any bold or under an arrow, ``\\boldsymbol{r}_{G} = …``, ``\\vec{r}_{G} = …``,
 ``I_{ab} \\equiv …``)."""
 
 

@@ -10,8 +10,8 @@ text's LaTeX as well (``\\frac{B}{c}``, c the last member with the name put to 1
 `put_in` writes in place of the name in a later statement, so that the readers of vectors and
 sums over particles read J_z as the text defined it, not as the z component of a vector 𝐉.
 
-May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
-SymPy.
+May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spaces`,
+:mod:`derive.lecture.statements`, SymPy.
 """
 from __future__ import annotations
 
@@ -20,6 +20,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spaces import SPACE
 from derive.lecture.statements import top_level
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
@@ -77,7 +78,7 @@ class ChainEndNames:
             if tok.kind != "atom":
                 continue
             end = toks[k + 1].pos if k + 1 < len(toks) else len(last)
-            spelled = last[tok.pos:end].strip()
+            spelled = re.sub(SPACE + "$", "", last[tok.pos:end])   # J_z \, \omega: the space is no part of the name
             try:
                 if sp.sympify(lx.parse(spelled, self.vocab).members[0].value) != name:
                     continue

@@ -408,7 +408,13 @@ def _over(nodes, user: dict) -> str:
     if len(at) != 1:
         return _print(nodes, user)
     k = at[0]
-    return r"\frac{" + _print(nodes[:k], user) + "}{" + _print(nodes[k + 1:], user) + "}"
+    numerator, denominator = (_OVER_SPACED.sub("", _print(part, user)) for part in (nodes[:k], nodes[k + 1:]))
+    return r"\frac{" + numerator + "}{" + denominator + "}"
+
+
+_OVER_SPACED = re.compile(rf"^{SPACE}|{SPACE}$")
+"""Spaces set around plain TeX's ``\\over``, ``{d(m v) \\, \\over \\, dt}``: at an end of the numerator or the
+denominator they set nothing apart."""
 
 
 # `cos \theta` (or `\ cos`) typed without its backslash renders as the word cos: a reader reads cosine
@@ -483,6 +489,18 @@ def _spaced_equals(gap: str, spaces: str) -> re.Pattern:
 
 _SMALL_SPACED_EQUALS = _spaced_equals(r"[ \t]*", SPACE_SYMBOL)   # in the raw text: no newline, no tie of prose
 _SPACED_EQUALS = _spaced_equals(r"\s*", rf"{SPACE_SYMBOL}|{TIE}")
+_RELATION_NAMES = ("equiv", "approx", "simeq", "sim", "propto", "neq", "ne", "leq", "le", "geq", "ge", "ll", "gg")
+_SMALL_SPACES = rf"(?:\s*(?<!\\)(?:{SPACE_SYMBOL}|{TIE}))+"
+_SPACED_RELATION = re.compile(_SMALL_SPACES + r"\s*(?=\\(?:" + "|".join(_RELATION_NAMES) + r")(?![A-Za-z])|[<>])|(?:"
+                              + "|".join(rf"(?<=\\{n})" for n in _RELATION_NAMES) + r"|(?<=[<>]))(?![A-Za-z])" + _SMALL_SPACES)
+"""Small spaces or a tie setting a relation other than ``=`` apart, ``\\Omega \\, \\equiv \\, \\frac{…}{…}``,
+``a \\; \\le \\; b``: they only set the sign apart, as around an ``=``."""
+_UNBRACED_ACCENT = re.compile(r"(?<!\\)\\(hat|widehat|bar|check|breve)\s*(\\(?:var)?(?:alpha|beta|gamma|delta|epsilon|"
+                              r"zeta|eta|theta|iota|kappa|lambda|mu|nu|xi|pi|rho|sigma|tau|upsilon|phi|chi|psi|omega|"
+                              r"Gamma|Delta|Theta|Lambda|Xi|Pi|Sigma|Upsilon|Phi|Psi|Omega)(?![A-Za-z]))")
+"""An accent that marks a vector (a unit vector's hat, Kane's bar) over a Greek letter written without braces,
+``{}^A\\hat\\omega^B``: TeX sets the letter, the accent's one-token argument, as ``\\hat{\\omega}^B`` does (a rate's
+dot, an arrow and a tilde are read unbraced already, and a correction shows them as the text wrote them)."""
 _DIFFERENTIAL = re.compile(r"(\\mathrm\{d\})\s*\{((?:[^{}]|\{[^{}]*\})*)\}")
 _WORD_SCRIPT = re.compile(r"([\^_])\s*\{\s*\\(?:text|mathrm|textrm|rm|mathit|textnormal|textup)\s*\{\s*([A-Za-z]+)\s*\}\s*\}")
 """A script that is one word set upright, ``_{\\text{body}}``: the word, as ``_{body}`` (an upright label)."""
@@ -557,6 +575,7 @@ def _normalized(latex: str, user: tuple) -> str:
         text = _print(nodes, user)
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
+    text = _UNBRACED_ACCENT.sub(r"\\\1{\2}", text)       # \\hat\\omega is \\hat{\\omega}
     text = _transposed_rows(bracket_cross.cross_matrices(text))
     text = _FORMULA_STOP.sub("", _ROW_STOP.sub(" ", text))  # "1." before a row's or the formula's end: punctuation
     text = _WORD_TRIG.sub(r"\\\1{\2}", text)           # a word in \\text{…} stays a word
@@ -571,5 +590,6 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     text = _SPACED_EQUALS.sub(" ", text)              # a \\;=\\; b: the small spaces only set the = apart
+    text = _SPACED_RELATION.sub(" ", text)            # a \\, \\equiv \\, b: as around an =
     text = differentials.written(text)                # \\mathrm{d}, dx = v_x, d(m v)/dt: the reader's derivatives
     return re.sub(r"[ \t]{2,}", " ", text).strip()

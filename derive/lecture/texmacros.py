@@ -228,7 +228,10 @@ def font_switches(latex: str) -> str:
 
 _DOTLESS = re.compile(r"\\([ij])math(?![A-Za-z])")
 _SCRIPT_L = re.compile(r"\\ell(?![A-Za-z])")
-_HALF_OPEN = re.compile(r"\\left\s*\.((?:(?!\\left|\\right).)*)\\right\s*\)(?=\s*_)", re.S)
+_OPENS, _CLOSES = r"\\(?:left|[bB]igg?l)(?![A-Za-z])", r"\\(?:right|[bB]igg?r)(?![A-Za-z])"
+_HALF_OPEN = re.compile(_OPENS + r"\s*\.((?:(?!" + _OPENS + "|" + _CLOSES + r").)*)" + _CLOSES + r"\s*\)(?=\s*_)", re.S)
+"""A bracket opened invisibly and closed before a subscript, sized as a pair (``\\left. X \\right)_{rel}``) or by
+hand (``\\bigl. X \\bigr)_{rel}``)."""
 _STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
 
 
@@ -237,9 +240,10 @@ def synonyms(latex: str) -> str:
     letters ``\\imath`` and ``\\jmath`` as i and j (the letters themselves, set dotless under a hat:
     ``\\hat{\\imath}``, the unit vector î), and mathtools' starred matrices (``bmatrix*``, with or
     without its column alignment ``[r]``) as the plain ones (``bmatrix``), which they only align; and a
-    bracket closed with a subscript but opened invisibly, ``\\left. X \\right)_{rel}``, as the bracket
-    ``\\left( X \\right)_{rel}`` it draws half of (a derivative relative to a frame); and the script
-    letter ``\\ell`` as l (a length, set in script to keep it apart from the digit 1).
+    bracket closed with a subscript but opened invisibly, ``\\left. X \\right)_{rel}`` (or sized by hand,
+    ``\\bigl. X \\bigr)_{rel}``), as the bracket ``\\left( X \\right)_{rel}`` it draws half of (a derivative
+    relative to a frame); and the script letter ``\\ell`` as l (a length, set in script to keep it apart
+    from the digit 1).
 
     Parameters
     ----------

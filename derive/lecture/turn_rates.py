@@ -43,9 +43,9 @@ _OMEGA = rf"{_BOLD}\{{?\s*(?:{_BOLD}\{{\s*)?\\omega\s*\}}?\s*\}}?"
 _TURN = re.compile(rf"\s*{_OMEGA}\s*(?:_\s*\{{?\s*(\\[A-Za-z]+)\s*\}}?)?\s*")
 _FRAMED = re.compile(rf"\s*\(\s*({_OMEGA}\s*(?:_\s*\{{?\s*\\[A-Za-z]+\s*\}}?)?)\s*\)\s*_\s*"
                      r"(\{\s*\\\{[^{}]*\\\}\s*\}|\\\{[^{}]*\\\}|\{\s*\\?(?:mathrm|text)?\s*\{?\s*[a-z]+\s*\}?\s*\}|\\(?:mathrm|text)\s*\{\s*[a-z]+\s*\})\s*")
-_COLUMN = re.compile(r"\s*(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big)\s*[\[(]\s*)?\\begin\{(array|bmatrix|pmatrix)\}(?:\{[a-z]*\})?"
-                     r"(.*?)\\end\{\1\}(?:\s*\\(?:right|bigr|Bigr|biggr|Biggr|big|Big)\s*[\])])?\s*", re.S)
-"""A written column, bare or in brackets, ``\\left``/``\\right`` or sized (``\\bigl[ … \\bigr]``)."""
+_COLUMN = re.compile(r"\s*(?:(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big)\s*)?[\[(]\s*)?\\begin\{(array|bmatrix|pmatrix)\}(?:\{[a-z]*\})?"
+                     r"(.*?)\\end\{\1\}(?:\s*(?:\\(?:right|bigr|Bigr|biggr|Biggr|big|Big)\s*)?[\])])?\s*", re.S)
+"""A written column, bare or in brackets, plain, ``\\left``/``\\right`` or sized (``\\bigl[ … \\bigr]``)."""
 _AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
 _NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
 _UNIT = (r"(?:\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNxyz])\s*\}?"

@@ -113,9 +113,9 @@ def _mass_element(text: str) -> str:
 
 
 _SUB = r"(\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))"
-_PIECE_MASS = re.compile(r"\\Delta\s*m" + _SUB)
+_PIECE_MASS = re.compile(r"\\Delta" + SPACE + "m" + _SUB)
 _PIECE_DENSITY = re.compile(r"\\rho" + _SUB)
-_PIECE_VOLUME = re.compile(r"\\Delta\s*V" + _SUB)
+_PIECE_VOLUME = re.compile(r"\\Delta" + SPACE + "V" + _SUB)
 
 
 def _pieces(text: str) -> str:
