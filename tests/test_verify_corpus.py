@@ -81,13 +81,13 @@ SHORT = {
         "inertial force's sign and missing mass sit in a display that writes alpha_i, a particle's acceleration, "
         "which is not read as the body's angular acceleration; the doubled m is in a force labelled 惯",
     ("principia-celledoni-free-body-elliptic-solution", "checked"):
-        "a LaTeX note written in its project's own semtex macros, which the file does not define, about the body "
-        "angular momentum m with G = ||m|| and Jacobi elliptic solutions in B_jh, k, lambda: \\vm, \\gD_j, \\gl, "
-        "\\gs are read as symbols of their names, but most of its claims also write \\TimeDerivative, \\pa, \\of or "
-        "\\JacobiSN (given an argument) or \\DefineAs (between terms), which stay unread",
+        "a LaTeX note in its project's semtex package, whose commands (\\pa, \\of, \\TimeDerivative, \\JacobiSN) "
+        "are read as the package sets them and whose letters (\\vm, \\gD_j, \\gl) as symbols of their names: its "
+        "claims relate the body angular momentum m, not named as one, and definitions over generic indices (I_jh, "
+        "Delta_j, B_jh with its sign rule in the prose), which the reader does not tie to the derivation",
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
-        "in displays written in those macros",
+        "in chains through B_jh and Delta_j, definitions over generic indices the reader does not read",
     ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
         "integrals over the body of vector integrands (int_V rho r x (omega x r) dV, int_V f . rdot dV), the "
         "element I_ij with a Kronecker delta and a sum over k, the parallel-axis theorem in matrices "

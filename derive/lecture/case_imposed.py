@@ -12,7 +12,13 @@ case not imposed): a statement that does not vanish may be one the text writes t
 quantity (``\\frac{1}{2}Cn\\vartheta^2 = A\\dot\\varphi\\vartheta^2`` for a small tilt), which this
 reading never flags.
 
-Takes: the checker (its ``vocab``, ``_resolve``, ``d.omega``, ``tex``). Gives: `in_case`.
+A case of the free body's constants at an extreme moment (``L^2 = 2I_3T`` with the moments ordered
+I₁ < I₂ < I₃, the text's ordering): written in the body rates (T = ½ Σ Iᵢω̃ᵢ², L² = Σ Iᵢ²ω̃ᵢ²) it is
+Σ Iᵢ(Iᵢ − I₃)ω̃ᵢ² = 0, a sum of squares whose coefficients keep one sign under the ordering, so each
+rate with a coefficient that is not zero vanishes on its motions (the permanent rotation about the
+third axis): `rates_zero` gives those rates, and the text's ``\\omega_1 = \\omega_2 = 0`` there holds.
+
+Takes: the checker (its ``vocab``, ``_resolve``, ``_sign``, ``d``, ``tex``). Gives: `in_case`, `rates_zero`.
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -82,3 +88,28 @@ def in_case(checker, latex: str, case_latex: str) -> str | None:
     except sp.PolynomialError:
         return None
     return f"{checker.tex(rate)} = {checker.tex(value)} on the motions of the case"
+
+
+def rates_zero(checker, case_latex: str) -> frozenset:
+    """The body rates ω̃ᵢ the case ``case_latex`` sets to zero (see the module docstring): empty when
+    it is not a sum of the rates' squares whose non-zero coefficients all keep one sign under the
+    text's orderings."""
+    try:
+        parsed = lx.parse(case_latex, checker.vocab)
+        if len(parsed.members) != 2 or parsed.relations != ["="]:
+            return frozenset()
+        half = checker.d.forms(lx.T_)[0]
+        put = {lx.T_: half, lx.ENERGY: half, lx.LMAG: checker.d.forms(lx.LMAG)[0]}
+        a, b = (checker._resolve(sp.sympify(m.value)).xreplace(put) for m in parsed.members)
+        poly = sp.Poly(sp.expand(a - b), *lx.W)
+    except _ERRORS + (sp.PolynomialError, sp.GeneratorsNeeded):
+        return frozenset()
+    squares = {(2, 0, 0): lx.W[0], (0, 2, 0): lx.W[1], (0, 0, 2): lx.W[2]}
+    if not poly.monoms() or any(m not in squares for m in poly.monoms()):
+        return frozenset()
+    names = sorted(set().union(*(sp.sympify(c).free_symbols for c in poly.coeffs())), key=lambda x: x.name)
+    signs = {checker._sign(sp.factor(c), names) for c in poly.coeffs()}
+    if len(signs) != 1 or signs == {"mixed"}:
+        return frozenset()
+    return frozenset(squares[m] for m in poly.monoms())
+

@@ -107,6 +107,12 @@ class ConstantCases:
             # solving the text's own equation says nothing of the general motion)
             self.ctx.constant_case = None
             return
+        zero = case_imposed.rates_zero(self, case[1])
+        for c in claims:        # a rate set to zero that the case itself sets to zero: it holds there
+            if c.kind == "setting" and c.verdict == "unchecked" and zero and self._set_rates(c.latex) <= zero:
+                c.verdict, c.correction = "holds", None
+                c.why = (f"holds in the case {case[1]} the text sets at line {case[0]}: under "
+                         f"{self._orderings_text()} it is a sum of squares of the rates of one sign")
         flagged = [c for c in claims if c.verdict in FLAGGED]
         imposed = case_imposed.in_case(self, flagged[0].latex, case[1]) if flagged else None
         for c in claims:
@@ -117,6 +123,16 @@ class ConstantCases:
                 c.verdict, c.correction = "unchecked", None
                 c.why = (f"stated in the case {case[1]} the text sets at line {case[0]}, which the reader "
                          f"does not impose: as read without it, {c.why}")
+
+    def _set_rates(self, latex: str) -> frozenset:
+        """The body rates ω̃ᵢ a statement ``\\omega_1 = \\omega_2 = 0`` sets to zero (none if it is not one)."""
+        try:
+            parsed = lx.parse(latex, self.vocab)
+        except lx.NotRead:
+            return frozenset({None})
+        *rates, last = [m.value for m in parsed.members]
+        ok = set(parsed.relations) == {"="} and last == 0 and rates and all(r in lx.W for r in rates)
+        return frozenset(rates) if ok else frozenset({None})
 
     def _named_constants(self, parsed) -> tuple:
         """The text's names in ``parsed`` that stand for quantities of the motion (defined by an

@@ -312,9 +312,10 @@ class Motion:
             return True
         ordered = set().union(*map(set, self.ctx.orderings)) if self.ctx.orderings else set()
         # three moments ordered: an asymmetric body, whose energy here is the free body's ½ Σ Iᵢω̃ᵢ²
-        free_body = {I1, I2, I3} <= ordered and any(free(v) & {lx.ENERGY} for v in values)
-        if free_body:
-            values = [v.xreplace({lx.ENERGY: self.d.forms(lx.T_)[0]}) for v in values]
+        free_body = {I1, I2, I3} <= ordered and any(free(v) & {lx.ENERGY, lx.T_, lx.LMAG} for v in values)
+        if free_body:       # E and T the body's ½ Σ Iᵢω̃ᵢ², |L| its √(Σ Iᵢ²ω̃ᵢ²): the constants in the rates
+            half = self.d.forms(lx.T_)[0]
+            values = [v.xreplace({lx.ENERGY: half, lx.T_: half, lx.LMAG: self.d.forms(lx.LMAG)[0]}) for v in values]
         values = [self._own_defs(self._resolve(v)).xreplace(self.ctx.subs) for v in values]
         syms = set().union(*(free(v) for v in values))
         if not ordered or not syms & ordered or not syms <= ordered | set(lx.W) | {s for s in syms if isinstance(s, lx.Generic)}:
@@ -327,7 +328,7 @@ class Motion:
                 verdict = self._sign(sp.expand(b ** 2 - a ** 2), names)   # √x ≤ y as x ≤ y²
             verdicts.append(verdict)
         if all(v == "positive" for v in verdicts):
-            energy = " (E the free body's ½ Σ Iᵢω̃ᵢ²)" if free_body else ""
+            energy = " (E, T the free body's ½ Σ Iᵢω̃ᵢ², |L| its √(Σ Iᵢ²ω̃ᵢ²))" if free_body else ""
             self._add(line, piece, "inequality", "holds", f"follows from {self._orderings_text()}{energy}")
         elif all(v == "negative" for v in verdicts) and len(rels) == 1:
             flip = {"<": ">", ">": "<", "≤": r"\ge", "≥": r"\le"}[rels[0]]

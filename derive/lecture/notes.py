@@ -37,6 +37,7 @@ from derive.lecture import formula_names
 from derive.lecture import moment_letters
 from derive.lecture import names as nm
 from derive.lecture import notebook
+from derive.lecture import package_macros
 from derive.lecture import prose_definitions
 from derive.lecture import source
 from derive.lecture import statements
@@ -288,7 +289,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     angles = declared.get("angles") or own or DEFAULT_ANGLES[conv]
     notes = Notes(path, conv, tuple(angles), declared, angles_stated=own is not None,
                   convention_stated=bool(convention or declared.get("convention") or stated))
-    user_macros = source.macros(body)
+    user_macros = {**package_macros.loaded(body), **source.macros(body)}   # the file's own win
     user_macros.update(undefined_macros.as_symbols(body, user_macros))
     notes.names = nm.learn(body, declared.get("symbols"), path, user_macros)
     formula_names.learn(notes.names, body)

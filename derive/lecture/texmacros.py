@@ -233,6 +233,11 @@ _HALF_OPEN = re.compile(_OPENS + r"\s*\.((?:(?!" + _OPENS + "|" + _CLOSES + r").
 """A bracket opened invisibly and closed before a subscript, sized as a pair (``\\left. X \\right)_{rel}``) or by
 hand (``\\bigl. X \\bigr)_{rel}``)."""
 _STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
+# an arrow over a bold letter, or a bold face around an arrowed one: two marks of one vector
+_BOLD_FACE = r"\\(?:mathbf|boldsymbol|bm)(?![A-Za-z])\s*"
+_NESTED = r"(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*"     # a group's inside, two levels of braces deep
+_ARROW_OVER_BOLD = re.compile(r"\\vec(?![A-Za-z])\s*\{\s*(" + _BOLD_FACE + r"\{" + _NESTED + r"\})\s*\}")
+_BOLD_OVER_ARROW = re.compile(r"(" + _BOLD_FACE + r")\{\s*\\vec(?![A-Za-z])\s*\{(" + _NESTED + r")\}\s*\}")
 
 
 def synonyms(latex: str) -> str:
@@ -242,8 +247,10 @@ def synonyms(latex: str) -> str:
     without its column alignment ``[r]``) as the plain ones (``bmatrix``), which they only align; and a
     bracket closed with a subscript but opened invisibly, ``\\left. X \\right)_{rel}`` (or sized by hand,
     ``\\bigl. X \\bigr)_{rel}``), as the bracket ``\\left( X \\right)_{rel}`` it draws half of (a derivative
-    relative to a frame); and the script letter ``\\ell`` as l (a length, set in script to keep it apart
-    from the digit 1).
+    relative to a frame); the script letter ``\\ell`` as l (a length, set in script to keep it apart
+    from the digit 1); and a vector marked twice, an arrow over a bold letter (``\\vec{\\mathbf{H}}_C``) or
+    a bold face around an arrowed one (``\\mathbf{\\vec{M_O}}``), as the bold letter alone, which is what
+    either mark says.
 
     Parameters
     ----------
@@ -258,6 +265,7 @@ def synonyms(latex: str) -> str:
     latex = _DOTLESS.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + m.group(1), latex)
     latex = _SCRIPT_L.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + "l", latex)
     latex = _HALF_OPEN.sub(lambda m: "\\left(" + m.group(1) + "\\right)", latex)
+    latex = _BOLD_OVER_ARROW.sub(lambda m: m.group(1).rstrip() + "{" + m.group(2) + "}", _ARROW_OVER_BOLD.sub(r"\1", latex))
     return _STARRED.sub(lambda m: f"\\{m.group(1)}{{{m.group(2)}}}", latex)
 
 

@@ -244,8 +244,8 @@ class TextNames(UnreadMembers):
 
     def _settings_before_neq(self, line, piece, members, rels) -> bool:
         """``I_1 = I_2 \\neq I_3``: the equalities are what the text assumes (the ≠ says the rest)."""
-        if set(rels) <= {"<", "≤"} and all(m in (I1, I2, I3) for m in members):
-            self.ctx.orderings.append(list(members))        # I₁ < I₂ < I₃: an ordering of the moments
+        if (set(rels) <= {"<", "≤"} or set(rels) <= {">", "≥"}) and all(m in (I1, I2, I3) for m in members):
+            self.ctx.orderings.append(list(members)[::1 if rels[0] in "<≤" else -1])   # I₁ < I₂ < I₃, I₃ > I₂ > I₁
         for k, rel in enumerate(rels):
             a, b = members[k], members[k + 1]
             self.display_relations.append((a, rel, b))

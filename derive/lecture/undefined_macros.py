@@ -10,8 +10,9 @@ stands alone as a term between signs, commas, brackets or a relation (``{\\vm}``
 nothing is assumed of what it stands for, so a display that relates it only to other such names
 stays `unchecked` naming them, as letters the text has not tied would; one that ties it to the
 derivation (``\\dot\\omega_1 = -\\gW \\omega_2`` after ``\\gW \\equiv …``) is judged; a macro
-used between two terms (``\\vm \\DefineAs (…)``, a relation or an operator of the package) or
-with an argument (``\\pa{…}``, ``\\TimeDerivative{…}``) stays unread.
+used between two terms (a relation or an operator of the package) or with an argument stays
+unread, unless the package the file loads is one whose commands the reader knows
+(`derive.lecture.package_macros`: semtex's ``\\DefineAs``, ``\\pa{…}``, ``\\TimeDerivative{…}``).
 May import: the standard library, ``pylatexenc``, `derive.lecture.source`, `derive.lecture.texmacros`,
 `derive.lecture.vocabulary`.
 """

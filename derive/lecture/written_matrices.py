@@ -1,10 +1,13 @@
-"""Matrices as texts write them between the formula reader's tokens: the outer product of two
-written columns, ``[v_1; v_2; v_3] \\otimes [w_1; w_2; w_3]``, and a written matrix labelled by the
-frame its components are in, ``\\begin{bmatrix} … \\end{bmatrix}_A``, and a vector's three components
+"""Matrices as texts write them between the formula reader's tokens: the outer and the cross product
+of two written columns, ``[v_1; v_2; v_3] \\otimes [w_1; w_2; w_3]`` and ``… \\times …``, and a written
+matrix labelled by the frame its components are in, ``\\begin{bmatrix} … \\end{bmatrix}_A``, and a vector's three components
 written in a row between round brackets, ``\\boldsymbol\\Omega = (\\omega \\sin\\alpha, 0, \\omega \\cos\\alpha)``.
 
-Takes: the operands `derive.lecture.latex_parser` has read, and its tokens after a written matrix.
-Gives: `outer` (a bᵀ; `NotRead` when the operands are not two columns) and `frame_label` (how many
+Takes: the operands `derive.lecture.latex_parser` has read (for a cross product, the parser itself, to
+read the second), and its tokens after a written matrix.
+Gives: `outer` (a bᵀ; `NotRead` when the operands are not two columns), `cross` (a × b of two written
+columns, ``[\\omega_1; \\omega_2; \\omega_3] \\times [I_1\\omega_1; I_2\\omega_2; I_3\\omega_3]`` in Euler's
+equations in matrix form; `NotRead` for anything else) and `frame_label` (how many
 tokens the label takes, 0 when there is none; a statement whose matrices are labelled with two
 frames raises `NotRead`, since two frames' components are not comparable entry by entry),
 `components_follow` and `components` (the column of a bracketed triple, as the reader reads a written
@@ -33,6 +36,19 @@ def outer(a, b, after=None):
 
 _UNIT_LETTERS = ("e", "i", "j", "k", "u", "imath", "jmath")
 """Letters texts give the unit vectors of a frame: three numbers for them depend on the frame meant."""
+
+
+def cross(parser, a, env):
+    """a × b of two written columns, the parser at the ``\\times`` (b its next operand); anything else
+    is the vector reader's, `NotRead` as before: a cross product of the text's vectors or names."""
+    if not (isinstance(a, sp.MatrixBase) and a.shape == (3, 1)):
+        parser.fail("vector products (×) are not read")
+    at = parser.peek()
+    parser.i += 1
+    b = parser.operand(env)
+    if not (isinstance(b, sp.MatrixBase) and b.shape == (3, 1)):
+        parser.fail("vector products (×) are not read", at)
+    return sp.ImmutableMatrix(sp.Matrix(a).cross(sp.Matrix(b)))
 
 
 def _is(tok, kind, value=None) -> bool:
