@@ -20,8 +20,7 @@ from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
                                          rate_of, reading, symbol_rate, written_rate)
-from derive.lecture.written_matrices import (components, components_follow, cross, frame_label, named_dot, outer,
-                                           squared_column)
+from derive.lecture.written_matrices import components, components_follow, cross, frame_label, named_dot, outer, squared_column
 from derive.symbolic.rotations import ANGLES, RATES
 
 
