@@ -8,7 +8,6 @@ import sympy as sp
 from derive.lecture import mp_values
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import zero_test as zt
-from derive.lecture.comparing import replaced
 from derive.lecture.elliptic import JacobiSN
 
 x, y = sp.symbols("x y", positive=True)
@@ -168,13 +167,3 @@ def test_the_numeric_screens_leave_a_formula_with_no_value_to_the_symbolic_steps
     # an undefined function has no value at a point: neither screen decides, nor raises
     assert not zt.differs_somewhere(f * x, f, "seed") and not zt.ratio_varies(f * x, f, "seed")
     assert not zt.differs_somewhere(sp.Derivative(f, a) * x, sp.Derivative(f, a), "seed")
-
-
-def test_a_replacement_kept_between_calls_is_xreplaces_and_a_mutable_matrix_is_replaced_as_it_stands():
-    rep = {x: a + 1, y: sp.sin(a)}
-    e = x ** 2 + y / x
-    assert replaced(e, rep) == e.xreplace(rep) and replaced(e, dict(rep)) is replaced(e, rep)
-    assert replaced(e, {x: sp.Float(2)}) != replaced(e, {x: sp.Integer(2)})    # 2.0 and 2 are different keys
-    assert replaced(e, {x: 2.0}) != replaced(e, {x: 2})      # Python's 2 == 2.0: never kept
-    m = sp.Matrix([x, y])                                    # mutable: not hashable, never kept
-    assert replaced(m, rep) == m.xreplace(rep) and replaced(m, rep) is not replaced(m, rep)

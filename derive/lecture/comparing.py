@@ -39,23 +39,6 @@ def free(obj) -> set:
 _free_symbols = zt.free_symbols
 
 
-def replaced(v, rep: dict):
-    """``v.xreplace(rep)``, memoised on v and the replacements: the reader puts the same definitions
-    in the same sides many times (each reading, case and candidate of a text). Only SymPy's
-    immutable objects are kept, whose equality tells 2 from 2.0 (Python's numbers do not)."""
-    if isinstance(v, sp.Basic) and all(isinstance(x, sp.Basic) for kv in rep.items() for x in kv):
-        try:
-            return _replaced(v, frozenset(rep.items()))
-        except TypeError:       # a mutable matrix inside an expression: not hashable
-            pass
-    return v.xreplace(rep)
-
-
-@functools.lru_cache(maxsize=4096)
-def _replaced(v, rep: frozenset):
-    return v.xreplace(dict(rep))
-
-
 def column(v):
     """A vector as a 3-column (from a matrix, or a linear form in ê₁ ê₂ ê₃); scalars as 1×1."""
     if isinstance(v, sp.MatrixBase):

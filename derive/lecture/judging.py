@@ -23,7 +23,7 @@ import functools
 import sympy as sp
 
 from derive.lecture import latex as lx
-from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, replaced, zero
+from derive.lecture.comparing import Mismatch, column, edits, free, has_rates, quick_equal, zero
 from derive.lecture.derivation import families
 
 
@@ -53,7 +53,7 @@ class Judging:
             for p in (lx.p_alpha_sym(), lx.p_gamma_sym()) if cyc else ():
                 if p in syms:
                     rep[p] = self.d.forms(p)[0]
-            out.append(replaced(v, rep) if rep else v)
+            out.append(v.xreplace(rep) if rep else v)
             if known is not None:
                 with contextlib.suppress(TypeError):
                     known[(v, rates, cyc)] = out[-1]
@@ -64,8 +64,8 @@ class Judging:
         if solutions:
             rep.update(self.ctx.solutions)
         if rep:
-            v = replaced(self._resolve(replaced(v, rep)), rep)
-        return replaced(v, case) if case else v
+            v = self._resolve(v.xreplace(rep)).xreplace(rep)
+        return v.xreplace(case) if case else v
 
     def _compare(self, claim_value, form, seed, small=None, order=None) -> tuple[bool, str]:
         """Is the claim's value the derived form, in every case of the section?"""

@@ -48,7 +48,7 @@ from derive.lecture import latex as lx
 from derive.lecture import notes as nt
 from derive.lecture import rearranged, summation_index, worked_values
 from derive.lecture.arithmetic import arithmetic
-from derive.lecture.comparing import free, replaced, series_order
+from derive.lecture.comparing import free, series_order
 from derive.lecture.context import Context
 from derive.lecture.derivation import derivation, keep
 from derive.lecture.notes_claims import VERDICTS, Claim, exit_status, render, summary  # noqa: F401  (the report's API)
@@ -416,7 +416,7 @@ class Checker(ReadingRules):
             if not rep:
                 break
             v = matrices_put(v, rep, self._basis_columns(v)) if any(isinstance(x, sp.MatrixBase) for x in rep.values()) \
-                else replaced(v, rep)
+                else v.xreplace(rep)
         return self._calculus(v)
 
     # -- kinds
