@@ -289,7 +289,7 @@ SHORT = {
         "cross and dot products inside a fraction",
 }
 
-FLOOR = {"checked": 822, "slips_flagged": 96, "holds_flagged": 0}
+FLOOR = {"checked": 854, "slips_flagged": 99, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
