@@ -4,7 +4,7 @@ Takes: the text of a notes file (its definitions) and one formula of it (the use
 macros the file defines (`definitions`), the formula without those definitions
 (`definitions_removed`), the formula with every use replaced by the macro's body
 (`expand`) and with plain TeX's font switches written as LaTeX's commands (`font_switches`).
-May import: the standard library, :mod:`derive.lecture.latex_spaces`.
+May import: the standard library, :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.latex_spellings`.
 
 What is read: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand`` (starred or not, the
 name braced or not), with ``[n]`` arguments and an optional first argument with its default
@@ -27,6 +27,7 @@ import re
 from typing import NamedTuple
 
 from derive.lecture.latex_spaces import SPACE
+from derive.lecture.latex_spellings import BOLD
 
 _HEAD = re.compile(r"\\(newcommand|renewcommand|providecommand|DeclareMathOperator|def)(?![A-Za-z])")
 _WORD = re.compile(r"\\([A-Za-z]+)")
@@ -234,7 +235,7 @@ _HALF_OPEN = re.compile(_OPENS + r"\s*\.((?:(?!" + _OPENS + "|" + _CLOSES + r").
 hand (``\\bigl. X \\bigr)_{rel}``)."""
 _STARRED = re.compile(r"\\(begin|end)\s*\{([pbBvV]?matrix)\*\}(?:\s*\[[lcr]\])?")
 # an arrow over a bold letter, or a bold face around an arrowed one: two marks of one vector
-_BOLD_FACE = r"\\(?:mathbf|boldsymbol|bm)(?![A-Za-z])\s*"
+_BOLD_FACE = BOLD + r"\s*"
 _NESTED = r"(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*"     # a group's inside, two levels of braces deep
 _ARROW_OVER_BOLD = re.compile(r"\\vec(?![A-Za-z])\s*\{\s*(" + _BOLD_FACE + r"\{" + _NESTED + r"\})\s*\}")
 _BOLD_OVER_ARROW = re.compile(r"(" + _BOLD_FACE + r")\{\s*\\vec(?![A-Za-z])\s*\{(" + _NESTED + r")\}\s*\}")
