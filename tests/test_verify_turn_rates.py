@@ -45,6 +45,16 @@ def test_a_turns_angular_velocity_as_a_column_in_sized_or_plain_brackets_reads_a
         assert _verdicts("(\\vec{\\omega}_{\\phi})_\\mathrm{body} = " + slipped) == {"fails"}
 
 
+def test_a_turns_angular_velocity_in_a_frame_in_sized_brackets_reads_as_in_plain_ones():
+    body = _col("\\dot\\phi \\sin\\theta \\sin\\psi", "\\dot\\phi \\sin\\theta \\cos\\psi", "\\dot\\phi \\cos\\theta")
+    for opened, closed in (("\\left(", "\\right)"), ("\\bigl(", "\\bigr)"), ("\\Big(", "\\Big)")):
+        framed = f"{opened}\\vec{{\\omega}}_{{\\phi}}{closed}"
+        assert _verdicts(framed + "_\\mathrm{body} = " + body) == {"holds"}
+        assert _verdicts(framed + "_\\mathrm{body} = " + _col("0", "0", "\\dot{\\phi}")) == {"fails"}
+        assert _verdicts(f"{opened}\\vec{{\\omega}}_{{\\theta}}{closed}_{{\\{{x',y',z'\\}}}} = "
+                         + _col("\\dot{\\theta}", "0", "0")) == {"holds"}
+
+
 _FIXED = "A fixed frame has the basis $(\\bm e_X, \\bm e_Y, \\bm e_Z)$, the body the basis $(\\bm e_x, \\bm e_y, \\bm e_z)$.\n\n"
 
 

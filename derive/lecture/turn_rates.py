@@ -41,10 +41,13 @@ from derive.symbolic import rotations as rot
 _BOLD = r"\\(?:vec|mathbf|boldsymbol|bm|vect)\s*"
 _OMEGA = rf"{_BOLD}\{{?\s*(?:{_BOLD}\{{\s*)?\\omega\s*\}}?\s*\}}?"
 _TURN = re.compile(rf"\s*{_OMEGA}\s*(?:_\s*\{{?\s*(\\[A-Za-z]+)\s*\}}?)?\s*")
-_FRAMED = re.compile(rf"\s*\(\s*({_OMEGA}\s*(?:_\s*\{{?\s*\\[A-Za-z]+\s*\}}?)?)\s*\)\s*_\s*"
+_OPEN = r"(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big|bigg|Bigg)\s*)?"
+_CLOSE = r"(?:\\(?:right|bigr|Bigr|biggr|Biggr|big|Big|bigg|Bigg)\s*)?"
+"""A bracket's sizing, none, ``\\left``/``\\right`` or ``\\bigl``/``\\bigr``: the same bracket however tall it is set."""
+_FRAMED = re.compile(rf"\s*{_OPEN}\(\s*({_OMEGA}\s*(?:_\s*\{{?\s*\\[A-Za-z]+\s*\}}?)?)\s*{_CLOSE}\)\s*_\s*"
                      r"(\{\s*\\\{[^{}]*\\\}\s*\}|\\\{[^{}]*\\\}|\{\s*\\?(?:mathrm|text)?\s*\{?\s*[a-z]+\s*\}?\s*\}|\\(?:mathrm|text)\s*\{\s*[a-z]+\s*\})\s*")
-_COLUMN = re.compile(r"\s*(?:(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big)\s*)?[\[(]\s*)?\\begin\{(array|bmatrix|pmatrix)\}(?:\{[a-z]*\})?"
-                     r"(.*?)\\end\{\1\}(?:\s*(?:\\(?:right|bigr|Bigr|biggr|Biggr|big|Big)\s*)?[\])])?\s*", re.S)
+_COLUMN = re.compile(rf"\s*(?:{_OPEN}[\[(]\s*)?\\begin\{{(array|bmatrix|pmatrix)\}}(?:\{{[a-z]*\}})?"
+                     rf"(.*?)\\end\{{\1\}}(?:\s*{_CLOSE}[\])])?\s*", re.S)
 """A written column, bare or in brackets, plain, ``\\left``/``\\right`` or sized (``\\bigl[ … \\bigr]``)."""
 _AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
 _NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
