@@ -106,7 +106,7 @@ def test_a_trigonometric_name_typed_without_its_backslash_is_the_function():
 
 
 def test_braces_and_cross_matrices_are_read():
-    assert source.normalize(r"\underbrace{a}_{\mathbf{S}} = \overbrace{b}^{\cdot}") == r"a = \frac{d}{dt}\left(b\right)"
+    assert source.normalize(r"\underbrace{a}_{\mathbf{S}} = \overbrace{b}^{\cdot}") == r"a = \frac{d}{dt}(b)"
     assert source.normalize(r"\left[ \mathbf{r} \right]_\times") == r"\crossmatrix\left( \mathbf{r} \right)"
 
 

@@ -38,6 +38,14 @@ def test_unknown_functions_of_the_angle_make_a_claim_that_must_hold_for_all_of_t
     assert _last(general, r"p_\theta = L = \frac{\partial L}{\partial{\dot{\theta}}} = I_{p}(\theta)\dot{\theta}") == "holds"
 
 
+def test_a_prime_written_as_a_superscript_is_the_derivative_as_an_apostrophe_is():
+    general = r"L(\theta, \dot{\theta}) = \frac{1}{2}I_{p}(\theta)\dot{\theta}^2 - V(\theta)"
+    ok = r"I_{p}(\theta)\ddot{\theta} = - V^{\prime}(\theta) - \frac{1}{2}I^\prime_{p}(\theta)\dot{\theta}^2"
+    bad = r"I_{p}(\theta)\ddot{\theta} = - V^{\prime}(\theta) + \frac{1}{2}I^\prime_{p}(\theta)\dot{\theta}^2"
+    assert _last(LAGRANGIAN, general, ok) == "holds"
+    assert _last(LAGRANGIAN, general, bad) == "fails"
+
+
 def test_a_function_defined_as_an_expression_in_the_angle_is_evaluated_and_differentiated_with_a_prime():
     x = r"x_{C} = a\sin\theta - \theta R"
     assert _last(LAGRANGIAN, x, r"x_{C}'(\theta_0) = a\cos\theta_0 - R") == "holds"

@@ -226,7 +226,7 @@ def test_small_spaces_setting_a_relation_apart_are_the_plain_sign(space):
     assert source.normalize(f"\\Omega {s}\\coloneqq{s} \\frac{{I_1 - I_3}}{{I_1}}\\omega_3") == \
         "\\Omega \\equiv \\frac{I_1 - I_3}{I_1}\\omega_3"
     assert source.normalize(f"a {s}\\le{s} b {s}<{s} c") == "a \\le b < c"
-    assert source.normalize("\\left( a \\right) \\leq \\, b") == "\\left( a \\right) \\leq b"
+    assert source.normalize("\\left( a + c \\right) \\leq \\, b") == "\\left( a + c \\right) \\leq b"
 
 
 @pytest.mark.parametrize("space", SPACES)

@@ -31,6 +31,12 @@ def test_a_point_carried_by_the_rotation_and_its_velocity():
     assert "holds" not in verdicts(slip).get(line_of(slip, "$$\\dot{\\mathbf x}"), set())
 
 
+def test_a_point_carried_by_the_rotation_with_its_time_in_sized_brackets():
+    sized = "\\dot{\\mathbf x}\\left(t\\right) = \\dot R\\left(t\\right)\\mathbf x\\left(0\\right) = \\dot R\\left(t\\right)R^t\\left(t\\right)\\mathbf x\\left(t\\right)"
+    text = _note("\\mathbf x(t) = R(t)\\mathbf x(0)", sized)
+    assert verdicts(text)[line_of(text, "$$\\dot{\\mathbf x}")] == {"holds"}
+
+
 def test_a_relation_premultiplied_and_regrouped_with_times_between_matrices():
     text = _note("\\vec L = I \\vec\\omega", "R\\times L = R \\times I\\times (R^T\\times R) \\times \\omega")
     assert verdicts(text)[line_of(text, "$$R\\times")] == {"holds"}

@@ -1,5 +1,5 @@
-"""What LaTeX spells several ways and every reader reads as one thing: one home for the bold face
-and for the sign of a definition.
+"""What LaTeX spells several ways and every reader reads as one thing: one home for the bold face,
+the sign of a definition, a prime and a bracket sized around one token.
 
 Takes and gives nothing at run time: the command names (for the scanners that walk a formula token
 by token, and for `derive.lecture.source`'s normaliser) and regular-expression fragments built from
@@ -7,9 +7,12 @@ them (to be joined into a reader's own patterns). A bold letter is the same symb
 sets it: ``\\mathbf{C}``, ``\\boldsymbol{C}``, ``\\bm{C}`` (the bm package), ``\\pmb{C}``, ``\\vb{C}``
 (physics), ``\\bold{C}``, ``\\mathbfit{C}`` (unicode-math). A definition is one sign whichever way it
 is written: ``\\equiv``, ``\\coloneqq`` (mathtools), ``\\triangleq``, ``\\eqdef``, ``\\defeq`` or
-``:=`` typed as two characters. A reader that matches a shape in a formula before the normaliser has
-rewritten it (the rendered text, a display read whole) joins these fragments; after it, the rarer
-bold spellings are ``\\boldsymbol`` and every definition sign is ``\\equiv``.
+``:=`` typed as two characters. A prime is one mark whether typed ``V'`` or set as a superscript
+``V^{\\prime}``, and a round bracket sized with ``\\left``/``\\right`` around one token is the plain
+bracket. A reader that matches a shape in a formula before the normaliser has rewritten it (the
+rendered text, a display read whole) joins these fragments; after it, the rarer bold spellings are
+``\\boldsymbol``, every definition sign is ``\\equiv``, every prime an apostrophe and every such
+bracket plain.
 
 May import: nothing.
 """
@@ -29,3 +32,12 @@ DEFINITION_NAMES = frozenset({"coloneqq", "triangleq", "eqdef", "defeq"})
 
 DEFINES = r"(?:\\(?:equiv|" + "|".join(sorted(DEFINITION_NAMES)) + r")(?![A-Za-z])|(?<![:=\\]):\s*=(?![:=]))"
 """A definition sign: ``\\equiv``, one of `DEFINITION_NAMES`, or ``:=`` typed as two characters."""
+
+PRIME_SUPERSCRIPT = (r"(?:(?<=[A-Za-z0-9)\]'|])|(?<=[^{]\}))\s*\^\s*"
+                     r"(\\prime(?![A-Za-z])|\{\s*(?:\\prime(?![A-Za-z])\s*)+\})")
+"""A superscript of primes only after a symbol, ``V^{\\prime}``, ``x^\\prime``, ``y^{\\prime\\prime}`` (group 1 the
+script): the primes ``V'``, ``y''`` as TeX sets them (a pre-superscript ``{}^{\\prime}`` marks no symbol)."""
+
+SIZED_ONE_TOKEN = r"\\left\s*\(\s*([A-Za-z0-9]+|\\[A-Za-z]+)\s*\\right\s*\)"
+"""A round bracket sized with ``\\left``/``\\right`` around one letter, number or command (group 1),
+``R\\left(t\\right)``: sized to one token it is the plain bracket, a function's argument as ``R(t)``."""

@@ -26,7 +26,8 @@ What is normalised:
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
   ``\\dv``/``\\pdv`` (the physics package's derivatives), ``\\vdot``/``\\cross``.
 * **Degrees**: ``30^{\\circ}`` is 30·π/180.
-* **Order of scripts**: ``\\omega^2_1`` is ``\\omega_1^2``; an empty group ``{}`` is nothing.
+* **Order of scripts**: ``\\omega^2_1`` is ``\\omega_1^2``; an empty group ``{}`` is nothing; a prime
+  set as a superscript, ``V^{\\prime}``, is ``V'``; ``R\\left(t\\right)`` (one token sized) is ``R(t)``.
 * **The file's macros**: ``\\newcommand``, ``\\renewcommand``, ``\\providecommand``, ``\\def``
   and ``\\DeclareMathOperator``, with their arguments (#1 … #9) and an optional first argument's
   default, expanded as TeX expands them before the walk (`derive.lecture.texmacros`).
@@ -46,7 +47,7 @@ from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
-from derive.lecture.latex_spellings import DEFINITION_NAMES, REWRITTEN_BOLD_NAMES
+from derive.lecture.latex_spellings import DEFINITION_NAMES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -517,6 +518,7 @@ _AFTER_SCRIPT = re.compile(r"[_^]\s*\{[^{}]*\}$")
 """A brace group holding one symbol, bare or under an accent or a bold face, before its index,
 ``{\\Omega}_1``, ``{\\dot {\\omega }}_{1}``, ``{\\boldsymbol {I}}_{0}^{-1}`` (how an encyclopaedia
 renders its formulas): the braces only group."""
+_SIZED_ONE_TOKEN, _PRIME_SCRIPT = re.compile(SIZED_ONE_TOKEN), re.compile(PRIME_SUPERSCRIPT)
 _SUP_FIRST = re.compile(r"((?:\\[A-Za-z]+\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])(?:\s*')*)\s*\^\s*("
                         + _SCRIPT + r")\s*_\s*(" + _SCRIPT + r")")
 
@@ -575,6 +577,7 @@ def _normalized(latex: str, user: tuple) -> str:
         text = _print(nodes, user)
     except Exception:  # noqa: BLE001 - a walker failure leaves the formula for the reader to refuse
         text = latex
+    text = _SIZED_ONE_TOKEN.sub(r"(\1)", text)           # R\\left(t\\right) is R(t)
     text = _UNBRACED_ACCENT.sub(r"\\\1{\2}", text)       # \\hat\\omega is \\hat{\\omega}
     text = _transposed_rows(bracket_cross.cross_matrices(text))
     text = _FORMULA_STOP.sub("", _ROW_STOP.sub(" ", text))  # "1." before a row's or the formula's end: punctuation
@@ -588,6 +591,7 @@ def _normalized(latex: str, user: tuple) -> str:
     text = _EMPTY_GROUP.sub(" ", text)                # {} is nothing: {}= and \\begin{aligned}{}
     text = _GROUPED_SYMBOL.sub(_ungrouped, text)     # {\\Omega}_1 is \\Omega_1
     text = _COLON_EQUALS.sub(r" \\equiv ", text)       # a := b defines a, as a \\equiv b
+    text = _PRIME_SCRIPT.sub(lambda m: "'" * m.group(1).count("prime"), text)  # V^{\\prime} is V'
     text = _SUP_FIRST.sub(r"\1_\3^\2", text)          # \\omega^2_1 is \\omega_1^2
     text = _SPACED_EQUALS.sub(" ", text)              # a \\;=\\; b: the small spaces only set the = apart
     text = _SPACED_RELATION.sub(" ", text)            # a \\, \\equiv \\, b: as around an =
