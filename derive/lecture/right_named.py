@@ -5,7 +5,7 @@ its members and the one symbol of the text's that nothing ties (``loose``). Give
 reads a definition sign (``\\equiv``, every spelling of it written so by the normaliser) between a
 quantity the reader knows and an expression of the one new symbol as the definition of that symbol:
 the relation solved for it, uniquely, is recorded (the text's own symbol, ``a = p_ψ/I₁``) and used
-in the displays after it, as ``X \\equiv …`` with X new on the left is. A texts writes so when it
+in the displays after it, as ``X \\equiv …`` with X new on the left is. A text writes so when it
 names a constant after the fact ("define $p_\\psi \\equiv I_1 a$ and $p_\\phi \\equiv I_1 b$"). An
 equals sign is not read so (a relation between a known and a new quantity may be a claim the text
 makes about its own symbol), nor is a relation the symbol stands in on both sides or not solvable
