@@ -5,6 +5,7 @@ import sympy as sp
 
 import kept_readings as kept
 from derive.lecture import restated
+from derive.lecture.notes_claims import Claim
 
 HEAD = "# Notes\n\n"
 PARALLEL = "With $J_C$ the moment about the centre of mass,\n\n$$ J_{z^\\prime} = J_C + m d^2$$\n\n"
@@ -48,6 +49,18 @@ def test_an_earlier_relation_solved_for_one_of_its_names_holds():
     assert [c.verdict for c in got] == ["holds"] and "solved for" in got[0].why
 
 
+def test_a_relation_that_holds_by_the_texts_own_equation_is_marked_as_confirming_no_names():
+    """A restatement holds whatever the text's names mean, so it is marked (`Claim.self_consistent`)
+    and a statement beside it never takes it as confirming the prose's reading of a name."""
+    text = HEAD + RATIO + "$$\n\\omega_2 = \\frac{b}{a} \\omega_1\n$$\n"
+    assert [c.self_consistent for c in _solved(text, "\\omega_2 =")] == [True]
+    u, v = sp.symbols("u v")
+    checker = _Stub()
+    assert not checker._restated(3, "u = v", [u, v], ["="])
+    assert checker._restated(7, "u = v + 0", [u, v + 0 * u], ["="])
+    assert [c.self_consistent for c in checker.claims] == [True]
+
+
 def test_an_earlier_relation_solved_wrongly_is_not_judged():
     text = HEAD + RATIO + "$$\n\\omega_2 = \\frac{a}{b} \\omega_1\n$$\n"
     assert not {c.verdict for c in _solved(text, "\\omega_2 =")} & {"holds", "fails", "typo"}
@@ -63,7 +76,7 @@ class _Stub(restated.Restated):
         return x
 
     def _add(self, *claim):
-        self.claims.append(claim)
+        self.claims.append(Claim(*claim))
 
     def tex(self, x):
         return str(x)

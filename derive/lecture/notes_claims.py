@@ -22,6 +22,8 @@ class Claim:
     correction: str | None = None
     why: str = ""
     assumes: list = field(default_factory=list)    # what it holds under: stated (with where) or not
+    # holds by the text's own earlier equation whatever its names mean, so it confirms no reading of them
+    self_consistent: bool = field(default=False, compare=False)
 
     def as_dict(self) -> dict:
         return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,

@@ -18,7 +18,7 @@ statement again —
 
 Each second reading runs in a sandbox: a copy of the context, the checker's claims and context
 left as they were. May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors`, :mod:`derive.lecture.primed_functions`,
-:mod:`derive.lecture.said_columns`, :mod:`derive.lecture.restated`,
+:mod:`derive.lecture.said_columns`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -28,7 +28,7 @@ from types import SimpleNamespace
 
 import sympy as sp
 
-from derive.lecture import latex as lx, primed_functions, restated, said_columns
+from derive.lecture import latex as lx, primed_functions, said_columns
 from derive.lecture import vectors as vc
 from derive.symbolic.lagrangian import I1, I2, Mass, l
 
@@ -228,7 +228,7 @@ class Rereading:
             # a sibling that restates the text's own earlier equation holds whatever the names mean
             sibling = next((s for s in claims if s is not c and s.verdict == "holds" and s.kind == c.kind
                             and s.latex != c.latex and bindings <= self._learned_bindings(s.latex)
-                            and not restated.holds_whatever_the_names(s.why)), None)
+                            and not s.self_consistent), None)
             said = self._said_and_held(bindings) if sibling is None else None
             if sibling is None and said is None:
                 continue

@@ -11,8 +11,8 @@ one of them, X entering it linearly, as the same equation (``\\omega_2 = \\frac{
 ``\\frac{\\omega_1}{\\omega_2} = \\frac{a}{R}``); and a later equation whose two sides' difference is an
 earlier one's expanded, up to a non-zero number (a determinant ``= 0`` then written out). That says only that the text agrees with itself; a
 restatement that differs says nothing (either of the two may be the one the text meant), so it is
-never flagged. `holds_whatever_the_names` tells such a verdict by its reason: it confirms no reading
-of the prose's names.
+never flagged. Such a verdict's claim is marked `Claim.self_consistent`: it confirms no reading of
+the prose's names.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, SymPy.
 """
@@ -28,16 +28,15 @@ from derive.lecture import zero_test as zt
 
 
 _ROOTS = re.compile(r"(?P<x>[^=]+?)=\s*\\pm(?![A-Za-z])(?P<v>[^=]+)")
-_OPENINGS = ("restates the text's ", "the text's equation of line ")
-
-
-def holds_whatever_the_names(why: str) -> bool:
-    """A verdict of `Restated`: it holds by the text's own earlier equation, whatever the names in it mean."""
-    return why.startswith(_OPENINGS)
 
 
 class Restated:
-    """Mixin of the checker. Uses ``self._resolve``, ``self._add`` and ``self.tex``."""
+    """Mixin of the checker. Uses ``self._resolve``, ``self._add``, ``self.claims`` and ``self.tex``."""
+
+    def _holds_as_restated(self, line, piece, why) -> None:
+        """``piece`` holds by the text's own earlier equation (`Claim.self_consistent`)."""
+        self._add(line, piece, "identity", "holds", why)
+        self.claims[-1].self_consistent = True
 
     def _restated(self, line, piece, members, rels) -> bool:
         """True (and a verdict given) when ``members`` restate an earlier equation of the text's
@@ -49,20 +48,19 @@ class Restated:
         right = sp.sympify(self._resolve(members[1]))
         for at, was_left, was_right in kept:
             if at < line and was_left == left and _alike(right, was_right) and sp.expand(right - was_right) == 0:
-                self._add(line, piece, "identity", "holds",
-                          f"restates the text's {self.tex(left)} of line {at} with its own definitions put in (expand)")
+                self._holds_as_restated(line, piece, f"restates the text's {self.tex(left)} of line {at} "
+                                                    "with its own definitions put in (expand)")
                 return True
         for at, was_left, was_right in reversed(kept):
             if (at < line and was_left != left and _alike(was_left, was_right, right)
                     and not isinstance(right, sp.MatrixBase)
                     and _solved_for(left, was_left - was_right, right)):
-                self._add(line, piece, "identity", "holds",
-                          f"the text's equation of line {at} solved for {self.tex(left)}")
+                self._holds_as_restated(line, piece, f"the text's equation of line {at} solved for {self.tex(left)}")
                 return True
         for at, was_left, was_right in reversed(kept):
             if at < line and was_left != left and _multiple((left, right), (was_left, was_right)):
-                self._add(line, piece, "identity", "holds",
-                          f"the text's equation of line {at} written out (expand), up to a constant factor")
+                self._holds_as_restated(line, piece, f"the text's equation of line {at} written out (expand), "
+                                                    "up to a constant factor")
                 return True
         kept.append((line, left, right))
         return False
@@ -84,7 +82,7 @@ class Restated:
             equation = was_left - was_right if _scalars(was_left, was_right, x) else None
             if at < line and isinstance(x, sp.Symbol) and equation is not None and x in equation.free_symbols:
                 if all(sp.simplify(equation.xreplace({x: r})) == 0 for r in roots):
-                    self._add(line, piece, "identity", "holds", f"the two roots of the text's equation of line {at}")
+                    self._holds_as_restated(line, piece, f"the two roots of the text's equation of line {at}")
                     return True
                 return False
         return False
