@@ -398,9 +398,11 @@ def test_the_reader_meets_its_targets_on_a_text(notes_reading, slug, target, req
 
 
 def test_the_corpus_totals_do_not_fall(notes_reading):
-    figures = {slug: _figures(notes_reading, slug) for slug in TEXTS}
+    # read from the last text back: a worker reading forward for the per-text tests then reads the
+    # other texts at the same time instead of waiting on the very text this test is reading
+    figures = {slug: _figures(notes_reading, slug) for slug in reversed(TEXTS)}
     total = {k: sum(getattr(f, k) for f in figures.values()) for k in FLOOR}
-    print("\n" + measure.table(list(figures.values())))
+    print("\n" + measure.table([figures[slug] for slug in TEXTS]))
     assert total["checked"] >= FLOOR["checked"]
     assert total["slips_flagged"] >= FLOOR["slips_flagged"]
     assert total["holds_flagged"] <= FLOOR["holds_flagged"]
