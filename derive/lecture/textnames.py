@@ -36,7 +36,7 @@ from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
-from derive.lecture.unread_members import UnreadMembers
+from derive.lecture.unread_members import UnreadMembers, applied_names_multiplied
 from derive.lecture.sparse_forms import free_symbols
 from derive.lecture.zero_test import differs_somewhere, expanded, surely_nonzero, entry_zero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
@@ -83,10 +83,8 @@ def _free(obj) -> set:
 def _is_value(v, defined) -> bool:
     """What a setting sets a variable to: a number, a parameter, or an expression in the
     parameters and the text's own symbols not yet defined (an example's ω sin α)."""
-    if isinstance(v, sp.MatrixBase):
-        return False
-    return all(s in PARAMETERS or s == lx.t or (isinstance(s, lx.Generic) and s not in defined)
-               for s in _free(v))
+    return not isinstance(v, sp.MatrixBase) and all(
+        s in PARAMETERS or s == lx.t or (isinstance(s, lx.Generic) and s not in defined) for s in _free(v))
 
 
 class TextNames(UnreadMembers):
@@ -303,8 +301,10 @@ class TextNames(UnreadMembers):
         """Every member the same expression whatever the text's undefined names stand for."""
         try:
             first = self._calculus(self._resolve(members[0]))
-            return all(not surely_nonzero(other - first) and not differs_somewhere(other, first, "whatever")
-                       and expanded(other - first) == 0 for other in (self._calculus(self._resolve(m)) for m in members[1:]))
+            others = (self._calculus(self._resolve(m)) for m in members[1:])
+            return not applied_names_multiplied(getattr(self, "_text", "")) and all(
+                not surely_nonzero(d) and not differs_somewhere(o, first, "whatever") and expanded(d) == 0
+                for o, d in ((o, o - first) for o in others))
         except TypeError:           # a matrix of the text's beside names it has not defined
             return False
 

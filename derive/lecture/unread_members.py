@@ -24,6 +24,18 @@ from sympy import Symbol
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
 
+_APPLIED = (r"(?<![\\A-Za-z])[A-Za-z](?:_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?\s*(?:\\left\s*)?"
+            r"\((?:[^()]|\([^()]*\))*\)")
+_APPLIED_PRODUCT = re.compile(rf"{_APPLIED}\s*(?:\\[,;:!]|\\cdot|\s)*{_APPLIED}")
+
+
+def applied_names_multiplied(text: str) -> bool:
+    """Does ``text`` multiply two names written with arguments (``R(\\hat z, \\alpha) R(\\hat y, \\beta)``,
+    ``R_z(\\alpha) R_y(\\beta)``)? Such names are turns and operators as often as numbers, and
+    their products need not commute: an identity of them read as numbers is no identity."""
+    return bool(_APPLIED_PRODUCT.search(text))
+
+
 _RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\left\s*)?$")
 
 
