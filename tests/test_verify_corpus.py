@@ -295,8 +295,9 @@ SHORT = {
         "none of its nine slips is flagged: they sit in the vector rotation with {\\vec V}', in the index form, in "
         "R(theta/N) with \\hbar, in a limit and in an SU(2) matrix row without its &, none of them read",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
-        "R(n, theta) as the rotation about a named axis ({\\hat z}, {\\hat y}') is not known, and \\hbar, kets and "
-        "bras are not read, so the Euler-angle chain, the rotation operator and the spin matrices stay unchecked",
+        "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
+        "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
+        "matrices stay unchecked",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
         "its three slips (a matrix element's bra, the spin-1/2 rotation's entries, the spin-1 J_x and J_y) sit in "
         "displays with kets, \\hbar or the rotation operator, none of them read",
