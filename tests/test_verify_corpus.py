@@ -287,6 +287,20 @@ SHORT = {
         "a library's manual: the DCM's rate -[omega x] D is taken for a definition, \\texttt{vect} is not read, "
         "the quaternion's rate is written with the frames' subscript (q_ba), and the CRP's and MRP's rates hold "
         "cross and dot products inside a fraction",
+    ("lawrence-phys162-rotation-group-so3-generators-su2", "checked"):
+        "quantum mechanics course notes on the rotation group: \\hbar, the identity {\\bf 1}, \\lim and a prime after "
+        "a braced vector ({\\vec V}') are not read, and the rotation in indices (R^I_J, delta^I_J, eps^I{}_{JK}) is "
+        "not tied to a rotation; only the transpose of a product of rotations is",
+    ("lawrence-phys162-rotation-group-so3-generators-su2", "found"):
+        "none of its nine slips is flagged: they sit in the vector rotation with {\\vec V}', in the index form, in "
+        "R(theta/N) with \\hbar, in a limit and in an SU(2) matrix row without its &, none of them read",
+    ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
+        "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
+        "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
+        "matrices stay unchecked",
+    ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
+        "its three slips (a matrix element's bra, the spin-1/2 rotation's entries, the spin-1 J_x and J_y) sit in "
+        "displays with kets, \\hbar or the rotation operator, none of them read",
 }
 
 FLOOR = {"checked": 854, "slips_flagged": 99, "holds_flagged": 0}

@@ -181,6 +181,7 @@ class Checker(ReadingRules):
         self._place_flushed(len(self.claims))
         self._read_later_definitions()
         self._rotation_products()
+        self._axis_angle_turns()
         self._check_changes()
         self._inline_unflagged()
         return self.claims

@@ -11,6 +11,7 @@ Takes and gives nothing of its own. May import: the rule modules of :mod:`derive
 from __future__ import annotations
 
 from derive.lecture.algebra_claims import AlgebraStatements
+from derive.lecture.axis_angle_turns import AxisAngleTurns
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.basis_vectors import BasisVectors
 from derive.lecture.chain_end_names import ChainEndNames
@@ -64,5 +65,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins):
+                   NestedSpins, AxisAngleTurns):
     """Every reading rule, in method-lookup order (see the module docstring)."""
