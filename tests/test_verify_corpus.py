@@ -49,12 +49,6 @@ SHORT = {
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
         "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
         "triple and the kinetic energy are checked",
-    ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
-        "three of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
-        "its unread y_z, Euler's third equation with omega_1 omega_3 read as the equation before its '= 0'); "
-        "T about O' with I_2 for I_2' is not read, and cos tau with I_2^2 omega_3 fails only with J read as the "
-        "angular momentum the prose names, which no other statement of its display confirms (the chain's link "
-        "that holds is not taken as one), so it stays unchecked",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
         "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked, and so are "
