@@ -32,10 +32,6 @@ SHORT = {
         "(det(AA^T) = det(A)det(A^T) = [det A]^2), but det A = +-1, index sums ((AA^T)_ij = A_ik A_jk), direction "
         "cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, the rotation "
         "formula in indices (eps_ijk, n_i) and the generators T_k with their commutators are not",
-    ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "found"):
-        "one of its two slips is flagged (a proof's step with an extra factor, A^-1 A A^T A (A^T)^-1 = "
-        "A^-1 I (A^T)^-1, a relation of the rotation alone that no rotation satisfies); y_i = R_ij(vartheta, n) "
-        "= x_j in indices is not read",
     ("maithripala-rigid-body-equations-assignment-parallel-axis-answer", "checked"):
         "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
         "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
