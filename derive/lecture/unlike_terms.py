@@ -11,6 +11,8 @@ angular momentum's magnitude and its components (a text's Πᵢ read as Iᵢω̃
 (dimensionless). The text's own letters (E, h, G, KE, a constant β₂₁) take a dimension only from
 an equation the text writes that sets the letter (or a number times a power of it, 2E, h²) equal
 to members whose dimensions are known and agree (``… = ½ Σ Πᵢ²/𝕀ᵢ = E``, ``‖Π‖² = Σ Πᵢ² = h²``);
+or, alone in one term of a sum whose other terms have one known dimension, the dimension that makes
+its term alike (``J^2 = I_1^2 A^2 + I_3^2\\omega_3^2`` makes A a rate);
 a letter two such equations give different dimensions is unknown from then on, and a name the text
 has set to a number (a worked example, in units it may have scaled) is unknown. A term with any
 unknown name is never compared, and a pure number is never compared (a text may write 1 + E in
