@@ -32,10 +32,6 @@ SHORT = {
         "(det(AA^T) = det(A)det(A^T) = [det A]^2), but det A = +-1, index sums ((AA^T)_ij = A_ik A_jk), direction "
         "cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, the rotation "
         "formula in indices (eps_ijk, n_i) and the generators T_k with their commutators are not",
-    ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "found"):
-        "one of its two slips is flagged (a proof's step with an extra factor, A^-1 A A^T A (A^T)^-1 = "
-        "A^-1 I (A^T)^-1, a relation of the rotation alone that no rotation satisfies); y_i = R_ij(vartheta, n) "
-        "= x_j in indices is not read",
     ("maithripala-rigid-body-equations-assignment-parallel-axis-answer", "checked"):
         "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
         "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
@@ -49,12 +45,6 @@ SHORT = {
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
         "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
         "triple and the kinetic energy are checked",
-    ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "found"):
-        "three of five slips are flagged (J_i with the index x_ai summed over j, the matrix's (3,1) entry beside "
-        "its unread y_z, Euler's third equation with omega_1 omega_3 read as the equation before its '= 0'); "
-        "T about O' with I_2 for I_2' is not read, and cos tau with I_2^2 omega_3 fails only with J read as the "
-        "angular momentum the prose names, which no other statement of its display confirms (the chain's link "
-        "that holds is not taken as one), so it stays unchecked",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
         "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked, and so are "

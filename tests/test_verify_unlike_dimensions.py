@@ -77,3 +77,27 @@ def test_powers_of_two_components_or_of_several_alike_are_not_compared():
     two = "$$\nJ_{11} = I_{11} + M(a_1^2 + a_2^3)\n$$\n\n"
     series = "$$\nJ_{11} = I_{11} + M(a_1 + a_2^2 + a_3^3)\n$$\n\n"
     assert _flagged(HEAD + two, "J_{11}") == [] and _flagged(HEAD + series, "J_{11}") == []
+
+
+TOP = ("---\nconvention: z-x-z\n---\n# The symmetric top\n\n"
+       "For the symmetric top $I_1 = I_2$ and Euler's equations read\n\n"
+       "$$\nI_1\\dot{\\omega}_1 = (I_1 - I_3)\\omega_2\\omega_3\n$$\n\n")
+SQUARE = ("The angular momentum's square is constant, with $A$ the radius of the circle:\n\n"
+          "$$\nL^2 = I_1^2 A^2 + I_3^2 \\omega_3^2\n$$\n\n")
+ANGLE = "so\n\n$$\n\\cos\\tau = \\frac{I_3\\omega_3}{\\sqrt{I_1^2 A^2 + I_3^2\\omega_3%s}}\n$$\n"
+
+
+def test_a_letter_in_one_term_of_a_sum_of_known_terms_takes_their_dimension():
+    # L² = I₁²A² + I₃²ω₃² makes A a rate: I₁²A² + I₃²ω₃ (ω₃ unsquared) adds unlike quantities
+    flagged = _flagged(TOP + SQUARE + ANGLE % "", "\\cos\\tau")
+    assert [c.verdict for c in flagged] == ["fails"] and "A^{2} I_1^{2}" in flagged[0].why
+    assert _flagged(TOP + SQUARE + ANGLE % "^2", "\\cos\\tau") == []
+    # without the sum that ties it, A may be anything the text means by it
+    assert _flagged(TOP + ANGLE % "", "\\cos\\tau") == []
+
+
+def test_a_sum_with_a_pure_number_or_two_untied_letters_ties_no_letter():
+    scaled = SQUARE.replace("I_3^2 \\omega_3^2", "I_3^2 \\omega_3^2 + 1")
+    two = SQUARE.replace("I_1^2 A^2", "I_1^2 A^2 B")
+    assert _flagged(TOP + scaled + ANGLE % "", "\\cos\\tau") == []
+    assert _flagged(TOP + two + ANGLE % "", "\\cos\\tau") == []

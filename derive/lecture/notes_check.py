@@ -207,6 +207,7 @@ class Checker(ReadingRules):
             self._add(item.line, latex, "unknown", "unchecked", f"cannot check it: {_failed_step(err)}")
             self._close_display()
         self._cases_not_applied(item, start)
+        self._free_indices_unlike(item, latex, start)
 
     def _display_statements(self, item, latex):
         pieces = statements(latex)

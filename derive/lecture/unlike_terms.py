@@ -11,6 +11,8 @@ angular momentum's magnitude and its components (a text's Πᵢ read as Iᵢω̃
 (dimensionless). The text's own letters (E, h, G, KE, a constant β₂₁) take a dimension only from
 an equation the text writes that sets the letter (or a number times a power of it, 2E, h²) equal
 to members whose dimensions are known and agree (``… = ½ Σ Πᵢ²/𝕀ᵢ = E``, ``‖Π‖² = Σ Πᵢ² = h²``);
+or, alone in one term of a sum whose other terms have one known dimension, the dimension that makes
+its term alike (``J^2 = I_1^2 A^2 + I_3^2\\omega_3^2`` makes A a rate);
 a letter two such equations give different dimensions is unknown from then on, and a name the text
 has set to a number (a worked example, in units it may have scaled) is unknown. A term with any
 unknown name is never compared, and a pure number is never compared (a text may write 1 + E in
@@ -160,6 +162,8 @@ class UnlikeTerms:
         letters = [_lone_letter(v) for v in values]
         known = {self._dimension(v, []) for v, one in zip(values, letters)
                  if v is not None and v.free_symbols and (one is None or one[0] in _TIED)} - {None}
+        for v in values:
+            self._learn_from_sum(v, known)
         if len(known) != 1:
             return          # two members that disagree, or none known: nothing is learned from it
         (whole,) = known
@@ -173,6 +177,34 @@ class UnlikeTerms:
                 self._dimensions[letter] = d
             elif had != d:
                 self._dimensions[letter] = _CONFLICT
+
+    def _learn_from_sum(self, value, known):
+        """A letter of the text's in one term of a sum whose other terms have one known dimension,
+        agreeing with the equation's other members where they are known, takes the dimension that
+        makes its term alike (``J^2 = I_1^2 A^2 + I_3^2 \\omega_3^2`` gives A a rate's)."""
+        if not isinstance(value, sp.Add):
+            return
+        dims = [(t, self._dimension(t, [])) for t in value.args]
+        alike = {d for _, d in dims if d is not None}
+        odd = [t for t, d in dims if d is None]
+        # pure numbers among the terms (scaled units) or two members that disagree: nothing is learned
+        if len(odd) != 1 or len(alike) != 1 or _NONE in alike or known and known != alike:
+            return
+        (whole,) = alike
+        letters = [s for s in odd[0].free_symbols if self._symbol_dimension(s) is None]
+        if len(letters) != 1:
+            return          # two unknown letters in the term: neither is read off
+        letter = letters[0]
+        rest, part = odd[0].as_independent(letter, as_Add=False)
+        base, power = part.as_base_exp()
+        if base != letter or not power.is_Rational or power == 0:
+            return          # the letter inside a function or a sum of its own: its dimension is not read off
+        d = self._dimension(rest, [])
+        if d is None:
+            return
+        d = _times(_plus(whole, _times(d, -1)), sp.Rational(1) / power)
+        had = self._dimensions.get(letter)
+        self._dimensions[letter] = d if had is None or had == d else _CONFLICT
 
     def _symbol_dimension(self, s):
         for table in (self.ctx.subs, self.ctx.defs):
