@@ -52,3 +52,17 @@ def test_positions_between_named_points_reverse_and_add():
     reading = nv.read("\\mathbf{r}_{A/C} = \\mathbf{r}_{A/B} + \\mathbf{r}_{B/C} = -\\mathbf{r}_{C/A}")
     values = [m.value for m in reading.members[0]]
     assert values[0] == values[1] == values[2]
+
+
+def test_a_vector_set_again_to_what_cannot_be_compared_takes_the_later_value():
+    law = "$$\\mathbf{N}_A = \\frac{d\\mathbf{Q}}{dt}$$\n\n"
+    again = "$$\\mathbf{N}_A = \\mathbf{s}_A \\times \\mathbf{G}$$\n\n"
+    size = "$$|\\mathbf{N}_A| = |\\mathbf{s}_A \\times \\mathbf{G}| = |\\mathbf{G} \\times \\mathbf{s}_A|$$\n"
+    assert last(law + again + size) == ["holds", "holds"]
+
+
+def test_a_statement_the_vector_algebra_reader_leaves_unjudged_is_judged_as_general_vectors():
+    # 𝐑 and 𝐏 are vectors the vector-algebra reader cannot tie to the body
+    first = "$$\\mathbf{L} = \\mathbf{J} + \\mathbf{R} \\times \\mathbf{P}$$\n\n"
+    assert last(first + "$$\\mathbf{L} = \\mathbf{J} - \\mathbf{P} \\times \\mathbf{R}$$\n") == ["holds"]
+    assert last(first + "$$\\mathbf{L} = \\mathbf{J} + \\mathbf{P} \\times \\mathbf{R}$$\n") == ["typo"]

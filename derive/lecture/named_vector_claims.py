@@ -2,10 +2,13 @@
 a definition recorded, each link of a chain judged against the member before it.
 
 Gives the mixin `NamedVectors` of `derive.lecture.notes_check.Checker`: `_named_vectors`, tried
-last, on a statement no other reader read.
+last, on a statement no other reader read, and `_algebra_or_named`, on one the vector-algebra reader
+read without a verdict.
 
 A statement ``𝐗 = …`` whose left side is a vector the section has not set, and which its right
-side does not involve, defines it: recorded (`named_vectors.Definitions`), not judged. Each
+side does not involve, defines it: recorded (`named_vectors.Definitions`), not judged; set again to
+an expression its recorded one cannot be compared with (a law's 𝐌_O = d𝐇_O/dt, then 𝐌_O = 𝐫_O × 𝐅),
+the later one is its value from there on. Each
 other link ``a = b`` of a chain is judged with the section's definitions put in: it **holds**
 when its two sides are the same vector for every value of the vectors they involve. When the sides
 differ, the link is a **typo** only if both involve the very same vectors and one edit of the
@@ -35,7 +38,23 @@ IN_PLANE = "its sides differ as vectors in general; in the plane the text set, a
 
 
 class NamedVectors:
-    """Mixin of the checker. Uses ``self._add``, ``self._section_of``, ``self._plane_at`` and ``self.judging_only``."""
+    """Mixin of the checker. Uses ``self._add``, ``self.claims``, ``self.ctx``, ``self._algebra``, ``self._section_of``,
+    ``self._plane_at`` and ``self.judging_only``."""
+
+    def _algebra_or_named(self, line, piece, text) -> bool:
+        """The vector-algebra reader (`derive.lecture.algebra_claims`); where it leaves every claim of a
+        statement unchecked (vectors it cannot tie to the body), this reader's verdicts instead when it
+        gives one."""
+        start = len(self.claims)
+        if not self._algebra(line, piece, text):
+            return False
+        theirs = self.claims[start:]
+        if any(c.verdict != "unchecked" for c in theirs):
+            return True
+        del self.claims[start:]
+        if not (self._named_vectors(line, piece, text) and any(c.verdict != "unchecked" for c in self.claims[start:])):
+            self.claims[start:] = theirs
+        return True
 
     def _named_vectors(self, line, piece, text) -> bool:
         """Read and judge a statement in named vectors (False when it is not one)."""
@@ -59,6 +78,9 @@ class NamedVectors:
         for k in range(start, len(first)):
             verdict, why, fix = self._named_link(line, reading, k, definitions)
             self._add(line, piece, "identity", verdict, why, fix)
+            if k == 1 and key is not None and verdict == "unchecked":
+                # set again to what the earlier value cannot be compared with: the text's value from here on
+                definitions.add(*key, reading.source[first[1].start:first[1].end].strip())
         return True
 
     def _named_link(self, line, reading, k, definitions):
