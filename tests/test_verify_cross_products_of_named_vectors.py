@@ -66,3 +66,11 @@ def test_a_statement_the_vector_algebra_reader_leaves_unjudged_is_judged_as_gene
     first = "$$\\mathbf{L} = \\mathbf{J} + \\mathbf{R} \\times \\mathbf{P}$$\n\n"
     assert last(first + "$$\\mathbf{L} = \\mathbf{J} - \\mathbf{P} \\times \\mathbf{R}$$\n") == ["holds"]
     assert last(first + "$$\\mathbf{L} = \\mathbf{J} + \\mathbf{P} \\times \\mathbf{R}$$\n") == ["typo"]
+
+
+def test_norms_in_double_bars_side_by_side_are_a_product():
+    reading = nv.read("||\\mathbf{s} \\times \\mathbf{G}|| = ||\\mathbf{s}||\\:||\\mathbf{G}||\\sin(\\theta)")
+    assert len(reading.members[0]) == 2
+    assert last("$$\\mathbf{N} = \\mathbf{s} \\times \\mathbf{G}$$\n\n"
+                "$$||\\mathbf{N}|| = ||\\mathbf{G} \\times \\mathbf{s}|| = ||\\mathbf{s}||\\:||\\mathbf{G}||\\sin(\\theta)$$\n") \
+        == ["holds", "unchecked"]

@@ -99,8 +99,9 @@ class NamedVectors:
                 members = again.members[0]
                 if _same(members[k - 1].value, members[k].value):
                     return "typo", f"{WHY}: its sides differ; one edit ({what}) makes it hold", again_src.strip()
-        loose = sorted(n for n in (s.name.split(".")[0] for s in _symbols(a) ^ _symbols(b)) if "#" not in n and not n.startswith("p_"))
-        return "unchecked", APART.format(loose=", ".join(dict.fromkeys(s.rstrip("^.") for s in loose))) if loose else UNMENDED, None
+        names = (s.name.split(".")[0].rstrip("^.") for s in _symbols(a) ^ _symbols(b))
+        loose = sorted({n for n in names if "#" not in n and not n.startswith("p_")})
+        return "unchecked", APART.format(loose=", ".join(loose)) if loose else UNMENDED, None
 
 
 def _key(atom):

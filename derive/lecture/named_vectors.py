@@ -39,7 +39,7 @@ _TEXT_WORD = re.compile(r"\\(?:text|mathrm|rm|textrm)\s*\{\s*([A-Za-z]+)\s*\}")
 _DOUBLE = re.compile(r"\\(mathbf|boldsymbol|bm|vec)\s*\{\s*\{([^{}]*(?:\{[^{}]*\}[^{}]*)*)\}\s*\}")
 # a bold wrapper around what is bold already (\mathbf{\mathbf{r} \times \mathbf{L}}): a group
 _WRAPPED = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{(?=\s*\\(?:mathbf|boldsymbol|bm|vec)\b)")
-_NORM = re.compile(r"\|\|")
+_NORM = re.compile(r"\|\|([^|]+)\|\|")
 _LABEL = re.compile(r"[A-Za-z]+'*|\d+|\\[A-Za-z]+")
 _CONSTANT = ("m", "M")
 _BARE_SUM = re.compile(r"\\sum(?:\s*\\limits)?(?!\s*(?:\\limits\s*)?[_^A-Za-z])")
@@ -50,7 +50,8 @@ PLAIN = "plain:"
 
 def prepare(text: str) -> str:
     """The rewrites the scanner needs: a doubled group in a bold face (\\mathbf{{M_{O'}}}) as one,
-    a bold face around an expression already bold as a group, a norm's ‖ as |, an upright word in a
+    a bold face around an expression already bold as a group, a norm ‖𝐚‖ as the bracketed |𝐚| (so
+    that two norms side by side are a product), an upright word in a
     subscript as plain letters, and a Σ written without its index over i when the statement writes
     i as a subscript (Σ 𝐫_{i/cm} × mᵢ𝐯_{i/cm})."""
     text = _DOUBLE.sub(r"\\\1{\2}", text)
@@ -58,7 +59,7 @@ def prepare(text: str) -> str:
         text = _BARE_SUM.sub(r"\\sum_{i}", text)
     while _WRAPPED.search(text):
         text = _WRAPPED.sub("{", text, count=1)
-    return _TEXT_WORD.sub(r"\1", _NORM.sub("|", text))
+    return _TEXT_WORD.sub(r"\1", _NORM.sub(r"(|\1|)", text))
 
 
 def _labels(sub: str) -> list[str]:
