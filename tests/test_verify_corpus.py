@@ -162,12 +162,6 @@ SHORT = {
         "unlike powers); the secular determinant in the unknown moment I and "
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
-    ("cline-cube-angular-momentum-rotational-kinetic-energy-worked-examples", "checked"):
-        "the cube's angular momenta are written as omega times a written matrix on a column, in omega and b, "
-        "which nothing in the text ties (a link that holds is kept, one off by a number is flagged); the "
-        "velocity V + v'' + omega x r' of a moving point, the kinetic energy's expansion with V, T_trans and "
-        "the sums in r' with \\prime, and the row-matrix-column form of T_rot are not read; Euler's T_rot in "
-        "particle sums over alpha, in I_ij and as (1/2) omega . L are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
         "14 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
         "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
@@ -218,13 +212,10 @@ SHORT = {
         "evaluated with a bar \\bigg|_{-L/2}^{L/2} and the cube's chain I_xx = I_yy = I_zz = Ma^2/6 (read as the "
         "text's assumption; its paragraph names axes parallel to the edges) are not",
     ("bmc-watanabe-duarte-newton-euler-laws-rigid-body", "checked"):
-        "3 of 22 (Euler's three equations): the rest is in \\mathbf{\\vec{...}} vectors about named points "
-        "(r_{cm/O}, H_O, M_O, r_{O'/O}) and their cross products, \\mathbf{\\hat{i}} unit vectors, \\vec{\\bf{F}} "
-        "and sums over particles without an index (sum m_i v_i), where the text's L is the linear momentum m v, not "
-        "the angular momentum the reader's models take it for",
-    ("bmc-watanabe-duarte-newton-euler-laws-rigid-body", "found"):
-        "0 of 1: the slip (the moment about O' written M_O + r_{O'/O} x F, whose sign is minus with r_{O'/O} from "
-        "O to O') is in \\vec{\\bf{...}} vectors about named points, of which the reader has no model",
+        "5 of 22 (Euler's three equations, the moment's size and the moment moved to another point): the chains about named points "
+        "pass through the text's laws and facts (v = dr/dt, d(m v)/dt = F, a plane motion), which general vectors "
+        "do not have, and the rest is in \\mathbf{\\hat{i}} unit vectors, an arrow between two statements, and "
+        "sums over particles where the text's L is the linear momentum m v",
     ("physics-se-rolling-coin-euler-angles-lagrangian", "checked"):
         "0 of 2: the centre's height R sin(theta) is the third entry of a pmatrix column R_0 beside the floor "
         "coordinates x, y, and the boxed Lagrangian adds the translation in x, y to the turning: the reader "

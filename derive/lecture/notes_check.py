@@ -299,7 +299,7 @@ class Checker(ReadingRules):
         if summed is not None:
             self._add(line, piece, "sum", "typo", summed[1], None if self.judging_only else summed[0])
             return
-        if self._basis_statement(line, piece, text) or self._algebra_first(text) and self._algebra(line, piece, text):
+        if self._basis_statement(line, piece, text) or self._algebra_first(text) and self._algebra_or_named(line, piece, text):
             return
         if self._body_axes_first(line, piece, text):
             return
@@ -316,8 +316,8 @@ class Checker(ReadingRules):
             return
         except lx.NotRead as err:
             why = err.why
-            if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra(line, piece, text) \
-                    or self._roots_restated(line, piece, text):
+            if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra_or_named(line, piece, text) \
+                    or self._roots_restated(line, piece, text) or self._named_vectors(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return

@@ -35,6 +35,7 @@ from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
 from derive.lecture.judging import Judging
 from derive.lecture.moments_small import SmallMoments
+from derive.lecture.named_vector_claims import NamedVectors
 from derive.lecture.nested_spins import NestedSpins
 from derive.lecture.motion import Motion
 from derive.lecture.on_the_motion import OnTheMotion
@@ -66,5 +67,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -199,8 +199,11 @@ class VectorParser(_Parser):
     def summands(self, a, b):
         """Two terms to add: of one kind (a scalar and a vector or tensor only when one is 0)."""
         a, b = _not_law(a), _not_law(b)
-        if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase) and not (a == 0 or b == 0):
-            self.fail("a scalar added to a vector or tensor")
+        if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase):
+            if not (a == 0 or b == 0):
+                self.fail("a scalar added to a vector or tensor")
+            # 0 + 𝐫 × 𝐅: the zero written as a number is the zero of the other term's shape
+            a, b = (sp.zeros(*b.shape), b) if not isinstance(a, sp.MatrixBase) else (a, sp.zeros(*a.shape))
         return a, b
 
     def operand(self, env):
