@@ -259,13 +259,12 @@ SHORT = {
         "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a, and the block's I_11 chain through "
         "integrals over its sides",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "checked"):
-        "5 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
-        "transport theorem too; the last member \\uvec{imath}, second derivatives d^2B/dt^2 and the relative motion's "
-        "r_rel, v_rel are not read, and "
+        "6 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
+        "transport theorem too; second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel are not read, and "
         "dA/dt = omega x A for the text's own A is its set-up (A turns with the body), not a claim",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "found"):
-        "1 of 3: B_Y/dt without its d is flagged; \\uvec{imath} for the unit vector (letters under the hat, not read) "
-        "and the acceleration without a_rel (relative motion, not read) are missed",
+        "2 of 3: \\uvec{imath} for the unit vector and B_Y/dt without its d are flagged; the acceleration without "
+        "a_rel (relative motion, not read) is missed",
     ("physics-se-euler-angle-rates-relative-rotating-frame", "checked"):
         "0 of 1: the rates of extrinsic x-y-z angles (said in prose, with no front matter) written as a matrix "
         "the text names with arguments, M(phi, theta), times omega_B, the body's rate labelled B: neither the "

@@ -29,8 +29,10 @@ def test_a_vector_restated_on_hatted_unit_vectors_as_its_expanded_cross_product_
 
 
 def test_a_vector_set_again_to_another_value_is_recorded_anew_never_flagged():
-    assert set(_verdicts(MOMENT, "\\mathbf{M} = (r_y F_z + r_z F_y)\\mathbf{\\hat{i}} + (r_z F_x - r_x F_z)\\mathbf{\\hat{j}} "
-                                 "+ (r_x F_y - r_y F_x)\\mathbf{\\hat{k}}")) == {"unchecked"}
+    display = ("\\mathbf{M} = (r_y F_z + r_z F_y)\\mathbf{\\hat{i}} + (r_z F_x - r_x F_z)\\mathbf{\\hat{j}} "
+               "+ (r_x F_y - r_y F_x)\\mathbf{\\hat{k}}")
+    text = MOMENT + "$$" + display + "$$\n"
+    assert kept.verdicts_by_line(text)[kept.line_of(text, "$$" + display)] == {"unchecked"}
 
 
 def test_a_chain_on_hatted_unit_vectors_with_a_slipped_component_fails():
@@ -65,3 +67,11 @@ def test_a_hatted_sum_beside_a_vector_the_text_never_set_is_not_read_here():
     head = "# Notes\n\n"
     assert _verdicts(head, "\\mathbf{v} = \\boldsymbol{\\omega} \\times (a\\hat{i} + b\\hat{j}) = "
                            "c\\hat{i} + e\\hat{j}") == []
+
+
+def test_a_hat_over_the_letters_of_a_command_with_its_backslash_lost_is_a_typo():
+    text = COMPONENTS + ("$$\\boldsymbol{a} = \\frac{d v_x}{dt} \\boldsymbol{\\hat{\\imath}} + \\frac{d v_y}{dt} "
+                         "\\boldsymbol{\\hat{\\jmath}} = a_x \\boldsymbol{\\hat{imath}} + a_y \\boldsymbol{\\hat{\\jmath}}$$\n")
+    claims = kept.by_line(text)[kept.line_of(text, "$$\\boldsymbol{a} = ")]
+    assert [c.verdict for c in claims] == ["typo"]
+    assert "\\hat{\\imath}" in claims[0].correction

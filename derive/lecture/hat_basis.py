@@ -17,6 +17,8 @@ products, a determinant along its row of unit vectors):
   depends on time (ẋ its rate), and the basis is read twice, fixed and turning with an angular
   velocity of generic components w (dê/dt = w × ê; a rate relative to the turning basis leaves the
   w term out). A link holds when it holds in either reading and fails only when it fails in both;
+* **a lost backslash**: a hat over the letters of a symbol's command (``\\hat{imath}`` for
+  ``\\hat{\\imath}``, ``\\hat{omega}``; names of four letters or more) sets those letters as a product: a `typo`, corrected by the backslash;
 * **a rate without its d**: a fraction over dt whose numerator is one symbol with no differential
   (``\\frac{B_Y}{dt}``) beside the rate of a sibling component (``\\frac{dB_X}{dt}``) is a `typo`,
   corrected by the missing d.
@@ -41,6 +43,10 @@ _NOT_HERE = re.compile(r"\\(?:int|oint|sum|prod|partial|lim)\b")
 """Sums, integrals, partial derivatives and limits: not this reader's algebra."""
 _DOTLESS = re.compile(r"\\[dt]?frac\s*\{\s*([A-Za-z])(_\s*(?:\{[^{}]*\}|\w))?\s*\}\s*\{\s*d\s*t\s*\}")
 """A fraction over dt of one letter (with its index) and no differential: a rate that lost its d."""
+_LOST_BACKSLASH = re.compile(r"\\(?:hat|widehat)\s*\{\s*(imath|jmath|alpha|beta|gamma|delta|epsilon|zeta|theta|iota|kappa|"
+                             r"lambda|sigma|upsilon|omega|Omega|Theta|Lambda|Sigma|Gamma|Delta)\s*\}")
+"""A hat over the letters of a symbol's command (``\\hat{imath}``): the command's backslash lost (names of
+four letters or more: two or three letters under a hat may be a text's own product)."""
 _RATE_OF = r"\\[dt]?frac\s*\{{\s*d\s*{letter}(?![A-Za-z])"
 _ARGUMENT = re.compile(r"(\\(?:boldsymbol|mathbf|bm|vec)\s*\{[^{}]*\})\s*\(\s*t\s*\)")
 """A bold letter written as a function of time, 𝐯(t): the letter."""
@@ -167,17 +173,23 @@ class HatBasis:
 
     def _hat_unread(self, line, piece, before) -> None:
         """Judge a statement that writes a hatted basis where the readers before left it unchecked
-        (the claims from ``before`` on): their claims give way to this reader's, when it reads it."""
+        (the claims from ``before`` on): their claims give way to this reader's where it gives a verdict."""
         if any(c.verdict != "unchecked" for c in self.claims[before:]):
             return
         text = piece
         if re.match(r"\s*(=|\\approx|\\equiv)", piece) and self.ctx.head:
             text = self.ctx.head + " " + piece
         end = len(self.claims)
-        if self._hat_judge(line, piece, text, claim=True):
+        if not self._hat_judge(line, piece, text, claim=True):
+            return
+        if all(c.verdict == "unchecked" for c in self.claims[end:]):
+            del self.claims[end:]           # a vector only set: the readers before say more of it (a fixed axis)
+        else:
             del self.claims[before:end]
 
     def _hat_judge(self, line, piece, text, claim) -> bool:
+        if claim and self._hat_lost_backslash(line, piece, text):
+            return True
         fam = family(text)
         if fam is None or _NOT_HERE.search(text):
             return False
@@ -251,4 +263,16 @@ class HatBasis:
                   f"writes {names} over dt with no d: a component divided by the differential dt, not its rate, where "
                   f"the same statement writes a sibling component's rate with its d (on the unit vectors {basis})",
                   fixed if fixed != piece else None)
+        return True
+
+    def _hat_lost_backslash(self, line, piece, text) -> bool:
+        """A hat over a symbol's command written without its backslash: a typo, whatever the rest says."""
+        lost = list(dict.fromkeys(m.group(1) for m in _LOST_BACKSLASH.finditer(text)))
+        if not lost:
+            return False
+        fixed = _LOST_BACKSLASH.sub(lambda m: m.group(0).replace(m.group(1), "\\" + m.group(1), 1), piece)
+        names = ", ".join(lost)
+        self._add(line, piece, "symbol", "typo",
+                  f"sets the letters {names} under a hat, where the symbol \\{lost[0]} is meant (its backslash lost): "
+                  "a product of letters, not the unit vector or symbol the other terms write", fixed if fixed != piece else None)
         return True
