@@ -212,7 +212,7 @@ SHORT = {
         "evaluated with a bar \\bigg|_{-L/2}^{L/2} and the cube's chain I_xx = I_yy = I_zz = Ma^2/6 (read as the "
         "text's assumption; its paragraph names axes parallel to the edges) are not",
     ("bmc-watanabe-duarte-newton-euler-laws-rigid-body", "checked"):
-        "5 of 22 (Euler's three equations, the moment's size and the moment moved to another point): the chains about named points "
+        "N of 22 (Euler's three equations, the moment's size, the moment moved to another point and its components on the hatted unit vectors restated): the chains about named points "
         "pass through the text's laws and facts (v = dr/dt, d(m v)/dt = F, a plane motion), which general vectors "
         "do not have, and the rest is in \\mathbf{\\hat{i}} unit vectors, an arrow between two statements, and "
         "sums over particles where the text's L is the linear momentum m v",
@@ -240,13 +240,12 @@ SHORT = {
         "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a, and the block's I_11 chain through "
         "integrals over its sides",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "checked"):
-        "a course's page in a fixed frame's unit vectors (I, J, K hatted, and i, j, k with components as functions "
-        "of t, v(t) = v_x i + ...), second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel, which the "
-        "reader does not read; the moving unit vectors' rates and the transport theorem are checked, and "
+        "6 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
+        "transport theorem too; second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel are not read, and "
         "dA/dt = omega x A for the text's own A is its set-up (A turns with the body), not a claim",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "found"):
-        "its three slips (\\uvec{imath} for the unit vector, B_Y/dt without its d, the acceleration without a_rel) "
-        "sit in statements on the fixed unit vectors and the relative derivatives, which are not read",
+        "2 of 3: \\uvec{imath} for the unit vector and B_Y/dt without its d are flagged; the acceleration without "
+        "a_rel (relative motion, not read) is missed",
     ("physics-se-euler-angle-rates-relative-rotating-frame", "checked"):
         "0 of 1: the rates of extrinsic x-y-z angles (said in prose, with no front matter) written as a matrix "
         "the text names with arguments, M(phi, theta), times omega_B, the body's rate labelled B: neither the "

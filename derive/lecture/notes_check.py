@@ -246,6 +246,7 @@ class Checker(ReadingRules):
             try:
                 if not (self._nested_spins(item.line, piece) or self._turn_rates(item.line, piece)):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
+                self._hat_unread(item.line, piece, before)
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)
@@ -287,6 +288,7 @@ class Checker(ReadingRules):
             self._add(line, piece, "rotation", "unchecked", other)
             return
         text = self._single_axis_turns(text)
+        self._hat_note(line, text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
         if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
                 or self._operator(line, piece, text) or self._coordinate(line, piece, text):
