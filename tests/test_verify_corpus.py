@@ -212,7 +212,7 @@ SHORT = {
         "evaluated with a bar \\bigg|_{-L/2}^{L/2} and the cube's chain I_xx = I_yy = I_zz = Ma^2/6 (read as the "
         "text's assumption; its paragraph names axes parallel to the edges) are not",
     ("bmc-watanabe-duarte-newton-euler-laws-rigid-body", "checked"):
-        "N of 22 (Euler's three equations, the moment's size, the moment moved to another point and its components on the hatted unit vectors restated): the chains about named points "
+        "7 of 22 (Euler's three equations, the moment's size, the moment moved to another point and its components on the hatted unit vectors restated): the chains about named points "
         "pass through the text's laws and facts (v = dr/dt, d(m v)/dt = F, a plane motion), which general vectors "
         "do not have, and the rest is in \\mathbf{\\hat{i}} unit vectors, an arrow between two statements, and "
         "sums over particles where the text's L is the linear momentum m v",
