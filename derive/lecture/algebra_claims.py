@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
@@ -38,6 +38,7 @@ from derive.lecture import vector_algebra_model as va
 from derive.lecture import vector_parser as vp
 from derive.lecture import vectors as vc
 from derive.lecture.written_matrices import columns_only, numbers_set
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
        "torque d𝐋/dt; sums and ∫ dm read for three generic mass points")
@@ -519,7 +520,7 @@ def _torque_law(text, state) -> bool:
     """d𝐋/dt set equal to a bold letter the prose names the torque (``\\boldsymbol M`` "being the
     external torque") or to a torque labelled by its source (``\\vec{\\tau}_g``): the law of motion,
     this reader's."""
-    if not re.search(r"\\frac\s*\{\s*(?:\\mathrm\s*\{?\s*d\s*\}?|d)\s*\\(?:boldsymbol|mathbf|bm|vec)", text):
+    if not re.search(r"\\frac\s*\{\s*(?:\\mathrm\s*\{?\s*d\s*\}?|d)\s*" + VECTOR_MARK, text):
         return False
     return any(t.kind == "atom" and t.value.bold and t.value.base in state.torques
                and ((not t.value.sub and t.value.base not in va.TORQUES) or va.labelled_torque(t.value.sub))

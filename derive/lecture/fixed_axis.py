@@ -2,7 +2,7 @@
 
 Takes: one statement's LaTeX. Gives: `setting`, the axis (0, 1, 2) a statement sets the angular
 velocity (and the angular acceleration) along, and `off_axis`, the substitution that puts the
-model's 𝛚 and 𝛂 on that axis. May import: the standard library, SymPy, :mod:`derive.lecture.
+model's 𝛚 and 𝛂 on that axis. May import: the standard library, :mod:`derive.lecture.latex_spellings`, SymPy, :mod:`derive.lecture.
 vector_algebra_model` (its symbols), :mod:`derive.lecture.latex_spaces`.
 
 A text on a body turning about a fixed axis writes 𝛚 = ω k̂ (𝛂 = α k̂): a bold angular velocity set
@@ -19,9 +19,10 @@ import re
 
 from derive.lecture import vector_algebra_model as va
 from derive.lecture.latex_spaces import SPACE
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 
-_UNIT = r"\\hat\s*\{?\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{?\s*)?(?P<axis>[ijkxyz])\s*\}?\s*\}?"
-_BOLD = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\(?P<vec>omega|alpha)\s*\}?"
+_UNIT = r"\\hat\s*\{?\s*(?:" + BOLD_MARK + r"\s*\{?\s*)?(?P<axis>[ijkxyz])\s*\}?\s*\}?"
+_BOLD = VECTOR_MARK + r"\s*\{?\s*\\(?P<vec>omega|alpha)\s*\}?"
 # the scalar rate and the unit vector side by side, or with a centred dot (a product with a scalar)
 _ONE = re.compile(r"^\s*" + _BOLD + r"\s*=\s*\\(?P<scalar>omega|alpha)" + SPACE + r"(?:\\cdot(?![A-Za-z])" + SPACE + r")?"
                   + _UNIT + r"\s*$")
@@ -67,5 +68,5 @@ def off_axis(axis: int) -> dict:
 
 def plain_r(text: str) -> bool:
     """Whether a statement writes a plain distance r (``r``, ``r_i``, ``r_i^2``), not a bold vector."""
-    return re.search(r"(?<![\\A-Za-z])r(?![A-Za-z])", re.sub(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*r\b", "", text)) \
+    return re.search(r"(?<![\\A-Za-z])r(?![A-Za-z])", re.sub(VECTOR_MARK + r"\s*\{?\s*r\b", "", text)) \
         is not None

@@ -12,13 +12,15 @@ components seen from the body and from space (its own cross product vanishes). T
 other labelled vector differs between frames (the rate of 𝐋's body components against d𝐋/dt), so
 a statement that takes one, or writes d/dt, keeps its label and is not read here.
 
-May import: the standard library.
+May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
 import re
 
-_BOLD = (r"\\(?:mathbf|boldsymbol|bm|vec)\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])")
+from derive.lecture.latex_spellings import VECTOR_MARK
+
+_BOLD = (VECTOR_MARK + r"\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])")
 _TOKEN = re.compile(r"(?P<sym>\\dot\s*\{\s*" + _BOLD + r"\s*\}|" + _BOLD + r")"
                     r"(?P<label>\s*_\s*(?:\{\s*(?P<b1>[A-Za-z]|\\(?:text|mathrm|rm)\s*\{[A-Za-z]+\})\s*\}"
                     r"|(?P<b2>[A-Za-z])(?![A-Za-z])))?")

@@ -36,6 +36,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture.basis_vectors import compare, name
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 _FAMILIES = ("ijk", "IJK", "xyz", "XYZ")
 _HATTED = re.compile(r"\\hat\b|\\widehat\b")
@@ -48,7 +49,7 @@ _LOST_BACKSLASH = re.compile(r"\\(?:hat|widehat)\s*\{\s*(imath|jmath|alpha|beta|
 """A hat over the letters of a symbol's command (``\\hat{imath}``): the command's backslash lost (names of
 four letters or more: two or three letters under a hat may be a text's own product)."""
 _RATE_OF = r"\\[dt]?frac\s*\{{\s*d\s*{letter}(?![A-Za-z])"
-_ARGUMENT = re.compile(r"(\\(?:boldsymbol|mathbf|bm|vec)\s*\{[^{}]*\})\s*\(\s*t\s*\)")
+_ARGUMENT = re.compile(r"(" + VECTOR_MARK + r"\s*\{[^{}]*\})\s*\(\s*t\s*\)")
 """A bold letter written as a function of time, 𝐯(t): the letter."""
 _FRAMES = {"inertial": "inertial", "fixed": "inertial", "space": "inertial", "abs": "inertial",
            "rel": "relative", "r": "relative", "relative": "relative", "rot": "relative", "body": "relative",

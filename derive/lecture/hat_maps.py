@@ -14,7 +14,7 @@ for one matrix letter R, plain or bold. The space angular velocity, ``\\dot R R^
 ``\\dot R = \\hat{x} R``, is not read here. X must be one symbol (``\\widehat{\\mathbb{I}^{-1}\\Pi}`` names
 none).
 
-May import: the standard library, :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.source`.
+May import: the standard library, :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.source`.
 """
 from __future__ import annotations
 
@@ -22,9 +22,10 @@ import re
 
 from derive.lecture import source
 from derive.lecture.latex_spaces import ONE_SPACING
+from derive.lecture.latex_spellings import BOLD_MARK
 
 _MATRIX = r"(?:\\(?:mathbf|boldsymbol|mathrm|bm)\{([A-Z])\}|([A-Z]))"
-_SYMBOL = r"(\\?[A-Za-z]+|\\(?:mathbf|boldsymbol|bm)\{\\?[A-Za-z]+\})"
+_SYMBOL = r"(\\?[A-Za-z]+|" + BOLD_MARK + r"\{\\?[A-Za-z]+\})"
 _HAT = (r"(?:\\(?:wide)?hat\{" + _SYMBOL + r"\}|\\(?:wide)?hat" + _SYMBOL + r"(?![A-Za-z])"
         r"|\\crossmatrix\(" + _SYMBOL + r"\)|" + _SYMBOL + r"\^\{?\\times\}?)")
 _TRANSPOSE = r"\^\{?(?:T|\\top|\\intercal|-1)\}?"

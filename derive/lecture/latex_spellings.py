@@ -21,6 +21,12 @@ from __future__ import annotations
 BOLD_NAMES = ("mathbf", "boldsymbol", "bm")
 """The bold commands a normalised formula keeps as written."""
 
+BOLD_MARK = r"\\(?:" + "|".join(BOLD_NAMES) + ")"
+"""A bold command as a normalised formula keeps it (one of `BOLD_NAMES`), without its argument."""
+
+VECTOR_MARK = r"\\(?:vec|" + "|".join(BOLD_NAMES) + ")"
+"""A vector's mark as a normalised formula keeps it, an arrow (``\\vec``) or one of `BOLD_NAMES`."""
+
 REWRITTEN_BOLD_NAMES = frozenset({"pmb", "vb", "bold", "mathbfit"})
 """The rarer bold commands, written ``\\boldsymbol`` by the normaliser before any reader sees a formula."""
 

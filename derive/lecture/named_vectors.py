@@ -22,7 +22,7 @@ its own:
 Takes: a statement's LaTeX. Gives: `read`, its reading under `Named` (`lx.NotRead` when it has
 a symbol this model does not know: a unit vector, a tensor, an integral), and `Definitions`.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, SymPy.
 """
 from __future__ import annotations
 
@@ -32,13 +32,14 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 
 TERMS = 2
 """How many generic terms a sum is read for."""
 _TEXT_WORD = re.compile(r"\\(?:text|mathrm|rm|textrm)\s*\{\s*([A-Za-z]+)\s*\}")
 _DOUBLE = re.compile(r"\\(mathbf|boldsymbol|bm|vec)\s*\{\s*\{([^{}]*(?:\{[^{}]*\}[^{}]*)*)\}\s*\}")
 # a bold wrapper around what is bold already (\mathbf{\mathbf{r} \times \mathbf{L}}): a group
-_WRAPPED = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{(?=\s*\\(?:mathbf|boldsymbol|bm|vec)\b)")
+_WRAPPED = re.compile(BOLD_MARK + r"\s*\{(?=\s*" + VECTOR_MARK + r"\b)")
 _NORM = re.compile(r"\|\|([^|]+)\|\|")
 _LABEL = re.compile(r"[A-Za-z]+'*|\d+|\\[A-Za-z]+")
 _CONSTANT = ("m", "M")

@@ -23,22 +23,24 @@ The spins written out, ȧ u + ḃ R_u(a) v + ċ R_u(a) R_v(b) w (the carrying pr
 the text set equal to products of turns in a display before, ``\\mathrm{E}_y = \\mathrm{rot}(\\hat{j},
 \\theta_y)``), hold when the first spin is carried by no turn and each next one by exactly the turns
 of the spins before it; any other sum is left to the other rules.
-May import: the standard library.
+May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
+
 
 _ANGLE = r"(\\[A-Za-z]+|[A-Za-z])\s*(?:_\s*(?:\{\s*([A-Za-z0-9]+)\s*\}|([A-Za-z0-9])))?"
-_UNIT = re.compile(r"\\(?:wide)?hat\s*(?:\{\s*(?:\\(?:mathbf|bm|boldsymbol)\s*)?\{?\s*([xyzijk])\s*\}?\s*\}|([xyzijk]))")
+_UNIT = re.compile(r"\\(?:wide)?hat\s*(?:\{\s*(?:" + BOLD_MARK + r"\s*)?\{?\s*([xyzijk])\s*\}?\s*\}|([xyzijk]))")
 _RATE = re.compile(r"\\dot\s*(?:\{\s*" + _ANGLE + r"\s*\}|" + _ANGLE + r")\s*(?:_\s*(?:\{\s*([A-Za-z0-9]+)\s*\}|([A-Za-z0-9])))?")
 _TURN = re.compile(r"R\s*_\s*\{?\s*([xyz])\s*\}?\s*\(\s*(-?)\s*" + _ANGLE + r"\s*\)")
 _ROT = re.compile(r"\\(?:mathrm|operatorname|text)\s*\{\s*rot\s*\}\s*\(\s*" + _UNIT.pattern + r"\s*,\s*(-?)\s*" + _ANGLE + r"\s*\)")
 _NAMED = re.compile(r"([A-Z])\s*(?:_\s*(?:\{\s*([0-9])\s*\}|([0-9])))?(?![A-Za-z0-9{_])")
 """A matrix the text names in its prose (``T_1``): a capital with a digit as its subscript, or alone."""
-_OMEGA = re.compile(r"\s*\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\omega\s*\}?\s*")
-_PARTIAL = re.compile(r"\s*\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*\\omega\s*\}?\s*_\s*\{?\s*[A-Za-z0-9]\s*\}?\s*")
+_OMEGA = re.compile(r"\s*" + VECTOR_MARK + r"\s*\{?\s*\\omega\s*\}?\s*")
+_PARTIAL = re.compile(r"\s*" + VECTOR_MARK + r"\s*\{?\s*\\omega\s*\}?\s*_\s*\{?\s*[A-Za-z0-9]\s*\}?\s*")
 """The angular velocity after some of the turns, ``\\vec{\\omega}_p``: a bold ω with a one-letter subscript."""
 _PRODUCT_NAME = re.compile(r"(?:\\mathrm\s*\{\s*([A-Z])\s*\}|([A-Z]))\s*(?:_\s*(?:\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9])))?(?![A-Za-z0-9{(])")
 """A matrix the text sets equal to a product of turns in its displays, ``\\mathrm{E}_p = \\mathrm{E}_y \\mathrm{rot}(\\hat{k}, \\theta_p)``."""

@@ -12,15 +12,16 @@ Takes: a reading of `derive.lecture.vector_algebra_model` (members with their ge
 their source spans, whether they have a rate). Gives `sides` (which member is the text's torque
 and which the equation's other side) and `judged` (the verdict and why).
 
-May import: :mod:`derive.lecture.vector_algebra_model`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.vector_algebra_model`, SymPy.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture import vector_algebra_model as va
+from derive.lecture.latex_spellings import VECTOR_MARK
 
-_BOLD = r"\\(?:vec|boldsymbol|mathbf|bm)\s*\{?\s*"
+_BOLD = VECTOR_MARK + r"\s*\{?\s*"
 _INERTIA = re.compile(r"(?<![\\A-Za-z])I(?![A-Za-z])|" + _BOLD + r"I(?![A-Za-z])|\\mathbb\s*\{?\s*I(?![A-Za-z])")
 _CROSS = re.compile(r"\\times|×|\\cross")
 _OMEGA_RATE = re.compile(r"\\dot\s*\{?\s*" + _BOLD + r"\\omega|\\frac\s*\{\s*d\s*" + _BOLD + r"\\omega|"

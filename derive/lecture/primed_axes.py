@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import re
 
-from derive.lecture.latex_spellings import BOLD
+from derive.lecture.latex_spellings import BOLD, BOLD_MARK
 from derive.lecture.vocabulary import NotRead, scan
 
 # \hat{i}', \hat i', \hat{\mathbf{i}}', \mathbf{\hat{i}}' (any bold face), \hat{\imath}', with ' or ^\prime / ^{\prime}
@@ -48,8 +48,8 @@ _AXIS = r"_\s*(?:\{\s*([123])\s*\}|([123]))"
 _PRIMED_RATE = re.compile(r"\\omega\s*(?:" + _AXIS + r"\s*" + _PRIME + r"|" + _PRIME + r"\s*" + _AXIS + r")")
 
 # the same letters with no prime, index or power after them: \hat{z}, \hat z, \bm{\hat{z}}, \hat{\mathbf{k}}
-_PLAIN = re.compile(r"(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*\\hat\s*\{?\s*([ijkxyz])\s*\}?\s*\}"
-                    r"|\\hat\s*\{\s*(?:\\(?:mathbf|bm|boldsymbol)\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
+_PLAIN = re.compile(r"(?:" + BOLD_MARK + r"\s*\{\s*\\hat\s*\{?\s*([ijkxyz])\s*\}?\s*\}"
+                    r"|\\hat\s*\{\s*(?:" + BOLD_MARK + r"\s*\{\s*([ijkxyz])\s*\}|\\([ij])math|([ijkxyz]))\s*\}"
                     r"|\\hat\s+([ijkxyz])(?![A-Za-z]))"
                     r"(?!\s*(?:'|\^|_))")
 

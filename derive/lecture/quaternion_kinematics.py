@@ -16,7 +16,7 @@ or a step of it (``\\mathbf{q}_{t+1} = e^{\\frac{1}{2}\\boldsymbol\\Omega(\\bold
   X = q_t at Δt = 0), and is otherwise `unchecked` — a step that is not exact may be the scheme
   the text chooses (a first-order update), never flagged.
 
-May import: :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_reader`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_reader`, SymPy.
 """
 from __future__ import annotations
 
@@ -27,6 +27,7 @@ import sympy as sp
 
 from derive.lecture.quaternion_algebra import Names, Quat, Unread, components, hamilton, time_rate
 from derive.lecture.quaternion_reader import read
+from derive.lecture.latex_spellings import BOLD_MARK
 
 # three exact points: rational components, a rational point of the unit sphere for a unit vector
 _VALUES = ((sp.Rational(3, 7), sp.Rational(-5, 11), sp.Rational(2, 13), sp.Rational(7, 5), sp.Rational(-4, 9)),
@@ -39,7 +40,7 @@ _S3 = ((sp.Rational(1, 5), sp.Rational(2, 5), sp.Rational(2, 5), sp.Rational(4, 
        (sp.Rational(2, 9), sp.Rational(-4, 9), sp.Rational(5, 9), sp.Rational(6, 9)),
        (sp.Rational(1, 2), sp.Rational(1, 2), sp.Rational(-1, 2), sp.Rational(1, 2)))
 _TINY = sp.Float("1e-20")
-_STEP = re.compile(r"^\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\s*\}?\s*_\s*\{\s*([A-Za-z])\s*\+\s*1\s*\}\s*$")
+_STEP = re.compile(r"^\s*" + BOLD_MARK + r"\s*\{?\s*q\s*\}?\s*_\s*\{\s*([A-Za-z])\s*\+\s*1\s*\}\s*$")
 
 
 class Point(dict):

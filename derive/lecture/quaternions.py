@@ -26,7 +26,7 @@ JPL one (its reverse) where it names that, and otherwise both: a link is judged 
 rules give one verdict. A link that fails with a bold vector the text has not called a unit vector
 is held to fail only if it fails with that vector a unit one too.
 
-May import: :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_kinematics`,
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.quaternion_algebra`, :mod:`derive.lecture.quaternion_kinematics`,
 :mod:`derive.lecture.quaternion_reader`, :mod:`derive.lecture.statements`, SymPy.
 """
 from __future__ import annotations
@@ -39,10 +39,11 @@ from derive.lecture.quaternion_algebra import Names, Quat, Unread, components
 from derive.lecture.quaternion_kinematics import Point, QuaternionSteps, difference, flat, only_omega, step_of
 from derive.lecture.quaternion_reader import applied_name, read
 from derive.lecture.statements import top_level
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
-_MARK = re.compile(r"\\otimes|\\frac\s*\{\s*d\s*q\s*\}|\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\b|e\^\{?\s*\\(?:mathbf|boldsymbol|bm)")
-_BOLD_NAME = r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
+_MARK = re.compile(r"\\otimes|\\frac\s*\{\s*d\s*q\s*\}|" + BOLD_MARK + r"\s*\{?\s*q\b|e\^\{?\s*" + BOLD_MARK)
+_BOLD_NAME = VECTOR_MARK + r"\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
 _NAME_ONLY = re.compile(r"\s*(?:\\Delta\s*)?(?:\\(?:dot|ddot|dddot)\s*\{?\s*)?" + _BOLD_NAME + r"\s*\}?\s*(?:\(t\))?\s*$")
 _RATE_ROW = re.compile(r"\s*\\(dot|ddot|dddot)\s*\{\s*" + _BOLD_NAME + r"\s*\}\s*$")
 _UNIT = re.compile(r"\bunit\s+(?:\w+\s+){0,2}\$\s*" + _BOLD_NAME)
@@ -50,9 +51,9 @@ _ZERO_RATE = re.compile(r"^\s*\\(dot|ddot)\s*\{?\s*" + _BOLD_NAME + r"\s*\}?\s*=
 _SET = re.compile(r"^\s*(" + _BOLD_NAME + r"|\\[A-Za-z]+)\s*=\s*(?!.*=)(.+)$", re.S)
 _ORDER = {"dot": 1, "ddot": 2, "dddot": 3}
 _PLAIN_RATE = re.compile(r"^\s*(?:\\dot\s*\{?\s*q\s*\}?|\\frac\s*\{\s*d\s*q\s*\}\s*\{\s*d\s*t\s*\})\s*$")
-_Q_RATE = re.compile(r"^\s*(?:\\dot\s*\{\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*q\s*\}?\s*\}|\\dot\s*\\(?:mathbf|boldsymbol|bm)"
-                     r"\s*\{\s*q\s*\}|\\frac\s*\{\s*d\s*\\(?:mathbf|boldsymbol|bm)\s*\{\s*q\s*\}\s*\}\s*\{\s*dt\s*\})\s*$")
-_RATE_WRITTEN = {n: re.compile(r"\\" + acc + r"\s*\{?\s*\\(?:mathbf|boldsymbol|bm)\s*\{?\s*\\omega")
+_Q_RATE = re.compile(r"^\s*(?:\\dot\s*\{\s*" + BOLD_MARK + r"\s*\{?\s*q\s*\}?\s*\}|\\dot\s*" + BOLD_MARK +
+                     r"\s*\{\s*q\s*\}|\\frac\s*\{\s*d\s*" + BOLD_MARK + r"\s*\{\s*q\s*\}\s*\}\s*\{\s*dt\s*\})\s*$")
+_RATE_WRITTEN = {n: re.compile(r"\\" + acc + r"\s*\{?\s*" + BOLD_MARK + r"\s*\{?\s*\\omega")
                  for acc, n in _ORDER.items()}
 
 class Quaternions(QuaternionSteps):
@@ -75,7 +76,7 @@ class Quaternions(QuaternionSteps):
             self._q_style = "" if re.search(r"\bq_\{?4\b", body) else "0123" if re.search(r"\bq_\{?0\b", body) \
                 else "wxyz" if re.search(r"\bq_\{?w\b", body) else ""
             # a text that names the components and never writes q bold calls the quaternion plain q
-            self._q_plain = bool(self._q_style) and not re.search(r"\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*q\b", body)
+            self._q_plain = bool(self._q_style) and not re.search(VECTOR_MARK + r"\s*\{?\s*q\b", body)
         return self._q_on
 
     def _quaternion_item(self, item) -> None:

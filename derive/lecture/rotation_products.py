@@ -37,7 +37,7 @@ Capital letters are matrices (those the text writes under ``\vec``, and bold L, 
 vectors), small Latin and Greek letters vectors. ``×`` next to a matrix is the matrix product
 (some texts write it so); between a vector and a matrix it acts on each column (``\omega \times T``).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, SymPy.
 """
 from __future__ import annotations
 
@@ -50,8 +50,9 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
+from derive.lecture.latex_spellings import BOLD_MARK
 
-_ROTATION = re.compile(r"(?:\\(?:mathbf|boldsymbol|bm)\s*\{?\s*([RQTCA])\s*\}?\s*\}?|(?<![\\A-Za-z])([RQTCA]))"
+_ROTATION = re.compile(r"(?:" + BOLD_MARK + r"\s*\{?\s*([RQTCA])\s*\}?\s*\}?|(?<![\\A-Za-z])([RQTCA]))"
                        r"\s*(?:_\s*(\{[^{}]*\}|[A-Za-z0-9]))?\s*(?:\(\s*t\s*\)\s*)?"
                        r"\^\s*\{?\s*(?:T|t|\\top|\\intercal|\\math(?:rm|sf)\s*\{\s*T\s*\}|-1)\s*\}?(?![A-Za-z])")
 _SPEAKS = re.compile(r"rotation|orthogonal", re.I)
@@ -376,7 +377,7 @@ def _of_the_rotation_alone(text, read, used, turns, claims) -> bool:
     if not all(next(iter(turns)) in _letters(side) for side in sides) or isinstance(a, sp.MatrixBase) != \
             isinstance(b, sp.MatrixBase) or isinstance(a, sp.MatrixBase) and a.shape != b.shape:
         return False
-    head = re.compile(r"\s*(?:\\(?:mathbf|boldsymbol|bm)\s*\{\s*)?" + base + r"\s*\}?\s*"
+    head = re.compile(r"\s*(?:" + BOLD_MARK + r"\s*\{\s*)?" + base + r"\s*\}?\s*"
                       + (r"_\s*\{?\s*" + re.escape(sub) + r"\s*\}?\s*" if sub else "") + r"(?:\(\s*t\s*\)\s*)?(?:=|\\equiv)")
     return not any(head.match(c.latex) for c in claims)
 

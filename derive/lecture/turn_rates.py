@@ -26,7 +26,7 @@ Z): its prose decides where it puts the word fixed, inertial or space, or body o
 the capital axes in a sentence ("a *fixed* frame has the basis $(\\bm e_X,\\bm e_Y,\\bm e_Z)$"). A
 statement holds when it holds in the frame the prose names (the fixed one where it names none); it
 `fails` when it does not hold there, the prose having named it, or under either reading.
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spaces`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spaces`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -36,9 +36,10 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.latex_spaces import SPACE
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 from derive.symbolic import rotations as rot
 
-_BOLD = r"\\(?:vec|mathbf|boldsymbol|bm|vect)\s*"
+_BOLD = rf"(?:{VECTOR_MARK}|\\vect)\s*"
 _OMEGA = rf"{_BOLD}\{{?\s*(?:{_BOLD}\{{\s*)?\\omega\s*\}}?\s*\}}?"
 _TURN = re.compile(rf"\s*{_OMEGA}\s*(?:_\s*\{{?\s*(\\[A-Za-z]+)\s*\}}?)?\s*")
 _OPEN = r"(?:\\(?:left|bigl|Bigl|biggl|Biggl|big|Big|bigg|Bigg)\s*)?"
@@ -51,9 +52,9 @@ _COLUMN = re.compile(rf"\s*(?:{_OPEN}[\[(]\s*)?\\begin\{{(array|bmatrix|pmatrix)
 """A written column, bare or in brackets, plain, ``\\left``/``\\right`` or sized (``\\bigl[ … \\bigr]``)."""
 _AXES = re.compile(r"\\\{\s*x\s*('*)\s*,\s*y\s*('*)\s*,\s*z\s*('*)\s*\\\}")
 _NAMED = {"space": 0, "fixed": 0, "inertial": 0, "body": 3}
-_UNIT = (r"(?:\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNxyz])\s*\}?"
-         r"|\\(?:wide)?hat\s*\{?\s*(?:\\(?:boldsymbol|mathbf|bm)\s*)?\{?\s*([XYZNxyzIJKijk])\s*\}?\s*\}?"
-         r"|\\(?:boldsymbol|mathbf|bm)\s*\{?\s*([IJKNijk])\s*\}?)(?![A-Za-z_'])")
+_UNIT = (r"(?:" + VECTOR_MARK + r"\s*\{?\s*e\s*\}?\s*_\s*\{?\s*([XYZNxyz])\s*\}?"
+         r"|\\(?:wide)?hat\s*\{?\s*(?:" + BOLD_MARK + r"\s*)?\{?\s*([XYZNxyzIJKijk])\s*\}?\s*\}?"
+         r"|" + BOLD_MARK + r"\s*\{?\s*([IJKNijk])\s*\}?)(?![A-Za-z_'])")
 _LETTER_AXIS = {"i": "x", "j": "y", "k": "z", "x": "x", "y": "y", "z": "z"}
 _AXIS_TERM = re.compile(r"(.*?)" + SPACE + _UNIT + SPACE + "$", re.S)
 """A term that ends in a unit vector named by its axis letter: the coefficient, then the letter."""
@@ -184,7 +185,7 @@ class TurnRates:
 
     def _names_omega(self, text: str) -> bool:
         """Whether a member is the body's 𝛚 alone, a bold letter the text names the angular velocity."""
-        if not re.fullmatch(r"\s*\\(?:boldsymbol|mathbf|bm|vec)\s*\{?\s*\\(?:omega|Omega)\s*\}?\s*", text):
+        if not re.fullmatch(r"\s*" + VECTOR_MARK + r"\s*\{?\s*\\(?:omega|Omega)\s*\}?\s*", text):
             return False
         try:
             return lx.parse(text, self.vocab).members[0].value is lx.OMEGA_VEC

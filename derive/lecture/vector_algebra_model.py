@@ -38,7 +38,7 @@ import sympy as sp
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture.latex_spaces import SPACE
-from derive.lecture.latex_spellings import BOLD
+from derive.lecture.latex_spellings import BOLD, BOLD_MARK, VECTOR_MARK
 from derive.lecture import point_labels
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
@@ -74,7 +74,7 @@ _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
 # a macro's bold letter in braces, {\boldsymbol L}_i: the letter with its subscript
-_BOLD_GROUP = re.compile(r"\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
+_BOLD_GROUP = re.compile(r"\{\s*" + BOLD_MARK + r"\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
 # a period between a vector and the next operand, (\vec{a}.\vec{c}): the dot product, not a sentence's end
 _DOT_AS_PERIOD = re.compile(r"(?<=[}\)])\s*\.\s*(?=\\(?:vec|hat|boldsymbol|mathbf|bm|left)\b|\()")
 POINT_LABELS = ("cm", "CM", "com", "G", "O", "C")
@@ -85,7 +85,7 @@ _DOTLESS = re.compile(r"([A-Za-z])?\\([ij])math(?![A-Za-z])")
 """ı, ȷ: i and j, set apart from a command written before them unbraced (``\\hat\\imath`` is î)."""
 # an accent over a bold letter written without braces, \dot{\boldsymbol\omega}: the accent over the bold letter
 _ACCENTED_BOLD = re.compile(r"\\(dot|ddot)\s*\{\s*\\(boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
-_HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
+_HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*" + BOLD_MARK + r"\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
 _VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)" + SPACE + r"V\b")
@@ -129,10 +129,10 @@ def _pieces(text: str) -> str:
     return text
 
 
-_MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*\\(?:boldsymbol|mathbf|bm)\s*\{?\s*p\s*\}?(?![A-Za-z_])")
+_MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*" + BOLD_MARK + r"\s*\{?\s*p\s*\}?(?![A-Za-z_])")
 
 
-_UNIT_TENSOR = re.compile(r"\\(?:mathbf|boldsymbol|bm)\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
+_UNIT_TENSOR = re.compile(BOLD_MARK + r"\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
 
 
 _PART_LABEL = re.compile(r"(\\vec\s*\{?\s*a\s*\}?\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))\s*\^\s*\{?\s*([tn])\s*\}?(?![A-Za-z{])")
@@ -521,7 +521,7 @@ class Algebra:
 
 
 _SUM_INDEX = re.compile(r"\\sum(?:\\limits)?\s*_\s*\{?\s*([A-Za-z])(?![A-Za-z])")
-_PARTICLE_SUB = r"(?:(?<![A-Za-z\\])m|\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*[rvp]\s*\}?)\s*_\s*(?:\{\s*%s\s*\}|%s(?![A-Za-z]))"
+_PARTICLE_SUB = r"(?:(?<![A-Za-z\\])m|" + VECTOR_MARK + r"\s*\{?\s*[rvp]\s*\}?)\s*_\s*(?:\{\s*%s\s*\}|%s(?![A-Za-z]))"
 
 
 def _particle_letter(source: str, letter: str) -> bool:

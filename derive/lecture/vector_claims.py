@@ -6,7 +6,7 @@ a position's inertial rate as the body velocity turned (ṙᵢ = R𝐕_b).
 
 Gives the mixin `VectorStatements` of `derive.lecture.notes_check.Checker`.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.vectors` (and its
 :mod:`~derive.lecture.vector_models`, :mod:`~derive.lecture.vector_parser`),
 :mod:`derive.lecture.comparing`, :mod:`derive.symbolic.rotations` (the angles),
 :mod:`derive.symbolic.lagrangian` (the principal moments), SymPy.
@@ -27,12 +27,13 @@ from derive.lecture.vector_models import is_quantity
 from derive.lecture.vector_parser import LAW
 from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
+from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 
 
-_VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?\\(?:vec|boldsymbol|mathbf|bm)\s*\{")
-_BODY_AXIS = re.compile(r"\\hat\s*\{\s*\\(?:boldsymbol|mathbf|bm)\s*\{\s*e\s*_\s*\{?\s*[123]")
-_OMEGA_LEFT = re.compile(r"\s*\\(?:boldsymbol|mathbf|vec|bm)\s*(?:\{\s*\\omega\s*\}|\\omega(?![A-Za-z]))\s*=(?!=)")
-_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:\\(?:mathbf|boldsymbol|bm|vec)\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
+_VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?" + VECTOR_MARK + r"\s*\{")
+_BODY_AXIS = re.compile(r"\\hat\s*\{\s*" + BOLD_MARK + r"\s*\{\s*e\s*_\s*\{?\s*[123]")
+_OMEGA_LEFT = re.compile(r"\s*" + VECTOR_MARK + r"\s*(?:\{\s*\\omega\s*\}|\\omega(?![A-Za-z]))\s*=(?!=)")
+_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:" + VECTOR_MARK + r"\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
            r"(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
 _ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)" + SPACE + _UNIT_E)
 """A term ``\\omega_1 \\widehat{\\mathbf{e}}_1``, ``\\lambda \\hat{\\mathbf{e}}_2``: one symbol along a body axis."""
@@ -375,7 +376,7 @@ class VectorStatements:
                   "is Euler's equation for that component (Iᵢ ω̃̇ᵢ = ((Iω̃)×ω̃)ᵢ)")
 
 
-_LABELLED = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
+_LABELLED = VECTOR_MARK + r"\s*\{\s*([A-Za-z])\s*_\s*\{?\s*%s\s*\}?\s*\}"
 _POSITION_RATE = re.compile(r"\\frac\s*\{\s*" + vm.DIFFERENTIAL + r"\s*" + _LABELLED % r"(?:i|I|N|e)" + r"\s*\}\s*\{\s*"
                             + vm.DIFFERENTIAL + r"\s*t\s*\}\s*=\s*"
                             r"(R\s*_\s*\{[^{}]*\}(?:\^\s*\{?\s*(?:T|-1)\s*\}?)?)" + SPACE + _LABELLED % r"(?:b|B)" + r"\s*$")

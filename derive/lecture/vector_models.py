@@ -18,6 +18,7 @@ from derive.lecture.vector_parser import LAW, _FreeIndex
 from derive.lecture.zero_test import expanded, expanded_derivative
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 PARTICLES = 2
 M_P = sp.symbols(f"m_p1:{PARTICLES + 1}", positive=True)
@@ -341,12 +342,12 @@ def _particle_index(text: str) -> str | None:
     return None
 
 
-_VEC = r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{(?:[^{}]|\{[^{}]*\})*\}"
+_VEC = VECTOR_MARK + r"\s*\{(?:[^{}]|\{[^{}]*\})*\}"
 _LABEL = r"(\{[^{}]*\}|[A-Za-z])"
 DIFFERENTIAL = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + SPACE
 """The differential d, upright or italic, with the spacing a text may set after it (``\\mathrm{d}\\,``)."""
 _RELATIVE_RATE = re.compile(r"\\frac\s*\{\s*\\tilde\s*\{\s*" + DIFFERENTIAL + r"\s*\}" + SPACE + r"(" + _VEC + r")\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
-_ZERO_VECTOR = re.compile(r"\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*0\s*\}")
+_ZERO_VECTOR = re.compile(VECTOR_MARK + r"\s*\{\s*0\s*\}")
 # the fraction in a group of its own and the vector in one, as plain TeX's {d{\bf G}\over dt} writes them
 _FRAC_RATE = (r"(?P<o>\{\s*)?\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(?P<b>\{\s*)?(" + _VEC + r")\s*(?(b)\}\s*)\}\s*\{\s*"
               + DIFFERENTIAL + r"\s*t")
@@ -356,7 +357,7 @@ _RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
 _RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC
                              + r"(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
 _VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + _VEC + r")")
-_BODY_LABEL = re.compile(r"(\\(?:vec|mathbf|boldsymbol|bm)\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
+_BODY_LABEL = re.compile(r"(" + VECTOR_MARK + r"\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 _FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
 

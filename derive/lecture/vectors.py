@@ -56,9 +56,10 @@ from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
 from derive.lecture.vector_models import Model, model_of, prepare, vectorish
 from derive.lecture.vector_parser import Reading, _is_tensor, _is_vector
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 
-_ROW_VECTOR = re.compile(r"\\(?:boldsymbol|mathbf|bm|vec)\s*\{[^{}]*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?\s*\^\s*"
+_ROW_VECTOR = re.compile(VECTOR_MARK + r"\s*\{[^{}]*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?\s*\^\s*"
                          r"(?:T\b|\{\s*(?:T|\\top|\\mathrm\{T\}|\\mathsf\{T\})\s*\}|\\top\b)")
 """A bold vector transposed, ``\\boldsymbol{\\omega}^{T}``: a row, so the statement is in matrix notation."""
 
