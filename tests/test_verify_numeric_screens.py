@@ -5,7 +5,8 @@ import mpmath
 import pytest
 import sympy as sp
 
-from derive.lecture import mp_values
+from derive.lecture import comparing, mp_values
+from derive.lecture import notes_check as nc
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import zero_test as zt
 from derive.lecture.elliptic import JacobiSN
@@ -167,3 +168,16 @@ def test_the_numeric_screens_leave_a_formula_with_no_value_to_the_symbolic_steps
     # an undefined function has no value at a point: neither screen decides, nor raises
     assert not zt.differs_somewhere(f * x, f, "seed") and not zt.ratio_varies(f * x, f, "seed")
     assert not zt.differs_somewhere(sp.Derivative(f, a) * x, sp.Derivative(f, a), "seed")
+
+
+def test_an_angle_recovered_by_its_arctangent_holds_on_the_principal_branch_whichever_points_are_drawn():
+    # γ = arctan(sin γ / cos γ) agrees where γ lies in (−π/2, π/2) and is a multiple of π off elsewhere:
+    # the verdict must not follow which seeded points (the seed is the display's text) fall in that range
+    g = sp.Symbol("gamma")
+    claim, recovered = sp.Matrix([g]), sp.Matrix([sp.atan(sp.sin(g) / sp.cos(g))])
+    assert all(comparing.zero(claim, recovered, f"seed {k}")[0] for k in range(12))
+    for slip in (sp.atan(sp.cos(g) / sp.sin(g)), -sp.atan(sp.sin(g) / sp.cos(g)), sp.atan(2 * sp.sin(g) / sp.cos(g))):
+        assert not any(comparing.zero(claim, sp.Matrix([slip]), f"seed {k}")[0] for k in range(6))
+    for brackets in (("\\left(", "\\right)"), ("(", ")"), ("\\bigl(", "\\bigr)")):
+        text = "# T\n\n$$\n\\gamma = \\arctan{0}\\frac{{\\sin\\gamma}}{{\\cos\\gamma}}{1}\n$$\n".format(*brackets)
+        assert [c.verdict for c in nc.check_text(text)] == ["holds"], text

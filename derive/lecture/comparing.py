@@ -80,7 +80,7 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
     else:
         found = _counterexample(lhs, rhs, seed, roots)
         if found is not None:
-            return found
+            return _on_principal_branch(lhs, rhs, seed) or found
         steps = [_symbolic_zero(d) for d in diffs]
     if all(steps):
         return True, max(steps, key=zt.SYMBOLIC_STEPS.index)
@@ -89,7 +89,44 @@ def _zero(lhs: sp.ImmutableMatrix, rhs: sp.ImmutableMatrix, seed: str) -> tuple[
         if real is not None:
             return real
     out = zt.numeric_zero(lhs, rhs, seed)
-    return out.ok, out.method
+    return (out.ok, out.method) if out.ok else _on_principal_branch(lhs, rhs, seed) or (out.ok, out.method)
+
+
+_BRANCH_POINTS = 60
+"""Points drawn for `_on_principal_branch`: enough that a claim agreeing on a principal branch agrees at `zero_test.POINTS` of them."""
+
+
+def _on_principal_branch(lhs, rhs, seed):
+    """(True, how) for a scalar claim with an arctangent (``γ = \\arctan(\\sin γ / \\cos γ)``) whose sides
+    agree at `zero_test.POINTS` seeded points and, at every other, differ by a whole number of π: the
+    arctangent's value is the principal one, the angle it recovers lies in (−π/2, π/2) where the two
+    agree, and which seeded points fall there must not decide the verdict. None otherwise."""
+    if lhs.shape != (1, 1) or not any(sp.sympify(e).has(sp.atan, sp.acot) for e in (*lhs, *rhs)):
+        return None
+    exprs = [sp.sympify(lhs[0]), sp.sympify(rhs[0])]
+    symbols = sorted(set().union(*(_free_symbols(e) for e in exprs)), key=lambda x: x.name)
+    f = mp_values.evaluator(symbols, exprs)
+    rng = random.Random(seed + "branch")
+    same = 0
+    for _ in range(_BRANCH_POINTS):
+        point = [mpmath.mpf(p.p) / p.q for p in zt.sample(symbols, rng)]
+        with mpmath.workdps(zt.DIGITS):
+            try:
+                a, b = (mpmath.mpmathify(v) for v in f(*point))
+            except (ZeroDivisionError, ValueError, TypeError, NotImplementedError):
+                continue
+            if not (mpmath.isfinite(a) and mpmath.isfinite(b)) or mpmath.im(a) or mpmath.im(b):
+                return None
+            tol = max(1, abs(a), abs(b)) * mpmath.mpf(10) ** (10 - zt.DIGITS)
+            turns = (a - b) / mpmath.pi
+            if abs(a - b) <= tol:
+                same += 1
+            elif abs(turns - mpmath.nint(turns)) * mpmath.pi > tol:
+                return None     # apart by other than a multiple of π: the usual counterexample stands
+    if same < zt.POINTS:
+        return None
+    return True, (f"on the principal branch of its arctangent (mpmath {zt.DIGITS} digits: the sides agree at "
+                  f"{same} points and differ by a multiple of π elsewhere)")
 
 
 def _counterexample(lhs, rhs, seed, roots):
