@@ -108,7 +108,8 @@ SHORT = {
         "the condition for regular precession, U'(theta) = ... = 0, is checked (U' the derivative of the text's U, "
         "only its = 0 a condition); the quadratic in phidot and its discriminant are in theta_m, the extremum the text "
         "names without tying it; the worked example's constants L_Z0, omega_Z0, E_0, its matrices I', I_C (in "
-        "pmatrix, the parallel-axis sum a matrix against a name) and the time to stand up (an integral) are not read",
+        "pmatrix, stated for the disc's shape and the centre's place, which the reader does not model) and the time "
+        "to stand up (an integral) are not read",
     ("free-asymmetric-body-jacobi-elliptic-solution-zh-notes-zxz", "checked"):
         "omega_2 alone in sn (its companions come a display later) and case 2's three rates in sn, cn, dn (its "
         "k^2 = ... < 1 is a chain the reader does not record, so case 1's k^2 stands) are left unchecked; the integral F in the "

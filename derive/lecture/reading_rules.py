@@ -27,6 +27,7 @@ from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
+from derive.lecture.head_shapes import HeadShapes
 from derive.lecture.implications import Implications
 from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.inferred_convention import ConventionProbe
@@ -64,5 +65,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins):
+                   NestedSpins, HeadShapes):
     """Every reading rule, in method-lookup order (see the module docstring)."""
