@@ -460,7 +460,7 @@ class Algebra:
         base, sub = a.base, a.sub
         system = "body" if sub in ("system", "textsystem", "G", "mathcalG", "mathrmG") else self.system
         point = env.get("point") is not None and sub == env.get("index")
-        if base == "L" or base in self.state.momenta or (base == "H" and bold):
+        if base == "L" and base not in self.state.torques or base in self.state.momenta or (base == "H" and bold):
             if bold:                        # 𝐇, engineering dynamics' angular momentum (Beer & Johnston, Kane)
                 if point:
                     return mass * r.cross(W.cross(r))
