@@ -194,8 +194,8 @@ SHORT = {
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
         "disk's rotation matrix and its Omega_i (the hat map's components, against R's 3-1-2 turns) are checked",
     ("spacecraft-course-notes-rigid-body-energy-euler-equations", "checked"):
-        "9 of 21 (Euler's equations and the transport theorem for H, ^N d/dt = ^B d/dt + omega x H, and T_rot as an "
-        "integral over the body): its other energy displays integrate with the centre of mass's R_C, its laws about C "
+        "9 of 21 (Euler's equations and the transport theorem for H, ^N d/dt = ^B d/dt + omega x H, T_rot as an "
+        "integral over the body, H = [I] omega): its other energy displays integrate with the centre of mass's R_C, its laws about C "
         "write the torque L_C, which nothing ties, and the inertia tensor as ^B[I_C], a frame's label before a bracket "
         "the reader does not read",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "checked"):
