@@ -98,7 +98,8 @@ SHORT = {
         "the condition for regular precession, U'(theta) = ... = 0, is checked (U' the derivative of the text's U, "
         "only its = 0 a condition); the quadratic in phidot and its discriminant are in theta_m, the extremum the text "
         "names without tying it; the worked example's constants L_Z0, omega_Z0, E_0, its matrices I', I_C (in "
-        "pmatrix, the parallel-axis sum a matrix against a name) and the time to stand up (an integral) are not read",
+        "pmatrix, stated for the disc's shape and the centre's place, which the reader does not model) and the time "
+        "to stand up (an integral) are not read",
     ("free-asymmetric-body-jacobi-elliptic-solution-zh-notes-zxz", "checked"):
         "omega_2 alone in sn (its companions come a display later) and case 2's three rates in sn, cn, dn (its "
         "k^2 = ... < 1 is a chain the reader does not record, so case 1's k^2 stands) are left unchecked; the integral F in the "
@@ -177,9 +178,10 @@ SHORT = {
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
         "disk's rotation matrix and its Omega_i (the hat map's components, against R's 3-1-2 turns) are checked",
     ("spacecraft-course-notes-rigid-body-energy-euler-equations", "checked"):
-        "5 of 21 (Euler's equations and the transport theorem for H, ^N d/dt = ^B d/dt + omega x H): its energy displays "
-        "integrate over the body (int_B r-dot . r-dot dm) with the centre of mass's R_C, its laws about C write the torque "
-        "L_C, which nothing ties, and the inertia tensor as ^B[I_C], a frame's label before a bracket the reader does not read",
+        "9 of 21 (Euler's equations and the transport theorem for H, ^N d/dt = ^B d/dt + omega x H, T_rot as an "
+        "integral over the body, H = [I] omega): its other energy displays integrate with the centre of mass's R_C, its laws about C "
+        "write the torque L_C, which nothing ties, and the inertia tensor as ^B[I_C], a frame's label before a bracket "
+        "the reader does not read",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "checked"):
         "4 of 17: its undefined vector macros (\\vF, \\vr, \\vb) read as symbols, the derivatives of its "
         "definitions hold; vector calculus in the project's macros that take an argument (\\scal, \\pa, "

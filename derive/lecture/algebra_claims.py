@@ -382,11 +382,12 @@ class AlgebraStatements:
         return "holds", f"{WHY}: exact (expand)"
 
 
-_NAME_FIRST = re.compile(r"\s*((?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z])?)"
+_NAME_FIRST = re.compile(r"\s*((?:\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{\s*[A-Za-z]\s*\}|[A-Za-z])(?:\s*_\s*\{\s*[A-Za-z]{1,2}\s*\}|\s*_\s*[A-Za-z]"
+                         r"|\s*_\s*\{\s*[A-Za-z]{3,}\s*\})?)"
                          r"\s*(?:=(?!=)|\\equiv)")
 """A statement opening with a lone symbol set equal to what follows (``K = …``, ``\\mathbf{I}_{a} \\equiv …``
 in any bold or under an arrow, ``\\boldsymbol{r}_{G} = …``, ``\\vec{r}_{G} = …``,
-``I_{ab} \\equiv …``)."""
+``I_{ab} \\equiv …``, a word for its label, ``T_{rot} = …``)."""
 
 
 def _expanded(text: str, named: dict) -> str:

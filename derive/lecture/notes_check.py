@@ -425,7 +425,7 @@ class Checker(ReadingRules):
 
     # -- kinds
     def _definition(self, line, piece, parsed):
-        m0 = parsed.members[0]
+        start, m0 = len(self.claims), parsed.members[0]
         key = m0.value
         forms = self.d.forms(key, m0.args) if isinstance(key, sp.Symbol) else []
         if any(r == "≡" for r in parsed.relations) and key in (lx.Omega, lx.Omega1, lx.Omega2):
@@ -444,7 +444,7 @@ class Checker(ReadingRules):
             for k, m in enumerate(parsed.members[1:], start=1):
                 self._one(line, piece, "identity" if kind == "identity" else kind, left, m.value, parsed, k,
                           approx=approx, label=key)
-            return
+            return self._links_past_head(line, piece, parsed, start)
         for k, m in enumerate(parsed.members[1:], start=1):
             if m.value == 0 and key is lx.DLDT:
                 self._torque_free(line, piece, parsed)
@@ -457,6 +457,7 @@ class Checker(ReadingRules):
                 # a flagged definition is not carried forward (one slip is reported once): the
                 # displays after it use its correction, or the derived quantity
                 self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
+        self._links_past_head(line, piece, parsed, start)
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 

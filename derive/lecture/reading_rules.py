@@ -29,6 +29,7 @@ from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
+from derive.lecture.head_shapes import HeadShapes
 from derive.lecture.implications import Implications
 from derive.lecture.free_indices import FreeIndices
 from derive.lecture.free_integrals import FreeIntegrals
@@ -68,5 +69,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes):
     """Every reading rule, in method-lookup order (see the module docstring)."""

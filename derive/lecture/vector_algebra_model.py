@@ -73,6 +73,8 @@ def labelled_torque(sub: str) -> bool:
 _INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
+_ROT_NAME = re.compile(r"\s*[A-Za-z]\s*_\s*\{?\s*rot[a-z]*\s*\}?\s*=")
+"""A name labelled as the rotational part opening the statement, ``T_{rot} =``."""
 # a macro's bold letter in braces, {\boldsymbol L}_i: the letter with its subscript
 _BOLD_GROUP = re.compile(r"\{\s*" + BOLD_MARK + r"\s*(\\[A-Za-z]+|[A-Za-z])\s*\}")
 # a period between a vector and the next operand, (\vec{a}.\vec{c}): the dot product, not a sentence's end
@@ -180,8 +182,10 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
 
 def lecture_notation(text: str) -> bool:
     """Whether a statement is in the lecture's own vector notation (m_p, Σ_p, Ï, ω̃, ê_i, frames),
-    which `derive.lecture.vectors` reads."""
-    return bool(_LECTURE.search(text))
+    which `derive.lecture.vectors` reads; an integral over the mass, which that reader does not read,
+    under a name labelled as the rotational part (T_rot = ½ ∫ ṙ·ṙ dm) is this module's."""
+    marks = _LECTURE.findall(text)
+    return bool(marks) and not ("\\int" in text and _ROT_NAME.match(text) and len(marks) == 1)
 
 
 def markers(text: str, bold: bool = False) -> bool:
@@ -456,7 +460,7 @@ class Algebra:
         base, sub = a.base, a.sub
         system = "body" if sub in ("system", "textsystem", "G", "mathcalG", "mathrmG") else self.system
         point = env.get("point") is not None and sub == env.get("index")
-        if base == "L" or base in self.state.momenta or (base == "H" and bold):
+        if base == "L" and base not in self.state.torques or base in self.state.momenta or (base == "H" and bold):
             if bold:                        # 𝐇, engineering dynamics' angular momentum (Beer & Johnston, Kane)
                 if point:
                     return mass * r.cross(W.cross(r))
