@@ -287,6 +287,20 @@ SHORT = {
         "a library's manual: the DCM's rate -[omega x] D is taken for a definition, \\texttt{vect} is not read, "
         "the quaternion's rate is written with the frames' subscript (q_ba), and the CRP's and MRP's rates hold "
         "cross and dot products inside a fraction",
+    ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
+        "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
+        "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor \\mathbf{I}_{\\mathcal{B}}^{\\bm{c}}, inner "
+        "products in angle brackets and quaternions written as vectors (omega q, e^{dt/2 omega}) are not read",
+    ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "found"):
+        "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "
+        "integrals over the body",
+    ("game-physics-notes-collision-impulse-relative-velocity-zh", "checked"):
+        "game physics notes on the collision impulse: the two bodies' subscripted names (v_a, omega_a, I_a^{-1}, "
+        "r_a), before and after as superscripts (v_rel^-, v_rel^+) and a scalar impulse j along the normal n "
+        "are not read",
+    ("game-physics-notes-collision-impulse-relative-velocity-zh", "found"):
+        "its one slip, the masses' term 1/m_a + 1/m_b left a number beside vectors when j is taken out, sits "
+        "in the unread derivation of j",
 }
 
 FLOOR = {"checked": 854, "slips_flagged": 99, "holds_flagged": 0}
