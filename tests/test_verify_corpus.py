@@ -283,6 +283,20 @@ SHORT = {
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
         "its three slips (a matrix element's bra, the spin-1/2 rotation's entries, the spin-1 J_x and J_y) sit in "
         "displays with kets, \\hbar or the rotation operator, none of them read",
+    ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
+        "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
+        "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor \\mathbf{I}_{\\mathcal{B}}^{\\bm{c}}, inner "
+        "products in angle brackets and quaternions written as vectors (omega q, e^{dt/2 omega}) are not read",
+    ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "found"):
+        "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "
+        "integrals over the body",
+    ("game-physics-notes-collision-impulse-relative-velocity-zh", "checked"):
+        "game physics notes on the collision impulse: the two bodies' subscripted names (v_a, omega_a, I_a^{-1}, "
+        "r_a), before and after as superscripts (v_rel^-, v_rel^+) and a scalar impulse j along the normal n "
+        "are not read",
+    ("game-physics-notes-collision-impulse-relative-velocity-zh", "found"):
+        "its one slip, the masses' term 1/m_a + 1/m_b left a number beside vectors when j is taken out, sits "
+        "in the unread derivation of j",
 }
 
 FLOOR = {"checked": 875, "slips_flagged": 104, "holds_flagged": 0}
