@@ -60,8 +60,6 @@ MISSES: dict[str, str] = {
     "medium space between factors": _MEDIUM_SPACE_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
-    "sin(theta)": "one statement of an intermediate-axis derivation (not traced yet)",
-    "sin{theta}": "\\sin{\\theta}_0: the rewrite moves the subscript onto a group (\\sin\\theta_0 is θ₀'s sine)",
 }
 """Kinds that still leave some displays of the corpus unchecked (or, for the two that change what a
 display says, flag some): what the reader misses."""

@@ -48,7 +48,10 @@ _ARGUMENT_BEFORE = "".join(rf"(?<!\\{c})" for c in (
 _ARGUMENT_BEFORE = _ARGUMENT_BEFORE.replace("^", "\\^").replace("{", "\\{").replace("}", "\\}") + r"(?<![^A-Za-z\\]d)"
 _BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE + _ARGUMENT_BEFORE
                     + r" (?=\\(?!right|cdot|times|quad|equiv|approx|ge\b|le\b)[A-Za-z]|[A-Za-z(])")
-_FUNCTION_ARG = r"(\\(?:sin|cos)(?:\^\{?2\}?)?)\s*(\\[A-Za-z]+)(?![A-Za-z])"
+# The argument with its subscript (\\sin \\theta_{\\beta\\alpha} is the sine of θ_βα): brackets set before the
+# subscript would make it the subscript of the sine, another formula; a command taking braced arguments
+# (\\frac{\\theta}{2}) is the argument with them, and a sizing command (\\left( …) none: both are left as written.
+_FUNCTION_ARG = r"(\\(?:sin|cos)(?:\^\{?2\}?)?)\s*(\\(?!(?:left|right|[bB]igg?[lr]?)(?![A-Za-z]))[A-Za-z]+(?![A-Za-z])(?:_(?:\{[^{}]*\}|\\[A-Za-z]+|[A-Za-z0-9]))?)(?!\s*[{_])"
 # A product sign is no space: after a differential (\mathrm{d} θ) or between a function's argument and
 # the factor it is read with (\cos \Omega t is cos(Ωt)) it would change what the formula says.
 _BETWEEN_SCALAR_FACTORS = r"(?<!\\mathrm\{d\})(?<!\\text\{d\})(?<!\\textrm\{d\})" + _BETWEEN_FACTORS

@@ -91,6 +91,15 @@ def test_the_rates_matrix_of_the_angles_holds():
     assert _verdicts(_display(latex))[0][0] == "holds"
 
 
+def test_a_function_with_a_braced_argument_keeps_the_braces_of_the_fraction_around_it():
+    # \frac{1}{\sin{\theta}}: the outer braces are the denominator, not braces around one decorated symbol
+    latex = r"""\begin{pmatrix} D\theta \\ D\phi \\ D\psi \end{pmatrix} = \frac{1}{\sin{\theta}}\begin{pmatrix}
+\cos{\psi}\sin{\theta} & -\sin{\psi}\sin{\theta} & 0\\ \sin{\psi} & \cos{\psi} & 0 \\
+-\sin{\psi}\cos{\theta} & -\cos{\psi}\cos{\theta} & \sin{\theta}\end{pmatrix} \begin{pmatrix}\omega^a\\ \omega^b\\ \omega^c \end{pmatrix}"""
+    assert _verdicts(_display(latex))[0][0] == "holds"
+    assert _verdicts(_display(r"D\mathbf{M} = {\mathbf{M}}\mathscr{A}(\boldsymbol{\omega}')"))[0][0] == "holds"
+
+
 def test_a_text_that_declares_no_operator_notation_is_read_as_before():
     head = "---\nconvention: z-x-z\n---\n# Top\n\n"
     claims = kept.check_text(head + _display(r"D\mathbf{M} = \mathbf{M}\mathscr{A}(\boldsymbol{\omega}')"))

@@ -44,6 +44,8 @@ class NotHandled(Exception):
 
 _GREEK = {"omega", "theta", "phi", "psi", "varphi", "vartheta", "alpha", "beta", "gamma", "tau", "Gamma"}
 _BOLD = ("mathbf", "boldsymbol", "vec", "bm", "pmb")
+# A decorated symbol in braces of its own (``{\\mathbf{L}}'``): the braces add nothing to the one symbol it is.
+_DECORATED_IN_BRACES = re.compile(r"\{\s*(\\(?:" + "|".join(_BOLD + ("mathrm", "dot", "ddot")) + r")\s*\{[^{}]*\})\s*\}")
 _SKIP = SPACE_NAMES | QUAD_NAMES | {"left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr",
                                    "displaystyle"}
 
@@ -531,12 +533,13 @@ def flat(value) -> list:
 
 def prepared(latex: str) -> str:
     """The statement with a matrix's cells marked (``;;``) and redundant braces around a
-    decorated symbol dropped (``{\\mathbf{L}}'`` is ``\\mathbf{L}'``)."""
+    decorated symbol dropped (``{\\mathbf{L}}'`` is ``\\mathbf{L}'``); braces around a function of
+    a braced argument stay (``\\frac{1}{\\sin{\\theta}}``: they are the fraction's denominator)."""
     text = re.sub(r"\\begin\{(pmatrix|bmatrix|matrix)\}(.*?)\\end\{\1\}",
                   lambda m: "\\begin{" + m.group(1) + "}" + m.group(2).replace("&", " ;; ") + "\\end{" + m.group(1) + "}",
                   latex, flags=re.S)
     for _ in range(3):
-        text = re.sub(r"\{\s*(\\[A-Za-z]+\s*\{[^{}]*\})\s*\}", r"\1", text)
+        text = _DECORATED_IN_BRACES.sub(r"\1", text)
     return text
 
 
