@@ -12,7 +12,8 @@ is written: ``\\equiv``, ``\\coloneqq`` (mathtools), ``\\triangleq``, ``\\eqdef`
 bracket. A reader that matches a shape in a formula before the normaliser has rewritten it (the
 rendered text, a display read whole) joins these fragments; after it, the rarer bold spellings are
 ``\\boldsymbol``, every definition sign is ``\\equiv``, every prime an apostrophe and every such
-bracket plain.
+bracket plain. Two more shapes are spelt here for the same readers: an equation's label that a book's
+toolchain writes inside the display, and what may follow a sign closing a name (𝐯⁺, 𝐯_rel⁻).
 
 May import: nothing.
 """
@@ -47,3 +48,11 @@ script): the primes ``V'``, ``y''`` as TeX sets them (a pre-superscript ``{}^{\\
 SIZED_ONE_TOKEN = r"\\left\s*\(\s*([A-Za-z0-9]+|\\[A-Za-z]+)\s*\\right\s*\)"
 """A round bracket sized with ``\\left``/``\\right`` around one letter, number or command (group 1),
 ``R\\left(t\\right)``: sized to one token it is the plain bracket, a function's argument as ``R(t)``."""
+
+EQUATION_LABEL = r"\{\{\s*numeq\s*\}\}(?:\{[^{}]*\})?|\(\\#eq:[^()\s]*\)"
+"""An equation's label as a book's toolchain writes it inside the display, ``{{numeq}}{eq:name}``
+(mdbook-numeq) or ``(\\#eq:name)`` (bookdown): a number for the reader of the page, never algebra."""
+
+SIGN_ENDS = (r"\s*(?:$|[-+=<>)\]}|,.;&_]|\\(?:cdot|times|right|[bB]igr?|quad|qquad|[lg]eq?|neq|approx|[,;:!\\)\]])(?![A-Za-z]))")
+"""What may follow a superscript sign that closes a name (𝐯⁺ ·, v⁻ =): never a letter, a digit or a
+group, which would make it the sign of an exponent written without braces (x^-1)."""

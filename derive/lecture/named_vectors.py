@@ -41,7 +41,7 @@ _DOUBLE = re.compile(r"\\(mathbf|boldsymbol|bm|vec)\s*\{\s*\{([^{}]*(?:\{[^{}]*\
 # a bold wrapper around what is bold already (\mathbf{\mathbf{r} \times \mathbf{L}}): a group
 _WRAPPED = re.compile(BOLD_MARK + r"\s*\{(?=\s*" + VECTOR_MARK + r"\b)")
 _NORM = re.compile(r"\|\|([^|]+)\|\|")
-_LABEL = re.compile(r"[A-Za-z]+'*|\d+|\\[A-Za-z]+")
+_LABEL = re.compile(r"[A-Za-z]+'*|\d+|\\[A-Za-z]+|\^[+-]")
 _CONSTANT = ("m", "M")
 _BARE_SUM = re.compile(r"\\sum(?:\s*\\limits)?(?!\s*(?:\\limits\s*)?[_^A-Za-z])")
 _OVER_I = re.compile(r"_\s*\{?\s*i(?![A-Za-z])")

@@ -47,7 +47,7 @@ from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
-from derive.lecture.latex_spellings import DEFINITION_NAMES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
+from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -563,7 +563,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
 def _normalized(latex: str, user: tuple) -> str:
     """`normalize`, memoised: the notes, the names the prose gives and the hat maps each normalise
     the text's formulas."""
-    latex = units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(characters(latex)))))
+    latex = units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(re.sub(EQUATION_LABEL, " ", characters(latex))))))
     user = dict(user)
     try:
         latex = texmacros.expand(latex, user)

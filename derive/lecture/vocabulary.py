@@ -18,7 +18,7 @@ from derive.lecture import elliptic
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
-from derive.lecture.latex_spellings import BOLD_NAMES
+from derive.lecture.latex_spellings import BOLD_NAMES, SIGN_ENDS
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.lecture.variations import variation_at
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l, p_alpha, p_gamma
@@ -277,12 +277,10 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
         raise NotRead(f"cannot read {s[i:i + 12]!r}", i + 1)
     # sub- and superscripts that belong to the symbol: subscripts always; primes; a superscript
     # that is 0 or a prime (ê⁰₃, E′), or a letter on a bold symbol (a frame: 𝐑^α_β, 𝛚^α), or the
-    # letter e on any other symbol (T^e, the external moment: a power e would be Euler's number); numeric
-    # superscripts otherwise are powers (left to the parser).
+    # letter e on any other symbol (T^e, the external moment: a power e would be Euler's number), or a
+    # sign closing the name (𝐯⁺, 𝐯_rel⁻: after and before an event); numeric superscripts otherwise are powers.
     while j < len(s):
-        k = j
-        while k < len(s) and s[k] == " ":
-            k += 1
+        k = len(s) - len(s[j:].lstrip(" "))
         if k < len(s) and s[k] == "_":
             sub, j = group(s, k + 1)
             atom = atom.with_(sub=atom.sub + _plain(sub))
@@ -298,6 +296,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
             elif atom.bold and not atom.sup and plain not in ("T", "top", "intercal", "t") and \
                     (plain in GREEK or re.fullmatch(r"[A-Za-z]", plain)):
                 atom, j = atom.with_(sup=plain), after     # a frame's label on a vector or a matrix (𝐑^α_β)
+            elif plain in ("+", "-") and re.match(SIGN_ENDS, s[after:]) and "^" not in atom.sub:
+                atom, j = atom.with_(sub=atom.sub + "^" + plain), after     # kept with the subscript: every reader keys a name by it
             elif plain == "e" and atom.base != "e" and not atom.bold:
                 atom, j = atom.with_(sup=plain), after     # T^e, f^e: the external (or earth-frame) label, never a power e
             else:
