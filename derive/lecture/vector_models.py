@@ -209,7 +209,7 @@ class Model:
             return v if a.bold else sp.sqrt(v.dot(v))
         if a.base == "r" and plain and a.bold and not a.sub:
             return R_B
-        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
+        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector) and not _text_letter(p, a, "torque"):
             return self.momentum
         if self.name == "frame" and a.base == "L" and plain and not a.bold and not a.sup and a.sub in ("1", "2", "3"):
             return self.momentum[int(a.sub) - 1]    # L₃ beside frame derivatives: 𝐋's body component
@@ -226,7 +226,7 @@ class Model:
             return self.kinetic
         if a.bold and plain and not a.sub and _text_letter(p, a, "vertical") and p.vocab.vertical:
             return sp.Matrix(p.vocab.vertical)    # the text's unit vector of the vertical, Rᵀẑ
-        if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and not a.sub:
+        if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and (not a.sub or a.sub in POINT_LABELS):
             return LAW                  # τ, or the letter the text calls the torque (Goldstein's 𝐍)
         if self.name == "frame" and a.bold and plain and not a.sub and not a.sup and a.base not in _KNOWN_VECTORS:
             return self.generic_vector(a.base)
