@@ -174,10 +174,6 @@ SHORT = {
         "2 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
         "disk's rotation matrix and its Omega_i (the hat map's components, against R's 3-1-2 turns) are checked",
-    ("spacecraft-course-notes-rigid-body-energy-euler-equations", "checked"):
-        "11 of 21 (Euler's equations, the transport theorem for H, the torque L, L_C as its rate written out, T_rot as an "
-        "integral over the body, H = [I] omega): its other energy displays integrate with the centre of mass's R_C, and "
-        "its laws about C write the inertia tensor as ^B[I_C], a frame's label before a bracket the reader does not read",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "checked"):
         "4 of 17: its undefined vector macros (\\vF, \\vr, \\vb) read as symbols, the derivatives of its "
         "definitions hold; vector calculus in the project's macros that take an argument (\\scal, \\pa, "
