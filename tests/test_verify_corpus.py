@@ -106,9 +106,6 @@ SHORT = {
         "text's own K(k, s) (K(k) as two integrals is checked), "
         "k^2 < 1 and the period are not read; the limits and the separatrix are stated in cases of L^2 the reader "
         "does not impose, and the Euler angles after the relabelling 123 -> 312 are left unjudged there",
-    ("wikipedia-euler-rotation-equations-encyclopaedia", "checked"):
-        "4 of 6: L_in = I_in omega writes the frame as a subscript label (\\text{in}), which the reader takes for "
-        "a new name, and (dL/dt)_rot + omega x L = M is read as the law of motion, a premise, not judged",
     ("wikipedia-precession-torque-free-and-gyroscopic-encyclopaedia", "checked"):
         "its rates omega_p = I_s omega_s/(I_p cos alpha) and omega_p = mgr/(I_s omega_s) and the period T_p are in "
         "names its prose gives in words (precession rate, spin rate, moment about the symmetry axis), not tied to "
@@ -177,11 +174,6 @@ SHORT = {
         "2 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
         "disk's rotation matrix and its Omega_i (the hat map's components, against R's 3-1-2 turns) are checked",
-    ("spacecraft-course-notes-rigid-body-energy-euler-equations", "checked"):
-        "9 of 21 (Euler's equations and the transport theorem for H, ^N d/dt = ^B d/dt + omega x H, T_rot as an "
-        "integral over the body, H = [I] omega): its other energy displays integrate with the centre of mass's R_C, its laws about C "
-        "write the torque L_C, which nothing ties, and the inertia tensor as ^B[I_C], a frame's label before a bracket "
-        "the reader does not read",
     ("principia-rigid-reference-frame-angular-velocity-acceleration", "checked"):
         "4 of 17: its undefined vector macros (\\vF, \\vr, \\vb) read as symbols, the derivatives of its "
         "definitions hold; vector calculus in the project's macros that take an argument (\\scal, \\pa, "

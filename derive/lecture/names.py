@@ -393,9 +393,9 @@ _RATE_SIDE = re.compile(r"^\s*(?:\^\s*\{?\w\}?\s*)?(?:\\dot\s*\{(?P<dot>.+)\}|\\
 
 def _rate_law(names: Names, body: str):
     """Euler's second law displayed alone, ``\\dot{\\vec{H}} = \\vec{L}``: the rate of the angular momentum
-    (a letter that may name it) equals the torque, so the letter on the other side is the text's
-    torque (Schaub's 𝐋, a torque where other texts write 𝐍 or 𝛕: a letter the prose takes for the
-    angular momentum, so only the law makes it the torque), unless the prose named it."""
+    (a letter that may name it) equals the torque, so the letter on the other side is the text's torque
+    (Schaub's 𝐋, where others write 𝐍 or 𝛕: only the law makes it the torque) and a bold one under the
+    rate its angular momentum (Schaub's 𝐇), unless the prose named them."""
     for m in _DISPLAY.finditer(body):
         inner = re.sub(r"^\$\$|\$\$$|^\\\[|\\\]$", "", m.group(0).strip()).strip()
         if inner.count("=") != 1 or "\\\\" in inner or "\\begin" in inner:
@@ -409,8 +409,8 @@ def _rate_law(names: Names, body: str):
                 not (_fits("torque", torque) or torque[0].base == "L" and (torque[0].bold or torque[0].sub)):
             continue
         letter = (torque[0].base, "plain" if not (torque[0].bold or torque[0].sub) else "vector")
-        if letter not in names.letters:
-            bind(names, torque, "torque", f"line {body.count(chr(10), 0, m.start()) + 1}")
+        for atoms, meaning in ((torque, "torque"), (whole * whole[0].bold, "angular momentum")) * (letter not in names.letters):
+            bind(names, atoms, meaning, f"line {body.count(chr(10), 0, m.start()) + 1}")
 
 
 def _components_of(names: Names, text: str, starts, offset):

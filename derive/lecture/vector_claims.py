@@ -37,6 +37,8 @@ _UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:" + VECTOR_MARK + r"\s*\{\s*e\s*(?:_\s*
            r"(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
 _ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)" + SPACE + _UNIT_E)
 """A term ``\\omega_1 \\widehat{\\mathbf{e}}_1``, ``\\lambda \\hat{\\mathbf{e}}_2``: one symbol along a body axis."""
+_SUM = re.compile(r"[^\s{(^_]\s*[+-]")
+"""A sum of terms written out: a + or − after a term (not a sign in front)."""
 
 
 class VectorStatements:
@@ -164,7 +166,8 @@ class VectorStatements:
         where = f" for {', '.join(reading.free)} = 1, 2, 3" if reading.free else ""
         for k in range(1, len(first)):
             if first[k].value is LAW or first[0].value is LAW:
-                if not self._past_the_law(line, piece, reading, k, kind):
+                if not (self._past_the_law(line, piece, reading, k, kind) or
+                        self._law_written_out(line, piece, reading, k, kind)):
                     self._add(line, piece, "law", "unchecked", "the law of motion d𝐋/dt = τ: where the derivation "
                               "starts (Euler's equations are it in body axes), not a consequence of it")
                 continue
@@ -223,6 +226,30 @@ class VectorStatements:
         if ok:
             self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}: against the member before it "
                       f"(the chain's head is the torque, its first link the law of motion): {how}")
+        return ok
+
+    def _law_written_out(self, line, piece, reading, k, kind) -> bool:
+        """``𝐋_C = {}^B d𝐇_C/dt + 𝛚 × 𝐇_C``, ``𝐋_C = [I]𝛚̇ + 𝛚 × [I]𝛚``: the torque equal to a sum that
+        writes out the angular momentum's inertial rate is the law with the transport theorem, so
+        the sum is checked against (d𝐋/dt)_inertial and kept when it holds (False otherwise, a rate
+        written alone being the law itself)."""
+        first = reading.members[0]
+        if reading.model != "frame" or reading.free or len(first) != 2 or k != 1 or \
+                [m.value is LAW for m in first].count(True) != 1:
+            return False
+        j = 1 if first[0].value is LAW else 0
+        if not _SUM.search(reading.source[first[j].start:first[j].end]):
+            return False
+        model = vm.Model("frame", self.d)
+        rate = model.derivative(vm.L_B, "inertial")
+        value = first[j].value
+        if hasattr(value, "has") and value.has(*vm.RIGID):
+            rate = rate.xreplace(model.rigid())     # the text's tensor written: 𝐋 = I𝛚 of the rigid body
+        law = [[replace(m, value=rate) if m.value is LAW else m for m in row] for row in reading.members]
+        ok, how = vc.holds(replace(reading, members=law), k, f"{piece}/law", 0)
+        if ok:
+            self._add(line, piece, kind, "holds", f"{vc.WHY[reading.model]}: against the angular momentum's "
+                      f"inertial rate, the torque's by the law of motion: {how}")
         return ok
 
     def _vector_eom(self, a, b) -> bool:

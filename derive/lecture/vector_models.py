@@ -140,10 +140,12 @@ class Model:
     # the grammar's hooks (`derive.lecture.vector_parser`)
     def rate(self, X, frame):
         """d𝐫/dt, d𝐋/dt in a frame; None for a scalar (the scalar reader's d/dt)."""
+        if isinstance(X, sp.MatrixBase) and X.shape == (3, 3) and X.free_symbols <= set(RIGID) and frame == "body":
+            return sp.zeros(3, 3)                 # the body's tensor seen from the body, where it is constant
         if X is R_B or X is L_B or any(X is G for G, _ in self.generic.values()) or \
-                isinstance(X, sp.MatrixBase) and X.free_symbols <= set(ANGLES) | set(RATES):
+                isinstance(X, sp.MatrixBase) and X.shape[1] == 1 and X.free_symbols <= {*ANGLES, *RATES, *RIGID}:
             return self.derivative(X, frame)      # …or a vector given in the angles (the vertical Rᵀẑ) and rates
-            #    (𝛚), or constant body components (a body axis ê_i, whose inertial rate is 𝛚 × ê_i)
+            #    (𝛚, I𝛚 with the body's constant tensor), or constant body components (a body axis ê_i, whose inertial rate is 𝛚 × ê_i)
         if isinstance(X, sp.MatrixBase):
             raise lx.NotRead("the time derivative of a vector other than 𝐫 and 𝐋")
         return None
@@ -186,6 +188,9 @@ class Model:
             return self.tensor
         if self.name == "frame" and a.base == "I" and a.sub in ("", "b", "B") and plain and not a.bold and not a.sup:
             return RIGID                # I, I_b beside frame derivatives: the body's tensor, constant in body axes
+        if a.base == "I" and a.sub in POINT_LABELS and a.bold and plain and not a.sup:
+            # Schaub's [𝐈_C]: the body's tensor about its centre of mass (beside frame derivatives, constant in body axes)
+            return RIGID if self.name == "frame" else self.tensor
         if a.base == "I" and len(a.sub) == 2 and not a.bold:
             return self.tensor[p.axis(a.sub[0], env, tok), p.axis(a.sub[1], env, tok)]
         if a.base == "I" and a.sub in ("i", "j") and not a.bold:
@@ -209,7 +214,7 @@ class Model:
             return v if a.bold else sp.sqrt(v.dot(v))
         if a.base == "r" and plain and a.bold and not a.sub:
             return R_B
-        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector):
+        if a.base == "L" and plain and not a.sub and (a.bold or self.plain_l_vector) and not _text_letter(p, a, "torque"):
             return self.momentum
         if self.name == "frame" and a.base == "L" and plain and not a.bold and not a.sup and a.sub in ("1", "2", "3"):
             return self.momentum[int(a.sub) - 1]    # L₃ beside frame derivatives: 𝐋's body component
@@ -226,7 +231,7 @@ class Model:
             return self.kinetic
         if a.bold and plain and not a.sub and _text_letter(p, a, "vertical") and p.vocab.vertical:
             return sp.Matrix(p.vocab.vertical)    # the text's unit vector of the vertical, Rᵀẑ
-        if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and not a.sub:
+        if (a.base == "tau" or a.bold and _text_letter(p, a, "torque")) and (not a.sub or a.sub in POINT_LABELS):
             return LAW                  # τ, or the letter the text calls the torque (Goldstein's 𝐍)
         if self.name == "frame" and a.bold and plain and not a.sub and not a.sup and a.base not in _KNOWN_VECTORS:
             return self.generic_vector(a.base)
@@ -291,8 +296,8 @@ def _particle_atom(a) -> bool:
 def _has_time_derivative(toks) -> bool:
     for k in range(len(toks) - 6):
         w = toks[k:k + 7]
-        # the vector may stand in a group of its own, d{\bf G} as plain TeX writes it
-        x = w[4] if w[3].kind == "op" and w[3].value == "{" else w[3]
+        # the vector may stand in a group of its own, d{\bf G} as plain TeX writes it, or a tensor in brackets, d[𝐈_C]
+        x = w[4] if w[3].kind == "op" and w[3].value in ("{", "(") else w[3]
         if w[0].kind == "cmd" and w[0].value == "frac" and w[2].kind == "atom" and w[2].value.base == "d" \
                 and x.kind == "atom" and (x.value.bold or x.value.text.startswith("\\vec")):
             return True
@@ -353,10 +358,16 @@ _FRAC_RATE = (r"(?P<o>\{\s*)?\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(?P<b>\{\s*)?
               + DIFFERENTIAL + r"\s*t")
 _RATE_BAR = re.compile(_FRAC_RATE + r"\s*\}\s*(?(o)\}\s*)\\right\s*\|\s*_\s*" + _LABEL)
 _RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
-# Kane's and Schaub's frame written before the rate, ^N d𝐇/dt; the same frame before a vector in such a statement
-_RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _VEC
-                             + r"(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
-_VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + _VEC + r")")
+# the rate seen from a frame as an operator on a bracket, ^B d/dt (…)
+_OPERATOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*\}\s*\{\s*"
+                                  + DIFFERENTIAL + r"\s*t\s*\}\s*\\left\s*\(")
+_LEFT_RIGHT = re.compile(r"\\left\s*[(\[.|]|\\right\s*[)\].|]")
+_SUBSCRIPTED = _VEC + r"(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?"
+# Kane's and Schaub's frame written before the rate of a vector or of a tensor in brackets, ^B d[𝐈_C]/dt
+_RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _SUBSCRIPTED
+                             + r"|(?:\^\s*(?:\{[^{}]*\}|[A-Za-z])" + SPACE + r")?\[\s*" + _SUBSCRIPTED + r"\s*\])\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
+# a frame's label before a vector, or before a tensor in brackets (Schaub's ^B[𝐈_C], its components in B)
+_VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + _VEC + r"(?!\s*\^)|\[\s*" + _VEC + r")")
 _BODY_LABEL = re.compile(r"(" + VECTOR_MARK + r"\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 _FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
@@ -370,7 +381,7 @@ def frame_rates(text: str) -> str:
     def framed(m):
         return r"\left(\frac{d " + m.group(3) + r"}{dt}\right)_{" + m.group(4).strip("{}").strip() + "}"
     new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
-    if "^" in new and "frac" in new:
+    if "^" in new:
         new = _prescribed(new)
     # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
     new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))
@@ -381,17 +392,38 @@ def frame_rates(text: str) -> str:
 
 def _prescribed(text: str) -> str:
     """``^N\\frac{d\\vec H}{dt}`` as ``\\left(\\frac{d\\vec H}{dt}\\right)_{N}`` when N names a frame the
-    reader knows; then a known frame's label before a vector (``^B\\vec H``) goes, every vector being read
-    in body components, and ω's subscript naming the body in the inertial frame (``_{B/N}``) with it."""
-    labels = {m.group(1).strip("{}").strip() for m in _RATE_PRESCRIPT.finditer(text)}
+    reader knows, the operator ``^B\\frac{d}{dt}\\left(…\\right)`` too; then a known frame's label before a
+    vector or a bracketed tensor (``^B\\vec H``, ``^B[\\mathbf{I}_C]``) goes, every vector being read in body
+    components, and ω's subscript naming the body in the inertial frame (``_{B/N}``) with it; all only
+    when every frame label of the statement is one the reader knows."""
+    labels = {m.group(1).strip("{}").strip() for m in (*_RATE_PRESCRIPT.finditer(text), *_VECTOR_PRESCRIPT.finditer(text))}
     if not labels or not labels <= set(FRAMES):
         return text
     new = _RATE_PRESCRIPT.sub(lambda m: r"\left(\frac{d " + m.group(2) + r"}{dt}\right)_{" + m.group(1).strip("{}").strip()
-                              + "}", text)
+                              + "}", _operator_prescribed(text))
     new = _VECTOR_PRESCRIPT.sub(lambda m: "" if m.group(1).strip("{}").strip() in FRAMES else m.group(0), new)
     return _FRAME_PAIR.sub(lambda m: m.group(1) if "\\omega" in m.group(1) and
                            (FRAMES.get(m.group(2)), FRAMES.get(m.group(3))) == ("body", "inertial") else m.group(0), new)
 
+
+
+def _operator_prescribed(text: str) -> str:
+    """``^B\\frac{d}{dt}\\left(X\\right)``, the rate seen from a frame as an operator on a bracket, as
+    ``\\left(\\frac{d}{dt}\\left(X\\right)\\right)_{B}``, the bracket closed where its own ``\\right)`` is."""
+    m = _OPERATOR_PRESCRIPT.search(text)
+    if m is None:
+        return text
+    depth, i = 1, m.end()
+    for tok in _LEFT_RIGHT.finditer(text, m.end()):
+        depth += 1 if tok.group(0).startswith("\\left") else -1
+        if depth == 0:
+            i = tok.end()
+            break
+    else:
+        return text
+    label = m.group(1).strip("{}").strip()
+    return (text[:m.start()] + r"\left(\frac{d}{dt}\left(" + text[m.end():i] + r"\right)_{" + label + "}"
+            + _operator_prescribed(text[i:]))
 
 
 def prepare(text: str) -> str:

@@ -62,6 +62,8 @@ from derive.lecture.latex_spellings import VECTOR_MARK
 _ROW_VECTOR = re.compile(VECTOR_MARK + r"\s*\{[^{}]*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?\s*\^\s*"
                          r"(?:T\b|\{\s*(?:T|\\top|\\mathrm\{T\}|\\mathsf\{T\})\s*\}|\\top\b)")
 """A bold vector transposed, ``\\boldsymbol{\\omega}^{T}``: a row, so the statement is in matrix notation."""
+_BRACKET_TENSOR = re.compile(r"\[\s*" + VECTOR_MARK + r"\s*\{\s*I\s*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?\s*\]")
+"""Schaub's tensor in brackets, ``[\\mathbf{I}_C]``: a matrix, so the statement is in matrix notation."""
 
 
 # ---- reading and checking one statement ----------------------------------------------------------
@@ -79,8 +81,8 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
     if name == "principal" and any(t.kind == "atom" and t.value.base == "I" and not (t.value.sub or t.value.bold or
                                    t.value.dots or t.value.sup) for t in toks):
         model.matrix_products = True     # a plain I (a text's matrix, not the lecture's Ï·) acts on 𝛚 by juxtaposition
-    if _ROW_VECTOR.search(text):
-        model.matrix_products = True     # 𝛚ᵀ 𝐈 𝛚: a vector written as a row is matrix notation, 𝐈 acting by juxtaposition
+    if _ROW_VECTOR.search(text) or _BRACKET_TENSOR.search(text):
+        model.matrix_products = True     # 𝛚ᵀ 𝐈 𝛚, [𝐈]𝛚: a row or a bracketed tensor is matrix notation, 𝐈 acting by juxtaposition
     return vp.read(toks, text, vocab, model, name)
 
 
