@@ -9,9 +9,7 @@ scalar first here; the text's w = (omega_x, omega_y, omega_z, 0) is the pure qua
 """
 import sys
 
-import mpmath
 import sympy as sp
-from sympy.core.function import AppliedUndef
 
 import truth_table
 
@@ -24,20 +22,7 @@ def check(key, ok):
 
 
 def nzero(expr):
-    """``expr`` vanishes at three sample points once every unknown function of t is given a concrete
-    smooth form and every other symbol a rational value (the identities hold for all of them, so a
-    slip shows); evaluated with 30 digits."""
-    m = expr if hasattr(expr, 'shape') else sp.Matrix([expr])
-    funcs = sorted(m.atoms(AppliedUndef), key=str)
-    m = m.subs({g: sp.sin((k + 2) * t / 3) + sp.Rational(k + 1, 5) * t ** 2 + k for k, g in enumerate(funcs)}).doit()
-    syms = sorted(m.free_symbols - {t}, key=str)
-    f = sp.lambdify([t, *syms], list(m), 'mpmath')
-    mpmath.mp.dps = 30
-    for shift, t0 in enumerate(('0.31', '0.77', '1.4')):
-        vals = [mpmath.mpf(3 + 2 * i + shift) / (7 + i) for i in range(len(syms))]
-        if max(abs(x) for x in f(mpmath.mpf(t0), *vals)) > mpmath.mpf(10) ** -20:
-            return False
-    return True
+    return truth_table.numeric_zero(expr, t)
 
 
 t = sp.Symbol('t')

@@ -11,7 +11,9 @@ import json
 import pathlib
 import tomllib
 
+import mpmath
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 
 def compare(script: str, checks: dict, lines: list) -> int:
@@ -76,6 +78,24 @@ def zero(expr) -> bool:
     """``expr`` (a scalar or a matrix) simplifies to zero."""
     m = expr if hasattr(expr, "shape") else sp.Matrix([expr])
     return sp.simplify(m) == sp.zeros(*m.shape)
+
+
+def numeric_zero(expr, t) -> bool:
+    """``expr`` (a scalar or a matrix) vanishes at three sample points once every unknown function of
+    ``t`` is given a concrete smooth form and every other symbol a rational value (an identity holds
+    for all of them, so a slip shows), evaluated with 30 digits: for identities whose simplification
+    is too slow."""
+    m = expr if hasattr(expr, "shape") else sp.Matrix([expr])
+    funcs = sorted(m.atoms(AppliedUndef), key=str)
+    m = m.subs({g: sp.sin((k + 2) * t / 3) + sp.Rational(k + 1, 5) * t ** 2 + k for k, g in enumerate(funcs)}).doit()
+    syms = sorted(m.free_symbols - {t}, key=str)
+    f = sp.lambdify([t, *syms], list(m), "mpmath")
+    with mpmath.workdps(30):
+        for shift, t0 in enumerate(("0.31", "0.77", "1.4")):
+            vals = [mpmath.mpf(3 + 2 * i + shift) / (7 + i) for i in range(len(syms))]
+            if max(abs(x) for x in f(mpmath.mpf(t0), *vals)) > mpmath.mpf(10) ** -20:
+                return False
+    return True
 
 
 def notebook_display_lines(path) -> list:
