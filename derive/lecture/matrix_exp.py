@@ -32,18 +32,32 @@ def skew_exponential(m: sp.MatrixBase) -> sp.ImmutableMatrix | None:
     return sp.ImmutableMatrix(sp.eye(3) + sp.sin(n) / n * k + (1 - sp.cos(n)) / n2 * (k * k))
 
 
+def within_quadratic_roots(m: sp.MatrixBase) -> bool:
+    """Whether SymPy's exponential of ``m`` (through its Jordan form) needs no root past a square
+    root: every irreducible factor of its characteristic polynomial is of degree two at most (the
+    roots of a symbolic cubic take SymPy minutes and no text's claim is read through them)."""
+    if not m.is_square:
+        return False
+    poly = m.charpoly()
+    rest, factors = sp.factor_list(poly.as_expr(), poly.gen)     # what it cannot factor stays in rest
+    return all(sp.degree(f, poly.gen) <= 2 for f in [rest] + [f for f, _ in factors])
+
+
 class MatrixExp(sp.Function):
     """exp of an argument that may become a matrix (``exp([ω]ₓ dt)``), kept apart from SymPy's
     ``exp`` until it is one or is known to be none: a product with another exponential is not
     merged into the exponential of a sum (matrices need not commute). Once its argument is a
     matrix, a 3 x 3 skew-symmetric one's exponential is `skew_exponential` and any other is
-    SymPy's; once it is a scalar, it is SymPy's ``exp``. It prints as ``exp``."""
+    SymPy's where `within_quadratic_roots` (else it stays unevaluated, so unread); once it is a
+    scalar, it is SymPy's ``exp``. It prints as ``exp``."""
 
     @classmethod
     def eval(cls, arg):
         if isinstance(arg, sp.MatrixBase):
             fast = skew_exponential(arg)
-            return fast if fast is not None else arg.exp()
+            if fast is not None:
+                return fast
+            return arg.exp() if within_quadratic_roots(arg) else None
         if not may_be_matrix(arg):
             return sp.exp(arg)
         return None

@@ -33,6 +33,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.matrix_exp import MatrixExp
 from derive.lecture.vocabulary import Atom
 from derive.lecture.written_matrices import Dot, NormSquared, taken
 from derive.lecture.zero_test import entry_zero
@@ -125,6 +126,8 @@ def matrices_put(e, rep, columns=None, budget=None):
         out = taken(e, args)
     elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
         out = matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
+    elif e.func is sp.exp and isinstance(args[0], sp.MatrixBase):
+        out = MatrixExp(args[0])        # SymPy's Jordan form of a symbolic cubic's roots takes minutes
     else:
         out = e.func(*args)
     return sp.ImmutableMatrix(out) if isinstance(out, sp.MatrixBase) else out

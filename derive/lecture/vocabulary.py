@@ -113,7 +113,8 @@ class Words(NotRead):
 GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "eta", "theta", "vartheta",
          "iota", "kappa", "lambda", "mu", "nu", "xi", "pi", "rho", "sigma", "tau", "upsilon", "phi",
          "varphi", "chi", "psi", "omega", "Gamma", "Delta", "Theta", "Lambda", "Xi", "Pi", "Sigma",
-         "Phi", "Psi", "Omega", "top", "intercal"}
+         "Phi", "Psi", "Omega", "top", "intercal",
+         "hbar"}     # Planck's constant: a letter of the text's own, so a quantum claim about E or L stays unjudged
 DECORATIONS = {"dot": "dot", "ddot": "ddot", "tilde": "tilde", "widetilde": "tilde", "hat": "hat",
                "widehat": "hat", **{name: "bold" for name in BOLD_NAMES}, "vec": "vec",
                "mathrm": "roman", "mathit": "roman", "overrightarrow": "vec",
