@@ -36,3 +36,8 @@ def test_turns_that_are_not_equal_for_every_angle_are_not_flagged():
 def test_a_turn_about_a_moved_axis_is_not_read():
     text = HEAD + "$$\nR(\\hat Z,\\gamma) R(\\hat Z,-\\gamma) = R(\\hat z,\\alpha) R(\\hat z,-\\alpha)\n$$\n"
     assert verdicts(text)[5] == {"unchecked"}
+
+
+def test_turns_in_sized_brackets_hold_as_in_plain_ones():
+    text = HEAD + "$$\nR_x\\left(\\theta\\right) R_x\\left(-\\theta\\right) R\\left(\\hat y,\\phi\\right) = R_y(\\phi)\n$$\n"
+    assert verdicts(text)[5] == {"holds"}

@@ -63,6 +63,13 @@ def test_a_component_over_dt_without_its_d_is_a_typo():
     assert "\\frac{dB_Y}{dt}" in claims[0].correction
 
 
+def test_a_component_over_an_upright_dt_without_its_d_is_a_typo_too():
+    text = COMPONENTS + ("$$\\frac{d\\boldsymbol{B}}{\\mathrm{d}\\,t} = \\frac{dB_X}{\\mathrm{d}\\,t}\\boldsymbol{\\hat{I}} + "
+                         "\\frac{B_Y}{\\mathrm{d}\\,t}\\boldsymbol{\\hat{J}} + \\frac{dB_Z}{\\mathrm{d}\\,t}\\boldsymbol{\\hat{K}}$$\n")
+    claims = kept.by_line(text)[kept.line_of(text, "$$\\frac{d\\boldsymbol{B}}")]
+    assert [c.verdict for c in claims] == ["typo"]
+
+
 def test_a_hatted_sum_beside_a_vector_the_text_never_set_is_not_read_here():
     head = "# Notes\n\n"
     assert _verdicts(head, "\\mathbf{v} = \\boldsymbol{\\omega} \\times (a\\hat{i} + b\\hat{j}) = "

@@ -28,8 +28,9 @@ import sympy as sp
 
 _AXIS = r"\\hat\s*\{?\s*([xyz])\s*\}?"
 _ANGLE = r"(-?)\s*(\\[A-Za-z]+|[A-Za-z])"
-_TURN = re.compile(r"\s*R\s*(?:_\s*\{?\s*([xyz])\s*\}?\s*\(\s*" + _ANGLE + r"\s*\)"
-                   r"|\(\s*\{?\s*" + _AXIS + r"\s*\}?\s*,\s*" + _ANGLE + r"\s*\))")
+_OPEN, _CLOSE = r"(?:\\left\s*)?\(", r"(?:\\right\s*)?\)"    # a bracket the same however it is sized
+_TURN = re.compile(r"\s*R\s*(?:_\s*\{?\s*([xyz])\s*\}?\s*" + _OPEN + r"\s*" + _ANGLE + r"\s*" + _CLOSE
+                   + r"|" + _OPEN + r"\s*\{?\s*" + _AXIS + r"\s*\}?\s*,\s*" + _ANGLE + r"\s*" + _CLOSE + ")")
 """One turn: ``R_z(\\alpha)`` or ``R({\\hat z}, -\\alpha)`` (axis, sign, angle in groups 1-3 or 4-6)."""
 _SPACING = re.compile(r"\\[,;:! ]|\\quad|\\qquad|~")
 _DRAWS = ((sp.Rational(1, 3), sp.Rational(-2, 5), sp.Rational(3, 7), sp.Rational(5, 2)),

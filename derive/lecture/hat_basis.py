@@ -25,7 +25,8 @@ products, a determinant along its row of unit vectors):
 
 Sums, integrals, partial derivatives, a second basis family and any bold letter the text has not
 set (past the statement's head) leave the statement to the readers before. May import:
-:mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, :mod:`derive.lecture.basis_vectors`, SymPy.
+:mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, :mod:`derive.lecture.basis_vectors`,
+:mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.vector_models`, SymPy.
 """
 from __future__ import annotations
 
@@ -37,12 +38,13 @@ from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture.basis_vectors import compare, name
 from derive.lecture.latex_spellings import VECTOR_MARK
+from derive.lecture.vector_models import DIFFERENTIAL
 
 _FAMILIES = ("ijk", "IJK", "xyz", "XYZ")
 _HATTED = re.compile(r"\\hat\b|\\widehat\b")
 _NOT_HERE = re.compile(r"\\(?:int|oint|sum|prod|partial|lim)\b")
 """Sums, integrals, partial derivatives and limits: not this reader's algebra."""
-_DOTLESS = re.compile(r"\\[dt]?frac\s*\{\s*([A-Za-z])(_\s*(?:\{[^{}]*\}|\w))?\s*\}\s*\{\s*d\s*t\s*\}")
+_DOTLESS = re.compile(r"\\[dt]?frac\s*\{\s*([A-Za-z])(_\s*(?:\{[^{}]*\}|\w))?\s*\}\s*\{\s*" + DIFFERENTIAL + r"\s*t\s*\}")
 """A fraction over dt of one letter (with its index) and no differential: a rate that lost its d."""
 _LOST_BACKSLASH = re.compile(r"\\(?:hat|widehat)\s*\{\s*(imath|jmath|alpha|beta|gamma|delta|epsilon|zeta|theta|iota|kappa|"
                              r"lambda|sigma|upsilon|omega|Omega|Theta|Lambda|Sigma|Gamma|Delta)\s*\}")
