@@ -49,7 +49,8 @@ def test_the_energy_about_a_point_holds_if_the_point_is_at_rest():
 
 
 def test_the_projection_theorem_holds_as_written():
-    for display in ("v_B \\cos \\theta_B = v_a \\cos \\theta_A", "v_B \\cos(\\alpha_B) = v_A \\cos(\\alpha_A)"):
+    for display in ("v_B \\cos \\theta_B = v_a \\cos \\theta_A", "v_B \\cos(\\alpha_B) = v_A \\cos(\\alpha_A)",
+                    "v_B \\cos{\\theta_B} = v_A \\cos{\\theta_A}"):
         assert _kinds(display) == [("holds", "projection")], display
 
 

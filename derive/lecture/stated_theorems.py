@@ -48,8 +48,8 @@ _TURNING = (rf"{_HALF}(?:[IJ]\s*_\s*{_SUB}\s*\\omega{_SQUARE}"
             rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{\s*\\omega\s*H\s*_\s*{_SUB}\s*\}}"
             rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*H\s*\}}?\s*_\s*{_SUB})")
 _ANGLE = r"\\(?:theta|varphi|phi|alpha|beta)"
-_PROJECTION = re.compile(rf"\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?"
-                         rf"\s*=\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*\(?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\)?\s*[.,;]?\s*")
+_PROJECTION = re.compile(rf"\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*[({{]?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*[)}}]?"
+                         rf"\s*=\s*[vV]\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*\\cos\s*[({{]?\s*({_ANGLE})\s*_\s*\{{?\s*([A-Za-z])\s*\}}?\s*[)}}]?\s*[.,;]?\s*")
 _ABOUT = re.compile(rf"\s*T\s*=\s*{_HALF}(?:\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{\s*\\omega\s*H\s*_\s*\{{?\s*([A-Z])\s*\}}?\s*\}}"
                     rf"|\\(?:mathbf|boldsymbol|bm|pmb)\s*\{{?\s*\\omega\s*\}}?\s*\\cdot\s*\\(?:mathbf|boldsymbol|bm|pmb|vec)\s*\{{?\s*H\s*\}}?\s*_\s*\{{?\s*([A-Z])\s*\}}?)"
                     r"\s*[.,;]?\s*")
