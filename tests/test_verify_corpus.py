@@ -264,10 +264,12 @@ SHORT = {
     ("lawrence-phys162-rotation-group-so3-generators-su2", "checked"):
         "quantum mechanics course notes on the rotation group: \\hbar, the identity {\\bf 1}, \\lim and a prime after "
         "a braced vector ({\\vec V}') are not read, and the rotation in indices (R^I_J, delta^I_J, eps^I{}_{JK}) is "
-        "not tied to a rotation; only the transpose of a product of rotations is",
+        "not tied to a rotation; only the transpose of a product of rotations is, and the two displays that type a "
+        "symbol's command without its backslash (flagged)",
     ("lawrence-phys162-rotation-group-so3-generators-su2", "found"):
-        "none of its nine slips is flagged: they sit in the vector rotation with {\\vec V}', in the index form, in "
-        "R(theta/N) with \\hbar, in a limit and in an SU(2) matrix row without its &, none of them read",
+        "2 of 9: the two displays that type a symbol's command without its backslash (sin theta, \\to infty) are "
+        "flagged; the rest sit in the vector rotation with {\\vec V}', in the index form, in R(theta/N) with \\hbar "
+        "and in an SU(2) matrix row without its &, none of them read",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
         "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
         "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
