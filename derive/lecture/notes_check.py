@@ -248,6 +248,7 @@ class Checker(ReadingRules):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._hat_unread(item.line, piece, before)
                 self._lost_backslash(item.line, piece, latex, before)
+                self._letter_digits(item.line, piece, before)
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)

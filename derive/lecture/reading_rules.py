@@ -36,6 +36,7 @@ from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
 from derive.lecture.judging import Judging
+from derive.lecture.letter_digits import LetterDigits
 from derive.lecture.lost_backslash import LostBackslash
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.named_vector_claims import NamedVectors
@@ -70,5 +71,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, LostBackslash):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, LostBackslash, LetterDigits):
     """Every reading rule, in method-lookup order (see the module docstring)."""
