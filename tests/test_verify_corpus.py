@@ -285,12 +285,10 @@ SHORT = {
         "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "
         "integrals over the body",
     ("game-physics-notes-collision-impulse-relative-velocity-zh", "checked"):
-        "game physics notes on the collision impulse: before and after (v_rel^-, v_rel^+) are read as names, but "
+        "game physics notes on the collision impulse: 1 of 11 (its slip, a number added to a vector, flagged); "
+        "before and after (v_rel^-, v_rel^+) are read as names, but "
         "the inverse tensors I_a^{-1} acting on vectors, and the ties the prose sets (v^+ = v^- + dv, the law of "
         "restitution, n . n = 1), are not",
-    ("game-physics-notes-collision-impulse-relative-velocity-zh", "found"):
-        "its one slip, the masses' term 1/m_a + 1/m_b left a number beside vectors when j is taken out, sits "
-        "in the unread derivation of j",
 }
 
 FLOOR = {"checked": 886, "slips_flagged": 104, "holds_flagged": 0}

@@ -249,6 +249,7 @@ class Checker(ReadingRules):
                 self._hat_unread(item.line, piece, before)
                 self._lost_backslash(item.line, piece, latex, before)
                 self._letter_digits(item.line, piece, before)
+                self._scalar_vector_sum(item.line, piece, before)
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)

@@ -49,6 +49,7 @@ from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.quaternions import Quaternions
 from derive.lecture.rotation_products import RotationProducts
+from derive.lecture.scalar_vector_sums import ScalarVectorSums
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
@@ -71,5 +72,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, LostBackslash, LetterDigits):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
+                   LostBackslash, LetterDigits, ScalarVectorSums):
     """Every reading rule, in method-lookup order (see the module docstring)."""
