@@ -24,6 +24,7 @@ def test_infinity_without_its_backslash_in_a_limit_beside_the_command_is_a_typo(
 def test_the_letters_are_left_alone_where_the_display_never_writes_the_command():
     assert lost("y = theta x", "y = theta x") == []
     assert lost("y = \\text{theta} + I_{theta} + x_theta", "\\theta") == []
+    assert lost("y = \\operatorname*{theta} + \\mathrm{theta}", "\\theta") == []
     assert lost("y = \\sin\\theta + thetas", "\\theta") == []
     assert lost("y = 2 theta", "\\theta") == ["theta"]
 

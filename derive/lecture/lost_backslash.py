@@ -22,8 +22,8 @@ NAMES = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "th
          "Omega", "infty", "hbar", "nabla", "partial", "imath", "jmath")
 """Commands of four letters or more whose letters are never a product a text means."""
 _WORD = re.compile(r"(?<![\\A-Za-z])(" + "|".join(NAMES) + r")(?![A-Za-z])")
-_TEXT_COMMAND = re.compile(r"\\(?:text\w*|math(?:rm|it|sf|tt|bf|cal|frak|bb)|operatorname|mbox|label|tag|ref|eqref|"
-                           r"begin|end)\s*\{[^{}]*\}")
+_TEXT_COMMAND = re.compile(r"\\(?:text\w*|math(?:rm|it|sf|tt|bf|cal|frak|bb)|operatorname|mbox|hbox|label|tag|ref|eqref|"
+                           r"begin|end)\s*\*?\s*\{[^{}]*\}")
 _WHOLE_INDEX = re.compile(r"[_^]\s*(?:\{\s*(" + "|".join(NAMES) + r")\s*\}|(" + "|".join(NAMES) + r")(?![A-Za-z]))")
 
 
