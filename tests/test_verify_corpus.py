@@ -264,17 +264,19 @@ SHORT = {
     ("lawrence-phys162-rotation-group-so3-generators-su2", "checked"):
         "quantum mechanics course notes on the rotation group: \\hbar, the identity {\\bf 1}, \\lim and a prime after "
         "a braced vector ({\\vec V}') are not read, and the rotation in indices (R^I_J, delta^I_J, eps^I{}_{JK}) is "
-        "not tied to a rotation; only the transpose of a product of rotations is",
+        "not tied to a rotation; only the transpose of a product of rotations is, and the two displays that type a "
+        "symbol's command without its backslash (flagged)",
     ("lawrence-phys162-rotation-group-so3-generators-su2", "found"):
-        "none of its nine slips is flagged: they sit in the vector rotation with {\\vec V}', in the index form, in "
-        "R(theta/N) with \\hbar, in a limit and in an SU(2) matrix row without its &, none of them read",
+        "2 of 9: the two displays that type a symbol's command without its backslash (sin theta, \\to infty) are "
+        "flagged; the rest sit in the vector rotation with {\\vec V}', in the index form, in R(theta/N) with \\hbar "
+        "and in an SU(2) matrix row without its &, none of them read",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
         "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
         "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
-        "matrices stay unchecked",
+        "matrices stay unchecked (but for the spin-1 J_y's letter o for a zero, flagged)",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
-        "its three slips (a matrix element's bra, the spin-1/2 rotation's entries, the spin-1 J_x and J_y) sit in "
-        "displays with kets, \\hbar or the rotation operator, none of them read",
+        "1 of 3: the spin-1 display is flagged for J_y's letter o typed for a zero; the matrix element's bra and the "
+        "spin-1/2 rotation's entries sit in displays with kets, \\hbar or the rotation operator, none of them read",
     ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
         "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
         "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor \\mathbf{I}_{\\mathcal{B}}^{\\bm{c}}, inner "
@@ -283,12 +285,10 @@ SHORT = {
         "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "
         "integrals over the body",
     ("game-physics-notes-collision-impulse-relative-velocity-zh", "checked"):
-        "game physics notes on the collision impulse: before and after (v_rel^-, v_rel^+) are read as names, but "
+        "game physics notes on the collision impulse: 1 of 11 (its slip, a number added to a vector, flagged); "
+        "before and after (v_rel^-, v_rel^+) are read as names, but "
         "the inverse tensors I_a^{-1} acting on vectors, and the ties the prose sets (v^+ = v^- + dv, the law of "
         "restitution, n . n = 1), are not",
-    ("game-physics-notes-collision-impulse-relative-velocity-zh", "found"):
-        "its one slip, the masses' term 1/m_a + 1/m_b left a number beside vectors when j is taken out, sits "
-        "in the unread derivation of j",
 }
 
 FLOOR = {"checked": 886, "slips_flagged": 104, "holds_flagged": 0}

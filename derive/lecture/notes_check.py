@@ -247,6 +247,9 @@ class Checker(ReadingRules):
                 if not (self._nested_spins(item.line, piece) or self._turn_rates(item.line, piece)):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._hat_unread(item.line, piece, before)
+                self._lost_backslash(item.line, piece, latex, before)
+                self._letter_digits(item.line, piece, before)
+                self._scalar_vector_sum(item.line, piece, before)
                 self._stated_theorem(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)

@@ -36,6 +36,8 @@ from derive.lecture.free_integrals import FreeIntegrals
 from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
 from derive.lecture.judging import Judging
+from derive.lecture.letter_digits import LetterDigits
+from derive.lecture.lost_backslash import LostBackslash
 from derive.lecture.moments_small import SmallMoments
 from derive.lecture.named_vector_claims import NamedVectors
 from derive.lecture.nested_spins import NestedSpins
@@ -47,6 +49,7 @@ from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.quaternions import Quaternions
 from derive.lecture.rotation_products import RotationProducts
+from derive.lecture.scalar_vector_sums import ScalarVectorSums
 from derive.lecture.rereading import Rereading
 from derive.lecture.restated import Restated
 from derive.lecture.section_convention import SectionConvention
@@ -69,5 +72,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
+                   LostBackslash, LetterDigits, ScalarVectorSums):
     """Every reading rule, in method-lookup order (see the module docstring)."""
