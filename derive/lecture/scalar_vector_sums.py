@@ -10,15 +10,16 @@ behind (``j [\\frac{1}{m_a} + … \\times \\mathbf{r}_a]``).
 Left alone: a term with a letter over a number or a bold letter in its fraction (``\\frac{j\\mathbf{n}}{m_a}``),
 a cross product dotted with a vector (``( … \\times \\mathbf{r}_a) \\cdot \\mathbf{n}``, a scalar), a cross of
 plain letters (``2 \\times 3``), and a statement another reader already flagged. May import:
-:mod:`derive.lecture.statements`.
+:mod:`derive.lecture.statements`, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
 import re
 
+from derive.lecture.latex_spellings import VECTOR_MARK
 from derive.lecture.statements import top_level
 
-_BOLD = r"\\(?:mathbf|boldsymbol|bm|pmb|vec)\b"
+_BOLD = VECTOR_MARK + r"(?![A-Za-z])"
 _RECIPROCAL = re.compile(r"\s*[-+]?\s*\\[dt]?frac\s*\{\s*\d+\s*\}\s*\{([^{}]*)\}\s*")
 _BOLD_LAST = re.compile(r"\s*" + _BOLD + r"\s*\{[^{}]*\}\s*(?:_\s*(?:\{[^{}]*\}|\w))?\s*")
 _SIGNS = re.compile(r"[-+]")
