@@ -112,3 +112,29 @@ def test_a_method_s_selection_macro_leaves_the_object_alone(cache):
         cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, pastes), "tiny.c",
                                [*cbuild.DEFAULT_FLAGS, "-DDERIVE_SELECT", flag])
     assert len(objects(cache)) == 3
+
+
+def test_a_process_preprocesses_the_runtime_once_per_flag_set_and_unit(cache, tmp_path, monkeypatch):
+    """Libraries of one flag set built in one process run the preprocessor on the runtime's unit
+    once; other flags or another runtime source run it again, and so does every build whose
+    flags name the user's files (an include folder may change between two builds)."""
+    runs = []
+    real_run = cbuild._run
+
+    def counted(cmd, cwd, what):
+        runs.extend(["-E"] if "-E" in cmd else [])
+        return real_run(cmd, cwd, what)
+
+    monkeypatch.setattr(cbuild, "_PREPROCESSED", {})
+    monkeypatch.setattr(cbuild, "_run", counted)
+    for _ in range(3):
+        assert cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c").tiny_answer() == 42
+    assert len(runs) == 1 and len(objects(cache)) == 1
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c", [*cbuild.DEFAULT_FLAGS, "-O2"])
+    cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex, "int derive_tiny_extra;\n"), "tiny.c")
+    assert len(runs) == 3 and len(objects(cache)) == 3
+    (tmp_path / "include").mkdir()
+    for _ in range(2):
+        cbuild.compile_library("tiny", with_runtime(uuid.uuid4().hex), "tiny.c",
+                               [*cbuild.DEFAULT_FLAGS, "-I", str(tmp_path / "include")])
+    assert len(runs) == 5 and len(objects(cache)) == 4

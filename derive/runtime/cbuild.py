@@ -90,6 +90,16 @@ RUNTIME_LINKED = "-DDERIVE_RUNTIME_LINKED"
 RUNTIME_OBJECT = "derive_runtime"
 _QUOTED_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*"([^"]+)"', re.MULTILINE)
 _loaded: dict[str, ctypes.CDLL] = {}
+# The runtime's unit as the preprocessor gave it, by compiler, flags, unit sources and include
+# path: a process building many libraries of one flag set (the suite, a sweep over models) would
+# otherwise preprocess the same unit for each; system headers are taken as fixed while it runs,
+# as the compiler is (_compiler_identity). Bounded: a few flag sets are all a process uses.
+_PREPROCESSED: dict[tuple, str] = {}
+_PREPROCESSED_KEEP = 32
+_INCLUDE_PATH_VARIABLES = ("CPATH", "C_INCLUDE_PATH", "GCC_EXEC_PREFIX", "COMPILER_PATH")
+# Flags that make the preprocessor read the user's files (include folders, forced includes, a
+# sysroot, response files), which may change between two builds: never remembered.
+_FLAGS_READING_FILES = ("-I", "-i", "--sysroot", "-B", "@")
 _lock = threading.Lock()
 def compiler() -> list[str]:
     """The C compiler command: ``$CC`` (may carry arguments), default ``cc``."""
@@ -361,13 +371,23 @@ def _included(sources: dict[str, str], main: str) -> dict[str, str]:
     return unit
 
 
-def _preprocessed(work: Path, cmd: list[str], flags: list[str]) -> str:
-    """:data:`HOST_SOURCE` of the sources written in ``work`` as the preprocessor gives it with
-    ``flags`` (``-E -P``): every file it includes and every macro it reads, by name or pasted,
-    and nothing else."""
+def _preprocessed(work: Path, cmd: list[str], flags: list[str], unit: dict[str, str]) -> str:
+    """:data:`HOST_SOURCE` of the sources written in ``work`` (``unit``: those it can read) as
+    the preprocessor gives it with ``flags`` (``-E -P``): every file it includes and every macro
+    it reads, by name or pasted, and nothing else. Run once per process for a compiler, flags,
+    unit and include path (:data:`_PREPROCESSED`) unless a flag names files of the user's."""
+    key = (tuple(cmd), tuple(flags), tuple(sorted(unit.items())),
+           tuple(os.environ.get(name) for name in _INCLUDE_PATH_VARIABLES))
+    if key in _PREPROCESSED:
+        return _PREPROCESSED[key]
     _run([*cmd, *flags, "-E", "-P", "-o", "derive-runtime-unit.i", HOST_SOURCE], work,
          "preprocessing the runtime")
-    return (work / "derive-runtime-unit.i").read_text(errors="replace")
+    text = (work / "derive-runtime-unit.i").read_text(errors="replace")
+    if not any(f.startswith(_FLAGS_READING_FILES) for f in flags):  # (under compile_library's _lock)
+        if len(_PREPROCESSED) >= _PREPROCESSED_KEEP:
+            _PREPROCESSED.pop(next(iter(_PREPROCESSED)))
+        _PREPROCESSED[key] = text
+    return text
 
 
 def _runtime_object(work: Path, sources: dict[str, str], cmd: list[str], flags: list[str]) -> bytes:
@@ -378,7 +398,7 @@ def _runtime_object(work: Path, sources: dict[str, str], cmd: list[str], flags: 
     (:func:`_preprocessed`) and the flags other than ``-D``/``-U`` (whose effect is all in that
     text), so that a macro the runtime never reads (a model's method selection) shares it."""
     unit = _included(sources, HOST_SOURCE)
-    text = _preprocessed(work, cmd, flags)
+    text = _preprocessed(work, cmd, flags, unit)
     key = _key({HOST_SOURCE: text}, [HOST_SOURCE, "-c"], cmd,
                [f for f in flags if not f.startswith(("-D", "-U"))])
     fname = f"{RUNTIME_OBJECT}-{key[:24]}.o"
