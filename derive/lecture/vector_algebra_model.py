@@ -135,6 +135,11 @@ _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*" + BOLD_MAR
 
 
 _UNIT_TENSOR = re.compile(BOLD_MARK + r"\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
+_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|\\(?:mathbb|mathds|mathrm|mathbf|boldsymbol|bm)\s*\{\s*1\s*\}(?!\s*[_^])")
+"""The unit tensor written as a one (``\\one``, ``\\mathbb{1}``, ``\\mathds{1}``, ``\\mathbf{1}``)."""
+_DYADIC = re.compile(r"\{?\s*" + VECTOR_MARK + r"\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}?\s*\{?\s*" + VECTOR_MARK +
+                     r"\s*\{?\s*\1(?![A-Za-z])\s*\}?(?!\s*_)")
+"""A bold letter written twice in a row, 𝐫𝐫 (``{\\bf r} {\\bf r}``): the dyadic 𝐫𝐫ᵀ."""
 
 
 _PART_LABEL = re.compile(r"(\\vec\s*\{?\s*a\s*\}?\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))\s*\^\s*\{?\s*([tn])\s*\}?(?![A-Za-z{])")
@@ -171,6 +176,8 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
     if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
         text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
+    if "\\otimes" in text or _DYADIC.search(text):    # beside a dyadic, a one is the unit tensor
+        text = _UNIT_ONE.sub(r" \\mathrm{I} ", text)
     text = _mass_element(_pieces(text) if "\\sum" in text else text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _ACCENTED_BOLD.sub(r"\\\1{\\\2{\3}}", text)
