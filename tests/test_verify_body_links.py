@@ -28,3 +28,16 @@ def test_a_volume_element_beside_the_mass_is_not_read_as_the_mass_element():
     massive = (r"\frac{\mathrm{d} T}{\mathrm{d} t} = \int_V m \mathbf{f} \cdot (\boldsymbol{\omega} \times \mathbf{r}) "
                r"\mathrm{d} V = \int_V \boldsymbol{\omega} \cdot (\mathbf{r} \times \mathbf{f}) \mathrm{d} V")
     assert set(_verdicts(massive)) == {"unchecked"}
+
+
+def test_a_link_from_the_bodys_momentum_to_its_integral_holds_and_one_resting_on_the_set_up_is_not_flagged():
+    chain = (r"L_n = \mathbf{n} \cdot \mathbf{L} = \int_V \rho \mathbf{r} \times (\boldsymbol{\omega} \times \mathbf{r}) "
+             r"\cdot \mathbf{n} \mathrm{d} V = \int_V \rho (\mathbf{n} \times \mathbf{r}) \cdot (\mathbf{n} \times \mathbf{r}) "
+             r"\omega \mathrm{d} V")
+    assert _verdicts(chain) == ["holds"]        # the last link holds only for omega along n
+
+
+def test_a_position_from_a_reference_point_beside_a_velocity_is_not_read_from_the_origin():
+    chain = (r"\mathbf{J} = \sum_{i=1}^n m_i \Delta\mathbf{r}_i \times \mathbf{v}_i "
+             r"= \sum_{i=1}^n m_i \Delta\mathbf{r}_i \times (\boldsymbol{\omega} \times \Delta\mathbf{r}_i)")
+    assert set(_verdicts(chain)) == {"unchecked"}

@@ -79,8 +79,8 @@ SHORT = {
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in chains through B_jh and Delta_j, definitions over generic indices the reader does not read",
     ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
-        "17 of 29: the power's links between integrals over the body (int_V f . rdot dV = int_V f . (omega x r) dV) "
-        "are read; the links that hold only for omega along n (int_V rho r x (omega x r) . n dV), the "
+        "18 of 29: the links between integrals over the body (int_V f . rdot dV = int_V f . (omega x r) dV, "
+        "n . L = int_V rho r x (omega x r) . n dV) are read; the links that hold only for omega along n, the "
         "element I_ij with a Kronecker delta and a sum over k, the parallel-axis theorem in matrices "
         "(I = I_C + I', which then takes the letter I), I_n = n^T I n and the centre-of-mass splitting "
         "(L = R x M V + L') are not read",

@@ -5,8 +5,8 @@ Gives the mixin `BodyLinks` of `derive.lecture.notes_check.Checker`: `_body_link
 no other reader took whole. Texts derive 𝐋, T and the power as a chain whose head the reader cannot
 tie to the body (L_n, dT/dt, a name of the text's) or whose last member names the text's own
 quantity (𝛚·𝐌^(e)), while the members between are integrals over the body (``\\int_V … dV``,
-``\\int … dm``) or sums over its particles (``\\sum_i m_i …``). Each link between two such members
-is read alone, the two set equal, by the vector-algebra reader (`derive.lecture.vector_algebra_model`:
+``\\int … dm``) or sums over its particles (``\\sum_i m_i …``). Each link with such a member on one
+side at least (𝐧·𝐋 = ∫_V ρ 𝐫 × (𝛚 × 𝐫)·𝐧 dV) is read alone, the two set equal, by the vector-algebra reader (`derive.lecture.vector_algebra_model`:
 three generic mass points, 𝐯 = 𝛚 × 𝐫); it holds when it is an identity there. A link that is not
 one stays unchecked, never flagged: the text's set-up said in words (𝛚 = ω𝐧 with 𝐧 a unit vector,
 a point at rest) may tie its two members. For that reading alone a volume element with no density
@@ -14,7 +14,8 @@ in the link (a density of force 𝐟 dV) is the mass element, the weights of the
 or 𝐩 in the link: an identity between two integrals of one weight holds for every weight); a bold
 vector's label in a bracketed superscript (𝐟^(e), 𝐌^(e)) is dropped when each such letter carries
 one label only; a position measured from a reference point, Δ𝐫ᵢ, is 𝐫ᵢ from that point as origin
-(in a link without a rate, every bold r carrying the Δ).
+(in a link without a rate, a velocity or a momentum, which a moving reference point would change,
+every bold r carrying the Δ).
 May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spellings`,
 :mod:`derive.lecture.statements`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.definite_integrals`.
 """
@@ -38,7 +39,7 @@ _MASSIVE = re.compile(r"\\rho|(?<![A-Za-z\\])m(?![A-Za-z])|" + BOLD_MARK + r"\s*
 _LABEL = re.compile(r"(" + BOLD_MARK + r"\s*\{\s*(\\?[A-Za-z]+)\s*\})\s*\^\s*\{\s*\(\s*([A-Za-z]+)\s*\)\s*\}")
 _BOLD_LETTER = r"(?:" + BOLD_MARK + r")\s*\{\s*%s\s*\}"
 _DELTA_R = re.compile(r"\\Delta\s*(" + BOLD_MARK + r"\s*\{\s*r\s*\})")
-_RATE = re.compile(r"\\dot|\\frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)")
+_MOVING = re.compile(r"\\dot|\\frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)|(?<![A-Za-z\\])[vp](?![A-Za-z])|" + BOLD_MARK + r"\s*\{?\s*[vp]\b")
 
 
 def _members(text):
@@ -74,7 +75,7 @@ def prepared(link):
     if _VOLUME.search(link) and not _MASSIVE.search(link):
         link = _VOLUME.sub(" dm", link)
     deltas = len(_DELTA_R.findall(link))
-    if deltas and not _RATE.search(link) and deltas == len(re.findall(_BOLD_LETTER % "r", link)):
+    if deltas and not _MOVING.search(link) and deltas == len(re.findall(_BOLD_LETTER % "r", link)):
         link = _DELTA_R.sub(r"\1", link)
     return link
 
@@ -83,14 +84,14 @@ class BodyLinks:
     """Mixin of the checker. Uses ``self._alg``, ``self._add``."""
 
     def _body_links(self, line, piece, text) -> bool:
-        """Judge the links between adjacent members over the body (True when one holds: its claims are the
+        """Judge the links of adjacent members, one at least over the body (True when one holds: its claims are the
         links that hold, the other links left unread)."""
         members = _members(text)
         if len(members) < 2:
             return False
         held = []
         for a, b in zip(members, members[1:]):
-            if not (_over_body(a) and _over_body(b)) or not a.strip() or not b.strip():
+            if not (_over_body(a) or _over_body(b)) or not a.strip() or not b.strip():
                 continue
             link = prepared(f"{a.strip()} = {b.strip()}")
             if link is None:
