@@ -6,8 +6,9 @@ no other reader took whole. Texts derive 𝐋, T and the power as a chain whose 
 tie to the body (L_n, dT/dt, a name of the text's) or whose last member names the text's own
 quantity (𝛚·𝐌^(e)), while the members between are integrals over the body (``\\int_V … dV``,
 ``\\int … dm``) or sums over its particles (``\\sum_i m_i …``). Each link with such a member on one
-side at least (𝐧·𝐋 = ∫_V ρ 𝐫 × (𝛚 × 𝐫)·𝐧 dV) is read alone, the two set equal, by the vector-algebra reader (`derive.lecture.vector_algebra_model`:
-three generic mass points, 𝐯 = 𝛚 × 𝐫); it holds when it is an identity there. A link that is not
+side at least (𝐧·𝐋 = ∫_V ρ 𝐫 × (𝛚 × 𝐫)·𝐧 dV) is read alone, the two set equal, by the vector-algebra
+reader (`derive.lecture.vector_algebra_model`: three generic mass points, 𝐯 = 𝛚 × 𝐫); it holds when
+it is an identity there. A link that is not
 one stays unchecked, never flagged: the text's set-up said in words (𝛚 = ω𝐧 with 𝐧 a unit vector,
 a point at rest) may tie its two members. For that reading alone a volume element with no density
 in the link (a density of force 𝐟 dV) is the mass element, the weights of the points (no mass, 𝐋, 𝐈
@@ -30,8 +31,8 @@ from derive.lecture.definite_integrals import DEFINITE
 from derive.lecture.latex_spellings import BOLD_MARK
 from derive.lecture.statements import top_level
 
-WHY = ("a link between two integrals over the body (or sums over its particles), read alone as an identity "
-       "for three generic mass points (𝐯 = 𝛚 × 𝐫): holds")
+WHY = ("a link of the chain with an integral over the body (or a sum over its particles) on one side at least, "
+       "read alone as an identity for three generic mass points (𝐯 = 𝛚 × 𝐫): holds")
 _EQUALS = re.compile(r"(?<![<>!\\])=(?!=)")
 _OVER_BODY = re.compile(r"\\int(?![A-Za-z])|\\sum(?![A-Za-z])")
 _VOLUME = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\\mathrm\s+d|(?<![A-Za-z\\])d)\s*(?:\\,|\\;|\s)*(?:V|\^\s*\{?\s*3\s*\}?\s*r)(?![A-Za-z])")
@@ -84,8 +85,8 @@ class BodyLinks:
     """Mixin of the checker. Uses ``self._alg``, ``self._add``."""
 
     def _body_links(self, line, piece, text) -> bool:
-        """Judge the links of adjacent members, one at least over the body (True when one holds: its claims are the
-        links that hold, the other links left unread)."""
+        """Judge the links of adjacent members, one at least over the body (True when one holds: its claims
+        are the links that hold, the other links left unread)."""
         members = _members(text)
         if len(members) < 2:
             return False
@@ -98,7 +99,8 @@ class BodyLinks:
                 continue
             try:
                 reading = va.read(link, copy.deepcopy(self._alg))
-            except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError):
+            except (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
+                    NotImplementedError, RecursionError):
                 continue
             sides = reading.members[0] if len(reading.members) == 1 else None
             if reading.free or reading.unread or reading.relations != ["="] or sides is None or len(sides) != 2 \
@@ -116,4 +118,5 @@ class BodyLinks:
 
 
 def _zero(d) -> bool:
+    """d, a scalar or a matrix already expanded (`va.difference`), is zero."""
     return all(e == 0 for e in d) if hasattr(d, "shape") else d == 0
