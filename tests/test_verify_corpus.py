@@ -79,7 +79,8 @@ SHORT = {
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
         "in chains through B_jh and Delta_j, definitions over generic indices the reader does not read",
     ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
-        "integrals over the body of vector integrands (int_V rho r x (omega x r) dV, int_V f . rdot dV), the "
+        "18 of 29: the links between integrals over the body (int_V f . rdot dV = int_V f . (omega x r) dV, "
+        "n . L = int_V rho r x (omega x r) . n dV) are read; the links that hold only for omega along n, the "
         "element I_ij with a Kronecker delta and a sum over k, the parallel-axis theorem in matrices "
         "(I = I_C + I', which then takes the letter I), I_n = n^T I n and the centre-of-mass splitting "
         "(L = R x M V + L') are not read",
@@ -189,11 +190,11 @@ SHORT = {
         "its restatement in plain letters L = I omega sets the text's L, which no rotation enters, and "
         "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
     ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "23 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r, the "
+        "24 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r, the "
         "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
         "(not a link between two integrals, but each against the value the chain reaches) and r . n and r^2 with "
-        "n and r written in brackets are read; the tensor 1 r^2 - r r with \\one undefined, the moment about an "
-        "axis n . I . n, the integrals with the density put in, and the values in R and h after the sphere "
+        "n and r written in brackets and the tensor 1 r^2 - r r (\\one beside the dyadic) are read; the moment "
+        "about an axis n . I . n, the integrals with the density put in, and the values in R and h after the sphere "
         "redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "

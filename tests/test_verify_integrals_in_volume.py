@@ -30,6 +30,12 @@ def test_r_with_an_index_in_an_integral_is_its_element_and_e_beside_a_dyadic_the
     assert not _holds(r"\boldsymbol I = \rho \int (r_i^2 \mathbf e + \boldsymbol r_i \otimes \boldsymbol r_i) \mathrm dV")
 
 
+def test_a_one_beside_a_dyadic_is_the_unit_tensor():
+    assert _holds(r"\boldsymbol L = \int \rho(\mathbf r) (\one r^2 - \mathbf r \mathbf r) \mathrm d^3 r \cdot \boldsymbol \omega")
+    assert _holds(r"\boldsymbol L = \int (\mathbb{1} r^2 - {\bf r} {\bf r}) dm \cdot \boldsymbol \omega")
+    assert not _holds(r"\boldsymbol L = \int (\one r^2 + \mathbf r \mathbf r) dm \cdot \boldsymbol \omega")
+
+
 def test_a_density_that_does_not_pair_with_the_volume_element_is_not_read_as_the_mass():
     try:
         ok = _holds(r"\boldsymbol L = \rho \rho \int \boldsymbol r \times \boldsymbol v \mathrm dV")

@@ -322,7 +322,8 @@ class Checker(ReadingRules):
         except lx.NotRead as err:
             why = err.why
             if self._dot_integral(line, piece, text) or self._vectors(line, piece, text) or self._algebra_or_named(line, piece, text) \
-                    or self._roots_restated(line, piece, text) or self._named_vectors(line, piece, text):
+                    or self._roots_restated(line, piece, text) or self._named_vectors(line, piece, text) \
+                    or self._body_links(line, piece, text):
                 return
             if why.startswith("unknown symbol") and self._new_symbol(line, piece, text):
                 return

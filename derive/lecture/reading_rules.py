@@ -14,6 +14,7 @@ from derive.lecture.algebra_claims import AlgebraStatements
 from derive.lecture.axis_angle_turns import AxisAngleTurns
 from derive.lecture.axis_products import AxisProducts
 from derive.lecture.basis_vectors import BasisVectors
+from derive.lecture.body_links import BodyLinks
 from derive.lecture.hat_basis import HatBasis
 from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.chain_links import ChainLinks
@@ -73,5 +74,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
-                   LostBackslash, LetterDigits, ScalarVectorSums):
+                   LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -135,6 +135,9 @@ _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*" + BOLD_MAR
 
 
 _UNIT_TENSOR = re.compile(BOLD_MARK + r"\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
+# the unit tensor written as a one (\one, \mathbb{1}, \mathbf{1}), and the dyadic 𝐫𝐫 (a bold letter twice in a row)
+_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|\\(?:mathbb|mathds|mathrm|mathbf|boldsymbol|bm)\s*\{\s*1\s*\}(?!\s*[_^])")
+_DYADIC = re.compile(r"\{?\s*" + VECTOR_MARK + r"\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}?\s*\{?\s*" + VECTOR_MARK + r"\s*\{?\s*\1(?![A-Za-z])\s*\}?(?!\s*_)")
 
 
 _PART_LABEL = re.compile(r"(\\vec\s*\{?\s*a\s*\}?\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))\s*\^\s*\{?\s*([tn])\s*\}?(?![A-Za-z{])")
@@ -162,15 +165,15 @@ def _prepare(text: str) -> str:
     ((𝐚.𝐜)𝐛), a point's label written as a superscript (I_xx^{cm}) dropped, an acceleration's
 label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axis M_z(𝐅ᵢ) as (𝐫ᵢ × 𝐅ᵢ)_z, ρ … dV as dm (and
     under a sum a piece's Δmᵢ and ρᵢ … ΔVᵢ as mᵢ), the
-    momentum element d𝐩 as 𝐯 dm, beside a dyadic 𝐞 as the unit tensor, and an accent over a bold
+    momentum element d𝐩 as 𝐯 dm, beside a dyadic 𝐞 or a one as the unit tensor, and an accent over a bold
     letter written without braces (``\\dot{\\boldsymbol\\omega}``) as over the braced letter."""
     text = _DOT_AS_PERIOD.sub(r" \\cdot ", text)
     text = _POINT_SUPERSCRIPT.sub("", text)
     text = _MOMENT_OF.sub(lambda m: f"(\\vec r{'_' + m.group(3) if m.group(3) else ''} \\times {m.group(2)})_{m.group(1)}", text)
     text = _PART_LABEL.sub(lambda m: m.group(1) + ("^{\\tau}" if m.group(2) == "t" else "^{n}"), text)
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
-    if "\\otimes" in text:          # beside a dyadic, a bold e without an index is the unit tensor
-        text = _UNIT_TENSOR.sub(r"\\mathrm{I}", text)
+    if "\\otimes" in text or _DYADIC.search(text):    # beside a dyadic, a one (and beside ⊗ a bold e) is the unit tensor
+        text = _UNIT_ONE.sub(r" \\mathrm{I} ", _UNIT_TENSOR.sub(r"\\mathrm{I}", text) if "\\otimes" in text else text)
     text = _mass_element(_pieces(text) if "\\sum" in text else text)
     text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _ACCENTED_BOLD.sub(r"\\\1{\\\2{\3}}", text)
