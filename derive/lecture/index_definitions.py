@@ -15,6 +15,7 @@ May import: the standard library, SymPy, :mod:`derive.lecture.latex`, :mod:`deri
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import sympy as sp
@@ -52,5 +53,11 @@ def instance(sym, defs: dict):
             continue
         letters = _over_indices(key, value)
         if letters:
-            return components(value, dict(zip(letters, m["sub"])))
+            return _put_in(value, letters, m["sub"])
     return None
+
+
+@functools.lru_cache(maxsize=4096)
+def _put_in(value, letters: str, digits: str):
+    """A definition's right side at its head's indices, kept: each reading resolves the same instances again."""
+    return components(value, dict(zip(letters, digits)))
