@@ -29,9 +29,10 @@ SHORT = {
     # (text, target): why the reader is short of it today
     ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "checked"):
         "lecture notes on rotations in index notation and the notes' own macros: its determinants of A are read "
-        "(det(AA^T) = det(A)det(A^T) = [det A]^2), but det A = +-1, index sums ((AA^T)_ij = A_ik A_jk), direction "
-        "cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, the rotation "
-        "formula in indices (eps_ijk, n_i) and the generators T_k with their commutators are not",
+        "(det(AA^T) = det(A)det(A^T) = [det A]^2) and so is a chain in index notation that holds as written "
+        "(n_k sin = -eps_ijk R_ij / 2), but det A = +-1, a matrix's entry written on a bracket ((AA^T)_ij), "
+        "direction cosines e'_i . e_j and components a'_i = l_ij a_j of vectors the text never writes out, chains "
+        "in indices with a first-order step or Tr R in them and the generators T_k with their commutators are not",
     ("maithripala-rigid-body-equations-assignment-parallel-axis-answer", "checked"):
         "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
         "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
@@ -73,11 +74,11 @@ SHORT = {
     ("principia-celledoni-free-body-elliptic-solution", "checked"):
         "a LaTeX note in its project's semtex package, whose commands (\\pa, \\of, \\TimeDerivative, \\JacobiSN) "
         "are read as the package sets them and whose letters (\\vm, \\gD_j, \\gl) as symbols of their names: its "
-        "claims relate the body angular momentum m, not named as one, and definitions over generic indices (I_jh, "
-        "Delta_j, B_jh with its sign rule in the prose), which the reader does not tie to the derivation",
+        "claims relate the body angular momentum m, not named as one, and B_jh, whose sign rule under the root is "
+        "in the prose; the definitions over generic indices I_jh and Delta_j are read in their instances",
     ("principia-celledoni-free-body-elliptic-solution", "found"):
         "its two slips (the radicands Delta_3 and Delta_1 for -Delta_3 and -Delta_1 in the chains for lambda) sit "
-        "in chains through B_jh and Delta_j, definitions over generic indices the reader does not read",
+        "in chains through B_jh, a definition over generic indices with a sign rule in the prose the reader does not read",
     ("inertia-matrix-euler-dynamical-equations-zh-notes", "checked"):
         "18 of 29: the links between integrals over the body (int_V f . rdot dV = int_V f . (omega x r) dV, "
         "n . L = int_V rho r x (omega x r) . n dV) are read; the links that hold only for omega along n, the "

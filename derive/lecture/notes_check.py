@@ -60,6 +60,7 @@ from derive.lecture.statements import continues, repeated_labels, restates_side,
 from derive.lecture.text_motion import top_relations
 from derive.lecture.text_matrices import matrices_put
 from derive.lecture.inferred_convention import inferred
+from derive.lecture.index_definitions import instance
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -420,6 +421,8 @@ class Checker(ReadingRules):
                     rep[s] = self.ctx.subs[s]      # a case the text sets for its own symbol wins
                 elif s in self.ctx.defs:
                     rep[s] = self.ctx.defs[s]
+                elif (value := instance(s, self.ctx.defs)) is not None:
+                    rep[s] = value      # I_31 by the text's I_jh
             rep.update(self._dotted_definitions(v, syms))
             if not rep:
                 break

@@ -36,9 +36,9 @@ from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
 from derive.lecture.text_matrices import matrix_power
-from derive.lecture.unread_members import UnreadMembers, applied_names_multiplied
+from derive.lecture.unread_members import UnreadMembers
 from derive.lecture.sparse_forms import free_symbols
-from derive.lecture.zero_test import differs_somewhere, expanded, surely_nonzero, entry_zero
+from derive.lecture.zero_test import entry_zero
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l
 from derive.symbolic.rotations import ANGLES, RATES, time_derivative
 
@@ -290,23 +290,14 @@ class TextNames(UnreadMembers):
         if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
             self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
             return True
+        if self._index_identity(line, piece, members, rels):
+            return True
         self._add(line, piece, "unknown", "unchecked",
                   f"relates {names}, which the text has not tied to the derivation")
         if not getattr(self, "_rereading_later", False):
             self.deferred.append((self.claims[-1], line, piece, self._snapshot()))
         self.settings_only = False
         return True
-
-    def _identity_whatever(self, members) -> bool:
-        """Every member the same expression whatever the text's undefined names stand for."""
-        try:
-            first = self._calculus(self._resolve(members[0]))
-            others = (self._calculus(self._resolve(m)) for m in members[1:])
-            return not applied_names_multiplied(getattr(self, "_text", "")) and all(
-                not surely_nonzero(d) and not differs_somewhere(o, first, "whatever") and expanded(d) == 0
-                for o, d in ((o, o - first) for o in others))
-        except TypeError:           # a matrix of the text's beside names it has not defined
-            return False
 
     def _read_later_definitions(self):
         """A statement in names the text defines only further on (a product of matrices given one
