@@ -37,9 +37,6 @@ SHORT = {
     ("unlam-analytical-mechanics-euler-equations-misaligned-gear-zxz", "checked"):
         "the components Omega_i set equal to the rows of a column in the Euler angles are not tied to the "
         "derivation, and the gear's hatted unit vectors of two frames and cross products of named vectors are not read",
-    ("unlam-analytical-mechanics-euler-equations-misaligned-gear-zxz", "false"):
-        "a partial derivative of a component Omega_3 the text has not tied is taken as zero, so dOmega_3/dpsi-dot = 1 "
-        "is flagged",
     ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "checked"):
         "lecture notes on rotations in index notation and the notes' own macros: its determinants of A are read "
         "(det(AA^T) = det(A)det(A^T) = [det A]^2), but det A = +-1, index sums ((AA^T)_ij = A_ik A_jk), direction "
@@ -304,7 +301,7 @@ SHORT = {
         "in the unread derivation of j",
 }
 
-FLOOR = {"checked": 886, "slips_flagged": 104, "holds_flagged": 0}
+FLOOR = {"checked": 892, "slips_flagged": 104, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
