@@ -33,7 +33,8 @@ def partial(expr, var, n, checker):
     kept = checker._constants() | set(checker.ctx.defs) | out.free_symbols | {var}
     lost = {s for s in expr.free_symbols
             if isinstance(s, Generic) and s not in kept and not _same_coordinate(s, var, checker.vocab)}
-    if lost:
+    # a trial reading without the names the prose gave (``vocab.names_off``) is no reading of the display's
+    if lost and not getattr(checker.vocab, "names_off", False):
         checker.partials_lost = getattr(checker, "partials_lost", set()) | lost
     return out
 
