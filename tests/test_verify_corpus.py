@@ -27,6 +27,16 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("danchev-intermediate-axis-theorem-perturbative-stability", "checked"):
+        "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the first order "
+        "about a steady spin with O(delta omega^2) terms, the oscillator's rate kappa and the solution's Theta, "
+        "a cylinder's moments and the parallel axis theorem in a bold I are not read",
+    ("danchev-intermediate-axis-theorem-perturbative-stability", "found"):
+        "its three slips (I' = I + mR^2 for the tensor, exp(kappa t) twice, Theta's radicand) sit on displays it does "
+        "not read",
+    ("unlam-analytical-mechanics-euler-equations-misaligned-gear-zxz", "checked"):
+        "Euler's equations in the index form I_i Omega_i-dot - (I_j - I_k) Omega_j Omega_k = tau_i and on the gear's "
+        "axes x, y, z, the gear's hatted unit vectors of two frames and cross products of named vectors are not read",
     ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "checked"):
         "lecture notes on rotations in index notation and the notes' own macros: its determinants of A are read "
         "(det(AA^T) = det(A)det(A^T) = [det A]^2) and so is a chain in index notation that holds as written "

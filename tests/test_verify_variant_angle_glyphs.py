@@ -27,3 +27,11 @@ def test_the_usual_names_are_kept_when_the_text_writes_theta():
     assert nt.angle_aliases(notes) == ("phi", "theta", "psi")
     notes = nt.parse_notes("# x\n\n$\\vartheta$, $\\varphi$, $\\psi$\n")
     assert nt.angle_aliases(notes) == ("varphi", "vartheta", "psi")
+
+
+def test_a_varphi_whose_rate_the_text_writes_is_the_first_angle():
+    # θ written, but φ as \varphi with its rate and never \phi: an angle, not a phase (a phase has no rate)
+    notes = nt.parse_notes("# x\n\n$\\theta$, $\\dot{\\varphi}$ and $\\psi$\n")
+    assert nt.angle_aliases(notes) == ("varphi", "theta", "psi")
+    notes = nt.parse_notes("# x\n\n$\\phi$, $\\theta$, and a rate $\\dot{\\varphi}$\n")
+    assert nt.angle_aliases(notes) == ("phi", "theta", "psi")

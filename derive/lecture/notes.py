@@ -461,6 +461,9 @@ def angle_aliases(notes) -> tuple:
     return ()
 
 
+_RATE_OF_VARPHI = re.compile(r"\\dot\s*\{?\s*\\varphi(?![A-Za-z])")
+
+
 def _written(letter: str, body: str) -> bool:
     return re.search(r"\\" + letter + r"(?![A-Za-z])", body) is not None
 
@@ -468,7 +471,10 @@ def _written(letter: str, body: str) -> bool:
 def _variant_glyphs(names: tuple, body: str) -> tuple:
     """The usual φ, θ, ψ in the glyphs the text writes them in: a text whose tilt is ϑ
     (``\\vartheta``, never ``\\theta``) writes its angles in the variant letters, ϑ and φ
-    (``\\varphi`` unless it also writes ``\\phi``); a text that writes θ keeps the usual names."""
+    (``\\varphi`` unless it also writes ``\\phi``); a text that writes θ keeps the usual names,
+    but for a φ whose rate it writes (``\\dot{\\varphi}``, never ``\\phi``): a phase has no rate."""
+    if _RATE_OF_VARPHI.search(body) and not _written("phi", body):
+        names = tuple("varphi" if n == "phi" else n for n in names)
     if not _written("vartheta", body) or _written("theta", body):
         return names
     swap = {"theta": "vartheta", "phi": "phi" if _written("phi", body) else "varphi"}

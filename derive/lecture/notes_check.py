@@ -209,6 +209,7 @@ class Checker(ReadingRules):
             self._close_display()
         self._cases_not_applied(item, start)
         self._free_indices_unlike(item, latex, start)
+        self._untied_partials_unjudged(start)
 
     def _display_statements(self, item, latex):
         pieces = statements(latex)

@@ -63,6 +63,7 @@ from derive.lecture.textnames import TextNames
 from derive.lecture.turn_rates import TurnRates
 from derive.lecture.two_cases import TwoCases
 from derive.lecture.unlike_terms import UnlikeTerms
+from derive.lecture.untied_partials import UntiedPartials
 from derive.lecture.vector_claims import VectorStatements
 from derive.lecture.written_out import WrittenOut
 
@@ -75,5 +76,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
-                   LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums):
+                   LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
+                   UntiedPartials):
     """Every reading rule, in method-lookup order (see the module docstring)."""

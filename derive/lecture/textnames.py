@@ -21,7 +21,7 @@ of `derive.lecture.notes_check.Checker`, which
    derivative of its definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.right_named`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.right_named`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.untied_partials`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -31,7 +31,7 @@ import re
 import sympy as sp
 
 from derive.lecture import euler_moments
-from derive.lecture import latex as lx, primed_functions, right_named
+from derive.lecture import latex as lx, primed_functions, right_named, untied_partials
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
 from derive.lecture.stated_settings import under_settings
@@ -553,7 +553,7 @@ class TextNames(UnreadMembers):
             # ω̃ in the angles only where expr holds it: deriving ω̃ for a sequence costs more than the rest
             if (var in ANGLES or var in RATES) and (not hasattr(expr, "has") or expr.has(*lx.W)):
                 expr = expr.xreplace({w: self.d.omega[i] for i, w in enumerate(lx.W)})
-            expr = sp.diff(expr, var, n)
+            expr = untied_partials.partial(expr, var, n, self)     # a name it has not tied is no constant
         return expr
 
     def _dt(self, e):
