@@ -34,9 +34,6 @@ SHORT = {
     ("kit-p1-gyroscope-nutation-gimbal-precession-de", "found"):
         "its slip, the gimbal's nutation rate without the spin omega, is in the text's own moments theta', "
         "which the reader does not tie to a motion",
-    ("kit-p1-gyroscope-nutation-gimbal-precession-de", "false"):
-        "dphi/dt = M/(L sin gamma) is judged with M the mass, L the Lagrangian and gamma the third Euler angle, "
-        "where the text names the torque's size M, the angular momentum's size L and a tilt gamma of its own",
     ("jhu-intermediate-dynamics-gyroscopic-turn-indicator-bar-on-shaft-hw", "checked"):
         "homework solutions with vectors written as columns of components on primed unit vectors "
         "(Omega cos theta i', ...), a parallel-axis step in the text's own matrices and a flywheel in a gimbal "

@@ -290,6 +290,8 @@ class Checker(ReadingRules):
         text = self._single_axis_turns(text)
         self._hat_note(line, text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._vector_size(line, piece, pieces):
+            return
         if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
                 or self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return

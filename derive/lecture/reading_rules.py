@@ -59,6 +59,7 @@ from derive.lecture.turn_rates import TurnRates
 from derive.lecture.two_cases import TwoCases
 from derive.lecture.unlike_terms import UnlikeTerms
 from derive.lecture.vector_claims import VectorStatements
+from derive.lecture.vector_size import VectorSize
 from derive.lecture.written_out import WrittenOut
 
 
@@ -69,5 +70,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, VectorSize):
     """Every reading rule, in method-lookup order (see the module docstring)."""
