@@ -145,6 +145,7 @@ class Checker(ReadingRules):
                 self._flush()
                 self._place_flushed(len(self.claims))
                 self._enter_section(item.level)
+                self._problem_begun(item.text)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
             elif item.kind == "convention":

@@ -45,6 +45,7 @@ from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_sign import OwnSign
 from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
+from derive.lecture.problem_sections import ProblemSections
 from derive.lecture.quaternions import Quaternions
 from derive.lecture.rotation_products import RotationProducts
 from derive.lecture.rereading import Rereading
@@ -70,5 +71,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
-                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, VectorSize):
+                   NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, VectorSize,
+                   ProblemSections):
     """Every reading rule, in method-lookup order (see the module docstring)."""
