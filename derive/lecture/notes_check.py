@@ -461,6 +461,7 @@ class Checker(ReadingRules):
                 # displays after it use its correction, or the derived quantity
                 self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         self._links_past_head(line, piece, parsed, start)
+        self._untied_links(line, piece, parsed, start)
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 

@@ -59,6 +59,7 @@ from derive.lecture.textnames import TextNames
 from derive.lecture.turn_rates import TurnRates
 from derive.lecture.two_cases import TwoCases
 from derive.lecture.unlike_terms import UnlikeTerms
+from derive.lecture.untied_links import UntiedLinks
 from derive.lecture.vector_claims import VectorStatements
 from derive.lecture.vector_size import VectorSize
 from derive.lecture.written_out import WrittenOut
@@ -72,5 +73,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    FrameDisplays, OwnSign, UnlikeTerms, BasisVectors, TwoCases, Quaternions,
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes, VectorSize,
-                   ProblemSections):
+                   ProblemSections, UntiedLinks):
     """Every reading rule, in method-lookup order (see the module docstring)."""
