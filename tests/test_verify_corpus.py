@@ -37,6 +37,21 @@ SHORT = {
     ("unlam-analytical-mechanics-euler-equations-misaligned-gear-zxz", "checked"):
         "Euler's equations in the index form I_i Omega_i-dot - (I_j - I_k) Omega_j Omega_k = tau_i and on the gear's "
         "axes x, y, z, the gear's hatted unit vectors of two frames and cross products of named vectors are not read",
+    ("kit-p1-gyroscope-nutation-gimbal-precession-de", "checked"):
+        "a laboratory course's hints in German with the moments of inertia written theta (theta_z, theta_perp, "
+        "theta' of the gimbal frames): the half-angles alpha and beta of the cones, omega_N along L and the "
+        "precession's M, L, gamma are the text's own quantities, tied to no motion the reader derives",
+    ("kit-p1-gyroscope-nutation-gimbal-precession-de", "found"):
+        "its slip, the gimbal's nutation rate without the spin omega, is in the text's own moments theta', "
+        "which the reader does not tie to a motion",
+    ("jhu-intermediate-dynamics-gyroscopic-turn-indicator-bar-on-shaft-hw", "checked"):
+        "homework solutions with vectors written as columns of components on primed unit vectors "
+        "(Omega cos theta i', ...), a parallel-axis step in the text's own matrices and a flywheel in a gimbal "
+        "whose frames the text sets in words and in its own rotation matrix R(-beta)",
+    ("jhu-intermediate-dynamics-gyroscopic-turn-indicator-bar-on-shaft-hw", "found"):
+        "its slips, Euler's equation about the gimbal axis with (I_zz - I_xx) and the equation of motion for beta "
+        "with I_2 for the spin momentum's I_1, are in the text's own rates Omega_1, Omega_2 and beta of a gimbal "
+        "the reader does not model",
     ("edinburgh-vectors-tensors-passive-active-rotations-euler-zyz", "checked"):
         "lecture notes on rotations in index notation and the notes' own macros: its determinants of A are read "
         "(det(AA^T) = det(A)det(A^T) = [det A]^2) and so is a chain in index notation that holds as written "

@@ -146,6 +146,7 @@ class Checker(ReadingRules):
                 self._flush()
                 self._place_flushed(len(self.claims))
                 self._enter_section(item.level)
+                self._problem_begun(item.text)
                 if nt.SYMMETRIC.search(item.text):
                     self._symmetric(item.line, item.text)
             elif item.kind == "convention":
@@ -295,6 +296,8 @@ class Checker(ReadingRules):
         text = self._single_axis_turns(text)
         self._hat_note(line, text)
         self.generics_before = set(self.vocab.generic)     # the text's symbols met before this statement
+        if self._vector_size(line, piece, pieces):
+            return
         if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
                 or self._operator(line, piece, text) or self._coordinate(line, piece, text):
             return
@@ -466,6 +469,7 @@ class Checker(ReadingRules):
                 # displays after it use its correction, or the derived quantity
                 self.ctx.defs[key] = self._last_fix if self._last_fix is not None else forms[0]
         self._links_past_head(line, piece, parsed, start)
+        self._untied_links(line, piece, parsed, start)
         if key is lx.LAGRANGIAN and m0.args and set(m0.args) <= {self.d.rot.beta, self.d.rot.beta_d}:
             self._lagrangian(line, piece, parsed.members[-1].value)
 

@@ -49,6 +49,7 @@ from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_sign import OwnSign
 from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
+from derive.lecture.problem_sections import ProblemSections
 from derive.lecture.quaternions import Quaternions
 from derive.lecture.rotation_products import RotationProducts
 from derive.lecture.scalar_vector_sums import ScalarVectorSums
@@ -63,8 +64,10 @@ from derive.lecture.textnames import TextNames
 from derive.lecture.turn_rates import TurnRates
 from derive.lecture.two_cases import TwoCases
 from derive.lecture.unlike_terms import UnlikeTerms
+from derive.lecture.untied_links import UntiedLinks
 from derive.lecture.untied_partials import UntiedPartials
 from derive.lecture.vector_claims import VectorStatements
+from derive.lecture.vector_size import VectorSize
 from derive.lecture.written_out import WrittenOut
 
 
@@ -77,5 +80,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
-                   UntiedPartials):
+                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks):
     """Every reading rule, in method-lookup order (see the module docstring)."""

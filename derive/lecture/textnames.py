@@ -195,8 +195,7 @@ class TextNames(UnreadMembers):
                               f"defines the text's symbol {self.tex(m0)} (recorded, then used)")
                 return True
             self._flush()
-            for k in range(2, len(members)):      # a chain X = a = b …: a = b is checked
-                self._one(line, piece, "identity", members[1], members[k], parsed, k, approx=rels[k - 1] == "≈")
+            self._named_chain(line, piece, members, parsed, rels)     # a chain X = a = b …: a = b is checked
             return True
         if len(members) > 2 and set(rels) == {"="} and _is_value(members[-1], self.ctx.defs) and len(set(members[:-1])) \
                 == len(members) - 1 and all(self._settable(m) and not isinstance(m, lx.Quantity) for m in members[:-1]):
