@@ -1,11 +1,14 @@
 """The numeric parts of the notes checker's zero test: formulas evaluated with mpmath by walking
 their trees (`derive.lecture.mp_values`) and the interval screen that spares the costly symbolic
 steps a difference it proves non-zero (`derive.lecture.zero_test`)."""
+import random
+
 import mpmath
 import pytest
 import sympy as sp
 
 from derive.lecture import comparing, mp_values
+from derive.lecture import named_vector_claims as nvc
 from derive.lecture import notes_check as nc
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import zero_test as zt
@@ -181,3 +184,22 @@ def test_an_angle_recovered_by_its_arctangent_holds_on_the_principal_branch_whic
     for brackets in (("\\left(", "\\right)"), ("(", ")"), ("\\bigl(", "\\bigr)")):
         text = "# T\n\n$$\n\\gamma = \\arctan{0}\\frac{{\\sin\\gamma}}{{\\cos\\gamma}}{1}\n$$\n".format(*brackets)
         assert [c.verdict for c in nc.check_text(text)] == ["holds"], text
+
+
+def test_named_vectors_numeric_test_walks_its_points_and_decides_as_the_substitution_does():
+    def substituted(diffs):     # the test with each point substituted and evaluated at 30 digits
+        names = sorted({s for d in diffs for s in d.free_symbols}, key=lambda s: s.name)
+        rng = random.Random(20)
+        for _ in range(3):
+            point = {s: sp.Rational(rng.randint(100, 200), 100) * (1 if s.is_positive else rng.choice((-1, 1)))
+                     for s in names}
+            if any(abs(complex(sp.N(d.subs(point), 30))) > 1e-12 for d in diffs):
+                return False
+        return True
+
+    f = sp.Function("f")
+    cases = [[sp.sin(a) ** 2 + sp.cos(a) ** 2 - 1], [x * y - y * x + sp.Float("1e-14") * a],
+             [sp.Float("1e-9") * x], [1 / (x - y) - 1 / (x - y)], [sp.sqrt(a) ** 2 - a, x - 1],
+             [f(x) - f(x), sp.sin(x) - sp.cos(x)]]
+    for diffs in cases:
+        assert nvc._numerically_zero(diffs) == substituted(diffs), diffs

@@ -17,17 +17,21 @@ is left unchecked, since a text's chain may use a fact of its own (𝐯 = d𝐫/
 motion in a plane) that a general vector does not have.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.named_vectors`, the single edits of
-:mod:`derive.lecture.vectors`, SymPy.
+:mod:`derive.lecture.vectors`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`
+(`expanded`), SymPy, mpmath.
 """
 from __future__ import annotations
 
 import random
 
+import mpmath
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import mp_values
 from derive.lecture import named_vectors as nv
 from derive.lecture import vectors as vc
+from derive.lecture.zero_test import expanded
 
 WHY = "as vectors in general (each named vector a 3-vector of its own, 𝐫_{A/B} = 𝐩_A − 𝐩_B, sums for two generic terms)"
 DEFINES = "defines the text's {name} (recorded, then used in its section)"
@@ -133,7 +137,7 @@ def _same(a, b):
             (isinstance(va_, sp.MatrixBase) and va_.shape != vb.shape):
         return None
     diffs = list(va_ - vb) if isinstance(va_, sp.MatrixBase) else [sp.sympify(va_ - vb)]
-    diffs = [sp.expand(d) for d in diffs]
+    diffs = [expanded(d) for d in diffs]
     if all(d == 0 for d in diffs):
         return True
     return _numerically_zero(diffs)
@@ -143,9 +147,25 @@ def _numerically_zero(diffs) -> bool:
     """Zero at three random points (each symbol of size 1 to 2, a mass positive)."""
     names = sorted({s for d in diffs for s in d.free_symbols}, key=lambda s: s.name)
     rng = random.Random(20)
+    walk = mp_values.walker(names, diffs)
     for _ in range(3):
         point = {s: sp.Rational(rng.randint(100, 200), 100) * (1 if s.is_positive else rng.choice((-1, 1)))
                  for s in names}
-        if any(abs(complex(sp.N(d.subs(point), 30))) > 1e-12 for d in diffs):
+        if any(abs(v) > 1e-12 for v in _values(walk, diffs, point)):
             return False
     return True
+
+
+def _values(walk, diffs, point):
+    """The differences at the point: walked in mpmath at 50 digits (a substitution of exact
+    rationals into an expanded tree costs a tenth of a second), or substituted and evaluated at
+    30 digits where the walk has no finite value or reads not every node."""
+    if walk is not None:
+        try:
+            with mpmath.workdps(50):
+                values = [mpmath.mpmathify(v) for v in walk(*(mpmath.mpf(x.p) / x.q for x in point.values()))]
+            if all(mpmath.isfinite(v) for v in values):
+                return [complex(v) for v in values]
+        except (ZeroDivisionError, ValueError, TypeError, OverflowError):
+            pass
+    return (complex(sp.N(d.subs(point), 30)) for d in diffs)
