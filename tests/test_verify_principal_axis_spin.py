@@ -71,3 +71,14 @@ def test_a_disturbance_in_complex_exponentials_solves_the_oscillator_about_a_ste
     assert [c.verdict for c in _at(good, 21)] == ["holds"]
     wrong = kept.check_text(_OSCILLATOR + "$$\n\\Omega = \\omega_1 \\sqrt{\\frac{(I_1 - I_3) (I_1 - I_2)}{I_1I_3}}\n$$\n")
     assert any(c.verdict in ("typo", "fails") for c in _at(wrong, 21))
+
+
+def test_the_angular_momentum_as_its_own_component_along_one_axis_is_a_setting_not_a_claim():
+    # after L_i = I_i ω_i names the components, 𝐋 = L₂ ê₂ chooses the axes by 𝐋 in an example (L₁ = L₃ = 0
+    # there); compared with the body's general 𝐋 it would be flagged, though the text states no slip
+    text = ("With the body axes chosen as principal axes, with principal moments $I_i$,\n\n"
+            "$$\nL_i = I_i \\omega_i\n$$\n\n"
+            "In an example the angular momentum is perpendicular to a shaft; the 2 axis is chosen along it:\n\n"
+            "$$\n\\mathbf{L} = L_2 \\widehat{\\mathbf{e}_2}\n$$\n")
+    setting = _at(kept.check_text(text), 9)
+    assert [c.verdict for c in setting] == ["unchecked"] and "L_1 = L_3 = 0" in setting[0].why

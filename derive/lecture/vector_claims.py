@@ -33,12 +33,18 @@ from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 _VECTOR_LEFT = re.compile(r"\s*(?:\\frac\s*\{\s*d\s*)?" + VECTOR_MARK + r"\s*\{")
 _BODY_AXIS = re.compile(r"\\hat\s*\{\s*" + BOLD_MARK + r"\s*\{\s*e\s*_\s*\{?\s*[123]")
 _OMEGA_LEFT = re.compile(r"\s*" + VECTOR_MARK + r"\s*(?:\{\s*\\omega\s*\}|\\omega(?![A-Za-z]))\s*=(?!=)")
-_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:" + VECTOR_MARK + r"\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}|e)\s*\}"
-           r"(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
+_UNIT_E = (r"\\(?:widehat|hat)\s*\{\s*(?:" + VECTOR_MARK + r"\s*\{\s*e\s*(?:_\s*\{?\s*(?P<a>[123])\s*\}?)?\s*\}"
+           r"(?:\s*_\s*\{?\s*(?P<c>[123])\s*\}?)?|e)\s*\}(?:\s*_\s*\{?\s*(?P<b>[123])\s*\}?)?")
+_MOMENTUM_LEFT = re.compile(r"\s*" + VECTOR_MARK + r"\s*(?:\{\s*L\s*\}|L(?![A-Za-z]))\s*=(?!=)")
 _ALONG_AXIS = re.compile(r"\s*(?P<sign>[+-]?)\s*(?P<coef>\\?[A-Za-z]+(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)" + SPACE + _UNIT_E)
 """A term ``\\omega_1 \\widehat{\\mathbf{e}}_1``, ``\\lambda \\hat{\\mathbf{e}}_2``: one symbol along a body axis."""
 _SUM = re.compile(r"[^\s{(^_]\s*[+-]")
 """A sum of terms written out: a + or − after a term (not a sign in front)."""
+
+
+def _axis(m) -> int:
+    """The body axis (1, 2, 3) of a term `_ALONG_AXIS` matched, 0 where it names none."""
+    return int(m.group("a") or m.group("b") or m.group("c") or 0)
 
 
 class VectorStatements:
@@ -49,7 +55,7 @@ class VectorStatements:
         """``\\vec{H} = I_1\\omega_1\\hat{\\boldsymbol{e_1}} + …``: a vector on the left written out
         along the body axes ê_i is the vector reader's, before the scalar one reads its letters as
         scalars (False when it is not such a statement, or that reader cannot read it)."""
-        if self._angular_velocity_along_axes(line, piece, text):
+        if self._angular_velocity_along_axes(line, piece, text) or self._momentum_along_axes(line, piece, text):
             return True
         if not (_VECTOR_LEFT.match(text) and _BODY_AXIS.search(text)):
             return False
@@ -69,7 +75,7 @@ class VectorStatements:
             m = _ALONG_AXIS.match(rest)
             if m is None or m.group("sign") == "-" or (not m.group("sign") and coefs):
                 return False
-            k = int(m.group("a") or m.group("b") or 0) - 1
+            k = _axis(m) - 1
             if k < 0 or k in coefs:
                 return False
             coefs[k], rest = m.group("coef"), rest[m.end():].strip()
@@ -105,6 +111,30 @@ class VectorStatements:
         self._add(line, piece, "setting", "unchecked",
                   f"the angular velocity along the body's principal axes: {', '.join(said)} (a case of the text, "
                   "its names for the components from here on), not a claim")
+        return True
+
+    def _momentum_along_axes(self, line, piece, text) -> bool:
+        """``\\mathbf{L} = L_2 \\widehat{\\mathbf{e}_2}``: the angular momentum written as its own components
+        along some of the body's principal axes, as an example sets the axes by it. It says the other
+        components are zero in the text's case, which the reader does not model: not a claim, `unchecked`."""
+        head = _MOMENTUM_LEFT.match(text)
+        if head is None:
+            return False
+        rest, axes = text[head.end():].strip().rstrip(".,;").strip(), []
+        while rest:
+            m = _ALONG_AXIS.match(rest)
+            k = _axis(m) if m else 0
+            if not k or m.group("sign") == "-" or k in axes or \
+                    not re.fullmatch(rf"L\s*_\s*(?:\{{\s*{k}\s*\}}|{k})", m.group("coef")):
+                return False
+            axes.append(k)
+            rest = rest[m.end():].strip()
+        if not axes or len(axes) == 3:
+            return False
+        zero = " = ".join(f"L_{k}" for k in (1, 2, 3) if k not in axes)
+        self._add(line, piece, "setting", "unchecked",
+                  f"the angular momentum along the body's principal axes: {zero} = 0 in the text's case (the axes "
+                  "chosen by it), not a claim")
         return True
 
     def _vectors(self, line, piece, text) -> bool:
