@@ -13,6 +13,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -24,14 +25,6 @@ def check(key, ok):
 
 t = sp.Symbol('t')
 phi, th, psi = (sp.Function(n)(t) for n in ('phi', 'theta', 'psi'))
-
-
-def Rz(q):
-    return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
-
-
-def Rx(q):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
 
 
 R = Rz(phi) * Rx(th) * Rz(psi)

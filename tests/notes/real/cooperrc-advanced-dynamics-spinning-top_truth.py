@@ -12,6 +12,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 t = sp.symbols('t')
 ph, th, ps = [sp.Function(n)(t) for n in ('phi', 'theta', 'psi')]
@@ -62,14 +63,6 @@ assert T_true == M * vB.dot(vB) / 2 + M * vB.dot(vGB) + om.dot(H_rel) / 2
 
 
 # --- the top in Euler angles -------------------------------------------------------------------------
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
-
-
 Rot = Rz(ph) * Rx(th) * Rz(ps)
 W = sp.simplify(Rot.diff(t) * Rot.T)                 # space angular velocity as a skew matrix
 w_space = sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])

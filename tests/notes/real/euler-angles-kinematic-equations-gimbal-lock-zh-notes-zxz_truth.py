@@ -15,6 +15,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 
@@ -27,14 +28,6 @@ zero = truth_table.zero
 
 t = sp.symbols("t", real=True)
 ph, th, ps = (sp.Function(n)(t) for n in ("phi", "theta", "psi"))
-
-
-def Rz(q):
-    return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
-
-
-def Rx(q):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
 
 
 U1, U2, U3 = Rz(ph), Rx(th), Rz(ps)

@@ -11,6 +11,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -39,14 +40,6 @@ def dot(a, b):
 # 34, 35: the velocity of the contact point as a point of a rigid body: P = C + R s, dP/dt = v + omega x (P - C)
 t = sp.Symbol('t')
 phi, th, psi = (sp.Function(n)(t) for n in ('phi', 'theta', 'psi'))
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
 
 
 R = Rz(phi) * Rx(th) * Rz(psi)

@@ -15,6 +15,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 
@@ -177,14 +178,6 @@ check(292, sp.expand(Ttot - (M * V.dot(V) / 2 + Tp)) == 0
 # Euler's dynamical equations: body basis e = E U(t), L = e Lbar
 t = sp.symbols("t", real=True)
 q1, q2, q3 = (sp.Function(s)(t) for s in ("q1", "q2", "q3"))
-
-
-def Rz(q):
-    return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
-
-
-def Rx(q):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
 
 
 Ut = Rz(q1) * Rx(q2) * Rz(q3)

@@ -16,6 +16,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Ry, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -23,18 +24,6 @@ zero = truth_table.zero
 
 def check(key, ok):
     CHECKS[key] = bool(ok)
-
-
-def Rx(q):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
-
-
-def Ry(q):
-    return sp.Matrix([[sp.cos(q), 0, sp.sin(q)], [0, 1, 0], [-sp.sin(q), 0, sp.cos(q)]])
-
-
-def Rz(q):
-    return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
 
 
 def vee(W):

@@ -11,6 +11,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Ry, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -42,18 +43,6 @@ I3 = sp.eye(3)
 
 def eps(i, j, k):
     return sp.LeviCivita(i, j, k)
-
-
-def Rz(q):
-    return sp.Matrix([[sp.cos(q), -sp.sin(q), 0], [sp.sin(q), sp.cos(q), 0], [0, 0, 1]])
-
-
-def Ry(q):
-    return sp.Matrix([[sp.cos(q), 0, sp.sin(q)], [0, 1, 0], [-sp.sin(q), 0, sp.cos(q)]])
-
-
-def Rx(q):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(q), -sp.sin(q)], [0, sp.sin(q), sp.cos(q)]])
 
 
 # a general rotation (z-y-z Euler angles) and a general vector

@@ -12,6 +12,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -30,14 +31,6 @@ t = sp.Symbol('t')
 
 def vec(name):
     return sp.Matrix([sp.Function(f'{name}{k}')(t) for k in 'xyz'])
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
 
 
 # 18: Newton's second law for one particle, stated: not a claim

@@ -13,6 +13,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 from truth_table import zero
 
 t = sp.symbols('t', real=True)
@@ -24,14 +25,6 @@ CHECKS = {}
 
 def check(key, ok):
     CHECKS[key] = bool(ok)
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
 
 
 def skew(v):

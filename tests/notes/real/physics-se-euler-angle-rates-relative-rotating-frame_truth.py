@@ -12,6 +12,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Ry, Rz
 from truth_table import zero
 
 t = sp.symbols('t')
@@ -22,18 +23,6 @@ CHECKS = {}
 
 def check(key, ok):
     CHECKS[key] = bool(ok)
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
-
-
-def Ry(a):
-    return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
 
 
 R = Rz(ps) * Ry(th) * Rx(ph)

@@ -12,6 +12,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 from truth_table import zero
 
 t = sp.symbols('t', real=True)
@@ -60,14 +61,6 @@ check(34, zero(w1sol - al / Om * (1 - sp.cos(Om * t))))
 
 # lines 39-43: body components of the angular velocity in z-x-z Euler angles
 ph, th, ps = [sp.Function(n)(t) for n in ('phi', 'theta', 'psi')]
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
 
 
 R = Rz(ph) * Rx(th) * Rz(ps)

@@ -13,19 +13,12 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Ry, Rz
 from truth_table import zero
 
 t = sp.symbols('t', real=True)
 m, g, R, Id, I3 = sp.symbols('m g R I_d I_3', positive=True)
 x, y, ph, th, ps = [sp.Function(n)(t) for n in ('x', 'y', 'varphi', 'theta', 'psi')]
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-
-
-def Ry(a):
-    return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
 
 
 Q = Rz(ph) * Ry(th) * Rz(ps)

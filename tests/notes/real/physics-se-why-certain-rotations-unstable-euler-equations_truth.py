@@ -11,6 +11,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 from truth_table import zero
 
 t, e = sp.symbols('t epsilon')
@@ -52,14 +53,6 @@ assert sp.simplify(((I2 - I3) * (I1 - I2)).subs({I1: I3 + p + q, I2: I3 + p})) =
 # (body axes are orthonormal: L_space = R L_body with R a z-x-z rotation)
 a, b, c = sp.symbols('a b c', real=True)
 Lb = sp.Matrix(sp.symbols('L_1:4', real=True))
-
-
-def Rz(x):
-    return sp.Matrix([[sp.cos(x), -sp.sin(x), 0], [sp.sin(x), sp.cos(x), 0], [0, 0, 1]])
-
-
-def Rx(x):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(x), -sp.sin(x)], [0, sp.sin(x), sp.cos(x)]])
 
 
 Ls = Rz(a) * Rx(b) * Rz(c) * Lb

@@ -15,6 +15,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Ry, Rz
 from truth_table import zero
 
 t = sp.symbols('t', real=True)
@@ -26,14 +27,6 @@ CHECKS = {}
 
 def check(key, ok):
     CHECKS[key] = bool(ok)
-
-
-def Ry(a):
-    return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
 
 
 def omega(R):

@@ -14,6 +14,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Ry, Rz
 
 CHECKS = {}
 zero = truth_table.zero
@@ -25,18 +26,6 @@ def check(key, ok):
 
 t = sp.Symbol('t')
 phi, th, psi = (sp.Function(n)(t) for n in ('phi', 'theta', 'psi'))
-
-
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
-
-
-def Ry(a):
-    return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
-
-
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
 
 
 R = Rz(psi) * Ry(th) * Rx(phi)                        # body -> inertial for the Z-Y-X sequence

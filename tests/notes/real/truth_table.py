@@ -74,6 +74,21 @@ def _text_lines(stem: pathlib.Path) -> list:
     return out
 
 
+def Rx(a):
+    """The active turn by ``a`` about the x axis (right-handed): the elementary rotation the scripts build from."""
+    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
+
+
+def Ry(a):
+    """The active turn by ``a`` about the y axis (right-handed)."""
+    return sp.Matrix([[sp.cos(a), 0, sp.sin(a)], [0, 1, 0], [-sp.sin(a), 0, sp.cos(a)]])
+
+
+def Rz(a):
+    """The active turn by ``a`` about the z axis (right-handed)."""
+    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
+
+
 def zero(expr) -> bool:
     """``expr`` (a scalar or a matrix) simplifies to zero."""
     m = expr if hasattr(expr, "shape") else sp.Matrix([expr])

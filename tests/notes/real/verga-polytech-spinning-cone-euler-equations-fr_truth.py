@@ -16,6 +16,7 @@ import random
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 CHECKS = {}
 def check(key, ok):
@@ -85,10 +86,6 @@ check(82, z0(R - 3 * h / 4))
 # --- Euler's equations: a body frame turning with Omega
 t = sp.symbols('t', real=True)
 q = [sp.Function(n)(t) for n in ('phi', 'theta', 'psi')]
-def Rz(a):
-    return sp.Matrix([[sp.cos(a), -sp.sin(a), 0], [sp.sin(a), sp.cos(a), 0], [0, 0, 1]])
-def Rx(a):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(a), -sp.sin(a)], [0, sp.sin(a), sp.cos(a)]])
 Rot = Rz(q[0]) * Rx(q[1]) * Rz(q[2])                     # body axes in the fixed frame
 W = sp.simplify(Rot.T * Rot.diff(t))
 Om = sp.Matrix([W[2, 1], W[0, 2], W[1, 0]])

@@ -14,6 +14,7 @@ import sys
 import sympy as sp
 
 import truth_table
+from truth_table import Rx, Rz
 
 q = sp.symbols('a b c')                     # the three angles
 qd = sp.symbols('ad bd cd')                 # their rates
@@ -28,14 +29,6 @@ CHECKS = {}
 
 def check(key, ok):
     CHECKS[key] = bool(ok)
-
-
-def Rz(x):
-    return sp.Matrix([[sp.cos(x), -sp.sin(x), 0], [sp.sin(x), sp.cos(x), 0], [0, 0, 1]])
-
-
-def Rx(x):
-    return sp.Matrix([[1, 0, 0], [0, sp.cos(x), -sp.sin(x)], [0, sp.sin(x), sp.cos(x)]])
 
 
 def vee(S):
