@@ -174,7 +174,7 @@ _DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle":
          "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{"}
 _WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
          "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
-         "cancel": "", "bbox": None}
+         "cancel": "", "bcancel": "", "xcancel": "", "cancelto": None, "bbox": None}
 _RENAME = {"dfrac": "frac", "tfrac": "frac", "cfrac": "frac", "vdot": "cdot", "cross": "times",
            "cp": "times", "lvert": "vert", "rvert": "vert", "lVert": "vert", "rVert": "vert",
            "Vert": "vert", "cdotp": "cdot", "leqslant": "le", "geqslant": "ge", "dotsb": "cdots",
@@ -198,7 +198,7 @@ def _context():
     db = get_default_latex_context_db()
     specs = [MacroSpec(name, args) for name, args in _DROP.items()]
     specs += [MacroSpec(name, "{") for name, a in _WRAP.items() if a is not None]
-    specs += [MacroSpec("color", "{"), MacroSpec("textcolor", "{{"), MacroSpec("bbox", "[{")]
+    specs += [MacroSpec("color", "{"), MacroSpec("textcolor", "{{"), MacroSpec("bbox", "[{"), MacroSpec("cancelto", "{{")]
     specs += [MacroSpec(name, "{") for name in REWRITTEN_BOLD_NAMES | {"vu", "abs", "norm", "operatorname", "qty",
                                                                        "mathrm", "text", "mathit", "hat", "dot",
                                                                        "ddot", "tilde", "widetilde", "widehat", "bar"}]
@@ -261,7 +261,7 @@ def _macro(node, nodes, k, user) -> tuple[str, int]:
     if name in _DROP:
         return " ", 0
     if name in _WRAP:
-        inner = _last_arg(node, user) or ""
+        inner = (_arg(node, 0, user) if name == "cancelto" else _last_arg(node, user)) or ""  # \cancelto{0}{X}: X is 0 here
         if name in ("mathcal", "mathscr", "mathfrak", "mathsf", "mathtt"):
             return r"\mathrm{" + inner + "}", 0
         if name in ("boxed", "ensuremath", "color", "textcolor", "bbox"):   # a frame or a colour around a statement

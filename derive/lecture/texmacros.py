@@ -229,6 +229,21 @@ def font_switches(latex: str) -> str:
 
 _DOTLESS = re.compile(r"\\([ij])math(?![A-Za-z])")
 _SCRIPT_L = re.compile(r"\\ell(?![A-Za-z])")
+# a comma typed where a thin space was meant: after a sign (``+,\\Omega``, never in a script's ``{+,-}``),
+# or spaced before and not after, in front of a function's command (``\\Omega ,\\sin``)
+_STRAY_COMMA = re.compile(r"(?<![{_^,\s])(\s*[+-])\s*,(?=\s*[\\A-Za-z0-9({])"
+                          r"|(?<=[A-Za-z0-9})])(\s+),(?=\\(?:sin|cos|tan|cot|exp|sqrt|frac)(?![A-Za-z]))")
+
+
+def _stray_commas(latex: str) -> str:
+    """The formula without the commas `_STRAY_COMMA` finds outside brackets (inside them a comma
+    may part a function's arguments, ``f(x ,\\sin y)``)."""
+    def thin(m):
+        depth = sum(latex[:m.start()].count(c) for c in "([") - sum(latex[:m.start()].count(c) for c in ")]")
+        return m.group(0) if depth > 0 and m.group(1) is None else (m.group(1) or m.group(2)) + " "
+    return _STRAY_COMMA.sub(thin, latex)
+
+
 _OPENS, _CLOSES = r"\\(?:left|[bB]igg?l)(?![A-Za-z])", r"\\(?:right|[bB]igg?r)(?![A-Za-z])"
 _HALF_OPEN = re.compile(_OPENS + r"\s*\.((?:(?!" + _OPENS + "|" + _CLOSES + r").)*)" + _CLOSES + r"\s*\)(?=\s*_)", re.S)
 """A bracket opened invisibly and closed before a subscript, sized as a pair (``\\left. X \\right)_{rel}``) or by
@@ -251,7 +266,7 @@ def synonyms(latex: str) -> str:
     relative to a frame); the script letter ``\\ell`` as l (a length, set in script to keep it apart
     from the digit 1); and a vector marked twice, an arrow over a bold letter (``\\vec{\\mathbf{H}}_C``) or
     a bold face around an arrowed one (``\\mathbf{\\vec{M_O}}``), as the bold letter alone, which is what
-    either mark says.
+    either mark says; and a comma typed for a thin space between factors (`_STRAY_COMMA`) as a space.
 
     Parameters
     ----------
@@ -263,6 +278,7 @@ def synonyms(latex: str) -> str:
     str
         The formula with those spellings replaced.
     """
+    latex = _stray_commas(latex)
     latex = _DOTLESS.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + m.group(1), latex)
     latex = _SCRIPT_L.sub(lambda m: (" " if latex[max(m.start() - 1, 0)].isalpha() else "") + "l", latex)
     latex = _HALF_OPEN.sub(lambda m: "\\left(" + m.group(1) + "\\right)", latex)
