@@ -4,6 +4,9 @@ in this motion; the relation is recorded, and the statements after it are judged
 (derive/lecture/conditions.py)."""
 import kept_readings as kept
 
+from derive.lecture import conditions
+from derive.lecture import notes_check as nc
+
 _HEAD = ("A free symmetric body, $I_1 = I_2$, with angular momentum $\\mathbf{L}$. The angular velocity turns "
          "on a circle of radius $A$ about the third axis, so\n\n$$\n\\mathbf{L}^2 = I_1^2A^2 + I_3^2\\omega_3^2\n$$\n\n")
 _COS = ("\\cos\\tau = \\frac{\\mathbf{L}\\cdot\\mathbf{e}_3}{|\\mathbf{L}|} = \\frac{I_3\\omega_3}{\\sqrt{I_1^2A^2 + %s}} "
@@ -37,3 +40,11 @@ def test_a_letter_that_a_solution_already_ties_is_not_named_again():
     assert [c.verdict for c in claims if c.line == 7] == ["holds", "holds"]     # the solution, A its constant
     assert not any("names the text's constant" in c.why for c in claims)
 
+
+
+def test_the_same_relation_read_again_is_simplified_once_with_the_same_claims():
+    conditions._simplified.cache_clear()
+    first, again = nc.check_text(_HEAD), nc.check_text(_HEAD)
+    info = conditions._simplified.cache_info()
+    assert info.misses == 1 and info.hits >= 1
+    assert [(c.line, c.verdict, c.why) for c in first] == [(c.line, c.verdict, c.why) for c in again]

@@ -13,6 +13,8 @@ May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`
 """
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from derive.lecture import latex as lx
@@ -132,10 +134,17 @@ class Conditions:
             poly = sp.Poly(eq, unknown) if eq.has(unknown) else None
             if poly is None or poly.degree() != 1:
                 continue
-            value = sp.simplify(-poly.coeff_monomial(1) / poly.coeff_monomial(unknown))
+            value = _simplified(-poly.coeff_monomial(1) / poly.coeff_monomial(unknown))
             self.ctx.defs[x] = sp.sqrt(value) if unknown is square else value
             return f"names the text's constant {self.tex(x)} in this motion (recorded, then used)"
         return None
+
+
+@functools.lru_cache(maxsize=256)
+def _simplified(expr):
+    """`sp.simplify` of an expression (immutable, so the kept result is the one it would give), kept
+    per process: each reading of a text that names a constant by the same relation simplifies the same root."""
+    return sp.simplify(expr)
 
 
 _LETTERS = {name for name in FREE_NAMES.values() if name != "t"}
