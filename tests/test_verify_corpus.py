@@ -28,9 +28,8 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("danchev-intermediate-axis-theorem-perturbative-stability", "checked"):
-        "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the first order "
-        "about a steady spin with O(delta omega^2) terms, the oscillator's rate kappa and the solution's Theta, "
-        "a cylinder's moments and the parallel axis theorem in a bold I are not read",
+        "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the oscillator's "
+        "rate kappa and the solution's Theta, a cylinder's moments and the parallel axis theorem in a bold I are not read",
     ("danchev-intermediate-axis-theorem-perturbative-stability", "found"):
         "its three slips (I' = I + mR^2 for the tensor, exp(kappa t) twice, Theta's radicand) sit on displays it does "
         "not read",
