@@ -21,7 +21,10 @@ The perturbation may be written as variations (`derive.lecture.variations`): ``\
 \\delta\\omega_1``, or the column ``\\vec\\omega = (\\delta\\omega_1, \\Omega_0 + \\delta\\omega_2,
 \\delta\\omega_3)``; δωᵢ is then ηᵢ, kept apart from ωᵢ by its mark. A statement written with ≈ and no
 remainder keeps first order, as one with ``O(\\eta^2)`` does. A perturbed component may stand beside
-the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``).
+the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``). A steady
+column ``\\vec\\omega = (0, 0, \\Omega)`` followed in its section by the column of its variations
+``\\delta\\vec\\omega = (\\delta\\omega_1, \\delta\\omega_2, 0)`` names the perturbation ω̃ᵢ = cᵢ + δωᵢ for all three
+components, the steady column's letters its constants; ``O(\\delta\\omega^2)`` is then its remainder.
 """
 from __future__ import annotations
 
