@@ -101,11 +101,11 @@ class Perturbations:
             elif left is lx.OMEGA_VEC and isinstance(right, sp.MatrixBase) and right.shape == (3, 1):
                 for i in range(3):      # the column of the body components, each one perturbed
                     self._component_perturbed(i, sp.sympify(right[i]), before)
-                self.ctx.steady = self._steady(right)
+                self.ctx.steady = self._steady_column(right)
             elif isinstance(right, sp.MatrixBase) and right.shape == (3, 1) and self.ctx.steady is not None:
                 self._variation_column(left, right)
 
-    def _steady(self, column):
+    def _steady_column(self, column):
         """The column of constants a statement sets 𝛚 to (a steady spin), or None when an entry moves."""
         moving = set(lx.W) | set(lx.WD) | set(ANGLES) | set(RATES) | set(ACCELS) | {lx.t}
         entries = [sp.sympify(x) for x in column]
