@@ -28,15 +28,11 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("danchev-intermediate-axis-theorem-perturbative-stability", "checked"):
-        "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the first order "
-        "about a steady spin with O(delta omega^2) terms, the oscillator's rate kappa and the solution's Theta, "
-        "a cylinder's moments and the parallel axis theorem in a bold I are not read",
+        "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the oscillator's "
+        "rate kappa and the solution's Theta, a cylinder's moments and the parallel axis theorem in a bold I are not read",
     ("danchev-intermediate-axis-theorem-perturbative-stability", "found"):
         "its three slips (I' = I + mR^2 for the tensor, exp(kappa t) twice, Theta's radicand) sit on displays it does "
         "not read",
-    ("unlam-analytical-mechanics-euler-equations-misaligned-gear-zxz", "checked"):
-        "Euler's equations in the index form I_i Omega_i-dot - (I_j - I_k) Omega_j Omega_k = tau_i and on the gear's "
-        "axes x, y, z, the gear's hatted unit vectors of two frames and cross products of named vectors are not read",
     ("kit-p1-gyroscope-nutation-gimbal-precession-de", "checked"):
         "a laboratory course's hints in German with the moments of inertia written theta (theta_z, theta_perp, "
         "theta' of the gimbal frames): the half-angles alpha and beta of the cones, omega_N along L and the "

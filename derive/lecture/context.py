@@ -108,6 +108,7 @@ class Context:
     constant_case: tuple | None = None                # (line, LaTeX) of a case the prose sets by constants alone
     perturbation: dict = field(default_factory=dict)  # a symbol η the text names (base, index, bold) → (i, cᵢ) of ω̃ᵢ = cᵢ + ηᵢ
     perturbation_order: int | None = None             # the order its equations keep once a remainder O(ηⁿ) was written
+    steady: tuple | None = None                       # the constant column c the text set 𝛚 to, which a column δ𝛚 perturbs
     torques: dict = field(default_factory=dict)       # a name of the text's → its value in τᵢ, the torque it wrote in component i's equation
     untorqued: set = field(default_factory=set)       # components i whose equation of motion the text wrote with no torque
     columns: set = field(default_factory=set)         # the text's names it set to a written matrix in this section
@@ -119,6 +120,7 @@ class Context:
         self.motion, self.own_motion, self.changes, self.angles_stated = {}, {}, {}, {}
         self.vectors, self.held, self.constant_case = {}, {}, None
         self.perturbation, self.perturbation_order, self.torques, self.untorqued = {}, None, {}, set()
+        self.steady = None
         self.columns = set()
         if self.orientation_prose:
             self.orientation, self.orientation_prose = None, False

@@ -21,7 +21,10 @@ The perturbation may be written as variations (`derive.lecture.variations`): ``\
 \\delta\\omega_1``, or the column ``\\vec\\omega = (\\delta\\omega_1, \\Omega_0 + \\delta\\omega_2,
 \\delta\\omega_3)``; δωᵢ is then ηᵢ, kept apart from ωᵢ by its mark. A statement written with ≈ and no
 remainder keeps first order, as one with ``O(\\eta^2)`` does. A perturbed component may stand beside
-the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``).
+the ηᵢ: ω̃ᵢ is cᵢ + ηᵢ there and ω̃̇ᵢ the body's rate (``\\dot\\omega_1 = \\delta\\dot\\omega_1``). A steady
+column ``\\vec\\omega = (0, 0, \\Omega)`` followed in its section by the column of its variations
+``\\delta\\vec\\omega = (\\delta\\omega_1, \\delta\\omega_2, 0)`` names the perturbation ω̃ᵢ = cᵢ + δωᵢ for all three
+components, the steady column's letters its constants; ``O(\\delta\\omega^2)`` is then its remainder.
 """
 from __future__ import annotations
 
@@ -37,14 +40,15 @@ from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
 # a remainder O(η^n) (or O(|η|^n)): its letter and n
-_REMAINDER = re.compile(r"O\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\|?\s*(\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*"
+_REMAINDER = re.compile(r"O\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\|?\s*((?:\\delta\s*)?\\?[A-Za-z]+)\s*\|?\s*\^\s*\{?\s*(\d)\s*\}?\s*"
                         r"(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # O(eta^2), O\left(\eta^2\right)
 _TERM = re.compile(r"\s*[+-]\s*" + _REMAINDER.pattern)
 
 
 def _without_remainders(text):
     """(text without its O(·) terms, a member that is one alone read as 0; their letters and least n)."""
-    found = [(m.group(1).lstrip("\\"), int(m.group(2))) for m in _REMAINDER.finditer(text)]
+    # O(δω²) is the variations' remainder: its letter is the varied one
+    found = [(re.sub(r"^\\delta\s*", "", m.group(1)).lstrip("\\"), int(m.group(2))) for m in _REMAINDER.finditer(text)]
     out = _TERM.sub("", text)
     out = _REMAINDER.sub("0", out)
     return out, found
@@ -97,6 +101,40 @@ class Perturbations:
             elif left is lx.OMEGA_VEC and isinstance(right, sp.MatrixBase) and right.shape == (3, 1):
                 for i in range(3):      # the column of the body components, each one perturbed
                     self._component_perturbed(i, sp.sympify(right[i]), before)
+                self.ctx.steady = self._steady_column(right)
+            elif isinstance(right, sp.MatrixBase) and right.shape == (3, 1) and self.ctx.steady is not None:
+                self._variation_column(left, right)
+
+    def _steady_column(self, column):
+        """The column of constants a statement sets 𝛚 to (a steady spin), or None when an entry moves."""
+        moving = set(lx.W) | set(lx.WD) | set(ANGLES) | set(RATES) | set(ACCELS) | {lx.t}
+        entries = [sp.sympify(x) for x in column]
+        if any(free(x) & moving or any(isinstance(s, lx.Quantity) for s in free(x)) for x in entries):
+            return None
+        return tuple(entries)
+
+    def _variation_column(self, left, right):
+        """``\\delta\\vec\\omega = (\\delta\\omega_1, \\delta\\omega_2, 0)`` after the steady column c of 𝛚:
+        each δωᵢ is ω̃ᵢ − cᵢ, a 0 entry saying only that the kick leaves that component alone."""
+        atom = self.vocab.generic.get(left) if isinstance(left, lx.Generic) else None
+        if atom is None or atom.base != "omega" or not atom.bold or not atom.mark.startswith("delta") or atom.sub:
+            return
+        keys = []
+        for i, entry in enumerate(sp.sympify(x) for x in right):
+            a = self.vocab.generic.get(entry) if isinstance(entry, lx.Generic) else None
+            if entry == 0:
+                continue
+            if a is None or a.base != "omega" or a.sub != str(i + 1) or a.mark != atom.mark or a.bold or a.dots:
+                return
+            keys.append(_key(a))
+        if not keys:
+            return
+        # the steady column's own letters (Ω) are its constants, no perturbation of it
+        constants = {_key(self.vocab.generic[x]) for c in self.ctx.steady for x in free(c) if x in self.vocab.generic}
+        self.ctx.perturbation = {k: v for k, v in self.ctx.perturbation.items() if k not in constants}
+        for i in range(3):
+            key = (keys[0][0], str(i + 1), False, keys[0][3])
+            self.ctx.perturbation[key] = (i, self.ctx.steady[i])
 
     def _read(self, piece):
         """A statement read, or None."""

@@ -34,6 +34,7 @@ from derive.lecture.head_shapes import HeadShapes
 from derive.lecture.implications import Implications
 from derive.lecture.free_indices import FreeIndices
 from derive.lecture.free_integrals import FreeIntegrals
+from derive.lecture.index_euler import IndexEuler
 from derive.lecture.index_sums import IndexSums
 from derive.lecture.inferred_convention import ConventionProbe
 from derive.lecture.integral_claims import IntegralClaims
@@ -80,5 +81,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
-                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks):
+                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -7,7 +7,7 @@ Gives: `variation_at`, where the varied symbol starts after a δ (the scanner th
 atom, marked ``delta``: `derive.lecture.vocabulary.Atom.mark`), and `delta_a_quantity`, whether
 the text writes δ alone somewhere (``\\delta = \\pi/2``, ``\\cos(\\Omega t + \\delta)``, "$\\delta$
 the phase"): there δ is the text's own quantity and δx reads as δ times x. Kronecker's
-``\\delta_{ij}`` is neither.
+``\\delta_{ij}`` is neither, nor δ accented alone in braces (``\\hat{\\delta}``, a symbol of its own).
 May import: the standard library.
 """
 from __future__ import annotations
@@ -32,6 +32,7 @@ def variation_at(s: str, j: int, names) -> int | None:
 
 
 _DELTA = re.compile(r"\\delta(?![A-Za-z])")
+_ACCENT = re.compile(r"\\(?:hat|widehat|tilde|widetilde|bar|check|breve|vec|mathbf|boldsymbol|bm)\s*\{\s*\Z")
 
 
 def delta_a_quantity(body: str, names) -> bool:
@@ -40,6 +41,8 @@ def delta_a_quantity(body: str, names) -> bool:
     quantity's; the character is read without a space, prose putting a word after it)."""
     for m in _DELTA.finditer(body):
         after = _GAP.match(body, m.end()).end()
+        if _ACCENT.search(body[max(0, m.start() - 24):m.start()]) and body[after:after + 1] == "}":
+            continue            # δ̂, 𝛅: an accent makes the text's own symbol, not δ alone
         if body[after:after + 1] in ("_", "(") or variation_at(body, m.end(), names) is not None:
             continue
         return True
