@@ -193,3 +193,16 @@ def test_a_norm_of_one_holds_for_a_unit_quaternion_and_is_not_flagged_where_the_
     assert one == [{"holds"}] and two == [{"fails"}]
     plain = HEAD + "The attitude is a quaternion $\\mathbf{q}$ with components $q_w, q_x, q_y, q_z$.\n\n" + chain
     assert not _lines(plain, "= 1\n")[0] & {"typo", "fails"}
+
+
+def test_a_body_rate_q_under_d_dt_after_a_moment_is_no_quaternion_rate():
+    # p, q, r the body rates beside the attitude quaternion q_0 … q_3: I_yy dq/dt in Euler's equations is the
+    # pitch rate's rate, as I_yy \dot{q} is, never a quaternion's (whose component check would flag it)
+    text = HEAD + ("The attitude is a unit quaternion with components $q_0, q_1, q_2, q_3$; the body rates are "
+                   "$p$, $q$, $r$ about the body axes and the moments about them are $L$, $M$, $N$.\n\n"
+                   "$$\n\\mathbf{q} = q_0 + q_1 i + q_2 j + q_3 k = [q_0, q_1, q_2, q_3]^\\top\n$$\n\n"
+                   "$$\n\\begin{align}\nI_{xx}\\frac{d p}{d t} + (I_{zz} - I_{yy})qr &= L \\\\\n"
+                   "I_{yy}\\frac{d q}{d t} + (I_{xx} - I_{zz})pr &= M \\\\\n"
+                   "I_{zz}\\frac{d r}{d t} + (I_{yy} - I_{xx})pq &= N\n\\end{align}\n$$\n")
+    (euler,) = _lines(text, "I_{yy}\\frac{d q}")
+    assert not euler & {"typo", "fails"}

@@ -42,7 +42,9 @@ from derive.lecture.statements import top_level
 from derive.lecture.latex_spellings import BOLD_MARK, VECTOR_MARK
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
-_MARK = re.compile(r"\\otimes|\\frac\s*\{\s*d\s*q\s*\}|" + BOLD_MARK + r"\s*\{?\s*q\b|e\^\{?\s*" + BOLD_MARK)
+_MARK = re.compile(r"\\otimes|(?:^|[=&(]|\\\\)\s*\\frac\s*\{\s*d\s*q\s*\}|" + BOLD_MARK + r"\s*\{?\s*q\b|e\^\{?\s*" + BOLD_MARK)
+"""A display in quaternions: a ⊗, a bold q, e to a bold vector, or dq/dt standing as a member of its own (after a
+moment, ``I_{yy}\\frac{dq}{dt}``, q is a body rate, as ``\\dot{q}`` there is)."""
 _BOLD_NAME = VECTOR_MARK + r"\s*\{?\s*\\?([A-Za-z]+)\s*\}?"
 _NAME_ONLY = re.compile(r"\s*(?:\\Delta\s*)?(?:\\(?:dot|ddot|dddot)\s*\{?\s*)?" + _BOLD_NAME + r"\s*\}?\s*(?:\(t\))?\s*$")
 _RATE_ROW = re.compile(r"\s*\\(dot|ddot|dddot)\s*\{\s*" + _BOLD_NAME + r"\s*\}\s*$")
