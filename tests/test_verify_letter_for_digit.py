@@ -24,3 +24,9 @@ def test_a_matrix_with_a_letter_of_its_own_among_its_entries_is_left_alone():
 def test_the_correction_writes_the_digit_only_where_the_letter_stands_alone():
     piece = "\\begin{pmatrix} 0 & 1 \\\\ o & 0 \\end{pmatrix}"
     assert corrected(piece, mistyped(piece)) == "\\begin{pmatrix} 0 & 1 \\\\ 0 & 0 \\end{pmatrix}"
+
+
+def test_a_small_space_between_an_entrys_factors_keeps_it_a_number():
+    # 2\,i and -\,i are numbers as 2i and -i are: the letter o among them is still the digit mistyped
+    assert mistyped("\\begin{pmatrix} 0 & -\\,i \\\\ 2\\,i & o \\end{pmatrix}") != []
+    assert mistyped("\\begin{pmatrix} 0 & -\\,i \\\\ 2\\,x & o \\end{pmatrix}") == []

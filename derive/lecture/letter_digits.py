@@ -22,6 +22,8 @@ _LETTER = re.compile(r"\s*[oO]\s*")
 
 
 def _entries(body: str) -> list[str]:
+    """The matrix's entries, small spaces set between factors (``\\sqrt{2}\\,i``) dropped as TeX sets them."""
+    body = re.sub(r"\\[,;:!]", " ", body)
     return [e for row in re.split(r"\\\\", body) for e in row.split("&") if e.strip()]
 
 
