@@ -8,11 +8,13 @@ atom, marked ``delta``: `derive.lecture.vocabulary.Atom.mark`), and `delta_a_qua
 the text writes δ alone somewhere (``\\delta = \\pi/2``, ``\\cos(\\Omega t + \\delta)``, "$\\delta$
 the phase"): there δ is the text's own quantity and δx reads as δ times x. Kronecker's
 ``\\delta_{ij}`` is neither, nor δ accented alone in braces (``\\hat{\\delta}``, a symbol of its own).
-May import: the standard library.
+May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
 import re
+
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 # the spaces that may stand between δ and the varied symbol: blanks and the thin spaces
 _GAP = re.compile(r"(?:\s|\\[,;:!](?![A-Za-z]))*")
@@ -32,7 +34,7 @@ def variation_at(s: str, j: int, names) -> int | None:
 
 
 _DELTA = re.compile(r"\\delta(?![A-Za-z])")
-_ACCENT = re.compile(r"\\(?:hat|widehat|tilde|widetilde|bar|check|breve|vec|mathbf|boldsymbol|bm)\s*\{\s*\Z")
+_ACCENT = re.compile(r"(?:\\(?:hat|widehat|tilde|widetilde|bar|check|breve)|" + VECTOR_MARK + r")\s*\{\s*\Z")
 
 
 def delta_a_quantity(body: str, names) -> bool:

@@ -136,7 +136,7 @@ _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*" + BOLD_MAR
 
 _UNIT_TENSOR = re.compile(BOLD_MARK + r"\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
 # the unit tensor written as a one (\one, \mathbb{1}, \mathbf{1}), and the dyadic 𝐫𝐫 (a bold letter twice in a row)
-_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|\\(?:mathbb|mathds|mathrm|mathbf|boldsymbol|bm)\s*\{\s*1\s*\}(?!\s*[_^])")
+_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|(?:\\(?:mathbb|mathds|mathrm)|" + BOLD_MARK + r")\s*\{\s*1\s*\}(?!\s*[_^])")
 _DYADIC = re.compile(r"\{?\s*" + VECTOR_MARK + r"\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}?\s*\{?\s*" + VECTOR_MARK + r"\s*\{?\s*\1(?![A-Za-z])\s*\}?(?!\s*_)")
 
 

@@ -11,17 +11,18 @@ Takes: a statement of a display and the display's other statements. Gives: the m
 of `derive.lecture.notes_check.Checker`, whose `_vector_size` records the letter as a symbol of the
 text's with its definition (the statement itself then unchecked: a definition, not a claim).
 
-May import: :mod:`derive.lecture.latex`, the standard library.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.latex_spellings`, the standard library.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture import latex as lx
+from derive.lecture.latex_spellings import VECTOR_MARK
 
 _PLAIN = re.compile(r"\s*([A-Za-z])\s*=(?!=)\s*(.+?)\s*[.,;]?\s*$", re.S)
 """``M = m g r \\sin\\gamma``: a plain letter, without index or accent, set to an expression."""
-_NAMED = r"\s*\\(?:vec|mathbf|boldsymbol|bm)\s*\{?\s*{letter}\s*\}?\s*="
+_NAMED = r"\s*" + VECTOR_MARK + r"\s*\{?\s*{letter}\s*\}?\s*="
 """``\\vec{M} =``: the vector of that letter named by the text."""
 
 
