@@ -31,8 +31,8 @@ SHORT = {
         "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the oscillator's "
         "rate kappa and the solution's Theta, a cylinder's moments and the parallel axis theorem in a bold I are not read",
     ("danchev-intermediate-axis-theorem-perturbative-stability", "found"):
-        "its three slips (I' = I + mR^2 for the tensor, exp(kappa t) twice, Theta's radicand) sit on displays it does "
-        "not read",
+        "of its three slips the unstable solution's exp(kappa t) written twice is flagged; I' = I + mR^2 for the "
+        "tensor and Theta's radicand sit on displays it does not read",
     ("kit-p1-gyroscope-nutation-gimbal-precession-de", "checked"):
         "a laboratory course's hints in German with the moments of inertia written theta (theta_z, theta_perp, "
         "theta' of the gimbal frames): the half-angles alpha and beta of the cones, omega_N along L and the "

@@ -298,7 +298,7 @@ class Checker(ReadingRules):
         if self._vector_size(line, piece, pieces):
             return
         if self._two_cases(line, piece, duplicate, pieces) or self._definite_integral(line, piece, text) or self._perturbed(line, piece, text) \
-                or self._operator(line, piece, text) or self._coordinate(line, piece, text):
+                or self._operator(line, piece, text) or self._coordinate(line, piece, text) or self._constants_collapsed(line, piece, text):
             return
         step = rearranged.check(text)
         if step is not None:

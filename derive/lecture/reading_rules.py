@@ -20,6 +20,7 @@ from derive.lecture.chain_end_names import ChainEndNames
 from derive.lecture.chain_links import ChainLinks
 from derive.lecture.conditions import Conditions
 from derive.lecture.constant_cases import ConstantCases
+from derive.lecture.constants_collapsed import ConstantsCollapsed
 from derive.lecture.context import Reading
 from derive.lecture.coordinate_statements import CoordinateStatements
 from derive.lecture.determinant_steps import DeterminantSteps
@@ -81,5 +82,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
-                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler):
+                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler, ConstantsCollapsed):
     """Every reading rule, in method-lookup order (see the module docstring)."""
