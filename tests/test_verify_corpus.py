@@ -151,14 +151,6 @@ SHORT = {
         "R(phi, theta, psi) written out, R(phi, theta, psi) = [C_z(psi) C_x(theta) C_z(phi)]^T, e_Z and e_N in the "
         "moving frame, the angular velocity as phidot e_Z + thetadot e_N + psidot e_z and the body angular "
         "velocity are checked",
-    ("physics-se-angular-velocity-euler-angles-rotation-matrices", "checked"):
-        "5 of 8: R R^t = I, the rate of it and x-dot = R-dot R^t x of the general rotation R(t) are read as "
-        "identities of a rotation, and the spins carried by T_1, T_2 (named turns in the prose) are read; a "
-        "derivative chain of matrices with 'vector x matrix' products and Omega x = omega x x (omega named by "
-        "the entries of the skew matrix Omega) are not read",
-    ("physics-se-angular-velocity-euler-angles-rotation-matrices", "found"):
-        "1 of 2: the result omega = psidot z + T_1 (thetadot x) is flagged; the same slip in the update's chain "
-        "sits in 'vector x matrix' products, which are not read",
     ("wikipedia-moment-of-inertia-matrix-parallel-axis-encyclopaedia", "checked"):
         "4 of 7: the angular momentum as a chain of cross products of the particles' relative positions with "
         "velocities that include the reference point's V_R, and the parallel axis theorem's [I_S] and [I_R] with "

@@ -47,3 +47,11 @@ def test_spins_each_carried_by_the_products_of_the_turns_before_it_hold():
                "+ \\dot{b} \\left( \\mathrm{E}_a \\hat{k} \\right) \\end{aligned}")
     assert "holds" in _verdicts(display)
     assert _verdicts("\\vec{\\omega} = \\dot{a} \\hat{z} + \\dot{b} R_z(a) \\hat{x} + \\dot{c} R_z(a) R_x(b) \\hat{z}") == {"holds"}
+
+
+def test_spins_in_a_bracket_crossed_with_the_matrix_beside_omega_are_judged_as_omega():
+    head = "# Spins\n\nTake $T_1$ turning by $\\phi$ about z and $T_2$ by $\\theta$ about x, and $T = T_1 T_2$.\n\n"
+    crossed = "\\frac{dT}{dt} = \\left(\\dot{%s} \\hat{z} + T_1 (\\dot{\\theta} \\hat{x}) \\right) \\times T = \\vec{\\omega} \\times T"
+    assert "fails" in _verdicts(crossed % "\\psi", head)
+    assert "fails" not in _verdicts(crossed % "\\phi", head)
+    assert "fails" not in _verdicts("\\frac{dT}{dt} = \\left(\\dot{\\psi} \\hat{z} + T_1 (\\dot{\\theta} \\hat{x}) \\right) \\times T", head)

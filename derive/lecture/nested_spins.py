@@ -22,7 +22,8 @@ beside one rotation, a rotation with no spin beside it, an angle that is not one
 The spins written out, ȧ u + ḃ R_u(a) v + ċ R_u(a) R_v(b) w (the carrying products may be matrices
 the text set equal to products of turns in a display before, ``\\mathrm{E}_y = \\mathrm{rot}(\\hat{j},
 \\theta_y)``), hold when the first spin is carried by no turn and each next one by exactly the turns
-of the spins before it; any other sum is left to the other rules.
+of the spins before it; any other sum is left to the other rules. Written inside Ṫ = 𝛚 × T, a statement
+ending ``(S) \\times X = \\vec{\\omega} \\times X`` (the same X on both sides) is read as 𝛚 = S.
 May import: the standard library, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
@@ -44,6 +45,9 @@ _PARTIAL = re.compile(r"\s*" + VECTOR_MARK + r"\s*\{?\s*\\omega\s*\}?\s*_\s*\{?\
 """The angular velocity after some of the turns, ``\\vec{\\omega}_p``: a bold ω with a one-letter subscript."""
 _PRODUCT_NAME = re.compile(r"(?:\\mathrm\s*\{\s*([A-Z])\s*\}|([A-Z]))\s*(?:_\s*(?:\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9])))?(?![A-Za-z0-9{(])")
 """A matrix the text sets equal to a product of turns in its displays, ``\\mathrm{E}_p = \\mathrm{E}_y \\mathrm{rot}(\\hat{k}, \\theta_p)``."""
+_CROSSED = re.compile(r"\s*(?:\\left\s*)?\(\s*(?P<s>.+?)\s*(?:\\right\s*)?\)\s*\\times\s*(?P<x>[^=]+?)\s*")
+_OMEGA_CROSSED = re.compile(_OMEGA.pattern + r"\\times\s*(?P<x>[^=]+?)\s*")
+"""A bracket crossed with a matrix, ``\\left( … \\right) \\times T``, and 𝛚 crossed with one, ``\\vec{\\omega} \\times T``."""
 _SIZES = re.compile(r"\\(?:left|right|bigl|bigr|Bigl|Bigr|biggl|biggr|big|Big|bigg|Bigg)\s*(?=[()])")
 _SPACE = re.compile(r"\\[,;:!]|\\quad|\\qquad|~")
 _AXIS = {"i": "x", "j": "y", "k": "z"}
@@ -238,7 +242,8 @@ class NestedSpins:
 
     def _nested_spins(self, line, piece) -> bool:
         """Judge 𝛚 = nested spins (see the module docstring); False when the statement is not one."""
-        parts = piece.split("=")
+        read_as = _as_angular_velocity(piece)
+        parts = read_as.split("=")
         products = vars(self).setdefault("spin_products", {})
         if len(parts) == 2 and _PRODUCT_NAME.fullmatch(parts[0].strip()):
             turns = _turns_of(parts[1], products)
@@ -267,6 +272,7 @@ class NestedSpins:
             return False
         order, slips = judged
         closing = " (read closing the brackets the display leaves open at its end)" if closed else ""
+        closing += " (the bracket crossed with the matrix read as 𝛚, as Ṫ = 𝛚 × T writes it)" if read_as != piece else ""
         if slips:
             (angle, axis), (turn_axis, turn_angle) = slips[0]
             self._add(line, piece, "identity", "fails",
@@ -284,6 +290,17 @@ class NestedSpins:
                   f"the angular velocity of {product}, the product its matrices name: each spin about its own turn's "
                   "axis, carried by the turns before it" + closing)
         return True
+
+
+def _as_angular_velocity(piece: str) -> str:
+    """``\\vec{\\omega} = S`` for a statement ending ``(S) \\times X = \\vec{\\omega} \\times X``, the bracket
+    of spins crossed with a matrix as Ṫ = 𝛚 × T writes it; else the statement as it is."""
+    parts = piece.split("=")
+    crossed = _CROSSED.fullmatch(parts[-2]) if len(parts) > 1 else None
+    omega = _OMEGA_CROSSED.fullmatch(parts[-1]) if crossed else None
+    if omega is None or _SPACE.sub("", crossed["x"]).replace(" ", "") != _SPACE.sub("", omega["x"]).replace(" ", ""):
+        return piece
+    return "\\vec{\\omega} = " + crossed["s"]
 
 
 def _product_name(m) -> str:
