@@ -28,3 +28,14 @@ def test_the_same_link_written_right_holds_and_a_difference_in_the_names_is_not_
     # components off by different numbers are not one factor: unjudged
     mixed = _last(ROWS % "\\frac{11}{12}Mb^2 \\omega \\frac{1}{\\sqrt{2}} \\begin{pmatrix} -2 \\\\ +1 \\\\ 0 \\end{pmatrix}")
     assert mixed.verdict == "unchecked"
+
+
+SET_ROWS = ("$$\\begin{align*} I_{11} &= \\frac{1}{2} \\frac{M}{abc} [ab^3 c + abc^3] \\\\ &= %s \\end{align*}$$\n")
+BOX = "# A box\n\nA box of sides $a$, $b$, $c$ and mass $M$.\n\n"
+
+
+def test_a_row_setting_the_left_side_is_linked_to_the_row_before_it():
+    wrong = kept.check_text(BOX + SET_ROWS % "\\frac{1}{12} M(b^2 + c^2)")[-1]
+    assert wrong.verdict == "fails" and "\\frac{1}{6} times the member before it" in wrong.why
+    right = kept.check_text(BOX + SET_ROWS % "\\frac{1}{2} M(b^2 + c^2)")
+    assert all(c.verdict not in ("typo", "fails") for c in right)

@@ -245,9 +245,9 @@ SHORT = {
         "x_a^(i) and a diagonalisation P^-1 I P; the energy's identity, omega^2's chain with the summation "
         "convention, the tensor written out and the lamina's theorem in the plane z = 0 are checked",
     ("songtech-notes-rigid-body-inertia-tensor-principal-axes", "found"):
-        "its four slips sit in what is not read: (omega + r_i)^2 inside a chain of cross products squared, "
-        "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a, and the block's I_11 chain through "
-        "integrals over its sides",
+        "1 of 4: the block's I_11 chain is flagged at its last link, 1/6 of the member before it; the other "
+        "three sit in what is not read: (omega + r_i)^2 inside a chain of cross products squared, "
+        "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "checked"):
         "6 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
         "transport theorem too; second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel are not read, and "

@@ -17,7 +17,9 @@ read as that link as well, whatever kept it from being read against its left sid
 the text has not tied (the reader cannot say what they stand for) is still a slip where its two
 members differ by a number, every component by the same (``\\frac{1}{12}Mb^2\\omega\\frac{1}{\\sqrt{2}}
 (-11, 11, 0)`` then ``= \\frac{11}{12}Mb^2\\omega (-1, 1, 0)``, off by √2): no value of those names
-makes them equal, short of making both zero.
+makes them equal, short of making both zero. A row the reader took as setting the chain's left side
+to its member (``I_{11} = … = \\frac{1}{2}\\frac{M}{abc}[ab^3c + abc^3]`` then ``= \\frac{1}{12}M(b^2 + c^2)``,
+each row "a case" of I₁₁) is such a link too: the chain states each member equals the next.
 """
 from __future__ import annotations
 
@@ -30,7 +32,8 @@ from derive.lecture import latex as lx
 from derive.lecture.statements import top_level
 
 _EQUALS = re.compile(r"(?<![<>!\\])=")
-_UNCOMPARED = ("cannot compare its sides", "which the text has not defined", "which the text has not tied")
+_UNCOMPARED = ("cannot compare its sides", "which the text has not defined", "which the text has not tied",
+               "a case or an assumption of the text")
 
 _VECTOR = re.compile(r"\\(?:vec|boldsymbol|bm)\b|\\mathbf\s*\{?\s*[a-z]|\\times|\\hat")
 
@@ -42,7 +45,8 @@ class ChainLinks:
 
     def _linked(self, line, piece, before, previous, dup, pieces) -> None:
         """Re-read a continuation row against the previous member when its own claims are all
-        uncompared (see the module docstring); ``previous`` is the row before it."""
+        uncompared, or only set the chain's left side to the row (see the module docstring);
+        ``previous`` is the row before it."""
         if previous is None or not re.match(r"\s*=", piece):
             return
         mine = self.claims[before:]
@@ -91,6 +95,7 @@ class ChainLinks:
             return None
         a, b = (sp.Matrix(m.value) if isinstance(m.value, sp.MatrixBase) else sp.Matrix([m.value])
                 for m in parsed.members[:2])
+        a, b = a.applyfunc(_cancelled), b.applyfunc(_cancelled)
         names = a.free_symbols
         if a.shape != b.shape or not names or names != b.free_symbols or any(x.has(sp.Integral, sp.Derivative) for x in (*a, *b)):
             return None
@@ -104,6 +109,15 @@ class ChainLinks:
         if c is None or not c.is_number or c == 1 or not c.is_real:
             return None
         return c, sorted(self.tex(x) for x in names)
+
+
+def _cancelled(x):
+    """``x`` with common factors cancelled, so a name that cancels (a in M a b³ c / (a b c)) is in
+    neither member; as it is where SymPy cannot cancel it."""
+    try:
+        return sp.cancel(x)
+    except (sp.PolynomialError, TypeError, ValueError):
+        return x
 
 
 def last_member(row: str) -> str | None:
