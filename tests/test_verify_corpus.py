@@ -176,15 +176,12 @@ SHORT = {
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
-        "14 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
+        "15 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
         "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
         "integrals in time, the friction along the unit vectors) are not read; the moments of the shapes the prose "
         "names, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
-        "transpose set with \\mkern) and the implications solved for b and v_x(tau) are",
-    ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "found"):
-        "2 of 4 (the cylinder's volume integral without its H, and v - V = (2/5) v => v = 5V/7): Delta vartheta/t "
-        "for Delta vartheta/Delta t sits in a chain in names the text never ties, and the lost minus sign restates "
-        "the chain before it, which a restatement never flags (either form may be the one meant)",
+        "transpose set with \\mkern), the implications solved for b and v_x(tau) and the rolling speed's "
+        "Delta vartheta over t beside Delta x over Delta t (flagged) are",
     ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "checked"):
         "2 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "

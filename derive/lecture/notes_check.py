@@ -46,7 +46,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
-from derive.lecture import rearranged, summation_index, worked_values
+from derive.lecture import delta_quotients, rearranged, summation_index, worked_values
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.comparing import free, series_order
 from derive.lecture.context import Context
@@ -304,9 +304,9 @@ class Checker(ReadingRules):
         if step is not None:
             self._add(line, piece, "rearrangement", *step)
             return
-        summed = summation_index.slip(text)
-        if summed is not None:
-            self._add(line, piece, "sum", "typo", summed[1], None if self.judging_only else summed[0])
+        summed = next(((k, s) for k, s in (("sum", summation_index.slip(text)), ("rate", delta_quotients.slip(text))) if s), None)
+        if summed is not None:        # a summand that does not run with its index, a quotient that lost its Δ
+            self._add(line, piece, summed[0], "typo", summed[1][1], None if self.judging_only else summed[1][0])
             return
         if self._basis_statement(line, piece, text) or self._algebra_first(text) and self._algebra_or_named(line, piece, text):
             return
