@@ -135,10 +135,11 @@ SHORT = {
         "the reader's model of a free body or of the fast top; omega(R), I_0 and E(R) of its simulation are "
         "functions of the orientation R, which the reader does not model",
     ("verga-polytech-spinning-cone-euler-equations-fr", "checked"):
-        "3 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
+        "4 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
         "angular velocity (a code cell names Omega), whose Euler's equations carry Ldot on the left, and whose "
         "moments I_1, I_2, I_3 are names set to triple integrals over the cone (not compared: such a name may mean "
-        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals are checked",
+        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals, the solid "
+        "cone's moments about its centre of mass and the distance 3h/4 of that centre from the apex are checked",
     ("verga-polytech-spinning-cone-euler-equations-fr", "found"):
         "2 of 4: the volume's and the centre of mass's integrals without the Jacobian r are flagged; the moments' "
         "integrals (names set to integrals, not compared) and the psi = 0 equations in thetadot and phidot "
@@ -167,10 +168,11 @@ SHORT = {
         "0 of 1: 2T given T's value, 172.80 J, the constant's value in an example whose state the text does not "
         "give (the conservation of 2T is checked, the value left aside)",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "checked"):
-        "2 of 10: its vectors written as triples are read (Omega = (omega sin alpha, 0, omega cos alpha) named anew "
-        "after the prose's Omega = omega n, then Omega in psidot holds), but the rolling cone's kinematics in its own "
+        "4 of 10: its vectors written as triples are read (Omega = (omega sin alpha, 0, omega cos alpha) named anew "
+        "after the prose's Omega = omega n, then Omega in psidot holds), and the solid cone's moments and the distance "
+        "3h/4 of its centre of mass from the apex hold, but the rolling cone's kinematics in its own "
         "alpha, psi and R (no model of a body rolling on a plane), its angular momentum through moments in a and h, "
-        "which only the notebook's earlier cell names and the reader does not tie to the body's principal moments, "
+        "which the reader does not tie to the body's principal moments, "
         "and the components along the unit vectors of the intermediate Euler frames (hat y_2, hat z_2) are not read",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "found"):
         "0 of 3: L with R^2 for a^2, I psidot for I_z psidot, and Varignon's formula with the body's Omega for the "
