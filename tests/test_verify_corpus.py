@@ -135,11 +135,11 @@ SHORT = {
         "the reader's model of a free body or of the fast top; omega(R), I_0 and E(R) of its simulation are "
         "functions of the orientation R, which the reader does not model",
     ("verga-polytech-spinning-cone-euler-equations-fr", "checked"):
-        "4 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
+        "5 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
         "angular velocity (a code cell names Omega), whose Euler's equations carry Ldot on the left, and whose "
         "moments I_1, I_2, I_3 are names set to triple integrals over the cone (not compared: such a name may mean "
-        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals, the solid "
-        "cone's moments about its centre of mass and the distance 3h/4 of that centre from the apex are checked",
+        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals, its density "
+        "M over that volume, the solid cone's moments about its centre of mass and the distance 3h/4 of that centre from the apex are checked",
     ("verga-polytech-spinning-cone-euler-equations-fr", "found"):
         "2 of 4: the volume's and the centre of mass's integrals without the Jacobian r are flagged; the moments' "
         "integrals (names set to integrals, not compared) and the psi = 0 equations in thetadot and phidot "
@@ -213,13 +213,6 @@ SHORT = {
         "premultiplied by the rotation R (its \\times the matrix product) as identities of a rotation are read; "
         "its restatement in plain letters L = I omega sets the text's L, which no rotation enters, and "
         "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
-    ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "24 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r, the "
-        "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
-        "(not a link between two integrals, but each against the value the chain reaches) and r . n and r^2 with "
-        "n and r written in brackets and the tensor 1 r^2 - r r (\\one beside the dyadic) are read; the moment "
-        "about an axis n . I . n, the integrals with the density put in, and the values in R and h after the sphere "
-        "redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "
         "{d{\\bf G}\\over dt}, hold; the changes written as differentials with a frame's label ((dG)_space, "

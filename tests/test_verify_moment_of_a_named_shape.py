@@ -73,3 +73,14 @@ def test_a_cones_centre_of_mass_from_its_apex_holds_in_the_section_that_names_th
     other = text.replace("# The cone\n\nIn the frame $(x,y,z)$ attached to the cone,", "# A top\n\nIn the frame $(x,y,z)$,")
     assert not {c.verdict for c in kept.check_text(other) if c.latex.strip().startswith("R")} & {"holds", "fails", "typo"}
 
+
+def test_a_named_solids_volume_and_its_density_hold():
+    text = ("# Cylinder\n\nA solid cylinder with radius $R$, height $h$ and mass $m$: its volume\n\n$$V = \\pi R^2 h$$\n\n"
+            "and its density\n\n$$\\rho = \\frac{m}{\\pi R^2 h}$$\n")
+    assert {c.verdict for c in kept.check_text(text) if c.latex.strip()[:2] in ("V ", "\\r")} == {"holds"}
+    cone = ("# The cone\n\nThe body is a solid cone of height $h$ whose base has radius $d$. Its volume is "
+            "$\\pi d^2 h/3$, and from it the density $\\rho$ in terms of the mass $M$:\n\n$$\\rho = \\frac{3M}{\\pi d^2 h}$$\n")
+    assert {c.verdict for c in kept.check_text(cone) if c.latex.strip().startswith("\\rho")} == {"holds"}
+    # another volume is left as the other rules leave it, never flagged
+    wrong = text.replace("V = \\pi R^2 h", "V = 2 \\pi R h")
+    assert not {c.verdict for c in kept.check_text(wrong) if c.latex.strip().startswith("V")} & {"holds", "fails", "typo"}

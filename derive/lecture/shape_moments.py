@@ -54,6 +54,9 @@ _HEADING = re.compile(r"\s*(?:#|\\(?:sub)*section\b|\\chapter\b)")
 # where the centre of mass of a uniform body lies on its axis: {point the prose measures from: the
 # fraction of the body's one length}; a solid cone's at a quarter of its height above its base
 _CENTRES = {"cone": {"apex": R_(3, 4), "base": R_(1, 4)}}
+# the volume of a uniform solid in its lengths (a radius first, then a height)
+_VOLUMES = {"sphere": (1, lambda x: R_(4, 3) * sp.pi * x ** 3), "cube": (1, lambda x: x ** 3),
+            "cylinder": (2, lambda x, y: sp.pi * x ** 2 * y), "cone": (2, lambda x, y: sp.pi * x ** 2 * y / 3)}
 _DISTANCE = re.compile(r"\s*([A-Za-z]|\\[A-Za-z]+)(?:_\s*(?:\{[^{}=]*\}|[A-Za-z0-9]))?\s*=[^=]+$")
 _NAME = re.compile(r"\s*(?:[IJ](?:_\s*(?:\{[^{}=]*\}|[A-Za-z0-9]))?\s*=\s*)+[^=]+$")
 _SUBSCRIPT = re.compile(r"[IJ]_\s*\{?\s*([A-Za-z0-9])\s*\}?\s*=")
@@ -142,6 +145,7 @@ class ShapeMoments:
             return
         if not _NAME.match(piece):
             self._shape_centre(line, piece, added)
+            self._shape_volume(line, piece, added)
             return
         prose = paragraph(getattr(self.notes, "body", "") or "", line)
         body = _body(prose) if prose else None
@@ -204,3 +208,34 @@ class ShapeMoments:
             c.kind, c.verdict = "centre of a named shape", "holds"
             c.why = f"the centre of mass of a uniform {found[0]}, its distance from the {points[0]} (exact)"
 
+    def _shape_volume(self, line, piece, added):
+        """Judge ``V = \\pi R^2 h`` (the section speaking of a volume) or ``\\rho = \\frac{3M}{\\pi d^2 h}``
+        (of a density) against the one uniform solid the section names: `holds` when it is that body's
+        volume, or its mass over it (the lengths in any roles); else left as it is."""
+        lhs = piece.split("=")[0].strip()
+        if lhs not in ("V", "\\rho", "\\varrho") or any(c.verdict != "unchecked" for c in added):
+            return
+        text = section(getattr(self.notes, "body", "") or "", line)
+        found = _body(text)
+        if found is None or found[0] not in _VOLUMES or ("volume" if lhs == "V" else "density") not in text:
+            return
+        try:
+            parsed = lx.parse(piece, self.vocab)
+        except (lx.NotRead, lx.Words, ValueError, TypeError):
+            return
+        value = parsed.members[-1].value if len(parsed.members) == 2 else None
+        if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase):
+            return
+        value = value.xreplace({x: sp.Symbol(x.name.strip("|"), positive=True) for x in value.free_symbols})
+        masses = [x for x in value.free_symbols if x.name in ("M", "m")]
+        lengths = sorted(value.free_symbols - set(masses), key=str)
+        count, volume = _VOLUMES[found[0]]
+        if len(masses) != (lhs != "V") or len(lengths) != count:
+            return
+        scale = masses[0] if masses else 1
+        if not any(sp.simplify(value - scale / volume(*roles) if masses else value - volume(*roles)) == 0
+                   for roles in itertools.permutations(lengths)):
+            return
+        for c in added:
+            c.kind, c.verdict = "volume of a named shape", "holds"
+            c.why = f"the {'volume' if lhs == 'V' else 'density'} of a uniform solid {found[0]} (exact)"
