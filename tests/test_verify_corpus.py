@@ -62,7 +62,8 @@ SHORT = {
         "a determinant proof past its first links (the rows of det(R - I) = det((R - I)^T) = ... = -det(R - I), "
         "det(-A) = (-1)^3 det A, det(R - I) = 0) "
         "and the inertia tensor about another origin (I', [L]_S, "
-        "[A-dot]_{S_0}) are not read; the particle sums over a with x_ai components and the tensor's matrix, "
+        "[A-dot]_{S_0}) are not read (the principal moments I_1' = I_1 + M l^2 about a point the prose puts a "
+        "distance l from the centre of mass are); the particle sums over a with x_ai components and the tensor's matrix, "
         "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
         "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
@@ -186,10 +187,11 @@ SHORT = {
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
-        "14 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
-        "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
-        "integrals in time, the friction along the unit vectors) are not read; the moments of the shapes the prose "
-        "names, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
+        "15 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the "
+        "perpendicular axes theorem, the rolling condition in vectors and the pool ball's equations in R, b and "
+        "the rates (a chain of integrals in time, the friction along the unit vectors) are not read; the moments "
+        "of the shapes the prose names, the parallel axes theorem about an axis the prose puts through the centre "
+        "of mass, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
         "transpose set with \\mkern) and the implications solved for b and v_x(tau) are",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "found"):
         "2 of 4 (the cylinder's volume integral without its H, and v - V = (2/5) v => v = 5V/7): Delta vartheta/t "
