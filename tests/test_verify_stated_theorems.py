@@ -81,3 +81,10 @@ def test_primed_moments_about_a_point_a_distance_from_the_centre_of_mass_hold():
     assert ("holds", "parallel axes") in _prose_kinds(prose, "I_1' = I_1 + Ml^2")
     # another distance than the one the prose sets is not the theorem it states
     assert not {v for v, _ in _prose_kinds(prose, "I_1' = I_1 + Mh^2")} & {"holds", "fails", "typo"}
+
+
+def test_moments_moved_to_the_centre_of_mass_a_distance_away_hold():
+    prose = "The moments about the apex are then moved to the centre of mass at distance $R$, giving $I_x$:"
+    assert _prose_kinds(prose, "I_x = I_1 - M R^2") == [("holds", "parallel axes")]
+    # moved to the centre of mass, the moments drop: a plus sign is left to the rest of the reader
+    assert not {v for v, _ in _prose_kinds(prose, "I_x = I_1 + M R^2")} & {"holds", "fails", "typo"}

@@ -28,7 +28,8 @@ to the checker, never flagged here; T about a moving point of the body is judged
 `derive.lecture.moving_point_energy`. The centre of mass may also be named by the paragraph before the
 statement: ``I_{A'} = I_A + M d^2`` after "an axis A′ parallel to an axis A through the centre of mass",
 ``I_1' = I_1 + Ml^2`` after "O′ lies a distance l from the centre of mass" (the unprimed moment the
-centre of mass's, the primed one's axis or point the other). May import: the standard library,
+centre of mass's, the primed one's axis or point the other), ``I_x = I_1 - M R^2`` after moments "moved to
+the centre of mass at distance R" (the moments set the centre of mass's). May import: the standard library,
 :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.moving_point_energy`, :mod:`derive.lecture.shape_moments`.
 """
 from __future__ import annotations
@@ -100,6 +101,14 @@ def _centre_by_prose(label: str, primed: str, distance: str, prose: str) -> bool
     return re.search(through, prose) is not None or re.search(away, prose) is not None
 
 
+def _moved_to_centre(distance: str, prose: str) -> bool:
+    """Whether the paragraph before the statement moves the moments to the centre of mass a distance away
+    (``moved to the centre of mass at distance $R$``): the moments it sets are the centre of mass's."""
+    math, end = r"(?:\$|\\\()\s*", r"\s*(?:\$|\\\))"
+    return re.search(rf"(?:moved|carried|shifted|taken)\s+to\s+the\s+cent(?:re|er)\s+of\s+mass,?\s+(?:at\s+)?"
+                     rf"(?:a\s+)?distance\s+{math}{re.escape(distance)}{end}", prose) is not None
+
+
 def theorem(piece: str, prose: str = "") -> str | None:
     """Why a statement is one of the theorems as written, or None when it is not; ``prose`` is the
     paragraph before it, which may name the centre of mass's axis or point."""
@@ -112,6 +121,8 @@ def theorem(piece: str, prose: str = "") -> str | None:
         if letter == other_letter and sign == "+" and not other_prime \
                 and _centre_by_prose(_label(other_sub, None), _label(sub, prime), distance, prose):
             return PARALLEL          # I_{A'} = I_A + M d², A the axis the prose puts through the centre of mass
+        if letter == other_letter and sign == "-" and _moved_to_centre(distance, prose):
+            return PARALLEL          # I_x = I_1 − M R², the moments "moved to the centre of mass at distance R"
         return None
     m = _PROJECTION.fullmatch(piece)
     if m is not None:
