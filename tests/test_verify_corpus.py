@@ -62,7 +62,8 @@ SHORT = {
         "a determinant proof past its first links (the rows of det(R - I) = det((R - I)^T) = ... = -det(R - I), "
         "det(-A) = (-1)^3 det A, det(R - I) = 0) "
         "and the inertia tensor about another origin (I', [L]_S, "
-        "[A-dot]_{S_0}) are not read; the particle sums over a with x_ai components and the tensor's matrix, "
+        "[A-dot]_{S_0}) are not read (the principal moments I_1' = I_1 + M l^2 about a point the prose puts a "
+        "distance l from the centre of mass are); the particle sums over a with x_ai components and the tensor's matrix, "
         "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
         "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
         "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
@@ -135,10 +136,12 @@ SHORT = {
         "the reader's model of a free body or of the fast top; omega(R), I_0 and E(R) of its simulation are "
         "functions of the orientation R, which the reader does not model",
     ("verga-polytech-spinning-cone-euler-equations-fr", "checked"):
-        "3 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
+        "6 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
         "angular velocity (a code cell names Omega), whose Euler's equations carry Ldot on the left, and whose "
         "moments I_1, I_2, I_3 are names set to triple integrals over the cone (not compared: such a name may mean "
-        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals are checked",
+        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals, its density "
+        "M over that volume, the moments moved from the apex to the centre of mass (I_x = I_1 - M R^2), the solid "
+        "cone's moments about its centre of mass and the distance 3h/4 of that centre from the apex are checked",
     ("verga-polytech-spinning-cone-euler-equations-fr", "found"):
         "2 of 4: the volume's and the centre of mass's integrals without the Jacobian r are flagged; the moments' "
         "integrals (names set to integrals, not compared) and the psi = 0 equations in thetadot and phidot "
@@ -159,10 +162,11 @@ SHORT = {
         "0 of 1: 2T given T's value, 172.80 J, the constant's value in an example whose state the text does not "
         "give (the conservation of 2T is checked, the value left aside)",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "checked"):
-        "2 of 10: its vectors written as triples are read (Omega = (omega sin alpha, 0, omega cos alpha) named anew "
-        "after the prose's Omega = omega n, then Omega in psidot holds), but the rolling cone's kinematics in its own "
+        "4 of 10: its vectors written as triples are read (Omega = (omega sin alpha, 0, omega cos alpha) named anew "
+        "after the prose's Omega = omega n, then Omega in psidot holds), and the solid cone's moments and the distance "
+        "3h/4 of its centre of mass from the apex hold, but the rolling cone's kinematics in its own "
         "alpha, psi and R (no model of a body rolling on a plane), its angular momentum through moments in a and h, "
-        "which only the notebook's earlier cell names and the reader does not tie to the body's principal moments, "
+        "which the reader does not tie to the body's principal moments, "
         "and the components along the unit vectors of the intermediate Euler frames (hat y_2, hat z_2) are not read",
     ("verga-polytech-rolling-cone-angular-momentum-fr", "found"):
         "0 of 3: L with R^2 for a^2, I psidot for I_z psidot, and Varignon's formula with the body's Omega for the "
@@ -176,10 +180,11 @@ SHORT = {
         "the eigenvector rows in omega_{11}, omega_{21}, ... are conditions (its row subtraction is checked); "
         "the cube's integrals with bounds and I_x + I_y as integrals over dV are checked",
     ("edinburgh-dynamics-rigid-bodies-inertia-rolling", "checked"):
-        "15 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the axes "
-        "theorems, the rolling condition in vectors and the pool ball's equations in R, b and the rates (a chain of "
-        "integrals in time, the friction along the unit vectors) are not read; the moments of the shapes the prose "
-        "names, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
+        "16 of 32: the integrals over the body without bounds (the hoop's, the radius of gyration's), the "
+        "perpendicular axes theorem, the rolling condition in vectors and the pool ball's equations in R, b and "
+        "the rates (a chain of integrals in time, the friction along the unit vectors) are not read; the moments "
+        "of the shapes the prose names, the parallel axes theorem about an axis the prose puts through the centre "
+        "of mass, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
         "transpose set with \\mkern), the implications solved for b and v_x(tau) and the rolling speed's "
         "Delta vartheta over t beside Delta x over Delta t (flagged) are",
     ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "checked"):
@@ -200,13 +205,6 @@ SHORT = {
         "premultiplied by the rotation R (its \\times the matrix product) as identities of a rotation are read; "
         "its restatement in plain letters L = I omega sets the text's L, which no rotation enters, and "
         "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
-    ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "24 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r, the "
-        "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
-        "(not a link between two integrals, but each against the value the chain reaches) and r . n and r^2 with "
-        "n and r written in brackets and the tensor 1 r^2 - r r (\\one beside the dyadic) are read; the moment "
-        "about an axis n . I . n, the integrals with the density put in, and the values in R and h after the sphere "
-        "redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "
         "{d{\\bf G}\\over dt}, hold; the changes written as differentials with a frame's label ((dG)_space, "

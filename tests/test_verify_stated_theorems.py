@@ -60,3 +60,31 @@ def test_other_forms_are_not_taken_for_the_theorems():
                     "T = \\frac{1}{2} m v_c + \\frac{1}{2} J_C \\omega^2", "v_B \\cos\\theta_B = v_A \\sin\\theta_A",
                     "v_B \\cos\\theta_B = v_A \\cos\\theta_B", "v_x \\cos\\alpha_x = v_y \\cos\\alpha_y"):
         assert "holds" not in {v for v, _ in _kinds(display)}, display
+
+
+def _prose_kinds(prose, display):
+    return [(c.verdict, c.kind) for cs in kept.by_line("# Moments\n\n" + prose + "\n$$" + display + "$$\n").values()
+            for c in cs]
+
+
+def test_the_parallel_axis_theorem_holds_where_the_prose_names_the_centre_of_mass_axis():
+    prose = "For an axis $A'$ parallel to an axis $A$ through the centre of mass, a distance $d$ from it,"
+    assert _prose_kinds(prose, "I_{A'} = I_A + Md^2") == [("holds", "parallel axes")]
+    # the axis through the centre of mass is the primed one here: the same display is not the theorem
+    swapped = "For an axis $A'$ through the centre of mass, parallel to an axis $A$ a distance $d$ from it,"
+    assert not {v for v, _ in _prose_kinds(swapped, "I_{A'} = I_A + Md^2")} & {"holds", "fails", "typo"}
+
+
+def test_primed_moments_about_a_point_a_distance_from_the_centre_of_mass_hold():
+    prose = ("When $O'$ lies a distance $l$ from the centre of mass along the $3$-axis, the principal moments "
+             "about it are")
+    assert ("holds", "parallel axes") in _prose_kinds(prose, "I_1' = I_1 + Ml^2")
+    # another distance than the one the prose sets is not the theorem it states
+    assert not {v for v, _ in _prose_kinds(prose, "I_1' = I_1 + Mh^2")} & {"holds", "fails", "typo"}
+
+
+def test_moments_moved_to_the_centre_of_mass_a_distance_away_hold():
+    prose = "The moments about the apex are then moved to the centre of mass at distance $R$, giving $I_x$:"
+    assert _prose_kinds(prose, "I_x = I_1 - M R^2") == [("holds", "parallel axes")]
+    # moved to the centre of mass, the moments drop: a plus sign is left to the rest of the reader
+    assert not {v for v, _ in _prose_kinds(prose, "I_x = I_1 + M R^2")} & {"holds", "fails", "typo"}

@@ -25,8 +25,12 @@ Such a statement `holds`, its why naming the theorem, where the checker left it 
 name it records, then uses; symbols it does not tie). Any other form — another sign, power or
 factor, a point that is not the centre of mass, a distance written as a sum of squares — is left
 to the checker, never flagged here; T about a moving point of the body is judged by
-`derive.lecture.moving_point_energy`. May import: the standard library, :mod:`derive.lecture.latex_spaces`,
-:mod:`derive.lecture.moving_point_energy`.
+`derive.lecture.moving_point_energy`. The centre of mass may also be named by the paragraph before the
+statement: ``I_{A'} = I_A + M d^2`` after "an axis A′ parallel to an axis A through the centre of mass",
+``I_1' = I_1 + Ml^2`` after "O′ lies a distance l from the centre of mass" (the unprimed moment the
+centre of mass's, the primed one's axis or point the other), ``I_x = I_1 - M R^2`` after moments "moved to
+the centre of mass at distance R" (the moments set the centre of mass's). May import: the standard library,
+:mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.moving_point_energy`, :mod:`derive.lecture.shape_moments`.
 """
 from __future__ import annotations
 
@@ -34,6 +38,7 @@ import re
 
 from derive.lecture.latex_spaces import SPACE_SYMBOL, TIE
 from derive.lecture.moving_point_energy import energy_about_a_point
+from derive.lecture.shape_moments import paragraph
 
 _CENTRE = r"(?:C|c|G|cm|CM|com|\\text\{cm\}|\\mathrm\{cm\})"
 _SUB = r"(\{[^{}]*(?:\{[^{}]*\}[^{}]*)*\}|[A-Za-z0-9])"
@@ -77,14 +82,47 @@ def _centre(sub: str | None) -> bool:
     return sub is not None and re.fullmatch(rf"\{{?\s*{_CENTRE}\s*\}}?", sub) is not None
 
 
-def theorem(piece: str) -> str | None:
-    """Why a statement is one of the theorems as written, or None when it is not."""
+def _label(sub: str, prime: str | None) -> str:
+    """An axis's or a point's label as written, its prime kept: ``{A'}`` → ``A'``, ``1`` with a prime → ``1'``."""
+    label = re.sub(r"\^\s*\{?\s*\\prime\s*\}?", "'", sub.strip("{} "))
+    return label + ("'" if prime else "")
+
+
+def _centre_by_prose(label: str, primed: str, distance: str, prose: str) -> bool:
+    """Whether the paragraph before the statement makes ``label``'s moment the centre of mass's, the
+    primed one's a distance away: ``an axis \\(A\\) through the centre of mass``, or ``\\(O'\\) lies a
+    distance \\(l\\) from the centre of mass`` (the moments with a prime then being about that point)."""
+    if primed != label + "'":
+        return False
+    math = r"(?:\$|\\\()\s*"
+    end = r"\s*(?:\$|\\\))"
+    through = rf"{math}{re.escape(label)}{end},?\s+(?:passing\s+)?through\s+the\s+cent(?:re|er)\s+of\s+mass"
+    away = rf"lies\s+(?:at\s+)?a\s+distance\s+{math}{re.escape(distance)}{end}\s+from\s+the\s+cent(?:re|er)\s+of\s+mass"
+    return re.search(through, prose) is not None or re.search(away, prose) is not None
+
+
+def _moved_to_centre(distance: str, prose: str) -> bool:
+    """Whether the paragraph before the statement moves the moments to the centre of mass a distance away
+    (``moved to the centre of mass at distance $R$``): the moments it sets are the centre of mass's."""
+    math, end = r"(?:\$|\\\()\s*", r"\s*(?:\$|\\\))"
+    return re.search(rf"(?:moved|carried|shifted|taken)\s+to\s+the\s+cent(?:re|er)\s+of\s+mass,?\s+(?:at\s+)?"
+                     rf"(?:a\s+)?distance\s+{math}{re.escape(distance)}{end}", prose) is not None
+
+
+def theorem(piece: str, prose: str = "") -> str | None:
+    """Why a statement is one of the theorems as written, or None when it is not; ``prose`` is the
+    paragraph before it, which may name the centre of mass's axis or point."""
     piece = _SPACING.sub(" ", piece)
     m = _PARALLEL.fullmatch(piece)
     if m is not None:
-        letter, sub, _, other_letter, other_sub, _, sign, _, _ = m.groups()
+        letter, sub, prime, other_letter, other_sub, other_prime, sign, _, distance = m.groups()
         if letter == other_letter and _centre(sub) != _centre(other_sub) and (sign == "+") == _centre(other_sub):
             return PARALLEL          # I_P = I_G − m d² and I_G = I_P + m d² are not the theorem
+        if letter == other_letter and sign == "+" and not other_prime \
+                and _centre_by_prose(_label(other_sub, None), _label(sub, prime), distance, prose):
+            return PARALLEL          # I_{A'} = I_A + M d², A the axis the prose puts through the centre of mass
+        if letter == other_letter and sign == "-" and _moved_to_centre(distance, prose):
+            return PARALLEL          # I_x = I_1 − M R², the moments "moved to the centre of mass at distance R"
         return None
     m = _PROJECTION.fullmatch(piece)
     if m is not None:
@@ -106,12 +144,12 @@ def theorem(piece: str) -> str | None:
 
 
 class StatedTheorems:
-    """Mixin of the checker. Uses ``self.claims``."""
+    """Mixin of the checker. Uses ``self.claims``, ``self.notes``."""
 
     def _stated_theorem(self, line, piece, before) -> None:
         """The claims the checker gave ``piece`` (from ``before`` on), all unchecked, replaced by
         one that holds where the statement is one of the theorems (see the module docstring)."""
-        why = theorem(piece)
+        why = theorem(piece, paragraph(getattr(self.notes, "body", "") or "", line, lower=False))
         mine = self.claims[before:]
         if not mine or any(c.verdict != "unchecked" for c in mine):
             return
