@@ -29,15 +29,16 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from derive.runtime.cache import cache_dir, entry_lock
-from derive.runtime.cbuild import STRICT_FLAGS, check_compiles
+from derive.runtime.cbuild import STRICT_FLAGS, _compiler_identity, check_compiles
 
 CC = os.environ.get("CC", "cc")
 
 
 @functools.lru_cache(maxsize=None)
 def _identity(cc: str) -> str:
-    out = subprocess.run([cc, "--version"], capture_output=True, text=True, check=True).stdout
-    return out + "\n" + " ".join(platform.uname())
+    # derive's own (per-process) answer to ``<cc> --version``: a test process that also builds
+    # libraries then asks the compiler once for both keys
+    return _compiler_identity((cc,)) + "\n" + " ".join(platform.uname())
 
 
 def files_in(*folders: Path) -> dict[str, bytes]:

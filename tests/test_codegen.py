@@ -258,8 +258,9 @@ O2_SAMPLE = ("heavy_top.c", "heavy_top_solvers.c", "heavy_top_taylor.c", "reduce
 
 
 def _compile_strictly(files, flags):
-    """Each of ``files`` compiled strictly with ``flags`` (two at a time); the outcome is kept for
-    these exact sources, flags and compiler (tests/compile_once.py)."""
+    """Each of ``files`` compiled strictly with ``flags``, as its own translation unit, in two
+    compiler runs side by side, each given half of the files (one driver per half, not one per
+    file); the outcome is kept for these exact sources, flags and compiler (tests/compile_once.py)."""
     from concurrent.futures import ThreadPoolExecutor
 
     cc = os.environ.get("CC", "cc")
@@ -267,15 +268,17 @@ def _compile_strictly(files, flags):
         assert "Python.h" not in c_file.read_text()
 
     def build(work):
-        def compile_one(c_file):
-            out = ["-o", str(work / f"{c_file.stem}.o")] if "-fsyntax-only" not in flags else []
-            return c_file, subprocess.run(
+        def compile_some(some):
+            # (-c with several files and no -o: each file's object is written to the working folder)
+            return some, subprocess.run(
                 [cc, "-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", *flags, "-c",
-                 str(c_file), "-I", str(GENERATED / "c"), *out], capture_output=True, text=True)
+                 *(str(c_file) for c_file in some), "-I", str(GENERATED / "c")],
+                capture_output=True, text=True, cwd=work)
 
+        halves = [half for half in (files[0::2], files[1::2]) if half]
         with ThreadPoolExecutor(max_workers=2) as pool:
-            for c_file, r in pool.map(compile_one, files):
-                assert r.returncode == 0, f"{c_file.name}:\n{r.stderr}"
+            for some, r in pool.map(compile_some, halves):
+                assert r.returncode == 0, f"{', '.join(c_file.name for c_file in some)}:\n{r.stderr}"
         for o in work.glob("*.o"):  # (only the outcome is kept)
             o.unlink()
 
