@@ -1,10 +1,13 @@
 """A worked example's numbers: units after a number, a thousands separator, and the arithmetic
 between the plain numbers of a chain (derive/lecture/units.py, derive/lecture/arithmetic.py)."""
+import sympy as sp
+
 import kept_readings as kept
 
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.statements import statements
 from derive.lecture.units import plain_numbers
+from derive.lecture.worked_values import unchecked
 
 
 def test_a_unit_after_a_number_is_dropped_and_a_subscript_word_stays():
@@ -189,3 +192,9 @@ def test_a_worked_number_in_whole_numbers_named_as_a_quantity_is_not_compared_wi
     assert not any(c.verdict in ("typo", "fails") for c in claims)
     assert any(c.kind == "arithmetic" and c.verdict == "holds" for c in claims)
     assert any(c.verdict == "unchecked" and "a worked value" in c.why for c in claims)
+
+
+def test_a_relation_set_to_zero_is_no_worked_value():
+    x = sp.Symbol("x")
+    assert unchecked("T = 9", sp.Integer(9), [x], str) is not None
+    assert unchecked(r"\frac{d}{dt} p - q = 0", sp.Integer(0), [x], str) is None

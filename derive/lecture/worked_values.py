@@ -29,10 +29,11 @@ def _free(e) -> set:
 
 
 def unchecked(piece: str, written, derived: list, tex) -> str | None:
-    """Why a statement with a decimal number, or a plain number on its written side, is left
+    """Why a statement with a decimal number, or a plain number other than 0 on its written side, is left
     unchecked: every derived form keeps symbols (other than time) that the written side does not
     have; None when it is compared as usual."""
-    if not derived or not (_DECIMAL.search(piece) or not _free(written)):
+    number = not _free(written) and written != 0        # a relation set to zero is no worked value
+    if not derived or not (_DECIMAL.search(piece) or number):
         return None
     extra = set()
     for form in derived:
