@@ -1,10 +1,13 @@
 """A worked example's numbers: units after a number, a thousands separator, and the arithmetic
 between the plain numbers of a chain (derive/lecture/units.py, derive/lecture/arithmetic.py)."""
+import sympy as sp
+
 import kept_readings as kept
 
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.statements import statements
 from derive.lecture.units import plain_numbers
+from derive.lecture.worked_values import unchecked
 
 
 def test_a_unit_after_a_number_is_dropped_and_a_subscript_word_stays():
@@ -167,3 +170,31 @@ def test_a_scaled_value_off_by_a_slip_fails_and_one_off_in_its_last_digit_is_lef
                 if c.kind == "arithmetic"]
     assert not [c for c in kept.check_text(SPHERE + "$$I = \\frac{2}{5} M R^2 = \\frac{4}{10} M R^2$$\n")
                 if c.kind == "arithmetic"]
+
+
+def test_a_written_value_holds_when_rounded_or_cut_at_its_last_place_and_never_a_unit_above_it():
+    assert [v for v, _ in arithmetic(r"x = 2\pi(3) = 19")] == ["holds"]           # 18.85 rounded
+    assert [v for v, _ in arithmetic(r"x = 2\pi(3) = 18")] == ["holds"]           # 18.85 cut
+    assert [v for v, _ in arithmetic(r"T = \frac{1}{2}(2)(3)^2 = 9")] == ["holds"]
+    assert [v for v, _ in arithmetic(r"T = \frac{1}{2}(2)(3)^2 = 8")] != ["holds"]   # 9 is never written 8
+
+
+def test_whole_number_arithmetic_off_by_more_than_its_rounding_fails_and_a_trailing_zero_may_be_rounded():
+    assert [v for v, _ in arithmetic(r"T = \frac{1}{2}(2)(3)^2 = 8")] == ["fails"]
+    assert [v for v, _ in arithmetic(r"z = 7 \cdot 3 = 24")] == ["fails"]
+    assert [v for v, _ in arithmetic(r"x = (2)(970) = 2000")] == ["unchecked"]    # one significant figure
+    assert [v for v, _ in arithmetic(r"x = \frac{100}{3} \cdot 3 = 99")] == ["unchecked"]   # within 3 %
+
+
+def test_a_worked_number_in_whole_numbers_named_as_a_quantity_is_not_compared_with_its_formula():
+    claims = kept.check_text("A wheel of moment of inertia 2 spins at 3 rad/s; its energy is\n\n"
+                             "$$ T = \\frac{1}{2}(2)(3)^2 = 9 $$\n")
+    assert not any(c.verdict in ("typo", "fails") for c in claims)
+    assert any(c.kind == "arithmetic" and c.verdict == "holds" for c in claims)
+    assert any(c.verdict == "unchecked" and "a worked value" in c.why for c in claims)
+
+
+def test_a_relation_set_to_zero_is_no_worked_value():
+    x = sp.Symbol("x")
+    assert unchecked("T = 9", sp.Integer(9), [x], str) is not None
+    assert unchecked(r"\frac{d}{dt} p - q = 0", sp.Integer(0), [x], str) is None

@@ -3,7 +3,8 @@
 A worked example writes ``I_z = \\frac{1}{2} m R^2 = \\frac{1}{2}(2.50)(0.18)^2 = 0.04050`` (its units
 already dropped by `units.plain_numbers`). `arithmetic` judges each link between two neighbouring
 members of a chain that are plain numbers: ``=`` and ``≈`` hold when the two agree to the digits
-the text writes (one unit in the last place it prints, so a rounded or truncated value holds), fail
+the text writes (the value rounded or cut at the last place it prints: ``= 9`` holds for 9.4 and
+9.9, never for 10), fail
 when they differ by more than a few per cent, and are left unchecked in between. A chain may end by
 stating its value's sign (``= 2.4 - 4.2 = -1.8 < 0``): an inequality between two numbers holds when
 true and fails when they stand the other way round by more than the digits written. Two members in
@@ -79,6 +80,27 @@ def _last_place(piece: str) -> float:
 def _decimal_place(piece: str) -> float:
     """One unit in the last place of a written decimal (0 for an integer or an expression: exact)."""
     return _last_place(piece) if "." in piece else 0.0
+
+
+def _agree(a: float, b: float, place_a: float, place_b: float) -> bool:
+    """Whether two values agree to the digits written: one is the other rounded to its last place
+    (half a unit either side) or cut there (a truncated value is never larger in size)."""
+    slack = 1e-9 * max(abs(a), abs(b), 1.0)
+    if abs(a - b) <= (place_a + place_b) / 2 + slack:
+        return True
+    return any(p > 0 and x * y >= 0 and -slack <= abs(x) - abs(y) < p - slack
+               for x, y, p in ((a, b, place_b), (b, a, place_a)))
+
+
+_WHOLE = re.compile(r"\s*-?\d*[1-9]\s*")
+
+
+def _whole(left: str, right: str) -> bool:
+    """Whether a link is whole-number arithmetic: no decimal point on either side, and one side a
+    whole number not ending in zero. Such a value is exact or rounded from an exact one, so it is
+    off by more than its rounding only by a slip; a trailing zero may be a rounded place (2000 for
+    1940), and a decimal may carry an intermediate rounding."""
+    return "." not in left + right and bool(_WHOLE.fullmatch(left) or _WHOLE.fullmatch(right))
 
 
 def _given(piece: str, vocab, given: dict):
@@ -160,8 +182,9 @@ def _scaled(left: str, right: str, rel: str, vocab):
 def arithmetic(text: str, vocab=None, given: dict | None = None) -> list[tuple[str, str]]:
     """The verdicts (verdict, why) of the links between neighbouring numeric members of a chain.
 
-    ``a = b`` and ``a ≈ b`` hold when ``|a - b|`` is at most one unit in the last place printed on
-    either side (plus a relative 1e-9); they fail when the two differ by more than 3 % and by more
+    ``a = b`` and ``a ≈ b`` hold when one side is the other rounded to the last place it prints
+    (``|a - b|`` at most half a unit there on each side, plus a relative 1e-9) or cut there (``|b| ≤
+    |a| < |b| + 1`` unit, same sign); they fail when the two differ by more than 3 % and by more
     than three such units; in between the link is left unchecked. ``given`` (a symbol → the number
     the text set it to) works out a member in those symbols next to a plain number: such a link
     holds when the two agree to the digits written, and is not judged otherwise. ``<``, ``>``,
@@ -185,8 +208,7 @@ def arithmetic(text: str, vocab=None, given: dict | None = None) -> list[tuple[s
         if (a is None) != (b is None):
             worked = _given(pieces[k] if a is None else pieces[k + 1], vocab, given)
             number = b if a is None else a
-            if worked is not None and abs(worked - number) <= _last_place(pieces[k + 1 if a is None else k]) \
-                    + 1e-9 * max(abs(worked), abs(number), 1.0):
+            if worked is not None and _agree(worked, number, 0.0, _last_place(pieces[k + 1 if a is None else k])):
                 shown = f"{pieces[k].strip()} {rel} {pieces[k + 1].strip()}"
                 out.append(("holds", f"the arithmetic {shown}: {worked:.10g} with the values the text gave, "
                                      f"against {number:.10g}, to the digits written"))
@@ -196,12 +218,12 @@ def arithmetic(text: str, vocab=None, given: dict | None = None) -> list[tuple[s
             if scaled is not None:
                 out.append(scaled)
             continue
-        ulp = _last_place(pieces[k]) + _last_place(pieces[k + 1])
-        gap = abs(a - b)
+        place_a, place_b = _last_place(pieces[k]), _last_place(pieces[k + 1])
+        ulp, gap = place_a + place_b, abs(a - b)
         shown = f"{pieces[k].strip()} {rel} {pieces[k + 1].strip()}"
-        if gap <= ulp + 1e-9 * max(abs(a), abs(b), 1.0):
+        if _agree(a, b, place_a, place_b):
             out.append(("holds", f"the arithmetic {shown}: {a:.10g} against {b:.10g}, to the digits written"))
-        elif gap > 3 * ulp and gap > 0.03 * max(abs(a), abs(b)):
+        elif (gap > 3 * ulp or _whole(pieces[k], pieces[k + 1])) and gap > 0.03 * max(abs(a), abs(b)):
             out.append(("fails", f"the arithmetic {shown}: the left side is {a:.10g}, not {b:.10g}"))
         else:
             out.append(("unchecked", f"the arithmetic {shown}: {a:.10g} against {b:.10g}, closer than a slip "

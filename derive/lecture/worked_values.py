@@ -4,8 +4,10 @@ A display such as ``\\Omega_1 = 0.8976\\omega_1`` comes from a worked case: the 
 formula's value for moments of inertia (or lengths, masses) that the text gives in a table or in
 prose the reader does not read. Compared with the derived formula, whose symbols stay free, such a
 statement would be flagged at every sample point although it may well hold for the text's case; it
-is therefore left unchecked, naming the symbols whose values it needs. A statement with no decimal
-number, or whose derived side has no symbol beyond those it writes, is compared as before.
+is therefore left unchecked, naming the symbols whose values it needs. So is a worked number in
+whole numbers (``T = \\frac{1}{2}(2)(3)^2 = 9``): its written side has no symbol at all. A statement
+in symbols with no decimal number, or whose derived side has no symbol beyond those it writes, is
+compared as before.
 """
 from __future__ import annotations
 
@@ -27,9 +29,11 @@ def _free(e) -> set:
 
 
 def unchecked(piece: str, written, derived: list, tex) -> str | None:
-    """Why a statement with a decimal number is left unchecked: every derived form keeps symbols
-    (other than time) that the written side does not have; None when it is compared as usual."""
-    if not _DECIMAL.search(piece) or not derived:
+    """Why a statement with a decimal number, or a plain number other than 0 on its written side, is left
+    unchecked: every derived form keeps symbols (other than time) that the written side does not
+    have; None when it is compared as usual."""
+    number = not _free(written) and written != 0        # a relation set to zero is no worked value
+    if not derived or not (_DECIMAL.search(piece) or number):
         return None
     extra = set()
     for form in derived:
