@@ -211,13 +211,6 @@ SHORT = {
         "premultiplied by the rotation R (its \\times the matrix product) as identities of a rotation are read; "
         "its restatement in plain letters L = I omega sets the text's L, which no rotation enters, and "
         "L' = R I R^T omega' names L' and omega' (the new components) only in the prose",
-    ("certik-theoretical-physics-reference-rigid-body-rotation-inertia", "checked"):
-        "24 of 35: the chains across displays, the vectors in {\\bf r}, the integrals with rho(r) d^3 r, the "
-        "cylinder's and sphere's definite triple integrals that close a display whose next one goes on with '=' "
-        "(not a link between two integrals, but each against the value the chain reaches) and r . n and r^2 with "
-        "n and r written in brackets and the tensor 1 r^2 - r r (\\one beside the dyadic) are read; the moment "
-        "about an axis n . I . n, the integrals with the density put in, and the values in R and h after the sphere "
-        "redefines V are not",
     ("certik-theoretical-physics-reference-vector-rate-body-and-space-axes", "checked"):
         "1 of 6: the rates on space and body axes, (dG/dt)_space = (dG/dt)_body + omega x G in plain TeX's "
         "{d{\\bf G}\\over dt}, hold; the changes written as differentials with a frame's label ((dG)_space, "

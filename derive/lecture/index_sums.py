@@ -3,7 +3,7 @@
 Gives `components`, one expression in index notation at given values of its free indices, and the
 mixin `IndexSums` of `derive.lecture.notes_check.Checker`, whose `_index_identity` judges a chain
 in index notation that nothing else ties (and `_identity_whatever` a chain in the text's plain
-names). May import: the standard library, SymPy, :mod:`derive.lecture.latex`,
+names, `_links_whatever` the links of one that is not the same throughout). May import: the standard library, SymPy, :mod:`derive.lecture.latex`,
 :mod:`derive.lecture.unread_members`, :mod:`derive.lecture.zero_test`.
 
 A symbol of the text's with a subscript of the index letters i, j, k, l, m, n alone (``x_j``,
@@ -139,13 +139,28 @@ class IndexSums:
                          "for (each index written twice in a term summed over 1, 2, 3)")
         return True
 
+    def _links_whatever(self, line, piece, members, rels) -> bool:
+        """A chain of three or more members in names the text has not tied, not the same throughout:
+        its links that are identities whatever the names stand for hold, each said so; the others are
+        left unchecked. False when no link is such an identity."""
+        if len(members) < 3 or not set(rels) <= {"=", "≡"}:
+            return False
+        links = [k for k in range(len(members) - 1) if self._identity_whatever(members[k:k + 2])]
+        if not links:
+            return False
+        loose = sorted({self.tex(x) for k in links for m in members[k:k + 2]
+                        for x in getattr(self._resolve(m), "free_symbols", ()) if isinstance(x, lx.Generic)})
+        self._links_held(line, piece, members, links, f"identities whatever {', '.join(loose)} stand for (expand)"
+                         if loose else "identities (expand)")
+        return True
+
     def _links_held(self, line, piece, members, links, how) -> None:
         """The claims of a chain some of whose links (``k``: member k+1 = member k+2) hold ``how``."""
         said = lambda ks: " and ".join(f"{k + 1} = {k + 2}" for k in ks)  # noqa: E731
         left = [k for k in range(len(members) - 1) if k not in links]
-        self._add(line, piece, "identity", "holds", f"the chain's links {said(links)} (its members counted from the "
-                  f"left) are {how}")
-        self._add(line, piece, "unknown", "unchecked", f"the chain's links {said(left)} are not the same expression "
+        self._add(line, piece, "identity", "holds", f"the chain's links {said(links)} (its members counted from its "
+                  f"left side) are {how}")
+        self._add(line, piece, "unknown", "unchecked", f"the chain's links {said(left)} are not read as identities "
                   "whatever its names stand for: the text's words (a law, an approximation, a definition) may relate them")
 
     def _same_in_index(self, members) -> list | None:
