@@ -17,10 +17,10 @@ def test_a_statement_that_needs_the_unit_length_holds():
 
 
 def test_a_restated_turn_about_a_unit_vector_holds():
-    assert _verdicts("\\bm{y} = (\\bm{x}\\cdot\\bm{\\hat{n}})\\bm{\\hat{n}} + \\cos\\vartheta(\\bm{x} - (\\bm{x}\\cdot"
-                     "\\bm{\\hat{n}})\\bm{\\hat{n}}) + \\sin\\vartheta (\\bm{\\hat{n}}\\times\\bm{x})",
-                     "\\bm{y} = \\bm{x} \\cos\\vartheta + (1 - \\cos\\vartheta) (\\bm{\\hat{n}}\\cdot\\bm{x})\\bm{\\hat{n}}"
-                     " + (\\bm{\\hat{n}}\\times\\bm{x})\\sin\\vartheta")[-1] == "holds"
+    assert _verdicts("\\bm{y} = (\\bm{x}\\cdot\\bm{\\hat{n}})\\bm{\\hat{n}} + \\cos\\vartheta(\\bm{x}"
+                     " - (\\bm{x}\\cdot\\bm{\\hat{n}})\\bm{\\hat{n}}) + \\sin\\vartheta (\\bm{\\hat{n}}\\times\\bm{x})",
+                     "\\bm{y} = \\bm{x} \\cos\\vartheta + (1 - \\cos\\vartheta) (\\bm{\\hat{n}}\\cdot\\bm{x})"
+                     "\\bm{\\hat{n}} + (\\bm{\\hat{n}}\\times\\bm{x})\\sin\\vartheta")[-1] == "holds"
 
 
 def test_a_sign_slip_beside_a_unit_vector_is_flagged():

@@ -3,8 +3,9 @@
 Gives `components`, one expression in index notation at given values of its free indices, and the
 mixin `IndexSums` of `derive.lecture.notes_check.Checker`, whose `_index_identity` judges a chain
 in index notation that nothing else ties (and `_identity_whatever` a chain in the text's plain
-names, `_links_whatever` the links of one that is not the same throughout). May import: the standard library, SymPy, :mod:`derive.lecture.latex`,
-:mod:`derive.lecture.unread_members`, :mod:`derive.lecture.zero_test`.
+names, `_links_whatever` the links of one that is not the same throughout). May import: the
+standard library, SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.unread_members`,
+:mod:`derive.lecture.zero_test`.
 
 A symbol of the text's with a subscript of the index letters i, j, k, l, m, n alone (``x_j``,
 ``R_{ij}``, ``a'_i``) is a component; in each term of a sum a letter written once is a free
@@ -161,7 +162,8 @@ class IndexSums:
         self._add(line, piece, "identity", "holds", f"the chain's links {said(links)} (its members counted from its "
                   f"left side) are {how}")
         self._add(line, piece, "unknown", "unchecked", f"the chain's links {said(left)} are not read as identities "
-                  "whatever its names stand for: the text's words (a law, an approximation, a definition) may relate them")
+                  "whatever its names stand for: the text's words (a law, an approximation, a definition) may "
+                  "relate them")
 
     def _same_in_index(self, members) -> list | None:
         """The free indices (sorted) of members that are the same at every value of them; None when

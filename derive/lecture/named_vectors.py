@@ -48,9 +48,9 @@ _CONSTANT = ("m", "M")
 _BARE_SUM = re.compile(r"\\sum(?:\s*\\limits)?(?!\s*(?:\\limits\s*)?[_^A-Za-z])")
 _OVER_I = re.compile(r"_\s*\{?\s*i(?![A-Za-z])")
 PLAIN = "plain:"
-# the letters of the hatted unit vectors of a basis (î ĵ k̂, x̂ ŷ ẑ, Î Ĵ K̂, X̂ Ŷ Ẑ, ê), which are not unit vectors of their own
-_BASIS = frozenset("ijkxyzIJKXYZe") | {"imath", "jmath"}
 """The mark of a plain letter's definition (T = Σ ½ m 𝐯·𝐯) beside a bold one's, in `Definitions`."""
+_BASIS = frozenset("ijkxyzIJKXYZe") | {"imath", "jmath"}
+"""The letters of a basis's hatted unit vectors (î, x̂, Î, X̂, ê …): no directions of their own."""
 
 
 def prepare(text: str) -> str:
@@ -159,7 +159,8 @@ def _bold_beside(toks, a) -> bool:
 def unit(base: str, primes: int) -> sp.Matrix:
     """A bold hatted letter of no basis (𝐧̂): a unit vector of a direction of its own, so that a
     statement holding only because its length is 1 (𝐧̂·𝐧̂ = 1) holds."""
-    v = sp.Matrix([sp.Symbol(f"hat-{base}{chr(39) * primes}.{c}", real=True) for c in "xyz"])
+    name = "hat-" + base + "'" * primes
+    v = sp.Matrix([sp.Symbol(f"{name}.{c}", real=True) for c in "xyz"])
     return v / sp.sqrt(v.dot(v))
 
 
