@@ -16,9 +16,10 @@ inside a function or a denominator, every term of every member with the same fre
 member aside). Each member is then written out for every value of the free indices, each
 component the text's own symbol (``x_1``) or what its definitions make it (``R_{12}`` by the
 text's ``R_{ij} = …``); the chain holds when, at every value, the members are the same expression
-whatever the components stand for. A chain that does not has each link (two neighbouring members)
-that does so said to hold, and its other links left unchecked: its members may be related by what
-the text says in words (an approximation, a definition), never flagged here.
+whatever the components stand for. A chain that does not, its head in the text's own names, has
+each link (two neighbouring members) that does so said to hold, and its other links left unchecked:
+its members may be related by what the text says in words (an approximation, a definition), never
+flagged here.
 """
 from __future__ import annotations
 
@@ -134,26 +135,32 @@ class IndexSums:
                       f"for (each index written twice in a term summed over 1, 2, 3{over})")
             return True
         links = [k for k in range(len(members) - 1) if self._same_in_index(members[k:k + 2]) is not None]
-        if len(members) < 3 or not links:
+        if len(members) < 3 or not links or not self._own_head(members):
             return False
         self._links_held(line, piece, members, links, "identities in index notation whatever the components stand "
                          "for (each index written twice in a term summed over 1, 2, 3)")
         return True
 
     def _links_whatever(self, line, piece, members, rels) -> bool:
-        """A chain of three or more members in names the text has not tied, not the same throughout:
-        its links that are identities whatever the names stand for hold, each said so; the others are
-        left unchecked. False when no link is such an identity."""
+        """A chain of three or more members in names the text has not tied, not the same throughout,
+        whose head is in the text's own names and whose last links are identities whatever the names
+        stand for: those links hold, said so; the links before them (a law, a definition the text
+        states in words) are left unchecked. False otherwise."""
         if len(members) < 3 or not set(rels) <= {"=", "≡"}:
             return False
         links = [k for k in range(len(members) - 1) if self._identity_whatever(members[k:k + 2])]
-        if not links:
-            return False
+        if not links or links != list(range(links[0], len(members) - 1)) or not self._own_head(members):
+            return False            # an identity before a link it does not pass may lead into a slip
         loose = sorted({self.tex(x) for k in links for m in members[k:k + 2]
                         for x in getattr(self._resolve(m), "free_symbols", ()) if isinstance(x, lx.Generic)})
         self._links_held(line, piece, members, links, f"identities whatever {', '.join(loose)} stand for (expand)"
                          if loose else "identities (expand)")
         return True
+
+    def _own_head(self, members) -> bool:
+        """Whether a chain's head is in names of the text's own: a quantity the derivation knows (the
+        energy E) restated in another theory's names (ħ) is not the text's algebra to pass link by link."""
+        return any(isinstance(x, lx.Generic) for x in getattr(self._resolve(members[0]), "free_symbols", ()))
 
     def _links_held(self, line, piece, members, links, how) -> None:
         """The claims of a chain some of whose links (``k``: member k+1 = member k+2) hold ``how``."""
