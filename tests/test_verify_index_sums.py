@@ -1,7 +1,7 @@
 """Index notation written out: a chain whose members are the same at every value of its free indices,
 each index written twice in a term summed over 1, 2, 3 (``\\delta_{ij}`` Kronecker's delta,
 ``\\varepsilon_{ijk}`` the Levi-Civita symbol, a component the text defines over generic indices put
-in), holds; a chain that is not the same is left unchecked, never flagged."""
+in), holds; a chain that is not the same has its links that are held and the others left unchecked, never flagged."""
 import kept_readings as kept
 
 HEAD = ("---\nconvention: z-y-z\n---\n# Rotations in index notation\n\n"
@@ -44,3 +44,20 @@ def test_a_chain_with_unlike_free_indices_or_a_thrice_written_index_is_not_read_
 def test_an_instance_of_a_definition_over_generic_indices_takes_its_indices():
     claims = _claims("K_{jh} \\equiv I_j - I_h", "K_{31} + K_{12} = I_3 - I_2")
     assert _verdicts(claims, "K_{31} + K_{12}") == ["holds"]
+
+
+def test_a_chain_whose_members_differ_has_its_links_that_are_identities_held_and_the_others_left():
+    claims = _claims("y_i = x_i\\cos\\vartheta + (1 - \\cos\\vartheta) n_jx_jn_i"
+                     " + \\varepsilon_{ikj}n_kx_j\\sin\\vartheta",
+                     "R_{ij} = \\delta_{ij} \\cos\\vartheta + (1 - \\cos\\vartheta)n_in_j"
+                     " - \\varepsilon_{ijk}n_k\\sin\\vartheta",
+                     "y_i = R_{ij}x_j = \\delta_{ij}x_j - \\varepsilon_{ijk}n_kx_j\\delta\\vartheta"
+                     " = x_i + \\varepsilon_{ikj}n_kx_j\\delta\\vartheta")
+    mine = [c for c in claims if c.latex.startswith("y_i = R_{ij}")]
+    assert [c.verdict for c in mine] == ["holds", "unchecked"]
+    assert "links 1 = 2 and 3 = 4" in mine[0].why and "links 2 = 3" in mine[1].why
+
+
+def test_a_chain_with_a_wrong_link_is_never_flagged_and_its_identities_still_held():
+    claims = _claims("\\delta_{ij}b_{ij} = b_{ii} = b_{11} + b_{22}")
+    assert _verdicts(claims, "\\delta_{ij}b_{ij}") == ["holds", "unchecked"]

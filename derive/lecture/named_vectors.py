@@ -10,6 +10,8 @@ its own:
 * **named vectors.** A bold or arrowed letter with its subscript and primes (𝐌_O, 𝐫', 𝐕, 𝛚) is a
   vector of components (M_O,x, M_O,y, M_O,z); a plain letter written beside the same bold one
   (A beside 𝐀) is its magnitude, any other plain letter a scalar of its own.
+* **unit vectors.** A bold hatted letter of no basis (𝐧̂; not î, ĵ, k̂, x̂, ŷ, ẑ, ê) is a unit vector
+  of a direction of its own, its components divided by its length.
 * **points.** A position written from one named point to another, 𝐫_{A/B}, is 𝐩_A − 𝐩_B (each
   point its own place), so 𝐫_{A/B} = −𝐫_{B/A} and 𝐫_{A/C} = 𝐫_{A/B} + 𝐫_{B/C}.
 * **sums.** Σ over an index is read for two generic terms: a letter with that index (𝐅_i, m_α,
@@ -20,7 +22,7 @@ its own:
   one made about a point (𝐌_O = Σ 𝐫_{i/O} × 𝐅_i) is read about any other point too (𝐌_{O'}).
 
 Takes: a statement's LaTeX. Gives: `read`, its reading under `Named` (`lx.NotRead` when it has
-a symbol this model does not know: a unit vector, a tensor, an integral), and `Definitions`.
+a symbol this model does not know: a basis's unit vector, a tensor, an integral), and `Definitions`.
 
 May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`, SymPy.
 """
@@ -47,6 +49,8 @@ _BARE_SUM = re.compile(r"\\sum(?:\s*\\limits)?(?!\s*(?:\\limits\s*)?[_^A-Za-z])"
 _OVER_I = re.compile(r"_\s*\{?\s*i(?![A-Za-z])")
 PLAIN = "plain:"
 """The mark of a plain letter's definition (T = Σ ½ m 𝐯·𝐯) beside a bold one's, in `Definitions`."""
+_BASIS = frozenset("ijkxyzIJKXYZe") | {"imath", "jmath"}
+"""The letters of a basis's hatted unit vectors (î, x̂, Î, X̂, ê …): no directions of their own."""
 
 
 def prepare(text: str) -> str:
@@ -93,6 +97,9 @@ class Named:
 
     # the values of symbols
     def atom(self, p, a, env, tok):
+        if a.hat and a.bold and len(a.base) == 1 and a.base not in _BASIS and \
+                not (a.sub or a.sup or a.dots or a.tilde or a.mark):
+            return unit(a.base, a.primes)
         if a.hat or a.tilde or a.sup or a.mark or a.base in ("d", "t", vp.INTEGRAL) or not a.base:
             return None                         # unit vectors, other families' symbols, a differential
         bold = a.bold or a.text.startswith("\\vec")
@@ -147,6 +154,14 @@ def _bold_beside(toks, a) -> bool:
     """Whether the statement writes the same letter bold (A beside 𝐀: its magnitude)."""
     return any(t.kind == "atom" and (t.value.bold or t.value.text.startswith("\\vec")) and t.value.base == a.base
                and t.value.sub == a.sub and t.value.primes == a.primes and not t.value.hat for t in toks)
+
+
+def unit(base: str, primes: int) -> sp.Matrix:
+    """A bold hatted letter of no basis (𝐧̂): a unit vector of a direction of its own, so that a
+    statement holding only because its length is 1 (𝐧̂·𝐧̂ = 1) holds."""
+    name = "hat-" + base + "'" * primes
+    v = sp.Matrix([sp.Symbol(f"{name}.{c}", real=True) for c in "xyz"])
+    return v / sp.sqrt(v.dot(v))
 
 
 def rate(e):

@@ -289,7 +289,7 @@ class TextNames(UnreadMembers):
         if set(rels) <= {"=", "≡"} and self._identity_whatever(members):
             self._add(line, piece, "identity", "holds", f"an identity whatever {names} stand for (expand)")
             return True
-        if self._index_identity(line, piece, members, rels):
+        if self._index_identity(line, piece, members, rels) or self._links_whatever(line, piece, members, rels):
             return True
         self._add(line, piece, "unknown", "unchecked",
                   f"relates {names}, which the text has not tied to the derivation")
