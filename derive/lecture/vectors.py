@@ -83,7 +83,17 @@ def read(text: str, vocab, derivation, sticky: str | None = None) -> Reading:
         model.matrix_products = True     # a plain I (a text's matrix, not the lecture's Ï·) acts on 𝛚 by juxtaposition
     if _ROW_VECTOR.search(text) or _BRACKET_TENSOR.search(text):
         model.matrix_products = True     # 𝛚ᵀ 𝐈 𝛚, [𝐈]𝛚: a row or a bracketed tensor is matrix notation, 𝐈 acting by juxtaposition
+    if _bold_tensor_on_omega(toks):
+        model.matrix_products = True     # 𝐈𝛚 written side by side: the text sets its tensor on 𝛚 as a matrix on a column
     return vp.read(toks, text, vocab, model, name)
+
+
+def _bold_tensor_on_omega(toks) -> bool:
+    """A bold I set right before a bold or arrowed 𝛚 (``\\mathbf{I} \\boldsymbol{\\omega}``): the inertia tensor
+    acting on the angular velocity by juxtaposition, as matrix notation writes it."""
+    return any(t.kind == "atom" and t.value.base == "I" and t.value.bold and not (t.value.sup or t.value.dots)
+               and u.kind == "atom" and u.value.base == "omega" and (u.value.bold or u.value.text.startswith("\\vec"))
+               and not u.value.dots for t, u in zip(toks, toks[1:]))
 
 
 def _zero(a, b, seed) -> tuple[bool, str]:
