@@ -20,7 +20,7 @@ What is normalised:
   are decoded.
 * **Not mathematics**: ``\\tag``, ``\\notag``, ``\\nonumber``, ``\\label``, ``\\displaystyle``,
   ``\\hspace``, ``\\phantom``, ``\\noalign``, a kern by a length (``\\mkern-1.5mu``), comments,
-  ``\\left.`` and ``\\right.`` are dropped.
+  a font size switch (``\\footnotesize{…}``, ``\\small``), ``\\left.`` and ``\\right.`` are dropped.
 * **Wrappers**: ``\\boxed{X}``, ``\\ensuremath``, ``\\mathcal``/``\\mathscr`` (their letter),
   ``\\pmb``/``\\vb``/``\\bm`` (bold), ``\\vu`` (a bold hat), ``\\operatorname{sin}`` (the
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
@@ -47,7 +47,7 @@ from pylatexenc.macrospec import MacroSpec
 
 from derive.lecture import bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
-from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
+from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, FONT_SIZES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -171,7 +171,8 @@ definitions_removed = texmacros.definitions_removed
 _DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle": "", "textstyle": "",
          "scriptstyle": "", "hspace": "*{", "vspace": "*{", "phantom": "{", "hphantom": "{",
          "vphantom": "{", "mathstrut": "", "strut": "", "eqref": "{", "ref": "{", "allowbreak": "",
-         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{"}
+         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{",
+         **dict.fromkeys(FONT_SIZES, "")}
 _WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
          "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
          "cancel": "", "bcancel": "", "xcancel": "", "cancelto": None, "bbox": None}
