@@ -3,6 +3,7 @@ formula, a column of components in angle brackets, a unit in brackets after a va
 import pytest
 
 import kept_readings as kept
+from derive.lecture import angle_columns
 
 
 def verdicts(text):
@@ -18,3 +19,26 @@ def _energy(half_3):
 def test_a_font_size_switch_only_sets_how_big_the_formula_prints(sized):
     assert verdicts(f"# Energy\n\n$$T = {sized.format(_energy('2'))}$$\n") == [(3, "holds")]
     assert verdicts(f"# Energy\n\n$$T = {sized.format(_energy('3'))}$$\n") == [(3, "fails")]
+
+
+def _column(*entries, left="\\left<", right="\\right>"):
+    return left + "\\begin{array}{c} " + " \\\\ ".join(entries) + " \\end{array}" + right
+
+
+_TURN = ("\\left[\\begin{array}{ccc} \\cos\\theta & -\\sin\\theta & 0\\\\ \\sin\\theta & \\cos\\theta & 0\\\\ "
+         "0 & 0 & 1 \\end{array}\\right]")
+
+
+@pytest.mark.parametrize("left, right", [("\\left<", "\\right>"), ("\\left\\langle", "\\right\\rangle"),
+                                         ("\\langle", "\\rangle")])
+def test_a_column_in_angle_brackets_is_a_column_of_components(left, right):
+    turned = (_TURN + _column("x", "y", "0", left=left, right=right) + " = "
+              + _column("\\cos\\theta\\, x - \\sin\\theta\\, y", "\\sin\\theta\\, x + \\cos\\theta\\, y", "0",
+                        left=left, right=right))
+    text = f"\\documentclass{{article}}\n\\begin{{document}}\nTurned:\n$$ {turned} $$\n\\end{{document}}\n"
+    assert verdicts(text) == [(4, "holds")]
+
+
+def test_angle_brackets_around_anything_but_one_matrix_are_left_as_written():
+    written = "\\langle u, v\\rangle + x < y + \\left< a \\right> + \\langle\\begin{pmatrix} 1 \\end{pmatrix}\\rangle"
+    assert angle_columns.squared(written) == written
