@@ -42,3 +42,12 @@ def test_a_column_in_angle_brackets_is_a_column_of_components(left, right):
 def test_angle_brackets_around_anything_but_one_matrix_are_left_as_written():
     written = "\\langle u, v\\rangle + x < y + \\left< a \\right> + \\langle\\begin{pmatrix} 1 \\end{pmatrix}\\rangle"
     assert angle_columns.squared(written) == written
+
+
+@pytest.mark.parametrize("third, verdicts_read", [("I_3", {"holds"}), ("2 I_3", {"typo", "fails"})])
+def test_a_long_sum_carried_to_an_indented_row_after_right_dot_is_one_statement(third, verdicts_read):
+    text = ("# Energy\n\n\\begin{equation*}\n  \\begin{aligned}\n"
+            "    T &= \\frac{1}{2}\\left(I_1 \\omega_1^2 + I_2 \\omega_2^2\\right. \\\\\n"
+            f"      & \\ \\ \\ \\ \\left. + {third} \\omega_3^2\\right)\n  \\end{{aligned}}\n\\end{{equation*}}\n")
+    [(line, verdict)] = verdicts(text)
+    assert line == 3 and verdict in verdicts_read
