@@ -51,3 +51,17 @@ def test_a_long_sum_carried_to_an_indented_row_after_right_dot_is_one_statement(
             f"      & \\ \\ \\ \\ \\left. + {third} \\omega_3^2\\right)\n  \\end{{aligned}}\n\\end{{equation*}}\n")
     [(line, verdict)] = verdicts(text)
     assert line == 3 and verdict in verdicts_read
+
+
+def _energy_of_a_column(energy):
+    return ("\\documentclass{article}\n\\begin{document}\nThe velocity of the centre:\n"
+            "$$ v = \\left[\\begin{array}{c} s\\,\\cos\\psi\\,\\sin\\theta\\,\\dot{\\psi} \\\\ "
+            "s\\,\\sin\\psi\\,\\sin\\theta\\,\\dot{\\psi} \\\\ 0 \\end{array}\\right] $$\n"
+            f"Its kinetic energy:\n$$ T_\\text{{trans}} = \\frac{{1}}{{2}} M \\left( v \\cdot v \\right) = {energy} $$\n"
+            "\\end{document}\n")
+
+
+def test_a_dot_between_two_plain_names_set_to_columns_is_their_dot_product():
+    assert verdicts(_energy_of_a_column("\\frac{1}{2} M s^2 \\sin^2\\theta\\, \\dot{\\psi}^2")) == \
+        [(4, "unchecked"), (6, "holds")]
+    assert verdicts(_energy_of_a_column("M s^2 \\sin^2\\theta\\, \\dot{\\psi}^2"))[1] != (6, "holds")
