@@ -65,3 +65,25 @@ def test_a_dot_between_two_plain_names_set_to_columns_is_their_dot_product():
     assert verdicts(_energy_of_a_column("\\frac{1}{2} M s^2 \\sin^2\\theta\\, \\dot{\\psi}^2")) == \
         [(4, "unchecked"), (6, "holds")]
     assert verdicts(_energy_of_a_column("M s^2 \\sin^2\\theta\\, \\dot{\\psi}^2"))[1] != (6, "holds")
+
+
+def _cart(energy):
+    return ("# Energy\n\nA cart of 2.5 kg at 4 m/s:\n\n$$ K = \\frac{1}{2}\\,(2.5)\\,(4.0)^2 \\ \\ "
+            "\\left[\\text{kg}\\left(\\frac{\\text{m}}{\\text{s}}\\right)^2\\right] = " + energy + " \\ \\ \\left[ J \\right] $$\n")
+
+
+def test_coherent_units_in_brackets_after_a_value_are_no_factor():
+    assert {v for _, v in verdicts(_cart("20.0"))} == {"holds"}
+    assert "fails" in {v for _, v in verdicts(_cart("24.0"))}
+
+
+def test_a_rate_in_revolutions_in_brackets_is_not_read_as_the_number_in_radians():
+    text = ("# Rate\n\n$$ \\omega = 5 \\ \\ \\left[\\frac{\\text{rev}}{\\text{s}} \\right] = 10 \\pi \\ \\ "
+            "\\left[\\frac{\\text{rad}}{\\text{s}} \\right] $$\n")
+    assert {v for _, v in verdicts(text)} == {"unchecked"}
+
+
+def test_a_chain_row_that_repeats_the_value_before_it_is_no_copied_row():
+    text = ("# Energy\n\nA value written twice:\n\n\\begin{equation*}\n  \\begin{aligned}\n    E &= \\frac{1}{2} m v^2 \\\\\n"
+            "      &= 0.245\\,m\\,\\pi^2 \\\\\n      &= 0.245\\,m\\,\\pi^2\n  \\end{aligned}\n\\end{equation*}\n")
+    assert {v for _, v in verdicts(text)} <= {"holds", "unchecked"}
