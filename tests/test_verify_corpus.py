@@ -305,6 +305,17 @@ SHORT = {
         "before and after (v_rel^-, v_rel^+) are read as names, but "
         "the inverse tensors I_a^{-1} acting on vectors, and the ties the prose sets (v^+ = v^- + dv, the law of "
         "restitution, n . n = 1), are not",
+    ("jhu-intermediate-dynamics-zxz-zyz-euler-rates-football-kinetic-energy-hw", "checked"):
+        "homework solutions: its rotation matrices and the energy 312.5 m are read, but the angular velocities as "
+        "vect(R-dot R^T) and vect(R^T R-dot) (the vector of a skew matrix), the energies as omega_b^T I_b omega_b "
+        "(a one-by-one matrix set equal to a scalar) and a rate in revolutions are not",
+    ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "checked"):
+        "the same homework's Z-X-Z disk on a turning elbow: its rotation matrix, the centre's velocity and "
+        "T_trans = (1/2) M (v . v) are read, but the body angular velocity as vect(R^T R-dot), the velocity as the "
+        "rate of the position (said in words) and the energies as omega_b^T I_b omega_b (a one-by-one matrix) are not",
+    ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "found"):
+        "its slips, the answer's spin energy (1/2) I_z (phi-dot + cos(theta) psi-dot) without its square (twice), "
+        "sum energies the reader does not read",
 }
 
 FLOOR = {"checked": 913, "slips_flagged": 108, "holds_flagged": 0}

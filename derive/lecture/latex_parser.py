@@ -145,7 +145,7 @@ class _Parser:
 
     def dotted(self, a, b):
         dot = body_dot.dot(a, b)
-        return dot if dot is not None else named_dot(a, b, self.vocab, _mul)
+        return dot if dot is not None else named_dot(a, b, _mul)
 
     def juxtaposed(self, a, b):
         return _mul(a, b)

@@ -56,3 +56,6 @@ EQUATION_LABEL = r"\{\{\s*numeq\s*\}\}(?:\{[^{}]*\})?|\(\\#eq:[^()\s]*\)"
 SIGN_ENDS = (r"\s*(?:$|[-+=<>)\]}|,.;&_]|\\(?:cdot|times|right|[bB]igr?|quad|qquad|[lg]eq?|neq|approx|[,;:!\\)\]])(?![A-Za-z]))")
 """What may follow a superscript sign that closes a name (𝐯⁺ ·, v⁻ =): never a letter, a digit or a
 group, which would make it the sign of an exponent written without braces (x^-1)."""
+
+FONT_SIZES = ("tiny", "scriptsize", "footnotesize", "small", "normalsize", "large", "Large", "LARGE", "huge", "Huge")
+"""LaTeX's font size switches: ``\\footnotesize{…}`` around a wide matrix only sets how big it prints."""

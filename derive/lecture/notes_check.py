@@ -230,7 +230,8 @@ class Checker(ReadingRules):
         for k, piece in enumerate(pieces):
             if k == len(pieces) - 1 > 0 and statements(latex.rsplit("\\Rightarrow", 1)[-1]) == [piece]:
                 mark = len(self.display_settings)     # what is set from here is the display's conclusion
-            dup = piece in seen and len(pieces) > 2
+            # a row going on with "=" that repeats one before restates the chain's value, no copied row
+            dup = piece in seen and len(pieces) > 2 and not re.match(r"\s*(=|\\approx|\\equiv)", piece)
             seen.append(piece)
             if piece in relabelled:
                 self._add(item.line, piece, "setting", "typo", "repeats the label of an earlier row of this block with "

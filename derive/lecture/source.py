@@ -4,7 +4,7 @@ Takes: the text of a notes file, or one formula of it. Gives: the text with what
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
 May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
-`derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
+`derive.lecture.angle_columns`, `derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -20,7 +20,7 @@ What is normalised:
   are decoded.
 * **Not mathematics**: ``\\tag``, ``\\notag``, ``\\nonumber``, ``\\label``, ``\\displaystyle``,
   ``\\hspace``, ``\\phantom``, ``\\noalign``, a kern by a length (``\\mkern-1.5mu``), comments,
-  ``\\left.`` and ``\\right.`` are dropped.
+  a font size switch (``\\footnotesize{…}``, ``\\small``), ``\\left.`` and ``\\right.`` are dropped.
 * **Wrappers**: ``\\boxed{X}``, ``\\ensuremath``, ``\\mathcal``/``\\mathscr`` (their letter),
   ``\\pmb``/``\\vb``/``\\bm`` (bold), ``\\vu`` (a bold hat), ``\\operatorname{sin}`` (the
   function), ``\\dfrac``/``\\tfrac`` (``\\frac``), ``\\qty``, ``\\abs``, ``\\norm``,
@@ -45,9 +45,9 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
+from derive.lecture import angle_columns, bracket_cross, differentials, imaginary_unit, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
-from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
+from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, FONT_SIZES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
 
 # --- characters --------------------------------------------------------------------------------
@@ -171,7 +171,8 @@ definitions_removed = texmacros.definitions_removed
 _DROP = {"tag": "*{", "label": "{", "notag": "", "nonumber": "", "displaystyle": "", "textstyle": "",
          "scriptstyle": "", "hspace": "*{", "vspace": "*{", "phantom": "{", "hphantom": "{",
          "vphantom": "{", "mathstrut": "", "strut": "", "eqref": "{", "ref": "{", "allowbreak": "",
-         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{"}
+         "medskip": "", "smallskip": "", "bigskip": "", "noindent": "", "hfill": "", "break": "", "noalign": "{",
+         **dict.fromkeys(FONT_SIZES, "")}
 _WRAP = {"boxed": "", "ensuremath": "", "mathcal": "", "mathscr": "", "mathfrak": "", "mathsf": "",
          "mathnormal": "", "mathtt": "", "underline": "", "overline": "", "color": None, "textcolor": None,
          "cancel": "", "bcancel": "", "xcancel": "", "cancelto": None, "bbox": None}
@@ -563,7 +564,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
 def _normalized(latex: str, user: tuple) -> str:
     """`normalize`, memoised: the notes, the names the prose gives and the hat maps each normalise
     the text's formulas."""
-    latex = units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(re.sub(EQUATION_LABEL, " ", characters(latex))))))
+    latex = angle_columns.squared(units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(re.sub(EQUATION_LABEL, " ", characters(latex)))))))
     user = dict(user)
     try:
         latex = texmacros.expand(latex, user)

@@ -267,7 +267,8 @@ def _statements(latex: str) -> tuple[str, ...]:
             continue
         if joined and re.search(r"[+\-]\s*$", joined[-1]):
             joined[-1] = joined[-1] + " " + row
-        elif joined and re.match(r"[+\-]", row) and not RELATION.search(row) and not joined[-1].rstrip().endswith("."):
+        elif joined and re.match(r"[+\-]", _INDENT.sub("", row)) and not RELATION.search(row) \
+                and not joined[-1].rstrip().endswith("."):
             joined[-1] = joined[-1] + " " + row      # "&+ \frac{1}{2}I_2 …": a long right side carried over a row
         elif joined and re.search(r"(?<![<>!\\])=\s*$", joined[-1]) and row.startswith("="):
             joined[-1] = joined[-1] + " " + row[1:]      # "A = B =" then "= C": one chain, the = said twice
@@ -299,6 +300,8 @@ _EQUATION_NUMBER = re.compile(r"(?:" + QUAD + r"|~)+\s*(?:Eqs?|Eqn|Equation)\.?\
 _AND = re.compile(SPACING + r"\\(?:text|mbox|textrm|mathrm)\s*\{\s*and\s*\}" + SPACING)
 
 
+# a long sum's next row is indented with spaces and may open with the invisible \left. that answers the row before's \right.
+_INDENT = re.compile(r"^(?:" + ONE_SPACING + r"|\s|\\left\s*\.)+")
 _OPEN_END = re.compile(r"(?:(?<![<>!\\])=|\+|-|\\times|\\cdot)$")
 
 

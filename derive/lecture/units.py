@@ -8,13 +8,14 @@ digit, so ``r_{\\text{cm}}`` and words such as ``\\text{constante}`` stay as the
 point, which math mode does not set) is 0.8976. A unit typed in plain italic letters after a tie
 ``~`` after a number or a closed group, at the end of a member, ``m=0.1~kg``, ``\\frac{mgd}{I_z\\dot{\\psi}}~\\frac{rad}{s}``, ``\\frac{2\\pi}{\\dot{\\phi}}~s``
 (as notebooks write them), is dropped too: the tie sets a unit apart from the formula, which a product
-of symbols never needs. Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` only.
+of symbols never needs. Coherent SI units in square brackets spaced off after a value and closing a member,
+``312.5\\,m \\ \\ \\left[\\text{J}\\right]``, are dropped as well (not revolutions or degrees). Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` only.
 """
 from __future__ import annotations
 
 import re
 
-from derive.lecture.latex_spaces import ONE_SPACE, QUAD, SPACE
+from derive.lecture.latex_spaces import ONE_SPACE, QUAD, SPACE, SPACE_SYMBOL, TIE
 
 _UNIT = r"(?:kg|m|cm|mm|km|s|ms|min|N|J|kJ|Pa|rad|RPM|rpm|rev|Hz|deg)"
 _UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|" + ONE_SPACE + r")\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
@@ -27,6 +28,25 @@ _TIED_UNIT = re.compile(r"(?<=[\d}])\s*~\s*(?:" + _PLAIN_UNIT + r"|\\[dt]?frac\s
 """A unit in plain letters after a tie that follows a number or a closing brace, closing a member
 (a tag or a label after it closes it too): ``0.1~kg``, ``}~\\frac{rad}{s}`` (or ``\\dfrac``), ``}~s``
 (``a~s`` stays a product)."""
+_SI = r"(?:kg|m|s|N|J|W|Pa|rad)"
+_SI_NAME = r"(?:\\(?:text|mathrm|mbox|textrm)\s*\{\s*" + _SI + r"\s*\}|" + _SI + r"(?![A-Za-z]))"
+_POWER = r"(?:\s*\^\s*(?:\{\s*-?\d+\s*\}|-?\d))?"
+
+
+def _units_of(atom: str) -> str:
+    """Units built of ``atom`` joined by spaces, ``/`` or ``\\cdot``."""
+    return atom + r"(?:" + SPACE + r"(?:/|\\cdot)?" + SPACE + atom + r")*"
+
+
+_IN_FRACTION = r"(?:" + _SI_NAME + _POWER + r"|\\[dt]?frac\s*\{\s*" + _units_of(_SI_NAME + _POWER) + r"\s*\}\s*\{\s*" \
+    + _units_of(_SI_NAME + _POWER) + r"\s*\})"
+_IN_BRACKET = r"(?:" + _IN_FRACTION + r"|(?:\\left\s*)?\(\s*" + _units_of(_IN_FRACTION) + r"\s*(?:\\right\s*)?\)" + _POWER + ")"
+_BRACKETED_UNIT = re.compile(r"(?:" + SPACE_SYMBOL + "|" + QUAD + "|" + TIE + r")+\s*(?:\\left\s*)?\[\s*" + _units_of(_IN_BRACKET)
+                             + r"\s*(?:\\right\s*)?\](?=\s*(?:$|[=,;&]|\\\\|" + QUAD + "))")
+"""Coherent SI units in square brackets, spaced off after a value and closing a member, as engineering
+solutions label a result, ``312.5\\,m \\ \\ \\left[\\text{kg}\\left(\\frac{\\text{m}}{\\text{s}}\\right)^2\\right]``,
+``\\left[ J \\right]``: a value in such units is the number written (rev, rpm and degrees are left, since
+a value in them is not the number a formula in radians and seconds takes)."""
 _THOUSANDS = re.compile(r"(?<=\d)\{,\}(?=\d{3}(?!\d))")
 _NUMBER_TIMES = re.compile(r"(?<=\d)\s*\\times\s*(?=\d)")
 _SPACED_POINT = re.compile(r"(?<=\d)\s+(?=\.\d)")
@@ -41,5 +61,5 @@ def plain_numbers(latex: str) -> str:
     latex = _SPACED_POINT.sub("", _THOUSANDS.sub("", latex))
     latex = _EXP_I.sub(r"\1\\sqrt{-1}", latex)
     latex = _UNITS.sub(" ", latex)
-    latex = _TIED_UNIT.sub(" ", latex)
+    latex = _TIED_UNIT.sub(" ", _BRACKETED_UNIT.sub(" ", latex))
     return _NUMBER_TIMES.sub(r" \\cdot ", latex)

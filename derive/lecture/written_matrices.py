@@ -169,10 +169,10 @@ def _named_column(x) -> bool:
     return isinstance(x, sp.Symbol) and x.is_commutative is False
 
 
-def named_dot(a, b, vocab, otherwise):
-    """a · b: a `Dot` when both are bold names the text set to written matrices, else ``otherwise(a, b)``."""
-    bold = lambda x: _named_column(x) and getattr(vocab.generic.get(x), "bold", False)  # noqa: E731
-    return Dot(a, b) if bold(a) and bold(b) else otherwise(a, b)
+def named_dot(a, b, otherwise):
+    """a · b: a `Dot` when both are names the text set to written matrices, bold or plain (a homework's
+    ``v \\cdot v`` of its column v), else ``otherwise(a, b)``."""
+    return Dot(a, b) if _named_column(a) and _named_column(b) else otherwise(a, b)
 
 
 def squared_column(base, exp, vocab):
