@@ -62,8 +62,6 @@ MISSES: dict[str, str] = {
     "medium space between factors": _MEDIUM_SPACE_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
-    "plain brackets for left-right": "an encyclopaedia's 1-2-3 angle rates and the spacecraft notes' energy with "
-                                     "plain brackets where the text sizes them (three displays and a slip, one display)",
     "left-right for plain brackets": "a thread's skew-matrix rate with its plain brackets sized",
     "accent argument unbraced": "the tennis racket thread's stability conditions and a slip of the Chinese notes on "
                                 "the kinematic equations with an accent's argument unbraced",
