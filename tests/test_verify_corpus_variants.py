@@ -66,7 +66,6 @@ MISSES: dict[str, str] = {
     "accent argument unbraced": "the tennis racket thread's stability conditions and a slip of the Chinese notes on "
                                 "the kinematic equations with an accent's argument unbraced",
     "thin space between factors": _THIN_SPACE_MISSED, "negative thin space between factors": _THIN_SPACE_MISSED,
-    "left-right for every round bracket": "the Edinburgh rotations notes' slip with every round bracket sized",
 }
 """Kinds that still leave some displays of the corpus unchecked (or, for the two that change what a
 display says, flag some): what the reader misses."""
