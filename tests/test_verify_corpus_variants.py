@@ -62,7 +62,6 @@ MISSES: dict[str, str] = {
     "medium space between factors": _MEDIUM_SPACE_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
-    "left-right for plain brackets": "a thread's skew-matrix rate with its plain brackets sized",
     "accent argument unbraced": "the tennis racket thread's stability conditions and a slip of the Chinese notes on "
                                 "the kinematic equations with an accent's argument unbraced",
     "thin space between factors": _THIN_SPACE_MISSED, "negative thin space between factors": _THIN_SPACE_MISSED,

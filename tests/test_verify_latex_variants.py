@@ -109,6 +109,31 @@ def _left_right_everywhere(latex: str) -> str:
     return latex.replace("(", "\\left(").replace(")", "\\right)")
 
 
+# A round bracket not a function's argument, nor escaped or a script's (``f(t)``, ``\\(``, ``R^T(t)`` stay plain).
+_SIZABLE = re.compile(r"(?<![A-Za-z\\}_0-9'])\($")
+
+
+def _left_right_for_plain(latex: str) -> str:
+    """Each round bracket `_SIZABLE` sized with ``\\left``/``\\right`` at the bracket that closes it, nested
+    brackets counted (``(\\dot{R}R^T(t))^T`` is ``\\left(\\dot{R}R^T(t)\\right)^T``: sizing the first ``)``
+    instead would pair the brackets otherwise, another formula); a bracket over lines stays, and a display
+    whose brackets do not pair stays as written."""
+    opened, pairs = [], []
+    for i, ch in enumerate(latex):
+        if ch == "(":
+            opened.append(i)
+        elif ch == ")":
+            if not opened:
+                return latex
+            start = opened.pop()
+            if _SIZABLE.search(latex[:start + 1]) and "\n" not in latex[start:i]:
+                pairs.append((start, i))
+    if opened:
+        return latex
+    sized = {i: "\\left(" for i, _ in pairs} | {i: "\\right)" for _, i in pairs}
+    return "".join(sized.get(i, ch) for i, ch in enumerate(latex))
+
+
 _SIZING = re.compile(r"\\(left|right)(?![A-Za-z])")
 
 
@@ -152,7 +177,7 @@ VARIANTS = {
     # brackets
     "plain brackets for left-right": (ALL_NOTES, _sub(r"\\(?:left|right)(?=[()\[\]])", "")),
     "bigl-bigr for left-right": (ALL_NOTES, _resized("\\bigl", "\\bigr")),
-    "left-right for plain brackets": (ALL_NOTES, _sub(r"(?<![A-Za-z\\}_0-9'])\((.*?)\)", r"\\left(\1\\right)")),
+    "left-right for plain brackets": (ALL_NOTES, _left_right_for_plain),
     # spacing and products
     "thin space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\, ")),
     "medium space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\; ")),
@@ -290,3 +315,10 @@ def test_the_sized_brackets_rewrite_sizes_a_left_and_its_right_together():
 def test_the_unbraced_accent_rewrite_spaces_its_letter_off_a_letter_after_it():
     change = VARIANTS["accent argument unbraced"][1]
     assert change("\\dot{\\phi}\\dot{\\psi}I_z + \\hat{\\omega}^B") == "\\dot\\phi\\dot\\psi I_z + \\hat\\omega^B"
+
+
+def test_the_sized_brackets_rewrite_sizes_a_bracket_at_the_one_that_closes_it():
+    change = VARIANTS["left-right for plain brackets"][1]
+    assert change("\\dot{R}R^T(t)+(\\dot{R}R^T(t))^T") == "\\dot{R}R^T(t)+\\left(\\dot{R}R^T(t)\\right)^T"
+    assert change("a (b + (c)) = f(x)") == "a \\left(b + \\left(c\\right)\\right) = f(x)"
+    assert change("(a + b") == "(a + b"     # brackets that do not pair: left as written
