@@ -61,7 +61,10 @@ _FUNCTION_ARG_ALONE = _FUNCTION_ARG + r"(?!\s*[A-Za-z0-9(])"
 _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 
 
-_RATE = re.compile(r"\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}(_\{?\d\}?)?(\^)?")
+# A dotted letter's subscript goes inside the fraction with it: \dot{p}_{\phi} is the rate of p_φ, where
+# \frac{d p}{d t}_{\phi} would set the subscript on the fraction, another formula.
+_RATE = re.compile(r"\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
+                   r"(_(?:\{[^{}]*\}|\\[A-Za-z]+(?![A-Za-z])|[A-Za-z0-9]))?(\^)?")
 
 
 def _rates(d: str):
@@ -322,3 +325,9 @@ def test_the_sized_brackets_rewrite_sizes_a_bracket_at_the_one_that_closes_it():
     assert change("\\dot{R}R^T(t)+(\\dot{R}R^T(t))^T") == "\\dot{R}R^T(t)+\\left(\\dot{R}R^T(t)\\right)^T"
     assert change("a (b + (c)) = f(x)") == "a \\left(b + \\left(c\\right)\\right) = f(x)"
     assert change("(a + b") == "(a + b"     # brackets that do not pair: left as written
+
+
+def test_the_rates_rewrite_takes_a_dotted_letters_subscript_into_the_fraction():
+    change = VARIANTS["rates as d-dt"][1]
+    assert change("\\dot{p}_{\\phi} = 0") == "\\frac{d p_{\\phi}}{d t} = 0"
+    assert change("\\dot{\\omega}_1^2") == "\\left(\\frac{d \\omega_1}{d t}\\right)^2"
