@@ -47,9 +47,9 @@ def texts(kind: str) -> tuple:
 _INNER = re.compile(r"^(```math\n|\$\$|\\\[|\\begin\{[a-z]+\*?\}(?:\{[^{}]*\})?|[^$]*\$)(.*?)"
                     r"(```|\$\$|\\\]|\\end\{[a-z]+\*?\}|\$[ \t]*[.,;:]?[ \t]*)$", re.S)
 
-_RATES_MISSED = ("rates written as d/dt: an angular velocity summed from d/dt of the angles times unit vectors, "
-                 "a rate d/dt inside a dot (a slip of the Lagrange notes), and some equations of motion that later "
-                 "displays substitute into (three displays and three slips)")
+_RATES_MISSED = ("rates written as d/dt: a thread's angular velocity summed from d/dt of the angles times unit "
+                 "vectors (a display and a slip) and, in the other half of the corpus, rates the upright d has not "
+                 "been traced for")
 _MEDIUM_SPACE_MISSED = ("a medium space inside a fraction's differential (\\frac{\\mathrm{d} \\; \\boldsymbol{L}}{\\mathrm{d} \\; t}) "
                         "and before the factor a chain's end names (… = J_z \\; \\omega) leave a statement unchecked")
 _CHANGES_MEANING = ("the rewrite changes what some displays say: a factor between the text's operators, matrices or "

@@ -62,8 +62,11 @@ _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 
 
 # A dotted letter's subscript goes inside the fraction with it: \dot{p}_{\phi} is the rate of p_φ, where
-# \frac{d p}{d t}_{\phi} would set the subscript on the fraction, another formula.
-_RATE = re.compile(r"\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
+# \frac{d p}{d t}_{\phi} would set the subscript on the fraction, another formula. A dot inside another
+# mark's braces or a script (\mathbf{\dot{\omega}}_B, \vec{\dot{\omega}}, \dot{\dot{\phi}}, \partial_{\dot{\phi}}) stays:
+# a fraction there is set under the mark or in the script, with the mark's subscript outside it.
+_UNDER_A_MARK = "".join(rf"(?<!\\{c}\{{)" for c in ("vec", "mathbf", "boldsymbol", "bm", "dot", "ddot", "hat", "bar", "tilde"))
+_RATE = re.compile(_UNDER_A_MARK + r"(?<![_^]\{)(?<![_^])\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
                    r"(_(?:\{[^{}]*\}|\\[A-Za-z]+(?![A-Za-z])|[A-Za-z0-9]))?(\^)?")
 
 
@@ -331,3 +334,5 @@ def test_the_rates_rewrite_takes_a_dotted_letters_subscript_into_the_fraction():
     change = VARIANTS["rates as d-dt"][1]
     assert change("\\dot{p}_{\\phi} = 0") == "\\frac{d p_{\\phi}}{d t} = 0"
     assert change("\\dot{\\omega}_1^2") == "\\left(\\frac{d \\omega_1}{d t}\\right)^2"
+    # under another mark or in a script the dot stays (a fraction there would carry the mark's subscript outside)
+    assert change("\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L") == "\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L"
