@@ -47,3 +47,10 @@ def test_spins_each_carried_by_the_products_of_the_turns_before_it_hold():
                "+ \\dot{b} \\left( \\mathrm{E}_a \\hat{k} \\right) \\end{aligned}")
     assert "holds" in _verdicts(display)
     assert _verdicts("\\vec{\\omega} = \\dot{a} \\hat{z} + \\dot{b} R_z(a) \\hat{x} + \\dot{c} R_z(a) R_x(b) \\hat{z}") == {"holds"}
+
+
+def test_spins_at_rates_written_d_dt_are_read_as_dotted_ones():
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{y} + R_y(a) \\left( \\frac{\\mathrm{d} b}{\\mathrm{d} t} \\hat{z} "
+                     "+ R_z(b) \\left( \\frac{dc}{dt} \\hat{y} \\right) \\right)") == {"holds"}
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + R_z(b) \\left( \\frac{d b}{d t} \\hat{y} \\right)") == {"fails"}
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + \\frac{d b}{d t} R_z(a) \\hat{x}") == {"holds"}

@@ -44,6 +44,9 @@ _PARTIAL = re.compile(r"\s*" + VECTOR_MARK + r"\s*\{?\s*\\omega\s*\}?\s*_\s*\{?\
 """The angular velocity after some of the turns, ``\\vec{\\omega}_p``: a bold ω with a one-letter subscript."""
 _PRODUCT_NAME = re.compile(r"(?:\\mathrm\s*\{\s*([A-Z])\s*\}|([A-Z]))\s*(?:_\s*(?:\{\s*([A-Za-z0-9])\s*\}|([A-Za-z0-9])))?(?![A-Za-z0-9{(])")
 """A matrix the text sets equal to a product of turns in its displays, ``\\mathrm{E}_p = \\mathrm{E}_y \\mathrm{rot}(\\hat{k}, \\theta_p)``."""
+# a rate written d/dt, \frac{d\theta}{dt} (upright d too), is the dotted angle the spins are read in
+_WRITTEN_RATE = re.compile(r"\\[dt]?frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)\s*(\\[A-Za-z]+|[A-Za-z])\s*"
+                           r"((?:_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*\}\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)\s*t\s*\}")
 _SIZES = re.compile(r"\\(?:left|right|bigl|bigr|Bigl|Bigr|biggl|biggr|big|Big|bigg|Bigg)\s*(?=[()])")
 _SPACE = re.compile(r"\\[,;:!]|\\quad|\\qquad|~")
 _AXIS = {"i": "x", "j": "y", "k": "z"}
@@ -165,10 +168,15 @@ class _Reader:
         out.applied.append((turns, inner))
 
 
+def _dotted(latex: str) -> str:
+    """``latex`` with each rate of one symbol written d/dt as its dot, ``\\dot{\\theta}``."""
+    return _WRITTEN_RATE.sub(lambda m: r"\dot{" + m.group(1) + "}" + m.group(2), latex)
+
+
 def read(rhs: str, named: dict | None = None) -> tuple[Level, bool]:
     """The nesting a member writes and whether brackets were closed at its end, ``named`` the turns
     the prose gives its matrices' names; NotNested when it is not nested spins."""
-    text = _SPACE.sub(" ", _SIZES.sub("", rhs)).strip().rstrip(".,;").strip()
+    text = _SPACE.sub(" ", _SIZES.sub("", _dotted(rhs))).strip().rstrip(".,;").strip()
     r = _Reader(text, named or {})
     level = r.level()
     r.skip()
@@ -319,7 +327,7 @@ def _turns_of(text: str, products: dict) -> list | None:
 def expanded(rhs: str, products: dict) -> list | None:
     """The terms (angle, turns carrying it, axis) of a sum of spins each carried by a product of
     turns (``\\dot{\\theta}_p ( \\mathrm{E}_y \\hat{k} )``); None when the member is not one."""
-    text = _SPACE.sub(" ", _SIZES.sub("", rhs)).strip().rstrip(".,;")
+    text = _SPACE.sub(" ", _SIZES.sub("", _dotted(rhs))).strip().rstrip(".,;")
     terms, depth, start = [], 0, 0
     for k, ch in enumerate(text):
         depth += (ch == "(") - (ch == ")")
