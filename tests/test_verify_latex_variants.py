@@ -64,9 +64,10 @@ _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 # A dotted letter's subscript goes inside the fraction with it: \dot{p}_{\phi} is the rate of p_φ, where
 # \frac{d p}{d t}_{\phi} would set the subscript on the fraction, another formula. A dot inside another
 # mark's braces or a script (\mathbf{\dot{\omega}}_B, \vec{\dot{\omega}}, \dot{\dot{\phi}}, \partial_{\dot{\phi}}) stays:
-# a fraction there is set under the mark or in the script, with the mark's subscript outside it.
+# a fraction there is set under the mark or in the script, with the mark's subscript outside it. A variation's
+# rate, \delta\dot{\omega}_1, is d(δω₁)/dt: the δ goes inside the fraction with the letter.
 _UNDER_A_MARK = "".join(rf"(?<!\\{c}\{{)" for c in ("vec", "mathbf", "boldsymbol", "bm", "dot", "ddot", "hat", "bar", "tilde"))
-_RATE = re.compile(_UNDER_A_MARK + r"(?<![_^]\{)(?<![_^])\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
+_RATE = re.compile(_UNDER_A_MARK + r"(?<![_^]\{)(?<![_^])(\\delta\s*)?\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
                    r"(_(?:\{[^{}]*\}|\\[A-Za-z]+(?![A-Za-z])|[A-Za-z0-9]))?(\^)?")
 
 
@@ -74,8 +75,9 @@ def _rates(d: str):
     """``\\dot{x}_1`` written ``\\frac{d x_1}{dt}`` (bracketed before a power), with ``d`` the
     differential as given."""
     def one(m: re.Match) -> str:
-        rate = rf"\frac{{{d} {m[1]}{m[2] or ''}}}{{{d} t}}"
-        return rf"\left({rate}\right)^" if m[3] else rate
+        variation = "\\delta " if m[1] else ""
+        rate = rf"\frac{{{d} {variation}{m[2]}{m[3] or ''}}}{{{d} t}}"
+        return rf"\left({rate}\right)^" if m[4] else rate
     return lambda latex: _RATE.sub(one, latex)
 
 
@@ -334,5 +336,6 @@ def test_the_rates_rewrite_takes_a_dotted_letters_subscript_into_the_fraction():
     change = VARIANTS["rates as d-dt"][1]
     assert change("\\dot{p}_{\\phi} = 0") == "\\frac{d p_{\\phi}}{d t} = 0"
     assert change("\\dot{\\omega}_1^2") == "\\left(\\frac{d \\omega_1}{d t}\\right)^2"
+    assert change("\\delta\\dot{\\omega}_1 = 0") == "\\frac{d \\delta \\omega_1}{d t} = 0"
     # under another mark or in a script the dot stays (a fraction there would carry the mark's subscript outside)
     assert change("\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L") == "\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L"
