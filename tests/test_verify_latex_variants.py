@@ -66,7 +66,8 @@ _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 # mark's braces or a script (\mathbf{\dot{\omega}}_B, \vec{\dot{\omega}}, \dot{\dot{\phi}}, \partial_{\dot{\phi}}) stays:
 # a fraction there is set under the mark or in the script, with the mark's subscript outside it. A variation's
 # rate, \delta\dot{\omega}_1, is d(δω₁)/dt: the δ goes inside the fraction with the letter.
-_UNDER_A_MARK = "".join(rf"(?<!\\{c}\{{)" for c in ("vec", "mathbf", "boldsymbol", "bm", "dot", "ddot", "hat", "bar", "tilde"))
+_UNDER_A_MARK = "".join(rf"(?<!\\{c}\{{)" for c in ("vec", "mathbf", "boldsymbol", "bm", "pmb", "vb", "bold",
+                                                   "dot", "ddot", "hat", "bar", "tilde"))
 _RATE = re.compile(_UNDER_A_MARK + r"(?<![_^]\{)(?<![_^])(\\delta\s*)?\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
                    r"(_(?:\{[^{}]*\}|\\[A-Za-z]+(?![A-Za-z])|[A-Za-z0-9]))?(\^)?")
 
