@@ -47,9 +47,10 @@ def texts(kind: str) -> tuple:
 _INNER = re.compile(r"^(```math\n|\$\$|\\\[|\\begin\{[a-z]+\*?\}(?:\{[^{}]*\})?|[^$]*\$)(.*?)"
                     r"(```|\$\$|\\\]|\\end\{[a-z]+\*?\}|\$[ \t]*[.,;:]?[ \t]*)$", re.S)
 
-_RATES_MISSED = ("rates written as d/dt: a thread's angular velocity summed from d/dt of the angles times unit "
-                 "vectors (a display and a slip) and, in the other half of the corpus, rates the upright d has not "
-                 "been traced for")
+_RATES_MISSED = ("rates written with an upright d/dt: a point's velocity in R dφ/dt on the body's unit vectors "
+                 "(the Chinese notes on the kinematic equations), Kane's measure numbers' rates (the multibody "
+                 "course), Euler's equations in index notation (the tennis racket thread, two displays) and a "
+                 "notebook's I_3 dΩ_3/dt (the misaligned gear, two)")
 _MEDIUM_SPACE_MISSED = ("a medium space inside a fraction's differential (\\frac{\\mathrm{d} \\; \\boldsymbol{L}}{\\mathrm{d} \\; t}) "
                         "and before the factor a chain's end names (… = J_z \\; \\omega) leave a statement unchecked")
 _CHANGES_MEANING = ("the rewrite changes what some displays say: a factor between the text's operators, matrices or "
@@ -59,7 +60,7 @@ _CHANGES_MEANING = ("the rewrite changes what some displays say: a factor betwee
 _THIN_SPACE_MISSED = ("the heavy top thread's conserved momenta and effective potential with a small space "
                       "between factors (four displays)")
 MISSES: dict[str, str] = {
-    "rates as d-dt": _RATES_MISSED, "rates as upright d-dt": _RATES_MISSED,
+    "rates as upright d-dt": _RATES_MISSED,
     "medium space between factors": _MEDIUM_SPACE_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
