@@ -37,3 +37,11 @@ def test_a_sentence_naming_another_quantity_names_nothing():
     other = _verdicts("The three turns give the components of the angular momentum as columns:\n\n"
                       + COLUMN + RATES % "c_{\\psi}")
     assert "typo" not in other.values() and "fails" not in other.values()
+
+
+def test_a_column_in_plain_brackets_names_the_components_as_a_sized_one_does():
+    plain = COLUMN.replace("\\left[", "[").replace("\\right]", "]")
+    verdicts = {c.latex.strip()[:12]: c.verdict for c in kept.check_text(HEAD + SAID + plain + RATES % "c_{\\psi}")
+                if c.latex.strip().startswith(("[", "\\dot{\\theta}", "\\dot{\\psi}"))}
+    assert verdicts["\\dot{\\psi} ="] in ("typo", "fails") and verdicts["\\dot{\\theta}"] == "holds"
+    assert "holds" in {v for k, v in verdicts.items() if k.startswith("[")}

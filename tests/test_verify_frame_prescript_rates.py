@@ -34,3 +34,16 @@ def test_the_transport_theorem_with_frame_prescripts_and_its_sign_slipped_is_fla
 def test_a_frame_letter_the_reader_does_not_know_leaves_the_rate_unread():
     text = TEXT.replace("SIGN", "+").replace("^N", "^Q").replace("frame $N$", "frame $Q$")
     assert "holds" not in _verdicts(text)
+
+
+def _as_operator(text: str, opening: str, closing: str) -> str:
+    """The body-frame rate written as the operator ``^B\\frac{d}{dt}`` on a bracket round ``^B\\vec{H}``."""
+    return text.replace(r"= ^B\frac{\text{d}\vec{\mathbf{H}}}{\text{d}t}",
+                        r"= ^B\frac{\text{d}}{\text{d}t}" + opening + r"^B\vec{\mathbf{H}}" + closing)
+
+
+def test_the_rate_from_a_frame_as_an_operator_on_a_plain_bracket_is_read_as_on_a_sized_one():
+    for opening, closing in ((r"\left(", r"\right)"), ("(", ")")):
+        assert _verdicts(_as_operator(TEXT.replace("SIGN", "+"), opening, closing)) == ["holds"]
+        slipped = _verdicts(_as_operator(TEXT.replace("SIGN", "-"), opening, closing))
+        assert slipped and all(v in ("typo", "fails") for v in slipped)

@@ -22,3 +22,9 @@ def test_index_notation_with_its_summed_index_or_labels_is_not_flagged():
     assert _flagged("I_{ij} = I_{ji}") == []
     assert _flagged("m_i = m_j") == []
     assert _flagged("E_k = T_{xy}") == []
+
+
+def test_a_matrix_entry_with_its_arguments_in_sized_brackets_is_compared_as_with_plain_ones():
+    flagged = _flagged("y_i = R_{ij}\\left(\\vartheta, \\hat{n}\\right) = x_j")
+    assert [(c.kind, c.verdict) for c in flagged] == [("indices", "fails")]
+    assert _flagged("y_i = R_{ij}\\left(\\vartheta, \\hat{n}\\right) x_j") == []

@@ -61,15 +61,24 @@ _FUNCTION_ARG_ALONE = _FUNCTION_ARG + r"(?!\s*[A-Za-z0-9(])"
 _BOLD = r"\\(?:mathbf|boldsymbol)\{(\\?[A-Za-z]+)\}"
 
 
-_RATE = re.compile(r"\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}(_\{?\d\}?)?(\^)?")
+# A dotted letter's subscript goes inside the fraction with it: \dot{p}_{\phi} is the rate of p_φ, where
+# \frac{d p}{d t}_{\phi} would set the subscript on the fraction, another formula. A dot inside another
+# mark's braces or a script (\mathbf{\dot{\omega}}_B, \vec{\dot{\omega}}, \dot{\dot{\phi}}, \partial_{\dot{\phi}}) stays:
+# a fraction there is set under the mark or in the script, with the mark's subscript outside it. A variation's
+# rate, \delta\dot{\omega}_1, is d(δω₁)/dt: the δ goes inside the fraction with the letter.
+_UNDER_A_MARK = "".join(rf"(?<!\\{c}\{{)" for c in ("vec", "mathbf", "boldsymbol", "bm", "pmb", "vb", "bold",
+                                                   "dot", "ddot", "hat", "bar", "tilde"))
+_RATE = re.compile(_UNDER_A_MARK + r"(?<![_^]\{)(?<![_^])(\\delta\s*)?\\dot\{(\\tilde\{\\omega\}|\\[A-Za-z]+|[A-Za-z])\}"
+                   r"(_(?:\{[^{}]*\}|\\[A-Za-z]+(?![A-Za-z])|[A-Za-z0-9]))?(\^)?")
 
 
 def _rates(d: str):
     """``\\dot{x}_1`` written ``\\frac{d x_1}{dt}`` (bracketed before a power), with ``d`` the
     differential as given."""
     def one(m: re.Match) -> str:
-        rate = rf"\frac{{{d} {m[1]}{m[2] or ''}}}{{{d} t}}"
-        return rf"\left({rate}\right)^" if m[3] else rate
+        variation = "\\delta " if m[1] else ""
+        rate = rf"\frac{{{d} {variation}{m[2]}{m[3] or ''}}}{{{d} t}}"
+        return rf"\left({rate}\right)^" if m[4] else rate
     return lambda latex: _RATE.sub(one, latex)
 
 
@@ -107,6 +116,31 @@ def _left_right_everywhere(latex: str) -> str:
     if latex.count("(") != latex.count(")") or re.search(r"\\(left|right|[Bb]igg?[lr]?)(?![A-Za-z])", latex):
         return latex
     return latex.replace("(", "\\left(").replace(")", "\\right)")
+
+
+# A round bracket not a function's argument, nor escaped or a script's (``f(t)``, ``\\(``, ``R^T(t)`` stay plain).
+_SIZABLE = re.compile(r"(?<![A-Za-z\\}_0-9'])\($")
+
+
+def _left_right_for_plain(latex: str) -> str:
+    """Each round bracket `_SIZABLE` sized with ``\\left``/``\\right`` at the bracket that closes it, nested
+    brackets counted (``(\\dot{R}R^T(t))^T`` is ``\\left(\\dot{R}R^T(t)\\right)^T``: sizing the first ``)``
+    instead would pair the brackets otherwise, another formula); a bracket over lines stays, and a display
+    whose brackets do not pair stays as written."""
+    opened, pairs = [], []
+    for i, ch in enumerate(latex):
+        if ch == "(":
+            opened.append(i)
+        elif ch == ")":
+            if not opened:
+                return latex
+            start = opened.pop()
+            if _SIZABLE.search(latex[:start + 1]) and "\n" not in latex[start:i]:
+                pairs.append((start, i))
+    if opened:
+        return latex
+    sized = {i: "\\left(" for i, _ in pairs} | {i: "\\right)" for _, i in pairs}
+    return "".join(sized.get(i, ch) for i, ch in enumerate(latex))
 
 
 _SIZING = re.compile(r"\\(left|right)(?![A-Za-z])")
@@ -152,7 +186,7 @@ VARIANTS = {
     # brackets
     "plain brackets for left-right": (ALL_NOTES, _sub(r"\\(?:left|right)(?=[()\[\]])", "")),
     "bigl-bigr for left-right": (ALL_NOTES, _resized("\\bigl", "\\bigr")),
-    "left-right for plain brackets": (ALL_NOTES, _sub(r"(?<![A-Za-z\\}_0-9'])\((.*?)\)", r"\\left(\1\\right)")),
+    "left-right for plain brackets": (ALL_NOTES, _left_right_for_plain),
     # spacing and products
     "thin space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\, ")),
     "medium space between factors": (ALL_NOTES, _sub(_BETWEEN_FACTORS, r" \\; ")),
@@ -290,3 +324,19 @@ def test_the_sized_brackets_rewrite_sizes_a_left_and_its_right_together():
 def test_the_unbraced_accent_rewrite_spaces_its_letter_off_a_letter_after_it():
     change = VARIANTS["accent argument unbraced"][1]
     assert change("\\dot{\\phi}\\dot{\\psi}I_z + \\hat{\\omega}^B") == "\\dot\\phi\\dot\\psi I_z + \\hat\\omega^B"
+
+
+def test_the_sized_brackets_rewrite_sizes_a_bracket_at_the_one_that_closes_it():
+    change = VARIANTS["left-right for plain brackets"][1]
+    assert change("\\dot{R}R^T(t)+(\\dot{R}R^T(t))^T") == "\\dot{R}R^T(t)+\\left(\\dot{R}R^T(t)\\right)^T"
+    assert change("a (b + (c)) = f(x)") == "a \\left(b + \\left(c\\right)\\right) = f(x)"
+    assert change("(a + b") == "(a + b"     # brackets that do not pair: left as written
+
+
+def test_the_rates_rewrite_takes_a_dotted_letters_subscript_into_the_fraction():
+    change = VARIANTS["rates as d-dt"][1]
+    assert change("\\dot{p}_{\\phi} = 0") == "\\frac{d p_{\\phi}}{d t} = 0"
+    assert change("\\dot{\\omega}_1^2") == "\\left(\\frac{d \\omega_1}{d t}\\right)^2"
+    assert change("\\delta\\dot{\\omega}_1 = 0") == "\\frac{d \\delta \\omega_1}{d t} = 0"
+    # under another mark or in a script the dot stays (a fraction there would carry the mark's subscript outside)
+    assert change("\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L") == "\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L"

@@ -55,3 +55,10 @@ def test_spins_in_a_bracket_crossed_with_the_matrix_beside_omega_are_judged_as_o
     assert "fails" in _verdicts(crossed % "\\psi", head)
     assert "fails" not in _verdicts(crossed % "\\phi", head)
     assert "fails" not in _verdicts("\\frac{dT}{dt} = \\left(\\dot{\\psi} \\hat{z} + T_1 (\\dot{\\theta} \\hat{x}) \\right) \\times T", head)
+
+
+def test_spins_at_rates_written_d_dt_are_read_as_dotted_ones():
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{y} + R_y(a) \\left( \\frac{\\mathrm{d} b}{\\mathrm{d} t} \\hat{z} "
+                     "+ R_z(b) \\left( \\frac{dc}{dt} \\hat{y} \\right) \\right)") == {"holds"}
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + R_z(b) \\left( \\frac{d b}{d t} \\hat{y} \\right)") == {"fails"}
+    assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + \\frac{d b}{d t} R_z(a) \\hat{x}") == {"holds"}

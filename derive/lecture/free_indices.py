@@ -7,7 +7,7 @@ In index notation both sides of an equation carry the same free indices: ``y_i =
 summed) holds as a statement about every i, while ``y_i = R_{ij}`` sets a vector's component equal
 to a matrix's entry, which no choice of the names can mean. Only what is unambiguous is compared:
 two neighbouring members of a chain that are each one symbol with a subscript of the index letters
-i, j, k, l alone (its arguments after it allowed, ``R_{ij}(\\vartheta, \\hat n)``), each letter once
+i, j, k, l alone (its arguments after it allowed, ``R_{ij}(\\vartheta, \\hat n)``, sized or not), each letter once
 in it, one of them with two or more indices, their sets of letters different. A product or a sum
 (where a repeated letter is summed), a subscript with any other letter or a digit (``v_x``, ``E_k``
 beside ``I_{1k}``, a particle's ``m_a``) and a member with only one index on both sides (``m_i =
@@ -22,8 +22,9 @@ from derive.lecture.statements import statements, top_level
 _INDEX = frozenset("ijkl")
 _EQUALS = re.compile(r"(?<![<>!\\:])=")
 _LONE = re.compile(r"^\s*(?:\\[A-Za-z]+\s*\{\s*)*[A-Za-z]'?\s*\}*\s*_\s*(\{[^{}]*\}|[A-Za-z0-9])\s*'?\s*"
-                   r"(\((?:[^()]|\([^()]*\))*\))?\s*$")
-"""One symbol (in \\bm, \\hat, … or bare) with a subscript, and the arguments written after it."""
+                   r"((?:\\left\s*)?\((?:[^()]|\([^()]*\))*\))?\s*$")
+"""One symbol (in \\bm, \\hat, … or bare) with a subscript, and the arguments written after it (in plain or
+sized brackets, ``R_{ij}\\left(\\vartheta, \\hat n\\right)``)."""
 
 
 def indices(member: str) -> frozenset | None:

@@ -48,6 +48,9 @@ _PRODUCT_NAME = re.compile(r"(?:\\mathrm\s*\{\s*([A-Z])\s*\}|([A-Z]))\s*(?:_\s*(
 _CROSSED = re.compile(r"\s*(?:\\left\s*)?\(\s*(?P<s>.+?)\s*(?:\\right\s*)?\)\s*\\times\s*(?P<x>[^=]+?)\s*")
 _OMEGA_CROSSED = re.compile(_OMEGA.pattern + r"\\times\s*(?P<x>[^=]+?)\s*")
 """A bracket crossed with a matrix, ``\\left( … \\right) \\times T``, and 𝛚 crossed with one, ``\\vec{\\omega} \\times T``."""
+# a rate written d/dt, \frac{d\theta}{dt} (upright d too), is the dotted angle the spins are read in
+_WRITTEN_RATE = re.compile(r"\\[dt]?frac\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)\s*(\\[A-Za-z]+|[A-Za-z])\s*"
+                           r"((?:_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?)\s*\}\s*\{\s*(?:\\mathrm\s*\{\s*d\s*\}|d)\s*t\s*\}")
 _SIZES = re.compile(r"\\(?:left|right|bigl|bigr|Bigl|Bigr|biggl|biggr|big|Big|bigg|Bigg)\s*(?=[()])")
 _SPACE = re.compile(r"\\[,;:!]|\\quad|\\qquad|~")
 _AXIS = {"i": "x", "j": "y", "k": "z"}
@@ -169,10 +172,15 @@ class _Reader:
         out.applied.append((turns, inner))
 
 
+def _dotted(latex: str) -> str:
+    """``latex`` with each rate of one symbol written d/dt as its dot, ``\\dot{\\theta}``."""
+    return _WRITTEN_RATE.sub(lambda m: r"\dot{" + m.group(1) + "}" + m.group(2), latex)
+
+
 def read(rhs: str, named: dict | None = None) -> tuple[Level, bool]:
     """The nesting a member writes and whether brackets were closed at its end, ``named`` the turns
     the prose gives its matrices' names; NotNested when it is not nested spins."""
-    text = _SPACE.sub(" ", _SIZES.sub("", rhs)).strip().rstrip(".,;").strip()
+    text = _SPACE.sub(" ", _SIZES.sub("", _dotted(rhs))).strip().rstrip(".,;").strip()
     r = _Reader(text, named or {})
     level = r.level()
     r.skip()
@@ -336,7 +344,7 @@ def _turns_of(text: str, products: dict) -> list | None:
 def expanded(rhs: str, products: dict) -> list | None:
     """The terms (angle, turns carrying it, axis) of a sum of spins each carried by a product of
     turns (``\\dot{\\theta}_p ( \\mathrm{E}_y \\hat{k} )``); None when the member is not one."""
-    text = _SPACE.sub(" ", _SIZES.sub("", rhs)).strip().rstrip(".,;")
+    text = _SPACE.sub(" ", _SIZES.sub("", _dotted(rhs))).strip().rstrip(".,;")
     terms, depth, start = [], 0, 0
     for k, ch in enumerate(text):
         depth += (ch == "(") - (ch == ")")

@@ -20,11 +20,12 @@ import re
 
 _DISPLAY = re.compile(r"\$\$(.+?)\$\$|\\\[(.+?)\\\]|(?:^|\n[ \t]*\n)[ \t]*\$(?!\$)([^$]+?)(?<!\\)\$[ \t]*(?=\n[ \t]*\n|\s*\Z)",
                       re.S)
-# a column on the left, over lines as a notebook writes it, perhaps boxed and after the vector's own
-# name (\boxed{\vec{\Omega} = [Ω₁; Ω₂; Ω₃] = …}): the name is the letter the rows are components of
+# a column on the left, over lines as a notebook writes it, in sized or plain brackets, perhaps boxed and
+# after the vector's own name (\boxed{\vec{\Omega} = [Ω₁; Ω₂; Ω₃] = …}): the name is the letter the rows
+# are components of
 _COLUMN = re.compile(r"\s*(?:\\boxed\s*\{)?\s*(?:\\vec\s*\{\s*\\?[A-Za-z]+\s*\}\s*=)?"
-                     r"\s*(?:\\left\s*[\[(]\s*)?\{?\s*\\begin\{([bpBvV]?matrix)\}(.*?)\\end\{\1\}\s*\}?\s*"
-                     r"(?:\\right\s*[\])])?\s*=", re.S)
+                     r"\s*(?:(?:\\left\s*)?[\[(]\s*)?\{?\s*\\begin\{([bpBvV]?matrix)\}(.*?)\\end\{\1\}\s*\}?\s*"
+                     r"(?:(?:\\right\s*)?[\])])?\s*=", re.S)
 _COMPONENTS = r"\bcomponents?\s+of\s+(?:the|its)\s+(?:[\w-]+\s+)?(?:PHRASE)\b"
 _SENTENCE_END = re.compile(r"[.;!?]\s|\n\s*\n|\$\$")
 _LISTED = re.compile(r"^\s*(?:\\left\s*)?[\[(]\s*(.*?)\s*(?:\\right\s*)?[\])]\s*(?:\^\s*\{?\s*(?:\\top|T|\\intercal)\s*\}?)?\s*$")

@@ -360,8 +360,9 @@ _RATE_BAR = re.compile(_FRAC_RATE + r"\s*\}\s*(?(o)\}\s*)\\right\s*\|\s*_\s*" + 
 _RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
 # the rate seen from a frame as an operator on a bracket, ^B d/dt (…)
 _OPERATOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*\}\s*\{\s*"
-                                  + DIFFERENTIAL + r"\s*t\s*\}\s*\\left\s*\(")
-_LEFT_RIGHT = re.compile(r"\\left\s*[(\[.|]|\\right\s*[)\].|]")
+                                  + DIFFERENTIAL + r"\s*t\s*\}\s*(?P<sized>\\left\s*)?\(")
+# the brackets that open and close inside the operator's: sized ones pair with sized, plain with plain
+_LEFT_RIGHT = re.compile(r"(\\left\s*[(\[.|]|\\right\s*[)\].|])|[()]")
 _SUBSCRIPTED = _VEC + r"(?:\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?"
 # Kane's and Schaub's frame written before the rate of a vector or of a tensor in brackets, ^B d[𝐈_C]/dt
 _RATE_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(" + _SUBSCRIPTED
@@ -408,22 +409,26 @@ def _prescribed(text: str) -> str:
 
 
 def _operator_prescribed(text: str) -> str:
-    """``^B\\frac{d}{dt}\\left(X\\right)``, the rate seen from a frame as an operator on a bracket, as
-    ``\\left(\\frac{d}{dt}\\left(X\\right)\\right)_{B}``, the bracket closed where its own ``\\right)`` is."""
+    """``^B\\frac{d}{dt}\\left(X\\right)``, the rate seen from a frame as an operator on a bracket, sized or
+    plain (``^B\\frac{d}{dt}(X)``), as ``\\left(\\frac{d}{dt}\\left(X\\right)\\right)_{B}``, the bracket closed
+    where its own closing bracket is."""
     m = _OPERATOR_PRESCRIPT.search(text)
     if m is None:
         return text
-    depth, i = 1, m.end()
+    sized = m.group("sized") is not None
+    depth = 1
     for tok in _LEFT_RIGHT.finditer(text, m.end()):
-        depth += 1 if tok.group(0).startswith("\\left") else -1
+        if (tok.group(1) is not None) != sized:
+            continue
+        depth += 1 if tok.group(0).startswith(("\\left", "(")) else -1
         if depth == 0:
-            i = tok.end()
             break
     else:
         return text
     label = m.group(1).strip("{}").strip()
-    return (text[:m.start()] + r"\left(\frac{d}{dt}\left(" + text[m.end():i] + r"\right)_{" + label + "}"
-            + _operator_prescribed(text[i:]))
+    closing = tok.group(0) if sized else r"\right)"
+    return (text[:m.start()] + r"\left(\frac{d}{dt}\left(" + text[m.end():tok.start()] + closing + r"\right)_{" + label + "}"
+            + _operator_prescribed(text[tok.end():]))
 
 
 def prepare(text: str) -> str:
