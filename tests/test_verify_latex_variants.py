@@ -41,9 +41,12 @@ def _sub(pattern: str, repl):
 # an operator, a relation, a comma or inside a command's name).
 _RELATION_BEFORE = "".join(rf"(?<!\\{r})" for r in ("equiv", "approx", "ge", "le", "times", "cdot", "quad"))
 # Nor after a command that takes what follows as its argument (``\\vec v``, ``\\mathrm d``, ``\\sin^2
-# \\theta``, ``\\int (…)``) or a lone differential d: a factor there would change what the formula says.
+# \\theta``, ``\\int (…)``) or a lone differential d: a factor there would change what the formula says
+# (``\\mathcal \\, L`` sets a thin space in the script face and then the italic L, another letter).
 _ARGUMENT_BEFORE = "".join(rf"(?<!\\{c})" for c in (
-    "vec", "hat", "dot", "ddot", "tilde", "bar", "mathrm", "mathbf", "boldsymbol", "bm", "text", "sqrt", "operatorname",
+    "vec", "hat", "dot", "ddot", "tilde", "bar", "check", "breve", "acute", "grave", "mathring", "widehat",
+    "widetilde", "overline", "mathrm", "mathbf", "boldsymbol", "bm", "pmb", "mathcal", "mathscr", "mathfrak",
+    "mathbb", "mathsf", "mathit", "mathtt", "text", "sqrt", "operatorname",
     "frac", "sin", "cos", "tan", "cot", "sec", "csc", "int", "sum", "partial", "sin^2", "cos^2", "sin^{2}", "cos^{2}"))
 _ARGUMENT_BEFORE = _ARGUMENT_BEFORE.replace("^", "\\^").replace("{", "\\{").replace("}", "\\}") + r"(?<![^A-Za-z\\]d)"
 _BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE + _ARGUMENT_BEFORE
@@ -290,3 +293,9 @@ def test_the_sized_brackets_rewrite_sizes_a_left_and_its_right_together():
 def test_the_unbraced_accent_rewrite_spaces_its_letter_off_a_letter_after_it():
     change = VARIANTS["accent argument unbraced"][1]
     assert change("\\dot{\\phi}\\dot{\\psi}I_z + \\hat{\\omega}^B") == "\\dot\\phi\\dot\\psi I_z + \\hat\\omega^B"
+
+
+def test_the_space_between_factors_rewrite_leaves_a_font_command_with_its_letter():
+    change = VARIANTS["thin space between factors"][1]
+    assert change("\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\ddot \\theta") == \
+        "\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\, \\ddot \\theta"
