@@ -49,15 +49,12 @@ _INNER = re.compile(r"^(```math\n|\$\$|\\\[|\\begin\{[a-z]+\*?\}(?:\{[^{}]*\})?|
 
 _RATES_MISSED = ("rates written as d/dt: an equation of motion or a rate relation in dω/dt that a later display "
                  "substitutes into is not found (the solutions and energy balances after it stay unchecked)")
-_MEDIUM_SPACE_MISSED = ("a medium space inside a fraction's differential (\\frac{\\mathrm{d} \\; \\boldsymbol{L}}{\\mathrm{d} \\; t}) "
-                        "and before the factor a chain's end names (… = J_z \\; \\omega) leave a statement unchecked")
 _CHANGES_MEANING = ("the rewrite changes what some displays say: a factor between the text's operators, matrices or "
                     "vectors and what they act on (D \\cdot (M L'), \\frac{d}{dt} \\quad m_i), or a \\quad before a factor "
                     "of a statement that goes on with a relation (L = I_z \\quad \\omega_s = …), which a reader too takes "
                     "for two statements")
 MISSES: dict[str, str] = {
     "rates as d-dt": _RATES_MISSED, "rates as upright d-dt": _RATES_MISSED,
-    "medium space between factors": _MEDIUM_SPACE_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
     "one-token scripts braced": "a braced one-token script in some of a text's own names (not traced yet)",
     "plain brackets for left-right": "an encyclopaedia's 1-2-3 angle rates and the spacecraft notes' energy with "
