@@ -166,7 +166,9 @@ VARIANTS = {
                                     else re.sub(_BETWEEN_SCALAR_FACTORS, r" \\cdot ", latex)),
     # braces around one token
     "one-token braces dropped": (ALL_NOTES, _sub(r"([_^])\{(\\?[A-Za-z0-9]|\\[A-Za-z]+)\}", r"\1\2")),
-    "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+|[A-Za-z0-9])", r"\1{\2}")),
+    # a command is braced with its argument (_\\mathrm{d} braced as _{\\mathrm}{d} would lose its d)
+    "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+(?![A-Za-z])(?:\s*\{[^{}]*\})?(?!\s*\{)|[A-Za-z0-9])",
+                                                 r"\1{\2}")),
     # a letter after the braces is spaced off: \dot{\psi}I_z unbraced is \dot\psi I_z (\dot\psiI_z names another command)
     "accent argument unbraced": (ALL_NOTES, _sub(r"\\(dot|ddot|tilde|hat)\{(\\[A-Za-z]+)\}(?=([A-Za-z])?)",
                                                  lambda m: f"\\{m[1]}{m[2]}" + (" " if m[3] else ""))),
@@ -299,3 +301,9 @@ def test_the_space_between_factors_rewrite_leaves_a_font_command_with_its_letter
     change = VARIANTS["thin space between factors"][1]
     assert change("\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\ddot \\theta") == \
         "\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\, \\ddot \\theta"
+
+
+def test_the_braced_scripts_rewrite_braces_a_script_command_with_its_argument():
+    change = VARIANTS["one-token scripts braced"][1]
+    assert change("\\omega_\\mathrm{p} + I_1 + x^\\prime + a_\\frac{1}{2}") == \
+        "\\omega_{\\mathrm{p}} + I_{1} + x^{\\prime} + a_\\frac{1}{2}"
