@@ -56,8 +56,6 @@ _CHANGES_MEANING = ("the rewrite changes what some displays say: a factor betwee
 MISSES: dict[str, str] = {
     "rates as d-dt": _RATES_MISSED, "rates as upright d-dt": _RATES_MISSED,
     "quad between factors": _CHANGES_MEANING, "cdot between scalar factors": _CHANGES_MEANING,
-    "one-token scripts braced": "the multibody text's inertia scalars (two displays), lost only when its mass-centre "
-                                "and inertia-vector displays are braced together (not traced to a rule yet)",
     "plain brackets for left-right": "an encyclopaedia's 1-2-3 angle rates and the spacecraft notes' energy with "
                                      "plain brackets where the text sizes them (three displays and a slip, one display)",
     "left-right for plain brackets": "a thread's skew-matrix rate with its plain brackets sized",
