@@ -40,6 +40,13 @@ def test_without_the_tie_omega_is_not_read():
     assert _verdicts(text, SECOND) == ["unchecked"]
 
 
+def test_the_momentum_names_omega_with_the_rates_dots_over_unbraced_letters():
+    for row in (r"\dot L_1~\equiv~ I_1 \dot\Omega_1", r"\dot{L}_1 \equiv I_1 \dot \Omega_1"):
+        assert nm.learn(_text(row)).meaning(Atom("Omega", sub="1")) == "angular velocity", row
+    unbraced = TIE.replace(r"\dot{\Omega}_1", r"\dot\Omega_1")
+    assert _verdicts(_text(unbraced, SECOND), unbraced) == ["holds"]
+
+
 def test_a_momentum_with_another_index_or_an_unlike_rate_names_nothing():
     for row in (r"\dot{L}_1 \equiv I_2 \dot{\Omega}_2", r"\dot{L}_1 \equiv I_1 \Omega_1", r"L_1 = I_1 x_1"):
         learned = nm.learn(_text(row))

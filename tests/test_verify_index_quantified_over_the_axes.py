@@ -48,3 +48,8 @@ def test_cr_ends_a_row_and_a_colour_s_name_is_no_mathematics():
     rows = statements.statements(source.normalize(r"\begin{align} a &= b \cr c &= d \end{align}"))
     assert [r.split() for r in rows] == [["a", "=", "b"], ["c", "=", "d"]]
     assert "red" not in source.normalize(r"\ddot{x} = \color{red}{+} x")
+
+
+def test_a_quantifier_spaced_by_medium_spaces_still_quantifies_its_statement():
+    spaced = EULER.replace(r"\forall i", r"\forall \; i").replace(r"I_i \dot", r"I_i \; \dot")
+    assert _verdicts(spaced) == ["holds", "holds", "holds"]

@@ -19,6 +19,11 @@ def test_a_labelled_position_is_the_particles_and_a_breve_dyadic_about_the_same_
     assert kane_notation.rewrite(two_points) == two_points
 
 
+def test_a_labelled_position_with_its_points_index_braced_is_kanes_notation():
+    assert kane_notation.kane("\\bar{r}^{S_{o}/O} = \\frac{a}{m}")
+    assert kane_notation.rewrite("\\bar{r}^{P_{i}/O} \\otimes \\bar{r}^{P_{i}/O}") == "\\mathbf{r}_{i} \\otimes \\mathbf{r}_{i}"
+
+
 def test_a_vector_defined_with_a_colon_equals_stands_for_its_sum_in_later_statements():
     body = INERTIA_VECTOR + ("$$\\bar{I}_a = \\sum_{i=1}^\\nu m_i \\left[\\hat{n}_a \\left( \\bar{r}^{P_i/O} \\cdot "
                              "\\bar{r}^{P_i/O} \\right) - \\bar{r}^{P_i/O} \\left( \\bar{r}^{P_i/O} \\cdot \\hat{n}_a "

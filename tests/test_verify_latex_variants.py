@@ -41,9 +41,12 @@ def _sub(pattern: str, repl):
 # an operator, a relation, a comma or inside a command's name).
 _RELATION_BEFORE = "".join(rf"(?<!\\{r})" for r in ("equiv", "approx", "ge", "le", "times", "cdot", "quad"))
 # Nor after a command that takes what follows as its argument (``\\vec v``, ``\\mathrm d``, ``\\sin^2
-# \\theta``, ``\\int (…)``) or a lone differential d: a factor there would change what the formula says.
+# \\theta``, ``\\int (…)``) or a lone differential d: a factor there would change what the formula says
+# (``\\mathcal \\, L`` sets a thin space in the script face and then the italic L, another letter).
 _ARGUMENT_BEFORE = "".join(rf"(?<!\\{c})" for c in (
-    "vec", "hat", "dot", "ddot", "tilde", "bar", "mathrm", "mathbf", "boldsymbol", "bm", "text", "sqrt", "operatorname",
+    "vec", "hat", "dot", "ddot", "tilde", "bar", "check", "breve", "acute", "grave", "mathring", "widehat",
+    "widetilde", "overline", "mathrm", "mathbf", "boldsymbol", "bm", "pmb", "mathcal", "mathscr", "mathfrak",
+    "mathbb", "mathsf", "mathit", "mathtt", "text", "sqrt", "operatorname",
     "frac", "sin", "cos", "tan", "cot", "sec", "csc", "int", "sum", "partial", "sin^2", "cos^2", "sin^{2}", "cos^{2}"))
 _ARGUMENT_BEFORE = _ARGUMENT_BEFORE.replace("^", "\\^").replace("{", "\\{").replace("}", "\\}") + r"(?<![^A-Za-z\\]d)"
 _BETWEEN_FACTORS = (r"(?<=[A-Za-z0-9}\)])" + _RELATION_BEFORE + _ARGUMENT_BEFORE
@@ -197,7 +200,9 @@ VARIANTS = {
                                     else re.sub(_BETWEEN_SCALAR_FACTORS, r" \\cdot ", latex)),
     # braces around one token
     "one-token braces dropped": (ALL_NOTES, _sub(r"([_^])\{(\\?[A-Za-z0-9]|\\[A-Za-z]+)\}", r"\1\2")),
-    "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+|[A-Za-z0-9])", r"\1{\2}")),
+    # a command is braced with its argument (_\\mathrm{d} braced as _{\\mathrm}{d} would lose its d)
+    "one-token scripts braced": (ALL_NOTES, _sub(r"([_^])(?!\{)(\\[A-Za-z]+(?![A-Za-z])(?:\s*\{[^{}]*\})?(?!\s*\{)|[A-Za-z0-9])",
+                                                 r"\1{\2}")),
     # a letter after the braces is spaced off: \dot{\psi}I_z unbraced is \dot\psi I_z (\dot\psiI_z names another command)
     "accent argument unbraced": (ALL_NOTES, _sub(r"\\(dot|ddot|tilde|hat)\{(\\[A-Za-z]+)\}(?=([A-Za-z])?)",
                                                  lambda m: f"\\{m[1]}{m[2]}" + (" " if m[3] else ""))),
@@ -340,3 +345,15 @@ def test_the_rates_rewrite_takes_a_dotted_letters_subscript_into_the_fraction():
     assert change("\\delta\\dot{\\omega}_1 = 0") == "\\frac{d \\delta \\omega_1}{d t} = 0"
     # under another mark or in a script the dot stays (a fraction there would carry the mark's subscript outside)
     assert change("\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L") == "\\mathbf{\\dot{\\omega}}_B + \\partial_{\\dot{\\phi}} L"
+
+
+def test_the_space_between_factors_rewrite_leaves_a_font_command_with_its_letter():
+    change = VARIANTS["thin space between factors"][1]
+    assert change("\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\ddot \\theta") == \
+        "\\frac{\\partial \\mathcal L}{\\partial \\theta} = I_1 \\, \\ddot \\theta"
+
+
+def test_the_braced_scripts_rewrite_braces_a_script_command_with_its_argument():
+    change = VARIANTS["one-token scripts braced"][1]
+    assert change("\\omega_\\mathrm{p} + I_1 + x^\\prime + a_\\frac{1}{2}") == \
+        "\\omega_{\\mathrm{p}} + I_{1} + x^{\\prime} + a_\\frac{1}{2}"

@@ -72,3 +72,16 @@ def test_a_point_of_a_wheel_in_a_frame_s_bold_i_j_k_is_read_with_its_centre_s_ve
         == {"holds"}
     assert verdicts("\\mathbf{v}_T = \\mathbf{v}_C + \\boldsymbol{\\omega} \\times \\mathbf{r}_T = v \\mathbf{i}") \
         == {"fails"}
+
+
+def test_a_relation_opening_with_an_accent_over_an_unbraced_letter_is_put_in():
+    head = HEAD.replace("s \\mathbf{e}_1", "\\dot\\psi \\mathbf{e}_1").replace("$$s = ", "$$\\dot\\psi = ")
+
+    def verdicts(display):
+        text = head + "$$" + display + "$$\n"
+        return {c.verdict for c in kept.by_line(text).get(kept.line_of(text, "$$" + display), [])
+                if c.kind == "identity"}
+    right = ("\\mathbf{v}_Q = \\boldsymbol{\\omega} \\times \\mathbf{r}_Q = -\\Omega b \\mathbf{e}_1 "
+             "- \\frac{h^2}{b} \\Omega \\mathbf{e}_2 + h \\Omega \\mathbf{e}_3")
+    assert verdicts(right) == {"holds"}
+    assert verdicts(right.replace("- \\frac{h^2}", "+ \\frac{h^2}")) == {"fails"}

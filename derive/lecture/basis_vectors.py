@@ -39,8 +39,9 @@ BASIS = re.compile(r"(?<!hat\{)\\(?:boldsymbol|mathbf|bm|pmb|vec)\s*(?:\{?\s*e\s
 _IJK = {"i": 0, "j": 1, "k": 2}
 _NOT_ALGEBRA = re.compile(r"\\(?:int|sum|partial|frac\s*\{\s*(?:\\mathrm\s*\{\s*)?d)|\\mathrm\s*\{\s*d\s*\}")
 """Rates, sums and integrals: not the algebra of this reader."""
-_RELATION = re.compile(r"\s*\\?[A-Za-z]+(?:\{[^{}]*\})?\s*(?:_\s*\{?\s*\w+\s*\}?)?\s*=")
-"""A statement opening with one symbol and =: a relation of the text's, perhaps."""
+_RELATION = re.compile(r"\s*\\?[A-Za-z]+(?:\{[^{}]*\}|\s*\\[A-Za-z]+|\s+[A-Za-z](?![A-Za-z]))?\s*(?:_\s*\{?\s*\w+\s*\}?)?\s*=")
+"""A statement opening with one symbol and =: a relation of the text's, perhaps (an accent's argument
+braced or not, ``\\dot{\\psi}``, ``\\dot\\psi``, ``\\dot x``)."""
 _COMBINATIONS = 8
 WHY_SET = "sets the text's vector {name} in its basis {basis} (recorded, then used)"
 WHY = ("in the text's basis {basis} (right-handed, orthonormal), with the vectors and the relations it set before "

@@ -96,6 +96,20 @@ def put_in(text: str, names: dict, line: int | None) -> str:
     for spelled, (at, value) in names.items():
         if line is not None and at >= line:
             continue
-        pattern = r"(?<![A-Za-z\\])" + re.escape(spelled).replace("_", r"\s*_\s*") + r"(?![A-Za-z0-9_{'])"
+        pattern = r"(?<![A-Za-z\\])" + _spelling(spelled) + r"(?![A-Za-z0-9_{'])"
         text = re.sub(pattern, lambda _: r"\left(" + value + r"\right)", text)
     return text
+
+
+_ONE_TOKEN_SCRIPT = re.compile(r"(?P<base>.*?)\s*_\s*(?:\{\s*(?P<braced>\\[A-Za-z]+|[A-Za-z0-9])\s*\}|(?P<bare>\\[A-Za-z]+|[A-Za-z0-9]))",
+                               re.S)
+
+
+def _spelling(spelled: str) -> str:
+    """A pattern for a name as written anywhere: its one-token index braced or not (``J_{z}`` is
+    ``J_z``, the same symbol), spaces allowed around the ``_``."""
+    m = _ONE_TOKEN_SCRIPT.fullmatch(spelled)
+    if m is None:
+        return re.escape(spelled).replace("_", r"\s*_\s*")
+    index = re.escape(m["braced"] or m["bare"])
+    return re.escape(m["base"]) + r"\s*_\s*(?:\{\s*" + index + r"\s*\}|" + index + ")"

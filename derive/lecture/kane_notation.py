@@ -38,7 +38,8 @@ _UNIT_DYADIC = re.compile(r"\\breve\s*\{\s*U\s*\}")
 # a frame's prescript spaced off its vector ({}^A \, \bar H); never across a quad, which ends its statement
 _FRAME = re.compile(r"\^\s*\{?\s*[A-Z]\s*\}?" + SPACE + r"(?=\\bar\s*\{)")
 _ANGULAR_VELOCITY = re.compile(r"\\bar\s*\{\s*\\omega\s*\}\s*\^\s*\{?\s*[A-Z]\s*\}?")
-_KANE = re.compile(r"\\bar\s*\{\s*[A-Za-z]\s*\}\s*\^\s*\{[^{}]*/|\\breve\s*\{")
+_KANE = re.compile(r"\\bar\s*\{\s*[A-Za-z]\s*\}\s*\^\s*\{(?:[^{}]|\{[^{}]*\})*/|\\breve\s*\{")
+"""A labelled position or a dyadic, its point's index braced or not (``\\bar{r}^{S_o/O}``, ``\\bar{r}^{S_{o}/O}``)."""
 
 
 def kane(text: str) -> bool:

@@ -20,8 +20,10 @@ from derive.lecture import source, statements
 _DISPLAY = re.compile(r"\$\$(.+?)\$\$|\\\[(.+?)\\\]", re.S)
 _GAP = r"(?:~|\\[,;:!]|\s)*"
 _INDEX = r"_\s*\{?\s*(?P<k>[123ijk])\s*\}?"
-_MOMENTUM = re.compile(_GAP + r"(?P<d>\\dot\s*\{\s*)?(?:L|M|J|H)\s*\}?\s*" + _INDEX + _GAP + "$")
-_VELOCITY = r"I\s*_\s*\{?\s*K\s*\}?" + _GAP + r"(?P<d>\\dot\s*\{\s*)?(?P<x>\\Omega|w|W)\s*\}?\s*_\s*\{?\s*K\s*\}?" + _GAP + "$"
+_DOT = r"(?P<d>\\dot(?![A-Za-z])\s*\{?\s*)?"
+"""A rate's dot, over its letter braced or not (``\\dot{L}_1``, ``\\dot L_1``, ``\\dot\\Omega_1``)."""
+_MOMENTUM = re.compile(_GAP + _DOT + r"(?:L|M|J|H)\s*\}?\s*" + _INDEX + _GAP + "$")
+_VELOCITY = r"I\s*_\s*\{?\s*K\s*\}?" + _GAP + _DOT + r"(?P<x>\\Omega|w|W)\s*\}?\s*_\s*\{?\s*K\s*\}?" + _GAP + "$"
 _MEMBER = re.compile(r"(?<![<>!\\])=|\\equiv(?![A-Za-z])")
 
 

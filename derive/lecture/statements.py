@@ -257,8 +257,9 @@ def statements(latex: str) -> list[str]:
 def _statements(latex: str) -> tuple[str, ...]:
     """`statements`, once per display: a display read again (a second reading, a probe in another
     sequence) is cut as before."""
-    body = _AND.sub(r" \\quad ", _EQUATION_NUMBER.sub("", _strip_envs(latex))).replace("\\;", "\\\x00")
-    body = " \\\\ ".join(index_quantifier.instances(body))       # ∀ i ∈ ℤ₃: one statement per axis
+    body = _AND.sub(r" \\quad ", _EQUATION_NUMBER.sub("", _strip_envs(latex)))
+    # ∀ i ∈ ℤ₃: one statement per axis, read before a medium space \; is masked (the quantifier may be spaced so)
+    body = " \\\\ ".join(index_quantifier.instances(body)).replace("\\;", "\\\x00")
     rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
     # a row that ends with a binary operator continues on the next
     joined: list[str] = []
