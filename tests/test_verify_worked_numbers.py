@@ -194,7 +194,8 @@ def test_a_worked_number_in_whole_numbers_named_as_a_quantity_is_not_compared_wi
     assert any(c.verdict == "unchecked" and "a worked value" in c.why for c in claims)
 
 
-def test_a_relation_set_to_zero_is_no_worked_value():
-    x = sp.Symbol("x")
-    assert unchecked("T = 9", sp.Integer(9), [x], str) is not None
-    assert unchecked(r"\frac{d}{dt} p - q = 0", sp.Integer(0), [x], str) is None
+def test_a_relation_set_to_zero_or_an_equation_set_to_one_is_no_worked_value():
+    x, t = sp.symbols("x T")
+    assert unchecked("T = 9", sp.Integer(9), [x], str, t) is not None
+    assert unchecked(r"\frac{x}{2} = 1", sp.Integer(1), [x], str, x / 2) is None       # an equation of a surface
+    assert unchecked("T = 0", sp.Integer(0), [x], str, t) is None

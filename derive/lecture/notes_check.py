@@ -512,7 +512,7 @@ class Checker(ReadingRules):
             loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
-        undecided = undecided or worked_values.unchecked(piece, val, [self._resolve(f) for f in targets], self.tex)
+        undecided = undecided or worked_values.unchecked(piece, val, [self._resolve(f) for f in targets], self.tex, label)
         if undecided and undecided.startswith("an equation for the angles") and len(targets) == 1 and \
                 self._at_stated_angles(line, piece, kind, value, val, self._resolve(targets[0]), parsed, k, keep):
             return

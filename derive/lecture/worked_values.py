@@ -28,11 +28,12 @@ def _free(e) -> set:
     return set(getattr(e, "free_symbols", set()))
 
 
-def unchecked(piece: str, written, derived: list, tex) -> str | None:
-    """Why a statement with a decimal number, or a plain number other than 0 on its written side, is left
-    unchecked: every derived form keeps symbols (other than time) that the written side does not
-    have; None when it is compared as usual."""
-    number = not _free(written) and written != 0        # a relation set to zero is no worked value
+def unchecked(piece: str, written, derived: list, tex, head=None) -> str | None:
+    """Why a statement with a decimal number, or with a plain number other than 0 set to a ``head``
+    that is one name, is left unchecked: every derived form keeps symbols (other than time) that the
+    written side does not have; None when it is compared as usual."""
+    # a relation set to 0, or an equation set to 1 (an ellipsoid's), is no worked value: its head is no name
+    number = isinstance(head, sp.Symbol) and not _free(written) and written != 0
     if not derived or not (_DECIMAL.search(piece) or number):
         return None
     extra = set()
