@@ -296,7 +296,7 @@ SHORT = {
         "integrals over the body",
     ("kanamesasaki-blog-rigid-body-lagrange-inertia-tensor-euler-equations-ja", "checked"):
         "a blog post in Hughes' notation: the skew matrix as a superscript u^\\times, a frame as a column of basis "
-        "vectors, cross products inside sums over the points and the inertia tensor named J are not read",
+        "vectors, cross products inside sums over the points and the tensor J itself (not its diagonal) are not read",
     ("spacecraft-course-notes-torque-free-momentum-sphere-energy-ellipsoid", "checked"):
         "a notebook's torque-free sphere and ellipsoid: H^T H, the first H^2 = ... = constant (read as defining H) "
         "and the semi-axes matched against an ellipsoid are not read",
