@@ -38,8 +38,10 @@ _PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?!
 _SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
 _SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
                     r"\s*(?=$|[,;.]|\\\\)")
-_MATRIX = re.compile(r"=\s*(?:\\left\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}", re.S)
-_INERTIA = re.compile(r"moments? of inertia|inertia (?:tensor|matrix)|tensor of inertia|principal ax[ie]s", re.I)
+_MATRIX = re.compile(r"=\s*(?:\\left\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
+                     re.S)
+_INERTIA = re.compile(r"moments? of inertia|inertia (?:tensor|matrix)|tensor of inertia|principal ax[ie]s",
+                      re.I)
 _PRINCIPAL = ("transverse moment", "second moment", "axial moment")
 _NUMBER = re.compile(r"=\s*-?\d+(?:\.\d+)?\s*(?:$|[,;]|\\\\)")
 
