@@ -295,8 +295,8 @@ SHORT = {
         "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "
         "integrals over the body",
     ("kanamesasaki-blog-rigid-body-lagrange-inertia-tensor-euler-equations-ja", "checked"):
-        "a blog post in Hughes' notation: the skew matrix as a superscript u^\\times, a frame as a column of basis "
-        "vectors, cross products inside sums over the points and the inertia tensor named J are not read",
+        "a blog post in Hughes' notation: a frame as a column of basis vectors, cross products inside sums over "
+        "the points, the rate of the tensor J and the tensor J itself (not its diagonal) are not read",
     ("spacecraft-course-notes-torque-free-momentum-sphere-energy-ellipsoid", "checked"):
         "a notebook's torque-free sphere and ellipsoid: H^T H, the first H^2 = ... = constant (read as defining H) "
         "and the semi-axes matched against an ellipsoid are not read",

@@ -63,11 +63,15 @@ def _marked(m: re.Match, bold: set) -> str:
 
 
 _CROSS = re.compile(r"\s*[_^]\s*(?:\{\s*\\times\s*\}|\\times)")
+# a vector written bold or under an arrow, with its subscript, then ^\times: the skew matrix u^× of Hughes' notation
+_SYMBOL_CROSS = re.compile(r"(?P<v>" + _VECTOR + r"\s*\{(?:[^{}]|\{[^{}]*\})*\}(?:\s*_\s*(?:\{[^{}]*\}|\w))?)"
+                           r"\s*\^\s*(?:\{\s*\\times\s*\}|\\times)(?![A-Za-z])")
 
 
 def cross_matrices(text: str) -> str:
-    """``[\\mathbf{r}]_\\times`` (also ``\\left[ … \\right]_{\\times}``, ``^\\times``): the cross-product
-    matrix of r, written ``\\crossmatrix\\left( … \\right)`` for the formula reader.
+    """``[\\mathbf{r}]_\\times`` (also ``\\left[ … \\right]_{\\times}``, ``^\\times``) and ``\\mathbf{r}^\\times``
+    (a bold or arrowed vector): the cross-product matrix of r, written ``\\crossmatrix\\left( … \\right)``
+    for the formula reader.
 
     Parameters
     ----------
@@ -79,6 +83,7 @@ def cross_matrices(text: str) -> str:
     str
         The formula, each bracket marked with ``_\\times`` or ``^\\times`` written as ``\\crossmatrix``.
     """
+    text = _SYMBOL_CROSS.sub(lambda m: r"\crossmatrix\left(" + m.group("v") + r"\right)", text)
     while True:
         m = next((m for m in _CROSS.finditer(text) if text[:m.start()].rstrip().endswith("]")), None)
         if m is None:

@@ -13,7 +13,12 @@ neither the prose nor the front matter named the symbol:
   axis. The equal pair is not bound (the transverse moment depends on the point it is taken about,
   ``I_O = I_x + md^2``), nor is a moment the text gives a formula or a value for (``I_z = \frac{1}{2}
   m R^2``: its own quantity, checked as it defines it). Numbered moments need no rule: I₃ is the
-  axial one already.
+  axial one already;
+* the principal moments from a diagonal inertia matrix: a display that sets a symbol equal to a
+  three-by-three matrix whose off-diagonal entries are all 0 and whose diagonal holds one letter
+  numbered 1, 2, 3 (``\\boldsymbol{J} = [J_1, 0, 0; 0, J_2, 0; 0, 0, J_3]``), after prose that calls
+  it the moment of inertia, the inertia tensor or its principal axes, names those three the
+  principal moments I₁, I₂, I₃ — unless the text gives one of them a formula of its own.
 
 May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex_spaces`.
 """
@@ -33,6 +38,11 @@ _PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?!
 _SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
 _SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
                     r"\s*(?=$|[,;.]|\\\\)")
+_MATRIX = re.compile(r"=\s*(?:\\left\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
+                     re.S)
+_INERTIA = re.compile(r"moments? of inertia|inertia (?:tensor|matrix)|tensor of inertia|principal ax[ie]s",
+                      re.I)
+_PRINCIPAL = ("transverse moment", "second moment", "axial moment")
 _NUMBER = re.compile(r"=\s*-?\d+(?:\.\d+)?\s*(?:$|[,;]|\\\\)")
 
 
@@ -58,6 +68,46 @@ def learn(names: nm.Names, body: str) -> None:
                 names.where[key] = f"line {line}"
     _axial_moment(names, formulas)
     _pivot_moments(names, formulas)
+    _diagonal_moments(names, body)
+
+
+def _diagonal(cells) -> list:
+    """The three diagonal atoms of a 3×3 matrix whose other entries are 0, one letter numbered 1, 2, 3; else []."""
+    if len(cells) != 3 or any(len(row) != 3 for row in cells):
+        return []
+    if any(cells[i][j].strip() != "0" for i in range(3) for j in range(3) if i != j):
+        return []
+    atoms = [nm._atoms(cells[i][i].strip()) for i in range(3)]
+    if any(len(a) != 1 for a in atoms):
+        return []
+    atoms = [a[0] for a in atoms]
+    if len({a.base for a in atoms}) != 1 or [a.sub for a in atoms] != ["1", "2", "3"] or any(a.bold for a in atoms):
+        return []
+    return atoms
+
+
+def _diagonal_moments(names: nm.Names, body: str) -> None:
+    """A diagonal inertia matrix of J_1, J_2, J_3: the principal moments (see the module docstring)."""
+    formulas = list(_MATH.finditer(body))
+    for k, m in enumerate(formulas):
+        tex = next(g for g in (m.group(1), m.group(3), m.group(5)) if g is not None) if m.group(2) is None else None
+        found = _MATRIX.search(tex) if tex else None
+        if found is None:
+            continue
+        # the prose right before the display says what the matrix is (a rotation matrix can be diagonal too)
+        before = body[formulas[k - 1].end() if k else 0:m.start()]
+        rows = [r for r in re.split(r"\\\\", found.group(2)) if r.strip()]
+        atoms = _diagonal([r.split("&") for r in rows])
+        if not atoms or not _INERTIA.search(before):
+            continue
+        keys = [(a.base, a.sub) for a in atoms]
+        heads = [rf"(?:^|\\\\|[,;&}}\n])\s*{re.escape(a.base)}_\{{?{a.sub}\}}?\s*&?\s*=" for a in atoms]
+        if any(re.search(h, f.group(0).strip("$")) for h in heads for f in formulas):
+            continue            # a moment the text gives a formula of its own is its own quantity
+        if all(_unnamed(names, key) for key in keys):
+            for key, meaning in zip(keys, _PRINCIPAL):
+                nm._put(names.symbols, key, meaning, False)
+                names.where[key] = f"line {body.count(chr(10), 0, m.start()) + 1}"
 
 
 def _axial_moment(names: nm.Names, formulas) -> None:
