@@ -297,9 +297,6 @@ SHORT = {
     ("kanamesasaki-blog-rigid-body-lagrange-inertia-tensor-euler-equations-ja", "checked"):
         "a blog post in Hughes' notation: a frame as a column of basis vectors, cross products inside sums over "
         "the points, the rate of the tensor J and the tensor J itself (not its diagonal) are not read",
-    ("spacecraft-course-notes-torque-free-momentum-sphere-energy-ellipsoid", "checked"):
-        "a notebook's torque-free sphere and ellipsoid: H^T H, the first H^2 = ... = constant (read as defining H) "
-        "and the semi-axes matched against an ellipsoid are not read",
     ("game-physics-notes-collision-impulse-relative-velocity-zh", "checked"):
         "game physics notes on the collision impulse: 1 of 11 (its slip, a number added to a vector, flagged); "
         "before and after (v_rel^-, v_rel^+) are read as names, but "

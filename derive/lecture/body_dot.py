@@ -5,7 +5,8 @@ them) dotted with any of these, ``\\hat{\\mathbf{e}}_3 \\cdot \\mathbf{L} = I_3 
 
 Takes: the values `derive.lecture.latex_parser` has read on either side of a ``\\cdot``.
 Gives: `dot`, their dot product in body components (𝛚 = ω̃, 𝐋 = (Iᵢ ω̃ᵢ)), or None when a side
-is not one of those vectors times scalars nor a form in ê₁ ê₂ ê₃.
+is not one of those vectors times scalars nor a form in ê₁ ê₂ ê₃; `row_on_column`, the same of
+a row on a column, ``\\mathbf{H}^T \\mathbf{H}``.
 
 May import: :mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic.lagrangian`, SymPy.
 """
@@ -13,7 +14,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from derive.lecture.vocabulary import BASIS, LVEC, OMEGA_VEC, Quantity, W
+from derive.lecture.vocabulary import BASIS, LVEC, OMEGA_VEC, Quantity, Transposed, W
 from derive.symbolic.lagrangian import I1, I2, I3
 
 _COMPONENTS = {OMEGA_VEC: W, LVEC: [m * w for m, w in zip((I1, I2, I3), W)]}
@@ -68,3 +69,9 @@ def dot(a, b):
     if ca is None or cb is None:
         return None
     return sum((x * y for x, y in zip(ca, cb)), sp.S.Zero)
+
+
+def row_on_column(a, b):
+    """𝐚ᵀ𝐛, a row on a column (``\\mathbf{H}^T \\mathbf{H}``): the matrix product is the number a · b
+    (`dot`); None when a is not transposed or `dot` cannot read it."""
+    return dot(a.args[0], b) if isinstance(a, Transposed) else None

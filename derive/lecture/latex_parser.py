@@ -148,7 +148,7 @@ class _Parser:
         return dot if dot is not None else named_dot(a, b, _mul)
 
     def juxtaposed(self, a, b):
-        return _mul(a, b)
+        return _mul(a, b) if (dot := body_dot.row_on_column(a, b)) is None else dot
 
     def factor(self, env):
         if self.at("op", "-"):

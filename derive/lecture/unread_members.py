@@ -14,6 +14,8 @@ a chain names the members not read. Where no two members left are neighbours in 
 of it was read: agreement of the members around a gap does not check the chain (``I_1\\dot\\omega_1
 = \\zeta_1 = (I_2 - I_3)\\omega_2\\omega_3`` with ζ₁ undefined), and ``holds`` becomes ``unchecked``
 naming them; disagreement still shows the chain wrong (it implies every member equals the others).
+A new plain name heading a chain at a vector's length (``H = |\\mathbf{H}| = \\sqrt{…}``) names that
+length once a link of the chain is judged, as a new name ending a chain at a constant names its head.
 """
 from __future__ import annotations
 
@@ -36,6 +38,8 @@ def applied_names_multiplied(text: str) -> bool:
     return bool(_APPLIED_PRODUCT.search(text))
 
 
+_LENGTH = re.compile(r"(?:\\left\s*)?(?:\||\\l?[vV]ert|\\\|)[^=|]*(?:\||\\r?[vV]ert|\\\|)\s*$")
+"""A member written as a vector's length, ``|\\mathbf{H}|``, ``\\lVert …``, ``\\|…\\|``."""
 _RELATION_END = re.compile(r"\s*(?:&\s*)?(?:=|\\equiv|\\approx)\s*(?:&\s*)?(?:\\left\s*)?$")
 
 
@@ -87,6 +91,9 @@ class UnreadMembers:
                                                                           str(members[-1]))]
         self.chain_names = [(members[k], members[0]) for k in tail if isinstance(members[k], Symbol)
                             and self._new_name(members[k]) and loose == tail]
+        if loose == [0] and isinstance(members[0], Symbol) and self._new_name(members[0]) and \
+                _LENGTH.match(self._written_member(parsed, 1).rstrip(".,;")):
+            self.chain_names = [(members[0], members[1])]   # ``H = |𝐇| = √(…)``: a new head names the length
         return self._members_kept(parsed, kept)
 
     def _identity_then_named(self, line, piece, members, loose) -> bool:
