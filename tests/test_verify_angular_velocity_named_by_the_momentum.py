@@ -58,3 +58,12 @@ def test_a_chain_restating_the_momentum_is_read_as_its_equation_of_motion_and_a_
     assert _verdicts(_text(chain), chain) == ["holds"]
     slip = r"\dot{L}_1 = I_1 \dot{\omega}_1 = (I_3 - I_2)\omega_2\omega_3"
     assert _verdicts(_text(slip), slip)[0] in ("typo", "fails")
+
+
+def test_the_momentum_names_omega_with_the_rates_written_in_differentials():
+    for row in (r"\frac{\mathrm{d} L_1}{\mathrm{d} t} \equiv I_1 \frac{\mathrm{d} \Omega_1}{\mathrm{d} t}",
+                r"\frac{dL_1}{dt} = I_1\frac{d\Omega_1}{dt}"):
+        assert nm.learn(_text(row)).meaning(Atom("Omega", sub="1")) == "angular velocity", row
+    upright = TIE.replace(r"\dot{L}_1", r"\frac{\mathrm{d} L_1}{\mathrm{d} t}").replace(
+        r"\dot{\Omega}_1", r"\frac{\mathrm{d} \Omega_1}{\mathrm{d} t}")
+    assert _verdicts(_text(upright, SECOND), upright) == ["holds"]

@@ -31,3 +31,8 @@ def test_axes_named_x_y_z_are_read_as_one_two_three():
             "$$\nI_x \\dot{\\Omega}_x - (I_y - I_z) \\Omega_y \\Omega_z = \\tau_x\n$$\n")
     claims = [c for c in kept.check_text(text) if "tau_x" in c.latex]
     assert [c.verdict for c in claims] == ["holds"] and "for x, y, z" in claims[0].why
+
+
+def test_the_index_form_with_its_rate_in_upright_differentials_holds():
+    c = _one("I_i \\frac{\\mathrm{d} \\Omega_i}{\\mathrm{d} t} - (I_j - I_k) \\Omega_j \\Omega_k = \\tau_i")
+    assert c.verdict == "holds" and "cyclic orders" in c.why

@@ -205,3 +205,11 @@ def test_the_rate_of_a_dcm_times_its_transpose_is_skew_and_gives_the_angular_vel
     measure = "{}^E\\bar{\\omega}^D \\cdot \\hat{d}_1 = \\frac{{}^E d\\hat{d}_2}{dt} \\cdot \\hat{d}_3"
     assert verdicts(display(measure))[3] == {"holds"}
     assert verdicts(display(measure.replace("\\cdot \\hat{d}_3", "\\cdot \\hat{d}_1")))[3] == {"fails"}
+
+
+def test_measure_numbers_rates_in_upright_differentials_are_read_as_their_dots():
+    w = "$$\\bar{w} = w_1\\hat{d}_1 + w_2\\hat{d}_2 + w_3\\hat{d}_3$$\n\n"
+    rate = "\\frac{{}^D \\mathrm{d}\\bar{w}}{\\mathrm{d} t} = "
+    rows = display(rate + "\\frac{\\mathrm{d} w_1}{\\mathrm{d} t}\\hat{d}_1 + \\frac{d w_2}{d t}\\hat{d}_2 + \\dot{w}_3\\hat{d}_3")
+    assert verdicts(w + rows)[5] == {"holds"}
+    assert verdicts(w + rows.replace("\\hat{d}_2 +", "\\hat{d}_3 +"))[5] == {"fails"}

@@ -85,3 +85,14 @@ def test_a_relation_opening_with_an_accent_over_an_unbraced_letter_is_put_in():
              "- \\frac{h^2}{b} \\Omega \\mathbf{e}_2 + h \\Omega \\mathbf{e}_3")
     assert verdicts(right) == {"holds"}
     assert verdicts(right.replace("- \\frac{h^2}", "+ \\frac{h^2}")) == {"fails"}
+
+
+def test_a_rate_written_in_upright_differentials_is_the_dotted_rate():
+    head = ("# A disk\n\nThe body's basis is $\\mathbf{e}_x, \\mathbf{e}_y, \\mathbf{e}_z$. Its angular velocity is\n\n"
+            "$$\\boldsymbol{\\omega} = \\dot{\\phi} \\mathbf{e}_z$$\n\n"
+            "With $\\mathbf{r}_P = R \\mathbf{e}_x$ for a point of the rim, its velocity is\n\n")
+    good = "\\mathbf{v}_P = \\boldsymbol{\\omega} \\times \\mathbf{r}_P = R \\frac{\\mathrm{d} \\phi}{\\mathrm{d} t} \\mathbf{e}_y"
+    for display, verdict in ((good, "holds"), (good.replace("= R", "= -R"), "fails")):
+        text = head + "$$" + display + "$$\n"
+        claims = kept.by_line(text).get(kept.line_of(text, "$$" + display), [])
+        assert {c.verdict for c in claims if c.kind == "identity"} == {verdict}, display

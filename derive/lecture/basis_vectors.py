@@ -5,7 +5,8 @@ body and their velocities in the body's basis, as texts on rolling bodies write 
 The basis is read as right-handed and orthonormal (what a basis named so means), each vector the
 text sets to a combination of it (in a display or in its prose: "With $\\mathbf{r}_Q = …$") is
 recorded as its three components, and the text's scalar relations (``\\dot\\psi = \\frac{R}{a}
-\\dot\\phi``, a single symbol set to an expression) are kept in order. A statement that writes a
+\\dot\\phi``, a single symbol set to an expression) are kept in order; a rate of one symbol written as a fraction,
+``\\frac{\\mathrm{d}\\phi}{\\mathrm{d}t}``, is its dot. A statement that writes a
 cross product of such vectors (𝐯 = 𝛚 × 𝐫 = …), or a chain of such combinations whose link does
 not hold, is judged link by link: the members' components are compared after the text's relations
 are put in, the latest first (a symbol a later relation brings in is not replaced by an older
@@ -18,7 +19,7 @@ each of them.
 
 Gives the mixin `BasisVectors` of `derive.lecture.notes_check.Checker`.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`,
+May import: :mod:`derive.lecture.differentials`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.vector_parser`,
 :mod:`derive.lecture.zero_test`, SymPy.
 """
 from __future__ import annotations
@@ -28,6 +29,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import differentials
 from derive.lecture import latex as lx
 from derive.lecture import vector_parser as vp
 from derive.lecture import zero_test as zt
@@ -163,6 +165,7 @@ class BasisVectors:
         """A vector of the text's set in its prose (``With $\\mathbf{r}_P = a\\mathbf{e}_x + …$``):
         recorded, no claim made."""
         state = self._basis_state()
+        latex = differentials.dotted(latex)             # d\phi/dt is the rate \dot{\phi} this reader knows
         if state is not None and BASIS.search(latex):
             self._basis_read(latex, state, claim=False)
         elif state is not None and _RELATION.match(latex) and not _NOT_ALGEBRA.search(latex):
@@ -172,6 +175,7 @@ class BasisVectors:
         """Judge a statement in the text's basis (False: not one this reader judges; a vector set
         or a scalar relation is recorded all the same)."""
         state = self._basis_state()
+        text = differentials.dotted(text)               # d\phi/dt is the rate \dot{\phi} this reader knows
         if state is None or _NOT_ALGEBRA.search(text):
             return False
         if not BASIS.search(text) and not any(v in text for v in state.get("spelled", ())):

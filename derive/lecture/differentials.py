@@ -11,8 +11,9 @@
 * ``\\frac{dq}{\\mathrm{d}t}``, ``\\frac{{}^A d\\hat{b}_x}{\\mathrm{d}\\,t}``: one derivative whose numerator sets
   the italic d and whose denominator the upright one is read in one spelling, the italic ``dt``.
 
-Takes and gives one formula's LaTeX (`derive.lecture.source.normalize` calls `written`); imports
-`derive.lecture.latex_spaces` only (what a space is).
+Takes and gives one formula's LaTeX (`derive.lecture.source.normalize` calls `written`; `dotted` is for
+the shape readers that know a rate only by its dot, ``\\frac{\\mathrm{d}\\phi}{\\mathrm{d}t}`` as
+``\\dot{\\phi}``); imports `derive.lecture.latex_spaces` only (what a space is).
 """
 from __future__ import annotations
 
@@ -32,6 +33,17 @@ _MIXED_D = re.compile(r"(\\frac\s*\{\s*(?:\^\s*(?:\{[^{}]*\}|[A-Za-z])\s*)?d(?![
 _BRACKET_RATE = re.compile(r"\\frac\s*\{\s*" + _D + r"\s*(\^\s*\{?\s*2\s*\}?\s*)?(?:\\left\s*)?"
                            r"\(((?:[^(){}]|\([^(){}]*\))*?)(?:\\right\s*)?\)\s*\}"
                            r"\s*\{\s*" + _D + r"\s*t\s*(?(1)\^\s*\{?\s*2\s*\}?\s*|)\}")
+
+_ITALIC_OR_UPRIGHT = r"\{?\s*(?:d|\\mathrm\s*\{\s*d\s*\})\s*\}?"
+# the first rate of one plain symbol with its index, d x_1 / dt (no mark, no bracket: those are other rates)
+_ONE_SYMBOL_RATE = re.compile(r"\\frac\s*\{\s*" + _ITALIC_OR_UPRIGHT + r"\s*(\\[A-Za-z]+|[A-Za-z])(?![A-Za-z])\s*"
+                              r"(_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))?\s*\}\s*\{\s*" + _ITALIC_OR_UPRIGHT + r"\s*t\s*\}")
+
+
+def dotted(text: str) -> str:
+    """``text`` with each first rate of one plain symbol written as a fraction, ``\\frac{d x_1}{dt}`` or
+    ``\\frac{\\mathrm{d} x_1}{\\mathrm{d} t}``, written with the dot, ``\\dot{x}_1``."""
+    return _ONE_SYMBOL_RATE.sub(lambda m: r"\dot{" + m.group(1) + "}" + (m.group(2) or ""), text)
 
 
 def _code_rate(text: str) -> str:

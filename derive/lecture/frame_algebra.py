@@ -14,6 +14,8 @@ telescopes). A statement giving all three unit vectors of one frame in another's
 the sines and cosines of one angle (``\hat{a}_x = \cos\theta \hat{n}_x + \sin\theta \hat{n}_y``, or
 the matrix form), states that frame's orientation: a simple orientation about the axis the two
 frames share, held to the right-hand sense (``passive(axis, θ)``), which then orients the frame.
+A derivative's differentials may be italic or upright (``\frac{{}^A d\bar{u}}{dt}``,
+``\frac{\mathrm{d} u_1}{\mathrm{d} t}``); the rate of one name so written is its dot (``\dot{u}_1``).
 
 May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.vocabulary`, :mod:`derive.symbolic`, SymPy.
 """
@@ -33,13 +35,16 @@ _DCM = r"\^\s*\{?\s*([A-Z])\s*\}?\s*" + BOLD + r"\s*(?:\{\s*C\s*\}|C(?![A-Za-z])
 _GREEK = ("alpha beta gamma delta epsilon zeta eta theta vartheta iota kappa lambda mu nu xi pi rho sigma "
           "tau upsilon phi varphi chi psi omega").split()
 _FRAME = r"\^\s*\{?\s*([A-Z])\s*\}?"
+# the differential d, italic or upright (\mathrm{d}), and a fraction's denominator dt in either
+_D = r"(?:d(?![a-z])|\\mathrm\s*\{\s*d\s*\})"
+_DT = r"\{\s*(?:d|\\mathrm\s*\{\s*d\s*\})\s*t\s*\}"
 # each kind of token and its pattern, tried in this order
 _KINDS = [
     ("unit", re.compile(_UNIT)),
     ("dcm", re.compile(_DCM)),
     ("ang", re.compile(_FRAME + r"\s*\\(bar|hat)\s*\{\s*\\(omega|alpha)\s*\}\s*" + _FRAME)),
-    ("rate", re.compile(r"\\frac\s*\{\s*" + _FRAME + r"\s*d(?![a-z])((?:[^{}]|\{[^{}]*\})*)\}\s*\{\s*dt\s*\}")),
-    ("ddt", re.compile(r"\\frac\s*\{\s*d(?![a-z])((?:[^{}]|\{[^{}]*\})*)\}\s*\{\s*dt\s*\}")),
+    ("rate", re.compile(r"\\frac\s*\{\s*" + _FRAME + r"\s*" + _D + r"((?:[^{}]|\{[^{}]*\})*)\}\s*" + _DT)),
+    ("ddt", re.compile(r"\\frac\s*\{\s*" + _D + r"((?:[^{}]|\{[^{}]*\})*)\}\s*" + _DT)),
     ("env", re.compile(r"\\begin\s*\{\s*[bp]matrix\s*\}")),
     ("func", re.compile(r"\\(?:cos|sin)(?![A-Za-z])")),
     ("greek", re.compile(r"\\(" + "|".join(_GREEK) + r")(?![A-Za-z])")),
@@ -50,6 +55,8 @@ _KINDS = [
     ("op", re.compile(r"\\(?:cdot|times|ldots|neq|ne)(?![A-Za-z])|[-+=(){}|]")),
     ("sub", re.compile(r"_\s*\{\s*([A-Za-z0-9]+)\s*\}|_\s*([A-Za-z0-9])")),
 ]
+# what a ddt token differentiates when it is one name with its index (u_1): its rate is that name's dot
+_ONE_NAME = re.compile(r"\s*([a-z])\s*(?:_\s*\{\s*([A-Za-z0-9]+)\s*\}|_\s*([A-Za-z0-9]))?\s*")
 _DROP = re.compile(r"\{\}(?=\s*\^)|\\left(?![A-Za-z])|\\right(?![A-Za-z])|\\[,;!]|\\quad|\\textrm\{\.\}|[.,]\s*$")
 AXES = {"x": 0, "y": 1, "z": 2, "1": 0, "2": 1, "3": 2}
 
@@ -355,6 +362,10 @@ def tokens(text: str) -> list:
             out.append(("post", m.group(1) or m.group(2), None))
         elif kind == "op":
             out.append(("op", {"\\ne": "\\neq"}.get(val, val), None))
+        elif kind == "ddt" and _ONE_NAME.fullmatch(m.group(1)):
+            one = _ONE_NAME.fullmatch(m.group(1))
+            sub = one.group(2) or one.group(3)
+            out.append(("dot", one.group(1) + ("_" + sub if sub else ""), None))
         else:
             out.append((kind, val, m.groups()))
         at = m.end()

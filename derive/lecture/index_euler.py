@@ -4,15 +4,15 @@ Takes: a statement of a display the other rules left unchecked. Gives: the mixin
 reads a statement whose subscripts are exactly the three letters i, j, k (``I_i \dot\Omega_i -
 (I_j - I_k)\Omega_j\Omega_k = \tau_i``, the text's "for each axis", "(i, j, k) cyclic") or exactly
 x, y, z (``I_x \dot\omega_x - (I_y - I_z)\omega_y\omega_z = \tau_x``, the body's axes named by
-letters), and that writes a rate of the angular velocity, moments I, the angular velocity and
-perhaps the torque τ and nothing else with a subscript. It puts the axes 1, 2, 3 for the letters,
-(i, j, k) taking the three cyclic orders of (1, 2, 3) and (x, y, z) the order (1, 2, 3), and the
+letters), and that writes a rate of the angular velocity (dotted, or d/dt of one component), moments
+I, the angular velocity and perhaps the torque τ and nothing else with a subscript. It puts the axes
+1, 2, 3 for the letters, (i, j, k) taking the three cyclic orders of (1, 2, 3) and (x, y, z) the order (1, 2, 3), and the
 statement holds when every such instance is one of Euler's equations under the section's settings.
 
 Left alone (unchecked, never flagged): a statement with any instance that is not, since the letters
 may name the axes in another order or the text may mean other axes; subscripts beside those three
-letters; a statement another rule gave a verdict. May import: :mod:`derive.lecture.latex`,
-:mod:`derive.lecture.comparing`, SymPy.
+letters; a statement another rule gave a verdict. May import: :mod:`derive.lecture.differentials`,
+:mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, SymPy.
 """
 from __future__ import annotations
 
@@ -20,6 +20,7 @@ import re
 
 import sympy as sp
 
+from derive.lecture import differentials
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
 
@@ -35,7 +36,7 @@ def instances(piece: str) -> list[str]:
     subs = {m.group(4) or m.group(5) for m in found}
     if not found or any(m.group(1) not in _BASES for m in found):
         return []
-    if not re.search(r"\\dot\s*\{?\s*\\(omega|Omega)", piece):
+    if not re.search(r"\\dot\s*\{?\s*\\(omega|Omega)", differentials.dotted(piece)):
         return []
     for letters, orders in _LABELS.items():
         if subs == set(letters):

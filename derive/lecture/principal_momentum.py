@@ -7,15 +7,18 @@ the body angular velocity, as if the prose had named it. The reader's own ω nee
 a statement in it that does not hold would be left unchecked, as one in a named letter is). Read from a member of a display's chain
 (``=`` or ``\\equiv``) that is the angular momentum's component (L, M, J or H, with an index 1 to 3 or
 a letter) next to a member that is the moment with the same index times the other letter with the
-same index, the two with the same number of dots. Takes the rendered text; gives the symbols so
-named, each with its line; `derive.lecture.names` binds them unless the prose named them otherwise.
-May import: the standard library, :mod:`derive.lecture.source`, :mod:`derive.lecture.statements`.
+same index, the two with the same number of dots; a rate written as a fraction of differentials
+(``\\frac{d L_1}{dt}``, ``\\frac{\\mathrm{d} \\Omega_1}{\\mathrm{d} t}``) is read as the dotted letter.
+Takes the rendered text; gives the symbols so named, each with its line; `derive.lecture.names` binds
+them unless the prose named them otherwise.
+May import: the standard library, :mod:`derive.lecture.differentials`, :mod:`derive.lecture.source`,
+:mod:`derive.lecture.statements`.
 """
 from __future__ import annotations
 
 import re
 
-from derive.lecture import source, statements
+from derive.lecture import differentials, source, statements
 
 _DISPLAY = re.compile(r"\$\$(.+?)\$\$|\\\[(.+?)\\\]", re.S)
 _GAP = r"(?:~|\\[,;:!]|\s)*"
@@ -43,7 +46,7 @@ def velocity_letters(body: str) -> list[tuple[int, str]]:
     out = []
     for m in _DISPLAY.finditer(body):
         line = body.count("\n", 0, m.start()) + 1
-        for st in statements.statements(source.normalize(m.group(1) or m.group(2))):
+        for st in statements.statements(differentials.dotted(source.normalize(m.group(1) or m.group(2)))):
             members = _MEMBER.split(st)
             for left, right in zip(members, members[1:]):
                 lm = _MOMENTUM.match(left)
