@@ -283,6 +283,18 @@ def _members(text, model):
     return values, rels, members
 
 
+def _read_all(text, models):
+    """The statement read under each model, or None as soon as one draw does not read it (the
+    readings after it would be discarded: most statements fail on the first draw as on all)."""
+    read = []
+    for m in models:
+        r = _members(text, m)
+        if r is None:
+            return None
+        read.append(r)
+    return read
+
+
 def _equal(a, b, t0) -> bool:
     """Whether two values are equal at t0 (each entry an exact rational there)."""
     if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase):
@@ -323,8 +335,8 @@ class RotationProducts:
             letters = (rotations, vectors, defs, inertia)
             rated = _RATE.search(text) is not None
             models = [_Model(*letters, draw, not rated) for draw in _DRAWS]
-            read = [_members(text, m) for m in models]
-            if any(r is None for r in read):
+            read = _read_all(text, models)
+            if read is None:
                 seen |= _letters(text)
                 continue
             used, turns = models[0].used, models[0].turns
