@@ -315,7 +315,7 @@ SHORT = {
         "sum energies the reader does not read",
 }
 
-FLOOR = {"checked": 913, "slips_flagged": 108, "holds_flagged": 0}
+FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
