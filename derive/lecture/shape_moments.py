@@ -194,11 +194,7 @@ class ShapeMoments:
         lhs = piece.split("=")[0].strip()
         if len(points) != 1 or not _DISTANCE.match(piece) or f"${lhs}$" not in said or "distance" not in prose:
             return
-        try:
-            parsed = lx.parse(piece, self.vocab)
-        except (lx.NotRead, lx.Words, ValueError, TypeError):
-            return
-        value = parsed.members[-1].value if len(parsed.members) == 2 else None
+        value = self._set_value(piece)
         if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase) or len(value.free_symbols) != 1:
             return
         length = next(iter(value.free_symbols))
@@ -207,6 +203,14 @@ class ShapeMoments:
         for c in added:
             c.kind, c.verdict = "centre of a named shape", "holds"
             c.why = f"the centre of mass of a uniform {found[0]}, its distance from the {points[0]} (exact)"
+
+    def _set_value(self, piece):
+        """The value a two-member statement sets its head to, or None when it does not read as one."""
+        try:
+            parsed = lx.parse(piece, self.vocab)
+        except (lx.NotRead, lx.Words, ValueError, TypeError):
+            return None
+        return parsed.members[-1].value if len(parsed.members) == 2 else None
 
     def _shape_volume(self, line, piece, added):
         """Judge ``V = \\pi R^2 h`` (the section speaking of a volume) or ``\\rho = \\frac{3M}{\\pi d^2 h}``
@@ -219,11 +223,7 @@ class ShapeMoments:
         found = _body(text)
         if found is None or found[0] not in _VOLUMES or ("volume" if lhs == "V" else "density") not in text:
             return
-        try:
-            parsed = lx.parse(piece, self.vocab)
-        except (lx.NotRead, lx.Words, ValueError, TypeError):
-            return
-        value = parsed.members[-1].value if len(parsed.members) == 2 else None
+        value = self._set_value(piece)
         if not isinstance(value, sp.Expr) or isinstance(value, sp.MatrixBase):
             return
         value = value.xreplace({x: sp.Symbol(x.name.strip("|"), positive=True) for x in value.free_symbols})
