@@ -38,3 +38,9 @@ def test_a_diagonal_matrix_the_prose_does_not_call_the_inertia_is_no_name():
 
 def test_a_moment_the_text_gives_a_formula_of_its_own_is_no_name():
     assert _verdicts(extra="The disk has $J_1 = m a^2$.\n\n") == {"unchecked"}
+
+
+def test_the_matrix_in_brackets_sized_by_hand_or_plain_names_them_too():
+    for opening, closing in ((r"\bigl[", r"\bigr]"), (r"\Bigl(", r"\Bigr)"), ("[", "]")):
+        sized = MATRIX.replace(r"\left[", opening).replace(r"\right]", closing)
+        assert _verdicts(matrix=sized) == {"holds"}, opening

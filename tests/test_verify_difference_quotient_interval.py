@@ -17,6 +17,12 @@ def test_a_change_over_the_bare_time_beside_one_over_its_interval_is_a_typo():
     assert "R\\frac{\\Delta\\vartheta}{\\Delta t}" in c.correction
 
 
+def test_a_space_set_after_the_delta_changes_nothing():
+    for spaced in ("v = \\frac{\\Delta \\, x}{\\Delta \\, t} = R\\frac{\\Delta\\vartheta}{t}",
+                   "v = \\frac{\\Delta x}{\\Delta t} = R\\frac{\\Delta \\; \\vartheta}{ t }"):
+        assert delta_quotients.slip(spaced) is not None, spaced
+
+
 def test_quotients_over_their_intervals_or_a_relative_change_are_not_flagged():
     for formula in ("v = \\frac{\\Delta x}{\\Delta t} = R\\frac{\\Delta\\vartheta}{\\Delta t} = R\\omega",
                     "\\frac{\\Delta t}{t} = \\frac{\\Delta x}{\\Delta t}",

@@ -8,16 +8,20 @@ the rate over the interval the first sets (``R\\frac{\\Delta\\vartheta}{\\Delta 
 relative change of the variable itself (``\\frac{\\Delta t}{t}``) and a statement with no Δ-quotient
 beside it are not read. The reader judges it a typo without reading the rest of the statement.
 
-May import: the standard library.
+May import: :mod:`derive.lecture.latex_spaces`.
 """
 from __future__ import annotations
 
 import re
 
-_DELTA = r"\\(?:Delta|delta)\s*"
+from derive.lecture.latex_spaces import SPACE
+
+_DELTA = r"\\(?:Delta|delta)(?![A-Za-z])" + SPACE
 _LETTER = r"(?:\\[A-Za-z]+|[A-Za-z])"
-_OVER_INTERVAL = re.compile(r"\\[dt]?frac\s*\{\s*" + _DELTA + _LETTER + r"\s*\}\s*\{\s*" + _DELTA + r"(?P<v>" + _LETTER + r")\s*\}")
-_OVER_BARE = re.compile(r"\\[dt]?frac\s*\{\s*" + _DELTA + r"(?P<x>" + _LETTER + r")\s*\}\s*\{\s*(?P<v>" + _LETTER + r")\s*\}")
+_OVER_INTERVAL = re.compile(r"\\[dt]?frac\s*\{" + SPACE + _DELTA + _LETTER + SPACE + r"\}\s*\{" + SPACE + _DELTA
+                            + r"(?P<v>" + _LETTER + r")" + SPACE + r"\}")
+_OVER_BARE = re.compile(r"\\[dt]?frac\s*\{" + SPACE + _DELTA + r"(?P<x>" + _LETTER + r")" + SPACE + r"\}\s*\{" + SPACE
+                        + r"(?P<v>" + _LETTER + r")" + SPACE + r"\}")
 
 
 def slip(text: str) -> tuple[str, str] | None:

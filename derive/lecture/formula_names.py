@@ -38,7 +38,8 @@ _PAIR = re.compile(r"(?<![\\A-Za-z])([IJ])_\{?([xy])\}?\s*=\s*\1_\{?([xy])\}?(?!
 _SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
 _SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
                     r"\s*(?=$|[,;.]|\\\\)")
-_MATRIX = re.compile(r"=\s*(?:\\left\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
+# the matrix in brackets sized by \\left or by hand (\\bigl[), or plain, or none
+_MATRIX = re.compile(r"=\s*(?:\\(?:left|[bB]igg?l?)\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
                      re.S)
 _INERTIA = re.compile(r"moments? of inertia|inertia (?:tensor|matrix)|tensor of inertia|principal ax[ie]s",
                       re.I)
