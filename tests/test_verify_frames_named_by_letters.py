@@ -60,3 +60,13 @@ def test_a_letter_the_prose_names_as_both_frames_names_neither():
 def test_a_vector_bracketed_with_the_inertial_frames_letter_keeps_its_label():
     text = _correct().replace("[\\bm{L}]_S", "[\\bm{L}]_{S_0}")
     assert "holds" not in _verdicts(text, 12)
+
+
+def test_a_non_inertial_frame_is_not_read_as_an_inertial_one():
+    text = _correct().replace("an inertial frame $S_0$", "a non-inertial frame $S_0$")
+    assert "holds" not in _verdicts(text, 6)
+
+
+def test_a_body_fixed_frame_is_the_body_frame():
+    text = _correct().replace("the body frame $S$", "the body-fixed frame $S$")
+    assert _verdicts(text, 6) == ["holds"] and _verdicts(text, 12) == ["holds"]

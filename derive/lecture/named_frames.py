@@ -20,10 +20,11 @@ import re
 from derive.lecture.latex_spaces import SPACE
 from derive.lecture.latex_spellings import VECTOR_MARK
 
-_INERTIAL = r"inertial|space|space-fixed|fixed|laboratory|lab|non-rotating|stationary"
-_BODY = r"body|body-fixed|rotating|moving|co-rotating"
-# the frame's kind right before "frame" (or "reference frame"), then its letter in inline math
-_NAMED = re.compile(r"\b(?P<kind>" + _INERTIAL + "|" + _BODY + r")\s+(?:reference\s+)?frame\s+"
+_INERTIAL = r"inertial|space-fixed|space|fixed|laboratory|lab|non-rotating|stationary"
+_BODY = r"body-fixed|body|rotating|moving|co-rotating"
+# the frame's kind right before "frame" (or "reference frame"), then its letter in inline math; a kind
+# never read off the end of a hyphenated word ("non-inertial", "body-fixed")
+_NAMED = re.compile(r"(?<![\w-])(?P<kind>" + _INERTIAL + "|" + _BODY + r")\s+(?:reference\s+)?frame\s+"
                     r"(?:of\s+reference\s+)?\$\s*(?P<label>[A-Za-z](?:\s*_\s*(?:\{\s*[A-Za-z0-9]\s*\}|[A-Za-z0-9]))?)\s*\$",
                     re.I)
 _BODY_KIND = re.compile(r"(?:" + _BODY + r")$", re.I)
