@@ -58,16 +58,6 @@ SHORT = {
         "a problem set in matrix notation (p, pi about a moving point, hat maps of Xbar and Omega, I and I_c, "
         "the e-frame and b-frame equations) and a sample answer on the parallel axis theorem in ||x||^2 I_{3x3} - x x^T: "
         "equations that hold for a motion the text does not write out are not read",
-    ("edinburgh-lagrangian-dynamics-euler-equations-free-tops", "checked"):
-        "a determinant proof past its first links (the rows of det(R - I) = det((R - I)^T) = ... = -det(R - I), "
-        "det(-A) = (-1)^3 det A, det(R - I) = 0) "
-        "and the inertia tensor about another origin (I', [L]_S, "
-        "[A-dot]_{S_0}) are not read (the principal moments I_1' = I_1 + M l^2 about a point the prose puts a "
-        "distance l from the centre of mass are); the particle sums over a with x_ai components and the tensor's matrix, "
-        "Euler's equations (also with a case's '= 0' after them), the asymmetric top's linearisation in eps_i, "
-        "the symmetric top's rates in the text's own Omega, the angles tau and zeta (A, the radius of omega's "
-        "circle, named by J^2 = I_1^2 A^2 + I_3^2 omega_3^2), J = (I_1 omega_1, I_2 omega_2, I_3 omega_3) written as a "
-        "triple and the kinetic energy are checked",
     ("edinburgh-lagrangian-dynamics-heavy-top-lagrange-zyz", "checked"):
         "its moments, named in prose (\"the equal moments called A\", I_3 = C), are tied, so the Lagrangian, the "
         "momenta, the energy, the zone function and the sleeping top's L_z = Cn (imposed) are checked, and so are "

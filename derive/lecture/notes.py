@@ -35,6 +35,7 @@ from derive.errors import SceneError
 from derive.lecture import bracket_cross
 from derive.lecture import formula_names
 from derive.lecture import moment_letters
+from derive.lecture import named_frames
 from derive.lecture import names as nm
 from derive.lecture import notebook
 from derive.lecture import package_macros
@@ -324,6 +325,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
                 events.append((starts[k - 1] + 1, Item("assumption", k, latex=inner, lead=title)))
     prev_end = 0
     in_prose = prose_definitions.ProseDefinitions(body, tuple(angles), dict(declared.get("symbols") or {}))
+    frames = named_frames.learned(body)
     named: list = []
     for m in source.MATH.finditer(body):
         line = line_of(m.start())
@@ -337,7 +339,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             next((x.strip() for x in reversed(lead_line) if x.strip()), "")
         if m.group("i") is None:
             raw = next(m.group(g) for g in ("d", "b", "e") if m.group(g) is not None)
-            latex = source.normalize(raw, user_macros)
+            latex = named_frames.relabelled(source.normalize(raw, user_macros), frames)
             if not latex:
                 continue            # the file's macro definitions, nothing to read
             word = _last_word(near) if near and not near.endswith((".", ";")) else ""
@@ -349,7 +351,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             for one in components(latex):
                 events.append((m.start(), Item(kind, line, latex=one, lead=near, display=True)))
             continue
-        latex = source.normalize(m.group("i"), user_macros)
+        latex = named_frames.relabelled(source.normalize(m.group("i"), user_macros), frames)
         line_text = body[starts[line - 1]:body.find("\n", m.start()) if body.find("\n", m.start()) >= 0 else len(body)]
         signs = _signs(line_text)
         if signs and not _RELATION.search(latex):
