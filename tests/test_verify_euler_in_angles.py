@@ -25,3 +25,15 @@ def test_euler_s_third_equation_in_3_1_3_angles_with_the_text_s_torque_holds():
 def test_a_slip_in_euler_s_equation_in_the_angles_is_never_held():
     slipped = ROW3.replace("(\\mathbb{I}_1-\\mathbb{I}_2)", "(\\mathbb{I}_2-\\mathbb{I}_1)")
     assert all(c.verdict != "holds" for c in kept.check_text(HEAD + slipped) if c.line == 5)
+
+
+RATE_IN_ANGLES = ("---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n# Rates\n\nThe third body component "
+                  "$\\omega_3 = \\dot\\phi\\cos\\theta + \\dot\\psi$ changes at the rate\n\n"
+                  "$$\\dot{\\omega}_3 = \\ddot{\\phi}\\cos\\theta SIGN \\dot{\\phi}\\dot{\\theta}\\sin\\theta + \\ddot{\\psi}$$\n")
+
+
+def test_the_rate_of_a_body_component_written_in_the_angles_holds_as_kinematics_not_an_equation_of_motion():
+    (claim,) = [c for c in kept.check_text(RATE_IN_ANGLES.replace("SIGN", "-")) if c.line == 9]
+    assert claim.verdict == "holds" and "the rate of the angular velocity's components" in claim.why
+    (slip,) = [c for c in kept.check_text(RATE_IN_ANGLES.replace("SIGN", "+")) if c.line == 9]
+    assert slip.verdict != "holds"

@@ -62,3 +62,10 @@ def test_spins_at_rates_written_d_dt_are_read_as_dotted_ones():
                      "+ R_z(b) \\left( \\frac{dc}{dt} \\hat{y} \\right) \\right)") == {"holds"}
     assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + R_z(b) \\left( \\frac{d b}{d t} \\hat{y} \\right)") == {"fails"}
     assert _verdicts("\\vec{\\omega} = \\frac{d a}{d t} \\hat{z} + \\frac{d b}{d t} R_z(a) \\hat{x}") == {"holds"}
+
+
+def test_spins_about_another_axis_than_the_stated_sequence_turns_that_angle_are_never_held():
+    head = "---\nconvention: z-x-z\nangles: [\\phi, \\theta, \\psi]\n---\n" + HEAD
+    spins = "\\vec{\\omega} = \\dot{\\phi} \\hat{z} + R_z(\\phi) \\left( \\dot{\\theta} \\hat{x} + R_x(\\theta) \\left( \\dot{\\psi} \\hat{%s} \\right) \\right)"
+    assert _verdicts(spins % "z", head) == {"holds"}
+    assert _verdicts(spins % "x", head) == {"unchecked"}

@@ -163,3 +163,22 @@ def test_a_transpose_of_a_name_without_a_shape_is_left_unchecked():
                                       r"\frac{d^2 o}{dt^2} + M\left(\frac{d^2 o}{dt^2}\right)^T\frac{do}{dt}\right)"
                                       r" = M\left(\frac{do}{dt}\right)^T\frac{d^2 o}{dt^2}$$" + "\n")
     assert [c.verdict for c in claims] == ["unchecked"]
+
+
+def test_the_operator_d_dt_before_a_bracket_is_the_rate_of_the_bracket_times_what_follows():
+    assert _value(r"\frac{d}{dt}\left(\alpha\right) \sin\beta = 0") == _value(r"\dot\alpha \sin\beta = 0")
+    assert _value(r"\frac{d}{dt}(\beta) \cos\alpha + \frac{d}{dt}(\gamma) = 0") == \
+        _value(r"\dot\beta \cos\alpha + \dot\gamma = 0")
+
+
+@pytest.mark.parametrize("unclear", [
+    r"\frac{d}{dt}\alpha \sin\beta = 0",          # the rate of α times sin β, or of the product
+    r"\frac{d}{dt}\left(\beta\right)^2 = 0",      # the rate squared, or the rate of the square
+])
+def test_the_operator_d_dt_before_a_product_of_a_rate_is_not_read(unclear):
+    with pytest.raises(lx.NotRead):
+        _value(unclear)
+
+
+def test_a_product_of_constants_after_the_operator_d_dt_is_its_rate():
+    assert _value(r"\frac{d}{dt} I_1 \tilde\omega_1 = 0") == _value(r"\frac{d}{dt}\left(I_1 \tilde\omega_1\right) = 0")

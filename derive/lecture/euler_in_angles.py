@@ -7,7 +7,9 @@ Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ with ω̃ and ω̃̇ in the convention's a
 (ω̃ from Rᵀ Ṙ, ω̃̇ its time derivative by the chain rule). One symbol of the text's own that enters
 linearly is the torque's component: its term is dropped before the comparison (τᵢ, written T₁ᵉ).
 It only ever says *holds*: a statement it cannot match goes on to the other readings (the heavy
-top's Lagrange equation), so it adds no flag of its own.
+top's Lagrange equation), so it adds no flag of its own. Its `_rate_in_angles` says why a statement
+with ω̃̇ᵢ and the angles' accelerations holds as the rate of ω̃'s components in the angles (kinematics,
+which Euler's equations do not decide).
 
 May import: SymPy and :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`.
 """
@@ -54,6 +56,17 @@ class EulerInAngles:
                           f"a multiple ({self.tex(k)}) of Euler's equation {i + 1} in the angles{torque}: {how}")
                 return True
         return False
+
+    def _rate_in_angles(self, members) -> str | None:
+        """The why when ``members`` (lhs, rhs), with ω̃̇ᵢ and the angles' accelerations, agree once ω̃ and
+        ω̃̇ are put in the angles (ω̃̇₃ = φ̈ cos θ − φ̇ θ̇ sin θ + ψ̈ in z-x-z): the rate of ω̃'s components,
+        true of every motion, so no equation of motion; else None."""
+        raw = self._resolve(members[0] - members[1])
+        if isinstance(raw, sp.MatrixBase) or not free(raw) & set(ACCELS) or not free(raw) & set(lx.WD):
+            return None
+        in_angles = {**dict(zip(lx.W, self.d.omega)), **dict(zip(lx.WD, self._body_rate()))}
+        ok, how = self._compare(raw.xreplace(in_angles), sp.S.Zero, "rate-in-angles")
+        return f"the rate of the angular velocity's components in the angles: {how}" if ok else None
 
     def _euler_targets(self) -> list:
         """Euler's residuals in the angles under the section's settings, kept per derivation and settings."""

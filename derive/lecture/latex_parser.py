@@ -18,8 +18,8 @@ from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.definite_integrals import definite_integral
 from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.particle_sums import over_particles
-from derive.lecture.written_rates import (NOT_PARTIAL, derivative, partial_variable, rate_along, rate_argument,
-                                         rate_of, reading, symbol_rate, written_rate)
+from derive.lecture.written_rates import (NOT_PARTIAL, operand_rate, partial_variable, rate_along, rate_argument,
+                                         reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import components, components_follow, cross, frame_label, named_dot, outer, squared_column
 from derive.symbolic.rotations import ANGLES, RATES
 
@@ -440,10 +440,7 @@ class _Parser:
         """dⁿx/dtⁿ written d/dt (`derive.lecture.written_rates`), read as ẋ, ẍ are (ẋ(0) too)."""
         self.i = end
         if x is None:                               # the operator d/dt: of what follows it
-            start, value = end, self.term({})
-            inner = [t for t in self.toks[start:self.i] if not (t.kind == "op" and t.value in "()")]
-            rate = rate_of(reading(self), inner[0].value, n) if len(inner) == 1 and inner[0].kind == "atom" else None
-            return self._evaluated(rate if rate is not None else derivative(value, n))
+            return self._evaluated(operand_rate(self, n))
         tok = self.toks[x]
         value = symbol_rate(reading(self), tok, n, self.vocab if self.components_in_rates else None)
         at = self._at_a_time(Tok("atom", tok.value.with_(dots=tok.value.dots + n), tok.pos), value) \

@@ -50,7 +50,7 @@ class Motion:
             names = ", ".join(sorted(self.tex(x) for x in used))
             self._add(line, piece, "equation of motion", "holds", f"the text's own definition of {names}, restated")
             return
-        branch = None if self.ctx.first_order else self._on_a_branch(members)
+        branch = self._rate_in_angles(members) or (None if self.ctx.first_order else self._on_a_branch(members))
         if branch:
             self._add(line, piece, "equation of motion", "holds", branch)
             return

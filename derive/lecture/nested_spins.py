@@ -241,6 +241,13 @@ def named_turns(body: str, upto: int) -> dict:
     return {name: turns.pop() for name, turns in found.items() if len(turns) == 1}
 
 
+def off_convention(order: list, convention: str, angles: tuple) -> tuple | None:
+    """The first turn (axis, angle) of ``order`` about another axis than the stated ``convention``
+    turns that angle about (``angles`` its names, ``phi``), or None."""
+    axes = dict(zip(angles, convention.split("-")))
+    return next(((axis, angle) for axis, angle in order if axes.get(angle.lstrip("\\"), axis) != axis), None)
+
+
 def _spell(axis: str, angle: str) -> str:
     return f"R_{axis}({angle})"
 
@@ -261,7 +268,7 @@ class NestedSpins:
         if len(parts) == 2 and (_OMEGA.fullmatch(parts[0]) or _PARTIAL.fullmatch(parts[0])):
             terms = expanded(parts[1], products)
             order = chained(terms) if terms else None
-            if order:
+            if order and not self._off_convention(line, piece, order):
                 self._add(line, piece, "identity", "holds",
                           f"the angular velocity of {' '.join(_spell(a, q) for a, q in order)}: each spin about its own "
                           "turn's axis, carried by the turns before it")
@@ -288,6 +295,8 @@ class NestedSpins:
                       f"by {angle} (in any order of the turns, active or passive), not the turn about {turn_axis} by {turn_angle}"
                       + closing)
             return True
+        if self._off_convention(line, piece, order):
+            return True
         product = " ".join(_spell(axis, angle) for axis, angle in order)
         written = [p for p in _written_products(self.notes.body, line) if {a for _, a in p} == {a for _, a in order}]
         if any(p != order for p in written):
@@ -298,6 +307,15 @@ class NestedSpins:
                   f"the angular velocity of {product}, the product its matrices name: each spin about its own turn's "
                   "axis, carried by the turns before it" + closing)
         return True
+
+    def _off_convention(self, line, piece, order) -> bool:
+        """True (the statement left unchecked) when a spin turns one of the angles of the convention the
+        text states about another axis: the product the matrices name is then not the text's rotation."""
+        off = off_convention(order, self.notes.convention, self.notes.angles) if self.notes.convention_stated else None
+        if off is not None:
+            self._add(line, piece, "identity", "unchecked", f"the spins name {_spell(*off)}, while the text's "
+                      f"{self.notes.convention} sequence turns {off[1]} about another axis")
+        return off is not None
 
 
 def _as_angular_velocity(piece: str) -> str:

@@ -12,7 +12,8 @@ of the derivation (p_α, I₁) and of anything else (a product) stays d/dt of it
 
 Takes the formula reader's tokens (`derive.lecture.vocabulary.scan`) and its reading of an atom
 (`derive.lecture.vocabulary.Vocabulary.resolve`, or a parser's own); gives
-:func:`written_rate` (where a rate written d/dt is, among the tokens), :func:`rate_of` and
+:func:`written_rate` (where a rate written d/dt is, among the tokens), :func:`operand_rate` (the operator
+d/dt, of what follows it), :func:`rate_of` and
 :func:`symbol_rate` (what it reads as), :func:`partial_variable` (a rate as the variable of ∂),
 :func:`rate_argument` (a rate in a name's list of arguments), :func:`rate_along` (dx/dy of two of
 the text's own symbols, y not the time) and :func:`opens_with_rate` (a statement that gives a rate).
@@ -151,6 +152,33 @@ def derivative(value, n: int):
     for _ in range(n):
         value = DT(value)
     return value
+
+
+def operand_rate(parser, n: int):
+    """dⁿ/dtⁿ written as an operator (``\\frac{d}{dt}``), of what follows it at ``parser.i``.
+
+    A bracket right after the operator is its operand, and what follows the bracket multiplies the
+    rate (``\\frac{d}{dt}(\\phi) \\sin\\theta`` is φ̇ sin θ); without a bracket the operand is the
+    whole product (``\\frac{d}{dt} m \\mathbf{v}``). A rate of one symbol reads as :func:`rate_of`.
+
+    Raises
+    ------
+    NotRead
+        When the operand is unclear: a power after the bracket (of the rate, or inside it), or a
+        product without a bracket whose first factor has a rate of its own (``\\frac{d}{dt}\\phi
+        \\sin\\theta``: φ̇ sin θ, or the rate of the product).
+    """
+    toks, start = parser.toks, parser.i
+    bracketed = _is(toks, start, "op", "(")
+    value = parser.paren({}) if bracketed else parser.term({})
+    inner = toks[start + 1:parser.i - 1] if bracketed else toks[start:parser.i]
+    if bracketed and _is(toks, parser.i, "op", "^"):
+        raise NotRead("a power after the rate of a bracket: of the rate, or inside it")
+    first = inner[0] if inner and inner[0].kind == "atom" else None
+    rate = rate_of(reading(parser), first.value, n) if first is not None else None
+    if rate is not None and len(inner) > 1 and not bracketed and not _is(inner, 1, "op", "^"):
+        raise NotRead("d/dt before a product whose first factor has a rate of its own: of it, or of the product")
+    return rate if rate is not None and len(inner) == 1 else derivative(value, n)
 
 
 def symbol_rate(read, tok, n: int, vocab=None):
