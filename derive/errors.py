@@ -12,6 +12,11 @@ class SceneError(ValueError):
     """
 
 
+def scene_error(source: str, key: str, what: str) -> SceneError:
+    """``<source>: <key>: <what>`` on one line: newlines a value might smuggle in are flattened."""
+    return SceneError(" ".join(f"{source}: {key}: {what}".splitlines()))
+
+
 class IntegrationError(RuntimeError):
     """Numerical failure: step size underflow, non-finite state, coordinate singularity,
     Newton failure or tolerance not met. The message says where (time, quantity).

@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass
 
 from derive.contact.laws import EXTENSIONS
-from derive.errors import SceneError
+from derive.errors import scene_error
 from derive.methods.registry import DEFAULT_METHOD, REFERENCE_METHODS
 from derive.symbolic.effects import TABLES
 
@@ -107,20 +107,16 @@ class ContactScene:
         return self  # rtol, atol as the [simulate] table of other scenes
 
 
-def _fail(source, key, what):
-    return SceneError(" ".join(f"{source}: {key}: {what}".splitlines()))
-
-
 def _number(source, t, table, key, default=None, test=None, must="a finite number"):
     if key not in t:
         if default is None and key in _REQUIRED.get(table, ()):
-            raise _fail(source, f"{table}.{key}", "missing")
+            raise scene_error(source, f"{table}.{key}", "missing")
         return default
     v = t[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-        raise _fail(source, f"{table}.{key}", f"must be {must}")
+        raise scene_error(source, f"{table}.{key}", f"must be {must}")
     if test is not None and not test(v):
-        raise _fail(source, f"{table}.{key}", f"must be {must}")
+        raise scene_error(source, f"{table}.{key}", f"must be {must}")
     return float(v)
 
 
@@ -151,17 +147,17 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
         if key == "title":
             continue
         if key not in _KEYS:
-            raise _fail(source, key, f"unknown table beside [contact] (tables: {', '.join(_KEYS)})")
+            raise scene_error(source, key, f"unknown table beside [contact] (tables: {', '.join(_KEYS)})")
         if not isinstance(data[key], dict):
-            raise _fail(source, key, "must be a table")
+            raise scene_error(source, key, "must be a table")
         for k in data[key]:
             if key == GRAVITY and k in ("l", "com"):
-                raise _fail(source, f"{GRAVITY}.{k}", "not with [contact]: the contact places the centre of mass")
+                raise scene_error(source, f"{GRAVITY}.{k}", "not with [contact]: the contact places the centre of mass")
             if k not in _KEYS[key]:
-                raise _fail(source, f"{key}.{k}", f"unknown key (known: {', '.join(_KEYS[key])})")
+                raise scene_error(source, f"{key}.{k}", f"unknown key (known: {', '.join(_KEYS[key])})")
     for table in ("body", GRAVITY, "contact"):
         if table not in data:
-            raise _fail(source, table, "missing table")
+            raise scene_error(source, table, "missing table")
     b, gr, c = data["body"], data[GRAVITY], data["contact"]
     ini, sim = data.get("initial", {}), dict(data.get("simulate", {}))
     sim.update({k: v for k, v in overrides.items() if v is not None})
@@ -171,36 +167,36 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     I3 = _number(source, b, "body", "I3", test=pos, must="a positive number")
     for i, j, k in ((I1, I2, I3), (I2, I3, I1), (I3, I1, I2)):
         if i + j < k * (1 - TRIANGLE_SLACK):
-            raise _fail(source, "body", "the moments violate the triangle inequality I1 + I2 >= I3")
+            raise scene_error(source, "body", "the moments violate the triangle inequality I1 + I2 >= I3")
     M = _number(source, gr, GRAVITY, "M", test=pos, must="a positive number")
     g = _number(source, gr, GRAVITY, "g", test=lambda x: x >= 0, must="a number >= 0")
     shape = c.get("shape")
     if shape not in SHAPES:
-        raise _fail(source, "contact.shape", f"unknown shape {shape!r} (known: {', '.join(SHAPES)})")
+        raise scene_error(source, "contact.shape", f"unknown shape {shape!r} (known: {', '.join(SHAPES)})")
     friction = c.get("friction")
     if friction not in FRICTIONS:
-        raise _fail(source, "contact.friction", f"unknown law {friction!r} (known: {', '.join(FRICTIONS)})")
+        raise scene_error(source, "contact.friction", f"unknown law {friction!r} (known: {', '.join(FRICTIONS)})")
     radius = _number(source, c, "contact", "radius", 0.0, lambda x: x >= 0, "a number >= 0")
     if shape != "point" and not radius > 0:
-        raise _fail(source, "contact.radius", f"must be a positive number for a {shape}")
+        raise scene_error(source, "contact.radius", f"must be a positive number for a {shape}")
     if shape == "point" and radius != 0:
-        raise _fail(source, "contact.radius", "must be 0 (or absent) for a point")
+        raise scene_error(source, "contact.radius", "must be 0 (or absent) for a point")
     offset = _number(source, c, "contact", "offset", 0.0)
     needs_mu = friction in ("coulomb", "viscous")
     mu = _number(source, c, "contact", "mu", None, lambda x: x >= 0, "a number >= 0")
     if needs_mu and mu is None:
-        raise _fail(source, "contact.mu", f"missing (friction = {friction!r} needs it)")
+        raise scene_error(source, "contact.mu", f"missing (friction = {friction!r} needs it)")
     if not needs_mu and mu is not None:
-        raise _fail(source, "contact.mu", f"not with friction = {friction!r}")
+        raise scene_error(source, "contact.mu", f"not with friction = {friction!r}")
     reg = _number(source, c, "contact", "regularization", None, pos, "a positive number (m/s)")
     if reg is not None and friction != "coulomb":
-        raise _fail(source, "contact.regularization", "only with friction = 'coulomb'")
+        raise scene_error(source, "contact.regularization", "only with friction = 'coulomb'")
     stem = _stem(source, c, shape)
     extensions = []
     for key, ext in EXTENSIONS.items():
         length = _number(source, c, "contact", key, None, lambda x: x >= 0, "a length >= 0 (m)")
         if length is not None and friction not in ext.frictions:
-            raise _fail(source, f"contact.{key}", f"not with friction = {friction!r} "
+            raise scene_error(source, f"contact.{key}", f"not with friction = {friction!r} "
                                                   f"(only with {' or '.join(map(repr, ext.frictions))})")
         extensions.append((key, 0.0 if length is None else length))
     e = _number(source, c, "contact", "restitution", 0.0, lambda x: 0 <= x <= 1, "a number in [0, 1]")
@@ -209,36 +205,36 @@ def read(data: dict, source: str = "<dict>", **overrides) -> ContactScene:
     rates = omega = None
     if "omega" in ini:
         if has_rates:
-            raise _fail(source, "initial.omega", "give either the rates or omega, not both")
+            raise scene_error(source, "initial.omega", "give either the rates or omega, not both")
         w = ini["omega"]
         if not (isinstance(w, list) and len(w) == 3 and all(
                 isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) for x in w)):
-            raise _fail(source, "initial.omega", "must be three finite numbers")
+            raise scene_error(source, "initial.omega", "must be three finite numbers")
         omega = tuple(float(x) for x in w)
     else:
         rates = tuple(_number(source, ini, "initial", k, 0.0) for k in ("alpha_dot", "beta_dot", "gamma_dot"))
     if friction == "rolling":
         for k in ("vx", "vy"):
             if k in ini:
-                raise _fail(source, f"initial.{k}", "not with friction = 'rolling' (the no-slip condition sets it)")
+                raise scene_error(source, f"initial.{k}", "not with friction = 'rolling' (the no-slip condition sets it)")
     vx, vy = (_number(source, ini, "initial", k, 0.0) for k in ("vx", "vy"))
     t_end = _number(source, sim, "simulate", "t_end", 1.0, pos, "a positive number")
     samples = sim.get("samples", 1001)
     if isinstance(samples, bool) or not isinstance(samples, int) or not 2 <= samples <= MAX_SAMPLES:
-        raise _fail(source, "simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}")
+        raise scene_error(source, "simulate.samples", f"must be an integer from 2 to {MAX_SAMPLES}")
     method = sim.get("method", "auto")
     if method not in METHODS:
-        raise _fail(source, "simulate.method", f"unknown method {method!r} for a contact scene "
+        raise scene_error(source, "simulate.method", f"unknown method {method!r} for a contact scene "
                                                f"(known: {', '.join(METHODS)})")
     rtol = _number(source, sim, "simulate", "rtol", 1e-10, lambda x: MIN_RTOL <= x < 1,
                    f"a number in [{MIN_RTOL:.1e}, 1) (100 machine epsilons and up)")
     atol = _number(source, sim, "simulate", "atol", 1e-12, pos, "a positive number")
     max_steps = sim.get("max_steps", 1_000_000)
     if isinstance(max_steps, bool) or not isinstance(max_steps, int) or not 1 <= max_steps <= MAX_STEPS_LIMIT:
-        raise _fail(source, "simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}")
+        raise scene_error(source, "simulate.max_steps", f"must be an integer from 1 to {MAX_STEPS_LIMIT:.0e}")
     title = data.get("title", "")
     if not isinstance(title, str):
-        raise _fail(source, "title", "must be a string")
+        raise scene_error(source, "title", "must be a string")
     return ContactScene(source, title, I1, I2, I3, M, g, shape, radius, offset, friction,
                         0.0 if mu is None else mu, reg, e, angles, rates, omega, vx, vy,
                         t_end, samples, method, rtol, atol, max_steps, stem=stem, extensions=tuple(extensions))
@@ -250,9 +246,9 @@ def _stem(source, c, shape):
         return None
     st = c["stem"]
     if shape != "sphere":
-        raise _fail(source, "contact.stem", "only with shape = 'sphere'")
+        raise scene_error(source, "contact.stem", "only with shape = 'sphere'")
     if not isinstance(st, dict) or set(st) - {"radius", "offset"} or "radius" not in st:
-        raise _fail(source, "contact.stem", "must be a table {radius = ..., offset = ...}")
+        raise scene_error(source, "contact.stem", "must be a table {radius = ..., offset = ...}")
     r = _number(source, st, "contact.stem", "radius", None, lambda x: x > 0, "a positive number")
     return r, _number(source, st, "contact.stem", "offset", 0.0)
 

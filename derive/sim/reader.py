@@ -10,7 +10,7 @@ import re
 import stat
 import tomllib
 
-from derive.errors import SceneError
+from derive.errors import scene_error
 from derive.sim import examples
 
 
@@ -51,7 +51,7 @@ def read_toml(source: str, kind: str = "scene") -> dict:
     shown = source.replace("\0", "\\0")  # a NUL byte would end the error line early
 
     def fail(what):
-        return SceneError(_line(shown, "file", what))
+        return scene_error(shown, "file", what)
 
     if "\0" in source:  # open() would raise a bare ValueError
         raise fail("not a file name (it holds a NUL byte)")
@@ -101,7 +101,7 @@ def read_toml(source: str, kind: str = "scene") -> dict:
         # tomllib (3.11) puts the position at the end of its message: "... (at line 3, column 7)".
         match = re.fullmatch(r"(.*) \(at (line \d+, column \d+|end of document)\)", str(err))
         where, what = (match.group(2), match.group(1)) if match else ("file", str(err))
-        raise SceneError(_line(shown, where, f"invalid TOML: {what}")) from err
+        raise scene_error(shown, where, f"invalid TOML: {what}") from err
     if _depth(data) > MAX_SCENE_DEPTH:
         raise fail(f"values nested deeper than {MAX_SCENE_DEPTH} levels: not a {kind} file")
     return data
@@ -126,8 +126,3 @@ def _depth(value) -> int:
         elif isinstance(v, list):
             stack.extend((x, d + 1) for x in v)
     return deepest
-
-
-def _line(source: str, key: str, what: str) -> str:
-    """The one-line message; newlines a value might smuggle in are flattened."""
-    return " ".join(f"{source}: {key}: {what}".splitlines())

@@ -52,9 +52,9 @@ from __future__ import annotations
 import os
 from collections.abc import Mapping
 
-from derive.errors import SceneError
+from derive.errors import scene_error
 from derive.sim import examples
-from derive.sim.reader import MAX_SCENE_BYTES, MAX_SCENE_DEPTH, _line, read_toml
+from derive.sim.reader import MAX_SCENE_BYTES, MAX_SCENE_DEPTH, read_toml
 from derive.reference.rotation import body_omega
 from derive.sim.scene_types import (FIXED_STEP_METHODS, FORMULATIONS, MAX_SAMPLES, MAX_STEPS_LIMIT, METHODS,
                                     MIN_RTOL, POLE_TOLERANCE, SIMULATE_DEFAULTS, TRIANGLE_SLACK, Body,
@@ -84,8 +84,8 @@ def load_scene(scene, /, **overrides) -> Scene:
         source = examples.resolve(os.fspath(scene), "scene")  # a bare name: a shipped example
         data = read_toml(source)
     else:
-        raise SceneError(_line("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
-                                                   f"like one or a Scene, not {type(scene).__name__}"))
+        raise scene_error("<scene>", "scene", f"must be a path to a TOML file, a dict shaped "
+                                              f"like one or a Scene, not {type(scene).__name__}")
     overrides = {k: v for k, v in overrides.items() if v is not None}
     return _Validator(source).scene(data, overrides)
 

@@ -14,9 +14,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from derive.errors import SceneError
+from derive.errors import scene_error
 from derive.methods import registry as solvers
-from derive.sim.reader import _line
 from derive.reference.rotation import body_omega
 from derive.sim.scene_types import (FIXED_STEP_METHODS, FORMULATIONS, MAX_SAMPLES, MAX_STEPS_LIMIT, METHODS,
                                     MIN_RTOL, SIMULATE_DEFAULTS, TRIANGLE_SLACK, Body, Initial, Scene,
@@ -168,7 +167,7 @@ class _Validator:
     def fail(self, key: str, what: str):
         if key in self.overridden:
             what += " (given as an override)"
-        raise SceneError(_line(self.source, key, what))
+        raise scene_error(self.source, key, what)
 
     # ---- generic readers ----
 
