@@ -63,15 +63,20 @@ CASADI = {"casadi-cvodes-adams": ("cvodes", {"linear_multistep_method": "adams",
 
 
 @functools.cache
-def baselines():
-    """``derive/bench/baselines/scipy_baselines.py`` as a module (it is a user's file, not part of derive)."""
-    path = BENCH_SOURCES / "scipy_baselines.py"
-    spec = importlib.util.spec_from_file_location("derive_bench_scipy_baselines", path)
+def module_at(path: Path, name: str):
+    """The Python file ``path`` as a module named ``name``: a file the bench reads from the
+    checkout, not a module of the package."""
+    spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or not path.is_file():
         raise FileNotFoundError(f"{path}: the bench needs a source checkout")
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
+
+
+def baselines():
+    """``derive/bench/baselines/scipy_baselines.py`` as a module (it is a user's file, not part of derive)."""
+    return module_at(BENCH_SOURCES / "scipy_baselines.py", "derive_bench_scipy_baselines")
 
 
 def peers_available() -> dict[str, str | None]:

@@ -370,12 +370,7 @@ def random_states(n: int, seed: int = 1) -> np.ndarray:
 
 def generated_numpy(name: str = "heavy_top"):
     """The committed generated/numpy/<name>.py as a module."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location(f"derive_bench_generated_{name}", GENERATED / "numpy" / f"{name}.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return bc.module_at(GENERATED / "numpy" / f"{name}.py", f"derive_bench_generated_{name}")
 
 
 def numpy_batch(cfg: Settings) -> list[dict]:
