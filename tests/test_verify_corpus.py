@@ -310,9 +310,6 @@ SHORT = {
         "the same homework's Z-X-Z disk on a turning elbow: its rotation matrix, the centre's velocity and "
         "T_trans = (1/2) M (v . v) are read, but the body angular velocity as vect(R^T R-dot), the velocity as the "
         "rate of the position (said in words) and the energies as omega_b^T I_b omega_b (a one-by-one matrix) are not",
-    ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "found"):
-        "its slips, the answer's spin energy (1/2) I_z (phi-dot + cos(theta) psi-dot) without its square (twice), "
-        "sum energies the reader does not read",
 }
 
 FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}
