@@ -30,7 +30,7 @@ _WRITTEN_TURN = re.compile(
 
 
 class OwnTurns:
-    """Mixin of the checker. Uses ``self.notes``, ``self.vocab``, ``self.d`` and ``self._turn_factors``,
+    """Mixin of the checker. Uses ``self.notes``, ``self.d``, ``self._turn_factors`` and
     ``self._turn_at_another_argument``."""
 
     def _turn_read_apart(self, text: str):
@@ -64,13 +64,15 @@ class OwnTurns:
     def _turns_against_own(self, text: str) -> str | None:
         """Why the product of turns in ``text`` is neither R nor Rᵀ with the text's own turns, when the
         other sense would make it one; else None."""
+        written = self._written_turns()
+        if not written:
+            return None
         try:
             toks = lx.scan(text)
         except lx.NotRead:
             return None
         found = self._turn_factors(toks)
-        written = self._written_turns()
-        if found is None or not written:
+        if found is None:
             return None
         own = [written.get(atom.with_(text="")) for atom, *_ in found]
         if any(w is None or w[0] != axis for w, (_, axis, *_) in zip(own, found)) or len({w[1] for w in own}) != 1:
@@ -85,7 +87,7 @@ class OwnTurns:
 
         if product(rot.active if active else rot.passive) or not product(rot.passive if active else rot.active):
             return None
-        names = [atom.text or self.tex(atom) for atom, *_ in found]
+        names = [atom.text for atom, *_ in found]
         sense, other = ("active", "passive") if active else ("passive", "active")
         return (f"the text writes {', '.join(names)} out as {sense} single-axis turns, and their product in the "
                 f"written order is neither the sequence's rotation R (body → space) nor its transpose: that order "
