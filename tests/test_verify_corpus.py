@@ -254,9 +254,9 @@ SHORT = {
         "law with dV_B/dt and the accelerations solved from the component equations (taken as definitions, or "
         "rows in the text's own I_xx and L, M, N) are not read",
     ("stampfly-quadcopter-6dof-euler-quaternion-ja", "found"):
-        "its two slips are in the 3-2-1 rotation matrix, R = R_x R_y R_z and the composed matrix, both the "
-        "passive R^T, which the reader accepts as the sequence's matrix; the text's own turns (active, displayed "
-        "after the product) and its R said to be body to inertial are what make them wrong",
+        "1 of its 2 slips: R = R_x R_y R_z is held to the text's own active turns (displayed after it) and fails, "
+        "but the composed matrix, the passive R^T, is wrong only by the prose that calls R body to inertial, "
+        "which the reader does not read",
     ("reference-frame-rotations-jl-attitude-kinematics-dcm-quaternion-crp-mrp", "checked"):
         "a library's manual: the DCM's rate -[omega x] D is taken for a definition, \\texttt{vect} is not read, "
         "the quaternion's rate is written with the frames' subscript (q_ba), and the CRP's and MRP's rates hold "
@@ -300,9 +300,6 @@ SHORT = {
         "the same homework's Z-X-Z disk on a turning elbow: its rotation matrix, the centre's velocity and "
         "T_trans = (1/2) M (v . v) are read, but the body angular velocity as vect(R^T R-dot), the velocity as the "
         "rate of the position (said in words) and the energies as omega_b^T I_b omega_b (a one-by-one matrix) are not",
-    ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "found"):
-        "its slips, the answer's spin energy (1/2) I_z (phi-dot + cos(theta) psi-dot) without its square (twice), "
-        "sum energies the reader does not read",
 }
 
 FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}

@@ -101,3 +101,26 @@ def test_a_sum_with_a_pure_number_or_two_untied_letters_ties_no_letter():
     two = SQUARE.replace("I_1^2 A^2", "I_1^2 A^2 B")
     assert _flagged(TOP + scaled + ANGLE % "", "\\cos\\tau") == []
     assert _flagged(TOP + two + ANGLE % "", "\\cos\\tau") == []
+
+
+AXES = ("---\nconvention: z-x-z\n---\n# A disk on an elbow\n\n"
+        "The disk has moments $I_x$ and $I_z$ about its body axes and mass $M$ a distance $s$ from the pivot.\n\n")
+SPIN_UNSQUARED = ("$$ T = \\frac{1}{2}I_{z}\\left(\\dot{\\phi} + \\cos\\theta\\,\\dot{\\psi}\\right) + "
+                  "\\frac{1}{2}I_{x}\\sin^2\\theta\\,\\dot{\\psi}^2 + \\frac{1}{2}M s^2 \\sin^2\\theta\\,\\dot{\\psi}^2 $$\n\n")
+
+
+def test_two_terms_alike_but_for_two_axis_components_of_one_letter_are_compared():
+    # I_z and I_x share a dimension, whatever it is: I_z times a rate beside I_x times a rate squared is unlike
+    flagged = _flagged(AXES + SPIN_UNSQUARED, "T =")
+    assert [c.verdict for c in flagged] == ["fails"]
+    assert "[I] T^-1" in flagged[0].why and "[I] T^-2" in flagged[0].why
+    squared = SPIN_UNSQUARED.replace("\\dot{\\psi}\\right)", "\\dot{\\psi}\\right)^2")
+    assert _flagged(AXES + squared, "T =") == []
+
+
+def test_numbered_components_or_unlike_letters_are_not_compared():
+    # C_1 + C_2 t: a solution's constants are numbered, not components along axes
+    assert _flagged(AXES + "$$ x = C_1 + C_2 t $$\n\n", "x =") == []
+    # two letters' components: I_z and J_x need not share a dimension
+    other = SPIN_UNSQUARED.replace("I_{x}", "J_{x}")
+    assert _flagged(AXES + other, "T =") == []

@@ -49,6 +49,7 @@ from derive.lecture.motion import Motion
 from derive.lecture.on_the_motion import OnTheMotion
 from derive.lecture.operator_statements import OperatorStatements
 from derive.lecture.own_sign import OwnSign
+from derive.lecture.own_turns import OwnTurns
 from derive.lecture.perturbations import Perturbations
 from derive.lecture.primed_axes import PrimedAxes
 from derive.lecture.problem_sections import ProblemSections
@@ -82,5 +83,6 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    EllipticSolution, Implications, DeterminantSteps, ShapeMoments, RotationProducts,
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
-                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler, ConstantsCollapsed):
+                   UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler, ConstantsCollapsed,
+                   OwnTurns):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -27,7 +27,7 @@ commands):
   in its cosines and sines; written as the active turn (``-\\sin`` above the diagonal of the
   turning block) the product's order is the sequence's, written as its transpose (a passive turn,
   ``A = BCD``) the order is reversed. Only entries that are a plain ``0``, ``1``, ``\\cos q`` or
-  ``\\sin q`` of one plain angle ``q`` make such a matrix (`_elementary`).
+  ``\\sin q`` of one plain angle ``q`` make such a matrix (`elementary`).
 
 A product about axes named by letters (``R_i(\\theta_1) R_j(\\theta_2) R_k(\\theta_3)``) is the general
 form of every sequence: it states none, and the reader takes it for no claim (`general_form`).
@@ -128,7 +128,7 @@ def _passive_letters(maths) -> frozenset:
     kinds: dict[str, set] = {}
     for math in maths:
         for m in _NAMED_TURN_DEF.finditer(math):
-            turn = _elementary(m.group(2))
+            turn = elementary(m.group(2))
             if turn:
                 kinds.setdefault(_key(m.group(1)), set()).add(turn[2])
     return frozenset(k for k, v in kinds.items() if v == {False})
@@ -145,7 +145,7 @@ def _key(tex: str) -> str:
     return re.sub(r"[\s{}]", "", t)
 
 
-def _elementary(body: str):
+def elementary(body: str):
     """(axis, angle, active) of a 3×3 matrix body (its ``&``/``\\\\`` entries) that is one turn about
     a coordinate axis, or None (see the module docstring)."""
     rows = [r for r in (re.split(r"\\\\", body)) if r.strip()]
@@ -179,7 +179,7 @@ def _from_written_turns(with_cells, every) -> tuple | None:
     turns = {}
     for math in with_cells:
         for m in _PMATRIX_DEF.finditer(math):
-            turn = _elementary(m.group(2))
+            turn = elementary(m.group(2))
             if turn:
                 turns[_key(m.group(1))] = turn
     if len(turns) < 3:

@@ -271,19 +271,8 @@ class TextMatrices:
             toks = lx.scan(text)
         except lx.NotRead:
             return text
-        rot, found = self.d.rot, []
-        for k in range(len(toks) - 3):
-            a, o, g, c = toks[k:k + 4]
-            if a.kind != "atom" or a.value.sub not in ("1", "2", "3", "x", "y", "z") or a.value.sup or \
-                    a.value.dots or (o.kind, o.value) != ("op", "(") or g.kind != "atom" or (c.kind, c.value) != ("op", ")"):
-                continue
-            try:
-                angle = self.vocab.resolve(g.value)
-            except lx.NotRead:
-                continue
-            if angle in rot.ANGLES:
-                found.append((a.value, "xyz"["123xyz".index(a.value.sub) % 3], angle, o.pos, c.pos + 1, g.value))
-        if len(found) != 3 or len({f[2] for f in found}) != 3:
+        rot, found = self.d.rot, self._turn_factors(toks)
+        if found is None:
             return text
         # one name at two angles (R_z(ψ) R_x(θ) R_z(φ)): each name-and-argument is its own turn, which
         # the reader keeps for a plain name (R_z(ψ) is read as that); a bold name drops its argument
@@ -310,6 +299,23 @@ class TextMatrices:
                 self.__dict__.setdefault("argument_turns", {})[atom.with_(text="")] = angle
             text = text[:start] + text[end:]
         return _AT_TIME.sub(r"\1 =", text, count=1)
+
+    def _turn_factors(self, toks):
+        """The three factors ``name_axis(angle)`` of a product of single-axis turns by three different
+        angles of the sequence, each (atom, axis, angle, start, end, argument atom), or None."""
+        found = []
+        for k in range(len(toks) - 3):
+            a, o, g, c = toks[k:k + 4]
+            if a.kind != "atom" or a.value.sub not in ("1", "2", "3", "x", "y", "z") or a.value.sup or \
+                    a.value.dots or (o.kind, o.value) != ("op", "(") or g.kind != "atom" or (c.kind, c.value) != ("op", ")"):
+                continue
+            try:
+                angle = self.vocab.resolve(g.value)
+            except lx.NotRead:
+                continue
+            if angle in self.d.rot.ANGLES:
+                found.append((a.value, "xyz"["123xyz".index(a.value.sub) % 3], angle, o.pos, c.pos + 1, g.value))
+        return found if len(found) == 3 and len({f[2] for f in found}) == 3 else None
 
     def _product_named(self, toks, at, product):
         """``R = R_3(\\theta_1) R_1(\\theta_2) R_3(\\theta_3) = …``: the plain name the text sets equal to

@@ -19,7 +19,11 @@ unknown name is never compared, and a pure number is never compared (a text may 
 scaled units); a function's argument is read for sums of its own, its value taken as a pure number.
 The components of one of the text's vectors (a₁, a₂, a₃ or a_x, a_y, a_z) share a dimension whatever
 it is: a sum of three or more of them, each alone to a power times a number, with every power alike
-but one (a₁² + a₂² + a₃³) adds unlike quantities too.
+but one (a₁² + a₂² + a₃³) adds unlike quantities too. So do two terms alike but for two axis components
+of one letter of unknown dimension (``\\frac{1}{2} I_z (\\dot\\phi + \\dot\\psi\\cos\\theta) + \\frac{1}{2}
+I_x \\dot\\psi^2``: I_z and I_x share a dimension, so the terms differ by a rate): a component along
+x, y or z (never 1, 2, 3, which may number a solution's constants C₁ + C₂t) is given its letter's
+dimension as an unknown, and two terms are compared only when their unknowns are the same.
 
 May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
 :mod:`derive.symbolic`.
@@ -65,10 +69,27 @@ _COMPONENTS = {"1", "2", "3", "x", "y", "z"}
 _NAMES = ("M", "L", "T")
 
 
+_AXIS_COMPONENTS = {"x", "y", "z"}
+
+
 def _shown(d) -> str:
-    """A dimension as exponents of M, L, T: ``M L^2 T^-1``."""
-    parts = [n if e == 1 else f"{n}^{e}" for n, e in zip(_NAMES, d) if e != 0]
+    """A dimension as exponents of M, L, T: ``M L^2 T^-1``; a letter's unknown dimension by its name, ``[I] T^-1``."""
+    d = [sp.sympify(e) for e in d]
+    letters = sorted({s for s in d[0].free_symbols if s.name.endswith("_M")}, key=str)
+    parts = [s.name[:-2] if d[0].coeff(s) == 1 else f"{s.name[:-2]}^{d[0].coeff(s)}" for s in letters]
+    d = [e.subs({s: 0 for s in e.free_symbols}) for e in d]
+    parts += [n if e == 1 else f"{n}^{e}" for n, e in zip(_NAMES, d) if e != 0]
     return " ".join(parts) or "1"
+
+
+def _numeric(d) -> bool:
+    """A dimension known outright (no letter's unknown dimension in it)."""
+    return d is not None and d != _CONFLICT and all(sp.sympify(e).is_number for e in d)
+
+
+def _comparable(a, b) -> bool:
+    """Two dimensions whose letters' unknowns are the same, so that they differ only by known exponents."""
+    return all(sp.sympify(x - y).is_number for x, y in zip(a, b))
 
 
 class UnlikeTerms:
@@ -78,7 +99,7 @@ class UnlikeTerms:
         """Learn the dimensions the piece's equations give the text's letters; (piece, why) when a
         member of it adds quantities of unlike dimensions, else None."""
         if not hasattr(self, "_dimensions"):
-            self._dimensions = {}
+            self._dimensions, self._unknowns = {}, {}
         cuts = top_level(piece, _RELATIONS)
         if not cuts and not _SIGN.search(piece):
             return None
@@ -160,8 +181,8 @@ class UnlikeTerms:
     def _learn(self, values):
         """Letters set equal to members of known dimensions that agree take that dimension."""
         letters = [_lone_letter(v) for v in values]
-        known = {self._dimension(v, []) for v, one in zip(values, letters)
-                 if v is not None and v.free_symbols and (one is None or one[0] in _TIED)} - {None}
+        known = {d for d in (self._dimension(v, []) for v, one in zip(values, letters)
+                             if v is not None and v.free_symbols and (one is None or one[0] in _TIED)) if _numeric(d)}
         for v in values:
             self._learn_from_sum(v, known)
         if len(known) != 1:
@@ -185,6 +206,8 @@ class UnlikeTerms:
         if not isinstance(value, sp.Add):
             return
         dims = [(t, self._dimension(t, [])) for t in value.args]
+        if any(d is not None and not _numeric(d) for _, d in dims):
+            return          # a term in a letter's unknown dimension: nothing is learned from it
         alike = {d for _, d in dims if d is not None}
         odd = [t for t, d in dims if d is None]
         # pure numbers among the terms (scaled units) or two members that disagree: nothing is learned
@@ -200,7 +223,7 @@ class UnlikeTerms:
         if base != letter or not power.is_Rational or power == 0:
             return          # the letter inside a function or a sum of its own: its dimension is not read off
         d = self._dimension(rest, [])
-        if d is None:
+        if not _numeric(d):
             return
         d = _times(_plus(whole, _times(d, -1)), sp.Rational(1) / power)
         had = self._dimensions.get(letter)
@@ -212,7 +235,22 @@ class UnlikeTerms:
             if isinstance(v, sp.Expr) and v.is_number:
                 return None           # set to a number: the text's units may be scaled
         d = _TIED.get(s, self._dimensions.get(s))
+        if d is None:
+            return self._component_dimension(s)
         return None if d == _CONFLICT else d
+
+    def _component_dimension(self, s):
+        """An axis component of one of the text's letters (I_x, I_z), plain, of unknown dimension: its
+        letter's dimension as unknowns, which every component along x, y, z shares; else None."""
+        atom = self.vocab.generic.get(s)
+        if atom is None or atom.sub not in _AXIS_COMPONENTS or atom.sup or atom.dots or atom.primes or \
+                atom.tilde or atom.hat or atom.mark:
+            return None
+        key = atom.with_(sub="", text="")
+        if key not in self._unknowns:
+            name = f"[{key.base}]"
+            self._unknowns[key] = tuple(sp.Symbol(f"{name}_{n}") for n in _NAMES)
+        return self._unknowns[key]
 
     def _dimension(self, e, found):
         """The dimension of ``e`` (None where a name in it has none known); the unlike pairs of terms
@@ -224,9 +262,10 @@ class UnlikeTerms:
         if isinstance(e, sp.Add):
             dims = [(t, self._dimension(t, found)) for t in e.args]
             real = [(t, d) for t, d in dims if d is not None and d != _NONE]
-            for t, d in real[1:]:
-                if d != real[0][1] and not found:
-                    found.append((real[0][0], t))
+            for k, (t, d) in enumerate(real):
+                for u, e in real[:k]:
+                    if d != e and _comparable(d, e) and not found:
+                        found.append((u, t))
             known = {d for _, d in dims}
             return known.pop() if len(known) == 1 else None
         if isinstance(e, sp.Mul):
