@@ -313,6 +313,14 @@ SHORT = {
     ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "found"):
         "its slips, the answer's spin energy (1/2) I_z (phi-dot + cos(theta) psi-dot) without its square (twice), "
         "sum energies the reader does not read",
+    ("jingliangwei-blog-landau-rigid-body-inertia-euler-equations-zxz-zh", "checked"):
+        "notes in Chinese after Landau: the reader stops with an error on the circled digits (①, ②, ③) that "
+        "mark the kinetic energy's three integrals, so nothing of the text is read",
+    ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "checked"):
+        "the same notes' non-inertial frames: the equation of motion in Landau's form m dv'/dt = ... with primed "
+        "arrowed vectors, the frame's Lagrangian, its differential and gradients, and E - E' = M . Omega are not read",
+    ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "found"):
+        "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
 }
 
 FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}
