@@ -314,8 +314,9 @@ SHORT = {
         "its slips, the answer's spin energy (1/2) I_z (phi-dot + cos(theta) psi-dot) without its square (twice), "
         "sum energies the reader does not read",
     ("jingliangwei-blog-landau-rigid-body-inertia-euler-equations-zxz-zh", "checked"):
-        "notes in Chinese after Landau: the reader stops with an error on the circled digits (①, ②, ③) that "
-        "mark the kinetic energy's three integrals, so nothing of the text is read",
+        "notes in Chinese after Landau: 8 of 24; the integrals over rho dV of the angular momentum, the kinetic "
+        "energy and the parallel axis theorem, the parts marked with circled digits, |V|^2 between bars and the "
+        "translational Euler equations in dV_1/dt are not read",
     ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "checked"):
         "the same notes' non-inertial frames: the equation of motion in Landau's form m dv'/dt = ... with primed "
         "arrowed vectors, the frame's Lagrangian, its differential and gradients, and E - E' = M . Omega are not read",
