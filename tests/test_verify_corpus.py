@@ -318,8 +318,8 @@ SHORT = {
         "energy and the parallel axis theorem, the parts marked with circled digits, |V|^2 between bars and the "
         "translational Euler equations in dV_1/dt are not read",
     ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "checked"):
-        "the same notes' non-inertial frames: the equation of motion in Landau's form m dv'/dt = ... with primed "
-        "arrowed vectors, the frame's Lagrangian, its differential and gradients, and E - E' = M . Omega are not read",
+        "the same notes' non-inertial frames: 6 of 19; the equation of motion in Landau's form m dv'/dt = ... with "
+        "primed arrowed vectors, a Lagrangian's first link through v = v' + Omega x r' and E - E' = M . Omega are not read",
     ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "found"):
         "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
 }
