@@ -300,6 +300,15 @@ SHORT = {
         "the same homework's Z-X-Z disk on a turning elbow: its rotation matrix, the centre's velocity and "
         "T_trans = (1/2) M (v . v) are read, but the body angular velocity as vect(R^T R-dot), the velocity as the "
         "rate of the position (said in words) and the energies as omega_b^T I_b omega_b (a one-by-one matrix) are not",
+    ("jingliangwei-blog-landau-rigid-body-inertia-euler-equations-zxz-zh", "checked"):
+        "notes in Chinese after Landau: 8 of 24; the integrals over rho dV of the angular momentum, the kinetic "
+        "energy and the parallel axis theorem, the parts marked with circled digits, |V|^2 between bars and the "
+        "translational Euler equations in dV_1/dt are not read",
+    ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "checked"):
+        "the same notes' non-inertial frames: 6 of 19; the equation of motion in Landau's form m dv'/dt = ... with "
+        "primed arrowed vectors, a Lagrangian's first link through v = v' + Omega x r' and E - E' = M . Omega are not read",
+    ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "found"):
+        "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
 }
 
 FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}

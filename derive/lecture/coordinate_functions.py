@@ -33,6 +33,7 @@ import sympy as sp
 
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
 from derive.lecture.operator_notation import NotHandled, group
+from derive.lecture.latex_spellings import DIGITS
 
 _GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "vartheta", "iota", "kappa",
           "lambda", "mu", "nu", "xi", "rho", "sigma", "tau", "phi", "varphi", "chi", "psi", "omega", "Gamma",
@@ -119,8 +120,8 @@ def tokens(s: str) -> list:
         if ch.isspace() or ch in "&~":
             i += 1
             continue
-        if ch.isdigit():
-            m = re.match(r"\d+(?:\.\d+)?", s[i:])
+        if ch in DIGITS:
+            m = re.match(r"[0-9]+(?:\.[0-9]+)?", s[i:])
             out.append(("num", m.group(0)))
             i += m.end()
             continue

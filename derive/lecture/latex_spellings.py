@@ -59,3 +59,7 @@ group, which would make it the sign of an exponent written without braces (x^-1)
 
 FONT_SIZES = ("tiny", "scriptsize", "footnotesize", "small", "normalsize", "large", "Large", "LARGE", "huge", "Huge")
 """LaTeX's font size switches: ``\\footnotesize{…}`` around a wide matrix only sets how big it prints."""
+
+DIGITS = frozenset("0123456789")
+"""The digits a number is written in: ASCII only, since a circled ① or a superscript ² is a digit to
+``str.isdigit`` and no number."""

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 from derive.lecture import motion_jets as mj
 from derive.lecture import vocabulary
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
+from derive.lecture.latex_spellings import DIGITS
 
 
 class NotHandled(Exception):
@@ -132,8 +133,8 @@ def tokens(s: str) -> list[Tok]:
         if ch.isspace() or ch in "~&":
             i += 1
             continue
-        if ch.isdigit():
-            m = re.match(r"\d+(?:\.\d+)?", s[i:])
+        if ch in DIGITS:
+            m = re.match(r"[0-9]+(?:\.[0-9]+)?", s[i:])
             out.append(Tok("num", m.group(0)))
             i += m.end()
             continue

@@ -157,6 +157,7 @@ class VectorParser(_Parser):
         self.force_at: list = []                    # token indices of 𝐅
         self.law = self.rated = False
         self.stop_dm = False
+        self.bars = 0                   # how many |…| groups the parser is inside: there a bar closes
         self.partial, self.unread = False, []
 
     # a chain of members
@@ -190,6 +191,9 @@ class VectorParser(_Parser):
                 return False
         if self.at("cmd", "det"):
             return True                 # \det(A)\det(A^T): a determinant is a factor of a product
+        if self.at("op", "|") and not self.bars and not (nxt := self.peek(1)) is None \
+                and not (nxt.kind == "op" and nxt.value in "_^"):
+            return True                 # m|\vec v|^2: a length between bars is a factor (never a bar closing one)
         return super()._starts_factor()
 
     # sums and products: × binds tighter than · and juxtaposition
@@ -259,7 +263,9 @@ class VectorParser(_Parser):
             if self.at("begin"):
                 value = self.matrix(env, det=True)
             else:
+                self.bars += 1
                 inner = _as_value(self.expr(env))
+                self.bars -= 1
                 value = sp.sqrt(inner.dot(inner)) if _is_vector(inner) else sp.Abs(inner)
             self.take("op", "|")
             return value

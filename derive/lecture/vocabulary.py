@@ -18,7 +18,7 @@ from derive.lecture import elliptic
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
-from derive.lecture.latex_spellings import BOLD_NAMES, SIGN_ENDS
+from derive.lecture.latex_spellings import BOLD_NAMES, DIGITS, SIGN_ENDS
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.lecture.variations import variation_at
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l, p_alpha, p_gamma
@@ -324,8 +324,8 @@ def _scanned(s: str) -> tuple[Tok, ...]:
         if ch.isspace() or ch in "&~":
             i += 1
             continue
-        if ch.isdigit() or (ch == "." and i + 1 < n and s[i + 1].isdigit()):
-            m = re.match(r"\d*\.?\d+|\d+", s[i:])
+        if ch in DIGITS or (ch == "." and i + 1 < n and s[i + 1] in DIGITS):
+            m = re.match(r"[0-9]*\.?[0-9]+|[0-9]+", s[i:])
             toks.append(Tok("num", m.group(0), i))
             i += m.end()
             continue

@@ -232,6 +232,9 @@ def partial_variable(read, den: list):
     if not den or den[0].kind != "cmd" or den[0].value != "partial":
         return NOT_PARTIAL
     inner = den[1:]
+    if any(t.kind == "atom" and t.value.bold for t in inner):
+        # ∂L/∂𝛀, ∂U/∂𝐫: a gradient in a vector, never the scalar partial of a name the vector is not in
+        raise NotRead("a partial derivative with respect to a vector", den[0].pos + 1)
     if len(inner) > 2 and (_is(inner, 0, "op", "(") and _is(inner, len(inner) - 1, "op", ")")
                            or _is(inner, 0, "op", "{") and _is(inner, len(inner) - 1, "op", "}")):
         inner = inner[1:-1]                     # ∂(dφ/dt), ∂{θ}
