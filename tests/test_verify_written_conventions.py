@@ -279,3 +279,28 @@ def test_the_position_rate_with_spacing_between_the_matrix_and_the_velocity_read
     assert spaced != _POSITION
     assert verdicts(spaced.replace("MATRIX", "R_{b \\rightarrow \\, i}"))[-1] == (15, "holds")
     assert verdicts(spaced.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")
+
+
+def test_a_myst_math_directive_is_a_display_its_options_dropped():
+    text = f"# Notes\n\n```{{math}}\n:label: eq-energy\n{T}\n```\n"
+    assert verdicts(text) == [(3, "holds")]
+
+
+def test_a_myst_math_directive_indented_in_a_list_item_is_a_display():
+    text = f"# Notes\n\n- The energy:\n\n    ```{{math}}\n    {T}\n    ```\n"
+    assert verdicts(text) == [(5, "holds")]
+
+
+_SIX = ("\\begin{align*}\n\\dot{\\mathbf{p}}^N &= \\mathbf{R}_{BN}^T(\\mathbf{q}) \\mathbf{v}^B \\\\\n"
+        "\\dot{\\mathbf{v}}^B &= \\frac{1}{m}\\mathbf{F}^B - \\boldsymbol{\\omega}^B \\times \\mathbf{v}^B\n\\end{align*}")
+_MASS_RATE = ("\\frac{d}{dt}(m \\mathbf{v}^B) = \\mathbf{F}^B\n"
+              "\\implies m \\dot{\\mathbf{v}}^B + \\dot{m} \\mathbf{v}^B = \\mathbf{F}^B")
+
+
+def test_a_bold_p_the_prose_calls_a_position_is_not_taken_for_a_momentum():
+    text = ("# Motion\n\nThe equations of motion are\n\n$$\n" + _SIX + "\n$$\n\nThe mass rate enters through the rate "
+            "of the linear momentum,\n\n$$\n" + _MASS_RATE + "\n$$\n\nThe body's state is its position $\\mathbf{p}^E$ "
+            "and its velocity $\\mathbf{v}^E$ in the frame E. Then\n\n$$\n\\dot{\\mathbf{p}}^E = \\mathbf{v}^E\n$$\n")
+    assert ("holds" in [v for line, v in verdicts(text) if line == 14]
+            and [v for line, v in verdicts(text) if line == 21] == ["unchecked"])
+

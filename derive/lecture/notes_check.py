@@ -289,9 +289,9 @@ class Checker(ReadingRules):
         if general_form(text):
             self._add(line, piece, "rotation", "unchecked", "not a claim: the general form of a sequence of three turns")
             return
-        other = self._turn_at_another_argument(text)
+        other = self._angle_left_out(text) or self._turn_at_another_argument(text)
         if other is not None:
-            self._add(line, piece, "rotation", "unchecked", other)
+            self._add(line, piece, "rotation", *(("unchecked", other) if isinstance(other, str) else other))
             return
         text = self._single_axis_turns(text)
         self._hat_note(line, text)

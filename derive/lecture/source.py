@@ -127,7 +127,7 @@ its name env and its body eb) or inline ``$…$`` (i), the one pattern every rea
 
 _MATH_SPAN = re.compile(r"\$\$.+?\$\$|(?<![\\$])\$[^$\n]+?(?<!\\)\$|\\\[.+?\\\]|\\begin\{(" + _DISPLAY_ENVS + r")\*?\}.+?\\end\{\1\*?\}",
                         re.S)
-_MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*math[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
+_MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*(?:math|\{math\})[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
 _FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
 _TEX_COMMENT = re.compile(r"((?:^|[^\\])(?:\\\\)*)(%[^\n]*)", re.M)  # an even run of \ before %
@@ -141,14 +141,14 @@ def latex_source(text: str, path: str = "") -> bool:
 
 
 def _math_display(m: re.Match) -> str:
-    """A fenced ``math`` block as the display it renders as: ``$$`` on its fence lines."""
-    return "$$\n" + m.group(2) + "$$"
+    """A fenced ``math`` block or MyST ``{math}`` (its ``:label:`` options blanked): ``$$`` on its fences."""
+    return "$$\n" + re.sub(r"\A(?:[ \t]*:[\w-]+:[^\n]*\n)+", lambda o: "\n" * o[0].count("\n"), m.group(2)) + "$$"
 
 
 def rendered(text: str, latex_source: bool = False) -> str:
     """The text with what a reader never sees blanked out: HTML comments, fenced code blocks and
-    inline code spans (the line structure is kept). A fenced block in the language ``math``
-    (GitHub, GitLab and Documenter render it as a display) is a display, read as ``$$ … $$``.
+    inline code spans (the line structure is kept). A fenced block in the language ``math`` (GitHub,
+    GitLab and Documenter render it as a display) or MyST's ``{math}`` is a display, as ``$$ … $$``.
     In a LaTeX source (``latex_source``), a ``%`` not escaped as ``\\%`` comments out the rest
     of its line, as TeX reads it, and its inline ``\\( … \\)`` and sectioning commands are read
     as Markdown's (`derive.lecture.tex_structure`)."""
