@@ -31,10 +31,9 @@ SHORT = {
         "a library's blog post in vectors with a frame's superscript (v^B, omega^B, h_int^B): quaternion products "
         "q (x) omega^B, cross products with omega^B and the rates of the body-frame momenta are not read",
     ("kindr-cheatsheet-zyx-euler-rates-quaternion-rotation-matrix", "checked"):
-        "a cheat sheet in its own macros: bold Greek as \\mbox{\\boldmath $\\chi$} is read as words and a frame "
-        "index set before a symbol ({}_I omega_{IB}) does not parse",
-    ("kindr-cheatsheet-zyx-euler-rates-quaternion-rotation-matrix", "found"):
-        "its slip, the x'' axis ending in -sin(z), is a column of {}_I e^x_{I''}, a left-indexed symbol the reader does not parse",
+        "a cheat sheet in its own macros: bold Greek as \\mbox{\\boldmath $\\chi$} is read as words, the angular "
+        "velocity is written in two frames by a left index ({}_I omega_{IB}, {}_B omega_{IB}) and E(chi) is a name the "
+        "reader does not tie to the Euler rates, so the four rate maps and the appendix's E are not read",
     ("danchev-intermediate-axis-theorem-perturbative-stability", "checked"):
         "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the oscillator's "
         "rate kappa and the solution's Theta, a cylinder's moments and the parallel axis theorem in a bold I are not read",

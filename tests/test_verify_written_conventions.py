@@ -304,3 +304,24 @@ def test_a_bold_p_the_prose_calls_a_position_is_not_taken_for_a_momentum():
     assert ("holds" in [v for line, v in verdicts(text) if line == 14]
             and [v for line, v in verdicts(text) if line == 21] == ["unchecked"])
 
+
+_Z = "\\begin{bmatrix} \\cos\\psi & -\\sin\\psi & 0 \\\\ \\sin\\psi & \\cos\\psi & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}"
+_Y = "\\begin{bmatrix} \\cos\\theta & 0 & \\sin\\theta \\\\ 0 & 1 & 0 \\\\ -\\sin\\theta & 0 & \\cos\\theta \\end{bmatrix}"
+_X = "\\begin{bmatrix} 1 \\\\ 0 \\\\ 0 \\end{bmatrix}"
+
+
+def _turned_x(last):
+    return ("# Axes\n\nThe turned x axis in the frame I:\n\n$$\n{}_I \\mathbf{e}^x = \\mathbf{C}(\\psi) \\cdot \\mathbf{C}(\\theta) "
+            "\\cdot " + _X + " = " + _Z + _Y + _X + " = \\begin{bmatrix} \\cos\\theta\\cos\\psi \\\\ \\cos\\theta\\sin\\psi "
+            "\\\\ " + last + " \\end{bmatrix}\n$$\n")
+
+
+def test_a_frame_index_written_on_the_left_of_a_symbol_in_one_frame_only_is_read_past():
+    assert "holds" in {v for _, v in verdicts(_turned_x("-\\sin\\theta"))}
+    assert "holds" not in {v for _, v in verdicts(_turned_x("-\\sin\\psi"))}
+
+
+def test_a_symbol_written_in_two_frames_keeps_its_left_indices_and_is_not_read_as_one():
+    text = ("# Rates\n\n$$\n{}_I \\mathbf{e}^y = \\begin{bmatrix} 0 \\\\ 1 \\\\ 0 \\end{bmatrix}\n$$\n\n"
+            "$$\n{}_B \\mathbf{e}^y = \\begin{bmatrix} 1 \\\\ 0 \\\\ 0 \\end{bmatrix}\n$$\n")
+    assert not {v for _, v in verdicts(text)} & {"typo", "fails"}
