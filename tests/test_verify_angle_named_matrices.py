@@ -1,7 +1,8 @@
 """The notes reader on a rotation matrix named with what it depends on: ``C(\\phi, \\theta, \\psi) =``,
 ``R(t) =`` and a free letter (A, B, C) set equal to a matrix are read as the text's name for that
 matrix, and a matrix whose name lists the three angles in the sequence's order but which is the
-sequence's rotation with its first and third angles exchanged is a typo of it."""
+sequence's rotation with its first and third angles exchanged is a typo of it, as is a product of single-axis
+turns that leaves out an angle the name lists."""
 import kept_readings as kept
 from kept_readings import verdicts_by_line as verdicts
 
@@ -70,3 +71,11 @@ def test_a_name_defined_before_as_the_free_letter_transposed_follows_it_to_the_m
         "\\cos\\theta \\end{pmatrix}$$\n"
     got = verdicts(display("C", "\\left(" + R + "\\right)^T", before=before) + column)
     assert got[11] == {"holds"} and got[13] == {"holds"}
+
+
+def test_a_product_of_single_axis_turns_that_leaves_out_an_angle_its_name_lists_is_a_typo():
+    for product in ("R_z(\\psi) R_y(\\theta) R_x(\\psi)", "R_z(\\phi) R_x(\\theta) R_z(\\phi)"):
+        assert verdicts(display("R_{BE}(\\phi, \\theta, \\psi)", product))[9] == {"typo"}, product
+    for product in ("R_z(\\phi) R_x(\\theta) R_z(\\psi)", "R_z(\\psi) R_x(\\theta) R_z(\\phi)"):
+        assert "typo" not in verdicts(display("R(\\phi, \\theta, \\psi)", product)).get(9, set()), product
+    assert "typo" not in verdicts(display("R(\\phi, \\theta)", "R_z(\\phi) R_x(\\theta) R_z(\\phi)")).get(9, set())

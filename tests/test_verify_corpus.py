@@ -27,6 +27,13 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("archimedes-spatial-rigid-body-6dof-quaternion-euler-kinematics-blog", "checked"):
+        "a library's blog post in vectors with a frame's superscript (v^B, omega^B, h_int^B): quaternion products "
+        "q (x) omega^B, cross products with omega^B and the rates of the body-frame momenta are not read",
+    ("kindr-cheatsheet-zyx-euler-rates-quaternion-rotation-matrix", "checked"):
+        "a cheat sheet in its own macros: bold Greek as \\mbox{\\boldmath $\\chi$} is read as words, the angular "
+        "velocity is written in two frames by a left index ({}_I omega_{IB}, {}_B omega_{IB}) and E(chi) is a name the "
+        "reader does not tie to the Euler rates, so the four rate maps and the appendix's E are not read",
     ("danchev-intermediate-axis-theorem-perturbative-stability", "checked"):
         "a handout in eqnarray rows: Euler's equation with the body frame's derivative {}^B d L/dt, the oscillator's "
         "rate kappa and the solution's Theta, a cylinder's moments and the parallel axis theorem in a bold I are not read",
@@ -365,10 +372,13 @@ def test_a_text_names_its_source_commit_and_licence(slug):
 
 # A formula in inline math set as a paragraph of its own or as a list item (`- $x = d\sin\theta$`)
 # is displayed by its author as much as a `$$` block is (texts that set their equations so).
-_OWN_LINE = (r"(?:(?<=\n\n)|^[ \t]*(?:[-*+]|\d+\.)[ \t]+)\$(?!\$)(?:[^$\n]|\n[ \t]+)+\$[ \t]*[.,;:]?[ \t]*$")
-_DISPLAY = re.compile(r"^```math\n.+?^```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)(\*?)\}.+?"
+_OWN_LINE = (r"(?:(?<=\n\n)|^[ \t]*(?:[-*+]|\d+\.)[ \t]+)\$(?!\$)(?:[^$\n]|\n[ \t]+)+\$[ \t]*[.,;:]?[ \t]*$"
+             # a paragraph of its own opening on a command (not a macro's definition), its rows unindented
+             r"|(?<=\n\n)\$(?=[ \t]*\\)(?![ \t]*\\(?:re)?newcommand)[^$]+?\$[ \t]*(?:\\\\)?[ \t]*(?=\n\n|\Z)")
+# A fenced block in the language math, or a MyST {math} directive (a Jupyter Book's display), at any indentation.
+_DISPLAY = re.compile(r"^[ \t]*```(?:math|\{math\})[ \t]*\n.+?^[ \t]*```|\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)(\*?)\}.+?"
                       r"\\end\{\1\2\}|" + _OWN_LINE, re.S | re.M)
-_OPENING = re.compile(r"^\s*(```math|\$\$|\\\[|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)\*?\}"
+_OPENING = re.compile(r"^\s*(```math|```\{math\}|\$\$|\\\[|\\begin\{(equation|alignat|align|eqnarray|gather|multline|subnumcases|numcases|dmath)\*?\}"
                       r"|(?:[-*+]|\d+\.)?\s*\$(?!\$))")
 
 

@@ -279,3 +279,49 @@ def test_the_position_rate_with_spacing_between_the_matrix_and_the_velocity_read
     assert spaced != _POSITION
     assert verdicts(spaced.replace("MATRIX", "R_{b \\rightarrow \\, i}"))[-1] == (15, "holds")
     assert verdicts(spaced.replace("MATRIX", "R_{i \\rightarrow b}"))[-1] == (15, "fails")
+
+
+def test_a_myst_math_directive_is_a_display_its_options_dropped():
+    text = f"# Notes\n\n```{{math}}\n:label: eq-energy\n{T}\n```\n"
+    assert verdicts(text) == [(3, "holds")]
+
+
+def test_a_myst_math_directive_indented_in_a_list_item_is_a_display():
+    text = f"# Notes\n\n- The energy:\n\n    ```{{math}}\n    {T}\n    ```\n"
+    assert verdicts(text) == [(5, "holds")]
+
+
+_SIX = ("\\begin{align*}\n\\dot{\\mathbf{p}}^N &= \\mathbf{R}_{BN}^T(\\mathbf{q}) \\mathbf{v}^B \\\\\n"
+        "\\dot{\\mathbf{v}}^B &= \\frac{1}{m}\\mathbf{F}^B - \\boldsymbol{\\omega}^B \\times \\mathbf{v}^B\n\\end{align*}")
+_MASS_RATE = ("\\frac{d}{dt}(m \\mathbf{v}^B) = \\mathbf{F}^B\n"
+              "\\implies m \\dot{\\mathbf{v}}^B + \\dot{m} \\mathbf{v}^B = \\mathbf{F}^B")
+
+
+def test_a_bold_p_the_prose_calls_a_position_is_not_taken_for_a_momentum():
+    text = ("# Motion\n\nThe equations of motion are\n\n$$\n" + _SIX + "\n$$\n\nThe mass rate enters through the rate "
+            "of the linear momentum,\n\n$$\n" + _MASS_RATE + "\n$$\n\nThe body's state is its position $\\mathbf{p}^E$ "
+            "and its velocity $\\mathbf{v}^E$ in the frame E. Then\n\n$$\n\\dot{\\mathbf{p}}^E = \\mathbf{v}^E\n$$\n")
+    assert ("holds" in [v for line, v in verdicts(text) if line == 14]
+            and [v for line, v in verdicts(text) if line == 21] == ["unchecked"])
+
+
+_Z = "\\begin{bmatrix} \\cos\\psi & -\\sin\\psi & 0 \\\\ \\sin\\psi & \\cos\\psi & 0 \\\\ 0 & 0 & 1 \\end{bmatrix}"
+_Y = "\\begin{bmatrix} \\cos\\theta & 0 & \\sin\\theta \\\\ 0 & 1 & 0 \\\\ -\\sin\\theta & 0 & \\cos\\theta \\end{bmatrix}"
+_X = "\\begin{bmatrix} 1 \\\\ 0 \\\\ 0 \\end{bmatrix}"
+
+
+def _turned_x(last):
+    return ("# Axes\n\nThe turned x axis in the frame I:\n\n$$\n{}_I \\mathbf{e}^x = \\mathbf{C}(\\psi) \\cdot \\mathbf{C}(\\theta) "
+            "\\cdot " + _X + " = " + _Z + _Y + _X + " = \\begin{bmatrix} \\cos\\theta\\cos\\psi \\\\ \\cos\\theta\\sin\\psi "
+            "\\\\ " + last + " \\end{bmatrix}\n$$\n")
+
+
+def test_a_frame_index_written_on_the_left_of_a_symbol_in_one_frame_only_is_read_past():
+    assert "holds" in {v for _, v in verdicts(_turned_x("-\\sin\\theta"))}
+    assert "holds" not in {v for _, v in verdicts(_turned_x("-\\sin\\psi"))}
+
+
+def test_a_symbol_written_in_two_frames_keeps_its_left_indices_and_is_not_read_as_one():
+    text = ("# Rates\n\n$$\n{}_I \\mathbf{e}^y = \\begin{bmatrix} 0 \\\\ 1 \\\\ 0 \\end{bmatrix}\n$$\n\n"
+            "$$\n{}_B \\mathbf{e}^y = \\begin{bmatrix} 1 \\\\ 0 \\\\ 0 \\end{bmatrix}\n$$\n")
+    assert not {v for _, v in verdicts(text)} & {"typo", "fails"}

@@ -40,6 +40,9 @@ from derive.lecture import vectors as vc
 from derive.lecture.written_matrices import columns_only, numbers_set
 from derive.lecture.latex_spellings import VECTOR_MARK
 
+# The prose calling a bold p a position ("its position $\mathbf{p}^E$"): then 𝐩 is no momentum m𝐯.
+_PLACE = re.compile(r"\bposition\s+(?:of\s+[\w ]{0,30})?\$\\(?:mathbf|boldsymbol|bm|vec)\s*\{?\s*p\b")
+
 WHY = ("rigid rotation from first principles: 𝐯 = 𝛚 × 𝐫, 𝐋 = Σ m 𝐫 × (𝛚 × 𝐫), 𝐈 = ∂𝐋/∂𝛚, "
        "torque d𝐋/dt; sums and ∫ dm read for three generic mass points")
 
@@ -55,8 +58,9 @@ class AlgebraStatements:
                                 kind == "vector" and m == "angular momentum")
             torques = {b for (b, kind), m in (names.letters.items() if names else ()) if
                        kind == "vector" and m == "torque"} - momenta     # 𝐌 "being the external torque"
+            places = frozenset({"p"} if _PLACE.search(self.notes.body or "") else ())   # 𝐩ᴺ "the position of the body"
             self._alg_state = va.State(products=va.products_of_inertia(self.notes.body or ""), momenta=momenta,
-                                       torques=set(va.TORQUES) | torques)
+                                       torques=set(va.TORQUES) | torques, places=places)
             self._alg_read = False
         return self._alg_state
 

@@ -30,12 +30,16 @@ _WRITTEN_TURN = re.compile(
 
 
 class OwnTurns:
-    """Mixin of the checker. Uses ``self.notes``, ``self.d``, ``self._turn_factors`` and
-    ``self._turn_at_another_argument``."""
+    """Mixin of the checker. Uses ``self.notes``, ``self.d``, ``self._turn_factors``,
+    ``self._angle_left_out`` and ``self._turn_at_another_argument``."""
 
     def _turn_read_apart(self, text: str):
-        """(verdict, why) of a product of turns read on its own: at another argument than its name is
-        bound to (unchecked), or against the sense of the turns the text writes out (fails); else None."""
+        """(verdict, why) of a product of turns read on its own: one that leaves out an angle its name
+        lists (typo), at another argument than its name is bound to (unchecked), or against the sense of
+        the turns the text writes out (fails); else None."""
+        left_out = self._angle_left_out(text)
+        if left_out is not None:
+            return left_out
         other = self._turn_at_another_argument(text)
         if other is not None:
             return "unchecked", other

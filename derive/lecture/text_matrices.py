@@ -18,8 +18,9 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
   unless the text defined it with its argument written, ``C_Z(\\phi) = …``, a function of its angle
   (`_functions_at`). A basis vector right of such matrices is its unit column (`_basis_columns`);
   a matrix named by the three angles that is the sequence's rotation with the first and third
-  exchanged is a typo of it (`_angles_exchanged`); a free letter A, B, C set equal to a 3×3 matrix
-  names it (`_free_letter_named`).
+  exchanged is a typo of it (`_angles_exchanged`), and so is a product of three single-axis turns
+  that leaves out an angle the name lists (`_angle_left_out`); a free letter A, B, C set equal to a
+  3×3 matrix names it (`_free_letter_named`).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.written_matrices`,
 :mod:`derive.lecture.zero_test`,
@@ -406,6 +407,34 @@ class TextMatrices:
                       self.tex(sp.Matrix(right)))
             return True
         return False
+
+    def _angle_left_out(self, text: str):
+        """``R(\\phi, \\theta, \\psi) = R_z(\\psi) R_y(\\theta) R_x(\\psi)``: a name listing the sequence's three
+        angles set equal to a product of three turns named by an axis, one angle each, that leaves a listed
+        angle out and turns by another twice. Whatever the turns' sense, such a product does not depend on
+        the angle left out, so it is a typo: ("typo", why); None for any other statement."""
+        listed, m = self._angles_listed(text), _NAME_OF.match(text)
+        if listed is None or len(set(listed)) != 3 or not set(listed) <= set(self.d.rot.ANGLES):
+            return None
+        try:
+            toks = lx.scan(text[m.end():])
+        except lx.NotRead:
+            return None
+        if len(toks) != 12 or not all(
+                a.kind == "atom" and a.value.sub in ("1", "2", "3", "x", "y", "z") and not a.value.sup and not a.value.dots
+                and (o.kind, o.value, c.kind, c.value) == ("op", "(", "op", ")") and g.kind == "atom"
+                for a, o, g, c in (toks[k:k + 4] for k in range(0, 12, 4))):
+            return None
+        try:
+            turns = [self.vocab.resolve(toks[k + 2].value) for k in range(0, 12, 4)]
+        except lx.NotRead:
+            return None
+        if len(set(turns)) != 2 or not set(turns) < set(listed):
+            return None
+        (out,) = set(listed) - set(turns)
+        twice = next(a for a in turns if turns.count(a) == 2)
+        return ("typo", f"the product turns by {self.tex(twice)} twice and never by {self.tex(out)}, which its "
+                        f"name lists: it does not depend on {self.tex(out)}")
 
     def _angles_listed(self, text: str):
         """The symbols a left side ``N(a, b, c) =`` lists as its name's arguments, or None."""

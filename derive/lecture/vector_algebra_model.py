@@ -210,6 +210,7 @@ class State:
     products: bool = False                          # I_xy names the product of inertia +∫xy dm
     entries: bool = False                           # the text wrote I_ij = … in index form: I_xy is the entry
     momenta: frozenset = frozenset()                # the letters the text names the angular momentum (𝐇)
+    places: frozenset = frozenset()                 # the letters the text names a position (𝐩ᴺ), not a momentum
     named: dict = field(default_factory=dict)       # a letter the text set to an expression here (K = Σ ½ m v²)
     named_by: dict = field(default_factory=dict)    # the statement that set it
     axis: int | None = None                         # the fixed axis of rotation a text set (𝛚 = ω k̂)
@@ -450,7 +451,7 @@ class Algebra:
             p.rated = True                   # 𝐚ᵢ: the point's acceleration; ᵗ, ⁿ its tangential and normal parts
             return _moved(env, {"t": "at", "tau": "at", "n": "an"}.get(a.sup, "a"))
         if base == "p" and bold and self._own(sub, env):
-            return mass * _moved(env, "v")
+            return None if "p" in self.state.places else mass * _moved(env, "v")
         if base == "F" and bold and sub and sub == env.get("index"):
             p.rated = True                   # 𝐅ᵢ summed over the points: the rate of the point's momentum
             return mass * rate(_moved(env, "v"))

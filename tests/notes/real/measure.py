@@ -6,7 +6,7 @@ Jupyter notebook, read through its Markdown cells): its displays exactly as the 
 the prose between them in our own words, the source, commit and licence at its top (front matter,
 a ``%`` comment block, or the notebook's first cell and metadata). A truth table's line numbers are
 the text file's own lines. A display is a ``$$`` block, ``\\[…\\]``, a display environment, a fenced
-``math`` block, or a formula in inline math that a text sets as a list item or a paragraph of its own.
+``math`` block (or a MyST ``{math}`` directive), or a formula in inline math that a text sets as a list item or a paragraph of its own.
 ``<slug>.truth.toml`` is its truth table, one
 verdict per display (``holds``, ``typo``, ``fails``, ``not a claim``) with the reason, derived by
 ``<slug>_truth.py``: a SymPy derivation in the text's own convention and names that never goes
