@@ -32,4 +32,5 @@ def row(value, euler: list, subs: dict | None = None) -> tuple[int, sp.Expr] | N
     i = rates[0]
     if sp.expand(sp.diff(value, lx.WD[i])) != (I1, I2, I3)[i]:
         return None
-    return i, sp.expand((value - euler[i]).xreplace(subs or {}))
+    # the residuals divide by the moments the case may have set to values: cancelled, not only expanded
+    return i, sp.expand(sp.cancel((value - euler[i]).xreplace(subs or {})))
