@@ -8,6 +8,7 @@ may mean something else by the letter there."""
 from kept_readings import by_line, line_of
 
 from derive.lecture import names as nm
+from derive.lecture import source
 from derive.lecture.vocabulary import Atom
 
 TIE = r"\dot{L}_1~\equiv~ I_1 \dot{\Omega}_1~=~\Omega_{2}(I_{2}-I_{3}) \Omega_{3}"
@@ -67,3 +68,30 @@ def test_the_momentum_names_omega_with_the_rates_written_in_differentials():
     upright = TIE.replace(r"\dot{L}_1", r"\frac{\mathrm{d} L_1}{\mathrm{d} t}").replace(
         r"\dot{\Omega}_1", r"\frac{\mathrm{d} \Omega_1}{\mathrm{d} t}")
     assert _verdicts(_text(upright, SECOND), upright) == ["holds"]
+
+
+# Euler's equations on axes x, y, z, in a display environment, the rates in the text's own macro for d
+_XYZ = "\n".join([
+    r"$\newcommand{\D}{\mathop{}\!\mathrm{d}}$", "", "When the tensor $I$ is diagonal this reads", r"\begin{align*}",
+    r"\dot{L}_x &= I_x \frac{\D \Omega_x}{\D t} + (I_z-I_y)\Omega_y \Omega_z \\",
+    r"\dot{L}_y &= I_y \frac{\D \Omega_y}{\D t} + (I_x-I_z)\Omega_x \Omega_z \\",
+    r"\dot{L}_z &= I_z \frac{\D \Omega_z}{\D t} + (I_y-I_x)\Omega_x \Omega_y", r"\end{align*}", ""])
+
+
+def _xyz_verdicts(text):
+    return [c.verdict for c in by_line(text)[line_of(text, r"\begin{align*}")]]
+
+
+def test_euler_s_shape_on_axes_x_y_z_names_its_letter_and_the_principal_axes_so_a_slip_is_flagged():
+    text = "# Free body\n\n" + _XYZ
+    assert nm.learn(text, macros=source.macros(text)).meaning(Atom("Omega", sub="y")) == "angular velocity"
+    assert _xyz_verdicts(text) == ["holds"] * 3
+    slip = text.replace(r"(I_z-I_y)\Omega_y", r"(I_y-I_z)\Omega_y")
+    assert sorted(_xyz_verdicts(slip)) == ["holds", "holds", "typo"]
+
+
+def test_the_moment_times_a_rate_with_another_term_names_nothing():
+    for row in (r"\dot{L}_x = I_x \dot\Omega_x + (I_z-I_y)\Omega_y \beta_z",
+                r"\dot{L}_x = I_x \dot\Omega_x + (I_z-I_y)\Omega_y \Omega_z + \Omega_x",
+                r"L_x = I_x \Omega_x + (I_z-I_y)\Omega_y \Omega_z"):
+        assert nm.learn(_text(row)).meaning(Atom("Omega", sub="x")) is None, row

@@ -133,16 +133,11 @@ SHORT = {
         "the reader's model of a free body or of the fast top; omega(R), I_0 and E(R) of its simulation are "
         "functions of the orientation R, which the reader does not model",
     ("verga-polytech-spinning-cone-euler-equations-fr", "checked"):
-        "6 of 19: a French course notebook whose Omega_x, Omega_y, Omega_z its text never ties to the body's "
-        "angular velocity (a code cell names Omega), whose Euler's equations carry Ldot on the left, and whose "
-        "moments I_1, I_2, I_3 are names set to triple integrals over the cone (not compared: such a name may mean "
-        "a density or a Jacobian the integral leaves out); its volume and centre of mass integrals, its density "
-        "M over that volume, the moments moved from the apex to the centre of mass (I_x = I_1 - M R^2), the solid "
-        "cone's moments about its centre of mass and the distance 3h/4 of that centre from the apex are checked",
-    ("verga-polytech-spinning-cone-euler-equations-fr", "found"):
-        "2 of 4: the volume's and the centre of mass's integrals without the Jacobian r are flagged; the moments' "
-        "integrals (names set to integrals, not compared) and the psi = 0 equations in thetadot and phidot "
-        "sin(theta) with omega's sign reversed, in the Omega_i the text does not tie, are not",
+        "8 of 19: a French course notebook whose Euler's equations (Ldot on the left, on axes x, y, z) are read "
+        "and whose moments I_1, I_2, I_3 are names set to triple integrals over the cone (not compared: such a "
+        "name may mean a density or a Jacobian the integral leaves out); its free top's equations in omega and "
+        "I, which its prose sets with I_x = I_z = I where the cone has I_x = I_y, and the frame-labelled transport "
+        "theorem are not",
     ("verga-polytech-euler-angles-body-angular-velocity-fr-zxz", "checked"):
         "10 of 23: a French course notebook on matrices of change of coordinates C = R^T about a general axis n "
         "(R_n(a), C_n(a), A-bar = R^T A R) and its macro \\bm, with \\wedge for the vector product and the "

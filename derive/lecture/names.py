@@ -330,8 +330,10 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
         if len(atoms) == 3 and len({a.base for a in atoms}) == 1 and _fits(meaning, atoms):
             bind(names, atoms, meaning, f"line {line}")
     _rate_law(names, body)
-    for line, tex in principal_momentum.velocity_letters(body):      # L̇ᵢ ≡ IᵢΩ̇ᵢ: Ω is the angular velocity
-        if _fits("angular velocity", _atoms(tex)):
+    for line, tex in principal_momentum.velocity_letters(body, macros):      # L̇ᵢ ≡ IᵢΩ̇ᵢ: Ω is the angular velocity
+        if tex.endswith("_"):       # Euler's shape on axes x, y, z: principal axes, the only ones where it has it
+            _xyz_axes(names, tex[1:-1], f"line {line} (Euler's equation on principal axes x, y, z)")
+        elif _fits("angular velocity", _atoms(tex)):
             bind(names, _atoms(tex), "angular velocity", f"line {line}")
     for line, tex in hat_maps.body_velocities(body):       # R^T Ṙ = Ω̂: Ω is the body angular velocity
         atoms = _atoms(tex)
@@ -468,22 +470,20 @@ def _rates_listed(names: Names, text: str, found: list, starts, offset):
 
 
 def _principal_axes(names: Names, body: str, prose: str):
-    """A text that says its axes are principal and writes I_x, ω_x, … (with no I_1, ω_1 beside
-    them) means the body's principal axes 1, 2, 3 by x, y, z."""
-    if not re.search(r"principal ax[ie]s", prose, flags=re.I):
-        return
-    used = set()
-    for m in re.finditer(r"\\(omega|Omega)\s*_\s*\{?\s*([xyz123])|\bI\s*_\s*\{?\s*([xyz123])(?![a-z])", body):
-        used.add(((m.group(1) or "I"), m.group(2) or m.group(3)))
-    for letter, meaning in (("I", None), ("omega", "angular velocity"), ("Omega", "angular velocity")):
-        if {(letter, x) for x in "xyz"} & used and not {(letter, x) for x in "123"} & used:
-            if letter == "I":
-                for x, m in zip("xyz", ("transverse moment", "second moment", "axial moment")):
-                    _put(names.symbols, ("I", x), m, False)
-                    names.where[("I", x)] = "prose (principal axes x, y, z)"
-            else:
-                _put(names.letters, (letter, "vector"), meaning, False)
-                names.where[(letter, "x")] = "prose (principal axes x, y, z)"
+    """A text that says its axes are principal and writes I_x, ω_x (never I_1, ω_1) means its axes 1, 2, 3 by x, y, z."""
+    for letter in principal_momentum.xyz_only(body) if re.search(r"principal ax[ie]s", prose, flags=re.I) else ():
+        _xyz_axes(names, letter, "prose (principal axes x, y, z)", moments=False)
+
+
+def _xyz_axes(names: Names, letter: str, where: str, moments: bool = True):
+    """On principal axes named x, y, z: the letter's components (ω_x, Ω_x) the angular velocity's, and
+    (``moments``, or the letter I) I_x, I_y, I_z the principal moments."""
+    for x, m in zip("xyz", ("transverse moment", "second moment", "axial moment")) if moments or letter == "I" else ():
+        _put(names.symbols, ("I", x), m, False)
+        names.where[("I", x)] = where
+    if letter != "I":
+        _put(names.letters, (letter, "vector"), "angular velocity", False)
+        names.where[(letter, "x")] = where
 
 
 def _line(starts, pos) -> int:

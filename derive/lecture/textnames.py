@@ -184,7 +184,7 @@ class TextNames(UnreadMembers):
                         self._rotation(line, piece, sp.Matrix(value)):
                     self._matrix_name(m0, value)     # a product of the text's matrices: a rotation
                     return True
-                euler = euler_moments.row(value, self.d.euler(self.ctx.subs))
+                euler = euler_moments.row(value, self.d.euler(self.ctx.subs), self.ctx.subs)
                 if euler is not None:            # the moment's body component i set to Euler's left side
                     self._add(line, piece, "equation of motion", "holds" if euler[1] == 0 else "fails",
                               f"Euler's equation {euler[0] + 1} about the centre of mass, the text's "
