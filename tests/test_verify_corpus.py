@@ -313,7 +313,7 @@ SHORT = {
         "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
 }
 
-FLOOR = {"checked": 951, "slips_flagged": 112, "holds_flagged": 0}
+FLOOR = {"checked": 976, "slips_flagged": 118, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
