@@ -77,6 +77,14 @@ def test_coherent_units_in_brackets_after_a_value_are_no_factor():
     assert "fails" in {v for _, v in verdicts(_cart("24.0"))}
 
 
+def test_units_in_brackets_sized_by_hand_or_plain_are_no_factor_either():
+    for opening, closing in (("\\bigl", "\\bigr"), ("\\Bigl", "\\Bigr"), ("", "")):
+        def sized(energy):
+            return _cart(energy).replace("\\left", opening).replace("\\right", closing)
+        assert {v for _, v in verdicts(sized("20.0"))} == {"holds"}, opening
+        assert "fails" in {v for _, v in verdicts(sized("24.0"))}, opening
+
+
 def test_a_rate_in_revolutions_in_brackets_is_not_read_as_the_number_in_radians():
     text = ("# Rate\n\n$$ \\omega = 5 \\ \\ \\left[\\frac{\\text{rev}}{\\text{s}} \\right] = 10 \\pi \\ \\ "
             "\\left[\\frac{\\text{rad}}{\\text{s}} \\right] $$\n")

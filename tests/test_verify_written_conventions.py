@@ -321,6 +321,11 @@ def test_a_frame_index_written_on_the_left_of_a_symbol_in_one_frame_only_is_read
     assert "holds" not in {v for _, v in verdicts(_turned_x("-\\sin\\psi"))}
 
 
+def test_a_small_space_between_a_left_frame_index_and_its_symbol_changes_nothing():
+    spaced = _turned_x("-\\sin\\theta").replace("{}_I \\mathbf", "{}_I \\, \\mathbf")
+    assert "holds" in {v for _, v in verdicts(spaced)}
+
+
 def test_a_symbol_written_in_two_frames_keeps_its_left_indices_and_is_not_read_as_one():
     text = ("# Rates\n\n$$\n{}_I \\mathbf{e}^y = \\begin{bmatrix} 0 \\\\ 1 \\\\ 0 \\end{bmatrix}\n$$\n\n"
             "$$\n{}_B \\mathbf{e}^y = \\begin{bmatrix} 1 \\\\ 0 \\\\ 0 \\end{bmatrix}\n$$\n")

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import re
 
-_LEFT = re.compile(r"\{\}_[ \t]*(\{[^{}\n]*\}|\\[A-Za-z]+|[A-Za-z0-9])[ \t]*(\\[A-Za-z]+(?:[ \t]*\{[^{}\n]*\})?|[A-Za-z])")
+# a small space may set the symbol off its index ({}_I \\, \\mathbf{e})
+_LEFT = re.compile(r"\{\}_[ \t]*(\{[^{}\n]*\}|\\[A-Za-z]+|[A-Za-z0-9])(?:[ \t]|\\[,:;!])*(\\[A-Za-z]+(?:[ \t]*\{[^{}\n]*\})?|[A-Za-z])")
 # what ends a symbol or its index right before ``{}_`` (``\epsilon^I{}_{JK}``); an operator is no symbol
 _BEFORE_SYMBOL = re.compile(r"(?:[\w}^_')\]](?<!\\cdot)(?<!\\times)(?<!\\left))[ \t]*\Z")
 

@@ -40,9 +40,11 @@ def _units_of(atom: str) -> str:
 
 _IN_FRACTION = r"(?:" + _SI_NAME + _POWER + r"|\\[dt]?frac\s*\{\s*" + _units_of(_SI_NAME + _POWER) + r"\s*\}\s*\{\s*" \
     + _units_of(_SI_NAME + _POWER) + r"\s*\})"
-_IN_BRACKET = r"(?:" + _IN_FRACTION + r"|(?:\\left\s*)?\(\s*" + _units_of(_IN_FRACTION) + r"\s*(?:\\right\s*)?\)" + _POWER + ")"
-_BRACKETED_UNIT = re.compile(r"(?:" + SPACE_SYMBOL + "|" + QUAD + "|" + TIE + r")+\s*(?:\\left\s*)?\[\s*" + _units_of(_IN_BRACKET)
-                             + r"\s*(?:\\right\s*)?\](?=\s*(?:$|[=,;&]|\\\\|" + QUAD + "))")
+# a bracket sized with \\left … \\right or by hand (\\bigl[ … \\bigr]), or plain
+_SIZED_OPEN, _SIZED_CLOSE = r"(?:\\(?:left|[Bb]igg?l?)(?![A-Za-z])\s*)?", r"(?:\\(?:right|[Bb]igg?r?)(?![A-Za-z])\s*)?"
+_IN_BRACKET = r"(?:" + _IN_FRACTION + r"|" + _SIZED_OPEN + r"\(\s*" + _units_of(_IN_FRACTION) + r"\s*" + _SIZED_CLOSE + r"\)" + _POWER + ")"
+_BRACKETED_UNIT = re.compile(r"(?:" + SPACE_SYMBOL + "|" + QUAD + "|" + TIE + r")+\s*" + _SIZED_OPEN + r"\[\s*" + _units_of(_IN_BRACKET)
+                             + r"\s*" + _SIZED_CLOSE + r"\](?=\s*(?:$|[=,;&]|\\\\|" + QUAD + "))")
 """Coherent SI units in square brackets, spaced off after a value and closing a member, as engineering
 solutions label a result, ``312.5\\,m \\ \\ \\left[\\text{kg}\\left(\\frac{\\text{m}}{\\text{s}}\\right)^2\\right]``,
 ``\\left[ J \\right]``: a value in such units is the number written (rev, rpm and degrees are left, since
