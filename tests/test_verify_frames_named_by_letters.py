@@ -70,3 +70,7 @@ def test_a_non_inertial_frame_is_not_read_as_an_inertial_one():
 def test_a_body_fixed_frame_is_the_body_frame():
     text = _correct().replace("the body frame $S$", "the body-fixed frame $S$")
     assert _verdicts(text, 6) == ["holds"] and _verdicts(text, 12) == ["holds"]
+
+
+def test_a_label_whose_own_index_is_braced_is_the_same_frame():
+    assert _verdicts(_correct().replace("]_{S_0}", "]_{S_{0}}"), 6) == ["holds"]

@@ -40,3 +40,8 @@ def test_passive_turns_written_out_in_that_order_hold():
 
 def test_turns_the_text_does_not_write_out_take_the_sense_that_fits():
     assert _product(HEAD + PRODUCT) == ["holds"]
+
+
+def test_turns_written_out_with_operatorname_sines_are_the_same_turns():
+    spelled = ACTIVE.replace("\\sin", "\\operatorname{sin}").replace("\\cos", "\\operatorname{cos}")
+    assert _product(HEAD + PRODUCT + spelled) == ["fails"]

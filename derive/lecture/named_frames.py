@@ -31,7 +31,8 @@ _BODY_KIND = re.compile(r"(?:" + _BODY + r")$", re.I)
 
 _VEC = VECTOR_MARK + r"\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[A-Za-z])"
 _D = r"(?:\\mathrm\s*\{\s*d\s*\}|d)" + SPACE
-_LABEL = r"\s*_\s*(?P<label>\{[^{}]*\}|[A-Za-z])"
+# a label braced whole, its own index braced or not (``_{S_0}``, ``_{S_{0}}``), or one letter
+_LABEL = r"\s*_\s*(?P<label>\{(?:[^{}]|\{[^{}]*\})*\}|[A-Za-z])"
 
 
 def _bracketed(inner: str) -> re.Pattern:

@@ -12,7 +12,7 @@ Only a product whose three names the text writes out, each about its own axis an
 sense, is judged; any other product is read as before (`derive.lecture.text_matrices`, where a
 product of turns takes whichever sense makes it the sequence's rotation).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.stated_convention`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`, :mod:`derive.lecture.stated_convention`, SymPy.
 """
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture import source
 from derive.lecture.stated_convention import elementary
 
 _WRITTEN_TURN = re.compile(
@@ -51,8 +52,10 @@ class OwnTurns:
         one elementary turn under a name by its axis."""
         if not hasattr(self, "_own_turns"):
             self._own_turns = {}
+            user = source.macros(self.notes.body)
             for m in _WRITTEN_TURN.finditer(self.notes.body):
-                turn = elementary(m.group(3))
+                # the text's spellings of the entries (``\\operatorname{sin}``, its own macros) as the plain ones
+                turn = elementary(source.normalize(m.group(3), user))
                 try:
                     toks = lx.scan(m.group(1))
                 except lx.NotRead:
