@@ -170,3 +170,8 @@ def test_a_corpus_text_written_another_way_keeps_every_display_checked(kind):
     if not changed:
         pytest.skip(f"no display of this half of the corpus is written so that {kind!r} rewrites it")
     assert (lost, unflagged) == ([], []), f"{len(lost)} displays no longer hold: {lost}; slips no longer flagged: {unflagged}"
+
+
+def test_a_plain_bracket_rewrite_leaves_a_pair_with_an_invisible_delimiter_sized():
+    plain = VARIANTS["plain brackets for left-right"][1]
+    assert plain(r"\left.\frac{dB}{dt}\right)_{rel} = \left(a\right)") == r"\left.\frac{dB}{dt}\right)_{rel} = (a)"

@@ -149,12 +149,13 @@ def _left_right_for_plain(latex: str) -> str:
 _SIZING = re.compile(r"\\(left|right)(?![A-Za-z])")
 
 
-def _resized(opening: str, closing: str):
+def _resized(opening: str, closing: str, ends_allowed: str = "()[]."):
     """Each ``\\left … \\right`` pair whose delimiters are both round or square brackets or the invisible
     ``.`` (not both ``.``) sized with ``opening``/``closing`` instead, the pair rewritten whole: TeX pairs a
     ``\\left`` with its ``\\right``, so ``\\left. X \\right)_{rel}`` becomes ``\\bigl. X \\bigr)_{rel}`` (a
     ``\\left.`` kept before a ``\\bigr)`` would be a ``\\left`` without its ``\\right``, no formula at all). A
-    display whose ``\\left`` and ``\\right`` do not pair stays."""
+    display whose ``\\left`` and ``\\right`` do not pair stays. ``ends_allowed`` narrows the delimiters a
+    rewritten pair may have (plain brackets have no invisible one: such a pair stays sized)."""
     def change(latex: str) -> str:
         pairs, opened = [], []
         for m in _SIZING.finditer(latex):
@@ -169,7 +170,7 @@ def _resized(opening: str, closing: str):
         edits = []
         for left, right in pairs:
             ends = latex[left.end():left.end() + 1], latex[right.end():right.end() + 1]
-            if all(e and e in "()[]." for e in ends) and ends != (".", "."):
+            if all(e and e in ends_allowed for e in ends) and ends != (".", "."):
                 edits += [(left, opening), (right, closing)]
         for m, sized in sorted(edits, key=lambda e: -e[0].start()):
             latex = latex[:m.start()] + sized + latex[m.end():]
@@ -187,7 +188,7 @@ VARIANTS = {
     "upright d": (ALL_NOTES, _sub(r"\{d(?=\\|t\}| )", r"{\\mathrm{d}")),
     "upright d with a space": (ALL_NOTES, _sub(r"\{d(?=\\|t\}| )", r"{\\mathrm{d}\\,")),
     # brackets
-    "plain brackets for left-right": (ALL_NOTES, _sub(r"\\(?:left|right)(?=[()\[\]])", "")),
+    "plain brackets for left-right": (ALL_NOTES, _resized("", "", ends_allowed="()[]")),
     "bigl-bigr for left-right": (ALL_NOTES, _resized("\\bigl", "\\bigr")),
     "left-right for plain brackets": (ALL_NOTES, _left_right_for_plain),
     # spacing and products
