@@ -20,7 +20,7 @@ neither the prose nor the front matter named the symbol:
   it the moment of inertia, the inertia tensor or its principal axes, names those three the
   principal moments I₁, I₂, I₃ — unless the text gives one of them a formula of its own.
 
-May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex_spaces`.
+May import: :mod:`derive.lecture.names`, :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.latex_spellings`.
 """
 from __future__ import annotations
 
@@ -28,6 +28,7 @@ import re
 
 from derive.lecture import names as nm
 from derive.lecture.latex_spaces import SPACE
+from derive.lecture.latex_spellings import SIZED_OPEN
 
 _MATH = re.compile(r"\$\$(.+?)\$\$|(?<![\\$])\$([^$]+?)(?<!\\)\$|\\\[(.+?)\\\]|"
                    r"\\begin\{(equation|align|eqnarray|gather|multline)\*?\}(.+?)\\end\{\4\*?\}", re.S)
@@ -39,7 +40,7 @@ _SYMBOL = r"[A-Za-z]_\{?[A-Za-z0-9]+\}?"
 _SHIFT = re.compile(r"(?:^|\\\\|[,;&])\s*(" + _SYMBOL + r")\s*&?\s*=\s*(" + _SYMBOL + r")\s*\+\s*([mM])\s*([a-z])\s*\^\s*\{?2\}?"
                     r"\s*(?=$|[,;.]|\\\\)")
 # the matrix in brackets sized by \\left or by hand (\\bigl[), or plain, or none
-_MATRIX = re.compile(r"=\s*(?:\\(?:left|[bB]igg?l?)\s*)?[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
+_MATRIX = re.compile(r"=\s*" + SIZED_OPEN + r"[\[(]?\s*\\begin\{(array|[bpvBV]?matrix)\}(?:\{[lcr|]*\})?(.+?)\\end\{\1\}",
                      re.S)
 _INERTIA = re.compile(r"moments? of inertia|inertia (?:tensor|matrix)|tensor of inertia|principal ax[ie]s",
                       re.I)

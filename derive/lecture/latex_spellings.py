@@ -45,6 +45,12 @@ PRIME_SUPERSCRIPT = (r"(?:(?<=[A-Za-z0-9)\]'|])|(?<=[^{]\}))\s*\^\s*"
 """A superscript of primes only after a symbol, ``V^{\\prime}``, ``x^\\prime``, ``y^{\\prime\\prime}`` (group 1 the
 script): the primes ``V'``, ``y''`` as TeX sets them (a pre-superscript ``{}^{\\prime}`` marks no symbol)."""
 
+SIZED_OPEN = r"(?:\\(?:left|[Bb]igg?l?)(?![A-Za-z])\s*)?"
+"""What may size an opening bracket, optional: ``\\left``, or by hand ``\\bigl``, ``\\Big``, ``\\biggl`` …"""
+
+SIZED_CLOSE = r"(?:\\(?:right|[Bb]igg?r?)(?![A-Za-z])\s*)?"
+"""What may size a closing bracket, optional: ``\\right``, or by hand ``\\bigr``, ``\\Big``, ``\\biggr`` …"""
+
 SIZED_ONE_TOKEN = r"\\left\s*\(\s*([A-Za-z0-9]+|\\[A-Za-z]+)\s*\\right\s*\)"
 """A round bracket sized with ``\\left``/``\\right`` around one letter, number or command (group 1),
 ``R\\left(t\\right)``: sized to one token it is the plain bracket, a function's argument as ``R(t)``."""

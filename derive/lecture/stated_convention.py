@@ -34,7 +34,7 @@ form of every sequence: it states none, and the reader takes it for no claim (`g
 Only the twelve sequences of `derive.lecture.notes.CONVENTIONS` are stated; the front matter, when
 it declares a convention, wins over everything read here (`derive.lecture.notes.parse_notes`).
 
-May import: the standard library (`re`, `dataclasses`), :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.source`
+May import: the standard library (`re`, `dataclasses`), :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.latex_spellings` and :mod:`derive.lecture.source`
 (where math stands in a text).
 """
 from __future__ import annotations
@@ -44,13 +44,14 @@ from dataclasses import dataclass
 
 from derive.lecture import source
 from derive.lecture.latex_spaces import ONE_SPACE, SPACING
+from derive.lecture.latex_spellings import SIZED_CLOSE, SIZED_OPEN
 
 _AXIS = {"1": "x", "2": "y", "3": "z", "x": "x", "y": "y", "z": "z", "X": "x", "Y": "y", "Z": "z"}
 _ORDINAL = {"first": "x", "second": "y", "third": "z", "1st": "x", "2nd": "y", "3rd": "z"}
 _SYMBOL = r"\\?[A-Za-z]+(?:\s*_\s*(?:\{\s*\\?[A-Za-z0-9]+\s*\}|\\?[A-Za-z0-9]))?"
 _MATRIX = r"(?:\\(?:mathbf|mathrm|boldsymbol|bm|mathsf)\s*\{\s*[A-Z]\s*\}|[A-Z])"
 # a turn's argument in plain or sized brackets, R_3\left(\theta_1\right) as R_3(\theta_1)
-_OPEN, _CLOSE = r"(?:\\(?:left|[Bb]igg?l?)\s*)?\(", r"(?:\\(?:right|[Bb]igg?r?)\s*)?\)"
+_OPEN, _CLOSE = SIZED_OPEN + r"\(", SIZED_CLOSE + r"\)"
 _TURN = (_MATRIX + r"\s*_\s*\{?\s*([123xyzXYZ])\s*\}?\s*" + _OPEN + r"\s*(" + _SYMBOL + r")\s*" + _CLOSE)
 # a display read whole, before it is cut into statements: three turns set side by side with quads keep their order
 _PRODUCT = re.compile(_TURN + SPACING + _TURN + SPACING + _TURN)

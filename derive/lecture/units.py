@@ -9,13 +9,14 @@ point, which math mode does not set) is 0.8976. A unit typed in plain italic let
 ``~`` after a number or a closed group, at the end of a member, ``m=0.1~kg``, ``\\frac{mgd}{I_z\\dot{\\psi}}~\\frac{rad}{s}``, ``\\frac{2\\pi}{\\dot{\\phi}}~s``
 (as notebooks write them), is dropped too: the tie sets a unit apart from the formula, which a product
 of symbols never needs. Coherent SI units in square brackets spaced off after a value and closing a member,
-``312.5\\,m \\ \\ \\left[\\text{J}\\right]``, are dropped as well (not revolutions or degrees). Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` only.
+``312.5\\,m \\ \\ \\left[\\text{J}\\right]``, are dropped as well (not revolutions or degrees). Takes and gives LaTeX; imports :mod:`derive.lecture.latex_spaces` and :mod:`derive.lecture.latex_spellings` only.
 """
 from __future__ import annotations
 
 import re
 
 from derive.lecture.latex_spaces import ONE_SPACE, QUAD, SPACE, SPACE_SYMBOL, TIE
+from derive.lecture.latex_spellings import SIZED_CLOSE, SIZED_OPEN
 
 _UNIT = r"(?:kg|m|cm|mm|km|s|ms|min|N|J|kJ|Pa|rad|RPM|rpm|rev|Hz|deg)"
 _UNIT_EXPR = _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?(?:\s*(?:/|\\cdot|" + ONE_SPACE + r")\s*" + _UNIT + r"(?:\s*\^\s*\{?-?\d\}?)?)*"
@@ -40,11 +41,9 @@ def _units_of(atom: str) -> str:
 
 _IN_FRACTION = r"(?:" + _SI_NAME + _POWER + r"|\\[dt]?frac\s*\{\s*" + _units_of(_SI_NAME + _POWER) + r"\s*\}\s*\{\s*" \
     + _units_of(_SI_NAME + _POWER) + r"\s*\})"
-# a bracket sized with \\left … \\right or by hand (\\bigl[ … \\bigr]), or plain
-_SIZED_OPEN, _SIZED_CLOSE = r"(?:\\(?:left|[Bb]igg?l?)(?![A-Za-z])\s*)?", r"(?:\\(?:right|[Bb]igg?r?)(?![A-Za-z])\s*)?"
-_IN_BRACKET = r"(?:" + _IN_FRACTION + r"|" + _SIZED_OPEN + r"\(\s*" + _units_of(_IN_FRACTION) + r"\s*" + _SIZED_CLOSE + r"\)" + _POWER + ")"
-_BRACKETED_UNIT = re.compile(r"(?:" + SPACE_SYMBOL + "|" + QUAD + "|" + TIE + r")+\s*" + _SIZED_OPEN + r"\[\s*" + _units_of(_IN_BRACKET)
-                             + r"\s*" + _SIZED_CLOSE + r"\](?=\s*(?:$|[=,;&]|\\\\|" + QUAD + "))")
+_IN_BRACKET = r"(?:" + _IN_FRACTION + r"|" + SIZED_OPEN + r"\(\s*" + _units_of(_IN_FRACTION) + r"\s*" + SIZED_CLOSE + r"\)" + _POWER + ")"
+_BRACKETED_UNIT = re.compile(r"(?:" + SPACE_SYMBOL + "|" + QUAD + "|" + TIE + r")+\s*" + SIZED_OPEN + r"\[\s*" + _units_of(_IN_BRACKET)
+                             + r"\s*" + SIZED_CLOSE + r"\](?=\s*(?:$|[=,;&]|\\\\|" + QUAD + "))")
 """Coherent SI units in square brackets, spaced off after a value and closing a member, as engineering
 solutions label a result, ``312.5\\,m \\ \\ \\left[\\text{kg}\\left(\\frac{\\text{m}}{\\text{s}}\\right)^2\\right]``,
 ``\\left[ J \\right]``: a value in such units is the number written (rev, rpm and degrees are left, since
