@@ -312,14 +312,12 @@ SHORT = {
     ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "found"):
         "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
     ("xiaoming-blog-euler-disk-rolling-rigid-body-contact-point-zxz-zh", "checked"):
-        "1 of 19 on its first read: the equations in cross-product brackets [a, b] between hatted names, the "
-        "contact points of a disk, an ellipsoid and a torus, and the body and space angular velocities named "
-        "Omega and omega = A_t Omega are not read",
+        "3 of 19 (1 on its first read): the z-x-z matrix, Omega and omega = A_t Omega are read; the equations "
+        "in cross-product brackets [a, b] between hatted names and the contact points of a disk, an ellipsoid "
+        "and a torus are not",
     ("xiaoming-blog-euler-disk-rolling-rigid-body-contact-point-zxz-zh", "found"):
-        "0 of 4 on its first read: the z-x-z matrix's (1,3) entry, the cylinder X^2 + Y^2 <= R, the disk's "
-        "contact point with d A_t N and the torus's sin eta sit on displays it does not judge",
-    ("xiaoming-blog-euler-disk-rolling-rigid-body-contact-point-zxz-zh", "false"):
-        "1 of 15 on its first read: omega = A_t Omega judged against the text's A_t with its slip in it",
+        "1 of 4 (0 on its first read): the z-x-z matrix's (1,3) entry is flagged; the cylinder X^2 + Y^2 <= R, "
+        "the disk's contact point with d A_t N and the torus's sin eta sit on displays it does not judge",
     ("derphysicsjagger-blog-euler-disk-steady-precession-bump-loss-worked-problem", "checked"):
         "3 of 13 on its first read: vectors with hats in align blocks, the precession of L against a torque, "
         "small-angle approximations marked approx and a definite integral solved for alpha(t) are not read",
