@@ -79,3 +79,25 @@ def test_a_product_of_single_axis_turns_that_leaves_out_an_angle_its_name_lists_
     for product in ("R_z(\\phi) R_x(\\theta) R_z(\\psi)", "R_z(\\psi) R_x(\\theta) R_z(\\phi)"):
         assert "typo" not in verdicts(display("R(\\phi, \\theta, \\psi)", product)).get(9, set()), product
     assert "typo" not in verdicts(display("R(\\phi, \\theta)", "R_z(\\phi) R_x(\\theta) R_z(\\phi)")).get(9, set())
+
+
+# R with its (1, 3) entry written sin ψ sin φ for sin θ sin φ: that column is then no unit vector
+ONE_OFF = R.replace("\\sin\\theta\\sin\\phi \\\\", "\\sin\\psi\\sin\\phi \\\\", 1)
+
+
+def test_the_stated_sequences_rotation_with_one_entry_written_otherwise_is_a_typo_and_its_products_use_the_rotation():
+    assert ONE_OFF != R
+    after = ("\n$$A \\boldsymbol{e}_z = \\begin{pmatrix} \\sin\\theta\\sin\\phi \\\\ -\\sin\\theta\\cos\\phi \\\\ "
+             "\\cos\\theta \\end{pmatrix}$$\n")
+    got = verdicts(display("A", ONE_OFF) + after)
+    assert got[9] == {"typo"} and got[11] == {"holds"}
+    claim = next(c for c in kept.check_text(display("A", ONE_OFF)) if c.line == 9)
+    assert "row 1, column 3" in claim.why and claim.correction
+
+
+def test_a_matrix_one_entry_off_a_rotation_is_said_nothing_of_where_no_sequence_is_stated_or_two_entries_are_off():
+    unstated = "# Notes\n\n"
+    assert "typo" not in verdicts(display("A", ONE_OFF, front=unstated)).get(3, set())
+    two_off = ONE_OFF.replace("& \\cos\\theta \\end", "& \\cos\\psi \\end", 1)
+    assert two_off != ONE_OFF
+    assert "typo" not in verdicts(display("A", two_off)).get(9, set())

@@ -311,6 +311,16 @@ SHORT = {
         "primed arrowed vectors, a Lagrangian's first link through v = v' + Omega x r' and E - E' = M . Omega are not read",
     ("jingliangwei-blog-landau-non-inertial-frames-coriolis-foucault-zh", "found"):
         "its two slips, the inertial v written for v' in L' and in E' = v . p' - L', sit on displays it does not read",
+    ("xiaoming-blog-euler-disk-rolling-rigid-body-contact-point-zxz-zh", "checked"):
+        "3 of 19 (1 on its first read): the z-x-z matrix, Omega and omega = A_t Omega are read; the equations "
+        "in cross-product brackets [a, b] between hatted names and the contact points of a disk, an ellipsoid "
+        "and a torus are not",
+    ("xiaoming-blog-euler-disk-rolling-rigid-body-contact-point-zxz-zh", "found"):
+        "1 of 4 (0 on its first read): the z-x-z matrix's (1,3) entry is flagged; the cylinder X^2 + Y^2 <= R, "
+        "the disk's contact point with d A_t N and the torus's sin eta sit on displays it does not judge",
+    ("derphysicsjagger-blog-euler-disk-steady-precession-bump-loss-worked-problem", "checked"):
+        "3 of 13 on its first read: vectors with hats in align blocks, the precession of L against a torque, "
+        "small-angle approximations marked approx and a definite integral solved for alpha(t) are not read",
 }
 
 FLOOR = {"checked": 976, "slips_flagged": 118, "holds_flagged": 0}

@@ -19,8 +19,11 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
   (`_functions_at`). A basis vector right of such matrices is its unit column (`_basis_columns`);
   a matrix named by the three angles that is the sequence's rotation with the first and third
   exchanged is a typo of it (`_angles_exchanged`), and so is a product of three single-axis turns
-  that leaves out an angle the name lists (`_angle_left_out`); a free letter A, B, C set equal to a
-  3×3 matrix names it (`_free_letter_named`).
+  that leaves out an angle the name lists (`_angle_left_out`), and a matrix of the three angles that is
+  the stated sequence's rotation but for one entry that leaves its column no unit vector
+  (`_one_entry_off`); a free letter A, B, C set equal to a 3×3 matrix names it (`_free_letter_named`); a
+  new letter set equal to the stated sequence's angular velocity in body or space axes, written out as a
+  column of the angles and their rates, holds as that column (`_angular_velocity_column`).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.written_matrices`,
 :mod:`derive.lecture.zero_test`,
@@ -406,6 +409,41 @@ class TextMatrices:
                       f"sequence turns by {self.tex(first)} first, and its name lists the angles so",
                       self.tex(sp.Matrix(right)))
             return True
+        return False
+
+    def _one_entry_off(self, line, piece, m, named) -> bool:
+        """A matrix of the three angles that is one of the rotations ``named`` (R, Rᵀ of the sequence the
+        text states) but for one entry whose column is then no unit vector: no rotation at all, so a typo of
+        that rotation, and the products after it use the rotation meant. False (nothing said) where the
+        text states no sequence, more than one entry is off, or the column stays a unit vector."""
+        if not self.notes.convention_stated:
+            return False
+        for what, right in named.items():
+            right = sp.Matrix(right)
+            off = [k for k in range(9) if not entry_zero(m[k] - right[k])]
+            if len(off) != 1:
+                continue
+            row, col = divmod(off[0], 3)
+            if entry_zero(sum(m[r, col] ** 2 for r in range(3)) - 1):
+                continue
+            self._turn_meant = right
+            self._add(line, piece, "rotation", "typo",
+                      f"{what} but for the entry in row {row + 1}, column {col + 1}, which leaves that column "
+                      "no unit vector: the matrix written is no rotation", self.tex(right))
+            return True
+        return False
+
+    def _angular_velocity_column(self, line, piece, m) -> bool:
+        """A column of the angles and their rates, in a text that states its sequence, that is the
+        sequence's angular velocity in body axes (vect(Rᵀ Ṙ)) or in space axes (vect(Ṙ Rᵀ)): it `holds` as
+        that column. Nothing is said of any other column (the text's letter may name anything)."""
+        if not self.notes.convention_stated or m.shape != (3, 1):
+            return False
+        for what, target in (("body", self.d.omega), ("space", self.d.conv.omega_space())):
+            if all(entry_zero(sp.expand(x - y)) for x, y in zip(m, target)):
+                self._add(line, piece, "definition", "holds",
+                          f"the stated sequence's angular velocity in {what} axes, written out in its angles' rates")
+                return True
         return False
 
     def _angle_left_out(self, text: str):

@@ -129,8 +129,8 @@ class TextNames(UnreadMembers):
                 mat = self._matrix_name(members[0], members[1])
                 self.settings_only = False
                 self._turn_meant = None
-                if not self._rotation(line, piece, sp.Matrix(members[1]),
-                                      self._turn_label(getattr(self, "_text", piece))):
+                if not (self._rotation(line, piece, sp.Matrix(members[1]), self._turn_label(getattr(self, "_text", piece)))
+                        or self._angular_velocity_column(line, piece, sp.Matrix(members[1]))):
                     self._add(line, piece, "new symbol", "unchecked",
                               f"defines the text's matrix {self.tex(members[0])} (recorded, then used)")
                 if self._turn_meant is not None:      # the turn its name says: what the products after it use
@@ -412,7 +412,8 @@ class TextNames(UnreadMembers):
                           f"named {what}, which it is but for the entry in row {row + 1}, column {col + 1}",
                           self.tex(named[what]))
                 return True
-        return len(used) == 3 and self._angles_exchanged(line, piece, m, named)
+        return len(used) == 3 and (self._angles_exchanged(line, piece, m, named) or
+                                   self._one_entry_off(line, piece, m, named))
 
     def _rate_matrix(self, line, piece, m) -> bool:
         """A 3×3 matrix of two angles: the matrix of the rates, ω̃ = B q̇ (body) or ω⁰ = B⁰ q̇ (space),
