@@ -281,7 +281,7 @@ SHORT = {
         "spin-1/2 rotation's entries sit in displays with kets, \\hbar or the rotation operator, none of them read",
     ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
         "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
-        "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor \\mathbf{I}_{\\mathcal{B}}^{\\bm{c}}, inner "
+        "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor's turning I^c(t) = R I^c(0) R^T, inner "
         "products in angle brackets and quaternions written as vectors (omega q, e^{dt/2 omega}) are not read",
     ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "found"):
         "its one slip, the chain's last member I^c omega for d/dt (I^c omega), sits in the unread chain of "

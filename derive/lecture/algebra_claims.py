@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.point_moments`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
@@ -34,6 +34,7 @@ from derive.lecture import kane_notation
 from derive.lecture import latex as lx
 from derive.lecture import own_torque
 from derive.lecture import point_labels
+from derive.lecture import point_moments
 from derive.lecture import vector_algebra_model as va
 from derive.lecture import vector_parser as vp
 from derive.lecture import vectors as vc
@@ -82,13 +83,15 @@ class AlgebraStatements:
         frame's components (`derive.lecture.frame_labels`) is read without the frame's label."""
         if va.lecture_notation(text):
             return False
-        framed = frame_labels.dropped(text)
+        framed, said = frame_labels.dropped(text), frame_labels.WHY
+        if framed is None:          # 𝛕_c = 𝐈_c 𝛚̇ + …: Euler's equation about one labelled point
+            framed, said = point_moments.dropped(text), point_moments.WHY
         if framed is None:
             return self._algebra_unlabelled(line, piece, text)
         start = len(self.claims)
         read = self._algebra_unlabelled(line, piece, framed[0])
         for claim in self.claims[start:]:
-            claim.why += frame_labels.WHY.format(label=framed[1]) if claim.verdict != "unchecked" else ""
+            claim.why += said.format(label=framed[1]) if claim.verdict != "unchecked" else ""
         return read
 
     def _algebra_unlabelled(self, line, piece, text) -> bool:

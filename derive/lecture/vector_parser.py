@@ -6,7 +6,8 @@ Both vector readers parse with it: the lecture's own notation (`derive.lecture.v
 models in `derive.lecture.vector_models`) and textbook vector algebra derived from first
 principles (`derive.lecture.vector_algebra_model`). The grammar is the same for both:
 
-* ``a \\times b`` binds tightest (a·b×c = a·(b×c)); ``r \\times m v`` takes the scalar with the vector;
+* ``a \\times b`` binds tightest (a·b×c = a·(b×c)); ``r \\times m v`` takes the scalar with the vector, and a
+  tensor before the vector on its left acts on it first (``I \\omega \\times \\omega`` = (I𝛚) × 𝛚);
 * ``a \\cdot b`` — the dot product, a tensor on a vector (Ï·ω = Ïω, ω·Ï = Ïᵀω);
 * juxtaposition — a scalar factor, the dyadic 𝐚𝐛ᵀ of two vectors, and (where the model's
   notation writes matrices, ``matrix_products``) the product of conforming matrices;
@@ -221,6 +222,13 @@ class VectorParser(_Parser):
 
     def xterm(self, env):
         value = self.factor(env)
+        if _is_tensor(value) and self._starts_factor():
+            at = self.i
+            right = self.factor(env)
+            if _is_vector(right) and self.at("cmd", "times"):
+                value = self.juxtaposed(value, right)       # I 𝛚 × 𝛚: the tensor on 𝛚, then crossed
+            else:
+                self.i = at
         while self.at("cmd", "times"):
             self.i += 1
             right = self.factor(env)
