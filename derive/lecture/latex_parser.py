@@ -21,6 +21,7 @@ from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, operand_rate, partial_variable, rate_along, rate_argument,
                                          reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import components, components_follow, cross, frame_label, named_dot, outer, squared_column
+from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -238,6 +239,8 @@ class _Parser:
             # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
             if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
                 return value
+            if self.at("op", "(") and (value in ANGLES or value in RATES or value in ACCELS) and self._of_time():
+                return value                    # θ(t), θ̇(t): an angle or its rates written as functions of the time
             trig = self._abbreviated_trig(tok, env) if isinstance(value, Generic) else None
             if trig is not None:
                 return trig
