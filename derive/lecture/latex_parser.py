@@ -10,8 +10,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture.vocabulary import (
-    DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
-    Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
+    DLDT, DLDT_BODY, FUNCTIONS, INVERSES, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
+    ACCELS, Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
@@ -21,7 +21,6 @@ from derive.lecture.particle_sums import over_particles
 from derive.lecture.written_rates import (NOT_PARTIAL, operand_rate, partial_variable, rate_along, rate_argument,
                                          reading, symbol_rate, written_rate)
 from derive.lecture.written_matrices import components, components_follow, cross, frame_label, named_dot, outer, squared_column
-from derive.symbolic.lagrangian import ACCELS
 from derive.symbolic.rotations import ANGLES, RATES
 
 
@@ -299,8 +298,9 @@ class _Parser:
                     arg = self.paren(env)
                 else:
                     arg = self.factor_no_implicit(env)
-                value = FUNCTIONS[name](arg)
-                return value ** power if power is not None else value
+                if power == -1 and name in INVERSES:       # \tan^{-1}: the arctangent, as texts write it
+                    return INVERSES[name](arg)
+                return FUNCTIONS[name](arg) ** power if power is not None else FUNCTIONS[name](arg)
             if name == "sum":
                 return self.sum(env, tok)
             if name == "int":
