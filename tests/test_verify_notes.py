@@ -39,12 +39,22 @@ def test_reader_lines_displays_and_assumptions():
 @pytest.mark.parametrize("text, key", [
     ("---\nconvention: x-x-z\n---\n", "convention"),
     ("---\nangles: [a, b]\n---\n", "angles"),
-    ("---\nimport: os\n---\n", "import"),
+    ("---\nconvetion: z-x-z\n---\n", "convetion"),
+    ("---\nangle: [a, b, c]\n---\n", "angle"),
     ("---\nconvention: z-y-z\n", "front matter"),
 ])
-def test_front_matter_is_whitelisted(text, key):
+def test_a_bad_or_misspelt_front_matter_key_of_derives_is_refused_naming_it(text, key):
     with pytest.raises(nt.SceneError, match=f": {key}: "):
         nt.parse_notes(text, "n.md")
+
+
+def test_front_matter_keys_of_the_tools_that_publish_a_text_are_skipped_unread():
+    text = ("---\njupytext:\n  text_representation:\n    extension: .md\n    format_name: myst\nkernelspec:\n"
+            "  display_name: Python 3\n  name: python3\ntags:\n- rigid body\n- tops\nimport: os\nlayout: post\n"
+            "convention: z-x-z\n---\n# Top\n\n$$T = \\frac{1}{2} I_3 \\dot\\psi^2$$\n")
+    notes = nt.parse_notes(text, "n.md")
+    assert notes.convention == "z-x-z"
+    assert [(i.kind, i.line) for i in notes.items] == [("heading", 16), ("display", 18)]
 
 
 def test_unreadable_file_is_exit_2_one_line(tmp_path, capsys):

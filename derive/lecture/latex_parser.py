@@ -10,8 +10,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture.vocabulary import (
-    DLDT, DLDT_BODY, FUNCTIONS, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
-    Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
+    DLDT, DLDT_BODY, FUNCTIONS, INVERSES, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
+    ACCELS, Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
 )
 from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
@@ -238,6 +238,8 @@ class _Parser:
             # a quantity written with its arguments: T(α, β, …), V_eff(β), ω̃₁(t)
             if self.at("op", "(") and (isinstance(value, Quantity) or value in W) and self._argument_list():
                 return value
+            if self.at("op", "(") and (value in ANGLES or value in RATES or value in ACCELS) and self._of_time():
+                return value                    # θ(t), θ̇(t): an angle or its rates written as functions of the time
             trig = self._abbreviated_trig(tok, env) if isinstance(value, Generic) else None
             if trig is not None:
                 return trig
@@ -296,8 +298,9 @@ class _Parser:
                     arg = self.paren(env)
                 else:
                     arg = self.factor_no_implicit(env)
-                value = FUNCTIONS[name](arg)
-                return value ** power if power is not None else value
+                if power == -1 and name in INVERSES:       # \tan^{-1}: the arctangent, as texts write it
+                    return INVERSES[name](arg)
+                return FUNCTIONS[name](arg) ** power if power is not None else FUNCTIONS[name](arg)
             if name == "sum":
                 return self.sum(env, tok)
             if name == "int":

@@ -27,6 +27,7 @@ raises `derive.errors.SceneError` (exit 2, one line).
 """
 from __future__ import annotations
 
+import difflib
 import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
@@ -73,6 +74,7 @@ _SMALL = re.compile(r"\b(?:are|is)\s+(?:also\s+)?(?:an?\s+)?(?:very\s+)?(?:(?:fi
 """Prose that calls the quantities before it in its sentence small (to first order): "are small", "are
 very small", "is first-order small", "are small perturbations", "takes … as small", "assumed to be small"."""
 _RELATION = statements.RELATION
+_MUCH_LESS = re.compile(r"\\ll(?![a-z])")
 
 
 @dataclass(frozen=True)
@@ -152,21 +154,27 @@ def _top_level_commas(text: str) -> list[str]:
 
 
 def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
-    """``key: value`` pairs between the opening and closing ``---`` (whitelisted keys only).
+    """derive's keys (``convention``, ``angles``, ``symbols``) between the opening and closing ``---``.
 
-    ``symbols`` is a flow map on its line, or a block of indented ``name: meaning`` lines."""
+    ``symbols`` is a flow map on its line, or a block of indented ``name: meaning`` lines. The
+    front matter is shared with the tools that publish the text (Jekyll's ``layout``, jupytext's
+    nested ``jupytext:`` map, MyST's ``kernelspec``, a list of ``tags``): any other key, with the
+    indented or ``- `` lines under it, is theirs and is skipped unread; a key one slip away from
+    one of derive's (``convetion``, ``angle``) is refused, naming it."""
     if not lines or lines[0].strip() != "---":
         return {}, 0
     out = {}
     block = None          # the key whose indented lines follow ("symbols")
+    theirs = False        # the lines follow a key of another tool's
     for k, raw in enumerate(lines[1:], start=2):
         line = raw.strip()
         if line == "---":
             if block is not None:
                 out[block] = _symbols("{" + ", ".join(out.pop("_" + block, [])) + "}", path)
             return out, k
-        if not line or line.startswith("#"):
+        if not line or line.startswith("#") or theirs and (raw[:1] in (" ", "\t") or line.startswith("- ")):
             continue
+        theirs = False
         if block is not None and raw[:1] in (" ", "\t"):
             out.setdefault("_" + block, []).append(line.lstrip("- "))
             continue
@@ -204,10 +212,10 @@ def _front_matter(lines: list[str], path: str) -> tuple[dict, int]:
                 out[key] = _symbols(value, path)
             else:
                 block = key
-        elif key in ("title", "author", "date", "course", "source", "notes", "licence", "license"):
-            out[key] = value
+        elif near := difflib.get_close_matches(key.lower(), ("convention", "angles", "symbols"), n=1, cutoff=0.8):
+            raise ValidationError(path, key, f"not a front matter key of derive's: {near[0]}?")
         else:
-            raise ValidationError(path, key, "unknown front matter key (convention, angles, symbols, title, …)")
+            out[key], theirs = value, True
     raise ValidationError(path, "front matter", "no closing '---'")
 
 
@@ -357,9 +365,15 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
         if signs and not _RELATION.search(latex):
             events.append((m.start(), Item("signs", line, text=signs, symbols=(latex,), lead=near)))
             continue
+        if _MUCH_LESS.search(latex):    # "$\omega_2, \omega_3 \ll \Omega$": what stands before ≪ is small
+            left = _MUCH_LESS.split(latex)[0]
+            events.append((m.start(), Item("small", line, symbols=(re.split(r"\\approx|\\simeq", left)[-1],), lead=near)))
+            continue
         if not _RELATION.search(latex):
             continue
         word = _last_word(near)
+        if word == "that":              # "we assume that $\omega_1 = \Omega$": the word before "that" says it
+            word = _last_word(near[:near.lower().rfind("that")])
         # "(… $\omega_2 = \Omega$ to first order)": an aside in brackets states a condition
         wrapped = latex.startswith("(") and latex.endswith(")") or body[:m.start()].rstrip(" ").endswith("(")
         after_assumption = word == "and" and events and events[-1][1].kind == "assumption" \

@@ -46,7 +46,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import notes as nt
-from derive.lecture import delta_quotients, rearranged, summation_index, worked_values
+from derive.lecture import delta_quotients, dimensional_arguments, rearranged, summation_index, worked_values
 from derive.lecture.arithmetic import arithmetic
 from derive.lecture.comparing import free, series_order
 from derive.lecture.context import Context
@@ -64,7 +64,6 @@ from derive.lecture.index_definitions import instance
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3
 from derive.symbolic.rotations import ANGLES, RATES
 
-
 _NOT_FOLLOWED = (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeError, IndexError, KeyError,
                  NotImplementedError, RecursionError, sp.polys.polyerrors.BasePolynomialError)
 """What a step of the reader raises on a formula it cannot follow (SymPy's own errors among them)."""
@@ -73,10 +72,6 @@ _NOT_FOLLOWED = (lx.NotRead, ArithmeticError, TypeError, ValueError, AttributeEr
 def _failed_step(err) -> str:
     return (str(err) if isinstance(err, lx.NotRead) else
             f"a step of the reader failed on it ({type(err).__name__}): it is left unjudged")
-
-
-_UNTIED = ("A", "B", "C")
-"""Letters the reader knows only as free symbols (`derive.lecture.vocabulary.FREE_NAMES`)."""
 
 
 def _name_tex(name: str) -> str:
@@ -163,6 +158,7 @@ class Checker(ReadingRules):
             elif item.kind == "signs":
                 self._signs(item)
             elif item.kind == "small":
+                self._flush()       # the solutions before it were written under the smallness they had
                 self._small(item.symbols)
             elif item.kind in ("display", "inline"):
                 self._small_before_ll(item.latex)
@@ -341,6 +337,9 @@ class Checker(ReadingRules):
         head_end = _first_relation(text)
         if head_end is not None:
             self.ctx.head = text[:head_end].strip()
+        if (own := dimensional_arguments.dimensional_argument(parsed.members)) is not None:
+            self._add(line, piece, "unknown", "unchecked", own)
+            return
         self._text = text                   # the statement with the left side it continues
         if not duplicate and self._heavy_first(line, piece, parsed):
             return
@@ -509,7 +508,8 @@ class Checker(ReadingRules):
         if forms and not loose:
             # a derived quantity written in capitals the text never tied to it (diag(A, B, C) for the
             # inertia tensor) defines those letters: it is no slip
-            loose = sorted(str(x) for x in free(val) if x.name in _UNTIED and x not in self.ctx.defs)
+            # A, B, C: letters the reader knows only as free symbols (vocabulary.FREE_NAMES)
+            loose = sorted(str(x) for x in free(val) if x.name in ("A", "B", "C") and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         undecided = undecided or worked_values.unchecked(piece, val, [self._resolve(f) for f in targets], self.tex, label)

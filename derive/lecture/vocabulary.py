@@ -161,6 +161,7 @@ FUNCTIONS = {"crossmatrix": CrossMatrix, "sin": sp.sin, "cos": sp.cos, "tan": sp
              "arcsin": sp.asin, "arccos": sp.acos, "arctan": sp.atan,
              "exp": _exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
              **elliptic.functions(Generic)}
+INVERSES = {"sin": sp.asin, "cos": sp.acos, "tan": sp.atan}    # \tan^{-1} x is arctan x, as texts write it
 RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
              "ll": "≪", "gg": "≫",
              "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
