@@ -275,10 +275,12 @@ SHORT = {
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
         "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
         "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
-        "matrices stay unchecked (but for the spin-1 J_y's letter o for a zero, flagged)",
+        "matrices stay unchecked (but for the spin-1 J_y's letter o for a zero and the spin-1/2 rotation's "
+        "exponent with an equals sign, flagged)",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
-        "1 of 3: the spin-1 display is flagged for J_y's letter o typed for a zero; the matrix element's bra and the "
-        "spin-1/2 rotation's entries sit in displays with kets, \\hbar or the rotation operator, none of them read",
+        "2 of 3: the spin-1 display is flagged for J_y's letter o typed for a zero and the spin-1/2 rotation for "
+        "the equals sign in an exponent (alpha = gamma); the matrix element's bra sits in a display with kets and "
+        "the rotation operator, not read",
     ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
         "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
         "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor \\mathbf{I}_{\\mathcal{B}}^{\\bm{c}}, inner "
