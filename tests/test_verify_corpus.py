@@ -227,14 +227,15 @@ SHORT = {
         "case's Omega_i'' = -omega_3^2 Omega_i for i in {1, 2}, whose omega_2, omega_3 are frequencies the answer "
         "defines only after using them (omega_i is the reader's angular velocity), and omega_3 = const are not",
     ("songtech-notes-rigid-body-inertia-tensor-principal-axes", "checked"):
-        "a student's notes in index notation over an axis letter a (delta_ak, r_a^(i), sums over a = 1..3, which "
-        "the reader sums only over i, j, k, n), a block's moments as integrals over its sides in a chain, I_aa in "
-        "x_a^(i) and a diagonalisation P^-1 I P; the energy's identity, omega^2's chain with the summation "
-        "convention, the tensor written out and the lamina's theorem in the plane z = 0 are checked",
+        "a student's notes in index notation over an axis letter a (delta_ak, r_a^(i)); its sums over a = 1..3 "
+        "are read, but the links between the energy's members and the tensor's definitions relate the text's own "
+        "components, never judged as identities; a block's moments as integrals over its sides in a chain, I_aa in "
+        "x_a^(i) and a diagonalisation P^-1 I P are not read; the energy's identity, omega^2's chain with the "
+        "summation convention, the tensor written out and the lamina's theorem in the plane z = 0 are checked",
     ("songtech-notes-rigid-body-inertia-tensor-principal-axes", "found"):
-        "1 of 4: the block's I_11 chain is flagged at its last link, 1/6 of the member before it; the other "
-        "three sit in what is not read: (omega + r_i)^2 inside a chain of cross products squared, "
-        "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a",
+        "2 of 4: the block's I_11 chain is flagged at its last link, 1/6 of the member before it, and the energy's "
+        "(sum omega_k^2)^2 for its dimensions; (omega + r_i)^2 sits inside a chain of cross products squared, and "
+        "sum_a r_a for its squares adds r_a to r_a r_k, which a dimensionless r would make alike",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "checked"):
         "6 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
         "transport theorem too; second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel are not read, and "
