@@ -23,9 +23,11 @@ but one (a₁² + a₂² + a₃³) adds unlike quantities too. So do two terms a
 of one letter of unknown dimension (``\\frac{1}{2} I_z (\\dot\\phi + \\dot\\psi\\cos\\theta) + \\frac{1}{2}
 I_x \\dot\\psi^2``: I_z and I_x share a dimension, so the terms differ by a rate): a component along
 x, y or z (never 1, 2, 3, which may number a solution's constants C₁ + C₂t) is given its letter's
-dimension as an unknown, and two terms are compared only when their unknowns are the same.
+dimension as an unknown, and two terms are compared only when their unknowns are the same. The components
+a sum that writes its range 1 to 3 adds (r₁, r₂, r₃ of Σ_{a=1}^3 r_a², `derive.lecture.axis_sums`) share
+one such unknown too, and Kronecker's δ_{ak} is a pure number.
 
-May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
+May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`, :mod:`derive.lecture.axis_sums`,
 :mod:`derive.symbolic`.
 """
 from __future__ import annotations
