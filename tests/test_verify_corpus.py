@@ -227,14 +227,15 @@ SHORT = {
         "case's Omega_i'' = -omega_3^2 Omega_i for i in {1, 2}, whose omega_2, omega_3 are frequencies the answer "
         "defines only after using them (omega_i is the reader's angular velocity), and omega_3 = const are not",
     ("songtech-notes-rigid-body-inertia-tensor-principal-axes", "checked"):
-        "a student's notes in index notation over an axis letter a (delta_ak, r_a^(i), sums over a = 1..3, which "
-        "the reader sums only over i, j, k, n), a block's moments as integrals over its sides in a chain, I_aa in "
-        "x_a^(i) and a diagonalisation P^-1 I P; the energy's identity, omega^2's chain with the summation "
-        "convention, the tensor written out and the lamina's theorem in the plane z = 0 are checked",
+        "a student's notes in index notation over an axis letter a (delta_ak, r_a^(i)); its sums over a = 1..3 "
+        "are read, but the links between the energy's members and the tensor's definitions relate the text's own "
+        "components, never judged as identities; a block's moments as integrals over its sides in a chain, I_aa in "
+        "x_a^(i) and a diagonalisation P^-1 I P are not read; the energy's identity, omega^2's chain with the "
+        "summation convention, the tensor written out and the lamina's theorem in the plane z = 0 are checked",
     ("songtech-notes-rigid-body-inertia-tensor-principal-axes", "found"):
-        "1 of 4: the block's I_11 chain is flagged at its last link, 1/6 of the member before it; the other "
-        "three sit in what is not read: (omega + r_i)^2 inside a chain of cross products squared, "
-        "(sum omega_k^2)^2 and sum_a r_a for its squares in sums over a",
+        "2 of 4: the block's I_11 chain is flagged at its last link, 1/6 of the member before it, and the energy's "
+        "(sum omega_k^2)^2 for its dimensions; (omega + r_i)^2 sits inside a chain of cross products squared, and "
+        "sum_a r_a for its squares adds r_a to r_a r_k, which a dimensionless r would make alike",
     ("bryanwweber-orbital-notes-time-derivatives-rotating-frame", "checked"):
         "6 of 11: the sums on hatted unit vectors and their rates are checked, the moving unit vectors' rates and the "
         "transport theorem too; second derivatives d^2B/dt^2 and the relative motion's r_rel, v_rel are not read, and "
@@ -275,10 +276,12 @@ SHORT = {
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "checked"):
         "only the Euler-angle chain's links in turns about fixed axes are read (R({\\hat z}, alpha) ...); the turns "
         "about the moved axes y' and Z, \\hbar, kets and bras are not, so the rotation operator and the spin "
-        "matrices stay unchecked (but for the spin-1 J_y's letter o for a zero, flagged)",
+        "matrices stay unchecked (but for the spin-1 J_y's letter o for a zero and the spin-1/2 rotation's "
+        "exponent with an equals sign, flagged)",
     ("lawrence-phys162-euler-angles-zyz-rotation-operator-spin-half-spin-one", "found"):
-        "1 of 3: the spin-1 display is flagged for J_y's letter o typed for a zero; the matrix element's bra and the "
-        "spin-1/2 rotation's entries sit in displays with kets, \\hbar or the rotation operator, none of them read",
+        "2 of 3: the spin-1 display is flagged for J_y's letter o typed for a zero and the spin-1/2 rotation for "
+        "the equals sign in an exponent (alpha = gamma); the matrix element's bra sits in a display with kets and "
+        "the rotation operator, not read",
     ("phys-sim-book-rigid-body-dynamics-explicit-quaternion-step", "checked"):
         "a graphics book's derivation in \\bm vectors: moments of momentum as integrals over a named body "
         "(\\int_{\\mathcal{B}} \\rho ... d\\bm{x}), the labelled tensor's turning I^c(t) = R I^c(0) R^T, inner "

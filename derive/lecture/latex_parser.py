@@ -5,6 +5,7 @@ the vocabulary resolving every atom.
 """
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 
 import sympy as sp
@@ -15,6 +16,7 @@ from derive.lecture.vocabulary import (
 )
 from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
+from derive.lecture.axis_sums import Axis, range_letters
 from derive.lecture.definite_integrals import definite_integral
 from derive.lecture.evaluation_points import holds_a_point
 from derive.lecture.particle_sums import over_particles
@@ -461,20 +463,18 @@ class _Parser:
         """Σ over a body-axis index i (or ij) = 1, 2, 3: the summand (one term) read once per value."""
         names, sub_tok = self.sum_index(tok)
         index = "".join(names)
-        if self.at("op", "^"):
-            self.i += 1
-            self.group_or_token(env)
-        letters = [ch for ch in index if ch in "ijkn"]
-        if not letters or any(ch not in "ijkn" for ch in index.replace("=", "").rstrip("0123456789")):
+        upper = self.group_or_token(env) if self.at("op", "^") and self.take("op") else None
+        written = range_letters(index, upper, self.source, sub_tok.pos)      # Σ_{a=1}^3: a body axis, any letter
+        letters = written or [ch for ch in index if ch in "ijkn"]
+        if not letters or any(ch not in "ijkn" + "".join(written) for ch in index.replace("=", "").rstrip("0123456789")):
             raise NotRead(f"cannot parse at column {sub_tok.pos + 1}: sums over {index!r} (not a body axis) "
                           "are not read", sub_tok.pos + 1)
         start = self.i
         total = sp.S.Zero
-        import itertools
-        for values in itertools.product((1, 2, 3), repeat=len(letters)):
+        for values in itertools.product(tuple(map(Axis, (1, 2, 3))) if written else (1, 2, 3), repeat=len(letters)):
             self.i = start
             inner = {**env, **dict(zip(letters, values))}
-            total = total + self.sum_term(inner)
+            total = total + self.sum_term(inner, written)
         return total
 
     def sum_index(self, tok):
@@ -496,9 +496,9 @@ class _Parser:
         self.i += 1
         return names, sub_tok
 
-    def sum_term(self, env):
+    def sum_term(self, env, written=()):
         value = self.factor(env)
-        while (self.at("cmd", "cdot") or self._starts_factor()) and not self.at("cmd", "sum"):
+        while (self.at("cmd", "cdot") or self._starts_factor()) and (written or not self.at("cmd", "sum")):
             if self.at("cmd", "cdot"):
                 self.i += 1
             value = _mul(value, self.factor(env))

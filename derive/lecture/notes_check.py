@@ -248,7 +248,7 @@ class Checker(ReadingRules):
                     self._read_axes_or_plain(item.line, piece, dup, pieces)
                 self._hat_unread(item.line, piece, before)
                 self._lost_backslash(item.line, piece, latex, before)
-                for after in (self._letter_digits, self._scalar_vector_sum, self._stated_theorem, self._index_euler):
+                for after in (self._letter_digits, self._exponent_relation, self._scalar_vector_sum, self._stated_theorem, self._index_euler):
                     after(item.line, piece, before)
                 self._judge_implied(implied, before)
                 self._row_step(item.line, piece, before)

@@ -29,6 +29,7 @@ from derive.lecture.eom_restated_member import RestatedMember
 from derive.lecture.euler_in_angles import EulerInAngles
 from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
+from derive.lecture.exponent_relations import ExponentRelations
 from derive.lecture.fast_top import FastTop
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.head_shapes import HeadShapes
@@ -84,5 +85,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
                    UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler, ConstantsCollapsed,
-                   OwnTurns):
+                   OwnTurns, ExponentRelations):
     """Every reading rule, in method-lookup order (see the module docstring)."""

@@ -128,6 +128,8 @@ def matrices_put(e, rep, columns=None, budget=None):
         out = args[0].T
     elif isinstance(e, (Dot, NormSquared)):
         out = taken(e, args)
+    elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[0].cols == 1 and args[1] == 2:
+        out = (args[0].T * args[0])[0]      # 𝐫² of a column: 𝐫·𝐫, as a vector's square is written
     elif isinstance(e, sp.Pow) and isinstance(args[0], sp.MatrixBase) and args[1].is_integer:
         out = matrix_power(sp.MatPow(sp.ImmutableMatrix(args[0]), args[1], evaluate=False))
     elif e.func is sp.exp and isinstance(args[0], sp.MatrixBase):

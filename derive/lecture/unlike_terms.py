@@ -23,9 +23,11 @@ but one (a₁² + a₂² + a₃³) adds unlike quantities too. So do two terms a
 of one letter of unknown dimension (``\\frac{1}{2} I_z (\\dot\\phi + \\dot\\psi\\cos\\theta) + \\frac{1}{2}
 I_x \\dot\\psi^2``: I_z and I_x share a dimension, so the terms differ by a rate): a component along
 x, y or z (never 1, 2, 3, which may number a solution's constants C₁ + C₂t) is given its letter's
-dimension as an unknown, and two terms are compared only when their unknowns are the same.
+dimension as an unknown, and two terms are compared only when their unknowns are the same. The components
+a sum that writes its range 1 to 3 adds (r₁, r₂, r₃ of Σ_{a=1}^3 r_a², `derive.lecture.axis_sums`) share
+one such unknown too, and Kronecker's δ_{ak} is a pure number.
 
-May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`,
+May import: SymPy, :mod:`derive.lecture.latex`, :mod:`derive.lecture.statements`, :mod:`derive.lecture.axis_sums`,
 :mod:`derive.symbolic`.
 """
 from __future__ import annotations
@@ -36,6 +38,7 @@ import re
 import sympy as sp
 
 from derive.lecture import latex as lx
+from derive.lecture.axis_sums import shares_dimension
 from derive.lecture.statements import top_level
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, p_alpha, p_gamma
 from derive.symbolic.rotations import ANGLES, RATES
@@ -243,10 +246,13 @@ class UnlikeTerms:
         """An axis component of one of the text's letters (I_x, I_z), plain, of unknown dimension: its
         letter's dimension as unknowns, which every component along x, y, z shares; else None."""
         atom = self.vocab.generic.get(s)
-        if atom is None or atom.sub not in _AXIS_COMPONENTS or atom.sup or atom.dots or atom.primes or \
+        if atom is not None and atom.base == "delta" and re.fullmatch(r"[a-z]{2}", atom.sub) and not atom.mark:
+            return _NONE        # Kronecker's δ_ak: a pure number
+        summed = shares_dimension(self.vocab, atom)       # r_a summed over a = 1 … 3: r₁, r₂, r₃ alike
+        if atom is None or not summed and (atom.sub not in _AXIS_COMPONENTS or atom.sup) or atom.dots or atom.primes or \
                 atom.tilde or atom.hat or atom.mark:
             return None
-        key = atom.with_(sub="", text="")
+        key = atom.with_(sub="", sup="", text="")
         if key not in self._unknowns:
             name = f"[{key.base}]"
             self._unknowns[key] = tuple(sp.Symbol(f"{name}_{n}") for n in _NAMES)

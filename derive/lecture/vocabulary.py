@@ -4,7 +4,7 @@ quantities and their usual spellings (or, open to the text's own names, makes it
 symbol of the text's). See `derive.lecture.latex` for the parser built on them.
 
 May import: :mod:`derive.symbolic`, SymPy and, of :mod:`derive.lecture`, ``elliptic``, ``latex_spaces``, ``latex_spellings``,
-``matrix_exp``, ``variations``, ``dotted_products``.
+``matrix_exp``, ``variations``, ``dotted_products``, ``axis_sums``.
 """
 from __future__ import annotations
 
@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.lecture import elliptic
+from derive.lecture.axis_sums import summed
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
@@ -162,8 +163,7 @@ FUNCTIONS = {"crossmatrix": CrossMatrix, "sin": sp.sin, "cos": sp.cos, "tan": sp
              "exp": _exp, "ln": sp.log, "log": sp.log, "sinh": sp.sinh, "cosh": sp.cosh, "tanh": sp.tanh,
              **elliptic.functions(Generic)}
 INVERSES = {"sin": sp.asin, "cos": sp.acos, "tan": sp.atan}    # \tan^{-1} x is arctan x, as texts write it
-RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤",
-             "ll": "≪", "gg": "≫",
+RELATIONS = {"=": "=", "equiv": "≡", "approx": "≈", "simeq": "≈", "ge": "≥", "geq": "≥", "le": "≤", "ll": "≪", "gg": "≫",
              "leq": "≤", ">": ">", "<": "<", "neq": "≠", "ne": "≠", "to": "→", "Rightarrow": "⇒",
              "rightarrow": "→", "propto": "∝", "sim": "∼"}
 
@@ -300,8 +300,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
                 atom, j = atom.with_(sup=plain), after     # a frame's label on a vector or a matrix (𝐑^α_β)
             elif plain in ("+", "-") and re.match(SIGN_ENDS, s[after:]) and "^" not in atom.sub:
                 atom, j = atom.with_(sub=atom.sub + "^" + plain), after     # kept with the subscript: every reader keys a name by it
-            elif plain == "e" and atom.base != "e" and not atom.bold:
-                atom, j = atom.with_(sup=plain), after     # T^e, f^e: the external (or earth-frame) label, never a power e
+            elif plain == "e" and atom.base != "e" and not atom.bold or re.fullmatch(r"\([A-Za-z]\)", plain):
+                atom, j = atom.with_(sup=plain), after     # T^e (the external label), r^{(i)} (particle i's): never a power
             else:
                 break
         else:
@@ -549,7 +549,7 @@ class Vocabulary:
         if b == "T" and sub in ("rot", "kin", "k", "R", "rotation") and not a.dots and not a.primes:
             return T_
         if self.open and not a.hat:
-            return self._generic(a)
+            return summed(self, a, env, self._generic)      # r_a under Σ_{a=1}^3: r₁, r₂, r₃
         return None
 
     def _generic(self, a: Atom):
