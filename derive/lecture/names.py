@@ -71,7 +71,8 @@ MEANINGS = {
     "angular momentum": ("letter", r"angular momentum"),
     "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
     "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
-    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)"),
+    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)|"
+                         r"\b(?:gyroscopic|applied|restoring|precessing|driving|resultant|net) (?:moment|couple)s?\b(?! of inertia)"),
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial|(?<!un)equal) moment|moment of inertia "
                                     r"(?:about|around) (?:either|any|each) of the (?:two )?(?:other|transverse|perpendicular|equatorial)"
                                     r"[\w ,]{0,24}?\bax[ie]s\b"),
@@ -200,6 +201,8 @@ class Names:
         if meaning == "torque":
             if k is not None and plain:
                 return lx.TAU[k]
+            if not sub and not a.bold and plain and vocab.open:
+                return vocab._generic(a)     # the torque's size (M, T): the text's own, never the mass or the energy
             return None
         if meaning == "body angular velocity":    # 𝛚ᵅ_{βα}: bound with its frame labels, the body components
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
