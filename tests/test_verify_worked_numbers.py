@@ -207,3 +207,10 @@ def test_a_relation_set_to_zero_or_an_equation_set_to_one_is_no_worked_value():
     assert unchecked("T = 9", sp.Integer(9), [x], str, t) is not None
     assert unchecked(r"\frac{x}{2} = 1", sp.Integer(1), [x], str, x / 2) is None       # an equation of a surface
     assert unchecked("T = 0", sp.Integer(0), [x], str, t) is None
+
+
+def test_a_letter_before_a_decimal_in_brackets_raised_to_a_power_is_a_product_not_a_value_at_a_time():
+    ball = "## Ball\n\nA ball of mass $m$ has a radius of gyration of 40 mm.\n\n"
+    claims = kept.check_text(ball + "$$I_x = m (0.04)^2 = 0.0016\\, m$$\n")
+    assert "holds" in [c.verdict for c in claims]
+    assert "holds" not in [c.verdict for c in kept.check_text(ball + "$$I_x = m (0.04)^2 = 0.016\\, m$$\n")]
