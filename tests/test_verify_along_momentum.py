@@ -28,3 +28,19 @@ def test_without_the_prose_the_rate_stays_unchecked():
 def test_the_frame_ends_with_its_section():
     text = FREE_TOP + "## Another section\n\nA symmetric top, $I_1 = I_2$.\n\n$$\\dot{\\phi} = \\frac{M_z}{I_1}$$\n"
     assert verdicts(text, "\\dot{\\phi}") == ["unchecked"]
+
+
+FREE_TOP_SYMBOL = ("## Torque-free symmetric top\n\nA free symmetric body with $I_1 = I_2$ has no torque on it, so its "
+                   "angular momentum $\\mathbf{L}$ is constant. PROSE, and the body is described by the Euler angles "
+                   "$\\phi$, $\\theta$, $\\psi$.\n\n$$\n\\dot{\\psi} = \\frac{I_1 - I_3}{I_1}\\,\\omega_3\n$$\n")
+
+
+def test_the_z_axis_taken_along_the_bold_momentum_in_symbols_chooses_the_frame():
+    for prose in ("Take the space $z$-axis along $\\mathbf{L}$", "Let $\\vec{L}$ point along the $z$ axis",
+                  "With $\\mathbf{L}$ along the fixed $z$-axis"):
+        assert verdicts(FREE_TOP_SYMBOL.replace("PROSE", prose), "\\dot{\\psi}") == ["holds"]
+
+
+def test_a_body_axis_along_the_momentum_chooses_no_frame():
+    text = FREE_TOP_SYMBOL.replace("PROSE", "Take the body $z$-axis along $\\mathbf{L}$")
+    assert "holds" not in verdicts(text, "\\dot{\\psi}")

@@ -298,7 +298,8 @@ SHORT = {
         "the inverse tensors I_a^{-1} acting on vectors, and the ties the prose sets (v^+ = v^- + dv, the law of "
         "restitution, n . n = 1), are not",
     ("jhu-intermediate-dynamics-zxz-zyz-euler-rates-football-kinetic-energy-hw", "checked"):
-        "homework solutions: its rotation matrices and the energy 312.5 m are read, but the angular velocities as "
+        "homework solutions: its rotation matrices, its inertia matrix worked in numbers and the energy 312.5 m are "
+        "read, but the angular velocities as "
         "vect(R-dot R^T) and vect(R^T R-dot) (the vector of a skew matrix), the energies as omega_b^T I_b omega_b "
         "(a one-by-one matrix set equal to a scalar) and a rate in revolutions are not",
     ("jhu-intermediate-dynamics-disk-on-elbow-zxz-kinetic-energy-hw", "checked"):

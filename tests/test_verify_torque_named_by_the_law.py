@@ -48,3 +48,14 @@ def test_a_rate_equal_to_a_sum_or_a_rate_of_a_letter_that_is_no_angular_momentum
                     r"\dot{\mathbf{H}} = \dot{\mathbf{L}}"):
         learned = nm.learn("The law:\n\n$$\n" + display + "\n$$\n")
         assert learned.meaning(Atom("L", sub="1")) is None
+
+
+GYRO = ("# Gyroscope\n\nA gyroscope of mass $m$ spins at $\\omega$ about its axis, whose moment of inertia is $I$; its "
+        "centre of mass is at distance $r$ from the pivot.\n\n$$\n\\Omega = \\frac{m g r}{I \\omega}\n$$\n\n"
+        "PROSE\n\n$$\nM = I \\omega \\Omega\n$$\n")
+
+
+def test_a_plain_letter_the_prose_calls_the_gyroscopic_moment_is_never_the_mass():
+    for prose in ("The gyroscopic moment $M$ is", "The gyroscopic moment is", "The applied couple $M$ is"):
+        text = GYRO.replace("PROSE", prose)
+        assert [c.verdict for c in by_line(text)[line_of(text, "$$\nM = ")]] == ["unchecked"]

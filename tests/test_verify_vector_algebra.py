@@ -200,3 +200,15 @@ def test_one_grammar_reads_both_notations_and_the_model_decides_what_juxtaposed_
     assert principal.model == "principal" and vc.holds(principal, 1, "s")[0]
     with pytest.raises(lx.NotRead):
         vc.read("\\mathbf{L} = \\ddot{I} \\boldsymbol{\\omega}", lx.Vocabulary(), None)
+
+
+@pytest.mark.parametrize("tensor", [
+    "\\mathbf{I} = \\begin{bmatrix} 5 m & 0 & 0 \\\\ 0 & 7 m & 0 \\\\ 0 & 0 & 5 m \\end{bmatrix}",
+    "I_b = \\begin{bmatrix} m (0.04)^2 & 0 & 0 \\\\ 0 & m (0.07)^2 & 0 \\\\ 0 & 0 & m (0.04)^2 \\end{bmatrix}",
+    "I_{zz} = 0.3\\, m"])
+def test_a_worked_examples_inertia_in_numbers_is_never_flagged_against_the_general_body(tensor):
+    assert only(f"$${tensor}$$\n") == {"unchecked"}
+    # one in the positions of the points is still judged against them
+    slip = ("\\mathbf{I} = \\begin{bmatrix} m(y^2+z^2) & -m x y & -m x z \\\\ -m x y & m(x^2+z^2) & -m y z \\\\ "
+            "-m x z & -m y z & m(x^2-y^2) \\end{bmatrix}")
+    assert only(f"$${slip}$$\n") & {"typo", "fails"}

@@ -172,6 +172,14 @@ def test_a_scaled_value_off_by_a_slip_fails_and_one_off_in_its_last_digit_is_lef
                 if c.kind == "arithmetic"]
 
 
+def test_a_decimal_datum_inside_a_worked_expression_lends_it_no_rounding():
+    # the 0.2 in (0.2)^2 is the text's datum, not a rounded result: ¼ (0.2)² M = 0.01 M, never 0.02 M
+    half = kept.check_text(SPHERE + "$$I_z = \\frac{1}{2} M (0.2)^2 = 0.02\\, M$$\n")
+    assert [c.verdict for c in half if c.kind == "arithmetic"] == ["holds"]
+    quarter = kept.check_text(SPHERE + "$$I_x = \\frac{1}{4} M (0.2)^2 = 0.02\\, M$$\n")
+    assert "holds" not in [c.verdict for c in quarter if c.kind == "arithmetic"]
+
+
 def test_a_written_value_holds_when_rounded_or_cut_at_its_last_place_and_never_a_unit_above_it():
     assert [v for v, _ in arithmetic(r"x = 2\pi(3) = 19")] == ["holds"]           # 18.85 rounded
     assert [v for v, _ in arithmetic(r"x = 2\pi(3) = 18")] == ["holds"]           # 18.85 cut
@@ -199,3 +207,10 @@ def test_a_relation_set_to_zero_or_an_equation_set_to_one_is_no_worked_value():
     assert unchecked("T = 9", sp.Integer(9), [x], str, t) is not None
     assert unchecked(r"\frac{x}{2} = 1", sp.Integer(1), [x], str, x / 2) is None       # an equation of a surface
     assert unchecked("T = 0", sp.Integer(0), [x], str, t) is None
+
+
+def test_a_letter_before_a_decimal_in_brackets_raised_to_a_power_is_a_product_not_a_value_at_a_time():
+    ball = "## Ball\n\nA ball of mass $m$ has a radius of gyration of 40 mm.\n\n"
+    claims = kept.check_text(ball + "$$I_x = m (0.04)^2 = 0.0016\\, m$$\n")
+    assert "holds" in [c.verdict for c in claims]
+    assert "holds" not in [c.verdict for c in kept.check_text(ball + "$$I_x = m (0.04)^2 = 0.016\\, m$$\n")]

@@ -374,6 +374,8 @@ class AlgebraStatements:
             if _set_perpendicular(reading, k):
                 return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
                                      "condition of the text's set-up, not a consequence the derivation decides")
+            if _particular(members[k].value, members[ref].value) or _particular(members[ref].value, members[k].value):
+                return "unchecked", PARTICULAR
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
@@ -475,6 +477,20 @@ def _masked(d, a, b):
     if any(sp.sympify(x).free_symbols & (set(va.W) | set(va.WD)) for x in read):
         return "unchecked", "a tensor in the rates, beside an entry not read ({unread})"
     return "fails", "as written: " + _where(read) + " ({why}); an entry left out, not read ({unread})"
+
+
+PARTICULAR = ("the value of a particular body (numbers and its mass, no position of its points): the reader's "
+              "body is a general one, whose value is in its points' positions, so the two are not compared")
+_POSITIONS = frozenset(va.R0) | frozenset(c for point in va.RK for c in point)
+_RATES = frozenset(va.W) | frozenset(va.WD)
+
+
+def _particular(written, derived) -> bool:
+    """``\\mathbf{I} = m\\,\\mathrm{diag}(0.0016, 0.0049, 0.0016)``, ``I_{zz} = 0.3\\,m``: a member in no position
+    of the body's points and no rate, not zero, beside one in positions: a worked example's body, not the general one
+    (a member in the rates, 𝛚 where 𝛚 × 𝐫 belongs, is a slip the points decide)."""
+    free = lambda x: sp.sympify(x).free_symbols if not isinstance(x, sp.MatrixBase) else x.free_symbols  # noqa: E731
+    return not _zero(written) and not free(written) & (_POSITIONS | _RATES) and bool(free(derived) & _POSITIONS)
 
 
 def _zero(d) -> bool:

@@ -146,11 +146,19 @@ def _expr(piece: str, vocab):
     return value if isinstance(value, sp.Expr) else None
 
 
+_SCRIPT = re.compile(r"[_^]\s*(?:\{[^{}]*\}|\\[A-Za-z]+|.)")
+"""A subscript or a superscript: an index or a power, never a number the member works out."""
+
+
 def _relative_place(piece: str) -> float:
     """A worked member written as one decimal times symbols (``0.7746 \\Omega_0``): one unit in that
-    decimal's last place, relative to it (0 when the member is exact); a ratio holds within half of it."""
-    numbers = re.findall(r"(?<![_^{\w.])\d+(?:\.\d+)?", piece)     # not an index (I_1, x^2, _{12})
-    if len(numbers) != 1 or "." not in numbers[0] or float(numbers[0]) == 0:
+    decimal's last place, relative to it (0 when the member is exact); a ratio holds within half of it.
+    A member with any other number (``\\frac{1}{4} M (0.2)^2``), or whose decimal stands in a group or
+    a bracket (``\\sqrt{0.6}``, ``(0.2)^2``), works out its data: it is exact."""
+    bare = _SCRIPT.sub(" ", piece)
+    numbers = re.findall(r"(?<![\w.])\d+(?:\.\d+)?", bare)
+    if len(numbers) != 1 or "." not in numbers[0] or float(numbers[0]) == 0 or \
+            re.search(r"[{(\[]\s*" + re.escape(numbers[0]), bare):
         return 0.0
     return _last_place(numbers[0]) / abs(float(numbers[0]))
 

@@ -319,6 +319,8 @@ class _Parser:
         close = self.peek(2)
         if inner is None or close is None or close.kind != "op" or close.value != ")":
             return None
+        if inner.kind == "num" and "." in str(inner.value) and getattr(self.peek(3), "value", None) == "^":
+            return None                    # m (0.04)^2: a decimal raised to a power is a factor, no time
         if inner.kind == "num":
             label = inner.value
         elif inner.kind == "atom" and inner.value.bold:

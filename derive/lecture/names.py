@@ -71,7 +71,7 @@ MEANINGS = {
     "angular momentum": ("letter", r"angular momentum"),
     "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
     "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
-    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)"),
+    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)|\b(?:gyroscopic|applied|restoring|precessing|driving|resultant|net) (?:moment|couple)s?\b(?! of inertia)"),
     "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial|(?<!un)equal) moment|moment of inertia "
                                     r"(?:about|around) (?:either|any|each) of the (?:two )?(?:other|transverse|perpendicular|equatorial)"
                                     r"[\w ,]{0,24}?\bax[ie]s\b"),
@@ -197,10 +197,10 @@ class Names:
             if k is not None and not a.bold and a.dots <= 1 and not a.primes:
                 return (lx.W if a.dots == 0 else lx.WD)[k]
             return None
-        if meaning == "torque":
+        if meaning == "torque":     # its size alone (M, T) is the text's own symbol, never the mass or the energy
             if k is not None and plain:
                 return lx.TAU[k]
-            return None
+            return vocab._generic(a) if not sub and not a.bold and plain and vocab.open else None
         if meaning == "body angular velocity":    # 𝛚ᵅ_{βα}: bound with its frame labels, the body components
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
                 return lx.OMEGA_VEC

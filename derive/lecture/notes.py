@@ -62,10 +62,19 @@ through ψ about z, θ about y, φ about x, as aircraft and spacecraft texts nam
 TRIGGERS = {"if", "for", "suppose", "assume", "assuming", "when", "with", "let", "given", "provided", "set",
             "setting", "put", "putting", "taking", "substitution", "substituting", "since", "because"}
 _ANGLE_NAME = re.compile(r"\\?([A-Za-z]+)\s*(?:_\s*(\{.+\}|\\?[A-Za-z0-9]+))?")
-ALONG_MOMENTUM = re.compile(r"\b(?:fixed|space|spatial|inertial|laboratory)\s+(?:[zZ]\s*)?[- ]?axis\s+(?:is\s+)?"
-                            r"(?:taken|chosen|put|placed|laid|set)?\s*along\s+(?:the\s+)?(?:conserved\s+|constant\s+)?"
-                            r"angular momentum", re.I)
-"""The prose choosing the fixed first axis along the angular momentum (a free body's usual frame)."""
+_BOLD_L = r"\$\s*\\(?:mathbf|vec|boldsymbol|bm)\s*\{?\s*[LJH]\s*\}?\s*\$"
+_Z_AXIS = r"(?:\$\s*[zZ]\s*\$|\b[zZ])\s*[- ]?\s*axis"
+_FIXED = r"(?:(?:fixed|space|spatial|inertial|laboratory)\s+)"
+_VERB = r"(?:(?:points?|pointing|lies|lying|is|taken|chosen|directed)\s+)"
+ALONG_MOMENTUM = re.compile(
+    r"(?<!body )(?<!body-)(?<!body-fixed )(?:\b" + _FIXED + r"(?:[zZ]\s*)?[- ]?axis|" + _FIXED + r"?" + _Z_AXIS + r")\s+(?:is\s+)?"
+    r"(?:taken|chosen|put|placed|laid|set)?\s*along\s+(?:the\s+)?(?:conserved\s+|constant\s+)?"
+    r"(?:angular momentum|" + _BOLD_L + r")"
+    r"|(?:angular momentum\s+(?:vector\s+)?(?:" + _BOLD_L + r"\s+)?" + _VERB + r"|" + _BOLD_L + r"\s+" + _VERB + r"?)"
+    r"along\s+(?:the\s+)?" + _FIXED + r"?" + _Z_AXIS, re.I)
+"""The prose choosing the fixed first axis along the angular momentum (a free body's usual frame): "the fixed axis
+is taken along the angular momentum", "take the $z$-axis along $\\mathbf{L}$", "$\\mathbf{L}$ points along the
+$z$ axis" (read on the text with its inline math; a body axis chooses nothing)."""
 SYMMETRIC = re.compile(r"\b(?:axi)?symmetric(?:al)?\s+(?:heavy\s+)?(?:top|body|rigid body|rotor|gyroscope|spinning top)s?\b"
                         r"|\bLagrange(?:'s)?\s+(?:top|case)\b|\baxisymmetric\b|(?<!\bno\s)(?<!\bnot\s)\b(?:two\s+|the\s+)equal\s+moments\b", re.I)
 """Prose that makes the body symmetric about axis 3 (I₁ = I₂) for the rest of its section."""
@@ -402,7 +411,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
     prose = source.MATH.sub(lambda m: " " * (m.end() - m.start()), body)
     for m in SYMMETRIC.finditer(prose):
         events.append((m.start(), Item("context", line_of(m.start()), text="symmetric", lead=m.group(0))))
-    for m in ALONG_MOMENTUM.finditer(prose):
+    for m in ALONG_MOMENTUM.finditer(source.MATH.sub(lambda m: m.group(0) if m.group("i") else " " * (m.end() - m.start()), body)):
         events.append((m.start(), Item("context", line_of(m.start()), text="along momentum", lead=m.group(0))))
     for m in _SMALL.finditer(prose):
         start = max([0] + [e.end() for e in _SENTENCE_END.finditer(prose, 0, m.start())])
