@@ -34,9 +34,6 @@ SHORT = {
     ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "found"):
         "its slip, the third moment about a shifted point written with J_xx for J_zz, is read as the text's definition "
         "of J_{z'z'}, not as the parallel axis theorem",
-    ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "false"):
-        "p-dot = m a = sum F after p = m v is failed with v taken for the velocity omega x r of a point turning with "
-        "the body, where the text's p is the body's linear momentum",
     ("ntnu-modsim-formula-sheet-rigid-body-euler-inertia-pendulum", "checked"):
         "a student's formula sheet in LaTeX: Euler's laws with M_{b/c} . alpha_ib and cross products, sums without "
         "their index, the skew matrix written (r_0 x), the norm ||d||, the moments and products about a shifted "
