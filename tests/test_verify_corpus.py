@@ -27,6 +27,20 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "checked"):
+        "a students' compendium in LaTeX: Newton's and Euler's laws stacked in block matrices with cross products, "
+        "the torque as (^i d/dt) h through (^b d/dt), the skew matrix written (r^b_g)^\\times, the inertia matrix and "
+        "h_c = J omega in \\Vec, and the moments about a shifted point recorded as the text's own definitions",
+    ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "found"):
+        "its slip, the third moment about a shifted point written with J_xx for J_zz, is read as the text's definition "
+        "of J_{z'z'}, not as the parallel axis theorem",
+    ("ntnu-modsim-formula-sheet-rigid-body-euler-inertia-pendulum", "checked"):
+        "a student's formula sheet in LaTeX: Euler's laws with M_{b/c} . alpha_ib and cross products, sums without "
+        "their index, the skew matrix written (r_0 x), the norm ||d||, the moments and products about a shifted "
+        "origin recorded as the text's own definitions, and a rod pendulum matched against the heavy top",
+    ("ntnu-modsim-formula-sheet-rigid-body-euler-inertia-pendulum", "found"):
+        "its four slips (a dot for a plus in the torque about P, the new centre's sign, the pendulum's L for L/2 and "
+        "the inertia about a pivot with the signs swapped) sit on displays it does not read",
     ("archimedes-spatial-rigid-body-6dof-quaternion-euler-kinematics-blog", "checked"):
         "a library's blog post in vectors with a frame's superscript (v^B, omega^B, h_int^B): quaternion products "
         "q (x) omega^B, cross products with omega^B and the rates of the body-frame momenta are not read",

@@ -9,7 +9,7 @@ verdicts).
 May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.point_moments`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
-:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.chain_end_names`,
+:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.lone_point`, :mod:`derive.lecture.chain_end_names`,
 :mod:`derive.lecture.written_matrices` (`numbers_set`, `columns_only`),
 SymPy.
 
@@ -32,6 +32,7 @@ from derive.lecture import frame_labels
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
 from derive.lecture import latex as lx
+from derive.lecture import lone_point
 from derive.lecture import own_torque
 from derive.lecture import point_labels
 from derive.lecture import point_moments
@@ -138,6 +139,8 @@ class AlgebraStatements:
                     self._add(line, piece, "identity", "unchecked", first[k].skip)
                 continue
             verdict, why = self._algebra_pair(reading, ref, k)
+            if verdict == "fails" and lone_point.mixed(reading, ref, k):
+                verdict, why = "unchecked", lone_point.WHY
             if verdict == "fails" and point_labels.involved(first[ref].value, first[k].value):
                 rest = point_labels.at_rest(first[k].value, first[ref].value)
                 verdict, why = ("holds", point_labels.AT_REST.format(point=rest[0], what=rest[1])) if rest \
