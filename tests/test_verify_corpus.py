@@ -31,18 +31,13 @@ SHORT = {
         "homework solutions in four-decimal numbers: the cylinder's matrices after a turn of pi/4 and the numeric "
         "eigenvalues, rotation and checks are matrices of rounded numbers and products of named matrices "
         "(R^T (I' + I_pat) R, R I_D R^T) the reader does not evaluate",
-    ("jhu-intermediate-dynamics-cylinder-parallel-axis-principal-moments-hw", "false"):
-        "R^T R = R R^T = 1 for a rotation written to four decimals is judged exactly, where the rounded entries "
-        "miss the identity by their rounding",
     ("sicm-workbook-principal-moments-tetrahedron-cube-point-masses", "checked"):
-        "a workbook's answers with principal moments named A, B, C: the five point masses' A = 1.6m, B = C = 3.6m "
-        "are the eigenvalues of a matrix shown only in a printed output line",
+        "a workbook's answers with principal moments named A, B, C: one body's A = B = C and its inertia matrix are "
+        "its own values, not judged, and the five point masses' A = 1.6m, B = C = 3.6m are the eigenvalues of a "
+        "matrix shown only in a printed output line",
     ("sicm-workbook-principal-moments-tetrahedron-cube-point-masses", "found"):
         "its slip, principal moments taken from a wrongly computed inertia matrix, needs the five masses' "
         "inertia matrix, which the text sets only in prose and code",
-    ("sicm-workbook-principal-moments-tetrahedron-cube-point-masses", "false"):
-        "one body's inertia matrix (the tetrahedron's 4m times the identity) is judged against the inertia tensor "
-        "of generic mass points, and the cube's A = B = C = M L^2/6 as identities among general quantities",
     ("archimedes-spatial-rigid-body-6dof-quaternion-euler-kinematics-blog", "checked"):
         "a library's blog post in vectors with a frame's superscript (v^B, omega^B, h_int^B): quaternion products "
         "q (x) omega^B, cross products with omega^B and the rates of the body-frame momenta are not read",
