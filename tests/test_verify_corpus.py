@@ -41,6 +41,17 @@ SHORT = {
     ("ntnu-modsim-formula-sheet-rigid-body-euler-inertia-pendulum", "found"):
         "its four slips (a dot for a plus in the torque about P, the new centre's sign, the pendulum's L for L/2 and "
         "the inertia about a pivot with the signs swapped) sit on displays it does not read",
+    ("jhu-intermediate-dynamics-cylinder-parallel-axis-principal-moments-hw", "checked"):
+        "homework solutions in four-decimal numbers: the cylinder's matrices after a turn of pi/4 and the numeric "
+        "eigenvalues, rotation and checks are matrices of rounded numbers and products of named matrices "
+        "(R^T (I' + I_pat) R, R I_D R^T) the reader does not evaluate",
+    ("sicm-workbook-principal-moments-tetrahedron-cube-point-masses", "checked"):
+        "a workbook's answers with principal moments named A, B, C: one body's A = B = C and its inertia matrix are "
+        "its own values, not judged, and the five point masses' A = 1.6m, B = C = 3.6m are the eigenvalues of a "
+        "matrix shown only in a printed output line",
+    ("sicm-workbook-principal-moments-tetrahedron-cube-point-masses", "found"):
+        "its slip, principal moments taken from a wrongly computed inertia matrix, needs the five masses' "
+        "inertia matrix, which the text sets only in prose and code",
     ("archimedes-spatial-rigid-body-6dof-quaternion-euler-kinematics-blog", "checked"):
         "a library's blog post in vectors with a frame's superscript (v^B, omega^B, h_int^B): quaternion products "
         "q (x) omega^B, cross products with omega^B and the rates of the body-frame momenta are not read",

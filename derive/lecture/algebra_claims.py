@@ -150,6 +150,8 @@ class AlgebraStatements:
                                              "the text sets it to, not what the reader took it for")
             if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
+            if verdict == "fails" and (_one_body(first[ref].value, first[k].value) or _one_body(first[k].value, first[ref].value)):
+                verdict, why = "unchecked", ONE_BODY
             if verdict == "fails" and self._plane_at(line) is not None:
                 verdict, why = self._in_the_plane(reading, ref, k, self._plane_at(line), verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
@@ -522,6 +524,23 @@ def _tokens(text) -> list:
 def _named(text) -> bool:
     toks = _tokens(va.prepare(text))
     return len(toks) > 1 and toks[0].kind == "atom" and toks[1].kind == "rel"
+
+
+ONE_BODY = ("one body's values: the written side names none of the coordinates the generic mass points' "
+            "expression is quadratic in, so it describes the text's own body, which those points cannot decide")
+
+
+def _one_body(derived, written) -> bool:
+    """Whether ``written`` (4m on the diagonal) is free of every coordinate ``derived`` is quadratic in
+    (m(y² + z²)): the text's own body's values, set against the reader's generic mass points. Only a
+    tensor set against a tensor: a vector's slip (ω² r for α k × r) is judged as before."""
+    if not all(isinstance(e, sp.MatrixBase) and e.shape == (3, 3) for e in (derived, written)):
+        return False
+    try:
+        coords = {x for e in derived for x in e.free_symbols if sp.Poly(e, x).degree() >= 2}
+    except (sp.PolynomialError, sp.GeneratorsNeeded, AttributeError, TypeError):
+        return False
+    return bool(coords) and not coords & getattr(written, "free_symbols", set())
 
 
 def _products_set_to_zero(reading) -> bool:

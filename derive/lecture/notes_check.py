@@ -505,11 +505,11 @@ class Checker(ReadingRules):
             return
         loose = sorted(self.tex(x) for x in free(val) if isinstance(x, lx.Generic) and x not in self.ctx.defs
                        and x not in self._constants())
-        if forms and not loose:
-            # a derived quantity written in capitals the text never tied to it (diag(A, B, C) for the
-            # inertia tensor) defines those letters: it is no slip
-            # A, B, C: letters the reader knows only as free symbols (vocabulary.FREE_NAMES)
-            loose = sorted(str(x) for x in free(val) if x.name in ("A", "B", "C") and x not in self.ctx.defs)
+        untied = ("A", "B", "C")      # letters the reader knows only as free symbols (vocabulary.FREE_NAMES)
+        if not loose and (forms or sum(type(m.value) is sp.Symbol and m.value.name in untied and m.value not in self.ctx.defs for m in parsed.members) > 1):
+            # capitals the text never tied to the body are its own (diag(A, B, C) for the inertia tensor defines
+            # them; A = B = C = M L^2/6 gives one body's moments): a relation in them is no slip
+            loose = sorted(str(x) for x in free(val).union(*map(free, targets)) if x.name in untied and x not in self.ctx.defs)
         undecided = f"involves {', '.join(loose)}, which the text has not defined" if loose else \
             None if forms else self._undecidable([m.value for m in parsed.members], val, targets)
         undecided = undecided or worked_values.unchecked(piece, val, [self._resolve(f) for f in targets], self.tex, label)

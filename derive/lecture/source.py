@@ -4,7 +4,7 @@ Takes: the text of a notes file, or one formula of it. Gives: the text with what
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
 May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
-`derive.lecture.angle_columns`, `derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.left_indices`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
+`derive.lecture.angle_columns`, `derive.lecture.bar_determinants`, `derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.left_indices`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -45,7 +45,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import angle_columns, bracket_cross, differentials, imaginary_unit, left_indices, tex_structure, texmacros, units
+from derive.lecture import angle_columns, bar_determinants, bracket_cross, differentials, imaginary_unit, left_indices, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
 from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, FONT_SIZES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
@@ -564,7 +564,7 @@ def normalize(latex: str, user: dict | None = None) -> str:
 def _normalized(latex: str, user: tuple) -> str:
     """`normalize`, memoised: the notes, the names the prose gives and the hat maps each normalise
     the text's formulas."""
-    latex = angle_columns.squared(units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(re.sub(EQUATION_LABEL, " ", characters(latex)))))))
+    latex = bar_determinants.vertical(angle_columns.squared(units.plain_numbers(texmacros.synonyms(texmacros.font_switches(definitions_removed(re.sub(EQUATION_LABEL, " ", characters(latex))))))))
     user = dict(user)
     try:
         latex = texmacros.expand(latex, user)
