@@ -9,7 +9,7 @@ verdicts).
 May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.point_moments`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
-:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.lone_point`, :mod:`derive.lecture.chain_end_names`,
+:mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.lone_point`, :mod:`derive.lecture.body_values`, :mod:`derive.lecture.chain_end_names`,
 :mod:`derive.lecture.written_matrices` (`numbers_set`, `columns_only`),
 SymPy.
 
@@ -26,6 +26,7 @@ import re
 import sympy as sp
 
 from derive.lecture import body_plane
+from derive.lecture import body_values
 from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
 from derive.lecture import frame_labels
@@ -150,8 +151,8 @@ class AlgebraStatements:
                                              "the text sets it to, not what the reader took it for")
             if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
-            if verdict == "fails" and (_one_body(first[ref].value, first[k].value) or _one_body(first[k].value, first[ref].value)):
-                verdict, why = "unchecked", ONE_BODY
+            if verdict == "fails" and (body_values.one_body(first[ref].value, first[k].value) or body_values.one_body(first[k].value, first[ref].value)):
+                verdict, why = "unchecked", body_values.ONE_BODY
             if verdict == "fails" and self._plane_at(line) is not None:
                 verdict, why = self._in_the_plane(reading, ref, k, self._plane_at(line), verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
@@ -379,8 +380,8 @@ class AlgebraStatements:
             if _set_perpendicular(reading, k):
                 return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
                                      "condition of the text's set-up, not a consequence the derivation decides")
-            if _particular(members[k].value, members[ref].value) or _particular(members[ref].value, members[k].value):
-                return "unchecked", PARTICULAR
+            if body_values.particular(members[k].value, members[ref].value) or body_values.particular(members[ref].value, members[k].value):
+                return "unchecked", body_values.PARTICULAR
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
@@ -484,20 +485,6 @@ def _masked(d, a, b):
     return "fails", "as written: " + _where(read) + " ({why}); an entry left out, not read ({unread})"
 
 
-PARTICULAR = ("the value of a particular body (numbers and its mass, no position of its points): the reader's "
-              "body is a general one, whose value is in its points' positions, so the two are not compared")
-_POSITIONS = frozenset(va.R0) | frozenset(c for point in va.RK for c in point)
-_RATES = frozenset(va.W) | frozenset(va.WD)
-
-
-def _particular(written, derived) -> bool:
-    """``\\mathbf{I} = m\\,\\mathrm{diag}(0.0016, 0.0049, 0.0016)``, ``I_{zz} = 0.3\\,m``: a member in no position
-    of the body's points and no rate, not zero, beside one in positions: a worked example's body, not the general one
-    (a member in the rates, 𝛚 where 𝛚 × 𝐫 belongs, is a slip the points decide)."""
-    free = lambda x: sp.sympify(x).free_symbols if not isinstance(x, sp.MatrixBase) else x.free_symbols  # noqa: E731
-    return not _zero(written) and not free(written) & (_POSITIONS | _RATES) and bool(free(derived) & _POSITIONS)
-
-
 def _zero(d) -> bool:
     if isinstance(d, sp.MatrixBase):
         return all(x == 0 for x in d)
@@ -525,22 +512,6 @@ def _named(text) -> bool:
     toks = _tokens(va.prepare(text))
     return len(toks) > 1 and toks[0].kind == "atom" and toks[1].kind == "rel"
 
-
-ONE_BODY = ("one body's values: the written side names none of the coordinates the generic mass points' "
-            "expression is quadratic in, so it describes the text's own body, which those points cannot decide")
-
-
-def _one_body(derived, written) -> bool:
-    """Whether ``written`` (4m on the diagonal) is free of every coordinate ``derived`` is quadratic in
-    (m(y² + z²)): the text's own body's values, set against the reader's generic mass points. Only a
-    tensor set against a tensor: a vector's slip (ω² r for α k × r) is judged as before."""
-    if not all(isinstance(e, sp.MatrixBase) and e.shape == (3, 3) for e in (derived, written)):
-        return False
-    try:
-        coords = {x for e in derived for x in e.free_symbols if sp.Poly(e, x).degree() >= 2}
-    except (sp.PolynomialError, sp.GeneratorsNeeded, AttributeError, TypeError):
-        return False
-    return bool(coords) and not coords & getattr(written, "free_symbols", set())
 
 
 def _products_set_to_zero(reading) -> bool:

@@ -11,9 +11,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from derive.lecture.vocabulary import (
-    DLDT, DLDT_BODY, FUNCTIONS, INVERSES, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Generic, NotRead,
-    ACCELS, Atom, CrossMatrix, MatProduct, Quantity, Tok, Transposed, Unknown, Vocabulary, W,
-)
+    ACCELS, DLDT, DLDT_BODY, FUNCTIONS, INVERSES, LAGRANGIAN, LMAG, LVEC, MOMENTUM, OMEGA_VEC, WD, Atom, CrossMatrix,
+    Generic, MatProduct, NotRead, Quantity, Tok, Transposed, Unknown, Vocabulary, W)
 from derive.lecture import body_dot, gradients
 from derive.lecture.abbreviated_trig import abbreviated_trig
 from derive.lecture.axis_sums import Axis, range_letters
@@ -439,8 +438,7 @@ class _Parser:
                     self.i = k2
                     return sp.Derivative(top, var, evaluate=False)
             if num and is_partial(num[0]):
-                raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative of this form",
-                              num[0].pos + 1)
+                raise NotRead(f"cannot parse at column {num[0].pos + 1}: a partial derivative of this form", num[0].pos + 1)
         return None
 
     def _rate_written(self, x, n, end):
