@@ -128,7 +128,7 @@ class Context:
 
 class Reading:
     """Mixin of the checker: keeps ``self.ctx`` as the text goes on. Uses ``self.vocab``,
-    ``self._add``, ``self._new_name``, ``self._spin_set``, ``self._snapshot`` and ``self.tex``."""
+    ``self._add``, ``self._flush``, ``self._new_name``, ``self._spin_set``, ``self._snapshot`` and ``self.tex``."""
 
     def _enter_section(self, level):
         """A heading: what the text assumed in the enclosing section (a heading of a lower level)
@@ -219,7 +219,8 @@ class Reading:
                     continue
                 v = parsed.members[0].value
                 for i, w in enumerate(lx.W):
-                    if v == w or v == moments[i] * w:
+                    if (v == w or v == moments[i] * w) and w not in self.ctx.first_order:
+                        self._flush()       # the solutions before it were written under the smallness they had
                         self.ctx.first_order.add(w)
 
     def _signs(self, item):

@@ -158,7 +158,6 @@ class Checker(ReadingRules):
             elif item.kind == "signs":
                 self._signs(item)
             elif item.kind == "small":
-                self._flush()       # the solutions before it were written under the smallness they had
                 self._small(item.symbols)
             elif item.kind in ("display", "inline"):
                 self._small_before_ll(item.latex)
