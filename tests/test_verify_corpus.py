@@ -352,7 +352,7 @@ SHORT = {
         "small-angle approximations marked approx and a definite integral solved for alpha(t) are not read",
 }
 
-FLOOR = {"checked": 988, "slips_flagged": 120, "holds_flagged": 0}
+FLOOR = {"checked": 989, "slips_flagged": 121, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 
