@@ -5,17 +5,21 @@ calls the statement a `typo` where it writes the letters of a symbol's command o
 (``theta``, ``infty``, ``omega``, ``hbar``) as a word of its own, without the backslash, while the same
 display writes that command with it (``\\cos\\theta … + \\sin theta``, ``\\lim_{N\\to\\infty} … \\lim_{N \\to
 infty}``): TeX sets those letters as a product, where the display's own spelling shows the symbol is
-meant. The correction puts the backslash back.
+meant. The correction puts the backslash back. Its sibling, a sum's index typed after a symbol without its
+underscore (``\\mathbf{ r}\\alpha`` where the display writes ``\\mathbf{r}_{\\alpha}``), is read here too
+(`lost_underscore`): a `typo`, corrected by the subscript.
 
 Left alone: words in a text command (``\\text{…}``, ``\\mathrm{…}``, ``\\operatorname{…}``, a label), a
 word that is the whole of a subscript or superscript (``I_{theta}``, a label the text may name by a word),
 a word inside a longer run of letters, names of two or three letters (``phi``, ``psi``, ``eta``: a text's
 own product of letters may spell them), and every display that never writes the command. A statement
-another reader already flagged keeps its verdicts. May import: nothing of derive's.
+another reader already flagged keeps its verdicts. May import: derive.lecture.lost_underscore.
 """
 from __future__ import annotations
 
 import re
+
+from derive.lecture import lost_underscore
 
 NAMES = ("alpha", "beta", "gamma", "delta", "epsilon", "varepsilon", "zeta", "theta", "vartheta", "iota",
          "kappa", "lambda", "sigma", "upsilon", "omega", "varphi", "Gamma", "Delta", "Theta", "Lambda", "Sigma",
@@ -50,6 +54,7 @@ class LostBackslash:
             return
         words = lost(piece, latex)
         if not words:
+            self._lost_underscore(line, piece, latex, before)
             return
         if all(c.verdict == "unchecked" for c in self.claims[before:]):
             del self.claims[before:]
@@ -57,3 +62,15 @@ class LostBackslash:
         self._add(line, piece, "symbol", "typo",
                   f"writes the letters {names} without the backslash, which TeX sets as a product of letters, where "
                   f"the same display writes the symbol \\{words[0]}: its backslash lost", restored(piece, words))
+
+    def _lost_underscore(self, line, piece, latex, before) -> None:
+        """A typo where the statement writes a sum's index bare after a symbol its display writes indexed."""
+        spans = lost_underscore.lost(piece, latex)
+        if not spans:
+            return
+        if all(c.verdict == "unchecked" for c in self.claims[before:]):
+            del self.claims[before:]
+        self._add(line, piece, "symbol", "typo",
+                  f"writes the sum's index \\{spans[0][1]} after a symbol without its underscore, which TeX sets as a "
+                  f"factor, where the same display writes that symbol with the index as its subscript: its underscore lost",
+                  lost_underscore.restored(piece, spans))
