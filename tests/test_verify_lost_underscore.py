@@ -20,3 +20,4 @@ def test_an_index_that_is_no_sums_or_a_symbol_never_indexed_is_left_alone():
     assert lost(r"F = m a \alpha", r"F = m a \alpha") == []
     assert lost(r"\sum_{\alpha} m_{\alpha} c\alpha", r"\sum_{\alpha} m_{\alpha} c\alpha") == []
     assert lost(r"\sum_{\alpha} m_{\alpha} x_{\alpha}", r"\sum_{\alpha} m_{\alpha} x_{\alpha}") == []
+

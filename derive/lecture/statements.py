@@ -258,6 +258,8 @@ def _statements(latex: str) -> tuple[str, ...]:
     """`statements`, once per display: a display read again (a second reading, a probe in another
     sequence) is cut as before."""
     body = _AND.sub(r" \\quad ", _EQUATION_NUMBER.sub("", _strip_envs(latex)))
+    # a whole display in one pair of parentheses (a sheet's (L = I ω), its aligned rows in \left( … \right)) is what they hold
+    body = _unwrapped(body)
     # ∀ i ∈ ℤ₃: one statement per axis, read before a medium space \; is masked (the quantifier may be spaced so)
     body = " \\\\ ".join(index_quantifier.instances(body)).replace("\\;", "\\\x00")
     rows = [_alignment_free(c).strip() for r in _top_level_split(body, ("\\\\",)) for c in _column_pairs(r)]
