@@ -80,7 +80,8 @@ class FastTop:
         rot = self.d.rot
         if label is not rot.alpha_d or isinstance(val, sp.MatrixBase):
             return None
-        spin = {rot.gamma_d: _S, lx.p_gamma: I3 * _S, lx.W[self.vocab.axial]: _S}
+        # |𝐋| is I₃γ̇ to leading order: the transverse part of 𝐋 is I₁α̇ sin β, of order 1/γ̇
+        spin = {rot.gamma_d: _S, lx.p_gamma: I3 * _S, lx.W[self.vocab.axial]: _S, lx.LMAG: I3 * _S}
         if not free(val) & set(spin) or free(val) & {rot.alpha_d, rot.beta_d}:
             return None
         c = self.d.fast_precession

@@ -16,7 +16,7 @@ settings, the text's definitions, the equations it has written). Gives: the mixi
   under them; the text's undefined symbols in a solution are its integration constants.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.matrix_rows`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.zero_test`,
-:mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.spin_threshold`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -24,7 +24,7 @@ import functools
 
 import sympy as sp
 
-from derive.lecture import latex as lx
+from derive.lecture import latex as lx, spin_threshold
 from derive.lecture.comparing import edits, flow_of, free, not_a_consequence, positive_multiple, quick_equal, zero
 from derive.lecture.context import is_ordering, sign_under_orderings
 from derive.lecture.matrix_rows import rows_verdict
@@ -211,16 +211,13 @@ class Motion:
 
     def _duplicate(self, line, piece, parsed, pieces):
         """A row repeated within one block: a transcription slip; the missing equation is named."""
-        missing = None
         have = set()
         for p in pieces:  # the rows that are one component's equation (not the vector sum)
             found = [i for i, w in enumerate(lx.WD) if lx.latex_atoms(p, self.vocab) & {w}]
             if len(found) == 1:
                 have.add(found[0])
         gaps = [i for i in range(3) if i not in have]
-        if gaps:
-            R = self.d.euler(self.ctx.subs)[gaps[0]]
-            missing = self.tex(R) + " = 0"
+        missing = self.tex(self.d.euler(self.ctx.subs)[gaps[0]]) + " = 0" if gaps else None
         kind = "equation of motion" if any(free(m.value) & set(lx.WD) for m in parsed.members) else "identity"
         if gaps:  # a typo: the row that should stand here is the missing component's equation
             self._add(line, piece, kind, "typo", "repeats an earlier row of the same block; the "
@@ -251,6 +248,8 @@ class Motion:
         if ok:
             self._add(line, piece, "inequality", "holds", "the stability condition of the sleeping top (k₂ ≥ 0): " + why)
             return
+        if (bound := spin_threshold.judged(claim, d, self.tex)) is not None:    # the same bound solved for the spin
+            return self._add(line, piece, "inequality", *bound)
         k2 = self.d.sleeping.coefficient(2)
         # the condition squared or scaled: k₂ ≥ 0 itself (p_γ² ≥ 4 M g l I₁), up to a positive factor
         if not strict and positive_multiple(claim, k2):

@@ -59,13 +59,13 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.errors import SceneError
-from derive.lecture import hat_maps, principal_momentum, said_columns
+from derive.lecture import gyro_names, hat_maps, principal_momentum, said_columns
 from derive.lecture import latex as lx
 from derive.lecture import source
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
 
 # meaning → (how it binds, the phrases that say it). Order matters: the more specific first.
-MEANINGS = {
+MEANINGS = {**gyro_names.MEANINGS,      # the gyroscope's phrases (precession, spin, nutation rates), read first
     "vertical angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:fixed |space |spatial |inertial )?(?:vertical|z|Z|\$z\$|\$Z\$)"),
     "axial angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:body'?s? )?(?:symmetry|figure|body|top'?s?|spin)\s*(?:axis|x_3)"),
     "angular momentum": ("letter", r"angular momentum"),
@@ -110,7 +110,7 @@ LETTERS = {
     "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
     "identity column": ("I", "e", "E", "u", "1"), "body angular velocity": ("omega", "Omega", "w"),
     "roll rate": ("p", "P"), "pitch rate": ("q", "Q"), "yaw rate": ("r", "R"), "vertical": ("gamma", "n", "nu"),
-}
+    **gyro_names.LETTERS}
 """The letters a reader takes for each meaning: a phrase next to any other letter is about
 something else (a point C, a matrix S), so it binds nothing."""
 
@@ -169,9 +169,9 @@ class Names:
         """What an atom stands for by the meaning the text gave it (`MEANINGS`); None where it
         gave none, or the meaning says nothing of this spelling (an index it does not cover).
         ``vocab`` is the reader's `latex.Vocabulary` (the third turn's axis, the text's symbols)."""
-        meaning = self.meaning(a)
-        if meaning is None:
-            return None
+        meaning = gyro_names.SAME.get(self.meaning(a), self.meaning(a))
+        if meaning is None or meaning in gyro_names.MEANINGS:
+            return None if meaning is None else gyro_names.value(meaning, a, vocab)
         sub = str(env.get(a.sub, a.sub)) if len(a.sub) == 1 else a.sub
         k = {"1": 0, "2": 1, "3": 2}.get(sub)
         if not k and k != 0 and sub in ("x", "y", "z") and meaning == "angular velocity":
@@ -377,8 +377,8 @@ def _said_of_display(names: Names, body: str):
     symbol is, as it would next to the symbol inline."""
     for m in _DISPLAY.finditer(body):
         sentence = re.split(r"[.;!?]\s|\n\s*\n|\$\$", body[:m.start()].rstrip())[-1]
-        meaning = next((name for name, (how, phrase) in MEANINGS.items() if how == "letter" and
-                        re.search(_SAID.pattern.replace("PHRASE", phrase), sentence, flags=re.I)), None)
+        meaning = next((name for name, (how, phrase) in MEANINGS.items() if (how == "letter" or name in gyro_names.LETTERS)
+                        and re.search(_SAID.pattern.replace("PHRASE", phrase), sentence, flags=re.I)), None)
         if meaning is None:
             continue
         inner = re.sub(r"^\$\$|\$\$$", "", m.group(0))

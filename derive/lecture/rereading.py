@@ -33,6 +33,14 @@ from derive.lecture import vectors as vc
 from derive.symbolic.lagrangian import I1, I2, Mass, l
 
 
+def _symbols(piece) -> set:
+    """The spellings of a statement's symbols (empty where it cannot be scanned)."""
+    try:
+        return {(t.value.base, t.value.sub, t.value.bold, t.value.dots) for t in lx.scan(piece) if t.kind == "atom"}
+    except lx.NotRead:
+        return {None}
+
+
 def _copied(ctx):
     """The context with containers of its own (its values are immutable SymPy objects)."""
     return type(ctx)(**{k: (v.copy() if hasattr(v, "copy") else v) for k, v in vars(ctx).items()})
@@ -230,16 +238,29 @@ class Rereading:
                             and s.latex != c.latex and bindings <= self._learned_bindings(s.latex)
                             and not s.self_consistent), None)
             said = self._said_and_held(bindings) if sibling is None else None
-            if sibling is None and said is None:
+            before = self._held_before(bindings, c) if sibling is None and said is None else None
+            if sibling is None and said is None and before is None:
                 continue
             c.verdict, c.correction = verdict, correction
             c.why = (f"reading {learned} (as the prose names it) it does not hold: {why}; the reading is "
                      f"confirmed by {sibling.latex.strip()} in the same display, which holds read with those names"
                      if sibling is not None else
+                     f"reading {learned} (as the prose names it) it does not hold: {why}; the reading is confirmed by "
+                     f"{before.latex.strip()} at line {before.line}, which holds read with those very names"
+                     if before is not None else
                      f"reading {learned} (as the text names it at line {said.line}) it does not hold: {why}; the "
                      f"reading is confirmed by {said.latex.strip()}, the display that names them, which holds read so")
             if verdict == "fails" and edit is not None:
                 c.verdict, c.correction = "typo", edit
+
+    def _held_before(self, bindings, c):
+        """An earlier claim that holds by the derivation read with every one of these bindings (the same
+        words of the prose bound them all), or None: were the reading not the text's, it would not hold.
+        A claim that holds whatever the names stand for (a restatement, an identity) confirms nothing, and
+        one written in fewer symbols does not vouch for the others (a plain L may be the Lagrangian)."""
+        return next((s for s in self.claims if s.line < c.line and s.verdict == "holds" and not s.self_consistent
+                     and not s.why.startswith("identical") and "whatever" not in s.why
+                     and bindings <= self._learned_bindings(s.latex) and _symbols(c.latex) <= _symbols(s.latex) - {None}), None)
 
     def _said_and_held(self, bindings):
         """The claim that holds, read with every binding, at the one line of a display that said them all
