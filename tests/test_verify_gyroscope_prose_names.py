@@ -53,7 +53,7 @@ def test_a_correct_spin_threshold_in_prose_names_holds_squared_or_solved():
 def test_a_spin_threshold_without_the_transverse_moment_is_flagged_once_the_names_are_confirmed():
     got = verdicts("\\omega_{s} > \\sqrt{\\frac{M g r}{I_{z}}}")
     assert got[1][1] == "fails", got
-    assert "confirmed by" in got[1][2] and "turning at" in got[1][2]
+    assert "confirmed by" in got[1][2] and "stability condition" in got[1][2]
 
 
 def test_a_wrong_factor_in_the_fast_tops_rate_in_prose_names_is_never_called_right():

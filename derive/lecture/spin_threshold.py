@@ -5,9 +5,10 @@ writes the same bound on the spin ω̃₃ (or ψ̇), scaled, squared or solved f
 checker's exact comparison of lhs − rhs does not see. A careful reader compares what such a bound
 says instead: the spin at which it turns (its one positive root in the spin) and its side (a fast
 spin satisfies it). Takes: the claim as ``c ≥ 0`` (or > 0) and the derived condition the same way,
-both resolved by the checker. Gives: `judged`, a (verdict, why) pair or None when the claim is not
-a bound on the spin alone in the heavy top's parameters (a tilt, a rate of precession, a symbol of
-the text's own: then the checker judges it as before).
+both resolved by the checker. Gives: `judged`, ("holds", why) where the claim is the sleeping
+top's bound, else None: the checker then seeks a reversed relation or one edit, or calls it not
+the condition, as before (so too where the claim is not a bound on the spin alone in the heavy
+top's parameters: a tilt, a rate of precession, a symbol of the text's own).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, SymPy.
 """
@@ -51,21 +52,14 @@ def _fast_side(e) -> bool | None:
 
 
 def judged(claim, derived, tex):
-    """(verdict, why) for ``claim ≥ 0`` as a bound on the spin, against ``derived ≥ 0``; or None."""
+    """("holds", why) for ``claim ≥ 0`` as the bound on the spin ``derived ≥ 0`` sets, or None."""
     c, d = _in_spin(claim), _in_spin(derived)
     if c is None or d is None:
         return None
     mine, theirs = _threshold(c), _threshold(d)
     if mine is None or theirs is None or _fast_side(d) is not True:
         return None
-    side = _fast_side(c)
-    spin = lx.W[2]
-    if side is True and sp.simplify(mine - theirs) == 0:
-        return "holds", (f"the sleeping top's threshold: the bound turns at {tex(spin)} = {tex(theirs)}, "
+    if _fast_side(c) is True and sp.simplify(mine - theirs) == 0:
+        return "holds", (f"the sleeping top's threshold: the bound turns at {tex(lx.W[2])} = {tex(theirs)}, "
                          "as the derived stability condition does, and a fast spin satisfies it")
-    if side is None:
-        return None
-    if sp.simplify(mine - theirs) != 0:
-        return "fails", (f"a bound on the spin turning at {tex(spin)} = {tex(mine)}, where the derived stability "
-                         f"condition of the sleeping top turns at {tex(spin)} = {tex(theirs)}")
-    return None
+    return None     # any other bound is the checker's: a reversed relation, one edit, or not the condition
