@@ -1,6 +1,5 @@
 """`derive animate` and Result.animate: frames sampled from the motion, the body drawn, the
 stroboscopic rule for fast spins, the three formats, the command line's rules."""
-import io
 import shutil
 from pathlib import Path
 

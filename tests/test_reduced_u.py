@@ -216,7 +216,6 @@ def test_alpha_rate_is_exact_at_p_alpha_equal_p_gamma():
     0/0, and no cancellation (against mpmath at 50 digits)."""
     import mpmath as mp
 
-    desc = catalogue.describe(("reduced-u", True, ("gravity",)))
     kernel = _model_kernel()
     p = np.array([1.0, 0.5, 1.0, 1.0, 1.0, 3.0, 3.0, 2.0])
     for uu in (1 - 1e-6, 1 - 1e-12, 1.0):

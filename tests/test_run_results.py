@@ -15,7 +15,6 @@ import derive
 from derive.bench.reference import reference_data
 from derive.errors import SceneError
 from derive.sim import plan as plans
-from derive.sim import result
 from derive.sim.scene import load_scene
 from derive.symbolic import integrable
 from derive.sim.result import Result

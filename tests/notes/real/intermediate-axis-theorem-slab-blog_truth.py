@@ -2,7 +2,7 @@
 Text's names: slab sides a (x), b (y), c (z), mass M; principal moments I_x, I_y, I_z;
 body angular velocity (omega_x, omega_y, omega_z); k1 = I_z - I_y, k2 = I_z - I_x, k3 = I_y - I_x;
 k4^2 = k2 k3 w_x^2/(I_y I_z), k5^2 = k1 k3 w_y^2/(I_x I_z)."""
-import sys, os, tomllib, random
+import sys, os, tomllib
 import sympy as sp
 
 HERE = os.path.dirname(os.path.abspath(__file__))

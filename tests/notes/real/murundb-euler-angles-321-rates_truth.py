@@ -3,7 +3,7 @@ Convention of the text: 3-2-1 (z-y-x) intrinsic sequence, yaw psi, pitch theta, 
 R^alpha_beta converts beta-frame coordinates to alpha (body) coordinates (passive / frame rotation):
 R^alpha_beta = R1(phi) R2(theta) R3(psi).  Body angular velocity omega^alpha_{beta alpha}.
 """
-import sys, re, random, pathlib
+import sys, random, pathlib
 import sympy as sp
 
 t = sp.symbols('t', real=True)

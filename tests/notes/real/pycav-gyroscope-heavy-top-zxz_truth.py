@@ -3,7 +3,7 @@ Heavy symmetric top, z-x-z Euler angles (phi precession, theta tilt from vertica
 support fixed, I_1 transverse moment about the support, I_3 axial, centre of mass at height h cos(theta).
 Body angular velocity (1-axis along the line of nodes): (thetadot, phidot sin th, chidot + phidot cos th).
 """
-import sys, pathlib, random
+import sys, pathlib
 import sympy as sp
 
 t = sp.symbols('t')
