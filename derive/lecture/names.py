@@ -367,7 +367,7 @@ _COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:b
                          r"components\s+)of the (?:unit )?vector\s+\$([^$]+)\$")
 
 
-_SAID = re.compile(r"(?:^|\s)(?:the|its)\s+(?:[\w-]+\s+)?(PHRASE)\s+(?:is|equals|reads|becomes)\b[^$]*$", re.I)
+_SAID = re.compile(r"(?:^|\s)(?:the|its)\s+(?:[\w-]+\s+)?(PHRASE)(?:,[^,$]{1,80},)?\s+(?:is|equals|reads|becomes)\b[^$]*$", re.I)
 _ROW_SIDE = re.compile(r"^\s*(?:\\begin\{\w+\*?\}(?:\{[^{}]*\})?)?\s*([^=&]+?)\s*&?\s*=", re.M)
 
 
