@@ -54,3 +54,14 @@ def test_a_planted_square_root_is_flagged():
 def test_a_nutation_rate_in_an_untied_symbol_stays_unchecked_naming_it():
     (verdict, why), = nutation("\\omega_{n} = \\frac{I_{z} \\omega_{s}}{J}")
     assert verdict == "unchecked" and "J" in why
+
+
+def test_a_moment_named_just_before_the_nutation_frequency_is_the_transverse_moment():
+    head = HEAD.replace("Its transverse moment $I_x$ is the same about every axis across the spin. For small oscillations "
+                        "about the steady precession, the nutation frequency is",
+                        "For a symmetric top with transverse moment $I_x$, the free nutation frequency, the small "
+                        "oscillation of the spin axis about its steady precession, is given as")
+    assert head != HEAD
+    found = [(c.verdict, c.why) for c in check_text(head + "$$\\omega_{n} = \\omega_{s} \\sqrt{\\frac{I_{z} - I_{x}}{I_{x}}}$$\n")
+             if c.kind == "nutation rate"]
+    assert [v for v, _ in found] == ["fails"]
