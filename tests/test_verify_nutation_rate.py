@@ -65,3 +65,11 @@ def test_a_moment_named_just_before_the_nutation_frequency_is_the_transverse_mom
     found = [(c.verdict, c.why) for c in check_text(head + "$$\\omega_{n} = \\omega_{s} \\sqrt{\\frac{I_{z} - I_{x}}{I_{x}}}$$\n")
              if c.kind == "nutation rate"]
     assert [v for v, _ in found] == ["fails"]
+
+
+def test_a_number_times_the_derived_rate_is_not_flagged():
+    # half the fast rate or a frequency in cycles may measure the same motion otherwise (a text's own definition)
+    (verdict, why), = nutation("\\omega_{n} = \\frac{I_{z} \\omega_{s}}{2 I_{x}}")
+    assert verdict == "unchecked" and "a number times" in why
+    cycles = check_text(HEAD + "$$f_{n} = \\frac{I_{z} \\omega_{s}}{2 \\pi I_{x}}$$\n")
+    assert not [c for c in cycles if c.verdict in ("typo", "fails")]

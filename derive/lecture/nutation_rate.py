@@ -10,7 +10,8 @@ Takes: a display ``ω = …`` whose head the prose names the nutation rate
 `NutationRate` of `derive.lecture.notes_check.Checker`, whose `_nutation_rate` judges it against
 that leading order, derived here in SymPy from the reader's V_eff and momenta: **holds** (if the spin
 is fast) where the display's leading order in the spin is one of the two, **fails** where it is
-another multiple of the spin; a display in symbols the text has not tied to the heavy top, or not
+another multiple of the spin in the moments, unchecked where it is a pure number times one (a half
+rate, cycles per second: the text's own measure, perhaps); a display in symbols the text has not tied to the heavy top, or not
 of the order of the spin, stays unchecked naming why.
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.symbolic`, SymPy.
@@ -77,6 +78,11 @@ class NutationRate:
         if sp.simplify(lead - k) == 0 or sp.simplify(lead - (k - 1)) == 0:
             self.ctx.defs[head] = value
             self._add(line, piece, "nutation rate", "holds", f"the fast top's nutation: {derived} (holds if the spin {spun} is fast)")
+            return True
+        if sp.simplify(lead / k).is_number:
+            # a number times the derived rate may be another measure of the same motion (a half rate, cycles per second)
+            self._add(line, piece, "nutation rate", "unchecked", f"the nutation rate {self.tex(head)}: a number times "
+                      f"the fast top's, {self.tex(k * rot.gamma_d)}; it may measure the motion otherwise: not judged")
             return True
         self._add(line, piece, "nutation rate", "fails", f"the fast top's nutation: {derived}; the display's leads "
                   f"with {self.tex(lead * rot.gamma_d)}")
