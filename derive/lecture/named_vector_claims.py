@@ -8,7 +8,9 @@ read without a verdict.
 A statement ``𝐗 = …`` whose left side is a vector the section has not set, and which its right
 side does not involve, defines it: recorded (`named_vectors.Definitions`), not judged; set again to
 an expression its recorded one cannot be compared with (a law's 𝐌_O = d𝐇_O/dt, then 𝐌_O = 𝐫_O × 𝐅),
-the later one is its value from there on. Each
+the later one is its value from there on; a bold Ω the prose before it says precesses, set to an
+expression in one torque and one angular momentum, is judged instead as the precession vector
+(`derive.lecture.precession_vector`) and recorded only where it holds. Each
 other link ``a = b`` of a chain is judged with the section's definitions put in: it **holds**
 when its two sides are the same vector for every value of the vectors they involve. When the sides
 differ, the link is a **typo** only if both involve the very same vectors and one edit of the
@@ -16,7 +18,7 @@ later side (a sign, a factor, the order of a cross product, an index) makes it h
 is left unchecked, since a text's chain may use a fact of its own (𝐯 = d𝐫/dt, 𝐅 = d(m𝐯)/dt, a
 motion in a plane) that a general vector does not have.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.named_vectors`, the single edits of
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.named_vectors`, :mod:`derive.lecture.precession_vector`, the single edits of
 :mod:`derive.lecture.vectors`, :mod:`derive.lecture.mp_values`, :mod:`derive.lecture.zero_test`
 (`expanded`), SymPy, mpmath.
 """
@@ -30,6 +32,7 @@ import sympy as sp
 from derive.lecture import latex as lx
 from derive.lecture import mp_values
 from derive.lecture import named_vectors as nv
+from derive.lecture import precession_vector
 from derive.lecture import vectors as vc
 from derive.lecture.zero_test import expanded
 
@@ -43,7 +46,7 @@ IN_PLANE = "its sides differ as vectors in general; in the plane the text set, a
 
 class NamedVectors:
     """Mixin of the checker. Uses ``self._add``, ``self.claims``, ``self.ctx``, ``self._algebra``, ``self._section_of``,
-    ``self._plane_at`` and ``self.judging_only``."""
+    ``self._plane_at``, ``self.notes`` (the prose before a display) and ``self.judging_only``."""
 
     def _algebra_or_named(self, line, piece, text) -> bool:
         """The vector-algebra reader (`derive.lecture.algebra_claims`); where it leaves every claim of a
@@ -75,8 +78,9 @@ class NamedVectors:
         head = first[0].atom
         key = _key(head) if head is not None else None
         if key is not None and not definitions.known(*key) and not _involves(first[1].value, head):
-            definitions.add(*key, reading.source[first[1].start:first[1].end].strip())
-            self._add(line, piece, "definition", "unchecked", DEFINES.format(name=head.text))
+            if not self._precession_defined(line, piece, reading, definitions):
+                definitions.add(*key, reading.source[first[1].start:first[1].end].strip())
+                self._add(line, piece, "definition", "unchecked", DEFINES.format(name=head.text))
             start = 2
         self.ctx.head = reading.source[:first[0].end].strip()      # a row that opens with = continues it
         for k in range(start, len(first)):
@@ -85,6 +89,27 @@ class NamedVectors:
             if k == 1 and key is not None and verdict == "unchecked":
                 # set again to what the earlier value cannot be compared with: the text's value from here on
                 definitions.add(*key, reading.source[first[1].start:first[1].end].strip())
+        return True
+
+    def _precession_defined(self, line, piece, reading, definitions) -> bool:
+        """Judge 𝛀 = … as the precession vector where the prose ties its head to the precession
+        (`derive.lecture.precession_vector`); recorded only where it holds. False when it is not one."""
+        first = reading.members[0]
+        lead = next((i.lead for i in self.notes.items if i.line == line and i.kind in ("display", "inline")), "")
+        judged = precession_vector.judged(first[1].value) if precession_vector.ties(first[0].atom, lead) else None
+        if judged is None:
+            return False
+        verdict, why = judged
+        fix = None
+        if verdict == "typo" and not self.judging_only:
+            reread = lambda src: nv.read(src, definitions)  # noqa: E731
+            fix = next((again_src.strip() for _, _, _, again_src, again in vc.edited_readings(reading, 1, reread, 60)
+                        if (precession_vector.judged(again.members[0][1].value) or ("",))[0] == "holds"), None)
+        if verdict == "typo" and fix is None:
+            verdict = "fails"       # its negative, but no single edit of the side writes the solution
+        if verdict == "holds":
+            definitions.add(*_key(first[0].atom), reading.source[first[1].start:first[1].end].strip())
+        self._add(line, piece, "precession vector", verdict, why, fix)
         return True
 
     def _named_link(self, line, reading, k, definitions):

@@ -317,9 +317,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             if not atoms:
                 continue
             # this symbol as §, the others as ¤: a phrase that reaches past another symbol is its
-            marked = "".join(("§" if j == k else "¤") if isinstance(piece, int) else piece
-                             for j, piece in _pieces(text, found))
-            meaning = _nearest(marked)
+            marked = "".join(("§" if j == k else "¤") if isinstance(piece, int) else piece for j, piece in _pieces(text, found))
+            # where what the text goes on to say of it does not fit its letter, the phrase before it ("moment §, the nutation …")
+            meaning = next((n for n in (_nearest(marked), _nearest(marked.replace("§", "§;", 1))) if n is not None and _fits(n, atoms)), None)
             if meaning is None or MEANINGS[meaning][0] in ("list", "rates", "coords") or not _fits(meaning, atoms):
                 continue
             bind(names, atoms, meaning, f"line {_line(starts, offset + m.start())}")
@@ -367,7 +367,7 @@ _COMPONENTS = re.compile(r"(?:components\s+" + _LISTED + r"|" + _LISTED + r"(?:b
                          r"components\s+)of the (?:unit )?vector\s+\$([^$]+)\$")
 
 
-_SAID = re.compile(r"(?:^|\s)(?:the|its)\s+(?:[\w-]+\s+)?(PHRASE)\s+(?:is|equals|reads|becomes)\b[^$]*$", re.I)
+_SAID = re.compile(r"(?:^|\s)(?:the|its)\s+(?:[\w-]+\s+)?(PHRASE)(?:,[^,$]{1,80},)?\s+(?:is|equals|reads|becomes)\b[^$]*$", re.I)
 _ROW_SIDE = re.compile(r"^\s*(?:\\begin\{\w+\*?\}(?:\{[^{}]*\})?)?\s*([^=&]+?)\s*&?\s*=", re.M)
 
 

@@ -31,6 +31,7 @@ from derive.lecture.elliptic_solution import EllipticSolution
 from derive.lecture.euler_poisson import EulerPoisson
 from derive.lecture.exponent_relations import ExponentRelations
 from derive.lecture.fast_top import FastTop
+from derive.lecture.nutation_rate import NutationRate
 from derive.lecture.frame_displays import FrameDisplays
 from derive.lecture.head_shapes import HeadShapes
 from derive.lecture.implications import Implications
@@ -76,7 +77,7 @@ from derive.lecture.written_out import WrittenOut
 
 
 class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConvention, ConstantCases,
-                   Conditions, EulerInAngles, EulerPoisson, FastTop, FreeIntegrals, WrittenOut, TextNames,
+                   Conditions, EulerInAngles, EulerPoisson, FastTop, NutationRate, FreeIntegrals, WrittenOut, TextNames,
                    TextMatrices, TextMotion, Rereading, CaseValue, RestatedMember, Motion, Reading, VectorStatements, OnTheMotion,
                    AlgebraStatements, SmallMoments, Judging, OperatorStatements, CoordinateStatements,
                    ChainLinks, AxisProducts, Restated, ChainEndNames, PrimedAxes, TurnRates, StatedTheorems,

@@ -205,7 +205,8 @@ class Rereading:
                     p != piece and bindings <= self._learned_bindings(p) for p in pieces)
                     or self._said_and_held(bindings) is not None) else None
                 for c in first:
-                    if c.verdict in ("typo", "fails"):
+                    # a rule tied by the prose by design (a named nutation rate, a vector said to precess) keeps its verdict
+                    if c.verdict in ("typo", "fails") and c.kind not in ("nutation rate", "precession vector"):
                         self.unconfirmed = [*self.unconfirmed,
                                             (c, c.verdict, c.correction, c.why, learned, bindings, edit)]
                         c.why = (f"reading {learned} (as the prose names it) it does not hold: {c.why}; "

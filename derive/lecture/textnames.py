@@ -173,6 +173,8 @@ class TextNames(UnreadMembers):
         if self._new_names_set_alike(line, piece, members, rels):
             return True
         if self._new_name(m0) and not (_free(members[1]) & {m0}):
+            if len(members) == 2 and self._nutation_rate(line, piece, m0, members[1]):
+                return True       # a nutation rate the prose names: judged, and recorded only where it holds
             self.ctx.defs[m0] = members[1]
             if getattr(self, "_inline", False):
                 self.ctx.running[m0] = line
