@@ -27,6 +27,16 @@ FALSE_ALARMS = 0.05
 
 SHORT = {
     # (text, target): why the reader is short of it today
+    ("cline-rolling-wheel-tipping-stability", "checked"):
+        "a rolling wheel worked in a frame that tilts with the wheel but does not spin with it: the reader takes the "
+        "omega_i as the body's angular velocity, and leaves the force and torque equations through the moving frame, "
+        "the rolling constraints, the equations about the contact point and the example's linearisation unread",
+    ("cline-rolling-wheel-tipping-stability", "found"):
+        "its five slips (a dropped subscript in Omega_2, the potential M g R cos theta for M g R sin theta, two sign "
+        "slips in the contact point's constraints, a missing > sign) all sit in displays the reader does not check",
+    ("cline-rolling-wheel-tipping-stability", "false"):
+        "the angular velocities of the non-spinning moving frame (13.191) and of the wheel in that frame (13.192) are "
+        "compared with the body's full z-x-z angular velocity, spin included, and called wrong",
     ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "checked"):
         "a students' compendium in LaTeX: Newton's and Euler's laws stacked in block matrices with cross products, "
         "the torque as (^i d/dt) h through (^b d/dt), the skew matrix written (r^b_g)^\\times, the inertia matrix and "
