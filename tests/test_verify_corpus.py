@@ -28,15 +28,12 @@ FALSE_ALARMS = 0.05
 SHORT = {
     # (text, target): why the reader is short of it today
     ("cline-rolling-wheel-tipping-stability", "checked"):
-        "a rolling wheel worked in a frame that tilts with the wheel but does not spin with it: the reader takes the "
-        "omega_i as the body's angular velocity, and leaves the force and torque equations through the moving frame, "
-        "the rolling constraints, the equations about the contact point and the example's linearisation unread",
+        "a rolling wheel worked in a frame that tilts with the wheel but does not spin with it: the frame's and the "
+        "wheel's rates are read, but the force and torque equations through the moving frame, the rolling "
+        "constraints, the equations about the contact point and the example's linearisation are not",
     ("cline-rolling-wheel-tipping-stability", "found"):
         "its five slips (a dropped subscript in Omega_2, the potential M g R cos theta for M g R sin theta, two sign "
         "slips in the contact point's constraints, a missing > sign) all sit in displays the reader does not check",
-    ("cline-rolling-wheel-tipping-stability", "false"):
-        "the angular velocities of the non-spinning moving frame (13.191) and of the wheel in that frame (13.192) are "
-        "compared with the body's full z-x-z angular velocity, spin included, and called wrong",
     ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "checked"):
         "a students' compendium in LaTeX: Newton's and Euler's laws stacked in block matrices with cross products, "
         "the torque as (^i d/dt) h through (^b d/dt), the skew matrix written (r^b_g)^\\times, the inertia matrix and "
@@ -373,7 +370,7 @@ SHORT = {
         "braces, L_j j-hat with a unit vector j-hat and the components set equal to I omega_i on principal axes are not read",
 }
 
-FLOOR = {"checked": 1013, "slips_flagged": 127, "holds_flagged": 0}
+FLOOR = {"checked": 1016, "slips_flagged": 128, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

@@ -78,3 +78,15 @@ def test_the_torque_the_prose_names_and_a_law_in_the_principal_moments_hold_and_
     assert [c.verdict for c in good[5]] == ["holds"]
     assert [c.verdict for c in good[11]] == ["holds"] and "principal axes" in good[11][0].why
     assert [c.verdict for c in bad[11]] in (["fails"], ["typo"])
+
+
+def test_the_identity_of_size_three_beside_a_dyadic_is_the_unit_tensor():
+    assert _holds(r"I = \int_{V} \rho \left( (\mathbf{r} \cdot \mathbf{r}) I_{3} - \mathbf{r} \mathbf{r}^{T} \right) dV")
+    assert _holds(r"\mathbf I = \int \left( r^2 I_{3 \times 3} - \mathbf{r} \mathbf{r}^{T} \right) dm")
+    assert not _holds(r"I = \int_{V} \rho \left( (\mathbf{r} \cdot \mathbf{r}) I_{3} + \mathbf{r} \mathbf{r}^{T} \right) dV")
+
+
+def test_a_density_that_multiplies_only_part_of_the_integrand_is_read_as_written():
+    # the integral runs to dV and the density stops at the minus: the dyadic's term has no ρ
+    assert not _holds(r"I = \int_{V} \rho (\mathbf{r} \cdot \mathbf{r}) I_{3} - \mathbf{r} \mathbf{r}^{T} \, dV")
+    assert _holds(r"I = \int_{V} \rho (\mathbf{r} \cdot \mathbf{r}) I_{3} - \rho \mathbf{r} \mathbf{r}^{T} \, dV")

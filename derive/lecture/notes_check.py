@@ -216,7 +216,8 @@ class Checker(ReadingRules):
         start, self.unconfirmed = len(self.claims), []
         self._open_display(inline=item.kind == "inline", line=item.line)
         if self._frame_display(item.line, pieces) or self._coordinate_turn(item.line, pieces) or self._axis_product(item.line, pieces) or \
-                self._at_setting(item.line, pieces) or self._elliptic_solution(item.line, pieces):
+                self._at_setting(item.line, pieces) or self._elliptic_solution(item.line, pieces) or \
+                self._unspun_frame(item.line, pieces):
             self._close_display()
             return
         self._named_at_chain_end(latex, item.line)
@@ -436,7 +437,7 @@ class Checker(ReadingRules):
     def _definition(self, line, piece, parsed):
         start, m0 = len(self.claims), parsed.members[0]
         key = m0.value
-        forms = self.d.forms(key, m0.args) if isinstance(key, sp.Symbol) else []
+        forms = self._forms_of(key, m0.args) if isinstance(key, sp.Symbol) else []
         if any(r == "≡" for r in parsed.relations) and key in (lx.Omega, lx.Omega1, lx.Omega2):
             if self._own_sign(line, piece, parsed, forms):
                 return

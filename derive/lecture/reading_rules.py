@@ -69,6 +69,7 @@ from derive.lecture.textnames import TextNames
 from derive.lecture.turn_rates import TurnRates
 from derive.lecture.two_cases import TwoCases
 from derive.lecture.unlike_terms import UnlikeTerms
+from derive.lecture.unspun_frame import UnspunFrame
 from derive.lecture.untied_links import UntiedLinks
 from derive.lecture.untied_partials import UntiedPartials
 from derive.lecture.vector_claims import VectorStatements
@@ -86,5 +87,5 @@ class ReadingRules(IntegralClaims, Perturbations, ConventionProbe, SectionConven
                    NestedSpins, AxisAngleTurns, FreeIndices, NamedVectors, HatBasis, HeadShapes,
                    LostBackslash, LetterDigits, ScalarVectorSums, BodyLinks, IndexSums,
                    UntiedPartials, VectorSize, ProblemSections, UntiedLinks, IndexEuler, ConstantsCollapsed,
-                   OwnTurns, ExponentRelations):
+                   OwnTurns, ExponentRelations, UnspunFrame):
     """Every reading rule, in method-lookup order (see the module docstring)."""

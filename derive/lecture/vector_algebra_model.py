@@ -36,6 +36,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from derive.lecture import kane_notation
+from derive.lecture import mass_elements
 from derive.lecture import latex as lx
 from derive.lecture.latex_spaces import SPACE
 from derive.lecture.latex_spellings import BOLD, BOLD_MARK, VECTOR_MARK
@@ -52,6 +53,7 @@ R0 = sp.Matrix(sp.symbols("x y z", real=True))
 MU = sp.symbols(f"mu_1:{POINTS + 1}", positive=True)
 RK = [sp.Matrix(sp.symbols(f"x_{k} y_{k} z_{k}", real=True)) for k in range(1, POINTS + 1)]
 E = sp.eye(3)
+DENSITY = sp.Symbol("rho", positive=True)
 UNIT = {"i": 0, "j": 1, "k": 2, "x": 0, "y": 1, "z": 2}
 TORQUES = ("tau", "Gamma")
 FRAME_LETTERS = frozenset("abcdghkmnost")
@@ -70,7 +72,6 @@ TORQUE_LABELS = re.compile(r"g|grav(?:ity)?|weight|W|ext|e|net|tot(?:al)?")
 def labelled_torque(sub: str) -> bool:
     """Whether a torque letter's subscript labels it (``g``, ``\\text{ext}``) rather than indexing it."""
     return TORQUE_LABELS.fullmatch(re.sub(r"^(?:text|mathrm|rm)", "", sub)) is not None
-_INT = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 _LECTURE = re.compile(r"_\s*\{?\s*p\b|\\sum_\{?\s*p|\\ddot\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*I|\\tilde|"
                       r"\\widetilde|\\hat\s*\{?\s*(?:" + BOLD + r")?\s*\{?\s*e\b|_\{?\s*(?:body|inertial|space|rot)")
 _ROT_NAME = re.compile(r"\s*[A-Za-z]\s*_\s*\{?\s*rot[a-z]*\s*\}?\s*=")
@@ -90,53 +91,17 @@ _ACCENTED_BOLD = re.compile(r"\\(dot|ddot)\s*\{\s*\\(boldsymbol|mathbf|bm)\s*(\\
 _HAT_GROUP = re.compile(r"\{\s*\\hat\s*\{\s*" + BOLD_MARK + r"\s*(\\[A-Za-z]+|[A-Za-z])\s*\}\s*\}")
 
 
-_VOLUME = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)" + SPACE + r"V\b")
-_DENSITY = re.compile(r"\\rho(?![A-Za-z])")
-
-
-# a density at the point, rho(r), and the volume element d^3 r: their product is the mass element dm
-_DENSITY_AT = re.compile(r"\\rho\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\{?\s*(?:" + BOLD + r"|\\vec)\s*\{?\s*r\s*\}?\s*\}?"
-                         r"\s*(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # rho(r), rho\left(r\right)
-_VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?" + SPACE +
-                       r"(?:(?:" + BOLD + r"|\\vec)\s*\{\s*r\s*\}|\{\s*" + BOLD + r"\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
-
-
-def _mass_element(text: str) -> str:
-    """An integral over the volume with a uniform density, ``\\rho \\int … \\mathrm dV`` (ρ before the
-    integral or inside it), is the integral over the mass, ``\\int … dm``: one ρ with each dV; so is
-    one with the density at the point, ``\\int \\rho(\\mathbf{r}) … \\mathrm{d}^3 r``."""
-    at = _VOLUME_3.findall(text)
-    if at and len(_DENSITY_AT.findall(text)) == len(at):
-        text = _VOLUME_3.sub(" dm", _DENSITY_AT.sub(" ", text))
-    volumes = _VOLUME.findall(text)
-    if not volumes or len(_DENSITY.findall(text)) != len(volumes):
-        return text
-    return _VOLUME.sub(" dm", _DENSITY.sub(" ", text))
-
-
-_SUB = r"(\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))"
-_PIECE_MASS = re.compile(r"\\Delta" + SPACE + "m" + _SUB)
-_PIECE_DENSITY = re.compile(r"\\rho" + _SUB)
-_PIECE_VOLUME = re.compile(r"\\Delta" + SPACE + "V" + _SUB)
-
-
-def _pieces(text: str) -> str:
-    """A body cut into pieces (a sum over them): the mass of piece i, ``\\Delta m_i``, and its density
-    times its volume, ``\\rho_i … \\Delta V_i`` (one ρᵢ with each ΔVᵢ), are the particle's mass mᵢ."""
-    text = _PIECE_MASS.sub(r"m\1", text)
-    volumes = _PIECE_VOLUME.findall(text)
-    if volumes and sorted(re.sub(r"\s", "", v) for v in _PIECE_DENSITY.findall(text)) == \
-            sorted(re.sub(r"\s", "", v) for v in volumes):
-        text = _PIECE_VOLUME.sub(r"m\1", _PIECE_DENSITY.sub(" ", text))
-    return text
 
 
 _MOMENTUM_ELEMENT = re.compile(r"(?:\\mathrm\s*\{?\s*d\s*\}?|\bd)\s*" + BOLD_MARK + r"\s*\{?\s*p\s*\}?(?![A-Za-z_])")
 
 
 _UNIT_TENSOR = re.compile(BOLD_MARK + r"\s*\{?\s*e\s*\}?(?![A-Za-z_{])(?!\s*_)")
-# the unit tensor written as a one (\one, \mathbb{1}, \mathbf{1}), and the dyadic 𝐫𝐫 (a bold letter twice in a row)
-_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|(?:\\(?:mathbb|mathds|mathrm)|" + BOLD_MARK + r")\s*\{\s*1\s*\}(?!\s*[_^])")
+# the unit tensor written as a one (\one, \mathbb{1}, \mathbf{1}) or as the identity of size 3 (I_3, I_{3×3}, 𝟙₃),
+# and the dyadic 𝐫𝐫 (a bold letter twice in a row)
+_UNIT_ONE = re.compile(r"\\one(?![A-Za-z])|(?:\\(?:mathbb|mathds|mathrm)|" + BOLD_MARK + r")\s*\{\s*1\s*\}(?!\s*[_^])|"
+                       r"(?:(?:\\(?:mathbb|mathds|mathrm)|" + BOLD_MARK + r")\s*\{\s*[I1]\s*\}|(?<![A-Za-z\\])[I1])"
+                       r"\s*_\s*(?:3|\{\s*3\s*(?:(?:\\times|\\cdot|x)\s*3\s*)?\})")
 _DYADIC = re.compile(r"\{?\s*" + VECTOR_MARK + r"\s*\{?\s*(\\?[A-Za-z]+)\s*\}?\s*\}?\s*\{?\s*" + VECTOR_MARK + r"\s*\{?\s*\1(?![A-Za-z])\s*\}?(?!\s*_)")
 
 
@@ -174,8 +139,8 @@ label t, n braced (𝐚ᵢᵗ as 𝐚ᵢ^τ), the moment of a force about an axi
     text = _MOMENTUM_ELEMENT.sub(r" \\boldsymbol{v} \\, dm", text) if "\\int" in text else text
     if "\\otimes" in text or _DYADIC.search(text):    # beside a dyadic, a one (and beside ⊗ a bold e) is the unit tensor
         text = _UNIT_ONE.sub(r" \\mathrm{I} ", _UNIT_TENSOR.sub(r"\\mathrm{I}", text) if "\\otimes" in text else text)
-    text = _mass_element(_pieces(text) if "\\sum" in text else text)
-    text = _INT.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
+    text = mass_elements.mass_element(mass_elements.pieces(text) if "\\sum" in text else text)
+    text = mass_elements.INTEGRAL_SIGN.sub(r" \\mathbf{\\" + INTEGRAL + "} ", text)
     text = _ACCENTED_BOLD.sub(r"\\\1{\\\2{\3}}", text)
     text = _HAT_GROUP.sub(r"\\hat{\\boldsymbol{\1}}", text)
     text = _BOLD_GROUP.sub(r"\\boldsymbol{\1}", text)
@@ -418,6 +383,8 @@ class Algebra:
             return WD if bold else (WD[AXES[sub]] if sub in AXES else None)
         if a.hat:
             return None
+        if base == "rho" and not bold and f"\\rho_{{{sub}}}" == mass_elements.KEPT_DENSITY:
+            return DENSITY                   # a density that multiplies only part of an integrand
         if base == "r" and sub.startswith("/") and sub[1:] in POINT_LABELS:
             sub = ""                         # 𝐫_{/cm}: the position relative to the point, this model's 𝐫
         element = env.get("point") is not None and env.get("index") is None and sub == "i" and "i" not in env
