@@ -34,6 +34,12 @@ SHORT = {
     ("cline-rolling-wheel-tipping-stability", "found"):
         "its five slips (a dropped subscript in Omega_2, the potential M g R cos theta for M g R sin theta, two sign "
         "slips in the contact point's constraints, a missing > sign) all sit in displays the reader does not check",
+    ("cline-principal-axes-orthogonality-dynamic-balancing", "checked"):
+        "the orthogonality of principal axes in index sums over omega_{km}, the k-th component of the m-th axis, "
+        "with I_m and I_mm for its moment, and a tilted disk whose tensor, rates, torque and bearing force are read "
+        "as the text's own definitions: none is tied to a derivation",
+    ("cline-principal-axes-orthogonality-dynamic-balancing", "found"):
+        "its slip, a sum over i of a term that carries only k, sits in the index sums the reader does not read",
     ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "checked"):
         "a students' compendium in LaTeX: Newton's and Euler's laws stacked in block matrices with cross products, "
         "the torque as (^i d/dt) h through (^b d/dt), the skew matrix written (r^b_g)^\\times, the inertia matrix and "
