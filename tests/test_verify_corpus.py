@@ -37,9 +37,7 @@ SHORT = {
     ("cline-principal-axes-orthogonality-dynamic-balancing", "checked"):
         "the orthogonality of principal axes in index sums over omega_{km}, the k-th component of the m-th axis, "
         "with I_m and I_mm for its moment, and a tilted disk whose tensor, rates, torque and bearing force are read "
-        "as the text's own definitions: none is tied to a derivation",
-    ("cline-principal-axes-orthogonality-dynamic-balancing", "found"):
-        "its slip, a sum over i of a term that carries only k, sits in the index sums the reader does not read",
+        "as the text's own definitions: none is tied to a derivation (only the slip's sum over an absent letter is judged)",
     ("ntnu-modsim-compendium-newton-euler-inertia-parallel-axis", "checked"):
         "a students' compendium in LaTeX: Newton's and Euler's laws stacked in block matrices with cross products, "
         "the torque as (^i d/dt) h through (^b d/dt), the skew matrix written (r^b_g)^\\times, the inertia matrix and "
@@ -376,7 +374,7 @@ SHORT = {
         "braces, L_j j-hat with a unit vector j-hat and the components set equal to I omega_i on principal axes are not read",
 }
 
-FLOOR = {"checked": 1016, "slips_flagged": 128, "holds_flagged": 0}
+FLOOR = {"checked": 1017, "slips_flagged": 129, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

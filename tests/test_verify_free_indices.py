@@ -28,3 +28,15 @@ def test_a_matrix_entry_with_its_arguments_in_sized_brackets_is_compared_as_with
     flagged = _flagged("y_i = R_{ij}\\left(\\vartheta, \\hat{n}\\right) = x_j")
     assert [(c.kind, c.verdict) for c in flagged] == [("indices", "fails")]
     assert _flagged("y_i = R_{ij}\\left(\\vartheta, \\hat{n}\\right) x_j") == []
+
+
+def test_a_sum_over_a_letter_its_summand_does_not_carry_is_a_typo_for_the_letter_it_carries():
+    flagged = _flagged("\\sum_{i,k} I_{ki} \\omega_{km}\\omega_{in} = \\sum_i I_{nn}\\omega_{km}\\omega_{kn}")
+    assert [(c.kind, c.verdict) for c in flagged] == [("indices", "typo")]
+    assert "\\sum_k I_{nn}" in flagged[0].correction
+
+
+def test_sums_over_letters_their_summands_carry_are_not_flagged():
+    assert _flagged("\\sum_{i,k} I_{ik} \\omega_{km}\\omega_{in} = \\sum_i I_{mm}\\omega_{im}\\omega_{in}") == []
+    assert _flagged("\\sum_{i,k} I_{ki} \\omega_{km}\\omega_{in} = \\sum_k I_{nn}\\omega_{km}\\omega_{kn}") == []
+    assert _flagged("L_{im} = \\sum^3_k I_{ik} \\omega_{km} = I_{m}\\omega_{im}") == []
