@@ -372,6 +372,13 @@ SHORT = {
         "7 of 19 (6 on its first read; its slip, r alpha for r_alpha, now flagged): the sums over the particles' index "
         "alpha of the moments and products, the tensor's entries in cartesian names, the matrix named {I} between "
         "braces, L_j j-hat with a unit vector j-hat and the components set equal to I omega_i on principal axes are not read",
+    ("cooperrc-advanced-dynamics-pendulum-rotating-frame-numerical-integration", "checked"):
+        "1 of 6 on its first read: the pendulum's equation of motion relates Omega and a to no derivation the text gives, "
+        "the Euler update is recorded as a definition, the state in square brackets is not parsed, the small-angle curve "
+        "is read as a setting and the position in i-hat, j-hat, k-hat is not read; only the first Euler step's arithmetic is",
+    ("cooperrc-advanced-dynamics-pendulum-rotating-frame-numerical-integration", "found"):
+        "its two slips (one Euler step 2 - 2(0.1) without the y_0 = 2, and the 3D position with x_2 and y_2 in each "
+        "other's places) are missed: the step's arithmetic is checked without y(Delta t), and the position is not read",
 }
 
 FLOOR = {"checked": 1017, "slips_flagged": 129, "holds_flagged": 0}
