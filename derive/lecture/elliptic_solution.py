@@ -46,12 +46,10 @@ class EllipticSolution:
         """The display read as the module says; False (read as before) when it is not of that shape."""
         if not any(_WRITTEN.search(p) for p in pieces):
             return False
-        rows = []
-        for piece in pieces:
-            try:
-                parsed = lx.parse(piece, self.vocab)
-            except (lx.NotRead, lx.Words, ArithmeticError, TypeError, ValueError, KeyError):
-                return False
+        rows, read = [], lx.parse_all(pieces, self.vocab)
+        if read is None:
+            return False
+        for piece, parsed in zip(pieces, read):
             members = [m.value for m in parsed.members]
             if len(members) < 2 or set(parsed.relations) != {"="} or members[0] not in lx.W:
                 return False

@@ -98,6 +98,18 @@ def parse(latex: str, vocab: Vocabulary | None = None) -> Parsed:
         raise NotRead(f"cannot combine its parts ({type(err).__name__}: {str(err)[:80]})") from None
 
 
+def parse_all(pieces, vocab: Vocabulary) -> list[Parsed] | None:
+    """Each statement of a display read by :func:`parse`; None when any of them does not read (a
+    display-level rule then leaves the display to the statement-by-statement reading)."""
+    out = []
+    for piece in pieces:
+        try:
+            out.append(parse(piece, vocab))
+        except (NotRead, Words, ArithmeticError, TypeError, ValueError, KeyError):
+            return None
+    return out
+
+
 def scan_cells(latex: str) -> list[Tok]:
     """`scan`, with the '&' of matrix rows kept as entry separators (elsewhere '&' is alignment)."""
     toks = scan(latex)

@@ -32,17 +32,13 @@ class UnspunFrame:
         """The display read as the module says; False (read as before) when it is not of that shape."""
         if len(pieces) != 3 or any(w in self.ctx.defs for w in lx.W):
             return False
-        rows = {}
-        for piece in pieces:
-            try:
-                parsed = lx.parse(piece, self.vocab)
-            except (lx.NotRead, lx.Words, ArithmeticError, TypeError, ValueError, KeyError):
-                return False
+        rows, read = {}, lx.parse_all(pieces, self.vocab)
+        for piece, parsed in zip(pieces, read or ()):
             members = [m.value for m in parsed.members]
             if len(members) != 2 or parsed.relations != ["="] or members[0] not in lx.W or members[0] in rows:
                 return False
             rows[members[0]] = (piece, self._resolve(members[1]))
-        if len(rows) != 3:
+        if read is None or len(rows) != 3:
             return False
         rot = self.d.rot
         spin = {rot.gamma: 0, rot.gamma_d: 0}
