@@ -389,7 +389,7 @@ SHORT = {
         "other's places) are missed: the step's arithmetic is checked without y(Delta t), and the position is not read",
 }
 
-FLOOR = {"checked": 1018, "slips_flagged": 129, "holds_flagged": 0}
+FLOOR = {"checked": 1019, "slips_flagged": 129, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

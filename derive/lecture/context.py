@@ -6,7 +6,7 @@ small quantities, sign cases, definitions, equations) and how headings, assumpti
 Gives `Context`, the mixin `Reading` of `derive.lecture.notes_check.Checker` and
 `sign_under_orderings` (the sign of a difference for every value the text's orderings allow).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.zero_test`,
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.comparing`, :mod:`derive.lecture.notes`, :mod:`derive.lecture.zero_test`,
 :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
@@ -19,6 +19,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.comparing import free
+from derive.lecture.notes import small_before_much_less
 from derive.lecture.zero_test import expanded
 from derive.symbolic.lagrangian import I1, I2, I3
 from derive.symbolic.rotations import ANGLES
@@ -203,8 +204,7 @@ class Reading:
     def _small_before_ll(self, latex):
         """``0 \\approx \\omega_y, \\omega_z \\ll \\omega_x``: what stands before ≪ is small."""
         if "\\ll" in latex:
-            left = re.split(r"\\ll(?![a-z])", latex)[0]
-            self._small([re.split(r"\\approx|\\simeq", left)[-1]])
+            self._small([small_before_much_less(latex)])
 
     def _small(self, symbols):
         """The prose calls ω̃ᵢ (or Lᵢ = Iᵢω̃ᵢ) small: the equations that follow hold to first order in them."""

@@ -86,6 +86,12 @@ _RELATION = statements.RELATION
 _MUCH_LESS = re.compile(r"\\ll(?![a-z])")
 
 
+def small_before_much_less(latex: str) -> str:
+    """What a ≪ says is small: the part before it, after an ≈ that sets it near zero
+    (``0 \\approx \\omega_y, \\omega_z \\ll \\omega_x`` gives ``\\omega_y, \\omega_z``)."""
+    return re.split(r"\\approx|\\simeq", _MUCH_LESS.split(latex)[0])[-1]
+
+
 @dataclass(frozen=True)
 class Item:
     """One thing of the notes, in order.
@@ -375,8 +381,7 @@ def parse_notes(text: str, path: str = "<notes>", convention: str | None = None)
             events.append((m.start(), Item("signs", line, text=signs, symbols=(latex,), lead=near)))
             continue
         if _MUCH_LESS.search(latex):    # "$\omega_2, \omega_3 \ll \Omega$": what stands before ≪ is small
-            left = _MUCH_LESS.split(latex)[0]
-            events.append((m.start(), Item("small", line, symbols=(re.split(r"\\approx|\\simeq", left)[-1],), lead=near)))
+            events.append((m.start(), Item("small", line, symbols=(small_before_much_less(latex),), lead=near)))
             continue
         if not _RELATION.search(latex):
             continue
