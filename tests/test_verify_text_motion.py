@@ -125,3 +125,22 @@ def test_function_of_the_text_at_an_argument_holds_with_its_definition():
 def test_function_of_the_text_at_an_argument_is_never_flagged_by_that_reading():
     c = _at(r"\left(\alpha+\frac{a\beta}{b}\right)\left(1-\frac{\beta^2}{b^2}\right)")
     assert c.verdict not in ("holds", "typo", "fails")
+
+
+SLIDING = ("# A block sliding to rest\n\nFriction slows the block at a steady rate:\n\n$$\n\\frac{dv}{dt} = -\\mu g\n$$\n\n"
+           "so its speed falls in time:\n\n$$\nSPEED\n$$\n")
+
+
+def _speed(speed):
+    return [c for c in kept.check_text(SLIDING.replace("SPEED", speed)) if c.line == 11]
+
+
+def test_a_constant_rates_integral_without_the_time_is_a_typo_with_the_time_restored():
+    (claim,) = _speed("v = v(0) - \\mu g")
+    assert (claim.kind, claim.verdict) == ("solution", "typo")
+    assert claim.correction == "v = v(0) - \\mu g t"
+
+
+def test_a_constant_rates_integral_with_another_rate_fails_and_with_the_time_holds():
+    assert [c.verdict for c in _speed("v = v(0) - 2 \\mu g")] == ["fails"]
+    assert [c.verdict for c in _speed("v = v(0) - \\mu g t")] == ["holds"]

@@ -148,6 +148,8 @@ class TextMotion:
             n, eq, _ = self.ctx.own_motion[left]
             new = [s for s in _free(right) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                    and s not in _free(eq) and s not in self.ctx.own_motion and self.vocab.undotted(s) is None]
+            if len(new) == 1 and lx.t not in _free(right) and self._initial_value(new[0], left):
+                return self._constant_rate_solution(line, piece, left, right, new[0])
             if len(new) == 1 and lx.t not in _free(right):
                 self.ctx.changes[new[0]] = (left, right, line)
                 self._add(line, piece, "change of variable", "unchecked",
@@ -156,6 +158,31 @@ class TextMotion:
                 self.settings_only = False
                 return True
         return False
+
+    def _initial_value(self, symbol, var) -> bool:
+        """Whether ``symbol`` is ``var``'s value at t = 0 as the text writes it (v(0) for v)."""
+        written = self.tex(symbol).replace(" ", "")
+        return "^{(0)}" in written and written.replace("^{(0)}", "", 1) == self.tex(var).replace(" ", "")
+
+    def _constant_rate_solution(self, line, piece, var, right, start) -> bool:
+        """``v = v(0) + D`` with D free of t, for the text's own ``dv/dt = c``, c a nonzero constant: a
+        solution the rate's integral v(0) + c t decides; D = c (the time dropped) is a typo mended by
+        the time, any other D fails. A rate that depends on v or on t, or is zero, is read as before
+        (False)."""
+        n, eq, eq_line = self.ctx.own_motion[var]
+        if n != 1 or eq == 0 or _free(eq) & {var, lx.t} or any(self.vocab.undotted(s) is not None for s in _free(eq)):
+            return False
+        lost = sp.simplify(right - start - eq) == 0
+        why = (f"the text's rate of {self.tex(var)} (line {eq_line}) is the constant {self.tex(eq)}, so "
+               f"{self.tex(var)} = {self.tex(start)} + ({self.tex(eq)}) t; as written it does not change in time")
+        if lost:
+            term = self.tex(eq * lx.t)
+            self._add(line, piece, "solution", "typo", why + "; one edit (the time after the rate) makes it hold",
+                      f"{self.tex(var)} = {self.tex(var)}(0) " + (term if term.startswith("-") else "+ " + term))
+        else:
+            self._add(line, piece, "solution", "fails", why)
+        self.settings_only = False
+        return True
 
     def _linear_in_time(self, y):
         """c of the text's y defined as c·t (its τ = p t), else None."""
