@@ -224,6 +224,15 @@ SHORT = {
         "of mass, the integrals over rings, the tensor's diagonal entries, T = (1/2) omega^T . I . omega (its "
         "transpose set with \\mkern), the implications solved for b and v_x(tau) and the rolling speed's "
         "Delta vartheta over t beside Delta x over Delta t (flagged) are",
+    ("edinburgh-dynamics-foucault-pendulum-coriolis", "checked"):
+        "0 of 10: Foucault's pendulum in the Earth's frame: Newton's law with d v'/dt of a vector is not parsed, "
+        "the cross product's components on hat-imath and hat-jmath (\\imath) are not read, the swing's equations "
+        "and the trial solution's relate omega_E and omega_0, which the text never ties to a derivation, and the "
+        "quadratic's roots with +- are not a single formula",
+    ("edinburgh-dynamics-foucault-pendulum-coriolis", "found"):
+        "0 of 2: its slips (the i' component's lost minus sign, omega_E sin(phi) dy'/dt, and the quadratic's "
+        "lost alpha and omega_0's lost square) sit in a cross product on \\imath and an equation in omega_E, "
+        "neither of which the reader checks",
     ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "checked"):
         "2 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
