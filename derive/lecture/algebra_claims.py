@@ -151,8 +151,8 @@ class AlgebraStatements:
                                              "the text sets it to, not what the reader took it for")
             if verdict == "fails" and state.axis is not None and fixed_axis.plain_r(text):
                 verdict, why = self._from_the_axis(text, ref, k, verdict, why)
-            if verdict == "fails" and body_values.own_body(first[ref].value, first[k].value):
-                verdict, why = "unchecked", body_values.WHY
+            if verdict == "fails" and (body_values.one_body(first[ref].value, first[k].value) or body_values.one_body(first[k].value, first[ref].value)):
+                verdict, why = "unchecked", body_values.ONE_BODY
             if verdict == "fails" and self._plane_at(line) is not None:
                 verdict, why = self._in_the_plane(reading, ref, k, self._plane_at(line), verdict, why)
             if verdict == "holds" and ref == 0 and reading.free and _INDEX_ENTRY.match(reading.source[:first[0].end]):
@@ -380,8 +380,8 @@ class AlgebraStatements:
             if _set_perpendicular(reading, k):
                 return "unchecked", ("a scalar product set to zero: the two vectors taken perpendicular, a "
                                      "condition of the text's set-up, not a consequence the derivation decides")
-            if body_values.own_body(members[k].value, members[ref].value):
-                return "unchecked", body_values.WHY
+            if body_values.particular(members[k].value, members[ref].value) or body_values.particular(members[ref].value, members[k].value):
+                return "unchecked", body_values.PARTICULAR
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
