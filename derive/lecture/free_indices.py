@@ -90,8 +90,8 @@ def absent_sum(piece: str) -> tuple[str, str] | None:
         if read is None or len(read[0]) != 1 or not read[1]:
             continue
         (letter,), free, summand = read
-        if letter in free | set(re.findall(r"[a-z]", "".join(m.group(0) for m in _SUBSCRIPT.finditer(summand)))):
-            continue
+        if letter in {c for m in _SUBSCRIPT.finditer(summand) for c in (m.group(1) or m.group(2))}:
+            continue                # the summand carries the sum's letter: an ordinary sum
         for other in (members[k - 1] if k else None, members[k + 1] if k + 1 < len(members) else None):
             near = _free(other) if other is not None else None
             if near is None:

@@ -17,6 +17,9 @@ Gives: the mixin `TextMotion` of `derive.lecture.notes_check.Checker`, which
    of R the text defines only further on (``where k^2 = …``) is read with that definition, so
    the check waits for the end of the text. R equal to the m-th power's right side under another
    power on the left (``\\dot v = …`` for ``\\dot v^2 = …``) is a typo of the power.
+4. **integrates a constant rate**: ``v = v(0) + D`` with D free of the time, for the text's own
+   ``\\dot v = c`` (c a nonzero constant), is no change of variable but a solution: v(0) is the
+   starting value, so v = v(0) + c t; D = c is a typo mended by the time, any other D fails.
 
 The check compares the two sides at random values of the text's names (an identity in them
 holds at every point; a difference shows at almost every one), with mpmath at 50 digits
@@ -108,7 +111,7 @@ class TextMotion:
         return undotted[0], base, int(n)
 
     def _text_motion(self, line, piece, parsed) -> bool:
-        """Items 1 to 3 of the module docstring; True when the statement is done."""
+        """Items 1 to 4 of the module docstring; True when the statement is done."""
         if not hasattr(self, "change_checks"):
             self.change_checks, self.later_defs = [], {}
         members = [m.value for m in parsed.members]
@@ -148,8 +151,9 @@ class TextMotion:
             n, eq, _ = self.ctx.own_motion[left]
             new = [s for s in _free(right) if isinstance(s, lx.Generic) and s not in self.ctx.defs
                    and s not in _free(eq) and s not in self.ctx.own_motion and self.vocab.undotted(s) is None]
-            if len(new) == 1 and lx.t not in _free(right) and self._initial_value(new[0], left):
-                return self._constant_rate_solution(line, piece, left, right, new[0])
+            if len(new) == 1 and lx.t not in _free(right) and self._initial_value(new[0], left) and \
+                    self._constant_rate_solution(line, piece, left, right, new[0]):
+                return True
             if len(new) == 1 and lx.t not in _free(right):
                 self.ctx.changes[new[0]] = (left, right, line)
                 self._add(line, piece, "change of variable", "unchecked",
