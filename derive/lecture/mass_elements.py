@@ -14,7 +14,8 @@ unlike quantities: a slip of the brackets.
 
 Takes: a statement's LaTeX. Gives: :func:`mass_element`, :func:`pieces`, :data:`INTEGRAL_SIGN`, :data:`KEPT_DENSITY`.
 
-May import: :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.latex_spellings`.
+May import: :mod:`derive.lecture.latex_spaces`, :mod:`derive.lecture.latex_spellings`,
+:mod:`derive.lecture.statements`.
 """
 from __future__ import annotations
 
@@ -22,6 +23,7 @@ import re
 
 from derive.lecture.latex_spaces import SPACE
 from derive.lecture.latex_spellings import BOLD
+from derive.lecture.statements import top_level
 
 INTEGRAL_SIGN = re.compile(r"\\int(?:\s*\\limits)?(?:\s*_\s*(?:\{(?:[^{}]|\{[^{}]*\})*\}|\\[A-Za-z]+|[^\s\\]))?")
 """∫ with its lower limit (``\\int_V``, ``\\int\\limits_{V}``)."""
@@ -35,7 +37,7 @@ _DENSITY_AT = re.compile(r"\\rho\s*(?:\\(?:left|[Bb]igg?l?)\s*)?\(\s*\{?\s*(?:" 
                          r"\s*(?:\\(?:right|[Bb]igg?r?)\s*)?\)")     # rho(r), rho\left(r\right)
 _VOLUME_3 = re.compile(r"(?:\\mathrm\s*\{\s*d\s*\}|\bd)\s*\^\s*\{?\s*3\s*\}?" + SPACE +
                        r"(?:(?:" + BOLD + r"|\\vec)\s*\{\s*r\s*\}|\{\s*" + BOLD + r"\s*\{\s*r\s*\}\s*\}|r(?![A-Za-z]))")
-_OPEN, _CLOSE = re.compile(r"\\left\s*[(\[]|[({\[]"), re.compile(r"\\right\s*[)\]]|[)}\]]")
+_SIGN = re.compile(r"[+\-]")
 
 
 def mass_element(text: str) -> str:
@@ -75,20 +77,8 @@ def _paired(text: str) -> str:
 
 def _top_terms(s: str) -> list[str]:
     """The terms of ``s`` split at its top-level + and − (a leading sign starts the first term)."""
-    terms, depth, last, i = [], 0, 0, 0
-    while i < len(s):
-        opened, closed = _OPEN.match(s, i), _CLOSE.match(s, i)
-        if opened:
-            depth, i = depth + 1, opened.end()
-            continue
-        if closed:
-            depth, i = depth - 1, closed.end()
-            continue
-        if depth == 0 and s[i] in "+-" and s[last:i].strip():
-            terms.append(s[last:i])
-            last = i
-        i += 1
-    return terms + [s[last:]]
+    cuts = [m.start() for m in top_level(s, _SIGN) if s[:m.start()].strip()]
+    return [s[i:j] for i, j in zip([0, *cuts], [*cuts, len(s)])]
 
 
 _SUB = r"(\s*_\s*(?:\{[^{}]*\}|[A-Za-z0-9]))"
