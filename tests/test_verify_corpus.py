@@ -393,6 +393,14 @@ SHORT = {
     ("cooperrc-advanced-dynamics-pendulum-rotating-frame-numerical-integration", "found"):
         "its two slips (one Euler step 2 - 2(0.1) without the y_0 = 2, and the 3D position with x_2 and y_2 in each "
         "other's places) are missed: the step's arithmetic is checked without y(Delta t), and the position is not read",
+    ("cline-effective-gravity-foucault-pendulum", "checked"):
+        "3 of 25 on its first read: the ground frame's law of motion, A and the effective gravity are read as the text's "
+        "own definitions or as vectors tied by no fact it states, |omega x (omega x r)| is not parsed, g^{horizontal}_{eff} "
+        "is split into letters, the pendulum's tension and rows are recorded as new symbols, Omega_z and the complex "
+        "coordinate eta tie to no derivation and the roots with \\pm are not parsed",
+    ("cline-effective-gravity-foucault-pendulum", "found"):
+        "its four slips (the tension's T_z for T_x, the Coriolis sign in the y row (12.82) and in (12.86), the second "
+        "mode's e^{i omega_0 t} for e^{-i omega_0 t}) sit on displays recorded as new symbols or tied to no derivation",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
