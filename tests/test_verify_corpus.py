@@ -230,6 +230,15 @@ SHORT = {
         "0 of 2: its slips (the i' component's lost minus sign, omega_E sin(phi) dy'/dt, and the quadratic's "
         "lost alpha and omega_0's lost square) sit in a cross product on \\imath and an equation in omega_E, "
         "neither of which the reader checks",
+    ("edinburgh-dynamics-spinning-top-lagrangian-precession", "checked"):
+        "1 of 14 on its first read: a precessing top in vectors on the unit vectors hat a, hat a_perp and hat k, "
+        "which are not parsed; its moments I_parallel and I_perp, the rates omega and Omega and the height h are "
+        "named only in prose and L_a = I_parallel Omega_a only in a display's chain, none tied to a derivation; the "
+        "quadratic's roots with +- are not a single formula; only the small root's arithmetic "
+        "(L_a - L_a + 2MghI_perp cos/L_a)/(2 I_perp cos) = Mgh/L_a is read",
+    ("edinburgh-dynamics-spinning-top-lagrangian-precession", "found"):
+        "0 of 2: its slips (the kinetic energy and the Lagrangian without I_parallel and with Omega for Omega^2 in the "
+        "spin term) sit in displays in I_perp and Omega, which the text does not tie to a derivation",
     ("maithripala-rigid-body-kinetic-energy-rolling-disk-312", "checked"):
         "2 of 6: sums over the particles in matrix notation (m_i V_o^T hat(Omega) X_i, Omega^T I_i Omega, "
         "sum over p in B) and the rate of the kinetic energy through the equations of motion are not read; the "
