@@ -393,6 +393,13 @@ SHORT = {
     ("cooperrc-advanced-dynamics-pendulum-rotating-frame-numerical-integration", "found"):
         "its two slips (one Euler step 2 - 2(0.1) without the y_0 = 2, and the 3D position with x_2 and y_2 in each "
         "other's places) are missed: the step's arithmetic is checked without y(Delta t), and the position is not read",
+    ("moore-learn-multibody-dynamics-translational-kinematics", "checked"):
+        "0 of 12 on its first read: Kane's point kinematics with the frame as a left superscript on a point's velocity "
+        "and acceleration ({}^N\\bar{v}^P, {}^N\\bar{a}^S, {}^B\\bar{v}^T) and positions between points (\\bar{r}^{S/P}) "
+        "do not parse (unexpected '^' at column 1), so neither the one and two point theorems nor their chains are read",
+    ("moore-learn-multibody-dynamics-translational-kinematics", "found"):
+        "its slip, the five term beast's second row with {}^N for {}^B on R's velocity and its third row with {}^B\\bar{v}^T "
+        "for {}^B\\bar{v}^R, sits in a chain of point velocities and accelerations the reader does not parse",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
