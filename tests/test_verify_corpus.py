@@ -410,6 +410,13 @@ SHORT = {
     ("cline-effective-gravity-foucault-pendulum", "found"):
         "its four slips (the tension's T_z for T_x, the Coriolis sign in the y row (12.82) and in (12.86), the second "
         "mode's e^{i omega_0 t} for e^{-i omega_0 t}) sit on displays recorded as new symbols or tied to no derivation",
+    ("moore-learn-multibody-dynamics-translational-kinematics", "checked"):
+        "0 of 12 on its first read: Kane's point kinematics with the frame as a left superscript on a point's velocity "
+        "and acceleration ({}^N\\bar{v}^P, {}^N\\bar{a}^S, {}^B\\bar{v}^T) and positions between points (\\bar{r}^{S/P}) "
+        "do not parse (unexpected '^' at column 1), so neither the one and two point theorems nor their chains are read",
+    ("moore-learn-multibody-dynamics-translational-kinematics", "found"):
+        "its slip, the five term beast's second row with {}^N for {}^B on R's velocity and its third row with {}^B\\bar{v}^T "
+        "for {}^B\\bar{v}^R, sits in a chain of point velocities and accelerations the reader does not parse",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
