@@ -417,6 +417,14 @@ SHORT = {
     ("moore-learn-multibody-dynamics-translational-kinematics", "found"):
         "its slip, the five term beast's second row with {}^N for {}^B on R's velocity and its third row with {}^B\\bar{v}^T "
         "for {}^B\\bar{v}^R, sits in a chain of point velocities and accelerations the reader does not parse",
+    ("alrasheed-principles-mechanics-rolling-without-slipping-incline-yoyo", "checked"):
+        "0 of 31 on its first read: its three worked examples are MyST blocks fenced with four backticks "
+        "(````{prf:example}), blanked as code with the 25 {math} displays inside them; of the section's six, s = R theta "
+        "and K are recorded as new symbols and the rolling rates are tied to no derivation, R never being taken as "
+        "the wheel's radius from its prose",
+    ("alrasheed-principles-mechanics-rolling-without-slipping-incline-yoyo", "found"):
+        "its two slips (-M_{9} for -Mg in the yo-yo's force balance, (v^2/R)^2 for (v/R)^2 in the rolling sphere's "
+        "energy) sit inside the worked examples' blocks, which the reader blanks as code",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
