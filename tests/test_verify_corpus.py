@@ -425,6 +425,19 @@ SHORT = {
     ("alrasheed-principles-mechanics-rolling-without-slipping-incline-yoyo", "found"):
         "its two slips (-M_{9} for -Mg in the yo-yo's force balance, (v^2/R)^2 for (v/R)^2 in the rolling sphere's "
         "energy) sit inside the worked examples' blocks, which the reader blanks as code",
+    ("physics-se-cone-rolling-on-table-angular-velocity-contact-line", "checked"):
+        "2 of 5: the sum of the two turns (-omega_z z-hat + omega_3 x_3-hat) and the final omega on y-hat, z-hat are "
+        "read; v_a = 0 with a zero vector \\vec{0}, the rolling rates omega_3 (h tan alpha) = v and omega_z (h cos alpha) "
+        "= v in h and v (a cone on a table whose vertex, base centre and contact point the reader does not model) and "
+        "the substituted sum, whose \\hat{z} is an unknown symbol there, are not",
+    ("physics-se-cone-rolling-on-table-angular-velocity-contact-line", "found"):
+        "0 of 3: the slip, the rim's contact point taken to move at the base centre's speed (omega_3 h tan alpha = v for "
+        "v / cos^2 alpha), sits in a rolling condition the reader does not read; the substituted sum that carries it is "
+        "not read, and the final omega is read only as a restatement of the sum before it, so it holds there",
+    ("physics-se-cone-rolling-on-table-angular-velocity-contact-line", "false"):
+        "1 of 2: omega = -omega_z z-hat + omega_3 x_3-hat, the sum of the turn about the vertical and the spin, is "
+        "flagged in its first component: the text's omega_z (the rate about the vertical) and omega_3 (the spin) are "
+        "read as components of the reader's own angular velocity, and the tilted axis x_3-hat as a vector of its own",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
