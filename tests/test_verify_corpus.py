@@ -393,6 +393,16 @@ SHORT = {
     ("cooperrc-advanced-dynamics-pendulum-rotating-frame-numerical-integration", "found"):
         "its two slips (one Euler step 2 - 2(0.1) without the y_0 = 2, and the 3D position with x_2 and y_2 in each "
         "other's places) are missed: the step's arithmetic is checked without y(Delta t), and the position is not read",
+    ("basilisk-reaction-wheel-balanced-jitter-spacecraft-rotational-eom", "checked"):
+        "0 of 20 on its first read: a simulator's model description in body-frame matrix notation: the wheels' spin "
+        "axes \\hat{\\bm g}_{\\text{s}_i} (and u-hat_i) are unknown symbols, bracketed matrices ([I_{3 \\times 3}], "
+        "[A_contr] = [0_{3 \\times 3}]) are not parsed, bold zero is not read, the equations in [\\tilde{\\bm c}], "
+        "[\\tilde{\\bm\\omega}_{\\cal B/N}], c' and r_B'' are tied to no derivation of a hub with wheels, and the "
+        "multline's second row with x is not read",
+    ("basilisk-reaction-wheel-balanced-jitter-spacecraft-rotational-eom", "found"):
+        "0 of 2: the dynamic-imbalance torque along v-hat for the wheel's own v-hat_i (twice) and the jitter's "
+        "rotational contribution without the wheels' -sum (g u + w x J Omega g) sit in displays whose spin axes and "
+        "jitter directions are unknown symbols to the reader",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
