@@ -438,6 +438,16 @@ SHORT = {
         "1 of 2: omega = -omega_z z-hat + omega_3 x_3-hat, the sum of the turn about the vertical and the spin, is "
         "flagged in its first component: the text's omega_z (the rate about the vertical) and omega_3 (the spin) are "
         "read as components of the reader's own angular velocity, and the tilted axis x_3-hat as a vector of its own",
+    ("basilisk-reaction-wheel-balanced-jitter-spacecraft-rotational-eom", "checked"):
+        "0 of 20 on its first read: a simulator's model description in body-frame matrix notation: the wheels' spin "
+        "axes \\hat{\\bm g}_{\\text{s}_i} (and u-hat_i) are unknown symbols, bracketed matrices ([I_{3 \\times 3}], "
+        "[A_contr] = [0_{3 \\times 3}]) are not parsed, bold zero is not read, the equations in [\\tilde{\\bm c}], "
+        "[\\tilde{\\bm\\omega}_{\\cal B/N}], c' and r_B'' are tied to no derivation of a hub with wheels, and the "
+        "multline's second row with x is not read",
+    ("basilisk-reaction-wheel-balanced-jitter-spacecraft-rotational-eom", "found"):
+        "0 of 2: the dynamic-imbalance torque along v-hat for the wheel's own v-hat_i (twice) and the jitter's "
+        "rotational contribution without the wheels' -sum (g u + w x J Omega g) sit in displays whose spin axes and "
+        "jitter directions are unknown symbols to the reader",
 }
 
 FLOOR = {"checked": 1020, "slips_flagged": 130, "holds_flagged": 0}
