@@ -12,8 +12,9 @@ is written: ``\\equiv``, ``\\coloneqq`` (mathtools), ``\\triangleq``, ``\\eqdef`
 bracket. A reader that matches a shape in a formula before the normaliser has rewritten it (the
 rendered text, a display read whole) joins these fragments; after it, the rarer bold spellings are
 ``\\boldsymbol``, every definition sign is ``\\equiv``, every prime an apostrophe and every such
-bracket plain. Two more shapes are spelt here for the same readers: an equation's label that a book's
-toolchain writes inside the display, and what may follow a sign closing a name (𝐯⁺, 𝐯_rel⁻).
+bracket plain. Three more shapes are spelt here for the same readers: an equation's label that a book's
+toolchain writes inside the display, what may follow a sign closing a name (𝐯⁺, 𝐯_rel⁻), and a
+superscript that is a word, a label and never a power (``F^{ext}``, ``g^{\text{horizontal}}``).
 
 May import: nothing.
 """
@@ -69,3 +70,6 @@ FONT_SIZES = ("tiny", "scriptsize", "footnotesize", "small", "normalsize", "larg
 DIGITS = frozenset("0123456789")
 """The digits a number is written in: ASCII only, since a circled ① or a superscript ² is a digit to
 ``str.isdigit`` and no number."""
+
+LABEL_WORD = r"\s*(?:\\(?:mathrm|text|rm|mathit)\s*)?\{?\s*[A-Za-z]{3,}\s*\}?\s*"
+"""A superscript's group that is one word of three letters or more, upright or not: a label."""

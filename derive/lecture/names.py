@@ -5,7 +5,7 @@ front matter's ``symbols:`` map. Gives: `learn`, a `Names` map from the text's s
 *meanings* (entries of `MEANINGS`), which `derive.lecture.latex.Vocabulary` consults before its
 own spellings, so that the text's names win over the lecture's.
 May import: the standard library, :mod:`derive.lecture.latex`, :mod:`derive.lecture.source`,
-:mod:`derive.lecture.hat_maps`, :mod:`derive.lecture.principal_momentum`, :mod:`derive.lecture.said_columns`
+:mod:`derive.lecture.hat_maps`, :mod:`derive.lecture.meanings`, :mod:`derive.lecture.principal_momentum`, :mod:`derive.lecture.said_columns`
 and :mod:`derive.symbolic` (the quantities a meaning stands for).
 
 A meaning is bound the way a reader binds it: an inline symbol next to a phrase that says what
@@ -18,38 +18,7 @@ A binding holds in the section whose prose makes it (the reader sets `Names.here
 Landau's M is the mass in one section and the angular momentum's magnitude in the next. Where a
 section's prose says nothing of a name, its first binding in the text holds.
 
-The meanings (`MEANINGS`, a registry: adding one adds a row):
-
-==========================  =======  ===================================================
-meaning                     binds    the text's symbol stands for
-==========================  =======  ===================================================
-angular momentum            letter   𝐋 (bold), Iᵢω̃ᵢ (index 1–3; with a dot Iᵢω̃̇ᵢ), p of the
-                                     first angle (index z: about the vertical), |𝐋| (plain);
-                                     Π named plain also gives Πᵢ (geometric mechanics)
-vertical angular momentum   symbol   p of the first angle (L·ẑ)
-axial angular momentum      symbol   p of the third angle (L·ê₃ = I₃ω̃₃)
-angular velocity            letter   𝛚 (bold), ω̃ᵢ (index 1–3, or x y z for body axes), ω̃̇ᵢ
-body angular velocity       symbol   𝛚 with the frame labels it was named with (𝛚ᵅ_{βα}), ω̃ᵢ;
-                                     a bare letter (Ω) is the column 𝛚 and gives its components
-                                     Ωᵢ; the text's hat map, Rᵀ Ṙ = Ω̂ (`hat_maps`), binds the
-                                     symbol, and Ωᵢ in the hat map's own section
-torque                      letter   the torque's body components τᵢ (Euler's equations
-                                     with a torque: Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ = τᵢ)
-mass                        symbol   M
-centre-of-mass distance     symbol   l
-gravity                     symbol   g
-kinetic energy, energy,     symbol   T, E, L (the Lagrangian), V_eff
-lagrangian, eff. potential
-transverse moment           symbol   I₁ (= I₂)
-axial moment                symbol   I₃
-principal moments           list     I₁, I₂, I₃ in the order written
-identity column             letter   𝐈ᵢ (bold, index 1–3): the i-th column of the 3×3 identity
-roll, pitch and yaw rates   list     ω̃₁, ω̃₂, ω̃₃ in the order written (the aircraft's p, q, r)
-vertical                    letter   the upward vertical's body components Rᵀẑ (Poisson's γᵢ, 𝐧)
-centre-of-mass coordinates  coords   the centre of mass's body coordinates, in the order written
-                                     (the text's own symbols: `euler_poisson` puts them in the
-                                     moment of gravity)
-==========================  =======  ===================================================
+The meanings are a registry of their own (`derive.lecture.meanings`): adding one adds a row there.
 """
 from __future__ import annotations
 
@@ -60,68 +29,10 @@ import sympy as sp
 
 from derive.errors import SceneError
 from derive.lecture import gyro_names, hat_maps, principal_momentum, said_columns
+from derive.lecture.meanings import ALIASES, LETTERS, MEANINGS
 from derive.lecture import latex as lx
 from derive.lecture import source
 from derive.symbolic.lagrangian import I1, I2, I3, Mass, g, l
-
-# meaning → (how it binds, the phrases that say it). Order matters: the more specific first.
-MEANINGS = {**gyro_names.MEANINGS,      # the gyroscope's phrases (precession, spin, nutation rates), read first
-    "vertical angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:fixed |space |spatial |inertial )?(?:vertical|z|Z|\$z\$|\$Z\$)"),
-    "axial angular momentum": ("symbol", r"angular momentum (?:component )?(?:about|along|around|on) the (?:body'?s? )?(?:symmetry|figure|body|top'?s?|spin)\s*(?:axis|x_3)"),
-    "angular momentum": ("letter", r"angular momentum"),
-    "body angular velocity": ("symbol", r"body angular velocity|angular velocity (?:resolved|expressed) in the body(?: frame)?"),
-    "angular velocity": ("letter", r"angular velocit(?:y|ies)"),
-    "torque": ("letter", r"torques?\b|moment of (?:the )?(?:external )?forces|\bthe (?:total |external )?moment\b(?! of inertia)|\b(?:gyroscopic|applied|restoring|precessing|driving|resultant|net) (?:moment|couple)s?\b(?! of inertia)"),
-    "transverse moment": ("symbol", r"(?:transverse|perpendicular|equatorial|(?<!un)equal) moment|moment of inertia "
-                                    r"(?:about|around) (?:either|any|each) of the (?:two )?(?:other|transverse|perpendicular|equatorial)"
-                                    r"[\w ,]{0,24}?\bax[ie]s\b"),
-    "axial moment": ("symbol", r"(?:axial|symmetry[- ]axis|polar) moment|moment of inertia (?:about|around) (?:the|its) "
-                               r"(?:(?:symmetry|figure) axis|axis of (?:symmetry|the figure))"),
-    "principal moments": ("list", r"principal moments(?: of inertia)?"),
-    "vertical": ("letter", r"(?:unit vector|direction cosines?)\W{0,4}(?:[¤§]\W{0,4})?(?:of|along) the (?:upward |fixed |space "
-                           r"|inertial )?vertical|(?:upward |fixed )?vertical unit vector"),
-    "body rates": ("rates", r"roll,?\s+pitch,?\s+and\s+yaw\s+rates?|roll\s+rate,\s+pitch\s+rate,?\s+and\s+yaw\s+rate"),
-    "roll rate": ("symbol", r"\broll(?:ing)?[- ]rate"),
-    "pitch rate": ("symbol", r"\bpitch(?:ing)?[- ]rate"),
-    "yaw rate": ("symbol", r"\byaw(?:ing)?[- ]rate"),
-    "centre-of-mass distance": ("symbol", r"(?:distance|length|height)\b[^.;$]{0,60}(?:centre|center) of (?:mass|gravity)|(?:centre|center) of (?:mass|gravity)[^.;$]{0,40}(?:distance|from the (?:pivot|support|fixed point|origin|tip))"),
-    "kinetic energy": ("symbol", r"kinetic energy"),
-    "effective potential": ("symbol", r"effective potential"),
-    "lagrangian": ("symbol", r"[Ll]agrangian"),
-    "energy": ("symbol", r"\benergy"),
-    "gravitational acceleration": ("symbol", r"(?:acceleration of|acceleration due to) gravity|gravitational acceleration"),
-    "mass": ("symbol", r"(?<!of )(?<!of the )\bmass(?! ?(?:distribution|element|centre|center|density))"),
-    "identity column": ("letter", r"the\s+\S+\s+columns? of the\s+(?:\S+\s+)?identity(?: matrix)?"),
-    "second moment": ("symbol", r"(?!x)x"),          # I₂, bound only through "principal moments"
-    "centre-of-mass coordinates": ("coords", r"(?:centre|center) of (?:mass|gravity)\b[^.;]{0,60}?coordinates"),
-    "centre-of-mass coordinate 1": ("symbol", r"(?!x)x"),    # bound only through the coordinates' list
-    "centre-of-mass coordinate 2": ("symbol", r"(?!x)x"),
-    "centre-of-mass coordinate 3": ("symbol", r"(?!x)x"),
-    "potential energy": ("symbol", r"potential(?: energy)?"),
-}
-"""The meanings a text may give its symbols: how each binds and the phrase that gives it."""
-
-LETTERS = {
-    "angular momentum": ("L", "M", "J", "H", "h", "Pi"), "angular velocity": ("omega", "Omega", "w", "W"),
-    "torque": ("tau", "N", "T", "M", "G", "Gamma", "K"), "mass": ("m", "M", "mu"),
-    "centre-of-mass distance": ("l", "a", "h", "d", "s", "ell", "b", "R", "r"), "gravitational acceleration": ("g",),
-    "kinetic energy": ("T", "K"), "energy": ("E", "H", "W"), "lagrangian": ("L",),
-    "effective potential": ("V", "U"), "vertical angular momentum": ("L", "M", "J", "p"),
-    "axial angular momentum": ("L", "M", "J", "p"), "potential energy": ("V", "U"),
-    "identity column": ("I", "e", "E", "u", "1"), "body angular velocity": ("omega", "Omega", "w"),
-    "roll rate": ("p", "P"), "pitch rate": ("q", "Q"), "yaw rate": ("r", "R"), "vertical": ("gamma", "n", "nu"),
-    **gyro_names.LETTERS}
-"""The letters a reader takes for each meaning: a phrase next to any other letter is about
-something else (a point C, a matrix S), so it binds nothing."""
-
-ALIASES = {"L": "angular momentum", "M": "angular momentum", "angular momentum body": "angular momentum",
-           "omega": "angular velocity", "angular velocity body": "angular velocity",
-           "l": "centre-of-mass distance", "distance": "centre-of-mass distance", "I_1": "transverse moment",
-           "I1": "transverse moment", "I_3": "axial moment", "I3": "axial moment", "g": "gravitational acceleration",
-           "T": "kinetic energy", "E": "energy", "V_eff": "effective potential", "p_alpha": "vertical angular momentum",
-           "p_gamma": "axial angular momentum", "tau": "torque"}
-"""Other spellings a front matter may use for a meaning (``a: l``, ``I_\\perp: I_1``)."""
-
 
 @dataclass
 class Names:
@@ -201,6 +112,8 @@ class Names:
             if k is not None and plain:
                 return lx.TAU[k]
             return vocab._generic(a) if not sub and not a.bold and plain and vocab.open else None
+        if meaning in ("force", "turn rate"):   # a tension, a turn's rate: the text's own, not T nor a component of 𝛚
+            return vocab._generic(a) if plain and not a.bold and vocab.open else None
         if meaning == "body angular velocity":    # 𝛚ᵅ_{βα}: bound with its frame labels, the body components
             if a.bold and not a.dots and self.frames.get((a.base, a.sub), "") == a.sup:
                 return lx.OMEGA_VEC
@@ -231,6 +144,10 @@ class Names:
                 "second moment": I2, "axial moment": I3}.get(meaning)
 
 
+_WEIGHT = r"[mM]\s*g\s*(?:\\(?:cos|sin)\s*\\?[A-Za-z]+\s*)?(?=[-+=)\]}]|\\right|\s*$)"
+_WEIGHED = re.compile(r"(?<![\\\w{}^_])(?P<T>T)\s*[-+]\s*" + _WEIGHT + r"|(?<![\w\\])" + _WEIGHT[:-2].split("(?=")[0]
+                      + r"\s*[-+]\s*(?P<T2>T)(?![\w^_'{])")
+r"""``T - Mg``, ``Mg - T``, ``T - mg\cos\theta``: a letter T added to a weight (a length after the g, ``Mgl``, would make an energy)."""
 _INLINE = re.compile(r"(?<![\\$])\$([^$\n]+?)(?<!\\)\$")
 _DISPLAY = re.compile(r"\$\$.+?\$\$|\\\[.+?\\\]|\\begin\{(equation|align|eqnarray|gather|multline|numcases|subnumcases)\*?\}.+?\\end\{\1\*?\}", re.S)
 _CLAUSE = re.compile(r"[.;:!?]\s|\n\s*\n")
@@ -347,6 +264,9 @@ def learn(body: str, declared: dict | None = None, path: str = "<notes>", macros
             if not (atoms[0].bold or atoms[0].sub or atoms[0].sup):
                 # in the hat map's own section its components Ω₁, Ω₂, Ω₃ are the body ones, as the map defines them
                 names.scoped.setdefault(("letters", (atoms[0].base, "vector")), []).append((line, "body angular velocity"))
+    for m in _DISPLAY.finditer(body):      # T − Mg = −Ma: a T added to a weight is a force, not the kinetic energy
+        for w in _WEIGHED.finditer(m.group(0)):
+            bind(names, _atoms(w.group("T") or w.group("T2")), "force", f"line {body.count(chr(10), 0, m.start() + w.start()) + 1}")
     names.sections = [_line(starts, h.start()) for h in _HEADING.finditer(prose)]
     _principal_axes(names, body, prose)
     for latex, what in (declared or {}).items():

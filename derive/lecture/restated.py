@@ -14,7 +14,7 @@ restatement that differs says nothing (either of the two may be the one the text
 never flagged. Such a verdict's claim is marked `Claim.self_consistent`: it confirms no reading of
 the prose's names.
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, SymPy.
+May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.zero_test`, :func:`derive.lecture.two_cases.signed`, SymPy.
 """
 from __future__ import annotations
 
@@ -25,9 +25,10 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture import zero_test as zt
+from derive.lecture.two_cases import signed
 
 
-_ROOTS = re.compile(r"(?P<x>[^=]+?)=\s*\\pm(?![A-Za-z])(?P<v>[^=]+)")
+_ROOTS = re.compile(r"(?P<x>[^=]+?)=(?P<v>[^=]*\\(?:pm|mp)(?![A-Za-z])[^=]*)")
 
 
 class Restated:
@@ -46,46 +47,111 @@ class Restated:
         kept = self.__dict__.setdefault("restatable", [])
         left = sp.sympify(members[0])
         right = sp.sympify(self._resolve(members[1]))
-        for at, was_left, was_right in kept:
+        for at, was_left, was_right, _ in kept:
             if at < line and was_left == left and _alike(right, was_right) and sp.expand(right - was_right) == 0:
                 self._holds_as_restated(line, piece, f"restates the text's {self.tex(left)} of line {at} "
                                                     "with its own definitions put in (expand)")
                 return True
-        for at, was_left, was_right in reversed(kept):
+        for at, was_left, was_right, _ in reversed(kept):
             if (at < line and was_left != left and _alike(was_left, was_right, right)
                     and not isinstance(right, sp.MatrixBase)
                     and _solved_for(left, was_left - was_right, right)):
                 self._holds_as_restated(line, piece, f"the text's equation of line {at} solved for {self.tex(left)}")
                 return True
-        for at, was_left, was_right in reversed(kept):
+        for at, was_left, was_right, _ in reversed(kept):
             if at < line and was_left != left and _multiple((left, right), (was_left, was_right)):
                 self._holds_as_restated(line, piece, f"the text's equation of line {at} written out (expand), "
                                                     "up to a constant factor")
                 return True
-        kept.append((line, left, right))
+        for at, was_left, was_right, _ in list(reversed(kept))[:_STEPS]:
+            sides = (sp.sympify(self._resolve(left)), right, sp.sympify(self._resolve(was_left)), was_right)
+            factor = _divided(sides[0] - sides[1], sides[2] - sides[3]) if _scalars(*sides) else None
+            if at < line and factor is not None:
+                self._holds_as_restated(line, piece, f"the text's equation of line {at} with the factor "
+                                                    f"${self.tex(factor)}$ its terms share divided out")
+                kept.append((line, left, right, _written(members)))    # the text's next step starts here
+                return True
+        kept.append((line, left, right, _written(members)))
         return False
 
 
     def _roots_restated(self, line, piece, text) -> bool:
-        """``x = \\pm v`` (two roots on the right, which the scalar reader leaves as written): holds when
-        both ``x = v`` and ``x = -v`` solve the text's latest earlier equation in x; else False (not judged)."""
+        """``x = v_1 \\pm v_2`` (two roots on the right, which the scalar reader leaves as written,
+        ``\\mp`` taking the other sign): holds when both roots solve the text's latest earlier
+        equation in x, or are the two roots of an earlier such statement of x (the same pair written
+        another way); else False (not judged: a pair that differs says nothing of which is wrong).
+        Either way the pair is kept for the statements after it."""
         m = _ROOTS.fullmatch(text.strip())
-        if m is None or re.search(r"\\[mp]m(?![A-Za-z])", m["v"]):
+        if m is None:
             return False
         try:
-            both = [lx.parse(f"{m['x']} = {sign}\\left({m['v']}\\right)", self.vocab) for sign in "+-"]
+            both = [lx.parse(f"{m['x']} = \\left({signed(m['v'], upper)}\\right)", self.vocab) for upper in (True, False)]
         except lx.NotRead:
             return False
         x = both[0].members[0].value
-        roots = [self._resolve(p.members[1].value) for p in both]
-        for at, was_left, was_right in reversed(self.__dict__.get("restatable", [])):
-            equation = was_left - was_right if _scalars(was_left, was_right, x) else None
-            if at < line and isinstance(x, sp.Symbol) and equation is not None and x in equation.free_symbols:
-                if all(sp.simplify(equation.xreplace({x: r})) == 0 for r in roots):
+        written = [p.members[1].value for p in both]
+        roots = [self._resolve(r) for r in written]
+        if not isinstance(x, sp.Symbol) or not _scalars(*roots, *written) or any(r.has(x) for r in written):
+            return False
+        pairs = self.__dict__.setdefault("root_pairs", [])
+        pairs.append((line, x, roots))
+        for at, was_left, was_right, as_written in reversed(self.__dict__.get("restatable", [])):
+            # as written first (a name the text holds constant while it solves, L_a = I(ω + Ω cos ϑ)
+            # for Ω), then with the text's definitions put in
+            tries = [(as_written, written), (_written((was_left, was_right)), roots)]
+            tries = [(eq, rs) for eq, rs in tries
+                     if eq is not None and _scalars(eq, x) and x in eq.free_symbols and not any(r.has(x) for r in rs)]
+            if at < line and tries:
+                if any(all(_zero(eq.xreplace({x: r})) for r in rs) for eq, rs in tries):
                     self._holds_as_restated(line, piece, f"the two roots of the text's equation of line {at}")
+                    return True
+                break
+        for at, was_x, was_roots in reversed(pairs[:-1]):
+            if at < line and was_x == x:
+                if any(all(_zero(a - b) for a, b in zip(roots, order))
+                       for order in (was_roots, was_roots[::-1])):
+                    self._holds_as_restated(line, piece, f"the text's two roots of line {at} written another way")
                     return True
                 return False
         return False
+
+
+_STEPS = 3
+"""The text's latest equations a later one may be with a common factor divided out (a step of its own)."""
+
+
+def _divided(new, old):
+    """The factor f ≠ number when ``old = f · new`` (both an equation's two sides' difference) and f is
+    a product of the letters and of sines, cosines and exponentials of ``old`` that every one of its
+    terms shares (what a text divides out, ``\\sin\\vartheta``, ``\\cos(\\alpha t)``, ``m``), up to a number;
+    new a sum of two terms or more; else None."""
+    if not _scalars(new, old):
+        return None
+    new, old = _difference(new, 0), _difference(old, 0)
+    if not isinstance(new, sp.Add) or not zt.free_symbols(new) <= zt.free_symbols(old):
+        return None
+    shared = sp.factor_terms(old)         # the factor every term shares, taken out without factoring
+    parts = sp.Mul.make_args(shared)
+    factor = sp.Mul(*(a for a in parts if not isinstance(a, sp.Add) and not a.is_number))
+    rest = sp.expand(sp.Mul(*(a for a in parts if isinstance(a, sp.Add) or a.is_number)))
+    if factor == 1 or not all(b.is_Symbol or isinstance(b, (sp.sin, sp.cos, sp.exp))
+                              for b in (f.as_base_exp()[0] for f in sp.Mul.make_args(factor))):
+        return None
+    if zt.free_symbols(rest) != zt.free_symbols(new) or zt.ratio_varies(rest, new, "divided"):
+        return None
+    ratio = sp.cancel(rest / new)
+    return factor if ratio.is_number and ratio != 0 else None
+
+
+def _written(members):
+    """An equation's two sides' difference as written (no definition put in), or None for matrices."""
+    left, right = sp.sympify(members[0]), sp.sympify(members[1])
+    return left - right if _scalars(left, right) else None
+
+
+def _zero(d) -> bool:
+    """d ≡ 0: `simplify` only where no seeded point proves d ≠ 0 (a pair of roots that differ is common)."""
+    return not zt.nonzero_somewhere(d) and sp.simplify(d) == 0
 
 
 def _scalars(*values) -> bool:

@@ -4,7 +4,7 @@ Takes: the text of a notes file, or one formula of it. Gives: the text with what
 blanked out (`rendered`), the file's own macros (`macros`), and each formula normalised
 (`normalize`): the same mathematics, in the small dialect `derive.lecture.latex` scans.
 May import: the standard library, ``pylatexenc``, `derive.lecture.texmacros`, `derive.lecture.latex_spaces`,
-`derive.lecture.angle_columns`, `derive.lecture.bar_determinants`, `derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.left_indices`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
+`derive.lecture.angle_columns`, `derive.lecture.bar_determinants`, `derive.lecture.bracket_cross`, `derive.lecture.latex_spellings`, `derive.lecture.left_indices`, `derive.lecture.fences`, `derive.lecture.tex_structure` and `derive.lecture.statements` (its top-level comma split).
 
 Why pylatexenc: a formula from a real text carries comments (``%``), optional arguments
 (``\\sqrt[3]{x}``, ``\\\\[2pt]``), nested groups, environments and the file's own macros. Its
@@ -45,7 +45,7 @@ from pylatexenc.latexwalker import (LatexCharsNode, LatexCommentNode, LatexEnvir
                                     get_default_latex_context_db)
 from pylatexenc.macrospec import MacroSpec
 
-from derive.lecture import angle_columns, bar_determinants, bracket_cross, differentials, imaginary_unit, left_indices, tex_structure, texmacros, units
+from derive.lecture import angle_columns, bar_determinants, bracket_cross, differentials, fences, imaginary_unit, left_indices, tex_structure, texmacros, units
 from derive.lecture.latex_spaces import KERN, ONE_SPACE, SPACE, SPACE_SYMBOL, SPACING, TIE
 from derive.lecture.latex_spellings import DEFINITION_NAMES, EQUATION_LABEL, FONT_SIZES, PRIME_SUPERSCRIPT, REWRITTEN_BOLD_NAMES, SIZED_ONE_TOKEN
 from derive.lecture.statements import split_top
@@ -127,8 +127,6 @@ its name env and its body eb) or inline ``$…$`` (i), the one pattern every rea
 
 _MATH_SPAN = re.compile(r"\$\$.+?\$\$|(?<![\\$])\$[^$\n]+?(?<!\\)\$|\\\[.+?\\\]|\\begin\{(" + _DISPLAY_ENVS + r")\*?\}.+?\\end\{\1\*?\}",
                         re.S)
-_MATH_FENCE = re.compile(r"^[ \t]*(```|~~~)[ \t]*(?:math|\{math\})[ \t]*\n(.*?)^[ \t]*\1[ \t]*$", re.S | re.M)
-_FENCE = re.compile(r"^(```|~~~).*?^\1[^\n]*$", re.S | re.M)
 _CODE = re.compile(r"(?<!`)`[^`\n]+`(?!`)")
 _TEX_COMMENT = re.compile(r"((?:^|[^\\])(?:\\\\)*)(%[^\n]*)", re.M)  # an even run of \ before %
 _TEX_SOURCE = re.compile(r"\\documentclass|\\begin\{document\}")
@@ -140,15 +138,10 @@ def latex_source(text: str, path: str = "") -> bool:
     return str(path).endswith(".tex") or _TEX_SOURCE.search(text) is not None
 
 
-def _math_display(m: re.Match) -> str:
-    """A fenced ``math`` block or MyST ``{math}`` (its ``:label:`` options blanked): ``$$`` on its fences."""
-    return "$$\n" + re.sub(r"\A(?:[ \t]*:[\w-]+:[^\n]*\n)+", lambda o: "\n" * o[0].count("\n"), m.group(2)) + "$$"
-
-
 def rendered(text: str, latex_source: bool = False) -> str:
     """The text with what a reader never sees blanked out: HTML comments, fenced code blocks and
-    inline code spans (the line structure is kept). A fenced block in the language ``math`` (GitHub,
-    GitLab and Documenter render it as a display) or MyST's ``{math}`` is a display, as ``$$ … $$``.
+    inline code spans (the line structure is kept); a fenced ``math`` block is a display and a MyST
+    directive's body is text (`derive.lecture.fences`).
     In a LaTeX source (``latex_source``), a ``%`` not escaped as ``\\%`` comments out the rest
     of its line, as TeX reads it, and its inline ``\\( … \\)`` and sectioning commands are read
     as Markdown's (`derive.lecture.tex_structure`)."""
@@ -156,8 +149,7 @@ def rendered(text: str, latex_source: bool = False) -> str:
         text = _TEX_COMMENT.sub(lambda m: m.group(1) + " " * len(m.group(2)), text)
         text = tex_structure.as_notes(text)
     text = _COMMENT.sub(_blank, text)
-    text = _MATH_FENCE.sub(_math_display, text)
-    text = _FENCE.sub(_blank, text)
+    text = fences.rendered_fences(text)
     text = _MATH_SPAN.sub(lambda m: characters(m.group(0)), _CODE.sub(_blank, text))   # θ is \theta in all its math
     return left_indices.dropped(_SMALL_SPACED_EQUALS.sub(" ", text))   # a \;=\; b; {}_I 𝐞 in one frame only
 

@@ -26,8 +26,7 @@ Takes: values read by `derive.lecture.latex` in which some of the text's names
   column of the angles and their rates, holds as that column (`_angular_velocity_column`).
 
 May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.vocabulary`, :mod:`derive.lecture.written_matrices`,
-:mod:`derive.lecture.zero_test`,
-:mod:`derive.symbolic`, SymPy.
+:mod:`derive.lecture.zero_test`, :mod:`derive.lecture.principal_form`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -38,6 +37,7 @@ import sympy as sp
 
 from derive.lecture import latex as lx
 from derive.lecture.matrix_exp import MatrixExp
+from derive.lecture.principal_form import diagonalised
 from derive.lecture.vocabulary import Atom
 from derive.lecture.written_matrices import Dot, NormSquared, taken
 from derive.lecture.zero_test import entry_zero
@@ -555,6 +555,8 @@ class TextMatrices:
         if self._rotation(line, piece, sp.Matrix(value), self._turn_label(getattr(self, "_text", piece))):
             self.ctx.defs[sym] = sp.ImmutableMatrix(value)
             return True
+        if (why := diagonalised(old, value)) is not None:
+            return self._add(line, piece, "identity", "holds", why) or True
         if value.free_symbols == old.free_symbols:
             return False
         self.ctx.defs[sym] = sp.ImmutableMatrix(value)

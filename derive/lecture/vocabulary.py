@@ -19,7 +19,7 @@ from derive.lecture.axis_sums import summed
 from derive.lecture.definite_integrals import written_with_bounds
 from derive.lecture.dotted_products import rate_of_product
 from derive.lecture.latex_spaces import QUAD_NAMES, SPACE_NAMES
-from derive.lecture.latex_spellings import BOLD_NAMES, DIGITS, SIGN_ENDS
+from derive.lecture.latex_spellings import BOLD_NAMES, DIGITS, LABEL_WORD, SIGN_ENDS
 from derive.lecture.matrix_exp import MatrixExp, may_be_matrix
 from derive.lecture.variations import variation_at
 from derive.symbolic.lagrangian import ACCELS, I1, I2, I3, Mass, g, l, p_alpha, p_gamma
@@ -300,8 +300,8 @@ def _atom_at(s: str, i: int) -> tuple[Atom, int]:
                 atom, j = atom.with_(sup=plain), after     # a frame's label on a vector or a matrix (𝐑^α_β)
             elif plain in ("+", "-") and re.match(SIGN_ENDS, s[after:]) and "^" not in atom.sub:
                 atom, j = atom.with_(sub=atom.sub + "^" + plain), after     # kept with the subscript: every reader keys a name by it
-            elif plain == "e" and atom.base != "e" and not atom.bold or re.fullmatch(r"\([A-Za-z]\)", plain):
-                atom, j = atom.with_(sup=plain), after     # T^e (the external label), r^{(i)} (particle i's): never a power
+            elif plain == "e" and atom.base != "e" and not atom.bold or re.fullmatch(r"\([A-Za-z]\)", plain) or re.fullmatch(LABEL_WORD, sup) and atom.base != "e":
+                atom, j = atom.with_(sup=plain), after     # T^e, r^{(i)}, F^{ext}, g^{horizontal} (labels, a word): never a power
             else:
                 break
         else:
