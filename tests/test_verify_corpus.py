@@ -438,6 +438,13 @@ SHORT = {
         "0 of 2: the dynamic-imbalance torque along v-hat for the wheel's own v-hat_i (twice) and the jitter's "
         "rotational contribution without the wheels' -sum (g u + w x J Omega g) sit in displays whose spin axes and "
         "jitter directions are unknown symbols to the reader",
+    ("quadrivium-modern-classical-mechanics-atwood-rotating-pulley-angular-momentum", "checked"):
+        "7 of 22 on its first read: an Atwood machine with a massive pulley whose heights y_1, y_2, string length "
+        "and no-slip turn R dphi are set in prose and the previous example: the pulley's (1/2) I omega^2 and "
+        "I = M_p R^2/2 and V(phi) (read as a symbol V^{(phi)}) are recorded as definitions, the constraint "
+        "y_1 = R phi + R phi_0, the kinetic energy and Lagrangian in phi, the generalized momentum chain and the "
+        "Euler-Lagrange equation relate R, a radius tied to no derivation, the masses' angular momenta r x m v "
+        "\"computed using the actual vertical position\" are not computed, and the final phi'' is taken for a case phi'' = 0",
 }
 
 FLOOR = {"checked": 1034, "slips_flagged": 130, "holds_flagged": 0}
