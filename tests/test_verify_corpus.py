@@ -438,6 +438,15 @@ SHORT = {
         "0 of 2: the dynamic-imbalance torque along v-hat for the wheel's own v-hat_i (twice) and the jitter's "
         "rotational contribution without the wheels' -sum (g u + w x J Omega g) sit in displays whose spin axes and "
         "jitter directions are unknown symbols to the reader",
+    ("sadavoy-dynamics-rotating-frame-velocity-acceleration-transformation", "checked"):
+        "a textbook's rotating-frame derivation in unit-vector components: x' i-hat' + y' j-hat' + z' k-hat' and the "
+        "hats' time derivatives d i-hat'/dt are not parsed, the rates written (d r/dt)_I and (d/dt)_R in \\Bigg "
+        "brackets and the operator [(d/dt)_R + omega x] are not read, and omega x r at constant omega is taken as an "
+        "assumption: only the three rates d i-hat'/dt = omega x i-hat' are checked",
+    ("sadavoy-dynamics-rotating-frame-velocity-acceleration-transformation", "found"):
+        "its four slips (the change of the unit vector i-hat' written (i-hat' sin phi) Delta theta, along i-hat' itself "
+        "where only its size sin phi Delta theta is meant, and the three rates that follow) sit in displays naming "
+        "i-hat' or its time derivative, which the reader does not parse",
 }
 
 FLOOR = {"checked": 1034, "slips_flagged": 130, "holds_flagged": 0}
