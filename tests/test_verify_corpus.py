@@ -456,7 +456,7 @@ SHORT = {
         "i-hat' or its time derivative, which the reader does not parse",
 }
 
-FLOOR = {"checked": 1034, "slips_flagged": 130, "holds_flagged": 0}
+FLOOR = {"checked": 1044, "slips_flagged": 130, "holds_flagged": 0}
 """The corpus's totals when the floor was last raised (``python tests/notes/real/measure.py``)."""
 
 

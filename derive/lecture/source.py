@@ -564,6 +564,7 @@ def _normalized(latex: str, user: tuple) -> str:
         # a macro that expands into itself stays as written: the reader names it as unreadable
         latex = texmacros.expand(latex, {k: v for k, v in user.items() if k != loop.name})
     latex = imaginary_unit.read(re.sub(KERN, " ", latex))   # once the macros are expanded: a unit vector î shows
+    latex = re.sub(r"\\([ij])math(?![A-Za-z])", r" \1", latex)   # the dotless ı, ȷ of \hat\imath: the letters i, j
     latex = _MATHOP.sub(_operator_body, latex)       # \\mathop{}\\!\\mathrm{d}: the upright differential d
     try:
         nodes, _, _ = LatexWalker(latex, latex_context=_ctx(), tolerant_parsing=True).get_latex_nodes()

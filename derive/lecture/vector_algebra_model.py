@@ -357,7 +357,7 @@ class Algebra:
         mass, r = self._point(env)
         if a.hat and base in UNIT and (not sub or base == "x"):
             kinds = p.__dict__.setdefault("unit_kinds", set())
-            kinds.add(bool(sub))             # x̂₃ beside ẑ: a body's x̂ₖ and the laboratory's ŷ, ẑ, two frames
+            kinds.add((bool(sub), a.primes))  # x̂₃ beside ẑ, î′ beside î: two frames' unit vectors, not one basis
             return E[:, p.axis(sub, env, tok) if sub else UNIT[base]] if len(kinds) == 1 else None
         if a.hat and not a.bold and base in FRAME_LETTERS and sub in ("1", "2", "3") and not a.sup:
             seen = p.__dict__.setdefault("frame_letters", {base})
