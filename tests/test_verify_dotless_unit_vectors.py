@@ -1,24 +1,19 @@
-"""The notes reader on unit vectors set with the dotless letters: ``\\hat{\\imath}`` and
-``\\hat{\\jmath}`` are î and ĵ, read as ``\\hat{i}`` and ``\\hat{j}`` are (TeX drops the dot under a hat)."""
-import kept_readings as kept
-from derive.lecture import texmacros
-
-verdicts, line_of = kept.verdicts_by_line, kept.line_of
-PROSE = ("# Notes\n\nThe moving frame turns with the angular velocity $\\boldsymbol{\\Omega}$, and its unit "
-         "vectors turn with it:\n\n")
+"""The dotless ı and ȷ under a hat are the unit vectors' letters i and j (`derive.lecture.source`), and
+unit vectors of two frames, î′ beside î, are not one basis (`derive.lecture.vector_algebra_model`)."""
+from derive.lecture import notes_check as nc
+from derive.lecture.source import normalize
+from derive.lecture.vocabulary import scan
 
 
-def test_the_dotless_letters_are_the_letters_i_and_j():
-    assert texmacros.synonyms("\\hat{\\imath} + \\hat\\jmath") == "\\hat{i} + \\hat j"
-    assert texmacros.synonyms("\\imathx") == "\\imathx"       # another command's name is left alone
+def test_a_hat_over_a_dotless_i_is_the_unit_vector_i():
+    atoms = [t.value for t in scan(normalize(r"\hat\imath'")) if t.kind == "atom"]
+    assert len(atoms) == 1 and (atoms[0].base, atoms[0].hat, atoms[0].primes) == ("i", True, 1)
+    atoms = [t.value for t in scan(normalize(r"\mathbf{\hat{\jmath}}")) if t.kind == "atom"]
+    assert len(atoms) == 1 and atoms[0].base == "j"
 
 
-def test_a_rate_of_a_dotless_unit_vector_is_read_as_that_of_the_dotted_letter():
-    for letter in ("\\imath", "\\jmath"):
-        text = PROSE + f"$$\\frac{{d\\boldsymbol{{\\hat{{{letter}}}}}}}{{dt}} = \\boldsymbol{{\\Omega}}\\times\\boldsymbol{{\\hat{{{letter}}}}}$$\n"
-        assert verdicts(text)[line_of(text, "$$")] == {"holds"}
-
-
-def test_a_wrong_rate_of_a_dotless_unit_vector_is_not_taken_to_hold():
-    text = PROSE + "$$\\frac{d\\boldsymbol{\\hat{\\imath}}}{dt} = \\boldsymbol{\\hat{\\imath}}\\times\\boldsymbol{\\Omega}$$\n"
-    assert "holds" not in verdicts(text)[line_of(text, "$$")]
+def test_one_frames_unit_vectors_are_read_as_a_basis_and_two_frames_are_not():
+    one = "# Unit vectors\n\n$$\\hat{i}' \\times \\hat{j}' = \\hat{k}'$$\n"
+    assert [c.verdict for c in nc.check_text(one) if c.line == 3] == ["holds"]
+    two = "# Unit vectors\n\n$$\\hat{i}' \\times \\hat{j} = \\hat{k}$$\n"
+    assert not {"holds", "typo", "fails"} & {c.verdict for c in nc.check_text(two) if c.line == 3}
