@@ -32,7 +32,7 @@ RIGID = sp.ImmutableMatrix([[_J[0], _J[1], _J[2]], [_J[1], _J[3], _J[4]], [_J[2]
 """The text's inertia tensor I (I_b) in a rotating frame: any symmetric matrix, constant in body axes."""
 FRAMES = {"body": "body", "b": "body", "B": "body", "rot": "body", "rotating": "body", "inertial": "inertial",
           "space": "inertial", "fixed": "inertial", "lab": "inertial", "s": "inertial", "i": "inertial",
-          "I": "inertial", "N": "inertial", "rel": "body", "relative": "body"}
+          "I": "inertial", "N": "inertial", "rel": "body", "relative": "body", "R": "body"}
 GENERIC = "_vec"
 """The mark of a generic vector's body components (``V_vec1``): a vector of the text's in a frame
 derivative, with time-dependent components of its own."""
