@@ -1,10 +1,8 @@
-"""Equations of motion in a text, and their solutions: the part of the notes checker that checks
-a formula with ω̃̇ᵢ, ω̃̈ᵢ or an angle's acceleration, a solution ω̃ᵢ(t) = f(t), a steady
-precession, a stability inequality and a row repeated in its block.
+"""Equations of motion in a text, and their solutions: the part of the notes checker that checks a formula with
+ω̃̇ᵢ, ω̃̈ᵢ or an angle's acceleration, a solution ω̃ᵢ(t) = f(t), a steady precession, a stability inequality, a repeated row.
 
-Takes: statements parsed by `derive.lecture.latex` and the checker's context (the section's
-settings, the text's definitions, the equations it has written). Gives: the mixin `Motion` of
-`derive.lecture.notes_check.Checker`:
+Takes: statements parsed by `derive.lecture.latex` and the checker's context (the section's settings, the text's
+definitions, the equations it has written). Gives: the mixin `Motion` of `derive.lecture.notes_check.Checker`:
 
 * an equation with ω̃̇ᵢ is a non-zero constant multiple of one of Euler's equations
   Iᵢω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ under the section's settings (ω̃₁ = Ω, a constant spin, linearises them), or
@@ -83,9 +81,12 @@ class Motion:
             return
         a = accels[0]
         claim = sp.cancel(sp.together(-raw.xreplace({a: 0}) / sp.diff(raw, a)))
-        forms = [self.d.reduction.beta_acceleration, self.d.top.accelerations[1]]
+        # one equation once `_unify` writes the momenta in the rates: a claim in the rates is held against
+        # Lagrange's form, one in the momenta against Routh's (a sequence probed derives only that one)
+        rated, held = free(claim) & {rot.alpha_d, rot.gamma_d, *lx.W}, free(claim) & {lx.p_alpha_sym(), lx.p_gamma_sym()}
         why = ""
-        for f in forms:
+        for k in ["top"] if rated else ["routh"] + ([] if held else ["top"]):
+            f = self.d.top.accelerations[1] if k == "top" else self.d.reduction.beta_acceleration
             ok, why = self._compare(claim, f, piece + "/angle")
             if ok:
                 self._add(line, piece, "equation of motion", "holds", f"Lagrange's equation for ${self.tex(rot.beta)}$: {why}")
