@@ -63,10 +63,11 @@ class Restated:
                 self._holds_as_restated(line, piece, f"the text's equation of line {at} written out (expand), "
                                                     "up to a constant factor")
                 return True
+        resolved = sp.sympify(self._resolve(left))
         for at, was_left, was_right, _ in list(reversed(kept))[:_STEPS]:
-            sides = (sp.sympify(self._resolve(left)), right, sp.sympify(self._resolve(was_left)), was_right)
-            factor = _divided(sides[0] - sides[1], sides[2] - sides[3]) if _scalars(*sides) else None
-            if at < line and factor is not None:
+            sides = (resolved, right, sp.sympify(self._resolve(was_left)), was_right) if at < line else ()
+            factor = _divided(sides[0] - sides[1], sides[2] - sides[3]) if sides and _scalars(*sides) else None
+            if factor is not None:
                 self._holds_as_restated(line, piece, f"the text's equation of line {at} with the factor "
                                                     f"${self.tex(factor)}$ its terms share divided out")
                 kept.append((line, left, right, _written(members)))    # the text's next step starts here
@@ -150,7 +151,7 @@ def _written(members):
 
 
 def _zero(d) -> bool:
-    """d ≡ 0: `simplify` only where no seeded point proves d ≠ 0 (a pair of roots that differ is common)."""
+    """d ≡ 0: `simplify` only where no seeded point proves d ≠ 0 (no identity turns such a d into 0)."""
     return not zt.nonzero_somewhere(d) and sp.simplify(d) == 0
 
 
@@ -201,5 +202,4 @@ def _solved_for(x, equation, value) -> bool:
         return False
     a, b = sp.Poly(num, x).all_coeffs()
     d = -b / a - value if a != 0 else None
-    # a point where the difference is proved non-zero spares `simplify`, which no identity turns to 0
-    return d is not None and not zt.nonzero_somewhere(d) and sp.simplify(d) == 0
+    return d is not None and _zero(d)
