@@ -455,6 +455,16 @@ SHORT = {
         "its four slips (the change of the unit vector i-hat' written (i-hat' sin phi) Delta theta, along i-hat' itself "
         "where only its size sin phi Delta theta is meant, and the three rates that follow) sit in displays naming "
         "i-hat' or its time derivative, which the reader does not parse",
+    ("math-se-cuboid-inertia-tensor-half-edges-triple-integral", "checked"):
+        "1 of 4 on its first read: a question's inertia tensor of a cuboid whose half edges a, b, c and mass m are set in "
+        "prose: I_c = [a diagonal bmatrix in m, a, b, c] is recorded as the definition of a new matrix (the second I_c, "
+        "with 1/3 for 1/12, as a definition in names the text has not defined, never compared with the first), so the "
+        "reader has no model of a uniform cuboid's tensor to hold either against; d^2 = y^2 + z^2 is recorded as "
+        "defining d, the distance from the x axis said in prose; only r^2 - x^2 = y^2 + z^2 is checked",
+    ("math-se-cuboid-inertia-tensor-half-edges-triple-integral", "found"):
+        "0 of 1: the slip, the encyclopaedia's 1/12 m(b^2 + c^2) (a formula in full edge lengths) written for half "
+        "edges a, b, c, where each entry is 1/3 m(b^2 + c^2), sits in the first I_c = [bmatrix], read as the definition "
+        "of a new matrix; the reader models no cuboid from the prose's half edges and mass",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
