@@ -465,6 +465,17 @@ SHORT = {
         "0 of 1: the slip, the encyclopaedia's 1/12 m(b^2 + c^2) (a formula in full edge lengths) written for half "
         "edges a, b, c, where each entry is 1/3 m(b^2 + c^2), sits in the first I_c = [bmatrix], read as the definition "
         "of a new matrix; the reader models no cuboid from the prose's half edges and mass",
+    ("sadavoy-dynamics-centrifugal-coriolis-earth-frame-foucault-pendulum", "checked"):
+        "3 of 40 on its first read: the primed unit vectors \\hat{\\imath}^{\\prime}, \\hat{\\jmath}^{\\prime}, "
+        "\\hat{k}^{\\prime} (and the cat's \\hat{r}) are unknown symbols, the cross products worked as vmatrix "
+        "determinants (\\omega \\hat{k}' \\times (v' \\hat{\\imath}')) are not parsed, (5.1) and (5.3) are recorded as "
+        "definitions of a' and v', the balances in F_I, F_cent, F_Cor, |F_cen| and the slipping and pendulum rows are "
+        "tied to no derivation, omega = sqrt(mu g / R) and t_F = 2 pi / (omega sin theta) are taken as settings, and "
+        "the Coriolis components F_{Cor,x'} are recorded as new symbols",
+    ("sadavoy-dynamics-centrifugal-coriolis-earth-frame-foucault-pendulum", "found"):
+        "0 of 1: its slip, \\underbrace{\\cos^2\\theta}_{=1} under the root sqrt(sin^2 theta + cos^2 theta) where the "
+        "brace belongs over the sum, is read with the brace's label as a comment, and the chain of |F_cen| it sits in "
+        "relates F_cen and R, which the reader ties to no derivation",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
