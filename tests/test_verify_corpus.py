@@ -476,6 +476,19 @@ SHORT = {
         "0 of 1: its slip, \\underbrace{\\cos^2\\theta}_{=1} under the root sqrt(sin^2 theta + cos^2 theta) where the "
         "brace belongs over the sum, is read with the brace's label as a comment, and the chain of |F_cen| it sits in "
         "relates F_cen and R, which the reader ties to no derivation",
+    ("spacecraft-course-notes-gravity-gradient-pitch-roll-yaw-linear-stability-zyx", "checked"):
+        "3 of 36 on its first read: a satellite's gravity-gradient attitude linearized in 3-2-1 angles of the body "
+        "relative to the orbit frame: the orbit rate Omega, given only as G M_e/R_c^3 = Omega^2, is tied to no "
+        "derivation, so Euler's equations in roll, pitch and yaw are not derived to first order (13 displays); "
+        "displays opening with a frame label, ^{\\mathcal{B}}\\boldsymbol{\\omega}_{B/N}, ^{\\mathcal{B}}\\mathbf{R}_c, "
+        "^{\\mathcal{B}}\\mathbf{L}_G, are not parsed (10); \\dot{\\boldsymbol{\\omega}} and the transport theorem's "
+        "(d\\vec r/dt)^{\\mathcal N} are unknown (5); the torque 3 G M_e/R_c^5 R_c x [I] R_c is recorded as a definition "
+        "with G, M_e, R_{ci} undefined (3); the 2x2 matrix system and the pitch condition I_11 >= I_33 (taken for an "
+        "assumption) are not read; only three regroupings of the roll and yaw equations are checked",
+    ("spacecraft-course-notes-gravity-gradient-pitch-roll-yaw-linear-stability-zyx", "found"):
+        "0 of 1: the torque written with Omega^2/R_c^2 where 3 G M_e/R_c^5 = 3 Omega^2/R_c^2 is meant is read as a "
+        "new definition of L_G in R_{c1}, R_{c2}, R_{c3} and Omega, symbols the reader does not tie to the body's "
+        "attitude or the orbit, so it is never compared with the torque two displays before",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
