@@ -455,6 +455,18 @@ SHORT = {
         "its four slips (the change of the unit vector i-hat' written (i-hat' sin phi) Delta theta, along i-hat' itself "
         "where only its size sin phi Delta theta is meant, and the three rates that follow) sit in displays naming "
         "i-hat' or its time derivative, which the reader does not parse",
+    ("lusk-nonlinearquad-quadrotor-model-321-euler-kinematics-dynamics", "checked"):
+        "1 of 7 on its first read: a quadrotor notebook in Beard and McLain's notation (passive 3-2-1 turns, "
+        "k^i down): p, q, r are set only inline as omega^b = p i^b + q j^b + r k^b = [p q r]^T, which is not "
+        "taken for the body rates, so the rate chain with the frame-labelled turns R_{v2}^b(phi), R_{v1}^{v2}(theta) "
+        "is compared only with its own rows and Phidot = Gamma(phi,theta) omega (Gamma named by an \\underbrace) is "
+        "not read; rdot^i = R_b^i v^b records a symbol; the body-axes Newton law in F_g, T (defined inline in "
+        "angles) is tied to no derivation; mg k^i - R_b^i [0 0 u_1] cannot add a unit vector to a column; and "
+        "I\\mathbf{\\dot\\omega} = -omega x I omega + M stops at the dot inside \\mathbf",
+    ("lusk-nonlinearquad-quadrotor-model-321-euler-kinematics-dynamics", "found"):
+        "0 of 2: the mass missing from the transport term, F_g - T = m vdot^b + omega x v^b, and its rearrangement "
+        "vdot^b = (1/m)[F_g - T - omega x v^b] sit in the body-axes translational law, whose F_g and T the reader "
+        "does not tie to the body, so neither is compared with m (vdot^b + omega x v^b)",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
