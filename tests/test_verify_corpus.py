@@ -489,6 +489,18 @@ SHORT = {
         "0 of 1: the torque written with Omega^2/R_c^2 where 3 G M_e/R_c^5 = 3 Omega^2/R_c^2 is meant is read as a "
         "new definition of L_G in R_{c1}, R_{c2}, R_{c3} and Omega, symbols the reader does not tie to the body's "
         "attitude or the orbit, so it is never compared with the torque two displays before",
+    ("lusk-nonlinearquad-quadrotor-model-321-euler-kinematics-dynamics", "checked"):
+        "1 of 7 on its first read: a quadrotor notebook in Beard and McLain's notation (passive 3-2-1 turns, "
+        "k^i down): p, q, r are set only inline as omega^b = p i^b + q j^b + r k^b = [p q r]^T, which is not "
+        "taken for the body rates, so the rate chain with the frame-labelled turns R_{v2}^b(phi), R_{v1}^{v2}(theta) "
+        "is compared only with its own rows and Phidot = Gamma(phi,theta) omega (Gamma named by an \\underbrace) is "
+        "not read; rdot^i = R_b^i v^b records a symbol; the body-axes Newton law in F_g, T (defined inline in "
+        "angles) is tied to no derivation; mg k^i - R_b^i [0 0 u_1] cannot add a unit vector to a column; and "
+        "I\\mathbf{\\dot\\omega} = -omega x I omega + M stops at the dot inside \\mathbf",
+    ("lusk-nonlinearquad-quadrotor-model-321-euler-kinematics-dynamics", "found"):
+        "0 of 2: the mass missing from the transport term, F_g - T = m vdot^b + omega x v^b, and its rearrangement "
+        "vdot^b = (1/m)[F_g - T - omega x v^b] sit in the body-axes translational law, whose F_g and T the reader "
+        "does not tie to the body, so neither is compared with m (vdot^b + omega x v^b)",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
