@@ -501,6 +501,15 @@ SHORT = {
         "0 of 2: the mass missing from the transport term, F_g - T = m vdot^b + omega x v^b, and its rearrangement "
         "vdot^b = (1/m)[F_g - T - omega x v^b] sit in the body-axes translational law, whose F_g and T the reader "
         "does not tie to the body, so neither is compared with m (vdot^b + omega x v^b)",
+    ("maithripala-rigid-body-momenta-euler-equations-spatial-body-frames", "checked"):
+        "3 of 44 on its first read: lecture notes in matrix notation, b = e R, hat(Omega) = R^T Rdot, omega = R Omega: "
+        "products written X_i \\times R^T\\dot{o} and \\omega \\times \\bar{x}' \\times p (25 displays) are not parsed, the "
+        "hat map \\widehat{\\Omega}, \\widehat{\\omega}, \\widehat{X}_i is an unknown symbol (10 more), the parallel axis "
+        "theorem and the rates \\dot{\\Pi}_i are recorded as definitions, and Euler's equations in \\mathbb{I}_1 and "
+        "T_1^e relate symbols tied to no derivation: only pdot = f^e and pidot = tau_e are checked",
+    ("maithripala-rigid-body-momenta-euler-equations-spatial-body-frames", "found"):
+        "its one slip (\\widehat{X}^T for \\bar{X}^T in the rewriting of \\bar{X}\\times\\widehat{\\Omega}^2\\bar{X}, a "
+        "column times a 3x3 matrix) sits in a chain of cross products and hat maps, which the reader does not parse",
 }
 
 FLOOR = {"checked": 1048, "slips_flagged": 130, "holds_flagged": 0}
