@@ -44,3 +44,27 @@ def test_the_z_axis_taken_along_the_bold_momentum_in_symbols_chooses_the_frame()
 def test_a_body_axis_along_the_momentum_chooses_no_frame():
     text = FREE_TOP_SYMBOL.replace("PROSE", "Take the body $z$-axis along $\\mathbf{L}$")
     assert "holds" not in verdicts(text, "\\dot{\\psi}")
+
+
+STATED_MOTION = (
+    "## Free symmetric top\n\nA free top with $I_1 = I_2$; its angular momentum is conserved and $M_z$ is its "
+    "component along the fixed axis.\n\n"
+    "$$\n\\dot\\phi = \\frac{M_z}{I_1}, \\qquad \\dot\\psi = M_z\\cos\\theta\\left(\\frac{1}{I_3}-\\frac{1}{I_1}\\right)\n$$\n\n"
+    "$$\n\\begin{aligned}\n\\frac{\\partial L}{\\partial \\dot\\psi} &= I_3(\\dot\\phi\\cos\\theta + \\dot\\psi) = M_3 = M_z\\cos\\theta \\\\\n"
+    "\\frac{\\partial L}{\\partial \\dot\\phi} &= I_1\\dot\\phi\\sin^2\\theta + I_3(\\dot\\phi\\cos\\theta+\\dot\\psi)\\cos\\theta = M_z\n"
+    "\\end{aligned}\n$$\n\n"
+    "$$\nE = \\frac{M_z^2 \\sin^2\\theta}{2 I_1} + \\frac{I_1 \\dot\\theta^2}{2} + \\frac{M_z^2\\cos^2\\theta}{2 I_3}\n$$\n")
+
+
+def test_the_energy_holds_in_the_motion_the_text_states_and_is_not_flagged_through_its_own_chain():
+    # the energy holds once the stated rates are put in (cos² θ + sin² θ = 1 removes θ̇'s partner);
+    # M₃ = M_z cos θ holds only on those rates, so that chain confirms no reading of M_z as p_φ
+    claims = kept.check_text(STATED_MOTION)
+    assert not [c for c in claims if c.verdict in ("typo", "fails")]
+    assert [c.verdict for c in claims if c.latex.startswith("E =")] == ["holds"]
+    assert "in the motion the text describes" in next(c.why for c in claims if c.latex.startswith("E ="))
+
+
+def test_an_energy_with_the_wrong_moment_does_not_hold_in_that_motion():
+    slipped = STATED_MOTION.replace("{2 I_3}\n$$", "{2 I_1}\n$$")
+    assert "holds" not in verdicts(slipped, "E =")

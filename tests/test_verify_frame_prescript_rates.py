@@ -47,3 +47,20 @@ def test_the_rate_from_a_frame_as_an_operator_on_a_plain_bracket_is_read_as_on_a
         assert _verdicts(_as_operator(TEXT.replace("SIGN", "+"), opening, closing)) == ["holds"]
         slipped = _verdicts(_as_operator(TEXT.replace("SIGN", "-"), opening, closing))
         assert slipped and all(v in ("typo", "fails") for v in slipped)
+
+
+SUPERSCRIPTED = r"""# The transport theorem
+
+The inertial frame $\mathcal{N}$, the body frame $\mathcal{B}$ and the body's angular velocity
+$\boldsymbol{\omega}_{\mathcal{B}/\mathcal{N}}$ in it.
+
+$$
+\left( \frac{d\vec{r}}{dt} \right)^{\mathcal{N}} = \left( \frac{d\vec{r}}{dt} \right)^{\mathcal{B}} SIGN \boldsymbol{\omega}_{\mathcal{B}/\mathcal{N}} \times \vec{r}
+$$
+"""
+
+
+def test_the_frame_written_as_a_superscript_on_the_rates_bracket_is_read_as_its_subscript():
+    assert _verdicts(SUPERSCRIPTED.replace("SIGN", "+")) == ["holds"]
+    slipped = _verdicts(SUPERSCRIPTED.replace("SIGN", "-"))
+    assert slipped and all(v in ("typo", "fails") for v in slipped)

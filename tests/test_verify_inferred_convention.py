@@ -121,3 +121,18 @@ def test_a_display_read_in_the_texts_own_frames_is_neither_probed_nor_evidence()
     assert {c.kind for c in claims} == {"frame"}
     assert [(c.line, c.verdict) for c in claims] == [(3, "holds"), (9, "fails")]
     assert checker.reading.probes == {} and checker.reading.shown == []
+
+
+def test_a_display_read_in_the_texts_own_coordinate_is_neither_probed_nor_evidence():
+    # a hoop's one coordinate θ in the text's own Lagrangian: its relations are judged by the text's
+    # functions alone, so a slip among them is read in no other sequence of Euler angles
+    text = ("A hoop rolling with one coordinate $\\theta$.\n\n"
+            "$$\nL(\\theta, \\dot{\\theta}) = m R^2 \\dot{\\theta}^2 + m g R \\cos\\theta\n$$\n\n"
+            "$$\n\\frac{\\partial L}{\\partial \\theta} = m g R \\sin\\theta\n$$\n\n"
+            "$$\n\\frac{\\partial L}{\\partial \\dot{\\theta}} = 2 m R^2 \\dot{\\theta}\n$$\n")
+    checker = nc.Checker(nt.parse_notes(text))
+    claims = checker.run()
+    judged = {c.line: c.verdict for c in claims if c.verdict != "unchecked"}
+    assert judged == {7: "fails", 11: "holds"}
+    assert all(c.sequence_free for c in claims if c.line in judged)
+    assert checker.reading.probes == {} and checker.reading.shown == []

@@ -6,7 +6,7 @@ Gives the mixin `AlgebraStatements` of `derive.lecture.notes_check.Checker`: `_a
 (a statement in that notation, before the scalar reader) and `_algebra` (the reading and the
 verdicts).
 
-May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.point_moments`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
+May import: :mod:`derive.lecture.latex_spellings`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.kane_notation`, :mod:`derive.lecture.frame_labels`, :mod:`derive.lecture.free_rotation`, :mod:`derive.lecture.point_moments`, :mod:`derive.lecture.vector_algebra_model`, :mod:`derive.lecture.vector_parser` (its
 `UNREAD` entry), the single edits
 of :mod:`derive.lecture.vectors`, :mod:`derive.lecture.fixed_axis`, :mod:`derive.lecture.body_plane`, :mod:`derive.lecture.headless_chains`,
 :mod:`derive.lecture.own_torque`, :mod:`derive.lecture.point_labels`, :mod:`derive.lecture.lone_point`, :mod:`derive.lecture.body_values`, :mod:`derive.lecture.chain_end_names`,
@@ -29,6 +29,7 @@ from derive.lecture import body_plane
 from derive.lecture import body_values
 from derive.lecture import chain_end_names
 from derive.lecture import fixed_axis
+from derive.lecture import free_rotation
 from derive.lecture import frame_labels
 from derive.lecture import headless_chains
 from derive.lecture import kane_notation
@@ -339,6 +340,9 @@ class AlgebraStatements:
             if torque is not None:
                 axis = self._alg.axis
                 return own_torque.judged(reading, *torque, WHY, _where, fixed_axis.off_axis(axis) if axis is not None else None)
+            name = own_torque.added(reading, ref, k) if self._alg.axis is None else None
+            if name is not None:
+                return "holds", f"{WHY}: the text's {name} read as the torque, a term of the equation of motion: exact (expand)"
             loose = sorted(first[ref].generics ^ first[k].generics)
             return "unchecked", f"involves {', '.join(loose)}, which the text has not tied to the body"
         a, b = first[ref], first[k]
@@ -347,6 +351,7 @@ class AlgebraStatements:
                                  "assumption of the text (the reader knows only τ = d𝐋/dt and 𝐅 = d𝐩/dt)")
         convention = False
         principal = False
+        free_body = False
         for members in reading.members:
             d = va.difference(members[k].value, members[ref].value)
             if d is None:
@@ -382,6 +387,10 @@ class AlgebraStatements:
                                      "condition of the text's set-up, not a consequence the derivation decides")
             if body_values.particular(members[k].value, members[ref].value) or body_values.particular(members[ref].value, members[k].value):
                 return "unchecked", body_values.PARTICULAR
+            if not (a.law or b.law) and self._alg.axis is None and reading.model != "single" \
+                    and free_rotation.vanishes_for_free_body(d):
+                free_body = True           # no torque written: the law of motion of a free body
+                continue
             return "fails", f"as written: {_where(d)} ({WHY})"
         if convention:
             name = _entry_name(reading.source, reading.members[0][0])
@@ -391,6 +400,9 @@ class AlgebraStatements:
                              "(some texts define I_xy = ∫xy dm and write −I_xy in the tensor)")
         if principal:
             return "holds", f"{WHY}: holds if the axes are principal axes (the products of inertia vanish)"
+        if free_body:
+            return "holds", (f"{WHY}: holds for a free body (no torque): zero once 𝛚̇ is taken from "
+                             "𝐈𝛚̇ = −𝛚 × 𝐈𝛚")
         if reading.unread:
             return "unchecked", (f"the entries it reads agree ({WHY}); an entry is not read "
                                  f"({'; '.join(reading.unread)})")

@@ -76,15 +76,18 @@ class CoordinateStatements:
         if d is None:
             return False
         done = self.__dict__.setdefault("_cf_done", {})
+        start = len(self.claims)
         if (line, piece, text) in done:
             for claim in done[(line, piece, text)]:
                 self._add(*claim)
-            return bool(done[(line, piece, text)])
-        d.met |= {name for at, name in self._cf_prose if at < line}
-        start = len(self.claims)
-        handled = self._cf_read(line, piece, text)
-        done[(line, piece, text)] = [(c.line, c.latex, c.kind, c.verdict, c.why, c.correction)
-                                     for c in self.claims[start:]] if handled else []
+            handled = bool(done[(line, piece, text)])
+        else:
+            d.met |= {name for at, name in self._cf_prose if at < line}
+            handled = self._cf_read(line, piece, text)
+            done[(line, piece, text)] = [(c.line, c.latex, c.kind, c.verdict, c.why, c.correction)
+                                         for c in self.claims[start:]] if handled else []
+        for claim in self.claims[start:]:
+            claim.sequence_free = True      # the text's own coordinate: no sequence of Euler angles enters
         return handled
 
     def _cf_read(self, line, piece, text) -> bool:

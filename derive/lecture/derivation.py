@@ -100,9 +100,7 @@ class Derivation:
 
     def euler(self, subs: dict) -> list:
         """Euler's residuals Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ, with the section's substitutions."""
-        moments = tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))
-        rhs = euler_rhs(moments, sp.Matrix(lx.W))
-        return [sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3)]
+        return list(_euler_residuals(tuple(sp.sympify(m).xreplace(subs) for m in (I1, I2, I3))))
 
     def frequencies(self):
         return self.spin_frequencies
@@ -267,3 +265,11 @@ def families():
         [lx.p_alpha_sym(), lx.p_gamma_sym()],
         [lx.LVEC, lx.OMEGA_VEC, lx.DLDT],
     ]
+
+
+@functools.lru_cache(maxsize=64)
+def _euler_residuals(moments: tuple) -> tuple:
+    """Iᵢ ω̃̇ᵢ − ((Iω̃)×ω̃)ᵢ for the moments (I₁, I₂, I₃) as a section sets them; a slip's search for
+    its correction asks for them once per candidate, with the same moments."""
+    rhs = euler_rhs(moments, sp.Matrix(lx.W))
+    return tuple(sp.expand(moments[i] * (lx.WD[i] - rhs[i])) for i in range(3))

@@ -175,8 +175,8 @@ class ConventionProbe:
         start = len(self.claims)
         self._display(item, latex)
         flagged, holds = _lines(self.claims[start:]).get(item.line, (False, False))
-        if self.claims[start:] and all(c.kind in SEQUENCE_FREE for c in self.claims[start:]):
-            return      # read in the text's own frames (Kane's notation): alike in every sequence
+        if self.claims[start:] and all(c.kind in SEQUENCE_FREE or c.sequence_free for c in self.claims[start:]):
+            return      # read in the text's own frames (Kane's notation) or coordinate: alike in every sequence
         if not (flagged or named and holds):
             return      # a formula without the angles that holds (Euler's equations in ω) reads alike in all
         if holds:

@@ -484,8 +484,7 @@ class Checker(ReadingRules):
         if approx:
             small = self.ctx.small[-1]
             order = series_order(val, small)
-        seed = f"{piece}/{k}"
-        why = ""
+        seed, why = f"{piece}/{k}", ""
         for f in targets:
             ok, why = self._compare(val, self._resolve(f), seed, small, order)
             if ok:
@@ -494,11 +493,12 @@ class Checker(ReadingRules):
                 if forms and isinstance(label, lx.Quantity) and f is not forms[0] and not args and not approx:
                     self.ctx.forms_held[label] = f      # the text's L is the free body's T: so from here on
                 return
-        oriented = None if small is not None else self._oriented(line, val, targets, seed) or \
-            self._on_the_motion(val, targets, seed) or self._fast_top(label, val)
-        if oriented:
+        oriented = None if small is not None else self._oriented(line, val, targets, seed)
+        on_motion = None if small is not None or oriented else self._on_the_motion(val, targets, seed)
+        if oriented := oriented or on_motion or (small is None and self._fast_top(label, val)):
             self._confirm(value, parsed)
             self._add(line, piece, kind, "holds", oriented)
+            self.claims[-1].self_consistent = bool(on_motion)   # on the text's own motion: vouches for no reading
             return
         if " against a " in why:
             self._add(line, piece, kind, "unchecked", f"cannot compare its sides: {why}")

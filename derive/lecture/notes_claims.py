@@ -24,6 +24,8 @@ class Claim:
     assumes: list = field(default_factory=list)    # what it holds under: stated (with where) or not
     # holds by the text's own earlier equation whatever its names mean, so it confirms no reading of them
     self_consistent: bool = field(default=False, compare=False)
+    # judged without the Euler angles' sequence (the text's own coordinate): alike in every sequence
+    sequence_free: bool = field(default=False, compare=False)
 
     def as_dict(self) -> dict:
         return {"line": self.line, "latex": self.latex, "kind": self.kind, "verdict": self.verdict,

@@ -160,7 +160,8 @@ class OnTheMotion:
             if self._differs(a, b):
                 continue            # `_compare` would not hold: the costly expansion is spared
             a, b = expanded(a), expanded(b)
-            if _free(a - b) & set(RATES) - set(motion):
+            # a rate the motion leaves free, unless it cancels only through cos² + sin² = 1
+            if any(surely_nonzero(sp.diff(a - b, r)) for r in _free(a - b) & set(RATES) - set(motion)):
                 continue
             ok, how = self._compare(a, b, seed + "/motion")
             if ok:

@@ -18,13 +18,15 @@ from __future__ import annotations
 
 import re
 
+import sympy as sp
+
 from derive.lecture import vector_algebra_model as va
 from derive.lecture.latex_spellings import VECTOR_MARK
 
 _BOLD = VECTOR_MARK + r"\s*\{?\s*"
 _INERTIA = re.compile(r"(?<![\\A-Za-z])I(?![A-Za-z])|" + _BOLD + r"I(?![A-Za-z])|\\mathbb\s*\{?\s*I(?![A-Za-z])")
 _CROSS = re.compile(r"\\times|×|\\cross")
-_OMEGA_RATE = re.compile(r"\\dot\s*\{?\s*" + _BOLD + r"\\omega|\\frac\s*\{\s*d\s*" + _BOLD + r"\\omega|"
+_OMEGA_RATE = re.compile(r"\\dot\s*\{?\s*" + _BOLD + r"\\omega|" + _BOLD + r"\\dot\s*\{?\s*\\omega|\\frac\s*\{\s*d\s*" + _BOLD + r"\\omega|"
                          + _BOLD + r"\\alpha(?![A-Za-z])")
 
 
@@ -61,3 +63,30 @@ def judged(reading, own: int, other: int, why: str, where, off_axis=None) -> tup
     if all(x == 0 for x in d):
         return "holds", f"{why}: {said}: exact (expand)"
     return "fails", f"as written: {where(d)} ({why}; {said})"
+
+
+def added(reading, ref: int, k: int) -> str | None:
+    """The text's one vector as the torque where it is a term beside the others
+    (``I\\dot{\\boldsymbol\\omega} = -\\boldsymbol\\omega \\times I\\boldsymbol\\omega + \\mathbf{M}``): the members
+    of a reading with no free index differ by ±𝐆 and the rest, the statement writes the inertia
+    tensor, a rate of 𝛚 and a cross product, and with 𝐆 = τ = d𝐋/dt the difference is zero.
+    The name of the vector taken for the torque when it holds so, else None (a vector of the
+    text's may be a force, or a torque the text defines otherwise: nothing is flagged)."""
+    if reading.free or len(reading.members) != 1:
+        return None
+    first = reading.members[0]
+    names = first[ref].generics | first[k].generics
+    written = reading.source
+    if len(names) != 1 or first[ref].law or first[k].law or not (
+            _INERTIA.search(written) and _OMEGA_RATE.search(written) and _CROSS.search(written)):
+        return None
+    name = next(iter(names))
+    own = sp.Matrix(sp.symbols(f"{name}_x {name}_y {name}_z", real=True))
+    d = va.difference(first[k].value, first[ref].value)
+    if not isinstance(d, sp.MatrixBase) or d.shape != (3, 1):
+        return None
+    slope = d.jacobian(own)
+    if slope not in (sp.eye(3), -sp.eye(3)):
+        return None
+    torque = va.torque(reading.model)
+    return name if all(va.difference(x, 0) == 0 for x in d.xreplace(dict(zip(own, torque)))) else None

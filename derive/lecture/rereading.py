@@ -231,13 +231,15 @@ class Rereading:
         name it uses, bound by the same words of the prose), holds by the same kind of check: the
         reading is then the text's own (were it not, that sibling would not hold either)."""
         pending, self.unconfirmed = self.unconfirmed, []
+        # a chain one of whose links holds only on the text's own statements vouches for no reading
+        circular = {s.latex for s in claims if s.self_consistent}
         for c, verdict, correction, why, learned, bindings, edit in pending:
             if not bindings or not any(x is c for x in claims):
                 continue
             # a sibling that restates the text's own earlier equation holds whatever the names mean
             sibling = next((s for s in claims if s is not c and s.verdict == "holds" and s.kind == c.kind
                             and s.latex != c.latex and bindings <= self._learned_bindings(s.latex)
-                            and not s.self_consistent), None)
+                            and not s.self_consistent and s.latex not in circular), None)
             said = self._said_and_held(bindings) if sibling is None else None
             before = self._held_before(bindings, c) if sibling is None and said is None else None
             if sibling is None and said is None and before is None:

@@ -21,7 +21,7 @@ of `derive.lecture.notes_check.Checker`, which
    derivative of its definition); ``\\frac{\\partial A}{\\partial v}`` with A written in ω̃ᵢ and v an angle or a rate
    through ω̃(q, q̇).
 
-May import: :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.right_named`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.untied_partials`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
+May import: :mod:`derive.lecture.component_names`, :mod:`derive.lecture.latex`, :mod:`derive.lecture.primed_functions`, :mod:`derive.lecture.right_named`, :mod:`derive.lecture.sparse_forms`, :mod:`derive.lecture.untied_partials`, :mod:`derive.lecture.zero_test`, :mod:`derive.symbolic`, SymPy.
 """
 from __future__ import annotations
 
@@ -31,6 +31,7 @@ import re
 import sympy as sp
 
 from derive.lecture import euler_moments
+from derive.lecture import component_names
 from derive.lecture import latex as lx, primed_functions, right_named, untied_partials
 from derive.lecture.vocabulary import Atom
 from derive.lecture.moments_small import written_name
@@ -122,6 +123,8 @@ class TextNames(UnreadMembers):
         members = [m.value for m in parsed.members]
         rels = parsed.relations
         if any(isinstance(m, sp.MatrixBase) for m in members):
+            if (why := component_names.named(self, members)) is not None:
+                return self._add(line, piece, "new symbol", "unchecked", why) or True
             members[0] = self._free_letter_named(members[0], members[1])
             if self._new_name(members[0]) and isinstance(members[1], sp.MatrixBase):
                 if self.vocab.generic[members[0]].bold and self._vectors(line, piece, getattr(self, "_text", piece)):

@@ -276,7 +276,10 @@ def difference(a, b):
     """a − b expanded, entry by entry; None when the shapes differ."""
     a, b = _as_value(a), _as_value(b)
     if isinstance(a, sp.MatrixBase) != isinstance(b, sp.MatrixBase):
-        return None
+        if a == 0 or b == 0:        # 0 written for the zero vector (𝐈𝛚̇ + 𝛚 × 𝐈𝛚 = 0)
+            a, b = (sp.zeros(*b.shape), b) if a == 0 else (a, sp.zeros(*a.shape))
+        else:
+            return None
     if isinstance(a, sp.MatrixBase):
         if a.shape != b.shape:
             return None

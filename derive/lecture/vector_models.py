@@ -358,6 +358,9 @@ _FRAC_RATE = (r"(?P<o>\{\s*)?\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*(?P<b>\{\s*)?
               + DIFFERENTIAL + r"\s*t")
 _RATE_BAR = re.compile(_FRAC_RATE + r"\s*\}\s*(?(o)\}\s*)\\right\s*\|\s*_\s*" + _LABEL)
 _RATE_DT = re.compile(_FRAC_RATE + r"\s*_\s*" + _LABEL + r"\s*\}(?(o)\s*\})")
+# the frame as a superscript on the bracket, Schaub's (d𝐫/dt)^N: the subscript other texts write
+_RATE_SUP = re.compile(r"(\\left\s*\(\s*\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*" + _VEC + r"\s*\}\s*\{\s*" + DIFFERENTIAL
+                       + r"\s*t\s*\}\s*\\right\s*\))\s*\^\s*" + _LABEL)
 # the rate seen from a frame as an operator on a bracket, ^B d/dt (…)
 _OPERATOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"\\frac\s*\{\s*" + DIFFERENTIAL + r"\s*\}\s*\{\s*"
                                   + DIFFERENTIAL + r"\s*t\s*\}\s*(?P<sized>\\left\s*)?\(")
@@ -372,6 +375,8 @@ _VECTOR_PRESCRIPT = re.compile(r"(?:\{\s*\})?\^\s*" + _LABEL + SPACE + r"(?=" + 
 _BODY_LABEL = re.compile(r"(" + VECTOR_MARK + r"\s*\{\s*\\?[A-Za-z]+)\s*_\s*(?:\{\s*b\s*\}|b)\s*\}")
 _RELATIVE = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*b\s*/\s*i\s*\}")
 _FRAME_PAIR = re.compile(r"(" + _VEC + r")\s*_\s*\{\s*([A-Za-z])\s*/\s*([A-Za-z])\s*\}")
+_UPRIGHT_PAIR = re.compile(r"_\s*\{\s*\\mathrm\s*\{\s*([A-Za-z])\s*\}\s*/\s*\\mathrm\s*\{\s*([A-Za-z])\s*\}\s*\}")
+"""``_{\\mathrm{B}/\\mathrm{N}}``: the frames' letters as a ``\\mathcal{B}/\\mathcal{N}`` subscript is normalised."""
 
 
 def frame_rates(text: str) -> str:
@@ -382,13 +387,23 @@ def frame_rates(text: str) -> str:
     def framed(m):
         return r"\left(\frac{d " + m.group(3) + r"}{dt}\right)_{" + m.group(4).strip("{}").strip() + "}"
     new = _RATE_DT.sub(framed, _RATE_BAR.sub(framed, text))
+    new = _RATE_SUP.sub(lambda m: m.group(1) + "_{" + m.group(2).strip("{}").strip() + "}"
+                        if m.group(2).strip("{}").strip() in FRAMES else m.group(0), new)
     if "^" in new:
         new = _prescribed(new)
     # d̃𝐧/dt, the relative (body-frame) derivative of the Russian and Chinese texts; 𝟎 the zero vector
     new = _ZERO_VECTOR.sub("0", _RELATIVE_RATE.sub(lambda m: r"\left(\frac{d " + m.group(1) + r"}{dt}\right)_{b}", new))
     if new == text:
         return text
-    return _RELATIVE.sub(r"\1", _BODY_LABEL.sub(r"\1}", new))
+    return _body_in_inertial(_RELATIVE.sub(r"\1", _BODY_LABEL.sub(r"\1}", new)))
+
+
+def _body_in_inertial(text: str) -> str:
+    """ω's subscript naming the body in the inertial frame (``\\boldsymbol{\\omega}_{B/N}``) gone: the
+    vector read in body components, as every vector of a statement about rates in frames is."""
+    return _FRAME_PAIR.sub(lambda m: m.group(1) if "\\omega" in m.group(1) and
+                           (FRAMES.get(m.group(2)), FRAMES.get(m.group(3))) == ("body", "inertial") else m.group(0),
+                           _UPRIGHT_PAIR.sub(r"_{\1/\2}", text))
 
 
 def _prescribed(text: str) -> str:
@@ -402,9 +417,7 @@ def _prescribed(text: str) -> str:
         return text
     new = _RATE_PRESCRIPT.sub(lambda m: r"\left(\frac{d " + m.group(2) + r"}{dt}\right)_{" + m.group(1).strip("{}").strip()
                               + "}", _operator_prescribed(text))
-    new = _VECTOR_PRESCRIPT.sub(lambda m: "" if m.group(1).strip("{}").strip() in FRAMES else m.group(0), new)
-    return _FRAME_PAIR.sub(lambda m: m.group(1) if "\\omega" in m.group(1) and
-                           (FRAMES.get(m.group(2)), FRAMES.get(m.group(3))) == ("body", "inertial") else m.group(0), new)
+    return _VECTOR_PRESCRIPT.sub(lambda m: "" if m.group(1).strip("{}").strip() in FRAMES else m.group(0), new)
 
 
 
