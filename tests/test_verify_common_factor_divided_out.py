@@ -1,6 +1,9 @@
 """An equation of the text's written again with a factor all its terms share divided out
 (`derive.lecture.restated`): the same equation, whatever its names stand for."""
 import kept_readings as kept
+import sympy as sp
+
+from derive.lecture import restated
 
 STEP = r"""# Steady precession
 
@@ -33,3 +36,11 @@ def test_a_factor_that_is_a_sum_is_not_divided_out():
         "\\Omega^2\\sin\\vartheta\\cos", "\\Omega^2(1 + \\sin\\vartheta)\\cos").replace(
         "L_a\\Omega\\sin\\vartheta", "L_a\\Omega(1 + \\sin\\vartheta)")
     assert "holds" not in _verdicts(text, 9)
+
+
+def test_the_shared_factor_is_read_off_the_terms_and_the_rest_must_be_a_number_times_the_new_equation():
+    m, g, l, th, a = sp.symbols("m g l theta a")
+    new = g * sp.sin(th) + l * a
+    assert restated._divided(new, 2 * m * sp.cos(th) * new) == m * sp.cos(th)
+    assert restated._divided(new, m * (g * sp.sin(th) - l * a)) is None      # not a multiple: a sign differs
+    assert restated._divided(new, m * g * sp.sin(th) + l * a) is None        # no factor every term shares

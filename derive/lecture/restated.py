@@ -121,6 +121,7 @@ _STEPS = 3
 """The text's latest equations a later one may be with a common factor divided out (a step of its own)."""
 
 
+@functools.lru_cache(maxsize=512)
 def _divided(new, old):
     """The factor f ≠ number when ``old = f · new`` (both an equation's two sides' difference) and f is
     a product of the letters and of sines, cosines and exponentials of ``old`` that every one of its
@@ -131,17 +132,34 @@ def _divided(new, old):
     new, old = _difference(new, 0), _difference(old, 0)
     if not isinstance(new, sp.Add) or not zt.free_symbols(new) <= zt.free_symbols(old):
         return None
-    shared = sp.factor_terms(old)         # the factor every term shares, taken out without factoring
-    parts = sp.Mul.make_args(shared)
-    factor = sp.Mul(*(a for a in parts if not isinstance(a, sp.Add) and not a.is_number))
-    rest = sp.expand(sp.Mul(*(a for a in parts if isinstance(a, sp.Add) or a.is_number)))
+    if not isinstance(old, sp.Add) or len(old.args) != len(new.args):
+        return None                       # a shared factor of letters and functions keeps the terms' count
+    factor, rest = _shared(old)
     if factor == 1 or not all(b.is_Symbol or isinstance(b, (sp.sin, sp.cos, sp.exp))
                               for b in (f.as_base_exp()[0] for f in sp.Mul.make_args(factor))):
         return None
     if zt.free_symbols(rest) != zt.free_symbols(new) or zt.ratio_varies(rest, new, "divided"):
         return None
-    ratio = sp.cancel(rest / new)
-    return factor if ratio.is_number and ratio != 0 else None
+    return factor if _number_times(rest, new) else None
+
+
+def _number_times(rest, new) -> bool:
+    """Is ``rest`` a non-zero number times ``new`` (both expanded sums)? The number is read off one
+    term's coefficient and checked on the whole expansion (no rational function is cancelled)."""
+    coefficient, monomial = sp.Add.make_args(new)[0].as_coeff_Mul()
+    match = [c for c, m in (t.as_coeff_Mul() for t in sp.Add.make_args(rest)) if m == monomial]
+    return len(match) == 1 and match[0] != 0 and sp.expand(rest - match[0] / coefficient * new) == 0
+
+
+@functools.lru_cache(maxsize=512)
+def _shared(old) -> tuple:
+    """(the factor every term of ``old`` shares, but numbers; the rest expanded), taken out without
+    factoring; once per equation, however many later ones are held against it."""
+    powers = [term.as_powers_dict() for term in sp.Add.make_args(old)]
+    factor = sp.Mul(*(base**min(p[base] for p in powers) for base in powers[0]
+                      if not base.is_number and all(base in p and p[base].is_number and p[base] * powers[0][base] > 0
+                                                    for p in powers)))
+    return factor, sp.expand(old / factor)
 
 
 def _written(members):
