@@ -388,7 +388,7 @@ class AlgebraStatements:
             if body_values.particular(members[k].value, members[ref].value) or body_values.particular(members[ref].value, members[k].value):
                 return "unchecked", body_values.PARTICULAR
             if not (a.law or b.law) and self._alg.axis is None and reading.model != "single" \
-                    and free_rotation.vanishes_for_free_body(d):
+                    and free_rotation.vanishes_for_free_body(d, va.torque(reading.model)):
                 free_body = True           # no torque written: the law of motion of a free body
                 continue
             return "fails", f"as written: {_where(d)} ({WHY})"

@@ -81,7 +81,7 @@ def added(reading, ref: int, k: int) -> str | None:
             _INERTIA.search(written) and _OMEGA_RATE.search(written) and _CROSS.search(written)):
         return None
     name = next(iter(names))
-    own = sp.Matrix(sp.symbols(f"{name}_x {name}_y {name}_z", real=True))
+    own = va.generic_components(name)
     d = va.difference(first[k].value, first[ref].value)
     if not isinstance(d, sp.MatrixBase) or d.shape != (3, 1):
         return None

@@ -272,6 +272,11 @@ def linear(system: str) -> sp.ImmutableMatrix:
     return sp.ImmutableMatrix(sum((MU[k] * W.cross(RK[k]) for k in range(POINTS)), sp.zeros(3, 1)))
 
 
+def generic_components(name: str) -> sp.Matrix:
+    """The components of a vector of the text's that the model does not know (𝐌, 𝐍_cm, 𝐧_a)."""
+    return sp.Matrix(sp.symbols(f"{name}_x {name}_y {name}_z", real=True))
+
+
 def difference(a, b):
     """a − b expanded, entry by entry; None when the shapes differ."""
     a, b = _as_value(a), _as_value(b)
@@ -483,17 +488,17 @@ class Algebra:
             p.force_at.append(p.i)
             return rate(linear(self.system))
         if len(base) == 1 and base.isalpha() and base not in "dmt":
-            comps = sp.Matrix(sp.symbols(f"{base}_x {base}_y {base}_z", real=True))
+            comps = generic_components(base)
             if bold and not sub:
                 p.generics.add(base)
                 return comps
             if bold and sub in POINT_LABELS and base not in "rvpIL":   # 𝐌_cm, 𝐍_O: about a point, a vector of the text's
                 p.generics.add(base + sub)
-                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
+                return generic_components(base + sub)
             if bold and len(sub) == 1 and sub in "abcdefgh" and not a.sup and sub != env.get("index") \
                     and base not in "rvp":      # 𝐧_a, a vector of the text's named by a letter (Kane's n̂_a)
                 p.generics.add(base + sub)
-                return sp.Matrix(sp.symbols(f"{base}{sub}_x {base}{sub}_y {base}{sub}_z", real=True))
+                return generic_components(base + sub)
             if not bold and sub in ("x", "y", "z"):
                 p.generics.add(base)
                 return comps[AXES[sub]]
